@@ -1,0 +1,56 @@
+//! The typed error returned by every NDF constructor.
+
+use std::fmt;
+
+/// Smallest and largest supported roughness. Outside [1e-6, 1e6] the closed forms still hold
+/// mathematically, but D at the normal (∝ 1/α²) and the slope densities leave the comfortable
+/// f64 range and the numerical quantities would need other scalings; we reject rather than
+/// return garbage.
+pub const ALPHA_MIN: f64 = 1e-6;
+/// See [`ALPHA_MIN`].
+pub const ALPHA_MAX: f64 = 1e6;
+/// Largest supported GTR exponent γ. Above it the GTR lobe is a narrow spike of relative width
+/// ~1/√γ that the quadrature of the numerical quantities is not tuned for.
+pub const GAMMA_MAX: f64 = 100.0;
+
+/// Why a parameter was rejected.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub enum ParamError {
+    /// α is NaN, infinite, ≤ 0, or outside [`ALPHA_MIN`, `ALPHA_MAX`].
+    Alpha(f64),
+    /// γ (GTR) is NaN, ≤ 0 or above [`GAMMA_MAX`].
+    Gamma(f64),
+}
+
+impl fmt::Display for ParamError {
+    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
+        match *self {
+            ParamError::Alpha(a) => write!(
+                f,
+                "alpha must be a finite number in [{ALPHA_MIN:e}, {ALPHA_MAX:e}], got {a}"
+            ),
+            ParamError::Gamma(g) => write!(
+                f,
+                "gamma must be a finite number in (0, {GAMMA_MAX}], got {g}"
+            ),
+        }
+    }
+}
+
+impl std::error::Error for ParamError {}
+
+/// Checks α; written so that NaN fails (`!(x >= lo)` is true for NaN).
+pub(crate) fn check_alpha(alpha: f64) -> Result<f64, ParamError> {
+    if !(ALPHA_MIN..=ALPHA_MAX).contains(&alpha) {
+        return Err(ParamError::Alpha(alpha));
+    }
+    Ok(alpha)
+}
+
+/// Checks γ (NaN fails the range test).
+pub(crate) fn check_gamma(gamma: f64) -> Result<f64, ParamError> {
+    if !(gamma > 0.0 && gamma <= GAMMA_MAX) {
+        return Err(ParamError::Gamma(gamma));
+    }
+    Ok(gamma)
+}

@@ -1,0 +1,202 @@
+//! Special functions: the one place where every transcendental the NDFs need is routed.
+//!
+//! | function | source | measured max. relative error vs mpmath (tests/special.rs) |
+//! |---|---|---|
+//! | `erf`, `erfc`, `ln_gamma` | `libm` (musl port) | ≤ 3e-16 |
+//! | `e1` (= E₁), `k0e`, `k1e`, `elliprd` | `spec_math` (Cephes / Carlson port) | ≤ 5e-15 |
+//! | [`erfc_ratio_tail`], [`dggx_g`], [`bessel_k_sum_m1`] | this module (continued fractions and series) | ≤ 1e-15 |
+//!
+//! The last group exists because the closed forms of the pages cancel catastrophically in
+//! some regions (see `shared/ERRATA.md` §D); each function here computes a cancellation-free
+//! combination instead of the difference of two large numbers.
+
+pub mod dd;
+
+/// Error function erf(x) (libm).
+#[inline]
+pub fn erf(x: f64) -> f64 {
+    libm::erf(x)
+}
+
+/// Complementary error function erfc(x) = 1 − erf(x) (libm), accurate in the far tail.
+#[inline]
+pub fn erfc(x: f64) -> f64 {
+    libm::erfc(x)
+}
+
+/// ln Γ(x) for x > 0 (libm).
+#[inline]
+pub fn ln_gamma(x: f64) -> f64 {
+    libm::lgamma(x)
+}
+
+/// Exponential integral E₁(x) = ∫₁^∞ e^{−xt}/t dt for x > 0 (Cephes `expn(1, x)`).
+#[inline]
+pub fn e1(x: f64) -> f64 {
+    spec_math::cephes64::expn(1, x)
+}
+
+/// Exponentially scaled modified Bessel function e^x K₀(x), x > 0 (Cephes).
+#[inline]
+pub fn k0e(x: f64) -> f64 {
+    spec_math::cephes64::k0e(x)
+}
+
+/// Exponentially scaled modified Bessel function e^x K₁(x), x > 0 (Cephes).
+#[inline]
+pub fn k1e(x: f64) -> f64 {
+    spec_math::cephes64::k1e(x)
+}
+
+/// Carlson's symmetric elliptic integral R_D(x, y, z) (spec_math's port of Carlson 1995).
+///
+/// Used for the complete integrals without cancellation:
+/// K(m) − E(m) = (m/3) R_D(0, 1−m, 1), valid for every m < 1 (also m < 0).
+#[inline]
+pub fn elliprd(x: f64, y: f64, z: f64) -> f64 {
+    spec_math::misc::elliprd(x, y, z)
+}
+
+/// expm1(x)/x, with its limit 1 at x = 0 (no 0/0).
+#[inline]
+pub fn expm1_over_x(x: f64) -> f64 {
+    if x == 0.0 {
+        1.0
+    } else {
+        x.exp_m1() / x
+    }
+}
+
+/// ln(1+x)/x, with its limit 1 at x = 0 (no 0/0).
+#[inline]
+pub fn ln1p_over_x(x: f64) -> f64 {
+    if x == 0.0 {
+        1.0
+    } else {
+        x.ln_1p() / x
+    }
+}
+
+/// The tail of the erfc continued fraction: returns `k` such that
+/// √π · x · e^{x²} erfc(x) = x / (x + k), for x > 0.
+///
+/// `k = ½/(x + 1/(x + (3/2)/(x + 2/(x + …))))` (Abramowitz & Stegun 7.1.14), evaluated with the
+/// modified Lentz method. It gives 1 − √π x e^{x²} erfc(x) = k/(x+k) without cancellation,
+/// which is what Beckmann's Λ needs for large x. Converges quickly for x ≥ 2 (the only range
+/// it is used in).
+pub fn erfc_ratio_tail(x: f64) -> f64 {
+    // k = a1/(x + a2/(x + a3/(x + …))), a_n = n/2.
+    lentz(|n| 0.5 * n as f64, |_| x)
+}
+
+/// Modified Lentz evaluation of a1/(b1 + a2/(b2 + a3/(b3 + …))) with b_n = b(n), a_n = a(n).
+fn lentz(a: impl Fn(usize) -> f64, b: impl Fn(usize) -> f64) -> f64 {
+    // Tiny stands in for a zero denominator (Numerical Recipes §5.2).
+    const TINY: f64 = 1e-300;
+    let mut f = TINY;
+    let mut c = f;
+    let mut d = 0.0;
+    for n in 1..10_000 {
+        let an = a(n);
+        let bn = b(n);
+        d = bn + an * d;
+        if d == 0.0 {
+            d = TINY;
+        }
+        c = bn + an / c;
+        if c == 0.0 {
+            c = TINY;
+        }
+        d = 1.0 / d;
+        let delta = c * d;
+        f *= delta;
+        // Converged to the last bit: |Δ − 1| below one ulp of 1.
+        if (delta - 1.0).abs() <= 1e-16 {
+            break;
+        }
+    }
+    // b0 = 0 was represented by TINY, which only scales f by (1 + O(1e-300)).
+    f
+}
+
+/// The Double-GGX slope kernel G(c) = c²·[(1+c) e^c E₁(c) − 1], c > 0, with G(∞) = 1.
+///
+/// Double GGX has P22(r) = G(α²/r²)/(π α²). The bracket equals ∫₀^∞ e^{−ct} t/(1+t)² dt,
+/// which is positive and ~1/c² for large c, where the printed form cancels (it loses 2·log₁₀ c
+/// digits, ERRATA §D). For c ≥ 1 we use the even continued fraction of e^c E₁(c),
+/// e^c E₁(c) = 1/(c+1 − T), T = 1/(c+3 − 4/(c+5 − 9/(c+7 − …))), for which the bracket is
+/// exactly T/(c+1−T): no subtraction of nearly equal numbers. For c < 1 the bracket is at most
+/// 6.5× smaller than its terms, so E₁ from Cephes keeps ≤ 4e-14.
+pub fn dggx_g(c: f64) -> f64 {
+    if c.is_nan() {
+        return f64::NAN;
+    }
+    if c == f64::INFINITY {
+        return 1.0;
+    }
+    if c <= 0.0 {
+        return 0.0;
+    }
+    if c < 1.0 {
+        let bracket = (1.0 + c) * c.exp() * e1(c) - 1.0;
+        return c * c * bracket;
+    }
+    // T = 1/(c+3 + (−4)/(c+5 + (−9)/(c+7 + …))): a_1 = 1, a_n = −n² (n ≥ 2), b_n = c + 2n + 1.
+    let t = lentz(
+        |n| if n == 1 { 1.0 } else { -((n * n) as f64) },
+        |n| c + (2 * n + 1) as f64,
+    );
+    let f1 = 1.0 / (c + 1.0 - t);
+    // c²·T·f1 as (c·T)(c·f1): both factors are O(1), so nothing overflows for huge c.
+    (c * t) * (c * f1)
+}
+
+/// S(x) − 1 where S(x) = x e^x (K₀(x) + K₁(x)), for x > 0 (and 0 at x = 0).
+///
+/// Double GGX has √π U(−½, 0, 2x) = S(x), so Λ = (S − 1)/2. S → 1 as x → 0 and the direct
+/// form cancels (ERRATA §D); for x < 2 we sum the ascending series of K₀ and x K₁ − 1 (A&S
+/// 9.6.13, 9.6.11), whose terms are all small, and combine as e^x (x K₀ + (x K₁ − 1)) + expm1(x).
+pub fn bessel_k_sum_m1(x: f64) -> f64 {
+    if x.is_nan() {
+        return f64::NAN;
+    }
+    if x <= 0.0 {
+        return 0.0;
+    }
+    if x >= 2.0 {
+        return x * (k0e(x) + k1e(x)) - 1.0;
+    }
+    const EULER_GAMMA: f64 = 0.577_215_664_901_532_9;
+    let q = 0.25 * x * x;
+    let l = (0.5 * x).ln() + EULER_GAMMA;
+    // K0 = −l I0 + Σ_{k≥1} H_k q^k/(k!)²
+    // x K1 − 1 = x I1 ln(x/2) − (x²/4) Σ_{k≥0} [ψ(k+1)+ψ(k+2)] q^k/(k!(k+1)!)
+    //          with ψ(k+1) = −γ + H_k, and x I1 = 2q Σ q^k/(k!(k+1)!).
+    let mut i0 = 0.0;
+    let mut s0 = 0.0;
+    let mut xi1_sum = 0.0;
+    let mut s1 = 0.0;
+    let mut t0 = 1.0; // q^k/(k!)²
+    let mut t1 = 1.0; // q^k/(k!(k+1)!)
+    let mut h = 0.0; // H_k
+    for k in 0..60 {
+        let kf = k as f64;
+        if k > 0 {
+            h += 1.0 / kf;
+            t0 *= q / (kf * kf);
+            t1 *= q / (kf * (kf + 1.0));
+        }
+        i0 += t0;
+        s0 += h * t0;
+        xi1_sum += t1;
+        // ψ(k+1) + ψ(k+2) = −2γ + 2H_k + 1/(k+1)
+        s1 += (-2.0 * EULER_GAMMA + 2.0 * h + 1.0 / (kf + 1.0)) * t1;
+        // Terms decrease geometrically (q < 1); stop when they no longer change the sums.
+        if t1 < 1e-18 * xi1_sum && t0 < 1e-18 * i0 {
+            break;
+        }
+    }
+    let k0 = -l * i0 + s0;
+    let xk1_m1 = 2.0 * q * xi1_sum * (0.5 * x).ln() - q * s1;
+    x.exp() * (x * k0 + xk1_m1) + x.exp_m1()
+}
