@@ -1,1 +1,49 @@
-fn main() {}
+//! `microfacet`: the command-line face of the library. One file per subcommand; this file only
+//! dispatches and turns failures into one-line messages with a non-zero exit code.
+
+mod eval;
+mod verify;
+
+use std::process::ExitCode;
+
+const USAGE: &str = "\
+microfacet — microfacet NDFs, exact and verified
+
+usage:
+  microfacet verify [--ndf LIST] [--alpha LIST] [--gamma LIST]
+      check every identity of the source pages by numerical integration;
+      one line per check (PASS/FAIL, residual); exit 1 if any fails.
+      LIST is comma-separated, e.g. --ndf ggx,gtr --alpha 0.1,0.5 --gamma 1,1.5
+  microfacet eval
+      JSON lines in, JSON lines out, e.g.
+      {\"ndf\":\"gtr\",\"alpha\":0.3,\"gamma\":1.5,\"quantity\":\"lambda\",\"u\":0.5} -> {\"value\":...}
+      quantities: d, sigma, lambda, g1 (u); p22 (p, q); p2 (p); f (x); g2 (u_o, u_i)
+  microfacet --help
+";
+
+fn main() -> ExitCode {
+    // A panic is a bug, but the user still gets one line, not a backtrace.
+    std::panic::set_hook(Box::new(|info| {
+        eprintln!("microfacet: internal error: {info}");
+    }));
+    let args: Vec<String> = std::env::args().skip(1).collect();
+    let result = match args.first().map(String::as_str) {
+        Some("verify") => verify::run(&args[1..]),
+        Some("eval") => eval::run(&args[1..]),
+        Some("-h" | "--help" | "help") => {
+            print!("{USAGE}");
+            Ok(ExitCode::SUCCESS)
+        }
+        None => Err("no command given (try `microfacet --help`)".to_string()),
+        Some(other) => Err(format!(
+            "unknown command '{other}' (try `microfacet --help`)"
+        )),
+    };
+    match result {
+        Ok(code) => code,
+        Err(msg) => {
+            eprintln!("microfacet: {msg}");
+            ExitCode::from(2)
+        }
+    }
+}
