@@ -79,19 +79,29 @@ impl Mixing {
 }
 
 /// ∫₀^∞ w(t) q(α(t)) dt: the mixture of a component quantity `q(roughness)`.
+///
+/// The integrand can be a narrow peak far from the weight's own scale (at grazing angles and
+/// small α the components that matter are the rough ones, deep in the weight's tail), so the
+/// quadrature's scale is put at the integrand's maximum, found on a logarithmic grid of t.
 pub fn superpose(mixing: Mixing, alpha: f64, q: impl Fn(f64) -> f64) -> quad::Quad {
-    quad::integrate_to_inf(
-        |t| {
-            let w = mixing.pdf(alpha, t);
-            if w == 0.0 {
-                return 0.0;
-            }
-            w * q(mixing.roughness(alpha, t))
-        },
-        0.0,
-        mixing.scale(alpha),
-        1e-13,
-    )
+    let f = |t: f64| {
+        let w = mixing.pdf(alpha, t);
+        if w == 0.0 {
+            return 0.0;
+        }
+        w * q(mixing.roughness(alpha, t))
+    };
+    // 1e-12 … 1e12 around the weight's scale, 8 points per decade.
+    let base = mixing.scale(alpha);
+    let mut peak = (base, f(base).abs());
+    for k in -96..=96 {
+        let t = base * 10f64.powf(k as f64 / 8.0);
+        let v = f(t).abs();
+        if v > peak.1 {
+            peak = (t, v);
+        }
+    }
+    quad::integrate_to_inf(f, 0.0, peak.0, 1e-13)
 }
 
 /// Mixture of Beckmann components; `q` sees each component (any roughness > 0, unchecked).

@@ -324,3 +324,4 @@ pub fn family_checks(sweep: &Sweep, alpha: f64) -> Vec<Check> {
     }
     out
 }
+
