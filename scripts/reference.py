@@ -7,14 +7,15 @@ slope marginals near p = 0. Each Lambda is computed by two independent routes (t
 integral over P2, and the projected-area "delta integral" over D) and the record keeps their
 agreement.
 
-Usage: python3 scripts/reference.py > crates/microfacet/tests/data/extra.json
+Usage: python3 scripts/reference.py [NDF ...] > crates/microfacet/tests/data/extra-NAME.json
+(no NDF: all of them; the test reads every tests/data/extra-*.json)
 Needs: pip install mpmath  (runs in a few minutes on 2 cores)
 """
 import json
 import sys
 from mpmath import mp, mpf, sqrt, exp, pi, log, expm1, hyp2f1, besselk, hyperu, e1, quad, inf, acos, erfc, gamma as G
 
-mp.dps = 40
+mp.dps = 30
 
 
 def dec(x):
@@ -122,13 +123,16 @@ def main():
     for ndf in ["beckmann", "ggx", "double_ggx", "exponential"]:
         for a in alphas:
             cases.append((ndf, dec(a), None))
-    for g in ["0.5", "0.999999999999", "1.000000000001", "1.3", "1.5", "2.5", "4"]:
-        for a in ["0.01", "0.3", "2.5"] + near_one:
+    for g in ["0.5", "0.999999999999", "1.000000000001", "1.3", "2.5"]:
+        for a in ["0.01", "2.5"] + near_one:
             cases.append(("gtr", dec(a), dec(g)))
     for g in ["1", "2"]:
         for a in near_one:
             cases.append(("gtr", dec(a), dec(g)))
+    only = sys.argv[1:]
     for ndf, a, g in cases:
+        if only and ndf not in only:
+            continue
         D, P, P2 = make(ndf, a, g)
         for us_ in us:
             u = dec(us_)

@@ -1,0 +1,45 @@
+#!/usr/bin/env python3
+"""Reference values (mpmath, 30 digits) for the special functions microfacet uses.
+
+Usage: python3 scripts/special_reference.py > crates/microfacet/tests/data/special.json
+"""
+import json
+from mpmath import mp, mpf, e1, besselk, erf, erfc, exp, sqrt, pi, elliprd, hyperu
+
+mp.dps = 30
+
+
+def grid(lo, hi, n):
+    return [float(mpf(lo) * (mpf(hi) / mpf(lo)) ** (mpf(k) / (n - 1))) for k in range(n)]
+
+
+out = {}
+xs = grid("1e-6", "700", 80)
+out["erf"] = [[x, float(erf(mpf(x)))] for x in grid("1e-6", "6", 60)]
+out["erfc"] = [[x, float(erfc(mpf(x)))] for x in grid("1e-6", "26", 60)]
+out["e1"] = [[x, float(e1(mpf(x)))] for x in xs]
+out["k0e"] = [[x, float(exp(mpf(x)) * besselk(0, mpf(x)))] for x in xs]
+out["k1e"] = [[x, float(exp(mpf(x)) * besselk(1, mpf(x)))] for x in xs]
+# erfc continued-fraction tail: k with sqrt(pi) x e^{x^2} erfc(x) = x/(x+k)
+def tail(x):
+    x = mpf(x)
+    r = sqrt(pi) * x * exp(x * x) * erfc(x)
+    return x / r - x
+out["erfc_ratio_tail"] = [[x, float(tail(x))] for x in grid("2", "1e4", 40)]
+# Double GGX kernel G(c) = c^2 [(1+c) e^c E1(c) - 1]
+def G(c):
+    c = mpf(c)
+    with mp.workdps(60 + int(2 * mp.log10(1 + c))):
+        return c * c * ((1 + c) * exp(c) * e1(c) - 1)
+out["dggx_g"] = [[c, float(G(c))] for c in grid("1e-8", "1e8", 80)]
+# S(x) - 1 with S(x) = x e^x (K0 + K1) = sqrt(pi) U(-1/2, 0, 2x)
+def S1(x):
+    x = mpf(x)
+    with mp.workdps(60):
+        return x * exp(x) * (besselk(0, x) + besselk(1, x)) - 1
+out["bessel_k_sum_m1"] = [[x, float(S1(x))] for x in grid("1e-10", "1e4", 80)]
+# check of the U identity the library relies on (ERRATA A.5)
+out["u_identity_max_rel"] = float(max(abs(sqrt(pi) * hyperu(-0.5, 0, 2 * mpf(x)) - (S1(x) + 1)) / (S1(x) + 1) for x in grid("1e-3", "50", 10)))
+# Carlson R_D(0, y, 1)
+out["elliprd_0_y_1"] = [[y, float(elliprd(0, mpf(y), 1))] for y in grid("1e-6", "1e6", 60)]
+print(json.dumps(out, indent=0))
