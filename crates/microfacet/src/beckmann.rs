@@ -102,7 +102,8 @@ impl Ndf for Beckmann {
     fn lambda_pos(&self, u: f64) -> f64 {
         // a² = u²/(α²(1 − u²)), in double-double for e^{−a²}.
         let a2 = Dd::mul_f(u, u).div(Dd::mul_f(self.alpha, self.alpha).mul(Dd::one_minus_sq(u)));
-        let a = a2.hi.sqrt();
+        // a itself from u directly: a² underflows for u below ~1e-154 α.
+        let a = crate::smith::cot_theta(u) / self.alpha;
         if a < 2.0 {
             // Cancellation here is at most a factor 10 (at a = 2).
             (a2.exp_neg() / (a * SQRT_PI) - erfc(a)) / 2.0

@@ -13,6 +13,8 @@
 //! # Numerics
 //! * G(c) cancels like 1/c² near the normal in the printed form; [`crate::special::dggx_g`]
 //!   evaluates it from a continued fraction without cancellation.
+//! * D diverges logarithmically at grazing (D ~ α² ln(1/c)/π, c = α²/tan²θ → 0): it is
+//!   finite for every u > 0 and evaluated without forming c² or u⁴ there.
 //! * Λ cancels as u → 1; [`crate::special::bessel_k_sum_m1`] sums series there.
 //! * P2 cancels for small |p| (c large): for c > 1/4 we use the integral
 //!   P2 = (1/(2α)) ∫₀^∞ e^{−t} √t (1 + t/c)^{−3/2} dt (tanh-sinh, 1e-14), which is
@@ -22,7 +24,7 @@
 use crate::error::{check_alpha, ParamError};
 use crate::ndf::{upper, Ndf, ShapeInvariant};
 use crate::quad;
-use crate::special::{bessel_k_sum_m1, dd::Dd, dggx_g, k0e, k1e};
+use crate::special::{bessel_k_sum_m1, dd::Dd, dggx_bracket, dggx_g, k0e, k1e};
 use std::f64::consts::PI;
 
 /// √π
@@ -59,7 +61,19 @@ impl Ndf for DoubleGgx {
         let Some(u) = upper(u) else { return 0.0 };
         let a2 = self.alpha * self.alpha;
         let ua = u * self.alpha;
-        let c = ua * ua / Dd::one_minus_sq(u).hi; // = α²/tan²θ, +∞ at u = 1
+        let one_u2 = Dd::one_minus_sq(u).hi;
+        let c = ua * ua / one_u2; // = α²/tan²θ, +∞ at u = 1
+        if c < 1e-300 {
+            // c (nearly) underflows: g(c) = −γ_E − 1 − ln c + O(c ln c), ln c from logs.
+            const EULER_GAMMA: f64 = 0.577_215_664_901_532_9;
+            let ln_c = 2.0 * (u.ln() + self.alpha.ln()) - one_u2.ln();
+            return a2 * (-EULER_GAMMA - 1.0 - ln_c) / (PI * one_u2 * one_u2);
+        }
+        if c < 1.0 {
+            // G(c)/(α² u⁴) = α² g(c)/(1 − u²)²: D grows like α² ln(1/c)/π at grazing, while
+            // c² and u⁴ would both underflow.
+            return a2 * dggx_bracket(c) / (PI * one_u2 * one_u2);
+        }
         let u2 = u * u;
         dggx_g(c) / (PI * a2 * u2 * u2)
     }
@@ -80,6 +94,10 @@ impl Ndf for DoubleGgx {
         if c == f64::INFINITY {
             return SQRT_PI / (4.0 * a);
         }
+        // c < 1e-280 means |p| > 1e134 α, where P2 ~ α² ln(1/c)/(2|p|³) has underflowed.
+        if c < 1e-280 {
+            return 0.0;
+        }
         if c <= 0.25 {
             // The Bessel form; its bracket is at least a third of its largest term here.
             let h = 0.5 * c;
@@ -97,6 +115,10 @@ impl Ndf for DoubleGgx {
 
     fn lambda_pos(&self, u: f64) -> f64 {
         let t = self.alpha / crate::smith::cot_theta(u);
+        // For t > 1e150, t² overflows; there S = x e^x (K₀ + K₁) = √(2πx)(1 + O(1/x)) = √π t.
+        if t > 1e150 {
+            return 0.5 * SQRT_PI * t;
+        }
         0.5 * bessel_k_sum_m1(0.5 * t * t)
     }
 

@@ -72,6 +72,10 @@ impl Ndf for Ggx {
 
     fn lambda_pos(&self, u: f64) -> f64 {
         let t = self.alpha / crate::smith::cot_theta(u);
+        // For t > 1e150, t² overflows; there Λ = (√(1+t²) − 1)/2 = t/2 to f64 precision.
+        if t > 1e150 {
+            return 0.5 * t;
+        }
         let s = t * t;
         s / (2.0 * (1.0 + (1.0 + s).sqrt()))
     }

@@ -170,6 +170,10 @@ impl Ndf for Gtr {
             return p;
         }
         let p2 = p * p;
+        // P2 decays like |p|⁻³: once p² overflows it has long underflowed.
+        if !p2.is_finite() {
+            return 0.0;
+        }
         let a2 = self.alpha * self.alpha;
         match self.case {
             Case::Two => Ggx::raw(self.alpha).p2(p),
@@ -186,9 +190,6 @@ impl Ndf for Gtr {
                     / (3.0 * PI * b * b.sqrt())
             }
             Case::General => {
-                if !p2.is_finite() {
-                    return 0.0;
-                }
                 let scale = (p2 + a2).sqrt();
                 2.0 * quad::integrate_to_inf(|q| self.p22_r2(p2 + q * q), 0.0, scale, SMITH_TOL)
                     .value
@@ -201,7 +202,7 @@ impl Ndf for Gtr {
             Case::Two => Ggx::raw(self.alpha).lambda_pos(u),
             Case::One => {
                 // Seed 003 (ERRATA A.8) rearranged: with S = √(1 + α² tan²θ), k = (1−u²)(1−α²)/(1+uS),
-                // Λ = (1−u²) E(L) (S + 1 − ln1p(x)/x) / (u (1+uS)(1+S)),  x = k/(u(1+S)).
+                // Λ = (1−u²) E(L) (S + 1 − ln1p(x)/x) / (u (1+uS)(1+S)),  x = k/(u(1+S)), E(L) = expm1(L)/L.
                 let a = self.alpha;
                 let one_u2 = Dd::one_minus_sq(u).hi;
                 let t = a / cot_theta(u);
@@ -209,8 +210,9 @@ impl Ndf for Gtr {
                 let us = (u * u + one_u2 * a * a).sqrt();
                 let l = 2.0 * a.ln();
                 let x = one_u2 * (-l.exp_m1()) / ((1.0 + us) * u * (1.0 + s));
-                one_u2 * expm1_over_x(l) * (s + (1.0 - ln1p_over_x(x)))
-                    / (u * (1.0 + us) * (1.0 + s))
+                // (S + 1 − lr)/(1 + S) written as 1 − lr/(1 + S), which stays finite when S
+                // overflows at grazing angles.
+                one_u2 * expm1_over_x(l) * (1.0 - ln1p_over_x(x) / (1.0 + s)) / (u * (1.0 + us))
             }
             Case::ThreeHalves | Case::General => {
                 let a = cot_theta(u);

@@ -21,10 +21,9 @@ impl Dd {
     #[inline]
     pub fn mul_f(a: f64, b: f64) -> Self {
         let hi = a * b;
-        Dd {
-            hi,
-            lo: a.mul_add(b, -hi),
-        }
+        // An overflowed product has no meaningful low part (fma would give inf − inf = NaN).
+        let lo = if hi.is_finite() { a.mul_add(b, -hi) } else { 0.0 };
+        Dd { hi, lo }
     }
 
     /// (self) × b, to about 2⁻¹⁰⁴ relative.
@@ -39,6 +38,9 @@ impl Dd {
     #[inline]
     pub fn div(self, b: Dd) -> Self {
         let q = self.hi / b.hi;
+        if !q.is_finite() || q == 0.0 {
+            return Dd::new(q);
+        }
         // r = self − q·b, computed exactly for the leading part.
         let p = Dd::mul_f(q, b.hi);
         let r = (self.hi - p.hi) - p.lo + self.lo - q * b.lo;
@@ -60,6 +62,9 @@ impl Dd {
     #[inline]
     pub fn add(self, b: Dd) -> Self {
         let s = self.hi + b.hi;
+        if !s.is_finite() {
+            return Dd::new(s);
+        }
         let bb = s - self.hi;
         let err = (self.hi - (s - bb)) + (b.hi - bb);
         Dd::fast_two_sum(s, err + self.lo + b.lo)

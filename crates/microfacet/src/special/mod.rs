@@ -132,8 +132,7 @@ pub fn dggx_g(c: f64) -> f64 {
         return 0.0;
     }
     if c < 1.0 {
-        let bracket = (1.0 + c) * c.exp() * e1(c) - 1.0;
-        return c * c * bracket;
+        return c * c * dggx_bracket(c);
     }
     // T = 1/(c+3 + (−4)/(c+5 + (−9)/(c+7 + …))): a_1 = 1, a_n = −n² (n ≥ 2), b_n = c + 2n + 1.
     let t = lentz(
@@ -143,6 +142,13 @@ pub fn dggx_g(c: f64) -> f64 {
     let f1 = 1.0 / (c + 1.0 - t);
     // c²·T·f1 as (c·T)(c·f1): both factors are O(1), so nothing overflows for huge c.
     (c * t) * (c * f1)
+}
+
+/// The bracket g(c) = (1+c) e^c E₁(c) − 1 of [`dggx_g`] for 0 < c < 1 (G = c² g), for callers
+/// that must divide the c² out analytically (Double GGX D at grazing, where g ~ −ln c grows
+/// while c² underflows).
+pub fn dggx_bracket(c: f64) -> f64 {
+    (1.0 + c) * c.exp() * e1(c) - 1.0
 }
 
 /// S(x) − 1 where S(x) = x e^x (K₀(x) + K₁(x)), for x > 0 (and 0 at x = 0).
@@ -156,6 +162,9 @@ pub fn bessel_k_sum_m1(x: f64) -> f64 {
     }
     if x <= 0.0 {
         return 0.0;
+    }
+    if x == f64::INFINITY {
+        return x;
     }
     if x >= 2.0 {
         return x * (k0e(x) + k1e(x)) - 1.0;
