@@ -153,10 +153,11 @@ impl ShapeInvariant for Exponential {
 
 /// The page's approximations (seed 004), kept as named approximations.
 ///
-/// | approximation | max. abs. error of G1 vs the exact Exponential G1 (measured, tests) |
+/// | approximation | max. abs. error vs the exact Exponential NDF (measured, tests/approximations.rs) |
 /// |---|---|
-/// | [`approx::ei_g1`]`(u, 1.7α)` | 3.1e-3 (at cot θ/α ≈ 1.2) |
-/// | [`approx::g1_rational`] | 3.1e-3; it fits `ei_g1(u, 1.7α)` (to 3.4e-5), not the exact G1 |
+/// | [`approx::ei_g1`]`(u, 1.7α)` | G1: 3.06e-3, at cot θ/α ≈ 1.20 (independent of α) |
+/// | [`approx::g1_rational`]`(u, α)` | G1: 3.07e-3; it fits `ei_g1(u, 1.7α)` (to 3.4e-5), not the exact G1, and jumps from 0.99939 to 1 at its x = 1.5 switch |
+/// | [`approx::ei_sigma`]`(u, 1.7α)` | σ over u ∈ [−1, 1]: 2.1e-4 (α = 0.05), 1.7e-3 (α = 0.5), 2.5e-3 (α = 1) |
 ///
 /// `ei_lambda` and `ei_sigma` are the *exact* Λ and σ of a different NDF,
 /// P22 = E₁(r²/α²)/(π α²) (a uniform mixture of Beckmann roughness² over [0, α²], ERRATA B.7);

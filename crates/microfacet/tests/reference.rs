@@ -105,6 +105,23 @@ fn check_file(path: &str) -> usize {
     records.len()
 }
 
+/// Our own values (scripts/reference.py): tiny and large α, α and γ within 1e-12 of GTR's
+/// removable singularities, general γ, near-normal and grazing directions, P2 near p = 0.
+#[test]
+fn extra_reference_values() {
+    let dir = concat!(env!("CARGO_MANIFEST_DIR"), "/tests/data");
+    let mut n = 0;
+    for entry in std::fs::read_dir(dir).unwrap() {
+        let path = entry.unwrap().path();
+        let name = path.file_name().unwrap().to_string_lossy().to_string();
+        if name.starts_with("extra-") && name.ends_with(".json") {
+            println!("{name}");
+            n += check_file(path.to_str().unwrap());
+        }
+    }
+    assert!(n >= 800, "expected the extra reference files, found {n} records");
+}
+
 #[test]
 fn shared_reference_values() {
     let n = check_file(concat!(env!("CARGO_MANIFEST_DIR"), "/tests/data/reference.json"));
