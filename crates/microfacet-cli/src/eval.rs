@@ -8,7 +8,9 @@ use std::process::ExitCode;
 
 pub fn run(args: &[String]) -> Result<ExitCode, String> {
     if let Some(a) = args.first() {
-        return Err(format!("eval: unexpected argument '{a}' (it reads JSON lines on stdin)"));
+        return Err(format!(
+            "eval: unexpected argument '{a}' (it reads JSON lines on stdin)"
+        ));
     }
     let stdin = std::io::stdin().lock();
     let mut out = BufWriter::new(std::io::stdout().lock());
@@ -24,7 +26,8 @@ pub fn run(args: &[String]) -> Result<ExitCode, String> {
         };
         writeln!(out, "{reply}").map_err(|e| format!("eval: writing stdout: {e}"))?;
     }
-    out.flush().map_err(|e| format!("eval: writing stdout: {e}"))?;
+    out.flush()
+        .map_err(|e| format!("eval: writing stdout: {e}"))?;
     Ok(if failed {
         ExitCode::FAILURE
     } else {
@@ -59,7 +62,9 @@ pub fn eval_line(line: &str) -> Result<f64, String> {
         .ok_or("missing field 'ndf'")?
         .as_str()
         .ok_or("field 'ndf' must be a string")?;
-    let kind: NdfKind = name.parse().map_err(|e: microfacet::family::UnknownNdf| e.to_string())?;
+    let kind: NdfKind = name
+        .parse()
+        .map_err(|e: microfacet::family::UnknownNdf| e.to_string())?;
     let alpha = field(obj, "alpha")?;
     let gamma = match kind {
         NdfKind::Gtr => Some(field(obj, "gamma")?),
@@ -87,8 +92,9 @@ pub fn eval_line(line: &str) -> Result<f64, String> {
         "p2" => ndf.p2(finite(obj, "p")?),
         "f" => {
             let x = finite(obj, "x")?;
-            ndf.f(x)
-                .ok_or_else(|| format!("f(x) is defined only for shape-invariant NDFs, not {name}"))?
+            ndf.f(x).ok_or_else(|| {
+                format!("f(x) is defined only for shape-invariant NDFs, not {name}")
+            })?
         }
         other => {
             return Err(format!(

@@ -5,7 +5,11 @@ use microfacet::NdfKind;
 use std::process::ExitCode;
 use std::time::Instant;
 
-fn parse_list<T>(flag: &str, value: Option<&String>, parse: impl Fn(&str) -> Result<T, String>) -> Result<Vec<T>, String> {
+fn parse_list<T>(
+    flag: &str,
+    value: Option<&String>,
+    parse: impl Fn(&str) -> Result<T, String>,
+) -> Result<Vec<T>, String> {
     let value = value.ok_or_else(|| format!("{flag} needs a value"))?;
     value
         .split(',')
@@ -58,10 +62,13 @@ pub fn run(args: &[String]) -> Result<ExitCode, String> {
         );
     });
     let failed = checks.iter().filter(|c| !c.pass()).count();
-    let worst = checks
-        .iter()
-        .map(|c| c.residual)
-        .fold(0.0_f64, |m, r| if r.is_nan() { f64::NAN } else { m.max(r) });
+    let worst = checks.iter().map(|c| c.residual).fold(0.0_f64, |m, r| {
+        if r.is_nan() {
+            f64::NAN
+        } else {
+            m.max(r)
+        }
+    });
     println!(
         "verify: {} checks, worst residual {:.2e}, {:.1} s",
         checks.len(),

@@ -48,7 +48,7 @@ impl Beckmann {
     /// exp(−x/α²)/(π α²) for a double-double x ≥ 0.
     fn gauss(&self, x: Dd) -> f64 {
         let a2 = Dd::mul_f(self.alpha, self.alpha);
-        let e = x.div(a2);
+        let e = x.div_dd(a2);
         if e.hi > EXP_UNDERFLOW {
             return 0.0;
         }
@@ -71,7 +71,7 @@ impl Ndf for Beckmann {
         }
         let Some(u) = upper(u) else { return 0.0 };
         // tan²θ = (1 − u²)/u²
-        let t2 = Dd::one_minus_sq(u).div(Dd::mul_f(u, u));
+        let t2 = Dd::one_minus_sq(u).div_dd(Dd::mul_f(u, u));
         let g = self.gauss(t2);
         if g == 0.0 {
             return 0.0;
@@ -81,7 +81,7 @@ impl Ndf for Beckmann {
     }
 
     fn p22(&self, p: f64, q: f64) -> f64 {
-        let r2 = Dd::mul_f(p, p).add(Dd::mul_f(q, q));
+        let r2 = Dd::mul_f(p, p).add_dd(Dd::mul_f(q, q));
         if !r2.hi.is_finite() {
             return if r2.hi.is_nan() { f64::NAN } else { 0.0 };
         }
@@ -89,7 +89,7 @@ impl Ndf for Beckmann {
     }
 
     fn p2(&self, p: f64) -> f64 {
-        let x = Dd::mul_f(p, p).div(Dd::mul_f(self.alpha, self.alpha));
+        let x = Dd::mul_f(p, p).div_dd(Dd::mul_f(self.alpha, self.alpha));
         if x.hi.is_nan() {
             return f64::NAN;
         }
@@ -101,7 +101,8 @@ impl Ndf for Beckmann {
 
     fn lambda_pos(&self, u: f64) -> f64 {
         // a² = u²/(α²(1 − u²)), in double-double for e^{−a²}.
-        let a2 = Dd::mul_f(u, u).div(Dd::mul_f(self.alpha, self.alpha).mul(Dd::one_minus_sq(u)));
+        let a2 =
+            Dd::mul_f(u, u).div_dd(Dd::mul_f(self.alpha, self.alpha).mul_dd(Dd::one_minus_sq(u)));
         // a itself from u directly: a² underflows for u below ~1e-154 α.
         let a = crate::smith::cot_theta(u) / self.alpha;
         if a < 2.0 {

@@ -39,7 +39,7 @@ impl Exponential {
 
     /// 2 e^{−2r/α}/(π α²) for a double-double r.
     fn p22_r(&self, r: Dd) -> f64 {
-        let x = r.div(Dd::new(0.5 * self.alpha));
+        let x = r.div_dd(Dd::new(0.5 * self.alpha));
         if x.hi.is_nan() {
             return f64::NAN;
         }
@@ -62,7 +62,7 @@ impl Exponential {
 
     /// cot θ in double-double.
     fn cot(u: f64) -> Dd {
-        Dd::new(u).div(Dd::one_minus_sq(u).sqrt())
+        Dd::new(u).div_dd(Dd::one_minus_sq(u).sqrt())
     }
 }
 
@@ -80,7 +80,7 @@ impl Ndf for Exponential {
             return u;
         }
         let Some(u) = upper(u) else { return 0.0 };
-        let tan = Dd::one_minus_sq(u).sqrt().div(Dd::new(u));
+        let tan = Dd::one_minus_sq(u).sqrt().div_dd(Dd::new(u));
         let p = self.p22_r(tan);
         if p == 0.0 {
             return 0.0;
@@ -90,7 +90,7 @@ impl Ndf for Exponential {
     }
 
     fn p22(&self, p: f64, q: f64) -> f64 {
-        let r2 = Dd::mul_f(p, p).add(Dd::mul_f(q, q));
+        let r2 = Dd::mul_f(p, p).add_dd(Dd::mul_f(q, q));
         if !r2.hi.is_finite() {
             return if r2.hi.is_nan() { f64::NAN } else { 0.0 };
         }
@@ -102,7 +102,7 @@ impl Ndf for Exponential {
             return p;
         }
         // (2/(π α)) x K₁(x), x = 2|p|/α, with x K₁(x) = x K₁e(x) e^{−x} → 1 as x → 0.
-        let x = Dd::new(p.abs()).div(Dd::new(0.5 * self.alpha));
+        let x = Dd::new(p.abs()).div_dd(Dd::new(0.5 * self.alpha));
         let xk1 = if x.hi == 0.0 {
             1.0
         } else if x.hi > EXP_UNDERFLOW {
@@ -133,7 +133,7 @@ impl Ndf for Exponential {
         }
         // σ(−|u|) = 2 sin θ I(cot θ).
         let sin = Dd::one_minus_sq(au).sqrt();
-        lit + 2.0 * sin.hi * self.smith(Dd::new(au).div(sin))
+        lit + 2.0 * sin.hi * self.smith(Dd::new(au).div_dd(sin))
     }
 
     fn sigma_zero(&self) -> f64 {

@@ -190,7 +190,9 @@ pub fn ndf_checks(ndf: &AnyNdf) -> Vec<Check> {
     }
     push(
         "Λ(u) = (1/a)∫_a^∞ (q−a) P2(q) dq",
-        max_over(&US, |u| rel(ndf.lambda(u), lambda_by_slope_integral(ndf, u))),
+        max_over(&US, |u| {
+            rel(ndf.lambda(u), lambda_by_slope_integral(ndf, u))
+        }),
     );
     push(
         "(1+Λ(u)) u = σ(u)",
@@ -266,7 +268,9 @@ pub fn family_checks(sweep: &Sweep, alpha: f64) -> Vec<Check> {
             push(
                 s.clone(),
                 &format!("D_GGX = {} superposition of Beckmann D", m.name()),
-                max_over(&US, |u| rel(ggx.d(u), superpose_beckmann(m, alpha, |b| b.d(u)))),
+                max_over(&US, |u| {
+                    rel(ggx.d(u), superpose_beckmann(m, alpha, |b| b.d(u)))
+                }),
             );
             push(
                 s.clone(),
@@ -308,7 +312,9 @@ pub fn family_checks(sweep: &Sweep, alpha: f64) -> Vec<Check> {
             push(
                 s.clone(),
                 &format!("D_Exp = {} superposition of Beckmann D", m.name()),
-                max_over(&US, |u| rel(e.d(u), superpose_beckmann(m, alpha, |b| b.d(u)))),
+                max_over(&US, |u| {
+                    rel(e.d(u), superpose_beckmann(m, alpha, |b| b.d(u)))
+                }),
             );
             push(
                 s.clone(),
@@ -341,4 +347,3 @@ pub fn family_checks(sweep: &Sweep, alpha: f64) -> Vec<Check> {
     }
     out
 }
-

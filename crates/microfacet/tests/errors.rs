@@ -92,13 +92,19 @@ fn sigma_zero_limits_match_errata() {
     assert!(close(DoubleGgx::new(a).unwrap().sigma(0.0), sp * a / 2.0));
     assert!(close(Ggx::new(a).unwrap().sigma(0.0), a / 2.0));
     assert!(close(Beckmann::new(a).unwrap().sigma(0.0), a / (2.0 * sp)));
-    assert!(close(Exponential::new(a).unwrap().sigma(0.0), a / std::f64::consts::PI));
+    assert!(close(
+        Exponential::new(a).unwrap().sigma(0.0),
+        a / std::f64::consts::PI
+    ));
     // σ is continuous at 0 from both sides.
     for kind in NdfKind::ALL {
         let n = AnyNdf::new(kind, a, Some(2.5)).unwrap();
         let s0 = n.sigma(0.0);
         for u in [1e-9, -1e-9] {
-            assert!((n.sigma(u) / s0 - 1.0).abs() < 1e-7, "{kind} σ({u}) vs σ(0)");
+            assert!(
+                (n.sigma(u) / s0 - 1.0).abs() < 1e-7,
+                "{kind} σ({u}) vs σ(0)"
+            );
         }
     }
 }

@@ -14,7 +14,16 @@ fn kind() -> impl Strategy<Value = NdfKind> {
 fn alpha() -> impl Strategy<Value = f64> {
     prop_oneof![
         (-6.0f64..6.0).prop_map(|e| 10f64.powf(e)),
-        prop::sample::select(vec![1e-6, 1e-4, 0.01, 1.0 - 1e-12, 1.0, 1.0 + 1e-12, 10.0, 1e6]),
+        prop::sample::select(vec![
+            1e-6,
+            1e-4,
+            0.01,
+            1.0 - 1e-12,
+            1.0,
+            1.0 + 1e-12,
+            10.0,
+            1e6
+        ]),
     ]
 }
 

@@ -119,11 +119,17 @@ fn extra_reference_values() {
             n += check_file(path.to_str().unwrap());
         }
     }
-    assert!(n >= 800, "expected the extra reference files, found {n} records");
+    assert!(
+        n >= 800,
+        "expected the extra reference files, found {n} records"
+    );
 }
 
 #[test]
 fn shared_reference_values() {
-    let n = check_file(concat!(env!("CARGO_MANIFEST_DIR"), "/tests/data/reference.json"));
+    let n = check_file(concat!(
+        env!("CARGO_MANIFEST_DIR"),
+        "/tests/data/reference.json"
+    ));
     assert_eq!(n, 1404);
 }

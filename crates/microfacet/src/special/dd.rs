@@ -22,13 +22,17 @@ impl Dd {
     pub fn mul_f(a: f64, b: f64) -> Self {
         let hi = a * b;
         // An overflowed product has no meaningful low part (fma would give inf − inf = NaN).
-        let lo = if hi.is_finite() { a.mul_add(b, -hi) } else { 0.0 };
+        let lo = if hi.is_finite() {
+            a.mul_add(b, -hi)
+        } else {
+            0.0
+        };
         Dd { hi, lo }
     }
 
     /// (self) × b, to about 2⁻¹⁰⁴ relative.
     #[inline]
-    pub fn mul(self, b: Dd) -> Self {
+    pub fn mul_dd(self, b: Dd) -> Self {
         let p = Dd::mul_f(self.hi, b.hi);
         let lo = p.lo + (self.hi * b.lo + self.lo * b.hi);
         Dd::fast_two_sum(p.hi, lo)
@@ -36,7 +40,7 @@ impl Dd {
 
     /// (self) / b.
     #[inline]
-    pub fn div(self, b: Dd) -> Self {
+    pub fn div_dd(self, b: Dd) -> Self {
         let q = self.hi / b.hi;
         if !q.is_finite() || q == 0.0 {
             return Dd::new(q);
@@ -60,7 +64,7 @@ impl Dd {
 
     /// self + b.
     #[inline]
-    pub fn add(self, b: Dd) -> Self {
+    pub fn add_dd(self, b: Dd) -> Self {
         let s = self.hi + b.hi;
         if !s.is_finite() {
             return Dd::new(s);
@@ -83,7 +87,10 @@ impl Dd {
     #[inline]
     fn fast_two_sum(a: f64, b: f64) -> Self {
         let s = a + b;
-        Dd { hi: s, lo: b - (s - a) }
+        Dd {
+            hi: s,
+            lo: b - (s - a),
+        }
     }
 
     /// exp(−self), with the low part applied as a first-order correction.

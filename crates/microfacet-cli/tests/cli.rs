@@ -1,0 +1,165 @@
+//! The `microfacet` binary, end to end: eval's JSON-lines contract, verify's exit codes, and
+//! one-line errors (never a backtrace) for bad input.
+
+use std::io::Write;
+use std::process::{Command, Output, Stdio};
+
+fn microfacet(args: &[&str], stdin: &str) -> Output {
+    let mut child = Command::new(env!("CARGO_BIN_EXE_microfacet"))
+        .args(args)
+        .stdin(Stdio::piped())
+        .stdout(Stdio::piped())
+        .stderr(Stdio::piped())
+        .spawn()
+        .unwrap();
+    // Feed stdin from a thread: a large input would otherwise deadlock against a full stdout pipe.
+    let mut pipe = child.stdin.take().unwrap();
+    let input = stdin.to_string();
+    let feeder = std::thread::spawn(move || {
+        let _ = pipe.write_all(input.as_bytes());
+    });
+    let out = child.wait_with_output().unwrap();
+    feeder.join().unwrap();
+    out
+}
+
+fn lines(out: &[u8]) -> Vec<serde_json::Value> {
+    String::from_utf8_lossy(out)
+        .lines()
+        .map(|l| serde_json::from_str(l).unwrap())
+        .collect()
+}
+
+#[test]
+fn eval_answers_every_quantity_in_order() {
+    let input = r#"{"ndf":"ggx","alpha":0.5,"quantity":"lambda","u":0.5}
+{"ndf":"gtr","alpha":0.3,"gamma":1.5,"quantity":"lambda","u":0.5}
+{"ndf":"beckmann","alpha":0.3,"quantity":"d","u":0.9}
+{"ndf":"double_ggx","alpha":0.3,"quantity":"p22","p":0.1,"q":0.2}
+{"ndf":"exponential","alpha":0.3,"quantity":"p2","p":0.1}
+{"ndf":"exponential","alpha":0.3,"quantity":"f","x":0.7}
+{"ndf":"gtr","alpha":0.3,"gamma":2.5,"quantity":"sigma","u":-0.4}
+{"ndf":"ggx","alpha":0.3,"quantity":"g1","u":0.2}
+{"ndf":"ggx","alpha":0.3,"quantity":"g2","u_o":0.2,"u_i":0.7}
+"#;
+    let out = microfacet(&["eval"], input);
+    assert!(
+        out.status.success(),
+        "{}",
+        String::from_utf8_lossy(&out.stderr)
+    );
+    let got = lines(&out.stdout);
+    assert_eq!(got.len(), 9);
+    // GGX Λ(0.5) at α = 0.5: (−1 + √(1 + α² tan²θ))/2 with tan²θ = 3.
+    let want = (-1.0 + (1.0f64 + 0.25 * 3.0).sqrt()) / 2.0;
+    assert!((got[0]["value"].as_f64().unwrap() - want).abs() < 1e-15);
+    for g in &got {
+        let v = g["value"].as_f64().expect("a value");
+        assert!(v.is_finite() && v >= 0.0, "{g}");
+    }
+    // f(0.7) of the Exponential NDF is 2 e^{−1.4}/π.
+    let f = 2.0 * (-1.4f64).exp() / std::f64::consts::PI;
+    assert!((got[5]["value"].as_f64().unwrap() / f - 1.0).abs() < 1e-15);
+}
+
+#[test]
+fn eval_reports_bad_lines_and_goes_on() {
+    let input = r#"not json
+{"ndf":"phong","alpha":0.3,"quantity":"d","u":0.5}
+{"ndf":"ggx","alpha":0.3,"quantity":"brdf","u":0.5}
+{"ndf":"ggx","alpha":0.3,"quantity":"d"}
+{"ndf":"ggx","alpha":-1,"quantity":"d","u":0.5}
+{"ndf":"gtr","alpha":0.3,"quantity":"d","u":0.5}
+{"ndf":"gtr","alpha":0.3,"gamma":0,"quantity":"d","u":0.5}
+{"ndf":"ggx","alpha":0.3,"quantity":"d","u":2}
+{"ndf":"ggx","alpha":0.3,"quantity":"lambda","u":0}
+{"ndf":"gtr","alpha":0.3,"gamma":1,"quantity":"f","x":1}
+{"ndf":"ggx","alpha":"0.3","quantity":"d","u":0.5}
+[1,2]
+
+{"ndf":"ggx","alpha":0.3,"quantity":"d","u":0.5}
+"#;
+    let out = microfacet(&["eval"], input);
+    assert_eq!(out.status.code(), Some(1));
+    let got = lines(&out.stdout);
+    assert_eq!(got.len(), 14, "one reply per input line");
+    let expect = [
+        "not valid JSON",
+        "unknown ndf 'phong'",
+        "unknown quantity 'brdf'",
+        "missing field 'u'",
+        "alpha must be",
+        "missing field 'gamma'",
+        "gamma must be",
+        "must be in [-1, 1]",
+        "lambda diverges at u = 0",
+        "only for shape-invariant",
+        "field 'alpha' must be a number",
+        "expected a JSON object",
+        "not valid JSON",
+    ];
+    for (g, e) in got.iter().zip(expect) {
+        let msg = g["error"]
+            .as_str()
+            .unwrap_or_else(|| panic!("{g} should be an error"));
+        assert!(msg.contains(e), "'{msg}' should contain '{e}'");
+    }
+    assert!(
+        got[13]["value"].as_f64().is_some(),
+        "the run goes on after errors"
+    );
+    assert!(out.stderr.is_empty());
+}
+
+#[test]
+fn eval_handles_many_lines() {
+    let line = r#"{"ndf":"gtr","alpha":0.4,"gamma":2.5,"quantity":"lambda","u":0.3}"#;
+    let input = format!("{line}\n").repeat(20_000);
+    let out = microfacet(&["eval"], &input);
+    assert!(out.status.success());
+    assert_eq!(String::from_utf8_lossy(&out.stdout).lines().count(), 20_000);
+}
+
+#[test]
+fn verify_subset_passes() {
+    let out = microfacet(
+        &[
+            "verify", "--ndf", "ggx,gtr", "--alpha", "0.3,1.5", "--gamma", "1,2.5",
+        ],
+        "",
+    );
+    let text = String::from_utf8_lossy(&out.stdout);
+    assert!(out.status.success(), "{text}");
+    assert!(text.lines().filter(|l| l.starts_with("PASS")).count() > 20);
+    assert!(!text.contains("FAIL"));
+    assert!(text.trim_end().ends_with("0 failed"), "{text}");
+}
+
+#[test]
+fn bad_arguments_get_one_line_and_exit_2() {
+    for args in [
+        vec![],
+        vec!["frobnicate"],
+        vec!["verify", "--alpha"],
+        vec!["verify", "--alpha", "abc"],
+        vec!["verify", "--alpha", "-1"],
+        vec!["verify", "--ndf", "phong"],
+        vec!["verify", "--gamma", "0", "--ndf", "gtr"],
+        vec!["verify", "--bogus"],
+        vec!["eval", "extra"],
+    ] {
+        let out = microfacet(&args, "");
+        assert_eq!(out.status.code(), Some(2), "{args:?}");
+        let err = String::from_utf8_lossy(&out.stderr);
+        assert_eq!(err.lines().count(), 1, "{args:?}: {err}");
+        assert!(err.starts_with("microfacet: "), "{err}");
+        assert!(out.stdout.is_empty());
+    }
+}
+
+#[test]
+fn help_succeeds() {
+    let out = microfacet(&["--help"], "");
+    assert!(out.status.success());
+    assert!(String::from_utf8_lossy(&out.stdout).contains("verify"));
+}
