@@ -17,7 +17,7 @@
 //!   reference grid; values below ~1e-308 underflow to (sub)normal or 0.
 
 use crate::error::{check_alpha, ParamError};
-use crate::ndf::{upper, Ndf, ShapeInvariant};
+use crate::ndf::{Ndf, ShapeInvariant};
 use crate::special::{dd::Dd, erfc, erfc_ratio_tail};
 use std::f64::consts::PI;
 
@@ -65,11 +65,7 @@ impl Ndf for Beckmann {
         self.alpha
     }
 
-    fn d(&self, u: f64) -> f64 {
-        if u.is_nan() {
-            return u;
-        }
-        let Some(u) = upper(u) else { return 0.0 };
+    fn d_pos(&self, u: f64) -> f64 {
         // tan²θ = (1 − u²)/u²
         let t2 = Dd::one_minus_sq(u).div_dd(Dd::mul_f(u, u));
         let g = self.gauss(t2);

@@ -22,7 +22,7 @@
 //! * Accuracy: ≤ 1e-13 relative over the reference grid (tests/reference.rs).
 
 use crate::error::{check_alpha, ParamError};
-use crate::ndf::{upper, Ndf, ShapeInvariant};
+use crate::ndf::{Ndf, ShapeInvariant};
 use crate::quad;
 use crate::special::{bessel_k_sum_m1, dd::Dd, dggx_bracket, dggx_g, k0e, k1e};
 use std::f64::consts::PI;
@@ -54,11 +54,7 @@ impl Ndf for DoubleGgx {
         self.alpha
     }
 
-    fn d(&self, u: f64) -> f64 {
-        if u.is_nan() {
-            return u;
-        }
-        let Some(u) = upper(u) else { return 0.0 };
+    fn d_pos(&self, u: f64) -> f64 {
         let a2 = self.alpha * self.alpha;
         let ua = u * self.alpha;
         let one_u2 = Dd::one_minus_sq(u).hi;

@@ -15,7 +15,7 @@
 //! Valid for α ∈ [1e-6, 1e6].
 
 use crate::error::{check_alpha, ParamError};
-use crate::ndf::{upper, Ndf, ShapeInvariant};
+use crate::ndf::{Ndf, ShapeInvariant};
 use crate::smith::smith_integral;
 use crate::special::{dd::Dd, k1e};
 use std::f64::consts::PI;
@@ -75,11 +75,7 @@ impl Ndf for Exponential {
         self.alpha
     }
 
-    fn d(&self, u: f64) -> f64 {
-        if u.is_nan() {
-            return u;
-        }
-        let Some(u) = upper(u) else { return 0.0 };
+    fn d_pos(&self, u: f64) -> f64 {
         let tan = Dd::one_minus_sq(u).sqrt().div_dd(Dd::new(u));
         let p = self.p22_r(tan);
         if p == 0.0 {
@@ -118,22 +114,10 @@ impl Ndf for Exponential {
         2.0 * self.smith(a) / a.hi
     }
 
-    fn sigma(&self, u: f64) -> f64 {
-        if u.is_nan() {
-            return u;
-        }
-        let u = u.clamp(-1.0, 1.0);
-        let au = u.abs();
-        let lit = u.max(0.0);
-        if au >= 1.0 {
-            return lit;
-        }
-        if au == 0.0 {
-            return self.sigma_zero();
-        }
-        // σ(−|u|) = 2 sin θ I(cot θ).
-        let sin = Dd::one_minus_sq(au).sqrt();
-        lit + 2.0 * sin.hi * self.smith(Dd::new(au).div_dd(sin))
+    fn sigma_neg(&self, u: f64) -> f64 {
+        // σ(−u) = 2 sin θ I(cot θ).
+        let sin = Dd::one_minus_sq(u).sqrt();
+        2.0 * sin.hi * self.smith(Dd::new(u).div_dd(sin))
     }
 
     fn sigma_zero(&self) -> f64 {

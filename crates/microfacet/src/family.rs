@@ -141,8 +141,8 @@ impl Ndf for AnyNdf {
     fn alpha(&self) -> f64 {
         self.inner().alpha()
     }
-    fn d(&self, u: f64) -> f64 {
-        self.inner().d(u)
+    fn d_pos(&self, u: f64) -> f64 {
+        self.inner().d_pos(u)
     }
     fn p22(&self, p: f64, q: f64) -> f64 {
         self.inner().p22(p, q)
@@ -153,8 +153,8 @@ impl Ndf for AnyNdf {
     fn lambda_pos(&self, u: f64) -> f64 {
         self.inner().lambda_pos(u)
     }
-    fn sigma(&self, u: f64) -> f64 {
-        self.inner().sigma(u)
+    fn sigma_neg(&self, u: f64) -> f64 {
+        self.inner().sigma_neg(u)
     }
     fn sigma_zero(&self) -> f64 {
         self.inner().sigma_zero()

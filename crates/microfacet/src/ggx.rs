@@ -12,7 +12,7 @@
 //! * Accuracy: closed forms within 1e-14 relative (tests/reference.rs).
 
 use crate::error::{check_alpha, ParamError};
-use crate::ndf::{upper, Ndf, ShapeInvariant};
+use crate::ndf::{Ndf, ShapeInvariant};
 use crate::special::dd::Dd;
 use std::f64::consts::PI;
 
@@ -45,11 +45,7 @@ impl Ndf for Ggx {
         self.alpha
     }
 
-    fn d(&self, u: f64) -> f64 {
-        if u.is_nan() {
-            return u;
-        }
-        let Some(u) = upper(u) else { return 0.0 };
+    fn d_pos(&self, u: f64) -> f64 {
         let a = self.alpha;
         let ua = u * a;
         let w = Dd::one_minus_sq(u).hi + ua * ua;

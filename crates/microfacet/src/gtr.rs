@@ -23,7 +23,7 @@
 
 use crate::error::{check_alpha, check_gamma, ParamError};
 use crate::ggx::Ggx;
-use crate::ndf::{sigma_via_lambda, upper, Ndf};
+use crate::ndf::Ndf;
 use crate::quad;
 use crate::smith::{cot_theta, smith_integral, SMITH_TOL};
 use crate::special::{dd::Dd, elliprd, expm1_over_x, ln1p_over_x};
@@ -150,11 +150,7 @@ impl Ndf for Gtr {
         self.alpha
     }
 
-    fn d(&self, u: f64) -> f64 {
-        if u.is_nan() {
-            return u;
-        }
-        let Some(u) = upper(u) else { return 0.0 };
+    fn d_pos(&self, u: f64) -> f64 {
         // w = 1 + (α² − 1)u² = (1 − u²) + α²u², a sum of positive terms.
         let ua = u * self.alpha;
         let w = Dd::one_minus_sq(u).hi + ua * ua;
@@ -221,23 +217,14 @@ impl Ndf for Gtr {
         }
     }
 
-    fn sigma(&self, u: f64) -> f64 {
+    fn sigma_neg(&self, u: f64) -> f64 {
         match self.case {
             Case::ThreeHalves | Case::General => {
-                if u.is_nan() {
-                    return u;
-                }
-                let u = u.clamp(-1.0, 1.0);
-                let au = u.abs();
-                let lit = u.max(0.0);
-                if au >= 1.0 {
-                    return lit;
-                }
-                // σ(−|u|) = 2 sin θ I(cot θ), straight from the integral (no division by u).
-                let sin = Dd::one_minus_sq(au).hi.sqrt();
-                lit + 2.0 * sin * self.smith(au / sin)
+                // σ(−u) = 2 sin θ I(cot θ), straight from the integral (no division by u).
+                let sin = Dd::one_minus_sq(u).hi.sqrt();
+                2.0 * sin * self.smith(u / sin)
             }
-            _ => sigma_via_lambda(self, u),
+            _ => u * self.lambda_pos(u),
         }
     }
 

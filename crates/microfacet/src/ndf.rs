@@ -2,9 +2,10 @@
 
 /// A microfacet normal distribution function, isotropic, in the conventions of the crate docs.
 ///
-/// Required: `d`, `p22`, `p2`, `lambda_pos` (Λ on (0, 1)) and `sigma_zero` (σ(0)). Provided
-/// from them: the total `lambda` (every u), `sigma` (signed direction), `g1`, `g2`,
-/// `g2_separable`. An NDF overrides a provided method only where it has a better formula.
+/// Required: `d_pos` (D on (0, 1]), `p22`, `p2`, `lambda_pos` (Λ on (0, 1)) and `sigma_zero`
+/// (σ(0)). Provided from them: the total `d` and `lambda` (every u), `sigma_neg` (σ(−u)),
+/// `sigma` (signed direction), `g1`, `g2`, `g2_separable`. An NDF overrides a provided method
+/// only where it has a better formula.
 ///
 /// Every method is total: finite for every finite input (u is clamped to [−1, 1]), except
 /// Λ(0) = +∞ (grazing: the true value). A NaN input gives NaN.
@@ -15,8 +16,8 @@ pub trait Ndf {
     /// Roughness α.
     fn alpha(&self) -> f64;
 
-    /// D(u), u = cos θm; D = 0 for u ≤ 0; normalised so that ∫ D(m) cos θm dm = 1.
-    fn d(&self, u: f64) -> f64;
+    /// D(u) for 0 < u ≤ 1 (callers use [`Ndf::d`]).
+    fn d_pos(&self, u: f64) -> f64;
 
     /// Slope density P22(p, q) = D(u) u⁴ with u = 1/√(1+p²+q²); ∫∫ P22 dp dq = 1.
     fn p22(&self, p: f64, q: f64) -> f64;
@@ -29,6 +30,24 @@ pub trait Ndf {
 
     /// Projected area at grazing incidence, σ(0) = ∫∫ max(0, p) P22 dp dq.
     fn sigma_zero(&self) -> f64;
+
+    /// D(u), u = cos θm; D = 0 for u ≤ 0; normalised so that ∫ D(m) cos θm dm = 1.
+    fn d(&self, u: f64) -> f64 {
+        if u.is_nan() {
+            return u;
+        }
+        if u > 0.0 {
+            self.d_pos(u.min(1.0))
+        } else {
+            0.0
+        }
+    }
+
+    /// σ(−u) = u Λ(u) for 0 < u < 1, the projected area seen from below (callers use
+    /// [`Ndf::sigma`]). Overridden where σ(−u) has a more direct route than u · Λ(u).
+    fn sigma_neg(&self, u: f64) -> f64 {
+        u * self.lambda_pos(u)
+    }
 
     /// Smith Λ(u) for every u: Λ(1) = 0, Λ(0) = +∞, and for u < 0 Heitz's extension
     /// Λ(u) = −1 − Λ(−u), so that u (1 + Λ(u)) = σ(u) holds for every u ≠ 0.
@@ -53,7 +72,24 @@ pub trait Ndf {
     /// Projected area σ(u) = ∫ max(0, ω·m) D(m) dm of the direction with cos θ = u, u ∈ [−1, 1]:
     /// σ(u) = u (1 + Λ(u)) for u > 0 and σ(−u) = u Λ(u); σ(1) = 1, σ(−1) = 0.
     fn sigma(&self, u: f64) -> f64 {
-        sigma_via_lambda(self, u)
+        if u.is_nan() {
+            return u;
+        }
+        let u = u.clamp(-1.0, 1.0);
+        let a = u.abs();
+        if a == 0.0 {
+            return self.sigma_zero();
+        }
+        let lit = u.max(0.0);
+        if a >= 1.0 {
+            return lit;
+        }
+        let shadow = self.sigma_neg(a);
+        // Λ overflows only for u below ~1e-300 · α, where σ(±u) has reached σ(0).
+        if !shadow.is_finite() {
+            return self.sigma_zero() + lit;
+        }
+        lit + shadow
     }
 
     /// Smith masking G1(u) = 1/(1 + Λ(|u|)) (the direction is flipped to the upper hemisphere:
@@ -83,37 +119,4 @@ pub trait Ndf {
 pub trait ShapeInvariant: Ndf {
     /// The α = 1 radial profile f(x), x = tan θm / α.
     fn f(&self, x: f64) -> f64;
-}
-
-/// `Some(u)` clamped to (0, 1] when D may be non-zero; `None` when u ≤ 0 (D = 0).
-#[inline]
-pub(crate) fn upper(u: f64) -> Option<f64> {
-    if u > 0.0 {
-        Some(u.min(1.0))
-    } else {
-        None
-    }
-}
-
-/// σ(u) from Λ: u (1 + Λ(u)) for u > 0, |u| Λ(|u|) for u < 0, σ(0) at u = 0. This is the
-/// provided [`Ndf::sigma`]; overriding implementations can still call it for some cases.
-pub fn sigma_via_lambda<N: Ndf + ?Sized>(ndf: &N, u: f64) -> f64 {
-    if u.is_nan() {
-        return u;
-    }
-    let u = u.clamp(-1.0, 1.0);
-    let a = u.abs();
-    if a == 0.0 {
-        return ndf.sigma_zero();
-    }
-    let lit = if u > 0.0 { u } else { 0.0 };
-    if a >= 1.0 {
-        return lit;
-    }
-    let shadow = a * ndf.lambda_pos(a);
-    // Λ overflows only for u below ~1e-300 · α, where σ(±u) has reached σ(0).
-    if !shadow.is_finite() {
-        return ndf.sigma_zero() + lit;
-    }
-    lit + shadow
 }
