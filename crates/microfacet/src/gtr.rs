@@ -103,6 +103,11 @@ impl Gtr {
         self.c
     }
 
+    /// (L, k) = (ln α², 1 − γ) for Burley's CDF and its inversion ([`crate::sample`]).
+    pub(crate) fn burley(&self) -> (f64, f64) {
+        (2.0 * self.alpha.ln(), 1.0 - self.gamma)
+    }
+
     /// c · x^e, falling back to logarithms when either factor leaves the f64 range.
     fn c_pow(&self, x: f64, e: f64) -> f64 {
         let p = x.powf(e);

@@ -45,8 +45,11 @@ pub mod gtr;
 pub mod mixture;
 pub mod ndf;
 pub mod quad;
+pub mod sample;
 pub mod smith;
+pub mod solve;
 pub mod special;
+pub mod vec3;
 pub mod verify;
 
 pub use beckmann::Beckmann;
@@ -57,3 +60,5 @@ pub use family::{AnyNdf, NdfKind};
 pub use ggx::Ggx;
 pub use gtr::Gtr;
 pub use ndf::{Ndf, ShapeInvariant};
+pub use sample::RadialSlopes;
+pub use vec3::Vec3;

@@ -18,7 +18,10 @@ fn burley_constants() {
         let c1 = (a * a - 1.0) / (PI * (a * a).ln());
         assert!(rel(Gtr::new(a, 1.0).unwrap().c(), c1) < 1e-14, "γ=1 α={a}");
         let c32 = a * (1.0 + a) / (2.0 * PI);
-        assert!(rel(Gtr::new(a, 1.5).unwrap().c(), c32) < 1e-14, "γ=3/2 α={a}");
+        assert!(
+            rel(Gtr::new(a, 1.5).unwrap().c(), c32) < 1e-14,
+            "γ=3/2 α={a}"
+        );
         let c2 = a * a / PI;
         assert!(rel(Gtr::new(a, 2.0).unwrap().c(), c2) < 1e-14, "γ=2 α={a}");
         let g = 3.3;
@@ -30,7 +33,11 @@ fn burley_constants() {
         for a in [1.0, 1.0 - 1e-12, 1.0 + 1e-12] {
             let n = Gtr::new(a, g).unwrap();
             for u in [1e-9, 0.3, 1.0] {
-                assert!(rel(n.d(u), 1.0 / PI) < 1e-11, "α={a} γ={g} u={u}: {}", n.d(u));
+                assert!(
+                    rel(n.d(u), 1.0 / PI) < 1e-11,
+                    "α={a} γ={g} u={u}: {}",
+                    n.d(u)
+                );
             }
         }
     }

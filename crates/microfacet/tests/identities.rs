@@ -11,7 +11,12 @@ fn assert_all_pass(sweep: &Sweep) {
     let failed: Vec<String> = checks
         .iter()
         .filter(|c| !c.pass())
-        .map(|c| format!("{} | {} | {:e} > {:e}", c.subject, c.identity, c.residual, c.tol))
+        .map(|c| {
+            format!(
+                "{} | {} | {:e} > {:e}",
+                c.subject, c.identity, c.residual, c.tol
+            )
+        })
         .collect();
     assert!(failed.is_empty(), "{}", failed.join("\n"));
 }

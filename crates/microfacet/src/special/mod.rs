@@ -134,14 +134,20 @@ pub fn dggx_g(c: f64) -> f64 {
     if c < 1.0 {
         return c * c * dggx_bracket(c);
     }
-    // T = 1/(c+3 + (−4)/(c+5 + (−9)/(c+7 + …))): a_1 = 1, a_n = −n² (n ≥ 2), b_n = c + 2n + 1.
-    let t = lentz(
-        |n| if n == 1 { 1.0 } else { -((n * n) as f64) },
-        |n| c + (2 * n + 1) as f64,
-    );
+    let t = e1_cf_tail(c);
     let f1 = 1.0 / (c + 1.0 - t);
     // c²·T·f1 as (c·T)(c·f1): both factors are O(1), so nothing overflows for huge c.
     (c * t) * (c * f1)
+}
+
+/// The tail T of the even continued fraction e^c E₁(c) = 1/(c + 1 − T),
+/// T = 1/(c+3 − 4/(c+5 − 9/(c+7 − …))), for c ≥ 1 (where it converges quickly).
+pub fn e1_cf_tail(c: f64) -> f64 {
+    // a_1 = 1, a_n = −n² (n ≥ 2), b_n = c + 2n + 1.
+    lentz(
+        |n| if n == 1 { 1.0 } else { -((n * n) as f64) },
+        |n| c + (2 * n + 1) as f64,
+    )
 }
 
 /// The bracket g(c) = (1+c) e^c E₁(c) − 1 of [`dggx_g`] for 0 < c < 1 (G = c² g), for callers

@@ -1,0 +1,92 @@
+//! A minimal concrete 3-vector for directions in the local shading frame (z = macro normal).
+
+use std::ops::{Add, Mul, Neg, Sub};
+
+/// A 3-vector of f64.
+#[derive(Clone, Copy, Debug, PartialEq, Default)]
+pub struct Vec3 {
+    pub x: f64,
+    pub y: f64,
+    pub z: f64,
+}
+
+impl Vec3 {
+    pub const Z: Vec3 = Vec3 {
+        x: 0.0,
+        y: 0.0,
+        z: 1.0,
+    };
+
+    #[inline]
+    pub const fn new(x: f64, y: f64, z: f64) -> Self {
+        Vec3 { x, y, z }
+    }
+
+    #[inline]
+    pub fn dot(self, o: Vec3) -> f64 {
+        self.x * o.x + self.y * o.y + self.z * o.z
+    }
+
+    #[inline]
+    pub fn length(self) -> f64 {
+        self.x.hypot(self.y).hypot(self.z)
+    }
+
+    /// The unit vector along `self`; the zero vector (or a non-finite one) maps to +z, so
+    /// that nothing downstream sees a NaN.
+    #[inline]
+    pub fn normalize(self) -> Vec3 {
+        let l = self.length();
+        if l > 0.0 && l.is_finite() {
+            Vec3::new(self.x / l, self.y / l, self.z / l)
+        } else {
+            Vec3::Z
+        }
+    }
+
+    /// The unit normal with slopes (p, q): (−p, −q, 1)/√(1 + p² + q²), computed without
+    /// overflow for huge slopes.
+    #[inline]
+    pub fn from_slopes(p: f64, q: f64) -> Vec3 {
+        let s = p.abs().max(q.abs());
+        if s > 1e150 {
+            // Grazing normal: the z component underflows relative to the slopes.
+            let (pp, qq) = (p / s, q / s);
+            let l = pp.hypot(qq);
+            return Vec3::new(-pp / l, -qq / l, 1.0 / (s * l));
+        }
+        Vec3::new(-p, -q, 1.0).normalize()
+    }
+}
+
+impl Add for Vec3 {
+    type Output = Vec3;
+    #[inline]
+    fn add(self, o: Vec3) -> Vec3 {
+        Vec3::new(self.x + o.x, self.y + o.y, self.z + o.z)
+    }
+}
+
+impl Sub for Vec3 {
+    type Output = Vec3;
+    #[inline]
+    fn sub(self, o: Vec3) -> Vec3 {
+        Vec3::new(self.x - o.x, self.y - o.y, self.z - o.z)
+    }
+}
+
+impl Mul<f64> for Vec3 {
+    type Output = Vec3;
+    #[inline]
+    fn mul(self, s: f64) -> Vec3 {
+        Vec3::new(self.x * s, self.y * s, self.z * s)
+    }
+}
+
+impl Neg for Vec3 {
+    type Output = Vec3;
+    #[inline]
+    fn neg(self) -> Vec3 {
+        Vec3::new(-self.x, -self.y, -self.z)
+    }
+}
