@@ -30,7 +30,7 @@ pub fn newton_bracketed(
         }
         let d = df(x);
         let mut next = x - fx / d;
-        if !(next > lo && next < hi) || !next.is_finite() {
+        if !(next > lo && next < hi && next.is_finite()) {
             next = 0.5 * (lo + hi);
         }
         let tol = 4.0 * f64::EPSILON * next.abs().max(f64::MIN_POSITIVE);
