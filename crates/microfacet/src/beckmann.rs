@@ -101,19 +101,24 @@ impl Ndf for Beckmann {
             Dd::mul_f(u, u).div_dd(Dd::mul_f(self.alpha, self.alpha).mul_dd(Dd::one_minus_sq(u)));
         // a itself from u directly: a² underflows for u below ~1e-154 α.
         let a = crate::smith::cot_theta(u) / self.alpha;
-        if a < 2.0 {
-            // Cancellation here is at most a factor 10 (at a = 2).
-            (a2.exp_neg() / (a * SQRT_PI) - erfc(a)) / 2.0
-        } else if a2.hi > EXP_UNDERFLOW {
-            0.0
-        } else {
-            let k = erfc_ratio_tail(a);
-            a2.exp_neg() / (2.0 * a * SQRT_PI) * (k / (a + k))
-        }
+        lambda_of(a, a2)
     }
 
     fn sigma_zero(&self) -> f64 {
         self.alpha / (2.0 * SQRT_PI)
+    }
+}
+
+/// Λ as a function of a = cot θ/α (and a² in double-double).
+fn lambda_of(a: f64, a2: Dd) -> f64 {
+    if a < 2.0 {
+        // Cancellation here is at most a factor 10 (at a = 2).
+        (a2.exp_neg() / (a * SQRT_PI) - erfc(a)) / 2.0
+    } else if a2.hi > EXP_UNDERFLOW {
+        0.0
+    } else {
+        let k = erfc_ratio_tail(a);
+        a2.exp_neg() / (2.0 * a * SQRT_PI) * (k / (a + k))
     }
 }
 

@@ -36,12 +36,14 @@
 //! ```
 
 pub mod beckmann;
+pub mod chi2;
 pub mod double_ggx;
 pub mod error;
 pub mod exponential;
 pub mod family;
 pub mod ggx;
 pub mod gtr;
+pub mod microsurface;
 pub mod mixture;
 pub mod ndf;
 pub mod quad;
@@ -51,6 +53,7 @@ pub mod solve;
 pub mod special;
 pub mod vec3;
 pub mod verify;
+pub mod visible;
 
 pub use beckmann::Beckmann;
 pub use double_ggx::DoubleGgx;
@@ -59,6 +62,8 @@ pub use exponential::Exponential;
 pub use family::{AnyNdf, NdfKind};
 pub use ggx::Ggx;
 pub use gtr::Gtr;
+pub use microsurface::{Microsurface, Stretched};
 pub use ndf::{Ndf, ShapeInvariant};
 pub use sample::RadialSlopes;
 pub use vec3::Vec3;
+pub use visible::UnitSlopes;

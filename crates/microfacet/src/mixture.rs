@@ -104,6 +104,16 @@ pub fn superpose(mixing: Mixing, alpha: f64, q: impl Fn(f64) -> f64) -> quad::Qu
     quad::integrate_to_inf(f, 0.0, peak.0, 1e-13)
 }
 
+/// A fixed quadrature rule over the mixing variable at roughness α: (component roughness,
+/// weight) pairs such that Σ wᵢ q(αᵢ) = ∫ w(t) q(α(t)) dt to ~1e-14 for q smooth and bounded in
+/// t (tanh-sinh, step 1/32; checked against [`superpose`] in the tests).
+pub fn fixed_rule(mixing: Mixing, alpha: f64) -> Vec<(f64, f64)> {
+    quad::half_line_rule(|t| mixing.pdf(alpha, t), mixing.scale(alpha), 5)
+        .into_iter()
+        .map(|(t, w)| (mixing.roughness(alpha, t), w))
+        .collect()
+}
+
 /// Mixture of Beckmann components; `q` sees each component (any roughness > 0, unchecked).
 pub fn superpose_beckmann(mixing: Mixing, alpha: f64, q: impl Fn(&Beckmann) -> f64) -> f64 {
     superpose(mixing, alpha, |a| q(&Beckmann::raw(a))).value

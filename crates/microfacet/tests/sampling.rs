@@ -103,3 +103,108 @@ fn dcos_pdf_is_normalised() {
         assert!((total - 1.0).abs() < 1e-11, "{n:?}: {total}");
     }
 }
+
+mod visible {
+    use microfacet::{DoubleGgx, Exponential, Microsurface, Ndf, Stretched, UnitSlopes, Vec3};
+
+    const KINDS: [UnitSlopes; 4] = [
+        UnitSlopes::Beckmann,
+        UnitSlopes::Ggx,
+        UnitSlopes::DoubleGgx,
+        UnitSlopes::Exponential,
+    ];
+
+    fn dirs() -> Vec<Vec3> {
+        let mut v = vec![Vec3::Z, Vec3::new(1.0, 0.0, 0.0), Vec3::new(0.0, -1.0, 0.0)];
+        for deg in [10.0f64, 45.0, 80.0, 89.9] {
+            let t = deg.to_radians();
+            v.push(Vec3::new(t.sin() * 0.6, t.sin() * 0.8, t.cos()));
+            v.push(Vec3::new(-t.sin(), 0.0, -t.cos())); // up-welling
+        }
+        v
+    }
+
+    #[test]
+    fn mixture_components_reproduce_the_closed_forms() {
+        // The fixed mixing rule against the library's own P2 (independent closed forms).
+        let (d, e) = (DoubleGgx::new(1.0).unwrap(), Exponential::new(1.0).unwrap());
+        // (Beyond x ≈ 10, where P2 < 1e-8 of its peak, the fixed rule keeps only absolute accuracy.)
+        for x in [0.0, 0.01, 0.3, 1.0, 4.0, 8.0] {
+            let rd = (UnitSlopes::DoubleGgx.p2(x) / d.p2(x) - 1.0).abs();
+            let re = (UnitSlopes::Exponential.p2(x) / e.p2(x) - 1.0).abs();
+            assert!(rd < 1e-12 && re < 1e-12, "x = {x}: {rd:e} {re:e}");
+        }
+    }
+
+    #[test]
+    fn visible_warp_inverts_and_stays_finite() {
+        for kind in KINDS {
+            for (ax, ay) in [(0.3, 0.3), (1e-4, 1e-4), (2.0, 0.5)] {
+                let m = Stretched::new(kind, ax, ay).unwrap();
+                for w in dirs() {
+                    for u in [[0.1, 0.2], [0.5, 0.5], [0.97, 0.03], [1e-6, 0.999]] {
+                        let wm = m.sample_visible(w, u);
+                        assert!(
+                            wm.z > 0.0 && (wm.length() - 1.0).abs() < 1e-14,
+                            "{kind:?} {w:?} {u:?}: {wm:?}"
+                        );
+                        let p = m.pdf_visible(w, wm);
+                        assert!(p.is_finite() && p >= 0.0, "{kind:?} pdf {p}");
+                        if ax >= 0.3 && w.z.abs() < 1.0 {
+                            let back = m.invert_visible(w, wm);
+                            for k in 0..2 {
+                                assert!(
+                                    (back[k] - u[k]).abs() < 1e-9,
+                                    "{kind:?} α=({ax},{ay}) w={w:?} {u:?} → {back:?}"
+                                );
+                            }
+                        }
+                    }
+                }
+            }
+        }
+    }
+
+    #[test]
+    fn direction_api_edges() {
+        for kind in KINDS {
+            let m = Stretched::new(kind, 0.4, 0.2).unwrap();
+            let wm = Vec3::new(0.1, 0.2, 1.0).normalize();
+            // Grazing and up-welling directions: finite, G1 in [0, 1], sign rule.
+            for w in dirs() {
+                let g = m.g1(w, wm);
+                assert!((0.0..=1.0).contains(&g), "{kind:?} G1({w:?}) = {g}");
+                if w.dot(wm) * w.z <= 0.0 {
+                    assert_eq!(g, 0.0);
+                }
+                let g2 = m.g2(w, Vec3::Z, wm);
+                assert!((0.0..=1.0).contains(&g2));
+                assert!(m.d_visible(w, wm).is_finite());
+                assert!(m.sigma(w).is_finite() && m.sigma(w) > 0.0);
+            }
+            assert_eq!(m.d(Vec3::new(1.0, 0.0, 0.0)), 0.0);
+            assert_eq!(m.d(-Vec3::Z), 0.0);
+            // Isotropic case: D and Λ agree with the scalar API.
+            let iso = Stretched::new(kind, 0.3, 0.3).unwrap();
+            let n = microfacet::AnyNdf::new(
+                match kind {
+                    UnitSlopes::Beckmann => microfacet::NdfKind::Beckmann,
+                    UnitSlopes::Ggx => microfacet::NdfKind::Ggx,
+                    UnitSlopes::DoubleGgx => microfacet::NdfKind::DoubleGgx,
+                    UnitSlopes::Exponential => microfacet::NdfKind::Exponential,
+                },
+                0.3,
+                None,
+            )
+            .unwrap();
+            for deg in [5.0f64, 40.0, 75.0] {
+                let t = deg.to_radians();
+                let w = Vec3::new(t.sin() * 0.6, t.sin() * 0.8, t.cos());
+                let close = |x: f64, y: f64| (x - y).abs() <= 1e-12 * x.abs().max(y.abs());
+                assert!(close(iso.d(w), n.d(w.z)), "{kind:?} D");
+                assert!(close(iso.lambda(w), n.lambda(w.z)), "{kind:?} Λ");
+                assert!(close(iso.sigma(w), n.sigma(w.z)), "{kind:?} σ");
+            }
+        }
+    }
+}

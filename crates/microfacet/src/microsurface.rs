@@ -1,0 +1,303 @@
+//! The direction API for renderers, and anisotropy by stretching (written once for every
+//! shape-invariant NDF).
+//!
+//! [`Microsurface`] works with unit vectors in the local shading frame (z = macro normal):
+//! `d(wm)`, `lambda(w)`, `g1(w, wm)`, `g2(wo, wi, wm)`, the visible-normal density
+//! `d_visible(w, wm) = G1(w) max(0, w·wm) D(wm)/w.z`, and samplers with their exact pdfs and
+//! inverses. [`Stretched`] implements it for Beckmann, GGX, Double GGX and the Exponential NDF
+//! with roughness (αx, αy): the α = 1 slopes are sampled and stretched by (αx, αy)
+//! (pbrt's recipe: stretch, sample the α = 1 slopes, unstretch, build the normal).
+//!
+//! Conventions: directions may be up-welling (w.z < 0) or grazing. Λ(w) depends on w only
+//! through tan²θ (the masking of the side w comes from). G1(w, wm) is 0 when w·wm and w.z
+//! disagree in sign. For w.z < 0 the visible normals are those seen from −w (the
+//! microsurface seen from below is sampled through its mirror image, as in pbrt-v4); so
+//! `sample_visible(w, u) == sample_visible(−w, u)` and the pdf matches.
+
+use crate::ndf::Ndf;
+use crate::sample::RadialSlopes;
+use crate::vec3::Vec3;
+use crate::visible::UnitSlopes;
+use crate::{Beckmann, DoubleGgx, Exponential, Ggx, ParamError};
+use std::f64::consts::PI;
+
+/// NDFs with directions, samplers and pdfs.
+pub trait Microsurface {
+    /// D(wm); 0 for wm.z ≤ 0.
+    fn d(&self, wm: Vec3) -> f64;
+
+    /// Smith Λ(w) (a function of tan²θ; +∞ at grazing).
+    fn lambda(&self, w: Vec3) -> f64;
+
+    /// Projected area σ(w) = ∫ max(0, w·m) D(m) dm for a direction with w.z ≥ 0
+    /// (= w.z (1 + Λ(w)), finite at grazing).
+    fn sigma(&self, w: Vec3) -> f64;
+
+    /// Masking G1(w, wm) = 1/(1 + Λ(w)), or 0 when w·wm and w.z disagree in sign.
+    fn g1(&self, w: Vec3, wm: Vec3) -> f64 {
+        if w.dot(wm) * w.z <= 0.0 {
+            return 0.0;
+        }
+        1.0 / (1.0 + self.lambda(w))
+    }
+
+    /// Height-correlated masking-shadowing G2 = 1/(1 + Λ(wo) + Λ(wi)), or 0 when either side
+    /// fails the sign test of [`Microsurface::g1`].
+    fn g2(&self, wo: Vec3, wi: Vec3, wm: Vec3) -> f64 {
+        if wo.dot(wm) * wo.z <= 0.0 || wi.dot(wm) * wi.z <= 0.0 {
+            return 0.0;
+        }
+        1.0 / (1.0 + self.lambda(wo) + self.lambda(wi))
+    }
+
+    /// The visible-normal density G1(w) max(0, w·wm) D(wm)/w.z = max(0, w·wm) D(wm)/σ(w),
+    /// for w.z ≥ 0; a down-welling w is mirrored to −w (see the module docs).
+    fn d_visible(&self, w: Vec3, wm: Vec3) -> f64 {
+        let w = upper(w);
+        let c = w.dot(wm);
+        if c <= 0.0 || wm.z <= 0.0 {
+            return 0.0;
+        }
+        c * self.d(wm) / self.sigma(w)
+    }
+
+    /// Density of [`Microsurface::sample_dcos`] w.r.t. solid angle: D(wm) cos θm.
+    fn pdf_dcos(&self, wm: Vec3) -> f64 {
+        if wm.z <= 0.0 {
+            return 0.0;
+        }
+        self.d(wm) * wm.z
+    }
+
+    /// Density of [`Microsurface::sample_visible`] w.r.t. solid angle: [`Microsurface::d_visible`].
+    fn pdf_visible(&self, w: Vec3, wm: Vec3) -> f64 {
+        self.d_visible(w, wm)
+    }
+
+    /// A normal distributed as D(m) cos θm.
+    fn sample_dcos(&self, u: [f64; 2]) -> Vec3;
+
+    /// The u that [`Microsurface::sample_dcos`] maps to `wm`.
+    fn invert_dcos(&self, wm: Vec3) -> [f64; 2];
+
+    /// A normal distributed as [`Microsurface::d_visible`]`(w, ·)`.
+    fn sample_visible(&self, w: Vec3, u: [f64; 2]) -> Vec3;
+
+    /// The u that [`Microsurface::sample_visible`] maps to `wm`.
+    fn invert_visible(&self, w: Vec3, wm: Vec3) -> [f64; 2];
+}
+
+/// w mirrored into the upper hemisphere.
+fn upper(w: Vec3) -> Vec3 {
+    if w.z < 0.0 {
+        -w
+    } else {
+        w
+    }
+}
+
+/// A shape-invariant NDF with roughness (αx, αy), isotropic when αx = αy.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct Stretched {
+    kind: UnitSlopes,
+    alpha_x: f64,
+    alpha_y: f64,
+}
+
+impl Stretched {
+    /// Beckmann, GGX, Double GGX or Exponential with roughness (αx, αy), each in [1e-6, 1e6].
+    pub fn new(kind: UnitSlopes, alpha_x: f64, alpha_y: f64) -> Result<Self, ParamError> {
+        let alpha_x = crate::error::check_alpha(alpha_x)?;
+        let alpha_y = crate::error::check_alpha(alpha_y)?;
+        Ok(Stretched {
+            kind,
+            alpha_x,
+            alpha_y,
+        })
+    }
+
+    /// The α = 1 member of the family, for D, Λ and the radial CDF.
+    fn unit(&self) -> UnitNdf {
+        match self.kind {
+            UnitSlopes::Beckmann => UnitNdf::Beckmann(Beckmann::new(1.0).expect("α = 1 is valid")),
+            UnitSlopes::Ggx => UnitNdf::Ggx(Ggx::new(1.0).expect("α = 1 is valid")),
+            UnitSlopes::DoubleGgx => {
+                UnitNdf::DoubleGgx(DoubleGgx::new(1.0).expect("α = 1 is valid"))
+            }
+            UnitSlopes::Exponential => {
+                UnitNdf::Exponential(Exponential::new(1.0).expect("α = 1 is valid"))
+            }
+        }
+    }
+
+    /// (αx x, αy y, z): the direction in the α = 1 configuration (not normalised).
+    fn stretch(&self, w: Vec3) -> Vec3 {
+        Vec3::new(self.alpha_x * w.x, self.alpha_y * w.y, w.z)
+    }
+
+    /// The normal ∝ (αx x̃, αy ỹ, 1) for α = 1 slopes (x̃, ỹ) of a normal ∝ (x̃, ỹ, 1).
+    fn normal_from_unit_slopes(&self, x: f64, y: f64) -> Vec3 {
+        let (p, q) = (self.alpha_x * x, self.alpha_y * y);
+        Vec3::from_slopes(-p, -q)
+    }
+
+    /// α = 1 slopes of `wm` (inverse of `normal_from_unit_slopes`).
+    fn unit_slopes(&self, wm: Vec3) -> (f64, f64) {
+        (wm.x / (self.alpha_x * wm.z), wm.y / (self.alpha_y * wm.z))
+    }
+
+    /// For the visible sampler: cot θ' and the azimuth (cos φ', sin φ') of the stretched w.
+    fn stretched_frame(&self, w: Vec3) -> (f64, f64, f64) {
+        let s = self.stretch(upper(w));
+        let h = s.x.hypot(s.y);
+        if h == 0.0 {
+            return (f64::INFINITY, 1.0, 0.0);
+        }
+        (s.z / h, s.x / h, s.y / h)
+    }
+}
+
+/// The α = 1 NDFs, for evaluation.
+#[derive(Clone, Copy, Debug)]
+enum UnitNdf {
+    Beckmann(Beckmann),
+    Ggx(Ggx),
+    DoubleGgx(DoubleGgx),
+    Exponential(Exponential),
+}
+
+impl UnitNdf {
+    fn ndf(&self) -> &dyn Ndf {
+        match self {
+            UnitNdf::Beckmann(n) => n,
+            UnitNdf::Ggx(n) => n,
+            UnitNdf::DoubleGgx(n) => n,
+            UnitNdf::Exponential(n) => n,
+        }
+    }
+    fn quantile(&self, xi: f64) -> f64 {
+        match self {
+            UnitNdf::Beckmann(n) => n.slope_quantile(xi),
+            UnitNdf::Ggx(n) => n.slope_quantile(xi),
+            UnitNdf::DoubleGgx(n) => n.slope_quantile(xi),
+            UnitNdf::Exponential(n) => n.slope_quantile(xi),
+        }
+    }
+    fn cdf(&self, r: f64) -> f64 {
+        match self {
+            UnitNdf::Beckmann(n) => n.slope_cdf(r),
+            UnitNdf::Ggx(n) => n.slope_cdf(r),
+            UnitNdf::DoubleGgx(n) => n.slope_cdf(r),
+            UnitNdf::Exponential(n) => n.slope_cdf(r),
+        }
+    }
+}
+
+impl Microsurface for Stretched {
+    fn d(&self, wm: Vec3) -> f64 {
+        if wm.z.is_nan() {
+            return f64::NAN;
+        }
+        if wm.z <= 0.0 {
+            return 0.0;
+        }
+        // D_α(m) = D₁(u₁)/(αx αy ℓ⁴), with ℓ² = z² + (x/αx)² + (y/αy)² and u₁ = z/ℓ
+        // (P22 stretches as f(r₁)/(αx αy), and u⁴ D = P22).
+        let (x, y) = (wm.x / self.alpha_x, wm.y / self.alpha_y);
+        let l2 = wm.z * wm.z + x * x + y * y;
+        let u1 = wm.z / l2.sqrt();
+        self.unit().ndf().d(u1) / (self.alpha_x * self.alpha_y * l2 * l2)
+    }
+
+    fn lambda(&self, w: Vec3) -> f64 {
+        let s = self.stretch(upper(w));
+        let l = s.length();
+        if l == 0.0 {
+            return f64::NAN;
+        }
+        self.unit().ndf().lambda(s.z / l)
+    }
+
+    fn sigma(&self, w: Vec3) -> f64 {
+        // σ_α(w) = |stretch(w)| σ₁(stretch(w)/|stretch(w)|).
+        let s = self.stretch(upper(w));
+        let l = s.length();
+        l * self.unit().ndf().sigma(s.z / l)
+    }
+
+    fn sample_dcos(&self, u: [f64; 2]) -> Vec3 {
+        let r = self.unit().quantile(u[0]);
+        let (sin, cos) = (2.0 * PI * u[1]).sin_cos();
+        if r == f64::INFINITY {
+            return Vec3::new(self.alpha_x * cos, self.alpha_y * sin, 0.0).normalize();
+        }
+        self.normal_from_unit_slopes(r * cos, r * sin)
+    }
+
+    fn invert_dcos(&self, wm: Vec3) -> [f64; 2] {
+        let (x, y) = self.unit_slopes(wm);
+        let mut phi = y.atan2(x);
+        if phi < 0.0 {
+            phi += 2.0 * PI;
+        }
+        [self.unit().cdf(x.hypot(y)), (phi / (2.0 * PI)).min(1.0)]
+    }
+
+    fn sample_visible(&self, w: Vec3, u: [f64; 2]) -> Vec3 {
+        let (a, c, s) = self.stretched_frame(w);
+        let (x, y) = if self.kind == UnitSlopes::Ggx {
+            ggx_spherical_cap(a, u)
+        } else {
+            self.kind.sample(a, u)
+        };
+        // Rotate from the frame of the stretched w back, then unstretch.
+        self.normal_from_unit_slopes(c * x - s * y, s * x + c * y)
+    }
+
+    fn invert_visible(&self, w: Vec3, wm: Vec3) -> [f64; 2] {
+        let (a, c, s) = self.stretched_frame(w);
+        let (gx, gy) = self.unit_slopes(wm);
+        let (x, y) = (c * gx + s * gy, -s * gx + c * gy);
+        if self.kind == UnitSlopes::Ggx {
+            ggx_spherical_cap_inverse(a, x, y)
+        } else {
+            self.kind.invert(a, x, y)
+        }
+    }
+}
+
+/// GGX (α = 1) visible slopes by the spherical-cap method (Dupuy & Benyoub 2023), for a
+/// direction in the xz-plane with cot θ = a: a point c uniform on the cap z ≥ −w.z of the unit
+/// sphere, and the normal h = c + w.
+fn ggx_spherical_cap(a: f64, u: [f64; 2]) -> (f64, f64) {
+    let (wx, wz) = dir_from_cot(a);
+    let phi = 2.0 * PI * u[0];
+    let z = (1.0 - u[1]) * (1.0 + wz) - wz;
+    let sin = (1.0 - z * z).max(0.0).sqrt();
+    let (hx, hy, hz) = (sin * phi.cos() + wx, sin * phi.sin(), z + wz);
+    // Slopes of h ∝ (x̃, ỹ, 1).
+    (hx / hz, hy / hz)
+}
+
+/// Inverse of [`ggx_spherical_cap`]: c = 2(ĥ·w)ĥ − w is the cap point (the reflection of w).
+fn ggx_spherical_cap_inverse(a: f64, x: f64, y: f64) -> [f64; 2] {
+    let (wx, wz) = dir_from_cot(a);
+    let n = Vec3::new(x, y, 1.0).normalize();
+    let d = n.x * wx + n.z * wz;
+    let c = Vec3::new(2.0 * d * n.x - wx, 2.0 * d * n.y, 2.0 * d * n.z - wz);
+    let mut phi = c.y.atan2(c.x);
+    if phi < 0.0 {
+        phi += 2.0 * PI;
+    }
+    let u1 = 1.0 - (c.z + wz) / (1.0 + wz);
+    [(phi / (2.0 * PI)).min(1.0), u1.clamp(0.0, 1.0)]
+}
+
+/// (sin θ, cos θ) for cot θ = a ≥ 0 (a = ∞ at normal incidence).
+fn dir_from_cot(a: f64) -> (f64, f64) {
+    if a == f64::INFINITY {
+        return (0.0, 1.0);
+    }
+    let l = (1.0 + a * a).sqrt();
+    (1.0 / l, a / l)
+}
