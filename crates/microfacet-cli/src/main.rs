@@ -2,6 +2,7 @@
 //! dispatches and turns failures into one-line messages with a non-zero exit code.
 
 mod eval;
+mod sample;
 mod verify;
 
 use std::process::ExitCode;
@@ -18,6 +19,10 @@ usage:
       JSON lines in, JSON lines out, e.g.
       {\"ndf\":\"gtr\",\"alpha\":0.3,\"gamma\":1.5,\"quantity\":\"lambda\",\"u\":0.5} -> {\"value\":...}
       quantities: d, sigma, lambda, g1 (u); p22 (p, q); p2 (p); f (x); g2 (u_o, u_i)
+  microfacet sample --ndf NAME --alpha A [--alpha-y AY] [--gamma G] [--mode dcos|visible]
+                    [--wi X,Y,Z] [--n N] [--seed S]
+      write N sampled normals (default 100000), one `x y z` per line; D·cos (default)
+      or visible normals for the incident direction --wi (default 0,0,1)
   microfacet --help
 ";
 
@@ -30,6 +35,7 @@ fn main() -> ExitCode {
     let result = match args.first().map(String::as_str) {
         Some("verify") => verify::run(&args[1..]),
         Some("eval") => eval::run(&args[1..]),
+        Some("sample") => sample::run(&args[1..]),
         Some("-h" | "--help" | "help") => {
             print!("{USAGE}");
             Ok(ExitCode::SUCCESS)

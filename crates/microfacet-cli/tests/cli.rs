@@ -163,3 +163,106 @@ fn help_succeeds() {
     assert!(out.status.success());
     assert!(String::from_utf8_lossy(&out.stdout).contains("verify"));
 }
+
+#[test]
+fn sample_writes_unit_normals() {
+    for args in [
+        vec![
+            "sample",
+            "--ndf",
+            "exponential",
+            "--alpha",
+            "0.5",
+            "--alpha-y",
+            "0.2",
+            "--mode",
+            "visible",
+            "--wi",
+            "1,0,1",
+            "--n",
+            "500",
+            "--seed",
+            "7",
+        ],
+        vec![
+            "sample", "--ndf", "gtr", "--alpha", "0.4", "--gamma", "1.5", "--n", "500",
+        ],
+        vec![
+            "sample",
+            "--ndf",
+            "ggx",
+            "--alpha",
+            "0.1",
+            "--mode",
+            "visible",
+            "--wi",
+            "0.3,0.1,-0.9",
+            "--n",
+            "500",
+        ],
+    ] {
+        let out = microfacet(&args, "");
+        assert!(
+            out.status.success(),
+            "{args:?}: {}",
+            String::from_utf8_lossy(&out.stderr)
+        );
+        let text = String::from_utf8_lossy(&out.stdout);
+        let mut count = 0;
+        for line in text.lines() {
+            let v: Vec<f64> = line.split(' ').map(|s| s.parse().unwrap()).collect();
+            assert_eq!(v.len(), 3);
+            let len = (v[0] * v[0] + v[1] * v[1] + v[2] * v[2]).sqrt();
+            assert!((len - 1.0).abs() < 1e-12 && v[2] > 0.0, "{line}");
+            count += 1;
+        }
+        assert_eq!(count, 500);
+    }
+    // Deterministic for a seed.
+    let a = microfacet(
+        &[
+            "sample", "--ndf", "beckmann", "--alpha", "0.3", "--n", "10", "--seed", "3",
+        ],
+        "",
+    );
+    let b = microfacet(
+        &[
+            "sample", "--ndf", "beckmann", "--alpha", "0.3", "--n", "10", "--seed", "3",
+        ],
+        "",
+    );
+    assert_eq!(a.stdout, b.stdout);
+}
+
+#[test]
+fn sample_rejects_bad_arguments() {
+    for args in [
+        vec!["sample"],
+        vec!["sample", "--ndf", "ggx"],
+        vec!["sample", "--ndf", "ggx", "--alpha", "0"],
+        vec!["sample", "--ndf", "ggx", "--alpha", "0.3", "--mode", "both"],
+        vec!["sample", "--ndf", "ggx", "--alpha", "0.3", "--wi", "1,2"],
+        vec!["sample", "--ndf", "ggx", "--alpha", "0.3", "--wi", "0,0,0"],
+        vec!["sample", "--ndf", "ggx", "--alpha", "0.3", "--n", "-5"],
+        vec!["sample", "--ndf", "gtr", "--alpha", "0.3"],
+        vec![
+            "sample",
+            "--ndf",
+            "gtr",
+            "--alpha",
+            "0.3",
+            "--gamma",
+            "2",
+            "--alpha-y",
+            "0.1",
+        ],
+        vec!["sample", "--ndf", "ggx", "--alpha", "0.3", "--gamma", "2"],
+        vec!["sample", "--ndf", "ggx", "--alpha", "0.3", "--frob", "1"],
+    ] {
+        let out = microfacet(&args, "");
+        assert_eq!(out.status.code(), Some(2), "{args:?}");
+        let err = String::from_utf8_lossy(&out.stderr);
+        assert_eq!(err.lines().count(), 1, "{args:?}: {err}");
+        assert!(out.stdout.is_empty(), "{args:?}");
+    }
+}

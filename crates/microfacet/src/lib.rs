@@ -22,6 +22,12 @@
 //! [`Beckmann`], [`Ggx`], [`Gtr`], [`DoubleGgx`], [`Exponential`]; [`AnyNdf`] holds any of them
 //! (for command lines and sweeps). Constructors return `Result<_, ParamError>`.
 //!
+//! ## Directions and sampling
+//! [`Microsurface`] is the direction API for renderers (D, Λ, G1, G2, the visible-normal
+//! density, samplers taking explicit uniforms `u: [f64; 2]`, their pdfs and inverses);
+//! [`Stretched`] implements it, isotropic or anisotropic, for the shape-invariant NDFs.
+//! [`sample`] has D·cos sampling for every NDF, GTR included.
+//!
 //! ## Accuracy
 //! Closed forms: ≤ 1e-13 relative (absolute 1e-300 where the value underflows). Quantities
 //! computed by quadrature (GTR Λ/σ/P2 for general γ, the Exponential NDF's Λ/σ): ≤ 1e-10

@@ -1,0 +1,150 @@
+//! `microfacet sample`: writes sampled microfacet normals, one `x y z` per line.
+
+use microfacet::chi2::SplitMix64;
+use microfacet::sample::sample_dcos;
+use microfacet::{AnyNdf, Microsurface, NdfKind, Stretched, UnitSlopes, Vec3};
+use std::io::{BufWriter, Write};
+use std::process::ExitCode;
+
+struct Args {
+    kind: NdfKind,
+    alpha: f64,
+    alpha_y: Option<f64>,
+    gamma: Option<f64>,
+    visible: bool,
+    wi: Vec3,
+    n: u64,
+    seed: u64,
+}
+
+fn value<'a>(flag: &str, v: Option<&'a String>) -> Result<&'a str, String> {
+    v.map(String::as_str)
+        .ok_or_else(|| format!("sample: {flag} needs a value"))
+}
+
+fn number(flag: &str, s: &str) -> Result<f64, String> {
+    s.parse::<f64>()
+        .map_err(|_| format!("sample: {flag}: '{s}' is not a number"))
+}
+
+fn parse(args: &[String]) -> Result<Args, String> {
+    let mut kind = None;
+    let mut alpha = None;
+    let mut a = Args {
+        kind: NdfKind::Ggx,
+        alpha: 0.0,
+        alpha_y: None,
+        gamma: None,
+        visible: false,
+        wi: Vec3::Z,
+        n: 0,
+        seed: 0,
+    };
+    let mut n = None;
+    let mut it = args.iter();
+    while let Some(flag) = it.next() {
+        let v = value(flag, it.next());
+        match flag.as_str() {
+            "--ndf" => kind = Some(v?.parse::<NdfKind>().map_err(|e| format!("sample: {e}"))?),
+            "--alpha" => alpha = Some(number(flag, v?)?),
+            "--alpha-y" => a.alpha_y = Some(number(flag, v?)?),
+            "--gamma" => a.gamma = Some(number(flag, v?)?),
+            "--mode" => {
+                a.visible = match v? {
+                    "dcos" => false,
+                    "visible" => true,
+                    other => {
+                        return Err(format!(
+                            "sample: --mode must be dcos or visible, got '{other}'"
+                        ))
+                    }
+                }
+            }
+            "--wi" => {
+                let parts: Vec<f64> = v?
+                    .split(',')
+                    .map(|s| number(flag, s.trim()))
+                    .collect::<Result<_, _>>()?;
+                if parts.len() != 3 || parts.iter().any(|x| !x.is_finite()) {
+                    return Err("sample: --wi needs three finite numbers X,Y,Z".into());
+                }
+                let w = Vec3::new(parts[0], parts[1], parts[2]);
+                if w.length() == 0.0 {
+                    return Err("sample: --wi must not be the zero vector".into());
+                }
+                a.wi = w.normalize();
+            }
+            "--n" => {
+                n = Some(
+                    v?.parse::<u64>()
+                        .map_err(|_| "sample: --n must be a non-negative integer".to_string())?,
+                )
+            }
+            "--seed" => {
+                a.seed = v?
+                    .parse::<u64>()
+                    .map_err(|_| "sample: --seed must be a non-negative integer".to_string())?
+            }
+            other => return Err(format!("sample: unknown option '{other}'")),
+        }
+    }
+    a.kind = kind.ok_or("sample: --ndf is required")?;
+    a.alpha = alpha.ok_or("sample: --alpha is required")?;
+    a.n = n.unwrap_or(100_000);
+    Ok(a)
+}
+
+/// What draws one normal from two uniforms.
+enum Sampler {
+    Scalar(AnyNdf),
+    Stretched(Stretched),
+}
+
+pub fn run(args: &[String]) -> Result<ExitCode, String> {
+    let a = parse(args)?;
+    let sampler = if a.kind == NdfKind::Gtr {
+        if a.alpha_y.is_some() {
+            return Err("sample: GTR is isotropic (no --alpha-y)".into());
+        }
+        if a.visible {
+            return Err(
+                "sample: visible-normal sampling is not available for GTR yet (use --mode dcos)"
+                    .into(),
+            );
+        }
+        Sampler::Scalar(AnyNdf::new(a.kind, a.alpha, a.gamma).map_err(|e| format!("sample: {e}"))?)
+    } else {
+        if a.gamma.is_some() {
+            return Err(format!(
+                "sample: --gamma applies to gtr only, not {}",
+                a.kind
+            ));
+        }
+        let unit = match a.kind {
+            NdfKind::Beckmann => UnitSlopes::Beckmann,
+            NdfKind::Ggx => UnitSlopes::Ggx,
+            NdfKind::DoubleGgx => UnitSlopes::DoubleGgx,
+            _ => UnitSlopes::Exponential,
+        };
+        Sampler::Stretched(
+            Stretched::new(unit, a.alpha, a.alpha_y.unwrap_or(a.alpha))
+                .map_err(|e| format!("sample: {e}"))?,
+        )
+    };
+    let mut rng = SplitMix64(a.seed);
+    let mut out = BufWriter::new(std::io::stdout().lock());
+    for _ in 0..a.n {
+        let u = [rng.next_f64(), rng.next_f64()];
+        let m = match &sampler {
+            Sampler::Scalar(n) => sample_dcos(n, u),
+            Sampler::Stretched(s) if a.visible => s.sample_visible(a.wi, u),
+            Sampler::Stretched(s) => s.sample_dcos(u),
+        };
+        if writeln!(out, "{} {} {}", m.x, m.y, m.z).is_err() {
+            // A closed pipe (e.g. `| head`) ends the run quietly.
+            return Ok(ExitCode::SUCCESS);
+        }
+    }
+    out.flush().ok();
+    Ok(ExitCode::SUCCESS)
+}
