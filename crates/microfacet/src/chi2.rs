@@ -71,7 +71,7 @@ impl SplitMix64 {
 /// Runs a χ² test of `sample` (mapping uniforms to directions) against `pdf` (w.r.t. solid
 /// angle) with `n` samples on a `res × res` grid of `coords`.
 pub fn chi2_test(
-    sample: impl Fn([f64; 2]) -> Vec3,
+    mut sample: impl FnMut([f64; 2]) -> Vec3,
     pdf: impl Fn(Vec3) -> f64,
     coords: &impl Coordinates,
     n: usize,

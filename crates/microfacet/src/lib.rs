@@ -57,6 +57,7 @@ pub mod sample;
 pub mod smith;
 pub mod solve;
 pub mod special;
+pub mod stochastic;
 pub mod vec3;
 pub mod verify;
 pub mod visible;

@@ -20,7 +20,7 @@ const KINDS: [UnitSlopes; 4] = [
 const ALPHAS: [f64; 4] = [0.05, 0.3, 1.0, 2.0];
 const INCIDENCE_DEG: [f64; 4] = [0.0, 45.0, 80.0, 89.0];
 /// Upper bound on the number of tests in this file (for the Šidák correction).
-const TESTS: usize = 4 * 4 * 2 * (4 + 1) + 4 * 4;
+const TESTS: usize = 4 * 4 * 2 * (4 + 1) + 4 * 5 + 4 * 3;
 
 fn direction(deg: f64) -> Vec3 {
     let t = deg.to_radians();
@@ -138,5 +138,58 @@ fn full_sweep() {
                 }
             }
         }
+    }
+}
+
+#[test]
+fn stochastic_samplers() {
+    use microfacet::stochastic::{DoubleGgxMixture, ExponentialChi3, GgxBeckmannMixture};
+    use microfacet::{DoubleGgx, Exponential, Ggx};
+    use rand::distr::Distribution;
+    use rand::SeedableRng;
+    use rand_xorshift::XorShiftRng;
+    for &a in &ALPHAS {
+        let coords = reference(a, a);
+        let c = DcosCoordinates(&coords);
+        let mut rng = XorShiftRng::seed_from_u64((a * 1000.0) as u64);
+        let (s, n) = (
+            DoubleGgxMixture::new(a).unwrap(),
+            DoubleGgx::new(a).unwrap(),
+        );
+        let r = chi2_test(
+            |_| s.sample(&mut rng),
+            |w| pdf_dcos(&n, w),
+            &c,
+            100_000,
+            24,
+            0,
+        );
+        check(&format!("Double GGX α={a} Gamma-1 mixture of GGX"), r);
+        let (s, n) = (GgxBeckmannMixture::new(a).unwrap(), Ggx::new(a).unwrap());
+        let r = chi2_test(
+            |_| s.sample(&mut rng),
+            |w| pdf_dcos(&n, w),
+            &c,
+            100_000,
+            24,
+            0,
+        );
+        check(&format!("GGX α={a} Gamma-1 mixture of Beckmann"), r);
+        let (s, n) = (
+            ExponentialChi3::new(a).unwrap(),
+            Exponential::new(a).unwrap(),
+        );
+        let r = chi2_test(
+            |_| s.sample(&mut rng),
+            |w| pdf_dcos(&n, w),
+            &c,
+            100_000,
+            24,
+            0,
+        );
+        check(
+            &format!("Exponential α={a} Chi-3 (3 Gaussians, 1 uniform)"),
+            r,
+        );
     }
 }
