@@ -1,8 +1,7 @@
 //! `microfacet sample`: writes sampled microfacet normals, one `x y z` per line.
 
 use microfacet::chi2::SplitMix64;
-use microfacet::sample::sample_dcos;
-use microfacet::{AnyNdf, Microsurface, NdfKind, Stretched, UnitSlopes, Vec3};
+use microfacet::{AnyNdf, Isotropic, Microsurface, NdfKind, Stretched, UnitSlopes, Vec3};
 use std::io::{BufWriter, Write};
 use std::process::ExitCode;
 
@@ -96,7 +95,7 @@ fn parse(args: &[String]) -> Result<Args, String> {
 
 /// What draws one normal from two uniforms.
 enum Sampler {
-    Scalar(AnyNdf),
+    Isotropic(Isotropic<AnyNdf>),
     Stretched(Stretched),
 }
 
@@ -106,13 +105,9 @@ pub fn run(args: &[String]) -> Result<ExitCode, String> {
         if a.alpha_y.is_some() {
             return Err("sample: GTR is isotropic (no --alpha-y)".into());
         }
-        if a.visible {
-            return Err(
-                "sample: visible-normal sampling is not available for GTR yet (use --mode dcos)"
-                    .into(),
-            );
-        }
-        Sampler::Scalar(AnyNdf::new(a.kind, a.alpha, a.gamma).map_err(|e| format!("sample: {e}"))?)
+        Sampler::Isotropic(Isotropic(
+            AnyNdf::new(a.kind, a.alpha, a.gamma).map_err(|e| format!("sample: {e}"))?,
+        ))
     } else {
         if a.gamma.is_some() {
             return Err(format!(
@@ -135,10 +130,11 @@ pub fn run(args: &[String]) -> Result<ExitCode, String> {
     let mut out = BufWriter::new(std::io::stdout().lock());
     for _ in 0..a.n {
         let u = [rng.next_f64(), rng.next_f64()];
-        let m = match &sampler {
-            Sampler::Scalar(n) => sample_dcos(n, u),
-            Sampler::Stretched(s) if a.visible => s.sample_visible(a.wi, u),
-            Sampler::Stretched(s) => s.sample_dcos(u),
+        let m = match (&sampler, a.visible) {
+            (Sampler::Isotropic(s), true) => s.sample_visible(a.wi, u),
+            (Sampler::Isotropic(s), false) => s.sample_dcos(u),
+            (Sampler::Stretched(s), true) => s.sample_visible(a.wi, u),
+            (Sampler::Stretched(s), false) => s.sample_dcos(u),
         };
         if writeln!(out, "{} {} {}", m.x, m.y, m.z).is_err() {
             // A closed pipe (e.g. `| head`) ends the run quietly.

@@ -301,3 +301,60 @@ fn dir_from_cot(a: f64) -> (f64, f64) {
     let l = (1.0 + a * a).sqrt();
     (1.0 / l, a / l)
 }
+
+/// Any isotropic NDF with the direction API; visible normals by the polar slope-space inversion
+/// of [`crate::visible::radial`] (the method used for GTR; exact to the quadrature's 1e-13).
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct Isotropic<N>(pub N);
+
+impl<N: Ndf + RadialSlopes> Isotropic<N> {
+    /// (cot θ, cos φ, sin φ) of w mirrored to the upper hemisphere.
+    fn frame(w: Vec3) -> (f64, f64, f64) {
+        let w = upper(w);
+        let h = w.x.hypot(w.y);
+        if h == 0.0 {
+            return (f64::INFINITY, 1.0, 0.0);
+        }
+        (w.z / h, w.x / h, w.y / h)
+    }
+}
+
+impl<N: Ndf + RadialSlopes> Microsurface for Isotropic<N> {
+    fn d(&self, wm: Vec3) -> f64 {
+        self.0.d(wm.z)
+    }
+
+    fn lambda(&self, w: Vec3) -> f64 {
+        self.0.lambda(w.z.abs())
+    }
+
+    fn sigma(&self, w: Vec3) -> f64 {
+        self.0.sigma(w.z.abs())
+    }
+
+    fn sample_dcos(&self, u: [f64; 2]) -> Vec3 {
+        crate::sample::sample_dcos(&self.0, u)
+    }
+
+    fn invert_dcos(&self, wm: Vec3) -> [f64; 2] {
+        crate::sample::invert_dcos(&self.0, wm)
+    }
+
+    fn sample_visible(&self, w: Vec3, u: [f64; 2]) -> Vec3 {
+        let (a, c, s) = Self::frame(w);
+        let (r, psi) = crate::visible::radial::sample(&self.0, a, u);
+        crate::sample::normal_from_polar_slope(r, psi + s.atan2(c))
+    }
+
+    fn invert_visible(&self, w: Vec3, wm: Vec3) -> [f64; 2] {
+        let (a, c, s) = Self::frame(w);
+        let r = wm.x.hypot(wm.y) / wm.z;
+        let mut psi = wm.y.atan2(wm.x) - s.atan2(c);
+        if psi > PI {
+            psi -= 2.0 * PI;
+        } else if psi < -PI {
+            psi += 2.0 * PI;
+        }
+        crate::visible::radial::invert(&self.0, a, r, psi)
+    }
+}

@@ -238,3 +238,140 @@ fn invert_increasing(f: impl Fn(f64) -> f64, df: impl Fn(f64) -> f64, lower: f64
     }
     newton_bracketed(f, df, lo, hi, 0.5 * (lo + hi))
 }
+
+/// Visible-normal sampling for any isotropic NDF (GTR for general γ included) in polar slope
+/// coordinates (r, ψ) relative to the direction's azimuth.
+///
+/// For cot θ = a the visible slopes have density (r cos ψ + a)₊ P22(r) r / (a(1 + Λ)). Its
+/// r-marginal is r P22(r) g(r) with g = 2πa for r ≤ a and g = 2πa + 2r h(y), cos y = a/r,
+/// otherwise ([`crate::smith::h`]); so the r-CDF is a F(X)/Z below a and 1 − T(X)/Z above,
+/// where F is the NDF's radial D·cos CDF, T(X) = a (1 − F(X)) + 2 ∫_X^∞ r² P22 h dr (tanh-sinh,
+/// 1e-13) and Z = a + 2 I(a) = a (1 + Λ). Given r, ψ has density ∝ (r cos ψ + a) on
+/// |ψ| ≤ acos(−a/r), whose CDF is closed-form. Both are inverted by safeguarded Newton.
+pub mod radial {
+    use crate::ndf::Ndf;
+    use crate::quad::integrate_to_inf;
+    use crate::sample::RadialSlopes;
+    use crate::smith::h;
+    use crate::solve::newton_bracketed;
+    use std::f64::consts::PI;
+
+    /// 2 ∫_X^∞ r² P22(r) h(y) dr, cos y = a/r, for X ≥ a.
+    fn tail_integral<N: Ndf + ?Sized>(n: &N, a: f64, x: f64) -> f64 {
+        let scale = x.max(n.alpha());
+        2.0 * integrate_to_inf(
+            |d| {
+                let r = x + d;
+                if !r.is_finite() {
+                    return 0.0;
+                }
+                // y = atan2(√(r² − a²), a), with r − a = (x − a) + d formed exactly enough.
+                let rma = (x - a) + d;
+                let y = (rma * (r + a)).sqrt().atan2(a);
+                r * r * n.p22(r, 0.0) * h(y)
+            },
+            0.0,
+            scale,
+            1e-13,
+        )
+        .value
+    }
+
+    /// T(X) = ∫_X^∞ r P22 g dr for X ≥ a.
+    fn tail<N: Ndf + RadialSlopes + ?Sized>(n: &N, a: f64, x: f64) -> f64 {
+        a * n.slope_ccdf(x) + tail_integral(n, a, x)
+    }
+
+    /// The normaliser Z = a(1 + Λ) = a + 2 I(a), from the same pieces as the CDF.
+    pub fn normaliser<N: Ndf + RadialSlopes + ?Sized>(n: &N, a: f64) -> f64 {
+        a * n.slope_cdf(a) + tail(n, a, a)
+    }
+
+    /// P(r ≤ X) for visible normals, cot θ = a (a = ∞: the D·cos CDF).
+    pub fn r_cdf<N: Ndf + RadialSlopes + ?Sized>(n: &N, a: f64, z: f64, x: f64) -> f64 {
+        if a == f64::INFINITY {
+            return n.slope_cdf(x);
+        }
+        if x <= a {
+            (a * n.slope_cdf(x) / z).clamp(0.0, 1.0)
+        } else {
+            (1.0 - tail(n, a, x) / z).clamp(0.0, 1.0)
+        }
+    }
+
+    /// The density of `r_cdf`: r P22(r) g(r)/Z.
+    fn r_pdf<N: Ndf + RadialSlopes + ?Sized>(n: &N, a: f64, z: f64, r: f64) -> f64 {
+        if a == f64::INFINITY {
+            return n.slope_pdf(r);
+        }
+        let g = if r <= a {
+            2.0 * PI * a
+        } else {
+            let y = ((r - a) * (r + a)).sqrt().atan2(a);
+            2.0 * PI * a + 2.0 * r * h(y)
+        };
+        r * n.p22(r, 0.0) * g / z
+    }
+
+    /// ψ-CDF given r: ∫_{−ψ₀}^{ψ} (r cos t + a) dt / (2 (r sin ψ₀ + a ψ₀)), ψ₀ = acos(−a/r).
+    pub fn psi_cdf(a: f64, r: f64, psi: f64) -> f64 {
+        let (p0, s0) = psi_range(a, r);
+        let psi = psi.clamp(-p0, p0);
+        let weight = |t: f64| {
+            if a.is_finite() {
+                r * t.sin() + a * t
+            } else {
+                t
+            }
+        };
+        let total = if a.is_finite() { r * s0 + a * p0 } else { p0 };
+        ((weight(psi) + total) / (2.0 * total)).clamp(0.0, 1.0)
+    }
+
+    /// (ψ₀, sin ψ₀).
+    fn psi_range(a: f64, r: f64) -> (f64, f64) {
+        if r <= a || !a.is_finite() {
+            (PI, 0.0)
+        } else {
+            let p0 = (-a / r).acos();
+            (p0, ((r - a) * (r + a)).sqrt() / r)
+        }
+    }
+
+    /// Visible slopes (r, ψ) relative to the direction's azimuth.
+    pub fn sample<N: Ndf + RadialSlopes + ?Sized>(n: &N, a: f64, u: [f64; 2]) -> (f64, f64) {
+        let z = if a.is_finite() { normaliser(n, a) } else { 1.0 };
+        let lo = n.alpha().ln() - 745.0;
+        let hi = n.alpha().ln() + 745.0;
+        let s = newton_bracketed(
+            |s| r_cdf(n, a, z, s.exp()) - u[0],
+            |s| r_pdf(n, a, z, s.exp()) * s.exp(),
+            lo,
+            hi,
+            n.alpha().ln(),
+        );
+        let r = s.exp();
+        let (p0, _) = psi_range(a, r);
+        let psi = newton_bracketed(
+            |t| psi_cdf(a, r, t) - u[1],
+            |t| {
+                let (_, s0) = psi_range(a, r);
+                if a.is_finite() {
+                    (r * t.cos() + a) / (2.0 * (r * s0 + a * p0))
+                } else {
+                    1.0 / (2.0 * p0)
+                }
+            },
+            -p0,
+            p0,
+            0.0,
+        );
+        (r, psi)
+    }
+
+    /// The u that [`sample`] maps to (r, ψ).
+    pub fn invert<N: Ndf + RadialSlopes + ?Sized>(n: &N, a: f64, r: f64, psi: f64) -> [f64; 2] {
+        let z = if a.is_finite() { normaliser(n, a) } else { 1.0 };
+        [r_cdf(n, a, z, r), psi_cdf(a, r, psi)]
+    }
+}

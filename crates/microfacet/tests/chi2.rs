@@ -9,7 +9,7 @@
 
 use microfacet::chi2::{chi2_test, sidak, DcosCoordinates};
 use microfacet::sample::{pdf_dcos, sample_dcos};
-use microfacet::{Gtr, Microsurface, Stretched, UnitSlopes, Vec3};
+use microfacet::{Gtr, Isotropic, Microsurface, Stretched, UnitSlopes, Vec3};
 
 const KINDS: [UnitSlopes; 4] = [
     UnitSlopes::Beckmann,
@@ -20,7 +20,7 @@ const KINDS: [UnitSlopes; 4] = [
 const ALPHAS: [f64; 4] = [0.05, 0.3, 1.0, 2.0];
 const INCIDENCE_DEG: [f64; 4] = [0.0, 45.0, 80.0, 89.0];
 /// Upper bound on the number of tests in this file (for the Šidák correction).
-const TESTS: usize = 4 * 4 * 2 * (4 + 1) + 4 * 5 + 4 * 3;
+const TESTS: usize = 4 * 4 * 2 * (4 + 1) + 4 * 5 + 4 * 3 + 4 * 4 * 4 + 4;
 
 fn direction(deg: f64) -> Vec3 {
     let t = deg.to_radians();
@@ -122,6 +122,68 @@ fn gtr_dcos() {
                 (a * 1e3) as u64 + (g * 10.0) as u64,
             );
             check(&format!("GTR α={a} γ={g} D·cos"), r);
+        }
+    }
+}
+
+fn run_isotropic<N: microfacet::Ndf + microfacet::RadialSlopes>(
+    label: &str,
+    n: N,
+    deg: f64,
+    samples: usize,
+) {
+    let a = n.alpha();
+    let m = Isotropic(n);
+    let coords = reference(a, a);
+    let wi = direction(deg);
+    let sigma = m.sigma(wi);
+    let pdf = |wm: Vec3| {
+        let d = wi.dot(wm);
+        if d <= 0.0 {
+            0.0
+        } else {
+            d * m.d(wm) / sigma
+        }
+    };
+    check(
+        &format!("{label} visible θi={deg}° (polar inversion)"),
+        chi2_test(
+            |u| m.sample_visible(wi, u),
+            pdf,
+            &DcosCoordinates(&coords),
+            samples,
+            24,
+            (a * 1e4) as u64 + deg as u64,
+        ),
+    );
+}
+
+#[test]
+fn gtr_visible_fast() {
+    run_isotropic("GTR α=0.3 γ=1.5", Gtr::new(0.3, 1.5).unwrap(), 45.0, 20_000);
+    run_isotropic("GTR α=1.7 γ=0.6", Gtr::new(1.7, 0.6).unwrap(), 80.0, 20_000);
+    // The same polar method on an NDF that also has a closed-form sampler.
+    run_isotropic(
+        "Beckmann α=0.3",
+        microfacet::Beckmann::new(0.3).unwrap(),
+        60.0,
+        20_000,
+    );
+}
+
+#[test]
+#[ignore = "full sweep: run by .ci/run with --ignored"]
+fn gtr_visible_sweep() {
+    for &a in &ALPHAS {
+        for g in [0.5, 1.0, 1.5, 2.5] {
+            for deg in INCIDENCE_DEG {
+                run_isotropic(
+                    &format!("GTR α={a} γ={g}"),
+                    Gtr::new(a, g).unwrap(),
+                    deg,
+                    20_000,
+                );
+            }
         }
     }
 }

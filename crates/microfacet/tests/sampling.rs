@@ -208,3 +208,37 @@ mod visible {
         }
     }
 }
+
+#[test]
+fn gtr_visible_warp_inverts() {
+    use microfacet::{Gtr, Isotropic, Microsurface, Vec3};
+    for (a, g) in [(0.05, 0.5), (0.3, 1.0), (0.3, 2.5), (1.0, 1.5), (2.0, 3.0)] {
+        let m = Isotropic(Gtr::new(a, g).unwrap());
+        for deg in [0.0f64, 30.0, 80.0, 89.0, 90.0, 120.0] {
+            let t = deg.to_radians();
+            let w = Vec3::new(t.sin() * 0.8, t.sin() * 0.6, t.cos());
+            for u in [[0.1, 0.2], [0.5, 0.5], [0.97, 0.03], [1e-6, 0.999]] {
+                let wm = m.sample_visible(w, u);
+                assert!(
+                    wm.z > 0.0 && (wm.length() - 1.0).abs() < 1e-14,
+                    "α={a} γ={g} {deg}° {u:?}: {wm:?}"
+                );
+                if w.dot(Vec3::Z).abs() > 1e-12 && w.z.abs() < 1.0 - 1e-12 {
+                    assert!(
+                        wm.dot(if w.z < 0.0 { -w } else { w }) >= -1e-12,
+                        "back-facing visible normal"
+                    );
+                }
+                let back = m.invert_visible(w, wm);
+                if deg != 0.0 {
+                    for k in 0..2 {
+                        assert!(
+                            (back[k] - u[k]).abs() < 1e-9,
+                            "α={a} γ={g} {deg}° {u:?} → {back:?}"
+                        );
+                    }
+                }
+            }
+        }
+    }
+}
