@@ -3,7 +3,8 @@
 //! Samples are binned on a grid over coordinates (s, t) ∈ [0, 1)² that a [`Coordinates`] map
 //! assigns to directions; the expected count of each cell is n ∫∫_cell pdf(ω(s, t)) J(s, t) ds dt
 //! (a fixed 33 × 33-node tanh-sinh rule per cell, which tolerates the integrable singularity
-//! of a tail heavier than the reference's at the grid's edge), cells expecting fewer than 5 samples are pooled, and the χ²
+//! of a tail heavier than the reference's at the grid's edge; a jump of the pdf inside a cell,
+//! as in the bounded VNDF, is integrated only to ~1e-3 of that cell), cells expecting fewer than 5 samples are pooled, and the χ²
 //! statistic is turned into a p-value with the regularised upper incomplete gamma function.
 //! The caller compares the p-value with a significance corrected for the number of tests
 //! (Šidák: 1 − (1 − 0.01)^{1/N}).

@@ -69,7 +69,7 @@ pub use exponential::Exponential;
 pub use family::{AnyNdf, NdfKind};
 pub use ggx::Ggx;
 pub use gtr::Gtr;
-pub use microsurface::{Isotropic, Microsurface, Stretched};
+pub use microsurface::{GgxBounded, Isotropic, Microsurface, Stretched};
 pub use ndf::{Ndf, ShapeInvariant};
 pub use sample::RadialSlopes;
 pub use vec3::Vec3;

@@ -242,3 +242,31 @@ fn gtr_visible_warp_inverts() {
         }
     }
 }
+
+#[test]
+fn ggx_bounded_vndf_properties() {
+    use microfacet::{GgxBounded, Microsurface, Vec3};
+    for (ax, ay) in [(0.05, 0.05), (0.3, 0.1), (1.0, 1.0), (2.0, 0.5)] {
+        let m = GgxBounded::new(ax, ay).unwrap();
+        for deg in [0.0f64, 30.0, 70.0, 89.0] {
+            let t = deg.to_radians();
+            let wi = Vec3::new(t.sin() * 0.6, t.sin() * 0.8, t.cos());
+            for u in [[0.1, 0.2], [0.5, 0.5], [0.9, 0.97]] {
+                let wm = m.sample(wi, u);
+                assert!(wm.z > 0.0 && (wm.length() - 1.0).abs() < 1e-14);
+                let back = m.invert(wi, wm);
+                assert!(
+                    (back[0] - u[0]).abs() < 1e-9 && (back[1] - u[1]).abs() < 1e-9,
+                    "{u:?} → {back:?}"
+                );
+                // The pdf of the reflected direction is the normal's pdf over 4|wi·m|, and
+                // never exceeds the unbounded sampler's.
+                let wo = wm * (2.0 * wi.dot(wm)) - wi;
+                let p = m.pdf_reflection(wi, wo);
+                let direct = m.pdf(wi, wm) / (4.0 * wi.dot(wm).abs());
+                assert!((p / direct - 1.0).abs() < 1e-12, "{p} vs {direct}");
+                assert!(m.pdf(wi, wm) >= m.ndf().pdf_visible(wi, wm) * (1.0 - 1e-12));
+            }
+        }
+    }
+}
