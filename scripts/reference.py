@@ -92,6 +92,8 @@ def lambda_closed(ndf, a, g, u):
         # ~e^{-z}: z/ln(10) guard digits. (A quadrature of K0 from z to infinity at 30-80
         # digits was found to be off by up to 5e-9 for z ~ 600.)
         z = 2 * b / a
+        if z > 800:
+            return mpf(0)  # Lambda ~ e^{-z} < 1e-300: below the f64 range, the record is skipped
         with mp.workdps(mp.dps + 30 + int(z / mp.log(10))):
             ki1 = pi / 2 - pi * z / 2 * (besselk(0, z) * struvel(-1, z) + besselk(1, z) * struvel(0, z))
             return +((2 * besselk(1, z) - ki1) / pi)
