@@ -270,3 +270,38 @@ fn ggx_bounded_vndf_properties() {
         }
     }
 }
+
+#[test]
+fn gtr_quantile_matches_burleys_special_forms() {
+    // Burley 2012 appendix B, with ξ = P(cos θh ≥ u) (ERRATA B.3):
+    // γ = 1: cos²θ = (α^{2(1−ξ)} − 1)/(α² − 1)          (eq 5)
+    // γ = 3/2: w = (1 + (1−ξ)(1/α − 1))^{−2}, cos²θ = (w − 1)/(α² − 1)   (eq 7)
+    // γ = 2: cos²θ = (1 − ξ)/(1 + (α² − 1) ξ)            (eq 9)
+    // γ general: w^{1−γ} = 1 + (1−ξ)(α^{2(1−γ)} − 1)       (eq 3)
+    use microfacet::{Gtr, RadialSlopes};
+    for a in [0.05f64, 0.3, 0.8, 2.0] {
+        for xi in [0.01, 0.2, 0.5, 0.9, 0.999] {
+            let cos2_of = |g: f64| {
+                let r = Gtr::new(a, g).unwrap().slope_quantile(xi);
+                1.0 / (1.0 + r * r)
+            };
+            let a2 = a * a;
+            let eq5 = (a2.powf(1.0 - xi) - 1.0) / (a2 - 1.0);
+            let w7 = (1.0 + (1.0 - xi) * (1.0 / a - 1.0)).powi(-2);
+            let eq7 = (w7 - 1.0) / (a2 - 1.0);
+            let eq9 = (1.0 - xi) / (1.0 + (a2 - 1.0) * xi);
+            let g = 3.3;
+            let w3 = (1.0 + (1.0 - xi) * (a2.powf(1.0 - g) - 1.0)).powf(1.0 / (1.0 - g));
+            let eq3 = (w3 - 1.0) / (a2 - 1.0);
+            for (name, got, want) in [
+                ("eq 5", cos2_of(1.0), eq5),
+                ("eq 7", cos2_of(1.5), eq7),
+                ("eq 9", cos2_of(2.0), eq9),
+                ("eq 3", cos2_of(g), eq3),
+            ] {
+                // The printed forms lose digits near ξ → 1 (cos θ → 0); 1e-12 covers them here.
+                assert!((got / want - 1.0).abs() < 1e-12, "α={a} ξ={xi} {name}: {got} vs {want}");
+            }
+        }
+    }
+}
