@@ -116,6 +116,25 @@ impl Stretched {
         })
     }
 
+    /// Without the range check (superposition components reach any roughness > 0).
+    pub(crate) fn raw(kind: UnitSlopes, alpha_x: f64, alpha_y: f64) -> Self {
+        Stretched {
+            kind,
+            alpha_x,
+            alpha_y,
+        }
+    }
+
+    /// (αx, αy).
+    pub fn alpha(&self) -> (f64, f64) {
+        (self.alpha_x, self.alpha_y)
+    }
+
+    /// Which α = 1 slope distribution this is.
+    pub fn kind(&self) -> UnitSlopes {
+        self.kind
+    }
+
     /// The α = 1 member of the family, for D, Λ and the radial CDF.
     fn unit(&self) -> UnitNdf {
         match self.kind {
@@ -131,7 +150,7 @@ impl Stretched {
     }
 
     /// (αx x, αy y, z): the direction in the α = 1 configuration (not normalised).
-    fn stretch(&self, w: Vec3) -> Vec3 {
+    pub(crate) fn stretch(&self, w: Vec3) -> Vec3 {
         Vec3::new(self.alpha_x * w.x, self.alpha_y * w.y, w.z)
     }
 

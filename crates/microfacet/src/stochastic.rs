@@ -105,3 +105,73 @@ impl Distribution<Vec3> for ExponentialChi3 {
         normal_from_polar_slope(tan2.sqrt(), 2.0 * PI * rng.random::<f64>())
     }
 }
+
+/// Visible normals of a superposition by the posterior of its mixing variable: t is drawn
+/// with density ∝ w(t) σ_t(w) (σ is linear in D, so this is exact), then a visible normal of
+/// the component with roughness α(t) (spherical caps for GGX, exact slope inversion for
+/// Beckmann). Works in the α = 1 configuration of (αx, αy), so anisotropy comes for free.
+///
+/// Kinds: Double GGX (Gamma-1 of GGX), Exponential (Gamma(3/2) of Beckmann), and GGX as a
+/// Gamma-1 superposition of Beckmann (a check of the method). The posterior CDF is inverted
+/// by safeguarded Newton on tanh-sinh quadratures (1e-12).
+#[derive(Clone, Copy, Debug)]
+pub struct VisibleMixture {
+    target: crate::Stretched,
+    wi: Vec3,
+}
+
+impl VisibleMixture {
+    /// Visible normals of `target` (Double GGX, Exponential or GGX) seen from `wi`
+    /// (a down-welling `wi` is mirrored, as in [`crate::Microsurface`]).
+    pub fn new(target: crate::Stretched, wi: Vec3) -> Result<Self, &'static str> {
+        match target.kind() {
+            crate::UnitSlopes::Beckmann => Err("Beckmann is not a superposition in this family"),
+            _ => Ok(VisibleMixture {
+                target,
+                wi: if wi.z < 0.0 { -wi } else { wi }.normalize(),
+            }),
+        }
+    }
+
+    /// (mixing, component kind).
+    fn parts(&self) -> (crate::mixture::Mixing, crate::UnitSlopes) {
+        use crate::mixture::Mixing;
+        use crate::UnitSlopes as U;
+        match self.target.kind() {
+            U::DoubleGgx => (Mixing::Gamma1, U::Ggx),
+            U::Exponential => (Mixing::Gamma32, U::Beckmann),
+            _ => (Mixing::Gamma1, U::Beckmann),
+        }
+    }
+}
+
+impl Distribution<Vec3> for VisibleMixture {
+    fn sample<R: Rng + ?Sized>(&self, rng: &mut R) -> Vec3 {
+        use crate::microsurface::Microsurface;
+        let (mixing, component) = self.parts();
+        // The direction in the α = 1 configuration of the target.
+        let w1 = self.target.stretch(self.wi).normalize();
+        let sigma_t = |t: f64| {
+            let a = mixing.roughness(1.0, t);
+            crate::Stretched::raw(component, a, a).sigma(w1)
+        };
+        let density = |t: f64| mixing.pdf(1.0, t) * sigma_t(t);
+        // Posterior CDF of t by quadrature, inverted in ln t.
+        let total = crate::quad::integrate_to_inf(density, 0.0, 1.0, 1e-13).value;
+        let cdf = |t: f64| crate::quad::integrate(density, 0.0, t, 1e-13).value / total;
+        let xi = rng.random::<f64>();
+        let s = crate::solve::newton_bracketed(
+            |s| cdf(s.exp()) - xi,
+            |s| density(s.exp()) * s.exp() / total,
+            -60.0,
+            60.0,
+            0.0,
+        );
+        let a = mixing.roughness(1.0, s.exp());
+        let m1 = crate::Stretched::raw(component, a, a)
+            .sample_visible(w1, [rng.random::<f64>(), rng.random::<f64>()]);
+        let (ax, ay) = self.target.alpha();
+        // m1 ∝ (x̃, ỹ, 1) in the α = 1 configuration → (αx x̃, αy ỹ, 1).
+        Vec3::new(ax * m1.x, ay * m1.y, m1.z).normalize()
+    }
+}

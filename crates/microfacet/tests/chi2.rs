@@ -20,7 +20,7 @@ const KINDS: [UnitSlopes; 4] = [
 const ALPHAS: [f64; 4] = [0.05, 0.3, 1.0, 2.0];
 const INCIDENCE_DEG: [f64; 4] = [0.0, 45.0, 80.0, 89.0];
 /// Upper bound on the number of tests in this file (for the Šidák correction).
-const TESTS: usize = 4 * 4 * 2 * (4 + 1) + 4 * 5 + 4 * 3 + 4 * 4 * 4 + 4 + 4 * 4 * 2;
+const TESTS: usize = 4 * 4 * 2 * (4 + 1) + 4 * 5 + 4 * 3 + 4 * 4 * 4 + 4 + 4 * 4 * 2 + 3 * 4;
 
 fn direction(deg: f64) -> Vec3 {
     let t = deg.to_radians();
@@ -288,6 +288,48 @@ fn ggx_bounded_vndf() {
                     5e-3,
                 );
             }
+        }
+    }
+}
+
+#[test]
+#[ignore = "slow (~0.3 ms a sample): run by .ci/run with --ignored"]
+fn visible_mixture_posterior_sampler() {
+    use microfacet::stochastic::VisibleMixture;
+    use rand::distr::Distribution;
+    use rand::SeedableRng;
+    use rand_xorshift::XorShiftRng;
+    for kind in [
+        UnitSlopes::DoubleGgx,
+        UnitSlopes::Exponential,
+        UnitSlopes::Ggx,
+    ] {
+        for (ax, ay, deg) in [(0.3, 0.3, 45.0), (0.5, 0.1, 80.0)] {
+            let target = Stretched::new(kind, ax, ay).unwrap();
+            let wi = direction(deg);
+            let sampler = VisibleMixture::new(target, wi).unwrap();
+            let coords = reference(ax, ay);
+            let mut rng = XorShiftRng::seed_from_u64(deg as u64 + kind as u64);
+            let sigma = target.sigma(wi);
+            let pdf = |wm: Vec3| {
+                let d = wi.dot(wm);
+                if d <= 0.0 {
+                    0.0
+                } else {
+                    d * target.d(wm) / sigma
+                }
+            };
+            check(
+                &format!("{kind:?} α=({ax},{ay}) visible θi={deg}° (posterior)"),
+                chi2_test(
+                    |_| sampler.sample(&mut rng),
+                    pdf,
+                    &DcosCoordinates(&coords),
+                    20_000,
+                    24,
+                    0,
+                ),
+            );
         }
     }
 }

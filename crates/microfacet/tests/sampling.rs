@@ -300,7 +300,10 @@ fn gtr_quantile_matches_burleys_special_forms() {
                 ("eq 3", cos2_of(g), eq3),
             ] {
                 // The printed forms lose digits near ξ → 1 (cos θ → 0); 1e-12 covers them here.
-                assert!((got / want - 1.0).abs() < 1e-12, "α={a} ξ={xi} {name}: {got} vs {want}");
+                assert!(
+                    (got / want - 1.0).abs() < 1e-12,
+                    "α={a} ξ={xi} {name}: {got} vs {want}"
+                );
             }
         }
     }
