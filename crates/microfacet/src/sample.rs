@@ -43,16 +43,23 @@ pub trait RadialSlopes: Ndf {
     }
 }
 
+/// The quantile at the edges: NaN → NaN, ξ ≤ 0 → 0, ξ ≥ 1 → ∞; `None` inside (0, 1).
+fn quantile_edge(xi: f64) -> Option<f64> {
+    if xi.is_nan() {
+        Some(xi)
+    } else if xi <= 0.0 {
+        Some(0.0)
+    } else if xi >= 1.0 {
+        Some(f64::INFINITY)
+    } else {
+        None
+    }
+}
+
 /// Generic quantile: Newton on F (or on 1 − F above the median) in ln r.
 fn quantile_by_newton<N: RadialSlopes + ?Sized>(n: &N, xi: f64) -> f64 {
-    if xi.is_nan() {
-        return xi;
-    }
-    if xi <= 0.0 {
-        return 0.0;
-    }
-    if xi >= 1.0 {
-        return f64::INFINITY;
+    if let Some(r) = quantile_edge(xi) {
+        return r;
     }
     let a = n.alpha();
     // ln r ∈ [ln α − 745, ln α + 745] brackets every representable quantile.
@@ -202,14 +209,8 @@ impl RadialSlopes for Gtr {
         }
     }
     fn slope_quantile(&self, xi: f64) -> f64 {
-        if xi.is_nan() {
-            return xi;
-        }
-        if xi <= 0.0 {
-            return 0.0;
-        }
-        if xi >= 1.0 {
-            return f64::INFINITY;
+        if let Some(r) = quantile_edge(xi) {
+            return r;
         }
         // Burley's inversion (seed 001 eqs 3–9) for ℓ = ln w, k = 1 − γ:
         //   e^{kℓ} = (1−ξ) e^{kL} + ξ  and  e^{k(ℓ−L)} = (1−ξ) + ξ e^{−kL},

@@ -60,6 +60,32 @@ fn check_with(label: &str, r: microfacet::chi2::Chi2, pdf_tol: f64) {
     );
 }
 
+/// χ² of `m.sample_visible(wi, ·)` against max(0, wi·m) D(m)/σ(wi), built from the NDF's own D
+/// and σ (so the sampler's pdf code is not what it is tested against).
+fn check_visible<M: Microsurface>(
+    label: &str,
+    m: &M,
+    wi: Vec3,
+    coords: &Stretched,
+    n: usize,
+    seed: u64,
+    mut sample: impl FnMut([f64; 2]) -> Vec3,
+) {
+    let sigma = m.sigma(wi);
+    let pdf = |wm: Vec3| {
+        let d = wi.dot(wm);
+        if d <= 0.0 {
+            0.0
+        } else {
+            d * m.d(wm) / sigma
+        }
+    };
+    check(
+        label,
+        chi2_test(&mut sample, pdf, &DcosCoordinates(coords), n, 24, seed),
+    );
+}
+
 fn run_stretched(kind: UnitSlopes, ax: f64, ay: f64, deg: Option<f64>, n: usize) {
     let m = Stretched::new(kind, ax, ay).unwrap();
     let coords = reference(ax, ay);
@@ -72,25 +98,14 @@ fn run_stretched(kind: UnitSlopes, ax: f64, ay: f64, deg: Option<f64>, n: usize)
         ),
         Some(deg) => {
             let wi = direction(deg);
-            let sigma = m.sigma(wi);
-            let pdf = |wm: Vec3| {
-                let d = wi.dot(wm);
-                if d <= 0.0 {
-                    0.0
-                } else {
-                    d * m.d(wm) / sigma
-                }
-            };
-            check(
+            check_visible(
                 &format!("{kind:?} α=({ax},{ay}) visible θi={deg}°"),
-                chi2_test(
-                    |u| m.sample_visible(wi, u),
-                    pdf,
-                    &c,
-                    n,
-                    24,
-                    seed + deg as u64,
-                ),
+                &m,
+                wi,
+                &coords,
+                n,
+                seed + deg as u64,
+                |u| m.sample_visible(wi, u),
             );
         }
     }
@@ -141,27 +156,20 @@ fn run_isotropic<N: microfacet::Ndf + microfacet::RadialSlopes>(
     let m = Isotropic(n);
     // GTR with γ ≤ 1 is not specular as α → 0 (ERRATA E): most of its visible area is at
     // grazing normals, which a near-specular reference grid lumps into a few cells.
-    let coords = if m.0.d(0.5) > 0.05 { reference(1.0, 1.0) } else { reference(a, a) };
-    let wi = direction(deg);
-    let sigma = m.sigma(wi);
-    let pdf = |wm: Vec3| {
-        let d = wi.dot(wm);
-        if d <= 0.0 {
-            0.0
-        } else {
-            d * m.d(wm) / sigma
-        }
+    let coords = if m.0.d(0.5) > 0.05 {
+        reference(1.0, 1.0)
+    } else {
+        reference(a, a)
     };
-    check(
+    let wi = direction(deg);
+    check_visible(
         &format!("{label} visible θi={deg}° (polar inversion)"),
-        chi2_test(
-            |u| m.sample_visible(wi, u),
-            pdf,
-            &DcosCoordinates(&coords),
-            samples,
-            24,
-            (a * 1e4) as u64 + deg as u64,
-        ),
+        &m,
+        wi,
+        &coords,
+        samples,
+        (a * 1e4) as u64 + deg as u64,
+        |u| m.sample_visible(wi, u),
     );
 }
 
@@ -312,25 +320,14 @@ fn visible_mixture_posterior_sampler() {
             let sampler = VisibleMixture::new(target, wi).unwrap();
             let coords = reference(ax, ay);
             let mut rng = XorShiftRng::seed_from_u64(deg as u64 + kind as u64);
-            let sigma = target.sigma(wi);
-            let pdf = |wm: Vec3| {
-                let d = wi.dot(wm);
-                if d <= 0.0 {
-                    0.0
-                } else {
-                    d * target.d(wm) / sigma
-                }
-            };
-            check(
+            check_visible(
                 &format!("{kind:?} α=({ax},{ay}) visible θi={deg}° (posterior)"),
-                chi2_test(
-                    |_| sampler.sample(&mut rng),
-                    pdf,
-                    &DcosCoordinates(&coords),
-                    20_000,
-                    24,
-                    0,
-                ),
+                &target,
+                wi,
+                &coords,
+                20_000,
+                0,
+                |_| sampler.sample(&mut rng),
             );
         }
     }
