@@ -2,7 +2,9 @@
 //! dispatches and turns failures into one-line messages with a non-zero exit code.
 
 mod eval;
+mod report;
 mod sample;
+mod svg;
 mod verify;
 
 use std::process::ExitCode;
@@ -23,6 +25,9 @@ usage:
                     [--wi X,Y,Z] [--n N] [--seed S]
       write N sampled normals (default 100000), one `x y z` per line; D·cos (default)
       or visible normals for the incident direction --wi (default 0,0,1)
+  microfacet report [--out DIR]
+      write DIR/index.html (default report/): every NDF's quantities, identities,
+      superpositions and sample histograms as inline SVG plots, and the verify table
   microfacet --help
 ";
 
@@ -36,6 +41,7 @@ fn main() -> ExitCode {
         Some("verify") => verify::run(&args[1..]),
         Some("eval") => eval::run(&args[1..]),
         Some("sample") => sample::run(&args[1..]),
+        Some("report") => report::run(&args[1..]),
         Some("-h" | "--help" | "help") => {
             print!("{USAGE}");
             Ok(ExitCode::SUCCESS)
