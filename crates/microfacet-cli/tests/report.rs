@@ -32,12 +32,7 @@ fn chromium() -> Option<PathBuf> {
     })
 }
 
-fn headless(
-    chrome: &Path,
-    profile: &Path,
-    extra: &[&str],
-    url: &str,
-) -> std::process::Output {
+fn headless(chrome: &Path, profile: &Path, extra: &[&str], url: &str) -> std::process::Output {
     Command::new(chrome)
         .args([
             "--headless",
