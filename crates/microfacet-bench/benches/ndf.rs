@@ -1,0 +1,198 @@
+//! Per-call cost of the exact f64 library against the textbook C baseline, measured side by
+//! side in one process: `cargo bench -p microfacet-bench`. Inputs are random (u, α) (and γ),
+//! 4096 of them cycled, so no call sees a repeated value. Each figure is the median of 15 runs.
+//! Results and their discussion: BENCHMARKS.md.
+
+use microfacet::sample::sample_dcos;
+use microfacet::{
+    AnyNdf, Beckmann, DoubleGgx, Exponential, Ggx, Gtr, Isotropic, Microsurface, Ndf, Stretched,
+    UnitSlopes, Vec3,
+};
+use microfacet_bench as c;
+use std::hint::black_box;
+use std::time::Instant;
+
+const N: usize = 4096;
+
+struct Inputs {
+    u: Vec<f64>,
+    alpha: Vec<f64>,
+    gamma: Vec<f64>,
+    xi: Vec<[f64; 2]>,
+    w: Vec<Vec3>,
+}
+
+fn inputs() -> Inputs {
+    let mut s = 0x2545_f491_4f6c_dd1du64;
+    let mut next = || {
+        s ^= s << 13;
+        s ^= s >> 7;
+        s ^= s << 17;
+        (s >> 11) as f64 / (1u64 << 53) as f64
+    };
+    let mut i = Inputs {
+        u: vec![],
+        alpha: vec![],
+        gamma: vec![],
+        xi: vec![],
+        w: vec![],
+    };
+    for _ in 0..N {
+        i.u.push(0.02 + 0.97 * next());
+        i.alpha.push(0.05 + 0.95 * next());
+        i.gamma.push(0.5 + 2.5 * next());
+        i.xi.push([next(), next()]);
+        let t: f64 = 1.5 * next();
+        let p = 6.283 * next();
+        i.w.push(Vec3::new(t.sin() * p.cos(), t.sin() * p.sin(), t.cos()));
+    }
+    i
+}
+
+/// Median ns per call of `f(i)` over 15 runs of `calls` calls.
+fn time(calls: usize, mut f: impl FnMut(usize) -> f64) -> f64 {
+    let mut runs = Vec::new();
+    for _ in 0..15 {
+        let start = Instant::now();
+        let mut acc = 0.0;
+        for k in 0..calls {
+            acc += f(k % N);
+        }
+        black_box(acc);
+        runs.push(start.elapsed().as_secs_f64() * 1e9 / calls as f64);
+    }
+    runs.sort_by(f64::total_cmp);
+    runs[runs.len() / 2]
+}
+
+fn row(name: &str, ns: f64, base: Option<(&str, f64)>) {
+    match base {
+        Some((b, t)) => println!("{name:44} {ns:10.1} ns   {:6.2}× {b}", ns / t),
+        None => println!("{name:44} {ns:10.1} ns"),
+    }
+}
+
+fn main() {
+    let i = inputs();
+    let big = 400_000;
+    println!(
+        "{:44} {:>13}   ratio",
+        "function (f64, random inputs)", "per call"
+    );
+
+    // GGX and Beckmann against the C baseline.
+    let c_ggx_d = time(big, |k| c::ggx_d(black_box(i.u[k]), i.alpha[k]));
+    let ggx_d = time(big, |k| Ggx::new(i.alpha[k]).unwrap().d(black_box(i.u[k])));
+    row("C  GGX D", c_ggx_d, None);
+    row("us GGX D", ggx_d, Some(("C GGX D", c_ggx_d)));
+    let c_ggx_l = time(big, |k| c::ggx_lambda(black_box(i.u[k]), i.alpha[k]));
+    let ggx_l = time(big, |k| {
+        Ggx::new(i.alpha[k]).unwrap().lambda(black_box(i.u[k]))
+    });
+    row("C  GGX Λ", c_ggx_l, None);
+    row("us GGX Λ", ggx_l, Some(("C GGX Λ", c_ggx_l)));
+    let c_ggx_g1 = time(big, |k| {
+        1.0 / (1.0 + c::ggx_lambda(black_box(i.u[k]), i.alpha[k]))
+    });
+    let ggx_g1 = time(big, |k| Ggx::new(i.alpha[k]).unwrap().g1(black_box(i.u[k])));
+    row("C  GGX G1", c_ggx_g1, None);
+    row("us GGX G1", ggx_g1, Some(("C GGX G1", c_ggx_g1)));
+    let ggx_g2 = time(big, |k| {
+        Ggx::new(i.alpha[k])
+            .unwrap()
+            .g2(black_box(i.u[k]), i.u[(k + 1) % N])
+    });
+    row(
+        "us GGX G2 (height-correlated)",
+        ggx_g2,
+        Some(("C GGX G1", c_ggx_g1)),
+    );
+    let c_b_d = time(big, |k| c::beckmann_d(black_box(i.u[k]), i.alpha[k]));
+    let b_d = time(big, |k| {
+        Beckmann::new(i.alpha[k]).unwrap().d(black_box(i.u[k]))
+    });
+    row("C  Beckmann D", c_b_d, None);
+    row("us Beckmann D", b_d, Some(("C Beckmann D", c_b_d)));
+    let c_b_l = time(big, |k| c::beckmann_lambda(black_box(i.u[k]), i.alpha[k]));
+    let b_l = time(big, |k| {
+        Beckmann::new(i.alpha[k]).unwrap().lambda(black_box(i.u[k]))
+    });
+    row("C  Beckmann Λ", c_b_l, None);
+    row("us Beckmann Λ", b_l, Some(("C Beckmann Λ", c_b_l)));
+    let c_vndf = time(big, |k| {
+        let w = i.w[k];
+        c::ggx_vndf([w.x, w.y, w.z], i.alpha[k], i.alpha[k], black_box(i.xi[k]))[2]
+    });
+    let vndf = time(big, |k| {
+        let a = i.alpha[k];
+        Stretched::new(UnitSlopes::Ggx, a, a)
+            .unwrap()
+            .sample_visible(i.w[k], black_box(i.xi[k]))
+            .z
+    });
+    row("C  GGX VNDF (Heitz 2018)", c_vndf, None);
+    row(
+        "us GGX VNDF (spherical caps)",
+        vndf,
+        Some(("C GGX VNDF", c_vndf)),
+    );
+
+    // Every other NDF against our GGX Λ.
+    let base = Some(("our GGX Λ", ggx_l));
+    let few = 20_000;
+    for (name, make) in [
+        ("Beckmann", 0usize),
+        ("Double GGX", 1),
+        ("Exponential", 2),
+        ("GTR (γ ∈ [0.5, 3])", 3),
+    ] {
+        let ndf = |k: usize| -> AnyNdf {
+            let a = i.alpha[k];
+            match make {
+                0 => AnyNdf::Beckmann(Beckmann::new(a).unwrap()),
+                1 => AnyNdf::DoubleGgx(DoubleGgx::new(a).unwrap()),
+                2 => AnyNdf::Exponential(Exponential::new(a).unwrap()),
+                _ => AnyNdf::Gtr(Gtr::new(a, i.gamma[k]).unwrap()),
+            }
+        };
+        let calls = if make >= 2 { few } else { big };
+        row(
+            &format!("us {name} Λ"),
+            time(calls, |k| ndf(k).lambda(black_box(i.u[k]))),
+            base,
+        );
+        row(
+            &format!("us {name} σ(−u)"),
+            time(calls, |k| ndf(k).sigma(-black_box(i.u[k]))),
+            base,
+        );
+        row(
+            &format!("us {name} D·cos sample"),
+            time(calls, |k| sample_dcos(&ndf(k), black_box(i.xi[k])).z),
+            base,
+        );
+        let vcalls = if make >= 1 { 2_000 } else { big / 4 };
+        row(
+            &format!("us {name} VNDF sample"),
+            time(vcalls, |k| {
+                let n = ndf(k);
+                match n {
+                    AnyNdf::Gtr(_) => Isotropic(n).sample_visible(i.w[k], black_box(i.xi[k])).z,
+                    _ => {
+                        let kind = match make {
+                            0 => UnitSlopes::Beckmann,
+                            1 => UnitSlopes::DoubleGgx,
+                            _ => UnitSlopes::Exponential,
+                        };
+                        let a = i.alpha[k];
+                        Stretched::new(kind, a, a)
+                            .unwrap()
+                            .sample_visible(i.w[k], black_box(i.xi[k]))
+                            .z
+                    }
+                }
+            }),
+            base,
+        );
+    }
+}

@@ -1,0 +1,56 @@
+//! The textbook C baseline (c/baseline.c), exposed as safe functions for the benchmarks.
+//! This crate is not part of the library: it exists so that `cargo bench -p microfacet-bench`
+//! measures our functions and a hand-written C equivalent side by side in one process.
+
+#![allow(unsafe_code)] // FFI to the C baseline, confined to this file.
+
+mod ffi {
+    extern "C" {
+        pub fn c_ggx_d(u: f64, alpha: f64) -> f64;
+        pub fn c_ggx_lambda(u: f64, alpha: f64) -> f64;
+        pub fn c_beckmann_d(u: f64, alpha: f64) -> f64;
+        pub fn c_beckmann_lambda(u: f64, alpha: f64) -> f64;
+        pub fn c_ggx_vndf(
+            vx: f64,
+            vy: f64,
+            vz: f64,
+            ax: f64,
+            ay: f64,
+            u1: f64,
+            u2: f64,
+            out: *mut f64,
+        );
+    }
+}
+
+/// GGX D (C baseline).
+pub fn ggx_d(u: f64, alpha: f64) -> f64 {
+    // SAFETY: a pure C function of two doubles.
+    unsafe { ffi::c_ggx_d(u, alpha) }
+}
+
+/// GGX Λ (C baseline).
+pub fn ggx_lambda(u: f64, alpha: f64) -> f64 {
+    // SAFETY: a pure C function of two doubles.
+    unsafe { ffi::c_ggx_lambda(u, alpha) }
+}
+
+/// Beckmann D (C baseline).
+pub fn beckmann_d(u: f64, alpha: f64) -> f64 {
+    // SAFETY: a pure C function of two doubles.
+    unsafe { ffi::c_beckmann_d(u, alpha) }
+}
+
+/// Beckmann Λ (C baseline, the cancelling textbook form).
+pub fn beckmann_lambda(u: f64, alpha: f64) -> f64 {
+    // SAFETY: a pure C function of two doubles.
+    unsafe { ffi::c_beckmann_lambda(u, alpha) }
+}
+
+/// GGX visible normal, Heitz 2018 (C baseline).
+pub fn ggx_vndf(v: [f64; 3], ax: f64, ay: f64, u: [f64; 2]) -> [f64; 3] {
+    let mut out = [0.0; 3];
+    // SAFETY: `out` is a valid array of three doubles that the C function writes.
+    unsafe { ffi::c_ggx_vndf(v[0], v[1], v[2], ax, ay, u[0], u[1], out.as_mut_ptr()) };
+    out
+}
