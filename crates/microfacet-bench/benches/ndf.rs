@@ -43,7 +43,7 @@ fn inputs() -> Inputs {
         i.gamma.push(0.5 + 2.5 * next());
         i.xi.push([next(), next()]);
         let t: f64 = 1.5 * next();
-        let p = 6.283 * next();
+        let p = std::f64::consts::TAU * next();
         i.w.push(Vec3::new(t.sin() * p.cos(), t.sin() * p.sin(), t.cos()));
     }
     i
