@@ -8,7 +8,8 @@
 //! with roughness (αx, αy): the α = 1 slopes are sampled and stretched by (αx, αy)
 //! (pbrt's recipe: stretch, sample the α = 1 slopes, unstretch, build the normal).
 //!
-//! Conventions: directions may be up-welling (w.z < 0) or grazing. Λ(w) depends on w only
+//! Conventions: directions are unit vectors (a zero vector is not a direction and gives NaN);
+//! they may be up-welling (w.z < 0) or grazing. Λ(w) depends on w only
 //! through tan²θ (the masking of the side w comes from). G1(w, wm) is 0 when w·wm and w.z
 //! disagree in sign. For w.z < 0 the visible normals are those seen from −w (the
 //! microsurface seen from below is sampled through its mirror image, as in pbrt-v4); so
