@@ -137,6 +137,77 @@ fn main() {
         Some(("C GGX VNDF", c_vndf)),
     );
 
+    // The fast paths (microfacet::fast) against the same C baseline, f64 and f32.
+    use microfacet::fast::{beckmann as fb, ggx as fg};
+    let (u32s, a32s): (Vec<f32>, Vec<f32>) = (
+        i.u.iter().map(|&x| x as f32).collect(),
+        i.alpha.iter().map(|&x| x as f32).collect(),
+    );
+    let pairs: [(&str, f64, f64); 4] = [
+        (
+            "GGX D",
+            c_ggx_d,
+            time(big, |k| fg::d(black_box(i.u[k]), i.alpha[k])),
+        ),
+        (
+            "GGX Λ",
+            c_ggx_l,
+            time(big, |k| fg::lambda(black_box(i.u[k]), i.alpha[k])),
+        ),
+        (
+            "Beckmann D",
+            c_b_d,
+            time(big, |k| fb::d(black_box(i.u[k]), i.alpha[k])),
+        ),
+        (
+            "Beckmann Λ",
+            c_b_l,
+            time(big, |k| fb::lambda(black_box(i.u[k]), i.alpha[k])),
+        ),
+    ];
+    for (name, c_t, t) in pairs {
+        row(&format!("us fast {name} f64"), t, Some(("C f64", c_t)));
+    }
+    let fast_g1 = time(big, |k| fg::g1(black_box(i.u[k]), i.alpha[k]));
+    row("us fast GGX G1 f64", fast_g1, Some(("C f64", c_ggx_g1)));
+    let fast_vndf = time(big, |k| {
+        let w = i.w[k];
+        fg::sample_visible([w.x, w.y, w.z], i.alpha[k], i.alpha[k], black_box(i.xi[k]))[2]
+    });
+    row("us fast GGX VNDF f64", fast_vndf, Some(("C f64", c_vndf)));
+    let f32_pairs: [(&str, f64, f64); 4] = [
+        (
+            "GGX D",
+            time(big, |k| c::ggx_d_f32(black_box(u32s[k]), a32s[k]) as f64),
+            time(big, |k| fg::d(black_box(u32s[k]), a32s[k]) as f64),
+        ),
+        (
+            "GGX Λ",
+            time(big, |k| {
+                c::ggx_lambda_f32(black_box(u32s[k]), a32s[k]) as f64
+            }),
+            time(big, |k| fg::lambda(black_box(u32s[k]), a32s[k]) as f64),
+        ),
+        (
+            "Beckmann D",
+            time(big, |k| {
+                c::beckmann_d_f32(black_box(u32s[k]), a32s[k]) as f64
+            }),
+            time(big, |k| fb::d(black_box(u32s[k]), a32s[k]) as f64),
+        ),
+        (
+            "Beckmann Λ",
+            time(big, |k| {
+                c::beckmann_lambda_f32(black_box(u32s[k]), a32s[k]) as f64
+            }),
+            time(big, |k| fb::lambda(black_box(u32s[k]), a32s[k]) as f64),
+        ),
+    ];
+    for (name, c_t, t) in f32_pairs {
+        row(&format!("C  {name} f32"), c_t, None);
+        row(&format!("us fast {name} f32"), t, Some(("C f32", c_t)));
+    }
+
     // Every other NDF against our GGX Λ.
     let base = Some(("our GGX Λ", ggx_l));
     let few = 20_000;

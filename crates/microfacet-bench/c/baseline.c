@@ -58,3 +58,30 @@ void c_ggx_vndf(double vx, double vy, double vz, double ax, double ay, double u1
     double m = sqrt(mx * mx + my * my + mz * mz);
     out[0] = mx / m; out[1] = my / m; out[2] = mz / m;
 }
+
+/* The same in single precision. */
+float c_ggx_d_f(float u, float alpha) {
+    if (u <= 0.0f) return 0.0f;
+    float a2 = alpha * alpha;
+    float t = 1.0f + u * u * (a2 - 1.0f);
+    return a2 / ((float)PI * t * t);
+}
+
+float c_ggx_lambda_f(float u, float alpha) {
+    float u2 = u * u;
+    float tan2 = (1.0f - u2) / u2;
+    return 0.5f * (-1.0f + sqrtf(1.0f + alpha * alpha * tan2));
+}
+
+float c_beckmann_d_f(float u, float alpha) {
+    if (u <= 0.0f) return 0.0f;
+    float u2 = u * u;
+    float tan2 = (1.0f - u2) / u2;
+    float a2 = alpha * alpha;
+    return expf(-tan2 / a2) / ((float)PI * a2 * u2 * u2);
+}
+
+float c_beckmann_lambda_f(float u, float alpha) {
+    float a = u / (alpha * sqrtf(1.0f - u * u));
+    return 0.5f * (erff(a) - 1.0f) + expf(-a * a) / (2.0f * a * sqrtf((float)PI));
+}

@@ -10,6 +10,10 @@ mod ffi {
         pub fn c_ggx_lambda(u: f64, alpha: f64) -> f64;
         pub fn c_beckmann_d(u: f64, alpha: f64) -> f64;
         pub fn c_beckmann_lambda(u: f64, alpha: f64) -> f64;
+        pub fn c_ggx_d_f(u: f32, alpha: f32) -> f32;
+        pub fn c_ggx_lambda_f(u: f32, alpha: f32) -> f32;
+        pub fn c_beckmann_d_f(u: f32, alpha: f32) -> f32;
+        pub fn c_beckmann_lambda_f(u: f32, alpha: f32) -> f32;
         pub fn c_ggx_vndf(
             vx: f64,
             vy: f64,
@@ -53,4 +57,28 @@ pub fn ggx_vndf(v: [f64; 3], ax: f64, ay: f64, u: [f64; 2]) -> [f64; 3] {
     // SAFETY: `out` is a valid array of three doubles that the C function writes.
     unsafe { ffi::c_ggx_vndf(v[0], v[1], v[2], ax, ay, u[0], u[1], out.as_mut_ptr()) };
     out
+}
+
+/// GGX D in f32 (C baseline).
+pub fn ggx_d_f32(u: f32, alpha: f32) -> f32 {
+    // SAFETY: a pure C function of two floats.
+    unsafe { ffi::c_ggx_d_f(u, alpha) }
+}
+
+/// GGX Λ in f32 (C baseline).
+pub fn ggx_lambda_f32(u: f32, alpha: f32) -> f32 {
+    // SAFETY: a pure C function of two floats.
+    unsafe { ffi::c_ggx_lambda_f(u, alpha) }
+}
+
+/// Beckmann D in f32 (C baseline).
+pub fn beckmann_d_f32(u: f32, alpha: f32) -> f32 {
+    // SAFETY: a pure C function of two floats.
+    unsafe { ffi::c_beckmann_d_f(u, alpha) }
+}
+
+/// Beckmann Λ in f32 (C baseline).
+pub fn beckmann_lambda_f32(u: f32, alpha: f32) -> f32 {
+    // SAFETY: a pure C function of two floats.
+    unsafe { ffi::c_beckmann_lambda_f(u, alpha) }
 }

@@ -47,6 +47,7 @@ pub mod double_ggx;
 pub mod error;
 pub mod exponential;
 pub mod family;
+pub mod fast;
 pub mod ggx;
 pub mod gtr;
 pub mod microsurface;
