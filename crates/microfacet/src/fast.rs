@@ -97,24 +97,21 @@ pub mod ggx {
         a2 / (F::PI * t * t)
     }
 
-    /// s = α² tan²θ.
-    #[inline(always)]
-    fn s<F: Real>(u: F, alpha: F) -> F {
-        let a = alpha / u;
-        a * a * ((F::ONE - u) * (F::ONE + u))
-    }
-
-    /// Λ(u) = s/(2(1 + √(1+s))), s = α² tan²θ, for 0 < u ≤ 1.
+    /// Λ(u) = s/(2(1 + √(1+s))), s = α² tan²θ, for 0 < u ≤ 1, written with u² multiplied
+    /// through as α²(1−u²)/(2(u² + u√(u² + α²(1−u²)))): one square root and one division, and
+    /// no cancellation.
     #[inline]
     pub fn lambda<F: Real>(u: F, alpha: F) -> F {
-        let s = s(u, alpha);
-        s / ((F::ONE + F::ONE) * (F::ONE + (F::ONE + s).sqrt()))
+        let t = alpha * alpha * ((F::ONE - u) * (F::ONE + u));
+        let u2 = u * u;
+        t / ((F::ONE + F::ONE) * (u2 + u * (u2 + t).sqrt()))
     }
 
-    /// G1(u) = 2/(1 + √(1 + s)).
+    /// G1(u) = 2/(1 + √(1 + s)) = 2u/(u + √(u² + α²(1−u²))).
     #[inline]
     pub fn g1<F: Real>(u: F, alpha: F) -> F {
-        (F::ONE + F::ONE) / (F::ONE + (F::ONE + s(u, alpha)).sqrt())
+        let t = alpha * alpha * ((F::ONE - u) * (F::ONE + u));
+        (u + u) / (u + (u * u + t).sqrt())
     }
 
     /// Height-correlated G2 = 1/(1 + Λ(u_o) + Λ(u_i)).
