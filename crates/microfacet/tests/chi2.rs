@@ -225,48 +225,48 @@ fn stochastic_samplers() {
     use rand::distr::Distribution;
     use rand::SeedableRng;
     use rand_xorshift::XorShiftRng;
+    /// χ² of a stochastic D·cos sampler against D(m) cos θm of the NDF it represents.
+    fn one(
+        label: &str,
+        s: &impl Distribution<Vec3>,
+        n: &impl microfacet::Ndf,
+        coords: &Stretched,
+        rng: &mut XorShiftRng,
+    ) {
+        let r = chi2_test(
+            |_| s.sample(rng),
+            |w| pdf_dcos(n, w),
+            &DcosCoordinates(coords),
+            100_000,
+            24,
+            0,
+        );
+        check(label, r);
+    }
     for &a in &ALPHAS {
         let coords = reference(a, a);
-        let c = DcosCoordinates(&coords);
         let mut rng = XorShiftRng::seed_from_u64((a * 1000.0) as u64);
-        let (s, n) = (
-            DoubleGgxMixture::new(a).unwrap(),
-            DoubleGgx::new(a).unwrap(),
+        let rng = &mut rng;
+        one(
+            &format!("Double GGX α={a} Gamma-1 mixture of GGX"),
+            &DoubleGgxMixture::new(a).unwrap(),
+            &DoubleGgx::new(a).unwrap(),
+            &coords,
+            rng,
         );
-        let r = chi2_test(
-            |_| s.sample(&mut rng),
-            |w| pdf_dcos(&n, w),
-            &c,
-            100_000,
-            24,
-            0,
+        one(
+            &format!("GGX α={a} Gamma-1 mixture of Beckmann"),
+            &GgxBeckmannMixture::new(a).unwrap(),
+            &Ggx::new(a).unwrap(),
+            &coords,
+            rng,
         );
-        check(&format!("Double GGX α={a} Gamma-1 mixture of GGX"), r);
-        let (s, n) = (GgxBeckmannMixture::new(a).unwrap(), Ggx::new(a).unwrap());
-        let r = chi2_test(
-            |_| s.sample(&mut rng),
-            |w| pdf_dcos(&n, w),
-            &c,
-            100_000,
-            24,
-            0,
-        );
-        check(&format!("GGX α={a} Gamma-1 mixture of Beckmann"), r);
-        let (s, n) = (
-            ExponentialChi3::new(a).unwrap(),
-            Exponential::new(a).unwrap(),
-        );
-        let r = chi2_test(
-            |_| s.sample(&mut rng),
-            |w| pdf_dcos(&n, w),
-            &c,
-            100_000,
-            24,
-            0,
-        );
-        check(
+        one(
             &format!("Exponential α={a} Chi-3 (3 Gaussians, 1 uniform)"),
-            r,
+            &ExponentialChi3::new(a).unwrap(),
+            &Exponential::new(a).unwrap(),
+            &coords,
+            rng,
         );
     }
 }
