@@ -28,6 +28,10 @@
 //! [`Stretched`] implements it, isotropic or anisotropic, for the shape-invariant NDFs.
 //! [`sample`] has D·cos sampling for every NDF, GTR included.
 //!
+//! ## Fast paths
+//! [`fast`] has GGX and Beckmann D, Λ, G1, G2 and GGX visible-normal sampling in f64 and f32
+//! at the cost of the textbook formulas (benchmarked against C in `crates/microfacet-bench`).
+//!
 //! ## Accuracy
 //! Closed forms: ≤ 1e-13 relative (absolute 1e-300 where the value underflows). Quantities
 //! computed by quadrature (GTR Λ/σ/P2 for general γ, the Exponential NDF's Λ/σ): ≤ 1e-10
