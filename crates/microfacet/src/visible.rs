@@ -182,12 +182,16 @@ impl UnitSlopes {
 
     /// The CDF of ỹ given x̃ = x.
     pub fn conditional_cdf(self, x: f64, y: f64) -> f64 {
-        let part = self.mix(|c| c.p22_partial(x, y));
-        let p2 = self.mix(|c| c.p2(x));
-        (0.5 + part / p2).clamp(0.0, 1.0)
+        self.conditional_cdf_with(x, y, self.p2(x))
     }
 
-    fn conditional_pdf(self, x: f64, y: f64) -> f64 {
+    /// `conditional_cdf` given P2(x) (fixed while ỹ is solved for).
+    fn conditional_cdf_with(self, x: f64, y: f64, p2x: f64) -> f64 {
+        let part = self.mix(|c| c.p22_partial(x, y));
+        (0.5 + part / p2x).clamp(0.0, 1.0)
+    }
+
+    fn conditional_pdf_with(self, x: f64, y: f64, p2x: f64) -> f64 {
         let r = x.hypot(y);
         let p22 = self.mix(|c| match c {
             Component::Beckmann(a) => (-(r / a) * (r / a)).exp() / (PI * a * a),
@@ -196,7 +200,7 @@ impl UnitSlopes {
                 a * a / (PI * w * w)
             }
         });
-        p22 / self.mix(|c| c.p2(x))
+        p22 / p2x
     }
 
     /// Visible slopes (x̃, ỹ) for cot θ = a in the xz-plane, from u ∈ [0, 1)².
@@ -207,9 +211,10 @@ impl UnitSlopes {
             |x| self.marginal_pdf_with(a, x, den),
             -a,
         );
+        let p2x = self.p2(x);
         let y = invert_increasing(
-            |y| self.conditional_cdf(x, y) - u[1],
-            |y| self.conditional_pdf(x, y),
+            |y| self.conditional_cdf_with(x, y, p2x) - u[1],
+            |y| self.conditional_pdf_with(x, y, p2x),
             f64::NEG_INFINITY,
         );
         (x, y)
@@ -351,11 +356,10 @@ pub mod radial {
             n.alpha().ln(),
         );
         let r = s.exp();
-        let (p0, _) = psi_range(a, r);
+        let (p0, s0) = psi_range(a, r);
         let psi = newton_bracketed(
             |t| psi_cdf(a, r, t) - u[1],
             |t| {
-                let (_, s0) = psi_range(a, r);
                 if a.is_finite() {
                     (r * t.cos() + a) / (2.0 * (r * s0 + a * p0))
                 } else {
