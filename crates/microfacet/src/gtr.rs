@@ -133,8 +133,45 @@ impl Gtr {
         self.c_pow(one_r2 / (r2 + a2), self.gamma) / (one_r2 * one_r2)
     }
 
+    /// ln P22 as a function of r² (finite where P22 underflows).
+    fn ln_p22_r2(&self, r2: f64) -> f64 {
+        let one_r2 = 1.0 + r2;
+        self.ln_c + self.gamma * (one_r2 / (r2 + self.alpha * self.alpha)).ln() - 2.0 * one_r2.ln()
+    }
+
+    /// Λ at a = cot θ > 0 given directly (no rounding of u = a/√(1 + a²) near the normal), by
+    /// the Smith integral for every γ: 2 I(a)/a. Same accuracy as [`Ndf::lambda`]; it is what
+    /// [`crate::fast::gtr::Gtr`] fits.
+    pub fn lambda_cot(&self, a: f64) -> f64 {
+        2.0 * self.smith(a) / a
+    }
+
     /// I(a) of [`crate::smith`] for this NDF.
     fn smith(&self, a: f64) -> f64 {
+        // P22 over r ≥ a peaks at r = max(a, r*), r*² = ((γ − 2)α² − γ)/2 (d ln P22/d r² =
+        // (−2r² + (γ−2)α² − γ)/((1+r²)(r²+α²)); r* = 0 for α ≤ 1).
+        let a2 = self.alpha * self.alpha;
+        let r_star2 = (0.5 * ((self.gamma - 2.0) * a2 - self.gamma)).max(0.0);
+        let peak2 = (a * a).max(r_star2);
+        let front = self.p22_r2(peak2);
+        if front < 1e-250 && a.is_finite() {
+            // For large γ, P22 may be tiny or subnormal everywhere on r ≥ a (which would cost
+            // relative accuracy): integrate P(r)/P(peak) ≤ 1 and restore P(peak) in logarithms.
+            let ln_front = self.ln_p22_r2(peak2);
+            let scaled = smith_integral(
+                |d| {
+                    let r2 = (a + d) * (a + d);
+                    // P22 ~ r⁻⁴ has long vanished where r² overflows.
+                    if r2 == f64::INFINITY {
+                        return 0.0;
+                    }
+                    (self.ln_p22_r2(r2) - ln_front).exp()
+                },
+                a,
+                a + self.alpha,
+            );
+            return (scaled.ln() + ln_front).exp();
+        }
         smith_integral(
             |d| {
                 let r = a + d;

@@ -1,7 +1,9 @@
 //! The fast paths against the exact f64 paths (the bounds stated in `fast`'s docs).
 
 use microfacet::fast::{beckmann, ggx};
-use microfacet::{Beckmann, Ggx, Microsurface, Ndf, Stretched, UnitSlopes, Vec3};
+use microfacet::{
+    Beckmann, DoubleGgx, Exponential, Ggx, Gtr, Microsurface, Ndf, Stretched, UnitSlopes, Vec3,
+};
 
 fn grid() -> Vec<(f64, f64)> {
     let mut v = Vec::new();
@@ -135,4 +137,224 @@ fn ggx_fast_vndf_is_the_visible_distribution() {
             assert!((a[k] - b[k] as f64).abs() < 1e-6);
         }
     }
+}
+
+/// Required accuracy of the fitted fast paths (issue 5): f64 and f32.
+const FIT_TOL_F64: f64 = 1e-7;
+const FIT_TOL_F32: f64 = 2e-6;
+
+/// Log-spaced points from `lo` to `hi`, with an irrational stride so they fall between nodes.
+fn logspace(lo: f64, hi: f64, n: usize) -> impl Iterator<Item = f64> {
+    let (a, b) = (lo.ln(), hi.ln());
+    (0..n).map(move |i| (a + (b - a) * ((i as f64 * 0.618_033_988_749_895) % 1.0)).exp())
+}
+
+/// Relative error where the reference is a normal number, absolute (scaled) below.
+fn rel_or_abs(got: f64, want: f64) -> f64 {
+    rel_above(got, want, 1e-300)
+}
+
+/// Relative error where |want| ≥ `floor`, absolute in units of `floor` below.
+fn rel_above(got: f64, want: f64, floor: f64) -> f64 {
+    if want.abs() < floor {
+        (got - want).abs() / floor
+    } else {
+        rel(got, want)
+    }
+}
+
+/// The (u, α) grid of the renderer-facing functions, u from 1e-6 to 1 − 1e-12, α from 1e-3
+/// to 10, plus the f32 check at the f32-rounded inputs; returns (f64, f32) worst errors.
+fn check_u_alpha(
+    fast64: impl Fn(f64, f64) -> [f64; 3],
+    fast32: impl Fn(f32, f32) -> [f32; 3],
+    exact: impl Fn(f64, f64) -> [f64; 3],
+) -> (f64, f64) {
+    let (mut e64, mut e32) = (0.0f64, 0.0f64);
+    for alpha in logspace(1e-3, 10.0, 25) {
+        for j in 0..120 {
+            let u = if j < 60 {
+                10f64.powf(-6.0 + 6.0 * j as f64 / 60.0)
+            } else {
+                1.0 - 10f64.powf(-0.5 - 11.5 * (j - 60) as f64 / 60.0)
+            };
+            let want = exact(u, alpha);
+            for (g, w) in fast64(u, alpha).iter().zip(want) {
+                e64 = e64.max(rel_or_abs(*g, w));
+            }
+            let (u32_, a32) = (u as f32, alpha as f32);
+            if u32_ < 1.0 {
+                let want = exact(u32_ as f64, a32 as f64);
+                for (g, w) in fast32(u32_, a32).iter().zip(want) {
+                    // Values below f32's normal range are compared absolutely.
+                    if w.abs() > 1e-37 {
+                        e32 = e32.max(rel(*g as f64, w));
+                    }
+                }
+            }
+        }
+    }
+    (e64, e32)
+}
+
+#[test]
+fn double_ggx_fast_lambda_over_the_whole_domain() {
+    use microfacet::fast::double_ggx as f;
+    // Λ(x) for x from 1e-40 (normal incidence) to 1e40 (grazing), against the exact Bessel form.
+    let mut ex = 0.0f64;
+    for x in logspace(1e-40, 1e40, 200_000) {
+        let want = 0.5 * microfacet::special::bessel_k_sum_m1(x);
+        ex = ex.max(rel(f::lambda_x(x), want));
+    }
+    let n = |a: f64| DoubleGgx::new(a).unwrap();
+    let (e64, e32) = check_u_alpha(
+        |u, a| [f::lambda(u, a), f::sigma(-u, a), f::g1(u, a)],
+        |u, a| [f::lambda(u, a), f::sigma(-u, a), f::g1(u, a)],
+        |u, a| [n(a).lambda(u), n(a).sigma(-u), n(a).g1(u)],
+    );
+    println!("Double GGX fast: Λ(x) {ex:.2e}; (u, α) grid f64 {e64:.2e}, f32 {e32:.2e}");
+    assert!(ex <= FIT_TOL_F64 && e64 <= FIT_TOL_F64, "{ex} {e64}");
+    assert!(e32 <= FIT_TOL_F32, "{e32}");
+    // Edges: u = 0, 1, below the horizon, NaN.
+    assert_eq!(f::lambda(1.0, 0.3), 0.0);
+    assert_eq!(f::lambda(0.0, 0.3), f64::INFINITY);
+    assert!(rel(f::sigma(0.0, 0.3), n(0.3).sigma(0.0)) < 1e-15);
+    assert!(rel(f::sigma(1e-200, 0.3), n(0.3).sigma(0.0)) < 1e-15);
+    assert!(rel(f::sigma(-1.0, 0.3), 0.0) == 0.0 && rel(f::sigma(1.0, 0.3), 1.0) == 0.0);
+    assert!(f::lambda(f64::NAN, 0.3).is_nan() && f::sigma(f64::NAN, 0.3).is_nan());
+    assert!(rel(f::g2(0.3, 0.7, 0.4), n(0.4).g2(0.3, 0.7)) < FIT_TOL_F64);
+}
+
+#[test]
+fn exponential_fast_lambda_over_the_whole_domain() {
+    use microfacet::fast::exponential as f;
+    // Λ(z) for z from 2e-6 to 740, against the exact path at u = 1/√2 (cot θ = 1), α = 2/z.
+    let mut ez = 0.0f64;
+    for z in logspace(2e-6, 740.0, 4000) {
+        let want = Exponential::new(2.0 / z)
+            .unwrap()
+            .lambda(std::f64::consts::FRAC_1_SQRT_2);
+        ez = ez.max(rel_or_abs(f::lambda_z(z), want));
+    }
+    let n = |a: f64| Exponential::new(a).unwrap();
+    let (e64, e32) = check_u_alpha(
+        |u, a| [f::lambda(u, a), f::sigma(-u, a), f::g1(u, a)],
+        |u, a| [f::lambda(u, a), f::sigma(-u, a), f::g1(u, a)],
+        |u, a| [n(a).lambda(u), n(a).sigma(-u), n(a).g1(u)],
+    );
+    println!("Exponential fast: Λ(z) {ez:.2e}; (u, α) grid f64 {e64:.2e}, f32 {e32:.2e}");
+    assert!(ez <= FIT_TOL_F64 && e64 <= FIT_TOL_F64, "{ez} {e64}");
+    assert!(e32 <= FIT_TOL_F32, "{e32}");
+    assert_eq!(f::lambda(1.0, 0.3), 0.0);
+    assert_eq!(f::lambda_z(1e4), 0.0);
+    assert_eq!(f::lambda(0.0, 0.3), f64::INFINITY);
+    assert!(rel(f::sigma(0.0, 0.3), n(0.3).sigma(0.0)) < 1e-15);
+    assert!(rel(f::sigma(-1e-200, 0.3), n(0.3).sigma(0.0)) < 1e-15);
+    assert!(f::lambda(f64::NAN, 0.3).is_nan() && f::sigma(f64::NAN, 0.3).is_nan());
+    assert!(rel(f::g2(0.3, 0.7, 0.4), n(0.4).g2(0.3, 0.7)) < FIT_TOL_F64);
+}
+
+#[test]
+fn gtr_fast_lambda_over_the_whole_domain() {
+    use microfacet::fast::gtr::Gtr as FastGtr;
+    let mut worst = 0.0f64;
+    let mut worst32 = 0.0f64;
+    for alpha in [1e-3, 0.05, 0.3, 0.9, 1.0, 2.5, 1e3] {
+        for gamma in [0.1, 0.5, 1.0, 1.5, 2.0, 3.0, 10.0, 100.0] {
+            let fast = FastGtr::new(alpha, gamma).unwrap();
+            let exact = Gtr::new(alpha, gamma).unwrap();
+            let mut e = 0.0f64;
+            // cot θ over 80 decades (the table and both extrapolations).
+            // (Relative where Λ > 1e-280, the documented bound; GTR's Λ underflows for large γ.)
+            let r = |x: f64, y: f64| rel_above(x, y, 1e-280);
+            for a in logspace(1e-40, 1e40, 300) {
+                e = e.max(r(fast.lambda_cot(a), exact.lambda_cot(a)));
+            }
+            // u, σ on both sides, G1, and f32.
+            for u in logspace(1e-6, 1.0, 60).chain(logspace(1e-12, 0.5, 40).map(|d| 1.0 - d)) {
+                e = e
+                    .max(r(fast.lambda(u), exact.lambda(u)))
+                    .max(r(fast.sigma(u), exact.sigma(u)))
+                    .max(r(fast.sigma(-u), exact.sigma(-u)))
+                    .max(r(fast.g1(u), exact.g1(u)));
+                let u32_ = u as f32;
+                if u32_ < 1.0 {
+                    let want = exact.lambda(u32_ as f64);
+                    if want > 1e-37 {
+                        worst32 = worst32.max(rel(fast.lambda(u32_) as f64, want));
+                    }
+                }
+            }
+            assert!(e <= FIT_TOL_F64, "α = {alpha}, γ = {gamma}: {e:e}");
+            worst = worst.max(e);
+        }
+    }
+    println!("GTR fast: f64 {worst:.2e}, f32 {worst32:.2e}");
+    assert!(worst32 <= FIT_TOL_F32, "{worst32}");
+    let f = FastGtr::new(0.3, 1.5).unwrap();
+    assert_eq!(f.lambda(1.0), 0.0);
+    assert_eq!(f.lambda(0.0), f64::INFINITY);
+    assert!(f.lambda(f64::NAN).is_nan() && f.sigma(f64::NAN).is_nan());
+    assert!(FastGtr::new(0.0, 1.5).is_err() && FastGtr::new(0.3, f64::NAN).is_err());
+}
+
+/// The fitted fast paths against every mpmath value of Λ, σ and G1 in the reference files.
+#[test]
+fn fitted_fast_paths_against_mpmath() {
+    use microfacet::fast::{double_ggx as dg, exponential as ex, gtr::Gtr as FastGtr};
+    use serde_json::Value;
+    let dir = concat!(env!("CARGO_MANIFEST_DIR"), "/tests/data");
+    let num = |v: &Value, k: &str| -> Option<f64> {
+        match v.get(k)? {
+            Value::String(s) => s.parse().ok(),
+            Value::Number(n) => n.as_f64(),
+            _ => None,
+        }
+    };
+    let (mut n, mut worst) = (0usize, 0.0f64);
+    for entry in std::fs::read_dir(dir).unwrap() {
+        let path = entry.unwrap().path();
+        let name = path.file_name().unwrap().to_string_lossy().to_string();
+        if !(name.starts_with("extra-") || name == "reference.json") {
+            continue;
+        }
+        let json: Value = serde_json::from_str(&std::fs::read_to_string(&path).unwrap()).unwrap();
+        for rec in json["records"].as_array().unwrap() {
+            let (ndf, q) = (
+                rec["ndf"].as_str().unwrap(),
+                rec["quantity"].as_str().unwrap(),
+            );
+            let (a, u) = (
+                num(rec, "alpha").unwrap(),
+                num(rec, "u").unwrap_or(f64::NAN),
+            );
+            let got = match (ndf, q) {
+                ("double_ggx", "Lambda") => dg::lambda(u, a),
+                ("double_ggx", "sigma") => dg::sigma(u, a),
+                ("double_ggx", "G1") => dg::g1(u, a),
+                ("exponential", "Lambda") => ex::lambda(u, a),
+                ("exponential", "sigma") => ex::sigma(u, a),
+                ("exponential", "G1") => ex::g1(u, a),
+                ("gtr", "Lambda" | "sigma" | "G1") => {
+                    let g = FastGtr::new(a, num(rec, "gamma").unwrap()).unwrap();
+                    match q {
+                        "Lambda" => g.lambda(u),
+                        "sigma" => g.sigma(u),
+                        _ => g.g1(u),
+                    }
+                }
+                _ => continue,
+            };
+            let want = rec["f64"].as_f64().unwrap();
+            let e = rel_or_abs(got, want);
+            assert!(
+                e <= FIT_TOL_F64,
+                "{ndf} {q} α={a} u={u}: {got:e} vs {want:e}"
+            );
+            worst = worst.max(e);
+            n += 1;
+        }
+    }
+    println!("{n} mpmath values, worst relative error {worst:.2e}");
+    assert!(n > 500, "{n}");
 }

@@ -10,6 +10,35 @@
 
 use std::ops::{Add, Div, Mul, Neg, Sub};
 
+pub mod double_ggx;
+pub mod exponential;
+pub mod fit;
+pub mod gtr;
+#[rustfmt::skip]
+mod tables;
+
+/// √π
+const SQRT_PI: f64 = 1.772_453_850_905_516;
+
+/// σ(u) on [−1, 1] from Λ on (0, 1]: u(1 + Λ(u)) for u > 0, |u| Λ(|u|) for u < 0 (Λ(u)u = σ(−u)),
+/// σ(0) + u/2 near u = 0 (where uΛ(u) → σ(0) = `s0` but 0 · ∞ would be NaN). NaN stays NaN.
+#[inline(always)]
+fn sigma_from_lambda(u: f64, s0: f64, lambda: impl Fn(f64) -> f64) -> f64 {
+    // Below 1e-150, σ(u) = σ(0) + u/2 + O(u²) (σ(u) − σ(−u) = u) is exact to double precision,
+    // and uΛ(u) would overflow in Λ first.
+    if u.abs() < 1e-150 {
+        s0 + 0.5 * u
+    } else if u > 0.0 {
+        let u = u.min(1.0);
+        u + u * lambda(u)
+    } else if u < 0.0 {
+        let v = (-u).min(1.0);
+        v * lambda(v)
+    } else {
+        u
+    }
+}
+
 /// The floating-point operations the fast paths need; implemented for f32 and f64.
 pub trait Real:
     Copy
@@ -32,6 +61,10 @@ pub trait Real:
     /// Depth of that continued fraction (error below the precision from CF_FROM on).
     const CF_DEPTH: usize;
     fn from_usize(n: usize) -> Self;
+    /// Widening to f64 (exact).
+    fn to_f64(self) -> f64;
+    /// Rounding from f64.
+    fn from_f64(x: f64) -> Self;
     fn sqrt(self) -> Self;
     fn exp(self) -> Self;
     fn erfc(self) -> Self;
@@ -47,6 +80,14 @@ macro_rules! real {
             #[inline(always)]
             fn from_usize(n: usize) -> Self {
                 n as $t
+            }
+            #[inline(always)]
+            fn to_f64(self) -> f64 {
+                self as f64
+            }
+            #[inline(always)]
+            fn from_f64(x: f64) -> Self {
+                x as $t
             }
             const ZERO: Self = 0.0;
             const ONE: Self = 1.0;

@@ -1,0 +1,130 @@
+//! Piecewise polynomials on octaves: the tables behind the fast Λ of the NDFs without a cheap
+//! closed form.
+//!
+//! A table covers x ∈ [2^k0, 2^k1); every octave [2^e, 2^{e+1}) is cut into 2^m equal segments,
+//! and on each segment the function is the polynomial Σ c_j s^j of degree N − 1 in
+//! s = 2(x − x₀)/h − 1 ∈ [−1, 1) (x₀ the segment's start, h its width). The segment and s come
+//! from the bits of x (no logarithm, no search): the exponent and the top m mantissa bits
+//! index the segment, and x − x₀ is exact.
+//!
+//! Tables are built by Chebyshev interpolation ([`fit_octaves`]): at N Chebyshev points of each
+//! segment, converted to the monomial basis in s (|s| ≤ 1 keeps that conversion well
+//! conditioned for N ≤ 12). The fits of Double GGX and the Exponential NDF are generated once
+//! by `examples/gen_fast_tables.rs` into `tables.rs`; GTR's are built per (α, γ) at run time.
+
+/// Evaluates the table `coef` (first octave 2^k0, 2^m segments per octave) at x.
+///
+/// The caller guarantees 2^k0 ≤ x < 2^{k0 + coef.len()/2^m}; outside, a wrong segment (or,
+/// past the end, an index panic) would be used, so every caller range-checks first.
+#[inline(always)]
+pub fn eval<const N: usize>(coef: &[[f64; N]], k0: i32, m: u32, x: f64) -> f64 {
+    let bits = x.to_bits();
+    let shift = 52 - m;
+    let idx = ((bits >> shift) - (((1023 + k0) as u64) << m)) as usize;
+    let x0 = f64::from_bits(bits & !((1u64 << shift) - 1));
+    // 2/h = 2^{1 + m − e} for x ∈ [2^e, 2^{e+1}); its biased exponent is 2047 + m − E.
+    let big_e = bits >> 52;
+    let two_over_h = f64::from_bits((2047 + m as u64 - big_e) << 52);
+    let s = (x - x0) * two_over_h - 1.0;
+    horner(&coef[idx], s)
+}
+
+/// Σ c_j s^j.
+#[inline(always)]
+pub fn horner<const N: usize>(c: &[f64; N], s: f64) -> f64 {
+    let mut acc = c[N - 1];
+    let mut j = N - 1;
+    while j > 0 {
+        j -= 1;
+        acc = acc * s + c[j];
+    }
+    acc
+}
+
+/// Chebyshev interpolation of `f` on every segment of [2^k0, 2^k1) (2^m segments per octave),
+/// in the monomial basis of [`eval`].
+pub fn fit_octaves<const N: usize>(
+    k0: i32,
+    k1: i32,
+    m: u32,
+    mut f: impl FnMut(f64) -> f64,
+) -> Vec<[f64; N]> {
+    let per = 1usize << m;
+    let mut out = Vec::with_capacity((k1 - k0) as usize * per);
+    for e in k0..k1 {
+        let lo = 2f64.powi(e);
+        let h = lo / per as f64;
+        for j in 0..per {
+            let x0 = lo + j as f64 * h;
+            out.push(chebyshev_fit(|s| f(x0 + 0.5 * (s + 1.0) * h)));
+        }
+    }
+    out
+}
+
+/// The degree N − 1 interpolant of `g` on [−1, 1] at the Chebyshev points of the first kind,
+/// as monomial coefficients.
+pub fn chebyshev_fit<const N: usize>(mut g: impl FnMut(f64) -> f64) -> [f64; N] {
+    use std::f64::consts::PI;
+    let nodes: Vec<f64> = (0..N)
+        .map(|k| (PI * (k as f64 + 0.5) / N as f64).cos())
+        .collect();
+    let values: Vec<f64> = nodes.iter().map(|&s| g(s)).collect();
+    // Chebyshev coefficients a_j = (2/N) Σ_k f(s_k) T_j(s_k) (halved for j = 0).
+    let mut a = [0.0; N];
+    for (j, aj) in a.iter_mut().enumerate() {
+        let sum: f64 = (0..N)
+            .map(|k| values[k] * (PI * j as f64 * (k as f64 + 0.5) / N as f64).cos())
+            .sum();
+        *aj = if j == 0 { 1.0 } else { 2.0 } * sum / N as f64;
+    }
+    // Σ a_j T_j(s) in monomials: T_{j+1} = 2 s T_j − T_{j−1}.
+    let mut out = [0.0; N];
+    let mut t_prev = [0.0; N];
+    let mut t_cur = [0.0; N];
+    t_prev[0] = 1.0; // T_0
+    if N > 1 {
+        t_cur[1] = 1.0; // T_1
+    }
+    for (i, c) in out.iter_mut().enumerate() {
+        *c += a[0] * t_prev[i];
+    }
+    for &aj in a.iter().skip(1) {
+        for (i, c) in out.iter_mut().enumerate() {
+            *c += aj * t_cur[i];
+        }
+        let mut next = [0.0; N];
+        for i in 0..N {
+            next[i] = -t_prev[i] + if i > 0 { 2.0 * t_cur[i - 1] } else { 0.0 };
+        }
+        t_prev = t_cur;
+        t_cur = next;
+    }
+    out
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn reproduces_a_smooth_function_and_indexes_segments_from_bits() {
+        let f = |x: f64| x.ln() * x.sqrt();
+        let (k0, k1, m) = (-5, 7, 2);
+        let t = fit_octaves::<9>(k0, k1, m, f);
+        assert_eq!(t.len(), 12 * 4);
+        let mut worst = 0.0f64;
+        let mut x = 2f64.powi(k0);
+        while x < 2f64.powi(k1) {
+            let e = (eval(&t, k0, m, x) - f(x)).abs() / f(x).abs().max(1e-3);
+            worst = worst.max(e);
+            x *= 1.001_234;
+        }
+        assert!(worst < 1e-9, "{worst}");
+        // Segment ends: both sides of a boundary agree with f.
+        let b = 2.0f64 * 1.25;
+        for x in [b, f64::from_bits(b.to_bits() - 1)] {
+            assert!((eval(&t, k0, m, x) - f(x)).abs() < 1e-9);
+        }
+    }
+}
