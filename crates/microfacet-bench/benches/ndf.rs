@@ -165,6 +165,7 @@ fn main() {
             time(big, |k| fb::lambda(black_box(i.u[k]), i.alpha[k])),
         ),
     ];
+    let fast_ggx_lambda_64 = pairs[1].2;
     for (name, c_t, t) in pairs {
         row(&format!("us fast {name} f64"), t, Some(("C f64", c_t)));
     }
@@ -203,10 +204,14 @@ fn main() {
             time(big, |k| fb::lambda(black_box(u32s[k]), a32s[k]) as f64),
         ),
     ];
+    let fast_ggx_lambda_32 = f32_pairs[1].2;
     for (name, c_t, t) in f32_pairs {
         row(&format!("C  {name} f32"), c_t, None);
         row(&format!("us fast {name} f32"), t, Some(("C f32", c_t)));
     }
+
+    fitted_fast_paths(&i, big, fast_ggx_lambda_64, fast_ggx_lambda_32, ggx_l);
+    batches(&i);
 
     // Every other NDF against our GGX Λ.
     let base = Some(("our GGX Λ", ggx_l));
@@ -266,4 +271,181 @@ fn main() {
             base,
         );
     }
+}
+
+/// Double GGX, Exponential and GTR fast Λ, σ(−u), G1 in f64 and f32, against our fast GGX Λ
+/// in the same precision (and our exact GGX Λ). GTR: 64 prepared materials with random
+/// (α, γ), the call's material chosen by the input index.
+fn fitted_fast_paths(i: &Inputs, calls: usize, ggx64: f64, ggx32: f64, exact_ggx: f64) {
+    use microfacet::fast::{double_ggx as dg, exponential as ex, gtr::Gtr as FastGtr};
+    println!();
+    println!("fitted fast paths (per call; ratio to our fast GGX Λ of the same precision, and to our exact GGX Λ)");
+    let (u32s, a32s): (Vec<f32>, Vec<f32>) = (
+        i.u.iter().map(|&x| x as f32).collect(),
+        i.alpha.iter().map(|&x| x as f32).collect(),
+    );
+    let start = Instant::now();
+    let materials: Vec<FastGtr> = (0..64)
+        .map(|k| FastGtr::new(i.alpha[k], i.gamma[k]).unwrap())
+        .collect();
+    let build_ms = start.elapsed().as_secs_f64() * 1e3 / 64.0;
+    let fit_row = |name: &str, t64: f64, t32: f64| {
+        println!(
+            "{:44} {t64:10.1} ns   {:6.2}× fast GGX Λ f64  {:6.2}× exact GGX Λ",
+            format!("us fast {name} f64"),
+            t64 / ggx64,
+            t64 / exact_ggx
+        );
+        println!(
+            "{:44} {t32:10.1} ns   {:6.2}× fast GGX Λ f32",
+            format!("us fast {name} f32"),
+            t32 / ggx32
+        );
+    };
+    macro_rules! both {
+        ($f64:expr, $f32:expr) => {
+            (time(calls, $f64), time(calls, $f32))
+        };
+    }
+    let m = |k: usize| &materials[k % 64];
+    let rows: [(&str, (f64, f64)); 9] = [
+        (
+            "Double GGX Λ",
+            both!(
+                |k| dg::lambda(black_box(i.u[k]), i.alpha[k]),
+                |k| dg::lambda(black_box(u32s[k]), a32s[k]) as f64
+            ),
+        ),
+        (
+            "Double GGX σ(−u)",
+            both!(
+                |k| dg::sigma(-black_box(i.u[k]), i.alpha[k]),
+                |k| dg::sigma(-black_box(u32s[k]), a32s[k]) as f64
+            ),
+        ),
+        (
+            "Double GGX G1",
+            both!(
+                |k| dg::g1(black_box(i.u[k]), i.alpha[k]),
+                |k| dg::g1(black_box(u32s[k]), a32s[k]) as f64
+            ),
+        ),
+        (
+            "Exponential Λ",
+            both!(
+                |k| ex::lambda(black_box(i.u[k]), i.alpha[k]),
+                |k| ex::lambda(black_box(u32s[k]), a32s[k]) as f64
+            ),
+        ),
+        (
+            "Exponential σ(−u)",
+            both!(
+                |k| ex::sigma(-black_box(i.u[k]), i.alpha[k]),
+                |k| ex::sigma(-black_box(u32s[k]), a32s[k]) as f64
+            ),
+        ),
+        (
+            "Exponential G1",
+            both!(
+                |k| ex::g1(black_box(i.u[k]), i.alpha[k]),
+                |k| ex::g1(black_box(u32s[k]), a32s[k]) as f64
+            ),
+        ),
+        (
+            "GTR Λ (64 materials)",
+            both!(
+                |k| m(k).lambda(black_box(i.u[k])),
+                |k| m(k).lambda(black_box(u32s[k])) as f64
+            ),
+        ),
+        (
+            "GTR σ(−u) (64 materials)",
+            both!(
+                |k| m(k).sigma(-black_box(i.u[k])),
+                |k| m(k).sigma(-black_box(u32s[k])) as f64
+            ),
+        ),
+        (
+            "GTR G1 (64 materials)",
+            both!(
+                |k| m(k).g1(black_box(i.u[k])),
+                |k| m(k).g1(black_box(u32s[k])) as f64
+            ),
+        ),
+    ];
+    for (name, (t64, t32)) in rows {
+        fit_row(name, t64, t32);
+    }
+    println!(
+        "{:44} {build_ms:10.1} ms per material (mean of 64, α ∈ [0.05, 1], γ ∈ [0.5, 3])",
+        "GTR fast construction"
+    );
+}
+
+/// 10⁶-element slices: the scalar fast path in a plain loop, the slice function, and the
+/// slice function on every core (rayon), per element.
+fn batches(i: &Inputs) {
+    use microfacet::fast::{batch, double_ggx as dg, exponential as ex, gtr::Gtr as FastGtr};
+    use microfacet::fast::{beckmann as fb, ggx as fg};
+    const LEN: usize = 1_000_000;
+    let u: Vec<f64> = (0..LEN)
+        .map(|k| i.u[k % N] * (1.0 - 1e-9 * (k / N) as f64))
+        .collect();
+    let a: Vec<f64> = (0..LEN).map(|k| i.alpha[(k * 7 + 3) % N]).collect();
+    let mut out = vec![0.0; LEN];
+    let threads = rayon::current_num_threads();
+    println!();
+    println!("slices of 10⁶ (ns per element): scalar loop | slice fn (× loop) | rayon on {threads} threads (× slice fn)");
+    let per = |f: &mut dyn FnMut(&mut [f64])| -> f64 {
+        let mut runs = Vec::new();
+        let mut o = vec![0.0; LEN];
+        for _ in 0..11 {
+            let start = Instant::now();
+            f(&mut o);
+            black_box(&o);
+            runs.push(start.elapsed().as_secs_f64() * 1e9 / LEN as f64);
+        }
+        runs.sort_by(f64::total_cmp);
+        runs[runs.len() / 2]
+    };
+    // The loop calls the scalar function directly (inlined, as in a user's loop), not
+    // through a pointer.
+    macro_rules! case {
+        ($name:expr, $scalar:path, $slice:path) => {{
+            let t_loop = per(&mut |o| {
+                for k in 0..LEN {
+                    o[k] = $scalar(u[k], a[k]);
+                }
+            });
+            let t_slice = per(&mut |o| $slice(&u, &a, o));
+            let t_par = per(&mut |o| batch::par::map(&u, &a, o, $slice));
+            println!(
+                "{:34} {t_loop:7.2} | {t_slice:7.2} ({:5.2}×) | {t_par:7.2} ({:5.2}×)",
+                $name,
+                t_loop / t_slice,
+                t_slice / t_par
+            );
+        }};
+    }
+    case!("GGX D", fg::d, batch::ggx_d);
+    case!("GGX Λ", fg::lambda, batch::ggx_lambda);
+    case!("GGX G1", fg::g1, batch::ggx_g1);
+    case!("Beckmann D", fb::d, batch::beckmann_d);
+    case!("Double GGX Λ", dg::lambda, batch::double_ggx_lambda);
+    case!("Exponential Λ", ex::lambda, batch::exponential_lambda);
+    let g = FastGtr::new(0.3, 1.5).unwrap();
+    let t_loop = per(&mut |o| {
+        for k in 0..LEN {
+            o[k] = g.lambda(u[k]);
+        }
+    });
+    let t_slice = per(&mut |o| batch::gtr_lambda(&g, &u, o));
+    let t_par = per(&mut |o| batch::par::gtr_lambda(&g, &u, o));
+    println!(
+        "{:34} {t_loop:7.2} | {t_slice:7.2} ({:5.2}×) | {t_par:7.2} ({:5.2}×)",
+        "GTR Λ (α 0.3, γ 1.5)",
+        t_loop / t_slice,
+        t_slice / t_par
+    );
+    black_box(&mut out);
 }

@@ -31,7 +31,7 @@ use crate::ndf::Ndf;
 /// Polynomial coefficients per segment (degree 8).
 const N: usize = 9;
 /// 2^M segments per octave.
-const M: u32 = 2;
+pub(crate) const M: u32 = 2;
 /// The table reaches 2^SPAN beyond the outermost feature scale on each side.
 const SPAN: i32 = 18;
 /// Below this Λ is treated as underflowed (see the module docs).
@@ -94,6 +94,11 @@ impl Gtr {
     /// γ.
     pub fn gamma(&self) -> f64 {
         self.gamma
+    }
+
+    /// (first octave, table start, table end, ln Λ coefficients) for the slice functions.
+    pub(crate) fn table(&self) -> (i32, f64, f64, &[[f64; N]]) {
+        (self.k0, self.lo, self.hi, &self.coef)
     }
 
     /// Λ at a = cot θ ≥ 0 (+∞ at a = 0, 0 at a = +∞).

@@ -1,0 +1,257 @@
+//! Slices: the fast paths over `&[f64]` inputs into `&mut [f64]` outputs, written so that the
+//! compiler vectorises them (no branches in the main loop, an exponential that is plain
+//! arithmetic on the bits, table lookups as gathers), and with the `rayon` feature, the same
+//! over all cores (`par_*`).
+//!
+//! Every function takes `u` and `alpha` of equal length and `out` at least as long (it panics
+//! otherwise, as slice indexing does); element i of `out` is the scalar fast path at
+//! (u[i], alpha[i]) to within the scalar path's stated accuracy (tests/fast.rs compares them).
+//! Lanes outside the vectorised formula's range (below-horizon u, Λ's asymptotic ends) are
+//! redone by the scalar path after each chunk, so every u ∈ [0, 1] is exact-as-scalar.
+//!
+//! Throughput and the scalar-loop comparison: BENCHMARKS.md.
+
+use super::tables::{DGGX, DGGX_K0, DGGX_K1, DGGX_M};
+use super::tables::{EXPONENTIAL, EXPONENTIAL_K0, EXPONENTIAL_K1, EXPONENTIAL_M};
+use super::{beckmann, double_ggx, exponential, fit, ggx};
+use std::f64::consts::PI;
+
+/// Elements per chunk: a multiple of every SIMD width (2 to 8 doubles).
+const LANES: usize = 8;
+
+/// e^x for x ∈ [−708, 709] in arithmetic only (so that it vectorises): x = n ln 2 + r with n
+/// from the round-to-nearest of x log₂e + 1.5·2^52, |r| ≤ ln2/2, e^r by its Taylor series to
+/// r¹³ (remainder below 2e-16), 2^n from n's bits. Relative error ≤ 4e-16 (tests/fast.rs).
+/// Outside that range the result is e^{±708/709} and callers select.
+#[inline(always)]
+pub fn exp_arith(x: f64) -> f64 {
+    const LN2_HI: f64 = 6.931_471_803_691_238e-1;
+    const LN2_LO: f64 = 1.908_214_929_270_587_7e-10;
+    // 1.5·2^52: adding it rounds to an integer held in the low mantissa bits.
+    const MAGIC: f64 = 6_755_399_441_055_744.0;
+    let x = x.clamp(-708.0, 709.0);
+    let t = x * std::f64::consts::LOG2_E + MAGIC;
+    let n = t - MAGIC;
+    let r = (x - n * LN2_HI) - n * LN2_LO;
+    // Σ_{k≤13} r^k/k! by Horner on the reciprocal factorials.
+    const C: [f64; 14] = {
+        let mut c = [1.0; 14];
+        let mut k = 1;
+        while k < 14 {
+            c[k] = c[k - 1] / k as f64;
+            k += 1;
+        }
+        c
+    };
+    let mut p = C[13];
+    let mut k = 13;
+    while k > 0 {
+        k -= 1;
+        p = p * r + C[k];
+    }
+    // t's low bits hold n + 2^51; (n + 1023) lands in the exponent field.
+    let scale = f64::from_bits(t.to_bits().wrapping_add(1023) << 52);
+    p * scale
+}
+
+/// Runs `kernel` over chunks of [`LANES`] and then the tail; `fix(i)` reports whether lane i
+/// needs the scalar path, which `scalar` then supplies.
+#[inline(always)]
+fn chunks(
+    u: &[f64],
+    alpha: &[f64],
+    out: &mut [f64],
+    kernel: impl Fn(f64, f64) -> (f64, bool),
+    scalar: impl Fn(f64, f64) -> f64,
+) {
+    let n = u.len();
+    assert!(alpha.len() == n && out.len() >= n, "slice lengths differ");
+    let (u_c, u_t) = u.split_at(n - n % LANES);
+    let (a_c, a_t) = alpha.split_at(n - n % LANES);
+    let (o_c, o_t) = out[..n].split_at_mut(n - n % LANES);
+    for ((uc, ac), oc) in u_c
+        .chunks_exact(LANES)
+        .zip(a_c.chunks_exact(LANES))
+        .zip(o_c.chunks_exact_mut(LANES))
+    {
+        let mut bad = [false; LANES];
+        for l in 0..LANES {
+            let (v, b) = kernel(uc[l], ac[l]);
+            oc[l] = v;
+            bad[l] = b;
+        }
+        if bad.iter().any(|&b| b) {
+            for l in 0..LANES {
+                if bad[l] {
+                    oc[l] = scalar(uc[l], ac[l]);
+                }
+            }
+        }
+    }
+    for ((&uu, &aa), o) in u_t.iter().zip(a_t).zip(o_t) {
+        *o = scalar(uu, aa);
+    }
+}
+
+/// GGX D.
+pub fn ggx_d(u: &[f64], alpha: &[f64], out: &mut [f64]) {
+    chunks(
+        u,
+        alpha,
+        out,
+        |u, a| {
+            let a2 = a * a;
+            let t = (1.0 - u) * (1.0 + u) + u * u * a2;
+            let d = a2 / (PI * t * t);
+            (if u <= 0.0 { 0.0 } else { d }, false)
+        },
+        ggx::d,
+    );
+}
+
+/// GGX Λ.
+pub fn ggx_lambda(u: &[f64], alpha: &[f64], out: &mut [f64]) {
+    chunks(
+        u,
+        alpha,
+        out,
+        |u, a| (ggx::lambda(u, a), false),
+        ggx::lambda,
+    );
+}
+
+/// GGX G1.
+pub fn ggx_g1(u: &[f64], alpha: &[f64], out: &mut [f64]) {
+    chunks(u, alpha, out, |u, a| (ggx::g1(u, a), false), ggx::g1);
+}
+
+/// Beckmann D (0 where the exact D is below about 1e-300, as the scalar path).
+pub fn beckmann_d(u: &[f64], alpha: &[f64], out: &mut [f64]) {
+    chunks(
+        u,
+        alpha,
+        out,
+        |u, a| {
+            let a2 = a * a;
+            let u2 = u * u;
+            let x = (1.0 - u) * (1.0 + u) / (u2 * a2);
+            let d = exp_arith(-x) / (PI * a2 * u2 * u2);
+            // x > 708: e^{−x} leaves exp_arith's range; u ≤ 0 (or NaN): the scalar's answer.
+            (d, !(u > 0.0 && x <= 708.0))
+        },
+        beckmann::d,
+    );
+}
+
+/// The table lookup of [`fit::eval`] written for a lane (the index is clamped, so the load
+/// is always in bounds; out-of-range lanes are redone by the caller).
+#[inline(always)]
+fn table<const N: usize>(coef: &[[f64; N]], k0: i32, m: u32, x: f64) -> f64 {
+    let bits = x.to_bits();
+    let shift = 52 - m;
+    let idx =
+        ((bits >> shift).wrapping_sub(((1023 + k0) as u64) << m) as usize).min(coef.len() - 1);
+    let x0 = f64::from_bits(bits & !((1u64 << shift) - 1));
+    let two_over_h = f64::from_bits((2047 + m as u64).wrapping_sub(bits >> 52) << 52);
+    let s = (x - x0) * two_over_h - 1.0;
+    fit::horner(&coef[idx], s)
+}
+
+/// Double GGX Λ.
+pub fn double_ggx_lambda(u: &[f64], alpha: &[f64], out: &mut [f64]) {
+    let lo = 2f64.powi(DGGX_K0);
+    let hi = 2f64.powi(DGGX_K1);
+    chunks(
+        u,
+        alpha,
+        out,
+        |u, a| {
+            let x = 0.5 * a * a * ((1.0 - u) * (1.0 + u)) / (u * u);
+            (table(&DGGX, DGGX_K0, DGGX_M, x), !(x >= lo && x < hi))
+        },
+        double_ggx::lambda,
+    );
+}
+
+/// Exponential Λ.
+pub fn exponential_lambda(u: &[f64], alpha: &[f64], out: &mut [f64]) {
+    let lo = 2f64.powi(EXPONENTIAL_K0);
+    let hi = 2f64.powi(EXPONENTIAL_K1);
+    chunks(
+        u,
+        alpha,
+        out,
+        |u, a| {
+            let z = (u + u) / (a * ((1.0 - u) * (1.0 + u)).sqrt());
+            let v = table(&EXPONENTIAL, EXPONENTIAL_K0, EXPONENTIAL_M, z) * exp_arith(-z);
+            (v, !(z >= lo && z < hi))
+        },
+        exponential::lambda,
+    );
+}
+
+/// Λ of a prepared GTR material for every u (one α, γ).
+pub fn gtr_lambda(g: &super::gtr::Gtr, u: &[f64], out: &mut [f64]) {
+    let (k0, lo, hi, coef) = g.table();
+    let n = u.len();
+    assert!(out.len() >= n, "slice lengths differ");
+    let (u_c, u_t) = u.split_at(n - n % LANES);
+    let (o_c, o_t) = out[..n].split_at_mut(n - n % LANES);
+    for (uc, oc) in u_c.chunks_exact(LANES).zip(o_c.chunks_exact_mut(LANES)) {
+        let mut bad = [false; LANES];
+        for l in 0..LANES {
+            let u = uc[l];
+            let a = u / ((1.0 - u) * (1.0 + u)).sqrt();
+            let ln_lambda = table(coef, k0, super::gtr::M, a);
+            oc[l] = exp_arith(ln_lambda);
+            // Past exp_arith's range (Λ < e^{−708}) the scalar path answers.
+            bad[l] = !(a >= lo && a < hi && ln_lambda > -708.0);
+        }
+        if bad.iter().any(|&b| b) {
+            for l in 0..LANES {
+                if bad[l] {
+                    oc[l] = g.lambda(uc[l]);
+                }
+            }
+        }
+    }
+    for (&uu, o) in u_t.iter().zip(o_t) {
+        *o = g.lambda(uu);
+    }
+}
+
+/// The `par_*` forms: the same functions on every core (rayon), in pieces of 16 384.
+#[cfg(feature = "rayon")]
+pub mod par {
+    use rayon::prelude::*;
+
+    /// Elements per rayon task: large enough to hide the scheduling (~1 µs), small enough to
+    /// balance two to many cores on 10⁶ elements.
+    const PIECE: usize = 1 << 14;
+
+    /// Applies a slice function to matching pieces of (u, alpha, out) in parallel.
+    pub fn map(
+        u: &[f64],
+        alpha: &[f64],
+        out: &mut [f64],
+        f: impl Fn(&[f64], &[f64], &mut [f64]) + Sync,
+    ) {
+        assert!(
+            alpha.len() == u.len() && out.len() >= u.len(),
+            "slice lengths differ"
+        );
+        out[..u.len()]
+            .par_chunks_mut(PIECE)
+            .zip(u.par_chunks(PIECE).zip(alpha.par_chunks(PIECE)))
+            .for_each(|(o, (u, a))| f(u, a, o));
+    }
+
+    /// GTR Λ of one material over u, in parallel.
+    pub fn gtr_lambda(g: &crate::fast::gtr::Gtr, u: &[f64], out: &mut [f64]) {
+        assert!(out.len() >= u.len(), "slice lengths differ");
+        out[..u.len()]
+            .par_chunks_mut(PIECE)
+            .zip(u.par_chunks(PIECE))
+            .for_each(|(o, u)| super::gtr_lambda(g, u, o));
+    }
+}
