@@ -390,7 +390,8 @@ fn slices_match_the_scalar_paths() {
         alphas.push(1e-3 + 3.0 * ((s >> 3) % 1000) as f64 / 1000.0);
     }
     type Slice = fn(&[f64], &[f64], &mut [f64]);
-    let cases: [(&str, fn(f64, f64) -> f64, Slice); 6] = [
+    type Scalar = fn(f64, f64) -> f64;
+    let cases: [(&str, Scalar, Slice); 6] = [
         ("GGX D", ggx::d, batch::ggx_d),
         ("GGX Λ", ggx::lambda, batch::ggx_lambda),
         ("GGX G1", ggx::g1, batch::ggx_g1),
