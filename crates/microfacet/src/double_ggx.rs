@@ -43,6 +43,11 @@ impl DoubleGgx {
             alpha: check_alpha(alpha)?,
         })
     }
+
+    /// Without the range check (the fast paths' callers own α > 0).
+    pub(crate) fn raw(alpha: f64) -> Self {
+        DoubleGgx { alpha }
+    }
 }
 
 impl Ndf for DoubleGgx {

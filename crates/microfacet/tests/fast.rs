@@ -430,3 +430,41 @@ fn slices_match_the_scalar_paths() {
         }
     }
 }
+
+/// The rest of the f32/f64 surface: σ for GGX and Beckmann, D for Double GGX, Exponential and
+/// GTR, against the exact paths (f32 at the f32-rounded inputs).
+#[test]
+fn remaining_fast_quantities() {
+    use microfacet::fast::{beckmann as fb, double_ggx as dg, exponential as ex, gtr};
+    let (mut e64, mut e32) = (0.0f64, 0.0f64);
+    let m = gtr::Gtr::new(0.4, 1.3).unwrap();
+    let exact_m = Gtr::new(0.4, 1.3).unwrap();
+    for (u, a) in grid() {
+        for s in [u, -u] {
+            let (g, b) = (Ggx::new(a).unwrap(), Beckmann::new(a).unwrap());
+            e64 = e64.max(rel(ggx::sigma(s, a), g.sigma(s)));
+            e64 = e64.max(rel_or_abs(fb::sigma(s, a), b.sigma(s)));
+            let (s32, a32) = (s as f32, a as f32);
+            let g32 = Ggx::new(a32 as f64).unwrap();
+            e32 = e32.max(rel(ggx::sigma(s32, a32) as f64, g32.sigma(s32 as f64)));
+        }
+        let (dgx, exn) = (DoubleGgx::new(a).unwrap(), Exponential::new(a).unwrap());
+        e64 = e64.max(rel_or_abs(dg::d(u, a), dgx.d(u)));
+        let want = exn.d(u);
+        // Exponent 2 tan θ/α below 30: the stated bound (beyond, e^{−x} magnifies ulps of x).
+        if 2.0 * (1.0 - u * u).sqrt() / (u * a) < 30.0 {
+            e64 = e64.max(rel(ex::d(u, a), want));
+            let (u32_, a32) = (u as f32, a as f32);
+            let want32 = Exponential::new(a32 as f64).unwrap().d(u32_ as f64);
+            e32 = e32.max(rel(ex::d(u32_, a32) as f64, want32));
+        }
+        e64 = e64.max(rel(m.d(u), exact_m.d(u)));
+    }
+    println!("σ (GGX, Beckmann), D (Double GGX, Exponential, GTR): f64 {e64:.2e}, f32 {e32:.2e}");
+    assert!(e64 <= 1e-12, "{e64}");
+    assert!(e32 <= FIT_TOL_F32, "{e32}");
+    assert_eq!(ex::d(-0.3, 0.5), 0.0);
+    assert_eq!(ex::d(1e-300, 0.5), 0.0);
+    assert_eq!(dg::d(-0.3, 0.5), 0.0);
+    assert!(rel(ggx::sigma(0.0, 0.3), 0.15) < 1e-16);
+}

@@ -38,6 +38,14 @@ pub fn lambda_x(x: f64) -> f64 {
     0.5 * (s - 1.0)
 }
 
+/// D(u) (every u; 0 below the horizon): the exact closed form of [`crate::DoubleGgx`] (its
+/// E₁ continued fraction; ≤ 1e-13), rounded to F.
+#[inline]
+pub fn d<F: Real>(u: F, alpha: F) -> F {
+    use crate::Ndf;
+    F::from_f64(crate::DoubleGgx::raw(alpha.to_f64()).d(u.to_f64()))
+}
+
 /// Λ(u) for 0 ≤ u ≤ 1 (+∞ at u = 0, 0 at u = 1).
 #[inline]
 pub fn lambda<F: Real>(u: F, alpha: F) -> F {

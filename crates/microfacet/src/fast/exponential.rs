@@ -35,6 +35,23 @@ pub fn lambda_z(z: f64) -> f64 {
     (-z).exp() * series / (std::f64::consts::TAU * z).sqrt()
 }
 
+/// D(u) = 2 exp(−2 tan θ/α)/(π α² u⁴); 0 for u ≤ 0 and where e^{−2tan θ/α} underflows
+/// (relative error ≤ 1e-13 in f64 while the exponent is below 30, growing like ε·exponent).
+#[inline]
+pub fn d<F: Real>(u: F, alpha: F) -> F {
+    let (u, a) = (u.to_f64(), alpha.to_f64());
+    if u <= 0.0 {
+        return F::ZERO;
+    }
+    let u2 = u * u;
+    let x = 2.0 * ((1.0 - u) * (1.0 + u)).sqrt() / (u * a);
+    // e^{−x} is 0 past 745 (and u⁴ could underflow too: 0/0).
+    if x > 745.2 {
+        return F::ZERO;
+    }
+    F::from_f64(2.0 * (-x).exp() / (std::f64::consts::PI * a * a * u2 * u2))
+}
+
 /// Λ(u) for 0 ≤ u ≤ 1 (+∞ at u = 0, 0 at u = 1).
 #[inline]
 pub fn lambda<F: Real>(u: F, alpha: F) -> F {

@@ -51,6 +51,7 @@ pub struct Gtr {
     /// Λ ≈ K/a² above `hi`.
     k: f64,
     sigma0: f64,
+    exact: crate::Gtr,
 }
 
 impl Gtr {
@@ -83,6 +84,7 @@ impl Gtr {
             m: (exact.lambda_cot(lo) + 0.5) * lo,
             k: exact.lambda_cot(hi) * hi * hi,
             sigma0: exact.sigma(0.0),
+            exact,
         })
     }
 
@@ -115,6 +117,12 @@ impl Gtr {
         }
         let r = 1.0 / a;
         self.k * r * r
+    }
+
+    /// D(u) for every u: the exact closed form (≤ 1e-13), rounded to F.
+    #[inline]
+    pub fn d<F: Real>(&self, u: F) -> F {
+        F::from_f64(self.exact.d(u.to_f64()))
     }
 
     /// Λ(u) for 0 ≤ u ≤ 1.
