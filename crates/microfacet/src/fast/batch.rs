@@ -5,7 +5,7 @@
 //!
 //! Every function takes `u` and `alpha` of equal length and `out` at least as long (it panics
 //! otherwise, as slice indexing does); element i of `out` is the scalar fast path at
-//! (u[i], alpha[i]) to within the scalar path's stated accuracy (tests/fast.rs compares them).
+//! `(u[i], alpha[i])` to within the scalar path's stated accuracy (tests/fast.rs compares them).
 //! Lanes outside the vectorised formula's range (below-horizon u, Λ's asymptotic ends) are
 //! redone by the scalar path after each chunk, so every u ∈ [0, 1] is exact-as-scalar.
 //!
