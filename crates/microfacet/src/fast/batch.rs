@@ -143,20 +143,6 @@ pub fn beckmann_d(u: &[f64], alpha: &[f64], out: &mut [f64]) {
     );
 }
 
-/// The table lookup of [`fit::eval`] written for a lane (the index is clamped, so the load
-/// is always in bounds; out-of-range lanes are redone by the caller).
-#[inline(always)]
-fn table<const N: usize>(coef: &[[f64; N]], k0: i32, m: u32, x: f64) -> f64 {
-    let bits = x.to_bits();
-    let shift = 52 - m;
-    let idx =
-        ((bits >> shift).wrapping_sub(((1023 + k0) as u64) << m) as usize).min(coef.len() - 1);
-    let x0 = f64::from_bits(bits & !((1u64 << shift) - 1));
-    let two_over_h = f64::from_bits((2047 + m as u64).wrapping_sub(bits >> 52) << 52);
-    let s = (x - x0) * two_over_h - 1.0;
-    fit::horner(&coef[idx], s)
-}
-
 /// Double GGX Λ.
 pub fn double_ggx_lambda(u: &[f64], alpha: &[f64], out: &mut [f64]) {
     let lo = 2f64.powi(DGGX_K0);
@@ -167,7 +153,7 @@ pub fn double_ggx_lambda(u: &[f64], alpha: &[f64], out: &mut [f64]) {
         out,
         |u, a| {
             let x = 0.5 * a * a * ((1.0 - u) * (1.0 + u)) / (u * u);
-            (table(&DGGX, DGGX_K0, DGGX_M, x), !(x >= lo && x < hi))
+            (fit::eval(&DGGX, DGGX_K0, DGGX_M, x), !(x >= lo && x < hi))
         },
         double_ggx::lambda,
     );
@@ -183,7 +169,7 @@ pub fn exponential_lambda(u: &[f64], alpha: &[f64], out: &mut [f64]) {
         out,
         |u, a| {
             let z = (u + u) / (a * ((1.0 - u) * (1.0 + u)).sqrt());
-            let v = table(&EXPONENTIAL, EXPONENTIAL_K0, EXPONENTIAL_M, z) * exp_arith(-z);
+            let v = fit::eval(&EXPONENTIAL, EXPONENTIAL_K0, EXPONENTIAL_M, z) * exp_arith(-z);
             (v, !(z >= lo && z < hi))
         },
         exponential::lambda,
@@ -202,7 +188,7 @@ pub fn gtr_lambda(g: &super::gtr::Gtr, u: &[f64], out: &mut [f64]) {
         for l in 0..LANES {
             let u = uc[l];
             let a = u / ((1.0 - u) * (1.0 + u)).sqrt();
-            let ln_lambda = table(coef, k0, super::gtr::M, a);
+            let ln_lambda = fit::eval(coef, k0, super::gtr::M, a);
             oc[l] = exp_arith(ln_lambda);
             // Past exp_arith's range (Λ < e^{−708}) the scalar path answers.
             bad[l] = !(a >= lo && a < hi && ln_lambda > -708.0);

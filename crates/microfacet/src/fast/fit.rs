@@ -14,17 +14,19 @@
 
 /// Evaluates the table `coef` (first octave 2^k0, 2^m segments per octave) at x.
 ///
-/// The caller guarantees 2^k0 ≤ x < 2^{k0 + coef.len()/2^m}; outside, a wrong segment (or,
-/// past the end, an index panic) would be used, so every caller range-checks first.
+/// Meaningful for 2^k0 ≤ x < 2^{k0 + coef.len()/2^m}; outside, the index is clamped (the load
+/// stays in bounds, so the slice kernels can evaluate every lane) and the value is
+/// meaningless, so callers range-check or redo such x.
 #[inline(always)]
 pub fn eval<const N: usize>(coef: &[[f64; N]], k0: i32, m: u32, x: f64) -> f64 {
     let bits = x.to_bits();
     let shift = 52 - m;
-    let idx = ((bits >> shift) - (((1023 + k0) as u64) << m)) as usize;
+    let idx =
+        ((bits >> shift).wrapping_sub(((1023 + k0) as u64) << m) as usize).min(coef.len() - 1);
     let x0 = f64::from_bits(bits & !((1u64 << shift) - 1));
     // 2/h = 2^{1 + m − e} for x ∈ [2^e, 2^{e+1}); its biased exponent is 2047 + m − E.
     let big_e = bits >> 52;
-    let two_over_h = f64::from_bits((2047 + m as u64 - big_e) << 52);
+    let two_over_h = f64::from_bits((2047 + m as u64).wrapping_sub(big_e) << 52);
     let s = (x - x0) * two_over_h - 1.0;
     horner(&coef[idx], s)
 }
