@@ -14,6 +14,16 @@ mod ffi {
         pub fn c_ggx_lambda_f(u: f32, alpha: f32) -> f32;
         pub fn c_beckmann_d_f(u: f32, alpha: f32) -> f32;
         pub fn c_beckmann_lambda_f(u: f32, alpha: f32) -> f32;
+        pub fn c_beckmann_vndf(
+            vx: f64,
+            vy: f64,
+            vz: f64,
+            ax: f64,
+            ay: f64,
+            u1: f64,
+            u2: f64,
+            out: *mut f64,
+        );
         pub fn c_ggx_vndf(
             vx: f64,
             vy: f64,
@@ -49,6 +59,14 @@ pub fn beckmann_d(u: f64, alpha: f64) -> f64 {
 pub fn beckmann_lambda(u: f64, alpha: f64) -> f64 {
     // SAFETY: a pure C function of two doubles.
     unsafe { ffi::c_beckmann_lambda(u, alpha) }
+}
+
+/// Beckmann visible normal, pbrt-v3's inversion (C baseline).
+pub fn beckmann_vndf(v: [f64; 3], ax: f64, ay: f64, u: [f64; 2]) -> [f64; 3] {
+    let mut out = [0.0; 3];
+    // SAFETY: `out` is a valid array of three doubles that the C function writes.
+    unsafe { ffi::c_beckmann_vndf(v[0], v[1], v[2], ax, ay, u[0], u[1], out.as_mut_ptr()) };
+    out
 }
 
 /// GGX visible normal, Heitz 2018 (C baseline).

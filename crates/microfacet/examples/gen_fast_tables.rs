@@ -1,6 +1,8 @@
-//! Generates `src/fast/tables.rs`, the octave tables of the fast Double GGX and Exponential Λ,
-//! by Chebyshev interpolation of the exact, reference-checked Λ, and reports the fit error
-//! measured between the nodes:
+//! Generates `src/fast/tables.rs`, the octave tables of the fast Double GGX and Exponential Λ
+//! (Chebyshev interpolation of the exact, reference-checked Λ), of erfcx and erfinv (for the
+//! fast Beckmann Λ and sampler), and the initial-guess grid of the fast Beckmann visible-normal
+//! sampler (the exact sampler's quantiles), and reports the fit errors measured between the
+//! nodes:
 //!
 //! ```text
 //! cargo run --release -p microfacet --example gen_fast_tables > crates/microfacet/src/fast/tables.rs
@@ -26,6 +28,86 @@ fn exponential(z: f64) -> f64 {
         * z.exp()
 }
 
+/// erfcx(x) = e^{x²} erfc(x): below 2 from libm's erfc times e^{x²} with x² split exactly into
+/// hi + lo (so the exponential adds no error of its own), from 2 on the continued fraction
+/// 1/(√π (x + k)) of [`microfacet::special::erfc_ratio_tail`].
+fn erfcx(x: f64) -> f64 {
+    if x < 2.0 {
+        let hi = x * x;
+        let lo = x.mul_add(x, -hi);
+        libm::erfc(x) * hi.exp() * (1.0 + lo)
+    } else {
+        1.0 / (std::f64::consts::PI.sqrt() * (x + microfacet::special::erfc_ratio_tail(x)))
+    }
+}
+
+/// r(a) = 1 − √π a erfcx(a), the factor of Beckmann's Λ = e^{−a²} r(a)/(2a√π): below 2 from
+/// [`erfcx`] (cancelling at most a factor 10), from 2 on k/(a + k) with k the continued fraction.
+fn erfc_ratio(a: f64) -> f64 {
+    if a < 2.0 {
+        1.0 - std::f64::consts::PI.sqrt() * a * erfcx(a)
+    } else {
+        let k = microfacet::special::erfc_ratio_tail(a);
+        k / (a + k)
+    }
+}
+
+/// erfinv(v)/v at w = −ln(1 − v²), by bisection to the last bit: on libm's erf for v < 1/2,
+/// and in the tail on ln erfc y = ln erfcx(y) − y² against ln q = −w − ln(1 + v), q = 1 − v
+/// (logarithms, so that q below the normal range, w > 708, keeps its accuracy).
+fn erfinv_ratio(w: f64) -> f64 {
+    let v = (-(-w).exp_m1()).sqrt();
+    let y = if v < 0.5 {
+        bisect(|y| libm::erf(y) < v, 0.0, 1.0)
+    } else {
+        let ln_q = -w - v.ln_1p();
+        bisect(|y| erfcx(y).ln() - y * y > ln_q, 0.0, 40.0)
+    };
+    y / v
+}
+
+/// The boundary of a predicate that holds below it and fails above, to the last bit.
+fn bisect(below: impl Fn(f64) -> bool, mut lo: f64, mut hi: f64) -> f64 {
+    loop {
+        let mid = 0.5 * (lo + hi);
+        if mid <= lo || mid >= hi {
+            return mid;
+        }
+        if below(mid) {
+            lo = mid;
+        } else {
+            hi = mid;
+        }
+    }
+}
+
+/// The grid of `fast::beckmann`'s visible sampler: the exact x̃-quantile at t = 1/(1 + a) =
+/// i/T and u = j/U (j clamped to 1..U−1, since the ends are −a and ∞), t = 0 being normal
+/// incidence (erfinv(2u − 1)).
+fn beckmann_guess(out: &mut String) {
+    use microfacet::fast::beckmann::{GUESS_T, GUESS_U};
+    writeln!(out, "/// Beckmann visible x̃-quantile at t = 1/(1 + cot θ) = i/{GUESS_T}, u = j/{GUESS_U} (end columns repeat their neighbours), row-major in t.").unwrap();
+    writeln!(
+        out,
+        "pub static BECKMANN_GUESS: [f32; {}] = [",
+        (GUESS_T + 1) * (GUESS_U + 1)
+    )
+    .unwrap();
+    for i in 0..=GUESS_T {
+        let t = i as f64 / GUESS_T as f64;
+        let a = if i == 0 { f64::INFINITY } else { (1.0 - t) / t };
+        let row: Vec<String> = (0..=GUESS_U)
+            .map(|j| {
+                let u = j.clamp(1, GUESS_U - 1) as f64 / GUESS_U as f64;
+                let x = microfacet::UnitSlopes::Beckmann.sample(a, [u, 0.5]).0;
+                format!("{:e}", x as f32)
+            })
+            .collect();
+        writeln!(out, "    {},", row.join(", ")).unwrap();
+    }
+    writeln!(out, "];").unwrap();
+}
+
 /// Fits `f` on [2^k0, 2^k1) and writes the table; returns the largest relative error at 16
 /// points inside every segment.
 fn table<const N: usize>(
@@ -41,6 +123,9 @@ fn table<const N: usize>(
         for j in 0..(16 << m) {
             let x = 2f64.powi(e) * (1.0 + (j as f64 + 0.37) / (16 << m) as f64);
             let (a, b) = (eval(&t, k0, m, x), f(x));
+            if ((a - b) / b).abs() > worst && std::env::var("GDBG").is_ok() {
+                eprintln!("{name} x {x} fit {a} f {b}");
+            }
             worst = worst.max(((a - b) / b).abs());
         }
     }
@@ -70,6 +155,37 @@ fn main() {
         (-12, 9, 3),
         exponential,
     );
+    out.push('\n');
+    let e3 = table::<11>(
+        &mut out,
+        "ERFCX",
+        "erfcx(x) = e^{x²} erfc x",
+        (-30, 5, 3),
+        erfcx,
+    );
+    out.push('\n');
+    let e5 = table::<11>(
+        &mut out,
+        "ERFC_RATIO",
+        "r(a) = 1 − √π a erfcx(a)",
+        (-30, 5, 3),
+        erfc_ratio,
+    );
+    out.push('\n');
+    let e4 = table::<11>(
+        &mut out,
+        "ERFINV",
+        "erfinv(v)/v at w = −ln(1 − v²)",
+        (-30, 10, 3),
+        erfinv_ratio,
+    );
+    out.push('\n');
+    beckmann_guess(&mut out);
     assert!(e1 < 1e-8 && e2 < 1e-8, "fit error too large");
+    // The references are good to a few ulp (libm erf, and r cancels up to 10× below 2).
+    assert!(
+        e3 < 5e-15 && e4 < 5e-15 && e5 < 5e-15,
+        "fit error too large"
+    );
     print!("{out}");
 }

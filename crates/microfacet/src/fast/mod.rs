@@ -18,6 +18,7 @@
 use std::ops::{Add, Div, Mul, Neg, Sub};
 
 pub mod batch;
+pub mod beckmann;
 pub mod double_ggx;
 pub mod exponential;
 pub mod fit;
@@ -194,73 +195,5 @@ pub mod ggx {
         let (hx, hy, hz) = (ax * (sin * c + x), ay * (sin * s + y), cz + z);
         let inv = F::ONE / (hx * hx + hy * hy + hz * hz).sqrt();
         [hx * inv, hy * inv, hz * inv]
-    }
-}
-
-/// Beckmann.
-pub mod beckmann {
-    use super::Real;
-
-    /// D(u) = exp(−tan²θ/α²)/(π α² u⁴); 0 for u ≤ 0.
-    #[inline]
-    pub fn d<F: Real>(u: F, alpha: F) -> F {
-        if u <= F::ZERO {
-            return F::ZERO;
-        }
-        let u2 = u * u;
-        let a2 = alpha * alpha;
-        let x = (F::ONE - u) * (F::ONE + u) / (u2 * a2);
-        // e^{−x} underflows (in f64) past 745; so does D, and u⁴ may too (0/0), so answer 0.
-        if x > F::EXP_ZERO {
-            return F::ZERO;
-        }
-        (-x).exp() / (F::PI * a2 * u2 * u2)
-    }
-
-    /// Λ(u) = (e^{−a²}/(a√π) − erfc a)/2, a = cot θ/α, for 0 < u < 1; for large a through the
-    /// erfc continued fraction, without the cancellation of the textbook
-    /// (erf(a) − 1)/2 + e^{−a²}/(2a√π) (complete past a ≈ 11).
-    #[inline]
-    pub fn lambda<F: Real>(u: F, alpha: F) -> F {
-        let a = u / (alpha * ((F::ONE - u) * (F::ONE + u)).sqrt());
-        let e = (-a * a).exp() * F::FRAC_1_SQRT_PI / a;
-        if a < F::CF_FROM {
-            return F::HALF * (e - a.erfc());
-        }
-        // 1 − √π a e^{a²} erfc a = k/(a + k), k = ½/(a + 1/(a + (3/2)/(a + …))) evaluated by
-        // the forward recurrence of its convergents (multiply-adds and one division).
-        let (mut p0, mut p1) = (F::ONE, F::ZERO); // A_{n−2}, A_{n−1}
-        let (mut q0, mut q1) = (F::ZERO, F::ONE); // B_{n−2}, B_{n−1}
-        for n in 1..=F::CF_DEPTH {
-            let an = F::HALF * F::from_usize(n);
-            let p2 = a * p1 + an * p0;
-            let q2 = a * q1 + an * q0;
-            (p0, p1, q0, q1) = (p1, p2, q1, q2);
-        }
-        let k = p1 / q1;
-        F::HALF * e * (k / (a + k))
-    }
-
-    /// G1 = 1/(1 + Λ).
-    #[inline]
-    pub fn g1<F: Real>(u: F, alpha: F) -> F {
-        F::ONE / (F::ONE + lambda(u, alpha))
-    }
-
-    /// Height-correlated G2 = 1/(1 + Λ(u_o) + Λ(u_i)).
-    #[inline]
-    pub fn g2<F: Real>(u_o: F, u_i: F, alpha: F) -> F {
-        F::ONE / (F::ONE + lambda(u_o, alpha) + lambda(u_i, alpha))
-    }
-
-    /// σ(u) for u ∈ [−1, 1] (σ(0) = α/(2√π)), evaluated in f64.
-    #[inline]
-    pub fn sigma<F: Real>(u: F, alpha: F) -> F {
-        let a = alpha.to_f64();
-        F::from_f64(super::sigma_from_lambda(
-            u.to_f64(),
-            0.5 * a / super::SQRT_PI,
-            |v| lambda(v, a),
-        ))
     }
 }
