@@ -57,10 +57,10 @@ pub fn lambda_cot(a: f64) -> f64 {
 /// (next term below 3e-13 of the sum at a = 32).
 #[inline(always)]
 pub fn erfc_ratio(a: f64) -> f64 {
-    if a < f64::from_bits(((1023 + ERFC_RATIO_K0) as u64) << 52) {
+    if a < super::fit::pow2(ERFC_RATIO_K0) {
         return 1.0 - SQRT_PI * a;
     }
-    if a >= f64::from_bits(((1023 + ERFC_RATIO_K1) as u64) << 52) {
+    if a >= super::fit::pow2(ERFC_RATIO_K1) {
         let r = 1.0 / (a * a);
         return r * (0.5 - r * (0.75 - r * (15.0 / 8.0 - r * (105.0 / 16.0 - r * (945.0 / 32.0)))));
     }
@@ -71,10 +71,10 @@ pub fn erfc_ratio(a: f64) -> f64 {
 /// 2^5, and (1 − 1/(2x²) + 3/(4x⁴) − 15/(8x⁶) + 105/(16x⁸))/(√π x) beyond (3e-14 at x = 32).
 #[inline(always)]
 pub fn erfcx(x: f64) -> f64 {
-    if x < f64::from_bits(((1023 + ERFCX_K0) as u64) << 52) {
+    if x < super::fit::pow2(ERFCX_K0) {
         return 1.0 - 2.0 * x / SQRT_PI;
     }
-    if x >= f64::from_bits(((1023 + ERFCX_K1) as u64) << 52) {
+    if x >= super::fit::pow2(ERFCX_K1) {
         let r = 1.0 / (x * x);
         return (1.0 - r * (0.5 - r * (0.75 - r * (15.0 / 8.0 - r * (105.0 / 16.0)))))
             / (SQRT_PI * x);
@@ -150,8 +150,8 @@ pub fn erfinv_2u_minus_1(u: f64) -> f64 {
 fn erfinv_ratio(q: f64) -> f64 {
     let w = -(q * (2.0 - q)).ln();
     // q ≥ 2^−1074 keeps w below 745, inside the table.
-    debug_assert!(w < f64::from_bits(((1023 + ERFINV_K1) as u64) << 52));
-    if w < f64::from_bits(((1023 + ERFINV_K0) as u64) << 52) {
+    debug_assert!(w < super::fit::pow2(ERFINV_K1));
+    if w < super::fit::pow2(ERFINV_K0) {
         return 0.5 * SQRT_PI * (1.0 + std::f64::consts::PI / 12.0 * w);
     }
     super::fit::eval(&ERFINV, ERFINV_K0, ERFINV_M, w)

@@ -19,8 +19,8 @@ const EULER_GAMMA: f64 = 0.577_215_664_901_532_9;
 #[inline]
 pub fn lambda_x(x: f64) -> f64 {
     // 2^{DGGX_K0} and 2^{DGGX_K1}: the table's ends.
-    let lo = f64::from_bits(((1023 + DGGX_K0) as u64) << 52);
-    let hi = f64::from_bits(((1023 + DGGX_K1) as u64) << 52);
+    let lo = super::fit::pow2(DGGX_K0);
+    let hi = super::fit::pow2(DGGX_K1);
     if x >= lo && x < hi {
         return fit::eval(&DGGX, DGGX_K0, DGGX_M, x);
     }

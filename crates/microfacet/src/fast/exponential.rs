@@ -19,8 +19,8 @@ use std::f64::consts::{FRAC_1_PI, FRAC_2_PI};
 /// Λ(z), z = 2 cot θ/α ≥ 0 (+∞ at z = 0, NaN for NaN).
 #[inline]
 pub fn lambda_z(z: f64) -> f64 {
-    let lo = f64::from_bits(((1023 + EXPONENTIAL_K0) as u64) << 52);
-    let hi = f64::from_bits(((1023 + EXPONENTIAL_K1) as u64) << 52);
+    let lo = super::fit::pow2(EXPONENTIAL_K0);
+    let hi = super::fit::pow2(EXPONENTIAL_K1);
     if z >= lo && z < hi {
         return fit::eval(&EXPONENTIAL, EXPONENTIAL_K0, EXPONENTIAL_M, z) * (-z).exp();
     }

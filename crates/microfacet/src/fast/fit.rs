@@ -12,6 +12,12 @@
 //! conditioned for N ≤ 12). The fits of Double GGX and the Exponential NDF are generated once
 //! by `examples/gen_fast_tables.rs` into `tables.rs`; GTR's are built per (α, γ) at run time.
 
+/// 2^k for a normal exponent k (the ends of a table's range), exactly, from its bits.
+#[inline(always)]
+pub fn pow2(k: i32) -> f64 {
+    f64::from_bits(((1023 + k) as u64) << 52)
+}
+
 /// Evaluates the table `coef` (first octave 2^k0, 2^m segments per octave) at x.
 ///
 /// Meaningful for 2^k0 ≤ x < 2^{k0 + coef.len()/2^m}; outside, the index is clamped (the load
