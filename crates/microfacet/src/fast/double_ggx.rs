@@ -75,3 +75,75 @@ pub fn sigma<F: Real>(u: F, alpha: F) -> F {
         lambda(v, a)
     }))
 }
+
+/// A visible normal for the unit direction w (mirrored if w.z < 0), anisotropic roughness
+/// (αx, αy), distributed exactly as max(0, w·m) D(m)/σ(w): the visible normals of the
+/// Gamma-1 superposition D = ∫₀^∞ e^{−t} D_GGX(αx/√t, αy/√t) dt, evaluated in f64 (f32 rounds
+/// once).
+///
+/// σ is linear in D, so the visible normals of a superposition are a superposition of the
+/// components' visible normals with weights e^{−t} σ_t(w)/σ(w), where
+/// σ_t(w) = (c + √(c² + h²/t))/2 (c = w.z, h² = αx²w.x² + αy²w.y²) is the GGX component's
+/// projected area. t is drawn from that weight by rejection: since √(c² + h²/t) ≤ c + h/√t,
+/// the envelope e^{−t}(2c + h t^{−1/2}) is a mixture of Exp(1) (mass 2c) and Gamma(½) (mass
+/// h√π), and a candidate is kept with probability (c + √(c² + h²/t))/(2c + h/√t) ≥ 4/5
+/// (the minimum, at h/√t = 4c/3; the mean number of candidates is in tests/fast.rs). The
+/// normal is then the GGX component's spherical-cap sample
+/// ([`super::ggx::sample_visible`]) driven by `u`, so stratification of `u` carries over to
+/// the normal within each component.
+///
+/// `uniform` supplies the selection's uniforms in [0, 1): two per candidate. Unlike the
+/// exact [`crate::Stretched`] sampler this is not a warp of u alone (no inverse).
+#[inline]
+pub fn sample_visible<F: Real>(
+    w: [F; 3],
+    ax: F,
+    ay: F,
+    u: [F; 2],
+    uniform: &mut impl FnMut() -> F,
+) -> [F; 3] {
+    let (ax, ay) = (ax.to_f64(), ay.to_f64());
+    let sign = if w[2].to_f64() < 0.0 { -1.0 } else { 1.0 };
+    let (wx, wy, wz) = (
+        sign * w[0].to_f64(),
+        sign * w[1].to_f64(),
+        sign * w[2].to_f64(),
+    );
+    let (sx, sy) = (ax * wx, ay * wy);
+    let (c, h) = (wz, (sx * sx + sy * sy).sqrt());
+    if !(c + h).is_finite() {
+        // NaN in w or α (the loop below would never accept).
+        return [F::from_f64(f64::NAN); 3];
+    }
+    // The envelope's masses: 2c for Exp(1), h√π for Gamma(½).
+    let p_exp = 2.0 * c / (2.0 * c + super::SQRT_PI * h);
+    let mut beta = 1.0;
+    // At most 64 candidates: each is kept with probability ≥ 4/5, so a 65th would be needed
+    // with probability below 1e-44; the cap only guarantees termination for a `uniform` that
+    // returns NaN.
+    for _ in 0..64 {
+        let v = uniform().to_f64();
+        let t = if v < p_exp {
+            // Exp(1) by inversion, 1 − v/p in (0, 1].
+            -(1.0 - v / p_exp).ln()
+        } else {
+            // Gamma(½) = Z²/2 = erfinv(v')², v' uniform in [0, 1).
+            let e = super::beckmann::erfinv((v - p_exp) / (1.0 - p_exp));
+            e * e
+        };
+        // t below 1e-200 has probability ~1e-100; the floor keeps h/√t and its square finite
+        // (a component roughness of at most 1e100 α).
+        beta = 1.0 / t.max(1e-200).sqrt();
+        let b = h * beta;
+        if uniform().to_f64() * (2.0 * c + b) <= c + (c * c + b * b).sqrt() {
+            break;
+        }
+    }
+    let m = super::ggx::sample_visible(
+        [wx, wy, wz],
+        ax * beta,
+        ay * beta,
+        [u[0].to_f64(), u[1].to_f64()],
+    );
+    [F::from_f64(m[0]), F::from_f64(m[1]), F::from_f64(m[2])]
+}
