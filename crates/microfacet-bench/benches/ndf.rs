@@ -261,6 +261,7 @@ fn main() {
     }
 
     fitted_fast_paths(&i, big, fast_ggx_lambda_64, fast_ggx_lambda_32, ggx_l);
+    mixture_vndf(&i, big, fast_ggx_lambda_64, fast_vndf);
     batches(&i);
 
     // Every other NDF against our GGX Λ.
@@ -430,6 +431,66 @@ fn fitted_fast_paths(i: &Inputs, calls: usize, ggx64: f64, ggx32: f64, exact_ggx
         "{:44} {build_ms:10.1} ms per material (mean of 64, α ∈ [0.05, 1], γ ∈ [0.5, 3])",
         "GTR fast construction"
     );
+}
+
+/// The fast visible-normal samplers of the superpositions (rejection; their extra uniforms
+/// come from an inline xorshift64*, whose cost is in the figures), against our fast GGX Λ
+/// and our fast GGX VNDF (f64).
+fn mixture_vndf(i: &Inputs, calls: usize, ggx_lambda: f64, ggx_vndf: f64) {
+    use microfacet::fast::{double_ggx as dg, exponential as ex};
+    println!();
+    println!("fast VNDF sampling (per sample, extra uniforms included; ratio to our fast GGX Λ f64 and fast GGX VNDF f64)");
+    let mut state = 0x9e37_79b9_7f4a_7c15u64;
+    let mut next = move || {
+        state ^= state >> 12;
+        state ^= state << 25;
+        state ^= state >> 27;
+        (state.wrapping_mul(0x2545_f491_4f6c_dd1d) >> 11) as f64 * (1.0 / (1u64 << 53) as f64)
+    };
+    let a32s: Vec<f32> = i.alpha.iter().map(|&x| x as f32).collect();
+    let w = |k: usize| [i.w[k].x, i.w[k].y, i.w[k].z];
+    let w32 = |k: usize| w(k).map(|x| x as f32);
+    let xi32 = |k: usize| i.xi[k].map(|x| x as f32);
+    let rows = [
+        (
+            "uniforms alone (2 per call)",
+            time(calls, |k| black_box(next()) + next() + k as f64),
+        ),
+        (
+            "Double GGX VNDF f64",
+            time(calls, |k| {
+                dg::sample_visible(w(k), i.alpha[k], i.alpha[k], black_box(i.xi[k]), &mut next)[2]
+            }),
+        ),
+        (
+            "Double GGX VNDF f32",
+            time(calls, |k| {
+                let mut n32 = || next() as f32;
+                dg::sample_visible(w32(k), a32s[k], a32s[k], black_box(xi32(k)), &mut n32)[2] as f64
+            }),
+        ),
+        (
+            "Exponential VNDF f64",
+            time(calls, |k| {
+                ex::sample_visible(w(k), i.alpha[k], i.alpha[k], black_box(i.xi[k]), &mut next)[2]
+            }),
+        ),
+        (
+            "Exponential VNDF f32",
+            time(calls, |k| {
+                let mut n32 = || next() as f32;
+                ex::sample_visible(w32(k), a32s[k], a32s[k], black_box(xi32(k)), &mut n32)[2] as f64
+            }),
+        ),
+    ];
+    for (name, t) in rows {
+        println!(
+            "{:44} {t:10.1} ns   {:6.2}× fast GGX Λ  {:6.2}× fast GGX VNDF",
+            format!("us fast {name}"),
+            t / ggx_lambda,
+            t / ggx_vndf
+        );
+    }
 }
 
 /// 10⁶-element slices: the scalar fast path in a plain loop, the slice function, and the
