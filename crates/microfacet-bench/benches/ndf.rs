@@ -75,6 +75,19 @@ fn row(name: &str, ns: f64, base: Option<(&str, f64)>) {
 fn main() {
     let i = inputs();
     let big = 400_000;
+    if std::env::var("MICROFACET_BENCH").as_deref() == Ok("vndf") {
+        // Only the fast samplers (a quick loop while working on them).
+        use microfacet::fast::ggx as fg;
+        let lambda = time(big, |k| fg::lambda(black_box(i.u[k]), i.alpha[k]));
+        let vndf = time(big, |k| {
+            let w = i.w[k];
+            fg::sample_visible([w.x, w.y, w.z], i.alpha[k], i.alpha[k], black_box(i.xi[k]))[2]
+        });
+        row("us fast GGX Λ f64", lambda, None);
+        row("us fast GGX VNDF f64", vndf, None);
+        mixture_vndf(&i, big, lambda, vndf);
+        return;
+    }
     println!(
         "{:44} {:>13}   ratio",
         "function (f64, random inputs)", "per call"
@@ -448,6 +461,10 @@ fn mixture_vndf(i: &Inputs, calls: usize, ggx_lambda: f64, ggx_vndf: f64) {
         (state.wrapping_mul(0x2545_f491_4f6c_dd1d) >> 11) as f64 * (1.0 / (1u64 << 53) as f64)
     };
     let a32s: Vec<f32> = i.alpha.iter().map(|&x| x as f32).collect();
+    let materials: Vec<microfacet::fast::gtr::Gtr> = (0..64)
+        .map(|k| microfacet::fast::gtr::Gtr::new(i.alpha[k], i.gamma[k]).unwrap())
+        .collect();
+    let m = |k: usize| &materials[k % 64];
     let w = |k: usize| [i.w[k].x, i.w[k].y, i.w[k].z];
     let w32 = |k: usize| w(k).map(|x| x as f32);
     let xi32 = |k: usize| i.xi[k].map(|x| x as f32);
@@ -480,6 +497,19 @@ fn mixture_vndf(i: &Inputs, calls: usize, ggx_lambda: f64, ggx_vndf: f64) {
             time(calls, |k| {
                 let mut n32 = || next() as f32;
                 ex::sample_visible(w32(k), a32s[k], a32s[k], black_box(xi32(k)), &mut n32)[2] as f64
+            }),
+        ),
+        (
+            "GTR VNDF (64 materials) f64",
+            time(calls, |k| {
+                m(k).sample_visible(w(k), black_box(i.xi[k]), &mut next)[2]
+            }),
+        ),
+        (
+            "GTR VNDF (64 materials) f32",
+            time(calls, |k| {
+                let mut n32 = || next() as f32;
+                m(k).sample_visible(w32(k), black_box(xi32(k)), &mut n32)[2] as f64
             }),
         ),
     ];
