@@ -286,8 +286,6 @@ struct Radial {
     /// The largest envelope exponent, subtracted from every piece's.
     top: f64,
     gamma: f64,
-    /// ln α².
-    la: f64,
     /// α².
     a2: f64,
     pieces: Vec<Piece>,
@@ -394,7 +392,6 @@ impl Radial {
             k,
             top,
             gamma,
-            la,
             a2: alpha * alpha,
             pieces,
             prob,
@@ -407,7 +404,7 @@ impl Radial {
     #[cfg(test)]
     fn log_ratio(&self, p: &Piece, t: f64) -> f64 {
         let (l1, _) = log_add_exp(0.0, t);
-        let (l2, _) = log_add_exp(self.la, t);
+        let (l2, _) = log_add_exp(self.a2.ln(), t);
         let envelope = self.top + p.e0 + p.beta * (t - p.a);
         self.k * t + (self.gamma - 2.0) * l1 - self.gamma * l2 - envelope
     }
@@ -525,7 +522,7 @@ mod tests {
                     let steps = ((hi - lo) / h) as usize;
                     let phi = |t: f64| {
                         let (l1, _) = log_add_exp(0.0, t);
-                        let (l2, _) = log_add_exp(r.la, t);
+                        let (l2, _) = log_add_exp(r.a2.ln(), t);
                         (k * t + (gamma - 2.0) * l1 - gamma * l2 - r.top).exp()
                     };
                     let integral: f64 =
