@@ -270,21 +270,8 @@ fn guess(a: f64, u: f64) -> f64 {
 #[inline]
 pub fn sample_visible<F: Real>(w: [F; 3], ax: F, ay: F, u: [F; 2]) -> [F; 3] {
     let (ax, ay) = (ax.to_f64(), ay.to_f64());
-    let sign = if w[2].to_f64() < 0.0 { -1.0 } else { 1.0 };
-    let (sx, sy, sz) = (
-        sign * ax * w[0].to_f64(),
-        sign * ay * w[1].to_f64(),
-        sign * w[2].to_f64(),
-    );
-    let h = (sx * sx + sy * sy).sqrt();
-    let (a, c, s) = if h == 0.0 {
-        (f64::INFINITY, 1.0, 0.0)
-    } else {
-        (sz / h, sx / h, sy / h)
-    };
+    let (c, h, cp, sp) = super::slope_frame(w, ax, ay);
+    let a = if h == 0.0 { f64::INFINITY } else { c / h };
     let (x, y) = sample_visible11(a, [u[0].to_f64(), u[1].to_f64()]);
-    // Rotate back to the azimuth of w, unstretch: m ∝ (αx x̃', αy ỹ', 1).
-    let (p, q) = (ax * (c * x - s * y), ay * (s * x + c * y));
-    let inv = 1.0 / (p * p + q * q + 1.0).sqrt();
-    [F::from_f64(p * inv), F::from_f64(q * inv), F::from_f64(inv)]
+    super::normal_from_slopes(x, y, (cp, sp), ax, ay)
 }

@@ -108,22 +108,11 @@ pub fn sample_visible<F: Real>(
     uniform: &mut impl FnMut() -> F,
 ) -> [F; 3] {
     let (ax, ay) = (ax.to_f64(), ay.to_f64());
-    let sign = if w[2].to_f64() < 0.0 { -1.0 } else { 1.0 };
-    let (sx, sy, c) = (
-        sign * ax * w[0].to_f64(),
-        sign * ay * w[1].to_f64(),
-        sign * w[2].to_f64(),
-    );
-    let h = (sx * sx + sy * sy).sqrt();
+    let (c, h, cp, sp) = super::slope_frame(w, ax, ay);
     if !(c + h).is_finite() {
         // NaN in w or α (the loop below would never accept).
         return [F::from_f64(f64::NAN); 3];
     }
-    let (cp, sp) = if h == 0.0 {
-        (1.0, 0.0)
-    } else {
-        (sx / h, sy / h)
-    };
     // The envelope's masses: c for the D·cos part, h/π for the first-moment part.
     let p_dcos = c / (c + h * FRAC_1_PI);
     let (mut v0, mut v1) = (u[0].to_f64(), u[1].to_f64());
@@ -152,8 +141,5 @@ pub fn sample_visible<F: Real>(
             break;
         }
     }
-    // Rotate back to the azimuth of w̃ and unstretch: m ∝ (αx X, αy Y, 1).
-    let (p, q) = (ax * (cp * x - sp * y), ay * (sp * x + cp * y));
-    let inv = 1.0 / (p * p + q * q + 1.0).sqrt();
-    [F::from_f64(p * inv), F::from_f64(q * inv), F::from_f64(inv)]
+    super::normal_from_slopes(x, y, (cp, sp), ax, ay)
 }

@@ -174,22 +174,11 @@ impl Gtr {
         u: [F; 2],
         uniform: &mut impl FnMut() -> F,
     ) -> [F; 3] {
-        let sign = if w[2].to_f64() < 0.0 { -1.0 } else { 1.0 };
-        let (wx, wy, c) = (
-            sign * w[0].to_f64(),
-            sign * w[1].to_f64(),
-            sign * w[2].to_f64(),
-        );
-        let s = (wx * wx + wy * wy).sqrt();
+        let (c, s, cp, sp) = super::slope_frame(w, 1.0, 1.0);
         if !(c + s).is_finite() {
             // NaN in w (the loop below would never accept).
             return [F::from_f64(f64::NAN); 3];
         }
-        let (cp, sp) = if s == 0.0 {
-            (1.0, 0.0)
-        } else {
-            (wx / s, wy / s)
-        };
         // The envelope's masses: c for D·cos, s σ(0) for the first moment.
         let p_dcos = c / (c + s * self.sigma0);
         let (mut v0, mut v1) = (u[0].to_f64(), u[1].to_f64());
@@ -219,9 +208,7 @@ impl Gtr {
                 break;
             }
         }
-        let (p, q) = (cp * x - sp * y, sp * x + cp * y);
-        let inv = 1.0 / (p * p + q * q + 1.0).sqrt();
-        [F::from_f64(p * inv), F::from_f64(q * inv), F::from_f64(inv)]
+        super::normal_from_slopes(x, y, (cp, sp), 1.0, 1.0)
     }
 
     /// σ(u) for u ∈ [−1, 1].

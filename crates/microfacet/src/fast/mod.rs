@@ -69,6 +69,36 @@ fn sigma_from_lambda(u: f64, s0: f64, lambda: impl Fn(f64) -> f64) -> f64 {
     }
 }
 
+/// A direction's frame for slope-space sampling: w mirrored to w.z ≥ 0 and stretched to
+/// (αx w.x, αy w.y, w.z) = (h cos φ, h sin φ, c), unnormalised; returns (c, h, cos φ, sin φ),
+/// with φ = 0 at h = 0 (normal incidence).
+#[inline(always)]
+fn slope_frame<F: Real>(w: [F; 3], ax: f64, ay: f64) -> (f64, f64, f64, f64) {
+    let sign = if w[2].to_f64() < 0.0 { -1.0 } else { 1.0 };
+    let (sx, sy, c) = (
+        sign * ax * w[0].to_f64(),
+        sign * ay * w[1].to_f64(),
+        sign * w[2].to_f64(),
+    );
+    let h = (sx * sx + sy * sy).sqrt();
+    let (cp, sp) = if h == 0.0 {
+        (1.0, 0.0)
+    } else {
+        (sx / h, sy / h)
+    };
+    (c, h, cp, sp)
+}
+
+/// The unit normal of the stretched slopes (x along φ, y across; [`slope_frame`]'s cos φ and
+/// sin φ): rotated back to the azimuth of w and unstretched, m ∝ (αx X, αy Y, 1).
+#[inline(always)]
+fn normal_from_slopes<F: Real>(x: f64, y: f64, frame: (f64, f64), ax: f64, ay: f64) -> [F; 3] {
+    let (cp, sp) = frame;
+    let (p, q) = (ax * (cp * x - sp * y), ay * (sp * x + cp * y));
+    let inv = 1.0 / (p * p + q * q + 1.0).sqrt();
+    [F::from_f64(p * inv), F::from_f64(q * inv), F::from_f64(inv)]
+}
+
 /// The floating-point operations the fast paths need; implemented for f32 and f64.
 pub trait Real:
     Copy
