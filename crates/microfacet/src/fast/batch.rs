@@ -12,7 +12,8 @@
 //! Throughput and the scalar-loop comparison: BENCHMARKS.md.
 
 use super::tables::{DGGX, DGGX_K0, DGGX_K1, DGGX_M};
-use super::tables::{EXPONENTIAL, EXPONENTIAL_K0, EXPONENTIAL_K1, EXPONENTIAL_M};
+use super::tables::{EXPONENTIAL_MID, EXPONENTIAL_MID_INV_H, EXPONENTIAL_MID_K};
+use super::tables::{EXPONENTIAL_NEAR, EXPONENTIAL_NEAR_K0, EXPONENTIAL_NEAR_M};
 use super::{beckmann, double_ggx, exponential, fit, ggx};
 use std::f64::consts::PI;
 
@@ -159,18 +160,30 @@ pub fn double_ggx_lambda(u: &[f64], alpha: &[f64], out: &mut [f64]) {
     );
 }
 
-/// Exponential Λ.
+/// Exponential Λ (the two exponential-free tables, selected per lane; the rest of z
+/// (z < 2^−12 or z ≥ 64) by the scalar path).
 pub fn exponential_lambda(u: &[f64], alpha: &[f64], out: &mut [f64]) {
-    let lo = 2f64.powi(EXPONENTIAL_K0);
-    let hi = 2f64.powi(EXPONENTIAL_K1);
+    let lo = 2f64.powi(EXPONENTIAL_NEAR_K0);
     chunks(
         u,
         alpha,
         out,
         |u, a| {
             let z = (u + u) / (a * ((1.0 - u) * (1.0 + u)).sqrt());
-            let v = fit::eval(&EXPONENTIAL, EXPONENTIAL_K0, EXPONENTIAL_M, z) * exp_arith(-z);
-            (v, !(z >= lo && z < hi))
+            let near = fit::eval(
+                &EXPONENTIAL_NEAR,
+                EXPONENTIAL_NEAR_K0,
+                EXPONENTIAL_NEAR_M,
+                z,
+            );
+            let mid = fit::eval_uniform(
+                &EXPONENTIAL_MID,
+                EXPONENTIAL_MID_K,
+                EXPONENTIAL_MID_INV_H,
+                z,
+            );
+            let v = if z < exponential::Z_NEAR { near } else { mid };
+            (v, !(z >= lo && z < exponential::Z_MID))
         },
         exponential::lambda,
     );

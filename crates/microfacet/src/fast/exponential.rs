@@ -2,30 +2,64 @@
 //! required; the measured figure is in tests/fast.rs and BENCHMARKS.md), against the exact
 //! [`crate::Exponential`], Λ = (2K₁(z) − Ki₁(z))/π, z = 2 cot θ/α (ERRATA A.14).
 //!
-//! The variable is z = 2u/(α√((1 − u)(1 + u))). Λ falls like e^{−z}/√z, so the table holds
-//! Λ(z) e^z and one exponential restores the factor.
+//! The variable is z = 2u/(α√((1 − u)(1 + u))). Λ falls like e^{−z}/√z; it is read from
+//! generated tables (`examples/gen_fast_tables.rs`) in four ranges:
 //! * z < 2^−12 (grazing): Λ = 2/(πz) − 1/2 + z/(2π) + O(z³ ln z), relative error below 1e-14.
-//! * 2^−12 ≤ z < 2^9: the table.
+//! * 2^−12 ≤ z < 8: Λ itself on octave segments (8 per octave, degree 7). The widest segment
+//!   is ½, narrow enough for e^{−z} to be a polynomial: no exponential at run time.
+//! * 8 ≤ z < 64: Λ itself on equal segments of width ½ (degree 7), for the same reason.
+//!   Together these cover 99 % of the benchmark's random (u, α) (BENCHMARKS.md).
+//! * 64 ≤ z < 2^9: Λ e^z on octave segments, and one exponential restores the factor.
 //! * z ≥ 2^9 (near the normal): Λ = e^{−z}(1 + 11/(8z) − 159/(128z²) + 8595/(3072z³))/√(2πz),
 //!   from the large-z expansions of K₁ and Ki₁ (the z⁻³ coefficient fitted to mpmath values of
 //!   the Struve form at z = 100…800 and recognised as 315/1536 + 2655/1024); the next term is
 //!   about 9/z⁴, below 2e-10 relative. From z ≈ 708 on Λ is subnormal and only absolutely
 //!   accurate; it underflows to 0 near z = 745.
 
-use super::tables::{EXPONENTIAL, EXPONENTIAL_K0, EXPONENTIAL_K1, EXPONENTIAL_M};
+use super::tables::{EXPONENTIAL_FAR, EXPONENTIAL_FAR_K0, EXPONENTIAL_FAR_K1, EXPONENTIAL_FAR_M};
+use super::tables::{EXPONENTIAL_MID, EXPONENTIAL_MID_INV_H, EXPONENTIAL_MID_K};
+use super::tables::{EXPONENTIAL_NEAR, EXPONENTIAL_NEAR_K0, EXPONENTIAL_NEAR_M};
 use super::{fit, Real};
 use std::f64::consts::{FRAC_1_PI, FRAC_2_PI};
+
+/// Where the exponential-free tables end: the near table's last octave ends at 8, the
+/// mid table's equal segments of width ½ at 64 (checked at compile time against the
+/// generated constants).
+pub(super) const Z_NEAR: f64 = 8.0;
+pub(super) const Z_MID: f64 = 64.0;
+const _: () = {
+    use super::tables::EXPONENTIAL_NEAR_K1;
+    assert!(EXPONENTIAL_NEAR_K1 == 3 && EXPONENTIAL_FAR_K0 == 6); // 2^3 = Z_NEAR, 2^6 = Z_MID
+                                                                  // Mid rows k = 16 ..= 128 at h = ½ cover [7.75, 64.25].
+    assert!(EXPONENTIAL_MID_INV_H == 2.0 && EXPONENTIAL_MID_K == 16);
+    assert!(EXPONENTIAL_MID.len() == 113);
+};
 
 /// Λ(z), z = 2 cot θ/α ≥ 0 (+∞ at z = 0, NaN for NaN).
 #[inline]
 pub fn lambda_z(z: f64) -> f64 {
-    let lo = super::fit::pow2(EXPONENTIAL_K0);
-    let hi = super::fit::pow2(EXPONENTIAL_K1);
-    if z >= lo && z < hi {
-        return fit::eval(&EXPONENTIAL, EXPONENTIAL_K0, EXPONENTIAL_M, z) * (-z).exp();
-    }
-    if z < lo {
+    // The common cases first, each one table lookup and no exponential.
+    if z < Z_NEAR {
+        if z >= fit::pow2(EXPONENTIAL_NEAR_K0) {
+            return fit::eval(
+                &EXPONENTIAL_NEAR,
+                EXPONENTIAL_NEAR_K0,
+                EXPONENTIAL_NEAR_M,
+                z,
+            );
+        }
         return FRAC_2_PI / z - 0.5 + 0.5 * FRAC_1_PI * z;
+    }
+    if z < Z_MID {
+        return fit::eval_uniform(
+            &EXPONENTIAL_MID,
+            EXPONENTIAL_MID_K,
+            EXPONENTIAL_MID_INV_H,
+            z,
+        );
+    }
+    if z < fit::pow2(EXPONENTIAL_FAR_K1) {
+        return fit::eval(&EXPONENTIAL_FAR, EXPONENTIAL_FAR_K0, EXPONENTIAL_FAR_M, z) * (-z).exp();
     }
     if z.is_nan() {
         return z;
@@ -142,4 +176,23 @@ pub fn sample_visible<F: Real>(
         }
     }
     super::normal_from_slopes(x, y, (cp, sp), ax, ay)
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn the_ranges_meet_where_the_tables_end() {
+        // Continuity across each switch, to the tables' accuracy.
+        for z in [
+            fit::pow2(EXPONENTIAL_NEAR_K0),
+            Z_NEAR,
+            Z_MID,
+            fit::pow2(EXPONENTIAL_FAR_K1),
+        ] {
+            let below = lambda_z(f64::from_bits(z.to_bits() - 1));
+            assert!((lambda_z(z) / below - 1.0).abs() < 1e-9, "{z}");
+        }
+    }
 }

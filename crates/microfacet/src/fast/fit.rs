@@ -37,6 +37,37 @@ pub fn eval<const N: usize>(coef: &[[f64; N]], k0: i32, m: u32, x: f64) -> f64 {
     horner(&coef[idx], s)
 }
 
+/// Evaluates a table of equal segments at x: row i covers [(k − ½)h, (k + ½)h] with
+/// k = `k_first` + i and h = 1/`inv_h`, a power of two (so x · inv_h is exact). The row is picked
+/// by rounding x/h to the nearest integer k (no search), and s = 2(x/h − k) ∈ [−1, 1].
+///
+/// Meaningful for (k_first − ½)h ≤ x < (k_first + len − ½)h; outside (NaN included) the row is
+/// clamped into the table and the value is meaningless, so callers range-check.
+#[inline(always)]
+pub fn eval_uniform<const N: usize>(coef: &[[f64; N]], k_first: u32, inv_h: f64, x: f64) -> f64 {
+    // 1.5·2^52: adding it rounds y to an integer held in the low mantissa bits (|y| < 2^31).
+    const MAGIC: f64 = 6_755_399_441_055_744.0;
+    let y = x * inv_h;
+    let t = y + MAGIC;
+    let idx = ((t.to_bits() as u32).wrapping_sub(k_first) as usize).min(coef.len() - 1);
+    // t − MAGIC = k exactly, and y − k is exact (|y − k| ≤ ½).
+    let s = 2.0 * (y - (t - MAGIC));
+    horner(&coef[idx], s)
+}
+
+/// Chebyshev interpolation of `f` on the equal segments of [`eval_uniform`]: rows for
+/// k = k_first ..= k_last, segment width h.
+pub fn fit_uniform<const N: usize>(
+    k_first: u32,
+    k_last: u32,
+    h: f64,
+    mut f: impl FnMut(f64) -> f64,
+) -> Vec<[f64; N]> {
+    (k_first..=k_last)
+        .map(|k| chebyshev_fit(|s| f((k as f64 + 0.5 * s) * h)))
+        .collect()
+}
+
 /// Σ c_j s^j, by Estrin's scheme: pairs c_{2i} + c_{2i+1} s, then pairs of those with s²,
 /// s⁴, …: a dependency chain of depth ~2 log₂ N instead of Horner's 2N (the default x86-64
 /// target has no fused multiply-add, so the chain's latency is the cost). For |s| ≤ 1 and
@@ -162,6 +193,33 @@ mod tests {
         let b = 2.0f64 * 1.25;
         for x in [b, f64::from_bits(b.to_bits() - 1)] {
             assert!((eval(&t, k0, m, x) - f(x)).abs() < 1e-9);
+        }
+    }
+
+    #[test]
+    fn uniform_segments_reproduce_a_smooth_function_and_round_to_the_nearest_row() {
+        let f = |x: f64| (-x).exp() * (1.0 + x).sqrt();
+        // Rows k = 4 ..= 40 at h = 1/4: x ∈ [0.875, 10.125].
+        let t = fit_uniform::<8>(4, 40, 0.25, f);
+        assert_eq!(t.len(), 37);
+        let mut worst = 0.0f64;
+        let mut x = 0.875;
+        while x < 10.125 {
+            worst = worst.max((eval_uniform(&t, 4, 4.0, x) / f(x) - 1.0).abs());
+            x += 0.000_731;
+        }
+        assert!(worst < 1e-12, "{worst}");
+        // Both sides of a boundary (k + ½)h, and the ends of the range.
+        for x in [
+            1.125f64,
+            f64::from_bits(1.125f64.to_bits() - 1),
+            0.875,
+            10.125,
+        ] {
+            assert!(
+                (eval_uniform(&t, 4, 4.0, x) / f(x) - 1.0).abs() < 1e-12,
+                "{x}"
+            );
         }
     }
 }
