@@ -412,6 +412,7 @@ fn gtr_fast_lambda_over_the_whole_domain() {
     use microfacet::fast::gtr::Gtr as FastGtr;
     let mut worst = 0.0f64;
     let mut worst32 = 0.0f64;
+    let (mut worst_by, mut count_by) = ([0.0f64; 2], [0usize; 2]);
     for alpha in [1e-3, 0.05, 0.3, 0.9, 1.0, 2.5, 1e3] {
         for gamma in [0.1, 0.5, 1.0, 1.5, 2.0, 3.0, 10.0, 100.0] {
             let fast = FastGtr::new(alpha, gamma).unwrap();
@@ -439,10 +440,25 @@ fn gtr_fast_lambda_over_the_whole_domain() {
                 }
             }
             assert!(e <= FIT_TOL_F64, "α = {alpha}, γ = {gamma}: {e:e}");
+            // Which table the material got: Λ itself for every α at γ ≤ 3 (no exponential
+            // at evaluation), ln Λ wherever Λ underflows or falls too steeply (γ = 100 with
+            // α < 1; at α = 1, P22 = (1 + r²)^{−2}/π whatever γ is).
+            if gamma <= 3.0 {
+                assert!(fast.is_direct(), "α = {alpha}, γ = {gamma}");
+            }
+            if gamma >= 100.0 && alpha < 1.0 {
+                assert!(!fast.is_direct(), "α = {alpha}, γ = {gamma}");
+            }
+            let kind = usize::from(fast.is_direct());
+            worst_by[kind] = worst_by[kind].max(e);
+            count_by[kind] += 1;
             worst = worst.max(e);
         }
     }
-    println!("GTR fast: f64 {worst:.2e}, f32 {worst32:.2e}");
+    println!(
+        "GTR fast: f64 {worst:.2e} (table of Λ: {} materials, {:.2e}; of ln Λ: {}, {:.2e}), f32 {worst32:.2e}",
+        count_by[1], worst_by[1], count_by[0], worst_by[0]
+    );
     assert!(worst32 <= FIT_TOL_F32, "{worst32}");
     let f = FastGtr::new(0.3, 1.5).unwrap();
     assert_eq!(f.lambda(1.0), 0.0);

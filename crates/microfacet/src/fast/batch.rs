@@ -191,6 +191,17 @@ pub fn exponential_lambda(u: &[f64], alpha: &[f64], out: &mut [f64]) {
 
 /// Λ of a prepared GTR material for every u (one α, γ).
 pub fn gtr_lambda(g: &super::gtr::Gtr, u: &[f64], out: &mut [f64]) {
+    // One loop per kind of table, so that neither tests the kind per element.
+    if g.is_direct() {
+        gtr_chunks::<true>(g, u, out);
+    } else {
+        gtr_chunks::<false>(g, u, out);
+    }
+}
+
+/// [`gtr_lambda`] for a table of Λ (`DIRECT`) or of ln Λ.
+#[inline(always)]
+fn gtr_chunks<const DIRECT: bool>(g: &super::gtr::Gtr, u: &[f64], out: &mut [f64]) {
     let (k0, lo, hi, coef) = g.table();
     let n = u.len();
     assert!(out.len() >= n, "slice lengths differ");
@@ -201,10 +212,15 @@ pub fn gtr_lambda(g: &super::gtr::Gtr, u: &[f64], out: &mut [f64]) {
         for l in 0..LANES {
             let u = uc[l];
             let a = u / ((1.0 - u) * (1.0 + u)).sqrt();
-            let ln_lambda = fit::eval(coef, k0, super::gtr::M, a);
-            oc[l] = exp_arith(ln_lambda);
-            // Past exp_arith's range (Λ < e^{−708}) the scalar path answers.
-            bad[l] = !(a >= lo && a < hi && ln_lambda > -708.0);
+            let p = fit::eval(coef, k0, super::gtr::M, a);
+            bad[l] = !(a >= lo && a < hi);
+            if DIRECT {
+                oc[l] = p;
+            } else {
+                oc[l] = exp_arith(p);
+                // Past exp_arith's range (Λ < e^{−708}) the scalar path answers.
+                bad[l] |= p.is_nan() || p <= -708.0;
+            }
         }
         if bad.iter().any(|&b| b) {
             for l in 0..LANES {

@@ -1,11 +1,15 @@
-//! Piecewise polynomials on octaves: the tables behind the fast Λ of the NDFs without a cheap
-//! closed form.
+//! Piecewise polynomials on octaves (and on equal segments): the tables behind the fast Λ of
+//! the NDFs without a cheap closed form.
 //!
 //! A table covers x ∈ [2^k0, 2^k1); every octave [2^e, 2^{e+1}) is cut into 2^m equal segments,
 //! and on each segment the function is the polynomial Σ c_j s^j of degree N − 1 in
 //! s = 2(x − x₀)/h − 1 ∈ [−1, 1) (x₀ the segment's start, h its width). The segment and s come
 //! from the bits of x (no logarithm, no search): the exponent and the top m mantissa bits
 //! index the segment, and x − x₀ is exact.
+//!
+//! Where a function decays exponentially (the Exponential NDF's Λ ~ e^{−z}), octaves grow too
+//! wide for a polynomial in relative terms; [`eval_uniform`] reads a table of equal segments
+//! instead, its row picked by rounding x/h.
 //!
 //! Tables are built by Chebyshev interpolation ([`fit_octaves`]): at N Chebyshev points of each
 //! segment, converted to the monomial basis in s (|s| ≤ 1 keeps that conversion well
@@ -115,29 +119,52 @@ pub fn fit_octaves<const N: usize>(
     k0: i32,
     k1: i32,
     m: u32,
+    f: impl FnMut(f64) -> f64,
+) -> Vec<[f64; N]> {
+    octave_node_values::<N>(k0, k1, m, f)
+        .iter()
+        .map(chebyshev_coefficients)
+        .collect()
+}
+
+/// `f` at the N Chebyshev points of every segment of [2^k0, 2^k1), segment by segment (the
+/// input of [`chebyshev_coefficients`]; a caller can transform the values first and so fit
+/// two functions of one set of evaluations).
+pub fn octave_node_values<const N: usize>(
+    k0: i32,
+    k1: i32,
+    m: u32,
     mut f: impl FnMut(f64) -> f64,
 ) -> Vec<[f64; N]> {
     let per = 1usize << m;
+    let nodes = chebyshev_nodes::<N>();
     let mut out = Vec::with_capacity((k1 - k0) as usize * per);
     for e in k0..k1 {
         let lo = 2f64.powi(e);
         let h = lo / per as f64;
         for j in 0..per {
             let x0 = lo + j as f64 * h;
-            out.push(chebyshev_fit(|s| f(x0 + 0.5 * (s + 1.0) * h)));
+            out.push(nodes.map(|s| f(x0 + 0.5 * (s + 1.0) * h)));
         }
     }
     out
 }
 
+/// The Chebyshev points of the first kind on [−1, 1], cos(π(k + ½)/N).
+pub fn chebyshev_nodes<const N: usize>() -> [f64; N] {
+    std::array::from_fn(|k| (std::f64::consts::PI * (k as f64 + 0.5) / N as f64).cos())
+}
+
 /// The degree N − 1 interpolant of `g` on [−1, 1] at the Chebyshev points of the first kind,
 /// as monomial coefficients.
-pub fn chebyshev_fit<const N: usize>(mut g: impl FnMut(f64) -> f64) -> [f64; N] {
+pub fn chebyshev_fit<const N: usize>(g: impl FnMut(f64) -> f64) -> [f64; N] {
+    chebyshev_coefficients(&chebyshev_nodes::<N>().map(g))
+}
+
+/// The monomial coefficients in s of the polynomial through `values` at
+/// [`chebyshev_nodes`].
+pub fn chebyshev_coefficients<const N: usize>(values: &[f64; N]) -> [f64; N] {
     use std::f64::consts::PI;
-    let nodes: Vec<f64> = (0..N)
-        .map(|k| (PI * (k as f64 + 0.5) / N as f64).cos())
-        .collect();
-    let values: Vec<f64> = nodes.iter().map(|&s| g(s)).collect();
     // Chebyshev coefficients a_j = (2/N) Σ_k f(s_k) T_j(s_k) (halved for j = 0).
     let mut a = [0.0; N];
     for (j, aj) in a.iter_mut().enumerate() {

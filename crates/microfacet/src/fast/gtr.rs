@@ -2,17 +2,22 @@
 //!
 //! GTR is not shape invariant: Λ depends on cot θ, α and γ, a three-parameter function no
 //! static table covers at 1e-7. A renderer fixes (α, γ) per material, so [`Gtr::new`] fits
-//! ln Λ(a), a = cot θ, for that material by Chebyshev interpolation of the exact Smith
-//! integral ([`crate::Gtr::lambda_cot`]) on quarter octaves (degree 8). The logarithm is what
-//! makes a fixed degree enough: for large γ and small α, Λ falls like a^{−2γ} near the normal
-//! (by 10^15 across one quarter octave at γ = 100), which no short polynomial follows in
-//! relative terms, while ln Λ stays smooth. Evaluation costs a square root, a division, a
-//! degree-8 polynomial and an exponential. Construction evaluates the exact Λ about 1 500
-//! times (tens of milliseconds; BENCHMARKS.md has the measured figure).
+//! Λ(a), a = cot θ, for that material by Chebyshev interpolation of the exact Smith integral
+//! ([`crate::Gtr::lambda_cot`]) on quarter octaves (degree 8). From one set of exact values
+//! it builds two tables and keeps one:
+//! * **Λ itself**, if it is accurate: within 5e-9 at every segment end (`DIRECT_TOL`), and
+//!   no value near underflow. Evaluation is then a square root, a division and a degree-8
+//!   polynomial, with no exponential. This holds for every α at γ ≤ 3 and for most α at
+//!   γ ≤ 5 ([`Gtr::is_direct`] tells which; tests/fast.rs records the census).
+//! * **ln Λ** otherwise, plus one exponential at evaluation. For large γ and small α, Λ falls
+//!   like a^{−2γ} near the normal: by 10^15 across one quarter octave at γ = 100. No short
+//!   polynomial follows that in relative terms, while ln Λ stays smooth. Where Λ underflows
+//!   (γ ≳ 30 with small α: Λ ~ α^{2γ} near the normal), a segment with any node below
+//!   1e-300 returns 0. So Λ is relatively accurate where it exceeds 1e-280 (a quarter
+//!   octave spans at most a factor 10^15 there) and absolutely below.
 //!
-//! Where Λ underflows (γ ≳ 30 with small α: Λ ~ α^{2γ} near the normal), a segment with any
-//! node below 1e-300 returns 0; so Λ is relatively accurate where it exceeds 1e-280 (a
-//! quarter octave spans at most a factor 10^15 there) and absolutely below.
+//! Construction evaluates the exact Λ about 1 700 times (tens of milliseconds;
+//! BENCHMARKS.md has the measured figure).
 //!
 //! Range: the features of P22 = c(1 + r²)^{γ−2}(r² + α²)^{−γ} lie at slopes r ~ α, 1 and √γ
 //! (where ((1 + r²)/(α² + r²))^γ settles). With s₋ = min(α, 1)/max(1, √γ) and
@@ -36,6 +41,10 @@ pub(crate) const M: u32 = 2;
 const SPAN: i32 = 18;
 /// Below this Λ is treated as underflowed (see the module docs).
 const TINY: f64 = 1e-300;
+/// The largest relative error, at the segment ends, for which the table of Λ itself replaces
+/// that of ln Λ: 20× inside the required 1e-7, and near the log table's own error (about
+/// 1e-9). It admits every α at γ ≤ 3 and most at γ ≤ 5 (the census is in tests/fast.rs).
+const DIRECT_TOL: f64 = 5e-9;
 
 /// A GTR NDF prepared for fast Λ, σ, G1 and G2.
 #[derive(Clone, Debug)]
@@ -45,7 +54,9 @@ pub struct Gtr {
     k0: i32,
     lo: f64,
     hi: f64,
+    /// Λ itself (`direct`) or ln Λ on each segment.
     coef: Vec<[f64; N]>,
+    direct: bool,
     /// Λ ≈ m/a − 1/2 below `lo`.
     m: f64,
     /// Λ ≈ K/a² above `hi`.
@@ -65,8 +76,20 @@ impl Gtr {
         let s_hi = alpha.max(1.0).max(gamma.sqrt());
         let k0 = s_lo.log2().floor() as i32 - SPAN;
         let k1 = s_hi.log2().ceil() as i32 + SPAN;
-        let mut coef = fit::fit_octaves::<N>(k0, k1, M, |a| exact.lambda_cot(a).max(TINY).ln());
-        for c in coef.iter_mut() {
+        // ln Λ at every segment's Chebyshev points: the log table, and Λ itself from the
+        // same evaluations.
+        let ln_values =
+            fit::octave_node_values::<N>(k0, k1, M, |a| exact.lambda_cot(a).max(TINY).ln());
+        let direct_coef: Vec<[f64; N]> = ln_values
+            .iter()
+            .map(|v| fit::chebyshev_coefficients(&v.map(f64::exp)))
+            .collect();
+        let mut coef: Vec<[f64; N]> = ln_values.iter().map(fit::chebyshev_coefficients).collect();
+        let direct = Self::direct_is_accurate(&exact, k0, &ln_values, &direct_coef);
+        if direct {
+            coef = direct_coef;
+        }
+        for c in coef.iter_mut().filter(|_| !direct) {
             // A node at the floor: the segment reaches the underflow (see the module docs).
             if (0..N).any(|k| {
                 let s = (std::f64::consts::PI * (k as f64 + 0.5) / N as f64).cos();
@@ -84,6 +107,7 @@ impl Gtr {
             lo,
             hi,
             coef,
+            direct,
             m: (exact.lambda_cot(lo) + 0.5) * lo,
             k: exact.lambda_cot(hi) * hi * hi,
             sigma0: exact.sigma(0.0),
@@ -91,6 +115,47 @@ impl Gtr {
             dcos: Radial::new(alpha, gamma, 1.0),
             moment: Radial::new(alpha, gamma, 1.5),
         })
+    }
+
+    /// Whether the table of Λ itself is as accurate as that of ln Λ: every node value above
+    /// 1e-280 (no underflow anywhere in the table) and, at every segment boundary, both
+    /// neighbouring polynomials within [`DIRECT_TOL`] of the exact Λ there. Interpolation at
+    /// the Chebyshev points errs most at a segment's ends (the node polynomial peaks there),
+    /// so the ends measure the fit; tests/fast.rs checks the result over the whole domain.
+    fn direct_is_accurate(
+        exact: &crate::Gtr,
+        k0: i32,
+        ln_values: &[[f64; N]],
+        direct: &[[f64; N]],
+    ) -> bool {
+        if ln_values
+            .iter()
+            .flatten()
+            .any(|&v| v.is_nan() || v <= 1e-280f64.ln())
+        {
+            return false;
+        }
+        let per = 1usize << M;
+        let ok = |got: f64, want: f64| ((got - want) / want).abs() <= DIRECT_TOL;
+        for (i, c) in direct.iter().enumerate() {
+            let (e, j) = (k0 + (i / per) as i32, i % per);
+            let a = 2f64.powi(e) * (1.0 + j as f64 / per as f64);
+            let want = exact.lambda_cot(a);
+            if !ok(fit::horner(c, -1.0), want)
+                || (i > 0 && !ok(fit::horner(&direct[i - 1], 1.0), want))
+            {
+                return false;
+            }
+        }
+        let last = direct.len() - 1;
+        let end = 2f64.powi(k0 + (direct.len() / per) as i32);
+        ok(fit::horner(&direct[last], 1.0), exact.lambda_cot(end))
+    }
+
+    /// Whether the table holds Λ itself (no exponential at evaluation; moderate γ) rather
+    /// than ln Λ.
+    pub fn is_direct(&self) -> bool {
+        self.direct
     }
 
     /// α.
@@ -103,7 +168,8 @@ impl Gtr {
         self.gamma
     }
 
-    /// (first octave, table start, table end, ln Λ coefficients) for the slice functions.
+    /// (first octave, table start, table end, coefficients of Λ (`is_direct`) or ln Λ) for
+    /// the slice functions.
     pub(crate) fn table(&self) -> (i32, f64, f64, &[[f64; N]]) {
         (self.k0, self.lo, self.hi, &self.coef)
     }
@@ -112,7 +178,8 @@ impl Gtr {
     #[inline]
     pub fn lambda_cot(&self, a: f64) -> f64 {
         if a >= self.lo && a < self.hi {
-            return fit::eval(&self.coef, self.k0, M, a).exp();
+            let p = fit::eval(&self.coef, self.k0, M, a);
+            return if self.direct { p } else { p.exp() };
         }
         if a < self.lo {
             return self.m / a - 0.5;
