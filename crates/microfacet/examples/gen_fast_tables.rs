@@ -113,9 +113,22 @@ fn table<const N: usize>(
     out: &mut String,
     name: &str,
     what: &str,
-    (k0, k1, m): (i32, i32, u32),
+    range: (i32, i32, u32),
     f: impl Fn(f64) -> f64,
 ) -> f64 {
+    let (t, worst) = table_octaves::<N>(out, name, what, range, f);
+    write_rows(out, name, &t);
+    worst
+}
+
+/// [`table`] without the rows: writes the constants, returns the rows and the fit error.
+fn table_octaves<const N: usize>(
+    out: &mut String,
+    name: &str,
+    what: &str,
+    (k0, k1, m): (i32, i32, u32),
+    f: impl Fn(f64) -> f64,
+) -> (Vec<[f64; N]>, f64) {
     let t = fit_octaves::<N>(k0, k1, m, &f);
     let mut worst = 0.0f64;
     for e in k0..k1 {
@@ -132,18 +145,23 @@ fn table<const N: usize>(
     writeln!(out, "pub const {name}_K0: i32 = {k0};").unwrap();
     writeln!(out, "pub const {name}_K1: i32 = {k1};").unwrap();
     writeln!(out, "pub const {name}_M: u32 = {m};").unwrap();
+    eprintln!("{name}: {} segments, fit error {worst:.2e}", t.len());
+    (t, worst)
+}
+
+/// Writes `pub static {name}` with the rows `t`.
+fn write_rows<const N: usize>(out: &mut String, name: &str, t: &[[f64; N]]) {
     writeln!(out, "pub static {name}: [[f64; {N}]; {}] = [", t.len()).unwrap();
-    for c in &t {
+    for c in t {
         let row: Vec<String> = c.iter().map(|v| format!("{v:e}")).collect();
         writeln!(out, "    [{}],", row.join(", ")).unwrap();
     }
     writeln!(out, "];").unwrap();
-    eprintln!("{name}: {} segments, fit error {worst:.2e}", t.len());
-    worst
 }
 
 /// Fits `f` on the equal segments k = k_first ..= k_last of width h = 1/inv_h (see
-/// `fit::eval_uniform`) and writes the table; returns the largest relative error at 64 points
+/// `fit::eval_uniform`), writes the table's constants (its rows are appended to another
+/// table's by the caller) and returns the rows and the largest relative error at 64 points
 /// inside every segment.
 fn table_uniform<const N: usize>(
     out: &mut String,
@@ -151,7 +169,7 @@ fn table_uniform<const N: usize>(
     what: &str,
     (k_first, k_last, inv_h): (u32, u32, f64),
     f: impl Fn(f64) -> f64,
-) -> f64 {
+) -> (Vec<[f64; N]>, f64) {
     let t = fit_uniform::<N>(k_first, k_last, 1.0 / inv_h, &f);
     let mut worst = 0.0f64;
     for k in k_first..=k_last {
@@ -164,14 +182,8 @@ fn table_uniform<const N: usize>(
     writeln!(out, "/// {what}: segments [(k − ½)h, (k + ½)h] for k = {k_first} ..= {k_last}, h = 1/{inv_h}, degree {}; fit error {worst:.1e} (relative, 64 points per segment).", N - 1).unwrap();
     writeln!(out, "pub const {name}_K: u32 = {k_first};").unwrap();
     writeln!(out, "pub const {name}_INV_H: f64 = {inv_h:?};").unwrap();
-    writeln!(out, "pub static {name}: [[f64; {N}]; {}] = [", t.len()).unwrap();
-    for c in &t {
-        let row: Vec<String> = c.iter().map(|v| format!("{v:e}")).collect();
-        writeln!(out, "    [{}],", row.join(", ")).unwrap();
-    }
-    writeln!(out, "];").unwrap();
     eprintln!("{name}: {} segments, fit error {worst:.2e}", t.len());
-    worst
+    (t, worst)
 }
 
 fn main() {
@@ -182,21 +194,34 @@ fn main() {
     // The Exponential NDF in three ranges of z: Λ itself on octaves up to 8 and on segments
     // of width ½ up to 64 (narrow enough that e^{−z} is a polynomial there, so no exponential
     // at run time), and Λ e^z on octaves beyond (one exponential restores the factor).
-    let e2 = table::<8>(
+    let (near, e2) = table_octaves::<8>(
         &mut out,
         "EXPONENTIAL_NEAR",
         "Exponential Λ(z)",
         (-12, 3, 3),
         exponential,
     );
-    out.push('\n');
-    let e6 = table_uniform::<8>(
+    let (mid, e6) = table_uniform::<8>(
         &mut out,
         "EXPONENTIAL_MID",
         "Exponential Λ(z)",
         (16, 128, 2.0),
         exponential,
     );
+    // One array, the mid rows after the near ones, so that a slice kernel picks a row of
+    // either range by one index.
+    writeln!(
+        out,
+        "/// The near table (rows 0 .. EXPONENTIAL_MID_ROW0), then the mid table."
+    )
+    .unwrap();
+    writeln!(
+        out,
+        "pub const EXPONENTIAL_MID_ROW0: usize = {};",
+        near.len()
+    )
+    .unwrap();
+    write_rows(&mut out, "EXPONENTIAL_LAMBDA", &[near, mid].concat());
     out.push('\n');
     let e7 = table::<7>(
         &mut out,

@@ -569,12 +569,36 @@ fn slices_match_the_scalar_paths() {
             "{what}: {got:e} vs {want:e}"
         );
     };
+    // Every instruction set this CPU has: the same values as the scalar paths, and the same
+    // bits as the generic build.
+    let levels = [batch::Simd::Generic, batch::Simd::Avx2, batch::Simd::Avx512];
+    let levels: Vec<_> = levels
+        .into_iter()
+        .filter(|&l| l <= batch::detected_simd())
+        .collect();
+    println!("slices checked with {levels:?}");
     let mut out = vec![0.0; us.len()];
+    let mut generic = vec![0.0; us.len()];
     for (name, scalar, slice) in cases {
-        slice(&us, &alphas, &mut out);
-        for k in 0..us.len() {
-            same(out[k], scalar(us[k], alphas[k]), name);
+        for &level in &levels {
+            batch::cap_simd(Some(level));
+            assert_eq!(batch::simd(), level);
+            slice(&us, &alphas, &mut out);
+            if level == batch::Simd::Generic {
+                generic.copy_from_slice(&out);
+            }
+            for k in 0..us.len() {
+                same(out[k], scalar(us[k], alphas[k]), name);
+                assert!(
+                    out[k].to_bits() == generic[k].to_bits()
+                        || out[k].is_nan() && generic[k].is_nan(),
+                    "{name} {level:?}: {:e} vs generic {:e}",
+                    out[k],
+                    generic[k]
+                );
+            }
         }
+        batch::cap_simd(None);
         #[cfg(feature = "rayon")]
         {
             let mut par = vec![0.0; us.len()];
@@ -586,17 +610,19 @@ fn slices_match_the_scalar_paths() {
     }
     for (a, g) in [(0.3, 1.5), (0.01, 50.0), (2.0, 0.5)] {
         let m = gtr::Gtr::new(a, g).unwrap();
-        batch::gtr_lambda(&m, &us, &mut out);
-        for k in 0..us.len() {
-            if us[k] >= 0.0 {
-                same(out[k], m.lambda(us[k]), "GTR Λ");
+        for &level in &levels {
+            batch::cap_simd(Some(level));
+            batch::gtr_lambda(&m, &us, &mut out);
+            for k in 0..us.len() {
+                if us[k] >= 0.0 {
+                    same(out[k], m.lambda(us[k]), "GTR Λ");
+                }
             }
         }
+        batch::cap_simd(None);
     }
 }
 
-/// The rest of the f32/f64 surface: σ for GGX and Beckmann, D for Double GGX, Exponential and
-/// GTR, against the exact paths (f32 at the f32-rounded inputs).
 #[test]
 fn remaining_fast_quantities() {
     use microfacet::fast::{beckmann as fb, double_ggx as dg, exponential as ex, gtr};

@@ -11,9 +11,8 @@
 //!
 //! Throughput and the scalar-loop comparison: BENCHMARKS.md.
 
+use super::tables::EXPONENTIAL_NEAR_K0;
 use super::tables::{DGGX, DGGX_K0, DGGX_K1, DGGX_M};
-use super::tables::{EXPONENTIAL_MID, EXPONENTIAL_MID_INV_H, EXPONENTIAL_MID_K};
-use super::tables::{EXPONENTIAL_NEAR, EXPONENTIAL_NEAR_K0, EXPONENTIAL_NEAR_M};
 use super::{beckmann, double_ggx, exponential, fit, ggx};
 use std::f64::consts::PI;
 
@@ -55,6 +54,88 @@ pub fn exp_arith(x: f64) -> f64 {
     p * scale
 }
 
+/// The instruction sets the slice functions are compiled for, narrowest first.
+#[derive(Clone, Copy, Debug, PartialEq, Eq, PartialOrd, Ord, Hash)]
+pub enum Simd {
+    /// The build's target (x86-64: SSE2, two doubles per vector).
+    Generic,
+    /// AVX2 and FMA (four doubles per vector, hardware gathers).
+    Avx2,
+    /// AVX-512 F, DQ and VL (eight doubles per vector).
+    Avx512,
+}
+
+/// The widest [`Simd`] this CPU runs; the slice functions use it unless capped by
+/// [`cap_simd`].
+pub fn detected_simd() -> Simd {
+    #[cfg(target_arch = "x86_64")]
+    {
+        use std::arch::is_x86_feature_detected as has;
+        if has!("avx512f") && has!("avx512dq") && has!("avx512vl") && has!("avx2") && has!("fma") {
+            return Simd::Avx512;
+        }
+        if has!("avx2") && has!("fma") {
+            return Simd::Avx2;
+        }
+    }
+    Simd::Generic
+}
+
+thread_local! {
+    static CAP: std::cell::Cell<Option<Simd>> = const { std::cell::Cell::new(None) };
+}
+
+/// Caps the instruction set the slice functions use on the calling thread (`None`: no cap),
+/// to test or compare the paths. The `par` forms run on rayon's threads, which the cap does
+/// not reach.
+pub fn cap_simd(cap: Option<Simd>) {
+    CAP.with(|c| c.set(cap));
+}
+
+/// The instruction set a slice function called on this thread uses.
+pub fn simd() -> Simd {
+    let d = detected_simd();
+    CAP.with(|c| c.get()).map_or(d, |cap| cap.min(d))
+}
+
+/// Defines a public slice function whose body is compiled three times: for the default
+/// target, with AVX2 + FMA, and with AVX-512 (F, DQ, VL), and runs the widest the CPU has
+/// ([`simd`]; `is_x86_feature_detected!` caches its answer, so choosing costs a few loads per
+/// call, not per element). The body is the same source in each; only the vector width the
+/// compiler may use changes, and Rust never contracts a·b + c into an FMA by itself, so every
+/// path returns the same bits (tests/fast.rs compares them).
+macro_rules! dispatched {
+    ($(#[$attr:meta])* pub fn $name:ident($($arg:ident: $ty:ty),* $(,)?) $body:block) => {
+        $(#[$attr])*
+        pub fn $name($($arg: $ty),*) {
+            #[inline(always)]
+            fn generic($($arg: $ty),*) $body
+            #[cfg(target_arch = "x86_64")]
+            {
+                #[target_feature(enable = "avx512f,avx512dq,avx512vl,avx2,fma")]
+                fn avx512($($arg: $ty),*) {
+                    generic($($arg),*)
+                }
+                #[target_feature(enable = "avx2,fma")]
+                fn avx2($($arg: $ty),*) {
+                    generic($($arg),*)
+                }
+                match simd() {
+                    // SAFETY: `simd` returns Avx512 only when the CPU has every feature
+                    // `avx512` is compiled for (`detected_simd` checks each).
+                    #[allow(unsafe_code)]
+                    Simd::Avx512 => return unsafe { avx512($($arg),*) },
+                    // SAFETY: `simd` returns Avx2 only when the CPU has AVX2 and FMA.
+                    #[allow(unsafe_code)]
+                    Simd::Avx2 => return unsafe { avx2($($arg),*) },
+                    Simd::Generic => {}
+                }
+            }
+            generic($($arg),*)
+        }
+    };
+}
+
 /// Runs `kernel` over chunks of [`LANES`] and then the tail; `fix(i)` reports whether lane i
 /// needs the scalar path, which `scalar` then supplies.
 #[inline(always)]
@@ -94,6 +175,7 @@ fn chunks(
     }
 }
 
+dispatched! {
 /// GGX D.
 pub fn ggx_d(u: &[f64], alpha: &[f64], out: &mut [f64]) {
     chunks(
@@ -109,7 +191,9 @@ pub fn ggx_d(u: &[f64], alpha: &[f64], out: &mut [f64]) {
         ggx::d,
     );
 }
+}
 
+dispatched! {
 /// GGX Λ.
 pub fn ggx_lambda(u: &[f64], alpha: &[f64], out: &mut [f64]) {
     chunks(
@@ -120,12 +204,16 @@ pub fn ggx_lambda(u: &[f64], alpha: &[f64], out: &mut [f64]) {
         ggx::lambda,
     );
 }
+}
 
+dispatched! {
 /// GGX G1.
 pub fn ggx_g1(u: &[f64], alpha: &[f64], out: &mut [f64]) {
     chunks(u, alpha, out, |u, a| (ggx::g1(u, a), false), ggx::g1);
 }
+}
 
+dispatched! {
 /// Beckmann D (0 where the exact D is below about 1e-300, as the scalar path).
 pub fn beckmann_d(u: &[f64], alpha: &[f64], out: &mut [f64]) {
     chunks(
@@ -143,7 +231,9 @@ pub fn beckmann_d(u: &[f64], alpha: &[f64], out: &mut [f64]) {
         beckmann::d,
     );
 }
+}
 
+dispatched! {
 /// Double GGX Λ.
 pub fn double_ggx_lambda(u: &[f64], alpha: &[f64], out: &mut [f64]) {
     let lo = 2f64.powi(DGGX_K0);
@@ -159,8 +249,10 @@ pub fn double_ggx_lambda(u: &[f64], alpha: &[f64], out: &mut [f64]) {
         double_ggx::lambda,
     );
 }
+}
 
-/// Exponential Λ (the two exponential-free tables, selected per lane; the rest of z
+dispatched! {
+/// Exponential Λ (the two exponential-free tables, one row picked per lane; the rest of z
 /// (z < 2^−12 or z ≥ 64) by the scalar path).
 pub fn exponential_lambda(u: &[f64], alpha: &[f64], out: &mut [f64]) {
     let lo = 2f64.powi(EXPONENTIAL_NEAR_K0);
@@ -170,25 +262,15 @@ pub fn exponential_lambda(u: &[f64], alpha: &[f64], out: &mut [f64]) {
         out,
         |u, a| {
             let z = (u + u) / (a * ((1.0 - u) * (1.0 + u)).sqrt());
-            let near = fit::eval(
-                &EXPONENTIAL_NEAR,
-                EXPONENTIAL_NEAR_K0,
-                EXPONENTIAL_NEAR_M,
-                z,
-            );
-            let mid = fit::eval_uniform(
-                &EXPONENTIAL_MID,
-                EXPONENTIAL_MID_K,
-                EXPONENTIAL_MID_INV_H,
-                z,
-            );
-            let v = if z < exponential::Z_NEAR { near } else { mid };
+            let v = exponential::lambda_z_tables(z);
             (v, !(z >= lo && z < exponential::Z_MID))
         },
         exponential::lambda,
     );
 }
+}
 
+dispatched! {
 /// Λ of a prepared GTR material for every u (one α, γ).
 pub fn gtr_lambda(g: &super::gtr::Gtr, u: &[f64], out: &mut [f64]) {
     // One loop per kind of table, so that neither tests the kind per element.
@@ -198,11 +280,15 @@ pub fn gtr_lambda(g: &super::gtr::Gtr, u: &[f64], out: &mut [f64]) {
         gtr_chunks::<false>(g, u, out);
     }
 }
+}
 
 /// [`gtr_lambda`] for a table of Λ (`DIRECT`) or of ln Λ.
 #[inline(always)]
 fn gtr_chunks<const DIRECT: bool>(g: &super::gtr::Gtr, u: &[f64], out: &mut [f64]) {
     let (k0, lo, hi, coef) = g.table();
+    // Never fails (a table has segments); it tells the compiler that `fit::eval`'s clamped
+    // index is in bounds, so the loop below has no panic branch and vectorises.
+    assert!(!coef.is_empty());
     let n = u.len();
     assert!(out.len() >= n, "slice lengths differ");
     let (u_c, u_t) = u.split_at(n - n % LANES);

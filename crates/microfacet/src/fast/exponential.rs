@@ -17,8 +17,8 @@
 //!   accurate; it underflows to 0 near z = 745.
 
 use super::tables::{EXPONENTIAL_FAR, EXPONENTIAL_FAR_K0, EXPONENTIAL_FAR_K1, EXPONENTIAL_FAR_M};
-use super::tables::{EXPONENTIAL_MID, EXPONENTIAL_MID_INV_H, EXPONENTIAL_MID_K};
-use super::tables::{EXPONENTIAL_NEAR, EXPONENTIAL_NEAR_K0, EXPONENTIAL_NEAR_M};
+use super::tables::{EXPONENTIAL_LAMBDA, EXPONENTIAL_MID_INV_H, EXPONENTIAL_MID_K};
+use super::tables::{EXPONENTIAL_MID_ROW0, EXPONENTIAL_NEAR_K0, EXPONENTIAL_NEAR_M};
 use super::{fit, Real};
 use std::f64::consts::{FRAC_1_PI, FRAC_2_PI};
 
@@ -32,31 +32,38 @@ const _: () = {
     assert!(EXPONENTIAL_NEAR_K1 == 3 && EXPONENTIAL_FAR_K0 == 6); // 2^3 = Z_NEAR, 2^6 = Z_MID
                                                                   // Mid rows k = 16 ..= 128 at h = ½ cover [7.75, 64.25].
     assert!(EXPONENTIAL_MID_INV_H == 2.0 && EXPONENTIAL_MID_K == 16);
-    assert!(EXPONENTIAL_MID.len() == 113);
+    assert!(EXPONENTIAL_LAMBDA.len() - EXPONENTIAL_MID_ROW0 == 113);
 };
+
+/// Λ(z) for 2^−12 ≤ z < 64 from the exponential-free tables without a branch (the range
+/// picks the row and s by selects), for the slice kernels; meaningless outside.
+#[inline(always)]
+pub(super) fn lambda_z_tables(z: f64) -> f64 {
+    let (i_near, s_near) = fit::octave_segment(EXPONENTIAL_NEAR_K0, EXPONENTIAL_NEAR_M, z);
+    let (i_mid, s_mid) = fit::uniform_segment(EXPONENTIAL_MID_K, EXPONENTIAL_MID_INV_H, z);
+    let near = z < Z_NEAR;
+    let i = if near {
+        i_near
+    } else {
+        EXPONENTIAL_MID_ROW0 + i_mid
+    };
+    let s = if near { s_near } else { s_mid };
+    fit::horner(&EXPONENTIAL_LAMBDA[i.min(EXPONENTIAL_LAMBDA.len() - 1)], s)
+}
 
 /// Λ(z), z = 2 cot θ/α ≥ 0 (+∞ at z = 0, NaN for NaN).
 #[inline]
 pub fn lambda_z(z: f64) -> f64 {
     // The common cases first, each one table lookup and no exponential.
+    let (near, mid) = EXPONENTIAL_LAMBDA.split_at(EXPONENTIAL_MID_ROW0);
     if z < Z_NEAR {
         if z >= fit::pow2(EXPONENTIAL_NEAR_K0) {
-            return fit::eval(
-                &EXPONENTIAL_NEAR,
-                EXPONENTIAL_NEAR_K0,
-                EXPONENTIAL_NEAR_M,
-                z,
-            );
+            return fit::eval(near, EXPONENTIAL_NEAR_K0, EXPONENTIAL_NEAR_M, z);
         }
         return FRAC_2_PI / z - 0.5 + 0.5 * FRAC_1_PI * z;
     }
     if z < Z_MID {
-        return fit::eval_uniform(
-            &EXPONENTIAL_MID,
-            EXPONENTIAL_MID_K,
-            EXPONENTIAL_MID_INV_H,
-            z,
-        );
+        return fit::eval_uniform(mid, EXPONENTIAL_MID_K, EXPONENTIAL_MID_INV_H, z);
     }
     if z < fit::pow2(EXPONENTIAL_FAR_K1) {
         return fit::eval(&EXPONENTIAL_FAR, EXPONENTIAL_FAR_K0, EXPONENTIAL_FAR_M, z) * (-z).exp();

@@ -29,16 +29,22 @@ pub fn pow2(k: i32) -> f64 {
 /// meaningless, so callers range-check or redo such x.
 #[inline(always)]
 pub fn eval<const N: usize>(coef: &[[f64; N]], k0: i32, m: u32, x: f64) -> f64 {
+    let (idx, s) = octave_segment(k0, m, x);
+    horner(&coef[idx.min(coef.len() - 1)], s)
+}
+
+/// The row (unclamped: out of range for x outside the table) and s of x in an octave table
+/// (see [`eval`]).
+#[inline(always)]
+pub fn octave_segment(k0: i32, m: u32, x: f64) -> (usize, f64) {
     let bits = x.to_bits();
     let shift = 52 - m;
-    let idx =
-        ((bits >> shift).wrapping_sub(((1023 + k0) as u64) << m) as usize).min(coef.len() - 1);
+    let idx = (bits >> shift).wrapping_sub(((1023 + k0) as u64) << m) as usize;
     let x0 = f64::from_bits(bits & !((1u64 << shift) - 1));
     // 2/h = 2^{1 + m − e} for x ∈ [2^e, 2^{e+1}); its biased exponent is 2047 + m − E.
     let big_e = bits >> 52;
     let two_over_h = f64::from_bits((2047 + m as u64).wrapping_sub(big_e) << 52);
-    let s = (x - x0) * two_over_h - 1.0;
-    horner(&coef[idx], s)
+    (idx, (x - x0) * two_over_h - 1.0)
 }
 
 /// Evaluates a table of equal segments at x: row i covers [(k − ½)h, (k + ½)h] with
@@ -49,14 +55,20 @@ pub fn eval<const N: usize>(coef: &[[f64; N]], k0: i32, m: u32, x: f64) -> f64 {
 /// clamped into the table and the value is meaningless, so callers range-check.
 #[inline(always)]
 pub fn eval_uniform<const N: usize>(coef: &[[f64; N]], k_first: u32, inv_h: f64, x: f64) -> f64 {
+    let (idx, s) = uniform_segment(k_first, inv_h, x);
+    horner(&coef[idx.min(coef.len() - 1)], s)
+}
+
+/// The row (unclamped) and s of x in a table of equal segments (see [`eval_uniform`]).
+#[inline(always)]
+pub fn uniform_segment(k_first: u32, inv_h: f64, x: f64) -> (usize, f64) {
     // 1.5·2^52: adding it rounds y to an integer held in the low mantissa bits (|y| < 2^31).
     const MAGIC: f64 = 6_755_399_441_055_744.0;
     let y = x * inv_h;
     let t = y + MAGIC;
-    let idx = ((t.to_bits() as u32).wrapping_sub(k_first) as usize).min(coef.len() - 1);
+    let idx = (t.to_bits() as u32).wrapping_sub(k_first) as usize;
     // t − MAGIC = k exactly, and y − k is exact (|y − k| ≤ ½).
-    let s = 2.0 * (y - (t - MAGIC));
-    horner(&coef[idx], s)
+    (idx, 2.0 * (y - (t - MAGIC)))
 }
 
 /// Chebyshev interpolation of `f` on the equal segments of [`eval_uniform`]: rows for
