@@ -52,18 +52,26 @@ pub(super) fn lambda_z_tables(z: f64) -> f64 {
 }
 
 /// Λ(z), z = 2 cot θ/α ≥ 0 (+∞ at z = 0, NaN for NaN).
-#[inline]
+#[inline(always)]
 pub fn lambda_z(z: f64) -> f64 {
-    // The common cases first, each one table lookup and no exponential.
+    // The common cases (99 % of random directions and roughnesses) inline, each one table
+    // lookup and no exponential; the rest out of line, to keep the inlined body small.
     let (near, mid) = EXPONENTIAL_LAMBDA.split_at(EXPONENTIAL_MID_ROW0);
-    if z < Z_NEAR {
-        if z >= fit::pow2(EXPONENTIAL_NEAR_K0) {
-            return fit::eval(near, EXPONENTIAL_NEAR_K0, EXPONENTIAL_NEAR_M, z);
-        }
-        return FRAC_2_PI / z - 0.5 + 0.5 * FRAC_1_PI * z;
+    if z < Z_NEAR && z >= fit::pow2(EXPONENTIAL_NEAR_K0) {
+        return fit::eval(near, EXPONENTIAL_NEAR_K0, EXPONENTIAL_NEAR_M, z);
     }
-    if z < Z_MID {
+    if z >= Z_NEAR && z < Z_MID {
         return fit::eval_uniform(mid, EXPONENTIAL_MID_K, EXPONENTIAL_MID_INV_H, z);
+    }
+    lambda_z_ends(z)
+}
+
+/// Λ(z) for z < 2^−12, z ≥ 64 and NaN.
+#[cold]
+#[inline(never)]
+fn lambda_z_ends(z: f64) -> f64 {
+    if z < Z_NEAR {
+        return FRAC_2_PI / z - 0.5 + 0.5 * FRAC_1_PI * z;
     }
     if z < fit::pow2(EXPONENTIAL_FAR_K1) {
         return fit::eval(&EXPONENTIAL_FAR, EXPONENTIAL_FAR_K0, EXPONENTIAL_FAR_M, z) * (-z).exp();
@@ -115,7 +123,7 @@ pub fn g2<F: Real>(u_o: F, u_i: F, alpha: F) -> F {
 }
 
 /// σ(u) for u ∈ [−1, 1]: u(1 + Λ(u)) above the horizon, |u| Λ(|u|) below, σ(0) = α/π.
-#[inline]
+#[inline(always)]
 pub fn sigma<F: Real>(u: F, alpha: F) -> F {
     let (u, a) = (u.to_f64(), alpha.to_f64());
     F::from_f64(super::sigma_from_lambda(u, a * FRAC_1_PI, |v| lambda(v, a)))

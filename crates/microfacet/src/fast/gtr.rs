@@ -175,12 +175,19 @@ impl Gtr {
     }
 
     /// Λ at a = cot θ ≥ 0 (+∞ at a = 0, 0 at a = +∞).
-    #[inline]
+    #[inline(always)]
     pub fn lambda_cot(&self, a: f64) -> f64 {
         if a >= self.lo && a < self.hi {
             let p = fit::eval(&self.coef, self.k0, M, a);
             return if self.direct { p } else { p.exp() };
         }
+        self.lambda_cot_ends(a)
+    }
+
+    /// Λ beyond the table (the asymptotic ends; out of line, rarely reached) and NaN.
+    #[cold]
+    #[inline(never)]
+    fn lambda_cot_ends(&self, a: f64) -> f64 {
         if a < self.lo {
             return self.m / a - 0.5;
         }

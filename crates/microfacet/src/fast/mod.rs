@@ -57,15 +57,16 @@ fn sigma_from_lambda(u: f64, s0: f64, lambda: impl Fn(f64) -> f64) -> f64 {
     // Below 1e-150, σ(u) = σ(0) + u/2 + O(u²) (σ(u) − σ(−u) = u) is exact to double precision,
     // and uΛ(u) would overflow in Λ first.
     if u.abs() < 1e-150 {
-        s0 + 0.5 * u
-    } else if u > 0.0 {
-        let u = u.min(1.0);
-        u + u * lambda(u)
-    } else if u < 0.0 {
-        let v = (-u).min(1.0);
-        v * lambda(v)
+        return s0 + 0.5 * u;
+    }
+    // One call of Λ for both signs (so that it inlines); NaN stays NaN (the comparison is
+    // false, so v is NaN).
+    let v = if u.abs() > 1.0 { 1.0 } else { u.abs() };
+    let below = v * lambda(v);
+    if u > 0.0 {
+        v + below
     } else {
-        u
+        below
     }
 }
 
