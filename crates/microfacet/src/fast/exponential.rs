@@ -60,7 +60,7 @@ pub fn lambda_z(z: f64) -> f64 {
     if z < Z_NEAR && z >= fit::pow2(EXPONENTIAL_NEAR_K0) {
         return fit::eval(near, EXPONENTIAL_NEAR_K0, EXPONENTIAL_NEAR_M, z);
     }
-    if z >= Z_NEAR && z < Z_MID {
+    if (Z_NEAR..Z_MID).contains(&z) {
         return fit::eval_uniform(mid, EXPONENTIAL_MID_K, EXPONENTIAL_MID_INV_H, z);
     }
     lambda_z_ends(z)
