@@ -285,10 +285,9 @@ pub fn gtr_lambda(g: &super::gtr::Gtr, u: &[f64], out: &mut [f64]) {
 /// [`gtr_lambda`] for a table of Λ (`DIRECT`) or of ln Λ.
 #[inline(always)]
 fn gtr_chunks<const DIRECT: bool>(g: &super::gtr::Gtr, u: &[f64], out: &mut [f64]) {
-    let (k0, lo, hi, coef) = g.table();
-    // Never fails (a table has segments); it tells the compiler that `fit::eval`'s clamped
-    // index is in bounds, so the loop below has no panic branch and vectorises.
-    assert!(!coef.is_empty());
+    // Never fails; it tells the compiler that the clamped row is in bounds, so the loop
+    // below has no panic branch and vectorises.
+    assert!(g.rows() > 0);
     let n = u.len();
     assert!(out.len() >= n, "slice lengths differ");
     let (u_c, u_t) = u.split_at(n - n % LANES);
@@ -297,9 +296,9 @@ fn gtr_chunks<const DIRECT: bool>(g: &super::gtr::Gtr, u: &[f64], out: &mut [f64
         let mut bad = [false; LANES];
         for l in 0..LANES {
             let u = uc[l];
-            let a = u / ((1.0 - u) * (1.0 + u)).sqrt();
-            let p = fit::eval(coef, k0, super::gtr::M, a);
-            bad[l] = !(a >= lo && a < hi);
+            let normal_side = u >= 0.5;
+            let (p, inside) = g.table_at(normal_side, if normal_side { 1.0 - u } else { u });
+            bad[l] = !inside;
             if DIRECT {
                 oc[l] = p;
             } else {

@@ -2,29 +2,37 @@
 //!
 //! GTR is not shape invariant: Λ depends on cot θ, α and γ, a three-parameter function no
 //! static table covers at 1e-7. A renderer fixes (α, γ) per material, so [`Gtr::new`] fits
-//! Λ(a), a = cot θ, for that material by Chebyshev interpolation of the exact Smith integral
-//! ([`crate::Gtr::lambda_cot`]) on quarter octaves (degree 8). From one set of exact values
-//! it builds two tables and keeps one:
-//! * **Λ itself**, if it is accurate: within 5e-9 at every segment end (`DIRECT_TOL`), and
-//!   no value near underflow. Evaluation is then a square root, a division and a degree-8
-//!   polynomial, with no exponential. This holds for every α at γ ≤ 3 and for most α at
-//!   γ ≤ 5 ([`Gtr::is_direct`] tells which; tests/fast.rs records the census).
-//! * **ln Λ** otherwise, plus one exponential at evaluation. For large γ and small α, Λ falls
-//!   like a^{−2γ} near the normal: by 10^15 across one quarter octave at γ = 100. No short
-//!   polynomial follows that in relative terms, while ln Λ stays smooth. Where Λ underflows
-//!   (γ ≳ 30 with small α: Λ ~ α^{2γ} near the normal), a segment with any node below
-//!   1e-300 returns 0. So Λ is relatively accurate where it exceeds 1e-280 (a quarter
-//!   octave spans at most a factor 10^15 there) and absolutely below.
+//! Λ for that material by Chebyshev interpolation of the exact Smith integral
+//! ([`crate::Gtr::lambda_cot`]), degree 8, on octave segments of t, in two tables:
+//! * the **u table**, t = u = cos θ < ½ (the grazing side), quarter octaves;
+//! * the **w table**, t = w = 1 − u ≤ ½ (the normal side; 1 − u is exact there), half
+//!   octaves (w ~ 1/(2 cot²θ) near the normal, so that is a quarter octave of cot θ).
 //!
-//! Construction evaluates the exact Λ about 1 700 times (tens of milliseconds;
-//! BENCHMARKS.md has the measured figure).
+//! So Λ(u) needs no square root and no division: the side picks the table by selects
+//! (no branch to mispredict on random directions), then one polynomial. From one set of
+//! exact values [`Gtr::new`] builds each table twice and keeps one kind:
+//! * **Λ itself**, if it is accurate: within 5e-9 at every segment end (`DIRECT_TOL`), and
+//!   no value near underflow. Evaluation is then the polynomial alone. This holds for every
+//!   α at γ ≤ 3 and for most α at γ ≤ 5 ([`Gtr::is_direct`] tells which; tests/fast.rs
+//!   records the census).
+//! * **ln Λ** otherwise, plus one exponential at evaluation. For large γ and small α, Λ falls
+//!   like cot^{−2γ}θ near the normal: by 10^15 across one quarter octave of cot θ at γ = 100.
+//!   No short polynomial follows that in relative terms, while ln Λ stays smooth. Where Λ
+//!   underflows (γ ≳ 30 with small α: Λ ~ α^{2γ} near the normal), a segment with any node
+//!   below 1e-300 returns 0. So Λ is relatively accurate where it exceeds 1e-280 (a
+//!   segment spans at most a factor 10^15 there) and absolutely below.
+//!
+//! Construction evaluates the exact Λ about 1 500 times (tens of milliseconds;
+//! BENCHMARKS.md has the measured figure). [`Gtr::lambda_cot`] takes cot θ = a directly and
+//! forms u = a/r and w = 1/(r(r + a)), r = √(1 + a²), both without cancellation.
 //!
 //! Range: the features of P22 = c(1 + r²)^{γ−2}(r² + α²)^{−γ} lie at slopes r ~ α, 1 and √γ
 //! (where ((1 + r²)/(α² + r²))^γ settles). With s₋ = min(α, 1)/max(1, √γ) and
-//! s₊ = max(α, 1, √γ), the table spans a ∈ [2^−18 s₋, 2^18 s₊]; beyond it
-//! * a > 2^18 s₊ (near the normal, P22 ~ c r⁻⁴ past every feature): Λ = K/a², K matched at
-//!   the end (the next term is O((s₊/a)²) relative, below 1e-10);
-//! * a < 2^−18 s₋ (grazing): Λ = m/a − 1/2, m matched at the end (next term O((a/s₋)²)).
+//! s₊ = max(α, 1, √γ), the tables span cot θ from about 2^−18 s₋ (u table) to 2^18 s₊
+//! (w table); beyond them
+//! * near the normal (P22 ~ c r⁻⁴ past every feature): Λ = K/a², K matched at the end (the
+//!   next term is O((s₊/a)²) relative, below 1e-10);
+//! * grazing: Λ = m/a − 1/2, m matched at the end (next term O((a/s₋)²)).
 //!
 //! Accuracy: relative error ≤ 1e-7 required; tests/fast.rs measures it over u ∈ (0, 1] for
 //! α ∈ [1e-3, 1e3], γ ∈ [0.1, 100].
@@ -37,6 +45,9 @@ use crate::ndf::Ndf;
 const N: usize = 9;
 /// 2^M segments per octave.
 pub(crate) const M: u32 = 2;
+/// 2^M_W segments per octave of w = 1 − u: w ~ 1/(2a²) near the normal, so an octave of w
+/// is half an octave of a, and M_W = M − 1 keeps the resolution in a.
+const M_W: u32 = M - 1;
 /// The table reaches 2^SPAN beyond the outermost feature scale on each side.
 const SPAN: i32 = 18;
 /// Below this Λ is treated as underflowed (see the module docs).
@@ -46,20 +57,35 @@ const TINY: f64 = 1e-300;
 /// 1e-9). It admits every α at γ ≤ 3 and most at γ ≤ 5 (the census is in tests/fast.rs).
 const DIRECT_TOL: f64 = 5e-9;
 
+/// a = cot θ from u = cos θ.
+fn a_of_u(u: f64) -> f64 {
+    u / ((1.0 - u) * (1.0 + u)).sqrt()
+}
+
+/// a = cot θ from w = 1 − cos θ (accurate near the normal, where u would cancel).
+fn a_of_w(w: f64) -> f64 {
+    (1.0 - w) / (w * (2.0 - w)).sqrt()
+}
+
 /// A GTR NDF prepared for fast Λ, σ, G1 and G2.
 #[derive(Clone, Debug)]
 pub struct Gtr {
     alpha: f64,
     gamma: f64,
-    k0: i32,
-    lo: f64,
-    hi: f64,
-    /// Λ itself (`direct`) or ln Λ on each segment.
+    /// The rows of the u table (t = u < ½, octaves from 2^u_k0), then those of the w table
+    /// (t = 1 − u ≤ ½, octaves from 2^w_k0), from row `w_row0`.
     coef: Vec<[f64; N]>,
+    u_k0: i32,
+    w_k0: i32,
+    w_row0: usize,
+    /// 2^u_k0 and 2^w_k0: below them t is past the tables (the asymptotic ends).
+    u_lo: f64,
+    w_lo: f64,
+    /// Whether `coef` holds Λ itself or ln Λ.
     direct: bool,
-    /// Λ ≈ m/a − 1/2 below `lo`.
+    /// Λ ≈ m/a − 1/2 below `u_lo` (a = cot θ).
     m: f64,
-    /// Λ ≈ K/a² above `hi`.
+    /// Λ ≈ K/a² below `w_lo`.
     k: f64,
     sigma0: f64,
     exact: crate::Gtr,
@@ -74,18 +100,35 @@ impl Gtr {
         let exact = crate::Gtr::new(alpha, gamma)?;
         let s_lo = alpha.min(1.0) / gamma.sqrt().max(1.0);
         let s_hi = alpha.max(1.0).max(gamma.sqrt());
-        let k0 = s_lo.log2().floor() as i32 - SPAN;
-        let k1 = s_hi.log2().ceil() as i32 + SPAN;
-        // ln Λ at every segment's Chebyshev points: the log table, and Λ itself from the
+        // Grazing side: u ≈ a below the features, from 2^−SPAN s₋ up to u = ½.
+        let u_k0 = s_lo.log2().floor() as i32 - SPAN;
+        // Normal side: w = 1 − u ≈ 1/(2a²) past the features, from a ≥ 2^SPAN s₊ up to
+        // w = 1 (the last octave serves only w = ½, i.e. u = ½, itself).
+        let w_k0 = -2 * (SPAN + s_hi.log2().ceil() as i32) - 1;
+        let ln_lambda = |a: f64| exact.lambda_cot(a).max(TINY).ln();
+        // ln Λ at every segment's Chebyshev points: the log tables, and Λ itself from the
         // same evaluations.
-        let ln_values =
-            fit::octave_node_values::<N>(k0, k1, M, |a| exact.lambda_cot(a).max(TINY).ln());
+        let mut ln_values = fit::octave_node_values::<N>(u_k0, -1, M, |u| ln_lambda(a_of_u(u)));
+        let w_row0 = ln_values.len();
+        ln_values.extend(fit::octave_node_values::<N>(w_k0, -1, M_W, |w| {
+            ln_lambda(a_of_w(w))
+        }));
+        // w = ½ itself (u = ½) lies in the next octave, at the start (s = −1) of its first
+        // segment: one more row, constant, holding the exact value there (the rest of that
+        // octave, up to the singular w = 1, is never read).
+        ln_values.push([ln_lambda(a_of_w(0.5)); N]);
         let direct_coef: Vec<[f64; N]> = ln_values
             .iter()
             .map(|v| fit::chebyshev_coefficients(&v.map(f64::exp)))
             .collect();
         let mut coef: Vec<[f64; N]> = ln_values.iter().map(fit::chebyshev_coefficients).collect();
-        let direct = Self::direct_is_accurate(&exact, k0, &ln_values, &direct_coef);
+        let last = ln_values.len() - 1; // the constant row at w = ½
+        let direct = !ln_values
+            .iter()
+            .flatten()
+            .any(|&v| v.is_nan() || v <= 1e-280f64.ln())
+            && Self::direct_is_accurate(&exact, (u_k0, M), &direct_coef[..w_row0], a_of_u)
+            && Self::direct_is_accurate(&exact, (w_k0, M_W), &direct_coef[w_row0..last], a_of_w);
         if direct {
             coef = direct_coef;
         }
@@ -99,17 +142,20 @@ impl Gtr {
                 c[0] = -800.0; // e^{−800} = 0
             }
         }
-        let (lo, hi) = (2f64.powi(k0), 2f64.powi(k1));
+        let (u_lo, w_lo) = (2f64.powi(u_k0), 2f64.powi(w_k0));
+        let (a_lo, a_hi) = (a_of_u(u_lo), a_of_w(w_lo));
         Ok(Gtr {
             alpha,
             gamma,
-            k0,
-            lo,
-            hi,
             coef,
+            u_k0,
+            w_k0,
+            w_row0,
+            u_lo,
+            w_lo,
             direct,
-            m: (exact.lambda_cot(lo) + 0.5) * lo,
-            k: exact.lambda_cot(hi) * hi * hi,
+            m: (exact.lambda_cot(a_lo) + 0.5) * a_lo,
+            k: exact.lambda_cot(a_hi) * a_hi * a_hi,
             sigma0: exact.sigma(0.0),
             exact,
             dcos: Radial::new(alpha, gamma, 1.0),
@@ -117,39 +163,28 @@ impl Gtr {
         })
     }
 
-    /// Whether the table of Λ itself is as accurate as that of ln Λ: every node value above
-    /// 1e-280 (no underflow anywhere in the table) and, at every segment boundary, both
-    /// neighbouring polynomials within [`DIRECT_TOL`] of the exact Λ there. Interpolation at
-    /// the Chebyshev points errs most at a segment's ends (the node polynomial peaks there),
-    /// so the ends measure the fit; tests/fast.rs checks the result over the whole domain.
+    /// Whether one table of Λ itself (first octave 2^k0, variable t with a = `a_of(t)`) is as
+    /// accurate as that of ln Λ: at every segment boundary both neighbouring polynomials
+    /// within [`DIRECT_TOL`] of the exact Λ there. Interpolation at the Chebyshev points errs
+    /// most at a segment's ends (the node polynomial peaks there), so the ends measure the
+    /// fit; tests/fast.rs checks the result over the whole domain.
     fn direct_is_accurate(
         exact: &crate::Gtr,
-        k0: i32,
-        ln_values: &[[f64; N]],
+        (k0, m): (i32, u32),
         direct: &[[f64; N]],
+        a_of: fn(f64) -> f64,
     ) -> bool {
-        if ln_values
-            .iter()
-            .flatten()
-            .any(|&v| v.is_nan() || v <= 1e-280f64.ln())
-        {
-            return false;
-        }
-        let per = 1usize << M;
+        let per = 1usize << m;
+        // Row i covers [t_i, t_{i+1}); Λ at each boundary once.
+        let t = |i: usize| 2f64.powi(k0 + (i / per) as i32) * (1.0 + (i % per) as f64 / per as f64);
+        let want: Vec<f64> = (0..=direct.len())
+            .map(|i| exact.lambda_cot(a_of(t(i))))
+            .collect();
         let ok = |got: f64, want: f64| ((got - want) / want).abs() <= DIRECT_TOL;
-        for (i, c) in direct.iter().enumerate() {
-            let (e, j) = (k0 + (i / per) as i32, i % per);
-            let a = 2f64.powi(e) * (1.0 + j as f64 / per as f64);
-            let want = exact.lambda_cot(a);
-            if !ok(fit::horner(c, -1.0), want)
-                || (i > 0 && !ok(fit::horner(&direct[i - 1], 1.0), want))
-            {
-                return false;
-            }
-        }
-        let last = direct.len() - 1;
-        let end = 2f64.powi(k0 + (direct.len() / per) as i32);
-        ok(fit::horner(&direct[last], 1.0), exact.lambda_cot(end))
+        direct
+            .iter()
+            .enumerate()
+            .all(|(i, c)| ok(fit::horner(c, -1.0), want[i]) && ok(fit::horner(c, 1.0), want[i + 1]))
     }
 
     /// Whether the table holds Λ itself (no exponential at evaluation; moderate γ) rather
@@ -168,27 +203,49 @@ impl Gtr {
         self.gamma
     }
 
-    /// (first octave, table start, table end, coefficients of Λ (`is_direct`) or ln Λ) for
-    /// the slice functions.
-    pub(crate) fn table(&self) -> (i32, f64, f64, &[[f64; N]]) {
-        (self.k0, self.lo, self.hi, &self.coef)
+    /// The table's value (Λ, or ln Λ if not [`Gtr::is_direct`]) at t = u (`normal_side`
+    /// false) or t = 1 − u, and whether t is inside the table (false for NaN and past the
+    /// ends). No branch: the side picks the row by selects, so that random directions do not
+    /// mispredict and the slice kernels vectorise.
+    #[inline(always)]
+    pub(crate) fn table_at(&self, normal_side: bool, t: f64) -> (f64, bool) {
+        let (k0, m, row0, lo) = if normal_side {
+            (self.w_k0, M_W, self.w_row0, self.w_lo)
+        } else {
+            (self.u_k0, M, 0, self.u_lo)
+        };
+        let (i, s) = fit::octave_segment(k0, m, t);
+        let row = row0.wrapping_add(i).min(self.coef.len() - 1);
+        (fit::horner(&self.coef[row], s), t >= lo)
+    }
+
+    /// Rows in the tables (never 0; asserting that lets the slice kernel's row clamp drop
+    /// its bounds check, so the loop vectorises).
+    pub(crate) fn rows(&self) -> usize {
+        self.coef.len()
     }
 
     /// Λ at a = cot θ ≥ 0 (+∞ at a = 0, 0 at a = +∞).
     #[inline(always)]
     pub fn lambda_cot(&self, a: f64) -> f64 {
-        if a >= self.lo && a < self.hi {
-            let p = fit::eval(&self.coef, self.k0, M, a);
+        // u = a/r and w = 1 − u = 1/(r(r + a)), r = √(1 + a²), both without cancellation;
+        // past 1e150 (a² would overflow) and for NaN the ends answer.
+        let r = (1.0 + a * a).sqrt();
+        let (u, w) = (a / r, 1.0 / (r * (r + a)));
+        let normal_side = u >= 0.5;
+        let (p, inside) = self.table_at(normal_side, if normal_side { w } else { u });
+        if inside && a < 1e150 {
             return if self.direct { p } else { p.exp() };
         }
         self.lambda_cot_ends(a)
     }
 
-    /// Λ beyond the table (the asymptotic ends; out of line, rarely reached) and NaN.
+    /// Λ beyond the tables (the asymptotic ends; out of line, rarely reached) and NaN. The
+    /// tables reach past a = 1 on both sides, so a < 1 here is the grazing end.
     #[cold]
     #[inline(never)]
     fn lambda_cot_ends(&self, a: f64) -> f64 {
-        if a < self.lo {
+        if a < 1.0 {
             return self.m / a - 0.5;
         }
         if a.is_nan() {
@@ -204,11 +261,22 @@ impl Gtr {
         F::from_f64(self.exact.d(u.to_f64()))
     }
 
-    /// Λ(u) for 0 ≤ u ≤ 1.
+    /// Λ(u) for 0 ≤ u ≤ 1: the u table below u = ½, the w table at w = 1 − u (exact) from
+    /// there; no square root or division on the way.
     #[inline]
     pub fn lambda<F: Real>(&self, u: F) -> F {
         let u = u.to_f64();
-        F::from_f64(self.lambda_cot(u / ((1.0 - u) * (1.0 + u)).sqrt()))
+        let normal_side = u >= 0.5;
+        let (p, inside) = self.table_at(normal_side, if normal_side { 1.0 - u } else { u });
+        F::from_f64(if inside {
+            if self.direct {
+                p
+            } else {
+                p.exp()
+            }
+        } else {
+            self.lambda_cot_ends(u / ((1.0 - u) * (1.0 + u)).sqrt())
+        })
     }
 
     /// G1(u) = 1/(1 + Λ(u)) for 0 ≤ u ≤ 1.
