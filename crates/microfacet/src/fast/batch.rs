@@ -11,7 +11,6 @@
 //!
 //! Throughput and the scalar-loop comparison: BENCHMARKS.md.
 
-use super::tables::EXPONENTIAL_NEAR_K0;
 use super::tables::{DGGX, DGGX_K0, DGGX_K1, DGGX_M};
 use super::{beckmann, double_ggx, exponential, fit, ggx};
 use std::f64::consts::PI;
@@ -252,18 +251,16 @@ pub fn double_ggx_lambda(u: &[f64], alpha: &[f64], out: &mut [f64]) {
 }
 
 dispatched! {
-/// Exponential Λ (the two exponential-free tables, one row picked per lane; the rest of z
-/// (z < 2^−12 or z ≥ 64) by the scalar path).
+/// Exponential Λ (the q tables, one row picked per lane; the rest of z (z < 2^−12 or
+/// z ≥ 64) by the scalar path).
 pub fn exponential_lambda(u: &[f64], alpha: &[f64], out: &mut [f64]) {
-    let lo = 2f64.powi(EXPONENTIAL_NEAR_K0);
     chunks(
         u,
         alpha,
         out,
         |u, a| {
-            let z = (u + u) / (a * ((1.0 - u) * (1.0 + u)).sqrt());
-            let v = exponential::lambda_z_tables(z);
-            (v, !(z >= lo && z < exponential::Z_MID))
+            let (v, inside) = exponential::lambda_q_select(exponential::q_of(u, a));
+            (v, !inside)
         },
         exponential::lambda,
     );

@@ -5,11 +5,12 @@
 //! The variable is z = 2u/(α√((1 − u)(1 + u))). Λ falls like e^{−z}/√z; it is read from
 //! generated tables (`examples/gen_fast_tables.rs`) in four ranges:
 //! * z < 2^−12 (grazing): Λ = 2/(πz) − 1/2 + z/(2π) + O(z³ ln z), relative error below 1e-14.
-//! * 2^−12 ≤ z < 8: Λ itself on octave segments (8 per octave, degree 7). The widest segment
-//!   is ½, narrow enough for e^{−z} to be a polynomial: no exponential at run time.
-//! * 8 ≤ z < 64: Λ itself on equal segments of width ½ (degree 7), for the same reason.
-//!   Together these cover 99 % of the benchmark's random (u, α) (BENCHMARKS.md).
-//! * 64 ≤ z < 2^9: Λ e^z on octave segments, and one exponential restores the factor.
+//! * 2^−12 ≤ z < 64: Λ itself as a function of q = z² = 4u²/(α²(1 − u)(1 + u)) (one
+//!   division, no square root), on octaves of q: 8 segments per octave up to q = 64 and 32
+//!   from there. Every segment spans at most 0.7 in z, narrow enough for e^{−z} to be a
+//!   polynomial (degree 7): no exponential at run time. This range holds 99 % of the
+//!   benchmark's random (u, α) (BENCHMARKS.md).
+//! * 64 ≤ z < 2^9: Λ e^z on octave segments of z, and one exponential restores the factor.
 //! * z ≥ 2^9 (near the normal): Λ = e^{−z}(1 + 11/(8z) − 159/(128z²) + 8595/(3072z³))/√(2πz),
 //!   from the large-z expansions of K₁ and Ki₁ (the z⁻³ coefficient fitted to mpmath values of
 //!   the Struve form at z = 100…800 and recognised as 315/1536 + 2655/1024); the next term is
@@ -17,60 +18,75 @@
 //!   accurate; it underflows to 0 near z = 745.
 
 use super::tables::{EXPONENTIAL_FAR, EXPONENTIAL_FAR_K0, EXPONENTIAL_FAR_K1, EXPONENTIAL_FAR_M};
-use super::tables::{EXPONENTIAL_LAMBDA, EXPONENTIAL_MID_INV_H, EXPONENTIAL_MID_K};
-use super::tables::{EXPONENTIAL_MID_ROW0, EXPONENTIAL_NEAR_K0, EXPONENTIAL_NEAR_M};
+use super::tables::{EXPONENTIAL_Q, EXPONENTIAL_QA_K0, EXPONENTIAL_QA_M, EXPONENTIAL_QB_ROW0};
+use super::tables::{EXPONENTIAL_QB_K0, EXPONENTIAL_QB_K1, EXPONENTIAL_QB_M};
 use super::{fit, Real};
 use std::f64::consts::{FRAC_1_PI, FRAC_2_PI};
 
-/// Where the exponential-free tables end: the near table's last octave ends at 8, the
-/// mid table's equal segments of width ½ at 64 (checked at compile time against the
-/// generated constants).
-pub(super) const Z_NEAR: f64 = 8.0;
-pub(super) const Z_MID: f64 = 64.0;
+/// Where the q tables change resolution (q = 64, z = 8) and end (q = 4096, z = 64).
+pub(super) const Q_B: f64 = 64.0;
+pub(super) const Q_END: f64 = 4096.0;
 const _: () = {
-    use super::tables::EXPONENTIAL_NEAR_K1;
-    assert!(EXPONENTIAL_NEAR_K1 == 3 && EXPONENTIAL_FAR_K0 == 6); // 2^3 = Z_NEAR, 2^6 = Z_MID
-                                                                  // Mid rows k = 16 ..= 128 at h = ½ cover [7.75, 64.25].
-    assert!(EXPONENTIAL_MID_INV_H == 2.0 && EXPONENTIAL_MID_K == 16);
-    assert!(EXPONENTIAL_LAMBDA.len() - EXPONENTIAL_MID_ROW0 == 113);
+    use super::tables::EXPONENTIAL_QA_K1;
+    // 2^6 = Q_B, where QA ends and QB starts; 2^12 = Q_END.
+    assert!(EXPONENTIAL_QA_K1 == 6 && EXPONENTIAL_QB_K0 == 6 && EXPONENTIAL_QB_K1 == 12);
 };
+// The far table starts an octave below z = 64, so that a z whose square rounds up to 4096
+// still finds its row.
+const _: () = assert!(EXPONENTIAL_FAR_K0 == 5);
 
-/// Λ(z) for 2^−12 ≤ z < 64 from the exponential-free tables without a branch (the range
-/// picks the row and s by selects), for the slice kernels; meaningless outside.
+/// Λ from the q tables for 2^−24 ≤ q < 4096 (None outside, and for NaN).
 #[inline(always)]
-pub(super) fn lambda_z_tables(z: f64) -> f64 {
-    let (i_near, s_near) = fit::octave_segment(EXPONENTIAL_NEAR_K0, EXPONENTIAL_NEAR_M, z);
-    let (i_mid, s_mid) = fit::uniform_segment(EXPONENTIAL_MID_K, EXPONENTIAL_MID_INV_H, z);
-    let near = z < Z_NEAR;
-    let i = if near {
-        i_near
+fn lambda_q(q: f64) -> Option<f64> {
+    let (qa, qb) = EXPONENTIAL_Q.split_at(EXPONENTIAL_QB_ROW0);
+    if q < Q_B && q >= fit::pow2(EXPONENTIAL_QA_K0) {
+        return Some(fit::eval(qa, EXPONENTIAL_QA_K0, EXPONENTIAL_QA_M, q));
+    }
+    if (Q_B..Q_END).contains(&q) {
+        return Some(fit::eval(qb, EXPONENTIAL_QB_K0, EXPONENTIAL_QB_M, q));
+    }
+    None
+}
+
+/// [`lambda_q`] without a branch (the range picks the row and s by selects), for the slice
+/// kernels: (Λ, whether q is inside the tables).
+#[inline(always)]
+pub(super) fn lambda_q_select(q: f64) -> (f64, bool) {
+    let b = q >= Q_B;
+    let (k0, m, row0) = if b {
+        (EXPONENTIAL_QB_K0, EXPONENTIAL_QB_M, EXPONENTIAL_QB_ROW0)
     } else {
-        EXPONENTIAL_MID_ROW0 + i_mid
+        (EXPONENTIAL_QA_K0, EXPONENTIAL_QA_M, 0)
     };
-    let s = if near { s_near } else { s_mid };
-    fit::horner(&EXPONENTIAL_LAMBDA[i.min(EXPONENTIAL_LAMBDA.len() - 1)], s)
+    let (i, s) = fit::octave_segment(k0, m, q);
+    let row = row0.wrapping_add(i).min(EXPONENTIAL_Q.len() - 1);
+    let inside = q >= fit::pow2(EXPONENTIAL_QA_K0) && q < Q_END;
+    (fit::horner(&EXPONENTIAL_Q[row], s), inside)
+}
+
+/// q = z² = 4u²/(α²(1 − u)(1 + u)).
+#[inline(always)]
+pub(super) fn q_of(u: f64, a: f64) -> f64 {
+    4.0 * u * u / (a * a * ((1.0 - u) * (1.0 + u)))
 }
 
 /// Λ(z), z = 2 cot θ/α ≥ 0 (+∞ at z = 0, NaN for NaN).
 #[inline(always)]
 pub fn lambda_z(z: f64) -> f64 {
-    // The common cases (99 % of random directions and roughnesses) inline, each one table
-    // lookup and no exponential; the rest out of line, to keep the inlined body small.
-    let (near, mid) = EXPONENTIAL_LAMBDA.split_at(EXPONENTIAL_MID_ROW0);
-    if z < Z_NEAR && z >= fit::pow2(EXPONENTIAL_NEAR_K0) {
-        return fit::eval(near, EXPONENTIAL_NEAR_K0, EXPONENTIAL_NEAR_M, z);
+    // The common cases (99 % of random directions and roughnesses) inline, one table lookup
+    // and no exponential; the rest out of line, to keep the inlined body small.
+    match lambda_q(z * z) {
+        Some(v) => v,
+        None => lambda_z_ends(z),
     }
-    if (Z_NEAR..Z_MID).contains(&z) {
-        return fit::eval_uniform(mid, EXPONENTIAL_MID_K, EXPONENTIAL_MID_INV_H, z);
-    }
-    lambda_z_ends(z)
 }
 
-/// Λ(z) for z < 2^−12, z ≥ 64 and NaN.
+/// Λ(z) past the q tables: z < 2^−12, z ≥ 64 (or a z whose square rounded out of the tables'
+/// range), and NaN.
 #[cold]
 #[inline(never)]
 fn lambda_z_ends(z: f64) -> f64 {
-    if z < Z_NEAR {
+    if z < 1.0 {
         return FRAC_2_PI / z - 0.5 + 0.5 * FRAC_1_PI * z;
     }
     if z < fit::pow2(EXPONENTIAL_FAR_K1) {
@@ -82,6 +98,12 @@ fn lambda_z_ends(z: f64) -> f64 {
     let r = 1.0 / z;
     let series = 1.0 + r * (11.0 / 8.0 - r * (159.0 / 128.0 - r * (8595.0 / 3072.0)));
     (-z).exp() * series / (std::f64::consts::TAU * z).sqrt()
+}
+
+/// z = 2u/(α√((1 − u)(1 + u))), for the ends (where q may under- or overflow).
+#[inline(always)]
+pub(super) fn z_of(u: f64, a: f64) -> f64 {
+    (u + u) / (a * ((1.0 - u) * (1.0 + u)).sqrt())
 }
 
 /// D(u) = 2 exp(−2 tan θ/α)/(π α² u⁴); 0 for u ≤ 0 and where e^{−2tan θ/α} underflows
@@ -105,8 +127,10 @@ pub fn d<F: Real>(u: F, alpha: F) -> F {
 #[inline]
 pub fn lambda<F: Real>(u: F, alpha: F) -> F {
     let (u, a) = (u.to_f64(), alpha.to_f64());
-    let z = (u + u) / (a * ((1.0 - u) * (1.0 + u)).sqrt());
-    F::from_f64(lambda_z(z))
+    F::from_f64(match lambda_q(q_of(u, a)) {
+        Some(v) => v,
+        None => lambda_z_ends(z_of(u, a)),
+    })
 }
 
 /// G1(u) = 1/(1 + Λ(u)) for 0 ≤ u ≤ 1.
@@ -200,14 +224,30 @@ mod tests {
     #[test]
     fn the_ranges_meet_where_the_tables_end() {
         // Continuity across each switch, to the tables' accuracy.
+        // (z = 2^−12, 8, 64 and 512: q = 2^−24, 64, 4096.)
         for z in [
-            fit::pow2(EXPONENTIAL_NEAR_K0),
-            Z_NEAR,
-            Z_MID,
-            fit::pow2(EXPONENTIAL_FAR_K1),
+            fit::pow2(EXPONENTIAL_QA_K0 / 2),
+            Q_B.sqrt(),
+            Q_END.sqrt(),
+            512.0,
         ] {
             let below = lambda_z(f64::from_bits(z.to_bits() - 1));
             assert!((lambda_z(z) / below - 1.0).abs() < 1e-9, "{z}");
+        }
+        // Every z in the q tables' range lands in them or in the ends, both accurate: a z
+        // below 64 whose q (computed from u and α, not as z²) rounds to 4096 goes to the far
+        // table, which starts at 32.
+        let mut z = 32.0;
+        while z < 64.0 {
+            assert!((lambda_z_ends(z) / lambda_z(z) - 1.0).abs() < 1e-9, "{z}");
+            z *= 1.001;
+        }
+        // The slice kernels' branch-free form agrees with the branches.
+        let mut z = 2f64.powi(-12);
+        while z < 64.0 {
+            let (v, inside) = lambda_q_select(z * z);
+            assert!(inside && v == lambda_z(z), "{z}");
+            z *= 1.001;
         }
     }
 }

@@ -1,15 +1,11 @@
-//! Piecewise polynomials on octaves (and on equal segments): the tables behind the fast Λ of
-//! the NDFs without a cheap closed form.
+//! Piecewise polynomials on octaves: the tables behind the fast Λ of the NDFs without a cheap
+//! closed form.
 //!
 //! A table covers x ∈ [2^k0, 2^k1); every octave [2^e, 2^{e+1}) is cut into 2^m equal segments,
 //! and on each segment the function is the polynomial Σ c_j s^j of degree N − 1 in
 //! s = 2(x − x₀)/h − 1 ∈ [−1, 1) (x₀ the segment's start, h its width). The segment and s come
 //! from the bits of x (no logarithm, no search): the exponent and the top m mantissa bits
 //! index the segment, and x − x₀ is exact.
-//!
-//! Where a function decays exponentially (the Exponential NDF's Λ ~ e^{−z}), octaves grow too
-//! wide for a polynomial in relative terms; [`eval_uniform`] reads a table of equal segments
-//! instead, its row picked by rounding x/h.
 //!
 //! Tables are built by Chebyshev interpolation ([`fit_octaves`]): at N Chebyshev points of each
 //! segment, converted to the monomial basis in s (|s| ≤ 1 keeps that conversion well
@@ -45,43 +41,6 @@ pub fn octave_segment(k0: i32, m: u32, x: f64) -> (usize, f64) {
     let big_e = bits >> 52;
     let two_over_h = f64::from_bits((2047 + m as u64).wrapping_sub(big_e) << 52);
     (idx, (x - x0) * two_over_h - 1.0)
-}
-
-/// Evaluates a table of equal segments at x: row i covers [(k − ½)h, (k + ½)h] with
-/// k = `k_first` + i and h = 1/`inv_h`, a power of two (so x · inv_h is exact). The row is picked
-/// by rounding x/h to the nearest integer k (no search), and s = 2(x/h − k) ∈ [−1, 1].
-///
-/// Meaningful for (k_first − ½)h ≤ x < (k_first + len − ½)h; outside (NaN included) the row is
-/// clamped into the table and the value is meaningless, so callers range-check.
-#[inline(always)]
-pub fn eval_uniform<const N: usize>(coef: &[[f64; N]], k_first: u32, inv_h: f64, x: f64) -> f64 {
-    let (idx, s) = uniform_segment(k_first, inv_h, x);
-    horner(&coef[idx.min(coef.len() - 1)], s)
-}
-
-/// The row (unclamped) and s of x in a table of equal segments (see [`eval_uniform`]).
-#[inline(always)]
-pub fn uniform_segment(k_first: u32, inv_h: f64, x: f64) -> (usize, f64) {
-    // 1.5·2^52: adding it rounds y to an integer held in the low mantissa bits (|y| < 2^31).
-    const MAGIC: f64 = 6_755_399_441_055_744.0;
-    let y = x * inv_h;
-    let t = y + MAGIC;
-    let idx = (t.to_bits() as u32).wrapping_sub(k_first) as usize;
-    // t − MAGIC = k exactly, and y − k is exact (|y − k| ≤ ½).
-    (idx, 2.0 * (y - (t - MAGIC)))
-}
-
-/// Chebyshev interpolation of `f` on the equal segments of [`eval_uniform`]: rows for
-/// k = k_first ..= k_last, segment width h.
-pub fn fit_uniform<const N: usize>(
-    k_first: u32,
-    k_last: u32,
-    h: f64,
-    mut f: impl FnMut(f64) -> f64,
-) -> Vec<[f64; N]> {
-    (k_first..=k_last)
-        .map(|k| chebyshev_fit(|s| f((k as f64 + 0.5 * s) * h)))
-        .collect()
 }
 
 /// Σ c_j s^j, by Estrin's scheme: pairs c_{2i} + c_{2i+1} s, then pairs of those with s²,
@@ -232,33 +191,6 @@ mod tests {
         let b = 2.0f64 * 1.25;
         for x in [b, f64::from_bits(b.to_bits() - 1)] {
             assert!((eval(&t, k0, m, x) - f(x)).abs() < 1e-9);
-        }
-    }
-
-    #[test]
-    fn uniform_segments_reproduce_a_smooth_function_and_round_to_the_nearest_row() {
-        let f = |x: f64| (-x).exp() * (1.0 + x).sqrt();
-        // Rows k = 4 ..= 40 at h = 1/4: x ∈ [0.875, 10.125].
-        let t = fit_uniform::<8>(4, 40, 0.25, f);
-        assert_eq!(t.len(), 37);
-        let mut worst = 0.0f64;
-        let mut x = 0.875;
-        while x < 10.125 {
-            worst = worst.max((eval_uniform(&t, 4, 4.0, x) / f(x) - 1.0).abs());
-            x += 0.000_731;
-        }
-        assert!(worst < 1e-12, "{worst}");
-        // Both sides of a boundary (k + ½)h, and the ends of the range.
-        for x in [
-            1.125f64,
-            f64::from_bits(1.125f64.to_bits() - 1),
-            0.875,
-            10.125,
-        ] {
-            assert!(
-                (eval_uniform(&t, 4, 4.0, x) / f(x) - 1.0).abs() < 1e-12,
-                "{x}"
-            );
         }
     }
 }

@@ -67,6 +67,16 @@ fn a_of_w(w: f64) -> f64 {
     (1.0 - w) / (w * (2.0 - w)).sqrt()
 }
 
+/// One of the two Λ tables: first octave 2^k0, 2^m segments per octave, first row, and
+/// 2^k0 (below it t is past the table: the asymptotic ends).
+#[derive(Clone, Copy, Debug)]
+struct Side {
+    k0: i32,
+    m: u32,
+    row0: usize,
+    lo: f64,
+}
+
 /// A GTR NDF prepared for fast Λ, σ, G1 and G2.
 #[derive(Clone, Debug)]
 pub struct Gtr {
@@ -75,12 +85,10 @@ pub struct Gtr {
     /// The rows of the u table (t = u < ½, octaves from 2^u_k0), then those of the w table
     /// (t = 1 − u ≤ ½, octaves from 2^w_k0), from row `w_row0`.
     coef: Vec<[f64; N]>,
-    u_k0: i32,
-    w_k0: i32,
-    w_row0: usize,
-    /// 2^u_k0 and 2^w_k0: below them t is past the tables (the asymptotic ends).
-    u_lo: f64,
-    w_lo: f64,
+    /// The two tables' layouts, [u table, w table]: indexed by the side, not selected, so
+    /// that the compiler cannot turn the choice into a branch (which random directions
+    /// would mispredict).
+    sides: [Side; 2],
     /// Whether `coef` holds Λ itself or ln Λ.
     direct: bool,
     /// Λ ≈ m/a − 1/2 below `u_lo` (a = cot θ).
@@ -148,11 +156,20 @@ impl Gtr {
             alpha,
             gamma,
             coef,
-            u_k0,
-            w_k0,
-            w_row0,
-            u_lo,
-            w_lo,
+            sides: [
+                Side {
+                    k0: u_k0,
+                    m: M,
+                    row0: 0,
+                    lo: u_lo,
+                },
+                Side {
+                    k0: w_k0,
+                    m: M_W,
+                    row0: w_row0,
+                    lo: w_lo,
+                },
+            ],
             direct,
             m: (exact.lambda_cot(a_lo) + 0.5) * a_lo,
             k: exact.lambda_cot(a_hi) * a_hi * a_hi,
@@ -209,14 +226,10 @@ impl Gtr {
     /// mispredict and the slice kernels vectorise.
     #[inline(always)]
     pub(crate) fn table_at(&self, normal_side: bool, t: f64) -> (f64, bool) {
-        let (k0, m, row0, lo) = if normal_side {
-            (self.w_k0, M_W, self.w_row0, self.w_lo)
-        } else {
-            (self.u_k0, M, 0, self.u_lo)
-        };
-        let (i, s) = fit::octave_segment(k0, m, t);
-        let row = row0.wrapping_add(i).min(self.coef.len() - 1);
-        (fit::horner(&self.coef[row], s), t >= lo)
+        let side = &self.sides[usize::from(normal_side)];
+        let (i, s) = fit::octave_segment(side.k0, side.m, t);
+        let row = side.row0.wrapping_add(i).min(self.coef.len() - 1);
+        (fit::horner(&self.coef[row], s), t >= side.lo)
     }
 
     /// Rows in the tables (never 0; asserting that lets the slice kernel's row clamp drop

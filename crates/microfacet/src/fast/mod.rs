@@ -7,7 +7,7 @@
 //! | GGX | [`ggx`] | D, Λ, G1, G2, σ, VNDF | closed forms without cancellation | f64 1e-14, f32 1e-6 |
 //! | Beckmann | [`beckmann`] | D, Λ, G1, G2, σ, VNDF | D closed form; Λ from a generated table of r(a) = 1 − √π a erfcx(a) (no cancellation); VNDF: the exact warp, table guess + Halley steps | D, Λ: f64 1e-12, f32 2e-5 (exponent < 80); VNDF: 1e-11 of the exact warp |
 //! | Double GGX | [`double_ggx`] | Λ, σ, G1, G2, VNDF | generated octave table + asymptotic ends; VNDF: the Gamma-1 superposition of GGX, component picked by rejection, then spherical caps | 1e-7 required; 4.5e-10 measured (f64), 6e-8 (f32); VNDF: the exact distribution (χ²) |
-//! | Exponential | [`exponential`] | Λ, σ, G1, G2, VNDF | generated tables of Λ for z = 2cot θ/α < 64 (no exponential), of Λe^z beyond, asymptotic ends; VNDF: rejection in slope space (Gamma radii) | 1e-7 required; 1.4e-10 measured (f64), 6e-8 (f32); VNDF: exact distribution (χ²) |
+//! | Exponential | [`exponential`] | Λ, σ, G1, G2, VNDF | generated tables of Λ in q = z² = (2cot θ/α)² for z < 64 (one division, no square root or exponential), of Λe^z beyond, asymptotic ends; VNDF: rejection in slope space (Gamma radii) | 1e-7 required; 1.4e-10 measured (f64), 6e-8 (f32); VNDF: exact distribution (χ²) |
 //! | GTR, any γ | [`gtr::Gtr`] | Λ, σ, G1, G2, VNDF | Λ (γ ≲ 3–5, no exponential) or ln Λ fitted per material at construction, on octaves of u below ½ and of 1 − u above (no square root or division); VNDF: rejection in slope space, radii from per-material piecewise-exponential envelopes | 1e-7 required; 2.5e-9 measured (f64), 6e-8 (f32), where Λ > 1e-280; VNDF: exact distribution (χ²) |
 //!
 //! The VNDF samplers of Double GGX, the Exponential NDF and GTR are rejection samplers: they
