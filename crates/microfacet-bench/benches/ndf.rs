@@ -556,8 +556,9 @@ fn batches(i: &Inputs) {
     let mut out = vec![0.0; LEN];
     let threads = rayon::current_num_threads();
     println!();
-    println!("slices of 10⁶ (ns per element): scalar loop | slice fn (× loop) | rayon on {threads} threads (× slice fn)");
-    let per = |f: &mut dyn FnMut(&mut [f64])| -> f64 {
+    println!("slices of 10⁶ (ns per element, median of 11 passes): scalar loop | slice fn (× loop) | rayon on {threads} threads (× slice fn; fastest passes' ratio)");
+    // (median, fastest) ns per element over 11 passes.
+    let per = |f: &mut dyn FnMut(&mut [f64])| -> (f64, f64) {
         let mut runs = Vec::new();
         let mut o = vec![0.0; LEN];
         for _ in 0..11 {
@@ -567,7 +568,19 @@ fn batches(i: &Inputs) {
             runs.push(start.elapsed().as_secs_f64() * 1e9 / LEN as f64);
         }
         runs.sort_by(f64::total_cmp);
-        runs[runs.len() / 2]
+        (runs[runs.len() / 2], runs[0])
+    };
+    let line = |name: &str, t_loop: (f64, f64), t_slice: (f64, f64), t_par: (f64, f64)| {
+        println!(
+            "{:34} {:7.2} | {:7.2} ({:5.2}×) | {:7.2} ({:5.2}×; {:4.2}×)",
+            name,
+            t_loop.0,
+            t_slice.0,
+            t_loop.0 / t_slice.0,
+            t_par.0,
+            t_slice.0 / t_par.0,
+            t_slice.1 / t_par.1
+        );
     };
     // The loop calls the scalar function directly (inlined, as in a user's loop), not
     // through a pointer.
@@ -580,12 +593,7 @@ fn batches(i: &Inputs) {
             });
             let t_slice = per(&mut |o| $slice(&u, &a, o));
             let t_par = per(&mut |o| batch::par::map(&u, &a, o, $slice));
-            println!(
-                "{:34} {t_loop:7.2} | {t_slice:7.2} ({:5.2}×) | {t_par:7.2} ({:5.2}×)",
-                $name,
-                t_loop / t_slice,
-                t_slice / t_par
-            );
+            line($name, t_loop, t_slice, t_par);
         }};
     }
     case!("GGX D", fg::d, batch::ggx_d);
@@ -602,11 +610,6 @@ fn batches(i: &Inputs) {
     });
     let t_slice = per(&mut |o| batch::gtr_lambda(&g, &u, o));
     let t_par = per(&mut |o| batch::par::gtr_lambda(&g, &u, o));
-    println!(
-        "{:34} {t_loop:7.2} | {t_slice:7.2} ({:5.2}×) | {t_par:7.2} ({:5.2}×)",
-        "GTR Λ (α 0.3, γ 1.5)",
-        t_loop / t_slice,
-        t_slice / t_par
-    );
+    line("GTR Λ (α 0.3, γ 1.5)", t_loop, t_slice, t_par);
     black_box(&mut out);
 }

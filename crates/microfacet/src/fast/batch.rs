@@ -294,7 +294,7 @@ fn gtr_chunks<const DIRECT: bool>(g: &super::gtr::Gtr, u: &[f64], out: &mut [f64
         for l in 0..LANES {
             let u = uc[l];
             let normal_side = u >= 0.5;
-            let (p, inside) = g.table_at(normal_side, if normal_side { 1.0 - u } else { u });
+            let (p, inside) = g.table_at_lanes(normal_side, if normal_side { 1.0 - u } else { u });
             bad[l] = !inside;
             if DIRECT {
                 oc[l] = p;

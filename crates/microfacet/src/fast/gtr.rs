@@ -238,6 +238,24 @@ impl Gtr {
         self.coef.len()
     }
 
+    /// [`Gtr::table_at`] with the side's layout chosen by selects, for the slice kernels:
+    /// in vector code a select is a blend, cheaper than gathering the layout per lane.
+    #[inline(always)]
+    pub(crate) fn table_at_lanes(&self, normal_side: bool, t: f64) -> (f64, bool) {
+        let [u_side, w_side] = self.sides;
+        let k0 = if normal_side { w_side.k0 } else { u_side.k0 };
+        let m = if normal_side { w_side.m } else { u_side.m };
+        let row0 = if normal_side {
+            w_side.row0
+        } else {
+            u_side.row0
+        };
+        let lo = if normal_side { w_side.lo } else { u_side.lo };
+        let (i, s) = fit::octave_segment(k0, m, t);
+        let row = row0.wrapping_add(i).min(self.coef.len() - 1);
+        (fit::horner(&self.coef[row], s), t >= lo)
+    }
+
     /// Λ at a = cot θ ≥ 0 (+∞ at a = 0, 0 at a = +∞).
     #[inline(always)]
     pub fn lambda_cot(&self, a: f64) -> f64 {
