@@ -9,6 +9,12 @@
 //! Lanes outside the vectorised formula's range (below-horizon u, Λ's asymptotic ends) are
 //! redone by the scalar path after each chunk, so every u ∈ [0, 1] is exact-as-scalar.
 //!
+//! Each slice function is compiled for the build's target, for AVX2 + FMA and for AVX-512
+//! (F, DQ, VL), and runs the widest the CPU has ([`simd`], [`detected_simd`]; [`cap_simd`]
+//! caps it on one thread, to compare or test the paths). All of them return the same bits.
+//! Choosing is the library's only `unsafe`: calling a `#[target_feature]` function after
+//! `is_x86_feature_detected!` has confirmed the features.
+//!
 //! Throughput and the scalar-loop comparison: BENCHMARKS.md.
 
 use super::tables::{DGGX, DGGX_K0, DGGX_K1, DGGX_M};
