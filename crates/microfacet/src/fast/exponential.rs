@@ -202,7 +202,7 @@ pub fn sample_visible<F: Real>(
         let g = (1.0 - v1) * (1.0 - uniform().to_f64());
         if v0 < p_dcos {
             let r = -0.5 * g.ln();
-            let (s, co) = (std::f64::consts::TAU * (v0 / p_dcos)).sin_cos();
+            let (co, s) = super::cos_sin_turn(v0 / p_dcos);
             (x, y) = (r * co, r * s);
             if x >= 0.0 || uniform().to_f64() * c <= c + h * x {
                 break;

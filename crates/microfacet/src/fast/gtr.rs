@@ -370,6 +370,8 @@ impl Gtr {
                 continue;
             };
             if first {
+                // libm here, not `cos_sin_turn`: with the polynomial inlined into this loop
+                // the sampler measured slower (76 ns f64, 104 ns f32, against 75 and 78).
                 let (sn, cs) = (std::f64::consts::TAU * (v0 / p_dcos)).sin_cos();
                 (x, y) = (r * cs, r * sn);
                 if x >= 0.0 || uniform().to_f64() * c <= c + s * x {
