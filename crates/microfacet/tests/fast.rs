@@ -914,3 +914,63 @@ fn gtr_fast_vndf_is_the_visible_distribution() {
     let m = fast.sample_visible([0.6, 0.0, 0.8], [0.5, 0.5], &mut || nan);
     assert!(m.iter().all(|x| !x.is_infinite()));
 }
+
+/// σ's edges for every fast NDF, against the exact paths: |u| > 1 clamps to ±1, ±0 and tiny
+/// |u| give σ(0) ± u/2, NaN stays NaN.
+#[test]
+fn fast_sigma_edges() {
+    use microfacet::fast::{
+        beckmann as fb, double_ggx as dg, exponential as ex, gtr::Gtr as FastGtr,
+    };
+    let a = 0.4;
+    let g = FastGtr::new(a, 1.5).unwrap();
+    let exact: [(&str, Box<dyn Fn(f64) -> f64>, Box<dyn Fn(f64) -> f64>); 5] = [
+        (
+            "GGX",
+            Box::new(move |u| ggx::sigma(u, a)),
+            Box::new(move |u| Ggx::new(a).unwrap().sigma(u)),
+        ),
+        (
+            "Beckmann",
+            Box::new(move |u| fb::sigma(u, a)),
+            Box::new(move |u| Beckmann::new(a).unwrap().sigma(u)),
+        ),
+        (
+            "Double GGX",
+            Box::new(move |u| dg::sigma(u, a)),
+            Box::new(move |u| DoubleGgx::new(a).unwrap().sigma(u)),
+        ),
+        (
+            "Exponential",
+            Box::new(move |u| ex::sigma(u, a)),
+            Box::new(move |u| Exponential::new(a).unwrap().sigma(u)),
+        ),
+        (
+            "GTR",
+            Box::new(move |u| g.sigma(u)),
+            Box::new(move |u| Gtr::new(a, 1.5).unwrap().sigma(u)),
+        ),
+    ];
+    for (name, fast, exact) in &exact {
+        for u in [
+            1.5,
+            -1.5,
+            f64::INFINITY,
+            f64::NEG_INFINITY,
+            1.0,
+            -1.0,
+            0.0,
+            -0.0,
+            1e-200,
+            -1e-200,
+            1e-3,
+            -0.7,
+        ] {
+            let (f, e) = (fast(u), exact(u));
+            assert!(rel(f, e) <= 1e-9, "{name} σ({u}): {f:e} vs {e:e}");
+        }
+        assert_eq!(fast(1.5), fast(1.0), "{name}");
+        assert_eq!(fast(-1.5), fast(-1.0), "{name}");
+        assert!(fast(f64::NAN).is_nan(), "{name}");
+    }
+}

@@ -55,13 +55,25 @@ const SQRT_PI: f64 = 1.772_453_850_905_516;
 #[inline(always)]
 fn sigma_from_lambda(u: f64, s0: f64, lambda: impl Fn(f64) -> f64) -> f64 {
     // Below 1e-150, σ(u) = σ(0) + u/2 + O(u²) (σ(u) − σ(−u) = u) is exact to double precision,
-    // and uΛ(u) would overflow in Λ first.
-    if u.abs() < 1e-150 {
-        return s0 + 0.5 * u;
+    // and uΛ(u) would overflow in Λ first. |u| > 1 is clamped to ±1 and NaN stays NaN, in
+    // the same branch: both are rare, so it predicts well, and the common path reaches Λ
+    // without a select on its dependency chain.
+    let v = u.abs();
+    if !(v >= 1e-150 && v <= 1.0) {
+        return if v < 1e-150 {
+            s0 + 0.5 * u
+        } else if v > 1.0 {
+            let below = lambda(1.0);
+            if u > 0.0 {
+                1.0 + below
+            } else {
+                below
+            }
+        } else {
+            u
+        };
     }
-    // One call of Λ for both signs (so that it inlines); NaN stays NaN (the comparison is
-    // false, so v is NaN).
-    let v = if u.abs() > 1.0 { 1.0 } else { u.abs() };
+    // One call of Λ for both signs (so that it inlines).
     let below = v * lambda(v);
     if u > 0.0 {
         v + below
@@ -306,7 +318,12 @@ mod tests {
         }
         assert!(reduced <= 3e-16, "{reduced:e}");
         assert!(whole <= 1e-15, "{whole:e}");
-        for (v, c, s) in [(0.0, 1.0, 0.0), (0.25, 0.0, 1.0), (0.5, -1.0, 0.0), (0.75, 0.0, -1.0)] {
+        for (v, c, s) in [
+            (0.0, 1.0, 0.0),
+            (0.25, 0.0, 1.0),
+            (0.5, -1.0, 0.0),
+            (0.75, 0.0, -1.0),
+        ] {
             assert_eq!(cos_sin_turn(v), (c, s), "{v}");
         }
         assert_eq!(cos_sin_turn(1.0), (1.0, 0.0));
