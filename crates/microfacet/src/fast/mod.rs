@@ -59,7 +59,7 @@ fn sigma_from_lambda(u: f64, s0: f64, lambda: impl Fn(f64) -> f64) -> f64 {
     // the same branch: both are rare, so it predicts well, and the common path reaches Λ
     // without a select on its dependency chain.
     let v = u.abs();
-    if !(v >= 1e-150 && v <= 1.0) {
+    if !(1e-150..=1.0).contains(&v) {
         return if v < 1e-150 {
             s0 + 0.5 * u
         } else if v > 1.0 {
