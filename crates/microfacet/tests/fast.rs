@@ -924,7 +924,8 @@ fn fast_sigma_edges() {
     };
     let a = 0.4;
     let g = FastGtr::new(a, 1.5).unwrap();
-    let exact: [(&str, Box<dyn Fn(f64) -> f64>, Box<dyn Fn(f64) -> f64>); 5] = [
+    type Sigma = Box<dyn Fn(f64) -> f64>;
+    let exact: [(&str, Sigma, Sigma); 5] = [
         (
             "GGX",
             Box::new(move |u| ggx::sigma(u, a)),
