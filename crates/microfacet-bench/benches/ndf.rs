@@ -611,5 +611,35 @@ fn batches(i: &Inputs) {
     let t_slice = per(&mut |o| batch::gtr_lambda(&g, &u, o));
     let t_par = per(&mut |o| batch::par::gtr_lambda(&g, &u, o));
     line("GTR Λ (α 0.3, γ 1.5)", t_loop, t_slice, t_par);
+
+    // The same slice functions capped at each instruction set this CPU has.
+    let levels: Vec<batch::Simd> = [batch::Simd::Generic, batch::Simd::Avx2, batch::Simd::Avx512]
+        .into_iter()
+        .filter(|&l| l <= batch::detected_simd())
+        .collect();
+    println!();
+    println!("slice fn per instruction set (ns per element, median of 11 passes): {levels:?}");
+    let gtr = |u: &[f64], _: &[f64], o: &mut [f64]| batch::gtr_lambda(&g, u, o);
+    type SliceFn<'a> = &'a dyn Fn(&[f64], &[f64], &mut [f64]);
+    let cases: [(&str, SliceFn); 6] = [
+        ("GGX D", &batch::ggx_d),
+        ("GGX Λ", &batch::ggx_lambda),
+        ("Beckmann D", &batch::beckmann_d),
+        ("Double GGX Λ", &batch::double_ggx_lambda),
+        ("Exponential Λ", &batch::exponential_lambda),
+        ("GTR Λ (α 0.3, γ 1.5)", &gtr),
+    ];
+    for (name, f) in cases {
+        let times: Vec<String> = levels
+            .iter()
+            .map(|&l| {
+                batch::cap_simd(Some(l));
+                let t = per(&mut |o| f(&u, &a, o)).0;
+                format!("{t:7.2}")
+            })
+            .collect();
+        batch::cap_simd(None);
+        println!("{name:34} {}", times.join(" | "));
+    }
     black_box(&mut out);
 }
