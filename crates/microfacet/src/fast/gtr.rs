@@ -111,7 +111,7 @@ impl Gtr {
         // Grazing side: u ≈ a below the features, from 2^−SPAN s₋ up to u = ½.
         let u_k0 = s_lo.log2().floor() as i32 - SPAN;
         // Normal side: w = 1 − u ≈ 1/(2a²) past the features, from a ≥ 2^SPAN s₊ up to
-        // w = 1 (the last octave serves only w = ½, i.e. u = ½, itself).
+        // w = ½ (u = ½ itself gets a row of its own, below).
         let w_k0 = -2 * (SPAN + s_hi.log2().ceil() as i32) - 1;
         let ln_lambda = |a: f64| exact.lambda_cot(a).max(TINY).ln();
         // ln Λ at every segment's Chebyshev points: the log tables, and Λ itself from the
@@ -222,11 +222,30 @@ impl Gtr {
 
     /// The table's value (Λ, or ln Λ if not [`Gtr::is_direct`]) at t = u (`normal_side`
     /// false) or t = 1 − u, and whether t is inside the table (false for NaN and past the
-    /// ends). No branch: the side picks the row by selects, so that random directions do not
-    /// mispredict and the slice kernels vectorise.
+    /// ends). No branch: the side indexes the layout, so there is neither a branch that
+    /// random directions would mispredict nor a select the compiler could turn into one.
     #[inline(always)]
     pub(crate) fn table_at(&self, normal_side: bool, t: f64) -> (f64, bool) {
-        let side = &self.sides[usize::from(normal_side)];
+        self.table_on(self.sides[usize::from(normal_side)], t)
+    }
+
+    /// [`Gtr::table_at`] with the side's layout chosen by selects, for the slice kernels:
+    /// in vector code a select is a blend, cheaper than gathering the layout per lane.
+    #[inline(always)]
+    pub(crate) fn table_at_lanes(&self, normal_side: bool, t: f64) -> (f64, bool) {
+        let [u, w] = self.sides;
+        let side = Side {
+            k0: if normal_side { w.k0 } else { u.k0 },
+            m: if normal_side { w.m } else { u.m },
+            row0: if normal_side { w.row0 } else { u.row0 },
+            lo: if normal_side { w.lo } else { u.lo },
+        };
+        self.table_on(side, t)
+    }
+
+    /// The value and the inside flag of [`Gtr::table_at`] on one side's table.
+    #[inline(always)]
+    fn table_on(&self, side: Side, t: f64) -> (f64, bool) {
         let (i, s) = fit::octave_segment(side.k0, side.m, t);
         let row = side.row0.wrapping_add(i).min(self.coef.len() - 1);
         (fit::horner(&self.coef[row], s), t >= side.lo)
@@ -236,24 +255,6 @@ impl Gtr {
     /// its bounds check, so the loop vectorises).
     pub(crate) fn rows(&self) -> usize {
         self.coef.len()
-    }
-
-    /// [`Gtr::table_at`] with the side's layout chosen by selects, for the slice kernels:
-    /// in vector code a select is a blend, cheaper than gathering the layout per lane.
-    #[inline(always)]
-    pub(crate) fn table_at_lanes(&self, normal_side: bool, t: f64) -> (f64, bool) {
-        let [u_side, w_side] = self.sides;
-        let k0 = if normal_side { w_side.k0 } else { u_side.k0 };
-        let m = if normal_side { w_side.m } else { u_side.m };
-        let row0 = if normal_side {
-            w_side.row0
-        } else {
-            u_side.row0
-        };
-        let lo = if normal_side { w_side.lo } else { u_side.lo };
-        let (i, s) = fit::octave_segment(k0, m, t);
-        let row = row0.wrapping_add(i).min(self.coef.len() - 1);
-        (fit::horner(&self.coef[row], s), t >= lo)
     }
 
     /// Λ at a = cot θ ≥ 0 (+∞ at a = 0, 0 at a = +∞).
