@@ -82,12 +82,20 @@ pub fn lambda_z(z: f64) -> f64 {
 }
 
 /// Λ(z) past the q tables: z < 2^−12, z ≥ 64 (or a z whose square rounded out of the tables'
-/// range), and NaN.
+/// range), NaN, and any z whose q, computed from (u, α), under- or overflowed (u and α both
+/// below ~1e-154, say).
 #[cold]
 #[inline(never)]
 fn lambda_z_ends(z: f64) -> f64 {
-    if z < 1.0 {
+    if z < fit::pow2(EXPONENTIAL_QA_K0 / 2) {
+        // z < 2^−12.
         return FRAC_2_PI / z - 0.5 + 0.5 * FRAC_1_PI * z;
+    }
+    if z < fit::pow2(EXPONENTIAL_FAR_K0) {
+        // 2^−12 ≤ z < 32: z² lies inside the q tables.
+        if let Some(v) = lambda_q(z * z) {
+            return v;
+        }
     }
     if z < fit::pow2(EXPONENTIAL_FAR_K1) {
         return fit::eval(&EXPONENTIAL_FAR, EXPONENTIAL_FAR_K0, EXPONENTIAL_FAR_M, z) * (-z).exp();
@@ -241,6 +249,14 @@ mod tests {
         while z < 64.0 {
             assert!((lambda_z_ends(z) / lambda_z(z) - 1.0).abs() < 1e-9, "{z}");
             z *= 1.001;
+        }
+        // q under- or overflowing from (u, α) while z is moderate: the ends still answer.
+        for (u, a) in [(1e-200, 1e-200), (3e-170, 1e-170)] {
+            let z = z_of(u, a);
+            // (q is 0/0 = NaN or 0 there.)
+            let q = q_of(u, a);
+            assert!(q.is_nan() || q < 1e-300, "{u} {a}");
+            assert!((lambda(u, a) / lambda_z(z) - 1.0).abs() < 1e-12, "{u} {a}");
         }
         // The slice kernels' branch-free form agrees with the branches.
         let mut z = 2f64.powi(-12);
