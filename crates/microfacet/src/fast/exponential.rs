@@ -141,18 +141,7 @@ pub fn lambda<F: Real>(u: F, alpha: F) -> F {
     })
 }
 
-/// G1(u) = 1/(1 + Λ(u)) for 0 ≤ u ≤ 1.
-#[inline]
-pub fn g1<F: Real>(u: F, alpha: F) -> F {
-    F::from_f64(1.0 / (1.0 + lambda(u.to_f64(), alpha.to_f64())))
-}
-
-/// Height-correlated G2 = 1/(1 + Λ(u_o) + Λ(u_i)).
-#[inline]
-pub fn g2<F: Real>(u_o: F, u_i: F, alpha: F) -> F {
-    let a = alpha.to_f64();
-    F::from_f64(1.0 / (1.0 + lambda(u_o.to_f64(), a) + lambda(u_i.to_f64(), a)))
-}
+g1_g2_from_lambda!();
 
 /// σ(u) for u ∈ [−1, 1]: u(1 + Λ(u)) above the horizon, |u| Λ(|u|) below, σ(0) = α/π.
 #[inline(always)]

@@ -38,6 +38,25 @@
 
 use std::ops::{Add, Div, Mul, Neg, Sub};
 
+/// `g1` and the height-correlated `g2` of a fitted NDF's module, from its
+/// `lambda(u: f64, α: f64)`: evaluated in f64, rounded once to F.
+macro_rules! g1_g2_from_lambda {
+    () => {
+        /// G1(u) = 1/(1 + Λ(u)) for 0 ≤ u ≤ 1.
+        #[inline]
+        pub fn g1<F: Real>(u: F, alpha: F) -> F {
+            F::from_f64(1.0 / (1.0 + lambda(u.to_f64(), alpha.to_f64())))
+        }
+
+        /// Height-correlated G2 = 1/(1 + Λ(u_o) + Λ(u_i)).
+        #[inline]
+        pub fn g2<F: Real>(u_o: F, u_i: F, alpha: F) -> F {
+            let a = alpha.to_f64();
+            F::from_f64(1.0 / (1.0 + lambda(u_o.to_f64(), a) + lambda(u_i.to_f64(), a)))
+        }
+    };
+}
+
 pub mod batch;
 pub mod beckmann;
 pub mod double_ggx;
