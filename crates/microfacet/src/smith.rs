@@ -20,19 +20,25 @@ pub const SMITH_TOL: f64 = 1e-13;
 /// h(y) = sin y − y cos y, without cancellation for small y.
 pub fn h(y: f64) -> f64 {
     if y < 1.0 {
-        // Σ_{k≥1} (−1)^{k+1} 2k y^{2k+1}/(2k+1)!; at y = 1 the k = 10 term is 4e-19.
+        // y³ Σ_{k=1}^{10} (−1)^{k+1} 2k y^{2(k−1)}/(2k+1)!; at y = 1 the k = 10 term is 4e-19.
+        const C: [f64; 10] = {
+            let mut c = [0.0; 10];
+            let mut fact = 6.0; // (2k+1)!
+            let mut k = 1;
+            while k <= 10 {
+                let sign = if k % 2 == 1 { 1.0 } else { -1.0 };
+                c[k - 1] = sign * 2.0 * k as f64 / fact;
+                fact *= ((2 * k + 2) * (2 * k + 3)) as f64;
+                k += 1;
+            }
+            c
+        };
         let y2 = y * y;
-        let mut term = y * y2; // y^{2k+1} / (2k+1)! · (2k+1)!, built incrementally below
-        let mut fact = 6.0; // (2k+1)!
-        let mut sum = 0.0;
-        for k in 1..=10 {
-            let kf = k as f64;
-            let sign = if k % 2 == 1 { 1.0 } else { -1.0 };
-            sum += sign * 2.0 * kf * term / fact;
-            term *= y2;
-            fact *= (2.0 * kf + 2.0) * (2.0 * kf + 3.0);
+        let mut p = C[9];
+        for &c in C[..9].iter().rev() {
+            p = p * y2 + c;
         }
-        sum
+        y * y2 * p
     } else {
         y.sin() - y * y.cos()
     }
@@ -48,8 +54,16 @@ pub fn smith_integral(p_of_offset: impl Fn(f64) -> f64, a: f64, scale: f64) -> f
             return 0.0;
         }
         // y = atan2(√(r² − a²), a) with r² − a² = d (2a + d), exact in d.
-        let y = (d * (2.0 * a + d)).sqrt().atan2(a);
-        r * r * p_of_offset(d) * h(y)
+        let s = (d * (2.0 * a + d)).sqrt();
+        let y = s.atan2(a);
+        // From y = 1 on, h = sin y − y cos y = (s − y a)/r (no cancellation there: h(1) =
+        // 0.30), which saves a sine and a cosine; below, the series.
+        let hy = if y >= 1.0 && s.is_finite() {
+            (s - y * a) / r
+        } else {
+            h(y)
+        };
+        r * r * p_of_offset(d) * hy
     };
     quad::integrate_to_inf(integrand, 0.0, scale, SMITH_TOL).value
 }
