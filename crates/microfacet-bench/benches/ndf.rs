@@ -92,6 +92,11 @@ fn main() {
         mixture_vndf(&i, big, lambda, vndf);
         return;
     }
+    if std::env::var("MICROFACET_BENCH").as_deref() == Ok("matrix") {
+        // Only the table of every fast quantity.
+        matrix(&i, big);
+        return;
+    }
     if std::env::var("MICROFACET_BENCH").as_deref() == Ok("fitted") {
         // Only the fitted fast paths and the slices (a quick loop while working on them).
         use microfacet::fast::ggx as fg;
@@ -298,6 +303,7 @@ fn main() {
 
     fitted_fast_paths(&i, big, fast_ggx_lambda_64, fast_ggx_lambda_32, ggx_l);
     mixture_vndf(&i, big, fast_ggx_lambda_64, fast_vndf);
+    matrix(&i, big);
     batches(&i);
 
     // Every other NDF against our GGX Λ.
@@ -468,6 +474,126 @@ fn fitted_fast_paths(i: &Inputs, calls: usize, ggx64: f64, ggx32: f64, exact_ggx
         "{:44} {build_ms:10.1} ms per material (mean of 64, α ∈ [0.05, 1], γ ∈ [0.5, 3]; {direct} of 64 tabulate Λ itself)",
         "GTR fast construction"
     );
+}
+
+/// Every quantity of every fast path in f64 and f32, one row per NDF: D, Λ, G1, G2
+/// (height-correlated, u_i from the next input), σ(−u), D·cos sampling and VNDF sampling. The
+/// samplers of the superpositions draw their extra uniforms from an inline xorshift64*, whose
+/// cost is included; GTR uses 64 prepared materials, chosen by the input index.
+fn matrix(i: &Inputs, calls: usize) {
+    use microfacet::fast::gtr::Gtr as FastGtr;
+    use microfacet::fast::Real;
+    use microfacet::fast::{beckmann as fb, double_ggx as dg, exponential as ex, ggx as fg};
+    let xorshift = |seed: u64| {
+        let mut state = seed;
+        move || {
+            state ^= state >> 12;
+            state ^= state << 25;
+            state ^= state >> 27;
+            (state.wrapping_mul(0x2545_f491_4f6c_dd1d) >> 11) as f64 * (1.0 / (1u64 << 53) as f64)
+        }
+    };
+    let mut next64 = xorshift(0x9e37_79b9_7f4a_7c15);
+    let mut next_inner = xorshift(0x9e37_79b9_7f4a_7c15);
+    let mut next32 = move || next_inner() as f32;
+    let u32s: Vec<f32> = i.u.iter().map(|&x| x as f32).collect();
+    let a32s: Vec<f32> = i.alpha.iter().map(|&x| x as f32).collect();
+    let w64: Vec<[f64; 3]> = i.w.iter().map(|w| [w.x, w.y, w.z]).collect();
+    let w32: Vec<[f32; 3]> = w64.iter().map(|w| w.map(|x| x as f32)).collect();
+    let xi32: Vec<[f32; 2]> = i.xi.iter().map(|x| x.map(|x| x as f32)).collect();
+    let materials: Vec<FastGtr> = (0..64)
+        .map(|k| FastGtr::new(i.alpha[k], i.gamma[k]).unwrap())
+        .collect();
+    let m = |k: usize| &materials[k % 64];
+    // One cell: the expression timed over the f64 inputs, then over their f32 roundings.
+    macro_rules! cell {
+        (|$k:ident, $u:ident, $u2:ident, $a:ident, $w:ident, $xi:ident, $next:ident| $e:expr) => {{
+            let t64 = time(calls, |$k| {
+                let ($u, $u2, $a) = (black_box(i.u[$k]), i.u[($k + 1) % N], i.alpha[$k]);
+                let ($w, $xi, $next) = (w64[$k], black_box(i.xi[$k]), &mut next64);
+                let _ = (&$u, &$u2, &$a, &$w, &$xi, &$next);
+                ($e).to_f64()
+            });
+            let t32 = time(calls, |$k| {
+                let ($u, $u2, $a) = (black_box(u32s[$k]), u32s[($k + 1) % N], a32s[$k]);
+                let ($w, $xi, $next) = (w32[$k], black_box(xi32[$k]), &mut next32);
+                let _ = (&$u, &$u2, &$a, &$w, &$xi, &$next);
+                ($e).to_f64()
+            });
+            format!("{t64:5.1} /{t32:5.1}")
+        }};
+    }
+    println!();
+    println!("every fast quantity (ns per call, f64 / f32; random inputs; G2 height-correlated; samplers include their extra uniforms)");
+    println!(
+        "{:22} {:>12} {:>12} {:>12} {:>12} {:>12} {:>12} {:>12}",
+        "NDF", "D", "Λ", "G1", "G2", "σ(−u)", "D·cos", "VNDF"
+    );
+    let rows: [(&str, [String; 7]); 5] = [
+        (
+            "GGX",
+            [
+                cell!(|k, u, u2, a, w, xi, next| fg::d(u, a)),
+                cell!(|k, u, u2, a, w, xi, next| fg::lambda(u, a)),
+                cell!(|k, u, u2, a, w, xi, next| fg::g1(u, a)),
+                cell!(|k, u, u2, a, w, xi, next| fg::g2(u, u2, a)),
+                cell!(|k, u, u2, a, w, xi, next| fg::sigma(-u, a)),
+                cell!(|k, u, u2, a, w, xi, next| fg::sample_dcos(a, a, xi)[2]),
+                cell!(|k, u, u2, a, w, xi, next| fg::sample_visible(w, a, a, xi)[2]),
+            ],
+        ),
+        (
+            "Beckmann",
+            [
+                cell!(|k, u, u2, a, w, xi, next| fb::d(u, a)),
+                cell!(|k, u, u2, a, w, xi, next| fb::lambda(u, a)),
+                cell!(|k, u, u2, a, w, xi, next| fb::g1(u, a)),
+                cell!(|k, u, u2, a, w, xi, next| fb::g2(u, u2, a)),
+                cell!(|k, u, u2, a, w, xi, next| fb::sigma(-u, a)),
+                cell!(|k, u, u2, a, w, xi, next| fb::sample_dcos(a, a, xi)[2]),
+                cell!(|k, u, u2, a, w, xi, next| fb::sample_visible(w, a, a, xi)[2]),
+            ],
+        ),
+        (
+            "Double GGX",
+            [
+                cell!(|k, u, u2, a, w, xi, next| dg::d(u, a)),
+                cell!(|k, u, u2, a, w, xi, next| dg::lambda(u, a)),
+                cell!(|k, u, u2, a, w, xi, next| dg::g1(u, a)),
+                cell!(|k, u, u2, a, w, xi, next| dg::g2(u, u2, a)),
+                cell!(|k, u, u2, a, w, xi, next| dg::sigma(-u, a)),
+                cell!(|k, u, u2, a, w, xi, next| dg::sample_dcos(a, a, xi, next)[2]),
+                cell!(|k, u, u2, a, w, xi, next| dg::sample_visible(w, a, a, xi, next)[2]),
+            ],
+        ),
+        (
+            "Exponential",
+            [
+                cell!(|k, u, u2, a, w, xi, next| ex::d(u, a)),
+                cell!(|k, u, u2, a, w, xi, next| ex::lambda(u, a)),
+                cell!(|k, u, u2, a, w, xi, next| ex::g1(u, a)),
+                cell!(|k, u, u2, a, w, xi, next| ex::g2(u, u2, a)),
+                cell!(|k, u, u2, a, w, xi, next| ex::sigma(-u, a)),
+                cell!(|k, u, u2, a, w, xi, next| ex::sample_dcos(a, a, xi, next)[2]),
+                cell!(|k, u, u2, a, w, xi, next| ex::sample_visible(w, a, a, xi, next)[2]),
+            ],
+        ),
+        (
+            "GTR (64 materials)",
+            [
+                cell!(|k, u, u2, a, w, xi, next| m(k).d(u)),
+                cell!(|k, u, u2, a, w, xi, next| m(k).lambda(u)),
+                cell!(|k, u, u2, a, w, xi, next| m(k).g1(u)),
+                cell!(|k, u, u2, a, w, xi, next| m(k).g2(u, u2)),
+                cell!(|k, u, u2, a, w, xi, next| m(k).sigma(-u)),
+                cell!(|k, u, u2, a, w, xi, next| m(k).sample_dcos(xi)[2]),
+                cell!(|k, u, u2, a, w, xi, next| m(k).sample_visible(w, xi, next)[2]),
+            ],
+        ),
+    ];
+    for (name, cells) in rows {
+        println!("{name:22} {}", cells.join(" "));
+    }
 }
 
 /// The fast visible-normal samplers of the superpositions (rejection; their extra uniforms

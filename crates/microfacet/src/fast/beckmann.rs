@@ -264,6 +264,24 @@ fn guess(a: f64, u: f64) -> f64 {
     lo + wt * (hi - lo)
 }
 
+/// A normal distributed as D(m) cos θm, anisotropic roughness (αx, αy), u ∈ [0, 1]²:
+/// tan²θ = −ln(1 − ξ) at unit roughness (ξ = u₀, by ln1p: exact for small ξ), azimuth 2πu₁,
+/// then stretched; u₀ = 1 gives the horizon. A warp of u (the exact [`crate::Stretched`] D·cos
+/// sampler's, to rounding); evaluated in f64.
+#[inline]
+pub fn sample_dcos<F: Real>(ax: F, ay: F, u: [F; 2]) -> [F; 3] {
+    let r = (-(-u[0].to_f64()).ln_1p()).sqrt();
+    let (c, s) = super::cos_sin_turn(u[1].to_f64());
+    let (ax, ay) = (ax.to_f64(), ay.to_f64());
+    // m ∝ (αx r cos φ, αy r sin φ, 1), or, once r > 1 (up to r = ∞ at u₀ = 1), the same
+    // divided by r.
+    if r > 1.0 {
+        super::unit_normal(ax * c, ay * s, 1.0 / r)
+    } else {
+        super::unit_normal(ax * r * c, ay * r * s, 1.0)
+    }
+}
+
 /// A visible normal for the unit direction w (mirrored if w.z < 0), anisotropic roughness
 /// (αx, αy), u ∈ [0, 1]²: the warp of [`crate::Stretched`]'s Beckmann `sample_visible`,
 /// evaluated in f64 (f32 rounds once).

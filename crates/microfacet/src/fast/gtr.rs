@@ -387,6 +387,23 @@ impl Gtr {
         super::normal_from_slopes(x, y, (cp, sp), 1.0, 1.0)
     }
 
+    /// A normal distributed as D(m) cos θm, u ∈ [0, 1]²: Burley's closed-form inversion
+    /// (seed 001 eqs 3–9, in the stable arrangement of the exact path,
+    /// [`crate::sample::RadialSlopes`]) for tan θ = F⁻¹(u₀), azimuth 2πu₁; a warp of u with the
+    /// exact sampler's accuracy. Evaluated in f64.
+    #[inline]
+    pub fn sample_dcos<F: Real>(&self, u: [F; 2]) -> [F; 3] {
+        use crate::sample::RadialSlopes;
+        let r = self.exact.slope_quantile(u[0].to_f64());
+        let (c, s) = super::cos_sin_turn(u[1].to_f64());
+        // m ∝ (r cos φ, r sin φ, 1), or, once r > 1 (up to r = ∞ at u₀ = 1), divided by r.
+        if r > 1.0 {
+            super::unit_normal(c, s, 1.0 / r)
+        } else {
+            super::unit_normal(r * c, r * s, 1.0)
+        }
+    }
+
     /// σ(u) for u ∈ [−1, 1].
     #[inline]
     pub fn sigma<F: Real>(&self, u: F) -> F {

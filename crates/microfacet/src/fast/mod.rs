@@ -178,6 +178,46 @@ fn normal_from_slopes<F: Real>(x: f64, y: f64, frame: (f64, f64), ax: f64, ay: f
     [F::from_f64(p * inv), F::from_f64(q * inv), F::from_f64(inv)]
 }
 
+/// (x, y, z)/|(x, y, z)| for a normal built from scaled slope coordinates (z ≥ 0). Where the
+/// squared length would under- or overflow (tiny α with uniforms near 0, say) the vector is
+/// first divided by its largest component; the one direction without a length, (0, 0, 0) (a
+/// zero slope at a zero height: uniforms exactly at 0 together, probability ~2^−106), gives
+/// the normal (0, 0, 1). NaN stays NaN.
+#[inline(always)]
+fn unit_normal<F: Real>(x: f64, y: f64, z: f64) -> [F; 3] {
+    let n2 = x * x + y * y + z * z;
+    // 1e±280: squares of components up to 1e140 from either end keep full precision.
+    if !(1e-280..=1e280).contains(&n2) {
+        return unit_normal_scaled(x, y, z);
+    }
+    let inv = 1.0 / n2.sqrt();
+    [
+        F::from_f64(x * inv),
+        F::from_f64(y * inv),
+        F::from_f64(z * inv),
+    ]
+}
+
+/// [`unit_normal`] for lengths near the ends of the f64 range, zero and NaN (out of line).
+#[cold]
+#[inline(never)]
+fn unit_normal_scaled<F: Real>(x: f64, y: f64, z: f64) -> [F; 3] {
+    if x.is_nan() || y.is_nan() || z.is_nan() {
+        return [F::from_f64(f64::NAN); 3];
+    }
+    let m = x.abs().max(y.abs()).max(z.abs());
+    if m == 0.0 {
+        return [F::ZERO, F::ZERO, F::ONE];
+    }
+    let (x, y, z) = (x / m, y / m, z / m);
+    let inv = 1.0 / (x * x + y * y + z * z).sqrt();
+    [
+        F::from_f64(x * inv),
+        F::from_f64(y * inv),
+        F::from_f64(z * inv),
+    ]
+}
+
 /// The floating-point operations the fast paths need; implemented for f32 and f64.
 pub trait Real:
     Copy
@@ -289,6 +329,23 @@ pub mod ggx {
         F::from_f64(super::sigma_from_lambda(u.to_f64(), 0.5 * a, |v| {
             lambda(v, a)
         }))
+    }
+
+    /// A normal distributed as D(m) cos θm (Walter et al. 2007), anisotropic roughness
+    /// (αx, αy), u ∈ [0, 1]²: tan²θ = ξ/(1 − ξ) at unit roughness (ξ = u₀), azimuth 2πu₁, then
+    /// stretched; m ∝ (αx √ξ cos φ, αy √ξ sin φ, √(1 − ξ)), so u₀ = 1 gives the horizon
+    /// without a division. A warp of u (the exact [`crate::Stretched`] D·cos sampler's, to
+    /// rounding); evaluated in f64.
+    #[inline]
+    pub fn sample_dcos<F: Real>(ax: F, ay: F, u: [F; 2]) -> [F; 3] {
+        let xi = u[0].to_f64();
+        let (c, s) = super::cos_sin_turn(u[1].to_f64());
+        let r = xi.sqrt();
+        super::unit_normal(
+            ax.to_f64() * r * c,
+            ay.to_f64() * r * s,
+            ((1.0 - xi).max(0.0)).sqrt(),
+        )
     }
 
     /// A visible normal for the unit direction w (w.z > 0) by spherical caps (Dupuy &
