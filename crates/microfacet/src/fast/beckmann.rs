@@ -271,15 +271,8 @@ fn guess(a: f64, u: f64) -> f64 {
 #[inline]
 pub fn sample_dcos<F: Real>(ax: F, ay: F, u: [F; 2]) -> [F; 3] {
     let r = (-(-u[0].to_f64()).ln_1p()).sqrt();
-    let (c, s) = super::cos_sin_turn(u[1].to_f64());
-    let (ax, ay) = (ax.to_f64(), ay.to_f64());
-    // m ∝ (αx r cos φ, αy r sin φ, 1), or, once r > 1 (up to r = ∞ at u₀ = 1), the same
-    // divided by r.
-    if r > 1.0 {
-        super::unit_normal(ax * c, ay * s, 1.0 / r)
-    } else {
-        super::unit_normal(ax * r * c, ay * r * s, 1.0)
-    }
+    let cs = super::cos_sin_turn(u[1].to_f64());
+    super::normal_from_polar(r, cs, ax.to_f64(), ay.to_f64())
 }
 
 /// A visible normal for the unit direction w (mirrored if w.z < 0), anisotropic roughness

@@ -94,14 +94,7 @@ pub fn sigma<F: Real>(u: F, alpha: F) -> F {
 #[inline]
 pub fn sample_dcos<F: Real>(ax: F, ay: F, u: [F; 2], uniform: &mut impl FnMut() -> F) -> [F; 3] {
     let t = -(-uniform().to_f64()).ln_1p();
-    let xi = u[0].to_f64();
-    let (c, s) = super::cos_sin_turn(u[1].to_f64());
-    let r = xi.sqrt();
-    super::unit_normal(
-        ax.to_f64() * r * c,
-        ay.to_f64() * r * s,
-        (t * (1.0 - xi).max(0.0)).sqrt(),
-    )
+    super::ggx_dcos(ax.to_f64(), ay.to_f64(), [u[0].to_f64(), u[1].to_f64()], t)
 }
 
 /// A visible normal for the unit direction w (mirrored if w.z < 0), anisotropic roughness

@@ -395,13 +395,7 @@ impl Gtr {
     pub fn sample_dcos<F: Real>(&self, u: [F; 2]) -> [F; 3] {
         use crate::sample::RadialSlopes;
         let r = self.exact.slope_quantile(u[0].to_f64());
-        let (c, s) = super::cos_sin_turn(u[1].to_f64());
-        // m ∝ (r cos φ, r sin φ, 1), or, once r > 1 (up to r = ∞ at u₀ = 1), divided by r.
-        if r > 1.0 {
-            super::unit_normal(c, s, 1.0 / r)
-        } else {
-            super::unit_normal(r * c, r * s, 1.0)
-        }
+        super::normal_from_polar(r, super::cos_sin_turn(u[1].to_f64()), 1.0, 1.0)
     }
 
     /// σ(u) for u ∈ [−1, 1].

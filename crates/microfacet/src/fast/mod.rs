@@ -200,6 +200,27 @@ fn unit_normal<F: Real>(x: f64, y: f64, z: f64) -> [F; 3] {
     ]
 }
 
+/// The normal of the polar slope (r cos φ, r sin φ) (c = cos φ, s = sin φ) stretched by
+/// (αx, αy): m ∝ (αx r c, αy r s, 1), or, once r > 1 (up to r = ∞), the same divided by r,
+/// so that no component overflows.
+#[inline(always)]
+fn normal_from_polar<F: Real>(r: f64, (c, s): (f64, f64), ax: f64, ay: f64) -> [F; 3] {
+    if r > 1.0 {
+        unit_normal(ax * c, ay * s, 1.0 / r)
+    } else {
+        unit_normal(ax * r * c, ay * r * s, 1.0)
+    }
+}
+
+/// GGX's D·cos normal at roughness (αx, αy)/√t for ξ = u₀, azimuth 2πu₁:
+/// m ∝ (αx √ξ cos φ, αy √ξ sin φ, √(t(1 − ξ))) (no division; u₀ = 1 is the horizon).
+#[inline(always)]
+fn ggx_dcos<F: Real>(ax: f64, ay: f64, u: [f64; 2], t: f64) -> [F; 3] {
+    let (c, s) = cos_sin_turn(u[1]);
+    let r = u[0].sqrt();
+    unit_normal(ax * r * c, ay * r * s, (t * (1.0 - u[0]).max(0.0)).sqrt())
+}
+
 /// [`unit_normal`] for lengths near the ends of the f64 range, zero and NaN (out of line).
 #[cold]
 #[inline(never)]
@@ -340,13 +361,11 @@ pub mod ggx {
     /// rounding); evaluated in f64.
     #[inline]
     pub fn sample_dcos<F: Real>(ax: F, ay: F, u: [F; 2]) -> [F; 3] {
-        let xi = u[0].to_f64();
-        let (c, s) = super::cos_sin_turn(u[1].to_f64());
-        let r = xi.sqrt();
-        super::unit_normal(
-            ax.to_f64() * r * c,
-            ay.to_f64() * r * s,
-            ((1.0 - xi).max(0.0)).sqrt(),
+        super::ggx_dcos(
+            ax.to_f64(),
+            ay.to_f64(),
+            [u[0].to_f64(), u[1].to_f64()],
+            1.0,
         )
     }
 
