@@ -36,6 +36,17 @@ impl Ggx {
     }
 }
 
+/// GGX Λ at t = α tan θ = α/cot θ: (√(1 + t²) − 1)/2, as t²/(2(1 + √(1 + t²))) (no
+/// cancellation near the normal). Shared with GTR's γ = 2 case ([`crate::Gtr::lambda_cot`]).
+pub(crate) fn lambda_of_t(t: f64) -> f64 {
+    // For t > 1e150, t² overflows; there Λ = (√(1+t²) − 1)/2 = t/2 to f64 precision.
+    if t > 1e150 {
+        return 0.5 * t;
+    }
+    let s = t * t;
+    s / (2.0 * (1.0 + (1.0 + s).sqrt()))
+}
+
 impl Ndf for Ggx {
     fn name(&self) -> &'static str {
         "ggx"
@@ -67,13 +78,7 @@ impl Ndf for Ggx {
     }
 
     fn lambda_pos(&self, u: f64) -> f64 {
-        let t = self.alpha / crate::smith::cot_theta(u);
-        // For t > 1e150, t² overflows; there Λ = (√(1+t²) − 1)/2 = t/2 to f64 precision.
-        if t > 1e150 {
-            return 0.5 * t;
-        }
-        let s = t * t;
-        s / (2.0 * (1.0 + (1.0 + s).sqrt()))
+        lambda_of_t(self.alpha / crate::smith::cot_theta(u))
     }
 
     fn sigma_zero(&self) -> f64 {

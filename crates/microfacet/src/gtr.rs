@@ -148,17 +148,7 @@ impl Gtr {
         if a > 0.0 && a <= 1e150 {
             match self.case {
                 Case::One => return self.lambda_cot_one(a),
-                Case::Two => {
-                    // (√(1 + t²) − 1)/2, t = α/a, as t²/(2(1 + √(1 + t²))) (no cancellation
-                    // near the normal); past t = 1e150, t² overflows and Λ = (t − 1)/2 to
-                    // within 1/t².
-                    let t = self.alpha / a;
-                    return if t > 1e150 {
-                        0.5 * (t - 1.0)
-                    } else {
-                        t * t / (2.0 * (1.0 + (1.0 + t * t).sqrt()))
-                    };
-                }
+                Case::Two => return crate::ggx::lambda_of_t(self.alpha / a),
                 _ => {}
             }
         }
