@@ -51,6 +51,87 @@ pub struct Gtr {
     c: f64,
     ln_c: f64,
     case: Case,
+    burley: Burley,
+}
+
+/// The per-material constants of Burley's slope CDF and its inversion ([`crate::sample`]):
+/// L = ln α², k = 1 − γ and the exponentials of ±kL and L that every evaluation would
+/// otherwise recompute (seven of the quantile's twelve transcendental calls).
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub(crate) struct Burley {
+    /// L = ln α².
+    pub l: f64,
+    /// k = 1 − γ.
+    pub k: f64,
+    /// kL.
+    pub kl: f64,
+    /// e^{kL} and e^{kL} − 1 (∞ and −1 past the f64 range, as the calls gave).
+    pub e: f64,
+    pub em1: f64,
+    /// e^{−kL} and e^{−kL} − 1.
+    pub e_neg: f64,
+    pub em1_neg: f64,
+    /// (e^{kL} − 1)/(kL) and (e^{−kL} − 1)/(−kL) (1 at kL = 0).
+    pub ex: f64,
+    pub ex_neg: f64,
+    /// δ = α² − 1 = e^L − 1, and ln(1 + δ)/δ (1 at δ = 0).
+    pub delta: f64,
+    pub lr_delta: f64,
+}
+
+impl Burley {
+    /// tan²θ at the slope CDF's quantile ξ ∈ (0, 1), by Burley's inversion (seed 001 eqs
+    /// 3–9) for ℓ = ln w, k = 1 − γ:
+    ///   e^{kℓ} = (1−ξ) e^{kL} + ξ  and  e^{k(ℓ−L)} = (1−ξ) + ξ e^{−kL},
+    ///   tan²θ = e^ℓ expm1(L − ℓ)/expm1(ℓ),
+    /// with five libm calls per quantile (the exponentials of ±kL are the constants).
+    #[inline(always)]
+    pub(crate) fn tan2(&self, xi: f64) -> f64 {
+        let (l, k, kl) = (self.l, self.k, self.kl);
+        if kl.abs() < 0.5 {
+            // Near γ = 1 or α = 1 divide the L out analytically (E(x) = expm1(x)/x,
+            // lr(x) = ln1p(x)/x): ℓ/L = (1−ξ) E(kL) lr(y), (L−ℓ)/L = ξ E(−kL) lr(z).
+            let y = (1.0 - xi) * self.em1;
+            let z = xi * self.em1_neg;
+            let ell_over_l = (1.0 - xi) * self.ex * ln1p_over_x(y);
+            let rest_over_l = xi * self.ex_neg * ln1p_over_x(z);
+            let (ell, rest) = (ell_over_l * l, rest_over_l * l);
+            ell.exp() * (rest_over_l / ell_over_l) * expm1_over_x(rest) / expm1_over_x(ell)
+        } else {
+            // Both right-hand sides are sums of positive terms; take ln1p where they are
+            // near 1 (|·| < ½: there ln1p keeps the small part's relative accuracy).
+            let ln_pos_sum = |minus_one: f64, a: f64, b: f64| {
+                if minus_one.abs() < 0.5 {
+                    minus_one.ln_1p()
+                } else {
+                    (a + b).ln()
+                }
+            };
+            let ell = ln_pos_sum((1.0 - xi) * self.em1, (1.0 - xi) * self.e, xi) / k;
+            let rest = -ln_pos_sum(xi * self.em1_neg, 1.0 - xi, xi * self.e_neg) / k;
+            ell.exp() * rest.exp_m1() / ell.exp_m1()
+        }
+    }
+
+    fn new(alpha: f64, gamma: f64) -> Self {
+        let l = 2.0 * alpha.ln();
+        let k = 1.0 - gamma;
+        let kl = k * l;
+        let delta = l.exp_m1();
+        Burley {
+            l,
+            k,
+            kl,
+            e: kl.exp(),
+            em1: kl.exp_m1(),
+            e_neg: (-kl).exp(),
+            em1_neg: (-kl).exp_m1(),
+            ex: expm1_over_x(kl),
+            ex_neg: expm1_over_x(-kl),
+            delta,
+            lr_delta: ln1p_over_x(delta),
+        }
+    }
 }
 
 impl Gtr {
@@ -90,6 +171,7 @@ impl Gtr {
             c,
             ln_c,
             case,
+            burley: Burley::new(alpha, gamma),
         })
     }
 
@@ -103,9 +185,15 @@ impl Gtr {
         self.c
     }
 
-    /// (L, k) = (ln α², 1 − γ) for Burley's CDF and its inversion ([`crate::sample`]).
-    pub(crate) fn burley(&self) -> (f64, f64) {
-        (2.0 * self.alpha.ln(), 1.0 - self.gamma)
+    /// ln c, finite where c underflows.
+    pub(crate) fn ln_c(&self) -> f64 {
+        self.ln_c
+    }
+
+    /// The constants of Burley's CDF and its inversion ([`crate::sample`]): L = ln α²,
+    /// k = 1 − γ and the exponentials of ±kL.
+    pub(crate) fn burley(&self) -> &Burley {
+        &self.burley
     }
 
     /// c · x^e, falling back to logarithms when either factor leaves the f64 range.

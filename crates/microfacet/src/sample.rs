@@ -184,7 +184,7 @@ impl RadialSlopes for Gtr {
         }
         // F = (w^{1−γ} − α^{2−2γ})/(1 − α^{2−2γ}) = expm1(−kX)/expm1(−kL), k = 1 − γ,
         // L = ln α², w = (r²+α²)/(1+r²), X = L − ln w = ln(α²/w).
-        let (l, k) = self.burley();
+        let (l, k) = (self.burley().l, self.burley().k);
         let (ln_w, _, x_over_l) = self.log_ratios(r);
         if -k * l > 1.0 {
             // Large exponents: = e^{k ln w} expm1(kX)/expm1(kL), whose exponentials are all
@@ -199,7 +199,7 @@ impl RadialSlopes for Gtr {
             return 0.0;
         }
         // 1 − F = expm1((1−γ) ln w)/expm1((1−γ)L).
-        let (l, k) = self.burley();
+        let (l, k) = (self.burley().l, self.burley().k);
         let (ln_w, w_over_l, x_over_l) = self.log_ratios(r);
         if k * l > 1.0 {
             // = e^{−kX} expm1(−k ln w)/expm1(−kL) (see slope_cdf).
@@ -212,34 +212,7 @@ impl RadialSlopes for Gtr {
         if let Some(r) = quantile_edge(xi) {
             return r;
         }
-        // Burley's inversion (seed 001 eqs 3–9) for ℓ = ln w, k = 1 − γ:
-        //   e^{kℓ} = (1−ξ) e^{kL} + ξ  and  e^{k(ℓ−L)} = (1−ξ) + ξ e^{−kL},
-        //   tan²θ = e^ℓ expm1(L − ℓ)/expm1(ℓ).
-        let (l, k) = self.burley();
-        let kl = k * l;
-        let tan2 = if kl.abs() < 0.5 {
-            // Near γ = 1 or α = 1 divide the L out analytically (E(x) = expm1(x)/x,
-            // lr(x) = ln1p(x)/x): ℓ/L = (1−ξ) E(kL) lr(y), (L−ℓ)/L = ξ E(−kL) lr(z).
-            let y = (1.0 - xi) * kl.exp_m1();
-            let z = xi * (-kl).exp_m1();
-            let ell_over_l = (1.0 - xi) * expm1_over_x(kl) * ln1p_over_x(y);
-            let rest_over_l = xi * expm1_over_x(-kl) * ln1p_over_x(z);
-            let (ell, rest) = (ell_over_l * l, rest_over_l * l);
-            ell.exp() * (rest_over_l / ell_over_l) * expm1_over_x(rest) / expm1_over_x(ell)
-        } else {
-            // Both right-hand sides are sums of positive terms; take ln1p where they are near 1.
-            let ln_pos_sum = |minus_one: f64, a: f64, b: f64| {
-                if minus_one.abs() < 0.5 {
-                    minus_one.ln_1p()
-                } else {
-                    (a + b).ln()
-                }
-            };
-            let ell = ln_pos_sum((1.0 - xi) * kl.exp_m1(), (1.0 - xi) * kl.exp(), xi) / k;
-            let rest = -ln_pos_sum(xi * (-kl).exp_m1(), 1.0 - xi, xi * (-kl).exp()) / k;
-            ell.exp() * rest.exp_m1() / ell.exp_m1()
-        };
-        tan2.sqrt()
+        self.burley().tan2(xi).sqrt()
     }
 }
 
@@ -251,12 +224,11 @@ impl Gtr {
     fn log_ratios(&self, r: f64) -> (f64, f64, f64) {
         let a2 = self.alpha() * self.alpha();
         let r2 = r * r;
-        let (l, _) = self.burley();
-        let delta = l.exp_m1();
+        let (l, delta) = (self.burley().l, self.burley().delta);
         let zw = 1.0 / (1.0 + r2); // w − 1 = δ zw
         let zx = r2 / (r2 + a2); // α²/w − 1 = δ zx
         if delta.abs() < 0.5 {
-            let lr = ln1p_over_x(delta);
+            let lr = self.burley().lr_delta;
             let w_over_l = zw * ln1p_over_x(delta * zw) / lr;
             let x_over_l = zx * ln1p_over_x(delta * zx) / lr;
             ((delta * zw).ln_1p(), w_over_l, x_over_l)

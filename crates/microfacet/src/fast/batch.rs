@@ -17,47 +17,13 @@
 //!
 //! Throughput and the scalar-loop comparison: BENCHMARKS.md.
 
+use super::arith;
 use super::tables::{DGGX, DGGX_K0, DGGX_K1, DGGX_M};
 use super::{beckmann, double_ggx, exponential, fit, ggx};
 use std::f64::consts::PI;
 
 /// Elements per chunk: a multiple of every SIMD width (2 to 8 doubles).
 const LANES: usize = 8;
-
-/// e^x for x ∈ [−708, 709] in arithmetic only (so that it vectorises): x = n ln 2 + r with n
-/// from the round-to-nearest of x log₂e + 1.5·2^52, |r| ≤ ln2/2, e^r by its Taylor series to
-/// r¹³ (remainder below 2e-16), 2^n from n's bits. Relative error ≤ 4e-16 (tests/fast.rs).
-/// Outside that range the result is e^{±708/709} and callers select.
-#[inline(always)]
-pub fn exp_arith(x: f64) -> f64 {
-    const LN2_HI: f64 = 6.931_471_803_691_238e-1;
-    const LN2_LO: f64 = 1.908_214_929_270_587_7e-10;
-    // 1.5·2^52: adding it rounds to an integer held in the low mantissa bits.
-    const MAGIC: f64 = 6_755_399_441_055_744.0;
-    let x = x.clamp(-708.0, 709.0);
-    let t = x * std::f64::consts::LOG2_E + MAGIC;
-    let n = t - MAGIC;
-    let r = (x - n * LN2_HI) - n * LN2_LO;
-    // Σ_{k≤13} r^k/k! by Horner on the reciprocal factorials.
-    const C: [f64; 14] = {
-        let mut c = [1.0; 14];
-        let mut k = 1;
-        while k < 14 {
-            c[k] = c[k - 1] / k as f64;
-            k += 1;
-        }
-        c
-    };
-    let mut p = C[13];
-    let mut k = 13;
-    while k > 0 {
-        k -= 1;
-        p = p * r + C[k];
-    }
-    // t's low bits hold n + 2^51; (n + 1023) lands in the exponent field.
-    let scale = f64::from_bits(t.to_bits().wrapping_add(1023) << 52);
-    p * scale
-}
 
 /// The instruction sets the slice functions are compiled for, narrowest first.
 #[derive(Clone, Copy, Debug, PartialEq, Eq, PartialOrd, Ord, Hash)]
@@ -229,8 +195,8 @@ pub fn beckmann_d(u: &[f64], alpha: &[f64], out: &mut [f64]) {
             let a2 = a * a;
             let u2 = u * u;
             let x = (1.0 - u) * (1.0 + u) / (u2 * a2);
-            let d = exp_arith(-x) / (PI * a2 * u2 * u2);
-            // x > 708: e^{−x} leaves exp_arith's range; u ≤ 0 (or NaN): the scalar's answer.
+            let d = arith::exp(-x) / (PI * a2 * u2 * u2);
+            // x > 708: e^{−x} leaves arith::exp's range; u ≤ 0 (or NaN): the scalar's answer.
             (d, !(u > 0.0 && x <= 708.0))
         },
         beckmann::d,
@@ -305,8 +271,8 @@ fn gtr_chunks<const DIRECT: bool>(g: &super::gtr::Gtr, u: &[f64], out: &mut [f64
             if DIRECT {
                 oc[l] = p;
             } else {
-                oc[l] = exp_arith(p);
-                // Past exp_arith's range (Λ < e^{−708}) the scalar path answers.
+                oc[l] = arith::exp(p);
+                // Past arith::exp's range (Λ < e^{−708}) the scalar path answers.
                 bad[l] |= p.is_nan() || p <= -708.0;
             }
         }

@@ -270,7 +270,7 @@ fn guess(a: f64, u: f64) -> f64 {
 /// sampler's, to rounding); evaluated in f64.
 #[inline]
 pub fn sample_dcos<F: Real>(ax: F, ay: F, u: [F; 2]) -> [F; 3] {
-    let r = (-(-u[0].to_f64()).ln_1p()).sqrt();
+    let r = (-super::arith::ln_1p(-u[0].to_f64())).sqrt();
     let cs = super::cos_sin_turn(u[1].to_f64());
     super::normal_from_polar(r, cs, ax.to_f64(), ay.to_f64())
 }

@@ -93,7 +93,7 @@ pub fn sigma<F: Real>(u: F, alpha: F) -> F {
 /// inversion, ~8 µs).
 #[inline]
 pub fn sample_dcos<F: Real>(ax: F, ay: F, u: [F; 2], uniform: &mut impl FnMut() -> F) -> [F; 3] {
-    let t = -(-uniform().to_f64()).ln_1p();
+    let t = -super::arith::ln_1p(-uniform().to_f64());
     super::ggx_dcos(ax.to_f64(), ay.to_f64(), [u[0].to_f64(), u[1].to_f64()], t)
 }
 

@@ -158,7 +158,7 @@ pub fn sigma<F: Real>(u: F, alpha: F) -> F {
 #[inline]
 pub fn sample_dcos<F: Real>(ax: F, ay: F, u: [F; 2], uniform: &mut impl FnMut() -> F) -> [F; 3] {
     // ln1p of each factor: exact where ξ or v is small.
-    let r = -0.5 * ((-u[0].to_f64()).ln_1p() + (-uniform().to_f64()).ln_1p());
+    let r = -0.5 * (super::arith::ln_1p(-u[0].to_f64()) + super::arith::ln_1p(-uniform().to_f64()));
     let cs = super::cos_sin_turn(u[1].to_f64());
     super::normal_from_polar(r, cs, ax.to_f64(), ay.to_f64())
 }

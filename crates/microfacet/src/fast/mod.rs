@@ -59,6 +59,7 @@ macro_rules! g1_g2_from_lambda {
     };
 }
 
+pub mod arith;
 pub mod batch;
 pub mod beckmann;
 pub mod double_ggx;
