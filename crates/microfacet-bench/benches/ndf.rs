@@ -479,7 +479,8 @@ fn fitted_fast_paths(i: &Inputs, calls: usize, ggx64: f64, ggx32: f64, exact_ggx
 /// Every quantity of every fast path in f64 and f32, one row per NDF: D, Λ, G1, G2
 /// (height-correlated, u_i from the next input), σ(−u), D·cos sampling and VNDF sampling. The
 /// samplers of the superpositions draw their extra uniforms from an inline xorshift64*, whose
-/// cost is included; GTR uses 64 prepared materials, chosen by the input index.
+/// cost is included; GTR uses 64 prepared materials, chosen by the input index (and a row
+/// of 64 at γ = 1, Burley's clearcoat).
 fn matrix(i: &Inputs, calls: usize) {
     use microfacet::fast::gtr::Gtr as FastGtr;
     use microfacet::fast::Real;
@@ -505,6 +506,11 @@ fn matrix(i: &Inputs, calls: usize) {
         .map(|k| FastGtr::new(i.alpha[k], i.gamma[k]).unwrap())
         .collect();
     let m = |k: usize| &materials[k % 64];
+    // Burley's clearcoat lobe: γ = 1 (closed-form Λ nodes and D without a logarithm).
+    let clearcoat: Vec<FastGtr> = (0..64)
+        .map(|k| FastGtr::new(i.alpha[k], 1.0).unwrap())
+        .collect();
+    let m1 = |k: usize| &clearcoat[k % 64];
     // One cell: the expression timed over the f64 inputs, then over their f32 roundings.
     macro_rules! cell {
         (|$k:ident, $u:ident, $u2:ident, $a:ident, $w:ident, $xi:ident, $next:ident| $e:expr) => {{
@@ -529,7 +535,7 @@ fn matrix(i: &Inputs, calls: usize) {
         "{:22} {:>12} {:>12} {:>12} {:>12} {:>12} {:>12} {:>12}",
         "NDF", "D", "Λ", "G1", "G2", "σ(−u)", "D·cos", "VNDF"
     );
-    let rows: [(&str, [String; 7]); 5] = [
+    let rows: [(&str, [String; 7]); 6] = [
         (
             "GGX",
             [
@@ -588,6 +594,18 @@ fn matrix(i: &Inputs, calls: usize) {
                 cell!(|k, u, u2, a, w, xi, next| m(k).sigma(-u)),
                 cell!(|k, u, u2, a, w, xi, next| m(k).sample_dcos(xi)[2]),
                 cell!(|k, u, u2, a, w, xi, next| m(k).sample_visible(w, xi, next)[2]),
+            ],
+        ),
+        (
+            "GTR γ = 1 (64 α)",
+            [
+                cell!(|k, u, u2, a, w, xi, next| m1(k).d(u)),
+                cell!(|k, u, u2, a, w, xi, next| m1(k).lambda(u)),
+                cell!(|k, u, u2, a, w, xi, next| m1(k).g1(u)),
+                cell!(|k, u, u2, a, w, xi, next| m1(k).g2(u, u2)),
+                cell!(|k, u, u2, a, w, xi, next| m1(k).sigma(-u)),
+                cell!(|k, u, u2, a, w, xi, next| m1(k).sample_dcos(xi)[2]),
+                cell!(|k, u, u2, a, w, xi, next| m1(k).sample_visible(w, xi, next)[2]),
             ],
         ),
     ];
