@@ -529,6 +529,20 @@ fn matrix(i: &Inputs, calls: usize) {
             format!("{t64:5.1} /{t32:5.1}")
         }};
     }
+    // A row for prepared GTR materials, picked by `$m(k)`.
+    macro_rules! gtr_cells {
+        ($m:ident) => {
+            [
+                cell!(|k, u, u2, a, w, xi, next| $m(k).d(u)),
+                cell!(|k, u, u2, a, w, xi, next| $m(k).lambda(u)),
+                cell!(|k, u, u2, a, w, xi, next| $m(k).g1(u)),
+                cell!(|k, u, u2, a, w, xi, next| $m(k).g2(u, u2)),
+                cell!(|k, u, u2, a, w, xi, next| $m(k).sigma(-u)),
+                cell!(|k, u, u2, a, w, xi, next| $m(k).sample_dcos(xi)[2]),
+                cell!(|k, u, u2, a, w, xi, next| $m(k).sample_visible(w, xi, next)[2]),
+            ]
+        };
+    }
     println!();
     println!("every fast quantity (ns per call, f64 / f32; random inputs; G2 height-correlated; samplers include their extra uniforms)");
     println!(
@@ -584,30 +598,8 @@ fn matrix(i: &Inputs, calls: usize) {
                 cell!(|k, u, u2, a, w, xi, next| ex::sample_visible(w, a, a, xi, next)[2]),
             ],
         ),
-        (
-            "GTR (64 materials)",
-            [
-                cell!(|k, u, u2, a, w, xi, next| m(k).d(u)),
-                cell!(|k, u, u2, a, w, xi, next| m(k).lambda(u)),
-                cell!(|k, u, u2, a, w, xi, next| m(k).g1(u)),
-                cell!(|k, u, u2, a, w, xi, next| m(k).g2(u, u2)),
-                cell!(|k, u, u2, a, w, xi, next| m(k).sigma(-u)),
-                cell!(|k, u, u2, a, w, xi, next| m(k).sample_dcos(xi)[2]),
-                cell!(|k, u, u2, a, w, xi, next| m(k).sample_visible(w, xi, next)[2]),
-            ],
-        ),
-        (
-            "GTR γ = 1 (64 α)",
-            [
-                cell!(|k, u, u2, a, w, xi, next| m1(k).d(u)),
-                cell!(|k, u, u2, a, w, xi, next| m1(k).lambda(u)),
-                cell!(|k, u, u2, a, w, xi, next| m1(k).g1(u)),
-                cell!(|k, u, u2, a, w, xi, next| m1(k).g2(u, u2)),
-                cell!(|k, u, u2, a, w, xi, next| m1(k).sigma(-u)),
-                cell!(|k, u, u2, a, w, xi, next| m1(k).sample_dcos(xi)[2]),
-                cell!(|k, u, u2, a, w, xi, next| m1(k).sample_visible(w, xi, next)[2]),
-            ],
-        ),
+        ("GTR (64 materials)", gtr_cells!(m)),
+        ("GTR γ = 1 (64 α)", gtr_cells!(m1)),
     ];
     for (name, cells) in rows {
         println!("{name:22} {}", cells.join(" "));

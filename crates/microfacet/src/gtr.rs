@@ -56,7 +56,7 @@ pub struct Gtr {
 
 /// The per-material constants of Burley's slope CDF and its inversion ([`crate::sample`]):
 /// L = ln α², k = 1 − γ and the exponentials of ±kL and L that every evaluation would
-/// otherwise recompute (seven of the quantile's twelve transcendental calls).
+/// otherwise recompute (five of the quantile's ten transcendental calls).
 #[derive(Clone, Copy, Debug, PartialEq)]
 pub(crate) struct Burley {
     /// L = ln α².
