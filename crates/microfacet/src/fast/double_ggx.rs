@@ -136,9 +136,14 @@ pub fn sample_visible<F: Real>(
         // NaN in w or α (the loop below would never accept).
         return [F::from_f64(f64::NAN); 3];
     }
-    // The envelope's masses: 2c for Exp(1), h√π for Gamma(½).
-    let p_exp = 2.0 * c / (2.0 * c + super::SQRT_PI * h);
-    let mut beta = 1.0;
+    // The envelope's masses: 2c for Exp(1), h√π for Gamma(½); their reciprocal shares are
+    // computed once, off the candidates' dependency chain.
+    let (e, g) = (2.0 * c, super::SQRT_PI * h);
+    let p_exp = e / (e + g);
+    let (inv_p, inv_q) = ((e + g) / e, (e + g) / g);
+    // The largest f64 below 1: keeps erfinv's argument below 1 when rounding would reach it.
+    const ONE_BELOW: f64 = 1.0 - f64::EPSILON / 2.0;
+    let mut s = 1.0;
     // At most 64 candidates: each is kept with probability ≥ 4/5, so a 65th would be needed
     // with probability below 1e-44; the cap only guarantees termination for a `uniform` that
     // returns NaN.
@@ -146,25 +151,23 @@ pub fn sample_visible<F: Real>(
         let v = uniform().to_f64();
         let t = if v < p_exp {
             // Exp(1) by inversion, 1 − v/p in (0, 1].
-            -(1.0 - v / p_exp).ln()
+            -(1.0 - v * inv_p).ln()
         } else {
             // Gamma(½) = Z²/2 = erfinv(v')², v' uniform in [0, 1).
-            let e = super::beckmann::erfinv((v - p_exp) / (1.0 - p_exp));
-            e * e
+            let z = super::beckmann::erfinv(((v - p_exp) * inv_q).min(ONE_BELOW));
+            z * z
         };
-        // t below 1e-200 has probability ~1e-100; the floor keeps h/√t and its square finite
+        // t below 1e-200 has probability ~1e-100; the floor keeps √t and c²t positive
         // (a component roughness of at most 1e100 α).
-        beta = 1.0 / t.max(1e-200).sqrt();
-        let b = h * beta;
-        if uniform().to_f64() * (2.0 * c + b) <= c + (c * c + b * b).sqrt() {
+        let t = t.max(1e-200);
+        s = t.sqrt();
+        // Kept with probability (c + √(c² + h²/t))/(2c + h/√t), multiplied through by √t
+        // (no division on the chain).
+        if uniform().to_f64() * (e * s + h) <= c * s + (c * c * t + h * h).sqrt() {
             break;
         }
     }
-    let m = super::ggx::sample_visible(
-        [wx, wy, wz],
-        ax * beta,
-        ay * beta,
-        [u[0].to_f64(), u[1].to_f64()],
-    );
+    // GGX's visible normal at (αx, αy)/√t, as the stretch (αx, αy, √t).
+    let m = super::ggx_visible_stretched([wx, wy, wz], ax, ay, s, [u[0].to_f64(), u[1].to_f64()]);
     [F::from_f64(m[0]), F::from_f64(m[1]), F::from_f64(m[2])]
 }

@@ -222,6 +222,24 @@ fn ggx_dcos<F: Real>(ax: f64, ay: f64, u: [f64; 2], t: f64) -> [F; 3] {
     unit_normal(ax * r * c, ay * r * s, (t * (1.0 - u[0]).max(0.0)).sqrt())
 }
 
+/// GGX's visible normal by spherical caps for the unit direction w (w.z ≥ 0), with the
+/// stretch (αx, αy, sz): roughness (αx, αy)/sz, the same directions up to a common factor
+/// ([`ggx::sample_visible`] is sz = 1; a caller holding √t for the roughness α/√t needs no
+/// division).
+#[inline(always)]
+fn ggx_visible_stretched<F: Real>(w: [F; 3], ax: F, ay: F, sz: F, u: [F; 2]) -> [F; 3] {
+    let (x, y, z) = (ax * w[0], ay * w[1], sz * w[2]);
+    let inv = F::ONE / (x * x + y * y + z * z).sqrt();
+    let (x, y, z) = (x * inv, y * inv, z * inv);
+    let (c, s) = cos_sin_turn(u[0].to_f64());
+    let (c, s) = (F::from_f64(c), F::from_f64(s));
+    let cz = (F::ONE - u[1]) * (F::ONE + z) - z;
+    let sin = (F::ONE - cz * cz).max(F::ZERO).sqrt();
+    let (hx, hy, hz) = (ax * (sin * c + x), ay * (sin * s + y), sz * (cz + z));
+    let inv = F::ONE / (hx * hx + hy * hy + hz * hz).sqrt();
+    [hx * inv, hy * inv, hz * inv]
+}
+
 /// [`unit_normal`] for lengths near the ends of the f64 range, zero and NaN (out of line).
 #[cold]
 #[inline(never)]
@@ -374,16 +392,7 @@ pub mod ggx {
     /// Benyoub 2023), anisotropic roughness (αx, αy); `u` uniform in [0, 1)².
     #[inline]
     pub fn sample_visible<F: Real>(w: [F; 3], ax: F, ay: F, u: [F; 2]) -> [F; 3] {
-        let (x, y, z) = (ax * w[0], ay * w[1], w[2]);
-        let inv = F::ONE / (x * x + y * y + z * z).sqrt();
-        let (x, y, z) = (x * inv, y * inv, z * inv);
-        let (c, s) = super::cos_sin_turn(u[0].to_f64());
-        let (c, s) = (F::from_f64(c), F::from_f64(s));
-        let cz = (F::ONE - u[1]) * (F::ONE + z) - z;
-        let sin = (F::ONE - cz * cz).max(F::ZERO).sqrt();
-        let (hx, hy, hz) = (ax * (sin * c + x), ay * (sin * s + y), cz + z);
-        let inv = F::ONE / (hx * hx + hy * hy + hz * hz).sqrt();
-        [hx * inv, hy * inv, hz * inv]
+        super::ggx_visible_stretched(w, ax, ay, F::ONE, u)
     }
 }
 
