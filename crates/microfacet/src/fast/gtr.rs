@@ -3,36 +3,51 @@
 //! GTR is not shape invariant: Λ depends on cot θ, α and γ, a three-parameter function no
 //! static table covers at 1e-7. A renderer fixes (α, γ) per material, so [`Gtr::new`] fits
 //! Λ for that material by Chebyshev interpolation of the exact Smith integral
-//! ([`crate::Gtr::lambda_cot`]), degree 8, on octave segments of t, in two tables:
-//! * the **u table**, t = u = cos θ < ½ (the grazing side), quarter octaves;
-//! * the **w table**, t = w = 1 − u ≤ ½ (the normal side; 1 − u is exact there), half
-//!   octaves (w ~ 1/(2 cot²θ) near the normal, so that is a quarter octave of cot θ).
+//! ([`crate::Gtr::lambda_cot`]), degree 6, on octave segments of t, in two tables:
+//! * the **u table**, t = u = cos θ < ½ (the grazing side), eighth octaves;
+//! * the **w table**, t = w = 1 − u ≤ ½ (the normal side; 1 − u is exact there), quarter
+//!   octaves (w ~ 1/(2 cot²θ) near the normal, so that is an eighth octave of cot θ).
+//!
+//! Seven coefficients on short segments rather than nine on segments twice as long (the
+//! previous layout, as accurate): a shorter polynomial and one gather fewer per lane, which
+//! took Λ from 8.7 to 8.0 ns and the AVX-512 slice kernel from 5.6 to 3.6 ns per element
+//! (BENCHMARKS.md).
 //!
 //! So Λ(u) needs no square root and no division: the side picks the table by selects
 //! (no branch to mispredict on random directions), then one polynomial. From one set of
 //! exact values [`Gtr::new`] builds each table twice and keeps one kind:
-//! * **Λ itself**, if it is accurate: within 5e-9 at every segment end (`DIRECT_TOL`), and
+//! * **Λ itself**, if it is accurate: within 1e-8 at every segment end (`DIRECT_TOL`), and
 //!   no value near underflow. Evaluation is then the polynomial alone. This holds for every
 //!   α at γ ≤ 3 and for most α at γ ≤ 5 ([`Gtr::is_direct`] tells which; tests/fast.rs
 //!   records the census).
 //! * **ln Λ** otherwise, plus one exponential at evaluation. For large γ and small α, Λ falls
-//!   like cot^{−2γ}θ near the normal: by 10^15 across one quarter octave of cot θ at γ = 100.
+//!   like cot^{−2γ}θ near the normal: by 2^25 ≈ 3·10^7 across one segment (an eighth octave
+//!   of cot θ) at γ = 100.
 //!   No short polynomial follows that in relative terms, while ln Λ stays smooth. Where Λ
 //!   underflows (γ ≳ 30 with small α: Λ ~ α^{2γ} near the normal), a segment with any node
 //!   below 1e-300 returns 0. So Λ is relatively accurate where it exceeds 1e-280 (a
-//!   segment spans at most a factor 10^15 there) and absolutely below.
+//!   segment spans at most a factor 3·10^7 there) and absolutely below.
 //!
-//! Construction evaluates the exact Λ about 1 500 times (tens of milliseconds;
+//! Construction evaluates the exact Λ about 1 500 times (184 rows of 7 nodes at α = 0.3,
+//! γ = 1.5, plus the segment ends for the accuracy check; about ten milliseconds;
 //! BENCHMARKS.md has the measured figure). [`Gtr::lambda_cot`] takes cot θ = a directly and
 //! forms u = a/r and w = 1/(r(r + a)), r = √(1 + a²), both without cancellation.
 //!
 //! Range: the features of P22 = c(1 + r²)^{γ−2}(r² + α²)^{−γ} lie at slopes r ~ α, 1 and √γ
 //! (where ((1 + r²)/(α² + r²))^γ settles). With s₋ = min(α, 1)/max(1, √γ) and
-//! s₊ = max(α, 1, √γ), the tables span cot θ from about 2^−18 s₋ (u table) to 2^18 s₊
-//! (w table); beyond them
-//! * near the normal (P22 ~ c r⁻⁴ past every feature): Λ = K/a², K matched at the end (the
-//!   next term is O((s₊/a)²) relative, below 1e-10);
-//! * grazing: Λ = m/a − 1/2, m matched at the end (next term O((a/s₋)²)).
+//! s₊ = max(α, 1, √γ), the tables span cot θ from about 2^−10 s₋ (u table) to 2^10 s₊
+//! (w table); beyond them two terms of each end's expansion, matched to the exact Λ at the
+//! table's end and a factor 2 beyond it:
+//! * near the normal (P22 ~ c r⁻⁴ past every feature, with corrections in powers of r⁻²):
+//!   Λ = K/a² + K₂/a⁴ (the next term is O((s₊/a)⁴) relative);
+//! * grazing: Λ = m/a − 1/2 + m₁a (Λ = M₁/a − ∫_a^∞ P2 + …, P2 even: the next term is
+//!   O((a/s₋)⁴) relative).
+//!
+//! Measured by tests/fast.rs over its domain: with the tables ending at 2^7 the ends erred by
+//! 1.8e-7 (α = 1e3, γ = 100), at 2^8 by 1.1e-8 (the 16× per power of 2 that O(a⁴)
+//! predicts); at 2^9 and at 2^10 (kept, for margin) the worst error is the tables' own,
+//! 5.2e-9. With one term the ends needed 2^18, and the tables 1.7 times the rows (312
+//! against 184 at α = 0.3, γ = 1.5).
 //!
 //! Accuracy: relative error ≤ 1e-7 required; tests/fast.rs measures it over u ∈ (0, 1] for
 //! α ∈ [1e-3, 1e3], γ ∈ [0.1, 100].
@@ -41,21 +56,24 @@ use super::{fit, Real};
 use crate::error::ParamError;
 use crate::ndf::Ndf;
 
-/// Polynomial coefficients per segment (degree 8).
-const N: usize = 9;
+/// Polynomial coefficients per segment (degree 6).
+const N: usize = 7;
 /// 2^M segments per octave.
-pub(crate) const M: u32 = 2;
+pub(crate) const M: u32 = 3;
 /// 2^M_W segments per octave of w = 1 − u: w ~ 1/(2a²) near the normal, so an octave of w
-/// is half an octave of a, and M_W = M − 1 keeps the resolution in a.
+/// is half an octave of a, and M_W = M − 1 keeps the resolution in a. (Eighth octaves of a
+/// with degree 6 meet the tolerance; quarter octaves needed degree 8.)
 const M_W: u32 = M - 1;
-/// The table reaches 2^SPAN beyond the outermost feature scale on each side.
-const SPAN: i32 = 18;
+/// The table reaches 2^SPAN beyond the outermost feature scale on each side, where the two-term
+/// asymptotic ends take over (module docs).
+const SPAN: i32 = 10;
 /// Below this Λ is treated as underflowed (see the module docs).
 const TINY: f64 = 1e-300;
 /// The largest relative error, at the segment ends, for which the table of Λ itself replaces
-/// that of ln Λ: 20× inside the required 1e-7, and near the log table's own error (about
-/// 1e-9). It admits every α at γ ≤ 3 and most at γ ≤ 5 (the census is in tests/fast.rs).
-const DIRECT_TOL: f64 = 5e-9;
+/// that of ln Λ: 10× inside the required 1e-7, and near the log table's own error (about
+/// 4e-9; 5e-9 sent α = 1e-3, γ = 3 to the log table, by 5.3e-9). It admits every α at
+/// γ ≤ 3 and most at γ ≤ 5 (the census is in tests/fast.rs).
+const DIRECT_TOL: f64 = 1e-8;
 
 /// a = cot θ from u = cos θ.
 fn a_of_u(u: f64) -> f64 {
@@ -99,10 +117,10 @@ pub struct Gtr {
     sides: [Side; 2],
     /// Whether `coef` holds Λ itself or ln Λ.
     direct: bool,
-    /// Λ ≈ m/a − 1/2 below `u_lo` (a = cot θ).
-    m: f64,
-    /// Λ ≈ K/a² below `w_lo`.
-    k: f64,
+    /// Λ ≈ m/a − 1/2 + m₁a below `u_lo` (a = cot θ): [m, m₁].
+    m: [f64; 2],
+    /// Λ ≈ K/a² + K₂/a⁴ past `w_lo`: [K, K₂].
+    k: [f64; 2],
     sigma0: f64,
     /// D's normalisation c and its log (finite where c underflows).
     c: f64,
@@ -184,8 +202,12 @@ impl Gtr {
                 },
             ],
             direct,
-            m: (exact.lambda_cot(a_lo) + 0.5) * a_lo,
-            k: exact.lambda_cot(a_hi) * a_hi * a_hi,
+            m: Self::two_terms(|a| (exact.lambda_cot(a) + 0.5) * a, a_lo, 0.5 * a_lo),
+            k: Self::two_terms(
+                |x| exact.lambda_cot(1.0 / x) / (x * x),
+                1.0 / a_hi,
+                0.5 / a_hi,
+            ),
             sigma0: exact.sigma(0.0),
             c: exact.c(),
             ln_c: exact.ln_c(),
@@ -200,6 +222,16 @@ impl Gtr {
             dcos: Radial::new(alpha, gamma, 1.0),
             moment: Radial::new(alpha, gamma, 1.5),
         })
+    }
+
+    /// [c₀, c₁] of g(x) = c₀ + c₁x² through g at x₁ and x₂ (the asymptotic ends, matched where
+    /// the tables stop: g = (Λ + ½)a, x = a on the grazing side; g = Λa², x = 1/a near the
+    /// normal).
+    fn two_terms(g: impl Fn(f64) -> f64, x1: f64, x2: f64) -> [f64; 2] {
+        let y1 = g(x1);
+        let y2 = g(x2);
+        let c1 = (y1 - y2) / (x1 * x1 - x2 * x2);
+        [y1 - c1 * x1 * x1, c1]
     }
 
     /// Whether one table of Λ itself (first octave 2^k0, variable t with a = `a_of(t)`) is as
@@ -300,13 +332,13 @@ impl Gtr {
     #[inline(never)]
     fn lambda_cot_ends(&self, a: f64) -> f64 {
         if a < 1.0 {
-            return self.m / a - 0.5;
+            return self.m[0] / a - 0.5 + self.m[1] * a;
         }
         if a.is_nan() {
             return a;
         }
         let r = 1.0 / a;
-        self.k * r * r
+        (self.k[0] + self.k[1] * (r * r)) * (r * r)
     }
 
     /// D(u) for every u: c x^{−γ}, x = (1 − u)(1 + u) + (αu)² (a sum of positive terms); c/x
