@@ -107,6 +107,61 @@ fn beckmann_guess(out: &mut String) {
     writeln!(out, "];").unwrap();
 }
 
+/// The layers of a 256-layer ziggurat (Marsaglia and Tsang 2000) for the decreasing density
+/// `f` on [0, ∞) with f(0) = 1, inverse `f_inv` and tail mass `tail(r)` = ∫_r^∞ f: writes
+/// `{name}_X` (x₀ = V/f(r), x₁ = r, …, x₂₅₆ = 0) and `{name}_F` (f(xᵢ), f(x₂₅₆) = 1).
+/// Every layer has the area V = r f(r) + tail(r): xᵢ₊₁ = f⁻¹(f(xᵢ) + V/xᵢ), and r is
+/// bisected to the last bit so that the top layer x₂₅₅(1 − f(x₂₅₅)) closes on V. Returns
+/// the largest relative deviation of a layer's area (from the stored values) from V.
+fn ziggurat(
+    out: &mut String,
+    name: &str,
+    what: &str,
+    f: impl Fn(f64) -> f64,
+    f_inv: impl Fn(f64) -> f64,
+    tail: impl Fn(f64) -> f64,
+) -> f64 {
+    // The layers for a base r; None when the stack reaches f(0) before the top layer (r too
+    // small, so V too large).
+    let layers = |r: f64| -> Option<(f64, [f64; 257])> {
+        let v = r * f(r) + tail(r);
+        let mut x = [0.0; 257];
+        x[0] = v / f(r);
+        x[1] = r;
+        for i in 1..255 {
+            let y = f(x[i]) + v / x[i];
+            if y >= 1.0 {
+                return None;
+            }
+            x[i + 1] = f_inv(y);
+        }
+        Some((v, x))
+    };
+    // The top layer's area less V: negative (or None) for r too small, positive for too large.
+    let excess = |r: f64| match layers(r) {
+        None => -1.0,
+        Some((v, x)) => x[255] * (1.0 - f(x[255])) - v,
+    };
+    let r = bisect(|r| excess(r) < 0.0, 1.0, 20.0);
+    let (v, x) = layers(r).unwrap();
+    let fx: Vec<f64> = x.iter().map(|&xi| f(xi)).collect();
+    let mut worst = ((x[0] * fx[1] - v) / v).abs();
+    for i in 1..256 {
+        worst = worst.max(((x[i] * (fx[i + 1] - fx[i]) - v) / v).abs());
+    }
+    writeln!(out, "/// {what}: 256 layers of area V = {v:e}, base r = {r:e}; layer areas within {worst:.1e} of V (relative).").unwrap();
+    for (suffix, t) in [("X", &x[..]), ("F", &fx[..])] {
+        let row: Vec<String> = t.iter().map(|v| format!("{v:e}")).collect();
+        writeln!(out, "pub static {name}_{suffix}: [f64; 257] = [").unwrap();
+        for chunk in row.chunks(4) {
+            writeln!(out, "    {},", chunk.join(", ")).unwrap();
+        }
+        writeln!(out, "];").unwrap();
+    }
+    eprintln!("{name}: r = {r}, V = {v:e}, layer areas within {worst:.2e}");
+    worst
+}
+
 /// Fits `f` on [2^k0, 2^k1) and writes the table; returns the largest relative error at 16
 /// points inside every segment.
 fn table<const N: usize>(
@@ -233,6 +288,26 @@ fn main() {
     );
     out.push('\n');
     beckmann_guess(&mut out);
+    out.push('\n');
+    // Exp(1) and the half-normal |N(0, 1)| for the fast samplers' variates (`fast::ziggurat`).
+    let z1 = ziggurat(
+        &mut out,
+        "ZIG_EXP",
+        "Ziggurat of e^{−x} (Exp(1))",
+        |x| (-x).exp(),
+        |y| -y.ln(),
+        |r| (-r).exp(),
+    );
+    out.push('\n');
+    let z2 = ziggurat(
+        &mut out,
+        "ZIG_NORMAL",
+        "Ziggurat of e^{−x²/2} (the half-normal)",
+        |x| (-0.5 * x * x).exp(),
+        |y| (-2.0 * y.ln()).sqrt(),
+        |r| (std::f64::consts::PI / 2.0).sqrt() * libm::erfc(r / std::f64::consts::SQRT_2),
+    );
+    assert!(z1 < 1e-12 && z2 < 1e-12, "ziggurat layers unequal");
     assert!(
         e1 < 1e-8 && e2 < 1e-8 && e6 < 1e-8 && e7 < 1e-8 && e8 < 1e-8,
         "fit error too large"

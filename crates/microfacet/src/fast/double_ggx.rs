@@ -86,14 +86,16 @@ pub fn sigma<F: Real>(u: F, alpha: F) -> F {
 
 /// A normal distributed exactly as D(m) cos θm, anisotropic roughness (αx, αy): D·cos of
 /// the superposition D = ∫₀^∞ e^{−t} D_GGX(αx/√t, αy/√t) dt is the same superposition of the
-/// components' D·cos (each integrates to 1), so t ~ Exp(1) = −ln(1 − v) with one uniform v
-/// from `uniform`, then GGX's D·cos at α/√t driven by u:
+/// components' D·cos (each integrates to 1), so t ~ Exp(1) from `uniform` (the ziggurat,
+/// [`super::ziggurat::exp1`]: one uniform, a second in about 3 % of draws), then GGX's D·cos
+/// at α/√t driven by u:
 /// m ∝ (αx √ξ cos φ, αy √ξ sin φ, √(t(1 − ξ))), ξ = u₀, φ = 2πu₁. Evaluated in f64. Not a warp
 /// of u alone (no inverse), unlike the exact [`crate::Stretched`] D·cos sampler (a Newton
 /// inversion, ~8 µs).
 #[inline]
 pub fn sample_dcos<F: Real>(ax: F, ay: F, u: [F; 2], uniform: &mut impl FnMut() -> F) -> [F; 3] {
-    let t = -super::arith::ln_1p(-uniform().to_f64());
+    let mut next = || uniform().to_f64();
+    let t = super::ziggurat::exp1(next(), &mut next);
     super::ggx_dcos(ax.to_f64(), ay.to_f64(), [u[0].to_f64(), u[1].to_f64()], t)
 }
 
@@ -108,12 +110,15 @@ pub fn sample_dcos<F: Real>(ax: F, ay: F, u: [F; 2], uniform: &mut impl FnMut() 
 /// projected area. t is drawn from that weight by rejection: since √(c² + h²/t) ≤ c + h/√t,
 /// the envelope e^{−t}(2c + h t^{−1/2}) is a mixture of Exp(1) (mass 2c) and Gamma(½) (mass
 /// h√π), and a candidate is kept with probability (c + √(c² + h²/t))/(2c + h/√t) ≥ 4/5
-/// (the minimum, at h/√t = 4c/3; the mean number of candidates is in tests/fast.rs). The
-/// normal is then the GGX component's spherical-cap sample
+/// (the minimum, at h/√t = 4c/3; the mean number of candidates is in tests/fast.rs). One
+/// uniform picks the part and, scaled, drives that part's ziggurat ([`super::ziggurat`]:
+/// Exp(1), or Gamma(½) = Z²/2 from the half-normal Z), so neither needs a logarithm or an
+/// erfinv. The normal is then the GGX component's spherical-cap sample
 /// ([`super::ggx::sample_visible`]) driven by `u`, so stratification of `u` carries over to
 /// the normal within each component.
 ///
-/// `uniform` supplies the selection's uniforms in [0, 1): two per candidate. Unlike the
+/// `uniform` supplies the selection's uniforms in [0, 1): two per candidate (and the
+/// ziggurats' occasional extra ones). Unlike the
 /// exact [`crate::Stretched`] sampler this is not a warp of u alone (no inverse).
 #[inline]
 pub fn sample_visible<F: Real>(
@@ -141,29 +146,31 @@ pub fn sample_visible<F: Real>(
     let (e, g) = (2.0 * c, super::SQRT_PI * h);
     let p_exp = e / (e + g);
     let (inv_p, inv_q) = ((e + g) / e, (e + g) / g);
-    // The largest f64 below 1: keeps erfinv's argument below 1 when rounding would reach it.
-    const ONE_BELOW: f64 = 1.0 - f64::EPSILON / 2.0;
+    let mut next = || uniform().to_f64();
     let mut s = 1.0;
     // At most 64 candidates: each is kept with probability ≥ 4/5, so a 65th would be needed
     // with probability below 1e-44; the cap only guarantees termination for a `uniform` that
     // returns NaN.
     for _ in 0..64 {
-        let v = uniform().to_f64();
-        let t = if v < p_exp {
-            // Exp(1) by inversion, 1 − v/p in (0, 1].
-            -(1.0 - v * inv_p).ln()
+        let v = next();
+        // The part and a uniform within it (1 − p_exp of the parts is Gamma(½)), then the
+        // part's ziggurat: Exp(1) itself, or Gamma(½) = Z²/2 from the half-normal Z. Selects,
+        // not branches: the part is a coin flip for a random direction.
+        let exp = v < p_exp;
+        let (layers, w) = if exp {
+            (&super::ziggurat::EXP, v * inv_p)
         } else {
-            // Gamma(½) = Z²/2 = erfinv(v')², v' uniform in [0, 1).
-            let z = super::beckmann::erfinv(((v - p_exp) * inv_q).min(ONE_BELOW));
-            z * z
+            (&super::ziggurat::HALF_NORMAL, (v - p_exp) * inv_q)
         };
+        let x = super::ziggurat::sample(layers, w, &mut next);
+        let t = if exp { x } else { 0.5 * x * x };
         // t below 1e-200 has probability ~1e-100; the floor keeps √t and c²t positive
         // (a component roughness of at most 1e100 α).
         let t = t.max(1e-200);
         s = t.sqrt();
         // Kept with probability (c + √(c² + h²/t))/(2c + h/√t), multiplied through by √t
         // (no division on the chain).
-        if uniform().to_f64() * (e * s + h) <= c * s + (c * c * t + h * h).sqrt() {
+        if next() * (e * s + h) <= c * s + (c * c * t + h * h).sqrt() {
             break;
         }
     }
