@@ -199,8 +199,12 @@ pub fn sample_visible<F: Real>(
         // NaN in w or α (the loop below would never accept).
         return [F::from_f64(f64::NAN); 3];
     }
-    // The envelope's masses: c for the D·cos part, h/π for the first-moment part.
-    let p_dcos = c / (c + h * FRAC_1_PI);
+    // The envelope's masses: c for the D·cos part, h/π for the first-moment part. The part is
+    // decided by a multiplication (v0 < p_dcos ⇔ d < 0), and the reciprocals of p_dcos and of
+    // g are computed once, off the candidates' chain.
+    let (e, g) = (c, h * FRAC_1_PI);
+    let total = e + g;
+    let (inv_p, inv_g) = (total / e, 1.0 / g);
     let (mut v0, mut v1) = (u[0].to_f64(), u[1].to_f64());
     let (mut x, mut y) = (0.0, 0.0);
     // At most 64 candidates: each is kept with probability above 1/2, so the cap (which only
@@ -212,18 +216,22 @@ pub fn sample_visible<F: Real>(
             v1 = uniform().to_f64();
         }
         // A product of uniforms in (0, 1]: −½ ln of k of them is Gamma(k, ½).
-        let g = (1.0 - v1) * (1.0 - uniform().to_f64());
-        if v0 < p_dcos {
-            let r = -0.5 * g.ln();
-            let (co, s) = super::cos_sin_turn(v0 / p_dcos);
+        let prod = (1.0 - v1) * (1.0 - uniform().to_f64());
+        let d = v0 * total - e;
+        if d < 0.0 {
+            let r = -0.5 * prod.ln();
+            let turn = v0 * inv_p;
+            let (co, s) = super::cos_sin_turn(turn);
             (x, y) = (r * co, r * s);
-            if x >= 0.0 || uniform().to_f64() * c <= c + h * x {
+            // x ≥ 0 (cos 2πv ≥ 0) read from the turn itself, early on the chain.
+            if (turn - 0.5).abs() >= 0.25 || uniform().to_f64() * c <= c + h * x {
                 break;
             }
         } else {
-            let r = -0.5 * (g * (1.0 - uniform().to_f64())).ln();
-            let s = 2.0 * ((v0 - p_dcos) / (1.0 - p_dcos)) - 1.0;
-            (x, y) = (r * ((1.0 - s) * (1.0 + s)).sqrt(), r * s);
+            let r = -0.5 * (prod * (1.0 - uniform().to_f64())).ln();
+            let s = 2.0 * (d * inv_g) - 1.0;
+            // (The max: s may round past 1.)
+            (x, y) = (r * ((1.0 - s) * (1.0 + s)).max(0.0).sqrt(), r * s);
             break;
         }
     }
