@@ -832,18 +832,20 @@ impl Radial {
             };
             let x = r * r;
             let t = x.ln();
-            let phi = self.k * t + (self.gamma - 2.0) * x.ln_1p() - self.gamma * (self.a2 + x).ln();
-            return (keep <= (phi - self.top - 0.5 * t - p.h).exp()).then_some(r);
+            return (keep <= (self.phi(t, x) - self.top - 0.5 * t - p.h).exp()).then_some(r);
         }
         let t = p.sample(v2());
         let r = (0.5 * t).exp();
         if keep <= p.squeeze {
             return Some(r);
         }
-        let x = r * r;
-        let phi = self.k * t + (self.gamma - 2.0) * x.ln_1p() - self.gamma * (self.a2 + x).ln();
         let envelope = self.top + p.e0 + p.beta * (t - p.a);
-        (keep <= (phi - envelope).exp()).then_some(r)
+        (keep <= (self.phi(t, r * r) - envelope).exp()).then_some(r)
+    }
+
+    /// φ(t) = k t + (γ − 2) ln(1 + x) − γ ln(α² + x) at x = eᵗ = r².
+    fn phi(&self, t: f64, x: f64) -> f64 {
+        self.k * t + (self.gamma - 2.0) * x.ln_1p() - self.gamma * (self.a2 + x).ln()
     }
 }
 

@@ -59,15 +59,21 @@ pub fn half_normal(w: f64, uniform: &mut impl FnMut() -> f64) -> f64 {
 /// reads as 0; NaN gives NaN).
 #[inline(always)]
 pub(crate) fn sample(z: &Layers, w: f64, uniform: &mut impl FnMut() -> f64) -> f64 {
-    let y = w * 256.0;
-    // Saturating: NaN and negative w give 0, w = 1 gives 256 (masked to layer 0 at x = 0).
-    let k = y as usize;
-    let i = k & 255;
-    let x = (y - k as f64) * z.x[i];
+    let (i, x) = layer(z, w);
     if x < z.x[i + 1] {
         return x;
     }
     slow(z, i, x, uniform)
+}
+
+/// The layer i = ⌊256 w⌋ and x = (256 w − i) xᵢ.
+#[inline(always)]
+fn layer(z: &Layers, w: f64) -> (usize, f64) {
+    let y = w * 256.0;
+    // Saturating: NaN and negative w give 0, w = 1 gives 256 (masked to layer 0 at x = 0).
+    let k = y as usize;
+    let i = k & 255;
+    (i, (y - k as f64) * z.x[i])
 }
 
 /// The tail (layer 0) and the wedges (layers 1 to 255), and the restarts they lead to.
@@ -96,10 +102,7 @@ fn slow(z: &Layers, mut i: usize, mut x: f64, uniform: &mut impl FnMut() -> f64)
             }
         }
         // Rejected: a fresh draw.
-        let y = uniform() * 256.0;
-        let k = y as usize;
-        i = k & 255;
-        x = (y - k as f64) * z.x[i];
+        (i, x) = layer(z, uniform());
         if x < z.x[i + 1] {
             return x;
         }
