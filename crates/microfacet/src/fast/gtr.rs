@@ -676,12 +676,14 @@ impl Radial {
                 } else {
                     4.0 * FLAT_SLOPE
                 };
+                // Halved no further than w0/16: at large γ the slopes reach ~γ, and the piece
+                // count stays bounded (the efficiency there is checked in the unit test).
                 if (beta - 0.5).abs() * width > limit && width > w0 / 16.0 {
                     width *= 0.5;
                     continue;
                 }
                 raw.push((a, width, beta, k * a + a_at_a + tb_a, a_gap + b_gap));
-                a = if b >= t_hi { t_hi } else { b };
+                a = b.min(t_hi);
                 break;
             }
         }
