@@ -470,6 +470,13 @@ fn fitted_fast_paths(i: &Inputs, calls: usize, ggx64: f64, ggx32: f64, exact_ggx
     for (name, (t64, t32)) in rows {
         fit_row(name, t64, t32);
     }
+    // One material: the same lookups, without the 64 materials' tables competing for cache.
+    let one = &materials[5];
+    let (t64, t32) = both!(
+        |k| one.lambda(black_box(i.u[k])),
+        |k| one.lambda(black_box(u32s[k])) as f64
+    );
+    fit_row("GTR Λ (1 material)", t64, t32);
     println!(
         "{:44} {build_ms:10.1} ms per material (mean of 64, α ∈ [0.05, 1], γ ∈ [0.5, 3]; {direct} of 64 tabulate Λ itself)",
         "GTR fast construction"

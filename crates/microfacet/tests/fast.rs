@@ -378,6 +378,44 @@ fn double_ggx_fast_lambda_over_the_whole_domain() {
     assert!(rel(f::g2(0.3, 0.7, 0.4), n(0.4).g2(0.3, 0.7)) < FIT_TOL_F64);
 }
 
+/// The native f32 Double GGX Λ, σ and G1 (f32 table and arithmetic) at 300 000 random f32
+/// (u, α), u ∈ (0, 1), α ∈ [1e-3, 10] log-uniform, against the exact Λ(x) at those inputs
+/// (x formed in f64 from the f32 values: exact to 1e-16).
+#[test]
+fn double_ggx_fast_f32_at_random_inputs() {
+    use microfacet::fast::double_ggx as f;
+    let mut rng = microfacet::chi2::SplitMix64(2026);
+    let (mut el, mut es, mut eg) = (0.0f64, 0.0f64, 0.0f64);
+    for _ in 0..300_000 {
+        let u = rng.next_f64() as f32;
+        let a = 10f64.powf(-3.0 + 4.0 * rng.next_f64()) as f32;
+        if u == 0.0 {
+            continue;
+        }
+        let (u64_, a64) = (f64::from(u), f64::from(a));
+        let x = 0.5 * a64 * a64 * ((1.0 - u64_) * (1.0 + u64_)) / (u64_ * u64_);
+        let l = 0.5 * microfacet::special::bessel_k_sum_m1(x);
+        el = el.max(rel(f64::from(f::lambda(u, a)), l));
+        es = es.max(rel(f64::from(f::sigma(-u, a)), u64_ * l));
+        es = es.max(rel(f64::from(f::sigma(u, a)), u64_ * (1.0 + l)));
+        eg = eg.max(rel(f64::from(f::g1(u, a)), 1.0 / (1.0 + l)));
+    }
+    println!("Double GGX fast f32 (random inputs): Λ {el:.2e}, σ {es:.2e}, G1 {eg:.2e}");
+    assert!(el.max(es).max(eg) <= FIT_TOL_F32, "{el} {es} {eg}");
+    // The f32 edges, as in f64.
+    assert_eq!(f::lambda(1.0f32, 0.3), 0.0);
+    assert_eq!(f::lambda(0.0f32, 0.3), f32::INFINITY);
+    let s0 = f64::from(f::sigma(0.0f32, 0.3));
+    assert!(rel(s0, DoubleGgx::new(0.3f32 as f64).unwrap().sigma(0.0)) < 1e-7);
+    assert!(rel(f64::from(f::sigma(1e-35f32, 0.3)), s0) < 1e-7);
+    assert_eq!((f::sigma(-1.0f32, 0.3), f::sigma(1.0f32, 0.3)), (0.0, 1.0));
+    assert_eq!((f::sigma(-2.0f32, 0.3), f::sigma(2.0f32, 0.3)), (0.0, 1.0));
+    assert!(f::lambda(f32::NAN, 0.3).is_nan() && f::sigma(f32::NAN, 0.3).is_nan());
+    // Tiny u (x past the table: the f64 path) stays finite: Λ ≈ σ(0)/u.
+    let tiny = f::lambda(1e-20f32, 0.3);
+    assert!(rel(f64::from(tiny) * 1e-20f32 as f64, s0) < 1e-6, "{tiny}");
+}
+
 #[test]
 fn exponential_fast_lambda_over_the_whole_domain() {
     use microfacet::fast::exponential as f;
@@ -414,6 +452,7 @@ fn gtr_fast_lambda_over_the_whole_domain() {
     let mut worst32 = 0.0f64;
     let (mut worst_by, mut count_by) = ([0.0f64; 2], [0usize; 2]);
     let (mut worst_d, mut worst_d_low_gamma) = (0.0f64, 0.0f64);
+    let mut f32_tables = 0;
     for alpha in [1e-3, 0.05, 0.3, 0.9, 1.0, 2.5, 1e3] {
         for gamma in [0.1, 0.5, 1.0, 1.5, 2.0, 3.0, 10.0, 100.0] {
             let fast = FastGtr::new(alpha, gamma).unwrap();
@@ -471,6 +510,43 @@ fn gtr_fast_lambda_over_the_whole_domain() {
             if gamma >= 100.0 && alpha <= 0.3 {
                 assert!(!fast.is_direct(), "α = {alpha}, γ = {gamma}");
             }
+            // f32: the native table (where the material has one) at 20 000 random f32 u,
+            // against the f64 fast path at the same u (itself within FIT_TOL_F64 of the exact
+            // Λ, above): Λ, σ on both sides, G1.
+            let mut rng = microfacet::chi2::SplitMix64(alpha.to_bits() ^ gamma.to_bits());
+            let mut e32 = 0.0f64;
+            for k in 0..20_000 {
+                // Half uniform in u, half log-uniform in u and in 1 − u (both ends).
+                let v = rng.next_f64();
+                let u = match k % 3 {
+                    0 => v,
+                    1 => 10f64.powf(-7.0 * v),
+                    _ => 1.0 - 10f64.powf(-7.0 * v),
+                } as f32;
+                let w = f64::from(u);
+                if u == 0.0 || u == 1.0 || fast.lambda(w) < 1e-37 {
+                    continue;
+                }
+                // (Relative above f32's normal range: uΛ(u) can be subnormal there.)
+                let r32 = |x: f32, y: f64| rel_above(f64::from(x), y, 1e-37);
+                e32 = e32
+                    .max(r32(fast.lambda(u), fast.lambda(w)))
+                    .max(r32(fast.sigma(u), fast.sigma(w)))
+                    .max(r32(fast.sigma(-u), fast.sigma(-w)))
+                    .max(r32(fast.g1(u), fast.g1(w)));
+            }
+            assert!(
+                e32 + e <= FIT_TOL_F32,
+                "α = {alpha}, γ = {gamma}: f32 {e32:e}"
+            );
+            worst32 = worst32.max(e32 + e);
+            f32_tables += usize::from(fast.has_f32_table());
+            // Every material of this grid with a table of Λ also gets the f32 table.
+            assert_eq!(
+                fast.has_f32_table(),
+                fast.is_direct(),
+                "α = {alpha}, γ = {gamma}"
+            );
             let kind = usize::from(fast.is_direct());
             worst_by[kind] = worst_by[kind].max(e);
             count_by[kind] += 1;
@@ -478,7 +554,7 @@ fn gtr_fast_lambda_over_the_whole_domain() {
         }
     }
     println!(
-        "GTR fast: f64 {worst:.2e} (table of Λ: {} materials, {:.2e}; of ln Λ: {}, {:.2e}), f32 {worst32:.2e}",
+        "GTR fast: f64 {worst:.2e} (table of Λ: {} materials, {:.2e}; of ln Λ: {}, {:.2e}), f32 {worst32:.2e} ({f32_tables} materials with an f32 table)",
         count_by[1], worst_by[1], count_by[0], worst_by[0]
     );
     println!("GTR fast D: f64 {worst_d:.2e} (γ ≤ 3: {worst_d_low_gamma:.2e})");

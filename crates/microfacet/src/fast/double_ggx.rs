@@ -9,7 +9,10 @@
 //! * x ≥ 2^16 (grazing): Λ = (√(2πx)(1 + 1/(8x) − 3/(128x²)) − 1)/2, the large-x expansion
 //!   of K₀ + K₁, whose next term is below 1e-14 there.
 
-use super::tables::{DGGX, DGGX_D, DGGX_D_K0, DGGX_D_K1, DGGX_D_M, DGGX_K0, DGGX_K1, DGGX_M};
+use super::tables::{
+    DGGX, DGGX32, DGGX32_K0, DGGX32_K1, DGGX32_M, DGGX_D, DGGX_D_K0, DGGX_D_K1, DGGX_D_M, DGGX_K0,
+    DGGX_K1, DGGX_M,
+};
 use super::{fit, Real};
 
 /// Euler's constant γ_E.
@@ -65,23 +68,48 @@ fn d_ends(u: f64, a: f64) -> f64 {
     crate::DoubleGgx::raw(a).d(u)
 }
 
-/// Λ(u) for 0 ≤ u ≤ 1 (+∞ at u = 0, 0 at u = 1).
+/// Λ(u) for 0 ≤ u ≤ 1 (+∞ at u = 0, 0 at u = 1). f64: x and the table in f64. f32: x and
+/// the table (cubics, `DGGX32` in tables.rs) in f32, since Λ's condition number in x is at most about
+/// 1 (Λ ~ x ln x near the normal, ~ √x at grazing): x's few roundings cost a few ulp of Λ
+/// (measured: 2.1e-7 for the table, ≤ 6e-7 over (u, α), tests/fast.rs); outside the table
+/// (x < 2^−30, x ≥ 2^16, u = 0 or 1, NaN) the f64 path answers.
 #[inline]
 pub fn lambda<F: Real>(u: F, alpha: F) -> F {
+    if F::IS_F32 {
+        return F::from_f32(lambda32(u.to_f32(), alpha.to_f32()));
+    }
     let (u, a) = (u.to_f64(), alpha.to_f64());
     let x = 0.5 * a * a * ((1.0 - u) * (1.0 + u)) / (u * u);
     F::from_f64(lambda_x(x))
 }
 
+/// Λ in f32 arithmetic (see [`lambda`]).
+#[inline(always)]
+fn lambda32(u: f32, a: f32) -> f32 {
+    let x = 0.5 * a * a * ((1.0 - u) * (1.0 + u)) / (u * u);
+    // 2^{DGGX32_K0} ≤ x < 2^{DGGX32_K1}: the table's ends (false for NaN).
+    let (lo, hi) = (fit::pow2(DGGX32_K0) as f32, fit::pow2(DGGX32_K1) as f32);
+    if x >= lo && x < hi {
+        return fit::eval32(&DGGX32, DGGX32_K0, DGGX32_M, x);
+    }
+    lambda32_ends(u, a)
+}
+
+/// Λ where the f32 table does not reach (out of line): the f64 path, rounded.
+#[cold]
+#[inline(never)]
+fn lambda32_ends(u: f32, a: f32) -> f32 {
+    lambda(f64::from(u), f64::from(a)) as f32
+}
+
 g1_g2_from_lambda!();
 
 /// σ(u) for u ∈ [−1, 1]: u(1 + Λ(u)) above the horizon, |u| Λ(|u|) below, σ(0) = √π α/2.
+/// In the precision of F (Λ's, see [`lambda`]).
 #[inline(always)]
 pub fn sigma<F: Real>(u: F, alpha: F) -> F {
-    let (u, a) = (u.to_f64(), alpha.to_f64());
-    F::from_f64(super::sigma_from_lambda(u, 0.5 * super::SQRT_PI * a, |v| {
-        lambda(v, a)
-    }))
+    let s0 = F::from_f64(0.5 * super::SQRT_PI) * alpha;
+    super::sigma_from_lambda(u, s0, |v| lambda(v, alpha))
 }
 
 /// A normal distributed exactly as D(m) cos θm, anisotropic roughness (αx, αy): D·cos of

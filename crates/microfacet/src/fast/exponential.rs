@@ -147,7 +147,9 @@ g1_g2_from_lambda!();
 #[inline(always)]
 pub fn sigma<F: Real>(u: F, alpha: F) -> F {
     let (u, a) = (u.to_f64(), alpha.to_f64());
-    F::from_f64(super::sigma_from_lambda(u, a * FRAC_1_PI, |v| lambda(v, a)))
+    F::from_f64(super::sigma_from_lambda(u, a * FRAC_1_PI, |v: f64| {
+        lambda(v, a)
+    }))
 }
 
 /// A normal distributed exactly as D(m) cos θm, anisotropic roughness (αx, αy): at unit

@@ -43,19 +43,40 @@ pub fn octave_segment(k0: i32, m: u32, x: f64) -> (usize, f64) {
     (idx, (x - x0) * two_over_h - 1.0)
 }
 
+/// [`eval`] in single precision: a table of f32 coefficients, indexed by the bits of an f32
+/// x and evaluated in f32 arithmetic (the native f32 paths; same meaning of k0 and m).
+#[inline(always)]
+pub fn eval32<const N: usize>(coef: &[[f32; N]], k0: i32, m: u32, x: f32) -> f32 {
+    let (idx, s) = octave_segment32(k0, m, x);
+    horner(&coef[idx.min(coef.len() - 1)], s)
+}
+
+/// [`octave_segment`] of an f32 x (8 exponent bits, 23 mantissa bits; x − x₀ is exact).
+#[inline(always)]
+pub fn octave_segment32(k0: i32, m: u32, x: f32) -> (usize, f32) {
+    let bits = x.to_bits();
+    let shift = 23 - m;
+    let idx = (bits >> shift).wrapping_sub(((127 + k0) as u32) << m) as usize;
+    let x0 = f32::from_bits(bits & !((1u32 << shift) - 1));
+    // 2/h = 2^{1 + m − e}; its biased exponent is 255 + m − E.
+    let big_e = bits >> 23;
+    let two_over_h = f32::from_bits((255 + m).wrapping_sub(big_e) << 23);
+    (idx, (x - x0) * two_over_h - 1.0)
+}
+
 /// Σ c_j s^j, by Estrin's scheme: pairs c_{2i} + c_{2i+1} s, then pairs of those with s²,
 /// s⁴, …: a dependency chain of depth ~2 log₂ N instead of Horner's 2N (the default x86-64
 /// target has no fused multiply-add, so the chain's latency is the cost). For |s| ≤ 1 and
 /// decaying coefficients the rounding error is that of Horner's within a few ulp.
 #[inline(always)]
-pub fn horner<const N: usize>(c: &[f64; N], s: f64) -> f64 {
+pub fn horner<F: super::Real, const N: usize>(c: &[F; N], s: F) -> F {
     const { assert!(N >= 1 && N <= 16, "tables hold 1 to 16 coefficients") };
     // Fixed trip counts and conditions on the constant N: LLVM unrolls every level and drops
     // the dead branches, so this is straight-line code for each table's N.
     let s2 = s * s;
     let s4 = s2 * s2;
     let s8 = s4 * s4;
-    let mut b = [0.0f64; 8];
+    let mut b = [F::ZERO; 8];
     for (i, bi) in b.iter_mut().enumerate() {
         let k = 2 * i;
         if k + 1 < N {
@@ -65,7 +86,7 @@ pub fn horner<const N: usize>(c: &[f64; N], s: f64) -> f64 {
         }
     }
     let nb = N.div_ceil(2);
-    let mut d = [0.0f64; 4];
+    let mut d = [F::ZERO; 4];
     for (j, dj) in d.iter_mut().enumerate() {
         let k = 2 * j;
         if k + 1 < nb {

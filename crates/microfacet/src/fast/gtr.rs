@@ -58,6 +58,20 @@ use crate::ndf::Ndf;
 
 /// Polynomial coefficients per segment (degree 6).
 const N: usize = 7;
+/// Coefficients per segment of the f32 table (degree 3: one level of Estrin's scheme fewer
+/// than the f64 table's degree 6).
+const N32: usize = 4;
+/// 2^M32 segments per octave on both sides of the f32 table: quarters of the u table's
+/// segments, eighths of the w table's. A cubic on a whole segment errs by 1.5e-6 at
+/// grazing, where Λ ~ 1/u; on halves of the u table's segments (M32 = 4) it still missed
+/// [`F32_TOL`] at γ ≥ 2 with α ≤ 0.3. One resolution for both sides makes every shift of
+/// the lookup a constant: with per-side shifts the f32 Λ measured 7.3 ns, with M32 = 4 on
+/// both 4.7 ns (one material, BENCHMARKS.md).
+const M32: u32 = 5;
+/// The largest relative deviation of an f32 row (f32 arithmetic) from its f64 polynomial,
+/// at 17 points per piece, for which the f32 table is kept: with the f64 table's 1e-8 and
+/// a few ulp from the f32 inputs, the f32 path stays inside 1e-6, half the 2e-6 required.
+const F32_TOL: f64 = 5e-7;
 /// 2^M segments per octave.
 pub(crate) const M: u32 = 3;
 /// 2^M_W segments per octave of w = 1 − u: w ~ 1/(2a²) near the normal, so an octave of w
@@ -117,6 +131,14 @@ pub struct Gtr {
     sides: [Side; 2],
     /// Whether `coef` holds Λ itself or ln Λ.
     direct: bool,
+    /// The f32 table: each row of `coef` as 2^{M32 − m} cubics in f32, on equal pieces of
+    /// its segment (so 2^M32 rows per octave on both sides); empty where Λ is not direct or
+    /// a cubic misses [`F32_TOL`] (the f32 entry points then evaluate in f64).
+    coef32: Vec<[f32; N32]>,
+    /// Per side [u, w]: the row of t is (bits of t) >> (23 − M32) less this (the biased
+    /// exponent and top M32 mantissa bits index the pieces), and 2^k0 as an f32.
+    off32: [u32; 2],
+    lo32: [f32; 2],
     /// Λ ≈ m/a − 1/2 + m₁a below `u_lo` (a = cot θ): [m, m₁].
     m: [f64; 2],
     /// Λ ≈ K/a² + K₂/a⁴ past `w_lo`: [K, K₂].
@@ -181,6 +203,21 @@ impl Gtr {
                 c[0] = -800.0; // e^{−800} = 0
             }
         }
+        let coef32 = if direct {
+            let (u_rows, w_rows) = coef.split_at(w_row0);
+            match (
+                Self::cubics32(u_rows, M32 - M),
+                Self::cubics32(w_rows, M32 - M_W),
+            ) {
+                (Some(u), Some(w)) => [u, w].concat(),
+                _ => Vec::new(),
+            }
+        } else {
+            Vec::new()
+        };
+        // The first row of each side's f32 table, and its first octave's index in the bits.
+        let w_row0_32 = w_row0 << (M32 - M);
+        let off = |k0: i32, row0: usize| (((127 + k0) as u32) << M32).wrapping_sub(row0 as u32);
         let (u_lo, w_lo) = (2f64.powi(u_k0), 2f64.powi(w_k0));
         let (a_lo, a_hi) = (a_of_u(u_lo), a_of_w(w_lo));
         Ok(Gtr {
@@ -202,6 +239,9 @@ impl Gtr {
                 },
             ],
             direct,
+            coef32,
+            off32: [off(u_k0, 0), off(w_k0, w_row0_32)],
+            lo32: [u_lo as f32, w_lo as f32],
             m: Self::two_terms(|a| (exact.lambda_cot(a) + 0.5) * a, a_lo, 0.5 * a_lo),
             k: Self::two_terms(
                 |x| exact.lambda_cot(1.0 / x) / (x * x),
@@ -258,10 +298,43 @@ impl Gtr {
             .all(|(i, c)| ok(fit::horner(c, -1.0), want[i]) && ok(fit::horner(c, 1.0), want[i + 1]))
     }
 
+    /// One side's f32 table from its f64 rows of Λ: on each of the 2^split equal pieces of
+    /// each row's segment, the row's cubic interpolant at the Chebyshev points of that piece
+    /// (near-minimax for the degree-6 row), rounded to f32; None if any, evaluated in f32,
+    /// strays from its f64 row by more than [`F32_TOL`] at 17 points of its piece.
+    fn cubics32(coef: &[[f64; N]], split: u32) -> Option<Vec<[f32; N32]>> {
+        let pieces = 1usize << split;
+        let width = 1.0 / pieces as f64; // of a piece in s ∈ [−1, 1], halved
+        let mut out = Vec::with_capacity(pieces * coef.len());
+        for c in coef {
+            for p in 0..pieces {
+                // Piece p as s' ∈ [−1, 1]: s = −1 + (2p + 1 + s') width.
+                let row = |s: f64| fit::horner(c, -1.0 + (2 * p + 1) as f64 * width + s * width);
+                let c32 = fit::chebyshev_fit::<N32>(row).map(|x| x as f32);
+                let fits = (0..=16).all(|k| {
+                    let s = -1.0 + k as f64 / 8.0;
+                    let got = f64::from(fit::horner(&c32, s as f32));
+                    (got - row(s)).abs() <= F32_TOL * row(s).abs()
+                });
+                if !fits {
+                    return None;
+                }
+                out.push(c32);
+            }
+        }
+        Some(out)
+    }
+
     /// Whether the table holds Λ itself (no exponential at evaluation; moderate γ) rather
     /// than ln Λ.
     pub fn is_direct(&self) -> bool {
         self.direct
+    }
+
+    /// Whether the f32 entry points evaluate Λ natively in f32 (a table of cubics, f32
+    /// arithmetic); else they evaluate in f64 and round once.
+    pub fn has_f32_table(&self) -> bool {
+        !self.coef32.is_empty()
     }
 
     /// α.
@@ -374,9 +447,14 @@ impl Gtr {
     }
 
     /// Λ(u) for 0 ≤ u ≤ 1: the u table below u = ½, the w table at w = 1 − u (exact) from
-    /// there; no square root or division on the way.
+    /// there; no square root or division on the way. In f32, where the material has an f32
+    /// table ([`Gtr::has_f32_table`]), that table in f32 arithmetic (Λ's condition number in
+    /// t is about 1 at both ends); otherwise, and past the tables, the f64 path rounded once.
     #[inline]
     pub fn lambda<F: Real>(&self, u: F) -> F {
+        if F::IS_F32 && !self.coef32.is_empty() {
+            return F::from_f32(self.lambda32(u.to_f32()));
+        }
         let u = u.to_f64();
         let normal_side = u >= 0.5;
         let (p, inside) = self.table_at(normal_side, if normal_side { 1.0 - u } else { u });
@@ -391,16 +469,41 @@ impl Gtr {
         })
     }
 
-    /// G1(u) = 1/(1 + Λ(u)) for 0 ≤ u ≤ 1.
+    /// Λ from the f32 table (see [`Gtr::lambda`]); `coef32` is not empty.
+    #[inline(always)]
+    fn lambda32(&self, u: f32) -> f32 {
+        let normal_side = u >= 0.5;
+        let t = if normal_side { 1.0 - u } else { u };
+        let side = usize::from(normal_side);
+        // The exponent and top M32 mantissa bits less the side's offset are the row
+        // (clamped: t below the table wraps to a huge index, and answers from the ends below).
+        let row = ((t.to_bits() >> (23 - M32)).wrapping_sub(self.off32[side]) as usize)
+            .min(self.coef32.len() - 1);
+        let (_, s) = fit::octave_segment32(0, M32, t);
+        // 2^k0 is an f32 (k0 ≥ −126: the w table starts at 2^−61 at α = 1e6).
+        if t >= self.lo32[side] {
+            return fit::horner(&self.coef32[row], s);
+        }
+        self.lambda32_ends(u)
+    }
+
+    /// Λ past the f32 table (and NaN): the f64 path, rounded.
+    #[cold]
+    #[inline(never)]
+    fn lambda32_ends(&self, u: f32) -> f32 {
+        self.lambda(f64::from(u)) as f32
+    }
+
+    /// G1(u) = 1/(1 + Λ(u)) for 0 ≤ u ≤ 1, in the precision of F (Λ's, see [`Gtr::lambda`]).
     #[inline]
     pub fn g1<F: Real>(&self, u: F) -> F {
-        F::from_f64(1.0 / (1.0 + self.lambda(u.to_f64())))
+        F::ONE / (F::ONE + self.lambda(u))
     }
 
     /// Height-correlated G2 = 1/(1 + Λ(u_o) + Λ(u_i)).
     #[inline]
     pub fn g2<F: Real>(&self, u_o: F, u_i: F) -> F {
-        F::from_f64(1.0 / (1.0 + self.lambda(u_o.to_f64()) + self.lambda(u_i.to_f64())))
+        F::ONE / (F::ONE + self.lambda(u_o) + self.lambda(u_i))
     }
 
     /// A visible normal for the unit direction w (mirrored if w.z < 0), distributed exactly
@@ -493,9 +596,7 @@ impl Gtr {
     /// σ(u) for u ∈ [−1, 1].
     #[inline]
     pub fn sigma<F: Real>(&self, u: F) -> F {
-        F::from_f64(super::sigma_from_lambda(u.to_f64(), self.sigma0, |v| {
-            self.lambda(v)
-        }))
+        super::sigma_from_lambda(u, F::from_f64(self.sigma0), |v| self.lambda(v))
     }
 }
 

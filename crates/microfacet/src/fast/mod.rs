@@ -41,21 +41,20 @@
 
 use std::ops::{Add, Div, Mul, Neg, Sub};
 
-/// `g1` and the height-correlated `g2` of a fitted NDF's module, from its
-/// `lambda(u: f64, α: f64)`: evaluated in f64, rounded once to F.
+/// `g1` and the height-correlated `g2` of a fitted NDF's module, from its generic
+/// `lambda(u, α)`: in the precision of F (Λ's own, then one division).
 macro_rules! g1_g2_from_lambda {
     () => {
         /// G1(u) = 1/(1 + Λ(u)) for 0 ≤ u ≤ 1.
         #[inline]
         pub fn g1<F: Real>(u: F, alpha: F) -> F {
-            F::from_f64(1.0 / (1.0 + lambda(u.to_f64(), alpha.to_f64())))
+            F::ONE / (F::ONE + lambda(u, alpha))
         }
 
         /// Height-correlated G2 = 1/(1 + Λ(u_o) + Λ(u_i)).
         #[inline]
         pub fn g2<F: Real>(u_o: F, u_i: F, alpha: F) -> F {
-            let a = alpha.to_f64();
-            F::from_f64(1.0 / (1.0 + lambda(u_o.to_f64(), a) + lambda(u_i.to_f64(), a)))
+            F::ONE / (F::ONE + lambda(u_o, alpha) + lambda(u_i, alpha))
         }
     };
 }
@@ -76,20 +75,23 @@ const SQRT_PI: f64 = 1.772_453_850_905_516;
 
 /// σ(u) on [−1, 1] from Λ on (0, 1]: u(1 + Λ(u)) for u > 0, |u| Λ(|u|) for u < 0 (Λ(u)u = σ(−u)),
 /// σ(0) + u/2 near u = 0 (where uΛ(u) → σ(0) = `s0` but 0 · ∞ would be NaN). NaN stays NaN.
+/// In the precision of F.
 #[inline(always)]
-fn sigma_from_lambda(u: f64, s0: f64, lambda: impl Fn(f64) -> f64) -> f64 {
-    // Below 1e-150, σ(u) = σ(0) + u/2 + O(u²) (σ(u) − σ(−u) = u) is exact to double precision,
-    // and uΛ(u) would overflow in Λ first. |u| > 1 is clamped to ±1 and NaN stays NaN, in
-    // the same branch: both are rare, so it predicts well, and the common path reaches Λ
-    // without a select on its dependency chain.
+fn sigma_from_lambda<F: Real>(u: F, s0: F, lambda: impl Fn(F) -> F) -> F {
+    // Below `tiny`, σ(u) = σ(0) + u/2 + O(u²) (σ(u) − σ(−u) = u) is exact to the precision
+    // (O(u²) is below 1e-60 of σ(0) even at α = 1e-3), and uΛ(u) would overflow in Λ first
+    // (Λ ~ σ(0)/u: 1e150 in f64; 1e30 σ(0), inside f32's 3e38, in f32). |u| > 1 is clamped
+    // to ±1 and NaN stays NaN, in the same branch: both are rare, so it predicts well, and
+    // the common path reaches Λ without a select on its dependency chain.
+    let tiny = F::from_f64(if F::IS_F32 { 1e-30 } else { 1e-150 });
     let v = u.abs();
-    if !(1e-150..=1.0).contains(&v) {
-        return if v < 1e-150 {
-            s0 + 0.5 * u
-        } else if v > 1.0 {
-            let below = lambda(1.0);
-            if u > 0.0 {
-                1.0 + below
+    if !(v >= tiny && v <= F::ONE) {
+        return if v < tiny {
+            s0 + F::HALF * u
+        } else if v > F::ONE {
+            let below = lambda(F::ONE);
+            if u > F::ZERO {
+                F::ONE + below
             } else {
                 below
             }
@@ -99,7 +101,7 @@ fn sigma_from_lambda(u: f64, s0: f64, lambda: impl Fn(f64) -> f64) -> f64 {
     }
     // One call of Λ for both signs (so that it inlines).
     let below = v * lambda(v);
-    if u > 0.0 {
+    if u > F::ZERO {
         v + below
     } else {
         below
@@ -278,26 +280,43 @@ pub trait Real:
     const PI: Self;
     /// e^{−x} is 0 in this precision beyond this x.
     const EXP_ZERO: Self;
+    /// Whether this is f32: the fitted paths with a native single-precision form (f32
+    /// tables and arithmetic) take it on this constant, a branch the compiler removes.
+    const IS_F32: bool;
     /// Widening to f64 (exact).
     fn to_f64(self) -> f64;
     /// Rounding from f64.
     fn from_f64(x: f64) -> Self;
+    /// To f32 (the identity for f32; rounding for f64, never taken where `IS_F32` is false).
+    fn to_f32(self) -> f32;
+    /// From f32 (exact).
+    fn from_f32(x: f32) -> Self;
     fn sqrt(self) -> Self;
     fn exp(self) -> Self;
     fn sin_cos(self) -> (Self, Self);
     fn max(self, o: Self) -> Self;
+    fn abs(self) -> Self;
 }
 
 macro_rules! real {
-    ($t:ty, $zero:expr) => {
+    ($t:ty, $zero:expr, $is_f32:expr) => {
         impl Real for $t {
             const EXP_ZERO: Self = $zero;
+            const IS_F32: bool = $is_f32;
             #[inline(always)]
             fn to_f64(self) -> f64 {
                 self as f64
             }
             #[inline(always)]
             fn from_f64(x: f64) -> Self {
+                x as $t
+            }
+            #[inline(always)]
+            fn to_f32(self) -> f32 {
+                self as f32
+            }
+            #[inline(always)]
+            fn from_f32(x: f32) -> Self {
                 x as $t
             }
             const ZERO: Self = 0.0;
@@ -320,12 +339,16 @@ macro_rules! real {
             fn max(self, o: Self) -> Self {
                 <$t>::max(self, o)
             }
+            #[inline(always)]
+            fn abs(self) -> Self {
+                <$t>::abs(self)
+            }
         }
     };
 }
 // e^{−x} underflows past 745.2 in f64 and past 103.98 in f32.
-real!(f64, 745.2);
-real!(f32, 103.98);
+real!(f64, 745.2, false);
+real!(f32, 103.98, true);
 
 /// GGX (Trowbridge–Reitz).
 pub mod ggx {
