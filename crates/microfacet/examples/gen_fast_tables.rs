@@ -10,7 +10,7 @@
 //!
 //! tests/fast.rs checks the result over the whole domain against the exact paths.
 
-use microfacet::fast::fit::{eval, eval32, fit_octaves};
+use microfacet::fast::fit::{eval, eval32, eval_narrow, fit_octaves};
 use microfacet::{Exponential, Ndf};
 use std::fmt::Write;
 
@@ -239,6 +239,42 @@ fn table32<const N: usize>(
     worst
 }
 
+/// [`table`] with the coefficients rounded to f32 and evaluated in f32 at an f64 x
+/// ([`eval_narrow`]):
+/// writes `[[f32; N]; _]`, returns the largest relative error at 16 points per segment.
+fn table_narrow<const N: usize>(
+    out: &mut String,
+    name: &str,
+    what: &str,
+    (k0, k1, m): (i32, i32, u32),
+    f: impl Fn(f64) -> f64,
+) -> f64 {
+    let t: Vec<[f32; N]> = fit_octaves::<N>(k0, k1, m, &f)
+        .iter()
+        .map(|r| r.map(|c| c as f32))
+        .collect();
+    let mut worst = 0.0f64;
+    for e in k0..k1 {
+        for j in 0..(16 << m) {
+            let x = 2f64.powi(e) * (1.0 + (j as f64 + 0.37) / (16 << m) as f64);
+            let (a, b) = (f64::from(eval_narrow(&t, k0, m, x)), f(x));
+            worst = worst.max(((a - b) / b).abs());
+        }
+    }
+    writeln!(out, "/// {what}, f32 (x in f64): x ∈ [2^{k0}, 2^{k1}), 2^{m} segments per octave, degree {}; error {worst:.1e} (relative, 16 points per segment).", N - 1).unwrap();
+    writeln!(out, "pub const {name}_K0: i32 = {k0};").unwrap();
+    writeln!(out, "pub const {name}_K1: i32 = {k1};").unwrap();
+    writeln!(out, "pub const {name}_M: u32 = {m};").unwrap();
+    writeln!(out, "pub static {name}: [[f32; {N}]; {}] = [", t.len()).unwrap();
+    for c in &t {
+        let row: Vec<String> = c.iter().map(|v| format!("{v:e}")).collect();
+        writeln!(out, "    [{}],", row.join(", ")).unwrap();
+    }
+    writeln!(out, "];").unwrap();
+    eprintln!("{name}: {} segments, error {worst:.2e}", t.len());
+    worst
+}
+
 /// Writes `pub static {name}` with the rows `t`.
 fn write_rows<const N: usize>(out: &mut String, name: &str, t: &[[f64; N]]) {
     writeln!(out, "pub static {name}: [[f64; {N}]; {}] = [", t.len()).unwrap();
@@ -293,6 +329,25 @@ fn main() {
     .unwrap();
     writeln!(out, "pub const EXPONENTIAL_QB_ROW0: usize = {};", a.len()).unwrap();
     write_rows(&mut out, "EXPONENTIAL_Q", &[a, b].concat());
+    out.push('\n');
+    // The f32 path: q stays in f64 (Λ ~ e^{−z} has a condition number of about z in z, up
+    // to 64 here, so q rounded to f32 would cost up to ~2e-6), but cubics with f32
+    // coefficients on finer segments suffice: the segments span at most ~0.17 in z.
+    let e9 = table_narrow::<4>(
+        &mut out,
+        "EXPONENTIAL32_QA",
+        "Exponential Λ(√q)",
+        (-24, 6, 5),
+        lambda_q,
+    );
+    out.push('\n');
+    let e10 = table_narrow::<4>(
+        &mut out,
+        "EXPONENTIAL32_QB",
+        "Exponential Λ(√q)",
+        (6, 12, 7),
+        lambda_q,
+    );
     out.push('\n');
     let e7 = table::<7>(
         &mut out,
@@ -353,7 +408,10 @@ fn main() {
     );
     // f32 tables: well inside the 2e-6 required of the f32 paths, leaving room for the
     // rounding of their inputs.
-    assert!(e1_32 < 5e-7, "f32 fit error too large");
+    assert!(
+        e1_32 < 5e-7 && e9 < 5e-7 && e10 < 5e-7,
+        "f32 fit error too large"
+    );
     // The references are good to a few ulp (libm erf, and r cancels up to 10× below 2).
     assert!(
         e3 < 5e-15 && e4 < 5e-15 && e5 < 5e-15,

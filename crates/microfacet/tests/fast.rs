@@ -416,6 +416,37 @@ fn double_ggx_fast_f32_at_random_inputs() {
     assert!(rel(f64::from(tiny) * 1e-20f32 as f64, s0) < 1e-6, "{tiny}");
 }
 
+/// The f32 Exponential Λ, σ and G1 (q in f64, f32 cubics) at 100 000 random f32 (u, α),
+/// u ∈ (0, 1), α ∈ [1e-3, 10] log-uniform, against the exact Λ at those inputs.
+#[test]
+fn exponential_fast_f32_at_random_inputs() {
+    use microfacet::fast::exponential as f;
+    let mut rng = microfacet::chi2::SplitMix64(2027);
+    let (mut el, mut es, mut eg) = (0.0f64, 0.0f64, 0.0f64);
+    for _ in 0..100_000 {
+        let u = rng.next_f64() as f32;
+        let a = 10f64.powf(-3.0 + 4.0 * rng.next_f64()) as f32;
+        let (u64_, a64) = (f64::from(u), f64::from(a));
+        let l = Exponential::new(a64).unwrap().lambda(u64_);
+        if u == 0.0 || l < 1e-37 {
+            continue;
+        }
+        el = el.max(rel(f64::from(f::lambda(u, a)), l));
+        if u64_ * l > 1e-37 {
+            es = es.max(rel(f64::from(f::sigma(-u, a)), u64_ * l));
+        }
+        es = es.max(rel(f64::from(f::sigma(u, a)), u64_ * (1.0 + l)));
+        eg = eg.max(rel(f64::from(f::g1(u, a)), 1.0 / (1.0 + l)));
+    }
+    println!("Exponential fast f32 (random inputs): Λ {el:.2e}, σ {es:.2e}, G1 {eg:.2e}");
+    assert!(el.max(es).max(eg) <= FIT_TOL_F32, "{el} {es} {eg}");
+    let s0 = f64::from(f::sigma(0.0f32, 0.3));
+    assert!(rel(s0, Exponential::new(0.3f32 as f64).unwrap().sigma(0.0)) < 1e-7);
+    assert_eq!((f::sigma(-1.0f32, 0.3), f::sigma(1.0f32, 0.3)), (0.0, 1.0));
+    assert_eq!(f::lambda(0.0f32, 0.3), f32::INFINITY);
+    assert!(f::lambda(f32::NAN, 0.3).is_nan() && f::sigma(f32::NAN, 0.3).is_nan());
+}
+
 #[test]
 fn exponential_fast_lambda_over_the_whole_domain() {
     use microfacet::fast::exponential as f;

@@ -17,6 +17,8 @@
 //!   about 9/z⁴, below 2e-10 relative. From z ≈ 708 on Λ is subnormal and only absolutely
 //!   accurate; it underflows to 0 near z = 745.
 
+use super::tables::{EXPONENTIAL32_QA, EXPONENTIAL32_QA_K0, EXPONENTIAL32_QA_M};
+use super::tables::{EXPONENTIAL32_QB, EXPONENTIAL32_QB_K0, EXPONENTIAL32_QB_M};
 use super::tables::{EXPONENTIAL_FAR, EXPONENTIAL_FAR_K0, EXPONENTIAL_FAR_K1, EXPONENTIAL_FAR_M};
 use super::tables::{EXPONENTIAL_Q, EXPONENTIAL_QA_K0, EXPONENTIAL_QA_M, EXPONENTIAL_QB_ROW0};
 use super::tables::{EXPONENTIAL_QB_K0, EXPONENTIAL_QB_K1, EXPONENTIAL_QB_M};
@@ -29,7 +31,9 @@ pub(super) const Q_END: f64 = 4096.0;
 const _: () = {
     use super::tables::EXPONENTIAL_QA_K1;
     // 2^6 = Q_B, where QA ends and QB starts; 2^12 = Q_END.
+    use super::tables::{EXPONENTIAL32_QA_K1, EXPONENTIAL32_QB_K1};
     assert!(EXPONENTIAL_QA_K1 == 6 && EXPONENTIAL_QB_K0 == 6 && EXPONENTIAL_QB_K1 == 12);
+    assert!(EXPONENTIAL32_QA_K1 == 6 && EXPONENTIAL32_QB_K0 == 6 && EXPONENTIAL32_QB_K1 == 12);
 };
 // The far table starts an octave below z = 64, so that a z whose square rounds up to 4096
 // still finds its row.
@@ -131,9 +135,19 @@ pub fn d<F: Real>(u: F, alpha: F) -> F {
     F::from_f64(2.0 * (-x).exp() / (std::f64::consts::PI * a * a * u2 * u2))
 }
 
-/// Λ(u) for 0 ≤ u ≤ 1 (+∞ at u = 0, 0 at u = 1).
+/// Λ(u) for 0 ≤ u ≤ 1 (+∞ at u = 0, 0 at u = 1). f32: q in f64 still (Λ's condition number
+/// in z is about z, up to 64 in the tables, so q rounded to f32 would cost up to ~2e-6),
+/// then cubics in f32 on 4× finer segments (32 rows per octave of q to q = 64, 128 beyond:
+/// `EXPONENTIAL32_QA`, `_QB` in tables.rs, error 4.2e-7 with s rounded to f32 as
+/// evaluated), one level of Estrin's scheme fewer than f64's degree 7. Outside them the f64
+/// path answers, rounded. (Evaluating the cubics in f64 with f32 coefficients measured 8.7
+/// ns against 7.7 in f32: four widenings of the coefficients and one more rounding at the
+/// end.)
 #[inline]
 pub fn lambda<F: Real>(u: F, alpha: F) -> F {
+    if F::IS_F32 {
+        return F::from_f32(lambda32(u.to_f64(), alpha.to_f64()));
+    }
     let (u, a) = (u.to_f64(), alpha.to_f64());
     F::from_f64(match lambda_q(q_of(u, a)) {
         Some(v) => v,
@@ -141,15 +155,43 @@ pub fn lambda<F: Real>(u: F, alpha: F) -> F {
     })
 }
 
+/// Λ for the f32 entry points (see [`lambda`]), from f32 inputs widened to f64.
+#[inline(always)]
+fn lambda32(u: f64, a: f64) -> f32 {
+    let q = q_of(u, a);
+    if q < Q_B && q >= fit::pow2(EXPONENTIAL32_QA_K0) {
+        return fit::eval_narrow(
+            &EXPONENTIAL32_QA,
+            EXPONENTIAL32_QA_K0,
+            EXPONENTIAL32_QA_M,
+            q,
+        );
+    }
+    if (Q_B..Q_END).contains(&q) {
+        return fit::eval_narrow(
+            &EXPONENTIAL32_QB,
+            EXPONENTIAL32_QB_K0,
+            EXPONENTIAL32_QB_M,
+            q,
+        );
+    }
+    lambda32_ends(u, a)
+}
+
+/// Λ past the f32 tables (out of line): the f64 path, rounded.
+#[cold]
+#[inline(never)]
+fn lambda32_ends(u: f64, a: f64) -> f32 {
+    lambda(u, a) as f32
+}
+
 g1_g2_from_lambda!();
 
 /// σ(u) for u ∈ [−1, 1]: u(1 + Λ(u)) above the horizon, |u| Λ(|u|) below, σ(0) = α/π.
 #[inline(always)]
 pub fn sigma<F: Real>(u: F, alpha: F) -> F {
-    let (u, a) = (u.to_f64(), alpha.to_f64());
-    F::from_f64(super::sigma_from_lambda(u, a * FRAC_1_PI, |v: f64| {
-        lambda(v, a)
-    }))
+    let s0 = alpha * F::from_f64(FRAC_1_PI);
+    super::sigma_from_lambda(u, s0, |v| lambda(v, alpha))
 }
 
 /// A normal distributed exactly as D(m) cos θm, anisotropic roughness (αx, αy): at unit

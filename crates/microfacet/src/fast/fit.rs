@@ -51,6 +51,15 @@ pub fn eval32<const N: usize>(coef: &[[f32; N]], k0: i32, m: u32, x: f32) -> f32
     horner(&coef[idx.min(coef.len() - 1)], s)
 }
 
+/// [`eval`] of an f32 table at an f64 x (for the f32 paths whose variable must stay in f64):
+/// the segment and s from x's bits in f64, then s rounded to f32 (its rounding moves x by
+/// 2^−25 of a segment's width) and the polynomial in f32.
+#[inline(always)]
+pub fn eval_narrow<const N: usize>(coef: &[[f32; N]], k0: i32, m: u32, x: f64) -> f32 {
+    let (idx, s) = octave_segment(k0, m, x);
+    horner(&coef[idx.min(coef.len() - 1)], s as f32)
+}
+
 /// [`octave_segment`] of an f32 x (8 exponent bits, 23 mantissa bits; x − x₀ is exact).
 #[inline(always)]
 pub fn octave_segment32(k0: i32, m: u32, x: f32) -> (usize, f32) {
