@@ -617,9 +617,9 @@ fn matrix(i: &Inputs, calls: usize) {
 /// come from an inline xorshift64*, whose cost is in the figures), against our fast GGX Λ
 /// and our fast GGX VNDF (f64).
 fn mixture_vndf(i: &Inputs, calls: usize, ggx_lambda: f64, ggx_vndf: f64) {
-    use microfacet::fast::{double_ggx as dg, exponential as ex};
+    use microfacet::fast::{double_ggx as dg, exponential as ex, ggx as fg};
     println!();
-    println!("fast VNDF sampling (per sample, extra uniforms included; ratio to our fast GGX Λ f64 and fast GGX VNDF f64)");
+    println!("fast VNDF sampling (per sample, extra uniforms included; ratio to our fast GGX Λ f64 and to our fast GGX VNDF of the same precision)");
     let mut state = 0x9e37_79b9_7f4a_7c15u64;
     let mut next = move || {
         state ^= state >> 12;
@@ -627,18 +627,44 @@ fn mixture_vndf(i: &Inputs, calls: usize, ggx_lambda: f64, ggx_vndf: f64) {
         state ^= state >> 27;
         (state.wrapping_mul(0x2545_f491_4f6c_dd1d) >> 11) as f64 * (1.0 / (1u64 << 53) as f64)
     };
+    // The f32 rows draw f32 uniforms as an f32 renderer does (pbrt's Uniform<float>): the
+    // top 24 bits of the same xorshift64*, scaled; not f64 uniforms rounded.
+    let mut state32 = 0x9e37_79b9_7f4a_7c15u64;
+    let mut next32 = move || {
+        state32 ^= state32 >> 12;
+        state32 ^= state32 << 25;
+        state32 ^= state32 >> 27;
+        (state32.wrapping_mul(0x2545_f491_4f6c_dd1d) >> 40) as f32 * (1.0 / (1u32 << 24) as f32)
+    };
     let a32s: Vec<f32> = i.alpha.iter().map(|&x| x as f32).collect();
     let materials: Vec<microfacet::fast::gtr::Gtr> = (0..64)
         .map(|k| microfacet::fast::gtr::Gtr::new(i.alpha[k], i.gamma[k]).unwrap())
         .collect();
     let m = |k: usize| &materials[k % 64];
     let w = |k: usize| [i.w[k].x, i.w[k].y, i.w[k].z];
-    let w32 = |k: usize| w(k).map(|x| x as f32);
-    let xi32 = |k: usize| i.xi[k].map(|x| x as f32);
+    // f32 inputs converted once, as a renderer working in f32 would hold them (and as the
+    // f32 GGX sampler below reads them).
+    let w32s: Vec<[f32; 3]> = (0..N).map(|k| w(k).map(|x| x as f32)).collect();
+    let xi32s: Vec<[f32; 2]> = i.xi.iter().map(|x| x.map(|x| x as f32)).collect();
+    let w32 = |k: usize| w32s[k];
+    let xi32 = |k: usize| xi32s[k];
+    let ggx_vndf32 = time(calls, |k| {
+        fg::sample_visible(w32(k), a32s[k], a32s[k], black_box(xi32(k)))[2] as f64
+    });
+    println!(
+        "{:44} {ggx_vndf32:10.1} ns",
+        "us fast GGX VNDF f32 (the f32 rows' base)"
+    );
     let rows = [
         (
             "uniforms alone (2 per call)",
             time(calls, |k| black_box(next()) + next() + k as f64),
+        ),
+        (
+            "uniforms alone (2 per call) f32",
+            time(calls, |k| {
+                f64::from(black_box(next32()) + next32()) + k as f64
+            }),
         ),
         (
             "Double GGX VNDF f64",
@@ -649,8 +675,8 @@ fn mixture_vndf(i: &Inputs, calls: usize, ggx_lambda: f64, ggx_vndf: f64) {
         (
             "Double GGX VNDF f32",
             time(calls, |k| {
-                let mut n32 = || next() as f32;
-                dg::sample_visible(w32(k), a32s[k], a32s[k], black_box(xi32(k)), &mut n32)[2] as f64
+                let n32 = &mut next32;
+                dg::sample_visible(w32(k), a32s[k], a32s[k], black_box(xi32(k)), n32)[2] as f64
             }),
         ),
         (
@@ -662,8 +688,8 @@ fn mixture_vndf(i: &Inputs, calls: usize, ggx_lambda: f64, ggx_vndf: f64) {
         (
             "Exponential VNDF f32",
             time(calls, |k| {
-                let mut n32 = || next() as f32;
-                ex::sample_visible(w32(k), a32s[k], a32s[k], black_box(xi32(k)), &mut n32)[2] as f64
+                let n32 = &mut next32;
+                ex::sample_visible(w32(k), a32s[k], a32s[k], black_box(xi32(k)), n32)[2] as f64
             }),
         ),
         (
@@ -675,17 +701,22 @@ fn mixture_vndf(i: &Inputs, calls: usize, ggx_lambda: f64, ggx_vndf: f64) {
         (
             "GTR VNDF (64 materials) f32",
             time(calls, |k| {
-                let mut n32 = || next() as f32;
-                m(k).sample_visible(w32(k), black_box(xi32(k)), &mut n32)[2] as f64
+                let n32 = &mut next32;
+                m(k).sample_visible(w32(k), black_box(xi32(k)), n32)[2] as f64
             }),
         ),
     ];
     for (name, t) in rows {
+        let base = if name.ends_with("f32") {
+            ggx_vndf32
+        } else {
+            ggx_vndf
+        };
         println!(
             "{:44} {t:10.1} ns   {:6.2}× fast GGX Λ  {:6.2}× fast GGX VNDF",
             format!("us fast {name}"),
             t / ggx_lambda,
-            t / ggx_vndf
+            t / base
         );
     }
 }
