@@ -175,7 +175,7 @@ pub fn sample_visible<F: Real>(
     let p_exp = e / (e + g);
     let (inv_p, inv_q) = ((e + g) / e, (e + g) / g);
     let mut next = || uniform().to_f64();
-    let mut s = 1.0;
+    let (mut s, mut len) = (1.0, 1.0);
     // At most 64 candidates: each is kept with probability ≥ 4/5, so a 65th would be needed
     // with probability below 1e-44; the cap only guarantees termination for a `uniform` that
     // returns NaN.
@@ -196,13 +196,17 @@ pub fn sample_visible<F: Real>(
         // (a component roughness of at most 1e100 α).
         let t = t.max(1e-200);
         s = t.sqrt();
+        // √(c²t + h²) is also the length of the stretched direction (αx w.x, αy w.y, √t w.z)
+        // that the GGX step normalises.
+        len = (c * c * t + h * h).sqrt();
         // Kept with probability (c + √(c² + h²/t))/(2c + h/√t), multiplied through by √t
         // (no division on the chain).
-        if next() * (e * s + h) <= c * s + (c * c * t + h * h).sqrt() {
+        if next() * (e * s + h) <= c * s + len {
             break;
         }
     }
     // GGX's visible normal at (αx, αy)/√t, as the stretch (αx, αy, √t).
-    let m = super::ggx_visible_stretched([wx, wy, wz], ax, ay, s, [u[0].to_f64(), u[1].to_f64()]);
+    let u = [u[0].to_f64(), u[1].to_f64()];
+    let m = super::ggx_visible_stretched_len([wx, wy, wz], ax, ay, s, u, len);
     [F::from_f64(m[0]), F::from_f64(m[1]), F::from_f64(m[2])]
 }

@@ -236,8 +236,16 @@ fn ggx_dcos<F: Real>(ax: f64, ay: f64, u: [f64; 2], t: f64) -> [F; 3] {
 #[inline(always)]
 fn ggx_visible_stretched<F: Real>(w: [F; 3], ax: F, ay: F, sz: F, u: [F; 2]) -> [F; 3] {
     let (x, y, z) = (ax * w[0], ay * w[1], sz * w[2]);
-    let inv = F::ONE / (x * x + y * y + z * z).sqrt();
-    let (x, y, z) = (x * inv, y * inv, z * inv);
+    let len = (x * x + y * y + z * z).sqrt();
+    ggx_visible_stretched_len(w, ax, ay, sz, u, len)
+}
+
+/// [`ggx_visible_stretched`] given the length of the stretched direction (αx w.x, αy w.y,
+/// sz w.z), for a caller that has it already (the Double GGX sampler's acceptance test).
+#[inline(always)]
+fn ggx_visible_stretched_len<F: Real>(w: [F; 3], ax: F, ay: F, sz: F, u: [F; 2], len: F) -> [F; 3] {
+    let inv = F::ONE / len;
+    let (x, y, z) = (ax * w[0] * inv, ay * w[1] * inv, sz * w[2] * inv);
     let (c, s) = cos_sin_turn(u[0].to_f64());
     let (c, s) = (F::from_f64(c), F::from_f64(s));
     let cz = (F::ONE - u[1]) * (F::ONE + z) - z;
