@@ -1121,6 +1121,21 @@ fn gtr_fast_vndf_is_the_visible_distribution() {
             }
         }
     }
+    // Random draws: unit normals to rounding (their length comes from the slope radius
+    // alone, `normal_from_slopes_r`).
+    let mut rng = SplitMix64(11);
+    for (a, g) in [(0.05, 0.5), (0.3, 1.5), (1.7, 10.0)] {
+        let fast = FastGtr::new(a, g).unwrap();
+        let mut worst = 0.0f64;
+        for _ in 0..20_000 {
+            let t = 1.5 * rng.next_f64();
+            let w = [t.sin(), 0.0, t.cos()];
+            let u = [rng.next_f64(), rng.next_f64()];
+            let m = fast.sample_visible(w, u, &mut || rng.next_f64());
+            worst = worst.max(((m[0] * m[0] + m[1] * m[1] + m[2] * m[2]).sqrt() - 1.0).abs());
+        }
+        assert!(worst < 1e-14, "α={a} γ={g}: {worst:e}");
+    }
     let nan = f64::NAN;
     let m = fast.sample_visible([nan, 0.0, 1.0], [0.5, 0.5], &mut || 0.5);
     assert!(m[0].is_nan());

@@ -547,7 +547,7 @@ impl Gtr {
         let total = e + g;
         let (inv_p, inv_g) = (total / e, 1.0 / g);
         let (mut v0, mut v1) = (u[0].to_f64(), u[1].to_f64());
-        let (mut x, mut y) = (0.0, 0.0);
+        let (mut x, mut y, mut radius) = (0.0, 0.0, 0.0);
         // At most 64 candidates: each is kept with probability above 0.49, so the cap (which
         // only guarantees termination for a `uniform` that returns NaN) is reached with
         // probability below 1e-18.
@@ -563,6 +563,7 @@ impl Gtr {
             let Some(r) = radial.radius(v1, uniform().to_f64()) else {
                 continue;
             };
+            radius = r;
             if first {
                 let turn = v0 * inv_p;
                 let (cs, sn) = super::cos_sin_turn(turn);
@@ -578,7 +579,9 @@ impl Gtr {
                 break;
             }
         }
-        super::normal_from_slopes(x, y, (cp, sp), 1.0, 1.0)
+        // (x, y) has length r in both parts (to rounding), so the normal's length comes
+        // from r alone.
+        super::normal_from_slopes_r(x, y, radius, (cp, sp))
     }
 
     /// A normal distributed as D(m) cos θm, u ∈ [0, 1]²: Burley's closed-form inversion
