@@ -79,11 +79,10 @@ const M_W: u32 = M - 1;
 const N: usize = 5;
 const M_T: u32 = 5;
 /// Coefficients per row of the f32 table (degree 3: one level of Estrin's scheme fewer),
-/// re-expanded from the fit like the f64 table, on the same 2^M32 = 32 rows per octave. A
+/// re-expanded from the fit like the f64 table, on the same rows (so the same layout). A
 /// cubic on a whole fitted segment errs by 1.5e-6 at grazing, and on halves of the u
 /// side's segments (16 rows per octave) it still missed [`F32_TOL`] at γ ≥ 2 with α ≤ 0.3.
 const N32: usize = 4;
-const M32: u32 = 5;
 /// The largest relative deviation of an f32 row (f32 arithmetic) from its fitted
 /// polynomial, at 17 points per piece, for which the f32 table is kept: with the fit's 1e-8
 /// and a few ulp from the f32 inputs, the f32 path stays inside 1e-6, half the 2e-6
@@ -145,12 +144,12 @@ pub struct Gtr {
     /// The largest deviation of `coef`'s rows from the fit they were re-expanded from
     /// (relative for Λ, absolute for ln Λ; checked by the unit tests).
     piece_dev: f64,
-    /// The f32 table: each row of `coef` as 2^{M32 − m} cubics in f32, on equal pieces of
-    /// its segment (so 2^M32 rows per octave on both sides); empty where Λ is not direct or
-    /// a cubic misses [`F32_TOL`] (the f32 entry points then evaluate in f64).
+    /// The f32 table: the rows of `coef` as cubics in f32 (the same layout); empty where Λ
+    /// is not direct or a cubic misses [`F32_TOL`] (the f32 entry points then evaluate in
+    /// f64).
     coef32: Vec<[f32; N32]>,
-    /// Per side [u, w]: the row of t is (bits of t) >> (23 − M32) less this (the biased
-    /// exponent and top M32 mantissa bits index the pieces), and 2^k0 as an f32.
+    /// Per side [u, w]: `Side`'s offset and 2^k0 for the bits of an f32 t (23 mantissa
+    /// bits, exponent bias 127).
     off32: [u32; 2],
     lo32: [f32; 2],
     /// Λ ≈ m/a − 1/2 + m₁a below `u_lo` (a = cot θ): [m, m₁].
@@ -227,8 +226,8 @@ impl Gtr {
         let table = [u_rows, w_rows].concat();
         // The f32 table, where Λ itself is tabulated and cubics hold F32_TOL.
         let coef32 = if direct {
-            let (u32_rows, e_u) = re_expand::<f32, N32>(fit_u, M32 - M, true, |x| x as f32);
-            let (w32_rows, e_w) = re_expand::<f32, N32>(fit_w, M32 - M_W, true, |x| x as f32);
+            let (u32_rows, e_u) = re_expand::<f32, N32>(fit_u, M_T - M, true, |x| x as f32);
+            let (w32_rows, e_w) = re_expand::<f32, N32>(fit_w, M_T - M_W, true, |x| x as f32);
             if e_u.max(e_w) <= F32_TOL {
                 [u32_rows, w32_rows].concat()
             } else {
@@ -237,9 +236,8 @@ impl Gtr {
         } else {
             Vec::new()
         };
-        // The first row of each side's f32 table, and its first octave's index in the bits.
-        let w_row0_32 = w_row0 << (M32 - M);
-        let off = |k0: i32, row0: usize| (((127 + k0) as u32) << M32).wrapping_sub(row0 as u32);
+        // Each side's first octave's index in the bits of t, less its first row.
+        let off32 = |k0: i32, row0: usize| (((127 + k0) as u32) << M_T).wrapping_sub(row0 as u32);
         let off64 = |k0: i32, row0: usize| (((1023 + k0) as u64) << M_T).wrapping_sub(row0 as u64);
         let (u_lo, w_lo) = (2f64.powi(u_k0), 2f64.powi(w_k0));
         let (a_lo, a_hi) = (a_of_u(u_lo), a_of_w(w_lo));
@@ -260,7 +258,7 @@ impl Gtr {
             direct,
             piece_dev: e_u.max(e_w),
             coef32,
-            off32: [off(u_k0, 0), off(w_k0, w_row0_32)],
+            off32: [off32(u_k0, 0), off32(w_k0, w_row0_t)],
             lo32: [u_lo as f32, w_lo as f32],
             m: Self::two_terms(|a| (exact.lambda_cot(a) + 0.5) * a, a_lo, 0.5 * a_lo),
             k: Self::two_terms(
@@ -476,11 +474,11 @@ impl Gtr {
         let normal_side = u >= 0.5;
         let t = if normal_side { 1.0 - u } else { u };
         let side = usize::from(normal_side);
-        // The exponent and top M32 mantissa bits less the side's offset are the row
+        // The exponent and top M_T mantissa bits less the side's offset are the row
         // (clamped: t below the table wraps to a huge index, and answers from the ends below).
-        let row = ((t.to_bits() >> (23 - M32)).wrapping_sub(self.off32[side]) as usize)
+        let row = ((t.to_bits() >> (23 - M_T)).wrapping_sub(self.off32[side]) as usize)
             .min(self.coef32.len() - 1);
-        let (_, s) = fit::octave_segment32(0, M32, t);
+        let (_, s) = fit::octave_segment32(0, M_T, t);
         // 2^k0 is an f32 (k0 ≥ −126: the w table starts at 2^−61 at α = 1e6).
         if t >= self.lo32[side] {
             return fit::horner(&self.coef32[row], s);
