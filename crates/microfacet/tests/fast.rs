@@ -547,7 +547,7 @@ fn gtr_fast_lambda_over_the_whole_domain() {
             let mut rng = microfacet::chi2::SplitMix64(alpha.to_bits() ^ gamma.to_bits());
             let mut e32 = 0.0f64;
             for k in 0..20_000 {
-                // Half uniform in u, half log-uniform in u and in 1 − u (both ends).
+                // A third uniform in u, a third log-uniform in u, a third in 1 − u (both ends).
                 let v = rng.next_f64();
                 let u = match k % 3 {
                     0 => v,
