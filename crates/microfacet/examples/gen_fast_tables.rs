@@ -172,7 +172,7 @@ fn table<const N: usize>(
     f: impl Fn(f64) -> f64,
 ) -> f64 {
     let (t, worst) = table_octaves::<N>(out, name, what, range, f);
-    write_rows(out, name, &t);
+    write_rows(out, name, "f64", &t);
     worst
 }
 
@@ -190,18 +190,28 @@ fn table_octaves<const N: usize>(
         for j in 0..(16 << m) {
             let x = 2f64.powi(e) * (1.0 + (j as f64 + 0.37) / (16 << m) as f64);
             let (a, b) = (eval(&t, k0, m, x), f(x));
-            if ((a - b) / b).abs() > worst && std::env::var("GDBG").is_ok() {
-                eprintln!("{name} x {x} fit {a} f {b}");
-            }
             worst = worst.max(((a - b) / b).abs());
         }
     }
     writeln!(out, "/// {what}: x ∈ [2^{k0}, 2^{k1}), 2^{m} segments per octave, degree {}; fit error {worst:.1e} (relative, 16 points per segment).", N - 1).unwrap();
+    write_range(out, name, (k0, k1, m));
+    eprintln!("{name}: {} segments, fit error {worst:.2e}", t.len());
+    (t, worst)
+}
+
+/// Writes a table's `{name}_K0`, `_K1` and `_M`.
+fn write_range(out: &mut String, name: &str, (k0, k1, m): (i32, i32, u32)) {
     writeln!(out, "pub const {name}_K0: i32 = {k0};").unwrap();
     writeln!(out, "pub const {name}_K1: i32 = {k1};").unwrap();
     writeln!(out, "pub const {name}_M: u32 = {m};").unwrap();
-    eprintln!("{name}: {} segments, fit error {worst:.2e}", t.len());
-    (t, worst)
+}
+
+/// The f64 fit of `f` on [2^k0, 2^k1), its coefficients rounded to f32.
+fn fit32<const N: usize>((k0, k1, m): (i32, i32, u32), f: impl Fn(f64) -> f64) -> Vec<[f32; N]> {
+    fit_octaves::<N>(k0, k1, m, f)
+        .iter()
+        .map(|r| r.map(|c| c as f32))
+        .collect()
 }
 
 /// [`table`] for the native f32 paths: the f64 fit's coefficients rounded to f32, written as
@@ -214,10 +224,7 @@ fn table32<const N: usize>(
     (k0, k1, m): (i32, i32, u32),
     f: impl Fn(f64) -> f64,
 ) -> f64 {
-    let t: Vec<[f32; N]> = fit_octaves::<N>(k0, k1, m, &f)
-        .iter()
-        .map(|r| r.map(|c| c as f32))
-        .collect();
+    let t = fit32::<N>((k0, k1, m), &f);
     let mut worst = 0.0f64;
     let (mut x, hi) = (2f32.powi(k0), 2f32.powi(k1));
     while x < hi {
@@ -226,15 +233,8 @@ fn table32<const N: usize>(
         x = f32::from_bits(x.to_bits() + 509);
     }
     writeln!(out, "/// {what}, f32: x ∈ [2^{k0}, 2^{k1}), 2^{m} segments per octave, degree {}; error {worst:.1e} (relative, f32 arithmetic, every 509th f32).", N - 1).unwrap();
-    writeln!(out, "pub const {name}_K0: i32 = {k0};").unwrap();
-    writeln!(out, "pub const {name}_K1: i32 = {k1};").unwrap();
-    writeln!(out, "pub const {name}_M: u32 = {m};").unwrap();
-    writeln!(out, "pub static {name}: [[f32; {N}]; {}] = [", t.len()).unwrap();
-    for c in &t {
-        let row: Vec<String> = c.iter().map(|v| format!("{v:e}")).collect();
-        writeln!(out, "    [{}],", row.join(", ")).unwrap();
-    }
-    writeln!(out, "];").unwrap();
+    write_range(out, name, (k0, k1, m));
+    write_rows(out, name, "f32", &t);
     eprintln!("{name}: {} segments, f32 error {worst:.2e}", t.len());
     worst
 }
@@ -249,10 +249,7 @@ fn table_narrow<const N: usize>(
     (k0, k1, m): (i32, i32, u32),
     f: impl Fn(f64) -> f64,
 ) -> f64 {
-    let t: Vec<[f32; N]> = fit_octaves::<N>(k0, k1, m, &f)
-        .iter()
-        .map(|r| r.map(|c| c as f32))
-        .collect();
+    let t = fit32::<N>((k0, k1, m), &f);
     let mut worst = 0.0f64;
     for e in k0..k1 {
         for j in 0..(16 << m) {
@@ -262,22 +259,20 @@ fn table_narrow<const N: usize>(
         }
     }
     writeln!(out, "/// {what}, f32 (x in f64): x ∈ [2^{k0}, 2^{k1}), 2^{m} segments per octave, degree {}; error {worst:.1e} (relative, 16 points per segment).", N - 1).unwrap();
-    writeln!(out, "pub const {name}_K0: i32 = {k0};").unwrap();
-    writeln!(out, "pub const {name}_K1: i32 = {k1};").unwrap();
-    writeln!(out, "pub const {name}_M: u32 = {m};").unwrap();
-    writeln!(out, "pub static {name}: [[f32; {N}]; {}] = [", t.len()).unwrap();
-    for c in &t {
-        let row: Vec<String> = c.iter().map(|v| format!("{v:e}")).collect();
-        writeln!(out, "    [{}],", row.join(", ")).unwrap();
-    }
-    writeln!(out, "];").unwrap();
+    write_range(out, name, (k0, k1, m));
+    write_rows(out, name, "f32", &t);
     eprintln!("{name}: {} segments, error {worst:.2e}", t.len());
     worst
 }
 
-/// Writes `pub static {name}` with the rows `t`.
-fn write_rows<const N: usize>(out: &mut String, name: &str, t: &[[f64; N]]) {
-    writeln!(out, "pub static {name}: [[f64; {N}]; {}] = [", t.len()).unwrap();
+/// Writes `pub static {name}` with the rows `t` (`ty` is their type's name, f64 or f32).
+fn write_rows<T: std::fmt::LowerExp, const N: usize>(
+    out: &mut String,
+    name: &str,
+    ty: &str,
+    t: &[[T; N]],
+) {
+    writeln!(out, "pub static {name}: [[{ty}; {N}]; {}] = [", t.len()).unwrap();
     for c in t {
         let row: Vec<String> = c.iter().map(|v| format!("{v:e}")).collect();
         writeln!(out, "    [{}],", row.join(", ")).unwrap();
@@ -328,7 +323,7 @@ fn main() {
     )
     .unwrap();
     writeln!(out, "pub const EXPONENTIAL_QB_ROW0: usize = {};", a.len()).unwrap();
-    write_rows(&mut out, "EXPONENTIAL_Q", &[a, b].concat());
+    write_rows(&mut out, "EXPONENTIAL_Q", "f64", &[a, b].concat());
     out.push('\n');
     // The f32 path: q stays in f64 (Λ ~ e^{−z} has a condition number of about z in z, up
     // to 64 here, so q rounded to f32 would cost up to ~2e-6), but cubics with f32

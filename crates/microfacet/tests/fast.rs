@@ -378,28 +378,56 @@ fn double_ggx_fast_lambda_over_the_whole_domain() {
     assert!(rel(f::g2(0.3, 0.7, 0.4), n(0.4).g2(0.3, 0.7)) < FIT_TOL_F64);
 }
 
-/// The native f32 Double GGX Λ, σ and G1 (f32 table and arithmetic) at 300 000 random f32
-/// (u, α), u ∈ (0, 1), α ∈ [1e-3, 10] log-uniform, against the exact Λ(x) at those inputs
-/// (x formed in f64 from the f32 values: exact to 1e-16).
-#[test]
-fn double_ggx_fast_f32_at_random_inputs() {
-    use microfacet::fast::double_ggx as f;
-    let mut rng = microfacet::chi2::SplitMix64(2026);
+/// The f32 Λ, σ(−u), σ(u) and G1 of a fitted NDF (`fast` returns them in that order) at
+/// `n` random f32 (u, α), u ∈ (0, 1), α ∈ [1e-3, 10] log-uniform, against the exact Λ at
+/// those inputs (relative where the reference exceeds f32's normal range); returns the
+/// worst errors of Λ, σ and G1.
+fn f32_at_random_inputs(
+    seed: u64,
+    n: usize,
+    fast: impl Fn(f32, f32) -> [f32; 4],
+    exact_lambda: impl Fn(f64, f64) -> f64,
+) -> (f64, f64, f64) {
+    let mut rng = microfacet::chi2::SplitMix64(seed);
     let (mut el, mut es, mut eg) = (0.0f64, 0.0f64, 0.0f64);
-    for _ in 0..300_000 {
+    for _ in 0..n {
         let u = rng.next_f64() as f32;
         let a = 10f64.powf(-3.0 + 4.0 * rng.next_f64()) as f32;
+        let u64_ = f64::from(u);
         if u == 0.0 {
             continue;
         }
-        let (u64_, a64) = (f64::from(u), f64::from(a));
-        let x = 0.5 * a64 * a64 * ((1.0 - u64_) * (1.0 + u64_)) / (u64_ * u64_);
-        let l = 0.5 * microfacet::special::bessel_k_sum_m1(x);
-        el = el.max(rel(f64::from(f::lambda(u, a)), l));
-        es = es.max(rel(f64::from(f::sigma(-u, a)), u64_ * l));
-        es = es.max(rel(f64::from(f::sigma(u, a)), u64_ * (1.0 + l)));
-        eg = eg.max(rel(f64::from(f::g1(u, a)), 1.0 / (1.0 + l)));
+        let l = exact_lambda(u64_, f64::from(a));
+        let [fl, fs_neg, fs, fg] = fast(u, a).map(f64::from);
+        let r = |got: f64, want: f64| rel_above(got, want, 1e-37);
+        el = el.max(r(fl, l));
+        es = es.max(r(fs_neg, u64_ * l)).max(r(fs, u64_ * (1.0 + l)));
+        eg = eg.max(r(fg, 1.0 / (1.0 + l)));
     }
+    (el, es, eg)
+}
+
+/// The native f32 Double GGX Λ, σ and G1 (f32 table and arithmetic) at 300 000 random f32
+/// inputs, against the exact Λ(x) (x formed in f64 from the f32 values: exact to 1e-16).
+#[test]
+fn double_ggx_fast_f32_at_random_inputs() {
+    use microfacet::fast::double_ggx as f;
+    let (el, es, eg) = f32_at_random_inputs(
+        2026,
+        300_000,
+        |u, a| {
+            [
+                f::lambda(u, a),
+                f::sigma(-u, a),
+                f::sigma(u, a),
+                f::g1(u, a),
+            ]
+        },
+        |u, a| {
+            let x = 0.5 * a * a * ((1.0 - u) * (1.0 + u)) / (u * u);
+            0.5 * microfacet::special::bessel_k_sum_m1(x)
+        },
+    );
     println!("Double GGX fast f32 (random inputs): Λ {el:.2e}, σ {es:.2e}, G1 {eg:.2e}");
     assert!(el.max(es).max(eg) <= FIT_TOL_F32, "{el} {es} {eg}");
     // The f32 edges, as in f64.
@@ -416,28 +444,24 @@ fn double_ggx_fast_f32_at_random_inputs() {
     assert!(rel(f64::from(tiny) * 1e-20f32 as f64, s0) < 1e-6, "{tiny}");
 }
 
-/// The f32 Exponential Λ, σ and G1 (q in f64, f32 cubics) at 100 000 random f32 (u, α),
-/// u ∈ (0, 1), α ∈ [1e-3, 10] log-uniform, against the exact Λ at those inputs.
+/// The f32 Exponential Λ, σ and G1 (q in f64, f32 cubics) at 100 000 random f32 inputs,
+/// against the exact Λ.
 #[test]
 fn exponential_fast_f32_at_random_inputs() {
     use microfacet::fast::exponential as f;
-    let mut rng = microfacet::chi2::SplitMix64(2027);
-    let (mut el, mut es, mut eg) = (0.0f64, 0.0f64, 0.0f64);
-    for _ in 0..100_000 {
-        let u = rng.next_f64() as f32;
-        let a = 10f64.powf(-3.0 + 4.0 * rng.next_f64()) as f32;
-        let (u64_, a64) = (f64::from(u), f64::from(a));
-        let l = Exponential::new(a64).unwrap().lambda(u64_);
-        if u == 0.0 || l < 1e-37 {
-            continue;
-        }
-        el = el.max(rel(f64::from(f::lambda(u, a)), l));
-        if u64_ * l > 1e-37 {
-            es = es.max(rel(f64::from(f::sigma(-u, a)), u64_ * l));
-        }
-        es = es.max(rel(f64::from(f::sigma(u, a)), u64_ * (1.0 + l)));
-        eg = eg.max(rel(f64::from(f::g1(u, a)), 1.0 / (1.0 + l)));
-    }
+    let (el, es, eg) = f32_at_random_inputs(
+        2027,
+        100_000,
+        |u, a| {
+            [
+                f::lambda(u, a),
+                f::sigma(-u, a),
+                f::sigma(u, a),
+                f::g1(u, a),
+            ]
+        },
+        |u, a| Exponential::new(a).unwrap().lambda(u),
+    );
     println!("Exponential fast f32 (random inputs): Λ {el:.2e}, σ {es:.2e}, G1 {eg:.2e}");
     assert!(el.max(es).max(eg) <= FIT_TOL_F32, "{el} {es} {eg}");
     let s0 = f64::from(f::sigma(0.0f32, 0.3));
