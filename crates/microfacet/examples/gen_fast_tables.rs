@@ -303,18 +303,18 @@ fn main() {
     // exponential at run time. Beyond, Λ e^z on octaves of z, and one exponential restores
     // the factor.
     let lambda_q = |q: f64| exponential(q.sqrt());
-    let (a, e2) = table_octaves::<8>(
+    let (a, e2) = table_octaves::<6>(
         &mut out,
         "EXPONENTIAL_QA",
         "Exponential Λ(√q)",
-        (-24, 6, 3),
+        (-24, 6, 4),
         lambda_q,
     );
-    let (b, e6) = table_octaves::<8>(
+    let (b, e6) = table_octaves::<6>(
         &mut out,
         "EXPONENTIAL_QB",
         "Exponential Λ(√q)",
-        (6, 12, 5),
+        (6, 12, 6),
         lambda_q,
     );
     writeln!(
