@@ -291,7 +291,8 @@ mod tests {
 
     #[test]
     fn the_ranges_meet_where_the_tables_end() {
-        // Continuity across each switch, to the tables' accuracy.
+        // Continuity across each switch, to the tables' accuracy: each side within its fit
+        // error (2.0e-9 for the q tables, 1.2e-11 for the far table), so 5e-9 apart at most.
         // (z = 2^−12, 8, 64 and 512: q = 2^−24, 64, 4096.)
         for z in [
             fit::pow2(EXPONENTIAL_QA_K0 / 2),
@@ -300,14 +301,14 @@ mod tests {
             512.0,
         ] {
             let below = lambda_z(f64::from_bits(z.to_bits() - 1));
-            assert!((lambda_z(z) / below - 1.0).abs() < 1e-9, "{z}");
+            assert!((lambda_z(z) / below - 1.0).abs() < 5e-9, "{z}");
         }
         // Every z in the q tables' range lands in them or in the ends, both accurate: a z
         // below 64 whose q (computed from u and α, not as z²) rounds to 4096 goes to the far
         // table, which starts at 32.
         let mut z = 32.0;
         while z < 64.0 {
-            assert!((lambda_z_ends(z) / lambda_z(z) - 1.0).abs() < 1e-9, "{z}");
+            assert!((lambda_z_ends(z) / lambda_z(z) - 1.0).abs() < 5e-9, "{z}");
             z *= 1.001;
         }
         // q under- or overflowing from (u, α) while z is moderate: the ends still answer.
