@@ -31,6 +31,10 @@ pub fn eval<const N: usize>(coef: &[[f64; N]], k0: i32, m: u32, x: f64) -> f64 {
     horner(&coef[idx.min(coef.len() - 1)], s)
 }
 
+/// The bits of 2.0 (f64 and f32): with a position's bits as the mantissa, 2(1 + position).
+const TWO: u64 = 0x4000_0000_0000_0000;
+const TWO32: u32 = 0x4000_0000;
+
 /// The row (unclamped: out of range for x outside the table) and s of x in an octave table
 /// (see [`eval`]).
 #[inline(always)]
@@ -38,15 +42,13 @@ pub fn octave_segment(k0: i32, m: u32, x: f64) -> (usize, f64) {
     let bits = x.to_bits();
     let idx = (bits >> (52 - m)).wrapping_sub(((1023 + k0) as u64) << m) as usize;
     // The 52 − m mantissa bits below the index are x's position in its segment: as the
-    // mantissa of a number in [1, 2) they give 1 + (x − x₀)/h exactly, and s = 2(1 + ·) − 3
-    // is exact too (the same s as (x − x₀)·2/h − 1, with integer operations in place of
-    // a subtraction and a multiplication on the chain). Sign, exponent and the index's m
-    // bits are shifted out.
+    // mantissa of a number in [2, 4) (the exponent of 2.0) they give 2(1 + (x − x₀)/h)
+    // exactly, and s = 2(1 + ·) − 3 is one exact subtraction (the same s as (x − x₀)·2/h − 1,
+    // with integer operations in place of a subtraction and a multiplication on the chain;
+    // the mantissa of a number in [1, 2), doubled and then shifted, took two additions).
+    // Sign, exponent and the index's m bits are shifted out.
     let position = (bits << (12 + m)) >> 12;
-    (
-        idx,
-        2.0 * f64::from_bits(0x3ff0_0000_0000_0000 | position) - 3.0,
-    )
+    (idx, f64::from_bits(TWO | position) - 3.0)
 }
 
 /// [`eval`] in single precision: a table of f32 coefficients, indexed by the bits of an f32
@@ -59,9 +61,9 @@ pub fn eval32<const N: usize>(coef: &[[f32; N]], k0: i32, m: u32, x: f32) -> f32
 
 /// [`eval`] of an f32 table at an f64 x (for the f32 paths whose variable must stay in f64),
 /// with no f64 arithmetic: the bits below the segment's index are x's position in its
-/// segment, and their top 23 make the f32 1 + position ∈ [1, 2), so s = 2(1 + position) − 3
-/// (exact; the truncation moves x by less than 2^−23 of a segment's width). Then the
-/// polynomial in f32.
+/// segment, and their top 23 make the f32 2(1 + position) ∈ [2, 4), so s = 2(1 + position) − 3
+/// is one exact subtraction (the truncation moves x by less than 2^−23 of a segment's
+/// width). Then the polynomial in f32.
 #[inline(always)]
 pub fn eval_narrow<const N: usize>(coef: &[[f32; N]], k0: i32, m: u32, x: f64) -> f32 {
     let bits = x.to_bits();
@@ -69,7 +71,7 @@ pub fn eval_narrow<const N: usize>(coef: &[[f32; N]], k0: i32, m: u32, x: f64) -
     // Sign, exponent and the index's m mantissa bits shifted out; the position's top 23
     // bits kept.
     let position = ((bits << (12 + m)) >> 41) as u32;
-    let s = 2.0 * f32::from_bits(0x3f80_0000 | position) - 3.0;
+    let s = f32::from_bits(TWO32 | position) - 3.0;
     horner(&coef[idx.min(coef.len() - 1)], s)
 }
 
@@ -78,9 +80,9 @@ pub fn eval_narrow<const N: usize>(coef: &[[f32; N]], k0: i32, m: u32, x: f64) -
 pub fn octave_segment32(k0: i32, m: u32, x: f32) -> (usize, f32) {
     let bits = x.to_bits();
     let idx = (bits >> (23 - m)).wrapping_sub(((127 + k0) as u32) << m) as usize;
-    // The position's 23 − m bits as the mantissa of 1 + position (see `octave_segment`).
+    // The position's 23 − m bits as the mantissa of 2(1 + position) (see `octave_segment`).
     let position = (bits << (9 + m)) >> 9;
-    (idx, 2.0 * f32::from_bits(0x3f80_0000 | position) - 3.0)
+    (idx, f32::from_bits(TWO32 | position) - 3.0)
 }
 
 /// Σ c_j s^j, by Estrin's scheme: pairs c_{2i} + c_{2i+1} s, then pairs of those with s²,
