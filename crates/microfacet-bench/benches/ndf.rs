@@ -727,16 +727,55 @@ fn batches(i: &Inputs) {
     use microfacet::fast::{batch, double_ggx as dg, exponential as ex, gtr::Gtr as FastGtr};
     use microfacet::fast::{beckmann as fb, ggx as fg};
     const LEN: usize = 1_000_000;
+    const ROUNDS: usize = 21;
     let u: Vec<f64> = (0..LEN)
         .map(|k| i.u[k % N] * (1.0 - 1e-9 * (k / N) as f64))
         .collect();
     let a: Vec<f64> = (0..LEN).map(|k| i.alpha[(k * 7 + 3) % N]).collect();
     let mut out = vec![0.0; LEN];
     let threads = rayon::current_num_threads();
+    // The same number of workers, each pinned to its own CPU.
+    let cpus = std::thread::available_parallelism().map_or(1, |n| n.get());
+    let pinned = rayon::ThreadPoolBuilder::new()
+        .num_threads(threads)
+        .start_handler(move |k| {
+            // (A failure only leaves that worker unpinned, as in the default pool.)
+            let _ = microfacet_bench::pin_to_cpu(k % cpus);
+        })
+        .build()
+        .expect("a second rayon pool");
     println!();
-    println!("slices of 10⁶ (ns per element, median of 11 passes): scalar loop | slice fn (× loop) | rayon on {threads} threads (× slice fn; fastest passes' ratio)");
-    // (median, fastest) ns per element over 11 passes.
-    let per = |f: &mut dyn FnMut(&mut [f64])| -> (f64, f64) {
+    println!("slices of 10⁶ (ns per element, median of {ROUNDS} rounds, each running the four in turn): scalar loop | slice fn (× loop) | rayon on {threads} threads (× slice fn; rounds below 1.5×) | the same, workers pinned one per CPU");
+    // The four forms of one row run in turn, round after round, so that a stretch of time in
+    // which the machine runs slower falls on all of them alike instead of on one form's
+    // block of passes. Per form: the median ns per element; for the rayon forms also how many
+    // rounds ran below 1.5× the same round's slice fn.
+    type Pass<'a> = &'a mut dyn FnMut(&mut [f64]);
+    let rounds = |fs: [Pass; 4]| -> ([f64; 4], [usize; 2]) {
+        let mut runs = [const { Vec::new() }; 4];
+        let mut o = vec![0.0; LEN];
+        let mut fs = fs;
+        for _ in 0..ROUNDS {
+            for (f, r) in fs.iter_mut().zip(runs.iter_mut()) {
+                let start = Instant::now();
+                f(&mut o);
+                black_box(&o);
+                r.push(start.elapsed().as_secs_f64() * 1e9 / LEN as f64);
+            }
+        }
+        let slow = [2, 3].map(|j| {
+            (0..ROUNDS)
+                .filter(|&k| runs[1][k] / runs[j][k] < 1.5)
+                .count()
+        });
+        let median = |r: &mut Vec<f64>| {
+            r.sort_by(f64::total_cmp);
+            r[r.len() / 2]
+        };
+        ([0, 1, 2, 3].map(|j| median(&mut runs[j])), slow)
+    };
+    // Median ns per element over 11 passes of one slice function.
+    let per = |f: &mut dyn FnMut(&mut [f64])| -> f64 {
         let mut runs = Vec::new();
         let mut o = vec![0.0; LEN];
         for _ in 0..11 {
@@ -746,32 +785,40 @@ fn batches(i: &Inputs) {
             runs.push(start.elapsed().as_secs_f64() * 1e9 / LEN as f64);
         }
         runs.sort_by(f64::total_cmp);
-        (runs[runs.len() / 2], runs[0])
+        runs[runs.len() / 2]
     };
-    let line = |name: &str, t_loop: (f64, f64), t_slice: (f64, f64), t_par: (f64, f64)| {
-        println!(
-            "{:34} {:7.2} | {:7.2} ({:5.2}×) | {:7.2} ({:5.2}×; {:4.2}×)",
+    let line =
+        |name: &str,
+         ([t_loop, t_slice, t_par, t_pin], [slow, slow_pin]): ([f64; 4], [usize; 2])| {
+            println!(
+            "{:34} {:7.2} | {:7.2} ({:5.2}×) | {:7.2} ({:5.2}×; {:2} of {ROUNDS}) | {:7.2} ({:5.2}×; {:2} of {ROUNDS})",
             name,
-            t_loop.0,
-            t_slice.0,
-            t_loop.0 / t_slice.0,
-            t_par.0,
-            t_slice.0 / t_par.0,
-            t_slice.1 / t_par.1
+            t_loop,
+            t_slice,
+            t_loop / t_slice,
+            t_par,
+            t_slice / t_par,
+            slow,
+            t_pin,
+            t_slice / t_pin,
+            slow_pin
         );
-    };
+        };
     // The loop calls the scalar function directly (inlined, as in a user's loop), not
     // through a pointer.
     macro_rules! case {
         ($name:expr, $scalar:path, $slice:path) => {{
-            let t_loop = per(&mut |o| {
-                for k in 0..LEN {
-                    o[k] = $scalar(u[k], a[k]);
-                }
-            });
-            let t_slice = per(&mut |o| $slice(&u, &a, o));
-            let t_par = per(&mut |o| batch::par::map(&u, &a, o, $slice));
-            line($name, t_loop, t_slice, t_par);
+            let times = rounds([
+                &mut |o| {
+                    for k in 0..LEN {
+                        o[k] = $scalar(u[k], a[k]);
+                    }
+                },
+                &mut |o| $slice(&u, &a, o),
+                &mut |o| batch::par::map(&u, &a, o, $slice),
+                &mut |o| pinned.install(|| batch::par::map(&u, &a, o, $slice)),
+            ]);
+            line($name, times);
         }};
     }
     case!("GGX D", fg::d, batch::ggx_d);
@@ -781,14 +828,17 @@ fn batches(i: &Inputs) {
     case!("Double GGX Λ", dg::lambda, batch::double_ggx_lambda);
     case!("Exponential Λ", ex::lambda, batch::exponential_lambda);
     let g = FastGtr::new(0.3, 1.5).unwrap();
-    let t_loop = per(&mut |o| {
-        for k in 0..LEN {
-            o[k] = g.lambda(u[k]);
-        }
-    });
-    let t_slice = per(&mut |o| batch::gtr_lambda(&g, &u, o));
-    let t_par = per(&mut |o| batch::par::gtr_lambda(&g, &u, o));
-    line("GTR Λ (α 0.3, γ 1.5)", t_loop, t_slice, t_par);
+    let times = rounds([
+        &mut |o| {
+            for k in 0..LEN {
+                o[k] = g.lambda(u[k]);
+            }
+        },
+        &mut |o| batch::gtr_lambda(&g, &u, o),
+        &mut |o| batch::par::gtr_lambda(&g, &u, o),
+        &mut |o| pinned.install(|| batch::par::gtr_lambda(&g, &u, o)),
+    ]);
+    line("GTR Λ (α 0.3, γ 1.5)", times);
 
     // The same slice functions capped at each instruction set this CPU has.
     let levels: Vec<batch::Simd> = [batch::Simd::Generic, batch::Simd::Avx2, batch::Simd::Avx512]
@@ -812,7 +862,7 @@ fn batches(i: &Inputs) {
             .iter()
             .map(|&l| {
                 batch::cap_simd(Some(l));
-                let t = per(&mut |o| f(&u, &a, o)).0;
+                let t = per(&mut |o| f(&u, &a, o));
                 format!("{t:7.2}")
             })
             .collect();

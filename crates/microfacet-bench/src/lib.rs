@@ -1,8 +1,9 @@
-//! The textbook C baseline (c/baseline.c), exposed as safe functions for the benchmarks.
-//! This crate is not part of the library: it exists so that `cargo bench -p microfacet-bench`
-//! measures our functions and a hand-written C equivalent side by side in one process.
+//! The textbook C baseline (c/baseline.c), exposed as safe functions for the benchmarks, and
+//! [`pin_to_cpu`] for the benchmark's pinned thread pool. This crate is not part of the
+//! library: it exists so that `cargo bench -p microfacet-bench` measures our functions and a
+//! hand-written C equivalent side by side in one process.
 
-#![allow(unsafe_code)] // FFI to the C baseline, confined to this file.
+#![allow(unsafe_code)] // FFI to the C baseline and to the OS's affinity call, confined to this file.
 
 mod ffi {
     extern "C" {
@@ -99,4 +100,31 @@ pub fn beckmann_d_f32(u: f32, alpha: f32) -> f32 {
 pub fn beckmann_lambda_f32(u: f32, alpha: f32) -> f32 {
     // SAFETY: a pure C function of two floats.
     unsafe { ffi::c_beckmann_lambda_f(u, alpha) }
+}
+
+/// Restricts the calling thread to CPU `cpu` (Linux: `sched_setaffinity`); false where that
+/// failed or the OS has no such call. For the benchmark's pool of rayon workers pinned one to
+/// a CPU: this machine's kernel packs runnable threads onto fewer vCPUs
+/// (`sched_vcpu_pack` on its command line), which put both workers of the default pool on one
+/// vCPU in about half of the passes (BENCHMARKS.md).
+pub fn pin_to_cpu(cpu: usize) -> bool {
+    #[cfg(target_os = "linux")]
+    {
+        if cpu >= libc::CPU_SETSIZE as usize {
+            return false;
+        }
+        // SAFETY: cpu_set_t is plain data (all zeros is the empty set), CPU_SET writes a bit
+        // below CPU_SETSIZE (checked above), and sched_setaffinity(0, …) reads the set for the
+        // calling thread.
+        unsafe {
+            let mut set: libc::cpu_set_t = std::mem::zeroed();
+            libc::CPU_SET(cpu, &mut set);
+            libc::sched_setaffinity(0, std::mem::size_of::<libc::cpu_set_t>(), &set) == 0
+        }
+    }
+    #[cfg(not(target_os = "linux"))]
+    {
+        let _ = cpu;
+        false
+    }
 }
