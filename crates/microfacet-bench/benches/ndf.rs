@@ -840,6 +840,52 @@ fn batches(i: &Inputs) {
     ]);
     line("GTR Λ (α 0.3, γ 1.5)", times);
 
+    // The same loop and slice fn on the first 2^15 elements (768 KiB of u, α and out: inside
+    // this CPU's 2 MiB L2), 32 times per pass: what the kernels cost when memory traffic is
+    // not the bound (GGX D's is, at 10⁶; BENCHMARKS.md).
+    const SMALL: usize = 1 << 15;
+    println!();
+    println!("cache-resident slices ({SMALL} elements, 32 times per pass; ns per element, median of {ROUNDS} rounds): scalar loop | slice fn (× loop)");
+    type Small<'a> = (
+        &'a str,
+        &'a dyn Fn(&[f64], &[f64], &mut [f64]),
+        fn(f64, f64) -> f64,
+    );
+    let small: [Small; 3] = [
+        ("GGX D", &batch::ggx_d, fg::d),
+        ("GGX Λ", &batch::ggx_lambda, fg::lambda),
+        ("GGX G1", &batch::ggx_g1, fg::g1),
+    ];
+    for (name, slice, scalar) in small {
+        let (us, as_) = (&u[..SMALL], &a[..SMALL]);
+        let mut o = vec![0.0; SMALL];
+        let mut runs = [const { Vec::new() }; 2];
+        for _ in 0..ROUNDS {
+            let start = Instant::now();
+            for _ in 0..32 {
+                for k in 0..SMALL {
+                    o[k] = scalar(us[k], as_[k]);
+                }
+                black_box(&mut o);
+            }
+            runs[0].push(start.elapsed().as_secs_f64() * 1e9 / (32 * SMALL) as f64);
+            let start = Instant::now();
+            for _ in 0..32 {
+                slice(us, as_, &mut o);
+                black_box(&mut o);
+            }
+            runs[1].push(start.elapsed().as_secs_f64() * 1e9 / (32 * SMALL) as f64);
+        }
+        let [t_loop, t_slice] = runs.map(|mut r| {
+            r.sort_by(f64::total_cmp);
+            r[r.len() / 2]
+        });
+        println!(
+            "{name:34} {t_loop:7.2} | {t_slice:7.2} ({:5.2}×)",
+            t_loop / t_slice
+        );
+    }
+
     // The same slice functions capped at each instruction set this CPU has.
     let levels: Vec<batch::Simd> = [batch::Simd::Generic, batch::Simd::Avx2, batch::Simd::Avx512]
         .into_iter()

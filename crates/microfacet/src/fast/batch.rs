@@ -290,6 +290,13 @@ fn gtr_chunks<const DIRECT: bool>(g: &super::gtr::Gtr, u: &[f64], out: &mut [f64
 }
 
 /// The `par_*` forms: the same functions on every core (rayon), in pieces of 16 384.
+///
+/// They run on the pool they are called from (the global pool, or the one a caller
+/// `install`s). Where the kernel packs runnable threads onto fewer vCPUs (the benchmark
+/// machine's does: `sched_vcpu_pack` on its command line), rayon's workers can share one
+/// vCPU for whole passes; a pool whose workers are pinned one per CPU (a `start_handler` that
+/// sets the thread's affinity) scales there as on a dedicated machine (BENCHMARKS.md: 1.9–2.0×
+/// on 2 cores pinned, about 1.0× in most rounds unpinned).
 #[cfg(feature = "rayon")]
 pub mod par {
     use rayon::prelude::*;
