@@ -215,7 +215,7 @@ pub fn double_ggx_lambda(u: &[f64], alpha: &[f64], out: &mut [f64]) {
         out,
         |u, a| {
             let x = 0.5 * a * a * ((1.0 - u) * (1.0 + u)) / (u * u);
-            (fit::eval(&DGGX, DGGX_K0, DGGX_M, x), !(x >= lo && x < hi))
+            (fit::eval_estrin(&DGGX, DGGX_K0, DGGX_M, x), !(x >= lo && x < hi))
         },
         double_ggx::lambda,
     );

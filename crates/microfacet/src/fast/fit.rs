@@ -28,7 +28,14 @@ pub fn pow2(k: i32) -> f64 {
 #[inline(always)]
 pub fn eval<const N: usize>(coef: &[[f64; N]], k0: i32, m: u32, x: f64) -> f64 {
     let (idx, s) = octave_segment(k0, m, x);
-    horner(&coef[idx.min(coef.len() - 1)], s)
+    poly(&coef[idx.min(coef.len() - 1)], s)
+}
+
+/// [`eval`] by Estrin's scheme whatever the row's length, for the slice kernels (see [`poly`]).
+#[inline(always)]
+pub fn eval_estrin<const N: usize>(coef: &[[f64; N]], k0: i32, m: u32, x: f64) -> f64 {
+    let (idx, s) = octave_segment(k0, m, x);
+    estrin(&coef[idx.min(coef.len() - 1)], s)
 }
 
 /// The bits of 2.0 (f64 and f32): with a position's bits as the mantissa, 2(1 + position).
@@ -56,7 +63,7 @@ pub fn octave_segment(k0: i32, m: u32, x: f64) -> (usize, f64) {
 #[inline(always)]
 pub fn eval32<const N: usize>(coef: &[[f32; N]], k0: i32, m: u32, x: f32) -> f32 {
     let (idx, s) = octave_segment32(k0, m, x);
-    horner(&coef[idx.min(coef.len() - 1)], s)
+    poly(&coef[idx.min(coef.len() - 1)], s)
 }
 
 /// [`eval`] of an f32 table at an f64 x (for the f32 paths whose variable must stay in f64),
@@ -72,7 +79,7 @@ pub fn eval_narrow<const N: usize>(coef: &[[f32; N]], k0: i32, m: u32, x: f64) -
     // bits kept.
     let position = ((bits << (12 + m)) >> 41) as u32;
     let s = f32::from_bits(TWO32 | position) - 3.0;
-    horner(&coef[idx.min(coef.len() - 1)], s)
+    poly(&coef[idx.min(coef.len() - 1)], s)
 }
 
 /// [`octave_segment`] of an f32 x (8 exponent bits, 23 mantissa bits).
@@ -85,12 +92,47 @@ pub fn octave_segment32(k0: i32, m: u32, x: f32) -> (usize, f32) {
     (idx, f32::from_bits(TWO32 | position) - 3.0)
 }
 
-/// Σ c_j s^j, by Estrin's scheme: pairs c_{2i} + c_{2i+1} s, then pairs of those with s²,
-/// s⁴, …: a dependency chain of depth ~2 log₂ N instead of Horner's 2N (the default x86-64
-/// target has no fused multiply-add, so the chain's latency is the cost). For |s| ≤ 1 and
-/// decaying coefficients the rounding error is that of Horner's within a few ulp.
+/// Σ c_j s^j for a table row: [`horner`] up to 6 coefficients, [`estrin`] beyond.
+///
+/// The scalar fast paths are called in loops of independent calls (a renderer's, the
+/// benchmark's), which overlap; what bounds them is the operations in flight more than one
+/// call's chain. For the short rows (the Λ tables: 4 to 6 coefficients) Horner's rule, the
+/// fewest operations, measured faster than Estrin's scheme: Double GGX Λ 6.4 → 6.0 ns (f64)
+/// and 5.4 → 4.8 (f32), Exponential 6.6 → 6.2 and 6.7 → 6.1, GTR 5.1 → 4.9 and 5.0 → 4.7
+/// (BENCHMARKS.md). For the long ones (7 to 11: erfcx, erfinv, Double GGX D, the sine and
+/// cosine of the samplers) the chain of Horner's rule cost more (GGX D·cos 12.6 → 15.1 ns with
+/// Horner's rule throughout), so they keep Estrin's. The slice kernels call [`estrin`]
+/// directly: vector code is bound by its gathers' latency there (GTR's kernel 2.3 → 3.8 ns
+/// per element with Horner's rule).
+#[inline(always)]
+pub fn poly<F: super::Real, const N: usize>(c: &[F; N], s: F) -> F {
+    // (6: see above; the longest rows of the Λ tables.)
+    if N <= 6 {
+        horner(c, s)
+    } else {
+        estrin(c, s)
+    }
+}
+
+/// Σ c_j s^j by Horner's rule, (…(c_{N−1} s + c_{N−2}) s + …) s + c₀: N − 1 multiplications
+/// and additions, on one chain of that length.
 #[inline(always)]
 pub fn horner<F: super::Real, const N: usize>(c: &[F; N], s: F) -> F {
+    const { assert!(N >= 1, "a row holds a coefficient") };
+    let mut acc = c[N - 1];
+    for j in (0..N - 1).rev() {
+        acc = acc * s + c[j];
+    }
+    acc
+}
+
+/// Σ c_j s^j, by Estrin's scheme: pairs c_{2i} + c_{2i+1} s, then pairs of those with s²,
+/// s⁴, …: a dependency chain of depth ~2 log₂ N instead of Horner's 2N (the default x86-64
+/// target has no fused multiply-add, so the chain's latency is the cost), for a few more
+/// operations. For |s| ≤ 1 and decaying coefficients the rounding error is that of Horner's
+/// within a few ulp.
+#[inline(always)]
+pub fn estrin<F: super::Real, const N: usize>(c: &[F; N], s: F) -> F {
     const { assert!(N >= 1 && N <= 16, "tables hold 1 to 16 coefficients") };
     // Fixed trip counts and conditions on the constant N: LLVM unrolls every level and drops
     // the dead branches, so this is straight-line code for each table's N.

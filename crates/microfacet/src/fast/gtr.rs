@@ -78,7 +78,7 @@ const M_W: u32 = M - 1;
 /// γ = 3; Λ ~ 1/u at grazing bends most); degree 5 on 16 held 2e-9 and measured 5.7 ns.
 const N: usize = 5;
 const M_T: u32 = 5;
-/// Coefficients per row of the f32 table (degree 3: one level of Estrin's scheme fewer),
+/// Coefficients per row of the f32 table (degree 3: two operations fewer than degree 4),
 /// re-expanded from the fit like the f64 table, on the same rows (so the same layout). A
 /// cubic on a whole fitted segment errs by 1.5e-6 at grazing, and on halves of the u
 /// side's segments (16 rows per octave) it still missed [`F32_TOL`] at γ ≥ 2 with α ≤ 0.3.
@@ -211,7 +211,7 @@ impl Gtr {
             // A node at the floor: the segment reaches the underflow (see the module docs).
             if (0..N_FIT).any(|k| {
                 let s = (std::f64::consts::PI * (k as f64 + 0.5) / N_FIT as f64).cos();
-                fit::horner(c, s) <= TINY.ln() + 1e-6
+                fit::poly(c, s) <= TINY.ln() + 1e-6
             }) {
                 *c = [0.0; N_FIT];
                 c[0] = -800.0; // e^{−800} = 0
@@ -313,7 +313,7 @@ impl Gtr {
         direct
             .iter()
             .enumerate()
-            .all(|(i, c)| ok(fit::horner(c, -1.0), want[i]) && ok(fit::horner(c, 1.0), want[i + 1]))
+            .all(|(i, c)| ok(fit::poly(c, -1.0), want[i]) && ok(fit::poly(c, 1.0), want[i + 1]))
     }
 
     /// Whether the table holds Λ itself (no exponential at evaluation; moderate γ) rather
@@ -374,7 +374,12 @@ impl Gtr {
         let row =
             ((t.to_bits() >> (52 - M_T)).wrapping_sub(side.off) as usize).min(self.coef.len() - 1);
         let (_, s) = fit::octave_segment(0, M_T, t);
-        (fit::horner(&self.coef[row], s), t >= side.lo)
+        // Estrin's scheme for the scalar path too, unlike `fit::poly`'s Horner for five
+        // coefficients: with Horner's rule GTR's scalar Λ measured no faster (5.2 against
+        // 5.1 ns, and 6.7 against 5.7 in the bench's table of every quantity), and a table of
+        // ln Λ would part the slice from the scalar path (Λ = e^p magnifies p's rounding by
+        // |p|, up to ~700).
+        (fit::estrin(&self.coef[row], s), t >= side.lo)
     }
 
     /// Rows in the tables (never 0; asserting that lets the slice kernel's row clamp drop
@@ -481,7 +486,7 @@ impl Gtr {
         let (_, s) = fit::octave_segment32(0, M_T, t);
         // 2^k0 is an f32 (k0 ≥ −126: the w table starts at 2^−61 at α = 1e6).
         if t >= self.lo32[side] {
-            return fit::horner(&self.coef32[row], s);
+            return fit::poly(&self.coef32[row], s);
         }
         self.lambda32_ends(u)
     }
@@ -620,11 +625,11 @@ fn re_expand<T: Real, const B: usize>(
     for c in rows {
         for p in 0..pieces {
             // Piece p in the row's s: −1 + (2p + 1 + s') width, s' ∈ [−1, 1].
-            let row = |s: f64| fit::horner(c, -1.0 + (2 * p + 1) as f64 * width + s * width);
+            let row = |s: f64| fit::poly(c, -1.0 + (2 * p + 1) as f64 * width + s * width);
             let r = fit::chebyshev_fit::<B>(row).map(&round);
             for k in 0..=16 {
                 let s = -1.0 + k as f64 / 8.0;
-                let (got, want) = (fit::horner(&r, round(s)).to_f64(), row(s));
+                let (got, want) = (fit::poly(&r, round(s)).to_f64(), row(s));
                 let scale = if relative { want.abs() } else { 1.0 };
                 worst = worst.max((got - want).abs() / scale);
             }
