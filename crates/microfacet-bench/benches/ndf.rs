@@ -721,6 +721,38 @@ fn mixture_vndf(i: &Inputs, calls: usize, ggx_lambda: f64, ggx_vndf: f64) {
     }
 }
 
+/// One timed pass of the slice benchmarks, writing into the buffer it is given.
+type Pass<'a> = &'a mut dyn FnMut(&mut [f64]);
+
+/// Runs `passes` in turn, `rounds` times, each into a buffer of `len` elements: per pass, the
+/// ns per element of each round (a pass covering `elements` elements). Running them in turn
+/// lets a stretch of time in which the machine runs slower fall on all of them alike
+/// instead of on one pass's block of rounds.
+fn timed_rounds<const K: usize>(
+    rounds: usize,
+    len: usize,
+    elements: usize,
+    mut passes: [Pass; K],
+) -> [Vec<f64>; K] {
+    let mut runs = [const { Vec::new() }; K];
+    let mut o = vec![0.0; len];
+    for _ in 0..rounds {
+        for (f, r) in passes.iter_mut().zip(runs.iter_mut()) {
+            let start = Instant::now();
+            f(&mut o);
+            black_box(&o);
+            r.push(start.elapsed().as_secs_f64() * 1e9 / elements as f64);
+        }
+    }
+    runs
+}
+
+/// The median of a pass's rounds.
+fn median(mut r: Vec<f64>) -> f64 {
+    r.sort_by(f64::total_cmp);
+    r[r.len() / 2]
+}
+
 /// 10⁶-element slices: the scalar fast path in a plain loop, the slice function, and the
 /// slice function on every core (rayon), per element.
 fn batches(i: &Inputs) {
@@ -746,46 +778,17 @@ fn batches(i: &Inputs) {
         .expect("a second rayon pool");
     println!();
     println!("slices of 10⁶ (ns per element, median of {ROUNDS} rounds, each running the four in turn): scalar loop | slice fn (× loop) | rayon on {threads} threads (× slice fn; rounds below 1.5×) | the same, workers pinned one per CPU");
-    // The four forms of one row run in turn, round after round, so that a stretch of time in
-    // which the machine runs slower falls on all of them alike instead of on one form's
-    // block of passes. Per form: the median ns per element; for the rayon forms also how many
-    // rounds ran below 1.5× the same round's slice fn.
-    type Pass<'a> = &'a mut dyn FnMut(&mut [f64]);
+    // The four forms of one row run in turn, round after round (`timed_rounds`). Per form:
+    // the median ns per element; for the rayon forms also how many rounds ran below 1.5× the
+    // same round's slice fn.
     let rounds = |fs: [Pass; 4]| -> ([f64; 4], [usize; 2]) {
-        let mut runs = [const { Vec::new() }; 4];
-        let mut o = vec![0.0; LEN];
-        let mut fs = fs;
-        for _ in 0..ROUNDS {
-            for (f, r) in fs.iter_mut().zip(runs.iter_mut()) {
-                let start = Instant::now();
-                f(&mut o);
-                black_box(&o);
-                r.push(start.elapsed().as_secs_f64() * 1e9 / LEN as f64);
-            }
-        }
+        let runs = timed_rounds(ROUNDS, LEN, LEN, fs);
         let slow = [2, 3].map(|j| {
             (0..ROUNDS)
                 .filter(|&k| runs[1][k] / runs[j][k] < 1.5)
                 .count()
         });
-        let median = |r: &mut Vec<f64>| {
-            r.sort_by(f64::total_cmp);
-            r[r.len() / 2]
-        };
-        ([0, 1, 2, 3].map(|j| median(&mut runs[j])), slow)
-    };
-    // Median ns per element over 11 passes of one slice function.
-    let per = |f: &mut dyn FnMut(&mut [f64])| -> f64 {
-        let mut runs = Vec::new();
-        let mut o = vec![0.0; LEN];
-        for _ in 0..11 {
-            let start = Instant::now();
-            f(&mut o);
-            black_box(&o);
-            runs.push(start.elapsed().as_secs_f64() * 1e9 / LEN as f64);
-        }
-        runs.sort_by(f64::total_cmp);
-        runs[runs.len() / 2]
+        (runs.map(median), slow)
     };
     let line =
         |name: &str,
@@ -858,28 +861,28 @@ fn batches(i: &Inputs) {
     ];
     for (name, slice, scalar) in small {
         let (us, as_) = (&u[..SMALL], &a[..SMALL]);
-        let mut o = vec![0.0; SMALL];
-        let mut runs = [const { Vec::new() }; 2];
-        for _ in 0..ROUNDS {
-            let start = Instant::now();
-            for _ in 0..32 {
-                for k in 0..SMALL {
-                    o[k] = scalar(us[k], as_[k]);
-                }
-                black_box(&mut o);
-            }
-            runs[0].push(start.elapsed().as_secs_f64() * 1e9 / (32 * SMALL) as f64);
-            let start = Instant::now();
-            for _ in 0..32 {
-                slice(us, as_, &mut o);
-                black_box(&mut o);
-            }
-            runs[1].push(start.elapsed().as_secs_f64() * 1e9 / (32 * SMALL) as f64);
-        }
-        let [t_loop, t_slice] = runs.map(|mut r| {
-            r.sort_by(f64::total_cmp);
-            r[r.len() / 2]
-        });
+        let runs = timed_rounds(
+            ROUNDS,
+            SMALL,
+            32 * SMALL,
+            [
+                &mut |o| {
+                    for _ in 0..32 {
+                        for k in 0..SMALL {
+                            o[k] = scalar(us[k], as_[k]);
+                        }
+                        black_box(&mut *o);
+                    }
+                },
+                &mut |o| {
+                    for _ in 0..32 {
+                        slice(us, as_, o);
+                        black_box(&mut *o);
+                    }
+                },
+            ],
+        );
+        let [t_loop, t_slice] = runs.map(median);
         println!(
             "{name:34} {t_loop:7.2} | {t_slice:7.2} ({:5.2}×)",
             t_loop / t_slice
@@ -908,7 +911,8 @@ fn batches(i: &Inputs) {
             .iter()
             .map(|&l| {
                 batch::cap_simd(Some(l));
-                let t = per(&mut |o| f(&u, &a, o));
+                let [runs] = timed_rounds(11, LEN, LEN, [&mut |o| f(&u, &a, o)]);
+                let t = median(runs);
                 format!("{t:7.2}")
             })
             .collect();
