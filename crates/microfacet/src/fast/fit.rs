@@ -97,9 +97,9 @@ pub fn octave_segment32(k0: i32, m: u32, x: f32) -> (usize, f32) {
 /// The scalar fast paths are called in loops of independent calls (a renderer's, the
 /// benchmark's), which overlap; what bounds them is the operations in flight more than one
 /// call's chain. For the short rows (the Λ tables: 4 to 6 coefficients) Horner's rule, the
-/// fewest operations, measured faster than Estrin's scheme: Double GGX Λ 6.4 → 6.0 ns (f64)
-/// and 5.4 → 4.8 (f32), Exponential 6.6 → 6.2 and 6.7 → 6.1, GTR 5.1 → 4.9 and 5.0 → 4.7
-/// (BENCHMARKS.md). For the long ones (7 to 11: erfcx, erfinv, Double GGX D, the sine and
+/// fewest operations, measured faster than Estrin's scheme: Double GGX Λ 6.4 → 5.9 ns (f64)
+/// and 5.4 → 4.8 (f32), Exponential 6.6 → 6.2 and 6.7 → 6.1, GTR f32 5.0 → 4.7
+/// (BENCHMARKS.md; GTR's f64 rows were no faster and call [`estrin`]). For the long ones (7 to 11: erfcx, erfinv, Double GGX D, the sine and
 /// cosine of the samplers) the chain of Horner's rule cost more (GGX D·cos 12.6 → 15.1 ns with
 /// Horner's rule throughout), so they keep Estrin's. The slice kernels call [`estrin`]
 /// directly: vector code is bound by its gathers' latency there (GTR's kernel 2.3 → 3.8 ns
