@@ -777,28 +777,32 @@ fn batches(i: &Inputs) {
         .build()
         .expect("a second rayon pool");
     println!();
-    println!("slices of 10⁶ (ns per element, median of {ROUNDS} rounds, each running the four in turn): scalar loop | slice fn (× loop) | rayon on {threads} threads (× slice fn; rounds below 1.5×) | the same, workers pinned one per CPU");
-    // The four forms of one row run in turn, round after round (`timed_rounds`). Per form:
+    println!("slices of 10⁶ (ns per element, median of {ROUNDS} rounds, each running the five in turn): indexed loop | iterator loop | slice fn (× indexed, × iterator) | rayon on {threads} threads (× slice fn; rounds below 1.5×) | the same, workers pinned one per CPU");
+    // The five forms of one row run in turn, round after round (`timed_rounds`). Per form:
     // the median ns per element; for the rayon forms also how many rounds ran below 1.5× the
     // same round's slice fn.
-    let rounds = |fs: [Pass; 4]| -> ([f64; 4], [usize; 2]) {
+    let rounds = |fs: [Pass; 5]| -> ([f64; 5], [usize; 2]) {
         let runs = timed_rounds(ROUNDS, LEN, LEN, fs);
-        let slow = [2, 3].map(|j| {
+        let slow = [3, 4].map(|j| {
             (0..ROUNDS)
-                .filter(|&k| runs[1][k] / runs[j][k] < 1.5)
+                .filter(|&k| runs[2][k] / runs[j][k] < 1.5)
                 .count()
         });
         (runs.map(median), slow)
     };
-    let line =
-        |name: &str,
-         ([t_loop, t_slice, t_par, t_pin], [slow, slow_pin]): ([f64; 4], [usize; 2])| {
-            println!(
-            "{:34} {:7.2} | {:7.2} ({:5.2}×) | {:7.2} ({:5.2}×; {:2} of {ROUNDS}) | {:7.2} ({:5.2}×; {:2} of {ROUNDS})",
+    let line = |name: &str,
+                ([t_idx, t_iter, t_slice, t_par, t_pin], [slow, slow_pin]): (
+        [f64; 5],
+        [usize; 2],
+    )| {
+        println!(
+            "{:34} {:7.2} | {:7.2} | {:7.2} ({:5.2}×, {:5.2}×) | {:7.2} ({:5.2}×; {:2} of {ROUNDS}) | {:7.2} ({:5.2}×; {:2} of {ROUNDS})",
             name,
-            t_loop,
+            t_idx,
+            t_iter,
             t_slice,
-            t_loop / t_slice,
+            t_idx / t_slice,
+            t_iter / t_slice,
             t_par,
             t_slice / t_par,
             slow,
@@ -806,15 +810,23 @@ fn batches(i: &Inputs) {
             t_slice / t_pin,
             slow_pin
         );
-        };
-    // The loop calls the scalar function directly (inlined, as in a user's loop), not
-    // through a pointer.
+    };
+    // The loops call the scalar function directly (inlined, as in a user's loop), not
+    // through a pointer, in the two ways a user writes them: indexing the slices (a bounds
+    // check per access, which keeps LLVM from vectorising the loop) and zipping their
+    // iterators (no checks: LLVM vectorises the closed forms' loops, GGX D, Λ and G1, for
+    // SSE2 by itself).
     macro_rules! case {
         ($name:expr, $scalar:path, $slice:path) => {{
             let times = rounds([
                 &mut |o| {
                     for k in 0..LEN {
                         o[k] = $scalar(u[k], a[k]);
+                    }
+                },
+                &mut |o| {
+                    for (o, (&u, &a)) in o.iter_mut().zip(u.iter().zip(&a)) {
+                        *o = $scalar(u, a);
                     }
                 },
                 &mut |o| $slice(&u, &a, o),
@@ -837,6 +849,11 @@ fn batches(i: &Inputs) {
                 o[k] = g.lambda(u[k]);
             }
         },
+        &mut |o| {
+            for (o, &u) in o.iter_mut().zip(&u) {
+                *o = g.lambda(u);
+            }
+        },
         &mut |o| batch::gtr_lambda(&g, &u, o),
         &mut |o| batch::par::gtr_lambda(&g, &u, o),
         &mut |o| pinned.install(|| batch::par::gtr_lambda(&g, &u, o)),
@@ -848,46 +865,53 @@ fn batches(i: &Inputs) {
     // not the bound (GGX D's is, at 10⁶; BENCHMARKS.md).
     const SMALL: usize = 1 << 15;
     println!();
-    println!("cache-resident slices ({SMALL} elements, 32 times per pass; ns per element, median of {ROUNDS} rounds): scalar loop | slice fn (× loop)");
-    type Small<'a> = (
-        &'a str,
-        &'a dyn Fn(&[f64], &[f64], &mut [f64]),
-        fn(f64, f64) -> f64,
-    );
-    let small: [Small; 3] = [
-        ("GGX D", &batch::ggx_d, fg::d),
-        ("GGX Λ", &batch::ggx_lambda, fg::lambda),
-        ("GGX G1", &batch::ggx_g1, fg::g1),
-    ];
-    for (name, slice, scalar) in small {
-        let (us, as_) = (&u[..SMALL], &a[..SMALL]);
-        let runs = timed_rounds(
-            ROUNDS,
-            SMALL,
-            32 * SMALL,
-            [
-                &mut |o| {
-                    for _ in 0..32 {
-                        for k in 0..SMALL {
-                            o[k] = scalar(us[k], as_[k]);
+    println!("cache-resident slices ({SMALL} elements, 32 times per pass; ns per element, median of {ROUNDS} rounds): indexed loop | iterator loop | slice fn (× indexed, × iterator)");
+    let (us, as_) = (&u[..SMALL], &a[..SMALL]);
+    // As in `case!`, the loops call the scalar function directly (inlined), not through a
+    // pointer, indexed and zipped.
+    macro_rules! cached {
+        ($name:expr, $scalar:path, $slice:path) => {{
+            let runs = timed_rounds(
+                ROUNDS,
+                SMALL,
+                32 * SMALL,
+                [
+                    &mut |o| {
+                        for _ in 0..32 {
+                            for k in 0..SMALL {
+                                o[k] = $scalar(us[k], as_[k]);
+                            }
+                            black_box(&mut *o);
                         }
-                        black_box(&mut *o);
-                    }
-                },
-                &mut |o| {
-                    for _ in 0..32 {
-                        slice(us, as_, o);
-                        black_box(&mut *o);
-                    }
-                },
-            ],
-        );
-        let [t_loop, t_slice] = runs.map(median);
-        println!(
-            "{name:34} {t_loop:7.2} | {t_slice:7.2} ({:5.2}×)",
-            t_loop / t_slice
-        );
+                    },
+                    &mut |o| {
+                        for _ in 0..32 {
+                            for (o, (&u, &a)) in o.iter_mut().zip(us.iter().zip(as_)) {
+                                *o = $scalar(u, a);
+                            }
+                            black_box(&mut *o);
+                        }
+                    },
+                    &mut |o| {
+                        for _ in 0..32 {
+                            $slice(us, as_, o);
+                            black_box(&mut *o);
+                        }
+                    },
+                ],
+            );
+            let [t_idx, t_iter, t_slice] = runs.map(median);
+            println!(
+                "{:34} {t_idx:7.2} | {t_iter:7.2} | {t_slice:7.2} ({:5.2}×, {:5.2}×)",
+                $name,
+                t_idx / t_slice,
+                t_iter / t_slice
+            );
+        }};
     }
+    cached!("GGX D", fg::d, batch::ggx_d);
+    cached!("GGX Λ", fg::lambda, batch::ggx_lambda);
+    cached!("GGX G1", fg::g1, batch::ggx_g1);
 
     // The same slice functions capped at each instruction set this CPU has.
     let levels: Vec<batch::Simd> = [batch::Simd::Generic, batch::Simd::Avx2, batch::Simd::Avx512]

@@ -295,8 +295,9 @@ fn gtr_chunks<const DIRECT: bool>(g: &super::gtr::Gtr, u: &[f64], out: &mut [f64
 /// `install`s). Where the kernel packs runnable threads onto fewer vCPUs (the benchmark
 /// machine's does: `sched_vcpu_pack` on its command line), rayon's workers can share one
 /// vCPU for whole passes; a pool whose workers are pinned one per CPU (a `start_handler` that
-/// sets the thread's affinity) scales there as on a dedicated machine (BENCHMARKS.md: 1.9–2.0×
-/// on 2 cores pinned, about 1.0× in most rounds unpinned).
+/// sets the thread's affinity) scales there as on a dedicated machine (BENCHMARKS.md, on 2
+/// cores: 1.85–1.95× pinned, with no round of 21 below 1.5×; unpinned, 3 to 18 rounds of 21
+/// below 1.5× per row).
 #[cfg(feature = "rayon")]
 pub mod par {
     use rayon::prelude::*;
