@@ -98,11 +98,16 @@ impl Ndf for Exponential {
             return p;
         }
         // (2/(π α)) x K₁(x), x = 2|p|/α, with x K₁(x) = x K₁e(x) e^{−x} → 1 as x → 0.
+        // Past the underflow of e^{−x} the value is 0; tested on |p| first, since the
+        // double-double quotient of a |p| near f64::MAX is NaN (its splitting overflows).
+        if p.abs() > 0.5 * self.alpha * EXP_UNDERFLOW {
+            return 0.0;
+        }
         let x = Dd::new(p.abs()).div_dd(Dd::new(0.5 * self.alpha));
-        let xk1 = if x.hi == 0.0 {
+        // x K₁(x) = 1 + (x²/2)(ln(x/2) + γ_E − ½) + O(x⁴ ln x): below x = 1e-20 the correction
+        // is under 1e-38, and K₁e(x) ~ 1/x would overflow at subnormal x.
+        let xk1 = if x.hi < 1e-20 {
             1.0
-        } else if x.hi > EXP_UNDERFLOW {
-            0.0
         } else {
             x.hi * k1e(x.hi) * x.exp_neg()
         };

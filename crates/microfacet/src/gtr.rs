@@ -77,6 +77,9 @@ pub(crate) struct Burley {
     /// δ = α² − 1 = e^L − 1, and ln(1 + δ)/δ (1 at δ = 0).
     pub delta: f64,
     pub lr_delta: f64,
+    /// ln(e^{|kL|} − 1) = |kL| + ln(1 − e^{−|kL|}): the logarithm of whichever of
+    /// e^{±kL} − 1 overflows past |kL| ≈ 709 (γ ≥ 52 at α = 1e-3, γ ≥ 27 at α = 1e-6).
+    pub ln_em1_abs: f64,
 }
 
 impl Burley {
@@ -98,17 +101,25 @@ impl Burley {
             let (ell, rest) = (ell_over_l * l, rest_over_l * l);
             ell.exp() * (rest_over_l / ell_over_l) * expm1_over_x(rest) / expm1_over_x(ell)
         } else {
-            // Both right-hand sides are sums of positive terms; take ln1p where they are
-            // near 1 (|·| < ½: there ln1p keeps the small part's relative accuracy).
-            let ln_pos_sum = |minus_one: f64, a: f64, b: f64| {
-                if minus_one.abs() < 0.5 {
-                    minus_one.ln_1p()
-                } else {
+            // Both right-hand sides are 1 + f (e^{±kL} − 1) with f = 1 − ξ or ξ, sums of
+            // positive terms; take ln1p where they are near 1 (|·| < ½: there ln1p keeps the
+            // small part's relative accuracy). Where e^{±kL} overflows (|kL| > 709) the sum
+            // is formed from its logarithm, ln f + ln(e^{|kL|} − 1) (one of the two sides
+            // only: the other's e^{∓kL} is below 1).
+            let ln_pos_sum = |f: f64, minus_one: f64, a: f64, b: f64| {
+                let y = f * minus_one;
+                if y.abs() < 0.5 {
+                    y.ln_1p()
+                } else if (a + b).is_finite() {
                     (a + b).ln()
+                } else {
+                    // ln(1 + y) = ln y + ln(1 + 1/y), y = e^t > e^{−1}.
+                    let t = f.ln() + self.ln_em1_abs;
+                    t + (-t).exp().ln_1p()
                 }
             };
-            let ell = ln_pos_sum((1.0 - xi) * self.em1, (1.0 - xi) * self.e, xi) / k;
-            let rest = -ln_pos_sum(xi * self.em1_neg, 1.0 - xi, xi * self.e_neg) / k;
+            let ell = ln_pos_sum(1.0 - xi, self.em1, (1.0 - xi) * self.e, xi) / k;
+            let rest = -ln_pos_sum(xi, self.em1_neg, 1.0 - xi, xi * self.e_neg) / k;
             ell.exp() * rest.exp_m1() / ell.exp_m1()
         }
     }
@@ -130,6 +141,7 @@ impl Burley {
             ex_neg: expm1_over_x(-kl),
             delta,
             lr_delta: ln1p_over_x(delta),
+            ln_em1_abs: kl.abs() + (-(-kl.abs()).exp()).ln_1p(),
         }
     }
 }

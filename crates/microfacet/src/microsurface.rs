@@ -54,7 +54,7 @@ pub trait Microsurface {
     /// The visible-normal density G1(w) max(0, w·wm) D(wm)/w.z = max(0, w·wm) D(wm)/σ(w),
     /// for w.z ≥ 0; a down-welling w is mirrored to −w (see the module docs).
     fn d_visible(&self, w: Vec3, wm: Vec3) -> f64 {
-        let w = upper(w);
+        let (w, wm) = (upper(w), wm.to_unit());
         let c = w.dot(wm);
         if c <= 0.0 || wm.z <= 0.0 {
             return 0.0;
@@ -64,6 +64,7 @@ pub trait Microsurface {
 
     /// Density of [`Microsurface::sample_dcos`] w.r.t. solid angle: D(wm) cos θm.
     fn pdf_dcos(&self, wm: Vec3) -> f64 {
+        let wm = wm.to_unit();
         if wm.z <= 0.0 {
             return 0.0;
         }
@@ -88,13 +89,22 @@ pub trait Microsurface {
     fn invert_visible(&self, w: Vec3, wm: Vec3) -> [f64; 2];
 }
 
-/// w mirrored into the upper hemisphere.
+/// The direction of w (any finite nonzero length; NaN for a zero or non-finite w), mirrored
+/// into the upper hemisphere.
 fn upper(w: Vec3) -> Vec3 {
+    let w = w.to_unit();
     if w.z < 0.0 {
         -w
     } else {
         w
     }
+}
+
+/// The direction of a normal given to an inverse, if it is one a sampler can return: finite,
+/// nonzero, in the closed upper hemisphere (None otherwise: the inverses answer NaN).
+fn above(wm: Vec3) -> Option<Vec3> {
+    let wm = wm.to_unit();
+    (wm.z >= 0.0).then_some(wm)
 }
 
 /// A shape-invariant NDF with roughness (αx, αy), isotropic when αx = αy.
@@ -215,6 +225,7 @@ impl UnitNdf {
 
 impl Microsurface for Stretched {
     fn d(&self, wm: Vec3) -> f64 {
+        let wm = wm.to_unit();
         if wm.z.is_nan() {
             return f64::NAN;
         }
@@ -255,6 +266,9 @@ impl Microsurface for Stretched {
     }
 
     fn invert_dcos(&self, wm: Vec3) -> [f64; 2] {
+        let Some(wm) = above(wm) else {
+            return [f64::NAN; 2];
+        };
         let (x, y) = self.unit_slopes(wm);
         let mut phi = y.atan2(x);
         if phi < 0.0 {
@@ -275,6 +289,9 @@ impl Microsurface for Stretched {
     }
 
     fn invert_visible(&self, w: Vec3, wm: Vec3) -> [f64; 2] {
+        let Some(wm) = above(wm) else {
+            return [f64::NAN; 2];
+        };
         let (a, c, s) = self.stretched_frame(w);
         let (gx, gy) = self.unit_slopes(wm);
         let (x, y) = (c * gx + s * gy, -s * gx + c * gy);
@@ -292,9 +309,18 @@ impl Microsurface for Stretched {
 fn ggx_spherical_cap(a: f64, u: [f64; 2]) -> (f64, f64) {
     let (wx, wz) = dir_from_cot(a);
     let phi = 2.0 * PI * u[0];
-    let z = (1.0 - u[1]) * (1.0 + wz) - wz;
+    // z + w.z = (1 − u₁)(1 + w.z), formed without the cancellation (at u₁ → 1 the sum
+    // would round to either sign).
+    let above = (1.0 - u[1]) * (1.0 + wz);
+    let z = above - wz;
     let sin = (1.0 - z * z).max(0.0).sqrt();
-    let (hx, hy, hz) = (sin * phi.cos() + wx, sin * phi.sin(), z + wz);
+    let (mut hx, mut hy, mut hz) = (sin * phi.cos() + wx, sin * phi.sin(), above);
+    // h·w = |h|²/2 ≥ 0 exactly; where the cap point is nearly −w (u₁ → 1) the rounding of h
+    // can tip it below 0 (a normal facing away from w): remove h's component against w.
+    let d = hx * wx + hz * wz;
+    if d < 0.0 {
+        (hx, hy, hz) = (hx - d * wx, hy, hz - d * wz);
+    }
     // Slopes of h ∝ (x̃, ỹ, 1).
     (hx / hz, hy / hz)
 }
@@ -341,15 +367,15 @@ impl<N: Ndf + RadialSlopes> Isotropic<N> {
 
 impl<N: Ndf + RadialSlopes> Microsurface for Isotropic<N> {
     fn d(&self, wm: Vec3) -> f64 {
-        self.0.d(wm.z)
+        self.0.d(wm.to_unit().z)
     }
 
     fn lambda(&self, w: Vec3) -> f64 {
-        self.0.lambda(w.z.abs())
+        self.0.lambda(upper(w).z)
     }
 
     fn sigma(&self, w: Vec3) -> f64 {
-        self.0.sigma(w.z.abs())
+        self.0.sigma(upper(w).z)
     }
 
     fn sample_dcos(&self, u: [f64; 2]) -> Vec3 {
@@ -357,7 +383,10 @@ impl<N: Ndf + RadialSlopes> Microsurface for Isotropic<N> {
     }
 
     fn invert_dcos(&self, wm: Vec3) -> [f64; 2] {
-        crate::sample::invert_dcos(&self.0, wm)
+        match above(wm) {
+            Some(wm) => crate::sample::invert_dcos(&self.0, wm),
+            None => [f64::NAN; 2],
+        }
     }
 
     fn sample_visible(&self, w: Vec3, u: [f64; 2]) -> Vec3 {
@@ -367,6 +396,9 @@ impl<N: Ndf + RadialSlopes> Microsurface for Isotropic<N> {
     }
 
     fn invert_visible(&self, w: Vec3, wm: Vec3) -> [f64; 2] {
+        let Some(wm) = above(wm) else {
+            return [f64::NAN; 2];
+        };
         let (a, c, s) = Self::frame(w);
         let r = wm.x.hypot(wm.y) / wm.z;
         let mut psi = wm.y.atan2(wm.x) - s.atan2(c);
@@ -421,14 +453,28 @@ impl GgxBounded {
     pub fn sample(&self, w: Vec3, u: [f64; 2]) -> Vec3 {
         let (ws, b) = self.cap(w);
         let phi = 2.0 * PI * u[0];
-        let z = (1.0 - u[1]) * (1.0 + b) - b;
+        // z + w'.z = (1 − u₁)(1 + b) + (w'.z − b), a sum of non-negative terms (b ≤ w'.z),
+        // formed without the cancellation of z + w'.z at u₁ → 1.
+        let above = (1.0 - u[1]) * (1.0 + b);
+        let z = above - b;
         let sin = (1.0 - z * z).max(0.0).sqrt();
-        let m = Vec3::new(sin * phi.cos() + ws.x, sin * phi.sin() + ws.y, z + ws.z);
+        let mut m = Vec3::new(
+            sin * phi.cos() + ws.x,
+            sin * phi.sin() + ws.y,
+            above + (ws.z - b),
+        );
+        // m·w' ≥ 0 exactly (as in the full cap, `ggx_spherical_cap`); rounding near the cap's
+        // antipode of w' can tip it below 0: remove m's component against w'.
+        let d = m.dot(ws);
+        if d < 0.0 {
+            m = m - ws * d;
+        }
         Vec3::new(self.ggx.alpha_x * m.x, self.ggx.alpha_y * m.y, m.z.max(0.0)).normalize()
     }
 
     /// The cap point c that `sample` used for `wm` (the reflection of w' about m'), and w'.
     fn cap_point(&self, w: Vec3, wm: Vec3) -> (Vec3, Vec3, f64) {
+        let wm = wm.to_unit();
         let (ws, b) = self.cap(w);
         let m = Vec3::new(wm.x / self.ggx.alpha_x, wm.y / self.ggx.alpha_y, wm.z).normalize();
         let d = m.dot(ws);

@@ -303,7 +303,11 @@ pub fn invert_dcos<N: RadialSlopes + ?Sized>(ndf: &N, wm: Vec3) -> [f64; 2] {
     if phi < 0.0 {
         phi += 2.0 * PI;
     }
-    [ndf.slope_cdf(r), (phi / (2.0 * PI)).min(1.0)]
+    // (The clamp: a CDF may round a few ulp past 1.)
+    [
+        ndf.slope_cdf(r).clamp(0.0, 1.0),
+        (phi / (2.0 * PI)).min(1.0),
+    ]
 }
 
 /// The solid-angle density of [`sample_dcos`]: D(m) cos θm (0 below the horizon).

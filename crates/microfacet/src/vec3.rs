@@ -44,6 +44,19 @@ impl Vec3 {
         }
     }
 
+    /// The unit vector along `self` for any finite nonzero vector (lengths from subnormal to
+    /// f64::MAX: the length is formed without over- or underflow); NaN components for a zero
+    /// or non-finite vector, which has no direction.
+    #[inline]
+    pub fn to_unit(self) -> Vec3 {
+        let l = self.length();
+        if l > 0.0 && l.is_finite() {
+            Vec3::new(self.x / l, self.y / l, self.z / l)
+        } else {
+            Vec3::new(f64::NAN, f64::NAN, f64::NAN)
+        }
+    }
+
     /// The unit normal with slopes (p, q): (−p, −q, 1)/√(1 + p² + q²), computed without
     /// overflow for huge slopes.
     #[inline]

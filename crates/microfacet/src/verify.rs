@@ -18,12 +18,14 @@ pub const TOL: f64 = 1e-10;
 
 /// Tolerance of the checks that integrate over u = cos θ (∫ D cos, the delta integral).
 ///
-/// Near the normal D varies on the scale α² in u, so rounding a quadrature node u = 1 − ε to
-/// f64 (an error of up to ulp(1)/2) changes D by up to ~ε_mach/α² relative: below α ≈ 1.5e-3
-/// such a check cannot be more accurate than that, whatever the library does. The slope-space
-/// checks have no such floor.
-pub fn u_space_tol(alpha: f64) -> f64 {
-    TOL.max(f64::EPSILON / (alpha * alpha))
+/// Near the normal D varies on the scale α² in u (GTR: α²/γ, since D ∝ (α² + 2(1 − u))^{−γ}
+/// there), so rounding a quadrature node u = 1 − ε to f64 (an error of up to ulp(1)/2)
+/// changes D by up to ~ε_mach/α² relative (GTR: γ ε_mach/α² for γ > 1): below α ≈ 1.5e-3
+/// such a check cannot be more accurate than that, whatever the library does. The
+/// slope-space checks (∫∫ P22 = 1 among them) have no such floor.
+pub fn u_space_tol(alpha: f64, gamma: Option<f64>) -> f64 {
+    let width = gamma.unwrap_or(1.0).max(1.0);
+    TOL.max(width * f64::EPSILON / (alpha * alpha))
 }
 
 /// Direction cosines at which pointwise identities are checked.
@@ -153,7 +155,7 @@ pub fn ndf_checks(ndf: &AnyNdf) -> Vec<Check> {
             tol,
         })
     };
-    let u_tol = u_space_tol(alpha);
+    let u_tol = u_space_tol(alpha, ndf.gamma());
     push_tol(
         "∫ D(m) cos θm dm = 1",
         (normalisation_d(ndf) - 1.0).abs(),

@@ -320,6 +320,11 @@ pub mod radial {
 
     /// ψ-CDF given r: ∫_{−ψ₀}^{ψ} (r cos t + a) dt / (2 (r sin ψ₀ + a ψ₀)), ψ₀ = acos(−a/r).
     pub fn psi_cdf(a: f64, r: f64, psi: f64) -> f64 {
+        // NaN in (the inverse of a zero or NaN normal): NaN out (the clamp below needs
+        // ordered bounds).
+        if a.is_nan() || r.is_nan() || psi.is_nan() {
+            return f64::NAN;
+        }
         let (p0, s0) = psi_range(a, r);
         let psi = psi.clamp(-p0, p0);
         let weight = |t: f64| {

@@ -163,7 +163,8 @@ pub fn ggx_d(u: &[f64], alpha: &[f64], out: &mut [f64]) {
             let a2 = a * a;
             let t = (1.0 - u) * (1.0 + u) + u * u * a2;
             let d = a2 / (PI * t * t);
-            (if u <= 0.0 { 0.0 } else { d }, false)
+            // u > 1 (1 + 2ε): the scalar path, which evaluates at 1.
+            (if u <= 0.0 { 0.0 } else { d }, u > 1.0)
         },
         ggx::d,
     );
@@ -177,7 +178,8 @@ pub fn ggx_lambda(u: &[f64], alpha: &[f64], out: &mut [f64]) {
         u,
         alpha,
         out,
-        |u, a| (ggx::lambda(u, a), false),
+        // Lanes with u below ggx::lambda_tiny_below or above 1 (and NaN): the scalar path.
+        |u, a| (ggx::lambda_kernel(u, a), !(u >= ggx::lambda_tiny_below() && u <= 1.0)),
         ggx::lambda,
     );
 }
@@ -186,7 +188,17 @@ pub fn ggx_lambda(u: &[f64], alpha: &[f64], out: &mut [f64]) {
 dispatched! {
 /// GGX G1.
 pub fn ggx_g1(u: &[f64], alpha: &[f64], out: &mut [f64]) {
-    chunks(u, alpha, out, |u, a| (ggx::g1(u, a), false), ggx::g1);
+    // Lanes with u below ggx::lambda_tiny_below or above 1 (and NaN): the scalar path.
+    chunks(
+        u,
+        alpha,
+        out,
+        |u, a| {
+            let g = 1.0 / (1.0 + ggx::lambda_kernel(u, a));
+            (g, !(u >= ggx::lambda_tiny_below() && u <= 1.0))
+        },
+        ggx::g1,
+    );
 }
 }
 
@@ -202,8 +214,9 @@ pub fn beckmann_d(u: &[f64], alpha: &[f64], out: &mut [f64]) {
             let u2 = u * u;
             let x = (1.0 - u) * (1.0 + u) / (u2 * a2);
             let d = arith::exp(-x) / (PI * a2 * u2 * u2);
-            // x > 708: e^{−x} leaves arith::exp's range; u ≤ 0 (or NaN): the scalar's answer.
-            (d, !(u > 0.0 && x <= 708.0))
+            // x > 708: e^{−x} leaves arith::exp's range; u ≤ 0, u > 1 (or NaN): the scalar's
+            // answer.
+            (d, !(u > 0.0 && u <= 1.0 && x <= 708.0))
         },
         beckmann::d,
     );

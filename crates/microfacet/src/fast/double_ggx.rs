@@ -15,6 +15,8 @@ use super::tables::{
 };
 use super::{fit, Real};
 
+use std::f64::consts::FRAC_PI_2;
+
 /// Euler's constant γ_E.
 const EULER_GAMMA: f64 = 0.577_215_664_901_532_9;
 
@@ -68,19 +70,38 @@ fn d_ends(u: f64, a: f64) -> f64 {
     crate::DoubleGgx::raw(a).d(u)
 }
 
-/// Λ(u) for 0 ≤ u ≤ 1 (+∞ at u = 0, 0 at u = 1). f64: x and the table in f64. f32: x and
+/// Λ(u) for 0 ≤ u ≤ 1 (−0 and 1 + 2ε included; +∞ at u = 0, 0 at u = 1). f64: x and the table in f64. f32: x and
 /// the table (cubics, `DGGX32` in tables.rs) in f32, since Λ's condition number in x is at most about
 /// 1 (Λ ~ x ln x near the normal, ~ √x at grazing): x's few roundings cost a few ulp of Λ
 /// (measured: 1.6e-7 for the table, 2.9e-7 at random f32 (u, α), tests/fast.rs); outside the table
 /// (x < 2^−30, x ≥ 2^16, u = 0 or 1, NaN) the f64 path answers.
 #[inline]
 pub fn lambda<F: Real>(u: F, alpha: F) -> F {
+    let u = super::cos_in(u);
     if F::IS_F32 {
         return F::from_f32(lambda32(u.to_f32(), alpha.to_f32()));
     }
     let (u, a) = (u.to_f64(), alpha.to_f64());
     let x = 0.5 * a * a * ((1.0 - u) * (1.0 + u)) / (u * u);
+    // x ≥ 2^16 is the grazing expansion; where x itself overflows (u² underflows, or
+    // α² tan²θ passes f64::MAX) Λ is still finite, and √x is formed without x.
+    if !(x < fit::pow2(DGGX_K1)) {
+        return F::from_f64(lambda_grazing(u, a));
+    }
     F::from_f64(lambda_x(x))
+}
+
+/// Λ in the grazing expansion of [`lambda_x`] from √x = α √((1 − u)(1 + u)/2)/u, which does
+/// not overflow while Λ is finite (out of line; NaN stays NaN, u = 0 gives +∞).
+#[cold]
+#[inline(never)]
+fn lambda_grazing(u: f64, a: f64) -> f64 {
+    let sx = a * (0.5 * (1.0 - u) * (1.0 + u)).sqrt() / u;
+    // 1/x, 0 once x overflows (the corrections are then far below an ulp).
+    let r = 1.0 / (sx * sx);
+    // √(2πx)/2 = √(π/2) √x, halved before it can overflow.
+    let s = (FRAC_PI_2.sqrt() * sx) * (1.0 + r * (0.125 - r * (3.0 / 128.0)));
+    s - 0.5
 }
 
 /// Λ in f32 arithmetic (see [`lambda`]).
@@ -123,7 +144,11 @@ pub fn sigma<F: Real>(u: F, alpha: F) -> F {
 #[inline]
 pub fn sample_dcos<F: Real>(ax: F, ay: F, u: [F; 2], uniform: &mut impl FnMut() -> F) -> [F; 3] {
     let mut next = || uniform().to_f64();
-    let t = super::ziggurat::exp1(next(), &mut next);
+    // t = 0 (a uniform of exactly 0: probability 2⁻⁵³, or 2⁻²⁴ from an f32 source) would put
+    // the normal on the horizon; t ≥ 1e-200 keeps it above (roughness at most 1e100 α), and
+    // in f32 t ≥ 1e-60, so that z ≥ √(1e-60 · 2⁻²⁴)/1e6 is not rounded to 0 either.
+    let floor = if F::IS_F32 { 1e-60 } else { 1e-200 };
+    let t = super::ziggurat::exp1(next(), &mut next).max(floor);
     super::ggx_dcos(ax.to_f64(), ay.to_f64(), [u[0].to_f64(), u[1].to_f64()], t)
 }
 
@@ -157,12 +182,14 @@ pub fn sample_visible<F: Real>(
     uniform: &mut impl FnMut() -> F,
 ) -> [F; 3] {
     let (ax, ay) = (ax.to_f64(), ay.to_f64());
-    let sign = if w[2].to_f64() < 0.0 { -1.0 } else { 1.0 };
-    let (wx, wy, wz) = (
-        sign * w[0].to_f64(),
-        sign * w[1].to_f64(),
-        sign * w[2].to_f64(),
-    );
+    let mut w = [w[0].to_f64(), w[1].to_f64(), w[2].to_f64()];
+    let n2 = w[0] * w[0] + w[1] * w[1] + w[2] * w[2];
+    // Far from unit length (squares near the ends of the range, or NaN): rescaled.
+    if !(n2 >= 1e-200 && n2 <= 1e200) {
+        w = super::rescaled(w);
+    }
+    let sign = if w[2] < 0.0 { -1.0 } else { 1.0 };
+    let (wx, wy, wz) = (sign * w[0], sign * w[1], sign * w[2]);
     let (sx, sy) = (ax * wx, ay * wy);
     let (c, h) = (wz, (sx * sx + sy * sy).sqrt());
     if !(c + h).is_finite() {
@@ -173,7 +200,10 @@ pub fn sample_visible<F: Real>(
     // computed once, off the candidates' dependency chain.
     let (e, g) = (2.0 * c, super::SQRT_PI * h);
     let p_exp = e / (e + g);
-    let (inv_p, inv_q) = ((e + g) / e, (e + g) / g);
+    // (Capped at f64::MAX: at a grazing w (c → 0, e.g. 1e-310) or at normal incidence
+    // (h = 0) a share is 0 or subnormal and its reciprocal infinite, and a uniform of 0
+    // would make 0 · ∞ = NaN; the capped product stays below 1 where it is used.)
+    let (inv_p, inv_q) = (((e + g) / e).min(f64::MAX), ((e + g) / g).min(f64::MAX));
     let mut next = || uniform().to_f64();
     let (mut s, mut len) = (1.0, 1.0);
     // At most 64 candidates: each is kept with probability ≥ 4/5, so a 65th would be needed

@@ -121,7 +121,7 @@ pub(super) fn z_of(u: f64, a: f64) -> f64 {
     (u + u) / (a * ((1.0 - u) * (1.0 + u)).sqrt())
 }
 
-/// D(u) = 2 exp(−2 tan θ/α)/(π α² u⁴); 0 for u ≤ 0 and where e^{−2tan θ/α} underflows
+/// D(u) = 2 exp(−2 tan θ/α)/(π α² u⁴); D(1) for u > 1; 0 for u ≤ 0 and where e^{−2tan θ/α} underflows
 /// (relative error ≤ 1e-13 in f64 while the exponent is below 30, growing like ε·exponent).
 #[inline]
 pub fn d<F: Real>(u: F, alpha: F) -> F {
@@ -129,6 +129,7 @@ pub fn d<F: Real>(u: F, alpha: F) -> F {
     if u <= 0.0 {
         return F::ZERO;
     }
+    let u = super::cos_in(u);
     let u2 = u * u;
     let x = 2.0 * ((1.0 - u) * (1.0 + u)).sqrt() / (u * a);
     // e^{−x} is 0 past 745 (and u⁴ could underflow too: 0/0).
@@ -138,7 +139,7 @@ pub fn d<F: Real>(u: F, alpha: F) -> F {
     F::from_f64(2.0 * (-x).exp() / (std::f64::consts::PI * a * a * u2 * u2))
 }
 
-/// Λ(u) for 0 ≤ u ≤ 1 (+∞ at u = 0, 0 at u = 1). f32: q in f64 still (Λ's condition number
+/// Λ(u) for 0 ≤ u ≤ 1 (−0 and 1 + 2ε included; +∞ at u = 0, 0 at u = 1). f32: q in f64 still (Λ's condition number
 /// in z is about z, up to 64 in the tables, so q rounded to f32 would cost up to ~2e-6),
 /// then cubics in f32 on 4× finer segments (32 rows per octave of q to q = 64, 128 beyond:
 /// `EXPONENTIAL32_QA`, `_QB` in tables.rs, error 4.2e-7 with s rounded to f32 as
@@ -148,6 +149,7 @@ pub fn d<F: Real>(u: F, alpha: F) -> F {
 /// end.)
 #[inline]
 pub fn lambda<F: Real>(u: F, alpha: F) -> F {
+    let u = super::cos_in(u);
     if F::IS_F32 {
         return F::from_f32(lambda32(u.to_f64(), alpha.to_f64()));
     }
@@ -251,7 +253,10 @@ pub fn sample_visible<F: Real>(
     // g are computed once, off the candidates' chain.
     let (e, g) = (c, h * FRAC_1_PI);
     let total = e + g;
-    let (inv_p, inv_g) = (total / e, 1.0 / g);
+    // (Capped at f64::MAX: at a grazing w (c → 0) or at normal incidence (h = 0) a mass is 0
+    // or subnormal and its reciprocal infinite; the capped products stay in [0, 1) where
+    // they are used, never 0 · ∞.)
+    let (inv_p, inv_g) = ((total / e).min(f64::MAX), (1.0 / g).min(f64::MAX));
     let (mut v0, mut v1) = (u[0].to_f64(), u[1].to_f64());
     let (mut x, mut y) = (0.0, 0.0);
     // At most 64 candidates: each is kept with probability above 1/2, so the cap (which only

@@ -450,12 +450,13 @@ impl Gtr {
         self.exact.d(u)
     }
 
-    /// Λ(u) for 0 ≤ u ≤ 1: the u table below u = ½, the w table at w = 1 − u (exact) from
+    /// Λ(u) for 0 ≤ u ≤ 1 (−0 and 1 + 2ε included): the u table below u = ½, the w table at w = 1 − u (exact) from
     /// there; no square root or division on the way. In f32, where the material has an f32
     /// table ([`Gtr::has_f32_table`]), that table in f32 arithmetic (Λ's condition number in
     /// t is about 1 at both ends); otherwise, and past the tables, the f64 path rounded once.
     #[inline]
     pub fn lambda<F: Real>(&self, u: F) -> F {
+        let u = super::cos_in(u);
         if F::IS_F32 && !self.coef32.is_empty() {
             return F::from_f32(self.lambda32(u.to_f32()));
         }
@@ -548,7 +549,10 @@ impl Gtr {
         // chain, and the part is decided by a multiplication.
         let (e, g) = (c, s * self.sigma0);
         let total = e + g;
-        let (inv_p, inv_g) = (total / e, 1.0 / g);
+        // (Capped at f64::MAX: at a grazing w (c → 0) or at normal incidence (s = 0) a
+        // mass is 0 or subnormal and its reciprocal infinite; the capped products stay in
+        // [0, 1) where they are used, never 0 · ∞.)
+        let (inv_p, inv_g) = ((total / e).min(f64::MAX), (1.0 / g).min(f64::MAX));
         let (mut v0, mut v1) = (u[0].to_f64(), u[1].to_f64());
         let (mut x, mut y, mut radius) = (0.0, 0.0, 0.0);
         // At most 64 candidates: each is kept with probability above 0.49, so the cap (which

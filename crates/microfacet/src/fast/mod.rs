@@ -163,19 +163,47 @@ fn cos_sin_turn(v: f64) -> (f64, f64) {
 /// with φ = 0 at h = 0 (normal incidence).
 #[inline(always)]
 fn slope_frame<F: Real>(w: [F; 3], ax: f64, ay: f64) -> (f64, f64, f64, f64) {
-    let sign = if w[2].to_f64() < 0.0 { -1.0 } else { 1.0 };
-    let (sx, sy, c) = (
-        sign * ax * w[0].to_f64(),
-        sign * ay * w[1].to_f64(),
-        sign * w[2].to_f64(),
-    );
+    let w = [w[0].to_f64(), w[1].to_f64(), w[2].to_f64()];
+    let sign = if w[2] < 0.0 { -1.0 } else { 1.0 };
+    let (sx, sy, c) = (sign * ax * w[0], sign * ay * w[1], sign * w[2]);
     let h = (sx * sx + sy * sy).sqrt();
+    // A direction far from unit length (|w| past 1e±140: squares could over- or underflow)
+    // is rescaled first; false for NaN, which the rescaling passes on.
+    if !(h <= 1e140 && c <= 1e140 && c + h >= 1e-140) {
+        return slope_frame_rescaled(w, ax, ay);
+    }
     let (cp, sp) = if h == 0.0 {
         (1.0, 0.0)
     } else {
         (sx / h, sy / h)
     };
     (c, h, cp, sp)
+}
+
+/// [`slope_frame`] for a direction rescaled to unit largest component (out of line).
+#[cold]
+#[inline(never)]
+fn slope_frame_rescaled(w: [f64; 3], ax: f64, ay: f64) -> (f64, f64, f64, f64) {
+    let w = rescaled(w);
+    let sign = if w[2] < 0.0 { -1.0 } else { 1.0 };
+    let (sx, sy, c) = (sign * ax * w[0], sign * ay * w[1], sign * w[2]);
+    let h = (sx * sx + sy * sy).sqrt();
+    if h == 0.0 || h.is_nan() {
+        return (c, h, 1.0, 0.0);
+    }
+    (c, h, sx / h, sy / h)
+}
+
+/// w divided by its largest component's magnitude (the same direction, length in [1, √3]);
+/// a zero or non-finite w is returned as it is (not a direction: out of contract).
+#[cold]
+#[inline(never)]
+pub(crate) fn rescaled(w: [f64; 3]) -> [f64; 3] {
+    let m = w[0].abs().max(w[1].abs()).max(w[2].abs());
+    if !(m > 0.0 && m.is_finite()) {
+        return w;
+    }
+    [w[0] / m, w[1] / m, w[2] / m]
 }
 
 /// The unit normal of the stretched slopes (x along φ, y across; [`slope_frame`]'s cos φ and
@@ -247,8 +275,32 @@ fn ggx_dcos<F: Real>(ax: f64, ay: f64, u: [f64; 2], t: f64) -> [F; 3] {
 #[inline(always)]
 fn ggx_visible_stretched<F: Real>(w: [F; 3], ax: F, ay: F, sz: F, u: [F; 2]) -> [F; 3] {
     let (x, y, z) = (ax * w[0], ay * w[1], sz * w[2]);
+    let n2 = x * x + y * y + z * z;
+    // Squared lengths past 1e±200 (f32: 1e±24) may have lost digits to under- or overflow
+    // (a direction far from unit length, or an extreme stretch): rescale w first (false for
+    // NaN, which the rescaling passes on).
+    let (lo, hi) = if F::IS_F32 {
+        (1e-24, 1e24)
+    } else {
+        (1e-200, 1e200)
+    };
+    if !(n2 >= F::from_f64(lo) && n2 <= F::from_f64(hi)) {
+        return ggx_visible_rescaled(w, ax, ay, sz, u);
+    }
+    ggx_visible_stretched_len(w, ax, ay, sz, u, n2.sqrt())
+}
+
+/// [`ggx_visible_stretched`] for w rescaled to unit largest component, in f64 (out of line).
+#[cold]
+#[inline(never)]
+fn ggx_visible_rescaled<F: Real>(w: [F; 3], ax: F, ay: F, sz: F, u: [F; 2]) -> [F; 3] {
+    let w = rescaled([w[0].to_f64(), w[1].to_f64(), w[2].to_f64()]);
+    let (ax, ay, sz) = (ax.to_f64(), ay.to_f64(), sz.to_f64());
+    let (x, y, z) = (ax * w[0], ay * w[1], sz * w[2]);
     let len = (x * x + y * y + z * z).sqrt();
-    ggx_visible_stretched_len(w, ax, ay, sz, u, len)
+    let u = [u[0].to_f64(), u[1].to_f64()];
+    let m = ggx_visible_stretched_len(w, ax, ay, sz, u, len);
+    [F::from_f64(m[0]), F::from_f64(m[1]), F::from_f64(m[2])]
 }
 
 /// [`ggx_visible_stretched`] given the length of the stretched direction (αx w.x, αy w.y,
@@ -259,11 +311,37 @@ fn ggx_visible_stretched_len<F: Real>(w: [F; 3], ax: F, ay: F, sz: F, u: [F; 2],
     let (x, y, z) = (ax * w[0] * inv, ay * w[1] * inv, sz * w[2] * inv);
     let (c, s) = cos_sin_turn(u[0].to_f64());
     let (c, s) = (F::from_f64(c), F::from_f64(s));
-    let cz = (F::ONE - u[1]) * (F::ONE + z) - z;
+    // The cap point's height cz ∈ [−z, 1], and cz + z = (1 − u₁)(1 + z) formed without the
+    // cancellation (at u₁ → 1 the sum would round to either sign: a normal below the
+    // horizon, or facing away from w).
+    let above = (F::ONE - u[1]) * (F::ONE + z);
+    let cz = above - z;
     let sin = (F::ONE - cz * cz).max(F::ZERO).sqrt();
-    let (hx, hy, hz) = (ax * (sin * c + x), ay * (sin * s + y), sz * (cz + z));
+    let (mut hx, mut hy, mut hz) = (sin * c + x, sin * s + y, above);
+    // h·w' = |h|²/2 ≥ 0 exactly (h = c + w', both unit), but where the cap point is nearly
+    // −w' (u₁ → 1) h is a difference of near-opposite vectors, and its rounding can tip
+    // h·w' below 0: a normal facing away from w once unstretched. There (|h|² below 1e-8, or
+    // 1e-4 in f32) h loses its component against w' (out of line; the test only reads values
+    // already on the chain).
+    let n2 = hx * hx + hy * hy + hz * hz;
+    if !(n2 >= F::from_f64(if F::IS_F32 { 1e-4 } else { 1e-8 })) {
+        (hx, hy, hz) = visible_half(hx, hy, hz, x, y, z);
+    }
+    let (hx, hy, hz) = (ax * hx, ay * hy, sz * hz);
     let inv = F::ONE / (hx * hx + hy * hy + hz * hz).sqrt();
     [hx * inv, hy * inv, hz * inv]
+}
+
+/// h with its component along −w' removed (h − min(0, h·w') w'), for [`ggx_visible_stretched_len`].
+#[cold]
+#[inline(never)]
+fn visible_half<F: Real>(hx: F, hy: F, hz: F, x: F, y: F, z: F) -> (F, F, F) {
+    let d = hx * x + hy * y + hz * z;
+    if d < F::ZERO {
+        (hx - d * x, hy - d * y, hz - d * z)
+    } else {
+        (hx, hy, hz)
+    }
 }
 
 /// [`unit_normal`] for lengths near the ends of the f64 range, zero and NaN (out of line).
@@ -284,6 +362,18 @@ fn unit_normal_scaled<F: Real>(x: f64, y: f64, z: f64) -> [F; 3] {
         F::from_f64(y * inv),
         F::from_f64(z * inv),
     ]
+}
+
+/// The cosine the fast paths evaluate at: u > 1 (1 + 2ε, the z of a rounded unit vector) is
+/// 1, and −0 is +0 (so that Λ(−0) = +∞ as at +0, and G2(+0, −0) = 0, not NaN); NaN stays
+/// NaN (the comparison is false for it). One comparison and one addition.
+#[inline(always)]
+fn cos_in<F: Real>(u: F) -> F {
+    if u > F::ONE {
+        F::ONE
+    } else {
+        u + F::ZERO
+    }
 }
 
 /// The floating-point operations the fast paths need; implemented for f32 and f64.
@@ -376,40 +466,61 @@ real!(f32, 103.98, true);
 pub mod ggx {
     use super::Real;
 
-    /// D(u) = α²/(π ((1 − u²) + u²α²)²); 0 for u ≤ 0. 1 − u² is (1 − u)(1 + u), exact enough
-    /// that the near-normal peak keeps full relative accuracy in f32.
+    /// D(u) = α²/(π ((1 − u²) + u²α²)²); 0 for u ≤ 0, D(1) for u > 1. 1 − u² is
+    /// (1 − u)(1 + u), exact enough that the near-normal peak keeps full relative accuracy in
+    /// f32.
     #[inline]
     pub fn d<F: Real>(u: F, alpha: F) -> F {
         if u <= F::ZERO {
             return F::ZERO;
         }
+        let u = super::cos_in(u);
         let a2 = alpha * alpha;
         let t = (F::ONE - u) * (F::ONE + u) + u * u * a2;
         a2 / (F::PI * t * t)
     }
 
-    /// Λ(u) = s/(2(1 + √(1+s))), s = α² tan²θ, for 0 < u ≤ 1, written with u² multiplied
-    /// through as α²(1−u²)/(2(u² + u√(u² + α²(1−u²)))): one square root and one division, and
-    /// no cancellation.
+    /// Below this u (1e-290 in f64, 1e-30 in f32) u√(u² + t) of [`lambda`] could be
+    /// subnormal (√t ≥ 1e-6 for α ≥ 1e-6), and lose digits: [`lambda_tiny`] answers there.
+    #[inline(always)]
+    pub(crate) fn lambda_tiny_below<F: Real>() -> F {
+        F::from_f64(if F::IS_F32 { 1e-30 } else { 1e-290 })
+    }
+
+    /// Λ(u) = s/(2(1 + √(1+s))), s = α² tan²θ, for 0 ≤ u ≤ 1 (−0 and 1 + 2ε included; +∞
+    /// at u = 0), written with u² multiplied through as α²(1−u²)/(2(u² + u√(u² + α²(1−u²)))):
+    /// one square root and one division, and no cancellation. Negative u is outside the
+    /// domain (the exact [`crate::Ndf::lambda`] has Heitz's extension).
     #[inline]
     pub fn lambda<F: Real>(u: F, alpha: F) -> F {
+        let u = super::cos_in(u);
+        if u < lambda_tiny_below() {
+            return lambda_tiny(u, alpha);
+        }
+        lambda_kernel(u, alpha)
+    }
+
+    /// [`lambda`]'s formula for lambda_tiny_below ≤ u ≤ 1 (the slice kernels' lanes).
+    #[inline(always)]
+    pub(crate) fn lambda_kernel<F: Real>(u: F, alpha: F) -> F {
         let t = alpha * alpha * ((F::ONE - u) * (F::ONE + u));
         let u2 = u * u;
         t / ((F::ONE + F::ONE) * (u2 + u * (u2 + t).sqrt()))
     }
 
-    /// G1(u) = 2/(1 + √(1 + s)) = 2u/(u + √(u² + α²(1−u²))).
-    #[inline]
-    pub fn g1<F: Real>(u: F, alpha: F) -> F {
+    /// Λ for u below `lambda_tiny_below` (and ±0, NaN): (t/(u + √(u² + t)))/(2u), two
+    /// divisions, so that no intermediate is subnormal (out of line).
+    #[cold]
+    #[inline(never)]
+    fn lambda_tiny<F: Real>(u: F, alpha: F) -> F {
+        let u = u.abs();
         let t = alpha * alpha * ((F::ONE - u) * (F::ONE + u));
-        (u + u) / (u + (u * u + t).sqrt())
+        t / (u + (u * u + t).sqrt()) / (u + u)
     }
 
-    /// Height-correlated G2 = 1/(1 + Λ(u_o) + Λ(u_i)).
-    #[inline]
-    pub fn g2<F: Real>(u_o: F, u_i: F, alpha: F) -> F {
-        F::ONE / (F::ONE + lambda(u_o, alpha) + lambda(u_i, alpha))
-    }
+    // G1 = 1/(1 + Λ) from the same Λ as G2 (not the closed form 2u/(u + √(u² + t)), one
+    // division fewer), so that G2 ≤ min(G1) holds in floating point, not only to an ulp.
+    g1_g2_from_lambda!();
 
     /// σ(u) for u ∈ [−1, 1] (σ(0) = α/2), evaluated in f64.
     #[inline]
@@ -435,10 +546,16 @@ pub mod ggx {
         )
     }
 
-    /// A visible normal for the unit direction w (w.z > 0) by spherical caps (Dupuy &
-    /// Benyoub 2023), anisotropic roughness (αx, αy); `u` uniform in [0, 1)².
+    /// A visible normal for the direction w (any length; mirrored if w.z < 0, as the exact
+    /// API does) by spherical caps (Dupuy & Benyoub 2023), anisotropic roughness (αx, αy);
+    /// `u` uniform in [0, 1)².
     #[inline]
     pub fn sample_visible<F: Real>(w: [F; 3], ax: F, ay: F, u: [F; 2]) -> [F; 3] {
+        let w = if w[2] < F::ZERO {
+            [-w[0], -w[1], -w[2]]
+        } else {
+            w
+        };
         super::ggx_visible_stretched(w, ax, ay, F::ONE, u)
     }
 }

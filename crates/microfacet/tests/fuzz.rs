@@ -1,0 +1,916 @@
+//! Seeded fuzz suite for the contract of the crate docs ("The contract"): hostile inputs
+//! through the whole public API, exact and fast, f64 and f32, every NDF and every sampler.
+//!
+//! Inputs are drawn from a fixed seed (xorshift64*), a third or so of them from lists of edge
+//! values: u = ±0, 1 − ε, 1 + 2ε, subnormals, f32's smallest normal and subnormals; α at
+//! 1e-6 and 1e6; γ from 1e-300 to 100; directions on and below the horizon, z = 1e-300,
+//! lengths from 1e-300 to 1e300; uniforms exactly 0 and 1 − ε. Each check states what the
+//! contract demands: no panic, finite output for finite in-contract input, the bounds
+//! (D ≥ 0, Λ ≥ 0, G1, G2 ∈ [0, 1], G2 ≤ min G1, σ ≥ 0), samplers returning unit normals in
+//! the closed upper hemisphere visible from w with a finite pdf (> 0 at interior u off the
+//! horizon), and every fast path within its documented relative error wherever the exact
+//! value is a normal float.
+//!
+//! `MICROFACET_FUZZ_SCALE` (default 1, about 5·10⁶ evaluations in about 15 s on two cores
+//! in release) multiplies every count; `MICROFACET_FUZZ_SCALE=20` passes 10⁸ (about four minutes).
+//! `MICROFACET_FUZZ_SEED` changes the seed.
+
+use microfacet::fast::{self, gtr::Gtr as FastGtr};
+use microfacet::{
+    AnyNdf, Beckmann, DoubleGgx, Exponential, Ggx, GgxBounded, Gtr, Isotropic, Microsurface, Ndf,
+    NdfKind, RadialSlopes, Stretched, UnitSlopes, Vec3,
+};
+use std::panic::{catch_unwind, AssertUnwindSafe};
+use std::sync::atomic::{AtomicU64, Ordering};
+
+/// Evaluations made, over every test of this file (reported by each test as it ends).
+static EVALS: AtomicU64 = AtomicU64::new(0);
+
+fn scale() -> u64 {
+    std::env::var("MICROFACET_FUZZ_SCALE")
+        .ok()
+        .and_then(|s| s.parse().ok())
+        .unwrap_or(1)
+}
+
+fn seed(test: u64) -> u64 {
+    let base = std::env::var("MICROFACET_FUZZ_SEED")
+        .ok()
+        .and_then(|s| s.parse().ok())
+        .unwrap_or(0x9E37_79B9_7F4A_7C15u64);
+    base ^ test.wrapping_mul(0xD1B5_4A32_D192_ED03)
+}
+
+/// xorshift64* (Vigna 2016): fast, seeded, no dependency.
+struct Rng(u64);
+
+impl Rng {
+    fn new(test: u64) -> Self {
+        Rng(seed(test) | 1)
+    }
+    fn next(&mut self) -> u64 {
+        self.0 ^= self.0 >> 12;
+        self.0 ^= self.0 << 25;
+        self.0 ^= self.0 >> 27;
+        self.0.wrapping_mul(0x2545_F491_4F6C_DD1D)
+    }
+    /// Uniform in [0, 1) with 53 bits.
+    fn f64(&mut self) -> f64 {
+        (self.next() >> 11) as f64 * (1.0 / (1u64 << 53) as f64)
+    }
+    fn below(&mut self, n: usize) -> usize {
+        (self.next() % n as u64) as usize
+    }
+    fn pick<T: Copy>(&mut self, xs: &[T]) -> T {
+        xs[self.below(xs.len())]
+    }
+    fn chance(&mut self, p: f64) -> bool {
+        self.f64() < p
+    }
+    fn log_uniform(&mut self, lo: f64, hi: f64) -> f64 {
+        (lo.ln() + self.f64() * (hi.ln() - lo.ln())).exp()
+    }
+}
+
+const EPS: f64 = f64::EPSILON;
+/// 1 + 2ε: the z of a rounded unit vector (treated as 1).
+const ONE_UP: f64 = 1.0 + 2.0 * EPS;
+/// The largest f64 below 1.
+const ONE_DOWN: f64 = 1.0 - EPS / 2.0;
+
+fn alpha(r: &mut Rng) -> f64 {
+    if r.chance(0.35) {
+        r.pick(&[
+            1e-6,
+            1e6,
+            1e-3,
+            1e3,
+            0.3,
+            1.0,
+            1.0 - EPS,
+            1.0 + 2.0 * EPS,
+            0.098_400_929_196_729_87,
+            227.7,
+            5.55e5,
+        ])
+    } else {
+        r.log_uniform(1e-6, 1e6)
+    }
+}
+
+fn gamma(r: &mut Rng) -> f64 {
+    if r.chance(0.4) {
+        r.pick(&[
+            1e-300,
+            1e-6,
+            0.01,
+            0.5,
+            1.0,
+            1.0 - 1e-12,
+            1.0 + 1e-12,
+            1.5,
+            2.0,
+            2.0 + 1e-9,
+            27.0,
+            52.0,
+            60.0,
+            99.9,
+            100.0,
+        ])
+    } else if r.chance(0.5) {
+        r.log_uniform(1e-3, 100.0)
+    } else {
+        100.0 * r.f64().max(1e-9)
+    }
+}
+
+/// A cosine in the contract: [−1, 1] and 1 + 2ε, with the edges.
+fn cosine(r: &mut Rng) -> f64 {
+    let u = match r.below(5) {
+        0 => r.pick(&[
+            0.0,
+            -0.0,
+            1.0,
+            -1.0,
+            ONE_UP,
+            -ONE_UP,
+            ONE_DOWN,
+            5e-324,
+            1e-310,
+            f64::MIN_POSITIVE,
+            1e-300,
+            1e-200,
+            1e-150,
+            1e-100,
+            1e-20,
+            f32::MIN_POSITIVE as f64,
+            1e-40,
+            1e-45,
+            0.920_728_652_799_906,
+            0.5,
+        ]),
+        1 => r.log_uniform(5e-324, 1.0),
+        2 => 1.0 - r.log_uniform(1e-17, 1.0),
+        _ => r.f64(),
+    };
+    if r.chance(0.3) {
+        -u
+    } else {
+        u
+    }
+}
+
+/// A uniform in [0, 1), with 0, 1 − ε and subnormals.
+fn uniform(r: &mut Rng) -> f64 {
+    if r.chance(0.3) {
+        r.pick(&[
+            0.0,
+            ONE_DOWN,
+            5e-324,
+            1e-310,
+            1e-300,
+            0.5,
+            0.25,
+            1.0 - 1e-9,
+            1e-9,
+        ])
+    } else {
+        r.f64()
+    }
+}
+
+/// f32 uniform in [0, 1), with 0 and 1 − 2⁻²⁴.
+fn uniform32(r: &mut Rng) -> f32 {
+    if r.chance(0.3) {
+        r.pick(&[0.0, 1.0 - f32::EPSILON / 2.0, 1e-45, 1e-40, 0.5, 0.25])
+    } else {
+        ((r.next() >> 40) as f32) * (1.0 / (1u32 << 24) as f32)
+    }
+}
+
+/// Any finite nonzero direction: on, above and below the horizon, grazing (z = ±1e-300),
+/// normal, and of lengths from 1e-300 to 1e300 (f32: where the f32 components stay normal).
+fn direction(r: &mut Rng, f32_range: bool) -> Vec3 {
+    let phi = std::f64::consts::TAU * r.f64();
+    let (s, c) = phi.sin_cos();
+    let z = match r.below(6) {
+        0 => 0.0,
+        1 => r.pick(&[1e-300, -1e-300, 1e-20, 1.0, -1.0, 1e-8]),
+        2 => -cosine(r).abs(),
+        _ => cosine(r).clamp(-1.0, 1.0),
+    };
+    let h = ((1.0 - z) * (1.0 + z)).max(0.0).sqrt();
+    let mut w = Vec3::new(h * c, h * s, z);
+    if w.z.abs() == 1.0 && r.chance(0.5) {
+        w = Vec3::new(0.0, 0.0, w.z);
+    }
+    let len = if f32_range {
+        r.pick(&[1.0, 1.0, 1.0, 1e-18, 1e18, 1.8e19, 1e30])
+    } else {
+        r.pick(&[1.0, 1.0, 1.0, 1e-300, 1e300, 1e-150, 1e150, 1.0 + 1e-15])
+    };
+    let w = Vec3::new(w.x * len, w.y * len, w.z * len);
+    if r.chance(0.05) {
+        // The audit's reproducers: [6e299, 0, 8e299] (f64), [1.8e19, 0, 2.4e19] (f32).
+        let l = if f32_range { 3e19 } else { 1e300 };
+        return Vec3::new(0.6 * l, 0.0, 0.8 * l);
+    }
+    w
+}
+
+/// A hostile normal for inverses and pdfs (zero, NaN, non-unit, below the horizon).
+fn any_normal(r: &mut Rng) -> Vec3 {
+    match r.below(6) {
+        0 => r.pick(&[
+            Vec3::new(0.0, 0.0, 0.0),
+            Vec3::new(f64::NAN, 0.0, 1.0),
+            Vec3::new(0.0, 0.0, f64::NAN),
+            Vec3::new(1.0, 0.0, 0.0),
+            Vec3::new(0.0, 0.0, -1.0),
+            Vec3::new(1e300, 1e300, 1e300),
+            Vec3::new(f64::INFINITY, 0.0, 1.0),
+        ]),
+        _ => direction(r, false),
+    }
+}
+
+fn evals(n: u64) {
+    EVALS.fetch_add(n, Ordering::Relaxed);
+}
+
+/// Runs `f`, turning a panic into a test failure that names the input.
+fn no_panic<T>(what: &str, input: impl std::fmt::Debug, f: impl FnOnce() -> T) -> T {
+    match catch_unwind(AssertUnwindSafe(f)) {
+        Ok(v) => v,
+        Err(_) => panic!("{what} panicked at {input:?}"),
+    }
+}
+
+/// Collects contract violations; a test fails with the first few of each kind.
+#[derive(Default)]
+struct Failures {
+    lines: Vec<String>,
+    count: usize,
+}
+
+impl Failures {
+    fn check(&mut self, ok: bool, msg: impl FnOnce() -> String) {
+        if !ok {
+            self.count += 1;
+            if self.lines.len() < 40 {
+                self.lines.push(msg());
+            }
+        }
+    }
+    fn finish(self, test: &str) {
+        eprintln!(
+            "{test}: {} evaluations so far in this process",
+            EVALS.load(Ordering::Relaxed)
+        );
+        assert!(
+            self.count == 0,
+            "{test}: {} violations, first ones:\n{}",
+            self.count,
+            self.lines.join("\n")
+        );
+    }
+}
+
+fn ndf(r: &mut Rng) -> AnyNdf {
+    let kind = r.pick(&NdfKind::ALL);
+    AnyNdf::new(kind, alpha(r), Some(gamma(r))).expect("accepted parameters")
+}
+
+/// The scalar quantities of the exact NDFs over the whole domain.
+#[test]
+fn exact_scalar_quantities() {
+    let mut r = Rng::new(1);
+    let mut fails = Failures::default();
+    for _ in 0..200 * scale() {
+        let n = ndf(&mut r);
+        for _ in 0..20 {
+            let (u, v) = (cosine(&mut r), cosine(&mut r));
+            let (d, l, s, g1, g2, g1v) = no_panic("exact quantities", (&n, u, v), || {
+                (
+                    n.d(u),
+                    n.lambda(u),
+                    n.sigma(u),
+                    n.g1(u),
+                    n.g2(u, v),
+                    n.g1(v),
+                )
+            });
+            let p = r.pick(&[0.0, 5e-324, 1e-310, 1e-300, 1.0, 1e300, f64::MAX, -f64::MAX])
+                * if r.chance(0.5) { 1.0 } else { r.f64() };
+            let (p2, p22) = no_panic("exact slopes", (&n, p), || (n.p2(p), n.p22(p, 0.5 * p)));
+            evals(8);
+            let ctx = || format!("{n:?} u={u:e} v={v:e}");
+            fails.check(d.is_finite() && d >= 0.0, || format!("D={d} at {}", ctx()));
+            if u > 0.0 {
+                fails.check(l >= 0.0 && !l.is_nan(), || format!("Λ={l} at {}", ctx()));
+            }
+            // Λ ~ σ(0)/u overflows (the true value) only below u ~ σ(0)/f64::MAX.
+            let overflows = n.sigma(0.0) / u.abs() > 1e307;
+            fails.check(l.is_finite() || overflows, || format!("Λ={l} at {}", ctx()));
+            fails.check(s.is_finite() && s >= 0.0, || format!("σ={s} at {}", ctx()));
+            fails.check((0.0..=1.0).contains(&g1), || {
+                format!("G1={g1} at {}", ctx())
+            });
+            fails.check((0.0..=1.0).contains(&g2) && g2 <= g1.min(g1v), || {
+                format!("G2={g2} G1={g1},{g1v} at {}", ctx())
+            });
+            fails.check(p2.is_finite() && p2 >= 0.0, || {
+                format!("P2({p:e})={p2} at {n:?}")
+            });
+            fails.check(p22.is_finite() && p22 >= 0.0, || {
+                format!("P22({p:e})={p22} at {n:?}")
+            });
+        }
+    }
+    fails.finish("exact_scalar_quantities");
+}
+
+/// Checks a sampled normal m for the direction w (mirrored if below): finite, unit, in the
+/// closed upper hemisphere, w·m ≥ 0 (to `tol`, the rounding of the normal's components).
+fn check_visible(
+    fails: &mut Failures,
+    what: &str,
+    w: Vec3,
+    m: Vec3,
+    tol: f64,
+    ctx: &dyn Fn() -> String,
+) {
+    let finite = m.x.is_finite() && m.y.is_finite() && m.z.is_finite();
+    fails.check(finite, || {
+        format!("{what}: m={m:?} not finite at {}", ctx())
+    });
+    if !finite {
+        return;
+    }
+    let len = (m.x * m.x + m.y * m.y + m.z * m.z).sqrt();
+    fails.check((len - 1.0).abs() <= tol, || {
+        format!("{what}: |m|={len} at {}", ctx())
+    });
+    fails.check(m.z >= 0.0, || format!("{what}: m={m:?} below at {}", ctx()));
+    let s = if w.z < 0.0 { -1.0 } else { 1.0 };
+    let l = w.x.abs().max(w.y.abs()).max(w.z.abs());
+    let wu = Vec3::new(s * w.x / l, s * w.y / l, s * w.z / l);
+    let wu = wu * (1.0 / wu.length());
+    let c = wu.dot(m);
+    fails.check(c >= -tol, || {
+        format!("{what}: w·m={c:e} m={m:?} at {}", ctx())
+    });
+}
+
+fn interior(u: [f64; 2]) -> bool {
+    u.iter().all(|&x| (1e-6..=1.0 - 1e-6).contains(&x))
+}
+
+fn off_horizon(w: Vec3) -> bool {
+    w.z.abs() >= 1e-6 * w.length()
+}
+
+/// One Microsurface: D·cos and visible samplers, pdfs, inverses.
+fn fuzz_microsurface<M: Microsurface + std::fmt::Debug>(
+    fails: &mut Failures,
+    r: &mut Rng,
+    ms: &M,
+    visible: usize,
+) {
+    for _ in 0..visible {
+        let u = [uniform(r), uniform(r)];
+        let w = direction(r, false);
+        let ctx = || format!("{ms:?} w={w:?} u={u:?}");
+        let m = no_panic("sample_visible", (ms, w, u), || ms.sample_visible(w, u));
+        check_visible(fails, "sample_visible", w, m, 1e-12, &ctx);
+        let pdf = no_panic("pdf_visible", (ms, w, m), || ms.pdf_visible(w, m));
+        fails.check(pdf.is_finite() && pdf >= 0.0, || {
+            format!("pdf={pdf} m={m:?} at {}", ctx())
+        });
+        if interior(u) && off_horizon(w) {
+            fails.check(pdf > 0.0, || format!("pdf={pdf} m={m:?} at {}", ctx()));
+        }
+        let back = no_panic("invert_visible", (ms, w, m), || ms.invert_visible(w, m));
+        fails.check(
+            back.iter().all(|x| x.is_nan() || (0.0..=1.0).contains(x)),
+            || format!("invert_visible={back:?} at {}", ctx()),
+        );
+        let m = no_panic("sample_dcos", (ms, u), || ms.sample_dcos(u));
+        check_visible(fails, "sample_dcos", Vec3::Z, m, 1e-12, &ctx);
+        let pdf = ms.pdf_dcos(m);
+        fails.check(pdf.is_finite() && pdf >= 0.0, || {
+            format!("pdf_dcos={pdf} m={m:?} at {}", ctx())
+        });
+        if interior(u) {
+            fails.check(pdf > 0.0, || format!("pdf_dcos={pdf} m={m:?} at {}", ctx()));
+        }
+        // Hostile normals: no panic, a value in [0, 1] or NaN.
+        let bad = any_normal(r);
+        let (a, b, p, q) = no_panic("inverses of any normal", (ms, w, bad), || {
+            (
+                ms.invert_visible(w, bad),
+                ms.invert_dcos(bad),
+                ms.pdf_visible(w, bad),
+                ms.pdf_dcos(bad),
+            )
+        });
+        fails.check(
+            a.iter()
+                .chain(b.iter())
+                .all(|x| x.is_nan() || (0.0..=1.0).contains(x)),
+            || format!("inverse of {bad:?}: {a:?} {b:?} at {}", ctx()),
+        );
+        fails.check(!(p < 0.0 || q < 0.0 || p == f64::INFINITY), || {
+            format!("pdf of {bad:?}: {p} {q} at {}", ctx())
+        });
+        let _ = no_panic("direction quantities", (ms, w, bad), || {
+            (
+                ms.d(bad),
+                ms.lambda(w),
+                ms.sigma(w),
+                ms.g1(w, bad),
+                ms.g2(w, w, bad),
+            )
+        });
+        evals(12);
+    }
+}
+
+#[test]
+fn stretched_samplers() {
+    let mut r = Rng::new(2);
+    let mut fails = Failures::default();
+    let kinds = [
+        (UnitSlopes::Ggx, 40),
+        (UnitSlopes::Beckmann, 20),
+        (UnitSlopes::DoubleGgx, 2),
+        (UnitSlopes::Exponential, 2),
+    ];
+    for _ in 0..60 * scale() {
+        for (kind, n) in kinds {
+            let ms = Stretched::new(kind, alpha(&mut r), alpha(&mut r)).unwrap();
+            fuzz_microsurface(&mut fails, &mut r, &ms, n);
+        }
+        let b = GgxBounded::new(alpha(&mut r), alpha(&mut r)).unwrap();
+        for _ in 0..40 {
+            let u = [uniform(&mut r), uniform(&mut r)];
+            let w = direction(&mut r, false);
+            let ctx = || format!("{b:?} w={w:?} u={u:?}");
+            let m = no_panic("GgxBounded::sample", (&b, w, u), || b.sample(w, u));
+            check_visible(&mut fails, "GgxBounded::sample", w, m, 1e-12, &ctx);
+            let pdf = no_panic("GgxBounded::pdf", (&b, w, m), || b.pdf(w, m));
+            fails.check(pdf.is_finite() && pdf >= 0.0, || {
+                format!("pdf={pdf} at {}", ctx())
+            });
+            if interior(u) && off_horizon(w) {
+                fails.check(pdf > 0.0, || format!("pdf={pdf} m={m:?} at {}", ctx()));
+            }
+            let bad = any_normal(&mut r);
+            let (inv, p, pr) = no_panic("GgxBounded inverse", (&b, w, bad), || {
+                (b.invert(w, bad), b.pdf(w, bad), b.pdf_reflection(w, bad))
+            });
+            fails.check(
+                inv.iter().all(|x| x.is_nan() || (0.0..=1.0).contains(x)),
+                || format!("invert({bad:?})={inv:?} at {}", ctx()),
+            );
+            fails.check(!(p < 0.0 || pr < 0.0), || {
+                format!("pdf({bad:?})={p},{pr} at {}", ctx())
+            });
+            evals(6);
+        }
+    }
+    fails.finish("stretched_samplers");
+}
+
+#[test]
+fn isotropic_samplers() {
+    let mut r = Rng::new(3);
+    let mut fails = Failures::default();
+    for _ in 0..6 * scale() {
+        for kind in NdfKind::ALL {
+            let n = AnyNdf::new(kind, alpha(&mut r), Some(gamma(&mut r))).unwrap();
+            let count = match kind {
+                NdfKind::Beckmann | NdfKind::Ggx => 6,
+                _ => 2,
+            };
+            fuzz_microsurface(&mut fails, &mut r, &Isotropic(n), count);
+        }
+    }
+    // The audit's reproducers, every u-corner, every NDF.
+    for n in [
+        AnyNdf::DoubleGgx(DoubleGgx::new(0.3).unwrap()),
+        AnyNdf::Gtr(Gtr::new(0.3, 1.5).unwrap()),
+        AnyNdf::Gtr(Gtr::new(1e-3, 60.0).unwrap()),
+        AnyNdf::Beckmann(Beckmann::new(0.3).unwrap()),
+        AnyNdf::Ggx(Ggx::new(0.3).unwrap()),
+        AnyNdf::Exponential(Exponential::new(0.3).unwrap()),
+    ] {
+        let iso = Isotropic(n);
+        for w in [
+            Vec3::new(1.0, 0.0, 0.0),
+            Vec3::new(1.0, 0.0, 1e-300),
+            Vec3::new(0.6, 0.0, -0.8),
+        ] {
+            for u in [
+                [0.0, 0.0],
+                [ONE_DOWN, 0.5],
+                [0.5, ONE_DOWN],
+                [ONE_DOWN, ONE_DOWN],
+                [0.3, 0.7],
+            ] {
+                let ctx = || format!("{n:?} w={w:?} u={u:?}");
+                let m = no_panic("Isotropic::sample_visible", (&n, w, u), || {
+                    iso.sample_visible(w, u)
+                });
+                check_visible(&mut fails, "Isotropic::sample_visible", w, m, 1e-12, &ctx);
+                let pdf = iso.pdf_visible(w, m);
+                fails.check(pdf.is_finite() && pdf >= 0.0, || {
+                    format!("pdf={pdf} at {}", ctx())
+                });
+                if interior(u) && off_horizon(w) {
+                    fails.check(pdf > 0.0, || format!("pdf={pdf} at {}", ctx()));
+                }
+            }
+        }
+    }
+    fails.finish("isotropic_samplers");
+}
+
+/// D·cos sampling of every NDF through `sample::sample_dcos` (the radial quantile): distinct
+/// normals for distinct u (item 1: GTR's inversion collapsed to (0, 0, 1) at large γ).
+#[test]
+fn dcos_samplers_spread() {
+    let mut r = Rng::new(4);
+    let mut fails = Failures::default();
+    for _ in 0..100 * scale() {
+        let n = ndf(&mut r);
+        let mut zs = Vec::new();
+        for k in 0..16 {
+            let u = [(k as f64 + r.f64()) / 16.0, r.f64()];
+            let ctx = || format!("{n:?} u={u:?}");
+            let m = no_panic("sample_dcos", (&n, u), || {
+                microfacet::sample::sample_dcos(&n, u)
+            });
+            check_visible(&mut fails, "sample_dcos", Vec3::Z, m, 1e-12, &ctx);
+            let pdf = microfacet::sample::pdf_dcos(&n, m);
+            fails.check(pdf.is_finite() && pdf > 0.0, || {
+                format!("pdf_dcos={pdf} m={m:?} at {}", ctx())
+            });
+            // The radial CDF at the sample returns its u (where the slope is resolvable).
+            let back = n.slope_cdf(m.x.hypot(m.y) / m.z);
+            fails.check(
+                (back - u[0]).abs() < 1e-6 || m.z == 1.0 || m.z < 1e-150,
+                || format!("slope_cdf(sample)={back} at {}", ctx()),
+            );
+            zs.push(m.z);
+            evals(3);
+        }
+        zs.sort_by(f64::total_cmp);
+        zs.dedup();
+        fails.check(zs.len() >= 12, || {
+            format!("{n:?}: {} distinct normals of 16", zs.len())
+        });
+    }
+    fails.finish("dcos_samplers_spread");
+}
+
+/// A fast sampler's output as a Vec3 in f64.
+fn v3<F: fast::Real>(m: [F; 3]) -> Vec3 {
+    Vec3::new(m[0].to_f64(), m[1].to_f64(), m[2].to_f64())
+}
+
+/// The fast samplers of every NDF in f64 and f32, with edge uniforms in `u` and in the
+/// closures' streams.
+fn fast_samplers<F: fast::Real + std::fmt::Debug>(test: u64, n: u64, draw: fn(&mut Rng) -> F) {
+    let mut r = Rng::new(test);
+    let mut fails = Failures::default();
+    let f32s = F::IS_F32;
+    let tol = if f32s { 4e-7 } else { 1e-13 };
+    for _ in 0..n * scale() {
+        let (ax, ay) = (alpha(&mut r), alpha(&mut r));
+        let (fx, fy) = (F::from_f64(ax), F::from_f64(ay));
+        let g = FastGtr::new(alpha(&mut r), gamma(&mut r)).unwrap();
+        let mut stream = Rng::new(r.next());
+        let mut next = || draw(&mut stream);
+        for _ in 0..200 {
+            let w = direction(&mut r, f32s);
+            let wf = [F::from_f64(w.x), F::from_f64(w.y), F::from_f64(w.z)];
+            let wv = v3(wf);
+            let u = [draw(&mut r), draw(&mut r)];
+            let ctx = || {
+                format!(
+                    "α=({ax:e},{ay:e}) gtr(α={:e},γ={:e}) w={wf:?} u={u:?}",
+                    g.alpha(),
+                    g.gamma()
+                )
+            };
+            let ms = no_panic("fast samplers", &ctx(), || {
+                [
+                    v3(fast::ggx::sample_visible(wf, fx, fy, u)),
+                    v3(fast::beckmann::sample_visible(wf, fx, fy, u)),
+                    v3(fast::double_ggx::sample_visible(wf, fx, fy, u, &mut next)),
+                    v3(fast::exponential::sample_visible(wf, fx, fy, u, &mut next)),
+                    v3(g.sample_visible(wf, u, &mut next)),
+                ]
+            });
+            for (name, m) in ["ggx", "beckmann", "double_ggx", "exponential", "gtr"]
+                .iter()
+                .zip(ms)
+            {
+                check_visible(
+                    &mut fails,
+                    &format!("fast::{name}::sample_visible"),
+                    wv,
+                    m,
+                    tol,
+                    &ctx,
+                );
+            }
+            let ms = no_panic("fast D·cos samplers", &ctx(), || {
+                [
+                    v3(fast::ggx::sample_dcos(fx, fy, u)),
+                    v3(fast::beckmann::sample_dcos(fx, fy, u)),
+                    v3(fast::double_ggx::sample_dcos(fx, fy, u, &mut next)),
+                    v3(fast::exponential::sample_dcos(fx, fy, u, &mut next)),
+                    v3(g.sample_dcos(u)),
+                ]
+            });
+            for (name, m) in ["ggx", "beckmann", "double_ggx", "exponential", "gtr"]
+                .iter()
+                .zip(ms)
+            {
+                check_visible(
+                    &mut fails,
+                    &format!("fast::{name}::sample_dcos"),
+                    Vec3::Z,
+                    m,
+                    tol,
+                    &ctx,
+                );
+                if interior([u[0].to_f64(), u[1].to_f64()]) {
+                    fails.check(m.z > 0.0, || {
+                        format!("fast::{name}::sample_dcos: horizon {m:?} at {}", ctx())
+                    });
+                }
+            }
+            evals(10);
+        }
+    }
+    fails.finish(if f32s {
+        "fast_samplers_f32"
+    } else {
+        "fast_samplers_f64"
+    });
+}
+
+#[test]
+fn fast_samplers_f64() {
+    fast_samplers::<f64>(5, 40, uniform);
+}
+
+#[test]
+fn fast_samplers_f32() {
+    fast_samplers::<f32>(6, 40, uniform32);
+}
+
+/// An f32 cosine in the contract (f32's own edges: 1 + 2ε₃₂, subnormals).
+fn cosine32(r: &mut Rng) -> f32 {
+    if r.chance(0.2) {
+        let u = r.pick(&[
+            0.0f32,
+            1.0,
+            1.0 + 2.0 * f32::EPSILON,
+            1.0 - f32::EPSILON / 2.0,
+            f32::MIN_POSITIVE,
+            1e-40,
+            1e-45,
+            2e-38,
+            1e-20,
+        ]);
+        if r.chance(0.3) {
+            -u
+        } else {
+            u
+        }
+    } else {
+        cosine(r) as f32
+    }
+}
+
+/// The fast scalar quantities (D, Λ, G1, G2, σ) in F: bounds, finiteness, and the sign
+/// conventions at ±0 and 1 + 2ε.
+fn fast_scalars<F: fast::Real + std::fmt::Debug>(test: u64, draw: fn(&mut Rng) -> F) {
+    let mut r = Rng::new(test);
+    let mut fails = Failures::default();
+    for _ in 0..200 * scale() {
+        let a = alpha(&mut r);
+        let fa = F::from_f64(a);
+        let g = FastGtr::new(alpha(&mut r), gamma(&mut r)).unwrap();
+        for _ in 0..500 {
+            let (u, v) = (draw(&mut r), draw(&mut r));
+            let q = no_panic("fast scalars", (a, g.alpha(), g.gamma(), u, v), || {
+                [
+                    // D: every u.
+                    [
+                        fast::ggx::d(u, fa),
+                        fast::beckmann::d(u, fa),
+                        fast::double_ggx::d(u, fa),
+                        fast::exponential::d(u, fa),
+                        g.d(u),
+                    ],
+                    // Λ, G1, G2 on |u| (their domain is [0, 1]: ±0 and 1 + 2ε included).
+                    [
+                        fast::ggx::lambda(u.abs(), fa),
+                        fast::beckmann::lambda(u.abs(), fa),
+                        fast::double_ggx::lambda(u.abs(), fa),
+                        fast::exponential::lambda(u.abs(), fa),
+                        g.lambda(u.abs()),
+                    ],
+                    [
+                        fast::ggx::g1(u.abs(), fa),
+                        fast::beckmann::g1(u.abs(), fa),
+                        fast::double_ggx::g1(u.abs(), fa),
+                        fast::exponential::g1(u.abs(), fa),
+                        g.g1(u.abs()),
+                    ],
+                    [
+                        fast::ggx::g2(u.abs(), v.abs(), fa),
+                        fast::beckmann::g2(u.abs(), v.abs(), fa),
+                        fast::double_ggx::g2(u.abs(), v.abs(), fa),
+                        fast::exponential::g2(u.abs(), v.abs(), fa),
+                        g.g2(u.abs(), v.abs()),
+                    ],
+                    [
+                        fast::ggx::sigma(u, fa),
+                        fast::beckmann::sigma(u, fa),
+                        fast::double_ggx::sigma(u, fa),
+                        fast::exponential::sigma(u, fa),
+                        g.sigma(u),
+                    ],
+                ]
+            });
+            evals(25);
+            // σ(0) of each (Λ's scale at grazing).
+            let s0 = [
+                0.5 * a,
+                0.5 * a / std::f64::consts::PI.sqrt(),
+                0.5 * a * std::f64::consts::PI.sqrt(),
+                a / std::f64::consts::PI,
+                g.sigma(0.0f64),
+            ];
+            let names = ["ggx", "beckmann", "double_ggx", "exponential", "gtr"];
+            for k in 0..5 {
+                let ctx = || {
+                    format!(
+                        "fast::{} α={a:e} gtr(α={:e},γ={:e}) u={u:?} v={v:?}",
+                        names[k],
+                        g.alpha(),
+                        g.gamma()
+                    )
+                };
+                let [d, l, g1, g2, s] =
+                    [q[0][k], q[1][k], q[2][k], q[3][k], q[4][k]].map(|x| x.to_f64());
+                fails.check(d.is_finite() && d >= 0.0, || format!("D={d} {}", ctx()));
+                fails.check(l >= 0.0, || format!("Λ={l} {}", ctx()));
+                // Λ ~ σ(0)/u is +∞ where that overflows in F (the true value, rounded).
+                let max = if F::IS_F32 { f32::MAX as f64 } else { f64::MAX };
+                let overflows = s0[k] / u.to_f64().abs() > 0.99 * max;
+                fails.check(l.is_finite() || overflows, || format!("Λ={l} {}", ctx()));
+                fails.check((0.0..=1.0).contains(&g1), || format!("G1={g1} {}", ctx()));
+                fails.check((0.0..=1.0).contains(&g2) && g2 <= g1, || {
+                    format!("G2={g2:e} G1={g1:e} {}", ctx())
+                });
+                fails.check(s.is_finite() && s >= 0.0, || format!("σ={s} {}", ctx()));
+            }
+        }
+    }
+    fails.finish(if F::IS_F32 {
+        "fast_scalars_f32"
+    } else {
+        "fast_scalars_f64"
+    });
+}
+
+#[test]
+fn fast_scalars_f64() {
+    fast_scalars::<f64>(7, cosine);
+}
+
+#[test]
+fn fast_scalars_f32() {
+    fast_scalars::<f32>(8, cosine32);
+}
+
+/// Relative error of a fast value against the exact one, counted only where the exact value
+/// is a normal float of the precision (and then both must be finite).
+fn rel(fast: f64, exact: f64, f32s: bool) -> Option<f64> {
+    let min = if f32s {
+        f32::MIN_POSITIVE as f64
+    } else {
+        f64::MIN_POSITIVE
+    };
+    let max = if f32s { f32::MAX as f64 } else { f64::MAX };
+    if !(exact.abs() >= min && exact.abs() <= max) {
+        return None;
+    }
+    Some(((fast - exact) / exact).abs())
+}
+
+/// Every fast path within its documented relative error against the exact type (fast/mod.rs's
+/// table), wherever the exact value is a normal float: D, Λ and σ(±u).
+fn fast_accuracy<F: fast::Real + std::fmt::Debug>(test: u64, draw: fn(&mut Rng) -> F) {
+    let mut r = Rng::new(test);
+    let mut fails = Failures::default();
+    let f32s = F::IS_F32;
+    // (name, D bound, Λ bound): fast/mod.rs's table. σ(±u) is Λ's.
+    let bounds = if f32s {
+        [
+            ("ggx", 1e-6, 1e-6),
+            ("beckmann", 2e-5, 2e-5),
+            ("double_ggx", 2e-6, 2e-6),
+            ("exponential", 2e-6, 2e-6),
+            ("gtr", 2e-6, 2e-6),
+        ]
+    } else {
+        [
+            ("ggx", 1e-14, 1e-14),
+            ("beckmann", 1e-12, 1e-12),
+            ("double_ggx", 1e-7, 1e-7),
+            ("exponential", 1e-7, 1e-7),
+            ("gtr", 1e-7, 1e-7),
+        ]
+    };
+    for _ in 0..4 * scale() {
+        for (k, (name, bd, bl)) in bounds.iter().enumerate() {
+            let a = F::from_f64(alpha(&mut r));
+            let af = a.to_f64();
+            let gm = gamma(&mut r);
+            let exact = match k {
+                0 => AnyNdf::Ggx(Ggx::new(af).unwrap()),
+                1 => AnyNdf::Beckmann(Beckmann::new(af).unwrap()),
+                2 => AnyNdf::DoubleGgx(DoubleGgx::new(af).unwrap()),
+                3 => AnyNdf::Exponential(Exponential::new(af).unwrap()),
+                _ => AnyNdf::Gtr(Gtr::new(af, gm).unwrap()),
+            };
+            let g = FastGtr::new(af, gm).unwrap();
+            let count = if k == 4 || k == 3 { 20 } else { 100 };
+            for _ in 0..count {
+                let u = draw(&mut r);
+                let uf = u.to_f64();
+                let (d, l, s) = match k {
+                    0 => (
+                        fast::ggx::d(u, a),
+                        fast::ggx::lambda(u.abs(), a),
+                        fast::ggx::sigma(u, a),
+                    ),
+                    1 => (
+                        fast::beckmann::d(u, a),
+                        fast::beckmann::lambda(u.abs(), a),
+                        fast::beckmann::sigma(u, a),
+                    ),
+                    2 => (
+                        fast::double_ggx::d(u, a),
+                        fast::double_ggx::lambda(u.abs(), a),
+                        fast::double_ggx::sigma(u, a),
+                    ),
+                    3 => (
+                        fast::exponential::d(u, a),
+                        fast::exponential::lambda(u.abs(), a),
+                        fast::exponential::sigma(u, a),
+                    ),
+                    _ => (g.d(u), g.lambda(u.abs()), g.sigma(u)),
+                };
+                let (ed, el, es) = (exact.d(uf), exact.lambda(uf.abs()), exact.sigma(uf));
+                evals(6);
+                let ctx = || format!("fast::{name} α={af:e} γ={gm:e} u={uf:e}");
+                for (what, fv, ev, bound) in [("D", d, ed, bd), ("Λ", l, el, bl), ("σ", s, es, bl)]
+                {
+                    if let Some(e) = rel(fv.to_f64(), ev, f32s) {
+                        fails.check(e <= *bound, || {
+                            format!(
+                                "{what}: {:e} vs exact {ev:e} (rel {e:.2e} > {bound:e}) {}",
+                                fv.to_f64(),
+                                ctx()
+                            )
+                        });
+                    }
+                }
+            }
+        }
+    }
+    fails.finish(if f32s {
+        "fast_accuracy_f32"
+    } else {
+        "fast_accuracy_f64"
+    });
+}
+
+#[test]
+fn fast_accuracy_f64() {
+    fast_accuracy::<f64>(9, cosine);
+}
+
+#[test]
+fn fast_accuracy_f32() {
+    fast_accuracy::<f32>(10, cosine32);
+}
