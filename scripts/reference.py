@@ -48,7 +48,7 @@ def make(ndf, a, g=None):
             if r == 0:
                 return 1 / (pi * a**2)
             c = a**2 / r**2
-            # the bracket cancels like 1/c^2 (ERRATA D): add guard digits
+            # the bracket cancels like 1/c^2 (derivations.md D): add guard digits
             with mp.workdps(mp.dps + 20 + int(2 * mp.log10(1 + c))):
                 return +(a**2 * ((1 + c) * exp(c) * e1(c) - 1) / (pi * r**4))
         def P2(p):
@@ -74,7 +74,7 @@ def make(ndf, a, g=None):
 
 def lambda_closed(ndf, a, g, u):
     """Closed forms of Lambda where they exist (None otherwise), with guard digits for the
-    cancellations listed in ERRATA section D."""
+    cancellations listed in docs/derivations.md, section D."""
     b = u / sqrt(1 - u**2)  # cot(theta)
     if ndf == "beckmann":
         x = b / a
@@ -87,7 +87,7 @@ def lambda_closed(ndf, a, g, u):
         with mp.workdps(mp.dps + 40):
             return +((sqrt(pi) * hyperu(-mpf(1) / 2, 0, (a / b) ** 2) - 1) / 2)
     if ndf == "exponential":
-        # ERRATA A.14: Lambda = (2 K1(z) - Ki1(z))/pi with the Bickley function
+        # derivations.md A.14: Lambda = (2 K1(z) - Ki1(z))/pi with the Bickley function
         # Ki1(z) = pi/2 - (pi z/2)[K0(z) L_{-1}(z) + K1(z) L0(z)], which cancels down to
         # ~e^{-z}: z/ln(10) guard digits. (A quadrature of K0 from z to infinity at 30-80
         # digits was found to be off by up to 5e-9 for z ~ 600.)

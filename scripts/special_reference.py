@@ -38,7 +38,7 @@ def S1(x):
     with mp.workdps(60):
         return x * exp(x) * (besselk(0, x) + besselk(1, x)) - 1
 out["bessel_k_sum_m1"] = [[x, float(S1(x))] for x in grid("1e-10", "1e4", 80)]
-# check of the U identity the library relies on (ERRATA A.5)
+# check of the U identity the library relies on (derivations.md A.5)
 out["u_identity_max_rel"] = float(max(abs(sqrt(pi) * hyperu(-0.5, 0, 2 * mpf(x)) - (S1(x) + 1)) / (S1(x) + 1) for x in grid("1e-3", "50", 10)))
 # Carlson R_D(0, y, 1)
 out["elliprd_0_y_1"] = [[y, float(elliprd(0, mpf(y), 1))] for y in grid("1e-6", "1e6", 60)]

@@ -9,15 +9,29 @@ use std::process::ExitCode;
 pub fn run(args: &[String]) -> Result<ExitCode, String> {
     if let Some(a) = args.first() {
         return Err(format!(
-            "eval: unexpected argument '{a}' (it reads JSON lines on stdin)"
+            "eval: unexpected argument '{}' (it reads JSON lines on stdin)",
+            crate::clip(a)
         ));
     }
-    let stdin = std::io::stdin().lock();
+    let mut stdin = std::io::stdin().lock();
     let mut out = BufWriter::new(std::io::stdout().lock());
     let mut failed = false;
-    for line in stdin.lines() {
-        let line = line.map_err(|e| format!("eval: reading stdin: {e}"))?;
-        let reply = match eval_line(&line) {
+    let mut line = Vec::new();
+    loop {
+        line.clear();
+        let n = stdin
+            .read_until(b'\n', &mut line)
+            .map_err(|e| format!("eval: reading stdin: {e}"))?;
+        if n == 0 {
+            break;
+        }
+        // A line that is not UTF-8 is a bad line like any other: an error reply, and on.
+        let reply = match std::str::from_utf8(&line) {
+            Ok(text) if text.trim().is_empty() => continue,
+            Ok(text) => eval_line(text),
+            Err(_) => Err("the line is not valid UTF-8".to_string()),
+        };
+        let reply = match reply {
             Ok(v) => serde_json::json!({ "value": v }),
             Err(e) => {
                 failed = true;
@@ -35,19 +49,35 @@ pub fn run(args: &[String]) -> Result<ExitCode, String> {
     })
 }
 
+/// The fields a request may have besides ndf, alpha, gamma (gtr) and quantity.
+fn arguments(quantity: &str) -> Option<&'static [&'static str]> {
+    Some(match quantity {
+        "d" | "sigma" | "lambda" | "g1" => &["u"],
+        "g2" => &["u_o", "u_i"],
+        "p22" => &["p", "q"],
+        "p2" => &["p"],
+        "f" => &["x"],
+        _ => return None,
+    })
+}
+
 fn field(obj: &Map<String, Value>, name: &str) -> Result<f64, String> {
     match obj.get(name) {
         None => Err(format!("missing field '{name}'")),
-        Some(v) => v
-            .as_f64()
-            .ok_or_else(|| format!("field '{name}' must be a number, got {v}")),
+        Some(v) => v.as_f64().ok_or_else(|| {
+            format!(
+                "field '{name}' must be a number, got {}",
+                crate::clip(&v.to_string())
+            )
+        }),
     }
 }
 
-/// A direction cosine in [−1, 1].
+/// A direction cosine in [−1, 1]; up to 4 ulp past ±1 (the z of a rounded unit vector) is
+/// accepted, and the library treats it as ±1.
 fn cosine(obj: &Map<String, Value>, name: &str) -> Result<f64, String> {
     let u = field(obj, name)?;
-    if !(-1.0..=1.0).contains(&u) {
+    if u.abs() > 1.0 + 4.0 * f64::EPSILON || u.is_nan() {
         return Err(format!("field '{name}' must be in [-1, 1], got {u}"));
     }
     Ok(u)
@@ -76,6 +106,26 @@ pub fn eval_line(line: &str) -> Result<f64, String> {
         .ok_or("missing field 'quantity'")?
         .as_str()
         .ok_or("field 'quantity' must be a string")?;
+    let Some(args) = arguments(quantity) else {
+        return Err(format!(
+            "unknown quantity '{}' (expected one of d, p22, p2, f, sigma, lambda, g1, g2)",
+            crate::clip(quantity)
+        ));
+    };
+    // Every other field is an error (an `alpha_y` would otherwise be ignored silently).
+    for key in obj.keys() {
+        let known = matches!(key.as_str(), "ndf" | "alpha" | "quantity")
+            || (key == "gamma" && kind == NdfKind::Gtr)
+            || args.contains(&key.as_str());
+        if !known {
+            return Err(format!(
+                "unknown field '{}' for {name} {quantity} (expected ndf, alpha{}, quantity, {})",
+                crate::clip(key),
+                if kind == NdfKind::Gtr { ", gamma" } else { "" },
+                args.join(", ")
+            ));
+        }
+    }
     let value = match quantity {
         "d" => ndf.d(cosine(obj, "u")?),
         "sigma" => ndf.sigma(cosine(obj, "u")?),
@@ -96,11 +146,8 @@ pub fn eval_line(line: &str) -> Result<f64, String> {
                 format!("f(x) is defined only for shape-invariant NDFs, not {name}")
             })?
         }
-        other => {
-            return Err(format!(
-                "unknown quantity '{other}' (expected one of d, p22, p2, f, sigma, lambda, g1, g2)"
-            ))
-        }
+        // (`arguments` has answered for every other name.)
+        _ => return Err(format!("unknown quantity '{}'", crate::clip(quantity))),
     };
     if !value.is_finite() {
         return Err(format!("{quantity} is not finite for this input"));

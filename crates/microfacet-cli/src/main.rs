@@ -9,46 +9,117 @@ mod verify;
 
 use std::process::ExitCode;
 
-const USAGE: &str = "\
-microfacet — microfacet NDFs, exact and verified
-
-usage:
+const VERIFY_USAGE: &str = "\
   microfacet verify [--ndf LIST] [--alpha LIST] [--gamma LIST]
       check every identity of the source pages by numerical integration;
       one line per check (PASS/FAIL, residual); exit 1 if any fails.
       LIST is comma-separated, e.g. --ndf ggx,gtr --alpha 0.1,0.5 --gamma 1,1.5
+      (--gamma applies to gtr, and needs gtr among the NDFs)
+";
+
+const EVAL_USAGE: &str = "\
   microfacet eval
-      JSON lines in, JSON lines out, e.g.
+      JSON lines in, JSON lines out, in order, e.g.
       {\"ndf\":\"gtr\",\"alpha\":0.3,\"gamma\":1.5,\"quantity\":\"lambda\",\"u\":0.5} -> {\"value\":...}
       quantities: d, sigma, lambda, g1 (u); p22 (p, q); p2 (p); f (x); g2 (u_o, u_i)
+      (gamma for gtr only; any other field is an error). u ∈ [-1, 1]: for u < 0,
+      sigma is the projected area seen from below, lambda is Heitz's extension
+      -1 - lambda(-u), and g1, g2 use |u|. A bad line gets {\"error\": ...} and the
+      run goes on (exit 1 at the end); empty lines are skipped.
+";
+
+const SAMPLE_USAGE: &str = "\
   microfacet sample --ndf NAME --alpha A [--alpha-y AY] [--gamma G] [--mode dcos|visible]
                     [--wi X,Y,Z] [--n N] [--seed S]
       write N sampled normals (default 100000), one `x y z` per line; D·cos (default)
-      or visible normals for the incident direction --wi (default 0,0,1)
+      or visible normals for the incident direction --wi (visible mode only; any
+      finite nonzero vector, normalised; default 0,0,1). --gamma: gtr only, required.
+";
+
+const REPORT_USAGE: &str = "\
   microfacet report [--out DIR]
       write DIR/index.html (default report/): every NDF's quantities, identities,
       superpositions and sample histograms as inline SVG plots, and the verify table
-  microfacet --help
 ";
+
+/// The end of the full usage text.
+const USAGE_TAIL: &str = "\
+  microfacet --help | --version
+
+options take their value as `--name value` or `--name=value`;
+`microfacet COMMAND --help` shows one command.
+";
+
+/// Splits `--name=value` into `--name`, `value` (the forms are equivalent).
+fn split_flags(args: &[String]) -> Vec<String> {
+    let mut out = Vec::with_capacity(args.len());
+    for a in args {
+        match a.split_once('=') {
+            Some((name, value)) if name.starts_with("--") => {
+                out.push(name.to_string());
+                out.push(value.to_string());
+            }
+            _ => out.push(a.clone()),
+        }
+    }
+    out
+}
+
+/// At most 60 characters of user input, for error messages (an unknown 1 MB name is not
+/// echoed whole).
+pub fn clip(s: &str) -> String {
+    const MAX: usize = 60;
+    match s.char_indices().nth(MAX) {
+        Some((i, _)) => format!("{}… ({} bytes)", &s[..i], s.len()),
+        None => s.to_string(),
+    }
+}
 
 fn main() -> ExitCode {
     // A panic is a bug, but the user still gets one line, not a backtrace.
     std::panic::set_hook(Box::new(|info| {
         eprintln!("microfacet: internal error: {info}");
     }));
-    let args: Vec<String> = std::env::args().skip(1).collect();
+    // Arguments that are not valid UTF-8 are not options of ours: one line, exit 2.
+    let args: Result<Vec<String>, _> = std::env::args_os()
+        .skip(1)
+        .map(|a| a.into_string())
+        .collect();
+    let Ok(args) = args else {
+        eprintln!("microfacet: arguments must be valid UTF-8");
+        return ExitCode::from(2);
+    };
+    let rest = split_flags(args.get(1..).unwrap_or(&[]));
+    let help = rest.iter().any(|a| a == "--help" || a == "-h");
+    let usage = |text: &str| {
+        print!("usage:\n{text}");
+        Ok(ExitCode::SUCCESS)
+    };
     let result = match args.first().map(String::as_str) {
-        Some("verify") => verify::run(&args[1..]),
-        Some("eval") => eval::run(&args[1..]),
-        Some("sample") => sample::run(&args[1..]),
-        Some("report") => report::run(&args[1..]),
+        Some("verify") if help => usage(VERIFY_USAGE),
+        Some("eval") if help => usage(EVAL_USAGE),
+        Some("sample") if help => usage(SAMPLE_USAGE),
+        Some("report") if help => usage(REPORT_USAGE),
+        Some("verify") => verify::run(&rest),
+        Some("eval") => eval::run(&rest),
+        Some("sample") => sample::run(&rest),
+        Some("report") => report::run(&rest),
         Some("-h" | "--help" | "help") => {
-            print!("{USAGE}");
+            print!(
+                "microfacet {} — microfacet NDFs, exact and verified\n\nusage:\n\
+                 {VERIFY_USAGE}{EVAL_USAGE}{SAMPLE_USAGE}{REPORT_USAGE}{USAGE_TAIL}",
+                env!("CARGO_PKG_VERSION")
+            );
+            Ok(ExitCode::SUCCESS)
+        }
+        Some("-V" | "--version") => {
+            println!("microfacet {}", env!("CARGO_PKG_VERSION"));
             Ok(ExitCode::SUCCESS)
         }
         None => Err("no command given (try `microfacet --help`)".to_string()),
         Some(other) => Err(format!(
-            "unknown command '{other}' (try `microfacet --help`)"
+            "unknown command '{}' (try `microfacet --help`)",
+            clip(other)
         )),
     };
     match result {

@@ -28,23 +28,92 @@ fn ndf(kind: NdfKind, alpha: f64, gamma: Option<f64>) -> AnyNdf {
     AnyNdf::new(kind, alpha, gamma).expect("report parameters are valid")
 }
 
-/// The NDF instances a section shows: three roughnesses, or (GTR) four γ at α = 0.3.
+/// The NDF instances a section shows: three roughnesses (the Exponential NDF page's own α =
+/// 0.8 and 2.1 beside 0.3), or (GTR) four γ at α = 0.3.
 fn members(kind: NdfKind) -> Vec<(String, AnyNdf)> {
+    let alphas: &[f64] = match kind {
+        NdfKind::Exponential => &[0.3, 0.8, 2.1],
+        _ => &ALPHAS,
+    };
     if kind == NdfKind::Gtr {
         GAMMAS
             .iter()
             .map(|&g| (format!("α=0.3 γ={g}"), ndf(kind, 0.3, Some(g))))
             .collect()
     } else {
-        ALPHAS
+        alphas
             .iter()
             .map(|&a| (format!("α={a}"), ndf(kind, a, None)))
             .collect()
     }
 }
 
+/// The two instances of the σ and slope-density plots: the first two members, and for GTR
+/// the GTR page's γ = 1.5 at two roughnesses.
+fn pair(kind: NdfKind) -> Vec<(String, AnyNdf)> {
+    if kind == NdfKind::Gtr {
+        [0.3, 0.6]
+            .iter()
+            .map(|&a| (format!("α={a} γ=1.5"), ndf(kind, a, Some(1.5))))
+            .collect()
+    } else {
+        members(kind).into_iter().take(2).collect()
+    }
+}
+
+/// The section heading of an NDF.
+fn heading(kind: NdfKind) -> &'static str {
+    match kind {
+        NdfKind::Beckmann => "Beckmann",
+        NdfKind::Ggx => "GGX (Trowbridge–Reitz)",
+        NdfKind::Gtr => "GTR (generalized Trowbridge–Reitz, exponent γ)",
+        NdfKind::DoubleGgx => "Double GGX",
+        NdfKind::Exponential => "Exponential NDF",
+    }
+}
+
+/// The short name of an NDF in plot titles.
+fn short(kind: NdfKind) -> &'static str {
+    match kind {
+        NdfKind::Beckmann => "Beckmann",
+        NdfKind::Ggx => "GGX",
+        NdfKind::Gtr => "GTR",
+        NdfKind::DoubleGgx => "Double GGX",
+        NdfKind::Exponential => "Exponential",
+    }
+}
+
+/// The NDF's defining D and where it comes from, for captions.
+fn source(kind: NdfKind) -> &'static str {
+    match kind {
+        NdfKind::Beckmann => {
+            "D = exp(−tan²θ/α²)/(π α² cos⁴θ) (d'Eon, Hitchhiker's Guide, GGX page; exponent \
+             corrected, derivations.md A.2)"
+        }
+        NdfKind::Ggx => {
+            "D = α²/(π cos⁴θ (α² + tan²θ)²) (Walter et al. 2007; d'Eon, Hitchhiker's Guide, GGX page)"
+        }
+        NdfKind::Gtr => {
+            "D = c/(1 + (α² − 1) cos²θ)^γ, c from Burley 2012 appendix B eq. 1 (d'Eon, \
+             Hitchhiker's Guide, GTR page)"
+        }
+        NdfKind::DoubleGgx => {
+            "D = ∫₀^∞ e^{−t} D_GGX(α/√t) dt, closed form with E₁ (d'Eon, Hitchhiker's Guide, \
+             Double GGX page)"
+        }
+        NdfKind::Exponential => {
+            "D = 2 exp(−2 tanθ/α)/(π α² cos⁴θ) (d'Eon, Hitchhiker's Guide, Exponential NDF page)"
+        }
+    }
+}
+
 fn d_plot(kind: NdfKind) -> Plot {
-    let mut p = Plot::new(format!("{kind}: D(θm)"), "θm (degrees)", "D").log_y();
+    let mut p = Plot::new(format!("{}: D(θm)", short(kind)), "θm (degrees)", "D")
+        .log_y()
+        .caption(format!(
+            "The NDF against the microfacet normal's angle. {}.",
+            source(kind)
+        ));
     for (label, n) in members(kind) {
         let pts = grid(0.0, 89.5, 180)
             .into_iter()
@@ -57,11 +126,16 @@ fn d_plot(kind: NdfKind) -> Plot {
 
 fn sigma_plot(kind: NdfKind) -> Plot {
     let mut p = Plot::new(
-        format!("{kind}: σ(u), formula vs ∫ D Δσ"),
+        format!("{}: σ(u), formula vs ∫ D Δσ", short(kind)),
         "u = cos θ",
         "σ(u)",
+    )
+    .caption(
+        "Projected area σ(u) = u(1 + Λ(u)) (u > 0), uΛ(u) seen from below (lines), against the \
+         independent integral ∫₀¹ D(uᵢ) Δσ(u, uᵢ) duᵢ over the projected-area kernel (markers; \
+         d'Eon, Hitchhiker's Guide, GGX page; derivations.md B.1).",
     );
-    for (label, n) in members(kind).into_iter().take(2) {
+    for (k, (label, n)) in pair(kind).into_iter().enumerate() {
         let line = grid(-1.0, 1.0, 121)
             .into_iter()
             .map(|u| (u, n.sigma(u)))
@@ -71,14 +145,19 @@ fn sigma_plot(kind: NdfKind) -> Plot {
             .map(|u| (u, sigma_by_delta_integral(&n, u)))
             .collect();
         p = p
-            .with(Series::new(format!("{label} σ"), line, Style::Line))
-            .with(Series::new(format!("{label} ∫DΔσ"), dots, Style::Markers));
+            .with(Series::new(format!("{label} σ"), line, Style::Line).color(k))
+            .with(Series::new(format!("{label} ∫DΔσ"), dots, Style::Markers).color(k));
     }
     p
 }
 
 fn lambda_plot(kind: NdfKind) -> Plot {
-    let mut p = Plot::new(format!("{kind}: Smith Λ(u)"), "u = cos θ", "Λ").log_y();
+    let mut p = Plot::new(format!("{}: Smith Λ(u)", short(kind)), "u = cos θ", "Λ")
+        .log_y()
+        .caption(
+            "Smith's Λ(u) = (1/a)∫ₐ^∞ (q − a) P2(q) dq, a = cot θ (Heitz 2014); closed forms \
+             or the Smith integral by quadrature (crate docs per NDF).",
+        );
     for (label, n) in members(kind) {
         let pts = grid(0.02, 0.999, 120)
             .into_iter()
@@ -90,7 +169,15 @@ fn lambda_plot(kind: NdfKind) -> Plot {
 }
 
 fn g1_plot(kind: NdfKind) -> Plot {
-    let mut p = Plot::new(format!("{kind}: G1(u)"), "u = cos θ", "G1");
+    let mut p = Plot::new(format!("{}: G1(u)", short(kind)), "u = cos θ", "G1").caption(
+        if kind == NdfKind::Exponential {
+            "Smith masking G1 = 1/(1 + Λ) (Heitz 2014), with the Exponential NDF page's two \
+             approximations at α = 0.3: G1 of the Ei NDF at 1.7α, and the rational fit \
+             G1approx (derivations.md A.13, C); their differences are in the residual plot."
+        } else {
+            "Smith masking G1 = 1/(1 + Λ) (Heitz 2014)."
+        },
+    );
     for (label, n) in members(kind) {
         let pts = grid(0.0, 1.0, 121)
             .into_iter()
@@ -110,7 +197,7 @@ fn g1_plot(kind: NdfKind) -> Plot {
             .with(Series::new(
                 "G1approx, α=0.3",
                 us.iter().map(|&u| (u, g1_rational(u, a))).collect(),
-                Style::Markers,
+                Style::Crosses,
             ));
     }
     p
@@ -123,11 +210,16 @@ fn approx_error_plot() -> Plot {
         .collect();
     let u = |z: f64| z / (1.0 + z * z).sqrt();
     Plot::new(
-        "exponential: error of the page's G1 approximations",
+        "Exponential: error of the page's G1 approximations",
         "log10(cot θ / α)",
         "|G1 approx − G1 exact|",
     )
     .log_y()
+    .caption(
+        "Both approximations of the Exponential NDF page against the exact G1 (derivations.md \
+         A.14: Λ = (2K₁(z) − Ki₁(z))/π): errors up to 3.1e-3 at cot θ/α ≈ 1.2 (any α); \
+         G1approx jumps to 1 at its x = 1.5 switch (derivations.md C).",
+    )
     .with(Series::new(
         "Ei G1(u, 1.7α)",
         zs.iter()
@@ -147,11 +239,16 @@ fn approx_error_plot() -> Plot {
 fn ei_sigma_plot() -> Plot {
     use microfacet::exponential::approx::ei_sigma;
     let mut p = Plot::new(
-        "exponential: σ(u) exact vs the page's Ei σ(u, 1.7α)",
+        "Exponential: σ(u) exact vs the page's Ei σ(u, 1.7α)",
         "u = cos θ",
         "σ(u)",
+    )
+    .caption(
+        "The Exponential NDF page's approximation of σ by the Ei NDF's exact σ at 1.7α \
+         (derivations.md B.7, C), at the page's α = 0.8 and 2.1; they coincide at plot \
+         scale: the residual plot shows the difference.",
     );
-    for a in [0.3, 1.0] {
+    for a in [0.8, 2.1] {
         let n = ndf(NdfKind::Exponential, a, None);
         let us = grid(-1.0, 1.0, 121);
         p = p
@@ -169,9 +266,60 @@ fn ei_sigma_plot() -> Plot {
     p
 }
 
+/// The residuals of the Exponential page's approximations that coincide with what they
+/// approximate at plot scale: Ei σ(u, 1.7α) − σ(u), and G1approx − Ei G1(u, 1.7α).
+fn exponential_residual_plots() -> Vec<Plot> {
+    use microfacet::exponential::approx::ei_sigma;
+    let us = grid(-1.0, 1.0, 241);
+    let mut sigma = Plot::new(
+        "Exponential: Ei σ(u, 1.7α) − σ(u)",
+        "u = cos θ",
+        "difference",
+    )
+    .caption(
+        "The residual of the page's σ approximation (previous plot's curves): at most 2.3e-3 \
+         (α = 0.8) and 3.0e-3 (α = 2.1) over u ∈ [−1, 1] (derivations.md C).",
+    );
+    for a in [0.8, 2.1] {
+        let n = ndf(NdfKind::Exponential, a, None);
+        sigma = sigma.with(Series::new(
+            format!("α={a}"),
+            us.iter()
+                .map(|&u| (u, ei_sigma(u, 1.7 * a) - n.sigma(u)))
+                .collect(),
+            Style::Line,
+        ));
+    }
+    let a = 0.3;
+    let us = grid(0.0, 1.0, 401);
+    let g1 = Plot::new(
+        "Exponential: G1approx − Ei G1(u, 1.7α), α = 0.3",
+        "u = cos θ",
+        "difference",
+    )
+    .caption(
+        "The rational G1approx is a fit of the Ei approximation, not of the exact G1: within \
+         3.4e-5 of it below its switch at x = cot θ/(1.7α) = 1.5, where it jumps to 1 \
+         (derivations.md C).",
+    )
+    .with(Series::new(
+        "G1approx − Ei G1",
+        us.iter()
+            .map(|&u| (u, g1_rational(u, a) - ei_g1(u, 1.7 * a)))
+            .collect(),
+        Style::Line,
+    ));
+    vec![sigma, g1]
+}
+
 /// GTR's D for α on both sides of 1 (α > 1 is allowed: D then grows towards grazing).
 fn gtr_alpha_plot() -> Plot {
-    let mut p = Plot::new("gtr γ=1.5: D(θm) for α < 1 and α > 1", "θm (degrees)", "D").log_y();
+    let mut p = Plot::new("GTR γ=1.5: D(θm) for α < 1 and α > 1", "θm (degrees)", "D")
+        .log_y()
+        .caption(
+            "GTR allows α > 1 (derivations.md E): D then grows towards grazing, largest at \
+             θm = 90°; α = 1 is the uniform 1/π for every γ.",
+        );
     for a in [0.1, 0.6, 1.0, 1.5] {
         let n = ndf(NdfKind::Gtr, a, Some(1.5));
         let pts = grid(0.0, 89.5, 180)
@@ -184,8 +332,18 @@ fn gtr_alpha_plot() -> Plot {
 }
 
 fn slope_plot(kind: NdfKind) -> Plot {
-    let mut p = Plot::new(format!("{kind}: slope densities"), "p", "P2(p), P22(p, 0)").log_y();
-    for (label, n) in members(kind).into_iter().take(2) {
+    let mut p = Plot::new(
+        format!("{}: slope densities", short(kind)),
+        "p",
+        "P2(p), P22(p, 0)",
+    )
+    .log_y()
+    .caption(
+        "Slope densities: P22(p, q) = D(u) u⁴ (u = 1/√(1 + p² + q²)) along q = 0, and the \
+         marginal P2(p) = ∫ P22(p, q) dq (GTR: the ₂F₁ form of derivations.md A.9; Double GGX: \
+         A.16; Exponential: A.14).",
+    );
+    for (label, n) in pair(kind) {
         let ps = grid(-3.0, 3.0, 161);
         p = p
             .with(Series::new(
@@ -269,131 +427,197 @@ fn histogram_plot(kind: NdfKind, visible: bool) -> Plot {
     } else {
         "α=0.3"
     };
+    let caption = if visible {
+        "Histogram of θm of the library's visible-normal sampler (exact inversion, Heitz & \
+         d'Eon 2014) for θi = 60°, against its pdf integrated over azimuth: \
+         sin θ ∫ G1(wi) max(0, wi·m) D(m)/cos θi dφ."
+    } else {
+        "Histogram of θm of the library's D·cos sampler (exact inversion of the radial slope \
+         CDF; GTR: Burley 2012 appendix B eqs. 3–9), against 2π sin θ cos θ D(cos θ)."
+    };
     Plot::new(
-        format!("{kind} {label}: {what}"),
+        format!("{} {label}: {what}", short(kind)),
         "θm (degrees)",
         "density per degree",
+    )
+    .caption(caption)
+    .with(Series::new(format!("{samples} samples"), hist, Style::Bars))
+    .with(Series::new("pdf", curve, Style::Line))
+}
+
+/// One superposition identity: the closed form as a dense curve (400 points, no kinks), and
+/// each mixture at its own 30 angles (the mixtures' grids interleave, and the second draws
+/// crosses, so neither hides the other).
+fn superposition_plot(
+    title: &str,
+    caption: &str,
+    y: &str,
+    closed: impl Fn(f64) -> f64,
+    mixes: &[(&str, &dyn Fn(f64) -> f64)],
+) -> Plot {
+    let theta = |u: f64| u.acos().to_degrees();
+    let dense = grid(0.05, 0.999, 400);
+    let mut p = Plot::new(title, "θ (degrees)", y)
+        .log_y()
+        .caption(caption)
+        .with(Series::new(
+            "closed form",
+            dense.iter().map(|&u| (theta(u), closed(u))).collect(),
+            Style::Line,
+        ));
+    let n = 30;
+    for (k, (name, mix)) in mixes.iter().enumerate() {
+        // Angles offset by a fraction of the spacing per mixture.
+        let offset = (k as f64 + 0.5) / mixes.len() as f64;
+        let us = (0..n).map(|i| 0.05 + (0.999 - 0.05) * (i as f64 + offset) / n as f64);
+        let style = if k == 0 {
+            Style::Markers
+        } else {
+            Style::Crosses
+        };
+        p = p.with(Series::new(
+            *name,
+            us.map(|u| (theta(u), mix(u))).collect(),
+            style,
+        ));
+    }
+    p
+}
+
+/// The pages' superposition identities as overlaid curves.
+fn superposition_plots(kind: NdfKind) -> Vec<Plot> {
+    let a = 0.3;
+    if !matches!(
+        kind,
+        NdfKind::Ggx | NdfKind::DoubleGgx | NdfKind::Exponential
+    ) {
+        return Vec::new();
+    }
+    let g = ndf(kind, a, None);
+    match kind {
+        NdfKind::Ggx => vec![
+            superposition_plot(
+                "GGX D as superpositions of Beckmann D (α=0.3)",
+                "GGX is a Fréchet-2 (over the roughness) and a Gamma-1 (over 1/roughness²) \
+                 superposition of Beckmann (d'Eon, Hitchhiker's Guide, GGX page; derivations.md \
+                 A.2, B.2): both mixtures by quadrature against the closed form.",
+                "D",
+                |u| g.d(u),
+                &[
+                    ("Fréchet-2", &|u| {
+                        superpose_beckmann(Mixing::Frechet2, a, |b| b.d(u))
+                    }),
+                    ("Gamma-1", &|u| {
+                        superpose_beckmann(Mixing::Gamma1, a, |b| b.d(u))
+                    }),
+                ],
+            ),
+            superposition_plot(
+                "GGX Λ as a Gamma-1 superposition of Beckmann Λ",
+                "Λ is linear in P22, so GGX's Λ is the same Gamma-1 mixture of Beckmann's Λ \
+                 (d'Eon, Hitchhiker's Guide, GGX page).",
+                "Λ",
+                |u| g.lambda(u),
+                &[("Gamma-1", &|u| {
+                    superpose_beckmann(Mixing::Gamma1, a, |b| b.lambda(u))
+                })],
+            ),
+        ],
+        NdfKind::DoubleGgx => {
+            vec![
+            superposition_plot(
+                "Double GGX D as a Gamma-1 superposition of GGX D",
+                "Double GGX is to GGX what GGX is to Beckmann: D = ∫₀^∞ e^{−t} D_GGX(α/√t) dt \
+                 (d'Eon, Hitchhiker's Guide, Double GGX page; derivations.md A.4, B.4).",
+                "D",
+                |u| g.d(u),
+                &[("Gamma-1", &|u| superpose_ggx(Mixing::Gamma1, a, |c| c.d(u)))],
+            ),
+            superposition_plot(
+                "Double GGX Λ as a Gamma-1 superposition of GGX Λ",
+                "Λ = (x eˣ(K₀(x) + K₁(x)) − 1)/2, x = α² tan²θ/2 (derivations.md A.5), against \
+                 the Gamma-1 mixture of GGX's Λ.",
+                "Λ",
+                |u| g.lambda(u),
+                &[("Gamma-1", &|u| superpose_ggx(Mixing::Gamma1, a, |c| c.lambda(u)))],
+            ),
+        ]
+        }
+        NdfKind::Exponential => vec![superposition_plot(
+            "Exponential D as superpositions of Beckmann D",
+            "The Exponential NDF as Gamma(3/2) (roughness α√m) and Chi-3 (roughness αm/√2) \
+             superpositions of Beckmann (d'Eon, Hitchhiker's Guide, Exponential NDF page; \
+             derivations.md B.6).",
+            "D",
+            |u| g.d(u),
+            &[
+                ("Gamma(3/2)", &|u| {
+                    superpose_beckmann(Mixing::Gamma32, a, |b| b.d(u))
+                }),
+                ("Chi-3", &|u| {
+                    superpose_beckmann(Mixing::Chi3, a, |b| b.d(u))
+                }),
+            ],
+        )],
+        _ => Vec::new(),
+    }
+}
+
+/// The Exponential NDF page's own sampler (three Gaussians and one uniform, the Chi-3
+/// superposition: `stochastic::ExponentialChi3`) at the page's α = 0.8: a histogram of θm
+/// against the D·cos density.
+fn chi3_histogram_plot() -> Plot {
+    use microfacet::stochastic::ExponentialChi3;
+    use rand::distr::Distribution;
+    use rand::SeedableRng;
+    use std::f64::consts::PI;
+    let alpha = 0.8;
+    let n = ndf(NdfKind::Exponential, alpha, None);
+    let sampler = ExponentialChi3::new(alpha).expect("α = 0.8 is valid");
+    let mut rng = rand_xorshift::XorShiftRng::seed_from_u64(5);
+    let (samples, bins) = (100_000, 60);
+    let width = 90.0 / bins as f64;
+    let mut counts = vec![0.0; bins];
+    for _ in 0..samples {
+        let m = sampler.sample(&mut rng);
+        let theta = m.z.clamp(-1.0, 1.0).acos().to_degrees();
+        counts[((theta / width) as usize).min(bins - 1)] += 1.0;
+    }
+    let hist = counts
+        .iter()
+        .enumerate()
+        .map(|(i, c)| ((i as f64 + 0.5) * width, c / (samples as f64 * width)))
+        .collect();
+    let curve = grid(0.1, 89.9, 200)
+        .into_iter()
+        .map(|d| {
+            let (s, c) = d.to_radians().sin_cos();
+            (d, 2.0 * PI * s * c * n.d(c) * PI / 180.0)
+        })
+        .collect();
+    Plot::new(
+        "Exponential α=0.8: the page's 3-Gaussian sampler",
+        "θm (degrees)",
+        "density per degree",
+    )
+    .caption(
+        "The Exponential NDF page's stochastic sampler: cos θm = 1/√(1 − (α²/2)(g₁² + g₂² + \
+         g₃²) ln u₁), three Gaussians and one uniform (the Chi-3 superposition; derivations.md \
+         B.6), against 2π sin θ cos θ D(cos θ).",
     )
     .with(Series::new(format!("{samples} samples"), hist, Style::Bars))
     .with(Series::new("pdf", curve, Style::Line))
 }
 
-/// The pages' superposition identities as overlaid curves.
-fn superposition_plots(kind: NdfKind) -> Vec<Plot> {
-    let us = grid(0.05, 0.999, 60);
-    let a = 0.3;
-    let mut out = Vec::new();
-    let thetas = |v: &Vec<f64>| v.iter().map(|u| u.acos().to_degrees()).collect::<Vec<_>>();
-    let t = thetas(&us);
-    let mk = |title: String, closed: Vec<f64>, mixes: Vec<(&str, Vec<f64>)>, y: &str| {
-        let mut p = Plot::new(title, "θ (degrees)", y).log_y().with(Series::new(
-            "closed form",
-            t.iter().copied().zip(closed).collect(),
-            Style::Line,
-        ));
-        for (name, v) in mixes {
-            p = p.with(Series::new(
-                name,
-                t.iter().copied().zip(v).collect(),
-                Style::Markers,
-            ));
-        }
-        p
-    };
-    match kind {
-        NdfKind::Ggx => {
-            let g = ndf(kind, a, None);
-            out.push(mk(
-                "GGX D as superpositions of Beckmann D (α=0.3)".into(),
-                us.iter().map(|&u| g.d(u)).collect(),
-                vec![
-                    (
-                        "Fréchet-2",
-                        us.iter()
-                            .map(|&u| superpose_beckmann(Mixing::Frechet2, a, |b| b.d(u)))
-                            .collect(),
-                    ),
-                    (
-                        "Gamma-1",
-                        us.iter()
-                            .map(|&u| superpose_beckmann(Mixing::Gamma1, a, |b| b.d(u)))
-                            .collect(),
-                    ),
-                ],
-                "D",
-            ));
-            out.push(mk(
-                "GGX Λ as a Gamma-1 superposition of Beckmann Λ".into(),
-                us.iter().map(|&u| g.lambda(u)).collect(),
-                vec![(
-                    "Gamma-1",
-                    us.iter()
-                        .map(|&u| superpose_beckmann(Mixing::Gamma1, a, |b| b.lambda(u)))
-                        .collect(),
-                )],
-                "Λ",
-            ));
-        }
-        NdfKind::DoubleGgx => {
-            let g = ndf(kind, a, None);
-            out.push(mk(
-                "Double GGX D as a Gamma-1 superposition of GGX D".into(),
-                us.iter().map(|&u| g.d(u)).collect(),
-                vec![(
-                    "Gamma-1",
-                    us.iter()
-                        .map(|&u| superpose_ggx(Mixing::Gamma1, a, |c| c.d(u)))
-                        .collect(),
-                )],
-                "D",
-            ));
-            out.push(mk(
-                "Double GGX Λ as a Gamma-1 superposition of GGX Λ".into(),
-                us.iter().map(|&u| g.lambda(u)).collect(),
-                vec![(
-                    "Gamma-1",
-                    us.iter()
-                        .map(|&u| superpose_ggx(Mixing::Gamma1, a, |c| c.lambda(u)))
-                        .collect(),
-                )],
-                "Λ",
-            ));
-        }
-        NdfKind::Exponential => {
-            let g = ndf(kind, a, None);
-            out.push(mk(
-                "Exponential D as superpositions of Beckmann D".into(),
-                us.iter().map(|&u| g.d(u)).collect(),
-                vec![
-                    (
-                        "Gamma(3/2)",
-                        us.iter()
-                            .map(|&u| superpose_beckmann(Mixing::Gamma32, a, |b| b.d(u)))
-                            .collect(),
-                    ),
-                    (
-                        "Chi-3",
-                        us.iter()
-                            .map(|&u| superpose_beckmann(Mixing::Chi3, a, |b| b.d(u)))
-                            .collect(),
-                    ),
-                ],
-                "D",
-            ));
-        }
-        _ => {}
-    }
-    out
-}
-
-/// α at which `kind` has the same G1 at 45° as GGX with α = 0.3 (bisection in ln α).
-fn matched_alpha(kind: NdfKind, gamma: Option<f64>) -> f64 {
-    let u45 = std::f64::consts::FRAC_1_SQRT_2;
-    let target = ndf(NdfKind::Ggx, 0.3, None).g1(u45);
+/// α at which `q(kind at α)` equals `q(GGX at α = 0.3)`, by bisection in ln α (q monotone
+/// in α).
+fn matched_alpha(kind: NdfKind, gamma: Option<f64>, q: impl Fn(&AnyNdf) -> f64) -> f64 {
+    let target = q(&ndf(NdfKind::Ggx, 0.3, None));
     let (mut lo, mut hi) = (1e-3f64.ln(), 10f64.ln());
+    let rising = q(&ndf(kind, 10.0, gamma)) > q(&ndf(kind, 1e-3, gamma));
     for _ in 0..80 {
         let mid = 0.5 * (lo + hi);
-        if ndf(kind, mid.exp(), gamma).g1(u45) > target {
+        if (q(&ndf(kind, mid.exp(), gamma)) < target) == rising {
             lo = mid;
         } else {
             hi = mid;
@@ -411,117 +635,134 @@ fn comparison_plots() -> Vec<Plot> {
         (NdfKind::Exponential, None, "Exponential"),
     ];
     let ts = grid(0.0, 89.5, 180);
-    let mut same = Plot::new("All NDFs at α = 0.3: D(θm)", "θm (degrees)", "D").log_y();
-    let mut matched =
-        Plot::new("Matched G1(45°) (= GGX α=0.3): D(θm)", "θm (degrees)", "D").log_y();
-    let mut g1 = Plot::new("Matched G1(45°): G1(u)", "u = cos θ", "G1");
+    let us = grid(0.0, 1.0, 101);
+    let u45 = std::f64::consts::FRAC_1_SQRT_2;
+    let d_of = |n: &AnyNdf| ts.iter().map(|&t| (t, n.d(t.to_radians().cos()))).collect();
+    let g1_of = |n: &AnyNdf| us.iter().map(|&u| (u, n.g1(u))).collect();
+    let mut same = Plot::new("All NDFs at α = 0.3: D(θm)", "θm (degrees)", "D")
+        .log_y()
+        .caption(
+            "The five NDFs at the same α = 0.3 (GTR at γ = 1.5): α is not comparable across \
+             NDFs (mean slopes differ by up to 2×); the next plots match a quantity instead.",
+        );
+    let mut by_g1 = Plot::new(
+        "Matched masking: G1(45°) as GGX α=0.3's",
+        "θm (degrees)",
+        "D",
+    )
+    .log_y();
+    let mut by_g1_g1 = Plot::new("Matched masking: G1(u)", "u = cos θ", "G1").caption(
+        "G1 of the NDFs matched at 45° (previous plot): equal at u = 0.707 by construction, \
+         apart towards grazing.",
+    );
+    let mut by_slope = Plot::new(
+        "Matched mean slope: σ(0) as GGX α=0.3's",
+        "θm (degrees)",
+        "D",
+    )
+    .log_y()
+    .caption(
+        "Each NDF's α chosen so that σ(0) = E[max(0, p)], the mean projected slope (GGX: α/2 \
+         = 0.15; derivations.md E), equals GGX α = 0.3's: the same grazing projected area.",
+    );
+    let mut beckmann_alpha = 0.0;
     for (k, g, name) in kinds {
-        let n = ndf(k, 0.3, g);
-        same = same.with(Series::new(
-            name,
-            ts.iter().map(|&t| (t, n.d(t.to_radians().cos()))).collect(),
-            Style::Line,
-        ));
-        let a = matched_alpha(k, g);
+        same = same.with(Series::new(name, d_of(&ndf(k, 0.3, g)), Style::Line));
+        let a = matched_alpha(k, g, |n| -n.g1(u45));
+        if k == NdfKind::Beckmann {
+            beckmann_alpha = a;
+        }
         let m = ndf(k, a, g);
-        matched = matched.with(Series::new(
+        by_g1 = by_g1.with(Series::new(
             format!("{name} α={a:.3}"),
-            ts.iter().map(|&t| (t, m.d(t.to_radians().cos()))).collect(),
+            d_of(&m),
             Style::Line,
         ));
-        g1 = g1.with(Series::new(
+        by_g1_g1 = by_g1_g1.with(Series::new(
             format!("{name} α={a:.3}"),
-            grid(0.0, 1.0, 101)
-                .into_iter()
-                .map(|u| (u, m.g1(u)))
-                .collect(),
+            g1_of(&m),
+            Style::Line,
+        ));
+        let a = matched_alpha(k, g, |n| n.sigma(0.0));
+        by_slope = by_slope.with(Series::new(
+            format!("{name} α={a:.3}"),
+            d_of(&ndf(k, a, g)),
             Style::Line,
         ));
     }
-    vec![same, matched, g1]
+    let by_g1 = by_g1.caption(format!(
+        "Each NDF's α chosen so that its masking at 45° incidence equals GGX α = 0.3's \
+         (G1(45°) = {:.4}): the masking at moderate angles matches; the peaks and tails of D \
+         do not, and the α differ widely (Beckmann {beckmann_alpha:.3}): α is each NDF's own \
+         scale, not a common roughness.",
+        ndf(NdfKind::Ggx, 0.3, None).g1(u45)
+    ));
+    vec![same, by_g1, by_g1_g1, by_slope]
 }
 
-const CSS: &str =
-    "body{font-family:sans-serif;max-width:1400px;margin:auto;padding:1em;color:#222}\
-h1{font-size:1.6em}h2{border-bottom:2px solid #1f77b4;padding-top:.6em}\
-.plots{display:flex;flex-wrap:wrap;gap:10px}\
-table{border-collapse:collapse;font-size:12px}td,th{border:1px solid #ccc;padding:2px 6px}\
-.pass{color:#2a7a2a}.fail{color:#b00;font-weight:bold}nav a{margin-right:1em}";
+/// Today's date (UTC) as YYYY-MM-DD, from the system clock (civil-from-days, Hinnant's
+/// algorithm; no date crate for one stamp).
+fn utc_date() -> String {
+    let secs = std::time::SystemTime::now()
+        .duration_since(std::time::UNIX_EPOCH)
+        .map_or(0, |d| d.as_secs());
+    let z = (secs / 86_400) as i64 + 719_468;
+    let era = z.div_euclid(146_097);
+    let doe = z - era * 146_097;
+    let yoe = (doe - doe / 1_460 + doe / 36_524 - doe / 146_096) / 365;
+    let doy = doe - (365 * yoe + yoe / 4 - yoe / 100);
+    let mp = (5 * doy + 2) / 153;
+    let d = doy - (153 * mp + 2) / 5 + 1;
+    let m = if mp < 10 { mp + 3 } else { mp - 9 };
+    let y = yoe + era * 400 + i64::from(m <= 2);
+    format!("{y:04}-{m:02}-{d:02}")
+}
 
-pub fn run(args: &[String]) -> Result<ExitCode, String> {
-    let mut out = std::path::PathBuf::from("report");
-    let mut it = args.iter();
-    while let Some(flag) = it.next() {
-        match flag.as_str() {
-            "--out" => out = it.next().ok_or("report: --out needs a directory")?.into(),
-            other => return Err(format!("report: unknown option '{other}'")),
+/// The identity checks as a matrix (NDF and parameters × identity: the worst residual and
+/// whether it passed), then every check, folded.
+fn identity_tables(body: &mut String, checks: &[microfacet::verify::Check], failed: usize) {
+    let mut subjects: Vec<&str> = Vec::new();
+    let mut identities: Vec<&str> = Vec::new();
+    for c in checks {
+        if !subjects.contains(&c.subject.as_str()) {
+            subjects.push(&c.subject);
+        }
+        if !identities.contains(&c.identity.as_str()) {
+            identities.push(&c.identity);
         }
     }
-    let start = Instant::now();
-    let progress = |what: &str| eprintln!("[{:5.1} s] {what}", start.elapsed().as_secs_f64());
-    let mut body = String::new();
     let _ = write!(
         body,
-        "<h1>microfacet — the NDF pages, reproduced and verified</h1>\
-<p>Every curve below is computed by this library; markers are independent numerical \
-integrals or superpositions; histograms are samples of the library's samplers. \
-Generated by <code>microfacet report</code>.</p><nav>"
-    );
-    for k in NdfKind::ALL {
-        let _ = write!(body, r##"<a href="#{k}">{k}</a>"##);
-    }
-    body.push_str(
-        r##"<a href="#comparison">comparison</a><a href="#verify">identity table</a></nav>"##,
-    );
-
-    for kind in NdfKind::ALL {
-        progress(&format!("section {kind}"));
-        let _ = write!(
-            body,
-            r#"<section id="{kind}" class="ndf"><h2>{kind}</h2><div class="plots">"#
-        );
-        let mut plots = vec![
-            d_plot(kind),
-            sigma_plot(kind),
-            lambda_plot(kind),
-            g1_plot(kind),
-            slope_plot(kind),
-            histogram_plot(kind, false),
-            histogram_plot(kind, true),
-        ];
-        if kind == NdfKind::Exponential {
-            plots.push(approx_error_plot());
-            plots.push(ei_sigma_plot());
-        }
-        if kind == NdfKind::Gtr {
-            plots.insert(1, gtr_alpha_plot());
-        }
-        plots.extend(superposition_plots(kind));
-        for p in plots {
-            body.push_str(&p.to_svg());
-        }
-        body.push_str("</div></section>");
-    }
-
-    progress("comparison");
-    body.push_str(
-        r#"<section id="comparison"><h2>Comparison at matched roughness</h2><div class="plots">"#,
-    );
-    for p in comparison_plots() {
-        body.push_str(&p.to_svg());
-    }
-    body.push_str("</div></section>");
-
-    progress("identity checks (verify)");
-    let checks = run_checks(&Sweep::default(), |_| {});
-    let failed = checks.iter().filter(|c| !c.pass()).count();
-    let _ = write!(
-        body,
-        r#"<section id="verify"><h2>Identities (microfacet verify): {} checks, {} failed</h2><table><tr><th></th><th>residual</th><th>tolerance</th><th>NDF</th><th>identity</th></tr>"#,
+        r#"<section id="verify"><h2>Identities (microfacet verify): {} checks, {} failed</h2><p>Each identity of the pages checked by an independent numerical integral or superposition (<code>microfacet verify</code>). Cells: the largest relative residual over the check's sample points; red where it exceeds its tolerance (1e-10, or the u-space floor ε·max(1, γ)/α² of checks that integrate over u); empty where the identity does not apply.</p><div class="matrix"><table><tr><th>NDF</th>"#,
         checks.len(),
         failed
     );
-    for c in &checks {
+    for id in &identities {
+        let _ = write!(body, "<th>{}</th>", esc(id));
+    }
+    body.push_str("</tr>");
+    for sub in &subjects {
+        let _ = write!(body, "<tr><th>{}</th>", esc(sub));
+        for id in &identities {
+            match checks
+                .iter()
+                .find(|c| c.subject == *sub && c.identity == *id)
+            {
+                Some(c) => {
+                    let class = if c.pass() { "pass" } else { "fail" };
+                    let _ = write!(body, r#"<td class="{class}">{:.1e}</td>"#, c.residual);
+                }
+                None => body.push_str("<td></td>"),
+            }
+        }
+        body.push_str("</tr>");
+    }
+    let _ = write!(
+        body,
+        r#"</table></div><details><summary>All {} checks, one per row</summary><table><tr><th></th><th>residual</th><th>tolerance</th><th>NDF</th><th>identity</th></tr>"#,
+        checks.len()
+    );
+    for c in checks {
         let (class, word) = if c.pass() {
             ("pass", "PASS")
         } else {
@@ -536,14 +777,111 @@ Generated by <code>microfacet report</code>.</p><nav>"
             esc(&c.identity)
         );
     }
-    body.push_str("</table></section>");
+    body.push_str("</table></details></section>");
+}
+
+const CSS: &str =
+    "body{font-family:sans-serif;max-width:1400px;margin:auto;padding:1em;color:#222}\
+h1{font-size:1.6em}h2{border-bottom:2px solid #1f77b4;padding-top:.6em}\
+.plots{display:flex;flex-wrap:wrap;gap:10px}\
+table{border-collapse:collapse;font-size:12px}td,th{border:1px solid #ccc;padding:2px 6px}\
+.pass{color:#2a7a2a}.fail{color:#b00;font-weight:bold}nav a{margin-right:1em}\
+figure{margin:0;width:440px}figcaption{font-size:12px;color:#444;margin:2px 4px 8px}\
+.def{font-size:14px;color:#333}.stamp{font-size:12px;color:#666}\
+.matrix{overflow-x:auto}.matrix th{font-size:11px;font-weight:normal;text-align:left}";
+
+pub fn run(args: &[String]) -> Result<ExitCode, String> {
+    let mut out = std::path::PathBuf::from("report");
+    let mut it = args.iter();
+    while let Some(flag) = it.next() {
+        match flag.as_str() {
+            "--out" => out = it.next().ok_or("report: --out needs a directory")?.into(),
+            other => {
+                return Err(format!(
+                    "report: unknown option '{}' (see `microfacet report --help`)",
+                    crate::clip(other)
+                ))
+            }
+        }
+    }
+    // Fail before the minutes of computing if the page could not be written.
+    std::fs::create_dir_all(&out)
+        .map_err(|e| format!("report: cannot create {}: {e}", out.display()))?;
+    let path = out.join("index.html");
+    let probe = out.join(".microfacet-report-probe");
+    std::fs::write(&probe, b"")
+        .and_then(|()| std::fs::remove_file(&probe))
+        .map_err(|e| format!("report: cannot write in {}: {e}", out.display()))?;
+    let start = Instant::now();
+    let progress = |what: &str| eprintln!("[{:5.1} s] {what}", start.elapsed().as_secs_f64());
+    let mut body = String::new();
+    let _ = write!(
+        body,
+        "<h1>microfacet — the NDF pages, reproduced and verified</h1>\
+<p>Every curve below is computed by this library; markers are independent numerical \
+integrals or superpositions; histograms are samples of the library's samplers. Sources: \
+d'Eon, <i>A Hitchhiker's Guide to Multiple Scattering</i> (2020) and its NDF pages; Burley \
+2012, <i>Physically-Based Shading at Disney</i>, appendix B; corrections and derivations \
+beyond them in the repository's <code>docs/derivations.md</code>.</p>\
+<p class=\"stamp\">Generated by <code>microfacet report</code>, microfacet {}, on {} (UTC).</p><nav>",
+        env!("CARGO_PKG_VERSION"),
+        utc_date()
+    );
+    for k in NdfKind::ALL {
+        let _ = write!(body, r##"<a href="#{k}">{}</a>"##, short(k));
+    }
+    body.push_str(
+        r##"<a href="#comparison">comparison</a><a href="#verify">identity table</a></nav>"##,
+    );
+
+    for kind in NdfKind::ALL {
+        progress(&format!("section {kind}"));
+        let _ = write!(
+            body,
+            r#"<section id="{kind}" class="ndf"><h2>{}</h2><p class="def">{}.</p><div class="plots">"#,
+            heading(kind),
+            esc(source(kind))
+        );
+        let mut plots = vec![
+            d_plot(kind),
+            sigma_plot(kind),
+            lambda_plot(kind),
+            g1_plot(kind),
+            slope_plot(kind),
+            histogram_plot(kind, false),
+            histogram_plot(kind, true),
+        ];
+        if kind == NdfKind::Exponential {
+            plots.push(approx_error_plot());
+            plots.push(ei_sigma_plot());
+            plots.extend(exponential_residual_plots());
+            plots.push(chi3_histogram_plot());
+        }
+        if kind == NdfKind::Gtr {
+            plots.insert(1, gtr_alpha_plot());
+        }
+        plots.extend(superposition_plots(kind));
+        for p in plots {
+            body.push_str(&p.to_html());
+        }
+        body.push_str("</div></section>");
+    }
+
+    progress("comparison");
+    body.push_str(r#"<section id="comparison"><h2>Comparison of the NDFs</h2><div class="plots">"#);
+    for p in comparison_plots() {
+        body.push_str(&p.to_html());
+    }
+    body.push_str("</div></section>");
+
+    progress("identity checks (verify)");
+    let checks = run_checks(&Sweep::default(), |_| {});
+    let failed = checks.iter().filter(|c| !c.pass()).count();
+    identity_tables(&mut body, &checks, failed);
 
     let html = format!(
         "<!DOCTYPE html><html lang=\"en\"><head><meta charset=\"utf-8\"><title>microfacet report</title><style>{CSS}</style></head><body>{body}</body></html>\n"
     );
-    std::fs::create_dir_all(&out)
-        .map_err(|e| format!("report: cannot create {}: {e}", out.display()))?;
-    let path = out.join("index.html");
     std::fs::write(&path, html)
         .map_err(|e| format!("report: cannot write {}: {e}", path.display()))?;
     progress(&format!("wrote {}", path.display()));

@@ -11,7 +11,7 @@ struct Args {
     alpha_y: Option<f64>,
     gamma: Option<f64>,
     visible: bool,
-    wi: Vec3,
+    wi: Option<Vec3>,
     n: u64,
     seed: u64,
 }
@@ -23,7 +23,7 @@ fn value<'a>(flag: &str, v: Option<&'a String>) -> Result<&'a str, String> {
 
 fn number(flag: &str, s: &str) -> Result<f64, String> {
     s.parse::<f64>()
-        .map_err(|_| format!("sample: {flag}: '{s}' is not a number"))
+        .map_err(|_| format!("sample: {flag}: '{}' is not a number", crate::clip(s)))
 }
 
 fn parse(args: &[String]) -> Result<Args, String> {
@@ -35,7 +35,7 @@ fn parse(args: &[String]) -> Result<Args, String> {
         alpha_y: None,
         gamma: None,
         visible: false,
-        wi: Vec3::Z,
+        wi: None,
         n: 0,
         seed: 0,
     };
@@ -54,7 +54,8 @@ fn parse(args: &[String]) -> Result<Args, String> {
                     "visible" => true,
                     other => {
                         return Err(format!(
-                            "sample: --mode must be dcos or visible, got '{other}'"
+                            "sample: --mode must be dcos or visible, got '{}'",
+                            crate::clip(other)
                         ))
                     }
                 }
@@ -67,11 +68,13 @@ fn parse(args: &[String]) -> Result<Args, String> {
                 if parts.len() != 3 || parts.iter().any(|x| !x.is_finite()) {
                     return Err("sample: --wi needs three finite numbers X,Y,Z".into());
                 }
-                let w = Vec3::new(parts[0], parts[1], parts[2]);
-                if w.length() == 0.0 {
+                // Any finite nonzero vector, normalised without overflow (1.7e308,0,1.7e308
+                // is the direction (1, 0, 1)/√2).
+                let w = Vec3::new(parts[0], parts[1], parts[2]).to_unit();
+                if w.x.is_nan() {
                     return Err("sample: --wi must not be the zero vector".into());
                 }
-                a.wi = w.normalize();
+                a.wi = Some(w);
             }
             "--n" => {
                 n = Some(
@@ -84,11 +87,26 @@ fn parse(args: &[String]) -> Result<Args, String> {
                     .parse::<u64>()
                     .map_err(|_| "sample: --seed must be a non-negative integer".to_string())?
             }
-            other => return Err(format!("sample: unknown option '{other}'")),
+            other => {
+                return Err(format!(
+                    "sample: unknown option '{}' (see `microfacet sample --help`)",
+                    crate::clip(other)
+                ))
+            }
         }
     }
     a.kind = kind.ok_or("sample: --ndf is required")?;
     a.alpha = alpha.ok_or("sample: --alpha is required")?;
+    if a.kind == NdfKind::Gtr && a.gamma.is_none() {
+        return Err("sample: --gamma is required for gtr (its exponent γ ∈ (0, 100])".into());
+    }
+    if a.wi.is_some() && !a.visible {
+        return Err(
+            "sample: --wi applies to visible normals only (add --mode visible); D·cos \
+             sampling has no incident direction"
+                .into(),
+        );
+    }
     a.n = n.unwrap_or(100_000);
     Ok(a)
 }
@@ -126,14 +144,15 @@ pub fn run(args: &[String]) -> Result<ExitCode, String> {
                 .map_err(|e| format!("sample: {e}"))?,
         )
     };
+    let wi = a.wi.unwrap_or(Vec3::Z);
     let mut rng = SplitMix64(a.seed);
     let mut out = BufWriter::new(std::io::stdout().lock());
     for _ in 0..a.n {
         let u = [rng.next_f64(), rng.next_f64()];
         let m = match (&sampler, a.visible) {
-            (Sampler::Isotropic(s), true) => s.sample_visible(a.wi, u),
+            (Sampler::Isotropic(s), true) => s.sample_visible(wi, u),
             (Sampler::Isotropic(s), false) => s.sample_dcos(u),
-            (Sampler::Stretched(s), true) => s.sample_visible(a.wi, u),
+            (Sampler::Stretched(s), true) => s.sample_visible(wi, u),
             (Sampler::Stretched(s), false) => s.sample_dcos(u),
         };
         if writeln!(out, "{} {} {}", m.x, m.y, m.z).is_err() {

@@ -1,6 +1,10 @@
 //! Hand-written SVG line plots for the report: axes with "nice" ticks, labels, a legend, linear
-//! or logarithmic y, lines, dashed lines, markers and histograms. Every data-bearing element
-//! carries `class="data"` so that tests can check a plot is not an empty frame.
+//! or logarithmic y, lines, dashed lines, two kinds of markers and histograms, and a caption
+//! (formula and source) under each. Every data-bearing element carries `class="data"` so that
+//! tests can check a plot is not an empty frame; the legend sits below the plot area, in a box
+//! of its own (`class="legend-box"`), so it never covers data (the browser test checks that no
+//! legend box contains a vertex of a data path or a marker), and its swatches are drawn in
+//! their series' style (solid, dashed, circles, crosses, bars).
 
 use std::fmt::Write;
 
@@ -20,6 +24,8 @@ pub enum Style {
     Line,
     Dashed,
     Markers,
+    /// Crosses, for a second marker series over the first (circles).
+    Crosses,
     /// Histogram bars: points are (bin centre, height) with equal bin widths.
     Bars,
 }
@@ -30,6 +36,9 @@ pub struct Series {
     pub label: String,
     pub points: Vec<(f64, f64)>,
     pub style: Style,
+    /// The palette index (default: the series' position), so that markers can share the
+    /// colour of the line they check.
+    pub color: Option<usize>,
 }
 
 impl Series {
@@ -38,7 +47,13 @@ impl Series {
             label: label.into(),
             points,
             style,
+            color: None,
         }
+    }
+
+    pub fn color(mut self, k: usize) -> Self {
+        self.color = Some(k);
+        self
     }
 }
 
@@ -50,6 +65,8 @@ pub struct Plot {
     pub y_label: String,
     pub log_y: bool,
     pub series: Vec<Series>,
+    /// What is plotted, its formula and its source (HTML-escaped when rendered).
+    pub caption: String,
 }
 
 impl Plot {
@@ -74,6 +91,20 @@ impl Plot {
     pub fn with(mut self, s: Series) -> Self {
         self.series.push(s);
         self
+    }
+
+    pub fn caption(mut self, text: impl Into<String>) -> Self {
+        self.caption = text.into();
+        self
+    }
+
+    /// The plot and its caption as an HTML `<figure>`.
+    pub fn to_html(&self) -> String {
+        format!(
+            "<figure>{}<figcaption>{}</figcaption></figure>",
+            self.to_svg(),
+            esc(&self.caption)
+        )
     }
 
     /// The y value as plotted (log10 on a log axis; None if not plottable).
@@ -116,10 +147,19 @@ impl Plot {
         let px = |x: f64| LEFT + (x - x0) / (x1 - x0) * (W - LEFT - RIGHT);
         let py = |y: f64| H - BOTTOM - (y.clamp(y0, y1) - y0) / (y1 - y0) * (H - TOP - BOTTOM);
 
+        // The legend: below the plot area, one entry per series, two columns beyond three.
+        let cols = if self.series.len() > 3 { 2 } else { 1 };
+        let rows = self.series.len().div_ceil(cols);
+        let legend_h = if rows == 0 {
+            0.0
+        } else {
+            14.0 * rows as f64 + 8.0
+        };
+        let total_h = H + legend_h;
         let mut s = String::new();
         let _ = write!(
             s,
-            r#"<svg xmlns="http://www.w3.org/2000/svg" class="plot" viewBox="0 0 {W} {H}" width="{W}" height="{H}" role="img" aria-label="{}">"#,
+            r#"<svg xmlns="http://www.w3.org/2000/svg" class="plot" viewBox="0 0 {W} {total_h}" width="{W}" height="{total_h}" role="img" aria-label="{}">"#,
             esc(&self.title)
         );
         let _ = write!(
@@ -188,7 +228,7 @@ impl Plot {
         );
         // Data.
         for (k, series) in self.series.iter().enumerate() {
-            let c = COLORS[k % COLORS.len()];
+            let c = COLORS[series.color.unwrap_or(k) % COLORS.len()];
             let visible: Vec<(f64, f64)> = series
                 .points
                 .iter()
@@ -214,12 +254,12 @@ impl Plot {
                 }
                 Style::Markers => {
                     for (x, y) in &visible {
-                        let _ = write!(
-                            s,
-                            r#"<circle class="data" cx="{:.2}" cy="{:.2}" r="2.6" fill="none" stroke="{c}"/>"#,
-                            px(*x),
-                            py(*y)
-                        );
+                        circle(&mut s, "data", px(*x), py(*y), c);
+                    }
+                }
+                Style::Crosses => {
+                    for (x, y) in &visible {
+                        cross(&mut s, "data", px(*x), py(*y), c);
                     }
                 }
                 Style::Bars => {
@@ -242,20 +282,84 @@ impl Plot {
                     }
                 }
             }
-            // Legend entry.
-            let ly = TOP + 8.0 + 14.0 * k as f64;
-            let lx = W - RIGHT - 150.0;
+        }
+        // The legend, in its own box below the axis label.
+        if !self.series.is_empty() {
             let _ = write!(
                 s,
-                r#"<rect x="{lx:.1}" y="{:.1}" width="12" height="4" fill="{c}"/><text x="{:.1}" y="{:.1}" font-size="10">{}</text>"#,
-                ly - 2.0,
-                lx + 16.0,
-                ly + 3.0,
-                esc(&series.label)
+                r##"<g class="legend"><rect class="legend-box" x="{LEFT}" y="{H}" width="{}" height="{:.1}" fill="#fff" stroke="#ccc"/>"##,
+                W - LEFT - RIGHT,
+                legend_h - 4.0
             );
+            let col_w = (W - LEFT - RIGHT) / cols as f64;
+            for (k, series) in self.series.iter().enumerate() {
+                let c = COLORS[series.color.unwrap_or(k) % COLORS.len()];
+                let lx = LEFT + 8.0 + col_w * (k / rows) as f64;
+                let ly = H + 10.0 + 14.0 * (k % rows) as f64;
+                swatch(&mut s, series.style, lx, ly, c);
+                let _ = write!(
+                    s,
+                    r#"<text x="{:.1}" y="{:.1}" font-size="10">{}</text>"#,
+                    lx + 26.0,
+                    ly + 3.5,
+                    esc(&series.label)
+                );
+            }
+            s.push_str("</g>");
         }
         s.push_str("</svg>");
         s
+    }
+}
+
+/// A marker circle at (x, y).
+fn circle(s: &mut String, class: &str, x: f64, y: f64, c: &str) {
+    let _ = write!(
+        s,
+        r#"<circle class="{class}" cx="{x:.2}" cy="{y:.2}" r="2.6" fill="none" stroke="{c}"/>"#
+    );
+}
+
+/// A marker cross (×) centred at (x, y).
+fn cross(s: &mut String, class: &str, x: f64, y: f64, c: &str) {
+    let _ = write!(
+        s,
+        r#"<path class="{class}" d="M{:.2} {:.2}l6 6m0 -6l-6 6" stroke="{c}" stroke-width="1.3" fill="none"/>"#,
+        x - 3.0,
+        y - 3.0
+    );
+}
+
+/// A legend swatch for `style`, 20 units wide, centred vertically on y.
+fn swatch(s: &mut String, style: Style, x: f64, y: f64, c: &str) {
+    match style {
+        Style::Line | Style::Dashed => {
+            let dash = if style == Style::Dashed {
+                r#" stroke-dasharray="5 3""#
+            } else {
+                ""
+            };
+            let _ = write!(
+                s,
+                r#"<line x1="{x:.1}" y1="{y:.1}" x2="{:.1}" y2="{y:.1}" stroke="{c}" stroke-width="1.6"{dash}/>"#,
+                x + 20.0
+            );
+        }
+        Style::Markers => {
+            circle(s, "swatch", x + 5.0, y, c);
+            circle(s, "swatch", x + 15.0, y, c);
+        }
+        Style::Crosses => {
+            cross(s, "swatch", x + 5.0, y, c);
+            cross(s, "swatch", x + 15.0, y, c);
+        }
+        Style::Bars => {
+            let _ = write!(
+                s,
+                r#"<rect x="{x:.1}" y="{:.1}" width="20" height="8" fill="{c}" fill-opacity="0.35"/>"#,
+                y - 4.0
+            );
+        }
     }
 }
 

@@ -19,11 +19,12 @@ fn parse_list<T>(
 
 fn number(s: &str) -> Result<f64, String> {
     s.parse::<f64>()
-        .map_err(|_| format!("'{s}' is not a number"))
+        .map_err(|_| format!("'{}' is not a number", crate::clip(s)))
 }
 
 pub fn run(args: &[String]) -> Result<ExitCode, String> {
     let mut sweep = Sweep::default();
+    let mut gamma_given = false;
     let mut it = args.iter();
     while let Some(flag) = it.next() {
         match flag.as_str() {
@@ -34,8 +35,17 @@ pub fn run(args: &[String]) -> Result<ExitCode, String> {
             }
             "--alpha" => sweep.alphas = parse_list(flag, it.next(), number)?,
             "--gamma" => sweep.gammas = parse_list(flag, it.next(), number)?,
-            other => return Err(format!("verify: unknown option '{other}'")),
+            other => {
+                return Err(format!(
+                    "verify: unknown option '{}' (see `microfacet verify --help`)",
+                    crate::clip(other)
+                ))
+            }
         }
+        gamma_given |= flag == "--gamma";
+    }
+    if gamma_given && !sweep.kinds.contains(&NdfKind::Gtr) {
+        return Err("verify: --gamma applies to gtr only (add gtr to --ndf)".into());
     }
     // Reject bad parameters up front with the library's own message.
     for &kind in &sweep.kinds {

@@ -5,6 +5,10 @@ use std::io::Write;
 use std::process::{Command, Output, Stdio};
 
 fn microfacet(args: &[&str], stdin: &str) -> Output {
+    microfacet_bytes(args, stdin.as_bytes())
+}
+
+fn microfacet_bytes(args: &[&str], stdin: &[u8]) -> Output {
     let mut child = Command::new(env!("CARGO_BIN_EXE_microfacet"))
         .args(args)
         .stdin(Stdio::piped())
@@ -14,9 +18,9 @@ fn microfacet(args: &[&str], stdin: &str) -> Output {
         .unwrap();
     // Feed stdin from a thread: a large input would otherwise deadlock against a full stdout pipe.
     let mut pipe = child.stdin.take().unwrap();
-    let input = stdin.to_string();
+    let input = stdin.to_vec();
     let feeder = std::thread::spawn(move || {
-        let _ = pipe.write_all(input.as_bytes());
+        let _ = pipe.write_all(&input);
     });
     let out = child.wait_with_output().unwrap();
     feeder.join().unwrap();
@@ -82,7 +86,7 @@ fn eval_reports_bad_lines_and_goes_on() {
     let out = microfacet(&["eval"], input);
     assert_eq!(out.status.code(), Some(1));
     let got = lines(&out.stdout);
-    assert_eq!(got.len(), 14, "one reply per input line");
+    assert_eq!(got.len(), 13, "one reply per non-empty input line");
     let expect = [
         "not valid JSON",
         "unknown ndf 'phong'",
@@ -96,7 +100,6 @@ fn eval_reports_bad_lines_and_goes_on() {
         "only for shape-invariant",
         "field 'alpha' must be a number",
         "expected a JSON object",
-        "not valid JSON",
     ];
     for (g, e) in got.iter().zip(expect) {
         let msg = g["error"]
@@ -105,7 +108,7 @@ fn eval_reports_bad_lines_and_goes_on() {
         assert!(msg.contains(e), "'{msg}' should contain '{e}'");
     }
     assert!(
-        got[13]["value"].as_f64().is_some(),
+        got[12]["value"].as_f64().is_some(),
         "the run goes on after errors"
     );
     assert!(out.stderr.is_empty());
@@ -265,4 +268,167 @@ fn sample_rejects_bad_arguments() {
         assert_eq!(err.lines().count(), 1, "{args:?}: {err}");
         assert!(out.stdout.is_empty(), "{args:?}");
     }
+}
+
+/// One line on stderr, prefixed, and exit 2 (issue 19's CLI items).
+fn one_line_error(out: &Output, needle: &str) {
+    let err = String::from_utf8_lossy(&out.stderr);
+    assert_eq!(out.status.code(), Some(2), "{err}");
+    assert_eq!(err.lines().count(), 1, "{err}");
+    assert!(
+        err.starts_with("microfacet: ") && err.contains(needle),
+        "{err}"
+    );
+}
+
+#[test]
+fn every_subcommand_answers_help_and_the_binary_its_version() {
+    for cmd in ["verify", "eval", "sample", "report"] {
+        for flag in ["--help", "-h"] {
+            let out = microfacet(&[cmd, flag], "");
+            assert!(out.status.success(), "{cmd} {flag}");
+            let text = String::from_utf8_lossy(&out.stdout);
+            assert!(text.contains(&format!("microfacet {cmd}")), "{text}");
+        }
+    }
+    // --help wins over other (even bad) options.
+    assert!(microfacet(&["sample", "--bogus", "--help"], "")
+        .status
+        .success());
+    let out = microfacet(&["--version"], "");
+    assert!(out.status.success());
+    assert_eq!(
+        String::from_utf8_lossy(&out.stdout).trim(),
+        format!("microfacet {}", env!("CARGO_PKG_VERSION"))
+    );
+}
+
+#[test]
+fn options_take_name_equals_value() {
+    let a = microfacet(
+        &["sample", "--ndf=ggx", "--alpha=0.3", "--n=3", "--seed=4"],
+        "",
+    );
+    let b = microfacet(
+        &[
+            "sample", "--ndf", "ggx", "--alpha", "0.3", "--n", "3", "--seed", "4",
+        ],
+        "",
+    );
+    assert!(a.status.success(), "{}", String::from_utf8_lossy(&a.stderr));
+    assert_eq!(a.stdout, b.stdout);
+    assert!(microfacet(&["verify", "--ndf=ggx", "--alpha=0.5"], "")
+        .status
+        .success());
+}
+
+#[test]
+fn sample_argument_rules() {
+    one_line_error(
+        &microfacet(&["sample", "--ndf", "gtr", "--alpha", "0.3"], ""),
+        "--gamma is required",
+    );
+    one_line_error(
+        &microfacet(
+            &["sample", "--ndf", "ggx", "--alpha", "0.3", "--wi", "0,0,1"],
+            "",
+        ),
+        "--wi applies to visible normals only",
+    );
+    // A direction whose length overflows is still a direction: (1, 0, 1)/√2. At α = 1e-6 the
+    // visible normals are the macro normal, so compare with --wi 1,0,1.
+    let args = |wi: &'static str| {
+        [
+            "sample", "--ndf", "ggx", "--alpha", "0.5", "--mode", "visible", "--wi", wi, "--n",
+            "50",
+        ]
+    };
+    let huge = microfacet(&args("1.7e308,0,1.7e308"), "");
+    let unit = microfacet(&args("1,0,1"), "");
+    assert!(
+        huge.status.success(),
+        "{}",
+        String::from_utf8_lossy(&huge.stderr)
+    );
+    assert_eq!(huge.stdout, unit.stdout);
+    one_line_error(&microfacet(&args("0,0,0"), ""), "zero vector");
+    // Large GTR exponents (issue 19 item 1): distinct normals, none on the horizon.
+    for (alpha, gamma) in [("1e-3", "60"), ("1e-6", "100"), ("1e3", "100")] {
+        let out = microfacet(
+            &[
+                "sample", "--ndf", "gtr", "--alpha", alpha, "--gamma", gamma, "--n", "1000",
+            ],
+            "",
+        );
+        let text = String::from_utf8_lossy(&out.stdout);
+        let mut rows: Vec<&str> = text.lines().collect();
+        assert!(rows
+            .iter()
+            .all(|r| r.split(' ').nth(2).unwrap().parse::<f64>().unwrap() > 0.0));
+        rows.sort_unstable();
+        rows.dedup();
+        assert_eq!(rows.len(), 1000, "α = {alpha}, γ = {gamma}");
+    }
+}
+
+#[test]
+fn verify_gamma_needs_gtr() {
+    one_line_error(
+        &microfacet(&["verify", "--ndf", "ggx", "--gamma", "2"], ""),
+        "--gamma applies to gtr only",
+    );
+}
+
+#[test]
+fn eval_reads_numbers_exactly_and_rejects_unknown_fields() {
+    // 0.920728652799906 read 1 ulp off gave Λ 1.6e-13 away (serde_json without
+    // float_roundtrip); mpmath at the exact binary inputs: 1.9092522572204138e-255.
+    let out = microfacet(
+        &["eval"],
+        r#"{"ndf":"beckmann","alpha":0.09840092919672987,"quantity":"lambda","u":0.920728652799906}
+{"ndf":"ggx","alpha":0.3,"alpha_y":0.5,"quantity":"d","u":0.5}
+{"ndf":"ggx","alpha":0.3,"gamma":2,"quantity":"d","u":0.5}
+{"ndf":"ggx","alpha":0.3,"quantity":"d","u":0.5,"p":1}
+"#,
+    );
+    let got = lines(&out.stdout);
+    let v = got[0]["value"].as_f64().unwrap();
+    assert!((v / 1.9092522572204138e-255 - 1.0).abs() < 1e-14, "{v:e}");
+    for (g, field) in got[1..].iter().zip(["alpha_y", "gamma", "p"]) {
+        let e = g["error"].as_str().expect("an error");
+        assert!(e.contains(&format!("unknown field '{field}'")), "{e}");
+    }
+    assert_eq!(out.status.code(), Some(1));
+}
+
+#[test]
+fn eval_skips_empty_lines_answers_bad_bytes_and_clips_echoes() {
+    let mut input = b"\n   \n{\"ndf\":\"ggx\",\"alpha\":0.3,\"quantity\":\"d\",\"u\":1}\n".to_vec();
+    input.extend_from_slice(b"\xff\xfe{\"ndf\"}\n");
+    input.extend_from_slice(
+        format!("{{\"ndf\":\"{}\",\"alpha\":0.3}}\n", "x".repeat(1 << 20)).as_bytes(),
+    );
+    input.extend_from_slice(b"{\"ndf\":\"ggx\",\"alpha\":0.3,\"quantity\":\"g1\",\"u\":1}\n");
+    let out = microfacet_bytes(&["eval"], &input);
+    let got = lines(&out.stdout);
+    assert_eq!(got.len(), 4, "{got:?}");
+    assert!(got[0]["value"].is_number());
+    assert!(got[1]["error"].as_str().unwrap().contains("UTF-8"));
+    let e = got[2]["error"].as_str().unwrap();
+    assert!(
+        e.contains("unknown ndf") && e.len() < 200,
+        "{} bytes",
+        e.len()
+    );
+    assert_eq!(got[3]["value"].as_f64(), Some(1.0));
+    assert_eq!(out.status.code(), Some(1));
+}
+
+#[test]
+fn report_checks_its_directory_first() {
+    one_line_error(
+        &microfacet(&["report", "--out", "/proc/no/such/dir"], ""),
+        "report: cannot",
+    );
+    // (one_line_error: no progress line, so nothing was computed first.)
 }

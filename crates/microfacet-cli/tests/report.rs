@@ -16,6 +16,40 @@ const SECTIONS: [&str; 7] = [
     "verify",
 ];
 
+/// The browser half of the legend check (see `report_is_complete_and_renders`).
+const LEGEND_CHECK: &str = r#"
+const out = {plots: 0, legends: 0, vertices: 0, covered: []};
+document.querySelectorAll('svg.plot').forEach((svg, i) => {
+  out.plots++;
+  const boxes = [...svg.querySelectorAll('.legend-box')].map(r => r.getBBox());
+  out.legends += boxes.length;
+  const pts = [];
+  svg.querySelectorAll('polyline.data').forEach(p => {
+    for (let k = 0; k < p.points.numberOfItems; k++) {
+      const q = p.points.getItem(k); pts.push([q.x, q.y]);
+    }
+  });
+  svg.querySelectorAll('circle.data').forEach(c => pts.push([c.cx.baseVal.value, c.cy.baseVal.value]));
+  svg.querySelectorAll('path.data, rect.data').forEach(e => {
+    const b = e.getBBox();
+    pts.push([b.x, b.y], [b.x + b.width, b.y], [b.x, b.y + b.height], [b.x + b.width, b.y + b.height]);
+  });
+  out.vertices += pts.length;
+  for (const b of boxes) {
+    for (const [x, y] of pts) {
+      if (x >= b.x && x <= b.x + b.width && y >= b.y && y <= b.y + b.height) {
+        out.covered.push({plot: i, title: svg.getAttribute('aria-label'), x, y});
+        break;
+      }
+    }
+  }
+});
+const pre = document.createElement('pre');
+pre.id = 'legend-check';
+pre.textContent = JSON.stringify(out);
+document.body.appendChild(pre);
+"#;
+
 fn svgs(html: &str) -> Vec<&str> {
     html.split("<svg")
         .skip(1)
@@ -78,6 +112,19 @@ fn report_is_complete_and_renders() {
         );
     }
     assert!(!html.contains("<script"), "the page needs no scripts");
+    assert!(html.contains("<figcaption>"), "plots have captions");
+    assert!(
+        html.contains(&format!("microfacet {}", env!("CARGO_PKG_VERSION"))),
+        "version stamp"
+    );
+    assert!(
+        html.contains("<details>"),
+        "the full identity list is folded"
+    );
+    assert!(
+        !html.contains("<h2>double_ggx</h2>"),
+        "headings are names, not code names"
+    );
     assert!(
         !html.contains("src=\"http") && !html.contains("href=\"http"),
         "nothing from the network"
@@ -126,6 +173,39 @@ fn report_is_complete_and_renders() {
         );
     }
     assert_eq!(svgs(&dom_text).len(), plots.len(), "rendered plots");
+
+    // Legends never cover data: a copy of the page with a script that, after layout, tests
+    // every vertex of every data polyline, marker and bar corner of each plot against its
+    // legend box (in the SVG's own coordinates), and writes the verdict into the DOM.
+    let check = dir.join("legend-check.html");
+    std::fs::write(
+        &check,
+        html.replace(
+            "</body>",
+            &format!("<script>{LEGEND_CHECK}</script></body>"),
+        ),
+    )
+    .unwrap();
+    let dom = headless(
+        &chrome,
+        &profile,
+        &["--dump-dom"],
+        &format!("file://{}", check.display()),
+    );
+    let dom_text = String::from_utf8_lossy(&dom.stdout);
+    let verdict = dom_text
+        .split("<pre id=\"legend-check\">")
+        .nth(1)
+        .and_then(|s| s.split("</pre>").next())
+        .expect("the legend check ran");
+    let v: serde_json::Value = serde_json::from_str(&verdict.replace("&quot;", "\"")).unwrap();
+    assert_eq!(v["plots"].as_u64(), Some(plots.len() as u64), "{v}");
+    assert!(
+        v["legends"].as_u64().unwrap() >= plots.len() as u64 - 1,
+        "{v}"
+    );
+    assert!(v["vertices"].as_u64().unwrap() > 10_000, "{v}");
+    assert_eq!(v["covered"].as_array().map(Vec::len), Some(0), "{v}");
 
     let shot = PathBuf::from(env!("CARGO_TARGET_TMPDIR")).join("report.png");
     let s = headless(

@@ -4,13 +4,13 @@
 //! P2(p) = exp(−p²/α²)/(√π α),  f(x) = e^{−x²}/π,
 //! Λ(u) = (e^{−a²}/(a√π) − erfc a)/2 with a = cot θ/α,  σ(0) = α/(2√π).
 //!
-//! Source: seed 000 (`Beckmann`D`, with the exponent corrected per ERRATA A.2; `Beckmann`Δ`
-//! read as Λ per ERRATA A.1). Valid for every α in [1e-6, 1e6].
+//! Source: d'Eon, *A Hitchhiker's Guide to Multiple Scattering*, the GGX page (Beckmann D
+//! with the exponent corrected, derivations.md A.2; its Δ read as Λ, A.1). Valid for every α in [1e-6, 1e6].
 //!
 //! # Numerics
 //! * The exponents tan²θ/α² and a² are formed in double-double: an exponent of 700 with a
 //!   2-ulp error would cost 3e-13 in the result.
-//! * Λ's printed form cancels completely for large a (ERRATA D); for a ≥ 2 we use
+//! * Λ's printed form cancels completely for large a (derivations.md D); for a ≥ 2 we use
 //!   Λ = e^{−a²}/(2a√π) · k/(a + k) with k the tail of the erfc continued fraction
 //!   ([`crate::special::erfc_ratio_tail`]).
 //! * Accuracy (tests/reference.rs): D, P22, P2, Λ, σ, G1 within 1e-13 relative of mpmath over the

@@ -1,12 +1,12 @@
-//! Double GGX: the NDF that is to GGX what GGX is to Beckmann (seed 002),
+//! Double GGX: the NDF that is to GGX what GGX is to Beckmann (the Double GGX page),
 //! D(u, α) = ∫₀^∞ e^{−t} D_GGX(u, α/√t) dt.
 //!
-//! P22(r) = G(α²/r²)/(π α²) with G(c) = c²[(1+c) e^c E₁(c) − 1] (seed 002 In\[695\], the minus
-//! sign restored per ERRATA A.4; Ei(−c) = −E₁(c)), D(u) = G(α²u²/(1−u²))/(π α² u⁴),
+//! P22(r) = G(α²/r²)/(π α²) with G(c) = c²[(1+c) e^c E₁(c) − 1] (the Double GGX page, with the
+//! minus sign restored, derivations.md A.4; Ei(−c) = −E₁(c)), D(u) = G(α²u²/(1−u²))/(π α² u⁴),
 //! f(x) = G(1/x²)/π,
-//! P2(p) = (α²/(2|p|³)) e^{c/2}[(1+c)K₀(c/2) − c K₁(c/2)], c = α²/p² (ERRATA A.16),
+//! P2(p) = (α²/(2|p|³)) e^{c/2}[(1+c)K₀(c/2) − c K₁(c/2)], c = α²/p² (derivations.md A.16),
 //! Λ(u) = (√π U(−½, 0, z) − 1)/2,  z = α² tan²θ,  √π U(−½, 0, z) = x e^x (K₀(x) + K₁(x)), x = z/2
-//! (ERRATA A.5), σ(0) = √π α/2.
+//! (derivations.md A.5), σ(0) = √π α/2.
 //!
 //! Valid for α ∈ [1e-6, 1e6].
 //!

@@ -1,11 +1,11 @@
-//! The Exponential NDF (seed 004): exponentially distributed slope magnitudes.
+//! The Exponential NDF (the Exponential NDF page): exponentially distributed slope magnitudes.
 //!
 //! D(u) = 2 exp(−2 tan θ/α)/(π α² u⁴),  P22(r) = 2 e^{−2r/α}/(π α²),  f(x) = 2 e^{−2x}/π
-//! (ERRATA A.11),  P2(p) = (4|p|/(π α²)) K₁(2|p|/α) (ERRATA A.14),  σ(0) = α/π.
+//! (derivations.md A.11),  P2(p) = (4|p|/(π α²)) K₁(2|p|/α) (derivations.md A.14),  σ(0) = α/π.
 //! It is a Gamma(3/2) superposition of Beckmann NDFs with roughness α√m, and a Chi-3
 //! superposition with roughness α m/√2 ([`crate::mixture`]).
 //!
-//! Λ and σ: the page says they are not known analytically; ERRATA A.14 derives
+//! Λ and σ: the page says they are not known analytically; derivations.md A.14 derives
 //! Λ = (2K₁(z) − Ki₁(z))/π, z = 2 cot θ/α (Ki₁ the Bickley function). We compute them exactly
 //! by the Smith integral of [`crate::smith`] (tanh-sinh quadrature with e^{−2a/α} factored out,
 //! relative tolerance 1e-13; documented accuracy 1e-10, measured ≤ 1e-13 against mpmath).
@@ -140,7 +140,7 @@ impl ShapeInvariant for Exponential {
     }
 }
 
-/// The page's approximations (seed 004), kept as named approximations.
+/// The page's approximations (the Exponential NDF page), kept as named approximations.
 ///
 /// | approximation | max. abs. error vs the exact Exponential NDF (measured, tests/approximations.rs) |
 /// |---|---|
@@ -149,7 +149,7 @@ impl ShapeInvariant for Exponential {
 /// | [`approx::ei_sigma`]`(u, 1.7α)` | σ over u ∈ [−1, 1]: 2.1e-4 (α = 0.05), 1.7e-3 (α = 0.5), 2.5e-3 (α = 1) |
 ///
 /// `ei_lambda` and `ei_sigma` are the *exact* Λ and σ of a different NDF,
-/// P22 = E₁(r²/α²)/(π α²) (a uniform mixture of Beckmann roughness² over [0, α²], ERRATA B.7);
+/// P22 = E₁(r²/α²)/(π α²) (a uniform mixture of Beckmann roughness² over [0, α²], derivations.md B.7);
 /// with α scaled by 1.7 they approximate the Exponential NDF to 3e-3 in σ.
 pub mod approx {
     use crate::special::{erfc, erfc_ratio_tail};
@@ -202,7 +202,7 @@ pub mod approx {
     }
 
     /// The page's rational fit `Exponential`G1approx[u, α]` (coefficients as printed, the
-    /// garbled powers read as x³ and x⁴, ERRATA A.13); x = cot θ/(1.7 α), G1 = 1 for x ≥ 1.5.
+    /// garbled powers read as x³ and x⁴, derivations.md A.13); x = cot θ/(1.7 α), G1 = 1 for x ≥ 1.5.
     pub fn g1_rational(u: f64, alpha: f64) -> f64 {
         let u = u.abs();
         if u >= 1.0 {

@@ -51,10 +51,14 @@ pub struct UnknownNdf(pub String);
 
 impl fmt::Display for UnknownNdf {
     fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
+        // At most 60 characters of the name are echoed (a 1 MB name is not).
+        let name = match self.0.char_indices().nth(60) {
+            Some((i, _)) => format!("{}…", &self.0[..i]),
+            None => self.0.clone(),
+        };
         write!(
             f,
-            "unknown ndf '{}' (expected one of beckmann, ggx, gtr, double_ggx, exponential)",
-            self.0
+            "unknown ndf '{name}' (expected one of beckmann, ggx, gtr, double_ggx, exponential)"
         )
     }
 }

@@ -4,11 +4,12 @@
 //! f(x) = 1/(π (1 + x²)²),  Λ(u) = (−1 + √(1 + α² tan²θ))/2,
 //! σ(u) = (u + √(α² + u²(1 − α²)))/2 on [−1, 1],  σ(0) = α/2.
 //!
-//! Source: seed 000 (Λ as In\[2645\]; Out\[532\] is garbled, ERRATA A.3). Any α in [1e-6, 1e6].
+//! Source: d'Eon, *A Hitchhiker's Guide to Multiple Scattering*, the GGX page (Λ; one
+//! derivation line is garbled, derivations.md A.3); Walter et al. 2007. Any α in [1e-6, 1e6].
 //!
 //! # Numerics
 //! * 1 + u²(α² − 1) is evaluated as (1 − u²) + u²α² (a sum of positive terms).
-//! * Λ = s/(2(1 + √(1+s))), s = α² tan²θ, which does not cancel as s → 0 (ERRATA D).
+//! * Λ = s/(2(1 + √(1+s))), s = α² tan²θ, which does not cancel as s → 0 (derivations.md D).
 //! * Accuracy: closed forms within 1e-14 relative (tests/reference.rs).
 
 use crate::error::{check_alpha, ParamError};

@@ -2,18 +2,18 @@
 //!
 //! D(u) = c / (1 + (α² − 1) u²)^γ,  c = (γ − 1)(α² − 1) / (π (1 − α^{2(1−γ)})),
 //! P22(r) = c (1 + r²)^{γ−2} (r² + α²)^{−γ},
-//! P2(p) = (π c/2)(1+p²)^{γ−2}(α²+p²)^{1/2−γ} ₂F₁(½, 2−γ; 2; (1−α²)/(1+p²))  (ERRATA A.9).
+//! P2(p) = (π c/2)(1+p²)^{γ−2}(α²+p²)^{1/2−γ} ₂F₁(½, 2−γ; 2; (1−α²)/(1+p²))  (derivations.md A.9).
 //!
-//! Special cases (seeds 001, 003): γ = 1, c = (α² − 1)/(π ln α²), with closed Λ (ERRATA A.8),
+//! Special cases (Burley 2012, appendix B, eqs. 4–9; the GTR page): γ = 1, c = (α² − 1)/(π ln α²), with closed Λ (derivations.md A.8),
 //! σ and P2; γ = 3/2, c = α(1+α)/(2π), P2 = α(K(m) − E(m))/(π(α−1)√(p²+α²)),
 //! m = (α²−1)/(p²+α²); γ = 2 is GGX. α = 1 gives D ≡ 1/π for every γ.
 //!
-//! Valid parameters: α ∈ [1e-6, 1e6] (α > 1 allowed: D then grows towards grazing, ERRATA E),
+//! Valid parameters: α ∈ [1e-6, 1e6] (α > 1 allowed: D then grows towards grazing, derivations.md E),
 //! γ ∈ (0, 100]. GTR is not shape invariant (γ ≠ 2).
 //!
 //! # Methods and accuracy
 //! * c: `c = expm1(L)/(πL) · t/(−expm1(−t))`, L = ln α², t = (γ−1)L, which is exact at the
-//!   removable singularities α = 1 and γ = 1 and has no 0/0 near them (ERRATA D); when c or the
+//!   removable singularities α = 1 and γ = 1 and has no 0/0 near them (derivations.md D); when c or the
 //!   power under- or overflows, D = exp(ln c − γ ln w). Closed forms: ≤ 1e-13 relative.
 //! * Λ and σ for γ ≠ 1, 2: the Smith integral in polar slope coordinates ([`crate::smith`]),
 //!   tanh-sinh quadrature to 1e-13 (documented bound 1e-10; measured ≤ 1e-13 against mpmath).
@@ -83,8 +83,8 @@ pub(crate) struct Burley {
 }
 
 impl Burley {
-    /// tan²θ at the slope CDF's quantile ξ ∈ (0, 1), by Burley's inversion (seed 001 eqs
-    /// 3–9) for ℓ = ln w, k = 1 − γ:
+    /// tan²θ at the slope CDF's quantile ξ ∈ (0, 1), by Burley's inversion (Burley 2012,
+    /// appendix B, eqs. 3–9) for ℓ = ln w, k = 1 − γ:
     ///   e^{kℓ} = (1−ξ) e^{kL} + ξ  and  e^{k(ℓ−L)} = (1−ξ) + ξ e^{−kL},
     ///   tan²θ = e^ℓ expm1(L − ℓ)/expm1(ℓ),
     /// with five libm calls per quantile (the exponentials of ±kL are the constants).
@@ -255,7 +255,7 @@ impl Gtr {
         2.0 * self.smith(a) / a
     }
 
-    /// Λ for γ = 1 at a = cot θ ∈ (0, 1e150]: the form of [`Ndf::lambda`] (seed 003, ERRATA
+    /// Λ for γ = 1 at a = cot θ ∈ (0, 1e150]: the form of [`Ndf::lambda`] (the GTR page, derivations.md
     /// A.8, rearranged) with u = a/ρ, 1 − u² = 1/ρ², ρ = √(1 + a²):
     /// Λ = E(L)(1 − ln1p(x)/(x(1 + S)))/(a ρ (1 + uS′)), x = −expm1(L)/(a ρ (1 + uS′)(1 + S)),
     /// S = √(1 + α²/a²), uS′ = √(a² + α²)/ρ, L = ln α², E(L) = expm1(L)/L.
@@ -340,7 +340,7 @@ impl Ndf for Gtr {
         match self.case {
             Case::Two => Ggx::raw(self.alpha).p2(p),
             Case::One => {
-                // E(L)/(√A √B (√A + √B)), A = 1+p², B = p²+α² (ERRATA D, stable form).
+                // E(L)/(√A √B (√A + √B)), A = 1+p², B = p²+α² (derivations.md D, stable form).
                 let sa = (1.0 + p2).sqrt();
                 let sb = (p2 + a2).sqrt();
                 expm1_over_x(2.0 * self.alpha.ln()) / (sa * sb * (sa + sb))
@@ -363,7 +363,7 @@ impl Ndf for Gtr {
         match self.case {
             Case::Two => Ggx::raw(self.alpha).lambda_pos(u),
             Case::One => {
-                // Seed 003 (ERRATA A.8) rearranged: with S = √(1 + α² tan²θ), k = (1−u²)(1−α²)/(1+uS),
+                // The GTR page's form (derivations.md A.8) rearranged: with S = √(1 + α² tan²θ), k = (1−u²)(1−α²)/(1+uS),
                 // Λ = (1−u²) E(L) (S + 1 − ln1p(x)/x) / (u (1+uS)(1+S)),  x = k/(u(1+S)), E(L) = expm1(L)/L.
                 let a = self.alpha;
                 let one_u2 = Dd::one_minus_sq(u).hi;
@@ -397,7 +397,7 @@ impl Ndf for Gtr {
     fn sigma_zero(&self) -> f64 {
         match self.case {
             Case::Two => self.alpha / 2.0,
-            // lim u→0 of seed 003 σ(u, α, 1) = (α − 1)/ln α² = E(ln α)/2.
+            // lim u→0 of the GTR page's σ(u, α, 1) = (α − 1)/ln α² = E(ln α)/2.
             Case::One => expm1_over_x(self.alpha.ln()) / 2.0,
             _ => 2.0 * self.smith(0.0),
         }

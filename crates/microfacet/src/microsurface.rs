@@ -8,12 +8,15 @@
 //! with roughness (αx, αy): the α = 1 slopes are sampled and stretched by (αx, αy)
 //! (pbrt's recipe: stretch, sample the α = 1 slopes, unstretch, build the normal).
 //!
-//! Conventions: directions are unit vectors (a zero vector is not a direction and gives NaN);
-//! they may be up-welling (w.z < 0) or grazing. Λ(w) depends on w only
-//! through tan²θ (the masking of the side w comes from). G1(w, wm) is 0 when w·wm and w.z
-//! disagree in sign. For w.z < 0 the visible normals are those seen from −w (the
-//! microsurface seen from below is sampled through its mirror image, as in pbrt-v4); so
-//! `sample_visible(w, u) == sample_visible(−w, u)` and the pdf matches.
+//! Conventions: a direction w is any finite nonzero vector (it is normalised, without
+//! overflow for lengths up to f64::MAX; a zero or NaN vector is not a direction and gives
+//! NaN). It may lie below the horizon (w.z < 0, the side of the surface opposite the macro
+//! normal) or on it. Λ(w) depends on w only through tan²θ (the masking of the side w comes
+//! from). G1(w, wm) is 0 when w·wm and w.z disagree in sign. For w.z < 0 the visible
+//! normals are those seen from −w (the microsurface seen from below is sampled through its
+//! mirror image, as in pbrt-v4); so `sample_visible(w, u) == sample_visible(−w, u)` and the
+//! pdf matches. Normals given to D, the pdfs and the inverses are normalised the same way;
+//! an inverse answers NaN for a normal no sampler returns (zero, NaN, below the horizon).
 
 use crate::ndf::Ndf;
 use crate::sample::RadialSlopes;
@@ -97,6 +100,23 @@ fn upper(w: Vec3) -> Vec3 {
         -w
     } else {
         w
+    }
+}
+
+/// m, or where rounding has tipped it to face away from the unit w (w·m < 0), m less its
+/// component along w, renormalised (w·m = 0 to rounding; m.z only grows, as w.z ≥ 0).
+///
+/// Every visible-normal sampler draws m with w·m ≥ 0 exactly, but the unstretch magnifies
+/// the rounding of the α = 1 slopes (by up to αmax/αmin), and near the cap's antipode of w
+/// the spherical-cap construction is a difference of near-opposite vectors: the computed
+/// w·m can come out slightly negative for a normal nearly perpendicular to w. This puts it
+/// back on the boundary it rounded past.
+fn facing(m: Vec3, w: Vec3) -> Vec3 {
+    let d = m.dot(w);
+    if d < 0.0 {
+        (m - w * d).normalize()
+    } else {
+        m
     }
 }
 
@@ -285,7 +305,10 @@ impl Microsurface for Stretched {
             self.kind.sample(a, u)
         };
         // Rotate from the frame of the stretched w back, then unstretch.
-        self.normal_from_unit_slopes(c * x - s * y, s * x + c * y)
+        facing(
+            self.normal_from_unit_slopes(c * x - s * y, s * x + c * y),
+            upper(w),
+        )
     }
 
     fn invert_visible(&self, w: Vec3, wm: Vec3) -> [f64; 2] {
@@ -314,13 +337,7 @@ fn ggx_spherical_cap(a: f64, u: [f64; 2]) -> (f64, f64) {
     let above = (1.0 - u[1]) * (1.0 + wz);
     let z = above - wz;
     let sin = (1.0 - z * z).max(0.0).sqrt();
-    let (mut hx, mut hy, mut hz) = (sin * phi.cos() + wx, sin * phi.sin(), above);
-    // h·w = |h|²/2 ≥ 0 exactly; where the cap point is nearly −w (u₁ → 1) the rounding of h
-    // can tip it below 0 (a normal facing away from w): remove h's component against w.
-    let d = hx * wx + hz * wz;
-    if d < 0.0 {
-        (hx, hy, hz) = (hx - d * wx, hy, hz - d * wz);
-    }
+    let (hx, hy, hz) = (sin * phi.cos() + wx, sin * phi.sin(), above);
     // Slopes of h ∝ (x̃, ỹ, 1).
     (hx / hz, hy / hz)
 }
@@ -392,7 +409,10 @@ impl<N: Ndf + RadialSlopes> Microsurface for Isotropic<N> {
     fn sample_visible(&self, w: Vec3, u: [f64; 2]) -> Vec3 {
         let (a, c, s) = Self::frame(w);
         let (r, psi) = crate::visible::radial::sample(&self.0, a, u);
-        crate::sample::normal_from_polar_slope(r, psi + s.atan2(c))
+        facing(
+            crate::sample::normal_from_polar_slope(r, psi + s.atan2(c)),
+            upper(w),
+        )
     }
 
     fn invert_visible(&self, w: Vec3, wm: Vec3) -> [f64; 2] {
@@ -458,18 +478,15 @@ impl GgxBounded {
         let above = (1.0 - u[1]) * (1.0 + b);
         let z = above - b;
         let sin = (1.0 - z * z).max(0.0).sqrt();
-        let mut m = Vec3::new(
+        let m = Vec3::new(
             sin * phi.cos() + ws.x,
             sin * phi.sin() + ws.y,
             above + (ws.z - b),
         );
-        // m·w' ≥ 0 exactly (as in the full cap, `ggx_spherical_cap`); rounding near the cap's
-        // antipode of w' can tip it below 0: remove m's component against w'.
-        let d = m.dot(ws);
-        if d < 0.0 {
-            m = m - ws * d;
-        }
-        Vec3::new(self.ggx.alpha_x * m.x, self.ggx.alpha_y * m.y, m.z.max(0.0)).normalize()
+        facing(
+            Vec3::new(self.ggx.alpha_x * m.x, self.ggx.alpha_y * m.y, m.z.max(0.0)).normalize(),
+            upper(w),
+        )
     }
 
     /// The cap point c that `sample` used for `wm` (the reflection of w' about m'), and w'.

@@ -9,7 +9,7 @@
 //! |---|---|---|
 //! | Beckmann | 1 − e^{−x²} | closed form |
 //! | GGX | x²/(1 + x²) | closed form |
-//! | GTR | Burley's CDF, expm1((γ−1)X)/expm1((γ−1)L), X = ln(α²/w) (seed 001, ERRATA B.3) | closed form (eqs 3, 5, 7, 9 in one stable formula) |
+//! | GTR | Burley's CDF, expm1((γ−1)X)/expm1((γ−1)L), X = ln(α²/w) (Burley 2012, appendix B, eq. 3; derivations.md B.3) | closed form (eqs 3, 5, 7, 9 in one stable formula) |
 //! | Double GGX | 1 − c e^c E₁(c), c = 1/x² | Newton on F (1e-15) |
 //! | Exponential | 1 − (1 + 2x) e^{−2x} | Newton on F (1e-15) |
 //!

@@ -71,7 +71,7 @@ pub fn smith_integral(p_of_offset: impl Fn(f64) -> f64, a: f64, scale: f64) -> f
 /// The projected-area kernel Δσ(u, u_i) = ∫₀^{2π} max(0, ω·m) dφ_m for cos θ = u (direction)
 /// and cos θm = u_i (normal): 2(√(B² − A²) + A·acos(−A/B)) with A = u u_i,
 /// B = √(1−u²)√(1−u_i²); 2π A when A ≥ B (every azimuth lit) and 0 when A ≤ −B (none lit).
-/// σ(u) = ∫₀¹ D(u_i) Δσ(u, u_i) du_i (seed 000; ERRATA B.1).
+/// σ(u) = ∫₀¹ D(u_i) Δσ(u, u_i) du_i (the GGX page; derivations.md B.1).
 pub fn delta_sigma(u: f64, ui: f64) -> f64 {
     let a = u * ui;
     let b = ((1.0 - u * u) * (1.0 - ui * ui)).max(0.0).sqrt();

@@ -3,9 +3,9 @@
 //! superposition and then the component (they consume a variable number of uniforms, so they
 //! are not warps of `[f64; 2]`; the deterministic samplers are in [`crate::sample`]).
 //!
-//! * [`DoubleGgxMixture`]: t ~ Gamma(1) = Exp(1), then GGX with roughness α/√t (seed 002).
-//! * [`GgxBeckmannMixture`]: t ~ Exp(1), then Beckmann with roughness α/√t (seed 000).
-//! * [`ExponentialChi3`]: three Gaussians and one uniform (seed 004):
+//! * [`DoubleGgxMixture`]: t ~ Gamma(1) = Exp(1), then GGX with roughness α/√t (the Double GGX page).
+//! * [`GgxBeckmannMixture`]: t ~ Exp(1), then Beckmann with roughness α/√t (the GGX page).
+//! * [`ExponentialChi3`]: three Gaussians and one uniform (the Exponential NDF page):
 //!   cos θm = 1/√(1 − (α²/2)(g₁² + g₂² + g₃²) ln u₁), azimuth uniform.
 
 use crate::sample::{normal_from_polar_slope, RadialSlopes};

@@ -49,12 +49,15 @@ impl Vec3 {
     /// or non-finite vector, which has no direction.
     #[inline]
     pub fn to_unit(self) -> Vec3 {
-        let l = self.length();
-        if l > 0.0 && l.is_finite() {
-            Vec3::new(self.x / l, self.y / l, self.z / l)
-        } else {
-            Vec3::new(f64::NAN, f64::NAN, f64::NAN)
+        // Divided by the largest magnitude first: the length of (1.7e308, 0, 1.7e308)
+        // itself overflows.
+        let m = self.x.abs().max(self.y.abs()).max(self.z.abs());
+        if !(m > 0.0 && m.is_finite()) || self.x.is_nan() || self.y.is_nan() || self.z.is_nan() {
+            return Vec3::new(f64::NAN, f64::NAN, f64::NAN);
         }
+        let v = Vec3::new(self.x / m, self.y / m, self.z / m);
+        let l = v.length();
+        Vec3::new(v.x / l, v.y / l, v.z / l)
     }
 
     /// The unit normal with slopes (p, q): (−p, −q, 1)/√(1 + p² + q²), computed without

@@ -295,7 +295,8 @@ pub mod radial {
     /// P(r ≤ X) for visible normals, cot θ = a (a = ∞: the D·cos CDF).
     pub fn r_cdf<N: Ndf + RadialSlopes + ?Sized>(n: &N, a: f64, z: f64, x: f64) -> f64 {
         if a == f64::INFINITY {
-            return n.slope_cdf(x);
+            // (The clamp: a CDF may round a few ulp past 1.)
+            return n.slope_cdf(x).clamp(0.0, 1.0);
         }
         if x <= a {
             (a * n.slope_cdf(x) / z).clamp(0.0, 1.0)

@@ -1,5 +1,5 @@
 //! The Exponential page's approximations, measured against the exact values. The figures
-//! asserted here are the ones stated in `exponential::approx`'s docs (and ERRATA §C).
+//! asserted here are the ones stated in `exponential::approx`'s docs (and derivations.md C).
 
 use microfacet::exponential::approx::{ei_g1, ei_sigma, g1_rational};
 use microfacet::{Exponential, Ndf};
@@ -44,14 +44,14 @@ fn rational_g1_fit() {
     println!("G1approx: max abs error {vs_exact:.3e} vs exact, {vs_ei:.3e} vs Ei G1(1.7α)");
     assert!((3.0e-3..3.1e-3).contains(&vs_exact), "{vs_exact}");
     assert!(vs_ei < 3.5e-5, "{vs_ei}");
-    // The jump at the x = 1.5 switch (ERRATA §C): 0.99939 → 1.
+    // The jump at the x = 1.5 switch (derivations.md C): 0.99939 → 1.
     let u = u_of(1.5 * 1.7 * (1.0 - 1e-12), 1.0);
     assert!((g1_rational(u, 1.0) - 0.99939).abs() < 1e-5);
 }
 
 #[test]
 fn ei_sigma_with_alpha_scaled_by_1_7() {
-    // ERRATA §C: 2.1e-4 (α = 0.05), 1.7e-3 (0.5), 2.5e-3 (1.0) over u ∈ [−1, 1].
+    // derivations.md C: 2.1e-4 (α = 0.05), 1.7e-3 (0.5), 2.5e-3 (1.0) over u ∈ [−1, 1].
     for (alpha, expected) in [(0.05, 2.1e-4), (0.5, 1.7e-3), (1.0, 2.5e-3)] {
         let exact = Exponential::new(alpha).unwrap();
         let worst = (0..=2000)

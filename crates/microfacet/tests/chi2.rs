@@ -154,7 +154,7 @@ fn run_isotropic<N: microfacet::Ndf + microfacet::RadialSlopes>(
 ) {
     let a = n.alpha();
     let m = Isotropic(n);
-    // GTR with γ ≤ 1 is not specular as α → 0 (ERRATA E): most of its visible area is at
+    // GTR with γ ≤ 1 is not specular as α → 0 (derivations.md E): most of its visible area is at
     // grazing normals, which a near-specular reference grid lumps into a few cells.
     let coords = if m.0.d(0.5) > 0.05 {
         reference(1.0, 1.0)

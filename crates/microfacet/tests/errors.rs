@@ -85,7 +85,7 @@ fn evaluation_at_the_edges() {
 
 #[test]
 fn sigma_zero_limits_match_errata() {
-    // ERRATA E: σ(0) = √π α/2 (Double GGX), α/2 (GGX), α/(2√π) (Beckmann), α/π (Exponential).
+    // derivations.md E: σ(0) = √π α/2 (Double GGX), α/2 (GGX), α/(2√π) (Beckmann), α/π (Exponential).
     let a = 0.37;
     let sp = std::f64::consts::PI.sqrt();
     let close = |x: f64, y: f64| (x / y - 1.0).abs() < 1e-15;

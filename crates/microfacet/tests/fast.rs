@@ -1064,7 +1064,7 @@ fn gtr_fast_vndf_is_the_visible_distribution() {
             let exact = Gtr::new(a, g).unwrap();
             let fast = FastGtr::new(a, g).unwrap();
             // GTR with γ ≤ 1 keeps much of its visible area at grazing normals as α → 0
-            // (ERRATA E): a near-specular reference grid would lump it into a few cells.
+            // (derivations.md E): a near-specular reference grid would lump it into a few cells.
             let ref_alpha = if exact.d(0.5) > 0.05 { 1.0 } else { 1.5 * a };
             let coords = Stretched::new(UnitSlopes::Ggx, ref_alpha, ref_alpha).unwrap();
             for deg in degs {

@@ -91,7 +91,7 @@ fn gamma_two_is_ggx() {
 
 #[test]
 fn gamma_below_one_is_not_specular() {
-    // ERRATA E: for γ < 1, c → (1 − γ)/π as α → 0 and D → (1 − γ)/(π (1 − u²)^γ).
+    // derivations.md E: for γ < 1, c → (1 − γ)/π as α → 0 and D → (1 − γ)/(π (1 − u²)^γ).
     let g = 0.5;
     let n = Gtr::new(1e-6, g).unwrap();
     assert!(rel(n.c(), (1.0 - g) / PI) < 1e-6);

@@ -273,7 +273,7 @@ fn ggx_bounded_vndf_properties() {
 
 #[test]
 fn gtr_quantile_matches_burleys_special_forms() {
-    // Burley 2012 appendix B, with ξ = P(cos θh ≥ u) (ERRATA B.3):
+    // Burley 2012 appendix B, with ξ = P(cos θh ≥ u) (derivations.md B.3):
     // γ = 1: cos²θ = (α^{2(1−ξ)} − 1)/(α² − 1)          (eq 5)
     // γ = 3/2: w = (1 + (1−ξ)(1/α − 1))^{−2}, cos²θ = (w − 1)/(α² − 1)   (eq 7)
     // γ = 2: cos²θ = (1 − ξ)/(1 + (α² − 1) ξ)            (eq 9)

@@ -70,6 +70,6 @@ fn cancellation_free_combinations() {
 
 #[test]
 fn hypergeometric_u_identity_holds_in_mpmath() {
-    // √π U(−½, 0, 2x) = x eˣ (K₀(x) + K₁(x)) (ERRATA A.5), checked by the script at 30 digits.
+    // √π U(−½, 0, 2x) = x eˣ (K₀(x) + K₁(x)) (derivations.md A.5), checked by the script at 30 digits.
     assert!(data()["u_identity_max_rel"].as_f64().unwrap() < 1e-25);
 }

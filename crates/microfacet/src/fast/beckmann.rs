@@ -8,8 +8,9 @@
 //!   Z − N(X) = (a/2) erfc X + e^{−X²}/(2√π),  Z = a(1 + Λ(a)),
 //!
 //! (the second form has no cancellation for X > 0), and ỹ is Gaussian: ỹ = erfinv(2u₂ − 1).
-//! x̃ starts from a bilinear table of the inverse over (1/(1 + a), u₁) (built from the exact
-//! sampler on first use, guess error about 1e-4) and is finished by safeguarded Halley steps
+//! x̃ starts from a bilinear table of the inverse over (1/(1 + a), u₁) (`BECKMANN_GUESS` in
+//! tables.rs, generated from the exact sampler by `examples/gen_fast_tables.rs`; guess error
+//! about 1e-4) and is finished by safeguarded Halley steps
 //! on N (two, typically; every step is bracketed, so the tails, where the table is coarse,
 //! only take more steps). [`erfinv`] is a Chebyshev table of erfinv(v)/v in w = −ln(1 − v²)
 //! (fit error below 1e-15). Accuracy against the exact sampler: tests/fast.rs.
@@ -36,7 +37,7 @@ pub fn d<F: Real>(u: F, alpha: F) -> F {
     let a2 = alpha * alpha;
     let x = (F::ONE - u) * (F::ONE + u) / (u2 * a2);
     // f32 past x = 80: see above (a test on the precision, removed by the compiler in f64).
-    if F::IS_F32 && !(x <= F::from_f64(80.0)) {
+    if F::IS_F32 && x > F::from_f64(80.0) {
         return F::from_f64(d(u.to_f64(), alpha.to_f64()));
     }
     // e^{−x} underflows (in f64) past 745; so does D, and u⁴ may too (0/0), so answer 0.
@@ -295,5 +296,5 @@ pub fn sample_visible<F: Real>(w: [F; 3], ax: F, ay: F, u: [F; 2]) -> [F; 3] {
     let (c, h, cp, sp) = super::slope_frame(w, ax, ay);
     let a = if h == 0.0 { f64::INFINITY } else { c / h };
     let (x, y) = sample_visible11(a, [u[0].to_f64(), u[1].to_f64()]);
-    super::normal_from_slopes(x, y, (cp, sp), ax, ay)
+    super::facing(super::normal_from_slopes(x, y, (cp, sp), ax, ay), w)
 }

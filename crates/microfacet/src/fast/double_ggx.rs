@@ -85,7 +85,7 @@ pub fn lambda<F: Real>(u: F, alpha: F) -> F {
     let x = 0.5 * a * a * ((1.0 - u) * (1.0 + u)) / (u * u);
     // x ≥ 2^16 is the grazing expansion; where x itself overflows (u² underflows, or
     // α² tan²θ passes f64::MAX) Λ is still finite, and √x is formed without x.
-    if !(x < fit::pow2(DGGX_K1)) {
+    if x >= fit::pow2(DGGX_K1) || x.is_nan() {
         return F::from_f64(lambda_grazing(u, a));
     }
     F::from_f64(lambda_x(x))
@@ -185,7 +185,7 @@ pub fn sample_visible<F: Real>(
     let mut w = [w[0].to_f64(), w[1].to_f64(), w[2].to_f64()];
     let n2 = w[0] * w[0] + w[1] * w[1] + w[2] * w[2];
     // Far from unit length (squares near the ends of the range, or NaN): rescaled.
-    if !(n2 >= 1e-200 && n2 <= 1e200) {
+    if !(1e-200..=1e200).contains(&n2) {
         w = super::rescaled(w);
     }
     let sign = if w[2] < 0.0 { -1.0 } else { 1.0 };
@@ -238,5 +238,6 @@ pub fn sample_visible<F: Real>(
     // GGX's visible normal at (αx, αy)/√t, as the stretch (αx, αy, √t).
     let u = [u[0].to_f64(), u[1].to_f64()];
     let m = super::ggx_visible_stretched_len([wx, wy, wz], ax, ay, s, u, len);
+    let m = super::facing(m, [wx, wy, wz]);
     [F::from_f64(m[0]), F::from_f64(m[1]), F::from_f64(m[2])]
 }

@@ -1,6 +1,6 @@
 //! The Exponential NDF: Λ, σ, G1, G2 from a generated octave table (relative error ≤ 1e-7
 //! required; the measured figure is in tests/fast.rs and BENCHMARKS.md), against the exact
-//! [`crate::Exponential`], Λ = (2K₁(z) − Ki₁(z))/π, z = 2 cot θ/α (ERRATA A.14).
+//! [`crate::Exponential`], Λ = (2K₁(z) − Ki₁(z))/π, z = 2 cot θ/α (derivations.md A.14).
 //!
 //! The variable is z = 2u/(α√((1 − u)(1 + u))). Λ falls like e^{−z}/√z; it is read from
 //! generated tables (`examples/gen_fast_tables.rs`) in four ranges:
@@ -287,7 +287,7 @@ pub fn sample_visible<F: Real>(
             break;
         }
     }
-    super::normal_from_slopes(x, y, (cp, sp), ax, ay)
+    super::facing(super::normal_from_slopes(x, y, (cp, sp), ax, ay), w)
 }
 
 #[cfg(test)]

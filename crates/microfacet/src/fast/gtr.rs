@@ -33,8 +33,9 @@
 //!   segment spans at most a factor 3·10^7 there) and absolutely below.
 //!
 //! Construction evaluates the exact Λ about 1 500 times (184 rows of 7 nodes at α = 0.3,
-//! γ = 1.5, plus the segment ends for the accuracy check; about ten milliseconds;
-//! BENCHMARKS.md has the measured figure). [`Gtr::lambda_cot`] takes cot θ = a directly and
+//! γ = 1.5, plus the segment ends for the accuracy check): 24 ms at α = 0.3, γ = 1.5, 1–1.5
+//! ms at γ = 1, 2, up to 93 ms at α = 1e-6, γ = 100 (medians of 9 on the 2-core CI machine
+//! class; the README has the range, BENCHMARKS.md the bench's mean over 64 materials). [`Gtr::lambda_cot`] takes cot θ = a directly and
 //! forms u = a/r and w = 1/(r(r + a)), r = √(1 + a²), both without cancellation.
 //!
 //! Range: the features of P22 = c(1 + r²)^{γ−2}(r² + α²)^{−γ} lie at slopes r ~ α, 1 and √γ
@@ -588,11 +589,11 @@ impl Gtr {
         }
         // (x, y) has length r in both parts (to rounding), so the normal's length comes
         // from r alone.
-        super::normal_from_slopes_r(x, y, radius, (cp, sp))
+        super::facing(super::normal_from_slopes_r(x, y, radius, (cp, sp)), w)
     }
 
     /// A normal distributed as D(m) cos θm, u ∈ [0, 1]²: Burley's closed-form inversion
-    /// (seed 001 eqs 3–9, in the stable arrangement of the exact path,
+    /// (Burley 2012, appendix B, eqs. 3–9, in the stable arrangement of the exact path,
     /// [`crate::sample::RadialSlopes`]) for tan θ = F⁻¹(u₀), azimuth 2πu₁; a warp of u with the
     /// exact sampler's accuracy. Evaluated in f64; the material's exponentials of ±kL are
     /// constants (`Burley`, shared with the exact path), which leaves five libm calls.

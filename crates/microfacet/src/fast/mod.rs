@@ -27,7 +27,7 @@
 //! assert!(m[0] * w[0] + m[1] * w[1] + m[2] * w[2] > 0.0);
 //! let m = exponential::sample_visible(w, 0.5, 0.2, [0.25, 0.75], &mut next);
 //! assert!(m[2] > 0.0);
-//! let material = Gtr::new(0.3, 1.5)?; // per-material tables: ~14 ms (0.3 ms at γ = 1, 2)
+//! let material = Gtr::new(0.3, 1.5)?; // per-material tables: ~24 ms (1–1.5 ms at γ = 1, 2; README)
 //! let m = material.sample_visible([0.6f32, 0.0, 0.8], [0.25, 0.75], &mut || 0.5f32);
 //! assert!(m[2] > 0.0);
 //! # Ok::<(), microfacet::ParamError>(())
@@ -317,31 +317,44 @@ fn ggx_visible_stretched_len<F: Real>(w: [F; 3], ax: F, ay: F, sz: F, u: [F; 2],
     let above = (F::ONE - u[1]) * (F::ONE + z);
     let cz = above - z;
     let sin = (F::ONE - cz * cz).max(F::ZERO).sqrt();
-    let (mut hx, mut hy, mut hz) = (sin * c + x, sin * s + y, above);
-    // h·w' = |h|²/2 ≥ 0 exactly (h = c + w', both unit), but where the cap point is nearly
-    // −w' (u₁ → 1) h is a difference of near-opposite vectors, and its rounding can tip
-    // h·w' below 0: a normal facing away from w once unstretched. There (|h|² below 1e-8, or
-    // 1e-4 in f32) h loses its component against w' (out of line; the test only reads values
-    // already on the chain).
-    let n2 = hx * hx + hy * hy + hz * hz;
-    if !(n2 >= F::from_f64(if F::IS_F32 { 1e-4 } else { 1e-8 })) {
-        (hx, hy, hz) = visible_half(hx, hy, hz, x, y, z);
-    }
-    let (hx, hy, hz) = (ax * hx, ay * hy, sz * hz);
+    let (hx, hy, hz) = (ax * (sin * c + x), ay * (sin * s + y), sz * above);
     let inv = F::ONE / (hx * hx + hy * hy + hz * hz).sqrt();
     [hx * inv, hy * inv, hz * inv]
 }
 
-/// h with its component along −w' removed (h − min(0, h·w') w'), for [`ggx_visible_stretched_len`].
+/// m, or where rounding has tipped it to face away from w (w·m < 0), m less its component
+/// along w, renormalised (so w·m = 0 to rounding, and m.z grows: w is mirrored to w.z ≥ 0).
+///
+/// Every visible-normal sampler draws m with w·m ≥ 0 exactly; the rounding of the stretched
+/// slopes, magnified by the unstretch (up to αmax/αmin, 1e12 at the extremes), can make the
+/// computed w·m slightly negative where the true one is near 0: the sampled normal is then
+/// nearly perpendicular to w, and this moves it onto the boundary it rounded past. One dot
+/// product and a branch that is essentially never taken; the fix is out of line.
+#[inline(always)]
+fn facing<F: Real>(m: [F; 3], w: [F; 3]) -> [F; 3] {
+    let d = m[0].to_f64() * w[0].to_f64()
+        + m[1].to_f64() * w[1].to_f64()
+        + m[2].to_f64() * w[2].to_f64();
+    // w.z < 0 is mirrored: the sign of the dot flips with it (not at w.z = −0, which is not
+    // below the horizon; false for NaN).
+    let d = if w[2] < F::ZERO { -d } else { d };
+    if d < 0.0 {
+        return facing_fix(m, w);
+    }
+    m
+}
+
+/// [`facing`]'s correction (out of line).
 #[cold]
 #[inline(never)]
-fn visible_half<F: Real>(hx: F, hy: F, hz: F, x: F, y: F, z: F) -> (F, F, F) {
-    let d = hx * x + hy * y + hz * z;
-    if d < F::ZERO {
-        (hx - d * x, hy - d * y, hz - d * z)
-    } else {
-        (hx, hy, hz)
-    }
+fn facing_fix<F: Real>(m: [F; 3], w: [F; 3]) -> [F; 3] {
+    let w = rescaled([w[0].to_f64(), w[1].to_f64(), w[2].to_f64()]);
+    let s = if w[2] < 0.0 { -1.0 } else { 1.0 };
+    let l = (w[0] * w[0] + w[1] * w[1] + w[2] * w[2]).sqrt();
+    let w = [s * w[0] / l, s * w[1] / l, s * w[2] / l];
+    let m = [m[0].to_f64(), m[1].to_f64(), m[2].to_f64()];
+    let d = m[0] * w[0] + m[1] * w[1] + m[2] * w[2];
+    unit_normal(m[0] - d * w[0], m[1] - d * w[1], m[2] - d * w[2])
 }
 
 /// [`unit_normal`] for lengths near the ends of the f64 range, zero and NaN (out of line).
@@ -556,7 +569,7 @@ pub mod ggx {
         } else {
             w
         };
-        super::ggx_visible_stretched(w, ax, ay, F::ONE, u)
+        super::facing(super::ggx_visible_stretched(w, ax, ay, F::ONE, u), w)
     }
 }
 

@@ -7,7 +7,7 @@
 //! | [`erfc_ratio_tail`], [`dggx_g`], [`bessel_k_sum_m1`] | this module (continued fractions and series) | ≤ 2e-15, 1e-14, 4e-15 |
 //!
 //! The last group exists because the closed forms of the pages cancel catastrophically in
-//! some regions (see `shared/ERRATA.md` §D); each function here computes a cancellation-free
+//! some regions (see docs/derivations.md D); each function here computes a cancellation-free
 //! combination instead of the difference of two large numbers.
 
 pub mod dd;
@@ -117,7 +117,7 @@ fn lentz(a: impl Fn(usize) -> f64, b: impl Fn(usize) -> f64) -> f64 {
 ///
 /// Double GGX has P22(r) = G(α²/r²)/(π α²). The bracket equals ∫₀^∞ e^{−ct} t/(1+t)² dt,
 /// which is positive and ~1/c² for large c, where the printed form cancels (it loses 2·log₁₀ c
-/// digits, ERRATA §D). For c ≥ 1 we use the even continued fraction of e^c E₁(c),
+/// digits, derivations.md D). For c ≥ 1 we use the even continued fraction of e^c E₁(c),
 /// e^c E₁(c) = 1/(c+1 − T), T = 1/(c+3 − 4/(c+5 − 9/(c+7 − …))), for which the bracket is
 /// exactly T/(c+1−T): no subtraction of nearly equal numbers. For c < 1 the bracket is at most
 /// 6.5× smaller than its terms, so E₁ from Cephes (≤ 5e-15 there) keeps the result ≤ 1e-14.
@@ -160,7 +160,7 @@ pub fn dggx_bracket(c: f64) -> f64 {
 /// S(x) − 1 where S(x) = x e^x (K₀(x) + K₁(x)), for x > 0 (and 0 at x = 0).
 ///
 /// Double GGX has √π U(−½, 0, 2x) = S(x), so Λ = (S − 1)/2. S → 1 as x → 0 and the direct
-/// form cancels (ERRATA §D); for x < 2 we sum the ascending series of K₀ and x K₁ − 1 (A&S
+/// form cancels (derivations.md D); for x < 2 we sum the ascending series of K₀ and x K₁ − 1 (A&S
 /// 9.6.13, 9.6.11), whose terms are all small, and combine as e^x (x K₀ + (x K₁ − 1)) + expm1(x).
 pub fn bessel_k_sum_m1(x: f64) -> f64 {
     if x.is_nan() {
