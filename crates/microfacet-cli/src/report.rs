@@ -788,7 +788,7 @@ table{border-collapse:collapse;font-size:12px}td,th{border:1px solid #ccc;paddin
 .pass{color:#2a7a2a}.fail{color:#b00;font-weight:bold}nav a{margin-right:1em}\
 figure{margin:0;width:440px}figcaption{font-size:12px;color:#444;margin:2px 4px 8px}\
 .def{font-size:14px;color:#333}.stamp{font-size:12px;color:#666}\
-.matrix{overflow-x:auto}.matrix th{font-size:11px;font-weight:normal;text-align:left}";
+.matrix{overflow-x:auto}.matrix th{font-size:11px;font-weight:normal;text-align:left}.matrix td{white-space:nowrap}";
 
 pub fn run(args: &[String]) -> Result<ExitCode, String> {
     let mut out = std::path::PathBuf::from("report");

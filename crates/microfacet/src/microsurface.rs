@@ -111,7 +111,7 @@ fn upper(w: Vec3) -> Vec3 {
 /// the spherical-cap construction is a difference of near-opposite vectors: the computed
 /// w·m can come out slightly negative for a normal nearly perpendicular to w. This puts it
 /// back on the boundary it rounded past.
-fn facing(m: Vec3, w: Vec3) -> Vec3 {
+pub(crate) fn facing(m: Vec3, w: Vec3) -> Vec3 {
     let d = m.dot(w);
     if d < 0.0 {
         (m - w * d).normalize()

@@ -169,6 +169,10 @@ impl RadialSlopes for DoubleGgx {
         if c == 0.0 {
             return 0.0;
         }
+        // r = 0 (or a slope whose c = α²/r² overflows): all the mass lies beyond.
+        if c == f64::INFINITY {
+            return 1.0;
+        }
         if c >= 1.0 {
             c / (c + 1.0 - e1_cf_tail(c))
         } else {

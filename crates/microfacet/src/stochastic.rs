@@ -171,7 +171,8 @@ impl Distribution<Vec3> for VisibleMixture {
         let m1 = crate::Stretched::raw(component, a, a)
             .sample_visible(w1, [rng.random::<f64>(), rng.random::<f64>()]);
         let (ax, ay) = self.target.alpha();
-        // m1 ∝ (x̃, ỹ, 1) in the α = 1 configuration → (αx x̃, αy ỹ, 1).
-        Vec3::new(ax * m1.x, ay * m1.y, m1.z).normalize()
+        // m1 ∝ (x̃, ỹ, 1) in the α = 1 configuration → (αx x̃, αy ỹ, 1); visible from wi
+        // where the unstretch's rounding had tipped it (as every visible sampler).
+        crate::microsurface::facing(Vec3::new(ax * m1.x, ay * m1.y, m1.z).normalize(), self.wi)
     }
 }

@@ -362,6 +362,28 @@ fn check_visible(
     });
 }
 
+/// A visible normal at interior u faces w strictly (w·m > 0: the visible density vanishes on
+/// w·m = 0), at any w, on the horizon included (a sampler that answered (0, 0, 1) for a
+/// horizontal w, with pdf 0, passed `check_visible`).
+fn check_strictly_visible(
+    fails: &mut Failures,
+    what: &str,
+    w: Vec3,
+    m: Vec3,
+    u: [f64; 2],
+    ctx: &dyn Fn() -> String,
+) {
+    if !interior(u) {
+        return;
+    }
+    let wu = w.to_unit();
+    let wu = if wu.z < 0.0 { -wu } else { wu };
+    let c = wu.dot(m);
+    fails.check(c > 0.0, || {
+        format!("{what}: w·m={c:e} m={m:?} at interior u, {}", ctx())
+    });
+}
+
 fn interior(u: [f64; 2]) -> bool {
     u.iter().all(|&x| (1e-6..=1.0 - 1e-6).contains(&x))
 }
@@ -383,6 +405,7 @@ fn fuzz_microsurface<M: Microsurface + std::fmt::Debug>(
         let ctx = || format!("{ms:?} w={w:?} u={u:?}");
         let m = no_panic("sample_visible", (ms, w, u), || ms.sample_visible(w, u));
         check_visible(fails, "sample_visible", w, m, 1e-12, &ctx);
+        check_strictly_visible(fails, "sample_visible", w, m, u, &ctx);
         let pdf = no_panic("pdf_visible", (ms, w, m), || ms.pdf_visible(w, m));
         fails.check(pdf.is_finite() && pdf >= 0.0, || {
             format!("pdf={pdf} m={m:?} at {}", ctx())
@@ -458,6 +481,7 @@ fn stretched_samplers() {
             let ctx = || format!("{b:?} w={w:?} u={u:?}");
             let m = no_panic("GgxBounded::sample", (&b, w, u), || b.sample(w, u));
             check_visible(&mut fails, "GgxBounded::sample", w, m, 1e-12, &ctx);
+            check_strictly_visible(&mut fails, "GgxBounded::sample", w, m, u, &ctx);
             let pdf = no_panic("GgxBounded::pdf", (&b, w, m), || b.pdf(w, m));
             fails.check(pdf.is_finite() && pdf >= 0.0, || {
                 format!("pdf={pdf} at {}", ctx())
@@ -523,6 +547,7 @@ fn isotropic_samplers() {
                     iso.sample_visible(w, u)
                 });
                 check_visible(&mut fails, "Isotropic::sample_visible", w, m, 1e-12, &ctx);
+                check_strictly_visible(&mut fails, "Isotropic::sample_visible", w, m, u, &ctx);
                 let pdf = iso.pdf_visible(w, m);
                 fails.check(pdf.is_finite() && pdf >= 0.0, || {
                     format!("pdf={pdf} at {}", ctx())
@@ -532,6 +557,18 @@ fn isotropic_samplers() {
                 }
             }
         }
+    }
+    // Out of contract (u₀ = 1): a unit normal or NaN, never the zero vector (Isotropic<Gtr>
+    // returned (0, 0, 0) before).
+    for n in [
+        AnyNdf::Gtr(Gtr::new(0.3, 1.5).unwrap()),
+        AnyNdf::DoubleGgx(DoubleGgx::new(0.3).unwrap()),
+    ] {
+        let m = Isotropic(n).sample_visible(Vec3::new(0.6, 0.0, 0.8), [1.0, 0.5]);
+        let len = m.length();
+        fails.check(len.is_nan() || (len - 1.0).abs() < 1e-12, || {
+            format!("{n:?} at u = [1, 0.5]: {m:?}")
+        });
     }
     fails.finish("isotropic_samplers");
 }
@@ -621,14 +658,10 @@ fn fast_samplers<F: fast::Real + std::fmt::Debug>(test: u64, n: u64, draw: fn(&m
                 .iter()
                 .zip(ms)
             {
-                check_visible(
-                    &mut fails,
-                    &format!("fast::{name}::sample_visible"),
-                    wv,
-                    m,
-                    tol,
-                    &ctx,
-                );
+                let what = format!("fast::{name}::sample_visible");
+                check_visible(&mut fails, &what, wv, m, tol, &ctx);
+                let uf = [u[0].to_f64(), u[1].to_f64()];
+                check_strictly_visible(&mut fails, &what, wv, m, uf, &ctx);
             }
             let ms = no_panic(
                 "fast D·cos samplers",
@@ -929,4 +962,148 @@ fn fast_accuracy_f64() {
 #[test]
 fn fast_accuracy_f32() {
     fast_accuracy::<f32>(10, cosine32);
+}
+
+/// The pages' stochastic samplers (`rand` distributions): unit normals in the upper
+/// hemisphere, visible from w for the visible mixture, at every accepted α.
+#[test]
+fn stochastic_samplers() {
+    use microfacet::stochastic::{
+        DoubleGgxMixture, ExponentialChi3, GgxBeckmannMixture, VisibleMixture,
+    };
+    use rand::distr::Distribution;
+    use rand::SeedableRng;
+    let mut r = Rng::new(11);
+    let mut rng = rand_xorshift::XorShiftRng::seed_from_u64(seed(11));
+    let mut fails = Failures::default();
+    for _ in 0..100 * scale() {
+        let a = alpha(&mut r);
+        let ctx = || format!("α={a:e}");
+        let (d, g, e) = (
+            DoubleGgxMixture::new(a).unwrap(),
+            GgxBeckmannMixture::new(a).unwrap(),
+            ExponentialChi3::new(a).unwrap(),
+        );
+        for _ in 0..20 {
+            let ms = no_panic("stochastic samplers", a, || {
+                [d.sample(&mut rng), g.sample(&mut rng), e.sample(&mut rng)]
+            });
+            for m in ms {
+                check_visible(&mut fails, "stochastic D·cos", Vec3::Z, m, 1e-12, &ctx);
+            }
+            evals(3);
+        }
+        let kind = r.pick(&[
+            UnitSlopes::DoubleGgx,
+            UnitSlopes::Exponential,
+            UnitSlopes::Ggx,
+        ]);
+        let target = Stretched::new(kind, a, alpha(&mut r)).unwrap();
+        let w = direction(&mut r, false);
+        let vm = VisibleMixture::new(target, w).unwrap();
+        let ctx = || format!("{target:?} w={w:?}");
+        let m = no_panic("VisibleMixture", (target, w), || vm.sample(&mut rng));
+        check_visible(&mut fails, "VisibleMixture", w, m, 1e-12, &ctx);
+        evals(1);
+    }
+    fails.finish("stochastic_samplers");
+}
+
+/// The slice forms (`fast::batch`, every instruction set this CPU has) agree with the scalar
+/// fast paths element by element on hostile inputs (u = ±0, 1 + 2ε, subnormals, negative u,
+/// NaN; α at both ends): NaN where they are NaN, the same infinities, and otherwise within
+/// 1e-12 relative (the kernels evaluate the same tables by Estrin's scheme and exponentials
+/// by `fast::arith`, a few ulp from the scalar Horner and libm; absolute 1e-300 where the
+/// value underflows).
+#[test]
+fn slices_equal_scalars() {
+    use fast::batch;
+    let mut r = Rng::new(12);
+    let mut fails = Failures::default();
+    let levels: Vec<batch::Simd> = [batch::Simd::Generic, batch::Simd::Avx2, batch::Simd::Avx512]
+        .into_iter()
+        .filter(|&l| l <= batch::detected_simd())
+        .collect();
+    type Pair = (
+        fn(&[f64], &[f64], &mut [f64]),
+        fn(f64, f64) -> f64,
+        &'static str,
+    );
+    let cases: [Pair; 6] = [
+        (batch::ggx_d, fast::ggx::d::<f64>, "ggx_d"),
+        (batch::ggx_lambda, fast::ggx::lambda::<f64>, "ggx_lambda"),
+        (batch::ggx_g1, fast::ggx::g1::<f64>, "ggx_g1"),
+        (batch::beckmann_d, fast::beckmann::d::<f64>, "beckmann_d"),
+        (
+            batch::double_ggx_lambda,
+            fast::double_ggx::lambda::<f64>,
+            "double_ggx_lambda",
+        ),
+        (
+            batch::exponential_lambda,
+            fast::exponential::lambda::<f64>,
+            "exponential_lambda",
+        ),
+    ];
+    for _ in 0..10 * scale() {
+        // Lengths that leave a partial block and a partial vector at the end.
+        let n = 1 + r.below(700);
+        let u: Vec<f64> = (0..n)
+            .map(|_| {
+                if r.chance(0.02) {
+                    f64::NAN
+                } else {
+                    cosine(&mut r)
+                }
+            })
+            .collect();
+        let a: Vec<f64> = (0..n).map(|_| alpha(&mut r)).collect();
+        let g = FastGtr::new(alpha(&mut r), gamma(&mut r)).unwrap();
+        for &level in &levels {
+            batch::cap_simd(Some(level));
+            let mut out = vec![0.0; n];
+            for (slice, scalar, name) in cases {
+                no_panic(name, (level, n), || slice(&u, &a, &mut out));
+                for k in 0..n {
+                    // (Negative u is outside Λ's domain: only D is compared there.)
+                    if u[k] < 0.0 && !name.ends_with("_d") {
+                        continue;
+                    }
+                    let want = scalar(u[k], a[k]);
+                    let same = agree(out[k], want);
+                    fails.check(same, || {
+                        format!(
+                            "{name} {level:?}: u={:e} α={:e}: {} vs scalar {want}",
+                            u[k], a[k], out[k]
+                        )
+                    });
+                }
+            }
+            no_panic("gtr_lambda", (level, n), || {
+                batch::gtr_lambda(&g, &u, &mut out)
+            });
+            for k in 0..n {
+                if u[k] < 0.0 {
+                    continue;
+                }
+                let want = g.lambda(u[k]);
+                let same = agree(out[k], want);
+                fails.check(same, || {
+                    format!(
+                        "gtr_lambda {level:?}: u={:e}: {} vs scalar {want}",
+                        u[k], out[k]
+                    )
+                });
+            }
+            evals(7 * n as u64);
+        }
+        batch::cap_simd(None);
+    }
+    fails.finish("slices_equal_scalars");
+}
+
+/// Slice and scalar values agree: both NaN, equal (infinities included), or within 1e-12
+/// relative (1e-300 absolute).
+fn agree(x: f64, want: f64) -> bool {
+    (x.is_nan() && want.is_nan()) || x == want || (x - want).abs() <= 1e-12 * want.abs().max(1e-288)
 }

@@ -34,3 +34,15 @@ fn removable_singularities_and_extreme_roughness() {
         gammas: vec![0.3, 1.0 - 1e-12, 1.0 + 1e-12, 1.5, 6.0],
     });
 }
+
+/// Every accepted parameter set, extremes included (issue 19): α at both ends of
+/// [1e-6, 1e6], γ from 1e-300 to 100 (α = 1e-6, γ = 100 failed ∫D cos = 1 and the σ delta
+/// integral before GTR's sampling constants and the u-space floor's γ were fixed).
+#[test]
+fn the_accepted_range_extremes() {
+    assert_all_pass(&Sweep {
+        kinds: NdfKind::ALL.to_vec(),
+        alphas: vec![1e-6, 1e-3, 1e3, 1e6],
+        gammas: vec![1e-300, 1e-3, 27.0, 52.0, 100.0],
+    });
+}

@@ -133,3 +133,17 @@ fn shared_reference_values() {
     ));
     assert_eq!(n, 1404);
 }
+
+/// The audit's Beckmann deep-tail case (issue 19 item 8), at the exact binary inputs:
+/// mpmath (50 digits) gives Λ = 1.9092522572204138212e-255 and σ(−u) = u Λ =
+/// 1.7579032586457312416e-255. (The audit's 1.6e-13 came from the CLI reading u one ulp off,
+/// which shifts a² ≈ 575 by 4e-13: serde_json now reads numbers exactly.)
+#[test]
+fn beckmann_deep_tail() {
+    use microfacet::{Beckmann, Ndf};
+    let b = Beckmann::new(0.09840092919672987).unwrap();
+    let u = 0.920728652799906;
+    let rel = |x: f64, want: f64| ((x - want) / want).abs();
+    assert!(rel(b.lambda(u), 1.9092522572204138212e-255) < 1e-14);
+    assert!(rel(b.sigma(-u), 1.7579032586457312416e-255) < 1e-14);
+}

@@ -222,9 +222,10 @@ pub fn sample_visible<F: Real>(
         };
         let x = super::ziggurat::sample(layers, w, &mut next);
         let t = if exp { x } else { 0.5 * x * x };
-        // t below 1e-200 has probability ~1e-100; the floor keeps √t and c²t positive
-        // (a component roughness of at most 1e100 α).
-        let t = t.max(1e-200);
+        // t below 1e-200 (1e-60 in f32) has probability ~1e-100 (a uniform of exactly 0
+        // gives t = 0); the floor keeps √t and c²t positive (a component roughness of at most
+        // 1e100 α), and in f32 the normal's z from rounding to 0 (as in `sample_dcos`).
+        let t = t.max(if F::IS_F32 { 1e-60 } else { 1e-200 });
         s = t.sqrt();
         // √(c²t + h²) is also the length of the stretched direction (αx w.x, αy w.y, √t w.z)
         // that the GGX step normalises.
