@@ -39,7 +39,9 @@
 //! 5·10⁶ hostile evaluations in CI, 10⁸ with `MICROFACET_FUZZ_SCALE=20`) checks it.
 //! * **No panic**, for any input, in or out of contract (a zero or NaN normal given to an
 //!   inverse or a pdf, u = 1, NaN parameters to the fast paths). Constructors return
-//!   `Err(ParamError)` for parameters outside α ∈ [1e-6, 1e6], γ ∈ (0, 100].
+//!   `Err(ParamError)` for parameters outside α ∈ [1e-6, 1e6], γ ∈ (0, 100]. The one
+//!   exception is a programming error, not an input: `fast::batch`'s slice functions panic
+//!   when given slices of different lengths, as slice indexing does.
 //! * **In contract**: cosines u ∈ [−1, 1], including ±0, subnormals and 1 + 2ε (the z of a
 //!   rounded unit vector, treated as 1); uniforms in [0, 1)², exactly 0 and 1 − ε included;
 //!   directions w any finite nonzero vector (any length: they are normalised; below the

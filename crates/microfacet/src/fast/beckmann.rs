@@ -29,10 +29,10 @@ use super::Real;
 /// and rounds once, so its bound is 2e-5 everywhere D is a normal f32 (tests/fuzz.rs).
 #[inline]
 pub fn d<F: Real>(u: F, alpha: F) -> F {
-    if u <= F::ZERO {
-        return F::ZERO;
+    // (False for NaN; one test for both edges, as the hot path had for u ≤ 0.)
+    if !(u > F::ZERO && u <= F::ONE) {
+        return d_edges(u, alpha);
     }
-    let u = super::cos_in(u);
     let u2 = u * u;
     let a2 = alpha * alpha;
     let x = (F::ONE - u) * (F::ONE + u) / (u2 * a2);
@@ -47,13 +47,41 @@ pub fn d<F: Real>(u: F, alpha: F) -> F {
     (-x).exp() / (F::PI * a2 * u2 * u2)
 }
 
+/// D outside (0, 1] (out of line): 0 for u ≤ 0, D(1) for u > 1, NaN for NaN.
+#[cold]
+#[inline(never)]
+fn d_edges<F: Real>(u: F, alpha: F) -> F {
+    if u > F::ONE {
+        d(F::ONE, alpha)
+    } else if u <= F::ZERO {
+        F::ZERO
+    } else {
+        u
+    }
+}
+
 /// Λ(u) = e^{−a²} r(a)/(2a√π), a = cot θ/α, r(a) = 1 − √π a erfcx(a), for 0 ≤ u ≤ 1
 /// (−0 and 1 + 2ε included; +∞ at u = 0, 0 at u = 1), evaluated in f64 ([`lambda_cot`];
 /// f32 rounds once).
 #[inline]
 pub fn lambda<F: Real>(u: F, alpha: F) -> F {
-    let (u, alpha) = (super::cos_in(u.to_f64()), alpha.to_f64());
+    let (u, alpha) = (u.to_f64(), alpha.to_f64());
+    // (False for NaN.)
+    if !(u > 0.0 && u <= 1.0) {
+        return F::from_f64(lambda_edges(u, alpha));
+    }
     F::from_f64(lambda_cot(u / (alpha * ((1.0 - u) * (1.0 + u)).sqrt())))
+}
+
+/// Λ at u ∉ (0, 1] (out of line): +∞ at ±0, 0 past 1, Λ(|u|) below 0, NaN for NaN.
+#[cold]
+#[inline(never)]
+fn lambda_edges(u: f64, alpha: f64) -> f64 {
+    let u = super::cos_in(u);
+    if u == 0.0 {
+        return f64::INFINITY;
+    }
+    lambda(u, alpha)
 }
 
 /// Λ at a = cot θ/α ≥ 0, as e^{−a²} r(a)/(2a√π): r is a table with no cancellation anywhere

@@ -77,14 +77,14 @@ fn d_ends(u: f64, a: f64) -> f64 {
 /// (x < 2^−30, x ≥ 2^16, u = 0 or 1, NaN) the f64 path answers.
 #[inline]
 pub fn lambda<F: Real>(u: F, alpha: F) -> F {
-    let u = super::cos_in(u);
     if F::IS_F32 {
         return F::from_f32(lambda32(u.to_f32(), alpha.to_f32()));
     }
     let (u, a) = (u.to_f64(), alpha.to_f64());
     let x = 0.5 * a * a * ((1.0 - u) * (1.0 + u)) / (u * u);
     // x ≥ 2^16 is the grazing expansion; where x itself overflows (u² underflows, or
-    // α² tan²θ passes f64::MAX) Λ is still finite, and √x is formed without x.
+    // α² tan²θ passes f64::MAX) Λ is still finite, and √x is formed without x. u ∉ (0, 1]
+    // lands here or below the table (u > 1: x < 0, Λ = 0 as at u = 1).
     if x >= fit::pow2(DGGX_K1) || x.is_nan() {
         return F::from_f64(lambda_grazing(u, a));
     }
@@ -96,6 +96,8 @@ pub fn lambda<F: Real>(u: F, alpha: F) -> F {
 #[cold]
 #[inline(never)]
 fn lambda_grazing(u: f64, a: f64) -> f64 {
+    // (u < 0, −0 included: the side the direction comes from, |u|.)
+    let u = super::cos_in(u);
     let sx = a * (0.5 * (1.0 - u) * (1.0 + u)).sqrt() / u;
     // 1/x, 0 once x overflows (the corrections are then far below an ulp).
     let r = 1.0 / (sx * sx);

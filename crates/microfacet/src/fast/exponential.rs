@@ -126,10 +126,10 @@ pub(super) fn z_of(u: f64, a: f64) -> f64 {
 #[inline]
 pub fn d<F: Real>(u: F, alpha: F) -> F {
     let (u, a) = (u.to_f64(), alpha.to_f64());
-    if u <= 0.0 {
-        return F::ZERO;
+    // (False for NaN; one test for both edges, as the hot path had for u ≤ 0.)
+    if !(u > 0.0 && u <= 1.0) {
+        return F::from_f64(d_edges(u, a));
     }
-    let u = super::cos_in(u);
     let u2 = u * u;
     let x = 2.0 * ((1.0 - u) * (1.0 + u)).sqrt() / (u * a);
     // e^{−x} is 0 past 745 (and u⁴ could underflow too: 0/0).
@@ -149,15 +149,45 @@ pub fn d<F: Real>(u: F, alpha: F) -> F {
 /// end.)
 #[inline]
 pub fn lambda<F: Real>(u: F, alpha: F) -> F {
-    let u = super::cos_in(u);
     if F::IS_F32 {
         return F::from_f32(lambda32(u.to_f64(), alpha.to_f64()));
     }
     let (u, a) = (u.to_f64(), alpha.to_f64());
     F::from_f64(match lambda_q(q_of(u, a)) {
         Some(v) => v,
-        None => lambda_z_ends(z_of(u, a)),
+        None => lambda_outside(u, a),
     })
+}
+
+/// Λ past the q tables (out of line): u ∉ (0, 1] first (+∞ at ±0, 0 past 1, Λ(|u|) below 0,
+/// NaN for NaN), then the ends of z.
+#[cold]
+#[inline(never)]
+fn lambda_outside(u: f64, a: f64) -> f64 {
+    if !(u > 0.0 && u <= 1.0) {
+        let u = super::cos_in(u);
+        if u == 0.0 {
+            return f64::INFINITY;
+        }
+        if u.is_nan() {
+            return u;
+        }
+        return lambda(u, a);
+    }
+    lambda_z_ends(z_of(u, a))
+}
+
+/// D outside (0, 1] (out of line): 0 for u ≤ 0, D(1) for u > 1, NaN for NaN.
+#[cold]
+#[inline(never)]
+fn d_edges(u: f64, a: f64) -> f64 {
+    if u > 1.0 {
+        d(1.0, a)
+    } else if u <= 0.0 {
+        0.0
+    } else {
+        u
+    }
 }
 
 /// Λ for the f32 entry points (see [`lambda`]), from f32 inputs widened to f64.

@@ -404,6 +404,24 @@ impl Gtr {
         self.lambda_cot_ends(a)
     }
 
+    /// Λ past the tables (out of line): u ∉ (0, 1] first (+∞ at ±0, 0 past 1, Λ(|u|) below
+    /// 0, NaN for NaN: u outside [0, 1] falls outside the tables), then the asymptotic ends.
+    #[cold]
+    #[inline(never)]
+    fn lambda_outside(&self, u: f64) -> f64 {
+        if !(u > 0.0 && u <= 1.0) {
+            let u = super::cos_in(u);
+            if u == 0.0 {
+                return f64::INFINITY;
+            }
+            if u.is_nan() {
+                return u;
+            }
+            return self.lambda(u);
+        }
+        self.lambda_cot_ends(u / ((1.0 - u) * (1.0 + u)).sqrt())
+    }
+
     /// Λ beyond the tables (the asymptotic ends; out of line, rarely reached) and NaN. The
     /// tables reach past a = 1 on both sides, so a < 1 here is the grazing end.
     #[cold]
@@ -457,7 +475,6 @@ impl Gtr {
     /// t is about 1 at both ends); otherwise, and past the tables, the f64 path rounded once.
     #[inline]
     pub fn lambda<F: Real>(&self, u: F) -> F {
-        let u = super::cos_in(u);
         if F::IS_F32 && !self.coef32.is_empty() {
             return F::from_f32(self.lambda32(u.to_f32()));
         }
@@ -471,7 +488,7 @@ impl Gtr {
                 p.exp()
             }
         } else {
-            self.lambda_cot_ends(u / ((1.0 - u) * (1.0 + u)).sqrt())
+            self.lambda_outside(u)
         })
     }
 

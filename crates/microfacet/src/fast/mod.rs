@@ -5,7 +5,7 @@
 //! | NDF | module | quantities | how | accuracy (relative; tests/fast.rs) |
 //! |---|---|---|---|---|
 //! | GGX | [`ggx`] | D, Λ, G1, G2, σ, D·cos, VNDF | closed forms without cancellation | f64 1e-14, f32 1e-6 |
-//! | Beckmann | [`beckmann`] | D, Λ, G1, G2, σ, D·cos, VNDF | D and D·cos closed forms; Λ from a generated table of r(a) = 1 − √π a erfcx(a) (no cancellation); VNDF: the exact warp, table guess + Halley steps | D, Λ: f64 1e-12, f32 2e-5 (exponent < 80); VNDF: 1e-11 of the exact warp |
+//! | Beckmann | [`beckmann`] | D, Λ, G1, G2, σ, D·cos, VNDF | D and D·cos closed forms; Λ from a generated table of r(a) = 1 − √π a erfcx(a) (no cancellation); VNDF: the exact warp, table guess + Halley steps | D, Λ: f64 1e-12, f32 2e-5 (D in f64 past the exponent 80, where f32 roundings of it would cost more); VNDF: 1e-11 of the exact warp |
 //! | Double GGX | [`double_ggx`] | D, Λ, σ, G1, G2, D·cos, VNDF | generated octave tables (Λ; D's slope kernel) + asymptotic ends; D·cos: an Exp(1) component (ziggurat), then GGX (one extra uniform); VNDF: the Gamma-1 superposition of GGX, component picked by rejection (t from ziggurats), then spherical caps | 1e-7 required; Λ 4.5e-10, D 6e-12 measured (f64); f32 (Λ natively in f32, a cubic table) 2.9e-7; samplers: the exact distribution (χ²) |
 //! | Exponential | [`exponential`] | D, Λ, σ, G1, G2, D·cos, VNDF | D closed form; generated tables of Λ in q = z² = (2cot θ/α)² for z < 64 (one division, no square root or exponential), of Λe^z beyond, asymptotic ends; D·cos: Gamma(2) radius (one extra uniform); VNDF: rejection in slope space (Gamma radii) | 1e-7 required; 1.9e-9 measured (f64); f32 (q in f64, f32 cubics) 4.8e-7; samplers: exact distribution (χ²) |
 //! | GTR, any γ | [`gtr::Gtr`] | D, Λ, σ, G1, G2, D·cos, VNDF | D = e^{ln c − γ ln x} (c/x, c/x² at γ = 1, 2); D·cos Burley's inversion with the material's constants; Λ (γ ≲ 3–5, no exponential) or ln Λ fitted per material at construction, on octaves of u below ½ and of 1 − u above (no square root or division); VNDF: rejection in slope space, radii from per-material piecewise envelopes (flat in r; alias table) | 1e-7 required; Λ 6.3e-9, D 1.1e-13 measured (f64), where Λ > 1e-280; f32 (per-material f32 cubics where Λ itself is tabulated) 3.8e-7; VNDF: exact distribution (χ²) |
@@ -395,15 +395,18 @@ fn unit_normal_scaled<F: Real>(x: f64, y: f64, z: f64) -> [F; 3] {
     ]
 }
 
-/// The cosine the fast paths evaluate at: u > 1 (1 + 2ε, the z of a rounded unit vector) is
-/// 1, and −0 is +0 (so that Λ(−0) = +∞ as at +0, and G2(+0, −0) = 0, not NaN); NaN stays
-/// NaN (the comparison is false for it). One comparison and one addition.
+/// The cosine the fast paths' edge handlers evaluate at: u > 1 (1 + 2ε, the z of a rounded
+/// unit vector) is 1, and u < 0 (−0 included: Λ(−0) = +∞ as at +0, so G2(+0, −0) = 0, not
+/// NaN) is |u|, the side the direction comes from, as [`crate::Ndf::g1`] takes it; NaN stays
+/// NaN. Only out-of-line paths call it: the hot paths send these u there with the range
+/// test they already make.
 #[inline(always)]
 fn cos_in<F: Real>(u: F) -> F {
+    let u = u.abs();
     if u > F::ONE {
         F::ONE
     } else {
-        u + F::ZERO
+        u
     }
 }
 
@@ -438,6 +441,7 @@ pub trait Real:
     fn exp(self) -> Self;
     fn sin_cos(self) -> (Self, Self);
     fn max(self, o: Self) -> Self;
+    fn min(self, o: Self) -> Self;
     fn abs(self) -> Self;
 }
 
@@ -483,6 +487,10 @@ macro_rules! real {
                 <$t>::max(self, o)
             }
             #[inline(always)]
+            fn min(self, o: Self) -> Self {
+                <$t>::min(self, o)
+            }
+            #[inline(always)]
             fn abs(self) -> Self {
                 <$t>::abs(self)
             }
@@ -502,13 +510,26 @@ pub mod ggx {
     /// f32.
     #[inline]
     pub fn d<F: Real>(u: F, alpha: F) -> F {
-        if u <= F::ZERO {
-            return F::ZERO;
+        // (False for NaN; one test for both edges, as the hot path had for u ≤ 0.)
+        if !(u > F::ZERO && u <= F::ONE) {
+            return d_edges(u, alpha);
         }
-        let u = super::cos_in(u);
         let a2 = alpha * alpha;
         let t = (F::ONE - u) * (F::ONE + u) + u * u * a2;
         a2 / (F::PI * t * t)
+    }
+
+    /// D outside (0, 1] (out of line): 0 for u ≤ 0, D(1) for u > 1, NaN for NaN.
+    #[cold]
+    #[inline(never)]
+    fn d_edges<F: Real>(u: F, alpha: F) -> F {
+        if u > F::ONE {
+            d(F::ONE, alpha)
+        } else if u <= F::ZERO {
+            F::ZERO
+        } else {
+            u
+        }
     }
 
     /// Below this u (1e-290 in f64, 1e-30 in f32) u√(u² + t) of [`lambda`] could be
@@ -520,12 +541,13 @@ pub mod ggx {
 
     /// Λ(u) = s/(2(1 + √(1+s))), s = α² tan²θ, for 0 ≤ u ≤ 1 (−0 and 1 + 2ε included; +∞
     /// at u = 0), written with u² multiplied through as α²(1−u²)/(2(u² + u√(u² + α²(1−u²)))):
-    /// one square root and one division, and no cancellation. Negative u is outside the
-    /// domain (the exact [`crate::Ndf::lambda`] has Heitz's extension).
+    /// one square root and one division, and no cancellation. Negative u gives Λ(|u|) (the
+    /// exact [`crate::Ndf::lambda`] has Heitz's extension there instead).
     #[inline]
     pub fn lambda<F: Real>(u: F, alpha: F) -> F {
-        let u = super::cos_in(u);
-        if u < lambda_tiny_below() {
+        // One test sends every edge out of line: u below lambda_tiny_below (±0 included),
+        // u > 1, negative u and NaN (false for it).
+        if !(u >= lambda_tiny_below() && u <= F::ONE) {
             return lambda_tiny(u, alpha);
         }
         lambda_kernel(u, alpha)
@@ -539,19 +561,58 @@ pub mod ggx {
         t / ((F::ONE + F::ONE) * (u2 + u * (u2 + t).sqrt()))
     }
 
-    /// Λ for u below `lambda_tiny_below` (and ±0, NaN): (t/(u + √(u² + t)))/(2u), two
-    /// divisions, so that no intermediate is subnormal (out of line).
+    /// Λ at the edges (out of line): u below `lambda_tiny_below` (and ±0) as
+    /// (t/(u + √(u² + t)))/(2u), two divisions, so that no intermediate is subnormal; u > 1
+    /// as u = 1 and negative u as |u| (`cos_in`); NaN stays NaN.
     #[cold]
     #[inline(never)]
     fn lambda_tiny<F: Real>(u: F, alpha: F) -> F {
-        let u = u.abs();
+        let u = super::cos_in(u);
         let t = alpha * alpha * ((F::ONE - u) * (F::ONE + u));
         t / (u + (u * u + t).sqrt()) / (u + u)
     }
 
-    // G1 = 1/(1 + Λ) from the same Λ as G2 (not the closed form 2u/(u + √(u² + t)), one
-    // division fewer), so that G2 ≤ min(G1) holds in floating point, not only to an ulp.
-    g1_g2_from_lambda!();
+    /// G1(u) = 2/(1 + √(1 + s)) = 2u/(u + √(u² + α²(1−u²))) for 0 ≤ u ≤ 1 (one square root,
+    /// one division); u > 1 is 1, negative u is |u|, and u below `lambda_tiny_below` takes
+    /// the edge path (G1 → 2u/(α√(1 − u²)) there: the closed form keeps full precision).
+    #[inline]
+    pub fn g1<F: Real>(u: F, alpha: F) -> F {
+        if !(u >= F::ZERO && u <= F::ONE) {
+            return g1_edges(u, alpha);
+        }
+        g1_kernel(u, alpha)
+    }
+
+    /// [`g1`]'s formula for 0 ≤ u ≤ 1 (the slice kernels' lanes).
+    #[inline(always)]
+    pub(crate) fn g1_kernel<F: Real>(u: F, alpha: F) -> F {
+        let t = alpha * alpha * ((F::ONE - u) * (F::ONE + u));
+        (u + u) / (u + (u * u + t).sqrt())
+    }
+
+    /// G1 at u ∉ [0, 1] (out of line): `cos_in`'s u, NaN for NaN.
+    #[cold]
+    #[inline(never)]
+    fn g1_edges<F: Real>(u: F, alpha: F) -> F {
+        let u = super::cos_in(u);
+        if u.to_f64().is_nan() {
+            return u;
+        }
+        g1(u, alpha)
+    }
+
+    /// Height-correlated G2 = 1/(1 + Λ(u_o) + Λ(u_i)) = g_o g_i/(1 − (1 − g_o)(1 − g_i)) from
+    /// the two G1 = g (one division besides theirs, as from two Λ), then capped by both, so
+    /// that G2 ≤ min(G1(u_o), G1(u_i)) holds in floating point (the two closed forms round
+    /// differently: uncapped, G2 exceeded G1 by an ulp at u_i = 1).
+    #[inline]
+    pub fn g2<F: Real>(u_o: F, u_i: F, alpha: F) -> F {
+        let (go, gi) = (g1(u_o, alpha), g1(u_i, alpha));
+        let g = go * gi / (F::ONE - (F::ONE - go) * (F::ONE - gi));
+        // (0/0 where both are 0, grazing on both sides: G2 = 0 there.)
+        let g = if go * gi > F::ZERO { g } else { go * gi };
+        g.min(go).min(gi)
+    }
 
     /// σ(u) for u ∈ [−1, 1] (σ(0) = α/2), evaluated in f64.
     #[inline]
