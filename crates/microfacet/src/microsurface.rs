@@ -103,20 +103,20 @@ fn upper(w: Vec3) -> Vec3 {
     }
 }
 
-/// m, or where rounding has tipped it to face away from the unit w (w·m < 0), m less its
-/// component along w, renormalised (w·m = 0 to rounding; m.z only grows, as w.z ≥ 0).
+/// m, or where it lies on or behind the plane perpendicular to the unit w (w·m ≤ 0), m less
+/// its component along w plus a margin of 1e-15, renormalised (m.z only grows, as w.z ≥ 0).
 ///
-/// Every visible-normal sampler draws m with w·m ≥ 0 exactly, but the unstretch magnifies
-/// the rounding of the α = 1 slopes (by up to αmax/αmin), and near the cap's antipode of w
-/// the spherical-cap construction is a difference of near-opposite vectors: the computed
-/// w·m can come out slightly negative for a normal nearly perpendicular to w. This puts it
-/// back on the boundary it rounded past.
+/// Every visible-normal sampler draws m with w·m > 0 almost surely, but the unstretch
+/// magnifies the rounding of the α = 1 slopes (by up to αmax/αmin), and near the cap's
+/// antipode of w the spherical-cap construction is a difference of near-opposite vectors:
+/// the computed w·m can come out zero or slightly negative for a normal nearly perpendicular
+/// to w, where the visible density (and the pdf) vanishes. This moves it just inside.
 pub(crate) fn facing(m: Vec3, w: Vec3) -> Vec3 {
     let d = m.dot(w);
-    if d < 0.0 {
-        (m - w * d).normalize()
-    } else {
+    if d > 0.0 {
         m
+    } else {
+        (m - w * (d - 2e-15)).normalize()
     }
 }
 

@@ -82,19 +82,28 @@ pub fn lambda<F: Real>(u: F, alpha: F) -> F {
     }
     let (u, a) = (u.to_f64(), alpha.to_f64());
     let x = 0.5 * a * a * ((1.0 - u) * (1.0 + u)) / (u * u);
-    // x ≥ 2^16 is the grazing expansion; where x itself overflows (u² underflows, or
-    // α² tan²θ passes f64::MAX) Λ is still finite, and √x is formed without x. u ∉ (0, 1]
-    // lands here or below the table (u > 1: x < 0, Λ = 0 as at u = 1).
-    if x >= fit::pow2(DGGX_K1) || x.is_nan() {
-        return F::from_f64(lambda_grazing(u, a));
+    // The table's range (false for NaN), the one test on the hot path; the rest out of line.
+    if x >= fit::pow2(DGGX_K0) && x < fit::pow2(DGGX_K1) {
+        return F::from_f64(fit::eval(&DGGX, DGGX_K0, DGGX_M, x));
     }
-    F::from_f64(lambda_x(x))
+    F::from_f64(lambda_ends(u, a, x))
+}
+
+/// Λ outside the table (out of line): near the normal and u > 1 (x < 2^−30: x < 0 at u > 1,
+/// Λ = 0 as at u = 1) by [`lambda_x`]; at grazing (x ≥ 2^16) by the expansion, where x may
+/// itself have overflowed (u² underflows, or α² tan²θ passes f64::MAX) while Λ is finite:
+/// √x is formed without x. NaN stays NaN.
+#[cold]
+#[inline(never)]
+fn lambda_ends(u: f64, a: f64, x: f64) -> f64 {
+    if x < fit::pow2(DGGX_K0) {
+        return lambda_x(x);
+    }
+    lambda_grazing(u, a)
 }
 
 /// Λ in the grazing expansion of [`lambda_x`] from √x = α √((1 − u)(1 + u)/2)/u, which does
-/// not overflow while Λ is finite (out of line; NaN stays NaN, u = 0 gives +∞).
-#[cold]
-#[inline(never)]
+/// not overflow while Λ is finite (NaN stays NaN, u = 0 gives +∞).
 fn lambda_grazing(u: f64, a: f64) -> f64 {
     // (u < 0, −0 included: the side the direction comes from, |u|.)
     let u = super::cos_in(u);

@@ -322,16 +322,17 @@ fn ggx_visible_stretched_len<F: Real>(w: [F; 3], ax: F, ay: F, sz: F, u: [F; 2],
     [hx * inv, hy * inv, hz * inv]
 }
 
-/// m, or where rounding has tipped it onto or past the plane perpendicular to w (w·m ≤ 0), m
-/// less its component along w plus a margin, renormalised: w·m is then a few ulp above 0, so
-/// that it stays positive once rounded to F (and m.z grows: w is mirrored to w.z ≥ 0).
+/// m, or where it lies on or behind the plane perpendicular to w (w·m ≤ 0 as computed here),
+/// m less its component along w plus a margin, renormalised: w·m is then a few ulp above 0
+/// (so that it stays positive once rounded to F), and m.z grows (w is mirrored to w.z ≥ 0).
 ///
-/// Every visible-normal sampler draws m with w·m > 0 almost surely; the rounding of the
+/// Every visible-normal sampler draws m with w·m > 0 almost surely, but the rounding of the
 /// stretched slopes, magnified by the unstretch (up to αmax/αmin, 1e12 at the extremes), can
-/// make the computed w·m zero or slightly negative where the true one is near 0 (a normal
-/// nearly perpendicular to w), and so can a uniform of exactly 0 at a grazing w, where the
-/// density vanishes. One dot product and a branch that is essentially never taken; the fix is
-/// out of line. (NaN takes the fix too, and stays NaN.)
+/// make the computed w·m slightly negative where the true one is near 0 (a normal nearly
+/// perpendicular to w), and a uniform of exactly 0 (2⁻²⁴ per draw from an f32 source) at a
+/// grazing w gives w·m = 0 exactly, where the density, and so the pdf, vanishes. One dot
+/// product and a branch that is essentially never taken; the fix is out of line. (NaN takes
+/// it too, and stays NaN.)
 #[inline(always)]
 fn facing<F: Real>(m: [F; 3], w: [F; 3]) -> [F; 3] {
     let d = m[0].to_f64() * w[0].to_f64()
@@ -340,23 +341,14 @@ fn facing<F: Real>(m: [F; 3], w: [F; 3]) -> [F; 3] {
     // w.z < 0 is mirrored: the sign of the dot flips with it (not at w.z = −0, which is not
     // below the horizon).
     let d = if w[2] < F::ZERO { -d } else { d };
-    // Below the margin relative to |w| (its 1-norm, within √3 of the length), the sign of a
-    // dot formed with rounding is not to be trusted: out of line, on the unit w. (A true
-    // w·m below 1e-15 has probability ~1e-30: the visible density vanishes like w·m.)
-    let scale = w[0].abs().to_f64() + w[1].abs().to_f64() + w[2].abs().to_f64();
-    let floor = FACING_MARGIN[usize::from(F::IS_F32)] * scale;
-    if d <= floor || d.is_nan() {
-        return facing_fix(m, w);
+    if d > 0.0 {
+        return m;
     }
-    m
+    facing_fix(m, w)
 }
 
-/// The w·m that [`facing`] guarantees (f64, f32): above the rounding of a unit vector's
-/// components to F (1.1e-16 each in f64, 6e-8 in f32), so that the dot stays positive as the
-/// caller recomputes it.
-const FACING_MARGIN: [f64; 2] = [1e-15, 4e-7];
-
-/// [`facing`]'s correction (out of line).
+/// [`facing`]'s correction (out of line), on the unit w: the margin lies above the rounding
+/// of a unit vector's components to F (1.1e-16 each in f64, 6e-8 in f32).
 #[cold]
 #[inline(never)]
 fn facing_fix<F: Real>(m: [F; 3], w: [F; 3]) -> [F; 3] {
@@ -364,14 +356,9 @@ fn facing_fix<F: Real>(m: [F; 3], w: [F; 3]) -> [F; 3] {
     let s = if w[2] < 0.0 { -1.0 } else { 1.0 };
     let l = (w[0] * w[0] + w[1] * w[1] + w[2] * w[2]).sqrt();
     let w = [s * w[0] / l, s * w[1] / l, s * w[2] / l];
-    let mf = m;
     let m = [m[0].to_f64(), m[1].to_f64(), m[2].to_f64()];
-    let margin = FACING_MARGIN[usize::from(F::IS_F32)];
-    let d = m[0] * w[0] + m[1] * w[1] + m[2] * w[2];
-    if d > margin {
-        return mf;
-    }
-    let d = d - 2.0 * margin;
+    let margin = if F::IS_F32 { 4e-7 } else { 1e-15 };
+    let d = m[0] * w[0] + m[1] * w[1] + m[2] * w[2] - 2.0 * margin;
     unit_normal(m[0] - d * w[0], m[1] - d * w[1], m[2] - d * w[2])
 }
 
