@@ -51,13 +51,7 @@ pub fn d<F: Real>(u: F, alpha: F) -> F {
 #[cold]
 #[inline(never)]
 fn d_edges<F: Real>(u: F, alpha: F) -> F {
-    if u > F::ONE {
-        d(F::ONE, alpha)
-    } else if u <= F::ZERO {
-        F::ZERO
-    } else {
-        u
-    }
+    super::d_at_edge(u, |v| d(v, alpha))
 }
 
 /// Λ(u) = e^{−a²} r(a)/(2a√π), a = cot θ/α, r(a) = 1 − √π a erfcx(a), for 0 ≤ u ≤ 1
@@ -77,11 +71,7 @@ pub fn lambda<F: Real>(u: F, alpha: F) -> F {
 #[cold]
 #[inline(never)]
 fn lambda_edges(u: f64, alpha: f64) -> f64 {
-    let u = super::cos_in(u);
-    if u == 0.0 {
-        return f64::INFINITY;
-    }
-    lambda(u, alpha)
+    super::lambda_at_edge(u, |v| lambda(v, alpha))
 }
 
 /// Λ at a = cot θ/α ≥ 0, as e^{−a²} r(a)/(2a√π): r is a table with no cancellation anywhere

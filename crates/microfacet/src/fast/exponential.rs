@@ -165,14 +165,7 @@ pub fn lambda<F: Real>(u: F, alpha: F) -> F {
 #[inline(never)]
 fn lambda_outside(u: f64, a: f64) -> f64 {
     if !(u > 0.0 && u <= 1.0) {
-        let u = super::cos_in(u);
-        if u == 0.0 {
-            return f64::INFINITY;
-        }
-        if u.is_nan() {
-            return u;
-        }
-        return lambda(u, a);
+        return super::lambda_at_edge(u, |v| lambda(v, a));
     }
     lambda_z_ends(z_of(u, a))
 }
@@ -181,13 +174,7 @@ fn lambda_outside(u: f64, a: f64) -> f64 {
 #[cold]
 #[inline(never)]
 fn d_edges(u: f64, a: f64) -> f64 {
-    if u > 1.0 {
-        d(1.0, a)
-    } else if u <= 0.0 {
-        0.0
-    } else {
-        u
-    }
+    super::d_at_edge(u, |v| d(v, a))
 }
 
 /// Λ for the f32 entry points (see [`lambda`]), from f32 inputs widened to f64.

@@ -410,14 +410,7 @@ impl Gtr {
     #[inline(never)]
     fn lambda_outside(&self, u: f64) -> f64 {
         if !(u > 0.0 && u <= 1.0) {
-            let u = super::cos_in(u);
-            if u == 0.0 {
-                return f64::INFINITY;
-            }
-            if u.is_nan() {
-                return u;
-            }
-            return self.lambda(u);
+            return super::lambda_at_edge(u, |v| self.lambda(v));
         }
         self.lambda_cot_ends(u / ((1.0 - u) * (1.0 + u)).sqrt())
     }

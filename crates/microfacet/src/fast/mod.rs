@@ -397,6 +397,33 @@ fn cos_in<F: Real>(u: F) -> F {
     }
 }
 
+/// D where a fast path's range test (u ∈ (0, 1]) failed: 0 for u ≤ 0, D(1) for u > 1 (the
+/// z of a rounded unit vector), NaN for NaN. The callers are out of line.
+#[inline(always)]
+fn d_at_edge<F: Real>(u: F, d: impl Fn(F) -> F) -> F {
+    if u > F::ONE {
+        d(F::ONE)
+    } else if u <= F::ZERO {
+        F::ZERO
+    } else {
+        u
+    }
+}
+
+/// Λ where a fast path's range test failed: at [`cos_in`]'s u (|u|, at most 1), +∞ at ±0,
+/// NaN for NaN. The callers are out of line.
+#[inline(always)]
+fn lambda_at_edge(u: f64, lambda: impl Fn(f64) -> f64) -> f64 {
+    let u = cos_in(u);
+    if u == 0.0 {
+        f64::INFINITY
+    } else if u.is_nan() {
+        u
+    } else {
+        lambda(u)
+    }
+}
+
 /// The floating-point operations the fast paths need; implemented for f32 and f64.
 pub trait Real:
     Copy
@@ -510,13 +537,7 @@ pub mod ggx {
     #[cold]
     #[inline(never)]
     fn d_edges<F: Real>(u: F, alpha: F) -> F {
-        if u > F::ONE {
-            d(F::ONE, alpha)
-        } else if u <= F::ZERO {
-            F::ZERO
-        } else {
-            u
-        }
+        super::d_at_edge(u, |v| d(v, alpha))
     }
 
     /// Below this u (1e-290 in f64, 1e-30 in f32) u√(u² + t) of [`lambda`] could be
