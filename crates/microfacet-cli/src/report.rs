@@ -360,6 +360,23 @@ fn slope_plot(kind: NdfKind) -> Plot {
     p
 }
 
+/// The density per degree of θm of `samples` normals from `draw`, in 60 bins over [0°, 90°]
+/// (bin centre, density).
+fn theta_histogram(samples: usize, mut draw: impl FnMut() -> Vec3) -> Vec<(f64, f64)> {
+    let bins = 60;
+    let width = 90.0 / bins as f64;
+    let mut counts = vec![0.0; bins];
+    for _ in 0..samples {
+        let theta = draw().z.clamp(-1.0, 1.0).acos().to_degrees();
+        counts[((theta / width) as usize).min(bins - 1)] += 1.0;
+    }
+    counts
+        .iter()
+        .enumerate()
+        .map(|(i, c)| ((i as f64 + 0.5) * width, c / (samples as f64 * width)))
+        .collect()
+}
+
 /// Histogram of θm of samples against the density of θm: 2π sin θ cos θ D(cos θ) for D·cos,
 /// sin θ times the φ-integral of the visible density for visible normals (per degree).
 fn histogram_plot(kind: NdfKind, visible: bool) -> Plot {
@@ -375,26 +392,15 @@ fn histogram_plot(kind: NdfKind, visible: bool) -> Plot {
         Vec3::new(t.sin(), 0.0, t.cos())
     };
     let samples = if visible { 20_000 } else { 100_000 };
-    let bins = 60;
-    let width = 90.0 / bins as f64;
-    let mut counts = vec![0.0; bins];
     let mut rng = SplitMix64(11);
-    for _ in 0..samples {
+    let hist = theta_histogram(samples, || {
         let u = [rng.next_f64(), rng.next_f64()];
-        let wm = if visible {
+        if visible {
             m.sample_visible(wi, u)
         } else {
             m.sample_dcos(u)
-        };
-        let theta = wm.z.clamp(-1.0, 1.0).acos().to_degrees();
-        let b = ((theta / width) as usize).min(bins - 1);
-        counts[b] += 1.0;
-    }
-    let hist = counts
-        .iter()
-        .enumerate()
-        .map(|(i, c)| ((i as f64 + 0.5) * width, c / (samples as f64 * width)))
-        .collect();
+        }
+    });
     let density = |deg: f64| {
         let t = deg.to_radians();
         let (s, c) = t.sin_cos();
@@ -575,19 +581,8 @@ fn chi3_histogram_plot() -> Plot {
     let n = ndf(NdfKind::Exponential, alpha, None);
     let sampler = ExponentialChi3::new(alpha).expect("α = 0.8 is valid");
     let mut rng = rand_xorshift::XorShiftRng::seed_from_u64(5);
-    let (samples, bins) = (100_000, 60);
-    let width = 90.0 / bins as f64;
-    let mut counts = vec![0.0; bins];
-    for _ in 0..samples {
-        let m = sampler.sample(&mut rng);
-        let theta = m.z.clamp(-1.0, 1.0).acos().to_degrees();
-        counts[((theta / width) as usize).min(bins - 1)] += 1.0;
-    }
-    let hist = counts
-        .iter()
-        .enumerate()
-        .map(|(i, c)| ((i as f64 + 0.5) * width, c / (samples as f64 * width)))
-        .collect();
+    let samples = 100_000;
+    let hist = theta_histogram(samples, || sampler.sample(&mut rng));
     let curve = grid(0.1, 89.9, 200)
         .into_iter()
         .map(|d| {

@@ -144,6 +144,20 @@ pub fn sigma<F: Real>(u: F, alpha: F) -> F {
     super::sigma_from_lambda(u, s0, |v| lambda(v, alpha))
 }
 
+/// The floor of a component's mixing variable t in both samplers. t = 0 (a uniform of
+/// exactly 0: probability 2⁻⁵³, or 2⁻²⁴ from an f32 source) would put the normal on the
+/// horizon; t ≥ 1e-200 keeps √t and c²t positive (a component roughness of at most 1e100 α),
+/// and in f32 t ≥ 1e-60, so that the normal's z ≥ √(1e-60 · 2⁻²⁴)/1e6 is not rounded to 0.
+/// Below the floor lies probability ~1e-100 (1e-30 in f32).
+#[inline(always)]
+fn t_floor<F: Real>() -> f64 {
+    if F::IS_F32 {
+        1e-60
+    } else {
+        1e-200
+    }
+}
+
 /// A normal distributed exactly as D(m) cos θm, anisotropic roughness (αx, αy): D·cos of
 /// the superposition D = ∫₀^∞ e^{−t} D_GGX(αx/√t, αy/√t) dt is the same superposition of the
 /// components' D·cos (each integrates to 1), so t ~ Exp(1) from `uniform` (the ziggurat,
@@ -155,11 +169,7 @@ pub fn sigma<F: Real>(u: F, alpha: F) -> F {
 #[inline]
 pub fn sample_dcos<F: Real>(ax: F, ay: F, u: [F; 2], uniform: &mut impl FnMut() -> F) -> [F; 3] {
     let mut next = || uniform().to_f64();
-    // t = 0 (a uniform of exactly 0: probability 2⁻⁵³, or 2⁻²⁴ from an f32 source) would put
-    // the normal on the horizon; t ≥ 1e-200 keeps it above (roughness at most 1e100 α), and
-    // in f32 t ≥ 1e-60, so that z ≥ √(1e-60 · 2⁻²⁴)/1e6 is not rounded to 0 either.
-    let floor = if F::IS_F32 { 1e-60 } else { 1e-200 };
-    let t = super::ziggurat::exp1(next(), &mut next).max(floor);
+    let t = super::ziggurat::exp1(next(), &mut next).max(t_floor::<F>());
     super::ggx_dcos(ax.to_f64(), ay.to_f64(), [u[0].to_f64(), u[1].to_f64()], t)
 }
 
@@ -233,10 +243,7 @@ pub fn sample_visible<F: Real>(
         };
         let x = super::ziggurat::sample(layers, w, &mut next);
         let t = if exp { x } else { 0.5 * x * x };
-        // t below 1e-200 (1e-60 in f32) has probability ~1e-100 (a uniform of exactly 0
-        // gives t = 0); the floor keeps √t and c²t positive (a component roughness of at most
-        // 1e100 α), and in f32 the normal's z from rounding to 0 (as in `sample_dcos`).
-        let t = t.max(if F::IS_F32 { 1e-60 } else { 1e-200 });
+        let t = t.max(t_floor::<F>());
         s = t.sqrt();
         // √(c²t + h²) is also the length of the stretched direction (αx w.x, αy w.y, √t w.z)
         // that the GGX step normalises.

@@ -164,14 +164,22 @@ fn cos_sin_turn(v: f64) -> (f64, f64) {
 #[inline(always)]
 fn slope_frame<F: Real>(w: [F; 3], ax: f64, ay: f64) -> (f64, f64, f64, f64) {
     let w = [w[0].to_f64(), w[1].to_f64(), w[2].to_f64()];
-    let sign = if w[2] < 0.0 { -1.0 } else { 1.0 };
-    let (sx, sy, c) = (sign * ax * w[0], sign * ay * w[1], sign * w[2]);
-    let h = (sx * sx + sy * sy).sqrt();
+    let frame = frame_of(w, ax, ay);
+    let (c, h) = (frame.0, frame.1);
     // A direction far from unit length (|w| past 1e±140: squares could over- or underflow)
     // is rescaled first; false for NaN, which the rescaling passes on.
     if !(h <= 1e140 && c <= 1e140 && c + h >= 1e-140) {
         return slope_frame_rescaled(w, ax, ay);
     }
+    frame
+}
+
+/// [`slope_frame`]'s arithmetic on an f64 direction.
+#[inline(always)]
+fn frame_of(w: [f64; 3], ax: f64, ay: f64) -> (f64, f64, f64, f64) {
+    let sign = if w[2] < 0.0 { -1.0 } else { 1.0 };
+    let (sx, sy, c) = (sign * ax * w[0], sign * ay * w[1], sign * w[2]);
+    let h = (sx * sx + sy * sy).sqrt();
     let (cp, sp) = if h == 0.0 {
         (1.0, 0.0)
     } else {
@@ -184,14 +192,7 @@ fn slope_frame<F: Real>(w: [F; 3], ax: f64, ay: f64) -> (f64, f64, f64, f64) {
 #[cold]
 #[inline(never)]
 fn slope_frame_rescaled(w: [f64; 3], ax: f64, ay: f64) -> (f64, f64, f64, f64) {
-    let w = rescaled(w);
-    let sign = if w[2] < 0.0 { -1.0 } else { 1.0 };
-    let (sx, sy, c) = (sign * ax * w[0], sign * ay * w[1], sign * w[2]);
-    let h = (sx * sx + sy * sy).sqrt();
-    if h == 0.0 || h.is_nan() {
-        return (c, h, 1.0, 0.0);
-    }
-    (c, h, sx / h, sy / h)
+    frame_of(rescaled(w), ax, ay)
 }
 
 /// w divided by its largest component's magnitude (the same direction, length in [1, √3]);
