@@ -20,6 +20,9 @@ pub enum ParamError {
     Alpha(f64),
     /// γ (GTR) is NaN, ≤ 0 or above [`GAMMA_MAX`].
     Gamma(f64),
+    /// αx ≠ αy for GTR at this γ ≠ 2 (GTR is shape invariant, and so stretchable, only at
+    /// γ = 2, where it is GGX: [`crate::Microfacet::gtr`]).
+    Anisotropic(f64),
 }
 
 impl fmt::Display for ParamError {
@@ -32,6 +35,10 @@ impl fmt::Display for ParamError {
             ParamError::Gamma(g) => write!(
                 f,
                 "gamma must be a finite number in (0, {GAMMA_MAX}], got {g}"
+            ),
+            ParamError::Anisotropic(g) => write!(
+                f,
+                "GTR is anisotropic only at gamma = 2 (where it is GGX); got alpha_x != alpha_y at gamma = {g}"
             ),
         }
     }

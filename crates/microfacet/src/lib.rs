@@ -82,12 +82,16 @@
 //! ```
 
 pub mod beckmann;
+pub mod bsdf;
 pub mod chi2;
+pub mod distribution;
 pub mod double_ggx;
 pub mod error;
 pub mod exponential;
 pub mod family;
 pub mod fast;
+pub mod frame;
+pub mod fresnel;
 pub mod ggx;
 pub mod gtr;
 pub mod microsurface;
@@ -104,7 +108,9 @@ pub mod verify;
 pub mod visible;
 
 pub use beckmann::Beckmann;
+pub use distribution::{Distribution, Microfacet, Sample};
 pub use double_ggx::DoubleGgx;
+pub use fast::Real;
 pub use error::ParamError;
 pub use exponential::Exponential;
 pub use family::{AnyNdf, NdfKind};

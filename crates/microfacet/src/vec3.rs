@@ -106,3 +106,17 @@ impl Neg for Vec3 {
         Vec3::new(-self.x, -self.y, -self.z)
     }
 }
+
+impl From<[f64; 3]> for Vec3 {
+    #[inline]
+    fn from(v: [f64; 3]) -> Vec3 {
+        Vec3::new(v[0], v[1], v[2])
+    }
+}
+
+impl From<Vec3> for [f64; 3] {
+    #[inline]
+    fn from(v: Vec3) -> [f64; 3] {
+        [v.x, v.y, v.z]
+    }
+}

@@ -121,7 +121,7 @@ fn sigma_from_lambda<F: Real>(u: F, s0: F, lambda: impl Fn(F) -> F) -> F {
 /// (the quadrant of a random v is a coin flip). About twice as fast as libm's sin_cos here
 /// (BENCHMARKS.md).
 #[inline]
-fn cos_sin_turn(v: f64) -> (f64, f64) {
+pub(crate) fn cos_sin_turn(v: f64) -> (f64, f64) {
     // 1.5·2^52: adding it rounds to an integer held in the low mantissa bits.
     const MAGIC: f64 = 6_755_399_441_055_744.0;
     // ±1/n! for n = 1, 3, …, 15 (sin x/x in x²) and n = 0, 2, …, 16 (cos x in x²).
@@ -335,7 +335,7 @@ fn ggx_visible_stretched_len<F: Real>(w: [F; 3], ax: F, ay: F, sz: F, u: [F; 2],
 /// product and a branch that is essentially never taken; the fix is out of line. (NaN takes
 /// it too, and stays NaN.)
 #[inline(always)]
-fn facing<F: Real>(m: [F; 3], w: [F; 3]) -> [F; 3] {
+pub(crate) fn facing<F: Real>(m: [F; 3], w: [F; 3]) -> [F; 3] {
     let d = m[0].to_f64() * w[0].to_f64()
         + m[1].to_f64() * w[1].to_f64()
         + m[2].to_f64() * w[2].to_f64();

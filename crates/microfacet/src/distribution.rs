@@ -1,0 +1,706 @@
+//! The renderer's door: one anisotropic microfacet distribution type for every NDF, in f32
+//! or f64, with the visible-normal pdf beside every sample.
+//!
+//! [`Microfacet<F, N>`](Microfacet) is an NDF `N` ([`Ggx`], [`Beckmann`], [`DoubleGgx`],
+//! [`Exponential`], [`Gtr`]) at roughness (αx, αy) in precision `F` (f32 or f64). It is built
+//! once per material ([`Microfacet::new`], validated: α ∈ [1e-6, 1e6]; GTR through
+//! [`Microfacet::gtr`]) and is then cheap per call, through the [`Distribution`] trait that
+//! the BSDFs ([`crate::bsdf`]) are generic over:
+//!
+//! | method | value |
+//! |---|---|
+//! | `d(wm)` | D(wm), 0 below the horizon |
+//! | `lambda(w)` | Smith Λ(w) of the side w comes from (Λ(−w) = Λ(w)) |
+//! | `g1(w)` | 1/(1 + Λ(w)) |
+//! | `g2(wo, wi)` | height-correlated 1/(1 + Λ(wo) + Λ(wi)) (Heitz 2014, eq. 99, as pbrt-v4 uses it for both reflection and transmission) |
+//! | `g2_separable(wo, wi)` | G1(wo) G1(wi) |
+//! | `d_visible(w, wm)` = `pdf(w, wm)` | G1(w) max(0, w·wm) D(wm)/|w.z| (w.z < 0: w mirrored to −w) |
+//! | `sample(w, u)` | a visible normal with its pdf ([`Sample`]) |
+//! | `sample_dcos(u)` | a normal distributed as D(m) cos θm, with its pdf |
+//!
+//! Directions are unit vectors `[F; 3]` in the local shading frame (z = the shading normal;
+//! [`crate::frame::Frame`] converts). The projected roughness of an anisotropic Λ, the
+//! stretch of the samplers and the normalisation of D are inside; no caller computes them.
+//!
+//! **Anisotropy.** Beckmann, GGX, Double GGX and the Exponential NDF are shape invariant
+//! (P22(p, q) = P22₁(p/αx, q/αy)/(αx αy)): D(m) = P22₁(x̃, ỹ)/(αx αy z⁴) with x̃ = x/(αx z), and
+//! Λ(w) is the α = 1 Λ at cot θ̃ = z/√(αx²x² + αy²y²) (Heitz 2014, §5.3). GTR at γ ≠ 2 is not
+//! shape invariant: Burley's anisotropic form c/((x/αx)² + (y/αy)² + z²)^γ has no projected
+//! roughness for Λ and no stretch for its visible normals, and its Λ would be a 2D
+//! quadrature per direction. GTR is therefore isotropic here except at γ = 2, where it *is*
+//! GGX (same D, same normalisation) and runs GGX's anisotropic kernels; [`Microfacet::gtr`]
+//! rejects αx ≠ αy at other γ with [`ParamError::Anisotropic`].
+//!
+//! **Evaluation.** The fast paths ([`crate::fast`]) by default: closed forms for GGX and
+//! Beckmann, fitted tables (≤ 1e-7 relative) for Double GGX, the Exponential NDF and GTR.
+//! Isotropic materials call the fast scalar functions of u = |w.z| as they are (bit for
+//! bit); anisotropic ones evaluate them at the projected roughness, except GGX's D and Λ
+//! and Beckmann's Λ, which have direct anisotropic forms. The validated exact path
+//! ([`Microfacet::exact`], f64) implements the same trait from the exact NDF types
+//! (closed forms ≤ 1e-13, quadratures ≤ 1e-10).
+//!
+//! **Sampling.** `sample(w, u)` takes two uniforms u ∈ [0, 1)². GGX (spherical caps, Dupuy &
+//! Benyoub 2023) and Beckmann (the exact inversion of Heitz & d'Eon 2014) are warps of u.
+//! Double GGX, the Exponential NDF and GTR use exact rejection samplers: u drives the first
+//! candidate, and the uniforms of any further ones come from a SplitMix64 stream seeded by
+//! the bits of u ([`UniformStream`]) — the same shape for every NDF, deterministic in u, and
+//! the exact distribution (χ²-tested). GGX also has Eto & Tokuyoshi's bounded VNDF
+//! ([`Microfacet::sample_bounded`]) with its reflection pdf.
+//!
+//! ```
+//! use microfacet::{Distribution, Exponential, Ggx, Microfacet};
+//! let ggx = Microfacet::<f32, Ggx>::new(0.3, 0.1)?;
+//! let wo = [0.48f32, 0.0, 0.8775];
+//! let s = ggx.sample(wo, [0.3, 0.7]);
+//! assert!(s.pdf > 0.0 && (s.pdf - ggx.pdf(wo, s.wm)).abs() <= 1e-5 * s.pdf);
+//! let exp = Microfacet::<f32, Exponential>::new(0.3, 0.1)?; // same API, another NDF
+//! assert!(exp.sample(wo, [0.3, 0.7]).pdf > 0.0);
+//! # Ok::<(), microfacet::ParamError>(())
+//! ```
+
+use crate::fast::{self, Real};
+use crate::frame::{dot, normalize};
+use crate::microsurface::{Isotropic, Microsurface, Stretched};
+use crate::vec3::Vec3;
+use crate::visible::UnitSlopes;
+use crate::{Beckmann, DoubleGgx, Exponential, Ggx, Gtr, ParamError};
+use std::marker::PhantomData;
+use std::sync::Arc;
+
+/// A visible normal and its density w.r.t. the solid angle of the normal.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct Sample<F> {
+    /// The microfacet normal (unit, upper hemisphere, facing the sampled direction).
+    pub wm: [F; 3],
+    /// Its density: [`Distribution::pdf`]`(w, wm)`.
+    pub pdf: F,
+}
+
+/// The direction API every distribution has (f32 or f64): what the BSDFs use.
+pub trait Distribution<F: Real> {
+    /// (αx, αy).
+    fn alpha(&self) -> (F, F);
+
+    /// D(wm) for a unit normal; 0 for wm.z ≤ 0.
+    fn d(&self, wm: [F; 3]) -> F;
+
+    /// Smith Λ(w) of the side w comes from (a function of |w.z| and the azimuth); +∞ at
+    /// grazing (w.z = 0), 0 at normal incidence.
+    fn lambda(&self, w: [F; 3]) -> F;
+
+    /// G1(w) = 1/(1 + Λ(w)).
+    #[inline]
+    fn g1(&self, w: [F; 3]) -> F {
+        F::ONE / (F::ONE + self.lambda(w))
+    }
+
+    /// Height-correlated G2(wo, wi) = 1/(1 + Λ(wo) + Λ(wi)).
+    #[inline]
+    fn g2(&self, wo: [F; 3], wi: [F; 3]) -> F {
+        F::ONE / (F::ONE + self.lambda(wo) + self.lambda(wi))
+    }
+
+    /// Separable G2(wo, wi) = G1(wo) G1(wi) (Mitsuba 3's `G`).
+    #[inline]
+    fn g2_separable(&self, wo: [F; 3], wi: [F; 3]) -> F {
+        self.g1(wo) * self.g1(wi)
+    }
+
+    /// The visible-normal density D_w(wm) = G1(w) max(0, w·wm) D(wm)/|w.z|, for w.z < 0 that
+    /// of −w (the microsurface seen from below is sampled through its mirror image, as in
+    /// pbrt-v4); 0 at grazing w and for wm below the horizon.
+    #[inline]
+    fn d_visible(&self, w: [F; 3], wm: [F; 3]) -> F {
+        let z = w[2].abs();
+        let c = if w[2] < F::ZERO {
+            -dot(w, wm)
+        } else {
+            dot(w, wm)
+        };
+        // (False for NaN.)
+        if !(c > F::ZERO && z > F::ZERO) {
+            return if c == c { F::ZERO } else { c };
+        }
+        self.g1(w) * c * self.d(wm) / z
+    }
+
+    /// The density of [`Distribution::sample`]: [`Distribution::d_visible`].
+    #[inline]
+    fn pdf(&self, w: [F; 3], wm: [F; 3]) -> F {
+        self.d_visible(w, wm)
+    }
+
+    /// A visible normal for w (w.z < 0 is mirrored) from u ∈ [0, 1)².
+    fn sample_wm(&self, w: [F; 3], u: [F; 2]) -> [F; 3];
+
+    /// A visible normal and its pdf.
+    #[inline]
+    fn sample(&self, w: [F; 3], u: [F; 2]) -> Sample<F> {
+        let wm = self.sample_wm(w, u);
+        Sample {
+            wm,
+            pdf: self.pdf(w, wm),
+        }
+    }
+
+    /// A normal distributed as D(m) cos θm, and that density.
+    fn sample_dcos(&self, u: [F; 2]) -> Sample<F>;
+
+    /// Whether the surface is effectively smooth (max(αx, αy) < 1e-3): the BSDFs then
+    /// behave as a perfect mirror or interface (a delta lobe), as pbrt-v4 does. At α = 1e-3
+    /// the GGX lobe's half-width is 0.06°, below a pixel's footprint in any practical
+    /// camera, and D's peak 3e5 strains f32 pdf arithmetic.
+    #[inline]
+    fn effectively_smooth(&self) -> bool {
+        let (ax, ay) = self.alpha();
+        ax.max(ay) < F::from_f64(1e-3)
+    }
+}
+
+/// The uniforms of a rejection sampler's second and later candidates: SplitMix64 (Steele,
+/// Lea & Flood 2014) seeded by the bits of the sample's u, so that
+/// [`Distribution::sample`] is a deterministic function of (w, u) for every NDF. f64: 53
+/// random bits per uniform; f32: 24; both in [0, 1).
+#[derive(Clone, Copy, Debug)]
+pub struct UniformStream(u64);
+
+impl UniformStream {
+    /// The stream of u.
+    #[inline(always)]
+    pub fn new<F: Real>(u: [F; 2]) -> Self {
+        let a = u[0].to_f64().to_bits();
+        let b = u[1].to_f64().to_bits();
+        UniformStream(a ^ b.rotate_left(29) ^ 0x243F_6A88_85A3_08D3)
+    }
+
+    /// The next uniform.
+    #[inline(always)]
+    pub fn next<F: Real>(&mut self) -> F {
+        self.0 = self.0.wrapping_add(0x9E37_79B9_7F4A_7C15);
+        let mut z = self.0;
+        z = (z ^ (z >> 30)).wrapping_mul(0xBF58_476D_1CE4_E5B9);
+        z = (z ^ (z >> 27)).wrapping_mul(0x94D0_49BB_1331_11EB);
+        z ^= z >> 31;
+        if F::IS_F32 {
+            F::from_f32((z >> 40) as f32 * (1.0 / 16_777_216.0))
+        } else {
+            F::from_f64((z >> 11) as f64 * (1.0 / 9_007_199_254_740_992.0))
+        }
+    }
+}
+
+mod sealed {
+    pub trait Sealed {}
+    impl Sealed for crate::Ggx {}
+    impl Sealed for crate::Beckmann {}
+    impl Sealed for crate::DoubleGgx {}
+    impl Sealed for crate::Exponential {}
+    impl Sealed for crate::Gtr {}
+}
+
+/// An NDF that [`Microfacet`] can run: the exact NDF types name it. Implemented for
+/// [`Ggx`], [`Beckmann`], [`DoubleGgx`], [`Exponential`] and [`Gtr`]; sealed.
+pub trait Shape: sealed::Sealed + Sized {
+    /// What a material of this NDF holds beyond (αx, αy): nothing, or GTR's fitted tables.
+    #[doc(hidden)]
+    type Data: Clone + std::fmt::Debug + Send + Sync;
+    /// Which exact α = 1 slope distribution it is (None: GTR).
+    #[doc(hidden)]
+    const UNIT: Option<UnitSlopes>;
+    /// D(u) at isotropic roughness α (the fast scalar path).
+    #[doc(hidden)]
+    fn d_iso<F: Real>(data: &Self::Data, u: F, alpha: F) -> F;
+    /// Λ(u) at isotropic roughness α (the fast scalar path).
+    #[doc(hidden)]
+    fn lambda_iso<F: Real>(data: &Self::Data, u: F, alpha: F) -> F;
+    /// D for the unit normal wm at (αx, αy), αx ≠ αy: the isotropic D at the projected
+    /// roughness α̃² = (x² + y²)/(x²/αx² + y²/αy²), times α̃²/(αx αy).
+    #[doc(hidden)]
+    #[inline]
+    fn d_aniso<F: Real>(data: &Self::Data, wm: [F; 3], ax: F, ay: F) -> F {
+        let (x, y, z) = (wm[0], wm[1], wm[2]);
+        let s2 = x * x + y * y;
+        let r2 = x * x / (ax * ax) + y * y / (ay * ay);
+        if !(r2 > F::ZERO) {
+            // At the normal (or NaN): the density there is P22₁(0)/(αx αy).
+            return Self::d_iso(data, z, ax) * (ax / ay);
+        }
+        let a2 = s2 / r2;
+        Self::d_iso(data, z, a2.sqrt()) * (a2 / (ax * ay))
+    }
+    /// Λ for the unit direction w at (αx, αy), αx ≠ αy: the isotropic Λ at the projected
+    /// roughness α̃² = (αx²x² + αy²y²)/(x² + y²).
+    #[doc(hidden)]
+    #[inline]
+    fn lambda_aniso<F: Real>(data: &Self::Data, w: [F; 3], ax: F, ay: F) -> F {
+        let (x, y) = (w[0], w[1]);
+        let s2 = x * x + y * y;
+        if !(s2 > F::ZERO) {
+            return Self::lambda_iso(data, w[2], ax);
+        }
+        let a2 = (ax * ax * x * x + ay * ay * y * y) / s2;
+        Self::lambda_iso(data, w[2], a2.sqrt())
+    }
+    /// The visible-normal sampler at (αx, αy).
+    #[doc(hidden)]
+    fn sample_wm<F: Real>(data: &Self::Data, w: [F; 3], ax: F, ay: F, u: [F; 2]) -> [F; 3];
+    /// The D·cos sampler at (αx, αy).
+    #[doc(hidden)]
+    fn sample_dcos<F: Real>(data: &Self::Data, ax: F, ay: F, u: [F; 2]) -> [F; 3];
+}
+
+impl Shape for Ggx {
+    type Data = ();
+    const UNIT: Option<UnitSlopes> = Some(UnitSlopes::Ggx);
+    #[inline(always)]
+    fn d_iso<F: Real>(_: &(), u: F, alpha: F) -> F {
+        fast::ggx::d(u, alpha)
+    }
+    #[inline(always)]
+    fn lambda_iso<F: Real>(_: &(), u: F, alpha: F) -> F {
+        fast::ggx::lambda(u, alpha)
+    }
+    #[inline(always)]
+    fn d_aniso<F: Real>(_: &(), wm: [F; 3], ax: F, ay: F) -> F {
+        ggx_d_aniso(wm, ax, ay)
+    }
+    #[inline(always)]
+    fn lambda_aniso<F: Real>(_: &(), w: [F; 3], ax: F, ay: F) -> F {
+        ggx_lambda_aniso(w, ax, ay)
+    }
+    #[inline(always)]
+    fn sample_wm<F: Real>(_: &(), w: [F; 3], ax: F, ay: F, u: [F; 2]) -> [F; 3] {
+        fast::ggx::sample_visible(w, ax, ay, u)
+    }
+    #[inline(always)]
+    fn sample_dcos<F: Real>(_: &(), ax: F, ay: F, u: [F; 2]) -> [F; 3] {
+        fast::ggx::sample_dcos(ax, ay, u)
+    }
+}
+
+/// GGX's anisotropic D = 1/(π αx αy (x²/αx² + y²/αy² + z²)²) for a unit wm (pbrt-v4's form,
+/// without its tan²θ: no division by cos⁴θ); 0 below the horizon.
+#[inline(always)]
+fn ggx_d_aniso<F: Real>(wm: [F; 3], ax: F, ay: F) -> F {
+    let (x, y, z) = (wm[0] / ax, wm[1] / ay, wm[2]);
+    if !(z > F::ZERO) {
+        return if z == z { F::ZERO } else { z };
+    }
+    let t = x * x + y * y + z * z;
+    F::ONE / (F::PI * ax * ay * t * t)
+}
+
+/// GGX's anisotropic Λ = s/(2(1 + √(1 + s))), s = (αx²x² + αy²y²)/z², multiplied through by
+/// z² as t/(2(z² + |z|√(z² + t))), t = αx²x² + αy²y² (no cancellation, one square root and
+/// one division; +∞ at z = 0).
+#[inline(always)]
+fn ggx_lambda_aniso<F: Real>(w: [F; 3], ax: F, ay: F) -> F {
+    let (x, y, z) = (ax * w[0], ay * w[1], w[2].abs());
+    let t = x * x + y * y;
+    let z2 = z * z;
+    let den = (F::ONE + F::ONE) * (z2 + z * (z2 + t).sqrt());
+    if !(den > F::ZERO) {
+        // Grazing (z = 0, or z² subnormal-small), or NaN.
+        return ggx_lambda_aniso_edge(w, ax, ay);
+    }
+    t / den
+}
+
+/// [`ggx_lambda_aniso`] where z² may underflow (out of line): in f64, two divisions.
+#[cold]
+#[inline(never)]
+fn ggx_lambda_aniso_edge<F: Real>(w: [F; 3], ax: F, ay: F) -> F {
+    let (x, y, z) = (
+        ax.to_f64() * w[0].to_f64(),
+        ay.to_f64() * w[1].to_f64(),
+        w[2].to_f64().abs(),
+    );
+    if z == 0.0 {
+        return F::from_f64(f64::INFINITY);
+    }
+    let t = x * x + y * y;
+    F::from_f64(t / (z + (z * z + t).sqrt()) / (z + z))
+}
+
+impl Shape for Beckmann {
+    type Data = ();
+    const UNIT: Option<UnitSlopes> = Some(UnitSlopes::Beckmann);
+    #[inline(always)]
+    fn d_iso<F: Real>(_: &(), u: F, alpha: F) -> F {
+        fast::beckmann::d(u, alpha)
+    }
+    #[inline(always)]
+    fn lambda_iso<F: Real>(_: &(), u: F, alpha: F) -> F {
+        fast::beckmann::lambda(u, alpha)
+    }
+    /// Λ at cot θ̃ = |z|/√(αx²x² + αy²y²) directly (Beckmann's Λ is a function of it).
+    #[inline(always)]
+    fn lambda_aniso<F: Real>(_: &(), w: [F; 3], ax: F, ay: F) -> F {
+        let (x, y, z) = (
+            ax.to_f64() * w[0].to_f64(),
+            ay.to_f64() * w[1].to_f64(),
+            w[2].to_f64().abs(),
+        );
+        let a = z / (x * x + y * y).sqrt();
+        // (a = ∞ at normal incidence gives Λ = 0; z = 0 gives a = 0, Λ = ∞.)
+        F::from_f64(fast::beckmann::lambda_cot(a))
+    }
+    #[inline(always)]
+    fn sample_wm<F: Real>(_: &(), w: [F; 3], ax: F, ay: F, u: [F; 2]) -> [F; 3] {
+        fast::beckmann::sample_visible(w, ax, ay, u)
+    }
+    #[inline(always)]
+    fn sample_dcos<F: Real>(_: &(), ax: F, ay: F, u: [F; 2]) -> [F; 3] {
+        fast::beckmann::sample_dcos(ax, ay, u)
+    }
+}
+
+impl Shape for DoubleGgx {
+    type Data = ();
+    const UNIT: Option<UnitSlopes> = Some(UnitSlopes::DoubleGgx);
+    #[inline(always)]
+    fn d_iso<F: Real>(_: &(), u: F, alpha: F) -> F {
+        fast::double_ggx::d(u, alpha)
+    }
+    #[inline(always)]
+    fn lambda_iso<F: Real>(_: &(), u: F, alpha: F) -> F {
+        fast::double_ggx::lambda(u, alpha)
+    }
+    #[inline(always)]
+    fn sample_wm<F: Real>(_: &(), w: [F; 3], ax: F, ay: F, u: [F; 2]) -> [F; 3] {
+        let mut s = UniformStream::new(u);
+        fast::double_ggx::sample_visible(w, ax, ay, u, &mut || s.next())
+    }
+    #[inline(always)]
+    fn sample_dcos<F: Real>(_: &(), ax: F, ay: F, u: [F; 2]) -> [F; 3] {
+        let mut s = UniformStream::new(u);
+        fast::double_ggx::sample_dcos(ax, ay, u, &mut || s.next())
+    }
+}
+
+impl Shape for Exponential {
+    type Data = ();
+    const UNIT: Option<UnitSlopes> = Some(UnitSlopes::Exponential);
+    #[inline(always)]
+    fn d_iso<F: Real>(_: &(), u: F, alpha: F) -> F {
+        fast::exponential::d(u, alpha)
+    }
+    #[inline(always)]
+    fn lambda_iso<F: Real>(_: &(), u: F, alpha: F) -> F {
+        fast::exponential::lambda(u, alpha)
+    }
+    #[inline(always)]
+    fn sample_wm<F: Real>(_: &(), w: [F; 3], ax: F, ay: F, u: [F; 2]) -> [F; 3] {
+        let mut s = UniformStream::new(u);
+        fast::exponential::sample_visible(w, ax, ay, u, &mut || s.next())
+    }
+    #[inline(always)]
+    fn sample_dcos<F: Real>(_: &(), ax: F, ay: F, u: [F; 2]) -> [F; 3] {
+        let mut s = UniformStream::new(u);
+        fast::exponential::sample_dcos(ax, ay, u, &mut || s.next())
+    }
+}
+
+/// GTR's material: the fitted tables (isotropic, any γ), or GGX's kernels (γ = 2, where
+/// GTR is GGX, anisotropic allowed).
+#[doc(hidden)]
+#[derive(Clone, Debug)]
+pub enum GtrData {
+    Fitted(Arc<fast::gtr::Gtr>),
+    Ggx,
+}
+
+impl Shape for Gtr {
+    type Data = GtrData;
+    const UNIT: Option<UnitSlopes> = None;
+    #[inline(always)]
+    fn d_iso<F: Real>(data: &GtrData, u: F, alpha: F) -> F {
+        match data {
+            GtrData::Fitted(g) => g.d(u),
+            GtrData::Ggx => fast::ggx::d(u, alpha),
+        }
+    }
+    #[inline(always)]
+    fn lambda_iso<F: Real>(data: &GtrData, u: F, alpha: F) -> F {
+        match data {
+            GtrData::Fitted(g) => g.lambda(u),
+            GtrData::Ggx => fast::ggx::lambda(u, alpha),
+        }
+    }
+    #[inline(always)]
+    fn d_aniso<F: Real>(_: &GtrData, wm: [F; 3], ax: F, ay: F) -> F {
+        // Only γ = 2 is anisotropic (the constructor's rule).
+        ggx_d_aniso(wm, ax, ay)
+    }
+    #[inline(always)]
+    fn lambda_aniso<F: Real>(_: &GtrData, w: [F; 3], ax: F, ay: F) -> F {
+        ggx_lambda_aniso(w, ax, ay)
+    }
+    #[inline(always)]
+    fn sample_wm<F: Real>(data: &GtrData, w: [F; 3], ax: F, ay: F, u: [F; 2]) -> [F; 3] {
+        match data {
+            GtrData::Fitted(g) => {
+                let mut s = UniformStream::new(u);
+                g.sample_visible(w, u, &mut || s.next())
+            }
+            GtrData::Ggx => fast::ggx::sample_visible(w, ax, ay, u),
+        }
+    }
+    #[inline(always)]
+    fn sample_dcos<F: Real>(data: &GtrData, ax: F, ay: F, u: [F; 2]) -> [F; 3] {
+        match data {
+            GtrData::Fitted(g) => g.sample_dcos(u),
+            GtrData::Ggx => fast::ggx::sample_dcos(ax, ay, u),
+        }
+    }
+}
+
+/// An NDF `N` at roughness (αx, αy) in precision `F`: see the [module docs](self).
+#[derive(Clone, Debug)]
+pub struct Microfacet<F, N: Shape> {
+    ax: F,
+    ay: F,
+    /// αx == αy: the fast scalar functions of u answer as they are.
+    iso: bool,
+    data: N::Data,
+    /// (The exact parameters, for [`Microfacet::exact`].)
+    exact: ExactParams,
+    _n: PhantomData<fn() -> N>,
+}
+
+#[derive(Clone, Copy, Debug)]
+struct ExactParams {
+    ax: f64,
+    ay: f64,
+    gamma: f64,
+}
+
+fn check<F: Real>(a: F) -> Result<f64, ParamError> {
+    crate::error::check_alpha(a.to_f64())
+}
+
+impl<F: Real, N: Shape<Data = ()>> Microfacet<F, N> {
+    /// The NDF at roughness (αx, αy) (αx along the frame's tangent), each in [1e-6, 1e6];
+    /// `Err` otherwise (NaN included). Isotropic when αx = αy.
+    pub fn new(alpha_x: F, alpha_y: F) -> Result<Self, ParamError> {
+        let (ax, ay) = (check(alpha_x)?, check(alpha_y)?);
+        Ok(Microfacet {
+            ax: alpha_x,
+            ay: alpha_y,
+            iso: alpha_x == alpha_y,
+            data: (),
+            exact: ExactParams { ax, ay, gamma: 0.0 },
+            _n: PhantomData,
+        })
+    }
+}
+
+impl<F: Real> Microfacet<F, Gtr> {
+    /// GTR at roughness (αx, αy) and exponent γ ∈ (0, 100]: isotropic (αx = αy) at any γ,
+    /// its Λ fitted once here (1–90 ms, see the README); anisotropic only at γ = 2, where it
+    /// is GGX ([`ParamError::Anisotropic`] otherwise).
+    pub fn gtr(alpha_x: F, alpha_y: F, gamma: f64) -> Result<Self, ParamError> {
+        let (ax, ay) = (check(alpha_x)?, check(alpha_y)?);
+        let gamma = crate::error::check_gamma(gamma)?;
+        let iso = alpha_x == alpha_y;
+        let data = if gamma == 2.0 {
+            GtrData::Ggx
+        } else if iso {
+            GtrData::Fitted(Arc::new(fast::gtr::Gtr::new(ax, gamma)?))
+        } else {
+            return Err(ParamError::Anisotropic(gamma));
+        };
+        Ok(Microfacet {
+            ax: alpha_x,
+            ay: alpha_y,
+            iso,
+            data,
+            exact: ExactParams { ax, ay, gamma },
+            _n: PhantomData,
+        })
+    }
+}
+
+impl<F: Real, N: Shape> Microfacet<F, N> {
+    /// The validated exact path for the same material, in f64 (closed forms ≤ 1e-13,
+    /// quadratures ≤ 1e-10; samplers: exact invertible warps of u, 10–80 µs for the
+    /// superpositions): for references and checks, not a renderer's inner loop.
+    pub fn exact(&self) -> Exact {
+        let p = self.exact;
+        let inner = match N::UNIT {
+            Some(kind) => ExactInner::Stretched(Stretched::raw(kind, p.ax, p.ay)),
+            None if p.gamma == 2.0 => {
+                ExactInner::Stretched(Stretched::raw(UnitSlopes::Ggx, p.ax, p.ay))
+            }
+            None => ExactInner::Gtr(Isotropic(
+                Gtr::new(p.ax, p.gamma).expect("validated at construction"),
+            )),
+        };
+        Exact {
+            alpha: (p.ax, p.ay),
+            inner,
+        }
+    }
+}
+
+impl<F: Real> Microfacet<F, Ggx> {
+    /// The cap's lower bound −b of Eto & Tokuyoshi's bounded VNDF for w (mirrored to w.z ≥ 0),
+    /// with the stretched unit direction w'.
+    #[inline(always)]
+    fn bounded_cap(&self, w: [F; 3]) -> ([F; 3], F) {
+        let down = w[2] < F::ZERO;
+        let w = if down { crate::frame::neg(w) } else { w };
+        let ws = normalize([self.ax * w[0], self.ay * w[1], w[2]]);
+        if down {
+            return (ws, ws[2]);
+        }
+        let a = self.ax.min(self.ay).min(F::ONE);
+        let s = F::ONE + (w[0] * w[0] + w[1] * w[1]).sqrt();
+        let (a2, s2) = (a * a, s * s);
+        let k = (F::ONE - a2) * s2 / (s2 + a2 * w[2] * w[2]);
+        (ws, k * ws[2])
+    }
+
+    /// Bounded visible-normal sampling for reflection (Eto & Tokuyoshi 2023): the spherical
+    /// cap shrunk to z ∈ [−k w'.z, 1] (w' the stretched direction), k = (1 − a²)s²/(s² +
+    /// a²w.z²), a = min(1, αx, αy), s = 1 + |w.xy|, which removes only normals whose
+    /// reflection of w would point below the horizon (for w.z > 0; a down-welling w is
+    /// mirrored and the full cap used). The pdf is the visible density scaled by
+    /// (1 + w'.z)/(1 + k w'.z).
+    pub fn sample_bounded(&self, w: [F; 3], u: [F; 2]) -> Sample<F> {
+        let (ws, b) = self.bounded_cap(w);
+        let (c, s) = fast::cos_sin_turn(u[0].to_f64());
+        let (c, s) = (F::from_f64(c), F::from_f64(s));
+        let above = (F::ONE - u[1]) * (F::ONE + b);
+        let z = above - b;
+        let sin = ((F::ONE - z) * (F::ONE + z)).max(F::ZERO).sqrt();
+        let m = [sin * c + ws[0], sin * s + ws[1], above + (ws[2] - b)];
+        let wm = normalize([self.ax * m[0], self.ay * m[1], m[2].max(F::ZERO)]);
+        let wm = fast::facing(wm, w);
+        Sample {
+            wm,
+            pdf: self.pdf_bounded(w, wm),
+        }
+    }
+
+    /// Density of [`Microfacet::sample_bounded`] w.r.t. the solid angle of the normal.
+    pub fn pdf_bounded(&self, w: [F; 3], wm: [F; 3]) -> F {
+        let (ws, b) = self.bounded_cap(w);
+        let m = normalize([wm[0] / self.ax, wm[1] / self.ay, wm[2]]);
+        let d = dot(m, ws);
+        // The cap point: the reflection of w' about m'.
+        let cz = (d + d) * m[2] - ws[2];
+        if cz < -b {
+            return F::ZERO;
+        }
+        self.d_visible(w, wm) * (F::ONE + ws[2]) / (F::ONE + b)
+    }
+
+    /// Density of the reflected direction wi = reflect(wo, wm) for wm from
+    /// [`Microfacet::sample_bounded`]`(wo, ·)`: pdf(wm)/(4|wo·wm|) (Eto & Tokuyoshi's).
+    pub fn pdf_bounded_reflection(&self, wo: [F; 3], wi: [F; 3]) -> F {
+        let Some(wm) = crate::frame::half_vector_reflection(wo, wi) else {
+            return F::ZERO;
+        };
+        let c = dot(wo, wm).abs();
+        if !(c > F::ZERO) {
+            return F::ZERO;
+        }
+        self.pdf_bounded(wo, wm) / (F::from_f64(4.0) * c)
+    }
+}
+
+impl<F: Real, N: Shape> Distribution<F> for Microfacet<F, N> {
+    #[inline(always)]
+    fn alpha(&self) -> (F, F) {
+        (self.ax, self.ay)
+    }
+
+    #[inline(always)]
+    fn d(&self, wm: [F; 3]) -> F {
+        if self.iso {
+            N::d_iso(&self.data, wm[2], self.ax)
+        } else {
+            N::d_aniso(&self.data, wm, self.ax, self.ay)
+        }
+    }
+
+    #[inline(always)]
+    fn lambda(&self, w: [F; 3]) -> F {
+        if self.iso {
+            N::lambda_iso(&self.data, w[2].abs(), self.ax)
+        } else {
+            N::lambda_aniso(&self.data, w, self.ax, self.ay)
+        }
+    }
+
+    #[inline(always)]
+    fn sample_wm(&self, w: [F; 3], u: [F; 2]) -> [F; 3] {
+        N::sample_wm(&self.data, w, self.ax, self.ay, u)
+    }
+
+    #[inline(always)]
+    fn sample_dcos(&self, u: [F; 2]) -> Sample<F> {
+        let wm = N::sample_dcos(&self.data, self.ax, self.ay, u);
+        Sample {
+            wm,
+            pdf: self.d(wm) * wm[2],
+        }
+    }
+}
+
+/// The exact path of a [`Microfacet`] material (f64): see [`Microfacet::exact`].
+#[derive(Clone, Copy, Debug)]
+pub struct Exact {
+    alpha: (f64, f64),
+    inner: ExactInner,
+}
+
+#[derive(Clone, Copy, Debug)]
+enum ExactInner {
+    Stretched(Stretched),
+    Gtr(Isotropic<Gtr>),
+}
+
+impl Exact {
+    fn surface(&self) -> &dyn Microsurface {
+        match &self.inner {
+            ExactInner::Stretched(s) => s,
+            ExactInner::Gtr(g) => g,
+        }
+    }
+
+    /// The u that [`Distribution::sample`] maps to wm (the exact samplers are invertible
+    /// warps); NaN for a normal no sampler returns.
+    pub fn invert(&self, w: [f64; 3], wm: [f64; 3]) -> [f64; 2] {
+        self.surface().invert_visible(Vec3::from(w), Vec3::from(wm))
+    }
+
+    /// The u that [`Distribution::sample_dcos`] maps to wm.
+    pub fn invert_dcos(&self, wm: [f64; 3]) -> [f64; 2] {
+        self.surface().invert_dcos(Vec3::from(wm))
+    }
+}
+
+impl Distribution<f64> for Exact {
+    fn alpha(&self) -> (f64, f64) {
+        self.alpha
+    }
+    fn d(&self, wm: [f64; 3]) -> f64 {
+        self.surface().d(Vec3::from(wm))
+    }
+    fn lambda(&self, w: [f64; 3]) -> f64 {
+        self.surface().lambda(Vec3::from(w))
+    }
+    fn sample_wm(&self, w: [f64; 3], u: [f64; 2]) -> [f64; 3] {
+        self.surface().sample_visible(Vec3::from(w), u).into()
+    }
+    fn sample_dcos(&self, u: [f64; 2]) -> Sample<f64> {
+        let s = self.surface();
+        let wm = s.sample_dcos(u);
+        Sample {
+            wm: wm.into(),
+            pdf: s.pdf_dcos(wm),
+        }
+    }
+}

@@ -1,0 +1,259 @@
+//! Fresnel reflectance, unpolarised, as functions of cos θ = wo·wm, with spectral values as
+//! `[F; N]` (RGB is N = 3; nothing allocates).
+//!
+//! * [`dielectric`]: exact, for a real relative index η = η_t/η_i; cos θ < 0 is the interface
+//!   seen from inside (η → 1/η); 1 at total internal reflection.
+//! * [`conductor`]: exact, for a complex index η + ik (pbrt-v4's `FrComplex`, Born & Wolf
+//!   §13.4).
+//! * [`schlick`]: F0 + (1 − F0)(1 − cos θ)⁵ (Schlick 1994).
+//! * [`f82_tint`]: Hoffman's F82-tint model (Hoffman 2023, "Generalization of Adobe's Fresnel
+//!   model", in *Physically Based Shading in Theory and Practice*, SIGGRAPH 2023 course; after
+//!   Kutz et al. 2021): Schlick less a μ(1 − μ)⁶ with a chosen so that F at μ̄ = 1/7
+//!   (θ ≈ 82°) is the tint h times Schlick's value there:
+//!   a = (F0 + (1 − F0)(1 − μ̄)⁵)(1 − h)/(μ̄(1 − μ̄)⁶).
+//!
+//! The [`Fresnel`] trait wraps each as a value a BSDF carries.
+
+use crate::fast::Real;
+
+/// Exact unpolarised Fresnel reflectance of a dielectric interface with relative index η
+/// (η_t/η_i; the side cos θ > 0 is outside), for cos θ ∈ [−1, 1]: cos θ < 0 swaps the sides.
+/// 1 at and beyond the critical angle; 0 at η = 1.
+#[inline]
+pub fn dielectric<F: Real>(cos_i: F, eta: F) -> F {
+    let (cos_i, eta) = if cos_i < F::ZERO {
+        (-cos_i, F::ONE / eta)
+    } else {
+        (cos_i, eta)
+    };
+    let cos_i = cos_i.min(F::ONE);
+    let sin2_t = ((F::ONE - cos_i) * (F::ONE + cos_i)) / (eta * eta);
+    // (False for NaN: NaN then flows through the formulas below.)
+    if sin2_t >= F::ONE {
+        return F::ONE;
+    }
+    let cos_t = (F::ONE - sin2_t).max(F::ZERO).sqrt();
+    let r_parl = (eta * cos_i - cos_t) / (eta * cos_i + cos_t);
+    let r_perp = (cos_i - eta * cos_t) / (cos_i + eta * cos_t);
+    F::HALF * (r_parl * r_parl + r_perp * r_perp)
+}
+
+/// A complex number, for [`conductor`].
+#[derive(Clone, Copy, Debug)]
+struct Complex<F> {
+    re: F,
+    im: F,
+}
+
+impl<F: Real> Complex<F> {
+    fn new(re: F, im: F) -> Self {
+        Complex { re, im }
+    }
+    fn add(self, o: Self) -> Self {
+        Complex::new(self.re + o.re, self.im + o.im)
+    }
+    fn sub(self, o: Self) -> Self {
+        Complex::new(self.re - o.re, self.im - o.im)
+    }
+    fn mul(self, o: Self) -> Self {
+        Complex::new(
+            self.re * o.re - self.im * o.im,
+            self.re * o.im + self.im * o.re,
+        )
+    }
+    fn norm(self) -> F {
+        self.re * self.re + self.im * self.im
+    }
+    /// |a/b|² = |a|²/|b|².
+    fn norm_ratio(a: Self, b: Self) -> F {
+        a.norm() / b.norm()
+    }
+    fn scale(self, s: F) -> Self {
+        Complex::new(self.re * s, self.im * s)
+    }
+    fn recip(self) -> Self {
+        let n = self.norm();
+        Complex::new(self.re / n, -self.im / n)
+    }
+    /// The principal square root (re ≥ 0), without cancellation.
+    fn sqrt(self) -> Self {
+        let r = self.norm().sqrt();
+        if r == F::ZERO {
+            return Complex::new(F::ZERO, F::ZERO);
+        }
+        let t = ((r + self.re.abs()) * F::HALF).sqrt();
+        if self.re >= F::ZERO {
+            Complex::new(t, self.im / (t + t))
+        } else {
+            let s = if self.im < F::ZERO { -t } else { t };
+            Complex::new(self.im.abs() / (t + t), s)
+        }
+    }
+}
+
+/// Exact unpolarised Fresnel reflectance of a conductor with complex relative index η + ik,
+/// for cos θ ∈ [0, 1] (clamped there; light arrives from outside).
+#[inline]
+pub fn conductor<F: Real>(cos_i: F, eta: F, k: F) -> F {
+    let cos_i = cos_i.max(F::ZERO).min(F::ONE);
+    let n = Complex::new(eta, k);
+    let sin2_i = (F::ONE - cos_i) * (F::ONE + cos_i);
+    // cos θt = √(1 − sin²θi/n²).
+    let n2 = n.mul(n);
+    let sin2_t = n2.recip().scale(sin2_i);
+    let cos_t = Complex::new(F::ONE - sin2_t.re, -sin2_t.im).sqrt();
+    let ci = Complex::new(cos_i, F::ZERO);
+    let n_ci = n.scale(cos_i);
+    let n_ct = n.mul(cos_t);
+    let r_parl = Complex::norm_ratio(n_ci.sub(cos_t), n_ci.add(cos_t));
+    let r_perp = Complex::norm_ratio(ci.sub(n_ct), ci.add(n_ct));
+    F::HALF * (r_parl + r_perp)
+}
+
+/// Schlick's approximation F0 + (1 − F0)(1 − cos θ)⁵, cos θ clamped to [0, 1].
+#[inline]
+pub fn schlick<F: Real>(cos_i: F, f0: F) -> F {
+    let m = F::ONE - cos_i.max(F::ZERO).min(F::ONE);
+    let m2 = m * m;
+    f0 + (F::ONE - f0) * (m2 * m2 * m)
+}
+
+/// μ̄ = 1/7 (cos 81.79°), where Hoffman's model pins the tint.
+const MU_BAR: f64 = 1.0 / 7.0;
+
+/// Hoffman's F82-tint model for reflectance f0 at normal incidence and tint h ∈ [0, 1] at
+/// μ̄ = 1/7 (cos θ clamped to [0, 1]); h = 1 is Schlick.
+#[inline]
+pub fn f82_tint<F: Real>(cos_i: F, f0: F, h: F) -> F {
+    let mu = cos_i.max(F::ZERO).min(F::ONE);
+    let m = F::ONE - mu;
+    let m5 = m * m * m * m * m;
+    let mb = 1.0 - MU_BAR;
+    let mb5 = mb.powi(5);
+    let a = (f0 + (F::ONE - f0) * F::from_f64(mb5)) * (F::ONE - h)
+        / F::from_f64(MU_BAR * mb5 * mb);
+    f0 + (F::ONE - f0) * m5 - a * mu * m5 * m
+}
+
+/// A Fresnel term a BSDF carries: N channels (RGB: N = 3).
+pub trait Fresnel<F: Real, const N: usize>: Clone {
+    /// The reflectance per channel at cos θ = wo·wm (for a [`Dielectric`], cos θ < 0 is the
+    /// inside; the other models clamp it to [0, 1]).
+    fn eval(&self, cos_i: F) -> [F; N];
+}
+
+/// F = 1 in every channel (a perfect mirror: white-furnace tests).
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct One;
+
+impl<F: Real, const N: usize> Fresnel<F, N> for One {
+    #[inline(always)]
+    fn eval(&self, _cos_i: F) -> [F; N] {
+        [F::ONE; N]
+    }
+}
+
+/// A dielectric's reflectance, the same in every channel.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct Dielectric<F> {
+    /// Relative index η_t/η_i.
+    pub eta: F,
+}
+
+impl<F: Real, const N: usize> Fresnel<F, N> for Dielectric<F> {
+    #[inline]
+    fn eval(&self, cos_i: F) -> [F; N] {
+        [dielectric(cos_i, self.eta); N]
+    }
+}
+
+/// A conductor's exact reflectance, complex index η + ik per channel.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct Conductor<F, const N: usize> {
+    pub eta: [F; N],
+    pub k: [F; N],
+}
+
+impl<F: Real, const N: usize> Fresnel<F, N> for Conductor<F, N> {
+    #[inline]
+    fn eval(&self, cos_i: F) -> [F; N] {
+        std::array::from_fn(|c| conductor(cos_i, self.eta[c], self.k[c]))
+    }
+}
+
+/// Schlick's approximation with F0 per channel.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct Schlick<F, const N: usize> {
+    pub f0: [F; N],
+}
+
+impl<F: Real, const N: usize> Fresnel<F, N> for Schlick<F, N> {
+    #[inline]
+    fn eval(&self, cos_i: F) -> [F; N] {
+        std::array::from_fn(|c| schlick(cos_i, self.f0[c]))
+    }
+}
+
+/// Hoffman's F82-tint model, F0 and the tint h per channel.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct F82Tint<F, const N: usize> {
+    pub f0: [F; N],
+    pub h: [F; N],
+}
+
+impl<F: Real, const N: usize> Fresnel<F, N> for F82Tint<F, N> {
+    #[inline]
+    fn eval(&self, cos_i: F) -> [F; N] {
+        std::array::from_fn(|c| f82_tint(cos_i, self.f0[c], self.h[c]))
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn dielectric_limits_and_symmetry() {
+        // Normal incidence: ((η − 1)/(η + 1))².
+        let r0: f64 = (0.5 / 2.5) * (0.5 / 2.5);
+        assert!((dielectric(1.0, 1.5) - r0).abs() < 1e-16);
+        assert!((dielectric(-1.0, 1.5) - r0).abs() < 1e-16);
+        assert_eq!(dielectric(0.0, 1.5), 1.0);
+        assert_eq!(dielectric(0.5, 1.0), 0.0);
+        // Total internal reflection inside glass past the critical angle (sin θc = 1/1.5).
+        assert_eq!(dielectric(-0.7, 1.5), 1.0);
+        // Stokes: reflectance from outside at θi equals from inside at θt.
+        let ci: f64 = 0.6;
+        let st = (1.0 - ci * ci).sqrt() / 1.5;
+        let ct = (1.0 - st * st).sqrt();
+        assert!((dielectric(ci, 1.5) - dielectric(-ct, 1.5)).abs() < 1e-15);
+    }
+
+    #[test]
+    fn conductor_reduces_to_dielectric_and_known_values() {
+        for c in [0.0, 0.1, 0.5, 0.9, 1.0] {
+            assert!((conductor(c, 1.5, 0.0) - dielectric(c, 1.5)).abs() < 1e-15);
+        }
+        // Normal incidence: ((η − 1)² + k²)/((η + 1)² + k²).
+        let (n, k) = (0.2, 3.9f64);
+        let r0 = ((n - 1.0) * (n - 1.0) + k * k) / ((n + 1.0) * (n + 1.0) + k * k);
+        assert!((conductor(1.0, n, k) - r0).abs() < 1e-15);
+        assert!((conductor(0.0, n, k) - 1.0).abs() < 1e-15);
+        let f: [f32; 3] = Conductor {
+            eta: [0.2f32, 0.9, 1.1],
+            k: [3.9, 2.4, 2.2],
+        }
+        .eval(0.5);
+        assert!(f.iter().all(|&x| x > 0.5 && x < 1.0));
+    }
+
+    #[test]
+    fn f82_tint_pins_its_value() {
+        let (f0, h) = (0.9f64, 0.7);
+        let at = f82_tint(MU_BAR, f0, h);
+        assert!((at - h * schlick(MU_BAR, f0)).abs() < 1e-15);
+        assert_eq!(f82_tint(1.0, f0, h), f0);
+        assert!((f82_tint(0.0, f0, h) - 1.0).abs() < 1e-15);
+        assert!((f82_tint(0.3, f0, 1.0) - schlick(0.3, f0)).abs() < 1e-15);
+    }
+}
