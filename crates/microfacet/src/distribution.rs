@@ -33,9 +33,11 @@
 //!
 //! **Evaluation.** The fast paths ([`crate::fast`]) by default: closed forms for GGX and
 //! Beckmann, fitted tables (≤ 1e-7 relative) for Double GGX, the Exponential NDF and GTR.
-//! Isotropic materials call the fast scalar functions of u = |w.z| as they are (bit for
-//! bit); anisotropic ones evaluate them at the projected roughness, except GGX's D and Λ
-//! and Beckmann's Λ, which have direct anisotropic forms. The validated exact path
+//! GGX's D and Λ and Beckmann's Λ are evaluated from the vector ((x/αx)² + (y/αy)² and
+//! αx²x² + αy²y²: better conditioned near the normal than 1 − z² of a rounded unit vector,
+//! and as cheap). The other quantities call the fast scalar functions of u = |w.z| as they
+//! are (bit for bit) for isotropic materials, and at the projected roughness
+//! α̃ for anisotropic ones. The validated exact path
 //! ([`Microfacet::exact`], f64) implements the same trait from the exact NDF types
 //! (closed forms ≤ 1e-13, quadratures ≤ 1e-10).
 //!
@@ -241,6 +243,28 @@ pub trait Shape: sealed::Sealed + Sized {
         let a2 = (ax * ax * x * x + ay * ay * y * y) / s2;
         Self::lambda_iso(data, w[2], a2.sqrt())
     }
+    /// D(wm) of a material: the fast scalar D of u = wm.z where isotropic, else
+    /// [`Shape::d_aniso`] (overridden where a direct vector form is as cheap and better
+    /// conditioned).
+    #[doc(hidden)]
+    #[inline(always)]
+    fn d<F: Real>(data: &Self::Data, wm: [F; 3], ax: F, ay: F, iso: bool) -> F {
+        if iso {
+            Self::d_iso(data, wm[2], ax)
+        } else {
+            Self::d_aniso(data, wm, ax, ay)
+        }
+    }
+    /// Λ(w) of a material (as [`Shape::d`]).
+    #[doc(hidden)]
+    #[inline(always)]
+    fn lambda<F: Real>(data: &Self::Data, w: [F; 3], ax: F, ay: F, iso: bool) -> F {
+        if iso {
+            Self::lambda_iso(data, w[2].abs(), ax)
+        } else {
+            Self::lambda_aniso(data, w, ax, ay)
+        }
+    }
     /// The visible-normal sampler at (αx, αy).
     #[doc(hidden)]
     fn sample_wm<F: Real>(data: &Self::Data, w: [F; 3], ax: F, ay: F, u: [F; 2]) -> [F; 3];
@@ -266,6 +290,16 @@ impl Shape for Ggx {
     }
     #[inline(always)]
     fn lambda_aniso<F: Real>(_: &(), w: [F; 3], ax: F, ay: F) -> F {
+        ggx_lambda_aniso(w, ax, ay)
+    }
+    /// The vector form for isotropic materials too: x² + y² where the scalar path has
+    /// 1 − z², which near normal incidence has lost the digits of the rounded unit vector.
+    #[inline(always)]
+    fn d<F: Real>(_: &(), wm: [F; 3], ax: F, ay: F, _iso: bool) -> F {
+        ggx_d_aniso(wm, ax, ay)
+    }
+    #[inline(always)]
+    fn lambda<F: Real>(_: &(), w: [F; 3], ax: F, ay: F, _iso: bool) -> F {
         ggx_lambda_aniso(w, ax, ay)
     }
     #[inline(always)]
@@ -332,6 +366,11 @@ impl Shape for Beckmann {
     #[inline(always)]
     fn lambda_iso<F: Real>(_: &(), u: F, alpha: F) -> F {
         fast::beckmann::lambda(u, alpha)
+    }
+    /// Isotropic or not, Λ at cot θ̃ = |z|/√(αx²x² + αy²y²) (as [`Ggx`]'s vector forms).
+    #[inline(always)]
+    fn lambda<F: Real>(data: &(), w: [F; 3], ax: F, ay: F, _iso: bool) -> F {
+        Self::lambda_aniso(data, w, ax, ay)
     }
     /// Λ at cot θ̃ = |z|/√(αx²x² + αy²y²) directly (Beckmann's Λ is a function of it).
     #[inline(always)]
@@ -618,20 +657,12 @@ impl<F: Real, N: Shape> Distribution<F> for Microfacet<F, N> {
 
     #[inline(always)]
     fn d(&self, wm: [F; 3]) -> F {
-        if self.iso {
-            N::d_iso(&self.data, wm[2], self.ax)
-        } else {
-            N::d_aniso(&self.data, wm, self.ax, self.ay)
-        }
+        N::d(&self.data, wm, self.ax, self.ay, self.iso)
     }
 
     #[inline(always)]
     fn lambda(&self, w: [F; 3]) -> F {
-        if self.iso {
-            N::lambda_iso(&self.data, w[2].abs(), self.ax)
-        } else {
-            N::lambda_aniso(&self.data, w, self.ax, self.ay)
-        }
+        N::lambda(&self.data, w, self.ax, self.ay, self.iso)
     }
 
     #[inline(always)]

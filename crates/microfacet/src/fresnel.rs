@@ -130,8 +130,7 @@ pub fn f82_tint<F: Real>(cos_i: F, f0: F, h: F) -> F {
     let m5 = m * m * m * m * m;
     let mb = 1.0 - MU_BAR;
     let mb5 = mb.powi(5);
-    let a = (f0 + (F::ONE - f0) * F::from_f64(mb5)) * (F::ONE - h)
-        / F::from_f64(MU_BAR * mb5 * mb);
+    let a = (f0 + (F::ONE - f0) * F::from_f64(mb5)) * (F::ONE - h) / F::from_f64(MU_BAR * mb5 * mb);
     f0 + (F::ONE - f0) * m5 - a * mu * m5 * m
 }
 
@@ -142,11 +141,11 @@ pub trait Fresnel<F: Real, const N: usize>: Clone {
     fn eval(&self, cos_i: F) -> [F; N];
 }
 
-/// F = 1 in every channel (a perfect mirror: white-furnace tests).
+/// F = 1 in each of N channels (a perfect mirror: white-furnace tests), e.g. `One::<1>`.
 #[derive(Clone, Copy, Debug, PartialEq)]
-pub struct One;
+pub struct One<const N: usize>;
 
-impl<F: Real, const N: usize> Fresnel<F, N> for One {
+impl<F: Real, const N: usize> Fresnel<F, N> for One<N> {
     #[inline(always)]
     fn eval(&self, _cos_i: F) -> [F; N] {
         [F::ONE; N]
