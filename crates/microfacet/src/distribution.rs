@@ -38,6 +38,11 @@
 //! and as cheap). The other quantities call the fast scalar functions of u = |w.z| as they
 //! are (bit for bit) for isotropic materials, and at the projected roughness
 //! α̃ for anisotropic ones. The validated exact path
+//! Accuracy against the exact path (tests/bsdf.rs, D, G1 and the visible pdf at random
+//! directions): the fast paths' own bounds ([`crate::fast`]) — measured f64: GGX 2e-15,
+//! Beckmann 7e-13, Double GGX 3e-11, Exponential 6e-12, GTR 8e-11; f32: GGX 6e-7, Beckmann
+//! 2e-5, fitted 4e-6 isotropic and 1e-5 anisotropic (there α̃ is itself rounded to f32, and Λ's
+//! condition number in α reaches ~100 where Λ is small). The validated exact path
 //! ([`Microfacet::exact`], f64) implements the same trait from the exact NDF types
 //! (closed forms ≤ 1e-13, quadratures ≤ 1e-10).
 //!
