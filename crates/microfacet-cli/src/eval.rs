@@ -7,9 +7,22 @@ use std::io::{BufRead, BufWriter, Write};
 use std::process::ExitCode;
 
 pub fn run(args: &[String]) -> Result<ExitCode, String> {
+    json_lines("eval", args, |text| {
+        eval_line(text).map(|v| serde_json::json!({ "value": v }))
+    })
+}
+
+/// The JSON-lines loop of `eval` and `bsdf`: one reply per non-empty input line, in order;
+/// a line whose handler fails (or that is not UTF-8) gets `{"error": ...}` and the run goes
+/// on; exit 1 if any line failed.
+pub fn json_lines(
+    command: &str,
+    args: &[String],
+    mut handle: impl FnMut(&str) -> Result<Value, String>,
+) -> Result<ExitCode, String> {
     if let Some(a) = args.first() {
         return Err(format!(
-            "eval: unexpected argument '{}' (it reads JSON lines on stdin)",
+            "{command}: unexpected argument '{}' (it reads JSON lines on stdin)",
             crate::clip(a)
         ));
     }
@@ -21,27 +34,24 @@ pub fn run(args: &[String]) -> Result<ExitCode, String> {
         line.clear();
         let n = stdin
             .read_until(b'\n', &mut line)
-            .map_err(|e| format!("eval: reading stdin: {e}"))?;
+            .map_err(|e| format!("{command}: reading stdin: {e}"))?;
         if n == 0 {
             break;
         }
         // A line that is not UTF-8 is a bad line like any other: an error reply, and on.
         let reply = match std::str::from_utf8(&line) {
             Ok(text) if text.trim().is_empty() => continue,
-            Ok(text) => eval_line(text),
+            Ok(text) => handle(text),
             Err(_) => Err("the line is not valid UTF-8".to_string()),
         };
-        let reply = match reply {
-            Ok(v) => serde_json::json!({ "value": v }),
-            Err(e) => {
-                failed = true;
-                serde_json::json!({ "error": e })
-            }
-        };
-        writeln!(out, "{reply}").map_err(|e| format!("eval: writing stdout: {e}"))?;
+        let reply = reply.unwrap_or_else(|e| {
+            failed = true;
+            serde_json::json!({ "error": e })
+        });
+        writeln!(out, "{reply}").map_err(|e| format!("{command}: writing stdout: {e}"))?;
     }
     out.flush()
-        .map_err(|e| format!("eval: writing stdout: {e}"))?;
+        .map_err(|e| format!("{command}: writing stdout: {e}"))?;
     Ok(if failed {
         ExitCode::FAILURE
     } else {
@@ -61,7 +71,7 @@ fn arguments(quantity: &str) -> Option<&'static [&'static str]> {
     })
 }
 
-fn field(obj: &Map<String, Value>, name: &str) -> Result<f64, String> {
+pub fn field(obj: &Map<String, Value>, name: &str) -> Result<f64, String> {
     match obj.get(name) {
         None => Err(format!("missing field '{name}'")),
         Some(v) => v.as_f64().ok_or_else(|| {

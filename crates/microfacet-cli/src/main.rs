@@ -1,6 +1,7 @@
 //! `microfacet`: the command-line face of the library. One file per subcommand; this file only
 //! dispatches and turns failures into one-line messages with a non-zero exit code.
 
+mod bsdf;
 mod eval;
 mod report;
 mod sample;
@@ -34,6 +35,21 @@ const SAMPLE_USAGE: &str = "\
       write N sampled normals (default 100000), one `x y z` per line; D·cos (default)
       or visible normals for the incident direction --wi (visible mode only; any
       finite nonzero vector, normalised; default 0,0,1). --gamma: gtr only, required.
+";
+
+const BSDF_USAGE: &str = "\
+  microfacet bsdf
+      rough conductor and dielectric BSDFs (single scattering, pbrt-v4's conventions:
+      f without the cosine, pdf per solid angle, local frame z = normal, radiance
+      transport), JSON lines in, one line out per line, e.g.
+      {\"bsdf\":\"conductor\",\"ndf\":\"ggx\",\"alpha\":[0.3,0.1],\"eta\":[0.2,0.9,1.1],
+       \"k\":[3.9,2.4,2.2],\"op\":\"eval\",\"wo\":[0,0.6,0.8],\"wi\":[0.3,0,0.95]}
+        -> {\"f\":[r,g,b],\"pdf\":p}
+      op sample takes \"u\":[uc,u0,u1] in [0,1) instead of wi -> {\"wi\":[...],\"f\":[...],
+        \"pdf\":p,\"kind\":\"reflection\"|\"transmission\"|\"rejected\",\"specular\":b}
+      alpha: a or [ax, ay]; gamma for gtr (anisotropic only at gamma 2); conductor:
+      eta and k (number or [r,g,b]; neither: F = 1); dielectric: eta (one number);
+      g2: correlated (default) or separable. Directions are normalised. Errors as in eval.
 ";
 
 const REPORT_USAGE: &str = "\
@@ -100,6 +116,8 @@ fn main() -> ExitCode {
         Some("eval") if help => usage(EVAL_USAGE),
         Some("sample") if help => usage(SAMPLE_USAGE),
         Some("report") if help => usage(REPORT_USAGE),
+        Some("bsdf") if help => usage(BSDF_USAGE),
+        Some("bsdf") => bsdf::run(&rest),
         Some("verify") => verify::run(&rest),
         Some("eval") => eval::run(&rest),
         Some("sample") => sample::run(&rest),
@@ -107,7 +125,7 @@ fn main() -> ExitCode {
         Some("-h" | "--help" | "help") => {
             print!(
                 "microfacet {} — microfacet NDFs, exact and verified\n\nusage:\n\
-                 {VERIFY_USAGE}{EVAL_USAGE}{SAMPLE_USAGE}{REPORT_USAGE}{USAGE_TAIL}",
+                 {VERIFY_USAGE}{EVAL_USAGE}{BSDF_USAGE}{SAMPLE_USAGE}{REPORT_USAGE}{USAGE_TAIL}",
                 env!("CARGO_PKG_VERSION")
             );
             Ok(ExitCode::SUCCESS)

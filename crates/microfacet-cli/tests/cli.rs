@@ -283,7 +283,7 @@ fn one_line_error(out: &Output, needle: &str) {
 
 #[test]
 fn every_subcommand_answers_help_and_the_binary_its_version() {
-    for cmd in ["verify", "eval", "sample", "report"] {
+    for cmd in ["verify", "eval", "bsdf", "sample", "report"] {
         for flag in ["--help", "-h"] {
             let out = microfacet(&[cmd, flag], "");
             assert!(out.status.success(), "{cmd} {flag}");
@@ -431,4 +431,79 @@ fn report_checks_its_directory_first() {
         "report: cannot",
     );
     // (one_line_error: no progress line, so nothing was computed first.)
+}
+
+#[test]
+fn bsdf_evaluates_and_samples_in_order() {
+    let input = r#"{"bsdf":"conductor","ndf":"ggx","alpha":[0.3,0.1],"eta":[0.2,0.9,1.1],"k":[3.9,2.4,2.2],"op":"eval","wo":[0,0.6,0.8],"wi":[0.3,0,0.95]}
+{"bsdf":"conductor","ndf":"beckmann","alpha":0.3,"g2":"separable","op":"eval","wo":[0,0,1],"wi":[0,0,1]}
+{"bsdf":"dielectric","ndf":"exponential","alpha":0.3,"eta":1.5,"op":"sample","wo":[0,0.6,0.8],"u":[0.9,0.3,0.4]}
+{"bsdf":"dielectric","ndf":"gtr","gamma":1.5,"alpha":0.3,"eta":1.5,"op":"sample","wo":[0,0.6,0.8],"u":[0.0,0.3,0.4]}
+{"bsdf":"conductor","ndf":"double_ggx","alpha":0.3,"eta":1.5,"k":0,"op":"sample","wo":[0,0.6,0.8],"u":[0.5,0.5,0.5]}
+{"bsdf":"conductor","ndf":"ggx","alpha":1e-4,"op":"sample","wo":[0,0.6,0.8],"u":[0.5,0.5,0.5]}
+{"bsdf":"conductor","ndf":"ggx","alpha":1.0,"op":"sample","wo":[0.999,0,0.001],"u":[0.5,0.999,0.999]}
+"#;
+    let out = microfacet(&["bsdf"], input);
+    assert!(
+        out.status.success(),
+        "{}",
+        String::from_utf8_lossy(&out.stderr)
+    );
+    let got = lines(&out.stdout);
+    assert_eq!(got.len(), 7);
+    let f0 = got[0]["f"].as_array().unwrap();
+    assert!(f0.len() == 3 && f0.iter().all(|v| v.as_f64().unwrap() > 0.0));
+    assert!(got[0]["pdf"].as_f64().unwrap() > 0.0);
+    // Normal incidence and exit, F = 1, separable G = 1: f = D(n)/4 = 1/(4πα²).
+    let f = got[1]["f"][0].as_f64().unwrap();
+    assert!(
+        (f - 1.0 / (4.0 * std::f64::consts::PI * 0.09)).abs() < 1e-12 * f,
+        "{f}"
+    );
+    assert_eq!(got[2]["kind"], "transmission");
+    assert!(got[2]["wi"][2].as_f64().unwrap() < 0.0);
+    assert_eq!(got[3]["kind"], "reflection");
+    assert_eq!(got[4]["kind"], "reflection");
+    assert_eq!(got[5]["specular"], true);
+    assert_eq!(got[5]["wi"], serde_json::json!([0.0, -0.6, 0.8]));
+    for g in &got[..6] {
+        assert!(g["pdf"].as_f64().unwrap() > 0.0, "{g}");
+    }
+    // A grazing wo whose reflection falls below the horizon: a rejected sample, not an error.
+    assert!(matches!(
+        got[6]["kind"].as_str(),
+        Some("rejected" | "reflection")
+    ));
+}
+
+#[test]
+fn bsdf_reports_bad_lines_and_goes_on() {
+    let input = r#"{"bsdf":"metal","ndf":"ggx","alpha":0.3,"op":"eval","wo":[0,0,1],"wi":[0,0,1]}
+{"bsdf":"conductor","ndf":"ggx","alpha":0.3,"op":"eval","wo":[0,0,0],"wi":[0,0,1]}
+{"bsdf":"conductor","ndf":"ggx","alpha":0.3,"eta":1.5,"op":"eval","wo":[0,0,1],"wi":[0,0,1]}
+{"bsdf":"dielectric","ndf":"ggx","alpha":0.3,"eta":[1.5,1.5,1.5],"op":"eval","wo":[0,0,1],"wi":[0,0,1]}
+{"bsdf":"conductor","ndf":"ggx","alpha":0.3,"op":"sample","wo":[0,0,1],"u":[0.5,1.0,0.5]}
+{"bsdf":"conductor","ndf":"gtr","gamma":1.5,"alpha":[0.3,0.2],"op":"eval","wo":[0,0,1],"wi":[0,0,1]}
+{"bsdf":"conductor","ndf":"ggx","alpha":-1,"op":"eval","wo":[0,0,1],"wi":[0,0,1]}
+{"bsdf":"conductor","ndf":"ggx","alpha":0.3,"op":"eval","wo":[0,0,1],"wi":[0,0,1],"alpha_y":0.1}
+{"bsdf":"conductor","ndf":"ggx","alpha":0.3,"op":"eval","wo":[0,0,1],"wi":[0,0,1]}
+"#;
+    let out = microfacet(&["bsdf"], input);
+    assert_eq!(out.status.code(), Some(1));
+    let got = lines(&out.stdout);
+    assert_eq!(got.len(), 9);
+    for (g, needle) in got[..8].iter().zip([
+        "unknown bsdf",
+        "nonzero",
+        "both 'eta' and 'k'",
+        "one number",
+        "[0, 1)",
+        "anisotropic only at gamma = 2",
+        "alpha",
+        "unknown field 'alpha_y'",
+    ]) {
+        let e = g["error"].as_str().unwrap_or_else(|| panic!("{g}"));
+        assert!(e.contains(needle), "{e} lacks {needle}");
+    }
+    assert!(got[8]["f"][0].as_f64().unwrap() > 0.0);
 }

@@ -1,0 +1,287 @@
+//! `microfacet bsdf`: the single-scattering rough conductor and dielectric BSDFs, JSON lines
+//! in, one line out per line, in order (errors as in `eval`). Local frame, z = normal;
+//! radiance transport; f64.
+
+use crate::eval::field;
+use microfacet::bsdf::{Bsdf, BsdfSample, Conductor, Dielectric, Lobe, Masking};
+use microfacet::fresnel::{self, One};
+use microfacet::{Beckmann, Distribution, DoubleGgx, Exponential, Ggx, Gtr, Microfacet, NdfKind};
+use serde_json::{json, Map, Value};
+use std::process::ExitCode;
+
+pub fn run(args: &[String]) -> Result<ExitCode, String> {
+    // GTR materials fit Λ at construction (1–90 ms): the last one is kept for the next line.
+    let mut cache: Option<(f64, f64, f64, Microfacet<f64, Gtr>)> = None;
+    crate::eval::json_lines("bsdf", args, |text| bsdf_line(text, &mut cache))
+}
+
+const FIELDS: [&str; 11] = [
+    "bsdf", "ndf", "alpha", "gamma", "eta", "k", "g2", "op", "wo", "wi", "u",
+];
+
+/// Answers one request line.
+fn bsdf_line(
+    text: &str,
+    cache: &mut Option<(f64, f64, f64, Microfacet<f64, Gtr>)>,
+) -> Result<Value, String> {
+    let v: Value = serde_json::from_str(text).map_err(|e| format!("not valid JSON: {e}"))?;
+    let obj = v.as_object().ok_or("expected a JSON object")?;
+    for key in obj.keys() {
+        if !FIELDS.contains(&key.as_str()) {
+            return Err(format!(
+                "unknown field '{}' (expected {})",
+                crate::clip(key),
+                FIELDS.join(", ")
+            ));
+        }
+    }
+    let req = Request::parse(obj)?;
+    let kind: NdfKind = string(obj, "ndf")?
+        .parse()
+        .map_err(|e: microfacet::family::UnknownNdf| e.to_string())?;
+    if kind != NdfKind::Gtr && obj.contains_key("gamma") {
+        return Err("field 'gamma' is for ndf gtr only".into());
+    }
+    let (ax, ay) = alpha(obj)?;
+    let err = |e: microfacet::ParamError| e.to_string();
+    match kind {
+        NdfKind::Ggx => req.answer(Microfacet::<f64, Ggx>::new(ax, ay).map_err(err)?),
+        NdfKind::Beckmann => req.answer(Microfacet::<f64, Beckmann>::new(ax, ay).map_err(err)?),
+        NdfKind::DoubleGgx => req.answer(Microfacet::<f64, DoubleGgx>::new(ax, ay).map_err(err)?),
+        NdfKind::Exponential => {
+            req.answer(Microfacet::<f64, Exponential>::new(ax, ay).map_err(err)?)
+        }
+        NdfKind::Gtr => {
+            let gamma = field(obj, "gamma")?;
+            let m = match cache {
+                Some((a, b, g, m)) if (*a, *b, *g) == (ax, ay, gamma) => m.clone(),
+                _ => {
+                    let m = Microfacet::<f64, Gtr>::gtr(ax, ay, gamma).map_err(err)?;
+                    *cache = Some((ax, ay, gamma, m.clone()));
+                    m
+                }
+            };
+            req.answer(m)
+        }
+    }
+}
+
+fn string<'a>(obj: &'a Map<String, Value>, name: &str) -> Result<&'a str, String> {
+    obj.get(name)
+        .ok_or_else(|| format!("missing field '{name}'"))?
+        .as_str()
+        .ok_or_else(|| format!("field '{name}' must be a string"))
+}
+
+/// "alpha": a or [ax, ay].
+fn alpha(obj: &Map<String, Value>) -> Result<(f64, f64), String> {
+    match obj.get("alpha") {
+        Some(Value::Array(a)) => {
+            let v = numbers(a, "alpha", 2)?;
+            Ok((v[0], v[1]))
+        }
+        _ => {
+            let a = field(obj, "alpha")?;
+            Ok((a, a))
+        }
+    }
+}
+
+/// An array of exactly `n` finite numbers.
+fn numbers(a: &[Value], name: &str, n: usize) -> Result<Vec<f64>, String> {
+    let v: Option<Vec<f64>> = a.iter().map(Value::as_f64).collect();
+    match v {
+        Some(v) if v.len() == n && v.iter().all(|x| x.is_finite()) => Ok(v),
+        _ => Err(format!(
+            "field '{name}' must be an array of {n} finite numbers"
+        )),
+    }
+}
+
+fn array(obj: &Map<String, Value>, name: &str, n: usize) -> Result<Vec<f64>, String> {
+    match obj.get(name) {
+        None => Err(format!("missing field '{name}'")),
+        Some(Value::Array(a)) => numbers(a, name, n),
+        Some(_) => Err(format!(
+            "field '{name}' must be an array of {n} finite numbers"
+        )),
+    }
+}
+
+/// A direction: any finite nonzero 3-vector, normalised.
+fn direction(obj: &Map<String, Value>, name: &str) -> Result<[f64; 3], String> {
+    let v = array(obj, name, 3)?;
+    let w = microfacet::frame::normalize([v[0], v[1], v[2]]);
+    if !w[0].is_finite() {
+        return Err(format!("field '{name}' must be a nonzero vector"));
+    }
+    Ok(w)
+}
+
+/// η (scalar or RGB) and k (RGB), per channel.
+fn spectrum(obj: &Map<String, Value>, name: &str) -> Result<[f64; 3], String> {
+    match obj.get(name) {
+        Some(Value::Array(a)) => {
+            let v = numbers(a, name, 3)?;
+            Ok([v[0], v[1], v[2]])
+        }
+        _ => {
+            let x = field(obj, name)?;
+            if !x.is_finite() {
+                return Err(format!("field '{name}' must be finite"));
+            }
+            Ok([x; 3])
+        }
+    }
+}
+
+enum Material {
+    /// F = 1 (no eta, no k).
+    Mirror,
+    Metal {
+        eta: [f64; 3],
+        k: [f64; 3],
+    },
+    Glass {
+        eta: f64,
+    },
+}
+
+enum Op {
+    Eval { wo: [f64; 3], wi: [f64; 3] },
+    Sample { wo: [f64; 3], u: [f64; 3] },
+}
+
+struct Request {
+    material: Material,
+    masking: Masking,
+    op: Op,
+}
+
+impl Request {
+    fn parse(obj: &Map<String, Value>) -> Result<Self, String> {
+        let material = match string(obj, "bsdf")? {
+            "conductor" => match (obj.contains_key("eta"), obj.contains_key("k")) {
+                (false, false) => Material::Mirror,
+                (true, true) => {
+                    let (eta, k) = (spectrum(obj, "eta")?, spectrum(obj, "k")?);
+                    if eta.iter().any(|&e| e <= 0.0) || k.iter().any(|&k| k < 0.0) {
+                        return Err("a conductor needs eta > 0 and k >= 0".into());
+                    }
+                    Material::Metal { eta, k }
+                }
+                _ => return Err("a conductor takes both 'eta' and 'k', or neither (F = 1)".into()),
+            },
+            "dielectric" => {
+                if obj.contains_key("k") {
+                    return Err("field 'k' is for conductors only".into());
+                }
+                let eta = match obj.get("eta") {
+                    Some(Value::Array(_)) => {
+                        return Err(
+                            "a dielectric's 'eta' is one number (the same in every channel)".into(),
+                        )
+                    }
+                    _ => field(obj, "eta")?,
+                };
+                if !(eta > 0.0 && eta.is_finite()) {
+                    return Err(format!("a dielectric needs a finite eta > 0, got {eta}"));
+                }
+                Material::Glass { eta }
+            }
+            other => {
+                return Err(format!(
+                    "unknown bsdf '{}' (expected conductor or dielectric)",
+                    crate::clip(other)
+                ))
+            }
+        };
+        let masking = match obj.get("g2") {
+            None => Masking::Correlated,
+            Some(v) => match v.as_str() {
+                Some("correlated") => Masking::Correlated,
+                Some("separable") => Masking::Separable,
+                _ => return Err("field 'g2' must be \"correlated\" or \"separable\"".into()),
+            },
+        };
+        let op = match string(obj, "op")? {
+            "eval" => {
+                if obj.contains_key("u") {
+                    return Err("field 'u' is for op sample".into());
+                }
+                Op::Eval {
+                    wo: direction(obj, "wo")?,
+                    wi: direction(obj, "wi")?,
+                }
+            }
+            "sample" => {
+                if obj.contains_key("wi") {
+                    return Err("field 'wi' is for op eval".into());
+                }
+                let u = array(obj, "u", 3)?;
+                if u.iter().any(|&x| !(0.0..1.0).contains(&x)) {
+                    return Err("field 'u' must hold three numbers in [0, 1)".into());
+                }
+                Op::Sample {
+                    wo: direction(obj, "wo")?,
+                    u: [u[0], u[1], u[2]],
+                }
+            }
+            other => {
+                return Err(format!(
+                    "unknown op '{}' (expected eval or sample)",
+                    crate::clip(other)
+                ))
+            }
+        };
+        Ok(Request {
+            material,
+            masking,
+            op,
+        })
+    }
+
+    fn answer<D: Distribution<f64> + Clone>(&self, d: D) -> Result<Value, String> {
+        match self.material {
+            Material::Mirror => self.run(
+                &Conductor::new(d, One::<3>).with_masking(self.masking),
+                |f| f,
+            ),
+            Material::Metal { eta, k } => self.run(
+                &Conductor::new(d, fresnel::Conductor { eta, k }).with_masking(self.masking),
+                |f| f,
+            ),
+            Material::Glass { eta } => self
+                .run(&Dielectric::new(d, eta).with_masking(self.masking), |f| {
+                    [f; 3]
+                }),
+        }
+    }
+
+    fn run<B: Bsdf<f64>>(
+        &self,
+        b: &B,
+        rgb: impl Fn(B::Value) -> [f64; 3],
+    ) -> Result<Value, String> {
+        match self.op {
+            Op::Eval { wo, wi } => Ok(json!({ "f": rgb(b.eval(wo, wi)), "pdf": b.pdf(wo, wi) })),
+            Op::Sample { wo, u } => Ok(match b.sample(wo, u[0], [u[1], u[2]]) {
+                Some(BsdfSample {
+                    wi,
+                    f,
+                    pdf,
+                    lobe,
+                    specular,
+                    ..
+                }) => json!({
+                    "wi": wi,
+                    "f": rgb(f),
+                    "pdf": pdf,
+                    "kind": match lobe { Lobe::Reflection => "reflection", Lobe::Transmission => "transmission" },
+                    "specular": specular,
+                }),
+                None => json!({ "wi": null, "f": [0.0, 0.0, 0.0], "pdf": 0.0, "kind": "rejected" }),
+            }),
+        }
+    }
+}
