@@ -102,9 +102,21 @@ pub trait Bsdf<F: Real> {
     /// The density of [`Bsdf::sample`]'s wi per unit solid angle (0 for delta lobes).
     fn pdf(&self, wo: [F; 3], wi: [F; 3]) -> F;
     /// A direction wi from the uniforms uc (the lobe choice) and u (the normal); `None` where
-    /// the sample is rejected (a reflection below the horizon, total internal reflection
-    /// drawn as a refraction cannot happen: its T is 0) or wo is on the horizon.
+    /// the sample is rejected (a reflection below the horizon, a refraction back to wo's
+    /// side, a pdf that is not a positive finite number) or wo is on the horizon. A
+    /// sample's pdf is > 0 and finite, and f is finite.
     fn sample(&self, wo: [F; 3], uc: F, u: [F; 2]) -> Option<BsdfSample<F, Self::Value>>;
+}
+
+/// Whether a direction counts as on the horizon: |cos θ| below 1e-18 in f32, 1e-150 in f64
+/// (NaN included). f carries 1/(|cos θo||cos θi|), and at such cosines the product
+/// underflows F (and G2/cos θ is 0/0 where Λ overflows); the solid angle they span is
+/// below 1e-18, and f|cos θi| → 0 there, so the BSDF answers 0 (eval, pdf) and rejects
+/// (sample), as pbrt-v4 does on the horizon itself.
+#[inline(always)]
+fn on_horizon<F: Real>(z: F) -> bool {
+    let floor = F::from_f64(if F::IS_F32 { 1e-18 } else { 1e-150 });
+    !(z.abs() >= floor)
 }
 
 #[inline(always)]
@@ -154,7 +166,11 @@ impl<F: Real, D: Distribution<F>, Fr: Fresnel<F, N>, const N: usize> Bsdf<F>
 
     #[inline]
     fn eval(&self, wo: [F; 3], wi: [F; 3]) -> [F; N] {
-        if !same_hemisphere(wo, wi) || self.dist.effectively_smooth() {
+        if !same_hemisphere(wo, wi)
+            || on_horizon(wo[2])
+            || on_horizon(wi[2])
+            || self.dist.effectively_smooth()
+        {
             return [F::ZERO; N];
         }
         let Some(wm) = half_vector_reflection(wo, wi) else {
@@ -168,7 +184,11 @@ impl<F: Real, D: Distribution<F>, Fr: Fresnel<F, N>, const N: usize> Bsdf<F>
 
     #[inline]
     fn pdf(&self, wo: [F; 3], wi: [F; 3]) -> F {
-        if !same_hemisphere(wo, wi) || self.dist.effectively_smooth() {
+        if !same_hemisphere(wo, wi)
+            || on_horizon(wo[2])
+            || on_horizon(wi[2])
+            || self.dist.effectively_smooth()
+        {
             return F::ZERO;
         }
         let Some(wm) = half_vector_reflection(wo, wi) else {
@@ -179,8 +199,7 @@ impl<F: Real, D: Distribution<F>, Fr: Fresnel<F, N>, const N: usize> Bsdf<F>
 
     #[inline]
     fn sample(&self, wo: [F; 3], _uc: F, u: [F; 2]) -> Option<BsdfSample<F, [F; N]>> {
-        // (False for NaN too.)
-        if !(wo[2] != F::ZERO) {
+        if on_horizon(wo[2]) {
             return None;
         }
         if self.dist.effectively_smooth() {
@@ -197,11 +216,16 @@ impl<F: Real, D: Distribution<F>, Fr: Fresnel<F, N>, const N: usize> Bsdf<F>
         }
         let s = self.dist.sample(wo, u);
         let wi = reflect(wo, s.wm);
-        if !same_hemisphere(wo, wi) {
+        if !same_hemisphere(wo, wi) || on_horizon(wi[2]) {
             return None;
         }
         let c = dot(wo, s.wm).abs();
         let pdf = s.pdf / (F::from_f64(4.0) * c);
+        // (A pdf that underflowed or is not finite would poison a renderer's f/pdf: such a
+        // sample, probability ~0, is rejected. False for NaN.)
+        if !(pdf > F::ZERO && pdf < F::from_f64(f64::INFINITY)) {
+            return None;
+        }
         let fr = self.fresnel.eval(c);
         let k = self.dist.d(s.wm) * g2(&self.dist, self.masking, wo, wi)
             / (F::from_f64(4.0) * wo[2].abs() * wi[2].abs());
@@ -268,7 +292,7 @@ impl<F: Real, D: Distribution<F>> Dielectric<F, D> {
     #[inline(always)]
     fn half(&self, wo: [F; 3], wi: [F; 3]) -> Option<([F; 3], F, bool)> {
         let (co, ci) = (wo[2], wi[2]);
-        if co == F::ZERO || ci == F::ZERO {
+        if on_horizon(co) || on_horizon(ci) {
             return None;
         }
         let reflection = co * ci > F::ZERO;
@@ -337,7 +361,7 @@ impl<F: Real, D: Distribution<F>> Bsdf<F> for Dielectric<F, D> {
 
     #[inline]
     fn sample(&self, wo: [F; 3], uc: F, u: [F; 2]) -> Option<BsdfSample<F, F>> {
-        if !(wo[2] != F::ZERO) {
+        if on_horizon(wo[2]) {
             return None;
         }
         if self.smooth() {
@@ -349,29 +373,37 @@ impl<F: Real, D: Distribution<F>> Bsdf<F> for Dielectric<F, D> {
         let r = fresnel::dielectric(c, self.eta);
         if uc < r {
             let wi = reflect(wo, wm);
-            if !same_hemisphere(wo, wi) {
+            if !same_hemisphere(wo, wi) || on_horizon(wi[2]) {
                 return None;
             }
             let f = self.dist.d(wm) * r * g2(&self.dist, self.masking, wo, wi)
                 / (F::from_f64(4.0) * (wo[2] * wi[2]).abs());
+            let pdf = s.pdf * r / (F::from_f64(4.0) * c.abs());
+            if !(pdf > F::ZERO && pdf < F::from_f64(f64::INFINITY)) {
+                return None;
+            }
             return Some(BsdfSample {
                 wi,
                 f,
-                pdf: s.pdf * r / (F::from_f64(4.0) * c.abs()),
+                pdf,
                 lobe: Lobe::Reflection,
                 specular: false,
                 eta: F::ONE,
             });
         }
         let (wi, etap) = refract(wo, wm, self.eta)?;
-        if same_hemisphere(wo, wi) || wi[2] == F::ZERO {
+        if same_hemisphere(wo, wi) || on_horizon(wi[2]) {
             return None;
         }
         let t = F::ONE - r;
+        let pdf = s.pdf * t * jacobian_refraction(wo, wi, wm, etap);
+        if !(pdf > F::ZERO && pdf < F::from_f64(f64::INFINITY)) {
+            return None;
+        }
         Some(BsdfSample {
             wi,
             f: self.f_transmission(wo, wi, wm, etap, t),
-            pdf: s.pdf * t * jacobian_refraction(wo, wi, wm, etap),
+            pdf,
             lobe: Lobe::Transmission,
             specular: false,
             eta: etap,
@@ -395,6 +427,9 @@ impl<F: Real, D: Distribution<F>> Dielectric<F, D> {
             });
         }
         let (wi, etap) = refract(wo, [F::ZERO, F::ZERO, F::ONE], self.eta)?;
+        if on_horizon(wi[2]) {
+            return None;
+        }
         let t = F::ONE - r;
         let mut f = t / wi[2].abs();
         if self.transport == Transport::Radiance {

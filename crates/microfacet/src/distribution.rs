@@ -500,7 +500,6 @@ impl Shape for Gtr {
 }
 
 /// An NDF `N` at roughness (αx, αy) in precision `F`: see the [module docs](self).
-#[derive(Clone, Debug)]
 pub struct Microfacet<F, N: Shape> {
     ax: F,
     ay: F,
@@ -510,6 +509,31 @@ pub struct Microfacet<F, N: Shape> {
     /// (The exact parameters, for [`Microfacet::exact`].)
     exact: ExactParams,
     _n: PhantomData<fn() -> N>,
+}
+
+// (By hand: derives would ask N itself for Clone and Debug.)
+impl<F: Copy, N: Shape> Clone for Microfacet<F, N> {
+    fn clone(&self) -> Self {
+        Microfacet {
+            ax: self.ax,
+            ay: self.ay,
+            iso: self.iso,
+            data: self.data.clone(),
+            exact: self.exact,
+            _n: PhantomData,
+        }
+    }
+}
+
+impl<F: std::fmt::Debug, N: Shape> std::fmt::Debug for Microfacet<F, N> {
+    fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
+        f.debug_struct("Microfacet")
+            .field("ndf", &std::any::type_name::<N>())
+            .field("alpha_x", &self.ax)
+            .field("alpha_y", &self.ay)
+            .field("data", &self.data)
+            .finish()
+    }
 }
 
 #[derive(Clone, Copy, Debug)]

@@ -1118,3 +1118,286 @@ fn slices_equal_scalars() {
 fn agree(x: f64, want: f64) -> bool {
     (x.is_nan() && want.is_nan()) || x == want || (x - want).abs() <= 1e-12 * want.abs().max(1e-288)
 }
+
+/// A unit direction in F with the edges of the contract (on the horizon, z = ±0, tiny z,
+/// normal incidence, below the horizon), as a renderer hands them over.
+fn unit_direction<F: fast::Real>(r: &mut Rng) -> [F; 3] {
+    let mut w = direction(r, F::IS_F32);
+    let l = w.length();
+    w = Vec3::new(w.x / l, w.y / l, w.z / l);
+    [F::from_f64(w.x), F::from_f64(w.y), F::from_f64(w.z)]
+}
+
+fn finite<F: fast::Real>(x: F) -> bool {
+    x.to_f64().is_finite()
+}
+
+/// `Microfacet` (every NDF, f64 and f32, isotropic and anisotropic) and the BSDFs over it:
+/// D ≥ 0, Λ ≥ 0 (+∞ only on the horizon or where it overflows F), G1, G2 ∈ [0, 1],
+/// G2 ≤ min G1, samples unit and visible with a finite pdf (> 0 at interior u off the
+/// horizon) equal to `pdf`, and BSDF values and pdfs finite and ≥ 0, samples with a finite
+/// f and a positive finite pdf. Directions out of contract (non-unit lengths) only must not
+/// panic.
+fn microfacet_api<F: fast::Real + std::fmt::Debug>(test: u64, draw: fn(&mut Rng) -> F) {
+    use microfacet::bsdf::{Bsdf, Conductor, Dielectric, Masking};
+    use microfacet::{fresnel, Distribution, Microfacet};
+    let mut r = Rng::new(test);
+    let mut fails = Failures::default();
+    let unit_tol = if F::IS_F32 { 1e-6 } else { 1e-13 };
+    #[allow(clippy::too_many_arguments)]
+    fn run<F: fast::Real + std::fmt::Debug, D: Distribution<F> + Clone + std::fmt::Debug>(
+        m: D,
+        ex: microfacet::distribution::Exact,
+        name: &str,
+        r: &mut Rng,
+        fails: &mut Failures,
+        draw: fn(&mut Rng) -> F,
+        unit_tol: f64,
+    ) {
+        let (ax, ay) = m.alpha();
+        let amax = ax.to_f64().max(ay.to_f64());
+        let eta = F::from_f64(if r.chance(0.5) {
+            1.0 + 2.0 * r.f64()
+        } else {
+            1.0 / (1.0 + 2.0 * r.f64())
+        });
+        let masking = if r.chance(0.5) {
+            Masking::Correlated
+        } else {
+            Masking::Separable
+        };
+        let metal = Conductor::new(
+            m.clone(),
+            fresnel::Conductor {
+                eta: [F::from_f64(0.2), F::from_f64(1.1)],
+                k: [F::from_f64(3.9), F::from_f64(2.2)],
+            },
+        )
+        .with_masking(masking);
+        let glass = Dielectric::new(m.clone(), eta).with_masking(masking);
+        for _ in 0..60 {
+            let w: [F; 3] = unit_direction(r);
+            let wi: [F; 3] = unit_direction(r);
+            let mut wm: [F; 3] = unit_direction(r);
+            wm[2] = wm[2].abs();
+            let u = [draw(r), draw(r)];
+            let uc = draw(r);
+            let ctx = || {
+                format!("{name} α=({ax:?},{ay:?}) w={w:?} wi={wi:?} wm={wm:?} u={u:?} uc={uc:?} η={eta:?}")
+            };
+            let (d, l, g1, g2, g2s) = no_panic("Microfacet", ctx(), || {
+                (
+                    m.d(wm),
+                    m.lambda(w),
+                    m.g1(w),
+                    m.g2(w, wi),
+                    m.g2_separable(w, wi),
+                )
+            });
+            fails.check(d >= F::ZERO && finite(d), || {
+                format!("d = {d:?} at {}", ctx())
+            });
+            let wf = w.map(|x| x.to_f64());
+            let max = if F::IS_F32 { f32::MAX as f64 } else { f64::MAX };
+            // Λ ~ σ(0)/|z| is +∞ where the true value (the exact path's) overflows F.
+            let overflows = || w[2] == F::ZERO || ex.lambda(wf) > 0.99 * max;
+            fails.check(l >= F::ZERO && (finite(l) || overflows()), || {
+                format!("lambda = {l:?} at {}", ctx())
+            });
+            for (q, v) in [("g1", g1), ("g2", g2), ("g2_separable", g2s)] {
+                fails.check(v >= F::ZERO && v <= F::ONE, || {
+                    format!("{q} = {v:?} at {}", ctx())
+                });
+            }
+            fails.check(g2 <= g1 + F::from_f64(unit_tol), || {
+                format!("g2 {g2:?} > g1 {g1:?} at {}", ctx())
+            });
+            let s = no_panic("Microfacet::sample", ctx(), || m.sample(w, u));
+            let wmv = v3(s.wm);
+            fails.check(
+                (wmv.length() - 1.0).abs() < unit_tol && s.wm[2] >= F::ZERO,
+                || format!("sample {:?} not a unit upper normal at {}", s.wm, ctx()),
+            );
+            let side = if w[2] < F::ZERO { -1.0 } else { 1.0 };
+            fails.check(side * v3(w).dot(wmv) >= -unit_tol, || {
+                format!("sample {:?} not visible at {}", s.wm, ctx())
+            });
+            fails.check(finite(s.pdf) && s.pdf >= F::ZERO, || {
+                format!("sample pdf {:?} at {}", s.pdf, ctx())
+            });
+            let uf = [u[0].to_f64(), u[1].to_f64()];
+            if interior(uf) && w[2].to_f64().abs() > 1e-6 && amax < 1e3 && !(s.pdf > F::ZERO) {
+                // 0 only where the true pdf underflows F.
+                let tiny = if F::IS_F32 {
+                    f32::MIN_POSITIVE as f64
+                } else {
+                    1e-300
+                };
+                let p = ex.pdf(wf, s.wm.map(|x| x.to_f64()));
+                fails.check(p < tiny, || {
+                    format!("sample pdf {:?} (exact {p:e}) at {}", s.pdf, ctx())
+                });
+            }
+            let p = m.pdf(w, s.wm);
+            fails.check(
+                p == s.pdf || (p.to_f64().is_nan() && s.pdf.to_f64().is_nan()),
+                || format!("sample pdf {:?} vs pdf {p:?} at {}", s.pdf, ctx()),
+            );
+            let sd = no_panic("Microfacet::sample_dcos", ctx(), || m.sample_dcos(u));
+            fails.check(
+                (v3(sd.wm).length() - 1.0).abs() < unit_tol
+                    && sd.wm[2] >= F::ZERO
+                    && finite(sd.pdf)
+                    && sd.pdf >= F::ZERO,
+                || format!("sample_dcos {sd:?} at {}", ctx()),
+            );
+            // The BSDFs.
+            let (fm, pm, fg, pg) = no_panic("bsdf eval/pdf", ctx(), || {
+                (
+                    metal.eval(w, wi),
+                    metal.pdf(w, wi),
+                    glass.eval(w, wi),
+                    glass.pdf(w, wi),
+                )
+            });
+            for v in fm.into_iter().chain([pm, fg, pg]) {
+                fails.check(v >= F::ZERO && finite(v), || {
+                    format!("bsdf eval/pdf {v:?} at {}", ctx())
+                });
+            }
+            let (sm, sg) = no_panic("bsdf sample", ctx(), || {
+                (metal.sample(w, uc, u), glass.sample(w, uc, u))
+            });
+            let mut samples: Vec<(&str, [F; 3], F, Vec<F>)> = Vec::new();
+            if let Some(s) = sm {
+                samples.push(("conductor", s.wi, s.pdf, s.f.to_vec()));
+            }
+            if let Some(s) = sg {
+                samples.push(("dielectric", s.wi, s.pdf, vec![s.f]));
+            }
+            for (b, wi_s, pdf, f) in samples {
+                fails.check((v3(wi_s).length() - 1.0).abs() < 1e3 * unit_tol, || {
+                    format!("{b} sample wi {wi_s:?} at {}", ctx())
+                });
+                fails.check(pdf > F::ZERO && finite(pdf), || {
+                    format!("{b} sample pdf {pdf:?} at {}", ctx())
+                });
+                fails.check(f.iter().all(|&x| x >= F::ZERO && finite(x)), || {
+                    format!("{b} sample f {f:?} at {}", ctx())
+                });
+            }
+            // Out of contract: non-unit directions must not panic.
+            let far = [w[0] * F::from_f64(1e20), w[1], w[2] * F::from_f64(1e-20)];
+            no_panic("out of contract", ctx(), || {
+                (
+                    m.lambda(far),
+                    m.d(far),
+                    m.sample(far, u),
+                    metal.sample(far, uc, u),
+                    glass.eval(far, wi),
+                )
+            });
+            evals(16);
+        }
+    }
+    #[allow(clippy::too_many_arguments)]
+    fn run_with<F: fast::Real + std::fmt::Debug, N: microfacet::distribution::Shape>(
+        m: Microfacet<F, N>,
+        name: &str,
+        r: &mut Rng,
+        fails: &mut Failures,
+        draw: fn(&mut Rng) -> F,
+        unit_tol: f64,
+    ) {
+        let ex = m.exact();
+        run(m, ex, name, r, fails, draw, unit_tol)
+    }
+    for i in 0..500 * scale() {
+        let ax = alpha(&mut r);
+        let ay = if r.chance(0.5) { ax } else { alpha(&mut r) };
+        let (fx, fy) = (F::from_f64(ax), F::from_f64(ay));
+        // (The f32 roughness must stay in the accepted range after rounding.)
+        let (fx, fy) = (
+            fx.max(F::from_f64(1e-6)).min(F::from_f64(1e6)),
+            fy.max(F::from_f64(1e-6)).min(F::from_f64(1e6)),
+        );
+        let (fx, fy) = if fx.to_f64() < 1e-6 || fy.to_f64() < 1e-6 {
+            (F::from_f64(1e-5), F::from_f64(1e-5))
+        } else {
+            (fx, fy)
+        };
+        match i % 5 {
+            0 => run_with(
+                Microfacet::<F, Ggx>::new(fx, fy).unwrap(),
+                "ggx",
+                &mut r,
+                &mut fails,
+                draw,
+                unit_tol,
+            ),
+            1 => run_with(
+                Microfacet::<F, Beckmann>::new(fx, fy).unwrap(),
+                "beckmann",
+                &mut r,
+                &mut fails,
+                draw,
+                unit_tol,
+            ),
+            2 => run_with(
+                Microfacet::<F, DoubleGgx>::new(fx, fy).unwrap(),
+                "double_ggx",
+                &mut r,
+                &mut fails,
+                draw,
+                unit_tol,
+            ),
+            3 => run_with(
+                Microfacet::<F, Exponential>::new(fx, fy).unwrap(),
+                "exponential",
+                &mut r,
+                &mut fails,
+                draw,
+                unit_tol,
+            ),
+            _ => {
+                // GTR: isotropic at any γ (a fit per material: every 4th GTR round), or
+                // anisotropic at γ = 2.
+                if i % 20 == 4 {
+                    let g = gamma(&mut r);
+                    run_with(
+                        Microfacet::<F, Gtr>::gtr(fx, fx, g).unwrap(),
+                        "gtr",
+                        &mut r,
+                        &mut fails,
+                        draw,
+                        unit_tol,
+                    );
+                } else {
+                    run_with(
+                        Microfacet::<F, Gtr>::gtr(fx, fy, 2.0).unwrap(),
+                        "gtr γ=2",
+                        &mut r,
+                        &mut fails,
+                        draw,
+                        unit_tol,
+                    );
+                }
+            }
+        }
+    }
+    fails.finish(if F::IS_F32 {
+        "microfacet_api_f32"
+    } else {
+        "microfacet_api_f64"
+    });
+}
+
+#[test]
+fn microfacet_api_f64() {
+    microfacet_api::<f64>(40, uniform);
+}
+
+#[test]
+fn microfacet_api_f32() {
+    microfacet_api::<f32>(41, uniform32);
+}
