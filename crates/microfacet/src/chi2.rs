@@ -43,36 +43,54 @@ impl<M: Microsurface> Coordinates for DcosCoordinates<'_, M> {
     }
 }
 
-/// The D·cos warp of a reference microsurface about another axis: the hemisphere around
-/// `axis` (a unit vector), for lobes that are not centred on the normal (a BSDF's reflection
-/// and transmission lobes).
-pub struct AxisCoordinates<'a, M: Microsurface> {
-    pub reference: &'a M,
+/// GGX's D·cos warp at roughness α about an axis: the hemisphere around `axis` (a unit
+/// vector), for lobes that are not centred on the normal (a BSDF's reflection and
+/// transmission lobes). In closed form (tan²θ = α²s/(1 − s), φ = 2πt; J = 1/(D cos θ)), a
+/// few tens of nanoseconds per node.
+pub struct AxisCoordinates {
+    alpha: f64,
     frame: crate::frame::Frame<f64>,
 }
 
-impl<'a, M: Microsurface> AxisCoordinates<'a, M> {
-    /// The reference's D·cos warp in a frame whose z is `axis`.
-    pub fn new(reference: &'a M, axis: Vec3) -> Self {
+impl AxisCoordinates {
+    /// GGX's D·cos warp at roughness α in a frame whose z is `axis`.
+    pub fn new(alpha: f64, axis: Vec3) -> Self {
         AxisCoordinates {
-            reference,
+            alpha,
             frame: crate::frame::Frame::from_normal(axis.into()),
         }
     }
+
+    /// D(θ) cos θ of GGX at cos θ = c.
+    fn dcos(&self, c: f64) -> f64 {
+        let a2 = self.alpha * self.alpha;
+        let t = (1.0 - c) * (1.0 + c) + c * c * a2;
+        a2 * c / (std::f64::consts::PI * t * t)
+    }
 }
 
-impl<M: Microsurface> Coordinates for AxisCoordinates<'_, M> {
+impl Coordinates for AxisCoordinates {
     fn unit_of(&self, w: Vec3) -> [f64; 2] {
-        self.reference
-            .invert_dcos(Vec3::from(self.frame.to_local(w.into())))
+        let l = self.frame.to_local(w.into());
+        let (s2, c2) = (l[0] * l[0] + l[1] * l[1], l[2] * l[2]);
+        // s = tan²θ/(α² + tan²θ) = sin²θ/(α² cos²θ + sin²θ).
+        let s = s2 / (self.alpha * self.alpha * c2 + s2);
+        let mut phi = l[1].atan2(l[0]) / std::f64::consts::TAU;
+        if phi < 0.0 {
+            phi += 1.0;
+        }
+        [s.clamp(0.0, 1.0), phi.min(1.0)]
     }
     fn direction_at(&self, u: [f64; 2]) -> (Vec3, f64) {
-        let w = self.reference.sample_dcos(u);
-        let p = self.reference.pdf_dcos(w);
-        (
-            Vec3::from(self.frame.from_local(w.into())),
-            if p > 0.0 { 1.0 / p } else { 0.0 },
-        )
+        // cos²θ = (1 − s)/(1 − s + α² s).
+        let (s, a2) = (u[0], self.alpha * self.alpha);
+        let c2 = (1.0 - s) / (1.0 - s + a2 * s);
+        let c = c2.sqrt();
+        let sin = (1.0 - c2).max(0.0).sqrt();
+        let (sp, cp) = (std::f64::consts::TAU * u[1]).sin_cos();
+        let w = self.frame.from_local([sin * cp, sin * sp, c]);
+        let p = self.dcos(c);
+        (Vec3::from(w), if p > 0.0 { 1.0 / p } else { 0.0 })
     }
     fn covers(&self, w: Vec3) -> bool {
         self.frame.to_local(w.into())[2] > 0.0
@@ -136,7 +154,7 @@ pub fn chi2_test(
         n,
         res,
     );
-    let mut r = statistic(&observed, &expected(&pdf, coords, n, res), None, n);
+    let mut r = statistic(&observed, &expected(&pdf, coords, n, res, 2), None, n);
     r.bad_samples = bad;
     r
 }
@@ -174,9 +192,41 @@ pub fn chi2_test_region(
         n,
         res,
     );
-    let mut r = statistic(&observed, &expected(&pdf, coords, n, res), Some(outside), n);
+    let mut r = statistic(
+        &observed,
+        &expected(&pdf, coords, n, res, 2),
+        Some(outside),
+        n,
+    );
     r.bad_samples = bad;
     r
+}
+
+/// [`chi2_test_region`] with the expected counts given (n ∫∫_cell pdf J per cell, from
+/// another route than the pdf: a push-forward quadrature, say, where the pdf has a
+/// singularity no cell rule integrates); `pdf_integral` is their sum over n.
+pub fn chi2_test_region_expected(
+    mut sample: impl FnMut(&mut SplitMix64) -> Option<Vec3>,
+    expected: &[f64],
+    coords: &impl Coordinates,
+    n: usize,
+    res: usize,
+    seed: u64,
+) -> Chi2 {
+    let mut rng = SplitMix64(seed);
+    let (observed, outside) = histogram(|| sample(&mut rng), coords, n, res);
+    statistic(&observed, expected, Some(outside), n)
+}
+
+/// The cell of `coords`' `res × res` grid that w falls in (None outside its region).
+pub fn cell_of(coords: &impl Coordinates, w: Vec3, res: usize) -> Option<usize> {
+    if !coords.covers(w) {
+        return None;
+    }
+    let [s, t] = coords.unit_of(w);
+    let i = ((s * res as f64) as usize).min(res - 1);
+    let j = ((t * res as f64) as usize).min(res - 1);
+    Some(i * res + j)
 }
 
 /// Counts per cell of the directions `coords` covers, and the number of the rest.
@@ -193,14 +243,10 @@ fn histogram(
             outside += 1.0;
             continue;
         };
-        if !coords.covers(w) {
-            outside += 1.0;
-            continue;
+        match cell_of(coords, w, res) {
+            Some(c) => observed[c] += 1.0,
+            None => outside += 1.0,
         }
-        let [s, t] = coords.unit_of(w);
-        let i = ((s * res as f64) as usize).min(res - 1);
-        let j = ((t * res as f64) as usize).min(res - 1);
-        observed[i * res + j] += 1.0;
     }
     (observed, outside)
 }
@@ -211,6 +257,7 @@ fn expected(
     coords: &impl Coordinates,
     n: usize,
     res: usize,
+    level: u32,
 ) -> Vec<f64> {
     let h = 1.0 / res as f64;
     let density = |s: f64, t: f64| {
@@ -223,13 +270,15 @@ fn expected(
         let (s0, s1) = (i as f64 * h, (i + 1) as f64 * h);
         for j in 0..res {
             let (t0, t1) = (j as f64 * h, (j + 1) as f64 * h);
-            expected[i * res + j] = cell_integral(&density, [s0, s1], [t0, t1], 0) * n as f64;
+            expected[i * res + j] =
+                cell_integral(&density, [s0, s1], [t0, t1], 0, level) * n as f64;
         }
     }
     expected
 }
 
-/// ∫∫ density over the cell: the fixed 33 × 33-node rule, or, where the density may jump
+/// ∫∫ density over the cell: the fixed tanh-sinh rule of `level` (33 × 33 nodes at level 2;
+/// level 1, 17 × 17, integrated a BSDF's transmission lobe only to 1e-2), or, where the density may jump
 /// inside the cell (its support ends there, or the horizon crosses it: zero at some of a
 /// 5 × 5 grid of probes and not at others, or directions on both sides of the surface —
 /// the horizon cutting a BSDF lobe, a reflection lobe meeting a transmission lobe, a bounded
@@ -241,16 +290,15 @@ fn cell_integral(
     s: [f64; 2],
     t: [f64; 2],
     depth: u32,
+    level: u32,
 ) -> f64 {
     if depth < 4 {
         let (mut zero, mut positive, mut above, mut below) = (false, false, false, false);
-        let (mut lo, mut hi) = (f64::INFINITY, 0.0f64);
         for a in 0..5 {
             for b in 0..5 {
                 let x = s[0] + (s[1] - s[0]) * (0.02 + 0.24 * a as f64);
                 let y = t[0] + (t[1] - t[0]) * (0.02 + 0.24 * b as f64);
                 let (p, up) = density(x, y);
-                (lo, hi) = (lo.min(p), hi.max(p));
                 if p > 0.0 {
                     positive = true;
                 } else {
@@ -263,22 +311,20 @@ fn cell_integral(
                 }
             }
         }
-        // (A peak: the density varies by more than 30× across the probes, where the
-        // reference lobe of the coordinates is much wider than a feature of the pdf.)
-        if (zero && positive) || (above && below) || hi > 30.0 * lo {
+        if (zero && positive) || (above && below) {
             let (sm, tm) = (0.5 * (s[0] + s[1]), 0.5 * (t[0] + t[1]));
             return [[s[0], sm], [sm, s[1]]]
                 .iter()
                 .flat_map(|&si| [[t[0], tm], [tm, t[1]]].map(move |ti| (si, ti)))
-                .map(|(si, ti)| cell_integral(density, si, ti, depth + 1))
+                .map(|(si, ti)| cell_integral(density, si, ti, depth + 1, level))
                 .sum();
         }
     }
     crate::quad::integrate_fixed(
-        |x| crate::quad::integrate_fixed(|y| density(x, y).0, t[0], t[1], 2),
+        |x| crate::quad::integrate_fixed(|y| density(x, y).0, t[0], t[1], level),
         s[0],
         s[1],
-        2,
+        level,
     )
 }
 
