@@ -44,6 +44,9 @@
 //! # Ok::<(), microfacet::ParamError>(())
 //! ```
 
+// `!(x > 0)` is the NaN-aware test (false for NaN) on a generic `Real`, on purpose.
+#![allow(clippy::neg_cmp_op_on_partial_ord)]
+
 use crate::distribution::Distribution;
 use crate::fast::Real;
 use crate::frame::{

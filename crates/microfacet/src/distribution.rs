@@ -65,6 +65,9 @@
 //! # Ok::<(), microfacet::ParamError>(())
 //! ```
 
+// `!(x > 0)` is the NaN-aware test (false for NaN) on a generic `Real`, on purpose.
+#![allow(clippy::neg_cmp_op_on_partial_ord)]
+
 use crate::fast::{self, Real};
 use crate::frame::{dot, normalize};
 use crate::microsurface::{Isotropic, Microsurface, Stretched};
@@ -126,7 +129,7 @@ pub trait Distribution<F: Real> {
         };
         // (False for NaN.)
         if !(c > F::ZERO && z > F::ZERO) {
-            return if c == c { F::ZERO } else { c };
+            return if c.to_f64().is_nan() { c } else { F::ZERO };
         }
         self.g1(w) * c * self.d(wm) / z
     }
@@ -182,7 +185,7 @@ impl UniformStream {
 
     /// The next uniform.
     #[inline(always)]
-    pub fn next<F: Real>(&mut self) -> F {
+    pub fn next_uniform<F: Real>(&mut self) -> F {
         self.0 = self.0.wrapping_add(0x9E37_79B9_7F4A_7C15);
         let mut z = self.0;
         z = (z ^ (z >> 30)).wrapping_mul(0xBF58_476D_1CE4_E5B9);
@@ -323,7 +326,7 @@ impl Shape for Ggx {
 fn ggx_d_aniso<F: Real>(wm: [F; 3], ax: F, ay: F) -> F {
     let (x, y, z) = (wm[0] / ax, wm[1] / ay, wm[2]);
     if !(z > F::ZERO) {
-        return if z == z { F::ZERO } else { z };
+        return if z.to_f64().is_nan() { z } else { F::ZERO };
     }
     let t = x * x + y * y + z * z;
     F::ONE / (F::PI * ax * ay * t * t)
@@ -413,12 +416,12 @@ impl Shape for DoubleGgx {
     #[inline(always)]
     fn sample_wm<F: Real>(_: &(), w: [F; 3], ax: F, ay: F, u: [F; 2]) -> [F; 3] {
         let mut s = UniformStream::new(u);
-        fast::double_ggx::sample_visible(w, ax, ay, u, &mut || s.next())
+        fast::double_ggx::sample_visible(w, ax, ay, u, &mut || s.next_uniform())
     }
     #[inline(always)]
     fn sample_dcos<F: Real>(_: &(), ax: F, ay: F, u: [F; 2]) -> [F; 3] {
         let mut s = UniformStream::new(u);
-        fast::double_ggx::sample_dcos(ax, ay, u, &mut || s.next())
+        fast::double_ggx::sample_dcos(ax, ay, u, &mut || s.next_uniform())
     }
 }
 
@@ -436,12 +439,12 @@ impl Shape for Exponential {
     #[inline(always)]
     fn sample_wm<F: Real>(_: &(), w: [F; 3], ax: F, ay: F, u: [F; 2]) -> [F; 3] {
         let mut s = UniformStream::new(u);
-        fast::exponential::sample_visible(w, ax, ay, u, &mut || s.next())
+        fast::exponential::sample_visible(w, ax, ay, u, &mut || s.next_uniform())
     }
     #[inline(always)]
     fn sample_dcos<F: Real>(_: &(), ax: F, ay: F, u: [F; 2]) -> [F; 3] {
         let mut s = UniformStream::new(u);
-        fast::exponential::sample_dcos(ax, ay, u, &mut || s.next())
+        fast::exponential::sample_dcos(ax, ay, u, &mut || s.next_uniform())
     }
 }
 
@@ -485,7 +488,7 @@ impl Shape for Gtr {
         match data {
             GtrData::Fitted(g) => {
                 let mut s = UniformStream::new(u);
-                g.sample_visible(w, u, &mut || s.next())
+                g.sample_visible(w, u, &mut || s.next_uniform())
             }
             GtrData::Ggx => fast::ggx::sample_visible(w, ax, ay, u),
         }

@@ -18,6 +18,9 @@
 //! assert!(wt[2] < 0.0 && eta == 1.5);
 //! ```
 
+// `!(x > 0)` is the NaN-aware test (false for NaN) on a generic `Real`, on purpose.
+#![allow(clippy::neg_cmp_op_on_partial_ord)]
+
 use crate::fast::Real;
 
 /// a·b.
@@ -154,7 +157,7 @@ pub fn half_vector_refraction<F: Real>(wo: [F; 3], wi: [F; 3], eta: F) -> Option
 fn up<F: Real>(v: [F; 3]) -> Option<[F; 3]> {
     let m = normalize(v);
     // (False for NaN.)
-    if !(m[2] == m[2]) {
+    if m[2].to_f64().is_nan() {
         return None;
     }
     Some(if m[2] < F::ZERO { neg(m) } else { m })
@@ -209,7 +212,7 @@ impl<F: Real> Frame<F> {
     pub fn from_normal_tangent(n: [F; 3], tangent: [F; 3]) -> Self {
         let n = normalize(n);
         let s = normalize(add(tangent, scale(n, -dot(tangent, n))));
-        if !(s[0] == s[0]) {
+        if s[0].to_f64().is_nan() {
             return Self::from_normal(n);
         }
         Frame {

@@ -14,6 +14,9 @@
 //!
 //! The [`Fresnel`] trait wraps each as a value a BSDF carries.
 
+// `!(x > 0)` is the NaN-aware test (false for NaN) on a generic `Real`, on purpose.
+#![allow(clippy::neg_cmp_op_on_partial_ord)]
+
 use crate::fast::Real;
 
 /// Exact unpolarised Fresnel reflectance of a dielectric interface with relative index η
