@@ -118,6 +118,10 @@ pub fn reflect<F: Real>(wo: [F; 3], n: [F; 3]) -> [F; 3] {
 #[inline]
 pub fn refract<F: Real>(wi: [F; 3], n: [F; 3], eta: F) -> Option<([F; 3], F)> {
     let mut cos_i = dot(n, wi);
+    // (max below would turn a NaN into 0.)
+    if cos_i.to_f64().is_nan() {
+        return None;
+    }
     let (mut eta, mut n) = (eta, n);
     if cos_i < F::ZERO {
         eta = F::ONE / eta;
