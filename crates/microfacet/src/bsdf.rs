@@ -122,6 +122,25 @@ fn on_horizon<F: Real>(z: F) -> bool {
     !(z.abs() >= floor)
 }
 
+/// A sampled pdf a renderer can divide by: positive and finite (a sample whose pdf
+/// underflowed or overflowed, probability ~0, is rejected; false for NaN).
+#[inline(always)]
+fn usable<F: Real>(pdf: F) -> bool {
+    pdf > F::ZERO && pdf < F::from_f64(f64::INFINITY)
+}
+
+/// The reflection lobe without its Fresnel factor: D(wm) G2(wo, wi)/(4|cos θo||cos θi|).
+#[inline(always)]
+fn reflected<F: Real, D: Distribution<F>>(
+    d: &D,
+    m: Masking,
+    wo: [F; 3],
+    wi: [F; 3],
+    wm: [F; 3],
+) -> F {
+    d.d(wm) * g2(d, m, wo, wi) / (F::from_f64(4.0) * (wo[2] * wi[2]).abs())
+}
+
 #[inline(always)]
 fn g2<F: Real, D: Distribution<F>>(d: &D, m: Masking, wo: [F; 3], wi: [F; 3]) -> F {
     match m {
@@ -180,8 +199,7 @@ impl<F: Real, D: Distribution<F>, Fr: Fresnel<F, N>, const N: usize> Bsdf<F>
             return [F::ZERO; N];
         };
         let fr = self.fresnel.eval(dot(wo, wm).abs());
-        let k = self.dist.d(wm) * g2(&self.dist, self.masking, wo, wi)
-            / (F::from_f64(4.0) * wo[2].abs() * wi[2].abs());
+        let k = reflected(&self.dist, self.masking, wo, wi, wm);
         fr.map(|f| f * k)
     }
 
@@ -224,14 +242,11 @@ impl<F: Real, D: Distribution<F>, Fr: Fresnel<F, N>, const N: usize> Bsdf<F>
         }
         let c = dot(wo, s.wm).abs();
         let pdf = s.pdf / (F::from_f64(4.0) * c);
-        // (A pdf that underflowed or is not finite would poison a renderer's f/pdf: such a
-        // sample, probability ~0, is rejected. False for NaN.)
-        if !(pdf > F::ZERO && pdf < F::from_f64(f64::INFINITY)) {
+        if !usable(pdf) {
             return None;
         }
         let fr = self.fresnel.eval(c);
-        let k = self.dist.d(s.wm) * g2(&self.dist, self.masking, wo, wi)
-            / (F::from_f64(4.0) * wo[2].abs() * wi[2].abs());
+        let k = reflected(&self.dist, self.masking, wo, wi, s.wm);
         Some(BsdfSample {
             wi,
             f: fr.map(|f| f * k),
@@ -338,8 +353,7 @@ impl<F: Real, D: Distribution<F>> Bsdf<F> for Dielectric<F, D> {
         };
         let r = fresnel::dielectric(dot(wo, wm), self.eta);
         if reflection {
-            self.dist.d(wm) * r * g2(&self.dist, self.masking, wo, wi)
-                / (F::from_f64(4.0) * (wo[2] * wi[2]).abs())
+            r * reflected(&self.dist, self.masking, wo, wi, wm)
         } else {
             self.f_transmission(wo, wi, wm, etap, F::ONE - r)
         }
@@ -379,10 +393,9 @@ impl<F: Real, D: Distribution<F>> Bsdf<F> for Dielectric<F, D> {
             if !same_hemisphere(wo, wi) || on_horizon(wi[2]) {
                 return None;
             }
-            let f = self.dist.d(wm) * r * g2(&self.dist, self.masking, wo, wi)
-                / (F::from_f64(4.0) * (wo[2] * wi[2]).abs());
+            let f = r * reflected(&self.dist, self.masking, wo, wi, wm);
             let pdf = s.pdf * r / (F::from_f64(4.0) * c.abs());
-            if !(pdf > F::ZERO && pdf < F::from_f64(f64::INFINITY)) {
+            if !usable(pdf) {
                 return None;
             }
             return Some(BsdfSample {
@@ -400,7 +413,7 @@ impl<F: Real, D: Distribution<F>> Bsdf<F> for Dielectric<F, D> {
         }
         let t = F::ONE - r;
         let pdf = s.pdf * t * jacobian_refraction(wo, wi, wm, etap);
-        if !(pdf > F::ZERO && pdf < F::from_f64(f64::INFINITY)) {
+        if !usable(pdf) {
             return None;
         }
         Some(BsdfSample {

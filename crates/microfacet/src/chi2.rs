@@ -142,8 +142,7 @@ pub fn chi2_test(
     let (observed, _) = histogram(
         || {
             let w = sample([rng.next_f64(), rng.next_f64()]);
-            let ok =
-                w.x.is_finite() && w.y.is_finite() && w.z > 0.0 && (w.length() - 1.0).abs() < 1e-9;
+            let ok = unit(w) && w.z > 0.0;
             if !ok {
                 bad += 1;
                 return None;
@@ -178,10 +177,7 @@ pub fn chi2_test_region(
     let (observed, outside) = histogram(
         || {
             let w = sample(&mut rng)?;
-            let ok = w.x.is_finite()
-                && w.y.is_finite()
-                && w.z.is_finite()
-                && (w.length() - 1.0).abs() < 1e-9;
+            let ok = unit(w);
             if !ok {
                 bad += 1;
                 return None;
@@ -227,6 +223,11 @@ pub fn cell_of(coords: &impl Coordinates, w: Vec3, res: usize) -> Option<usize> 
     let i = ((s * res as f64) as usize).min(res - 1);
     let j = ((t * res as f64) as usize).min(res - 1);
     Some(i * res + j)
+}
+
+/// A finite unit vector (to 1e-9): what a sampler must return.
+fn unit(w: Vec3) -> bool {
+    w.x.is_finite() && w.y.is_finite() && w.z.is_finite() && (w.length() - 1.0).abs() < 1e-9
 }
 
 /// Counts per cell of the directions `coords` covers, and the number of the rest.
