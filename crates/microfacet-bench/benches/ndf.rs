@@ -69,6 +69,34 @@ fn time(calls: usize, mut f: impl FnMut(usize) -> f64) -> f64 {
     runs[runs.len() / 2]
 }
 
+/// Median ns per call of `f` and of `g`, over 15 rounds in which they run in turn (so that a
+/// slow stretch of the machine falls on both alike): the pairs of the type-vs-free rows.
+#[inline(never)]
+fn paired(
+    calls: usize,
+    mut f: impl FnMut(usize) -> f64,
+    mut g: impl FnMut(usize) -> f64,
+) -> (f64, f64) {
+    let (mut tf, mut tg) = (Vec::new(), Vec::new());
+    for _ in 0..15 {
+        tf.push(once(calls, &mut f));
+        tg.push(once(calls, &mut g));
+    }
+    (median(tf), median(tg))
+}
+
+/// ns per call of one run of `calls` calls of `f` (its own loop function).
+#[inline(never)]
+fn once(calls: usize, f: &mut impl FnMut(usize) -> f64) -> f64 {
+    let start = Instant::now();
+    let mut acc = 0.0;
+    for k in 0..calls {
+        acc += f(k % N);
+    }
+    black_box(acc);
+    start.elapsed().as_secs_f64() * 1e9 / calls as f64
+}
+
 fn row(name: &str, ns: f64, base: Option<(&str, f64)>) {
     match base {
         Some((b, t)) => println!("{name:44} {ns:10.1} ns   {:6.2}× {b}", ns / t),
@@ -90,6 +118,11 @@ fn main() {
         row("us fast GGX Λ f64", lambda, None);
         row("us fast GGX VNDF f64", vndf, None);
         mixture_vndf(&i, big, lambda, vndf);
+        return;
+    }
+    if std::env::var("MICROFACET_BENCH").as_deref() == Ok("type") {
+        // Only the Microfacet type against the fast free functions.
+        microfacet_type(&i, big);
         return;
     }
     if std::env::var("MICROFACET_BENCH").as_deref() == Ok("matrix") {
@@ -966,4 +999,124 @@ fn batches(i: &Inputs) {
         "dispatch check: the picked build ({:?}) is within 25 % of the fastest for every row",
         batch::simd()
     );
+}
+
+/// The renderer-facing [`microfacet::Microfacet`] type against the fast free functions it
+/// wraps, per NDF, f64 and f32: D(wm), Λ(w), G1(w) and the visible-normal sample (with its
+/// pdf, as `sample` returns it, and without, `sample_wm`), isotropic and anisotropic
+/// (αy = αx/2). One material per input (built before timing, as a renderer builds its
+/// materials); the free functions read the same α. Rejection samplers: the free functions'
+/// extra uniforms from an inline xorshift64*, the type's from its `UniformStream`.
+fn microfacet_type(i: &Inputs, calls: usize) {
+    use microfacet::fast::Real;
+    use microfacet::fast::{beckmann as fb, double_ggx as dg, exponential as ex, ggx as fg};
+    use microfacet::{Distribution, Microfacet};
+    println!();
+    println!("the Microfacet type against the fast free functions (ns per call; ratio type/free; aniso: αy = αx/2)");
+    println!(
+        "{:24} {:>20} {:>20} {:>20} {:>20} {:>14}",
+        "NDF, precision",
+        "D free/type",
+        "Λ free/type",
+        "G1 free/type",
+        "VNDF free/type",
+        "sample+pdf"
+    );
+    fn xorshift(seed: u64) -> impl FnMut() -> f64 {
+        let mut state = seed;
+        move || {
+            state ^= state >> 12;
+            state ^= state << 25;
+            state ^= state >> 27;
+            (state.wrapping_mul(0x2545_f491_4f6c_dd1d) >> 11) as f64 * (1.0 / (1u64 << 53) as f64)
+        }
+    }
+    macro_rules! ndf_rows {
+        ($F:ty, $N:ty, $name:expr, $free:ident, $vndf:expr) => {{
+            let w: Vec<[$F; 3]> =
+                i.w.iter()
+                    .map(|w| [w.x as $F, w.y as $F, w.z as $F])
+                    .collect();
+            let xi: Vec<[$F; 2]> = i.xi.iter().map(|x| x.map(|x| x as $F)).collect();
+            // 64 materials, the call's chosen by the input index (a renderer's few
+            // materials stay in cache); the free functions read the same α.
+            let a: Vec<$F> = (0..N).map(|k| i.alpha[k % 64] as $F).collect();
+            let iso: Vec<Microfacet<$F, $N>> = a[..64]
+                .iter()
+                .map(|&a| Microfacet::new(a, a).unwrap())
+                .collect();
+            let aniso: Vec<Microfacet<$F, $N>> = a[..64]
+                .iter()
+                .map(|&a| Microfacet::new(a, 0.5 * a).unwrap())
+                .collect();
+            let mut next = xorshift(0x9e37_79b9_7f4a_7c15);
+            let mut uniform = move || next() as $F;
+            let free_vndf = |k: usize, uniform: &mut dyn FnMut() -> $F| {
+                let f = $vndf;
+                f(w[k], a[k], black_box(xi[k]), uniform)[2].to_f64()
+            };
+            for (label, m) in [("iso", &iso), ("aniso", &aniso)] {
+                let t = [
+                    paired(
+                        calls,
+                        |k| $free::d(black_box(w[k][2]), a[k]).to_f64(),
+                        |k| m[k % 64].d(black_box(w[k])).to_f64(),
+                    ),
+                    paired(
+                        calls,
+                        |k| $free::lambda(black_box(w[k][2]), a[k]).to_f64(),
+                        |k| m[k % 64].lambda(black_box(w[k])).to_f64(),
+                    ),
+                    paired(
+                        calls,
+                        |k| $free::g1(black_box(w[k][2]), a[k]).to_f64(),
+                        |k| m[k % 64].g1(black_box(w[k])).to_f64(),
+                    ),
+                    paired(
+                        calls,
+                        |k| free_vndf(k, &mut uniform),
+                        |k| m[k % 64].sample_wm(w[k], black_box(xi[k]))[2].to_f64(),
+                    ),
+                ];
+                let pdf = time(calls, |k| {
+                    m[k % 64].sample(w[k], black_box(xi[k])).pdf.to_f64()
+                });
+                let cell = |j: usize| {
+                    let (f, t) = t[j];
+                    format!("{f:5.1}/{t:5.1} {:4.2}×", t / f)
+                };
+                println!(
+                    "{:24} {:>20} {:>20} {:>20} {:>20} {:>14}",
+                    format!("{} {} {label}", $name, stringify!($F)),
+                    cell(0),
+                    cell(1),
+                    cell(2),
+                    cell(3),
+                    format!("{pdf:5.1}")
+                );
+            }
+        }};
+    }
+    macro_rules! both {
+        ($N:ty, $name:expr, $free:ident, $vndf:ident) => {
+            ndf_rows!(f64, $N, $name, $free, $vndf::<f64>());
+            ndf_rows!(f32, $N, $name, $free, $vndf::<f32>());
+        };
+    }
+    fn warp_ggx<F: Real>() -> impl Fn([F; 3], F, [F; 2], &mut dyn FnMut() -> F) -> [F; 3] {
+        |w, a, u, _| fg::sample_visible(w, a, a, u)
+    }
+    fn warp_beckmann<F: Real>() -> impl Fn([F; 3], F, [F; 2], &mut dyn FnMut() -> F) -> [F; 3] {
+        |w, a, u, _| fb::sample_visible(w, a, a, u)
+    }
+    fn rejection_dg<F: Real>() -> impl Fn([F; 3], F, [F; 2], &mut dyn FnMut() -> F) -> [F; 3] {
+        |w, a, u, next| dg::sample_visible(w, a, a, u, &mut || next())
+    }
+    fn rejection_ex<F: Real>() -> impl Fn([F; 3], F, [F; 2], &mut dyn FnMut() -> F) -> [F; 3] {
+        |w, a, u, next| ex::sample_visible(w, a, a, u, &mut || next())
+    }
+    both!(microfacet::Ggx, "GGX", fg, warp_ggx);
+    both!(microfacet::Beckmann, "Beckmann", fb, warp_beckmann);
+    both!(microfacet::DoubleGgx, "Double GGX", dg, rejection_dg);
+    both!(microfacet::Exponential, "Exponential", ex, rejection_ex);
 }

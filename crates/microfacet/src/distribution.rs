@@ -228,28 +228,14 @@ pub trait Shape: sealed::Sealed + Sized {
     #[doc(hidden)]
     #[inline]
     fn d_aniso<F: Real>(data: &Self::Data, wm: [F; 3], ax: F, ay: F) -> F {
-        let (x, y, z) = (wm[0], wm[1], wm[2]);
-        let s2 = x * x + y * y;
-        let r2 = x * x / (ax * ax) + y * y / (ay * ay);
-        if !(r2 > F::ZERO) {
-            // At the normal (or NaN): the density there is P22₁(0)/(αx αy).
-            return Self::d_iso(data, z, ax) * (ax / ay);
-        }
-        let a2 = s2 / r2;
-        Self::d_iso(data, z, a2.sqrt()) * (a2 / (ax * ay))
+        d_projected::<Self, F>(data, wm, ax, ay)
     }
     /// Λ for the unit direction w at (αx, αy), αx ≠ αy: the isotropic Λ at the projected
     /// roughness α̃² = (αx²x² + αy²y²)/(x² + y²).
     #[doc(hidden)]
     #[inline]
     fn lambda_aniso<F: Real>(data: &Self::Data, w: [F; 3], ax: F, ay: F) -> F {
-        let (x, y) = (w[0], w[1]);
-        let s2 = x * x + y * y;
-        if !(s2 > F::ZERO) {
-            return Self::lambda_iso(data, w[2], ax);
-        }
-        let a2 = (ax * ax * x * x + ay * ay * y * y) / s2;
-        Self::lambda_iso(data, w[2], a2.sqrt())
+        lambda_projected::<Self, F>(data, w, ax, ay)
     }
     /// D(wm) of a material: the fast scalar D of u = wm.z where isotropic, else
     /// [`Shape::d_aniso`] (overridden where a direct vector form is as cheap and better
@@ -273,12 +259,63 @@ pub trait Shape: sealed::Sealed + Sized {
             Self::lambda_aniso(data, w, ax, ay)
         }
     }
+    /// G1(w) = 1/(1 + Λ(w)) of a material (overridden where a closed form is cheaper).
+    #[doc(hidden)]
+    #[inline(always)]
+    fn g1<F: Real>(data: &Self::Data, w: [F; 3], ax: F, ay: F, iso: bool) -> F {
+        F::ONE / (F::ONE + Self::lambda(data, w, ax, ay, iso))
+    }
     /// The visible-normal sampler at (αx, αy).
     #[doc(hidden)]
     fn sample_wm<F: Real>(data: &Self::Data, w: [F; 3], ax: F, ay: F, u: [F; 2]) -> [F; 3];
     /// The D·cos sampler at (αx, αy).
     #[doc(hidden)]
     fn sample_dcos<F: Real>(data: &Self::Data, ax: F, ay: F, u: [F; 2]) -> [F; 3];
+}
+
+/// D for the unit normal wm at (αx, αy), αx ≠ αy, by the projected roughness: the
+/// isotropic D at α̃² = (x² + y²)/(x²/αx² + y²/αy²), times α̃²/(αx αy). (Every
+/// shape-invariant D is P22₁(slope/α)/(α² cos⁴θ), and the anisotropic one reads P22₁ at the
+/// stretched slope, whose length is the isotropic one's at α̃.)
+#[inline]
+fn d_projected<S: Shape, F: Real>(data: &S::Data, wm: [F; 3], ax: F, ay: F) -> F {
+    let (x, y, z) = (wm[0], wm[1], wm[2]);
+    let s2 = x * x + y * y;
+    let r2 = x * x / (ax * ax) + y * y / (ay * ay);
+    if !(r2 > F::ZERO) {
+        // At the normal (or NaN): the density there is P22₁(0)/(αx αy).
+        return S::d_iso(data, z, ax) * (ax / ay);
+    }
+    let a2 = s2 / r2;
+    S::d_iso(data, z, a2.sqrt()) * (a2 / (ax * ay))
+}
+
+/// Λ for the unit direction w at (αx, αy), αx ≠ αy, by the projected roughness: the
+/// isotropic Λ at α̃² = (αx²x² + αy²y²)/(x² + y²).
+#[inline]
+fn lambda_projected<S: Shape, F: Real>(data: &S::Data, w: [F; 3], ax: F, ay: F) -> F {
+    let (x, y) = (w[0], w[1]);
+    let s2 = x * x + y * y;
+    if !(s2 > F::ZERO) {
+        return S::lambda_iso(data, w[2], ax);
+    }
+    let a2 = (ax * ax * x * x + ay * ay * y * y) / s2;
+    S::lambda_iso(data, w[2], a2.sqrt())
+}
+
+/// The projected route out of line: the anisotropic fitted paths' ends (outside their
+/// tables: near the normal, grazing, below the horizon, NaN).
+#[cold]
+#[inline(never)]
+fn d_projected_cold<S: Shape, F: Real>(data: &S::Data, wm: [F; 3], ax: F, ay: F) -> F {
+    d_projected::<S, F>(data, wm, ax, ay)
+}
+
+/// See [`d_projected_cold`].
+#[cold]
+#[inline(never)]
+fn lambda_projected_cold<S: Shape, F: Real>(data: &S::Data, w: [F; 3], ax: F, ay: F) -> F {
+    lambda_projected::<S, F>(data, w, ax, ay)
 }
 
 impl Shape for Ggx {
@@ -311,6 +348,10 @@ impl Shape for Ggx {
         ggx_lambda_aniso(w, ax, ay)
     }
     #[inline(always)]
+    fn g1<F: Real>(_: &(), w: [F; 3], ax: F, ay: F, _iso: bool) -> F {
+        ggx_g1(w, ax, ay)
+    }
+    #[inline(always)]
     fn sample_wm<F: Real>(_: &(), w: [F; 3], ax: F, ay: F, u: [F; 2]) -> [F; 3] {
         fast::ggx::sample_visible(w, ax, ay, u)
     }
@@ -324,12 +365,26 @@ impl Shape for Ggx {
 /// without its tan²θ: no division by cos⁴θ); 0 below the horizon.
 #[inline(always)]
 fn ggx_d_aniso<F: Real>(wm: [F; 3], ax: F, ay: F) -> F {
-    let (x, y, z) = (wm[0] / ax, wm[1] / ay, wm[2]);
+    let z = wm[2];
     if !(z > F::ZERO) {
         return if z.to_f64().is_nan() { z } else { F::ZERO };
     }
+    let (x, y) = (wm[0] / ax, wm[1] / ay);
     let t = x * x + y * y + z * z;
     F::ONE / (F::PI * ax * ay * t * t)
+}
+
+/// GGX's G1 = 1/(1 + Λ) = 2|z|/(|z| + √(z² + t)), t = αx²x² + αy²y²: one division (0 at
+/// z = 0; no overflow, as |z| + √(z² + t) ≥ |z|).
+#[inline(always)]
+fn ggx_g1<F: Real>(w: [F; 3], ax: F, ay: F) -> F {
+    let (x, y, z) = (ax * w[0], ay * w[1], w[2].abs());
+    let den = z + (z * z + (x * x + y * y)).sqrt();
+    if !(den > F::ZERO) {
+        // w = 0 (or its components underflow once scaled): as Λ, G1 = 0; NaN stays NaN.
+        return if den.to_f64().is_nan() { den } else { F::ZERO };
+    }
+    (z + z) / den
 }
 
 /// GGX's anisotropic Λ = s/(2(1 + √(1 + s))), s = (αx²x² + αy²y²)/z², multiplied through by
@@ -375,6 +430,27 @@ impl Shape for Beckmann {
     fn lambda_iso<F: Real>(_: &(), u: F, alpha: F) -> F {
         fast::beckmann::lambda(u, alpha)
     }
+    /// D = e^{−y}/(π αx αy z⁴), y = ((x/αx)² + (y/αy)²)/z², from the normal directly; the
+    /// ends (below the horizon, f32 past y = 80 where the scalar path widens, underflow) by
+    /// the projected route, out of line.
+    #[inline(always)]
+    fn d_aniso<F: Real>(data: &(), wm: [F; 3], ax: F, ay: F) -> F {
+        let z = wm[2];
+        let r = F::ONE / (ax * ay);
+        let (x, y) = (wm[0] * ay * r, wm[1] * ax * r);
+        let z2 = z * z;
+        let e = (x * x + y * y) / z2;
+        // (False for NaN, z ≤ 0 and z² = 0; see fast::beckmann::d for the f32 bound.)
+        let limit = if F::IS_F32 {
+            F::from_f64(80.0)
+        } else {
+            F::EXP_ZERO
+        };
+        if !(z > F::ZERO && e <= limit && z2 > F::ZERO) {
+            return d_projected_cold::<Self, F>(data, wm, ax, ay);
+        }
+        (-e).exp() * r / (F::PI * z2 * z2)
+    }
     /// Isotropic or not, Λ at cot θ̃ = |z|/√(αx²x² + αy²y²) (as [`Ggx`]'s vector forms).
     #[inline(always)]
     fn lambda<F: Real>(data: &(), w: [F; 3], ax: F, ay: F, _iso: bool) -> F {
@@ -413,6 +489,36 @@ impl Shape for DoubleGgx {
     fn lambda_iso<F: Real>(_: &(), u: F, alpha: F) -> F {
         fast::double_ggx::lambda(u, alpha)
     }
+    /// D = G(1/y)/(π αx αy z⁴), y = ((x/αx)² + (y/αy)²)/z², from the normal and the kernel's
+    /// table; the ends by the projected route, out of line. Evaluated in f64 (as the scalar D).
+    #[inline(always)]
+    fn d_aniso<F: Real>(data: &(), wm: [F; 3], ax: F, ay: F) -> F {
+        let (a, b) = (ax.to_f64(), ay.to_f64());
+        let z = wm[2].to_f64();
+        let r = 1.0 / (a * b);
+        let (x, y) = (wm[0].to_f64() * b * r, wm[1].to_f64() * a * r);
+        let z2 = z * z;
+        let g = if z > 0.0 {
+            fast::double_ggx::d_kernel_in_table((x * x + y * y) / z2)
+        } else {
+            None
+        };
+        match g {
+            Some(g) => F::from_f64(g * r / (std::f64::consts::PI * z2 * z2)),
+            None => d_projected_cold::<Self, F>(data, wm, ax, ay),
+        }
+    }
+    /// Λ at x = (αx²x² + αy²y²)/(2z²) from the direction and the table; the ends by the
+    /// projected route, out of line.
+    #[inline(always)]
+    fn lambda_aniso<F: Real>(data: &(), w: [F; 3], ax: F, ay: F) -> F {
+        let (x, y, z) = (ax * w[0], ay * w[1], w[2]);
+        let q = (x * x + y * y) / (z * z);
+        match fast::double_ggx::lambda_in_table(F::from_f64(0.5) * q) {
+            Some(v) => v,
+            None => lambda_projected_cold::<Self, F>(data, w, ax, ay),
+        }
+    }
     #[inline(always)]
     fn sample_wm<F: Real>(_: &(), w: [F; 3], ax: F, ay: F, u: [F; 2]) -> [F; 3] {
         let mut s = UniformStream::new(u);
@@ -435,6 +541,37 @@ impl Shape for Exponential {
     #[inline(always)]
     fn lambda_iso<F: Real>(_: &(), u: F, alpha: F) -> F {
         fast::exponential::lambda(u, alpha)
+    }
+    /// D = 2 e^{−2√y}/(π αx αy z⁴), y = ((x/αx)² + (y/αy)²)/z², from the normal; the ends by
+    /// the projected route, out of line. Evaluated in f64 (as the scalar D).
+    #[inline(always)]
+    fn d_aniso<F: Real>(data: &(), wm: [F; 3], ax: F, ay: F) -> F {
+        let (a, b) = (ax.to_f64(), ay.to_f64());
+        let z = wm[2].to_f64();
+        let r = 1.0 / (a * b);
+        let (x, y) = (wm[0].to_f64() * b * r, wm[1].to_f64() * a * r);
+        let z2 = z * z;
+        let e = 2.0 * (x * x + y * y).sqrt() / z;
+        // (The scalar D's bound: e^{−e} is 0 past 745; false for NaN and z ≤ 0.)
+        if !(z > 0.0 && e <= 745.2 && z2 > 0.0) {
+            return d_projected_cold::<Self, F>(data, wm, ax, ay);
+        }
+        F::from_f64(2.0 * (-e).exp() * r / (std::f64::consts::PI * z2 * z2))
+    }
+    /// Λ at q = 4z²/(αx²x² + αy²y²) from the direction and the tables; the ends by the
+    /// projected route, out of line. q in f64 (as the scalar path: see fast::exponential).
+    #[inline(always)]
+    fn lambda_aniso<F: Real>(data: &(), w: [F; 3], ax: F, ay: F) -> F {
+        let (x, y, z) = (
+            ax.to_f64() * w[0].to_f64(),
+            ay.to_f64() * w[1].to_f64(),
+            w[2].to_f64(),
+        );
+        let q = 4.0 * (z * z) / (x * x + y * y);
+        match fast::exponential::lambda_in_table::<F>(q) {
+            Some(v) => v,
+            None => lambda_projected_cold::<Self, F>(data, w, ax, ay),
+        }
     }
     #[inline(always)]
     fn sample_wm<F: Real>(_: &(), w: [F; 3], ax: F, ay: F, u: [F; 2]) -> [F; 3] {
@@ -695,6 +832,11 @@ impl<F: Real, N: Shape> Distribution<F> for Microfacet<F, N> {
     #[inline(always)]
     fn lambda(&self, w: [F; 3]) -> F {
         N::lambda(&self.data, w, self.ax, self.ay, self.iso)
+    }
+
+    #[inline(always)]
+    fn g1(&self, w: [F; 3]) -> F {
+        N::g1(&self.data, w, self.ax, self.ay, self.iso)
     }
 
     #[inline(always)]

@@ -62,6 +62,31 @@ pub fn d<F: Real>(u: F, alpha: F) -> F {
     F::from_f64(d_ends(u, a))
 }
 
+/// The slope kernel G(1/y) of [`d`] where its table covers y = tan²θ/α² (`None` elsewhere):
+/// for anisotropic materials, which form y from the normal directly (y = ((x/αx)² +
+/// (y/αy)²)/z²) and divide by π αx αy z⁴.
+#[inline(always)]
+pub(crate) fn d_kernel_in_table(y: f64) -> Option<f64> {
+    (y >= fit::pow2(DGGX_D_K0) && y < fit::pow2(DGGX_D_K1))
+        .then(|| fit::eval(&DGGX_D, DGGX_D_K0, DGGX_D_M, y))
+}
+
+/// Λ from its argument x = α² tan²θ/2 where the table of the precision covers it (`None`
+/// elsewhere): for anisotropic materials, which form x = (αx²x² + αy²y²)/(2z²) from the
+/// direction (no projected α). Same tables, so the same accuracy, as [`lambda`].
+#[inline(always)]
+pub(crate) fn lambda_in_table<F: Real>(x: F) -> Option<F> {
+    if F::IS_F32 {
+        let x = x.to_f32();
+        let (lo, hi) = (fit::pow2(DGGX32_K0) as f32, fit::pow2(DGGX32_K1) as f32);
+        return (x >= lo && x < hi)
+            .then(|| F::from_f32(fit::eval32(&DGGX32, DGGX32_K0, DGGX32_M, x)));
+    }
+    let x = x.to_f64();
+    (x >= fit::pow2(DGGX_K0) && x < fit::pow2(DGGX_K1))
+        .then(|| F::from_f64(fit::eval(&DGGX, DGGX_K0, DGGX_M, x)))
+}
+
 /// D where the table does not reach (out of line): the exact path.
 #[cold]
 #[inline(never)]

@@ -55,6 +55,33 @@ fn lambda_q(q: f64) -> Option<f64> {
     None
 }
 
+/// Λ from q = z² = 4 cot²θ/α² where the tables of the precision cover it (`None`
+/// elsewhere): for anisotropic materials, which form q = 4z²/(αx²x² + αy²y²) from the
+/// direction (no projected α). Same tables, so the same accuracy, as [`lambda`].
+#[inline(always)]
+pub(crate) fn lambda_in_table<F: Real>(q: f64) -> Option<F> {
+    if F::IS_F32 {
+        if q < Q_B && q >= fit::pow2(EXPONENTIAL32_QA_K0) {
+            return Some(F::from_f32(fit::eval_narrow(
+                &EXPONENTIAL32_QA,
+                EXPONENTIAL32_QA_K0,
+                EXPONENTIAL32_QA_M,
+                q,
+            )));
+        }
+        if (Q_B..Q_END).contains(&q) {
+            return Some(F::from_f32(fit::eval_narrow(
+                &EXPONENTIAL32_QB,
+                EXPONENTIAL32_QB_K0,
+                EXPONENTIAL32_QB_M,
+                q,
+            )));
+        }
+        return None;
+    }
+    lambda_q(q).map(F::from_f64)
+}
+
 /// [`lambda_q`] without a branch (the range picks the row and s by selects), for the slice
 /// kernels: (Λ, whether q is inside the tables).
 #[inline(always)]
