@@ -3,10 +3,12 @@
 //! 4096 of them cycled, so no call sees a repeated value. Each figure is the median of 15 runs.
 //! Results and their discussion: BENCHMARKS.md.
 
+use microfacet::distribution::Shape;
+use microfacet::fast::Real;
 use microfacet::sample::sample_dcos;
 use microfacet::{
-    AnyNdf, Beckmann, DoubleGgx, Exponential, Ggx, Gtr, Isotropic, Microsurface, Ndf, Stretched,
-    UnitSlopes, Vec3,
+    AnyNdf, Beckmann, Distribution, DoubleGgx, Exact, Exponential, Ggx, Gtr, Microfacet, Ndf,
+    NdfKind, Vec3,
 };
 use microfacet_bench as c;
 use std::hint::black_box;
@@ -97,6 +99,54 @@ fn once(calls: usize, f: &mut impl FnMut(usize) -> f64) -> f64 {
     start.elapsed().as_secs_f64() * 1e9 / calls as f64
 }
 
+/// A visible normal from the renderer-facing type (whose implementation the fast samplers
+/// are), the material built in the call (its validation, about a nanosecond, is in the
+/// figure).
+#[inline(always)]
+fn type_vndf<N: Shape<Data = ()>, F: Real>(w: [F; 3], a: F, xi: [F; 2]) -> [F; 3] {
+    Microfacet::<F, N>::new(a, a).unwrap().sample_wm(w, xi)
+}
+
+/// A D·cos normal from the renderer-facing type (as [`type_vndf`]).
+#[inline(always)]
+fn type_dcos<N: Shape<Data = ()>, F: Real>(a: F, xi: [F; 2]) -> [F; 3] {
+    Microfacet::<F, N>::new(a, a).unwrap().sample_dcos(xi).wm
+}
+
+/// Prepared GTR materials in both precisions (the fitted tables are built once per material).
+struct GtrMaterials {
+    m64: Vec<Microfacet<f64, Gtr>>,
+    m32: Vec<Microfacet<f32, Gtr>>,
+}
+
+impl GtrMaterials {
+    fn new(alpha: impl Fn(usize) -> f64, gamma: impl Fn(usize) -> f64) -> Self {
+        GtrMaterials {
+            m64: (0..64)
+                .map(|k| Microfacet::gtr(alpha(k), alpha(k), gamma(k)).unwrap())
+                .collect(),
+            m32: (0..64)
+                .map(|k| Microfacet::gtr(alpha(k) as f32, alpha(k) as f32, gamma(k)).unwrap())
+                .collect(),
+        }
+    }
+}
+
+/// The material of input k in the precision of F.
+trait PickGtr<F: Real> {
+    fn pick(&self, k: usize) -> &Microfacet<F, Gtr>;
+}
+impl PickGtr<f64> for GtrMaterials {
+    fn pick(&self, k: usize) -> &Microfacet<f64, Gtr> {
+        &self.m64[k % 64]
+    }
+}
+impl PickGtr<f32> for GtrMaterials {
+    fn pick(&self, k: usize) -> &Microfacet<f32, Gtr> {
+        &self.m32[k % 64]
+    }
+}
+
 fn row(name: &str, ns: f64, base: Option<(&str, f64)>) {
     match base {
         Some((b, t)) => println!("{name:44} {ns:10.1} ns   {:6.2}× {b}", ns / t),
@@ -113,7 +163,7 @@ fn main() {
         let lambda = time(big, |k| fg::lambda(black_box(i.u[k]), i.alpha[k]));
         let vndf = time(big, |k| {
             let w = i.w[k];
-            fg::sample_visible([w.x, w.y, w.z], i.alpha[k], i.alpha[k], black_box(i.xi[k]))[2]
+            type_vndf::<Ggx, f64>([w.x, w.y, w.z], i.alpha[k], black_box(i.xi[k]))[2]
         });
         row("us fast GGX Λ f64", lambda, None);
         row("us fast GGX VNDF f64", vndf, None);
@@ -199,10 +249,9 @@ fn main() {
     });
     let vndf = time(big, |k| {
         let a = i.alpha[k];
-        Stretched::new(UnitSlopes::Ggx, a, a)
+        Exact::new(NdfKind::Ggx, a, a, None)
             .unwrap()
-            .sample_visible(i.w[k], black_box(i.xi[k]))
-            .z
+            .sample_wm(i.w[k].into(), black_box(i.xi[k]))[2]
     });
     row("C  GGX VNDF (Heitz 2018)", c_vndf, None);
     row(
@@ -247,7 +296,7 @@ fn main() {
     row("us fast GGX G1 f64", fast_g1, Some(("C f64", c_ggx_g1)));
     let fast_vndf = time(big, |k| {
         let w = i.w[k];
-        fg::sample_visible([w.x, w.y, w.z], i.alpha[k], i.alpha[k], black_box(i.xi[k]))[2]
+        type_vndf::<Ggx, f64>([w.x, w.y, w.z], i.alpha[k], black_box(i.xi[k]))[2]
     });
     row("us fast GGX VNDF f64", fast_vndf, Some(("C f64", c_vndf)));
     let c_b_vndf = time(big, |k| {
@@ -256,14 +305,13 @@ fn main() {
     });
     let fast_b_vndf = time(big, |k| {
         let w = i.w[k];
-        fb::sample_visible([w.x, w.y, w.z], i.alpha[k], i.alpha[k], black_box(i.xi[k]))[2]
+        type_vndf::<Beckmann, f64>([w.x, w.y, w.z], i.alpha[k], black_box(i.xi[k]))[2]
     });
     let fast_b_vndf32 = time(big, |k| {
         let w = i.w[k];
         let xi = black_box(i.xi[k]);
-        fb::sample_visible(
+        type_vndf::<Beckmann, f32>(
             [w.x as f32, w.y as f32, w.z as f32],
-            a32s[k],
             a32s[k],
             [xi[0] as f32, xi[1] as f32],
         )[2] as f64
@@ -293,7 +341,7 @@ fn main() {
             continue;
         }
         let m = c::beckmann_vndf([w.x, w.y, w.z], a, a, xi);
-        let n = fb::sample_visible([w.x, w.y, w.z], a, a, [1.0 - xi[0], 1.0 - xi[1]]);
+        let n = type_vndf::<Beckmann, f64>([w.x, w.y, w.z], a, [1.0 - xi[0], 1.0 - xi[1]]);
         let dot = m[0] * n[0] + m[1] * n[1] + m[2] * n[2];
         worst = worst.max(dot.min(1.0).acos());
     }
@@ -378,21 +426,10 @@ fn main() {
             &format!("us {name} VNDF sample"),
             time(vcalls, |k| {
                 let n = ndf(k);
-                match n {
-                    AnyNdf::Gtr(_) => Isotropic(n).sample_visible(i.w[k], black_box(i.xi[k])).z,
-                    _ => {
-                        let kind = match make {
-                            0 => UnitSlopes::Beckmann,
-                            1 => UnitSlopes::DoubleGgx,
-                            _ => UnitSlopes::Exponential,
-                        };
-                        let a = i.alpha[k];
-                        Stretched::new(kind, a, a)
-                            .unwrap()
-                            .sample_visible(i.w[k], black_box(i.xi[k]))
-                            .z
-                    }
-                }
+                let a = n.alpha();
+                Exact::new(n.kind(), a, a, n.gamma())
+                    .unwrap()
+                    .sample_wm(i.w[k].into(), black_box(i.xi[k]))[2]
             }),
             base,
         );
@@ -403,7 +440,7 @@ fn main() {
 /// in the same precision (and our exact GGX Λ). GTR: 64 prepared materials with random
 /// (α, γ), the call's material chosen by the input index.
 fn fitted_fast_paths(i: &Inputs, calls: usize, ggx64: f64, ggx32: f64, exact_ggx: f64) {
-    use microfacet::fast::{double_ggx as dg, exponential as ex, gtr::Gtr as FastGtr};
+    use microfacet::fast::{double_ggx as dg, exponential as ex, gtr::FittedGtr as FastGtr};
     println!();
     println!("fitted fast paths (per call; ratio to our fast GGX Λ of the same precision, and to our exact GGX Λ)");
     let (u32s, a32s): (Vec<f32>, Vec<f32>) = (
@@ -518,11 +555,12 @@ fn fitted_fast_paths(i: &Inputs, calls: usize, ggx64: f64, ggx32: f64, exact_ggx
 
 /// Every quantity of every fast path in f64 and f32, one row per NDF: D, Λ, G1, G2
 /// (height-correlated, u_i from the next input), σ(−u), D·cos sampling and VNDF sampling. The
-/// samplers of the superpositions draw their extra uniforms from an inline xorshift64*, whose
-/// cost is included; GTR uses 64 prepared materials, chosen by the input index (and a row
-/// of 64 at γ = 1, Burley's clearcoat).
+/// samplers are [`Microfacet`]'s (built in the call for the four NDFs without a per-material
+/// table); the superpositions draw their extra uniforms from its `UniformStream`, whose cost
+/// is included; GTR uses 64 prepared materials, chosen by the input index (and a row of 64
+/// at γ = 1, Burley's clearcoat).
 fn matrix(i: &Inputs, calls: usize) {
-    use microfacet::fast::gtr::Gtr as FastGtr;
+    use microfacet::fast::gtr::FittedGtr as FastGtr;
     use microfacet::fast::Real;
     use microfacet::fast::{beckmann as fb, double_ggx as dg, exponential as ex, ggx as fg};
     let xorshift = |seed: u64| {
@@ -551,6 +589,8 @@ fn matrix(i: &Inputs, calls: usize) {
         .map(|k| FastGtr::new(i.alpha[k], 1.0).unwrap())
         .collect();
     let m1 = |k: usize| &clearcoat[k % 64];
+    let gtr = GtrMaterials::new(|k| i.alpha[k], |k| i.gamma[k]);
+    let gtr1 = GtrMaterials::new(|k| i.alpha[k], |_| 1.0);
     // One cell: the expression timed over the f64 inputs, then over their f32 roundings.
     macro_rules! cell {
         (|$k:ident, $u:ident, $u2:ident, $a:ident, $w:ident, $xi:ident, $next:ident| $e:expr) => {{
@@ -571,15 +611,15 @@ fn matrix(i: &Inputs, calls: usize) {
     }
     // A row for prepared GTR materials, picked by `$m(k)`.
     macro_rules! gtr_cells {
-        ($m:ident) => {
+        ($m:ident, $mm:ident) => {
             [
                 cell!(|k, u, u2, a, w, xi, next| $m(k).d(u)),
                 cell!(|k, u, u2, a, w, xi, next| $m(k).lambda(u)),
                 cell!(|k, u, u2, a, w, xi, next| $m(k).g1(u)),
                 cell!(|k, u, u2, a, w, xi, next| $m(k).g2(u, u2)),
                 cell!(|k, u, u2, a, w, xi, next| $m(k).sigma(-u)),
-                cell!(|k, u, u2, a, w, xi, next| $m(k).sample_dcos(xi)[2]),
-                cell!(|k, u, u2, a, w, xi, next| $m(k).sample_visible(w, xi, next)[2]),
+                cell!(|k, u, u2, a, w, xi, next| PickGtr::pick(&$mm, k).sample_dcos(xi).wm[2]),
+                cell!(|k, u, u2, a, w, xi, next| PickGtr::pick(&$mm, k).sample_wm(w, xi)[2]),
             ]
         };
     }
@@ -598,8 +638,8 @@ fn matrix(i: &Inputs, calls: usize) {
                 cell!(|k, u, u2, a, w, xi, next| fg::g1(u, a)),
                 cell!(|k, u, u2, a, w, xi, next| fg::g2(u, u2, a)),
                 cell!(|k, u, u2, a, w, xi, next| fg::sigma(-u, a)),
-                cell!(|k, u, u2, a, w, xi, next| fg::sample_dcos(a, a, xi)[2]),
-                cell!(|k, u, u2, a, w, xi, next| fg::sample_visible(w, a, a, xi)[2]),
+                cell!(|k, u, u2, a, w, xi, next| type_dcos::<Ggx, _>(a, xi)[2]),
+                cell!(|k, u, u2, a, w, xi, next| type_vndf::<Ggx, _>(w, a, xi)[2]),
             ],
         ),
         (
@@ -610,8 +650,8 @@ fn matrix(i: &Inputs, calls: usize) {
                 cell!(|k, u, u2, a, w, xi, next| fb::g1(u, a)),
                 cell!(|k, u, u2, a, w, xi, next| fb::g2(u, u2, a)),
                 cell!(|k, u, u2, a, w, xi, next| fb::sigma(-u, a)),
-                cell!(|k, u, u2, a, w, xi, next| fb::sample_dcos(a, a, xi)[2]),
-                cell!(|k, u, u2, a, w, xi, next| fb::sample_visible(w, a, a, xi)[2]),
+                cell!(|k, u, u2, a, w, xi, next| type_dcos::<Beckmann, _>(a, xi)[2]),
+                cell!(|k, u, u2, a, w, xi, next| type_vndf::<Beckmann, _>(w, a, xi)[2]),
             ],
         ),
         (
@@ -622,8 +662,8 @@ fn matrix(i: &Inputs, calls: usize) {
                 cell!(|k, u, u2, a, w, xi, next| dg::g1(u, a)),
                 cell!(|k, u, u2, a, w, xi, next| dg::g2(u, u2, a)),
                 cell!(|k, u, u2, a, w, xi, next| dg::sigma(-u, a)),
-                cell!(|k, u, u2, a, w, xi, next| dg::sample_dcos(a, a, xi, next)[2]),
-                cell!(|k, u, u2, a, w, xi, next| dg::sample_visible(w, a, a, xi, next)[2]),
+                cell!(|k, u, u2, a, w, xi, next| type_dcos::<DoubleGgx, _>(a, xi)[2]),
+                cell!(|k, u, u2, a, w, xi, next| type_vndf::<DoubleGgx, _>(w, a, xi)[2]),
             ],
         ),
         (
@@ -634,23 +674,22 @@ fn matrix(i: &Inputs, calls: usize) {
                 cell!(|k, u, u2, a, w, xi, next| ex::g1(u, a)),
                 cell!(|k, u, u2, a, w, xi, next| ex::g2(u, u2, a)),
                 cell!(|k, u, u2, a, w, xi, next| ex::sigma(-u, a)),
-                cell!(|k, u, u2, a, w, xi, next| ex::sample_dcos(a, a, xi, next)[2]),
-                cell!(|k, u, u2, a, w, xi, next| ex::sample_visible(w, a, a, xi, next)[2]),
+                cell!(|k, u, u2, a, w, xi, next| type_dcos::<Exponential, _>(a, xi)[2]),
+                cell!(|k, u, u2, a, w, xi, next| type_vndf::<Exponential, _>(w, a, xi)[2]),
             ],
         ),
-        ("GTR (64 materials)", gtr_cells!(m)),
-        ("GTR γ = 1 (64 α)", gtr_cells!(m1)),
+        ("GTR (64 materials)", gtr_cells!(m, gtr)),
+        ("GTR γ = 1 (64 α)", gtr_cells!(m1, gtr1)),
     ];
     for (name, cells) in rows {
         println!("{name:22} {}", cells.join(" "));
     }
 }
 
-/// The fast visible-normal samplers of the superpositions (rejection; their extra uniforms
-/// come from an inline xorshift64*, whose cost is in the figures), against our fast GGX Λ
-/// and our fast GGX VNDF (f64).
+/// The fast visible-normal samplers of the superpositions through [`Microfacet`] (rejection;
+/// their extra uniforms come from its `UniformStream`, whose cost is in the figures), against
+/// our fast GGX Λ and our fast GGX VNDF (f64).
 fn mixture_vndf(i: &Inputs, calls: usize, ggx_lambda: f64, ggx_vndf: f64) {
-    use microfacet::fast::{double_ggx as dg, exponential as ex, ggx as fg};
     println!();
     println!("fast VNDF sampling (per sample, extra uniforms included; ratio to our fast GGX Λ f64 and to our fast GGX VNDF of the same precision)");
     let mut state = 0x9e37_79b9_7f4a_7c15u64;
@@ -670,10 +709,7 @@ fn mixture_vndf(i: &Inputs, calls: usize, ggx_lambda: f64, ggx_vndf: f64) {
         (state32.wrapping_mul(0x2545_f491_4f6c_dd1d) >> 40) as f32 * (1.0 / (1u32 << 24) as f32)
     };
     let a32s: Vec<f32> = i.alpha.iter().map(|&x| x as f32).collect();
-    let materials: Vec<microfacet::fast::gtr::Gtr> = (0..64)
-        .map(|k| microfacet::fast::gtr::Gtr::new(i.alpha[k], i.gamma[k]).unwrap())
-        .collect();
-    let m = |k: usize| &materials[k % 64];
+    let gtr = GtrMaterials::new(|k| i.alpha[k], |k| i.gamma[k]);
     let w = |k: usize| [i.w[k].x, i.w[k].y, i.w[k].z];
     // f32 inputs converted once, as a renderer working in f32 would hold them (and as the
     // f32 GGX sampler below reads them).
@@ -682,7 +718,7 @@ fn mixture_vndf(i: &Inputs, calls: usize, ggx_lambda: f64, ggx_vndf: f64) {
     let w32 = |k: usize| w32s[k];
     let xi32 = |k: usize| xi32s[k];
     let ggx_vndf32 = time(calls, |k| {
-        fg::sample_visible(w32(k), a32s[k], a32s[k], black_box(xi32(k)))[2] as f64
+        type_vndf::<Ggx, f32>(w32(k), a32s[k], black_box(xi32(k)))[2] as f64
     });
     println!(
         "{:44} {ggx_vndf32:10.1} ns",
@@ -702,40 +738,37 @@ fn mixture_vndf(i: &Inputs, calls: usize, ggx_lambda: f64, ggx_vndf: f64) {
         (
             "Double GGX VNDF f64",
             time(calls, |k| {
-                dg::sample_visible(w(k), i.alpha[k], i.alpha[k], black_box(i.xi[k]), &mut next)[2]
+                type_vndf::<DoubleGgx, f64>(w(k), i.alpha[k], black_box(i.xi[k]))[2]
             }),
         ),
         (
             "Double GGX VNDF f32",
             time(calls, |k| {
-                let n32 = &mut next32;
-                dg::sample_visible(w32(k), a32s[k], a32s[k], black_box(xi32(k)), n32)[2] as f64
+                type_vndf::<DoubleGgx, f32>(w32(k), a32s[k], black_box(xi32(k)))[2] as f64
             }),
         ),
         (
             "Exponential VNDF f64",
             time(calls, |k| {
-                ex::sample_visible(w(k), i.alpha[k], i.alpha[k], black_box(i.xi[k]), &mut next)[2]
+                type_vndf::<Exponential, f64>(w(k), i.alpha[k], black_box(i.xi[k]))[2]
             }),
         ),
         (
             "Exponential VNDF f32",
             time(calls, |k| {
-                let n32 = &mut next32;
-                ex::sample_visible(w32(k), a32s[k], a32s[k], black_box(xi32(k)), n32)[2] as f64
+                type_vndf::<Exponential, f32>(w32(k), a32s[k], black_box(xi32(k)))[2] as f64
             }),
         ),
         (
             "GTR VNDF (64 materials) f64",
             time(calls, |k| {
-                m(k).sample_visible(w(k), black_box(i.xi[k]), &mut next)[2]
+                PickGtr::<f64>::pick(&gtr, k).sample_wm(w(k), black_box(i.xi[k]))[2]
             }),
         ),
         (
             "GTR VNDF (64 materials) f32",
             time(calls, |k| {
-                let n32 = &mut next32;
-                m(k).sample_visible(w32(k), black_box(xi32(k)), n32)[2] as f64
+                PickGtr::<f32>::pick(&gtr, k).sample_wm(w32(k), black_box(xi32(k)))[2] as f64
             }),
         ),
     ];
@@ -789,7 +822,7 @@ fn median(mut r: Vec<f64>) -> f64 {
 /// 10⁶-element slices: the scalar fast path in a plain loop, the slice function, and the
 /// slice function on every core (rayon), per element.
 fn batches(i: &Inputs) {
-    use microfacet::fast::{batch, double_ggx as dg, exponential as ex, gtr::Gtr as FastGtr};
+    use microfacet::fast::{batch, double_ggx as dg, exponential as ex, gtr::FittedGtr as FastGtr};
     use microfacet::fast::{beckmann as fb, ggx as fg};
     const LEN: usize = 1_000_000;
     const ROUNDS: usize = 21;
@@ -1004,17 +1037,15 @@ fn batches(i: &Inputs) {
 /// The renderer-facing [`microfacet::Microfacet`] type against the fast free functions it
 /// wraps, per NDF, f64 and f32: D(wm), Λ(w), G1(w) and the visible-normal sample (with its
 /// pdf, as `sample` returns it, and without, `sample_wm`), isotropic and anisotropic
-/// (αy = αx/2). One material per input (built before timing, as a renderer builds its
-/// materials); the free functions read the same α. Rejection samplers: the free functions'
-/// extra uniforms from an inline xorshift64*, the type's from its `UniformStream`.
+/// (αy = αx/2). 64 materials (built before timing, as a renderer builds its materials); the
+/// free functions read the same α. The samplers are the type's only (the free samplers are
+/// its implementation and no longer public; BENCHMARKS.md has the last side-by-side run).
 fn microfacet_type(i: &Inputs, calls: usize) {
-    use microfacet::fast::Real;
     use microfacet::fast::{beckmann as fb, double_ggx as dg, exponential as ex, ggx as fg};
-    use microfacet::{Distribution, Microfacet};
     println!();
     println!("the Microfacet type against the fast free functions (ns per call; ratio type/free; aniso: αy = αx/2)");
     println!(
-        "{:24} {:>20} {:>20} {:>20} {:>20} {:>14}",
+        "{:24} {:>20} {:>20} {:>20} {:>14} {:>14}",
         "NDF, precision",
         "D free/type",
         "Λ free/type",
@@ -1022,17 +1053,8 @@ fn microfacet_type(i: &Inputs, calls: usize) {
         "VNDF free/type",
         "sample+pdf"
     );
-    fn xorshift(seed: u64) -> impl FnMut() -> f64 {
-        let mut state = seed;
-        move || {
-            state ^= state >> 12;
-            state ^= state << 25;
-            state ^= state >> 27;
-            (state.wrapping_mul(0x2545_f491_4f6c_dd1d) >> 11) as f64 * (1.0 / (1u64 << 53) as f64)
-        }
-    }
     macro_rules! ndf_rows {
-        ($F:ty, $N:ty, $name:expr, $free:ident, $vndf:expr) => {{
+        ($F:ty, $N:ty, $name:expr, $free:ident) => {{
             let w: Vec<[$F; 3]> =
                 i.w.iter()
                     .map(|w| [w.x as $F, w.y as $F, w.z as $F])
@@ -1049,12 +1071,6 @@ fn microfacet_type(i: &Inputs, calls: usize) {
                 .iter()
                 .map(|&a| Microfacet::new(a, 0.5 * a).unwrap())
                 .collect();
-            let mut next = xorshift(0x9e37_79b9_7f4a_7c15);
-            let mut uniform = move || next() as $F;
-            let free_vndf = |k: usize, uniform: &mut dyn FnMut() -> $F| {
-                let f = $vndf;
-                f(w[k], a[k], black_box(xi[k]), uniform)[2].to_f64()
-            };
             for (label, m) in [("iso", &iso), ("aniso", &aniso)] {
                 let t = [
                     paired(
@@ -1072,12 +1088,10 @@ fn microfacet_type(i: &Inputs, calls: usize) {
                         |k| $free::g1(black_box(w[k][2]), a[k]).to_f64(),
                         |k| m[k % 64].g1(black_box(w[k])).to_f64(),
                     ),
-                    paired(
-                        calls,
-                        |k| free_vndf(k, &mut uniform),
-                        |k| m[k % 64].sample_wm(w[k], black_box(xi[k]))[2].to_f64(),
-                    ),
                 ];
+                let vndf = time(calls, |k| {
+                    m[k % 64].sample_wm(w[k], black_box(xi[k]))[2].to_f64()
+                });
                 let pdf = time(calls, |k| {
                     m[k % 64].sample(w[k], black_box(xi[k])).pdf.to_f64()
                 });
@@ -1086,37 +1100,25 @@ fn microfacet_type(i: &Inputs, calls: usize) {
                     format!("{f:5.1}/{t:5.1} {:4.2}×", t / f)
                 };
                 println!(
-                    "{:24} {:>20} {:>20} {:>20} {:>20} {:>14}",
+                    "{:24} {:>20} {:>20} {:>20} {:>14} {:>14}",
                     format!("{} {} {label}", $name, stringify!($F)),
                     cell(0),
                     cell(1),
                     cell(2),
-                    cell(3),
+                    format!("{vndf:5.1}"),
                     format!("{pdf:5.1}")
                 );
             }
         }};
     }
     macro_rules! both {
-        ($N:ty, $name:expr, $free:ident, $vndf:ident) => {
-            ndf_rows!(f64, $N, $name, $free, $vndf::<f64>());
-            ndf_rows!(f32, $N, $name, $free, $vndf::<f32>());
+        ($N:ty, $name:expr, $free:ident) => {
+            ndf_rows!(f64, $N, $name, $free);
+            ndf_rows!(f32, $N, $name, $free);
         };
     }
-    fn warp_ggx<F: Real>() -> impl Fn([F; 3], F, [F; 2], &mut dyn FnMut() -> F) -> [F; 3] {
-        |w, a, u, _| fg::sample_visible(w, a, a, u)
-    }
-    fn warp_beckmann<F: Real>() -> impl Fn([F; 3], F, [F; 2], &mut dyn FnMut() -> F) -> [F; 3] {
-        |w, a, u, _| fb::sample_visible(w, a, a, u)
-    }
-    fn rejection_dg<F: Real>() -> impl Fn([F; 3], F, [F; 2], &mut dyn FnMut() -> F) -> [F; 3] {
-        |w, a, u, next| dg::sample_visible(w, a, a, u, &mut || next())
-    }
-    fn rejection_ex<F: Real>() -> impl Fn([F; 3], F, [F; 2], &mut dyn FnMut() -> F) -> [F; 3] {
-        |w, a, u, next| ex::sample_visible(w, a, a, u, &mut || next())
-    }
-    both!(microfacet::Ggx, "GGX", fg, warp_ggx);
-    both!(microfacet::Beckmann, "Beckmann", fb, warp_beckmann);
-    both!(microfacet::DoubleGgx, "Double GGX", dg, rejection_dg);
-    both!(microfacet::Exponential, "Exponential", ex, rejection_ex);
+    both!(microfacet::Ggx, "GGX", fg);
+    both!(microfacet::Beckmann, "Beckmann", fb);
+    both!(microfacet::DoubleGgx, "Double GGX", dg);
+    both!(microfacet::Exponential, "Exponential", ex);
 }

@@ -10,7 +10,7 @@ use microfacet::chi2::SplitMix64;
 use microfacet::exponential::approx::{ei_g1, g1_rational};
 use microfacet::mixture::{superpose_beckmann, superpose_ggx, Mixing};
 use microfacet::verify::{run as run_checks, sigma_by_delta_integral, Sweep};
-use microfacet::{AnyNdf, Isotropic, Microsurface, Ndf, NdfKind, Vec3};
+use microfacet::{AnyNdf, Distribution, Exact, Ndf, NdfKind, Vec3};
 use std::fmt::Write as _;
 use std::process::ExitCode;
 use std::time::Instant;
@@ -386,7 +386,7 @@ fn histogram_plot(kind: NdfKind, visible: bool) -> Plot {
     } else {
         ndf(kind, 0.3, None)
     };
-    let m = Isotropic(n);
+    let m = Exact::new(kind, n.alpha(), n.alpha(), n.gamma()).expect("valid parameters");
     let wi = {
         let t = 60f64.to_radians();
         Vec3::new(t.sin(), 0.0, t.cos())
@@ -396,9 +396,9 @@ fn histogram_plot(kind: NdfKind, visible: bool) -> Plot {
     let hist = theta_histogram(samples, || {
         let u = [rng.next_f64(), rng.next_f64()];
         if visible {
-            m.sample_visible(wi, u)
+            Vec3::from(m.sample_wm(wi.into(), u))
         } else {
-            m.sample_dcos(u)
+            Vec3::from(m.sample_dcos(u).wm)
         }
     });
     let density = |deg: f64| {
@@ -410,7 +410,7 @@ fn histogram_plot(kind: NdfKind, visible: bool) -> Plot {
             let ring: f64 = (0..k)
                 .map(|j| {
                     let phi = 2.0 * PI * (j as f64 + 0.5) / k as f64;
-                    m.d_visible(wi, Vec3::new(s * phi.cos(), s * phi.sin(), c))
+                    m.d_visible(wi.into(), [s * phi.cos(), s * phi.sin(), c])
                 })
                 .sum();
             s * ring * 2.0 * PI / k as f64

@@ -1,7 +1,7 @@
 //! `microfacet sample`: writes sampled microfacet normals, one `x y z` per line.
 
 use microfacet::chi2::SplitMix64;
-use microfacet::{AnyNdf, Isotropic, Microsurface, NdfKind, Stretched, UnitSlopes, Vec3};
+use microfacet::{Distribution, Exact, NdfKind, Vec3};
 use std::io::{BufWriter, Write};
 use std::process::ExitCode;
 
@@ -111,50 +111,30 @@ fn parse(args: &[String]) -> Result<Args, String> {
     Ok(a)
 }
 
-/// What draws one normal from two uniforms.
-enum Sampler {
-    Isotropic(Isotropic<AnyNdf>),
-    Stretched(Stretched),
-}
-
 pub fn run(args: &[String]) -> Result<ExitCode, String> {
     let a = parse(args)?;
-    let sampler = if a.kind == NdfKind::Gtr {
-        if a.alpha_y.is_some() {
-            return Err("sample: GTR is isotropic (no --alpha-y)".into());
-        }
-        Sampler::Isotropic(Isotropic(
-            AnyNdf::new(a.kind, a.alpha, a.gamma).map_err(|e| format!("sample: {e}"))?,
-        ))
-    } else {
-        if a.gamma.is_some() {
-            return Err(format!(
-                "sample: --gamma applies to gtr only, not {}",
-                a.kind
-            ));
-        }
-        let unit = match a.kind {
-            NdfKind::Beckmann => UnitSlopes::Beckmann,
-            NdfKind::Ggx => UnitSlopes::Ggx,
-            NdfKind::DoubleGgx => UnitSlopes::DoubleGgx,
-            _ => UnitSlopes::Exponential,
-        };
-        Sampler::Stretched(
-            Stretched::new(unit, a.alpha, a.alpha_y.unwrap_or(a.alpha))
-                .map_err(|e| format!("sample: {e}"))?,
-        )
-    };
+    if a.kind == NdfKind::Gtr && a.alpha_y.is_some() {
+        return Err("sample: GTR is isotropic (no --alpha-y)".into());
+    }
+    if a.kind != NdfKind::Gtr && a.gamma.is_some() {
+        return Err(format!(
+            "sample: --gamma applies to gtr only, not {}",
+            a.kind
+        ));
+    }
+    // The exact path (invertible warps; the visible normals of GTR by the polar inversion).
+    let sampler = Exact::new(a.kind, a.alpha, a.alpha_y.unwrap_or(a.alpha), a.gamma)
+        .map_err(|e| format!("sample: {e}"))?;
     let wi = a.wi.unwrap_or(Vec3::Z);
     let mut rng = SplitMix64(a.seed);
     let mut out = BufWriter::new(std::io::stdout().lock());
     for _ in 0..a.n {
         let u = [rng.next_f64(), rng.next_f64()];
-        let m = match (&sampler, a.visible) {
-            (Sampler::Isotropic(s), true) => s.sample_visible(wi, u),
-            (Sampler::Isotropic(s), false) => s.sample_dcos(u),
-            (Sampler::Stretched(s), true) => s.sample_visible(wi, u),
-            (Sampler::Stretched(s), false) => s.sample_dcos(u),
-        };
+        let m = Vec3::from(if a.visible {
+            sampler.sample_wm(wi.into(), u)
+        } else {
+            sampler.sample_dcos(u).wm
+        });
         if writeln!(out, "{} {} {}", m.x, m.y, m.z).is_err() {
             // A closed pipe (e.g. `| head`) ends the run quietly.
             return Ok(ExitCode::SUCCESS);

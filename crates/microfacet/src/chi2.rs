@@ -14,7 +14,7 @@
 //! lobe at any roughness, where a plain (φ, cos θ) grid would put a specular lobe in one cell.
 //! A sampler is never tested in its own coordinates (that would be circular).
 
-use crate::microsurface::Microsurface;
+use crate::distribution::{Distribution, Exact};
 use crate::vec3::Vec3;
 
 /// A map from directions to [0, 1)² and back, with the Jacobian |dω/(ds dt)|.
@@ -29,17 +29,16 @@ pub trait Coordinates {
     }
 }
 
-/// The D·cos warp of a reference microsurface: J = 1/(D(ω) cos θ).
-pub struct DcosCoordinates<'a, M: Microsurface>(pub &'a M);
+/// The D·cos warp of a reference material's exact path: J = 1/(D(ω) cos θ).
+pub struct DcosCoordinates<'a>(pub &'a Exact);
 
-impl<M: Microsurface> Coordinates for DcosCoordinates<'_, M> {
+impl Coordinates for DcosCoordinates<'_> {
     fn unit_of(&self, w: Vec3) -> [f64; 2] {
-        self.0.invert_dcos(w)
+        self.0.invert_dcos(w.into())
     }
     fn direction_at(&self, u: [f64; 2]) -> (Vec3, f64) {
-        let w = self.0.sample_dcos(u);
-        let p = self.0.pdf_dcos(w);
-        (w, if p > 0.0 { 1.0 / p } else { 0.0 })
+        let s = self.0.sample_dcos(u);
+        (s.wm.into(), if s.pdf > 0.0 { 1.0 / s.pdf } else { 0.0 })
     }
 }
 

@@ -87,6 +87,10 @@ pub struct Sample<F> {
 }
 
 /// The direction API every distribution has (f32 or f64): what the BSDFs use.
+///
+/// Directions w and normals wm are unit vectors in the local frame (z = the macro normal),
+/// as a renderer holds them (pbrt-v4's convention); the samplers also accept w of any finite
+/// nonzero length, and [`Exact`] accepts any length everywhere (it normalises).
 pub trait Distribution<F: Real> {
     /// (αx, αy).
     fn alpha(&self) -> (F, F);
@@ -131,6 +135,7 @@ pub trait Distribution<F: Real> {
         if !(c > F::ZERO && z > F::ZERO) {
             return if c.to_f64().is_nan() { c } else { F::ZERO };
         }
+        // (In this order: g1 ~ z/σ(0) cancels the 1/z of a direction near the horizon.)
         self.g1(w) * c * self.d(wm) / z
     }
 
@@ -155,6 +160,19 @@ pub trait Distribution<F: Real> {
 
     /// A normal distributed as D(m) cos θm, and that density.
     fn sample_dcos(&self, u: [F; 2]) -> Sample<F>;
+
+    /// The density of [`Distribution::sample_dcos`]: D(wm) cos θm (0 for wm.z ≤ 0).
+    #[inline]
+    fn pdf_dcos(&self, wm: [F; 3]) -> F {
+        if !(wm[2] > F::ZERO) {
+            return if wm[2].to_f64().is_nan() {
+                wm[2]
+            } else {
+                F::ZERO
+            };
+        }
+        self.d(wm) * wm[2]
+    }
 
     /// Whether the surface is effectively smooth (max(αx, αy) < 1e-3): the BSDFs then
     /// behave as a perfect mirror or interface (a delta lobe), as pbrt-v4 does. At α = 1e-3
@@ -590,7 +608,7 @@ impl Shape for Exponential {
 #[doc(hidden)]
 #[derive(Clone, Debug)]
 pub enum GtrData {
-    Fitted(Arc<fast::gtr::Gtr>),
+    Fitted(Arc<fast::gtr::FittedGtr>),
     Ggx,
 }
 
@@ -714,7 +732,7 @@ impl<F: Real> Microfacet<F, Gtr> {
         let data = if gamma == 2.0 {
             GtrData::Ggx
         } else if iso {
-            GtrData::Fitted(Arc::new(fast::gtr::Gtr::new(ax, gamma)?))
+            GtrData::Fitted(Arc::new(fast::gtr::FittedGtr::new(ax, gamma)?))
         } else {
             return Err(ParamError::Anisotropic(gamma));
         };
@@ -735,18 +753,15 @@ impl<F: Real, N: Shape> Microfacet<F, N> {
     /// superpositions): for references and checks, not a renderer's inner loop.
     pub fn exact(&self) -> Exact {
         let p = self.exact;
-        let inner = match N::UNIT {
-            Some(kind) => ExactInner::Stretched(Stretched::raw(kind, p.ax, p.ay)),
-            None if p.gamma == 2.0 => {
-                ExactInner::Stretched(Stretched::raw(UnitSlopes::Ggx, p.ax, p.ay))
-            }
-            None => ExactInner::Gtr(Isotropic(
-                Gtr::new(p.ax, p.gamma).expect("validated at construction"),
-            )),
-        };
-        Exact {
-            alpha: (p.ax, p.ay),
-            inner,
+        match N::UNIT {
+            Some(kind) => Exact::stretched(kind, p.ax, p.ay),
+            None if p.gamma == 2.0 => Exact::stretched(UnitSlopes::Ggx, p.ax, p.ay),
+            None => Exact {
+                alpha: (p.ax, p.ay),
+                inner: ExactInner::Gtr(Isotropic(
+                    Gtr::new(p.ax, p.gamma).expect("validated at construction"),
+                )),
+            },
         }
     }
 }
@@ -868,6 +883,57 @@ enum ExactInner {
 }
 
 impl Exact {
+    /// The exact path of NDF `kind` at roughness (αx, αy) (γ required by, and only used for,
+    /// GTR), for an NDF chosen at run time (command lines, sweeps); [`Microfacet::exact`] is
+    /// the same for a material built at compile time. GTR: isotropic at γ ≠ 2, as
+    /// [`Microfacet::gtr`]. Typed errors as the constructors'.
+    pub fn new(
+        kind: crate::NdfKind,
+        alpha_x: f64,
+        alpha_y: f64,
+        gamma: Option<f64>,
+    ) -> Result<Exact, ParamError> {
+        use crate::NdfKind as K;
+        let (ax, ay) = (
+            crate::error::check_alpha(alpha_x)?,
+            crate::error::check_alpha(alpha_y)?,
+        );
+        let unit = match kind {
+            K::Beckmann => UnitSlopes::Beckmann,
+            K::Ggx => UnitSlopes::Ggx,
+            K::DoubleGgx => UnitSlopes::DoubleGgx,
+            K::Exponential => UnitSlopes::Exponential,
+            K::Gtr => {
+                let gamma = crate::error::check_gamma(gamma.unwrap_or(f64::NAN))?;
+                if gamma == 2.0 {
+                    UnitSlopes::Ggx
+                } else if ax != ay {
+                    return Err(ParamError::Anisotropic(gamma));
+                } else {
+                    return Ok(Exact {
+                        alpha: (ax, ay),
+                        inner: ExactInner::Gtr(Isotropic(Gtr::new(ax, gamma)?)),
+                    });
+                }
+            }
+        };
+        Ok(Exact::stretched(unit, ax, ay))
+    }
+
+    fn stretched(kind: UnitSlopes, ax: f64, ay: f64) -> Exact {
+        Exact {
+            alpha: (ax, ay),
+            inner: ExactInner::Stretched(Stretched::raw(kind, ax, ay)),
+        }
+    }
+
+    /// The projected area σ(w) = ∫ max(0, w·m) D(m) dm = |w.z| (1 + Λ(w)) (finite at grazing,
+    /// where it is σ(0) of the azimuth), for w mirrored to the upper hemisphere.
+    pub fn sigma(&self, w: [f64; 3]) -> f64 {
+        let w = Vec3::from(w);
+        self.surface().sigma(if w.z < 0.0 { -w } else { w })
+    }
+
     fn surface(&self) -> &dyn Microsurface {
         match &self.inner {
             ExactInner::Stretched(s) => s,
@@ -907,5 +973,25 @@ impl Distribution<f64> for Exact {
             wm: wm.into(),
             pdf: s.pdf_dcos(wm),
         }
+    }
+    /// As the trait's, for w and wm of any finite nonzero length (normalised here), in the
+    /// form max(0, w·wm) D(wm)/σ(w) (finite at grazing w).
+    fn d_visible(&self, w: [f64; 3], wm: [f64; 3]) -> f64 {
+        let (w, wm) = (Vec3::from(w).to_unit(), Vec3::from(wm).to_unit());
+        let w = if w.z < 0.0 { -w } else { w };
+        let c = w.dot(wm);
+        if !(c > 0.0 && wm.z > 0.0) {
+            return if c.is_nan() || wm.z.is_nan() {
+                f64::NAN
+            } else {
+                0.0
+            };
+        }
+        let s = self.surface();
+        c * s.d(wm) / s.sigma(w)
+    }
+    /// As the trait's, for wm of any finite nonzero length (normalised here).
+    fn pdf_dcos(&self, wm: [f64; 3]) -> f64 {
+        self.surface().pdf_dcos(Vec3::from(wm))
     }
 }

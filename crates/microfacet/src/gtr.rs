@@ -242,7 +242,7 @@ impl Gtr {
     /// Λ at a = cot θ > 0 given directly (no rounding of u = a/√(1 + a²) near the normal):
     /// for γ = 1 and γ = 2 the closed forms written in a, otherwise (and past a = 1e150) the
     /// Smith integral, 2 I(a)/a. Same accuracy as [`Ndf::lambda`] (the closed forms agree with
-    /// the integral to 1e-13, tested below); it is what [`crate::fast::gtr::Gtr`] fits.
+    /// the integral to 1e-13, tested below); it is what [`crate::fast::gtr::FittedGtr`] fits.
     pub fn lambda_cot(&self, a: f64) -> f64 {
         // Up to 1e150, 1 + a² is finite.
         if a > 0.0 && a <= 1e150 {

@@ -22,17 +22,21 @@
 //! [`Beckmann`], [`Ggx`], [`Gtr`], [`DoubleGgx`], [`Exponential`]; [`AnyNdf`] holds any of them
 //! (for command lines and sweeps). Constructors return `Result<_, ParamError>`.
 //!
-//! ## Directions and sampling
-//! [`Microsurface`] is the direction API for renderers (D, Λ, G1, G2, the visible-normal
-//! density, samplers taking explicit uniforms `u: [f64; 2]`, their pdfs and inverses);
-//! [`Stretched`] implements it, isotropic or anisotropic, for the shape-invariant NDFs.
-//! [`sample`] has D·cos sampling for every NDF, GTR included.
+//! ## Directions, sampling and BSDFs: one door
+//! [`Microfacet`]`<F, N>` is the direction API for renderers, one type for every NDF, f32 or
+//! f64, anisotropic: D, Λ, G1, G2 (height-correlated and separable), the visible-normal
+//! density, and samplers taking explicit uniforms that return each normal with its pdf
+//! ([`Distribution`]). It runs the fast paths; [`Microfacet::exact`] gives the same material's
+//! validated f64 path ([`Exact`], with the samplers' inverses; [`Exact::new`] picks the NDF at
+//! run time). [`frame`], [`fresnel`] and [`bsdf`] build rough conductors and dielectrics on
+//! it. [`sample`] has D·cos sampling of the 1-D NDF types (mixtures included).
 //!
 //! ## Fast paths
-//! [`fast`] has GGX and Beckmann D, Λ, G1, G2 and GGX visible-normal sampling in f64 and f32
-//! at the cost of the textbook formulas (benchmarked against C in `crates/microfacet-bench`),
-//! fitted Λ, σ, G1, G2 for Double GGX, the Exponential NDF and GTR at any γ (relative error
-//! ≤ 1e-7), and slice forms (`fast::batch`, parallel with the `rayon` feature).
+//! [`fast`] has the scalar functions of u behind [`Microfacet`]: GGX and Beckmann D, Λ, G1, G2
+//! in f64 and f32 at the cost of the textbook formulas (benchmarked against C in
+//! `crates/microfacet-bench`), fitted Λ, σ, G1, G2 for Double GGX, the Exponential NDF and GTR
+//! at any γ (relative error ≤ 1e-7), and slice forms (`fast::batch`, parallel with the `rayon`
+//! feature). Their samplers are [`Microfacet`]'s.
 //!
 //! ## The contract
 //! Every public function and method holds it; `tests/fuzz.rs` (a seeded fuzz suite, about
@@ -94,7 +98,7 @@ pub mod frame;
 pub mod fresnel;
 pub mod ggx;
 pub mod gtr;
-pub mod microsurface;
+pub(crate) mod microsurface;
 pub mod mixture;
 pub mod ndf;
 pub mod quad;
@@ -108,7 +112,7 @@ pub mod verify;
 pub mod visible;
 
 pub use beckmann::Beckmann;
-pub use distribution::{Distribution, Microfacet, Sample};
+pub use distribution::{Distribution, Exact, Microfacet, Sample};
 pub use double_ggx::DoubleGgx;
 pub use error::ParamError;
 pub use exponential::Exponential;
@@ -116,7 +120,6 @@ pub use family::{AnyNdf, NdfKind};
 pub use fast::Real;
 pub use ggx::Ggx;
 pub use gtr::Gtr;
-pub use microsurface::{GgxBounded, Isotropic, Microsurface, Stretched};
 pub use ndf::{Ndf, ShapeInvariant};
 pub use sample::RadialSlopes;
 pub use vec3::Vec3;

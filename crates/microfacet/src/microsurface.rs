@@ -37,34 +37,6 @@ pub trait Microsurface {
     /// (= w.z (1 + Λ(w)), finite at grazing).
     fn sigma(&self, w: Vec3) -> f64;
 
-    /// Masking G1(w, wm) = 1/(1 + Λ(w)), or 0 when w·wm and w.z disagree in sign.
-    fn g1(&self, w: Vec3, wm: Vec3) -> f64 {
-        if w.dot(wm) * w.z <= 0.0 {
-            return 0.0;
-        }
-        1.0 / (1.0 + self.lambda(w))
-    }
-
-    /// Height-correlated masking-shadowing G2 = 1/(1 + Λ(wo) + Λ(wi)), or 0 when either side
-    /// fails the sign test of [`Microsurface::g1`].
-    fn g2(&self, wo: Vec3, wi: Vec3, wm: Vec3) -> f64 {
-        if wo.dot(wm) * wo.z <= 0.0 || wi.dot(wm) * wi.z <= 0.0 {
-            return 0.0;
-        }
-        1.0 / (1.0 + self.lambda(wo) + self.lambda(wi))
-    }
-
-    /// The visible-normal density G1(w) max(0, w·wm) D(wm)/w.z = max(0, w·wm) D(wm)/σ(w),
-    /// for w.z ≥ 0; a down-welling w is mirrored to −w (see the module docs).
-    fn d_visible(&self, w: Vec3, wm: Vec3) -> f64 {
-        let (w, wm) = (upper(w), wm.to_unit());
-        let c = w.dot(wm);
-        if c <= 0.0 || wm.z <= 0.0 {
-            return 0.0;
-        }
-        c * self.d(wm) / self.sigma(w)
-    }
-
     /// Density of [`Microsurface::sample_dcos`] w.r.t. solid angle: D(wm) cos θm.
     fn pdf_dcos(&self, wm: Vec3) -> f64 {
         let wm = wm.to_unit();
@@ -72,11 +44,6 @@ pub trait Microsurface {
             return 0.0;
         }
         self.d(wm) * wm.z
-    }
-
-    /// Density of [`Microsurface::sample_visible`] w.r.t. solid angle: [`Microsurface::d_visible`].
-    fn pdf_visible(&self, w: Vec3, wm: Vec3) -> f64 {
-        self.d_visible(w, wm)
     }
 
     /// A normal distributed as D(m) cos θm.
@@ -428,115 +395,5 @@ impl<N: Ndf + RadialSlopes> Microsurface for Isotropic<N> {
             psi += 2.0 * PI;
         }
         crate::visible::radial::invert(&self.0, a, r, psi)
-    }
-}
-
-/// Bounded visible-normal sampling for GGX reflection (Eto & Tokuyoshi 2023).
-///
-/// The spherical-cap sampler ([`Stretched::sample_visible`] for GGX) draws the cap point
-/// uniformly on z ∈ [−w'.z, 1] (w' the stretched incident direction); normals whose reflection
-/// of w would point below the horizon are wasted. This sampler shrinks the cap to
-/// z ∈ [−k w'.z, 1], k = (1 − a²) s²/(s² + a² w.z²), a = min(1, αx, αy), s = 1 + |w.xy|, which
-/// removes only such normals (for w.z > 0; a down-welling w is mirrored and the full cap is
-/// used). On the smaller cap the normal density is the visible density scaled by
-/// (1 + w'.z)/(1 + k w'.z), and the reflected direction has the paper's pdf
-/// D(m)/(2 (t + k w.z)), t = |(αx w.x, αy w.y, w.z)|.
-#[derive(Clone, Copy, Debug, PartialEq)]
-pub struct GgxBounded {
-    ggx: Stretched,
-}
-
-impl GgxBounded {
-    /// GGX with roughness (αx, αy), each in [1e-6, 1e6].
-    pub fn new(alpha_x: f64, alpha_y: f64) -> Result<Self, ParamError> {
-        Ok(GgxBounded {
-            ggx: Stretched::new(UnitSlopes::Ggx, alpha_x, alpha_y)?,
-        })
-    }
-
-    /// (w' normalised, b): the stretched direction and the cap's lower bound −b.
-    fn cap(&self, w: Vec3) -> (Vec3, f64) {
-        let down = w.z < 0.0;
-        let w = upper(w);
-        let ws = self.ggx.stretch(w).normalize();
-        if down {
-            return (ws, ws.z);
-        }
-        let a = self.ggx.alpha_x.min(self.ggx.alpha_y).min(1.0);
-        let s = 1.0 + w.x.hypot(w.y);
-        let (a2, s2) = (a * a, s * s);
-        let k = (1.0 - a2) * s2 / (s2 + a2 * w.z * w.z);
-        (ws, k * ws.z)
-    }
-
-    /// A normal from the bounded cap.
-    pub fn sample(&self, w: Vec3, u: [f64; 2]) -> Vec3 {
-        let (ws, b) = self.cap(w);
-        let phi = 2.0 * PI * u[0];
-        // z + w'.z = (1 − u₁)(1 + b) + (w'.z − b), a sum of non-negative terms (b ≤ w'.z),
-        // formed without the cancellation of z + w'.z at u₁ → 1.
-        let above = (1.0 - u[1]) * (1.0 + b);
-        let z = above - b;
-        let sin = (1.0 - z * z).max(0.0).sqrt();
-        let m = Vec3::new(
-            sin * phi.cos() + ws.x,
-            sin * phi.sin() + ws.y,
-            above + (ws.z - b),
-        );
-        facing(
-            Vec3::new(self.ggx.alpha_x * m.x, self.ggx.alpha_y * m.y, m.z.max(0.0)).normalize(),
-            upper(w),
-        )
-    }
-
-    /// The cap point c that `sample` used for `wm` (the reflection of w' about m'), and w'.
-    fn cap_point(&self, w: Vec3, wm: Vec3) -> (Vec3, Vec3, f64) {
-        let wm = wm.to_unit();
-        let (ws, b) = self.cap(w);
-        let m = Vec3::new(wm.x / self.ggx.alpha_x, wm.y / self.ggx.alpha_y, wm.z).normalize();
-        let d = m.dot(ws);
-        (m * (2.0 * d) - ws, ws, b)
-    }
-
-    /// The u that [`GgxBounded::sample`] maps to `wm`.
-    pub fn invert(&self, w: Vec3, wm: Vec3) -> [f64; 2] {
-        let (c, _, b) = self.cap_point(w, wm);
-        let mut phi = c.y.atan2(c.x);
-        if phi < 0.0 {
-            phi += 2.0 * PI;
-        }
-        [
-            (phi / (2.0 * PI)).min(1.0),
-            (1.0 - (c.z + b) / (1.0 + b)).clamp(0.0, 1.0),
-        ]
-    }
-
-    /// Density of [`GgxBounded::sample`] w.r.t. the solid angle of the normal.
-    pub fn pdf(&self, w: Vec3, wm: Vec3) -> f64 {
-        let (c, ws, b) = self.cap_point(w, wm);
-        if c.z < -b {
-            return 0.0;
-        }
-        self.ggx.d_visible(w, wm) * (1.0 + ws.z) / (1.0 + b)
-    }
-
-    /// Density of the reflected direction wo = reflect(wi, m) for m from
-    /// [`GgxBounded::sample`]`(wi, ·)`: pdf(m)/(4 |wi·m|) (Eto & Tokuyoshi's closed form).
-    pub fn pdf_reflection(&self, wi: Vec3, wo: Vec3) -> f64 {
-        let h = wi + wo;
-        if h.length() == 0.0 {
-            return 0.0;
-        }
-        let m = if h.z < 0.0 { -h } else { h }.normalize();
-        let c = wi.dot(m).abs();
-        if c == 0.0 {
-            return 0.0;
-        }
-        self.pdf(wi, m) / (4.0 * c)
-    }
-
-    /// The GGX NDF itself (D, Λ, G1, …).
-    pub fn ndf(&self) -> &Stretched {
-        &self.ggx
     }
 }

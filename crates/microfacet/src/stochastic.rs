@@ -116,15 +116,22 @@ impl Distribution<Vec3> for ExponentialChi3 {
 /// by safeguarded Newton on tanh-sinh quadratures (1e-12).
 #[derive(Clone, Copy, Debug)]
 pub struct VisibleMixture {
-    target: crate::Stretched,
+    target: crate::microsurface::Stretched,
     wi: Vec3,
 }
 
 impl VisibleMixture {
-    /// Visible normals of `target` (Double GGX, Exponential or GGX) seen from `wi`
-    /// (a down-welling `wi` is mirrored, as in [`crate::Microsurface`]).
-    pub fn new(target: crate::Stretched, wi: Vec3) -> Result<Self, &'static str> {
-        match target.kind() {
+    /// Visible normals of `kind` (Double GGX, Exponential or GGX) at roughness (αx, αy)
+    /// seen from `wi` (a down-welling `wi` is mirrored, as in [`crate::Distribution`]).
+    pub fn new(
+        kind: crate::UnitSlopes,
+        alpha_x: f64,
+        alpha_y: f64,
+        wi: Vec3,
+    ) -> Result<Self, &'static str> {
+        let target = crate::microsurface::Stretched::new(kind, alpha_x, alpha_y)
+            .map_err(|_| "alpha outside [1e-6, 1e6]")?;
+        match kind {
             crate::UnitSlopes::Beckmann => Err("Beckmann is not a superposition in this family"),
             _ => Ok(VisibleMixture {
                 target,
@@ -153,7 +160,7 @@ impl Distribution<Vec3> for VisibleMixture {
         let w1 = self.target.stretch(self.wi).normalize();
         let sigma_t = |t: f64| {
             let a = mixing.roughness(1.0, t);
-            crate::Stretched::raw(component, a, a).sigma(w1)
+            crate::microsurface::Stretched::raw(component, a, a).sigma(w1)
         };
         let density = |t: f64| mixing.pdf(1.0, t) * sigma_t(t);
         // Posterior CDF of t by quadrature, inverted in ln t.
@@ -168,7 +175,7 @@ impl Distribution<Vec3> for VisibleMixture {
             0.0,
         );
         let a = mixing.roughness(1.0, s.exp());
-        let m1 = crate::Stretched::raw(component, a, a)
+        let m1 = crate::microsurface::Stretched::raw(component, a, a)
             .sample_visible(w1, [rng.random::<f64>(), rng.random::<f64>()]);
         let (ax, ay) = self.target.alpha();
         // m1 ∝ (x̃, ỹ, 1) in the α = 1 configuration → (αx x̃, αy ỹ, 1); visible from wi

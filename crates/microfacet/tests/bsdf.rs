@@ -18,12 +18,11 @@ use microfacet::chi2::{
     cell_of, chi2_test, chi2_test_region, chi2_test_region_expected, sidak, AxisCoordinates,
     Coordinates, DcosCoordinates, SplitMix64,
 };
-use microfacet::distribution::Exact;
 use microfacet::frame::{dot, normalize, refract};
 use microfacet::fresnel::{self, One};
 use microfacet::{
-    Beckmann, Distribution, DoubleGgx, Exponential, Ggx, Gtr, Microfacet, Real, Stretched,
-    UnitSlopes, Vec3,
+    Beckmann, Distribution, DoubleGgx, Exact, Exponential, Ggx, Gtr, Microfacet, NdfKind, Real,
+    Vec3,
 };
 
 /// Every NDF as a fast f64 material and its exact path; GTR at γ = 1.5 (isotropic only)
@@ -219,7 +218,7 @@ fn samples_carry_their_pdf_and_follow_it() {
                     assert!(s.pdf > 0.0 && s.pdf.is_finite());
                     assert!((dot(s.wm, s.wm) - 1.0).abs() < 1e-12 && dot(w, s.wm) > 0.0);
                 }
-                let reference = Stretched::new(UnitSlopes::Ggx, 1.5 * ax, 1.5 * ay).unwrap();
+                let reference = Exact::new(NdfKind::Ggx, 1.5 * ax, 1.5 * ay, None).unwrap();
                 let r = chi2_test(
                     |u| Vec3::from(each!(&m, x => x.sample_wm(w, u))),
                     |wm| each!(&m, x => x.pdf(w, wm.into())),

@@ -15,10 +15,10 @@
 //! in release) multiplies every count; `MICROFACET_FUZZ_SCALE=20` passes 10⁸ (about four minutes).
 //! `MICROFACET_FUZZ_SEED` changes the seed.
 
-use microfacet::fast::{self, gtr::Gtr as FastGtr};
+use microfacet::fast::{self, gtr::FittedGtr as FastGtr};
 use microfacet::{
-    AnyNdf, Beckmann, DoubleGgx, Exponential, Ggx, GgxBounded, Gtr, Isotropic, Microsurface, Ndf,
-    NdfKind, RadialSlopes, Stretched, UnitSlopes, Vec3,
+    AnyNdf, Beckmann, Distribution, DoubleGgx, Exact, Exponential, Ggx, Gtr, Microfacet, Ndf,
+    NdfKind, RadialSlopes, UnitSlopes, Vec3,
 };
 use std::panic::{catch_unwind, AssertUnwindSafe};
 use std::sync::atomic::{AtomicU64, Ordering};
@@ -396,35 +396,34 @@ fn off_horizon(w: Vec3) -> bool {
     w.z.abs() >= 1e-6 * w.length()
 }
 
-/// One Microsurface: D·cos and visible samplers, pdfs, inverses.
-fn fuzz_microsurface<M: Microsurface + std::fmt::Debug>(
-    fails: &mut Failures,
-    r: &mut Rng,
-    ms: &M,
-    visible: usize,
-) {
+/// One material's exact path: D·cos and visible samplers, pdfs, inverses.
+fn fuzz_exact(fails: &mut Failures, r: &mut Rng, ms: &Exact, visible: usize) {
     for _ in 0..visible {
         let u = [uniform(r), uniform(r)];
         let w = direction(r, false);
         let ctx = || format!("{ms:?} w={w:?} u={u:?}");
-        let m = no_panic("sample_visible", (ms, w, u), || ms.sample_visible(w, u));
+        let m = no_panic("sample_visible", (ms, w, u), || {
+            Vec3::from(ms.sample_wm(w.into(), u))
+        });
         check_visible(fails, "sample_visible", w, m, 1e-12, &ctx);
         check_strictly_visible(fails, "sample_visible", w.to_unit(), m, u, &ctx);
-        let pdf = no_panic("pdf_visible", (ms, w, m), || ms.pdf_visible(w, m));
+        let pdf = no_panic("pdf_visible", (ms, w, m), || ms.pdf(w.into(), m.into()));
         fails.check(pdf.is_finite() && pdf >= 0.0, || {
             format!("pdf={pdf} m={m:?} at {}", ctx())
         });
         if interior(u) && off_horizon(w) {
             fails.check(pdf > 0.0, || format!("pdf={pdf} m={m:?} at {}", ctx()));
         }
-        let back = no_panic("invert_visible", (ms, w, m), || ms.invert_visible(w, m));
+        let back = no_panic("invert_visible", (ms, w, m), || {
+            ms.invert(w.into(), m.into())
+        });
         fails.check(
             back.iter().all(|x| x.is_nan() || (0.0..=1.0).contains(x)),
             || format!("invert_visible={back:?} at {}", ctx()),
         );
-        let m = no_panic("sample_dcos", (ms, u), || ms.sample_dcos(u));
+        let m = no_panic("sample_dcos", (ms, u), || Vec3::from(ms.sample_dcos(u).wm));
         check_visible(fails, "sample_dcos", Vec3::Z, m, 1e-12, &ctx);
-        let pdf = ms.pdf_dcos(m);
+        let pdf = ms.pdf_dcos(m.into());
         fails.check(pdf.is_finite() && pdf >= 0.0, || {
             format!("pdf_dcos={pdf} m={m:?} at {}", ctx())
         });
@@ -435,10 +434,10 @@ fn fuzz_microsurface<M: Microsurface + std::fmt::Debug>(
         let bad = any_normal(r);
         let (a, b, p, q) = no_panic("inverses of any normal", (ms, w, bad), || {
             (
-                ms.invert_visible(w, bad),
-                ms.invert_dcos(bad),
-                ms.pdf_visible(w, bad),
-                ms.pdf_dcos(bad),
+                ms.invert(w.into(), bad.into()),
+                ms.invert_dcos(bad.into()),
+                ms.pdf(w.into(), bad.into()),
+                ms.pdf_dcos(bad.into()),
             )
         });
         fails.check(
@@ -452,11 +451,11 @@ fn fuzz_microsurface<M: Microsurface + std::fmt::Debug>(
         });
         let _ = no_panic("direction quantities", (ms, w, bad), || {
             (
-                ms.d(bad),
-                ms.lambda(w),
-                ms.sigma(w),
-                ms.g1(w, bad),
-                ms.g2(w, w, bad),
+                ms.d(bad.into()),
+                ms.lambda(w.into()),
+                ms.sigma(w.into()),
+                ms.g1(w.into()),
+                ms.g2(w.into(), w.into()),
             )
         });
         evals(12);
@@ -468,39 +467,42 @@ fn stretched_samplers() {
     let mut r = Rng::new(2);
     let mut fails = Failures::default();
     let kinds = [
-        (UnitSlopes::Ggx, 40),
-        (UnitSlopes::Beckmann, 20),
-        (UnitSlopes::DoubleGgx, 2),
-        (UnitSlopes::Exponential, 2),
+        (NdfKind::Ggx, 40),
+        (NdfKind::Beckmann, 20),
+        (NdfKind::DoubleGgx, 2),
+        (NdfKind::Exponential, 2),
     ];
     for _ in 0..60 * scale() {
         for (kind, n) in kinds {
-            let ms = Stretched::new(kind, alpha(&mut r), alpha(&mut r)).unwrap();
-            fuzz_microsurface(&mut fails, &mut r, &ms, n);
+            let ms = Exact::new(kind, alpha(&mut r), alpha(&mut r), None).unwrap();
+            fuzz_exact(&mut fails, &mut r, &ms, n);
         }
-        let b = GgxBounded::new(alpha(&mut r), alpha(&mut r)).unwrap();
+        let b = Microfacet::<f64, Ggx>::new(alpha(&mut r), alpha(&mut r)).unwrap();
         for _ in 0..40 {
             let u = [uniform(&mut r), uniform(&mut r)];
-            let w = direction(&mut r, false);
+            // (Microfacet's directions are unit vectors: the Distribution contract.)
+            let w = direction(&mut r, false).to_unit();
             let ctx = || format!("{b:?} w={w:?} u={u:?}");
-            let m = no_panic("GgxBounded::sample", (&b, w, u), || b.sample(w, u));
-            check_visible(&mut fails, "GgxBounded::sample", w, m, 1e-12, &ctx);
-            check_strictly_visible(&mut fails, "GgxBounded::sample", w.to_unit(), m, u, &ctx);
-            let pdf = no_panic("GgxBounded::pdf", (&b, w, m), || b.pdf(w, m));
+            let s = no_panic("sample_bounded", (&b, w, u), || {
+                b.sample_bounded(w.into(), u)
+            });
+            let m = Vec3::from(s.wm);
+            check_visible(&mut fails, "sample_bounded", w, m, 1e-12, &ctx);
+            check_strictly_visible(&mut fails, "sample_bounded", w.to_unit(), m, u, &ctx);
+            let pdf = s.pdf;
             fails.check(pdf.is_finite() && pdf >= 0.0, || {
                 format!("pdf={pdf} at {}", ctx())
             });
             if interior(u) && off_horizon(w) {
                 fails.check(pdf > 0.0, || format!("pdf={pdf} m={m:?} at {}", ctx()));
             }
-            let bad = any_normal(&mut r);
-            let (inv, p, pr) = no_panic("GgxBounded inverse", (&b, w, bad), || {
-                (b.invert(w, bad), b.pdf(w, bad), b.pdf_reflection(w, bad))
+            let bad = any_normal(&mut r).to_unit();
+            let (p, pr) = no_panic("pdf_bounded of any normal", (&b, w, bad), || {
+                (
+                    b.pdf_bounded(w.into(), bad.into()),
+                    b.pdf_bounded_reflection(w.into(), bad.into()),
+                )
             });
-            fails.check(
-                inv.iter().all(|x| x.is_nan() || (0.0..=1.0).contains(x)),
-                || format!("invert({bad:?})={inv:?} at {}", ctx()),
-            );
             fails.check(!(p < 0.0 || pr < 0.0), || {
                 format!("pdf({bad:?})={p},{pr} at {}", ctx())
             });
@@ -516,12 +518,13 @@ fn isotropic_samplers() {
     let mut fails = Failures::default();
     for _ in 0..6 * scale() {
         for kind in NdfKind::ALL {
-            let n = AnyNdf::new(kind, alpha(&mut r), Some(gamma(&mut r))).unwrap();
+            let a = alpha(&mut r);
+            let ms = Exact::new(kind, a, a, Some(gamma(&mut r))).unwrap();
             let count = match kind {
                 NdfKind::Beckmann | NdfKind::Ggx => 6,
                 _ => 2,
             };
-            fuzz_microsurface(&mut fails, &mut r, &Isotropic(n), count);
+            fuzz_exact(&mut fails, &mut r, &ms, count);
         }
     }
     // The audit's reproducers, every u-corner, every NDF.
@@ -533,7 +536,7 @@ fn isotropic_samplers() {
         AnyNdf::Ggx(Ggx::new(0.3).unwrap()),
         AnyNdf::Exponential(Exponential::new(0.3).unwrap()),
     ] {
-        let iso = Isotropic(n);
+        let iso = Exact::new(n.kind(), n.alpha(), n.alpha(), n.gamma()).unwrap();
         for w in [
             Vec3::new(1.0, 0.0, 0.0),
             Vec3::new(1.0, 0.0, 1e-300),
@@ -547,8 +550,8 @@ fn isotropic_samplers() {
                 [0.3, 0.7],
             ] {
                 let ctx = || format!("{n:?} w={w:?} u={u:?}");
-                let m = no_panic("Isotropic::sample_visible", (&n, w, u), || {
-                    iso.sample_visible(w, u)
+                let m = no_panic("Exact::sample_wm", (&n, w, u), || {
+                    Vec3::from(iso.sample_wm(w.into(), u))
                 });
                 check_visible(&mut fails, "Isotropic::sample_visible", w, m, 1e-12, &ctx);
                 check_strictly_visible(
@@ -559,7 +562,7 @@ fn isotropic_samplers() {
                     u,
                     &ctx,
                 );
-                let pdf = iso.pdf_visible(w, m);
+                let pdf = iso.pdf(w.into(), m.into());
                 fails.check(pdf.is_finite() && pdf >= 0.0, || {
                     format!("pdf={pdf} at {}", ctx())
                 });
@@ -575,7 +578,8 @@ fn isotropic_samplers() {
         AnyNdf::Gtr(Gtr::new(0.3, 1.5).unwrap()),
         AnyNdf::DoubleGgx(DoubleGgx::new(0.3).unwrap()),
     ] {
-        let m = Isotropic(n).sample_visible(Vec3::new(0.6, 0.0, 0.8), [1.0, 0.5]);
+        let e = Exact::new(n.kind(), n.alpha(), n.alpha(), n.gamma()).unwrap();
+        let m = Vec3::from(e.sample_wm([0.6, 0.0, 0.8], [1.0, 0.5]));
         let len = m.length();
         fails.check(len.is_nan() || (len - 1.0).abs() < 1e-12, || {
             format!("{n:?} at u = [1, 0.5]: {m:?}")
@@ -627,8 +631,9 @@ fn v3<F: fast::Real>(m: [F; 3]) -> Vec3 {
     Vec3::new(m[0].to_f64(), m[1].to_f64(), m[2].to_f64())
 }
 
-/// The fast samplers of every NDF in f64 and f32, with edge uniforms in `u` and in the
-/// closures' streams.
+/// The fast samplers of every NDF in f64 and f32 ([`Microfacet`]'s, isotropic and
+/// anisotropic), with edge uniforms in `u` (the rejection samplers' further uniforms come from
+/// their `UniformStream`, in [0, 1) by construction).
 fn fast_samplers<F: fast::Real + std::fmt::Debug>(test: u64, n: u64, draw: fn(&mut Rng) -> F) {
     let mut r = Rng::new(test);
     let mut fails = Failures::default();
@@ -637,63 +642,57 @@ fn fast_samplers<F: fast::Real + std::fmt::Debug>(test: u64, n: u64, draw: fn(&m
     for _ in 0..n * scale() {
         let (ax, ay) = (alpha(&mut r), alpha(&mut r));
         let (fx, fy) = (F::from_f64(ax), F::from_f64(ay));
-        let g = FastGtr::new(alpha(&mut r), gamma(&mut r)).unwrap();
-        let mut stream = Rng::new(r.next());
-        let mut next = || draw(&mut stream);
+        let (ga, gg) = (alpha(&mut r), gamma(&mut r));
+        // (f32: α rounded to f32 may leave [1e-6, 1e6] by an ulp; such draws are skipped.)
+        let (Ok(m_ggx), Ok(m_beckmann), Ok(m_double_ggx), Ok(m_exponential), Ok(m_gtr)) = (
+            Microfacet::<F, Ggx>::new(fx, fy),
+            Microfacet::<F, Beckmann>::new(fx, fy),
+            Microfacet::<F, DoubleGgx>::new(fx, fy),
+            Microfacet::<F, Exponential>::new(fx, fy),
+            Microfacet::<F, Gtr>::gtr(F::from_f64(ga), F::from_f64(ga), gg),
+        ) else {
+            continue;
+        };
         for _ in 0..200 {
             let w = direction(&mut r, f32s);
             let wf = [F::from_f64(w.x), F::from_f64(w.y), F::from_f64(w.z)];
             let wv = v3(wf);
             let u = [draw(&mut r), draw(&mut r)];
-            let ctx = || {
-                format!(
-                    "α=({ax:e},{ay:e}) gtr(α={:e},γ={:e}) w={wf:?} u={u:?}",
-                    g.alpha(),
-                    g.gamma()
-                )
-            };
-            let ms = no_panic(
-                "fast samplers",
-                (ax, ay, g.alpha(), g.gamma(), wf, u),
-                || {
-                    [
-                        v3(fast::ggx::sample_visible(wf, fx, fy, u)),
-                        v3(fast::beckmann::sample_visible(wf, fx, fy, u)),
-                        v3(fast::double_ggx::sample_visible(wf, fx, fy, u, &mut next)),
-                        v3(fast::exponential::sample_visible(wf, fx, fy, u, &mut next)),
-                        v3(g.sample_visible(wf, u, &mut next)),
-                    ]
-                },
-            );
+            let ctx = || format!("α=({ax:e},{ay:e}) gtr(α={ga:e},γ={gg:e}) w={wf:?} u={u:?}",);
+            let ms = no_panic("fast samplers", (ax, ay, ga, gg, wf, u), || {
+                [
+                    v3(m_ggx.sample_wm(wf, u)),
+                    v3(m_beckmann.sample_wm(wf, u)),
+                    v3(m_double_ggx.sample_wm(wf, u)),
+                    v3(m_exponential.sample_wm(wf, u)),
+                    v3(m_gtr.sample_wm(wf, u)),
+                ]
+            });
             for (name, m) in ["ggx", "beckmann", "double_ggx", "exponential", "gtr"]
                 .iter()
                 .zip(ms)
             {
-                let what = format!("fast::{name}::sample_visible");
+                let what = format!("Microfacet<{name}>::sample_wm");
                 check_visible(&mut fails, &what, wv, m, tol, &ctx);
                 let uf = [u[0].to_f64(), u[1].to_f64()];
                 check_strictly_visible(&mut fails, &what, wv, m, uf, &ctx);
             }
-            let ms = no_panic(
-                "fast D·cos samplers",
-                (ax, ay, g.alpha(), g.gamma(), u),
-                || {
-                    [
-                        v3(fast::ggx::sample_dcos(fx, fy, u)),
-                        v3(fast::beckmann::sample_dcos(fx, fy, u)),
-                        v3(fast::double_ggx::sample_dcos(fx, fy, u, &mut next)),
-                        v3(fast::exponential::sample_dcos(fx, fy, u, &mut next)),
-                        v3(g.sample_dcos(u)),
-                    ]
-                },
-            );
+            let ms = no_panic("fast D·cos samplers", (ax, ay, ga, gg, u), || {
+                [
+                    v3(m_ggx.sample_dcos(u).wm),
+                    v3(m_beckmann.sample_dcos(u).wm),
+                    v3(m_double_ggx.sample_dcos(u).wm),
+                    v3(m_exponential.sample_dcos(u).wm),
+                    v3(m_gtr.sample_dcos(u).wm),
+                ]
+            });
             for (name, m) in ["ggx", "beckmann", "double_ggx", "exponential", "gtr"]
                 .iter()
                 .zip(ms)
             {
                 check_visible(
                     &mut fails,
-                    &format!("fast::{name}::sample_dcos"),
+                    &format!("Microfacet<{name}>::sample_dcos"),
                     Vec3::Z,
                     m,
                     tol,
@@ -701,7 +700,10 @@ fn fast_samplers<F: fast::Real + std::fmt::Debug>(test: u64, n: u64, draw: fn(&m
                 );
                 if interior([u[0].to_f64(), u[1].to_f64()]) {
                     fails.check(m.z > 0.0, || {
-                        format!("fast::{name}::sample_dcos: horizon {m:?} at {}", ctx())
+                        format!(
+                            "Microfacet<{name}>::sample_dcos: horizon {m:?} at {}",
+                            ctx()
+                        )
                     });
                 }
             }
@@ -1009,11 +1011,11 @@ fn stochastic_samplers() {
             UnitSlopes::Exponential,
             UnitSlopes::Ggx,
         ]);
-        let target = Stretched::new(kind, a, alpha(&mut r)).unwrap();
+        let ay = alpha(&mut r);
         let w = direction(&mut r, false);
-        let vm = VisibleMixture::new(target, w).unwrap();
-        let ctx = || format!("{target:?} w={w:?}");
-        let m = no_panic("VisibleMixture", (target, w), || vm.sample(&mut rng));
+        let vm = VisibleMixture::new(kind, a, ay, w).unwrap();
+        let ctx = || format!("{kind:?} α=({a:e},{ay:e}) w={w:?}");
+        let m = no_panic("VisibleMixture", (kind, a, ay, w), || vm.sample(&mut rng));
         check_visible(&mut fails, "VisibleMixture", w, m, 1e-12, &ctx);
         evals(1);
     }

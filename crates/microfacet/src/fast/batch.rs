@@ -261,7 +261,7 @@ pub fn exponential_lambda(u: &[f64], alpha: &[f64], out: &mut [f64]) {
 
 dispatched! {
 /// Λ of a prepared GTR material for every u (one α, γ).
-pub fn gtr_lambda(g: &super::gtr::Gtr, u: &[f64], out: &mut [f64]) {
+pub fn gtr_lambda(g: &super::gtr::FittedGtr, u: &[f64], out: &mut [f64]) {
     // One loop per kind of table, so that neither tests the kind per element.
     if g.is_direct() {
         gtr_chunks::<true>(g, u, out);
@@ -273,7 +273,7 @@ pub fn gtr_lambda(g: &super::gtr::Gtr, u: &[f64], out: &mut [f64]) {
 
 /// [`gtr_lambda`] for a table of Λ (`DIRECT`) or of ln Λ, in blocks as [`chunks`].
 #[inline(always)]
-fn gtr_chunks<const DIRECT: bool>(g: &super::gtr::Gtr, u: &[f64], out: &mut [f64]) {
+fn gtr_chunks<const DIRECT: bool>(g: &super::gtr::FittedGtr, u: &[f64], out: &mut [f64]) {
     // Never fails; it tells the compiler that the clamped row is in bounds, so the loop
     // below has no panic branch and vectorises.
     assert!(g.rows() > 0);
@@ -341,7 +341,7 @@ pub mod par {
     }
 
     /// GTR Λ of one material over u, in parallel.
-    pub fn gtr_lambda(g: &crate::fast::gtr::Gtr, u: &[f64], out: &mut [f64]) {
+    pub fn gtr_lambda(g: &crate::fast::gtr::FittedGtr, u: &[f64], out: &mut [f64]) {
         assert!(out.len() >= u.len(), "slice lengths differ");
         out[..u.len()]
             .par_chunks_mut(PIECE)

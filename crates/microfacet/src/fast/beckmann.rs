@@ -1,6 +1,6 @@
 //! Beckmann: D, Λ, G1, G2, σ in closed form, and visible-normal sampling.
 //!
-//! [`sample_visible`] is the exact warp of [`crate::Stretched`]'s Beckmann sampler (Heitz &
+//! `sample_visible` (behind `Microfacet<_, Beckmann>`) is the exact warp of [`crate::Exact`]'s Beckmann sampler (Heitz &
 //! d'Eon 2014's slope-space inversion), made fast. For a direction with cot θ = a in the
 //! α = 1 configuration the visible slope x̃ has the CDF N(X)/Z with
 //!
@@ -296,20 +296,20 @@ fn guess(a: f64, u: f64) -> f64 {
 
 /// A normal distributed as D(m) cos θm, anisotropic roughness (αx, αy), u ∈ [0, 1]²:
 /// tan²θ = −ln(1 − ξ) at unit roughness (ξ = u₀, by ln1p: exact for small ξ), azimuth 2πu₁,
-/// then stretched; u₀ = 1 gives the horizon. A warp of u (the exact [`crate::Stretched`] D·cos
+/// then stretched; u₀ = 1 gives the horizon. A warp of u (the exact [`crate::Exact`] D·cos
 /// sampler's, to rounding); evaluated in f64.
 #[inline]
-pub fn sample_dcos<F: Real>(ax: F, ay: F, u: [F; 2]) -> [F; 3] {
+pub(crate) fn sample_dcos<F: Real>(ax: F, ay: F, u: [F; 2]) -> [F; 3] {
     let r = (-super::arith::ln_1p(-u[0].to_f64())).sqrt();
     let cs = super::cos_sin_turn(u[1].to_f64());
     super::normal_from_polar(r, cs, ax.to_f64(), ay.to_f64())
 }
 
 /// A visible normal for the unit direction w (mirrored if w.z < 0), anisotropic roughness
-/// (αx, αy), u ∈ [0, 1]²: the warp of [`crate::Stretched`]'s Beckmann `sample_visible`,
+/// (αx, αy), u ∈ [0, 1]²: the warp of [`crate::Exact`]'s Beckmann `sample_visible`,
 /// evaluated in f64 (f32 rounds once).
 #[inline]
-pub fn sample_visible<F: Real>(w: [F; 3], ax: F, ay: F, u: [F; 2]) -> [F; 3] {
+pub(crate) fn sample_visible<F: Real>(w: [F; 3], ax: F, ay: F, u: [F; 2]) -> [F; 3] {
     let (ax, ay) = (ax.to_f64(), ay.to_f64());
     let (c, h, cp, sp) = super::slope_frame(w, ax, ay);
     let a = if h == 0.0 { f64::INFINITY } else { c / h };

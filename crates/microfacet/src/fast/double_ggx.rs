@@ -189,10 +189,15 @@ fn t_floor<F: Real>() -> f64 {
 /// [`super::ziggurat::exp1`]: one uniform, a second in about 3 % of draws), then GGX's D·cos
 /// at α/√t driven by u:
 /// m ∝ (αx √ξ cos φ, αy √ξ sin φ, √(t(1 − ξ))), ξ = u₀, φ = 2πu₁. Evaluated in f64. Not a warp
-/// of u alone (no inverse), unlike the exact [`crate::Stretched`] D·cos sampler (a Newton
+/// of u alone (no inverse), unlike the exact [`crate::Exact`] D·cos sampler (a Newton
 /// inversion, ~8 µs).
 #[inline]
-pub fn sample_dcos<F: Real>(ax: F, ay: F, u: [F; 2], uniform: &mut impl FnMut() -> F) -> [F; 3] {
+pub(crate) fn sample_dcos<F: Real>(
+    ax: F,
+    ay: F,
+    u: [F; 2],
+    uniform: &mut impl FnMut() -> F,
+) -> [F; 3] {
     let mut next = || uniform().to_f64();
     let t = super::ziggurat::exp1(next(), &mut next).max(t_floor::<F>());
     super::ggx_dcos(ax.to_f64(), ay.to_f64(), [u[0].to_f64(), u[1].to_f64()], t)
@@ -218,9 +223,9 @@ pub fn sample_dcos<F: Real>(ax: F, ay: F, u: [F; 2], uniform: &mut impl FnMut() 
 ///
 /// `uniform` supplies the selection's uniforms in [0, 1): two per candidate (and the
 /// ziggurats' occasional extra ones). Unlike the
-/// exact [`crate::Stretched`] sampler this is not a warp of u alone (no inverse).
+/// exact [`crate::Exact`] sampler this is not a warp of u alone (no inverse).
 #[inline]
-pub fn sample_visible<F: Real>(
+pub(crate) fn sample_visible<F: Real>(
     w: [F; 3],
     ax: F,
     ay: F,

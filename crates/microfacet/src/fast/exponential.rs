@@ -248,9 +248,14 @@ pub fn sigma<F: Real>(u: F, alpha: F) -> F {
 /// r = ½(−ln(1 − ξ) + E) with ξ = u₀ and E ~ Exp(1) from `uniform` (the ziggurat,
 /// [`super::ziggurat::exp1`]: one uniform, a second in about 3 % of draws); azimuth 2πu₁; then
 /// stretched. Evaluated in f64. Not a warp of u alone (no inverse), unlike the exact
-/// [`crate::Stretched`] D·cos sampler (a Newton inversion, ~0.7 µs).
+/// [`crate::Exact`] D·cos sampler (a Newton inversion, ~0.7 µs).
 #[inline]
-pub fn sample_dcos<F: Real>(ax: F, ay: F, u: [F; 2], uniform: &mut impl FnMut() -> F) -> [F; 3] {
+pub(crate) fn sample_dcos<F: Real>(
+    ax: F,
+    ay: F,
+    u: [F; 2],
+    uniform: &mut impl FnMut() -> F,
+) -> [F; 3] {
     // Gamma(2) = −ln(1 − ξ) (ln1p: exact where ξ is small) + Exp(1) from the ziggurat.
     let mut next = || uniform().to_f64();
     let e = super::ziggurat::exp1(next(), &mut next);
@@ -277,9 +282,9 @@ pub fn sample_dcos<F: Real>(ax: F, ay: F, u: [F; 2], uniform: &mut impl FnMut() 
 ///
 /// `u` drives the first candidate (u₀ picks the part and then the azimuth, u₁ is one factor
 /// of the radius); `uniform` supplies the rest in [0, 1): one or two per candidate, plus
-/// three per rejected one. Not a warp of u alone (no inverse), unlike [`crate::Stretched`].
+/// three per rejected one. Not a warp of u alone (no inverse), unlike [`crate::Exact`].
 #[inline]
-pub fn sample_visible<F: Real>(
+pub(crate) fn sample_visible<F: Real>(
     w: [F; 3],
     ax: F,
     ay: F,

@@ -1,7 +1,7 @@
 //! GTR at any γ: Λ, σ, G1, G2 from an octave table built for one (α, γ) at construction.
 //!
 //! GTR is not shape invariant: Λ depends on cot θ, α and γ, a three-parameter function no
-//! static table covers at 1e-7. A renderer fixes (α, γ) per material, so [`Gtr::new`] fits
+//! static table covers at 1e-7. A renderer fixes (α, γ) per material, so [`FittedGtr::new`] fits
 //! Λ for that material by Chebyshev interpolation of the exact Smith integral
 //! ([`crate::Gtr::lambda_cot`]), degree 6, on octave segments of t, in two tables:
 //! * the **u table**, t = u = cos θ < ½ (the grazing side), eighth octaves;
@@ -15,14 +15,14 @@
 //! 3e-9 of the fit), so the lookup's shifts are constants and the polynomial is shorter
 //! (Λ 8.0 → 5.4 ns, the AVX-512 slice kernel 3.5 → 2.4 ns per element; 42 KiB at α = 0.3,
 //! γ = 1.5), and for f32, where Λ itself is tabulated, cubics on the same rows in f32
-//! (17 KiB; [`Gtr::has_f32_table`]).
+//! (17 KiB; [`FittedGtr::has_f32_table`]).
 //!
 //! So Λ(u) needs no square root and no division: the side picks the table's offset by an
 //! index (no branch to mispredict on random directions), then one polynomial. From one set
-//! of exact values [`Gtr::new`] builds each table twice and keeps one kind:
+//! of exact values [`FittedGtr::new`] builds each table twice and keeps one kind:
 //! * **Λ itself**, if it is accurate: within 1e-8 at every segment end (`DIRECT_TOL`), and
 //!   no value near underflow. Evaluation is then the polynomial alone. This holds for every
-//!   α at γ ≤ 3 and for most α at γ ≤ 5 ([`Gtr::is_direct`] tells which; tests/fast.rs
+//!   α at γ ≤ 3 and for most α at γ ≤ 5 ([`FittedGtr::is_direct`] tells which; tests/fast.rs
 //!   records the census).
 //! * **ln Λ** otherwise, plus one exponential at evaluation. For large γ and small α, Λ falls
 //!   like cot^{−2γ}θ near the normal: by 2^25 ≈ 3·10^7 across one segment (an eighth octave
@@ -35,7 +35,7 @@
 //! Construction evaluates the exact Λ about 1 500 times (184 rows of 7 nodes at α = 0.3,
 //! γ = 1.5, plus the segment ends for the accuracy check): 24 ms at α = 0.3, γ = 1.5, 1–1.5
 //! ms at γ = 1, 2, up to 93 ms at α = 1e-6, γ = 100 (medians of 9 on the 2-core CI machine
-//! class; the README has the range, BENCHMARKS.md the bench's mean over 64 materials). [`Gtr::lambda_cot`] takes cot θ = a directly and
+//! class; the README has the range, BENCHMARKS.md the bench's mean over 64 materials). [`FittedGtr::lambda_cot`] takes cot θ = a directly and
 //! forms u = a/r and w = 1/(r(r + a)), r = √(1 + a²), both without cancellation.
 //!
 //! Range: the features of P22 = c(1 + r²)^{γ−2}(r² + α²)^{−γ} lie at slopes r ~ α, 1 and √γ
@@ -130,7 +130,7 @@ enum Power {
 
 /// A GTR NDF prepared for fast Λ, σ, G1 and G2.
 #[derive(Clone, Debug)]
-pub struct Gtr {
+pub struct FittedGtr {
     alpha: f64,
     gamma: f64,
     /// The rows of the u table (t = u < ½, octaves from 2^u_k0), then those of the w table
@@ -169,7 +169,7 @@ pub struct Gtr {
     moment: Radial,
 }
 
-impl Gtr {
+impl FittedGtr {
     /// Fits Λ for α ∈ [1e-6, 1e6], γ ∈ (0, 100] (validated as in [`crate::Gtr::new`]).
     pub fn new(alpha: f64, gamma: f64) -> Result<Self, ParamError> {
         let exact = crate::Gtr::new(alpha, gamma)?;
@@ -242,7 +242,7 @@ impl Gtr {
         let off64 = |k0: i32, row0: usize| (((1023 + k0) as u64) << M_T).wrapping_sub(row0 as u64);
         let (u_lo, w_lo) = (2f64.powi(u_k0), 2f64.powi(w_k0));
         let (a_lo, a_hi) = (a_of_u(u_lo), a_of_w(w_lo));
-        Ok(Gtr {
+        Ok(FittedGtr {
             alpha,
             gamma,
             coef: table,
@@ -347,7 +347,7 @@ impl Gtr {
         self.gamma
     }
 
-    /// The table's value (Λ, or ln Λ if not [`Gtr::is_direct`]) at t = u (`normal_side`
+    /// The table's value (Λ, or ln Λ if not [`FittedGtr::is_direct`]) at t = u (`normal_side`
     /// false) or t = 1 − u, and whether t is inside the table (false for NaN and past the
     /// ends). No branch: the side indexes the layout, so there is neither a branch that
     /// random directions would mispredict nor a select the compiler could turn into one.
@@ -356,7 +356,7 @@ impl Gtr {
         self.table_on(self.sides[usize::from(normal_side)], t)
     }
 
-    /// [`Gtr::table_at`] with the side's layout chosen by selects, for the slice kernels:
+    /// [`FittedGtr::table_at`] with the side's layout chosen by selects, for the slice kernels:
     /// in vector code a select is a blend, cheaper than gathering the layout per lane.
     #[inline(always)]
     pub(crate) fn table_at_lanes(&self, normal_side: bool, t: f64) -> (f64, bool) {
@@ -368,7 +368,7 @@ impl Gtr {
         self.table_on(side, t)
     }
 
-    /// The value and the inside flag of [`Gtr::table_at`] on one side's table.
+    /// The value and the inside flag of [`FittedGtr::table_at`] on one side's table.
     #[inline(always)]
     fn table_on(&self, side: Side, t: f64) -> (f64, bool) {
         // (Clamped: t below the table wraps to a huge index; the flag sends it to the ends.)
@@ -464,7 +464,7 @@ impl Gtr {
 
     /// Λ(u) for 0 ≤ u ≤ 1 (−0 and 1 + 2ε included): the u table below u = ½, the w table at w = 1 − u (exact) from
     /// there; no square root or division on the way. In f32, where the material has an f32
-    /// table ([`Gtr::has_f32_table`]), that table in f32 arithmetic (Λ's condition number in
+    /// table ([`FittedGtr::has_f32_table`]), that table in f32 arithmetic (Λ's condition number in
     /// t is about 1 at both ends); otherwise, and past the tables, the f64 path rounded once.
     #[inline]
     pub fn lambda<F: Real>(&self, u: F) -> F {
@@ -485,7 +485,7 @@ impl Gtr {
         })
     }
 
-    /// Λ from the f32 table (see [`Gtr::lambda`]); `coef32` is not empty.
+    /// Λ from the f32 table (see [`FittedGtr::lambda`]); `coef32` is not empty.
     #[inline(always)]
     fn lambda32(&self, u: f32) -> f32 {
         let normal_side = u >= 0.5;
@@ -510,7 +510,7 @@ impl Gtr {
         self.lambda(f64::from(u)) as f32
     }
 
-    /// G1(u) = 1/(1 + Λ(u)) for 0 ≤ u ≤ 1, in the precision of F (Λ's, see [`Gtr::lambda`]).
+    /// G1(u) = 1/(1 + Λ(u)) for 0 ≤ u ≤ 1, in the precision of F (Λ's, see [`FittedGtr::lambda`]).
     #[inline]
     pub fn g1<F: Real>(&self, u: F) -> F {
         F::ONE / (F::ONE + self.lambda(u))
@@ -544,7 +544,7 @@ impl Gtr {
     /// `uniform` supplies one or two more uniforms per candidate, and two per rejected one.
     /// Not a warp of u alone (no inverse), unlike [`crate::Isotropic`]'s sampler.
     #[inline]
-    pub fn sample_visible<F: Real>(
+    pub(crate) fn sample_visible<F: Real>(
         &self,
         w: [F; 3],
         u: [F; 2],
@@ -609,7 +609,7 @@ impl Gtr {
     /// constants (`Burley`, shared with the exact path), which leaves five libm calls.
     /// (`arith`'s functions, tried here, were slower: this chain is bound by latency.)
     #[inline]
-    pub fn sample_dcos<F: Real>(&self, u: [F; 2]) -> [F; 3] {
+    pub(crate) fn sample_dcos<F: Real>(&self, u: [F; 2]) -> [F; 3] {
         use crate::sample::RadialSlopes;
         let r = self.exact.slope_quantile(u[0].to_f64());
         super::normal_from_polar(r, super::cos_sin_turn(u[1].to_f64()), 1.0, 1.0)
@@ -1039,7 +1039,7 @@ mod tests {
         let mut worst = 0.0f64;
         for alpha in [1e-6, 1e-3, 0.05, 0.3, 1.0, 1.7, 1e3, 1e6] {
             for gamma in [0.01, 0.1, 0.5, 1.0, 1.5, 2.0, 3.0, 10.0, 100.0] {
-                let g = Gtr::new(alpha, gamma).unwrap();
+                let g = FittedGtr::new(alpha, gamma).unwrap();
                 assert!(
                     g.piece_dev <= 1e-8,
                     "α = {alpha}, γ = {gamma}: {:e}",
@@ -1055,7 +1055,7 @@ mod tests {
         }
         println!("GTR re-expanded rows: within {worst:.2e} of the fit");
         // Table sizes at α = 0.3, γ = 1.5 (BENCHMARKS.md quotes them).
-        let g = Gtr::new(0.3, 1.5).unwrap();
+        let g = FittedGtr::new(0.3, 1.5).unwrap();
         println!(
             "α = 0.3, γ = 1.5: {} f64 rows ({} KiB), {} f32 rows ({} KiB)",
             g.coef.len(),

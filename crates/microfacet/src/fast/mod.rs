@@ -1,5 +1,5 @@
 //! Fast paths for renderers, in f64 and f32 ([`Real`]). No parameter validation (the caller
-//! owns α > 0), except [`gtr::Gtr::new`], which validates as the exact type does; the exact,
+//! owns α > 0), except [`gtr::FittedGtr::new`], which validates as the exact type does; the exact,
 //! validated NDF types stay the reference.
 //!
 //! | NDF | module | quantities | how | accuracy (relative; tests/fast.rs) |
@@ -8,28 +8,21 @@
 //! | Beckmann | [`beckmann`] | D, Λ, G1, G2, σ, D·cos, VNDF | D and D·cos closed forms; Λ from a generated table of r(a) = 1 − √π a erfcx(a) (no cancellation); VNDF: the exact warp, table guess + Halley steps | D, Λ: f64 1e-12, f32 2e-5 (D in f64 past the exponent 80, where f32 roundings of it would cost more); VNDF: 1e-11 of the exact warp |
 //! | Double GGX | [`double_ggx`] | D, Λ, σ, G1, G2, D·cos, VNDF | generated octave tables (Λ; D's slope kernel) + asymptotic ends; D·cos: an Exp(1) component (ziggurat), then GGX (one extra uniform); VNDF: the Gamma-1 superposition of GGX, component picked by rejection (t from ziggurats), then spherical caps | 1e-7 required; Λ 4.5e-10, D 6e-12 measured (f64); f32 (Λ natively in f32, a cubic table) 2.9e-7; samplers: the exact distribution (χ²) |
 //! | Exponential | [`exponential`] | D, Λ, σ, G1, G2, D·cos, VNDF | D closed form; generated tables of Λ in q = z² = (2cot θ/α)² for z < 64 (one division, no square root or exponential), of Λe^z beyond, asymptotic ends; D·cos: Gamma(2) radius (one extra uniform); VNDF: rejection in slope space (Gamma radii) | 1e-7 required; 1.9e-9 measured (f64); f32 (q in f64, f32 cubics) 4.8e-7; samplers: exact distribution (χ²) |
-//! | GTR, any γ | [`gtr::Gtr`] | D, Λ, σ, G1, G2, D·cos, VNDF | D = e^{ln c − γ ln x} (c/x, c/x² at γ = 1, 2); D·cos Burley's inversion with the material's constants; Λ (γ ≲ 3–5, no exponential) or ln Λ fitted per material at construction, on octaves of u below ½ and of 1 − u above (no square root or division); VNDF: rejection in slope space, radii from per-material piecewise envelopes (flat in r; alias table) | 1e-7 required; Λ 6.3e-9, D 1.1e-13 measured (f64), where Λ > 1e-280; f32 (per-material f32 cubics where Λ itself is tabulated) 3.8e-7; VNDF: exact distribution (χ²) |
+//! | GTR, any γ | [`gtr::FittedGtr`] | D, Λ, σ, G1, G2, D·cos, VNDF | D = e^{ln c − γ ln x} (c/x, c/x² at γ = 1, 2); D·cos Burley's inversion with the material's constants; Λ (γ ≲ 3–5, no exponential) or ln Λ fitted per material at construction, on octaves of u below ½ and of 1 − u above (no square root or division); VNDF: rejection in slope space, radii from per-material piecewise envelopes (flat in r; alias table) | 1e-7 required; Λ 6.3e-9, D 1.1e-13 measured (f64), where Λ > 1e-280; f32 (per-material f32 cubics where Λ itself is tabulated) 3.8e-7; VNDF: exact distribution (χ²) |
 //!
 //! GGX, Beckmann and GTR D·cos sampling are warps of `u` (the exact samplers' to 1.4e-15);
 //! Double GGX and Exponential D·cos sampling take one extra uniform from a caller's closure.
-//! The VNDF samplers of Double GGX, the Exponential NDF and GTR are rejection samplers: they
-//! sample max(0, w·m) D(m)/σ(w) exactly (no table error), take `u` for the first candidate
-//! and further uniforms from a caller's closure, and are not invertible warps of `u` (the
-//! exact [`crate::Stretched`] and [`crate::Isotropic`] samplers are).
+//! The samplers (D·cos and VNDF for every NDF) are [`crate::Microfacet`]'s implementation and
+//! reached through it. Those of Double GGX, the Exponential NDF and GTR are rejection
+//! samplers: they sample max(0, w·m) D(m)/σ(w) exactly (no table error), take `u` for the
+//! first candidate and further uniforms from `Microfacet`'s `UniformStream`, and are not
+//! invertible warps of `u` (the exact path's samplers, [`crate::Exact`], are).
 //!
 //! ```
-//! use microfacet::fast::{double_ggx, exponential, gtr::Gtr};
-//! use rand::{RngExt, SeedableRng};
-//! let mut rng = rand_xorshift::XorShiftRng::seed_from_u64(7);
-//! let mut next = || rng.random::<f64>(); // any source of uniforms in [0, 1)
-//! let w = [0.6, 0.0, 0.8];
-//! let m = double_ggx::sample_visible(w, 0.3, 0.3, [0.25, 0.75], &mut next);
-//! assert!(m[0] * w[0] + m[1] * w[1] + m[2] * w[2] > 0.0);
-//! let m = exponential::sample_visible(w, 0.5, 0.2, [0.25, 0.75], &mut next);
-//! assert!(m[2] > 0.0);
-//! let material = Gtr::new(0.3, 1.5)?; // per-material tables: ~24 ms (1–1.5 ms at γ = 1, 2; README)
-//! let m = material.sample_visible([0.6f32, 0.0, 0.8], [0.25, 0.75], &mut || 0.5f32);
-//! assert!(m[2] > 0.0);
+//! use microfacet::fast::{ggx, gtr::FittedGtr};
+//! let d = ggx::d(0.9f32, 0.3); // f32 in, f32 out
+//! let material = FittedGtr::new(0.3, 1.5)?; // per-material tables: ~24 ms (1–1.5 ms at γ = 1, 2; README)
+//! assert!(d > 0.0 && material.lambda(0.5f32) > 0.0);
 //! # Ok::<(), microfacet::ParamError>(())
 //! ```
 //!
@@ -635,10 +628,10 @@ pub mod ggx {
     /// A normal distributed as D(m) cos θm (Walter et al. 2007), anisotropic roughness
     /// (αx, αy), u ∈ [0, 1]²: tan²θ = ξ/(1 − ξ) at unit roughness (ξ = u₀), azimuth 2πu₁, then
     /// stretched; m ∝ (αx √ξ cos φ, αy √ξ sin φ, √(1 − ξ)), so u₀ = 1 gives the horizon
-    /// without a division. A warp of u (the exact [`crate::Stretched`] D·cos sampler's, to
+    /// without a division. A warp of u (the exact [`crate::Exact`] D·cos sampler's, to
     /// rounding); evaluated in f64.
     #[inline]
-    pub fn sample_dcos<F: Real>(ax: F, ay: F, u: [F; 2]) -> [F; 3] {
+    pub(crate) fn sample_dcos<F: Real>(ax: F, ay: F, u: [F; 2]) -> [F; 3] {
         super::ggx_dcos(
             ax.to_f64(),
             ay.to_f64(),
@@ -651,7 +644,7 @@ pub mod ggx {
     /// API does) by spherical caps (Dupuy & Benyoub 2023), anisotropic roughness (αx, αy);
     /// `u` uniform in [0, 1)².
     #[inline]
-    pub fn sample_visible<F: Real>(w: [F; 3], ax: F, ay: F, u: [F; 2]) -> [F; 3] {
+    pub(crate) fn sample_visible<F: Real>(w: [F; 3], ax: F, ay: F, u: [F; 2]) -> [F; 3] {
         let w = if w[2] < F::ZERO {
             [-w[0], -w[1], -w[2]]
         } else {
@@ -703,3 +696,6 @@ mod tests {
         assert!(c.is_nan() && s.is_nan());
     }
 }
+
+#[cfg(test)]
+mod sampler_tests;
