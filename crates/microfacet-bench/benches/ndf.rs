@@ -170,6 +170,11 @@ fn main() {
         mixture_vndf(&i, big, lambda, vndf);
         return;
     }
+    if std::env::var("MICROFACET_BENCH").as_deref() == Ok("wavefront") {
+        // Only the wavefront slices.
+        wavefront(&i);
+        return;
+    }
     if std::env::var("MICROFACET_BENCH").as_deref() == Ok("type") {
         // Only the Microfacet type against the fast free functions.
         microfacet_type(&i, big);
@@ -386,6 +391,8 @@ fn main() {
     mixture_vndf(&i, big, fast_ggx_lambda_64, fast_vndf);
     matrix(&i, big);
     batches(&i);
+    microfacet_type(&i, big);
+    wavefront(&i);
 
     // Every other NDF against our GGX Λ.
     let base = Some(("our GGX Λ", ggx_l));
@@ -1121,4 +1128,213 @@ fn microfacet_type(i: &Inputs, calls: usize) {
     both!(microfacet::Beckmann, "Beckmann", fb);
     both!(microfacet::DoubleGgx, "Double GGX", dg);
     both!(microfacet::Exponential, "Exponential", ex);
+}
+
+/// Median ns per element of each pass over 21 rounds in which the passes run in turn.
+fn in_turn<const K: usize>(elements: usize, mut passes: [&mut dyn FnMut(); K]) -> [f64; K] {
+    let mut runs = [const { Vec::new() }; K];
+    for _ in 0..21 {
+        for (f, r) in passes.iter_mut().zip(runs.iter_mut()) {
+            let start = Instant::now();
+            f();
+            r.push(start.elapsed().as_secs_f64() * 1e9 / elements as f64);
+        }
+    }
+    runs.map(median)
+}
+
+/// The wavefront slices (issue 20, item 6): GGX and Beckmann visible normals and the GGX
+/// conductor's eval and sample over 2^14 elements (cache-resident, as a renderer's wavefront
+/// of one material), against a loop over the scalar `Microfacet`/`Bsdf` calls and against
+/// the BSDF's NDF parts (D, G2, the RGB conductor Fresnel, and for sampling the visible
+/// normal) timed as loops of their own.
+fn wavefront(i: &Inputs) {
+    use microfacet::bsdf::{Bsdf, Conductor};
+    use microfacet::fast::batch::{self, GgxConductor, Vectors, VectorsMut};
+    use microfacet::fresnel::{self, Fresnel};
+    const LEN: usize = 1 << 14;
+    println!();
+    println!(
+        "wavefront slices of 2^14 (ns per element, median of 21 rounds run in turn; one material, α = (0.3, 0.15); {:?} dispatch)",
+        batch::simd()
+    );
+    macro_rules! rows {
+        ($F:ty, $vndf:path, $bvndf:path, $eval:path, $sample:path) => {{
+            let wo: [Vec<$F>; 3] = [0, 1, 2].map(|c| {
+                (0..LEN)
+                    .map(|k| {
+                        let w = i.w[k % N];
+                        [w.x, w.y, w.z][c] as $F
+                    })
+                    .collect()
+            });
+            // wi: the mirror of wo about a perturbed normal (mostly the same hemisphere).
+            let wi: [Vec<$F>; 3] = [0, 1, 2].map(|c| {
+                (0..LEN)
+                    .map(|k| {
+                        let w = i.w[(k * 7 + 1) % N];
+                        [w.x, w.y, w.z][c] as $F
+                    })
+                    .collect()
+            });
+            let u0: Vec<$F> = (0..LEN).map(|k| i.xi[k % N][0] as $F).collect();
+            let u1: Vec<$F> = (0..LEN).map(|k| i.xi[k % N][1] as $F).collect();
+            let ggx = Microfacet::<$F, Ggx>::new(0.3, 0.15).unwrap();
+            let beck = Microfacet::<$F, Beckmann>::new(0.3, 0.15).unwrap();
+            let gold = fresnel::Conductor { eta: [0.14, 0.42, 1.37], k: [3.98, 2.38, 1.60] };
+            let b: GgxConductor<$F> = Conductor::new(ggx.clone(), gold);
+            let mut o: [Vec<$F>; 3] = [vec![0.0; LEN], vec![0.0; LEN], vec![0.0; LEN]];
+            let mut o2: [Vec<$F>; 3] = [vec![0.0; LEN], vec![0.0; LEN], vec![0.0; LEN]];
+            let mut p: Vec<$F> = vec![0.0; LEN];
+            let name = stringify!($F);
+            // Visible normals.
+            let [ox, oy, oz] = &mut o;
+            let mut loop_g = || {
+                for k in 0..LEN {
+                    let m = ggx.sample_wm([wo[0][k], wo[1][k], wo[2][k]], [u0[k], u1[k]]);
+                    (ox[k], oy[k], oz[k]) = (m[0], m[1], m[2]);
+                }
+                black_box(&ox);
+            };
+            let [qx, qy, qz] = &mut o2;
+            let mut slice_g = || {
+                $vndf(
+                    &ggx,
+                    Vectors { x: &wo[0], y: &wo[1], z: &wo[2] },
+                    &u0,
+                    &u1,
+                    VectorsMut { x: qx, y: qy, z: qz },
+                );
+                black_box(&qx);
+            };
+            let [g_loop, g_slice] = in_turn(LEN, [&mut loop_g, &mut slice_g]);
+            let [ox, oy, oz] = &mut o;
+            let mut loop_b = || {
+                for k in 0..LEN {
+                    let m = beck.sample_wm([wo[0][k], wo[1][k], wo[2][k]], [u0[k], u1[k]]);
+                    (ox[k], oy[k], oz[k]) = (m[0], m[1], m[2]);
+                }
+                black_box(&ox);
+            };
+            let [qx, qy, qz] = &mut o2;
+            let mut slice_b = || {
+                $bvndf(
+                    &beck,
+                    Vectors { x: &wo[0], y: &wo[1], z: &wo[2] },
+                    &u0,
+                    &u1,
+                    VectorsMut { x: qx, y: qy, z: qz },
+                );
+                black_box(&qx);
+            };
+            let [b_loop, b_slice] = in_turn(LEN, [&mut loop_b, &mut slice_b]);
+            println!(
+                "GGX VNDF {name}: loop {g_loop:5.2} | slice {g_slice:5.2} ({:4.2}× the loop)",
+                g_loop / g_slice
+            );
+            println!(
+                "Beckmann VNDF {name}: loop {b_loop:5.2} | slice {b_slice:5.2} ({:4.2}× the loop; {:4.2}× GGX's slice)",
+                b_loop / b_slice,
+                b_slice / g_slice
+            );
+            // The conductor's eval + pdf, and its parts.
+            let [ox, oy, oz] = &mut o;
+            let mut loop_e = || {
+                for k in 0..LEN {
+                    let (a, c) = ([wo[0][k], wo[1][k], wo[2][k]], [wi[0][k], wi[1][k], wi[2][k]]);
+                    let f = b.eval(a, c);
+                    (ox[k], oy[k], oz[k], p[k]) = (f[0], f[1], f[2], b.pdf(a, c));
+                }
+                black_box(&ox);
+            };
+            let [qx, qy, qz] = &mut o2;
+            let mut pp: Vec<$F> = vec![0.0; LEN];
+            let mut slice_e = || {
+                $eval(
+                    &b,
+                    Vectors { x: &wo[0], y: &wo[1], z: &wo[2] },
+                    Vectors { x: &wi[0], y: &wi[1], z: &wi[2] },
+                    [&mut *qx, &mut *qy, &mut *qz],
+                    &mut pp,
+                );
+                black_box(&qx);
+            };
+            // The parts: D at the normal, G2 of the pair, the RGB Fresnel at its cosine (the
+            // half vector itself not included).
+            let mut acc = vec![0.0 as $F; LEN];
+            let mut parts_e = || {
+                for k in 0..LEN {
+                    let (a, c) = ([wo[0][k], wo[1][k], wo[2][k]], [wi[0][k], wi[1][k], wi[2][k]]);
+                    let fr = gold.eval(a[2].abs());
+                    acc[k] = ggx.d(a) + ggx.g2(a, c) + fr[0] + fr[1] + fr[2];
+                }
+                black_box(&acc);
+            };
+            let [e_loop, e_slice, e_parts] =
+                in_turn(LEN, [&mut loop_e, &mut slice_e, &mut parts_e]);
+            println!(
+                "GGX conductor eval+pdf {name}: loop {e_loop:5.2} | slice {e_slice:5.2} ({:4.2}× the loop) | parts (D, G2, Fresnel) {e_parts:5.2}: loop {:4.2}×, slice {:4.2}× the parts",
+                e_loop / e_slice,
+                e_loop / e_parts,
+                e_slice / e_parts
+            );
+            // The conductor's sample, and its parts (the visible normal, D, G2, Fresnel).
+            let [ox, oy, oz] = &mut o;
+            let mut loop_s = || {
+                for k in 0..LEN {
+                    let a = [wo[0][k], wo[1][k], wo[2][k]];
+                    match b.sample(a, 0.0, [u0[k], u1[k]]) {
+                        Some(s) => (ox[k], oy[k], oz[k], p[k]) = (s.f[0], s.f[1], s.f[2], s.pdf),
+                        None => p[k] = 0.0,
+                    }
+                }
+                black_box(&ox);
+            };
+            let [qx, qy, qz] = &mut o2;
+            let (mut wx, mut wy, mut wz) = (vec![0.0; LEN], vec![0.0; LEN], vec![0.0; LEN]);
+            let mut slice_s = || {
+                $sample(
+                    &b,
+                    Vectors { x: &wo[0], y: &wo[1], z: &wo[2] },
+                    &u0,
+                    &u1,
+                    VectorsMut { x: &mut wx, y: &mut wy, z: &mut wz },
+                    [&mut *qx, &mut *qy, &mut *qz],
+                    &mut pp,
+                );
+                black_box(&qx);
+            };
+            let mut parts_s = || {
+                for k in 0..LEN {
+                    let a = [wo[0][k], wo[1][k], wo[2][k]];
+                    let m = ggx.sample_wm(a, [u0[k], u1[k]]);
+                    let fr = gold.eval(m[2]);
+                    acc[k] = ggx.d(m) + ggx.g2(a, m) + fr[0] + fr[1] + fr[2];
+                }
+                black_box(&acc);
+            };
+            let [s_loop, s_slice, s_parts] =
+                in_turn(LEN, [&mut loop_s, &mut slice_s, &mut parts_s]);
+            println!(
+                "GGX conductor sample {name}: loop {s_loop:5.2} | slice {s_slice:5.2} ({:4.2}× the loop) | parts (VNDF, D, G2, Fresnel) {s_parts:5.2}: loop {:4.2}×, slice {:4.2}× the parts",
+                s_loop / s_slice,
+                s_loop / s_parts,
+                s_slice / s_parts
+            );
+        }};
+    }
+    rows!(
+        f32,
+        batch::ggx_sample_visible_f32,
+        batch::beckmann_sample_visible_f32,
+        batch::ggx_conductor_eval_f32,
+        batch::ggx_conductor_sample_f32
+    );
+    rows!(
+        f64,
+        batch::ggx_sample_visible_f64,
+        batch::beckmann_sample_visible_f64,
+        batch::ggx_conductor_eval_f64,
+        batch::ggx_conductor_sample_f64
+    );
 }

@@ -179,6 +179,11 @@ impl<F: Real, D: Distribution<F>, Fr: Fresnel<F, N>, const N: usize> Conductor<F
     pub fn distribution(&self) -> &D {
         &self.dist
     }
+
+    /// (The slice kernels' view: the Fresnel term and the masking.)
+    pub(crate) fn fresnel_masking(&self) -> (&Fr, Masking) {
+        (&self.fresnel, self.masking)
+    }
 }
 
 impl<F: Real, D: Distribution<F>, Fr: Fresnel<F, N>, const N: usize> Bsdf<F>
