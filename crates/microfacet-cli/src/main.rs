@@ -4,6 +4,7 @@
 mod bsdf;
 mod eval;
 mod report;
+mod report_bsdf;
 mod sample;
 mod svg;
 mod verify;

@@ -18,7 +18,7 @@ use std::time::Instant;
 const ALPHAS: [f64; 3] = [0.1, 0.3, 0.6];
 const GAMMAS: [f64; 4] = [0.5, 1.0, 1.5, 2.5];
 
-fn grid(a: f64, b: f64, n: usize) -> Vec<f64> {
+pub(crate) fn grid(a: f64, b: f64, n: usize) -> Vec<f64> {
     (0..n)
         .map(|i| a + (b - a) * i as f64 / (n - 1) as f64)
         .collect()
@@ -73,7 +73,7 @@ fn heading(kind: NdfKind) -> &'static str {
 }
 
 /// The short name of an NDF in plot titles.
-fn short(kind: NdfKind) -> &'static str {
+pub(crate) fn short(kind: NdfKind) -> &'static str {
     match kind {
         NdfKind::Beckmann => "Beckmann",
         NdfKind::Ggx => "GGX",
@@ -826,7 +826,7 @@ beyond them in the repository's <code>docs/derivations.md</code>.</p>\
         let _ = write!(body, r##"<a href="#{k}">{}</a>"##, short(k));
     }
     body.push_str(
-        r##"<a href="#comparison">comparison</a><a href="#verify">identity table</a></nav>"##,
+        r##"<a href="#comparison">comparison</a><a href="#bsdf">BSDFs</a><a href="#verify">identity table</a></nav>"##,
     );
 
     for kind in NdfKind::ALL {
@@ -865,6 +865,15 @@ beyond them in the repository's <code>docs/derivations.md</code>.</p>\
     progress("comparison");
     body.push_str(r#"<section id="comparison"><h2>Comparison of the NDFs</h2><div class="plots">"#);
     for p in comparison_plots() {
+        body.push_str(&p.to_html());
+    }
+    body.push_str("</div></section>");
+
+    progress("BSDFs");
+    body.push_str(
+        r#"<section id="bsdf"><h2>Rough conductor and dielectric BSDFs, every NDF</h2><p class="def">The renderer-facing types (<code>Microfacet</code>, <code>bsdf::Conductor</code>, <code>bsdf::Dielectric</code>, f64, pbrt-v4's conventions): their lobes, their samplers against their pdfs, and the energy a single-scattering BSDF loses.</p><div class="plots">"#,
+    );
+    for p in crate::report_bsdf::plots() {
         body.push_str(&p.to_html());
     }
     body.push_str("</div></section>");

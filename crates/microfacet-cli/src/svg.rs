@@ -67,6 +67,8 @@ pub struct Plot {
     pub series: Vec<Series>,
     /// What is plotted, its formula and its source (HTML-escaped when rendered).
     pub caption: String,
+    /// One unit is as long on x as on y (polar plots drawn as curves in a plane).
+    pub equal: bool,
 }
 
 impl Plot {
@@ -90,6 +92,13 @@ impl Plot {
 
     pub fn with(mut self, s: Series) -> Self {
         self.series.push(s);
+        self
+    }
+
+    /// Equal scales on x and y: the ranges are widened about their centres until a unit
+    /// spans as many pixels on both axes.
+    pub fn equal_aspect(mut self) -> Self {
+        self.equal = true;
         self
     }
 
@@ -144,6 +153,14 @@ impl Plot {
         }
         pad(&mut x0, &mut x1, 0.0);
         pad(&mut y0, &mut y1, if self.log_y { 0.0 } else { 0.04 });
+        if self.equal && !self.log_y {
+            // Units per pixel on each axis; the smaller is widened to the larger.
+            let (wx, wy) = (W - LEFT - RIGHT, H - TOP - BOTTOM);
+            let k = ((x1 - x0) / wx).max((y1 - y0) / wy);
+            let (cx, cy) = (0.5 * (x0 + x1), 0.5 * (y0 + y1));
+            (x0, x1) = (cx - 0.5 * k * wx, cx + 0.5 * k * wx);
+            (y0, y1) = (cy - 0.5 * k * wy, cy + 0.5 * k * wy);
+        }
         let px = |x: f64| LEFT + (x - x0) / (x1 - x0) * (W - LEFT - RIGHT);
         let py = |y: f64| H - BOTTOM - (y.clamp(y0, y1) - y0) / (y1 - y0) * (H - TOP - BOTTOM);
 

@@ -6,7 +6,7 @@
 use std::path::{Path, PathBuf};
 use std::process::Command;
 
-const SECTIONS: [&str; 7] = [
+const SECTIONS: [&str; 8] = [
     "beckmann",
     "ggx",
     "gtr",
@@ -14,6 +14,7 @@ const SECTIONS: [&str; 7] = [
     "exponential",
     "comparison",
     "verify",
+    "bsdf",
 ];
 
 /// The browser half of the legend check (see `report_is_complete_and_renders`).
@@ -130,7 +131,7 @@ fn report_is_complete_and_renders() {
         "nothing from the network"
     );
     let plots = svgs(&html);
-    assert!(plots.len() >= 40, "{} plots", plots.len());
+    assert!(plots.len() >= 60, "{} plots", plots.len());
     for (i, svg) in plots.iter().enumerate() {
         let data = svg.matches("class=\"data\"").count();
         assert!(
