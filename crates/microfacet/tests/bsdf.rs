@@ -269,13 +269,9 @@ fn check_bsdf<B: Bsdf<f64>>(
     eta: Option<f64>,
     n: usize,
     level: f64,
-    pushforward: Option<&dyn Fn(&mut dyn FnMut([f64; 3], f64))>,
+    expected: Option<&[Vec<f64>; 2]>,
 ) {
-    let res = 24;
-    // The reference lobe: as wide as the BSDF's, within [0.15, 0.5] (at grazing incidence
-    // the reflection lobe is squashed against the horizon: wider cells there integrated
-    // the pdf only to 4e-3 at α = 1).
-    let ar = (1.5 * alpha).clamp(0.15, 0.5);
+    let (res, ar) = (RES, reference_alpha(alpha));
     let mut integral = 0.0;
     let mut kept = 0usize;
     for (side, axis) in lobe_axes(wo, eta).into_iter().enumerate() {
@@ -298,17 +294,9 @@ fn check_bsdf<B: Bsdf<f64>>(
             Some(wi)
         };
         let seed = 1000 + side as u64;
-        let r = match pushforward {
+        let r = match expected {
             None => chi2_test_region(&mut draw, |wi| b.pdf(wo, wi.into()), &coords, n, res, seed),
-            Some(nodes) => {
-                let mut expected = vec![0.0; res * res];
-                nodes(&mut |wi, weight| {
-                    if let Some(c) = cell_of(&coords, Vec3::from(wi), res) {
-                        expected[c] += n as f64 * weight;
-                    }
-                });
-                chi2_test_region_expected(&mut draw, &expected, &coords, n, res, seed)
-            }
+            Some(e) => chi2_test_region_expected(&mut draw, &e[side], &coords, n, res, seed),
         };
         kept = count;
         integral += r.pdf_integral;
@@ -342,12 +330,24 @@ fn check_bsdf<B: Bsdf<f64>>(
     }
 }
 
-/// A BSDF's sampled directions as a quadrature (a conductor for `eta` None): the visible-normal density on a
-/// 2500 × 2500 midpoint grid of GGX's D·cos warp about the normal (at `reference`, the
+/// The cells of each χ² grid (24 × 24 per lobe hemisphere).
+const RES: usize = 24;
+
+/// The reference lobe of the χ² cells: as wide as the BSDF's, within [0.15, 0.5] (at grazing
+/// incidence the reflection lobe is squashed against the horizon: wider cells there
+/// integrated the pdf only to 4e-3 at α = 1).
+fn reference_alpha(alpha: f64) -> f64 {
+    (1.5 * alpha).clamp(0.15, 0.5)
+}
+
+/// The sampled directions of several BSDFs on one distribution as a quadrature (per BSDF
+/// `etas[b]`: None for a conductor, Some(η) for a dielectric): the visible-normal density on
+/// a 2500 × 2500 midpoint grid of GGX's D·cos warp about the normal (at `reference`, the
 /// smaller α: a node every few hundredths of the lobe's width near the normal, where the
-/// Exponential NDF has its cusp), each node carried to its reflected and refracted directions with weights R
-/// and T (a conductor: the reflection, weight 1; the sampler's own rejections dropped), and
-/// handed to `node`.
+/// Exponential NDF has its cusp), each node carried to its reflected and refracted
+/// directions with weights R and T (a conductor: the reflection, weight 1; the sampler's own
+/// rejections dropped), and handed to `node(b, wi, weight)`. One pass for every BSDF (the
+/// visible density, the grid's cost, is theirs in common).
 ///
 /// Why: for narrow lobes at grazing incidence the transmitted angle is stationary at the
 /// critical angle (the refraction of a ray grazing its facet), so at θo ≥ 80° the pdf of
@@ -361,9 +361,9 @@ fn check_bsdf<B: Bsdf<f64>>(
 fn pushforward<D: Distribution<f64>>(
     dist: &D,
     wo: [f64; 3],
-    eta: Option<f64>,
+    etas: &[Option<f64>],
     reference: f64,
-    node: &mut dyn FnMut([f64; 3], f64),
+    node: &mut dyn FnMut(usize, [f64; 3], f64),
 ) {
     let grid = 2500;
     let coords = AxisCoordinates::new(reference, Vec3::new(0.0, 0.0, 1.0));
@@ -381,14 +381,17 @@ fn pushforward<D: Distribution<f64>>(
             if !(weight > 0.0) {
                 continue;
             }
-            let r = eta.map_or(1.0, |eta| fresnel::dielectric(dot(wo, wm), eta));
             let wr = microfacet::frame::reflect(wo, wm);
-            if wr[2] * wo[2] > 1e-150 {
-                node(wr, weight * r);
-            }
-            if let Some((wt, _)) = eta.and_then(|eta| refract(wo, wm, eta)) {
-                if wt[2] * wo[2] < -1e-150 {
-                    node(wt, weight * (1.0 - r));
+            let above = wr[2] * wo[2] > 1e-150;
+            for (b, &eta) in etas.iter().enumerate() {
+                let r = eta.map_or(1.0, |eta| fresnel::dielectric(dot(wo, wm), eta));
+                if above {
+                    node(b, wr, weight * r);
+                }
+                if let Some((wt, _)) = eta.and_then(|eta| refract(wo, wm, eta)) {
+                    if wt[2] * wo[2] < -1e-150 {
+                        node(b, wt, weight * (1.0 - r));
+                    }
                 }
             }
         }
@@ -435,14 +438,29 @@ fn bsdf_grid(full: bool) {
                         // Grazing incidence: expected counts pushed forward from the normals
                         // (see `pushforward`).
                         let grazing = wo[2] < 0.2;
-                        let reference = ax.min(ay);
+                        let etas = [None, Some(ETAS[0]), Some(ETAS[1])];
+                        // Per BSDF and lobe side, the expected counts (grazing incidence).
+                        let expected: Option<Vec<[Vec<f64>; 2]>> = grazing.then(|| {
+                            let cells: Vec<[AxisCoordinates; 2]> = etas
+                                .iter()
+                                .map(|&e| lobe_axes(wo, e).map(|axis| AxisCoordinates::new(reference_alpha(alpha), axis)))
+                                .collect();
+                            let mut ex = vec![[vec![0.0; RES * RES], vec![0.0; RES * RES]]; etas.len()];
+                            pushforward(x, wo, &etas, ax.min(ay), &mut |b, wi, weight| {
+                                for side in 0..2 {
+                                    if let Some(c) = cell_of(&cells[b][side], Vec3::from(wi), RES) {
+                                        ex[b][side][c] += n as f64 * weight;
+                                    }
+                                }
+                            });
+                            ex
+                        });
+                        let ex = |b: usize| expected.as_ref().map(|e| &e[b]);
                         let c = Conductor::new(x.clone(), fresnel::Conductor { eta: [0.2], k: [3.9] });
-                        let nodes = |f: &mut dyn FnMut([f64; 3], f64)| pushforward(x, wo, None, reference, f);
-                        check_bsdf(&format!("conductor {label}"), &c, wo, alpha, None, n, level, grazing.then_some(&nodes as &dyn Fn(&mut dyn FnMut([f64; 3], f64))));
-                        for eta in ETAS {
+                        check_bsdf(&format!("conductor {label}"), &c, wo, alpha, None, n, level, ex(0));
+                        for (j, eta) in ETAS.into_iter().enumerate() {
                             let d = Dielectric::new(x.clone(), eta);
-                            let nodes = |f: &mut dyn FnMut([f64; 3], f64)| pushforward(x, wo, Some(eta), reference, f);
-                            check_bsdf(&format!("dielectric η = {eta:.3} {label}"), &d, wo, alpha, Some(eta), n, level, grazing.then_some(&nodes as &dyn Fn(&mut dyn FnMut([f64; 3], f64))));
+                            check_bsdf(&format!("dielectric η = {eta:.3} {label}"), &d, wo, alpha, Some(eta), n, level, ex(j + 1));
                         }
                     });
                 }
