@@ -170,6 +170,11 @@ fn main() {
         mixture_vndf(&i, big, lambda, vndf);
         return;
     }
+    if std::env::var("MICROFACET_BENCH").as_deref() == Ok("walk") {
+        // Only the microsurface random walk.
+        walks(&i);
+        return;
+    }
     if std::env::var("MICROFACET_BENCH").as_deref() == Ok("wavefront") {
         // Only the wavefront slices.
         wavefront(&i);
@@ -393,6 +398,7 @@ fn main() {
     batches(&i);
     microfacet_type(&i, big);
     wavefront(&i);
+    walks(&i);
 
     // Every other NDF against our GGX Λ.
     let base = Some(("our GGX Λ", ggx_l));
@@ -1336,5 +1342,63 @@ fn wavefront(i: &Inputs) {
         batch::beckmann_sample_visible_f64,
         batch::ggx_conductor_eval_f64,
         batch::ggx_conductor_sample_f64
+    );
+}
+
+/// The microsurface random walk (issue 21): walks per second for an F = 1 conductor at
+/// α = 0.5, μ = 0.5, every NDF, one core and both cores (rayon::join of two halves with
+/// their own seeds), in the same run as the fast GGX VNDF sampler (the walk's inner step).
+fn walks(i: &Inputs) {
+    use microfacet::fresnel::One;
+    use microfacet::walk::{albedo, Heights, Microsurface, MirrorFacets};
+    println!();
+    let vndf = time(400_000, |k| {
+        let w = i.w[k];
+        type_vndf::<Ggx, f64>([w.x, w.y, w.z], 0.5, black_box(i.xi[k]))[2]
+    });
+    println!("microsurface walks (F = 1 conductor, α = 0.5, μ = 0.5; million walks per second, median of 5; GGX VNDF in this run {vndf:.1} ns)");
+    let wo = [0.75f64.sqrt(), 0.0, 0.5];
+    macro_rules! rate {
+        ($name:expr, $d:expr) => {{
+            let s = Microsurface::new($d, Heights::Uniform);
+            let n = 400_000u64;
+            let mut one = Vec::new();
+            let mut two = Vec::new();
+            for r in 0..5 {
+                let t = Instant::now();
+                black_box(albedo(&s, &MirrorFacets(One::<1>), wo, n, r));
+                one.push(n as f64 / t.elapsed().as_secs_f64() / 1e6);
+                let t = Instant::now();
+                let (a, b) = rayon::join(
+                    || albedo(&s, &MirrorFacets(One::<1>), wo, n, 2 * r + 100),
+                    || albedo(&s, &MirrorFacets(One::<1>), wo, n, 2 * r + 101),
+                );
+                black_box((a, b));
+                two.push(2.0 * n as f64 / t.elapsed().as_secs_f64() / 1e6);
+            }
+            let (one, two) = (median(one), median(two));
+            println!(
+                "{:24} {one:6.2} M/s one core | {two:6.2} M/s rayon ({:4.2}×)",
+                $name,
+                two / one
+            );
+        }};
+    }
+    rate!("GGX", Microfacet::<f64, Ggx>::new(0.5, 0.5).unwrap());
+    rate!(
+        "Beckmann",
+        Microfacet::<f64, Beckmann>::new(0.5, 0.5).unwrap()
+    );
+    rate!(
+        "Double GGX",
+        Microfacet::<f64, DoubleGgx>::new(0.5, 0.5).unwrap()
+    );
+    rate!(
+        "Exponential",
+        Microfacet::<f64, Exponential>::new(0.5, 0.5).unwrap()
+    );
+    rate!(
+        "GTR γ = 1.5",
+        Microfacet::<f64, Gtr>::gtr(0.5, 0.5, 1.5).unwrap()
     );
 }

@@ -66,7 +66,7 @@ fn bsdf_line(
     }
 }
 
-fn string<'a>(obj: &'a Map<String, Value>, name: &str) -> Result<&'a str, String> {
+pub(crate) fn string<'a>(obj: &'a Map<String, Value>, name: &str) -> Result<&'a str, String> {
     obj.get(name)
         .ok_or_else(|| format!("missing field '{name}'"))?
         .as_str()
@@ -74,7 +74,7 @@ fn string<'a>(obj: &'a Map<String, Value>, name: &str) -> Result<&'a str, String
 }
 
 /// "alpha": a or [ax, ay].
-fn alpha(obj: &Map<String, Value>) -> Result<(f64, f64), String> {
+pub(crate) fn alpha(obj: &Map<String, Value>) -> Result<(f64, f64), String> {
     match obj.get("alpha") {
         Some(Value::Array(a)) => {
             let v = numbers(a, "alpha", 2)?;
@@ -119,7 +119,7 @@ fn direction(obj: &Map<String, Value>, name: &str) -> Result<[f64; 3], String> {
 }
 
 /// η (scalar or RGB) and k (RGB), per channel.
-fn spectrum(obj: &Map<String, Value>, name: &str) -> Result<[f64; 3], String> {
+pub(crate) fn spectrum(obj: &Map<String, Value>, name: &str) -> Result<[f64; 3], String> {
     match obj.get(name) {
         Some(Value::Array(a)) => {
             let v = numbers(a, name, 3)?;

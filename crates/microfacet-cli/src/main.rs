@@ -1,6 +1,7 @@
 //! `microfacet`: the command-line face of the library. One file per subcommand; this file only
 //! dispatches and turns failures into one-line messages with a non-zero exit code.
 
+mod albedo;
 mod bsdf;
 mod eval;
 mod report;
@@ -51,6 +52,19 @@ const BSDF_USAGE: &str = "\
       alpha: a or [ax, ay]; gamma for gtr (anisotropic only at gamma 2); conductor:
       eta and k (number or [r,g,b]; neither: F = 1); dielectric: eta (one number);
       g2: correlated (default) or separable. Directions are normalised. Errors as in eval.
+";
+
+const ALBEDO_USAGE: &str = "\
+  microfacet albedo
+      the albedo of a rough microsurface by scattering order, from the random walk of
+      Heitz et al. 2016 (multiple scattering), JSON lines in, one line out per line, e.g.
+      {\"ndf\":\"ggx\",\"alpha\":1,\"mu\":0.5,\"walks\":100000,\"seed\":1}
+        -> {\"orders\":[E1,E2,E3,E4plus],\"stderr\":[...],\"total\":E,\"total_stderr\":e}
+      material: conductor (default; eta and k numbers or [r,g,b], channel 0 used;
+      neither: F = 1) or diffuse (Lambertian facets, \"rho\" in [0,1], default 1);
+      alpha: a or [ax, ay]; gamma for gtr; heights: uniform (default) or gaussian;
+      \"method\":\"quadrature\" -> {\"e1\":value}, the F = 1 conductor's single
+      scattering by deterministic quadrature. Errors as in eval.
 ";
 
 const REPORT_USAGE: &str = "\
@@ -118,6 +132,8 @@ fn main() -> ExitCode {
         Some("sample") if help => usage(SAMPLE_USAGE),
         Some("report") if help => usage(REPORT_USAGE),
         Some("bsdf") if help => usage(BSDF_USAGE),
+        Some("albedo") if help => usage(ALBEDO_USAGE),
+        Some("albedo") => albedo::run(&rest),
         Some("bsdf") => bsdf::run(&rest),
         Some("verify") => verify::run(&rest),
         Some("eval") => eval::run(&rest),
@@ -126,7 +142,7 @@ fn main() -> ExitCode {
         Some("-h" | "--help" | "help") => {
             print!(
                 "microfacet {} — microfacet NDFs, exact and verified\n\nusage:\n\
-                 {VERIFY_USAGE}{EVAL_USAGE}{BSDF_USAGE}{SAMPLE_USAGE}{REPORT_USAGE}{USAGE_TAIL}",
+                 {VERIFY_USAGE}{EVAL_USAGE}{BSDF_USAGE}{ALBEDO_USAGE}{SAMPLE_USAGE}{REPORT_USAGE}{USAGE_TAIL}",
                 env!("CARGO_PKG_VERSION")
             );
             Ok(ExitCode::SUCCESS)

@@ -507,3 +507,61 @@ fn bsdf_reports_bad_lines_and_goes_on() {
     }
     assert!(got[8]["f"][0].as_f64().unwrap() > 0.0);
 }
+
+#[test]
+fn albedo_by_order_and_by_quadrature() {
+    let input = r#"{"ndf":"ggx","alpha":1,"mu":0.5,"walks":100000,"seed":1}
+{"ndf":"ggx","alpha":1,"mu":0.5,"method":"quadrature"}
+{"ndf":"gtr","alpha":0.3,"gamma":1.5,"mu":0.5,"walks":20000,"heights":"gaussian"}
+{"ndf":"beckmann","alpha":0.5,"mu":0.7,"walks":10000,"material":"diffuse","rho":0.5}
+"#;
+    let out = microfacet(&["albedo"], input);
+    assert_eq!(
+        out.status.code(),
+        Some(0),
+        "{}",
+        String::from_utf8_lossy(&out.stderr)
+    );
+    let got = lines(&out.stdout);
+    assert_eq!(got.len(), 4);
+    // F = 1: every walk keeps its energy; order 1 against the quadrature within 4σ.
+    let e1 = got[1]["e1"].as_f64().unwrap();
+    let (walk1, sd) = (
+        got[0]["orders"][0].as_f64().unwrap(),
+        got[0]["stderr"][0].as_f64().unwrap(),
+    );
+    assert_eq!(got[0]["total"].as_f64(), Some(1.0));
+    assert!((walk1 - e1).abs() < 4.0 * sd, "{walk1} ± {sd} vs {e1}");
+    assert_eq!(got[2]["total"].as_f64(), Some(1.0));
+    // Diffuse facets of albedo 0.5 keep less than half... more than a quarter.
+    let t = got[3]["total"].as_f64().unwrap();
+    assert!(t > 0.25 && t < 0.5, "{t}");
+}
+
+#[test]
+fn albedo_reports_bad_lines_and_goes_on() {
+    let input = r#"{"ndf":"ggx","alpha":1,"mu":0.5,"walks":1e30}
+{"ndf":"ggx","alpha":1,"mu":1.5,"walks":10}
+{"ndf":"ggx","alpha":1,"mu":0.5,"walks":10,"material":"dielectric","eta":1.5}
+{"ndf":"ggx","alpha":1,"mu":0.5,"walks":10,"eta":0.2}
+{"ndf":"ggx","alpha":1,"mu":0.5,"walks":10,"spin":1}
+{"ndf":"ggx","alpha":1,"mu":0.5,"method":"quadrature","material":"diffuse"}
+{"ndf":"ggx","alpha":1,"mu":0.5,"walks":10}
+"#;
+    let out = microfacet(&["albedo"], input);
+    assert_eq!(out.status.code(), Some(1));
+    let got = lines(&out.stdout);
+    assert_eq!(got.len(), 7);
+    for (g, needle) in got[..6].iter().zip([
+        "'walks'",
+        "'mu'",
+        "not built yet",
+        "both 'eta' and 'k'",
+        "unknown field 'spin'",
+        "quadrature",
+    ]) {
+        let e = g["error"].as_str().unwrap_or_else(|| panic!("{g}"));
+        assert!(e.contains(needle), "{e} lacks {needle}");
+    }
+    assert_eq!(got[6]["total"].as_f64(), Some(1.0));
+}

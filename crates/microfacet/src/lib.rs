@@ -110,6 +110,7 @@ pub mod stochastic;
 pub mod vec3;
 pub mod verify;
 pub mod visible;
+pub mod walk;
 
 pub use beckmann::Beckmann;
 pub use distribution::{Distribution, Exact, Microfacet, Sample};

@@ -118,6 +118,9 @@ impl Distribution<Vec3> for ExponentialChi3 {
 pub struct VisibleMixture {
     target: crate::microsurface::Stretched,
     wi: Vec3,
+    /// The posterior's normalisation ∫ w(t) σ_t dt (a function of the target and wi alone,
+    /// integrated once here rather than per sample).
+    total: f64,
 }
 
 impl VisibleMixture {
@@ -133,11 +136,29 @@ impl VisibleMixture {
             .map_err(|_| "alpha outside [1e-6, 1e6]")?;
         match kind {
             crate::UnitSlopes::Beckmann => Err("Beckmann is not a superposition in this family"),
-            _ => Ok(VisibleMixture {
-                target,
-                wi: if wi.z < 0.0 { -wi } else { wi }.normalize(),
-            }),
+            _ => {
+                let mut m = VisibleMixture {
+                    target,
+                    wi: if wi.z < 0.0 { -wi } else { wi }.normalize(),
+                    total: 0.0,
+                };
+                m.total = crate::quad::integrate_to_inf(|t| m.density(t), 0.0, 1.0, 1e-13).value;
+                Ok(m)
+            }
         }
+    }
+
+    /// The direction in the α = 1 configuration of the target.
+    fn w1(&self) -> Vec3 {
+        self.target.stretch(self.wi).normalize()
+    }
+
+    /// The posterior density of the mixing variable t, unnormalised: w(t) σ_t(w1).
+    fn density(&self, t: f64) -> f64 {
+        use crate::microsurface::Microsurface;
+        let (mixing, component) = self.parts();
+        let a = mixing.roughness(1.0, t);
+        mixing.pdf(1.0, t) * crate::microsurface::Stretched::raw(component, a, a).sigma(self.w1())
     }
 
     /// (mixing, component kind).
@@ -156,16 +177,22 @@ impl Distribution<Vec3> for VisibleMixture {
     fn sample<R: Rng + ?Sized>(&self, rng: &mut R) -> Vec3 {
         use crate::microsurface::Microsurface;
         let (mixing, component) = self.parts();
-        // The direction in the α = 1 configuration of the target.
-        let w1 = self.target.stretch(self.wi).normalize();
-        let sigma_t = |t: f64| {
-            let a = mixing.roughness(1.0, t);
-            crate::microsurface::Stretched::raw(component, a, a).sigma(w1)
+        let w1 = self.w1();
+        let density = |t: f64| self.density(t);
+        let total = self.total;
+        // Posterior CDF of t by quadrature, inverted in ln t; each of Newton's steps
+        // integrates only from the previous iterate (the steps shrink as it converges).
+        let memo = std::cell::Cell::new((0.0f64, 0.0f64));
+        let cdf = |t: f64| {
+            let (t0, c0) = memo.get();
+            let c = if t >= t0 {
+                c0 + crate::quad::integrate(density, t0, t, 1e-13).value
+            } else {
+                c0 - crate::quad::integrate(density, t, t0, 1e-13).value
+            };
+            memo.set((t, c));
+            c / total
         };
-        let density = |t: f64| mixing.pdf(1.0, t) * sigma_t(t);
-        // Posterior CDF of t by quadrature, inverted in ln t.
-        let total = crate::quad::integrate_to_inf(density, 0.0, 1.0, 1e-13).value;
-        let cdf = |t: f64| crate::quad::integrate(density, 0.0, t, 1e-13).value / total;
         let xi = rng.random::<f64>();
         let s = crate::solve::newton_bracketed(
             |s| cdf(s.exp()) - xi,

@@ -311,31 +311,45 @@ fn visible_mixture_posterior_sampler() {
             }
         }
     }
+    let mut all = Vec::new();
     for kind in [
         UnitSlopes::DoubleGgx,
         UnitSlopes::Exponential,
         UnitSlopes::Ggx,
     ] {
         for &(ax, ay, deg) in &cases {
-            let nk = match kind {
-                UnitSlopes::DoubleGgx => NdfKind::DoubleGgx,
-                UnitSlopes::Exponential => NdfKind::Exponential,
-                _ => NdfKind::Ggx,
-            };
-            let target = Exact::new(nk, ax, ay, None).unwrap();
-            let wi = direction(deg);
-            let sampler = VisibleMixture::new(kind, ax, ay, wi).unwrap();
-            let coords = reference(ax, ay);
-            let mut rng = XorShiftRng::seed_from_u64(deg as u64 + kind as u64 + (ax * 1e4) as u64);
-            check_visible(
-                &format!("{kind:?} α=({ax},{ay}) visible θi={deg}° (posterior)"),
-                &target,
-                wi,
-                &coords,
-                5_000,
-                0,
-                |_| sampler.sample(&mut rng),
-            );
+            all.push((kind, ax, ay, deg));
         }
     }
+    // The cases are independent: spread them over the cores (each keeps its own seed).
+    let threads = std::thread::available_parallelism().map_or(1, |n| n.get());
+    std::thread::scope(|scope| {
+        for t in 0..threads {
+            let all = &all;
+            scope.spawn(move || {
+                for &(kind, ax, ay, deg) in all.iter().skip(t).step_by(threads) {
+                    let nk = match kind {
+                        UnitSlopes::DoubleGgx => NdfKind::DoubleGgx,
+                        UnitSlopes::Exponential => NdfKind::Exponential,
+                        _ => NdfKind::Ggx,
+                    };
+                    let target = Exact::new(nk, ax, ay, None).unwrap();
+                    let wi = direction(deg);
+                    let sampler = VisibleMixture::new(kind, ax, ay, wi).unwrap();
+                    let coords = reference(ax, ay);
+                    let mut rng =
+                        XorShiftRng::seed_from_u64(deg as u64 + kind as u64 + (ax * 1e4) as u64);
+                    check_visible(
+                        &format!("{kind:?} α=({ax},{ay}) visible θi={deg}° (posterior)"),
+                        &target,
+                        wi,
+                        &coords,
+                        5_000,
+                        0,
+                        |_| sampler.sample(&mut rng),
+                    );
+                }
+            });
+        }
+    });
 }

@@ -1588,3 +1588,64 @@ fuzz_slices!(
     microfacet::fast::batch::ggx_conductor_sample_f32,
     2e-6
 );
+
+/// The microsurface random walk (`walk`): hostile outgoing directions (on and below the
+/// horizon, non-unit, NaN), every accepted α (anisotropic), both height distributions,
+/// mirror and diffuse facets: no panic; a walk from wo.z ≤ 0 or NaN is `None`; otherwise the
+/// exit direction is a finite upward unit vector, the order ≥ 1, and the weight in [0, 1].
+#[test]
+fn walk_contract() {
+    use microfacet::fresnel::One;
+    use microfacet::walk::{DiffuseFacets, Heights, Microsurface, MirrorFacets, WalkRng};
+    let mut r = Rng::new(41);
+    let mut fails = Failures::default();
+    let mut rng = WalkRng::new(seed(41));
+    for _ in 0..20 * scale() {
+        let (ax, ay) = (alpha(&mut r), alpha(&mut r));
+        let heights = r.pick(&[Heights::Uniform, Heights::Gaussian]);
+        let s = Microsurface::new(Microfacet::<f64, Ggx>::new(ax, ay).unwrap(), heights);
+        let b = Microsurface::new(Microfacet::<f64, Beckmann>::new(ax, ay).unwrap(), heights);
+        for _ in 0..50 {
+            let w = direction(&mut r, false).to_unit();
+            let wo: [f64; 3] = w.into();
+            let ctx = || format!("α=({ax:e},{ay:e}) {heights:?} wo={wo:?}");
+            let results = no_panic("walk", ctx(), || {
+                [
+                    s.walk(&MirrorFacets(One::<1>), wo, &mut rng)
+                        .map(|x| (x.w, x.weight[0], x.order)),
+                    b.walk(&MirrorFacets(One::<1>), wo, &mut rng)
+                        .map(|x| (x.w, x.weight[0], x.order)),
+                    s.walk(&DiffuseFacets(0.8), wo, &mut rng)
+                        .map(|x| (x.w, x.weight[0], x.order)),
+                ]
+            });
+            for res in results {
+                match res {
+                    // (A walk is cut at MAX_ORDER bounces: the mean order is about 3α.)
+                    None => fails
+                        .check(wo[2].is_nan() || wo[2] <= 0.0 || ax.max(ay) > 100.0, || {
+                            format!("walk failed at {}", ctx())
+                        }),
+                    Some((w, weight, order)) => {
+                        let len = (w[0] * w[0] + w[1] * w[1] + w[2] * w[2]).sqrt();
+                        fails.check(
+                            wo[2] > 0.0
+                                && (len - 1.0).abs() < 1e-9
+                                && w[2] >= 0.0
+                                && order >= 1
+                                && (0.0..=1.0).contains(&weight),
+                            || {
+                                format!(
+                                    "walk gave w={w:?} weight {weight} order {order} at {}",
+                                    ctx()
+                                )
+                            },
+                        );
+                    }
+                }
+            }
+            evals(3);
+        }
+    }
+    fails.finish("walk_contract");
+}

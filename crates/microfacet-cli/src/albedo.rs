@@ -1,0 +1,211 @@
+//! `microfacet albedo`: the albedo of a rough microsurface by scattering order, from the
+//! random walk of Heitz et al. 2016 (`microfacet::walk`), or single scattering by quadrature.
+//! JSON lines in, one line out per line, in order (errors as in `eval`).
+
+use crate::bsdf::{alpha, spectrum, string};
+use crate::eval::field;
+use microfacet::fresnel::{self, One};
+use microfacet::walk::{
+    albedo, single_scattering_albedo, Albedo, DiffuseFacets, Heights, Microsurface, MirrorFacets,
+};
+use microfacet::{Beckmann, Distribution, DoubleGgx, Exponential, Ggx, Gtr, Microfacet, NdfKind};
+use serde_json::{json, Value};
+use std::process::ExitCode;
+
+pub fn run(args: &[String]) -> Result<ExitCode, String> {
+    crate::eval::json_lines("albedo", args, albedo_line)
+}
+
+const FIELDS: [&str; 12] = [
+    "ndf", "alpha", "gamma", "material", "eta", "k", "rho", "mu", "walks", "seed", "method",
+    "heights",
+];
+
+/// Walks per line at most (10¹⁰: hours; a typo's 10²⁰ is an error, not a hang).
+const MAX_WALKS: f64 = 1e10;
+
+enum Facets {
+    /// A conductor: F = 1 without eta and k, else the complex Fresnel term (channel 0 of
+    /// the triples: the albedo is per channel; give one channel per line).
+    Mirror(Option<(f64, f64)>),
+    /// Lambertian facets of albedo ρ.
+    Diffuse(f64),
+}
+
+fn albedo_line(text: &str) -> Result<Value, String> {
+    let v: Value = serde_json::from_str(text).map_err(|e| format!("not valid JSON: {e}"))?;
+    let obj = v.as_object().ok_or("expected a JSON object")?;
+    for key in obj.keys() {
+        if !FIELDS.contains(&key.as_str()) {
+            return Err(format!(
+                "unknown field '{}' (expected {})",
+                crate::clip(key),
+                FIELDS.join(", ")
+            ));
+        }
+    }
+    let kind: NdfKind = string(obj, "ndf")?
+        .parse()
+        .map_err(|e: microfacet::family::UnknownNdf| e.to_string())?;
+    if kind != NdfKind::Gtr && obj.contains_key("gamma") {
+        return Err("field 'gamma' is for ndf gtr only".into());
+    }
+    let (ax, ay) = alpha(obj)?;
+    let mu = field(obj, "mu")?;
+    if !(mu > 0.0 && mu <= 1.0) {
+        return Err(format!("field 'mu' must be in (0, 1], got {mu}"));
+    }
+    let wo = [((1.0 - mu) * (1.0 + mu)).sqrt(), 0.0, mu];
+    let facets = match obj.get("material").map(|m| m.as_str()) {
+        None | Some(Some("conductor")) => match (obj.contains_key("eta"), obj.contains_key("k")) {
+            (false, false) => Facets::Mirror(None),
+            (true, true) => {
+                Facets::Mirror(Some((spectrum(obj, "eta")?[0], spectrum(obj, "k")?[0])))
+            }
+            _ => return Err("a conductor takes both 'eta' and 'k', or neither (F = 1)".into()),
+        },
+        Some(Some("diffuse")) => {
+            let rho = if obj.contains_key("rho") {
+                field(obj, "rho")?
+            } else {
+                1.0
+            };
+            if !(0.0..=1.0).contains(&rho) {
+                return Err(format!("field 'rho' must be in [0, 1], got {rho}"));
+            }
+            Facets::Diffuse(rho)
+        }
+        Some(Some("dielectric")) => {
+            return Err(
+                "material 'dielectric': the dielectric walk is not built yet (issue 21)".into(),
+            )
+        }
+        _ => return Err("field 'material' must be \"conductor\" or \"diffuse\"".into()),
+    };
+    let quadrature = match obj.get("method").map(|m| m.as_str()) {
+        None | Some(Some("walk")) => false,
+        Some(Some("quadrature")) => true,
+        _ => return Err("field 'method' must be \"walk\" or \"quadrature\"".into()),
+    };
+    let heights = match obj.get("heights").map(|m| m.as_str()) {
+        None | Some(Some("uniform")) => Heights::Uniform,
+        Some(Some("gaussian")) => Heights::Gaussian,
+        _ => return Err("field 'heights' must be \"uniform\" or \"gaussian\"".into()),
+    };
+    if quadrature {
+        if !matches!(facets, Facets::Mirror(None)) {
+            return Err("method 'quadrature' is the single-scattering albedo of the F = 1 conductor (no eta, k, or diffuse)".into());
+        }
+        let err = |e: microfacet::ParamError| e.to_string();
+        let e1 = match kind {
+            NdfKind::Ggx => {
+                single_scattering_albedo(&Microfacet::<f64, Ggx>::new(ax, ay).map_err(err)?, wo)
+            }
+            NdfKind::Beckmann => single_scattering_albedo(
+                &Microfacet::<f64, Beckmann>::new(ax, ay).map_err(err)?,
+                wo,
+            ),
+            NdfKind::DoubleGgx => single_scattering_albedo(
+                &Microfacet::<f64, DoubleGgx>::new(ax, ay).map_err(err)?,
+                wo,
+            ),
+            NdfKind::Exponential => single_scattering_albedo(
+                &Microfacet::<f64, Exponential>::new(ax, ay).map_err(err)?,
+                wo,
+            ),
+            NdfKind::Gtr => single_scattering_albedo(
+                &Microfacet::<f64, Gtr>::gtr(ax, ay, field(obj, "gamma")?).map_err(err)?,
+                wo,
+            ),
+        };
+        return Ok(json!({ "e1": e1 }));
+    }
+    let walks = field(obj, "walks")?;
+    if !((1.0..=MAX_WALKS).contains(&walks) && walks.fract() == 0.0) {
+        return Err(format!(
+            "field 'walks' must be a whole number in [1, 1e10], got {walks}"
+        ));
+    }
+    let seed = if obj.contains_key("seed") {
+        let s = field(obj, "seed")?;
+        if !((0.0..1.8e19).contains(&s) && s.fract() == 0.0) {
+            return Err(format!(
+                "field 'seed' must be a whole number in [0, 2^64), got {s}"
+            ));
+        }
+        s as u64
+    } else {
+        0
+    };
+    let err = |e: microfacet::ParamError| e.to_string();
+    let a = match kind {
+        NdfKind::Ggx => run_walks(
+            Microfacet::<f64, Ggx>::new(ax, ay).map_err(err)?,
+            heights,
+            &facets,
+            wo,
+            walks as u64,
+            seed,
+        ),
+        NdfKind::Beckmann => run_walks(
+            Microfacet::<f64, Beckmann>::new(ax, ay).map_err(err)?,
+            heights,
+            &facets,
+            wo,
+            walks as u64,
+            seed,
+        ),
+        NdfKind::DoubleGgx => run_walks(
+            Microfacet::<f64, DoubleGgx>::new(ax, ay).map_err(err)?,
+            heights,
+            &facets,
+            wo,
+            walks as u64,
+            seed,
+        ),
+        NdfKind::Exponential => run_walks(
+            Microfacet::<f64, Exponential>::new(ax, ay).map_err(err)?,
+            heights,
+            &facets,
+            wo,
+            walks as u64,
+            seed,
+        ),
+        NdfKind::Gtr => run_walks(
+            Microfacet::<f64, Gtr>::gtr(ax, ay, field(obj, "gamma")?).map_err(err)?,
+            heights,
+            &facets,
+            wo,
+            walks as u64,
+            seed,
+        ),
+    };
+    Ok(json!({
+        "orders": a.orders,
+        "stderr": a.stderr,
+        "total": a.total,
+        "total_stderr": a.total_stderr,
+    }))
+}
+
+fn run_walks<D: Distribution<f64>>(
+    d: D,
+    heights: Heights,
+    facets: &Facets,
+    wo: [f64; 3],
+    walks: u64,
+    seed: u64,
+) -> Albedo {
+    let s = Microsurface::new(d, heights);
+    match *facets {
+        Facets::Mirror(None) => albedo(&s, &MirrorFacets(One::<1>), wo, walks, seed),
+        Facets::Mirror(Some((eta, k))) => albedo(
+            &s,
+            &MirrorFacets(fresnel::Conductor { eta: [eta], k: [k] }),
+            wo,
+            walks,
+            seed,
+        ),
+        Facets::Diffuse(rho) => albedo(&s, &DiffuseFacets(rho), wo, walks, seed),
+    }
+}
