@@ -88,6 +88,7 @@
 pub mod beckmann;
 pub mod bsdf;
 pub mod chi2;
+pub mod compensate;
 pub mod distribution;
 pub mod double_ggx;
 pub mod error;

@@ -343,6 +343,16 @@ pub fn albedo<D: Distribution<f64>, const N: usize>(
 /// guaranteed by tests/walk.rs against an independent rule. The walk's order 1 estimates the
 /// same quantity.
 pub fn single_scattering_albedo<D: Distribution<f64>>(dist: &D, wo: [f64; 3]) -> f64 {
+    single_scattering_albedo_tol(dist, wo, 1e-9)
+}
+
+/// [`single_scattering_albedo`] at relative tolerance `tol` (the inner integrals at
+/// `tol`/10).
+pub(crate) fn single_scattering_albedo_tol<D: Distribution<f64>>(
+    dist: &D,
+    wo: [f64; 3],
+    tol: f64,
+) -> f64 {
     use crate::quad::integrate;
     let mu_o = wo[2];
     if !(mu_o > 0.0) {
@@ -364,8 +374,8 @@ pub fn single_scattering_albedo<D: Distribution<f64>>(dist: &D, wo: [f64; 3]) ->
     // φ measured from the mirror azimuth: the lobe peaks at φ = 0 (both ends of [−π, π] are
     // its far side), and at μ = μo.
     let over_phi = |mu: f64| {
-        integrate(|p| f_cos(mu, p), -std::f64::consts::PI, 0.0, 1e-10).value
-            + integrate(|p| f_cos(mu, p), 0.0, std::f64::consts::PI, 1e-10).value
+        integrate(|p| f_cos(mu, p), -std::f64::consts::PI, 0.0, 0.1 * tol).value
+            + integrate(|p| f_cos(mu, p), 0.0, std::f64::consts::PI, 0.1 * tol).value
     };
-    integrate(over_phi, 0.0, mu_o, 1e-9).value + integrate(over_phi, mu_o, 1.0, 1e-9).value
+    integrate(over_phi, 0.0, mu_o, tol).value + integrate(over_phi, mu_o, 1.0, tol).value
 }

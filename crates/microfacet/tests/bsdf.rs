@@ -624,3 +624,23 @@ fn exact_and_fast_bsdfs_agree() {
         });
     }
 }
+
+/// The compensated conductors (Kulla & Conty's added lobe sampled with probability 1 − E(μo),
+/// Turquin's scaled lobe): χ² of sampling against the pdf over the sphere, every NDF, as the
+/// single-scattering BSDFs above.
+#[test]
+fn compensated_sampling_matches_its_pdf() {
+    use microfacet::compensate::{Compensated, Scheme};
+    let level = sidak(0.01, 5 * 2 * 2 * 2);
+    for k in 0..5 {
+        let m = material::<f64>(k, 0.6, 0.6);
+        each!(&m, x => {
+            for scheme in [Scheme::KullaConty, Scheme::Turquin] {
+                let b = Compensated::new(x.clone(), fresnel::Conductor { eta: [0.2], k: [3.9] }, scheme);
+                let wo = direction(45.0);
+                let label = format!("{} compensated {scheme:?} α = 0.6 θo = 45", NAMES[k]);
+                check_bsdf(&label, &b, wo, 0.6, None, 100_000, level, None);
+            }
+        });
+    }
+}
