@@ -35,15 +35,7 @@ enum Facets {
 fn albedo_line(text: &str) -> Result<Value, String> {
     let v: Value = serde_json::from_str(text).map_err(|e| format!("not valid JSON: {e}"))?;
     let obj = v.as_object().ok_or("expected a JSON object")?;
-    for key in obj.keys() {
-        if !FIELDS.contains(&key.as_str()) {
-            return Err(format!(
-                "unknown field '{}' (expected {})",
-                crate::clip(key),
-                FIELDS.join(", ")
-            ));
-        }
-    }
+    crate::eval::known_fields(obj, &FIELDS)?;
     let kind: NdfKind = string(obj, "ndf")?
         .parse()
         .map_err(|e: microfacet::family::UnknownNdf| e.to_string())?;

@@ -71,6 +71,18 @@ fn arguments(quantity: &str) -> Option<&'static [&'static str]> {
     })
 }
 
+/// Err for a field of `obj` not among `fields` (the JSON-lines commands' strictness).
+pub fn known_fields(obj: &Map<String, Value>, fields: &[&str]) -> Result<(), String> {
+    match obj.keys().find(|k| !fields.contains(&k.as_str())) {
+        Some(key) => Err(format!(
+            "unknown field '{}' (expected {})",
+            crate::clip(key),
+            fields.join(", ")
+        )),
+        None => Ok(()),
+    }
+}
+
 pub fn field(obj: &Map<String, Value>, name: &str) -> Result<f64, String> {
     match obj.get(name) {
         None => Err(format!("missing field '{name}'")),

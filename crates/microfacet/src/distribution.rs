@@ -321,6 +321,16 @@ fn lambda_projected<S: Shape, F: Real>(data: &S::Data, w: [F; 3], ax: F, ay: F) 
     S::lambda_iso(data, w[2], a2.sqrt())
 }
 
+/// A normal's (z, 1/(αx αy), (x/αx)² + (y/αy)²) in f64 (x/αx = x αy/(αx αy): one
+/// division), for the fitted NDFs' anisotropic D.
+#[inline(always)]
+fn stretched_normal<F: Real>(wm: [F; 3], ax: F, ay: F) -> (f64, f64, f64) {
+    let (a, b) = (ax.to_f64(), ay.to_f64());
+    let r = 1.0 / (a * b);
+    let (x, y) = (wm[0].to_f64() * b * r, wm[1].to_f64() * a * r);
+    (wm[2].to_f64(), r, x * x + y * y)
+}
+
 /// The projected route out of line: the anisotropic fitted paths' ends (outside their
 /// tables: near the normal, grazing, below the horizon, NaN).
 #[cold]
@@ -511,13 +521,10 @@ impl Shape for DoubleGgx {
     /// table; the ends by the projected route, out of line. Evaluated in f64 (as the scalar D).
     #[inline(always)]
     fn d_aniso<F: Real>(data: &(), wm: [F; 3], ax: F, ay: F) -> F {
-        let (a, b) = (ax.to_f64(), ay.to_f64());
-        let z = wm[2].to_f64();
-        let r = 1.0 / (a * b);
-        let (x, y) = (wm[0].to_f64() * b * r, wm[1].to_f64() * a * r);
+        let (z, r, q) = stretched_normal(wm, ax, ay);
         let z2 = z * z;
         let g = if z > 0.0 {
-            fast::double_ggx::d_kernel_in_table((x * x + y * y) / z2)
+            fast::double_ggx::d_kernel_in_table(q / z2)
         } else {
             None
         };
@@ -564,12 +571,9 @@ impl Shape for Exponential {
     /// the projected route, out of line. Evaluated in f64 (as the scalar D).
     #[inline(always)]
     fn d_aniso<F: Real>(data: &(), wm: [F; 3], ax: F, ay: F) -> F {
-        let (a, b) = (ax.to_f64(), ay.to_f64());
-        let z = wm[2].to_f64();
-        let r = 1.0 / (a * b);
-        let (x, y) = (wm[0].to_f64() * b * r, wm[1].to_f64() * a * r);
+        let (z, r, q) = stretched_normal(wm, ax, ay);
         let z2 = z * z;
-        let e = 2.0 * (x * x + y * y).sqrt() / z;
+        let e = 2.0 * q.sqrt() / z;
         // (The scalar D's bound: e^{−e} is 0 past 745; false for NaN and z ≤ 0.)
         if !(z > 0.0 && e <= 745.2 && z2 > 0.0) {
             return d_projected_cold::<Self, F>(data, wm, ax, ay);

@@ -207,17 +207,16 @@ impl<D: Distribution<f64>> Microsurface<D> {
     /// The next height for a ray travelling in w from height h, or `None` if it escapes
     /// (upward rays only), from the uniform u ∈ (0, 1).
     fn next_height(&self, w: [f64; 3], h: f64, u: f64) -> Option<f64> {
-        let c = self.heights.c1(h);
+        let lc = self.heights.c1(h).ln();
         let l = self.lambda_signed(w);
-        if w[2] > 0.0 {
-            // Escapes with probability G1 = C1(h)^Λ.
-            let g1 = c.powf(l);
-            if u > 1.0 - g1 || !(l > 0.0) {
-                return None;
-            }
+        let lu = (-u).ln_1p();
+        // Going up, it escapes with probability G1 = C1(h)^Λ: u > 1 − C1^Λ, that is
+        // ln(1 − u) < Λ ln C1 (no powf; ln(1 − u) serves the next line too).
+        if w[2] > 0.0 && (lu < l * lc || !(l > 0.0)) {
+            return None;
         }
         // C1(h') = C1(h)/(1 − u)^{1/Λ}: ln-space, so that (1 − u)^{1/Λ} does not underflow.
-        let c_next = (c.ln() - (-u).ln_1p() / l).exp();
+        let c_next = (lc - lu / l).exp();
         if !(c_next > 0.0) {
             // (Going down from the top with a tiny C1: below every height the distribution
             // resolves; the path meets the surface at its bottom.)

@@ -188,28 +188,46 @@ fn gtr_visible_fast() {
 #[test]
 #[ignore = "full sweep: run by .ci/run with --ignored"]
 fn gtr_visible_sweep() {
+    let mut cases = Vec::new();
     for &a in &ALPHAS {
         for g in [0.5, 1.0, 1.5, 2.5] {
             for deg in INCIDENCE_DEG {
-                run_gtr(a, g, deg, 20_000);
+                cases.push((a, g, deg));
             }
         }
     }
+    on_every_core(&cases, |&(a, g, deg)| run_gtr(a, g, deg, 20_000));
+}
+
+/// Runs `f` on each case, the cases spread over the cores (they are independent; each
+/// test keeps its own seed, so the results do not depend on the thread count).
+fn on_every_core<T: Sync>(cases: &[T], f: impl Fn(&T) + Sync) {
+    let threads = std::thread::available_parallelism().map_or(1, |n| n.get());
+    std::thread::scope(|scope| {
+        for t in 0..threads {
+            let f = &f;
+            scope.spawn(move || cases.iter().skip(t).step_by(threads).for_each(f));
+        }
+    });
 }
 
 #[test]
 #[ignore = "full sweep: run by .ci/run with --ignored"]
 fn full_sweep() {
+    let mut cases = Vec::new();
     for kind in KINDS {
         for &a in &ALPHAS {
             for (ax, ay) in [(a, a), (a, 0.4 * a)] {
-                run_stretched(kind, ax, ay, None, samples(kind));
+                cases.push((kind, ax, ay, None));
                 for deg in INCIDENCE_DEG {
-                    run_stretched(kind, ax, ay, Some(deg), samples(kind));
+                    cases.push((kind, ax, ay, Some(deg)));
                 }
             }
         }
     }
+    on_every_core(&cases, |&(kind, ax, ay, deg)| {
+        run_stretched(kind, ax, ay, deg, samples(kind))
+    });
 }
 
 #[test]
@@ -337,35 +355,25 @@ fn posterior_sampler(full: bool) {
             }
         }
     }
-    // The cases are independent: spread them over the cores (each keeps its own seed).
-    let threads = std::thread::available_parallelism().map_or(1, |n| n.get());
-    std::thread::scope(|scope| {
-        for t in 0..threads {
-            let all = &all;
-            scope.spawn(move || {
-                for &(kind, ax, ay, deg) in all.iter().skip(t).step_by(threads) {
-                    let nk = match kind {
-                        UnitSlopes::DoubleGgx => NdfKind::DoubleGgx,
-                        UnitSlopes::Exponential => NdfKind::Exponential,
-                        _ => NdfKind::Ggx,
-                    };
-                    let target = Exact::new(nk, ax, ay, None).unwrap();
-                    let wi = direction(deg);
-                    let sampler = VisibleMixture::new(kind, ax, ay, wi).unwrap();
-                    let coords = reference(ax, ay);
-                    let mut rng =
-                        XorShiftRng::seed_from_u64(deg as u64 + kind as u64 + (ax * 1e4) as u64);
-                    check_visible(
-                        &format!("{kind:?} α=({ax},{ay}) visible θi={deg}° (posterior)"),
-                        &target,
-                        wi,
-                        &coords,
-                        5_000,
-                        0,
-                        |_| sampler.sample(&mut rng),
-                    );
-                }
-            });
-        }
+    on_every_core(&all, |&(kind, ax, ay, deg)| {
+        let nk = match kind {
+            UnitSlopes::DoubleGgx => NdfKind::DoubleGgx,
+            UnitSlopes::Exponential => NdfKind::Exponential,
+            _ => NdfKind::Ggx,
+        };
+        let target = Exact::new(nk, ax, ay, None).unwrap();
+        let wi = direction(deg);
+        let sampler = VisibleMixture::new(kind, ax, ay, wi).unwrap();
+        let coords = reference(ax, ay);
+        let mut rng = XorShiftRng::seed_from_u64(deg as u64 + kind as u64 + (ax * 1e4) as u64);
+        check_visible(
+            &format!("{kind:?} α=({ax},{ay}) visible θi={deg}° (posterior)"),
+            &target,
+            wi,
+            &coords,
+            5_000,
+            0,
+            |_| sampler.sample(&mut rng),
+        );
     });
 }

@@ -413,6 +413,15 @@ fn cos_sin_turn_f<F: Real>(v: F) -> (F, F) {
     )
 }
 
+/// Panics unless every input slice has length n and every output at least n (the slice
+/// functions' one panic, as slice indexing's).
+fn check_lengths(n: usize, inputs: &[usize], outputs: &[usize]) {
+    assert!(
+        inputs.iter().all(|&l| l == n) && outputs.iter().all(|&l| l >= n),
+        "slice lengths differ"
+    );
+}
+
 /// One lane of the GGX visible-normal slice: spherical caps (Dupuy & Benyoub 2023) as
 /// [`super::ggx_visible_stretched_len`], branch-free, with the flag of the lanes the scalar
 /// sampler redoes: a stretched direction whose squared length leaves [1e-24, 1e24] (f32) or
@@ -453,13 +462,10 @@ fn ggx_vndf_slice<F: Real>(
     out: VectorsMut<'_, F>,
 ) {
     let n = w.x.len();
-    assert!(
-        w.y.len() == n && w.z.len() == n && u0.len() == n && u1.len() == n,
-        "slice lengths differ"
-    );
-    assert!(
-        out.x.len() >= n && out.y.len() >= n && out.z.len() >= n,
-        "slice lengths differ"
+    check_lengths(
+        n,
+        &[w.y.len(), w.z.len(), u0.len(), u1.len()],
+        &[out.x.len(), out.y.len(), out.z.len()],
     );
     let (ax, ay) = m.alpha();
     let mut start = 0;
@@ -487,9 +493,10 @@ fn ggx_vndf_slice<F: Real>(
 dispatched! {
 /// GGX visible normals for a slice of directions (one material; w of any finite nonzero
 /// length, mirrored if w.z < 0, as [`Distribution::sample_wm`]): element i is the normal for
-/// `(w[i], [u0[i], u1[i]])`. The same spherical caps as the scalar sampler with the azimuth's
-/// cosine and sine by polynomial (the same normal to within 2e-7 in f32, 1e-15 in f64,
-/// tests/fast.rs); lanes the vectorised formula does not cover (extreme lengths, a normal
+/// `(w[i], [u0[i], u1[i]])`. The same spherical caps as the scalar sampler; f64 returns its
+/// bits, f32 takes the azimuth's cosine and sine from a polynomial in f32 (the normal within
+/// a few f32 ulps of the scalar's, magnified by the anisotropy: 2e-6 at αx/αy = 2000,
+/// tests/wavefront.rs); lanes the vectorised formula does not cover (extreme lengths, a normal
 /// that must be tipped to face w) get the scalar sampler's answer. Panics if the lengths
 /// differ (as slice indexing does).
 pub fn ggx_sample_visible_f32(
@@ -529,13 +536,10 @@ fn beckmann_vndf_slice<F: Real>(
     out: VectorsMut<'_, F>,
 ) {
     let n = w.x.len();
-    assert!(
-        w.y.len() == n && w.z.len() == n && u0.len() == n && u1.len() == n,
-        "slice lengths differ"
-    );
-    assert!(
-        out.x.len() >= n && out.y.len() >= n && out.z.len() >= n,
-        "slice lengths differ"
+    check_lengths(
+        n,
+        &[w.y.len(), w.z.len(), u0.len(), u1.len()],
+        &[out.x.len(), out.y.len(), out.z.len()],
     );
     for i in 0..n {
         let v = m.sample_wm([w.x[i], w.y[i], w.z[i]], [u0[i], u1[i]]);
@@ -634,15 +638,10 @@ fn conductor_eval_slice<F: Real>(
     pdf: &mut [F],
 ) {
     let n = wo.x.len();
-    assert!(
-        [wo.y.len(), wo.z.len(), wi.x.len(), wi.y.len(), wi.z.len()]
-            .iter()
-            .all(|&l| l == n),
-        "slice lengths differ"
-    );
-    assert!(
-        f.iter().all(|c| c.len() >= n) && pdf.len() >= n,
-        "slice lengths differ"
+    check_lengths(
+        n,
+        &[wo.y.len(), wo.z.len(), wi.x.len(), wi.y.len(), wi.z.len()],
+        &[f[0].len(), f[1].len(), f[2].len(), pdf.len()],
     );
     let [f0, f1, f2] = f;
     let m = b.distribution();
@@ -720,19 +719,18 @@ fn conductor_sample_slice<F: Real>(
     pdf: &mut [F],
 ) {
     let n = wo.x.len();
-    assert!(
-        [wo.y.len(), wo.z.len(), u0.len(), u1.len()]
-            .iter()
-            .all(|&l| l == n),
-        "slice lengths differ"
-    );
-    assert!(
-        f.iter().all(|c| c.len() >= n)
-            && pdf.len() >= n
-            && wi.x.len() >= n
-            && wi.y.len() >= n
-            && wi.z.len() >= n,
-        "slice lengths differ"
+    check_lengths(
+        n,
+        &[wo.y.len(), wo.z.len(), u0.len(), u1.len()],
+        &[
+            f[0].len(),
+            f[1].len(),
+            f[2].len(),
+            pdf.len(),
+            wi.x.len(),
+            wi.y.len(),
+            wi.z.len(),
+        ],
     );
     let [f0, f1, f2] = f;
     let m = b.distribution();
