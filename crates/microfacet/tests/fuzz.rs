@@ -1649,3 +1649,56 @@ fn walk_contract() {
     }
     fails.finish("walk_contract");
 }
+
+/// The compensated conductors (`compensate::Compensated`, both schemes, every NDF type that
+/// anisotropy allows): hostile directions (on and below the horizon, subnormal z), edge
+/// uniforms: no panic; eval and pdf finite and ≥ 0 for unit directions; a sample has a
+/// positive finite pdf, a finite f ≥ 0 and a unit wi on wo's side. (A table costs 30–300 ms,
+/// so a few materials per scale unit.)
+#[test]
+fn compensated_contract() {
+    use microfacet::bsdf::Bsdf;
+    use microfacet::compensate::{AlbedoTable, Compensated, Scheme};
+    let mut r = Rng::new(43);
+    let mut fails = Failures::default();
+    let gold = microfacet::fresnel::Conductor {
+        eta: [0.14, 0.42, 1.37],
+        k: [3.98, 2.38, 1.60],
+    };
+    for _ in 0..scale() {
+        // α within the range a material uses (the table's quadratures at 1e-6 or 1e6 are
+        // slow, and such surfaces are a mirror or a diffuser).
+        let a = r.pick(&[0.02, 0.1, 0.5, 1.3, 3.0]);
+        let d = Microfacet::<f64, Ggx>::new(a, 0.7 * a).unwrap();
+        let table = AlbedoTable::new(&d);
+        for scheme in [Scheme::KullaConty, Scheme::Turquin] {
+            let b = Compensated::from_table(d.clone(), gold, scheme, table.clone());
+            for _ in 0..400 {
+                let wo: [f64; 3] = unit_direction::<f64>(&mut r);
+                let wi: [f64; 3] = unit_direction::<f64>(&mut r);
+                let (uc, u) = (uniform(&mut r), [uniform(&mut r), uniform(&mut r)]);
+                let ctx = || format!("α={a} {scheme:?} wo={wo:?} wi={wi:?} u=({uc}, {u:?})");
+                let (f, p, s) = no_panic("Compensated", ctx(), || {
+                    (b.eval(wo, wi), b.pdf(wo, wi), b.sample(wo, uc, u))
+                });
+                fails.check(
+                    f.iter().all(|x| x.is_finite() && *x >= 0.0) && p.is_finite() && p >= 0.0,
+                    || format!("eval {f:?} pdf {p} at {}", ctx()),
+                );
+                if let Some(s) = s {
+                    let len = (s.wi[0] * s.wi[0] + s.wi[1] * s.wi[1] + s.wi[2] * s.wi[2]).sqrt();
+                    fails.check(
+                        s.pdf > 0.0
+                            && s.pdf.is_finite()
+                            && s.f.iter().all(|x| x.is_finite() && *x >= 0.0)
+                            && (len - 1.0).abs() < 1e-9
+                            && s.wi[2] * wo[2] >= 0.0,
+                        || format!("sample {s:?} at {}", ctx()),
+                    );
+                }
+                evals(3);
+            }
+        }
+    }
+    fails.finish("compensated_contract");
+}
