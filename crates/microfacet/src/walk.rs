@@ -45,6 +45,7 @@
 #![allow(clippy::neg_cmp_op_on_partial_ord)]
 
 use crate::distribution::Distribution;
+use crate::frame::{dot, reflect};
 use crate::fresnel::Fresnel;
 
 /// The distribution of microsurface heights (the BSDF does not depend on it).
@@ -117,8 +118,7 @@ pub struct MirrorFacets<Fr>(pub Fr);
 impl<Fr: Fresnel<f64, N>, const N: usize> Facets<N> for MirrorFacets<Fr> {
     #[inline]
     fn scatter(&self, v: [f64; 3], wm: [f64; 3], _: &mut WalkRng) -> Option<([f64; 3], [f64; N])> {
-        let c = dot(v, wm);
-        Some((reflect(v, wm, c), self.0.eval(c.abs())))
+        Some((reflect(v, wm), self.0.eval(dot(v, wm).abs())))
     }
 }
 
@@ -167,19 +167,6 @@ pub const MAX_ORDER: u32 = 10_000;
 pub struct Microsurface<D> {
     dist: D,
     heights: Heights,
-}
-
-fn dot(a: [f64; 3], b: [f64; 3]) -> f64 {
-    a[0] * b[0] + a[1] * b[1] + a[2] * b[2]
-}
-
-/// v reflected about m (both unit), given c = v·m.
-fn reflect(v: [f64; 3], m: [f64; 3], c: f64) -> [f64; 3] {
-    [
-        2.0 * c * m[0] - v[0],
-        2.0 * c * m[1] - v[1],
-        2.0 * c * m[2] - v[2],
-    ]
 }
 
 impl<D: Distribution<f64>> Microsurface<D> {
