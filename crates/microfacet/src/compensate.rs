@@ -262,11 +262,9 @@ impl<D: Distribution<f64> + Clone, Fr: Fresnel<f64, N> + Clone, const N: usize> 
             Scheme::KullaConty => {
                 let q = self.p_ms(wo[2].abs());
                 let wi = if uc < q {
-                    // A cosine-weighted direction on wo's side (Malley's method).
-                    let r = u[0].sqrt();
-                    let (s, c) = (std::f64::consts::TAU * u[1]).sin_cos();
-                    let z = (1.0 - u[0]).max(0.0).sqrt();
-                    [r * c, r * s, if wo[2] < 0.0 { -z } else { z }]
+                    // A cosine-weighted direction on wo's side.
+                    let [x, y, z] = crate::frame::cosine_hemisphere(u);
+                    [x, y, if wo[2] < 0.0 { -z } else { z }]
                 } else {
                     let s = self.ss.sample(wo, (uc - q) / (1.0 - q), u)?;
                     if s.specular {

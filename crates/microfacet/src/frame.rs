@@ -99,6 +99,15 @@ pub fn same_hemisphere<F: Real>(a: [F; 3], b: [F; 3]) -> bool {
     a[2] * b[2] > F::ZERO
 }
 
+/// A cosine-weighted direction about +z from u ∈ [0, 1)² (Malley's method: a uniform point
+/// of the unit disk, r = √u₀, φ = 2πu₁, lifted to the hemisphere); density cos θ/π.
+#[inline]
+pub(crate) fn cosine_hemisphere(u: [f64; 2]) -> [f64; 3] {
+    let r = u[0].sqrt();
+    let (s, c) = (std::f64::consts::TAU * u[1]).sin_cos();
+    [r * c, r * s, (1.0 - u[0]).max(0.0).sqrt()]
+}
+
 /// The reflection of wo about the unit normal n: −wo + 2(wo·n)n.
 #[inline(always)]
 pub fn reflect<F: Real>(wo: [F; 3], n: [F; 3]) -> [F; 3] {

@@ -134,11 +134,8 @@ impl Facets<1> for DiffuseFacets {
         wm: [f64; 3],
         rng: &mut WalkRng,
     ) -> Option<([f64; 3], [f64; 1])> {
-        // A cosine-weighted direction in wm's frame (Malley's method).
-        let (u1, u2) = (rng.next_open(), rng.next_open());
-        let r = u1.sqrt();
-        let (s, c) = (std::f64::consts::TAU * u2).sin_cos();
-        let local = [r * c, r * s, (1.0 - u1).sqrt()];
+        // A cosine-weighted direction in wm's frame.
+        let local = crate::frame::cosine_hemisphere([rng.next_open(), rng.next_open()]);
         let frame = crate::frame::Frame::from_normal(wm);
         Some((frame.from_local(local), [self.0]))
     }
