@@ -2,7 +2,7 @@
 //! random walk of Heitz et al. 2016 (`microfacet::walk`), or single scattering by quadrature.
 //! JSON lines in, one line out per line, in order (errors as in `eval`).
 
-use crate::bsdf::{alpha, spectrum, string};
+use crate::bsdf::{ndf_alpha, spectrum};
 use crate::eval::field;
 use microfacet::fresnel::{self, One};
 use microfacet::walk::{
@@ -32,17 +32,42 @@ enum Facets {
     Diffuse(f64),
 }
 
+/// `$body` with `$d` bound to the f64 `Microfacet` of `$kind` at (αx, αy) (GTR's γ from the
+/// request), or the line's error.
+macro_rules! with_material {
+    ($obj:expr, $kind:expr, $ax:expr, $ay:expr, |$d:ident| $body:expr) => {{
+        let err = |e: microfacet::ParamError| e.to_string();
+        match $kind {
+            NdfKind::Ggx => {
+                let $d = Microfacet::<f64, Ggx>::new($ax, $ay).map_err(err)?;
+                $body
+            }
+            NdfKind::Beckmann => {
+                let $d = Microfacet::<f64, Beckmann>::new($ax, $ay).map_err(err)?;
+                $body
+            }
+            NdfKind::DoubleGgx => {
+                let $d = Microfacet::<f64, DoubleGgx>::new($ax, $ay).map_err(err)?;
+                $body
+            }
+            NdfKind::Exponential => {
+                let $d = Microfacet::<f64, Exponential>::new($ax, $ay).map_err(err)?;
+                $body
+            }
+            NdfKind::Gtr => {
+                let $d =
+                    Microfacet::<f64, Gtr>::gtr($ax, $ay, field($obj, "gamma")?).map_err(err)?;
+                $body
+            }
+        }
+    }};
+}
+
 fn albedo_line(text: &str) -> Result<Value, String> {
     let v: Value = serde_json::from_str(text).map_err(|e| format!("not valid JSON: {e}"))?;
     let obj = v.as_object().ok_or("expected a JSON object")?;
     crate::eval::known_fields(obj, &FIELDS)?;
-    let kind: NdfKind = string(obj, "ndf")?
-        .parse()
-        .map_err(|e: microfacet::family::UnknownNdf| e.to_string())?;
-    if kind != NdfKind::Gtr && obj.contains_key("gamma") {
-        return Err("field 'gamma' is for ndf gtr only".into());
-    }
-    let (ax, ay) = alpha(obj)?;
+    let (kind, ax, ay) = ndf_alpha(obj)?;
     let mu = field(obj, "mu")?;
     if !(mu > 0.0 && mu <= 1.0) {
         return Err(format!("field 'mu' must be in (0, 1], got {mu}"));
@@ -88,28 +113,7 @@ fn albedo_line(text: &str) -> Result<Value, String> {
         if !matches!(facets, Facets::Mirror(None)) {
             return Err("method 'quadrature' is the single-scattering albedo of the F = 1 conductor (no eta, k, or diffuse)".into());
         }
-        let err = |e: microfacet::ParamError| e.to_string();
-        let e1 = match kind {
-            NdfKind::Ggx => {
-                single_scattering_albedo(&Microfacet::<f64, Ggx>::new(ax, ay).map_err(err)?, wo)
-            }
-            NdfKind::Beckmann => single_scattering_albedo(
-                &Microfacet::<f64, Beckmann>::new(ax, ay).map_err(err)?,
-                wo,
-            ),
-            NdfKind::DoubleGgx => single_scattering_albedo(
-                &Microfacet::<f64, DoubleGgx>::new(ax, ay).map_err(err)?,
-                wo,
-            ),
-            NdfKind::Exponential => single_scattering_albedo(
-                &Microfacet::<f64, Exponential>::new(ax, ay).map_err(err)?,
-                wo,
-            ),
-            NdfKind::Gtr => single_scattering_albedo(
-                &Microfacet::<f64, Gtr>::gtr(ax, ay, field(obj, "gamma")?).map_err(err)?,
-                wo,
-            ),
-        };
+        let e1 = with_material!(obj, kind, ax, ay, |d| single_scattering_albedo(&d, wo));
         return Ok(json!({ "e1": e1 }));
     }
     let walks = field(obj, "walks")?;
@@ -129,49 +133,9 @@ fn albedo_line(text: &str) -> Result<Value, String> {
     } else {
         0
     };
-    let err = |e: microfacet::ParamError| e.to_string();
-    let a = match kind {
-        NdfKind::Ggx => run_walks(
-            Microfacet::<f64, Ggx>::new(ax, ay).map_err(err)?,
-            heights,
-            &facets,
-            wo,
-            walks as u64,
-            seed,
-        ),
-        NdfKind::Beckmann => run_walks(
-            Microfacet::<f64, Beckmann>::new(ax, ay).map_err(err)?,
-            heights,
-            &facets,
-            wo,
-            walks as u64,
-            seed,
-        ),
-        NdfKind::DoubleGgx => run_walks(
-            Microfacet::<f64, DoubleGgx>::new(ax, ay).map_err(err)?,
-            heights,
-            &facets,
-            wo,
-            walks as u64,
-            seed,
-        ),
-        NdfKind::Exponential => run_walks(
-            Microfacet::<f64, Exponential>::new(ax, ay).map_err(err)?,
-            heights,
-            &facets,
-            wo,
-            walks as u64,
-            seed,
-        ),
-        NdfKind::Gtr => run_walks(
-            Microfacet::<f64, Gtr>::gtr(ax, ay, field(obj, "gamma")?).map_err(err)?,
-            heights,
-            &facets,
-            wo,
-            walks as u64,
-            seed,
-        ),
-    };
+    let a = with_material!(obj, kind, ax, ay, |d| {
+        run_walks(d, heights, &facets, wo, walks as u64, seed)
+    });
     Ok(json!({
         "orders": a.orders,
         "stderr": a.stderr,

@@ -28,13 +28,7 @@ fn bsdf_line(
     let obj = v.as_object().ok_or("expected a JSON object")?;
     crate::eval::known_fields(obj, &FIELDS)?;
     let req = Request::parse(obj)?;
-    let kind: NdfKind = string(obj, "ndf")?
-        .parse()
-        .map_err(|e: microfacet::family::UnknownNdf| e.to_string())?;
-    if kind != NdfKind::Gtr && obj.contains_key("gamma") {
-        return Err("field 'gamma' is for ndf gtr only".into());
-    }
-    let (ax, ay) = alpha(obj)?;
+    let (kind, ax, ay) = ndf_alpha(obj)?;
     let err = |e: microfacet::ParamError| e.to_string();
     match kind {
         NdfKind::Ggx => req.answer(Microfacet::<f64, Ggx>::new(ax, ay).map_err(err)?),
@@ -58,7 +52,19 @@ fn bsdf_line(
     }
 }
 
-pub(crate) fn string<'a>(obj: &'a Map<String, Value>, name: &str) -> Result<&'a str, String> {
+/// The request's "ndf" (with "gamma" for gtr only) and "alpha" (a or [ax, ay]).
+pub(crate) fn ndf_alpha(obj: &Map<String, Value>) -> Result<(NdfKind, f64, f64), String> {
+    let kind: NdfKind = string(obj, "ndf")?
+        .parse()
+        .map_err(|e: microfacet::family::UnknownNdf| e.to_string())?;
+    if kind != NdfKind::Gtr && obj.contains_key("gamma") {
+        return Err("field 'gamma' is for ndf gtr only".into());
+    }
+    let (ax, ay) = alpha(obj)?;
+    Ok((kind, ax, ay))
+}
+
+fn string<'a>(obj: &'a Map<String, Value>, name: &str) -> Result<&'a str, String> {
     obj.get(name)
         .ok_or_else(|| format!("missing field '{name}'"))?
         .as_str()
@@ -66,7 +72,7 @@ pub(crate) fn string<'a>(obj: &'a Map<String, Value>, name: &str) -> Result<&'a 
 }
 
 /// "alpha": a or [ax, ay].
-pub(crate) fn alpha(obj: &Map<String, Value>) -> Result<(f64, f64), String> {
+fn alpha(obj: &Map<String, Value>) -> Result<(f64, f64), String> {
     match obj.get("alpha") {
         Some(Value::Array(a)) => {
             let v = numbers(a, "alpha", 2)?;
