@@ -6,7 +6,8 @@ use crate::bsdf::{ndf_alpha, spectrum};
 use crate::eval::field;
 use microfacet::fresnel::{self, One};
 use microfacet::walk::{
-    albedo, single_scattering_albedo, Albedo, DiffuseFacets, Heights, Microsurface, MirrorFacets,
+    albedo, single_scattering_albedo, Albedo, ByOrder, DielectricFacets, DiffuseFacets, Heights,
+    Microsurface, MirrorFacets,
 };
 use microfacet::{Beckmann, Distribution, DoubleGgx, Exponential, Ggx, Gtr, Microfacet, NdfKind};
 use serde_json::{json, Value};
@@ -30,6 +31,8 @@ enum Facets {
     Mirror(Option<(f64, f64)>),
     /// Lambertian facets of albedo ρ.
     Diffuse(f64),
+    /// A dielectric interface of relative index η.
+    Dielectric(f64),
 }
 
 /// `$body` with `$d` bound to the f64 `Microfacet` of `$kind` at (αx, αy) (GTR's γ from the
@@ -69,8 +72,10 @@ fn albedo_line(text: &str) -> Result<Value, String> {
     crate::eval::known_fields(obj, &FIELDS)?;
     let (kind, ax, ay) = ndf_alpha(obj)?;
     let mu = field(obj, "mu")?;
-    if !(mu > 0.0 && mu <= 1.0) {
-        return Err(format!("field 'mu' must be in (0, 1], got {mu}"));
+    if !(mu != 0.0 && mu.abs() <= 1.0) {
+        return Err(format!(
+            "field 'mu' must be in (0, 1] (a dielectric also [-1, 0): from inside), got {mu}"
+        ));
     }
     let wo = [((1.0 - mu) * (1.0 + mu)).sqrt(), 0.0, mu];
     let facets = match obj.get("material").map(|m| m.as_str()) {
@@ -93,12 +98,23 @@ fn albedo_line(text: &str) -> Result<Value, String> {
             Facets::Diffuse(rho)
         }
         Some(Some("dielectric")) => {
+            let eta = field(obj, "eta")?;
+            if !(eta > 0.0 && eta.is_finite()) {
+                return Err(format!("field 'eta' must be a positive number, got {eta}"));
+            }
+            Facets::Dielectric(eta)
+        }
+        _ => {
             return Err(
-                "material 'dielectric': the dielectric walk is not built yet (issue 21)".into(),
+                "field 'material' must be \"conductor\", \"dielectric\" or \"diffuse\"".into(),
             )
         }
-        _ => return Err("field 'material' must be \"conductor\" or \"diffuse\"".into()),
     };
+    if mu < 0.0 && !matches!(facets, Facets::Dielectric(_)) {
+        return Err(format!(
+            "field 'mu' must be in (0, 1] for an opaque material, got {mu}"
+        ));
+    }
     let quadrature = match obj.get("method").map(|m| m.as_str()) {
         None | Some(Some("walk")) => false,
         Some(Some("quadrature")) => true,
@@ -136,12 +152,23 @@ fn albedo_line(text: &str) -> Result<Value, String> {
     let a = with_material!(obj, kind, ax, ay, |d| {
         run_walks(d, heights, &facets, wo, walks as u64, seed)
     });
-    Ok(json!({
-        "orders": a.orders,
-        "stderr": a.stderr,
-        "total": a.total,
-        "total_stderr": a.total_stderr,
-    }))
+    let by_order = |b: &ByOrder| {
+        json!({
+            "orders": b.orders,
+            "stderr": b.stderr,
+            "total": b.total,
+            "total_stderr": b.total_stderr,
+        })
+    };
+    Ok(match facets {
+        Facets::Dielectric(_) => json!({
+            "reflect": by_order(&a.reflect),
+            "transmit": by_order(&a.transmit),
+            "total": a.total.mean,
+            "total_stderr": a.total.stderr,
+        }),
+        _ => by_order(&a.reflect),
+    })
 }
 
 fn run_walks<D: Distribution<f64>>(
@@ -163,5 +190,6 @@ fn run_walks<D: Distribution<f64>>(
             seed,
         ),
         Facets::Diffuse(rho) => albedo(&s, &DiffuseFacets(rho), wo, walks, seed),
+        Facets::Dielectric(eta) => albedo(&s, &DielectricFacets(eta), wo, walks, seed),
     }
 }

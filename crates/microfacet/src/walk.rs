@@ -44,6 +44,7 @@
 // `!(x > 0)` is the NaN-aware test (false for NaN), on purpose.
 #![allow(clippy::neg_cmp_op_on_partial_ord)]
 
+use crate::bsdf::{Bsdf, BsdfSample, Lobe, Transport};
 use crate::distribution::Distribution;
 use crate::frame::{dot, reflect};
 use crate::fresnel::Fresnel;
@@ -101,13 +102,91 @@ impl WalkRng {
     }
 }
 
-/// What the microfacets do with a ray: the phase function's second half, given the facet.
+/// What a scattering event did: the direction the ray leaves in, the weight that multiplies
+/// the path's, and whether it crossed into the other medium (a dielectric's refraction).
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct Scattered<const N: usize> {
+    /// The new travel direction, in the frame of the side the ray arrived on (see
+    /// [`Facets`]).
+    pub w: [f64; 3],
+    /// The facet's weight per channel.
+    pub weight: [f64; N],
+    /// Whether the ray crossed the interface.
+    pub crossed: bool,
+}
+
+/// What the microfacets do with a ray: the phase function of the microflake volume given
+/// the facet (sampled by [`Facets::scatter`]) and its density (evaluated by
+/// [`Facets::phase`], the stochastic evaluation's next-event estimate).
+///
+/// **Frames.** Both work in the frame of the side the ray is on: outside (above the
+/// macrosurface) the local frame itself; inside (below, a dielectric's lower medium, or the
+/// mirrored microsurface of a conductor seen from below) every vector negated, so that the
+/// ray's own medium is always z > 0 and the facets' normals point up. `inside` says which
+/// side it is, for a relative index that differs between the two.
 pub trait Facets<const N: usize> {
-    /// The direction the ray leaves the facet wm in, having arrived from v (v = −w, the
-    /// reverse of its travel; v·wm > 0), and the weight that multiplies the path's, per
-    /// channel. `None`: absorbed (the path ends with weight 0).
-    fn scatter(&self, v: [f64; 3], wm: [f64; 3], rng: &mut WalkRng)
-        -> Option<([f64; 3], [f64; N])>;
+    /// The relative index η = η_inside/η_outside of facets that transmit (the walk then
+    /// crosses between media); `None` for opaque facets.
+    fn interface_eta(&self) -> Option<f64> {
+        None
+    }
+
+    /// Scatter a ray that arrived from v (v = −w, the reverse of its travel) off the facet
+    /// wm (v·wm > 0). `None`: absorbed (the path ends with weight 0).
+    fn scatter(
+        &self,
+        v: [f64; 3],
+        wm: [f64; 3],
+        inside: bool,
+        rng: &mut WalkRng,
+    ) -> Option<Scattered<N>>;
+
+    /// The phase function's density per unit solid angle for leaving in w having arrived
+    /// from v, over the facets visible from v: a reflection (w on v's side) or, with
+    /// `crossed`, a transmission (w into the other medium, w·wm < 0 for the facet). Its
+    /// integral over the sphere of w, both kinds together, is the facets' albedo
+    /// (E[weight]). Stochastic where the facet's own lobe is not a delta (diffuse facets
+    /// draw one visible normal): unbiased.
+    fn phase<D: Distribution<f64>>(
+        &self,
+        surface: &Microsurface<D>,
+        v: [f64; 3],
+        w: [f64; 3],
+        crossed: bool,
+        inside: bool,
+        rng: &mut WalkRng,
+    ) -> [f64; N];
+
+    /// The density per unit solid angle of single scattering's sampling from wo (wo.z > 0
+    /// in the side's frame): a visible normal, then the facet's lobe. Closed for mirror and
+    /// dielectric facets; diffuse facets answer the cosine lobe about the macronormal (the
+    /// closed form is an integral over the normals). [`MultipleScattering::pdf`] mixes it
+    /// with a diffuse-like term.
+    fn single_pdf<D: Distribution<f64>>(
+        &self,
+        surface: &Microsurface<D>,
+        wo: [f64; 3],
+        wi: [f64; 3],
+        inside: bool,
+    ) -> f64;
+}
+
+/// The half vector of a refraction from v (on the facets' side) into w (the other medium)
+/// at relative index η, turned up, if the facet faces v and turns its back on w (Walter et
+/// al. 2007, eqs. 16–17: wm ∝ v + η w).
+fn refraction_half(v: [f64; 3], w: [f64; 3], eta: f64) -> Option<[f64; 3]> {
+    let h = [v[0] + eta * w[0], v[1] + eta * w[1], v[2] + eta * w[2]];
+    let l = dot(h, h).sqrt();
+    let s = if h[2] < 0.0 { -1.0 / l } else { 1.0 / l };
+    let wm = [h[0] * s, h[1] * s, h[2] * s];
+    (dot(v, wm) > 0.0 && dot(w, wm) < 0.0).then_some(wm)
+}
+
+/// The mirror reflection's half vector of v and w, if it points up.
+fn reflection_half(v: [f64; 3], w: [f64; 3]) -> Option<[f64; 3]> {
+    let h = [v[0] + w[0], v[1] + w[1], v[2] + w[2]];
+    let l = dot(h, h).sqrt();
+    (l > 0.0 && h[2] > 0.0).then(|| [h[0] / l, h[1] / l, h[2] / l])
 }
 
 /// Mirror facets with a Fresnel term (a conductor; `fresnel::One::<1>` for the white
@@ -117,8 +196,40 @@ pub struct MirrorFacets<Fr>(pub Fr);
 
 impl<Fr: Fresnel<f64, N>, const N: usize> Facets<N> for MirrorFacets<Fr> {
     #[inline]
-    fn scatter(&self, v: [f64; 3], wm: [f64; 3], _: &mut WalkRng) -> Option<([f64; 3], [f64; N])> {
-        Some((reflect(v, wm), self.0.eval(dot(v, wm).abs())))
+    fn scatter(&self, v: [f64; 3], wm: [f64; 3], _: bool, _: &mut WalkRng) -> Option<Scattered<N>> {
+        Some(Scattered {
+            w: reflect(v, wm),
+            weight: self.0.eval(dot(v, wm).abs()),
+            crossed: false,
+        })
+    }
+
+    fn phase<D: Distribution<f64>>(
+        &self,
+        surface: &Microsurface<D>,
+        v: [f64; 3],
+        w: [f64; 3],
+        crossed: bool,
+        _: bool,
+        _: &mut WalkRng,
+    ) -> [f64; N] {
+        match surface.mirror_phase(v, w) {
+            Some((p, c)) if !crossed => self.0.eval(c).map(|f| f * p),
+            _ => [0.0; N],
+        }
+    }
+
+    fn single_pdf<D: Distribution<f64>>(
+        &self,
+        surface: &Microsurface<D>,
+        wo: [f64; 3],
+        wi: [f64; 3],
+        _: bool,
+    ) -> f64 {
+        match reflection_half(wo, wi) {
+            Some(wm) if wi[2] > 0.0 => surface.dist.pdf(wo, wm) / (4.0 * dot(wo, wm)),
+            _ => 0.0,
+        }
     }
 }
 
@@ -132,19 +243,160 @@ impl Facets<1> for DiffuseFacets {
         &self,
         _v: [f64; 3],
         wm: [f64; 3],
+        _: bool,
         rng: &mut WalkRng,
-    ) -> Option<([f64; 3], [f64; 1])> {
+    ) -> Option<Scattered<1>> {
         // A cosine-weighted direction in wm's frame.
         let local = crate::frame::cosine_hemisphere([rng.next_open(), rng.next_open()]);
         let frame = crate::frame::Frame::from_normal(wm);
-        Some((frame.from_local(local), [self.0]))
+        Some(Scattered {
+            w: frame.from_local(local),
+            weight: [self.0],
+            crossed: false,
+        })
+    }
+
+    /// ρ max(0, wm·w)/π for one visible normal wm drawn from v (the paper's stochastic
+    /// evaluation of the diffuse microflakes' phase function).
+    fn phase<D: Distribution<f64>>(
+        &self,
+        surface: &Microsurface<D>,
+        v: [f64; 3],
+        w: [f64; 3],
+        crossed: bool,
+        _: bool,
+        rng: &mut WalkRng,
+    ) -> [f64; 1] {
+        if crossed {
+            return [0.0];
+        }
+        let wm = surface.visible_normal(v, rng);
+        [self.0 * dot(wm, w).max(0.0) * std::f64::consts::FRAC_1_PI]
+    }
+
+    fn single_pdf<D: Distribution<f64>>(
+        &self,
+        _: &Microsurface<D>,
+        _: [f64; 3],
+        wi: [f64; 3],
+        _: bool,
+    ) -> f64 {
+        wi[2].max(0.0) * std::f64::consts::FRAC_1_PI
+    }
+}
+
+/// Smooth dielectric facets of relative index η = η_inside/η_outside (the macrosurface's
+/// lower medium is inside): each facet reflects with the Fresnel probability R(v·wm) and
+/// refracts otherwise (weight 1: the walk transports importance, Veach 1997 §5.2, and
+/// [`MultipleScattering`] applies radiance's 1/η'² once at the end).
+#[derive(Clone, Copy, Debug)]
+pub struct DielectricFacets(pub f64);
+
+impl DielectricFacets {
+    /// The relative index across the interface from the side the ray is on.
+    #[inline]
+    fn eta(&self, inside: bool) -> f64 {
+        if inside {
+            1.0 / self.0
+        } else {
+            self.0
+        }
+    }
+}
+
+impl Facets<1> for DielectricFacets {
+    fn interface_eta(&self) -> Option<f64> {
+        Some(self.0)
+    }
+
+    fn scatter(
+        &self,
+        v: [f64; 3],
+        wm: [f64; 3],
+        inside: bool,
+        rng: &mut WalkRng,
+    ) -> Option<Scattered<1>> {
+        let eta = self.eta(inside);
+        let r = crate::fresnel::dielectric(dot(v, wm), eta);
+        if rng.next_open() >= r {
+            if let Some((t, _)) = crate::frame::refract(v, wm, eta) {
+                return Some(Scattered {
+                    w: t,
+                    weight: [1.0],
+                    crossed: true,
+                });
+            }
+        }
+        Some(Scattered {
+            w: reflect(v, wm),
+            weight: [1.0],
+            crossed: false,
+        })
+    }
+
+    fn phase<D: Distribution<f64>>(
+        &self,
+        surface: &Microsurface<D>,
+        v: [f64; 3],
+        w: [f64; 3],
+        crossed: bool,
+        inside: bool,
+        _: &mut WalkRng,
+    ) -> [f64; 1] {
+        let eta = self.eta(inside);
+        if !crossed {
+            return match surface.mirror_phase(v, w) {
+                Some((p, c)) => [crate::fresnel::dielectric(c, eta) * p],
+                None => [0.0],
+            };
+        }
+        let Some(wm) = refraction_half(v, w, eta) else {
+            return [0.0];
+        };
+        let cv = dot(v, wm);
+        let sigma = surface.sigma(v);
+        let t = 1.0 - crate::fresnel::dielectric(cv, eta);
+        let p =
+            t * surface.dist.d(wm) * cv / sigma * crate::frame::jacobian_refraction(v, w, wm, eta);
+        [if p.is_finite() { p } else { 0.0 }]
+    }
+
+    fn single_pdf<D: Distribution<f64>>(
+        &self,
+        surface: &Microsurface<D>,
+        wo: [f64; 3],
+        wi: [f64; 3],
+        inside: bool,
+    ) -> f64 {
+        let eta = self.eta(inside);
+        let p = if wi[2] > 0.0 {
+            let Some(wm) = reflection_half(wo, wi) else {
+                return 0.0;
+            };
+            let c = dot(wo, wm);
+            surface.dist.pdf(wo, wm) * crate::fresnel::dielectric(c, eta) / (4.0 * c)
+        } else {
+            let Some(wm) = refraction_half(wo, wi, eta) else {
+                return 0.0;
+            };
+            let c = dot(wo, wm);
+            surface.dist.pdf(wo, wm)
+                * (1.0 - crate::fresnel::dielectric(c, eta))
+                * crate::frame::jacobian_refraction(wo, wi, wm, eta)
+        };
+        if p.is_finite() {
+            p
+        } else {
+            0.0
+        }
     }
 }
 
 /// One walk's result.
 #[derive(Clone, Copy, Debug, PartialEq)]
 pub struct Walked<const N: usize> {
-    /// The direction the path leaves the microsurface in (w.z > 0).
+    /// The direction the path leaves the microsurface in, in the macrosurface's frame
+    /// (z > 0: reflected to wo's side or, for a dielectric, either side).
     pub w: [f64; 3],
     /// The product of the facets' weights.
     pub weight: [f64; N],
@@ -156,8 +408,15 @@ pub struct Walked<const N: usize> {
 /// counts as weight 0). The mean order of an F = 1 conductor at normal incidence grows with
 /// the roughness, about 3α (measured for GGX: 26 at α = 10, 305 at α = 100, 3130 at
 /// α = 1000), so walks are cut, and energy lost, only on surfaces far rougher than any
-/// material (α ≳ 300); at α ≤ 2 the mean order is below 4.
+/// material (α ≳ 300); at α ≤ 2 the mean order is below 4. (And through dielectric facets
+/// of η = 1, a transparent interface, a ray keeps its direction: from |wo.z| ≲ 1e-3 it
+/// crosses the microsurface about α/|wo.z| times and is cut.)
 pub const MAX_ORDER: u32 = 10_000;
+
+/// The stochastic evaluation's estimate of f(wo, wi)|cos θi| by order: orders 1, 2, 3 and
+/// ≥ 4 (index 3), per channel. (The walk transports importance: a dielectric's transmitted
+/// value is [`crate::bsdf::Transport::Importance`]'s.)
+pub type OrderValues<const N: usize> = [[f64; N]; 4];
 
 /// The microsurface of a distribution with a height distribution: the walk's state-free part.
 #[derive(Clone, Debug)]
@@ -186,6 +445,40 @@ impl<D: Distribution<f64>> Microsurface<D> {
         } else {
             -1.0 - l
         }
+    }
+
+    /// The projected area of the facets visible from v, σ(v) = ∫ max(0, v·m) D(m) dm:
+    /// v.z (1 + Λ(v)) above, |v.z| Λ(v) below (σ(v) − σ(−v) = v.z; no cancellation in
+    /// either form).
+    pub fn sigma(&self, v: [f64; 3]) -> f64 {
+        let l = self.dist.lambda(v);
+        if v[2] >= 0.0 {
+            v[2] * (1.0 + l)
+        } else {
+            -v[2] * l
+        }
+    }
+
+    /// The mirror phase function's geometry for v → w: D_v(wm)/(4 v·wm) = D(wm)/(4σ(v))
+    /// with wm the half vector, and v·wm; `None` where no upward facet reflects v into w.
+    fn mirror_phase(&self, v: [f64; 3], w: [f64; 3]) -> Option<(f64, f64)> {
+        let wm = reflection_half(v, w)?;
+        let p = self.dist.d(wm) / (4.0 * self.sigma(v));
+        // (σ(v) is 0·∞ for v exactly on the horizon: no density there.)
+        p.is_finite().then_some((p, dot(v, wm)))
+    }
+
+    /// The probability that a ray leaving height h in the upward direction w escapes,
+    /// G1(w, h) = C1(h)^Λ(w); 0 for w on or below the horizon.
+    fn escape(&self, w: [f64; 3], h: f64) -> f64 {
+        if !(w[2] > 0.0) {
+            return 0.0;
+        }
+        let l = self.dist.lambda(w);
+        if l == 0.0 {
+            return 1.0;
+        }
+        (l * self.heights.c1(h).ln()).exp()
     }
 
     /// The next height for a ray travelling in w from height h, or `None` if it escapes
@@ -231,34 +524,47 @@ impl<D: Distribution<f64>> Microsurface<D> {
         m
     }
 
-    /// One walk from the direction wo (toward the viewer, wo.z > 0: the path arrives along
-    /// −wo). `None` for wo on or below the horizon, or a path cut at [`MAX_ORDER`].
-    pub fn walk<const N: usize>(
+    /// The walk itself from wo (toward the viewer, either side; the path arrives along
+    /// −wo), calling `event(order, v, h, inside, weight, rng)` at each scattering event
+    /// before the facet scatters (v the reverse of the travel direction, in the side's
+    /// frame, and `weight` the path's so far).
+    fn run<const N: usize, Fa: Facets<N>>(
         &self,
-        facets: &impl Facets<N>,
+        facets: &Fa,
         wo: [f64; 3],
         rng: &mut WalkRng,
+        mut event: impl FnMut(u32, [f64; 3], f64, bool, &[f64; N], &mut WalkRng),
     ) -> Option<Walked<N>> {
-        if !(wo[2] > 0.0) {
+        if wo[2] == 0.0 || !(wo[0].is_finite() && wo[1].is_finite() && wo[2].is_finite()) {
             return None;
         }
-        let mut w = [-wo[0], -wo[1], -wo[2]];
+        let mut inside = wo[2] < 0.0;
+        let mut w = if inside { wo } else { [-wo[0], -wo[1], -wo[2]] };
         let mut h = f64::INFINITY;
         let mut weight = [1.0; N];
         for order in 0..=MAX_ORDER {
             match self.next_height(w, h, rng.next_open()) {
                 None => {
+                    let w = if inside { [-w[0], -w[1], -w[2]] } else { w };
                     return Some(Walked { w, weight, order });
                 }
                 Some(next) => h = next,
             }
             let v = [-w[0], -w[1], -w[2]];
+            event(order + 1, v, h, inside, &weight, rng);
             let m = self.visible_normal(v, rng);
-            let (out, f) = facets.scatter(v, m, rng)?;
-            for (a, b) in weight.iter_mut().zip(f) {
+            let s = facets.scatter(v, m, inside, rng)?;
+            for (a, b) in weight.iter_mut().zip(s.weight) {
                 *a *= b;
             }
-            w = out;
+            if s.crossed {
+                // The other medium's frame: every vector and height negated.
+                w = [-s.w[0], -s.w[1], -s.w[2]];
+                h = -h;
+                inside = !inside;
+            } else {
+                w = s.w;
+            }
             // (h = +∞ is the top of a Gaussian microsurface: a grazing ray meets it where C1
             // rounds to 1. Only NaN is a failure.)
             if !(w[0].is_finite() && w[1].is_finite() && w[2].is_finite()) || h.is_nan() {
@@ -267,24 +573,375 @@ impl<D: Distribution<f64>> Microsurface<D> {
         }
         None
     }
+
+    /// One walk from the direction wo (toward the viewer; below the surface for a path that
+    /// starts in a dielectric's lower medium, or a conductor seen from below, which is its
+    /// mirror image). `None` for wo on the horizon or not finite, or a path cut at
+    /// [`MAX_ORDER`].
+    pub fn walk<const N: usize>(
+        &self,
+        facets: &impl Facets<N>,
+        wo: [f64; 3],
+        rng: &mut WalkRng,
+    ) -> Option<Walked<N>> {
+        self.run(facets, wo, rng, |_, _, _, _, _, _| {})
+    }
+
+    /// One sample of the paper's stochastic evaluation (its section 5.2) of
+    /// f(wo, wi)|cos θi| by order: a walk from wo that, at each scattering event at height
+    /// h, adds the path's weight × the phase function's density toward wi × the
+    /// probability that wi escapes from h (next-event estimation). Unbiased for every
+    /// order; order 1's expectation is the single-scattering BSDF with the height-correlated
+    /// G2 (for a reflection 1/(1 + Λo + Λi); for a dielectric's transmission the exact
+    /// height-correlated form B(1 + Λo, 1 + Λi), Heitz 2014, "Understanding the
+    /// masking-shadowing function", section 6, whose approximation 1/(1 + Λo + Λi)
+    /// [`crate::bsdf::Dielectric`] uses as pbrt-v4 does). wi on the other side of the
+    /// macrosurface is a transmission (0 for opaque facets). Units: unit vectors.
+    pub fn eval<const N: usize>(
+        &self,
+        facets: &impl Facets<N>,
+        wo: [f64; 3],
+        wi: [f64; 3],
+        rng: &mut WalkRng,
+    ) -> OrderValues<N> {
+        let mut out = [[0.0; N]; 4];
+        let wi_inside = wi[2] < 0.0;
+        if wi[2] == 0.0
+            || wi[2].is_nan()
+            || (facets.interface_eta().is_none() && wi_inside != (wo[2] < 0.0))
+        {
+            return out;
+        }
+        self.run(facets, wo, rng, |order, v, h, inside, weight, rng| {
+            let crossed = wi_inside != inside;
+            let w = if inside { [-wi[0], -wi[1], -wi[2]] } else { wi };
+            let g = if crossed {
+                self.escape([-w[0], -w[1], -w[2]], -h)
+            } else {
+                self.escape(w, h)
+            };
+            if g == 0.0 {
+                return;
+            }
+            let p = facets.phase(self, v, w, crossed, inside, rng);
+            let k = (order.min(4) - 1) as usize;
+            for c in 0..N {
+                let x = weight[c] * p[c] * g;
+                if x.is_finite() {
+                    out[k][c] += x;
+                }
+            }
+        });
+        out
+    }
 }
 
-/// The albedo of a microsurface by order: E_k(wo) = E[weight; the walk's order is k] for
-/// k = 1, 2, 3 and ≥ 4, their total, and standard errors (per channel 0 of the weight).
-#[derive(Clone, Copy, Debug, PartialEq)]
-pub struct Albedo {
-    /// E₁, E₂, E₃, E₄₊.
+/// A hash of the bits of `xs` (the seed of a stream that is a deterministic function of a
+/// BSDF call's arguments, as [`crate::distribution::UniformStream`] is for the samplers).
+fn seed_of(xs: &[f64]) -> u64 {
+    xs.iter().fold(0x243F_6A88_85A3_08D3, |h: u64, x| {
+        (h ^ x.to_bits())
+            .wrapping_mul(0x9E37_79B9_7F4A_7C15)
+            .rotate_left(31)
+    })
+}
+
+/// The multiple-scattering BSDF of a microsurface, [`Bsdf`] over the random walk, for every
+/// NDF and facet material ([`MirrorFacets`]: a conductor, [`DielectricFacets`]: a rough
+/// interface, [`DiffuseFacets`]).
+///
+/// * `sample` is the walk (exact: its weight f|cos θi|/pdf is the path's, ≤ 1 for F ≤ 1), its
+///   stream seeded by the bits of (uc, u), so a sample is a deterministic function of its
+///   arguments.
+/// * `eval` is one sample of the stochastic evaluation ([`Microsurface::eval`], summed over
+///   orders, divided by |cos θi|), seeded by the bits of (wo, wi): unbiased, noisy.
+///   [`MultipleScattering::eval_orders`] averages many, by order, with standard errors.
+/// * `pdf` is **not** the density of `sample`'s directions (which has no closed form): it is
+///   the paper's MIS proxy (section 6), single scattering's sampling density plus a
+///   diffuse-like term for the higher orders,
+///   p̃(wo, wi) = (1 − q) p₁(wo, wi) + q |cos θi|/π (halved on each side for a dielectric),
+///   with q = 1 − G1(wo) clamped to [0.05, 0.95], which tracks the share of energy beyond
+///   order 1 (0 on a smooth surface, growing with α and toward grazing). `sample` reports
+///   p̃ as its pdf and f = weight · p̃/|cos θi|. Multiple importance sampling stays unbiased
+///   with any weights that sum to one, so a renderer that uses p̃ on both strategies'
+///   sides gets a correct image; the 5 % floor keeps every direction the walk can produce
+///   at a positive p̃.
+/// * The transport is radiance by default: a transmitted f is divided by η'², η' the
+///   relative index along the path (as [`crate::bsdf::Dielectric`]); the walk itself
+///   transports importance.
+/// * There is no smooth limit: at α < 1e-3 the lobes are as sharp as D; a renderer uses
+///   [`crate::bsdf::Dielectric`] or [`crate::bsdf::Conductor`] there, whose delta lobes
+///   have no multiple scattering.
+#[derive(Clone, Debug)]
+pub struct MultipleScattering<D, Fa, const N: usize> {
+    surface: Microsurface<D>,
+    facets: Fa,
+    transport: Transport,
+}
+
+impl<D: Distribution<f64>, Fa: Facets<N>, const N: usize> MultipleScattering<D, Fa, N> {
+    /// The BSDF of `dist` with `facets`, uniform heights, radiance transport.
+    pub fn new(dist: D, facets: Fa) -> Self {
+        MultipleScattering {
+            surface: Microsurface::new(dist, Heights::Uniform),
+            facets,
+            transport: Transport::Radiance,
+        }
+    }
+
+    /// The same for the other transport direction.
+    pub fn with_transport(mut self, transport: Transport) -> Self {
+        self.transport = transport;
+        self
+    }
+
+    /// The same with another height distribution (which changes the random numbers, not
+    /// the BSDF).
+    pub fn with_heights(mut self, heights: Heights) -> Self {
+        self.surface.heights = heights;
+        self
+    }
+
+    /// The microsurface.
+    pub fn surface(&self) -> &Microsurface<D> {
+        &self.surface
+    }
+
+    /// The facets.
+    pub fn facets(&self) -> &Fa {
+        &self.facets
+    }
+
+    /// η'⁻² for a transmission under radiance transport, else 1.
+    fn transport_factor(&self, wo: [f64; 3], wi: [f64; 3]) -> f64 {
+        match self.facets.interface_eta() {
+            Some(eta)
+                if self.transport == Transport::Radiance && (wo[2] < 0.0) != (wi[2] < 0.0) =>
+            {
+                let etap = if wo[2] > 0.0 { eta } else { 1.0 / eta };
+                1.0 / (etap * etap)
+            }
+            _ => 1.0,
+        }
+    }
+
+    /// f(wo, wi) by order (1, 2, 3, ≥ 4) per channel, the mean of `samples` stochastic
+    /// evaluations from the stream `seed`, with standard errors.
+    pub fn eval_orders(&self, wo: [f64; 3], wi: [f64; 3], samples: u64, seed: u64) -> [ByOrder; N] {
+        let mut rng = WalkRng::new(seed);
+        let mut sums = [OrderSums::default(); N];
+        let scale = self.transport_factor(wo, wi) / wi[2].abs();
+        for _ in 0..samples {
+            let e = self.surface.eval(&self.facets, wo, wi, &mut rng);
+            for (c, s) in sums.iter_mut().enumerate() {
+                s.add(std::array::from_fn(|k| e[k][c] * scale));
+            }
+        }
+        sums.map(|s| s.finish(samples))
+    }
+}
+
+impl<D: Distribution<f64>, Fa: Facets<N>, const N: usize> Bsdf<f64>
+    for MultipleScattering<D, Fa, N>
+{
+    type Value = [f64; N];
+
+    fn eval(&self, wo: [f64; 3], wi: [f64; 3]) -> [f64; N] {
+        let mut rng = WalkRng::new(seed_of(&[wo[0], wo[1], wo[2], wi[0], wi[1], wi[2]]));
+        let e = self.surface.eval(&self.facets, wo, wi, &mut rng);
+        let scale = self.transport_factor(wo, wi) / wi[2].abs();
+        std::array::from_fn(|c| {
+            let f = (e[0][c] + e[1][c] + e[2][c] + e[3][c]) * scale;
+            if f.is_finite() {
+                f
+            } else {
+                0.0
+            }
+        })
+    }
+
+    fn pdf(&self, wo: [f64; 3], wi: [f64; 3]) -> f64 {
+        if wo[2] == 0.0 || wi[2] == 0.0 || wo[2].is_nan() || wi[2].is_nan() {
+            return 0.0;
+        }
+        let inside = wo[2] < 0.0;
+        let (wo_s, wi_s) = if inside {
+            ([-wo[0], -wo[1], -wo[2]], [-wi[0], -wi[1], -wi[2]])
+        } else {
+            (wo, wi)
+        };
+        let transmits = self.facets.interface_eta().is_some();
+        if !transmits && !(wi_s[2] > 0.0) {
+            return 0.0;
+        }
+        // (G1 ∈ [0, 1]; the clamp also maps a NaN G1 to the floor.)
+        let q = (1.0 - self.surface.dist.g1(wo_s)).clamp(0.05, 0.95);
+        let diffuse = wi_s[2].abs() * std::f64::consts::FRAC_1_PI;
+        let diffuse = if transmits { 0.5 * diffuse } else { diffuse };
+        let p1 = self.facets.single_pdf(&self.surface, wo_s, wi_s, inside);
+        let p = (1.0 - q) * p1 + q * diffuse;
+        if p.is_finite() {
+            p
+        } else {
+            0.0
+        }
+    }
+
+    fn sample(&self, wo: [f64; 3], uc: f64, u: [f64; 2]) -> Option<BsdfSample<f64, [f64; N]>> {
+        let mut rng = WalkRng::new(seed_of(&[uc, u[0], u[1]]));
+        let p = self.surface.walk(&self.facets, wo, &mut rng)?;
+        let wi = p.w;
+        let pdf = self.pdf(wo, wi);
+        if !(pdf > 0.0 && pdf.is_finite()) {
+            return None;
+        }
+        let transmitted = (wo[2] < 0.0) != (wi[2] < 0.0);
+        let scale = self.transport_factor(wo, wi) * pdf / wi[2].abs();
+        let f = p.weight.map(|x| x * scale);
+        if !f.iter().all(|x| x.is_finite()) {
+            return None;
+        }
+        let eta = match self.facets.interface_eta() {
+            Some(eta) if transmitted => {
+                if wo[2] > 0.0 {
+                    eta
+                } else {
+                    1.0 / eta
+                }
+            }
+            _ => 1.0,
+        };
+        Some(BsdfSample {
+            wi,
+            f,
+            pdf,
+            lobe: if transmitted {
+                Lobe::Transmission
+            } else {
+                Lobe::Reflection
+            },
+            specular: false,
+            eta,
+        })
+    }
+}
+
+/// An estimate with its standard error.
+#[derive(Clone, Copy, Debug, PartialEq, Default)]
+pub struct Estimate {
+    pub mean: f64,
+    pub stderr: f64,
+}
+
+/// Running sums of a Monte Carlo estimator by order (1, 2, 3, ≥ 4 and the total), shifted
+/// by the first sample (the variance as E[(x − K)²] − E[x − K]² with K the first value: the
+/// textbook E[x²] − E[x]² cancels catastrophically where the spread is far below the mean,
+/// as for order 1 near normal incidence, where every sample agrees to 1e-7).
+#[derive(Clone, Copy, Debug, Default)]
+pub(crate) struct OrderSums {
+    shift: Option<[f64; 5]>,
+    s: [f64; 5],
+    s2: [f64; 5],
+}
+
+impl OrderSums {
+    /// One sample's values by order (the total is their sum).
+    pub(crate) fn add(&mut self, x: [f64; 4]) {
+        let t: f64 = x.iter().sum();
+        let x = [x[0], x[1], x[2], x[3], t];
+        let k = *self.shift.get_or_insert(x);
+        for i in 0..5 {
+            let d = x[i] - k[i];
+            self.s[i] += d;
+            self.s2[i] += d * d;
+        }
+    }
+
+    /// The means and standard errors over n samples.
+    pub(crate) fn finish(&self, n: u64) -> ByOrder {
+        let n = n.max(1) as f64;
+        let k = self.shift.unwrap_or_default();
+        let e: [Estimate; 5] = std::array::from_fn(|i| {
+            let d = self.s[i] / n;
+            let var = (self.s2[i] / n - d * d).max(0.0);
+            Estimate {
+                mean: k[i] + d,
+                stderr: (var / n).sqrt(),
+            }
+        });
+        ByOrder {
+            orders: [e[0].mean, e[1].mean, e[2].mean, e[3].mean],
+            stderr: [e[0].stderr, e[1].stderr, e[2].stderr, e[3].stderr],
+            total: e[4].mean,
+            total_stderr: e[4].stderr,
+        }
+    }
+}
+
+/// A quantity by scattering order: orders 1, 2, 3 and ≥ 4, their total, and standard errors.
+#[derive(Clone, Copy, Debug, PartialEq, Default)]
+pub struct ByOrder {
+    /// Orders 1, 2, 3, ≥ 4.
     pub orders: [f64; 4],
     /// Their standard errors.
     pub stderr: [f64; 4],
-    /// E = ΣE_k.
+    /// The sum over orders.
     pub total: f64,
     /// Its standard error.
     pub total_stderr: f64,
 }
 
-/// [`Albedo`] from `walks` walks from wo, channel 0 of the facets' weight; walks that fail
-/// (wo on the horizon, cut paths) count with weight 0.
+/// The albedo of a microsurface from wo by order, per side: `reflect` the energy that leaves
+/// on wo's side, `transmit` on the other (0 for opaque facets), channel 0 of the weight.
+#[derive(Clone, Copy, Debug, PartialEq, Default)]
+pub struct Albedo {
+    pub reflect: ByOrder,
+    pub transmit: ByOrder,
+    /// Reflected plus transmitted (its standard error from the walks' totals: the two sides
+    /// are estimated from the same walks).
+    pub total: Estimate,
+}
+
+/// Running sums of [`Albedo`]'s estimators.
+#[derive(Clone, Copy, Debug, Default)]
+pub(crate) struct AlbedoSums {
+    reflect: OrderSums,
+    transmit: OrderSums,
+    total: OrderSums,
+    walks: u64,
+}
+
+impl AlbedoSums {
+    /// One walk from wo (`None`: failed, weight 0).
+    pub(crate) fn add<const N: usize>(&mut self, wo: [f64; 3], walked: Option<Walked<N>>) {
+        let mut x = [0.0; 4];
+        let mut transmitted = false;
+        if let Some(p) = walked {
+            x[(p.order.clamp(1, 4) - 1) as usize] = p.weight[0];
+            transmitted = (p.w[2] < 0.0) != (wo[2] < 0.0);
+        }
+        let zero = [0.0; 4];
+        self.reflect.add(if transmitted { zero } else { x });
+        self.transmit.add(if transmitted { x } else { zero });
+        self.total.add([x.iter().sum(), 0.0, 0.0, 0.0]);
+        self.walks += 1;
+    }
+
+    pub(crate) fn finish(&self) -> Albedo {
+        let t = self.total.finish(self.walks);
+        Albedo {
+            reflect: self.reflect.finish(self.walks),
+            transmit: self.transmit.finish(self.walks),
+            total: Estimate {
+                mean: t.total,
+                stderr: t.total_stderr,
+            },
+        }
+    }
+}
+
+/// [`Albedo`] from `walks` walks from wo (E_k(wo) = E[weight; the walk leaves on that side
+/// after k events]); walks that fail (wo on the horizon, cut paths) count with weight 0.
 pub fn albedo<D: Distribution<f64>, const N: usize>(
     surface: &Microsurface<D>,
     facets: &impl Facets<N>,
@@ -293,30 +950,11 @@ pub fn albedo<D: Distribution<f64>, const N: usize>(
     seed: u64,
 ) -> Albedo {
     let mut rng = WalkRng::new(seed);
-    let (mut s, mut s2) = ([0.0; 5], [0.0; 5]);
+    let mut sums = AlbedoSums::default();
     for _ in 0..walks {
-        if let Some(r) = surface.walk(facets, wo, &mut rng) {
-            let x = r.weight[0];
-            let k = (r.order.max(1) as usize).min(4) - 1;
-            s[k] += x;
-            s2[k] += x * x;
-            s[4] += x;
-            s2[4] += x * x;
-        }
+        sums.add(wo, surface.walk(facets, wo, &mut rng));
     }
-    let n = walks.max(1) as f64;
-    let stat = |k: usize| {
-        let mean = s[k] / n;
-        let var = (s2[k] / n - mean * mean).max(0.0);
-        (mean, (var / n).sqrt())
-    };
-    let e: [(f64, f64); 5] = std::array::from_fn(stat);
-    Albedo {
-        orders: [e[0].0, e[1].0, e[2].0, e[3].0],
-        stderr: [e[0].1, e[1].1, e[2].1, e[3].1],
-        total: e[4].0,
-        total_stderr: e[4].1,
-    }
+    sums.finish()
 }
 
 /// The single-scattering albedo of a conductor with F = 1 and the height-correlated G2,

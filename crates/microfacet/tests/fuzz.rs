@@ -1589,49 +1589,59 @@ fuzz_slices!(
     2e-6
 );
 
-/// The microsurface random walk (`walk`): hostile outgoing directions (on and below the
-/// horizon, non-unit, NaN), every accepted α (anisotropic), both height distributions,
-/// mirror and diffuse facets: no panic; a walk from wo.z ≤ 0 or NaN is `None`; otherwise the
-/// exit direction is a finite upward unit vector, the order ≥ 1, and the weight in [0, 1].
+/// The microsurface random walk (`walk`): hostile outgoing directions (both hemispheres,
+/// on the horizon, non-unit, NaN), every accepted α (anisotropic), both height
+/// distributions, mirror, diffuse and dielectric facets (η on both sides of 1): no panic; a
+/// walk from wo.z = 0 or NaN is `None`; otherwise the exit direction is a finite unit
+/// vector, on wo's side for opaque facets, the order ≥ 1, and the weight in [0, 1].
 #[test]
 fn walk_contract() {
     use microfacet::fresnel::One;
-    use microfacet::walk::{DiffuseFacets, Heights, Microsurface, MirrorFacets, WalkRng};
+    use microfacet::walk::{
+        DielectricFacets, DiffuseFacets, Heights, Microsurface, MirrorFacets, WalkRng,
+    };
     let mut r = Rng::new(41);
     let mut fails = Failures::default();
     let mut rng = WalkRng::new(seed(41));
     for _ in 0..20 * scale() {
         let (ax, ay) = (alpha(&mut r), alpha(&mut r));
         let heights = r.pick(&[Heights::Uniform, Heights::Gaussian]);
+        let eta = r.pick(&[1.5, 1.0 / 1.33, 1.0, 2.4]);
         let s = Microsurface::new(Microfacet::<f64, Ggx>::new(ax, ay).unwrap(), heights);
         let b = Microsurface::new(Microfacet::<f64, Beckmann>::new(ax, ay).unwrap(), heights);
         for _ in 0..50 {
             let w = direction(&mut r, false).to_unit();
             let wo: [f64; 3] = w.into();
-            let ctx = || format!("α=({ax:e},{ay:e}) {heights:?} wo={wo:?}");
+            let ctx = || format!("α=({ax:e},{ay:e}) {heights:?} η={eta} wo={wo:?}");
             let results = no_panic("walk", ctx(), || {
                 [
                     s.walk(&MirrorFacets(One::<1>), wo, &mut rng)
-                        .map(|x| (x.w, x.weight[0], x.order)),
+                        .map(|x| (x.w, x.weight[0], x.order, true)),
                     b.walk(&MirrorFacets(One::<1>), wo, &mut rng)
-                        .map(|x| (x.w, x.weight[0], x.order)),
+                        .map(|x| (x.w, x.weight[0], x.order, true)),
                     s.walk(&DiffuseFacets(0.8), wo, &mut rng)
-                        .map(|x| (x.w, x.weight[0], x.order)),
+                        .map(|x| (x.w, x.weight[0], x.order, true)),
+                    b.walk(&DielectricFacets(eta), wo, &mut rng)
+                        .map(|x| (x.w, x.weight[0], x.order, false)),
                 ]
             });
             for res in results {
                 match res {
-                    // (A walk is cut at MAX_ORDER bounces: the mean order is about 3α.)
-                    None => fails
-                        .check(wo[2].is_nan() || wo[2] <= 0.0 || ax.max(ay) > 100.0, || {
-                            format!("walk failed at {}", ctx())
-                        }),
-                    Some((w, weight, order)) => {
+                    // (A walk is cut at MAX_ORDER bounces: the mean order is about 3α; and
+                    // through a transparent interface, η = 1, a grazing ray stays grazing,
+                    // about 1/|wo.z| events.)
+                    None => fails.check(
+                        wo[2].is_nan()
+                            || wo[2] == 0.0
+                            || ax.max(ay) > 100.0
+                            || (eta == 1.0 && wo[2].abs() < 1e-3),
+                        || format!("walk failed at {}", ctx()),
+                    ),
+                    Some((w, weight, order, opaque)) => {
                         let len = (w[0] * w[0] + w[1] * w[1] + w[2] * w[2]).sqrt();
                         fails.check(
-                            wo[2] > 0.0
-                                && (len - 1.0).abs() < 1e-9
-                                && w[2] >= 0.0
+                            (len - 1.0).abs() < 1e-9
+                                && (!opaque || w[2] * wo[2] >= 0.0)
                                 && order >= 1
                                 && (0.0..=1.0).contains(&weight),
                             || {
@@ -1644,10 +1654,96 @@ fn walk_contract() {
                     }
                 }
             }
-            evals(3);
+            evals(4);
         }
     }
     fails.finish("walk_contract");
+}
+
+/// The multiple-scattering BSDF (`walk::MultipleScattering`: conductor, dielectric η on both
+/// sides of 1 and both transports, diffuse facets; GGX and Exponential, anisotropic, every
+/// accepted α up to 30): hostile unit directions (both hemispheres, subnormal z), edge
+/// uniforms: no panic; eval and pdf finite and ≥ 0; a sample has a positive finite pdf, a
+/// finite f ≥ 0, a unit wi (on wo's side for opaque facets), and a weight f|cos θi|/pdf
+/// ≤ 1 (F ≤ 1, importance transport).
+#[test]
+fn multiple_scattering_contract() {
+    use microfacet::bsdf::{Bsdf, Transport};
+    use microfacet::fresnel::One;
+    use microfacet::walk::{DielectricFacets, DiffuseFacets, MirrorFacets, MultipleScattering};
+    let mut r = Rng::new(44);
+    let mut fails = Failures::default();
+    for _ in 0..4 * scale() {
+        let (ax, ay) = (alpha(&mut r).min(30.0), alpha(&mut r).min(30.0));
+        let eta = r.pick(&[1.5, 1.0 / 1.33, 1.0, 2.4]);
+        let transport = r.pick(&[Transport::Radiance, Transport::Importance]);
+        let g = Microfacet::<f64, Ggx>::new(ax, ay).unwrap();
+        let e = Microfacet::<f64, Exponential>::new(ax, ay).unwrap();
+        let conductor = MultipleScattering::new(g.clone(), MirrorFacets(One::<1>));
+        let dielectric =
+            MultipleScattering::new(e, DielectricFacets(eta)).with_transport(transport);
+        let diffuse = MultipleScattering::new(g, DiffuseFacets(0.9));
+        for _ in 0..50 {
+            let wo: [f64; 3] = unit_direction::<f64>(&mut r);
+            let wi: [f64; 3] = unit_direction::<f64>(&mut r);
+            let (uc, u) = (uniform(&mut r), [uniform(&mut r), uniform(&mut r)]);
+            let ctx = || {
+                format!(
+                    "α=({ax:e},{ay:e}) η={eta} {transport:?} wo={wo:?} wi={wi:?} u=({uc}, {u:?})"
+                )
+            };
+            let results = no_panic("MultipleScattering", ctx(), || {
+                [
+                    (
+                        conductor.eval(wo, wi),
+                        conductor.pdf(wo, wi),
+                        conductor.sample(wo, uc, u),
+                        true,
+                    ),
+                    (
+                        dielectric.eval(wo, wi),
+                        dielectric.pdf(wo, wi),
+                        dielectric.sample(wo, uc, u),
+                        false,
+                    ),
+                    (
+                        diffuse.eval(wo, wi),
+                        diffuse.pdf(wo, wi),
+                        diffuse.sample(wo, uc, u),
+                        true,
+                    ),
+                ]
+            });
+            for (i, (f, p, s, opaque)) in results.into_iter().enumerate() {
+                fails.check(
+                    f[0].is_finite() && f[0] >= 0.0 && p.is_finite() && p >= 0.0,
+                    || format!("material {i}: eval {f:?} pdf {p} at {}", ctx()),
+                );
+                if let Some(s) = s {
+                    let len = (s.wi[0] * s.wi[0] + s.wi[1] * s.wi[1] + s.wi[2] * s.wi[2]).sqrt();
+                    let weight = s.f[0] * s.wi[2].abs() / s.pdf;
+                    let bound = if opaque || transport == Transport::Importance {
+                        1.0 + 1e-9
+                    } else {
+                        // (Radiance: 1/η'² ≤ 1/min(η, 1/η)².)
+                        (1.0 + 1e-9) * eta.max(1.0 / eta).powi(2)
+                    };
+                    fails.check(
+                        s.pdf > 0.0
+                            && s.pdf.is_finite()
+                            && s.f[0].is_finite()
+                            && s.f[0] >= 0.0
+                            && (len - 1.0).abs() < 1e-9
+                            && (!opaque || s.wi[2] * wo[2] >= 0.0)
+                            && weight <= bound,
+                        || format!("material {i}: sample {s:?} (weight {weight}) at {}", ctx()),
+                    );
+                }
+            }
+            evals(9);
+        }
+    }
+    fails.finish("multiple_scattering_contract");
 }
 
 /// The compensated conductors (`compensate::Compensated`, both schemes, every NDF type that
