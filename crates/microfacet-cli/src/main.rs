@@ -8,6 +8,7 @@ mod report;
 mod report_bsdf;
 mod sample;
 mod svg;
+mod table;
 mod verify;
 
 use std::process::ExitCode;
@@ -65,6 +66,19 @@ const ALBEDO_USAGE: &str = "\
       alpha: a or [ax, ay]; gamma for gtr; heights: uniform (default) or gaussian;
       \"method\":\"quadrature\" -> {\"e1\":value}, the F = 1 conductor's single
       scattering by deterministic quadrature. Errors as in eval.
+";
+
+const TABLE_USAGE: &str = "\
+  microfacet table --ndf NAME --alpha FROM:TO:N[:lin|log|sqrt] --mu FROM:TO:N[:...]
+                   --out FILE.json|FILE.mfa [--gamma G] [--material M] [--eta X]
+                   [--k X] [--rho X] [--method walk|quadrature] [--walks N] [--seed S]
+      albedo tables over (alpha, mu): by scattering order from the random walk
+      (reflected r1..r4, r, transmitted t1..t4, t, total e, each with _se, its
+      standard error), or the F = 1 conductor's single scattering e1 by quadrature.
+      material: furnace (F = 1, default), conductor (--eta, --k), dielectric (--eta;
+      mu < 0 from inside), diffuse (--rho, default 1). Every core; deterministic for
+      a given --seed (default 0) whatever the thread count. FILE.mfa: the binary form
+      documented in microfacet::table.
 ";
 
 const REPORT_USAGE: &str = "\
@@ -133,7 +147,9 @@ fn main() -> ExitCode {
         Some("report") if help => usage(REPORT_USAGE),
         Some("bsdf") if help => usage(BSDF_USAGE),
         Some("albedo") if help => usage(ALBEDO_USAGE),
+        Some("table") if help => usage(TABLE_USAGE),
         Some("albedo") => albedo::run(&rest),
+        Some("table") => table::run(&rest),
         Some("bsdf") => bsdf::run(&rest),
         Some("verify") => verify::run(&rest),
         Some("eval") => eval::run(&rest),
@@ -142,7 +158,7 @@ fn main() -> ExitCode {
         Some("-h" | "--help" | "help") => {
             print!(
                 "microfacet {} — microfacet NDFs, exact and verified\n\nusage:\n\
-                 {VERIFY_USAGE}{EVAL_USAGE}{BSDF_USAGE}{ALBEDO_USAGE}{SAMPLE_USAGE}{REPORT_USAGE}{USAGE_TAIL}",
+                 {VERIFY_USAGE}{EVAL_USAGE}{BSDF_USAGE}{ALBEDO_USAGE}{TABLE_USAGE}{SAMPLE_USAGE}{REPORT_USAGE}{USAGE_TAIL}",
                 env!("CARGO_PKG_VERSION")
             );
             Ok(ExitCode::SUCCESS)

@@ -108,6 +108,7 @@ pub mod smith;
 pub mod solve;
 pub mod special;
 pub mod stochastic;
+pub mod table;
 pub mod vec3;
 pub mod verify;
 pub mod visible;

@@ -857,6 +857,21 @@ impl OrderSums {
         }
     }
 
+    /// Adds another run's sums (for chunked and parallel runs): the shifts differ, so the
+    /// other's sums are moved to this one's shift, s' = s + n δ, s2' = s2 + 2δ s + n δ².
+    pub(crate) fn merge(&mut self, o: &OrderSums, n_other: u64) {
+        let Some(ko) = o.shift else {
+            return;
+        };
+        let k = *self.shift.get_or_insert(ko);
+        let n = n_other as f64;
+        for i in 0..5 {
+            let d = ko[i] - k[i];
+            self.s2[i] += o.s2[i] + 2.0 * d * o.s[i] + n * d * d;
+            self.s[i] += o.s[i] + n * d;
+        }
+    }
+
     /// The means and standard errors over n samples.
     pub(crate) fn finish(&self, n: u64) -> ByOrder {
         let n = n.max(1) as f64;
@@ -925,6 +940,13 @@ impl AlbedoSums {
         self.transmit.add(if transmitted { x } else { zero });
         self.total.add([x.iter().sum(), 0.0, 0.0, 0.0]);
         self.walks += 1;
+    }
+
+    pub(crate) fn merge(&mut self, o: &AlbedoSums) {
+        self.reflect.merge(&o.reflect, o.walks);
+        self.transmit.merge(&o.transmit, o.walks);
+        self.total.merge(&o.total, o.walks);
+        self.walks += o.walks;
     }
 
     pub(crate) fn finish(&self) -> Albedo {
