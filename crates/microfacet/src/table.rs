@@ -203,7 +203,7 @@ impl Spec {
             );
         }
         for &a in &self.alpha {
-            with_distribution!(self.ndf, a, self.gamma, |d| drop(d));
+            with_distribution!(self.ndf, a, self.gamma, |d| d.alpha());
         }
         Ok(())
     }
