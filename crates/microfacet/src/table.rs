@@ -239,7 +239,7 @@ struct Task {
 /// What a task produced.
 enum Done {
     E1(f64),
-    Walks(AlbedoSums),
+    Walks(Box<AlbedoSums>),
 }
 
 /// One task's work on the distribution `d`, from wo.
@@ -267,7 +267,7 @@ fn cell<D: Distribution<f64> + Clone>(d: &D, spec: &Spec, wo: [f64; 3], t: &Task
         Material::Dielectric { eta } => walks!(DielectricFacets(eta)),
         Material::Diffuse { rho } => walks!(DiffuseFacets(rho)),
     }
-    Done::Walks(sums)
+    Done::Walks(Box::new(sums))
 }
 
 impl Grid {
