@@ -45,7 +45,8 @@ fn nodes(flag: &str, s: &str) -> Result<Vec<f64>, String> {
             ))
         })?;
     let spacing = parts.get(3).copied().unwrap_or("lin");
-    let (fwd, inv): (fn(f64) -> f64, fn(f64) -> f64) = match spacing {
+    type Map = fn(f64) -> f64;
+    let (fwd, inv): (Map, Map) = match spacing {
         "lin" => (|x| x, |x| x),
         "log" => (f64::ln, f64::exp),
         "sqrt" => (f64::sqrt, |x| x * x),
