@@ -5,6 +5,7 @@
 use crate::eval::field;
 use microfacet::bsdf::{Bsdf, BsdfSample, Conductor, Dielectric, Lobe, Masking};
 use microfacet::fresnel::{self, One};
+use microfacet::walk::{ByOrder, DielectricFacets, MirrorFacets, MultipleScattering};
 use microfacet::{Beckmann, Distribution, DoubleGgx, Exponential, Ggx, Gtr, Microfacet, NdfKind};
 use serde_json::{json, Map, Value};
 use std::process::ExitCode;
@@ -15,9 +16,12 @@ pub fn run(args: &[String]) -> Result<ExitCode, String> {
     crate::eval::json_lines("bsdf", args, |text| bsdf_line(text, &mut cache))
 }
 
-const FIELDS: [&str; 11] = [
-    "bsdf", "ndf", "alpha", "gamma", "eta", "k", "g2", "op", "wo", "wi", "u",
+const FIELDS: [&str; 13] = [
+    "bsdf", "ndf", "alpha", "gamma", "eta", "k", "g2", "op", "wo", "wi", "u", "samples", "seed",
 ];
+
+/// Samples per eval_ms line at most (10⁹: minutes; a typo's 10²⁰ is an error, not a hang).
+const MAX_SAMPLES: f64 = 1e9;
 
 /// Answers one request line.
 fn bsdf_line(
@@ -146,8 +150,21 @@ enum Material {
 }
 
 enum Op {
-    Eval { wo: [f64; 3], wi: [f64; 3] },
-    Sample { wo: [f64; 3], u: [f64; 3] },
+    Eval {
+        wo: [f64; 3],
+        wi: [f64; 3],
+    },
+    Sample {
+        wo: [f64; 3],
+        u: [f64; 3],
+    },
+    /// The multiple-scattering BSDF by order (the random walk's stochastic evaluation).
+    EvalMs {
+        wo: [f64; 3],
+        wi: [f64; 3],
+        samples: u64,
+        seed: u64,
+    },
 }
 
 struct Request {
@@ -202,7 +219,45 @@ impl Request {
                 _ => return Err("field 'g2' must be \"correlated\" or \"separable\"".into()),
             },
         };
-        let op = match string(obj, "op")? {
+        let op_name = string(obj, "op")?;
+        if op_name != "eval_ms" && (obj.contains_key("samples") || obj.contains_key("seed")) {
+            return Err("fields 'samples' and 'seed' are for op eval_ms".into());
+        }
+        let op = match op_name {
+            "eval_ms" => {
+                if obj.contains_key("u") {
+                    return Err("field 'u' is for op sample".into());
+                }
+                if masking != Masking::Correlated {
+                    return Err(
+                        "op eval_ms is the random walk, whose G2 is height-correlated (no 'g2')"
+                            .into(),
+                    );
+                }
+                let samples = field(obj, "samples")?;
+                if !((1.0..=MAX_SAMPLES).contains(&samples) && samples.fract() == 0.0) {
+                    return Err(format!(
+                        "field 'samples' must be a whole number in [1, 1e9], got {samples}"
+                    ));
+                }
+                let seed = if obj.contains_key("seed") {
+                    let s = field(obj, "seed")?;
+                    if !((0.0..1.8e19).contains(&s) && s.fract() == 0.0) {
+                        return Err(format!(
+                            "field 'seed' must be a whole number in [0, 2^64), got {s}"
+                        ));
+                    }
+                    s as u64
+                } else {
+                    0
+                };
+                Op::EvalMs {
+                    wo: direction(obj, "wo")?,
+                    wi: direction(obj, "wi")?,
+                    samples: samples as u64,
+                    seed,
+                }
+            }
             "eval" => {
                 if obj.contains_key("u") {
                     return Err("field 'u' is for op sample".into());
@@ -227,7 +282,7 @@ impl Request {
             }
             other => {
                 return Err(format!(
-                    "unknown op '{}' (expected eval or sample)",
+                    "unknown op '{}' (expected eval, sample or eval_ms)",
                     crate::clip(other)
                 ))
             }
@@ -240,6 +295,36 @@ impl Request {
     }
 
     fn answer<D: Distribution<f64> + Clone>(&self, d: D) -> Result<Value, String> {
+        if let Op::EvalMs {
+            wo,
+            wi,
+            samples,
+            seed,
+        } = self.op
+        {
+            let by_order = match self.material {
+                Material::Mirror => MultipleScattering::new(d, MirrorFacets(One::<3>))
+                    .eval_orders(wo, wi, samples, seed),
+                Material::Metal { eta, k } => {
+                    MultipleScattering::new(d, MirrorFacets(fresnel::Conductor { eta, k }))
+                        .eval_orders(wo, wi, samples, seed)
+                }
+                Material::Glass { eta } => {
+                    let [b] = MultipleScattering::new(d, DielectricFacets(eta))
+                        .eval_orders(wo, wi, samples, seed);
+                    [b; 3]
+                }
+            };
+            let per = |f: &dyn Fn(&ByOrder) -> f64| by_order.map(|b| f(&b));
+            let orders: Vec<[f64; 3]> = (0..4).map(|k| per(&|b| b.orders[k])).collect();
+            let stderr: Vec<[f64; 3]> = (0..4).map(|k| per(&|b| b.stderr[k])).collect();
+            return Ok(json!({
+                "orders": orders,
+                "stderr": stderr,
+                "total": per(&|b| b.total),
+                "total_stderr": per(&|b| b.total_stderr),
+            }));
+        }
         match self.material {
             Material::Mirror => self.run(
                 &Conductor::new(d, One::<3>).with_masking(self.masking),
@@ -263,6 +348,7 @@ impl Request {
     ) -> Result<Value, String> {
         match self.op {
             Op::Eval { wo, wi } => Ok(json!({ "f": rgb(b.eval(wo, wi)), "pdf": b.pdf(wo, wi) })),
+            Op::EvalMs { .. } => unreachable!("answered in `answer`"),
             Op::Sample { wo, u } => Ok(match b.sample(wo, u[0], [u[1], u[2]]) {
                 Some(BsdfSample {
                     wi,

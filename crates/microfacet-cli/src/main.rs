@@ -53,6 +53,10 @@ const BSDF_USAGE: &str = "\
       alpha: a or [ax, ay]; gamma for gtr (anisotropic only at gamma 2); conductor:
       eta and k (number or [r,g,b]; neither: F = 1); dielectric: eta (one number);
       g2: correlated (default) or separable. Directions are normalised. Errors as in eval.
+      op eval_ms: the multiple-scattering BSDF (the random walk of Heitz et al. 2016)
+        by order, the mean of \"samples\" stochastic evaluations from \"seed\" (default 0)
+        -> {\"orders\":[f1,f2,f3,f4plus],\"stderr\":[...],\"total\":f,\"total_stderr\":e},
+        each an [r,g,b] triple (orders 1: single scattering, height-correlated G2).
 ";
 
 const ALBEDO_USAGE: &str = "\

@@ -542,7 +542,7 @@ fn albedo_by_order_and_by_quadrature() {
 fn albedo_reports_bad_lines_and_goes_on() {
     let input = r#"{"ndf":"ggx","alpha":1,"mu":0.5,"walks":1e30}
 {"ndf":"ggx","alpha":1,"mu":1.5,"walks":10}
-{"ndf":"ggx","alpha":1,"mu":0.5,"walks":10,"material":"dielectric","eta":1.5}
+{"ndf":"ggx","alpha":1,"mu":-0.5,"walks":10}
 {"ndf":"ggx","alpha":1,"mu":0.5,"walks":10,"eta":0.2}
 {"ndf":"ggx","alpha":1,"mu":0.5,"walks":10,"spin":1}
 {"ndf":"ggx","alpha":1,"mu":0.5,"method":"quadrature","material":"diffuse"}
@@ -555,7 +555,7 @@ fn albedo_reports_bad_lines_and_goes_on() {
     for (g, needle) in got[..6].iter().zip([
         "'walks'",
         "'mu'",
-        "not built yet",
+        "opaque",
         "both 'eta' and 'k'",
         "unknown field 'spin'",
         "quadrature",
@@ -564,4 +564,127 @@ fn albedo_reports_bad_lines_and_goes_on() {
         assert!(e.contains(needle), "{e} lacks {needle}");
     }
     assert_eq!(got[6]["total"].as_f64(), Some(1.0));
+}
+
+/// A dielectric's albedo by side from either side: reflection and transmission by order,
+/// their total 1 (every walk leaves with weight 1), and the same numbers for the same seed.
+#[test]
+fn albedo_of_a_dielectric() {
+    let input = r#"{"ndf":"beckmann","alpha":0.7,"mu":0.5,"walks":2000,"material":"dielectric","eta":1.5,"seed":4}
+{"ndf":"beckmann","alpha":0.7,"mu":-0.5,"walks":2000,"material":"dielectric","eta":1.5,"seed":4}
+{"ndf":"beckmann","alpha":0.7,"mu":0.5,"walks":2000,"material":"dielectric","eta":1.5,"seed":4}
+"#;
+    let out = microfacet(&["albedo"], input);
+    assert_eq!(out.status.code(), Some(0));
+    let got = lines(&out.stdout);
+    for g in &got {
+        let (r, t) = (
+            g["reflect"]["total"].as_f64().unwrap(),
+            g["transmit"]["total"].as_f64().unwrap(),
+        );
+        assert!(r > 0.0 && t > 0.0 && (r + t - 1.0).abs() < 1e-12, "{g}");
+        assert_eq!(g["total"].as_f64(), Some(1.0));
+    }
+    assert_eq!(got[0], got[2]);
+    // From inside, total internal reflection keeps more light in.
+    assert!(got[1]["reflect"]["total"].as_f64() > got[0]["reflect"]["total"].as_f64());
+}
+
+/// `bsdf` op eval_ms: order 1 is the single-scattering eval within 4 standard errors, the
+/// total exceeds it, and bad requests are one-line errors.
+#[test]
+fn bsdf_eval_ms() {
+    let input = r#"{"bsdf":"conductor","ndf":"ggx","alpha":1,"op":"eval_ms","wo":[0.6,0,0.8],"wi":[0,0.6,0.8],"samples":20000,"seed":3}
+{"bsdf":"conductor","ndf":"ggx","alpha":1,"op":"eval","wo":[0.6,0,0.8],"wi":[0,0.6,0.8]}
+{"bsdf":"conductor","ndf":"ggx","alpha":1,"op":"eval_ms","wo":[0.6,0,0.8],"wi":[0,0.6,0.8],"samples":0}
+{"bsdf":"conductor","ndf":"ggx","alpha":1,"op":"eval_ms","wo":[0.6,0,0.8],"wi":[0,0.6,0.8],"samples":10,"g2":"separable"}
+{"bsdf":"conductor","ndf":"ggx","alpha":1,"op":"eval","wo":[0.6,0,0.8],"wi":[0,0.6,0.8],"samples":10}
+"#;
+    let out = microfacet(&["bsdf"], input);
+    assert_eq!(out.status.code(), Some(1));
+    let got = lines(&out.stdout);
+    let (ms, ss) = (&got[0], got[1]["f"][0].as_f64().unwrap());
+    let (o1, e1) = (
+        ms["orders"][0][0].as_f64().unwrap(),
+        ms["stderr"][0][0].as_f64().unwrap(),
+    );
+    assert!((o1 - ss).abs() <= 4.0 * e1, "{o1} ± {e1} vs {ss}");
+    assert!(ms["total"][0].as_f64().unwrap() > 1.5 * ss, "{ms}");
+    for (g, needle) in got[2..]
+        .iter()
+        .zip(["'samples'", "height-correlated", "eval_ms"])
+    {
+        let e = g["error"].as_str().unwrap_or_else(|| panic!("{g}"));
+        assert!(e.contains(needle), "{e} lacks {needle}");
+    }
+}
+
+/// `table`: a small walk table as JSON and as the binary form, the same numbers; bad
+/// arguments are one line and exit 2.
+#[test]
+fn table_writes_json_and_binary() {
+    let dir = std::env::temp_dir().join(format!("microfacet-table-{}", std::process::id()));
+    std::fs::create_dir_all(&dir).unwrap();
+    let (json, bin) = (dir.join("t.json"), dir.join("t.mfa"));
+    for out in [&json, &bin] {
+        let o = microfacet(
+            &[
+                "table",
+                "--ndf",
+                "ggx",
+                "--alpha",
+                "0.3:1:2:log",
+                "--mu",
+                "0.2:1:3",
+                "--walks",
+                "5000",
+                "--seed",
+                "2",
+                "--out",
+                out.to_str().unwrap(),
+            ],
+            "",
+        );
+        assert_eq!(
+            o.status.code(),
+            Some(0),
+            "{}",
+            String::from_utf8_lossy(&o.stderr)
+        );
+    }
+    let j: serde_json::Value = serde_json::from_slice(&std::fs::read(&json).unwrap()).unwrap();
+    let g = microfacet::table::Grid::from_bytes(&std::fs::read(&bin).unwrap()).unwrap();
+    assert_eq!(j["alpha"].as_array().unwrap().len(), 2);
+    let e = g.quantities.iter().position(|q| q == "e").unwrap();
+    for ia in 0..2 {
+        for im in 0..3 {
+            assert_eq!(g.value(ia, im, e), 1.0);
+            let r1 = j["values"][ia][im][0].as_f64().unwrap();
+            assert_eq!(r1 as f32, g.value(ia, im, 0));
+        }
+    }
+    for args in [
+        &[
+            "table", "--ndf", "ggx", "--alpha", "0.3:1", "--mu", "0.5:1:2", "--walks", "10",
+            "--out", "x.json",
+        ][..],
+        &[
+            "table", "--ndf", "ggx", "--alpha", "0.3:1:2", "--mu", "0:1:2", "--walks", "10",
+            "--out", "x.json",
+        ],
+        &[
+            "table", "--ndf", "gtr", "--alpha", "0.3:1:2", "--mu", "0.5:1:2", "--walks", "10",
+            "--out", "x.json",
+        ],
+        &[
+            "table", "--ndf", "ggx", "--alpha", "0.3:1:2", "--mu", "0.5:1:2", "--walks", "10",
+            "--out", "x.txt",
+        ],
+    ] {
+        let o = microfacet(args, "");
+        assert_eq!(o.status.code(), Some(2), "{args:?}");
+        let e = String::from_utf8_lossy(&o.stderr);
+        assert_eq!(e.lines().count(), 1, "{e}");
+    }
+    std::fs::remove_dir_all(&dir).ok();
 }

@@ -25,7 +25,10 @@
 use crate::bsdf::{Bsdf, BsdfSample, Conductor, Lobe};
 use crate::distribution::Distribution;
 use crate::fresnel::Fresnel;
+use crate::table::Grid;
 use crate::walk::single_scattering_albedo_tol;
+use crate::NdfKind;
+use std::sync::OnceLock;
 
 /// The table's quadrature tolerance (relative): far below the interpolation's 1e-5 to 1e-4.
 const TABLE_TOL: f64 = 1e-7;
@@ -55,21 +58,31 @@ pub struct AlbedoTable {
 }
 
 impl AlbedoTable {
-    /// The table of `dist` (F = 1, height-correlated G2): 33 quadratures of the
-    /// single-scattering albedo (measured, GGX and the Exponential NDF: 30–130 ms at α ≥ 0.3,
-    /// 260–310 ms at α = 0.05, where the lobe is narrow): build once per material.
+    /// The table of `dist`: interpolated from the tables the library ships (see
+    /// [`AlbedoTable::shipped`]; microseconds) where `dist` is one of the library's
+    /// isotropic materials in their range, else computed ([`AlbedoTable::compute`]).
     pub fn new<D: Distribution<f64>>(dist: &D) -> Self {
+        let (ax, ay) = dist.alpha();
+        match dist.ndf() {
+            Some((kind, gamma)) if ax == ay => {
+                Self::shipped(kind, gamma, ax).unwrap_or_else(|| Self::compute(dist))
+            }
+            _ => Self::compute(dist),
+        }
+    }
+
+    /// The table of `dist` computed here: 33 quadratures of the single-scattering albedo
+    /// (measured, GGX and the Exponential NDF: 30–130 ms at α ≥ 0.3, 260–310 ms at α = 0.05,
+    /// where the lobe is narrow).
+    pub fn compute<D: Distribution<f64>>(dist: &D) -> Self {
         let (ax, ay) = dist.alpha();
         let azimuths: &[f64] = if ax == ay {
             &[0.0]
         } else {
             &[0.0, 0.25, 0.5, 0.75]
         };
-        let e = std::array::from_fn(|k| {
-            let s = k as f64 / (NODES - 1) as f64;
-            // μ = 0 itself: the albedo's limit, taken at μ = 1e-6 (the lobe there is a
-            // continuous function of μ; E(1e-6) differs from the limit by O(1e-6)).
-            let mu = (s * s).max(1e-6);
+        Self::from_nodes(std::array::from_fn(|k| {
+            let mu = node_mu(k);
             let st = ((1.0 - mu) * (1.0 + mu)).sqrt();
             azimuths
                 .iter()
@@ -79,7 +92,44 @@ impl AlbedoTable {
                 })
                 .sum::<f64>()
                 / azimuths.len() as f64
-        });
+        }))
+    }
+
+    /// The table of an isotropic material of NDF `kind` (GTR: γ) at α from the tables the
+    /// library ships: E(μ) at the 33 nodes over 61 values of α log-uniform on
+    /// [0.01, 4] (`data/compensation/*.mfa`, [`crate::table`]'s binary form, made by
+    /// `microfacet table --method quadrature --ndf NAME --alpha 0.01:4:61:log --mu 0:1:33:sqrt`),
+    /// cubic Lagrange in ln α. For GGX, Beckmann, Double GGX, the Exponential NDF, and GTR
+    /// at γ = 1 (Burley's clearcoat) and γ = 2 (GGX); `None` elsewhere (other γ, α outside
+    /// the range) or if a shipped file does not read (never, tests/compensate.rs reads
+    /// them all).
+    pub fn shipped(kind: NdfKind, gamma: Option<f64>, alpha: f64) -> Option<Self> {
+        let file = match (kind, gamma) {
+            (NdfKind::Gtr, Some(2.0)) => 1,
+            (NdfKind::Gtr, Some(1.0)) => 4,
+            (NdfKind::Gtr, _) => return None,
+            (NdfKind::Ggx, _) => 1,
+            (NdfKind::Beckmann, _) => 0,
+            (NdfKind::DoubleGgx, _) => 2,
+            (NdfKind::Exponential, _) => 3,
+        };
+        let grid = shipped_grid(file)?;
+        let la = alpha.ln();
+        let nodes = &grid.spec.alpha;
+        let (l0, l1) = (nodes[0].ln(), nodes[nodes.len() - 1].ln());
+        // (A relative 1e-12 of slack: α = 4 itself, through ln and back.)
+        if !(la >= l0 - 1e-12 && la <= l1 + 1e-12) {
+            return None;
+        }
+        let x =
+            ((la - l0) / (l1 - l0) * (nodes.len() - 1) as f64).clamp(0.0, (nodes.len() - 1) as f64);
+        Some(Self::from_nodes(std::array::from_fn(|k| {
+            lagrange4(x, nodes.len(), |j| grid.value(j, k, 0) as f64)
+        })))
+    }
+
+    /// The table of E at the nodes, with E_avg of its interpolant.
+    fn from_nodes(e: [f64; NODES]) -> Self {
         let mut t = AlbedoTable { e, e_avg: 0.0 };
         // E_avg = 2∫E μ dμ = 4∫E(s²) s³ ds over the interpolant, interval by interval.
         let h = 1.0 / (NODES - 1) as f64;
@@ -106,21 +156,55 @@ impl AlbedoTable {
 
     /// The cubic Lagrange interpolant through the four nodes nearest s = √μ.
     fn e_at_s(&self, s: f64) -> f64 {
-        let x = s.clamp(0.0, 1.0) * (NODES - 1) as f64;
-        let k = (x.floor() as usize).clamp(1, NODES - 3) - 1;
-        let t = x - k as f64;
-        let mut v = 0.0;
-        for j in 0..4 {
-            let mut l = 1.0;
-            for m in 0..4 {
-                if m != j {
-                    l *= (t - m as f64) / (j as f64 - m as f64);
-                }
-            }
-            v += l * self.e[k + j];
-        }
-        v
+        lagrange4(s.clamp(0.0, 1.0) * (NODES - 1) as f64, NODES, |j| self.e[j])
     }
+}
+
+/// μ at node k: s² for s = k/(NODES − 1), the grazing node at μ = 1e-6 (the albedo's
+/// limit there: the lobe is a continuous function of μ, and E(1e-6) differs from the
+/// limit by O(1e-6)).
+fn node_mu(k: usize) -> f64 {
+    let s = k as f64 / (NODES - 1) as f64;
+    (s * s).max(1e-6)
+}
+
+/// The cubic Lagrange interpolant at x (in node units, 0 ≤ x ≤ n − 1) through the four
+/// nodes of `value` nearest it (n ≥ 4).
+fn lagrange4(x: f64, n: usize, value: impl Fn(usize) -> f64) -> f64 {
+    let k = (x.floor() as usize).clamp(1, n - 3) - 1;
+    let t = x - k as f64;
+    let mut v = 0.0;
+    for j in 0..4 {
+        let mut l = 1.0;
+        for m in 0..4 {
+            if m != j {
+                l *= (t - m as f64) / (j as f64 - m as f64);
+            }
+        }
+        v += l * value(k + j);
+    }
+    v
+}
+
+/// The shipped tables: Beckmann, GGX, Double GGX, Exponential, GTR γ = 1.
+const SHIPPED: [&[u8]; 5] = [
+    include_bytes!("../data/compensation/beckmann.mfa"),
+    include_bytes!("../data/compensation/ggx.mfa"),
+    include_bytes!("../data/compensation/double_ggx.mfa"),
+    include_bytes!("../data/compensation/exponential.mfa"),
+    include_bytes!("../data/compensation/gtr1.mfa"),
+];
+
+/// The shipped table `i`, read once.
+fn shipped_grid(i: usize) -> Option<&'static Grid> {
+    static GRIDS: [OnceLock<Option<Grid>>; 5] = [const { OnceLock::new() }; 5];
+    GRIDS[i]
+        .get_or_init(|| {
+            Grid::from_bytes(SHIPPED[i])
+                .ok()
+                .filter(|g| g.spec.mu.len() == NODES && g.spec.alpha.len() >= 4)
+        })
+        .as_ref()
 }
 
 /// Which compensation: see the [module docs](self).
@@ -148,7 +232,7 @@ impl<D: Distribution<f64> + Clone, Fr: Fresnel<f64, N> + Clone, const N: usize>
     Compensated<D, Fr, N>
 {
     /// The compensated conductor of `dist` and `fresnel` (height-correlated G2), its table
-    /// built here (see [`AlbedoTable::new`]).
+    /// shipped or built here (see [`AlbedoTable::new`]).
     pub fn new(dist: D, fresnel: Fr, scheme: Scheme) -> Self {
         let table = AlbedoTable::new(&dist);
         Self::from_table(dist, fresnel, scheme, table)

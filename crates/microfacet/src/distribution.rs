@@ -174,6 +174,13 @@ pub trait Distribution<F: Real> {
         self.d(wm) * wm[2]
     }
 
+    /// Which NDF this is (with GTR's γ), where the type knows: the library's materials
+    /// ([`Microfacet`], [`Exact`]) answer, so that [`crate::compensate`] can use the tables
+    /// it ships; `None` by default.
+    fn ndf(&self) -> Option<(crate::NdfKind, Option<f64>)> {
+        None
+    }
+
     /// Whether the surface is effectively smooth (max(αx, αy) < 1e-3): the BSDFs then
     /// behave as a perfect mirror or interface (a delta lobe), as pbrt-v4 does. At α = 1e-3
     /// the GGX lobe's half-width is 0.06°, below a pixel's footprint in any practical
@@ -842,6 +849,12 @@ impl<F: Real, N: Shape> Distribution<F> for Microfacet<F, N> {
     fn alpha(&self) -> (F, F) {
         (self.ax, self.ay)
     }
+    fn ndf(&self) -> Option<(crate::NdfKind, Option<f64>)> {
+        Some(match N::UNIT {
+            Some(unit) => (unit.kind(), None),
+            None => (crate::NdfKind::Gtr, Some(self.exact.gamma)),
+        })
+    }
 
     #[inline(always)]
     fn d(&self, wm: [F; 3]) -> F {
@@ -960,6 +973,12 @@ impl Exact {
 impl Distribution<f64> for Exact {
     fn alpha(&self) -> (f64, f64) {
         self.alpha
+    }
+    fn ndf(&self) -> Option<(crate::NdfKind, Option<f64>)> {
+        Some(match &self.inner {
+            ExactInner::Stretched(s) => (s.kind().kind(), None),
+            ExactInner::Gtr(g) => (crate::NdfKind::Gtr, Some(g.0.gamma())),
+        })
     }
     fn d(&self, wm: [f64; 3]) -> f64 {
         self.surface().d(Vec3::from(wm))

@@ -9,8 +9,8 @@
 //!
 //! **Quantities** per cell, named in the file:
 //! * method `quadrature`: `e1`, the single-scattering albedo of the F = 1 conductor with the
-//!   height-correlated G2 ([`crate::walk::single_scattering_albedo`], relative error
-//!   ≤ 1e-6);
+//!   height-correlated G2 ([`crate::walk::single_scattering_albedo`] at relative tolerance
+//!   1e-7, error ≤ 1e-6; μ = 0 is the grazing limit, taken at μ = 1e-6);
 //! * method `walk`: `r1 r2 r3 r4 r` (reflected energy by order 1, 2, 3, ≥ 4, and in all),
 //!   `t1 t2 t3 t4 t` (transmitted; 0 for opaque facets), `e` (their sum), each followed by
 //!   its standard error in `<name>_se`.
@@ -34,8 +34,8 @@
 use crate::distribution::Distribution;
 use crate::family::NdfKind;
 use crate::walk::{
-    single_scattering_albedo, AlbedoSums, DielectricFacets, DiffuseFacets, Heights, Microsurface,
-    MirrorFacets, WalkRng,
+    single_scattering_albedo_tol, AlbedoSums, DielectricFacets, DiffuseFacets, Heights,
+    Microsurface, MirrorFacets, WalkRng,
 };
 use crate::{Beckmann, DoubleGgx, Exponential, Ggx, Gtr, Microfacet};
 
@@ -172,10 +172,12 @@ impl Spec {
             }
         }
         let transmits = matches!(self.material, Material::Dielectric { .. });
+        let quadrature = self.method == Method::Quadrature;
         for &m in &self.mu {
-            if !(m != 0.0 && m.abs() <= 1.0) || (m < 0.0 && !transmits) {
+            let grazing = quadrature && m == 0.0;
+            if !((m != 0.0 || grazing) && m.abs() <= 1.0) || (m < 0.0 && !transmits) {
                 return bad(format!(
-                    "μ must be in (0, 1] (a dielectric also [-1, 0)), got {m}"
+                    "μ must be in (0, 1] (the quadrature also 0, a dielectric's walk also [-1, 0)), got {m}"
                 ));
             }
         }
@@ -245,7 +247,10 @@ enum Done {
 /// One task's work on the distribution `d`, from wo.
 fn cell<D: Distribution<f64> + Clone>(d: &D, spec: &Spec, wo: [f64; 3], t: &Task) -> Done {
     let Method::Walk { seed, .. } = spec.method else {
-        return Done::E1(single_scattering_albedo(d, wo));
+        // (μ = 0: the limit, at μ = 1e-6, as compensate's tables take it.)
+        let mu = wo[2].max(1e-6);
+        let wo = [((1.0 - mu) * (1.0 + mu)).sqrt(), 0.0, mu];
+        return Done::E1(single_scattering_albedo_tol(d, wo, 1e-7));
     };
     let s = Microsurface::new(d.clone(), Heights::Uniform);
     let mut rng = WalkRng::new(chunk_seed(seed, t.cell as u64, t.chunk));

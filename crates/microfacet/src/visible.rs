@@ -110,6 +110,16 @@ pub enum UnitSlopes {
 }
 
 impl UnitSlopes {
+    /// The NDF it is the α = 1 slope distribution of.
+    pub fn kind(self) -> crate::NdfKind {
+        match self {
+            UnitSlopes::Beckmann => crate::NdfKind::Beckmann,
+            UnitSlopes::Ggx => crate::NdfKind::Ggx,
+            UnitSlopes::DoubleGgx => crate::NdfKind::DoubleGgx,
+            UnitSlopes::Exponential => crate::NdfKind::Exponential,
+        }
+    }
+
     /// E[q(component)] over the mixing distribution (or q itself for a plain component).
     fn mix(self, q: impl Fn(Component) -> f64) -> f64 {
         match self {
