@@ -6,6 +6,7 @@ mod bsdf;
 mod eval;
 mod report;
 mod report_bsdf;
+mod report_ms;
 mod sample;
 mod svg;
 mod table;

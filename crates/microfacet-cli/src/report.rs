@@ -878,6 +878,15 @@ beyond them in the repository's <code>docs/derivations.md</code>.</p>\
     }
     body.push_str("</div></section>");
 
+    progress("multiple scattering");
+    body.push_str(
+        r#"<section id="multiple-scattering"><h2>Multiple scattering, every NDF</h2><p class="def">The microsurface random walk (<code>walk</code>, Heitz, Hanika, d'Eon &amp; Dachsbacher 2016) by scattering order, the single-scattering albedo tables the library ships, and energy compensation (<code>compensate</code>: Kulla &amp; Conty 2017, Turquin 2019).</p><div class="plots">"#,
+    );
+    for p in crate::report_ms::plots() {
+        body.push_str(&p.to_html());
+    }
+    body.push_str("</div></section>");
+
     progress("identity checks (verify)");
     let checks = run_checks(&Sweep::default(), |_| {});
     let failed = checks.iter().filter(|c| !c.pass()).count();

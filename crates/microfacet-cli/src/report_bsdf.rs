@@ -24,9 +24,12 @@ const GOLD_G: fresnel::Conductor<f64, 1> = fresnel::Conductor {
 const THETA_O: [f64; 3] = [0.0, 45.0, 75.0];
 
 /// Evaluates `$body` with `$d` bound to the f64 `Microfacet` of `$kind` at (α, α) (GTR at
-/// γ = 1.5): one expression, every NDF type.
+/// γ = 1.5, or the γ given): one expression, every NDF type.
 macro_rules! with_ndf {
-    ($kind:expr, $alpha:expr, |$d:ident| $body:expr) => {{
+    ($kind:expr, $alpha:expr, |$d:ident| $body:expr) => {
+        with_ndf!($kind, $alpha, GAMMA, |$d| $body)
+    };
+    ($kind:expr, $alpha:expr, $gamma:expr, |$d:ident| $body:expr) => {{
         let a: f64 = $alpha;
         match $kind {
             NdfKind::Ggx => {
@@ -46,12 +49,14 @@ macro_rules! with_ndf {
                 $body
             }
             NdfKind::Gtr => {
-                let $d = Microfacet::<f64, Gtr>::gtr(a, a, GAMMA).expect("valid α, γ");
+                let $d = Microfacet::<f64, Gtr>::gtr(a, a, $gamma).expect("valid α, γ");
                 $body
             }
         }
     }};
 }
+
+pub(crate) use with_ndf;
 
 fn label(kind: NdfKind) -> String {
     if kind == NdfKind::Gtr {

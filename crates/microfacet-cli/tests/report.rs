@@ -6,7 +6,7 @@
 use std::path::{Path, PathBuf};
 use std::process::Command;
 
-const SECTIONS: [&str; 8] = [
+const SECTIONS: [&str; 9] = [
     "beckmann",
     "ggx",
     "gtr",
@@ -15,6 +15,7 @@ const SECTIONS: [&str; 8] = [
     "comparison",
     "verify",
     "bsdf",
+    "multiple-scattering",
 ];
 
 /// The browser half of the legend check (see `report_is_complete_and_renders`).
