@@ -81,8 +81,7 @@ impl AlbedoTable {
         } else {
             &[0.0, 0.25, 0.5, 0.75]
         };
-        Self::from_nodes(std::array::from_fn(|k| {
-            let mu = node_mu(k);
+        Self::from_fn(|mu| {
             let st = ((1.0 - mu) * (1.0 + mu)).sqrt();
             azimuths
                 .iter()
@@ -92,7 +91,12 @@ impl AlbedoTable {
                 })
                 .sum::<f64>()
                 / azimuths.len() as f64
-        }))
+        })
+    }
+
+    /// The table of the albedo function `e` (evaluated at the nodes).
+    pub fn from_fn(e: impl Fn(f64) -> f64) -> Self {
+        Self::from_nodes(std::array::from_fn(|k| e(node_mu(k))))
     }
 
     /// The table of an isotropic material of NDF `kind` (GTR: γ) at α from the tables the

@@ -996,29 +996,50 @@ pub(crate) fn single_scattering_albedo_tol<D: Distribution<f64>>(
     wo: [f64; 3],
     tol: f64,
 ) -> f64 {
-    use crate::quad::integrate;
     let mu_o = wo[2];
     if !(mu_o > 0.0) {
         return 0.0;
     }
+    lobe_integral(
+        |wi| {
+            let h = [wo[0] + wi[0], wo[1] + wi[1], wo[2] + wi[2]];
+            let l = dot(h, h).sqrt();
+            if !(l > 0.0) {
+                return 0.0;
+            }
+            let wh = [h[0] / l, h[1] / l, h[2] / l];
+            dist.d(wh) * dist.g2(wo, wi) / (4.0 * mu_o)
+        },
+        wo,
+        mu_o,
+        1.0,
+        tol,
+    )
+}
+
+/// ∫ g(wi) dωi over the hemisphere of sign `side` (±1: wi.z of that sign) of a lobe that
+/// peaks at |cos θi| = `mu_peak` and at the azimuth opposite wo's (a reflection's or a
+/// refraction's), by nested adaptive tanh-sinh in (|cos θi|, φ), split at the peak in both:
+/// relative tolerance `tol` (the inner integrals at `tol`/10).
+pub(crate) fn lobe_integral(
+    g: impl Fn([f64; 3]) -> f64,
+    wo: [f64; 3],
+    mu_peak: f64,
+    side: f64,
+    tol: f64,
+) -> f64 {
+    use crate::quad::integrate;
     let phi_o = wo[1].atan2(wo[0]);
-    let f_cos = |mu: f64, phi: f64| -> f64 {
+    let f = |mu: f64, phi: f64| -> f64 {
         let s = ((1.0 - mu) * (1.0 + mu)).max(0.0).sqrt();
         let (sp, cp) = (phi_o + std::f64::consts::PI + phi).sin_cos();
-        let wi = [s * cp, s * sp, mu];
-        let h = [wo[0] + wi[0], wo[1] + wi[1], wo[2] + wi[2]];
-        let l = dot(h, h).sqrt();
-        if !(l > 0.0) {
-            return 0.0;
-        }
-        let wh = [h[0] / l, h[1] / l, h[2] / l];
-        dist.d(wh) * dist.g2(wo, wi) / (4.0 * mu_o)
+        g([s * cp, s * sp, side * mu])
     };
-    // φ measured from the mirror azimuth: the lobe peaks at φ = 0 (both ends of [−π, π] are
-    // its far side), and at μ = μo.
+    // φ measured from the peak's azimuth: both ends of [−π, π] are the lobe's far side.
     let over_phi = |mu: f64| {
-        integrate(|p| f_cos(mu, p), -std::f64::consts::PI, 0.0, 0.1 * tol).value
-            + integrate(|p| f_cos(mu, p), 0.0, std::f64::consts::PI, 0.1 * tol).value
+        integrate(|p| f(mu, p), -std::f64::consts::PI, 0.0, 0.1 * tol).value
+            + integrate(|p| f(mu, p), 0.0, std::f64::consts::PI, 0.1 * tol).value
     };
-    integrate(over_phi, 0.0, mu_o, tol).value + integrate(over_phi, mu_o, 1.0, tol).value
+    let m = mu_peak.clamp(0.0, 1.0);
+    integrate(over_phi, 0.0, m, tol).value + integrate(over_phi, m, 1.0, tol).value
 }
