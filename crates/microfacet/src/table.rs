@@ -360,10 +360,21 @@ impl Grid {
         })
     }
 
-    /// The value of quantity `q` (its index in `quantities`) at α node `ia`, μ node `im`.
+    /// The value of quantity `q` (its index in `quantities`) at α node `ia`, μ node `im`;
+    /// NaN for an index outside the table.
     pub fn value(&self, ia: usize, im: usize, q: usize) -> f32 {
-        let nq = self.quantities.len();
-        self.values[(ia * self.spec.mu.len() + im) * nq + q]
+        let (na, nm, nq) = (
+            self.spec.alpha.len(),
+            self.spec.mu.len(),
+            self.quantities.len(),
+        );
+        if ia >= na || im >= nm || q >= nq {
+            return f32::NAN;
+        }
+        self.values
+            .get((ia * nm + im) * nq + q)
+            .copied()
+            .unwrap_or(f32::NAN)
     }
 
     /// The binary form (see the [module docs](self)).

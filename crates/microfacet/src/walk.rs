@@ -145,7 +145,7 @@ pub trait Facets<const N: usize> {
     /// from v, over the facets visible from v: a reflection (w on v's side) or, with
     /// `crossed`, a transmission (w into the other medium, w·wm < 0 for the facet). Its
     /// integral over the sphere of w, both kinds together, is the facets' albedo
-    /// (E[weight]). Stochastic where the facet's own lobe is not a delta (diffuse facets
+    /// (E\[weight\]). Stochastic where the facet's own lobe is not a delta (diffuse facets
     /// draw one visible normal): unbiased.
     fn phase<D: Distribution<f64>>(
         &self,

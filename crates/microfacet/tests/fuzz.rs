@@ -1798,3 +1798,112 @@ fn compensated_contract() {
     }
     fails.finish("compensated_contract");
 }
+
+/// Albedo tables (`table`): the binary reader on hostile bytes (a valid file truncated,
+/// with bytes flipped, counts inflated, random bytes) never panics and reads back only what
+/// it wrote; `Spec::validate` on hostile parameters answers Ok or a typed error; `value`
+/// outside the table is NaN; `AlbedoTable::shipped` on hostile α is `None` or a table of
+/// finite values in [0, 1].
+#[test]
+fn table_contract() {
+    use microfacet::compensate::AlbedoTable;
+    use microfacet::table::{Grid, Material, Method, Spec};
+    use microfacet::NdfKind;
+    let mut r = Rng::new(45);
+    let mut fails = Failures::default();
+    let spec = Spec {
+        ndf: NdfKind::Ggx,
+        gamma: None,
+        material: Material::Dielectric { eta: 1.5 },
+        method: Method::Walk { walks: 64, seed: 1 },
+        alpha: vec![0.3, 1.0],
+        mu: vec![-0.5, 0.5],
+    };
+    let good = Grid::generate(&spec, &|_, _| {}).unwrap();
+    let bytes = good.to_bytes();
+    fails.check(
+        good.value(2, 0, 0).is_nan() && good.value(0, 0, 99).is_nan(),
+        || "value outside the table".into(),
+    );
+    let back = Grid::from_bytes(&bytes).unwrap();
+    fails.check(
+        back.values == good.values && back.spec.alpha == spec.alpha && back.spec.mu == spec.mu,
+        || "a table does not read back as written".into(),
+    );
+    for _ in 0..200 * scale() {
+        let mut b = bytes.clone();
+        match r.pick(&[0, 1, 2, 3]) {
+            0 => b.truncate((uniform(&mut r) * b.len() as f64) as usize),
+            1 => {
+                for _ in 0..4 {
+                    let i = (uniform(&mut r) * b.len() as f64) as usize % b.len();
+                    b[i] ^= 1 << ((uniform(&mut r) * 8.0) as u32 % 8);
+                }
+            }
+            2 => {
+                // An inflated count (n_α at the header's end).
+                let i = 16 + u32::from_le_bytes(b[12..16].try_into().unwrap()) as usize;
+                b[i..i + 4].copy_from_slice(&u32::MAX.to_le_bytes());
+            }
+            _ => {
+                let n = (uniform(&mut r) * 300.0) as usize;
+                b = (0..n).map(|_| (uniform(&mut r) * 256.0) as u8).collect();
+                if uniform(&mut r) < 0.5 {
+                    b.splice(0..0, b"MFALBEDO\x01\0\0\0".iter().copied());
+                }
+            }
+        }
+        let res = no_panic("Grid::from_bytes", format!("{} bytes", b.len()), || {
+            Grid::from_bytes(&b)
+        });
+        if let Ok(g) = res {
+            fails.check(
+                g.values.len() == g.spec.alpha.len() * g.spec.mu.len() * g.quantities.len(),
+                || "a read table's value count does not match its grid".into(),
+            );
+        }
+    }
+    for _ in 0..200 * scale() {
+        let a = alpha(&mut r);
+        let hostile = [f64::NAN, -1.0, 0.0, 1e-300, 1.0, 2.0, f64::INFINITY];
+        let mu = r.pick(&hostile);
+        let eta = r.pick(&hostile);
+        let kind = r.pick(&NdfKind::ALL);
+        let gamma = if uniform(&mut r) < 0.5 {
+            Some(r.pick(&hostile))
+        } else {
+            None
+        };
+        let s = Spec {
+            ndf: kind,
+            gamma,
+            material: r.pick(&[
+                Material::Furnace,
+                Material::Dielectric { eta },
+                Material::Conductor { eta, k: mu },
+                Material::Diffuse { rho: eta },
+            ]),
+            method: r.pick(&[Method::Quadrature, Method::Walk { walks: 1, seed: 0 }]),
+            alpha: vec![a],
+            mu: vec![mu],
+        };
+        let ctx = format!("{s:?}");
+        no_panic("Spec::validate", ctx, || s.validate().is_ok());
+        let ctx = || format!("{kind} γ={gamma:?} α={a:e}");
+        let t = no_panic("AlbedoTable::shipped", ctx(), || {
+            AlbedoTable::shipped(kind, gamma, a)
+        });
+        if let Some(t) = t {
+            let e = [t.e(0.0), t.e(0.5), t.e(1.0), t.e(f64::NAN), t.e_avg()];
+            fails.check(
+                e[..3]
+                    .iter()
+                    .chain(&e[4..])
+                    .all(|x| x.is_finite() && (-1e-3..=1.0 + 1e-3).contains(x)),
+                || format!("shipped table values {e:?} at {}", ctx()),
+            );
+        }
+        evals(2);
+    }
+    fails.finish("table_contract");
+}
