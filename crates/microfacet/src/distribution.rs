@@ -148,6 +148,23 @@ pub trait Distribution<F: Real> {
     /// A visible normal for w (w.z < 0 is mirrored) from u ∈ [0, 1)².
     fn sample_wm(&self, w: [F; 3], u: [F; 2]) -> [F; 3];
 
+    /// A visible normal for a direction v **below** the horizon (v.z < 0), not mirrored:
+    /// distributed as max(0, v·m) D(m)/σ(v) over the upper hemisphere of m, σ(v) =
+    /// |v.z| Λ(v) (the microsurface seen from beneath its mean plane, as a ray inside the
+    /// microsurface's height field sees it: [`crate::walk`]), from the uniforms in (0, 1)
+    /// that `uniform` supplies (two, or more for a sampler that rejects). `None` where the
+    /// distribution has no direct sampler for it, or for a rounded normal that fails the
+    /// test v·m > 0, m.z > 0, or a rejection sampler past its cap; the caller then samples
+    /// by rejection from the mirror image (both are exact, so the mixture is too). Direct
+    /// samplers: GGX (its spherical cap covers v.z < 0 as it is: Dupuy & Benyoub 2023, the
+    /// cap z ∈ [−v.z, 1] of the stretched v), Beckmann (the visible slope's tail, by
+    /// rejection) and Double GGX (the mixing variable, by rejection, then GGX's cap).
+    #[inline]
+    fn sample_wm_below(&self, v: [F; 3], uniform: &mut dyn FnMut() -> F) -> Option<[F; 3]> {
+        let _ = (v, uniform);
+        None
+    }
+
     /// A visible normal and its pdf.
     #[inline]
     fn sample(&self, w: [F; 3], u: [F; 2]) -> Sample<F> {
@@ -293,6 +310,19 @@ pub trait Shape: sealed::Sealed + Sized {
     /// The visible-normal sampler at (αx, αy).
     #[doc(hidden)]
     fn sample_wm<F: Real>(data: &Self::Data, w: [F; 3], ax: F, ay: F, u: [F; 2]) -> [F; 3];
+    /// [`Distribution::sample_wm_below`] at (αx, αy).
+    #[doc(hidden)]
+    #[inline(always)]
+    fn sample_wm_below<F: Real>(
+        data: &Self::Data,
+        v: [F; 3],
+        ax: F,
+        ay: F,
+        uniform: &mut dyn FnMut() -> F,
+    ) -> Option<[F; 3]> {
+        let _ = (data, v, ax, ay, uniform);
+        None
+    }
     /// The D·cos sampler at (αx, αy).
     #[doc(hidden)]
     fn sample_dcos<F: Real>(data: &Self::Data, ax: F, ay: F, u: [F; 2]) -> [F; 3];
@@ -389,6 +419,16 @@ impl Shape for Ggx {
     #[inline(always)]
     fn sample_wm<F: Real>(_: &(), w: [F; 3], ax: F, ay: F, u: [F; 2]) -> [F; 3] {
         fast::ggx::sample_visible(w, ax, ay, u)
+    }
+    #[inline(always)]
+    fn sample_wm_below<F: Real>(
+        _: &(),
+        v: [F; 3],
+        ax: F,
+        ay: F,
+        uniform: &mut dyn FnMut() -> F,
+    ) -> Option<[F; 3]> {
+        fast::ggx::sample_visible_below(v, ax, ay, [uniform(), uniform()])
     }
     #[inline(always)]
     fn sample_dcos<F: Real>(_: &(), ax: F, ay: F, u: [F; 2]) -> [F; 3] {
@@ -508,6 +548,16 @@ impl Shape for Beckmann {
         fast::beckmann::sample_visible(w, ax, ay, u)
     }
     #[inline(always)]
+    fn sample_wm_below<F: Real>(
+        _: &(),
+        v: [F; 3],
+        ax: F,
+        ay: F,
+        uniform: &mut dyn FnMut() -> F,
+    ) -> Option<[F; 3]> {
+        fast::beckmann::sample_visible_below(v, ax, ay, uniform)
+    }
+    #[inline(always)]
     fn sample_dcos<F: Real>(_: &(), ax: F, ay: F, u: [F; 2]) -> [F; 3] {
         fast::beckmann::sample_dcos(ax, ay, u)
     }
@@ -555,6 +605,16 @@ impl Shape for DoubleGgx {
     fn sample_wm<F: Real>(_: &(), w: [F; 3], ax: F, ay: F, u: [F; 2]) -> [F; 3] {
         let mut s = UniformStream::new(u);
         fast::double_ggx::sample_visible(w, ax, ay, u, &mut || s.next_uniform())
+    }
+    #[inline(always)]
+    fn sample_wm_below<F: Real>(
+        _: &(),
+        v: [F; 3],
+        ax: F,
+        ay: F,
+        uniform: &mut dyn FnMut() -> F,
+    ) -> Option<[F; 3]> {
+        fast::double_ggx::sample_visible_below(v, ax, ay, uniform)
     }
     #[inline(always)]
     fn sample_dcos<F: Real>(_: &(), ax: F, ay: F, u: [F; 2]) -> [F; 3] {
@@ -874,6 +934,11 @@ impl<F: Real, N: Shape> Distribution<F> for Microfacet<F, N> {
     #[inline(always)]
     fn sample_wm(&self, w: [F; 3], u: [F; 2]) -> [F; 3] {
         N::sample_wm(&self.data, w, self.ax, self.ay, u)
+    }
+
+    #[inline(always)]
+    fn sample_wm_below(&self, v: [F; 3], uniform: &mut dyn FnMut() -> F) -> Option<[F; 3]> {
+        N::sample_wm_below(&self.data, v, self.ax, self.ay, uniform)
     }
 
     #[inline(always)]

@@ -19,7 +19,15 @@
 //! the walk's heights are a monotone reparametrisation of C1 ∈ [0, 1]). [`Heights::Uniform`]
 //! (h ∈ [−1, 1]) and [`Heights::Gaussian`] (standard normal) are both provided, and
 //! tests/walk.rs checks that they give the same albedos within the Monte Carlo error. The walk
-//! starts above the surface (C1 = 1).
+//! starts above the surface (C1 = 1). Every formula above is in ln C1(h), which is what the
+//! walk carries as its height: ℓ = ln C1 ≤ 0, the free path ℓ' = ℓ − ln(1 − U)/Λ(w), the
+//! escape test ln(1 − U) < Λ ℓ, G1(w, h) = exp(Λ ℓ), and a crossing into the other medium
+//! (h → −h, C1 → 1 − C1 for both symmetric distributions) ℓ → ln(1 − e^ℓ). For uniform heights
+//! ℓ is an exact change of variable (C1 affine in h), so a step costs one logarithm and no
+//! conversion; for Gaussian heights each step goes through the physical height,
+//! h = Φ⁻¹(e^ℓ) and back (as the paper's code does), which changes the random numbers' roundoff
+//! and nothing else. In ℓ nothing underflows: a path far below the surface's top (C1 below
+//! the smallest f64) keeps its height.
 //!
 //! **Visible normals from below.** A ray going up can still meet the microsurface; its
 //! visible normals are those of the direction v = −w with v.z < 0, D_v(m) ∝ max(0, v·m) D(m)
@@ -29,7 +37,9 @@
 //! in the upper hemisphere v·m = v′·m − 2|v.z| m.z ≤ v′·m, so accepting m with probability
 //! max(0, v·m)/(v′·m) leaves exactly D_v (acceptance σ(v)/σ(v′) = Λ/(1 + Λ), which is small
 //! only for steep upward rays, and those rarely meet the surface: the expected number of
-//! candidates per step stays bounded).
+//! candidates per step stays bounded). Where the distribution samples D_v directly
+//! ([`Distribution::sample_wm_below`]: GGX, Beckmann, Double GGX) that is used instead,
+//! one call without the full sampler per candidate (BENCHMARKS.md, issue 21).
 //!
 //! **Order 1** is the single-scattering BSDF with the height-correlated G2 (the paper's
 //! section 5.3): for a conductor with F = 1, E₁(μ) = ∫ D G2/(4μ) dωi, which
@@ -60,24 +70,50 @@ pub enum Heights {
 }
 
 impl Heights {
-    /// C1(h) (1 above the microsurface's top, +∞).
-    fn c1(self, h: f64) -> f64 {
+    /// The height of ℓ = ln C1(h), as the walk keeps it (module docs): ℓ itself for uniform
+    /// heights; for Gaussian heights ℓ rounded through the physical height h = Φ⁻¹(e^ℓ).
+    #[inline]
+    fn settle(self, l: f64) -> f64 {
         match self {
-            Heights::Uniform => (0.5 * (h + 1.0)).clamp(0.0, 1.0),
-            Heights::Gaussian => 0.5 * crate::special::erfc(-h * std::f64::consts::FRAC_1_SQRT_2),
+            Heights::Uniform => l,
+            Heights::Gaussian => Self::gaussian_l(Self::gaussian_h(l)),
         }
     }
 
-    /// C1⁻¹(c) for c ∈ (0, 1].
-    fn inv_c1(self, c: f64) -> f64 {
-        match self {
-            Heights::Uniform => 2.0 * c - 1.0,
-            Heights::Gaussian => {
-                std::f64::consts::SQRT_2 * crate::fast::beckmann::erfinv_2u_minus_1(c)
-            }
+    /// The height ℓ of −h, the same point seen from the other medium: C1(−h) = 1 − C1(h).
+    #[inline]
+    fn cross(self, l: f64) -> f64 {
+        let l = match self {
+            // ln(1 − e^ℓ) without cancellation (Mächler 2012, "Accurately computing
+            // log(1 − exp(−|a|))": expm1 above −ln 2, ln_1p below).
+            Heights::Uniform if l > -std::f64::consts::LN_2 => (-l.exp_m1()).ln(),
+            Heights::Uniform => (-l.exp()).ln_1p(),
+            Heights::Gaussian => Self::gaussian_l(-Self::gaussian_h(l)),
+        };
+        // (A crossing at the very top, ℓ = −0 after a free path that rounded away, lands at
+        // C1 = 0, from where no path moves: the lowest normal f64 instead, ln 2^−1022.)
+        if l < LN_MIN_POSITIVE {
+            LN_MIN_POSITIVE
+        } else {
+            l
         }
     }
+
+    /// The standard normal height of ℓ (+∞ at the top, ℓ = 0).
+    fn gaussian_h(l: f64) -> f64 {
+        // (e^ℓ underflows below ℓ ≈ −745: the lowest height erfinv resolves.)
+        let c = l.exp().clamp(f64::MIN_POSITIVE, 1.0);
+        std::f64::consts::SQRT_2 * crate::fast::beckmann::erfinv_2u_minus_1(c)
+    }
+
+    /// ℓ = ln Φ(h) for a standard normal height.
+    fn gaussian_l(h: f64) -> f64 {
+        (0.5 * crate::special::erfc(-h * std::f64::consts::FRAC_1_SQRT_2)).ln()
+    }
 }
+
+/// ln of the smallest normal f64, 2^−1022.
+const LN_MIN_POSITIVE: f64 = -708.396_418_532_264_1;
 
 /// A 53-bit uniform strictly inside (0, 1): (k + ½)/2⁵³ for the top 53 bits k of a
 /// SplitMix64 output (Steele, Lea & Flood 2014).
@@ -468,38 +504,35 @@ impl<D: Distribution<f64>> Microsurface<D> {
         p.is_finite().then_some((p, dot(v, wm)))
     }
 
-    /// The probability that a ray leaving height h in the upward direction w escapes,
-    /// G1(w, h) = C1(h)^Λ(w); 0 for w on or below the horizon.
-    fn escape(&self, w: [f64; 3], h: f64) -> f64 {
+    /// The probability that a ray leaving the height ℓ = ln C1(h) in the upward direction w
+    /// escapes, G1(w, h) = C1(h)^Λ(w) = exp(Λ ℓ); 0 for w on or below the horizon.
+    fn escape(&self, w: [f64; 3], l: f64) -> f64 {
         if !(w[2] > 0.0) {
             return 0.0;
         }
-        let l = self.dist.lambda(w);
-        if l == 0.0 {
+        let lambda = self.dist.lambda(w);
+        if lambda == 0.0 {
             return 1.0;
         }
-        (l * self.heights.c1(h).ln()).exp()
+        (lambda * l).exp()
     }
 
-    /// The next height for a ray travelling in w from height h, or `None` if it escapes
-    /// (upward rays only), from the uniform u ∈ (0, 1).
-    fn next_height(&self, w: [f64; 3], h: f64, u: f64) -> Option<f64> {
-        let lc = self.heights.c1(h).ln();
-        let l = self.lambda_signed(w);
-        let lu = (-u).ln_1p();
+    /// The next height ℓ' = ln C1(h') for a ray travelling in w from ℓ, or `None` if it
+    /// escapes (upward rays only), from the uniform u ∈ (0, 1).
+    #[inline]
+    fn next_height(&self, w: [f64; 3], l: f64, u: f64) -> Option<f64> {
+        let lambda = self.lambda_signed(w);
+        // ln(1 − U) as ln U': 1 − U is uniform as U is, and strictly inside (0, 1) (ln is
+        // cheaper than ln_1p, and exact enough at every 53-bit uniform).
+        let lu = u.ln();
         // Going up, it escapes with probability G1 = C1(h)^Λ: u > 1 − C1^Λ, that is
-        // ln(1 − u) < Λ ln C1 (no powf; ln(1 − u) serves the next line too).
-        if w[2] > 0.0 && (lu < l * lc || !(l > 0.0)) {
+        // ln(1 − u) < Λ ℓ.
+        if w[2] > 0.0 && (lu < lambda * l || !(lambda > 0.0)) {
             return None;
         }
-        // C1(h') = C1(h)/(1 − u)^{1/Λ}: ln-space, so that (1 − u)^{1/Λ} does not underflow.
-        let c_next = (lc - lu / l).exp();
-        if !(c_next > 0.0) {
-            // (Going down from the top with a tiny C1: below every height the distribution
-            // resolves; the path meets the surface at its bottom.)
-            return Some(self.heights.inv_c1(f64::MIN_POSITIVE));
-        }
-        Some(self.heights.inv_c1(c_next.min(1.0)))
+        // C1(h') = C1(h)/(1 − u)^{1/Λ}. (ℓ' ≤ 0 in exact arithmetic; the min keeps a
+        // rounding from lifting it above the top.)
+        Some(self.heights.settle((l - lu / lambda).min(0.0)))
     }
 
     /// A visible normal for the direction v (either hemisphere; the microflakes' D_v(m) ∝
@@ -508,6 +541,9 @@ impl<D: Distribution<f64>> Microsurface<D> {
     fn visible_normal(&self, v: [f64; 3], rng: &mut WalkRng) -> [f64; 3] {
         if v[2] >= 0.0 {
             return self.dist.sample_wm(v, [rng.next_open(), rng.next_open()]);
+        }
+        if let Some(m) = self.dist.sample_wm_below(v, &mut || rng.next_open()) {
+            return m;
         }
         let up = [v[0], v[1], -v[2]];
         let mut m = up;
@@ -525,9 +561,9 @@ impl<D: Distribution<f64>> Microsurface<D> {
     }
 
     /// The walk itself from wo (toward the viewer, either side; the path arrives along
-    /// −wo), calling `event(order, v, h, inside, weight, rng)` at each scattering event
+    /// −wo), calling `event(order, v, ℓ, inside, weight, rng)` at each scattering event
     /// before the facet scatters (v the reverse of the travel direction, in the side's
-    /// frame, and `weight` the path's so far).
+    /// frame, ℓ = ln C1 the height in that side's frame, and `weight` the path's so far).
     fn run<const N: usize, Fa: Facets<N>>(
         &self,
         facets: &Fa,
@@ -540,7 +576,7 @@ impl<D: Distribution<f64>> Microsurface<D> {
         }
         let mut inside = wo[2] < 0.0;
         let mut w = if inside { wo } else { [-wo[0], -wo[1], -wo[2]] };
-        let mut h = f64::INFINITY;
+        let mut h = 0.0;
         let mut weight = [1.0; N];
         for order in 0..=MAX_ORDER {
             match self.next_height(w, h, rng.next_open()) {
@@ -560,13 +596,13 @@ impl<D: Distribution<f64>> Microsurface<D> {
             if s.crossed {
                 // The other medium's frame: every vector and height negated.
                 w = [-s.w[0], -s.w[1], -s.w[2]];
-                h = -h;
+                h = self.heights.cross(h);
                 inside = !inside;
             } else {
                 w = s.w;
             }
-            // (h = +∞ is the top of a Gaussian microsurface: a grazing ray meets it where C1
-            // rounds to 1. Only NaN is a failure.)
+            // (ℓ = 0 is the top: a grazing ray can meet the surface where C1 rounds to 1.
+            // Only NaN is a failure.)
             if !(w[0].is_finite() && w[1].is_finite() && w[2].is_finite()) || h.is_nan() {
                 return None;
             }
@@ -616,7 +652,7 @@ impl<D: Distribution<f64>> Microsurface<D> {
             let crossed = wi_inside != inside;
             let w = if inside { [-wi[0], -wi[1], -wi[2]] } else { wi };
             let g = if crossed {
-                self.escape([-w[0], -w[1], -w[2]], -h)
+                self.escape([-w[0], -w[1], -w[2]], self.heights.cross(h))
             } else {
                 self.escape(w, h)
             };
@@ -857,21 +893,6 @@ impl OrderSums {
         }
     }
 
-    /// Adds another run's sums (for chunked and parallel runs): the shifts differ, so the
-    /// other's sums are moved to this one's shift, s' = s + n δ, s2' = s2 + 2δ s + n δ².
-    pub(crate) fn merge(&mut self, o: &OrderSums, n_other: u64) {
-        let Some(ko) = o.shift else {
-            return;
-        };
-        let k = *self.shift.get_or_insert(ko);
-        let n = n_other as f64;
-        for i in 0..5 {
-            let d = ko[i] - k[i];
-            self.s2[i] += o.s2[i] + 2.0 * d * o.s[i] + n * d * d;
-            self.s[i] += o.s[i] + n * d;
-        }
-    }
-
     /// The means and standard errors over n samples.
     pub(crate) fn finish(&self, n: u64) -> ByOrder {
         let n = n.max(1) as f64;
@@ -917,47 +938,117 @@ pub struct Albedo {
     pub total: Estimate,
 }
 
-/// Running sums of [`Albedo`]'s estimators.
+/// Running sums of one bin of [`Albedo`]'s estimators: a walk puts its weight w in one
+/// bin (its side and order) and 0 in the others, so a bin keeps the count of its walks and
+/// the sums of w − K and (w − K)² over them, K its first weight (shifted, as [`OrderSums`],
+/// so that a bin whose weights all agree, order 1 near normal incidence, keeps its tiny
+/// spread).
+#[derive(Clone, Copy, Debug, Default)]
+struct Bin {
+    n: u64,
+    shift: f64,
+    s: f64,
+    s2: f64,
+}
+
+impl Bin {
+    #[inline(always)]
+    fn add(&mut self, w: f64) {
+        if self.n == 0 {
+            self.shift = w;
+        }
+        let d = w - self.shift;
+        self.n += 1;
+        self.s += d;
+        self.s2 += d * d;
+    }
+
+    fn merge(&mut self, o: &Bin) {
+        if o.n == 0 {
+            return;
+        }
+        if self.n == 0 {
+            *self = *o;
+            return;
+        }
+        let d = o.shift - self.shift;
+        let n = o.n as f64;
+        self.s2 += o.s2 + 2.0 * d * o.s + n * d * d;
+        self.s += o.s + n * d;
+        self.n += o.n;
+    }
+
+    /// The mean and standard error over `walks` walks of X = w in this bin, 0 elsewhere:
+    /// with p = n/walks and the bin's own mean m and variance v of w,
+    /// Var X = p v + p(1 − p) m² (a sum of non-negative terms: no cancellation).
+    fn estimate(&self, walks: u64) -> Estimate {
+        if self.n == 0 || walks == 0 {
+            return Estimate::default();
+        }
+        let (n, total) = (self.n as f64, walks as f64);
+        let d = self.s / n;
+        let m = self.shift + d;
+        let v = (self.s2 / n - d * d).max(0.0);
+        let p = n / total;
+        // (p(1 − p) from the counts, exactly.)
+        let pq = n * (walks - self.n) as f64 / (total * total);
+        Estimate {
+            mean: p * m,
+            stderr: ((p * v + pq * m * m) / total).sqrt(),
+        }
+    }
+}
+
+/// Running sums of [`Albedo`]'s estimators (bins per side and order, per side, and the
+/// total).
 #[derive(Clone, Copy, Debug, Default)]
 pub(crate) struct AlbedoSums {
-    reflect: OrderSums,
-    transmit: OrderSums,
-    total: OrderSums,
+    /// [side][order 1, 2, 3, ≥ 4, any], side 0 reflection, 1 transmission.
+    bins: [[Bin; 5]; 2],
+    total: Bin,
     walks: u64,
 }
 
 impl AlbedoSums {
     /// One walk from wo (`None`: failed, weight 0).
+    #[inline]
     pub(crate) fn add<const N: usize>(&mut self, wo: [f64; 3], walked: Option<Walked<N>>) {
-        let mut x = [0.0; 4];
-        let mut transmitted = false;
-        if let Some(p) = walked {
-            x[(p.order.clamp(1, 4) - 1) as usize] = p.weight[0];
-            transmitted = (p.w[2] < 0.0) != (wo[2] < 0.0);
-        }
-        let zero = [0.0; 4];
-        self.reflect.add(if transmitted { zero } else { x });
-        self.transmit.add(if transmitted { x } else { zero });
-        self.total.add([x.iter().sum(), 0.0, 0.0, 0.0]);
         self.walks += 1;
+        let Some(p) = walked else {
+            return;
+        };
+        let w = p.weight[0];
+        let side = usize::from((p.w[2] < 0.0) != (wo[2] < 0.0));
+        let bins = &mut self.bins[side];
+        bins[(p.order.clamp(1, 4) - 1) as usize].add(w);
+        bins[4].add(w);
+        self.total.add(w);
     }
 
     pub(crate) fn merge(&mut self, o: &AlbedoSums) {
-        self.reflect.merge(&o.reflect, o.walks);
-        self.transmit.merge(&o.transmit, o.walks);
-        self.total.merge(&o.total, o.walks);
+        for (a, b) in self.bins.iter_mut().zip(&o.bins) {
+            for (x, y) in a.iter_mut().zip(b) {
+                x.merge(y);
+            }
+        }
+        self.total.merge(&o.total);
         self.walks += o.walks;
     }
 
     pub(crate) fn finish(&self) -> Albedo {
-        let t = self.total.finish(self.walks);
+        let side = |b: &[Bin; 5]| {
+            let e = b.map(|x| x.estimate(self.walks));
+            ByOrder {
+                orders: [e[0].mean, e[1].mean, e[2].mean, e[3].mean],
+                stderr: [e[0].stderr, e[1].stderr, e[2].stderr, e[3].stderr],
+                total: e[4].mean,
+                total_stderr: e[4].stderr,
+            }
+        };
         Albedo {
-            reflect: self.reflect.finish(self.walks),
-            transmit: self.transmit.finish(self.walks),
-            total: Estimate {
-                mean: t.total,
-                stderr: t.total_stderr,
-            },
+            reflect: side(&self.bins[0]),
+            transmit: side(&self.bins[1]),
+            total: self.total.estimate(self.walks),
         }
     }
 }

@@ -1907,3 +1907,76 @@ fn table_contract() {
     }
     fails.finish("table_contract");
 }
+
+/// `Distribution::sample_wm_below` (every NDF, f64 and f32, isotropic and anisotropic, any
+/// direction including the horizon, above it, non-unit and NaN; uniform streams with 0,
+/// 1 − ε, subnormals): never panics; a normal it returns for a unit v is a finite unit
+/// vector with m.z > 0 and v·m > 0, and it answers `None` for v on or above the horizon.
+fn below_samplers<F: fast::Real + std::fmt::Debug>(test: u64, draw: fn(&mut Rng) -> F) {
+    use microfacet::{Distribution, Exponential, Microfacet};
+    fn one<F: fast::Real + std::fmt::Debug, D: Distribution<F>>(
+        fails: &mut Failures,
+        r: &mut Rng,
+        d: &D,
+        name: &str,
+        draw: fn(&mut Rng) -> F,
+    ) {
+        let v: [F; 3] = if r.chance(0.2) {
+            let w = direction(r, F::IS_F32);
+            [F::from_f64(w.x), F::from_f64(w.y), F::from_f64(w.z)]
+        } else {
+            unit_direction(r)
+        };
+        let mut stream = Rng::new(r.next());
+        let m = no_panic("sample_wm_below", format!("{name} v={v:?}"), || {
+            d.sample_wm_below(v, &mut || draw(&mut stream))
+        });
+        let vf = v.map(|x| x.to_f64());
+        let unit = ((vf[0] * vf[0] + vf[1] * vf[1] + vf[2] * vf[2]).sqrt() - 1.0).abs() < 1e-6;
+        if vf[2] >= 0.0 {
+            fails.check(m.is_none(), || {
+                format!("{name}: a normal for v={v:?} above")
+            });
+        }
+        if let (Some(m), true) = (m, unit) {
+            let m = m.map(|x| x.to_f64());
+            let len = (m[0] * m[0] + m[1] * m[1] + m[2] * m[2]).sqrt();
+            let dot = m[0] * vf[0] + m[1] * vf[1] + m[2] * vf[2];
+            let tol = if F::IS_F32 { 1e-6 } else { 1e-14 };
+            fails.check((len - 1.0).abs() < tol && m[2] > 0.0 && dot > 0.0, || {
+                format!("{name} v={v:?}: m={m:?}")
+            });
+        }
+    }
+    let mut r = Rng::new(test);
+    let mut fails = Failures::default();
+    for _ in 0..2000 * scale() {
+        let (ax, ay) = (alpha(&mut r), alpha(&mut r));
+        let (ax, ay) = (F::from_f64(ax), F::from_f64(ay));
+        let (ax, ay) = if r.chance(0.5) { (ax, ax) } else { (ax, ay) };
+        if let Ok(d) = Microfacet::<F, Ggx>::new(ax, ay) {
+            one(&mut fails, &mut r, &d, "GGX", draw);
+        }
+        if let Ok(d) = Microfacet::<F, Beckmann>::new(ax, ay) {
+            one(&mut fails, &mut r, &d, "Beckmann", draw);
+        }
+        if let Ok(d) = Microfacet::<F, DoubleGgx>::new(ax, ay) {
+            one(&mut fails, &mut r, &d, "Double GGX", draw);
+        }
+        if let Ok(d) = Microfacet::<F, Exponential>::new(ax, ay) {
+            one(&mut fails, &mut r, &d, "Exponential", draw);
+        }
+        evals(4);
+    }
+    fails.finish("below_samplers");
+}
+
+#[test]
+fn below_samplers_f64() {
+    below_samplers::<f64>(46, uniform);
+}
+
+#[test]
+fn below_samplers_f32() {
+    below_samplers::<f32>(47, uniform32);
+}

@@ -466,3 +466,73 @@ fn sampling_matches_evaluation() {
         );
     }
 }
+
+/// The direct samplers of the visible normals of a direction below the horizon
+/// (`Distribution::sample_wm_below`, which the walk uses for rays going up instead of its
+/// rejection; GGX, Beckmann, Double GGX): χ² against max(0, v·m) D(m)/(|v.z| Λ(v)),
+/// isotropic and anisotropic, 45° to grazing (Beckmann's two envelopes both); every
+/// sample a unit normal with m.z > 0 and v·m > 0; the NDFs without one answer `None`.
+#[test]
+fn visible_normals_from_below() {
+    use microfacet::chi2::{chi2_test, sidak, DcosCoordinates, SplitMix64};
+    use microfacet::{Exact, NdfKind, Vec3};
+    fn check<D: Distribution<f64>>(name: &str, d: D, kind: NdfKind, ax: f64, ay: f64, level: f64) {
+        let reference = Exact::new(NdfKind::Ggx, 1.5 * ax, 1.5 * ay, None).unwrap();
+        let mut rng = SplitMix64(kind as u64);
+        for deg in [45.0f64, 80.0, 89.0] {
+            let (s, c) = deg.to_radians().sin_cos();
+            let v = [s * 0.8, s * 0.6, -c];
+            let sigma = c * d.lambda(v);
+            let r = chi2_test(
+                |_| {
+                    let m = d
+                        .sample_wm_below(v, &mut || 0.5 * (2.0 * rng.next_f64()).max(f64::EPSILON))
+                        .expect("a normal");
+                    assert!(m[2] > 0.0 && m[0] * v[0] + m[1] * v[1] + m[2] * v[2] > 0.0);
+                    Vec3::from(m)
+                },
+                |m| {
+                    let m: [f64; 3] = m.into();
+                    (m[0] * v[0] + m[1] * v[1] + m[2] * v[2]).max(0.0) * d.d(m) / sigma
+                },
+                &DcosCoordinates(&reference),
+                100_000,
+                16,
+                deg as u64,
+            );
+            assert!(
+                r.p_value > level && r.bad_samples == 0 && (r.pdf_integral - 1.0).abs() < 2e-3,
+                "{name} α=({ax},{ay}) θ={deg}: {r:?}"
+            );
+        }
+    }
+    let level = sidak(0.01, 3 * 2 * 3);
+    for &(ax, ay) in &[(0.4, 0.4), (0.8, 0.2)] {
+        check(
+            "GGX",
+            Microfacet::<f64, Ggx>::new(ax, ay).unwrap(),
+            NdfKind::Ggx,
+            ax,
+            ay,
+            level,
+        );
+        check(
+            "Beckmann",
+            Microfacet::<f64, Beckmann>::new(ax, ay).unwrap(),
+            NdfKind::Beckmann,
+            ax,
+            ay,
+            level,
+        );
+        check(
+            "Double GGX",
+            Microfacet::<f64, DoubleGgx>::new(ax, ay).unwrap(),
+            NdfKind::DoubleGgx,
+            ax,
+            ay,
+            level,
+        );
+        let e = Microfacet::<f64, Exponential>::new(ax, ay).unwrap();
+        assert!(e.sample_wm_below([0.6, 0.0, -0.8], &mut || 0.5).is_none());
+    }
+}

@@ -316,3 +316,62 @@ pub(crate) fn sample_visible<F: Real>(w: [F; 3], ax: F, ay: F, u: [F; 2]) -> [F;
     let (x, y) = sample_visible11(a, [u[0].to_f64(), u[1].to_f64()]);
     super::facing(super::normal_from_slopes(x, y, (cp, sp), ax, ay), w)
 }
+
+/// A visible normal for v below the horizon (v.z < 0), not mirrored
+/// ([`crate::Distribution::sample_wm_below`]), anisotropic roughness (αx, αy), from the
+/// uniforms of `uniform`. In the slope frame of v (stretched azimuth φ, a = |v.z|/h, h the
+/// stretched horizontal length) the visible slopes of the α = 1 distribution have density
+/// ∝ max(0, X − a) e^{−X²} e^{−Y²}: Y is N(0, ½) and X lies in the tail X > a, drawn by
+/// rejection from one of two envelopes, whichever accepts more:
+///
+/// * a < 1/√2: the Rayleigh tail X = √(a² + E) (E ~ Exp(1), density ∝ X e^{−X²} on X > a),
+///   kept with probability (X − a)/X; acceptance 1 − a√π erfcx(a) (1 at a = 0, 0.35 at
+///   1/√2);
+/// * a ≥ 1/√2: X = a + x with x ~ Gamma(2, 2a) (density ∝ x e^{−2ax}, the tail's
+///   exponential factor), kept with probability e^{−x²}; acceptance 2a² times the other's
+///   (0.35 at 1/√2, 0.87 at a = 3).
+///
+/// `None` at h = 0 (v straight down: no facet of the upper hemisphere faces it), after 64
+/// candidates (acceptance ≥ 0.35: probability below 1e-12), or for a rounded normal with
+/// v·m ≤ 0.
+pub(crate) fn sample_visible_below<F: Real>(
+    v: [F; 3],
+    ax: F,
+    ay: F,
+    uniform: &mut dyn FnMut() -> F,
+) -> Option<[F; 3]> {
+    let (ax, ay) = (ax.to_f64(), ay.to_f64());
+    let v = [v[0].to_f64(), v[1].to_f64(), v[2].to_f64()];
+    let (sx, sy) = (ax * v[0], ay * v[1]);
+    let h = (sx * sx + sy * sy).sqrt();
+    if !(v[2] < 0.0 && h > 0.0 && h.is_finite()) {
+        return None;
+    }
+    let a = -v[2] / h;
+    let mut next = || uniform().to_f64();
+    let mut x = f64::NAN;
+    for _ in 0..64 {
+        if a < std::f64::consts::FRAC_1_SQRT_2 {
+            let c = (a * a - next().ln()).sqrt();
+            if next() * c <= c - a {
+                x = c;
+                break;
+            }
+        } else {
+            let t = -(next() * next()).ln() / (2.0 * a);
+            if next() <= (-t * t).exp() {
+                x = a + t;
+                break;
+            }
+        }
+    }
+    if x.is_nan() {
+        return None;
+    }
+    let y = erfinv_2u_minus_1(next());
+    let m: [F; 3] = super::normal_from_slopes(x, y, (sx / h, sy / h), ax, ay);
+    // (Tested as rounded to F: an f32 normal nearly perpendicular to v can round to facing
+    // away.)
+    let d = m[0].to_f64() * v[0] + m[1].to_f64() * v[1] + m[2].to_f64() * v[2];
+    (d > 0.0 && m[2] > F::ZERO).then_some(m)
+}

@@ -290,3 +290,45 @@ pub(crate) fn sample_visible<F: Real>(
     let m = super::facing(m, [wx, wy, wz]);
     [F::from_f64(m[0]), F::from_f64(m[1]), F::from_f64(m[2])]
 }
+
+/// A visible normal for v below the horizon (v.z < 0), not mirrored
+/// ([`crate::Distribution::sample_wm_below`]), anisotropic roughness (αx, αy), from the
+/// uniforms of `uniform`: the superposition's visible normals from below are its GGX
+/// components' with weights e^{−t} σ⁻_t(v), σ⁻_t(v) = (√(c² + h²/t) − c)/2 (c = |v.z|, h the
+/// stretched horizontal length: the component's |v.z| Λ). Since σ⁻_t ≤ h/(2√t), t is drawn
+/// from the Gamma(½) envelope (Z²/2, Z half-normal, by the ziggurat) and kept with
+/// probability (√(c² + h²/t) − c)√t/h = h/(√(c²t + h²) + c√t); the normal is then GGX's
+/// cap at the stretch (αx, αy, √t), which covers v.z < 0 as it is. The acceptance is high
+/// at grazing v and falls for steep ones (h ≪ c), which rarely meet the microsurface
+/// from below; `None` after 256 candidates (the caller's rejection takes over), at h = 0,
+/// or for a rounded normal with v·m ≤ 0.
+pub(crate) fn sample_visible_below<F: Real>(
+    v: [F; 3],
+    ax: F,
+    ay: F,
+    uniform: &mut dyn FnMut() -> F,
+) -> Option<[F; 3]> {
+    let (ax, ay) = (ax.to_f64(), ay.to_f64());
+    let v = [v[0].to_f64(), v[1].to_f64(), v[2].to_f64()];
+    let (sx, sy) = (ax * v[0], ay * v[1]);
+    let (c, h) = (-v[2], (sx * sx + sy * sy).sqrt());
+    if !(c > 0.0 && h > 0.0 && (c + h).is_finite()) {
+        return None;
+    }
+    let mut next = || uniform().to_f64();
+    for _ in 0..256 {
+        let z = super::ziggurat::sample(&super::ziggurat::HALF_NORMAL, next(), &mut next);
+        let t = (0.5 * z * z).max(t_floor::<F>());
+        let s = t.sqrt();
+        let len = (c * c * t + h * h).sqrt();
+        if next() * (len + c * s) <= h {
+            let u = [next(), next()];
+            let m = super::ggx_visible_stretched_len(v, ax, ay, s, u, len);
+            let m = [F::from_f64(m[0]), F::from_f64(m[1]), F::from_f64(m[2])];
+            // (Tested as rounded to F, as Beckmann's.)
+            let d = m[0].to_f64() * v[0] + m[1].to_f64() * v[1] + m[2].to_f64() * v[2];
+            return (d > 0.0 && m[2] > F::ZERO).then_some(m);
+        }
+    }
+    None
+}

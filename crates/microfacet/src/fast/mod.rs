@@ -652,6 +652,31 @@ pub mod ggx {
         };
         super::facing(super::ggx_visible_stretched(w, ax, ay, F::ONE, u), w)
     }
+
+    /// A visible normal for v below the horizon, not mirrored
+    /// ([`crate::Distribution::sample_wm_below`]): the same spherical cap, whose height
+    /// range [−z, 1] (z the stretched v's) is the cap above |z| when v points down: every
+    /// point of it gives m.z > 0 and v·m > 0. `None` for v.z ≥ 0, NaN, or a rounded normal
+    /// that fails those tests (the caller's rejection takes over).
+    #[inline]
+    // `!(x < 0)` is the NaN-aware test, on purpose.
+    #[allow(clippy::neg_cmp_op_on_partial_ord)]
+    pub(crate) fn sample_visible_below<F: Real>(
+        v: [F; 3],
+        ax: F,
+        ay: F,
+        u: [F; 2],
+    ) -> Option<[F; 3]> {
+        if !(v[2] < F::ZERO) {
+            return None;
+        }
+        let m = super::ggx_visible_stretched(v, ax, ay, F::ONE, u);
+        // (In f64: the f32 products of a normal nearly perpendicular to v round.)
+        let d = m[0].to_f64() * v[0].to_f64()
+            + m[1].to_f64() * v[1].to_f64()
+            + m[2].to_f64() * v[2].to_f64();
+        (d > 0.0 && m[2] > F::ZERO).then_some(m)
+    }
 }
 
 #[cfg(test)]
