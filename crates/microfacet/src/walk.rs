@@ -1108,6 +1108,271 @@ pub(crate) fn single_scattering_albedo_tol<D: Distribution<f64>>(
     )
 }
 
+/// The single-scattering albedo of a rough dielectric interface of relative index η
+/// (η_inside/η_outside) seen from wo, split into reflection and transmission: the
+/// directional albedo of [`crate::bsdf::Dielectric`] (height-correlated G2 =
+/// 1/(1 + Λo + Λi), importance transport, so that reflection + transmission is the share
+/// of the energy that single scattering keeps: 1 − their sum is what multiple scattering
+/// adds), as an integral over the microfacet normal,
+///
+/// E(wo) = (1/μo) ∫ D(m) (wo·m)⁺ [R(wo·m) G2(wo, wr) + (1 − R(wo·m)) G2(wo, wt)] dm,
+///
+/// wr and wt the reflection and refraction of wo about m (each counted where it leaves on
+/// its side: wr.z > 0, wt.z < 0; R = 1 past the critical angle). wo below the surface is
+/// the mirror image of wo above with 1/η.
+///
+/// **Quadrature.** Over the directions wi the transmission lobe has an integrable
+/// singularity (where wi·m + wo·m/η' → 0) that no product rule resolves; over m the
+/// integrand is bounded, and in polar coordinates about the normal (θm, φ from wo's
+/// azimuth) every place where it is not smooth is a level set of c = wo·m, which for a
+/// fixed θm is monotone in φ on [0, π]: the visibility edge c = 0, the critical angle
+/// c = √(1 − η²) (η < 1), the reflection's horizon c = μo/(2 cos θm) and the refraction's
+/// c = (k² + 1 − η²)/(2k), k = μo/cos θm (η < 1; for η > 1 the refracted ray always goes
+/// down). So the inner integral over φ is split where c crosses those levels, and the outer
+/// one over θm where a level enters or leaves the range [cos(θo + θm), cos(θo − θm)] of c
+/// (closed forms for the constant levels and the reflection's, bisection for the
+/// refraction's) and at θm = atan(α·{¼, 1, 4}) (the peak of D); each piece by the tanh-sinh
+/// rule of step 2^−`level` (end-point singularities of the pieces cost nothing).
+///
+/// **Accuracy** (measured against level 7, every NDF at α ∈ {0.05, 0.4, 2}, η ∈ {1.5, 2.4}
+/// from both sides, μ ∈ [0.01, 1]): level 4 (the default; 5–30 ms) within 1.7e-5 (Double
+/// GGX at α = 0.4; GGX 7e-6), level 3 within 1.2e-4. Beckmann and the Exponential NDF
+/// converge double-exponentially (level 4 within 1e-7, mostly 1e-14); the heavy-tailed
+/// GGX family only about 8× per level, the sign of a non-smooth place the cuts miss (not
+/// found). tests/compensate.rs holds level 4 to level 5 and both, reflection and
+/// transmission, to a Monte Carlo estimate from the BSDF's own samples within 4σ.
+pub fn single_scattering_albedo_dielectric<D: Distribution<f64>>(
+    dist: &D,
+    wo: [f64; 3],
+    eta: f64,
+) -> (f64, f64) {
+    single_scattering_albedo_dielectric_level(dist, wo, eta, 4)
+}
+
+/// [`single_scattering_albedo_dielectric`] at a given level of the tanh-sinh rule.
+pub fn single_scattering_albedo_dielectric_level<D: Distribution<f64>>(
+    dist: &D,
+    wo: [f64; 3],
+    eta: f64,
+    level: u32,
+) -> (f64, f64) {
+    use std::f64::consts::{FRAC_PI_2, PI};
+    if !(eta > 0.0 && eta.is_finite()) || wo.iter().any(|x| !x.is_finite()) || wo[2] == 0.0 {
+        return (0.0, 0.0);
+    }
+    let (wo, eta) = if wo[2] < 0.0 {
+        ([wo[0], wo[1], -wo[2]], 1.0 / eta)
+    } else {
+        (wo, eta)
+    };
+    let len = dot(wo, wo).sqrt();
+    let wo = [wo[0] / len, wo[1] / len, wo[2] / len];
+    let mu = wo[2];
+    let st = ((1.0 - mu) * (1.0 + mu)).max(0.0).sqrt();
+    let theta_o = st.atan2(mu);
+    let e1 = if st > 0.0 {
+        [wo[0] / st, wo[1] / st]
+    } else {
+        [1.0, 0.0]
+    };
+    let e2 = [-e1[1], e1[0]];
+    let c_tir = if eta < 1.0 {
+        Some(((1.0 - eta) * (1.0 + eta)).sqrt())
+    } else {
+        None
+    };
+    // The refraction's horizon level at cos θm = cm (η < 1), where it exists.
+    let c_t = |cm: f64| -> Option<f64> {
+        if eta >= 1.0 {
+            return None;
+        }
+        let k = mu / cm;
+        let c = (k * k + (1.0 - eta) * (1.0 + eta)) / (2.0 * k);
+        (c >= k && c <= 1.0).then_some(c)
+    };
+    let integrand = |theta: f64, phi: f64| -> (f64, f64) {
+        let (sm, cm) = theta.sin_cos();
+        let (sp, cp) = phi.sin_cos();
+        let m = [
+            sm * (cp * e1[0] + sp * e2[0]),
+            sm * (cp * e1[1] + sp * e2[1]),
+            cm,
+        ];
+        let c = dot(wo, m);
+        if !(c > 0.0) {
+            return (0.0, 0.0);
+        }
+        let w = dist.d(m) * c / mu * sm;
+        if !(w > 0.0 && w.is_finite()) {
+            return (0.0, 0.0);
+        }
+        let r = crate::fresnel::dielectric(c, eta);
+        let wr = [
+            2.0 * c * m[0] - wo[0],
+            2.0 * c * m[1] - wo[1],
+            2.0 * c * m[2] - wo[2],
+        ];
+        let gr = if wr[2] > 0.0 { dist.g2(wo, wr) } else { 0.0 };
+        let cos2_t = 1.0 - (1.0 - c) * (1.0 + c) / (eta * eta);
+        let gt = if r < 1.0 && cos2_t > 0.0 {
+            let k = c / eta - cos2_t.sqrt();
+            let wt = [
+                k * m[0] - wo[0] / eta,
+                k * m[1] - wo[1] / eta,
+                k * m[2] - wo[2] / eta,
+            ];
+            if wt[2] < 0.0 {
+                dist.g2(wo, wt)
+            } else {
+                0.0
+            }
+        } else {
+            0.0
+        };
+        (w * r * gr, w * (1.0 - r) * gt)
+    };
+    let rule = tanh_sinh_rule(level);
+    let (ax, ay) = dist.alpha();
+    let iso = ax == ay;
+    let over_phi = |theta: f64| -> (f64, f64) {
+        let (sm, cm) = theta.sin_cos();
+        let mut cuts = vec![0.0, PI];
+        let mut levels = vec![0.0, mu / (2.0 * cm)];
+        levels.extend(c_tir);
+        levels.extend(c_t(cm));
+        let den = st * sm;
+        if den > 0.0 {
+            for c in levels {
+                let x = (c - mu * cm) / den;
+                if x > -1.0 && x < 1.0 {
+                    cuts.push(x.acos());
+                }
+            }
+        }
+        cuts.sort_by(f64::total_cmp);
+        let mut sum = (0.0, 0.0);
+        for p in cuts.windows(2) {
+            let (r, t) = apply_rule(&rule, p[0], p[1], |phi| {
+                let a = integrand(theta, phi);
+                if iso {
+                    (2.0 * a.0, 2.0 * a.1)
+                } else {
+                    let b = integrand(theta, -phi);
+                    (a.0 + b.0, a.1 + b.1)
+                }
+            });
+            sum.0 += r;
+            sum.1 += t;
+        }
+        sum
+    };
+    // Outer cuts: the constant levels' entries, the reflection's (closed forms), the
+    // refraction's (bisection on a scan), and the peak of D.
+    let mut cuts = vec![0.0, FRAC_PI_2];
+    let mut push = |x: f64| {
+        if x > 0.0 && x < FRAC_PI_2 {
+            cuts.push(x);
+        }
+    };
+    for c in std::iter::once(0.0).chain(c_tir) {
+        let a = c.acos();
+        push(a - theta_o);
+        push(theta_o - a);
+        push(a + theta_o);
+    }
+    push(0.5 * (theta_o + FRAC_PI_2));
+    push(0.5 * (FRAC_PI_2 - theta_o));
+    let a_min = ax.min(ay);
+    for k in [0.25, 1.0, 4.0] {
+        push((k * a_min).atan());
+    }
+    if eta < 1.0 {
+        let sides = |th: f64| -> [f64; 3] {
+            let cm = th.cos();
+            let c = c_t(cm).unwrap_or(f64::NAN);
+            let k = mu / cm;
+            [
+                c - (theta_o - th).cos(),
+                c - (theta_o + th).cos(),
+                (1.0 - eta) * (1.0 + eta) - k * k,
+            ]
+        };
+        const SCAN: usize = 256;
+        let mut prev = (1e-9, sides(1e-9));
+        for i in 1..=SCAN {
+            let th = FRAC_PI_2 * i as f64 / SCAN as f64 * (1.0 - 1e-12);
+            let cur = sides(th);
+            for (j, &b) in cur.iter().enumerate() {
+                let a = prev.1[j];
+                if a.is_finite() && b.is_finite() && (a < 0.0) != (b < 0.0) {
+                    let (mut lo, mut hi) = (prev.0, th);
+                    for _ in 0..60 {
+                        let mid = 0.5 * (lo + hi);
+                        let v = sides(mid)[j];
+                        if v.is_finite() && (v < 0.0) == (a < 0.0) {
+                            lo = mid;
+                        } else {
+                            hi = mid;
+                        }
+                    }
+                    push(0.5 * (lo + hi));
+                }
+            }
+            prev = (th, cur);
+        }
+    }
+    cuts.sort_by(f64::total_cmp);
+    cuts.dedup();
+    let mut sum = (0.0, 0.0);
+    for p in cuts.windows(2) {
+        let (r, t) = apply_rule(&rule, p[0], p[1], over_phi);
+        sum.0 += r;
+        sum.1 += t;
+    }
+    sum
+}
+
+/// The tanh-sinh rule of step 2^−level on [0, 1]: (distance of the node to the nearer end,
+/// which end, weight), the nodes whose weight is below 1e-18 dropped.
+fn tanh_sinh_rule(level: u32) -> Vec<(f64, bool, f64)> {
+    use std::f64::consts::FRAC_PI_2;
+    let h = 0.5f64.powi(level as i32);
+    let n = (3.2 / h) as i64;
+    let mut rule = Vec::new();
+    for k in -n..=n {
+        let t = k as f64 * h;
+        let sh = t.sinh();
+        let e = (std::f64::consts::PI * sh.abs()).exp();
+        let dist = 1.0 / (1.0 + e);
+        let ch = (FRAC_PI_2 * sh).cosh();
+        let w = h * 0.5 * FRAC_PI_2 * t.cosh() / (ch * ch);
+        if w > 1e-18 && dist > 0.0 {
+            rule.push((dist, t > 0.0, w));
+        }
+    }
+    rule
+}
+
+/// ∫_a^b of a pair-valued f by `rule`.
+fn apply_rule(
+    rule: &[(f64, bool, f64)],
+    a: f64,
+    b: f64,
+    mut f: impl FnMut(f64) -> (f64, f64),
+) -> (f64, f64) {
+    let len = b - a;
+    let mut sum = (0.0, 0.0);
+    for &(d, upper, w) in rule {
+        let x = if upper { b - len * d } else { a + len * d };
+        let (p, q) = f(x);
+        if p.is_finite() && q.is_finite() {
+            sum.0 += w * p;
+            sum.1 += w * q;
+        }
+    }
+    (sum.0 * len, sum.1 * len)
+}
+
 /// ∫ g(wi) dωi over the hemisphere of sign `side` (±1: wi.z of that sign) of a lobe that
 /// peaks at |cos θi| = `mu_peak` and at the azimuth opposite wo's (a reflection's or a
 /// refraction's), by nested adaptive tanh-sinh in (|cos θi|, φ), split at the peak in both:

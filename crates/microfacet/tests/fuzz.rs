@@ -1980,3 +1980,71 @@ fn below_samplers_f64() {
 fn below_samplers_f32() {
     below_samplers::<f32>(47, uniform32);
 }
+
+/// The compensated dielectrics (`compensate::CompensatedDielectric`, both schemes, both
+/// transports, η < 1, η = 1 and η > 1, isotropic and anisotropic): hostile directions and
+/// edge uniforms: no panic; eval and pdf finite and ≥ 0 for unit directions; a sample has
+/// a positive finite pdf (a specular one's is its lobe's probability), a finite f ≥ 0 and a
+/// unit wi. `single_scattering_albedo_dielectric` on hostile input: no panic, both parts
+/// finite in [0, 1 + 1e-4] (its documented accuracy; 0 for wo on the horizon or not
+/// finite, η out of range).
+/// (Tables cost 0.5–3 s, so one material per scale unit.)
+#[test]
+fn compensated_dielectric_contract() {
+    use microfacet::bsdf::{Bsdf, Transport};
+    use microfacet::compensate::{CompensatedDielectric, Scheme};
+    use microfacet::walk::single_scattering_albedo_dielectric_level;
+    let mut r = Rng::new(48);
+    let mut fails = Failures::default();
+    for i in 0..scale() {
+        let a = r.pick(&[0.02, 0.1, 0.5, 1.3, 3.0]);
+        let eta = r.pick(&[1.5, 1.0 / 1.33, 1.0, 2.4]);
+        let ay = if i % 2 == 0 { a } else { 0.5 * a };
+        let d = Microfacet::<f64, Ggx>::new(a, ay).unwrap();
+        let kc = CompensatedDielectric::new(d.clone(), eta, Scheme::KullaConty);
+        let tables = kc.tables().clone();
+        let tq = CompensatedDielectric::from_tables(d.clone(), eta, Scheme::Turquin, tables);
+        for b in [kc.clone(), kc.with_transport(Transport::Importance), tq] {
+            for _ in 0..400 {
+                let wo: [f64; 3] = unit_direction::<f64>(&mut r);
+                let wi: [f64; 3] = unit_direction::<f64>(&mut r);
+                let (uc, u) = (uniform(&mut r), [uniform(&mut r), uniform(&mut r)]);
+                let ctx = || format!("α=({a},{ay}) η={eta} wo={wo:?} wi={wi:?} u=({uc}, {u:?})");
+                let (f, p, s) = no_panic("CompensatedDielectric", ctx(), || {
+                    (b.eval(wo, wi), b.pdf(wo, wi), b.sample(wo, uc, u))
+                });
+                fails.check(
+                    f.is_finite() && f >= 0.0 && p.is_finite() && p >= 0.0,
+                    || format!("eval {f} pdf {p} at {}", ctx()),
+                );
+                if let Some(s) = s {
+                    let len = (s.wi[0] * s.wi[0] + s.wi[1] * s.wi[1] + s.wi[2] * s.wi[2]).sqrt();
+                    fails.check(
+                        s.pdf > 0.0
+                            && s.pdf.is_finite()
+                            && s.f.is_finite()
+                            && s.f >= 0.0
+                            && (len - 1.0).abs() < 1e-9,
+                        || format!("sample {s:?} at {}", ctx()),
+                    );
+                }
+                evals(3);
+            }
+        }
+        for _ in 0..6 {
+            let w = direction(&mut r, false);
+            let wo: [f64; 3] = w.into();
+            let eta = r.pick(&[1.5, 0.5, 1.0, 0.0, -1.0, f64::NAN, f64::INFINITY, 1e-300]);
+            let ctx = || format!("α=({a},{ay}) η={eta} wo={wo:?}");
+            let (rr, t) = no_panic("single_scattering_albedo_dielectric", ctx(), || {
+                single_scattering_albedo_dielectric_level(&d, wo, eta, 4)
+            });
+            fails.check(
+                (0.0..=1.0 + 1e-4).contains(&rr) && (0.0..=1.0 + 1e-4).contains(&t),
+                || format!("albedo ({rr}, {t}) at {}", ctx()),
+            );
+            evals(1);
+        }
+    }
+    fails.finish("compensated_dielectric_contract");
+}
