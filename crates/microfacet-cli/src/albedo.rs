@@ -6,8 +6,8 @@ use crate::bsdf::{ndf_alpha, spectrum};
 use crate::eval::field;
 use microfacet::fresnel::{self, One};
 use microfacet::walk::{
-    albedo, single_scattering_albedo, Albedo, ByOrder, DielectricFacets, DiffuseFacets, Heights,
-    Microsurface, MirrorFacets,
+    albedo, single_scattering_albedo, single_scattering_albedo_dielectric_level, Albedo, ByOrder,
+    DielectricFacets, DiffuseFacets, G2Form, Heights, Microsurface, MirrorFacets,
 };
 use microfacet::{Beckmann, Distribution, DoubleGgx, Exponential, Ggx, Gtr, Microfacet, NdfKind};
 use serde_json::{json, Value};
@@ -126,11 +126,20 @@ fn albedo_line(text: &str) -> Result<Value, String> {
         _ => return Err("field 'heights' must be \"uniform\" or \"gaussian\"".into()),
     };
     if quadrature {
-        if !matches!(facets, Facets::Mirror(None)) {
-            return Err("method 'quadrature' is the single-scattering albedo of the F = 1 conductor (no eta, k, or diffuse)".into());
-        }
-        let e1 = with_material!(obj, kind, ax, ay, |d| single_scattering_albedo(&d, wo));
-        return Ok(json!({ "e1": e1 }));
+        return match facets {
+            Facets::Mirror(None) => {
+                let e1 = with_material!(obj, kind, ax, ay, |d| single_scattering_albedo(&d, wo));
+                Ok(json!({ "e1": e1 }))
+            }
+            Facets::Dielectric(eta) => {
+                // (The exact height-correlated G2: the walk's order 1.)
+                let (r, t) = with_material!(obj, kind, ax, ay, |d| {
+                    single_scattering_albedo_dielectric_level(&d, wo, eta, G2Form::Exact, 4)
+                });
+                Ok(json!({ "reflect": { "e1": r }, "transmit": { "e1": t } }))
+            }
+            _ => Err("method 'quadrature' is the single-scattering albedo of the F = 1 conductor or a dielectric (no eta and k, or diffuse)".into()),
+        };
     }
     let walks = field(obj, "walks")?;
     if !((1.0..=MAX_WALKS).contains(&walks) && walks.fract() == 0.0) {

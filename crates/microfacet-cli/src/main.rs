@@ -67,10 +67,14 @@ const ALBEDO_USAGE: &str = "\
       {\"ndf\":\"ggx\",\"alpha\":1,\"mu\":0.5,\"walks\":100000,\"seed\":1}
         -> {\"orders\":[E1,E2,E3,E4plus],\"stderr\":[...],\"total\":E,\"total_stderr\":e}
       material: conductor (default; eta and k numbers or [r,g,b], channel 0 used;
-      neither: F = 1) or diffuse (Lambertian facets, \"rho\" in [0,1], default 1);
-      alpha: a or [ax, ay]; gamma for gtr; heights: uniform (default) or gaussian;
+      neither: F = 1), dielectric (\"eta\" > 0, mu < 0 from inside; -> {\"reflect\":
+      {...},\"transmit\":{...},\"total\":E,\"total_stderr\":e}) or diffuse
+      (Lambertian facets, \"rho\" in [0,1], default 1); alpha: a or [ax, ay]; gamma
+      for gtr; heights: uniform (default) or gaussian;
       \"method\":\"quadrature\" -> {\"e1\":value}, the F = 1 conductor's single
-      scattering by deterministic quadrature. Errors as in eval.
+      scattering by deterministic quadrature; for a dielectric {\"reflect\":{\"e1\":r},
+      \"transmit\":{\"e1\":t}} (exact height-correlated G2: the walk's order 1).
+      Errors as in eval.
 ";
 
 const TABLE_USAGE: &str = "\

@@ -567,16 +567,28 @@ fn albedo_reports_bad_lines_and_goes_on() {
 }
 
 /// A dielectric's albedo by side from either side: reflection and transmission by order,
-/// their total 1 (every walk leaves with weight 1), and the same numbers for the same seed.
+/// their total 1 (every walk leaves with weight 1), the same numbers for the same seed, and
+/// order 1 against the quadrature.
 #[test]
 fn albedo_of_a_dielectric() {
     let input = r#"{"ndf":"beckmann","alpha":0.7,"mu":0.5,"walks":2000,"material":"dielectric","eta":1.5,"seed":4}
 {"ndf":"beckmann","alpha":0.7,"mu":-0.5,"walks":2000,"material":"dielectric","eta":1.5,"seed":4}
 {"ndf":"beckmann","alpha":0.7,"mu":0.5,"walks":2000,"material":"dielectric","eta":1.5,"seed":4}
+{"ndf":"beckmann","alpha":0.7,"mu":-0.5,"material":"dielectric","eta":1.5,"method":"quadrature"}
 "#;
     let out = microfacet(&["albedo"], input);
     assert_eq!(out.status.code(), Some(0));
-    let got = lines(&out.stdout);
+    let mut got = lines(&out.stdout);
+    // Single scattering by quadrature (from inside) against the walk's order 1.
+    let q = got.pop().unwrap();
+    for side in ["reflect", "transmit"] {
+        let e1 = q[side]["e1"].as_f64().unwrap();
+        let (w, sd) = (
+            got[1][side]["orders"][0].as_f64().unwrap(),
+            got[1][side]["stderr"][0].as_f64().unwrap(),
+        );
+        assert!((w - e1).abs() < 4.0 * sd, "{side}: walk {w} ± {sd} vs {e1}");
+    }
     for g in &got {
         let (r, t) = (
             g["reflect"]["total"].as_f64().unwrap(),

@@ -454,6 +454,7 @@ impl DielectricTables {
                             dist,
                             [st * cp, st * sp, z * mu],
                             eta,
+                            crate::walk::G2Form::Approximate,
                             3,
                         );
                         r + t

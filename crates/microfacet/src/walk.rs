@@ -1146,14 +1146,27 @@ pub fn single_scattering_albedo_dielectric<D: Distribution<f64>>(
     wo: [f64; 3],
     eta: f64,
 ) -> (f64, f64) {
-    single_scattering_albedo_dielectric_level(dist, wo, eta, 4)
+    single_scattering_albedo_dielectric_level(dist, wo, eta, G2Form::Approximate, 4)
 }
 
-/// [`single_scattering_albedo_dielectric`] at a given level of the tanh-sinh rule.
+/// Which height-correlated G2 a dielectric's single scattering uses.
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Default)]
+pub enum G2Form {
+    /// 1/(1 + Λo + Λi) for both lobes: [`crate::bsdf::Dielectric`], as pbrt-v4.
+    #[default]
+    Approximate,
+    /// The exact height-correlated form (Heitz 2014, "Understanding the masking-shadowing
+    /// function", section 6): 1/(1 + Λo + Λi) for a reflection, B(1 + Λo, 1 + Λi) (Euler's
+    /// beta function) for a transmission; the walk's order 1 ([`Microsurface::eval`]).
+    Exact,
+}
+
+/// [`single_scattering_albedo_dielectric`] with a given G2 and level of the tanh-sinh rule.
 pub fn single_scattering_albedo_dielectric_level<D: Distribution<f64>>(
     dist: &D,
     wo: [f64; 3],
     eta: f64,
+    g2: G2Form,
     level: u32,
 ) -> (f64, f64) {
     use std::f64::consts::{FRAC_PI_2, PI};
@@ -1221,10 +1234,15 @@ pub fn single_scattering_albedo_dielectric_level<D: Distribution<f64>>(
                 k * m[1] - wo[1] / eta,
                 k * m[2] - wo[2] / eta,
             ];
-            if wt[2] < 0.0 {
-                dist.g2(wo, wt)
-            } else {
+            if !(wt[2] < 0.0) {
                 0.0
+            } else if g2 == G2Form::Exact {
+                let (lo, li) = (dist.lambda(wo), dist.lambda(wt));
+                let b =
+                    libm::lgamma(1.0 + lo) + libm::lgamma(1.0 + li) - libm::lgamma(2.0 + lo + li);
+                b.exp()
+            } else {
+                dist.g2(wo, wt)
             }
         } else {
             0.0

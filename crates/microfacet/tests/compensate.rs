@@ -205,7 +205,7 @@ fn shipped_tables() {
 fn dielectric_albedo_by_quadrature() {
     use microfacet::bsdf::{Dielectric, Transport};
     use microfacet::chi2::SplitMix64;
-    use microfacet::walk::single_scattering_albedo_dielectric_level as albedo;
+    use microfacet::walk::{single_scattering_albedo_dielectric_level as albedo, G2Form};
     use microfacet::Distribution;
     fn check<D: Distribution<f64> + Clone>(name: &str, d: D) {
         let b = Dielectric::new(d.clone(), 1.5).with_transport(Transport::Importance);
@@ -217,8 +217,8 @@ fn dielectric_albedo_by_quadrature() {
                     (1.0 - mu * mu).sqrt() * 0.8,
                     z * mu,
                 ];
-                let (r4, t4) = albedo(&d, wo, 1.5, 4);
-                let (r5, t5) = albedo(&d, wo, 1.5, 5);
+                let (r4, t4) = albedo(&d, wo, 1.5, G2Form::Approximate, 4);
+                let (r5, t5) = albedo(&d, wo, 1.5, G2Form::Approximate, 5);
                 assert!(
                     (r4 - r5).abs() < 3e-5 && (t4 - t5).abs() < 3e-5,
                     "{name} wo={wo:?}: level 4 ({r4}, {t4}) vs 5 ({r5}, {t5})"
