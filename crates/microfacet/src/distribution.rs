@@ -148,19 +148,21 @@ pub trait Distribution<F: Real> {
     /// A visible normal for w (w.z < 0 is mirrored) from u ∈ [0, 1)².
     fn sample_wm(&self, w: [F; 3], u: [F; 2]) -> [F; 3];
 
-    /// A visible normal for a direction v **below** the horizon (v.z < 0), not mirrored:
-    /// distributed as max(0, v·m) D(m)/σ(v) over the upper hemisphere of m, σ(v) =
-    /// |v.z| Λ(v) (the microsurface seen from beneath its mean plane, as a ray inside the
-    /// microsurface's height field sees it: [`crate::walk`]), from the uniforms in (0, 1)
-    /// that `uniform` supplies (two, or more for a sampler that rejects). `None` where the
-    /// distribution has no direct sampler for it, or for a rounded normal that fails the
-    /// test v·m > 0, m.z > 0, or a rejection sampler past its cap; the caller then samples
-    /// by rejection from the mirror image (both are exact, so the mixture is too). Direct
-    /// samplers: GGX (its spherical cap covers v.z < 0 as it is: Dupuy & Benyoub 2023, the
-    /// cap z ∈ [−v.z, 1] of the stretched v), Beckmann (the visible slope's tail, by
-    /// rejection) and Double GGX (the mixing variable, by rejection, then GGX's cap).
+    /// A visible normal for a direction v of **either** hemisphere, not mirrored: distributed
+    /// as max(0, v·m) D(m)/σ(v) over the upper hemisphere of m (σ(v) = v.z(1 + Λ(v)) above,
+    /// |v.z| Λ(v) below: the microsurface seen from beneath its mean plane, as a ray inside
+    /// the microsurface's height field sees it, [`crate::walk`]), from the uniforms in
+    /// (0, 1) that `uniform` supplies (two, or more for a sampler that rejects): for a
+    /// caller that needs the distribution of m, not a warp of two uniforms. `None` where the
+    /// distribution has no such sampler for v, or for a rounded normal that fails the test
+    /// v·m > 0, m.z > 0, or a rejection sampler past its cap; the caller then uses
+    /// [`Distribution::sample_wm`] (above) or a rejection from the mirror image (below):
+    /// all exact, so the mixture is too. Provided: GGX (its spherical cap covers v.z < 0 as
+    /// it is: Dupuy & Benyoub 2023, the cap z ∈ [−v.z, 1] of the stretched v), Beckmann (the
+    /// visible slope by rejection on both sides, four times cheaper than its warp above)
+    /// and Double GGX (the mixing variable by rejection, then GGX's cap).
     #[inline]
-    fn sample_wm_below(&self, v: [F; 3], uniform: &mut dyn FnMut() -> F) -> Option<[F; 3]> {
+    fn sample_wm_stream(&self, v: [F; 3], uniform: &mut dyn FnMut() -> F) -> Option<[F; 3]> {
         let _ = (v, uniform);
         None
     }
@@ -310,10 +312,10 @@ pub trait Shape: sealed::Sealed + Sized {
     /// The visible-normal sampler at (αx, αy).
     #[doc(hidden)]
     fn sample_wm<F: Real>(data: &Self::Data, w: [F; 3], ax: F, ay: F, u: [F; 2]) -> [F; 3];
-    /// [`Distribution::sample_wm_below`] at (αx, αy).
+    /// [`Distribution::sample_wm_stream`] at (αx, αy).
     #[doc(hidden)]
     #[inline(always)]
-    fn sample_wm_below<F: Real>(
+    fn sample_wm_stream<F: Real>(
         data: &Self::Data,
         v: [F; 3],
         ax: F,
@@ -421,14 +423,19 @@ impl Shape for Ggx {
         fast::ggx::sample_visible(w, ax, ay, u)
     }
     #[inline(always)]
-    fn sample_wm_below<F: Real>(
+    fn sample_wm_stream<F: Real>(
         _: &(),
         v: [F; 3],
         ax: F,
         ay: F,
         uniform: &mut dyn FnMut() -> F,
     ) -> Option<[F; 3]> {
-        fast::ggx::sample_visible_below(v, ax, ay, [uniform(), uniform()])
+        let u = [uniform(), uniform()];
+        if v[2] > F::ZERO {
+            Some(fast::ggx::sample_visible(v, ax, ay, u))
+        } else {
+            fast::ggx::sample_visible_below(v, ax, ay, u)
+        }
     }
     #[inline(always)]
     fn sample_dcos<F: Real>(_: &(), ax: F, ay: F, u: [F; 2]) -> [F; 3] {
@@ -548,14 +555,18 @@ impl Shape for Beckmann {
         fast::beckmann::sample_visible(w, ax, ay, u)
     }
     #[inline(always)]
-    fn sample_wm_below<F: Real>(
+    fn sample_wm_stream<F: Real>(
         _: &(),
         v: [F; 3],
         ax: F,
         ay: F,
         uniform: &mut dyn FnMut() -> F,
     ) -> Option<[F; 3]> {
-        fast::beckmann::sample_visible_below(v, ax, ay, uniform)
+        if v[2] > F::ZERO {
+            fast::beckmann::sample_visible_above(v, ax, ay, uniform)
+        } else {
+            fast::beckmann::sample_visible_below(v, ax, ay, uniform)
+        }
     }
     #[inline(always)]
     fn sample_dcos<F: Real>(_: &(), ax: F, ay: F, u: [F; 2]) -> [F; 3] {
@@ -607,14 +618,21 @@ impl Shape for DoubleGgx {
         fast::double_ggx::sample_visible(w, ax, ay, u, &mut || s.next_uniform())
     }
     #[inline(always)]
-    fn sample_wm_below<F: Real>(
+    fn sample_wm_stream<F: Real>(
         _: &(),
         v: [F; 3],
         ax: F,
         ay: F,
         uniform: &mut dyn FnMut() -> F,
     ) -> Option<[F; 3]> {
-        fast::double_ggx::sample_visible_below(v, ax, ay, uniform)
+        if v[2] > F::ZERO {
+            let u = [uniform(), uniform()];
+            Some(fast::double_ggx::sample_visible(v, ax, ay, u, &mut || {
+                uniform()
+            }))
+        } else {
+            fast::double_ggx::sample_visible_below(v, ax, ay, uniform)
+        }
     }
     #[inline(always)]
     fn sample_dcos<F: Real>(_: &(), ax: F, ay: F, u: [F; 2]) -> [F; 3] {
@@ -937,8 +955,8 @@ impl<F: Real, N: Shape> Distribution<F> for Microfacet<F, N> {
     }
 
     #[inline(always)]
-    fn sample_wm_below(&self, v: [F; 3], uniform: &mut dyn FnMut() -> F) -> Option<[F; 3]> {
-        N::sample_wm_below(&self.data, v, self.ax, self.ay, uniform)
+    fn sample_wm_stream(&self, v: [F; 3], uniform: &mut dyn FnMut() -> F) -> Option<[F; 3]> {
+        N::sample_wm_stream(&self.data, v, self.ax, self.ay, uniform)
     }
 
     #[inline(always)]

@@ -37,9 +37,10 @@
 //! in the upper hemisphere v·m = v′·m − 2|v.z| m.z ≤ v′·m, so accepting m with probability
 //! max(0, v·m)/(v′·m) leaves exactly D_v (acceptance σ(v)/σ(v′) = Λ/(1 + Λ), which is small
 //! only for steep upward rays, and those rarely meet the surface: the expected number of
-//! candidates per step stays bounded). Where the distribution samples D_v directly
-//! ([`Distribution::sample_wm_below`]: GGX, Beckmann, Double GGX) that is used instead,
-//! one call without the full sampler per candidate (BENCHMARKS.md, issue 21).
+//! candidates per step stays bounded). Where the distribution samples D_v from a uniform
+//! stream ([`Distribution::sample_wm_stream`]: GGX, Beckmann, Double GGX) that is used
+//! instead, for rays going down too (Beckmann's rejection there is cheaper than its exact
+//! warp): one call without the full sampler per candidate (BENCHMARKS.md, issue 21).
 //!
 //! **Order 1** is the single-scattering BSDF with the height-correlated G2 (the paper's
 //! section 5.3): for a conductor with F = 1, E₁(μ) = ∫ D G2/(4μ) dωi, which
@@ -539,11 +540,11 @@ impl<D: Distribution<f64>> Microsurface<D> {
     /// max(0, v·m) D(m)): the distribution's own sampler above, the rejection of the module
     /// docs below.
     fn visible_normal(&self, v: [f64; 3], rng: &mut WalkRng) -> [f64; 3] {
+        if let Some(m) = self.dist.sample_wm_stream(v, &mut || rng.next_open()) {
+            return m;
+        }
         if v[2] >= 0.0 {
             return self.dist.sample_wm(v, [rng.next_open(), rng.next_open()]);
-        }
-        if let Some(m) = self.dist.sample_wm_below(v, &mut || rng.next_open()) {
-            return m;
         }
         let up = [v[0], v[1], -v[2]];
         let mut m = up;

@@ -501,26 +501,33 @@ fn sampling_matches_evaluation() {
     }
 }
 
-/// The direct samplers of the visible normals of a direction below the horizon
-/// (`Distribution::sample_wm_below`, which the walk uses for rays going up instead of its
-/// rejection; GGX, Beckmann, Double GGX): χ² against max(0, v·m) D(m)/(|v.z| Λ(v)),
-/// isotropic and anisotropic, 45° to grazing (Beckmann's two envelopes both); every
-/// sample a unit normal with m.z > 0 and v·m > 0; the NDFs without one answer `None`.
+/// The stream samplers of visible normals (`Distribution::sample_wm_stream`, which the walk
+/// uses instead of the warps and of its rejection from the mirror image; GGX, Beckmann,
+/// Double GGX): χ² against max(0, v·m) D(m)/σ(v), σ = |v.z| Λ(v) below and v.z(1 + Λ(v))
+/// above; below isotropic and anisotropic, 45° to grazing (Beckmann's two envelopes both),
+/// above anisotropic at normal incidence, 30° and 80°; every sample a unit normal with
+/// m.z > 0 and v·m > 0; the NDFs without one answer `None`.
 #[test]
-fn visible_normals_from_below() {
+fn visible_normals_from_a_stream() {
     use microfacet::chi2::{chi2_test, sidak, DcosCoordinates, SplitMix64};
     use microfacet::{Exact, NdfKind, Vec3};
     fn check<D: Distribution<f64>>(name: &str, d: D, kind: NdfKind, ax: f64, ay: f64, level: f64) {
         let reference = Exact::new(NdfKind::Ggx, 1.5 * ax, 1.5 * ay, None).unwrap();
         let mut rng = SplitMix64(kind as u64);
-        for deg in [45.0f64, 80.0, 89.0] {
-            let (s, c) = deg.to_radians().sin_cos();
-            let v = [s * 0.8, s * 0.6, -c];
-            let sigma = c * d.lambda(v);
+        let above: &[f64] = if ax == ay { &[] } else { &[0.0, 30.0, 80.0] };
+        let below = [45.0f64, 80.0, 89.0].map(|d| -d);
+        for &deg in above.iter().chain(&below) {
+            let (s, c) = deg.abs().to_radians().sin_cos();
+            let v = [s * 0.8, s * 0.6, c * deg.signum()];
+            let sigma = if deg < 0.0 {
+                c * d.lambda(v)
+            } else {
+                c * (1.0 + d.lambda(v))
+            };
             let r = chi2_test(
                 |_| {
                     let m = d
-                        .sample_wm_below(v, &mut || 0.5 * (2.0 * rng.next_f64()).max(f64::EPSILON))
+                        .sample_wm_stream(v, &mut || 0.5 * (2.0 * rng.next_f64()).max(f64::EPSILON))
                         .expect("a normal");
                     assert!(m[2] > 0.0 && m[0] * v[0] + m[1] * v[1] + m[2] * v[2] > 0.0);
                     Vec3::from(m)
@@ -532,7 +539,7 @@ fn visible_normals_from_below() {
                 &DcosCoordinates(&reference),
                 100_000,
                 16,
-                deg as u64,
+                (deg + 100.0) as u64,
             );
             assert!(
                 r.p_value > level && r.bad_samples == 0 && (r.pdf_integral - 1.0).abs() < 2e-3,
@@ -540,7 +547,7 @@ fn visible_normals_from_below() {
             );
         }
     }
-    let level = sidak(0.01, 3 * 2 * 3);
+    let level = sidak(0.01, 3 * (2 * 3 + 3));
     for &(ax, ay) in &[(0.4, 0.4), (0.8, 0.2)] {
         check(
             "GGX",
@@ -567,6 +574,6 @@ fn visible_normals_from_below() {
             level,
         );
         let e = Microfacet::<f64, Exponential>::new(ax, ay).unwrap();
-        assert!(e.sample_wm_below([0.6, 0.0, -0.8], &mut || 0.5).is_none());
+        assert!(e.sample_wm_stream([0.6, 0.0, -0.8], &mut || 0.5).is_none());
     }
 }

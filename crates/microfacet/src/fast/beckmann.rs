@@ -318,7 +318,7 @@ pub(crate) fn sample_visible<F: Real>(w: [F; 3], ax: F, ay: F, u: [F; 2]) -> [F;
 }
 
 /// A visible normal for v below the horizon (v.z < 0), not mirrored
-/// ([`crate::Distribution::sample_wm_below`]), anisotropic roughness (αx, αy), from the
+/// ([`crate::Distribution::sample_wm_stream`]), anisotropic roughness (αx, αy), from the
 /// uniforms of `uniform`. In the slope frame of v (stretched azimuth φ, a = |v.z|/h, h the
 /// stretched horizontal length) the visible slopes of the α = 1 distribution have density
 /// ∝ max(0, X − a) e^{−X²} e^{−Y²}: Y is N(0, ½) and X lies in the tail X > a, drawn by
@@ -372,6 +372,77 @@ pub(crate) fn sample_visible_below<F: Real>(
     let m: [F; 3] = super::normal_from_slopes(x, y, (sx / h, sy / h), ax, ay);
     // (Tested as rounded to F: an f32 normal nearly perpendicular to v can round to facing
     // away.)
+    let d = m[0].to_f64() * v[0] + m[1].to_f64() * v[1] + m[2].to_f64() * v[2];
+    (d > 0.0 && m[2] > F::ZERO).then_some(m)
+}
+
+/// A visible normal for v above the horizon (v.z > 0) from a uniform stream
+/// ([`crate::Distribution::sample_wm_stream`]; not a warp of two uniforms, as
+/// [`sample_visible`] is, and about four times cheaper than its Halley inversion). In the
+/// slope frame of v (a = v.z/h as [`sample_visible_below`]) the visible slope X has density
+/// ∝ (X + a) e^{−X²} on X > −a and Y is N(0, ½). X by rejection from the envelope
+/// X e^{−X²} on X ≥ 0 (mass ½: X = √(−ln U)) plus a e^{−X²} on the whole line (mass a√π:
+/// X = ±Z/√2, Z half-normal by the ziggurat), which equals the density for X ≥ 0 and
+/// exceeds it for X < 0, where the candidate is kept with probability (X + a)/a (0 below
+/// −a); acceptance (½ + a√π/2 + ∫₋ₐ⁰(X + a)e^{−X²}dX)/(½ + a√π), 0.8 at a = 1 and above 0.75
+/// everywhere. At normal incidence (h = 0) both slopes are N(0, ½). `None` after 64
+/// candidates (probability below 1e-38) or for a rounded normal with v·m ≤ 0.
+pub(crate) fn sample_visible_above<F: Real>(
+    v: [F; 3],
+    ax: F,
+    ay: F,
+    uniform: &mut dyn FnMut() -> F,
+) -> Option<[F; 3]> {
+    let (ax, ay) = (ax.to_f64(), ay.to_f64());
+    let v = [v[0].to_f64(), v[1].to_f64(), v[2].to_f64()];
+    let (sx, sy) = (ax * v[0], ay * v[1]);
+    let h = (sx * sx + sy * sy).sqrt();
+    if !(v[2] > 0.0 && h.is_finite()) {
+        return None;
+    }
+    let mut next = || uniform().to_f64();
+    let normal = |w: f64, next: &mut dyn FnMut() -> f64| {
+        // ±Z/√2 from one uniform: its lowest half picks the sign, the rest drives the
+        // ziggurat.
+        let (neg, w) = if w < 0.5 {
+            (true, 2.0 * w)
+        } else {
+            (false, 2.0 * w - 1.0)
+        };
+        let z = super::ziggurat::sample(&super::ziggurat::HALF_NORMAL, w, &mut || next())
+            * std::f64::consts::FRAC_1_SQRT_2;
+        if neg {
+            -z
+        } else {
+            z
+        }
+    };
+    let (frame, x) = if h == 0.0 {
+        ((1.0, 0.0), normal(next(), &mut next))
+    } else {
+        let a = v[2] / h;
+        // (a√π overflows only past 1e307: then the Rayleigh part is never drawn.)
+        let p_ray = 0.5 / (0.5 + a * super::SQRT_PI);
+        let mut x = f64::NAN;
+        for _ in 0..64 {
+            let w = next();
+            if w < p_ray {
+                x = (-next().ln()).sqrt();
+                break;
+            }
+            let c = normal((w - p_ray) / (1.0 - p_ray), &mut next);
+            if c >= 0.0 || (c > -a && next() * a < c + a) {
+                x = c;
+                break;
+            }
+        }
+        ((sx / h, sy / h), x)
+    };
+    if x.is_nan() {
+        return None;
+    }
+    let y = normal(next(), &mut next);
+    let m: [F; 3] = super::normal_from_slopes(x, y, frame, ax, ay);
     let d = m[0].to_f64() * v[0] + m[1].to_f64() * v[1] + m[2].to_f64() * v[2];
     (d > 0.0 && m[2] > F::ZERO).then_some(m)
 }

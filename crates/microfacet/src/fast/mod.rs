@@ -654,7 +654,7 @@ pub mod ggx {
     }
 
     /// A visible normal for v below the horizon, not mirrored
-    /// ([`crate::Distribution::sample_wm_below`]): the same spherical cap, whose height
+    /// ([`crate::Distribution::sample_wm_stream`]): the same spherical cap, whose height
     /// range [−z, 1] (z the stretched v's) is the cap above |z| when v points down: every
     /// point of it gives m.z > 0 and v·m > 0. `None` for v.z ≥ 0, NaN, or a rounded normal
     /// that fails those tests (the caller's rejection takes over).
