@@ -340,10 +340,7 @@ pub(crate) fn sample_visible_below<F: Real>(
     ay: F,
     uniform: &mut dyn FnMut() -> F,
 ) -> Option<[F; 3]> {
-    let (ax, ay) = (ax.to_f64(), ay.to_f64());
-    let v = [v[0].to_f64(), v[1].to_f64(), v[2].to_f64()];
-    let (sx, sy) = (ax * v[0], ay * v[1]);
-    let h = (sx * sx + sy * sy).sqrt();
+    let (v, ax, ay, sx, sy, h) = super::stream_view(v, ax, ay);
     if !(v[2] < 0.0 && h > 0.0 && h.is_finite()) {
         return None;
     }
@@ -369,11 +366,7 @@ pub(crate) fn sample_visible_below<F: Real>(
         return None;
     }
     let y = erfinv_2u_minus_1(next());
-    let m: [F; 3] = super::normal_from_slopes(x, y, (sx / h, sy / h), ax, ay);
-    // (Tested as rounded to F: an f32 normal nearly perpendicular to v can round to facing
-    // away.)
-    let d = m[0].to_f64() * v[0] + m[1].to_f64() * v[1] + m[2].to_f64() * v[2];
-    (d > 0.0 && m[2] > F::ZERO).then_some(m)
+    super::stream_normal(super::normal_from_slopes(x, y, (sx / h, sy / h), ax, ay), v)
 }
 
 /// A visible normal for v above the horizon (v.z > 0) from a uniform stream
@@ -393,10 +386,7 @@ pub(crate) fn sample_visible_above<F: Real>(
     ay: F,
     uniform: &mut dyn FnMut() -> F,
 ) -> Option<[F; 3]> {
-    let (ax, ay) = (ax.to_f64(), ay.to_f64());
-    let v = [v[0].to_f64(), v[1].to_f64(), v[2].to_f64()];
-    let (sx, sy) = (ax * v[0], ay * v[1]);
-    let h = (sx * sx + sy * sy).sqrt();
+    let (v, ax, ay, sx, sy, h) = super::stream_view(v, ax, ay);
     if !(v[2] > 0.0 && h.is_finite()) {
         return None;
     }
@@ -442,7 +432,5 @@ pub(crate) fn sample_visible_above<F: Real>(
         return None;
     }
     let y = normal(next(), &mut next);
-    let m: [F; 3] = super::normal_from_slopes(x, y, frame, ax, ay);
-    let d = m[0].to_f64() * v[0] + m[1].to_f64() * v[1] + m[2].to_f64() * v[2];
-    (d > 0.0 && m[2] > F::ZERO).then_some(m)
+    super::stream_normal(super::normal_from_slopes(x, y, frame, ax, ay), v)
 }

@@ -308,10 +308,8 @@ pub(crate) fn sample_visible_below<F: Real>(
     ay: F,
     uniform: &mut dyn FnMut() -> F,
 ) -> Option<[F; 3]> {
-    let (ax, ay) = (ax.to_f64(), ay.to_f64());
-    let v = [v[0].to_f64(), v[1].to_f64(), v[2].to_f64()];
-    let (sx, sy) = (ax * v[0], ay * v[1]);
-    let (c, h) = (-v[2], (sx * sx + sy * sy).sqrt());
+    let (v, ax, ay, _, _, h) = super::stream_view(v, ax, ay);
+    let c = -v[2];
     if !(c > 0.0 && h > 0.0 && (c + h).is_finite()) {
         return None;
     }
@@ -325,9 +323,7 @@ pub(crate) fn sample_visible_below<F: Real>(
             let u = [next(), next()];
             let m = super::ggx_visible_stretched_len(v, ax, ay, s, u, len);
             let m = [F::from_f64(m[0]), F::from_f64(m[1]), F::from_f64(m[2])];
-            // (Tested as rounded to F, as Beckmann's.)
-            let d = m[0].to_f64() * v[0] + m[1].to_f64() * v[1] + m[2].to_f64() * v[2];
-            return (d > 0.0 && m[2] > F::ZERO).then_some(m);
+            return super::stream_normal(m, v);
         }
     }
     None

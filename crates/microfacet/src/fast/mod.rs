@@ -316,6 +316,26 @@ fn ggx_visible_stretched_len<F: Real>(w: [F; 3], ax: F, ay: F, sz: F, u: [F; 2],
     [hx * inv, hy * inv, hz * inv]
 }
 
+/// What a stream sampler of visible normals ([`crate::Distribution::sample_wm_stream`])
+/// needs of v and the roughness, in f64: v, αx, αy, the stretched horizontal part
+/// (αx v.x, αy v.y) and its length h.
+#[inline(always)]
+pub(crate) fn stream_view<F: Real>(v: [F; 3], ax: F, ay: F) -> ([f64; 3], f64, f64, f64, f64, f64) {
+    let (ax, ay) = (ax.to_f64(), ay.to_f64());
+    let v = [v[0].to_f64(), v[1].to_f64(), v[2].to_f64()];
+    let (sx, sy) = (ax * v[0], ay * v[1]);
+    (v, ax, ay, sx, sy, (sx * sx + sy * sy).sqrt())
+}
+
+/// m as a stream sampler returns it: only if, as rounded to F, it lies above the horizon
+/// and faces v (v·m > 0 in f64: an f32 normal nearly perpendicular to v can round to
+/// facing away, and the f32 products themselves round).
+#[inline(always)]
+pub(crate) fn stream_normal<F: Real>(m: [F; 3], v: [f64; 3]) -> Option<[F; 3]> {
+    let d = m[0].to_f64() * v[0] + m[1].to_f64() * v[1] + m[2].to_f64() * v[2];
+    (d > 0.0 && m[2] > F::ZERO).then_some(m)
+}
+
 /// m, or where it lies on or behind the plane perpendicular to w (w·m ≤ 0 as computed here),
 /// m less its component along w plus a margin, renormalised: w·m is then a few ulp above 0
 /// (so that it stays positive once rounded to F), and m.z grows (w is mirrored to w.z ≥ 0).
@@ -671,11 +691,7 @@ pub mod ggx {
             return None;
         }
         let m = super::ggx_visible_stretched(v, ax, ay, F::ONE, u);
-        // (In f64: the f32 products of a normal nearly perpendicular to v round.)
-        let d = m[0].to_f64() * v[0].to_f64()
-            + m[1].to_f64() * v[1].to_f64()
-            + m[2].to_f64() * v[2].to_f64();
-        (d > 0.0 && m[2] > F::ZERO).then_some(m)
+        super::stream_normal(m, [v[0].to_f64(), v[1].to_f64(), v[2].to_f64()])
     }
 }
 
