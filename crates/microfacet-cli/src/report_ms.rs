@@ -212,7 +212,7 @@ fn dielectric_furnace_plot() -> Plot {
     );
     for (k, kind) in NdfKind::ALL.into_iter().enumerate() {
         let (before, kc, tq) = with_ndf!(kind, 1.0, GAMMA, |d| {
-            let tables = DielectricTables::compute(&d, 1.5);
+            let tables = DielectricTables::new(&d, 1.5);
             let c = CompensatedDielectric::from_tables(
                 d.clone(),
                 1.5,

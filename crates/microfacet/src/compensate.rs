@@ -25,10 +25,11 @@
 //!
 //! **Dielectrics.** [`CompensatedDielectric`] (see there for the two-sided Kulla–Conty
 //! split and its reciprocity) over [`DielectricTables`]: E(μ) from outside and from inside
-//! at the material's η, 65 nodes each, computed at construction from
-//! [`crate::walk::single_scattering_albedo_dielectric`] (a third table dimension, η, is not
-//! shipped). White furnace (importance transport, both sides) within 1e-3, measured ≤ 1.8e-4
-//! over every NDF (tests/compensate.rs).
+//! at the material's η, 65 nodes each, from
+//! [`crate::walk::single_scattering_albedo_dielectric`]: shipped for the isotropic materials
+//! at five common indices (`data/compensation/*-dielectric.mfd`, interpolated in ln α),
+//! computed at construction otherwise (0.5–0.8 s). White furnace (importance transport, both
+//! sides) within 1e-3, measured ≤ 1.8e-4 over every NDF (tests/compensate.rs).
 
 // `!(x > 0)` is the NaN-aware test (false for NaN), on purpose.
 #![allow(clippy::neg_cmp_op_on_partial_ord)]
@@ -430,10 +431,11 @@ impl<D: Distribution<f64> + Clone, Fr: Fresnel<f64, N> + Clone, const N: usize> 
 /// single-scattering albedo, reflection plus transmission, from outside (η) and from inside
 /// (1/η), [`crate::walk::single_scattering_albedo_dielectric`] at 65 nodes uniform in √μ
 /// (twice a conductor's), at the rule's level 3 (within 1.2e-4 of level 7 in the worst case
-/// measured, Double GGX; the furnace stays within 1e-3 with it). Computed here, not shipped (a
-/// third dimension, η, would multiply the shipped data by the η nodes): 130 quadratures,
-/// measured 0.5–0.8 s for an isotropic material, four times that for an anisotropic one
-/// (the mean over four azimuths of wo, as [`AlbedoTable::compute`]).
+/// measured, Double GGX; the furnace stays within 1e-3 with it). Shipped for the library's
+/// isotropic materials at the common indices [`SHIPPED_ETAS`] ([`DielectricTables::new`]);
+/// computed otherwise: 130 quadratures, measured 0.5–0.8 s for an isotropic material, four
+/// times that for an anisotropic one (the mean over four azimuths of wo, as
+/// [`AlbedoTable::compute`]).
 #[derive(Clone, Debug, PartialEq)]
 pub struct DielectricTables {
     /// E(μ) from outside.
@@ -443,6 +445,74 @@ pub struct DielectricTables {
 }
 
 impl DielectricTables {
+    /// The tables of `dist` at relative index η: interpolated from the tables the library
+    /// ships ([`DielectricTables::shipped`]; microseconds) where `dist` is one of the
+    /// library's isotropic materials, α in [0.01, 4] and η one of the shipped indices,
+    /// else computed ([`DielectricTables::compute`]).
+    pub fn new<D: Distribution<f64>>(dist: &D, eta: f64) -> Self {
+        let (ax, ay) = dist.alpha();
+        match dist.ndf() {
+            Some((kind, gamma)) if ax == ay => {
+                Self::shipped(kind, gamma, ax, eta).unwrap_or_else(|| Self::compute(dist, eta))
+            }
+            _ => Self::compute(dist, eta),
+        }
+    }
+
+    /// The tables of an isotropic material of NDF `kind` (GTR: γ ∈ {1, 2}) at α from the
+    /// shipped data (`data/compensation/*-dielectric.mfd`, written by
+    /// `examples/gen_dielectric_tables.rs` with [`dielectric_table_bytes`]) for the common
+    /// indices η ∈ [`SHIPPED_ETAS`] (water, pbrt's and Mitsuba's default glass 1.5, 1.6, 2,
+    /// diamond; 1/η too, the same interface seen from inside): both sides' E at the 65 √μ
+    /// nodes over 49 values of α log-uniform on [0.01, 4], cubic Lagrange in ln α. `None`
+    /// for other η (an η between them is not interpolated: E(μ) seen from inside has
+    /// features that move with η, see the notes of issue 21), α outside the range or
+    /// other NDFs. Equal to a computed table at the α nodes (to f32 rounding, 4e-8) and
+    /// within 2e-4 between them (1.7e-4 measured for GGX and Beckmann at α = 2.9, seen from
+    /// inside at grazing μ; 1e-5 or less at α ≤ 0.6; tests/compensate.rs).
+    pub fn shipped(kind: NdfKind, gamma: Option<f64>, alpha: f64, eta: f64) -> Option<Self> {
+        let file = match (kind, gamma) {
+            (NdfKind::Gtr, Some(2.0)) => 1,
+            (NdfKind::Gtr, Some(1.0)) => 4,
+            (NdfKind::Gtr, _) => return None,
+            (NdfKind::Ggx, _) => 1,
+            (NdfKind::Beckmann, _) => 0,
+            (NdfKind::DoubleGgx, _) => 2,
+            (NdfKind::Exponential, _) => 3,
+        };
+        // (A relative 1e-12 of slack: an η written with its digits.)
+        let matches = |x: f64| (x - eta).abs() <= 1e-12 * x;
+        let (je, flip) = match SHIPPED_ETAS.iter().position(|&x| matches(x)) {
+            Some(j) => (j, false),
+            None => (SHIPPED_ETAS.iter().position(|&x| matches(1.0 / x))?, true),
+        };
+        let data = shipped_dielectric(file)?;
+        let (a0, a1, na) = SHIP_ALPHA;
+        let (la, l0, l1) = (alpha.ln(), a0.ln(), a1.ln());
+        if !(la >= l0 - 1e-12 && la <= l1 + 1e-12) {
+            return None;
+        }
+        let x = ((la - l0) / (l1 - l0) * (na - 1) as f64).clamp(0.0, (na - 1) as f64);
+        let side = |s: usize| {
+            AlbedoTable::from_nodes(
+                (0..DIELECTRIC_NODES)
+                    .map(|k| {
+                        lagrange4(x, na, |ia| {
+                            data[((ia * SHIPPED_ETAS.len() + je) * 2 + s) * DIELECTRIC_NODES + k]
+                                as f64
+                        })
+                    })
+                    .collect(),
+            )
+        };
+        let (outside, inside) = if flip {
+            (side(1), side(0))
+        } else {
+            (side(0), side(1))
+        };
+        Some(DielectricTables { outside, inside })
+    }
+
     /// The tables of `dist` with relative index `eta` (> 0, finite; η = 1 gives E = 1).
     pub fn compute<D: Distribution<f64>>(dist: &D, eta: f64) -> Self {
         let (ax, ay) = dist.alpha();
@@ -483,6 +553,118 @@ impl DielectricTables {
             inside: side(-1.0),
         }
     }
+}
+
+/// The indices the dielectric tables are shipped for (and their reciprocals, from inside):
+/// water, 1.5 (pbrt-v4's and Mitsuba 3's default glass), 1.6, 2 and diamond.
+pub const SHIPPED_ETAS: [f64; 5] = [1.33, 1.5, 1.6, 2.0, 2.42];
+
+/// The shipped dielectric tables' α nodes: 49 log-uniform on [0.01, 4] (as the conductor's
+/// range; cubic Lagrange in ln α between them).
+const SHIP_ALPHA: (f64, f64, usize) = (0.01, 4.0, 49);
+
+/// The shipped dielectric tables: Beckmann, GGX, Double GGX, Exponential, GTR γ = 1.
+const SHIPPED_DIELECTRIC: [&[u8]; 5] = [
+    include_bytes!("../data/compensation/beckmann-dielectric.mfd"),
+    include_bytes!("../data/compensation/ggx-dielectric.mfd"),
+    include_bytes!("../data/compensation/double_ggx-dielectric.mfd"),
+    include_bytes!("../data/compensation/exponential-dielectric.mfd"),
+    include_bytes!("../data/compensation/gtr1-dielectric.mfd"),
+];
+
+/// The shipped dielectric table `i` (its values), read and checked once: the header must
+/// name this build's grid (see [`dielectric_table_bytes`]).
+fn shipped_dielectric(i: usize) -> Option<&'static [f32]> {
+    static DATA: [OnceLock<Option<Vec<f32>>>; 5] = [const { OnceLock::new() }; 5];
+    DATA[i]
+        .get_or_init(|| {
+            let b = SHIPPED_DIELECTRIC[i];
+            let header = dielectric_header();
+            let count = SHIP_ALPHA.2 * SHIPPED_ETAS.len() * 2 * DIELECTRIC_NODES;
+            if b.len() != header.len() + 4 * count || b[..header.len()] != header[..] {
+                return None;
+            }
+            Some(
+                b[header.len()..]
+                    .chunks_exact(4)
+                    .map(|c| f32::from_le_bytes([c[0], c[1], c[2], c[3]]))
+                    .collect(),
+            )
+        })
+        .as_deref()
+}
+
+/// The shipped dielectric files' header: "MFDIELE1", then n_α, n_η, n_μ (u32, little
+/// endian), α_min, α_max and the η values (f64, little endian).
+fn dielectric_header() -> Vec<u8> {
+    let mut b = b"MFDIELE1".to_vec();
+    for n in [SHIP_ALPHA.2, SHIPPED_ETAS.len(), DIELECTRIC_NODES] {
+        b.extend_from_slice(&(n as u32).to_le_bytes());
+    }
+    for x in [SHIP_ALPHA.0, SHIP_ALPHA.1].iter().chain(&SHIPPED_ETAS) {
+        b.extend_from_slice(&x.to_le_bytes());
+    }
+    b
+}
+
+/// The shipped dielectric file of NDF `kind` (GTR: γ), computed here on `threads` threads
+/// (about a minute of one core per NDF): the header ("MFDIELE1",
+/// n_α, n_η, n_μ as u32, α_min, α_max, the η values as f64, little endian), then E as f32
+/// little endian in the order (α_i, η_j, side, μ_k): α_i log-uniform on [α_min, α_max],
+/// side 0 from outside (η_j), 1 from inside (1/η_j), μ_k the 65 √μ nodes of a dielectric
+/// [`AlbedoTable`]; E the single-scattering interface's reflection plus transmission
+/// ([`crate::walk::single_scattering_albedo_dielectric`] at the rule's level 3, as
+/// [`DielectricTables::compute`]).
+pub fn dielectric_table_bytes(kind: NdfKind, gamma: Option<f64>, threads: usize) -> Vec<u8> {
+    use crate::distribution::Microfacet;
+    use crate::{Beckmann, DoubleGgx, Exponential, Ggx, Gtr};
+    let (a0, a1, na) = SHIP_ALPHA;
+    let alphas: Vec<f64> = (0..na)
+        .map(|i| (a0.ln() + (a1.ln() - a0.ln()) * i as f64 / (na - 1) as f64).exp())
+        .collect();
+    fn row<D: Distribution<f64>>(d: &D) -> Vec<f32> {
+        let mut out = Vec::new();
+        for eta in SHIPPED_ETAS {
+            let t = DielectricTables::compute(d, eta);
+            for side in [&t.outside, &t.inside] {
+                out.extend(side.e.iter().map(|&x| x as f32));
+            }
+        }
+        out
+    }
+    let one = |a: f64| -> Vec<f32> {
+        match kind {
+            NdfKind::Beckmann => row(&Microfacet::<f64, Beckmann>::new(a, a).unwrap()),
+            NdfKind::Ggx => row(&Microfacet::<f64, Ggx>::new(a, a).unwrap()),
+            NdfKind::DoubleGgx => row(&Microfacet::<f64, DoubleGgx>::new(a, a).unwrap()),
+            NdfKind::Exponential => row(&Microfacet::<f64, Exponential>::new(a, a).unwrap()),
+            NdfKind::Gtr => row(&Microfacet::<f64, Gtr>::gtr(a, a, gamma.unwrap_or(2.0)).unwrap()),
+        }
+    };
+    let threads = threads.max(1);
+    let mut rows: Vec<(usize, Vec<f32>)> = std::thread::scope(|scope| {
+        let handles: Vec<_> = (0..threads)
+            .map(|t| {
+                let (alphas, one) = (&alphas, &one);
+                scope.spawn(move || {
+                    (0..alphas.len())
+                        .filter(|i| i % threads == t)
+                        .map(|i| (i, one(alphas[i])))
+                        .collect::<Vec<_>>()
+                })
+            })
+            .collect();
+        handles
+            .into_iter()
+            .flat_map(|h| h.join().unwrap())
+            .collect()
+    });
+    rows.sort_by_key(|r| r.0);
+    let mut b = dielectric_header();
+    for v in rows.iter().flat_map(|r| &r.1) {
+        b.extend_from_slice(&v.to_le_bytes());
+    }
+    b
 }
 
 /// F_avg = 2∫F(μ)μ dμ of the dielectric Fresnel term at relative index η (from the side
@@ -534,9 +716,9 @@ pub struct CompensatedDielectric<D> {
 
 impl<D: Distribution<f64> + Clone> CompensatedDielectric<D> {
     /// The compensated interface of `dist` at relative index η (> 0), radiance transport,
-    /// its tables computed here ([`DielectricTables::compute`]).
+    /// its tables shipped or computed here ([`DielectricTables::new`]).
     pub fn new(dist: D, eta: f64, scheme: Scheme) -> Self {
-        let tables = DielectricTables::compute(&dist, eta);
+        let tables = DielectricTables::new(&dist, eta);
         Self::from_tables(dist, eta, scheme, tables)
     }
 
