@@ -1802,8 +1802,9 @@ fn compensated_contract() {
 /// Albedo tables (`table`): the binary reader on hostile bytes (a valid file truncated,
 /// with bytes flipped, counts inflated, random bytes) never panics and reads back only what
 /// it wrote; `Spec::validate` on hostile parameters answers Ok or a typed error; `value`
-/// outside the table is NaN; `AlbedoTable::shipped` on hostile α is `None` or a table of
-/// finite values in [0, 1].
+/// outside the table is NaN; `AlbedoTable::shipped` on hostile α and
+/// `DielectricTables::shipped` on hostile α and η are `None` or tables of finite values in
+/// [0, 1].
 #[test]
 fn table_contract() {
     use microfacet::compensate::AlbedoTable;
@@ -1901,6 +1902,33 @@ fn table_contract() {
                     .chain(&e[4..])
                     .all(|x| x.is_finite() && (-1e-3..=1.0 + 1e-3).contains(x)),
                 || format!("shipped table values {e:?} at {}", ctx()),
+            );
+        }
+        // The dielectric ones at a shipped index (or its reciprocal) or a hostile one.
+        let eta = r.pick(&[
+            1.5,
+            1.0 / 1.33,
+            2.42,
+            1.45,
+            0.0,
+            -1.5,
+            f64::NAN,
+            f64::INFINITY,
+        ]);
+        let t = no_panic("DielectricTables::shipped", ctx(), || {
+            microfacet::compensate::DielectricTables::shipped(kind, gamma, a, eta)
+        });
+        if let Some(t) = t {
+            let e = [
+                t.outside.e(0.3),
+                t.inside.e(0.3),
+                t.outside.e_avg(),
+                t.inside.e_avg(),
+            ];
+            fails.check(
+                e.iter()
+                    .all(|x| x.is_finite() && (-1e-3..=1.0 + 1e-3).contains(x)),
+                || format!("shipped dielectric values {e:?} at {} η={eta}", ctx()),
             );
         }
         evals(2);
