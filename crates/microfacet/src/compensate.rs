@@ -668,15 +668,23 @@ pub fn dielectric_table_bytes(kind: NdfKind, gamma: Option<f64>, threads: usize)
 }
 
 /// F_avg = 2∫F(μ)μ dμ of the dielectric Fresnel term at relative index η (from the side
-/// where the ray meets η), 8-point Gauss–Legendre on 64 intervals (the kink at the critical
-/// angle for η < 1 lies on a node boundary only by chance: 64 intervals keep its error
-/// below 1e-6).
+/// where the ray meets η). Below the critical angle (η < 1: μ < μc = √(1 − η²)) F = 1 and
+/// contributes μc²; above it μ = μc + (1 − μc)t² removes F's square-root edge at μc, and
+/// 8-point Gauss–Legendre on 32 intervals in t is exact to 1e-20 (against mpmath, η = 1.5,
+/// 1/1.5, 2.42, 1/2.42, 1/1.05; without the split the kink cost 2e-4).
 fn dielectric_f_avg(eta: f64) -> f64 {
-    let mut f_avg = 0.0;
-    for k in 0..64 {
+    let mc = if eta < 1.0 {
+        ((1.0 - eta) * (1.0 + eta)).sqrt()
+    } else {
+        0.0
+    };
+    let mut f_avg = mc * mc;
+    for k in 0..32 {
         for (x, w) in GL8 {
-            let mu = (k as f64 + x) / 64.0;
-            f_avg += 2.0 * w / 64.0 * crate::fresnel::dielectric(mu, eta) * mu;
+            let t = (k as f64 + x) / 32.0;
+            let mu = mc + (1.0 - mc) * t * t;
+            f_avg +=
+                2.0 * w / 32.0 * crate::fresnel::dielectric(mu, eta) * mu * (1.0 - mc) * 2.0 * t;
         }
     }
     f_avg
@@ -769,8 +777,8 @@ impl<D: Distribution<f64> + Clone> CompensatedDielectric<D> {
         }
     }
 
-    /// Kulla–Conty's added f (both lobes) for wo on side `s` and wi, and η' of a
-    /// transmission.
+    /// Kulla–Conty's added f(wo, wi): the reflected lobe of wo's side, or the transmitted one
+    /// (divided by η'² for radiance transport).
     fn f_ms(&self, wo: [f64; 3], wi: [f64; 3]) -> f64 {
         let (mo, mi) = (wo[2].abs(), wi[2].abs());
         if !(mo > 0.0 && mi > 0.0) {
@@ -894,6 +902,33 @@ impl<D: Distribution<f64> + Clone> Bsdf<f64> for CompensatedDielectric<D> {
                     },
                 })
             }
+        }
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::dielectric_f_avg;
+
+    /// The hemispherical Fresnel average against the reciprocity of the averaged
+    /// transmittance, 1 − F_avg(1/η) = (1 − F_avg(η))/η² (the kink at the critical angle
+    /// is on the 1/η side), and against values integrated with mpmath (30 digits).
+    #[test]
+    fn fresnel_average() {
+        for eta in [1.05, 1.33, 1.5, 2.42, 3.0] {
+            let (out, inside) = (dielectric_f_avg(eta), dielectric_f_avg(1.0 / eta));
+            assert!(
+                ((1.0 - inside) - (1.0 - out) / (eta * eta)).abs() < 1e-14,
+                "η={eta}: {out} {inside}"
+            );
+        }
+        for (eta, want) in [
+            (1.5, 0.091_777_959_342_351_21),
+            (1.0 / 1.5, 0.596_345_759_707_711_8),
+            (2.42, 0.212_540_794_738_842_13),
+            (1.0 / 2.42, 0.865_538_691_813_886),
+        ] {
+            assert!((dielectric_f_avg(eta) - want).abs() < 1e-15, "η={eta}");
         }
     }
 }
