@@ -504,7 +504,7 @@ fn sampling_matches_evaluation() {
 /// The stream samplers of visible normals (`Distribution::sample_wm_stream`, which the walk
 /// uses instead of the warps and of its rejection from the mirror image; GGX, Beckmann,
 /// Double GGX): χ² against max(0, v·m) D(m)/σ(v), σ = |v.z| Λ(v) below and v.z(1 + Λ(v))
-/// above; below isotropic and anisotropic, 45° to grazing (Beckmann's two envelopes both),
+/// above; below isotropic and anisotropic, 45° and 89° (Beckmann's two envelopes both),
 /// above anisotropic at normal incidence, 30° and 80°; every sample a unit normal with
 /// m.z > 0 and v·m > 0; the NDFs without one answer `None`.
 #[test]
@@ -515,7 +515,7 @@ fn visible_normals_from_a_stream() {
         let reference = Exact::new(NdfKind::Ggx, 1.5 * ax, 1.5 * ay, None).unwrap();
         let mut rng = SplitMix64(kind as u64);
         let above: &[f64] = if ax == ay { &[] } else { &[0.0, 30.0, 80.0] };
-        let below = [45.0f64, 80.0, 89.0].map(|d| -d);
+        let below = [45.0f64, 89.0].map(|d| -d);
         for &deg in above.iter().chain(&below) {
             let (s, c) = deg.abs().to_radians().sin_cos();
             let v = [s * 0.8, s * 0.6, c * deg.signum()];
@@ -547,7 +547,7 @@ fn visible_normals_from_a_stream() {
             );
         }
     }
-    let level = sidak(0.01, 3 * (2 * 3 + 3));
+    let level = sidak(0.01, 3 * (2 * 2 + 3));
     for &(ax, ay) in &[(0.4, 0.4), (0.8, 0.2)] {
         check(
             "GGX",
