@@ -208,7 +208,7 @@ fn dielectric_furnace_plot() -> Plot {
         "R + T (importance)",
     )
     .caption(
-        "The energy a rough dielectric interface keeps (reflected plus transmitted,          importance transport): single scattering (dashed; by quadrature over the microfacet          normal), and compensated with Kulla & Conty's two-sided lobes (circles: the single          scattering plus the added lobes, integrated) and with Turquin's 1/E (crosses),          every NDF. From inside, total internal reflection sends more light back into the          rough interface, so single scattering loses more there. Compensated, every NDF          keeps 1 within the tables' interpolation error (tests hold it to 1e-3; measured          ≤ 1.8e-4).",
+        "The energy a rough dielectric interface keeps (reflected plus transmitted,          importance transport): single scattering (dashed; by quadrature over the microfacet          normal), and compensated with Kulla & Conty's two-sided lobes (circles: the single          scattering plus the added lobes, integrated) and with Turquin's 1/E (crosses),          every NDF. From inside, total internal reflection sends more light back into the          rough interface, so single scattering loses more there. Compensated, every NDF          keeps 1 within the tables' interpolation error (tests hold it to 1e-3; measured          ≤ 1.9e-4).",
     );
     for (k, kind) in NdfKind::ALL.into_iter().enumerate() {
         let (before, kc, tq) = with_ndf!(kind, 1.0, GAMMA, |d| {
