@@ -133,15 +133,7 @@ impl AlbedoTable {
     /// the range) or if a shipped file does not read (never, tests/compensate.rs reads
     /// them all).
     pub fn shipped(kind: NdfKind, gamma: Option<f64>, alpha: f64) -> Option<Self> {
-        let file = match (kind, gamma) {
-            (NdfKind::Gtr, Some(2.0)) => 1,
-            (NdfKind::Gtr, Some(1.0)) => 4,
-            (NdfKind::Gtr, _) => return None,
-            (NdfKind::Ggx, _) => 1,
-            (NdfKind::Beckmann, _) => 0,
-            (NdfKind::DoubleGgx, _) => 2,
-            (NdfKind::Exponential, _) => 3,
-        };
+        let file = shipped_file(kind, gamma)?;
         let grid = shipped_grid(file)?;
         let la = alpha.ln();
         let nodes = &grid.spec.alpha;
@@ -206,6 +198,21 @@ impl AlbedoTable {
         let n = self.e.len();
         lagrange4(s.clamp(0.0, 1.0) * (n - 1) as f64, n, |j| self.e[j])
     }
+}
+
+/// Which shipped file (of Beckmann, GGX, Double GGX, Exponential, GTR γ = 1) holds the
+/// material `kind` (GTR: γ), in both the conductor's and the dielectric's lists; GTR at
+/// γ = 2 is GGX; `None` for other γ.
+fn shipped_file(kind: NdfKind, gamma: Option<f64>) -> Option<usize> {
+    Some(match (kind, gamma) {
+        (NdfKind::Gtr, Some(2.0)) => 1,
+        (NdfKind::Gtr, Some(1.0)) => 4,
+        (NdfKind::Gtr, _) => return None,
+        (NdfKind::Ggx, _) => 1,
+        (NdfKind::Beckmann, _) => 0,
+        (NdfKind::DoubleGgx, _) => 2,
+        (NdfKind::Exponential, _) => 3,
+    })
 }
 
 /// μ at node k of n: s² for s = k/(n − 1), the grazing node at μ = 1e-6 (the albedo's
@@ -471,15 +478,7 @@ impl DielectricTables {
     /// within 2e-4 between them (1.7e-4 measured for GGX and Beckmann at α = 2.9, seen from
     /// inside at grazing μ; 1e-5 or less at α ≤ 0.6; tests/compensate.rs).
     pub fn shipped(kind: NdfKind, gamma: Option<f64>, alpha: f64, eta: f64) -> Option<Self> {
-        let file = match (kind, gamma) {
-            (NdfKind::Gtr, Some(2.0)) => 1,
-            (NdfKind::Gtr, Some(1.0)) => 4,
-            (NdfKind::Gtr, _) => return None,
-            (NdfKind::Ggx, _) => 1,
-            (NdfKind::Beckmann, _) => 0,
-            (NdfKind::DoubleGgx, _) => 2,
-            (NdfKind::Exponential, _) => 3,
-        };
+        let file = shipped_file(kind, gamma)?;
         // (A relative 1e-12 of slack: an η written with its digits.)
         let matches = |x: f64| (x - eta).abs() <= 1e-12 * x;
         let (je, flip) = match SHIPPED_ETAS.iter().position(|&x| matches(x)) {
