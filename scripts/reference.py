@@ -14,6 +14,7 @@ Needs: pip install mpmath  (runs in a few minutes on 2 cores)
 import json
 import sys
 from mpmath import mp, mpf, sqrt, exp, pi, log, expm1, hyp2f1, besselk, struvel, hyperu, e1, quad, inf, acos, erfc, gamma as G
+from mpmath import expint, betainc, gammainc, cosh, sinh, tanh, acosh
 
 mp.dps = 30
 
@@ -68,8 +69,150 @@ def make(ndf, a, g=None):
         def P2(p):
             z = (1 - a**2) / (1 + p**2)
             return pi * c / 2 * (1 + p**2) ** (g - 2) * (a**2 + p**2) ** (mpf(1) / 2 - g) * hyp2f1(mpf(1) / 2, 2 - g, 2, z)
+    elif ndf in FAMILY:
+        P, P2 = FAMILY[ndf](a, g)
     D = lambda u: P(sqrt(1 - u**2) / u) / u**4 if u > 0 else mpf(0)
     return D, P, P2
+
+
+# ---- the rest of the book's family (the NDF pages of the Hitchhiker's Guide; definitions in
+# the conventions of the crate: P(r) radial P22, P2 marginal, Q the D.cos radial CCDF) ----
+def student_t(a, g):
+    c = a**2 * (g - 1)
+    k = G(g - mpf(1) / 2) / (sqrt(pi) * G(g - 1) * sqrt(c))
+    return (lambda r: (1 + r**2 / c) ** (-g) / (pi * a**2),
+            lambda p: k * (1 + p**2 / c) ** (mpf(1) / 2 - g))
+
+
+def ei_ndf(a, g):
+    return (lambda r: e1(r**2 / a**2) / (pi * a**2) if r > 0 else mpf(inf),
+            lambda p: expint(mpf(3) / 2, p**2 / a**2) / (sqrt(pi) * a))
+
+
+def erfc_ndf(a, g):
+    # (past r/alpha = 1e4 the value is below 1e-4e7: zero for every purpose here, and
+    # mpmath's erfc overflows a float in its series check)
+    return (lambda r: (erfc(r / a) / (2 * sqrt(pi) * a * r) if r < 10000 * a else mpf(0)) if r > 0 else mpf(inf),
+            lambda p: e1(p**2 / a**2) / (2 * sqrt(pi) * a) if p != 0 else mpf(inf))
+
+
+def k0_ndf(a, g):
+    return (lambda r: 2 * besselk(0, 2 * r / a) / (pi * a**2) if r > 0 else mpf(inf),
+            lambda p: exp(-2 * abs(p) / a) / a)
+
+
+def bessel_k(a, nu):
+    def P(r):
+        if r == 0:
+            return 1 / (pi * a**2 * (nu - 1)) if nu > 1 else mpf(inf)
+        x = r / a
+        return 2 / (pi * a**2 * G(nu)) * x ** (nu - 1) * besselk(nu - 1, 2 * x)
+    def P2(p):
+        if p == 0:
+            return G(nu - mpf(1) / 2) / (sqrt(pi) * a * G(nu)) if nu > mpf(1) / 2 else mpf(inf)
+        x = abs(p) / a
+        return 2 * x ** (nu - mpf(1) / 2) * besselk(nu - mpf(1) / 2, 2 * x) / (sqrt(pi) * a * G(nu))
+    return P, P2
+
+
+def gen_exponential(a, g):
+    norm = pi * a**2 * G(1 + 2 / g)
+    P = lambda r: exp(-((r / a) ** g)) / norm
+    def P2(p):
+        if p == 0:
+            return 2 * G(1 + 1 / g) / (pi * a * G(1 + 2 / g))
+        p = abs(p)
+        pts = [mpf(0)]
+        if p < a:
+            pts.append(sqrt(a**2 - p**2))
+        edge = pts[-1]
+        # the tail: out to where (r/a)^g reaches ~100 digits of decay, in steps of 2
+        far = a * mpf(300) ** (1 / g)
+        s = a / (16 * g)
+        while edge + s < far:
+            pts.append(edge + s)
+            s *= 2
+        return 2 * quad(lambda q: P(sqrt(p**2 + q**2)), pts + [inf])
+    return P, P2
+
+
+FAMILY = {"student_t": student_t, "ei": ei_ndf, "erfc": erfc_ndf, "k0": k0_ndf,
+          "bessel_k": bessel_k, "gen_exponential": gen_exponential}
+
+
+def q_family(ndf, a, g, T):
+    """Q(T) = P(tan theta_m > T) under D cos (the radial CCDF), closed forms (derived in the
+    family's notes; each checked here against the radial integral of P22)."""
+    if ndf == "student_t":
+        return (1 + T**2 / (a**2 * (g - 1))) ** (1 - g)
+    y = T**2 / a**2
+    if ndf == "ei":
+        return expint(2, y)
+    if ndf == "erfc":
+        t = T / a
+        if t > 10000:
+            return mpf(0)  # below 1e-4e7 (and mpmath's erfc overflows a float there)
+        with mp.workdps(mp.dps + 20 + int(2 * mp.log10(1 + t))):
+            return +(exp(-t * t) - sqrt(pi) * t * erfc(t))
+    if ndf == "k0":
+        z = 2 * T / a
+        return z * besselk(1, z)
+    if ndf == "bessel_k":
+        x = T / a
+        return 2 * x**g * besselk(g, 2 * x) / G(g)
+    if ndf == "gen_exponential":
+        return gammainc(2 / g, (T / a) ** g, inf, regularized=True)
+
+
+def lambda_beckmann(x):
+    """Beckmann's Lambda at x = cot(theta)/beta, with guard digits for its cancellation."""
+    # (the two terms cancel to relative O(1/x^2): erfc is computed to full relative
+    # precision however small, so 2 log10(x) guard digits suffice)
+    with mp.workdps(mp.dps + 20 + int(2 * mp.log10(1 + x))):
+        return +((exp(-x * x) / (x * sqrt(pi)) - erfc(x)) / 2)
+
+
+def lambda_mixture(ndf, a, g, u):
+    """Lambda as the mixture average of Beckmann's Lambda over the mixing variable m
+    (Student-T: m ~ Gamma(g-1), beta = a sqrt((g-1)/m); Ei: m ~ U(0,1), beta = a sqrt(m);
+    Erfc: beta = a m; K0: m ~ Exp(1), beta = a sqrt(m); Bessel-K: m ~ Gamma(g)), or None for
+    the generalised exponential (not a mixture for gamma > 2)."""
+    b = u / sqrt(1 - u**2)
+    if ndf in ("ei", "erfc"):
+        beta = (lambda m: a * sqrt(m)) if ndf == "ei" else (lambda m: a * m)
+        f = lambda m: lambda_beckmann(b / beta(m))
+        return quad(f, [mpf(0)] + [1 - mpf(2) ** -k for k in range(1, 30)] + [mpf(1)])
+    if ndf == "student_t":
+        k, beta = g - 1, (lambda m: a * sqrt((g - 1) / m))
+    elif ndf == "k0":
+        k, beta = mpf(1), (lambda m: a * sqrt(m))
+    elif ndf == "bessel_k":
+        k, beta = g, (lambda m: a * sqrt(m))
+    else:
+        return None
+    f = lambda m: m ** (k - 1) * exp(-m) / G(k) * lambda_beckmann(b / beta(m)) if m > 0 else mpf(0)
+    # breakpoints: a geometric grid (ratio 2) around the weight's bulk and the integrand's peak
+    pts = sorted(set([mpf(0)] + [k * mpf(2) ** j for j in range(-40, 12)] + [inf]))
+    return quad(f, pts)
+
+
+def lambda_ccdf(ndf, a, g, u):
+    """Lambda(u) = (1/pi) int_0^inf Q(mu cosh s) sinh s tanh s ds (the CCDF route), with a
+    breakpoint where mu cosh s = a."""
+    mu = u / sqrt(1 - u**2)
+    f = lambda s: q_family(ndf, a, g, mu * cosh(s)) * sinh(s) * tanh(s)
+    pts = [mpf(0)]
+    if mu < a:
+        pts.append(acosh(a / mu))
+    e = pts[-1]
+    # a finite upper end where the integrand has fallen below 1e-45 of its value at the
+    # edge (the Bessel functions of huge arguments are slow in mpmath)
+    ref = abs(f(e + mpf(1) / 8))
+    top = e + 1
+    while abs(f(top)) > mpf("1e-45") * ref and top < e + 2000:
+        top = e + 2 * (top - e)
+    pts += [x for x in [e + mpf(2) ** k / 8 for k in range(0, 14)] if x < top] + [top]
+    return quad(f, pts) / pi
 
 
 def lambda_closed(ndf, a, g, u):
@@ -97,6 +240,39 @@ def lambda_closed(ndf, a, g, u):
         with mp.workdps(mp.dps + 30 + int(z / mp.log(10))):
             ki1 = pi / 2 - pi * z / 2 * (besselk(0, z) * struvel(-1, z) + besselk(1, z) * struvel(0, z))
             return +((2 * besselk(1, z) - ki1) / pi)
+    if ndf == "student_t":
+        if g <= mpf(3) / 2:
+            return mpf(inf)
+        with mp.workdps(mp.dps + 20 + int(mp.log10(g))):
+            c = a**2 * (g - 1)
+            z = b / sqrt(c)
+            z0 = 1 / (1 + z * z)
+            k = G(g - mpf(1) / 2) / (sqrt(pi) * G(g - 1))
+            return +(k * z0 ** (g - 1) * sqrt(1 + z * z) / ((2 * g - 3) * z)
+                     - betainc(g - 1, mpf(1) / 2, 0, z0, regularized=True) / 2)
+    if ndf in ("ei", "erfc"):
+        x = b / a
+        if x > 28:
+            return mpf(0)  # Lambda < e^-784: below the f64 range, the record is skipped
+        with mp.workdps(mp.dps + 20 + int(4 * mp.log10(1 + x))):
+            if ndf == "ei":
+                return +(exp(-x * x) * (1 + x * x) / (3 * sqrt(pi) * x) - (3 + 2 * x * x) * erfc(x) / 6)
+            return +((-2 * erfc(x) + (exp(-x * x) + x * x * e1(x * x)) / (sqrt(pi) * x)) / 4)
+    if ndf == "k0":
+        x = b / a
+        return exp(-2 * x) / (4 * x)
+    if ndf == "bessel_k":
+        # 2^(1/2-a)/(sqrt(pi) Gamma(a)) [z^(a-1/2) K_(a+1/2)(z) - Ki_(a-1/2)(z)], z = 2 cot/alpha,
+        # Ki_nu(z) = 2^(nu-1) sqrt(pi) Gamma(nu+1/2) (1 - z [K_nu L_(nu-1) + L_nu K_(nu-1)]);
+        # the Struve form cancels like e^-z: z/ln 10 guard digits.
+        z = 2 * b / a
+        if z > 1500:
+            return mpf(0)
+        with mp.workdps(mp.dps + 30 + int(z / mp.log(10))):
+            nu = g - mpf(1) / 2
+            ki = 2 ** (nu - 1) * sqrt(pi) * G(nu + mpf(1) / 2) * (
+                1 - z * (besselk(nu, z) * struvel(nu - 1, z) + struvel(nu, z) * besselk(nu - 1, z)))
+            return +(2 ** (mpf(1) / 2 - g) / (sqrt(pi) * G(g)) * (z ** (g - mpf(1) / 2) * besselk(g + mpf(1) / 2, z) - ki))
     if ndf == "gtr" and g == 1:
         with mp.workdps(mp.dps + 60):
             s = sqrt(1 + (1 / u**2 - 1) * a**2)
@@ -170,6 +346,18 @@ def main():
     for g in ["1", "2"]:
         for a in near_one:
             cases.append(("gtr", dec(a), dec(g)))
+    for g in ["1.6", "2.5", "5", "30", "10000"]:
+        for a in ["0.03", "0.4", "2.5"]:
+            cases.append(("student_t", dec(a), dec(g)))
+    for ndf in ["ei", "erfc", "k0"]:
+        for a in alphas:
+            cases.append((ndf, dec(a), None))
+    for g in ["0.1", "0.4", "1.7", "4", "100"]:
+        for a in ["0.03", "0.4", "2.5"]:
+            cases.append(("bessel_k", dec(a), dec(g)))
+    for g in ["0.1", "0.5", "1.5", "3", "7", "20"]:
+        for a in ["0.03", "0.4", "2.5"]:
+            cases.append(("gen_exponential", dec(a), dec(g)))
     only = sys.argv[1:]
     for ndf, a, g in cases:
         if only and ndf not in only:
@@ -181,14 +369,23 @@ def main():
             if D(u) != 0 and not mp.isfinite(D(u)):
                 raise SystemExit("bad D")
             # Lambda by two routes; skip where it underflows double precision entirely
-            l1 = lambda_smith(P2, u, a)
             closed = lambda_closed(ndf, a, g, u)
             m = {}
+            if closed is not None and closed == 0:
+                continue  # underflows double precision entirely: nothing to test
             if closed is not None:
                 m["closed form"] = closed
-            m["Smith integral over P2"] = l1
+            if ndf != "gen_exponential":  # (its P2 is itself a quadrature)
+                m["Smith integral over P2"] = lambda_smith(P2, u, a)
             m["delta integral sigma(-u)/u over D"] = lambda_delta(D, u, a)
+            if ndf in FAMILY:
+                m["CCDF integral"] = lambda_ccdf(ndf, a, g, u)
+                mix = lambda_mixture(ndf, a, g, u)
+                if mix is not None:
+                    m["Beckmann mixture"] = mix
             l1 = list(m.values())[0]
+            if not mp.isfinite(l1):
+                continue
             if abs(l1) < mpf("1e-300"):
                 continue  # below the f64 range: nothing to test
             r = rec(ndf, a, g, "Lambda", l1, m, u=u)
@@ -199,9 +396,20 @@ def main():
             out.append(rec(ndf, a, g, "G1", 1 / (1 + l1), {"1/(1+Lambda)": 1 / (1 + l1)}, u=u))
             out.append(rec(ndf, a, g, "sigma", u * (1 + l1), {"u(1+Lambda)": u * (1 + l1)}, u=u))
             out.append(rec(ndf, a, g, "sigma", u * l1, {"u Lambda": u * l1}, u=-u))
+        if ndf in FAMILY:
+            for ts_ in ["0.001", "0.2", "1", "4", "30"]:
+                t = dec(ts_) * a
+                v = q_family(ndf, a, g, t)
+                if abs(v) < mpf("1e-300"):
+                    continue
+                # the radial integral of 2 pi r P22 from T to infinity (breakpoints at T + a 2^k)
+                rad = quad(lambda r: 2 * pi * r * P(r), [t] + [t + a * mpf(2) ** k / 64 for k in range(0, 24)] + [inf])
+                out.append(rec(ndf, a, g, "Q", v, {"closed form": v, "radial integral of P22": rad}, T=t))
         for ps_ in ps:
             p = dec(ps_)
             v = P2(p)
+            if not mp.isfinite(v):
+                continue  # P2(0) = inf (Erfc; Bessel-K a <= 1/2): tested in the unit tests
             m = {"closed form": v, "integral of P22 dq": 2 * quad(lambda q: P(sqrt(p**2 + q**2)), breaks(0, a / 16))}
             out.append(rec(ndf, a, g, "P2", v, m, p=p))
             q = dec("0.25")

@@ -440,7 +440,7 @@ fn main() {
             time(vcalls, |k| {
                 let n = ndf(k);
                 let a = n.alpha();
-                Exact::new(n.kind(), a, a, n.gamma())
+                Exact::new(n.kind(), a, a, n.shape())
                     .unwrap()
                     .sample_wm(i.w[k].into(), black_box(i.xi[k]))[2]
             }),

@@ -17,8 +17,8 @@ pub fn run(args: &[String]) -> Result<ExitCode, String> {
     crate::eval::json_lines("albedo", args, albedo_line)
 }
 
-const FIELDS: [&str; 12] = [
-    "ndf", "alpha", "gamma", "material", "eta", "k", "rho", "mu", "walks", "seed", "method",
+const FIELDS: [&str; 13] = [
+    "ndf", "alpha", "gamma", "a", "material", "eta", "k", "rho", "mu", "walks", "seed", "method",
     "heights",
 ];
 
@@ -38,7 +38,7 @@ enum Facets {
 /// `$body` with `$d` bound to the f64 `Microfacet` of `$kind` at (αx, αy) (GTR's γ from the
 /// request), or the line's error.
 macro_rules! with_material {
-    ($obj:expr, $kind:expr, $ax:expr, $ay:expr, |$d:ident| $body:expr) => {{
+    ($shape:expr, $kind:expr, $ax:expr, $ay:expr, |$d:ident| $body:expr) => {{
         let err = |e: microfacet::ParamError| e.to_string();
         match $kind {
             NdfKind::Ggx => {
@@ -58,8 +58,13 @@ macro_rules! with_material {
                 $body
             }
             NdfKind::Gtr => {
-                let $d =
-                    Microfacet::<f64, Gtr>::gtr($ax, $ay, field($obj, "gamma")?).map_err(err)?;
+                let $d = Microfacet::<f64, Gtr>::gtr($ax, $ay, $shape.unwrap_or(f64::NAN))
+                    .map_err(err)?;
+                $body
+            }
+            // The rest of the family: the exact path.
+            kind => {
+                let $d = microfacet::Exact::new(kind, $ax, $ay, $shape).map_err(err)?;
                 $body
             }
         }
@@ -70,7 +75,7 @@ fn albedo_line(text: &str) -> Result<Value, String> {
     let v: Value = serde_json::from_str(text).map_err(|e| format!("not valid JSON: {e}"))?;
     let obj = v.as_object().ok_or("expected a JSON object")?;
     crate::eval::known_fields(obj, &FIELDS)?;
-    let (kind, ax, ay) = ndf_alpha(obj)?;
+    let (kind, ax, ay, shape) = ndf_alpha(obj)?;
     let mu = field(obj, "mu")?;
     if !(mu != 0.0 && mu.abs() <= 1.0) {
         return Err(format!(
@@ -128,12 +133,12 @@ fn albedo_line(text: &str) -> Result<Value, String> {
     if quadrature {
         return match facets {
             Facets::Mirror(None) => {
-                let e1 = with_material!(obj, kind, ax, ay, |d| single_scattering_albedo(&d, wo));
+                let e1 = with_material!(shape, kind, ax, ay, |d| single_scattering_albedo(&d, wo));
                 Ok(json!({ "e1": e1 }))
             }
             Facets::Dielectric(eta) => {
                 // (The exact height-correlated G2: the walk's order 1.)
-                let (r, t) = with_material!(obj, kind, ax, ay, |d| {
+                let (r, t) = with_material!(shape, kind, ax, ay, |d| {
                     single_scattering_albedo_dielectric_level(&d, wo, eta, G2Form::Exact, 4)
                 });
                 Ok(json!({ "reflect": { "e1": r }, "transmit": { "e1": t } }))
@@ -158,7 +163,7 @@ fn albedo_line(text: &str) -> Result<Value, String> {
     } else {
         0
     };
-    let a = with_material!(obj, kind, ax, ay, |d| {
+    let a = with_material!(shape, kind, ax, ay, |d| {
         run_walks(d, heights, &facets, wo, walks as u64, seed)
     });
     let by_order = |b: &ByOrder| {

@@ -16,8 +16,8 @@ pub fn run(args: &[String]) -> Result<ExitCode, String> {
     crate::eval::json_lines("bsdf", args, |text| bsdf_line(text, &mut cache))
 }
 
-const FIELDS: [&str; 13] = [
-    "bsdf", "ndf", "alpha", "gamma", "eta", "k", "g2", "op", "wo", "wi", "u", "samples", "seed",
+const FIELDS: [&str; 14] = [
+    "bsdf", "ndf", "alpha", "gamma", "a", "eta", "k", "g2", "op", "wo", "wi", "u", "samples", "seed",
 ];
 
 /// Samples per eval_ms line at most (10⁹: minutes; a typo's 10²⁰ is an error, not a hang).
@@ -32,7 +32,7 @@ fn bsdf_line(
     let obj = v.as_object().ok_or("expected a JSON object")?;
     crate::eval::known_fields(obj, &FIELDS)?;
     let req = Request::parse(obj)?;
-    let (kind, ax, ay) = ndf_alpha(obj)?;
+    let (kind, ax, ay, shape) = ndf_alpha(obj)?;
     let err = |e: microfacet::ParamError| e.to_string();
     match kind {
         NdfKind::Ggx => req.answer(Microfacet::<f64, Ggx>::new(ax, ay).map_err(err)?),
@@ -42,7 +42,7 @@ fn bsdf_line(
             req.answer(Microfacet::<f64, Exponential>::new(ax, ay).map_err(err)?)
         }
         NdfKind::Gtr => {
-            let gamma = field(obj, "gamma")?;
+            let gamma = shape.unwrap_or(f64::NAN);
             let m = match cache {
                 Some((a, b, g, m)) if (*a, *b, *g) == (ax, ay, gamma) => m.clone(),
                 _ => {
@@ -53,19 +53,22 @@ fn bsdf_line(
             };
             req.answer(m)
         }
+        // The rest of the family: the exact path.
+        _ => req.answer(microfacet::Exact::new(kind, ax, ay, shape).map_err(err)?),
     }
 }
 
-/// The request's "ndf" (with "gamma" for gtr only) and "alpha" (a or [ax, ay]).
-pub(crate) fn ndf_alpha(obj: &Map<String, Value>) -> Result<(NdfKind, f64, f64), String> {
+/// The request's "ndf", "alpha" (a or [ax, ay]) and shape parameter ("gamma" for gtr,
+/// student_t and gen_exponential, "a" for bessel_k).
+pub(crate) fn ndf_alpha(
+    obj: &Map<String, Value>,
+) -> Result<(NdfKind, f64, f64, Option<f64>), String> {
     let kind: NdfKind = string(obj, "ndf")?
         .parse()
         .map_err(|e: microfacet::family::UnknownNdf| e.to_string())?;
-    if kind != NdfKind::Gtr && obj.contains_key("gamma") {
-        return Err("field 'gamma' is for ndf gtr only".into());
-    }
+    let shape = crate::eval::shape(obj, kind)?;
     let (ax, ay) = alpha(obj)?;
-    Ok((kind, ax, ay))
+    Ok((kind, ax, ay, shape))
 }
 
 fn string<'a>(obj: &'a Map<String, Value>, name: &str) -> Result<&'a str, String> {

@@ -59,7 +59,7 @@ pub fn json_lines(
     })
 }
 
-/// The fields a request may have besides ndf, alpha, gamma (gtr) and quantity.
+/// The fields a request may have besides ndf, alpha, the shape (gamma or a) and quantity.
 fn arguments(quantity: &str) -> Option<&'static [&'static str]> {
     Some(match quantity {
         "d" | "sigma" | "lambda" | "g1" => &["u"],
@@ -81,6 +81,62 @@ pub fn known_fields(obj: &Map<String, Value>, fields: &[&str]) -> Result<(), Str
         )),
         None => Ok(()),
     }
+}
+
+/// The request's shape parameter, for the kinds that have one ([`NdfKind::shape_name`]):
+/// "gamma" (gtr, student_t, gen_exponential) or "a" (bessel_k); a shape field on a kind
+/// without it is an error.
+pub fn shape(obj: &Map<String, Value>, kind: NdfKind) -> Result<Option<f64>, String> {
+    for key in ["gamma", "a"] {
+        if obj.contains_key(key) && kind.shape_name() != Some(key) {
+            return Err(format!(
+                "field '{key}' is not a parameter of ndf {kind} ({})",
+                if key == "gamma" {
+                    "gamma is for gtr, student_t and gen_exponential"
+                } else {
+                    "a is for bessel_k"
+                }
+            ));
+        }
+    }
+    match kind.shape_name() {
+        Some(name) => Ok(Some(field(obj, name)?)),
+        None => Ok(None),
+    }
+}
+
+/// The shape parameter from a command line's `--gamma` / `--a` for `kind`: required where
+/// the kind has one ([`NdfKind::shape_name`]), an error where it has not.
+pub fn shape_from_flags(
+    kind: NdfKind,
+    gamma: Option<f64>,
+    a: Option<f64>,
+) -> Result<Option<f64>, String> {
+    let (want, other) = match kind.shape_name() {
+        Some("a") => (a, gamma.map(|_| "--gamma")),
+        Some(_) => (gamma, a.map(|_| "--a")),
+        None => {
+            return match (gamma, a) {
+                (None, None) => Ok(None),
+                (Some(_), _) => Err(format!(
+                    "--gamma applies to gtr, student_t and gen_exponential only, not {kind}"
+                )),
+                _ => Err(format!("--a applies to bessel_k only, not {kind}")),
+            }
+        }
+    };
+    if let Some(flag) = other {
+        return Err(format!(
+            "{flag} does not apply to {kind} (its shape is --{})",
+            kind.shape_name().unwrap_or("")
+        ));
+    }
+    want.map(Some).ok_or_else(|| {
+        format!(
+            "--{} is required for {kind}",
+            kind.shape_name().unwrap_or("")
+        )
+    })
 }
 
 pub fn field(obj: &Map<String, Value>, name: &str) -> Result<f64, String> {
@@ -118,10 +174,7 @@ pub fn eval_line(line: &str) -> Result<f64, String> {
         .parse()
         .map_err(|e: microfacet::family::UnknownNdf| e.to_string())?;
     let alpha = field(obj, "alpha")?;
-    let gamma = match kind {
-        NdfKind::Gtr => Some(field(obj, "gamma")?),
-        _ => None,
-    };
+    let gamma = shape(obj, kind)?;
     let ndf = AnyNdf::new(kind, alpha, gamma).map_err(|e| e.to_string())?;
     let quantity = obj
         .get("quantity")
@@ -137,13 +190,13 @@ pub fn eval_line(line: &str) -> Result<f64, String> {
     // Every other field is an error (an `alpha_y` would otherwise be ignored silently).
     for key in obj.keys() {
         let known = matches!(key.as_str(), "ndf" | "alpha" | "quantity")
-            || (key == "gamma" && kind == NdfKind::Gtr)
+            || Some(key.as_str()) == kind.shape_name()
             || args.contains(&key.as_str());
         if !known {
             return Err(format!(
                 "unknown field '{}' for {name} {quantity} (expected ndf, alpha{}, quantity, {})",
                 crate::clip(key),
-                if kind == NdfKind::Gtr { ", gamma" } else { "" },
+                kind.shape_name().map(|n| format!(", {n}")).unwrap_or_default(),
                 args.join(", ")
             ));
         }

@@ -19,7 +19,8 @@ const VERIFY_USAGE: &str = "\
       check every identity of the source pages by numerical integration;
       one line per check (PASS/FAIL, residual); exit 1 if any fails.
       LIST is comma-separated, e.g. --ndf ggx,gtr --alpha 0.1,0.5 --gamma 1,1.5
-      (--gamma applies to gtr, and needs gtr among the NDFs)
+      (--gamma sets the γ of gtr, student_t and gen_exponential, --a the a of bessel_k;
+      each needs such an NDF among --ndf; default shapes otherwise)
 ";
 
 const EVAL_USAGE: &str = "\
@@ -27,18 +28,20 @@ const EVAL_USAGE: &str = "\
       JSON lines in, JSON lines out, in order, e.g.
       {\"ndf\":\"gtr\",\"alpha\":0.3,\"gamma\":1.5,\"quantity\":\"lambda\",\"u\":0.5} -> {\"value\":...}
       quantities: d, sigma, lambda, g1 (u); p22 (p, q); p2 (p); f (x); g2 (u_o, u_i)
-      (gamma for gtr only; any other field is an error). u ∈ [-1, 1]: for u < 0,
+      (shape: \"gamma\" for gtr, student_t, gen_exponential, \"a\" for bessel_k;
+      any other field is an error). u ∈ [-1, 1]: for u < 0,
       sigma is the projected area seen from below, lambda is Heitz's extension
       -1 - lambda(-u), and g1, g2 use |u|. A bad line gets {\"error\": ...} and the
       run goes on (exit 1 at the end); empty lines are skipped.
 ";
 
 const SAMPLE_USAGE: &str = "\
-  microfacet sample --ndf NAME --alpha A [--alpha-y AY] [--gamma G] [--mode dcos|visible]
+  microfacet sample --ndf NAME --alpha A [--alpha-y AY] [--gamma G | --a A] [--mode dcos|visible]
                     [--wi X,Y,Z] [--n N] [--seed S]
       write N sampled normals (default 100000), one `x y z` per line; D·cos (default)
       or visible normals for the incident direction --wi (visible mode only; any
-      finite nonzero vector, normalised; default 0,0,1). --gamma: gtr only, required.
+      finite nonzero vector, normalised; default 0,0,1). --gamma: required for gtr,
+      student_t, gen_exponential; --a: required for bessel_k.
 ";
 
 const BSDF_USAGE: &str = "\
@@ -51,7 +54,8 @@ const BSDF_USAGE: &str = "\
         -> {\"f\":[r,g,b],\"pdf\":p}
       op sample takes \"u\":[uc,u0,u1] in [0,1) instead of wi -> {\"wi\":[...],\"f\":[...],
         \"pdf\":p,\"kind\":\"reflection\"|\"transmission\"|\"rejected\",\"specular\":b}
-      alpha: a or [ax, ay]; gamma for gtr (anisotropic only at gamma 2); conductor:
+      alpha: a or [ax, ay]; gamma for gtr (anisotropic only at gamma 2), student_t and
+      gen_exponential, a for bessel_k; conductor:
       eta and k (number or [r,g,b]; neither: F = 1); dielectric: eta (one number);
       g2: correlated (default) or separable. Directions are normalised. Errors as in eval.
       op eval_ms: the multiple-scattering BSDF (the random walk of Heitz et al. 2016)
@@ -70,7 +74,7 @@ const ALBEDO_USAGE: &str = "\
       neither: F = 1), dielectric (\"eta\" > 0, mu < 0 from inside; -> {\"reflect\":
       {...},\"transmit\":{...},\"total\":E,\"total_stderr\":e}) or diffuse
       (Lambertian facets, \"rho\" in [0,1], default 1); alpha: a or [ax, ay]; gamma
-      for gtr; heights: uniform (default) or gaussian;
+      or a as in eval; heights: uniform (default) or gaussian;
       \"method\":\"quadrature\" -> {\"e1\":value}, the F = 1 conductor's single
       scattering by deterministic quadrature; for a dielectric {\"reflect\":{\"e1\":r},
       \"transmit\":{\"e1\":t}} (exact height-correlated G2: the walk's order 1).

@@ -35,6 +35,21 @@ fn members(kind: NdfKind) -> Vec<(String, AnyNdf)> {
         NdfKind::Exponential => &[0.3, 0.8, 2.1],
         _ => &ALPHAS,
     };
+    // The family's shape parameters at α = 0.3: the pages' ranges (Student-T from near the
+    // pole γ = 3/2 to near-Beckmann; Bessel-K across a = 1 (K0) and 3/2 (Exponential); the
+    // generalised exponential from stretched tails to a near-flat disk).
+    let shapes: &[f64] = match kind {
+        NdfKind::StudentT => &[1.6, 2.0, 4.0, 20.0],
+        NdfKind::BesselK => &[0.5, 1.0, 1.5, 4.0],
+        NdfKind::GenExponential => &[0.5, 1.0, 2.0, 8.0],
+        _ => &[],
+    };
+    if let Some(name) = kind.shape_name().filter(|_| kind != NdfKind::Gtr) {
+        return shapes
+            .iter()
+            .map(|&g| (format!("α=0.3 {name}={g}"), ndf(kind, 0.3, Some(g))))
+            .collect();
+    }
     if kind == NdfKind::Gtr {
         GAMMAS
             .iter()
@@ -69,6 +84,12 @@ fn heading(kind: NdfKind) -> &'static str {
         NdfKind::Gtr => "GTR (generalized Trowbridge–Reitz, exponent γ)",
         NdfKind::DoubleGgx => "Double GGX",
         NdfKind::Exponential => "Exponential NDF",
+        NdfKind::StudentT => "Student-T (shape γ)",
+        NdfKind::Ei => "Ei NDF",
+        NdfKind::Erfc => "Erfc NDF",
+        NdfKind::K0 => "K0 NDF",
+        NdfKind::BesselK => "Bessel-K (shape a)",
+        NdfKind::GenExponential => "Generalised exponential (exponent γ)",
     }
 }
 
@@ -80,6 +101,12 @@ pub(crate) fn short(kind: NdfKind) -> &'static str {
         NdfKind::Gtr => "GTR",
         NdfKind::DoubleGgx => "Double GGX",
         NdfKind::Exponential => "Exponential",
+        NdfKind::StudentT => "Student-T",
+        NdfKind::Ei => "Ei",
+        NdfKind::Erfc => "Erfc",
+        NdfKind::K0 => "K0",
+        NdfKind::BesselK => "Bessel-K",
+        NdfKind::GenExponential => "GenExp",
     }
 }
 
@@ -103,6 +130,31 @@ fn source(kind: NdfKind) -> &'static str {
         }
         NdfKind::Exponential => {
             "D = 2 exp(−2 tanθ/α)/(π α² cos⁴θ) (d'Eon, Hitchhiker's Guide, Exponential NDF page)"
+        }
+        NdfKind::StudentT => {
+            "D = (1 + tan²θ/(α²(γ−1)))^{−γ}/(π α² cos⁴θ), γ = 2 is GGX, γ → ∞ Beckmann \
+             (Ribardière et al. 2017; d'Eon, Hitchhiker's Guide, StudentT NDF page)"
+        }
+        NdfKind::Ei => {
+            "D = E₁(tan²θ/α²)/(π α² cos⁴θ), Beckmann uniform in roughness² ∈ (0, α²] (d'Eon, \
+             Hitchhiker's Guide, Ei NDF page)"
+        }
+        NdfKind::Erfc => {
+            "D = erfc(tanθ/α)/(2√π α tanθ cos⁴θ), Beckmann uniform in roughness ∈ (0, α] \
+             (d'Eon, Hitchhiker's Guide, Erfc NDF page)"
+        }
+        NdfKind::K0 => {
+            "D = 2 K₀(2 tanθ/α)/(π α² cos⁴θ), Bessel-K at a = 1 (d'Eon, Hitchhiker's Guide, \
+             K0 NDF page)"
+        }
+        NdfKind::BesselK => {
+            "D = 2 (tanθ/α)^{a−1} K_{a−1}(2 tanθ/α)/(π α² Γ(a) cos⁴θ), a Gamma(a) mixture of \
+             Beckmann; a = 1 is K0, a = 3/2 the Exponential NDF (d'Eon, Hitchhiker's Guide, \
+             BesselK NDF page)"
+        }
+        NdfKind::GenExponential => {
+            "D = exp(−(tanθ/α)^γ)/(π α² Γ(1 + 2/γ) cos⁴θ), γ = 2 is Beckmann, γ = 1 the \
+             Exponential NDF at 2α (d'Eon, Hitchhiker's Guide, GenExponential NDF page)"
         }
     }
 }
@@ -386,7 +438,7 @@ fn histogram_plot(kind: NdfKind, visible: bool) -> Plot {
     } else {
         ndf(kind, 0.3, None)
     };
-    let m = Exact::new(kind, n.alpha(), n.alpha(), n.gamma()).expect("valid parameters");
+    let m = Exact::new(kind, n.alpha(), n.alpha(), n.shape()).expect("valid parameters");
     let wi = {
         let t = 60f64.to_radians();
         Vec3::new(t.sin(), 0.0, t.cos())
@@ -628,6 +680,12 @@ fn comparison_plots() -> Vec<Plot> {
         (NdfKind::Gtr, Some(1.5), "GTR γ=1.5"),
         (NdfKind::DoubleGgx, None, "Double GGX"),
         (NdfKind::Exponential, None, "Exponential"),
+        (NdfKind::StudentT, Some(4.0), "Student-T γ=4"),
+        (NdfKind::Ei, None, "Ei"),
+        (NdfKind::Erfc, None, "Erfc"),
+        (NdfKind::K0, None, "K0"),
+        (NdfKind::BesselK, Some(3.0), "Bessel-K a=3"),
+        (NdfKind::GenExponential, Some(4.0), "GenExp γ=4"),
     ];
     let ts = grid(0.0, 89.5, 180);
     let us = grid(0.0, 1.0, 101);
@@ -637,8 +695,9 @@ fn comparison_plots() -> Vec<Plot> {
     let mut same = Plot::new("All NDFs at α = 0.3: D(θm)", "θm (degrees)", "D")
         .log_y()
         .caption(
-            "The five NDFs at the same α = 0.3 (GTR at γ = 1.5): α is not comparable across \
-             NDFs (mean slopes differ by up to 2×); the next plots match a quantity instead.",
+            "Every NDF at the same α = 0.3 (GTR at γ = 1.5, the shapes as labelled): α is not \
+             comparable across NDFs (mean slopes differ by several times); the next plots match \
+             a quantity instead.",
         );
     let mut by_g1 = Plot::new(
         "Matched masking: G1(45°) as GGX α=0.3's",

@@ -47,7 +47,7 @@ fn walk_table(kind: NdfKind, alpha: Vec<f64>, mu: Vec<f64>, walks: u64) -> Grid 
 /// E_k(μ) by order at α = 1, walks, with order 1 by quadrature (dashed).
 fn order_plots() -> Vec<Plot> {
     let mu = grid(0.05, 1.0, 14);
-    NdfKind::ALL
+    NdfKind::CLASSIC
         .into_iter()
         .map(|kind| {
             let g = walk_table(kind, vec![1.0], mu.clone(), 40_000);
@@ -105,7 +105,7 @@ fn e_avg_plot() -> Plot {
          energy that a single-scattering BSDF loses, and that Kulla & Conty's lobe puts back. \
          The NDFs with long tails (GTR γ = 1, Double GGX, GGX) lose more at the same α.",
     );
-    for (k, kind) in NdfKind::ALL.into_iter().enumerate() {
+    for (k, kind) in NdfKind::CLASSIC.into_iter().enumerate() {
         let pts = alphas
             .iter()
             .map(|&a| {
@@ -148,7 +148,7 @@ fn furnace_plot() -> Plot {
          of its eval. Compensated, every NDF reflects 1 within the table's interpolation \
          error (tests hold it to 1e-3; measured ≤ 7e-5).",
     );
-    for (k, kind) in NdfKind::ALL.into_iter().enumerate() {
+    for (k, kind) in NdfKind::CLASSIC.into_iter().enumerate() {
         let (before, kc, tq) = with_ndf!(kind, 1.0, GAMMA, |d| {
             let table = AlbedoTable::new(&d);
             let c = Compensated::from_table(d.clone(), One::<1>, Scheme::KullaConty, table.clone());
@@ -210,7 +210,7 @@ fn dielectric_furnace_plot() -> Plot {
     .caption(
         "The energy a rough dielectric interface keeps (reflected plus transmitted,          importance transport): single scattering (dashed; by quadrature over the microfacet          normal), and compensated with Kulla & Conty's two-sided lobes (circles: the single          scattering plus the added lobes, integrated) and with Turquin's 1/E (crosses),          every NDF. From inside, total internal reflection sends more light back into the          rough interface, so single scattering loses more there. Compensated, every NDF          keeps 1 within the tables' interpolation error (tests hold it to 1e-3; measured          ≤ 1.9e-4).",
     );
-    for (k, kind) in NdfKind::ALL.into_iter().enumerate() {
+    for (k, kind) in NdfKind::CLASSIC.into_iter().enumerate() {
         let (before, kc, tq) = with_ndf!(kind, 1.0, GAMMA, |d| {
             let tables = DielectricTables::new(&d, 1.5);
             let c = CompensatedDielectric::from_tables(
@@ -260,7 +260,7 @@ fn share_plot() -> Plot {
          walks per point) and as 1 − E₁ from the single-scattering tables (lines): what \
          every renderer that stops at one bounce loses.",
     );
-    for (k, kind) in NdfKind::ALL.into_iter().enumerate() {
+    for (k, kind) in NdfKind::CLASSIC.into_iter().enumerate() {
         let g = walk_table(kind, alphas.clone(), vec![0.5], 20_000);
         let r1 = g
             .quantities

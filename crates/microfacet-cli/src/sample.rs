@@ -40,6 +40,7 @@ fn parse(args: &[String]) -> Result<Args, String> {
         seed: 0,
     };
     let mut n = None;
+    let mut shape_a = None;
     let mut it = args.iter();
     while let Some(flag) = it.next() {
         let v = value(flag, it.next());
@@ -48,6 +49,7 @@ fn parse(args: &[String]) -> Result<Args, String> {
             "--alpha" => alpha = Some(number(flag, v?)?),
             "--alpha-y" => a.alpha_y = Some(number(flag, v?)?),
             "--gamma" => a.gamma = Some(number(flag, v?)?),
+            "--a" => shape_a = Some(number(flag, v?)?),
             "--mode" => {
                 a.visible = match v? {
                     "dcos" => false,
@@ -97,9 +99,8 @@ fn parse(args: &[String]) -> Result<Args, String> {
     }
     a.kind = kind.ok_or("sample: --ndf is required")?;
     a.alpha = alpha.ok_or("sample: --alpha is required")?;
-    if a.kind == NdfKind::Gtr && a.gamma.is_none() {
-        return Err("sample: --gamma is required for gtr (its exponent γ ∈ (0, 100])".into());
-    }
+    a.gamma = crate::eval::shape_from_flags(a.kind, a.gamma, shape_a)
+        .map_err(|e| format!("sample: {e}"))?;
     if a.wi.is_some() && !a.visible {
         return Err(
             "sample: --wi applies to visible normals only (add --mode visible); D·cos \
@@ -115,12 +116,6 @@ pub fn run(args: &[String]) -> Result<ExitCode, String> {
     let a = parse(args)?;
     if a.kind == NdfKind::Gtr && a.alpha_y.is_some() {
         return Err("sample: GTR is isotropic (no --alpha-y)".into());
-    }
-    if a.kind != NdfKind::Gtr && a.gamma.is_some() {
-        return Err(format!(
-            "sample: --gamma applies to gtr only, not {}",
-            a.kind
-        ));
     }
     // The exact path (invertible warps; the visible normals of GTR by the polar inversion).
     let sampler = Exact::new(a.kind, a.alpha, a.alpha_y.unwrap_or(a.alpha), a.gamma)

@@ -80,6 +80,7 @@ pub fn run(args: &[String]) -> Result<ExitCode, String> {
     let mut ndf = None;
     let (mut alpha, mut mu) = (None, None);
     let (mut gamma, mut eta, mut k, mut rho) = (None, None, None, None);
+    let mut shape_a = None;
     let mut material = "furnace".to_string();
     let mut method = "walk".to_string();
     let (mut walks, mut seed) = (None, 0u64);
@@ -95,6 +96,7 @@ pub fn run(args: &[String]) -> Result<ExitCode, String> {
             "--alpha" => alpha = Some(nodes(flag, v)?),
             "--mu" => mu = Some(nodes(flag, v)?),
             "--gamma" => gamma = Some(number(flag, v)?),
+            "--a" => shape_a = Some(number(flag, v)?),
             "--material" => material = v.to_string(),
             "--eta" => eta = Some(number(flag, v)?),
             "--k" => k = Some(number(flag, v)?),
@@ -136,12 +138,7 @@ pub fn run(args: &[String]) -> Result<ExitCode, String> {
     } else {
         return Err(err("--out must end in .json or .mfa (the binary form)"));
     };
-    if ndf == NdfKind::Gtr && gamma.is_none() {
-        return Err(err("--gamma is required for gtr"));
-    }
-    if ndf != NdfKind::Gtr && gamma.is_some() {
-        return Err(err("--gamma applies to gtr only"));
-    }
+    let gamma = crate::eval::shape_from_flags(ndf, gamma, shape_a).map_err(err)?;
     let material = match material.as_str() {
         "furnace" => Material::Furnace,
         "conductor" => Material::Conductor {

@@ -24,7 +24,7 @@ fn number(s: &str) -> Result<f64, String> {
 
 pub fn run(args: &[String]) -> Result<ExitCode, String> {
     let mut sweep = Sweep::default();
-    let mut gamma_given = false;
+    let mut shapes: Vec<(String, Vec<f64>)> = Vec::new();
     let mut it = args.iter();
     while let Some(flag) = it.next() {
         match flag.as_str() {
@@ -34,7 +34,7 @@ pub fn run(args: &[String]) -> Result<ExitCode, String> {
                 })?
             }
             "--alpha" => sweep.alphas = parse_list(flag, it.next(), number)?,
-            "--gamma" => sweep.gammas = parse_list(flag, it.next(), number)?,
+            "--gamma" | "--a" => shapes.push((flag.clone(), parse_list(flag, it.next(), number)?)),
             other => {
                 return Err(format!(
                     "verify: unknown option '{}' (see `microfacet verify --help`)",
@@ -42,20 +42,31 @@ pub fn run(args: &[String]) -> Result<ExitCode, String> {
                 ))
             }
         }
-        gamma_given |= flag == "--gamma";
     }
-    if gamma_given && !sweep.kinds.contains(&NdfKind::Gtr) {
-        return Err("verify: --gamma applies to gtr only (add gtr to --ndf)".into());
+    // --gamma: the γ of gtr, student_t and gen_exponential; --a: bessel_k's a.
+    for (flag, values) in shapes {
+        let takes = |k: NdfKind| match k.shape_name() {
+            Some("a") => flag == "--a",
+            Some(_) => flag == "--gamma",
+            None => false,
+        };
+        let kinds: Vec<NdfKind> = sweep.kinds.iter().copied().filter(|&k| takes(k)).collect();
+        if kinds.is_empty() {
+            return Err(if flag == "--a" {
+                "verify: --a applies to bessel_k only (add bessel_k to --ndf)".into()
+            } else {
+                "verify: --gamma applies to gtr, student_t and gen_exponential only (add one of them to --ndf)".into()
+            });
+        }
+        for k in kinds {
+            sweep.shapes.retain(|(kk, _)| *kk != k);
+            sweep.shapes.push((k, values.clone()));
+        }
     }
     // Reject bad parameters up front with the library's own message.
     for &kind in &sweep.kinds {
         for &a in &sweep.alphas {
-            let gammas: Vec<Option<f64>> = if kind == NdfKind::Gtr {
-                sweep.gammas.iter().copied().map(Some).collect()
-            } else {
-                vec![None]
-            };
-            for g in gammas {
+            for g in sweep.shapes_of(kind) {
                 microfacet::AnyNdf::new(kind, a, g).map_err(|e| e.to_string())?;
             }
         }

@@ -109,6 +109,22 @@ impl Ndf for Beckmann {
     }
 }
 
+/// Λ of a Beckmann NDF as a function of a = cot θ/α alone (a ≥ 0; +∞ at 0, 0 at +∞), for the
+/// mixtures of Beckmann components ([`crate::bessel_k`], the tails of [`crate::ei`] and
+/// [`crate::erfc`]), whose component argument a is a computed value anyway.
+pub(crate) fn lambda_at(a: f64) -> f64 {
+    if a.is_nan() {
+        return a;
+    }
+    if a == 0.0 {
+        return f64::INFINITY;
+    }
+    if a == f64::INFINITY {
+        return 0.0;
+    }
+    lambda_of(a, Dd::mul_f(a, a))
+}
+
 /// Λ as a function of a = cot θ/α (and a² in double-double).
 fn lambda_of(a: f64, a2: Dd) -> f64 {
     if a < 2.0 {

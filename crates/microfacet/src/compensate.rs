@@ -212,6 +212,7 @@ fn shipped_file(kind: NdfKind, gamma: Option<f64>) -> Option<usize> {
         (NdfKind::Beckmann, _) => 0,
         (NdfKind::DoubleGgx, _) => 2,
         (NdfKind::Exponential, _) => 3,
+        _ => return None,
     })
 }
 
@@ -638,6 +639,7 @@ pub fn dielectric_table_bytes(kind: NdfKind, gamma: Option<f64>, threads: usize)
             NdfKind::DoubleGgx => row(&Microfacet::<f64, DoubleGgx>::new(a, a).unwrap()),
             NdfKind::Exponential => row(&Microfacet::<f64, Exponential>::new(a, a).unwrap()),
             NdfKind::Gtr => row(&Microfacet::<f64, Gtr>::gtr(a, a, gamma.unwrap_or(2.0)).unwrap()),
+            _ => row(&crate::Exact::new(kind, a, a, gamma).unwrap()),
         }
     };
     let threads = threads.max(1);

@@ -70,7 +70,7 @@
 
 use crate::fast::{self, Real};
 use crate::frame::{dot, normalize};
-use crate::microsurface::{Isotropic, Microsurface, Stretched};
+use crate::microsurface::{Isotropic, Microsurface, Shaped, Stretched};
 use crate::vec3::Vec3;
 use crate::visible::UnitSlopes;
 use crate::{Beckmann, DoubleGgx, Exponential, Ggx, Gtr, ParamError};
@@ -980,13 +980,18 @@ pub struct Exact {
 enum ExactInner {
     Stretched(Stretched),
     Gtr(Isotropic<Gtr>),
+    Shaped(Shaped),
 }
 
 impl Exact {
-    /// The exact path of NDF `kind` at roughness (αx, αy) (γ required by, and only used for,
-    /// GTR), for an NDF chosen at run time (command lines, sweeps); [`Microfacet::exact`] is
-    /// the same for a material built at compile time. GTR: isotropic at γ ≠ 2, as
-    /// [`Microfacet::gtr`]. Typed errors as the constructors'.
+    /// The exact path of NDF `kind` at roughness (αx, αy) with its shape parameter `gamma`
+    /// where it has one ([`crate::NdfKind::shape_name`]: γ of GTR, Student-T and the
+    /// generalised exponential, a of Bessel-K), for an NDF chosen at run time (command lines,
+    /// sweeps); [`Microfacet::exact`] is the same for a material built at compile time. GTR:
+    /// isotropic at γ ≠ 2, as [`Microfacet::gtr`]. The family's other NDFs (Student-T, Ei,
+    /// Erfc, K0, Bessel-K, generalised exponential) are anisotropic by stretching, with visible
+    /// normals by the exact slope-space inversion (quadratures: tens of microseconds a sample);
+    /// Student-T needs γ > 3/2 here (Λ is infinite below). Typed errors as the constructors'.
     pub fn new(
         kind: crate::NdfKind,
         alpha_x: f64,
@@ -1003,6 +1008,22 @@ impl Exact {
             K::Ggx => UnitSlopes::Ggx,
             K::DoubleGgx => UnitSlopes::DoubleGgx,
             K::Exponential => UnitSlopes::Exponential,
+            K::StudentT | K::Ei | K::Erfc | K::K0 | K::BesselK | K::GenExponential => {
+                let ndf = crate::AnyNdf::new(kind, ax, gamma)?;
+                if let crate::AnyNdf::StudentT(t) = ndf {
+                    if !t.has_finite_lambda() {
+                        return Err(ParamError::Shape {
+                            name: "student_t gamma (visible normals and G need a finite Lambda)",
+                            range: "(1.5, 1e6]",
+                            value: t.gamma(),
+                        });
+                    }
+                }
+                return Ok(Exact {
+                    alpha: (ax, ay),
+                    inner: ExactInner::Shaped(Shaped::new(&ndf, ax, ay)?),
+                });
+            }
             K::Gtr => {
                 let gamma = crate::error::check_gamma(gamma.unwrap_or(f64::NAN))?;
                 if gamma == 2.0 {
@@ -1038,6 +1059,7 @@ impl Exact {
         match &self.inner {
             ExactInner::Stretched(s) => s,
             ExactInner::Gtr(g) => g,
+            ExactInner::Shaped(g) => g,
         }
     }
 
@@ -1061,6 +1083,7 @@ impl Distribution<f64> for Exact {
         Some(match &self.inner {
             ExactInner::Stretched(s) => (s.kind().kind(), None),
             ExactInner::Gtr(g) => (crate::NdfKind::Gtr, Some(g.0.gamma())),
+            ExactInner::Shaped(g) => (g.unit().kind(), g.unit().shape()),
         })
     }
     fn d(&self, wm: [f64; 3]) -> f64 {

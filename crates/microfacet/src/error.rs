@@ -23,6 +23,13 @@ pub enum ParamError {
     /// αx ≠ αy for GTR at this γ ≠ 2 (GTR is shape invariant, and so stretchable, only at
     /// γ = 2, where it is GGX: [`crate::Microfacet::gtr`]).
     Anisotropic(f64),
+    /// A shape parameter of the NDF family outside its supported range: `name` says which
+    /// (e.g. `student_t gamma`), `range` the range accepted.
+    Shape {
+        name: &'static str,
+        range: &'static str,
+        value: f64,
+    },
 }
 
 impl fmt::Display for ParamError {
@@ -36,6 +43,9 @@ impl fmt::Display for ParamError {
                 f,
                 "gamma must be a finite number in (0, {GAMMA_MAX}], got {g}"
             ),
+            ParamError::Shape { name, range, value } => {
+                write!(f, "{name} must be a finite number in {range}, got {value}")
+            }
             ParamError::Anisotropic(g) => write!(
                 f,
                 "GTR is anisotropic only at gamma = 2 (where it is GGX); got alpha_x != alpha_y at gamma = {g}"
@@ -60,4 +70,20 @@ pub(crate) fn check_gamma(gamma: f64) -> Result<f64, ParamError> {
         return Err(ParamError::Gamma(gamma));
     }
     Ok(gamma)
+}
+
+/// Checks a shape parameter against (lo, hi] (`open_lo`) or [lo, hi]; NaN fails.
+pub(crate) fn check_shape(
+    value: f64,
+    lo: f64,
+    open_lo: bool,
+    hi: f64,
+    name: &'static str,
+    range: &'static str,
+) -> Result<f64, ParamError> {
+    let above = if open_lo { value > lo } else { value >= lo };
+    if !(above && value <= hi) {
+        return Err(ParamError::Shape { name, range, value });
+    }
+    Ok(value)
 }

@@ -3,6 +3,7 @@
 
 use crate::error::ParamError;
 use crate::ndf::{Ndf, ShapeInvariant};
+use crate::{BesselK, Ei, Erfc, GenExponential, K0, StudentT};
 use crate::{Beckmann, DoubleGgx, Exponential, Ggx, Gtr};
 use std::fmt;
 use std::str::FromStr;
@@ -15,17 +16,59 @@ pub enum NdfKind {
     Gtr,
     DoubleGgx,
     Exponential,
+    StudentT,
+    Ei,
+    Erfc,
+    K0,
+    BesselK,
+    GenExponential,
 }
 
 impl NdfKind {
-    /// Every kind, in the order of the source pages (Beckmann first: the base).
-    pub const ALL: [NdfKind; 5] = [
+    /// Every kind: [`NdfKind::CLASSIC`] then [`NdfKind::FAMILY`].
+    pub const ALL: [NdfKind; 11] = [
+        NdfKind::Beckmann,
+        NdfKind::Ggx,
+        NdfKind::Gtr,
+        NdfKind::DoubleGgx,
+        NdfKind::Exponential,
+        NdfKind::StudentT,
+        NdfKind::Ei,
+        NdfKind::Erfc,
+        NdfKind::K0,
+        NdfKind::BesselK,
+        NdfKind::GenExponential,
+    ];
+
+    /// The five NDFs with renderer fast paths ([`crate::Microfacet`]), shipped compensation
+    /// tables and report sections, in the order of the source pages (Beckmann first: the base).
+    pub const CLASSIC: [NdfKind; 5] = [
         NdfKind::Beckmann,
         NdfKind::Ggx,
         NdfKind::Gtr,
         NdfKind::DoubleGgx,
         NdfKind::Exponential,
     ];
+
+    /// The rest of the book's family (exact f64 types, the direction API through
+    /// [`crate::Exact`]).
+    pub const FAMILY: [NdfKind; 6] = [
+        NdfKind::StudentT,
+        NdfKind::Ei,
+        NdfKind::Erfc,
+        NdfKind::K0,
+        NdfKind::BesselK,
+        NdfKind::GenExponential,
+    ];
+
+    /// The name of the kind's shape parameter (`gamma`, or `a` for Bessel-K), if it has one.
+    pub fn shape_name(self) -> Option<&'static str> {
+        match self {
+            NdfKind::Gtr | NdfKind::StudentT | NdfKind::GenExponential => Some("gamma"),
+            NdfKind::BesselK => Some("a"),
+            _ => None,
+        }
+    }
 
     /// The lower-case name used on the command line.
     pub fn name(self) -> &'static str {
@@ -35,6 +78,12 @@ impl NdfKind {
             NdfKind::Gtr => "gtr",
             NdfKind::DoubleGgx => "double_ggx",
             NdfKind::Exponential => "exponential",
+            NdfKind::StudentT => "student_t",
+            NdfKind::Ei => "ei",
+            NdfKind::Erfc => "erfc",
+            NdfKind::K0 => "k0",
+            NdfKind::BesselK => "bessel_k",
+            NdfKind::GenExponential => "gen_exponential",
         }
     }
 }
@@ -58,7 +107,7 @@ impl fmt::Display for UnknownNdf {
         };
         write!(
             f,
-            "unknown ndf '{name}' (expected one of beckmann, ggx, gtr, double_ggx, exponential)"
+            "unknown ndf '{name}' (expected one of beckmann, ggx, gtr, double_ggx, exponential, student_t, ei, erfc, k0, bessel_k, gen_exponential)"
         )
     }
 }
@@ -83,17 +132,32 @@ pub enum AnyNdf {
     Gtr(Gtr),
     DoubleGgx(DoubleGgx),
     Exponential(Exponential),
+    StudentT(StudentT),
+    Ei(Ei),
+    Erfc(Erfc),
+    K0(K0),
+    BesselK(BesselK),
+    GenExponential(GenExponential),
 }
 
 impl AnyNdf {
-    /// Builds `kind` with roughness α; γ is required by (and only used for) GTR.
-    pub fn new(kind: NdfKind, alpha: f64, gamma: Option<f64>) -> Result<Self, ParamError> {
+    /// Builds `kind` with roughness α and, for the kinds that have one
+    /// ([`NdfKind::shape_name`]), its shape parameter: γ for GTR, Student-T and the generalised
+    /// exponential, a for Bessel-K (required by those, ignored by the others).
+    pub fn new(kind: NdfKind, alpha: f64, shape: Option<f64>) -> Result<Self, ParamError> {
+        let shape = shape.unwrap_or(f64::NAN);
         Ok(match kind {
             NdfKind::Beckmann => AnyNdf::Beckmann(Beckmann::new(alpha)?),
             NdfKind::Ggx => AnyNdf::Ggx(Ggx::new(alpha)?),
-            NdfKind::Gtr => AnyNdf::Gtr(Gtr::new(alpha, gamma.unwrap_or(f64::NAN))?),
+            NdfKind::Gtr => AnyNdf::Gtr(Gtr::new(alpha, shape)?),
             NdfKind::DoubleGgx => AnyNdf::DoubleGgx(DoubleGgx::new(alpha)?),
             NdfKind::Exponential => AnyNdf::Exponential(Exponential::new(alpha)?),
+            NdfKind::StudentT => AnyNdf::StudentT(StudentT::new(alpha, shape)?),
+            NdfKind::Ei => AnyNdf::Ei(Ei::new(alpha)?),
+            NdfKind::Erfc => AnyNdf::Erfc(Erfc::new(alpha)?),
+            NdfKind::K0 => AnyNdf::K0(K0::new(alpha)?),
+            NdfKind::BesselK => AnyNdf::BesselK(BesselK::new(alpha, shape)?),
+            NdfKind::GenExponential => AnyNdf::GenExponential(GenExponential::new(alpha, shape)?),
         })
     }
 
@@ -105,15 +169,55 @@ impl AnyNdf {
             AnyNdf::Gtr(_) => NdfKind::Gtr,
             AnyNdf::DoubleGgx(_) => NdfKind::DoubleGgx,
             AnyNdf::Exponential(_) => NdfKind::Exponential,
+            AnyNdf::StudentT(_) => NdfKind::StudentT,
+            AnyNdf::Ei(_) => NdfKind::Ei,
+            AnyNdf::Erfc(_) => NdfKind::Erfc,
+            AnyNdf::K0(_) => NdfKind::K0,
+            AnyNdf::BesselK(_) => NdfKind::BesselK,
+            AnyNdf::GenExponential(_) => NdfKind::GenExponential,
         }
     }
 
-    /// γ for GTR, `None` otherwise.
-    pub fn gamma(&self) -> Option<f64> {
+    /// The shape parameter (γ for GTR, Student-T and the generalised exponential, a for
+    /// Bessel-K), `None` for the kinds without one.
+    pub fn shape(&self) -> Option<f64> {
         match self {
             AnyNdf::Gtr(g) => Some(g.gamma()),
+            AnyNdf::StudentT(n) => Some(n.gamma()),
+            AnyNdf::BesselK(n) => Some(n.a()),
+            AnyNdf::GenExponential(n) => Some(n.gamma()),
             _ => None,
         }
+    }
+
+    /// The same NDF at roughness α (no range check: the α = 1 member of a validated
+    /// material, or a superposition component).
+    pub(crate) fn with_alpha(&self, alpha: f64) -> AnyNdf {
+        let shape = self.shape();
+        match self {
+            AnyNdf::BesselK(n) => AnyNdf::BesselK(BesselK::raw(alpha, n.a())),
+            _ => AnyNdf::new(self.kind(), alpha.clamp(crate::error::ALPHA_MIN, crate::error::ALPHA_MAX), shape)
+                .expect("a validated NDF's shape at a valid α"),
+        }
+    }
+
+    /// The mixing law that writes this NDF as a superposition of Beckmann NDFs
+    /// ([`crate::mixture`]), where it is one with a usable density: GGX (Gamma-1), the
+    /// Exponential NDF (Gamma(3/2)), Student-T (inverse-Gamma(γ − 1)), Ei, Erfc, K0 and
+    /// Bessel-K; `None` for Beckmann itself, GTR, Double GGX (a superposition of GGX) and the
+    /// generalised exponential (a positive-stable law for γ < 2, none for γ > 2).
+    pub fn beckmann_mixing(&self) -> Option<crate::mixture::Mixing> {
+        use crate::mixture::Mixing;
+        Some(match self {
+            AnyNdf::Ggx(_) => Mixing::Gamma1,
+            AnyNdf::Exponential(_) => Mixing::Gamma32,
+            AnyNdf::StudentT(n) => Mixing::InverseGamma(n.gamma() - 1.0),
+            AnyNdf::Ei(_) => Mixing::UniformSquare,
+            AnyNdf::Erfc(_) => Mixing::Uniform,
+            AnyNdf::K0(_) => Mixing::Gamma(1.0),
+            AnyNdf::BesselK(n) => Mixing::Gamma(n.a()),
+            _ => return None,
+        })
     }
 
     /// The shape-invariant profile f(x), or `None` for GTR (not shape invariant for γ ≠ 2).
@@ -124,6 +228,12 @@ impl AnyNdf {
             AnyNdf::Gtr(_) => None,
             AnyNdf::DoubleGgx(n) => Some(n.f(x)),
             AnyNdf::Exponential(n) => Some(n.f(x)),
+            AnyNdf::StudentT(n) => Some(n.f(x)),
+            AnyNdf::Ei(n) => Some(n.f(x)),
+            AnyNdf::Erfc(n) => Some(n.f(x)),
+            AnyNdf::K0(n) => Some(n.f(x)),
+            AnyNdf::BesselK(n) => Some(n.f(x)),
+            AnyNdf::GenExponential(n) => Some(n.f(x)),
         }
     }
 
@@ -134,6 +244,12 @@ impl AnyNdf {
             AnyNdf::Gtr(n) => n,
             AnyNdf::DoubleGgx(n) => n,
             AnyNdf::Exponential(n) => n,
+            AnyNdf::StudentT(n) => n,
+            AnyNdf::Ei(n) => n,
+            AnyNdf::Erfc(n) => n,
+            AnyNdf::K0(n) => n,
+            AnyNdf::BesselK(n) => n,
+            AnyNdf::GenExponential(n) => n,
         }
     }
 }

@@ -86,19 +86,24 @@
 //! ```
 
 pub mod beckmann;
+pub mod bessel_k;
 pub mod bsdf;
 pub mod chi2;
 pub mod compensate;
 pub mod distribution;
 pub mod double_ggx;
+pub mod ei;
+pub mod erfc;
 pub mod error;
 pub mod exponential;
 pub mod family;
 pub mod fast;
 pub mod frame;
+pub mod gen_exponential;
 pub mod fresnel;
 pub mod ggx;
 pub mod gtr;
+pub mod k0;
 pub(crate) mod microsurface;
 pub mod mixture;
 pub mod ndf;
@@ -108,6 +113,7 @@ pub mod smith;
 pub mod solve;
 pub mod special;
 pub mod stochastic;
+pub mod student_t;
 pub mod table;
 pub mod vec3;
 pub mod verify;
@@ -115,16 +121,22 @@ pub mod visible;
 pub mod walk;
 
 pub use beckmann::Beckmann;
+pub use bessel_k::BesselK;
 pub use distribution::{Distribution, Exact, Microfacet, Sample};
 pub use double_ggx::DoubleGgx;
+pub use ei::Ei;
+pub use erfc::Erfc;
 pub use error::ParamError;
 pub use exponential::Exponential;
+pub use gen_exponential::GenExponential;
 pub use family::{AnyNdf, NdfKind};
 pub use fast::Real;
 pub use ggx::Ggx;
 pub use gtr::Gtr;
+pub use k0::K0;
 pub use ndf::{Ndf, ShapeInvariant};
 pub use sample::RadialSlopes;
+pub use student_t::StudentT;
 pub use vec3::Vec3;
 pub use visible::UnitSlopes;
 

@@ -397,3 +397,125 @@ impl<N: Ndf + RadialSlopes> Microsurface for Isotropic<N> {
         crate::visible::radial::invert(&self.0, a, r, psi)
     }
 }
+
+/// Any shape-invariant NDF of the family at roughness (αx, αy) (the Student-T, Ei, Erfc, K0,
+/// Bessel-K and generalised exponential NDFs): D, Λ and σ of the α = 1 member at the
+/// stretched direction (as [`Stretched`]), D·cos normals by the α = 1 radial quantile, and
+/// visible normals by the exact polar slope-space inversion of [`crate::visible::radial`] applied
+/// to the α = 1 member in the stretched frame (so anisotropy comes for free, and the warp is
+/// invertible).
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct Shaped {
+    /// The α = 1 member.
+    unit: crate::AnyNdf,
+    alpha_x: f64,
+    alpha_y: f64,
+}
+
+impl Shaped {
+    /// `ndf` (any α: only its shape is used) at roughness (αx, αy), each in [1e-6, 1e6].
+    pub fn new(ndf: &crate::AnyNdf, alpha_x: f64, alpha_y: f64) -> Result<Self, ParamError> {
+        Ok(Shaped {
+            unit: ndf.with_alpha(1.0),
+            alpha_x: crate::error::check_alpha(alpha_x)?,
+            alpha_y: crate::error::check_alpha(alpha_y)?,
+        })
+    }
+
+    /// The α = 1 member (its kind and shape parameter).
+    pub fn unit(&self) -> &crate::AnyNdf {
+        &self.unit
+    }
+
+    /// The same stretch as [`Stretched`]'s.
+    fn stretched(&self) -> Stretched {
+        Stretched::raw(UnitSlopes::Ggx, self.alpha_x, self.alpha_y)
+    }
+}
+
+impl Microsurface for Shaped {
+    fn d(&self, wm: Vec3) -> f64 {
+        let wm = wm.to_unit();
+        if wm.z.is_nan() {
+            return f64::NAN;
+        }
+        if wm.z <= 0.0 {
+            return 0.0;
+        }
+        let (x, y) = (wm.x / self.alpha_x, wm.y / self.alpha_y);
+        let l2 = wm.z * wm.z + x * x + y * y;
+        let u1 = wm.z / l2.sqrt();
+        self.unit.d(u1) / (self.alpha_x * self.alpha_y * l2 * l2)
+    }
+
+    fn lambda(&self, w: Vec3) -> f64 {
+        let s = self.stretched().stretch(upper(w));
+        let l = s.length();
+        if l == 0.0 {
+            return f64::NAN;
+        }
+        self.unit.lambda(s.z / l)
+    }
+
+    fn sigma(&self, w: Vec3) -> f64 {
+        let s = self.stretched().stretch(upper(w));
+        let l = s.length();
+        l * self.unit.sigma(s.z / l)
+    }
+
+    fn sample_dcos(&self, u: [f64; 2]) -> Vec3 {
+        let r = self.unit.slope_quantile(u[0]);
+        let (sin, cos) = (2.0 * PI * u[1]).sin_cos();
+        if r == f64::INFINITY {
+            return Vec3::new(self.alpha_x * cos, self.alpha_y * sin, 0.0).normalize();
+        }
+        self.stretched().normal_from_unit_slopes(r * cos, r * sin)
+    }
+
+    fn invert_dcos(&self, wm: Vec3) -> [f64; 2] {
+        let Some(wm) = above(wm) else {
+            return [f64::NAN; 2];
+        };
+        let (x, y) = self.stretched().unit_slopes(wm);
+        let mut phi = y.atan2(x);
+        if phi < 0.0 {
+            phi += 2.0 * PI;
+        }
+        [
+            self.unit.slope_cdf(x.hypot(y)).clamp(0.0, 1.0),
+            (phi / (2.0 * PI)).min(1.0),
+        ]
+    }
+
+    fn sample_visible(&self, w: Vec3, u: [f64; 2]) -> Vec3 {
+        let st = self.stretched();
+        let (a, c, s) = st.stretched_frame(w);
+        let (r, psi) = crate::visible::radial::sample(&self.unit, a, u);
+        let phi = psi + s.atan2(c);
+        let (sp, cp) = phi.sin_cos();
+        if r == f64::INFINITY {
+            return facing(
+                Vec3::new(self.alpha_x * cp, self.alpha_y * sp, 0.0).normalize(),
+                upper(w),
+            );
+        }
+        facing(st.normal_from_unit_slopes(r * cp, r * sp), upper(w))
+    }
+
+    fn invert_visible(&self, w: Vec3, wm: Vec3) -> [f64; 2] {
+        let Some(wm) = above(wm) else {
+            return [f64::NAN; 2];
+        };
+        let st = self.stretched();
+        let (a, c, s) = st.stretched_frame(w);
+        let (gx, gy) = st.unit_slopes(wm);
+        let r = gx.hypot(gy);
+        let mut psi = gy.atan2(gx) - s.atan2(c);
+        if psi > PI {
+            psi -= 2.0 * PI;
+        } else if psi < -PI {
+            psi += 2.0 * PI;
+        }
+        crate::visible::radial::invert(&self.unit, a, r, psi)
+    }
+}

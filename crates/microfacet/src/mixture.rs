@@ -9,6 +9,10 @@
 //! | [`Mixing::Gamma1`] | e^{−t} | α/√t | GGX from Beckmann; Double GGX from GGX |
 //! | [`Mixing::Gamma32`] | √t e^{−t}/Γ(3/2) | α√t | Exponential from Beckmann |
 //! | [`Mixing::Chi3`] | √(2/π) t² e^{−t²/2} | α t/√2 | Exponential from Beckmann |
+//! | [`Mixing::InverseGamma`]`(k)` | t^{k−1} e^{−t}/Γ(k) | α√(k/t) | Student-T (k = γ − 1) from Beckmann |
+//! | [`Mixing::Gamma`]`(k)` | t^{k−1} e^{−t}/Γ(k) | α√t | K0 (k = 1), Bessel-K (k = a) from Beckmann |
+//! | [`Mixing::UniformSquare`] | 1 on (0, 1) | α√t | Ei from Beckmann |
+//! | [`Mixing::Uniform`] | 1 on (0, 1) | α t | Erfc from Beckmann |
 //!
 //! [`superpose`] integrates any component quantity against a mixing density by tanh-sinh
 //! quadrature on (0, ∞) (relative tolerance 1e-13); it is what `microfacet verify` uses to check
@@ -19,7 +23,7 @@ use crate::{Beckmann, Ggx};
 use std::f64::consts::PI;
 
 /// A mixing density over the component roughness.
-#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+#[derive(Clone, Copy, Debug, PartialEq)]
 pub enum Mixing {
     /// Fréchet(shape 2, scale α) over the component roughness itself.
     Frechet2,
@@ -29,6 +33,14 @@ pub enum Mixing {
     Gamma32,
     /// Chi with 3 degrees of freedom over t, component roughness α t/√2.
     Chi3,
+    /// Gamma(k, 1) over t, component roughness α√(k/t) (Student-T with k = γ − 1).
+    InverseGamma(f64),
+    /// Gamma(k, 1) over t, component roughness α√t (Bessel-K with k = a; K0 at k = 1).
+    Gamma(f64),
+    /// Uniform on (0, 1), component roughness α√t (the Ei NDF).
+    UniformSquare,
+    /// Uniform on (0, 1), component roughness α t (the Erfc NDF).
+    Uniform,
 }
 
 impl Mixing {
@@ -46,6 +58,16 @@ impl Mixing {
             // Γ(3/2) = √π/2
             Mixing::Gamma32 => t.sqrt() * (-t).exp() / (0.5 * PI.sqrt()),
             Mixing::Chi3 => (2.0 / PI).sqrt() * t * t * (-0.5 * t * t).exp(),
+            Mixing::InverseGamma(k) | Mixing::Gamma(k) => {
+                ((k - 1.0) * t.ln() - t - crate::special::ln_gamma(k)).exp()
+            }
+            Mixing::UniformSquare | Mixing::Uniform => {
+                if t < 1.0 {
+                    1.0
+                } else {
+                    0.0
+                }
+            }
         }
     }
 
@@ -56,6 +78,9 @@ impl Mixing {
             Mixing::Gamma1 => alpha / t.sqrt(),
             Mixing::Gamma32 => alpha * t.sqrt(),
             Mixing::Chi3 => alpha * t / std::f64::consts::SQRT_2,
+            Mixing::InverseGamma(k) => alpha * (k / t).sqrt(),
+            Mixing::Gamma(_) | Mixing::UniformSquare => alpha * t.sqrt(),
+            Mixing::Uniform => alpha * t,
         }
     }
 
@@ -63,6 +88,7 @@ impl Mixing {
     fn scale(self, alpha: f64) -> f64 {
         match self {
             Mixing::Frechet2 => alpha,
+            Mixing::InverseGamma(k) | Mixing::Gamma(k) => k,
             _ => 1.0,
         }
     }
@@ -74,6 +100,10 @@ impl Mixing {
             Mixing::Gamma1 => "Gamma-1",
             Mixing::Gamma32 => "Gamma(3/2)",
             Mixing::Chi3 => "Chi-3",
+            Mixing::InverseGamma(_) => "inverse-Gamma",
+            Mixing::Gamma(_) => "Gamma",
+            Mixing::UniformSquare => "uniform in β²",
+            Mixing::Uniform => "uniform in β",
         }
     }
 }
@@ -91,6 +121,10 @@ pub fn superpose(mixing: Mixing, alpha: f64, q: impl Fn(f64) -> f64) -> quad::Qu
         }
         w * q(mixing.roughness(alpha, t))
     };
+    if matches!(mixing, Mixing::Uniform | Mixing::UniformSquare) {
+        // Finite support: tanh-sinh on (0, 1) (the integrand's peak, if any, is at an end).
+        return quad::integrate(f, 0.0, 1.0, 1e-13);
+    }
     // 1e-12 … 1e12 around the weight's scale, 8 points per decade.
     let base = mixing.scale(alpha);
     let mut peak = (base, f(base).abs());

@@ -259,6 +259,12 @@ impl RadialSlopes for AnyNdf {
             AnyNdf::Gtr(n) => n.slope_cdf(r),
             AnyNdf::DoubleGgx(n) => n.slope_cdf(r),
             AnyNdf::Exponential(n) => n.slope_cdf(r),
+            AnyNdf::StudentT(n) => n.slope_cdf(r),
+            AnyNdf::Ei(n) => n.slope_cdf(r),
+            AnyNdf::Erfc(n) => n.slope_cdf(r),
+            AnyNdf::K0(n) => n.slope_cdf(r),
+            AnyNdf::BesselK(n) => n.slope_cdf(r),
+            AnyNdf::GenExponential(n) => n.slope_cdf(r),
         }
     }
     fn slope_ccdf(&self, r: f64) -> f64 {
@@ -268,6 +274,12 @@ impl RadialSlopes for AnyNdf {
             AnyNdf::Gtr(n) => n.slope_ccdf(r),
             AnyNdf::DoubleGgx(n) => n.slope_ccdf(r),
             AnyNdf::Exponential(n) => n.slope_ccdf(r),
+            AnyNdf::StudentT(n) => n.slope_ccdf(r),
+            AnyNdf::Ei(n) => n.slope_ccdf(r),
+            AnyNdf::Erfc(n) => n.slope_ccdf(r),
+            AnyNdf::K0(n) => n.slope_ccdf(r),
+            AnyNdf::BesselK(n) => n.slope_ccdf(r),
+            AnyNdf::GenExponential(n) => n.slope_ccdf(r),
         }
     }
     fn slope_quantile(&self, xi: f64) -> f64 {
@@ -277,6 +289,12 @@ impl RadialSlopes for AnyNdf {
             AnyNdf::Gtr(n) => n.slope_quantile(xi),
             AnyNdf::DoubleGgx(n) => n.slope_quantile(xi),
             AnyNdf::Exponential(n) => n.slope_quantile(xi),
+            AnyNdf::StudentT(n) => n.slope_quantile(xi),
+            AnyNdf::Ei(n) => n.slope_quantile(xi),
+            AnyNdf::Erfc(n) => n.slope_quantile(xi),
+            AnyNdf::K0(n) => n.slope_quantile(xi),
+            AnyNdf::BesselK(n) => n.slope_quantile(xi),
+            AnyNdf::GenExponential(n) => n.slope_quantile(xi),
         }
     }
 }

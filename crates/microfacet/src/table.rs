@@ -127,6 +127,11 @@ macro_rules! with_distribution {
                     Microfacet::<f64, Gtr>::gtr($a, $a, $gamma.unwrap_or(f64::NAN)).map_err(e)?;
                 $body
             }
+            // The rest of the family: the exact path (no fast kernels yet).
+            kind => {
+                let $d = crate::Exact::new(kind, $a, $a, $gamma).map_err(e)?;
+                $body
+            }
         }
     }};
 }

@@ -9,7 +9,7 @@
 use crate::mixture::{superpose_beckmann, superpose_ggx, Mixing};
 use crate::quad::{integrate, integrate_to_inf};
 use crate::smith::delta_sigma;
-use crate::{AnyNdf, DoubleGgx, Exponential, Ggx, Gtr, Ndf, NdfKind};
+use crate::{AnyNdf, DoubleGgx, Exponential, Ggx, Gtr, Ndf, NdfKind, RadialSlopes};
 use std::f64::consts::PI;
 
 /// Tolerance on every residual. The quadratures are asked for 1e-13 and typically reach it;
@@ -58,19 +58,54 @@ impl Check {
 pub struct Sweep {
     pub kinds: Vec<NdfKind>,
     pub alphas: Vec<f64>,
-    /// γ values for GTR.
-    pub gammas: Vec<f64>,
+    /// The shape parameters of the kinds that have one ([`NdfKind::shape_name`]): γ of GTR,
+    /// Student-T and the generalised exponential, a of Bessel-K. A kind with a shape that is
+    /// missing here is swept over [`default_shapes`].
+    pub shapes: Vec<(NdfKind, Vec<f64>)>,
+}
+
+/// The default shape parameters of a kind: GTR γ across the special cases 1, 3/2, 2 and
+/// general values on both sides of 1; Student-T near the pole γ = 3/2, at GGX (2) and heavy to
+/// near-Beckmann; Bessel-K a = 1 (K0), 3/2 (Exponential) and on both sides; the generalised
+/// exponential from stretched tails to a near-flat disk, with γ = 1 and 2 (Exponential(2α),
+/// Beckmann).
+pub fn default_shapes(kind: NdfKind) -> Vec<f64> {
+    match kind {
+        NdfKind::Gtr => vec![0.5, 1.0, 1.5, 2.0, 2.7, 4.0],
+        NdfKind::StudentT => vec![1.55, 2.0, 3.5, 40.0],
+        NdfKind::BesselK => vec![0.3, 1.0, 1.5, 5.0],
+        NdfKind::GenExponential => vec![0.5, 1.0, 2.0, 4.0, 12.0],
+        _ => Vec::new(),
+    }
+}
+
+impl Sweep {
+    /// Every NDF at the given roughness values, shapes by [`default_shapes`].
+    pub fn with_alphas(alphas: Vec<f64>) -> Self {
+        Sweep {
+            kinds: NdfKind::ALL.to_vec(),
+            alphas,
+            shapes: Vec::new(),
+        }
+    }
+
+    /// The shape parameters swept for `kind` (`[None]` for a kind without one).
+    pub fn shapes_of(&self, kind: NdfKind) -> Vec<Option<f64>> {
+        if kind.shape_name().is_none() {
+            return vec![None];
+        }
+        match self.shapes.iter().find(|(k, _)| *k == kind) {
+            Some((_, v)) => v.iter().map(|&g| Some(g)).collect(),
+            None => default_shapes(kind).into_iter().map(Some).collect(),
+        }
+    }
 }
 
 impl Default for Sweep {
-    /// Every NDF; α from specular to beyond 1 (GTR normalisation for α < 1 and α > 1);
-    /// γ across the special cases 1, 3/2, 2 and general values on both sides of 1.
+    /// Every NDF; α from specular to beyond 1 (GTR normalisation for α < 1 and α > 1); the
+    /// shapes of [`default_shapes`].
     fn default() -> Self {
-        Sweep {
-            kinds: NdfKind::ALL.to_vec(),
-            alphas: vec![0.02, 0.2, 0.6, 1.0, 1.7],
-            gammas: vec![0.5, 1.0, 1.5, 2.0, 2.7, 4.0],
-        }
+        Sweep::with_alphas(vec![0.02, 0.2, 0.6, 1.0, 1.7])
     }
 }
 
@@ -121,12 +156,7 @@ pub fn run(sweep: &Sweep, mut report: impl FnMut(&Check)) -> Vec<Check> {
         all.push(c);
     };
     for &kind in &sweep.kinds {
-        let gammas: Vec<Option<f64>> = if kind == NdfKind::Gtr {
-            sweep.gammas.iter().map(|&g| Some(g)).collect()
-        } else {
-            vec![None]
-        };
-        for &gamma in &gammas {
+        for gamma in sweep.shapes_of(kind) {
             for &alpha in &sweep.alphas {
                 let Ok(ndf) = AnyNdf::new(kind, alpha, gamma) else {
                     emit(Check {
@@ -151,8 +181,9 @@ pub fn run(sweep: &Sweep, mut report: impl FnMut(&Check)) -> Vec<Check> {
     all
 }
 
-fn subject(kind: NdfKind, alpha: f64, gamma: Option<f64>) -> String {
-    match gamma {
+fn subject(kind: NdfKind, alpha: f64, shape: Option<f64>) -> String {
+    match shape {
+        Some(g) if kind == NdfKind::BesselK => format!("{kind} α={alpha} a={g}"),
         Some(g) => format!("{kind} α={alpha} γ={g}"),
         None => format!("{kind} α={alpha}"),
     }
@@ -160,7 +191,7 @@ fn subject(kind: NdfKind, alpha: f64, gamma: Option<f64>) -> String {
 
 /// The identities every NDF satisfies.
 pub fn ndf_checks(ndf: &AnyNdf) -> Vec<Check> {
-    let s = subject(ndf.kind(), ndf.alpha(), ndf.gamma());
+    let s = subject(ndf.kind(), ndf.alpha(), ndf.shape());
     let alpha = ndf.alpha();
     let mut out = Vec::new();
     let mut push_tol = |identity: &str, residual: f64, tol: f64| {
@@ -171,7 +202,14 @@ pub fn ndf_checks(ndf: &AnyNdf) -> Vec<Check> {
             tol,
         })
     };
-    let u_tol = u_space_tol(alpha, ndf.gamma());
+    // (The u-space floor's width factor is GTR's γ; the other shapes do not narrow D near
+    // the normal below α².)
+    let gtr_gamma = if ndf.kind() == NdfKind::Gtr {
+        ndf.shape()
+    } else {
+        None
+    };
+    let u_tol = u_space_tol(alpha, gtr_gamma);
     push_tol(
         "∫ D(m) cos θm dm = 1",
         (normalisation_d(ndf) - 1.0).abs(),
@@ -215,6 +253,42 @@ pub fn ndf_checks(ndf: &AnyNdf) -> Vec<Check> {
         }),
     );
     push(
+        "Λ(u) = (1/π)∫₀^∞ Q(cot θ cosh s) sinh s tanh s ds (CCDF route)",
+        max_over(&US, |u| {
+            rel_resolvable(ndf.lambda(u), || lambda_by_ccdf_integral(ndf, u))
+        }),
+    );
+    push(
+        "Q(T) = ∫_T^∞ 2π r P22(r) dr",
+        max_over(&[0.01, 0.3, 1.0, 3.0], |t| {
+            let t = t * alpha;
+            rel_resolvable(ndf.slope_ccdf(t), || q_by_radial_integral(ndf, t))
+        }),
+    );
+    if let Some(m) = ndf.beckmann_mixing() {
+        let name = m.name();
+        push(
+            &format!("D, P2 = {name} superpositions of Beckmann D, P2"),
+            max_over(&US, |u| {
+                let p = 1.0 / u - 1.0;
+                rel(ndf.d(u), superpose_beckmann(m, alpha, |b| b.d(u)))
+                    .max(rel(ndf.p2(p), superpose_beckmann(m, alpha, |b| b.p2(p))))
+            }),
+        );
+        push(
+            &format!("Λ, σ(±u) = {name} superpositions of Beckmann Λ, σ"),
+            max_over(&US, |u| {
+                rel_resolvable(ndf.lambda(u), || {
+                    superpose_beckmann(m, alpha, |b| b.lambda(u))
+                })
+                .max(rel(ndf.sigma(u), superpose_beckmann(m, alpha, |b| b.sigma(u))))
+                .max(rel_resolvable(ndf.sigma(-u), || {
+                    superpose_beckmann(m, alpha, |b| b.sigma(-u))
+                }))
+            }),
+        );
+    }
+    push(
         "(1+Λ(u)) u = σ(u)",
         max_over(&US, |u| rel((1.0 + ndf.lambda(u)) * u, ndf.sigma(u))),
     );
@@ -225,9 +299,28 @@ pub fn ndf_checks(ndf: &AnyNdf) -> Vec<Check> {
     out
 }
 
-/// 2π ∫₀¹ D(u) u du.
+/// The cap near the normal that the u-space checks take in slope space, for the NDFs with
+/// D(1) = +∞ (Ei, Erfc, K0, Bessel-K a ≤ 1): tan θ < r_c = max(10⁻³ α, 10⁻⁶), i.e.
+/// u > u_c = 1/√(1 + r_c²) (1 − u_c ≥ 5e-13: representable). A quadrature node u that rounds
+/// to 1 would see D = ∞ while the true mass of [1 − ulp, 1] is not zero (Erfc: D ~ 1/tan θ
+/// puts ~10⁻⁸/α of the mass within 10⁻¹⁶ of u = 1). `None` where D(1) is finite.
+fn singular_cap(ndf: &impl Ndf) -> Option<(f64, f64)> {
+    if ndf.d(1.0).is_finite() {
+        return None;
+    }
+    let rc = (1e-3 * ndf.alpha()).max(1e-6);
+    let uc = 1.0 / (1.0 + rc * rc).sqrt();
+    // 2π ∫₀^{r_c} r P22(r) dr = 2π ∫_{u_c}^1 D(u) u du.
+    let mass = 2.0 * PI * integrate(|r| r * ndf.p22(r, 0.0), 0.0, rc, 1e-14).value;
+    Some((uc, mass))
+}
+
+/// 2π ∫₀¹ D(u) u du (the cap near a singular D(1) in slope space: `singular_cap`).
 pub fn normalisation_d(ndf: &impl Ndf) -> f64 {
-    2.0 * PI * integrate(|u| ndf.d(u) * u, 0.0, 1.0, 1e-14).value
+    match singular_cap(ndf) {
+        None => 2.0 * PI * integrate(|u| ndf.d(u) * u, 0.0, 1.0, 1e-14).value,
+        Some((uc, mass)) => 2.0 * PI * integrate(|u| ndf.d(u) * u, 0.0, uc, 1e-14).value + mass,
+    }
 }
 
 /// ∫∫ P22 dp dq over the plane, as nested 1-D quadratures over the quarter plane.
@@ -255,17 +348,55 @@ pub fn lambda_by_slope_integral(ndf: &impl Ndf, u: f64) -> f64 {
     integrate_to_inf(|d| d * ndf.p2(a + d), 0.0, s, 1e-13).value / a
 }
 
-/// σ(u) = ∫₀¹ D(ui) Δσ(u, ui) dui, split at the kink ui = √(1−u²) of the kernel.
-pub fn sigma_by_delta_integral(ndf: &impl Ndf, u: f64) -> f64 {
-    let kink = ((1.0 - u) * (1.0 + u)).sqrt();
-    let f = |ui: f64| ndf.d(ui) * delta_sigma(u, ui);
-    let lower = integrate(f, 0.0, kink, 1e-13).value;
-    let upper = if kink < 1.0 {
-        integrate(f, kink, 1.0, 1e-13).value
+/// Λ(u) = (1/π) ∫₀^∞ Q(μ cosh s) sinh s tanh s ds, μ = cot θ, Q the D·cos radial slope
+/// CCDF (the CCDF route: a smooth positive integrand, no P2 needed), split where μ cosh s = α.
+pub fn lambda_by_ccdf_integral(ndf: &AnyNdf, u: f64) -> f64 {
+    let mu = u / ((1.0 - u) * (1.0 + u)).sqrt();
+    let f = |s: f64| ndf.slope_ccdf(mu * s.cosh()) * s.sinh() * s.tanh();
+    let alpha = ndf.alpha();
+    let edge = if mu < alpha {
+        (alpha / mu).acosh()
     } else {
         0.0
     };
-    lower + upper
+    let inner = if edge > 0.0 {
+        integrate(f, 0.0, edge, 1e-13).value
+    } else {
+        0.0
+    };
+    (inner + integrate_to_inf(|d| f(edge + d), 0.0, 1.0, 1e-13).value) / PI
+}
+
+/// Q(T) = ∫_T^∞ 2π r P22(r) dr.
+pub fn q_by_radial_integral(ndf: &impl Ndf, t: f64) -> f64 {
+    let s = t.max(ndf.alpha());
+    2.0 * PI * integrate_to_inf(|d| (t + d) * ndf.p22(t + d, 0.0), 0.0, s, 1e-13).value
+}
+
+/// σ(u) = ∫₀¹ D(ui) Δσ(u, ui) dui, split at the kink ui = √(1−u²) of the kernel. Where D(1)
+/// is infinite the cap ui > u_c is taken in slope space (`singular_cap`: there Δσ = 2π u ui
+/// for u > 0, 0 for u < 0), and at u = 0 a node at ui = 1 (D = ∞, Δσ = 0) counts 0.
+pub fn sigma_by_delta_integral(ndf: &impl Ndf, u: f64) -> f64 {
+    let kink = ((1.0 - u) * (1.0 + u)).sqrt();
+    let f = |ui: f64| {
+        let v = ndf.d(ui) * delta_sigma(u, ui);
+        if v.is_nan() && !ui.is_nan() {
+            0.0
+        } else {
+            v
+        }
+    };
+    let (top, cap) = match singular_cap(ndf) {
+        Some((uc, mass)) if uc > kink => (uc, u.max(0.0) * mass),
+        _ => (1.0, 0.0),
+    };
+    let lower = integrate(f, 0.0, kink, 1e-13).value;
+    let upper = if kink < top {
+        integrate(f, kink, top, 1e-13).value
+    } else {
+        0.0
+    };
+    lower + upper + cap
 }
 
 /// The superposition identities and GTR γ = 2 ≡ GGX, at roughness α.
@@ -343,6 +474,32 @@ pub fn family_checks(sweep: &Sweep, alpha: f64) -> Vec<Check> {
                     rel(e.sigma(u), superpose_beckmann(m, alpha, |b| b.sigma(u)))
                 }),
             );
+        }
+    }
+    // The family's special cases: each pair compared in D, P2, Λ, σ(−u) and Q.
+    let same = |a: &AnyNdf, b: &AnyNdf| {
+        max_over(&US, |u| {
+            let p = 1.0 / u - 1.0;
+            rel(a.d(u), b.d(u))
+                .max(rel(a.p2(p), b.p2(p)))
+                .max(rel(a.lambda(u), b.lambda(u)))
+                .max(rel(a.sigma(-u), b.sigma(-u)))
+                .max(rel(a.slope_ccdf(p), b.slope_ccdf(p)))
+        })
+    };
+    let any = |k: NdfKind, a: f64, g: Option<f64>| AnyNdf::new(k, a, g).expect("valid");
+    let cases = [
+        (NdfKind::StudentT, Some(2.0), NdfKind::Ggx, 1.0, "Student-T γ = 2 ≡ GGX"),
+        (NdfKind::BesselK, Some(1.0), NdfKind::K0, 1.0, "Bessel-K a = 1 ≡ K0"),
+        (NdfKind::BesselK, Some(1.5), NdfKind::Exponential, 1.0, "Bessel-K a = 3/2 ≡ Exponential"),
+        (NdfKind::GenExponential, Some(2.0), NdfKind::Beckmann, 1.0, "generalised exponential γ = 2 ≡ Beckmann"),
+        (NdfKind::GenExponential, Some(1.0), NdfKind::Exponential, 2.0, "generalised exponential γ = 1 ≡ Exponential(2α)"),
+    ];
+    for (k, g, other, scale, label) in cases {
+        if has(k) && (alpha * scale) <= crate::error::ALPHA_MAX {
+            let a = any(k, alpha, g);
+            let b = any(other, alpha * scale, None);
+            push(subject(k, alpha, g), label, same(&a, &b));
         }
     }
     if has(NdfKind::Gtr) && has(NdfKind::Ggx) {

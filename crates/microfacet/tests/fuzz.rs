@@ -536,7 +536,7 @@ fn isotropic_samplers() {
         AnyNdf::Ggx(Ggx::new(0.3).unwrap()),
         AnyNdf::Exponential(Exponential::new(0.3).unwrap()),
     ] {
-        let iso = Exact::new(n.kind(), n.alpha(), n.alpha(), n.gamma()).unwrap();
+        let iso = Exact::new(n.kind(), n.alpha(), n.alpha(), n.shape()).unwrap();
         for w in [
             Vec3::new(1.0, 0.0, 0.0),
             Vec3::new(1.0, 0.0, 1e-300),
@@ -578,7 +578,7 @@ fn isotropic_samplers() {
         AnyNdf::Gtr(Gtr::new(0.3, 1.5).unwrap()),
         AnyNdf::DoubleGgx(DoubleGgx::new(0.3).unwrap()),
     ] {
-        let e = Exact::new(n.kind(), n.alpha(), n.alpha(), n.gamma()).unwrap();
+        let e = Exact::new(n.kind(), n.alpha(), n.alpha(), n.shape()).unwrap();
         let m = Vec3::from(e.sample_wm([0.6, 0.0, 0.8], [1.0, 0.5]));
         let len = m.length();
         fails.check(len.is_nan() || (len - 1.0).abs() < 1e-12, || {

@@ -31,7 +31,7 @@ fn removable_singularities_and_extreme_roughness() {
     assert_all_pass(&Sweep {
         kinds: NdfKind::ALL.to_vec(),
         alphas: vec![1e-3, 1.0 - 1e-12, 1.0 + 1e-12, 3.0, 10.0],
-        gammas: vec![0.3, 1.0 - 1e-12, 1.0 + 1e-12, 1.5, 6.0],
+        shapes: vec![(NdfKind::Gtr, vec![0.3, 1.0 - 1e-12, 1.0 + 1e-12, 1.5, 6.0])],
     });
 }
 
@@ -43,6 +43,6 @@ fn the_accepted_range_extremes() {
     assert_all_pass(&Sweep {
         kinds: NdfKind::ALL.to_vec(),
         alphas: vec![1e-6, 1e-3, 1e3, 1e6],
-        gammas: vec![1e-300, 1e-3, 27.0, 52.0, 100.0],
+        shapes: vec![(NdfKind::Gtr, vec![1e-300, 1e-3, 27.0, 52.0, 100.0])],
     });
 }

@@ -27,11 +27,11 @@ fn is_numeric(ndf: &AnyNdf, quantity: &str) -> bool {
     match (ndf.kind(), quantity) {
         (NdfKind::Exponential, "Lambda" | "sigma" | "G1") => true,
         (NdfKind::Gtr, "Lambda" | "sigma" | "G1") => {
-            let g = ndf.gamma().unwrap();
+            let g = ndf.shape().unwrap();
             g != 1.0 && g != 2.0
         }
         (NdfKind::Gtr, "P2") => {
-            let g = ndf.gamma().unwrap();
+            let g = ndf.shape().unwrap();
             g != 1.0 && g != 1.5 && g != 2.0
         }
         (NdfKind::DoubleGgx, "P2") => true,
