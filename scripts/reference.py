@@ -410,7 +410,8 @@ def main():
             v = P2(p)
             if not mp.isfinite(v):
                 continue  # P2(0) = inf (Erfc; Bessel-K a <= 1/2): tested in the unit tests
-            m = {"closed form": v, "integral of P22 dq": 2 * quad(lambda q: P(sqrt(p**2 + q**2)), breaks(0, a / 16))}
+            # (the integrand in q falls on the scale a^2/p for p >> a: start the grid there)
+            m = {"closed form": v, "integral of P22 dq": 2 * quad(lambda q: P(sqrt(p**2 + q**2)), breaks(0, min(a / 16, a * a / (16 * (abs(p) + a))), 16))}
             out.append(rec(ndf, a, g, "P2", v, m, p=p))
             q = dec("0.25")
             out.append(rec(ndf, a, g, "P22", P(sqrt(p**2 + q**2)), {"closed form": P(sqrt(p**2 + q**2))}, p=p, q=q))

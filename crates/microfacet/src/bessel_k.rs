@@ -14,14 +14,16 @@
 //! same α); a → ∞ with α√a fixed is Beckmann. The page gives D, P22, the normalisation and the
 //! superpositions; P2, Q, Λ and σ(0) are derived (docs/derivations.md E.5).
 //!
-//! **Computation.** No Rust crate has K_ν of real order or the integrated Bessel function Ki_ν,
-//! so every quantity is computed from the superposition, where each is the Gamma(a) average
-//! of a Beckmann closed form (σ, and so Λ(u) = σ(−u)/u at fixed u, are linear in D):
-//! P22 = E[e^{−x²/m}/(π α² m)], P2 = E[e^{−p²/(α²m)}/(√π α √m)], Q = E[e^{−x²/m}],
-//! 1 − Q = E[1 − e^{−x²/m}] and Λ = E[Λ_Beckmann(cot θ/(α√m))]: one tanh-sinh quadrature
-//! over m (relative tolerance 1e-14) of a positive integrand, with the quadrature's scale at
-//! the integrand's peak m* (the root of (a − 1 − k)/m − 1 + x²/m² = 0 for an integrand
-//! ~ m^{a−1−k} e^{−m − x²/m}).
+//! **Computation.** No Rust crate has K_ν of real order or the integrated Bessel function Ki_ν.
+//! P22, P2 and Q are the closed forms above with K_ν from [`crate::special::ln_bessel_k`]
+//! (the trapezoidal rule on ∫ e^{−z cosh t} cosh νt dt, exponentially convergent). Λ, and 1 − Q
+//! where Q > ½ (where 1 − Q would cancel), come from the superposition, as the Gamma(a)
+//! average of a Beckmann closed form (σ, and so Λ(u) = σ(−u)/u at fixed u, are linear in D):
+//! Λ = E[Λ_Beckmann(cot θ/(α√m))], 1 − Q = E[1 − e^{−x²/m}]: one tanh-sinh quadrature over m
+//! (relative tolerance 1e-14) of a positive integrand, with the quadrature's scale at the
+//! integrand's peak m* (the root of (a − 1 − k)/m − 1 + x²/m² = 0 for an integrand
+//! ~ m^{a−1−k} e^{−m − x²/m}); the identity checks compare P22, P2 and Q with the same
+//! averages (`microfacet verify`).
 //!
 //! **Parameters.** α ∈ [1e-6, 1e6], a ∈ [0.1, 100]. Below a = 0.1 the Gamma weight puts
 //! 1 − 10^{−30a} of its mass below m = 1e-30 (a spike that no longer tests anything a
@@ -31,7 +33,8 @@
 use crate::error::{check_alpha, check_shape, ParamError};
 use crate::ndf::{Ndf, ShapeInvariant};
 use crate::sample::RadialSlopes;
-use crate::special::{gamma_ratio_half, ln_gamma};
+use crate::special::{gamma_ratio_half, ln_bessel_k, ln_gamma};
+use std::f64::consts::LN_2;
 use std::f64::consts::PI;
 
 /// √π
@@ -118,7 +121,7 @@ impl BesselK {
         .value
     }
 
-    /// P22 at x² = r²/α² (for x² > 0).
+    /// P22 at x² = r²/α² (for x² > 0): (2/(π α² Γ(a))) x^{a−1} K_{a−1}(2x).
     fn p22_x2(&self, x2: f64) -> f64 {
         if x2.is_nan() {
             return x2;
@@ -129,7 +132,10 @@ impl BesselK {
         if x2 == f64::INFINITY {
             return 0.0;
         }
-        self.mix(1.0, x2, |m, _| (-x2 / m).exp() / m) / (PI * self.alpha * self.alpha)
+        let x = x2.sqrt();
+        let ln = (self.a - 1.0) * x.ln() + ln_bessel_k(self.a - 1.0, 2.0 * x) + LN_2
+            - self.ln_gamma_a;
+        ln.exp() / (PI * self.alpha * self.alpha)
     }
 
     /// P22(0) = D(1) = E[1/m]/(π α²) = 1/(π α² (a − 1)) for a > 1, +∞ otherwise.
@@ -183,7 +189,10 @@ impl Ndf for BesselK {
             }
             return 1.0 / (gamma_ratio_half(self.a - 0.5) * SQRT_PI * self.alpha);
         }
-        self.mix(0.5, x2, |m, lm| (-x2 / m - 0.5 * lm).exp()) / (SQRT_PI * self.alpha)
+        // 2 x^{a−½} K_{a−½}(2x)/(√π α Γ(a)).
+        let ln = (self.a - 0.5) * x.ln() + ln_bessel_k(self.a - 0.5, 2.0 * x) + LN_2
+            - self.ln_gamma_a;
+        ln.exp() / (SQRT_PI * self.alpha)
     }
 
     fn lambda_pos(&self, u: f64) -> f64 {
@@ -220,6 +229,12 @@ impl RadialSlopes for BesselK {
         if x2 == f64::INFINITY {
             return 1.0;
         }
+        // 1 − Q where Q ≤ ½ (no cancellation); below, E[1 − e^{−x²/m}] over the mixture
+        // (positive terms: 1 − Q would cancel as x → 0).
+        let q = self.slope_ccdf(r);
+        if q <= 0.5 {
+            return 1.0 - q;
+        }
         self.mix(0.0, x2, |m, _| -(-x2 / m).exp_m1()).min(1.0)
     }
     fn slope_ccdf(&self, r: f64) -> f64 {
@@ -234,6 +249,8 @@ impl RadialSlopes for BesselK {
         if x2 == f64::INFINITY {
             return 0.0;
         }
-        self.mix(0.0, x2, |m, _| (-x2 / m).exp()).min(1.0)
+        // Q = 2 x^a K_a(2x)/Γ(a).
+        let ln = self.a * x.ln() + ln_bessel_k(self.a, 2.0 * x) + LN_2 - self.ln_gamma_a;
+        ln.exp().min(1.0)
     }
 }

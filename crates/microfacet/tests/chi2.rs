@@ -20,7 +20,8 @@ const KINDS: [NdfKind; 4] = [
 const ALPHAS: [f64; 4] = [0.05, 0.3, 1.0, 2.0];
 const INCIDENCE_DEG: [f64; 4] = [0.0, 45.0, 80.0, 89.0];
 /// Upper bound on the number of tests in this file (for the Šidák correction).
-const TESTS: usize = 4 * 4 * 2 * (4 + 1) + 4 * 5 + 4 * 3 + 4 * 4 * 4 + 4 + 4 * 4 * 2 + 3 * 32 + 6;
+const TESTS: usize =
+    4 * 4 * 2 * (4 + 1) + 4 * 5 + 4 * 3 + 4 * 4 * 4 + 4 + 4 * 4 * 2 + 3 * 32 + 6 + 12 + 12 * 2 * 4;
 
 fn direction(deg: f64) -> Vec3 {
     let t = deg.to_radians();
@@ -123,6 +124,87 @@ fn samples(kind: NdfKind) -> usize {
         NdfKind::Beckmann | NdfKind::Ggx => 200_000,
         _ => 20_000,
     }
+}
+
+/// The rest of the family through the exact path (radial visible inversion on the stretched
+/// α = 1 member): D·cos and visible normals against the exact D and σ.
+fn run_family(kind: NdfKind, shape: Option<f64>, ax: f64, ay: f64, deg: Option<f64>, n: usize) {
+    let m = Exact::new(kind, ax, ay, shape).unwrap();
+    let coords = reference(ax, ay);
+    let seed = (ax * 1e3) as u64 ^ ((ay * 1e5) as u64) << 8 ^ (kind as u64) << 20;
+    let label = format!("{kind:?} {shape:?} α=({ax},{ay})");
+    match deg {
+        None => check(
+            &format!("{label} D·cos"),
+            chi2_test(
+                |u| m.sample_dcos(u).wm.into(),
+                |w| m.pdf_dcos(w.into()),
+                &DcosCoordinates(&coords),
+                n,
+                24,
+                seed,
+            ),
+        ),
+        Some(deg) => {
+            let wi = direction(deg);
+            check_visible(
+                &format!("{label} visible θi={deg}°"),
+                &m,
+                wi,
+                &coords,
+                n,
+                seed + deg as u64,
+                |u| m.sample_wm(wi.into(), u).into(),
+            );
+        }
+    }
+}
+
+/// One shape per family member for the default run (Bessel-K's visible sampler integrates a
+/// quadrature inside a quadrature: fewer samples).
+const FAMILY: [(NdfKind, Option<f64>, usize); 6] = [
+    (NdfKind::StudentT, Some(1.8), 20_000),
+    (NdfKind::Ei, None, 20_000),
+    (NdfKind::Erfc, None, 20_000),
+    (NdfKind::K0, None, 20_000),
+    (NdfKind::BesselK, Some(0.6), 5_000),
+    (NdfKind::GenExponential, Some(6.0), 20_000),
+];
+
+#[test]
+fn family_fast_subset() {
+    for (kind, shape, n) in FAMILY {
+        run_family(kind, shape, 0.3, 0.3, None, n);
+        run_family(kind, shape, 0.5, 0.15, Some(60.0), n);
+    }
+}
+
+/// The family over its shape ranges: the ends of each range, two roughnesses, D·cos and three
+/// incidences (run by .ci/run).
+#[test]
+#[ignore = "full sweep: run by .ci/run with --ignored"]
+fn family_sweep() {
+    let mut cases = Vec::new();
+    for (kind, shapes) in [
+        (NdfKind::StudentT, vec![Some(1.55), Some(4.0), Some(1e4)]),
+        (NdfKind::Ei, vec![None]),
+        (NdfKind::Erfc, vec![None]),
+        (NdfKind::K0, vec![None]),
+        (NdfKind::BesselK, vec![Some(0.1), Some(2.5), Some(100.0)]),
+        (NdfKind::GenExponential, vec![Some(0.1), Some(1.7), Some(20.0)]),
+    ] {
+        for shape in shapes {
+            for (ax, ay) in [(0.05, 0.05), (1.0, 0.4)] {
+                for deg in [None, Some(0.0), Some(80.0), Some(89.0)] {
+                    cases.push((kind, shape, ax, ay, deg));
+                }
+            }
+        }
+    }
+    on_every_core(&cases, |&(kind, shape, ax, ay, deg)| {
+        let n = if kind == NdfKind::BesselK { 4_000 } else { 10_000 };
+        run_family(kind, shape, ax, ay, deg, n)
+    });
 }
 
 #[test]

@@ -17,7 +17,7 @@ fn bad_alpha_is_rejected_by_every_ndf() {
     ] {
         assert!(matches!(Beckmann::new(a), Err(ParamError::Alpha(_))));
         for kind in NdfKind::ALL {
-            let err = AnyNdf::new(kind, a, Some(1.5)).unwrap_err();
+            let err = AnyNdf::new(kind, a, Some(2.5)).unwrap_err();
             assert!(matches!(err, ParamError::Alpha(_)), "{kind} α={a}: {err:?}");
             let msg = err.to_string();
             assert!(msg.contains("alpha"), "{msg}");
@@ -41,11 +41,34 @@ fn bad_gamma_is_rejected() {
     assert!(matches!(err, ParamError::Gamma(_)));
 }
 
+/// The shape parameters at the ends of each kind's accepted range (and GTR's γ = 1), or
+/// `[None]` for a kind without one.
+fn edge_shapes(kind: NdfKind) -> Vec<Option<f64>> {
+    match kind {
+        NdfKind::Gtr => vec![Some(1.0)],
+        NdfKind::StudentT => vec![Some(1.0 + 1e-12), Some(1e6)],
+        NdfKind::BesselK => vec![Some(0.1), Some(100.0)],
+        NdfKind::GenExponential => vec![Some(0.1), Some(20.0)],
+        _ => vec![None],
+    }
+}
+
+/// Shapes where Λ and σ are finite: the ends of the ranges, Student-T above its pole γ = 3/2.
+fn finite_shapes(kind: NdfKind) -> Vec<Option<f64>> {
+    match kind {
+        NdfKind::Gtr => vec![Some(1.5)],
+        NdfKind::StudentT => vec![Some(1.5 + 1e-9), Some(2.5), Some(1e6)],
+        _ => edge_shapes(kind),
+    }
+}
+
 #[test]
 fn domain_edges_are_accepted() {
     for a in [1e-6, 1e-4, 1.0, 10.0, 1e6] {
         for kind in NdfKind::ALL {
-            AnyNdf::new(kind, a, Some(1.0)).unwrap();
+            for g in edge_shapes(kind) {
+                AnyNdf::new(kind, a, g).unwrap();
+            }
         }
     }
     for g in [1e-9, 0.5, 1.0, 1.0 + 1e-12, 100.0] {
@@ -56,8 +79,11 @@ fn domain_edges_are_accepted() {
 #[test]
 fn evaluation_at_the_edges() {
     for kind in NdfKind::ALL {
-        for a in [1e-4, 0.3, 1.0, 10.0] {
-            let n = AnyNdf::new(kind, a, Some(1.5)).unwrap();
+        for (a, g) in [1e-4, 0.3, 1.0, 10.0]
+            .into_iter()
+            .flat_map(|a| finite_shapes(kind).into_iter().map(move |g| (a, g)))
+        {
+            let n = AnyNdf::new(kind, a, g).unwrap();
             // Normal incidence: no masking; σ(±1) = (1±1)/2.
             assert_eq!(n.lambda(1.0), 0.0);
             assert_eq!(n.g1(1.0), 1.0);

@@ -124,6 +124,32 @@ fn gamma(r: &mut Rng) -> f64 {
     }
 }
 
+/// A shape parameter of `kind` anywhere in its accepted range, the ends and special values
+/// often (GTR: [`gamma`]); `finite_lambda` keeps Student-T above its pole γ = 3/2 (the
+/// direction API's range). `None` for the kinds without one.
+fn shape(r: &mut Rng, kind: NdfKind, finite_lambda: bool) -> Option<f64> {
+    let (lo, hi, special): (f64, f64, &[f64]) = match kind {
+        NdfKind::Gtr => return Some(gamma(r)),
+        NdfKind::StudentT if finite_lambda => (1.5 + 1e-12, 1e6, &[1.5 + 1e-9, 2.0, 1e6]),
+        NdfKind::StudentT => (1.0 + 1e-12, 1e6, &[1.0 + 1e-12, 1.5, 1.5 + 1e-9, 2.0, 1e6]),
+        NdfKind::BesselK => (0.1, 100.0, &[0.1, 0.5, 1.0, 1.5, 100.0]),
+        NdfKind::GenExponential => (0.1, 20.0, &[0.1, 1.0, 2.0, 20.0]),
+        _ => return None,
+    };
+    Some(if r.chance(0.4) {
+        r.pick(special)
+    } else {
+        // log-uniform over the range (Student-T: over γ − 1)
+        let t = r.f64();
+        if kind == NdfKind::StudentT {
+            1.0 + ((lo - 1.0).ln() + t * ((hi - 1.0).ln() - (lo - 1.0).ln())).exp()
+        } else {
+            (lo.ln() + t * (hi.ln() - lo.ln())).exp()
+        }
+        .clamp(lo, hi)
+    })
+}
+
 /// A cosine in the contract: [−1, 1] and 1 + 2ε, with the edges.
 fn cosine(r: &mut Rng) -> f64 {
     let u = match r.below(5) {
@@ -278,7 +304,8 @@ impl Failures {
 
 fn ndf(r: &mut Rng) -> AnyNdf {
     let kind = r.pick(&NdfKind::ALL);
-    AnyNdf::new(kind, alpha(r), Some(gamma(r))).expect("accepted parameters")
+    let g = shape(r, kind, false);
+    AnyNdf::new(kind, alpha(r), g).expect("accepted parameters")
 }
 
 /// The scalar quantities of the exact NDFs over the whole domain.
@@ -519,7 +546,8 @@ fn isotropic_samplers() {
     for _ in 0..6 * scale() {
         for kind in NdfKind::ALL {
             let a = alpha(&mut r);
-            let ms = Exact::new(kind, a, a, Some(gamma(&mut r))).unwrap();
+            let g = shape(&mut r, kind, true);
+            let ms = Exact::new(kind, a, a, g).unwrap();
             let count = match kind {
                 NdfKind::Beckmann | NdfKind::Ggx => 6,
                 _ => 2,

@@ -317,3 +317,46 @@ pub fn inc_gamma(a: f64, x: f64) -> (f64, f64) {
         spec_math::cephes64::igamc(a, x),
     )
 }
+
+/// ln K_ν(z) for real ν and z > 0: the modified Bessel function of the second kind of any real
+/// order (no Rust crate has it), from K_ν(z) = ∫₀^∞ e^{−z cosh t} cosh(νt) dt by the
+/// trapezoidal rule on the whole line (the integrand is even and entire in t, so the rule
+/// converges exponentially: with step h ≤ min(¼, w/2), w = (ν² + z²)^{−¼} the width of the
+/// peak at sinh t* = |ν|/z, the error terms e^{−π²/h} and e^{−2π²w²/h²} are below 1e-17).
+/// Summed in logarithms from the peak (no overflow for large ν or small z). Relative accuracy
+/// ~1e-15 plus the conditioning of e^{−z} (z ε).
+pub fn ln_bessel_k(nu: f64, z: f64) -> f64 {
+    if z.is_nan() || nu.is_nan() {
+        return f64::NAN;
+    }
+    if z <= 0.0 {
+        return f64::INFINITY;
+    }
+    if z == f64::INFINITY {
+        return f64::NEG_INFINITY;
+    }
+    let nu = nu.abs();
+    // φ(t) = −z cosh t + ν t + ln((1 + e^{−2νt})/2) = ln(e^{−z cosh t} cosh νt).
+    let phi = |t: f64| -z * t.cosh() + nu * t + (-2.0 * nu * t).exp().ln_1p() - std::f64::consts::LN_2;
+    let t_star = (nu / z).asinh();
+    let w = (nu * nu + z * z).powf(-0.25);
+    let h = (0.5 * w).min(0.25);
+    let peak = phi(t_star);
+    // Σ over k ≥ 0 of e^{φ(kh) − peak}, the k = 0 term halved; past the peak, stop where the
+    // terms are below 1e-18 of the largest (e^{−41.4}).
+    let mut sum = 0.5 * (phi(0.0) - peak).exp();
+    let mut k = 1u32;
+    loop {
+        let t = k as f64 * h;
+        let d = phi(t) - peak;
+        sum += d.exp();
+        if t > t_star && d < -41.5 {
+            break;
+        }
+        k += 1;
+        if k > 100_000 {
+            break;
+        }
+    }
+    peak + (h * sum).ln()
+}
