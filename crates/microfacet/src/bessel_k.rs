@@ -12,7 +12,7 @@
 //!
 //! a = 1 is the K0 NDF ([`crate::K0`]), a = 3/2 the Exponential NDF ([`crate::Exponential`],
 //! same α); a → ∞ with α√a fixed is Beckmann. The page gives D, P22, the normalisation and the
-//! superpositions; P2, Q, Λ and σ(0) are derived (docs/derivations.md E.5).
+//! superpositions; P2, Q, Λ and σ(0) are derived (docs/derivations.md F.5).
 //!
 //! **Computation.** No Rust crate has K_ν of real order or the integrated Bessel function Ki_ν.
 //! P22, P2 and Q are the closed forms above with K_ν from [`crate::special::ln_bessel_k`]

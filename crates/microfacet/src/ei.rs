@@ -10,7 +10,7 @@
 //!
 //! D(1) = P22(0) = +∞ (logarithmic). These are the page's `Ei`Λ` and `Ei`σ` (which the
 //! Exponential NDF page uses, with α scaled by 1.7, as an approximation: [`crate::exponential::approx`]);
-//! P2 and Q are derived (docs/derivations.md E.2). Valid for α ∈ [1e-6, 1e6].
+//! P2 and Q are derived (docs/derivations.md F.2). Valid for α ∈ [1e-6, 1e6].
 //!
 //! # Numerics
 //! * E₁ through [`crate::special::e1_with`] (the continued fraction above 1, with e^{−y} in

@@ -7,7 +7,7 @@
 //! σ(0) = α/(4√π),  Q(T) = e^{−y²} − √π y erfc y,  y = T/α.
 //!
 //! D(1) = P22(0) = P2(0) = +∞ (D like 1/tan θ, P2 logarithmic). Λ is the page's (In[2692]);
-//! P2 and Q are derived (docs/derivations.md E.3). Valid for α ∈ [1e-6, 1e6].
+//! P2 and Q are derived (docs/derivations.md F.3). Valid for α ∈ [1e-6, 1e6].
 //!
 //! # Numerics
 //! * Q = e^{−y²} k/(y + k) for y ≥ 2 by the erfc continued fraction (the difference cancels

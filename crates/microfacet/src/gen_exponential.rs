@@ -9,12 +9,12 @@
 //!
 //! γ = 2 is Beckmann(α); γ = 1 is the Exponential NDF with roughness 2α (the page's In[2420]:
 //! the roughness differs by a factor 2). For γ > 2 it is not a Beckmann superposition. Q,
-//! P2(0) and σ(0) are derived (docs/derivations.md E.6); the page gives D, P22, the
+//! P2(0) and σ(0) are derived (docs/derivations.md F.6); the page gives D, P22, the
 //! normalisation, and P2 for γ = 1, 2 and 4.
 //!
 //! **Numerical quantities.** P2(p) = 2 ∫₀^∞ P22(√(p² + q²)) dq, and Λ by the CCDF route
 //! Λ(u) = (1/π) ∫₀^∞ Q(cot θ · cosh s) sinh s tanh s ds (a smooth positive integrand with
-//! double-exponential decay; docs/derivations.md E.6), each by tanh-sinh (relative tolerance
+//! double-exponential decay; docs/derivations.md F.6), each by tanh-sinh (relative tolerance
 //! 1e-14) with a breakpoint where the slope crosses α (for large γ, P22 is nearly a flat disk
 //! of radius α with an edge of width α/γ). σ(−u) = u Λ(u).
 //!

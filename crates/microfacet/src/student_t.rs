@@ -11,7 +11,7 @@
 //! γ = 2 is GGX(α) exactly; γ → ∞ is Beckmann(α) (relative difference O((r/α)⁴/γ)). It is a
 //! superposition of Beckmann NDFs: m ~ Gamma(γ − 1, 1), component roughness α√((γ−1)/m).
 //!
-//! **Λ** (derived; docs/derivations.md E.1). With ζ = cot θ/√c, z₀ = 1/(1 + ζ²),
+//! **Λ** (derived; docs/derivations.md F.1). With ζ = cot θ/√c, z₀ = 1/(1 + ζ²),
 //! s = √(1 + ζ²), b = γ − 1:
 //!
 //!   Λ = z₀^b/B(b, ½) · s/((2b − 1) ζ) − I_{z₀}(b, ½)/2            (incomplete beta)
