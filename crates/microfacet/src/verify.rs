@@ -316,15 +316,18 @@ pub fn ndf_checks(ndf: &AnyNdf) -> Vec<Check> {
 }
 
 /// The cap near the normal that the u-space checks take in slope space, for the NDFs with
-/// D(1) = +∞ (Ei, Erfc, K0, Bessel-K a ≤ 1): tan θ < r_c = max(10⁻³ α, 10⁻⁶), i.e.
-/// u > u_c = 1/√(1 + r_c²) (1 − u_c ≥ 5e-13: representable). A quadrature node u that rounds
-/// to 1 would see D = ∞ while the true mass of [1 − ulp, 1] is not zero (Erfc: D ~ 1/tan θ
-/// puts ~10⁻⁸/α of the mass within 10⁻¹⁶ of u = 1). `None` where D(1) is finite.
-fn singular_cap(ndf: &impl Ndf) -> Option<(f64, f64)> {
+/// D(1) = +∞ (Ei, Erfc, K0, Bessel-K a ≤ 1): tan θ < r_c (α, or less where the caller needs
+/// the cap inside a region: `r_max`), i.e. u > u_c = 1/√(1 + r_c²).
+/// A quadrature node u that rounds to 1 would see D = ∞ while the true mass of [1 − ulp, 1]
+/// is not zero (Erfc: D ~ 1/tan θ puts ~10⁻⁸/α of the mass within 10⁻¹⁶ of u = 1), and a
+/// node near u = 1 carries the rounding of 1 − u (relative ε/(1 − u)) into D amplified by the
+/// singularity: with the cap at α the u-space part keeps the floor of [`u_space_tol`].
+/// `None` where D(1) is finite.
+fn singular_cap(ndf: &impl Ndf, r_max: f64) -> Option<(f64, f64)> {
     if ndf.d(1.0).is_finite() {
         return None;
     }
-    let rc = (1e-3 * ndf.alpha()).max(1e-6);
+    let rc = ndf.alpha().min(r_max);
     let uc = 1.0 / (1.0 + rc * rc).sqrt();
     // 2π ∫₀^{r_c} r P22(r) dr = 2π ∫_{u_c}^1 D(u) u du.
     let mass = 2.0 * PI * integrate(|r| r * ndf.p22(r, 0.0), 0.0, rc, 1e-14).value;
@@ -333,7 +336,7 @@ fn singular_cap(ndf: &impl Ndf) -> Option<(f64, f64)> {
 
 /// 2π ∫₀¹ D(u) u du (the cap near a singular D(1) in slope space: `singular_cap`).
 pub fn normalisation_d(ndf: &impl Ndf) -> f64 {
-    match singular_cap(ndf) {
+    match singular_cap(ndf, f64::INFINITY) {
         None => 2.0 * PI * integrate(|u| ndf.d(u) * u, 0.0, 1.0, 1e-14).value,
         Some((uc, mass)) => 2.0 * PI * integrate(|u| ndf.d(u) * u, 0.0, uc, 1e-14).value + mass,
     }
@@ -421,8 +424,11 @@ pub fn sigma_by_delta_integral(ndf: &impl Ndf, u: f64) -> f64 {
             v
         }
     };
-    let (top, cap) = match singular_cap(ndf) {
-        Some((uc, mass)) if uc > kink => (uc, u.max(0.0) * mass),
+    // The cap must lie where every azimuth is lit or none is (ui > kink): half the slope
+    // of the kink, tan θ_kink = |u|/√(1 − u²).
+    let r_kink = u.abs() / ((1.0 - u) * (1.0 + u)).sqrt();
+    let (top, cap) = match singular_cap(ndf, 0.5 * r_kink) {
+        Some((uc, mass)) if uc > kink && r_kink > 0.0 => (uc, u.max(0.0) * mass),
         _ => (1.0, 0.0),
     };
     let lower = integrate(f, 0.0, kink, 1e-13).value;
