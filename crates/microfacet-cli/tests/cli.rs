@@ -375,7 +375,7 @@ fn sample_argument_rules() {
 fn verify_gamma_needs_gtr() {
     one_line_error(
         &microfacet(&["verify", "--ndf", "ggx", "--gamma", "2"], ""),
-        "--gamma applies to gtr only",
+        "--gamma applies to gtr, student_t and gen_exponential only",
     );
 }
 
