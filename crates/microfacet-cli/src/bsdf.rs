@@ -17,7 +17,8 @@ pub fn run(args: &[String]) -> Result<ExitCode, String> {
 }
 
 const FIELDS: [&str; 14] = [
-    "bsdf", "ndf", "alpha", "gamma", "a", "eta", "k", "g2", "op", "wo", "wi", "u", "samples", "seed",
+    "bsdf", "ndf", "alpha", "gamma", "a", "eta", "k", "g2", "op", "wo", "wi", "u", "samples",
+    "seed",
 ];
 
 /// Samples per eval_ms line at most (10⁹: minutes; a typo's 10²⁰ is an error, not a hang).

@@ -196,7 +196,9 @@ pub fn eval_line(line: &str) -> Result<f64, String> {
             return Err(format!(
                 "unknown field '{}' for {name} {quantity} (expected ndf, alpha{}, quantity, {})",
                 crate::clip(key),
-                kind.shape_name().map(|n| format!(", {n}")).unwrap_or_default(),
+                kind.shape_name()
+                    .map(|n| format!(", {n}"))
+                    .unwrap_or_default(),
                 args.join(", ")
             ));
         }

@@ -52,11 +52,9 @@ macro_rules! with_ndf {
                 let $d = Microfacet::<f64, Gtr>::gtr(a, a, $gamma).expect("valid α, γ");
                 $body
             }
-            // The rest of the family: the exact path, at the shape `$gamma`.
-            kind => {
-                let $d = microfacet::Exact::new(kind, a, a, Some($gamma)).expect("valid α, shape");
-                $body
-            }
+            // The BSDF and multiple-scattering sections cover NdfKind::CLASSIC (the family has
+            // no fast kernels yet).
+            kind => unreachable!("{kind}: the report's BSDF sections cover the classic NDFs"),
         }
     }};
 }

@@ -104,7 +104,7 @@ impl BesselK {
         let ln_g = self.ln_gamma_a;
         crate::quad::integrate_to_inf(
             |m| {
-                if !(m > 0.0) || !m.is_finite() {
+                if m.is_nan() || m <= 0.0 || !m.is_finite() {
                     return 0.0;
                 }
                 let lm = m.ln();
@@ -133,8 +133,8 @@ impl BesselK {
             return 0.0;
         }
         let x = x2.sqrt();
-        let ln = (self.a - 1.0) * x.ln() + ln_bessel_k(self.a - 1.0, 2.0 * x) + LN_2
-            - self.ln_gamma_a;
+        let ln =
+            (self.a - 1.0) * x.ln() + ln_bessel_k(self.a - 1.0, 2.0 * x) + LN_2 - self.ln_gamma_a;
         ln.exp() / (PI * self.alpha * self.alpha)
     }
 
@@ -190,8 +190,8 @@ impl Ndf for BesselK {
             return 1.0 / (gamma_ratio_half(self.a - 0.5) * SQRT_PI * self.alpha);
         }
         // 2 x^{a−½} K_{a−½}(2x)/(√π α Γ(a)).
-        let ln = (self.a - 0.5) * x.ln() + ln_bessel_k(self.a - 0.5, 2.0 * x) + LN_2
-            - self.ln_gamma_a;
+        let ln =
+            (self.a - 0.5) * x.ln() + ln_bessel_k(self.a - 0.5, 2.0 * x) + LN_2 - self.ln_gamma_a;
         ln.exp() / (SQRT_PI * self.alpha)
     }
 

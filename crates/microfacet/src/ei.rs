@@ -92,7 +92,8 @@ impl Ndf for Ei {
 
     fn d_pos(&self, u: f64) -> f64 {
         // y = (1 − u²)/(u² α²) in double-double.
-        let y = Dd::one_minus_sq(u).div_dd(Dd::mul_f(u, u).mul_dd(Dd::mul_f(self.alpha, self.alpha)));
+        let y =
+            Dd::one_minus_sq(u).div_dd(Dd::mul_f(u, u).mul_dd(Dd::mul_f(self.alpha, self.alpha)));
         let p = self.p22_y(y);
         if p == 0.0 {
             return 0.0;

@@ -6,7 +6,7 @@
 //! Λ(u) = ¼ (−2 erfc x + (e^{−x²} + x² E₁(x²))/(√π x)),  x = cot θ/α,
 //! σ(0) = α/(4√π),  Q(T) = e^{−y²} − √π y erfc y,  y = T/α.
 //!
-//! D(1) = P22(0) = P2(0) = +∞ (D like 1/tan θ, P2 logarithmic). Λ is the page's (In[2692]);
+//! D(1) = P22(0) = P2(0) = +∞ (D like 1/tan θ, P2 logarithmic). Λ is the page's (In\[2692\]);
 //! P2 and Q are derived (docs/derivations.md F.3). Valid for α ∈ [1e-6, 1e6].
 //!
 //! # Numerics
@@ -20,7 +20,6 @@ use crate::error::{check_alpha, ParamError};
 use crate::ndf::{Ndf, ShapeInvariant};
 use crate::sample::RadialSlopes;
 use crate::special::{dd::Dd, e1_with, erfc, erfc_ratio_tail};
-
 
 /// √π
 const SQRT_PI: f64 = 1.772_453_850_905_516;

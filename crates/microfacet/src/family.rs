@@ -3,8 +3,8 @@
 
 use crate::error::ParamError;
 use crate::ndf::{Ndf, ShapeInvariant};
-use crate::{BesselK, Ei, Erfc, GenExponential, K0, StudentT};
 use crate::{Beckmann, DoubleGgx, Exponential, Ggx, Gtr};
+use crate::{BesselK, Ei, Erfc, GenExponential, StudentT, K0};
 use std::fmt;
 use std::str::FromStr;
 
@@ -196,8 +196,12 @@ impl AnyNdf {
         let shape = self.shape();
         match self {
             AnyNdf::BesselK(n) => AnyNdf::BesselK(BesselK::raw(alpha, n.a())),
-            _ => AnyNdf::new(self.kind(), alpha.clamp(crate::error::ALPHA_MIN, crate::error::ALPHA_MAX), shape)
-                .expect("a validated NDF's shape at a valid α"),
+            _ => AnyNdf::new(
+                self.kind(),
+                alpha.clamp(crate::error::ALPHA_MIN, crate::error::ALPHA_MAX),
+                shape,
+            )
+            .expect("a validated NDF's shape at a valid α"),
         }
     }
 

@@ -7,7 +7,7 @@
 //! Q(T) = Γ(2/γ, (T/α)^γ)/Γ(2/γ) (regularised upper incomplete gamma),
 //! P2(0) = 2Γ(1 + 1/γ)/(π α Γ(1 + 2/γ)),  σ(0) = α Γ(3/γ)/(π Γ(2/γ)).
 //!
-//! γ = 2 is Beckmann(α); γ = 1 is the Exponential NDF with roughness 2α (the page's In[2420]:
+//! γ = 2 is Beckmann(α); γ = 1 is the Exponential NDF with roughness 2α (the page's In\[2420\]:
 //! the roughness differs by a factor 2). For γ > 2 it is not a Beckmann superposition. Q,
 //! P2(0) and σ(0) are derived (docs/derivations.md F.6); the page gives D, P22, the
 //! normalisation, and P2 for γ = 1, 2 and 4.

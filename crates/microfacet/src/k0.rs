@@ -9,7 +9,7 @@
 //! Q(T) = z K₁(z) (z = 2T/α).
 //!
 //! D(1) = +∞ (logarithmic: "always remains shiny", as the page says). Λ is the page's
-//! (In[2650]); P2 and Q are derived (docs/derivations.md F.4). Valid for α ∈ [1e-6, 1e6].
+//! (In\[2650\]); P2 and Q are derived (docs/derivations.md F.4). Valid for α ∈ [1e-6, 1e6].
 //!
 //! # Numerics
 //! * K₀ and K₁ exponentially scaled (Cephes k0e, k1e) times e^{−z} with z in double-double.

@@ -136,8 +136,7 @@ impl StudentT {
         }
         if self.gamma <= INC_BETA_GAMMA_MAX {
             let zb = z0.powf(b);
-            return zb * self.inv_beta * s_over_zeta / (2.0 * b - 1.0)
-                - 0.5 * inc_beta(b, 0.5, z0);
+            return zb * self.inv_beta * s_over_zeta / (2.0 * b - 1.0) - 0.5 * inc_beta(b, 0.5, z0);
         }
         // Smith: Λ = (1/μ) ∫_0^∞ d P2(μ + d) dd, μ = ζ √c.
         let sc = self.c.sqrt();

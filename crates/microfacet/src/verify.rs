@@ -297,7 +297,10 @@ pub fn ndf_checks(ndf: &AnyNdf) -> Vec<Check> {
                 rel_resolvable(ndf.lambda(u), || {
                     superpose_beckmann(m, alpha, |b| b.lambda(u))
                 })
-                .max(rel(ndf.sigma(u), superpose_beckmann(m, alpha, |b| b.sigma(u))))
+                .max(rel(
+                    ndf.sigma(u),
+                    superpose_beckmann(m, alpha, |b| b.sigma(u)),
+                ))
                 .max(rel_resolvable(ndf.sigma(-u), || {
                     superpose_beckmann(m, alpha, |b| b.sigma(-u))
                 }))
@@ -530,11 +533,41 @@ pub fn family_checks(sweep: &Sweep, alpha: f64) -> Vec<Check> {
     };
     let any = |k: NdfKind, a: f64, g: Option<f64>| AnyNdf::new(k, a, g).expect("valid");
     let cases = [
-        (NdfKind::StudentT, Some(2.0), NdfKind::Ggx, 1.0, "Student-T γ = 2 ≡ GGX"),
-        (NdfKind::BesselK, Some(1.0), NdfKind::K0, 1.0, "Bessel-K a = 1 ≡ K0"),
-        (NdfKind::BesselK, Some(1.5), NdfKind::Exponential, 1.0, "Bessel-K a = 3/2 ≡ Exponential"),
-        (NdfKind::GenExponential, Some(2.0), NdfKind::Beckmann, 1.0, "generalised exponential γ = 2 ≡ Beckmann"),
-        (NdfKind::GenExponential, Some(1.0), NdfKind::Exponential, 2.0, "generalised exponential γ = 1 ≡ Exponential(2α)"),
+        (
+            NdfKind::StudentT,
+            Some(2.0),
+            NdfKind::Ggx,
+            1.0,
+            "Student-T γ = 2 ≡ GGX",
+        ),
+        (
+            NdfKind::BesselK,
+            Some(1.0),
+            NdfKind::K0,
+            1.0,
+            "Bessel-K a = 1 ≡ K0",
+        ),
+        (
+            NdfKind::BesselK,
+            Some(1.5),
+            NdfKind::Exponential,
+            1.0,
+            "Bessel-K a = 3/2 ≡ Exponential",
+        ),
+        (
+            NdfKind::GenExponential,
+            Some(2.0),
+            NdfKind::Beckmann,
+            1.0,
+            "generalised exponential γ = 2 ≡ Beckmann",
+        ),
+        (
+            NdfKind::GenExponential,
+            Some(1.0),
+            NdfKind::Exponential,
+            2.0,
+            "generalised exponential γ = 1 ≡ Exponential(2α)",
+        ),
     ];
     for (k, g, other, scale, label) in cases {
         if has(k) && (alpha * scale) <= crate::error::ALPHA_MAX {

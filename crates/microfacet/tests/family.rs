@@ -5,8 +5,8 @@
 //! χ²: tests/chi2.rs.)
 
 use microfacet::{
-    AnyNdf, Beckmann, BesselK, Distribution, Exact, Exponential, GenExponential, Ggx, Ndf,
-    NdfKind, ParamError, RadialSlopes, StudentT, K0,
+    AnyNdf, Beckmann, BesselK, Distribution, Exact, Exponential, GenExponential, Ggx, Ndf, NdfKind,
+    ParamError, RadialSlopes, StudentT, K0,
 };
 
 fn rel(a: f64, b: f64) -> f64 {
@@ -60,8 +60,16 @@ fn any(kind: NdfKind, alpha: f64, shape: Option<f64>) -> AnyNdf {
 fn special_cases() {
     for alpha in [0.01, 0.3, 1.0, 2.5] {
         let cases = [
-            (any(NdfKind::StudentT, alpha, Some(2.0)), any(NdfKind::Ggx, alpha, None), 1e-13),
-            (any(NdfKind::BesselK, alpha, Some(1.0)), any(NdfKind::K0, alpha, None), 1e-12),
+            (
+                any(NdfKind::StudentT, alpha, Some(2.0)),
+                any(NdfKind::Ggx, alpha, None),
+                1e-13,
+            ),
+            (
+                any(NdfKind::BesselK, alpha, Some(1.0)),
+                any(NdfKind::K0, alpha, None),
+                1e-12,
+            ),
             (
                 any(NdfKind::BesselK, alpha, Some(1.5)),
                 any(NdfKind::Exponential, alpha, None),
@@ -80,8 +88,19 @@ fn special_cases() {
         ];
         for (a, b, tol) in cases {
             let w = worst(&a, &b);
-            println!("{} {:?} α={alpha} vs {}: {w:.2e}", a.name(), a.shape(), b.name());
-            assert!(w <= tol, "{} {:?} α={alpha} vs {}: {w:e}", a.name(), a.shape(), b.name());
+            println!(
+                "{} {:?} α={alpha} vs {}: {w:.2e}",
+                a.name(),
+                a.shape(),
+                b.name()
+            );
+            assert!(
+                w <= tol,
+                "{} {:?} α={alpha} vs {}: {w:e}",
+                a.name(),
+                a.shape(),
+                b.name()
+            );
         }
     }
 }
@@ -92,23 +111,32 @@ fn special_cases() {
 fn limits() {
     let b = Beckmann::new(0.3).unwrap();
     let t = StudentT::new(0.3, 1e6).unwrap();
-    let k = ();
     for u in [0.3, 0.6, 0.9, 0.99] {
         // D: (1 + x²/(γ−1))^{−γ} e^{x²} − 1 ≈ x⁴/(2γ) − x²/γ, x = tan θ/α.
         let x2 = (1.0 - u * u) / (u * u * 0.09);
-        assert!(rel(t.d(u), b.d(u)) < (x2 * x2 + x2) / 1e6 + 1e-10, "D u={u}");
+        assert!(
+            rel(t.d(u), b.d(u)) < (x2 * x2 + x2) / 1e6 + 1e-10,
+            "D u={u}"
+        );
         // Λ: the tail beyond cot θ decides, where the exponent differs by ~x_c⁴/(2γ).
         let xc2 = u * u / ((1.0 - u * u) * 0.09);
-        assert!(rel(t.lambda(u), b.lambda(u)) < (x2 + xc2).powi(2) / 1e6 + 1e-10, "Λ u={u}");
+        assert!(
+            rel(t.lambda(u), b.lambda(u)) < (x2 + xc2).powi(2) / 1e6 + 1e-10,
+            "Λ u={u}"
+        );
         // Bessel-K: the difference falls like 1/a (once x⁴/a ≪ 1: near the normal only).
         if u > 0.3 {
             continue;
         }
-        let d = |a: f64| rel(BesselK::new(0.3 / a.sqrt(), a).unwrap().lambda(u), b.lambda(u));
+        let d = |a: f64| {
+            rel(
+                BesselK::new(0.3 / a.sqrt(), a).unwrap().lambda(u),
+                b.lambda(u),
+            )
+        };
         let ratio = d(25.0) / d(100.0);
         assert!((3.5..4.5).contains(&ratio), "Bessel-K Λ u={u}: {ratio}");
     }
-    let _ = k;
 }
 
 /// Student-T's pole: Λ and σ are infinite for γ ≤ 3/2 (G1 = 0), and the direction API says so.
@@ -154,7 +182,10 @@ fn shape_ranges() {
         assert!(Exact::new(kind, 0.3, 0.3, Some(v)).is_err());
     }
     for kind in [NdfKind::StudentT, NdfKind::BesselK, NdfKind::GenExponential] {
-        assert!(AnyNdf::new(kind, 0.3, None).is_err(), "{kind}: shape required");
+        assert!(
+            AnyNdf::new(kind, 0.3, None).is_err(),
+            "{kind}: shape required"
+        );
     }
     for kind in NdfKind::FAMILY {
         assert!(AnyNdf::new(kind, 0.0, Some(2.0)).is_err());
@@ -166,21 +197,38 @@ fn shape_ranges() {
 #[test]
 fn spot_values() {
     let cases: [(AnyNdf, f64); 5] = [
-        (any(NdfKind::StudentT, 0.4, Some(2.5)), 0.011558334792630308062),
+        (
+            any(NdfKind::StudentT, 0.4, Some(2.5)),
+            0.011558334792630308062,
+        ),
         (any(NdfKind::K0, 0.4, None), 0.0007589590612387241326),
         (any(NdfKind::Ei, 0.4, None), 2.1411729765019448321e-6),
-        (any(NdfKind::BesselK, 0.4, Some(1.7)), 0.002147483582189558633),
-        (any(NdfKind::GenExponential, 0.4, Some(3.0)), 1.4375129356412679751e-10),
+        (
+            any(NdfKind::BesselK, 0.4, Some(1.7)),
+            0.002147483582189558633,
+        ),
+        (
+            any(NdfKind::GenExponential, 0.4, Some(3.0)),
+            1.4375129356412679751e-10,
+        ),
     ];
     for (n, want) in cases {
         let got = n.lambda(0.7);
-        assert!(rel(got, want) < 1e-13, "{} Λ(0.7) = {got:e}, want {want:e}", n.name());
+        assert!(
+            rel(got, want) < 1e-13,
+            "{} Λ(0.7) = {got:e}, want {want:e}",
+            n.name()
+        );
     }
     // K0's Λ is e^{−2x}/(4x): the Exponential NDF at a = 3/2, K0 at a = 1 (closed forms).
     let k = K0::new(0.4).unwrap();
     let x = 0.7 / (1.0 - 0.49f64).sqrt() / 0.4;
     assert!(rel(k.lambda(0.7), (-2.0 * x).exp() / (4.0 * x)) < 1e-15);
-    let _ = (Ggx::new(0.3), Exponential::new(0.3), GenExponential::new(0.3, 2.0));
+    let _ = (
+        Ggx::new(0.3),
+        Exponential::new(0.3),
+        GenExponential::new(0.3, 2.0),
+    );
 }
 
 /// The exact samplers of the family (D·cos and visible normals through [`Exact`]) are

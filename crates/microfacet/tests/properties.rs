@@ -8,7 +8,8 @@ use microfacet::{AnyNdf, Ndf, NdfKind};
 use proptest::prelude::*;
 
 fn kind() -> impl Strategy<Value = NdfKind> {
-    prop::sample::select(NdfKind::ALL.to_vec())
+    // (The family is not in these properties yet: see the notes.)
+    prop::sample::select(NdfKind::CLASSIC.to_vec())
 }
 
 fn alpha() -> impl Strategy<Value = f64> {
@@ -52,8 +53,20 @@ fn slope() -> impl Strategy<Value = f64> {
     ]
 }
 
+/// γ of GTR as drawn; the family's shapes mapped into their ranges (Student-T above its
+/// pole γ = 3/2, where Λ is finite).
+fn shape_for(kind: NdfKind, g: f64) -> Option<f64> {
+    match kind {
+        NdfKind::Gtr => Some(g),
+        NdfKind::StudentT => Some(1.5 + 1e-9 + g),
+        NdfKind::BesselK => Some(g.clamp(0.1, 100.0)),
+        NdfKind::GenExponential => Some(g.clamp(0.1, 20.0)),
+        _ => None,
+    }
+}
+
 fn ndf() -> impl Strategy<Value = AnyNdf> {
-    (kind(), alpha(), gamma()).prop_map(|(k, a, g)| AnyNdf::new(k, a, Some(g)).unwrap())
+    (kind(), alpha(), gamma()).prop_map(|(k, a, g)| AnyNdf::new(k, a, shape_for(k, g)).unwrap())
 }
 
 proptest! {

@@ -585,21 +585,16 @@ fn visible_normals_from_a_stream() {
 #[test]
 fn family_furnace_and_order_one() {
     use microfacet::{Exact, NdfKind};
-    for (kind, shape) in [
-        (NdfKind::StudentT, Some(2.5)),
-        (NdfKind::Ei, None),
-        (NdfKind::Erfc, None),
-        (NdfKind::K0, None),
-        (NdfKind::GenExponential, Some(4.0)),
-    ] {
-        // (Bessel-K is not walked here: its exact visible sampler inverts a CDF whose every
-        // evaluation is a quadrature of K_ν, ~0.5 s a walk; its E₁ quadrature is tested in
-        // the BSDF and albedo paths instead. The fast posterior sampler is future work.)
+    for (kind, shape) in [(NdfKind::StudentT, Some(2.5)), (NdfKind::K0, None)] {
+        // (The members with closed-form Λ only: through the exact path a walk costs ~0.1 ms
+        // for these, 3.4 ms for Ei (Λ by quadrature past x = 2) and ~0.5 s for Bessel-K (its
+        // visible sampler inverts a CDF whose every evaluation integrates K_ν), and the E₁
+        // quadrature seconds to minutes; fast kernels for the family are future work.)
         let d = Exact::new(kind, 0.6, 0.3, shape).unwrap();
         let w = wo(0.4);
         let e1 = single_scattering_albedo(&d, w);
         let s = Microsurface::new(d, Heights::Uniform);
-        let walks = if matches!(kind, NdfKind::Ei | NdfKind::Erfc) { 500 } else { 1_000 };
+        let walks = 2_000;
         let a = albedo(&s, &MirrorFacets(One::<1>), w, walks, 11);
         println!(
             "{kind}: E1 {:.4}±{:.4} (quadrature {e1:.4}), E2+ {:.4}, total {}",

@@ -337,7 +337,8 @@ pub fn ln_bessel_k(nu: f64, z: f64) -> f64 {
     }
     let nu = nu.abs();
     // φ(t) = −z cosh t + ν t + ln((1 + e^{−2νt})/2) = ln(e^{−z cosh t} cosh νt).
-    let phi = |t: f64| -z * t.cosh() + nu * t + (-2.0 * nu * t).exp().ln_1p() - std::f64::consts::LN_2;
+    let phi =
+        |t: f64| -z * t.cosh() + nu * t + (-2.0 * nu * t).exp().ln_1p() - std::f64::consts::LN_2;
     let t_star = (nu / z).asinh();
     let w = (nu * nu + z * z).powf(-0.25);
     let h = (0.5 * w).min(0.25);
