@@ -90,7 +90,7 @@ pub fn shape(obj: &Map<String, Value>, kind: NdfKind) -> Result<Option<f64>, Str
     for key in ["gamma", "a"] {
         if obj.contains_key(key) && kind.shape_name() != Some(key) {
             return Err(format!(
-                "field '{key}' is not a parameter of ndf {kind} ({})",
+                "unknown field '{key}' for ndf {kind} ({})",
                 if key == "gamma" {
                     "gamma is for gtr, student_t and gen_exponential"
                 } else {
