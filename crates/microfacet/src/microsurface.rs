@@ -147,6 +147,39 @@ impl Stretched {
         }
     }
 
+    /// D at `wm` from the α = 1 member's D (`d1`): D_α(m) = D₁(u₁)/(αx αy ℓ⁴), with
+    /// ℓ² = z² + (x/αx)² + (y/αy)² and u₁ = z/ℓ (P22 stretches as f(r₁)/(αx αy), u⁴ D = P22).
+    fn d_with(&self, wm: Vec3, d1: impl Fn(f64) -> f64) -> f64 {
+        let wm = wm.to_unit();
+        if wm.z.is_nan() {
+            return f64::NAN;
+        }
+        if wm.z <= 0.0 {
+            return 0.0;
+        }
+        let (x, y) = (wm.x / self.alpha_x, wm.y / self.alpha_y);
+        let l2 = wm.z * wm.z + x * x + y * y;
+        let u1 = wm.z / l2.sqrt();
+        d1(u1) / (self.alpha_x * self.alpha_y * l2 * l2)
+    }
+
+    /// Λ at `w` from the α = 1 member's Λ: Λ₁ at the stretched direction.
+    fn lambda_with(&self, w: Vec3, lambda1: impl Fn(f64) -> f64) -> f64 {
+        let s = self.stretch(upper(w));
+        let l = s.length();
+        if l == 0.0 {
+            return f64::NAN;
+        }
+        lambda1(s.z / l)
+    }
+
+    /// σ at `w` from the α = 1 member's σ: σ_α(w) = |stretch(w)| σ₁(stretch(w)/|stretch(w)|).
+    fn sigma_with(&self, w: Vec3, sigma1: impl Fn(f64) -> f64) -> f64 {
+        let s = self.stretch(upper(w));
+        let l = s.length();
+        l * sigma1(s.z / l)
+    }
+
     /// (αx x, αy y, z): the direction in the α = 1 configuration (not normalised).
     pub(crate) fn stretch(&self, w: Vec3) -> Vec3 {
         Vec3::new(self.alpha_x * w.x, self.alpha_y * w.y, w.z)
@@ -212,35 +245,15 @@ impl UnitNdf {
 
 impl Microsurface for Stretched {
     fn d(&self, wm: Vec3) -> f64 {
-        let wm = wm.to_unit();
-        if wm.z.is_nan() {
-            return f64::NAN;
-        }
-        if wm.z <= 0.0 {
-            return 0.0;
-        }
-        // D_α(m) = D₁(u₁)/(αx αy ℓ⁴), with ℓ² = z² + (x/αx)² + (y/αy)² and u₁ = z/ℓ
-        // (P22 stretches as f(r₁)/(αx αy), and u⁴ D = P22).
-        let (x, y) = (wm.x / self.alpha_x, wm.y / self.alpha_y);
-        let l2 = wm.z * wm.z + x * x + y * y;
-        let u1 = wm.z / l2.sqrt();
-        self.unit().ndf().d(u1) / (self.alpha_x * self.alpha_y * l2 * l2)
+        self.d_with(wm, |u| self.unit().ndf().d(u))
     }
 
     fn lambda(&self, w: Vec3) -> f64 {
-        let s = self.stretch(upper(w));
-        let l = s.length();
-        if l == 0.0 {
-            return f64::NAN;
-        }
-        self.unit().ndf().lambda(s.z / l)
+        self.lambda_with(w, |u| self.unit().ndf().lambda(u))
     }
 
     fn sigma(&self, w: Vec3) -> f64 {
-        // σ_α(w) = |stretch(w)| σ₁(stretch(w)/|stretch(w)|).
-        let s = self.stretch(upper(w));
-        let l = s.length();
-        l * self.unit().ndf().sigma(s.z / l)
+        self.sigma_with(w, |u| self.unit().ndf().sigma(u))
     }
 
     fn sample_dcos(&self, u: [f64; 2]) -> Vec3 {
@@ -427,7 +440,7 @@ impl Shaped {
         &self.unit
     }
 
-    /// The same stretch as [`Stretched`]'s.
+    /// [`Stretched`]'s stretch helpers at (αx, αy) (its slope kind is not used by them).
     fn stretched(&self) -> Stretched {
         Stretched::raw(UnitSlopes::Ggx, self.alpha_x, self.alpha_y)
     }
@@ -435,32 +448,15 @@ impl Shaped {
 
 impl Microsurface for Shaped {
     fn d(&self, wm: Vec3) -> f64 {
-        let wm = wm.to_unit();
-        if wm.z.is_nan() {
-            return f64::NAN;
-        }
-        if wm.z <= 0.0 {
-            return 0.0;
-        }
-        let (x, y) = (wm.x / self.alpha_x, wm.y / self.alpha_y);
-        let l2 = wm.z * wm.z + x * x + y * y;
-        let u1 = wm.z / l2.sqrt();
-        self.unit.d(u1) / (self.alpha_x * self.alpha_y * l2 * l2)
+        self.stretched().d_with(wm, |u| self.unit.d(u))
     }
 
     fn lambda(&self, w: Vec3) -> f64 {
-        let s = self.stretched().stretch(upper(w));
-        let l = s.length();
-        if l == 0.0 {
-            return f64::NAN;
-        }
-        self.unit.lambda(s.z / l)
+        self.stretched().lambda_with(w, |u| self.unit.lambda(u))
     }
 
     fn sigma(&self, w: Vec3) -> f64 {
-        let s = self.stretched().stretch(upper(w));
-        let l = s.length();
-        l * self.unit.sigma(s.z / l)
+        self.stretched().sigma_with(w, |u| self.unit.sigma(u))
     }
 
     fn sample_dcos(&self, u: [f64; 2]) -> Vec3 {
