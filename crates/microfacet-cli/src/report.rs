@@ -851,6 +851,46 @@ figure{margin:0;width:440px}figcaption{font-size:12px;color:#444;margin:2px 4px 
 .def{font-size:14px;color:#333}.stamp{font-size:12px;color:#666}\
 .matrix{overflow-x:auto}.matrix th{font-size:11px;font-weight:normal;text-align:left}.matrix td{white-space:nowrap}";
 
+/// One NDF's section of the page.
+fn section(kind: NdfKind, progress: &(impl Fn(&str) + Sync)) -> String {
+    let mut html = String::new();
+    progress(&format!("section {kind}"));
+    let _ = write!(
+        html,
+        r#"<section id="{kind}" class="ndf"><h2>{}</h2><p class="def">{}.</p><div class="plots">"#,
+        heading(kind),
+        esc(source(kind))
+    );
+    let mut plots = vec![
+        d_plot(kind),
+        sigma_plot(kind),
+        lambda_plot(kind),
+        g1_plot(kind),
+        slope_plot(kind),
+        histogram_plot(kind, false),
+    ];
+    // (Bessel-K's exact visible sampler integrates K_ν inside its CDF inversion, ~0.1 s a
+    // sample: its visible histogram waits for the fast posterior sampler.)
+    if kind != NdfKind::BesselK {
+        plots.push(histogram_plot(kind, true));
+    }
+    if kind == NdfKind::Exponential {
+        plots.push(approx_error_plot());
+        plots.push(ei_sigma_plot());
+        plots.extend(exponential_residual_plots());
+        plots.push(chi3_histogram_plot());
+    }
+    if kind == NdfKind::Gtr {
+        plots.insert(1, gtr_alpha_plot());
+    }
+    plots.extend(superposition_plots(kind));
+    for p in plots {
+        html.push_str(&p.to_html());
+    }
+    html.push_str("</div></section>");
+    html
+}
+
 pub fn run(args: &[String]) -> Result<ExitCode, String> {
     let mut out = std::path::PathBuf::from("report");
     let mut it = args.iter();
@@ -895,41 +935,16 @@ beyond them in the repository's <code>docs/derivations.md</code>.</p>\
         r##"<a href="#comparison">comparison</a><a href="#bsdf">BSDFs</a><a href="#verify">identity table</a></nav>"##,
     );
 
-    for kind in NdfKind::ALL {
-        progress(&format!("section {kind}"));
-        let _ = write!(
-            body,
-            r#"<section id="{kind}" class="ndf"><h2>{}</h2><p class="def">{}.</p><div class="plots">"#,
-            heading(kind),
-            esc(source(kind))
-        );
-        let mut plots = vec![
-            d_plot(kind),
-            sigma_plot(kind),
-            lambda_plot(kind),
-            g1_plot(kind),
-            slope_plot(kind),
-            histogram_plot(kind, false),
-        ];
-        // (Bessel-K's exact visible sampler integrates K_ν inside its CDF inversion, ~0.1 s a
-        // sample: its visible histogram waits for the fast posterior sampler.)
-        if kind != NdfKind::BesselK {
-            plots.push(histogram_plot(kind, true));
-        }
-        if kind == NdfKind::Exponential {
-            plots.push(approx_error_plot());
-            plots.push(ei_sigma_plot());
-            plots.extend(exponential_residual_plots());
-            plots.push(chi3_histogram_plot());
-        }
-        if kind == NdfKind::Gtr {
-            plots.insert(1, gtr_alpha_plot());
-        }
-        plots.extend(superposition_plots(kind));
-        for p in plots {
-            body.push_str(&p.to_html());
-        }
-        body.push_str("</div></section>");
+    // (The sections are independent: with the CLI's rayon they run on every core.)
+    let sections: Vec<String> = {
+        use rayon::prelude::*;
+        NdfKind::ALL
+            .par_iter()
+            .map(|&kind| section(kind, &progress))
+            .collect()
+    };
+    for html in sections {
+        body.push_str(&html);
     }
 
     progress("comparison");

@@ -199,7 +199,7 @@ impl Stretched {
     /// For the visible sampler: cot θ' and the azimuth (cos φ', sin φ') of the stretched w.
     fn stretched_frame(&self, w: Vec3) -> (f64, f64, f64) {
         let s = self.stretch(upper(w));
-        let h = s.x.hypot(s.y);
+        let h = crate::vec3::hypot(s.x, s.y);
         if h == 0.0 {
             return (f64::INFINITY, 1.0, 0.0);
         }
@@ -274,7 +274,7 @@ impl Microsurface for Stretched {
         if phi < 0.0 {
             phi += 2.0 * PI;
         }
-        [self.unit().cdf(x.hypot(y)), (phi / (2.0 * PI)).min(1.0)]
+        [self.unit().cdf(crate::vec3::hypot(x, y)), (phi / (2.0 * PI)).min(1.0)]
     }
 
     fn sample_visible(&self, w: Vec3, u: [f64; 2]) -> Vec3 {
@@ -354,7 +354,7 @@ impl<N: Ndf + RadialSlopes> Isotropic<N> {
     /// (cot θ, cos φ, sin φ) of w mirrored to the upper hemisphere.
     fn frame(w: Vec3) -> (f64, f64, f64) {
         let w = upper(w);
-        let h = w.x.hypot(w.y);
+        let h = crate::vec3::hypot(w.x, w.y);
         if h == 0.0 {
             return (f64::INFINITY, 1.0, 0.0);
         }
@@ -400,7 +400,7 @@ impl<N: Ndf + RadialSlopes> Microsurface for Isotropic<N> {
             return [f64::NAN; 2];
         };
         let (a, c, s) = Self::frame(w);
-        let r = wm.x.hypot(wm.y) / wm.z;
+        let r = crate::vec3::hypot(wm.x, wm.y) / wm.z;
         let mut psi = wm.y.atan2(wm.x) - s.atan2(c);
         if psi > PI {
             psi -= 2.0 * PI;
@@ -478,7 +478,7 @@ impl Microsurface for Shaped {
             phi += 2.0 * PI;
         }
         [
-            self.unit.slope_cdf(x.hypot(y)).clamp(0.0, 1.0),
+            self.unit.slope_cdf(crate::vec3::hypot(x, y)).clamp(0.0, 1.0),
             (phi / (2.0 * PI)).min(1.0),
         ]
     }
@@ -505,7 +505,7 @@ impl Microsurface for Shaped {
         let st = self.stretched();
         let (a, c, s) = st.stretched_frame(w);
         let (gx, gy) = st.unit_slopes(wm);
-        let r = gx.hypot(gy);
+        let r = crate::vec3::hypot(gx, gy);
         let mut psi = gy.atan2(gx) - s.atan2(c);
         if psi > PI {
             psi -= 2.0 * PI;

@@ -319,7 +319,7 @@ pub(crate) fn normal_from_polar_slope(r: f64, phi: f64) -> Vec3 {
 
 /// The u that [`sample_dcos`] maps to `wm` (for wm.z > 0).
 pub fn invert_dcos<N: RadialSlopes + ?Sized>(ndf: &N, wm: Vec3) -> [f64; 2] {
-    let sin = wm.x.hypot(wm.y);
+    let sin = crate::vec3::hypot(wm.x, wm.y);
     let r = sin / wm.z;
     let mut phi = wm.y.atan2(wm.x);
     if phi < 0.0 {

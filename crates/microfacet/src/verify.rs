@@ -149,35 +149,81 @@ fn max_over<T: Copy>(xs: &[T], f: impl Fn(T) -> f64) -> f64 {
     })
 }
 
-/// Runs the sweep, calling `report` with each check as soon as it is done.
+/// One unit of the sweep: one material's checks, or the cross-NDF checks at one α.
+#[derive(Clone, Copy)]
+enum Job {
+    Material(NdfKind, f64, Option<f64>),
+    Family(f64),
+}
+
+impl Job {
+    fn run(self, sweep: &Sweep) -> Vec<Check> {
+        match self {
+            Job::Material(kind, alpha, shape) => match AnyNdf::new(kind, alpha, shape) {
+                Ok(ndf) => ndf_checks(&ndf),
+                Err(_) => vec![Check {
+                    subject: subject(kind, alpha, shape),
+                    identity: "parameters accepted".into(),
+                    residual: f64::NAN,
+                    tol: TOL,
+                }],
+            },
+            Job::Family(alpha) => family_checks(sweep, alpha),
+        }
+    }
+}
+
+/// Runs the sweep, calling `report` with each check in sweep order as soon as it and every
+/// check before it are done. With the `rayon` feature the materials run on every core (the
+/// order of the checks, and so the output, is the same).
 pub fn run(sweep: &Sweep, mut report: impl FnMut(&Check)) -> Vec<Check> {
-    let mut all = Vec::new();
-    let mut emit = |c: Check| {
-        report(&c);
-        all.push(c);
-    };
+    let mut jobs = Vec::new();
     for &kind in &sweep.kinds {
-        for gamma in sweep.shapes_of(kind) {
+        for shape in sweep.shapes_of(kind) {
             for &alpha in &sweep.alphas {
-                let Ok(ndf) = AnyNdf::new(kind, alpha, gamma) else {
-                    emit(Check {
-                        subject: subject(kind, alpha, gamma),
-                        identity: "parameters accepted".into(),
-                        residual: f64::NAN,
-                        tol: TOL,
-                    });
-                    continue;
-                };
-                for c in ndf_checks(&ndf) {
-                    emit(c);
-                }
+                jobs.push(Job::Material(kind, alpha, shape));
             }
         }
     }
-    for &alpha in &sweep.alphas {
-        for c in family_checks(sweep, alpha) {
-            emit(c);
+    jobs.extend(sweep.alphas.iter().map(|&a| Job::Family(a)));
+    let mut all = Vec::new();
+    let mut emit = |checks: Vec<Check>| {
+        for c in checks {
+            report(&c);
+            all.push(c);
         }
+    };
+    #[cfg(feature = "rayon")]
+    {
+        use rayon::prelude::*;
+        use std::collections::BTreeMap;
+        let (tx, rx) = std::sync::mpsc::channel();
+        let jobs = &jobs;
+        std::thread::scope(|s| {
+            s.spawn(move || {
+                jobs.par_iter()
+                    .enumerate()
+                    .for_each_with(tx, |tx, (i, job)| {
+                        // (The receiver lives until every job is done; a failed send
+                        // can only follow a panic there, which the scope re-raises.)
+                        let _ = tx.send((i, job.run(sweep)));
+                    });
+            });
+            // Emit in sweep order: hold results that arrive before their predecessors.
+            let mut pending = BTreeMap::new();
+            let mut next = 0;
+            for (i, checks) in rx {
+                pending.insert(i, checks);
+                while let Some(checks) = pending.remove(&next) {
+                    emit(checks);
+                    next += 1;
+                }
+            }
+        });
+    }
+    #[cfg(not(feature = "rayon"))]
+    for job in jobs {
+        emit(job.run(sweep));
     }
     all
 }

@@ -202,7 +202,7 @@ impl UnitSlopes {
     }
 
     fn conditional_pdf_with(self, x: f64, y: f64, p2x: f64) -> f64 {
-        let r = x.hypot(y);
+        let r = crate::vec3::hypot(x, y);
         let p22 = self.mix(|c| match c {
             Component::Beckmann(a) => (-(r / a) * (r / a)).exp() / (PI * a * a),
             Component::Ggx(a) => {
