@@ -62,6 +62,15 @@ impl Ei {
     }
 }
 
+/// Below y = (r/α)² = 1e-200 E₁(y) = −γ_E − ln y + O(y) (the O(y) is 1e-200 of it): taken
+/// with ln y = 2(ln r − ln α), finite wherever r > 0 (y itself underflows below r ~ 1e-154 α).
+pub(crate) const SMALL_Y: f64 = 1e-200;
+
+/// E₁((r/α)²) for (r/α)² < [`SMALL_Y`], r > 0.
+pub(crate) fn e1_small(r: f64, alpha: f64) -> f64 {
+    -crate::special::EULER_GAMMA - 2.0 * (r.ln() - alpha.ln())
+}
+
 /// Λ of the Ei NDF at x = cot θ/α.
 pub(crate) fn lambda_x(x: f64) -> f64 {
     if x <= CLOSED_FORM_X_MAX {
@@ -107,7 +116,11 @@ impl Ndf for Ei {
         if !r2.hi.is_finite() {
             return if r2.hi.is_nan() { f64::NAN } else { 0.0 };
         }
-        self.p22_y(r2.div_dd(Dd::mul_f(self.alpha, self.alpha)))
+        let y = r2.div_dd(Dd::mul_f(self.alpha, self.alpha));
+        if y.hi < SMALL_Y && (p != 0.0 || q != 0.0) {
+            return e1_small(p.hypot(q), self.alpha) / (PI * self.alpha * self.alpha);
+        }
+        self.p22_y(y)
     }
 
     fn p2(&self, p: f64) -> f64 {
@@ -141,9 +154,8 @@ impl Ndf for Ei {
 
 impl ShapeInvariant for Ei {
     fn f(&self, x: f64) -> f64 {
-        let y = x * x;
-        let e = if y > EXP_UNDERFLOW { 0.0 } else { (-y).exp() };
-        e1_with(y, e) / PI
+        // P22 at α = 1 (its small-argument branch where x² underflows).
+        Ei { alpha: 1.0 }.p22(x, 0.0)
     }
 }
 
@@ -151,6 +163,10 @@ impl RadialSlopes for Ei {
     fn slope_cdf(&self, r: f64) -> f64 {
         let t = r / self.alpha;
         let y = t * t;
+        if y == 0.0 {
+            // (y ln y underflows with y: 0·E₁(0) would be NaN.)
+            return 0.0;
+        }
         if y < 1.0 {
             // 1 − E₂(y) = (1 − e^{−y}) + y E₁(y): two positive terms.
             -(-y).exp_m1() + y * e1(y)
@@ -163,6 +179,9 @@ impl RadialSlopes for Ei {
         let y = t * t;
         if y > EXP_UNDERFLOW {
             return 0.0;
+        }
+        if y == 0.0 {
+            return 1.0;
         }
         if y < 1.0 {
             return (-y).exp() - y * e1(y);

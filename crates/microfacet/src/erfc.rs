@@ -53,7 +53,7 @@ impl Erfc {
         if x > 27.5 {
             return 0.0;
         }
-        erfc(x) / (2.0 * SQRT_PI * self.alpha * r)
+        erfc(x) / (2.0 * SQRT_PI * self.alpha) / r
     }
 }
 
@@ -100,6 +100,9 @@ impl Ndf for Erfc {
         }
         let t = p.abs() / self.alpha;
         let y = t * t;
+        if y < crate::ei::SMALL_Y && p != 0.0 {
+            return crate::ei::e1_small(p.abs(), self.alpha) / (2.0 * SQRT_PI * self.alpha);
+        }
         let e = if y > EXP_UNDERFLOW {
             0.0
         } else {
@@ -119,6 +122,7 @@ impl Ndf for Erfc {
 
 impl ShapeInvariant for Erfc {
     fn f(&self, x: f64) -> f64 {
+        let x = x.abs();
         if x == 0.0 {
             return f64::INFINITY;
         }

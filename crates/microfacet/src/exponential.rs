@@ -132,7 +132,7 @@ impl Ndf for Exponential {
 
 impl ShapeInvariant for Exponential {
     fn f(&self, x: f64) -> f64 {
-        let e = 2.0 * x;
+        let e = 2.0 * x.abs();
         if e > EXP_UNDERFLOW {
             return 0.0;
         }

@@ -178,6 +178,27 @@ impl AnyNdf {
         }
     }
 
+    /// Whether D is unbounded at the pole: D(1) = P22(0, 0) = +∞ (the true value) for Ei,
+    /// Erfc and K0 (logarithmic: P22 ~ −ln r) and Bessel-K with a ≤ 1 (P22 ~ r^{2a−2}, or
+    /// −ln r at a = 1); D·cos stays integrable, and every other value is finite.
+    pub fn singular_at_pole(&self) -> bool {
+        match self {
+            AnyNdf::Ei(_) | AnyNdf::Erfc(_) | AnyNdf::K0(_) => true,
+            AnyNdf::BesselK(n) => n.a() <= 1.0,
+            _ => false,
+        }
+    }
+
+    /// Whether the marginal slope density is unbounded at 0: P2(0) = +∞ (the true value) for
+    /// Erfc (P2 ~ −ln |p|) and Bessel-K with a ≤ ½ (P2 ~ |p|^{2a−1}, or −ln |p| at a = ½).
+    pub fn p2_singular_at_zero(&self) -> bool {
+        match self {
+            AnyNdf::Erfc(_) => true,
+            AnyNdf::BesselK(n) => n.a() <= 0.5,
+            _ => false,
+        }
+    }
+
     /// The shape parameter (γ for GTR, Student-T and the generalised exponential, a for
     /// Bessel-K), `None` for the kinds without one.
     pub fn shape(&self) -> Option<f64> {

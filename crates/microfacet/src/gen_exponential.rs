@@ -190,7 +190,7 @@ impl Ndf for GenExponential {
 
 impl ShapeInvariant for GenExponential {
     fn f(&self, x: f64) -> f64 {
-        let e = x.powf(self.gamma);
+        let e = x.abs().powf(self.gamma);
         if e > EXP_UNDERFLOW {
             return 0.0;
         }

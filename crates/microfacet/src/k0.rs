@@ -83,6 +83,12 @@ impl Ndf for K0 {
         if !r2.hi.is_finite() {
             return if r2.hi.is_nan() { f64::NAN } else { 0.0 };
         }
+        if r2.hi < 1e-300 * self.alpha * self.alpha && (p != 0.0 || q != 0.0) {
+            // K₀(z) = −ln(z/2) − γ_E + O(z² ln z) for z = 2r/α < 2e-150 (z/2 may underflow:
+            // ln(z/2) = ln r − ln α).
+            let k0 = -(p.hypot(q).ln() - self.alpha.ln()) - crate::special::EULER_GAMMA;
+            return 2.0 * k0 / (PI * self.alpha * self.alpha);
+        }
         self.p22_z(self.z(r2.sqrt()))
     }
 
@@ -122,7 +128,7 @@ impl Ndf for K0 {
 
 impl ShapeInvariant for K0 {
     fn f(&self, x: f64) -> f64 {
-        let z = 2.0 * x;
+        let z = 2.0 * x.abs();
         if z == 0.0 {
             return f64::INFINITY;
         }

@@ -51,8 +51,14 @@
 //!   directions w any finite nonzero vector (any length: they are normalised; below the
 //!   horizon, w.z < 0, they are mirrored, in the fast paths as in the exact API; on it,
 //!   z = ±0 or 1e-300). The fast scalar Λ, G1, G2 take u ∈ [0, 1] (−0 and 1 + 2ε included).
-//!   Finite in-contract input gives finite output, except Λ = +∞ at u = 0 and where
-//!   Λ ~ σ(0)/u itself overflows (the true value, rounded).
+//!   Finite in-contract input gives finite output, except where the true value is +∞ or
+//!   overflows: Λ = +∞ at u = 0 and where Λ ~ σ(0)/u overflows; the poles of the singular
+//!   family members, D(1) = P22(0, 0) = +∞ for Ei, Erfc, K0 and Bessel-K a ≤ 1 (and so
+//!   the pdfs at m = (0, 0, 1) exactly), P2(0) = +∞ for Erfc and Bessel-K a ≤ ½; densities
+//!   that grow past f64::MAX (Bessel-K a < 1: P22 ~ r^{2a−2} at r ≲ 10^{−308/(2−2a)} α;
+//!   Student-T γ < 2: D ~ u^{2γ−4} at grazing u); Student-T γ ≤ 3/2: σ = Λ = +∞ (E|p| = ∞),
+//!   G1 = 0. Near the pole the sampler pdfs are computed through the slopes, finite for
+//!   every normal off the exact pole.
 //! * **Bounds**: D ≥ 0, Λ ≥ 0 for u > 0, G1 and G2 in [0, 1], G2 ≤ min(G1(u_o), G1(u_i)),
 //!   σ ≥ 0; every fast path within its documented relative error ([`fast`]'s table) wherever
 //!   the exact value is a normal float (fast GTR Λ: where Λ > 1e-280, absolute below).

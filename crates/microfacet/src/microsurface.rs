@@ -274,7 +274,10 @@ impl Microsurface for Stretched {
         if phi < 0.0 {
             phi += 2.0 * PI;
         }
-        [self.unit().cdf(crate::vec3::hypot(x, y)), (phi / (2.0 * PI)).min(1.0)]
+        [
+            self.unit().cdf(crate::vec3::hypot(x, y)),
+            (phi / (2.0 * PI)).min(1.0),
+        ]
     }
 
     fn sample_visible(&self, w: Vec3, u: [f64; 2]) -> Vec3 {
@@ -448,6 +451,19 @@ impl Shaped {
 
 impl Microsurface for Shaped {
     fn d(&self, wm: Vec3) -> f64 {
+        // Near the pole D = P22₁(α = 1 slopes)/(αx αy cos⁴θ): the unit member's cos θ would
+        // round to 1 below slopes ~1e-8, and D(1) is the pole (+∞) of the log- and
+        // power-singular members (Ei, Erfc, K0, Bessel-K a ≤ 1) while P22 at the slopes is
+        // still finite.
+        let m = wm.to_unit();
+        if m.z > 0.0 {
+            let (ax, ay) = (self.alpha_x, self.alpha_y);
+            let (gx, gy) = (m.x / (ax * m.z), m.y / (ay * m.z));
+            if gx * gx + gy * gy < 1e-4 {
+                let z2 = m.z * m.z;
+                return self.unit.p22(gx, gy) / (ax * ay * z2 * z2);
+            }
+        }
         self.stretched().d_with(wm, |u| self.unit.d(u))
     }
 
@@ -478,7 +494,9 @@ impl Microsurface for Shaped {
             phi += 2.0 * PI;
         }
         [
-            self.unit.slope_cdf(crate::vec3::hypot(x, y)).clamp(0.0, 1.0),
+            self.unit
+                .slope_cdf(crate::vec3::hypot(x, y))
+                .clamp(0.0, 1.0),
             (phi / (2.0 * PI)).min(1.0),
         ]
     }

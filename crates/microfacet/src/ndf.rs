@@ -1,5 +1,10 @@
 //! The [`Ndf`] trait: what every NDF provides, and the identities written once.
 
+/// Below u = GRAZING · σ(0) Λ and σ take their grazing asymptotes σ(0)/u − ½ and σ(0) ± u/2:
+/// the next terms are O(u) against σ(0)/u, i.e. below 1e-40 relative, so every NDF gets the
+/// same exact-to-rounding values there without its own route having to reach u ~ 1e-300.
+const GRAZING: f64 = 1e-20;
+
 /// A microfacet normal distribution function, isotropic, in the conventions of the crate docs.
 ///
 /// Required: `d_pos` (D on (0, 1]), `p22`, `p2`, `lambda_pos` (Λ on (0, 1)) and `sigma_zero`
@@ -61,6 +66,11 @@ pub trait Ndf {
         } else if u > 0.0 {
             if u >= 1.0 {
                 0.0
+            } else if u < GRAZING * self.sigma_zero() {
+                // Λ = σ(0)/u − ½ + O(u): the rest is below 1e-20 of the sum here, and the
+                // per-NDF routes (cot θ/α overflowing, quadratures of overflowing
+                // integrands) need not reach this far.
+                self.sigma_zero() / u - 0.5
             } else {
                 self.lambda_pos(u)
             }
@@ -83,6 +93,10 @@ pub trait Ndf {
         let lit = u.max(0.0);
         if a >= 1.0 {
             return lit;
+        }
+        if a < GRAZING * self.sigma_zero() {
+            // σ(±u) = σ(0) ± u/2 + O(u²) (see `lambda`).
+            return self.sigma_zero() + 0.5 * u;
         }
         let shadow = self.sigma_neg(a);
         // Λ overflows only for u below ~1e-300 · α, where σ(±u) has reached σ(0).
@@ -117,6 +131,6 @@ pub trait Ndf {
 
 /// Shape-invariant NDFs: D(u) = f(tan θ/α)/(α² u⁴), i.e. P22(p, q) = f(r/α)/α².
 pub trait ShapeInvariant: Ndf {
-    /// The α = 1 radial profile f(x), x = tan θm / α.
+    /// The α = 1 radial profile f(x), x = tan θm / α; even (f(−x) = f(x)).
     fn f(&self, x: f64) -> f64;
 }

@@ -176,7 +176,11 @@ pub fn integrate_fixed(f: impl Fn(f64) -> f64, a: f64, b: f64, level: u32) -> f6
         if !(w > 0.0 && dist > 0.0) {
             continue;
         }
-        let sides: &[f64] = if i == 0 { &[a + dist] } else { &[a + dist, b - dist] };
+        let sides: &[f64] = if i == 0 {
+            &[a + dist]
+        } else {
+            &[a + dist, b - dist]
+        };
         for &x in sides {
             let v = f(x) * w;
             if v.is_finite() {

@@ -34,13 +34,23 @@ pub trait RadialSlopes: Ndf {
 
     /// The density of r = tan θm: 2π r P22(r).
     fn slope_pdf(&self, r: f64) -> f64 {
-        2.0 * PI * r * self.p22(r, 0.0)
+        radial_pdf(self, r)
     }
 
     /// r with F(r) = ξ, for ξ ∈ [0, 1] (ξ = 1 gives +∞).
     fn slope_quantile(&self, xi: f64) -> f64 {
         quantile_by_newton(self, xi)
     }
+}
+
+/// 2π r P22(r, 0), with its limits at r = 0 and ∞ (not 0·∞): P22 grows slower than 1/r at the
+/// pole (a logarithm at most; Bessel-K with a ≤ ½ overrides `slope_pdf`) and falls faster
+/// than 1/r² at infinity.
+fn radial_pdf<N: Ndf + ?Sized>(n: &N, r: f64) -> f64 {
+    if r == 0.0 || r == f64::INFINITY {
+        return 0.0;
+    }
+    2.0 * PI * r * n.p22(r, 0.0)
 }
 
 /// The quantile at the edges: NaN → NaN, ξ ≤ 0 → 0, ξ ≥ 1 → ∞; `None` inside (0, 1).
@@ -136,7 +146,7 @@ impl RadialSlopes for Exponential {
             }
             sum
         } else {
-            1.0 - (1.0 + y) * (-y).exp()
+            1.0 - self.slope_ccdf(r)
         }
     }
     fn slope_ccdf(&self, r: f64) -> f64 {
@@ -190,13 +200,15 @@ impl RadialSlopes for Gtr {
         // L = ln α², w = (r²+α²)/(1+r²), X = L − ln w = ln(α²/w).
         let (l, k) = (self.burley().l, self.burley().k);
         let (ln_w, _, x_over_l) = self.log_ratios(r);
-        if -k * l > 1.0 {
+        let f = if -k * l > 1.0 {
             // Large exponents: = e^{k ln w} expm1(kX)/expm1(kL), whose exponentials are all
             // of arguments known to full relative accuracy.
             (k * ln_w).exp() * (k * x_over_l * l).exp_m1() / (k * l).exp_m1()
         } else {
             x_over_l * expm1_over_x(-k * x_over_l * l) / expm1_over_x(-k * l)
-        }
+        };
+        // (The ratio rounds to 1 + ulp as r → ∞.)
+        f.min(1.0)
     }
     fn slope_ccdf(&self, r: f64) -> f64 {
         if r == f64::INFINITY {
@@ -229,23 +241,32 @@ impl Gtr {
         let a2 = self.alpha() * self.alpha();
         let r2 = r * r;
         let (l, delta) = (self.burley().l, self.burley().delta);
+        // (c₀ + c₁r²)/(d₀ + d₁r²), in 1/r² above r² = 1 (r² = ∞ gives c₁/d₁, not NaN).
+        let ratio = |c0: f64, c1: f64, d0: f64, d1: f64| {
+            if r2 > 1.0 {
+                let s = 1.0 / r2;
+                (c0 * s + c1) / (d0 * s + d1)
+            } else {
+                (c0 + c1 * r2) / (d0 + d1 * r2)
+            }
+        };
         let zw = 1.0 / (1.0 + r2); // w − 1 = δ zw
-        let zx = r2 / (r2 + a2); // α²/w − 1 = δ zx
+        let zx = ratio(0.0, 1.0, a2, 1.0); // α²/w − 1 = δ zx = δ r²/(r² + α²)
         if delta.abs() < 0.5 {
             let lr = self.burley().lr_delta;
             let w_over_l = zw * ln1p_over_x(delta * zw) / lr;
             let x_over_l = zx * ln1p_over_x(delta * zx) / lr;
             ((delta * zw).ln_1p(), w_over_l, x_over_l)
         } else {
-            let ln = |small: f64, num: f64, den: f64| {
+            let ln = |small: f64, big: f64| {
                 if small.abs() < 0.5 {
                     small.ln_1p()
                 } else {
-                    (num / den).ln()
+                    big.ln()
                 }
             };
-            let ln_w = ln(delta * zw, r2 + a2, 1.0 + r2);
-            let x = ln(delta * zx, a2 * (1.0 + r2), r2 + a2);
+            let ln_w = ln(delta * zw, ratio(a2, 1.0, 1.0, 1.0));
+            let x = ln(delta * zx, a2 * ratio(1.0, 1.0, a2, 1.0));
             (ln_w, ln_w / l, x / l)
         }
     }
@@ -280,6 +301,12 @@ impl RadialSlopes for AnyNdf {
             AnyNdf::K0(n) => n.slope_ccdf(r),
             AnyNdf::BesselK(n) => n.slope_ccdf(r),
             AnyNdf::GenExponential(n) => n.slope_ccdf(r),
+        }
+    }
+    fn slope_pdf(&self, r: f64) -> f64 {
+        match self {
+            AnyNdf::BesselK(n) => n.slope_pdf(r),
+            n => radial_pdf(n, r),
         }
     }
     fn slope_quantile(&self, xi: f64) -> f64 {
@@ -336,6 +363,15 @@ pub fn invert_dcos<N: RadialSlopes + ?Sized>(ndf: &N, wm: Vec3) -> [f64; 2] {
 pub fn pdf_dcos<N: Ndf + ?Sized>(ndf: &N, wm: Vec3) -> f64 {
     if wm.z <= 0.0 {
         return 0.0;
+    }
+    // Near the pole through the slopes, D = P22(x/z, y/z)/z⁴: cos θm rounds to 1 below slopes
+    // ~1e-8, and D(1) is the pole (+∞) of Ei, Erfc, K0 and Bessel-K a ≤ 1, while P22 at the
+    // slopes is finite. (Slopes below α/100: there z⁴ = 1 to 4e-4 α², no cancellation.)
+    let (p, q) = (wm.x / wm.z, wm.y / wm.z);
+    let a = ndf.alpha();
+    if p * p + q * q < 1e-4 * a * a {
+        let z2 = wm.z * wm.z;
+        return ndf.p22(p, q) / (z2 * wm.z);
     }
     ndf.d(wm.z) * wm.z
 }

@@ -30,11 +30,16 @@ pub fn newton_bracketed(
         }
         let d = df(x);
         let mut next = x - fx / d;
+        let tol = 4.0 * f64::EPSILON * x.abs().max(f64::MIN_POSITIVE);
+        // (Converged before the bracket test: a step below an ulp rounds next onto x, the
+        // bracket's end, and must not send it to the midpoint.)
+        if (next - x).abs() <= tol {
+            return next;
+        }
         if !(next > lo && next < hi && next.is_finite()) {
             next = 0.5 * (lo + hi);
         }
-        let tol = 4.0 * f64::EPSILON * next.abs().max(f64::MIN_POSITIVE);
-        if (next - x).abs() <= tol || (hi - lo) <= tol {
+        if (hi - lo) <= tol {
             return next;
         }
         x = next;

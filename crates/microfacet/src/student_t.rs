@@ -167,7 +167,7 @@ impl Ndf for StudentT {
         if u4 > 1e-290 {
             e.exp() / (norm * u4)
         } else {
-            (e - 4.0 * u.ln()).exp() / norm
+            (e - 4.0 * u.ln() - norm.ln()).exp()
         }
     }
 
