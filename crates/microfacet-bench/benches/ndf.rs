@@ -1359,9 +1359,12 @@ fn walks(i: &Inputs) {
     println!("microsurface walks (F = 1 conductor, α = 0.5, μ = 0.5; million walks per second, median of 5; GGX VNDF in this run {vndf:.1} ns)");
     let wo = [0.75f64.sqrt(), 0.0, 0.5];
     macro_rules! rate {
-        ($name:expr, $d:expr) => {{
+        ($name:expr, $d:expr) => {
+            rate!($name, $d, 400_000u64)
+        };
+        ($name:expr, $d:expr, $n:expr) => {{
             let s = Microsurface::new($d, Heights::Uniform);
-            let n = 400_000u64;
+            let n: u64 = $n;
             let mut one = Vec::new();
             let mut two = Vec::new();
             for r in 0..5 {
@@ -1378,7 +1381,7 @@ fn walks(i: &Inputs) {
             }
             let (one, two) = (median(one), median(two));
             println!(
-                "{:24} {one:6.2} M/s one core | {two:6.2} M/s rayon ({:4.2}×)",
+                "{:24} {one:7.3} M/s one core | {two:7.3} M/s rayon ({:4.2}×)",
                 $name,
                 two / one
             );
@@ -1400,5 +1403,24 @@ fn walks(i: &Inputs) {
     rate!(
         "GTR γ = 1.5",
         Microfacet::<f64, Gtr>::gtr(0.5, 0.5, 1.5).unwrap()
+    );
+    // The exact path (`Exact`, f64 kernels with quadratures where the NDF needs them): GGX
+    // as its baseline, then the family (visible normals by the Beckmann mixtures' posterior
+    // stream sampler; fewer walks where Λ is a quadrature).
+    use microfacet::{Exact, NdfKind};
+    let exact = |kind, shape| Exact::new(kind, 0.5, 0.5, shape).unwrap();
+    rate!("Exact GGX", exact(NdfKind::Ggx, None), 100_000);
+    rate!(
+        "Exact Student-T γ = 2.5",
+        exact(NdfKind::StudentT, Some(2.5)),
+        100_000
+    );
+    rate!("Exact K0", exact(NdfKind::K0, None), 100_000);
+    rate!("Exact Ei", exact(NdfKind::Ei, None), 20_000);
+    rate!("Exact Erfc", exact(NdfKind::Erfc, None), 20_000);
+    rate!(
+        "Exact Bessel-K a = 2.5",
+        exact(NdfKind::BesselK, Some(2.5)),
+        4_000
     );
 }

@@ -21,8 +21,7 @@ use crate::ndf::{Ndf, ShapeInvariant};
 use crate::special::{dd::Dd, erfc, erfc_ratio_tail};
 use std::f64::consts::PI;
 
-/// √π
-const SQRT_PI: f64 = 1.772_453_850_905_516;
+use crate::special::SQRT_PI;
 /// exp(−x) is 0 in f64 for x above this (the smallest subnormal is e^{−744.4}).
 pub(crate) const EXP_UNDERFLOW: f64 = 746.0;
 

@@ -37,8 +37,7 @@ use crate::special::{gamma_ratio_half, ln_bessel_k, ln_gamma, ln_xnu_bessel_k_sm
 use std::f64::consts::LN_2;
 use std::f64::consts::PI;
 
-/// √π
-const SQRT_PI: f64 = 1.772_453_850_905_516;
+use crate::special::SQRT_PI;
 /// Supported range of the shape a (see the module docs).
 pub const BESSEL_K_A_MIN: f64 = 0.1;
 /// See [`BESSEL_K_A_MIN`].

@@ -1095,6 +1095,18 @@ impl Distribution<f64> for Exact {
     fn sample_wm(&self, w: [f64; 3], u: [f64; 2]) -> [f64; 3] {
         self.surface().sample_visible(Vec3::from(w), u).into()
     }
+    /// As the trait's: for the Beckmann mixtures of the family (Student-T, Ei, Erfc, K0,
+    /// Bessel-K) above the horizon, the posterior of the mixing variable
+    /// (`Shaped::sample_visible_stream`: ≤ 2 candidates on average, then Beckmann's stream
+    /// sampler; Bessel-K's exact warp inverts a CDF that integrates K_ν); `None` otherwise.
+    fn sample_wm_stream(&self, v: [f64; 3], uniform: &mut dyn FnMut() -> f64) -> Option<[f64; 3]> {
+        match &self.inner {
+            ExactInner::Shaped(s) => s
+                .sample_visible_stream(Vec3::from(v), uniform)
+                .map(Into::into),
+            _ => None,
+        }
+    }
     fn sample_dcos(&self, u: [f64; 2]) -> Sample<f64> {
         let s = self.surface();
         let wm = s.sample_dcos(u);

@@ -27,8 +27,7 @@ use crate::quad;
 use crate::special::{bessel_k_sum_m1, dd::Dd, dggx_bracket, dggx_g, k0e, k1e};
 use std::f64::consts::PI;
 
-/// √π
-const SQRT_PI: f64 = 1.772_453_850_905_516;
+use crate::special::SQRT_PI;
 
 /// The Double GGX NDF with roughness α.
 #[derive(Clone, Copy, Debug, PartialEq)]

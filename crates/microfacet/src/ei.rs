@@ -26,8 +26,7 @@ use crate::sample::RadialSlopes;
 use crate::special::{dd::Dd, e1, e1_cf_tail, e1_with, erfc, erfc_ratio_tail};
 use std::f64::consts::PI;
 
-/// √π
-const SQRT_PI: f64 = 1.772_453_850_905_516;
+use crate::special::SQRT_PI;
 /// e^{−y} underflows beyond this.
 const EXP_UNDERFLOW: f64 = crate::beckmann::EXP_UNDERFLOW;
 /// Largest x = cot θ/α where the closed form of Λ is used (its cancellation, ~x⁴/5, costs

@@ -21,8 +21,7 @@ use crate::ndf::{Ndf, ShapeInvariant};
 use crate::sample::RadialSlopes;
 use crate::special::{dd::Dd, e1_with, erfc, erfc_ratio_tail};
 
-/// √π
-const SQRT_PI: f64 = 1.772_453_850_905_516;
+use crate::special::SQRT_PI;
 /// e^{−y} underflows beyond this.
 const EXP_UNDERFLOW: f64 = crate::beckmann::EXP_UNDERFLOW;
 

@@ -155,7 +155,7 @@ pub mod approx {
     use crate::special::{erfc, erfc_ratio_tail};
 
     /// √π
-    const SQRT_PI: f64 = 1.772_453_850_905_516;
+    use crate::special::SQRT_PI;
 
     /// The page's `Ei`Λ[u, α]` for 0 < u < 1 (pass 1.7 α to approximate the Exponential NDF):
     /// Λ = [2 e^{−a²}(1 + a²) − √π a (3 + 2a²) erfc a]/(6√π a), a = cot θ/α.

@@ -426,6 +426,8 @@ pub struct Shaped {
     unit: crate::AnyNdf,
     alpha_x: f64,
     alpha_y: f64,
+    /// The posterior sampler of the Beckmann mixtures (not the generalised exponential).
+    posterior: Option<crate::mixture::Posterior>,
 }
 
 impl Shaped {
@@ -435,7 +437,39 @@ impl Shaped {
             unit: ndf.with_alpha(1.0),
             alpha_x: crate::error::check_alpha(alpha_x)?,
             alpha_y: crate::error::check_alpha(alpha_y)?,
+            posterior: ndf
+                .beckmann_mixing()
+                .and_then(crate::mixture::Posterior::new),
         })
+    }
+
+    /// A visible normal for v above the horizon from a uniform stream
+    /// ([`crate::Distribution::sample_wm_stream`]), for the Beckmann mixtures: the mixing
+    /// variable by [`crate::mixture::Posterior`], then the Beckmann component's stream
+    /// sampler at roughness (β αx, β αy). `None` for the generalised exponential (no such
+    /// sampler), v on or below the horizon, or where a sampler gives up.
+    pub fn sample_visible_stream(&self, v: Vec3, next: &mut dyn FnMut() -> f64) -> Option<Vec3> {
+        let posterior = self.posterior?;
+        let v = v.to_unit();
+        // (NaN fails this too.)
+        if v.z.is_nan() || v.z <= 0.0 {
+            return None;
+        }
+        let (ax, ay) = (self.alpha_x, self.alpha_y);
+        let h = crate::vec3::hypot(ax * v.x, ay * v.y);
+        let ln_beta = posterior.sample_ln_beta(v.z, h, next)?;
+        // β (αx, αy) within [1e-290, 1e290], where the component sampler's slopes stay
+        // finite: β = 0 or ∞ (a Gamma variate of small shape in logarithms, e^{ln β}) has
+        // probability 0 and would give a pole or horizon normal anyway.
+        let (lo, hi) = (ax.min(ay).ln(), ax.max(ay).ln());
+        let beta = ln_beta.clamp(-667.0 - lo, 667.0 - hi).exp();
+        crate::fast::beckmann::sample_visible_above(
+            [v.x, v.y, v.z],
+            beta * ax,
+            beta * ay,
+            &mut || next(),
+        )
+        .map(Vec3::from)
     }
 
     /// The α = 1 member (its kind and shape parameter).

@@ -157,3 +157,120 @@ pub fn superpose_beckmann(mixing: Mixing, alpha: f64, q: impl Fn(&Beckmann) -> f
 pub fn superpose_ggx(mixing: Mixing, alpha: f64, q: impl Fn(&Ggx) -> f64) -> f64 {
     superpose(mixing, alpha, |a| q(&Ggx::raw(a))).value
 }
+
+/// Exact visible-normal sampling of a Beckmann mixture (Student-T, Ei, Erfc, K0, Bessel-K):
+/// the posterior of the mixing variable, then that Beckmann component's visible normal.
+///
+/// For a direction v the visible-normal distribution max(0, v·m) D(m)/σ(v) of
+/// D = ∫ w(t) D_B(β(t)) dt is the mixture of the components' visible-normal distributions
+/// with the posterior weights w(t) σ_B(v; β(t))/σ(v). With z = v.z > 0 and h the stretched
+/// horizontal length of the unit v (h = |(αx vx, αy vy)|), Beckmann's projected area is
+/// σ_B = z (1 + erf a)/2 + βh e^{−a²}/(2√π), a = z/(βh) (its Λ = (e^{−a²}/(a√π) − erfc a)/2,
+/// written as two positive terms), and
+/// max(z, βh/(2√π)) ≤ σ_B ≤ z + βh/(2√π).
+/// The upper bound's two terms are two standard laws: the prior w (weight z) and the
+/// size-biased prior w(t)β(t)/E[β] (weight h E[β]/(2√π)); a candidate from their mixture is
+/// kept with probability σ_B/(z + βh/(2√π)) ≥ ½, so at most two candidates on average
+/// (d'Eon, *A Hitchhiker's Guide to Multiple Scattering*, the NDF pages' mixture
+/// representations; the sampler and its bounds are derived in `docs/derivations.md` F.7). The size-biased
+/// priors, in t of [`Mixing`] (β for α = 1):
+///
+/// | mixing | β(t) | prior | size-biased | E[β] |
+/// |---|---|---|---|---|
+/// | `InverseGamma(k)` (Student-T, k = γ − 1) | √(k/t) | Gamma(k) | Gamma(k − ½) | √k Γ(k − ½)/Γ(k) |
+/// | `Gamma(k)` (K0 k = 1, Bessel-K k = a) | √t | Gamma(k) | Gamma(k + ½) | Γ(k + ½)/Γ(k) |
+/// | `UniformSquare` (Ei) | √t | U | U^{2/3} | 2/3 |
+/// | `Uniform` (Erfc) | t | U | √U | ½ |
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub(crate) struct Posterior {
+    mixing: Mixing,
+    /// E[β] under the prior, for α = 1.
+    mean_beta: f64,
+}
+
+impl Posterior {
+    /// The sampler of `mixing`'s posterior; `None` for the mixings it does not cover (the
+    /// classic NDFs' own, which have their own samplers) and for Student-T with k ≤ ½
+    /// (γ ≤ 3/2: E[β] = ∞, Λ infinite).
+    pub(crate) fn new(mixing: Mixing) -> Option<Posterior> {
+        let mean_beta = match mixing {
+            Mixing::InverseGamma(k) if k > 0.5 => {
+                k.sqrt() / crate::special::gamma_ratio_half(k - 0.5)
+            }
+            Mixing::Gamma(k) => crate::special::gamma_ratio_half(k),
+            Mixing::UniformSquare => 2.0 / 3.0,
+            Mixing::Uniform => 0.5,
+            _ => return None,
+        };
+        Some(Posterior { mixing, mean_beta })
+    }
+
+    /// ln β(t) for t drawn from the prior, or from the size-biased prior.
+    fn draw_ln_beta(&self, size_biased: bool, next: &mut dyn FnMut() -> f64) -> f64 {
+        let bias = if size_biased { 1.0 } else { 0.0 };
+        match self.mixing {
+            Mixing::InverseGamma(k) => 0.5 * (k.ln() - ln_gamma_variate(k - 0.5 * bias, next)),
+            Mixing::Gamma(k) => 0.5 * ln_gamma_variate(k + 0.5 * bias, next),
+            // t = U^{1/(1 + bias/2)}: U, or U^{2/3} (density (3/2)√t).
+            Mixing::UniformSquare => 0.5 * next().ln() / (1.0 + 0.5 * bias),
+            // t = U or √U (density 2t).
+            Mixing::Uniform => next().ln() / (1.0 + bias),
+            _ => f64::NAN,
+        }
+    }
+
+    /// ln β of the posterior for a unit direction with z = v.z > 0 and stretched horizontal
+    /// length h (see the type's docs); `None` after 64 candidates (acceptance ≥ ½:
+    /// probability below 1e-19).
+    pub(crate) fn sample_ln_beta(
+        &self,
+        z: f64,
+        h: f64,
+        next: &mut dyn FnMut() -> f64,
+    ) -> Option<f64> {
+        const C: f64 = 0.5 / crate::special::SQRT_PI;
+        let p_prior = z / (z + C * h * self.mean_beta);
+        for _ in 0..64 {
+            let size_biased = next() >= p_prior;
+            let ln_beta = self.draw_ln_beta(size_biased, next);
+            let hb = h * ln_beta.exp();
+            // (hb = 0 or ∞: σ_B equals its bound, z or βh/(2√π).)
+            let keep = if hb > 0.0 && hb.is_finite() {
+                let a = z / hb;
+                let sigma = 0.5 * z * (1.0 + crate::special::erf(a)) + C * hb * (-a * a).exp();
+                sigma / (z + C * hb)
+            } else {
+                1.0
+            };
+            if next() < keep {
+                return Some(ln_beta);
+            }
+        }
+        None
+    }
+}
+
+/// ln of a Gamma(k, 1) variate, k > 0 (Marsaglia & Tsang 2000, "A simple method for
+/// generating gamma variables": acceptance ≥ 0.95 for k ≥ 1; below, Gamma(k + 1) U^{1/k},
+/// their §6, kept in logarithms, where U^{1/k} underflows for small k). NaN after 64
+/// rejections (probability below 1e-80).
+fn ln_gamma_variate(k: f64, next: &mut dyn FnMut() -> f64) -> f64 {
+    if k < 1.0 {
+        let boost = next().ln() / k;
+        return ln_gamma_variate(k + 1.0, next) + boost;
+    }
+    let d = k - 1.0 / 3.0;
+    let c = 1.0 / (9.0 * d).sqrt();
+    for _ in 0..64 {
+        let x = crate::fast::ziggurat::normal(next(), &mut || next());
+        let v = 1.0 + c * x;
+        if v <= 0.0 {
+            continue;
+        }
+        let v = v * v * v;
+        if next().ln() < 0.5 * x * x + d - d * v + d * v.ln() {
+            return d.ln() + v.ln();
+        }
+    }
+    f64::NAN
+}

@@ -43,8 +43,7 @@ use crate::sample::RadialSlopes;
 use crate::special::{dd::Dd, gamma_ratio_half, inc_beta};
 use std::f64::consts::PI;
 
-/// √π
-const SQRT_PI: f64 = 1.772_453_850_905_516;
+use crate::special::SQRT_PI;
 /// Largest supported γ: beyond it Student-T is Beckmann to ~1e-6 in the body of the lobe
 /// and nothing new is tested.
 pub const STUDENT_T_GAMMA_MAX: f64 = 1e6;

@@ -27,7 +27,7 @@ impl Vec3 {
         self.x * o.x + self.y * o.y + self.z * o.z
     }
 
-    /// |self| to ~1 ulp for every finite vector (see [`hypot`]).
+    /// |self| to ~1 ulp for every finite vector (the crate-private `hypot`: a sum of squares where the squares are safe).
     #[inline]
     pub fn length(self) -> f64 {
         let s = self.x * self.x + self.y * self.y + self.z * self.z;

@@ -22,8 +22,7 @@ use crate::special::{erf, erfc};
 use std::f64::consts::PI;
 use std::sync::OnceLock;
 
-/// √π
-const SQRT_PI: f64 = 1.772_453_850_905_516;
+use crate::special::SQRT_PI;
 
 /// A closed-form component: Beckmann or GGX slopes with roughness α.
 #[derive(Clone, Copy, Debug, PartialEq)]

@@ -552,7 +552,12 @@ impl<D: Distribution<f64>> Microsurface<D> {
         // rarely get here; the cap keeps a direction straight down, which no facet faces,
         // from looping: it is never reached in tests/walk.rs or the fuzz suite.)
         for _ in 0..1_000_000 {
-            m = self.dist.sample_wm(up, [rng.next_open(), rng.next_open()]);
+            // (The stream sampler of the mirror image where there is one: the family's
+            // Beckmann mixtures have one above the horizon only.)
+            m = match self.dist.sample_wm_stream(up, &mut || rng.next_open()) {
+                Some(m) => m,
+                None => self.dist.sample_wm(up, [rng.next_open(), rng.next_open()]),
+            };
             let (a, b) = (dot(v, m), dot(up, m));
             if rng.next_open() * b < a || !(b > 0.0) {
                 return m;

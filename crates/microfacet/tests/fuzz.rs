@@ -2009,42 +2009,45 @@ fn table_contract() {
 /// direction including the horizon, either side, non-unit and NaN; uniform streams with 0,
 /// 1 − ε, subnormals): never panics; a normal it returns for a unit v is a finite unit
 /// vector with m.z > 0 and v·m > 0, and it answers `None` for v on the horizon.
-fn stream_samplers<F: fast::Real + std::fmt::Debug>(test: u64, draw: fn(&mut Rng) -> F) {
-    use microfacet::{Distribution, Exponential, Microfacet};
-    fn one<F: fast::Real + std::fmt::Debug, D: Distribution<F>>(
-        fails: &mut Failures,
-        r: &mut Rng,
-        d: &D,
-        name: &str,
-        draw: fn(&mut Rng) -> F,
-    ) {
-        let v: [F; 3] = if r.chance(0.2) {
-            let w = direction(r, F::IS_F32);
-            [F::from_f64(w.x), F::from_f64(w.y), F::from_f64(w.z)]
-        } else {
-            unit_direction(r)
-        };
-        let mut stream = Rng::new(r.next());
-        let m = no_panic("sample_wm_stream", format!("{name} v={v:?}"), || {
-            d.sample_wm_stream(v, &mut || draw(&mut stream))
+/// One stream sample of `d` for a hostile v: no panic; none on the horizon; a unit normal
+/// above the horizon facing v.
+fn stream_one<F: fast::Real + std::fmt::Debug, D: Distribution<F>>(
+    fails: &mut Failures,
+    r: &mut Rng,
+    d: &D,
+    name: &str,
+    draw: fn(&mut Rng) -> F,
+) {
+    let v: [F; 3] = if r.chance(0.2) {
+        let w = direction(r, F::IS_F32);
+        [F::from_f64(w.x), F::from_f64(w.y), F::from_f64(w.z)]
+    } else {
+        unit_direction(r)
+    };
+    let mut stream = Rng::new(r.next());
+    let m = no_panic("sample_wm_stream", format!("{name} v={v:?}"), || {
+        d.sample_wm_stream(v, &mut || draw(&mut stream))
+    });
+    let vf = v.map(|x| x.to_f64());
+    let unit = ((vf[0] * vf[0] + vf[1] * vf[1] + vf[2] * vf[2]).sqrt() - 1.0).abs() < 1e-6;
+    if vf[2] == 0.0 {
+        fails.check(m.is_none(), || {
+            format!("{name}: a normal for v={v:?} on the horizon")
         });
-        let vf = v.map(|x| x.to_f64());
-        let unit = ((vf[0] * vf[0] + vf[1] * vf[1] + vf[2] * vf[2]).sqrt() - 1.0).abs() < 1e-6;
-        if vf[2] == 0.0 {
-            fails.check(m.is_none(), || {
-                format!("{name}: a normal for v={v:?} on the horizon")
-            });
-        }
-        if let (Some(m), true) = (m, unit) {
-            let m = m.map(|x| x.to_f64());
-            let len = (m[0] * m[0] + m[1] * m[1] + m[2] * m[2]).sqrt();
-            let dot = m[0] * vf[0] + m[1] * vf[1] + m[2] * vf[2];
-            let tol = if F::IS_F32 { 1e-6 } else { 1e-14 };
-            fails.check((len - 1.0).abs() < tol && m[2] > 0.0 && dot > 0.0, || {
-                format!("{name} v={v:?}: m={m:?}")
-            });
-        }
     }
+    if let (Some(m), true) = (m, unit) {
+        let m = m.map(|x| x.to_f64());
+        let len = (m[0] * m[0] + m[1] * m[1] + m[2] * m[2]).sqrt();
+        let dot = m[0] * vf[0] + m[1] * vf[1] + m[2] * vf[2];
+        let tol = if F::IS_F32 { 1e-6 } else { 1e-14 };
+        fails.check((len - 1.0).abs() < tol && m[2] > 0.0 && dot > 0.0, || {
+            format!("{name} v={v:?}: m={m:?}")
+        });
+    }
+}
+
+fn stream_samplers<F: fast::Real + std::fmt::Debug>(test: u64, draw: fn(&mut Rng) -> F) {
+    use microfacet::{Exponential, Microfacet};
     let mut r = Rng::new(test);
     let mut fails = Failures::default();
     for _ in 0..2000 * scale() {
@@ -2052,16 +2055,16 @@ fn stream_samplers<F: fast::Real + std::fmt::Debug>(test: u64, draw: fn(&mut Rng
         let (ax, ay) = (F::from_f64(ax), F::from_f64(ay));
         let (ax, ay) = if r.chance(0.5) { (ax, ax) } else { (ax, ay) };
         if let Ok(d) = Microfacet::<F, Ggx>::new(ax, ay) {
-            one(&mut fails, &mut r, &d, "GGX", draw);
+            stream_one(&mut fails, &mut r, &d, "GGX", draw);
         }
         if let Ok(d) = Microfacet::<F, Beckmann>::new(ax, ay) {
-            one(&mut fails, &mut r, &d, "Beckmann", draw);
+            stream_one(&mut fails, &mut r, &d, "Beckmann", draw);
         }
         if let Ok(d) = Microfacet::<F, DoubleGgx>::new(ax, ay) {
-            one(&mut fails, &mut r, &d, "Double GGX", draw);
+            stream_one(&mut fails, &mut r, &d, "Double GGX", draw);
         }
         if let Ok(d) = Microfacet::<F, Exponential>::new(ax, ay) {
-            one(&mut fails, &mut r, &d, "Exponential", draw);
+            stream_one(&mut fails, &mut r, &d, "Exponential", draw);
         }
         evals(4);
     }
@@ -2071,6 +2074,21 @@ fn stream_samplers<F: fast::Real + std::fmt::Debug>(test: u64, draw: fn(&mut Rng
 #[test]
 fn stream_samplers_f64() {
     stream_samplers::<f64>(46, uniform);
+    // The family's exact path (the Beckmann mixtures' posterior sampler; the generalised
+    // exponential answers None), every shape of each range.
+    let mut r = Rng::new(49);
+    let mut fails = Failures::default();
+    for _ in 0..2000 * scale() {
+        for kind in NdfKind::FAMILY {
+            let (ax, ay) = (alpha(&mut r), alpha(&mut r));
+            let ay = if r.chance(0.5) { ax } else { ay };
+            if let Ok(d) = Exact::new(kind, ax, ay, shape(&mut r, kind, true)) {
+                stream_one(&mut fails, &mut r, &d, kind.name(), uniform);
+            }
+        }
+        evals(6);
+    }
+    fails.finish("stream_samplers (family)");
 }
 
 #[test]

@@ -391,21 +391,9 @@ pub(crate) fn sample_visible_above<F: Real>(
         return None;
     }
     let mut next = || uniform().to_f64();
+    // ±Z/√2 from one uniform.
     let normal = |w: f64, next: &mut dyn FnMut() -> f64| {
-        // ±Z/√2 from one uniform: its lowest half picks the sign, the rest drives the
-        // ziggurat.
-        let (neg, w) = if w < 0.5 {
-            (true, 2.0 * w)
-        } else {
-            (false, 2.0 * w - 1.0)
-        };
-        let z = super::ziggurat::sample(&super::ziggurat::HALF_NORMAL, w, &mut || next())
-            * std::f64::consts::FRAC_1_SQRT_2;
-        if neg {
-            -z
-        } else {
-            z
-        }
+        super::ziggurat::normal(w, &mut || next()) * std::f64::consts::FRAC_1_SQRT_2
     };
     let (frame, x) = if h == 0.0 {
         ((1.0, 0.0), normal(next(), &mut next))

@@ -66,8 +66,7 @@ pub mod gtr;
 mod tables;
 pub mod ziggurat;
 
-/// √π
-const SQRT_PI: f64 = 1.772_453_850_905_516;
+use crate::special::SQRT_PI;
 
 /// σ(u) on [−1, 1] from Λ on (0, 1]: u(1 + Λ(u)) for u > 0, |u| Λ(|u|) for u < 0 (Λ(u)u = σ(−u)),
 /// σ(0) + u/2 near u = 0 (where uΛ(u) → σ(0) = `s0` but 0 · ∞ would be NaN). NaN stays NaN.

@@ -55,6 +55,17 @@ pub fn half_normal(w: f64, uniform: &mut impl FnMut() -> f64) -> f64 {
     sample(&HALF_NORMAL, w, uniform)
 }
 
+/// A standard normal variate Z from the uniform w ∈ [0, 1): its lower half picks the sign,
+/// the rest drives [`half_normal`]; further uniforms from `uniform`.
+#[inline]
+pub fn normal(w: f64, uniform: &mut impl FnMut() -> f64) -> f64 {
+    if w < 0.5 {
+        -half_normal(2.0 * w, uniform)
+    } else {
+        half_normal(2.0 * w - 1.0, uniform)
+    }
+}
+
 /// A variate of `z`'s density from w ∈ [0, 1) (w = 1, which an f32 source can round to,
 /// reads as 0; NaN gives NaN).
 #[inline(always)]

@@ -12,6 +12,9 @@
 
 pub mod dd;
 
+/// √π.
+pub const SQRT_PI: f64 = 1.772_453_850_905_516;
+
 /// Error function erf(x) (libm).
 #[inline]
 pub fn erf(x: f64) -> f64 {
