@@ -246,17 +246,23 @@ impl Ndf for BesselK {
     }
 
     fn lambda_pos(&self, u: f64) -> f64 {
-        let x = crate::smith::cot_theta(u) / self.alpha;
+        self.lambda_x(crate::smith::cot_theta(u) / self.alpha)
+    }
+
+    fn sigma_zero(&self) -> f64 {
+        self.alpha * gamma_ratio_half(self.a) / (2.0 * SQRT_PI)
+    }
+}
+
+impl BesselK {
+    /// Λ at x = cot θ/α: the Gamma(a) average of Beckmann's Λ.
+    pub(crate) fn lambda_x(&self, x: f64) -> f64 {
         if x == 0.0 {
             return f64::INFINITY;
         }
         // Λ_B(y) ~ 1/(2√π y) ∝ √m for small y, ~ e^{−y²}/(4√π y³) ∝ m^{3/2} e^{−x²/m} for large.
         let k = if x < 1.0 { -0.5 } else { -1.5 };
         self.mix(k, x * x, |m, _| crate::beckmann::lambda_at(x / m.sqrt()))
-    }
-
-    fn sigma_zero(&self) -> f64 {
-        self.alpha * gamma_ratio_half(self.a) / (2.0 * SQRT_PI)
     }
 }
 

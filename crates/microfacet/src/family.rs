@@ -189,6 +189,34 @@ impl AnyNdf {
         }
     }
 
+    /// ln f(x) of the α = 1 profile for x ≥ 1e150 given as ln x, where x itself may overflow:
+    /// Student-T's power law, f = ((γ − 1)/(x² + γ − 1))^γ/π → (γ − 1)^γ x^{−2γ}/π (relative
+    /// error γ(γ − 1)/x² ≤ 1e-288); `None` for the others, whose f is 0 in f64 there
+    /// (exponential tails).
+    pub(crate) fn ln_f_far(&self, ln_x: f64) -> Option<f64> {
+        match self {
+            AnyNdf::StudentT(n) => {
+                let g = n.gamma();
+                Some(g * (g - 1.0).ln() - 2.0 * g * ln_x - std::f64::consts::PI.ln())
+            }
+            _ => None,
+        }
+    }
+
+    /// Λ at x = cot θ/α given directly (not through a rounded cosine, whose rounding moves Λ
+    /// by up to p·2ε/sin²θ relative where Λ ~ cot^{−p}θ): the Beckmann mixtures of the
+    /// family; `None` for the others.
+    pub(crate) fn lambda_x(&self, x: f64) -> Option<f64> {
+        match self {
+            AnyNdf::StudentT(n) => Some(n.lambda_x(x)),
+            AnyNdf::Ei(_) => Some(crate::ei::lambda_x(x)),
+            AnyNdf::Erfc(_) => Some(crate::erfc::lambda_x(x)),
+            AnyNdf::K0(_) => Some(crate::K0::lambda_x(x)),
+            AnyNdf::BesselK(n) => Some(n.lambda_x(x)),
+            _ => None,
+        }
+    }
+
     /// Whether the marginal slope density is unbounded at 0: P2(0) = +∞ (the true value) for
     /// Erfc (P2 ~ −ln |p|) and Bessel-K with a ≤ ½ (P2 ~ |p|^{2a−1}, or −ln |p| at a = ½).
     pub fn p2_singular_at_zero(&self) -> bool {

@@ -59,6 +59,16 @@ impl K0 {
     }
 }
 
+impl K0 {
+    /// Λ at x = cot θ/α: e^{−2x}/(4x) (0 where e^{−2x} underflows, +∞ at 0).
+    pub(crate) fn lambda_x(x: f64) -> f64 {
+        if 2.0 * x > EXP_UNDERFLOW {
+            return 0.0;
+        }
+        (-2.0 * x).exp() / (4.0 * x)
+    }
+}
+
 impl Ndf for K0 {
     fn name(&self) -> &'static str {
         "k0"
@@ -103,6 +113,7 @@ impl Ndf for K0 {
     }
 
     fn lambda_pos(&self, u: f64) -> f64 {
+        // (K0::lambda_x is the same at a cot θ given exactly.)
         // 2x = 2 cot θ/α in double-double.
         let sin = Dd::one_minus_sq(u).sqrt();
         let two_x = Dd::new(u).div_dd(sin).div_dd(Dd::new(0.5 * self.alpha));

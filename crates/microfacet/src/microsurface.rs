@@ -449,27 +449,10 @@ impl Shaped {
     /// sampler at roughness (β αx, β αy). `None` for the generalised exponential (no such
     /// sampler), v on or below the horizon, or where a sampler gives up.
     pub fn sample_visible_stream(&self, v: Vec3, next: &mut dyn FnMut() -> f64) -> Option<Vec3> {
-        let posterior = self.posterior?;
         let v = v.to_unit();
-        // (NaN fails this too.)
-        if v.z.is_nan() || v.z <= 0.0 {
-            return None;
-        }
-        let (ax, ay) = (self.alpha_x, self.alpha_y);
-        let h = crate::vec3::hypot(ax * v.x, ay * v.y);
-        let ln_beta = posterior.sample_ln_beta(v.z, h, next)?;
-        // β (αx, αy) within [1e-290, 1e290], where the component sampler's slopes stay
-        // finite: β = 0 or ∞ (a Gamma variate of small shape in logarithms, e^{ln β}) has
-        // probability 0 and would give a pole or horizon normal anyway.
-        let (lo, hi) = (ax.min(ay).ln(), ax.max(ay).ln());
-        let beta = ln_beta.clamp(-667.0 - lo, 667.0 - hi).exp();
-        crate::fast::beckmann::sample_visible_above(
-            [v.x, v.y, v.z],
-            beta * ax,
-            beta * ay,
-            &mut || next(),
-        )
-        .map(Vec3::from)
+        self.posterior?
+            .sample_visible::<f64>(v.into(), self.alpha_x, self.alpha_y, next)
+            .map(Vec3::from)
     }
 
     /// The α = 1 member (its kind and shape parameter).
@@ -497,11 +480,34 @@ impl Microsurface for Shaped {
                 let z2 = m.z * m.z;
                 return self.unit.p22(gx, gy) / (ax * ay * z2 * z2);
             }
+            // Near the horizon D₁ at the stretched cosine u₁ = z/ℓ underflows where D does not
+            // (Student-T γ < 2 grows like z^{2γ−4}): there D = f(X)/(αx αy z⁴) with
+            // X = |(x/αx, y/αy)|/z ≥ 1e150, in logarithms (0 for the exponential tails).
+            let (sx, sy) = (m.x / ax, m.y / ay);
+            let s = crate::vec3::hypot(sx, sy);
+            if m.z < 1e-150 * s {
+                let ln_x = s.ln() - m.z.ln();
+                return match self.unit.ln_f_far(ln_x) {
+                    Some(lf) => (lf - (ax * ay).ln() - 4.0 * m.z.ln()).exp(),
+                    None => 0.0,
+                };
+            }
         }
         self.stretched().d_with(wm, |u| self.unit.d(u))
     }
 
     fn lambda(&self, w: Vec3) -> f64 {
+        // From the stretched vector's cot θ = z/|(αx x, αy y)| where the member has Λ of cot θ
+        // (the Beckmann mixtures): through the cosine, 1 − u² near the normal carries u's
+        // rounding, 2ε/sin²θ relative (4e-5 of Λ at cot θ = 3e5 for Student-T near γ = 3/2).
+        let s = self.stretched().stretch(upper(w));
+        let h = crate::vec3::hypot(s.x, s.y);
+        let cot = s.z / h;
+        if h > 0.0 && s.z > 0.0 && cot.is_finite() {
+            if let Some(l) = self.unit.lambda_x(cot) {
+                return l;
+            }
+        }
         self.stretched().lambda_with(w, |u| self.unit.lambda(u))
     }
 

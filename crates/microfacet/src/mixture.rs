@@ -208,6 +208,9 @@ impl Posterior {
     /// ln β(t) for t drawn from the prior, or from the size-biased prior.
     fn draw_ln_beta(&self, size_biased: bool, next: &mut dyn FnMut() -> f64) -> f64 {
         let bias = if size_biased { 1.0 } else { 0.0 };
+        // (A uniform of exactly 0, which [0, 1) sources give, reads as 2^−53: ln 0 would send
+        // β to 0 or ∞, a spike normal whose D overflows.)
+        let next = &mut || next().max(f64::EPSILON / 2.0);
         match self.mixing {
             Mixing::InverseGamma(k) => 0.5 * (k.ln() - ln_gamma_variate(k - 0.5 * bias, next)),
             Mixing::Gamma(k) => 0.5 * ln_gamma_variate(k + 0.5 * bias, next),
@@ -247,6 +250,33 @@ impl Posterior {
             }
         }
         None
+    }
+}
+
+impl Posterior {
+    /// A visible normal for the unit direction v (v.z > 0) at roughness (αx, αy): β from
+    /// [`Posterior::sample_ln_beta`], then Beckmann's stream sampler at (β αx, β αy).
+    /// `None` where either gives up (see theirs) or v is not above the horizon.
+    pub(crate) fn sample_visible<F: crate::fast::Real>(
+        &self,
+        v: [f64; 3],
+        ax: f64,
+        ay: f64,
+        next: &mut dyn FnMut() -> f64,
+    ) -> Option<[F; 3]> {
+        if v[2].is_nan() || v[2] <= 0.0 {
+            return None;
+        }
+        let h = crate::vec3::hypot(ax * v[0], ay * v[1]);
+        let ln_beta = self.sample_ln_beta(v[2], h, next)?;
+        // β (αx, αy) within [1e-290, 1e290], where the component sampler's slopes stay
+        // finite: β = 0 or ∞ (a Gamma variate of small shape in logarithms, e^{ln β}) has
+        // probability 0 and would give a pole or horizon normal anyway.
+        let (lo, hi) = (ax.min(ay).ln(), ax.max(ay).ln());
+        let beta = ln_beta.clamp(-667.0 - lo, 667.0 - hi).exp();
+        let (bx, by) = (F::from_f64(beta * ax), F::from_f64(beta * ay));
+        let v = v.map(F::from_f64);
+        crate::fast::beckmann::sample_visible_above(v, bx, by, &mut || F::from_f64(next()))
     }
 }
 

@@ -105,6 +105,16 @@ impl StudentT {
         }
     }
 
+    /// Λ at x = cot θ/α (+∞ for γ ≤ 3/2).
+    pub(crate) fn lambda_x(&self, x: f64) -> f64 {
+        if !self.has_finite_lambda() {
+            return f64::INFINITY;
+        }
+        // ζ = cot θ/√c = x α/√c.
+        let zeta = x * self.alpha / self.c.sqrt();
+        self.lambda_zeta(zeta, 1.0 / (1.0 + zeta * zeta))
+    }
+
     /// Λ at ζ = cot θ/√c (ζ > 0), with z₀ = 1/(1 + ζ²) given.
     fn lambda_zeta(&self, zeta: f64, z0: f64) -> f64 {
         let b = self.gamma - 1.0;

@@ -892,3 +892,113 @@ fn ziggurat_variates_are_exponential_and_half_normal() {
         assert!(!draw(0.999, &mut || 0.999).is_infinite());
     }
 }
+
+/// The family's fitted Λ (`Microfacet::with_shape`, `fast::fitted`) against the exact path
+/// over the whole domain: every Beckmann-mixture member at the ends of its shape range and
+/// between, isotropic and anisotropic, cot θ/α from 1e-9 to 1e6 at three azimuths: relative
+/// ≤ 1e-7 where Λ ≥ 1e-200 (absolute ≤ 1e-200 below, the module's stated floor), f32 ≤ 2e-6
+/// (against the exact Λ of the f32 direction and roughness); D exact (≤ 1e-11 against the exact path's
+/// stretched form); G1 = 1/(1 + Λ). Prints each material's worst error and build time.
+#[test]
+fn family_fitted_lambda_over_the_whole_domain() {
+    use microfacet::{BesselK, Distribution, Ei, Erfc, Exact, Microfacet, NdfKind, StudentT, K0};
+    fn check<D: Distribution<f64>, E: Distribution<f32>>(
+        name: &str,
+        m: &D,
+        m32: &E,
+        ex: &Exact,
+        ex32: &Exact,
+        ax: f64,
+        ay: f64,
+    ) {
+        let (mut worst, mut worst32, mut worst_d) = (0.0f64, 0.0f64, 0.0f64);
+        for phi in [0.3f64, 1.1, 2.0] {
+            let (s, c) = phi.sin_cos();
+            // The projected roughness of the azimuth: cot θ = z α̃.
+            let at = (ax * ax * c * c + ay * ay * s * s).sqrt();
+            for z in logspace(1e-9, 1e6, 600) {
+                let cot = z * at;
+                let (st, ct) = (
+                    1.0 / (1.0 + cot * cot).sqrt(),
+                    cot / (1.0 + cot * cot).sqrt(),
+                );
+                let w = [st * c, st * s, ct];
+                let (l, want) = (m.lambda(w), ex.lambda(w));
+                let e = if want >= 1e-200 {
+                    ((l - want) / want).abs()
+                } else if l <= 1e-200 {
+                    0.0
+                } else {
+                    f64::INFINITY
+                };
+                worst = worst.max(e);
+                let w32 = w.map(|x| x as f32);
+                let want32 = ex32.lambda(w32.map(|x| x as f64));
+                if (1e-30..1e30).contains(&want32) {
+                    let l32 = m32.lambda(w32) as f64;
+                    worst32 = worst32.max(((l32 - want32) / want32).abs());
+                }
+                let g1 = m.g1(w);
+                assert!((g1 - 1.0 / (1.0 + l)).abs() <= 1e-15, "{name}: G1 at {w:?}");
+                // D at the normal of the same angles.
+                let (dm, dx) = (m.d(w), ex.d(w));
+                if (1e-280..1e280).contains(&dx) {
+                    worst_d = worst_d.max(((dm - dx) / dx).abs());
+                }
+            }
+        }
+        println!("{name}: Λ {worst:.2e}, f32 {worst32:.2e}, D {worst_d:.2e}");
+        assert!(worst <= 1e-7, "{name}: Λ relative error {worst:e}");
+        assert!(worst32 <= 2e-6, "{name}: f32 Λ relative error {worst32:e}");
+        // (Two f64 forms of one closed form, from the normal's slopes and from the exact
+        // path's stretched cosine: their roundings differ, amplified by P22's exponent:
+        // ≤ 2.5e-12 measured, Bessel-K a = 0.1.)
+        assert!(worst_d <= 1e-11, "{name}: D relative error {worst_d:e}");
+    }
+    let cases: Vec<(NdfKind, Option<f64>)> = vec![
+        (NdfKind::StudentT, Some(1.5 + 1e-6)),
+        (NdfKind::StudentT, Some(1.6)),
+        (NdfKind::StudentT, Some(2.0)),
+        (NdfKind::StudentT, Some(7.0)),
+        (NdfKind::StudentT, Some(50.0)),
+        (NdfKind::StudentT, Some(1e6)),
+        (NdfKind::Ei, None),
+        (NdfKind::Erfc, None),
+        (NdfKind::K0, None),
+        (NdfKind::BesselK, Some(0.1)),
+        (NdfKind::BesselK, Some(0.7)),
+        (NdfKind::BesselK, Some(3.3)),
+        (NdfKind::BesselK, Some(100.0)),
+    ];
+    for (kind, shape) in cases {
+        for (ax, ay) in [(0.3, 0.3), (1e-3, 40.0)] {
+            let ex = Exact::new(kind, ax, ay, shape).unwrap();
+            // (The f32 material's roughness is α rounded to f32: Λ ~ z^{−(2γ−2)} moves by
+            // 98 × 1e-8 at γ = 50.)
+            let ex32 = Exact::new(kind, ax as f32 as f64, ay as f32 as f64, shape).unwrap();
+            let name = format!("{kind} {shape:?} α=({ax},{ay})");
+            let t = std::time::Instant::now();
+            macro_rules! run {
+                ($t:ty) => {{
+                    let m = Microfacet::<f64, $t>::with_shape(ax, ay, shape).unwrap();
+                    let built = t.elapsed().as_secs_f64();
+                    let m32 =
+                        Microfacet::<f32, $t>::with_shape(ax as f32, ay as f32, shape).unwrap();
+                    println!("{name}: built in {:.1} ms", built * 1e3);
+                    check(&name, &m, &m32, &ex, &ex32, ax, ay);
+                }};
+            }
+            match kind {
+                NdfKind::StudentT => run!(StudentT),
+                NdfKind::Ei => run!(Ei),
+                NdfKind::Erfc => run!(Erfc),
+                NdfKind::K0 => run!(K0),
+                _ => run!(BesselK),
+            }
+        }
+    }
+    // Student-T at γ ≤ 3/2 (Λ = ∞) and the NDFs without a posterior sampler are errors.
+    assert!(Microfacet::<f64, StudentT>::with_shape(0.3, 0.3, Some(1.5)).is_err());
+    assert!(Microfacet::<f64, StudentT>::with_shape(0.3, 0.3, None).is_err());
+    assert!(Microfacet::<f64, BesselK>::with_shape(0.3, 0.3, Some(0.05)).is_err());
+}

@@ -61,6 +61,7 @@ pub mod beckmann;
 pub mod double_ggx;
 pub mod exponential;
 pub mod fit;
+pub mod fitted;
 pub mod gtr;
 #[rustfmt::skip]
 mod tables;

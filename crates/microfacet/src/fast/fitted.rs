@@ -1,0 +1,299 @@
+//! The family's fast path: Λ of any shape-invariant Beckmann mixture (Student-T, Ei, Erfc,
+//! K0, Bessel-K) from a table fitted once per shape at construction, and its samplers.
+//!
+//! Every member is shape invariant, so Λ(u; α) = Λ₁(z) with z = cot θ/α: one table of the α = 1
+//! member serves every roughness, and anisotropy through z = |w.z|/|(αx wx, αy wy)|, formed
+//! from the direction vector (not from its cosine, whose 1 − u² near the normal carries u's
+//! rounding).
+//! [`FittedShape::new`] fits ln Λ₁ by Chebyshev interpolation of the exact Λ (degree 6, eighth
+//! octaves of z, the layout of [`super::fit`]) on [2^−24, 2^k₁); evaluation is the segment's
+//! polynomial and one exponential. ln Λ₁ is smooth on both sides: ~ln(σ₁(0)/z) at grazing,
+//! and near the normal −z² (Ei, Erfc: Beckmann-like tails), −2z (K0, Bessel-K: exponential
+//! ones) or −(2γ − 2) ln z (Student-T's power law), where Λ₁ itself falls by orders of
+//! magnitude across a segment and no short polynomial follows it in relative terms. The ends:
+//! * z < 2^−24: Λ₁ = σ₁(0)/z − ½ (the next term, z P2₁(0)/2, or z ln z where P2₁(0) = ∞, is
+//!   below 1e-13 relative there);
+//! * z ≥ 2^k₁: exponential tails — the table runs until Λ₁ < 1e-300 and is 0 beyond (k₁ ≤ 10);
+//!   Student-T — Λ₁ = K z^{−p}(1 + K₂/z²), p = 2γ − 2 (its P2 ~ q^{1−2γ}(1 + c/q²)^{½−γ},
+//!   c = γ − 1, expands in γc/q²), matched to the exact Λ₁ at 2^k₁ and 2^{k₁+1}, with
+//!   2^k₁ ≥ 2^10 γ (the next term is O((γ²/z²)²) ≤ 1e-12 relative; at 2^10 √(γ − 1) it was
+//!   3.6e-7 at γ = 50), or the table runs until Λ₁ underflows where that comes first.
+//!
+//! Accuracy (tests/fast.rs, every member over its shape range, z from 1e-9 to 1e6): relative
+//! ≤ 1e-7 where Λ ≥ 1e-200; below, a segment with a node under 1e-300 returns 0 (there ln Λ₁
+//! falls by up to 1e-73 across an eighth octave, Ei at z ≈ 26), so the error is absolute,
+//! ≤ 1e-200, and G1 = 1/(1 + Λ) is 1 either way.
+//!
+//! D is the exact closed form (f64) at the normal's stretched slopes, the samplers those of the
+//! exact path: D·cos by the radial
+//! quantile of the α = 1 member (closed form for Student-T, Newton on the CDF for the others),
+//! visible normals by the mixing variable's posterior (`mixture::Posterior`; then
+//! Beckmann's stream sampler; about 0.2 µs), its uniforms after u's from a
+//! [`crate::distribution::UniformStream`] seeded by u. Accuracy and cost: tests/fast.rs and
+//! BENCHMARKS.md ("Issue 22").
+
+use super::fit;
+use crate::error::ParamError;
+use crate::mixture::Posterior;
+use crate::ndf::Ndf;
+use crate::sample::RadialSlopes;
+use crate::AnyNdf;
+
+/// Coefficients per segment (degree 6).
+const N: usize = 7;
+/// 2^M segments per octave of z.
+const M: u32 = 3;
+/// The table starts at z = 2^K0 (the grazing end, module docs).
+const K0: i32 = -24;
+/// The tables end at most here: Λ₁ underflows before z = 2^10 for every member and shape
+/// with an exponential tail (Bessel-K's e^{−2z} at z ≈ 350); Student-T's power law goes on,
+/// to 2^10 γ at most (the module docs).
+const K_MAX: i32 = 40;
+/// Below this Λ₁ is treated as 0 (a segment with a node below it evaluates to e^{−800} = 0).
+const TINY: f64 = 1e-300;
+/// ln Λ₁ of an underflowed segment.
+const LN_ZERO: f64 = -800.0;
+
+/// Λ₁ past the table.
+#[derive(Clone, Copy, Debug, PartialEq)]
+enum Tail {
+    /// 0 (the table runs until Λ₁ underflows).
+    Zero,
+    /// e^{ln K − p ln z}(1 + K₂/z²).
+    Power { p: f64, ln_k: f64, k2: f64 },
+}
+
+/// A Beckmann-mixture member prepared for fast Λ, G1, G2 and sampling (see the module docs).
+#[derive(Clone, Debug)]
+pub struct FittedShape {
+    /// The α = 1 member.
+    unit: AnyNdf,
+    posterior: Posterior,
+    /// σ₁(0) = E[p₊] of the α = 1 member.
+    sigma0: f64,
+    /// ln Λ₁ on the segments of [2^K0, 2^k1).
+    coef: Vec<[f64; N]>,
+    k1: i32,
+    tail: Tail,
+}
+
+impl FittedShape {
+    /// The table of `ndf`'s shape (its α is not used): Student-T (γ > 3/2: Λ is infinite
+    /// below), Ei, Erfc, K0 or Bessel-K; `ParamError::Shape` for Student-T γ ≤ 3/2 and for
+    /// the NDFs that are not Beckmann mixtures with a posterior sampler. Evaluates the exact Λ
+    /// at 7 nodes of 8 segments per octave over 30–44 octaves (1.6k–2.5k evaluations; Bessel-K,
+    /// whose Λ integrates K_ν, ~30 µs each).
+    pub fn new(ndf: &AnyNdf) -> Result<FittedShape, ParamError> {
+        let posterior =
+            ndf.beckmann_mixing()
+                .and_then(Posterior::new)
+                .ok_or(ParamError::Shape {
+                    name:
+                        "fitted family member (Student-T with gamma > 1.5, Ei, Erfc, K0, Bessel-K)",
+                    range: "(1.5, 1e6]",
+                    value: ndf.shape().unwrap_or(f64::NAN),
+                })?;
+        let unit = ndf.with_alpha(1.0);
+        // (At z itself: through a rounded cosine the nodes would carry its rounding, 3e-7 of
+        // Λ at z ≈ 8500 for Student-T γ = 10.)
+        let lambda = |z: f64| unit.lambda_x(z).unwrap_or(f64::NAN);
+        // The first octave where Λ₁ underflows (every tail gets there, Student-T's power law
+        // only at large γ).
+        let mut k_zero = 4;
+        while k_zero < K_MAX && lambda(fit::pow2(k_zero)) >= TINY {
+            k_zero += 1;
+        }
+        let (k1, tail) = match unit {
+            AnyNdf::StudentT(t) => {
+                // Past 2^10 γ: P2 ~ q^{1−2γ}(1 + c/q²)^{½−γ} (c = γ − 1) expands in γc/q²,
+                // so the two-term tail's next term is O((γ²/z²)²) ≤ 1e-12 relative.
+                let g = t.gamma();
+                let k_power = g.log2().ceil() as i32 + 10;
+                let k1 = k_power.min(k_zero);
+                let (z1, z2) = (fit::pow2(k1), fit::pow2(k1 + 1));
+                let (l1, l2) = (lambda(z1), lambda(z2));
+                let tail = if l1 < TINY || l2 < TINY {
+                    Tail::Zero
+                } else {
+                    // ρ = Λ(z2) z2^p/(Λ(z1) z1^p) = (1 + K₂/z2²)/(1 + K₂/z1²).
+                    let p = 2.0 * g - 2.0;
+                    let rho = (l2.ln() - l1.ln() + p * (z2.ln() - z1.ln())).exp();
+                    let k2 = (rho - 1.0) / (1.0 / (z2 * z2) - rho / (z1 * z1));
+                    let ln_k = l1.ln() + p * z1.ln() - (k2 / (z1 * z1)).ln_1p();
+                    Tail::Power { p, ln_k, k2 }
+                };
+                (k1, tail)
+            }
+            _ => (k_zero, Tail::Zero),
+        };
+        let coef = fit::octave_node_values::<N>(K0, k1, M, lambda)
+            .iter()
+            .map(|v| {
+                if v.iter().all(|&l| l >= TINY && l.is_finite()) {
+                    fit::chebyshev_coefficients(&v.map(f64::ln))
+                } else {
+                    let mut c = [0.0; N];
+                    c[0] = LN_ZERO;
+                    c
+                }
+            })
+            .collect();
+        Ok(FittedShape {
+            sigma0: unit.sigma(0.0),
+            unit,
+            posterior,
+            coef,
+            k1,
+            tail,
+        })
+    }
+
+    /// The α = 1 member.
+    pub fn unit(&self) -> &AnyNdf {
+        &self.unit
+    }
+
+    /// Λ₁(z), z = cot θ/α ≥ 0 (+∞ at 0, 0 at ∞, NaN for NaN).
+    #[inline]
+    pub fn lambda_z(&self, z: f64) -> f64 {
+        if z >= fit::pow2(K0) && z < fit::pow2(self.k1) {
+            return fit::eval(&self.coef, K0, M, z).exp();
+        }
+        self.lambda_ends(z)
+    }
+
+    #[cold]
+    #[inline(never)]
+    fn lambda_ends(&self, z: f64) -> f64 {
+        if z < fit::pow2(K0) {
+            return self.sigma0 / z - 0.5;
+        }
+        match self.tail {
+            _ if z.is_nan() => z,
+            Tail::Zero => 0.0,
+            Tail::Power { p, ln_k, k2 } => (ln_k - p * z.ln()).exp() * (1.0 + k2 / (z * z)),
+        }
+    }
+
+    /// Λ(u) at roughness α, u ∈ [0, 1] (the contract's edges as the other fast paths: +∞ at
+    /// ±0, Λ(|u|) below 0, 0 past 1, NaN for NaN); evaluated in f64.
+    #[inline]
+    pub fn lambda<F: super::Real>(&self, u: F, alpha: F) -> F {
+        let (u, a) = (u.to_f64(), alpha.to_f64());
+        if !(u > 0.0 && u <= 1.0) {
+            return F::from_f64(super::lambda_at_edge(u, |v| self.lambda_u(v, a)));
+        }
+        F::from_f64(self.lambda_u(u, a))
+    }
+
+    /// Λ of the direction w at (αx, αy) from its cot θ/α̃ = |w.z|/|(αx wx, αy wy)| (any
+    /// length; the projected roughness α̃ implicit): accurate near the normal, where the
+    /// cosine alone would lose cot θ to 1 − u²'s rounding. +∞ on the horizon and for w = 0,
+    /// NaN for NaN; evaluated in f64.
+    #[inline]
+    pub fn lambda_vec<F: super::Real>(&self, w: [F; 3], ax: F, ay: F) -> F {
+        let (x, y, z) = (
+            ax.to_f64() * w[0].to_f64(),
+            ay.to_f64() * w[1].to_f64(),
+            w[2].to_f64().abs(),
+        );
+        let h = (x * x + y * y).sqrt();
+        if z == 0.0 {
+            // (The horizon and w = 0: Λ = ∞, G1 = 0, as the other fast paths.)
+            return F::from_f64(if h.is_nan() { h } else { f64::INFINITY });
+        }
+        F::from_f64(self.lambda_z(z / h))
+    }
+
+    #[inline(always)]
+    fn lambda_u(&self, u: f64, a: f64) -> f64 {
+        self.lambda_z(u / (a * ((1.0 - u) * (1.0 + u)).sqrt()))
+    }
+
+    /// D(u) at roughness α: f(tan θ/α)/(α² u⁴), the exact profile f of the α = 1 member (f64;
+    /// the edges, and cosines below 1e-60 where u⁴ would underflow, by the exact NDF).
+    #[inline]
+    pub fn d<F: super::Real>(&self, u: F, alpha: F) -> F {
+        let (u, a) = (u.to_f64(), alpha.to_f64());
+        if !(u > 1e-60 && u < 1.0) {
+            return F::from_f64(self.d_edges(u, a));
+        }
+        let x = ((1.0 - u) * (1.0 + u)).sqrt() / (u * a);
+        let f = self.unit.f(x).unwrap_or(f64::NAN);
+        let u2 = u * u;
+        F::from_f64(f / (a * a * u2 * u2))
+    }
+
+    /// D of the unit normal wm at (αx, αy) through its stretched slopes
+    /// g = (x/(αx z), y/(αy z)): P22₁(g)/(αx αy z⁴), for z > 1e-60 (`None` below, where z⁴
+    /// underflows, and for NaN). From the vector, not the cosine: near the pole the cosine
+    /// rounds to 1 below slopes ~1e-8 in f64 (~3e-4 in f32), where D(1) is the pole, +∞, of Ei,
+    /// Erfc, K0 and Bessel-K a ≤ 1 while D at the slopes is finite; and elsewhere sin²θ from
+    /// 1 − u² carries u's rounding, ε/(1 − u), which P22's exponent multiplies (6e-11 of D at
+    /// Student-T γ = 50, 1 − u = 5e-5).
+    #[inline]
+    pub fn d_vec(&self, wm: [f64; 3], ax: f64, ay: f64) -> Option<f64> {
+        let z = wm[2];
+        // (NaN fails too.)
+        if z.is_nan() || z <= 1e-60 {
+            return None;
+        }
+        let (gx, gy) = (wm[0] / (ax * z), wm[1] / (ay * z));
+        let z2 = z * z;
+        Some(self.unit.p22(gx, gy) / (ax * ay * z2 * z2))
+    }
+
+    #[cold]
+    #[inline(never)]
+    fn d_edges(&self, u: f64, a: f64) -> f64 {
+        // (The exact NDF at α, clamped into the accepted range: a projected roughness can
+        // round past its end; NaN gives NaN.)
+        match AnyNdf::new(self.unit.kind(), a.clamp(1e-6, 1e6), self.unit.shape()) {
+            Ok(n) => n.d(u),
+            Err(_) => f64::NAN,
+        }
+    }
+
+    /// A D·cos normal at (αx, αy): tan θ = r from the α = 1 radial quantile of u₀, stretched;
+    /// azimuth 2πu₁.
+    #[inline]
+    pub fn sample_dcos<F: super::Real>(&self, ax: f64, ay: f64, u: [F; 2]) -> [F; 3] {
+        let r = self.unit.slope_quantile(u[0].to_f64());
+        super::normal_from_polar(r, super::cos_sin_turn(u[1].to_f64()), ax, ay)
+    }
+
+    /// A visible normal for w (mirrored below the horizon) at (αx, αy) from u and, for
+    /// further candidates, the [`crate::distribution::UniformStream`] of u: the posterior
+    /// sampler; where it gives up (probability ~1e-19) or w lies on the horizon, Beckmann's
+    /// warp at the mean roughness (a visible normal, not this NDF's distribution).
+    #[inline]
+    pub fn sample_visible<F: super::Real>(&self, w: [F; 3], ax: f64, ay: f64, u: [F; 2]) -> [F; 3] {
+        let v = crate::vec3::Vec3::from(w.map(|x| x.to_f64())).to_unit();
+        let v = if v.z < 0.0 { -v } else { v };
+        let mut s = crate::distribution::UniformStream::new(u);
+        let mut first = [u[0].to_f64(), u[1].to_f64()].into_iter();
+        let mut next = || first.next().unwrap_or_else(|| s.next_uniform::<f64>());
+        match self
+            .posterior
+            .sample_visible::<F>(v.into(), ax, ay, &mut next)
+        {
+            Some(m) => m,
+            None => super::beckmann::sample_visible(w, F::from_f64(ax), F::from_f64(ay), u),
+        }
+    }
+
+    /// [`crate::Distribution::sample_wm_stream`]: the posterior sampler above the horizon,
+    /// `None` below.
+    #[inline]
+    pub fn sample_visible_stream<F: super::Real>(
+        &self,
+        v: [F; 3],
+        ax: f64,
+        ay: f64,
+        uniform: &mut dyn FnMut() -> F,
+    ) -> Option<[F; 3]> {
+        let v = crate::vec3::Vec3::from(v.map(|x| x.to_f64())).to_unit();
+        self.posterior
+            .sample_visible::<F>(v.into(), ax, ay, &mut || uniform().to_f64())
+    }
+}
