@@ -564,6 +564,45 @@ fn fitted_fast_paths(i: &Inputs, calls: usize, ggx64: f64, ggx32: f64, exact_ggx
         "{:44} {build_ms:10.1} ms per material (mean of 64, α ∈ [0.05, 1], γ ∈ [0.5, 3]; {direct} of 64 tabulate Λ itself)",
         "GTR fast construction"
     );
+    family_fast_paths(i, calls);
+}
+
+/// The family's fast path (`Microfacet::with_shape`, issue 22): Λ(w) of random directions
+/// through the `Microfacet` type against `Microfacet<_, Ggx>`'s in the same run, f64 and
+/// f32, and each shape's construction (the fit of ln Λ₁).
+fn family_fast_paths(i: &Inputs, calls: usize) {
+    use microfacet::{BesselK, Ei, Erfc, StudentT, K0};
+    println!();
+    println!("family fast paths: Microfacet Λ(w), α = 0.3, random directions (ratio to Microfacet<_, Ggx> Λ(w) of the same precision)");
+    let w64: Vec<[f64; 3]> = i.w.iter().map(|w| [w.x, w.y, w.z]).collect();
+    let w32: Vec<[f32; 3]> = w64.iter().map(|w| w.map(|x| x as f32)).collect();
+    let g64 = Microfacet::<f64, Ggx>::new(0.3, 0.3).unwrap();
+    let g32 = Microfacet::<f32, Ggx>::new(0.3, 0.3).unwrap();
+    let base64 = time(calls, |k| g64.lambda(black_box(w64[k])));
+    let base32 = time(calls, |k| g32.lambda(black_box(w32[k])) as f64);
+    println!("{:44} {base64:10.1} ns | f32 {base32:6.1} ns", "GGX Λ(w)");
+    macro_rules! family {
+        ($name:expr, $t:ty, $shape:expr) => {{
+            let t = Instant::now();
+            let m64 = Microfacet::<f64, $t>::with_shape(0.3, 0.3, $shape).unwrap();
+            let build = t.elapsed().as_secs_f64() * 1e3;
+            let m32 = Microfacet::<f32, $t>::with_shape(0.3, 0.3, $shape).unwrap();
+            let t64 = time(calls, |k| m64.lambda(black_box(w64[k])));
+            let t32 = time(calls, |k| m32.lambda(black_box(w32[k])) as f64);
+            println!(
+                "{:44} {t64:10.1} ns {:5.2}× | f32 {t32:6.1} ns {:5.2}× | built in {build:.1} ms",
+                format!("{} Λ(w)", $name),
+                t64 / base64,
+                t32 / base32
+            );
+        }};
+    }
+    family!("Student-T γ = 2.5", StudentT, Some(2.5));
+    family!("Student-T γ = 50", StudentT, Some(50.0));
+    family!("Ei", Ei, None);
+    family!("Erfc", Erfc, None);
+    family!("K0", K0, None);
+    family!("Bessel-K a = 1.5", BesselK, Some(1.5));
 }
 
 /// Every quantity of every fast path in f64 and f32, one row per NDF: D, Λ, G1, G2
@@ -1422,5 +1461,19 @@ fn walks(i: &Inputs) {
         "Exact Bessel-K a = 2.5",
         exact(NdfKind::BesselK, Some(2.5)),
         4_000
+    );
+    // The family's fast path (fitted Λ; the same posterior sampler).
+    use microfacet::{BesselK, Ei, StudentT};
+    rate!(
+        "Fast Student-T γ = 2.5",
+        Microfacet::<f64, StudentT>::with_shape(0.5, 0.5, Some(2.5)).unwrap()
+    );
+    rate!(
+        "Fast Ei",
+        Microfacet::<f64, Ei>::with_shape(0.5, 0.5, None).unwrap()
+    );
+    rate!(
+        "Fast Bessel-K a = 2.5",
+        Microfacet::<f64, BesselK>::with_shape(0.5, 0.5, Some(2.5)).unwrap()
     );
 }

@@ -189,9 +189,9 @@ impl AnyNdf {
         }
     }
 
-    /// ln f(x) of the α = 1 profile for x ≥ 1e150 given as ln x, where x itself may overflow:
+    /// ln f(x) of the α = 1 profile for x ≥ 1e50 given as ln x, where x itself may overflow:
     /// Student-T's power law, f = ((γ − 1)/(x² + γ − 1))^γ/π → (γ − 1)^γ x^{−2γ}/π (relative
-    /// error γ(γ − 1)/x² ≤ 1e-288); `None` for the others, whose f is 0 in f64 there
+    /// error γ(γ − 1)/x² ≤ 1e-88 at γ ≤ 1e6); `None` for the others, whose f is 0 in f64 there
     /// (exponential tails).
     pub(crate) fn ln_f_far(&self, ln_x: f64) -> Option<f64> {
         match self {
@@ -207,14 +207,21 @@ impl AnyNdf {
     /// by up to p·2ε/sin²θ relative where Λ ~ cot^{−p}θ): the Beckmann mixtures of the
     /// family; `None` for the others.
     pub(crate) fn lambda_x(&self, x: f64) -> Option<f64> {
-        match self {
-            AnyNdf::StudentT(n) => Some(n.lambda_x(x)),
-            AnyNdf::Ei(_) => Some(crate::ei::lambda_x(x)),
-            AnyNdf::Erfc(_) => Some(crate::erfc::lambda_x(x)),
-            AnyNdf::K0(_) => Some(crate::K0::lambda_x(x)),
-            AnyNdf::BesselK(n) => Some(n.lambda_x(x)),
-            _ => None,
+        let lambda: &dyn Fn(f64) -> f64 = match self {
+            AnyNdf::StudentT(n) => &|x| n.lambda_x(x),
+            AnyNdf::Ei(_) => &crate::ei::lambda_x,
+            AnyNdf::Erfc(_) => &crate::erfc::lambda_x,
+            AnyNdf::K0(_) => &crate::K0::lambda_x,
+            AnyNdf::BesselK(n) => &|x| n.lambda_x(x),
+            _ => return None,
+        };
+        if x < 1e-20 {
+            // Grazing: Λ = σ(0)/cot θ − ½ + O(cot θ) (as `Ndf::lambda` below its GRAZING
+            // threshold), +∞ at 0 and where σ(0)/cot θ overflows; the members' forms would
+            // lose it to x² underflowing.
+            return Some(self.sigma(0.0) / (self.alpha() * x) - 0.5);
         }
+        Some(lambda(x))
     }
 
     /// Whether the marginal slope density is unbounded at 0: P2(0) = +∞ (the true value) for

@@ -225,8 +225,8 @@ impl FittedShape {
     }
 
     /// D of the unit normal wm at (αx, αy) through its stretched slopes
-    /// g = (x/(αx z), y/(αy z)): P22₁(g)/(αx αy z⁴), for z > 1e-60 (`None` below, where z⁴
-    /// underflows, and for NaN). From the vector, not the cosine: near the pole the cosine
+    /// g = (x/(αx z), y/(αy z)): P22₁(g)/(αx αy z⁴) (in logarithms below z = 1e-60, where z⁴
+    /// underflows; `None` on and below the horizon and for NaN). From the vector, not the cosine: near the pole the cosine
     /// rounds to 1 below slopes ~1e-8 in f64 (~3e-4 in f32), where D(1) is the pole, +∞, of Ei,
     /// Erfc, K0 and Bessel-K a ≤ 1 while D at the slopes is finite; and elsewhere sin²θ from
     /// 1 − u² carries u's rounding, ε/(1 − u), which P22's exponent multiplies (6e-11 of D at
@@ -235,8 +235,17 @@ impl FittedShape {
     pub fn d_vec(&self, wm: [f64; 3], ax: f64, ay: f64) -> Option<f64> {
         let z = wm[2];
         // (NaN fails too.)
-        if z.is_nan() || z <= 1e-60 {
+        if z.is_nan() || z <= 0.0 {
             return None;
+        }
+        if z <= 1e-60 {
+            // z⁴ underflows: D = f(X)/(αx αy z⁴) with X = |(x/αx, y/αy)|/z ≥ 1e54 (every α ≤
+            // 1e6), in logarithms (Student-T's power law; 0 for the exponential tails).
+            let s = crate::vec3::hypot(wm[0] / ax, wm[1] / ay);
+            return Some(match self.unit.ln_f_far(s.ln() - z.ln()) {
+                Some(lf) => (lf - (ax * ay).ln() - 4.0 * z.ln()).exp(),
+                None => 0.0,
+            });
         }
         let (gx, gy) = (wm[0] / (ax * z), wm[1] / (ay * z));
         let z2 = z * z;
