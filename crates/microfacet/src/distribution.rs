@@ -2,10 +2,13 @@
 //! or f64, with the visible-normal pdf beside every sample.
 //!
 //! [`Microfacet<F, N>`](Microfacet) is an NDF `N` ([`Ggx`], [`Beckmann`], [`DoubleGgx`],
-//! [`Exponential`], [`Gtr`]) at roughness (αx, αy) in precision `F` (f32 or f64). It is built
-//! once per material ([`Microfacet::new`], validated: α ∈ [1e-6, 1e6]; GTR through
-//! [`Microfacet::gtr`]) and is then cheap per call, through the [`Distribution`] trait that
-//! the BSDFs ([`crate::bsdf`]) are generic over:
+//! [`Exponential`], [`Gtr`], and the family's Beckmann mixtures [`crate::StudentT`],
+//! [`crate::Ei`], [`crate::Erfc`], [`crate::K0`], [`crate::BesselK`]) at roughness (αx, αy) in
+//! precision `F` (f32 or f64). It is built once per material ([`Microfacet::new`], validated:
+//! α ∈ [1e-6, 1e6]; GTR through [`Microfacet::gtr`], the family through
+//! [`Microfacet::with_shape`], which fits Λ for the shape: [`fast::fitted`]) and is then
+//! cheap per call, through the [`Distribution`] trait that the BSDFs ([`crate::bsdf`]) are
+//! generic over:
 //!
 //! | method | value |
 //! |---|---|
@@ -22,7 +25,7 @@
 //! [`crate::frame::Frame`] converts). The projected roughness of an anisotropic Λ, the
 //! stretch of the samplers and the normalisation of D are inside; no caller computes them.
 //!
-//! **Anisotropy.** Beckmann, GGX, Double GGX and the Exponential NDF are shape invariant
+//! **Anisotropy.** Beckmann, GGX, Double GGX, the Exponential NDF and the family are shape invariant
 //! (P22(p, q) = P22₁(p/αx, q/αy)/(αx αy)): D(m) = P22₁(x̃, ỹ)/(αx αy z⁴) with x̃ = x/(αx z), and
 //! Λ(w) is the α = 1 Λ at cot θ̃ = z/√(αx²x² + αy²y²) (Heitz 2014, §5.3). GTR at γ ≠ 2 is not
 //! shape invariant: Burley's anisotropic form c/((x/αx)² + (y/αy)² + z²)^γ has no projected
