@@ -997,6 +997,25 @@ fn family_fitted_lambda_over_the_whole_domain() {
             }
         }
     }
+    // Which Student-T shapes tabulate Λ itself (no exponential at evaluation: ~1.5× the fast
+    // GGX Λ against ~3.5× with it, BENCHMARKS.md).
+    let census: Vec<(f64, bool)> = [1.5 + 1e-6, 1.6, 2.0, 2.5, 3.0, 4.0, 5.0, 7.0, 10.0, 20.0]
+        .iter()
+        .map(|&g| {
+            let n = microfacet::AnyNdf::new(NdfKind::StudentT, 1.0, Some(g)).unwrap();
+            (
+                g,
+                microfacet::fast::fitted::FittedShape::new(&n)
+                    .unwrap()
+                    .is_direct(),
+            )
+        })
+        .collect();
+    println!("Student-T direct Λ tables: {census:?}");
+    assert!(
+        census.iter().filter(|c| c.0 <= 3.0).all(|c| c.1),
+        "{census:?}"
+    );
     // Student-T at γ ≤ 3/2 (Λ = ∞) and the NDFs without a posterior sampler are errors.
     assert!(Microfacet::<f64, StudentT>::with_shape(0.3, 0.3, Some(1.5)).is_err());
     assert!(Microfacet::<f64, StudentT>::with_shape(0.3, 0.3, None).is_err());

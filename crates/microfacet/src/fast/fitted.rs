@@ -6,8 +6,13 @@
 //! from the direction vector (not from its cosine, whose 1 − u² near the normal carries u's
 //! rounding).
 //! [`FittedShape::new`] fits ln Λ₁ by Chebyshev interpolation of the exact Λ (degree 6, eighth
-//! octaves of z, the layout of [`super::fit`]) on [2^−24, 2^k₁); evaluation is the segment's
-//! polynomial and one exponential. ln Λ₁ is smooth on both sides: ~ln(σ₁(0)/z) at grazing,
+//! octaves of z, the layout of [`super::fit`]) on [2^−24, 2^k₁), re-expanded to degree 4 on 32
+//! rows per octave; evaluation is the row's polynomial and one exponential. Where Λ₁ itself
+//! fits as well (within 1e-8 at every segment's ends and middle: Student-T at γ ≤ 3, whose
+//! power-law tail has a bounded log-derivative) the table holds Λ₁ and there is no
+//! exponential ([`FittedShape::is_direct`]): 4.5 ns a Λ(w) against 3.1 for GGX's closed form
+//! through the same type, 11–12 ns with the exponential (BENCHMARKS.md, issue 22); the
+//! exponential tails of the others need ln Λ₁. ln Λ₁ is smooth on both sides: ~ln(σ₁(0)/z) at grazing,
 //! and near the normal −z² (Ei, Erfc: Beckmann-like tails), −2z (K0, Bessel-K: exponential
 //! ones) or −(2γ − 2) ln z (Student-T's power law), where Λ₁ itself falls by orders of
 //! magnitude across a segment and no short polynomial follows it in relative terms. The ends:
@@ -39,10 +44,16 @@ use crate::ndf::Ndf;
 use crate::sample::RadialSlopes;
 use crate::AnyNdf;
 
-/// Coefficients per segment (degree 6).
-const N: usize = 7;
-/// 2^M segments per octave of z.
-const M: u32 = 3;
+/// Coefficients per fitted segment (degree 6).
+const N_FIT: usize = 7;
+/// 2^M_FIT fitted segments per octave of z.
+const M_FIT: u32 = 3;
+/// Coefficients per row of the evaluated table (degree 4), on 2^M rows per octave: each
+/// fitted segment re-expanded onto 4 equal pieces (no new exact evaluations), as GTR's
+/// tables are (fast::gtr): a shorter dependency chain than the degree-6 Estrin scheme
+/// (BENCHMARKS.md, issue 22).
+const N: usize = 5;
+const M: u32 = M_FIT + 2;
 /// The table starts at z = 2^K0 (the grazing end, module docs).
 const K0: i32 = -24;
 /// The tables end at most here: Λ₁ underflows before z = 2^10 for every member and shape
@@ -53,6 +64,9 @@ const K_MAX: i32 = 40;
 const TINY: f64 = 1e-300;
 /// ln Λ₁ of an underflowed segment.
 const LN_ZERO: f64 = -800.0;
+/// The largest relative error of a Λ₁ table at the fitted segments' ends and middles for
+/// which it replaces the ln Λ₁ table (10× inside the 1e-7 required, as fast::gtr's).
+const DIRECT_TOL: f64 = 1e-8;
 
 /// Λ₁ past the table.
 #[derive(Clone, Copy, Debug, PartialEq)]
@@ -71,8 +85,9 @@ pub struct FittedShape {
     posterior: Posterior,
     /// σ₁(0) = E[p₊] of the α = 1 member.
     sigma0: f64,
-    /// ln Λ₁ on the segments of [2^K0, 2^k1).
+    /// ln Λ₁ (or Λ₁ where `direct`) on the rows of [2^K0, 2^k1).
     coef: Vec<[f64; N]>,
+    direct: bool,
     k1: i32,
     tail: Tail,
 }
@@ -126,26 +141,69 @@ impl FittedShape {
             }
             _ => (k_zero, Tail::Zero),
         };
-        let coef = fit::octave_node_values::<N>(K0, k1, M, lambda)
-            .iter()
-            .map(|v| {
-                if v.iter().all(|&l| l >= TINY && l.is_finite()) {
-                    fit::chebyshev_coefficients(&v.map(f64::ln))
-                } else {
-                    let mut c = [0.0; N];
-                    c[0] = LN_ZERO;
-                    c
-                }
-            })
-            .collect();
+        let values = fit::octave_node_values::<N_FIT>(K0, k1, M_FIT, lambda);
+        // The fitted segments of g(Λ) re-expanded onto the rows (`zero`: a segment with an
+        // underflowed node).
+        let table = |g: fn(f64) -> f64, zero: f64| -> Vec<[f64; N]> {
+            let pieces = 1usize << (M - M_FIT);
+            values
+                .iter()
+                .flat_map(|v| {
+                    let ok = v.iter().all(|&l| l >= TINY && l.is_finite());
+                    let c = fit::chebyshev_coefficients(&v.map(g));
+                    (0..pieces).map(move |j| {
+                        let mut row = [0.0; N];
+                        if !ok {
+                            row[0] = zero;
+                            return row;
+                        }
+                        // Piece j of the segment's s ∈ [−1, 1], as t ∈ [−1, 1].
+                        let h = 2.0 / pieces as f64;
+                        fit::chebyshev_fit::<N>(|t| {
+                            fit::poly(&c, -1.0 + h * (j as f64 + 0.5 * (t + 1.0)))
+                        })
+                    })
+                })
+                .collect()
+        };
+        // Λ itself where that is accurate (no exponential at evaluation): Student-T's power
+        // law at small γ, as GTR's tables (within DIRECT_TOL at every segment's ends and
+        // middle, against new exact values); ln Λ otherwise.
+        let mut direct = false;
+        let mut coef = Vec::new();
+        if matches!(tail, Tail::Power { .. }) {
+            let d = table(|l| l, 0.0);
+            let per = 1usize << M_FIT;
+            let ok = (0..values.len()).all(|i| {
+                let lo = fit::pow2(K0 + (i / per) as i32) * (1.0 + (i % per) as f64 / per as f64);
+                let w = fit::pow2(K0 + (i / per) as i32) / per as f64;
+                [lo, lo + 0.5 * w, lo + w * (1.0 - 1e-15)].iter().all(|&z| {
+                    let want = lambda(z);
+                    want < TINY || ((fit::eval(&d, K0, M, z) - want) / want).abs() <= DIRECT_TOL
+                })
+            });
+            if ok {
+                direct = true;
+                coef = d;
+            }
+        }
+        if !direct {
+            coef = table(f64::ln, LN_ZERO);
+        }
         Ok(FittedShape {
             sigma0: unit.sigma(0.0),
             unit,
             posterior,
             coef,
+            direct,
             k1,
             tail,
         })
+    }
+
+    /// Whether the table holds Λ itself (no exponential at evaluation) rather than ln Λ.
+    pub fn is_direct(&self) -> bool {
+        self.direct
     }
 
     /// The α = 1 member.
@@ -157,7 +215,9 @@ impl FittedShape {
     #[inline]
     pub fn lambda_z(&self, z: f64) -> f64 {
         if z >= fit::pow2(K0) && z < fit::pow2(self.k1) {
-            return fit::eval(&self.coef, K0, M, z).exp();
+            let p = fit::eval(&self.coef, K0, M, z);
+            // (A per-material constant: the branch is always predicted.)
+            return if self.direct { p } else { p.exp() };
         }
         self.lambda_ends(z)
     }
