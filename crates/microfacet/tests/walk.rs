@@ -501,6 +501,45 @@ fn sampling_matches_evaluation() {
     }
 }
 
+/// χ² of `d`'s stream sampler for v (100 000 normals, 16² cells of `reference`'s D·cos
+/// coordinates) against max(0, v·m) D(m)/σ: p above `level`, no bad sample, ∫pdf = 1 to 2e-3;
+/// every normal above the horizon and facing v.
+#[allow(clippy::too_many_arguments)]
+fn stream_chi2<D: Distribution<f64>>(
+    label: &str,
+    d: &D,
+    v: [f64; 3],
+    sigma: f64,
+    reference: &microfacet::Exact,
+    rng: &mut microfacet::chi2::SplitMix64,
+    seed: u64,
+    level: f64,
+) {
+    use microfacet::chi2::{chi2_test, DcosCoordinates};
+    use microfacet::Vec3;
+    let r = chi2_test(
+        |_| {
+            let m = d
+                .sample_wm_stream(v, &mut || 0.5 * (2.0 * rng.next_f64()).max(f64::EPSILON))
+                .expect("a normal");
+            assert!(m[2] > 0.0 && m[0] * v[0] + m[1] * v[1] + m[2] * v[2] > 0.0);
+            Vec3::from(m)
+        },
+        |m| {
+            let m: [f64; 3] = m.into();
+            (m[0] * v[0] + m[1] * v[1] + m[2] * v[2]).max(0.0) * d.d(m) / sigma
+        },
+        &DcosCoordinates(reference),
+        100_000,
+        16,
+        seed,
+    );
+    assert!(
+        r.p_value > level && r.bad_samples == 0 && (r.pdf_integral - 1.0).abs() < 2e-3,
+        "{label}: {r:?}"
+    );
+}
+
 /// The stream samplers of visible normals (`Distribution::sample_wm_stream`, which the walk
 /// uses instead of the warps and of its rejection from the mirror image; GGX, Beckmann,
 /// Double GGX): χ² against max(0, v·m) D(m)/σ(v), σ = |v.z| Λ(v) below and v.z(1 + Λ(v))
@@ -509,8 +548,8 @@ fn sampling_matches_evaluation() {
 /// m.z > 0 and v·m > 0; the NDFs without one answer `None`.
 #[test]
 fn visible_normals_from_a_stream() {
-    use microfacet::chi2::{chi2_test, sidak, DcosCoordinates, SplitMix64};
-    use microfacet::{Exact, NdfKind, Vec3};
+    use microfacet::chi2::{sidak, SplitMix64};
+    use microfacet::{Exact, NdfKind};
     fn check<D: Distribution<f64>>(name: &str, d: D, kind: NdfKind, ax: f64, ay: f64, level: f64) {
         let reference = Exact::new(NdfKind::Ggx, 1.5 * ax, 1.5 * ay, None).unwrap();
         let mut rng = SplitMix64(kind as u64);
@@ -524,26 +563,15 @@ fn visible_normals_from_a_stream() {
             } else {
                 c * (1.0 + d.lambda(v))
             };
-            let r = chi2_test(
-                |_| {
-                    let m = d
-                        .sample_wm_stream(v, &mut || 0.5 * (2.0 * rng.next_f64()).max(f64::EPSILON))
-                        .expect("a normal");
-                    assert!(m[2] > 0.0 && m[0] * v[0] + m[1] * v[1] + m[2] * v[2] > 0.0);
-                    Vec3::from(m)
-                },
-                |m| {
-                    let m: [f64; 3] = m.into();
-                    (m[0] * v[0] + m[1] * v[1] + m[2] * v[2]).max(0.0) * d.d(m) / sigma
-                },
-                &DcosCoordinates(&reference),
-                100_000,
-                16,
+            stream_chi2(
+                &format!("{name} α=({ax},{ay}) θ={deg}"),
+                &d,
+                v,
+                sigma,
+                &reference,
+                &mut rng,
                 (deg + 100.0) as u64,
-            );
-            assert!(
-                r.p_value > level && r.bad_samples == 0 && (r.pdf_integral - 1.0).abs() < 2e-3,
-                "{name} α=({ax},{ay}) θ={deg}: {r:?}"
+                level,
             );
         }
     }
@@ -586,8 +614,8 @@ fn visible_normals_from_a_stream() {
 /// generalised exponential (no such sampler).
 #[test]
 fn family_visible_normals_from_a_stream() {
-    use microfacet::chi2::{chi2_test, sidak, DcosCoordinates, SplitMix64};
-    use microfacet::{AnyNdf, Exact, NdfKind, Vec3};
+    use microfacet::chi2::{sidak, SplitMix64};
+    use microfacet::{AnyNdf, Exact, NdfKind};
     let cases = [
         (NdfKind::StudentT, Some(1.6)),
         (NdfKind::StudentT, Some(2.5)),
@@ -619,26 +647,15 @@ fn family_visible_normals_from_a_stream() {
             let (s, c) = deg.to_radians().sin_cos();
             let v = [s * 0.8, s * 0.6, c];
             let sigma = c * (1.0 + d.lambda(v));
-            let r = chi2_test(
-                |_| {
-                    let m = d
-                        .sample_wm_stream(v, &mut || 0.5 * (2.0 * rng.next_f64()).max(f64::EPSILON))
-                        .expect("a normal");
-                    assert!(m[2] > 0.0 && m[0] * v[0] + m[1] * v[1] + m[2] * v[2] > 0.0);
-                    Vec3::from(m)
-                },
-                |m| {
-                    let m: [f64; 3] = m.into();
-                    (m[0] * v[0] + m[1] * v[1] + m[2] * v[2]).max(0.0) * d.d(m) / sigma
-                },
-                &DcosCoordinates(&reference),
-                100_000,
-                16,
+            stream_chi2(
+                &format!("{kind} {shape:?} α=({ax},{ay}) θ={deg}"),
+                &d,
+                v,
+                sigma,
+                &reference,
+                &mut rng,
                 deg as u64 + 7,
-            );
-            assert!(
-                r.p_value > level && r.bad_samples == 0 && (r.pdf_integral - 1.0).abs() < 2e-3,
-                "{kind} {shape:?} α=({ax},{ay}) θ={deg}: {r:?}"
+                level,
             );
         }
     }
