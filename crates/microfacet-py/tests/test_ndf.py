@@ -97,6 +97,12 @@ def test_dtypes_and_scalars():
     # float32 results are the float64 values rounded once.
     u = np.linspace(0.01, 1.0, 101)
     assert np.array_equal(g.lambda_(u.astype(np.float32)), g.lambda_(u.astype(np.float32).astype(np.float64)).astype(np.float32))
+    # Python and NumPy float64 scalars take a path without arrays: the same values, bit for bit.
+    for x in np.linspace(-0.5, 1.2, 35):
+        assert g.lambda_(float(x)) == g.lambda_(np.array([x]))[0] or np.isnan(g.lambda_(float(x)))
+        assert g.g2(float(x), 0.7) == g.g2(np.array(x), np.array(0.7))
+        assert isinstance(g.sigma(x), np.float64) and g.sigma(x) == g.sigma(np.array([x]))[0]
+    assert isinstance(g.d(1), np.float64) and g.d(1) == g.d(1.0)
     # Mixed precision: float64 wins.
     assert g.g2(np.float32(0.5), 0.5).dtype == np.float64
 
