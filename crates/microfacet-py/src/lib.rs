@@ -45,7 +45,10 @@ fn apply<'py, const K: usize>(
         let a = np.call_method1("asarray", (x,))?;
         f32 &= a.getattr("dtype")?.eq(&float32)?;
         scalar &= a.getattr("ndim")?.extract::<usize>()? == 0;
-        wide.push(a.call_method1("astype", (&float64,))?);
+        // (No copy for float64 input.)
+        let kwargs = pyo3::types::PyDict::new(py);
+        kwargs.set_item("copy", false)?;
+        wide.push(a.call_method("astype", (&float64,), Some(&kwargs))?);
     }
     // Broadcast by NumPy's rules (and errors), then flat contiguous copies.
     let views: Vec<Bound<'py, PyAny>> = if K == 1 {
