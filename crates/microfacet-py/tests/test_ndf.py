@@ -154,6 +154,13 @@ def test_errors():
         microfacet.GGX(0.3).d(object())
 
 
+def test_stubs_name_every_class():
+    with open(os.path.join(os.path.dirname(microfacet.__file__), "_microfacet.pyi")) as fh:
+        stubs = fh.read()
+    for name in microfacet.__all__:
+        assert f"class {name}" in stubs, name
+
+
 def test_attributes_and_help():
     b = microfacet.BesselK(0.4, 1.5)
     assert b.alpha == 0.4 and b.shape == 1.5 and b.name == "bessel_k"
