@@ -203,6 +203,25 @@ impl AnyNdf {
         }
     }
 
+    /// D of the unit normal wm (z > 0) at roughness (αx, αy) from this α = 1 member, through
+    /// the stretched slopes g = (x/(αx z), y/(αy z)): P22₁(g)/(αx αy z⁴); below z = 1e-60,
+    /// where z⁴ underflows, f(X)/(αx αy z⁴) with X = |(x/αx, y/αy)|/z ≥ 1e54 (every α ≤ 1e6)
+    /// in logarithms ([`AnyNdf::ln_f_far`]: Student-T's power law; 0 for the exponential
+    /// tails).
+    pub(crate) fn d_stretched(&self, wm: [f64; 3], ax: f64, ay: f64) -> f64 {
+        let z = wm[2];
+        if z <= 1e-60 {
+            let s = crate::vec3::hypot(wm[0] / ax, wm[1] / ay);
+            return match self.ln_f_far(s.ln() - z.ln()) {
+                Some(lf) => (lf - (ax * ay).ln() - 4.0 * z.ln()).exp(),
+                None => 0.0,
+            };
+        }
+        let (gx, gy) = (wm[0] / (ax * z), wm[1] / (ay * z));
+        let z2 = z * z;
+        self.p22(gx, gy) / (ax * ay * z2 * z2)
+    }
+
     /// Λ at x = cot θ/α given directly (not through a rounded cosine, whose rounding moves Λ
     /// by up to p·2ε/sin²θ relative where Λ ~ cot^{−p}θ): the Beckmann mixtures of the
     /// family; `None` for the others.

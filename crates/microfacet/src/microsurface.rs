@@ -472,25 +472,16 @@ impl Microsurface for Shaped {
         // round to 1 below slopes ~1e-8, and D(1) is the pole (+∞) of the log- and
         // power-singular members (Ei, Erfc, K0, Bessel-K a ≤ 1) while P22 at the slopes is
         // still finite.
+        // Near the horizon too, D₁ at the stretched cosine u₁ = z/ℓ underflows where D does
+        // not (Student-T γ < 2 grows like z^{2γ−4}): both ends through the slopes
+        // (AnyNdf::d_stretched, in logarithms there).
         let m = wm.to_unit();
         if m.z > 0.0 {
             let (ax, ay) = (self.alpha_x, self.alpha_y);
-            let (gx, gy) = (m.x / (ax * m.z), m.y / (ay * m.z));
-            if gx * gx + gy * gy < 1e-4 {
-                let z2 = m.z * m.z;
-                return self.unit.p22(gx, gy) / (ax * ay * z2 * z2);
-            }
-            // Near the horizon D₁ at the stretched cosine u₁ = z/ℓ underflows where D does not
-            // (Student-T γ < 2 grows like z^{2γ−4}): there D = f(X)/(αx αy z⁴) with
-            // X = |(x/αx, y/αy)|/z ≥ 1e150, in logarithms (0 for the exponential tails).
             let (sx, sy) = (m.x / ax, m.y / ay);
-            let s = crate::vec3::hypot(sx, sy);
-            if m.z < 1e-150 * s {
-                let ln_x = s.ln() - m.z.ln();
-                return match self.unit.ln_f_far(ln_x) {
-                    Some(lf) => (lf - (ax * ay).ln() - 4.0 * m.z.ln()).exp(),
-                    None => 0.0,
-                };
+            let s2 = sx * sx + sy * sy;
+            if s2 < 1e-4 * m.z * m.z || m.z < 1e-150 * s2.sqrt() {
+                return self.unit.d_stretched(m.into(), ax, ay);
             }
         }
         self.stretched().d_with(wm, |u| self.unit.d(u))

@@ -298,18 +298,7 @@ impl FittedShape {
         if z.is_nan() || z <= 0.0 {
             return None;
         }
-        if z <= 1e-60 {
-            // z⁴ underflows: D = f(X)/(αx αy z⁴) with X = |(x/αx, y/αy)|/z ≥ 1e54 (every α ≤
-            // 1e6), in logarithms (Student-T's power law; 0 for the exponential tails).
-            let s = crate::vec3::hypot(wm[0] / ax, wm[1] / ay);
-            return Some(match self.unit.ln_f_far(s.ln() - z.ln()) {
-                Some(lf) => (lf - (ax * ay).ln() - 4.0 * z.ln()).exp(),
-                None => 0.0,
-            });
-        }
-        let (gx, gy) = (wm[0] / (ax * z), wm[1] / (ay * z));
-        let z2 = z * z;
-        Some(self.unit.p22(gx, gy) / (ax * ay * z2 * z2))
+        Some(self.unit.d_stretched(wm, ax, ay))
     }
 
     #[cold]
