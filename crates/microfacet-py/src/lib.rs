@@ -1,27 +1,29 @@
-//! Python bindings of `microfacet` (issue 23, first part): every NDF as a class with its
-//! quantities vectorised over NumPy arrays.
+//! Python bindings of `microfacet` (issue 23): every NDF as a class with its quantities,
+//! directions, samplers and albedos vectorised over NumPy arrays ([`engine`]), the BSDFs
+//! ([`bsdf`]) and the albedo tables.
 //!
-//! The arrays are converted and broadcast by NumPy itself (`numpy.asarray`,
-//! `numpy.broadcast_arrays`, in C); the loop over the elements is Rust's, with the GIL
-//! released, on every core (rayon) above 16 384 elements. float32 input gives float32 output
-//! (the f64 value rounded once), anything else float64; all-scalar input gives a NumPy scalar.
+//! Values are the library's exact f64 path ([`AnyNdf`] for the isotropic functions of a
+//! cosine, [`Exact`] for directions): a float64 result is bit for bit what the Rust call
+//! returns (tests/test_rust_equal.py compares with the `microfacet` command line).
 
-use microfacet::{AnyNdf, Ndf, NdfKind};
-use numpy::{PyArray1, PyArrayMethods};
+mod bsdf;
+mod engine;
+
+use engine::{float64, uniforms, value_error, Args};
+use microfacet::walk::{self, DielectricFacets, Heights, Microsurface, MirrorFacets};
+use microfacet::{AnyNdf, Distribution, Exact, Ndf, NdfKind, ParamError};
 use pyo3::exceptions::PyValueError;
 use pyo3::prelude::*;
-use pyo3::sync::GILOnceCell;
 use pyo3::types::{PyFloat, PyInt};
-use rayon::prelude::*;
 
-/// Above this many elements the loop runs on rayon's pool.
+/// Above this many elements a cheap function's loop runs on rayon's pool.
 const PARALLEL: usize = 1 << 14;
 
-/// `f` over the elements of the arguments (broadcast together), as the module docs say.
+/// `f` over the elements of scalar arguments broadcast together (the isotropic quantities).
 fn apply<'py, const K: usize>(
     py: Python<'py>,
     args: [&Bound<'py, PyAny>; K],
-    f: impl Fn([f64; K]) -> f64 + Sync,
+    f: impl Fn([f64; K]) -> Result<f64, ParamError> + Sync,
 ) -> PyResult<PyObject> {
     // Python floats, NumPy float64 scalars (a float subclass) and ints only: no array, the
     // value as a NumPy float64 scalar, as a ufunc returns (0.13 µs a call against ~2.5 µs
@@ -34,108 +36,154 @@ fn apply<'py, const K: usize>(
         for (x, a) in x.iter_mut().zip(args) {
             *x = a.extract::<f64>()?;
         }
-        return Ok(float64(py)?.call1((f(x),))?.unbind());
+        return Ok(float64(py)?.call1((f(x).map_err(value_error)?,))?.unbind());
     }
-    let np = py.import("numpy")?;
-    let float64 = np.getattr("float64")?;
-    let float32 = np.getattr("float32")?;
-    let (mut f32, mut scalar) = (true, true);
-    let mut wide = Vec::with_capacity(K);
-    for x in args {
-        let a = np.call_method1("asarray", (x,))?;
-        f32 &= a.getattr("dtype")?.eq(&float32)?;
-        scalar &= a.getattr("ndim")?.extract::<usize>()? == 0;
-        // (No copy for float64 input.)
-        let kwargs = pyo3::types::PyDict::new(py);
-        kwargs.set_item("copy", false)?;
-        wide.push(a.call_method("astype", (&float64,), Some(&kwargs))?);
-    }
-    // Broadcast by NumPy's rules (and errors), then flat contiguous copies.
-    let views: Vec<Bound<'py, PyAny>> = if K == 1 {
-        wide
-    } else {
-        np.call_method1("broadcast_arrays", pyo3::types::PyTuple::new(py, wide)?)?
-            .try_iter()?
-            .collect::<PyResult<_>>()?
-    };
-    let shape = views[0].getattr("shape")?;
-    let flat: Vec<Bound<'py, PyArray1<f64>>> = views
-        .iter()
-        .map(|v| {
-            Ok(np
-                .call_method1("ascontiguousarray", (v,))?
-                .call_method1("reshape", (-1,))?
-                .downcast_into::<PyArray1<f64>>()?)
-        })
+    let items: Vec<_> = args.iter().map(|&a| (a, 0, "argument")).collect();
+    let a = Args::new(py, &items)?;
+    let s: Vec<&[f64]> = (0..K).map(|k| a.slice(k)).collect::<PyResult<_>>()?;
+    let mut out = a.run(py, 1, &[0], PARALLEL, |i, o| {
+        o[0] = f(std::array::from_fn(|k| s[k][i]))?;
+        Ok(())
+    })?;
+    Ok(out.remove(0))
+}
+
+/// Direction arguments (core length 3, or 2 for uniforms) to `width` outputs per element.
+fn apply_vec<'py>(
+    py: Python<'py>,
+    items: &[(&Bound<'py, PyAny>, usize, &str)],
+    outs: &[usize],
+    parallel: usize,
+    f: impl Fn(usize, &[&[f64]], &mut [f64]) -> Result<(), ParamError> + Sync,
+) -> PyResult<Vec<PyObject>> {
+    let a = Args::new(py, items)?;
+    let s: Vec<&[f64]> = (0..items.len())
+        .map(|k| a.slice(k))
         .collect::<PyResult<_>>()?;
-    let readonly: Vec<_> = flat.iter().map(|a| a.readonly()).collect();
-    let slices: Vec<&[f64]> = readonly
-        .iter()
-        .map(|r| r.as_slice())
-        .collect::<Result<_, _>>()?;
-    let n = slices[0].len();
-    let at = |i: usize| f(std::array::from_fn(|k| slices[k][i]));
-    let values: Vec<f64> = py.allow_threads(|| {
-        if n >= PARALLEL {
-            (0..n).into_par_iter().map(at).collect()
-        } else {
-            (0..n).map(at).collect()
-        }
-    });
-    let mut out = PyArray1::from_vec(py, values)
-        .into_any()
-        .call_method1("reshape", (shape,))?;
-    if f32 {
-        out = out.call_method1("astype", (float32,))?;
-    }
-    if scalar {
-        // (A NumPy scalar, as a ufunc gives for scalar input.)
-        out = out.get_item(())?;
-    }
-    Ok(out.unbind())
+    let cores: Vec<usize> = items.iter().map(|i| i.1.max(1)).collect();
+    let width = outs.iter().map(|&c| c.max(1)).sum();
+    a.run(py, width, outs, parallel, |i, o| {
+        let e: Vec<&[f64]> = s
+            .iter()
+            .zip(&cores)
+            .map(|(s, &c)| &s[i * c..(i + 1) * c])
+            .collect();
+        f(i, &e, o)
+    })
 }
 
-/// numpy.float64, looked up once.
-fn float64(py: Python<'_>) -> PyResult<&Bound<'_, PyAny>> {
-    static FLOAT64: GILOnceCell<PyObject> = GILOnceCell::new();
-    Ok(FLOAT64
-        .get_or_try_init(py, || {
-            Ok::<_, PyErr>(py.import("numpy")?.getattr("float64")?.unbind())
-        })?
-        .bind(py))
+fn v3(s: &[f64]) -> [f64; 3] {
+    [s[0], s[1], s[2]]
 }
 
-fn value_error(e: microfacet::ParamError) -> PyErr {
-    PyValueError::new_err(e.to_string())
+/// A named tuple of the package (`Sample`, `BSDFSample`, `Albedo`), built from `fields`.
+fn named<'py>(py: Python<'py>, name: &str, fields: Vec<PyObject>) -> PyResult<PyObject> {
+    let cls = py.import("microfacet._types")?.getattr(name)?;
+    Ok(cls.call1(pyo3::types::PyTuple::new(py, fields)?)?.unbind())
 }
 
 /// A microfacet NDF of the library (the base class of ``GGX``, ``Beckmann``, ``GTR``, ...).
 ///
 /// Conventions (the crate's): u = cos θ of the microfacet normal (D) or of a direction (Λ, σ,
-/// G1, G2); slopes (p, q) = −(x, y)/z of the normal. D is normalised so that the projected
-/// area of the microsurface is 1: ∫ D(m) cos θm dm = 1; D(u) = 0 for u ≤ 0. Values are the
-/// library's exact f64 path: closed forms to ≤ 1e-13 relative, numerical quantities (the
-/// family's Λ by quadrature, Bessel-K, the generalised exponential) to ≤ 1e-10, measured
-/// against mpmath (the crate's tests and README).
-#[pyclass(subclass, module = "microfacet")]
+/// G1, G2); slopes (p, q) = −(x, y)/z of the normal; directions are unit vectors (x, y, z)
+/// in the local frame, z the macro normal, as the last axis of an array. D is normalised so
+/// that the projected area of the microsurface is 1: ∫ D(m) cos θm dm = 1; D(u) = 0 for
+/// u ≤ 0. Values are the library's exact f64 path: closed forms to ≤ 1e-13 relative,
+/// numerical quantities (the family's Λ by quadrature, Bessel-K, the generalised
+/// exponential) to ≤ 1e-10, measured against mpmath (the crate's tests and README).
+///
+/// Every class takes ``alpha`` and an optional ``alpha_y`` (anisotropic by stretching; GTR
+/// only at γ = 2). The functions of a cosine (``d``, ``lambda_``, ...) are the isotropic
+/// NDF's, at ``alpha`` or at an array ``alpha=`` broadcast with the arguments; the
+/// functions of directions (``d_wm``, ``lambda_w``, ``pdf_visible``, ``sample_visible``,
+/// ...) are the anisotropic material's.
+#[pyclass(subclass, frozen, module = "microfacet")]
 pub struct NDF {
     ndf: AnyNdf,
+    /// The direction API, or why this material has none (Student-T at γ ≤ 3/2: Λ = ∞).
+    exact: Result<Exact, ParamError>,
+    alpha_y: f64,
 }
 
 impl NDF {
-    fn build(kind: NdfKind, alpha: f64, shape: Option<f64>) -> PyResult<Self> {
+    fn build(
+        kind: NdfKind,
+        alpha: f64,
+        alpha_y: Option<f64>,
+        shape: Option<f64>,
+    ) -> PyResult<Self> {
+        let ndf = AnyNdf::new(kind, alpha, shape).map_err(value_error)?;
+        let alpha_y = alpha_y.unwrap_or(alpha);
+        let exact = Exact::new(kind, alpha, alpha_y, shape);
+        match &exact {
+            // (Student-T below γ = 3/2 keeps its isotropic functions: D, P22, P2 are
+            // finite there; only Λ and what needs it are not.)
+            Err(ParamError::Shape { .. }) if kind == NdfKind::StudentT && alpha_y == alpha => {}
+            Err(e) => return Err(value_error(*e)),
+            Ok(_) => {}
+        }
         Ok(NDF {
-            ndf: AnyNdf::new(kind, alpha, shape).map_err(value_error)?,
+            ndf,
+            exact,
+            alpha_y,
         })
+    }
+
+    fn exact(&self) -> PyResult<Exact> {
+        self.exact.map_err(value_error)
+    }
+
+    /// The isotropic NDF at each α of `alpha` (broadcast with the arguments), or this one.
+    fn iso<'py, const K: usize>(
+        &self,
+        py: Python<'py>,
+        args: [&Bound<'py, PyAny>; K],
+        alpha: Option<&Bound<'py, PyAny>>,
+        f: impl Fn(&AnyNdf, [f64; K]) -> f64 + Sync,
+    ) -> PyResult<PyObject> {
+        match alpha {
+            None => {
+                if self.alpha_y != self.ndf.alpha() {
+                    return Err(PyValueError::new_err(
+                        "the functions of a cosine are isotropic: this material is anisotropic (alpha_y != alpha); use the direction methods (d_wm, lambda_w, ...) or pass alpha=",
+                    ));
+                }
+                let n = self.ndf;
+                apply(py, args, move |x| Ok(f(&n, x)))
+            }
+            Some(alpha) => {
+                let (kind, shape) = (self.ndf.kind(), self.ndf.shape());
+                // [args..., alpha] through a K + 1 array: the engine's K is const.
+                let items: Vec<_> = args
+                    .iter()
+                    .chain(std::iter::once(&alpha))
+                    .map(|&a| (a, 0, "argument"))
+                    .collect();
+                let a = Args::new(py, &items)?;
+                let s: Vec<&[f64]> = (0..=K).map(|k| a.slice(k)).collect::<PyResult<_>>()?;
+                let mut out = a.run(py, 1, &[0], PARALLEL, |i, o| {
+                    let n = AnyNdf::new(kind, s[K][i], shape)?;
+                    o[0] = f(&n, std::array::from_fn(|k| s[k][i]));
+                    Ok(())
+                })?;
+                Ok(out.remove(0))
+            }
+        }
     }
 }
 
 #[pymethods]
 impl NDF {
-    /// The roughness α.
+    /// The roughness α (αx of an anisotropic material).
     #[getter]
     fn alpha(&self) -> f64 {
         self.ndf.alpha()
+    }
+
+    /// αy (α for an isotropic material).
+    #[getter]
+    fn alpha_y(&self) -> f64 {
+        self.alpha_y
     }
 
     /// The shape parameter (γ of GTR, Student-T and the generalised exponential, a of
@@ -152,85 +200,332 @@ impl NDF {
     }
 
     fn __repr__(&self) -> String {
-        match self.ndf.shape() {
-            Some(s) => format!(
-                "microfacet.NDF({}, alpha={}, shape={s})",
-                self.name(),
-                self.alpha()
-            ),
-            None => format!("microfacet.NDF({}, alpha={})", self.name(), self.alpha()),
+        let mut s = format!("microfacet.NDF({}, alpha={}", self.name(), self.alpha());
+        if self.alpha_y != self.alpha() {
+            s += &format!(", alpha_y={}", self.alpha_y);
         }
+        if let Some(shape) = self.ndf.shape() {
+            s += &format!(", shape={shape}");
+        }
+        s + ")"
     }
 
     /// D(u): the density of microfacet normals per solid angle at u = cos θm (0 for u ≤ 0;
     /// +∞ at u = 1 for the NDFs with a pole there: Ei, Erfc, K0, Bessel-K a ≤ 1).
-    fn d(&self, py: Python<'_>, u: &Bound<'_, PyAny>) -> PyResult<PyObject> {
-        let n = self.ndf;
-        apply(py, [u], move |[u]| n.d(u))
+    /// ``alpha``: an array of roughnesses broadcast with u (default: this NDF's).
+    #[pyo3(signature = (u, alpha = None))]
+    fn d(
+        &self,
+        py: Python<'_>,
+        u: &Bound<'_, PyAny>,
+        alpha: Option<&Bound<'_, PyAny>>,
+    ) -> PyResult<PyObject> {
+        self.iso(py, [u], alpha, |n, [u]| n.d(u))
     }
 
     /// Smith's Λ(u) of a direction at u = cos θ (Λ(|u|) for u < 0; +∞ at u = 0; 0 at 1).
-    /// (``lambda`` is a Python keyword.)
-    fn lambda_(&self, py: Python<'_>, u: &Bound<'_, PyAny>) -> PyResult<PyObject> {
-        let n = self.ndf;
-        apply(py, [u], move |[u]| n.lambda(u))
+    /// (``lambda`` is a Python keyword.) ``alpha`` as for ``d``.
+    #[pyo3(signature = (u, alpha = None))]
+    fn lambda_(
+        &self,
+        py: Python<'_>,
+        u: &Bound<'_, PyAny>,
+        alpha: Option<&Bound<'_, PyAny>>,
+    ) -> PyResult<PyObject> {
+        self.iso(py, [u], alpha, |n, [u]| n.lambda(u))
     }
 
     /// The projected area σ(u) = ∫ max(0, ω·m) D(m) dm of a direction at signed u = cos θ
-    /// (σ(u) = u(1 + Λ(u)) above the horizon, |u| Λ(|u|) below; σ(0) finite).
-    fn sigma(&self, py: Python<'_>, u: &Bound<'_, PyAny>) -> PyResult<PyObject> {
-        let n = self.ndf;
-        apply(py, [u], move |[u]| n.sigma(u))
+    /// (σ(u) = u(1 + Λ(u)) above the horizon, |u| Λ(|u|) below; σ(0) finite). ``alpha`` as
+    /// for ``d``.
+    #[pyo3(signature = (u, alpha = None))]
+    fn sigma(
+        &self,
+        py: Python<'_>,
+        u: &Bound<'_, PyAny>,
+        alpha: Option<&Bound<'_, PyAny>>,
+    ) -> PyResult<PyObject> {
+        self.iso(py, [u], alpha, |n, [u]| n.sigma(u))
     }
 
-    /// Smith's masking G1(u) = 1/(1 + Λ(|u|)).
-    fn g1(&self, py: Python<'_>, u: &Bound<'_, PyAny>) -> PyResult<PyObject> {
-        let n = self.ndf;
-        apply(py, [u], move |[u]| n.g1(u))
+    /// Smith's masking G1(u) = 1/(1 + Λ(|u|)). ``alpha`` as for ``d``.
+    #[pyo3(signature = (u, alpha = None))]
+    fn g1(
+        &self,
+        py: Python<'_>,
+        u: &Bound<'_, PyAny>,
+        alpha: Option<&Bound<'_, PyAny>>,
+    ) -> PyResult<PyObject> {
+        self.iso(py, [u], alpha, |n, [u]| n.g1(u))
     }
 
     /// Height-correlated masking-shadowing G2(u_o, u_i) = 1/(1 + Λ(u_o) + Λ(u_i)) (Heitz
-    /// 2014), broadcast over both arguments.
+    /// 2014), broadcast over both arguments. ``alpha`` as for ``d``.
+    #[pyo3(signature = (u_o, u_i, alpha = None))]
     fn g2(
         &self,
         py: Python<'_>,
         u_o: &Bound<'_, PyAny>,
         u_i: &Bound<'_, PyAny>,
+        alpha: Option<&Bound<'_, PyAny>>,
     ) -> PyResult<PyObject> {
-        let n = self.ndf;
-        apply(py, [u_o, u_i], move |[a, b]| n.g2(a, b))
+        self.iso(py, [u_o, u_i], alpha, |n, [a, b]| n.g2(a, b))
     }
 
     /// Separable masking-shadowing G1(u_o) G1(u_i), broadcast over both arguments.
+    #[pyo3(signature = (u_o, u_i, alpha = None))]
     fn g2_separable(
         &self,
         py: Python<'_>,
         u_o: &Bound<'_, PyAny>,
         u_i: &Bound<'_, PyAny>,
+        alpha: Option<&Bound<'_, PyAny>>,
     ) -> PyResult<PyObject> {
-        let n = self.ndf;
-        apply(py, [u_o, u_i], move |[a, b]| n.g2_separable(a, b))
+        self.iso(py, [u_o, u_i], alpha, |n, [a, b]| n.g2_separable(a, b))
     }
 
     /// The slope density P22(p, q) = D(u) u⁴ (u = 1/√(1 + p² + q²)), broadcast over p and q.
+    #[pyo3(signature = (p, q, alpha = None))]
     fn p22(
         &self,
         py: Python<'_>,
         p: &Bound<'_, PyAny>,
         q: &Bound<'_, PyAny>,
+        alpha: Option<&Bound<'_, PyAny>>,
     ) -> PyResult<PyObject> {
-        let n = self.ndf;
-        apply(py, [p, q], move |[p, q]| n.p22(p, q))
+        self.iso(py, [p, q], alpha, |n, [p, q]| n.p22(p, q))
     }
 
     /// The marginal slope density P2(p) = ∫ P22(p, q) dq.
-    fn p2(&self, py: Python<'_>, p: &Bound<'_, PyAny>) -> PyResult<PyObject> {
-        let n = self.ndf;
-        apply(py, [p], move |[p]| n.p2(p))
+    #[pyo3(signature = (p, alpha = None))]
+    fn p2(
+        &self,
+        py: Python<'_>,
+        p: &Bound<'_, PyAny>,
+        alpha: Option<&Bound<'_, PyAny>>,
+    ) -> PyResult<PyObject> {
+        self.iso(py, [p], alpha, |n, [p]| n.p2(p))
+    }
+
+    // ---- Directions: the anisotropic material (Rust: microfacet::Exact, the Distribution
+    // trait). Arrays of unit vectors, last axis 3.
+
+    /// D(wm) of unit normals wm (shape (..., 3)); 0 for wm.z ≤ 0.
+    fn d_wm(&self, py: Python<'_>, wm: &Bound<'_, PyAny>) -> PyResult<PyObject> {
+        let e = self.exact()?;
+        let mut o = apply_vec(py, &[(wm, 3, "wm")], &[0], PARALLEL, |_, a, o| {
+            o[0] = e.d(v3(a[0]));
+            Ok(())
+        })?;
+        Ok(o.remove(0))
+    }
+
+    /// Smith Λ(w) of directions w (the side w comes from; +∞ on the horizon).
+    fn lambda_w(&self, py: Python<'_>, w: &Bound<'_, PyAny>) -> PyResult<PyObject> {
+        let e = self.exact()?;
+        let mut o = apply_vec(py, &[(w, 3, "w")], &[0], PARALLEL, |_, a, o| {
+            o[0] = e.lambda(v3(a[0]));
+            Ok(())
+        })?;
+        Ok(o.remove(0))
+    }
+
+    /// G1(w) = 1/(1 + Λ(w)).
+    fn g1_w(&self, py: Python<'_>, w: &Bound<'_, PyAny>) -> PyResult<PyObject> {
+        let e = self.exact()?;
+        let mut o = apply_vec(py, &[(w, 3, "w")], &[0], PARALLEL, |_, a, o| {
+            o[0] = e.g1(v3(a[0]));
+            Ok(())
+        })?;
+        Ok(o.remove(0))
+    }
+
+    /// The projected area σ(w) = |w.z|(1 + Λ(w)) (finite on the horizon), w mirrored to
+    /// the upper hemisphere.
+    fn sigma_w(&self, py: Python<'_>, w: &Bound<'_, PyAny>) -> PyResult<PyObject> {
+        let e = self.exact()?;
+        let mut o = apply_vec(py, &[(w, 3, "w")], &[0], PARALLEL, |_, a, o| {
+            o[0] = e.sigma(v3(a[0]));
+            Ok(())
+        })?;
+        Ok(o.remove(0))
+    }
+
+    /// Height-correlated G2(wo, wi) = 1/(1 + Λ(wo) + Λ(wi)); ``separable=True``:
+    /// G1(wo) G1(wi).
+    #[pyo3(signature = (wo, wi, separable = false))]
+    fn g2_w(
+        &self,
+        py: Python<'_>,
+        wo: &Bound<'_, PyAny>,
+        wi: &Bound<'_, PyAny>,
+        separable: bool,
+    ) -> PyResult<PyObject> {
+        let e = self.exact()?;
+        let mut o = apply_vec(
+            py,
+            &[(wo, 3, "wo"), (wi, 3, "wi")],
+            &[0],
+            PARALLEL,
+            |_, a, o| {
+                let (wo, wi) = (v3(a[0]), v3(a[1]));
+                o[0] = if separable {
+                    e.g2_separable(wo, wi)
+                } else {
+                    e.g2(wo, wi)
+                };
+                Ok(())
+            },
+        )?;
+        Ok(o.remove(0))
+    }
+
+    /// The visible-normal density D_w(wm) = G1(w) max(0, w·wm) D(wm)/|w.z| per solid angle
+    /// of wm (w.z < 0: that of −w), the pdf of ``sample_visible``.
+    fn pdf_visible(
+        &self,
+        py: Python<'_>,
+        w: &Bound<'_, PyAny>,
+        wm: &Bound<'_, PyAny>,
+    ) -> PyResult<PyObject> {
+        let e = self.exact()?;
+        let mut o = apply_vec(
+            py,
+            &[(w, 3, "w"), (wm, 3, "wm")],
+            &[0],
+            PARALLEL,
+            |_, a, o| {
+                o[0] = e.pdf(v3(a[0]), v3(a[1]));
+                Ok(())
+            },
+        )?;
+        Ok(o.remove(0))
+    }
+
+    /// Visible normals for directions w: ``sample_visible(w, u)`` with uniforms u of shape
+    /// (..., 2) in [0, 1) (broadcast with w's batch shape), or ``sample_visible(w, rng, n)``
+    /// with a ``numpy.random.Generator`` (n × 2 uniforms drawn from it). Returns
+    /// ``Sample(wm, pdf)``: unit normals (..., 3) and their densities ``pdf_visible(w,
+    /// wm)``. The exact samplers (χ²-tested in the crate): each wm is a deterministic
+    /// function of (w, u).
+    #[pyo3(signature = (w, u, n = None))]
+    fn sample_visible(
+        &self,
+        py: Python<'_>,
+        w: &Bound<'_, PyAny>,
+        u: &Bound<'_, PyAny>,
+        n: Option<usize>,
+    ) -> PyResult<PyObject> {
+        let e = self.exact()?;
+        let u = uniforms(py, u, n, 2)?;
+        // (The exact samplers of the family invert quadratures: parallel from few elements.)
+        let o = apply_vec(py, &[(w, 3, "w"), (&u, 2, "u")], &[3, 0], 256, |_, a, o| {
+            let s = e.sample(v3(a[0]), [a[1][0], a[1][1]]);
+            o[..3].copy_from_slice(&s.wm);
+            o[3] = s.pdf;
+            Ok(())
+        })?;
+        named(py, "Sample", o)
+    }
+
+    /// The density D(wm) cos θm of ``sample_dcos`` (0 for wm.z ≤ 0).
+    fn pdf_dcos(&self, py: Python<'_>, wm: &Bound<'_, PyAny>) -> PyResult<PyObject> {
+        let e = self.exact()?;
+        let mut o = apply_vec(py, &[(wm, 3, "wm")], &[0], PARALLEL, |_, a, o| {
+            o[0] = e.pdf_dcos(v3(a[0]));
+            Ok(())
+        })?;
+        Ok(o.remove(0))
+    }
+
+    /// Normals distributed as D(m) cos θm: ``sample_dcos(u)`` (u of shape (..., 2)) or
+    /// ``sample_dcos(rng, n)``; returns ``Sample(wm, pdf)``.
+    #[pyo3(signature = (u, n = None))]
+    fn sample_dcos(
+        &self,
+        py: Python<'_>,
+        u: &Bound<'_, PyAny>,
+        n: Option<usize>,
+    ) -> PyResult<PyObject> {
+        let e = self.exact()?;
+        let u = uniforms(py, u, n, 2)?;
+        let o = apply_vec(py, &[(&u, 2, "u")], &[3, 0], 256, |_, a, o| {
+            let s = e.sample_dcos([a[0][0], a[0][1]]);
+            o[..3].copy_from_slice(&s.wm);
+            o[3] = s.pdf;
+            Ok(())
+        })?;
+        named(py, "Sample", o)
+    }
+
+    // ---- Multiple scattering.
+
+    /// The albedo of the microsurface by scattering order, by Heitz et al.'s random walk
+    /// (2016; uniform heights), from directions at cos θo = ``mu`` and azimuth ``phi``
+    /// (broadcast together): F = 1 mirror facets (the white furnace, a conductor's
+    /// energy), or dielectric facets of relative index ``eta``. ``walks`` walks per
+    /// element, seeded by ``seed`` and the element's index (the same numbers whatever the
+    /// threads). Returns ``Albedo(reflect, reflect_stderr, transmit, transmit_stderr,
+    /// total, total_stderr)``: reflect and transmit of shape (..., 4) for the orders 1, 2,
+    /// 3 and ≥ 4, with their standard errors; total (...) is reflect + transmit summed
+    /// over orders.
+    #[pyo3(signature = (mu, phi = None, walks = 100_000, seed = 0, eta = None))]
+    #[allow(clippy::too_many_arguments)]
+    fn albedo(
+        &self,
+        py: Python<'_>,
+        mu: &Bound<'_, PyAny>,
+        phi: Option<&Bound<'_, PyAny>>,
+        walks: u64,
+        seed: u64,
+        eta: Option<f64>,
+    ) -> PyResult<PyObject> {
+        let e = self.exact()?;
+        if let Some(eta) = eta {
+            if !(eta > 0.0 && eta.is_finite() && eta != 1.0) {
+                return Err(PyValueError::new_err(format!(
+                    "eta must be a positive finite number other than 1 (got {eta})"
+                )));
+            }
+        }
+        let zero = PyFloat::new(py, 0.0).into_any();
+        let phi = phi.unwrap_or(&zero);
+        let surface = Microsurface::new(e, Heights::Uniform);
+        let o = apply_vec(
+            py,
+            &[(mu, 0, "mu"), (phi, 0, "phi")],
+            &[4, 4, 4, 4, 0, 0],
+            2,
+            |i, a, o| {
+                let (mu, phi) = (a[0][0], a[1][0]);
+                let st = ((1.0 - mu) * (1.0 + mu)).max(0.0).sqrt();
+                let wo = [st * phi.cos(), st * phi.sin(), mu];
+                // (One stream per element, whatever thread runs it.)
+                let seed = seed.wrapping_add((i as u64).wrapping_mul(0x9E37_79B9_7F4A_7C15));
+                let r = match eta {
+                    None => walk::albedo(
+                        &surface,
+                        &MirrorFacets(microfacet::fresnel::One::<1>),
+                        wo,
+                        walks,
+                        seed,
+                    ),
+                    Some(eta) => walk::albedo(&surface, &DielectricFacets(eta), wo, walks, seed),
+                };
+                o[0..4].copy_from_slice(&r.reflect.orders);
+                o[4..8].copy_from_slice(&r.reflect.stderr);
+                o[8..12].copy_from_slice(&r.transmit.orders);
+                o[12..16].copy_from_slice(&r.transmit.stderr);
+                o[16] = r.total.mean;
+                o[17] = r.total.stderr;
+                Ok(())
+            },
+        )?;
+        named(py, "Albedo", o)
     }
 }
 
-/// The classes of the NDFs without a shape parameter: `Name(alpha)`.
+/// The classes of the NDFs without a shape parameter: `Name(alpha, alpha_y=None)`.
 macro_rules! plain {
     ($($(#[$doc:meta])* $name:ident => $kind:ident;)*) => {$(
         $(#[$doc])*
@@ -240,14 +535,15 @@ macro_rules! plain {
         #[pymethods]
         impl $name {
             #[new]
-            fn new(alpha: f64) -> PyResult<(Self, NDF)> {
-                Ok(($name, NDF::build(NdfKind::$kind, alpha, None)?))
+            #[pyo3(signature = (alpha, alpha_y = None))]
+            fn new(alpha: f64, alpha_y: Option<f64>) -> PyResult<(Self, NDF)> {
+                Ok(($name, NDF::build(NdfKind::$kind, alpha, alpha_y, None)?))
             }
         }
     )*};
 }
 
-/// The classes of the NDFs with a shape parameter: `Name(alpha, shape)`.
+/// The classes of the NDFs with a shape parameter: `Name(alpha, shape, alpha_y=None)`.
 macro_rules! shaped {
     ($($(#[$doc:meta])* $name:ident => $kind:ident, $shape:ident;)*) => {$(
         $(#[$doc])*
@@ -257,8 +553,9 @@ macro_rules! shaped {
         #[pymethods]
         impl $name {
             #[new]
-            fn new(alpha: f64, $shape: f64) -> PyResult<(Self, NDF)> {
-                Ok(($name, NDF::build(NdfKind::$kind, alpha, Some($shape))?))
+            #[pyo3(signature = (alpha, $shape, alpha_y = None))]
+            fn new(alpha: f64, $shape: f64, alpha_y: Option<f64>) -> PyResult<(Self, NDF)> {
+                Ok(($name, NDF::build(NdfKind::$kind, alpha, alpha_y, Some($shape))?))
             }
         }
     )*};
@@ -308,5 +605,6 @@ fn _microfacet(m: &Bound<'_, PyModule>) -> PyResult<()> {
     m.add_class::<StudentT>()?;
     m.add_class::<BesselK>()?;
     m.add_class::<GenExponential>()?;
+    bsdf::register(m)?;
     Ok(())
 }

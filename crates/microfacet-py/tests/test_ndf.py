@@ -154,11 +154,22 @@ def test_errors():
         microfacet.GGX(0.3).d(object())
 
 
-def test_stubs_name_every_class():
+def test_stubs_name_every_class_and_method():
+    from microfacet import _microfacet
+
     with open(os.path.join(os.path.dirname(microfacet.__file__), "_microfacet.pyi")) as fh:
         stubs = fh.read()
-    for name in microfacet.__all__:
-        assert f"class {name}" in stubs, name
+    for name in dir(_microfacet):
+        obj = getattr(_microfacet, name)
+        if name.startswith("_"):
+            continue
+        if isinstance(obj, type):
+            assert f"class {name}" in stubs, name
+            for attr in vars(obj):
+                if not attr.startswith("_"):
+                    assert f"def {attr}(" in stubs, (name, attr)
+        elif callable(obj):
+            assert f"def {name}(" in stubs, name
 
 
 def test_attributes_and_help():

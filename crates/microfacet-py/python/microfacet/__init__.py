@@ -1,17 +1,35 @@
-"""Microfacet normal distribution functions from NumPy: the Rust library `microfacet`.
+"""Microfacet theory from NumPy: the Rust library `microfacet`.
 
-Every NDF of the library is a class (``GGX(alpha)``, ``GTR(alpha, gamma)``, ``StudentT(alpha,
-gamma)``, ``BesselK(alpha, a)``, ...) whose quantities are vectorised methods: NumPy arrays of
-any shape (or scalars) in, arrays of the broadcast shape out, float32 for float32 input and
-float64 otherwise, computed in Rust (f64, the library's exact path; float32 results are the
-f64 values rounded). Bad parameters raise ``ValueError`` with the library's message; NaN
-propagates. See ``help(microfacet.NDF)`` for the quantities and their accuracy.
+Every NDF of the library is a class (``GGX(alpha, alpha_y=None)``, ``GTR(alpha, gamma)``,
+``StudentT(alpha, gamma)``, ``BesselK(alpha, a)``, ...) whose quantities are vectorised
+methods: NumPy arrays of any shape (or scalars) in, arrays of the broadcast shape out,
+float32 for float32 input and float64 otherwise, computed in Rust on every core (f64, the
+library's exact path; float32 results are the f64 values rounded once).
+
+* Functions of a cosine (the isotropic NDF; ``alpha=`` broadcasts an array of roughnesses):
+  ``d``, ``lambda_``, ``sigma``, ``g1``, ``g2``, ``g2_separable``, ``p22``, ``p2``.
+* Functions of directions (unit vectors on the last axis, anisotropic): ``d_wm``,
+  ``lambda_w``, ``g1_w``, ``sigma_w``, ``g2_w``, ``pdf_visible``, ``pdf_dcos``; the samplers
+  ``sample_visible(w, u)`` and ``sample_dcos(u)`` with uniforms u (last axis 2) or
+  ``(rng, n)`` for a ``numpy.random.Generator``.
+* Multiple scattering: ``ndf.albedo(mu, walks=...)`` by order (the random walk),
+  ``single_scattering_albedo(ndf, mu)`` (quadrature), ``AlbedoTable(ndf)``.
+* BSDFs: ``Conductor(ndf, eta, k)`` and ``Dielectric(ndf, eta)`` with ``eval``, ``pdf`` and
+  ``sample``, single scattering or with multiple scattering (``scattering='kulla_conty'``,
+  ``'turquin'`` or ``'walk'``).
+
+Bad parameters raise ``ValueError`` with the library's message; NaN propagates; Ctrl-C
+interrupts long calls. See ``help(microfacet.NDF)`` for the quantities and their accuracy.
 """
 
 from ._microfacet import (  # noqa: F401
+    BSDF,
     NDF,
+    AlbedoTable,
     Beckmann,
     BesselK,
+    Conductor,
+    Dielectric,
     DoubleGGX,
     Ei,
     Erfc,
@@ -21,7 +39,9 @@ from ._microfacet import (  # noqa: F401
     GTR,
     K0,
     StudentT,
+    single_scattering_albedo,
 )
+from ._types import Albedo, BSDFSample, Sample  # noqa: F401
 
 __all__ = [
     "NDF",
@@ -36,4 +56,12 @@ __all__ = [
     "GTR",
     "K0",
     "StudentT",
+    "BSDF",
+    "Conductor",
+    "Dielectric",
+    "AlbedoTable",
+    "single_scattering_albedo",
+    "Sample",
+    "BSDFSample",
+    "Albedo",
 ]

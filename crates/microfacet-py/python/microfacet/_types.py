@@ -1,0 +1,37 @@
+"""The named tuples the samplers and albedos return."""
+
+from typing import NamedTuple
+
+import numpy as np
+
+
+class Sample(NamedTuple):
+    """Sampled microfacet normals ``wm`` (..., 3) and their densities ``pdf`` (...)."""
+
+    wm: np.ndarray
+    pdf: np.ndarray
+
+
+class BSDFSample(NamedTuple):
+    """Sampled directions of a BSDF: ``wi`` (..., 3), ``f`` (..., or ..., channels), ``pdf``,
+    ``lobe`` (int8: 0 rejected, 1 reflection, 2 transmission), ``specular`` (bool: a delta
+    lobe's weights) and ``eta`` (the relative index along the path; 1 for a reflection)."""
+
+    wi: np.ndarray
+    f: np.ndarray
+    pdf: np.ndarray
+    lobe: np.ndarray
+    specular: np.ndarray
+    eta: np.ndarray
+
+
+class Albedo(NamedTuple):
+    """The albedo by scattering order (the last axis of ``reflect`` and ``transmit``: orders
+    1, 2, 3 and ≥ 4) with standard errors, and the total over sides and orders."""
+
+    reflect: np.ndarray
+    reflect_stderr: np.ndarray
+    transmit: np.ndarray
+    transmit_stderr: np.ndarray
+    total: np.ndarray
+    total_stderr: np.ndarray

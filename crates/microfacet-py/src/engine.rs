@@ -1,0 +1,271 @@
+//! The vectorising engine every method goes through: NumPy broadcasting of the arguments
+//! (with core axes: a direction is the last axis of length 3, a pair of uniforms of length
+//! 2), the loop over the elements in Rust without the GIL (rayon above a size), Ctrl-C
+//! between chunks, and the outputs shaped and typed as NumPy's ufuncs would.
+//!
+//! Rules: every argument is converted by `numpy.asarray`; the batch shapes (the shapes
+//! without the core axes) broadcast by `numpy.broadcast_shapes`. If every argument is
+//! float32, the outputs are float32 (each value the f64 result rounded once), else float64.
+//! If the broadcast batch shape is `()`, an output without a core axis is a NumPy scalar (as
+//! a ufunc gives for scalars).
+
+use microfacet::ParamError;
+use numpy::{PyArray1, PyArrayMethods, PyReadonlyArray1};
+use pyo3::exceptions::PyValueError;
+use pyo3::prelude::*;
+use pyo3::sync::GILOnceCell;
+use pyo3::types::{PyDict, PySlice, PyTuple};
+use rayon::prelude::*;
+use std::time::{Duration, Instant};
+
+/// numpy, imported once.
+pub fn numpy(py: Python<'_>) -> PyResult<&Bound<'_, PyAny>> {
+    static NUMPY: GILOnceCell<PyObject> = GILOnceCell::new();
+    Ok(NUMPY
+        .get_or_try_init(py, || {
+            Ok::<_, PyErr>(py.import("numpy")?.into_any().unbind())
+        })?
+        .bind(py))
+}
+
+/// numpy.float64, looked up once.
+pub fn float64(py: Python<'_>) -> PyResult<&Bound<'_, PyAny>> {
+    static FLOAT64: GILOnceCell<PyObject> = GILOnceCell::new();
+    Ok(FLOAT64
+        .get_or_try_init(py, || {
+            Ok::<_, PyErr>(numpy(py)?.getattr("float64")?.unbind())
+        })?
+        .bind(py))
+}
+
+/// The library's typed error as Python's ValueError, with its message.
+pub fn value_error(e: ParamError) -> PyErr {
+    PyValueError::new_err(e.to_string())
+}
+
+/// The arguments of one call, broadcast: flat float64 arrays (contiguous; no copy for
+/// contiguous float64 input of the broadcast shape).
+pub struct Args<'py> {
+    arrays: Vec<PyReadonlyArray1<'py, f64>>,
+    /// The broadcast batch shape.
+    batch: Vec<usize>,
+    /// The number of elements (the product of `batch`).
+    n: usize,
+    /// Whether every argument was float32.
+    f32: bool,
+}
+
+impl<'py> Args<'py> {
+    /// `items`: (the argument, its core length (0: one number per element), its name).
+    pub fn new(py: Python<'py>, items: &[(&Bound<'py, PyAny>, usize, &str)]) -> PyResult<Self> {
+        let np = numpy(py)?;
+        let float32 = np.getattr("float32")?;
+        let mut f32 = true;
+        let mut wide = Vec::with_capacity(items.len());
+        let mut batches = Vec::with_capacity(items.len());
+        for &(x, core, name) in items {
+            let a = np.call_method1("asarray", (x,))?;
+            f32 &= a.getattr("dtype")?.eq(&float32)?;
+            let shape: Vec<usize> = a.getattr("shape")?.extract()?;
+            if core > 0 && shape.last() != Some(&core) {
+                return Err(PyValueError::new_err(format!(
+                    "{name} must have a last axis of length {core} (got shape {shape:?})"
+                )));
+            }
+            // (A core is one trailing axis.)
+            batches.push(PyTuple::new(
+                py,
+                &shape[..shape.len() - usize::from(core > 0)],
+            )?);
+            let kwargs = PyDict::new(py);
+            kwargs.set_item("copy", false)?;
+            wide.push(a.call_method("astype", (float64(py)?,), Some(&kwargs))?);
+        }
+        let batch: Vec<usize> = np
+            .call_method1("broadcast_shapes", PyTuple::new(py, batches)?)?
+            .extract()?;
+        let n = batch.iter().product();
+        let mut arrays = Vec::with_capacity(items.len());
+        for (a, &(_, core, _)) in wide.into_iter().zip(items) {
+            let mut full = batch.clone();
+            if core > 0 {
+                full.push(core);
+            }
+            let b = np.call_method1("broadcast_to", (a, PyTuple::new(py, &full)?))?;
+            let flat = np
+                .call_method1("ascontiguousarray", (b,))?
+                .call_method1("reshape", (-1,))?
+                .downcast_into::<PyArray1<f64>>()?;
+            arrays.push(flat.readonly());
+        }
+        Ok(Args {
+            arrays,
+            batch,
+            n,
+            f32,
+        })
+    }
+
+    /// The flat data of argument k.
+    pub fn slice(&self, k: usize) -> PyResult<&[f64]> {
+        Ok(self.arrays[k].as_slice()?)
+    }
+
+    /// Run `f(i, out)` for every element i (out: `width` numbers), and shape the outputs:
+    /// `outs` lists each output's core length (0: one number per element), in the order
+    /// they lie in `out`. `parallel`: from how many elements rayon's pool is used.
+    pub fn run(
+        &self,
+        py: Python<'py>,
+        width: usize,
+        outs: &[usize],
+        parallel: usize,
+        f: impl Fn(usize, &mut [f64]) -> Result<(), ParamError> + Sync,
+    ) -> PyResult<Vec<PyObject>> {
+        let data = compute(py, self.n, width, parallel, f)?;
+        self.shape(py, data, width, outs)
+    }
+
+    /// The outputs of `data` (n × width, row-major), as [`Args::run`] says.
+    fn shape(
+        &self,
+        py: Python<'py>,
+        data: Vec<f64>,
+        width: usize,
+        outs: &[usize],
+    ) -> PyResult<Vec<PyObject>> {
+        let np = numpy(py)?;
+        let all = PyArray1::from_vec(py, data).into_any();
+        let mut result = Vec::with_capacity(outs.len());
+        let mut offset = 0;
+        for &core in outs {
+            let mut full = self.batch.clone();
+            if core > 0 {
+                full.push(core);
+            }
+            let mut out = if outs.len() == 1 {
+                all.call_method1("reshape", (PyTuple::new(py, &full)?,))?
+            } else {
+                // Columns offset..offset + core of the (n, width) block, then contiguous.
+                let rows = all.call_method1("reshape", ((self.n, width),))?;
+                let cols = if core == 0 {
+                    rows.get_item((py.Ellipsis(), offset))?
+                } else {
+                    let s = PySlice::new(py, offset as isize, (offset + core) as isize, 1);
+                    rows.get_item((py.Ellipsis(), s))?
+                };
+                np.call_method1("ascontiguousarray", (cols,))?
+                    .call_method1("reshape", (PyTuple::new(py, &full)?,))?
+            };
+            if self.f32 {
+                out = out.call_method1("astype", (np.getattr("float32")?,))?;
+            }
+            if full.is_empty() {
+                out = out.get_item(())?;
+            }
+            result.push(out.unbind());
+            offset += core.max(1);
+        }
+        Ok(result)
+    }
+}
+
+/// `f(i, out)` for i < n into an n × width block: chunks that grow while they take under
+/// 50 ms, the signals checked (Ctrl-C raises KeyboardInterrupt) after each, the GIL released
+/// meanwhile, rayon's pool from `parallel` elements a chunk. The first error stops the loop.
+pub fn compute(
+    py: Python<'_>,
+    n: usize,
+    width: usize,
+    parallel: usize,
+    f: impl Fn(usize, &mut [f64]) -> Result<(), ParamError> + Sync,
+) -> PyResult<Vec<f64>> {
+    let mut data = vec![0.0; n * width];
+    if width == 0 {
+        return Ok(data);
+    }
+    // (Cheap elements: a few thousand before the first check; expensive ones (walks,
+    // quadratures: a small `parallel`) one per thread.)
+    let mut chunk = if parallel >= 1024 {
+        4096
+    } else {
+        rayon::current_num_threads()
+    };
+    let mut start = 0;
+    let result: PyResult<()> = py.allow_threads(|| {
+        while start < n {
+            let end = (start + chunk).min(n);
+            let t = Instant::now();
+            let block = &mut data[start * width..end * width];
+            let r: Result<(), ParamError> = if end - start >= parallel {
+                block
+                    .par_chunks_mut(width)
+                    .enumerate()
+                    .try_for_each(|(k, out)| f(start + k, out))
+            } else {
+                block
+                    .chunks_mut(width)
+                    .enumerate()
+                    .try_for_each(|(k, out)| f(start + k, out))
+            };
+            r.map_err(value_error)?;
+            start = end;
+            if start < n {
+                Python::with_gil(|py| py.check_signals())?;
+                if t.elapsed() < Duration::from_millis(50) {
+                    chunk = chunk.saturating_mul(2);
+                }
+            }
+        }
+        Ok(())
+    });
+    result.map(|()| data)
+}
+
+/// A uniform source: an array of uniforms (last axis `k`), or a `numpy.random.Generator`
+/// from which n × k (or k, without n) uniforms are drawn.
+pub fn uniforms<'py>(
+    py: Python<'py>,
+    u: &Bound<'py, PyAny>,
+    n: Option<usize>,
+    k: usize,
+) -> PyResult<Bound<'py, PyAny>> {
+    let generator = numpy(py)?.getattr("random")?.getattr("Generator")?;
+    if u.is_instance(&generator)? {
+        return match n {
+            Some(n) => u.call_method1("random", ((n, k),)),
+            None => u.call_method1("random", (k,)),
+        };
+    }
+    if n.is_some() {
+        return Err(PyValueError::new_err(
+            "n is the number of samples to draw from a numpy.random.Generator; an array of uniforms says it by its shape",
+        ));
+    }
+    Ok(u.clone())
+}
+
+/// `f()` on a thread of its own while this one waits without the GIL, checking the signals
+/// every 50 ms: Ctrl-C raises KeyboardInterrupt at once (the computation, which cannot be
+/// cut short from outside, finishes in the background and is dropped).
+pub fn interruptible<T: Send + 'static>(
+    py: Python<'_>,
+    f: impl FnOnce() -> T + Send + 'static,
+) -> PyResult<T> {
+    use std::sync::mpsc::{channel, RecvTimeoutError};
+    let (tx, rx) = channel();
+    std::thread::spawn(move || {
+        let _ = tx.send(f());
+    });
+    py.allow_threads(move || loop {
+        match rx.recv_timeout(Duration::from_millis(50)) {
+            Ok(v) => return Ok(v),
+            Err(RecvTimeoutError::Timeout) => Python::with_gil(|py| py.check_signals())?,
+            Err(RecvTimeoutError::Disconnected) => {
+                return Err(pyo3::exceptions::PyRuntimeError::new_err(
+                    "the computation failed (a panic in the library: please report it)",
+                ))
+            }
+        }
+    })
+}

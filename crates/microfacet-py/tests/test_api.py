@@ -1,0 +1,334 @@
+"""Directions, samplers, BSDFs and multiple scattering from Python: equal to the Rust
+library's values, shaped by NumPy's rules, sampled from the stated densities (χ² with
+scipy), interruptible.
+
+Run: pip install ./crates/microfacet-py pytest scipy && pytest crates/microfacet-py/tests
+(the comparisons with the Rust command line need it built: cargo build --release, or
+MICROFACET_CLI=path).
+"""
+
+import json
+import os
+import signal
+import subprocess
+import time
+
+import numpy as np
+import pytest
+from scipy import stats
+
+import microfacet as mf
+
+ROOT = os.path.join(os.path.dirname(__file__), "..", "..", "..")
+CLI = os.environ.get("MICROFACET_CLI", os.path.join(ROOT, "target", "release", "microfacet"))
+
+
+def cli(command, lines):
+    if not os.path.exists(CLI):
+        # (CI names it: missing there is a failure.)
+        assert "MICROFACET_CLI" not in os.environ, f"MICROFACET_CLI={CLI} does not exist"
+        pytest.skip(f"the command line is not built ({CLI}); cargo build --release")
+    out = subprocess.run([CLI, command], input="\n".join(json.dumps(x) for x in lines), capture_output=True, text=True)
+    assert out.returncode == 0, out.stdout + out.stderr
+    return [json.loads(x) for x in out.stdout.splitlines()]
+
+
+def unit(v):
+    v = np.asarray(v, dtype=np.float64)
+    return v / np.linalg.norm(v, axis=-1, keepdims=True)
+
+
+def hemisphere(n, rng, lower=False):
+    w = unit(rng.normal(size=(n, 3)))
+    w[:, 2] = np.abs(w[:, 2]) * (-1 if lower else 1)
+    return w
+
+
+# ---- Equal to Rust, bit for bit.
+
+
+def test_cosine_functions_equal_the_command_line():
+    ndfs = [
+        ("ggx", {}, mf.GGX(0.3)),
+        ("beckmann", {}, mf.Beckmann(0.7)),
+        ("gtr", {"gamma": 1.5}, mf.GTR(0.2, 1.5)),
+        ("student_t", {"gamma": 2.5}, mf.StudentT(0.4, 2.5)),
+        ("ei", {}, mf.Ei(0.3)),
+        ("bessel_k", {"a": 0.7}, mf.BesselK(0.5, 0.7)),
+        ("gen_exponential", {"gamma": 3.0}, mf.GenExponential(0.5, 3.0)),
+    ]
+    us = [0.01, 0.3, 0.5, 0.99, 0.999999]  # (D(1) = ∞ for Ei: JSON has no ∞)
+    for name, shape, n in ndfs:
+        for q, method in [("d", n.d), ("lambda", n.lambda_), ("sigma", n.sigma), ("g1", n.g1)]:
+            lines = [dict(ndf=name, alpha=n.alpha, quantity=q, u=u, **shape) for u in us]
+            want = [r["value"] for r in cli("eval", lines)]
+            got = method(np.array(us))
+            assert got.tolist() == want, (name, q)
+
+
+def test_bsdfs_equal_the_command_line():
+    # The family's BSDFs run on the exact path in both (the CLI's GGX etc. use the fast path).
+    wo, wi, wt = [0.0, 0.6, 0.8], [0.6, 0.0, 0.8], [0.0, -0.6, -0.8]
+    cases = [
+        ("conductor", dict(ndf="student_t", gamma=2.5, alpha=[0.3, 0.2], eta=[0.2, 0.9, 1.1], k=[3.9, 2.4, 2.2]),
+         mf.Conductor(mf.StudentT(0.3, 2.5, alpha_y=0.2), eta=[0.2, 0.9, 1.1], k=[3.9, 2.4, 2.2])),
+        ("dielectric", dict(ndf="ei", alpha=0.3, eta=1.5), mf.Dielectric(mf.Ei(0.3), 1.5)),
+    ]
+    for kind, spec, b in cases:
+        for w in (wi, wt):
+            [r] = cli("bsdf", [dict(bsdf=kind, op="eval", wo=wo, wi=w, **spec)])
+            f = np.atleast_1d(b.eval(np.array(wo), np.array(w)))
+            assert f.tolist() == r["f"][: len(f)]
+            assert b.pdf(np.array(wo), np.array(w)) == r["pdf"]
+        for u in ([0.3, 0.2, 0.7], [0.9, 0.5, 0.5]):
+            [r] = cli("bsdf", [dict(bsdf=kind, op="sample", wo=wo, u=u, **spec)])
+            s = b.sample(np.array(wo), np.array(u))
+            assert s.wi.tolist() == r["wi"]
+            assert s.pdf == r["pdf"]
+            assert np.atleast_1d(s.f).tolist() == r["f"][: np.size(s.f)]
+            assert s.lobe == {"reflection": 1, "transmission": 2}[r["kind"]]
+
+
+# ---- Shapes, dtypes, agreement between the cosine and direction forms.
+
+
+def test_alpha_as_an_array_broadcasts_and_equals_one_material_per_element():
+    u = np.linspace(0.05, 1.0, 7)[:, None]
+    alpha = np.array([0.05, 0.3, 1.0, 2.0])
+    for cls, extra in [(mf.GGX, ()), (mf.StudentT, (3.0,)), (mf.Erfc, ())]:
+        n = cls(0.5, *extra)
+        got = n.lambda_(u, alpha=alpha)
+        assert got.shape == (7, 4)
+        for j, a in enumerate(alpha):
+            assert np.array_equal(got[:, j], cls(a, *extra).lambda_(u[:, 0]))
+        assert n.d(np.float32(0.5), alpha=np.float32([0.1, 0.2])).dtype == np.float32
+    with pytest.raises(ValueError, match="alpha"):
+        mf.GGX(0.3).d(0.5, alpha=[0.1, -1.0])
+    with pytest.raises(ValueError, match="anisotropic"):
+        mf.GGX(0.3, 0.1).d(0.5)
+
+
+def test_direction_forms_agree_with_the_cosine_forms():
+    u = np.linspace(0.02, 0.999, 50)
+    phi = np.linspace(0, 6, 50)
+    s = np.sqrt(1 - u * u)
+    w = np.stack([s * np.cos(phi), s * np.sin(phi), u], axis=-1)
+    for n in [mf.GGX(0.3), mf.Beckmann(0.5), mf.GTR(0.2, 1.2), mf.StudentT(0.3, 4.0), mf.K0(0.4), mf.DoubleGGX(0.3)]:
+        np.testing.assert_allclose(n.d_wm(w), n.d(u), rtol=1e-12)
+        np.testing.assert_allclose(n.lambda_w(w), n.lambda_(u), rtol=1e-10)
+        np.testing.assert_allclose(n.g1_w(w), n.g1(u), rtol=1e-12)
+        np.testing.assert_allclose(n.sigma_w(w), n.sigma(u), rtol=1e-10)
+        np.testing.assert_allclose(n.g2_w(w, w[::-1]), n.g2(u, u[::-1]), rtol=1e-12)
+        np.testing.assert_allclose(n.g2_w(w, w[::-1], separable=True), n.g2_separable(u, u[::-1]), rtol=1e-12)
+        np.testing.assert_allclose(n.pdf_dcos(w), n.d(u) * u, rtol=1e-12)
+
+
+def test_direction_shapes_and_dtypes():
+    g = mf.GGX(0.3, 0.1)
+    w = unit(np.random.default_rng(0).normal(size=(4, 5, 3)))
+    assert g.lambda_w(w).shape == (4, 5)
+    assert g.pdf_visible(w[:, :1], w).shape == (4, 5)  # (4, 1) with (4, 5)
+    assert g.lambda_w(w.astype(np.float32)).dtype == np.float32
+    assert np.ndim(g.d_wm([0.0, 0.0, 1.0])) == 0
+    with pytest.raises(ValueError, match="last axis of length 3"):
+        g.d_wm(np.zeros((4, 2)))
+    with pytest.raises(ValueError):
+        g.pdf_visible(w, w[:3])  # (4, 5) with (3, 5): not broadcastable
+    assert np.isnan(g.lambda_w([np.nan, 0.0, 1.0]))
+
+
+# ---- Samplers.
+
+
+@pytest.mark.parametrize(
+    "n", [mf.GGX(0.3, 0.1), mf.Beckmann(0.6), mf.GTR(0.3, 1.0), mf.StudentT(0.3, 2.5), mf.Ei(0.4), mf.Exponential(0.2)]
+)
+def test_sample_visible_contract(n):
+    rng = np.random.default_rng(1)
+    w = hemisphere(2000, rng)
+    w[::2] *= -1  # below the horizon: mirrored
+    s = n.sample_visible(w, rng.random((2000, 2)))
+    assert s.wm.shape == (2000, 3) and s.pdf.shape == (2000,)
+    np.testing.assert_allclose(np.linalg.norm(s.wm, axis=-1), 1.0, atol=1e-14)
+    side = np.where(w[:, 2] < 0, -1.0, 1.0)
+    assert np.all(np.sum(w * s.wm, axis=-1) * side > 0) and np.all(s.wm[:, 2] > 0)
+    assert np.array_equal(s.pdf, n.pdf_visible(w, s.wm))
+    # A Generator and n: the same as drawing the uniforms first.
+    a = n.sample_visible(w[0], np.random.default_rng(7), n=100)
+    b = n.sample_visible(w[0], np.random.default_rng(7).random((100, 2)))
+    assert np.array_equal(a.wm, b.wm)
+    with pytest.raises(ValueError, match="Generator"):
+        n.sample_visible(w[0], np.zeros((3, 2)), n=3)
+
+
+def cell_probabilities(pdf, nu, nphi, order=6):
+    """∫ pdf over cells of (u = cos θ, φ) ∈ [0, 1] × [0, 2π) by Gauss–Legendre per cell (dω = du dφ)."""
+    x, wt = np.polynomial.legendre.leggauss(order)
+    x, wt = (x + 1) / 2, wt / 2
+    ue = np.linspace(0, 1, nu + 1)
+    pe = np.linspace(0, 2 * np.pi, nphi + 1)
+    u = ue[:-1, None] + np.diff(ue)[:, None] * x[None, :]  # (nu, order)
+    p = pe[:-1, None] + np.diff(pe)[:, None] * x[None, :]
+    U = u[:, None, :, None]
+    P = p[None, :, None, :]
+    s = np.sqrt(1 - U * U)
+    m = np.stack(np.broadcast_arrays(s * np.cos(P), s * np.sin(P), U), axis=-1)
+    f = pdf(m)  # (nu, nphi, order, order)
+    w2 = wt[:, None] * wt[None, :]
+    return np.sum(f * w2, axis=(-2, -1)) * np.diff(ue)[:, None] * np.diff(pe)[None, :]
+
+
+def chi2_pvalue(counts, expected):
+    # Cells with small expectations pooled into one (the usual rule: ≥ 5).
+    small = expected < 5
+    obs = np.append(counts[~small], counts[small].sum())
+    exp = np.append(expected[~small], expected[small].sum())
+    if exp[-1] == 0:
+        obs, exp = obs[:-1], exp[:-1]
+    exp = exp * obs.sum() / exp.sum()
+    return stats.chisquare(obs, exp).pvalue
+
+
+@pytest.mark.parametrize(
+    "n, w",
+    [
+        (mf.GGX(0.4, 0.15), [0.5, 0.3, 0.81]),
+        (mf.Beckmann(0.5), [0.8, 0.0, 0.6]),
+        (mf.StudentT(0.35, 3.0, alpha_y=0.6), [-0.3, 0.5, 0.81]),
+        (mf.GenExponential(0.4, 1.3), [0.0, 0.6, 0.8]),
+        (mf.DoubleGGX(0.3), [0.0, 0.0, -1.0]),
+    ],
+)
+def test_sample_visible_chi2(n, w):
+    w = unit(w)
+    samples = 100_000
+    s = n.sample_visible(w, np.random.default_rng(3), n=samples)
+    nu, nphi = 16, 24
+    counts, _, _ = np.histogram2d(
+        s.wm[:, 2], np.mod(np.arctan2(s.wm[:, 1], s.wm[:, 0]), 2 * np.pi), bins=[nu, nphi], range=[[0, 1], [0, 2 * np.pi]]
+    )
+    expected = samples * cell_probabilities(lambda m: n.pdf_visible(w, m), nu, nphi)
+    assert abs(expected.sum() / samples - 1) < 2e-3
+    assert chi2_pvalue(counts.ravel(), expected.ravel()) > 1e-4
+
+
+def test_sample_dcos_chi2():
+    n = mf.Exponential(0.5, 0.3)
+    samples = 100_000
+    s = n.sample_dcos(np.random.default_rng(4), n=samples)
+    assert np.array_equal(s.pdf, n.pdf_dcos(s.wm))
+    nu, nphi = 16, 24
+    counts, _, _ = np.histogram2d(
+        s.wm[:, 2], np.mod(np.arctan2(s.wm[:, 1], s.wm[:, 0]), 2 * np.pi), bins=[nu, nphi], range=[[0, 1], [0, 2 * np.pi]]
+    )
+    expected = samples * cell_probabilities(n.pdf_dcos, nu, nphi, order=8)
+    assert chi2_pvalue(counts.ravel(), expected.ravel()) > 1e-4
+
+
+def test_conductor_sample_chi2_with_rejections():
+    b = mf.Conductor(mf.GGX(0.5, 0.25), eta=1.5, k=3.0)
+    wo = unit([0.7, 0.2, 0.3])
+    samples = 100_000
+    s = b.sample(wo, np.random.default_rng(5), n=samples)
+    ok = s.lobe == 1
+    assert np.all(s.pdf[~ok] == 0) and np.all(s.wi[~ok] == 0)
+    nu, nphi = 16, 24
+    counts, _, _ = np.histogram2d(
+        s.wi[ok, 2], np.mod(np.arctan2(s.wi[ok, 1], s.wi[ok, 0]), 2 * np.pi), bins=[nu, nphi], range=[[0, 1], [0, 2 * np.pi]]
+    )
+    expected = samples * cell_probabilities(lambda w: b.pdf(wo, w), nu, nphi, order=8)
+    # The rejected samples (reflections below the horizon) are the rest of the probability.
+    obs = np.append(counts.ravel(), (~ok).sum())
+    exp = np.append(expected.ravel(), samples - expected.sum())
+    assert chi2_pvalue(obs, exp) > 1e-4
+
+
+# ---- BSDFs.
+
+
+@pytest.mark.parametrize("scattering", ["single", "kulla_conty", "turquin", "walk"])
+def test_bsdf_sample_weights_match_eval_and_pdf(scattering):
+    rng = np.random.default_rng(6)
+    wo = hemisphere(300, rng)
+    for b in [
+        mf.Conductor(mf.Beckmann(0.4), eta=[0.2, 0.9, 1.1], k=[3.9, 2.4, 2.2], scattering=scattering),
+        mf.Dielectric(mf.GGX(0.3), 1.5, scattering=scattering),
+    ]:
+        s = b.sample(wo, rng.random((300, 3)))
+        ok = s.lobe > 0
+        assert ok.mean() > 0.8
+        if scattering == "walk":
+            # (f is the walk's estimate; pdf its MIS proxy: pdf matches.)
+            np.testing.assert_allclose(s.pdf[ok], b.pdf(wo[ok], s.wi[ok]), rtol=1e-12)
+            continue
+        np.testing.assert_allclose(s.pdf[ok], b.pdf(wo[ok], s.wi[ok]), rtol=1e-9)
+        np.testing.assert_allclose(s.f[ok], b.eval(wo[ok], s.wi[ok]), rtol=1e-9)
+
+
+def test_white_furnace():
+    rng = np.random.default_rng(8)
+    mu = np.array([0.2, 0.6, 0.95])
+    wo = np.stack([np.sqrt(1 - mu**2), 0 * mu, mu], axis=-1)
+    for scattering, tol in [("kulla_conty", 0.01), ("turquin", 0.01)]:
+        b = mf.Conductor(mf.GGX(0.8), scattering=scattering)
+        for w in wo:
+            s = b.sample(w, rng, n=200_000)
+            ok = s.lobe > 0
+            est = np.sum(s.f[ok] * s.wi[ok, 2] / s.pdf[ok]) / len(s.pdf)
+            assert abs(est - 1) < tol, (scattering, w, est)
+    # The walk with F = 1 mirrors: every walk leaves with weight 1.
+    a = mf.Beckmann(1.0).albedo(mu, walks=20_000)
+    np.testing.assert_allclose(a.total, 1.0, atol=1e-12)
+    assert a.reflect.shape == (3, 4)
+    # Its order 1 is the single-scattering albedo (quadrature), within the walk's error.
+    e1 = mf.single_scattering_albedo(mf.Beckmann(1.0), mu)
+    assert np.all(np.abs(a.reflect[:, 0] - e1) < 5 * a.reflect_stderr[:, 0] + 1e-4)
+    t = mf.AlbedoTable(mf.Beckmann(1.0))
+    np.testing.assert_allclose(t.e(mu), e1, rtol=2e-3)
+    assert 0 < t.e_avg < 1 and abs(t.lost_avg - (1 - t.e_avg)) < 1e-3
+    # Dielectric facets: reflect + transmit = 1 in total (no absorption).
+    d = mf.GGX(0.5).albedo(0.7, walks=20_000, eta=1.5)
+    assert abs(d.total - 1) < 1e-12 and d.transmit.sum() > 0.5
+
+
+def test_bsdf_errors():
+    g = mf.GGX(0.3)
+    for kwargs, match in [
+        (dict(eta=[1.0, 2.0], k=[1.0]), "channels"),
+        (dict(eta=[1.0, 2.0], k=[1.0, 2.0]), "1 or 3 channels"),
+        (dict(k=[1.0]), "k needs eta"),
+        (dict(eta=-1.0), "positive"),
+        (dict(masking="nope"), "masking"),
+        (dict(scattering="nope"), "scattering"),
+        (dict(scattering="walk", masking="separable"), "correlated"),
+    ]:
+        with pytest.raises(ValueError, match=match):
+            mf.Conductor(g, **kwargs)
+    with pytest.raises(ValueError, match="eta"):
+        mf.Dielectric(g, 1.0)
+    with pytest.raises(ValueError, match="transport"):
+        mf.Dielectric(g, 1.5, transport="x")
+    with pytest.raises(ValueError, match="last axis of length 3"):
+        mf.Dielectric(g, 1.5).sample([0, 0, 1.0], [0.5, 0.5])
+    with pytest.raises(ValueError, match="finite Lambda"):
+        mf.StudentT(0.3, 1.2).sample_visible([0, 0, 1.0], [0.5, 0.5])
+
+
+# ---- Ctrl-C.
+
+
+def test_ctrl_c_interrupts_a_long_call():
+    def interrupt(signum, frame):
+        raise KeyboardInterrupt
+
+    old = signal.signal(signal.SIGALRM, interrupt)
+    try:
+        signal.setitimer(signal.ITIMER_REAL, 0.3)
+        start = time.monotonic()
+        with pytest.raises(KeyboardInterrupt):
+            # ~10⁴ elements of 10⁵ walks: minutes of work.
+            mf.GGX(0.5).albedo(np.linspace(0.1, 1, 10_000), walks=100_000)
+        assert time.monotonic() - start < 3.0
+    finally:
+        signal.setitimer(signal.ITIMER_REAL, 0)
+        signal.signal(signal.SIGALRM, old)
