@@ -126,6 +126,21 @@ impl<'py> Args<'py> {
         self.shape(py, data, width, outs)
     }
 
+    /// The same over blocks of `block` elements: `f(start, out)` fills out (block × width
+    /// numbers, the last block shorter) for the elements from `start` (slice kernels).
+    pub fn run_blocks(
+        &self,
+        py: Python<'py>,
+        width: usize,
+        outs: &[usize],
+        block: usize,
+        parallel: usize,
+        f: impl Fn(usize, &mut [f64]) -> Result<(), ParamError> + Sync,
+    ) -> PyResult<Vec<PyObject>> {
+        let data = compute_blocks(py, self.n, width, block, parallel, f)?;
+        self.shape(py, data, width, outs)
+    }
+
     /// The outputs of `data` (n × width, row-major), as [`Args::run`] says.
     fn shape(
         &self,
@@ -170,9 +185,7 @@ impl<'py> Args<'py> {
     }
 }
 
-/// `f(i, out)` for i < n into an n × width block: chunks that grow while they take under
-/// 50 ms, the signals checked (Ctrl-C raises KeyboardInterrupt) after each, the GIL released
-/// meanwhile, rayon's pool from `parallel` elements a chunk. The first error stops the loop.
+/// `f(i, out)` for i < n into an n × width block: [`compute_blocks`] one element at a time.
 pub fn compute(
     py: Python<'_>,
     n: usize,
@@ -180,14 +193,33 @@ pub fn compute(
     parallel: usize,
     f: impl Fn(usize, &mut [f64]) -> Result<(), ParamError> + Sync,
 ) -> PyResult<Vec<f64>> {
+    compute_blocks(py, n, width, 1, parallel, |start, out| {
+        out.chunks_mut(width)
+            .enumerate()
+            .try_for_each(|(k, o)| f(start + k, o))
+    })
+}
+
+/// `f(start, out)` over blocks of `block` elements (the last one shorter) into an n × width
+/// array: chunks of blocks that grow while they take under 50 ms, the signals checked
+/// (Ctrl-C raises KeyboardInterrupt) after each chunk, the GIL released meanwhile, rayon's
+/// pool from `parallel` elements a chunk. The first error stops the loop.
+pub fn compute_blocks(
+    py: Python<'_>,
+    n: usize,
+    width: usize,
+    block: usize,
+    parallel: usize,
+    f: impl Fn(usize, &mut [f64]) -> Result<(), ParamError> + Sync,
+) -> PyResult<Vec<f64>> {
     let mut data = vec![0.0; n * width];
-    if width == 0 {
+    if width == 0 || n == 0 {
         return Ok(data);
     }
-    // (Cheap elements: a few thousand before the first check; expensive ones (walks,
+    // (Cheap elements: tens of thousands before the first check; expensive ones (walks,
     // quadratures: a small `parallel`) one per thread.)
     let mut chunk = if parallel >= 1024 {
-        4096
+        1 << 16
     } else {
         rayon::current_num_threads()
     };
@@ -196,17 +228,15 @@ pub fn compute(
         while start < n {
             let end = (start + chunk).min(n);
             let t = Instant::now();
-            let block = &mut data[start * width..end * width];
+            let rows = &mut data[start * width..end * width];
             let r: Result<(), ParamError> = if end - start >= parallel {
-                block
-                    .par_chunks_mut(width)
+                rows.par_chunks_mut(block * width)
                     .enumerate()
-                    .try_for_each(|(k, out)| f(start + k, out))
+                    .try_for_each(|(k, out)| f(start + k * block, out))
             } else {
-                block
-                    .chunks_mut(width)
+                rows.chunks_mut(block * width)
                     .enumerate()
-                    .try_for_each(|(k, out)| f(start + k, out))
+                    .try_for_each(|(k, out)| f(start + k * block, out))
             };
             r.map_err(value_error)?;
             start = end;

@@ -3,8 +3,11 @@
 //! ([`bsdf`]) and the albedo tables.
 //!
 //! Values are the library's exact f64 path ([`AnyNdf`] for the isotropic functions of a
-//! cosine, [`Exact`] for directions): a float64 result is bit for bit what the Rust call
-//! returns (tests/test_rust_equal.py compares with the `microfacet` command line).
+//! cosine, [`Exact`] for directions, samplers and BSDFs), except GGX's D, Λ and G1, which run
+//! the fast closed forms (`microfacet::fast::ggx`, the slice forms of `fast::batch`; within
+//! 3e-15 of the exact path) and for float32 input their f32 slice forms: a float64 result is
+//! bit for bit what the Rust call returns (tests/test_api.py compares with the `microfacet`
+//! command line).
 
 mod bsdf;
 mod engine;
@@ -12,9 +15,11 @@ mod engine;
 use engine::{float64, uniforms, value_error, Args};
 use microfacet::walk::{self, DielectricFacets, Heights, Microsurface, MirrorFacets};
 use microfacet::{AnyNdf, Distribution, Exact, Ndf, NdfKind, ParamError};
+use numpy::{PyArray1, PyArrayMethods};
 use pyo3::exceptions::PyValueError;
 use pyo3::prelude::*;
 use pyo3::types::{PyFloat, PyInt};
+use rayon::prelude::*;
 
 /// Above this many elements a cheap function's loop runs on rayon's pool.
 const PARALLEL: usize = 1 << 14;
@@ -46,6 +51,155 @@ fn apply<'py, const K: usize>(
         Ok(())
     })?;
     Ok(out.remove(0))
+}
+
+/// A quantity with a fast path in the library: its scalar function and slice form
+/// (`microfacet::fast`), used where they are the closed form itself (GGX's D, Λ and G1:
+/// within 2e-15 of the exact path, and the slice form bit-equal to the scalar one).
+#[derive(Clone, Copy)]
+struct Kernel {
+    scalar: fn(f64, f64) -> f64,
+    slice: fn(&[f64], &[f64], &mut [f64]),
+    slice32: fn(&[f32], &[f32], &mut [f32]),
+}
+
+/// Elements a slice kernel takes at a time (L1-resident, with the constant-α buffer).
+const BLOCK: usize = 4096;
+
+/// `kernel` over u (and an array α, validated, if given; else `alpha0`).
+fn apply_kernel<'py>(
+    py: Python<'py>,
+    kind: NdfKind,
+    u: &Bound<'py, PyAny>,
+    alpha: Option<&Bound<'py, PyAny>>,
+    alpha0: f64,
+    k: Kernel,
+) -> PyResult<PyObject> {
+    let check = |a: f64| AnyNdf::new(kind, a, None).map(|_| ());
+    let is_number =
+        |a: &Bound<'py, PyAny>| a.is_instance_of::<PyFloat>() || a.is_exact_instance_of::<PyInt>();
+    if is_number(u) && alpha.is_none_or(is_number) {
+        let a = match alpha {
+            Some(a) => a.extract::<f64>()?,
+            None => alpha0,
+        };
+        check(a).map_err(value_error)?;
+        return Ok(float64(py)?
+            .call1(((k.scalar)(u.extract::<f64>()?, a),))?
+            .unbind());
+    }
+    // float32 throughout: the f32 slice forms.
+    let np = engine::numpy(py)?;
+    let float32 = np.getattr("float32")?;
+    let ua = np.call_method1("asarray", (u,))?;
+    let aa = alpha
+        .map(|a| np.call_method1("asarray", (a,)))
+        .transpose()?;
+    if ua.getattr("dtype")?.eq(&float32)?
+        && aa
+            .as_ref()
+            .map_or(Ok(true), |a| a.getattr("dtype")?.eq(&float32))?
+    {
+        return kernel_f32(py, &ua, aa.as_ref(), alpha0, k, check);
+    }
+    let mut items = vec![(u, 0, "u")];
+    if let Some(a) = alpha {
+        items.push((a, 0, "alpha"));
+    }
+    let a = Args::new(py, &items)?;
+    let us = a.slice(0)?;
+    let alphas = if alpha.is_some() {
+        Some(a.slice(1)?)
+    } else {
+        None
+    };
+    let constant = vec![alpha0; BLOCK.min(us.len())];
+    let mut out = a.run_blocks(py, 1, &[0], BLOCK, PARALLEL, |start, out| {
+        let u = &us[start..start + out.len()];
+        let al = match alphas {
+            Some(al) => {
+                let al = &al[start..start + out.len()];
+                al.iter().try_for_each(|&a| check(a))?;
+                al
+            }
+            None => &constant[..out.len()],
+        };
+        (k.slice)(u, al, out);
+        Ok(())
+    })?;
+    Ok(out.remove(0))
+}
+
+/// `kernel` over float32 arrays in f32 (the library's f32 slice forms; α rounded to f32, or
+/// the float32 array `alpha`, broadcast with u and validated by `check`), without copies of
+/// contiguous input.
+fn kernel_f32<'py>(
+    py: Python<'py>,
+    u: &Bound<'py, PyAny>,
+    alpha: Option<&Bound<'py, PyAny>>,
+    alpha0: f64,
+    k: Kernel,
+    check: impl Fn(f64) -> Result<(), ParamError> + Sync,
+) -> PyResult<PyObject> {
+    let np = engine::numpy(py)?;
+    let flat = |a: &Bound<'py, PyAny>| -> PyResult<Bound<'py, PyArray1<f32>>> {
+        Ok(np
+            .call_method1("ascontiguousarray", (a,))?
+            .call_method1("reshape", (-1,))?
+            .downcast_into::<PyArray1<f32>>()?)
+    };
+    let (u, alpha, shape) = match alpha {
+        None => (flat(u)?, None, u.getattr("shape")?),
+        Some(a) => {
+            let b = np.call_method1("broadcast_arrays", (u, a))?;
+            let ub = b.get_item(0)?;
+            let shape = ub.getattr("shape")?;
+            (flat(&ub)?, Some(flat(&b.get_item(1)?)?), shape)
+        }
+    };
+    let (ro, ra) = (u.readonly(), alpha.as_ref().map(|a| a.readonly()));
+    let us = ro.as_slice()?;
+    let als = ra.as_ref().map(|r| r.as_slice()).transpose()?;
+    let mut out = vec![0f32; us.len()];
+    let constant = [alpha0 as f32; BLOCK];
+    let run = |start: usize, o: &mut [f32]| -> Result<(), ParamError> {
+        let n = o.len();
+        let al = match als {
+            Some(al) => {
+                let al = &al[start..start + n];
+                al.iter().try_for_each(|&a| check(f64::from(a)))?;
+                al
+            }
+            None => &constant[..n],
+        };
+        (k.slice32)(&us[start..start + n], al, o);
+        Ok(())
+    };
+    // (Chunks of 2^20 elements, well under a millisecond, with Ctrl-C between.)
+    const CHUNK: usize = 1 << 20;
+    py.allow_threads(|| {
+        for (c, chunk) in out.chunks_mut(CHUNK).enumerate() {
+            if chunk.len() >= PARALLEL {
+                chunk
+                    .par_chunks_mut(BLOCK)
+                    .enumerate()
+                    .try_for_each(|(b, o)| run(c * CHUNK + b * BLOCK, o))
+            } else {
+                run(c * CHUNK, chunk)
+            }
+            .map_err(value_error)?;
+            Python::with_gil(|py| py.check_signals())?;
+        }
+        Ok::<_, PyErr>(())
+    })?;
+    let mut result = PyArray1::from_vec(py, out)
+        .into_any()
+        .call_method1("reshape", (shape,))?;
+    if result.getattr("ndim")?.extract::<usize>()? == 0 {
+        // (A NumPy scalar, as a ufunc gives for scalar input.)
+        result = result.get_item(())?;
+    }
+    Ok(result.unbind())
 }
 
 /// Direction arguments (core length 3, or 2 for uniforms) to `width` outputs per element.
@@ -82,6 +236,14 @@ fn named<'py>(py: Python<'py>, name: &str, fields: Vec<PyObject>) -> PyResult<Py
     Ok(cls.call1(pyo3::types::PyTuple::new(py, fields)?)?.unbind())
 }
 
+/// The quantities with fast paths.
+#[derive(Clone, Copy)]
+enum Q {
+    D,
+    Lambda,
+    G1,
+}
+
 /// A microfacet NDF of the library (the base class of ``GGX``, ``Beckmann``, ``GTR``, ...).
 ///
 /// Conventions (the crate's): u = cos θ of the microfacet normal (D) or of a direction (Λ, σ,
@@ -90,7 +252,10 @@ fn named<'py>(py: Python<'py>, name: &str, fields: Vec<PyObject>) -> PyResult<Py
 /// that the projected area of the microsurface is 1: ∫ D(m) cos θm dm = 1; D(u) = 0 for
 /// u ≤ 0. Values are the library's exact f64 path: closed forms to ≤ 1e-13 relative,
 /// numerical quantities (the family's Λ by quadrature, Bessel-K, the generalised
-/// exponential) to ≤ 1e-10, measured against mpmath (the crate's tests and README).
+/// exponential) to ≤ 1e-10, measured against mpmath (the crate's tests and README). float32
+/// input gives the float64 value rounded once, except GGX's D, Λ and G1: those run the
+/// library's fast slice forms, in f64 within 3e-15 of the exact path and in f32 in f32
+/// arithmetic (within 6e-7).
 ///
 /// Every class takes ``alpha`` and an optional ``alpha_y`` (anisotropic by stretching; GTR
 /// only at γ = 2). The functions of a cosine (``d``, ``lambda_``, ...) are the isotropic
@@ -129,6 +294,31 @@ impl NDF {
         })
     }
 
+    /// The fast path of quantity q, where it is the closed form (GGX).
+    fn kernel(&self, q: Q) -> Option<Kernel> {
+        use microfacet::fast::{batch, ggx};
+        if self.ndf.kind() != NdfKind::Ggx {
+            return None;
+        }
+        Some(match q {
+            Q::D => Kernel {
+                scalar: ggx::d::<f64>,
+                slice: batch::ggx_d,
+                slice32: batch::ggx_d_f32,
+            },
+            Q::Lambda => Kernel {
+                scalar: ggx::lambda::<f64>,
+                slice: batch::ggx_lambda,
+                slice32: batch::ggx_lambda_f32,
+            },
+            Q::G1 => Kernel {
+                scalar: ggx::g1::<f64>,
+                slice: batch::ggx_g1,
+                slice32: batch::ggx_g1_f32,
+            },
+        })
+    }
+
     fn exact(&self) -> PyResult<Exact> {
         self.exact.map_err(value_error)
     }
@@ -139,8 +329,14 @@ impl NDF {
         py: Python<'py>,
         args: [&Bound<'py, PyAny>; K],
         alpha: Option<&Bound<'py, PyAny>>,
+        kernel: Option<Kernel>,
         f: impl Fn(&AnyNdf, [f64; K]) -> f64 + Sync,
     ) -> PyResult<PyObject> {
+        if let (Some(k), [u]) = (kernel, &args[..]) {
+            if alpha.is_some() || self.alpha_y == self.ndf.alpha() {
+                return apply_kernel(py, self.ndf.kind(), u, alpha, self.ndf.alpha(), k);
+            }
+        }
         match alpha {
             None => {
                 if self.alpha_y != self.ndf.alpha() {
@@ -220,7 +416,7 @@ impl NDF {
         u: &Bound<'_, PyAny>,
         alpha: Option<&Bound<'_, PyAny>>,
     ) -> PyResult<PyObject> {
-        self.iso(py, [u], alpha, |n, [u]| n.d(u))
+        self.iso(py, [u], alpha, self.kernel(Q::D), |n, [u]| n.d(u))
     }
 
     /// Smith's Λ(u) of a direction at u = cos θ (Λ(|u|) for u < 0; +∞ at u = 0; 0 at 1).
@@ -232,7 +428,7 @@ impl NDF {
         u: &Bound<'_, PyAny>,
         alpha: Option<&Bound<'_, PyAny>>,
     ) -> PyResult<PyObject> {
-        self.iso(py, [u], alpha, |n, [u]| n.lambda(u))
+        self.iso(py, [u], alpha, self.kernel(Q::Lambda), |n, [u]| n.lambda(u))
     }
 
     /// The projected area σ(u) = ∫ max(0, ω·m) D(m) dm of a direction at signed u = cos θ
@@ -245,7 +441,7 @@ impl NDF {
         u: &Bound<'_, PyAny>,
         alpha: Option<&Bound<'_, PyAny>>,
     ) -> PyResult<PyObject> {
-        self.iso(py, [u], alpha, |n, [u]| n.sigma(u))
+        self.iso(py, [u], alpha, None, |n, [u]| n.sigma(u))
     }
 
     /// Smith's masking G1(u) = 1/(1 + Λ(|u|)). ``alpha`` as for ``d``.
@@ -256,7 +452,7 @@ impl NDF {
         u: &Bound<'_, PyAny>,
         alpha: Option<&Bound<'_, PyAny>>,
     ) -> PyResult<PyObject> {
-        self.iso(py, [u], alpha, |n, [u]| n.g1(u))
+        self.iso(py, [u], alpha, self.kernel(Q::G1), |n, [u]| n.g1(u))
     }
 
     /// Height-correlated masking-shadowing G2(u_o, u_i) = 1/(1 + Λ(u_o) + Λ(u_i)) (Heitz
@@ -269,7 +465,7 @@ impl NDF {
         u_i: &Bound<'_, PyAny>,
         alpha: Option<&Bound<'_, PyAny>>,
     ) -> PyResult<PyObject> {
-        self.iso(py, [u_o, u_i], alpha, |n, [a, b]| n.g2(a, b))
+        self.iso(py, [u_o, u_i], alpha, None, |n, [a, b]| n.g2(a, b))
     }
 
     /// Separable masking-shadowing G1(u_o) G1(u_i), broadcast over both arguments.
@@ -281,7 +477,9 @@ impl NDF {
         u_i: &Bound<'_, PyAny>,
         alpha: Option<&Bound<'_, PyAny>>,
     ) -> PyResult<PyObject> {
-        self.iso(py, [u_o, u_i], alpha, |n, [a, b]| n.g2_separable(a, b))
+        self.iso(py, [u_o, u_i], alpha, None, |n, [a, b]| {
+            n.g2_separable(a, b)
+        })
     }
 
     /// The slope density P22(p, q) = D(u) u⁴ (u = 1/√(1 + p² + q²)), broadcast over p and q.
@@ -293,7 +491,7 @@ impl NDF {
         q: &Bound<'_, PyAny>,
         alpha: Option<&Bound<'_, PyAny>>,
     ) -> PyResult<PyObject> {
-        self.iso(py, [p, q], alpha, |n, [p, q]| n.p22(p, q))
+        self.iso(py, [p, q], alpha, None, |n, [p, q]| n.p22(p, q))
     }
 
     /// The marginal slope density P2(p) = ∫ P22(p, q) dq.
@@ -304,7 +502,7 @@ impl NDF {
         p: &Bound<'_, PyAny>,
         alpha: Option<&Bound<'_, PyAny>>,
     ) -> PyResult<PyObject> {
-        self.iso(py, [p], alpha, |n, [p]| n.p2(p))
+        self.iso(py, [p], alpha, None, |n, [p]| n.p2(p))
     }
 
     // ---- Directions: the anisotropic material (Rust: microfacet::Exact, the Distribution
@@ -591,6 +789,75 @@ shaped! {
     GenExponential => GenExponential, gamma;
 }
 
+/// The Rust slice forms' own speed in this process, for the benchmark script
+/// (benchmark.py): GGX `quantity` ('d' or 'lambda') over n uniform cosines at α in f64 or
+/// (`f32`) f32, into a preallocated output, on one thread and on rayon's pool in pieces of
+/// 16 384; median ns per element of `reps`.
+#[pyfunction]
+fn _rust_slice_ns(
+    py: Python<'_>,
+    quantity: &str,
+    n: usize,
+    alpha: f64,
+    reps: usize,
+    f32: bool,
+) -> PyResult<(f64, f64)> {
+    use microfacet::fast::batch;
+    let (f, g): (
+        fn(&[f64], &[f64], &mut [f64]),
+        fn(&[f32], &[f32], &mut [f32]),
+    ) = match quantity {
+        "d" => (batch::ggx_d, batch::ggx_d_f32),
+        "lambda" => (batch::ggx_lambda, batch::ggx_lambda_f32),
+        _ => return Err(PyValueError::new_err("quantity: 'd' or 'lambda'")),
+    };
+    fn median(reps: usize, n: usize, mut run: impl FnMut()) -> f64 {
+        let mut t: Vec<f64> = (0..reps.max(1))
+            .map(|_| {
+                let start = std::time::Instant::now();
+                run();
+                start.elapsed().as_secs_f64() * 1e9 / n as f64
+            })
+            .collect();
+        t.sort_by(f64::total_cmp);
+        t[t.len() / 2]
+    }
+    fn both<T: Copy + Send + Sync + Default>(
+        u: &[T],
+        alpha: T,
+        reps: usize,
+        f: fn(&[T], &[T], &mut [T]),
+    ) -> (f64, f64) {
+        let n = u.len();
+        let a = vec![alpha; n];
+        let mut out = vec![T::default(); n];
+        let one = median(reps, n, || f(u, &a, &mut out));
+        let par = median(reps, n, || {
+            out.par_chunks_mut(1 << 14)
+                .zip(u.par_chunks(1 << 14).zip(a.par_chunks(1 << 14)))
+                .for_each(|(o, (u, a))| f(u, a, o))
+        });
+        (one, par)
+    }
+    Ok(py.allow_threads(|| {
+        let mut s = 0x9E37_79B9_7F4A_7C15u64;
+        let u: Vec<f64> = (0..n)
+            .map(|_| {
+                s = s
+                    .wrapping_mul(6_364_136_223_846_793_005)
+                    .wrapping_add(1_442_695_040_888_963_407);
+                ((s >> 11) as f64 + 0.5) / (1u64 << 53) as f64
+            })
+            .collect();
+        if f32 {
+            let u: Vec<f32> = u.iter().map(|&x| x as f32).collect();
+            both(&u, alpha as f32, reps, g)
+        } else {
+            both(&u, alpha, reps, f)
+        }
+    }))
+}
+
 #[pymodule]
 fn _microfacet(m: &Bound<'_, PyModule>) -> PyResult<()> {
     m.add_class::<NDF>()?;
@@ -606,5 +873,6 @@ fn _microfacet(m: &Bound<'_, PyModule>) -> PyResult<()> {
     m.add_class::<BesselK>()?;
     m.add_class::<GenExponential>()?;
     bsdf::register(m)?;
+    m.add_function(wrap_pyfunction!(_rust_slice_ns, m)?)?;
     Ok(())
 }

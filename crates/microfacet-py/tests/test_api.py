@@ -63,7 +63,12 @@ def test_cosine_functions_equal_the_command_line():
             lines = [dict(ndf=name, alpha=n.alpha, quantity=q, u=u, **shape) for u in us]
             want = [r["value"] for r in cli("eval", lines)]
             got = method(np.array(us))
-            assert got.tolist() == want, (name, q)
+            if name == "ggx" and q != "sigma":
+                # GGX's D, Λ and G1 run the fast closed forms (fast::ggx, fast::batch: their
+                # own rounding, within a few ulps of the exact path the CLI evaluates).
+                np.testing.assert_allclose(got, want, rtol=3e-15, atol=0)
+            else:
+                assert got.tolist() == want, (name, q)
 
 
 def test_bsdfs_equal_the_command_line():
@@ -332,3 +337,12 @@ def test_ctrl_c_interrupts_a_long_call():
     finally:
         signal.setitimer(signal.ITIMER_REAL, 0)
         signal.signal(signal.SIGALRM, old)
+
+
+def test_readme_python_snippets_run():
+    with open(os.path.join(ROOT, "README.md")) as fh:
+        text = fh.read()
+    blocks = [b.split("```", 1)[0] for b in text.split("```python\n")[1:]]
+    assert blocks
+    for b in blocks:
+        exec(compile(b, "README.md", "exec"), {})

@@ -617,6 +617,64 @@ fn arith_matches_libm() {
     assert_eq!(arith::ln_1p(0.0), 0.0);
 }
 
+/// The f32 GGX slice forms are the f32 scalar paths bit for bit (the same formula in the same
+/// order; only the vector width differs), on every instruction set, edges included.
+#[test]
+fn f32_slices_are_the_f32_scalar_paths() {
+    use microfacet::fast::batch;
+    let mut us: Vec<f32> = vec![
+        0.0,
+        -0.0,
+        1.0,
+        1.0 + f32::EPSILON,
+        1e-38,
+        1e-45,
+        1e-31,
+        f32::NAN,
+        -0.5,
+        2.0,
+    ];
+    let mut alphas: Vec<f32> = vec![0.3; us.len()];
+    let mut s = 0x2545_f491_4f6c_dd1du64;
+    for _ in 0..10_007 {
+        s ^= s << 13;
+        s ^= s >> 7;
+        s ^= s << 17;
+        let r = (s >> 40) as f32 / (1u64 << 24) as f32;
+        us.push(r * r * r);
+        alphas.push(1e-3 + 3.0 * ((s >> 3) % 1000) as f32 / 1000.0);
+    }
+    type Slice = fn(&[f32], &[f32], &mut [f32]);
+    type Scalar = fn(f32, f32) -> f32;
+    let cases: [(&str, Scalar, Slice); 3] = [
+        ("GGX D", ggx::d, batch::ggx_d_f32),
+        ("GGX Λ", ggx::lambda, batch::ggx_lambda_f32),
+        ("GGX G1", ggx::g1, batch::ggx_g1_f32),
+    ];
+    let levels: Vec<_> = [batch::Simd::Generic, batch::Simd::Avx2, batch::Simd::Avx512]
+        .into_iter()
+        .filter(|&l| l <= batch::detected_simd())
+        .collect();
+    let mut out = vec![0.0f32; us.len()];
+    for (name, scalar, slice) in cases {
+        for &level in &levels {
+            batch::cap_simd(Some(level));
+            slice(&us, &alphas, &mut out);
+            for k in 0..us.len() {
+                let want = scalar(us[k], alphas[k]);
+                assert!(
+                    out[k].to_bits() == want.to_bits() || out[k].is_nan() && want.is_nan(),
+                    "{name} {level:?} at u = {:e}, α = {}: {:e} vs scalar {want:e}",
+                    us[k],
+                    alphas[k],
+                    out[k]
+                );
+            }
+        }
+        batch::cap_simd(None);
+    }
+}
+
 /// The slice functions give the scalar fast paths' values (to 4 ulps: the vectorised
 /// exponential), for every u including 0, 1 and NaN.
 #[test]

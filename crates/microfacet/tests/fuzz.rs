@@ -1186,6 +1186,59 @@ fn slices_equal_scalars() {
     fails.finish("slices_equal_scalars");
 }
 
+/// The f32 GGX slices against the f32 scalar paths: the same bits (one formula), no panic,
+/// for the contract's f32 cosines (edges, subnormals, NaN) at every instruction set.
+#[test]
+fn f32_slices_equal_scalars() {
+    use fast::batch;
+    let mut r = Rng::new(13);
+    let mut fails = Failures::default();
+    let levels: Vec<batch::Simd> = [batch::Simd::Generic, batch::Simd::Avx2, batch::Simd::Avx512]
+        .into_iter()
+        .filter(|&l| l <= batch::detected_simd())
+        .collect();
+    type Pair = (
+        fn(&[f32], &[f32], &mut [f32]),
+        fn(f32, f32) -> f32,
+        &'static str,
+    );
+    let cases: [Pair; 3] = [
+        (batch::ggx_d_f32, fast::ggx::d::<f32>, "ggx_d_f32"),
+        (
+            batch::ggx_lambda_f32,
+            fast::ggx::lambda::<f32>,
+            "ggx_lambda_f32",
+        ),
+        (batch::ggx_g1_f32, fast::ggx::g1::<f32>, "ggx_g1_f32"),
+    ];
+    for _ in 0..10 * scale() {
+        let n = 1 + r.below(700);
+        let u: Vec<f32> = (0..n).map(|_| cosine32(&mut r)).collect();
+        let a: Vec<f32> = (0..n).map(|_| alpha(&mut r) as f32).collect();
+        for &level in &levels {
+            batch::cap_simd(Some(level));
+            let mut out = vec![0.0f32; n];
+            for (slice, scalar, name) in cases {
+                no_panic(name, (level, n), || slice(&u, &a, &mut out));
+                for k in 0..n {
+                    let want = scalar(u[k], a[k]);
+                    let same =
+                        out[k].to_bits() == want.to_bits() || out[k].is_nan() && want.is_nan();
+                    fails.check(same, || {
+                        format!(
+                            "{name} {level:?}: u={:e} α={:e}: {} vs scalar {want}",
+                            u[k], a[k], out[k]
+                        )
+                    });
+                }
+            }
+            evals(3 * n as u64);
+        }
+        batch::cap_simd(None);
+    }
+    fails.finish("f32_slices_equal_scalars");
+}
+
 /// Slice and scalar values agree: both NaN, equal (infinities included), or within 1e-12
 /// relative (1e-300 absolute).
 fn agree(x: f64, want: f64) -> bool {

@@ -129,12 +129,12 @@ macro_rules! dispatched {
 /// scatters on contiguous data; the bench's per-instruction-set table checks that the
 /// dispatched build is never slower than a narrower one.)
 #[inline(always)]
-fn chunks(
-    u: &[f64],
-    alpha: &[f64],
-    out: &mut [f64],
-    kernel: impl Fn(f64, f64) -> (f64, bool),
-    scalar: impl Fn(f64, f64) -> f64,
+fn chunks<F: Copy>(
+    u: &[F],
+    alpha: &[F],
+    out: &mut [F],
+    kernel: impl Fn(F, F) -> (F, bool),
+    scalar: impl Fn(F, F) -> F,
 ) {
     let n = u.len();
     assert!(alpha.len() == n && out.len() >= n, "slice lengths differ");
@@ -159,50 +159,95 @@ fn chunks(
     }
 }
 
-dispatched! {
-/// GGX D.
-pub fn ggx_d(u: &[f64], alpha: &[f64], out: &mut [f64]) {
+/// GGX D over slices of F (the f64 and f32 entry points below share it).
+#[inline(always)]
+fn ggx_d_of<F: Real>(u: &[F], alpha: &[F], out: &mut [F]) {
     chunks(
         u,
         alpha,
         out,
         |u, a| {
             let a2 = a * a;
-            let t = (1.0 - u) * (1.0 + u) + u * u * a2;
-            let d = a2 / (PI * t * t);
+            let t = (F::ONE - u) * (F::ONE + u) + u * u * a2;
+            let d = a2 / (F::PI * t * t);
             // u > 1 (1 + 2ε): the scalar path, which evaluates at 1.
-            (if u <= 0.0 { 0.0 } else { d }, u > 1.0)
+            (if u <= F::ZERO { F::ZERO } else { d }, u > F::ONE)
         },
         ggx::d,
     );
+}
+
+/// GGX Λ over slices of F.
+#[inline(always)]
+fn ggx_lambda_of<F: Real>(u: &[F], alpha: &[F], out: &mut [F]) {
+    chunks(
+        u,
+        alpha,
+        out,
+        // Lanes with u below ggx::lambda_tiny_below or above 1 (and NaN): the scalar path.
+        |u, a| {
+            (
+                ggx::lambda_kernel(u, a),
+                !(u >= ggx::lambda_tiny_below() && u <= F::ONE),
+            )
+        },
+        ggx::lambda,
+    );
+}
+
+/// GGX G1 over slices of F.
+#[inline(always)]
+fn ggx_g1_of<F: Real>(u: &[F], alpha: &[F], out: &mut [F]) {
+    // Lanes with u outside [0, 1] (and NaN): the scalar path.
+    chunks(
+        u,
+        alpha,
+        out,
+        |u, a| (ggx::g1_kernel(u, a), !(u >= F::ZERO && u <= F::ONE)),
+        ggx::g1,
+    );
+}
+
+dispatched! {
+/// GGX D.
+pub fn ggx_d(u: &[f64], alpha: &[f64], out: &mut [f64]) {
+    ggx_d_of(u, alpha, out);
 }
 }
 
 dispatched! {
 /// GGX Λ.
 pub fn ggx_lambda(u: &[f64], alpha: &[f64], out: &mut [f64]) {
-    chunks(
-        u,
-        alpha,
-        out,
-        // Lanes with u below ggx::lambda_tiny_below or above 1 (and NaN): the scalar path.
-        |u, a| (ggx::lambda_kernel(u, a), !(u >= ggx::lambda_tiny_below() && u <= 1.0)),
-        ggx::lambda,
-    );
+    ggx_lambda_of(u, alpha, out);
 }
 }
 
 dispatched! {
 /// GGX G1.
 pub fn ggx_g1(u: &[f64], alpha: &[f64], out: &mut [f64]) {
-    // Lanes with u outside [0, 1] (and NaN): the scalar path.
-    chunks(
-        u,
-        alpha,
-        out,
-        |u, a| (ggx::g1_kernel(u, a), !(0.0..=1.0).contains(&u)),
-        ggx::g1,
-    );
+    ggx_g1_of(u, alpha, out);
+}
+}
+
+dispatched! {
+/// GGX D in f32: the f32 scalar path's formula in f32 arithmetic (its accuracy,
+/// [`crate::fast`]), twice the lanes of [`ggx_d`].
+pub fn ggx_d_f32(u: &[f32], alpha: &[f32], out: &mut [f32]) {
+    ggx_d_of(u, alpha, out);
+}
+}
+
+dispatched! {
+/// GGX Λ in f32 (as [`ggx_d_f32`]).
+pub fn ggx_lambda_f32(u: &[f32], alpha: &[f32], out: &mut [f32]) {
+    ggx_lambda_of(u, alpha, out);
+}
+}
+
+dispatched! {
+/// GGX G1 in f32 (as [`ggx_d_f32`]).
+pub fn ggx_g1_f32(u: &[f32], alpha: &[f32], out: &mut [f32]) {
+    ggx_g1_of(u, alpha, out);
 }
 }
 
