@@ -789,6 +789,9 @@ shaped! {
     GenExponential => GenExponential, gamma;
 }
 
+/// A slice form: (u, α, out).
+type Slice<T> = fn(&[T], &[T], &mut [T]);
+
 /// The Rust slice forms' own speed in this process, for the benchmark script
 /// (benchmark.py): GGX `quantity` ('d' or 'lambda') over n uniform cosines at α in f64 or
 /// (`f32`) f32, into a preallocated output, on one thread and on rayon's pool in pieces of
@@ -803,10 +806,7 @@ fn _rust_slice_ns(
     f32: bool,
 ) -> PyResult<(f64, f64)> {
     use microfacet::fast::batch;
-    let (f, g): (
-        fn(&[f64], &[f64], &mut [f64]),
-        fn(&[f32], &[f32], &mut [f32]),
-    ) = match quantity {
+    let (f, g): (Slice<f64>, Slice<f32>) = match quantity {
         "d" => (batch::ggx_d, batch::ggx_d_f32),
         "lambda" => (batch::ggx_lambda, batch::ggx_lambda_f32),
         _ => return Err(PyValueError::new_err("quantity: 'd' or 'lambda'")),
