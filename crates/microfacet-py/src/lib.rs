@@ -185,7 +185,10 @@ fn kernel_f32<'py>(
                     .enumerate()
                     .try_for_each(|(b, o)| run(c * CHUNK + b * BLOCK, o))
             } else {
-                run(c * CHUNK, chunk)
+                chunk
+                    .chunks_mut(BLOCK)
+                    .enumerate()
+                    .try_for_each(|(b, o)| run(c * CHUNK + b * BLOCK, o))
             }
             .map_err(value_error)?;
             Python::with_gil(|py| py.check_signals())?;

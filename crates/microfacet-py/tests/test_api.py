@@ -11,6 +11,7 @@ import json
 import os
 import signal
 import subprocess
+import sys
 import time
 
 import numpy as np
@@ -346,3 +347,30 @@ def test_readme_python_snippets_run():
     assert blocks
     for b in blocks:
         exec(compile(b, "README.md", "exec"), {})
+
+
+@pytest.mark.parametrize("name", ["ndf_curves", "sample_histogram", "albedo_orders"])
+def test_examples_run(name, tmp_path):
+    if "MICROFACET_EXAMPLES" not in os.environ:
+        pytest.importorskip("matplotlib")
+    path = os.path.join(ROOT, "examples", "python", f"{name}.py")
+    out = tmp_path / f"{name}.png"
+    subprocess.run([sys.executable, path, str(out)], check=True, capture_output=True)
+    assert out.stat().st_size > 10_000
+
+
+def test_fast_paths_at_every_length():
+    # Lengths around the kernels' blocks (4 096), the parallel threshold (16 384) and the
+    # chunks (2^20 for float32): each element as its own call.
+    g = mf.GGX(0.3)
+    rng = np.random.default_rng(11)
+    for n in [1, 4095, 4096, 4097, 10_000, 16_383, 16_384, 16_385, 70_001, (1 << 20) + 3]:
+        u = rng.random(n)
+        for dtype in (np.float64, np.float32):
+            x = u.astype(dtype)
+            for f in (g.d, g.lambda_, g.g1):
+                got = f(x)
+                idx = rng.integers(0, n, 50)
+                assert np.array_equal(got[idx], np.array([f(x[i]) for i in idx])), (n, dtype, f.__name__)
+                a = np.full(n, 0.3, dtype=dtype)
+                assert np.array_equal(f(x, alpha=a), got), (n, dtype)
