@@ -678,7 +678,9 @@ fn family_furnace_and_order_one() {
     ] {
         // (A walk through the exact path, visible normals by the posterior stream sampler,
         // costs 1 µs (Student-T, K0) to 50 µs (Bessel-K: Λ integrates K_ν); the E₁ quadrature
-        // 0.01–4 s here, 210 s for Bessel-K a = 0.3, whose D has a pole: not in this test.)
+        // 0.01–4 s here. K0, Ei and Erfc have a pole of D at the normal: their E₁ is the
+        // integral over the normal, which this test checks against the walk; Bessel-K a ≤ 1
+        // takes the same path, 15 s at a = 0.3: not here.)
         let d = Exact::new(kind, 0.6, 0.3, shape).unwrap();
         let w = wo(0.4);
         let e1 = single_scattering_albedo(&d, w);
