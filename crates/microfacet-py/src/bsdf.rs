@@ -1,7 +1,7 @@
 //! The BSDFs (`Conductor`, `Dielectric`) with their scattering model (single scattering,
 //! Kulla–Conty or Turquin energy compensation, the random walk), and the albedo tables.
 
-use crate::{apply_vec, named, v3, NDF, PARALLEL};
+use crate::{apply_vec, map_vec, named, v3, wo_of, NDF};
 use microfacet::bsdf::{self, Bsdf, Lobe, Masking, Transport};
 use microfacet::compensate::{AlbedoTable as Table, Compensated, CompensatedDielectric, Scheme};
 use microfacet::fresnel::{self, Fresnel};
@@ -192,17 +192,9 @@ impl PyBsdf {
         wi: &Bound<'_, PyAny>,
     ) -> PyResult<PyObject> {
         let b = &self.inner;
-        let mut o = apply_vec(
-            py,
-            &[(wo, 3, "wo"), (wi, 3, "wi")],
-            &[0],
-            PARALLEL,
-            |_, a, o| {
-                o[0] = b.pdf(v3(a[0]), v3(a[1]));
-                Ok(())
-            },
-        )?;
-        Ok(o.remove(0))
+        map_vec(py, &[(wo, 3, "wo"), (wi, 3, "wi")], |a| {
+            b.pdf(v3(a[0]), v3(a[1]))
+        })
     }
 
     /// Directions wi from wo: ``sample(wo, u)`` with uniforms u of shape (..., 3) (the lobe
@@ -382,11 +374,7 @@ impl AlbedoTable {
     /// E(μ), cubic in √μ between the nodes, vectorised over μ.
     fn e(&self, py: Python<'_>, mu: &Bound<'_, PyAny>) -> PyResult<PyObject> {
         let t = &self.table;
-        let mut o = apply_vec(py, &[(mu, 0, "mu")], &[0], PARALLEL, |_, a, o| {
-            o[0] = t.e(a[0][0]);
-            Ok(())
-        })?;
-        Ok(o.remove(0))
+        map_vec(py, &[(mu, 0, "mu")], |a| t.e(a[0][0]))
     }
 
     /// E_avg = 2∫E(μ)μ dμ.
@@ -418,9 +406,7 @@ fn single_scattering_albedo(
     let zero = pyo3::types::PyFloat::new(py, 0.0).into_any();
     let phi = phi.unwrap_or(&zero);
     let mut o = apply_vec(py, &[(mu, 0, "mu"), (phi, 0, "phi")], &[0], 2, |_, a, o| {
-        let (mu, phi) = (a[0][0], a[1][0]);
-        let st = ((1.0 - mu) * (1.0 + mu)).max(0.0).sqrt();
-        o[0] = microfacet::walk::single_scattering_albedo(&d, [st * phi.cos(), st * phi.sin(), mu]);
+        o[0] = microfacet::walk::single_scattering_albedo(&d, wo_of(a[0][0], a[1][0]));
         Ok(())
     })?;
     Ok(o.remove(0))

@@ -229,6 +229,41 @@ fn apply_vec<'py>(
     })
 }
 
+/// One number per element of direction arguments (cheap: rayon from [`PARALLEL`]).
+fn map_vec<'py>(
+    py: Python<'py>,
+    items: &[(&Bound<'py, PyAny>, usize, &str)],
+    f: impl Fn(&[&[f64]]) -> f64 + Sync,
+) -> PyResult<PyObject> {
+    let mut o = apply_vec(py, items, &[0], PARALLEL, |_, a, o| {
+        o[0] = f(a);
+        Ok(())
+    })?;
+    Ok(o.remove(0))
+}
+
+/// ``Sample(wm, pdf)`` of a sampler per element (parallel from 256 elements: the exact
+/// samplers of the family invert quadratures).
+fn samples<'py>(
+    py: Python<'py>,
+    items: &[(&Bound<'py, PyAny>, usize, &str)],
+    f: impl Fn(&[&[f64]]) -> microfacet::Sample<f64> + Sync,
+) -> PyResult<PyObject> {
+    let o = apply_vec(py, items, &[3, 0], 256, |_, a, o| {
+        let s = f(a);
+        o[..3].copy_from_slice(&s.wm);
+        o[3] = s.pdf;
+        Ok(())
+    })?;
+    named(py, "Sample", o)
+}
+
+/// The direction at cos θ = mu and azimuth phi (mu outside [−1, 1] as its nearest end).
+fn wo_of(mu: f64, phi: f64) -> [f64; 3] {
+    let st = ((1.0 - mu) * (1.0 + mu)).max(0.0).sqrt();
+    [st * phi.cos(), st * phi.sin(), mu]
+}
+
 fn v3(s: &[f64]) -> [f64; 3] {
     [s[0], s[1], s[2]]
 }
@@ -514,42 +549,26 @@ impl NDF {
     /// D(wm) of unit normals wm (shape (..., 3)); 0 for wm.z ≤ 0.
     fn d_wm(&self, py: Python<'_>, wm: &Bound<'_, PyAny>) -> PyResult<PyObject> {
         let e = self.exact()?;
-        let mut o = apply_vec(py, &[(wm, 3, "wm")], &[0], PARALLEL, |_, a, o| {
-            o[0] = e.d(v3(a[0]));
-            Ok(())
-        })?;
-        Ok(o.remove(0))
+        map_vec(py, &[(wm, 3, "wm")], |a| e.d(v3(a[0])))
     }
 
     /// Smith Λ(w) of directions w (the side w comes from; +∞ on the horizon).
     fn lambda_w(&self, py: Python<'_>, w: &Bound<'_, PyAny>) -> PyResult<PyObject> {
         let e = self.exact()?;
-        let mut o = apply_vec(py, &[(w, 3, "w")], &[0], PARALLEL, |_, a, o| {
-            o[0] = e.lambda(v3(a[0]));
-            Ok(())
-        })?;
-        Ok(o.remove(0))
+        map_vec(py, &[(w, 3, "w")], |a| e.lambda(v3(a[0])))
     }
 
     /// G1(w) = 1/(1 + Λ(w)).
     fn g1_w(&self, py: Python<'_>, w: &Bound<'_, PyAny>) -> PyResult<PyObject> {
         let e = self.exact()?;
-        let mut o = apply_vec(py, &[(w, 3, "w")], &[0], PARALLEL, |_, a, o| {
-            o[0] = e.g1(v3(a[0]));
-            Ok(())
-        })?;
-        Ok(o.remove(0))
+        map_vec(py, &[(w, 3, "w")], |a| e.g1(v3(a[0])))
     }
 
     /// The projected area σ(w) = |w.z|(1 + Λ(w)) (finite on the horizon), w mirrored to
     /// the upper hemisphere.
     fn sigma_w(&self, py: Python<'_>, w: &Bound<'_, PyAny>) -> PyResult<PyObject> {
         let e = self.exact()?;
-        let mut o = apply_vec(py, &[(w, 3, "w")], &[0], PARALLEL, |_, a, o| {
-            o[0] = e.sigma(v3(a[0]));
-            Ok(())
-        })?;
-        Ok(o.remove(0))
+        map_vec(py, &[(w, 3, "w")], |a| e.sigma(v3(a[0])))
     }
 
     /// Height-correlated G2(wo, wi) = 1/(1 + Λ(wo) + Λ(wi)); ``separable=True``:
@@ -563,22 +582,14 @@ impl NDF {
         separable: bool,
     ) -> PyResult<PyObject> {
         let e = self.exact()?;
-        let mut o = apply_vec(
-            py,
-            &[(wo, 3, "wo"), (wi, 3, "wi")],
-            &[0],
-            PARALLEL,
-            |_, a, o| {
-                let (wo, wi) = (v3(a[0]), v3(a[1]));
-                o[0] = if separable {
-                    e.g2_separable(wo, wi)
-                } else {
-                    e.g2(wo, wi)
-                };
-                Ok(())
-            },
-        )?;
-        Ok(o.remove(0))
+        map_vec(py, &[(wo, 3, "wo"), (wi, 3, "wi")], |a| {
+            let (wo, wi) = (v3(a[0]), v3(a[1]));
+            if separable {
+                e.g2_separable(wo, wi)
+            } else {
+                e.g2(wo, wi)
+            }
+        })
     }
 
     /// The visible-normal density D_w(wm) = G1(w) max(0, w·wm) D(wm)/|w.z| per solid angle
@@ -590,17 +601,9 @@ impl NDF {
         wm: &Bound<'_, PyAny>,
     ) -> PyResult<PyObject> {
         let e = self.exact()?;
-        let mut o = apply_vec(
-            py,
-            &[(w, 3, "w"), (wm, 3, "wm")],
-            &[0],
-            PARALLEL,
-            |_, a, o| {
-                o[0] = e.pdf(v3(a[0]), v3(a[1]));
-                Ok(())
-            },
-        )?;
-        Ok(o.remove(0))
+        map_vec(py, &[(w, 3, "w"), (wm, 3, "wm")], |a| {
+            e.pdf(v3(a[0]), v3(a[1]))
+        })
     }
 
     /// Visible normals for directions w: ``sample_visible(w, u)`` with uniforms u of shape
@@ -619,24 +622,15 @@ impl NDF {
     ) -> PyResult<PyObject> {
         let e = self.exact()?;
         let u = uniforms(py, u, n, 2)?;
-        // (The exact samplers of the family invert quadratures: parallel from few elements.)
-        let o = apply_vec(py, &[(w, 3, "w"), (&u, 2, "u")], &[3, 0], 256, |_, a, o| {
-            let s = e.sample(v3(a[0]), [a[1][0], a[1][1]]);
-            o[..3].copy_from_slice(&s.wm);
-            o[3] = s.pdf;
-            Ok(())
-        })?;
-        named(py, "Sample", o)
+        samples(py, &[(w, 3, "w"), (&u, 2, "u")], |a| {
+            e.sample(v3(a[0]), [a[1][0], a[1][1]])
+        })
     }
 
     /// The density D(wm) cos θm of ``sample_dcos`` (0 for wm.z ≤ 0).
     fn pdf_dcos(&self, py: Python<'_>, wm: &Bound<'_, PyAny>) -> PyResult<PyObject> {
         let e = self.exact()?;
-        let mut o = apply_vec(py, &[(wm, 3, "wm")], &[0], PARALLEL, |_, a, o| {
-            o[0] = e.pdf_dcos(v3(a[0]));
-            Ok(())
-        })?;
-        Ok(o.remove(0))
+        map_vec(py, &[(wm, 3, "wm")], |a| e.pdf_dcos(v3(a[0])))
     }
 
     /// Normals distributed as D(m) cos θm: ``sample_dcos(u)`` (u of shape (..., 2)) or
@@ -650,13 +644,7 @@ impl NDF {
     ) -> PyResult<PyObject> {
         let e = self.exact()?;
         let u = uniforms(py, u, n, 2)?;
-        let o = apply_vec(py, &[(&u, 2, "u")], &[3, 0], 256, |_, a, o| {
-            let s = e.sample_dcos([a[0][0], a[0][1]]);
-            o[..3].copy_from_slice(&s.wm);
-            o[3] = s.pdf;
-            Ok(())
-        })?;
-        named(py, "Sample", o)
+        samples(py, &[(&u, 2, "u")], |a| e.sample_dcos([a[0][0], a[0][1]]))
     }
 
     // ---- Multiple scattering.
@@ -698,9 +686,7 @@ impl NDF {
             &[4, 4, 4, 4, 0, 0],
             2,
             |i, a, o| {
-                let (mu, phi) = (a[0][0], a[1][0]);
-                let st = ((1.0 - mu) * (1.0 + mu)).max(0.0).sqrt();
-                let wo = [st * phi.cos(), st * phi.sin(), mu];
+                let wo = wo_of(a[0][0], a[1][0]);
                 // (One stream per element, whatever thread runs it.)
                 let seed = seed.wrapping_add((i as u64).wrapping_mul(0x9E37_79B9_7F4A_7C15));
                 let r = match eta {
