@@ -1,12 +1,12 @@
 //! The BSDFs (`Conductor`, `Dielectric`) with their scattering model (single scattering,
 //! Kulla–Conty or Turquin energy compensation, the random walk), and the albedo tables.
 
+use crate::material::Material;
 use crate::{apply_vec, map_vec, named, v3, wo_of, NDF};
 use microfacet::bsdf::{self, Bsdf, Lobe, Masking, Transport};
 use microfacet::compensate::{AlbedoTable as Table, Compensated, CompensatedDielectric, Scheme};
 use microfacet::fresnel::{self, Fresnel};
 use microfacet::walk::{DielectricFacets, MirrorFacets, MultipleScattering};
-use microfacet::Exact;
 use pyo3::exceptions::PyValueError;
 use pyo3::prelude::*;
 
@@ -132,7 +132,12 @@ fn channels(x: Option<&Bound<'_, PyAny>>) -> PyResult<Option<Vec<f64>>> {
     }
 }
 
-fn conductor_of<const N: usize, Fr>(d: Exact, fr: Fr, m: Masking, model: Model) -> Box<dyn AnyBsdf>
+fn conductor_of<const N: usize, Fr>(
+    d: Material,
+    fr: Fr,
+    m: Masking,
+    model: Model,
+) -> Box<dyn AnyBsdf>
 where
     Fr: Fresnel<f64, N> + Send + Sync + 'static,
     MirrorFacets<Fr>: microfacet::walk::Facets<N>,
@@ -257,7 +262,7 @@ impl Conductor {
         masking: &str,
         scattering: &str,
     ) -> PyResult<(Self, PyBsdf)> {
-        let d = ndf.exact()?;
+        let d = ndf.material()?;
         let (eta, k) = (channels(eta)?, channels(k)?);
         let m = self::masking(masking)?;
         let model = self::model(scattering, m)?;
@@ -326,7 +331,7 @@ impl Dielectric {
         transport: &str,
         scattering: &str,
     ) -> PyResult<(Self, PyBsdf)> {
-        let d = ndf.exact()?;
+        let d = ndf.material()?;
         if !(eta > 0.0 && eta.is_finite() && eta != 1.0) {
             return Err(PyValueError::new_err(format!(
                 "eta must be a positive finite number other than 1 (got {eta})"
@@ -366,7 +371,7 @@ pub struct AlbedoTable {
 impl AlbedoTable {
     #[new]
     fn new(py: Python<'_>, ndf: PyRef<'_, NDF>) -> PyResult<Self> {
-        let d = ndf.exact()?;
+        let d = ndf.material()?;
         let table = crate::engine::interruptible(py, move || Table::new(&d))?;
         Ok(AlbedoTable { table })
     }
@@ -402,7 +407,7 @@ fn single_scattering_albedo(
     mu: &Bound<'_, PyAny>,
     phi: Option<&Bound<'_, PyAny>>,
 ) -> PyResult<PyObject> {
-    let d = ndf.exact()?;
+    let d = ndf.material()?;
     let zero = pyo3::types::PyFloat::new(py, 0.0).into_any();
     let phi = phi.unwrap_or(&zero);
     let mut o = apply_vec(py, &[(mu, 0, "mu"), (phi, 0, "phi")], &[0], 2, |_, a, o| {

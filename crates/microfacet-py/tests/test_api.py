@@ -77,8 +77,8 @@ def test_bsdfs_equal_the_command_line():
     wo, wi, wt = [0.0, 0.6, 0.8], [0.6, 0.0, 0.8], [0.0, -0.6, -0.8]
     cases = [
         ("conductor", dict(ndf="student_t", gamma=2.5, alpha=[0.3, 0.2], eta=[0.2, 0.9, 1.1], k=[3.9, 2.4, 2.2]),
-         mf.Conductor(mf.StudentT(0.3, 2.5, alpha_y=0.2), eta=[0.2, 0.9, 1.1], k=[3.9, 2.4, 2.2])),
-        ("dielectric", dict(ndf="ei", alpha=0.3, eta=1.5), mf.Dielectric(mf.Ei(0.3), 1.5)),
+         mf.Conductor(mf.StudentT(0.3, 2.5, alpha_y=0.2, sampler="warp"), eta=[0.2, 0.9, 1.1], k=[3.9, 2.4, 2.2])),
+        ("dielectric", dict(ndf="ei", alpha=0.3, eta=1.5), mf.Dielectric(mf.Ei(0.3, sampler="warp"), 1.5)),
     ]
     for kind, spec, b in cases:
         for w in (wi, wt):
@@ -167,21 +167,28 @@ def test_sample_visible_contract(n):
         n.sample_visible(w[0], np.zeros((3, 2)), n=3)
 
 
-def cell_probabilities(pdf, nu, nphi, order=6):
-    """∫ pdf over cells of (u = cos θ, φ) ∈ [0, 1] × [0, 2π) by Gauss–Legendre per cell (dω = du dφ)."""
+def cell_probabilities(pdf, nt, nphi, order=6):
+    """∫ pdf over cells of (θ, φ) ∈ [0, π/2] × [0, 2π) by Gauss–Legendre per cell (dω = sin θ dθ dφ:
+    a pole of D at the normal, D ~ θ^−β with β < 2, is bounded there)."""
     x, wt = np.polynomial.legendre.leggauss(order)
     x, wt = (x + 1) / 2, wt / 2
-    ue = np.linspace(0, 1, nu + 1)
+    te = np.linspace(0, np.pi / 2, nt + 1)
     pe = np.linspace(0, 2 * np.pi, nphi + 1)
-    u = ue[:-1, None] + np.diff(ue)[:, None] * x[None, :]  # (nu, order)
+    t = te[:-1, None] + np.diff(te)[:, None] * x[None, :]  # (nt, order)
     p = pe[:-1, None] + np.diff(pe)[:, None] * x[None, :]
-    U = u[:, None, :, None]
+    T = t[:, None, :, None]
     P = p[None, :, None, :]
-    s = np.sqrt(1 - U * U)
-    m = np.stack(np.broadcast_arrays(s * np.cos(P), s * np.sin(P), U), axis=-1)
-    f = pdf(m)  # (nu, nphi, order, order)
+    m = np.stack(np.broadcast_arrays(np.sin(T) * np.cos(P), np.sin(T) * np.sin(P), np.cos(T)), axis=-1)
+    f = pdf(m) * np.sin(T)  # (nt, nphi, order, order)
     w2 = wt[:, None] * wt[None, :]
-    return np.sum(f * w2, axis=(-2, -1)) * np.diff(ue)[:, None] * np.diff(pe)[None, :]
+    return np.sum(f * w2, axis=(-2, -1)) * np.diff(te)[:, None] * np.diff(pe)[None, :]
+
+
+def histogram(w, nt, nphi):
+    theta = np.arccos(np.clip(w[:, 2], -1, 1))
+    phi = np.mod(np.arctan2(w[:, 1], w[:, 0]), 2 * np.pi)
+    counts, _, _ = np.histogram2d(theta, phi, bins=[nt, nphi], range=[[0, np.pi / 2], [0, 2 * np.pi]])
+    return counts
 
 
 def chi2_pvalue(counts, expected):
@@ -201,6 +208,9 @@ def chi2_pvalue(counts, expected):
         (mf.GGX(0.4, 0.15), [0.5, 0.3, 0.81]),
         (mf.Beckmann(0.5), [0.8, 0.0, 0.6]),
         (mf.StudentT(0.35, 3.0, alpha_y=0.6), [-0.3, 0.5, 0.81]),
+        (mf.StudentT(0.35, 3.0, alpha_y=0.6, sampler="warp"), [-0.3, 0.5, 0.81]),
+        (mf.BesselK(0.3, 0.7, alpha_y=0.5), [0.7, 0.1, 0.2]),
+        (mf.Erfc(0.6), [0.0, 0.9, 0.1]),
         (mf.GenExponential(0.4, 1.3), [0.0, 0.6, 0.8]),
         (mf.DoubleGGX(0.3), [0.0, 0.0, -1.0]),
     ],
@@ -210,9 +220,7 @@ def test_sample_visible_chi2(n, w):
     samples = 100_000
     s = n.sample_visible(w, np.random.default_rng(3), n=samples)
     nu, nphi = 16, 24
-    counts, _, _ = np.histogram2d(
-        s.wm[:, 2], np.mod(np.arctan2(s.wm[:, 1], s.wm[:, 0]), 2 * np.pi), bins=[nu, nphi], range=[[0, 1], [0, 2 * np.pi]]
-    )
+    counts = histogram(s.wm, nu, nphi)
     expected = samples * cell_probabilities(lambda m: n.pdf_visible(w, m), nu, nphi)
     assert abs(expected.sum() / samples - 1) < 2e-3
     assert chi2_pvalue(counts.ravel(), expected.ravel()) > 1e-4
@@ -224,9 +232,7 @@ def test_sample_dcos_chi2():
     s = n.sample_dcos(np.random.default_rng(4), n=samples)
     assert np.array_equal(s.pdf, n.pdf_dcos(s.wm))
     nu, nphi = 16, 24
-    counts, _, _ = np.histogram2d(
-        s.wm[:, 2], np.mod(np.arctan2(s.wm[:, 1], s.wm[:, 0]), 2 * np.pi), bins=[nu, nphi], range=[[0, 1], [0, 2 * np.pi]]
-    )
+    counts = histogram(s.wm, nu, nphi)
     expected = samples * cell_probabilities(n.pdf_dcos, nu, nphi, order=8)
     assert chi2_pvalue(counts.ravel(), expected.ravel()) > 1e-4
 
@@ -239,9 +245,7 @@ def test_conductor_sample_chi2_with_rejections():
     ok = s.lobe == 1
     assert np.all(s.pdf[~ok] == 0) and np.all(s.wi[~ok] == 0)
     nu, nphi = 16, 24
-    counts, _, _ = np.histogram2d(
-        s.wi[ok, 2], np.mod(np.arctan2(s.wi[ok, 1], s.wi[ok, 0]), 2 * np.pi), bins=[nu, nphi], range=[[0, 1], [0, 2 * np.pi]]
-    )
+    counts = histogram(s.wi[ok], nu, nphi)
     expected = samples * cell_probabilities(lambda w: b.pdf(wo, w), nu, nphi, order=8)
     # The rejected samples (reflections below the horizon) are the rest of the probability.
     obs = np.append(counts.ravel(), (~ok).sum())
@@ -318,6 +322,10 @@ def test_bsdf_errors():
         mf.Dielectric(g, 1.5).sample([0, 0, 1.0], [0.5, 0.5])
     with pytest.raises(ValueError, match="finite Lambda"):
         mf.StudentT(0.3, 1.2).sample_visible([0, 0, 1.0], [0.5, 0.5])
+    with pytest.raises(ValueError, match="sampler"):
+        mf.Ei(0.3, sampler="fast")
+    assert mf.Ei(0.3).sampler == "posterior" and mf.Ei(0.3, sampler="warp").sampler == "warp"
+    assert mf.GGX(0.3).sampler == "warp"  # (a warp either way)
 
 
 # ---- Ctrl-C.
@@ -374,3 +382,46 @@ def test_fast_paths_at_every_length():
                 assert np.array_equal(got[idx], np.array([f(x[i]) for i in idx])), (n, dtype, f.__name__)
                 a = np.full(n, 0.3, dtype=dtype)
                 assert np.array_equal(f(x, alpha=a), got), (n, dtype)
+
+
+def test_seeded_fuzz_no_panic_at_the_edges():
+    # The contract's edges through every method (a Rust panic would surface as
+    # pyo3_runtime.PanicException, a BaseException): finite in-contract input gives finite
+    # output, samples are unit normals visible from w, bad input is a ValueError or NaN.
+    rng = np.random.default_rng(2026)
+    tiny = np.nextafter(0, 1)
+    us = np.array([0.0, -0.0, 1.0, 1 + 2.2e-16, tiny, 1e-300, 0.5, -0.5, -1.0, np.nan, np.inf, 1e300])
+    edge_w = np.array(
+        [[0, 0, 1.0], [1.0, 0, 0], [0, 0, -1.0], [1, 0, tiny], [1, 0, -tiny], [0.6, 0, 0.8], [0, 0, 0], [np.nan, 0, 1]]
+    )
+    u2 = np.array([[0.0, 0.0], [1 - 2**-53, 1 - 2**-53], [0.0, 1 - 2**-53], [0.5, 0.5]])
+    ndfs = [mf.GGX(1e-6), mf.GGX(1e6, 1e-3), mf.Beckmann(0.3, 0.9), mf.GTR(0.2, 0.5), mf.DoubleGGX(2.0),
+            mf.Exponential(0.05), mf.StudentT(0.3, 1.51), mf.Ei(0.3), mf.Erfc(0.7), mf.K0(0.3),
+            mf.BesselK(0.4, 0.5), mf.GenExponential(0.5, 20.0)]
+    for n in ndfs:
+        iso = n.alpha == n.alpha_y
+        a = None if iso else n.alpha
+        for f in (n.d, n.lambda_, n.sigma, n.g1, n.p2):
+            f(us, alpha=a)
+        n.g2(us[:, None], us, alpha=a)
+        n.p22(us[:, None], us, alpha=a)
+        for f in (n.d_wm, n.lambda_w, n.g1_w, n.sigma_w, n.pdf_dcos):
+            f(edge_w)
+        n.pdf_visible(edge_w[:, None], edge_w)
+        # (Few samples: the family's exact warps invert quadratures, up to milliseconds each.)
+        w = unit(rng.normal(size=(40, 3)))
+        w[:10, 2] = np.abs(w[:10, 2]) * 1e-12
+        for uu in (u2, rng.random((40, 2))):
+            s = n.sample_visible(w[: len(uu)], uu)
+            ok = np.abs(w[: len(uu), 2]) > 0
+            np.testing.assert_allclose(np.linalg.norm(s.wm[ok], axis=-1), 1, atol=1e-12)
+            assert np.all(s.wm[ok, 2] > 0) and np.all(np.isfinite(s.pdf[ok]))
+            d = n.sample_dcos(uu)
+            assert np.all(np.isfinite(d.wm)) and np.all(d.wm[:, 2] >= 0)
+        for b in (mf.Conductor(n, eta=[0.2, 0.9, 1.1], k=[3.9, 2.4, 2.2]), mf.Dielectric(n, 1.5), mf.Dielectric(n, 1 / 1.5)):
+            b.eval(edge_w[:, None], edge_w)
+            b.pdf(edge_w[:, None], edge_w)
+            u3 = np.concatenate([np.zeros((1, 3)), np.full((1, 3), 1 - 2**-53), rng.random((10, 3))])
+            s = b.sample(edge_w[:, None], u3)
+            ok = s.lobe > 0
+            assert np.all(np.isfinite(s.f[ok])) and np.all(s.pdf[ok] > 0) and np.all(np.isfinite(s.pdf[ok]))

@@ -11,7 +11,9 @@ library's exact path; float32 results are the f64 values rounded once).
 * Functions of directions (unit vectors on the last axis, anisotropic): ``d_wm``,
   ``lambda_w``, ``g1_w``, ``sigma_w``, ``g2_w``, ``pdf_visible``, ``pdf_dcos``; the samplers
   ``sample_visible(w, u)`` and ``sample_dcos(u)`` with uniforms u (last axis 2) or
-  ``(rng, n)`` for a ``numpy.random.Generator``.
+  ``(rng, n)`` for a ``numpy.random.Generator`` (the Beckmann mixtures Student-T, Ei, Erfc, K0
+  and Bessel-K by the posterior of the mixing variable, ~0.2 µs; ``sampler='warp'`` at
+  construction for the exact inversion, a warp of u).
 * Multiple scattering: ``ndf.albedo(mu, walks=...)`` by order (the random walk),
   ``single_scattering_albedo(ndf, mu)`` (quadrature), ``AlbedoTable(ndf)``.
 * BSDFs: ``Conductor(ndf, eta, k)`` and ``Dielectric(ndf, eta)`` with ``eval``, ``pdf`` and
