@@ -123,7 +123,7 @@ impl<'py> Args<'py> {
         f: impl Fn(usize, &mut [f64]) -> Result<(), ParamError> + Sync,
     ) -> PyResult<Vec<PyObject>> {
         let data = compute(py, self.n, width, parallel, f)?;
-        self.shape(py, data, width, outs)
+        self.shape(py, data.into_any(), width, outs)
     }
 
     /// The same over blocks of `block` elements: `f(start, out)` fills out (block × width
@@ -138,19 +138,18 @@ impl<'py> Args<'py> {
         f: impl Fn(usize, &mut [f64]) -> Result<(), ParamError> + Sync,
     ) -> PyResult<Vec<PyObject>> {
         let data = compute_blocks(py, self.n, width, block, parallel, f)?;
-        self.shape(py, data, width, outs)
+        self.shape(py, data.into_any(), width, outs)
     }
 
     /// The outputs of `data` (n × width, row-major), as [`Args::run`] says.
     fn shape(
         &self,
         py: Python<'py>,
-        data: Vec<f64>,
+        all: Bound<'py, PyAny>,
         width: usize,
         outs: &[usize],
     ) -> PyResult<Vec<PyObject>> {
         let np = numpy(py)?;
-        let all = PyArray1::from_vec(py, data).into_any();
         let mut result = Vec::with_capacity(outs.len());
         let mut offset = 0;
         for &core in outs {
@@ -192,7 +191,7 @@ pub fn compute(
     width: usize,
     parallel: usize,
     f: impl Fn(usize, &mut [f64]) -> Result<(), ParamError> + Sync,
-) -> PyResult<Vec<f64>> {
+) -> PyResult<Bound<'_, PyArray1<f64>>> {
     compute_blocks(py, n, width, 1, parallel, |start, out| {
         out.chunks_mut(width)
             .enumerate()
@@ -211,10 +210,13 @@ pub fn compute_blocks(
     block: usize,
     parallel: usize,
     f: impl Fn(usize, &mut [f64]) -> Result<(), ParamError> + Sync,
-) -> PyResult<Vec<f64>> {
-    let mut data = vec![0.0; n * width];
+) -> PyResult<Bound<'_, PyArray1<f64>>> {
+    let out = empty::<f64>(py, n * width, "float64")?;
+    let mut rw = out.readwrite();
+    let data = rw.as_slice_mut()?;
     if width == 0 || n == 0 {
-        return Ok(data);
+        drop(rw);
+        return Ok(out);
     }
     // (Cheap elements: tens of thousands before the first check; expensive ones (walks,
     // quadratures: a small `parallel`) one per thread.)
@@ -249,7 +251,21 @@ pub fn compute_blocks(
         }
         Ok(())
     });
-    result.map(|()| data)
+    drop(rw);
+    result.map(|()| out)
+}
+
+/// An uninitialised NumPy array of n elements (`numpy.empty`: NumPy's allocator, which
+/// reuses freed blocks, where a zeroed Rust vector of megabytes takes fresh pages and their
+/// faults, ~0.05 ns an element); every element is written before it is returned.
+pub fn empty<'py, T: numpy::Element>(
+    py: Python<'py>,
+    n: usize,
+    dtype: &str,
+) -> PyResult<Bound<'py, PyArray1<T>>> {
+    Ok(numpy(py)?
+        .call_method1("empty", (n, dtype))?
+        .downcast_into::<PyArray1<T>>()?)
 }
 
 /// A uniform source: an array of uniforms (last axis `k`), or a `numpy.random.Generator`

@@ -162,7 +162,9 @@ fn kernel_f32<'py>(
     let (ro, ra) = (u.readonly(), alpha.as_ref().map(|a| a.readonly()));
     let us = ro.as_slice()?;
     let als = ra.as_ref().map(|r| r.as_slice()).transpose()?;
-    let mut out = vec![0f32; us.len()];
+    let out_array = engine::empty::<f32>(py, us.len(), "float32")?;
+    let mut rw = out_array.readwrite();
+    let out = rw.as_slice_mut()?;
     let constant = [alpha0 as f32; BLOCK];
     let run = |start: usize, o: &mut [f32]| -> Result<(), ParamError> {
         let n = o.len();
@@ -197,9 +199,8 @@ fn kernel_f32<'py>(
         }
         Ok::<_, PyErr>(())
     })?;
-    let mut result = PyArray1::from_vec(py, out)
-        .into_any()
-        .call_method1("reshape", (shape,))?;
+    drop(rw);
+    let mut result = out_array.into_any().call_method1("reshape", (shape,))?;
     if result.getattr("ndim")?.extract::<usize>()? == 0 {
         // (A NumPy scalar, as a ufunc gives for scalar input.)
         result = result.get_item(())?;
