@@ -398,19 +398,32 @@ impl AlbedoTable {
 /// The single-scattering albedo E₁(wo) of the F = 1 conductor (height-correlated G2) by
 /// adaptive quadrature (≤ 1e-9 relative requested, 1e-6 guaranteed): at cos θo = ``mu``
 /// and azimuth ``phi``, broadcast. Each element is a quadrature (milliseconds; the family's
-/// singular members longer): parallel, Ctrl-C between chunks.
+/// singular members longer): parallel, Ctrl-C between chunks. ``alpha``: an array of
+/// roughnesses broadcast with mu and phi (αy scaled with α).
 #[pyfunction]
-#[pyo3(signature = (ndf, mu, phi = None))]
+#[pyo3(signature = (ndf, mu, phi = None, alpha = None))]
 fn single_scattering_albedo(
     py: Python<'_>,
     ndf: PyRef<'_, NDF>,
     mu: &Bound<'_, PyAny>,
     phi: Option<&Bound<'_, PyAny>>,
+    alpha: Option<&Bound<'_, PyAny>>,
 ) -> PyResult<PyObject> {
-    let d = ndf.material()?;
+    if alpha.is_none() {
+        ndf.material()?;
+    }
+    // (A copy: the loop runs without the GIL.)
+    let ndf: NDF = *ndf;
     let zero = pyo3::types::PyFloat::new(py, 0.0).into_any();
+    let nan = pyo3::types::PyFloat::new(py, f64::NAN).into_any();
     let phi = phi.unwrap_or(&zero);
-    let mut o = apply_vec(py, &[(mu, 0, "mu"), (phi, 0, "phi")], &[0], 2, |_, a, o| {
+    let items = [
+        (mu, 0, "mu"),
+        (phi, 0, "phi"),
+        (alpha.unwrap_or(&nan), 0, "alpha"),
+    ];
+    let mut o = apply_vec(py, &items, &[0], 2, |_, a, o| {
+        let d = ndf.material_at(a[2][0])?;
         o[0] = microfacet::walk::single_scattering_albedo(&d, wo_of(a[0][0], a[1][0]));
         Ok(())
     })?;

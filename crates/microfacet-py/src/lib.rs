@@ -304,6 +304,7 @@ enum Q {
 /// functions of directions (``d_wm``, ``lambda_w``, ``pdf_visible``, ``sample_visible``,
 /// ...) are the anisotropic material's.
 #[pyclass(subclass, frozen, module = "microfacet")]
+#[derive(Clone, Copy)]
 pub struct NDF {
     ndf: AnyNdf,
     /// The direction API, or why this material has none (Student-T at γ ≤ 3/2: Λ = ∞).
@@ -370,6 +371,17 @@ impl NDF {
                 slice32: batch::ggx_g1_f32,
             },
         })
+    }
+
+    /// The same NDF at roughness α (αy scaled with it), for the `alpha=` arrays of the
+    /// albedo functions; this material at NaN (no array given).
+    fn material_at(&self, alpha: f64) -> Result<Material, ParamError> {
+        if alpha.is_nan() {
+            return Ok(Material::new(self.exact?, self.sampler));
+        }
+        let ay = alpha * (self.alpha_y / self.ndf.alpha());
+        let e = Exact::new(self.ndf.kind(), alpha, ay, self.ndf.shape())?;
+        Ok(Material::new(e, self.sampler))
     }
 
     /// The direction API's material (or why there is none).
@@ -690,8 +702,9 @@ impl NDF {
     /// threads). Returns ``Albedo(reflect, reflect_stderr, transmit, transmit_stderr,
     /// total, total_stderr)``: reflect and transmit of shape (..., 4) for the orders 1, 2,
     /// 3 and ≥ 4, with their standard errors; total (...) is reflect + transmit summed
-    /// over orders.
-    #[pyo3(signature = (mu, phi = None, walks = 100_000, seed = 0, eta = None))]
+    /// over orders. ``alpha``: an array of roughnesses broadcast with mu and phi (αy scaled
+    /// with α), for tables over (α, μ) in one call.
+    #[pyo3(signature = (mu, phi = None, walks = 100_000, seed = 0, eta = None, alpha = None))]
     #[allow(clippy::too_many_arguments)]
     fn albedo(
         &self,
@@ -701,8 +714,11 @@ impl NDF {
         walks: u64,
         seed: u64,
         eta: Option<f64>,
+        alpha: Option<&Bound<'_, PyAny>>,
     ) -> PyResult<PyObject> {
-        let e = self.material()?;
+        if alpha.is_none() {
+            self.material()?;
+        }
         if let Some(eta) = eta {
             if !(eta > 0.0 && eta.is_finite() && eta != 1.0) {
                 return Err(PyValueError::new_err(format!(
@@ -711,14 +727,19 @@ impl NDF {
             }
         }
         let zero = PyFloat::new(py, 0.0).into_any();
+        let nan = PyFloat::new(py, f64::NAN).into_any();
         let phi = phi.unwrap_or(&zero);
-        let surface = Microsurface::new(e, Heights::Uniform);
         let o = apply_vec(
             py,
-            &[(mu, 0, "mu"), (phi, 0, "phi")],
+            &[
+                (mu, 0, "mu"),
+                (phi, 0, "phi"),
+                (alpha.unwrap_or(&nan), 0, "alpha"),
+            ],
             &[4, 4, 4, 4, 0, 0],
             2,
             |i, a, o| {
+                let surface = Microsurface::new(self.material_at(a[2][0])?, Heights::Uniform);
                 let wo = wo_of(a[0][0], a[1][0]);
                 // (One stream per element, whatever thread runs it.)
                 let seed = seed.wrapping_add((i as u64).wrapping_mul(0x9E37_79B9_7F4A_7C15));

@@ -301,6 +301,25 @@ def test_white_furnace():
     assert abs(d.total - 1) < 1e-12 and d.transmit.sum() > 0.5
 
 
+def test_albedo_over_alpha_arrays():
+    # A table over (α, μ) in one call equals one material per α.
+    alpha = np.array([0.2, 0.7])[:, None]
+    mu = np.array([0.3, 0.9])
+    g = mf.GGX(0.5)
+    t = mf.single_scattering_albedo(g, mu, alpha=alpha)
+    assert t.shape == (2, 2)
+    for i, a in enumerate(alpha[:, 0]):
+        assert np.array_equal(t[i], mf.single_scattering_albedo(mf.GGX(a), mu))
+    w = g.albedo(mu, walks=2000, alpha=alpha)
+    assert w.reflect.shape == (2, 2, 4)
+    # (Each element has its own stream: seed + index; the second row's are indices 2, 3.)
+    assert np.array_equal(w.reflect[0], mf.GGX(0.2).albedo(mu, walks=2000).reflect)
+    an = mf.Beckmann(0.4, 0.2).albedo(0.5, walks=1000, alpha=[0.4, 0.8])
+    assert an.total.shape == (2,) and np.all(an.total == 1.0)
+    with pytest.raises(ValueError, match="alpha"):
+        mf.single_scattering_albedo(g, 0.5, alpha=[0.3, -1.0])
+
+
 def test_bsdf_errors():
     g = mf.GGX(0.3)
     for kwargs, match in [

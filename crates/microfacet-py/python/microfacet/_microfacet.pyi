@@ -51,6 +51,7 @@ class NDF:
         walks: int = 100000,
         seed: int = 0,
         eta: Optional[float] = None,
+        alpha: Optional[ArrayLike] = None,
     ) -> Albedo: ...
 
 class Beckmann(NDF):
@@ -129,4 +130,6 @@ class AlbedoTable:
     @property
     def lost_avg(self) -> float: ...
 
-def single_scattering_albedo(ndf: NDF, mu: ArrayLike, phi: Optional[ArrayLike] = None) -> Result: ...
+def single_scattering_albedo(
+    ndf: NDF, mu: ArrayLike, phi: Optional[ArrayLike] = None, alpha: Optional[ArrayLike] = None
+) -> Result: ...
