@@ -20,8 +20,21 @@ const KINDS: [NdfKind; 4] = [
 const ALPHAS: [f64; 4] = [0.05, 0.3, 1.0, 2.0];
 const INCIDENCE_DEG: [f64; 4] = [0.0, 45.0, 80.0, 89.0];
 /// Upper bound on the number of tests in this file (for the Šidák correction).
-const TESTS: usize =
-    4 * 4 * 2 * (4 + 1) + 4 * 5 + 4 * 3 + 4 * 4 * 4 + 4 + 4 * 4 * 2 + 3 * 32 + 6 + 12 + 12 * 2 * 4;
+/// (The last terms: the family sweep, 96; the heavy-tail cases, 3; the posterior's range
+/// ends, 8.)
+const TESTS: usize = 4 * 4 * 2 * (4 + 1)
+    + 4 * 5
+    + 4 * 3
+    + 4 * 4 * 4
+    + 4
+    + 4 * 4 * 2
+    + 3 * 32
+    + 6
+    + 12
+    + 12 * 2 * 4
+    + 96
+    + 3
+    + 8;
 
 fn direction(deg: f64) -> Vec3 {
     let t = deg.to_radians();
@@ -548,6 +561,52 @@ fn posterior_sampler(full: bool) {
             0,
             |_| sampler.sample(&mut rng),
         );
+    });
+}
+
+/// The posterior visible sampler of the Beckmann mixtures (`Exact::sample_wm_stream`, the
+/// sampler of the fast path and of the Python bindings' default) at the ends of the shape
+/// ranges, where the warps are too slow for CI: Student-T γ = 1.55 and 1e4, Bessel-K a = 0.1
+/// and 100, at a narrow isotropic and a wide anisotropic roughness, from θi = 80°.
+#[test]
+fn family_posterior_range_ends() {
+    use microfacet::distribution::UniformStream;
+    let cases = [
+        (NdfKind::StudentT, Some(1.55)),
+        (NdfKind::StudentT, Some(1e4)),
+        (NdfKind::BesselK, Some(0.1)),
+        (NdfKind::BesselK, Some(100.0)),
+    ];
+    let all: Vec<_> = cases
+        .iter()
+        .flat_map(|&c| [(c, 0.05, 0.05), (c, 1.0, 0.4)])
+        .collect();
+    on_every_core(&all, |&((kind, shape), ax, ay)| {
+        let ex = Exact::new(kind, ax, ay, shape).unwrap();
+        let wi = direction(80.0);
+        let label = format!("{kind} {shape:?} α=({ax},{ay}) posterior visible θi=80°");
+        let sample = |u: [f64; 2]| {
+            let mut s = UniformStream::new(u);
+            Vec3::from(
+                ex.sample_wm_stream(wi.into(), &mut || s.next_uniform::<f64>())
+                    .expect("above the horizon"),
+            )
+        };
+        let seed = 71 + (ax * 100.0) as u64;
+        match (kind, shape) {
+            (NdfKind::StudentT, Some(g)) if g < 2.0 => {
+                let tail = TailCoordinates {
+                    alpha: 1.5 * ax.max(ay),
+                    q: 1.0 / (g - 1.5),
+                };
+                check_visible_in(&label, &ex, wi, &tail, 20_000, seed, sample);
+            }
+            (NdfKind::BesselK, Some(a)) if a <= 1.0 => {
+                let coords = Exact::new(NdfKind::Erfc, 1.5 * ax, 1.5 * ay, None).unwrap();
+                check_visible(&label, &ex, wi, &coords, 20_000, seed, sample);
+            }
+            _ => check_visible(&label, &ex, wi, &reference(ax, ay), 20_000, seed, sample),
+        }
     });
 }
 
