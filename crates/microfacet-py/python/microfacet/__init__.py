@@ -15,7 +15,8 @@ library's exact path; float32 results are the f64 values rounded once).
   and Bessel-K by the posterior of the mixing variable, ~0.2 µs; ``sampler='warp'`` at
   construction for the exact inversion, a warp of u).
 * Multiple scattering: ``ndf.albedo(mu, walks=...)`` by order (the random walk),
-  ``single_scattering_albedo(ndf, mu)`` (quadrature), ``AlbedoTable(ndf)``.
+  ``single_scattering_albedo(ndf, mu)`` (quadrature), both with ``alpha=`` arrays for
+  (α, μ) tables, and ``AlbedoTable(ndf)`` (the compensation table).
 * BSDFs: ``Conductor(ndf, eta, k)`` and ``Dielectric(ndf, eta)`` with ``eval``, ``pdf`` and
   ``sample``, single scattering or with multiple scattering (``scattering='kulla_conty'``,
   ``'turquin'`` or ``'walk'``).
