@@ -177,45 +177,32 @@ fn run_family(kind: NdfKind, shape: Option<f64>, ax: f64, ay: f64, deg: Option<f
     // (at γ = 0.1 the median is at cos θm ~ 1e-12), out of every reference's D·cos
     // coordinates but the grid's last row: TailCoordinates with q set so that the median
     // normal of the same NDF at 1.5α (its D·cos warp at u = ½) lands at s = ½.
-    if kind == NdfKind::GenExponential && shape.is_some_and(|g| g < 1.0) {
-        let a = 1.5 * ax.max(ay);
-        let c = Exact::new(kind, a, a, shape)
-            .unwrap()
-            .sample_dcos([0.5, 0.0])
-            .wm[2];
-        let w = a * a * c * c / (a * a * c * c + (1.0 - c) * (1.0 + c));
-        let tail = TailCoordinates {
-            alpha: a,
-            q: (w.ln() / 0.5f64.ln()).max(1.0),
-        };
-        match deg {
-            None => check(
-                &format!("{label} D·cos"),
-                chi2_test(
-                    |u| m.sample_dcos(u).wm.into(),
-                    |w| m.pdf_dcos(w.into()),
-                    &tail,
-                    n,
-                    24,
-                    seed,
-                ),
-            ),
-            Some(deg) => {
-                let wi = direction(deg);
-                let label = format!("{label} visible θi={deg}°");
-                let sample = |u| m.sample_wm(wi.into(), u).into();
-                check_visible_in(&label, &m, wi, &tail, n, seed + deg as u64, sample);
-            }
+    let tail = match (kind, shape) {
+        (NdfKind::GenExponential, Some(g)) if g < 1.0 => {
+            let a = 1.5 * ax.max(ay);
+            let c = Exact::new(kind, a, a, shape)
+                .unwrap()
+                .sample_dcos([0.5, 0.0])
+                .wm[2];
+            let w = a * a * c * c / (a * a * c * c + (1.0 - c) * (1.0 + c));
+            Some(TailCoordinates {
+                alpha: a,
+                q: (w.ln() / 0.5f64.ln()).max(1.0),
+            })
         }
-        return;
-    }
+        _ => None,
+    };
+    let dcos = match tail {
+        Some(t) => Grid::Tail(t),
+        None => Grid::Dcos(DcosCoordinates(&coords)),
+    };
     match deg {
         None => check(
             &format!("{label} D·cos"),
             chi2_test(
                 |u| m.sample_dcos(u).wm.into(),
                 |w| m.pdf_dcos(w.into()),
-                &DcosCoordinates(&coords),
+                &dcos,
                 n,
                 24,
                 seed,
@@ -225,16 +212,35 @@ fn run_family(kind: NdfKind, shape: Option<f64>, ax: f64, ay: f64, deg: Option<f
             let wi = direction(deg);
             let label = format!("{label} visible θi={deg}°");
             let sample = |u| m.sample_wm(wi.into(), u).into();
-            if kind == NdfKind::StudentT {
-                let g = shape.unwrap_or(2.0);
-                let tail = TailCoordinates {
+            let visible = match (kind, shape) {
+                (NdfKind::StudentT, Some(g)) => Grid::Tail(TailCoordinates {
                     alpha: 1.5 * ax.max(ay),
                     q: (1.0 / (g - 1.5)).max(1.0),
-                };
-                check_visible_in(&label, &m, wi, &tail, n, seed + deg as u64, sample);
-            } else {
-                check_visible(&label, &m, wi, &coords, n, seed + deg as u64, sample);
-            }
+                }),
+                _ => dcos,
+            };
+            check_visible_in(&label, &m, wi, &visible, n, seed + deg as u64, sample);
+        }
+    }
+}
+
+/// The coordinates of one test: a reference's D·cos warp or tail coordinates.
+enum Grid<'a> {
+    Dcos(DcosCoordinates<'a>),
+    Tail(TailCoordinates),
+}
+
+impl Coordinates for Grid<'_> {
+    fn unit_of(&self, w: Vec3) -> [f64; 2] {
+        match self {
+            Grid::Dcos(c) => c.unit_of(w),
+            Grid::Tail(c) => c.unit_of(w),
+        }
+    }
+    fn direction_at(&self, u: [f64; 2]) -> (Vec3, f64) {
+        match self {
+            Grid::Dcos(c) => c.direction_at(u),
+            Grid::Tail(c) => c.direction_at(u),
         }
     }
 }
