@@ -211,16 +211,33 @@ pub fn compute_blocks(
     parallel: usize,
     f: impl Fn(usize, &mut [f64]) -> Result<(), ParamError> + Sync,
 ) -> PyResult<Bound<'_, PyArray1<f64>>> {
-    let out = empty::<f64>(py, n * width, "float64")?;
+    compute_blocks_of(py, n, width, block, parallel, "float64", f)
+}
+
+/// [`compute_blocks`] into an array of T (`dtype` its NumPy name).
+pub fn compute_blocks_of<'py, T: numpy::Element + Send>(
+    py: Python<'py>,
+    n: usize,
+    width: usize,
+    block: usize,
+    parallel: usize,
+    dtype: &str,
+    f: impl Fn(usize, &mut [T]) -> Result<(), ParamError> + Sync,
+) -> PyResult<Bound<'py, PyArray1<T>>> {
+    let out = empty::<T>(py, n * width, dtype)?;
     let mut rw = out.readwrite();
     let data = rw.as_slice_mut()?;
     if width == 0 || n == 0 {
         drop(rw);
         return Ok(out);
     }
-    // (Cheap elements: tens of thousands before the first check; expensive ones (walks,
-    // quadratures: a small `parallel`) one per thread.)
-    let mut chunk = if parallel >= 1024 {
+    // (Slice kernels (blocks): 2^20 elements, about a millisecond, before the first check:
+    // each check takes the GIL back and ends a rayon join, ~20 µs, which at 0.1 ns an element
+    // doubled a float32 call over 10⁶ elements when it came every 2^16. Other cheap elements:
+    // 2^16; expensive ones (walks, quadratures: a small `parallel`) one per thread.)
+    let mut chunk = if block > 1 {
+        1 << 20
+    } else if parallel >= 1024 {
         1 << 16
     } else {
         rayon::current_num_threads()
@@ -301,6 +318,7 @@ pub fn interruptible<T: Send + 'static>(
     use std::sync::mpsc::{channel, RecvTimeoutError};
     let (tx, rx) = channel();
     std::thread::spawn(move || {
+        // (Fails only when the caller was interrupted and dropped the receiver.)
         let _ = tx.send(f());
     });
     py.allow_threads(move || loop {

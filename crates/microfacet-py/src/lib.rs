@@ -162,45 +162,22 @@ fn kernel_f32<'py>(
     let (ro, ra) = (u.readonly(), alpha.as_ref().map(|a| a.readonly()));
     let us = ro.as_slice()?;
     let als = ra.as_ref().map(|r| r.as_slice()).transpose()?;
-    let out_array = engine::empty::<f32>(py, us.len(), "float32")?;
-    let mut rw = out_array.readwrite();
-    let out = rw.as_slice_mut()?;
     let constant = [alpha0 as f32; BLOCK];
-    let run = |start: usize, o: &mut [f32]| -> Result<(), ParamError> {
-        let n = o.len();
-        let al = match als {
-            Some(al) => {
-                let al = &al[start..start + n];
-                al.iter().try_for_each(|&a| check(f64::from(a)))?;
-                al
-            }
-            None => &constant[..n],
-        };
-        (k.slice32)(&us[start..start + n], al, o);
-        Ok(())
-    };
-    // (Chunks of 2^20 elements, well under a millisecond, with Ctrl-C between.)
-    const CHUNK: usize = 1 << 20;
-    py.allow_threads(|| {
-        for (c, chunk) in out.chunks_mut(CHUNK).enumerate() {
-            if chunk.len() >= PARALLEL {
-                chunk
-                    .par_chunks_mut(BLOCK)
-                    .enumerate()
-                    .try_for_each(|(b, o)| run(c * CHUNK + b * BLOCK, o))
-            } else {
-                chunk
-                    .chunks_mut(BLOCK)
-                    .enumerate()
-                    .try_for_each(|(b, o)| run(c * CHUNK + b * BLOCK, o))
-            }
-            .map_err(value_error)?;
-            Python::with_gil(|py| py.check_signals())?;
-        }
-        Ok::<_, PyErr>(())
-    })?;
-    drop(rw);
-    let mut result = out_array.into_any().call_method1("reshape", (shape,))?;
+    let out =
+        engine::compute_blocks_of(py, us.len(), 1, BLOCK, PARALLEL, "float32", |start, o| {
+            let n = o.len();
+            let al = match als {
+                Some(al) => {
+                    let al = &al[start..start + n];
+                    al.iter().try_for_each(|&a| check(f64::from(a)))?;
+                    al
+                }
+                None => &constant[..n],
+            };
+            (k.slice32)(&us[start..start + n], al, o);
+            Ok(())
+        })?;
+    let mut result = out.into_any().call_method1("reshape", (shape,))?;
     if result.getattr("ndim")?.extract::<usize>()? == 0 {
         // (A NumPy scalar, as a ufunc gives for scalar input.)
         result = result.get_item(())?;
