@@ -26,6 +26,12 @@ use rayon::prelude::*;
 /// Above this many elements a cheap function's loop runs on rayon's pool.
 const PARALLEL: usize = 1 << 14;
 
+/// A Python float (NumPy's float64 scalar is one), or an int: the scalar paths' input, which
+/// needs no array.
+fn is_number(a: &Bound<'_, PyAny>) -> bool {
+    a.is_instance_of::<PyFloat>() || a.is_exact_instance_of::<PyInt>()
+}
+
 /// `f` over the elements of scalar arguments broadcast together (the isotropic quantities).
 fn apply<'py, const K: usize>(
     py: Python<'py>,
@@ -35,10 +41,7 @@ fn apply<'py, const K: usize>(
     // Python floats, NumPy float64 scalars (a float subclass) and ints only: no array, the
     // value as a NumPy float64 scalar, as a ufunc returns (0.13 µs a call against ~2.5 µs
     // through the array path's NumPy calls).
-    if args
-        .iter()
-        .all(|a| a.is_instance_of::<PyFloat>() || a.is_exact_instance_of::<PyInt>())
-    {
+    if args.iter().all(|a| is_number(a)) {
         let mut x = [0.0; K];
         for (x, a) in x.iter_mut().zip(args) {
             *x = a.extract::<f64>()?;
@@ -78,9 +81,7 @@ fn apply_kernel<'py>(
     k: Kernel,
 ) -> PyResult<PyObject> {
     let check = |a: f64| AnyNdf::new(kind, a, None).map(|_| ());
-    let is_number =
-        |a: &Bound<'py, PyAny>| a.is_instance_of::<PyFloat>() || a.is_exact_instance_of::<PyInt>();
-    if is_number(u) && alpha.is_none_or(is_number) {
+    if is_number(u) && alpha.is_none_or(|a| is_number(a)) {
         let a = match alpha {
             Some(a) => a.extract::<f64>()?,
             None => alpha0,

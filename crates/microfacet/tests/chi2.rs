@@ -213,14 +213,20 @@ fn run_family(kind: NdfKind, shape: Option<f64>, ax: f64, ay: f64, deg: Option<f
             let label = format!("{label} visible θi={deg}°");
             let sample = |u| m.sample_wm(wi.into(), u).into();
             let visible = match (kind, shape) {
-                (NdfKind::StudentT, Some(g)) => Grid::Tail(TailCoordinates {
-                    alpha: 1.5 * ax.max(ay),
-                    q: (1.0 / (g - 1.5)).max(1.0),
-                }),
+                (NdfKind::StudentT, Some(g)) => Grid::Tail(student_t_tail(g, ax, ay)),
                 _ => dcos,
             };
             check_visible_in(&label, &m, wi, &visible, n, seed + deg as u64, sample);
         }
+    }
+}
+
+/// Student-T's visible normals' coordinates: q = 1/(γ − 3/2) bounds the visible density at
+/// the horizon (TailCoordinates), at the reference roughness 1.5α.
+fn student_t_tail(gamma: f64, ax: f64, ay: f64) -> TailCoordinates {
+    TailCoordinates {
+        alpha: 1.5 * ax.max(ay),
+        q: (1.0 / (gamma - 1.5)).max(1.0),
     }
 }
 
@@ -601,10 +607,7 @@ fn family_posterior_range_ends() {
         let seed = 71 + (ax * 100.0) as u64;
         match (kind, shape) {
             (NdfKind::StudentT, Some(g)) if g < 2.0 => {
-                let tail = TailCoordinates {
-                    alpha: 1.5 * ax.max(ay),
-                    q: 1.0 / (g - 1.5),
-                };
+                let tail = student_t_tail(g, ax, ay);
                 check_visible_in(&label, &ex, wi, &tail, 20_000, seed, sample);
             }
             (NdfKind::BesselK, Some(a)) if a <= 1.0 => {
