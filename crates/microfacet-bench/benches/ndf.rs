@@ -569,7 +569,7 @@ fn fitted_fast_paths(i: &Inputs, calls: usize, ggx64: f64, ggx32: f64, exact_ggx
 
 /// The family's fast path (`Microfacet::with_shape`, issue 22): Λ(w) of random directions
 /// through the `Microfacet` type against `Microfacet<_, Ggx>`'s in the same run, f64 and
-/// f32, and each shape's construction (the fit of ln Λ₁).
+/// f32, and each shape's construction (the fit of log₂ Λ₁).
 fn family_fast_paths(i: &Inputs, calls: usize) {
     use microfacet::{BesselK, Ei, Erfc, StudentT, K0};
     println!();

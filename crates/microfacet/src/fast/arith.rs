@@ -5,6 +5,8 @@
 //! independent arguments: exp 6.8 ns against 4.8, ln 6.9 against 4.6; on a dependency
 //! chain about 31 ns against 17–19), but faster than its ln_1p (7.8 against 12.4 ns) and
 //! exp_m1 (6.9 against 9.3 ns): the D·cos samplers' exponential variates use [`ln_1p`].
+//! [`exp2_256`] trades accuracy for speed where 1e-7 is asked (5e-10; a table and a
+//! quadratic): the fitted Λ tables' exponential.
 //!
 //! * [`exp`] and [`exp_m1`]: x = n ln 2 + r, n = round(x log₂e), |r| ≤ ln 2/2, and the
 //!   Taylor series of e^r to r¹³ (remainder below 4e-18). [`exp`] takes it by one Horner
@@ -97,6 +99,54 @@ fn reduce(x: f64) -> (f64, f64) {
 #[inline(always)]
 fn scale(t: f64) -> f64 {
     f64::from_bits(t.to_bits().wrapping_add(1023) << 52)
+}
+
+/// 2^(j/256) for j = 0..256, each by the Taylor series of e^(j ln 2/256) in const arithmetic (tests/fast.rs holds every entry within 2 ulps of libm's `exp2`).
+const EXP2_256THS: [f64; 256] = {
+    let mut t = [1.0; 256];
+    let mut j = 1;
+    while j < 256 {
+        let x = j as f64 * (std::f64::consts::LN_2 / 256.0);
+        // 1 + x(1 + x/2(1 + x/3(…))) from the inside (x < 0.7: the 25th term is below
+        // 1e-26); the outermost steps, near 1, carry the rounding.
+        let (mut p, mut k) = (1.0, 25);
+        while k > 0 {
+            p = 1.0 + p * x / k as f64;
+            k -= 1;
+        }
+        t[j] = p;
+        j += 1;
+    }
+    t
+};
+
+/// 2^(y/256) for y ∈ [−1022·256, 1023·256) within 5e-10 relative (no check of the range:
+/// below it the result is garbage, not 0; NaN is not handled): the fitted Λ tables'
+/// exponential ([`super::fitted`], which holds 256 log₂ Λ, asks for 1e-7 and keeps its
+/// underflowed rows at 2^−1000). With k = round(y) (the magic-number addition, not libm's
+/// `round`, which baseline x86-64 calls) and r = y − k ∈ [−½, ½]: 2^(y/256) =
+/// 2^⌊k/256⌋ · 2^((k mod 256)/256) · e^(r ln 2/256), the middle factor from a table of 256
+/// (2 KiB), the power of two added to its exponent bits, the last 1 + x + x²/2 (|x| ≤ 0.00136:
+/// the remainder is below x³/6 = 4.2e-10). Its chain is two multiply-adds and a table load,
+/// against [`exp`]'s thirteen and libm's call: a fitted Λ 11–12 → ~8 ns (BENCHMARKS.md,
+/// issue 22).
+#[inline(always)]
+pub fn exp2_256(y: f64) -> f64 {
+    const C1: f64 = std::f64::consts::LN_2 / 256.0;
+    const C2: f64 = C1 * C1 / 2.0;
+    let t = y + MAGIC;
+    let bits = t.to_bits();
+    // (Exact: y and k are multiples of y's ulp, and |r| ≤ ½.)
+    let r = y - (t - MAGIC);
+    // The low bits of t hold 2^51 + k, so (bits >> 8) holds 2^43 + ⌊k/256⌋: shifted into the
+    // exponent field it adds ⌊k/256⌋ to the exponent of the table's entry (the bits above
+    // shift out).
+    let scaled = f64::from_bits(
+        EXP2_256THS[(bits & 255) as usize]
+            .to_bits()
+            .wrapping_add((bits >> 8) << 52),
+    );
+    scaled * (1.0 + r * (C1 + r * C2))
 }
 
 /// e^x − 1 for x ≤ 709, within 3e-16 relative (also for tiny x); −1 below −708 (where it

@@ -5,14 +5,16 @@
 //! member serves every roughness, and anisotropy through z = |w.z|/|(αx wx, αy wy)|, formed
 //! from the direction vector (not from its cosine, whose 1 − u² near the normal carries u's
 //! rounding).
-//! [`FittedShape::new`] fits ln Λ₁ by Chebyshev interpolation of the exact Λ (degree 6, eighth
-//! octaves of z, the layout of [`super::fit`]) on [2^−24, 2^k₁), re-expanded to degree 4 on 32
-//! rows per octave; evaluation is the row's polynomial and one exponential. Where Λ₁ itself
+//! [`FittedShape::new`] fits log₂ Λ₁ by Chebyshev interpolation of the exact Λ (degree 6,
+//! eighth octaves of z, the layout of [`super::fit`]) on [2^−24, 2^k₁), re-expanded to degree 4
+//! on 32 rows per octave; evaluation is the row's polynomial and one exponential,
+//! [`super::arith::exp2_256`] (the table holds 256 log₂ Λ₁: a table of 256 powers 2^(j/256)
+//! and a quadratic, 5e-10, inlined: 7.3 ns a Λ(w) against 3.1 for GGX's closed form through
+//! the same type, where libm's `exp` took 11–12; BENCHMARKS.md, issue 22). Where Λ₁ itself
 //! fits as well (within 1e-8 at every segment's ends and middle: Student-T at γ ≤ 3, whose
 //! power-law tail has a bounded log-derivative) the table holds Λ₁ and there is no
-//! exponential ([`FittedShape::is_direct`]): 4.5 ns a Λ(w) against 3.1 for GGX's closed form
-//! through the same type, 11–12 ns with the exponential (BENCHMARKS.md, issue 22); the
-//! exponential tails of the others need ln Λ₁. ln Λ₁ is smooth on both sides: ~ln(σ₁(0)/z) at grazing,
+//! exponential ([`FittedShape::is_direct`]): 4.5 ns. The exponential tails of the others need
+//! the logarithm. ln Λ₁ is smooth on both sides: ~ln(σ₁(0)/z) at grazing,
 //! and near the normal −z² (Ei, Erfc: Beckmann-like tails), −2z (K0, Bessel-K: exponential
 //! ones) or −(2γ − 2) ln z (Student-T's power law), where Λ₁ itself falls by orders of
 //! magnitude across a segment and no short polynomial follows it in relative terms. The ends:
@@ -25,9 +27,10 @@
 //!   3.6e-7 at γ = 50), or the table runs until Λ₁ underflows where that comes first.
 //!
 //! Accuracy (tests/fast.rs, every member over its shape range, z from 1e-9 to 1e6): relative
-//! ≤ 1e-7 where Λ ≥ 1e-200; below, a segment with a node under 1e-300 returns 0 (there ln Λ₁
-//! falls by up to 1e-73 across an eighth octave, Ei at z ≈ 26), so the error is absolute,
-//! ≤ 1e-200, and G1 = 1/(1 + Λ) is 1 either way.
+//! ≤ 1e-7 where Λ ≥ 1e-200; below, a segment with a node under 1e-300 returns 2^−1000 ≈ 9e-302
+//! (there Λ₁ falls by up to 1e-73 across an eighth octave, Ei at z ≈ 26; the value keeps the
+//! exponential's argument in its range), so the error is absolute, ≤ 1e-200, and
+//! G1 = 1/(1 + Λ) is 1 either way.
 //!
 //! D is the exact closed form (f64) at the normal's stretched slopes, the samplers those of the
 //! exact path: D·cos by the radial
@@ -62,10 +65,11 @@ const K0: i32 = -24;
 const K_MAX: i32 = 40;
 /// Below this Λ₁ is treated as 0 (a segment with a node below it evaluates to e^{−800} = 0).
 const TINY: f64 = 1e-300;
-/// ln Λ₁ of an underflowed segment.
-const LN_ZERO: f64 = -800.0;
+/// 256 log₂ Λ₁ of an underflowed segment: 2^−1000 = 9e-302 (within the absolute 1e-200
+/// of the module docs, and inside [`super::arith::exp2_256`]'s range, which has no check).
+const LOG2_ZERO: f64 = -1000.0 * 256.0;
 /// The largest relative error of a Λ₁ table at the fitted segments' ends and middles for
-/// which it replaces the ln Λ₁ table (10× inside the 1e-7 required, as fast::gtr's).
+/// which it replaces the log₂ Λ₁ table (10× inside the 1e-7 required, as fast::gtr's).
 const DIRECT_TOL: f64 = 1e-8;
 
 /// Λ₁ past the table.
@@ -85,7 +89,7 @@ pub struct FittedShape {
     posterior: Posterior,
     /// σ₁(0) = E[p₊] of the α = 1 member.
     sigma0: f64,
-    /// ln Λ₁ (or Λ₁ where `direct`) on the rows of [2^K0, 2^k1).
+    /// 256 log₂ Λ₁ (or Λ₁ where `direct`) on the rows of [2^K0, 2^k1).
     coef: Vec<[f64; N]>,
     direct: bool,
     k1: i32,
@@ -168,7 +172,7 @@ impl FittedShape {
         };
         // Λ itself where that is accurate (no exponential at evaluation): Student-T's power
         // law at small γ, as GTR's tables (within DIRECT_TOL at every segment's ends and
-        // middle, against new exact values); ln Λ otherwise.
+        // middle, against new exact values); 256 log₂ Λ otherwise.
         let mut direct = false;
         let mut coef = Vec::new();
         if matches!(tail, Tail::Power { .. }) {
@@ -188,7 +192,7 @@ impl FittedShape {
             }
         }
         if !direct {
-            coef = table(f64::ln, LN_ZERO);
+            coef = table(|l| 256.0 * l.log2(), LOG2_ZERO);
         }
         Ok(FittedShape {
             sigma0: unit.sigma(0.0),
@@ -201,7 +205,7 @@ impl FittedShape {
         })
     }
 
-    /// Whether the table holds Λ itself (no exponential at evaluation) rather than ln Λ.
+    /// Whether the table holds Λ itself (no exponential at evaluation) rather than log₂ Λ.
     pub fn is_direct(&self) -> bool {
         self.direct
     }
@@ -217,7 +221,11 @@ impl FittedShape {
         if z >= fit::pow2(K0) && z < fit::pow2(self.k1) {
             let p = fit::eval(&self.coef, K0, M, z);
             // (A per-material constant: the branch is always predicted.)
-            return if self.direct { p } else { p.exp() };
+            return if self.direct {
+                p
+            } else {
+                super::arith::exp2_256(p)
+            };
         }
         self.lambda_ends(z)
     }
