@@ -40,6 +40,13 @@ def S1(x):
 out["bessel_k_sum_m1"] = [[x, float(S1(x))] for x in grid("1e-10", "1e4", 80)]
 # check of the U identity the library relies on (derivations.md A.5)
 out["u_identity_max_rel"] = float(max(abs(sqrt(pi) * hyperu(-0.5, 0, 2 * mpf(x)) - (S1(x) + 1)) / (S1(x) + 1) for x in grid("1e-3", "50", 10)))
+# ln K_nu(z) of real order over the orders and arguments the Bessel-K NDF reaches
+# (nu = a - 1, a - 1/2, a for a in [0.1, 100]; z = 2x from subnormal slopes to the tail)
+out["ln_bessel_k"] = [
+    [nu, z, float(mp.log(besselk(mpf(nu), mpf(z))))]
+    for nu in [0.0, 0.1, 0.4, 0.5, 0.9, 1.5, 2.0, 2.5, 10.0, 49.5, 99.5, 100.0]
+    for z in grid("1e-300", "1e4", 48)
+]
 # Carlson R_D(0, y, 1)
 out["elliprd_0_y_1"] = [[y, float(elliprd(0, mpf(y), 1))] for y in grid("1e-6", "1e6", 60)]
 print(json.dumps(out, indent=0))

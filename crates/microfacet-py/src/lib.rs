@@ -440,8 +440,8 @@ impl NDF {
     /// Beckmann mixtures (Student-T, Ei, Erfc, K0, Bessel-K): 'posterior' (the default: the
     /// posterior of the mixing variable, then Beckmann's visible normals; exact in
     /// distribution, ~0.2 µs a sample, from a stream seeded by u rather than a warp of u) or
-    /// 'warp' (the exact inversion: a warp of u, invertible; it inverts quadratures, 15 µs to
-    /// tens of milliseconds a sample). The other NDFs always warp ('warp').
+    /// 'warp' (the exact inversion: a warp of u, invertible; it inverts quadratures, 8 µs to
+    /// 3 ms a sample, 20 ms near Student-T's γ = 3/2). The other NDFs always warp ('warp').
     #[getter]
     fn sampler(&self) -> &'static str {
         match self.material().map(|m| m.sampler) {

@@ -73,3 +73,33 @@ fn hypergeometric_u_identity_holds_in_mpmath() {
     // √π U(−½, 0, 2x) = x eˣ (K₀(x) + K₁(x)) (derivations.md A.5), checked by the script at 30 digits.
     assert!(data()["u_identity_max_rel"].as_f64().unwrap() < 1e-25);
 }
+
+/// ln K_ν(z) of real order (the trapezoidal rule of `special::ln_bessel_k`) against mpmath
+/// over ν ∈ [0, 100] and z ∈ [1e-300, 1e4]: the error of ln K, |Δ ln K| (K's relative error),
+/// within 3(1e-15 + ε(|ln K| + z)), the rounding of ln K itself and the conditioning of
+/// e^{−z} (as `src/special/mod.rs` states).
+#[test]
+fn ln_bessel_k_matches_mpmath() {
+    let d = data();
+    let pts = d["ln_bessel_k"].as_array().unwrap();
+    assert!(pts.len() >= 500);
+    let (mut worst, mut at) = (0.0f64, (0.0, 0.0));
+    for pt in pts {
+        let (nu, z, want) = (
+            pt[0].as_f64().unwrap(),
+            pt[1].as_f64().unwrap(),
+            pt[2].as_f64().unwrap(),
+        );
+        let got = special::ln_bessel_k(nu, z);
+        let scaled = (got - want).abs() / (1e-15 + f64::EPSILON * (want.abs() + z));
+        assert!(scaled.is_finite(), "ln K_{nu}({z}) = {got}, want {want}");
+        if scaled > worst {
+            (worst, at) = (scaled, (nu, z));
+        }
+    }
+    println!(
+        "ln_bessel_k: worst |Δ ln K| / (1e-15 + ε(|ln K| + z)) = {worst:.2} at ν = {}, z = {}",
+        at.0, at.1
+    );
+    assert!(worst <= 3.0, "{worst:e} at ν = {}, z = {}", at.0, at.1);
+}

@@ -364,8 +364,15 @@ pub fn inc_gamma(a: f64, x: f64) -> (f64, f64) {
 /// trapezoidal rule on the whole line (the integrand is even and entire in t, so the rule
 /// converges exponentially: with step h ≤ min(¼, w/2), w = (ν² + z²)^{−¼} the width of the
 /// peak at sinh t* = |ν|/z, the error terms e^{−π²/h} and e^{−2π²w²/h²} are below 1e-17).
-/// Summed in logarithms from the peak (no overflow for large ν or small z). Relative accuracy
-/// ~1e-15 plus the conditioning of e^{−z} (z ε).
+/// Summed in logarithms from the peak (no overflow for large ν or small z), one exponential a
+/// node (cosh t − 1 of the nodes by a recurrence on e^t − 1; 2–2.5× the speed of libm's
+/// cosh, exp and ln_1p at each node, and the same values to the last digits). cosh t − 1 is
+/// formed without cancellation: as cosh t − cosh t*, above z ~ 1e16 it rounded to 0 at
+/// every node of the narrow peak, the terms never fell and the sum ran to its cap of 10⁵
+/// nodes (the Bessel-K visible-normal warp's quadrature nodes in the far tail of P22 met
+/// that: 25 ms a sample, 0.14 ms since). Relative accuracy
+/// 3(1e-15 + ε(|ln K| + z)): the rounding of ln K itself and the conditioning of e^{−z}
+/// (tests/special.rs, against mpmath over ν ∈ [0, 100], z ∈ [1e-300, 1e4]).
 pub fn ln_bessel_k(nu: f64, z: f64) -> f64 {
     if z.is_nan() || nu.is_nan() {
         return f64::NAN;
@@ -377,21 +384,35 @@ pub fn ln_bessel_k(nu: f64, z: f64) -> f64 {
         return f64::NEG_INFINITY;
     }
     let nu = nu.abs();
-    // φ(t) = −z cosh t + ν t + ln((1 + e^{−2νt})/2) = ln(e^{−z cosh t} cosh νt).
-    let phi =
-        |t: f64| -z * t.cosh() + nu * t + (-2.0 * nu * t).exp().ln_1p() - std::f64::consts::LN_2;
     let t_star = (nu / z).asinh();
     let w = (nu * nu + z * z).powf(-0.25);
     let h = (0.5 * w).min(0.25);
-    let peak = phi(t_star);
-    // Σ over k ≥ 0 of e^{φ(kh) − peak}, the k = 0 term halved; past the peak, stop where the
-    // terms are below 1e-18 of the largest (e^{−41.4}).
-    let mut sum = 0.5 * (phi(0.0) - peak).exp();
+    // The peak, φ(t*) with φ(t) = −z cosh t + νt + ln((1 + e^{−2νt})/2) (a scale only: it
+    // cancels, so its own rounding does not matter).
+    let peak = -z * t_star.cosh() + nu * t_star + (-2.0 * nu * t_star).exp().ln_1p()
+        - std::f64::consts::LN_2;
+    // Terms e^{φ(t_k) − peak} = e^{(−z − peak) − z c_k + ν t_k} (1 + g_k)/2 with
+    // c_k = cosh t_k − 1 = e_k²/(2(1 + e_k)), e_k = e^{t_k} − 1, and g_k = e^{−2ν t_k}: one
+    // exponential a term. e_k by e_{k+1} = e_k + e_1 + e_k e_1 (positive terms: ~ε a step),
+    // anchored by libm's expm1 every 8 steps; g_k by products (it is only added to 1).
+    let base = -z - peak;
+    let e1 = h.exp_m1();
+    let q = (-2.0 * nu * h).exp();
+    let (mut e, mut g) = (0.0f64, 1.0f64);
+    let mut sum = 0.5 * base.exp();
     let mut k = 1u32;
     loop {
         let t = k as f64 * h;
-        let d = phi(t) - peak;
-        sum += d.exp();
+        e = if k.is_multiple_of(8) {
+            t.exp_m1()
+        } else {
+            e + e1 + e * e1
+        };
+        g *= q;
+        // (e·(e/…): e² would overflow past t ≈ 354, reached for z below ~1e-150.)
+        let c = e * (e / (2.0 * (1.0 + e)));
+        let d = base - z * c + nu * t;
+        sum += d.exp() * (0.5 + 0.5 * g);
         if t > t_star && d < -41.5 {
             break;
         }
