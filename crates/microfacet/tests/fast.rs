@@ -617,38 +617,6 @@ fn arith_matches_libm() {
     assert_eq!(arith::ln_1p(0.0), 0.0);
 }
 
-/// `fast::arith::exp2_256` (the fitted Λ tables' exponential) against libm's `exp2` over its
-/// whole range, relative; at integer y (r = 0) it is its table's entry times a power of two,
-/// so there every entry is checked to 2 ulps.
-#[test]
-fn exp2_256_matches_libm() {
-    use microfacet::fast::arith::exp2_256;
-    let (mut worst, mut entries) = (0.0f64, 0.0f64);
-    let mut y = -1022.0 * 256.0;
-    while y < 1023.0 * 256.0 {
-        worst = worst.max(rel(exp2_256(y), (y / 256.0).exp2()));
-        y += 0.123_456_7;
-    }
-    for j in -512..512 {
-        let y = j as f64;
-        entries = entries.max(rel(exp2_256(y), (y / 256.0).exp2()));
-    }
-    // Half-way points of k's rounding, and both ends.
-    for y in [
-        -1022.0 * 256.0,
-        1023.0 * 256.0 - 0.5,
-        0.5,
-        -0.5,
-        255.5,
-        -255.5,
-    ] {
-        worst = worst.max(rel(exp2_256(y), (y / 256.0).exp2()));
-    }
-    println!("exp2_256: {worst:.2e} relative, table entries {entries:.2e}");
-    assert!(worst <= 5e-10, "{worst}");
-    assert!(entries <= 2.0 * f64::EPSILON, "{entries}");
-}
-
 /// The f32 GGX slice forms are the f32 scalar paths bit for bit (the same formula in the same
 /// order; only the vector width differs), on every instruction set, edges included.
 #[test]

@@ -8,7 +8,7 @@
 //! [`FittedShape::new`] fits log₂ Λ₁ by Chebyshev interpolation of the exact Λ (degree 6,
 //! eighth octaves of z, the layout of [`super::fit`]) on [2^−24, 2^k₁), re-expanded to degree 4
 //! on 32 rows per octave; evaluation is the row's polynomial and one exponential,
-//! [`super::arith::exp2_256`] (the table holds 256 log₂ Λ₁: a table of 256 powers 2^(j/256)
+//! `arith::exp2_256` (the table holds 256 log₂ Λ₁: a table of 256 powers 2^(j/256)
 //! and a quadratic, 5e-10, inlined: 7.3 ns a Λ(w) against 3.1 for GGX's closed form through
 //! the same type, where libm's `exp` took 11–12; BENCHMARKS.md, issue 22). Where Λ₁ itself
 //! fits as well (within 1e-8 at every segment's ends and middle: Student-T at γ ≤ 3, whose
