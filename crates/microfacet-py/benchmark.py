@@ -65,6 +65,18 @@ def main():
     x = 0.5
     t_scalar = median_ns(lambda: [g.d(x) for _ in range(10_000)], n=10_000)
     print(f"scalar call g.d(0.5) (Python float): {t_scalar / 1000:.3f} µs")
+    # One direction as a list (the path without NumPy's conversions) against the same
+    # direction as a batch of one (the array path).
+    w, u = [0.6, 0.0, 0.8], [0.3, 0.7]
+    wb, ub = np.array([w]), np.array([u])
+    for label, one, batch in [
+        ("g.d_wm(w)", lambda: g.d_wm(w), lambda: g.d_wm(wb)),
+        ("g.pdf_visible(w, w)", lambda: g.pdf_visible(w, w), lambda: g.pdf_visible(wb, wb)),
+        ("g.sample_visible(w, u)", lambda: g.sample_visible(w, u), lambda: g.sample_visible(wb, ub)),
+    ]:
+        t_one = median_ns(lambda: [one() for _ in range(10_000)], n=10_000)
+        t_batch = median_ns(lambda: [batch() for _ in range(10_000)], n=10_000)
+        print(f"single direction {label}: {t_one / 1000:.3f} µs (a batch of one: {t_batch / 1000:.2f} µs)")
 
 
 if __name__ == "__main__":

@@ -194,6 +194,9 @@ fn apply_vec<'py>(
     parallel: usize,
     f: impl Fn(usize, &[&[f64]], &mut [f64]) -> Result<(), ParamError> + Sync,
 ) -> PyResult<Vec<PyObject>> {
+    if let Some(o) = engine::run_single(py, items, outs, &f)? {
+        return Ok(o);
+    }
     let a = Args::new(py, items)?;
     let s: Vec<&[f64]> = (0..items.len())
         .map(|k| a.slice(k))
@@ -251,7 +254,11 @@ fn v3(s: &[f64]) -> [f64; 3] {
 
 /// A named tuple of the package (`Sample`, `BSDFSample`, `Albedo`), built from `fields`.
 fn named<'py>(py: Python<'py>, name: &str, fields: Vec<PyObject>) -> PyResult<PyObject> {
-    let cls = py.import("microfacet._types")?.getattr(name)?;
+    static TYPES: pyo3::sync::GILOnceCell<PyObject> = pyo3::sync::GILOnceCell::new();
+    let types = TYPES.get_or_try_init(py, || {
+        Ok::<_, PyErr>(py.import("microfacet._types")?.into_any().unbind())
+    })?;
+    let cls = types.bind(py).getattr(name)?;
     Ok(cls.call1(pyo3::types::PyTuple::new(py, fields)?)?.unbind())
 }
 

@@ -143,6 +143,70 @@ def test_direction_shapes_and_dtypes():
     assert np.isnan(g.lambda_w([np.nan, 0.0, 1.0]))
 
 
+def test_single_directions_equal_the_array_path():
+    # One direction given as a list, a tuple or a 1-D float64 array (with Python-number
+    # uniforms, μ, φ) takes a path without NumPy's conversions: the same values, bit for bit,
+    # and the same types (NumPy float64 scalars, float64 arrays of the core's length) as a
+    # batch of one through the array path. Anything else (float32, non-contiguous, wrong
+    # lengths, bools) takes the array path, errors included.
+    tiny = np.nextafter(0, 1)
+    ws = [[0.6, 0.0, 0.8], [0, 0, 1], [1.0, 0.0, 0.0], [0.3, -0.4, -0.866], [1.0, 0.0, tiny], [0.0, 0.0, 0.0],
+          [np.nan, 0.0, 1.0], [np.inf, 0.0, 1.0]]
+    us = [[0.25, 0.75], [0.0, 0.0], [1 - 2**-53, 0.5]]
+    u3s = [[0.25, 0.75, 0.1], [0.0, 0.0, 1 - 2**-53]]
+
+    def same(one, batch):
+        if isinstance(one, tuple):
+            assert type(one) is type(batch) and len(one) == len(batch)
+            for a, b in zip(one, batch):
+                same(a, b)
+            return
+        b = batch[0]
+        assert type(one) is type(b) and np.shape(one) == np.shape(b), (type(one), type(b))
+        assert np.asarray(one).dtype == np.asarray(b).dtype
+        np.testing.assert_array_equal(one, b)
+
+    def check(f, *args):
+        # Every argument in each single form against the batch of one.
+        batch = f(*[np.asarray(a, dtype=np.float64)[None] if isinstance(a, list) else np.asarray([a]) for a in args])
+        same(f(*args), batch)
+        same(f(*[tuple(a) if isinstance(a, list) else a for a in args]), batch)
+        same(f(*[np.asarray(a, dtype=np.float64) if isinstance(a, list) else a for a in args]), batch)
+
+    for n in [mf.GGX(0.3, 0.1), mf.Beckmann(0.5), mf.StudentT(0.3, 4.0), mf.Ei(0.4), mf.GTR(0.2, 1.5)]:
+        for w in ws:
+            for f in (n.d_wm, n.lambda_w, n.g1_w, n.sigma_w, n.pdf_dcos):
+                check(f, w)
+            for v in ws[:4]:
+                check(n.pdf_visible, w, v)
+                check(n.g2_w, w, v)
+                check(lambda a, b: n.g2_w(a, b, separable=True), w, v)
+            if w[2] > 0 and np.isfinite(w).all():
+                for u in us:
+                    check(n.sample_visible, w, u)
+        for u in us:
+            check(n.sample_dcos, u)
+        for b in (mf.Conductor(n, eta=[0.2, 0.9, 1.1], k=[3.9, 2.4, 2.2]), mf.Dielectric(n, 1.5)):
+            for w in ws[:5]:
+                for v in ws[:5]:
+                    check(b.eval, w, v)
+                    check(b.pdf, w, v)
+                for u in u3s:
+                    check(b.sample, w, u)
+    g = mf.Beckmann(0.5)
+    check(lambda mu, phi: g.albedo(mu, phi, walks=500, seed=3), 0.5, 0.25)
+    check(lambda mu: mf.single_scattering_albedo(g, mu), 0.7)
+    # The array path's answers for what the single path declines.
+    g = mf.GGX(0.3)
+    assert g.lambda_w(np.array([0.6, 0, 0.8], dtype=np.float32)).dtype == np.float32
+    assert g.lambda_w(np.array([0.6, 9, 0, 9, 0.8])[::2]) == g.lambda_w([0.6, 0, 0.8])
+    assert g.lambda_w([True, False, True]) == g.lambda_w([1.0, 0.0, 1.0])
+    with pytest.raises(ValueError, match="last axis of length 3"):
+        g.d_wm([0.0, 1.0])
+    with pytest.raises(ValueError, match="last axis of length 3"):
+        g.d_wm((0.0, 0.0, 1.0, 0.0))
+
+
 # ---- Samplers.
 
 
