@@ -45,7 +45,7 @@ out["u_identity_max_rel"] = float(max(abs(sqrt(pi) * hyperu(-0.5, 0, 2 * mpf(x))
 out["ln_bessel_k"] = [
     [nu, z, float(mp.log(besselk(mpf(nu), mpf(z))))]
     for nu in [0.0, 0.1, 0.4, 0.5, 0.9, 1.5, 2.0, 2.5, 10.0, 49.5, 99.5, 100.0]
-    for z in grid("1e-300", "1e4", 48)
+    for z in grid("1e-300", "1e4", 48) + [1e-310, 5e-324, 1.5e-150, 2.5e-150]
 ]
 # Carlson R_D(0, y, 1)
 out["elliprd_0_y_1"] = [[y, float(elliprd(0, mpf(y), 1))] for y in grid("1e-6", "1e6", 60)]
