@@ -347,7 +347,7 @@ fn single_numbers(items: &[(&Bound<'_, PyAny>, usize, &str)]) -> Option<Vec<f64>
                 x.push(number(&e)?);
             }
         } else {
-            let v = a.downcast::<PyArray1<f64>>().ok()?.readonly();
+            let v = a.downcast::<PyArray1<f64>>().ok()?.try_readonly().ok()?;
             let v = v.as_slice().ok()?;
             if v.len() != core {
                 return None;
