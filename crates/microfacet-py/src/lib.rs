@@ -1,6 +1,6 @@
 //! Python bindings of `microfacet` (issue 23): every NDF as a class with its quantities,
-//! directions, samplers and albedos vectorised over NumPy arrays ([`engine`]), the BSDFs
-//! ([`bsdf`]) and the albedo tables.
+//! directions, samplers and albedos vectorised over NumPy arrays (`engine`), the BSDFs
+//! (`bsdf`) and the albedo tables.
 //!
 //! Values are the library's exact f64 path ([`AnyNdf`] for the isotropic functions of a
 //! cosine, [`Exact`] for directions, samplers and BSDFs), except GGX's D, Λ and G1, which run
