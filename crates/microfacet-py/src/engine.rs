@@ -20,6 +20,13 @@ use pyo3::types::{PyDict, PySlice, PyTuple};
 use rayon::prelude::*;
 use std::time::{Duration, Instant};
 
+/// A Python float (NumPy's float64 scalar is one), or an int: the scalar paths' input, which
+/// needs no array.
+pub fn is_number(a: &Bound<'_, PyAny>) -> bool {
+    use pyo3::types::{PyFloat, PyInt};
+    a.is_instance_of::<PyFloat>() || a.is_exact_instance_of::<PyInt>()
+}
+
 /// numpy, imported once.
 pub fn numpy(py: Python<'_>) -> PyResult<&Bound<'_, PyAny>> {
     static NUMPY: GILOnceCell<PyObject> = GILOnceCell::new();
@@ -320,31 +327,18 @@ pub fn uniforms<'py>(
 /// of Python numbers (floats, NumPy float64 scalars, ints); the numbers back to back, or
 /// `None` for anything else (batches, float32, other types: the array path decides).
 fn single_numbers(items: &[(&Bound<'_, PyAny>, usize, &str)]) -> Option<Vec<f64>> {
-    use pyo3::types::{PyFloat, PyInt, PyList};
-    let number = |a: &Bound<'_, PyAny>| -> Option<f64> {
-        if a.is_instance_of::<PyFloat>() || a.is_exact_instance_of::<PyInt>() {
-            a.extract::<f64>().ok()
-        } else {
-            None
-        }
-    };
+    use pyo3::types::PyList;
+    let number = |a: &Bound<'_, PyAny>| is_number(a).then(|| a.extract::<f64>().ok())?;
     let mut x = Vec::with_capacity(8);
     for &(a, core, _) in items {
         if core == 0 {
             x.push(number(a)?);
-        } else if let Ok(t) = a.downcast::<PyTuple>() {
-            if t.len() != core {
+        } else if a.is_instance_of::<PyTuple>() || a.is_instance_of::<PyList>() {
+            if a.len().ok()? != core {
                 return None;
             }
-            for e in t.iter() {
-                x.push(number(&e)?);
-            }
-        } else if let Ok(l) = a.downcast::<PyList>() {
-            if l.len() != core {
-                return None;
-            }
-            for e in l.iter() {
-                x.push(number(&e)?);
+            for e in a.try_iter().ok()? {
+                x.push(number(&e.ok()?)?);
             }
         } else {
             let v = a.downcast::<PyArray1<f64>>().ok()?.try_readonly().ok()?;

@@ -13,24 +13,18 @@ mod bsdf;
 mod engine;
 mod material;
 
-use engine::{float64, uniforms, value_error, Args};
+use engine::{float64, is_number, uniforms, value_error, Args};
 use material::{Material, Sampler};
 use microfacet::walk::{self, DielectricFacets, Heights, Microsurface, MirrorFacets};
 use microfacet::{AnyNdf, Distribution, Exact, Ndf, NdfKind, ParamError};
 use numpy::{PyArray1, PyArrayMethods};
 use pyo3::exceptions::PyValueError;
 use pyo3::prelude::*;
-use pyo3::types::{PyFloat, PyInt};
+use pyo3::types::PyFloat;
 use rayon::prelude::*;
 
 /// Above this many elements a cheap function's loop runs on rayon's pool.
 const PARALLEL: usize = 1 << 14;
-
-/// A Python float (NumPy's float64 scalar is one), or an int: the scalar paths' input, which
-/// needs no array.
-fn is_number(a: &Bound<'_, PyAny>) -> bool {
-    a.is_instance_of::<PyFloat>() || a.is_exact_instance_of::<PyInt>()
-}
 
 /// `f` over the elements of scalar arguments broadcast together (the isotropic quantities).
 fn apply<'py, const K: usize>(
