@@ -8,10 +8,10 @@
 set -euo pipefail
 cd "$(dirname "$0")/.."
 export CARGO_TARGET_DIR=target/codegen-check
-cargo rustc --release --quiet -p microfacet --lib -- --emit asm -C codegen-units=1
-asm=$(ls -t "$CARGO_TARGET_DIR"/release/deps/microfacet-*.s | head -n 1)
+cargo rustc --release --quiet -p microsurface --lib -- --emit asm -C codegen-units=1
+asm=$(ls -t "$CARGO_TARGET_DIR"/release/deps/microsurface-*.s | head -n 1)
 report=$(awk '
-  /^_ZN10microfacet4fast5batch[0-9]+[a-z_0-9]+[0-9]+(avx512|avx2)/ { fn = $0; next }
+  /^_ZN12microsurface4fast5batch[0-9]+[a-z_0-9]+[0-9]+(avx512|avx2)/ { fn = $0; next }
   /^_ZN/ { fn = "" }
   fn != "" && /vscatter/ { print "scatter in " fn }
   fn ~ /batch(5ggx_d|10ggx_lambda|6ggx_g1|10beckmann_d)[0-9]/ && /vgather/ { print "gather in " fn }
@@ -21,5 +21,5 @@ if [ -n "$report" ]; then
   echo "$report"
   exit 1
 fi
-n=$(grep -c '^_ZN10microfacet4fast5batch.*avx512' "$asm")
+n=$(grep -c '^_ZN12microsurface4fast5batch.*avx512' "$asm")
 echo "SIMD codegen check: $n AVX-512 slice functions, no scatters, no gathers in the closed-form kernels"

@@ -1,11 +1,11 @@
 #!/usr/bin/env python3
-"""microfacet's rough conductor and dielectric against Mitsuba 3's roughconductor and
+"""microsurface's rough conductor and dielectric against Mitsuba 3's roughconductor and
 roughdielectric (PyPI `mitsuba`, variant scalar_rgb), GGX and Beckmann, separable G (Mitsuba's
 G is the product of two G1), anisotropic conductor, isotropic dielectric (η = 1.5, radiance
-transport), through `microfacet bsdf` (JSON lines). Skips (exit 0) when Mitsuba is not
+transport), through `microsurface bsdf` (JSON lines). Skips (exit 0) when Mitsuba is not
 installed, unless MITSUBA_REQUIRED is set; .ci/run installs it and sets it.
 
-Conventions: Mitsuba's si.wi is microfacet's wo (toward the viewer), its `wo` argument is our
+Conventions: Mitsuba's si.wi is microsurface's wo (toward the viewer), its `wo` argument is our
 wi, and its eval returns f·|cos θi|; both pdfs are per unit solid angle of wi.
 
 Bounds (relative, per value, where the value exceeds 1e-4 of the lobe's peak scale):
@@ -18,7 +18,7 @@ Bounds (relative, per value, where the value exceeds 1e-4 of the lobe's peak sca
   below); f carries two G1 (6.3e-3) and the pdf one (3.1e-3, and so Mitsuba's visible-normal
   pdf integrates to 1 ± 3e-3). Compared with those bounds plus the f32 allowance.
 
-Usage: scripts/mitsuba_compare.py [path/to/microfacet]   (default target/release/microfacet)
+Usage: scripts/mitsuba_compare.py [path/to/microsurface]   (default target/release/microsurface)
 """
 import json
 import math
@@ -38,7 +38,7 @@ except ImportError:
     sys.exit(0)
 
 mi.set_variant("scalar_rgb")
-BIN = sys.argv[1] if len(sys.argv) > 1 else "target/release/microfacet"
+BIN = sys.argv[1] if len(sys.argv) > 1 else "target/release/microsurface"
 F32 = 1e-5
 # Walter et al. 2007's Beckmann G1 approximation against the exact one: its worst relative
 # error over a = cot θ/α, measured here (the bound the Beckmann comparison is held to).

@@ -1,5 +1,5 @@
 #!/usr/bin/env python3
-"""Extra high-precision reference values for microfacet (mpmath), beyond shared/reference.
+"""Extra high-precision reference values for microsurface (mpmath), beyond shared/reference.
 
 Covers what the shared sample does not: tiny and large alpha, alpha and gamma within 1e-12 of
 the removable singularities of GTR, general gamma, grazing and near-normal directions, and the
@@ -7,7 +7,7 @@ slope marginals near p = 0. Each Lambda is computed by two independent routes (t
 integral over P2, and the projected-area "delta integral" over D) and the record keeps their
 agreement.
 
-Usage: python3 scripts/reference.py [NDF ...] > crates/microfacet/tests/data/extra-NAME.json
+Usage: python3 scripts/reference.py [NDF ...] > crates/microsurface/tests/data/extra-NAME.json
 (no NDF: all of them; the test reads every tests/data/extra-*.json)
 Needs: pip install mpmath  (runs in a few minutes on 2 cores)
 """

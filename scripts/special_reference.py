@@ -1,7 +1,7 @@
 #!/usr/bin/env python3
-"""Reference values (mpmath, 30 digits) for the special functions microfacet uses.
+"""Reference values (mpmath, 30 digits) for the special functions microsurface uses.
 
-Usage: python3 scripts/special_reference.py > crates/microfacet/tests/data/special.json
+Usage: python3 scripts/special_reference.py > crates/microsurface/tests/data/special.json
 """
 import json
 from mpmath import mp, mpf, e1, besselk, erf, erfc, exp, sqrt, pi, elliprd, hyperu

@@ -1,6 +1,6 @@
 """D(θ), Λ(θ) and G1(θ) of every NDF at matched roughness, as the NDF pages plot them.
 
-Run: pip install ./crates/microfacet-py matplotlib && python examples/python/ndf_curves.py
+Run: pip install ./crates/microsurface-py matplotlib && python examples/python/ndf_curves.py
 Writes ndf_curves.png (or the path given as the first argument).
 """
 
@@ -12,21 +12,21 @@ matplotlib.use("Agg")
 import matplotlib.pyplot as plt  # noqa: E402
 import numpy as np  # noqa: E402
 
-import microfacet  # noqa: E402
+import microsurface  # noqa: E402
 
 ALPHA = 0.3
 NDFS = [
-    microfacet.Beckmann(ALPHA),
-    microfacet.GGX(ALPHA),
-    microfacet.GTR(ALPHA, 1.5),
-    microfacet.DoubleGGX(ALPHA),
-    microfacet.Exponential(ALPHA),
-    microfacet.StudentT(ALPHA, 4.0),
-    microfacet.Ei(ALPHA),
-    microfacet.Erfc(ALPHA),
-    microfacet.K0(ALPHA),
-    microfacet.BesselK(ALPHA, 2.5),
-    microfacet.GenExponential(ALPHA, 4.0),
+    microsurface.Beckmann(ALPHA),
+    microsurface.GGX(ALPHA),
+    microsurface.GTR(ALPHA, 1.5),
+    microsurface.DoubleGGX(ALPHA),
+    microsurface.Exponential(ALPHA),
+    microsurface.StudentT(ALPHA, 4.0),
+    microsurface.Ei(ALPHA),
+    microsurface.Erfc(ALPHA),
+    microsurface.K0(ALPHA),
+    microsurface.BesselK(ALPHA, 2.5),
+    microsurface.GenExponential(ALPHA, 4.0),
 ]
 
 

@@ -3,7 +3,7 @@
 from ``pdf_visible``), for GGX and Student-T at three incidence angles, as the sampling pages
 show them.
 
-Run: pip install ./crates/microfacet-py matplotlib && python examples/python/sample_histogram.py
+Run: pip install ./crates/microsurface-py matplotlib && python examples/python/sample_histogram.py
 Writes sample_histogram.png (or the path given as the first argument).
 """
 
@@ -15,10 +15,10 @@ matplotlib.use("Agg")
 import matplotlib.pyplot as plt  # noqa: E402
 import numpy as np  # noqa: E402
 
-import microfacet  # noqa: E402
+import microsurface  # noqa: E402
 
 SAMPLES = 200_000
-NDFS = [microfacet.GGX(0.4), microfacet.StudentT(0.4, 2.0 + 1.0)]
+NDFS = [microsurface.GGX(0.4), microsurface.StudentT(0.4, 2.0 + 1.0)]
 ANGLES = [0.0, 45.0, 80.0]
 
 

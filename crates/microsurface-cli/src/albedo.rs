@@ -1,0 +1,209 @@
+//! `microsurface albedo`: the albedo of a rough microsurface by scattering order, from the
+//! random walk of Heitz et al. 2016 (`microsurface::walk`), or single scattering by quadrature.
+//! JSON lines in, one line out per line, in order (errors as in `eval`).
+
+use crate::bsdf::{ndf_alpha, spectrum};
+use crate::eval::field;
+use microsurface::fresnel::{self, One};
+use microsurface::walk::{
+    albedo, single_scattering_albedo, single_scattering_albedo_dielectric_level, Albedo, ByOrder,
+    DielectricFacets, DiffuseFacets, G2Form, Heights, Microsurface, MirrorFacets,
+};
+use microsurface::{Beckmann, Distribution, DoubleGgx, Exponential, Ggx, Gtr, Microfacet, NdfKind};
+use serde_json::{json, Value};
+use std::process::ExitCode;
+
+pub fn run(args: &[String]) -> Result<ExitCode, String> {
+    crate::eval::json_lines("albedo", args, albedo_line)
+}
+
+const FIELDS: [&str; 13] = [
+    "ndf", "alpha", "gamma", "a", "material", "eta", "k", "rho", "mu", "walks", "seed", "method",
+    "heights",
+];
+
+/// Walks per line at most (10¹⁰: hours; a typo's 10²⁰ is an error, not a hang).
+const MAX_WALKS: f64 = 1e10;
+
+enum Facets {
+    /// A conductor: F = 1 without eta and k, else the complex Fresnel term (channel 0 of
+    /// the triples: the albedo is per channel; give one channel per line).
+    Mirror(Option<(f64, f64)>),
+    /// Lambertian facets of albedo ρ.
+    Diffuse(f64),
+    /// A dielectric interface of relative index η.
+    Dielectric(f64),
+}
+
+/// `$body` with `$d` bound to the f64 `Microfacet` of `$kind` at (αx, αy) (GTR's γ from the
+/// request), or the line's error.
+macro_rules! with_material {
+    ($shape:expr, $kind:expr, $ax:expr, $ay:expr, |$d:ident| $body:expr) => {{
+        let err = |e: microsurface::ParamError| e.to_string();
+        match $kind {
+            NdfKind::Ggx => {
+                let $d = Microfacet::<f64, Ggx>::new($ax, $ay).map_err(err)?;
+                $body
+            }
+            NdfKind::Beckmann => {
+                let $d = Microfacet::<f64, Beckmann>::new($ax, $ay).map_err(err)?;
+                $body
+            }
+            NdfKind::DoubleGgx => {
+                let $d = Microfacet::<f64, DoubleGgx>::new($ax, $ay).map_err(err)?;
+                $body
+            }
+            NdfKind::Exponential => {
+                let $d = Microfacet::<f64, Exponential>::new($ax, $ay).map_err(err)?;
+                $body
+            }
+            NdfKind::Gtr => {
+                let $d = Microfacet::<f64, Gtr>::gtr($ax, $ay, $shape.unwrap_or(f64::NAN))
+                    .map_err(err)?;
+                $body
+            }
+            // The rest of the family: the exact path.
+            kind => {
+                let $d = microsurface::Exact::new(kind, $ax, $ay, $shape).map_err(err)?;
+                $body
+            }
+        }
+    }};
+}
+
+fn albedo_line(text: &str) -> Result<Value, String> {
+    let v: Value = serde_json::from_str(text).map_err(|e| format!("not valid JSON: {e}"))?;
+    let obj = v.as_object().ok_or("expected a JSON object")?;
+    crate::eval::known_fields(obj, &FIELDS)?;
+    let (kind, ax, ay, shape) = ndf_alpha(obj)?;
+    let mu = field(obj, "mu")?;
+    if !(mu != 0.0 && mu.abs() <= 1.0) {
+        return Err(format!(
+            "field 'mu' must be in (0, 1] (a dielectric also [-1, 0): from inside), got {mu}"
+        ));
+    }
+    let wo = [((1.0 - mu) * (1.0 + mu)).sqrt(), 0.0, mu];
+    let facets = match obj.get("material").map(|m| m.as_str()) {
+        None | Some(Some("conductor")) => match (obj.contains_key("eta"), obj.contains_key("k")) {
+            (false, false) => Facets::Mirror(None),
+            (true, true) => {
+                Facets::Mirror(Some((spectrum(obj, "eta")?[0], spectrum(obj, "k")?[0])))
+            }
+            _ => return Err("a conductor takes both 'eta' and 'k', or neither (F = 1)".into()),
+        },
+        Some(Some("diffuse")) => {
+            let rho = if obj.contains_key("rho") {
+                field(obj, "rho")?
+            } else {
+                1.0
+            };
+            if !(0.0..=1.0).contains(&rho) {
+                return Err(format!("field 'rho' must be in [0, 1], got {rho}"));
+            }
+            Facets::Diffuse(rho)
+        }
+        Some(Some("dielectric")) => {
+            let eta = field(obj, "eta")?;
+            if !(eta > 0.0 && eta.is_finite()) {
+                return Err(format!("field 'eta' must be a positive number, got {eta}"));
+            }
+            Facets::Dielectric(eta)
+        }
+        _ => {
+            return Err(
+                "field 'material' must be \"conductor\", \"dielectric\" or \"diffuse\"".into(),
+            )
+        }
+    };
+    if mu < 0.0 && !matches!(facets, Facets::Dielectric(_)) {
+        return Err(format!(
+            "field 'mu' must be in (0, 1] for an opaque material, got {mu}"
+        ));
+    }
+    let quadrature = match obj.get("method").map(|m| m.as_str()) {
+        None | Some(Some("walk")) => false,
+        Some(Some("quadrature")) => true,
+        _ => return Err("field 'method' must be \"walk\" or \"quadrature\"".into()),
+    };
+    let heights = match obj.get("heights").map(|m| m.as_str()) {
+        None | Some(Some("uniform")) => Heights::Uniform,
+        Some(Some("gaussian")) => Heights::Gaussian,
+        _ => return Err("field 'heights' must be \"uniform\" or \"gaussian\"".into()),
+    };
+    if quadrature {
+        return match facets {
+            Facets::Mirror(None) => {
+                let e1 = with_material!(shape, kind, ax, ay, |d| single_scattering_albedo(&d, wo));
+                Ok(json!({ "e1": e1 }))
+            }
+            Facets::Dielectric(eta) => {
+                // (The exact height-correlated G2: the walk's order 1.)
+                let (r, t) = with_material!(shape, kind, ax, ay, |d| {
+                    single_scattering_albedo_dielectric_level(&d, wo, eta, G2Form::Exact, 4)
+                });
+                Ok(json!({ "reflect": { "e1": r }, "transmit": { "e1": t } }))
+            }
+            _ => Err("method 'quadrature' is the single-scattering albedo of the F = 1 conductor or a dielectric (no eta and k, or diffuse)".into()),
+        };
+    }
+    let walks = field(obj, "walks")?;
+    if !((1.0..=MAX_WALKS).contains(&walks) && walks.fract() == 0.0) {
+        return Err(format!(
+            "field 'walks' must be a whole number in [1, 1e10], got {walks}"
+        ));
+    }
+    let seed = if obj.contains_key("seed") {
+        let s = field(obj, "seed")?;
+        if !((0.0..1.8e19).contains(&s) && s.fract() == 0.0) {
+            return Err(format!(
+                "field 'seed' must be a whole number in [0, 2^64), got {s}"
+            ));
+        }
+        s as u64
+    } else {
+        0
+    };
+    let a = with_material!(shape, kind, ax, ay, |d| {
+        run_walks(d, heights, &facets, wo, walks as u64, seed)
+    });
+    let by_order = |b: &ByOrder| {
+        json!({
+            "orders": b.orders,
+            "stderr": b.stderr,
+            "total": b.total,
+            "total_stderr": b.total_stderr,
+        })
+    };
+    Ok(match facets {
+        Facets::Dielectric(_) => json!({
+            "reflect": by_order(&a.reflect),
+            "transmit": by_order(&a.transmit),
+            "total": a.total.mean,
+            "total_stderr": a.total.stderr,
+        }),
+        _ => by_order(&a.reflect),
+    })
+}
+
+fn run_walks<D: Distribution<f64>>(
+    d: D,
+    heights: Heights,
+    facets: &Facets,
+    wo: [f64; 3],
+    walks: u64,
+    seed: u64,
+) -> Albedo {
+    let s = Microsurface::new(d, heights);
+    match *facets {
+        Facets::Mirror(None) => albedo(&s, &MirrorFacets(One::<1>), wo, walks, seed),
+        Facets::Mirror(Some((eta, k))) => albedo(
+            &s,
+            &MirrorFacets(fresnel::Conductor { eta: [eta], k: [k] }),
+            wo,
+            walks,
+            seed,
+        ),
+        Facets::Diffuse(rho) => albedo(&s, &DiffuseFacets(rho), wo, walks, seed),
+        Facets::Dielectric(eta) => albedo(&s, &DielectricFacets(eta), wo, walks, seed),
+    }
+}

@@ -1,0 +1,375 @@
+//! `microsurface bsdf`: the single-scattering rough conductor and dielectric BSDFs, JSON lines
+//! in, one line out per line, in order (errors as in `eval`). Local frame, z = normal;
+//! radiance transport; f64.
+
+use crate::eval::field;
+use microsurface::bsdf::{Bsdf, BsdfSample, Conductor, Dielectric, Lobe, Masking};
+use microsurface::fresnel::{self, One};
+use microsurface::walk::{ByOrder, DielectricFacets, MirrorFacets, MultipleScattering};
+use microsurface::{Beckmann, Distribution, DoubleGgx, Exponential, Ggx, Gtr, Microfacet, NdfKind};
+use serde_json::{json, Map, Value};
+use std::process::ExitCode;
+
+pub fn run(args: &[String]) -> Result<ExitCode, String> {
+    // GTR materials fit Λ at construction (1–90 ms): the last one is kept for the next line.
+    let mut cache: Option<(f64, f64, f64, Microfacet<f64, Gtr>)> = None;
+    crate::eval::json_lines("bsdf", args, |text| bsdf_line(text, &mut cache))
+}
+
+const FIELDS: [&str; 14] = [
+    "bsdf", "ndf", "alpha", "gamma", "a", "eta", "k", "g2", "op", "wo", "wi", "u", "samples",
+    "seed",
+];
+
+/// Samples per eval_ms line at most (10⁹: minutes; a typo's 10²⁰ is an error, not a hang).
+const MAX_SAMPLES: f64 = 1e9;
+
+/// Answers one request line.
+fn bsdf_line(
+    text: &str,
+    cache: &mut Option<(f64, f64, f64, Microfacet<f64, Gtr>)>,
+) -> Result<Value, String> {
+    let v: Value = serde_json::from_str(text).map_err(|e| format!("not valid JSON: {e}"))?;
+    let obj = v.as_object().ok_or("expected a JSON object")?;
+    crate::eval::known_fields(obj, &FIELDS)?;
+    let req = Request::parse(obj)?;
+    let (kind, ax, ay, shape) = ndf_alpha(obj)?;
+    let err = |e: microsurface::ParamError| e.to_string();
+    match kind {
+        NdfKind::Ggx => req.answer(Microfacet::<f64, Ggx>::new(ax, ay).map_err(err)?),
+        NdfKind::Beckmann => req.answer(Microfacet::<f64, Beckmann>::new(ax, ay).map_err(err)?),
+        NdfKind::DoubleGgx => req.answer(Microfacet::<f64, DoubleGgx>::new(ax, ay).map_err(err)?),
+        NdfKind::Exponential => {
+            req.answer(Microfacet::<f64, Exponential>::new(ax, ay).map_err(err)?)
+        }
+        NdfKind::Gtr => {
+            let gamma = shape.unwrap_or(f64::NAN);
+            let m = match cache {
+                Some((a, b, g, m)) if (*a, *b, *g) == (ax, ay, gamma) => m.clone(),
+                _ => {
+                    let m = Microfacet::<f64, Gtr>::gtr(ax, ay, gamma).map_err(err)?;
+                    *cache = Some((ax, ay, gamma, m.clone()));
+                    m
+                }
+            };
+            req.answer(m)
+        }
+        // The rest of the family: the exact path.
+        _ => req.answer(microsurface::Exact::new(kind, ax, ay, shape).map_err(err)?),
+    }
+}
+
+/// The request's "ndf", "alpha" (a or [ax, ay]) and shape parameter ("gamma" for gtr,
+/// student_t and gen_exponential, "a" for bessel_k).
+pub(crate) fn ndf_alpha(
+    obj: &Map<String, Value>,
+) -> Result<(NdfKind, f64, f64, Option<f64>), String> {
+    let kind: NdfKind = string(obj, "ndf")?
+        .parse()
+        .map_err(|e: microsurface::family::UnknownNdf| e.to_string())?;
+    let shape = crate::eval::shape(obj, kind)?;
+    let (ax, ay) = alpha(obj)?;
+    Ok((kind, ax, ay, shape))
+}
+
+fn string<'a>(obj: &'a Map<String, Value>, name: &str) -> Result<&'a str, String> {
+    obj.get(name)
+        .ok_or_else(|| format!("missing field '{name}'"))?
+        .as_str()
+        .ok_or_else(|| format!("field '{name}' must be a string"))
+}
+
+/// "alpha": a or [ax, ay].
+fn alpha(obj: &Map<String, Value>) -> Result<(f64, f64), String> {
+    match obj.get("alpha") {
+        Some(Value::Array(a)) => {
+            let v = numbers(a, "alpha", 2)?;
+            Ok((v[0], v[1]))
+        }
+        _ => {
+            let a = field(obj, "alpha")?;
+            Ok((a, a))
+        }
+    }
+}
+
+/// An array of exactly `n` finite numbers.
+fn numbers(a: &[Value], name: &str, n: usize) -> Result<Vec<f64>, String> {
+    let v: Option<Vec<f64>> = a.iter().map(Value::as_f64).collect();
+    match v {
+        Some(v) if v.len() == n && v.iter().all(|x| x.is_finite()) => Ok(v),
+        _ => Err(format!(
+            "field '{name}' must be an array of {n} finite numbers"
+        )),
+    }
+}
+
+fn array(obj: &Map<String, Value>, name: &str, n: usize) -> Result<Vec<f64>, String> {
+    match obj.get(name) {
+        None => Err(format!("missing field '{name}'")),
+        Some(Value::Array(a)) => numbers(a, name, n),
+        Some(_) => Err(format!(
+            "field '{name}' must be an array of {n} finite numbers"
+        )),
+    }
+}
+
+/// A direction: any finite nonzero 3-vector, normalised.
+fn direction(obj: &Map<String, Value>, name: &str) -> Result<[f64; 3], String> {
+    let v = array(obj, name, 3)?;
+    let w = microsurface::frame::normalize([v[0], v[1], v[2]]);
+    if !w[0].is_finite() {
+        return Err(format!("field '{name}' must be a nonzero vector"));
+    }
+    Ok(w)
+}
+
+/// η (scalar or RGB) and k (RGB), per channel.
+pub(crate) fn spectrum(obj: &Map<String, Value>, name: &str) -> Result<[f64; 3], String> {
+    match obj.get(name) {
+        Some(Value::Array(a)) => {
+            let v = numbers(a, name, 3)?;
+            Ok([v[0], v[1], v[2]])
+        }
+        _ => {
+            let x = field(obj, name)?;
+            if !x.is_finite() {
+                return Err(format!("field '{name}' must be finite"));
+            }
+            Ok([x; 3])
+        }
+    }
+}
+
+enum Material {
+    /// F = 1 (no eta, no k).
+    Mirror,
+    Metal {
+        eta: [f64; 3],
+        k: [f64; 3],
+    },
+    Glass {
+        eta: f64,
+    },
+}
+
+enum Op {
+    Eval {
+        wo: [f64; 3],
+        wi: [f64; 3],
+    },
+    Sample {
+        wo: [f64; 3],
+        u: [f64; 3],
+    },
+    /// The multiple-scattering BSDF by order (the random walk's stochastic evaluation).
+    EvalMs {
+        wo: [f64; 3],
+        wi: [f64; 3],
+        samples: u64,
+        seed: u64,
+    },
+}
+
+struct Request {
+    material: Material,
+    masking: Masking,
+    op: Op,
+}
+
+impl Request {
+    fn parse(obj: &Map<String, Value>) -> Result<Self, String> {
+        let material = match string(obj, "bsdf")? {
+            "conductor" => match (obj.contains_key("eta"), obj.contains_key("k")) {
+                (false, false) => Material::Mirror,
+                (true, true) => {
+                    let (eta, k) = (spectrum(obj, "eta")?, spectrum(obj, "k")?);
+                    if eta.iter().any(|&e| e <= 0.0) || k.iter().any(|&k| k < 0.0) {
+                        return Err("a conductor needs eta > 0 and k >= 0".into());
+                    }
+                    Material::Metal { eta, k }
+                }
+                _ => return Err("a conductor takes both 'eta' and 'k', or neither (F = 1)".into()),
+            },
+            "dielectric" => {
+                if obj.contains_key("k") {
+                    return Err("field 'k' is for conductors only".into());
+                }
+                let eta = match obj.get("eta") {
+                    Some(Value::Array(_)) => {
+                        return Err(
+                            "a dielectric's 'eta' is one number (the same in every channel)".into(),
+                        )
+                    }
+                    _ => field(obj, "eta")?,
+                };
+                if !(eta > 0.0 && eta.is_finite()) {
+                    return Err(format!("a dielectric needs a finite eta > 0, got {eta}"));
+                }
+                Material::Glass { eta }
+            }
+            other => {
+                return Err(format!(
+                    "unknown bsdf '{}' (expected conductor or dielectric)",
+                    crate::clip(other)
+                ))
+            }
+        };
+        let masking = match obj.get("g2") {
+            None => Masking::Correlated,
+            Some(v) => match v.as_str() {
+                Some("correlated") => Masking::Correlated,
+                Some("separable") => Masking::Separable,
+                _ => return Err("field 'g2' must be \"correlated\" or \"separable\"".into()),
+            },
+        };
+        let op_name = string(obj, "op")?;
+        if op_name != "eval_ms" && (obj.contains_key("samples") || obj.contains_key("seed")) {
+            return Err("fields 'samples' and 'seed' are for op eval_ms".into());
+        }
+        let op = match op_name {
+            "eval_ms" => {
+                if obj.contains_key("u") {
+                    return Err("field 'u' is for op sample".into());
+                }
+                if masking != Masking::Correlated {
+                    return Err(
+                        "op eval_ms is the random walk, whose G2 is height-correlated (no 'g2')"
+                            .into(),
+                    );
+                }
+                let samples = field(obj, "samples")?;
+                if !((1.0..=MAX_SAMPLES).contains(&samples) && samples.fract() == 0.0) {
+                    return Err(format!(
+                        "field 'samples' must be a whole number in [1, 1e9], got {samples}"
+                    ));
+                }
+                let seed = if obj.contains_key("seed") {
+                    let s = field(obj, "seed")?;
+                    if !((0.0..1.8e19).contains(&s) && s.fract() == 0.0) {
+                        return Err(format!(
+                            "field 'seed' must be a whole number in [0, 2^64), got {s}"
+                        ));
+                    }
+                    s as u64
+                } else {
+                    0
+                };
+                Op::EvalMs {
+                    wo: direction(obj, "wo")?,
+                    wi: direction(obj, "wi")?,
+                    samples: samples as u64,
+                    seed,
+                }
+            }
+            "eval" => {
+                if obj.contains_key("u") {
+                    return Err("field 'u' is for op sample".into());
+                }
+                Op::Eval {
+                    wo: direction(obj, "wo")?,
+                    wi: direction(obj, "wi")?,
+                }
+            }
+            "sample" => {
+                if obj.contains_key("wi") {
+                    return Err("field 'wi' is for op eval".into());
+                }
+                let u = array(obj, "u", 3)?;
+                if u.iter().any(|&x| !(0.0..1.0).contains(&x)) {
+                    return Err("field 'u' must hold three numbers in [0, 1)".into());
+                }
+                Op::Sample {
+                    wo: direction(obj, "wo")?,
+                    u: [u[0], u[1], u[2]],
+                }
+            }
+            other => {
+                return Err(format!(
+                    "unknown op '{}' (expected eval, sample or eval_ms)",
+                    crate::clip(other)
+                ))
+            }
+        };
+        Ok(Request {
+            material,
+            masking,
+            op,
+        })
+    }
+
+    fn answer<D: Distribution<f64> + Clone>(&self, d: D) -> Result<Value, String> {
+        if let Op::EvalMs {
+            wo,
+            wi,
+            samples,
+            seed,
+        } = self.op
+        {
+            let by_order = match self.material {
+                Material::Mirror => MultipleScattering::new(d, MirrorFacets(One::<3>))
+                    .eval_orders(wo, wi, samples, seed),
+                Material::Metal { eta, k } => {
+                    MultipleScattering::new(d, MirrorFacets(fresnel::Conductor { eta, k }))
+                        .eval_orders(wo, wi, samples, seed)
+                }
+                Material::Glass { eta } => {
+                    let [b] = MultipleScattering::new(d, DielectricFacets(eta))
+                        .eval_orders(wo, wi, samples, seed);
+                    [b; 3]
+                }
+            };
+            let per = |f: &dyn Fn(&ByOrder) -> f64| by_order.map(|b| f(&b));
+            let orders: Vec<[f64; 3]> = (0..4).map(|k| per(&|b| b.orders[k])).collect();
+            let stderr: Vec<[f64; 3]> = (0..4).map(|k| per(&|b| b.stderr[k])).collect();
+            return Ok(json!({
+                "orders": orders,
+                "stderr": stderr,
+                "total": per(&|b| b.total),
+                "total_stderr": per(&|b| b.total_stderr),
+            }));
+        }
+        match self.material {
+            Material::Mirror => self.run(
+                &Conductor::new(d, One::<3>).with_masking(self.masking),
+                |f| f,
+            ),
+            Material::Metal { eta, k } => self.run(
+                &Conductor::new(d, fresnel::Conductor { eta, k }).with_masking(self.masking),
+                |f| f,
+            ),
+            Material::Glass { eta } => self
+                .run(&Dielectric::new(d, eta).with_masking(self.masking), |f| {
+                    [f; 3]
+                }),
+        }
+    }
+
+    fn run<B: Bsdf<f64>>(
+        &self,
+        b: &B,
+        rgb: impl Fn(B::Value) -> [f64; 3],
+    ) -> Result<Value, String> {
+        match self.op {
+            Op::Eval { wo, wi } => Ok(json!({ "f": rgb(b.eval(wo, wi)), "pdf": b.pdf(wo, wi) })),
+            Op::EvalMs { .. } => unreachable!("answered in `answer`"),
+            Op::Sample { wo, u } => Ok(match b.sample(wo, u[0], [u[1], u[2]]) {
+                Some(BsdfSample {
+                    wi,
+                    f,
+                    pdf,
+                    lobe,
+                    specular,
+                    ..
+                }) => json!({
+                    "wi": wi,
+                    "f": rgb(f),
+                    "pdf": pdf,
+                    "kind": match lobe { Lobe::Reflection => "reflection", Lobe::Transmission => "transmission" },
+                    "specular": specular,
+                }),
+                None => json!({ "wi": null, "f": [0.0, 0.0, 0.0], "pdf": 0.0, "kind": "rejected" }),
+            }),
+        }
+    }
+}

@@ -1,0 +1,702 @@
+//! The `microsurface` binary, end to end: eval's JSON-lines contract, verify's exit codes, and
+//! one-line errors (never a backtrace) for bad input.
+
+use std::io::Write;
+use std::process::{Command, Output, Stdio};
+
+fn microsurface(args: &[&str], stdin: &str) -> Output {
+    microsurface_bytes(args, stdin.as_bytes())
+}
+
+fn microsurface_bytes(args: &[&str], stdin: &[u8]) -> Output {
+    let mut child = Command::new(env!("CARGO_BIN_EXE_microsurface"))
+        .args(args)
+        .stdin(Stdio::piped())
+        .stdout(Stdio::piped())
+        .stderr(Stdio::piped())
+        .spawn()
+        .unwrap();
+    // Feed stdin from a thread: a large input would otherwise deadlock against a full stdout pipe.
+    let mut pipe = child.stdin.take().unwrap();
+    let input = stdin.to_vec();
+    let feeder = std::thread::spawn(move || {
+        let _ = pipe.write_all(&input);
+    });
+    let out = child.wait_with_output().unwrap();
+    feeder.join().unwrap();
+    out
+}
+
+fn lines(out: &[u8]) -> Vec<serde_json::Value> {
+    String::from_utf8_lossy(out)
+        .lines()
+        .map(|l| serde_json::from_str(l).unwrap())
+        .collect()
+}
+
+#[test]
+fn eval_answers_every_quantity_in_order() {
+    let input = r#"{"ndf":"ggx","alpha":0.5,"quantity":"lambda","u":0.5}
+{"ndf":"gtr","alpha":0.3,"gamma":1.5,"quantity":"lambda","u":0.5}
+{"ndf":"beckmann","alpha":0.3,"quantity":"d","u":0.9}
+{"ndf":"double_ggx","alpha":0.3,"quantity":"p22","p":0.1,"q":0.2}
+{"ndf":"exponential","alpha":0.3,"quantity":"p2","p":0.1}
+{"ndf":"exponential","alpha":0.3,"quantity":"f","x":0.7}
+{"ndf":"gtr","alpha":0.3,"gamma":2.5,"quantity":"sigma","u":-0.4}
+{"ndf":"ggx","alpha":0.3,"quantity":"g1","u":0.2}
+{"ndf":"ggx","alpha":0.3,"quantity":"g2","u_o":0.2,"u_i":0.7}
+"#;
+    let out = microsurface(&["eval"], input);
+    assert!(
+        out.status.success(),
+        "{}",
+        String::from_utf8_lossy(&out.stderr)
+    );
+    let got = lines(&out.stdout);
+    assert_eq!(got.len(), 9);
+    // GGX Λ(0.5) at α = 0.5: (−1 + √(1 + α² tan²θ))/2 with tan²θ = 3.
+    let want = (-1.0 + (1.0f64 + 0.25 * 3.0).sqrt()) / 2.0;
+    assert!((got[0]["value"].as_f64().unwrap() - want).abs() < 1e-15);
+    for g in &got {
+        let v = g["value"].as_f64().expect("a value");
+        assert!(v.is_finite() && v >= 0.0, "{g}");
+    }
+    // f(0.7) of the Exponential NDF is 2 e^{−1.4}/π.
+    let f = 2.0 * (-1.4f64).exp() / std::f64::consts::PI;
+    assert!((got[5]["value"].as_f64().unwrap() / f - 1.0).abs() < 1e-15);
+}
+
+#[test]
+fn eval_reports_bad_lines_and_goes_on() {
+    let input = r#"not json
+{"ndf":"phong","alpha":0.3,"quantity":"d","u":0.5}
+{"ndf":"ggx","alpha":0.3,"quantity":"brdf","u":0.5}
+{"ndf":"ggx","alpha":0.3,"quantity":"d"}
+{"ndf":"ggx","alpha":-1,"quantity":"d","u":0.5}
+{"ndf":"gtr","alpha":0.3,"quantity":"d","u":0.5}
+{"ndf":"gtr","alpha":0.3,"gamma":0,"quantity":"d","u":0.5}
+{"ndf":"ggx","alpha":0.3,"quantity":"d","u":2}
+{"ndf":"ggx","alpha":0.3,"quantity":"lambda","u":0}
+{"ndf":"gtr","alpha":0.3,"gamma":1,"quantity":"f","x":1}
+{"ndf":"ggx","alpha":"0.3","quantity":"d","u":0.5}
+[1,2]
+
+{"ndf":"ggx","alpha":0.3,"quantity":"d","u":0.5}
+"#;
+    let out = microsurface(&["eval"], input);
+    assert_eq!(out.status.code(), Some(1));
+    let got = lines(&out.stdout);
+    assert_eq!(got.len(), 13, "one reply per non-empty input line");
+    let expect = [
+        "not valid JSON",
+        "unknown ndf 'phong'",
+        "unknown quantity 'brdf'",
+        "missing field 'u'",
+        "alpha must be",
+        "missing field 'gamma'",
+        "gamma must be",
+        "must be in [-1, 1]",
+        "lambda diverges at u = 0",
+        "only for shape-invariant",
+        "field 'alpha' must be a number",
+        "expected a JSON object",
+    ];
+    for (g, e) in got.iter().zip(expect) {
+        let msg = g["error"]
+            .as_str()
+            .unwrap_or_else(|| panic!("{g} should be an error"));
+        assert!(msg.contains(e), "'{msg}' should contain '{e}'");
+    }
+    assert!(
+        got[12]["value"].as_f64().is_some(),
+        "the run goes on after errors"
+    );
+    assert!(out.stderr.is_empty());
+}
+
+#[test]
+fn eval_handles_many_lines() {
+    let line = r#"{"ndf":"gtr","alpha":0.4,"gamma":2.5,"quantity":"lambda","u":0.3}"#;
+    let input = format!("{line}\n").repeat(20_000);
+    let out = microsurface(&["eval"], &input);
+    assert!(out.status.success());
+    assert_eq!(String::from_utf8_lossy(&out.stdout).lines().count(), 20_000);
+}
+
+#[test]
+fn verify_subset_passes() {
+    let out = microsurface(
+        &[
+            "verify", "--ndf", "ggx,gtr", "--alpha", "0.3,1.5", "--gamma", "1,2.5",
+        ],
+        "",
+    );
+    let text = String::from_utf8_lossy(&out.stdout);
+    assert!(out.status.success(), "{text}");
+    assert!(text.lines().filter(|l| l.starts_with("PASS")).count() > 20);
+    assert!(!text.contains("FAIL"));
+    assert!(text.trim_end().ends_with("0 failed"), "{text}");
+}
+
+#[test]
+fn bad_arguments_get_one_line_and_exit_2() {
+    for args in [
+        vec![],
+        vec!["frobnicate"],
+        vec!["verify", "--alpha"],
+        vec!["verify", "--alpha", "abc"],
+        vec!["verify", "--alpha", "-1"],
+        vec!["verify", "--ndf", "phong"],
+        vec!["verify", "--gamma", "0", "--ndf", "gtr"],
+        vec!["verify", "--bogus"],
+        vec!["eval", "extra"],
+    ] {
+        let out = microsurface(&args, "");
+        assert_eq!(out.status.code(), Some(2), "{args:?}");
+        let err = String::from_utf8_lossy(&out.stderr);
+        assert_eq!(err.lines().count(), 1, "{args:?}: {err}");
+        assert!(err.starts_with("microsurface: "), "{err}");
+        assert!(out.stdout.is_empty());
+    }
+}
+
+#[test]
+fn help_succeeds() {
+    let out = microsurface(&["--help"], "");
+    assert!(out.status.success());
+    assert!(String::from_utf8_lossy(&out.stdout).contains("verify"));
+}
+
+#[test]
+fn sample_writes_unit_normals() {
+    for args in [
+        vec![
+            "sample",
+            "--ndf",
+            "exponential",
+            "--alpha",
+            "0.5",
+            "--alpha-y",
+            "0.2",
+            "--mode",
+            "visible",
+            "--wi",
+            "1,0,1",
+            "--n",
+            "500",
+            "--seed",
+            "7",
+        ],
+        vec![
+            "sample", "--ndf", "gtr", "--alpha", "0.4", "--gamma", "1.5", "--n", "500",
+        ],
+        vec![
+            "sample",
+            "--ndf",
+            "ggx",
+            "--alpha",
+            "0.1",
+            "--mode",
+            "visible",
+            "--wi",
+            "0.3,0.1,-0.9",
+            "--n",
+            "500",
+        ],
+    ] {
+        let out = microsurface(&args, "");
+        assert!(
+            out.status.success(),
+            "{args:?}: {}",
+            String::from_utf8_lossy(&out.stderr)
+        );
+        let text = String::from_utf8_lossy(&out.stdout);
+        let mut count = 0;
+        for line in text.lines() {
+            let v: Vec<f64> = line.split(' ').map(|s| s.parse().unwrap()).collect();
+            assert_eq!(v.len(), 3);
+            let len = (v[0] * v[0] + v[1] * v[1] + v[2] * v[2]).sqrt();
+            assert!((len - 1.0).abs() < 1e-12 && v[2] > 0.0, "{line}");
+            count += 1;
+        }
+        assert_eq!(count, 500);
+    }
+    // Deterministic for a seed.
+    let a = microsurface(
+        &[
+            "sample", "--ndf", "beckmann", "--alpha", "0.3", "--n", "10", "--seed", "3",
+        ],
+        "",
+    );
+    let b = microsurface(
+        &[
+            "sample", "--ndf", "beckmann", "--alpha", "0.3", "--n", "10", "--seed", "3",
+        ],
+        "",
+    );
+    assert_eq!(a.stdout, b.stdout);
+}
+
+#[test]
+fn sample_rejects_bad_arguments() {
+    for args in [
+        vec!["sample"],
+        vec!["sample", "--ndf", "ggx"],
+        vec!["sample", "--ndf", "ggx", "--alpha", "0"],
+        vec!["sample", "--ndf", "ggx", "--alpha", "0.3", "--mode", "both"],
+        vec!["sample", "--ndf", "ggx", "--alpha", "0.3", "--wi", "1,2"],
+        vec!["sample", "--ndf", "ggx", "--alpha", "0.3", "--wi", "0,0,0"],
+        vec!["sample", "--ndf", "ggx", "--alpha", "0.3", "--n", "-5"],
+        vec!["sample", "--ndf", "gtr", "--alpha", "0.3"],
+        vec![
+            "sample",
+            "--ndf",
+            "gtr",
+            "--alpha",
+            "0.3",
+            "--gamma",
+            "2",
+            "--alpha-y",
+            "0.1",
+        ],
+        vec!["sample", "--ndf", "ggx", "--alpha", "0.3", "--gamma", "2"],
+        vec!["sample", "--ndf", "ggx", "--alpha", "0.3", "--frob", "1"],
+    ] {
+        let out = microsurface(&args, "");
+        assert_eq!(out.status.code(), Some(2), "{args:?}");
+        let err = String::from_utf8_lossy(&out.stderr);
+        assert_eq!(err.lines().count(), 1, "{args:?}: {err}");
+        assert!(out.stdout.is_empty(), "{args:?}");
+    }
+}
+
+/// One line on stderr, prefixed, and exit 2 (issue 19's CLI items).
+fn one_line_error(out: &Output, needle: &str) {
+    let err = String::from_utf8_lossy(&out.stderr);
+    assert_eq!(out.status.code(), Some(2), "{err}");
+    assert_eq!(err.lines().count(), 1, "{err}");
+    assert!(
+        err.starts_with("microsurface: ") && err.contains(needle),
+        "{err}"
+    );
+}
+
+#[test]
+fn every_subcommand_answers_help_and_the_binary_its_version() {
+    for cmd in ["verify", "eval", "bsdf", "sample", "report"] {
+        for flag in ["--help", "-h"] {
+            let out = microsurface(&[cmd, flag], "");
+            assert!(out.status.success(), "{cmd} {flag}");
+            let text = String::from_utf8_lossy(&out.stdout);
+            assert!(text.contains(&format!("microsurface {cmd}")), "{text}");
+        }
+    }
+    // --help wins over other (even bad) options.
+    assert!(microsurface(&["sample", "--bogus", "--help"], "")
+        .status
+        .success());
+    let out = microsurface(&["--version"], "");
+    assert!(out.status.success());
+    assert_eq!(
+        String::from_utf8_lossy(&out.stdout).trim(),
+        format!("microsurface {}", env!("CARGO_PKG_VERSION"))
+    );
+}
+
+#[test]
+fn options_take_name_equals_value() {
+    let a = microsurface(
+        &["sample", "--ndf=ggx", "--alpha=0.3", "--n=3", "--seed=4"],
+        "",
+    );
+    let b = microsurface(
+        &[
+            "sample", "--ndf", "ggx", "--alpha", "0.3", "--n", "3", "--seed", "4",
+        ],
+        "",
+    );
+    assert!(a.status.success(), "{}", String::from_utf8_lossy(&a.stderr));
+    assert_eq!(a.stdout, b.stdout);
+    assert!(microsurface(&["verify", "--ndf=ggx", "--alpha=0.5"], "")
+        .status
+        .success());
+}
+
+#[test]
+fn sample_argument_rules() {
+    one_line_error(
+        &microsurface(&["sample", "--ndf", "gtr", "--alpha", "0.3"], ""),
+        "--gamma is required",
+    );
+    one_line_error(
+        &microsurface(
+            &["sample", "--ndf", "ggx", "--alpha", "0.3", "--wi", "0,0,1"],
+            "",
+        ),
+        "--wi applies to visible normals only",
+    );
+    // A direction whose length overflows is still a direction: (1, 0, 1)/√2. At α = 1e-6 the
+    // visible normals are the macro normal, so compare with --wi 1,0,1.
+    let args = |wi: &'static str| {
+        [
+            "sample", "--ndf", "ggx", "--alpha", "0.5", "--mode", "visible", "--wi", wi, "--n",
+            "50",
+        ]
+    };
+    let huge = microsurface(&args("1.7e308,0,1.7e308"), "");
+    let unit = microsurface(&args("1,0,1"), "");
+    assert!(
+        huge.status.success(),
+        "{}",
+        String::from_utf8_lossy(&huge.stderr)
+    );
+    assert_eq!(huge.stdout, unit.stdout);
+    one_line_error(&microsurface(&args("0,0,0"), ""), "zero vector");
+    // Large GTR exponents (issue 19 item 1): distinct normals, none on the horizon.
+    for (alpha, gamma) in [("1e-3", "60"), ("1e-6", "100"), ("1e3", "100")] {
+        let out = microsurface(
+            &[
+                "sample", "--ndf", "gtr", "--alpha", alpha, "--gamma", gamma, "--n", "1000",
+            ],
+            "",
+        );
+        let text = String::from_utf8_lossy(&out.stdout);
+        let mut rows: Vec<&str> = text.lines().collect();
+        assert!(rows
+            .iter()
+            .all(|r| r.split(' ').nth(2).unwrap().parse::<f64>().unwrap() > 0.0));
+        rows.sort_unstable();
+        rows.dedup();
+        assert_eq!(rows.len(), 1000, "α = {alpha}, γ = {gamma}");
+    }
+}
+
+#[test]
+fn verify_gamma_needs_gtr() {
+    one_line_error(
+        &microsurface(&["verify", "--ndf", "ggx", "--gamma", "2"], ""),
+        "--gamma applies to gtr, student_t and gen_exponential only",
+    );
+}
+
+#[test]
+fn eval_reads_numbers_exactly_and_rejects_unknown_fields() {
+    // 0.920728652799906 read 1 ulp off gave Λ 1.6e-13 away (serde_json without
+    // float_roundtrip); mpmath at the exact binary inputs: 1.9092522572204138e-255.
+    let out = microsurface(
+        &["eval"],
+        r#"{"ndf":"beckmann","alpha":0.09840092919672987,"quantity":"lambda","u":0.920728652799906}
+{"ndf":"ggx","alpha":0.3,"alpha_y":0.5,"quantity":"d","u":0.5}
+{"ndf":"ggx","alpha":0.3,"gamma":2,"quantity":"d","u":0.5}
+{"ndf":"ggx","alpha":0.3,"quantity":"d","u":0.5,"p":1}
+"#,
+    );
+    let got = lines(&out.stdout);
+    let v = got[0]["value"].as_f64().unwrap();
+    assert!((v / 1.9092522572204138e-255 - 1.0).abs() < 1e-14, "{v:e}");
+    for (g, field) in got[1..].iter().zip(["alpha_y", "gamma", "p"]) {
+        let e = g["error"].as_str().expect("an error");
+        assert!(e.contains(&format!("unknown field '{field}'")), "{e}");
+    }
+    assert_eq!(out.status.code(), Some(1));
+}
+
+#[test]
+fn eval_skips_empty_lines_answers_bad_bytes_and_clips_echoes() {
+    let mut input = b"\n   \n{\"ndf\":\"ggx\",\"alpha\":0.3,\"quantity\":\"d\",\"u\":1}\n".to_vec();
+    input.extend_from_slice(b"\xff\xfe{\"ndf\"}\n");
+    input.extend_from_slice(
+        format!("{{\"ndf\":\"{}\",\"alpha\":0.3}}\n", "x".repeat(1 << 20)).as_bytes(),
+    );
+    input.extend_from_slice(b"{\"ndf\":\"ggx\",\"alpha\":0.3,\"quantity\":\"g1\",\"u\":1}\n");
+    let out = microsurface_bytes(&["eval"], &input);
+    let got = lines(&out.stdout);
+    assert_eq!(got.len(), 4, "{got:?}");
+    assert!(got[0]["value"].is_number());
+    assert!(got[1]["error"].as_str().unwrap().contains("UTF-8"));
+    let e = got[2]["error"].as_str().unwrap();
+    assert!(
+        e.contains("unknown ndf") && e.len() < 200,
+        "{} bytes",
+        e.len()
+    );
+    assert_eq!(got[3]["value"].as_f64(), Some(1.0));
+    assert_eq!(out.status.code(), Some(1));
+}
+
+#[test]
+fn report_checks_its_directory_first() {
+    one_line_error(
+        &microsurface(&["report", "--out", "/proc/no/such/dir"], ""),
+        "report: cannot",
+    );
+    // (one_line_error: no progress line, so nothing was computed first.)
+}
+
+#[test]
+fn bsdf_evaluates_and_samples_in_order() {
+    let input = r#"{"bsdf":"conductor","ndf":"ggx","alpha":[0.3,0.1],"eta":[0.2,0.9,1.1],"k":[3.9,2.4,2.2],"op":"eval","wo":[0,0.6,0.8],"wi":[0.3,0,0.95]}
+{"bsdf":"conductor","ndf":"beckmann","alpha":0.3,"g2":"separable","op":"eval","wo":[0,0,1],"wi":[0,0,1]}
+{"bsdf":"dielectric","ndf":"exponential","alpha":0.3,"eta":1.5,"op":"sample","wo":[0,0.6,0.8],"u":[0.9,0.3,0.4]}
+{"bsdf":"dielectric","ndf":"gtr","gamma":1.5,"alpha":0.3,"eta":1.5,"op":"sample","wo":[0,0.6,0.8],"u":[0.0,0.3,0.4]}
+{"bsdf":"conductor","ndf":"double_ggx","alpha":0.3,"eta":1.5,"k":0,"op":"sample","wo":[0,0.6,0.8],"u":[0.5,0.5,0.5]}
+{"bsdf":"conductor","ndf":"ggx","alpha":1e-4,"op":"sample","wo":[0,0.6,0.8],"u":[0.5,0.5,0.5]}
+{"bsdf":"conductor","ndf":"ggx","alpha":1.0,"op":"sample","wo":[0.999,0,0.001],"u":[0.5,0.999,0.999]}
+"#;
+    let out = microsurface(&["bsdf"], input);
+    assert!(
+        out.status.success(),
+        "{}",
+        String::from_utf8_lossy(&out.stderr)
+    );
+    let got = lines(&out.stdout);
+    assert_eq!(got.len(), 7);
+    let f0 = got[0]["f"].as_array().unwrap();
+    assert!(f0.len() == 3 && f0.iter().all(|v| v.as_f64().unwrap() > 0.0));
+    assert!(got[0]["pdf"].as_f64().unwrap() > 0.0);
+    // Normal incidence and exit, F = 1, separable G = 1: f = D(n)/4 = 1/(4πα²).
+    let f = got[1]["f"][0].as_f64().unwrap();
+    assert!(
+        (f - 1.0 / (4.0 * std::f64::consts::PI * 0.09)).abs() < 1e-12 * f,
+        "{f}"
+    );
+    assert_eq!(got[2]["kind"], "transmission");
+    assert!(got[2]["wi"][2].as_f64().unwrap() < 0.0);
+    assert_eq!(got[3]["kind"], "reflection");
+    assert_eq!(got[4]["kind"], "reflection");
+    assert_eq!(got[5]["specular"], true);
+    assert_eq!(got[5]["wi"], serde_json::json!([0.0, -0.6, 0.8]));
+    for g in &got[..6] {
+        assert!(g["pdf"].as_f64().unwrap() > 0.0, "{g}");
+    }
+    // A grazing wo whose reflection falls below the horizon: a rejected sample, not an error.
+    assert!(matches!(
+        got[6]["kind"].as_str(),
+        Some("rejected" | "reflection")
+    ));
+}
+
+#[test]
+fn bsdf_reports_bad_lines_and_goes_on() {
+    let input = r#"{"bsdf":"metal","ndf":"ggx","alpha":0.3,"op":"eval","wo":[0,0,1],"wi":[0,0,1]}
+{"bsdf":"conductor","ndf":"ggx","alpha":0.3,"op":"eval","wo":[0,0,0],"wi":[0,0,1]}
+{"bsdf":"conductor","ndf":"ggx","alpha":0.3,"eta":1.5,"op":"eval","wo":[0,0,1],"wi":[0,0,1]}
+{"bsdf":"dielectric","ndf":"ggx","alpha":0.3,"eta":[1.5,1.5,1.5],"op":"eval","wo":[0,0,1],"wi":[0,0,1]}
+{"bsdf":"conductor","ndf":"ggx","alpha":0.3,"op":"sample","wo":[0,0,1],"u":[0.5,1.0,0.5]}
+{"bsdf":"conductor","ndf":"gtr","gamma":1.5,"alpha":[0.3,0.2],"op":"eval","wo":[0,0,1],"wi":[0,0,1]}
+{"bsdf":"conductor","ndf":"ggx","alpha":-1,"op":"eval","wo":[0,0,1],"wi":[0,0,1]}
+{"bsdf":"conductor","ndf":"ggx","alpha":0.3,"op":"eval","wo":[0,0,1],"wi":[0,0,1],"alpha_y":0.1}
+{"bsdf":"conductor","ndf":"ggx","alpha":0.3,"op":"eval","wo":[0,0,1],"wi":[0,0,1]}
+"#;
+    let out = microsurface(&["bsdf"], input);
+    assert_eq!(out.status.code(), Some(1));
+    let got = lines(&out.stdout);
+    assert_eq!(got.len(), 9);
+    for (g, needle) in got[..8].iter().zip([
+        "unknown bsdf",
+        "nonzero",
+        "both 'eta' and 'k'",
+        "one number",
+        "[0, 1)",
+        "anisotropic only at gamma = 2",
+        "alpha",
+        "unknown field 'alpha_y'",
+    ]) {
+        let e = g["error"].as_str().unwrap_or_else(|| panic!("{g}"));
+        assert!(e.contains(needle), "{e} lacks {needle}");
+    }
+    assert!(got[8]["f"][0].as_f64().unwrap() > 0.0);
+}
+
+#[test]
+fn albedo_by_order_and_by_quadrature() {
+    let input = r#"{"ndf":"ggx","alpha":1,"mu":0.5,"walks":100000,"seed":1}
+{"ndf":"ggx","alpha":1,"mu":0.5,"method":"quadrature"}
+{"ndf":"gtr","alpha":0.3,"gamma":1.5,"mu":0.5,"walks":20000,"heights":"gaussian"}
+{"ndf":"beckmann","alpha":0.5,"mu":0.7,"walks":10000,"material":"diffuse","rho":0.5}
+"#;
+    let out = microsurface(&["albedo"], input);
+    assert_eq!(
+        out.status.code(),
+        Some(0),
+        "{}",
+        String::from_utf8_lossy(&out.stderr)
+    );
+    let got = lines(&out.stdout);
+    assert_eq!(got.len(), 4);
+    // F = 1: every walk keeps its energy; order 1 against the quadrature within 4σ.
+    let e1 = got[1]["e1"].as_f64().unwrap();
+    let (walk1, sd) = (
+        got[0]["orders"][0].as_f64().unwrap(),
+        got[0]["stderr"][0].as_f64().unwrap(),
+    );
+    assert_eq!(got[0]["total"].as_f64(), Some(1.0));
+    assert!((walk1 - e1).abs() < 4.0 * sd, "{walk1} ± {sd} vs {e1}");
+    assert_eq!(got[2]["total"].as_f64(), Some(1.0));
+    // Diffuse facets of albedo 0.5 keep less than half... more than a quarter.
+    let t = got[3]["total"].as_f64().unwrap();
+    assert!(t > 0.25 && t < 0.5, "{t}");
+}
+
+#[test]
+fn albedo_reports_bad_lines_and_goes_on() {
+    let input = r#"{"ndf":"ggx","alpha":1,"mu":0.5,"walks":1e30}
+{"ndf":"ggx","alpha":1,"mu":1.5,"walks":10}
+{"ndf":"ggx","alpha":1,"mu":-0.5,"walks":10}
+{"ndf":"ggx","alpha":1,"mu":0.5,"walks":10,"eta":0.2}
+{"ndf":"ggx","alpha":1,"mu":0.5,"walks":10,"spin":1}
+{"ndf":"ggx","alpha":1,"mu":0.5,"method":"quadrature","material":"diffuse"}
+{"ndf":"ggx","alpha":1,"mu":0.5,"walks":10}
+"#;
+    let out = microsurface(&["albedo"], input);
+    assert_eq!(out.status.code(), Some(1));
+    let got = lines(&out.stdout);
+    assert_eq!(got.len(), 7);
+    for (g, needle) in got[..6].iter().zip([
+        "'walks'",
+        "'mu'",
+        "opaque",
+        "both 'eta' and 'k'",
+        "unknown field 'spin'",
+        "quadrature",
+    ]) {
+        let e = g["error"].as_str().unwrap_or_else(|| panic!("{g}"));
+        assert!(e.contains(needle), "{e} lacks {needle}");
+    }
+    assert_eq!(got[6]["total"].as_f64(), Some(1.0));
+}
+
+/// A dielectric's albedo by side from either side: reflection and transmission by order,
+/// their total 1 (every walk leaves with weight 1), the same numbers for the same seed, and
+/// order 1 against the quadrature.
+#[test]
+fn albedo_of_a_dielectric() {
+    let input = r#"{"ndf":"beckmann","alpha":0.7,"mu":0.5,"walks":2000,"material":"dielectric","eta":1.5,"seed":4}
+{"ndf":"beckmann","alpha":0.7,"mu":-0.5,"walks":2000,"material":"dielectric","eta":1.5,"seed":4}
+{"ndf":"beckmann","alpha":0.7,"mu":0.5,"walks":2000,"material":"dielectric","eta":1.5,"seed":4}
+{"ndf":"beckmann","alpha":0.7,"mu":-0.5,"material":"dielectric","eta":1.5,"method":"quadrature"}
+"#;
+    let out = microsurface(&["albedo"], input);
+    assert_eq!(out.status.code(), Some(0));
+    let mut got = lines(&out.stdout);
+    // Single scattering by quadrature (from inside) against the walk's order 1.
+    let q = got.pop().unwrap();
+    for side in ["reflect", "transmit"] {
+        let e1 = q[side]["e1"].as_f64().unwrap();
+        let (w, sd) = (
+            got[1][side]["orders"][0].as_f64().unwrap(),
+            got[1][side]["stderr"][0].as_f64().unwrap(),
+        );
+        assert!((w - e1).abs() < 4.0 * sd, "{side}: walk {w} ± {sd} vs {e1}");
+    }
+    for g in &got {
+        let (r, t) = (
+            g["reflect"]["total"].as_f64().unwrap(),
+            g["transmit"]["total"].as_f64().unwrap(),
+        );
+        assert!(r > 0.0 && t > 0.0 && (r + t - 1.0).abs() < 1e-12, "{g}");
+        assert_eq!(g["total"].as_f64(), Some(1.0));
+    }
+    assert_eq!(got[0], got[2]);
+    // From inside, total internal reflection keeps more light in.
+    assert!(got[1]["reflect"]["total"].as_f64() > got[0]["reflect"]["total"].as_f64());
+}
+
+/// `bsdf` op eval_ms: order 1 is the single-scattering eval within 4 standard errors, the
+/// total exceeds it, and bad requests are one-line errors.
+#[test]
+fn bsdf_eval_ms() {
+    let input = r#"{"bsdf":"conductor","ndf":"ggx","alpha":1,"op":"eval_ms","wo":[0.6,0,0.8],"wi":[0,0.6,0.8],"samples":20000,"seed":3}
+{"bsdf":"conductor","ndf":"ggx","alpha":1,"op":"eval","wo":[0.6,0,0.8],"wi":[0,0.6,0.8]}
+{"bsdf":"conductor","ndf":"ggx","alpha":1,"op":"eval_ms","wo":[0.6,0,0.8],"wi":[0,0.6,0.8],"samples":0}
+{"bsdf":"conductor","ndf":"ggx","alpha":1,"op":"eval_ms","wo":[0.6,0,0.8],"wi":[0,0.6,0.8],"samples":10,"g2":"separable"}
+{"bsdf":"conductor","ndf":"ggx","alpha":1,"op":"eval","wo":[0.6,0,0.8],"wi":[0,0.6,0.8],"samples":10}
+"#;
+    let out = microsurface(&["bsdf"], input);
+    assert_eq!(out.status.code(), Some(1));
+    let got = lines(&out.stdout);
+    let (ms, ss) = (&got[0], got[1]["f"][0].as_f64().unwrap());
+    let (o1, e1) = (
+        ms["orders"][0][0].as_f64().unwrap(),
+        ms["stderr"][0][0].as_f64().unwrap(),
+    );
+    assert!((o1 - ss).abs() <= 4.0 * e1, "{o1} ± {e1} vs {ss}");
+    assert!(ms["total"][0].as_f64().unwrap() > 1.5 * ss, "{ms}");
+    for (g, needle) in got[2..]
+        .iter()
+        .zip(["'samples'", "height-correlated", "eval_ms"])
+    {
+        let e = g["error"].as_str().unwrap_or_else(|| panic!("{g}"));
+        assert!(e.contains(needle), "{e} lacks {needle}");
+    }
+}
+
+/// `table`: a small walk table as JSON and as the binary form, the same numbers; bad
+/// arguments are one line and exit 2.
+#[test]
+fn table_writes_json_and_binary() {
+    let dir = std::env::temp_dir().join(format!("microsurface-table-{}", std::process::id()));
+    std::fs::create_dir_all(&dir).unwrap();
+    let (json, bin) = (dir.join("t.json"), dir.join("t.mfa"));
+    for out in [&json, &bin] {
+        let o = microsurface(
+            &[
+                "table",
+                "--ndf",
+                "ggx",
+                "--alpha",
+                "0.3:1:2:log",
+                "--mu",
+                "0.2:1:3",
+                "--walks",
+                "5000",
+                "--seed",
+                "2",
+                "--out",
+                out.to_str().unwrap(),
+            ],
+            "",
+        );
+        assert_eq!(
+            o.status.code(),
+            Some(0),
+            "{}",
+            String::from_utf8_lossy(&o.stderr)
+        );
+    }
+    let j: serde_json::Value = serde_json::from_slice(&std::fs::read(&json).unwrap()).unwrap();
+    let g = microsurface::table::Grid::from_bytes(&std::fs::read(&bin).unwrap()).unwrap();
+    assert_eq!(j["alpha"].as_array().unwrap().len(), 2);
+    let e = g.quantities.iter().position(|q| q == "e").unwrap();
+    for ia in 0..2 {
+        for im in 0..3 {
+            assert_eq!(g.value(ia, im, e), 1.0);
+            let r1 = j["values"][ia][im][0].as_f64().unwrap();
+            assert_eq!(r1 as f32, g.value(ia, im, 0));
+        }
+    }
+    for args in [
+        &[
+            "table", "--ndf", "ggx", "--alpha", "0.3:1", "--mu", "0.5:1:2", "--walks", "10",
+            "--out", "x.json",
+        ][..],
+        &[
+            "table", "--ndf", "ggx", "--alpha", "0.3:1:2", "--mu", "0:1:2", "--walks", "10",
+            "--out", "x.json",
+        ],
+        &[
+            "table", "--ndf", "gtr", "--alpha", "0.3:1:2", "--mu", "0.5:1:2", "--walks", "10",
+            "--out", "x.json",
+        ],
+        &[
+            "table", "--ndf", "ggx", "--alpha", "0.3:1:2", "--mu", "0.5:1:2", "--walks", "10",
+            "--out", "x.txt",
+        ],
+    ] {
+        let o = microsurface(args, "");
+        assert_eq!(o.status.code(), Some(2), "{args:?}");
+        let e = String::from_utf8_lossy(&o.stderr);
+        assert_eq!(e.lines().count(), 1, "{e}");
+    }
+    std::fs::remove_dir_all(&dir).ok();
+}

@@ -1,0 +1,440 @@
+//! The BSDFs (`Conductor`, `Dielectric`) with their scattering model (single scattering,
+//! Kulla–Conty or Turquin energy compensation, the random walk), and the albedo tables.
+
+use crate::material::Material;
+use crate::{apply_vec, map_vec, named, v3, wo_of, NDF};
+use microsurface::bsdf::{self, Bsdf, Lobe, Masking, Transport};
+use microsurface::compensate::{AlbedoTable as Table, Compensated, CompensatedDielectric, Scheme};
+use microsurface::fresnel::{self, Fresnel};
+use microsurface::walk::{DielectricFacets, MirrorFacets, MultipleScattering};
+use pyo3::exceptions::PyValueError;
+use pyo3::prelude::*;
+
+/// f's channels: a dielectric's one number, a conductor's N.
+trait Channels: Copy {
+    const N: usize;
+    fn write(&self, out: &mut [f64]);
+}
+
+impl Channels for f64 {
+    const N: usize = 1;
+    fn write(&self, out: &mut [f64]) {
+        out[0] = *self;
+    }
+}
+
+impl<const M: usize> Channels for [f64; M] {
+    const N: usize = M;
+    fn write(&self, out: &mut [f64]) {
+        out[..M].copy_from_slice(self);
+    }
+}
+
+/// A BSDF of any model, its value written as channels.
+trait AnyBsdf: Send + Sync {
+    fn channels(&self) -> usize;
+    fn eval(&self, wo: [f64; 3], wi: [f64; 3], out: &mut [f64]);
+    fn pdf(&self, wo: [f64; 3], wi: [f64; 3]) -> f64;
+    /// wi (3), f (channels), pdf, lobe (0 rejected, 1 reflection, 2 transmission),
+    /// specular (0/1), η'.
+    fn sample(&self, wo: [f64; 3], uc: f64, u: [f64; 2], out: &mut [f64]);
+}
+
+impl<B: Bsdf<f64> + Send + Sync> AnyBsdf for B
+where
+    B::Value: Channels,
+{
+    fn channels(&self) -> usize {
+        B::Value::N
+    }
+    fn eval(&self, wo: [f64; 3], wi: [f64; 3], out: &mut [f64]) {
+        Bsdf::eval(self, wo, wi).write(out);
+    }
+    fn pdf(&self, wo: [f64; 3], wi: [f64; 3]) -> f64 {
+        Bsdf::pdf(self, wo, wi)
+    }
+    fn sample(&self, wo: [f64; 3], uc: f64, u: [f64; 2], out: &mut [f64]) {
+        let c = B::Value::N;
+        match Bsdf::sample(self, wo, uc, u) {
+            Some(s) => {
+                out[..3].copy_from_slice(&s.wi);
+                s.f.write(&mut out[3..3 + c]);
+                out[3 + c] = s.pdf;
+                out[4 + c] = match s.lobe {
+                    Lobe::Reflection => 1.0,
+                    Lobe::Transmission => 2.0,
+                };
+                out[5 + c] = if s.specular { 1.0 } else { 0.0 };
+                out[6 + c] = s.eta;
+            }
+            // (Zeros: no direction, f = pdf = 0, lobe 0.)
+            None => out.fill(0.0),
+        }
+    }
+}
+
+fn masking(s: &str) -> PyResult<Masking> {
+    match s {
+        "correlated" => Ok(Masking::Correlated),
+        "separable" => Ok(Masking::Separable),
+        _ => Err(PyValueError::new_err(format!(
+            "masking must be 'correlated' or 'separable' (got {s:?})"
+        ))),
+    }
+}
+
+fn transport(s: &str) -> PyResult<Transport> {
+    match s {
+        "radiance" => Ok(Transport::Radiance),
+        "importance" => Ok(Transport::Importance),
+        _ => Err(PyValueError::new_err(format!(
+            "transport must be 'radiance' or 'importance' (got {s:?})"
+        ))),
+    }
+}
+
+/// The scattering model.
+#[derive(Clone, Copy, PartialEq)]
+enum Model {
+    Single,
+    Compensated(Scheme),
+    Walk,
+}
+
+fn model(s: &str, m: Masking) -> PyResult<Model> {
+    let model = match s {
+        "single" => Model::Single,
+        "kulla_conty" => Model::Compensated(Scheme::KullaConty),
+        "turquin" => Model::Compensated(Scheme::Turquin),
+        "walk" => Model::Walk,
+        _ => {
+            return Err(PyValueError::new_err(format!(
+                "scattering must be 'single', 'kulla_conty', 'turquin' or 'walk' (got {s:?})"
+            )))
+        }
+    };
+    if model != Model::Single && m != Masking::Correlated {
+        return Err(PyValueError::new_err(
+            "the multiple-scattering models use the height-correlated G2: masking='correlated'",
+        ));
+    }
+    Ok(model)
+}
+
+/// A number or a sequence of numbers per channel.
+fn channels(x: Option<&Bound<'_, PyAny>>) -> PyResult<Option<Vec<f64>>> {
+    match x {
+        None => Ok(None),
+        Some(x) => match x.extract::<f64>() {
+            Ok(v) => Ok(Some(vec![v])),
+            Err(_) => Ok(Some(x.extract::<Vec<f64>>()?)),
+        },
+    }
+}
+
+fn conductor_of<const N: usize, Fr>(
+    d: Material,
+    fr: Fr,
+    m: Masking,
+    model: Model,
+) -> Box<dyn AnyBsdf>
+where
+    Fr: Fresnel<f64, N> + Send + Sync + 'static,
+    MirrorFacets<Fr>: microsurface::walk::Facets<N>,
+{
+    match model {
+        Model::Single => Box::new(bsdf::Conductor::new(d, fr).with_masking(m)),
+        Model::Compensated(s) => Box::new(Compensated::new(d, fr, s)),
+        Model::Walk => Box::new(MultipleScattering::new(d, MirrorFacets(fr))),
+    }
+}
+
+/// The methods of both BSDF classes.
+#[pyclass(name = "BSDF", subclass, frozen, module = "microsurface")]
+pub struct PyBsdf {
+    inner: Box<dyn AnyBsdf>,
+}
+
+#[pymethods]
+impl PyBsdf {
+    /// The number of channels of f (1 for a dielectric and a one-channel conductor).
+    #[getter]
+    fn channels(&self) -> usize {
+        self.inner.channels()
+    }
+
+    /// f(wo, wi) without the cosine, for directions of shape (..., 3) broadcast together:
+    /// shape (...) for one channel, (..., channels) otherwise. The walk model returns one
+    /// stochastic estimate (unbiased; seeded by the directions).
+    fn eval(
+        &self,
+        py: Python<'_>,
+        wo: &Bound<'_, PyAny>,
+        wi: &Bound<'_, PyAny>,
+    ) -> PyResult<PyObject> {
+        let c = self.inner.channels();
+        let b = &self.inner;
+        let outs = [if c == 1 { 0 } else { c }];
+        let mut o = apply_vec(
+            py,
+            &[(wo, 3, "wo"), (wi, 3, "wi")],
+            &outs,
+            256,
+            |_, a, o| {
+                b.eval(v3(a[0]), v3(a[1]), o);
+                Ok(())
+            },
+        )?;
+        Ok(o.remove(0))
+    }
+
+    /// The density of ``sample``'s wi per unit solid angle (0 for delta lobes; the walk
+    /// model's MIS proxy, see the crate's walk module).
+    fn pdf(
+        &self,
+        py: Python<'_>,
+        wo: &Bound<'_, PyAny>,
+        wi: &Bound<'_, PyAny>,
+    ) -> PyResult<PyObject> {
+        let b = &self.inner;
+        map_vec(py, &[(wo, 3, "wo"), (wi, 3, "wi")], |a| {
+            b.pdf(v3(a[0]), v3(a[1]))
+        })
+    }
+
+    /// Directions wi from wo: ``sample(wo, u)`` with uniforms u of shape (..., 3) (the lobe
+    /// choice, then the normal's two), or ``sample(wo, rng, n)`` with a
+    /// ``numpy.random.Generator``. Returns ``BSDFSample(wi, f, pdf, lobe, specular, eta)``;
+    /// a rejected sample (a reflection below the horizon, wo on it, ...) has wi = 0, f = 0,
+    /// pdf = 0 and lobe 0 (else 1 reflection, 2 transmission); specular marks the delta
+    /// lobes of a smooth surface (α < 1e-3), whose f and pdf are weights; eta is the
+    /// relative index along the path (1 for a reflection).
+    #[pyo3(signature = (wo, u, n = None))]
+    fn sample(
+        &self,
+        py: Python<'_>,
+        wo: &Bound<'_, PyAny>,
+        u: &Bound<'_, PyAny>,
+        n: Option<usize>,
+    ) -> PyResult<PyObject> {
+        let c = self.inner.channels();
+        let b = &self.inner;
+        let u = crate::engine::uniforms(py, u, n, 3)?;
+        let outs = [3, if c == 1 { 0 } else { c }, 0, 0, 0, 0];
+        let mut o = apply_vec(py, &[(wo, 3, "wo"), (&u, 3, "u")], &outs, 256, |_, a, o| {
+            b.sample(v3(a[0]), a[1][0], [a[1][1], a[1][2]], o);
+            Ok(())
+        })?;
+        // (lobe as int8, specular as bool.)
+        let np = crate::engine::numpy(py)?;
+        o[3] = o[3]
+            .bind(py)
+            .call_method1("astype", (np.getattr("int8")?,))?
+            .unbind();
+        o[4] = o[4]
+            .bind(py)
+            .call_method1("astype", (np.getattr("bool_")?,))?
+            .unbind();
+        named(py, "BSDFSample", o)
+    }
+}
+
+/// Conductor(ndf, eta=None, k=None, masking='correlated', scattering='single'): a rough
+/// conductor of the material ``ndf`` (any NDF class, anisotropic included), with the exact
+/// Fresnel reflectance of the complex index η + ik: floats for one channel, sequences of N
+/// for N channels (RGB: 3); eta=None is F = 1 (the white furnace). ``scattering``:
+/// 'single' (D G2 F/(4|cos θo||cos θi|), pbrt-v4's and Mitsuba's lobe), 'kulla_conty' or
+/// 'turquin' (energy compensation from the albedo table: shipped for GGX, Beckmann, Double
+/// GGX, the Exponential NDF and GTR at γ = 1, 2; computed otherwise), or 'walk' (the
+/// exact multiple scattering of Heitz et al. 2016 by the microsurface random walk;
+/// stochastic eval).
+#[pyclass(extends = PyBsdf, frozen, module = "microsurface")]
+pub struct Conductor;
+
+#[pymethods]
+impl Conductor {
+    #[new]
+    #[pyo3(signature = (ndf, eta = None, k = None, masking = "correlated", scattering = "single"))]
+    fn new(
+        ndf: PyRef<'_, NDF>,
+        eta: Option<&Bound<'_, PyAny>>,
+        k: Option<&Bound<'_, PyAny>>,
+        masking: &str,
+        scattering: &str,
+    ) -> PyResult<(Self, PyBsdf)> {
+        let d = ndf.material()?;
+        let (eta, k) = (channels(eta)?, channels(k)?);
+        let m = self::masking(masking)?;
+        let model = self::model(scattering, m)?;
+        let inner = match (eta, k) {
+            (None, None) => conductor_of::<1, _>(d, fresnel::One::<1>, m, model),
+            (Some(eta), k) => {
+                let k = k.unwrap_or_else(|| vec![0.0; eta.len()]);
+                if k.len() != eta.len() || eta.is_empty() {
+                    return Err(PyValueError::new_err(
+                        "eta and k must have the same number of channels (at least one)",
+                    ));
+                }
+                if eta.iter().chain(&k).any(|x| !x.is_finite()) || eta.iter().any(|&x| x <= 0.0) {
+                    return Err(PyValueError::new_err(
+                        "eta must be positive and finite, k finite",
+                    ));
+                }
+                match eta.len() {
+                    1 => conductor_of::<1, _>(
+                        d,
+                        fresnel::Conductor {
+                            eta: [eta[0]],
+                            k: [k[0]],
+                        },
+                        m,
+                        model,
+                    ),
+                    3 => conductor_of::<3, _>(
+                        d,
+                        fresnel::Conductor {
+                            eta: [eta[0], eta[1], eta[2]],
+                            k: [k[0], k[1], k[2]],
+                        },
+                        m,
+                        model,
+                    ),
+                    n => {
+                        return Err(PyValueError::new_err(format!(
+                            "1 or 3 channels are supported (got {n})"
+                        )))
+                    }
+                }
+            }
+            (None, Some(_)) => return Err(PyValueError::new_err("k needs eta")),
+        };
+        Ok((Conductor, PyBsdf { inner }))
+    }
+}
+
+/// Dielectric(ndf, eta, masking='correlated', transport='radiance', scattering='single'):
+/// a rough dielectric interface of relative index η = η_inside/η_outside (η > 0, ≠ 1),
+/// reflection and transmission (Walter et al. 2007), as pbrt-v4's; transport 'radiance'
+/// divides a transmitted f by η'² (Veach 1997, §5.2). ``scattering`` as for
+/// ``Conductor`` ('kulla_conty'/'turquin' use the dielectric tables, computed here).
+#[pyclass(extends = PyBsdf, frozen, module = "microsurface")]
+pub struct Dielectric;
+
+#[pymethods]
+impl Dielectric {
+    #[new]
+    #[pyo3(signature = (ndf, eta, masking = "correlated", transport = "radiance", scattering = "single"))]
+    fn new(
+        ndf: PyRef<'_, NDF>,
+        eta: f64,
+        masking: &str,
+        transport: &str,
+        scattering: &str,
+    ) -> PyResult<(Self, PyBsdf)> {
+        let d = ndf.material()?;
+        if !(eta > 0.0 && eta.is_finite() && eta != 1.0) {
+            return Err(PyValueError::new_err(format!(
+                "eta must be a positive finite number other than 1 (got {eta})"
+            )));
+        }
+        let m = self::masking(masking)?;
+        let t = self::transport(transport)?;
+        let inner: Box<dyn AnyBsdf> = match self::model(scattering, m)? {
+            Model::Single => Box::new(
+                bsdf::Dielectric::new(d, eta)
+                    .with_masking(m)
+                    .with_transport(t),
+            ),
+            Model::Compensated(s) => {
+                Box::new(CompensatedDielectric::new(d, eta, s).with_transport(t))
+            }
+            Model::Walk => {
+                Box::new(MultipleScattering::new(d, DielectricFacets(eta)).with_transport(t))
+            }
+        };
+        Ok((Dielectric, PyBsdf { inner }))
+    }
+}
+
+/// AlbedoTable(ndf): the directional albedo E(μ) of the single-scattering conductor with
+/// F = 1 (height-correlated G2) and its cosine-weighted average, as energy compensation
+/// uses them: interpolated from the tables the library ships where ``ndf`` is one of them
+/// (isotropic GGX, Beckmann, Double GGX, the Exponential NDF, GTR γ ∈ {1, 2}, α ∈ [0.01,
+/// 4]), else 33 quadratures computed here (tens of milliseconds to seconds; Ctrl-C
+/// interrupts the wait).
+#[pyclass(frozen, module = "microsurface")]
+pub struct AlbedoTable {
+    table: Table,
+}
+
+#[pymethods]
+impl AlbedoTable {
+    #[new]
+    fn new(py: Python<'_>, ndf: PyRef<'_, NDF>) -> PyResult<Self> {
+        let d = ndf.material()?;
+        let table = crate::engine::interruptible(py, move || Table::new(&d))?;
+        Ok(AlbedoTable { table })
+    }
+
+    /// E(μ), cubic in √μ between the nodes, vectorised over μ.
+    fn e(&self, py: Python<'_>, mu: &Bound<'_, PyAny>) -> PyResult<PyObject> {
+        let t = &self.table;
+        map_vec(py, &[(mu, 0, "mu")], |a| t.e(a[0][0]))
+    }
+
+    /// E_avg = 2∫E(μ)μ dμ.
+    #[getter]
+    fn e_avg(&self) -> f64 {
+        self.table.e_avg()
+    }
+
+    /// The energy single scattering loses, averaged: 2∫max(0, 1 − E(μ))μ dμ.
+    #[getter]
+    fn lost_avg(&self) -> f64 {
+        self.table.lost_avg()
+    }
+}
+
+/// The single-scattering albedo E₁(wo) of the F = 1 conductor (height-correlated G2) by
+/// adaptive quadrature (≤ 1e-9 relative requested, 1e-6 guaranteed): at cos θo = ``mu``
+/// and azimuth ``phi``, broadcast. Each element is a quadrature (milliseconds; the family's
+/// singular members longer): parallel, Ctrl-C between chunks. ``alpha``: an array of
+/// roughnesses broadcast with mu and phi (αy scaled with α).
+#[pyfunction]
+#[pyo3(signature = (ndf, mu, phi = None, alpha = None))]
+fn single_scattering_albedo(
+    py: Python<'_>,
+    ndf: PyRef<'_, NDF>,
+    mu: &Bound<'_, PyAny>,
+    phi: Option<&Bound<'_, PyAny>>,
+    alpha: Option<&Bound<'_, PyAny>>,
+) -> PyResult<PyObject> {
+    if alpha.is_none() {
+        ndf.material()?;
+    }
+    // (A copy: the loop runs without the GIL.)
+    let ndf: NDF = *ndf;
+    let zero = pyo3::types::PyFloat::new(py, 0.0).into_any();
+    let nan = pyo3::types::PyFloat::new(py, f64::NAN).into_any();
+    let phi = phi.unwrap_or(&zero);
+    let items = [
+        (mu, 0, "mu"),
+        (phi, 0, "phi"),
+        (alpha.unwrap_or(&nan), 0, "alpha"),
+    ];
+    let mut o = apply_vec(py, &items, &[0], 2, |_, a, o| {
+        let d = ndf.material_at(a[2][0])?;
+        o[0] = microsurface::walk::single_scattering_albedo(&d, wo_of(a[0][0], a[1][0]));
+        Ok(())
+    })?;
+    Ok(o.remove(0))
+}
+
+pub fn register(m: &Bound<'_, PyModule>) -> PyResult<()> {
+    m.add_class::<PyBsdf>()?;
+    m.add_class::<Conductor>()?;
+    m.add_class::<Dielectric>()?;
+    m.add_class::<AlbedoTable>()?;
+    m.add_function(wrap_pyfunction!(single_scattering_albedo, m)?)?;
+    Ok(())
+}

@@ -1,0 +1,905 @@
+//! Python bindings of `microsurface` (issue 23): every NDF as a class with its quantities,
+//! directions, samplers and albedos vectorised over NumPy arrays (`engine`), the BSDFs
+//! (`bsdf`) and the albedo tables.
+//!
+//! Values are the library's exact f64 path ([`AnyNdf`] for the isotropic functions of a
+//! cosine, [`Exact`] for directions, samplers and BSDFs), except GGX's D, Λ and G1, which run
+//! the fast closed forms (`microsurface::fast::ggx`, the slice forms of `fast::batch`; within
+//! 3e-15 of the exact path) and for float32 input their f32 slice forms: a float64 result is
+//! bit for bit what the Rust call returns (tests/test_api.py compares with the `microsurface`
+//! command line).
+
+mod bsdf;
+mod engine;
+mod material;
+
+use engine::{float64, is_number, uniforms, value_error, Args};
+use material::{Material, Sampler};
+use microsurface::walk::{self, DielectricFacets, Heights, Microsurface, MirrorFacets};
+use microsurface::{AnyNdf, Distribution, Exact, Ndf, NdfKind, ParamError};
+use numpy::{PyArray1, PyArrayMethods};
+use pyo3::exceptions::PyValueError;
+use pyo3::prelude::*;
+use pyo3::types::PyFloat;
+use rayon::prelude::*;
+
+/// Above this many elements a cheap function's loop runs on rayon's pool.
+const PARALLEL: usize = 1 << 14;
+
+/// `f` over the elements of scalar arguments broadcast together (the isotropic quantities).
+fn apply<'py, const K: usize>(
+    py: Python<'py>,
+    args: [&Bound<'py, PyAny>; K],
+    f: impl Fn([f64; K]) -> Result<f64, ParamError> + Sync,
+) -> PyResult<PyObject> {
+    // Python floats, NumPy float64 scalars (a float subclass) and ints only: no array, the
+    // value as a NumPy float64 scalar, as a ufunc returns (0.13 µs a call against ~2.5 µs
+    // through the array path's NumPy calls).
+    if args.iter().all(|a| is_number(a)) {
+        let mut x = [0.0; K];
+        for (x, a) in x.iter_mut().zip(args) {
+            *x = a.extract::<f64>()?;
+        }
+        return Ok(float64(py)?.call1((f(x).map_err(value_error)?,))?.unbind());
+    }
+    let items: Vec<_> = args.iter().map(|&a| (a, 0, "argument")).collect();
+    let a = Args::new(py, &items)?;
+    let s: Vec<&[f64]> = (0..K).map(|k| a.slice(k)).collect::<PyResult<_>>()?;
+    let mut out = a.run(py, 1, &[0], PARALLEL, |i, o| {
+        o[0] = f(std::array::from_fn(|k| s[k][i]))?;
+        Ok(())
+    })?;
+    Ok(out.remove(0))
+}
+
+/// A quantity with a fast path in the library: its scalar function and slice form
+/// (`microsurface::fast`), used where they are the closed form itself (GGX's D, Λ and G1:
+/// within 2e-15 of the exact path, and the slice form bit-equal to the scalar one).
+#[derive(Clone, Copy)]
+struct Kernel {
+    scalar: fn(f64, f64) -> f64,
+    slice: fn(&[f64], &[f64], &mut [f64]),
+    slice32: fn(&[f32], &[f32], &mut [f32]),
+}
+
+/// Elements a slice kernel takes at a time (L1-resident, with the constant-α buffer).
+const BLOCK: usize = 4096;
+
+/// `kernel` over u (and an array α, validated, if given; else `alpha0`).
+fn apply_kernel<'py>(
+    py: Python<'py>,
+    kind: NdfKind,
+    u: &Bound<'py, PyAny>,
+    alpha: Option<&Bound<'py, PyAny>>,
+    alpha0: f64,
+    k: Kernel,
+) -> PyResult<PyObject> {
+    let check = |a: f64| AnyNdf::new(kind, a, None).map(|_| ());
+    if is_number(u) && alpha.is_none_or(|a| is_number(a)) {
+        let a = match alpha {
+            Some(a) => a.extract::<f64>()?,
+            None => alpha0,
+        };
+        check(a).map_err(value_error)?;
+        return Ok(float64(py)?
+            .call1(((k.scalar)(u.extract::<f64>()?, a),))?
+            .unbind());
+    }
+    // float32 throughout: the f32 slice forms.
+    let np = engine::numpy(py)?;
+    let float32 = np.getattr("float32")?;
+    let ua = np.call_method1("asarray", (u,))?;
+    let aa = alpha
+        .map(|a| np.call_method1("asarray", (a,)))
+        .transpose()?;
+    if ua.getattr("dtype")?.eq(&float32)?
+        && aa
+            .as_ref()
+            .map_or(Ok(true), |a| a.getattr("dtype")?.eq(&float32))?
+    {
+        return kernel_f32(py, &ua, aa.as_ref(), alpha0, k, check);
+    }
+    let mut items = vec![(u, 0, "u")];
+    if let Some(a) = alpha {
+        items.push((a, 0, "alpha"));
+    }
+    let a = Args::new(py, &items)?;
+    let us = a.slice(0)?;
+    let alphas = if alpha.is_some() {
+        Some(a.slice(1)?)
+    } else {
+        None
+    };
+    let constant = vec![alpha0; BLOCK.min(us.len())];
+    let mut out = a.run_blocks(py, 1, &[0], BLOCK, PARALLEL, |start, out| {
+        let u = &us[start..start + out.len()];
+        let al = match alphas {
+            Some(al) => {
+                let al = &al[start..start + out.len()];
+                al.iter().try_for_each(|&a| check(a))?;
+                al
+            }
+            None => &constant[..out.len()],
+        };
+        (k.slice)(u, al, out);
+        Ok(())
+    })?;
+    Ok(out.remove(0))
+}
+
+/// `kernel` over float32 arrays in f32 (the library's f32 slice forms; α rounded to f32, or
+/// the float32 array `alpha`, broadcast with u and validated by `check`), without copies of
+/// contiguous input.
+fn kernel_f32<'py>(
+    py: Python<'py>,
+    u: &Bound<'py, PyAny>,
+    alpha: Option<&Bound<'py, PyAny>>,
+    alpha0: f64,
+    k: Kernel,
+    check: impl Fn(f64) -> Result<(), ParamError> + Sync,
+) -> PyResult<PyObject> {
+    let np = engine::numpy(py)?;
+    let flat = |a: &Bound<'py, PyAny>| -> PyResult<Bound<'py, PyArray1<f32>>> {
+        Ok(np
+            .call_method1("ascontiguousarray", (a,))?
+            .call_method1("reshape", (-1,))?
+            .downcast_into::<PyArray1<f32>>()?)
+    };
+    let (u, alpha, shape) = match alpha {
+        None => (flat(u)?, None, u.getattr("shape")?),
+        Some(a) => {
+            let b = np.call_method1("broadcast_arrays", (u, a))?;
+            let ub = b.get_item(0)?;
+            let shape = ub.getattr("shape")?;
+            (flat(&ub)?, Some(flat(&b.get_item(1)?)?), shape)
+        }
+    };
+    let (ro, ra) = (u.readonly(), alpha.as_ref().map(|a| a.readonly()));
+    let us = ro.as_slice()?;
+    let als = ra.as_ref().map(|r| r.as_slice()).transpose()?;
+    let constant = [alpha0 as f32; BLOCK];
+    let out =
+        engine::compute_blocks_of(py, us.len(), 1, BLOCK, PARALLEL, "float32", |start, o| {
+            let n = o.len();
+            let al = match als {
+                Some(al) => {
+                    let al = &al[start..start + n];
+                    al.iter().try_for_each(|&a| check(f64::from(a)))?;
+                    al
+                }
+                None => &constant[..n],
+            };
+            (k.slice32)(&us[start..start + n], al, o);
+            Ok(())
+        })?;
+    let mut result = out.into_any().call_method1("reshape", (shape,))?;
+    if result.getattr("ndim")?.extract::<usize>()? == 0 {
+        // (A NumPy scalar, as a ufunc gives for scalar input.)
+        result = result.get_item(())?;
+    }
+    Ok(result.unbind())
+}
+
+/// Direction arguments (core length 3, or 2 for uniforms) to `width` outputs per element.
+fn apply_vec<'py>(
+    py: Python<'py>,
+    items: &[(&Bound<'py, PyAny>, usize, &str)],
+    outs: &[usize],
+    parallel: usize,
+    f: impl Fn(usize, &[&[f64]], &mut [f64]) -> Result<(), ParamError> + Sync,
+) -> PyResult<Vec<PyObject>> {
+    if let Some(o) = engine::run_single(py, items, outs, &f)? {
+        return Ok(o);
+    }
+    let a = Args::new(py, items)?;
+    let s: Vec<&[f64]> = (0..items.len())
+        .map(|k| a.slice(k))
+        .collect::<PyResult<_>>()?;
+    let cores: Vec<usize> = items.iter().map(|i| i.1.max(1)).collect();
+    let width = outs.iter().map(|&c| c.max(1)).sum();
+    a.run(py, width, outs, parallel, |i, o| {
+        let e: Vec<&[f64]> = s
+            .iter()
+            .zip(&cores)
+            .map(|(s, &c)| &s[i * c..(i + 1) * c])
+            .collect();
+        f(i, &e, o)
+    })
+}
+
+/// One number per element of direction arguments (cheap: rayon from [`PARALLEL`]).
+fn map_vec<'py>(
+    py: Python<'py>,
+    items: &[(&Bound<'py, PyAny>, usize, &str)],
+    f: impl Fn(&[&[f64]]) -> f64 + Sync,
+) -> PyResult<PyObject> {
+    let mut o = apply_vec(py, items, &[0], PARALLEL, |_, a, o| {
+        o[0] = f(a);
+        Ok(())
+    })?;
+    Ok(o.remove(0))
+}
+
+/// ``Sample(wm, pdf)`` of a sampler per element (parallel from 256 elements: the exact
+/// samplers of the family invert quadratures).
+fn samples<'py>(
+    py: Python<'py>,
+    items: &[(&Bound<'py, PyAny>, usize, &str)],
+    f: impl Fn(&[&[f64]]) -> microsurface::Sample<f64> + Sync,
+) -> PyResult<PyObject> {
+    let o = apply_vec(py, items, &[3, 0], 256, |_, a, o| {
+        let s = f(a);
+        o[..3].copy_from_slice(&s.wm);
+        o[3] = s.pdf;
+        Ok(())
+    })?;
+    named(py, "Sample", o)
+}
+
+/// The direction at cos θ = mu and azimuth phi (mu outside [−1, 1] as its nearest end).
+fn wo_of(mu: f64, phi: f64) -> [f64; 3] {
+    let st = ((1.0 - mu) * (1.0 + mu)).max(0.0).sqrt();
+    [st * phi.cos(), st * phi.sin(), mu]
+}
+
+fn v3(s: &[f64]) -> [f64; 3] {
+    [s[0], s[1], s[2]]
+}
+
+/// A named tuple of the package (`Sample`, `BSDFSample`, `Albedo`), built from `fields`.
+fn named<'py>(py: Python<'py>, name: &str, fields: Vec<PyObject>) -> PyResult<PyObject> {
+    static TYPES: pyo3::sync::GILOnceCell<PyObject> = pyo3::sync::GILOnceCell::new();
+    let types = TYPES.get_or_try_init(py, || {
+        Ok::<_, PyErr>(py.import("microsurface._types")?.into_any().unbind())
+    })?;
+    let cls = types.bind(py).getattr(name)?;
+    Ok(cls.call1(pyo3::types::PyTuple::new(py, fields)?)?.unbind())
+}
+
+/// The quantities with fast paths.
+#[derive(Clone, Copy)]
+enum Q {
+    D,
+    Lambda,
+    G1,
+}
+
+/// A microfacet NDF of the library (the base class of ``GGX``, ``Beckmann``, ``GTR``, ...).
+///
+/// Conventions (the crate's): u = cos θ of the microfacet normal (D) or of a direction (Λ, σ,
+/// G1, G2); slopes (p, q) = −(x, y)/z of the normal; directions are unit vectors (x, y, z)
+/// in the local frame, z the macro normal, as the last axis of an array. D is normalised so
+/// that the projected area of the microsurface is 1: ∫ D(m) cos θm dm = 1; D(u) = 0 for
+/// u ≤ 0. Values are the library's exact f64 path: closed forms to ≤ 1e-13 relative,
+/// numerical quantities (the family's Λ by quadrature, Bessel-K, the generalised
+/// exponential) to ≤ 1e-10, measured against mpmath (the crate's tests and README). float32
+/// input gives the float64 value rounded once, except GGX's D, Λ and G1: those run the
+/// library's fast slice forms, in f64 within 3e-15 of the exact path and in f32 in f32
+/// arithmetic (within 6e-7).
+///
+/// Every class takes ``alpha`` and an optional ``alpha_y`` (anisotropic by stretching; GTR
+/// only at γ = 2). The functions of a cosine (``d``, ``lambda_``, ...) are the isotropic
+/// NDF's, at ``alpha`` or at an array ``alpha=`` broadcast with the arguments; the
+/// functions of directions (``d_wm``, ``lambda_w``, ``pdf_visible``, ``sample_visible``,
+/// ...) are the anisotropic material's.
+#[pyclass(subclass, frozen, module = "microsurface")]
+#[derive(Clone, Copy)]
+pub struct NDF {
+    ndf: AnyNdf,
+    /// The direction API, or why this material has none (Student-T at γ ≤ 3/2: Λ = ∞).
+    exact: Result<Exact, ParamError>,
+    alpha_y: f64,
+    sampler: Sampler,
+}
+
+impl NDF {
+    fn build(
+        kind: NdfKind,
+        alpha: f64,
+        alpha_y: Option<f64>,
+        shape: Option<f64>,
+        sampler: &str,
+    ) -> PyResult<Self> {
+        let sampler = match sampler {
+            "posterior" => Sampler::Posterior,
+            "warp" => Sampler::Warp,
+            _ => {
+                return Err(PyValueError::new_err(format!(
+                    "sampler must be 'posterior' or 'warp' (got {sampler:?})"
+                )))
+            }
+        };
+        let ndf = AnyNdf::new(kind, alpha, shape).map_err(value_error)?;
+        let alpha_y = alpha_y.unwrap_or(alpha);
+        let exact = Exact::new(kind, alpha, alpha_y, shape);
+        match &exact {
+            // (Student-T below γ = 3/2 keeps its isotropic functions: D, P22, P2 are
+            // finite there; only Λ and what needs it are not.)
+            Err(ParamError::Shape { .. }) if kind == NdfKind::StudentT && alpha_y == alpha => {}
+            Err(e) => return Err(value_error(*e)),
+            Ok(_) => {}
+        }
+        Ok(NDF {
+            ndf,
+            exact,
+            alpha_y,
+            sampler,
+        })
+    }
+
+    /// The fast path of quantity q, where it is the closed form (GGX).
+    fn kernel(&self, q: Q) -> Option<Kernel> {
+        use microsurface::fast::{batch, ggx};
+        if self.ndf.kind() != NdfKind::Ggx {
+            return None;
+        }
+        Some(match q {
+            Q::D => Kernel {
+                scalar: ggx::d::<f64>,
+                slice: batch::ggx_d,
+                slice32: batch::ggx_d_f32,
+            },
+            Q::Lambda => Kernel {
+                scalar: ggx::lambda::<f64>,
+                slice: batch::ggx_lambda,
+                slice32: batch::ggx_lambda_f32,
+            },
+            Q::G1 => Kernel {
+                scalar: ggx::g1::<f64>,
+                slice: batch::ggx_g1,
+                slice32: batch::ggx_g1_f32,
+            },
+        })
+    }
+
+    /// The same NDF at roughness α (αy scaled with it), for the `alpha=` arrays of the
+    /// albedo functions; this material at NaN (no array given).
+    fn material_at(&self, alpha: f64) -> Result<Material, ParamError> {
+        if alpha.is_nan() {
+            return Ok(Material::new(self.exact?, self.sampler));
+        }
+        let ay = alpha * (self.alpha_y / self.ndf.alpha());
+        let e = Exact::new(self.ndf.kind(), alpha, ay, self.ndf.shape())?;
+        Ok(Material::new(e, self.sampler))
+    }
+
+    /// The direction API's material (or why there is none).
+    fn material(&self) -> PyResult<Material> {
+        Ok(Material::new(
+            self.exact.map_err(value_error)?,
+            self.sampler,
+        ))
+    }
+
+    /// The isotropic NDF at each α of `alpha` (broadcast with the arguments), or this one.
+    fn iso<'py, const K: usize>(
+        &self,
+        py: Python<'py>,
+        args: [&Bound<'py, PyAny>; K],
+        alpha: Option<&Bound<'py, PyAny>>,
+        kernel: Option<Kernel>,
+        f: impl Fn(&AnyNdf, [f64; K]) -> f64 + Sync,
+    ) -> PyResult<PyObject> {
+        if let (Some(k), [u]) = (kernel, &args[..]) {
+            if alpha.is_some() || self.alpha_y == self.ndf.alpha() {
+                return apply_kernel(py, self.ndf.kind(), u, alpha, self.ndf.alpha(), k);
+            }
+        }
+        match alpha {
+            None => {
+                if self.alpha_y != self.ndf.alpha() {
+                    return Err(PyValueError::new_err(
+                        "the functions of a cosine are isotropic: this material is anisotropic (alpha_y != alpha); use the direction methods (d_wm, lambda_w, ...) or pass alpha=",
+                    ));
+                }
+                let n = self.ndf;
+                apply(py, args, move |x| Ok(f(&n, x)))
+            }
+            Some(alpha) => {
+                let (kind, shape) = (self.ndf.kind(), self.ndf.shape());
+                // [args..., alpha] through a K + 1 array: the engine's K is const.
+                let items: Vec<_> = args
+                    .iter()
+                    .chain(std::iter::once(&alpha))
+                    .map(|&a| (a, 0, "argument"))
+                    .collect();
+                let a = Args::new(py, &items)?;
+                let s: Vec<&[f64]> = (0..=K).map(|k| a.slice(k)).collect::<PyResult<_>>()?;
+                let mut out = a.run(py, 1, &[0], PARALLEL, |i, o| {
+                    let n = AnyNdf::new(kind, s[K][i], shape)?;
+                    o[0] = f(&n, std::array::from_fn(|k| s[k][i]));
+                    Ok(())
+                })?;
+                Ok(out.remove(0))
+            }
+        }
+    }
+}
+
+#[pymethods]
+impl NDF {
+    /// The roughness α (αx of an anisotropic material).
+    #[getter]
+    fn alpha(&self) -> f64 {
+        self.ndf.alpha()
+    }
+
+    /// αy (α for an isotropic material).
+    #[getter]
+    fn alpha_y(&self) -> f64 {
+        self.alpha_y
+    }
+
+    /// The shape parameter (γ of GTR, Student-T and the generalised exponential, a of
+    /// Bessel-K), or None.
+    #[getter]
+    fn shape(&self) -> Option<f64> {
+        self.ndf.shape()
+    }
+
+    /// How ``sample_visible`` (and the BSDFs' ``sample``) draw visible normals of the
+    /// Beckmann mixtures (Student-T, Ei, Erfc, K0, Bessel-K): 'posterior' (the default: the
+    /// posterior of the mixing variable, then Beckmann's visible normals; exact in
+    /// distribution, ~0.2 µs a sample, from a stream seeded by u rather than a warp of u) or
+    /// 'warp' (the exact inversion: a warp of u, invertible; it inverts quadratures, 8 µs to
+    /// 3 ms a sample, 20 ms near Student-T's γ = 3/2). The other NDFs always warp ('warp').
+    #[getter]
+    fn sampler(&self) -> &'static str {
+        match self.material().map(|m| m.sampler) {
+            Ok(Sampler::Posterior) => "posterior",
+            _ => "warp",
+        }
+    }
+
+    /// The NDF's name, as the command line spells it (``ggx``, ``student_t``, ...).
+    #[getter]
+    fn name(&self) -> &'static str {
+        self.ndf.kind().name()
+    }
+
+    fn __repr__(&self) -> String {
+        let mut s = format!("microsurface.NDF({}, alpha={}", self.name(), self.alpha());
+        if self.alpha_y != self.alpha() {
+            s += &format!(", alpha_y={}", self.alpha_y);
+        }
+        if let Some(shape) = self.ndf.shape() {
+            s += &format!(", shape={shape}");
+        }
+        s + ")"
+    }
+
+    /// D(u): the density of microfacet normals per solid angle at u = cos θm (0 for u ≤ 0;
+    /// +∞ at u = 1 for the NDFs with a pole there: Ei, Erfc, K0, Bessel-K a ≤ 1).
+    /// ``alpha``: an array of roughnesses broadcast with u (default: this NDF's).
+    #[pyo3(signature = (u, alpha = None))]
+    fn d(
+        &self,
+        py: Python<'_>,
+        u: &Bound<'_, PyAny>,
+        alpha: Option<&Bound<'_, PyAny>>,
+    ) -> PyResult<PyObject> {
+        self.iso(py, [u], alpha, self.kernel(Q::D), |n, [u]| n.d(u))
+    }
+
+    /// Smith's Λ(u) of a direction at u = cos θ (Λ(|u|) for u < 0; +∞ at u = 0; 0 at 1).
+    /// (``lambda`` is a Python keyword.) ``alpha`` as for ``d``.
+    #[pyo3(signature = (u, alpha = None))]
+    fn lambda_(
+        &self,
+        py: Python<'_>,
+        u: &Bound<'_, PyAny>,
+        alpha: Option<&Bound<'_, PyAny>>,
+    ) -> PyResult<PyObject> {
+        self.iso(py, [u], alpha, self.kernel(Q::Lambda), |n, [u]| n.lambda(u))
+    }
+
+    /// The projected area σ(u) = ∫ max(0, ω·m) D(m) dm of a direction at signed u = cos θ
+    /// (σ(u) = u(1 + Λ(u)) above the horizon, |u| Λ(|u|) below; σ(0) finite). ``alpha`` as
+    /// for ``d``.
+    #[pyo3(signature = (u, alpha = None))]
+    fn sigma(
+        &self,
+        py: Python<'_>,
+        u: &Bound<'_, PyAny>,
+        alpha: Option<&Bound<'_, PyAny>>,
+    ) -> PyResult<PyObject> {
+        self.iso(py, [u], alpha, None, |n, [u]| n.sigma(u))
+    }
+
+    /// Smith's masking G1(u) = 1/(1 + Λ(|u|)). ``alpha`` as for ``d``.
+    #[pyo3(signature = (u, alpha = None))]
+    fn g1(
+        &self,
+        py: Python<'_>,
+        u: &Bound<'_, PyAny>,
+        alpha: Option<&Bound<'_, PyAny>>,
+    ) -> PyResult<PyObject> {
+        self.iso(py, [u], alpha, self.kernel(Q::G1), |n, [u]| n.g1(u))
+    }
+
+    /// Height-correlated masking-shadowing G2(u_o, u_i) = 1/(1 + Λ(u_o) + Λ(u_i)) (Heitz
+    /// 2014), broadcast over both arguments. ``alpha`` as for ``d``.
+    #[pyo3(signature = (u_o, u_i, alpha = None))]
+    fn g2(
+        &self,
+        py: Python<'_>,
+        u_o: &Bound<'_, PyAny>,
+        u_i: &Bound<'_, PyAny>,
+        alpha: Option<&Bound<'_, PyAny>>,
+    ) -> PyResult<PyObject> {
+        self.iso(py, [u_o, u_i], alpha, None, |n, [a, b]| n.g2(a, b))
+    }
+
+    /// Separable masking-shadowing G1(u_o) G1(u_i), broadcast over both arguments.
+    #[pyo3(signature = (u_o, u_i, alpha = None))]
+    fn g2_separable(
+        &self,
+        py: Python<'_>,
+        u_o: &Bound<'_, PyAny>,
+        u_i: &Bound<'_, PyAny>,
+        alpha: Option<&Bound<'_, PyAny>>,
+    ) -> PyResult<PyObject> {
+        self.iso(py, [u_o, u_i], alpha, None, |n, [a, b]| {
+            n.g2_separable(a, b)
+        })
+    }
+
+    /// The slope density P22(p, q) = D(u) u⁴ (u = 1/√(1 + p² + q²)), broadcast over p and q.
+    #[pyo3(signature = (p, q, alpha = None))]
+    fn p22(
+        &self,
+        py: Python<'_>,
+        p: &Bound<'_, PyAny>,
+        q: &Bound<'_, PyAny>,
+        alpha: Option<&Bound<'_, PyAny>>,
+    ) -> PyResult<PyObject> {
+        self.iso(py, [p, q], alpha, None, |n, [p, q]| n.p22(p, q))
+    }
+
+    /// The marginal slope density P2(p) = ∫ P22(p, q) dq.
+    #[pyo3(signature = (p, alpha = None))]
+    fn p2(
+        &self,
+        py: Python<'_>,
+        p: &Bound<'_, PyAny>,
+        alpha: Option<&Bound<'_, PyAny>>,
+    ) -> PyResult<PyObject> {
+        self.iso(py, [p], alpha, None, |n, [p]| n.p2(p))
+    }
+
+    // ---- Directions: the anisotropic material (Rust: microsurface::Exact, the Distribution
+    // trait). Arrays of unit vectors, last axis 3.
+
+    /// D(wm) of unit normals wm (shape (..., 3)); 0 for wm.z ≤ 0.
+    fn d_wm(&self, py: Python<'_>, wm: &Bound<'_, PyAny>) -> PyResult<PyObject> {
+        let e = self.material()?;
+        map_vec(py, &[(wm, 3, "wm")], |a| e.d(v3(a[0])))
+    }
+
+    /// Smith Λ(w) of directions w (the side w comes from; +∞ on the horizon).
+    fn lambda_w(&self, py: Python<'_>, w: &Bound<'_, PyAny>) -> PyResult<PyObject> {
+        let e = self.material()?;
+        map_vec(py, &[(w, 3, "w")], |a| e.lambda(v3(a[0])))
+    }
+
+    /// G1(w) = 1/(1 + Λ(w)).
+    fn g1_w(&self, py: Python<'_>, w: &Bound<'_, PyAny>) -> PyResult<PyObject> {
+        let e = self.material()?;
+        map_vec(py, &[(w, 3, "w")], |a| e.g1(v3(a[0])))
+    }
+
+    /// The projected area σ(w) = |w.z|(1 + Λ(w)) (finite on the horizon), w mirrored to
+    /// the upper hemisphere.
+    fn sigma_w(&self, py: Python<'_>, w: &Bound<'_, PyAny>) -> PyResult<PyObject> {
+        let e = self.material()?;
+        map_vec(py, &[(w, 3, "w")], |a| e.exact.sigma(v3(a[0])))
+    }
+
+    /// Height-correlated G2(wo, wi) = 1/(1 + Λ(wo) + Λ(wi)); ``separable=True``:
+    /// G1(wo) G1(wi).
+    #[pyo3(signature = (wo, wi, separable = false))]
+    fn g2_w(
+        &self,
+        py: Python<'_>,
+        wo: &Bound<'_, PyAny>,
+        wi: &Bound<'_, PyAny>,
+        separable: bool,
+    ) -> PyResult<PyObject> {
+        let e = self.material()?;
+        map_vec(py, &[(wo, 3, "wo"), (wi, 3, "wi")], |a| {
+            let (wo, wi) = (v3(a[0]), v3(a[1]));
+            if separable {
+                e.g2_separable(wo, wi)
+            } else {
+                e.g2(wo, wi)
+            }
+        })
+    }
+
+    /// The visible-normal density D_w(wm) = G1(w) max(0, w·wm) D(wm)/|w.z| per solid angle
+    /// of wm (w.z < 0: that of −w), the pdf of ``sample_visible``.
+    fn pdf_visible(
+        &self,
+        py: Python<'_>,
+        w: &Bound<'_, PyAny>,
+        wm: &Bound<'_, PyAny>,
+    ) -> PyResult<PyObject> {
+        let e = self.material()?;
+        map_vec(py, &[(w, 3, "w"), (wm, 3, "wm")], |a| {
+            e.pdf(v3(a[0]), v3(a[1]))
+        })
+    }
+
+    /// Visible normals for directions w: ``sample_visible(w, u)`` with uniforms u of shape
+    /// (..., 2) in [0, 1) (broadcast with w's batch shape), or ``sample_visible(w, rng, n)``
+    /// with a ``numpy.random.Generator`` (n × 2 uniforms drawn from it). Returns
+    /// ``Sample(wm, pdf)``: unit normals (..., 3) and their densities ``pdf_visible(w,
+    /// wm)``. The exact samplers (χ²-tested in the crate): each wm is a deterministic
+    /// function of (w, u).
+    #[pyo3(signature = (w, u, n = None))]
+    fn sample_visible(
+        &self,
+        py: Python<'_>,
+        w: &Bound<'_, PyAny>,
+        u: &Bound<'_, PyAny>,
+        n: Option<usize>,
+    ) -> PyResult<PyObject> {
+        let e = self.material()?;
+        let u = uniforms(py, u, n, 2)?;
+        samples(py, &[(w, 3, "w"), (&u, 2, "u")], |a| {
+            e.sample(v3(a[0]), [a[1][0], a[1][1]])
+        })
+    }
+
+    /// The density D(wm) cos θm of ``sample_dcos`` (0 for wm.z ≤ 0).
+    fn pdf_dcos(&self, py: Python<'_>, wm: &Bound<'_, PyAny>) -> PyResult<PyObject> {
+        let e = self.material()?;
+        map_vec(py, &[(wm, 3, "wm")], |a| e.pdf_dcos(v3(a[0])))
+    }
+
+    /// Normals distributed as D(m) cos θm: ``sample_dcos(u)`` (u of shape (..., 2)) or
+    /// ``sample_dcos(rng, n)``; returns ``Sample(wm, pdf)``.
+    #[pyo3(signature = (u, n = None))]
+    fn sample_dcos(
+        &self,
+        py: Python<'_>,
+        u: &Bound<'_, PyAny>,
+        n: Option<usize>,
+    ) -> PyResult<PyObject> {
+        let e = self.material()?;
+        let u = uniforms(py, u, n, 2)?;
+        samples(py, &[(&u, 2, "u")], |a| e.sample_dcos([a[0][0], a[0][1]]))
+    }
+
+    // ---- Multiple scattering.
+
+    /// The albedo of the microsurface by scattering order, by Heitz et al.'s random walk
+    /// (2016; uniform heights), from directions at cos θo = ``mu`` and azimuth ``phi``
+    /// (broadcast together): F = 1 mirror facets (the white furnace, a conductor's
+    /// energy), or dielectric facets of relative index ``eta``. ``walks`` walks per
+    /// element, seeded by ``seed`` and the element's index (the same numbers whatever the
+    /// threads). Returns ``Albedo(reflect, reflect_stderr, transmit, transmit_stderr,
+    /// total, total_stderr)``: reflect and transmit of shape (..., 4) for the orders 1, 2,
+    /// 3 and ≥ 4, with their standard errors; total (...) is reflect + transmit summed
+    /// over orders. ``alpha``: an array of roughnesses broadcast with mu and phi (αy scaled
+    /// with α), for tables over (α, μ) in one call.
+    #[pyo3(signature = (mu, phi = None, walks = 100_000, seed = 0, eta = None, alpha = None))]
+    #[allow(clippy::too_many_arguments)]
+    fn albedo(
+        &self,
+        py: Python<'_>,
+        mu: &Bound<'_, PyAny>,
+        phi: Option<&Bound<'_, PyAny>>,
+        walks: u64,
+        seed: u64,
+        eta: Option<f64>,
+        alpha: Option<&Bound<'_, PyAny>>,
+    ) -> PyResult<PyObject> {
+        if alpha.is_none() {
+            self.material()?;
+        }
+        if let Some(eta) = eta {
+            if !(eta > 0.0 && eta.is_finite() && eta != 1.0) {
+                return Err(PyValueError::new_err(format!(
+                    "eta must be a positive finite number other than 1 (got {eta})"
+                )));
+            }
+        }
+        let zero = PyFloat::new(py, 0.0).into_any();
+        let nan = PyFloat::new(py, f64::NAN).into_any();
+        let phi = phi.unwrap_or(&zero);
+        let o = apply_vec(
+            py,
+            &[
+                (mu, 0, "mu"),
+                (phi, 0, "phi"),
+                (alpha.unwrap_or(&nan), 0, "alpha"),
+            ],
+            &[4, 4, 4, 4, 0, 0],
+            2,
+            |i, a, o| {
+                let surface = Microsurface::new(self.material_at(a[2][0])?, Heights::Uniform);
+                let wo = wo_of(a[0][0], a[1][0]);
+                // (One stream per element, whatever thread runs it.)
+                let seed = seed.wrapping_add((i as u64).wrapping_mul(0x9E37_79B9_7F4A_7C15));
+                let r = match eta {
+                    None => walk::albedo(
+                        &surface,
+                        &MirrorFacets(microsurface::fresnel::One::<1>),
+                        wo,
+                        walks,
+                        seed,
+                    ),
+                    Some(eta) => walk::albedo(&surface, &DielectricFacets(eta), wo, walks, seed),
+                };
+                o[0..4].copy_from_slice(&r.reflect.orders);
+                o[4..8].copy_from_slice(&r.reflect.stderr);
+                o[8..12].copy_from_slice(&r.transmit.orders);
+                o[12..16].copy_from_slice(&r.transmit.stderr);
+                o[16] = r.total.mean;
+                o[17] = r.total.stderr;
+                Ok(())
+            },
+        )?;
+        named(py, "Albedo", o)
+    }
+}
+
+/// The classes of the NDFs without a shape parameter: `Name(alpha, alpha_y=None, sampler='posterior')`.
+macro_rules! plain {
+    ($($(#[$doc:meta])* $name:ident => $kind:ident;)*) => {$(
+        $(#[$doc])*
+        #[pyclass(extends = NDF, module = "microsurface")]
+        pub struct $name;
+
+        #[pymethods]
+        impl $name {
+            #[new]
+            #[pyo3(signature = (alpha, alpha_y = None, sampler = "posterior"))]
+            fn new(alpha: f64, alpha_y: Option<f64>, sampler: &str) -> PyResult<(Self, NDF)> {
+                Ok(($name, NDF::build(NdfKind::$kind, alpha, alpha_y, None, sampler)?))
+            }
+        }
+    )*};
+}
+
+/// The classes of the NDFs with a shape parameter: `Name(alpha, shape, alpha_y=None, sampler='posterior')`.
+macro_rules! shaped {
+    ($($(#[$doc:meta])* $name:ident => $kind:ident, $shape:ident;)*) => {$(
+        $(#[$doc])*
+        #[pyclass(extends = NDF, module = "microsurface")]
+        pub struct $name;
+
+        #[pymethods]
+        impl $name {
+            #[new]
+            #[pyo3(signature = (alpha, $shape, alpha_y = None, sampler = "posterior"))]
+            fn new(
+                alpha: f64,
+                $shape: f64,
+                alpha_y: Option<f64>,
+                sampler: &str,
+            ) -> PyResult<(Self, NDF)> {
+                Ok(($name, NDF::build(NdfKind::$kind, alpha, alpha_y, Some($shape), sampler)?))
+            }
+        }
+    )*};
+}
+
+plain! {
+    /// Beckmann(alpha): D = e^{−tan²θ/α²}/(π α² cos⁴θ), α ∈ [1e-6, 1e6].
+    Beckmann => Beckmann;
+    /// GGX(alpha) (Trowbridge–Reitz): D = α²/(π cos⁴θ (α² + tan²θ)²), α ∈ [1e-6, 1e6].
+    GGX => Ggx;
+    /// DoubleGGX(alpha): d'Eon's Double GGX NDF (a Gamma-1 mixture of GGX).
+    DoubleGGX => DoubleGgx;
+    /// Exponential(alpha): d'Eon's Exponential NDF, P22 = 2 e^{−2r/α}/(π α²).
+    Exponential => Exponential;
+    /// Ei(alpha): P22 = E₁(r²/α²)/(π α²) (a uniform mixture of Beckmann in β²).
+    Ei => Ei;
+    /// Erfc(alpha): P22 = erfc(r/α)/(2√π α r) (a uniform mixture of Beckmann in β).
+    Erfc => Erfc;
+    /// K0(alpha): P22 = 2 K₀(2r/α)/(π α²) (Bessel-K at a = 1).
+    K0 => K0;
+}
+
+shaped! {
+    /// GTR(alpha, gamma): Burley's generalised Trowbridge–Reitz, γ ∈ (0, 100] (γ = 2 is GGX).
+    GTR => Gtr, gamma;
+    /// StudentT(alpha, gamma): Ribardière et al. 2017, γ > 1 (Λ, σ finite for γ > 3/2; GGX
+    /// at γ = 2, Beckmann as γ → ∞).
+    StudentT => StudentT, gamma;
+    /// BesselK(alpha, a): P22 = (2/(π α² Γ(a))) x^{a−1} K_{a−1}(2x), x = r/α, a ∈ [0.1, 100]
+    /// (K0 at a = 1, the Exponential NDF at a = 3/2).
+    BesselK => BesselK, a;
+    /// GenExponential(alpha, gamma): P22 ∝ e^{−(r/α)^γ}, γ ∈ [0.1, 20] (Beckmann at γ = 2).
+    GenExponential => GenExponential, gamma;
+}
+
+/// A slice form: (u, α, out).
+type Slice<T> = fn(&[T], &[T], &mut [T]);
+
+/// The Rust slice forms' own speed in this process, for the benchmark script
+/// (benchmark.py): GGX `quantity` ('d' or 'lambda') over n uniform cosines at α in f64 or
+/// (`f32`) f32, into a preallocated output, on one thread and on rayon's pool in pieces of
+/// 16 384; median ns per element of `reps`.
+#[pyfunction]
+fn _rust_slice_ns(
+    py: Python<'_>,
+    quantity: &str,
+    n: usize,
+    alpha: f64,
+    reps: usize,
+    f32: bool,
+) -> PyResult<(f64, f64)> {
+    use microsurface::fast::batch;
+    let (f, g): (Slice<f64>, Slice<f32>) = match quantity {
+        "d" => (batch::ggx_d, batch::ggx_d_f32),
+        "lambda" => (batch::ggx_lambda, batch::ggx_lambda_f32),
+        _ => return Err(PyValueError::new_err("quantity: 'd' or 'lambda'")),
+    };
+    fn median(reps: usize, n: usize, mut run: impl FnMut()) -> f64 {
+        let mut t: Vec<f64> = (0..reps.max(1))
+            .map(|_| {
+                let start = std::time::Instant::now();
+                run();
+                start.elapsed().as_secs_f64() * 1e9 / n as f64
+            })
+            .collect();
+        t.sort_by(f64::total_cmp);
+        t[t.len() / 2]
+    }
+    fn both<T: Copy + Send + Sync + Default>(
+        u: &[T],
+        alpha: T,
+        reps: usize,
+        f: fn(&[T], &[T], &mut [T]),
+    ) -> (f64, f64) {
+        let n = u.len();
+        let a = vec![alpha; n];
+        let mut out = vec![T::default(); n];
+        let one = median(reps, n, || f(u, &a, &mut out));
+        let par = median(reps, n, || {
+            out.par_chunks_mut(1 << 14)
+                .zip(u.par_chunks(1 << 14).zip(a.par_chunks(1 << 14)))
+                .for_each(|(o, (u, a))| f(u, a, o))
+        });
+        (one, par)
+    }
+    Ok(py.allow_threads(|| {
+        let mut s = 0x9E37_79B9_7F4A_7C15u64;
+        let u: Vec<f64> = (0..n)
+            .map(|_| {
+                s = s
+                    .wrapping_mul(6_364_136_223_846_793_005)
+                    .wrapping_add(1_442_695_040_888_963_407);
+                ((s >> 11) as f64 + 0.5) / (1u64 << 53) as f64
+            })
+            .collect();
+        if f32 {
+            let u: Vec<f32> = u.iter().map(|&x| x as f32).collect();
+            both(&u, alpha as f32, reps, g)
+        } else {
+            both(&u, alpha, reps, f)
+        }
+    }))
+}
+
+#[pymodule]
+fn _microsurface(m: &Bound<'_, PyModule>) -> PyResult<()> {
+    m.add_class::<NDF>()?;
+    m.add_class::<Beckmann>()?;
+    m.add_class::<GGX>()?;
+    m.add_class::<DoubleGGX>()?;
+    m.add_class::<Exponential>()?;
+    m.add_class::<Ei>()?;
+    m.add_class::<Erfc>()?;
+    m.add_class::<K0>()?;
+    m.add_class::<GTR>()?;
+    m.add_class::<StudentT>()?;
+    m.add_class::<BesselK>()?;
+    m.add_class::<GenExponential>()?;
+    bsdf::register(m)?;
+    m.add_function(wrap_pyfunction!(_rust_slice_ns, m)?)?;
+    Ok(())
+}

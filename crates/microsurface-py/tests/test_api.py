@@ -1,0 +1,510 @@
+"""Directions, samplers, BSDFs and multiple scattering from Python: equal to the Rust
+library's values, shaped by NumPy's rules, sampled from the stated densities (χ² with
+scipy), interruptible.
+
+Run: pip install ./crates/microsurface-py pytest scipy && pytest crates/microsurface-py/tests
+(the comparisons with the Rust command line need it built: cargo build --release, or
+MICROSURFACE_CLI=path).
+"""
+
+import json
+import os
+import signal
+import subprocess
+import sys
+import time
+
+import numpy as np
+import pytest
+from scipy import stats
+
+import microsurface as mf
+
+ROOT = os.path.join(os.path.dirname(__file__), "..", "..", "..")
+CLI = os.environ.get("MICROSURFACE_CLI", os.path.join(ROOT, "target", "release", "microsurface"))
+
+
+def cli(command, lines):
+    if not os.path.exists(CLI):
+        # (CI names it: missing there is a failure.)
+        assert "MICROSURFACE_CLI" not in os.environ, f"MICROSURFACE_CLI={CLI} does not exist"
+        pytest.skip(f"the command line is not built ({CLI}); cargo build --release")
+    out = subprocess.run([CLI, command], input="\n".join(json.dumps(x) for x in lines), capture_output=True, text=True)
+    assert out.returncode == 0, out.stdout + out.stderr
+    return [json.loads(x) for x in out.stdout.splitlines()]
+
+
+def unit(v):
+    v = np.asarray(v, dtype=np.float64)
+    return v / np.linalg.norm(v, axis=-1, keepdims=True)
+
+
+def hemisphere(n, rng, lower=False):
+    w = unit(rng.normal(size=(n, 3)))
+    w[:, 2] = np.abs(w[:, 2]) * (-1 if lower else 1)
+    return w
+
+
+# ---- Equal to Rust, bit for bit.
+
+
+def test_cosine_functions_equal_the_command_line():
+    ndfs = [
+        ("ggx", {}, mf.GGX(0.3)),
+        ("beckmann", {}, mf.Beckmann(0.7)),
+        ("gtr", {"gamma": 1.5}, mf.GTR(0.2, 1.5)),
+        ("student_t", {"gamma": 2.5}, mf.StudentT(0.4, 2.5)),
+        ("ei", {}, mf.Ei(0.3)),
+        ("bessel_k", {"a": 0.7}, mf.BesselK(0.5, 0.7)),
+        ("gen_exponential", {"gamma": 3.0}, mf.GenExponential(0.5, 3.0)),
+    ]
+    us = [0.01, 0.3, 0.5, 0.99, 0.999999]  # (D(1) = ∞ for Ei: JSON has no ∞)
+    for name, shape, n in ndfs:
+        for q, method in [("d", n.d), ("lambda", n.lambda_), ("sigma", n.sigma), ("g1", n.g1)]:
+            lines = [dict(ndf=name, alpha=n.alpha, quantity=q, u=u, **shape) for u in us]
+            want = [r["value"] for r in cli("eval", lines)]
+            got = method(np.array(us))
+            if name == "ggx" and q != "sigma":
+                # GGX's D, Λ and G1 run the fast closed forms (fast::ggx, fast::batch: their
+                # own rounding, within a few ulps of the exact path the CLI evaluates).
+                np.testing.assert_allclose(got, want, rtol=3e-15, atol=0)
+            else:
+                assert got.tolist() == want, (name, q)
+
+
+def test_bsdfs_equal_the_command_line():
+    # The family's BSDFs run on the exact path in both (the CLI's GGX etc. use the fast path).
+    wo, wi, wt = [0.0, 0.6, 0.8], [0.6, 0.0, 0.8], [0.0, -0.6, -0.8]
+    cases = [
+        ("conductor", dict(ndf="student_t", gamma=2.5, alpha=[0.3, 0.2], eta=[0.2, 0.9, 1.1], k=[3.9, 2.4, 2.2]),
+         mf.Conductor(mf.StudentT(0.3, 2.5, alpha_y=0.2, sampler="warp"), eta=[0.2, 0.9, 1.1], k=[3.9, 2.4, 2.2])),
+        ("dielectric", dict(ndf="ei", alpha=0.3, eta=1.5), mf.Dielectric(mf.Ei(0.3, sampler="warp"), 1.5)),
+    ]
+    for kind, spec, b in cases:
+        for w in (wi, wt):
+            [r] = cli("bsdf", [dict(bsdf=kind, op="eval", wo=wo, wi=w, **spec)])
+            f = np.atleast_1d(b.eval(np.array(wo), np.array(w)))
+            assert f.tolist() == r["f"][: len(f)]
+            assert b.pdf(np.array(wo), np.array(w)) == r["pdf"]
+        for u in ([0.3, 0.2, 0.7], [0.9, 0.5, 0.5]):
+            [r] = cli("bsdf", [dict(bsdf=kind, op="sample", wo=wo, u=u, **spec)])
+            s = b.sample(np.array(wo), np.array(u))
+            assert s.wi.tolist() == r["wi"]
+            assert s.pdf == r["pdf"]
+            assert np.atleast_1d(s.f).tolist() == r["f"][: np.size(s.f)]
+            assert s.lobe == {"reflection": 1, "transmission": 2}[r["kind"]]
+
+
+# ---- Shapes, dtypes, agreement between the cosine and direction forms.
+
+
+def test_alpha_as_an_array_broadcasts_and_equals_one_material_per_element():
+    u = np.linspace(0.05, 1.0, 7)[:, None]
+    alpha = np.array([0.05, 0.3, 1.0, 2.0])
+    for cls, extra in [(mf.GGX, ()), (mf.StudentT, (3.0,)), (mf.Erfc, ())]:
+        n = cls(0.5, *extra)
+        got = n.lambda_(u, alpha=alpha)
+        assert got.shape == (7, 4)
+        for j, a in enumerate(alpha):
+            assert np.array_equal(got[:, j], cls(a, *extra).lambda_(u[:, 0]))
+        assert n.d(np.float32(0.5), alpha=np.float32([0.1, 0.2])).dtype == np.float32
+    with pytest.raises(ValueError, match="alpha"):
+        mf.GGX(0.3).d(0.5, alpha=[0.1, -1.0])
+    with pytest.raises(ValueError, match="anisotropic"):
+        mf.GGX(0.3, 0.1).d(0.5)
+
+
+def test_direction_forms_agree_with_the_cosine_forms():
+    u = np.linspace(0.02, 0.999, 50)
+    phi = np.linspace(0, 6, 50)
+    s = np.sqrt(1 - u * u)
+    w = np.stack([s * np.cos(phi), s * np.sin(phi), u], axis=-1)
+    for n in [mf.GGX(0.3), mf.Beckmann(0.5), mf.GTR(0.2, 1.2), mf.StudentT(0.3, 4.0), mf.K0(0.4), mf.DoubleGGX(0.3)]:
+        np.testing.assert_allclose(n.d_wm(w), n.d(u), rtol=1e-12)
+        np.testing.assert_allclose(n.lambda_w(w), n.lambda_(u), rtol=1e-10)
+        np.testing.assert_allclose(n.g1_w(w), n.g1(u), rtol=1e-12)
+        np.testing.assert_allclose(n.sigma_w(w), n.sigma(u), rtol=1e-10)
+        np.testing.assert_allclose(n.g2_w(w, w[::-1]), n.g2(u, u[::-1]), rtol=1e-12)
+        np.testing.assert_allclose(n.g2_w(w, w[::-1], separable=True), n.g2_separable(u, u[::-1]), rtol=1e-12)
+        np.testing.assert_allclose(n.pdf_dcos(w), n.d(u) * u, rtol=1e-12)
+
+
+def test_direction_shapes_and_dtypes():
+    g = mf.GGX(0.3, 0.1)
+    w = unit(np.random.default_rng(0).normal(size=(4, 5, 3)))
+    assert g.lambda_w(w).shape == (4, 5)
+    assert g.pdf_visible(w[:, :1], w).shape == (4, 5)  # (4, 1) with (4, 5)
+    assert g.lambda_w(w.astype(np.float32)).dtype == np.float32
+    assert np.ndim(g.d_wm([0.0, 0.0, 1.0])) == 0
+    with pytest.raises(ValueError, match="last axis of length 3"):
+        g.d_wm(np.zeros((4, 2)))
+    with pytest.raises(ValueError):
+        g.pdf_visible(w, w[:3])  # (4, 5) with (3, 5): not broadcastable
+    assert np.isnan(g.lambda_w([np.nan, 0.0, 1.0]))
+
+
+def test_single_directions_equal_the_array_path():
+    # One direction given as a list, a tuple or a 1-D float64 array (with Python-number
+    # uniforms, μ, φ) takes a path without NumPy's conversions: the same values, bit for bit,
+    # and the same types (NumPy float64 scalars, float64 arrays of the core's length) as a
+    # batch of one through the array path. Anything else (float32, non-contiguous, wrong
+    # lengths, bools) takes the array path, errors included.
+    tiny = np.nextafter(0, 1)
+    ws = [[0.6, 0.0, 0.8], [0, 0, 1], [1.0, 0.0, 0.0], [0.3, -0.4, -0.866], [1.0, 0.0, tiny], [0.0, 0.0, 0.0],
+          [np.nan, 0.0, 1.0], [np.inf, 0.0, 1.0]]
+    us = [[0.25, 0.75], [0.0, 0.0], [1 - 2**-53, 0.5]]
+    u3s = [[0.25, 0.75, 0.1], [0.0, 0.0, 1 - 2**-53]]
+
+    def same(one, batch):
+        if isinstance(one, tuple):
+            assert type(one) is type(batch) and len(one) == len(batch)
+            for a, b in zip(one, batch):
+                same(a, b)
+            return
+        b = batch[0]
+        assert type(one) is type(b) and np.shape(one) == np.shape(b), (type(one), type(b))
+        assert np.asarray(one).dtype == np.asarray(b).dtype
+        np.testing.assert_array_equal(one, b)
+
+    def check(f, *args):
+        # Every argument in each single form against the batch of one.
+        batch = f(*[np.asarray(a, dtype=np.float64)[None] if isinstance(a, list) else np.asarray([a]) for a in args])
+        same(f(*args), batch)
+        same(f(*[tuple(a) if isinstance(a, list) else a for a in args]), batch)
+        same(f(*[np.asarray(a, dtype=np.float64) if isinstance(a, list) else a for a in args]), batch)
+
+    for n in [mf.GGX(0.3, 0.1), mf.Beckmann(0.5), mf.StudentT(0.3, 4.0), mf.Ei(0.4), mf.GTR(0.2, 1.5)]:
+        for w in ws:
+            for f in (n.d_wm, n.lambda_w, n.g1_w, n.sigma_w, n.pdf_dcos):
+                check(f, w)
+            for v in ws[:4]:
+                check(n.pdf_visible, w, v)
+                check(n.g2_w, w, v)
+                check(lambda a, b: n.g2_w(a, b, separable=True), w, v)
+            if w[2] > 0 and np.isfinite(w).all():
+                for u in us:
+                    check(n.sample_visible, w, u)
+        for u in us:
+            check(n.sample_dcos, u)
+        for b in (mf.Conductor(n, eta=[0.2, 0.9, 1.1], k=[3.9, 2.4, 2.2]), mf.Dielectric(n, 1.5)):
+            for w in ws[:5]:
+                for v in ws[:5]:
+                    check(b.eval, w, v)
+                    check(b.pdf, w, v)
+                for u in u3s:
+                    check(b.sample, w, u)
+    g = mf.Beckmann(0.5)
+    check(lambda mu, phi: g.albedo(mu, phi, walks=500, seed=3), 0.5, 0.25)
+    check(lambda mu: mf.single_scattering_albedo(g, mu), 0.7)
+    # The array path's answers for what the single path declines.
+    g = mf.GGX(0.3)
+    assert g.lambda_w(np.array([0.6, 0, 0.8], dtype=np.float32)).dtype == np.float32
+    assert g.lambda_w(np.array([0.6, 9, 0, 9, 0.8])[::2]) == g.lambda_w([0.6, 0, 0.8])
+    assert g.lambda_w([True, False, True]) == g.lambda_w([1.0, 0.0, 1.0])
+    with pytest.raises(ValueError, match="last axis of length 3"):
+        g.d_wm([0.0, 1.0])
+    with pytest.raises(ValueError, match="last axis of length 3"):
+        g.d_wm((0.0, 0.0, 1.0, 0.0))
+
+
+# ---- Samplers.
+
+
+@pytest.mark.parametrize(
+    "n", [mf.GGX(0.3, 0.1), mf.Beckmann(0.6), mf.GTR(0.3, 1.0), mf.StudentT(0.3, 2.5), mf.Ei(0.4), mf.Exponential(0.2)]
+)
+def test_sample_visible_contract(n):
+    rng = np.random.default_rng(1)
+    w = hemisphere(2000, rng)
+    w[::2] *= -1  # below the horizon: mirrored
+    s = n.sample_visible(w, rng.random((2000, 2)))
+    assert s.wm.shape == (2000, 3) and s.pdf.shape == (2000,)
+    np.testing.assert_allclose(np.linalg.norm(s.wm, axis=-1), 1.0, atol=1e-14)
+    side = np.where(w[:, 2] < 0, -1.0, 1.0)
+    assert np.all(np.sum(w * s.wm, axis=-1) * side > 0) and np.all(s.wm[:, 2] > 0)
+    assert np.array_equal(s.pdf, n.pdf_visible(w, s.wm))
+    # A Generator and n: the same as drawing the uniforms first.
+    a = n.sample_visible(w[0], np.random.default_rng(7), n=100)
+    b = n.sample_visible(w[0], np.random.default_rng(7).random((100, 2)))
+    assert np.array_equal(a.wm, b.wm)
+    with pytest.raises(ValueError, match="Generator"):
+        n.sample_visible(w[0], np.zeros((3, 2)), n=3)
+
+
+def cell_probabilities(pdf, nt, nphi, order=6):
+    """∫ pdf over cells of (θ, φ) ∈ [0, π/2] × [0, 2π) by Gauss–Legendre per cell (dω = sin θ dθ dφ:
+    a pole of D at the normal, D ~ θ^−β with β < 2, is bounded there)."""
+    x, wt = np.polynomial.legendre.leggauss(order)
+    x, wt = (x + 1) / 2, wt / 2
+    te = np.linspace(0, np.pi / 2, nt + 1)
+    pe = np.linspace(0, 2 * np.pi, nphi + 1)
+    t = te[:-1, None] + np.diff(te)[:, None] * x[None, :]  # (nt, order)
+    p = pe[:-1, None] + np.diff(pe)[:, None] * x[None, :]
+    T = t[:, None, :, None]
+    P = p[None, :, None, :]
+    m = np.stack(np.broadcast_arrays(np.sin(T) * np.cos(P), np.sin(T) * np.sin(P), np.cos(T)), axis=-1)
+    f = pdf(m) * np.sin(T)  # (nt, nphi, order, order)
+    w2 = wt[:, None] * wt[None, :]
+    return np.sum(f * w2, axis=(-2, -1)) * np.diff(te)[:, None] * np.diff(pe)[None, :]
+
+
+def histogram(w, nt, nphi):
+    theta = np.arccos(np.clip(w[:, 2], -1, 1))
+    phi = np.mod(np.arctan2(w[:, 1], w[:, 0]), 2 * np.pi)
+    counts, _, _ = np.histogram2d(theta, phi, bins=[nt, nphi], range=[[0, np.pi / 2], [0, 2 * np.pi]])
+    return counts
+
+
+def chi2_pvalue(counts, expected):
+    # Cells with small expectations pooled into one (the usual rule: ≥ 5).
+    small = expected < 5
+    obs = np.append(counts[~small], counts[small].sum())
+    exp = np.append(expected[~small], expected[small].sum())
+    if exp[-1] == 0:
+        obs, exp = obs[:-1], exp[:-1]
+    exp = exp * obs.sum() / exp.sum()
+    return stats.chisquare(obs, exp).pvalue
+
+
+@pytest.mark.parametrize(
+    "n, w",
+    [
+        (mf.GGX(0.4, 0.15), [0.5, 0.3, 0.81]),
+        (mf.Beckmann(0.5), [0.8, 0.0, 0.6]),
+        (mf.StudentT(0.35, 3.0, alpha_y=0.6), [-0.3, 0.5, 0.81]),
+        (mf.StudentT(0.35, 3.0, alpha_y=0.6, sampler="warp"), [-0.3, 0.5, 0.81]),
+        (mf.BesselK(0.3, 0.7, alpha_y=0.5), [0.7, 0.1, 0.2]),
+        (mf.Erfc(0.6), [0.0, 0.9, 0.1]),
+        (mf.GenExponential(0.4, 1.3), [0.0, 0.6, 0.8]),
+        (mf.DoubleGGX(0.3), [0.0, 0.0, -1.0]),
+    ],
+)
+def test_sample_visible_chi2(n, w):
+    w = unit(w)
+    samples = 100_000
+    s = n.sample_visible(w, np.random.default_rng(3), n=samples)
+    nu, nphi = 16, 24
+    counts = histogram(s.wm, nu, nphi)
+    expected = samples * cell_probabilities(lambda m: n.pdf_visible(w, m), nu, nphi)
+    assert abs(expected.sum() / samples - 1) < 2e-3
+    assert chi2_pvalue(counts.ravel(), expected.ravel()) > 1e-4
+
+
+def test_sample_dcos_chi2():
+    n = mf.Exponential(0.5, 0.3)
+    samples = 100_000
+    s = n.sample_dcos(np.random.default_rng(4), n=samples)
+    assert np.array_equal(s.pdf, n.pdf_dcos(s.wm))
+    nu, nphi = 16, 24
+    counts = histogram(s.wm, nu, nphi)
+    expected = samples * cell_probabilities(n.pdf_dcos, nu, nphi, order=8)
+    assert chi2_pvalue(counts.ravel(), expected.ravel()) > 1e-4
+
+
+def test_conductor_sample_chi2_with_rejections():
+    b = mf.Conductor(mf.GGX(0.5, 0.25), eta=1.5, k=3.0)
+    wo = unit([0.7, 0.2, 0.3])
+    samples = 100_000
+    s = b.sample(wo, np.random.default_rng(5), n=samples)
+    ok = s.lobe == 1
+    assert np.all(s.pdf[~ok] == 0) and np.all(s.wi[~ok] == 0)
+    nu, nphi = 16, 24
+    counts = histogram(s.wi[ok], nu, nphi)
+    expected = samples * cell_probabilities(lambda w: b.pdf(wo, w), nu, nphi, order=8)
+    # The rejected samples (reflections below the horizon) are the rest of the probability.
+    obs = np.append(counts.ravel(), (~ok).sum())
+    exp = np.append(expected.ravel(), samples - expected.sum())
+    assert chi2_pvalue(obs, exp) > 1e-4
+
+
+# ---- BSDFs.
+
+
+@pytest.mark.parametrize("scattering", ["single", "kulla_conty", "turquin", "walk"])
+def test_bsdf_sample_weights_match_eval_and_pdf(scattering):
+    rng = np.random.default_rng(6)
+    wo = hemisphere(300, rng)
+    for b in [
+        mf.Conductor(mf.Beckmann(0.4), eta=[0.2, 0.9, 1.1], k=[3.9, 2.4, 2.2], scattering=scattering),
+        mf.Dielectric(mf.GGX(0.3), 1.5, scattering=scattering),
+    ]:
+        s = b.sample(wo, rng.random((300, 3)))
+        ok = s.lobe > 0
+        assert ok.mean() > 0.8
+        if scattering == "walk":
+            # (f is the walk's estimate; pdf its MIS proxy: pdf matches.)
+            np.testing.assert_allclose(s.pdf[ok], b.pdf(wo[ok], s.wi[ok]), rtol=1e-12)
+            continue
+        np.testing.assert_allclose(s.pdf[ok], b.pdf(wo[ok], s.wi[ok]), rtol=1e-9)
+        np.testing.assert_allclose(s.f[ok], b.eval(wo[ok], s.wi[ok]), rtol=1e-9)
+
+
+def test_white_furnace():
+    rng = np.random.default_rng(8)
+    mu = np.array([0.2, 0.6, 0.95])
+    wo = np.stack([np.sqrt(1 - mu**2), 0 * mu, mu], axis=-1)
+    for scattering, tol in [("kulla_conty", 0.01), ("turquin", 0.01)]:
+        b = mf.Conductor(mf.GGX(0.8), scattering=scattering)
+        for w in wo:
+            s = b.sample(w, rng, n=200_000)
+            ok = s.lobe > 0
+            est = np.sum(s.f[ok] * s.wi[ok, 2] / s.pdf[ok]) / len(s.pdf)
+            assert abs(est - 1) < tol, (scattering, w, est)
+    # The walk with F = 1 mirrors: every walk leaves with weight 1.
+    a = mf.Beckmann(1.0).albedo(mu, walks=20_000)
+    np.testing.assert_allclose(a.total, 1.0, atol=1e-12)
+    assert a.reflect.shape == (3, 4)
+    # Its order 1 is the single-scattering albedo (quadrature), within the walk's error.
+    e1 = mf.single_scattering_albedo(mf.Beckmann(1.0), mu)
+    assert np.all(np.abs(a.reflect[:, 0] - e1) < 5 * a.reflect_stderr[:, 0] + 1e-4)
+    t = mf.AlbedoTable(mf.Beckmann(1.0))
+    np.testing.assert_allclose(t.e(mu), e1, rtol=2e-3)
+    assert 0 < t.e_avg < 1 and abs(t.lost_avg - (1 - t.e_avg)) < 1e-3
+    # Dielectric facets: reflect + transmit = 1 in total (no absorption).
+    d = mf.GGX(0.5).albedo(0.7, walks=20_000, eta=1.5)
+    assert abs(d.total - 1) < 1e-12 and d.transmit.sum() > 0.5
+
+
+def test_albedo_over_alpha_arrays():
+    # A table over (α, μ) in one call equals one material per α.
+    alpha = np.array([0.2, 0.7])[:, None]
+    mu = np.array([0.3, 0.9])
+    g = mf.GGX(0.5)
+    t = mf.single_scattering_albedo(g, mu, alpha=alpha)
+    assert t.shape == (2, 2)
+    for i, a in enumerate(alpha[:, 0]):
+        assert np.array_equal(t[i], mf.single_scattering_albedo(mf.GGX(a), mu))
+    w = g.albedo(mu, walks=2000, alpha=alpha)
+    assert w.reflect.shape == (2, 2, 4)
+    # (Each element has its own stream: seed + index; the second row's are indices 2, 3.)
+    assert np.array_equal(w.reflect[0], mf.GGX(0.2).albedo(mu, walks=2000).reflect)
+    an = mf.Beckmann(0.4, 0.2).albedo(0.5, walks=1000, alpha=[0.4, 0.8])
+    assert an.total.shape == (2,) and np.all(an.total == 1.0)
+    with pytest.raises(ValueError, match="alpha"):
+        mf.single_scattering_albedo(g, 0.5, alpha=[0.3, -1.0])
+
+
+def test_bsdf_errors():
+    g = mf.GGX(0.3)
+    for kwargs, match in [
+        (dict(eta=[1.0, 2.0], k=[1.0]), "channels"),
+        (dict(eta=[1.0, 2.0], k=[1.0, 2.0]), "1 or 3 channels"),
+        (dict(k=[1.0]), "k needs eta"),
+        (dict(eta=-1.0), "positive"),
+        (dict(masking="nope"), "masking"),
+        (dict(scattering="nope"), "scattering"),
+        (dict(scattering="walk", masking="separable"), "correlated"),
+    ]:
+        with pytest.raises(ValueError, match=match):
+            mf.Conductor(g, **kwargs)
+    with pytest.raises(ValueError, match="eta"):
+        mf.Dielectric(g, 1.0)
+    with pytest.raises(ValueError, match="transport"):
+        mf.Dielectric(g, 1.5, transport="x")
+    with pytest.raises(ValueError, match="last axis of length 3"):
+        mf.Dielectric(g, 1.5).sample([0, 0, 1.0], [0.5, 0.5])
+    with pytest.raises(ValueError, match="finite Lambda"):
+        mf.StudentT(0.3, 1.2).sample_visible([0, 0, 1.0], [0.5, 0.5])
+    with pytest.raises(ValueError, match="sampler"):
+        mf.Ei(0.3, sampler="fast")
+    assert mf.Ei(0.3).sampler == "posterior" and mf.Ei(0.3, sampler="warp").sampler == "warp"
+    assert mf.GGX(0.3).sampler == "warp"  # (a warp either way)
+
+
+# ---- Ctrl-C.
+
+
+def test_ctrl_c_interrupts_a_long_call():
+    def interrupt(signum, frame):
+        raise KeyboardInterrupt
+
+    old = signal.signal(signal.SIGALRM, interrupt)
+    try:
+        signal.setitimer(signal.ITIMER_REAL, 0.3)
+        start = time.monotonic()
+        with pytest.raises(KeyboardInterrupt):
+            # ~10⁴ elements of 10⁵ walks: minutes of work.
+            mf.GGX(0.5).albedo(np.linspace(0.1, 1, 10_000), walks=100_000)
+        assert time.monotonic() - start < 3.0
+    finally:
+        signal.setitimer(signal.ITIMER_REAL, 0)
+        signal.signal(signal.SIGALRM, old)
+
+
+def test_readme_python_snippets_run():
+    with open(os.path.join(ROOT, "README.md")) as fh:
+        text = fh.read()
+    blocks = [b.split("```", 1)[0] for b in text.split("```python\n")[1:]]
+    assert blocks
+    for b in blocks:
+        exec(compile(b, "README.md", "exec"), {})
+
+
+@pytest.mark.parametrize("name", ["ndf_curves", "sample_histogram", "albedo_orders"])
+def test_examples_run(name, tmp_path):
+    if "MICROSURFACE_EXAMPLES" not in os.environ:
+        pytest.importorskip("matplotlib")
+    path = os.path.join(ROOT, "examples", "python", f"{name}.py")
+    out = tmp_path / f"{name}.png"
+    subprocess.run([sys.executable, path, str(out)], check=True, capture_output=True)
+    assert out.stat().st_size > 10_000
+
+
+def test_fast_paths_at_every_length():
+    # Lengths around the kernels' blocks (4 096), the parallel threshold (16 384) and the
+    # chunks (2^20 for float32): each element as its own call.
+    g = mf.GGX(0.3)
+    rng = np.random.default_rng(11)
+    for n in [1, 4095, 4096, 4097, 10_000, 16_383, 16_384, 16_385, 70_001, (1 << 20) + 3]:
+        u = rng.random(n)
+        for dtype in (np.float64, np.float32):
+            x = u.astype(dtype)
+            for f in (g.d, g.lambda_, g.g1):
+                got = f(x)
+                idx = rng.integers(0, n, 50)
+                assert np.array_equal(got[idx], np.array([f(x[i]) for i in idx])), (n, dtype, f.__name__)
+                a = np.full(n, 0.3, dtype=dtype)
+                assert np.array_equal(f(x, alpha=a), got), (n, dtype)
+
+
+def test_seeded_fuzz_no_panic_at_the_edges():
+    # The contract's edges through every method (a Rust panic would surface as
+    # pyo3_runtime.PanicException, a BaseException): finite in-contract input gives finite
+    # output, samples are unit normals visible from w, bad input is a ValueError or NaN.
+    rng = np.random.default_rng(2026)
+    tiny = np.nextafter(0, 1)
+    us = np.array([0.0, -0.0, 1.0, 1 + 2.2e-16, tiny, 1e-300, 0.5, -0.5, -1.0, np.nan, np.inf, 1e300])
+    edge_w = np.array(
+        [[0, 0, 1.0], [1.0, 0, 0], [0, 0, -1.0], [1, 0, tiny], [1, 0, -tiny], [0.6, 0, 0.8], [0, 0, 0], [np.nan, 0, 1]]
+    )
+    u2 = np.array([[0.0, 0.0], [1 - 2**-53, 1 - 2**-53], [0.0, 1 - 2**-53], [0.5, 0.5]])
+    ndfs = [mf.GGX(1e-6), mf.GGX(1e6, 1e-3), mf.Beckmann(0.3, 0.9), mf.GTR(0.2, 0.5), mf.DoubleGGX(2.0),
+            mf.Exponential(0.05), mf.StudentT(0.3, 1.51), mf.Ei(0.3), mf.Erfc(0.7), mf.K0(0.3),
+            mf.BesselK(0.4, 0.5), mf.GenExponential(0.5, 20.0)]
+    for n in ndfs:
+        iso = n.alpha == n.alpha_y
+        a = None if iso else n.alpha
+        for f in (n.d, n.lambda_, n.sigma, n.g1, n.p2):
+            f(us, alpha=a)
+        n.g2(us[:, None], us, alpha=a)
+        n.p22(us[:, None], us, alpha=a)
+        for f in (n.d_wm, n.lambda_w, n.g1_w, n.sigma_w, n.pdf_dcos):
+            f(edge_w)
+        n.pdf_visible(edge_w[:, None], edge_w)
+        # (Few samples: the family's exact warps invert quadratures, up to milliseconds each.)
+        w = unit(rng.normal(size=(40, 3)))
+        w[:10, 2] = np.abs(w[:10, 2]) * 1e-12
+        for uu in (u2, rng.random((40, 2))):
+            s = n.sample_visible(w[: len(uu)], uu)
+            ok = np.abs(w[: len(uu), 2]) > 0
+            np.testing.assert_allclose(np.linalg.norm(s.wm[ok], axis=-1), 1, atol=1e-12)
+            assert np.all(s.wm[ok, 2] > 0) and np.all(np.isfinite(s.pdf[ok]))
+            d = n.sample_dcos(uu)
+            assert np.all(np.isfinite(d.wm)) and np.all(d.wm[:, 2] >= 0)
+        for b in (mf.Conductor(n, eta=[0.2, 0.9, 1.1], k=[3.9, 2.4, 2.2]), mf.Dielectric(n, 1.5), mf.Dielectric(n, 1 / 1.5)):
+            b.eval(edge_w[:, None], edge_w)
+            b.pdf(edge_w[:, None], edge_w)
+            u3 = np.concatenate([np.zeros((1, 3)), np.full((1, 3), 1 - 2**-53), rng.random((10, 3))])
+            s = b.sample(edge_w[:, None], u3)
+            ok = s.lobe > 0
+            assert np.all(np.isfinite(s.f[ok])) and np.all(s.pdf[ok] > 0) and np.all(np.isfinite(s.pdf[ok]))
