@@ -874,7 +874,9 @@ fn median(mut r: Vec<f64>) -> f64 {
 /// 10⁶-element slices: the scalar fast path in a plain loop, the slice function, and the
 /// slice function on every core (rayon), per element.
 fn batches(i: &Inputs) {
-    use microsurface::fast::{batch, double_ggx as dg, exponential as ex, gtr::FittedGtr as FastGtr};
+    use microsurface::fast::{
+        batch, double_ggx as dg, exponential as ex, gtr::FittedGtr as FastGtr,
+    };
     use microsurface::fast::{beckmann as fb, ggx as fg};
     const LEN: usize = 1_000_000;
     const ROUNDS: usize = 21;

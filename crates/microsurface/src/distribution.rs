@@ -87,8 +87,10 @@ use crate::microsurface::{Isotropic, Microsurface, Shaped, Stretched};
 use crate::vec3::Vec3;
 use crate::visible::UnitSlopes;
 use crate::{Beckmann, DoubleGgx, Exponential, Ggx, Gtr, ParamError};
+use std::collections::HashMap;
+use std::hash::Hash;
 use std::marker::PhantomData;
-use std::sync::Arc;
+use std::sync::{Arc, Mutex, OnceLock};
 
 /// A visible normal and its density w.r.t. the solid angle of the normal.
 #[derive(Clone, Copy, Debug, PartialEq)]
@@ -878,6 +880,30 @@ struct ExactParams {
     gamma: f64,
 }
 
+/// A process-wide cache of fits ([`crate::any_microfacet::FIT_CACHE_CAPACITY`] entries).
+type FitCache<K, V> = OnceLock<Mutex<HashMap<K, Arc<V>>>>;
+
+/// The fit of `key` from `cache`, or `make`'s, kept while the cache has room. The fit runs
+/// outside the lock (it takes milliseconds); a fit is a deterministic function of its key,
+/// so whichever thread stores it first, every material gets the same bits. A poisoned lock
+/// (a panic elsewhere while it was held) is used as it is: the map is never left half-written.
+fn cached<K: Eq + Hash, V>(
+    cache: &'static FitCache<K, V>,
+    key: K,
+    make: impl FnOnce() -> Result<V, ParamError>,
+) -> Result<Arc<V>, ParamError> {
+    let map = cache.get_or_init(Default::default);
+    if let Some(v) = map.lock().unwrap_or_else(|e| e.into_inner()).get(&key) {
+        return Ok(v.clone());
+    }
+    let v = Arc::new(make()?);
+    let mut m = map.lock().unwrap_or_else(|e| e.into_inner());
+    if m.len() < crate::any_microfacet::FIT_CACHE_CAPACITY || m.contains_key(&key) {
+        return Ok(m.entry(key).or_insert(v).clone());
+    }
+    Ok(v)
+}
+
 fn check<F: Real>(a: F) -> Result<f64, ParamError> {
     crate::error::check_alpha(a.to_f64())
 }
@@ -913,7 +939,10 @@ impl<F: Real> Microfacet<F, Gtr> {
         let data = if gamma == 2.0 {
             GtrData::Ggx
         } else if iso {
-            GtrData::Fitted(Arc::new(fast::gtr::FittedGtr::new(ax, gamma)?))
+            static FITS: FitCache<(u64, u64), fast::gtr::FittedGtr> = OnceLock::new();
+            GtrData::Fitted(cached(&FITS, (ax.to_bits(), gamma.to_bits()), || {
+                fast::gtr::FittedGtr::new(ax, gamma)
+            })?)
         } else {
             return Err(ParamError::Anisotropic(gamma));
         };
@@ -939,7 +968,9 @@ impl<F: Real, N: Shape<Data = Arc<fast::fitted::FittedShape>>> Microfacet<F, N> 
         let (ax, ay) = (check(alpha_x)?, check(alpha_y)?);
         let kind = N::FAMILY.expect("the family's Shape impls name their kind");
         let ndf = crate::AnyNdf::new(kind, 1.0, shape)?;
-        let data = Arc::new(fast::fitted::FittedShape::new(&ndf)?);
+        static FITS: FitCache<(crate::NdfKind, u64), fast::fitted::FittedShape> = OnceLock::new();
+        let key = (kind, ndf.shape().unwrap_or(0.0).to_bits());
+        let data = cached(&FITS, key, || fast::fitted::FittedShape::new(&ndf))?;
         Ok(Microfacet {
             ax: alpha_x,
             ay: alpha_y,
@@ -1051,6 +1082,9 @@ impl<F: Real, N: Shape> Distribution<F> for Microfacet<F, N> {
         (self.ax, self.ay)
     }
     fn ndf(&self) -> Option<(crate::NdfKind, Option<f64>)> {
+        if let Some(kind) = N::FAMILY {
+            return Some((kind, kind.shape_name().map(|_| self.exact.gamma)));
+        }
         Some(match N::UNIT {
             Some(unit) => (unit.kind(), None),
             None => (crate::NdfKind::Gtr, Some(self.exact.gamma)),

@@ -40,8 +40,9 @@ impl NdfKind {
         NdfKind::GenExponential,
     ];
 
-    /// The five NDFs with renderer fast paths ([`crate::Microfacet`]), shipped compensation
-    /// tables and report sections, in the order of the source pages (Beckmann first: the base).
+    /// The five NDFs of the source pages (d'Eon's NDF pages and Burley's appendix), with
+    /// shipped compensation tables and report sections, in the order of the pages (Beckmann
+    /// first: the base).
     pub const CLASSIC: [NdfKind; 5] = [
         NdfKind::Beckmann,
         NdfKind::Ggx,
@@ -50,8 +51,8 @@ impl NdfKind {
         NdfKind::Exponential,
     ];
 
-    /// The rest of the book's family (exact f64 types, the direction API through
-    /// [`crate::Exact`]).
+    /// The rest of the book's family: the Beckmann mixtures (fast through
+    /// [`crate::Microfacet::with_shape`]) and the generalised exponential (exact only).
     pub const FAMILY: [NdfKind; 6] = [
         NdfKind::StudentT,
         NdfKind::Ei,
@@ -86,6 +87,28 @@ impl NdfKind {
             NdfKind::GenExponential => "gen_exponential",
         }
     }
+
+    /// The other names [`NdfKind::from_str`](std::str::FromStr) accepts for the kind (after
+    /// lower-casing and mapping `-` and spaces to `_`): the names of the literature and of
+    /// the peers' scene formats.
+    pub fn aliases(self) -> &'static [&'static str] {
+        match self {
+            NdfKind::Beckmann => &["beckmann_spizzichino", "gaussian"],
+            NdfKind::Ggx => &["trowbridge_reitz", "tr"],
+            NdfKind::Gtr => &[
+                "generalized_trowbridge_reitz",
+                "generalised_trowbridge_reitz",
+            ],
+            NdfKind::DoubleGgx => &["dggx"],
+            NdfKind::Exponential => &["exp"],
+            NdfKind::StudentT => &["studentt", "student"],
+            NdfKind::Ei => &[],
+            NdfKind::Erfc => &[],
+            NdfKind::K0 => &[],
+            NdfKind::BesselK => &["besselk"],
+            NdfKind::GenExponential => &["generalized_exponential", "generalised_exponential"],
+        }
+    }
 }
 
 impl fmt::Display for NdfKind {
@@ -94,20 +117,30 @@ impl fmt::Display for NdfKind {
     }
 }
 
-/// An unknown NDF name.
+/// The names every NDF answers to, for error messages: each kind's [`NdfKind::name`].
+fn valid_names() -> String {
+    NdfKind::ALL.map(NdfKind::name).join(", ")
+}
+
+/// An unknown NDF name (the message lists the valid ones).
 #[derive(Clone, Debug, PartialEq)]
 pub struct UnknownNdf(pub String);
 
+/// At most 60 characters of a name are echoed in an error (a 1 MB name is not).
+fn clipped(s: &str) -> String {
+    match s.char_indices().nth(60) {
+        Some((i, _)) => format!("{}…", &s[..i]),
+        None => s.to_string(),
+    }
+}
+
 impl fmt::Display for UnknownNdf {
     fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
-        // At most 60 characters of the name are echoed (a 1 MB name is not).
-        let name = match self.0.char_indices().nth(60) {
-            Some((i, _)) => format!("{}…", &self.0[..i]),
-            None => self.0.clone(),
-        };
         write!(
             f,
-            "unknown ndf '{name}' (expected one of beckmann, ggx, gtr, double_ggx, exponential, student_t, ei, erfc, k0, bessel_k, gen_exponential)"
+            "unknown ndf '{}' (expected one of {}; case-insensitive, with aliases such as trowbridge_reitz)",
+            clipped(&self.0),
+            valid_names()
         )
     }
 }
@@ -116,11 +149,141 @@ impl std::error::Error for UnknownNdf {}
 
 impl FromStr for NdfKind {
     type Err = UnknownNdf;
+    /// The kind named `s`: its [`NdfKind::name`] or one of its [`NdfKind::aliases`],
+    /// case-insensitive, with `-` and spaces read as `_` (`"GGX"`, `"Student-T"`,
+    /// `"Trowbridge_Reitz"`).
     fn from_str(s: &str) -> Result<Self, Self::Err> {
+        let key: String = s
+            .trim()
+            .chars()
+            .map(|c| match c {
+                '-' | ' ' => '_',
+                c => c.to_ascii_lowercase(),
+            })
+            .collect();
         NdfKind::ALL
             .into_iter()
-            .find(|k| k.name() == s)
+            .find(|k| k.name() == key || k.aliases().contains(&key.as_str()))
             .ok_or_else(|| UnknownNdf(s.to_string()))
+    }
+}
+
+/// An NDF chosen by name, with its shape parameter: what a scene file or a command line
+/// says. Parsed from `"name"` or `"name:shape"` (`"ggx"`, `"GGX"`, `"trowbridge_reitz"`,
+/// `"student_t:2.5"`, `"gtr:1.5"`, `"bessel_k:0.7"`): the name as [`NdfKind`]'s
+/// `from_str` reads it, the shape a number, required by the kinds that have one
+/// ([`NdfKind::shape_name`]) and refused by the others. The shape's range is checked where
+/// the material is built ([`crate::AnyMicrofacet::new`], [`AnyNdf::new`]).
+///
+/// ```
+/// use microsurface::{NdfKind, NdfSpec};
+/// let spec: NdfSpec = "Student-T:2.5".parse()?;
+/// assert_eq!((spec.kind, spec.shape), (NdfKind::StudentT, Some(2.5)));
+/// assert_eq!(spec.to_string(), "student_t:2.5");
+/// assert!("gtr".parse::<NdfSpec>().is_err()); // GTR needs its γ
+/// # Ok::<(), microsurface::SpecError>(())
+/// ```
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct NdfSpec {
+    /// Which NDF.
+    pub kind: NdfKind,
+    /// Its shape parameter (γ of GTR, Student-T and the generalised exponential, a of
+    /// Bessel-K); `None` for the kinds without one.
+    pub shape: Option<f64>,
+}
+
+impl NdfSpec {
+    /// The spec of `kind` with `shape`: `Err` where the kind needs a shape and has none, or
+    /// has none and is given one.
+    pub fn new(kind: NdfKind, shape: Option<f64>) -> Result<NdfSpec, SpecError> {
+        match (kind.shape_name(), shape) {
+            (Some(name), None) => Err(SpecError::MissingShape { kind, name }),
+            (None, Some(_)) => Err(SpecError::UnexpectedShape(kind)),
+            _ => Ok(NdfSpec { kind, shape }),
+        }
+    }
+}
+
+impl fmt::Display for NdfSpec {
+    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
+        match self.shape {
+            Some(s) => write!(f, "{}:{s}", self.kind),
+            None => write!(f, "{}", self.kind),
+        }
+    }
+}
+
+impl FromStr for NdfSpec {
+    type Err = SpecError;
+    fn from_str(s: &str) -> Result<Self, Self::Err> {
+        let (name, shape) = match s.split_once(':') {
+            Some((name, shape)) => (name, Some(shape)),
+            None => (s, None),
+        };
+        let kind: NdfKind = name.parse().map_err(SpecError::UnknownNdf)?;
+        let shape = match shape {
+            None => None,
+            Some(t) => Some(
+                t.trim()
+                    .parse::<f64>()
+                    .map_err(|_| SpecError::BadShape(clipped(t)))?,
+            ),
+        };
+        NdfSpec::new(kind, shape)
+    }
+}
+
+/// Why an NDF spec or a material chosen at run time was refused.
+#[derive(Clone, Debug, PartialEq)]
+pub enum SpecError {
+    /// The name is none of the NDFs' (the message lists them).
+    UnknownNdf(UnknownNdf),
+    /// The text after `:` is not a number.
+    BadShape(String),
+    /// The kind has a shape parameter (`name`) and none was given.
+    MissingShape { kind: NdfKind, name: &'static str },
+    /// The kind has no shape parameter and one was given.
+    UnexpectedShape(NdfKind),
+    /// A parameter outside its range.
+    Param(ParamError),
+}
+
+impl fmt::Display for SpecError {
+    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
+        match self {
+            SpecError::UnknownNdf(e) => e.fmt(f),
+            SpecError::BadShape(t) => write!(
+                f,
+                "the shape parameter after ':' must be a number, got '{t}' (e.g. student_t:2.5)"
+            ),
+            SpecError::MissingShape { kind, name } => write!(
+                f,
+                "ndf {kind} needs its shape parameter {name} (e.g. {kind}:{})",
+                if *kind == NdfKind::BesselK {
+                    "0.7"
+                } else {
+                    "2.5"
+                }
+            ),
+            SpecError::UnexpectedShape(kind) => {
+                write!(f, "ndf {kind} has no shape parameter")
+            }
+            SpecError::Param(e) => e.fmt(f),
+        }
+    }
+}
+
+impl std::error::Error for SpecError {}
+
+impl From<ParamError> for SpecError {
+    fn from(e: ParamError) -> Self {
+        SpecError::Param(e)
+    }
+}
+
+impl From<UnknownNdf> for SpecError {
+    fn from(e: UnknownNdf) -> Self {
+        SpecError::UnknownNdf(e)
     }
 }
 

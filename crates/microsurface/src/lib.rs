@@ -91,6 +91,7 @@
 //! assert!(Ggx::new(-1.0).is_err());
 //! ```
 
+pub mod any_microfacet;
 pub mod beckmann;
 pub mod bessel_k;
 pub mod bsdf;
@@ -126,6 +127,7 @@ pub mod verify;
 pub mod visible;
 pub mod walk;
 
+pub use any_microfacet::AnyMicrofacet;
 pub use beckmann::Beckmann;
 pub use bessel_k::BesselK;
 pub use distribution::{Distribution, Exact, Microfacet, Sample};
@@ -134,7 +136,7 @@ pub use ei::Ei;
 pub use erfc::Erfc;
 pub use error::ParamError;
 pub use exponential::Exponential;
-pub use family::{AnyNdf, NdfKind};
+pub use family::{AnyNdf, NdfKind, NdfSpec, SpecError};
 pub use fast::Real;
 pub use gen_exponential::GenExponential;
 pub use ggx::Ggx;

@@ -137,7 +137,9 @@ fn dcos_pdf_is_normalised() {
 }
 
 mod visible {
-    use microsurface::{Distribution, DoubleGgx, Exact, Exponential, Ndf, NdfKind, UnitSlopes, Vec3};
+    use microsurface::{
+        Distribution, DoubleGgx, Exact, Exponential, Ndf, NdfKind, UnitSlopes, Vec3,
+    };
 
     const KINDS: [NdfKind; 4] = [
         NdfKind::Beckmann,
