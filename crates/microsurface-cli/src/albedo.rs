@@ -9,7 +9,7 @@ use microsurface::walk::{
     albedo, single_scattering_albedo, single_scattering_albedo_dielectric_level, Albedo, ByOrder,
     DielectricFacets, DiffuseFacets, G2Form, Heights, Microsurface, MirrorFacets,
 };
-use microsurface::{Beckmann, Distribution, DoubleGgx, Exponential, Ggx, Gtr, Microfacet, NdfKind};
+use microsurface::{AnyMicrofacet, Distribution};
 use serde_json::{json, Value};
 use std::process::ExitCode;
 
@@ -35,47 +35,12 @@ enum Facets {
     Dielectric(f64),
 }
 
-/// `$body` with `$d` bound to the f64 `Microfacet` of `$kind` at (αx, αy) (GTR's γ from the
-/// request), or the line's error.
-macro_rules! with_material {
-    ($shape:expr, $kind:expr, $ax:expr, $ay:expr, |$d:ident| $body:expr) => {{
-        let err = |e: microsurface::ParamError| e.to_string();
-        match $kind {
-            NdfKind::Ggx => {
-                let $d = Microfacet::<f64, Ggx>::new($ax, $ay).map_err(err)?;
-                $body
-            }
-            NdfKind::Beckmann => {
-                let $d = Microfacet::<f64, Beckmann>::new($ax, $ay).map_err(err)?;
-                $body
-            }
-            NdfKind::DoubleGgx => {
-                let $d = Microfacet::<f64, DoubleGgx>::new($ax, $ay).map_err(err)?;
-                $body
-            }
-            NdfKind::Exponential => {
-                let $d = Microfacet::<f64, Exponential>::new($ax, $ay).map_err(err)?;
-                $body
-            }
-            NdfKind::Gtr => {
-                let $d = Microfacet::<f64, Gtr>::gtr($ax, $ay, $shape.unwrap_or(f64::NAN))
-                    .map_err(err)?;
-                $body
-            }
-            // The rest of the family: the exact path.
-            kind => {
-                let $d = microsurface::Exact::new(kind, $ax, $ay, $shape).map_err(err)?;
-                $body
-            }
-        }
-    }};
-}
-
 fn albedo_line(text: &str) -> Result<Value, String> {
     let v: Value = serde_json::from_str(text).map_err(|e| format!("not valid JSON: {e}"))?;
     let obj = v.as_object().ok_or("expected a JSON object")?;
     crate::eval::known_fields(obj, &FIELDS)?;
     let (kind, ax, ay, shape) = ndf_alpha(obj)?;
+    let d = AnyMicrofacet::<f64>::new(kind, ax, ay, shape).map_err(|e| e.to_string())?;
     let mu = field(obj, "mu")?;
     if !(mu != 0.0 && mu.abs() <= 1.0) {
         return Err(format!(
@@ -133,14 +98,13 @@ fn albedo_line(text: &str) -> Result<Value, String> {
     if quadrature {
         return match facets {
             Facets::Mirror(None) => {
-                let e1 = with_material!(shape, kind, ax, ay, |d| single_scattering_albedo(&d, wo));
+                let e1 = single_scattering_albedo(&d, wo);
                 Ok(json!({ "e1": e1 }))
             }
             Facets::Dielectric(eta) => {
                 // (The exact height-correlated G2: the walk's order 1.)
-                let (r, t) = with_material!(shape, kind, ax, ay, |d| {
-                    single_scattering_albedo_dielectric_level(&d, wo, eta, G2Form::Exact, 4)
-                });
+                let (r, t) =
+                    single_scattering_albedo_dielectric_level(&d, wo, eta, G2Form::Exact, 4);
                 Ok(json!({ "reflect": { "e1": r }, "transmit": { "e1": t } }))
             }
             _ => Err("method 'quadrature' is the single-scattering albedo of the F = 1 conductor or a dielectric (no eta and k, or diffuse)".into()),
@@ -163,9 +127,7 @@ fn albedo_line(text: &str) -> Result<Value, String> {
     } else {
         0
     };
-    let a = with_material!(shape, kind, ax, ay, |d| {
-        run_walks(d, heights, &facets, wo, walks as u64, seed)
-    });
+    let a = run_walks(d, heights, &facets, wo, walks as u64, seed);
     let by_order = |b: &ByOrder| {
         json!({
             "orders": b.orders,

@@ -6,14 +6,12 @@ use crate::eval::field;
 use microsurface::bsdf::{Bsdf, BsdfSample, Conductor, Dielectric, Lobe, Masking};
 use microsurface::fresnel::{self, One};
 use microsurface::walk::{ByOrder, DielectricFacets, MirrorFacets, MultipleScattering};
-use microsurface::{Beckmann, Distribution, DoubleGgx, Exponential, Ggx, Gtr, Microfacet, NdfKind};
+use microsurface::{AnyMicrofacet, Distribution, NdfKind};
 use serde_json::{json, Map, Value};
 use std::process::ExitCode;
 
 pub fn run(args: &[String]) -> Result<ExitCode, String> {
-    // GTR materials fit Λ at construction (1–90 ms): the last one is kept for the next line.
-    let mut cache: Option<(f64, f64, f64, Microfacet<f64, Gtr>)> = None;
-    crate::eval::json_lines("bsdf", args, |text| bsdf_line(text, &mut cache))
+    crate::eval::json_lines("bsdf", args, bsdf_line)
 }
 
 const FIELDS: [&str; 14] = [
@@ -24,39 +22,15 @@ const FIELDS: [&str; 14] = [
 /// Samples per eval_ms line at most (10⁹: minutes; a typo's 10²⁰ is an error, not a hang).
 const MAX_SAMPLES: f64 = 1e9;
 
-/// Answers one request line.
-fn bsdf_line(
-    text: &str,
-    cache: &mut Option<(f64, f64, f64, Microfacet<f64, Gtr>)>,
-) -> Result<Value, String> {
+/// Answers one request line (GTR's and the family's fits are cached by the library, so a
+/// line of a material seen before does not fit again).
+fn bsdf_line(text: &str) -> Result<Value, String> {
     let v: Value = serde_json::from_str(text).map_err(|e| format!("not valid JSON: {e}"))?;
     let obj = v.as_object().ok_or("expected a JSON object")?;
     crate::eval::known_fields(obj, &FIELDS)?;
     let req = Request::parse(obj)?;
     let (kind, ax, ay, shape) = ndf_alpha(obj)?;
-    let err = |e: microsurface::ParamError| e.to_string();
-    match kind {
-        NdfKind::Ggx => req.answer(Microfacet::<f64, Ggx>::new(ax, ay).map_err(err)?),
-        NdfKind::Beckmann => req.answer(Microfacet::<f64, Beckmann>::new(ax, ay).map_err(err)?),
-        NdfKind::DoubleGgx => req.answer(Microfacet::<f64, DoubleGgx>::new(ax, ay).map_err(err)?),
-        NdfKind::Exponential => {
-            req.answer(Microfacet::<f64, Exponential>::new(ax, ay).map_err(err)?)
-        }
-        NdfKind::Gtr => {
-            let gamma = shape.unwrap_or(f64::NAN);
-            let m = match cache {
-                Some((a, b, g, m)) if (*a, *b, *g) == (ax, ay, gamma) => m.clone(),
-                _ => {
-                    let m = Microfacet::<f64, Gtr>::gtr(ax, ay, gamma).map_err(err)?;
-                    *cache = Some((ax, ay, gamma, m.clone()));
-                    m
-                }
-            };
-            req.answer(m)
-        }
-        // The rest of the family: the exact path.
-        _ => req.answer(microsurface::Exact::new(kind, ax, ay, shape).map_err(err)?),
-    }
+    req.answer(AnyMicrofacet::<f64>::new(kind, ax, ay, shape).map_err(|e| e.to_string())?)
 }
 
 /// The request's "ndf", "alpha" (a or [ax, ay]) and shape parameter ("gamma" for gtr,

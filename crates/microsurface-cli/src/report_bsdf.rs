@@ -9,7 +9,7 @@ use crate::svg::{Plot, Series, Style};
 use microsurface::bsdf::{Bsdf, Conductor, Dielectric};
 use microsurface::chi2::SplitMix64;
 use microsurface::fresnel::{self, One};
-use microsurface::{Beckmann, DoubleGgx, Exponential, Ggx, Gtr, Microfacet, NdfKind};
+use microsurface::{AnyMicrofacet, NdfKind};
 use std::f64::consts::PI;
 
 /// The plots' roughness (isotropic), GTR's γ, the dielectric's η and the conductor (gold's
@@ -23,43 +23,12 @@ const GOLD_G: fresnel::Conductor<f64, 1> = fresnel::Conductor {
 };
 const THETA_O: [f64; 3] = [0.0, 45.0, 75.0];
 
-/// Evaluates `$body` with `$d` bound to the f64 `Microfacet` of `$kind` at (α, α) (GTR at
-/// γ = 1.5, or the γ given): one expression, every NDF type.
-macro_rules! with_ndf {
-    ($kind:expr, $alpha:expr, |$d:ident| $body:expr) => {
-        with_ndf!($kind, $alpha, GAMMA, |$d| $body)
-    };
-    ($kind:expr, $alpha:expr, $gamma:expr, |$d:ident| $body:expr) => {{
-        let a: f64 = $alpha;
-        match $kind {
-            NdfKind::Ggx => {
-                let $d = Microfacet::<f64, Ggx>::new(a, a).expect("valid α");
-                $body
-            }
-            NdfKind::Beckmann => {
-                let $d = Microfacet::<f64, Beckmann>::new(a, a).expect("valid α");
-                $body
-            }
-            NdfKind::DoubleGgx => {
-                let $d = Microfacet::<f64, DoubleGgx>::new(a, a).expect("valid α");
-                $body
-            }
-            NdfKind::Exponential => {
-                let $d = Microfacet::<f64, Exponential>::new(a, a).expect("valid α");
-                $body
-            }
-            NdfKind::Gtr => {
-                let $d = Microfacet::<f64, Gtr>::gtr(a, a, $gamma).expect("valid α, γ");
-                $body
-            }
-            // The BSDF and multiple-scattering sections cover NdfKind::CLASSIC (the family has
-            // no fast kernels yet).
-            kind => unreachable!("{kind}: the report's BSDF sections cover the classic NDFs"),
-        }
-    }};
+/// The f64 material of `kind` at (α, α) (GTR at γ) through the run-time door. (These
+/// sections cover [`NdfKind::CLASSIC`]: GTR is the one with a shape.)
+pub(crate) fn material(kind: NdfKind, alpha: f64, gamma: f64) -> AnyMicrofacet<f64> {
+    let shape = kind.shape_name().map(|_| gamma);
+    AnyMicrofacet::new(kind, alpha, alpha, shape).expect("the report's parameters are valid")
 }
-
-pub(crate) use with_ndf;
 
 fn label(kind: NdfKind) -> String {
     if kind == NdfKind::Gtr {
@@ -91,7 +60,8 @@ fn polar(f_cos: impl Fn([f64; 3]) -> f64, below: bool) -> Vec<(f64, f64)> {
 
 /// The conductor's and the dielectric's polar plots for one NDF.
 fn polar_plots(kind: NdfKind) -> Vec<Plot> {
-    with_ndf!(kind, ALPHA, |d| {
+    {
+        let d = material(kind, ALPHA, GAMMA);
         let conductor = Conductor::new(d.clone(), GOLD_G);
         let dielectric = Dielectric::new(d, ETA);
         let mut pc = Plot::new(
@@ -160,7 +130,7 @@ fn polar_plots(kind: NdfKind) -> Vec<Plot> {
             );
         }
         vec![pc, pr, pt]
-    })
+    }
 }
 
 /// Histogram of θi (0° to 180°: above, then below the surface) of a BSDF's samples for wo at
@@ -212,7 +182,8 @@ fn sample_histogram<B: Bsdf<f64>>(title: String, caption: &str, b: &B) -> Plot {
 }
 
 fn histogram_plots(kind: NdfKind) -> Vec<Plot> {
-    with_ndf!(kind, ALPHA, |d| {
+    {
+        let d = material(kind, ALPHA, GAMMA);
         let conductor = Conductor::new(d.clone(), GOLD_G);
         let dielectric = Dielectric::new(d, ETA);
         vec![
@@ -233,14 +204,15 @@ fn histogram_plots(kind: NdfKind) -> Vec<Plot> {
                 &dielectric,
             ),
         ]
-    })
+    }
 }
 
 /// The single-scattering albedo E(θo) = ∫ f cos θi dωi of the conductor with F = 1, by the
 /// sampler's weights f cos/pdf over a 128 × 128 grid of stratified uniforms (jittered): the
 /// fraction of the energy a single-scattering microfacet BSDF keeps.
 fn albedo(kind: NdfKind, alpha: f64, theta_o: f64) -> f64 {
-    with_ndf!(kind, alpha, |d| {
+    {
+        let d = material(kind, alpha, GAMMA);
         let b = Conductor::new(d, One::<1>);
         let wo = wo_at(theta_o);
         let n = 128;
@@ -258,7 +230,7 @@ fn albedo(kind: NdfKind, alpha: f64, theta_o: f64) -> f64 {
             }
         }
         sum / (n * n) as f64
-    })
+    }
 }
 
 fn albedo_plots() -> Vec<Plot> {

@@ -4,7 +4,7 @@
 //! clearcoat lobe), whose compensation table the library ships.
 
 use crate::report::{grid, short};
-use crate::report_bsdf::with_ndf;
+use crate::report_bsdf::material;
 use crate::svg::{Plot, Series, Style};
 use microsurface::bsdf::{Bsdf, Transport};
 use microsurface::compensate::{
@@ -14,7 +14,7 @@ use microsurface::fresnel::One;
 use microsurface::quad::integrate;
 use microsurface::table::{Grid, Material, Method, Spec};
 use microsurface::walk::{single_scattering_albedo, single_scattering_albedo_dielectric};
-use microsurface::{Beckmann, DoubleGgx, Exponential, Ggx, Gtr, Microfacet, NdfKind};
+use microsurface::NdfKind;
 use std::f64::consts::PI;
 
 /// GTR's γ in this section.
@@ -72,7 +72,8 @@ fn order_plots() -> Vec<Plot> {
                     .collect();
                 p = p.with(Series::new(*label, pts, Style::Markers).color(k));
             }
-            let e1 = with_ndf!(kind, 1.0, GAMMA, |d| {
+            let e1 = {
+                let d = material(kind, 1.0, GAMMA);
                 grid(0.05, 1.0, 40)
                     .into_iter()
                     .map(|m| {
@@ -82,7 +83,7 @@ fn order_plots() -> Vec<Plot> {
                         )
                     })
                     .collect::<Vec<_>>()
-            });
+            };
             p.with(Series::new("order 1, quadrature", e1, Style::Dashed).color(0))
         })
         .collect()
@@ -149,7 +150,8 @@ fn furnace_plot() -> Plot {
          error (tests hold it to 1e-3; measured ≤ 7e-5).",
     );
     for (k, kind) in NdfKind::CLASSIC.into_iter().enumerate() {
-        let (before, kc, tq) = with_ndf!(kind, 1.0, GAMMA, |d| {
+        let (before, kc, tq) = {
+            let d = material(kind, 1.0, GAMMA);
             let table = AlbedoTable::new(&d);
             let c = Compensated::from_table(d.clone(), One::<1>, Scheme::KullaConty, table.clone());
             let t = Compensated::from_table(d.clone(), One::<1>, Scheme::Turquin, table);
@@ -160,7 +162,7 @@ fn furnace_plot() -> Plot {
             let kc: Vec<(f64, f64)> = mu.iter().map(|&m| (m, furnace(&c, m))).collect();
             let tq: Vec<(f64, f64)> = mu.iter().map(|&m| (m, furnace(&t, m))).collect();
             (b, kc, tq)
-        });
+        };
         p = p
             .with(Series::new(format!("{} single", name(kind)), before, Style::Dashed).color(k))
             .with(Series::new(format!("{} Kulla–Conty", name(kind)), kc, Style::Markers).color(k))
@@ -211,7 +213,8 @@ fn dielectric_furnace_plot() -> Plot {
         "The energy a rough dielectric interface keeps (reflected plus transmitted,          importance transport): single scattering (dashed; by quadrature over the microsurface          normal), and compensated with Kulla & Conty's two-sided lobes (circles: the single          scattering plus the added lobes, integrated) and with Turquin's 1/E (crosses),          every NDF. From inside, total internal reflection sends more light back into the          rough interface, so single scattering loses more there. Compensated, every NDF          keeps 1 within the tables' interpolation error (tests hold it to 1e-3; measured          ≤ 1.9e-4).",
     );
     for (k, kind) in NdfKind::CLASSIC.into_iter().enumerate() {
-        let (before, kc, tq) = with_ndf!(kind, 1.0, GAMMA, |d| {
+        let (before, kc, tq) = {
+            let d = material(kind, 1.0, GAMMA);
             let tables = DielectricTables::new(&d, 1.5);
             let c = CompensatedDielectric::from_tables(
                 d.clone(),
@@ -234,7 +237,7 @@ fn dielectric_furnace_plot() -> Plot {
                 tq.push((m, (r + t) / side.e(m.abs())));
             }
             (b, kc, tq)
-        });
+        };
         p = p
             .with(Series::new(format!("{} single", name(kind)), before, Style::Dashed).color(k))
             .with(Series::new(format!("{} Kulla–Conty", name(kind)), kc, Style::Markers).color(k))

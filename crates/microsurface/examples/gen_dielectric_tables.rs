@@ -28,7 +28,7 @@ fn main() {
             continue;
         }
         let t = std::time::Instant::now();
-        let bytes = dielectric_table_bytes(kind, gamma, threads);
+        let bytes = dielectric_table_bytes(kind, gamma, threads).expect("valid NDF parameters");
         let path = format!("{dir}/{name}-dielectric.mfd");
         std::fs::write(&path, &bytes).expect("write the table");
         eprintln!(

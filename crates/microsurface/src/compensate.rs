@@ -615,9 +615,12 @@ fn dielectric_header() -> Vec<u8> {
 /// [`AlbedoTable`]; E the single-scattering interface's reflection plus transmission
 /// ([`crate::walk::single_scattering_albedo_dielectric`] at the rule's level 3, as
 /// [`DielectricTables::compute`]).
-pub fn dielectric_table_bytes(kind: NdfKind, gamma: Option<f64>, threads: usize) -> Vec<u8> {
-    use crate::distribution::Microfacet;
-    use crate::{Beckmann, DoubleGgx, Exponential, Ggx, Gtr};
+pub fn dielectric_table_bytes(
+    kind: NdfKind,
+    gamma: Option<f64>,
+    threads: usize,
+) -> Result<Vec<u8>, crate::ParamError> {
+    use crate::AnyMicrofacet;
     let (a0, a1, na) = SHIP_ALPHA;
     let alphas: Vec<f64> = (0..na)
         .map(|i| (a0.ln() + (a1.ln() - a0.ln()) * i as f64 / (na - 1) as f64).exp())
@@ -632,25 +635,19 @@ pub fn dielectric_table_bytes(kind: NdfKind, gamma: Option<f64>, threads: usize)
         }
         out
     }
-    let one = |a: f64| -> Vec<f32> {
-        match kind {
-            NdfKind::Beckmann => row(&Microfacet::<f64, Beckmann>::new(a, a).unwrap()),
-            NdfKind::Ggx => row(&Microfacet::<f64, Ggx>::new(a, a).unwrap()),
-            NdfKind::DoubleGgx => row(&Microfacet::<f64, DoubleGgx>::new(a, a).unwrap()),
-            NdfKind::Exponential => row(&Microfacet::<f64, Exponential>::new(a, a).unwrap()),
-            NdfKind::Gtr => row(&Microfacet::<f64, Gtr>::gtr(a, a, gamma.unwrap_or(2.0)).unwrap()),
-            _ => row(&crate::Exact::new(kind, a, a, gamma).unwrap()),
-        }
-    };
+    let materials = alphas
+        .iter()
+        .map(|&a| AnyMicrofacet::<f64>::new(kind, a, a, gamma))
+        .collect::<Result<Vec<_>, _>>()?;
     let threads = threads.max(1);
     let mut rows: Vec<(usize, Vec<f32>)> = std::thread::scope(|scope| {
         let handles: Vec<_> = (0..threads)
             .map(|t| {
-                let (alphas, one) = (&alphas, &one);
+                let materials = &materials;
                 scope.spawn(move || {
-                    (0..alphas.len())
+                    (0..materials.len())
                         .filter(|i| i % threads == t)
-                        .map(|i| (i, one(alphas[i])))
+                        .map(|i| (i, row(&materials[i])))
                         .collect::<Vec<_>>()
                 })
             })
@@ -665,7 +662,7 @@ pub fn dielectric_table_bytes(kind: NdfKind, gamma: Option<f64>, threads: usize)
     for v in rows.iter().flat_map(|r| &r.1) {
         b.extend_from_slice(&v.to_le_bytes());
     }
-    b
+    Ok(b)
 }
 
 /// F_avg = 2∫F(μ)μ dμ of the dielectric Fresnel term at relative index η (from the side

@@ -37,7 +37,7 @@ use crate::walk::{
     single_scattering_albedo_tol, AlbedoSums, DielectricFacets, DiffuseFacets, Heights,
     Microsurface, MirrorFacets, WalkRng,
 };
-use crate::{Beckmann, DoubleGgx, Exponential, Ggx, Gtr, Microfacet};
+use crate::AnyMicrofacet;
 
 /// Walks per chunk: the unit of work (and of the random streams) of [`Grid::generate`]
 /// (2¹⁶: a few ms of work, so that a cell of 10⁶ walks spreads over 16 chunks).
@@ -100,40 +100,14 @@ impl std::fmt::Display for TableError {
 
 impl std::error::Error for TableError {}
 
-/// `$body` with `$d` bound to the fast f64 material of `$kind` at isotropic α (GTR at γ),
-/// or the constructor's error as a [`TableError`].
-macro_rules! with_distribution {
-    ($kind:expr, $a:expr, $gamma:expr, |$d:ident| $body:expr) => {{
-        let e = |e: crate::ParamError| TableError(e.to_string());
-        match $kind {
-            NdfKind::Ggx => {
-                let $d = Microfacet::<f64, Ggx>::new($a, $a).map_err(e)?;
-                $body
-            }
-            NdfKind::Beckmann => {
-                let $d = Microfacet::<f64, Beckmann>::new($a, $a).map_err(e)?;
-                $body
-            }
-            NdfKind::DoubleGgx => {
-                let $d = Microfacet::<f64, DoubleGgx>::new($a, $a).map_err(e)?;
-                $body
-            }
-            NdfKind::Exponential => {
-                let $d = Microfacet::<f64, Exponential>::new($a, $a).map_err(e)?;
-                $body
-            }
-            NdfKind::Gtr => {
-                let $d =
-                    Microfacet::<f64, Gtr>::gtr($a, $a, $gamma.unwrap_or(f64::NAN)).map_err(e)?;
-                $body
-            }
-            // The rest of the family: the exact path (no fast kernels yet).
-            kind => {
-                let $d = crate::Exact::new(kind, $a, $a, $gamma).map_err(e)?;
-                $body
-            }
-        }
-    }};
+/// The fast f64 material of `kind` at isotropic α (the run-time door), or the
+/// constructor's error as a [`TableError`].
+fn material(
+    kind: NdfKind,
+    alpha: f64,
+    shape: Option<f64>,
+) -> Result<AnyMicrofacet<f64>, TableError> {
+    AnyMicrofacet::new(kind, alpha, alpha, shape).map_err(|e| TableError(e.to_string()))
 }
 
 const MAGIC: &[u8; 8] = b"MFALBEDO";
@@ -210,7 +184,7 @@ impl Spec {
             );
         }
         for &a in &self.alpha {
-            with_distribution!(self.ndf, a, self.gamma, |d| d.alpha());
+            material(self.ndf, a, self.gamma)?;
         }
         Ok(())
     }
@@ -316,9 +290,12 @@ impl Grid {
             let (ia, im) = (t.cell / spec.mu.len(), t.cell % spec.mu.len());
             let mu = spec.mu[im];
             let wo = [((1.0 - mu) * (1.0 + mu)).sqrt(), 0.0, mu];
-            let out = with_distribution!(spec.ndf, spec.alpha[ia], spec.gamma, |d| {
-                cell(&d, spec, wo, t)
-            });
+            let out = cell(
+                &material(spec.ndf, spec.alpha[ia], spec.gamma)?,
+                spec,
+                wo,
+                t,
+            );
             let n = done.fetch_add(1, std::sync::atomic::Ordering::Relaxed) + 1;
             progress(n, total);
             Ok(out)
