@@ -12,8 +12,18 @@ Per element over 10⁶ uniform cosines at α = 0.3 (median of the rounds):
   and on rayon's pool (pieces of 16 384), timed inside Rust in this process;
 * the call overhead for a Python float.
 The issue's targets: ≥ 3× hand NumPy; within 1.3× of the Rust slice forms; ≤ 1 µs a scalar.
+
+Then (issue 33) a rough conductor's eval over 10⁵ direction pairs (wo, wi uniform on the upper
+hemisphere, RGB gold, α = 0.3, single scattering, height-correlated G2) for every NDF, per
+element and as a ratio to GGX's (the target: ≤ 3× GGX for every NDF but the generalised
+exponential, which has no fast path); with ``--exact`` also through the exact path
+(``exact=True``) where the installed package has it.
+
+Run ``python benchmark.py bsdf`` for the BSDF table alone, ``python benchmark.py slices`` for
+the first part alone. RAYON_NUM_THREADS=1 gives per-core figures.
 """
 
+import sys
 import time
 
 import numpy as np
@@ -79,5 +89,61 @@ def main():
         print(f"single direction {label}: {t_one / 1000:.3f} µs (a batch of one: {t_batch / 1000:.2f} µs)")
 
 
+# (name, constructor) of every NDF, at α = 0.3.
+NDFS = [
+    ("GGX", lambda **k: microsurface.GGX(0.3, **k)),
+    ("Beckmann", lambda **k: microsurface.Beckmann(0.3, **k)),
+    ("GTR γ=1.5", lambda **k: microsurface.GTR(0.3, 1.5, **k)),
+    ("Double GGX", lambda **k: microsurface.DoubleGGX(0.3, **k)),
+    ("Exponential", lambda **k: microsurface.Exponential(0.3, **k)),
+    ("Student-T γ=2.5", lambda **k: microsurface.StudentT(0.3, 2.5, **k)),
+    ("Ei", lambda **k: microsurface.Ei(0.3, **k)),
+    ("Erfc", lambda **k: microsurface.Erfc(0.3, **k)),
+    ("K0", lambda **k: microsurface.K0(0.3, **k)),
+    ("Bessel-K a=0.7", lambda **k: microsurface.BesselK(0.3, 0.7, **k)),
+    ("GenExp γ=1.5", lambda **k: microsurface.GenExponential(0.3, 1.5, **k)),
+]
+GOLD = dict(eta=[0.143, 0.374, 1.442], k=[3.983, 2.385, 1.603])
+
+
+def bsdf_table(n=100_000, exact=False):
+    rng = np.random.default_rng(7)
+
+    def hemisphere():
+        w = rng.normal(size=(n, 3))
+        w /= np.linalg.norm(w, axis=-1, keepdims=True)
+        w[:, 2] = np.abs(w[:, 2])
+        return w
+
+    wo, wi = hemisphere(), hemisphere()
+    paths = [("", {})]
+    if exact:
+        paths.append((" exact", dict(exact=True)))
+    rows = []
+    for label, make in NDFS:
+        for suffix, kw in paths:
+            try:
+                b = microsurface.Conductor(make(**kw), **GOLD)
+            except TypeError:
+                continue  # (a package without exact=)
+            start = time.perf_counter()
+            b.eval(wo, wi)
+            first = time.perf_counter() - start
+            # Fewer rounds where one call takes seconds (the exact path of the family).
+            rounds = 7 if first < 0.5 else (3 if first < 5 else 1)
+            t = median_ns(lambda: b.eval(wo, wi), rounds=rounds, n=n) if rounds > 1 else first * 1e9 / n
+            rows.append((label + suffix, t))
+    ggx = rows[0][1]
+    print(f"rough conductor eval (RGB gold, α = 0.3), {n} direction pairs, per element")
+    print(f"{'':22} {'per element':>12} {'× GGX':>8}")
+    for label, t in rows:
+        per = f"{t:.0f} ns" if t < 1e4 else f"{t / 1000:.1f} µs"
+        print(f"{label:22} {per:>12} {t / ggx:7.2f}×")
+
+
 if __name__ == "__main__":
-    main()
+    what = sys.argv[1] if len(sys.argv) > 1 else "all"
+    if what in ("all", "slices"):
+        main()
+    if what in ("all", "bsdf"):
+        bsdf_table(exact="--exact" in sys.argv)

@@ -1196,7 +1196,7 @@ fn in_turn<const K: usize>(elements: usize, mut passes: [&mut dyn FnMut(); K]) -
 /// the BSDF's NDF parts (D, G2, the RGB conductor Fresnel, and for sampling the visible
 /// normal) timed as loops of their own.
 fn wavefront(i: &Inputs) {
-    use microsurface::bsdf::{Bsdf, Conductor};
+    use microsurface::bsdf::{Bsdf, RoughConductor};
     use microsurface::fast::batch::{self, GgxConductor, Vectors, VectorsMut};
     use microsurface::fresnel::{self, Fresnel};
     const LEN: usize = 1 << 14;
@@ -1229,7 +1229,7 @@ fn wavefront(i: &Inputs) {
             let ggx = Microfacet::<$F, Ggx>::new(0.3, 0.15).unwrap();
             let beck = Microfacet::<$F, Beckmann>::new(0.3, 0.15).unwrap();
             let gold = fresnel::Conductor { eta: [0.14, 0.42, 1.37], k: [3.98, 2.38, 1.60] };
-            let b: GgxConductor<$F> = Conductor::new(ggx.clone(), gold);
+            let b: GgxConductor<$F> = RoughConductor::new(ggx.clone(), gold);
             let mut o: [Vec<$F>; 3] = [vec![0.0; LEN], vec![0.0; LEN], vec![0.0; LEN]];
             let mut o2: [Vec<$F>; 3] = [vec![0.0; LEN], vec![0.0; LEN], vec![0.0; LEN]];
             let mut p: Vec<$F> = vec![0.0; LEN];
@@ -1391,7 +1391,7 @@ fn wavefront(i: &Inputs) {
 /// their own seeds), in the same run as the fast GGX VNDF sampler (the walk's inner step).
 fn walks(i: &Inputs) {
     use microsurface::fresnel::One;
-    use microsurface::walk::{albedo, Heights, Microsurface, MirrorFacets};
+    use microsurface::walk::{albedo, Heights, MirrorFacets, RandomWalk};
     println!();
     let vndf = time(400_000, |k| {
         let w = i.w[k];
@@ -1404,7 +1404,7 @@ fn walks(i: &Inputs) {
             rate!($name, $d, 400_000u64)
         };
         ($name:expr, $d:expr, $n:expr) => {{
-            let s = Microsurface::new($d, Heights::Uniform);
+            let s = RandomWalk::new($d, Heights::Uniform);
             let n: u64 = $n;
             let mut one = Vec::new();
             let mut two = Vec::new();

@@ -7,7 +7,7 @@ use crate::eval::field;
 use microsurface::fresnel::{self, One};
 use microsurface::walk::{
     albedo, single_scattering_albedo, single_scattering_albedo_dielectric_level, Albedo, ByOrder,
-    DielectricFacets, DiffuseFacets, G2Form, Heights, Microsurface, MirrorFacets,
+    DielectricFacets, DiffuseFacets, G2Form, Heights, MirrorFacets, RandomWalk,
 };
 use microsurface::{AnyMicrofacet, Distribution};
 use serde_json::{json, Value};
@@ -155,7 +155,7 @@ fn run_walks<D: Distribution<f64>>(
     walks: u64,
     seed: u64,
 ) -> Albedo {
-    let s = Microsurface::new(d, heights);
+    let s = RandomWalk::new(d, heights);
     match *facets {
         Facets::Mirror(None) => albedo(&s, &MirrorFacets(One::<1>), wo, walks, seed),
         Facets::Mirror(Some((eta, k))) => albedo(

@@ -3,7 +3,7 @@
 //! radiance transport; f64.
 
 use crate::eval::field;
-use microsurface::bsdf::{Bsdf, BsdfSample, Conductor, Dielectric, Lobe, Masking};
+use microsurface::bsdf::{Bsdf, BsdfSample, RoughConductor, RoughDielectric, Lobe, Masking};
 use microsurface::fresnel::{self, One};
 use microsurface::walk::{ByOrder, DielectricFacets, MirrorFacets, MultipleScattering};
 use microsurface::{AnyMicrofacet, Distribution, NdfKind};
@@ -305,17 +305,15 @@ impl Request {
         }
         match self.material {
             Material::Mirror => self.run(
-                &Conductor::new(d, One::<3>).with_masking(self.masking),
+                &RoughConductor::new(d, One::<3>).with_masking(self.masking),
                 |f| f,
             ),
             Material::Metal { eta, k } => self.run(
-                &Conductor::new(d, fresnel::Conductor { eta, k }).with_masking(self.masking),
+                &RoughConductor::new(d, fresnel::Conductor { eta, k }).with_masking(self.masking),
                 |f| f,
             ),
             Material::Glass { eta } => self
-                .run(&Dielectric::new(d, eta).with_masking(self.masking), |f| {
-                    [f; 3]
-                }),
+                .run(&RoughDielectric::new(d, eta).with_masking(self.masking), |f| f),
         }
     }
 

@@ -968,7 +968,7 @@ beyond them in the repository's <code>docs/derivations.md</code>.</p>\
 
     progress("BSDFs");
     body.push_str(
-        r#"<section id="bsdf"><h2>Rough conductor and dielectric BSDFs, every NDF</h2><p class="def">The renderer-facing types (<code>Microfacet</code>, <code>bsdf::Conductor</code>, <code>bsdf::Dielectric</code>, f64, pbrt-v4's conventions): their lobes, their samplers against their pdfs, and the energy a single-scattering BSDF loses.</p><div class="plots">"#,
+        r#"<section id="bsdf"><h2>Rough conductor and dielectric BSDFs, every NDF</h2><p class="def">The renderer-facing types (<code>Microfacet</code>, <code>bsdf::RoughConductor</code>, <code>bsdf::RoughDielectric</code>, f64, pbrt-v4's conventions): their lobes, their samplers against their pdfs, and the energy a single-scattering BSDF loses.</p><div class="plots">"#,
     );
     for p in crate::report_bsdf::plots() {
         body.push_str(&p.to_html());

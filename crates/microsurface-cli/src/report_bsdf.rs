@@ -6,7 +6,7 @@
 
 use crate::report::{grid, short};
 use crate::svg::{Plot, Series, Style};
-use microsurface::bsdf::{Bsdf, Conductor, Dielectric};
+use microsurface::bsdf::{Bsdf, RoughConductor, RoughDielectric};
 use microsurface::chi2::SplitMix64;
 use microsurface::fresnel::{self, One};
 use microsurface::{AnyMicrofacet, NdfKind};
@@ -62,8 +62,8 @@ fn polar(f_cos: impl Fn([f64; 3]) -> f64, below: bool) -> Vec<(f64, f64)> {
 fn polar_plots(kind: NdfKind) -> Vec<Plot> {
     {
         let d = material(kind, ALPHA, GAMMA);
-        let conductor = Conductor::new(d.clone(), GOLD_G);
-        let dielectric = Dielectric::new(d, ETA);
+        let conductor = RoughConductor::new(d.clone(), GOLD_G);
+        let dielectric = RoughDielectric::new(d, ETA);
         let mut pc = Plot::new(
             format!("{}: rough conductor, f·cos θi", label(kind)),
             "x (plane of incidence)",
@@ -115,7 +115,7 @@ fn polar_plots(kind: NdfKind) -> Vec<Plot> {
             pr = pr.with(
                 Series::new(
                     name.clone(),
-                    polar(|wi| dielectric.eval(wo, wi) * wi[2].abs(), false),
+                    polar(|wi| dielectric.eval(wo, wi)[0] * wi[2].abs(), false),
                     Style::Line,
                 )
                 .color(k),
@@ -123,7 +123,7 @@ fn polar_plots(kind: NdfKind) -> Vec<Plot> {
             pt = pt.with(
                 Series::new(
                     name,
-                    polar(|wi| dielectric.eval(wo, wi) * wi[2].abs(), true),
+                    polar(|wi| dielectric.eval(wo, wi)[0] * wi[2].abs(), true),
                     Style::Line,
                 )
                 .color(k),
@@ -184,8 +184,8 @@ fn sample_histogram<B: Bsdf<f64>>(title: String, caption: &str, b: &B) -> Plot {
 fn histogram_plots(kind: NdfKind) -> Vec<Plot> {
     {
         let d = material(kind, ALPHA, GAMMA);
-        let conductor = Conductor::new(d.clone(), GOLD_G);
-        let dielectric = Dielectric::new(d, ETA);
+        let conductor = RoughConductor::new(d.clone(), GOLD_G);
+        let dielectric = RoughDielectric::new(d, ETA);
         vec![
             sample_histogram(
                 format!("{}: conductor samples, θo = 45°", label(kind)),
@@ -213,7 +213,7 @@ fn histogram_plots(kind: NdfKind) -> Vec<Plot> {
 fn albedo(kind: NdfKind, alpha: f64, theta_o: f64) -> f64 {
     {
         let d = material(kind, alpha, GAMMA);
-        let b = Conductor::new(d, One::<1>);
+        let b = RoughConductor::new(d, One::<1>);
         let wo = wo_at(theta_o);
         let n = 128;
         let mut rng = SplitMix64(5);

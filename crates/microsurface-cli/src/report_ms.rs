@@ -8,7 +8,7 @@ use crate::report_bsdf::material;
 use crate::svg::{Plot, Series, Style};
 use microsurface::bsdf::{Bsdf, Transport};
 use microsurface::compensate::{
-    AlbedoTable, Compensated, CompensatedDielectric, DielectricTables, Scheme,
+    AlbedoTable, CompensatedConductor, CompensatedDielectric, DielectricTables, Scheme,
 };
 use microsurface::fresnel::One;
 use microsurface::quad::integrate;
@@ -146,15 +146,15 @@ fn furnace_plot() -> Plot {
         "The energy a white-furnace conductor reflects: single scattering (dashed) and the \
          same BSDF with Kulla & Conty's compensation lobe (markers: circles) and with \
          Turquin's scaling (crosses), every NDF, each integrated by deterministic quadrature \
-         of its eval. Compensated, every NDF reflects 1 within the table's interpolation \
+         of its eval. CompensatedConductor, every NDF reflects 1 within the table's interpolation \
          error (tests hold it to 1e-3; measured ≤ 7e-5).",
     );
     for (k, kind) in NdfKind::CLASSIC.into_iter().enumerate() {
         let (before, kc, tq) = {
             let d = material(kind, 1.0, GAMMA);
             let table = AlbedoTable::new(&d);
-            let c = Compensated::from_table(d.clone(), One::<1>, Scheme::KullaConty, table.clone());
-            let t = Compensated::from_table(d.clone(), One::<1>, Scheme::Turquin, table);
+            let c = CompensatedConductor::from_table(d.clone(), One::<1>, Scheme::KullaConty, table.clone());
+            let t = CompensatedConductor::from_table(d.clone(), One::<1>, Scheme::Turquin, table);
             let b: Vec<(f64, f64)> = mu
                 .iter()
                 .map(|&m| (m, furnace(c.single_scattering(), m)))
@@ -174,7 +174,7 @@ fn furnace_plot() -> Plot {
 /// ∫ (f − f_ss)|cos θi| dωi over both hemispheres of a compensated dielectric: the added
 /// lobes depend on μi alone, so one azimuth and Gauss–Legendre in √μi (64 × 8 nodes a side).
 fn added_energy<D: microsurface::Distribution<f64> + Clone>(
-    b: &CompensatedDielectric<D>,
+    b: &CompensatedDielectric<f64, D>,
     wo: [f64; 3],
 ) -> f64 {
     const GL4: [(f64, f64); 4] = [
@@ -191,7 +191,7 @@ fn added_energy<D: microsurface::Distribution<f64> + Clone>(
                 let s = (k as f64 + x) / 128.0;
                 let mu = s * s;
                 let wi = [0.0, ((1.0 - mu) * (1.0 + mu)).sqrt(), side * mu];
-                sum += w / 128.0 * 2.0 * s * mu * 2.0 * PI * (b.eval(wo, wi) - ss.eval(wo, wi));
+                sum += w / 128.0 * 2.0 * s * mu * 2.0 * PI * (b.eval(wo, wi)[0] - ss.eval(wo, wi)[0]);
             }
         }
     }
@@ -210,7 +210,7 @@ fn dielectric_furnace_plot() -> Plot {
         "R + T (importance)",
     )
     .caption(
-        "The energy a rough dielectric interface keeps (reflected plus transmitted,          importance transport): single scattering (dashed; by quadrature over the microsurface          normal), and compensated with Kulla & Conty's two-sided lobes (circles: the single          scattering plus the added lobes, integrated) and with Turquin's 1/E (crosses),          every NDF. From inside, total internal reflection sends more light back into the          rough interface, so single scattering loses more there. Compensated, every NDF          keeps 1 within the tables' interpolation error (tests hold it to 1e-3; measured          ≤ 1.9e-4).",
+        "The energy a rough dielectric interface keeps (reflected plus transmitted,          importance transport): single scattering (dashed; by quadrature over the microsurface          normal), and compensated with Kulla & Conty's two-sided lobes (circles: the single          scattering plus the added lobes, integrated) and with Turquin's 1/E (crosses),          every NDF. From inside, total internal reflection sends more light back into the          rough interface, so single scattering loses more there. CompensatedConductor, every NDF          keeps 1 within the tables' interpolation error (tests hold it to 1e-3; measured          ≤ 1.9e-4).",
     );
     for (k, kind) in NdfKind::CLASSIC.into_iter().enumerate() {
         let (before, kc, tq) = {

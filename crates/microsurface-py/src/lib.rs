@@ -2,12 +2,13 @@
 //! directions, samplers and albedos vectorised over NumPy arrays (`engine`), the BSDFs
 //! (`bsdf`) and the albedo tables.
 //!
-//! Values are the library's exact f64 path ([`AnyNdf`] for the isotropic functions of a
-//! cosine, [`Exact`] for directions, samplers and BSDFs), except GGX's D, Λ and G1, which run
-//! the fast closed forms (`microsurface::fast::ggx`, the slice forms of `fast::batch`; within
-//! 3e-15 of the exact path) and for float32 input their f32 slice forms: a float64 result is
-//! bit for bit what the Rust call returns (tests/test_api.py compares with the `microsurface`
-//! command line).
+//! The isotropic functions of a cosine are the library's exact f64 path ([`AnyNdf`]), except
+//! GGX's D, Λ and G1, which run the fast closed forms (`microsurface::fast::ggx`, the slice
+//! forms of `fast::batch`; within 3e-15 of the exact path) and for float32 input their f32
+//! slice forms. Directions, samplers, BSDFs and walks run one material (`material`): the
+//! library's run-time door [`microsurface::AnyMicrofacet`] (the fast kernels of every NDF) by
+//! default, or [`Exact`] with `exact=True`. A float64 result is bit for bit what the Rust
+//! call returns (tests/test_api.py compares with the `microsurface` command line).
 
 mod bsdf;
 mod engine;
@@ -15,13 +16,14 @@ mod material;
 
 use engine::{float64, is_number, uniforms, value_error, Args};
 use material::{Material, Sampler};
-use microsurface::walk::{self, DielectricFacets, Heights, Microsurface, MirrorFacets};
+use microsurface::walk::{self, DielectricFacets, Heights, RandomWalk, MirrorFacets};
 use microsurface::{AnyNdf, Distribution, Exact, Ndf, NdfKind, ParamError};
 use numpy::{PyArray1, PyArrayMethods};
 use pyo3::exceptions::PyValueError;
 use pyo3::prelude::*;
 use pyo3::types::PyFloat;
 use rayon::prelude::*;
+use std::sync::OnceLock;
 
 /// Above this many elements a cheap function's loop runs on rayon's pool.
 const PARALLEL: usize = 1 << 14;
@@ -270,26 +272,45 @@ enum Q {
 /// G1, G2); slopes (p, q) = −(x, y)/z of the normal; directions are unit vectors (x, y, z)
 /// in the local frame, z the macro normal, as the last axis of an array. D is normalised so
 /// that the projected area of the microsurface is 1: ∫ D(m) cos θm dm = 1; D(u) = 0 for
-/// u ≤ 0. Values are the library's exact f64 path: closed forms to ≤ 1e-13 relative,
-/// numerical quantities (the family's Λ by quadrature, Bessel-K, the generalised
-/// exponential) to ≤ 1e-10, measured against mpmath (the crate's tests and README). float32
-/// input gives the float64 value rounded once, except GGX's D, Λ and G1: those run the
-/// library's fast slice forms, in f64 within 3e-15 of the exact path and in f32 in f32
-/// arithmetic (within 6e-7).
+/// u ≤ 0.
 ///
 /// Every class takes ``alpha`` and an optional ``alpha_y`` (anisotropic by stretching; GTR
-/// only at γ = 2). The functions of a cosine (``d``, ``lambda_``, ...) are the isotropic
-/// NDF's, at ``alpha`` or at an array ``alpha=`` broadcast with the arguments; the
-/// functions of directions (``d_wm``, ``lambda_w``, ``pdf_visible``, ``sample_visible``,
-/// ...) are the anisotropic material's.
+/// only at γ = 2), ``exact=False`` and ``sampler='posterior'``. The functions of a cosine
+/// (``d``, ``lambda_``, ...) are the isotropic NDF's, at ``alpha`` or at an array ``alpha=``
+/// broadcast with the arguments; the functions of directions (``d_wm``, ``lambda_w``,
+/// ``pdf_visible``, ``sample_visible``, ...), the BSDFs built on the NDF and its albedos are
+/// the anisotropic material's.
+///
+/// **Two paths.** The functions of a cosine are always the library's exact f64 path (the
+/// research values): closed forms to ≤ 1e-13 relative, numerical quantities (the family's
+/// Λ by quadrature, Bessel-K, the generalised exponential) to ≤ 1e-10, measured against
+/// mpmath (the crate's tests and README); float32 input gives the float64 value rounded
+/// once, except GGX's D, Λ and G1, which run the library's fast slice forms (in f64 within
+/// 3e-15 of the exact path, in f32 in f32 arithmetic, within 6e-7). Everything of
+/// directions runs, by default, the renderer's fast kernels (Rust: ``AnyMicrofacet<f64>``,
+/// bit for bit what a Rust renderer and the ``microsurface`` command line compute): closed
+/// forms for GGX (≤ 1e-14 relative of the exact path) and Beckmann (≤ 1e-12); fitted
+/// tables of Λ for Double GGX, the Exponential NDF, GTR and the Beckmann mixtures
+/// (Student-T, Ei, Erfc, K0, Bessel-K), ≤ 1e-7 relative (D exact or ≤ 1e-11); the
+/// generalised exponential has no fast path and runs its exact one either way. Their
+/// samplers draw the exact distributions (χ²-tested). ``exact=True`` runs the exact path
+/// for the directions too (the validated kernels: 10²–10⁴ times slower for the NDFs
+/// without closed forms), with ``sampler`` choosing how the Beckmann mixtures draw visible
+/// normals (see ``sampler``). The fits of the fast path are made at the first direction
+/// call and cached for the process (GTR: per (α, γ), 1–90 ms; the family: per shape,
+/// 1–3 ms, Bessel-K ~0.1 s).
 #[pyclass(subclass, frozen, module = "microsurface")]
-#[derive(Clone, Copy)]
+#[derive(Clone)]
 pub struct NDF {
     ndf: AnyNdf,
-    /// The direction API, or why this material has none (Student-T at γ ≤ 3/2: Λ = ∞).
-    exact: Result<Exact, ParamError>,
     alpha_y: f64,
+    /// ``exact=True``: the directions on the exact path.
+    exact: bool,
+    /// The exact path's sampler (``sampler=``).
     sampler: Sampler,
+    /// The direction API's material, built at its first use (the fast path's fits), or why
+    /// this material has none (Student-T at γ ≤ 3/2: Λ = ∞).
+    material: OnceLock<Result<Material, ParamError>>,
 }
 
 impl NDF {
@@ -298,11 +319,17 @@ impl NDF {
         alpha: f64,
         alpha_y: Option<f64>,
         shape: Option<f64>,
+        exact: bool,
         sampler: &str,
     ) -> PyResult<Self> {
         let sampler = match sampler {
             "posterior" => Sampler::Posterior,
-            "warp" => Sampler::Warp,
+            "warp" if exact => Sampler::Warp,
+            "warp" => {
+                return Err(PyValueError::new_err(
+                    "sampler='warp' (the exact inversion) is the exact path's: pass exact=True (the fast path draws the Beckmann mixtures by the posterior)",
+                ))
+            }
             _ => {
                 return Err(PyValueError::new_err(format!(
                     "sampler must be 'posterior' or 'warp' (got {sampler:?})"
@@ -311,19 +338,26 @@ impl NDF {
         };
         let ndf = AnyNdf::new(kind, alpha, shape).map_err(value_error)?;
         let alpha_y = alpha_y.unwrap_or(alpha);
-        let exact = Exact::new(kind, alpha, alpha_y, shape);
-        match &exact {
+        // (The parameters of the direction API validated here, cheaply, on the exact path:
+        // the fast material, whose fits take milliseconds, is built at its first use.)
+        let material = OnceLock::new();
+        match Exact::new(kind, alpha, alpha_y, shape) {
             // (Student-T below γ = 3/2 keeps its isotropic functions: D, P22, P2 are
             // finite there; only Λ and what needs it are not.)
-            Err(ParamError::Shape { .. }) if kind == NdfKind::StudentT && alpha_y == alpha => {}
-            Err(e) => return Err(value_error(*e)),
+            Err(e @ ParamError::Shape { .. })
+                if kind == NdfKind::StudentT && alpha_y == alpha =>
+            {
+                let _ = material.set(Err(e));
+            }
+            Err(e) => return Err(value_error(e)),
             Ok(_) => {}
         }
         Ok(NDF {
             ndf,
-            exact,
             alpha_y,
+            exact,
             sampler,
+            material,
         })
     }
 
@@ -356,19 +390,25 @@ impl NDF {
     /// albedo functions; this material at NaN (no array given).
     fn material_at(&self, alpha: f64) -> Result<Material, ParamError> {
         if alpha.is_nan() {
-            return Ok(Material::new(self.exact?, self.sampler));
+            return self.get_material().clone();
         }
         let ay = alpha * (self.alpha_y / self.ndf.alpha());
-        let e = Exact::new(self.ndf.kind(), alpha, ay, self.ndf.shape())?;
-        Ok(Material::new(e, self.sampler))
+        let (kind, shape) = (self.ndf.kind(), self.ndf.shape());
+        Material::new(kind, alpha, ay, shape, self.exact, self.sampler)
     }
 
-    /// The direction API's material (or why there is none).
-    fn material(&self) -> PyResult<Material> {
-        Ok(Material::new(
-            self.exact.map_err(value_error)?,
-            self.sampler,
-        ))
+    /// The direction API's material, or why there is none; built at the first call.
+    fn get_material(&self) -> &Result<Material, ParamError> {
+        self.material.get_or_init(|| {
+            let (kind, shape) = (self.ndf.kind(), self.ndf.shape());
+            let ax = self.ndf.alpha();
+            Material::new(kind, ax, self.alpha_y, shape, self.exact, self.sampler)
+        })
+    }
+
+    /// The direction API's material (or why there is none, as a ValueError).
+    fn material(&self) -> PyResult<&Material> {
+        self.get_material().as_ref().map_err(|e| value_error(*e))
     }
 
     /// The isotropic NDF at each α of `alpha` (broadcast with the arguments), or this one.
@@ -437,17 +477,31 @@ impl NDF {
         self.ndf.shape()
     }
 
-    /// How ``sample_visible`` (and the BSDFs' ``sample``) draw visible normals of the
-    /// Beckmann mixtures (Student-T, Ei, Erfc, K0, Bessel-K): 'posterior' (the default: the
-    /// posterior of the mixing variable, then Beckmann's visible normals; exact in
-    /// distribution, ~0.2 µs a sample, from a stream seeded by u rather than a warp of u) or
-    /// 'warp' (the exact inversion: a warp of u, invertible; it inverts quadratures, 8 µs to
-    /// 3 ms a sample, 20 ms near Student-T's γ = 3/2). The other NDFs always warp ('warp').
+    /// Whether the directions, samplers, BSDFs and albedos run the exact path
+    /// (``exact=True`` at construction) rather than the fast kernels (the default).
+    #[getter]
+    fn exact(&self) -> bool {
+        self.exact
+    }
+
+    /// How ``sample_visible`` (and the BSDFs' ``sample``) draw visible normals. Every
+    /// sampler draws the exact distribution; they differ in how wm depends on u. 'warp': an
+    /// invertible warp of u (GGX, Beckmann and the generalised exponential on either path;
+    /// every NDF with ``exact=True``, except the Beckmann mixtures by default). 'posterior':
+    /// the Beckmann mixtures (Student-T, Ei, Erfc, K0, Bessel-K) by the posterior of the
+    /// mixing variable, then Beckmann's visible normals (~0.2 µs a sample; uniforms from a
+    /// stream seeded by u, so deterministic in u but not a warp of it), on both paths.
+    /// 'rejection': the fast samplers of Double GGX, the Exponential NDF and GTR at γ ≠ 2
+    /// (u for the first candidate, a stream seeded by u after it). ``exact=True,
+    /// sampler='warp'`` draws the Beckmann mixtures by the exact inversion (a warp of u; it
+    /// inverts quadratures, 8 µs to 3 ms a sample, 20 ms near Student-T's γ = 3/2).
     #[getter]
     fn sampler(&self) -> &'static str {
-        match self.material().map(|m| m.sampler) {
-            Ok(Sampler::Posterior) => "posterior",
-            _ => "warp",
+        match self.get_material() {
+            Ok(m) => m.sampler_name(),
+            // (No direction API: Student-T at γ ≤ 3/2.)
+            Err(_) if self.sampler == Sampler::Posterior => "posterior",
+            Err(_) => "warp",
         }
     }
 
@@ -464,6 +518,9 @@ impl NDF {
         }
         if let Some(shape) = self.ndf.shape() {
             s += &format!(", shape={shape}");
+        }
+        if self.exact {
+            s += ", exact=True";
         }
         s + ")"
     }
@@ -567,8 +624,9 @@ impl NDF {
         self.iso(py, [p], alpha, None, |n, [p]| n.p2(p))
     }
 
-    // ---- Directions: the anisotropic material (Rust: microsurface::Exact, the Distribution
-    // trait). Arrays of unit vectors, last axis 3.
+    // ---- Directions: the anisotropic material (Rust: microsurface::AnyMicrofacet, or
+    // microsurface::Exact with exact=True; the Distribution trait). Arrays of unit vectors,
+    // last axis 3.
 
     /// D(wm) of unit normals wm (shape (..., 3)); 0 for wm.z ≤ 0.
     fn d_wm(&self, py: Python<'_>, wm: &Bound<'_, PyAny>) -> PyResult<PyObject> {
@@ -592,7 +650,7 @@ impl NDF {
     /// the upper hemisphere.
     fn sigma_w(&self, py: Python<'_>, w: &Bound<'_, PyAny>) -> PyResult<PyObject> {
         let e = self.material()?;
-        map_vec(py, &[(w, 3, "w")], |a| e.exact.sigma(v3(a[0])))
+        map_vec(py, &[(w, 3, "w")], |a| e.sigma(v3(a[0])))
     }
 
     /// Height-correlated G2(wo, wi) = 1/(1 + Λ(wo) + Λ(wi)); ``separable=True``:
@@ -634,8 +692,8 @@ impl NDF {
     /// (..., 2) in [0, 1) (broadcast with w's batch shape), or ``sample_visible(w, rng, n)``
     /// with a ``numpy.random.Generator`` (n × 2 uniforms drawn from it). Returns
     /// ``Sample(wm, pdf)``: unit normals (..., 3) and their densities ``pdf_visible(w,
-    /// wm)``. The exact samplers (χ²-tested in the crate): each wm is a deterministic
-    /// function of (w, u).
+    /// wm)``. Samplers of the exact distribution (χ²-tested in the crate; ``sampler`` says
+    /// which): each wm is a deterministic function of (w, u).
     #[pyo3(signature = (w, u, n = None))]
     fn sample_visible(
         &self,
@@ -682,7 +740,8 @@ impl NDF {
     /// total, total_stderr)``: reflect and transmit of shape (..., 4) for the orders 1, 2,
     /// 3 and ≥ 4, with their standard errors; total (...) is reflect + transmit summed
     /// over orders. ``alpha``: an array of roughnesses broadcast with mu and phi (αy scaled
-    /// with α), for tables over (α, μ) in one call.
+    /// with α), for tables over (α, μ) in one call. The walk runs this NDF's path (fast by
+    /// default, ``exact=True`` the exact one).
     #[pyo3(signature = (mu, phi = None, walks = 100_000, seed = 0, eta = None, alpha = None))]
     #[allow(clippy::too_many_arguments)]
     fn albedo(
@@ -718,7 +777,7 @@ impl NDF {
             &[4, 4, 4, 4, 0, 0],
             2,
             |i, a, o| {
-                let surface = Microsurface::new(self.material_at(a[2][0])?, Heights::Uniform);
+                let surface = RandomWalk::new(self.material_at(a[2][0])?, Heights::Uniform);
                 let wo = wo_of(a[0][0], a[1][0]);
                 // (One stream per element, whatever thread runs it.)
                 let seed = seed.wrapping_add((i as u64).wrapping_mul(0x9E37_79B9_7F4A_7C15));
@@ -745,7 +804,8 @@ impl NDF {
     }
 }
 
-/// The classes of the NDFs without a shape parameter: `Name(alpha, alpha_y=None, sampler='posterior')`.
+/// The classes of the NDFs without a shape parameter: `Name(alpha, alpha_y=None, exact=False,
+/// sampler='posterior')`.
 macro_rules! plain {
     ($($(#[$doc:meta])* $name:ident => $kind:ident;)*) => {$(
         $(#[$doc])*
@@ -755,15 +815,22 @@ macro_rules! plain {
         #[pymethods]
         impl $name {
             #[new]
-            #[pyo3(signature = (alpha, alpha_y = None, sampler = "posterior"))]
-            fn new(alpha: f64, alpha_y: Option<f64>, sampler: &str) -> PyResult<(Self, NDF)> {
-                Ok(($name, NDF::build(NdfKind::$kind, alpha, alpha_y, None, sampler)?))
+            #[pyo3(signature = (alpha, alpha_y = None, exact = false, sampler = "posterior"))]
+            fn new(
+                alpha: f64,
+                alpha_y: Option<f64>,
+                exact: bool,
+                sampler: &str,
+            ) -> PyResult<(Self, NDF)> {
+                let ndf = NDF::build(NdfKind::$kind, alpha, alpha_y, None, exact, sampler)?;
+                Ok(($name, ndf))
             }
         }
     )*};
 }
 
-/// The classes of the NDFs with a shape parameter: `Name(alpha, shape, alpha_y=None, sampler='posterior')`.
+/// The classes of the NDFs with a shape parameter: `Name(alpha, shape, alpha_y=None,
+/// exact=False, sampler='posterior')`.
 macro_rules! shaped {
     ($($(#[$doc:meta])* $name:ident => $kind:ident, $shape:ident;)*) => {$(
         $(#[$doc])*
@@ -773,14 +840,16 @@ macro_rules! shaped {
         #[pymethods]
         impl $name {
             #[new]
-            #[pyo3(signature = (alpha, $shape, alpha_y = None, sampler = "posterior"))]
+            #[pyo3(signature = (alpha, $shape, alpha_y = None, exact = false, sampler = "posterior"))]
             fn new(
                 alpha: f64,
                 $shape: f64,
                 alpha_y: Option<f64>,
+                exact: bool,
                 sampler: &str,
             ) -> PyResult<(Self, NDF)> {
-                Ok(($name, NDF::build(NdfKind::$kind, alpha, alpha_y, Some($shape), sampler)?))
+                let ndf = NDF::build(NdfKind::$kind, alpha, alpha_y, Some($shape), exact, sampler)?;
+                Ok(($name, ndf))
             }
         }
     )*};

@@ -7,14 +7,14 @@
 //! (inside: z < 0); [`Transport::Radiance`] divides transmitted f by η'² (η' the relative
 //! index along the path), [`Transport::Importance`] does not.
 //!
-//! * [`Conductor`]: f = D(wm) F(|wo·wm|) G2(wo, wi)/(4|cos θo||cos θi|) with wm the half
+//! * [`RoughConductor`]: f = D(wm) F(|wo·wm|) G2(wo, wi)/(4|cos θo||cos θi|) with wm the half
 //!   vector of wo and wi (Cook & Torrance 1982; Walter et al. 2007, eq. 20), two-sided (wo
 //!   below the surface sees the mirrored microsurface). Sampling: a visible normal from wo
 //!   (pdf D_wo(wm)), then reflection, pdf D_wo(wm)/(4|wo·wm|); a reflected direction below the
 //!   horizon is a rejected sample (`None`), so ∫ pdf = 1 − (the rejected fraction), which is
 //!   the energy a single-scattering conductor loses to the horizon (tests/bsdf.rs measures
 //!   both and finds them equal).
-//! * [`Dielectric`]: Walter et al. 2007 (eqs. 16–21) with visible-normal sampling: reflection
+//! * [`RoughDielectric`]: Walter et al. 2007 (eqs. 16–21) with visible-normal sampling: reflection
 //!   as the conductor's with the dielectric Fresnel R, transmission
 //!   f = D(wm)(1 − R) G2 |wi·wm||wo·wm| / (|cos θi||cos θo| (wi·wm + wo·wm/η')²), the
 //!   generalised half vector wm ∝ η' wi + wo; a visible normal is drawn, then reflection with
@@ -30,12 +30,12 @@
 //!   Mitsuba 3's).
 //!
 //! ```
-//! use microsurface::bsdf::{Bsdf, Conductor};
-//! use microsurface::fresnel::Conductor as Metal;
+//! use microsurface::bsdf::{Bsdf, RoughConductor};
+//! use microsurface::fresnel::Conductor;
 //! use microsurface::{Exponential, Ggx, Microfacet};
-//! let gold = Metal { eta: [0.14f32, 0.42, 1.37], k: [3.98, 2.38, 1.60] };
-//! let ggx = Conductor::new(Microfacet::<f32, Ggx>::new(0.2, 0.05)?, gold);
-//! let exp = Conductor::new(Microfacet::<f32, Exponential>::new(0.2, 0.05)?, gold);
+//! let gold = Conductor { eta: [0.14f32, 0.42, 1.37], k: [3.98, 2.38, 1.60] };
+//! let ggx = RoughConductor::new(Microfacet::<f32, Ggx>::new(0.2, 0.05)?, gold);
+//! let exp = RoughConductor::new(Microfacet::<f32, Exponential>::new(0.2, 0.05)?, gold);
 //! let wo = [0.3f32, 0.1, 0.9487];
 //! for s in [ggx.sample(wo, 0.5, [0.3, 0.6]), exp.sample(wo, 0.5, [0.3, 0.6])] {
 //!     let s = s.expect("reflected above the horizon");
@@ -96,9 +96,13 @@ pub struct BsdfSample<F, V> {
     pub eta: F,
 }
 
-/// What every BSDF here answers.
+/// What every BSDF of the library answers: the single-scattering [`RoughConductor`] and
+/// [`RoughDielectric`], the compensated ones ([`crate::compensate`]) and the random walk's
+/// ([`crate::walk::MultipleScattering`]), in f32 and f64. Their f is `[F; N]` (RGB: N = 3,
+/// the default), so a renderer holds any mix of them as
+/// `Box<dyn Bsdf<f32, Value = [f32; 3]>>`.
 pub trait Bsdf<F: Real> {
-    /// f's value: `[F; N]` for a conductor (per channel), F for a dielectric.
+    /// f's value: `[F; N]`, one value per channel.
     type Value: Copy;
     /// f(wo, wi), without the cosine.
     fn eval(&self, wo: [F; 3], wi: [F; 3]) -> Self::Value;
@@ -149,19 +153,19 @@ fn g2<F: Real, D: Distribution<F>>(d: &D, m: Masking, wo: [F; 3], wi: [F; 3]) ->
     }
 }
 
-/// A rough conductor: a [`Distribution`] and a [`Fresnel`] term of N channels.
+/// A rough conductor: a [`Distribution`] and a [`Fresnel`] term of N channels (RGB: N = 3).
 #[derive(Clone, Debug)]
-pub struct Conductor<F, D, Fr, const N: usize> {
+pub struct RoughConductor<F, D, Fr, const N: usize> {
     dist: D,
     fresnel: Fr,
     masking: Masking,
     _f: PhantomData<fn() -> [F; N]>,
 }
 
-impl<F: Real, D: Distribution<F>, Fr: Fresnel<F, N>, const N: usize> Conductor<F, D, Fr, N> {
-    /// The conductor with the height-correlated G2.
+impl<F: Real, D: Distribution<F>, Fr: Fresnel<F, N>, const N: usize> RoughConductor<F, D, Fr, N> {
+    /// The conductor with the height-correlated G2; f has the Fresnel term's N channels.
     pub fn new(dist: D, fresnel: Fr) -> Self {
-        Conductor {
+        RoughConductor {
             dist,
             fresnel,
             masking: Masking::Correlated,
@@ -187,7 +191,7 @@ impl<F: Real, D: Distribution<F>, Fr: Fresnel<F, N>, const N: usize> Conductor<F
 }
 
 impl<F: Real, D: Distribution<F>, Fr: Fresnel<F, N>, const N: usize> Bsdf<F>
-    for Conductor<F, D, Fr, N>
+    for RoughConductor<F, D, Fr, N>
 {
     type Value = [F; N];
 
@@ -263,24 +267,39 @@ impl<F: Real, D: Distribution<F>, Fr: Fresnel<F, N>, const N: usize> Bsdf<F>
     }
 }
 
-/// A rough dielectric interface of relative index η = η_inside/η_outside.
+/// A rough dielectric interface of relative index η = η_inside/η_outside; f is grey, the
+/// same value in each of its N channels (RGB by default: [`RoughDielectric::new`]; any N by
+/// [`RoughDielectric::with_channels`]), so that it composes with the conductors
+/// ([`Bsdf`]'s `Value = [F; N]`).
 #[derive(Clone, Debug)]
-pub struct Dielectric<F, D> {
+pub struct RoughDielectric<F, D, const N: usize = 3> {
     dist: D,
     eta: F,
     masking: Masking,
     transport: Transport,
 }
 
-impl<F: Real, D: Distribution<F>> Dielectric<F, D> {
+impl<F: Real, D: Distribution<F>> RoughDielectric<F, D, 3> {
     /// The interface with relative index η > 0 (η = 1: no interface, a pass-through delta
-    /// lobe), height-correlated G2, radiance transport.
+    /// lobe), height-correlated G2, radiance transport; f in three (RGB) channels.
     pub fn new(dist: D, eta: F) -> Self {
-        Dielectric {
+        RoughDielectric {
             dist,
             eta,
             masking: Masking::Correlated,
             transport: Transport::Radiance,
+        }
+    }
+}
+
+impl<F: Real, D: Distribution<F>, const N: usize> RoughDielectric<F, D, N> {
+    /// The same interface with f in M channels (a spectral renderer's, or one).
+    pub fn with_channels<const M: usize>(self) -> RoughDielectric<F, D, M> {
+        RoughDielectric {
+            dist: self.dist,
+            eta: self.eta,
+            masking: self.masking,
+            transport: self.transport,
         }
     }
 
@@ -345,11 +364,44 @@ impl<F: Real, D: Distribution<F>> Dielectric<F, D> {
     }
 }
 
-impl<F: Real, D: Distribution<F>> Bsdf<F> for Dielectric<F, D> {
-    type Value = F;
+impl<F: Real, D: Distribution<F>, const N: usize> Bsdf<F> for RoughDielectric<F, D, N> {
+    type Value = [F; N];
 
     #[inline]
-    fn eval(&self, wo: [F; 3], wi: [F; 3]) -> F {
+    fn eval(&self, wo: [F; 3], wi: [F; 3]) -> [F; N] {
+        [self.eval_grey(wo, wi); N]
+    }
+
+    #[inline]
+    fn pdf(&self, wo: [F; 3], wi: [F; 3]) -> F {
+        self.pdf_grey(wo, wi)
+    }
+
+    #[inline]
+    fn sample(&self, wo: [F; 3], uc: F, u: [F; 2]) -> Option<BsdfSample<F, [F; N]>> {
+        self.sample_grey(wo, uc, u).map(|s| s.map_f(|f| [f; N]))
+    }
+}
+
+impl<F, V> BsdfSample<F, V> {
+    /// The same sample with f mapped.
+    #[inline(always)]
+    pub(crate) fn map_f<W>(self, g: impl FnOnce(V) -> W) -> BsdfSample<F, W> {
+        BsdfSample {
+            wi: self.wi,
+            f: g(self.f),
+            pdf: self.pdf,
+            lobe: self.lobe,
+            specular: self.specular,
+            eta: self.eta,
+        }
+    }
+}
+
+impl<F: Real, D: Distribution<F>, const N: usize> RoughDielectric<F, D, N> {
+    /// f(wo, wi), one channel.
+    #[inline]
+    pub(crate) fn eval_grey(&self, wo: [F; 3], wi: [F; 3]) -> F {
         if self.smooth() {
             return F::ZERO;
         }
@@ -364,8 +416,9 @@ impl<F: Real, D: Distribution<F>> Bsdf<F> for Dielectric<F, D> {
         }
     }
 
+    /// The pdf of [`RoughDielectric::sample_grey`].
     #[inline]
-    fn pdf(&self, wo: [F; 3], wi: [F; 3]) -> F {
+    pub(crate) fn pdf_grey(&self, wo: [F; 3], wi: [F; 3]) -> F {
         if self.smooth() {
             return F::ZERO;
         }
@@ -381,8 +434,9 @@ impl<F: Real, D: Distribution<F>> Bsdf<F> for Dielectric<F, D> {
         }
     }
 
+    /// A sample with f in one channel.
     #[inline]
-    fn sample(&self, wo: [F; 3], uc: F, u: [F; 2]) -> Option<BsdfSample<F, F>> {
+    pub(crate) fn sample_grey(&self, wo: [F; 3], uc: F, u: [F; 2]) -> Option<BsdfSample<F, F>> {
         if on_horizon(wo[2]) {
             return None;
         }
@@ -432,7 +486,7 @@ impl<F: Real, D: Distribution<F>> Bsdf<F> for Dielectric<F, D> {
     }
 }
 
-impl<F: Real, D: Distribution<F>> Dielectric<F, D> {
+impl<F: Real, D: Distribution<F>, const N: usize> RoughDielectric<F, D, N> {
     /// The smooth interface's delta lobes.
     fn sample_smooth(&self, wo: [F; 3], uc: F) -> Option<BsdfSample<F, F>> {
         let r = fresnel::dielectric(wo[2], self.eta);

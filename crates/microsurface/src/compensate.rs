@@ -34,13 +34,16 @@
 // `!(x > 0)` is the NaN-aware test (false for NaN), on purpose.
 #![allow(clippy::neg_cmp_op_on_partial_ord)]
 
-use crate::bsdf::{Bsdf, BsdfSample, Conductor, Dielectric, Lobe, Transport};
-use crate::distribution::Distribution;
+use crate::bsdf::{Bsdf, BsdfSample, Lobe, RoughConductor, RoughDielectric, Transport};
+use crate::distribution::{cached, Distribution, FitCache, Sample};
+use crate::fast::Real;
 use crate::fresnel::Fresnel;
 use crate::table::Grid;
 use crate::walk::single_scattering_albedo_tol;
+use crate::AnyMicrofacet;
 use crate::NdfKind;
-use std::sync::OnceLock;
+use std::marker::PhantomData;
+use std::sync::{Arc, OnceLock};
 
 /// The table's quadrature tolerance (relative): far below the interpolation's 1e-5 to 1e-4.
 const TABLE_TOL: f64 = 1e-7;
@@ -77,16 +80,38 @@ pub struct AlbedoTable {
 }
 
 impl AlbedoTable {
-    /// The table of `dist`: interpolated from the tables the library ships (see
-    /// [`AlbedoTable::shipped`]; microseconds) where `dist` is one of the library's
-    /// isotropic materials in their range, else computed ([`AlbedoTable::compute`]).
-    pub fn new<D: Distribution<f64>>(dist: &D) -> Self {
-        let (ax, ay) = dist.alpha();
-        match dist.ndf() {
-            Some((kind, gamma)) if ax == ay => {
-                Self::shipped(kind, gamma, ax).unwrap_or_else(|| Self::compute(dist))
+    /// The table of `dist` (f32 or f64): interpolated from the tables the library ships
+    /// ([`AlbedoTable::shipped`]; microseconds) where `dist` is one of the library's isotropic
+    /// materials in their range, else **computed** ([`AlbedoTable::compute`], 30–300 ms) on
+    /// the material's f64 twin (the same NDF, α and shape through [`crate::AnyMicrofacet`];
+    /// a distribution that does not name its NDF, [`Distribution::ndf`], is evaluated in its
+    /// own precision). Computed tables of the library's materials are cached for the
+    /// process, so the compensated BSDFs of one material share one table.
+    pub fn new<F: Real, D: Distribution<F>>(dist: &D) -> Arc<Self> {
+        static TABLES: FitCache<(NdfKind, u64, u64, u64), AlbedoTable> = OnceLock::new();
+        let (ax, ay) = (dist.alpha().0.to_f64(), dist.alpha().1.to_f64());
+        let Some((kind, shape)) = dist.ndf() else {
+            return Arc::new(Self::compute(&Widened(dist, PhantomData)));
+        };
+        if ax == ay {
+            if let Some(t) = Self::shipped(kind, shape, ax) {
+                return Arc::new(t);
             }
-            _ => Self::compute(dist),
+        }
+        let key = (
+            kind,
+            shape.unwrap_or(0.0).to_bits(),
+            ax.to_bits(),
+            ay.to_bits(),
+        );
+        let made: Result<_, std::convert::Infallible> = cached(&TABLES, key, || {
+            Ok(match AnyMicrofacet::<f64>::new(kind, ax, ay, shape) {
+                Ok(twin) => Self::compute(&twin),
+                Err(_) => Self::compute(&Widened(dist, PhantomData)),
+            })
+        });
+        match made {
+            Ok(t) => t,
         }
     }
 
@@ -273,39 +298,48 @@ pub enum Scheme {
 }
 
 /// A rough conductor with its lost energy put back: [`Bsdf`] like the single-scattering
-/// [`Conductor`] (f64), whose F = 1 white furnace is 1 within the table's interpolation
-/// error.
+/// [`RoughConductor`] (f32 or f64; the table and the added lobe in f64), whose F = 1 white
+/// furnace is 1 within the table's interpolation error.
 #[derive(Clone, Debug)]
-pub struct Compensated<D, Fr, const N: usize> {
-    ss: Conductor<f64, D, Fr, N>,
-    table: AlbedoTable,
+pub struct CompensatedConductor<F, D, Fr, const N: usize> {
+    ss: RoughConductor<F, D, Fr, N>,
+    table: Arc<AlbedoTable>,
     scheme: Scheme,
     /// Kulla–Conty's F_ms per channel; Turquin's F0.
     factor: [f64; N],
 }
 
-impl<D: Distribution<f64> + Clone, Fr: Fresnel<f64, N> + Clone, const N: usize>
-    Compensated<D, Fr, N>
+impl<F: Real, D: Distribution<F>, Fr: Fresnel<F, N>, const N: usize>
+    CompensatedConductor<F, D, Fr, N>
 {
-    /// The compensated conductor of `dist` and `fresnel` (height-correlated G2), its table
-    /// shipped or built here (see [`AlbedoTable::new`]).
+    /// The compensated conductor of `dist` and `fresnel` (height-correlated G2), with
+    /// [`AlbedoTable::new`]'s table: shipped (microseconds), or **computed here** for a
+    /// material the library does not ship (30–300 ms, once per material and process: the
+    /// table is cached and shared by every Fresnel term and scheme of the material).
     pub fn new(dist: D, fresnel: Fr, scheme: Scheme) -> Self {
         let table = AlbedoTable::new(&dist);
         Self::from_table(dist, fresnel, scheme, table)
     }
 
     /// The same with a table built before (one table serves every Fresnel term and scheme
-    /// of a distribution; it must be `dist`'s).
-    pub fn from_table(dist: D, fresnel: Fr, scheme: Scheme, table: AlbedoTable) -> Self {
+    /// of a distribution; it must be `dist`'s). No computation.
+    pub fn from_table(
+        dist: D,
+        fresnel: Fr,
+        scheme: Scheme,
+        table: impl Into<Arc<AlbedoTable>>,
+    ) -> Self {
+        let table = table.into();
+        let eval = |mu: f64| fresnel.eval(F::from_f64(mu)).map(F::to_f64);
         let factor = match scheme {
-            Scheme::Turquin => fresnel.eval(1.0),
+            Scheme::Turquin => eval(1.0),
             Scheme::KullaConty => {
                 // F_avg = 2∫F(μ)μ dμ, 8-point Gauss–Legendre on 16 intervals.
                 let mut f_avg = [0.0; N];
                 for k in 0..16 {
                     for (x, w) in GL8 {
                         let mu = (k as f64 + x) / 16.0;
-                        let f = fresnel.eval(mu);
+                        let f = eval(mu);
                         for c in 0..N {
                             f_avg[c] += 2.0 * w / 16.0 * f[c] * mu;
                         }
@@ -315,8 +349,8 @@ impl<D: Distribution<f64> + Clone, Fr: Fresnel<f64, N> + Clone, const N: usize>
                 f_avg.map(|f| f * f * e / (1.0 - f * (1.0 - e)))
             }
         };
-        Compensated {
-            ss: Conductor::new(dist, fresnel),
+        CompensatedConductor {
+            ss: RoughConductor::new(dist, fresnel),
             table,
             scheme,
             factor,
@@ -324,12 +358,12 @@ impl<D: Distribution<f64> + Clone, Fr: Fresnel<f64, N> + Clone, const N: usize>
     }
 
     /// The albedo table.
-    pub fn table(&self) -> &AlbedoTable {
+    pub fn table(&self) -> &Arc<AlbedoTable> {
         &self.table
     }
 
     /// The single-scattering conductor underneath.
-    pub fn single_scattering(&self) -> &Conductor<f64, D, Fr, N> {
+    pub fn single_scattering(&self) -> &RoughConductor<F, D, Fr, N> {
         &self.ss
     }
 
@@ -355,47 +389,45 @@ impl<D: Distribution<f64> + Clone, Fr: Fresnel<f64, N> + Clone, const N: usize>
     }
 }
 
-impl<D: Distribution<f64> + Clone, Fr: Fresnel<f64, N> + Clone, const N: usize> Bsdf<f64>
-    for Compensated<D, Fr, N>
+impl<F: Real, D: Distribution<F>, Fr: Fresnel<F, N>, const N: usize> Bsdf<F>
+    for CompensatedConductor<F, D, Fr, N>
 {
-    type Value = [f64; N];
+    type Value = [F; N];
 
-    fn eval(&self, wo: [f64; 3], wi: [f64; 3]) -> [f64; N] {
-        let f = self.ss.eval(wo, wi);
+    fn eval(&self, wo: [F; 3], wi: [F; 3]) -> [F; N] {
+        let f = self.ss.eval(wo, wi).map(F::to_f64);
+        let (zo, zi) = (wo[2].to_f64(), wi[2].to_f64());
         match self.scheme {
             Scheme::Turquin => {
-                let e = self.table.e(wo[2].abs());
-                std::array::from_fn(|c| f[c] * (1.0 + self.factor[c] * (1.0 - e) / e))
+                let e = self.table.e(zo.abs());
+                std::array::from_fn(|c| F::from_f64(f[c] * (1.0 + self.factor[c] * (1.0 - e) / e)))
             }
             Scheme::KullaConty => {
                 // (Both sides as the single-scattering lobe: wo and wi in one hemisphere.)
-                let ms = if wo[2] * wi[2] > 0.0 {
-                    self.f_ms(wo[2].abs(), wi[2].abs())
+                let ms = if zo * zi > 0.0 {
+                    self.f_ms(zo.abs(), zi.abs())
                 } else {
                     0.0
                 };
-                std::array::from_fn(|c| f[c] + ms * self.factor[c])
+                std::array::from_fn(|c| F::from_f64(f[c] + ms * self.factor[c]))
             }
         }
     }
 
-    fn pdf(&self, wo: [f64; 3], wi: [f64; 3]) -> f64 {
+    fn pdf(&self, wo: [F; 3], wi: [F; 3]) -> F {
         let p = self.ss.pdf(wo, wi);
         match self.scheme {
             Scheme::Turquin => p,
             Scheme::KullaConty => {
-                let q = self.p_ms(wo[2].abs());
-                let cos = if wo[2] * wi[2] > 0.0 {
-                    wi[2].abs()
-                } else {
-                    0.0
-                };
-                (1.0 - q) * p + q * cos / std::f64::consts::PI
+                let (zo, zi) = (wo[2].to_f64(), wi[2].to_f64());
+                let q = self.p_ms(zo.abs());
+                let cos = if zo * zi > 0.0 { zi.abs() } else { 0.0 };
+                F::from_f64((1.0 - q) * p.to_f64() + q * cos / std::f64::consts::PI)
             }
         }
     }
 
-    fn sample(&self, wo: [f64; 3], uc: f64, u: [f64; 2]) -> Option<BsdfSample<f64, [f64; N]>> {
+    fn sample(&self, wo: [F; 3], uc: F, u: [F; 2]) -> Option<BsdfSample<F, [F; N]>> {
         match self.scheme {
             Scheme::Turquin => {
                 let s = self.ss.sample(wo, uc, u)?;
@@ -406,20 +438,21 @@ impl<D: Distribution<f64> + Clone, Fr: Fresnel<f64, N> + Clone, const N: usize> 
                 Some(BsdfSample { f, ..s })
             }
             Scheme::KullaConty => {
-                let q = self.p_ms(wo[2].abs());
+                let q = self.p_ms(wo[2].to_f64().abs());
+                let uc = uc.to_f64();
                 let wi = if uc < q {
                     // A cosine-weighted direction on wo's side.
-                    let [x, y, z] = crate::frame::cosine_hemisphere(u);
-                    [x, y, if wo[2] < 0.0 { -z } else { z }]
+                    let [x, y, z] = crate::frame::cosine_hemisphere(u.map(F::to_f64));
+                    [x, y, if wo[2] < F::ZERO { -z } else { z }].map(F::from_f64)
                 } else {
-                    let s = self.ss.sample(wo, (uc - q) / (1.0 - q), u)?;
+                    let s = self.ss.sample(wo, F::from_f64((uc - q) / (1.0 - q)), u)?;
                     if s.specular {
                         return Some(s);
                     }
                     s.wi
                 };
                 let pdf = self.pdf(wo, wi);
-                if !(pdf > 0.0 && pdf.is_finite()) {
+                if !(pdf > F::ZERO && pdf.to_f64().is_finite()) {
                     return None;
                 }
                 Some(BsdfSample {
@@ -428,7 +461,7 @@ impl<D: Distribution<f64> + Clone, Fr: Fresnel<f64, N> + Clone, const N: usize> 
                     pdf,
                     lobe: Lobe::Reflection,
                     specular: false,
-                    eta: 1.0,
+                    eta: F::ONE,
                 })
             }
         }
@@ -453,17 +486,34 @@ pub struct DielectricTables {
 }
 
 impl DielectricTables {
-    /// The tables of `dist` at relative index η: interpolated from the tables the library
-    /// ships ([`DielectricTables::shipped`]; microseconds) where `dist` is one of the
-    /// library's isotropic materials, α in [0.01, 4] and η one of the shipped indices,
-    /// else computed ([`DielectricTables::compute`]).
-    pub fn new<D: Distribution<f64>>(dist: &D, eta: f64) -> Self {
-        let (ax, ay) = dist.alpha();
-        match dist.ndf() {
-            Some((kind, gamma)) if ax == ay => {
-                Self::shipped(kind, gamma, ax, eta).unwrap_or_else(|| Self::compute(dist, eta))
+    /// The tables of `dist` (f32 or f64) at relative index η: interpolated from the tables
+    /// the library ships ([`DielectricTables::shipped`]; microseconds) where `dist` is one of
+    /// the library's isotropic materials, α in [0.01, 4] and η one of the shipped indices,
+    /// else **computed** ([`DielectricTables::compute`], 0.5–0.8 s isotropic) on the
+    /// material's f64 twin, as [`AlbedoTable::new`], and cached for the process by
+    /// (material, η).
+    pub fn new<F: Real, D: Distribution<F>>(dist: &D, eta: f64) -> Arc<Self> {
+        type Key = (NdfKind, u64, u64, u64, u64);
+        static TABLES: FitCache<Key, DielectricTables> = OnceLock::new();
+        let (ax, ay) = (dist.alpha().0.to_f64(), dist.alpha().1.to_f64());
+        let Some((kind, shape)) = dist.ndf() else {
+            return Arc::new(Self::compute(&Widened(dist, PhantomData), eta));
+        };
+        if ax == ay {
+            if let Some(t) = Self::shipped(kind, shape, ax, eta) {
+                return Arc::new(t);
             }
-            _ => Self::compute(dist, eta),
+        }
+        let bits = shape.unwrap_or(0.0).to_bits();
+        let key = (kind, bits, ax.to_bits(), ay.to_bits(), eta.to_bits());
+        let made: Result<_, std::convert::Infallible> = cached(&TABLES, key, || {
+            Ok(match AnyMicrofacet::<f64>::new(kind, ax, ay, shape) {
+                Ok(twin) => Self::compute(&twin, eta),
+                Err(_) => Self::compute(&Widened(dist, PhantomData), eta),
+            })
+        });
+        match made {
+            Ok(t) => t,
         }
     }
 
@@ -620,7 +670,6 @@ pub fn dielectric_table_bytes(
     gamma: Option<f64>,
     threads: usize,
 ) -> Result<Vec<u8>, crate::ParamError> {
-    use crate::AnyMicrofacet;
     let (a0, a1, na) = SHIP_ALPHA;
     let alphas: Vec<f64> = (0..na)
         .map(|i| (a0.ln() + (a1.ln() - a0.ln()) * i as f64 / (na - 1) as f64).exp())
@@ -689,7 +738,8 @@ fn dielectric_f_avg(eta: f64) -> f64 {
 }
 
 /// A rough dielectric with its lost energy put back: [`Bsdf`] like the single-scattering
-/// [`Dielectric`] (f64), whose white furnace (reflection plus transmission, importance
+/// [`RoughDielectric`] (f32 or f64, grey f in N channels; the tables and the added lobes in
+/// f64), whose white furnace (reflection plus transmission, importance
 /// transport) is 1 from both sides within the tables' interpolation error.
 ///
 /// * **Kulla & Conty 2017**, two-sided: from side s (outside or inside) the lost energy
@@ -710,9 +760,9 @@ fn dielectric_f_avg(eta: f64) -> f64 {
 /// lobes otherwise. An interface at η = 1 or in the smooth limit is the single-scattering
 /// one (its delta lobes lose nothing).
 #[derive(Clone, Debug)]
-pub struct CompensatedDielectric<D> {
-    ss: Dielectric<f64, D>,
-    tables: DielectricTables,
+pub struct CompensatedDielectric<F, D, const N: usize = 3> {
+    ss: RoughDielectric<F, D, N>,
+    tables: Arc<DielectricTables>,
     scheme: Scheme,
     /// k_out, k_in.
     k: [f64; 2],
@@ -720,32 +770,56 @@ pub struct CompensatedDielectric<D> {
     smooth: bool,
 }
 
-impl<D: Distribution<f64> + Clone> CompensatedDielectric<D> {
-    /// The compensated interface of `dist` at relative index η (> 0), radiance transport,
-    /// its tables shipped or computed here ([`DielectricTables::new`]).
-    pub fn new(dist: D, eta: f64, scheme: Scheme) -> Self {
-        let tables = DielectricTables::new(&dist, eta);
+impl<F: Real, D: Distribution<F>> CompensatedDielectric<F, D, 3> {
+    /// The compensated interface of `dist` at relative index η (> 0), radiance transport, f
+    /// in three (RGB) channels, with [`DielectricTables::new`]'s tables: shipped
+    /// (microseconds), or **computed here** for a material or η the library does not ship
+    /// (0.5–0.8 s isotropic, once per (material, η) and process: the tables are cached).
+    pub fn new(dist: D, eta: F, scheme: Scheme) -> Self {
+        let tables = DielectricTables::new(&dist, eta.to_f64());
         Self::from_tables(dist, eta, scheme, tables)
     }
 
-    /// The same with tables computed before (they must be `dist`'s at this η).
-    pub fn from_tables(dist: D, eta: f64, scheme: Scheme, tables: DielectricTables) -> Self {
-        let smooth = eta == 1.0 || dist.effectively_smooth();
+    /// The same with tables computed before (they must be `dist`'s at this η). No
+    /// computation.
+    pub fn from_tables(
+        dist: D,
+        eta: F,
+        scheme: Scheme,
+        tables: impl Into<Arc<DielectricTables>>,
+    ) -> Self {
+        let tables = tables.into();
+        let smooth = eta == F::ONE || dist.effectively_smooth();
+        let eta64 = eta.to_f64();
         let (lo, li) = (tables.outside.lost_avg(), tables.inside.lost_avg());
-        let k_out = 1.0 - dielectric_f_avg(eta);
-        let mut k = [k_out, k_out * lo / (eta * eta * li)];
+        let k_out = 1.0 - dielectric_f_avg(eta64);
+        let mut k = [k_out, k_out * lo / (eta64 * eta64 * li)];
         if !(k[1] <= 1.0) {
             // (Also a lossless side, li = 0, whose lobes are 0 anyway.)
             let s = if k[1] > 1.0 { 1.0 / k[1] } else { 0.0 };
             k = [k[0] * s, k[1] * s];
         }
         CompensatedDielectric {
-            ss: Dielectric::new(dist, eta),
+            ss: RoughDielectric::new(dist, eta),
             tables,
             scheme,
             k,
             transport: Transport::Radiance,
             smooth,
+        }
+    }
+}
+
+impl<F: Real, D: Distribution<F>, const N: usize> CompensatedDielectric<F, D, N> {
+    /// The same interface with f in M channels.
+    pub fn with_channels<const M: usize>(self) -> CompensatedDielectric<F, D, M> {
+        CompensatedDielectric {
+            ss: self.ss.with_channels(),
+            tables: self.tables,
+            scheme: self.scheme,
+            k: self.k,
+            transport: self.transport,
+            smooth: self.smooth,
         }
     }
 
@@ -757,12 +831,12 @@ impl<D: Distribution<f64> + Clone> CompensatedDielectric<D> {
     }
 
     /// The tables.
-    pub fn tables(&self) -> &DielectricTables {
+    pub fn tables(&self) -> &Arc<DielectricTables> {
         &self.tables
     }
 
     /// The single-scattering interface underneath.
-    pub fn single_scattering(&self) -> &Dielectric<f64, D> {
+    pub fn single_scattering(&self) -> &RoughDielectric<F, D, N> {
         &self.ss
     }
 
@@ -793,7 +867,7 @@ impl<D: Distribution<f64> + Clone> CompensatedDielectric<D> {
         }
         let f = share * lost * (1.0 - self.table(t).e(mi)).max(0.0) / den;
         if crossed && self.transport == Transport::Radiance {
-            let eta = self.ss.eta();
+            let eta = self.ss.eta().to_f64();
             let etap = if s == 0 { eta } else { 1.0 / eta };
             f / (etap * etap)
         } else {
@@ -826,66 +900,60 @@ impl<D: Distribution<f64> + Clone> CompensatedDielectric<D> {
         let side = if crossed { self.k[s] } else { 1.0 - self.k[s] };
         side * wi[2].abs() / std::f64::consts::PI
     }
-}
 
-impl<D: Distribution<f64> + Clone> Bsdf<f64> for CompensatedDielectric<D> {
-    type Value = f64;
-
-    fn eval(&self, wo: [f64; 3], wi: [f64; 3]) -> f64 {
-        let f = self.ss.eval(wo, wi);
+    /// f in one channel.
+    fn eval_grey(&self, wo: [F; 3], wi: [F; 3]) -> F {
+        let f = self.ss.eval_grey(wo, wi);
         if self.smooth {
             return f;
         }
-        match self.scheme {
-            Scheme::Turquin => f * self.scale(wo),
-            Scheme::KullaConty => f + self.f_ms(wo, wi),
-        }
+        let (o, i) = (wo.map(F::to_f64), wi.map(F::to_f64));
+        F::from_f64(match self.scheme {
+            Scheme::Turquin => f.to_f64() * self.scale(o),
+            Scheme::KullaConty => f.to_f64() + self.f_ms(o, i),
+        })
     }
 
-    fn pdf(&self, wo: [f64; 3], wi: [f64; 3]) -> f64 {
-        let p = self.ss.pdf(wo, wi);
-        if self.smooth || self.scheme == Scheme::Turquin {
-            return p;
-        }
-        let q = self.p_ms(wo);
-        (1.0 - q) * p + q * self.pdf_ms(wo, wi)
-    }
-
-    fn sample(&self, wo: [f64; 3], uc: f64, u: [f64; 2]) -> Option<BsdfSample<f64, f64>> {
+    /// A sample with f in one channel.
+    fn sample_grey(&self, wo: [F; 3], uc: F, u: [F; 2]) -> Option<BsdfSample<F, F>> {
         if self.smooth {
-            return self.ss.sample(wo, uc, u);
+            return self.ss.sample_grey(wo, uc, u);
         }
+        let o = wo.map(F::to_f64);
         match self.scheme {
             Scheme::Turquin => {
-                let s = self.ss.sample(wo, uc, u)?;
+                let s = self.ss.sample_grey(wo, uc, u)?;
                 Some(BsdfSample {
-                    f: s.f * self.scale(wo),
+                    f: F::from_f64(s.f.to_f64() * self.scale(o)),
                     ..s
                 })
             }
             Scheme::KullaConty => {
-                let q = self.p_ms(wo);
-                let wi = if uc < q {
+                let q = self.p_ms(o);
+                let ucf = uc.to_f64();
+                let wi = if ucf < q {
                     // The added lobes: the side by k_s, then a cosine-weighted direction.
-                    let s = usize::from(wo[2] < 0.0);
-                    let v = uc / q;
+                    let s = usize::from(o[2] < 0.0);
+                    let v = ucf / q;
                     let crossed = v < self.k[s];
-                    let [x, y, z] = crate::frame::cosine_hemisphere(u);
-                    let up = (wo[2] > 0.0) != crossed;
-                    [x, y, if up { z } else { -z }]
+                    let [x, y, z] = crate::frame::cosine_hemisphere(u.map(F::to_f64));
+                    let up = (o[2] > 0.0) != crossed;
+                    [x, y, if up { z } else { -z }].map(F::from_f64)
                 } else {
-                    let s = self.ss.sample(wo, (uc - q) / (1.0 - q), u)?;
+                    let s = self
+                        .ss
+                        .sample_grey(wo, F::from_f64((ucf - q) / (1.0 - q)), u)?;
                     s.wi
                 };
                 let pdf = self.pdf(wo, wi);
-                if !(pdf > 0.0 && pdf.is_finite()) || wi[2] == 0.0 {
+                if !(pdf > F::ZERO && pdf.to_f64().is_finite()) || wi[2] == F::ZERO {
                     return None;
                 }
-                let crossed = (wi[2] < 0.0) != (wo[2] < 0.0);
+                let crossed = (wi[2] < F::ZERO) != (wo[2] < F::ZERO);
                 let eta = self.ss.eta();
                 Some(BsdfSample {
                     wi,
-                    f: self.eval(wo, wi),
+                    f: self.eval_grey(wo, wi),
                     pdf,
                     lobe: if crossed {
                         Lobe::Transmission
@@ -893,14 +961,87 @@ impl<D: Distribution<f64> + Clone> Bsdf<f64> for CompensatedDielectric<D> {
                         Lobe::Reflection
                     },
                     specular: false,
-                    eta: match (crossed, wo[2] > 0.0) {
-                        (false, _) => 1.0,
+                    eta: match (crossed, wo[2] > F::ZERO) {
+                        (false, _) => F::ONE,
                         (true, true) => eta,
-                        (true, false) => 1.0 / eta,
+                        (true, false) => F::ONE / eta,
                     },
                 })
             }
         }
+    }
+}
+
+impl<F: Real, D: Distribution<F>, const N: usize> Bsdf<F> for CompensatedDielectric<F, D, N> {
+    type Value = [F; N];
+
+    fn eval(&self, wo: [F; 3], wi: [F; 3]) -> [F; N] {
+        [self.eval_grey(wo, wi); N]
+    }
+
+    fn pdf(&self, wo: [F; 3], wi: [F; 3]) -> F {
+        let p = self.ss.pdf_grey(wo, wi);
+        if self.smooth || self.scheme == Scheme::Turquin {
+            return p;
+        }
+        let (o, i) = (wo.map(F::to_f64), wi.map(F::to_f64));
+        let q = self.p_ms(o);
+        F::from_f64((1.0 - q) * p.to_f64() + q * self.pdf_ms(o, i))
+    }
+
+    fn sample(&self, wo: [F; 3], uc: F, u: [F; 2]) -> Option<BsdfSample<F, [F; N]>> {
+        self.sample_grey(wo, uc, u).map(|s| s.map_f(|f| [f; N]))
+    }
+}
+
+/// A distribution of precision F seen as an f64 one (arguments rounded to F, values
+/// widened): the tables of a distribution that does not name its NDF.
+struct Widened<'a, F, D>(&'a D, PhantomData<F>);
+
+impl<F: Real, D: Distribution<F>> Distribution<f64> for Widened<'_, F, D> {
+    fn alpha(&self) -> (f64, f64) {
+        let (ax, ay) = self.0.alpha();
+        (ax.to_f64(), ay.to_f64())
+    }
+    fn d(&self, wm: [f64; 3]) -> f64 {
+        self.0.d(wm.map(F::from_f64)).to_f64()
+    }
+    fn lambda(&self, w: [f64; 3]) -> f64 {
+        self.0.lambda(w.map(F::from_f64)).to_f64()
+    }
+    fn g1(&self, w: [f64; 3]) -> f64 {
+        self.0.g1(w.map(F::from_f64)).to_f64()
+    }
+    fn pdf(&self, w: [f64; 3], wm: [f64; 3]) -> f64 {
+        self.0.pdf(w.map(F::from_f64), wm.map(F::from_f64)).to_f64()
+    }
+    fn d_visible(&self, w: [f64; 3], wm: [f64; 3]) -> f64 {
+        self.0
+            .d_visible(w.map(F::from_f64), wm.map(F::from_f64))
+            .to_f64()
+    }
+    fn sample_wm(&self, w: [f64; 3], u: [f64; 2]) -> [f64; 3] {
+        self.0
+            .sample_wm(w.map(F::from_f64), u.map(F::from_f64))
+            .map(F::to_f64)
+    }
+    fn sample_wm_stream(&self, v: [f64; 3], uniform: &mut dyn FnMut() -> f64) -> Option<[f64; 3]> {
+        self.0
+            .sample_wm_stream(v.map(F::from_f64), &mut || F::from_f64(uniform()))
+            .map(|m| m.map(F::to_f64))
+    }
+    fn sample_dcos(&self, u: [f64; 2]) -> Sample<f64> {
+        let s = self.0.sample_dcos(u.map(F::from_f64));
+        Sample {
+            wm: s.wm.map(F::to_f64),
+            pdf: s.pdf.to_f64(),
+        }
+    }
+    fn pdf_dcos(&self, wm: [f64; 3]) -> f64 {
+        self.0.pdf_dcos(wm.map(F::from_f64)).to_f64()
+    }
+    fn effectively_smooth(&self) -> bool {
+        self.0.effectively_smooth()
     }
 }
 

@@ -880,18 +880,20 @@ struct ExactParams {
     gamma: f64,
 }
 
-/// A process-wide cache of fits ([`crate::any_microfacet::FIT_CACHE_CAPACITY`] entries).
-type FitCache<K, V> = OnceLock<Mutex<HashMap<K, Arc<V>>>>;
+/// A process-wide cache of fits or tables ([`crate::any_microfacet::FIT_CACHE_CAPACITY`]
+/// entries).
+pub(crate) type FitCache<K, V> = OnceLock<Mutex<HashMap<K, Arc<V>>>>;
 
-/// The fit of `key` from `cache`, or `make`'s, kept while the cache has room. The fit runs
-/// outside the lock (it takes milliseconds); a fit is a deterministic function of its key,
-/// so whichever thread stores it first, every material gets the same bits. A poisoned lock
-/// (a panic elsewhere while it was held) is used as it is: the map is never left half-written.
-fn cached<K: Eq + Hash, V>(
+/// The value of `key` from `cache`, or `make`'s, kept while the cache has room. `make` runs
+/// outside the lock (a fit or a table takes milliseconds); it is a deterministic function of
+/// its key, so whichever thread stores it first, every material gets the same bits. A
+/// poisoned lock (a panic elsewhere while it was held) is used as it is: the map is never
+/// left half-written.
+pub(crate) fn cached<K: Eq + Hash, V, E>(
     cache: &'static FitCache<K, V>,
     key: K,
-    make: impl FnOnce() -> Result<V, ParamError>,
-) -> Result<Arc<V>, ParamError> {
+    make: impl FnOnce() -> Result<V, E>,
+) -> Result<Arc<V>, E> {
     let map = cache.get_or_init(Default::default);
     if let Some(v) = map.lock().unwrap_or_else(|e| e.into_inner()).get(&key) {
         return Ok(v.clone());

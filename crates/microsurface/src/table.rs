@@ -35,7 +35,7 @@ use crate::distribution::Distribution;
 use crate::family::NdfKind;
 use crate::walk::{
     single_scattering_albedo_tol, AlbedoSums, DielectricFacets, DiffuseFacets, Heights,
-    Microsurface, MirrorFacets, WalkRng,
+    MirrorFacets, RandomWalk, WalkRng,
 };
 use crate::AnyMicrofacet;
 
@@ -231,14 +231,14 @@ fn cell<D: Distribution<f64> + Clone>(d: &D, spec: &Spec, wo: [f64; 3], t: &Task
         let wo = [((1.0 - mu) * (1.0 + mu)).sqrt(), 0.0, mu];
         return Done::E1(single_scattering_albedo_tol(d, wo, 1e-7));
     };
-    let s = Microsurface::new(d.clone(), Heights::Uniform);
+    let s = RandomWalk::new(d.clone(), Heights::Uniform);
     let mut rng = WalkRng::new(chunk_seed(seed, t.cell as u64, t.chunk));
     let mut sums = AlbedoSums::default();
     macro_rules! walks {
         ($facets:expr) => {{
             let f = $facets;
             for _ in 0..t.walks {
-                sums.add(wo, s.walk(&f, wo, &mut rng));
+                sums.add(wo, s.walk::<1>(&f, wo, &mut rng));
             }
         }};
     }

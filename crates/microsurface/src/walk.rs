@@ -57,6 +57,7 @@
 
 use crate::bsdf::{Bsdf, BsdfSample, Lobe, Transport};
 use crate::distribution::Distribution;
+use crate::fast::Real;
 use crate::frame::{dot, reflect};
 use crate::fresnel::Fresnel;
 
@@ -186,7 +187,7 @@ pub trait Facets<const N: usize> {
     /// draw one visible normal): unbiased.
     fn phase<D: Distribution<f64>>(
         &self,
-        surface: &Microsurface<D>,
+        surface: &RandomWalk<D>,
         v: [f64; 3],
         w: [f64; 3],
         crossed: bool,
@@ -201,7 +202,7 @@ pub trait Facets<const N: usize> {
     /// with a diffuse-like term.
     fn single_pdf<D: Distribution<f64>>(
         &self,
-        surface: &Microsurface<D>,
+        surface: &RandomWalk<D>,
         wo: [f64; 3],
         wi: [f64; 3],
         inside: bool,
@@ -243,7 +244,7 @@ impl<Fr: Fresnel<f64, N>, const N: usize> Facets<N> for MirrorFacets<Fr> {
 
     fn phase<D: Distribution<f64>>(
         &self,
-        surface: &Microsurface<D>,
+        surface: &RandomWalk<D>,
         v: [f64; 3],
         w: [f64; 3],
         crossed: bool,
@@ -258,7 +259,7 @@ impl<Fr: Fresnel<f64, N>, const N: usize> Facets<N> for MirrorFacets<Fr> {
 
     fn single_pdf<D: Distribution<f64>>(
         &self,
-        surface: &Microsurface<D>,
+        surface: &RandomWalk<D>,
         wo: [f64; 3],
         wi: [f64; 3],
         _: bool,
@@ -275,20 +276,21 @@ impl<Fr: Fresnel<f64, N>, const N: usize> Facets<N> for MirrorFacets<Fr> {
 #[derive(Clone, Copy, Debug)]
 pub struct DiffuseFacets(pub f64);
 
-impl Facets<1> for DiffuseFacets {
+/// (Grey: the same weight in each of N channels, so that the facets serve any spectrum.)
+impl<const N: usize> Facets<N> for DiffuseFacets {
     fn scatter(
         &self,
         _v: [f64; 3],
         wm: [f64; 3],
         _: bool,
         rng: &mut WalkRng,
-    ) -> Option<Scattered<1>> {
+    ) -> Option<Scattered<N>> {
         // A cosine-weighted direction in wm's frame.
         let local = crate::frame::cosine_hemisphere([rng.next_open(), rng.next_open()]);
         let frame = crate::frame::Frame::from_normal(wm);
         Some(Scattered {
             w: frame.from_local(local),
-            weight: [self.0],
+            weight: [self.0; N],
             crossed: false,
         })
     }
@@ -297,23 +299,23 @@ impl Facets<1> for DiffuseFacets {
     /// evaluation of the diffuse microflakes' phase function).
     fn phase<D: Distribution<f64>>(
         &self,
-        surface: &Microsurface<D>,
+        surface: &RandomWalk<D>,
         v: [f64; 3],
         w: [f64; 3],
         crossed: bool,
         _: bool,
         rng: &mut WalkRng,
-    ) -> [f64; 1] {
+    ) -> [f64; N] {
         if crossed {
-            return [0.0];
+            return [0.0; N];
         }
         let wm = surface.visible_normal(v, rng);
-        [self.0 * dot(wm, w).max(0.0) * std::f64::consts::FRAC_1_PI]
+        [self.0 * dot(wm, w).max(0.0) * std::f64::consts::FRAC_1_PI; N]
     }
 
     fn single_pdf<D: Distribution<f64>>(
         &self,
-        _: &Microsurface<D>,
+        _: &RandomWalk<D>,
         _: [f64; 3],
         wi: [f64; 3],
         _: bool,
@@ -341,7 +343,8 @@ impl DielectricFacets {
     }
 }
 
-impl Facets<1> for DielectricFacets {
+/// (Grey: the same weight in each of N channels.)
+impl<const N: usize> Facets<N> for DielectricFacets {
     fn interface_eta(&self) -> Option<f64> {
         Some(self.0)
     }
@@ -352,55 +355,55 @@ impl Facets<1> for DielectricFacets {
         wm: [f64; 3],
         inside: bool,
         rng: &mut WalkRng,
-    ) -> Option<Scattered<1>> {
+    ) -> Option<Scattered<N>> {
         let eta = self.eta(inside);
         let r = crate::fresnel::dielectric(dot(v, wm), eta);
         if rng.next_open() >= r {
             if let Some((t, _)) = crate::frame::refract(v, wm, eta) {
                 return Some(Scattered {
                     w: t,
-                    weight: [1.0],
+                    weight: [1.0; N],
                     crossed: true,
                 });
             }
         }
         Some(Scattered {
             w: reflect(v, wm),
-            weight: [1.0],
+            weight: [1.0; N],
             crossed: false,
         })
     }
 
     fn phase<D: Distribution<f64>>(
         &self,
-        surface: &Microsurface<D>,
+        surface: &RandomWalk<D>,
         v: [f64; 3],
         w: [f64; 3],
         crossed: bool,
         inside: bool,
         _: &mut WalkRng,
-    ) -> [f64; 1] {
+    ) -> [f64; N] {
         let eta = self.eta(inside);
         if !crossed {
             return match surface.mirror_phase(v, w) {
-                Some((p, c)) => [crate::fresnel::dielectric(c, eta) * p],
-                None => [0.0],
+                Some((p, c)) => [crate::fresnel::dielectric(c, eta) * p; N],
+                None => [0.0; N],
             };
         }
         let Some(wm) = refraction_half(v, w, eta) else {
-            return [0.0];
+            return [0.0; N];
         };
         let cv = dot(v, wm);
         let sigma = surface.sigma(v);
         let t = 1.0 - crate::fresnel::dielectric(cv, eta);
         let p =
             t * surface.dist.d(wm) * cv / sigma * crate::frame::jacobian_refraction(v, w, wm, eta);
-        [if p.is_finite() { p } else { 0.0 }]
+        [if p.is_finite() { p } else { 0.0 }; N]
     }
 
     fn single_pdf<D: Distribution<f64>>(
         &self,
-        surface: &Microsurface<D>,
+        surface: &RandomWalk<D>,
         wo: [f64; 3],
         wi: [f64; 3],
         inside: bool,
@@ -441,7 +444,7 @@ pub struct Walked<const N: usize> {
     pub order: u32,
 }
 
-/// Walks longer than this are cut ([`Microsurface::walk`] answers `None`, which [`albedo`]
+/// Walks longer than this are cut ([`RandomWalk::walk`] answers `None`, which [`albedo`]
 /// counts as weight 0). The mean order of an F = 1 conductor at normal incidence grows with
 /// the roughness, about 3α (measured for GGX: 26 at α = 10, 305 at α = 100, 3130 at
 /// α = 1000), so walks are cut, and energy lost, only on surfaces far rougher than any
@@ -457,15 +460,15 @@ pub type OrderValues<const N: usize> = [[f64; N]; 4];
 
 /// The microsurface of a distribution with a height distribution: the walk's state-free part.
 #[derive(Clone, Debug)]
-pub struct Microsurface<D> {
+pub struct RandomWalk<D> {
     dist: D,
     heights: Heights,
 }
 
-impl<D: Distribution<f64>> Microsurface<D> {
+impl<D: Distribution<f64>> RandomWalk<D> {
     /// The microsurface of `dist` with heights distributed as `heights`.
     pub fn new(dist: D, heights: Heights) -> Self {
-        Microsurface { dist, heights }
+        RandomWalk { dist, heights }
     }
 
     /// The distribution.
@@ -637,7 +640,7 @@ impl<D: Distribution<f64>> Microsurface<D> {
     /// G2 (for a reflection 1/(1 + Λo + Λi); for a dielectric's transmission the exact
     /// height-correlated form B(1 + Λo, 1 + Λi), Heitz 2014, "Understanding the
     /// masking-shadowing function", section 6, whose approximation 1/(1 + Λo + Λi)
-    /// [`crate::bsdf::Dielectric`] uses as pbrt-v4 does). wi on the other side of the
+    /// [`crate::bsdf::RoughDielectric`] uses as pbrt-v4 does). wi on the other side of the
     /// macrosurface is a transmission (0 for opaque facets). Units: unit vectors.
     pub fn eval<const N: usize>(
         &self,
@@ -695,7 +698,7 @@ fn seed_of(xs: &[f64]) -> u64 {
 /// * `sample` is the walk (exact: its weight f|cos θi|/pdf is the path's, ≤ 1 for F ≤ 1), its
 ///   stream seeded by the bits of (uc, u), so a sample is a deterministic function of its
 ///   arguments.
-/// * `eval` is one sample of the stochastic evaluation ([`Microsurface::eval`], summed over
+/// * `eval` is one sample of the stochastic evaluation ([`RandomWalk::eval`], summed over
 ///   orders, divided by |cos θi|), seeded by the bits of (wo, wi): unbiased, noisy.
 ///   [`MultipleScattering::eval_orders`] averages many, by order, with standard errors.
 /// * `pdf` is **not** the density of `sample`'s directions (which has no closed form): it is
@@ -709,14 +712,14 @@ fn seed_of(xs: &[f64]) -> u64 {
 ///   sides gets a correct image; the 5 % floor keeps every direction the walk can produce
 ///   at a positive p̃.
 /// * The transport is radiance by default: a transmitted f is divided by η'², η' the
-///   relative index along the path (as [`crate::bsdf::Dielectric`]); the walk itself
+///   relative index along the path (as [`crate::bsdf::RoughDielectric`]); the walk itself
 ///   transports importance.
 /// * There is no smooth limit: at α < 1e-3 the lobes are as sharp as D; a renderer uses
-///   [`crate::bsdf::Dielectric`] or [`crate::bsdf::Conductor`] there, whose delta lobes
+///   [`crate::bsdf::RoughDielectric`] or [`crate::bsdf::RoughConductor`] there, whose delta lobes
 ///   have no multiple scattering.
 #[derive(Clone, Debug)]
 pub struct MultipleScattering<D, Fa, const N: usize> {
-    surface: Microsurface<D>,
+    surface: RandomWalk<D>,
     facets: Fa,
     transport: Transport,
 }
@@ -725,7 +728,7 @@ impl<D: Distribution<f64>, Fa: Facets<N>, const N: usize> MultipleScattering<D, 
     /// The BSDF of `dist` with `facets`, uniform heights, radiance transport.
     pub fn new(dist: D, facets: Fa) -> Self {
         MultipleScattering {
-            surface: Microsurface::new(dist, Heights::Uniform),
+            surface: RandomWalk::new(dist, Heights::Uniform),
             facets,
             transport: Transport::Radiance,
         }
@@ -745,7 +748,7 @@ impl<D: Distribution<f64>, Fa: Facets<N>, const N: usize> MultipleScattering<D, 
     }
 
     /// The microsurface.
-    pub fn surface(&self) -> &Microsurface<D> {
+    pub fn surface(&self) -> &RandomWalk<D> {
         &self.surface
     }
 
@@ -783,12 +786,42 @@ impl<D: Distribution<f64>, Fa: Facets<N>, const N: usize> MultipleScattering<D, 
     }
 }
 
-impl<D: Distribution<f64>, Fa: Facets<N>, const N: usize> Bsdf<f64>
+impl<F: Real, D: Distribution<f64>, Fa: Facets<N>, const N: usize> Bsdf<F>
     for MultipleScattering<D, Fa, N>
 {
-    type Value = [f64; N];
+    type Value = [F; N];
 
-    fn eval(&self, wo: [f64; 3], wi: [f64; 3]) -> [f64; N] {
+    fn eval(&self, wo: [F; 3], wi: [F; 3]) -> [F; N] {
+        self.eval_f64(wo.map(F::to_f64), wi.map(F::to_f64))
+            .map(F::from_f64)
+    }
+
+    fn pdf(&self, wo: [F; 3], wi: [F; 3]) -> F {
+        F::from_f64(self.pdf_f64(wo.map(F::to_f64), wi.map(F::to_f64)))
+    }
+
+    fn sample(&self, wo: [F; 3], uc: F, u: [F; 2]) -> Option<BsdfSample<F, [F; N]>> {
+        let s = self.sample_f64(wo.map(F::to_f64), uc.to_f64(), u.map(F::to_f64))?;
+        let (pdf, f) = (F::from_f64(s.pdf), s.f.map(F::from_f64));
+        // (A pdf or f that leaves F's range in the rounding: rejected, as any unusable sample.)
+        if !(pdf > F::ZERO && pdf.to_f64().is_finite() && f.iter().all(|x| x.to_f64().is_finite()))
+        {
+            return None;
+        }
+        Some(BsdfSample {
+            wi: s.wi.map(F::from_f64),
+            f,
+            pdf,
+            lobe: s.lobe,
+            specular: s.specular,
+            eta: F::from_f64(s.eta),
+        })
+    }
+}
+
+/// The walk's BSDF in f64 (the walk computes in f64 for every F).
+impl<D: Distribution<f64>, Fa: Facets<N>, const N: usize> MultipleScattering<D, Fa, N> {
+    fn eval_f64(&self, wo: [f64; 3], wi: [f64; 3]) -> [f64; N] {
         let mut rng = WalkRng::new(seed_of(&[wo[0], wo[1], wo[2], wi[0], wi[1], wi[2]]));
         let e = self.surface.eval(&self.facets, wo, wi, &mut rng);
         let scale = self.transport_factor(wo, wi) / wi[2].abs();
@@ -802,7 +835,7 @@ impl<D: Distribution<f64>, Fa: Facets<N>, const N: usize> Bsdf<f64>
         })
     }
 
-    fn pdf(&self, wo: [f64; 3], wi: [f64; 3]) -> f64 {
+    fn pdf_f64(&self, wo: [f64; 3], wi: [f64; 3]) -> f64 {
         if wo[2] == 0.0 || wi[2] == 0.0 || wo[2].is_nan() || wi[2].is_nan() {
             return 0.0;
         }
@@ -829,11 +862,11 @@ impl<D: Distribution<f64>, Fa: Facets<N>, const N: usize> Bsdf<f64>
         }
     }
 
-    fn sample(&self, wo: [f64; 3], uc: f64, u: [f64; 2]) -> Option<BsdfSample<f64, [f64; N]>> {
+    fn sample_f64(&self, wo: [f64; 3], uc: f64, u: [f64; 2]) -> Option<BsdfSample<f64, [f64; N]>> {
         let mut rng = WalkRng::new(seed_of(&[uc, u[0], u[1]]));
         let p = self.surface.walk(&self.facets, wo, &mut rng)?;
         let wi = p.w;
-        let pdf = self.pdf(wo, wi);
+        let pdf = self.pdf_f64(wo, wi);
         if !(pdf > 0.0 && pdf.is_finite()) {
             return None;
         }
@@ -1061,9 +1094,11 @@ impl AlbedoSums {
 
 /// [`Albedo`] from `walks` walks from wo (E_k(wo) = E[weight; the walk leaves on that side
 /// after k events]); walks that fail (wo on the horizon, cut paths) count with weight 0.
-pub fn albedo<D: Distribution<f64>, const N: usize>(
-    surface: &Microsurface<D>,
-    facets: &impl Facets<N>,
+/// One channel (a spectral albedo is one call per channel, each with its own seed or the
+/// same one for correlated estimates).
+pub fn albedo<D: Distribution<f64>>(
+    surface: &RandomWalk<D>,
+    facets: &impl Facets<1>,
     wo: [f64; 3],
     walks: u64,
     seed: u64,
@@ -1131,7 +1166,7 @@ pub(crate) fn single_scattering_albedo_tol<D: Distribution<f64>>(
 
 /// The single-scattering albedo of a rough dielectric interface of relative index η
 /// (η_inside/η_outside) seen from wo, split into reflection and transmission: the
-/// directional albedo of [`crate::bsdf::Dielectric`] (height-correlated G2 =
+/// directional albedo of [`crate::bsdf::RoughDielectric`] (height-correlated G2 =
 /// 1/(1 + Λo + Λi), importance transport, so that reflection + transmission is the share
 /// of the energy that single scattering keeps: 1 − their sum is what multiple scattering
 /// adds), as an integral over the microfacet normal,
@@ -1173,12 +1208,12 @@ pub fn single_scattering_albedo_dielectric<D: Distribution<f64>>(
 /// Which height-correlated G2 a dielectric's single scattering uses.
 #[derive(Clone, Copy, Debug, PartialEq, Eq, Default)]
 pub enum G2Form {
-    /// 1/(1 + Λo + Λi) for both lobes: [`crate::bsdf::Dielectric`], as pbrt-v4.
+    /// 1/(1 + Λo + Λi) for both lobes: [`crate::bsdf::RoughDielectric`], as pbrt-v4.
     #[default]
     Approximate,
     /// The exact height-correlated form (Heitz 2014, "Understanding the masking-shadowing
     /// function", section 6): 1/(1 + Λo + Λi) for a reflection, B(1 + Λo, 1 + Λi) (Euler's
-    /// beta function) for a transmission; the walk's order 1 ([`Microsurface::eval`]).
+    /// beta function) for a transmission; the walk's order 1 ([`RandomWalk::eval`]).
     Exact,
 }
 

@@ -13,7 +13,7 @@
     clippy::type_complexity
 )]
 
-use microsurface::bsdf::{Bsdf, Conductor, Dielectric, Lobe, Masking, Transport};
+use microsurface::bsdf::{Bsdf, RoughConductor, RoughDielectric, Lobe, Masking, Transport};
 use microsurface::chi2::{
     cell_of, chi2_test, chi2_test_region, chi2_test_region_expected, sidak, AxisCoordinates,
     Coordinates, DcosCoordinates, SplitMix64,
@@ -482,10 +482,10 @@ fn bsdf_grid(full: bool) {
                             ex
                         });
                         let ex = |b: usize| expected.as_ref().map(|e| &e[b]);
-                        let c = Conductor::new(x.clone(), fresnel::Conductor { eta: [0.2], k: [3.9] });
+                        let c = RoughConductor::new(x.clone(), fresnel::Conductor { eta: [0.2], k: [3.9] });
                         check_bsdf(&format!("conductor {label}"), &c, wo, alpha, None, n, level, ex(0));
                         for (j, eta) in ETAS.into_iter().enumerate() {
-                            let d = Dielectric::new(x.clone(), eta);
+                            let d = RoughDielectric::new(x.clone(), eta);
                             check_bsdf(&format!("dielectric η = {eta:.3} {label}"), &d, wo, alpha, Some(eta), n, level, ex(j + 1));
                         }
                     });
@@ -516,8 +516,8 @@ fn reciprocity() {
     for k in 0..5 {
         let m = material::<f64>(k, 0.4, if k == 4 { 0.4 } else { 0.2 });
         each!(&m, x => {
-            let c = Conductor::new(x.clone(), fresnel::Schlick { f0: [0.9, 0.6, 0.3] });
-            let d = Dielectric::new(x.clone(), 1.5);
+            let c = RoughConductor::new(x.clone(), fresnel::Schlick { f0: [0.9, 0.6, 0.3] });
+            let d = RoughDielectric::new(x.clone(), 1.5);
             let mut checked = 0;
             for _ in 0..4000 {
                 let (wo, wi) = (random_direction(&mut rng), random_direction(&mut rng));
@@ -525,7 +525,7 @@ fn reciprocity() {
                 for ch in 0..3 {
                     assert!(rel(a[ch], b[ch]) < 1e-12 || (a[ch] - b[ch]).abs() < 1e-300, "{}: {a:?} {b:?}", NAMES[k]);
                 }
-                let (f, g) = (d.eval(wo, wi), d.eval(wi, wo));
+                let (f, g) = (d.eval(wo, wi)[0], d.eval(wi, wo)[0]);
                 if f > 0.0 {
                     checked += 1;
                     let etap: f64 = if wo[2] * wi[2] > 0.0 { 1.0 } else if wo[2] > 0.0 { 1.5 } else { 1.0 / 1.5 };
@@ -552,8 +552,8 @@ fn single_scattering_loses_energy_never_gains() {
         for alpha in [0.05, 0.3, 1.0] {
             let m = material::<f64>(k, alpha, alpha);
             each!(&m, x => {
-                let c = Conductor::new(x.clone(), One::<1>);
-                let d = Dielectric::new(x.clone(), 1.5).with_transport(Transport::Importance);
+                let c = RoughConductor::new(x.clone(), One::<1>);
+                let d = RoughDielectric::new(x.clone(), 1.5).with_transport(Transport::Importance);
                 for deg in [0.0, 45.0, 80.0, 89.0] {
                     let wo = direction(deg);
                     let (mut e_c, mut e_d, mut v_c) = (0.0, 0.0, 0.0);
@@ -567,7 +567,7 @@ fn single_scattering_loses_energy_never_gains() {
                             v_c += wgt * wgt;
                         }
                         if let Some(s) = d.sample(wo, uc, u) {
-                            let wgt = s.f * s.wi[2].abs() / s.pdf;
+                            let wgt = s.f[0] * s.wi[2].abs() / s.pdf;
                             assert!(wgt <= 1.0 + 1e-9, "{} dielectric weight {wgt}", NAMES[k]);
                             e_d += wgt;
                         }
@@ -608,18 +608,18 @@ fn the_smooth_limit() {
         eta: [0.2],
         k: [3.9],
     };
-    let c = Conductor::new(m.clone(), metal);
+    let c = RoughConductor::new(m.clone(), metal);
     let s = c.sample(wo, 0.5, [0.3, 0.3]).unwrap();
     assert!(s.specular && s.lobe == Lobe::Reflection && s.pdf == 1.0);
     assert_eq!(s.wi, [-wo[0], -wo[1], wo[2]]);
     assert!(rel(s.f[0] * s.wi[2], fresnel::conductor(wo[2], 0.2, 3.9)) < 1e-15);
     assert_eq!(c.eval(wo, s.wi), [0.0]);
     assert_eq!(c.pdf(wo, s.wi), 0.0);
-    let d = Dielectric::new(m, 1.5);
+    let d = RoughDielectric::new(m, 1.5);
     let r = fresnel::dielectric(wo[2], 1.5);
     let s = d.sample(wo, 0.99, [0.3, 0.3]).unwrap();
     assert!(s.specular && s.lobe == Lobe::Transmission && rel(s.pdf, 1.0 - r) < 1e-15);
-    assert!(rel(s.f * s.wi[2].abs() * 1.5 * 1.5, 1.0 - r) < 1e-14);
+    assert!(rel(s.f[0] * s.wi[2].abs() * 1.5 * 1.5, 1.0 - r) < 1e-14);
     let s = d.sample(wo, 0.0, [0.3, 0.3]).unwrap();
     assert!(s.specular && s.lobe == Lobe::Reflection && rel(s.pdf, r) < 1e-15);
 }
@@ -633,16 +633,16 @@ fn exact_and_fast_bsdfs_agree() {
         let m = material::<f64>(k, 0.35, if k == 4 { 0.35 } else { 0.15 });
         let ex = exact(&m);
         each!(&m, x => {
-            let a = Conductor::new(x.clone(), One::<1>).with_masking(Masking::Separable);
-            let b = Conductor::new(ex, One::<1>).with_masking(Masking::Separable);
-            let c = Dielectric::new(x.clone(), 1.33);
-            let e = Dielectric::new(ex, 1.33);
+            let a = RoughConductor::new(x.clone(), One::<1>).with_masking(Masking::Separable);
+            let b = RoughConductor::new(ex, One::<1>).with_masking(Masking::Separable);
+            let c = RoughDielectric::new(x.clone(), 1.33);
+            let e = RoughDielectric::new(ex, 1.33);
             let tol = if k <= 1 { 1e-10 } else { 1e-6 };
             for _ in 0..2000 {
                 let (wo, wi) = (random_direction(&mut rng), random_direction(&mut rng));
                 assert!(rel(a.eval(wo, wi)[0], b.eval(wo, wi)[0]) < tol || b.eval(wo, wi)[0] < 1e-300);
                 assert!(rel(a.pdf(wo, wi), b.pdf(wo, wi)) < tol || b.pdf(wo, wi) < 1e-300);
-                assert!(rel(c.eval(wo, wi), e.eval(wo, wi)) < tol || e.eval(wo, wi) < 1e-300);
+                assert!(rel(c.eval(wo, wi)[0], e.eval(wo, wi)[0]) < tol || e.eval(wo, wi)[0] < 1e-300);
                 assert!(rel(c.pdf(wo, wi), e.pdf(wo, wi)) < tol || e.pdf(wo, wi) < 1e-300);
                 let g = x.g2_separable(wo, wi);
                 assert!(rel(g, x.g1(wo) * x.g1(wi)) < 1e-15);
@@ -656,13 +656,13 @@ fn exact_and_fast_bsdfs_agree() {
 /// single-scattering BSDFs above.
 #[test]
 fn compensated_sampling_matches_its_pdf() {
-    use microsurface::compensate::{Compensated, Scheme};
+    use microsurface::compensate::{CompensatedConductor, Scheme};
     let level = sidak(0.01, 5 * 2 * 2 * 2);
     for k in 0..5 {
         let m = material::<f64>(k, 0.6, 0.6);
         each!(&m, x => {
             for scheme in [Scheme::KullaConty, Scheme::Turquin] {
-                let b = Compensated::new(x.clone(), fresnel::Conductor { eta: [0.2], k: [3.9] }, scheme);
+                let b = CompensatedConductor::new(x.clone(), fresnel::Conductor { eta: [0.2], k: [3.9] }, scheme);
                 let wo = direction(45.0);
                 let label = format!("{} compensated {scheme:?} α = 0.6 θo = 45", NAMES[k]);
                 check_bsdf(&label, &b, wo, 0.6, None, 100_000, level, None);

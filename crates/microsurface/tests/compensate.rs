@@ -5,7 +5,7 @@
 //! below the furnace.
 
 use microsurface::bsdf::Bsdf;
-use microsurface::compensate::{AlbedoTable, Compensated, Scheme};
+use microsurface::compensate::{AlbedoTable, CompensatedConductor, Scheme};
 use microsurface::fresnel::{self, One};
 use microsurface::quad::integrate;
 use microsurface::walk::single_scattering_albedo;
@@ -66,7 +66,7 @@ fn white_furnace_is_one() {
         each_ndf!(a, |name, d| {
             let table = AlbedoTable::new(&d);
             for scheme in [Scheme::KullaConty, Scheme::Turquin] {
-                let b = Compensated::from_table(d.clone(), One::<1>, scheme, table.clone());
+                let b = CompensatedConductor::from_table(d.clone(), One::<1>, scheme, table.clone());
                 let mut worst = 0.0f64;
                 for mu in [0.02, 0.1, 0.3, 0.55, 0.8, 1.0] {
                     let e = furnace(&b, mu);
@@ -121,11 +121,11 @@ fn fresnel_weighted_compensation_is_bounded() {
     for a in [0.3, 1.0] {
         let d = Microfacet::<f64, Ggx>::new(a, a).unwrap();
         let table = AlbedoTable::new(&d);
-        let ss = Compensated::from_table(d.clone(), gold, Scheme::KullaConty, table.clone());
+        let ss = CompensatedConductor::from_table(d.clone(), gold, Scheme::KullaConty, table.clone());
         for mu in [0.2, 0.7] {
             let e_ss = furnace(ss.single_scattering(), mu);
             let e_kc = furnace(&ss, mu);
-            let tq = Compensated::from_table(d.clone(), gold, Scheme::Turquin, table.clone());
+            let tq = CompensatedConductor::from_table(d.clone(), gold, Scheme::Turquin, table.clone());
             let e_tq = furnace(&tq, mu);
             println!("α={a} μ={mu}: single {e_ss:.5} Kulla–Conty {e_kc:.5} Turquin {e_tq:.5}");
             for e in [e_kc, e_tq] {
@@ -204,12 +204,12 @@ fn shipped_tables() {
 /// grazing, one anisotropic material.
 #[test]
 fn dielectric_albedo_by_quadrature() {
-    use microsurface::bsdf::{Dielectric, Transport};
+    use microsurface::bsdf::{RoughDielectric, Transport};
     use microsurface::chi2::SplitMix64;
     use microsurface::walk::{single_scattering_albedo_dielectric_level as albedo, G2Form};
     use microsurface::Distribution;
     fn check<D: Distribution<f64> + Clone>(name: &str, d: D) {
-        let b = Dielectric::new(d.clone(), 1.5).with_transport(Transport::Importance);
+        let b = RoughDielectric::new(d.clone(), 1.5).with_transport(Transport::Importance);
         let mut rng = SplitMix64(11);
         for mu in [0.05f64, 0.5, 1.0] {
             for z in [1.0, -1.0] {
@@ -229,7 +229,7 @@ fn dielectric_albedo_by_quadrature() {
                 for _ in 0..n {
                     let (uc, u) = (rng.next_f64(), [rng.next_f64(), rng.next_f64()]);
                     if let Some(x) = b.sample(wo, uc, u) {
-                        let w = x.f * x.wi[2].abs() / x.pdf;
+                        let w = x.f[0] * x.wi[2].abs() / x.pdf;
                         let k = usize::from(x.wi[2] * wo[2] < 0.0);
                         s[k] += w;
                         s2[k] += w * w;
@@ -262,7 +262,7 @@ fn dielectric_albedo_by_quadrature() {
 /// lobes (f minus the single-scattering f, which depend on μi alone) by Gauss–Legendre in
 /// √μi on each side.
 fn dielectric_furnace<D: microsurface::Distribution<f64> + Clone>(
-    b: &microsurface::compensate::CompensatedDielectric<D>,
+    b: &microsurface::compensate::CompensatedDielectric<f64, D>,
     d: &D,
     eta: f64,
     wo: [f64; 3],
@@ -277,7 +277,7 @@ fn dielectric_furnace<D: microsurface::Distribution<f64> + Clone>(
         for k in 1..200 {
             let mu = k as f64 / 200.0;
             let wi = [-(1.0 - mu * mu).sqrt(), 0.0, mu * wo[2].signum()];
-            let (f, g) = (b.eval(wo, wi), s.eval(wo, wi));
+            let (f, g) = (b.eval(wo, wi)[0], s.eval(wo, wi)[0]);
             if g > 1e-3 {
                 return (r + t) * f / g;
             }
@@ -294,7 +294,7 @@ fn dielectric_furnace<D: microsurface::Distribution<f64> + Clone>(
                 // The azimuth across the lobes' plane, where the single-scattering f is
                 // smallest (the difference is exact anyway).
                 let wi = [0.0, (1.0 - mu * mu).sqrt(), side * mu];
-                let f = b.eval(wo, wi) - ss.eval(wo, wi);
+                let f = b.eval(wo, wi)[0] - ss.eval(wo, wi)[0];
                 sum += w / 64.0 * 2.0 * s * f * mu * 2.0 * std::f64::consts::PI;
             }
         }
@@ -346,7 +346,7 @@ fn dielectric_white_furnace_is_one() {
                 for _ in 0..n {
                     let (uc, u) = (rng.next_f64(), [rng.next_f64(), rng.next_f64()]);
                     if let Some(x) = b.sample(wo, uc, u) {
-                        let w = x.f * x.wi[2].abs() / x.pdf;
+                        let w = x.f[0] * x.wi[2].abs() / x.pdf;
                         s += w;
                         s2 += w * w;
                     }
@@ -395,7 +395,7 @@ fn compensated_dielectric_reciprocity() {
         let b = CompensatedDielectric::new(d, eta, Scheme::KullaConty);
         for _ in 0..4000 {
             let (wo, wi) = (dir(), dir());
-            let (f, g) = (b.eval(wo, wi), b.eval(wi, wo));
+            let (f, g) = (b.eval(wo, wi)[0], b.eval(wi, wo)[0]);
             assert!(
                 f > 0.0,
                 "the added lobes cover the sphere: f({wo:?}, {wi:?}) = {f}"

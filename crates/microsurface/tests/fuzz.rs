@@ -1265,7 +1265,7 @@ fn finite<F: fast::Real>(x: F) -> bool {
 /// f and a positive finite pdf. Directions out of contract (non-unit lengths) only must not
 /// panic.
 fn microfacet_api<F: fast::Real + std::fmt::Debug>(test: u64, draw: fn(&mut Rng) -> F) {
-    use microsurface::bsdf::{Bsdf, Conductor, Dielectric, Masking};
+    use microsurface::bsdf::{Bsdf, RoughConductor, RoughDielectric, Masking};
     use microsurface::{fresnel, Distribution, Microfacet};
     let mut r = Rng::new(test);
     let mut fails = Failures::default();
@@ -1292,7 +1292,7 @@ fn microfacet_api<F: fast::Real + std::fmt::Debug>(test: u64, draw: fn(&mut Rng)
         } else {
             Masking::Separable
         };
-        let metal = Conductor::new(
+        let metal = RoughConductor::new(
             m.clone(),
             fresnel::Conductor {
                 eta: [F::from_f64(0.2), F::from_f64(1.1)],
@@ -1300,7 +1300,7 @@ fn microfacet_api<F: fast::Real + std::fmt::Debug>(test: u64, draw: fn(&mut Rng)
             },
         )
         .with_masking(masking);
-        let glass = Dielectric::new(m.clone(), eta).with_masking(masking);
+        let glass = RoughDielectric::new(m.clone(), eta).with_masking(masking);
         for _ in 0..60 {
             let w: [F; 3] = unit_direction(r);
             let wi: [F; 3] = unit_direction(r);
@@ -1398,7 +1398,7 @@ fn microfacet_api<F: fast::Real + std::fmt::Debug>(test: u64, draw: fn(&mut Rng)
                 (
                     metal.eval(w, wi),
                     metal.pdf(w, wi),
-                    glass.eval(w, wi),
+                    glass.eval(w, wi)[0],
                     glass.pdf(w, wi),
                 )
             });
@@ -1418,7 +1418,7 @@ fn microfacet_api<F: fast::Real + std::fmt::Debug>(test: u64, draw: fn(&mut Rng)
                 samples.push(("conductor", s.wi, s.pdf, s.f.to_vec()));
             }
             if let Some(s) = sg {
-                samples.push(("dielectric", s.wi, s.pdf, vec![s.f]));
+                samples.push(("dielectric", s.wi, s.pdf, s.f.to_vec()));
             }
             for (b, wi_s, pdf, f) in samples {
                 fails.check((v3(wi_s).length() - 1.0).abs() < 1e3 * unit_tol, || {
@@ -1586,7 +1586,7 @@ macro_rules! fuzz_slices {
     ($name:ident, $F:ty, $test:expr, $vndf:path, $bvndf:path, $eval:path, $sample:path, $tol:expr) => {
         #[test]
         fn $name() {
-            use microsurface::bsdf::{Bsdf, Conductor};
+            use microsurface::bsdf::{Bsdf, RoughConductor};
             use microsurface::fast::batch::{self, GgxConductor, Simd, Vectors, VectorsMut};
             let mut r = Rng::new($test);
             let mut fails = Failures::default();
@@ -1633,7 +1633,7 @@ macro_rules! fuzz_slices {
                     eta: [0.14, 0.42, 1.37],
                     k: [3.98, 2.38, 1.60],
                 };
-                let b: GgxConductor<$F> = Conductor::new(g.clone(), gold);
+                let b: GgxConductor<$F> = RoughConductor::new(g.clone(), gold);
                 let ctx = || format!("α=({ax:e},{ay:e})");
                 for &simd in &sets {
                     batch::cap_simd(Some(simd));
@@ -1768,7 +1768,7 @@ fuzz_slices!(
 fn walk_contract() {
     use microsurface::fresnel::One;
     use microsurface::walk::{
-        DielectricFacets, DiffuseFacets, Heights, Microsurface, MirrorFacets, WalkRng,
+        DielectricFacets, DiffuseFacets, Heights, MirrorFacets, RandomWalk, WalkRng,
     };
     let mut r = Rng::new(41);
     let mut fails = Failures::default();
@@ -1777,8 +1777,8 @@ fn walk_contract() {
         let (ax, ay) = (alpha(&mut r), alpha(&mut r));
         let heights = r.pick(&[Heights::Uniform, Heights::Gaussian]);
         let eta = r.pick(&[1.5, 1.0 / 1.33, 1.0, 2.4]);
-        let s = Microsurface::new(Microfacet::<f64, Ggx>::new(ax, ay).unwrap(), heights);
-        let b = Microsurface::new(Microfacet::<f64, Beckmann>::new(ax, ay).unwrap(), heights);
+        let s = RandomWalk::new(Microfacet::<f64, Ggx>::new(ax, ay).unwrap(), heights);
+        let b = RandomWalk::new(Microfacet::<f64, Beckmann>::new(ax, ay).unwrap(), heights);
         for _ in 0..50 {
             let w = direction(&mut r, false).to_unit();
             let wo: [f64; 3] = w.into();
@@ -1789,9 +1789,9 @@ fn walk_contract() {
                         .map(|x| (x.w, x.weight[0], x.order, true)),
                     b.walk(&MirrorFacets(One::<1>), wo, &mut rng)
                         .map(|x| (x.w, x.weight[0], x.order, true)),
-                    s.walk(&DiffuseFacets(0.8), wo, &mut rng)
+                    s.walk::<1>(&DiffuseFacets(0.8), wo, &mut rng)
                         .map(|x| (x.w, x.weight[0], x.order, true)),
-                    b.walk(&DielectricFacets(eta), wo, &mut rng)
+                    b.walk::<1>(&DielectricFacets(eta), wo, &mut rng)
                         .map(|x| (x.w, x.weight[0], x.order, false)),
                 ]
             });
@@ -1851,8 +1851,8 @@ fn multiple_scattering_contract() {
         let e = Microfacet::<f64, Exponential>::new(ax, ay).unwrap();
         let conductor = MultipleScattering::new(g.clone(), MirrorFacets(One::<1>));
         let dielectric =
-            MultipleScattering::new(e, DielectricFacets(eta)).with_transport(transport);
-        let diffuse = MultipleScattering::new(g, DiffuseFacets(0.9));
+            MultipleScattering::<_, _, 1>::new(e, DielectricFacets(eta)).with_transport(transport);
+        let diffuse = MultipleScattering::<_, _, 1>::new(g, DiffuseFacets(0.9));
         for _ in 0..50 {
             let wo: [f64; 3] = unit_direction::<f64>(&mut r);
             let wi: [f64; 3] = unit_direction::<f64>(&mut r);
@@ -1916,7 +1916,7 @@ fn multiple_scattering_contract() {
     fails.finish("multiple_scattering_contract");
 }
 
-/// The compensated conductors (`compensate::Compensated`, both schemes, every NDF type that
+/// The compensated conductors (`compensate::CompensatedConductor`, both schemes, every NDF type that
 /// anisotropy allows): hostile directions (on and below the horizon, subnormal z), edge
 /// uniforms: no panic; eval and pdf finite and ≥ 0 for unit directions; a sample has a
 /// positive finite pdf, a finite f ≥ 0 and a unit wi on wo's side. (A table costs 30–300 ms,
@@ -1924,7 +1924,7 @@ fn multiple_scattering_contract() {
 #[test]
 fn compensated_contract() {
     use microsurface::bsdf::Bsdf;
-    use microsurface::compensate::{AlbedoTable, Compensated, Scheme};
+    use microsurface::compensate::{AlbedoTable, CompensatedConductor, Scheme};
     let mut r = Rng::new(43);
     let mut fails = Failures::default();
     let gold = microsurface::fresnel::Conductor {
@@ -1938,13 +1938,13 @@ fn compensated_contract() {
         let d = Microfacet::<f64, Ggx>::new(a, 0.7 * a).unwrap();
         let table = AlbedoTable::new(&d);
         for scheme in [Scheme::KullaConty, Scheme::Turquin] {
-            let b = Compensated::from_table(d.clone(), gold, scheme, table.clone());
+            let b = CompensatedConductor::from_table(d.clone(), gold, scheme, table.clone());
             for _ in 0..400 {
                 let wo: [f64; 3] = unit_direction::<f64>(&mut r);
                 let wi: [f64; 3] = unit_direction::<f64>(&mut r);
                 let (uc, u) = (uniform(&mut r), [uniform(&mut r), uniform(&mut r)]);
                 let ctx = || format!("α={a} {scheme:?} wo={wo:?} wi={wi:?} u=({uc}, {u:?})");
-                let (f, p, s) = no_panic("Compensated", ctx(), || {
+                let (f, p, s) = no_panic("CompensatedConductor", ctx(), || {
                     (b.eval(wo, wi), b.pdf(wo, wi), b.sample(wo, uc, u))
                 });
                 fails.check(
@@ -2227,7 +2227,7 @@ fn compensated_dielectric_contract() {
                 let (uc, u) = (uniform(&mut r), [uniform(&mut r), uniform(&mut r)]);
                 let ctx = || format!("α=({a},{ay}) η={eta} wo={wo:?} wi={wi:?} u=({uc}, {u:?})");
                 let (f, p, s) = no_panic("CompensatedDielectric", ctx(), || {
-                    (b.eval(wo, wi), b.pdf(wo, wi), b.sample(wo, uc, u))
+                    (b.eval(wo, wi)[0], b.pdf(wo, wi), b.sample(wo, uc, u))
                 });
                 fails.check(
                     f.is_finite() && f >= 0.0 && p.is_finite() && p >= 0.0,
@@ -2238,8 +2238,7 @@ fn compensated_dielectric_contract() {
                     fails.check(
                         s.pdf > 0.0
                             && s.pdf.is_finite()
-                            && s.f.is_finite()
-                            && s.f >= 0.0
+                            && s.f.iter().all(|&f| f.is_finite() && f >= 0.0 && f == s.f[0])
                             && (len - 1.0).abs() < 1e-9,
                         || format!("sample {s:?} at {}", ctx()),
                     );

@@ -3,11 +3,11 @@
 //! of the height distribution, the paper's GGX figures, and the quadrature itself against an
 //! independent rule.
 
-use microsurface::bsdf::{Bsdf, Conductor, Dielectric, Transport};
+use microsurface::bsdf::{Bsdf, RoughConductor, RoughDielectric, Transport};
 use microsurface::fresnel::One;
 use microsurface::walk::{
-    albedo, single_scattering_albedo, DielectricFacets, Facets, Heights, Microsurface,
-    MirrorFacets, MultipleScattering, WalkRng,
+    albedo, single_scattering_albedo, DielectricFacets, Facets, Heights, MirrorFacets,
+    MultipleScattering, RandomWalk, WalkRng,
 };
 use microsurface::{Beckmann, Distribution, DoubleGgx, Exponential, Ggx, Gtr, Microfacet};
 
@@ -64,7 +64,7 @@ fn furnace_and_order_one() {
         for mu in [0.2, 0.5, 0.9] {
             each_ndf!(ax, ay, |name, d| {
                 let e1 = single_scattering_albedo(&d, wo(mu));
-                let s = Microsurface::new(d, Heights::Uniform);
+                let s = RandomWalk::new(d, Heights::Uniform);
                 let a = albedo(&s, &MirrorFacets(One::<1>), wo(mu), 200_000, 7);
                 let (a, total) = (a.reflect, a.total.mean);
                 println!(
@@ -100,7 +100,7 @@ fn dielectric_order_one() {
                     let w = [w[0], w[1], z * w[2]];
                     let (r, t) =
                         single_scattering_albedo_dielectric_level(&d, w, 1.5, G2Form::Exact, 4);
-                    let s = Microsurface::new(d, Heights::Uniform);
+                    let s = RandomWalk::new(d, Heights::Uniform);
                     let a = albedo(&s, &DielectricFacets(1.5), w, 100_000, 3);
                     for (lobe, q, est) in [
                         ("reflection", r, a.reflect),
@@ -127,7 +127,7 @@ fn heights_do_not_matter() {
         each_ndf!(ax, ay, |name, d| {
             let mu = 0.4;
             let u = albedo(
-                &Microsurface::new(d.clone(), Heights::Uniform),
+                &RandomWalk::new(d.clone(), Heights::Uniform),
                 &MirrorFacets(One::<1>),
                 wo(mu),
                 200_000,
@@ -135,7 +135,7 @@ fn heights_do_not_matter() {
             )
             .reflect;
             let g = albedo(
-                &Microsurface::new(d, Heights::Gaussian),
+                &RandomWalk::new(d, Heights::Gaussian),
                 &MirrorFacets(One::<1>),
                 wo(mu),
                 200_000,
@@ -163,7 +163,7 @@ fn heights_do_not_matter() {
 fn paper_ggx_figures() {
     let d = Microfacet::<f64, Ggx>::new(1.0, 1.0).unwrap();
     let a = albedo(
-        &Microsurface::new(d, Heights::Uniform),
+        &RandomWalk::new(d, Heights::Uniform),
         &MirrorFacets(One::<1>),
         wo(0.5),
         400_000,
@@ -281,7 +281,7 @@ fn eval_white_furnace() {
         for mu in [0.3, 0.8] {
             each_iso!(a, |name, d| {
                 let c = MultipleScattering::new(d.clone(), MirrorFacets(One::<1>));
-                let single = Conductor::new(d.clone(), One::<1>);
+                let single = RoughConductor::new(d.clone(), One::<1>);
                 let (m, e) = eval_integral(&c, &single, wo(mu), 20_000, 11);
                 println!("{name:12} α={a} μ={mu}: conductor ∫f cos = {m:.4} ± {e:.4}");
                 assert!(
@@ -290,10 +290,10 @@ fn eval_white_furnace() {
                 );
                 for (eta, side) in [(1.5, 1.0), (1.5, -1.0)] {
                     let w = [wo(mu)[0], 0.0, side * mu];
-                    let t = MultipleScattering::new(d.clone(), DielectricFacets(eta))
+                    let t = MultipleScattering::<_, _, 1>::new(d.clone(), DielectricFacets(eta))
                         .with_transport(Transport::Importance);
                     let single =
-                        Dielectric::new(d.clone(), eta).with_transport(Transport::Importance);
+                        RoughDielectric::new(d.clone(), eta).with_transport(Transport::Importance);
                     let (m, e) = eval_integral(&t, &single, w, 20_000, 12);
                     println!(
                         "{name:12} α={a} μ={}: dielectric R + T = {m:.4} ± {e:.4}",
@@ -312,7 +312,7 @@ fn eval_white_furnace() {
 
 /// Order 1 of the stochastic evaluation is the single-scattering BSDF with the
 /// height-correlated G2: the F = 1 conductor's and the dielectric's reflection exactly
-/// `bsdf::Conductor`'s and `bsdf::Dielectric`'s (1/(1 + Λo + Λi)), the dielectric's
+/// `bsdf::RoughConductor`'s and `bsdf::RoughDielectric`'s (1/(1 + Λo + Λi)), the dielectric's
 /// transmission `Dielectric`'s with its G2 replaced by the exact height-correlated
 /// B(1 + Λo, 1 + Λi) (Heitz 2014, section 6). Within 4 standard errors at pairs of
 /// directions over the lobes, every NDF, from both sides of the dielectric.
@@ -322,7 +322,7 @@ fn eval_order_one_is_single_scattering() {
     for a in [0.3, 1.0] {
         each_iso!(a, |name, d| {
             let c = MultipleScattering::new(d.clone(), MirrorFacets(One::<1>));
-            let single = Conductor::new(d.clone(), One::<1>);
+            let single = RoughConductor::new(d.clone(), One::<1>);
             for (wo, wi) in [
                 (dir(0.7, 0.0), dir(0.6, 3.0)),
                 (dir(0.3, 0.0), dir(0.9, 0.5)),
@@ -339,9 +339,9 @@ fn eval_order_one_is_single_scattering() {
                 );
             }
             for eta in [1.5, 1.0 / 1.5] {
-                let t = MultipleScattering::new(d.clone(), DielectricFacets(eta))
+                let t = MultipleScattering::<_, _, 1>::new(d.clone(), DielectricFacets(eta))
                     .with_transport(Transport::Importance);
-                let single = Dielectric::new(d.clone(), eta).with_transport(Transport::Importance);
+                let single = RoughDielectric::new(d.clone(), eta).with_transport(Transport::Importance);
                 for (wo, wi) in [
                     (dir(0.7, 0.0), dir(0.6, 3.0)),
                     (dir(0.6, 0.0), dir(-0.8, 3.1)),
@@ -349,7 +349,7 @@ fn eval_order_one_is_single_scattering() {
                     (dir(-0.7, 0.0), dir(0.9, 3.0)),
                 ] {
                     let got = t.eval_orders(wo, wi, 40_000, 6)[0];
-                    let mut want = single.eval(wo, wi);
+                    let mut want = single.eval(wo, wi)[0];
                     if wo[2] * wi[2] < 0.0 {
                         let (lo, li) = (d.lambda(wo), d.lambda(wi));
                         want *= beta(1.0 + lo, 1.0 + li) * (1.0 + lo + li);
@@ -380,7 +380,7 @@ fn eval_reciprocity() {
     for a in [0.5, 1.5] {
         each_iso!(a, |name, d| {
             let c = MultipleScattering::new(d.clone(), MirrorFacets(One::<1>));
-            let t = MultipleScattering::new(d.clone(), DielectricFacets(1.5));
+            let t = MultipleScattering::<_, _, 1>::new(d.clone(), DielectricFacets(1.5));
             for (wo, wi) in [
                 (dir(0.8, 0.0), dir(0.3, 2.0)),
                 (dir(0.4, 0.0), dir(0.5, 1.0)),
@@ -484,7 +484,7 @@ fn sampling_matches_evaluation() {
                     &MultipleScattering::new(d.clone(), MirrorFacets(One::<1>)),
                     dir(0.5, 0.3),
                 );
-                let t = MultipleScattering::new(d, DielectricFacets(1.5));
+                let t = MultipleScattering::<_, _, 1>::new(d, DielectricFacets(1.5));
                 check($name, &t, dir(0.6, 0.0));
                 check($name, &t, dir(-0.8, 1.0));
             }};
@@ -684,7 +684,7 @@ fn family_furnace_and_order_one() {
         let d = Exact::new(kind, 0.6, 0.3, shape).unwrap();
         let w = wo(0.4);
         let e1 = single_scattering_albedo(&d, w);
-        let s = Microsurface::new(d, Heights::Uniform);
+        let s = RandomWalk::new(d, Heights::Uniform);
         let walks = 20_000;
         let a = albedo(&s, &MirrorFacets(One::<1>), w, walks, 11);
         println!(

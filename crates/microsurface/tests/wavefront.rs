@@ -4,7 +4,7 @@
 //! (grazing, below the horizon and non-unit ones for the samplers), anisotropic roughness, and
 //! a smooth material.
 
-use microsurface::bsdf::{Bsdf, Conductor};
+use microsurface::bsdf::{Bsdf, RoughConductor};
 use microsurface::fast::batch::{self, GgxConductor, Simd, Vectors, VectorsMut};
 use microsurface::fresnel;
 use microsurface::{Beckmann, Distribution, Ggx, Microfacet, Real};
@@ -184,7 +184,7 @@ macro_rules! conductor_test {
                     [(0.3, 0.3, false), (0.5, 0.05, true), (1.0, 2.0, false), (1e-4, 1e-4, false)]
                 {
                     let mut b: GgxConductor<$F> =
-                        Conductor::new(Microfacet::<$F, Ggx>::new(ax, ay).unwrap(), gold);
+                        RoughConductor::new(Microfacet::<$F, Ggx>::new(ax, ay).unwrap(), gold);
                     if separable {
                         b = b.with_masking(microsurface::bsdf::Masking::Separable);
                     }

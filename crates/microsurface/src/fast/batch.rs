@@ -417,8 +417,12 @@ pub struct VectorsMut<'a, F> {
 
 /// The GGX conductor the BSDF slices take: an f32 or f64 [`crate::Microfacet`] GGX with the
 /// exact complex-IOR Fresnel term, RGB.
-pub type GgxConductor<F> =
-    crate::bsdf::Conductor<F, crate::Microfacet<F, crate::Ggx>, crate::fresnel::Conductor<F, 3>, 3>;
+pub type GgxConductor<F> = crate::bsdf::RoughConductor<
+    F,
+    crate::Microfacet<F, crate::Ggx>,
+    crate::fresnel::Conductor<F, 3>,
+    3,
+>;
 
 use super::Real;
 use crate::bsdf::{Bsdf, Masking};
