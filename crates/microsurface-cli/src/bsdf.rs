@@ -1,9 +1,11 @@
-//! `microsurface bsdf`: the single-scattering rough conductor and dielectric BSDFs, JSON lines
-//! in, one line out per line, in order (errors as in `eval`). Local frame, z = normal;
-//! radiance transport; f64.
+//! `microsurface bsdf`: the rough conductor and dielectric BSDFs, single scattering or with
+//! multiple scattering ("scattering": single, kulla_conty, turquin, walk), JSON lines in, one
+//! line out per line, in order (errors as in `eval`). Local frame, z = normal; radiance
+//! transport; f64. Every combination is the library's `Box<dyn Bsdf<f64, Value = [f64; 3]>>`.
 
 use crate::eval::field;
-use microsurface::bsdf::{Bsdf, BsdfSample, RoughConductor, RoughDielectric, Lobe, Masking};
+use microsurface::bsdf::{Bsdf, BsdfSample, Lobe, Masking, RoughConductor, RoughDielectric};
+use microsurface::compensate::{CompensatedConductor, CompensatedDielectric, Scheme};
 use microsurface::fresnel::{self, One};
 use microsurface::walk::{ByOrder, DielectricFacets, MirrorFacets, MultipleScattering};
 use microsurface::{AnyMicrofacet, Distribution, NdfKind};
@@ -14,10 +16,32 @@ pub fn run(args: &[String]) -> Result<ExitCode, String> {
     crate::eval::json_lines("bsdf", args, bsdf_line)
 }
 
-const FIELDS: [&str; 14] = [
-    "bsdf", "ndf", "alpha", "gamma", "a", "eta", "k", "g2", "op", "wo", "wi", "u", "samples",
+const FIELDS: [&str; 15] = [
+    "bsdf",
+    "ndf",
+    "alpha",
+    "gamma",
+    "a",
+    "eta",
+    "k",
+    "g2",
+    "op",
+    "wo",
+    "wi",
+    "u",
+    "samples",
     "seed",
+    "scattering",
 ];
+
+/// Which BSDF of the material: single scattering, or multiple scattering by one of the
+/// library's models.
+#[derive(Clone, Copy, PartialEq)]
+enum Scattering {
+    Single,
+    Compensated(Scheme),
+    Walk,
+}
 
 /// Samples per eval_ms line at most (10⁹: minutes; a typo's 10²⁰ is an error, not a hang).
 const MAX_SAMPLES: f64 = 1e9;
@@ -115,6 +139,7 @@ pub(crate) fn spectrum(obj: &Map<String, Value>, name: &str) -> Result<[f64; 3],
     }
 }
 
+#[derive(Clone, Copy)]
 enum Material {
     /// F = 1 (no eta, no k).
     Mirror,
@@ -148,6 +173,7 @@ enum Op {
 struct Request {
     material: Material,
     masking: Masking,
+    scattering: Scattering,
     op: Op,
 }
 
@@ -197,7 +223,31 @@ impl Request {
                 _ => return Err("field 'g2' must be \"correlated\" or \"separable\"".into()),
             },
         };
+        let scattering = match obj.get("scattering") {
+            None => Scattering::Single,
+            Some(v) => match v.as_str() {
+                Some("single") => Scattering::Single,
+                Some("kulla_conty") => Scattering::Compensated(Scheme::KullaConty),
+                Some("turquin") => Scattering::Compensated(Scheme::Turquin),
+                Some("walk") => Scattering::Walk,
+                _ => {
+                    return Err(
+                        "field 'scattering' must be \"single\", \"kulla_conty\", \"turquin\" or \"walk\""
+                            .into(),
+                    )
+                }
+            },
+        };
+        if scattering != Scattering::Single && masking != Masking::Correlated {
+            return Err(
+                "multiple scattering (the compensations and the walk) is height-correlated: no 'g2'"
+                    .into(),
+            );
+        }
         let op_name = string(obj, "op")?;
+        if op_name == "eval_ms" && obj.contains_key("scattering") {
+            return Err("op eval_ms is the random walk by order: no 'scattering'".into());
+        }
         if op_name != "eval_ms" && (obj.contains_key("samples") || obj.contains_key("seed")) {
             return Err("fields 'samples' and 'seed' are for op eval_ms".into());
         }
@@ -268,11 +318,12 @@ impl Request {
         Ok(Request {
             material,
             masking,
+            scattering,
             op,
         })
     }
 
-    fn answer<D: Distribution<f64> + Clone>(&self, d: D) -> Result<Value, String> {
+    fn answer<D: Distribution<f64> + Clone + 'static>(&self, d: D) -> Result<Value, String> {
         if let Op::EvalMs {
             wo,
             wi,
@@ -303,27 +354,50 @@ impl Request {
                 "total_stderr": per(&|b| b.total_stderr),
             }));
         }
-        match self.material {
-            Material::Mirror => self.run(
-                &RoughConductor::new(d, One::<3>).with_masking(self.masking),
-                |f| f,
+        self.run(self.bsdf(d).as_ref())
+    }
+
+    /// The material's BSDF for the request's scattering model.
+    fn bsdf<D: Distribution<f64> + Clone + 'static>(
+        &self,
+        d: D,
+    ) -> Box<dyn Bsdf<f64, Value = [f64; 3]>> {
+        let m = self.masking;
+        match (self.material, self.scattering) {
+            (Material::Mirror, Scattering::Single) => {
+                Box::new(RoughConductor::new(d, One::<3>).with_masking(m))
+            }
+            (Material::Metal { eta, k }, Scattering::Single) => {
+                Box::new(RoughConductor::new(d, fresnel::Conductor { eta, k }).with_masking(m))
+            }
+            (Material::Glass { eta }, Scattering::Single) => {
+                Box::new(RoughDielectric::new(d, eta).with_masking(m))
+            }
+            (Material::Mirror, Scattering::Compensated(s)) => {
+                Box::new(CompensatedConductor::new(d, One::<3>, s))
+            }
+            (Material::Metal { eta, k }, Scattering::Compensated(s)) => Box::new(
+                CompensatedConductor::new(d, fresnel::Conductor { eta, k }, s),
             ),
-            Material::Metal { eta, k } => self.run(
-                &RoughConductor::new(d, fresnel::Conductor { eta, k }).with_masking(self.masking),
-                |f| f,
-            ),
-            Material::Glass { eta } => self
-                .run(&RoughDielectric::new(d, eta).with_masking(self.masking), |f| f),
+            (Material::Glass { eta }, Scattering::Compensated(s)) => {
+                Box::new(CompensatedDielectric::new(d, eta, s))
+            }
+            (Material::Mirror, Scattering::Walk) => {
+                Box::new(MultipleScattering::new(d, MirrorFacets(One::<3>)))
+            }
+            (Material::Metal { eta, k }, Scattering::Walk) => Box::new(MultipleScattering::new(
+                d,
+                MirrorFacets(fresnel::Conductor { eta, k }),
+            )),
+            (Material::Glass { eta }, Scattering::Walk) => {
+                Box::new(MultipleScattering::new(d, DielectricFacets(eta)))
+            }
         }
     }
 
-    fn run<B: Bsdf<f64>>(
-        &self,
-        b: &B,
-        rgb: impl Fn(B::Value) -> [f64; 3],
-    ) -> Result<Value, String> {
+    fn run(&self, b: &dyn Bsdf<f64, Value = [f64; 3]>) -> Result<Value, String> {
         match self.op {
-            Op::Eval { wo, wi } => Ok(json!({ "f": rgb(b.eval(wo, wi)), "pdf": b.pdf(wo, wi) })),
+            Op::Eval { wo, wi } => Ok(json!({ "f": b.eval(wo, wi), "pdf": b.pdf(wo, wi) })),
             Op::EvalMs { .. } => unreachable!("answered in `answer`"),
             Op::Sample { wo, u } => Ok(match b.sample(wo, u[0], [u[1], u[2]]) {
                 Some(BsdfSample {
@@ -335,7 +409,7 @@ impl Request {
                     ..
                 }) => json!({
                     "wi": wi,
-                    "f": rgb(f),
+                    "f": f,
                     "pdf": pdf,
                     "kind": match lobe { Lobe::Reflection => "reflection", Lobe::Transmission => "transmission" },
                     "specular": specular,

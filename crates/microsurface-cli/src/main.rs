@@ -46,7 +46,7 @@ const SAMPLE_USAGE: &str = "\
 
 const BSDF_USAGE: &str = "\
   microsurface bsdf
-      rough conductor and dielectric BSDFs (single scattering, pbrt-v4's conventions:
+      rough conductor and dielectric BSDFs (pbrt-v4's conventions:
       f without the cosine, pdf per solid angle, local frame z = normal, radiance
       transport), JSON lines in, one line out per line, e.g.
       {\"bsdf\":\"conductor\",\"ndf\":\"ggx\",\"alpha\":[0.3,0.1],\"eta\":[0.2,0.9,1.1],
@@ -57,7 +57,13 @@ const BSDF_USAGE: &str = "\
       alpha: a or [ax, ay]; gamma for gtr (anisotropic only at gamma 2), student_t and
       gen_exponential, a for bessel_k; conductor:
       eta and k (number or [r,g,b]; neither: F = 1); dielectric: eta (one number);
-      g2: correlated (default) or separable. Directions are normalised. Errors as in eval.
+      g2: correlated (default) or separable (single scattering only). Directions are
+      normalised. Errors as in eval.
+      scattering: single (default), kulla_conty or turquin (energy compensation: the lost
+        energy put back from albedo tables, shipped or computed once per material),
+        walk (the random walk of Heitz et al. 2016: sample is the walk, eval one
+        stochastic estimate seeded by the directions, pdf the MIS proxy); ndf names are
+        case-insensitive and take aliases (trowbridge_reitz, student-t, ...).
       op eval_ms: the multiple-scattering BSDF (the random walk of Heitz et al. 2016)
         by order, the mean of \"samples\" stochastic evaluations from \"seed\" (default 0)
         -> {\"orders\":[f1,f2,f3,f4plus],\"stderr\":[...],\"total\":f,\"total_stderr\":e},

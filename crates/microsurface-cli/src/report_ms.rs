@@ -153,7 +153,12 @@ fn furnace_plot() -> Plot {
         let (before, kc, tq) = {
             let d = material(kind, 1.0, GAMMA);
             let table = AlbedoTable::new(&d);
-            let c = CompensatedConductor::from_table(d.clone(), One::<1>, Scheme::KullaConty, table.clone());
+            let c = CompensatedConductor::from_table(
+                d.clone(),
+                One::<1>,
+                Scheme::KullaConty,
+                table.clone(),
+            );
             let t = CompensatedConductor::from_table(d.clone(), One::<1>, Scheme::Turquin, table);
             let b: Vec<(f64, f64)> = mu
                 .iter()
@@ -191,7 +196,8 @@ fn added_energy<D: microsurface::Distribution<f64> + Clone>(
                 let s = (k as f64 + x) / 128.0;
                 let mu = s * s;
                 let wi = [0.0, ((1.0 - mu) * (1.0 + mu)).sqrt(), side * mu];
-                sum += w / 128.0 * 2.0 * s * mu * 2.0 * PI * (b.eval(wo, wi)[0] - ss.eval(wo, wi)[0]);
+                sum +=
+                    w / 128.0 * 2.0 * s * mu * 2.0 * PI * (b.eval(wo, wi)[0] - ss.eval(wo, wi)[0]);
             }
         }
     }

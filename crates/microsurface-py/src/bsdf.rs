@@ -4,23 +4,18 @@
 use crate::material::Material;
 use crate::{apply_vec, map_vec, named, v3, wo_of, NDF};
 use microsurface::bsdf::{self, Bsdf, Lobe, Masking, Transport};
-use microsurface::compensate::{AlbedoTable as Table, Compensated, CompensatedDielectric, Scheme};
+use microsurface::compensate::{
+    AlbedoTable as Table, CompensatedConductor, CompensatedDielectric, Scheme,
+};
 use microsurface::fresnel::{self, Fresnel};
 use microsurface::walk::{DielectricFacets, MirrorFacets, MultipleScattering};
 use pyo3::exceptions::PyValueError;
 use pyo3::prelude::*;
 
-/// f's channels: a dielectric's one number, a conductor's N.
+/// f's channels: a dielectric's one, a conductor's N.
 trait Channels: Copy {
     const N: usize;
     fn write(&self, out: &mut [f64]);
-}
-
-impl Channels for f64 {
-    const N: usize = 1;
-    fn write(&self, out: &mut [f64]) {
-        out[0] = *self;
-    }
 }
 
 impl<const M: usize> Channels for [f64; M] {
@@ -143,8 +138,8 @@ where
     MirrorFacets<Fr>: microsurface::walk::Facets<N>,
 {
     match model {
-        Model::Single => Box::new(bsdf::Conductor::new(d, fr).with_masking(m)),
-        Model::Compensated(s) => Box::new(Compensated::new(d, fr, s)),
+        Model::Single => Box::new(bsdf::RoughConductor::new(d, fr).with_masking(m)),
+        Model::Compensated(s) => Box::new(CompensatedConductor::new(d, fr, s)),
         Model::Walk => Box::new(MultipleScattering::new(d, MirrorFacets(fr))),
     }
 }
@@ -262,7 +257,7 @@ impl Conductor {
         masking: &str,
         scattering: &str,
     ) -> PyResult<(Self, PyBsdf)> {
-        let d = ndf.material()?;
+        let d = ndf.material()?.clone();
         let (eta, k) = (channels(eta)?, channels(k)?);
         let m = self::masking(masking)?;
         let model = self::model(scattering, m)?;
@@ -331,7 +326,7 @@ impl Dielectric {
         transport: &str,
         scattering: &str,
     ) -> PyResult<(Self, PyBsdf)> {
-        let d = ndf.material()?;
+        let d = ndf.material()?.clone();
         if !(eta > 0.0 && eta.is_finite() && eta != 1.0) {
             return Err(PyValueError::new_err(format!(
                 "eta must be a positive finite number other than 1 (got {eta})"
@@ -340,17 +335,21 @@ impl Dielectric {
         let m = self::masking(masking)?;
         let t = self::transport(transport)?;
         let inner: Box<dyn AnyBsdf> = match self::model(scattering, m)? {
+            // (One channel: a dielectric's f is grey.)
             Model::Single => Box::new(
-                bsdf::Dielectric::new(d, eta)
+                bsdf::RoughDielectric::new(d, eta)
+                    .with_channels::<1>()
                     .with_masking(m)
                     .with_transport(t),
             ),
-            Model::Compensated(s) => {
-                Box::new(CompensatedDielectric::new(d, eta, s).with_transport(t))
-            }
-            Model::Walk => {
-                Box::new(MultipleScattering::new(d, DielectricFacets(eta)).with_transport(t))
-            }
+            Model::Compensated(s) => Box::new(
+                CompensatedDielectric::new(d, eta, s)
+                    .with_channels::<1>()
+                    .with_transport(t),
+            ),
+            Model::Walk => Box::new(
+                MultipleScattering::<_, _, 1>::new(d, DielectricFacets(eta)).with_transport(t),
+            ),
         };
         Ok((Dielectric, PyBsdf { inner }))
     }
@@ -364,14 +363,14 @@ impl Dielectric {
 /// interrupts the wait).
 #[pyclass(frozen, module = "microsurface")]
 pub struct AlbedoTable {
-    table: Table,
+    table: std::sync::Arc<Table>,
 }
 
 #[pymethods]
 impl AlbedoTable {
     #[new]
     fn new(py: Python<'_>, ndf: PyRef<'_, NDF>) -> PyResult<Self> {
-        let d = ndf.material()?;
+        let d = ndf.material()?.clone();
         let table = crate::engine::interruptible(py, move || Table::new(&d))?;
         Ok(AlbedoTable { table })
     }
@@ -413,7 +412,7 @@ fn single_scattering_albedo(
         ndf.material()?;
     }
     // (A copy: the loop runs without the GIL.)
-    let ndf: NDF = *ndf;
+    let ndf: NDF = (*ndf).clone();
     let zero = pyo3::types::PyFloat::new(py, 0.0).into_any();
     let nan = pyo3::types::PyFloat::new(py, f64::NAN).into_any();
     let phi = phi.unwrap_or(&zero);

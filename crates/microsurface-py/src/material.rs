@@ -90,9 +90,13 @@ impl Material {
     }
 
     /// The projected area σ(w) = |w.z|(1 + Λ(w)), w mirrored to the upper hemisphere; on the
-    /// horizon (where Λ = ∞) and on the exact path, the exact path's σ.
+    /// horizon (where Λ = ∞), on the exact path and for the generalised exponential (no fast
+    /// path), the exact path's σ.
     pub fn sigma(&self, w: [f64; 3]) -> f64 {
         if let Material::Fast(m) = self {
+            if !m.is_fast() {
+                return m.exact().sigma(w);
+            }
             let v = if w[2] < 0.0 { w.map(|x| -x) } else { w };
             let lambda = m.lambda(v);
             if v[2] > 0.0 && lambda.is_finite() {

@@ -73,12 +73,21 @@ def test_cosine_functions_equal_the_command_line():
 
 
 def test_bsdfs_equal_the_command_line():
-    # The family's BSDFs run on the exact path in both (the CLI's GGX etc. use the fast path).
+    # Both run the library's run-time door (AnyMicrofacet: the fast kernels; the generalised
+    # exponential's exact path inside it): the same bits.
     wo, wi, wt = [0.0, 0.6, 0.8], [0.6, 0.0, 0.8], [0.0, -0.6, -0.8]
+    gold = dict(eta=[0.2, 0.9, 1.1], k=[3.9, 2.4, 2.2])
     cases = [
-        ("conductor", dict(ndf="student_t", gamma=2.5, alpha=[0.3, 0.2], eta=[0.2, 0.9, 1.1], k=[3.9, 2.4, 2.2]),
-         mf.Conductor(mf.StudentT(0.3, 2.5, alpha_y=0.2, sampler="warp"), eta=[0.2, 0.9, 1.1], k=[3.9, 2.4, 2.2])),
-        ("dielectric", dict(ndf="ei", alpha=0.3, eta=1.5), mf.Dielectric(mf.Ei(0.3, sampler="warp"), 1.5)),
+        ("conductor", dict(ndf="student_t", gamma=2.5, alpha=[0.3, 0.2], **gold),
+         mf.Conductor(mf.StudentT(0.3, 2.5, alpha_y=0.2), **gold)),
+        ("dielectric", dict(ndf="ei", alpha=0.3, eta=1.5), mf.Dielectric(mf.Ei(0.3), 1.5)),
+        ("conductor", dict(ndf="gtr", gamma=1.5, alpha=0.3, **gold), mf.Conductor(mf.GTR(0.3, 1.5), **gold)),
+        ("conductor", dict(ndf="exponential", alpha=[0.3, 0.5], **gold),
+         mf.Conductor(mf.Exponential(0.3, alpha_y=0.5), **gold)),
+        ("dielectric", dict(ndf="bessel_k", a=0.7, alpha=0.4, eta=1.5), mf.Dielectric(mf.BesselK(0.4, 0.7), 1.5)),
+        ("dielectric", dict(ndf="double_ggx", alpha=0.4, eta=1.33), mf.Dielectric(mf.DoubleGGX(0.4), 1.33)),
+        ("conductor", dict(ndf="gen_exponential", gamma=1.5, alpha=0.3, **gold),
+         mf.Conductor(mf.GenExponential(0.3, 1.5), **gold)),
     ]
     for kind, spec, b in cases:
         for w in (wi, wt):
@@ -114,19 +123,29 @@ def test_alpha_as_an_array_broadcasts_and_equals_one_material_per_element():
         mf.GGX(0.3, 0.1).d(0.5)
 
 
-def test_direction_forms_agree_with_the_cosine_forms():
+@pytest.mark.parametrize("exact", [True, False])
+def test_direction_forms_agree_with_the_cosine_forms(exact):
+    # The exact path to its own accuracy; the fast kernels (the default) to theirs: closed
+    # forms for GGX and Beckmann, fitted tables of Λ (≤ 1e-7 relative) for the others.
     u = np.linspace(0.02, 0.999, 50)
     phi = np.linspace(0, 6, 50)
     s = np.sqrt(1 - u * u)
     w = np.stack([s * np.cos(phi), s * np.sin(phi), u], axis=-1)
-    for n in [mf.GGX(0.3), mf.Beckmann(0.5), mf.GTR(0.2, 1.2), mf.StudentT(0.3, 4.0), mf.K0(0.4), mf.DoubleGGX(0.3)]:
-        np.testing.assert_allclose(n.d_wm(w), n.d(u), rtol=1e-12)
-        np.testing.assert_allclose(n.lambda_w(w), n.lambda_(u), rtol=1e-10)
-        np.testing.assert_allclose(n.g1_w(w), n.g1(u), rtol=1e-12)
-        np.testing.assert_allclose(n.sigma_w(w), n.sigma(u), rtol=1e-10)
-        np.testing.assert_allclose(n.g2_w(w, w[::-1]), n.g2(u, u[::-1]), rtol=1e-12)
-        np.testing.assert_allclose(n.g2_w(w, w[::-1], separable=True), n.g2_separable(u, u[::-1]), rtol=1e-12)
-        np.testing.assert_allclose(n.pdf_dcos(w), n.d(u) * u, rtol=1e-12)
+    for cls, args in [(mf.GGX, (0.3,)), (mf.Beckmann, (0.5,)), (mf.GTR, (0.2, 1.2)), (mf.StudentT, (0.3, 4.0)),
+                      (mf.K0, (0.4,)), (mf.DoubleGGX, (0.3,))]:
+        n = cls(*args, exact=exact)
+        if exact:
+            d, lam = 1e-12, 1e-10
+        else:
+            d, lam = {mf.GGX: (1e-14, 1e-14), mf.Beckmann: (1e-12, 1e-12)}.get(cls, (1e-11, 1e-7))
+        np.testing.assert_allclose(n.d_wm(w), n.d(u), rtol=d)
+        np.testing.assert_allclose(n.lambda_w(w), n.lambda_(u), rtol=lam)
+        np.testing.assert_allclose(n.g1_w(w), n.g1(u), rtol=max(lam, 1e-12))
+        np.testing.assert_allclose(n.sigma_w(w), n.sigma(u), rtol=max(lam, 1e-10))
+        np.testing.assert_allclose(n.g2_w(w, w[::-1]), n.g2(u, u[::-1]), rtol=max(lam, 1e-12))
+        np.testing.assert_allclose(n.g2_w(w, w[::-1], separable=True), n.g2_separable(u, u[::-1]),
+                                   rtol=max(lam, 1e-12))
+        np.testing.assert_allclose(n.pdf_dcos(w), n.d(u) * u, rtol=max(d, 1e-12))
 
 
 def test_direction_shapes_and_dtypes():
@@ -272,7 +291,11 @@ def chi2_pvalue(counts, expected):
         (mf.GGX(0.4, 0.15), [0.5, 0.3, 0.81]),
         (mf.Beckmann(0.5), [0.8, 0.0, 0.6]),
         (mf.StudentT(0.35, 3.0, alpha_y=0.6), [-0.3, 0.5, 0.81]),
-        (mf.StudentT(0.35, 3.0, alpha_y=0.6, sampler="warp"), [-0.3, 0.5, 0.81]),
+        (mf.StudentT(0.35, 3.0, alpha_y=0.6, exact=True), [-0.3, 0.5, 0.81]),
+        (mf.StudentT(0.35, 3.0, alpha_y=0.6, exact=True, sampler="warp"), [-0.3, 0.5, 0.81]),
+        (mf.GTR(0.3, 1.5), [0.6, 0.0, 0.8]),
+        (mf.Exponential(0.3, 0.5), [0.2, 0.5, 0.84]),
+        (mf.Ei(0.4, exact=True, sampler="warp"), [0.8, 0.0, 0.6]),
         (mf.BesselK(0.3, 0.7, alpha_y=0.5), [0.7, 0.1, 0.2]),
         (mf.Erfc(0.6), [0.0, 0.9, 0.1]),
         (mf.GenExponential(0.4, 1.3), [0.0, 0.6, 0.8]),
@@ -407,8 +430,14 @@ def test_bsdf_errors():
         mf.StudentT(0.3, 1.2).sample_visible([0, 0, 1.0], [0.5, 0.5])
     with pytest.raises(ValueError, match="sampler"):
         mf.Ei(0.3, sampler="fast")
-    assert mf.Ei(0.3).sampler == "posterior" and mf.Ei(0.3, sampler="warp").sampler == "warp"
-    assert mf.GGX(0.3).sampler == "warp"  # (a warp either way)
+    with pytest.raises(ValueError, match="exact=True"):
+        mf.Ei(0.3, sampler="warp")
+    assert mf.Ei(0.3).sampler == "posterior" and mf.Ei(0.3, exact=True).sampler == "posterior"
+    assert mf.Ei(0.3, exact=True, sampler="warp").sampler == "warp"
+    assert mf.GGX(0.3).sampler == "warp" and mf.GGX(0.3, exact=True, sampler="warp").sampler == "warp"
+    assert mf.GTR(0.3, 1.5).sampler == "rejection" and mf.GTR(0.3, 2.0).sampler == "warp"
+    assert mf.GTR(0.3, 1.5, exact=True).sampler == "warp"
+    assert mf.StudentT(0.3, 1.2).sampler == "posterior"
 
 
 # ---- Ctrl-C.

@@ -138,7 +138,7 @@ impl fmt::Display for UnknownNdf {
     fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
         write!(
             f,
-            "unknown ndf '{}' (expected one of {}; case-insensitive, with aliases such as trowbridge_reitz)",
+            "unknown ndf '{}' (expected one of {}; case-insensitive)",
             clipped(&self.0),
             valid_names()
         )

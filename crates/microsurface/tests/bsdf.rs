@@ -13,7 +13,7 @@
     clippy::type_complexity
 )]
 
-use microsurface::bsdf::{Bsdf, RoughConductor, RoughDielectric, Lobe, Masking, Transport};
+use microsurface::bsdf::{Bsdf, Lobe, Masking, RoughConductor, RoughDielectric, Transport};
 use microsurface::chi2::{
     cell_of, chi2_test, chi2_test_region, chi2_test_region_expected, sidak, AxisCoordinates,
     Coordinates, DcosCoordinates, SplitMix64,

@@ -66,7 +66,8 @@ fn white_furnace_is_one() {
         each_ndf!(a, |name, d| {
             let table = AlbedoTable::new(&d);
             for scheme in [Scheme::KullaConty, Scheme::Turquin] {
-                let b = CompensatedConductor::from_table(d.clone(), One::<1>, scheme, table.clone());
+                let b =
+                    CompensatedConductor::from_table(d.clone(), One::<1>, scheme, table.clone());
                 let mut worst = 0.0f64;
                 for mu in [0.02, 0.1, 0.3, 0.55, 0.8, 1.0] {
                     let e = furnace(&b, mu);
@@ -121,11 +122,13 @@ fn fresnel_weighted_compensation_is_bounded() {
     for a in [0.3, 1.0] {
         let d = Microfacet::<f64, Ggx>::new(a, a).unwrap();
         let table = AlbedoTable::new(&d);
-        let ss = CompensatedConductor::from_table(d.clone(), gold, Scheme::KullaConty, table.clone());
+        let ss =
+            CompensatedConductor::from_table(d.clone(), gold, Scheme::KullaConty, table.clone());
         for mu in [0.2, 0.7] {
             let e_ss = furnace(ss.single_scattering(), mu);
             let e_kc = furnace(&ss, mu);
-            let tq = CompensatedConductor::from_table(d.clone(), gold, Scheme::Turquin, table.clone());
+            let tq =
+                CompensatedConductor::from_table(d.clone(), gold, Scheme::Turquin, table.clone());
             let e_tq = furnace(&tq, mu);
             println!("α={a} μ={mu}: single {e_ss:.5} Kulla–Conty {e_kc:.5} Turquin {e_tq:.5}");
             for e in [e_kc, e_tq] {

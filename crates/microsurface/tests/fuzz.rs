@@ -1265,7 +1265,7 @@ fn finite<F: fast::Real>(x: F) -> bool {
 /// f and a positive finite pdf. Directions out of contract (non-unit lengths) only must not
 /// panic.
 fn microfacet_api<F: fast::Real + std::fmt::Debug>(test: u64, draw: fn(&mut Rng) -> F) {
-    use microsurface::bsdf::{Bsdf, RoughConductor, RoughDielectric, Masking};
+    use microsurface::bsdf::{Bsdf, Masking, RoughConductor, RoughDielectric};
     use microsurface::{fresnel, Distribution, Microfacet};
     let mut r = Rng::new(test);
     let mut fails = Failures::default();
@@ -2238,7 +2238,9 @@ fn compensated_dielectric_contract() {
                     fails.check(
                         s.pdf > 0.0
                             && s.pdf.is_finite()
-                            && s.f.iter().all(|&f| f.is_finite() && f >= 0.0 && f == s.f[0])
+                            && s.f
+                                .iter()
+                                .all(|&f| f.is_finite() && f >= 0.0 && f == s.f[0])
                             && (len - 1.0).abs() < 1e-9,
                         || format!("sample {s:?} at {}", ctx()),
                     );

@@ -341,7 +341,8 @@ fn eval_order_one_is_single_scattering() {
             for eta in [1.5, 1.0 / 1.5] {
                 let t = MultipleScattering::<_, _, 1>::new(d.clone(), DielectricFacets(eta))
                     .with_transport(Transport::Importance);
-                let single = RoughDielectric::new(d.clone(), eta).with_transport(Transport::Importance);
+                let single =
+                    RoughDielectric::new(d.clone(), eta).with_transport(Transport::Importance);
                 for (wo, wi) in [
                     (dir(0.7, 0.0), dir(0.6, 3.0)),
                     (dir(0.6, 0.0), dir(-0.8, 3.1)),
