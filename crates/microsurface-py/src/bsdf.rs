@@ -3,12 +3,12 @@
 
 use crate::material::Material;
 use crate::{apply_vec, map_vec, named, v3, wo_of, NDF};
+use microsurface::bsdf::fresnel::{self, Fresnel};
 use microsurface::bsdf::{self, Bsdf, Lobe, Masking, Transport};
-use microsurface::compensate::{
-    AlbedoTable as Table, CompensatedConductor, CompensatedDielectric, Scheme,
+use microsurface::scattering::{
+    AlbedoTable as Table, CompensatedConductor, CompensatedDielectric, DielectricFacets, Facets,
+    MirrorFacets, MultipleScattering, Scheme,
 };
-use microsurface::fresnel::{self, Fresnel};
-use microsurface::walk::{DielectricFacets, MirrorFacets, MultipleScattering};
 use pyo3::exceptions::PyValueError;
 use pyo3::prelude::*;
 
@@ -135,7 +135,7 @@ fn conductor_of<const N: usize, Fr>(
 ) -> Box<dyn AnyBsdf>
 where
     Fr: Fresnel<f64, N> + Send + Sync + 'static,
-    MirrorFacets<Fr>: microsurface::walk::Facets<N>,
+    MirrorFacets<Fr>: Facets<N>,
 {
     match model {
         Model::Single => Box::new(bsdf::RoughConductor::new(d, fr).with_masking(m)),
@@ -423,7 +423,7 @@ fn single_scattering_albedo(
     ];
     let mut o = apply_vec(py, &items, &[0], 2, |_, a, o| {
         let d = ndf.material_at(a[2][0])?;
-        o[0] = microsurface::walk::single_scattering_albedo(&d, wo_of(a[0][0], a[1][0]));
+        o[0] = microsurface::scattering::single_scattering_albedo(&d, wo_of(a[0][0], a[1][0]));
         Ok(())
     })?;
     Ok(o.remove(0))

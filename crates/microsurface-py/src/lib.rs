@@ -16,8 +16,8 @@ mod material;
 
 use engine::{float64, is_number, uniforms, value_error, Args};
 use material::{Material, Sampler};
-use microsurface::walk::{self, DielectricFacets, Heights, RandomWalk, MirrorFacets};
-use microsurface::{AnyNdf, Distribution, Exact, Ndf, NdfKind, ParamError};
+use microsurface::scattering::{self, DielectricFacets, Heights, MirrorFacets, RandomWalk};
+use microsurface::{AnyNdf, Exact, MicrofacetDistribution, Ndf, NdfKind, ParamError};
 use numpy::{PyArray1, PyArrayMethods};
 use pyo3::exceptions::PyValueError;
 use pyo3::prelude::*;
@@ -344,9 +344,7 @@ impl NDF {
         match Exact::new(kind, alpha, alpha_y, shape) {
             // (Student-T below γ = 3/2 keeps its isotropic functions: D, P22, P2 are
             // finite there; only Λ and what needs it are not.)
-            Err(e @ ParamError::Shape { .. })
-                if kind == NdfKind::StudentT && alpha_y == alpha =>
-            {
+            Err(e @ ParamError::Shape { .. }) if kind == NdfKind::StudentT && alpha_y == alpha => {
                 let _ = material.set(Err(e));
             }
             Err(e) => return Err(value_error(e)),
@@ -782,14 +780,16 @@ impl NDF {
                 // (One stream per element, whatever thread runs it.)
                 let seed = seed.wrapping_add((i as u64).wrapping_mul(0x9E37_79B9_7F4A_7C15));
                 let r = match eta {
-                    None => walk::albedo(
+                    None => scattering::albedo(
                         &surface,
-                        &MirrorFacets(microsurface::fresnel::One::<1>),
+                        &MirrorFacets(microsurface::bsdf::fresnel::One::<1>),
                         wo,
                         walks,
                         seed,
                     ),
-                    Some(eta) => walk::albedo(&surface, &DielectricFacets(eta), wo, walks, seed),
+                    Some(eta) => {
+                        scattering::albedo(&surface, &DielectricFacets(eta), wo, walks, seed)
+                    }
                 };
                 o[0..4].copy_from_slice(&r.reflect.orders);
                 o[4..8].copy_from_slice(&r.reflect.stderr);
@@ -954,8 +954,27 @@ fn _rust_slice_ns(
     }))
 }
 
+/// A Cargo (SemVer) version in PEP 440's spelling: `1.0.0-rc.1` → `1.0.0rc1`, `1.2.3-alpha.2`
+/// → `1.2.3a2`, `1.2.3-beta.1` → `1.2.3b1`; anything else (a release) as it is.
+fn pep440(v: &str) -> String {
+    let Some((release, pre)) = v.split_once('-') else {
+        return v.to_string();
+    };
+    let (tag, n) = pre.split_once('.').unwrap_or((pre, "0"));
+    let tag = match tag {
+        "alpha" | "a" => "a",
+        "beta" | "b" => "b",
+        "rc" => "rc",
+        _ => return v.to_string(),
+    };
+    format!("{release}{tag}{n}")
+}
+
 #[pymodule]
 fn _microsurface(m: &Bound<'_, PyModule>) -> PyResult<()> {
+    // (Cargo's version in PEP 440's spelling, as maturin writes the wheel's: 1.0.0-rc.1 is
+    // 1.0.0rc1.)
+    m.add("__version__", pep440(env!("CARGO_PKG_VERSION")))?;
     m.add_class::<NDF>()?;
     m.add_class::<Beckmann>()?;
     m.add_class::<GGX>()?;

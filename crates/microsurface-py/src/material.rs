@@ -3,7 +3,7 @@
 //! exact path ([`Exact`], `exact=True`) with one choice of visible-normal sampler.
 
 use microsurface::distribution::UniformStream;
-use microsurface::{AnyMicrofacet, Distribution, Exact, NdfKind, ParamError, Sample};
+use microsurface::{AnyMicrofacet, Exact, MicrofacetDistribution, NdfKind, ParamError, Sample};
 
 /// How the exact path draws visible normals.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
@@ -110,7 +110,7 @@ impl Material {
     }
 }
 
-/// `$body` with `$d` bound to the material's [`Distribution`].
+/// `$body` with `$d` bound to the material's [`MicrofacetDistribution`].
 macro_rules! both {
     ($self:expr, |$d:ident| $body:expr) => {
         match $self {
@@ -120,7 +120,7 @@ macro_rules! both {
     };
 }
 
-impl Distribution<f64> for Material {
+impl MicrofacetDistribution<f64> for Material {
     #[inline]
     fn alpha(&self) -> (f64, f64) {
         both!(self, |d| d.alpha())
@@ -166,8 +166,7 @@ impl Distribution<f64> for Material {
                     // above the horizon, else None: then the warp.)
                     let v = if w[2] < 0.0 { [-w[0], -w[1], -w[2]] } else { w };
                     let mut stream = UniformStream::new(u);
-                    if let Some(m) =
-                        exact.sample_wm_stream(v, &mut || stream.next_uniform::<f64>())
+                    if let Some(m) = exact.sample_wm_stream(v, &mut || stream.next_uniform::<f64>())
                     {
                         return m;
                     }

@@ -137,7 +137,7 @@ def test_direction_forms_agree_with_the_cosine_forms(exact):
         if exact:
             d, lam = 1e-12, 1e-10
         else:
-            d, lam = {mf.GGX: (1e-14, 1e-14), mf.Beckmann: (1e-12, 1e-12)}.get(cls, (1e-11, 1e-7))
+            d, lam = {mf.GGX: (1e-13, 1e-13), mf.Beckmann: (1e-12, 1e-12)}.get(cls, (1e-11, 1e-7))
         np.testing.assert_allclose(n.d_wm(w), n.d(u), rtol=d)
         np.testing.assert_allclose(n.lambda_w(w), n.lambda_(u), rtol=lam)
         np.testing.assert_allclose(n.g1_w(w), n.g1(u), rtol=max(lam, 1e-12))

@@ -13,6 +13,9 @@ Result = Union[np.float64, np.float32, npt.NDArray[np.float64], npt.NDArray[np.f
 Uniforms = Union[npt.ArrayLike, np.random.Generator]
 Channels = Union[float, Sequence[float]]
 
+# The package's version (Cargo's, in PEP 440's spelling: 1.0.0rc1).
+__version__: str
+
 class NDF:
     @property
     def alpha(self) -> float: ...
@@ -22,6 +25,12 @@ class NDF:
     def shape(self) -> Optional[float]: ...
     @property
     def name(self) -> str: ...
+    # The path of the directions, samplers, BSDFs and albedos: the fast kernels (the default)
+    # or, constructed with exact=True, the exact path. The functions of a cosine are exact.
+    @property
+    def exact(self) -> bool: ...
+    # 'warp', 'posterior' (the Beckmann mixtures) or 'rejection' (the fast samplers of Double
+    # GGX, the Exponential NDF and GTR at γ != 2); sampler='warp' needs exact=True.
     @property
     def sampler(self) -> str: ...
     # Functions of a cosine (isotropic; alpha broadcasts with the arguments).
@@ -55,44 +64,78 @@ class NDF:
     ) -> Albedo: ...
 
 class Beckmann(NDF):
-    def __init__(self, alpha: float, alpha_y: Optional[float] = None, sampler: str = "posterior") -> None: ...
+    def __init__(
+        self, alpha: float, alpha_y: Optional[float] = None, exact: bool = False, sampler: str = "posterior"
+    ) -> None: ...
 
 class GGX(NDF):
-    def __init__(self, alpha: float, alpha_y: Optional[float] = None, sampler: str = "posterior") -> None: ...
+    def __init__(
+        self, alpha: float, alpha_y: Optional[float] = None, exact: bool = False, sampler: str = "posterior"
+    ) -> None: ...
 
 class DoubleGGX(NDF):
-    def __init__(self, alpha: float, alpha_y: Optional[float] = None, sampler: str = "posterior") -> None: ...
+    def __init__(
+        self, alpha: float, alpha_y: Optional[float] = None, exact: bool = False, sampler: str = "posterior"
+    ) -> None: ...
 
 class Exponential(NDF):
-    def __init__(self, alpha: float, alpha_y: Optional[float] = None, sampler: str = "posterior") -> None: ...
+    def __init__(
+        self, alpha: float, alpha_y: Optional[float] = None, exact: bool = False, sampler: str = "posterior"
+    ) -> None: ...
 
 class Ei(NDF):
-    def __init__(self, alpha: float, alpha_y: Optional[float] = None, sampler: str = "posterior") -> None: ...
+    def __init__(
+        self, alpha: float, alpha_y: Optional[float] = None, exact: bool = False, sampler: str = "posterior"
+    ) -> None: ...
 
 class Erfc(NDF):
-    def __init__(self, alpha: float, alpha_y: Optional[float] = None, sampler: str = "posterior") -> None: ...
+    def __init__(
+        self, alpha: float, alpha_y: Optional[float] = None, exact: bool = False, sampler: str = "posterior"
+    ) -> None: ...
 
 class K0(NDF):
-    def __init__(self, alpha: float, alpha_y: Optional[float] = None, sampler: str = "posterior") -> None: ...
+    def __init__(
+        self, alpha: float, alpha_y: Optional[float] = None, exact: bool = False, sampler: str = "posterior"
+    ) -> None: ...
 
 class GTR(NDF):
     def __init__(
-        self, alpha: float, gamma: float, alpha_y: Optional[float] = None, sampler: str = "posterior"
+        self,
+        alpha: float,
+        gamma: float,
+        alpha_y: Optional[float] = None,
+        exact: bool = False,
+        sampler: str = "posterior",
     ) -> None: ...
 
 class StudentT(NDF):
     def __init__(
-        self, alpha: float, gamma: float, alpha_y: Optional[float] = None, sampler: str = "posterior"
+        self,
+        alpha: float,
+        gamma: float,
+        alpha_y: Optional[float] = None,
+        exact: bool = False,
+        sampler: str = "posterior",
     ) -> None: ...
 
 class BesselK(NDF):
     def __init__(
-        self, alpha: float, a: float, alpha_y: Optional[float] = None, sampler: str = "posterior"
+        self,
+        alpha: float,
+        a: float,
+        alpha_y: Optional[float] = None,
+        exact: bool = False,
+        sampler: str = "posterior",
     ) -> None: ...
 
 class GenExponential(NDF):
     def __init__(
-        self, alpha: float, gamma: float, alpha_y: Optional[float] = None, sampler: str = "posterior"
+        self,
+        alpha: float,
+        gamma: float,
+        alpha_y: Optional[float] = None,
+        exact: bool = False,
+        sampler: str = "posterior",
     ) -> None: ...
 
 class BSDF:
