@@ -5,10 +5,10 @@
 
 use microsurface::distribution::Shape;
 use microsurface::fast::Real;
-use microsurface::sample::sample_dcos;
+use microsurface::sampling::sample_dcos;
 use microsurface::{
-    AnyNdf, Beckmann, Distribution, DoubleGgx, Exact, Exponential, Ggx, Gtr, Microfacet, Ndf,
-    NdfKind, Vec3,
+    AnyNdf, Beckmann, DoubleGgx, Exact, Exponential, Ggx, Gtr, Microfacet, MicrofacetDistribution,
+    Ndf, NdfKind, Vec3,
 };
 use microsurface_bench as c;
 use std::hint::black_box;
@@ -1196,9 +1196,9 @@ fn in_turn<const K: usize>(elements: usize, mut passes: [&mut dyn FnMut(); K]) -
 /// the BSDF's NDF parts (D, G2, the RGB conductor Fresnel, and for sampling the visible
 /// normal) timed as loops of their own.
 fn wavefront(i: &Inputs) {
+    use microsurface::bsdf::fresnel::{self, Fresnel};
     use microsurface::bsdf::{Bsdf, RoughConductor};
     use microsurface::fast::batch::{self, GgxConductor, Vectors, VectorsMut};
-    use microsurface::fresnel::{self, Fresnel};
     const LEN: usize = 1 << 14;
     println!();
     println!(
@@ -1390,8 +1390,8 @@ fn wavefront(i: &Inputs) {
 /// α = 0.5, μ = 0.5, every NDF, one core and both cores (rayon::join of two halves with
 /// their own seeds), in the same run as the fast GGX VNDF sampler (the walk's inner step).
 fn walks(i: &Inputs) {
-    use microsurface::fresnel::One;
-    use microsurface::walk::{albedo, Heights, MirrorFacets, RandomWalk};
+    use microsurface::bsdf::fresnel::One;
+    use microsurface::scattering::{albedo, Heights, MirrorFacets, RandomWalk};
     println!();
     let vndf = time(400_000, |k| {
         let w = i.w[k];

@@ -1,15 +1,15 @@
 //! `microsurface albedo`: the albedo of a rough microsurface by scattering order, from the
-//! random walk of Heitz et al. 2016 (`microsurface::walk`), or single scattering by quadrature.
+//! random walk of Heitz et al. 2016 (`microsurface::scattering`), or single scattering by quadrature.
 //! JSON lines in, one line out per line, in order (errors as in `eval`).
 
 use crate::bsdf::{ndf_alpha, spectrum};
 use crate::eval::field;
-use microsurface::fresnel::{self, One};
-use microsurface::walk::{
+use microsurface::bsdf::fresnel::{self, One};
+use microsurface::scattering::{
     albedo, single_scattering_albedo, single_scattering_albedo_dielectric_level, Albedo, ByOrder,
     DielectricFacets, DiffuseFacets, G2Form, Heights, MirrorFacets, RandomWalk,
 };
-use microsurface::{AnyMicrofacet, Distribution};
+use microsurface::{AnyMicrofacet, MicrofacetDistribution};
 use serde_json::{json, Value};
 use std::process::ExitCode;
 
@@ -147,7 +147,7 @@ fn albedo_line(text: &str) -> Result<Value, String> {
     })
 }
 
-fn run_walks<D: Distribution<f64>>(
+fn run_walks<D: MicrofacetDistribution<f64>>(
     d: D,
     heights: Heights,
     facets: &Facets,

@@ -4,11 +4,11 @@
 //! transport; f64. Every combination is the library's `Box<dyn Bsdf<f64, Value = [f64; 3]>>`.
 
 use crate::eval::field;
+use microsurface::bsdf::fresnel::{self, One};
 use microsurface::bsdf::{Bsdf, BsdfSample, Lobe, Masking, RoughConductor, RoughDielectric};
-use microsurface::compensate::{CompensatedConductor, CompensatedDielectric, Scheme};
-use microsurface::fresnel::{self, One};
-use microsurface::walk::{ByOrder, DielectricFacets, MirrorFacets, MultipleScattering};
-use microsurface::{AnyMicrofacet, Distribution, NdfKind};
+use microsurface::scattering::{ByOrder, DielectricFacets, MirrorFacets, MultipleScattering};
+use microsurface::scattering::{CompensatedConductor, CompensatedDielectric, Scheme};
+use microsurface::{AnyMicrofacet, MicrofacetDistribution, NdfKind};
 use serde_json::{json, Map, Value};
 use std::process::ExitCode;
 
@@ -64,7 +64,7 @@ pub(crate) fn ndf_alpha(
 ) -> Result<(NdfKind, f64, f64, Option<f64>), String> {
     let kind: NdfKind = string(obj, "ndf")?
         .parse()
-        .map_err(|e: microsurface::family::UnknownNdf| e.to_string())?;
+        .map_err(|e: microsurface::ndf::UnknownNdf| e.to_string())?;
     let shape = crate::eval::shape(obj, kind)?;
     let (ax, ay) = alpha(obj)?;
     Ok((kind, ax, ay, shape))
@@ -115,7 +115,7 @@ fn array(obj: &Map<String, Value>, name: &str, n: usize) -> Result<Vec<f64>, Str
 /// A direction: any finite nonzero 3-vector, normalised.
 fn direction(obj: &Map<String, Value>, name: &str) -> Result<[f64; 3], String> {
     let v = array(obj, name, 3)?;
-    let w = microsurface::frame::normalize([v[0], v[1], v[2]]);
+    let w = microsurface::bsdf::frame::normalize([v[0], v[1], v[2]]);
     if !w[0].is_finite() {
         return Err(format!("field '{name}' must be a nonzero vector"));
     }
@@ -323,7 +323,10 @@ impl Request {
         })
     }
 
-    fn answer<D: Distribution<f64> + Clone + 'static>(&self, d: D) -> Result<Value, String> {
+    fn answer<D: MicrofacetDistribution<f64> + Clone + 'static>(
+        &self,
+        d: D,
+    ) -> Result<Value, String> {
         if let Op::EvalMs {
             wo,
             wi,
@@ -358,7 +361,7 @@ impl Request {
     }
 
     /// The material's BSDF for the request's scattering model.
-    fn bsdf<D: Distribution<f64> + Clone + 'static>(
+    fn bsdf<D: MicrofacetDistribution<f64> + Clone + 'static>(
         &self,
         d: D,
     ) -> Box<dyn Bsdf<f64, Value = [f64; 3]>> {

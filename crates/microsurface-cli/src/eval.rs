@@ -172,7 +172,7 @@ pub fn eval_line(line: &str) -> Result<f64, String> {
         .ok_or("field 'ndf' must be a string")?;
     let kind: NdfKind = name
         .parse()
-        .map_err(|e: microsurface::family::UnknownNdf| e.to_string())?;
+        .map_err(|e: microsurface::ndf::UnknownNdf| e.to_string())?;
     let alpha = field(obj, "alpha")?;
     let gamma = shape(obj, kind)?;
     let ndf = AnyNdf::new(kind, alpha, gamma).map_err(|e| e.to_string())?;

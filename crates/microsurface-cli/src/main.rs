@@ -97,7 +97,7 @@ const TABLE_USAGE: &str = "\
       material: furnace (F = 1, default), conductor (--eta, --k), dielectric (--eta;
       mu < 0 from inside), diffuse (--rho, default 1). Every core; deterministic for
       a given --seed (default 0) whatever the thread count. FILE.mfa: the binary form
-      documented in microsurface::table.
+      documented in microsurface::scattering::table.
 ";
 
 const REPORT_USAGE: &str = "\

@@ -6,11 +6,11 @@
 //! at matched roughness.
 
 use crate::svg::{esc, Plot, Series, Style};
-use microsurface::chi2::SplitMix64;
-use microsurface::exponential::approx::{ei_g1, g1_rational};
-use microsurface::mixture::{superpose_beckmann, superpose_ggx, Mixing};
-use microsurface::verify::{run as run_checks, sigma_by_delta_integral, Sweep};
-use microsurface::{AnyNdf, Distribution, Exact, Ndf, NdfKind, Vec3};
+use microsurface::check::chi2::SplitMix64;
+use microsurface::check::verify::{run as run_checks, sigma_by_delta_integral, Sweep};
+use microsurface::ndf::exponential::approx::{ei_g1, g1_rational};
+use microsurface::ndf::mixture::{superpose_beckmann, superpose_ggx, Mixing};
+use microsurface::{AnyNdf, Exact, MicrofacetDistribution, Ndf, NdfKind, Vec3};
 use std::fmt::Write as _;
 use std::process::ExitCode;
 use std::time::Instant;
@@ -289,7 +289,7 @@ fn approx_error_plot() -> Plot {
 }
 
 fn ei_sigma_plot() -> Plot {
-    use microsurface::exponential::approx::ei_sigma;
+    use microsurface::ndf::exponential::approx::ei_sigma;
     let mut p = Plot::new(
         "Exponential: σ(u) exact vs the page's Ei σ(u, 1.7α)",
         "u = cos θ",
@@ -321,7 +321,7 @@ fn ei_sigma_plot() -> Plot {
 /// The residuals of the Exponential page's approximations that coincide with what they
 /// approximate at plot scale: Ei σ(u, 1.7α) − σ(u), and G1approx − Ei G1(u, 1.7α).
 fn exponential_residual_plots() -> Vec<Plot> {
-    use microsurface::exponential::approx::ei_sigma;
+    use microsurface::ndf::exponential::approx::ei_sigma;
     let us = grid(-1.0, 1.0, 241);
     let mut sigma = Plot::new(
         "Exponential: Ei σ(u, 1.7α) − σ(u)",
@@ -648,7 +648,7 @@ fn superposition_plots(kind: NdfKind) -> Vec<Plot> {
 /// superposition: `stochastic::ExponentialChi3`) at the page's α = 0.8: a histogram of θm
 /// against the D·cos density.
 fn chi3_histogram_plot() -> Plot {
-    use microsurface::stochastic::ExponentialChi3;
+    use microsurface::sampling::stochastic::ExponentialChi3;
     use rand::distr::Distribution;
     use rand::SeedableRng;
     use std::f64::consts::PI;
@@ -797,7 +797,11 @@ fn utc_date() -> String {
 
 /// The identity checks as a matrix (NDF and parameters × identity: the worst residual and
 /// whether it passed), then every check, folded.
-fn identity_tables(body: &mut String, checks: &[microsurface::verify::Check], failed: usize) {
+fn identity_tables(
+    body: &mut String,
+    checks: &[microsurface::check::verify::Check],
+    failed: usize,
+) {
     let mut subjects: Vec<&str> = Vec::new();
     let mut identities: Vec<&str> = Vec::new();
     for c in checks {

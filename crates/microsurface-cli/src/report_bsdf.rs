@@ -6,9 +6,9 @@
 
 use crate::report::{grid, short};
 use crate::svg::{Plot, Series, Style};
+use microsurface::bsdf::fresnel::{self, One};
 use microsurface::bsdf::{Bsdf, RoughConductor, RoughDielectric};
-use microsurface::chi2::SplitMix64;
-use microsurface::fresnel::{self, One};
+use microsurface::check::chi2::SplitMix64;
 use microsurface::{AnyMicrofacet, NdfKind};
 use std::f64::consts::PI;
 

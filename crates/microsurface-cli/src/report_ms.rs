@@ -6,14 +6,14 @@
 use crate::report::{grid, short};
 use crate::report_bsdf::material;
 use crate::svg::{Plot, Series, Style};
+use microsurface::bsdf::fresnel::One;
 use microsurface::bsdf::{Bsdf, Transport};
-use microsurface::compensate::{
+use microsurface::check::quad::integrate;
+use microsurface::scattering::table::{Grid, Material, Method, Spec};
+use microsurface::scattering::{single_scattering_albedo, single_scattering_albedo_dielectric};
+use microsurface::scattering::{
     AlbedoTable, CompensatedConductor, CompensatedDielectric, DielectricTables, Scheme,
 };
-use microsurface::fresnel::One;
-use microsurface::quad::integrate;
-use microsurface::table::{Grid, Material, Method, Spec};
-use microsurface::walk::{single_scattering_albedo, single_scattering_albedo_dielectric};
 use microsurface::NdfKind;
 use std::f64::consts::PI;
 
@@ -178,7 +178,7 @@ fn furnace_plot() -> Plot {
 
 /// ∫ (f − f_ss)|cos θi| dωi over both hemispheres of a compensated dielectric: the added
 /// lobes depend on μi alone, so one azimuth and Gauss–Legendre in √μi (64 × 8 nodes a side).
-fn added_energy<D: microsurface::Distribution<f64> + Clone>(
+fn added_energy<D: microsurface::MicrofacetDistribution<f64> + Clone>(
     b: &CompensatedDielectric<f64, D>,
     wo: [f64; 3],
 ) -> f64 {

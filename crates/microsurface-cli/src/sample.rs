@@ -1,7 +1,7 @@
 //! `microsurface sample`: writes sampled microfacet normals, one `x y z` per line.
 
-use microsurface::chi2::SplitMix64;
-use microsurface::{Distribution, Exact, NdfKind, Vec3};
+use microsurface::check::chi2::SplitMix64;
+use microsurface::{Exact, MicrofacetDistribution, NdfKind, Vec3};
 use std::io::{BufWriter, Write};
 use std::process::ExitCode;
 

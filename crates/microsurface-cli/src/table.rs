@@ -1,8 +1,8 @@
 //! `microsurface table`: albedo tables over (α, μ) by scattering order
-//! (`microsurface::table`), written as JSON or the library's binary form by the output's
+//! (`microsurface::scattering::table`), written as JSON or the library's binary form by the output's
 //! extension, with a progress bar on stderr and every core.
 
-use microsurface::table::{Grid, Material, Method, Spec};
+use microsurface::scattering::table::{Grid, Material, Method, Spec};
 use microsurface::NdfKind;
 use serde_json::json;
 use std::process::ExitCode;

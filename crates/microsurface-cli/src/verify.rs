@@ -1,6 +1,6 @@
-//! `microsurface verify`: runs the identity checks of `microsurface::verify` over a sweep.
+//! `microsurface verify`: runs the identity checks of `microsurface::check::verify` over a sweep.
 
-use microsurface::verify::{run as run_checks, Sweep};
+use microsurface::check::verify::{run as run_checks, Sweep};
 use microsurface::NdfKind;
 use std::process::ExitCode;
 use std::time::Instant;

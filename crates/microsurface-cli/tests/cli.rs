@@ -735,7 +735,8 @@ fn table_writes_json_and_binary() {
         );
     }
     let j: serde_json::Value = serde_json::from_slice(&std::fs::read(&json).unwrap()).unwrap();
-    let g = microsurface::table::Grid::from_bytes(&std::fs::read(&bin).unwrap()).unwrap();
+    let g =
+        microsurface::scattering::table::Grid::from_bytes(&std::fs::read(&bin).unwrap()).unwrap();
     assert_eq!(j["alpha"].as_array().unwrap().len(), 2);
     let e = g.quantities.iter().position(|q| q == "e").unwrap();
     for ia in 0..2 {

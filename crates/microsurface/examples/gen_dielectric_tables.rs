@@ -1,12 +1,12 @@
 //! Generates the shipped dielectric compensation tables, `data/compensation/*-dielectric.mfd`
-//! (the format: `microsurface::compensate::dielectric_table_bytes`), for Beckmann, GGX, Double
+//! (the format: `microsurface::scattering::dielectric_table_bytes`), for Beckmann, GGX, Double
 //! GGX, the Exponential NDF and GTR γ = 1:
 //!
 //! ```text
 //! cargo run --release -p microsurface --example gen_dielectric_tables [THREADS [NAME ...]]
 //! ```
 
-use microsurface::compensate::dielectric_table_bytes;
+use microsurface::scattering::dielectric_table_bytes;
 use microsurface::NdfKind;
 
 fn main() {

@@ -1,10 +1,76 @@
 //! # microsurface
 //!
-//! Microfacet normal distribution functions (NDFs) for physically based rendering, with every
-//! quantity of d'Eon's *Hitchhiker's Guide to Multiple Scattering* NDF pages and Burley's GTR
-//! appendix: D, the slope densities P22 and P2, the shape-invariant profile f, the projected
-//! area σ, Smith's Λ, G1 and G2 — exact, and checked against mpmath references and against the
-//! identities that tie them together ([`verify`]).
+//! Microfacet theory for physically based rendering: every NDF of d'Eon's *Hitchhiker's Guide
+//! to Multiple Scattering* (Beckmann, GGX, GTR, Double GGX, the Exponential NDF, Student-T,
+//! Ei, Erfc, K0, Bessel-K, the generalised exponential) with every quantity (D, the slope
+//! densities, σ, Smith's Λ, G1, G2, D·cos and visible-normal sampling), exact and fast, in
+//! f32 and f64; rough conductor and dielectric BSDFs; multiple scattering by the
+//! microsurface random walk and by energy compensation.
+//!
+//! ## For renderers
+//!
+//! Materials chosen by name at run time ([`AnyMicrofacet`], a spec string as a scene file
+//! writes it), every BSDF behind one trait ([`bsdf::Bsdf`], `Value = [F; 3]` for RGB),
+//! evaluated and sampled in the local shading frame (z = the shading normal):
+//!
+//! ```
+//! use microsurface::prelude::*;
+//! let metal = AnyMicrofacet::<f32>::parse("trowbridge_reitz", 0.3, 0.1)?; // anisotropic GGX
+//! let gold = fresnel::Conductor { eta: [0.14, 0.42, 1.37], k: [3.98, 2.38, 1.60] };
+//! let glass = AnyMicrofacet::<f32>::parse("student_t:2.5", 0.2, 0.2)?;
+//! let bsdfs: Vec<Box<dyn Bsdf<f32, Value = [f32; 3]>>> = vec![
+//!     Box::new(RoughConductor::new(metal, gold)),
+//!     Box::new(RoughDielectric::new(glass, 1.5)),
+//! ];
+//! let frame = Frame::from_normal_tangent([0.0, 0.0, 1.0], [1.0, 0.0, 0.0]);
+//! let wo = frame.to_local([0.48, 0.0, 0.8775]); // toward the viewer, world → local
+//! for bsdf in &bsdfs {
+//!     let s = bsdf.sample(wo, 0.5, [0.3, 0.7]).expect("a direction");
+//!     let (f, pdf) = (bsdf.eval(wo, s.wi), bsdf.pdf(wo, s.wi));
+//!     assert!(f[1] > 0.0 && (pdf - s.pdf).abs() <= 1e-3 * pdf);
+//!     let _wi = frame.from_local(s.wi); // local → world
+//! }
+//! # Ok::<(), microsurface::SpecError>(())
+//! ```
+//!
+//! The static [`Microfacet<F, N>`](Microfacet) is the same material with the NDF fixed at
+//! compile time (bit-identical values); [`scattering`] adds multiple scattering
+//! ([`scattering::CompensatedConductor`], [`scattering::CompensatedDielectric`], the random
+//! walk's [`scattering::MultipleScattering`]), all of them `Box<dyn Bsdf<f32, Value =
+//! [f32; 3]>>` too. [`fast::batch`] has slice forms of the hottest paths.
+//!
+//! ## For researchers
+//!
+//! Exact values by cosine ([`Ndf`]: closed forms to 1e-13, quadratures to 1e-10, checked
+//! against mpmath), the identities that tie them together as residuals ([`check::verify`]),
+//! the exact invertible samplers ([`Exact`], one explicit call away:
+//! [`AnyMicrofacet::exact`]) and the random walk's albedos by order:
+//!
+//! ```
+//! use microsurface::scattering::{albedo, MirrorFacets, RandomWalk, Heights};
+//! use microsurface::{bsdf::fresnel::One, Ggx, Ndf, StudentT};
+//! let t = StudentT::new(0.3, 4.0)?; // between GGX (γ = 2) and Beckmann (γ → ∞)
+//! assert!((t.lambda(0.5) / 0.005324521393580268 - 1.0).abs() < 1e-13); // mpmath
+//! let g = Ggx::new(0.3)?;
+//! assert!((g.sigma(0.5) - 0.5 * (1.0 + g.lambda(0.5))).abs() < 1e-15); // σ = u (1 + Λ)
+//! let walk = RandomWalk::new(microsurface::Microfacet::<f64, Ggx>::new(1.0, 1.0)?, Heights::Uniform);
+//! let a = albedo(&walk, &MirrorFacets(One::<1>), [0.6, 0.0, 0.8], 20_000, 1);
+//! assert!((a.reflect.total - 1.0).abs() < 1e-12); // a white furnace keeps all energy
+//! # Ok::<(), microsurface::ParamError>(())
+//! ```
+//!
+//! ## Layout
+//!
+//! | module | what |
+//! |---|---|
+//! | [`ndf`] | the research layer, by cos θ: the [`Ndf`] trait, one module per NDF, [`AnyNdf`], [`NdfKind`] and [`NdfSpec`] (names), the Beckmann superpositions ([`ndf::mixture`]) |
+//! | [`distribution`] | the renderer layer, by direction: [`MicrofacetDistribution`], [`Microfacet<F, N>`](Microfacet), [`AnyMicrofacet`], [`Exact`] |
+//! | [`sampling`] | D·cos and visible-slope sampling of the 1-D NDFs, the pages' stochastic samplers |
+//! | [`bsdf`] | the [`bsdf::Bsdf`] trait, [`bsdf::RoughConductor`], [`bsdf::RoughDielectric`], [`bsdf::fresnel`], [`bsdf::frame`] |
+//! | [`scattering`] | multiple scattering: the random walk, albedos, energy compensation, albedo tables |
+//! | [`check`] | identities ([`check::verify`]), the χ² harness ([`check::chi2`]), quadrature |
+//! | [`fast`] | the fast scalar kernels behind the materials, and their slice forms |
+//! | [`prelude`] | what a renderer imports in one line |
 //!
 //! ## Conventions (stated once)
 //! * Local frame: z is the macro-surface normal. u = cos θ of a microfacet normal (for D) or of
@@ -17,26 +83,8 @@
 //! * Smith Λ(u) = (1/a) ∫_a^∞ (q − a) P2(q) dq with a = cot θ; G1 = 1/(1+Λ);
 //!   height-correlated G2 = 1/(1 + Λo + Λi).
 //! * Shape-invariant NDFs ([`ShapeInvariant`]): P22(p, q) = f(r/α)/α² with r = √(p²+q²).
-//!
-//! ## The family
-//! [`Beckmann`], [`Ggx`], [`Gtr`], [`DoubleGgx`], [`Exponential`]; [`AnyNdf`] holds any of them
-//! (for command lines and sweeps). Constructors return `Result<_, ParamError>`.
-//!
-//! ## Directions, sampling and BSDFs: one door
-//! [`Microfacet`]`<F, N>` is the direction API for renderers, one type for every NDF, f32 or
-//! f64, anisotropic: D, Λ, G1, G2 (height-correlated and separable), the visible-normal
-//! density, and samplers taking explicit uniforms that return each normal with its pdf
-//! ([`Distribution`]). It runs the fast paths; [`Microfacet::exact`] gives the same material's
-//! validated f64 path ([`Exact`], with the samplers' inverses; [`Exact::new`] picks the NDF at
-//! run time). [`frame`], [`fresnel`] and [`bsdf`] build rough conductors and dielectrics on
-//! it. [`sample`] has D·cos sampling of the 1-D NDF types (mixtures included).
-//!
-//! ## Fast paths
-//! [`fast`] has the scalar functions of u behind [`Microfacet`]: GGX and Beckmann D, Λ, G1, G2
-//! in f64 and f32 at the cost of the textbook formulas (benchmarked against C in
-//! `crates/microsurface-bench`), fitted Λ, σ, G1, G2 for Double GGX, the Exponential NDF and GTR
-//! at any γ (relative error ≤ 1e-7), and slice forms (`fast::batch`, parallel with the `rayon`
-//! feature). Their samplers are [`Microfacet`]'s.
+//! * BSDFs: pbrt-v4's conventions (both directions away from the surface, `wo` toward the
+//!   viewer, f without the cosine, pdf per solid angle; [`bsdf`]).
 //!
 //! ## The contract
 //! Every public function and method holds it; `tests/fuzz.rs` (a seeded fuzz suite, about
@@ -83,70 +131,26 @@
 //! computed by quadrature (GTR Λ/σ/P2 for general γ, the Exponential NDF's Λ/σ): ≤ 1e-10
 //! relative documented, ≤ 1e-13 measured. Each module's docs say how.
 //!
-//! ```
-//! use microsurface::{Ggx, Ndf};
-//! let ggx = Ggx::new(0.3).unwrap();
-//! let u = 0.5;
-//! assert!((ggx.sigma(u) - u * (1.0 + ggx.lambda(u))).abs() < 1e-15);
-//! assert!(Ggx::new(-1.0).is_err());
-//! ```
-
-pub mod any_microfacet;
-pub mod beckmann;
-pub mod bessel_k;
 pub mod bsdf;
-pub mod chi2;
-pub mod compensate;
+pub mod check;
 pub mod distribution;
-pub mod double_ggx;
-pub mod ei;
-pub mod erfc;
-pub mod error;
-pub mod exponential;
-pub mod family;
+mod error;
 pub mod fast;
-pub mod frame;
-pub mod fresnel;
-pub mod gen_exponential;
-pub mod ggx;
-pub mod gtr;
-pub mod k0;
-pub(crate) mod microsurface;
-pub mod mixture;
+mod math;
 pub mod ndf;
-pub mod quad;
-pub mod sample;
-pub mod smith;
-pub mod solve;
-pub mod special;
-pub mod stochastic;
-pub mod student_t;
-pub mod table;
-pub mod vec3;
-pub mod verify;
-pub mod visible;
-pub mod walk;
+pub mod prelude;
+pub mod sampling;
+pub mod scattering;
 
-pub use any_microfacet::AnyMicrofacet;
-pub use beckmann::Beckmann;
-pub use bessel_k::BesselK;
-pub use distribution::{Distribution, Exact, Microfacet, Sample};
-pub use double_ggx::DoubleGgx;
-pub use ei::Ei;
-pub use erfc::Erfc;
-pub use error::ParamError;
-pub use exponential::Exponential;
-pub use family::{AnyNdf, NdfKind, NdfSpec, SpecError};
+pub use distribution::{AnyMicrofacet, Exact, Microfacet, MicrofacetDistribution, Sample};
+pub use error::{ParamError, ALPHA_MAX, ALPHA_MIN, GAMMA_MAX};
 pub use fast::Real;
-pub use gen_exponential::GenExponential;
-pub use ggx::Ggx;
-pub use gtr::Gtr;
-pub use k0::K0;
-pub use ndf::{Ndf, ShapeInvariant};
-pub use sample::RadialSlopes;
-pub use student_t::StudentT;
-pub use vec3::Vec3;
-pub use visible::UnitSlopes;
+pub use math::vec3::Vec3;
+pub use ndf::{
+    AnyNdf, Beckmann, BesselK, DoubleGgx, Ei, Erfc, Exponential, GenExponential, Ggx, Gtr, Ndf,
+    NdfKind, NdfSpec, ShapeInvariant, SpecError, StudentT, K0,
+};
+pub use sampling::{RadialSlopes, UnitSlopes};
 
 // Every Rust snippet of the README compiles and runs as a doctest.
 #[doc = include_str!("../../../README.md")]

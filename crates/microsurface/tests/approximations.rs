@@ -1,7 +1,7 @@
 //! The Exponential page's approximations, measured against the exact values. The figures
 //! asserted here are the ones stated in `exponential::approx`'s docs (and derivations.md C).
 
-use microsurface::exponential::approx::{ei_g1, ei_sigma, g1_rational};
+use microsurface::ndf::exponential::approx::{ei_g1, ei_sigma, g1_rational};
 use microsurface::{Exponential, Ndf};
 
 /// ζ = cot θ/α on a log grid over [1e-3, 1e3]; G1 depends on u and α only through ζ.

@@ -13,16 +13,16 @@
     clippy::type_complexity
 )]
 
+use microsurface::bsdf::frame::{dot, normalize, refract};
+use microsurface::bsdf::fresnel::{self, One};
 use microsurface::bsdf::{Bsdf, Lobe, Masking, RoughConductor, RoughDielectric, Transport};
-use microsurface::chi2::{
+use microsurface::check::chi2::{
     cell_of, chi2_test, chi2_test_region, chi2_test_region_expected, sidak, AxisCoordinates,
     Coordinates, DcosCoordinates, SplitMix64,
 };
-use microsurface::frame::{dot, normalize, refract};
-use microsurface::fresnel::{self, One};
 use microsurface::{
-    Beckmann, Distribution, DoubleGgx, Exact, Exponential, Ggx, Gtr, Microfacet, NdfKind, Real,
-    Vec3,
+    Beckmann, DoubleGgx, Exact, Exponential, Ggx, Gtr, Microfacet, MicrofacetDistribution, NdfKind,
+    Real, Vec3,
 };
 
 /// Every NDF as a fast f64 material and its exact path; GTR at γ = 1.5 (isotropic only)
@@ -384,7 +384,7 @@ fn reference_alpha(alpha: f64) -> f64 {
 /// is smooth, the expected counts need no Jacobian (the pdf function's Jacobian is the one
 /// the other configurations and frame.rs's finite differences test); 6·10⁶ nodes leave
 /// thousands per cell, so that their binning is exact to ~1 %, below the counts' noise.
-fn pushforward<D: Distribution<f64>>(
+fn pushforward<D: MicrofacetDistribution<f64>>(
     dist: &D,
     wo: [f64; 3],
     etas: &[Option<f64>],
@@ -407,7 +407,7 @@ fn pushforward<D: Distribution<f64>>(
             if !(weight > 0.0) {
                 continue;
             }
-            let wr = microsurface::frame::reflect(wo, wm);
+            let wr = microsurface::bsdf::frame::reflect(wo, wm);
             let above = wr[2] * wo[2] > 1e-150;
             for (b, &eta) in etas.iter().enumerate() {
                 let r = eta.map_or(1.0, |eta| fresnel::dielectric(dot(wo, wm), eta));
@@ -656,7 +656,7 @@ fn exact_and_fast_bsdfs_agree() {
 /// single-scattering BSDFs above.
 #[test]
 fn compensated_sampling_matches_its_pdf() {
-    use microsurface::compensate::{CompensatedConductor, Scheme};
+    use microsurface::scattering::{CompensatedConductor, Scheme};
     let level = sidak(0.01, 5 * 2 * 2 * 2);
     for k in 0..5 {
         let m = material::<f64>(k, 0.6, 0.6);
@@ -680,7 +680,7 @@ fn compensated_sampling_matches_its_pdf() {
 /// the cells' edge.
 #[test]
 fn compensated_dielectric_sampling_matches_its_pdf() {
-    use microsurface::compensate::{CompensatedDielectric, DielectricTables, Scheme};
+    use microsurface::scattering::{CompensatedDielectric, DielectricTables, Scheme};
     let level = sidak(0.01, 5 * 2 * 2);
     for k in 0..5 {
         let m = material::<f64>(k, 0.6, 0.6);

@@ -7,9 +7,11 @@
 //! `cargo test` runs a fast subset; the full sweep is `#[ignore]`d and run by .ci/run
 //! (`cargo test --release -- --ignored`).
 
-use microsurface::chi2::{chi2_test, sidak, Coordinates, DcosCoordinates, TailCoordinates};
-use microsurface::sample::{pdf_dcos, sample_dcos};
-use microsurface::{AnyNdf, Distribution, Exact, Gtr, Microfacet, Ndf, NdfKind, UnitSlopes, Vec3};
+use microsurface::check::chi2::{chi2_test, sidak, Coordinates, DcosCoordinates, TailCoordinates};
+use microsurface::sampling::{pdf_dcos, sample_dcos};
+use microsurface::{
+    AnyNdf, Exact, Gtr, Microfacet, MicrofacetDistribution, Ndf, NdfKind, UnitSlopes, Vec3,
+};
 
 const KINDS: [NdfKind; 4] = [
     NdfKind::Beckmann,
@@ -48,12 +50,12 @@ fn reference(ax: f64, ay: f64) -> Exact {
     Exact::new(NdfKind::Ggx, 1.5 * ax, 1.5 * ay, None).unwrap()
 }
 
-fn check(label: &str, r: microsurface::chi2::Chi2) {
+fn check(label: &str, r: microsurface::check::chi2::Chi2) {
     check_with(label, r, 1e-4)
 }
 
 /// `pdf_tol`: how well the cell rule integrates the pdf (see `check`).
-fn check_with(label: &str, r: microsurface::chi2::Chi2, pdf_tol: f64) {
+fn check_with(label: &str, r: microsurface::check::chi2::Chi2, pdf_tol: f64) {
     let level = sidak(0.01, TESTS);
     println!(
         "{label:50} χ² = {:9.1} dof = {:4} p = {:.3e}  ∫pdf = {:.6}",
@@ -443,7 +445,9 @@ fn full_sweep() {
 
 #[test]
 fn stochastic_samplers() {
-    use microsurface::stochastic::{DoubleGgxMixture, ExponentialChi3, GgxBeckmannMixture};
+    use microsurface::sampling::stochastic::{
+        DoubleGgxMixture, ExponentialChi3, GgxBeckmannMixture,
+    };
     use microsurface::{DoubleGgx, Exponential, Ggx};
     use rand::distr::Distribution;
     use rand::SeedableRng;
@@ -542,7 +546,7 @@ fn visible_mixture_posterior_sampler_full() {
 /// anisotropy per kind at every incidence (12 tests; CI's share: the method is the same code
 /// at every α, and the production samplers run the whole grid above).
 fn posterior_sampler(full: bool) {
-    use microsurface::stochastic::VisibleMixture;
+    use microsurface::sampling::stochastic::VisibleMixture;
     use rand::distr::Distribution;
     use rand::SeedableRng;
     use rand_xorshift::XorShiftRng;
@@ -638,8 +642,8 @@ fn family_posterior_range_ends() {
 /// and D·cos; f64 and, for Student-T, f32.
 #[test]
 fn family_fast_path() {
-    use microsurface::{BesselK, Distribution, Ei, Erfc, Microfacet, StudentT, K0};
-    fn run<D: Distribution<f64>>(label: &str, m: &D, ex: &Exact, coords: &Exact) {
+    use microsurface::{BesselK, Ei, Erfc, Microfacet, MicrofacetDistribution, StudentT, K0};
+    fn run<D: MicrofacetDistribution<f64>>(label: &str, m: &D, ex: &Exact, coords: &Exact) {
         let wi = direction(60.0);
         check_visible(
             &format!("{label} fast visible θi=60°"),

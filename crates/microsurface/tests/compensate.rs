@@ -4,11 +4,11 @@
 //! average against an independent integral; and Kulla–Conty's Fresnel-weighted term stays
 //! below the furnace.
 
+use microsurface::bsdf::fresnel::{self, One};
 use microsurface::bsdf::Bsdf;
-use microsurface::compensate::{AlbedoTable, CompensatedConductor, Scheme};
-use microsurface::fresnel::{self, One};
-use microsurface::quad::integrate;
-use microsurface::walk::single_scattering_albedo;
+use microsurface::check::quad::integrate;
+use microsurface::scattering::single_scattering_albedo;
+use microsurface::scattering::{AlbedoTable, CompensatedConductor, Scheme};
 use microsurface::{Beckmann, DoubleGgx, Exponential, Ggx, Gtr, Microfacet};
 
 /// ∫ f(wo, wi)[0] cos θi dωi over the upper hemisphere, by nested tanh-sinh split at the
@@ -144,7 +144,7 @@ fn fresnel_weighted_compensation_is_bounded() {
 /// 2.9e-5 at most, Beckmann α = 0.5), for every shipped NDF; GTR at γ = 2 is GGX's; elsewhere `None`.
 #[test]
 fn shipped_tables() {
-    use microsurface::{Distribution, NdfKind};
+    use microsurface::{MicrofacetDistribution, NdfKind};
     let cases: [(NdfKind, Option<f64>); 5] = [
         (NdfKind::Beckmann, None),
         (NdfKind::Ggx, None),
@@ -208,10 +208,10 @@ fn shipped_tables() {
 #[test]
 fn dielectric_albedo_by_quadrature() {
     use microsurface::bsdf::{RoughDielectric, Transport};
-    use microsurface::chi2::SplitMix64;
-    use microsurface::walk::{single_scattering_albedo_dielectric_level as albedo, G2Form};
-    use microsurface::Distribution;
-    fn check<D: Distribution<f64> + Clone>(name: &str, d: D) {
+    use microsurface::check::chi2::SplitMix64;
+    use microsurface::scattering::{single_scattering_albedo_dielectric_level as albedo, G2Form};
+    use microsurface::MicrofacetDistribution;
+    fn check<D: MicrofacetDistribution<f64> + Clone>(name: &str, d: D) {
         let b = RoughDielectric::new(d.clone(), 1.5).with_transport(Transport::Importance);
         let mut rng = SplitMix64(11);
         for mu in [0.05f64, 0.5, 1.0] {
@@ -264,14 +264,14 @@ fn dielectric_albedo_by_quadrature() {
 /// transport): the single-scattering part by the quadrature over the normal, the added
 /// lobes (f minus the single-scattering f, which depend on μi alone) by Gauss–Legendre in
 /// √μi on each side.
-fn dielectric_furnace<D: microsurface::Distribution<f64> + Clone>(
-    b: &microsurface::compensate::CompensatedDielectric<f64, D>,
+fn dielectric_furnace<D: microsurface::MicrofacetDistribution<f64> + Clone>(
+    b: &microsurface::scattering::CompensatedDielectric<f64, D>,
     d: &D,
     eta: f64,
     wo: [f64; 3],
     scheme: Scheme,
 ) -> f64 {
-    use microsurface::walk::single_scattering_albedo_dielectric as albedo;
+    use microsurface::scattering::single_scattering_albedo_dielectric as albedo;
     let (r, t) = albedo(d, wo, eta);
     if scheme == Scheme::Turquin {
         // f = f_ss/E(μo): the furnace is E_ss(μo) times that factor, read off one direction
@@ -325,9 +325,14 @@ const GL8: [(f64, f64); 8] = [
 #[test]
 fn dielectric_white_furnace_is_one() {
     use microsurface::bsdf::Transport;
-    use microsurface::chi2::SplitMix64;
-    use microsurface::compensate::{CompensatedDielectric, DielectricTables};
-    fn check<D: microsurface::Distribution<f64> + Clone>(name: &str, d: D, a: f64, eta: f64) {
+    use microsurface::check::chi2::SplitMix64;
+    use microsurface::scattering::{CompensatedDielectric, DielectricTables};
+    fn check<D: microsurface::MicrofacetDistribution<f64> + Clone>(
+        name: &str,
+        d: D,
+        a: f64,
+        eta: f64,
+    ) {
         let tables = DielectricTables::new(&d, eta);
         for scheme in [Scheme::KullaConty, Scheme::Turquin] {
             let b = CompensatedDielectric::from_tables(d.clone(), eta, scheme, tables.clone())
@@ -384,8 +389,8 @@ fn dielectric_white_furnace_is_one() {
 /// transport), the added lobes included, and is symmetric in reflection.
 #[test]
 fn compensated_dielectric_reciprocity() {
-    use microsurface::chi2::SplitMix64;
-    use microsurface::compensate::CompensatedDielectric;
+    use microsurface::check::chi2::SplitMix64;
+    use microsurface::scattering::CompensatedDielectric;
     let mut rng = SplitMix64(9);
     let mut dir = || {
         let z = 2.0 * rng.next_f64() - 1.0;
@@ -426,9 +431,9 @@ fn compensated_dielectric_reciprocity() {
 #[test]
 fn shipped_dielectric_tables() {
     use microsurface::bsdf::Transport;
-    use microsurface::compensate::{CompensatedDielectric, DielectricTables};
-    use microsurface::{Distribution, NdfKind};
-    fn check<D: Distribution<f64> + Clone>(
+    use microsurface::scattering::{CompensatedDielectric, DielectricTables};
+    use microsurface::{MicrofacetDistribution, NdfKind};
+    fn check<D: MicrofacetDistribution<f64> + Clone>(
         name: &str,
         d: D,
         kind: NdfKind,

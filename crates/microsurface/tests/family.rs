@@ -5,8 +5,8 @@
 //! χ²: tests/chi2.rs.)
 
 use microsurface::{
-    AnyNdf, Beckmann, BesselK, Distribution, Exact, Exponential, GenExponential, Ggx, Ndf, NdfKind,
-    ParamError, RadialSlopes, StudentT, K0,
+    AnyNdf, Beckmann, BesselK, Exact, Exponential, GenExponential, Ggx, MicrofacetDistribution,
+    Ndf, NdfKind, ParamError, RadialSlopes, StudentT, K0,
 };
 
 fn rel(a: f64, b: f64) -> f64 {

@@ -220,7 +220,7 @@ fn double_ggx_fast_lambda_over_the_whole_domain() {
     // Λ(x) for x from 1e-40 (normal incidence) to 1e40 (grazing), against the exact Bessel form.
     let mut ex = 0.0f64;
     for x in logspace(1e-40, 1e40, 200_000) {
-        let want = 0.5 * microsurface::special::bessel_k_sum_m1(x);
+        let want = microsurface::ndf::double_ggx::lambda_x(x);
         ex = ex.max(rel(f::lambda_x(x), want));
     }
     let n = |a: f64| DoubleGgx::new(a).unwrap();
@@ -252,7 +252,7 @@ fn f32_at_random_inputs(
     fast: impl Fn(f32, f32) -> [f32; 4],
     exact_lambda: impl Fn(f64, f64) -> f64,
 ) -> (f64, f64, f64) {
-    let mut rng = microsurface::chi2::SplitMix64(seed);
+    let mut rng = microsurface::check::chi2::SplitMix64(seed);
     let (mut el, mut es, mut eg) = (0.0f64, 0.0f64, 0.0f64);
     for _ in 0..n {
         let u = rng.next_f64() as f32;
@@ -289,7 +289,7 @@ fn double_ggx_fast_f32_at_random_inputs() {
         },
         |u, a| {
             let x = 0.5 * a * a * ((1.0 - u) * (1.0 + u)) / (u * u);
-            0.5 * microsurface::special::bessel_k_sum_m1(x)
+            microsurface::ndf::double_ggx::lambda_x(x)
         },
     );
     println!("Double GGX fast f32 (random inputs): Λ {el:.2e}, σ {es:.2e}, G1 {eg:.2e}");
@@ -432,7 +432,7 @@ fn gtr_fast_lambda_over_the_whole_domain() {
             // f32: the native table (where the material has one) at 20 000 random f32 u,
             // against the f64 fast path at the same u (itself within FIT_TOL_F64 of the exact
             // Λ, above): Λ, σ on both sides, G1.
-            let mut rng = microsurface::chi2::SplitMix64(alpha.to_bits() ^ gamma.to_bits());
+            let mut rng = microsurface::check::chi2::SplitMix64(alpha.to_bits() ^ gamma.to_bits());
             let mut e32 = 0.0f64;
             for k in 0..20_000 {
                 // A third uniform in u, a third log-uniform in u, a third in 1 − u (both ends).
@@ -881,9 +881,9 @@ fn fast_sigma_edges() {
 /// CDFs; the mean number of extra uniforms; NaN in gives NaN out.
 #[test]
 fn ziggurat_variates_are_exponential_and_half_normal() {
-    use microsurface::chi2::SplitMix64;
+    use libm::erfc;
+    use microsurface::check::chi2::SplitMix64;
     use microsurface::fast::ziggurat;
-    use microsurface::special::erfc;
     // (name, draw, survival function, r = x₁ and x₀ of the generated layers).
     type Draw = fn(f64, &mut dyn FnMut() -> f64) -> f64;
     type Case = (&'static str, Draw, fn(f64) -> f64, f64, f64);
@@ -959,8 +959,10 @@ fn ziggurat_variates_are_exponential_and_half_normal() {
 /// stretched form); G1 = 1/(1 + Λ). Prints each material's worst error and build time.
 #[test]
 fn family_fitted_lambda_over_the_whole_domain() {
-    use microsurface::{BesselK, Distribution, Ei, Erfc, Exact, Microfacet, NdfKind, StudentT, K0};
-    fn check<D: Distribution<f64>, E: Distribution<f32>>(
+    use microsurface::{
+        BesselK, Ei, Erfc, Exact, Microfacet, MicrofacetDistribution, NdfKind, StudentT, K0,
+    };
+    fn check<D: MicrofacetDistribution<f64>, E: MicrofacetDistribution<f32>>(
         name: &str,
         m: &D,
         m32: &E,

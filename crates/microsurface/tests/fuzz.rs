@@ -23,8 +23,8 @@ mod common;
 use common::overflows_truly;
 use microsurface::fast::{self, gtr::FittedGtr as FastGtr};
 use microsurface::{
-    AnyNdf, Beckmann, Distribution, DoubleGgx, Exact, Exponential, Ggx, Gtr, Microfacet, Ndf,
-    NdfKind, RadialSlopes, UnitSlopes, Vec3,
+    AnyNdf, Beckmann, DoubleGgx, Exact, Exponential, Ggx, Gtr, Microfacet, MicrofacetDistribution,
+    Ndf, NdfKind, RadialSlopes, UnitSlopes, Vec3,
 };
 use std::panic::{catch_unwind, AssertUnwindSafe};
 use std::sync::atomic::{AtomicU64, Ordering};
@@ -543,7 +543,7 @@ fn stretched_samplers() {
         let b = Microfacet::<f64, Ggx>::new(alpha(&mut r), alpha(&mut r)).unwrap();
         for _ in 0..40 {
             let u = [uniform(&mut r), uniform(&mut r)];
-            // (Microfacet's directions are unit vectors: the Distribution contract.)
+            // (Microfacet's directions are unit vectors: the MicrofacetDistribution contract.)
             let w = direction(&mut r, false).to_unit();
             let ctx = || format!("{b:?} w={w:?} u={u:?}");
             let s = no_panic("sample_bounded", (&b, w, u), || {
@@ -666,10 +666,10 @@ fn dcos_samplers_spread() {
             let u = [(k as f64 + r.f64()) / 16.0, r.f64()];
             let ctx = || format!("{n:?} u={u:?}");
             let m = no_panic("sample_dcos", (&n, u), || {
-                microsurface::sample::sample_dcos(&n, u)
+                microsurface::sampling::sample_dcos(&n, u)
             });
             check_visible(&mut fails, "sample_dcos", Vec3::Z, m, 1e-12, &ctx);
-            let pdf = microsurface::sample::pdf_dcos(&n, m);
+            let pdf = microsurface::sampling::pdf_dcos(&n, m);
             // (m.z = 0: a slope beyond f64, where D·cos has its mass for Student-T near γ = 1
             // (tan²θ = c((1−ξ)^{−1/(γ−1)} − 1) overflows for most ξ): the density there is 0.
             // D(1) = ∞ for Ei, Erfc, K0 and Bessel-K a ≤ 1 at a normal that rounds to the pole.)
@@ -1052,7 +1052,7 @@ fn fast_accuracy_f32() {
 /// hemisphere, visible from w for the visible mixture, at every accepted α.
 #[test]
 fn stochastic_samplers() {
-    use microsurface::stochastic::{
+    use microsurface::sampling::stochastic::{
         DoubleGgxMixture, ExponentialChi3, GgxBeckmannMixture, VisibleMixture,
     };
     use rand::distr::Distribution;
@@ -1265,13 +1265,17 @@ fn finite<F: fast::Real>(x: F) -> bool {
 /// f and a positive finite pdf. Directions out of contract (non-unit lengths) only must not
 /// panic.
 fn microfacet_api<F: fast::Real + std::fmt::Debug>(test: u64, draw: fn(&mut Rng) -> F) {
+    use microsurface::bsdf::fresnel;
     use microsurface::bsdf::{Bsdf, Masking, RoughConductor, RoughDielectric};
-    use microsurface::{fresnel, Distribution, Microfacet};
+    use microsurface::{Microfacet, MicrofacetDistribution};
     let mut r = Rng::new(test);
     let mut fails = Failures::default();
     let unit_tol = if F::IS_F32 { 1e-6 } else { 1e-13 };
     #[allow(clippy::too_many_arguments)]
-    fn run<F: fast::Real + std::fmt::Debug, D: Distribution<F> + Clone + std::fmt::Debug>(
+    fn run<
+        F: fast::Real + std::fmt::Debug,
+        D: MicrofacetDistribution<F> + Clone + std::fmt::Debug,
+    >(
         m: D,
         ex: microsurface::distribution::Exact,
         name: &str,
@@ -1629,7 +1633,7 @@ macro_rules! fuzz_slices {
                 }
                 let u0: Vec<$F> = (0..n).map(|_| draw(&mut r)).collect();
                 let u1: Vec<$F> = (0..n).map(|_| draw(&mut r)).collect();
-                let gold = microsurface::fresnel::Conductor {
+                let gold = microsurface::bsdf::fresnel::Conductor {
                     eta: [0.14, 0.42, 1.37],
                     k: [3.98, 2.38, 1.60],
                 };
@@ -1766,8 +1770,8 @@ fuzz_slices!(
 /// vector, on wo's side for opaque facets, the order ≥ 1, and the weight in [0, 1].
 #[test]
 fn walk_contract() {
-    use microsurface::fresnel::One;
-    use microsurface::walk::{
+    use microsurface::bsdf::fresnel::One;
+    use microsurface::scattering::{
         DielectricFacets, DiffuseFacets, Heights, MirrorFacets, RandomWalk, WalkRng,
     };
     let mut r = Rng::new(41);
@@ -1838,9 +1842,11 @@ fn walk_contract() {
 /// ≤ 1 (F ≤ 1, importance transport).
 #[test]
 fn multiple_scattering_contract() {
+    use microsurface::bsdf::fresnel::One;
     use microsurface::bsdf::{Bsdf, Transport};
-    use microsurface::fresnel::One;
-    use microsurface::walk::{DielectricFacets, DiffuseFacets, MirrorFacets, MultipleScattering};
+    use microsurface::scattering::{
+        DielectricFacets, DiffuseFacets, MirrorFacets, MultipleScattering,
+    };
     let mut r = Rng::new(44);
     let mut fails = Failures::default();
     for _ in 0..4 * scale() {
@@ -1924,10 +1930,10 @@ fn multiple_scattering_contract() {
 #[test]
 fn compensated_contract() {
     use microsurface::bsdf::Bsdf;
-    use microsurface::compensate::{AlbedoTable, CompensatedConductor, Scheme};
+    use microsurface::scattering::{AlbedoTable, CompensatedConductor, Scheme};
     let mut r = Rng::new(43);
     let mut fails = Failures::default();
-    let gold = microsurface::fresnel::Conductor {
+    let gold = microsurface::bsdf::fresnel::Conductor {
         eta: [0.14, 0.42, 1.37],
         k: [3.98, 2.38, 1.60],
     };
@@ -1977,8 +1983,8 @@ fn compensated_contract() {
 /// [0, 1].
 #[test]
 fn table_contract() {
-    use microsurface::compensate::AlbedoTable;
-    use microsurface::table::{Grid, Material, Method, Spec};
+    use microsurface::scattering::table::{Grid, Material, Method, Spec};
+    use microsurface::scattering::AlbedoTable;
     use microsurface::NdfKind;
     let mut r = Rng::new(45);
     let mut fails = Failures::default();
@@ -2086,7 +2092,7 @@ fn table_contract() {
             f64::INFINITY,
         ]);
         let t = no_panic("DielectricTables::shipped", ctx(), || {
-            microsurface::compensate::DielectricTables::shipped(kind, gamma, a, eta)
+            microsurface::scattering::DielectricTables::shipped(kind, gamma, a, eta)
         });
         if let Some(t) = t {
             let e = [
@@ -2106,13 +2112,13 @@ fn table_contract() {
     fails.finish("table_contract");
 }
 
-/// `Distribution::sample_wm_stream` (every NDF, f64 and f32, isotropic and anisotropic, any
+/// `MicrofacetDistribution::sample_wm_stream` (every NDF, f64 and f32, isotropic and anisotropic, any
 /// direction including the horizon, either side, non-unit and NaN; uniform streams with 0,
 /// 1 − ε, subnormals): never panics; a normal it returns for a unit v is a finite unit
 /// vector with m.z > 0 and v·m > 0, and it answers `None` for v on the horizon.
 /// One stream sample of `d` for a hostile v: no panic; none on the horizon; a unit normal
 /// above the horizon facing v.
-fn stream_one<F: fast::Real + std::fmt::Debug, D: Distribution<F>>(
+fn stream_one<F: fast::Real + std::fmt::Debug, D: MicrofacetDistribution<F>>(
     fails: &mut Failures,
     r: &mut Rng,
     d: &D,
@@ -2208,8 +2214,8 @@ fn stream_samplers_f32() {
 #[test]
 fn compensated_dielectric_contract() {
     use microsurface::bsdf::{Bsdf, Transport};
-    use microsurface::compensate::{CompensatedDielectric, Scheme};
-    use microsurface::walk::{single_scattering_albedo_dielectric_level, G2Form};
+    use microsurface::scattering::{single_scattering_albedo_dielectric_level, G2Form};
+    use microsurface::scattering::{CompensatedDielectric, Scheme};
     let mut r = Rng::new(48);
     let mut fails = Failures::default();
     for i in 0..scale() {

@@ -1,8 +1,8 @@
-//! Every identity of the pages (`microsurface::verify`), for every NDF, over a sweep that adds
+//! Every identity of the pages (`microsurface::check::verify`), for every NDF, over a sweep that adds
 //! what the default `microsurface verify` sweep does not: near-specular and very rough α, and α
 //! and γ within 1e-12 of GTR's removable singularities α = 1, γ = 1.
 
-use microsurface::verify::{run, Sweep};
+use microsurface::check::verify::{run, Sweep};
 use microsurface::NdfKind;
 
 fn assert_all_pass(sweep: &Sweep) {

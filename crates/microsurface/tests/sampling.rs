@@ -1,8 +1,9 @@
 //! D·cos sampling: the radial CDFs against quadrature of the density, quantile round trips,
 //! and the warp's inverse.
 
-use microsurface::sample::{invert_dcos, pdf_dcos, sample_dcos};
-use microsurface::{quad, AnyNdf, Ndf, NdfKind, RadialSlopes};
+use microsurface::check::quad;
+use microsurface::sampling::{invert_dcos, pdf_dcos, sample_dcos};
+use microsurface::{AnyNdf, Ndf, NdfKind, RadialSlopes};
 
 /// The family's shapes: the ends of each range and the special cases.
 fn shapes(k: NdfKind) -> Option<Vec<f64>> {
@@ -138,7 +139,7 @@ fn dcos_pdf_is_normalised() {
 
 mod visible {
     use microsurface::{
-        Distribution, DoubleGgx, Exact, Exponential, Ndf, NdfKind, UnitSlopes, Vec3,
+        DoubleGgx, Exact, Exponential, MicrofacetDistribution, Ndf, NdfKind, UnitSlopes, Vec3,
     };
 
     const KINDS: [NdfKind; 4] = [
@@ -241,7 +242,7 @@ mod visible {
 
 #[test]
 fn gtr_visible_warp_inverts() {
-    use microsurface::{Distribution, Exact, NdfKind, Vec3};
+    use microsurface::{Exact, MicrofacetDistribution, NdfKind, Vec3};
     for (a, g) in [(0.05, 0.5), (0.3, 1.0), (0.3, 2.5), (1.0, 1.5), (2.0, 3.0)] {
         let m = Exact::new(NdfKind::Gtr, a, a, Some(g)).unwrap();
         for deg in [0.0f64, 30.0, 80.0, 89.0, 90.0, 120.0] {
@@ -275,8 +276,8 @@ fn gtr_visible_warp_inverts() {
 
 #[test]
 fn ggx_bounded_vndf_properties() {
-    use microsurface::frame::{dot, reflect};
-    use microsurface::{Distribution, Ggx, Microfacet};
+    use microsurface::bsdf::frame::{dot, reflect};
+    use microsurface::{Ggx, Microfacet, MicrofacetDistribution};
     for (ax, ay) in [(0.05, 0.05), (0.3, 0.1), (1.0, 1.0), (2.0, 0.5)] {
         let m = Microfacet::<f64, Ggx>::new(ax, ay).unwrap();
         for deg in [0.0f64, 30.0, 70.0, 89.0] {

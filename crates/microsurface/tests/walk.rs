@@ -3,13 +3,15 @@
 //! of the height distribution, the paper's GGX figures, and the quadrature itself against an
 //! independent rule.
 
+use microsurface::bsdf::fresnel::One;
 use microsurface::bsdf::{Bsdf, RoughConductor, RoughDielectric, Transport};
-use microsurface::fresnel::One;
-use microsurface::walk::{
+use microsurface::scattering::{
     albedo, single_scattering_albedo, DielectricFacets, Facets, Heights, MirrorFacets,
     MultipleScattering, RandomWalk, WalkRng,
 };
-use microsurface::{Beckmann, Distribution, DoubleGgx, Exponential, Ggx, Gtr, Microfacet};
+use microsurface::{
+    Beckmann, DoubleGgx, Exponential, Ggx, Gtr, Microfacet, MicrofacetDistribution,
+};
 
 fn wo(mu: f64) -> [f64; 3] {
     [(1.0 - mu * mu).sqrt(), 0.0, mu]
@@ -91,7 +93,9 @@ fn furnace_and_order_one() {
 /// within 4 standard errors (plus the quadrature's 2e-5) over a grid of every NDF, α and μ.
 #[test]
 fn dielectric_order_one() {
-    use microsurface::walk::{single_scattering_albedo_dielectric_level, DielectricFacets, G2Form};
+    use microsurface::scattering::{
+        single_scattering_albedo_dielectric_level, DielectricFacets, G2Form,
+    };
     for (ax, ay) in [(0.3, 0.3), (1.0, 1.0), (0.6, 0.2)] {
         for mu in [0.15, 0.5, 0.9] {
             for z in [1.0, -1.0] {
@@ -231,7 +235,7 @@ fn eval_integral<D, Fa>(
     seed: u64,
 ) -> (f64, f64)
 where
-    D: Distribution<f64>,
+    D: MicrofacetDistribution<f64>,
     Fa: Facets<1>,
 {
     let transmits = ms.facets().interface_eta().is_some();
@@ -428,7 +432,7 @@ fn eval_reciprocity() {
 #[test]
 fn sampling_matches_evaluation() {
     const BANDS: usize = 8;
-    fn check<D: Distribution<f64>, Fa: Facets<1>>(
+    fn check<D: MicrofacetDistribution<f64>, Fa: Facets<1>>(
         name: &str,
         ms: &MultipleScattering<D, Fa, 1>,
         wo: [f64; 3],
@@ -506,17 +510,17 @@ fn sampling_matches_evaluation() {
 /// coordinates) against max(0, v·m) D(m)/σ: p above `level`, no bad sample, ∫pdf = 1 to 2e-3;
 /// every normal above the horizon and facing v.
 #[allow(clippy::too_many_arguments)]
-fn stream_chi2<D: Distribution<f64>>(
+fn stream_chi2<D: MicrofacetDistribution<f64>>(
     label: &str,
     d: &D,
     v: [f64; 3],
     sigma: f64,
     reference: &microsurface::Exact,
-    rng: &mut microsurface::chi2::SplitMix64,
+    rng: &mut microsurface::check::chi2::SplitMix64,
     seed: u64,
     level: f64,
 ) {
-    use microsurface::chi2::{chi2_test, DcosCoordinates};
+    use microsurface::check::chi2::{chi2_test, DcosCoordinates};
     use microsurface::Vec3;
     let r = chi2_test(
         |_| {
@@ -541,7 +545,7 @@ fn stream_chi2<D: Distribution<f64>>(
     );
 }
 
-/// The stream samplers of visible normals (`Distribution::sample_wm_stream`, which the walk
+/// The stream samplers of visible normals (`MicrofacetDistribution::sample_wm_stream`, which the walk
 /// uses instead of the warps and of its rejection from the mirror image; GGX, Beckmann,
 /// Double GGX): χ² against max(0, v·m) D(m)/σ(v), σ = |v.z| Λ(v) below and v.z(1 + Λ(v))
 /// above; below isotropic and anisotropic, 45° and 89° (Beckmann's two envelopes both),
@@ -549,9 +553,16 @@ fn stream_chi2<D: Distribution<f64>>(
 /// m.z > 0 and v·m > 0; the NDFs without one answer `None`.
 #[test]
 fn visible_normals_from_a_stream() {
-    use microsurface::chi2::{sidak, SplitMix64};
+    use microsurface::check::chi2::{sidak, SplitMix64};
     use microsurface::{Exact, NdfKind};
-    fn check<D: Distribution<f64>>(name: &str, d: D, kind: NdfKind, ax: f64, ay: f64, level: f64) {
+    fn check<D: MicrofacetDistribution<f64>>(
+        name: &str,
+        d: D,
+        kind: NdfKind,
+        ax: f64,
+        ay: f64,
+        level: f64,
+    ) {
         let reference = Exact::new(NdfKind::Ggx, 1.5 * ax, 1.5 * ay, None).unwrap();
         let mut rng = SplitMix64(kind as u64);
         let above: &[f64] = if ax == ay { &[] } else { &[0.0, 30.0, 80.0] };
@@ -615,7 +626,7 @@ fn visible_normals_from_a_stream() {
 /// generalised exponential (no such sampler).
 #[test]
 fn family_visible_normals_from_a_stream() {
-    use microsurface::chi2::{sidak, SplitMix64};
+    use microsurface::check::chi2::{sidak, SplitMix64};
     use microsurface::{AnyNdf, Exact, NdfKind};
     let cases = [
         (NdfKind::StudentT, Some(1.6)),

@@ -4,10 +4,10 @@
 //! (grazing, below the horizon and non-unit ones for the samplers), anisotropic roughness, and
 //! a smooth material.
 
+use microsurface::bsdf::fresnel;
 use microsurface::bsdf::{Bsdf, RoughConductor};
 use microsurface::fast::batch::{self, GgxConductor, Simd, Vectors, VectorsMut};
-use microsurface::fresnel;
-use microsurface::{Beckmann, Distribution, Ggx, Microfacet, Real};
+use microsurface::{Beckmann, Ggx, Microfacet, MicrofacetDistribution, Real};
 
 /// SplitMix64 uniforms in [0, 1).
 struct Rng(u64);

@@ -420,13 +420,13 @@ pub struct VectorsMut<'a, F> {
 pub type GgxConductor<F> = crate::bsdf::RoughConductor<
     F,
     crate::Microfacet<F, crate::Ggx>,
-    crate::fresnel::Conductor<F, 3>,
+    crate::bsdf::fresnel::Conductor<F, 3>,
     3,
 >;
 
 use super::Real;
 use crate::bsdf::{Bsdf, Masking};
-use crate::distribution::Distribution;
+use crate::distribution::MicrofacetDistribution;
 
 /// (cos 2πv, sin 2πv) for a uniform v in the precision of F, branch-free (the slice kernels'
 /// azimuth): f64 is [`super::cos_sin_turn`]; f32 the same reduction to the nearest quarter
@@ -541,7 +541,7 @@ fn ggx_vndf_slice<F: Real>(
 
 dispatched! {
 /// GGX visible normals for a slice of directions (one material; w of any finite nonzero
-/// length, mirrored if w.z < 0, as [`Distribution::sample_wm`]): element i is the normal for
+/// length, mirrored if w.z < 0, as [`MicrofacetDistribution::sample_wm`]): element i is the normal for
 /// `(w[i], [u0[i], u1[i]])`. The same spherical caps as the scalar sampler; f64 returns its
 /// bits, f32 takes the azimuth's cosine and sine from a polynomial in f32 (the normal within
 /// a few f32 ulps of the scalar's, magnified by the anisotropy: 2e-6 at αx/αy = 2000,
@@ -641,7 +641,7 @@ fn ggx_lambda_lane<F: Real>(w: [F; 3], ax: F, ay: F) -> F {
 fn conductor_lane<F: Real>(
     ax: F,
     ay: F,
-    fr: &crate::fresnel::Conductor<F, 3>,
+    fr: &crate::bsdf::fresnel::Conductor<F, 3>,
     masking: Masking,
     wo: [F; 3],
     wi: [F; 3],
@@ -664,7 +664,7 @@ fn conductor_lane<F: Real>(
     };
     let c = (wo[0] * wm[0] + wo[1] * wm[1] + co * wm[2]).abs();
     let k = d * g2 / (F::from_f64(4.0) * (co * ci).abs());
-    let f = std::array::from_fn(|j| crate::fresnel::conductor(c, fr.eta[j], fr.k[j]) * k);
+    let f = std::array::from_fn(|j| crate::bsdf::fresnel::conductor(c, fr.eta[j], fr.k[j]) * k);
     let pdf = d / ((F::ONE + lo) * F::from_f64(4.0) * co.abs());
     let floor = F::from_f64(1e-6);
     let ok = co.abs() >= floor && ci.abs() >= floor && hl2 >= floor * floor;

@@ -9,7 +9,7 @@
 //!
 //! (the second form has no cancellation for X > 0), and ỹ is Gaussian: ỹ = erfinv(2u₂ − 1).
 //! x̃ starts from a bilinear table of the inverse over (1/(1 + a), u₁) (`BECKMANN_GUESS` in
-//! tables.rs, generated from the exact sampler by `examples/gen_fast_tables.rs`; guess error
+//! tables.rs, generated from the exact sampler by `gen_tables.rs` (an ignored unit test); guess error
 //! about 1e-4) and is finished by safeguarded Halley steps
 //! on N (two, typically; every step is bracketed, so the tails, where the table is coarse,
 //! only take more steps). [`erfinv`] is a Chebyshev table of erfinv(v)/v in w = −ln(1 − v²)
@@ -318,7 +318,7 @@ pub(crate) fn sample_visible<F: Real>(w: [F; 3], ax: F, ay: F, u: [F; 2]) -> [F;
 }
 
 /// A visible normal for v below the horizon (v.z < 0), not mirrored
-/// ([`crate::Distribution::sample_wm_stream`]), anisotropic roughness (αx, αy), from the
+/// ([`crate::MicrofacetDistribution::sample_wm_stream`]), anisotropic roughness (αx, αy), from the
 /// uniforms of `uniform`. In the slope frame of v (stretched azimuth φ, a = |v.z|/h, h the
 /// stretched horizontal length) the visible slopes of the α = 1 distribution have density
 /// ∝ max(0, X − a) e^{−X²} e^{−Y²}: Y is N(0, ½) and X lies in the tail X > a, drawn by
@@ -370,7 +370,7 @@ pub(crate) fn sample_visible_below<F: Real>(
 }
 
 /// A visible normal for v above the horizon (v.z > 0) from a uniform stream
-/// ([`crate::Distribution::sample_wm_stream`]; not a warp of two uniforms, as
+/// ([`crate::MicrofacetDistribution::sample_wm_stream`]; not a warp of two uniforms, as
 /// [`sample_visible`] is, and about four times cheaper than its Halley inversion). In the
 /// slope frame of v (a = v.z/h as [`sample_visible_below`]) the visible slope X has density
 /// ∝ (X + a) e^{−X²} on X > −a and Y is N(0, ½). X by rejection from the envelope

@@ -292,7 +292,7 @@ pub(crate) fn sample_visible<F: Real>(
 }
 
 /// A visible normal for v below the horizon (v.z < 0), not mirrored
-/// ([`crate::Distribution::sample_wm_stream`]), anisotropic roughness (αx, αy), from the
+/// ([`crate::MicrofacetDistribution::sample_wm_stream`]), anisotropic roughness (αx, αy), from the
 /// uniforms of `uniform`: the superposition's visible normals from below are its GGX
 /// components' with weights e^{−t} σ⁻_t(v), σ⁻_t(v) = (√(c² + h²/t) − c)/2 (c = |v.z|, h the
 /// stretched horizontal length: the component's |v.z| Λ). Since σ⁻_t ≤ h/(2√t), t is drawn

@@ -3,7 +3,7 @@
 //! [`crate::Exponential`], Λ = (2K₁(z) − Ki₁(z))/π, z = 2 cot θ/α (derivations.md A.14).
 //!
 //! The variable is z = 2u/(α√((1 − u)(1 + u))). Λ falls like e^{−z}/√z; it is read from
-//! generated tables (`examples/gen_fast_tables.rs`) in four ranges:
+//! generated tables (`gen_tables.rs` (an ignored unit test)) in four ranges:
 //! * z < 2^−12 (grazing): Λ = 2/(πz) − 1/2 + z/(2π) + O(z³ ln z), relative error below 1e-14.
 //! * 2^−12 ≤ z < 64: Λ itself as a function of q = z² = 4u²/(α²(1 − u)(1 + u)) (one
 //!   division, no square root), on octaves of q: 16 segments per octave up to q = 64 and 64

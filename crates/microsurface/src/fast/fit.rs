@@ -12,7 +12,7 @@
 //! Tables are built by Chebyshev interpolation ([`fit_octaves`]): at N Chebyshev points of each
 //! segment, converted to the monomial basis in s (|s| ≤ 1 keeps that conversion well
 //! conditioned for N ≤ 12). The fits of Double GGX and the Exponential NDF are generated once
-//! by `examples/gen_fast_tables.rs` into `tables.rs`; GTR's are built per (α, γ) at run time.
+//! by `gen_tables.rs` (an ignored unit test) into `tables.rs`; GTR's are built per (α, γ) at run time.
 
 /// 2^k for a normal exponent k (the ends of a table's range), exactly, from its bits.
 #[inline(always)]

@@ -42,9 +42,9 @@
 
 use super::fit;
 use crate::error::ParamError;
-use crate::mixture::Posterior;
+use crate::ndf::mixture::Posterior;
 use crate::ndf::Ndf;
-use crate::sample::RadialSlopes;
+use crate::sampling::dcos::RadialSlopes;
 use crate::AnyNdf;
 
 /// Coefficients per fitted segment (degree 6).
@@ -334,7 +334,7 @@ impl FittedShape {
     /// warp at the mean roughness (a visible normal, not this NDF's distribution).
     #[inline]
     pub fn sample_visible<F: super::Real>(&self, w: [F; 3], ax: f64, ay: f64, u: [F; 2]) -> [F; 3] {
-        let v = crate::vec3::Vec3::from(w.map(|x| x.to_f64())).to_unit();
+        let v = crate::math::vec3::Vec3::from(w.map(|x| x.to_f64())).to_unit();
         let v = if v.z < 0.0 { -v } else { v };
         let mut s = crate::distribution::UniformStream::new(u);
         let mut first = [u[0].to_f64(), u[1].to_f64()].into_iter();
@@ -348,7 +348,7 @@ impl FittedShape {
         }
     }
 
-    /// [`crate::Distribution::sample_wm_stream`]: the posterior sampler above the horizon,
+    /// [`crate::MicrofacetDistribution::sample_wm_stream`]: the posterior sampler above the horizon,
     /// `None` below.
     #[inline]
     pub fn sample_visible_stream<F: super::Real>(
@@ -358,7 +358,7 @@ impl FittedShape {
         ay: f64,
         uniform: &mut dyn FnMut() -> F,
     ) -> Option<[F; 3]> {
-        let v = crate::vec3::Vec3::from(v.map(|x| x.to_f64())).to_unit();
+        let v = crate::math::vec3::Vec3::from(v.map(|x| x.to_f64())).to_unit();
         self.posterior
             .sample_visible::<F>(v.into(), ax, ay, &mut || uniform().to_f64())
     }

@@ -604,13 +604,13 @@ impl FittedGtr {
 
     /// A normal distributed as D(m) cos θm, u ∈ [0, 1]²: Burley's closed-form inversion
     /// (Burley 2012, appendix B, eqs. 3–9, in the stable arrangement of the exact path,
-    /// [`crate::sample::RadialSlopes`]) for tan θ = F⁻¹(u₀), azimuth 2πu₁; a warp of u with the
+    /// [`crate::sampling::RadialSlopes`]) for tan θ = F⁻¹(u₀), azimuth 2πu₁; a warp of u with the
     /// exact sampler's accuracy. Evaluated in f64; the material's exponentials of ±kL are
     /// constants (`Burley`, shared with the exact path), which leaves five libm calls.
     /// (`arith`'s functions, tried here, were slower: this chain is bound by latency.)
     #[inline]
     pub(crate) fn sample_dcos<F: Real>(&self, u: [F; 2]) -> [F; 3] {
-        use crate::sample::RadialSlopes;
+        use crate::sampling::dcos::RadialSlopes;
         let r = self.exact.slope_quantile(u[0].to_f64());
         super::normal_from_polar(r, super::cos_sin_turn(u[1].to_f64()), 1.0, 1.0)
     }

@@ -4,8 +4,8 @@
 //! (Moved from tests/fast.rs when the samplers became `pub(crate)`.)
 
 use super::{beckmann, ggx};
-use crate::distribution::{Distribution, Exact};
-use crate::microsurface::{Microsurface, Stretched};
+use crate::distribution::kernels::{Microsurface, Stretched};
+use crate::distribution::{Exact, MicrofacetDistribution};
 use crate::{Gtr, Ndf, NdfKind, UnitSlopes, Vec3};
 
 /// The reference coordinates' exact GGX at (αx, αy).
@@ -21,7 +21,7 @@ fn logspace(lo: f64, hi: f64, n: usize) -> impl Iterator<Item = f64> {
 
 #[test]
 fn ggx_fast_vndf_is_the_visible_distribution() {
-    use crate::chi2::{chi2_test, DcosCoordinates};
+    use crate::check::chi2::{chi2_test, DcosCoordinates};
     let m = ggx_exact(0.3, 0.1);
     let coords = ggx_exact(0.45, 0.15);
     for w in [Vec3::new(0.6, 0.0, 0.8), Vec3::new(0.1, -0.7, 0.707)] {
@@ -156,7 +156,7 @@ fn beckmann_fast_vndf_is_the_exact_warp() {
 /// number of uniforms each takes, the mirror for w.z < 0 and f32 against f64.
 #[test]
 fn mixture_fast_vndf_is_the_visible_distribution() {
-    use crate::chi2::{chi2_test, sidak, DcosCoordinates, SplitMix64};
+    use crate::check::chi2::{chi2_test, sidak, DcosCoordinates, SplitMix64};
     use crate::fast::{double_ggx, exponential};
     type Sampler = fn([f64; 3], f64, f64, [f64; 2], &mut dyn FnMut() -> f64) -> [f64; 3];
     let samplers: [(UnitSlopes, Sampler); 2] = [
@@ -310,7 +310,7 @@ fn mixture_fast_vndf_edges() {
 /// uniforms; f32 against f64; the ends of the domain.
 #[test]
 fn gtr_fast_vndf_is_the_visible_distribution() {
-    use crate::chi2::{chi2_test, sidak, DcosCoordinates, SplitMix64};
+    use crate::check::chi2::{chi2_test, sidak, DcosCoordinates, SplitMix64};
     use crate::fast::gtr::FittedGtr as FastGtr;
     let alphas = [0.05, 0.3, 1.0, 1.7];
     let gammas = [0.5, 1.0, 1.5, 2.0, 3.0, 10.0];
@@ -431,10 +431,10 @@ fn gtr_fast_vndf_is_the_visible_distribution() {
 /// at 0 and 1 and extreme α, NaN for NaN, and f32 within 1e-7 of f64 for the same uniforms.
 #[test]
 fn fast_dcos_samplers() {
-    use crate::chi2::{chi2_test, sidak, DcosCoordinates, SplitMix64};
+    use crate::check::chi2::{chi2_test, sidak, DcosCoordinates, SplitMix64};
+    use crate::distribution::kernels::Isotropic;
     use crate::fast::gtr::FittedGtr as FastGtr;
     use crate::fast::{double_ggx, exponential};
-    use crate::microsurface::Isotropic;
     // The largest coordinate difference of two normals.
     let diff = |a: [f64; 3], b: Vec3| {
         (a[0] - b.x)
@@ -608,8 +608,8 @@ fn fast_dcos_samplers() {
 /// that also has a closed-form sampler: χ² against max(0, w·m) D(m)/σ(w).
 #[test]
 fn polar_inversion_on_beckmann() {
-    use crate::chi2::{chi2_test, DcosCoordinates};
-    use crate::microsurface::Isotropic;
+    use crate::check::chi2::{chi2_test, DcosCoordinates};
+    use crate::distribution::kernels::Isotropic;
     let m = Isotropic(crate::Beckmann::new(0.3).unwrap());
     let coords = ggx_exact(0.45, 0.45);
     let t = 60f64.to_radians();
