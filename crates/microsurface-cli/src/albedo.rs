@@ -2,8 +2,8 @@
 //! random walk of Heitz et al. 2016 (`microsurface::scattering`), or single scattering by quadrature.
 //! JSON lines in, one line out per line, in order (errors as in `eval`).
 
-use crate::bsdf::{ndf_alpha, spectrum};
-use crate::eval::field;
+use crate::json::field;
+use crate::json::{ndf_alpha, spectrum};
 use microsurface::bsdf::fresnel::{self, One};
 use microsurface::scattering::{
     albedo, single_scattering_albedo, single_scattering_albedo_dielectric_level, Albedo, ByOrder,
@@ -14,7 +14,7 @@ use serde_json::{json, Value};
 use std::process::ExitCode;
 
 pub fn run(args: &[String]) -> Result<ExitCode, String> {
-    crate::eval::json_lines("albedo", args, albedo_line)
+    crate::json::json_lines("albedo", args, albedo_line)
 }
 
 const FIELDS: [&str; 13] = [
@@ -38,7 +38,7 @@ enum Facets {
 fn albedo_line(text: &str) -> Result<Value, String> {
     let v: Value = serde_json::from_str(text).map_err(|e| format!("not valid JSON: {e}"))?;
     let obj = v.as_object().ok_or("expected a JSON object")?;
-    crate::eval::known_fields(obj, &FIELDS)?;
+    crate::json::known_fields(obj, &FIELDS)?;
     let (kind, ax, ay, shape) = ndf_alpha(obj)?;
     let d = AnyMicrofacet::<f64>::new(kind, ax, ay, shape).map_err(|e| e.to_string())?;
     let mu = field(obj, "mu")?;

@@ -3,17 +3,17 @@
 //! line out per line, in order (errors as in `eval`). Local frame, z = normal; radiance
 //! transport; f64. Every combination is the library's `Box<dyn Bsdf<f64, Value = [f64; 3]>>`.
 
-use crate::eval::field;
+use crate::json::{array, direction, field, ndf_alpha, spectrum, string};
 use microsurface::bsdf::fresnel::{self, One};
 use microsurface::bsdf::{Bsdf, BsdfSample, Lobe, Masking, RoughConductor, RoughDielectric};
 use microsurface::scattering::{ByOrder, DielectricFacets, MirrorFacets, MultipleScattering};
 use microsurface::scattering::{CompensatedConductor, CompensatedDielectric, Scheme};
-use microsurface::{AnyMicrofacet, MicrofacetDistribution, NdfKind};
+use microsurface::{AnyMicrofacet, MicrofacetDistribution};
 use serde_json::{json, Map, Value};
 use std::process::ExitCode;
 
 pub fn run(args: &[String]) -> Result<ExitCode, String> {
-    crate::eval::json_lines("bsdf", args, bsdf_line)
+    crate::json::json_lines("bsdf", args, bsdf_line)
 }
 
 const FIELDS: [&str; 15] = [
@@ -51,92 +51,10 @@ const MAX_SAMPLES: f64 = 1e9;
 fn bsdf_line(text: &str) -> Result<Value, String> {
     let v: Value = serde_json::from_str(text).map_err(|e| format!("not valid JSON: {e}"))?;
     let obj = v.as_object().ok_or("expected a JSON object")?;
-    crate::eval::known_fields(obj, &FIELDS)?;
+    crate::json::known_fields(obj, &FIELDS)?;
     let req = Request::parse(obj)?;
     let (kind, ax, ay, shape) = ndf_alpha(obj)?;
     req.answer(AnyMicrofacet::<f64>::new(kind, ax, ay, shape).map_err(|e| e.to_string())?)
-}
-
-/// The request's "ndf", "alpha" (a or [ax, ay]) and shape parameter ("gamma" for gtr,
-/// student_t and gen_exponential, "a" for bessel_k).
-pub(crate) fn ndf_alpha(
-    obj: &Map<String, Value>,
-) -> Result<(NdfKind, f64, f64, Option<f64>), String> {
-    let kind: NdfKind = string(obj, "ndf")?
-        .parse()
-        .map_err(|e: microsurface::ndf::UnknownNdf| e.to_string())?;
-    let shape = crate::eval::shape(obj, kind)?;
-    let (ax, ay) = alpha(obj)?;
-    Ok((kind, ax, ay, shape))
-}
-
-fn string<'a>(obj: &'a Map<String, Value>, name: &str) -> Result<&'a str, String> {
-    obj.get(name)
-        .ok_or_else(|| format!("missing field '{name}'"))?
-        .as_str()
-        .ok_or_else(|| format!("field '{name}' must be a string"))
-}
-
-/// "alpha": a or [ax, ay].
-fn alpha(obj: &Map<String, Value>) -> Result<(f64, f64), String> {
-    match obj.get("alpha") {
-        Some(Value::Array(a)) => {
-            let v = numbers(a, "alpha", 2)?;
-            Ok((v[0], v[1]))
-        }
-        _ => {
-            let a = field(obj, "alpha")?;
-            Ok((a, a))
-        }
-    }
-}
-
-/// An array of exactly `n` finite numbers.
-fn numbers(a: &[Value], name: &str, n: usize) -> Result<Vec<f64>, String> {
-    let v: Option<Vec<f64>> = a.iter().map(Value::as_f64).collect();
-    match v {
-        Some(v) if v.len() == n && v.iter().all(|x| x.is_finite()) => Ok(v),
-        _ => Err(format!(
-            "field '{name}' must be an array of {n} finite numbers"
-        )),
-    }
-}
-
-fn array(obj: &Map<String, Value>, name: &str, n: usize) -> Result<Vec<f64>, String> {
-    match obj.get(name) {
-        None => Err(format!("missing field '{name}'")),
-        Some(Value::Array(a)) => numbers(a, name, n),
-        Some(_) => Err(format!(
-            "field '{name}' must be an array of {n} finite numbers"
-        )),
-    }
-}
-
-/// A direction: any finite nonzero 3-vector, normalised.
-fn direction(obj: &Map<String, Value>, name: &str) -> Result<[f64; 3], String> {
-    let v = array(obj, name, 3)?;
-    let w = microsurface::bsdf::frame::normalize([v[0], v[1], v[2]]);
-    if !w[0].is_finite() {
-        return Err(format!("field '{name}' must be a nonzero vector"));
-    }
-    Ok(w)
-}
-
-/// η (scalar or RGB) and k (RGB), per channel.
-pub(crate) fn spectrum(obj: &Map<String, Value>, name: &str) -> Result<[f64; 3], String> {
-    match obj.get(name) {
-        Some(Value::Array(a)) => {
-            let v = numbers(a, name, 3)?;
-            Ok([v[0], v[1], v[2]])
-        }
-        _ => {
-            let x = field(obj, name)?;
-            if !x.is_finite() {
-                return Err(format!("field '{name}' must be finite"));
-            }
-            Ok([x; 3])
-        }
-    }
 }
 
 #[derive(Clone, Copy)]

@@ -1,61 +1,14 @@
 //! `microsurface eval`: JSON lines in, JSON lines out, in order; a bad line gets
 //! `{"error": "..."}` and the run goes on; exit 1 if any line failed.
 
+use crate::json::{field, json_lines, shape};
 use microsurface::{AnyNdf, Ndf, NdfKind};
 use serde_json::{Map, Value};
-use std::io::{BufRead, BufWriter, Write};
 use std::process::ExitCode;
 
 pub fn run(args: &[String]) -> Result<ExitCode, String> {
     json_lines("eval", args, |text| {
         eval_line(text).map(|v| serde_json::json!({ "value": v }))
-    })
-}
-
-/// The JSON-lines loop of `eval` and `bsdf`: one reply per non-empty input line, in order;
-/// a line whose handler fails (or that is not UTF-8) gets `{"error": ...}` and the run goes
-/// on; exit 1 if any line failed.
-pub fn json_lines(
-    command: &str,
-    args: &[String],
-    mut handle: impl FnMut(&str) -> Result<Value, String>,
-) -> Result<ExitCode, String> {
-    if let Some(a) = args.first() {
-        return Err(format!(
-            "{command}: unexpected argument '{}' (it reads JSON lines on stdin)",
-            crate::clip(a)
-        ));
-    }
-    let mut stdin = std::io::stdin().lock();
-    let mut out = BufWriter::new(std::io::stdout().lock());
-    let mut failed = false;
-    let mut line = Vec::new();
-    loop {
-        line.clear();
-        let n = stdin
-            .read_until(b'\n', &mut line)
-            .map_err(|e| format!("{command}: reading stdin: {e}"))?;
-        if n == 0 {
-            break;
-        }
-        // A line that is not UTF-8 is a bad line like any other: an error reply, and on.
-        let reply = match std::str::from_utf8(&line) {
-            Ok(text) if text.trim().is_empty() => continue,
-            Ok(text) => handle(text),
-            Err(_) => Err("the line is not valid UTF-8".to_string()),
-        };
-        let reply = reply.unwrap_or_else(|e| {
-            failed = true;
-            serde_json::json!({ "error": e })
-        });
-        writeln!(out, "{reply}").map_err(|e| format!("{command}: writing stdout: {e}"))?;
-    }
-    out.flush()
-        .map_err(|e| format!("{command}: writing stdout: {e}"))?;
-    Ok(if failed {
-        ExitCode::FAILURE
-    } else {
-        ExitCode::SUCCESS
     })
 }
 
@@ -69,86 +22,6 @@ fn arguments(quantity: &str) -> Option<&'static [&'static str]> {
         "f" => &["x"],
         _ => return None,
     })
-}
-
-/// Err for a field of `obj` not among `fields` (the JSON-lines commands' strictness).
-pub fn known_fields(obj: &Map<String, Value>, fields: &[&str]) -> Result<(), String> {
-    match obj.keys().find(|k| !fields.contains(&k.as_str())) {
-        Some(key) => Err(format!(
-            "unknown field '{}' (expected {})",
-            crate::clip(key),
-            fields.join(", ")
-        )),
-        None => Ok(()),
-    }
-}
-
-/// The request's shape parameter, for the kinds that have one ([`NdfKind::shape_name`]):
-/// "gamma" (gtr, student_t, gen_exponential) or "a" (bessel_k); a shape field on a kind
-/// without it is an error.
-pub fn shape(obj: &Map<String, Value>, kind: NdfKind) -> Result<Option<f64>, String> {
-    for key in ["gamma", "a"] {
-        if obj.contains_key(key) && kind.shape_name() != Some(key) {
-            return Err(format!(
-                "unknown field '{key}' for ndf {kind} ({})",
-                if key == "gamma" {
-                    "gamma is for gtr, student_t and gen_exponential"
-                } else {
-                    "a is for bessel_k"
-                }
-            ));
-        }
-    }
-    match kind.shape_name() {
-        Some(name) => Ok(Some(field(obj, name)?)),
-        None => Ok(None),
-    }
-}
-
-/// The shape parameter from a command line's `--gamma` / `--a` for `kind`: required where
-/// the kind has one ([`NdfKind::shape_name`]), an error where it has not.
-pub fn shape_from_flags(
-    kind: NdfKind,
-    gamma: Option<f64>,
-    a: Option<f64>,
-) -> Result<Option<f64>, String> {
-    let (want, other) = match kind.shape_name() {
-        Some("a") => (a, gamma.map(|_| "--gamma")),
-        Some(_) => (gamma, a.map(|_| "--a")),
-        None => {
-            return match (gamma, a) {
-                (None, None) => Ok(None),
-                (Some(_), _) => Err(format!(
-                    "--gamma applies to gtr, student_t and gen_exponential only, not {kind}"
-                )),
-                _ => Err(format!("--a applies to bessel_k only, not {kind}")),
-            }
-        }
-    };
-    if let Some(flag) = other {
-        return Err(format!(
-            "{flag} does not apply to {kind} (its shape is --{})",
-            kind.shape_name().unwrap_or("")
-        ));
-    }
-    want.map(Some).ok_or_else(|| {
-        format!(
-            "--{} is required for {kind}",
-            kind.shape_name().unwrap_or("")
-        )
-    })
-}
-
-pub fn field(obj: &Map<String, Value>, name: &str) -> Result<f64, String> {
-    match obj.get(name) {
-        None => Err(format!("missing field '{name}'")),
-        Some(v) => v.as_f64().ok_or_else(|| {
-            format!(
-                "field '{name}' must be a number, got {}",
-                crate::clip(&v.to_string())
-            )
-        }),
-    }
 }
 
 /// A direction cosine in [−1, 1]; up to 4 ulp past ±1 (the z of a rounded unit vector) is

@@ -4,11 +4,9 @@
 mod albedo;
 mod bsdf;
 mod eval;
+mod json;
 mod report;
-mod report_bsdf;
-mod report_ms;
 mod sample;
-mod svg;
 mod table;
 mod verify;
 

@@ -99,7 +99,7 @@ fn parse(args: &[String]) -> Result<Args, String> {
     }
     a.kind = kind.ok_or("sample: --ndf is required")?;
     a.alpha = alpha.ok_or("sample: --alpha is required")?;
-    a.gamma = crate::eval::shape_from_flags(a.kind, a.gamma, shape_a)
+    a.gamma = crate::json::shape_from_flags(a.kind, a.gamma, shape_a)
         .map_err(|e| format!("sample: {e}"))?;
     if a.wi.is_some() && !a.visible {
         return Err(

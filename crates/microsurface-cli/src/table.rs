@@ -138,7 +138,7 @@ pub fn run(args: &[String]) -> Result<ExitCode, String> {
     } else {
         return Err(err("--out must end in .json or .mfa (the binary form)"));
     };
-    let gamma = crate::eval::shape_from_flags(ndf, gamma, shape_a).map_err(err)?;
+    let gamma = crate::json::shape_from_flags(ndf, gamma, shape_a).map_err(err)?;
     let material = match material.as_str() {
         "furnace" => Material::Furnace,
         "conductor" => Material::Conductor {

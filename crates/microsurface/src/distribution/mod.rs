@@ -50,8 +50,7 @@
 //! αx²x² + αy²y²: better conditioned near the normal than 1 − z² of a rounded unit vector,
 //! and as cheap). The other quantities call the fast scalar functions of u = |w.z| as they
 //! are (bit for bit) for isotropic materials, and at the projected roughness
-//! α̃ for anisotropic ones. The validated exact path
-//! Accuracy against the exact path (tests/bsdf.rs, D, G1 and the visible pdf at random
+//! α̃ for anisotropic ones. Accuracy against the exact path (tests/bsdf.rs, D, G1 and the visible pdf at random
 //! directions): the fast paths' own bounds ([`crate::fast`]) — measured f64: GGX 2e-15,
 //! Beckmann 7e-13, Double GGX 3e-11, Exponential 6e-12, GTR 8e-11; f32: GGX 6e-7, Beckmann
 //! 2e-5, fitted 4e-6 isotropic and 1e-5 anisotropic (there α̃ is itself rounded to f32, and Λ's

@@ -5,7 +5,12 @@
 //! identities, and the table of every identity from `verify`; then a comparison of the NDFs
 //! at matched roughness.
 
-use crate::svg::{esc, Plot, Series, Style};
+mod bsdf;
+mod common;
+mod ms;
+mod svg;
+
+use common::{grid, short};
 use microsurface::check::chi2::SplitMix64;
 use microsurface::check::verify::{run as run_checks, sigma_by_delta_integral, Sweep};
 use microsurface::ndf::exponential::approx::{ei_g1, g1_rational};
@@ -14,15 +19,10 @@ use microsurface::{AnyNdf, Exact, MicrofacetDistribution, Ndf, NdfKind, Vec3};
 use std::fmt::Write as _;
 use std::process::ExitCode;
 use std::time::Instant;
+use svg::{esc, Plot, Series, Style};
 
 const ALPHAS: [f64; 3] = [0.1, 0.3, 0.6];
 const GAMMAS: [f64; 4] = [0.5, 1.0, 1.5, 2.5];
-
-pub(crate) fn grid(a: f64, b: f64, n: usize) -> Vec<f64> {
-    (0..n)
-        .map(|i| a + (b - a) * i as f64 / (n - 1) as f64)
-        .collect()
-}
 
 fn ndf(kind: NdfKind, alpha: f64, gamma: Option<f64>) -> AnyNdf {
     AnyNdf::new(kind, alpha, gamma).expect("report parameters are valid")
@@ -90,23 +90,6 @@ fn heading(kind: NdfKind) -> &'static str {
         NdfKind::K0 => "K0 NDF",
         NdfKind::BesselK => "Bessel-K (shape a)",
         NdfKind::GenExponential => "Generalised exponential (exponent γ)",
-    }
-}
-
-/// The short name of an NDF in plot titles.
-pub(crate) fn short(kind: NdfKind) -> &'static str {
-    match kind {
-        NdfKind::Beckmann => "Beckmann",
-        NdfKind::Ggx => "GGX",
-        NdfKind::Gtr => "GTR",
-        NdfKind::DoubleGgx => "Double GGX",
-        NdfKind::Exponential => "Exponential",
-        NdfKind::StudentT => "Student-T",
-        NdfKind::Ei => "Ei",
-        NdfKind::Erfc => "Erfc",
-        NdfKind::K0 => "K0",
-        NdfKind::BesselK => "Bessel-K",
-        NdfKind::GenExponential => "GenExp",
     }
 }
 
@@ -974,7 +957,7 @@ beyond them in the repository's <code>docs/derivations.md</code>.</p>\
     body.push_str(
         r#"<section id="bsdf"><h2>Rough conductor and dielectric BSDFs, every NDF</h2><p class="def">The renderer-facing types (<code>Microfacet</code>, <code>bsdf::RoughConductor</code>, <code>bsdf::RoughDielectric</code>, f64, pbrt-v4's conventions): their lobes, their samplers against their pdfs, and the energy a single-scattering BSDF loses.</p><div class="plots">"#,
     );
-    for p in crate::report_bsdf::plots() {
+    for p in bsdf::plots() {
         body.push_str(&p.to_html());
     }
     body.push_str("</div></section>");
@@ -983,7 +966,7 @@ beyond them in the repository's <code>docs/derivations.md</code>.</p>\
     body.push_str(
         r#"<section id="multiple-scattering"><h2>Multiple scattering, every NDF</h2><p class="def">The microsurface random walk (<code>walk</code>, Heitz, Hanika, d'Eon &amp; Dachsbacher 2016) by scattering order, the single-scattering albedo tables the library ships, and energy compensation (<code>compensate</code>: Kulla &amp; Conty 2017, Turquin 2019).</p><div class="plots">"#,
     );
-    for p in crate::report_ms::plots() {
+    for p in ms::plots() {
         body.push_str(&p.to_html());
     }
     body.push_str("</div></section>");

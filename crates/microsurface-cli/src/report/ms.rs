@@ -3,9 +3,8 @@
 //! compensation, and the share of energy beyond single scattering. GTR at γ = 1 (Burley's
 //! clearcoat lobe), whose compensation table the library ships.
 
-use crate::report::{grid, short};
-use crate::report_bsdf::material;
-use crate::svg::{Plot, Series, Style};
+use super::common::{grid, material, short};
+use super::svg::{Plot, Series, Style};
 use microsurface::bsdf::fresnel::One;
 use microsurface::bsdf::{Bsdf, Transport};
 use microsurface::check::quad::integrate;

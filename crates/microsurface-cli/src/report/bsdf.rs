@@ -4,12 +4,12 @@
 //! α for every NDF (the energy a single-scattering BSDF loses: the motivation for multiple
 //! scattering). Everything from the library's `Microfacet` and `bsdf` types, in f64.
 
-use crate::report::{grid, short};
-use crate::svg::{Plot, Series, Style};
+use super::common::{grid, material, short};
+use super::svg::{Plot, Series, Style};
 use microsurface::bsdf::fresnel::{self, One};
 use microsurface::bsdf::{Bsdf, RoughConductor, RoughDielectric};
 use microsurface::check::chi2::SplitMix64;
-use microsurface::{AnyMicrofacet, NdfKind};
+use microsurface::NdfKind;
 use std::f64::consts::PI;
 
 /// The plots' roughness (isotropic), GTR's γ, the dielectric's η and the conductor (gold's
@@ -22,13 +22,6 @@ const GOLD_G: fresnel::Conductor<f64, 1> = fresnel::Conductor {
     k: [2.38],
 };
 const THETA_O: [f64; 3] = [0.0, 45.0, 75.0];
-
-/// The f64 material of `kind` at (α, α) (GTR at γ) through the run-time door. (These
-/// sections cover [`NdfKind::CLASSIC`]: GTR is the one with a shape.)
-pub(crate) fn material(kind: NdfKind, alpha: f64, gamma: f64) -> AnyMicrofacet<f64> {
-    let shape = kind.shape_name().map(|_| gamma);
-    AnyMicrofacet::new(kind, alpha, alpha, shape).expect("the report's parameters are valid")
-}
 
 fn label(kind: NdfKind) -> String {
     if kind == NdfKind::Gtr {
