@@ -235,7 +235,8 @@ impl PyBsdf {
 }
 
 /// Conductor(ndf, eta=None, k=None, masking='correlated', scattering='single'): a rough
-/// conductor of the material ``ndf`` (any NDF class, anisotropic included), with the exact
+/// conductor of the material ``ndf`` (any NDF class, anisotropic included, on its path: the
+/// fast kernels, or the exact path for an NDF made with ``exact=True``), with the exact
 /// Fresnel reflectance of the complex index η + ik: floats for one channel, sequences of N
 /// for N channels (RGB: 3); eta=None is F = 1 (the white furnace). ``scattering``:
 /// 'single' (D G2 F/(4|cos θo||cos θi|), pbrt-v4's and Mitsuba's lobe), 'kulla_conty' or
@@ -311,7 +312,8 @@ impl Conductor {
 /// a rough dielectric interface of relative index η = η_inside/η_outside (η > 0, ≠ 1),
 /// reflection and transmission (Walter et al. 2007), as pbrt-v4's; transport 'radiance'
 /// divides a transmitted f by η'² (Veach 1997, §5.2). ``scattering`` as for
-/// ``Conductor`` ('kulla_conty'/'turquin' use the dielectric tables, computed here).
+/// ``Conductor`` ('kulla_conty'/'turquin' use the dielectric tables, computed here). The
+/// NDF's path (fast, or ``exact=True``) as for ``Conductor``.
 #[pyclass(extends = PyBsdf, frozen, module = "microsurface")]
 pub struct Dielectric;
 
@@ -359,8 +361,9 @@ impl Dielectric {
 /// F = 1 (height-correlated G2) and its cosine-weighted average, as energy compensation
 /// uses them: interpolated from the tables the library ships where ``ndf`` is one of them
 /// (isotropic GGX, Beckmann, Double GGX, the Exponential NDF, GTR γ ∈ {1, 2}, α ∈ [0.01,
-/// 4]), else 33 quadratures computed here (tens of milliseconds to seconds; Ctrl-C
-/// interrupts the wait).
+/// 4]), else 33 quadratures computed here on the material's fast kernels (tens of
+/// milliseconds to seconds; Ctrl-C interrupts the wait) and kept for the process: the
+/// compensated BSDFs of the same material reuse them.
 #[pyclass(frozen, module = "microsurface")]
 pub struct AlbedoTable {
     table: std::sync::Arc<Table>,
@@ -398,7 +401,8 @@ impl AlbedoTable {
 /// adaptive quadrature (≤ 1e-9 relative requested, 1e-6 guaranteed): at cos θo = ``mu``
 /// and azimuth ``phi``, broadcast. Each element is a quadrature (milliseconds; the family's
 /// singular members longer): parallel, Ctrl-C between chunks. ``alpha``: an array of
-/// roughnesses broadcast with mu and phi (αy scaled with α).
+/// roughnesses broadcast with mu and phi (αy scaled with α). The integrand runs the NDF's
+/// path (the fast kernels, or the exact path with ``exact=True``).
 #[pyfunction]
 #[pyo3(signature = (ndf, mu, phi = None, alpha = None))]
 fn single_scattering_albedo(

@@ -809,6 +809,9 @@ impl NDF {
 macro_rules! plain {
     ($($(#[$doc:meta])* $name:ident => $kind:ident;)*) => {$(
         $(#[$doc])*
+        ///
+        /// Directions, samplers, BSDFs and albedos run the fast kernels; ``exact=True``: the
+        /// exact path, with ``sampler='posterior'`` or ``'warp'`` (see ``NDF``).
         #[pyclass(extends = NDF, module = "microsurface")]
         pub struct $name;
 
@@ -834,6 +837,9 @@ macro_rules! plain {
 macro_rules! shaped {
     ($($(#[$doc:meta])* $name:ident => $kind:ident, $shape:ident;)*) => {$(
         $(#[$doc])*
+        ///
+        /// Directions, samplers, BSDFs and albedos run the fast kernels; ``exact=True``: the
+        /// exact path, with ``sampler='posterior'`` or ``'warp'`` (see ``NDF``).
         #[pyclass(extends = NDF, module = "microsurface")]
         pub struct $name;
 

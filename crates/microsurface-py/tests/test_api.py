@@ -537,3 +537,13 @@ def test_seeded_fuzz_no_panic_at_the_edges():
             s = b.sample(edge_w[:, None], u3)
             ok = s.lobe > 0
             assert np.all(np.isfinite(s.f[ok])) and np.all(s.pdf[ok] > 0) and np.all(np.isfinite(s.pdf[ok]))
+
+
+def test_version_is_cargos():
+    # __version__ is compiled in from Cargo.toml (PEP 440's spelling), the wheel's version.
+    from importlib import metadata
+
+    assert mf.__version__ == metadata.version("microsurface")
+    with open(os.path.join(os.path.dirname(__file__), "..", "Cargo.toml")) as fh:
+        cargo = next(line.split('"')[1] for line in fh if line.startswith("version"))
+    assert mf.__version__ == cargo.replace("-rc.", "rc").replace("-alpha.", "a").replace("-beta.", "b")
