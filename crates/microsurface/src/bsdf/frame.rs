@@ -9,7 +9,7 @@
 //!   |∂wm/∂wi| = |wi·wm| / (wi·wm + (wo·wm)/η')² (pbrt-v4's form, η' taken relative to wo).
 //!
 //! ```
-//! use microsurface::frame::{refract, reflect, Frame};
+//! use microsurface::bsdf::frame::{refract, reflect, Frame};
 //! let frame = Frame::from_normal_tangent([0.0f32, 0.0, 1.0], [1.0, 0.0, 0.0]);
 //! let wo = frame.to_local([0.6, 0.0, 0.8]);
 //! let wi = reflect(wo, [0.0, 0.0, 1.0]);

@@ -31,7 +31,7 @@
 //!
 //! ```
 //! use microsurface::bsdf::{Bsdf, RoughConductor};
-//! use microsurface::fresnel::Conductor;
+//! use microsurface::bsdf::fresnel::Conductor;
 //! use microsurface::{Exponential, Ggx, Microfacet};
 //! let gold = Conductor { eta: [0.14f32, 0.42, 1.37], k: [3.98, 2.38, 1.60] };
 //! let ggx = RoughConductor::new(Microfacet::<f32, Ggx>::new(0.2, 0.05)?, gold);
