@@ -95,9 +95,11 @@
 //! computed at construction otherwise (0.5–0.8 s). White furnace (importance transport, both
 //! sides) within 1e-3, measured ≤ 1.9e-4 over every NDF (tests/compensate.rs).
 
+pub(crate) mod albedo;
 pub(crate) mod compensation;
 pub mod table;
 pub(crate) mod walk;
 
+pub use albedo::*;
 pub use compensation::*;
 pub use walk::*;

@@ -33,9 +33,9 @@
 
 use crate::distribution::MicrofacetDistribution;
 use crate::ndf::family::NdfKind;
+use crate::scattering::albedo::{single_scattering_albedo_tol, AlbedoSums};
 use crate::scattering::walk::{
-    single_scattering_albedo_tol, AlbedoSums, DielectricFacets, DiffuseFacets, Heights,
-    MirrorFacets, RandomWalk, WalkRng,
+    DielectricFacets, DiffuseFacets, Heights, MirrorFacets, RandomWalk, WalkRng,
 };
 use crate::AnyMicrofacet;
 

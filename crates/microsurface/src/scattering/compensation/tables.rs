@@ -1,14 +1,13 @@
-//! Energy compensation: see the [`crate::scattering`] docs.
+//! The albedo tables of energy compensation: [`AlbedoTable`], [`DielectricTables`], the
+//! shipped data and its file format, and the dielectric tables' generator.
 
 // `!(x > 0)` is the NaN-aware test (false for NaN), on purpose.
 #![allow(clippy::neg_cmp_op_on_partial_ord)]
 
-use crate::bsdf::fresnel::Fresnel;
-use crate::bsdf::{Bsdf, BsdfSample, Lobe, RoughConductor, RoughDielectric, Transport};
 use crate::distribution::{cached, FitCache, MicrofacetDistribution, Sample};
 use crate::fast::Real;
+use crate::scattering::albedo::single_scattering_albedo_tol;
 use crate::scattering::table::Grid;
-use crate::scattering::walk::single_scattering_albedo_tol;
 use crate::AnyMicrofacet;
 use crate::NdfKind;
 use std::marker::PhantomData;
@@ -27,7 +26,7 @@ const DIELECTRIC_NODES: usize = 65;
 
 /// Gauss–Legendre nodes and weights on [0, 1], 8 points (exact for degree 15: the cubic
 /// interpolant times μ on each interval, and the smooth Fresnel averages).
-const GL8: [(f64, f64); 8] = [
+pub(super) const GL8: [(f64, f64); 8] = [
     (0.019_855_071_751_231_856, 0.050_614_268_145_188_13),
     (0.101_666_761_293_186_63, 0.111_190_517_226_687_24),
     (0.237_233_795_041_835_5, 0.156_853_322_938_943_64),
@@ -238,11 +237,11 @@ fn lagrange4(x: f64, n: usize, value: impl Fn(usize) -> f64) -> f64 {
 
 /// The shipped tables: Beckmann, GGX, Double GGX, Exponential, GTR γ = 1.
 const SHIPPED: [&[u8]; 5] = [
-    include_bytes!("../../data/compensation/beckmann.mfa"),
-    include_bytes!("../../data/compensation/ggx.mfa"),
-    include_bytes!("../../data/compensation/double_ggx.mfa"),
-    include_bytes!("../../data/compensation/exponential.mfa"),
-    include_bytes!("../../data/compensation/gtr1.mfa"),
+    include_bytes!("../../../data/compensation/beckmann.mfa"),
+    include_bytes!("../../../data/compensation/ggx.mfa"),
+    include_bytes!("../../../data/compensation/double_ggx.mfa"),
+    include_bytes!("../../../data/compensation/exponential.mfa"),
+    include_bytes!("../../../data/compensation/gtr1.mfa"),
 ];
 
 /// The shipped table `i`, read once.
@@ -255,186 +254,6 @@ fn shipped_grid(i: usize) -> Option<&'static Grid> {
                 .filter(|g| g.spec.mu.len() == NODES && g.spec.alpha.len() >= 4)
         })
         .as_ref()
-}
-
-/// Which compensation: see the [module docs](crate::scattering).
-#[derive(Clone, Copy, Debug, PartialEq, Eq)]
-pub enum Scheme {
-    /// An added diffuse-like lobe (Kulla & Conty 2017).
-    KullaConty,
-    /// The single-scattering lobe scaled (Turquin 2019).
-    Turquin,
-}
-
-/// A rough conductor with its lost energy put back: [`Bsdf`] like the single-scattering
-/// [`RoughConductor`] (f32 or f64; the table and the added lobe in f64), whose F = 1 white
-/// furnace is 1 within the table's interpolation error.
-#[derive(Clone, Debug)]
-pub struct CompensatedConductor<F, D, Fr, const N: usize> {
-    ss: RoughConductor<F, D, Fr, N>,
-    table: Arc<AlbedoTable>,
-    scheme: Scheme,
-    /// Kulla–Conty's F_ms per channel; Turquin's F0.
-    factor: [f64; N],
-}
-
-impl<F: Real, D: MicrofacetDistribution<F>, Fr: Fresnel<F, N>, const N: usize>
-    CompensatedConductor<F, D, Fr, N>
-{
-    /// The compensated conductor of `dist` and `fresnel` (height-correlated G2), with
-    /// [`AlbedoTable::new`]'s table: shipped (microseconds), or **computed here** for a
-    /// material the library does not ship (30–300 ms, once per material and process: the
-    /// table is cached and shared by every Fresnel term and scheme of the material).
-    pub fn new(dist: D, fresnel: Fr, scheme: Scheme) -> Self {
-        let table = AlbedoTable::new(&dist);
-        Self::from_table(dist, fresnel, scheme, table)
-    }
-
-    /// The same with a table built before (one table serves every Fresnel term and scheme
-    /// of a distribution; it must be `dist`'s). No computation.
-    pub fn from_table(
-        dist: D,
-        fresnel: Fr,
-        scheme: Scheme,
-        table: impl Into<Arc<AlbedoTable>>,
-    ) -> Self {
-        let table = table.into();
-        let eval = |mu: f64| fresnel.eval(F::from_f64(mu)).map(F::to_f64);
-        let factor = match scheme {
-            Scheme::Turquin => eval(1.0),
-            Scheme::KullaConty => {
-                // F_avg = 2∫F(μ)μ dμ, 8-point Gauss–Legendre on 16 intervals.
-                let mut f_avg = [0.0; N];
-                for k in 0..16 {
-                    for (x, w) in GL8 {
-                        let mu = (k as f64 + x) / 16.0;
-                        let f = eval(mu);
-                        for c in 0..N {
-                            f_avg[c] += 2.0 * w / 16.0 * f[c] * mu;
-                        }
-                    }
-                }
-                let e = table.e_avg();
-                f_avg.map(|f| f * f * e / (1.0 - f * (1.0 - e)))
-            }
-        };
-        CompensatedConductor {
-            ss: RoughConductor::new(dist, fresnel),
-            table,
-            scheme,
-            factor,
-        }
-    }
-
-    /// The albedo table.
-    pub fn table(&self) -> &Arc<AlbedoTable> {
-        &self.table
-    }
-
-    /// The single-scattering conductor underneath.
-    pub fn single_scattering(&self) -> &RoughConductor<F, D, Fr, N> {
-        &self.ss
-    }
-
-    /// Kulla–Conty's lobe f_ms(μo, μi) without F_ms (0 unless both are above the surface).
-    fn f_ms(&self, mu_o: f64, mu_i: f64) -> f64 {
-        if !(mu_o > 0.0 && mu_i > 0.0) {
-            return 0.0;
-        }
-        let (eo, ei) = (self.table.e(mu_o), self.table.e(mu_i));
-        // (The clamped lobe and its own normalisation: f ≥ 0 where the interpolant overshoots
-        // 1, and the lobe still integrates to 1 − E(μo).)
-        let den = std::f64::consts::PI * self.table.lost_avg();
-        if !(den > 0.0) {
-            return 0.0;
-        }
-        (1.0 - eo).max(0.0) * (1.0 - ei).max(0.0) / den
-    }
-
-    /// Kulla–Conty's probability of sampling the added lobe: 1 − E(μo), its share of the
-    /// energy with F = 1.
-    fn p_ms(&self, mu_o: f64) -> f64 {
-        (1.0 - self.table.e(mu_o)).clamp(0.0, 1.0)
-    }
-}
-
-impl<F: Real, D: MicrofacetDistribution<F>, Fr: Fresnel<F, N>, const N: usize> Bsdf<F>
-    for CompensatedConductor<F, D, Fr, N>
-{
-    type Value = [F; N];
-
-    fn eval(&self, wo: [F; 3], wi: [F; 3]) -> [F; N] {
-        let f = self.ss.eval(wo, wi).map(F::to_f64);
-        let (zo, zi) = (wo[2].to_f64(), wi[2].to_f64());
-        match self.scheme {
-            Scheme::Turquin => {
-                let e = self.table.e(zo.abs());
-                std::array::from_fn(|c| F::from_f64(f[c] * (1.0 + self.factor[c] * (1.0 - e) / e)))
-            }
-            Scheme::KullaConty => {
-                // (Both sides as the single-scattering lobe: wo and wi in one hemisphere.)
-                let ms = if zo * zi > 0.0 {
-                    self.f_ms(zo.abs(), zi.abs())
-                } else {
-                    0.0
-                };
-                std::array::from_fn(|c| F::from_f64(f[c] + ms * self.factor[c]))
-            }
-        }
-    }
-
-    fn pdf(&self, wo: [F; 3], wi: [F; 3]) -> F {
-        let p = self.ss.pdf(wo, wi);
-        match self.scheme {
-            Scheme::Turquin => p,
-            Scheme::KullaConty => {
-                let (zo, zi) = (wo[2].to_f64(), wi[2].to_f64());
-                let q = self.p_ms(zo.abs());
-                let cos = if zo * zi > 0.0 { zi.abs() } else { 0.0 };
-                F::from_f64((1.0 - q) * p.to_f64() + q * cos / std::f64::consts::PI)
-            }
-        }
-    }
-
-    fn sample(&self, wo: [F; 3], uc: F, u: [F; 2]) -> Option<BsdfSample<F, [F; N]>> {
-        match self.scheme {
-            Scheme::Turquin => {
-                let s = self.ss.sample(wo, uc, u)?;
-                if s.specular {
-                    return Some(s);
-                }
-                let f = self.eval(wo, s.wi);
-                Some(BsdfSample { f, ..s })
-            }
-            Scheme::KullaConty => {
-                let q = self.p_ms(wo[2].to_f64().abs());
-                let uc = uc.to_f64();
-                let wi = if uc < q {
-                    // A cosine-weighted direction on wo's side.
-                    let [x, y, z] = crate::bsdf::frame::cosine_hemisphere(u.map(F::to_f64));
-                    [x, y, if wo[2] < F::ZERO { -z } else { z }].map(F::from_f64)
-                } else {
-                    let s = self.ss.sample(wo, F::from_f64((uc - q) / (1.0 - q)), u)?;
-                    if s.specular {
-                        return Some(s);
-                    }
-                    s.wi
-                };
-                let pdf = self.pdf(wo, wi);
-                if !(pdf > F::ZERO && pdf.to_f64().is_finite()) {
-                    return None;
-                }
-                Some(BsdfSample {
-                    wi,
-                    f: self.eval(wo, wi),
-                    pdf,
-                    lobe: Lobe::Reflection,
-                    specular: false,
-                    eta: F::ONE,
-                })
-            }
-        }
-    }
 }
 
 /// The tables of a rough dielectric interface (relative index η = η_inside/η_outside): the
@@ -548,11 +367,11 @@ impl DielectricTables {
                     .map(|&p| {
                         let (sp, cp) = (p * std::f64::consts::FRAC_PI_2).sin_cos();
                         let (r, t) =
-                            crate::scattering::walk::single_scattering_albedo_dielectric_level(
+                            crate::scattering::albedo::single_scattering_albedo_dielectric_level(
                                 dist,
                                 [st * cp, st * sp, z * mu],
                                 eta,
-                                crate::scattering::walk::G2Form::Approximate,
+                                crate::scattering::albedo::G2Form::Approximate,
                                 3,
                             );
                         r + t
@@ -585,11 +404,11 @@ const SHIP_ALPHA: (f64, f64, usize) = (0.01, 4.0, 49);
 
 /// The shipped dielectric tables: Beckmann, GGX, Double GGX, Exponential, GTR γ = 1.
 const SHIPPED_DIELECTRIC: [&[u8]; 5] = [
-    include_bytes!("../../data/compensation/beckmann-dielectric.mfd"),
-    include_bytes!("../../data/compensation/ggx-dielectric.mfd"),
-    include_bytes!("../../data/compensation/double_ggx-dielectric.mfd"),
-    include_bytes!("../../data/compensation/exponential-dielectric.mfd"),
-    include_bytes!("../../data/compensation/gtr1-dielectric.mfd"),
+    include_bytes!("../../../data/compensation/beckmann-dielectric.mfd"),
+    include_bytes!("../../../data/compensation/ggx-dielectric.mfd"),
+    include_bytes!("../../../data/compensation/double_ggx-dielectric.mfd"),
+    include_bytes!("../../../data/compensation/exponential-dielectric.mfd"),
+    include_bytes!("../../../data/compensation/gtr1-dielectric.mfd"),
 ];
 
 /// The shipped dielectric table `i` (its values), read and checked once: the header must
@@ -684,292 +503,6 @@ pub fn dielectric_table_bytes(
     Ok(b)
 }
 
-/// F_avg = 2∫F(μ)μ dμ of the dielectric Fresnel term at relative index η (from the side
-/// where the ray meets η). Below the critical angle (η < 1: μ < μc = √(1 − η²)) F = 1 and
-/// contributes μc²; above it μ = μc + (1 − μc)t² removes F's square-root edge at μc, and
-/// 8-point Gauss–Legendre on 32 intervals in t is exact to 1e-20 (against mpmath, η = 1.5,
-/// 1/1.5, 2.42, 1/2.42, 1/1.05; without the split the kink cost 2e-4).
-fn dielectric_f_avg(eta: f64) -> f64 {
-    let mc = if eta < 1.0 {
-        ((1.0 - eta) * (1.0 + eta)).sqrt()
-    } else {
-        0.0
-    };
-    let mut f_avg = mc * mc;
-    for k in 0..32 {
-        for (x, w) in GL8 {
-            let t = (k as f64 + x) / 32.0;
-            let mu = mc + (1.0 - mc) * t * t;
-            f_avg += 2.0 * w / 32.0
-                * crate::bsdf::fresnel::dielectric(mu, eta)
-                * mu
-                * (1.0 - mc)
-                * 2.0
-                * t;
-        }
-    }
-    f_avg
-}
-
-/// A rough dielectric with its lost energy put back: [`Bsdf`] like the single-scattering
-/// [`RoughDielectric`] (f32 or f64, grey f in N channels; the tables and the added lobes in
-/// f64), whose white furnace (reflection plus transmission, importance
-/// transport) is 1 from both sides within the tables' interpolation error.
-///
-/// * **Kulla & Conty 2017**, two-sided: from side s (outside or inside) the lost energy
-///   1 − E_s(μo) is split into a reflected share 1 − k_s, lobe
-///   (1 − k_s)(1 − E_s(μo))(1 − E_s(μi))/(π(1 − E_avg,s)), and a transmitted share k_s, lobe
-///   k_s(1 − E_s(μo))(1 − E_s̄(μi))/(π(1 − E_avg,s̄)) (s̄ the other side), each of which
-///   integrates to its share. k_out = 1 − F_avg(η), the share a smooth interface transmits
-///   on average; k_in follows from reciprocity, which for importance transport is
-///   f(out → in) = η² f(in → out): k_in = k_out (1 − E_avg,out)/(η²(1 − E_avg,in)); where
-///   that exceeds 1 both are scaled down together. With radiance transport the transmitted
-///   lobe is divided by η'², as [`RoughDielectric`]'s.
-/// * **Turquin 2019**: the single-scattering lobes scaled by 1/E_s(μo) (a dielectric keeps
-///   all its energy, so the factor 1 + F0(1 − E)/E of the conductor becomes 1/E); sampling
-///   is the single-scattering lobes'; not reciprocal (nor is Turquin's conductor).
-///
-/// Sampling (Kulla–Conty): the added lobes with probability 1 − E_s(μo) (transmission
-/// within them with probability k_s), cosine-weighted on their side; the single-scattering
-/// lobes otherwise. An interface at η = 1 or in the smooth limit is the single-scattering
-/// one (its delta lobes lose nothing).
-#[derive(Clone, Debug)]
-pub struct CompensatedDielectric<F, D, const N: usize = 3> {
-    ss: RoughDielectric<F, D, N>,
-    tables: Arc<DielectricTables>,
-    scheme: Scheme,
-    /// k_out, k_in.
-    k: [f64; 2],
-    transport: Transport,
-    smooth: bool,
-}
-
-impl<F: Real, D: MicrofacetDistribution<F>> CompensatedDielectric<F, D, 3> {
-    /// The compensated interface of `dist` at relative index η (> 0), radiance transport, f
-    /// in three (RGB) channels, with [`DielectricTables::new`]'s tables: shipped
-    /// (microseconds), or **computed here** for a material or η the library does not ship
-    /// (0.5–0.8 s isotropic, once per (material, η) and process: the tables are cached).
-    pub fn new(dist: D, eta: F, scheme: Scheme) -> Self {
-        let tables = DielectricTables::new(&dist, eta.to_f64());
-        Self::from_tables(dist, eta, scheme, tables)
-    }
-
-    /// The same with tables computed before (they must be `dist`'s at this η). No
-    /// computation.
-    pub fn from_tables(
-        dist: D,
-        eta: F,
-        scheme: Scheme,
-        tables: impl Into<Arc<DielectricTables>>,
-    ) -> Self {
-        let tables = tables.into();
-        let smooth = eta == F::ONE || dist.effectively_smooth();
-        let eta64 = eta.to_f64();
-        let (lo, li) = (tables.outside.lost_avg(), tables.inside.lost_avg());
-        let k_out = 1.0 - dielectric_f_avg(eta64);
-        let mut k = [k_out, k_out * lo / (eta64 * eta64 * li)];
-        if !(k[1] <= 1.0) {
-            // (Also a lossless side, li = 0, whose lobes are 0 anyway.)
-            let s = if k[1] > 1.0 { 1.0 / k[1] } else { 0.0 };
-            k = [k[0] * s, k[1] * s];
-        }
-        CompensatedDielectric {
-            ss: RoughDielectric::new(dist, eta),
-            tables,
-            scheme,
-            k,
-            transport: Transport::Radiance,
-            smooth,
-        }
-    }
-}
-
-impl<F: Real, D: MicrofacetDistribution<F>, const N: usize> CompensatedDielectric<F, D, N> {
-    /// The same interface with f in M channels.
-    pub fn with_channels<const M: usize>(self) -> CompensatedDielectric<F, D, M> {
-        CompensatedDielectric {
-            ss: self.ss.with_channels(),
-            tables: self.tables,
-            scheme: self.scheme,
-            k: self.k,
-            transport: self.transport,
-            smooth: self.smooth,
-        }
-    }
-
-    /// The same for the other transport direction.
-    pub fn with_transport(mut self, transport: Transport) -> Self {
-        self.ss = self.ss.with_transport(transport);
-        self.transport = transport;
-        self
-    }
-
-    /// The tables.
-    pub fn tables(&self) -> &Arc<DielectricTables> {
-        &self.tables
-    }
-
-    /// The single-scattering interface underneath.
-    pub fn single_scattering(&self) -> &RoughDielectric<F, D, N> {
-        &self.ss
-    }
-
-    /// The table of a side (0 outside, 1 inside).
-    fn table(&self, side: usize) -> &AlbedoTable {
-        if side == 0 {
-            &self.tables.outside
-        } else {
-            &self.tables.inside
-        }
-    }
-
-    /// Kulla–Conty's added f(wo, wi): the reflected lobe of wo's side, or the transmitted one
-    /// (divided by η'² for radiance transport).
-    fn f_ms(&self, wo: [f64; 3], wi: [f64; 3]) -> f64 {
-        let (mo, mi) = (wo[2].abs(), wi[2].abs());
-        if !(mo > 0.0 && mi > 0.0) {
-            return 0.0;
-        }
-        let s = usize::from(wo[2] < 0.0);
-        let lost = 1.0 - self.table(s).e(mo);
-        let crossed = (wi[2] < 0.0) != (wo[2] < 0.0);
-        let t = if crossed { 1 - s } else { s };
-        let share = if crossed { self.k[s] } else { 1.0 - self.k[s] };
-        let den = std::f64::consts::PI * self.table(t).lost_avg();
-        if !(den > 0.0 && lost > 0.0) {
-            return 0.0;
-        }
-        let f = share * lost * (1.0 - self.table(t).e(mi)).max(0.0) / den;
-        if crossed && self.transport == Transport::Radiance {
-            let eta = self.ss.eta().to_f64();
-            let etap = if s == 0 { eta } else { 1.0 / eta };
-            f / (etap * etap)
-        } else {
-            f
-        }
-    }
-
-    /// Kulla–Conty's probability of sampling the added lobes: 1 − E_s(μo).
-    fn p_ms(&self, wo: [f64; 3]) -> f64 {
-        let s = usize::from(wo[2] < 0.0);
-        (1.0 - self.table(s).e(wo[2].abs())).clamp(0.0, 1.0)
-    }
-
-    /// Turquin's factor 1/E_s(μo).
-    fn scale(&self, wo: [f64; 3]) -> f64 {
-        let s = usize::from(wo[2] < 0.0);
-        let e = self.table(s).e(wo[2].abs());
-        if e > 0.0 {
-            1.0 / e
-        } else {
-            1.0
-        }
-    }
-
-    /// The density of a cosine-weighted direction on wi's side, times the probability of
-    /// that side within the added lobes.
-    fn pdf_ms(&self, wo: [f64; 3], wi: [f64; 3]) -> f64 {
-        let s = usize::from(wo[2] < 0.0);
-        let crossed = (wi[2] < 0.0) != (wo[2] < 0.0);
-        let side = if crossed { self.k[s] } else { 1.0 - self.k[s] };
-        side * wi[2].abs() / std::f64::consts::PI
-    }
-
-    /// f in one channel.
-    fn eval_grey(&self, wo: [F; 3], wi: [F; 3]) -> F {
-        let f = self.ss.eval_grey(wo, wi);
-        if self.smooth {
-            return f;
-        }
-        let (o, i) = (wo.map(F::to_f64), wi.map(F::to_f64));
-        F::from_f64(match self.scheme {
-            Scheme::Turquin => f.to_f64() * self.scale(o),
-            Scheme::KullaConty => f.to_f64() + self.f_ms(o, i),
-        })
-    }
-
-    /// A sample with f in one channel.
-    fn sample_grey(&self, wo: [F; 3], uc: F, u: [F; 2]) -> Option<BsdfSample<F, F>> {
-        if self.smooth {
-            return self.ss.sample_grey(wo, uc, u);
-        }
-        let o = wo.map(F::to_f64);
-        match self.scheme {
-            Scheme::Turquin => {
-                let s = self.ss.sample_grey(wo, uc, u)?;
-                Some(BsdfSample {
-                    f: F::from_f64(s.f.to_f64() * self.scale(o)),
-                    ..s
-                })
-            }
-            Scheme::KullaConty => {
-                let q = self.p_ms(o);
-                let ucf = uc.to_f64();
-                let wi = if ucf < q {
-                    // The added lobes: the side by k_s, then a cosine-weighted direction.
-                    let s = usize::from(o[2] < 0.0);
-                    let v = ucf / q;
-                    let crossed = v < self.k[s];
-                    let [x, y, z] = crate::bsdf::frame::cosine_hemisphere(u.map(F::to_f64));
-                    let up = (o[2] > 0.0) != crossed;
-                    [x, y, if up { z } else { -z }].map(F::from_f64)
-                } else {
-                    let s = self
-                        .ss
-                        .sample_grey(wo, F::from_f64((ucf - q) / (1.0 - q)), u)?;
-                    s.wi
-                };
-                let pdf = self.pdf(wo, wi);
-                if !(pdf > F::ZERO && pdf.to_f64().is_finite()) || wi[2] == F::ZERO {
-                    return None;
-                }
-                let crossed = (wi[2] < F::ZERO) != (wo[2] < F::ZERO);
-                let eta = self.ss.eta();
-                Some(BsdfSample {
-                    wi,
-                    f: self.eval_grey(wo, wi),
-                    pdf,
-                    lobe: if crossed {
-                        Lobe::Transmission
-                    } else {
-                        Lobe::Reflection
-                    },
-                    specular: false,
-                    eta: match (crossed, wo[2] > F::ZERO) {
-                        (false, _) => F::ONE,
-                        (true, true) => eta,
-                        (true, false) => F::ONE / eta,
-                    },
-                })
-            }
-        }
-    }
-}
-
-impl<F: Real, D: MicrofacetDistribution<F>, const N: usize> Bsdf<F>
-    for CompensatedDielectric<F, D, N>
-{
-    type Value = [F; N];
-
-    fn eval(&self, wo: [F; 3], wi: [F; 3]) -> [F; N] {
-        [self.eval_grey(wo, wi); N]
-    }
-
-    fn pdf(&self, wo: [F; 3], wi: [F; 3]) -> F {
-        let p = self.ss.pdf_grey(wo, wi);
-        if self.smooth || self.scheme == Scheme::Turquin {
-            return p;
-        }
-        let (o, i) = (wo.map(F::to_f64), wi.map(F::to_f64));
-        let q = self.p_ms(o);
-        F::from_f64((1.0 - q) * p.to_f64() + q * self.pdf_ms(o, i))
-    }
-
-    fn sample(&self, wo: [F; 3], uc: F, u: [F; 2]) -> Option<BsdfSample<F, [F; N]>> {
-        self.sample_grey(wo, uc, u).map(|s| s.map_f(|f| [f; N]))
-    }
-}
-
 /// A distribution of precision F seen as an f64 one (arguments rounded to F, values
 /// widened): the tables of a distribution that does not name its NDF.
 struct Widened<'a, F, D>(&'a D, PhantomData<F>);
@@ -1018,32 +551,5 @@ impl<F: Real, D: MicrofacetDistribution<F>> MicrofacetDistribution<f64> for Wide
     }
     fn effectively_smooth(&self) -> bool {
         self.0.effectively_smooth()
-    }
-}
-
-#[cfg(test)]
-mod tests {
-    use super::dielectric_f_avg;
-
-    /// The hemispherical Fresnel average against the reciprocity of the averaged
-    /// transmittance, 1 − F_avg(1/η) = (1 − F_avg(η))/η² (the kink at the critical angle
-    /// is on the 1/η side), and against values integrated with mpmath (30 digits).
-    #[test]
-    fn fresnel_average() {
-        for eta in [1.05, 1.33, 1.5, 2.42, 3.0] {
-            let (out, inside) = (dielectric_f_avg(eta), dielectric_f_avg(1.0 / eta));
-            assert!(
-                ((1.0 - inside) - (1.0 - out) / (eta * eta)).abs() < 1e-14,
-                "η={eta}: {out} {inside}"
-            );
-        }
-        for (eta, want) in [
-            (1.5, 0.091_777_959_342_351_21),
-            (1.0 / 1.5, 0.596_345_759_707_711_8),
-            (2.42, 0.212_540_794_738_842_13),
-            (1.0 / 2.42, 0.865_538_691_813_886),
-        ] {
-            assert!((dielectric_f_avg(eta) - want).abs() < 1e-15, "η={eta}");
-        }
     }
 }

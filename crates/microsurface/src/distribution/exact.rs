@@ -1,0 +1,184 @@
+//! [`Exact`], the validated f64 path of every NDF: see the [`crate::distribution`] docs.
+
+// `!(x > 0)` is the NaN-aware test (false for NaN) on a generic `Real`, on purpose.
+#![allow(clippy::neg_cmp_op_on_partial_ord)]
+
+use super::kernels::{Isotropic, Microsurface, Shaped, Stretched};
+use super::{MicrofacetDistribution, Sample};
+use crate::math::vec3::Vec3;
+use crate::sampling::visible::UnitSlopes;
+use crate::{Gtr, ParamError};
+
+/// The exact path of a [`Microfacet`] material (f64): see [`Microfacet::exact`].
+///
+/// [`Microfacet`]: crate::Microfacet
+/// [`Microfacet::exact`]: crate::Microfacet::exact
+#[derive(Clone, Copy, Debug)]
+pub struct Exact {
+    pub(super) alpha: (f64, f64),
+    pub(super) inner: ExactInner,
+}
+
+#[derive(Clone, Copy, Debug)]
+pub(super) enum ExactInner {
+    Stretched(Stretched),
+    Gtr(Isotropic<Gtr>),
+    Shaped(Shaped),
+}
+
+impl Exact {
+    /// The exact path of NDF `kind` at roughness (αx, αy) with its shape parameter `gamma`
+    /// where it has one ([`crate::NdfKind::shape_name`]: γ of GTR, Student-T and the
+    /// generalised exponential, a of Bessel-K), for an NDF chosen at run time (command lines,
+    /// sweeps); [`Microfacet::exact`] is the same for a material built at compile time. GTR:
+    /// isotropic at γ ≠ 2, as [`Microfacet::gtr`]. The family's other NDFs (Student-T, Ei,
+    /// Erfc, K0, Bessel-K, generalised exponential) are anisotropic by stretching, with visible
+    /// normals by the exact slope-space inversion (quadratures: tens of microseconds a sample);
+    /// Student-T needs γ > 3/2 here (Λ is infinite below). Typed errors as the constructors'.
+    ///
+    /// [`Microfacet::exact`]: crate::Microfacet::exact
+    /// [`Microfacet::gtr`]: crate::Microfacet::gtr
+    pub fn new(
+        kind: crate::NdfKind,
+        alpha_x: f64,
+        alpha_y: f64,
+        gamma: Option<f64>,
+    ) -> Result<Exact, ParamError> {
+        use crate::NdfKind as K;
+        let (ax, ay) = (
+            crate::error::check_alpha(alpha_x)?,
+            crate::error::check_alpha(alpha_y)?,
+        );
+        let unit = match kind {
+            K::Beckmann => UnitSlopes::Beckmann,
+            K::Ggx => UnitSlopes::Ggx,
+            K::DoubleGgx => UnitSlopes::DoubleGgx,
+            K::Exponential => UnitSlopes::Exponential,
+            K::StudentT | K::Ei | K::Erfc | K::K0 | K::BesselK | K::GenExponential => {
+                let ndf = crate::AnyNdf::new(kind, ax, gamma)?;
+                if let crate::AnyNdf::StudentT(t) = ndf {
+                    if !t.has_finite_lambda() {
+                        return Err(ParamError::Shape {
+                            name: "student_t gamma (visible normals and G need a finite Lambda)",
+                            range: "(1.5, 1e6]",
+                            value: t.gamma(),
+                        });
+                    }
+                }
+                return Ok(Exact {
+                    alpha: (ax, ay),
+                    inner: ExactInner::Shaped(Shaped::new(&ndf, ax, ay)?),
+                });
+            }
+            K::Gtr => {
+                let gamma = crate::error::check_gamma(gamma.unwrap_or(f64::NAN))?;
+                if gamma == 2.0 {
+                    UnitSlopes::Ggx
+                } else if ax != ay {
+                    return Err(ParamError::Anisotropic(gamma));
+                } else {
+                    return Ok(Exact {
+                        alpha: (ax, ay),
+                        inner: ExactInner::Gtr(Isotropic(Gtr::new(ax, gamma)?)),
+                    });
+                }
+            }
+        };
+        Ok(Exact::stretched(unit, ax, ay))
+    }
+
+    pub(super) fn stretched(kind: UnitSlopes, ax: f64, ay: f64) -> Exact {
+        Exact {
+            alpha: (ax, ay),
+            inner: ExactInner::Stretched(Stretched::raw(kind, ax, ay)),
+        }
+    }
+
+    /// The projected area σ(w) = ∫ max(0, w·m) D(m) dm = |w.z| (1 + Λ(w)) (finite at grazing,
+    /// where it is σ(0) of the azimuth), for w mirrored to the upper hemisphere.
+    pub fn sigma(&self, w: [f64; 3]) -> f64 {
+        let w = Vec3::from(w);
+        self.surface().sigma(if w.z < 0.0 { -w } else { w })
+    }
+
+    fn surface(&self) -> &dyn Microsurface {
+        match &self.inner {
+            ExactInner::Stretched(s) => s,
+            ExactInner::Gtr(g) => g,
+            ExactInner::Shaped(g) => g,
+        }
+    }
+
+    /// The u that [`MicrofacetDistribution::sample`] maps to wm (the exact samplers are invertible
+    /// warps); NaN for a normal no sampler returns.
+    pub fn invert(&self, w: [f64; 3], wm: [f64; 3]) -> [f64; 2] {
+        self.surface().invert_visible(Vec3::from(w), Vec3::from(wm))
+    }
+
+    /// The u that [`MicrofacetDistribution::sample_dcos`] maps to wm.
+    pub fn invert_dcos(&self, wm: [f64; 3]) -> [f64; 2] {
+        self.surface().invert_dcos(Vec3::from(wm))
+    }
+}
+
+impl MicrofacetDistribution<f64> for Exact {
+    fn alpha(&self) -> (f64, f64) {
+        self.alpha
+    }
+    fn ndf(&self) -> Option<(crate::NdfKind, Option<f64>)> {
+        Some(match &self.inner {
+            ExactInner::Stretched(s) => (s.kind().kind(), None),
+            ExactInner::Gtr(g) => (crate::NdfKind::Gtr, Some(g.0.gamma())),
+            ExactInner::Shaped(g) => (g.unit().kind(), g.unit().shape()),
+        })
+    }
+    fn d(&self, wm: [f64; 3]) -> f64 {
+        self.surface().d(Vec3::from(wm))
+    }
+    fn lambda(&self, w: [f64; 3]) -> f64 {
+        self.surface().lambda(Vec3::from(w))
+    }
+    fn sample_wm(&self, w: [f64; 3], u: [f64; 2]) -> [f64; 3] {
+        self.surface().sample_visible(Vec3::from(w), u).into()
+    }
+    /// As the trait's: for the Beckmann mixtures of the family (Student-T, Ei, Erfc, K0,
+    /// Bessel-K) above the horizon, the posterior of the mixing variable
+    /// (`Shaped::sample_visible_stream`: ≤ 2 candidates on average, then Beckmann's stream
+    /// sampler; Bessel-K's exact warp inverts a CDF that integrates K_ν); `None` otherwise.
+    fn sample_wm_stream(&self, v: [f64; 3], uniform: &mut dyn FnMut() -> f64) -> Option<[f64; 3]> {
+        match &self.inner {
+            ExactInner::Shaped(s) => s
+                .sample_visible_stream(Vec3::from(v), uniform)
+                .map(Into::into),
+            _ => None,
+        }
+    }
+    fn sample_dcos(&self, u: [f64; 2]) -> Sample<f64> {
+        let s = self.surface();
+        let wm = s.sample_dcos(u);
+        Sample {
+            wm: wm.into(),
+            pdf: s.pdf_dcos(wm),
+        }
+    }
+    /// As the trait's, for w and wm of any finite nonzero length (normalised here), in the
+    /// form max(0, w·wm) D(wm)/σ(w) (finite at grazing w).
+    fn d_visible(&self, w: [f64; 3], wm: [f64; 3]) -> f64 {
+        let (w, wm) = (Vec3::from(w).to_unit(), Vec3::from(wm).to_unit());
+        let w = if w.z < 0.0 { -w } else { w };
+        let c = w.dot(wm);
+        if !(c > 0.0 && wm.z > 0.0) {
+            return if c.is_nan() || wm.z.is_nan() {
+                f64::NAN
+            } else {
+                0.0
+            };
+        }
+        let s = self.surface();
+        c * s.d(wm) / s.sigma(w)
+    }
+    /// As the trait's, for wm of any finite nonzero length (normalised here).
+    fn pdf_dcos(&self, wm: [f64; 3]) -> f64 {
+        self.surface().pdf_dcos(Vec3::from(wm))
+    }
+}

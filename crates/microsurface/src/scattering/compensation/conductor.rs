@@ -1,0 +1,183 @@
+//! The compensated rough conductor.
+
+// `!(x > 0)` is the NaN-aware test (false for NaN), on purpose.
+#![allow(clippy::neg_cmp_op_on_partial_ord)]
+
+use super::tables::{AlbedoTable, GL8};
+use super::Scheme;
+use crate::bsdf::fresnel::Fresnel;
+use crate::bsdf::{Bsdf, BsdfSample, Lobe, RoughConductor};
+use crate::distribution::MicrofacetDistribution;
+use crate::fast::Real;
+use std::sync::Arc;
+
+/// A rough conductor with its lost energy put back: [`Bsdf`] like the single-scattering
+/// [`RoughConductor`] (f32 or f64; the table and the added lobe in f64), whose F = 1 white
+/// furnace is 1 within the table's interpolation error.
+#[derive(Clone, Debug)]
+pub struct CompensatedConductor<F, D, Fr, const N: usize> {
+    ss: RoughConductor<F, D, Fr, N>,
+    table: Arc<AlbedoTable>,
+    scheme: Scheme,
+    /// Kulla–Conty's F_ms per channel; Turquin's F0.
+    factor: [f64; N],
+}
+
+impl<F: Real, D: MicrofacetDistribution<F>, Fr: Fresnel<F, N>, const N: usize>
+    CompensatedConductor<F, D, Fr, N>
+{
+    /// The compensated conductor of `dist` and `fresnel` (height-correlated G2), with
+    /// [`AlbedoTable::new`]'s table: shipped (microseconds), or **computed here** for a
+    /// material the library does not ship (30–300 ms, once per material and process: the
+    /// table is cached and shared by every Fresnel term and scheme of the material).
+    pub fn new(dist: D, fresnel: Fr, scheme: Scheme) -> Self {
+        let table = AlbedoTable::new(&dist);
+        Self::from_table(dist, fresnel, scheme, table)
+    }
+
+    /// The same with a table built before (one table serves every Fresnel term and scheme
+    /// of a distribution; it must be `dist`'s). No computation.
+    pub fn from_table(
+        dist: D,
+        fresnel: Fr,
+        scheme: Scheme,
+        table: impl Into<Arc<AlbedoTable>>,
+    ) -> Self {
+        let table = table.into();
+        let eval = |mu: f64| fresnel.eval(F::from_f64(mu)).map(F::to_f64);
+        let factor = match scheme {
+            Scheme::Turquin => eval(1.0),
+            Scheme::KullaConty => {
+                // F_avg = 2∫F(μ)μ dμ, 8-point Gauss–Legendre on 16 intervals.
+                let mut f_avg = [0.0; N];
+                for k in 0..16 {
+                    for (x, w) in GL8 {
+                        let mu = (k as f64 + x) / 16.0;
+                        let f = eval(mu);
+                        for c in 0..N {
+                            f_avg[c] += 2.0 * w / 16.0 * f[c] * mu;
+                        }
+                    }
+                }
+                let e = table.e_avg();
+                f_avg.map(|f| f * f * e / (1.0 - f * (1.0 - e)))
+            }
+        };
+        CompensatedConductor {
+            ss: RoughConductor::new(dist, fresnel),
+            table,
+            scheme,
+            factor,
+        }
+    }
+
+    /// The albedo table.
+    pub fn table(&self) -> &Arc<AlbedoTable> {
+        &self.table
+    }
+
+    /// The single-scattering conductor underneath.
+    pub fn single_scattering(&self) -> &RoughConductor<F, D, Fr, N> {
+        &self.ss
+    }
+
+    /// Kulla–Conty's lobe f_ms(μo, μi) without F_ms (0 unless both are above the surface).
+    fn f_ms(&self, mu_o: f64, mu_i: f64) -> f64 {
+        if !(mu_o > 0.0 && mu_i > 0.0) {
+            return 0.0;
+        }
+        let (eo, ei) = (self.table.e(mu_o), self.table.e(mu_i));
+        // (The clamped lobe and its own normalisation: f ≥ 0 where the interpolant overshoots
+        // 1, and the lobe still integrates to 1 − E(μo).)
+        let den = std::f64::consts::PI * self.table.lost_avg();
+        if !(den > 0.0) {
+            return 0.0;
+        }
+        (1.0 - eo).max(0.0) * (1.0 - ei).max(0.0) / den
+    }
+
+    /// Kulla–Conty's probability of sampling the added lobe: 1 − E(μo), its share of the
+    /// energy with F = 1.
+    fn p_ms(&self, mu_o: f64) -> f64 {
+        (1.0 - self.table.e(mu_o)).clamp(0.0, 1.0)
+    }
+}
+
+impl<F: Real, D: MicrofacetDistribution<F>, Fr: Fresnel<F, N>, const N: usize> Bsdf<F>
+    for CompensatedConductor<F, D, Fr, N>
+{
+    type Value = [F; N];
+
+    fn eval(&self, wo: [F; 3], wi: [F; 3]) -> [F; N] {
+        let f = self.ss.eval(wo, wi).map(F::to_f64);
+        let (zo, zi) = (wo[2].to_f64(), wi[2].to_f64());
+        match self.scheme {
+            Scheme::Turquin => {
+                let e = self.table.e(zo.abs());
+                std::array::from_fn(|c| F::from_f64(f[c] * (1.0 + self.factor[c] * (1.0 - e) / e)))
+            }
+            Scheme::KullaConty => {
+                // (Both sides as the single-scattering lobe: wo and wi in one hemisphere.)
+                let ms = if zo * zi > 0.0 {
+                    self.f_ms(zo.abs(), zi.abs())
+                } else {
+                    0.0
+                };
+                std::array::from_fn(|c| F::from_f64(f[c] + ms * self.factor[c]))
+            }
+        }
+    }
+
+    fn pdf(&self, wo: [F; 3], wi: [F; 3]) -> F {
+        let p = self.ss.pdf(wo, wi);
+        match self.scheme {
+            Scheme::Turquin => p,
+            Scheme::KullaConty => {
+                let (zo, zi) = (wo[2].to_f64(), wi[2].to_f64());
+                let q = self.p_ms(zo.abs());
+                let cos = if zo * zi > 0.0 { zi.abs() } else { 0.0 };
+                F::from_f64((1.0 - q) * p.to_f64() + q * cos / std::f64::consts::PI)
+            }
+        }
+    }
+
+    fn sample(&self, wo: [F; 3], uc: F, u: [F; 2]) -> Option<BsdfSample<F, [F; N]>> {
+        match self.scheme {
+            Scheme::Turquin => {
+                let s = self.ss.sample(wo, uc, u)?;
+                if s.specular {
+                    return Some(s);
+                }
+                let f = self.eval(wo, s.wi);
+                Some(BsdfSample { f, ..s })
+            }
+            Scheme::KullaConty => {
+                let q = self.p_ms(wo[2].to_f64().abs());
+                let uc = uc.to_f64();
+                let wi = if uc < q {
+                    // A cosine-weighted direction on wo's side.
+                    let [x, y, z] = crate::bsdf::frame::cosine_hemisphere(u.map(F::to_f64));
+                    [x, y, if wo[2] < F::ZERO { -z } else { z }].map(F::from_f64)
+                } else {
+                    let s = self.ss.sample(wo, F::from_f64((uc - q) / (1.0 - q)), u)?;
+                    if s.specular {
+                        return Some(s);
+                    }
+                    s.wi
+                };
+                let pdf = self.pdf(wo, wi);
+                if !(pdf > F::ZERO && pdf.to_f64().is_finite()) {
+                    return None;
+                }
+                Some(BsdfSample {
+                    wi,
+                    f: self.eval(wo, wi),
+                    pdf,
+                    lobe: Lobe::Reflection,
+                    specular: false,
+                    eta: F::ONE,
+                })
+            }
+        }
+    }
+}
