@@ -185,6 +185,11 @@ fn main() {
         microfacet_type(&i, big);
         return;
     }
+    if std::env::var("MICROSURFACE_BENCH").as_deref() == Ok("any") {
+        // Only the run-time door against the static type.
+        any_door(&i, big);
+        return;
+    }
     if std::env::var("MICROSURFACE_BENCH").as_deref() == Ok("matrix") {
         // Only the table of every fast quantity.
         matrix(&i, big);
@@ -603,6 +608,173 @@ fn family_fast_paths(i: &Inputs, calls: usize) {
     family!("Erfc", Erfc, None);
     family!("K0", K0, None);
     family!("Bessel-K a = 1.5", BesselK, Some(1.5));
+}
+
+/// The run-time door: `AnyMicrofacet<F>` (materials built from a kind chosen at run time)
+/// against the static `Microfacet<F, N>` of the same material, for every NDF with a fast
+/// path, f64: Λ(w), a visible-normal sample with its pdf, and a rough-conductor eval+pdf
+/// (gold, RGB), each the median of 15 runs, the two interleaved in one process; the ratio is
+/// the door's cost (the issue-35 target: ≤ 1.1×).
+fn any_door(i: &Inputs, calls: usize) {
+    use microsurface::bsdf::fresnel::Conductor;
+    use microsurface::bsdf::{Bsdf, RoughConductor};
+    use microsurface::{AnyMicrofacet, BesselK, DoubleGgx, Ei, Erfc, Exponential, StudentT, K0};
+    println!();
+    println!("the run-time door: AnyMicrofacet<f64> / Microfacet<f64, N> (α = 0.3 × 0.2, random directions)");
+    let w: Vec<[f64; 3]> = i.w.iter().map(|w| [w.x, w.y, w.z]).collect();
+    let gold = Conductor {
+        eta: [0.14, 0.42, 1.37],
+        k: [3.98, 2.38, 1.60],
+    };
+    fn rows<D: MicrofacetDistribution<f64> + Clone>(
+        name: &str,
+        s: D,
+        a: AnyMicrofacet<f64>,
+        i: &Inputs,
+        w: &[[f64; 3]],
+        gold: Conductor<f64, 3>,
+        calls: usize,
+    ) {
+        let n = w.len();
+        let (cs, ca) = (
+            RoughConductor::new(s.clone(), gold),
+            RoughConductor::new(a.clone(), gold),
+        );
+        let lam = |d: &dyn Fn(usize) -> f64| time(calls, d);
+        let (ls, la) = (
+            lam(&|k| s.lambda(black_box(w[k]))),
+            lam(&|k| a.lambda(black_box(w[k]))),
+        );
+        let (ss, sa) = (
+            time(calls, |k| s.sample(black_box(w[k]), i.xi[k]).pdf),
+            time(calls, |k| a.sample(black_box(w[k]), i.xi[k]).pdf),
+        );
+        let (es, ea) = (
+            time(calls, |k| {
+                let wi = w[(k + 1) % n];
+                cs.eval(black_box(w[k]), wi)[1] + cs.pdf(w[k], wi)
+            }),
+            time(calls, |k| {
+                let wi = w[(k + 1) % n];
+                ca.eval(black_box(w[k]), wi)[1] + ca.pdf(w[k], wi)
+            }),
+        );
+        println!(
+            "{name:20} Λ {ls:6.1} / {la:6.1} ns {:5.2}× | sample {ss:6.1} / {sa:6.1} ns {:5.2}× | conductor eval+pdf {es:6.1} / {ea:6.1} ns {:5.2}×",
+            la / ls,
+            sa / ss,
+            ea / es
+        );
+    }
+    // Materials built per shading point with a textured α: the first of a shape fits Λ₁,
+    // the others find the fit in the process-wide cache.
+    for spec in ["student_t:2.5", "ei", "bessel_k:0.7", "ggx"] {
+        let t = Instant::now();
+        let first = AnyMicrofacet::<f32>::parse(spec, 0.25, 0.25).unwrap();
+        let first_ms = t.elapsed().as_secs_f64() * 1e3;
+        let t = Instant::now();
+        let mut acc = first.alpha().0;
+        for k in 0..10_000 {
+            let a = (0.05 + 0.9 * k as f64 / 10_000.0) as f32;
+            acc += AnyMicrofacet::<f32>::parse(spec, a, a).unwrap().alpha().0;
+        }
+        black_box(acc);
+        let per = t.elapsed().as_secs_f64() * 1e9 / 10_000.0;
+        println!("{spec:20} first material {first_ms:8.2} ms (the fit, or none); then {per:8.1} ns a material (10⁴ distinct α)");
+    }
+    let (ax, ay) = (0.3, 0.2);
+    let any = |spec: &str| AnyMicrofacet::<f64>::parse(spec, ax, ay).unwrap();
+    rows(
+        "GGX",
+        Microfacet::<f64, Ggx>::new(ax, ay).unwrap(),
+        any("ggx"),
+        i,
+        &w,
+        gold,
+        calls,
+    );
+    rows(
+        "Beckmann",
+        Microfacet::<f64, Beckmann>::new(ax, ay).unwrap(),
+        any("beckmann"),
+        i,
+        &w,
+        gold,
+        calls,
+    );
+    rows(
+        "Double GGX",
+        Microfacet::<f64, DoubleGgx>::new(ax, ay).unwrap(),
+        any("double_ggx"),
+        i,
+        &w,
+        gold,
+        calls,
+    );
+    rows(
+        "Exponential",
+        Microfacet::<f64, Exponential>::new(ax, ay).unwrap(),
+        any("exponential"),
+        i,
+        &w,
+        gold,
+        calls,
+    );
+    let gtr = |g| Microfacet::<f64, Gtr>::gtr(ax, ax, g).unwrap();
+    rows(
+        "GTR γ = 1.5 (iso)",
+        gtr(1.5),
+        AnyMicrofacet::parse("gtr:1.5", ax, ax).unwrap(),
+        i,
+        &w,
+        gold,
+        calls,
+    );
+    rows(
+        "Student-T γ = 2.5",
+        Microfacet::<f64, StudentT>::with_shape(ax, ay, Some(2.5)).unwrap(),
+        any("student_t:2.5"),
+        i,
+        &w,
+        gold,
+        calls,
+    );
+    rows(
+        "Ei",
+        Microfacet::<f64, Ei>::with_shape(ax, ay, None).unwrap(),
+        any("ei"),
+        i,
+        &w,
+        gold,
+        calls,
+    );
+    rows(
+        "Erfc",
+        Microfacet::<f64, Erfc>::with_shape(ax, ay, None).unwrap(),
+        any("erfc"),
+        i,
+        &w,
+        gold,
+        calls,
+    );
+    rows(
+        "K0",
+        Microfacet::<f64, K0>::with_shape(ax, ay, None).unwrap(),
+        any("k0"),
+        i,
+        &w,
+        gold,
+        calls,
+    );
+    rows(
+        "Bessel-K a = 0.7",
+        Microfacet::<f64, BesselK>::with_shape(ax, ay, Some(0.7)).unwrap(),
+        any("bessel_k:0.7"),
+        i,
+        &w,
+        gold,
+        calls,
+    );
 }
 
 /// Every quantity of every fast path in f64 and f32, one row per NDF: D, Λ, G1, G2
