@@ -1,13 +1,16 @@
-//! The BSDFs (`Conductor`, `Dielectric`) with their scattering model (single scattering,
-//! Kulla–Conty or Turquin energy compensation, the random walk), and the albedo tables.
+//! The BSDFs: the base class `BSDF` (eval, pdf, sample over any [`Bsdf`] of the library,
+//! its value written as channels) and its subclasses `Conductor` and `Dielectric`, with
+//! their scattering model (single scattering, Kulla–Conty or Turquin energy compensation,
+//! the random walk).
 
+use crate::engine::{apply_vec, map_vec, named, v3};
 use crate::material::Material;
-use crate::{apply_vec, map_vec, named, v3, wo_of, NDF};
+use crate::ndf::NDF;
 use microsurface::bsdf::fresnel::{self, Fresnel};
 use microsurface::bsdf::{self, Bsdf, Lobe, Masking, Transport};
 use microsurface::scattering::{
-    AlbedoTable as Table, CompensatedConductor, CompensatedDielectric, DielectricFacets, Facets,
-    MirrorFacets, MultipleScattering, Scheme,
+    CompensatedConductor, CompensatedDielectric, DielectricFacets, Facets, MirrorFacets,
+    MultipleScattering, Scheme,
 };
 use pyo3::exceptions::PyValueError;
 use pyo3::prelude::*;
@@ -357,87 +360,10 @@ impl Dielectric {
     }
 }
 
-/// AlbedoTable(ndf): the directional albedo E(μ) of the single-scattering conductor with
-/// F = 1 (height-correlated G2) and its cosine-weighted average, as energy compensation
-/// uses them: interpolated from the tables the library ships where ``ndf`` is one of them
-/// (isotropic GGX, Beckmann, Double GGX, the Exponential NDF, GTR γ ∈ {1, 2}, α ∈ [0.01,
-/// 4]), else 33 quadratures computed here on the material's fast kernels (tens of
-/// milliseconds to seconds; Ctrl-C interrupts the wait) and kept for the process: the
-/// compensated BSDFs of the same material reuse them.
-#[pyclass(frozen, module = "microsurface")]
-pub struct AlbedoTable {
-    table: std::sync::Arc<Table>,
-}
-
-#[pymethods]
-impl AlbedoTable {
-    #[new]
-    fn new(py: Python<'_>, ndf: PyRef<'_, NDF>) -> PyResult<Self> {
-        let d = ndf.material()?.clone();
-        let table = crate::engine::interruptible(py, move || Table::new(&d))?;
-        Ok(AlbedoTable { table })
-    }
-
-    /// E(μ), cubic in √μ between the nodes, vectorised over μ.
-    fn e(&self, py: Python<'_>, mu: &Bound<'_, PyAny>) -> PyResult<PyObject> {
-        let t = &self.table;
-        map_vec(py, &[(mu, 0, "mu")], |a| t.e(a[0][0]))
-    }
-
-    /// E_avg = 2∫E(μ)μ dμ.
-    #[getter]
-    fn e_avg(&self) -> f64 {
-        self.table.e_avg()
-    }
-
-    /// The energy single scattering loses, averaged: 2∫max(0, 1 − E(μ))μ dμ.
-    #[getter]
-    fn lost_avg(&self) -> f64 {
-        self.table.lost_avg()
-    }
-}
-
-/// The single-scattering albedo E₁(wo) of the F = 1 conductor (height-correlated G2) by
-/// adaptive quadrature (≤ 1e-9 relative requested, 1e-6 guaranteed): at cos θo = ``mu``
-/// and azimuth ``phi``, broadcast. Each element is a quadrature (milliseconds; the family's
-/// singular members longer): parallel, Ctrl-C between chunks. ``alpha``: an array of
-/// roughnesses broadcast with mu and phi (αy scaled with α). The integrand runs the NDF's
-/// path (the fast kernels, or the exact path with ``exact=True``).
-#[pyfunction]
-#[pyo3(signature = (ndf, mu, phi = None, alpha = None))]
-fn single_scattering_albedo(
-    py: Python<'_>,
-    ndf: PyRef<'_, NDF>,
-    mu: &Bound<'_, PyAny>,
-    phi: Option<&Bound<'_, PyAny>>,
-    alpha: Option<&Bound<'_, PyAny>>,
-) -> PyResult<PyObject> {
-    if alpha.is_none() {
-        ndf.material()?;
-    }
-    // (A copy: the loop runs without the GIL.)
-    let ndf: NDF = (*ndf).clone();
-    let zero = pyo3::types::PyFloat::new(py, 0.0).into_any();
-    let nan = pyo3::types::PyFloat::new(py, f64::NAN).into_any();
-    let phi = phi.unwrap_or(&zero);
-    let items = [
-        (mu, 0, "mu"),
-        (phi, 0, "phi"),
-        (alpha.unwrap_or(&nan), 0, "alpha"),
-    ];
-    let mut o = apply_vec(py, &items, &[0], 2, |_, a, o| {
-        let d = ndf.material_at(a[2][0])?;
-        o[0] = microsurface::scattering::single_scattering_albedo(&d, wo_of(a[0][0], a[1][0]));
-        Ok(())
-    })?;
-    Ok(o.remove(0))
-}
-
+/// Adds `BSDF`, `Conductor` and `Dielectric` to the module.
 pub fn register(m: &Bound<'_, PyModule>) -> PyResult<()> {
     m.add_class::<PyBsdf>()?;
     m.add_class::<Conductor>()?;
     m.add_class::<Dielectric>()?;
-    m.add_class::<AlbedoTable>()?;
-    m.add_function(wrap_pyfunction!(single_scattering_albedo, m)?)?;
     Ok(())
 }

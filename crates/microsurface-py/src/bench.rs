@@ -1,0 +1,82 @@
+//! A benchmark hook, not API: `_rust_slice_ns`, which benchmark.py calls to time the Rust
+//! slice forms in the Python process beside the Python calls. Its leading underscore keeps
+//! it out of the package's namespace and its stubs; it may change with the benchmark.
+
+use pyo3::exceptions::PyValueError;
+use pyo3::prelude::*;
+use rayon::prelude::*;
+
+/// A slice form: (u, α, out).
+type Slice<T> = fn(&[T], &[T], &mut [T]);
+
+/// The Rust slice forms' own speed in this process, for the benchmark script
+/// (benchmark.py): GGX `quantity` ('d' or 'lambda') over n uniform cosines at α in f64 or
+/// (`f32`) f32, into a preallocated output, on one thread and on rayon's pool in pieces of
+/// 16 384; median ns per element of `reps`.
+#[pyfunction]
+fn _rust_slice_ns(
+    py: Python<'_>,
+    quantity: &str,
+    n: usize,
+    alpha: f64,
+    reps: usize,
+    f32: bool,
+) -> PyResult<(f64, f64)> {
+    use microsurface::fast::batch;
+    let (f, g): (Slice<f64>, Slice<f32>) = match quantity {
+        "d" => (batch::ggx_d, batch::ggx_d_f32),
+        "lambda" => (batch::ggx_lambda, batch::ggx_lambda_f32),
+        _ => return Err(PyValueError::new_err("quantity: 'd' or 'lambda'")),
+    };
+    fn median(reps: usize, n: usize, mut run: impl FnMut()) -> f64 {
+        let mut t: Vec<f64> = (0..reps.max(1))
+            .map(|_| {
+                let start = std::time::Instant::now();
+                run();
+                start.elapsed().as_secs_f64() * 1e9 / n as f64
+            })
+            .collect();
+        t.sort_by(f64::total_cmp);
+        t[t.len() / 2]
+    }
+    fn both<T: Copy + Send + Sync + Default>(
+        u: &[T],
+        alpha: T,
+        reps: usize,
+        f: fn(&[T], &[T], &mut [T]),
+    ) -> (f64, f64) {
+        let n = u.len();
+        let a = vec![alpha; n];
+        let mut out = vec![T::default(); n];
+        let one = median(reps, n, || f(u, &a, &mut out));
+        let par = median(reps, n, || {
+            out.par_chunks_mut(1 << 14)
+                .zip(u.par_chunks(1 << 14).zip(a.par_chunks(1 << 14)))
+                .for_each(|(o, (u, a))| f(u, a, o))
+        });
+        (one, par)
+    }
+    Ok(py.allow_threads(|| {
+        let mut s = 0x9E37_79B9_7F4A_7C15u64;
+        let u: Vec<f64> = (0..n)
+            .map(|_| {
+                s = s
+                    .wrapping_mul(6_364_136_223_846_793_005)
+                    .wrapping_add(1_442_695_040_888_963_407);
+                ((s >> 11) as f64 + 0.5) / (1u64 << 53) as f64
+            })
+            .collect();
+        if f32 {
+            let u: Vec<f32> = u.iter().map(|&x| x as f32).collect();
+            both(&u, alpha as f32, reps, g)
+        } else {
+            both(&u, alpha, reps, f)
+        }
+    }))
+}
+
+/// Adds the benchmark hook to the module.
+pub fn register(m: &Bound<'_, PyModule>) -> PyResult<()> {
+    m.add_function(wrap_pyfunction!(_rust_slice_ns, m)?)?;
+    Ok(())
+}
