@@ -34,7 +34,8 @@ pub const FIT_CACHE_CAPACITY: usize = 256;
 /// textured GTR α pays one fit per distinct α until the cache is full, then one per
 /// material). **The generalised exponential** has no fast path (see
 /// [`crate::distribution`]): it runs its exact path, in f64, converted from and to `F`; its
-/// Λ is a quadrature per call and its visible normals an exact warp of 10–200 µs.
+/// Λ is a quadrature per call and its visible normals an exact warp of tens to hundreds of
+/// microseconds.
 ///
 /// ```
 /// use microsurface::{AnyMicrofacet, MicrofacetDistribution, Ggx, Microfacet};

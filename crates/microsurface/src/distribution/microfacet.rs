@@ -656,7 +656,8 @@ impl<F: Real, N: Shape<Data = ()>> Microfacet<F, N> {
 
 impl<F: Real> Microfacet<F, Gtr> {
     /// GTR at roughness (αx, αy) and exponent γ ∈ (0, 100]: isotropic (αx = αy) at any γ,
-    /// its Λ fitted once here (1–90 ms, see the README); anisotropic only at γ = 2, where it
+    /// its Λ fitted once here (milliseconds to tens of milliseconds, cached per (α, γ):
+    /// [`crate::distribution::FIT_CACHE_CAPACITY`]); anisotropic only at γ = 2, where it
     /// is GGX ([`ParamError::Anisotropic`] otherwise).
     pub fn gtr(alpha_x: F, alpha_y: F, gamma: f64) -> Result<Self, ParamError> {
         let (ax, ay) = (check(alpha_x)?, check(alpha_y)?);
@@ -687,9 +688,11 @@ impl<F: Real, N: Shape<Data = Arc<fast::fitted::FittedShape>>> Microfacet<F, N> 
     /// A member of the family's Beckmann mixtures ([`crate::StudentT`] with `shape` = γ > 3/2,
     /// [`crate::BesselK`] with a ∈ [0.1, 100], [`crate::Ei`], [`crate::Erfc`], [`crate::K0`]
     /// with `None`) at roughness (αx, αy), each in [1e-6, 1e6]: Λ₁ of the shape fitted once
-    /// here ([`fast::fitted`]: 1–3 ms; Bessel-K ~0.1 s, its exact Λ integrates K_ν),
+    /// here ([`fast::fitted`]: milliseconds, cached per shape; Bessel-K a fraction of a second,
+    /// its exact Λ integrates K_ν),
     /// relative error ≤ 1e-7 (tests/fast.rs); D exact; visible normals by the mixing
-    /// variable's posterior (exact, ~0.2 µs). Typed errors as [`crate::AnyNdf::new`]'s.
+    /// variable's posterior (exact, a fraction of a microsecond). Typed errors as
+    /// [`crate::AnyNdf::new`]'s.
     pub fn with_shape(alpha_x: F, alpha_y: F, shape: Option<f64>) -> Result<Self, ParamError> {
         let (ax, ay) = (check(alpha_x)?, check(alpha_y)?);
         let kind = N::FAMILY.expect("the family's Shape impls name their kind");
@@ -714,7 +717,7 @@ impl<F: Real, N: Shape<Data = Arc<fast::fitted::FittedShape>>> Microfacet<F, N> 
 
 impl<F: Real, N: Shape> Microfacet<F, N> {
     /// The validated exact path for the same material, in f64 (closed forms ≤ 1e-13,
-    /// quadratures ≤ 1e-10; samplers: exact invertible warps of u, 10–80 µs for the
+    /// quadratures ≤ 1e-10; samplers: exact invertible warps of u, tens of microseconds for the
     /// superpositions): for references and checks, not a renderer's inner loop.
     pub fn exact(&self) -> Exact {
         let p = self.exact;

@@ -34,15 +34,15 @@
 //! GGX (same D, same normalisation) and runs GGX's anisotropic kernels; [`Microfacet::gtr`]
 //! rejects αx ≠ αy at other γ with [`ParamError::Anisotropic`].
 //!
-//! **The generalised exponential** ([`crate::GenExponential`]) has no `Microfacet` type; it
-//! runs through [`Exact`] (D closed form, Λ by quadrature, exact warps of 10–200 µs a
-//! sample). The two halves of a fast path are missing for it: its Λ₁ falls like e^{−z^γ},
-//! by 300 orders of magnitude between z = 1 and 1.4 at γ = 20 (z²⁰ goes from 190 to 2000
-//! across the eighth octave above z = 1.3), which the family's eighth-octave polynomial
-//! tables of ln Λ₁ ([`fast::fitted`]) cannot follow in relative terms; and above γ = 2 it is not a Beckmann mixture, below it one
-//! over a positive stable law, so there is no posterior sampler for visible normals (the
-//! family's other members draw theirs in ~0.2 µs). No renderer ships it; Student-T covers the
-//! range between GGX's and Beckmann's tails that a renderer wants.
+//! **The generalised exponential** ([`crate::GenExponential`]) has no `Microfacet` type; it runs
+//! through [`Exact`] (D closed form, Λ by quadrature, exact warps of tens to hundreds of
+//! microseconds a sample). The two halves of a fast path are missing for it: its Λ₁ falls like
+//! e^{−z^γ}, by 300 orders of magnitude between z = 1 and 1.4 at γ = 20 (z²⁰ goes from 190 to 2000
+//! across the eighth octave above z = 1.3), which the family's eighth-octave polynomial tables of
+//! ln Λ₁ ([`fast::fitted`]) cannot follow in relative terms; and above γ = 2 it is not a Beckmann
+//! mixture, below it one over a positive stable law, so there is no posterior sampler for visible
+//! normals (the family's other members draw theirs in a fraction of a microsecond). No renderer
+//! ships it; Student-T covers the range between GGX's and Beckmann's tails that a renderer wants.
 //!
 //! **Evaluation.** The fast paths ([`crate::fast`]) by default: closed forms for GGX and
 //! Beckmann, fitted tables (≤ 1e-7 relative) for Double GGX, the Exponential NDF and GTR.

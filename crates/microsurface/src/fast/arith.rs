@@ -1,10 +1,9 @@
 //! Elementary functions in arithmetic only: e^x, e^x − 1, ln x and ln(1 + x) from a few bit
 //! operations and a polynomial, with no call into libm. They inline and vectorise: the
 //! slice kernels ([`super::batch`]) take their exponential from here. In scalar code they
-//! are no faster than glibc's table-driven exp and ln (measured per call in a loop of
-//! independent arguments: exp 6.8 ns against 4.8, ln 6.9 against 4.6; on a dependency
-//! chain about 31 ns against 17–19), but faster than its ln_1p (7.8 against 12.4 ns) and
-//! exp_m1 (6.9 against 9.3 ns): the D·cos samplers' exponential variates use [`ln_1p`].
+//! are slower than glibc's table-driven exp and ln (per call in a loop of independent
+//! arguments, and more so on a dependency chain), but faster than its ln_1p and exp_m1
+//! (BENCHMARKS.md): the D·cos samplers' exponential variates use [`ln_1p`].
 //! `exp2_256` (crate-private) trades accuracy for speed where 1e-7 is asked (5e-10; a table
 //! and a quadratic): the fitted Λ tables' exponential.
 //!
@@ -13,8 +12,8 @@
 //!   chain and multiplies by 2ⁿ. [`exp_m1`] takes p = e^r − 1 in even and odd powers (two
 //!   short chains side by side) and returns 2ⁿp + (2ⁿ − 1), without cancellation (2ⁿ − 1 is
 //!   exact, and at n = 0 it is p itself). The one chain is what the slice kernels want: the
-//!   split form, tried there, made the Beckmann D slice 2.3× slower (it no longer
-//!   vectorised as well).
+//!   split form, tried there, made the Beckmann D slice slower (it no longer vectorised as
+//!   well; BENCHMARKS.md).
 //! * [`ln`] and [`ln_1p`]: x = 2ᵏ m with m ∈ [√½, √2) from the bits, f = m − 1 (exact),
 //!   s = f/(2 + f), ln m = 2 atanh s = 2s + sR, R = 2s²/3 + … + 2s¹⁸/19 (|s| ≤ 0.172: the
 //!   first omitted term is below 1e-17), arranged as f − (f²/2 − s(f²/2 + R)) so that the
@@ -123,15 +122,15 @@ const EXP2_256THS: [f64; 256] = {
 
 /// 2^(y/256) for y ∈ [−1022·256, 1023·256] within 5e-10 relative; crate-private, as it does
 /// not check its range (outside it the exponent bits wrap: garbage, not 0 or ∞; a clamp
-/// cost 0.6 ns of a 7.2 ns Λ): the fitted Λ tables'
+/// cost a measurable share of a fitted Λ, BENCHMARKS.md): the fitted Λ tables'
 /// exponential ([`super::fitted`], which holds 256 log₂ Λ, asks for 1e-7 and keeps its
 /// underflowed rows at 2^−1000). With k = round(y) (the magic-number addition, not libm's
 /// `round`, which baseline x86-64 calls) and r = y − k ∈ [−½, ½]: 2^(y/256) =
 /// 2^⌊k/256⌋ · 2^((k mod 256)/256) · e^(r ln 2/256), the middle factor from a table of 256
 /// (2 KiB), the power of two added to its exponent bits, the last 1 + x + x²/2 (|x| ≤ 0.00136:
 /// the remainder is below x³/6 = 4.2e-10). Its chain is two multiply-adds and a table load,
-/// against [`exp`]'s thirteen and libm's call: a fitted Λ 11–12 → ~8 ns (BENCHMARKS.md,
-/// issue 22).
+/// against [`exp`]'s thirteen and libm's call, which makes a fitted Λ faster
+/// (BENCHMARKS.md).
 #[inline(always)]
 pub(crate) fn exp2_256(y: f64) -> f64 {
     const C1: f64 = std::f64::consts::LN_2 / 256.0;

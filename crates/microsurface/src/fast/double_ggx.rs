@@ -190,7 +190,7 @@ fn t_floor<F: Real>() -> f64 {
 /// at α/√t driven by u:
 /// m ∝ (αx √ξ cos φ, αy √ξ sin φ, √(t(1 − ξ))), ξ = u₀, φ = 2πu₁. Evaluated in f64. Not a warp
 /// of u alone (no inverse), unlike the exact [`crate::Exact`] D·cos sampler (a Newton
-/// inversion, ~8 µs).
+/// inversion on quadrature-backed CDFs, microseconds).
 #[inline]
 pub(crate) fn sample_dcos<F: Real>(
     ax: F,

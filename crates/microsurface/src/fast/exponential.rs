@@ -10,8 +10,8 @@
 //!   from there. Every segment spans at most 0.35 in z, narrow enough for e^{−z} to be a
 //!   polynomial (degree 5, fit error 2.0e-9): no exponential at run time. (Degree 7 on
 //!   segments twice as wide erred by 1.2e-10; degree 5 takes two coefficients fewer, so
-//!   two gathers fewer per lane in the slice kernels: 3.17 → 2.96 ns per element, and the
-//!   scalar Λ 7.2 → 6.7 ns; 41 KiB instead of 28.) This range holds 99 % of the
+//!   two gathers fewer per lane in the slice kernels and a shorter scalar Λ, both faster
+//!   (BENCHMARKS.md); 41 KiB instead of 28.) This range holds 99 % of the
 //!   benchmark's random (u, α) (BENCHMARKS.md).
 //! * 64 ≤ z < 2^9: Λ e^z on octave segments of z, and one exponential restores the factor.
 //! * z ≥ 2^9 (near the normal): Λ = e^{−z}(1 + 11/(8z) − 159/(128z²) + 8595/(3072z³))/√(2πz),
@@ -171,9 +171,8 @@ pub fn d<F: Real>(u: F, alpha: F) -> F {
 /// then cubics in f32 on 4× finer segments (32 rows per octave of q to q = 64, 128 beyond:
 /// `EXPONENTIAL32_QA`, `_QB` in tables.rs, error 4.2e-7 with s rounded to f32 as
 /// evaluated), by Horner's rule (`fit::poly`). Outside them the f64
-/// path answers, rounded. (Evaluating the cubics in f64 with f32 coefficients measured 8.7
-/// ns against 7.7 in f32: four widenings of the coefficients and one more rounding at the
-/// end.)
+/// path answers, rounded. (Evaluating the cubics in f64 with f32 coefficients was slower,
+/// BENCHMARKS.md: four widenings of the coefficients and one more rounding at the end.)
 #[inline]
 pub fn lambda<F: Real>(u: F, alpha: F) -> F {
     if F::IS_F32 {
@@ -248,7 +247,7 @@ pub fn sigma<F: Real>(u: F, alpha: F) -> F {
 /// r = ½(−ln(1 − ξ) + E) with ξ = u₀ and E ~ Exp(1) from `uniform` (the ziggurat,
 /// [`super::ziggurat::exp1`]: one uniform, a second in about 3 % of draws); azimuth 2πu₁; then
 /// stretched. Evaluated in f64. Not a warp of u alone (no inverse), unlike the exact
-/// [`crate::Exact`] D·cos sampler (a Newton inversion, ~0.7 µs).
+/// [`crate::Exact`] D·cos sampler (a Newton inversion, about a microsecond).
 #[inline]
 pub(crate) fn sample_dcos<F: Real>(
     ax: F,

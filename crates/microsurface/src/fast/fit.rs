@@ -6,8 +6,8 @@
 //! s = 2(x − x₀)/h − 1 ∈ [−1, 1) (x₀ the segment's start, h its width). The segment and s come
 //! from the bits of x (no logarithm, no search): the exponent and the top m mantissa bits
 //! index the segment, and the remaining mantissa bits are the position (x − x₀)/h, exactly,
-//! so s is formed from them by integer operations and one exact subtraction (measured: the
-//! fitted Λ 0.3–0.8 ns faster than with x − x₀ and a multiplication; BENCHMARKS.md).
+//! so s is formed from them by integer operations and one exact subtraction (faster than
+//! x − x₀ and a multiplication: BENCHMARKS.md).
 //!
 //! Tables are built by Chebyshev interpolation ([`fit_octaves`]): at N Chebyshev points of each
 //! segment, converted to the monomial basis in s (|s| ≤ 1 keeps that conversion well
@@ -97,13 +97,13 @@ pub fn octave_segment32(k0: i32, m: u32, x: f32) -> (usize, f32) {
 /// The scalar fast paths are called in loops of independent calls (a renderer's, the
 /// benchmark's), which overlap; what bounds them is the operations in flight more than one
 /// call's chain. For the short rows (the Λ tables: 4 to 6 coefficients) Horner's rule, the
-/// fewest operations, measured faster than Estrin's scheme: Double GGX Λ 6.4 → 5.9 ns (f64)
-/// and 5.4 → 4.8 (f32), Exponential 6.6 → 6.2 and 6.7 → 6.1, GTR f32 5.0 → 4.7
-/// (BENCHMARKS.md; GTR's f64 rows were no faster and call [`estrin`]). For the long ones (7 to 11: erfcx, erfinv, Double GGX D, the sine and
-/// cosine of the samplers) the chain of Horner's rule cost more (GGX D·cos 12.6 → 15.1 ns with
-/// Horner's rule throughout), so they keep Estrin's. The slice kernels call [`estrin`]
-/// directly: vector code is bound by its gathers' latency there (GTR's kernel 2.3 → 3.8 ns
-/// per element with Horner's rule).
+/// fewest operations, measured faster than Estrin's scheme (Double GGX and Exponential Λ in
+/// f64 and f32, GTR in f32; BENCHMARKS.md; GTR's f64 rows were no faster and call
+/// [`estrin`]). For the long ones (7 to 11: erfcx, erfinv, Double GGX D, the sine and cosine
+/// of the samplers) the chain of Horner's rule cost more (GGX D·cos with Horner's rule
+/// throughout was slower), so they keep Estrin's. The slice kernels call [`estrin`]
+/// directly: vector code is bound by its gathers' latency there (GTR's kernel was slower
+/// with Horner's rule).
 #[inline(always)]
 pub fn poly<F: super::Real, const N: usize>(c: &[F; N], s: F) -> F {
     // (6: see above; the longest rows of the Λ tables.)

@@ -5,19 +5,18 @@
 //! member serves every roughness, and anisotropy through z = |w.z|/|(αx wx, αy wy)|, formed
 //! from the direction vector (not from its cosine, whose 1 − u² near the normal carries u's
 //! rounding).
-//! [`FittedShape::new`] fits log₂ Λ₁ by Chebyshev interpolation of the exact Λ (degree 6,
-//! eighth octaves of z, the layout of [`super::fit`]) on [2^−24, 2^k₁), re-expanded to degree 4
-//! on 32 rows per octave; evaluation is the row's polynomial and one exponential,
-//! `arith::exp2_256` (the table holds 256 log₂ Λ₁: a table of 256 powers 2^(j/256)
-//! and a quadratic, 5e-10, inlined: 7.3 ns a Λ(w) against 3.1 for GGX's closed form through
-//! the same type, where libm's `exp` took 11–12; BENCHMARKS.md, issue 22). Where Λ₁ itself
-//! fits as well (within 1e-8 at every segment's ends and middle: Student-T at γ ≤ 3, whose
-//! power-law tail has a bounded log-derivative) the table holds Λ₁ and there is no
-//! exponential ([`FittedShape::is_direct`]): 4.5 ns. The exponential tails of the others need
-//! the logarithm. ln Λ₁ is smooth on both sides: ~ln(σ₁(0)/z) at grazing,
-//! and near the normal −z² (Ei, Erfc: Beckmann-like tails), −2z (K0, Bessel-K: exponential
-//! ones) or −(2γ − 2) ln z (Student-T's power law), where Λ₁ itself falls by orders of
-//! magnitude across a segment and no short polynomial follows it in relative terms. The ends:
+//! [`FittedShape::new`] fits log₂ Λ₁ by Chebyshev interpolation of the exact Λ (degree 6, eighth
+//! octaves of z, the layout of [`super::fit`]) on [2^−24, 2^k₁), re-expanded to degree 4 on 32 rows
+//! per octave; evaluation is the row's polynomial and one exponential, `arith::exp2_256` (the table
+//! holds 256 log₂ Λ₁: a table of 256 powers 2^(j/256) and a quadratic, 5e-10, inlined: faster than
+//! libm's `exp` there; BENCHMARKS.md compares a Λ(w) with GGX's closed form through the same type).
+//! Where Λ₁ itself fits as well (within 1e-8 at every segment's ends and middle: Student-T at
+//! γ ≤ 3, whose power-law tail has a bounded log-derivative) the table holds Λ₁ and there is no
+//! exponential ([`FittedShape::is_direct`]), which is faster. The exponential tails of the others
+//! need the logarithm. ln Λ₁ is smooth on both sides: ~ln(σ₁(0)/z) at grazing, and near the normal
+//! −z² (Ei, Erfc: Beckmann-like tails), −2z (K0, Bessel-K: exponential ones) or −(2γ − 2) ln z
+//! (Student-T's power law), where Λ₁ itself falls by orders of magnitude across a segment and no
+//! short polynomial follows it in relative terms. The ends:
 //! * z < 2^−24: Λ₁ = σ₁(0)/z − ½ (the next term, z P2₁(0)/2, or z ln z where P2₁(0) = ∞, is
 //!   below 1e-13 relative there);
 //! * z ≥ 2^k₁: exponential tails — the table runs until Λ₁ < 1e-300 and is 0 beyond (k₁ ≤ 10);
@@ -36,9 +35,9 @@
 //! exact path: D·cos by the radial
 //! quantile of the α = 1 member (closed form for Student-T, Newton on the CDF for the others),
 //! visible normals by the mixing variable's posterior (`mixture::Posterior`; then
-//! Beckmann's stream sampler; about 0.2 µs), its uniforms after u's from a
+//! Beckmann's stream sampler; a fraction of a microsecond), its uniforms after u's from a
 //! [`crate::distribution::UniformStream`] seeded by u. Accuracy and cost: tests/fast.rs and
-//! BENCHMARKS.md ("Issue 22").
+//! BENCHMARKS.md (the family's fast path).
 
 use super::fit;
 use crate::error::ParamError;
@@ -54,7 +53,7 @@ const M_FIT: u32 = 3;
 /// Coefficients per row of the evaluated table (degree 4), on 2^M rows per octave: each
 /// fitted segment re-expanded onto 4 equal pieces (no new exact evaluations), as GTR's
 /// tables are (fast::gtr): a shorter dependency chain than the degree-6 Estrin scheme
-/// (BENCHMARKS.md, issue 22).
+/// (BENCHMARKS.md).
 const N: usize = 5;
 const M: u32 = M_FIT + 2;
 /// The table starts at z = 2^K0 (the grazing end, module docs).
@@ -101,7 +100,7 @@ impl FittedShape {
     /// below), Ei, Erfc, K0 or Bessel-K; `ParamError::Shape` for Student-T γ ≤ 3/2 and for
     /// the NDFs that are not Beckmann mixtures with a posterior sampler. Evaluates the exact Λ
     /// at 7 nodes of 8 segments per octave over 30–44 octaves (1.6k–2.5k evaluations; Bessel-K,
-    /// whose Λ integrates K_ν, ~30 µs each).
+    /// whose Λ integrates K_ν, tens of microseconds each).
     pub fn new(ndf: &AnyNdf) -> Result<FittedShape, ParamError> {
         let posterior =
             ndf.beckmann_mixing()

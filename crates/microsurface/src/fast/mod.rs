@@ -21,7 +21,7 @@
 //! ```
 //! use microsurface::fast::{ggx, gtr::FittedGtr};
 //! let d = ggx::d(0.9f32, 0.3); // f32 in, f32 out
-//! let material = FittedGtr::new(0.3, 1.5)?; // per-material tables: ~24 ms (1–1.5 ms at γ = 1, 2; README)
+//! let material = FittedGtr::new(0.3, 1.5)?; // per-material tables: milliseconds, once
 //! assert!(d > 0.0 && material.lambda(0.5f32) > 0.0);
 //! # Ok::<(), microsurface::ParamError>(())
 //! ```

@@ -92,8 +92,8 @@ const SQUARES_SAFE_LO: f64 = 1e-290;
 const SQUARES_SAFE_HI: f64 = 1e290;
 
 /// √(x² + y²) to ~1 ulp without spurious over- or underflow: the plain square root of the sum
-/// where the squares are safe, libm's `hypot` (~5× slower here; it was 38 % of a χ² test's
-/// time) only outside that range.
+/// where the squares are safe, libm's `hypot` (slower, and a large share of a χ² test's
+/// time: BENCHMARKS.md) only outside that range.
 #[inline]
 pub(crate) fn hypot(x: f64, y: f64) -> f64 {
     let s = x * x + y * y;

@@ -228,7 +228,8 @@ pub fn albedo<D: MicrofacetDistribution<f64>>(
 /// [`single_scattering_albedo_dielectric`] does (level 4 of its rule), where the pole is an
 /// end point of the outer integral: measured, it agrees with the integral over wi to 1e-12
 /// (K0, Ei at α = 0.3, μ ∈ {0.2, 0.7, 1}; GGX, Beckmann too), levels 3 to 5 agree to 3e-11
-/// for Bessel-K a = 0.3, and it takes 15 s there against 210 s over wi (K0: 20–50 ms).
+/// for Bessel-K a = 0.3, and it takes seconds there where the integral over wi took minutes
+/// (K0: tens of milliseconds).
 pub fn single_scattering_albedo<D: MicrofacetDistribution<f64>>(dist: &D, wo: [f64; 3]) -> f64 {
     single_scattering_albedo_tol(dist, wo, 1e-9)
 }
@@ -298,7 +299,7 @@ pub(crate) fn single_scattering_albedo_tol<D: MicrofacetDistribution<f64>>(
 /// rule of step 2^−`level` (end-point singularities of the pieces cost nothing).
 ///
 /// **Accuracy** (measured against level 7, every NDF at α ∈ {0.05, 0.4, 2}, η ∈ {1.5, 2.4}
-/// from both sides, μ ∈ [0.01, 1]): level 4 (the default; 5–30 ms) within 1.7e-5 (Double
+/// from both sides, μ ∈ [0.01, 1]): level 4 (the default; milliseconds) within 1.7e-5 (Double
 /// GGX at α = 0.4; GGX 7e-6), level 3 within 1.2e-4. Beckmann and the Exponential NDF
 /// converge double-exponentially (level 4 within 1e-7, mostly 1e-14); the heavy-tailed
 /// GGX family only about 8× per level, the sign of a non-smooth place the cuts miss (not

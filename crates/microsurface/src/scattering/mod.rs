@@ -48,7 +48,7 @@
 //! candidates per step stays bounded). Where the distribution samples D_v from a uniform
 //! stream ([`MicrofacetDistribution::sample_wm_stream`](crate::MicrofacetDistribution::sample_wm_stream): GGX, Beckmann, Double GGX) that is used
 //! instead, for rays going down too (Beckmann's rejection there is cheaper than its exact
-//! warp): one call without the full sampler per candidate (BENCHMARKS.md, issue 21).
+//! warp): one call without the full sampler per candidate (BENCHMARKS.md).
 //!
 //! **Order 1** is the single-scattering BSDF with the height-correlated G2 (the paper's
 //! section 5.3): for a conductor with F = 1, E₁(μ) = ∫ D G2/(4μ) dωi, which
@@ -92,7 +92,7 @@
 //! at the material's η, 65 nodes each, from
 //! [`crate::scattering::single_scattering_albedo_dielectric`]: shipped for the isotropic materials
 //! at five common indices (`data/compensation/*-dielectric.mfd`, interpolated in ln α),
-//! computed at construction otherwise (0.5–0.8 s). White furnace (importance transport, both
+//! computed at construction otherwise (under a second). White furnace (importance transport, both
 //! sides) within 1e-3, measured ≤ 1.9e-4 over every NDF (tests/compensate.rs).
 
 pub(crate) mod albedo;

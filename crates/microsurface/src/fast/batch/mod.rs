@@ -19,10 +19,9 @@
 //! Throughput and the scalar-loop comparison: BENCHMARKS.md. Where the scalar path is a
 //! closed form (GGX D, Λ, G1), a caller's loop over zipped iterators is vectorised by the
 //! compiler as well (SSE2), and the slice function gains little or nothing over it (GGX Λ and
-//! G1: none, both bound by the divider; GGX D: 1.6×, bound by memory traffic). The slice
-//! functions pay off where the scalar path has branches, table lookups or libm calls, which
-//! keep the compiler from vectorising a loop (Beckmann D, Double GGX, Exponential, GTR: 1.9×
-//! to 2.2× the iterator loop at 10⁶ elements).
+//! G1 are bound by the divider, GGX D by memory traffic). The slice functions pay off where
+//! the scalar path has branches, table lookups or libm calls, which keep the compiler from
+//! vectorising a loop (Beckmann D, Double GGX, Exponential, GTR).
 
 // `!(x > 0)` is the NaN-aware test (false for NaN) on a generic `Real`, on purpose.
 #![allow(clippy::neg_cmp_op_on_partial_ord)]
@@ -133,7 +132,8 @@ pub use wavefront::{
 /// The block's loop is a plain loop over contiguous elements, so the compiler vectorises it
 /// with contiguous loads and stores in every build. (Chunks of 8 with the lane loop unrolled
 /// had made the AVX-512 builds vectorise across chunks instead: 16 `vgatherqpd` and 8
-/// `vscatterqpd` per iteration for GGX D, 5–13× slower than the AVX2 build on AMD Zen 5.
+/// `vscatterqpd` per iteration for GGX D, several times slower than the AVX2 build on AMD
+/// Zen 5: BENCHMARKS.md.
 /// `scripts/check-simd-codegen.sh`, run by CI, reads this crate's assembly for gathers and
 /// scatters on contiguous data; the bench's per-instruction-set table checks that the
 /// dispatched build is never slower than a narrower one.)
@@ -369,14 +369,12 @@ fn gtr_chunks<const DIRECT: bool>(g: &super::gtr::FittedGtr, u: &[f64], out: &mu
 /// `install`s). Where the kernel packs runnable threads onto fewer vCPUs (the benchmark
 /// machine's does: `sched_vcpu_pack` on its command line), rayon's workers can share one
 /// vCPU for whole passes; a pool whose workers are pinned one per CPU (a `start_handler` that
-/// sets the thread's affinity) scales there as on a dedicated machine (BENCHMARKS.md, on 2
-/// cores: 1.85–1.95× pinned, with no round of 21 below 1.5×; unpinned, 3 to 18 rounds of 21
-/// below 1.5× per row).
+/// sets the thread's affinity) scales there as on a dedicated machine (BENCHMARKS.md).
 #[cfg(feature = "rayon")]
 pub mod par {
     use rayon::prelude::*;
 
-    /// Elements per rayon task: large enough to hide the scheduling (~1 µs), small enough to
+    /// Elements per rayon task: large enough to hide the scheduling (microseconds), small enough to
     /// balance two to many cores on 10⁶ elements.
     const PIECE: usize = 1 << 14;
 

@@ -8,14 +8,13 @@
 //! * the **w table**, t = w = 1 − u ≤ ½ (the normal side; 1 − u is exact there), quarter
 //!   octaves (w ~ 1/(2 cot²θ) near the normal, so that is an eighth octave of cot θ).
 //!
-//! Seven coefficients on short segments rather than nine on segments twice as long (an
-//! earlier layout, as accurate): Λ 8.7 → 8.0 ns. The fit is then re-expanded, without new
-//! evaluations of the exact Λ, into the tables that are evaluated: degree 4 on 32 rows per
-//! octave on both sides (quarters of the u segments, eighths of the w segments; within
-//! 3e-9 of the fit), so the lookup's shifts are constants and the polynomial is shorter
-//! (Λ 8.0 → 5.4 ns, the AVX-512 slice kernel 3.5 → 2.4 ns per element; 42 KiB at α = 0.3,
-//! γ = 1.5), and for f32, where Λ itself is tabulated, cubics on the same rows in f32
-//! (17 KiB; [`FittedGtr::has_f32_table`]).
+//! Seven coefficients on short segments rather than nine on segments twice as long (an earlier
+//! layout, as accurate, and slower: BENCHMARKS.md). The fit is then re-expanded, without new
+//! evaluations of the exact Λ, into the tables that are evaluated: degree 4 on 32 rows per octave
+//! on both sides (quarters of the u segments, eighths of the w segments; within 3e-9 of the fit),
+//! so the lookup's shifts are constants and the polynomial is shorter (faster, scalar and slice
+//! kernels: BENCHMARKS.md; 42 KiB at α = 0.3, γ = 1.5), and for f32, where Λ itself is tabulated,
+//! cubics on the same rows in f32 (17 KiB; [`FittedGtr::has_f32_table`]).
 //!
 //! So Λ(u) needs no square root and no division: the side picks the table's offset by an
 //! index (no branch to mispredict on random directions), then one polynomial. From one set
@@ -33,9 +32,9 @@
 //!   segment spans at most a factor 3·10^7 there) and absolutely below.
 //!
 //! Construction evaluates the exact Λ about 1 500 times (184 rows of 7 nodes at α = 0.3,
-//! γ = 1.5, plus the segment ends for the accuracy check): 24 ms at α = 0.3, γ = 1.5, 1–1.5
-//! ms at γ = 1, 2, up to 93 ms at α = 1e-6, γ = 100 (medians of 9 on the 2-core CI machine
-//! class; the README has the range, BENCHMARKS.md the bench's mean over 64 materials). [`FittedGtr::lambda_cot`] takes cot θ = a directly and
+//! γ = 1.5, plus the segment ends for the accuracy check): milliseconds at γ = 1, 2 (closed
+//! forms), tens of milliseconds at other γ (the Smith integral), the most at small α and
+//! large γ (BENCHMARKS.md). [`FittedGtr::lambda_cot`] takes cot θ = a directly and
 //! forms u = a/r and w = 1/(r(r + a)), r = √(1 + a²), both without cancellation.
 //!
 //! Range: the features of P22 = c(1 + r²)^{γ−2}(r² + α²)^{−γ} lie at slopes r ~ α, 1 and √γ
@@ -77,9 +76,9 @@ const M_W: u32 = M - 1;
 /// each fitted segment is re-expanded (no new evaluation of the exact Λ) onto 4 (u) or 8
 /// (w) equal pieces, as the Chebyshev interpolant of its polynomial there. One resolution
 /// for both sides makes every shift of the lookup a constant, and a degree-4 polynomial is
-/// a shorter chain: Λ 8.0 → 5.4 ns (BENCHMARKS.md). The pieces follow the fit within
+/// a shorter chain, faster (BENCHMARKS.md). The pieces follow the fit within
 /// 3e-9 (the unit test below). Degree 4 on 16 rows per octave deviated by 9e-8 (α = 1e-3,
-/// γ = 3; Λ ~ 1/u at grazing bends most); degree 5 on 16 held 2e-9 and measured 5.7 ns.
+/// γ = 3; Λ ~ 1/u at grazing bends most); degree 5 on 16 held 2e-9 and was slower.
 const N: usize = 5;
 const M_T: u32 = 5;
 /// Coefficients per row of the f32 table (degree 3: two operations fewer than degree 4),

@@ -74,7 +74,7 @@ impl<F: Real, D: MicrofacetDistribution<F>> CompensatedDielectric<F, D, 3> {
     /// The compensated interface of `dist` at relative index η (> 0), radiance transport, f
     /// in three (RGB) channels, with [`DielectricTables::new`]'s tables: shipped
     /// (microseconds), or **computed here** for a material or η the library does not ship
-    /// (0.5–0.8 s isotropic, once per (material, η) and process: the tables are cached).
+    /// (under a second isotropic, once per (material, η) and process: the tables are cached).
     pub fn new(dist: D, eta: F, scheme: Scheme) -> Self {
         let tables = DielectricTables::new(&dist, eta.to_f64());
         Self::from_tables(dist, eta, scheme, tables)

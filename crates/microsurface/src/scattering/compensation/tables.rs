@@ -50,7 +50,8 @@ pub struct AlbedoTable {
 impl AlbedoTable {
     /// The table of `dist` (f32 or f64): interpolated from the tables the library ships
     /// ([`AlbedoTable::shipped`]; microseconds) where `dist` is one of the library's isotropic
-    /// materials in their range, else **computed** ([`AlbedoTable::compute`], 30–300 ms) on
+    /// materials in their range, else **computed** ([`AlbedoTable::compute`], tens to hundreds of
+    /// milliseconds) on
     /// the material's f64 twin (the same NDF, α and shape through [`crate::AnyMicrofacet`];
     /// a distribution that does not name its NDF, [`MicrofacetDistribution::ndf`], is evaluated in its
     /// own precision). Computed tables of the library's materials are cached for the
@@ -84,8 +85,7 @@ impl AlbedoTable {
     }
 
     /// The table of `dist` computed here: 33 quadratures of the single-scattering albedo
-    /// (measured, GGX and the Exponential NDF: 30–130 ms at α ≥ 0.3, 260–310 ms at α = 0.05,
-    /// where the lobe is narrow).
+    /// (tens of milliseconds; hundreds at small α, where the lobe is narrow).
     pub fn compute<D: MicrofacetDistribution<f64>>(dist: &D) -> Self {
         let (ax, ay) = dist.alpha();
         let azimuths: &[f64] = if ax == ay {
@@ -262,7 +262,7 @@ fn shipped_grid(i: usize) -> Option<&'static Grid> {
 /// (twice a conductor's), at the rule's level 3 (within 1.2e-4 of level 7 in the worst case
 /// measured, Double GGX; the furnace stays within 1e-3 with it). Shipped for the library's
 /// isotropic materials at the common indices [`SHIPPED_ETAS`] ([`DielectricTables::new`]);
-/// computed otherwise: 130 quadratures, measured 0.5–0.8 s for an isotropic material, four
+/// computed otherwise: 130 quadratures, under a second for an isotropic material, four
 /// times that for an anisotropic one (the mean over four azimuths of wo, as
 /// [`AlbedoTable::compute`]).
 #[derive(Clone, Debug, PartialEq)]
@@ -277,7 +277,7 @@ impl DielectricTables {
     /// The tables of `dist` (f32 or f64) at relative index η: interpolated from the tables
     /// the library ships ([`DielectricTables::shipped`]; microseconds) where `dist` is one of
     /// the library's isotropic materials, α in [0.01, 4] and η one of the shipped indices,
-    /// else **computed** ([`DielectricTables::compute`], 0.5–0.8 s isotropic) on the
+    /// else **computed** ([`DielectricTables::compute`], under a second isotropic) on the
     /// material's f64 twin, as [`AlbedoTable::new`], and cached for the process by
     /// (material, η).
     pub fn new<F: Real, D: MicrofacetDistribution<F>>(dist: &D, eta: f64) -> Arc<Self> {
@@ -312,7 +312,7 @@ impl DielectricTables {
     /// diamond; 1/η too, the same interface seen from inside): both sides' E at the 65 √μ
     /// nodes over 49 values of α log-uniform on [0.01, 4], cubic Lagrange in ln α. `None`
     /// for other η (an η between them is not interpolated: E(μ) seen from inside has
-    /// features that move with η, see the notes of issue 21), α outside the range or
+    /// features that move with η: the critical angle, seen from inside), α outside the range or
     /// other NDFs. Equal to a computed table at the α nodes (to f32 rounding, 4e-8) and
     /// within 2e-4 between them (1.7e-4 measured for GGX and Beckmann at α = 2.9, seen from
     /// inside at grazing μ; 1e-5 or less at α ≤ 0.6; tests/compensate.rs).
