@@ -31,8 +31,11 @@
 //! exponential's argument in its range), so the error is absolute, ≤ 1e-200, and
 //! G1 = 1/(1 + Λ) is 1 either way.
 //!
-//! D is the exact closed form (f64) at the normal's stretched slopes, the samplers those of the
-//! exact path: D·cos by the radial
+//! D is the exact closed form (f64) at the normal's stretched slopes — for Bessel-K, whose
+//! closed form needs K_ν of real order (a trapezoidal rule per call), from a table of
+//! ln K_ν(y) + y fitted per shape (`BesselProfile`: within 1e-13 + 8ε(|ln K| + y) of the
+//! exact ln K_ν, so D within about 1e-12 relative, the exact form's own rounding) — and the
+//! samplers those of the exact path: D·cos by the radial
 //! quantile of the α = 1 member (closed form for Student-T, Newton on the CDF for the others),
 //! visible normals by the mixing variable's posterior (`mixture::Posterior`; then
 //! Beckmann's stream sampler; a fraction of a microsecond), its uniforms after u's from a
@@ -71,6 +74,51 @@ const LOG2_ZERO: f64 = -1000.0 * 256.0;
 /// which it replaces the log₂ Λ₁ table (10× inside the 1e-7 required, as fast::gtr's).
 const DIRECT_TOL: f64 = 1e-8;
 
+/// Bessel-K's K_ν table: 2^MK rows per octave of y = 2x, degree NK − 1, on [2^KK0, 2^KK1):
+/// within 1e-13 + 8ε(|ln K| + y) of `ln_bessel_k` (the unit test below, every a), the range
+/// where P22₁ is neither on the small-argument series (x < 1e-150) nor below 1e-300 (y ≳ 700).
+const NK: usize = 8;
+const MK: u32 = 4;
+const KK0: i32 = -20;
+const KK1: i32 = 10;
+
+/// Bessel-K's profile P22₁(x) = 2 x^ν K_ν(2x)/(π Γ(a)), ν = a − 1, from a table of
+/// g(y) = ln K_ν(y) + y fitted per shape (ν is fixed by the shape; the linear part of
+/// ln K_ν, −y, taken out, g is smooth on octaves of y: ~ln Γ(|ν|)/2 + |ν| ln(2/y) or
+/// ln ln(2/y) at small y, −½ ln(2y/π) at large y): ln P22₁ = ν ln x + g(2x) − 2x + c, one
+/// polynomial, a logarithm and an exponential instead of the trapezoidal rule of
+/// `ln_bessel_k` per call.
+#[derive(Clone, Debug)]
+struct BesselProfile {
+    nu: f64,
+    /// ln 2 − ln Γ(a) − ln π.
+    c: f64,
+    coef: Vec<[f64; NK]>,
+}
+
+impl BesselProfile {
+    fn new(a: f64) -> Self {
+        use crate::math::special::{ln_bessel_k, ln_gamma};
+        let nu = a - 1.0;
+        BesselProfile {
+            nu,
+            c: std::f64::consts::LN_2 - ln_gamma(a) - std::f64::consts::PI.ln(),
+            coef: fit::fit_octaves::<NK>(KK0, KK1, MK, |y| ln_bessel_k(nu, y) + y),
+        }
+    }
+
+    /// P22₁(x) where 2x is in the table (`None` elsewhere, NaN included).
+    #[inline]
+    fn p22(&self, x: f64) -> Option<f64> {
+        let y = 2.0 * x;
+        if !(y >= fit::pow2(KK0) && y < fit::pow2(KK1)) {
+            return None;
+        }
+        let g = fit::eval(&self.coef, KK0, MK, y);
+        Some((self.nu * x.ln() + g - y + self.c).exp())
+    }
+}
+
 /// Λ₁ past the table.
 #[derive(Clone, Copy, Debug, PartialEq)]
 enum Tail {
@@ -93,6 +141,9 @@ pub struct FittedShape {
     direct: bool,
     k1: i32,
     tail: Tail,
+    /// Bessel-K's profile table (`None` for the other members, whose D is a cheap closed
+    /// form).
+    bessel: Option<BesselProfile>,
 }
 
 impl FittedShape {
@@ -193,6 +244,10 @@ impl FittedShape {
         if !direct {
             coef = table(|l| 256.0 * l.log2(), LOG2_ZERO);
         }
+        let bessel = match unit {
+            AnyNdf::BesselK(b) => Some(BesselProfile::new(b.a())),
+            _ => None,
+        };
         Ok(FittedShape {
             sigma0: unit.sigma(0.0),
             unit,
@@ -201,6 +256,7 @@ impl FittedShape {
             direct,
             k1,
             tail,
+            bessel,
         })
     }
 
@@ -286,7 +342,10 @@ impl FittedShape {
             return F::from_f64(self.d_edges(u, a));
         }
         let x = ((1.0 - u) * (1.0 + u)).sqrt() / (u * a);
-        let f = self.unit.f(x).unwrap_or(f64::NAN);
+        let f = match self.bessel.as_ref().and_then(|b| b.p22(x)) {
+            Some(f) => f,
+            None => self.unit.f(x).unwrap_or(f64::NAN),
+        };
         let u2 = u * u;
         F::from_f64(f / (a * a * u2 * u2))
     }
@@ -304,6 +363,15 @@ impl FittedShape {
         // (NaN fails too.)
         if z.is_nan() || z <= 0.0 {
             return None;
+        }
+        if let Some(b) = &self.bessel {
+            if z > 1e-60 {
+                let (gx, gy) = (wm[0] / (ax * z), wm[1] / (ay * z));
+                if let Some(p) = b.p22((gx * gx + gy * gy).sqrt()) {
+                    let z2 = z * z;
+                    return Some(p / (ax * ay * z2 * z2));
+                }
+            }
         }
         Some(self.unit.d_stretched(wm, ax, ay))
     }
@@ -360,5 +428,61 @@ impl FittedShape {
         let v = crate::math::vec3::Vec3::from(v.map(|x| x.to_f64())).to_unit();
         self.posterior
             .sample_visible::<F>(v.into(), ax, ay, &mut || uniform().to_f64())
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::math::special::ln_bessel_k;
+
+    /// Bessel-K's profile table against `ln_bessel_k` over its whole range, at every a's
+    /// end and between: within 1e-13 + 8ε(|ln K| + y) in ln K (the relative error of D;
+    /// the polynomial's own rounding is a few ε|ln K|, as `ln_bessel_k`'s, 3ε(|ln K| + y)),
+    /// 64 points per octave (between the fit's nodes).
+    #[test]
+    fn bessel_profile_table() {
+        for a in [
+            0.1, 0.3, 0.5, 0.7, 0.95, 1.0, 1.05, 1.5, 2.5, 7.0, 30.0, 100.0,
+        ] {
+            let t = BesselProfile::new(a);
+            let nu = a - 1.0;
+            let mut worst = 0.0f64;
+            for k in KK0 * 64..KK1 * 64 {
+                let y = 2f64.powf(k as f64 / 64.0 + 0.37 / 64.0);
+                let want = ln_bessel_k(nu, y);
+                let got = fit::eval(&t.coef, KK0, MK, y) - y;
+                let err = (got - want).abs() / (1e-13 + 8.0 * f64::EPSILON * (want.abs() + y));
+                worst = worst.max(err);
+            }
+            println!("a = {a}: worst {worst:.2} of 1e-13 + 8ε(|ln K| + y)");
+            assert!(worst <= 1.0, "a = {a}: {worst} of the bound");
+        }
+    }
+
+    /// D of a Bessel-K material from the table equals the exact closed form to 1e-12.
+    #[test]
+    fn bessel_d_from_the_table() {
+        for a in [0.1, 0.7, 1.0, 2.5, 100.0] {
+            let unit = AnyNdf::new(crate::NdfKind::BesselK, 1.0, Some(a)).unwrap();
+            let fitted = FittedShape::new(&unit).unwrap();
+            for k in 1..400 {
+                let t = k as f64 / 400.0 * 1.55;
+                let wm = [t.sin() * 0.6, t.sin() * 0.8, t.cos()];
+                let (ax, ay) = (0.3, 0.17);
+                let want = unit.d_stretched(wm, ax, ay);
+                let got = fitted.d_vec(wm, ax, ay).unwrap();
+                assert!(
+                    (got - want).abs() <= 1e-12 * want || want < 1e-300,
+                    "a = {a}, θ = {t}: {got} vs {want}"
+                );
+                let u = wm[2];
+                let (g, w) = (fitted.d(u, 0.3), unit.with_alpha(0.3).d(u));
+                assert!(
+                    (g - w).abs() <= 1e-12 * w || w < 1e-300,
+                    "a = {a}: {g} vs {w}"
+                );
+            }
+        }
     }
 }
