@@ -507,3 +507,52 @@ fn shipped_dielectric_tables() {
     assert!(DielectricTables::shipped(NdfKind::Ggx, None, 5.0, 1.5).is_none());
     assert!(DielectricTables::shipped(NdfKind::Gtr, Some(1.5), 0.5, 1.5).is_none());
 }
+
+/// A table is computed once per material and process and shared: two Fresnel terms and both
+/// schemes on one distribution hold one table (the same allocation), f32 and f64 materials of
+/// the same NDF and α share it too, and shipped materials are interpolated, not computed.
+#[test]
+fn tables_are_built_once_per_material() {
+    use microsurface::bsdf::fresnel::{Conductor, Schlick};
+    use microsurface::scattering::{CompensatedConductor, DielectricTables};
+    use microsurface::AnyMicrofacet;
+    use std::sync::Arc;
+    // GTR γ = 1.7 and Student-T γ = 3: no shipped table.
+    for spec in ["gtr:1.7", "student_t:3"] {
+        let d64 = AnyMicrofacet::<f64>::parse(spec, 0.375, 0.375).unwrap();
+        // (0.375: the same α in f32 and f64, so the same material.)
+        let d32 = AnyMicrofacet::<f32>::parse(spec, 0.375, 0.375).unwrap();
+        let gold = Conductor {
+            eta: [0.14, 0.42, 1.37],
+            k: [3.98, 2.38, 1.60],
+        };
+        let a = CompensatedConductor::new(d64.clone(), gold, Scheme::KullaConty);
+        let b = CompensatedConductor::new(
+            d64.clone(),
+            Schlick {
+                f0: [0.9, 0.5, 0.2],
+            },
+            Scheme::Turquin,
+        );
+        let c = CompensatedConductor::new(
+            d32,
+            Schlick {
+                f0: [0.9f32, 0.5, 0.2],
+            },
+            Scheme::Turquin,
+        );
+        assert!(Arc::ptr_eq(a.table(), b.table()), "{spec}");
+        assert!(
+            Arc::ptr_eq(a.table(), c.table()),
+            "{spec}: f32 and f64 share the f64 table"
+        );
+        let (t1, t2) = (
+            DielectricTables::new(&d64, 1.45),
+            DielectricTables::new(&d64, 1.45),
+        );
+        assert!(Arc::ptr_eq(&t1, &t2), "{spec}");
+    }
+    // Shipped: interpolated each time (microseconds), equal values.
+    let g = AnyMicrofacet::<f64>::parse("ggx", 0.37, 0.37).unwrap();
+    assert_eq!(AlbedoTable::new(&g), AlbedoTable::new(&g));
+}
