@@ -186,7 +186,7 @@ fn t_floor<F: Real>() -> f64 {
 /// A normal distributed exactly as D(m) cos θm, anisotropic roughness (αx, αy): D·cos of
 /// the superposition D = ∫₀^∞ e^{−t} D_GGX(αx/√t, αy/√t) dt is the same superposition of the
 /// components' D·cos (each integrates to 1), so t ~ Exp(1) from `uniform` (the ziggurat,
-/// [`super::ziggurat::exp1`]: one uniform, a second in about 3 % of draws), then GGX's D·cos
+/// `ziggurat::exp1`: one uniform, a second in about 3 % of draws), then GGX's D·cos
 /// at α/√t driven by u:
 /// m ∝ (αx √ξ cos φ, αy √ξ sin φ, √(t(1 − ξ))), ξ = u₀, φ = 2πu₁. Evaluated in f64. Not a warp
 /// of u alone (no inverse), unlike the exact [`crate::Exact`] D·cos sampler (a Newton
@@ -215,7 +215,7 @@ pub(crate) fn sample_dcos<F: Real>(
 /// the envelope e^{−t}(2c + h t^{−1/2}) is a mixture of Exp(1) (mass 2c) and Gamma(½) (mass
 /// h√π), and a candidate is kept with probability (c + √(c² + h²/t))/(2c + h/√t) ≥ 4/5
 /// (the minimum, at h/√t = 4c/3; the mean number of candidates is in tests/fast.rs). One
-/// uniform picks the part and, scaled, drives that part's ziggurat ([`super::ziggurat`]:
+/// uniform picks the part and, scaled, drives that part's ziggurat (`ziggurat`:
 /// Exp(1), or Gamma(½) = Z²/2 from the half-normal Z), so neither needs a logarithm or an
 /// erfinv. The normal is then the GGX component's spherical-cap sample
 /// ([`super::ggx::sample_visible`]) driven by `u`, so stratification of `u` carries over to

@@ -6,7 +6,7 @@
 //! from the direction vector (not from its cosine, whose 1 − u² near the normal carries u's
 //! rounding).
 //! [`FittedShape::new`] fits log₂ Λ₁ by Chebyshev interpolation of the exact Λ (degree 6, eighth
-//! octaves of z, the layout of [`super::fit`]) on [2^−24, 2^k₁), re-expanded to degree 4 on 32 rows
+//! octaves of z, the layout of `fit`) on [2^−24, 2^k₁), re-expanded to degree 4 on 32 rows
 //! per octave; evaluation is the row's polynomial and one exponential, `arith::exp2_256` (the table
 //! holds 256 log₂ Λ₁: a table of 256 powers 2^(j/256) and a quadratic, 5e-10, inlined: faster than
 //! libm's `exp` there; BENCHMARKS.md compares a Λ(w) with GGX's closed form through the same type).
