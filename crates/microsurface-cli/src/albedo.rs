@@ -110,24 +110,9 @@ fn albedo_line(text: &str) -> Result<Value, String> {
             _ => Err("method 'quadrature' is the single-scattering albedo of the F = 1 conductor or a dielectric (no eta and k, or diffuse)".into()),
         };
     }
-    let walks = field(obj, "walks")?;
-    if !((1.0..=MAX_WALKS).contains(&walks) && walks.fract() == 0.0) {
-        return Err(format!(
-            "field 'walks' must be a whole number in [1, 1e10], got {walks}"
-        ));
-    }
-    let seed = if obj.contains_key("seed") {
-        let s = field(obj, "seed")?;
-        if !((0.0..1.8e19).contains(&s) && s.fract() == 0.0) {
-            return Err(format!(
-                "field 'seed' must be a whole number in [0, 2^64), got {s}"
-            ));
-        }
-        s as u64
-    } else {
-        0
-    };
-    let a = run_walks(d, heights, &facets, wo, walks as u64, seed);
+    let walks = crate::json::count(obj, "walks", MAX_WALKS, "1e10")?;
+    let seed = crate::json::seed(obj)?;
+    let a = run_walks(d, heights, &facets, wo, walks, seed);
     let by_order = |b: &ByOrder| {
         json!({
             "orders": b.orders,

@@ -180,27 +180,12 @@ impl Request {
                             .into(),
                     );
                 }
-                let samples = field(obj, "samples")?;
-                if !((1.0..=MAX_SAMPLES).contains(&samples) && samples.fract() == 0.0) {
-                    return Err(format!(
-                        "field 'samples' must be a whole number in [1, 1e9], got {samples}"
-                    ));
-                }
-                let seed = if obj.contains_key("seed") {
-                    let s = field(obj, "seed")?;
-                    if !((0.0..1.8e19).contains(&s) && s.fract() == 0.0) {
-                        return Err(format!(
-                            "field 'seed' must be a whole number in [0, 2^64), got {s}"
-                        ));
-                    }
-                    s as u64
-                } else {
-                    0
-                };
+                let samples = crate::json::count(obj, "samples", MAX_SAMPLES, "1e9")?;
+                let seed = crate::json::seed(obj)?;
                 Op::EvalMs {
                     wo: direction(obj, "wo")?,
                     wi: direction(obj, "wi")?,
-                    samples: samples as u64,
+                    samples,
                     seed,
                 }
             }

@@ -215,3 +215,33 @@ pub(crate) fn spectrum(obj: &Map<String, Value>, name: &str) -> Result<[f64; 3],
         }
     }
 }
+
+/// A count field: a whole number in [1, `max`] (`max_text` as the error writes it).
+pub(crate) fn count(
+    obj: &Map<String, Value>,
+    name: &str,
+    max: f64,
+    max_text: &str,
+) -> Result<u64, String> {
+    let n = field(obj, name)?;
+    if !((1.0..=max).contains(&n) && n.fract() == 0.0) {
+        return Err(format!(
+            "field '{name}' must be a whole number in [1, {max_text}], got {n}"
+        ));
+    }
+    Ok(n as u64)
+}
+
+/// The optional "seed": a whole number in [0, 2^64), 0 when absent.
+pub(crate) fn seed(obj: &Map<String, Value>) -> Result<u64, String> {
+    if !obj.contains_key("seed") {
+        return Ok(0);
+    }
+    let s = field(obj, "seed")?;
+    if !((0.0..1.8e19).contains(&s) && s.fract() == 0.0) {
+        return Err(format!(
+            "field 'seed' must be a whole number in [0, 2^64), got {s}"
+        ));
+    }
+    Ok(s as u64)
+}
