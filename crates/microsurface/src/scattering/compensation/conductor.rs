@@ -28,9 +28,9 @@ impl<F: Real, D: MicrofacetDistribution<F>, Fr: Fresnel<F, N>, const N: usize>
 {
     /// The compensated conductor of `dist` and `fresnel` (height-correlated G2), with
     /// [`AlbedoTable::new`]'s table: shipped (microseconds), or **computed here** for a
-    /// material the library does not ship (tens to hundreds of milliseconds, once per material
-    /// and process: the
-    /// table is cached and shared by every Fresnel term and scheme of the material).
+    /// material the library does not ship (tens to hundreds of milliseconds, once per
+    /// material and process: the table is cached and shared by every Fresnel term and scheme
+    /// of the material).
     pub fn new(dist: D, fresnel: Fr, scheme: Scheme) -> Self {
         let table = AlbedoTable::new(&dist);
         Self::from_table(dist, fresnel, scheme, table)
