@@ -52,7 +52,12 @@ fn albedo_line(text: &str) -> Result<Value, String> {
         None | Some(Some("conductor")) => match (obj.contains_key("eta"), obj.contains_key("k")) {
             (false, false) => Facets::Mirror(None),
             (true, true) => {
-                Facets::Mirror(Some((spectrum(obj, "eta")?[0], spectrum(obj, "k")?[0])))
+                let (eta, k) = (spectrum(obj, "eta")?[0], spectrum(obj, "k")?[0]);
+                // (As `bsdf`'s conductors: a complex index with η > 0 and k ≥ 0.)
+                if !(eta > 0.0 && k >= 0.0) {
+                    return Err("a conductor needs eta > 0 and k >= 0".into());
+                }
+                Facets::Mirror(Some((eta, k)))
             }
             _ => return Err("a conductor takes both 'eta' and 'k', or neither (F = 1)".into()),
         },

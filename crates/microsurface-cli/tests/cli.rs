@@ -546,6 +546,32 @@ fn bsdf_scattering_models() {
     }
 }
 
+/// The outside fuzzer's command-line findings: a huge rejected value is shown in scientific
+/// notation (1e300 was written out, 360 characters), eval_ms toward the horizon answers 0
+/// (was null), and albedo refuses a conductor with η ≤ 0 (was null).
+#[test]
+fn short_errors_and_no_nulls() {
+    let out = microsurface(
+        &["eval"],
+        "{\"ndf\":\"gtr\",\"alpha\":0.3,\"gamma\":1e300,\"quantity\":\"d\",\"u\":0.5}\n",
+    );
+    let e = lines(&out.stdout)[0]["error"].as_str().unwrap().to_string();
+    assert!(e.contains("1e300") && e.len() < 80, "{e}");
+    let out = microsurface(
+        &["bsdf"],
+        "{\"bsdf\":\"conductor\",\"ndf\":\"ggx\",\"alpha\":0.3,\"op\":\"eval_ms\",\"wo\":[0,0.6,0.8],\"wi\":[1,0,0],\"samples\":2}\n",
+    );
+    let got = &lines(&out.stdout)[0];
+    assert_eq!(got["total"], serde_json::json!([0.0, 0.0, 0.0]), "{got}");
+    assert!(!got.to_string().contains("null"), "{got}");
+    let out = microsurface(
+        &["albedo"],
+        "{\"ndf\":\"ggx\",\"alpha\":0.3,\"mu\":0.5,\"eta\":-1,\"k\":0,\"walks\":10}\n",
+    );
+    let e = lines(&out.stdout)[0]["error"].as_str().unwrap().to_string();
+    assert!(e.contains("eta > 0"), "{e}");
+}
+
 #[test]
 fn bsdf_reports_bad_lines_and_goes_on() {
     let input = r#"{"bsdf":"metal","ndf":"ggx","alpha":0.3,"op":"eval","wo":[0,0,1],"wi":[0,0,1]}

@@ -32,23 +32,41 @@ pub enum ParamError {
     },
 }
 
+/// A rejected value as an error message shows it: in full where that is short, in
+/// scientific notation where it would be long (1e300 written out is 301 digits).
+struct Shown(f64);
+
+impl fmt::Display for Shown {
+    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
+        let x = self.0;
+        if x != 0.0 && x.is_finite() && !(1e-4..1e7).contains(&x.abs()) {
+            write!(f, "{x:e}")
+        } else {
+            write!(f, "{x}")
+        }
+    }
+}
+
 impl fmt::Display for ParamError {
     fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
         match *self {
             ParamError::Alpha(a) => write!(
                 f,
-                "alpha must be a finite number in [{ALPHA_MIN:e}, {ALPHA_MAX:e}], got {a}"
+                "alpha must be a finite number in [{ALPHA_MIN:e}, {ALPHA_MAX:e}], got {}",
+                Shown(a)
             ),
             ParamError::Gamma(g) => write!(
                 f,
-                "gamma must be a finite number in (0, {GAMMA_MAX}], got {g}"
+                "gamma must be a finite number in (0, {GAMMA_MAX}], got {}",
+                Shown(g)
             ),
             ParamError::Shape { name, range, value } => {
-                write!(f, "{name} must be a finite number in {range}, got {value}")
+                write!(f, "{name} must be a finite number in {range}, got {}", Shown(value))
             }
             ParamError::Anisotropic(g) => write!(
                 f,
-                "GTR is anisotropic only at gamma = 2 (where it is GGX); got alpha_x != alpha_y at gamma = {g}"
+                "GTR is anisotropic only at gamma = 2 (where it is GGX); got alpha_x != alpha_y at gamma = {}",
+                Shown(g)
             ),
         }
     }

@@ -220,14 +220,26 @@ impl<F: Real> Frame<F> {
     }
 
     /// The frame of the normal n and a tangent (both normalised here; the tangent is made
-    /// orthogonal to n by Gram–Schmidt). A tangent parallel to n falls back to
-    /// [`Frame::from_normal`]; anisotropic roughness αx runs along the tangent.
+    /// orthogonal to n by Gram–Schmidt, twice, so that s·n is at rounding level). A tangent
+    /// parallel to n (its part orthogonal to n within 64ε of the unit tangent's length: the
+    /// rounding residue, not a direction) falls back to [`Frame::from_normal`]; anisotropic
+    /// roughness αx runs along the tangent.
     pub fn from_normal_tangent(n: [F; 3], tangent: [F; 3]) -> Self {
         let n = normalize(n);
-        let s = normalize(add(tangent, scale(n, -dot(tangent, n))));
-        if s[0].to_f64().is_nan() {
+        let t = normalize(tangent);
+        let r = add(t, scale(n, -dot(t, n)));
+        let len = dot(r, r).sqrt();
+        let eps = F::from_f64(if F::IS_F32 {
+            f32::EPSILON as f64
+        } else {
+            f64::EPSILON
+        });
+        // (False for NaN: a NaN tangent falls back too.)
+        if !(len > F::from_f64(64.0) * eps) {
             return Self::from_normal(n);
         }
+        let s = scale(r, F::ONE / len);
+        let s = normalize(add(s, scale(n, -dot(s, n))));
         Frame {
             s,
             t: cross(n, s),

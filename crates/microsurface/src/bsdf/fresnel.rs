@@ -67,9 +67,32 @@ impl<F: Real> Complex<F> {
     fn norm(self) -> F {
         self.re * self.re + self.im * self.im
     }
-    /// |a/b|² = |a|²/|b|².
+    /// |a/b|² = |a|²/|b|², the four parts scaled by the largest first (no overflow or
+    /// underflow of the squares); 0 where both are 0 (the limit of every ratio the
+    /// reflectance takes there: an interface of index 1 seen at grazing).
     fn norm_ratio(a: Self, b: Self) -> F {
-        a.norm() / b.norm()
+        let s = a.re.abs().max(a.im.abs()).max(b.re.abs()).max(b.im.abs());
+        if s == F::ZERO {
+            return F::ZERO;
+        }
+        if !(s < F::from_f64(f64::INFINITY)) {
+            // (∞ or NaN parts: the unscaled ratio says which.)
+            return a.norm() / b.norm();
+        }
+        let k = F::ONE / s;
+        a.scale(k).norm() / b.scale(k).norm()
+    }
+    /// 1/z by Smith's algorithm (no overflow of |z|² for large z).
+    fn recip_smith(self) -> Self {
+        if self.re.abs() >= self.im.abs() {
+            let r = self.im / self.re;
+            let d = self.re + self.im * r;
+            Complex::new(F::ONE / d, -r / d)
+        } else {
+            let r = self.re / self.im;
+            let d = self.re * r + self.im;
+            Complex::new(r / d, -F::ONE / d)
+        }
     }
     fn scale(self, s: F) -> Self {
         Complex::new(self.re * s, self.im * s)
@@ -95,12 +118,28 @@ impl<F: Real> Complex<F> {
 }
 
 /// Exact unpolarised Fresnel reflectance of a conductor with complex relative index η + ik,
-/// for cos θ ∈ [0, 1] (clamped there; light arrives from outside).
+/// for cos θ ∈ [0, 1] (clamped there; light arrives from outside): finite for every finite
+/// η + ik, → 1 as |η + ik| → ∞ (the ratios are divided through by n past |n| ~ 1e150, 1e18 in
+/// f32, where n² would overflow), 0 for n = 1 (no interface) at grazing too.
 #[inline]
 pub fn conductor<F: Real>(cos_i: F, eta: F, k: F) -> F {
     let cos_i = cos_i.max(F::ZERO).min(F::ONE);
     let n = Complex::new(eta, k);
     let sin2_i = (F::ONE - cos_i) * (F::ONE + cos_i);
+    // Past |n| ~ 1e150 (1e18 in f32) n² overflows: the same ratios divided through by n,
+    // with m = 1/n (F → 1 as |n| → ∞).
+    let big = F::from_f64(if F::IS_F32 { 1e18 } else { 1e150 });
+    if eta.abs().max(k.abs()) > big {
+        let m = n.recip_smith();
+        let sin2_t = m.mul(m).scale(sin2_i);
+        let cos_t = Complex::new(F::ONE - sin2_t.re, -sin2_t.im).sqrt();
+        let ci = Complex::new(cos_i, F::ZERO);
+        let ct_m = cos_t.mul(m);
+        let ci_m = m.scale(cos_i);
+        let r_parl = Complex::norm_ratio(ci.sub(ct_m), ci.add(ct_m));
+        let r_perp = Complex::norm_ratio(ci_m.sub(cos_t), ci_m.add(cos_t));
+        return F::HALF * (r_parl + r_perp);
+    }
     // cos θt = √(1 − sin²θi/n²).
     let n2 = n.mul(n);
     let sin2_t = n2.recip().scale(sin2_i);
@@ -125,7 +164,7 @@ pub fn schlick<F: Real>(cos_i: F, f0: F) -> F {
 const MU_BAR: f64 = 1.0 / 7.0;
 
 /// Hoffman's F82-tint model for reflectance f0 at normal incidence and tint h ∈ [0, 1] at
-/// μ̄ = 1/7 (cos θ clamped to [0, 1]); h = 1 is Schlick.
+/// μ̄ = 1/7 (cos θ clamped to [0, 1]); h = 1 is Schlick. The result is clamped to [0, 1].
 #[inline]
 pub fn f82_tint<F: Real>(cos_i: F, f0: F, h: F) -> F {
     let mu = cos_i.max(F::ZERO).min(F::ONE);
@@ -134,7 +173,16 @@ pub fn f82_tint<F: Real>(cos_i: F, f0: F, h: F) -> F {
     let mb = 1.0 - MU_BAR;
     let mb5 = mb.powi(5);
     let a = (f0 + (F::ONE - f0) * F::from_f64(mb5)) * (F::ONE - h) / F::from_f64(MU_BAR * mb5 * mb);
-    f0 + (F::ONE - f0) * m5 - a * mu * m5 * m
+    let r = f0 + (F::ONE - f0) * m5 - a * mu * m5 * m;
+    // A reflectance is in [0, 1]: the model dips below 0 near μ̄ for a dark f0 and h < 1, and
+    // passes 1 for h > 1; clamped as OpenPBR does (NaN passes through).
+    if r < F::ZERO {
+        F::ZERO
+    } else if r > F::ONE {
+        F::ONE
+    } else {
+        r
+    }
 }
 
 /// A Fresnel term a BSDF carries: N channels (RGB: N = 3).

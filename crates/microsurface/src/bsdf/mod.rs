@@ -124,7 +124,7 @@ pub trait Bsdf<F: Real> {
 /// below 1e-18, and f|cos θi| → 0 there, so the BSDF answers 0 (eval, pdf) and rejects
 /// (sample), as pbrt-v4 does on the horizon itself.
 #[inline(always)]
-fn on_horizon<F: Real>(z: F) -> bool {
+pub(crate) fn on_horizon<F: Real>(z: F) -> bool {
     let floor = F::from_f64(if F::IS_F32 { 1e-18 } else { 1e-150 });
     !(z.abs() >= floor)
 }

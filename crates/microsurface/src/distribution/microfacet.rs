@@ -763,6 +763,7 @@ impl<F: Real> Microfacet<F, Ggx> {
     /// mirrored and the full cap used). The pdf is the visible density scaled by
     /// (1 + w'.z)/(1 + k w'.z).
     pub fn sample_bounded(&self, w: [F; 3], u: [F; 2]) -> Sample<F> {
+        let w = super::unit(w);
         let (ws, b) = self.bounded_cap(w);
         let (c, s) = fast::cos_sin_turn(u[0].to_f64());
         let (c, s) = (F::from_f64(c), F::from_f64(s));
@@ -780,6 +781,7 @@ impl<F: Real> Microfacet<F, Ggx> {
 
     /// Density of [`Microfacet::sample_bounded`] w.r.t. the solid angle of the normal.
     pub fn pdf_bounded(&self, w: [F; 3], wm: [F; 3]) -> F {
+        let w = super::unit(w);
         let (ws, b) = self.bounded_cap(w);
         let m = normalize([wm[0] / self.ax, wm[1] / self.ay, wm[2]]);
         let d = dot(m, ws);

@@ -97,7 +97,7 @@ pub use any::{AnyMicrofacet, FIT_CACHE_CAPACITY};
 pub use exact::Exact;
 pub use microfacet::{GtrData, Microfacet, Shape};
 
-use crate::bsdf::frame::dot;
+use crate::bsdf::frame::{dot, normalize};
 use crate::fast::Real;
 use crate::math::rng::SplitMix64;
 use std::collections::HashMap;
@@ -206,7 +206,8 @@ pub trait MicrofacetDistribution<F: Real> {
         let wm = self.sample_wm(w, u);
         Sample {
             wm,
-            pdf: self.pdf(w, wm),
+            // (At w normalised: the samplers take any length, the pdf's formulas a unit w.)
+            pdf: self.pdf(unit(w), wm),
         }
     }
 
@@ -242,6 +243,33 @@ pub trait MicrofacetDistribution<F: Real> {
         let (ax, ay) = self.alpha();
         ax.max(ay) < F::from_f64(1e-3)
     }
+}
+
+/// w as a unit vector: w itself where it is one to rounding (one dot product: the common
+/// case), else rescaled by its largest part and normalised (any finite nonzero length; at
+/// 1e300 or 1e-300 its squares would overflow or underflow). Zero and NaN come back as
+/// they are.
+#[inline(always)]
+pub(crate) fn unit<F: Real>(w: [F; 3]) -> [F; 3] {
+    let n2 = dot(w, w);
+    // (A rounded unit vector is within a few ε of length 1.)
+    let tol = F::from_f64(if F::IS_F32 { 1e-6 } else { 1e-14 });
+    if (n2 - F::ONE).abs() <= tol {
+        w
+    } else {
+        unit_cold(w)
+    }
+}
+
+#[cold]
+#[inline(never)]
+fn unit_cold<F: Real>(w: [F; 3]) -> [F; 3] {
+    let m = w[0].abs().max(w[1].abs()).max(w[2].abs());
+    if !(m > F::ZERO && m < F::from_f64(f64::INFINITY)) {
+        return w;
+    }
+    let k = F::ONE / m;
+    normalize([w[0] * k, w[1] * k, w[2] * k])
 }
 
 /// The uniforms of a rejection sampler's second and later candidates: SplitMix64 (Steele,

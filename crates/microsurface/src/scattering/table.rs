@@ -22,7 +22,7 @@
 //! | 8 | magic `MFALBEDO` |
 //! | 4 | u32 format version, 1 |
 //! | 4 | u32 length L of the header text |
-//! | L | header text, UTF-8: `key=value` fields separated by `;` (`ndf`, `gamma`, `material`, `eta`, `k`, `rho`, `method`, `walks`, `seed`, `quantities` (comma-separated names)) |
+//! | L | header text, UTF-8: `key=value` fields separated by `;` (`ndf`, the shape parameter by its name (`gamma` or `a`), `material`, `eta`, `k`, `rho`, `method`, `walks`, `seed`, `quantities` (comma-separated names)) |
 //! | 12 | u32 counts: n_α, n_μ, n_q |
 //! | 8 n_α | f64 α nodes |
 //! | 8 n_μ | f64 μ nodes |
@@ -69,7 +69,9 @@ pub enum Method {
 #[derive(Clone, Debug, PartialEq)]
 pub struct Spec {
     pub ndf: NdfKind,
-    /// GTR's γ (required for GTR, ignored otherwise).
+    /// The shape parameter of the kinds that have one ([`NdfKind::shape_name`]: γ of GTR,
+    /// Student-T and the generalised exponential, a of Bessel-K; required by them, ignored
+    /// by the others).
     pub gamma: Option<f64>,
     pub material: Material,
     pub method: Method,
@@ -192,8 +194,8 @@ impl Spec {
     /// The header text of the binary form (without `quantities`).
     fn header(&self) -> String {
         let mut h = format!("ndf={}", self.ndf.name());
-        if let (NdfKind::Gtr, Some(g)) = (self.ndf, self.gamma) {
-            h += &format!(";gamma={g:?}");
+        if let (Some(name), Some(g)) = (self.ndf.shape_name(), self.gamma) {
+            h += &format!(";{name}={g:?}");
         }
         h += &match self.material {
             Material::Furnace => ";material=furnace".to_string(),
@@ -418,7 +420,10 @@ impl Grid {
         let ndf: NdfKind = field("ndf")
             .and_then(|v| v.parse().ok())
             .ok_or_else(|| err("header field 'ndf' missing or bad"))?;
-        let gamma = field("gamma").and_then(|v| v.parse().ok());
+        let gamma = ndf
+            .shape_name()
+            .and_then(field)
+            .and_then(|v| v.parse().ok());
         let material = match field("material") {
             Some("furnace") => Material::Furnace,
             Some("conductor") => Material::Conductor {

@@ -720,6 +720,11 @@ impl<D: MicrofacetDistribution<f64>, Fa: Facets<N>, const N: usize> MultipleScat
     pub fn eval_orders(&self, wo: [f64; 3], wi: [f64; 3], samples: u64, seed: u64) -> [ByOrder; N] {
         let mut rng = WalkRng::new(seed);
         let mut sums = [OrderSums::default(); N];
+        // On the horizon (either direction) f·|cos θi| → 0 and f is answered 0, as the
+        // single-scattering BSDFs do there (1/|cos θi| would make 0 · ∞ = NaN).
+        if crate::bsdf::on_horizon(wo[2]) || crate::bsdf::on_horizon(wi[2]) {
+            return sums.map(|s| s.finish(samples));
+        }
         let scale = self.transport_factor(wo, wi) / wi[2].abs();
         for _ in 0..samples {
             let e = self.surface.eval(&self.facets, wo, wi, &mut rng);

@@ -143,6 +143,10 @@ impl<F: Real, D: MicrofacetDistribution<F>, Fr: Fresnel<F, N>, const N: usize> B
     }
 
     fn sample(&self, wo: [F; 3], uc: F, u: [F; 2]) -> Option<BsdfSample<F, [F; N]>> {
+        // (As the single-scattering lobe: wo on the horizon is a rejected sample.)
+        if crate::bsdf::on_horizon(wo[2]) {
+            return None;
+        }
         match self.scheme {
             Scheme::Turquin => {
                 let s = self.ss.sample(wo, uc, u)?;

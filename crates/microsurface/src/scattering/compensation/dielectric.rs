@@ -216,6 +216,10 @@ impl<F: Real, D: MicrofacetDistribution<F>, const N: usize> CompensatedDielectri
 
     /// A sample with f in one channel.
     fn sample_grey(&self, wo: [F; 3], uc: F, u: [F; 2]) -> Option<BsdfSample<F, F>> {
+        // (As the single-scattering interface: wo on the horizon is a rejected sample.)
+        if crate::bsdf::on_horizon(wo[2]) {
+            return None;
+        }
         if self.smooth {
             return self.ss.sample_grey(wo, uc, u);
         }

@@ -1,0 +1,155 @@
+//! Regression tests of the outside fuzzer's findings (the hardening issue after 1.0's
+//! architecture), each its reproducer: the samplers' pdf at non-unit w, GGX's G2 where both
+//! G1 are small, the family's `ndf()`, Fresnel at the ends of its parameters, the frame's
+//! fallback, the compensated dielectric's horizon, and the table files' shape parameter.
+
+use microsurface::bsdf::frame::Frame;
+use microsurface::bsdf::fresnel::{conductor, f82_tint};
+use microsurface::bsdf::Bsdf;
+use microsurface::scattering::table::{Grid, Material, Method, Spec};
+use microsurface::scattering::{CompensatedConductor, CompensatedDielectric, Scheme};
+use microsurface::{AnyMicrofacet, BesselK, Ei, Ggx, Microfacet, MicrofacetDistribution, NdfKind};
+
+/// The sample's pdf is the density at the unit w, whatever w's length (1: the door's
+/// samplers took the pdf at the w they were given, 0 at 5e299 and 1.42 at 5e-300).
+#[test]
+fn sample_pdf_at_any_length() {
+    let unit = [0.6, 0.0, 0.8];
+    for kind in NdfKind::ALL {
+        let shape = kind.shape_name().map(|n| if n == "a" { 0.7 } else { 2.5 });
+        let m = AnyMicrofacet::<f64>::new(kind, 0.3, 0.3, shape).unwrap();
+        let want = m.sample(unit, [0.3, 0.6]);
+        for s in [3e299 / 0.6, 5.0, 0.1, 3e-300 / 0.6] {
+            let got = m.sample(unit.map(|x| x * s), [0.3, 0.6]);
+            assert!(
+                (got.pdf - want.pdf).abs() <= 1e-12 * want.pdf && want.pdf > 0.0,
+                "{kind} |w| = {s}: {} vs {}",
+                got.pdf,
+                want.pdf
+            );
+        }
+        let m32 = AnyMicrofacet::<f32>::new(kind, 0.3, 0.3, shape).unwrap();
+        let w32 = [0.6f32, 0.0, 0.8];
+        let want = m32.sample(w32, [0.3, 0.6]).pdf;
+        let got = m32.sample(w32.map(|x| x * 1e30), [0.3, 0.6]).pdf;
+        assert!(
+            (got - want).abs() <= 1e-5 * want,
+            "{kind} f32: {got} vs {want}"
+        );
+    }
+    let g = Microfacet::<f64, Ggx>::new(0.3, 0.3).unwrap();
+    let want = g.sample_bounded([0.6, 0.0, 0.8], [0.3, 0.6]);
+    let got = g.sample_bounded([3e299, 0.0, 4e299], [0.3, 0.6]);
+    assert!(got.pdf.is_finite() && (got.pdf - want.pdf).abs() <= 1e-12 * want.pdf);
+    for k in 0..3 {
+        assert!(
+            (got.wm[k] - want.wm[k]).abs() < 1e-15,
+            "{:?} vs {:?}",
+            got.wm,
+            want.wm
+        );
+    }
+}
+
+/// GGX's height-correlated G2 where both G1 are small: G2 = g/(2 − g) (1.0000000027e-8 came
+/// out against 1e-8).
+#[test]
+fn ggx_g2_without_cancellation() {
+    use microsurface::fast::ggx;
+    let g: f64 = ggx::g1(1e-8, 1.0);
+    let want = g / (2.0 - g);
+    assert!((ggx::g2(1e-8, 1e-8, 1.0) - want).abs() <= 4e-16 * want);
+}
+
+/// The family's materials name their NDF and shape (Ei reported (Gtr, NaN), Bessel-K a = 1
+/// (Gtr, 1): the compensation then took GTR γ = 1's shipped table).
+#[test]
+fn family_materials_name_themselves() {
+    let ei = Microfacet::<f64, Ei>::with_shape(0.5, 0.5, None).unwrap();
+    assert_eq!(ei.ndf(), Some((NdfKind::Ei, None)));
+    let b = Microfacet::<f64, BesselK>::with_shape(0.5, 0.5, Some(1.0)).unwrap();
+    assert_eq!(b.ndf(), Some((NdfKind::BesselK, Some(1.0))));
+    // Its compensated white furnace (F = 1) is 1 with its own table, not GTR's.
+    let c = CompensatedConductor::new(b, microsurface::bsdf::fresnel::One::<1>, Scheme::Turquin);
+    let e_gtr1 = AnyMicrofacet::<f64>::parse("gtr:1", 0.5, 0.5).unwrap();
+    let t_gtr1 = microsurface::scattering::AlbedoTable::new(&e_gtr1);
+    assert!((c.table().e(0.9) - t_gtr1.e(0.9)).abs() > 0.05);
+}
+
+/// Fresnel at the ends: n = 1 at grazing is 0 (was NaN), huge k → 1 (was NaN: k² overflowed),
+/// F82-tint never negative (−0.0326 at f0 = 0, h = 0) nor above 1.
+#[test]
+fn fresnel_at_the_ends() {
+    assert_eq!(conductor(0.0, 1.0, 0.0), 0.0);
+    for (eta, k) in [(1.5, 1e200), (1.5, 1e300), (1e200, 0.0), (1e300, 1e300)] {
+        for c in [0.0, 0.5, 1.0] {
+            let f: f64 = conductor(c, eta, k);
+            assert!((f - 1.0).abs() < 1e-12, "{c} {eta} {k}: {f}");
+        }
+    }
+    for c in [0.0f32, 0.5, 1.0] {
+        let f = conductor(c, 1.5f32, 1e20);
+        assert!((f - 1.0).abs() < 1e-6, "{c}: {f}");
+    }
+    // Continuity across the switch to the divided-through form.
+    let (a, b): (f64, f64) = (conductor(0.3, 2.0, 0.99e150), conductor(0.3, 2.0, 1.01e150));
+    assert!((a - b).abs() < 1e-12, "{a} {b}");
+    for h in [0.0, 0.3, 1.0, 1.5] {
+        for f0 in [0.0, 0.04, 0.5, 1.0] {
+            for k in 0..=100 {
+                let v = f82_tint(k as f64 / 100.0, f0, h);
+                assert!((0.0..=1.0).contains(&v), "{f0} {h}: {v}");
+            }
+        }
+    }
+}
+
+/// A tangent parallel to the normal falls back to `from_normal` (the rounding residue was
+/// kept as the tangent: s·n = −0.447).
+#[test]
+fn frame_tangent_parallel_to_the_normal() {
+    let f = Frame::from_normal_tangent([0.6, 0.8, 0.0], [1.8, 2.4, 0.0]);
+    let d = |a: [f64; 3], b: [f64; 3]| a[0] * b[0] + a[1] * b[1] + a[2] * b[2];
+    assert!(d(f.s, f.n).abs() < 1e-15 && (d(f.s, f.s) - 1.0).abs() < 1e-15);
+    assert_eq!(f.s, Frame::from_normal([0.6, 0.8, 0.0]).s);
+    let g = Frame::from_normal_tangent([0.0, 0.0, 1.0], [1.0, 1e-3, 0.3]);
+    assert!(d(g.s, g.n).abs() < 1e-16 && g.s[0] > 0.99);
+}
+
+/// The compensated BSDFs reject a sample from wo on the horizon, as the single-scattering
+/// ones (it returned f 0, pdf 2.9e-7).
+#[test]
+fn compensated_samples_from_the_horizon() {
+    let d = Microfacet::<f64, Ggx>::new(0.3, 0.3).unwrap();
+    let glass = CompensatedDielectric::new(d.clone(), 1.5, Scheme::KullaConty);
+    assert!(glass.sample([1.0, 0.0, 0.0], 0.0, [0.3, 0.6]).is_none());
+    let gold = microsurface::bsdf::fresnel::Conductor {
+        eta: [0.2; 3],
+        k: [3.9; 3],
+    };
+    let metal = CompensatedConductor::new(d, gold, Scheme::KullaConty);
+    assert!(metal.sample([1.0, 0.0, 0.0], 0.0, [0.3, 0.6]).is_none());
+}
+
+/// Table files keep every kind's shape parameter (Student-T's γ came back `None`).
+#[test]
+fn table_files_keep_the_shape() {
+    for (kind, shape) in [
+        (NdfKind::StudentT, 2.5),
+        (NdfKind::BesselK, 0.7),
+        (NdfKind::Gtr, 1.5),
+    ] {
+        let spec = Spec {
+            ndf: kind,
+            gamma: Some(shape),
+            material: Material::Furnace,
+            method: Method::Walk { walks: 20, seed: 1 },
+            alpha: vec![0.3],
+            mu: vec![0.5],
+        };
+        let g = Grid::generate(&spec, &|_, _| {}).unwrap();
+        let back = Grid::from_bytes(&g.to_bytes()).unwrap();
+        assert_eq!(back.spec.gamma, Some(shape), "{kind}");
+        assert_eq!(back.spec, spec);
+    }
+}
