@@ -173,13 +173,6 @@ fn from_f64s<F: Real>(w: [f64; 3]) -> [F; 3] {
     w.map(F::from_f64)
 }
 
-fn sample_from_f64<F: Real>(s: Sample<f64>) -> Sample<F> {
-    Sample {
-        wm: from_f64s(s.wm),
-        pdf: F::from_f64(s.pdf),
-    }
-}
-
 impl<F: Real> MicrofacetDistribution<F> for AnyMicrofacet<F> {
     #[inline]
     fn alpha(&self) -> (F, F) {
@@ -238,15 +231,25 @@ impl<F: Real> MicrofacetDistribution<F> for AnyMicrofacet<F> {
     }
     #[inline]
     fn sample(&self, w: [F; 3], u: [F; 2]) -> Sample<F> {
-        dispatch!(self, |m| m.sample(w, u), |e| sample_from_f64(
-            e.sample(f64s(w), u.map(F::to_f64))
-        ))
+        // (The exact path: the normal rounded to F first, then its pdf in F, so that a
+        // sample's pdf is `pdf(w, wm)` of the normal returned, as the static types'.)
+        dispatch!(self, |m| m.sample(w, u), |_e| {
+            let wm = self.sample_wm(w, u);
+            Sample {
+                wm,
+                pdf: self.pdf(super::unit(w), wm),
+            }
+        })
     }
     #[inline]
     fn sample_dcos(&self, u: [F; 2]) -> Sample<F> {
-        dispatch!(self, |m| m.sample_dcos(u), |e| sample_from_f64(
-            e.sample_dcos(u.map(F::to_f64))
-        ))
+        dispatch!(self, |m| m.sample_dcos(u), |e| {
+            let wm = from_f64s(e.sample_dcos(u.map(F::to_f64)).wm);
+            Sample {
+                wm,
+                pdf: self.pdf_dcos(wm),
+            }
+        })
     }
     #[inline]
     fn pdf_dcos(&self, wm: [F; 3]) -> F {
