@@ -153,3 +153,21 @@ fn table_files_keep_the_shape() {
         assert_eq!(back.spec, spec);
     }
 }
+
+/// The D·cos pdf of a normal a slope 1.2e-8 from the pole of a narrow Erfc lobe: finite, the
+/// exact path's value (∞ came out: the cosine rounded to 1, D(1) = ∞).
+#[test]
+fn pdf_dcos_near_the_pole() {
+    use microsurface::sampling::pdf_dcos;
+    use microsurface::{AnyNdf, Exact, Vec3};
+    for kind in [NdfKind::Erfc, NdfKind::Ei, NdfKind::K0] {
+        let n = AnyNdf::new(kind, 1e-6, None).unwrap();
+        let wm = [1.2e-8, 0.0, 1.0];
+        let got = pdf_dcos(&n, Vec3::new(wm[0], wm[1], wm[2]));
+        let want = Exact::new(kind, 1e-6, 1e-6, None).unwrap().pdf_dcos(wm);
+        assert!(
+            got.is_finite() && (got - want).abs() <= 1e-12 * want,
+            "{kind}: {got} vs {want}"
+        );
+    }
+}

@@ -364,12 +364,14 @@ pub fn pdf_dcos<N: Ndf + ?Sized>(ndf: &N, wm: Vec3) -> f64 {
     if wm.z <= 0.0 {
         return 0.0;
     }
-    // Near the pole through the slopes, D = P22(x/z, y/z)/z⁴: cos θm rounds to 1 below slopes
-    // ~1e-8, and D(1) is the pole (+∞) of Ei, Erfc, K0 and Bessel-K a ≤ 1, while P22 at the
-    // slopes is finite. (Slopes below α/100: there z⁴ = 1 to 4e-4 α², no cancellation.)
+    // Within 45° of the normal through the slopes, D = P22(x/z, y/z)/z⁴ (exact): there the
+    // cosine carries the direction poorly. It rounds to 1 below slopes ~1e-8, where D(1) is
+    // the pole (+∞) of Ei, Erfc, K0 and Bessel-K a ≤ 1 while P22 at the slopes is finite; and
+    // 1 − u² carries u's rounding, ε/(1 − u), which D's exponent multiplies by tan²θ/α² (a
+    // relative ε/α² inside a narrow lobe). Past 45° the cosine is well conditioned and z³ of
+    // a near-horizon normal would underflow.
     let (p, q) = (wm.x / wm.z, wm.y / wm.z);
-    let a = ndf.alpha();
-    if p * p + q * q < 1e-4 * a * a {
+    if p * p + q * q < 1.0 {
         let z2 = wm.z * wm.z;
         return ndf.p22(p, q) / (z2 * wm.z);
     }
