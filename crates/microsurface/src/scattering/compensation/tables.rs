@@ -57,31 +57,10 @@ impl AlbedoTable {
     /// own precision). Computed tables of the library's materials are cached for the
     /// process, so the compensated BSDFs of one material share one table.
     pub fn new<F: Real, D: MicrofacetDistribution<F>>(dist: &D) -> Arc<Self> {
-        static TABLES: FitCache<(NdfKind, u64, u64, u64), AlbedoTable> = OnceLock::new();
-        let (ax, ay) = (dist.alpha().0.to_f64(), dist.alpha().1.to_f64());
-        let Some((kind, shape)) = dist.ndf() else {
-            return Arc::new(Self::compute(&Widened(dist, PhantomData)));
-        };
-        if ax == ay {
-            if let Some(t) = Self::shipped(kind, shape, ax) {
-                return Arc::new(t);
-            }
-        }
-        let key = (
-            kind,
-            shape.unwrap_or(0.0).to_bits(),
-            ax.to_bits(),
-            ay.to_bits(),
-        );
-        let made: Result<_, std::convert::Infallible> = cached(&TABLES, key, || {
-            Ok(match AnyMicrofacet::<f64>::new(kind, ax, ay, shape) {
-                Ok(twin) => Self::compute(&twin),
-                Err(_) => Self::compute(&Widened(dist, PhantomData)),
-            })
-        });
-        match made {
-            Ok(t) => t,
-        }
+        static TABLES: TableCache<AlbedoTable> = OnceLock::new();
+        table_of(dist, &TABLES, 0, Self::shipped, Self::compute, || {
+            Self::compute(&Widened(dist, PhantomData))
+        })
     }
 
     /// The table of `dist` computed here: 33 quadratures of the single-scattering albedo
@@ -281,28 +260,15 @@ impl DielectricTables {
     /// material's f64 twin, as [`AlbedoTable::new`], and cached for the process by
     /// (material, η).
     pub fn new<F: Real, D: MicrofacetDistribution<F>>(dist: &D, eta: f64) -> Arc<Self> {
-        type Key = (NdfKind, u64, u64, u64, u64);
-        static TABLES: FitCache<Key, DielectricTables> = OnceLock::new();
-        let (ax, ay) = (dist.alpha().0.to_f64(), dist.alpha().1.to_f64());
-        let Some((kind, shape)) = dist.ndf() else {
-            return Arc::new(Self::compute(&Widened(dist, PhantomData), eta));
-        };
-        if ax == ay {
-            if let Some(t) = Self::shipped(kind, shape, ax, eta) {
-                return Arc::new(t);
-            }
-        }
-        let bits = shape.unwrap_or(0.0).to_bits();
-        let key = (kind, bits, ax.to_bits(), ay.to_bits(), eta.to_bits());
-        let made: Result<_, std::convert::Infallible> = cached(&TABLES, key, || {
-            Ok(match AnyMicrofacet::<f64>::new(kind, ax, ay, shape) {
-                Ok(twin) => Self::compute(&twin, eta),
-                Err(_) => Self::compute(&Widened(dist, PhantomData), eta),
-            })
-        });
-        match made {
-            Ok(t) => t,
-        }
+        static TABLES: TableCache<DielectricTables> = OnceLock::new();
+        table_of(
+            dist,
+            &TABLES,
+            eta.to_bits(),
+            |kind, shape, alpha| Self::shipped(kind, shape, alpha, eta),
+            |twin| Self::compute(twin, eta),
+            || Self::compute(&Widened(dist, PhantomData), eta),
+        )
     }
 
     /// The tables of an isotropic material of NDF `kind` (GTR: γ ∈ {1, 2}) at α from the
@@ -501,6 +467,45 @@ pub fn dielectric_table_bytes(
         b.extend_from_slice(&v.to_le_bytes());
     }
     Ok(b)
+}
+
+/// The process-wide cache of computed tables, by (kind, shape, αx, αy, and the dielectric's
+/// η: 0 for a conductor's table), as bits.
+type TableCache<T> = FitCache<(NdfKind, u64, u64, u64, u64), T>;
+
+/// The table of `dist` (both [`AlbedoTable::new`] and [`DielectricTables::new`]): `shipped`
+/// for an isotropic material of the library where it has one; else `compute` on the
+/// material's f64 twin (the same NDF, α and shape through [`AnyMicrofacet`]) once per
+/// material, `extra` and process (`cache`); a distribution that does not name its NDF, or
+/// whose twin cannot be built, by `widened` (in its own precision, not cached).
+fn table_of<F: Real, D: MicrofacetDistribution<F>, T>(
+    dist: &D,
+    cache: &'static TableCache<T>,
+    extra: u64,
+    shipped: impl FnOnce(NdfKind, Option<f64>, f64) -> Option<T>,
+    compute: impl FnOnce(&AnyMicrofacet<f64>) -> T,
+    widened: impl FnOnce() -> T,
+) -> Arc<T> {
+    let (ax, ay) = (dist.alpha().0.to_f64(), dist.alpha().1.to_f64());
+    let Some((kind, shape)) = dist.ndf() else {
+        return Arc::new(widened());
+    };
+    if ax == ay {
+        if let Some(t) = shipped(kind, shape, ax) {
+            return Arc::new(t);
+        }
+    }
+    let bits = shape.unwrap_or(0.0).to_bits();
+    let key = (kind, bits, ax.to_bits(), ay.to_bits(), extra);
+    let made: Result<_, std::convert::Infallible> = cached(cache, key, || {
+        Ok(match AnyMicrofacet::<f64>::new(kind, ax, ay, shape) {
+            Ok(twin) => compute(&twin),
+            Err(_) => widened(),
+        })
+    });
+    match made {
+        Ok(t) => t,
+    }
 }
 
 /// A distribution of precision F seen as an f64 one (arguments rounded to F, values
