@@ -9,6 +9,9 @@ agreement.
 
 Usage: python3 scripts/reference.py [NDF ...] > crates/microsurface/tests/data/extra-NAME.json
 (no NDF: all of them; the test reads every tests/data/extra-*.json)
+       python3 scripts/reference.py --tails > crates/microsurface/tests/data/extra-tails.json
+(D, P22 and P2 of every NDF deep in their tails, down to 1e-300: where an intermediate
+exponential would be subnormal; each record carries its condition number "cond")
 Needs: pip install mpmath  (runs in a few minutes on 2 cores)
 """
 import json
@@ -329,7 +332,87 @@ def rec(ndf, a, g, quantity, value, methods, **inputs):
     return r
 
 
+def log_cond(f, x):
+    """|d ln f / d ln x| at x: the relative error of f that one relative rounding of its input
+    causes (what any implementation pays for an input given in binary)."""
+    h = mpf("1e-12")
+    with mp.workdps(mp.dps + 30):
+        return abs((log(f(x * (1 + h))) - log(f(x * (1 - h)))) / (2 * h))
+
+
+def crossing(f, target, x0, x1, rising):
+    """The double x in [x0, x1] where f (monotone there) crosses target, by bisection on ln x;
+    None if f does not cross it."""
+    f0, f1 = f(x0), f(x1)
+    if not ((f0 < target < f1) if rising else (f1 < target < f0)):
+        return None
+    l, h = log(x0), log(x1)
+    for _ in range(200):
+        m = (l + h) / 2
+        if (f(exp(m)) < target) == rising:
+            l = m
+        else:
+            h = m
+    return dec(exp(h))
+
+
+def tails():
+    """D(u) at u from 1e-3 down to 1e-150, and P22(p, 0), P2(p) at p up to 1e100 α, for every
+    NDF; plus the u and p where each falls to 1e-100 ... 1e-300 (where an implementation's
+    intermediate exponential turns subnormal). Values outside [1e-300, 1e300] are dropped
+    (nothing to test in f64). P2 of GTR and of the generalised exponential are left out (a
+    2F1 and a quadrature that far in the tail are not references)."""
+    out = []
+    cases = []
+    for ndf in ["beckmann", "ggx", "double_ggx", "exponential", "ei", "erfc", "k0"]:
+        cases += [(ndf, None)]
+    cases += [("gtr", g) for g in ["0.5", "1", "1.5", "3"]]
+    cases += [("student_t", g) for g in ["1.2", "1.6", "4.939988403849865", "50"]]
+    cases += [("bessel_k", g) for g in ["0.3", "1.5", "6"]]
+    cases += [("gen_exponential", g) for g in ["0.5", "1.5", "4"]]
+    for ndf, gs in cases:
+        for a_ in ["3.5376889982760974e-3", "0.4", "2.5"]:
+            a, g = dec(a_), (dec(gs) if gs else None)
+            D, P, P2 = make(ndf, a, g)
+            us = [dec(x) for x in ["1e-3", "1e-8", "1e-20", "1e-30", "1e-60", "1e-100", "1e-150"]]
+            ps = [dec(a * mpf(10) ** k) for k in [3, 10, 30, 100]]
+            lo, hi = mpf("1e-300"), mpf("1e300")
+            for target in [mpf(10) ** -k for k in [100, 200, 250, 290, 300]]:
+                # D rises from the horizon, P22 and P2 fall with p: the crossings of the target
+                x = crossing(D, target, mpf("1e-150"), mpf(1), rising=True)
+                us += [x] if x is not None else []
+                for f in [P] + ([P2] if ndf not in ("gen_exponential", "gtr") else []):
+                    x = crossing(f, target, a, a * mpf(10) ** 100, rising=False)
+                    ps += [x] if x is not None else []
+            for u in us:
+                v = D(u)
+                if lo <= v <= hi:
+                    r = rec(ndf, a, g, "D", v, {"closed form": v}, u=u)
+                    r["cond"] = mp.nstr(log_cond(D, u), 5)
+                    out.append(r)
+            for p in sorted(set(ps)):
+                q = mpf(0)
+                v = P(p)
+                if lo <= v <= hi:
+                    r = rec(ndf, a, g, "P22", v, {"closed form": v}, p=p, q=q)
+                    r["cond"] = mp.nstr(log_cond(P, p), 5)
+                    out.append(r)
+                if ndf in ("gen_exponential", "gtr"):
+                    continue
+                v = P2(p)
+                if lo <= v <= hi:
+                    r = rec(ndf, a, g, "P2", v, {"closed form": v}, p=p)
+                    r["cond"] = mp.nstr(log_cond(P2, p), 5)
+                    out.append(r)
+        print(f"{ndf} g={gs}: {len(out)} records", file=sys.stderr)
+    meta = {"description": "deep-tail reference values (scripts/reference.py --tails, mpmath)",
+            "dps": mp.dps, "n_records": len(out)}
+    json.dump({"meta": meta, "records": out}, sys.stdout, indent=0)
+
+
 def main():
+    if sys.argv[1:] == ["--tails"]:
+        return tails()
     out = []
     dropped = []
     alphas = ["0.001", "0.03", "0.4", "2.5", "10"]

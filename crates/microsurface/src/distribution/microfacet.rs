@@ -293,6 +293,12 @@ impl Shape for Beckmann {
     fn lambda_iso<F: Real>(_: &(), u: F, alpha: F) -> F {
         fast::beckmann::lambda(u, alpha)
     }
+    /// The vector form for isotropic materials too (as [`Ggx`]'s): x² + y² where the scalar
+    /// path has 1 − z², which near the normal has lost the digits of a rounded unit vector.
+    #[inline(always)]
+    fn d<F: Real>(data: &(), wm: [F; 3], ax: F, ay: F, _iso: bool) -> F {
+        Self::d_aniso(data, wm, ax, ay)
+    }
     /// D = e^{−y}/(π αx αy z⁴), y = ((x/αx)² + (y/αy)²)/z², from the normal directly; the
     /// ends (below the horizon, f32 past y = 80 where the scalar path widens, underflow) by
     /// the projected route, out of line.
@@ -366,6 +372,12 @@ impl Shape for DoubleGgx {
     fn lambda_iso<F: Real>(_: &(), u: F, alpha: F) -> F {
         fast::double_ggx::lambda(u, alpha)
     }
+    /// The vector form for isotropic materials too (as [`Ggx`]'s): x² + y² where the scalar
+    /// path has 1 − z², which near the normal has lost the digits of a rounded unit vector.
+    #[inline(always)]
+    fn d<F: Real>(data: &(), wm: [F; 3], ax: F, ay: F, _iso: bool) -> F {
+        Self::d_aniso(data, wm, ax, ay)
+    }
     /// D = G(1/y)/(π αx αy z⁴), y = ((x/αx)² + (y/αy)²)/z², from the normal and the kernel's
     /// table; the ends by the projected route, out of line. Evaluated in f64 (as the scalar D).
     #[inline(always)]
@@ -433,6 +445,12 @@ impl Shape for Exponential {
     fn lambda_iso<F: Real>(_: &(), u: F, alpha: F) -> F {
         fast::exponential::lambda(u, alpha)
     }
+    /// The vector form for isotropic materials too (as [`Ggx`]'s): x² + y² where the scalar
+    /// path has 1 − z², which near the normal has lost the digits of a rounded unit vector.
+    #[inline(always)]
+    fn d<F: Real>(data: &(), wm: [F; 3], ax: F, ay: F, _iso: bool) -> F {
+        Self::d_aniso(data, wm, ax, ay)
+    }
     /// D = 2 e^{−2√y}/(π αx αy z⁴), y = ((x/αx)² + (y/αy)²)/z², from the normal; the ends by
     /// the projected route, out of line. Evaluated in f64 (as the scalar D).
     #[inline(always)]
@@ -497,6 +515,14 @@ impl Shape for Gtr {
         match data {
             GtrData::Fitted(g) => g.lambda(u),
             GtrData::Ggx => fast::ggx::lambda(u, alpha),
+        }
+    }
+    /// From the vector (x² + y² rather than 1 − z², as [`Ggx`]'s).
+    #[inline(always)]
+    fn d<F: Real>(data: &GtrData, wm: [F; 3], ax: F, ay: F, _iso: bool) -> F {
+        match data {
+            GtrData::Fitted(g) => g.d_vec(wm),
+            GtrData::Ggx => ggx_d_aniso(wm, ax, ay),
         }
     }
     #[inline(always)]

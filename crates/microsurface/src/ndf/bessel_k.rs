@@ -31,7 +31,9 @@
 //! Accuracy (tests/reference.rs against mpmath): ≤ 1e-12 relative for every quantity.
 
 use crate::error::{check_alpha, check_shape, ParamError};
-use crate::math::special::{gamma_ratio_half, ln_bessel_k, ln_gamma, ln_xnu_bessel_k_small};
+use crate::math::special::{
+    exp_over, gamma_ratio_half, ln_bessel_k, ln_gamma, ln_xnu_bessel_k_small,
+};
 use crate::ndf::{Ndf, ShapeInvariant};
 use crate::sampling::dcos::RadialSlopes;
 use std::f64::consts::LN_2;
@@ -162,11 +164,17 @@ impl BesselK {
 
     /// P22 at x² = r²/α² (for x² > 0): (2/(π α² Γ(a))) x^{a−1} K_{a−1}(2x).
     fn p22_x2(&self, x2: f64) -> f64 {
+        self.p22_x2_over(x2, 1.0, || 0.0)
+    }
+
+    /// P22/d at x² = r²/α², with ln d from `ln_d` (d = u⁴ for D: P22 turns subnormal before D
+    /// does, and u⁴ may underflow).
+    fn p22_x2_over(&self, x2: f64, d: f64, ln_d: impl FnOnce() -> f64) -> f64 {
         if x2.is_nan() {
             return x2;
         }
         if x2 == 0.0 {
-            return self.p22_zero();
+            return self.p22_zero() / d;
         }
         if x2 == f64::INFINITY {
             return 0.0;
@@ -174,7 +182,7 @@ impl BesselK {
         let x = x2.sqrt();
         let ln =
             (self.a - 1.0) * x.ln() + ln_bessel_k(self.a - 1.0, 2.0 * x) + LN_2 - self.ln_gamma_a;
-        (ln - (PI * self.alpha * self.alpha).ln()).exp()
+        exp_over(ln - (PI * self.alpha * self.alpha).ln(), d, ln_d)
     }
 
     /// P22(0) = D(1) = E[1/m]/(π α²) = 1/(π α² (a − 1)) for a > 1, +∞ otherwise.
@@ -199,12 +207,7 @@ impl Ndf for BesselK {
     fn d_pos(&self, u: f64) -> f64 {
         let s2 = crate::math::special::dd::Dd::one_minus_sq(u).hi;
         let x2 = s2 / (u * u * self.alpha * self.alpha);
-        let p = self.p22_x2(x2);
-        if p == 0.0 || p == f64::INFINITY {
-            return p;
-        }
-        let u2 = u * u;
-        p / (u2 * u2)
+        self.p22_x2_over(x2, (u * u) * (u * u), || 4.0 * u.ln())
     }
 
     fn p22(&self, p: f64, q: f64) -> f64 {

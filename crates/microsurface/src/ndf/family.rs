@@ -352,9 +352,9 @@ impl AnyNdf {
         }
     }
 
-    /// ln f(x) of the α = 1 profile for x ≥ 1e50 given as ln x, where x itself may overflow:
+    /// ln f(x) of the α = 1 profile for x ≥ 1e15 given as ln x, where x itself may overflow:
     /// Student-T's power law, f = ((γ − 1)/(x² + γ − 1))^γ/π → (γ − 1)^γ x^{−2γ}/π (relative
-    /// error γ(γ − 1)/x² ≤ 1e-88 at γ ≤ 1e6); `None` for the others, whose f is 0 in f64 there
+    /// error γ(γ − 1)/x² ≤ 1e-18 at γ ≤ 1e6); `None` for the others, whose f is 0 in f64 there
     /// (exponential tails).
     pub(crate) fn ln_f_far(&self, ln_x: f64) -> Option<f64> {
         match self {
@@ -367,14 +367,14 @@ impl AnyNdf {
     }
 
     /// D of the unit normal wm (z > 0) at roughness (αx, αy) from this α = 1 member, through
-    /// the stretched slopes g = (x/(αx z), y/(αy z)): P22₁(g)/(αx αy z⁴); below z = 1e-60,
-    /// where z⁴ underflows, f(X)/(αx αy z⁴) with X = |(x/αx, y/αy)|/z ≥ 1e54 (every α ≤ 1e6)
-    /// in logarithms ([`AnyNdf::ln_f_far`]: Student-T's power law; 0 for the exponential
-    /// tails).
+    /// the stretched slopes g = (x/(αx z), y/(αy z)): P22₁(g)/(αx αy z⁴); far in the tail, at
+    /// X = |g| ≥ 1e15 (where P22₁ turns subnormal before D does, and X or z⁴ may leave the
+    /// range), f(X)/(αx αy z⁴) in logarithms from ln X ([`AnyNdf::ln_f_far`]: Student-T's
+    /// power law, whose next term γ(γ − 1)/X² ≤ 1e-18 there; 0 for the exponential tails).
     pub(crate) fn d_stretched(&self, wm: [f64; 3], ax: f64, ay: f64) -> f64 {
         let z = wm[2];
-        if z <= 1e-60 {
-            let s = crate::math::vec3::hypot(wm[0] / ax, wm[1] / ay);
+        let s = crate::math::vec3::hypot(wm[0] / ax, wm[1] / ay);
+        if s >= 1e15 * z {
             return match self.ln_f_far(s.ln() - z.ln()) {
                 Some(lf) => (lf - (ax * ay).ln() - 4.0 * z.ln()).exp(),
                 None => 0.0,
@@ -505,6 +505,9 @@ impl Ndf for AnyNdf {
     }
     fn d_pos(&self, u: f64) -> f64 {
         self.inner().d_pos(u)
+    }
+    fn d_cos_pos(&self, u: f64) -> f64 {
+        self.inner().d_cos_pos(u)
     }
     fn p22(&self, p: f64, q: f64) -> f64 {
         self.inner().p22(p, q)

@@ -25,7 +25,7 @@
 //! forms ≤ 1e-13, P2 and Λ ≤ 1e-12.
 
 use crate::error::{check_alpha, check_shape, ParamError};
-use crate::math::special::{gamma, inc_gamma};
+use crate::math::special::{exp_over, gamma, inc_gamma};
 use crate::ndf::{Ndf, ShapeInvariant};
 use crate::sampling::dcos::RadialSlopes;
 use std::f64::consts::PI;
@@ -74,14 +74,17 @@ impl GenExponential {
 
     /// e^{−x^γ}/N at x = r/α.
     fn p22_x(&self, x: f64) -> f64 {
+        self.p22_x_over(x, 1.0, || 0.0)
+    }
+
+    /// e^{−x^γ}/(N d) at x = r/α, with ln d from `ln_d` (d = u⁴ for D, 1 for P22).
+    fn p22_x_over(&self, x: f64, d: f64, ln_d: impl FnOnce() -> f64) -> f64 {
         if x.is_nan() {
             return x;
         }
         let e = x.powf(self.gamma);
-        if e > EXP_UNDERFLOW {
-            return 0.0;
-        }
-        (-e).exp() / (PI * self.alpha * self.alpha * self.g2)
+        let norm = PI * self.alpha * self.alpha * self.g2;
+        exp_over(-e, norm * d, || norm.ln() + ln_d())
     }
 
     /// The scale of the tail of the slope distribution: α (2/γ)^{1/γ}, where the radial
@@ -102,17 +105,9 @@ impl Ndf for GenExponential {
 
     fn d_pos(&self, u: f64) -> f64 {
         let tan = crate::math::special::dd::Dd::one_minus_sq(u).sqrt().hi / u;
-        let p = self.p22_x(tan / self.alpha);
-        if p == 0.0 {
-            return 0.0;
-        }
-        let u2 = u * u;
-        let u4 = u2 * u2;
-        if u4 > 1e-290 {
-            p / u4
-        } else {
-            (p.ln() - 4.0 * u.ln()).exp()
-        }
+        // (u⁴ underflows below u ~ 1e-77, e^{−x^γ} turns subnormal before D does: in
+        // logarithms there.)
+        self.p22_x_over(tan / self.alpha, (u * u) * (u * u), || 4.0 * u.ln())
     }
 
     fn p22(&self, p: f64, q: f64) -> f64 {

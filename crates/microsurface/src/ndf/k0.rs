@@ -41,16 +41,24 @@ impl K0 {
 
     /// 2 K₀(z)/(π α²) for z = 2r/α in double-double.
     fn p22_z(&self, z: Dd) -> f64 {
+        self.p22_z_over(z, 1.0, || 0.0)
+    }
+
+    /// P22/d at z = 2r/α, with ln d from `ln_d` (d = u⁴ for D: e^{−z} turns subnormal before D
+    /// does, and u⁴ may underflow).
+    fn p22_z_over(&self, z: Dd, d: f64, ln_d: impl FnOnce() -> f64) -> f64 {
         if z.hi.is_nan() {
             return f64::NAN;
         }
         if z.hi == 0.0 {
             return f64::INFINITY;
         }
-        if z.hi > EXP_UNDERFLOW {
+        if z.hi == f64::INFINITY {
             return 0.0;
         }
-        2.0 * k0e(z.hi) * z.exp_neg() / (PI * self.alpha * self.alpha)
+        // P22 = 2 e^{−z} K₀e(z)/(π α²) = e^{−z}/n, n = π α²/(2 K₀e(z)).
+        let n = PI * self.alpha * self.alpha / (2.0 * k0e(z.hi));
+        z.exp_neg_over(n * d, || n.ln() + ln_d())
     }
 
     /// z = 2r/α in double-double.
@@ -80,12 +88,7 @@ impl Ndf for K0 {
 
     fn d_pos(&self, u: f64) -> f64 {
         let tan = Dd::one_minus_sq(u).sqrt().div_dd(Dd::new(u));
-        let p = self.p22_z(self.z(tan));
-        if p == 0.0 || p == f64::INFINITY {
-            return p;
-        }
-        let u2 = u * u;
-        p / (u2 * u2)
+        self.p22_z_over(self.z(tan), (u * u) * (u * u), || 4.0 * u.ln())
     }
 
     fn p22(&self, p: f64, q: f64) -> f64 {

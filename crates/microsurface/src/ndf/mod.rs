@@ -75,6 +75,13 @@ pub trait Ndf {
         }
     }
 
+    /// D(u) u for 0 < u ≤ 1, the density of D·cos sampling (callers use
+    /// [`crate::sampling::pdf_dcos`]). Overridden where D overflows toward the horizon while
+    /// D u does not (Student-T at γ < 2).
+    fn d_cos_pos(&self, u: f64) -> f64 {
+        self.d_pos(u) * u
+    }
+
     /// σ(−u) = u Λ(u) for 0 < u < 1, the projected area seen from below (callers use
     /// [`Ndf::sigma`]). Overridden where σ(−u) has a more direct route than u · Λ(u).
     fn sigma_neg(&self, u: f64) -> f64 {

@@ -38,7 +38,7 @@
 //!   integral (γ > 21, ζ < 0.44) ≤ 1e-12.
 
 use crate::error::{check_alpha, check_shape, ParamError};
-use crate::math::special::{dd::Dd, gamma_ratio_half, inc_beta};
+use crate::math::special::{dd::Dd, exp_over, gamma_ratio_half, inc_beta};
 use crate::ndf::{Ndf, ShapeInvariant};
 use crate::sampling::dcos::RadialSlopes;
 use std::f64::consts::PI;
@@ -105,6 +105,43 @@ impl StudentT {
         }
     }
 
+    /// (1 + t)^{−e} for t = r²/c > 1 by `powf` of the rounded base (≈ e ulps, the condition
+    /// number's share: exp(−e ln1p t) would carry e ln t ulps), where that is a normal double;
+    /// `None` for t ≤ 1 (ln1p is exact there) and outside the normal range.
+    fn pow_tail(&self, r2: f64, e: f64) -> Option<f64> {
+        let t = r2 / self.c;
+        let v = (1.0 + t).powf(-e);
+        (t > 1.0 && v.is_normal()).then_some(v)
+    }
+
+    /// D(u) u^k for 0 < u ≤ 1 (k = 0: D; k = 1: D cos θ, finite where D overflows toward the
+    /// horizon at γ < 2, D ~ u^{2γ−4}).
+    fn d_times_pow(&self, u: f64, k: f64) -> f64 {
+        // tan²θ = (1 − u²)/u², 1 − u² in double-double.
+        let s2 = Dd::one_minus_sq(u).hi;
+        let r2 = s2 / (u * u);
+        let norm = PI * self.alpha * self.alpha;
+        if r2 > self.c {
+            // The tail (t > 1): D u^k = b^{−γ} u^{2γ−4+k}/(π α²) with b = u²(1 + t) =
+            // u² + (1 − u²)/c, two powers of rounded bases (≈ 2γ ulps, the condition number's
+            // own share) where the exponential of the summed logarithms below would carry
+            // |γ ln t| + |4 ln u| ulps.
+            let head = (u * u + s2 / self.c).powf(-self.gamma);
+            let tail = u.powf(2.0 * self.gamma - 4.0 + k);
+            let v = head * tail / norm;
+            if head.is_normal() && tail.is_normal() && v.is_normal() {
+                return v;
+            }
+        }
+        let l = self.ln1p_t(r2, || s2.ln() - 2.0 * u.ln());
+        // Toward the horizon (1 + t)^{−γ} turns subnormal and u⁴ underflows (below u ~ 1e-77)
+        // while D ~ u^{2γ−4} stays representable: in logarithms there.
+        let d = norm * (u * u) * (u * u);
+        exp_over(-self.gamma * l, d / u.powf(k), || {
+            norm.ln() + (4.0 - k) * u.ln()
+        })
+    }
+
     /// Λ at x = cot θ/α (+∞ for γ ≤ 3/2).
     pub(crate) fn lambda_x(&self, x: f64) -> f64 {
         if !self.has_finite_lambda() {
@@ -165,20 +202,11 @@ impl Ndf for StudentT {
     }
 
     fn d_pos(&self, u: f64) -> f64 {
-        // tan²θ = (1 − u²)/u², 1 − u² in double-double.
-        let s2 = Dd::one_minus_sq(u).hi;
-        let r2 = s2 / (u * u);
-        let l = self.ln1p_t(r2, || s2.ln() - 2.0 * u.ln());
-        let e = -self.gamma * l;
-        let norm = PI * self.alpha * self.alpha;
-        let u2 = u * u;
-        let u4 = u2 * u2;
-        // u⁴ underflows below u ~ 1e-77 (D ~ u^{2γ−4} there): in logarithms.
-        if u4 > 1e-290 {
-            e.exp() / (norm * u4)
-        } else {
-            (e - 4.0 * u.ln() - norm.ln()).exp()
-        }
+        self.d_times_pow(u, 0.0)
+    }
+
+    fn d_cos_pos(&self, u: f64) -> f64 {
+        self.d_times_pow(u, 1.0)
     }
 
     fn p22(&self, p: f64, q: f64) -> f64 {
@@ -186,16 +214,24 @@ impl Ndf for StudentT {
         if r2.is_nan() {
             return f64::NAN;
         }
+        let norm = PI * self.alpha * self.alpha;
+        if let Some(v) = self.pow_tail(r2, self.gamma) {
+            return v / norm;
+        }
         let l = self.ln1p_t(r2, || 2.0 * p.abs().hypot(q.abs()).ln());
-        (-self.gamma * l).exp() / (PI * self.alpha * self.alpha)
+        exp_over(-self.gamma * l, norm, || norm.ln())
     }
 
     fn p2(&self, p: f64) -> f64 {
         if p.is_nan() {
             return p;
         }
+        let norm = self.c.sqrt() / self.inv_beta;
+        if let Some(v) = self.pow_tail(p * p, self.gamma - 0.5) {
+            return v / norm;
+        }
         let l = self.ln1p_t(p * p, || 2.0 * p.abs().ln());
-        self.inv_beta * ((0.5 - self.gamma) * l).exp() / self.c.sqrt()
+        exp_over((0.5 - self.gamma) * l, norm, || norm.ln())
     }
 
     fn lambda_pos(&self, u: f64) -> f64 {
@@ -257,7 +293,12 @@ impl RadialSlopes for StudentT {
         } else {
             -(1.0 - xi).ln()
         };
-        let e = (l / (self.gamma - 1.0)).exp_m1();
-        (self.c * e).sqrt()
+        let x = l / (self.gamma - 1.0);
+        if x > 1.0 {
+            // r² = c eˣ(1 − e^{−x}) in logarithms: eˣ overflows from x = 710 (γ near 1),
+            // while r stays finite up to x ≈ 1418 (a normal at m.z ~ 1e-300).
+            return (0.5 * (self.c.ln() + x + (-(-x).exp()).ln_1p())).exp();
+        }
+        (self.c * x.exp_m1()).sqrt()
     }
 }

@@ -339,6 +339,10 @@ pub(crate) fn normal_from_polar_slope(r: f64, phi: f64) -> Vec3 {
     if r == f64::INFINITY {
         return Vec3::new(c, s, 0.0);
     }
+    if r > 1e150 {
+        // r² would overflow: z = 1/r, sin θ = 1 (both within r^{−2} ≤ 1e-300 relative).
+        return Vec3::new(c, s, 1.0 / r);
+    }
     let z = 1.0 / (1.0 + r * r).sqrt();
     let sin = r * z; // sin θ = r cos θ, without 1 − z² cancellation
     Vec3::new(sin * c, sin * s, z)
@@ -375,5 +379,5 @@ pub fn pdf_dcos<N: Ndf + ?Sized>(ndf: &N, wm: Vec3) -> f64 {
         let z2 = wm.z * wm.z;
         return ndf.p22(p, q) / (z2 * wm.z);
     }
-    ndf.d(wm.z) * wm.z
+    ndf.d_cos_pos(wm.z.min(1.0))
 }

@@ -447,14 +447,33 @@ impl FittedGtr {
             return F::from_f64(self.d_outside(u));
         }
         let ua = self.alpha * u;
-        let x = (1.0 - u) * (1.0 + u) + ua * ua;
+        F::from_f64(self.d_x((1.0 - u) * (1.0 + u) + ua * ua))
+    }
+
+    /// D of the unit normal wm: x = sin²θ + (α cos θ)² from the vector's x² + y² (where the
+    /// scalar form's 1 − u² has lost the digits of a rounded near-normal vector: f32 wm.z
+    /// carries 6e-8, a relative 6e-8/(1 − u) of 1 − u²); wm.z outside (0, 1] as [`Self::d`].
+    #[inline]
+    pub fn d_vec<F: Real>(&self, wm: [F; 3]) -> F {
+        let u = wm[2].to_f64();
+        if !(u > 0.0 && u <= 1.0) {
+            return F::from_f64(self.d_outside(u));
+        }
+        let (x, y) = (wm[0].to_f64(), wm[1].to_f64());
+        let ua = self.alpha * u;
+        F::from_f64(self.d_x(x * x + y * y + ua * ua))
+    }
+
+    /// c x^{−γ} at x = sin²θ + (α cos θ)² > 0.
+    #[inline(always)]
+    fn d_x(&self, x: f64) -> f64 {
         // γ = 1 (Burley's clearcoat) and γ = 2 (GGX) need no logarithm; the test is on a
         // material constant, so it predicts.
-        F::from_f64(match self.power {
+        match self.power {
             Power::One => self.c / x,
             Power::Two => self.c / (x * x),
             Power::General => (self.ln_c - self.gamma * x.ln()).exp(),
-        })
+        }
     }
 
     /// D outside (0, 1]: 0 below the horizon, D(1) above 1, NaN for NaN.

@@ -99,4 +99,12 @@ impl Dd {
         let e = (-self.hi).exp();
         e - e * self.lo
     }
+
+    /// exp(−self)/d for d > 0 without a subnormal intermediate (see [`super::exp_over`]; `ln_d`
+    /// gives ln d where d or e^{−self} leaves the normal range).
+    #[inline]
+    pub fn exp_neg_over(self, d: f64, ln_d: impl FnOnce() -> f64) -> f64 {
+        let e = super::exp_over(-self.hi, d, ln_d);
+        e - e * self.lo
+    }
 }

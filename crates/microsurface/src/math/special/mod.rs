@@ -17,6 +17,20 @@ mod tests;
 /// √π.
 pub const SQRT_PI: f64 = 1.772_453_850_905_516;
 
+/// eˣ/d for d > 0, without a subnormal or overflowing intermediate: the plain quotient where
+/// eˣ and d are normal doubles, else exp(x − ln d) with ln d from `ln_d` (which the caller forms
+/// without underflow, e.g. ln π α² + 4 ln u for d = π α² u⁴). A value formed either way carries
+/// about |x − ln d| ulps from the rounding of its exponent, the floor of any exponential.
+#[inline]
+pub fn exp_over(x: f64, d: f64, ln_d: impl FnOnce() -> f64) -> f64 {
+    // e^x is normal for x ∈ [−708, 709] (2.2e-308 = e^{−708.4}, 1.8e308 = e^{709.8}).
+    if (-708.0..=709.0).contains(&x) && d.is_normal() {
+        x.exp() / d
+    } else {
+        (x - ln_d()).exp()
+    }
+}
+
 /// Error function erf(x) (libm).
 #[inline]
 pub fn erf(x: f64) -> f64 {
