@@ -4,10 +4,13 @@
 //!
 //! Residuals are relative: |lhs − rhs| / max(|lhs|, |rhs|) (0 when both are 0), maximised over
 //! the sample points of a check. Each check passes when its residual is at most its tolerance:
-//! [`TOL`], or [`u_space_tol`] for the checks that integrate over u at very small α.
+//! [`TOL`], or [`u_space_tol`] for the checks that integrate over u at very small α. Every
+//! accepted parameter is checked, except Student-T's Λ integrals below
+//! [`STUDENT_T_CHECKED_GAMMA_MIN`] (their quadratures cannot reach the mass; such a check is
+//! reported as skipped, with the reason, and passes).
 
 use crate::math::quad::{integrate, integrate_to_inf};
-use crate::math::smith::delta_sigma;
+use crate::math::smith::{delta_sigma, delta_sigma_at};
 use crate::ndf::mixture::{superpose_beckmann, superpose_ggx, Mixing};
 use crate::{AnyNdf, DoubleGgx, Exponential, Ggx, Gtr, Ndf, NdfKind, RadialSlopes};
 use std::f64::consts::PI;
@@ -44,14 +47,28 @@ pub struct Check {
     pub residual: f64,
     /// Tolerance.
     pub tol: f64,
+    /// Why the check was not made (its residual is then NaN): parameters where its
+    /// quadrature cannot resolve the integral (see [`ndf_checks`]).
+    pub skipped: Option<&'static str>,
 }
 
 impl Check {
-    /// Passed (a NaN residual fails).
+    /// Passed, or skipped (a NaN residual of a check that was made fails).
     pub fn pass(&self) -> bool {
-        self.residual <= self.tol
+        self.skipped.is_some() || self.residual <= self.tol
     }
 }
+
+/// Below this γ, Student-T's Λ-integral checks are skipped: Λ ∝ 1/(2γ − 3) comes from the
+/// tail P2 ~ p^{1−2γ}, whose mass within the double range (slopes to 1e308) falls short of the
+/// whole by (1e308)^{−(2γ−3)} ≥ 1e-10 below γ ≈ 1.52, and the quadratures lose it
+/// before that (measured: 5e-10 at 1.53, 1e-11 at 1.54). The values there are checked
+/// against mpmath instead (tests/data, γ = 1.2 and 1.6).
+pub const STUDENT_T_CHECKED_GAMMA_MIN: f64 = 1.55;
+
+/// Why the heavy-tailed Student-T's Λ checks are skipped ([`STUDENT_T_CHECKED_GAMMA_MIN`]).
+const HEAVY_TAIL: &str =
+    "Student-T below γ = 1.55: Λ lives at slopes beyond the quadratures' reach";
 
 /// Which NDFs and parameters to sweep.
 #[derive(Clone, Debug)]
@@ -68,8 +85,8 @@ pub struct Sweep {
 /// general values on both sides of 1; Student-T near the pole γ = 3/2, at GGX (2) and heavy to
 /// near-Beckmann; Bessel-K a = 1 (K0), 3/2 (Exponential) and on both sides; the generalised
 /// exponential from stretched tails to a near-flat disk, with γ = 1 and 2 (Exponential(2α),
-/// Beckmann). (Student-T below γ ≈ 2: the heavy tails, P2 ~ p^{1−2γ}, defeat these checks'
-/// quadratures, which lose 1e-4 at γ = 1.55; the mpmath records cover γ = 1.6.)
+/// Beckmann). (Student-T between γ = 3/2 and [`STUDENT_T_CHECKED_GAMMA_MIN`] skips its Λ
+/// integrals: see there.)
 pub fn default_shapes(kind: NdfKind) -> Vec<f64> {
     match kind {
         NdfKind::Gtr => vec![0.5, 1.0, 1.5, 2.0, 2.7, 4.0],
@@ -166,6 +183,7 @@ impl Job {
                     identity: "parameters accepted".into(),
                     residual: f64::NAN,
                     tol: TOL,
+                    skipped: None,
                 }],
             },
             Job::Family(alpha) => family_checks(sweep, alpha),
@@ -247,6 +265,7 @@ pub fn ndf_checks(ndf: &AnyNdf) -> Vec<Check> {
             identity: identity.to_string(),
             residual,
             tol,
+            skipped: None,
         })
     };
     // (The u-space floor's width factor is GTR's γ; the other shapes do not narrow D near
@@ -361,34 +380,40 @@ pub fn ndf_checks(ndf: &AnyNdf) -> Vec<Check> {
         "Λ(u) u = σ(−u)",
         max_over(&US, |u| rel(ndf.lambda(u) * u, ndf.sigma(-u))),
     );
+    if matches!(ndf, AnyNdf::StudentT(t) if t.gamma() < STUDENT_T_CHECKED_GAMMA_MIN) {
+        // (The integrals of Λ and σ over P2, Q, D or the mixing law; the pointwise
+        // identities stand.)
+        for c in &mut out {
+            if c.identity.contains("Λ(u) = ")
+                || c.identity.contains("superpositions of Beckmann Λ")
+                || c.identity.contains("delta integral")
+            {
+                c.skipped = Some(HEAVY_TAIL);
+                c.residual = f64::NAN;
+            }
+        }
+    }
     out
 }
 
-/// The cap near the normal that the u-space checks take in slope space, for the NDFs with
-/// D(1) = +∞ (Ei, Erfc, K0, Bessel-K a ≤ 1): tan θ < r_c (α, or less where the caller needs
-/// the cap inside a region: `r_max`), i.e. u > u_c = 1/√(1 + r_c²).
-/// A quadrature node u that rounds to 1 would see D = ∞ while the true mass of [1 − ulp, 1]
-/// is not zero (Erfc: D ~ 1/tan θ puts ~10⁻⁸/α of the mass within 10⁻¹⁶ of u = 1), and a
-/// node near u = 1 carries the rounding of 1 − u (relative ε/(1 − u)) into D amplified by the
-/// singularity: with the cap at α the u-space part keeps the floor of [`u_space_tol`].
-/// `None` where D(1) is finite.
-fn singular_cap(ndf: &impl Ndf, r_max: f64) -> Option<(f64, f64)> {
-    if ndf.d(1.0).is_finite() {
-        return None;
-    }
-    let rc = ndf.alpha().min(r_max);
-    let uc = 1.0 / (1.0 + rc * rc).sqrt();
-    // 2π ∫₀^{r_c} r P22(r) dr = 2π ∫_{u_c}^1 D(u) u du.
-    let mass = 2.0 * PI * integrate(|r| r * ndf.p22(r, 0.0), 0.0, rc, 1e-14).value;
-    Some((uc, mass))
+/// The cap near the normal that the u-space checks take in slope coordinates: tan θ < r_c = α,
+/// i.e. u > u_c = 1/√(1 + α²); returns (u_c, r_c). A u-space node there carries the rounding
+/// of 1 − u (relative ε/(1 − u)), which D amplifies by its width α² in u (a narrow lobe, the
+/// disk edge of the generalised exponential at α = 1e-6 lies within 5e-13 of u = 1) or by
+/// its singularity (Ei, Erfc, K0, Bessel-K a ≤ 1: D(1) = +∞, and a node that rounds to 1
+/// sees ∞ while [1 − ulp, 1] holds mass); in slope coordinates the same integral is resolved
+/// on the scale α. The u-space part keeps the floor of [`u_space_tol`].
+fn cap(ndf: &impl Ndf) -> (f64, f64) {
+    let rc = ndf.alpha();
+    (1.0 / (1.0 + rc * rc).sqrt(), rc)
 }
 
-/// 2π ∫₀¹ D(u) u du (the cap near a singular D(1) in slope space: `singular_cap`).
+/// 2π ∫₀¹ D(u) u du: u-space below the cap, 2π ∫₀^{r_c} r P22(r) dr above (`cap`).
 pub fn normalisation_d(ndf: &impl Ndf) -> f64 {
-    match singular_cap(ndf, f64::INFINITY) {
-        None => 2.0 * PI * integrate(|u| ndf.d(u) * u, 0.0, 1.0, 1e-14).value,
-        Some((uc, mass)) => 2.0 * PI * integrate(|u| ndf.d(u) * u, 0.0, uc, 1e-14).value + mass,
-    }
+    let (uc, rc) = cap(ndf);
+    let u_part = integrate(|u| ndf.d(u) * u, 0.0, uc, 1e-14).value;
+    let r_part = integrate(|r| r * ndf.p22(r, 0.0), 0.0, rc, 1e-14).value;
+    2.0 * PI * (u_part + r_part)
 }
 
 /// ∫∫ P22 dp dq over the plane, as nested 1-D quadratures over the quarter plane.
@@ -460,35 +485,28 @@ pub fn q_by_radial_integral(ndf: &impl Ndf, t: f64) -> f64 {
     2.0 * PI * integrate_to_inf(|d| (t + d) * ndf.p22(t + d, 0.0), 0.0, s, 1e-13).value
 }
 
-/// σ(u) = ∫₀¹ D(ui) Δσ(u, ui) dui, split at the kink ui = √(1−u²) of the kernel. Where D(1)
-/// is infinite the cap ui > u_c is taken in slope space (`singular_cap`: there Δσ = 2π u ui
-/// for u > 0, 0 for u < 0), and at u = 0 a node at ui = 1 (D = ∞, Δσ = 0) counts 0.
+/// σ(u) = ∫₀¹ D(ui) Δσ(u, ui) dui, split at the kink ui = √(1−u²) of the kernel; within the
+/// cap (`cap`) in slope coordinates, ∫₀^{r_c} r P22(r) √(1 + r²) Δσ(u, ui(r)) dr, with the kink
+/// at tan θ = |u|/√(1 − u²) there if it falls inside.
 pub fn sigma_by_delta_integral(ndf: &impl Ndf, u: f64) -> f64 {
+    let (uc, rc) = cap(ndf);
     let kink = ((1.0 - u) * (1.0 + u)).sqrt();
-    let f = |ui: f64| {
-        let v = ndf.d(ui) * delta_sigma(u, ui);
-        if v.is_nan() && !ui.is_nan() {
-            0.0
+    let r_kink = u.abs() / kink;
+    let f = |ui: f64| ndf.d(ui) * delta_sigma(u, ui);
+    let g = |r: f64| {
+        // ui = 1/√(1 + r²) and √(1 − ui²) = r ui, formed from r (no 1 − ui² cancellation).
+        let s = (1.0 + r * r).sqrt();
+        r * ndf.p22(r, 0.0) * s * delta_sigma_at(u, 1.0 / s, r / s)
+    };
+    let pieces = |h: &dyn Fn(f64) -> f64, lo: f64, mid: f64, hi: f64| {
+        if mid > lo && mid < hi {
+            integrate(h, lo, mid, 1e-13).value + integrate(h, mid, hi, 1e-13).value
         } else {
-            v
+            integrate(h, lo, hi, 1e-13).value
         }
     };
-    // The cap must lie where every azimuth is lit or none is (ui > kink): half the slope
-    // of the kink, tan θ_kink = |u|/√(1 − u²).
-    let r_kink = u.abs() / ((1.0 - u) * (1.0 + u)).sqrt();
-    let (top, cap) = match singular_cap(ndf, 0.5 * r_kink) {
-        Some((uc, mass)) if uc > kink && r_kink > 0.0 => (uc, u.max(0.0) * mass),
-        _ => (1.0, 0.0),
-    };
-    let lower = integrate(f, 0.0, kink, 1e-13).value;
-    let upper = if kink < top {
-        integrate(f, kink, top, 1e-13).value
-    } else {
-        0.0
-    };
-    lower + upper + cap
+    pieces(&f, 0.0, kink, uc) + pieces(&g, 0.0, r_kink, rc)
 }
-
 /// The superposition identities and GTR γ = 2 ≡ GGX, at roughness α.
 pub fn family_checks(sweep: &Sweep, alpha: f64) -> Vec<Check> {
     let has = |k| sweep.kinds.contains(&k);
@@ -499,6 +517,7 @@ pub fn family_checks(sweep: &Sweep, alpha: f64) -> Vec<Check> {
             identity: identity.to_string(),
             residual,
             tol: TOL,
+            skipped: None,
         })
     };
     let us_signed = [-0.8, -0.3, 0.0, 0.3, 0.8];

@@ -73,8 +73,14 @@ pub fn smith_integral(p_of_offset: impl Fn(f64) -> f64, a: f64, scale: f64) -> f
 /// B = √(1−u²)√(1−u_i²); 2π A when A ≥ B (every azimuth lit) and 0 when A ≤ −B (none lit).
 /// σ(u) = ∫₀¹ D(u_i) Δσ(u, u_i) du_i (the GGX page; derivations.md B.1).
 pub fn delta_sigma(u: f64, ui: f64) -> f64 {
+    delta_sigma_at(u, ui, (1.0 - ui * ui).max(0.0).sqrt())
+}
+
+/// [`delta_sigma`] with the normal's sin θm given (formed without 1 − u_i² cancellation by a
+/// caller that has the slope).
+pub fn delta_sigma_at(u: f64, ui: f64, sin_m: f64) -> f64 {
     let a = u * ui;
-    let b = ((1.0 - u * u) * (1.0 - ui * ui)).max(0.0).sqrt();
+    let b = (1.0 - u * u).max(0.0).sqrt() * sin_m;
     if a >= b {
         2.0 * std::f64::consts::PI * a
     } else if a <= -b {

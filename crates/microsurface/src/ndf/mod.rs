@@ -27,9 +27,11 @@ pub use gtr::Gtr;
 pub use k0::K0;
 pub use student_t::StudentT;
 
-/// Below u = GRAZING · σ(0) Λ and σ take their grazing asymptotes σ(0)/u − ½ and σ(0) ± u/2:
-/// the next terms are O(u) against σ(0)/u, i.e. below 1e-40 relative, so every NDF gets the
-/// same exact-to-rounding values there without its own route having to reach u ~ 1e-300.
+/// Below u = GRAZING · min(σ(0), 1) Λ and σ take their grazing asymptotes σ(0)/u − ½ and
+/// σ(0) ± u/2: the next terms are O(u) against σ(0)/u, and σ(0)(1 − sin θ) ≈ σ(0) u²/2, both
+/// below 1e-40 relative, so every NDF gets the same exact-to-rounding values there without its
+/// own route having to reach u ~ 1e-300. (The min: a superposition's components reach any
+/// roughness, and at σ(0) = 1e30 the bound without it took u = 0.999 as grazing.)
 const GRAZING: f64 = 1e-20;
 
 /// A microfacet normal distribution function, isotropic, in the conventions of the crate docs.
@@ -100,7 +102,7 @@ pub trait Ndf {
         } else if u > 0.0 {
             if u >= 1.0 {
                 0.0
-            } else if u < GRAZING * self.sigma_zero() {
+            } else if u < GRAZING * self.sigma_zero().min(1.0) {
                 // Λ = σ(0)/u − ½ + O(u): the rest is below 1e-20 of the sum here, and the
                 // per-NDF routes (cot θ/α overflowing, quadratures of overflowing
                 // integrands) need not reach this far.
@@ -128,7 +130,7 @@ pub trait Ndf {
         if a >= 1.0 {
             return lit;
         }
-        if a < GRAZING * self.sigma_zero() {
+        if a < GRAZING * self.sigma_zero().min(1.0) {
             // σ(±u) = σ(0) ± u/2 + O(u²) (see `lambda`).
             return self.sigma_zero() + 0.5 * u;
         }
