@@ -47,6 +47,25 @@ out["ln_bessel_k"] = [
     for nu in [0.0, 0.1, 0.4, 0.5, 0.9, 1.5, 2.0, 2.5, 10.0, 49.5, 99.5, 100.0]
     for z in grid("1e-300", "1e4", 48) + [1e-310, 5e-324, 1.5e-150, 2.5e-150]
 ]
+# B(1 + x, 1 + y) = Gamma(1 + x) Gamma(1 + y) / Gamma(2 + x + y) (special::beta_1p, the
+# transmitted path's height-correlated masking): x <= y over [0, 1e300], both sides of the
+# branch at 1 + y = 10. The working precision holds 1 + x and 2 + x + y exactly (1e300 needs
+# ~1000 bits: at 30 digits 2 + x + y would round to 1 + x and B(1 + 1e300, 1) come out as 1);
+# B by mpmath's beta, confirmed by exp of the loggamma difference to 1e-25.
+BETA_ARGS = [0.0, 1e-12, 1e-6, 0.01, 0.1, 0.5, 1.0, 2.0, 5.0, 8.5, 8.999, 9.0, 9.001, 9.5,
+             12.0, 30.0, 100.0, 1e3, 1e5, 1e8, 1e12, 1e20, 1e50, 1e100, 1e200, 1e300]
+
+
+def beta_1p(x, y):
+    with mp.workprec(1400):
+        a, b = 1 + mpf(x), 1 + mpf(y)
+        v = mp.beta(a, b)
+        w = exp(mp.loggamma(a) + mp.loggamma(b) - mp.loggamma(a + b))
+        assert abs(v - w) <= mpf("1e-25") * v, (x, y)
+        return float(v)
+
+
+out["beta_1p"] = [[x, y, beta_1p(x, y)] for i, x in enumerate(BETA_ARGS) for y in BETA_ARGS[i:]]
 # Carlson R_D(0, y, 1)
 out["elliprd_0_y_1"] = [[y, float(elliprd(0, mpf(y), 1))] for y in grid("1e-6", "1e6", 60)]
 print(json.dumps(out, indent=0))

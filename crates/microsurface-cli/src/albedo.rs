@@ -5,9 +5,10 @@
 use crate::json::field;
 use crate::json::{ndf_alpha, spectrum};
 use microsurface::bsdf::fresnel::{self, One};
+use microsurface::bsdf::Masking;
 use microsurface::scattering::{
     albedo, single_scattering_albedo, single_scattering_albedo_dielectric_level, Albedo, ByOrder,
-    DielectricFacets, DiffuseFacets, G2Form, Heights, MirrorFacets, RandomWalk,
+    DielectricFacets, DiffuseFacets, Heights, MirrorFacets, RandomWalk,
 };
 use microsurface::{AnyMicrofacet, MicrofacetDistribution};
 use serde_json::{json, Value};
@@ -17,9 +18,9 @@ pub fn run(args: &[String]) -> Result<ExitCode, String> {
     crate::json::json_lines("albedo", args, albedo_line)
 }
 
-const FIELDS: [&str; 13] = [
+const FIELDS: [&str; 14] = [
     "ndf", "alpha", "gamma", "a", "material", "eta", "k", "rho", "mu", "walks", "seed", "method",
-    "heights",
+    "heights", "g2",
 ];
 
 /// Walks per line at most (10¹⁰: hours; a typo's 10²⁰ is an error, not a hang).
@@ -100,6 +101,12 @@ fn albedo_line(text: &str) -> Result<Value, String> {
         Some(Some("gaussian")) => Heights::Gaussian,
         _ => return Err("field 'heights' must be \"uniform\" or \"gaussian\"".into()),
     };
+    if obj.contains_key("g2") && !(quadrature && matches!(facets, Facets::Dielectric(_))) {
+        return Err(
+            "field 'g2' is for a dielectric's method 'quadrature' (the walk's masking is its own)"
+                .into(),
+        );
+    }
     if quadrature {
         return match facets {
             Facets::Mirror(None) => {
@@ -107,9 +114,9 @@ fn albedo_line(text: &str) -> Result<Value, String> {
                 Ok(json!({ "e1": e1 }))
             }
             Facets::Dielectric(eta) => {
-                // (The exact height-correlated G2: the walk's order 1.)
-                let (r, t) =
-                    single_scattering_albedo_dielectric_level(&d, wo, eta, G2Form::Exact, 4);
+                // (By default the exact height-correlated G2: the walk's order 1.)
+                let masking = crate::json::masking(obj, Masking::CorrelatedBeta)?;
+                let (r, t) = single_scattering_albedo_dielectric_level(&d, wo, eta, masking, 4);
                 Ok(json!({ "reflect": { "e1": r }, "transmit": { "e1": t } }))
             }
             _ => Err("method 'quadrature' is the single-scattering albedo of the F = 1 conductor or a dielectric (no eta and k, or diffuse)".into()),

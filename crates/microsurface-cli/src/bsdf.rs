@@ -133,14 +133,7 @@ impl Request {
                 ))
             }
         };
-        let masking = match obj.get("g2") {
-            None => Masking::Correlated,
-            Some(v) => match v.as_str() {
-                Some("correlated") => Masking::Correlated,
-                Some("separable") => Masking::Separable,
-                _ => return Err("field 'g2' must be \"correlated\" or \"separable\"".into()),
-            },
-        };
+        let masking = crate::json::masking(obj, Masking::Correlated)?;
         let scattering = match obj.get("scattering") {
             None => Scattering::Single,
             Some(v) => match v.as_str() {

@@ -7,6 +7,26 @@ use serde_json::{Map, Value};
 use std::io::{BufRead, BufWriter, Write};
 use std::process::ExitCode;
 
+/// The masking-shadowing term of field `g2` (`bsdf`, and `albedo`'s dielectric quadrature):
+/// "correlated", "separable" or "correlated_beta"; `default` where the field is absent.
+pub(crate) fn masking(
+    obj: &Map<String, Value>,
+    default: microsurface::bsdf::Masking,
+) -> Result<microsurface::bsdf::Masking, String> {
+    use microsurface::bsdf::Masking;
+    match obj.get("g2") {
+        None => Ok(default),
+        Some(v) => match v.as_str() {
+            Some("correlated") => Ok(Masking::Correlated),
+            Some("separable") => Ok(Masking::Separable),
+            Some("correlated_beta") => Ok(Masking::CorrelatedBeta),
+            _ => Err(
+                "field 'g2' must be \"correlated\", \"separable\" or \"correlated_beta\"".into(),
+            ),
+        },
+    }
+}
+
 /// The JSON-lines loop of `eval` and `bsdf`: one reply per non-empty input line, in order;
 /// a line whose handler fails (or that is not UTF-8) gets `{"error": ...}` and the run goes
 /// on; exit 1 if any line failed.

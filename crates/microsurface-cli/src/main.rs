@@ -55,8 +55,9 @@ const BSDF_USAGE: &str = "\
       alpha: a or [ax, ay]; gamma for gtr (anisotropic only at gamma 2), student_t and
       gen_exponential, a for bessel_k; conductor:
       eta and k (number or [r,g,b]; neither: F = 1); dielectric: eta (one number);
-      g2: correlated (default) or separable (single scattering only). Directions are
-      normalised. Errors as in eval.
+      g2: correlated (default: 1/(1+L(wo)+L(wi))), separable (G1(wo) G1(wi)) or
+      correlated_beta (a transmission's exact B(1+L(wo),1+L(wi)), the walk's order 1);
+      single scattering only. Directions are normalised. Errors as in eval.
       scattering: single (default), kulla_conty or turquin (energy compensation: the lost
         energy put back from albedo tables, shipped or computed once per material),
         walk (the random walk of Heitz et al. 2016: sample is the walk, eval one
@@ -81,8 +82,8 @@ const ALBEDO_USAGE: &str = "\
       or a as in eval; heights: uniform (default) or gaussian;
       \"method\":\"quadrature\" -> {\"e1\":value}, the F = 1 conductor's single
       scattering by deterministic quadrature; for a dielectric {\"reflect\":{\"e1\":r},
-      \"transmit\":{\"e1\":t}} (exact height-correlated G2: the walk's order 1).
-      Errors as in eval.
+      \"transmit\":{\"e1\":t}} (by default the exact height-correlated G2, the walk's
+      order 1; \"g2\" as in bsdf chooses another). Errors as in eval.
 ";
 
 const TABLE_USAGE: &str = "\

@@ -519,6 +519,43 @@ fn bsdf_evaluates_and_samples_in_order() {
     ));
 }
 
+/// `bsdf` "g2" of a dielectric: "correlated_beta" (a transmission's exact height-correlated
+/// B(1 + Λo, 1 + Λi)) keeps the default's reflection and pdfs and transmits less at a
+/// grazing wo; an unknown name is a one-line error listing the three.
+#[test]
+fn bsdf_dielectric_masking() {
+    let mut input = String::new();
+    for g2 in ["", r#","g2":"correlated_beta""#] {
+        for wi in ["[0.3,0,0.95]", "[-0.8,0,-0.6]"] {
+            input += &format!(
+                r#"{{"bsdf":"dielectric","ndf":"ggx","alpha":1,"eta":1.5{g2},"op":"eval","wo":[0.999,0,0.05],"wi":{wi}}}"#
+            );
+            input.push('\n');
+        }
+    }
+    input += r#"{"bsdf":"dielectric","ndf":"ggx","alpha":1,"eta":1.5,"g2":"beta","op":"eval","wo":[0,0,1],"wi":[0,0,1]}"#;
+    input.push('\n');
+    let out = microsurface(&["bsdf"], &input);
+    assert_eq!(out.status.code(), Some(1));
+    let got = lines(&out.stdout);
+    assert_eq!(got.len(), 5);
+    assert_eq!(got[0], got[2]);
+    assert_eq!(got[1]["pdf"], got[3]["pdf"]);
+    let (t_default, t_beta) = (
+        got[1]["f"][0].as_f64().unwrap(),
+        got[3]["f"][0].as_f64().unwrap(),
+    );
+    assert!(
+        t_beta > 0.0 && t_beta < 0.5 * t_default,
+        "{t_beta} vs {t_default}"
+    );
+    let e = got[4]["error"].as_str().unwrap();
+    assert!(
+        e.contains("correlated_beta") && e.contains("separable"),
+        "{e}"
+    );
+}
+
 /// `bsdf` "scattering": every model for both materials; names case-insensitive with aliases;
 /// the compensations add energy to single scattering (f ≥ f_ss), the walk's sample is a
 /// direction with a positive pdf; bad values are one-line errors.
@@ -684,24 +721,28 @@ fn albedo_reports_bad_lines_and_goes_on() {
 {"ndf":"ggx","alpha":1,"mu":0.5,"walks":10,"eta":0.2}
 {"ndf":"ggx","alpha":1,"mu":0.5,"walks":10,"spin":1}
 {"ndf":"ggx","alpha":1,"mu":0.5,"method":"quadrature","material":"diffuse"}
+{"ndf":"ggx","alpha":1,"mu":0.5,"walks":10,"material":"dielectric","eta":1.5,"g2":"separable"}
+{"ndf":"ggx","alpha":1,"mu":0.5,"material":"dielectric","eta":1.5,"method":"quadrature","g2":"beta"}
 {"ndf":"ggx","alpha":1,"mu":0.5,"walks":10}
 "#;
     let out = microsurface(&["albedo"], input);
     assert_eq!(out.status.code(), Some(1));
     let got = lines(&out.stdout);
-    assert_eq!(got.len(), 7);
-    for (g, needle) in got[..6].iter().zip([
+    assert_eq!(got.len(), 9);
+    for (g, needle) in got[..8].iter().zip([
         "'walks'",
         "'mu'",
         "opaque",
         "both 'eta' and 'k'",
         "unknown field 'spin'",
         "quadrature",
+        "field 'g2' is for a dielectric's method 'quadrature'",
+        "correlated_beta",
     ]) {
         let e = g["error"].as_str().unwrap_or_else(|| panic!("{g}"));
         assert!(e.contains(needle), "{e} lacks {needle}");
     }
-    assert_eq!(got[6]["total"].as_f64(), Some(1.0));
+    assert_eq!(got[8]["total"].as_f64(), Some(1.0));
 }
 
 /// A dielectric's albedo by side from either side: reflection and transmission by order,
@@ -712,11 +753,18 @@ fn albedo_of_a_dielectric() {
     let input = r#"{"ndf":"beckmann","alpha":0.7,"mu":0.5,"walks":2000,"material":"dielectric","eta":1.5,"seed":4}
 {"ndf":"beckmann","alpha":0.7,"mu":-0.5,"walks":2000,"material":"dielectric","eta":1.5,"seed":4}
 {"ndf":"beckmann","alpha":0.7,"mu":0.5,"walks":2000,"material":"dielectric","eta":1.5,"seed":4}
+{"ndf":"beckmann","alpha":0.7,"mu":-0.5,"material":"dielectric","eta":1.5,"method":"quadrature","g2":"correlated"}
 {"ndf":"beckmann","alpha":0.7,"mu":-0.5,"material":"dielectric","eta":1.5,"method":"quadrature"}
 "#;
     let out = microsurface(&["albedo"], input);
     assert_eq!(out.status.code(), Some(0));
     let mut got = lines(&out.stdout);
+    // The quadrature's default is the exact height-correlated G2 (the walk's order 1); with
+    // "g2":"correlated" (pbrt-v4's) the reflection is the same and the transmission larger.
+    let (q, pbrt) = (&got[4], &got[3]);
+    assert_eq!(q["reflect"], pbrt["reflect"]);
+    assert!(pbrt["transmit"]["e1"].as_f64() > q["transmit"]["e1"].as_f64());
+    got.remove(3);
     // Single scattering by quadrature (from inside) against the walk's order 1.
     let q = got.pop().unwrap();
     for side in ["reflect", "transmit"] {

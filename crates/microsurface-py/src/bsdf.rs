@@ -75,8 +75,9 @@ fn masking(s: &str) -> PyResult<Masking> {
     match s {
         "correlated" => Ok(Masking::Correlated),
         "separable" => Ok(Masking::Separable),
+        "correlated_beta" => Ok(Masking::CorrelatedBeta),
         _ => Err(PyValueError::new_err(format!(
-            "masking must be 'correlated' or 'separable' (got {s:?})"
+            "masking must be 'correlated', 'separable' or 'correlated_beta' (got {s:?})"
         ))),
     }
 }
@@ -314,7 +315,10 @@ impl Conductor {
 /// Dielectric(ndf, eta, masking='correlated', transport='radiance', scattering='single'):
 /// a rough dielectric interface of relative index η = η_inside/η_outside (η > 0, ≠ 1),
 /// reflection and transmission (Walter et al. 2007), as pbrt-v4's; transport 'radiance'
-/// divides a transmitted f by η'² (Veach 1997, §5.2). ``scattering`` as for
+/// divides a transmitted f by η'² (Veach 1997, §5.2). ``masking``: 'correlated'
+/// (1/(1 + Λo + Λi) for both lobes, pbrt-v4's), 'separable' (G1(wo) G1(wi), Mitsuba's) or
+/// 'correlated_beta' (a transmission's exact height-correlated B(1 + Λo, 1 + Λi), the
+/// random walk's order 1; see the crate's ``bsdf::Masking``); single scattering only. ``scattering`` as for
 /// ``Conductor`` ('kulla_conty'/'turquin' use the dielectric tables, computed here). The
 /// NDF's path (fast, or ``exact=True``) as for ``Conductor``.
 #[pyclass(extends = PyBsdf, frozen, module = "microsurface")]

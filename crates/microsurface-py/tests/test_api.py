@@ -86,6 +86,8 @@ def test_bsdfs_equal_the_command_line():
          mf.Conductor(mf.Exponential(0.3, alpha_y=0.5), **gold)),
         ("dielectric", dict(ndf="bessel_k", a=0.7, alpha=0.4, eta=1.5), mf.Dielectric(mf.BesselK(0.4, 0.7), 1.5)),
         ("dielectric", dict(ndf="double_ggx", alpha=0.4, eta=1.33), mf.Dielectric(mf.DoubleGGX(0.4), 1.33)),
+        ("dielectric", dict(ndf="ggx", alpha=0.8, eta=1.5, g2="correlated_beta"),
+         mf.Dielectric(mf.GGX(0.8), 1.5, masking="correlated_beta")),
         ("conductor", dict(ndf="gen_exponential", gamma=1.5, alpha=0.3, **gold),
          mf.Conductor(mf.GenExponential(0.3, 1.5), **gold)),
     ]
@@ -424,6 +426,8 @@ def test_bsdf_errors():
         mf.Dielectric(g, 1.0)
     with pytest.raises(ValueError, match="transport"):
         mf.Dielectric(g, 1.5, transport="x")
+    with pytest.raises(ValueError, match="correlated"):
+        mf.Dielectric(g, 1.5, masking="correlated_beta", scattering="walk")
     with pytest.raises(ValueError, match="last axis of length 3"):
         mf.Dielectric(g, 1.5).sample([0, 0, 1.0], [0.5, 0.5])
     with pytest.raises(ValueError, match="finite Lambda"):

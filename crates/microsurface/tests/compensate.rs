@@ -207,9 +207,10 @@ fn shipped_tables() {
 /// grazing, one anisotropic material.
 #[test]
 fn dielectric_albedo_by_quadrature() {
+    use microsurface::bsdf::Masking;
     use microsurface::bsdf::{RoughDielectric, Transport};
     use microsurface::check::chi2::SplitMix64;
-    use microsurface::scattering::{single_scattering_albedo_dielectric_level as albedo, G2Form};
+    use microsurface::scattering::single_scattering_albedo_dielectric_level as albedo;
     use microsurface::MicrofacetDistribution;
     fn check<D: MicrofacetDistribution<f64> + Clone>(name: &str, d: D) {
         let b = RoughDielectric::new(d.clone(), 1.5).with_transport(Transport::Importance);
@@ -221,8 +222,8 @@ fn dielectric_albedo_by_quadrature() {
                     (1.0 - mu * mu).sqrt() * 0.8,
                     z * mu,
                 ];
-                let (r4, t4) = albedo(&d, wo, 1.5, G2Form::Approximate, 4);
-                let (r5, t5) = albedo(&d, wo, 1.5, G2Form::Approximate, 5);
+                let (r4, t4) = albedo(&d, wo, 1.5, Masking::Correlated, 4);
+                let (r5, t5) = albedo(&d, wo, 1.5, Masking::Correlated, 5);
                 assert!(
                     (r4 - r5).abs() < 3e-5 && (t4 - t5).abs() < 3e-5,
                     "{name} wo={wo:?}: level 4 ({r4}, {t4}) vs 5 ({r5}, {t5})"

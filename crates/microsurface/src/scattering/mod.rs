@@ -53,7 +53,10 @@
 //! **Order 1** is the single-scattering BSDF with the height-correlated G2 (the paper's
 //! section 5.3): for a conductor with F = 1, E₁(μ) = ∫ D G2/(4μ) dωi, which
 //! [`single_scattering_albedo`] integrates deterministically and tests/walk.rs holds the
-//! walk's order 1 to, within 4 standard errors.
+//! walk's order 1 to, within 4 standard errors; for a dielectric, the reflection with the
+//! same G2 and the transmission with B(1 + Λo, 1 + Λi)
+//! ([`crate::bsdf::Masking::CorrelatedBeta`], not the BSDF's default), which
+//! [`single_scattering_albedo_dielectric_level`] integrates.
 //!
 //! **Uniforms** are drawn strictly inside (0, 1) (53-bit uniforms shifted by half a step): a
 //! uniform of exactly 0 in the height step would leave the ray at its height forever, and

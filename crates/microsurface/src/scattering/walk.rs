@@ -584,8 +584,9 @@ impl<D: MicrofacetDistribution<f64>> RandomWalk<D> {
     /// order; order 1's expectation is the single-scattering BSDF with the height-correlated
     /// G2 (for a reflection 1/(1 + Λo + Λi); for a dielectric's transmission the exact
     /// height-correlated form B(1 + Λo, 1 + Λi), Heitz 2014, "Understanding the
-    /// masking-shadowing function", section 6, whose approximation 1/(1 + Λo + Λi)
-    /// [`crate::bsdf::RoughDielectric`] uses as pbrt-v4 does). wi on the other side of the
+    /// masking-shadowing function", section 6: [`crate::bsdf::RoughDielectric`] with
+    /// [`crate::bsdf::Masking::CorrelatedBeta`]; by default it uses the approximation
+    /// 1/(1 + Λo + Λi) as pbrt-v4 does). wi on the other side of the
     /// macrosurface is a transmission (0 for opaque facets). Units: unit vectors.
     pub fn eval<const N: usize>(
         &self,

@@ -269,7 +269,8 @@ fn conductor_lane<F: Real>(
     let d = F::ONE / (F::PI * ax * ay * t * t);
     let (lo, li) = (ggx_lambda_lane(wo, ax, ay), ggx_lambda_lane(wi, ax, ay));
     let g2 = match masking {
-        Masking::Correlated => F::ONE / (F::ONE + lo + li),
+        // (A conductor only reflects: both height-correlated forms are 1/(1 + Λo + Λi).)
+        Masking::Correlated | Masking::CorrelatedBeta => F::ONE / (F::ONE + lo + li),
         Masking::Separable => F::ONE / ((F::ONE + lo) * (F::ONE + li)),
     };
     let c = (wo[0] * wm[0] + wo[1] * wm[1] + co * wm[2]).abs();

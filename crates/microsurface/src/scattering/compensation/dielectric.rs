@@ -59,6 +59,11 @@ fn dielectric_f_avg(eta: f64) -> f64 {
 /// within them with probability k_s), cosine-weighted on their side; the single-scattering
 /// lobes otherwise. An interface at η = 1 or in the smooth limit is the single-scattering
 /// one (its delta lobes lose nothing).
+///
+/// The single-scattering lobes have the default G2 ([`crate::bsdf::Masking::Correlated`]),
+/// the one the tables are computed for (shipped and computed alike), so the type offers no
+/// other masking: compensating [`crate::bsdf::Masking::CorrelatedBeta`]'s much smaller
+/// grazing transmission would need its own tables.
 #[derive(Clone, Debug)]
 pub struct CompensatedDielectric<F, D, const N: usize = 3> {
     ss: RoughDielectric<F, D, N>,

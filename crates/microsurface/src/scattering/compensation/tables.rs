@@ -337,7 +337,7 @@ impl DielectricTables {
                                 dist,
                                 [st * cp, st * sp, z * mu],
                                 eta,
-                                crate::scattering::albedo::G2Form::Approximate,
+                                crate::bsdf::Masking::Correlated,
                                 3,
                             );
                         r + t
