@@ -260,4 +260,8 @@ impl RadialSlopes for StudentT {
         let e = (l / (self.gamma - 1.0)).exp_m1();
         (self.c * e).sqrt()
     }
+    fn slope_tail_index(&self) -> Option<f64> {
+        // Q = (1 + r²/c)^{1−γ} = (c/r²)^{γ−1} (1 + O(γ c/r²)).
+        Some(2.0 * (self.gamma - 1.0))
+    }
 }
