@@ -327,10 +327,11 @@ fn family_sweep() {
 }
 
 /// Student-T's heaviest tail at the smallest roughness, from grazing incidences: the cases
-/// that need TailCoordinates (see run_family). By hand: 165 s on 2 cores (the exact warp
-/// near γ = 3/2 costs milliseconds a sample); family_sweep includes them.
+/// that need TailCoordinates (see run_family). By hand: ~10 s on 2 cores (165 s while the
+/// warp's tail quadrature near γ = 3/2 ran to its bisection limit, milliseconds a sample);
+/// family_sweep includes them.
 #[test]
-#[ignore = "minutes: run by hand (family_sweep has these cases)"]
+#[ignore = "~10 s: run by hand (family_sweep has these cases)"]
 fn student_t_heavy_tail_visible() {
     let cases = [(80.0, 0.05), (89.0, 0.05), (89.0, 1.0)];
     on_every_core(&cases, |&(deg, a)| {

@@ -1,7 +1,10 @@
 //! Regression tests of the outside fuzzer's findings (the hardening issue after 1.0's
 //! architecture), each its reproducer: the samplers' pdf at non-unit w, GGX's G2 where both
 //! G1 are small, the family's `ndf()`, Fresnel at the ends of its parameters, the frame's
-//! fallback, the compensated dielectric's horizon, and the table files' shape parameter.
+//! fallback, the compensated dielectric's horizon, the table files' shape parameter, the D·cos
+//! pdf near a pole, Student-T's visible sampler near γ = 3/2 and its D·cos sampler near γ = 1,
+//! D far in the tails, f32 D near a narrow pole, and the rough dielectric's transmission at
+//! η ≈ 1.
 
 use microsurface::bsdf::frame::Frame;
 use microsurface::bsdf::fresnel::{conductor, f82_tint};
@@ -244,5 +247,197 @@ fn f32_d_from_the_vector() {
             ((got - want) / want).abs() < 2e-5,
             "{kind}: {got:e} vs {want:e}"
         );
+
+/// Student-T just above γ = 3/2 from a grazing direction: the visible sampler returns at
+/// once (it took 40 s: its tail quadrature, whose integrand per ln r falls like r^{−2e-6},
+/// bisected to its depth limit at every CDF evaluation) and its inverse recovers u (0.77385
+/// came back for 0.7736, for a normal at slope ~1e99 whose true CDF is 4.6e-4: the truncated
+/// quadrature missed 99.98 % of the visible mass, most of which lies beyond slope 1e300).
+/// u₀ beyond C(R_MAX) gives the normal at R_MAX, visible from w.
+#[test]
+fn student_t_near_the_pole_samples_and_inverts() {
+    use microsurface::sampling::radial::R_MAX;
+    use microsurface::{Exact, Vec3};
+    let (ax, ay) = (1.4147301446990699, 1.0);
+    let e = Exact::new(NdfKind::StudentT, ax, ay, Some(1.500001)).unwrap();
+    // The fuzzer's reproducer.
+    let w = [0.7454082234490719, -0.6666082660862364, 1e-300];
+    let s = e.sample(w, [0.9643072374426719, 0.5]);
+    let wm = Vec3::from(s.wm);
+    assert!((wm.length() - 1.0).abs() < 1e-15 && wm.z > 0.0, "{wm:?}");
+    assert!(wm.dot(Vec3::from(w)) > 0.0, "{wm:?}");
+    assert!(s.pdf.is_finite() && s.pdf > 0.0, "{}", s.pdf);
+    let horizon = e.invert(w, s.wm);
+    assert!(
+        horizon[0] < 2e-3 && (horizon[1] - 0.5).abs() < 1e-12,
+        "{horizon:?}"
+    );
+
+    // The sampler's normaliser, whose mass at γ = 1.500001 lies mostly beyond the quadrature
+    // (the power-law tail), against a(1 + Λ) from Student-T's Λ series (by cot θ = a); on
+    // both sides of γ = 7/4, where the tail's quadrature changes (κ = 2γ − 3 = 1/2).
+    for gamma in [1.500001, 1.6, 1.7499, 1.7501, 2.5] {
+        let n = microsurface::StudentT::new(1.0, gamma).unwrap();
+        let unit = Exact::new(NdfKind::StudentT, 1.0, 1.0, Some(gamma)).unwrap();
+        for a in [1e-300, 1e-9, 0.11, 3.0, 1e5] {
+            let want = a * (1.0 + unit.lambda([1.0, 0.0, a]));
+            let z = microsurface::sampling::radial::normaliser(&n, a);
+            assert!(
+                (z / want - 1.0).abs() < 1e-12,
+                "γ = {gamma} a = {a}: {z} vs {want}"
+            );
+        }
+    }
+
+    let dirs = [
+        [-0.819, 0.556, 0.141],
+        w,
+        [0.6, 0.0, 1e-9],
+        [0.3, -0.4, -0.5],
+        [0.05, 0.02, 0.99],
+    ];
+    for gamma in [1.500001, 1.6, 2.5] {
+        let e = Exact::new(NdfKind::StudentT, ax, ay, Some(gamma)).unwrap();
+        for w in dirs {
+            let wu = Vec3::from(w).normalize();
+            let wu = if wu.z < 0.0 { -wu } else { wu };
+            let edge = e.invert(w, e.sample(w, [1.0 - 1e-16, 0.5]).wm)[0];
+            for u in [
+                [1e-4, 0.3],
+                [5e-4, 0.9],
+                [0.02, 0.6],
+                [0.3, 0.1],
+                [0.7736, 0.4048],
+                [0.97, 0.999],
+            ] {
+                let s = e.sample(w, u);
+                let wm = Vec3::from(s.wm);
+                assert!(
+                    (wm.length() - 1.0).abs() < 1e-15 && wm.z > 0.0 && wm.dot(wu) > 0.0,
+                    "γ = {gamma} w = {w:?} u = {u:?}: {wm:?}"
+                );
+                assert!(
+                    s.pdf.is_finite() && s.pdf > 0.0,
+                    "γ = {gamma}: pdf {}",
+                    s.pdf
+                );
+                let back = e.invert(w, s.wm);
+                assert!((back[1] - u[1]).abs() < 1e-12, "{back:?} vs {u:?}");
+                if u[0] < edge {
+                    assert!(
+                        (back[0] - u[0]).abs() < 1e-12,
+                        "γ = {gamma} w = {w:?}: {back:?} vs {u:?}"
+                    );
+                } else {
+                    // Beyond the slopes f64 holds: the normal at R_MAX.
+                    assert!(
+                        gamma < 1.6 && back[0] <= u[0],
+                        "γ = {gamma}: {back:?} vs {u:?}"
+                    );
+                    let r = (wm.x / ax).hypot(wm.y / ay) / wm.z;
+                    assert!((r / R_MAX - 1.0).abs() < 1e-12, "{r:e}");
+                }
+            }
+        }
+    }
+}
+
+/// A transmission at η = 1 + 2⁻⁵² between nearly opposite grazing directions, through an
+/// extremely anisotropic surface (αx/αy = 6e11): f and the pdf finite and ≥ 0 (NaN came out:
+/// η' wi + wo nearly vanishes, and formed plainly it kept only the rounding of η' wi, so the
+/// half vector's direction was arbitrary and the Jacobian's denominator wi·wm + wo·wm/η'
+/// cancelled to 0; 0/0 where D underflowed). For every NDF, f32 and f64.
+#[test]
+fn transmission_at_eta_near_one_stays_finite() {
+    use microsurface::bsdf::RoughDielectric;
+    use microsurface::{Beckmann, Real, K0};
+    fn check<F: Real, D: MicrofacetDistribution<F>>(
+        label: &str,
+        d: D,
+        eta: F,
+        wo: [F; 3],
+        wi: [F; 3],
+    ) {
+        let b = RoughDielectric::new(d, eta);
+        // Both ways: the other side's η' too.
+        for (wo, wi) in [(wo, wi), (wi, wo)] {
+            let f = b.eval(wo, wi).map(|x| x.to_f64());
+            let p = b.pdf(wo, wi).to_f64();
+            let ok = |x: f64| x.is_finite() && x >= 0.0;
+            assert!(
+                f.iter().all(|&x| ok(x)) && ok(p),
+                "{label}: f {f:?} pdf {p}"
+            );
+        }
+    }
+    let (ax, ay) = (1.0000000000000002e-6, 5.818873172482334e5);
+    let wo = [
+        0.48044038804613187,
+        0.8770273847116077,
+        5.2286799907616075e-80,
+    ];
+    let wi = [
+        -0.4804403880461318,
+        -0.8770273847116076,
+        -7.469542843945155e-80,
+    ];
+    // The fuzzer's reproducer (K0), then GGX and Beckmann, both η just above and below 1,
+    // directions exactly opposite and at the f64 horizon floor.
+    let cases64 = [
+        (wo, wi),
+        (wo, wo.map(|x| -x)),
+        (
+            [0.6, 0.8, 1.0000000000000001e-150],
+            [-0.6, -0.8, -1.0000000000000002e-150],
+        ),
+        ([0.6, 0.0, 0.8], [-0.6, 0.0, -0.8]),
+    ];
+    for eta in [1.0000000000000002, 0.9999999999999999] {
+        for (wo, wi) in cases64 {
+            for (ax, ay) in [(ax, ay), (ay, ax), (0.3, 0.3)] {
+                let l = format!("η = {eta} α = ({ax}, {ay}) {wo:?} {wi:?}");
+                let k0 = Microfacet::<f64, K0>::with_shape(ax, ay, None).unwrap();
+                check(&format!("K0 {l}"), k0, eta, wo, wi);
+                check(
+                    &format!("GGX {l}"),
+                    Microfacet::<f64, Ggx>::new(ax, ay).unwrap(),
+                    eta,
+                    wo,
+                    wi,
+                );
+                let b = Microfacet::<f64, Beckmann>::new(ax, ay).unwrap();
+                check(&format!("Beckmann {l}"), b, eta, wo, wi);
+            }
+        }
+    }
+    // f32: η = 1 + 2⁻²³, the directions at its horizon floor (1e-18).
+    let to32 = |v: [f64; 3]| v.map(|x| x as f32);
+    let cases32 = [
+        (to32(wo), [-0.48044038f32, -0.8770274, -2e-18]),
+        ([0.6f32, 0.8, 1e-18], [-0.6f32, -0.8, -1e-18]),
+        ([0.6f32, 0.0, 0.8], [-0.6f32, 0.0, -0.8]),
+    ];
+    for eta in [1.0000001f32, 0.99999994] {
+        for (wo, wi) in cases32 {
+            let wo = if wo[2] == 0.0 {
+                [wo[0], wo[1], 2e-18]
+            } else {
+                wo
+            };
+            for (ax, ay) in [(2e-6f32, 5.8e5f32), (5.8e5, 2e-6), (0.3, 0.3)] {
+                let l = format!("f32 η = {eta} α = ({ax}, {ay}) {wo:?} {wi:?}");
+                let k0 = Microfacet::<f32, K0>::with_shape(ax, ay, None).unwrap();
+                check(&format!("K0 {l}"), k0, eta, wo, wi);
+                check(
+                    &format!("GGX {l}"),
+                    Microfacet::<f32, Ggx>::new(ax, ay).unwrap(),
+                    eta,
+                    wo,
+                    wi,
+                );
+                let b = Microfacet::<f32, Beckmann>::new(ax, ay).unwrap();
+                check(&format!("Beckmann {l}"), b, eta, wo, wi);
+            }
+        }
     }
 }

@@ -162,7 +162,26 @@ pub fn half_vector_reflection<F: Real>(wo: [F; 3], wi: [F; 3]) -> Option<[F; 3]>
 #[inline]
 pub fn half_vector_refraction<F: Real>(wo: [F; 3], wi: [F; 3], eta: F) -> Option<([F; 3], F)> {
     let etap = if wo[2] > F::ZERO { eta } else { F::ONE / eta };
-    up(add(scale(wi, etap), wo)).map(|wm| (wm, etap))
+    up(refraction_sum(wo, wi, etap)).map(|wm| (wm, etap))
+}
+
+/// η' wi + wo, formed as (wo + wi) + (η' − 1) wi. For unit wo, wi its length is at least
+/// |η' − 1|, so neither term exceeds twice the result and the sum is accurate to a few ulp of
+/// its own length, also where it nearly vanishes (η' → 1 with wi → −wo). The plain form
+/// keeps only the rounding of η' wi there, an ulp of 1: at η' = 1 + 2⁻⁵² that is the size
+/// of the result, whose direction (the half vector) then came out arbitrary and whose
+/// projection on it (the Jacobian's denominator) came out 0.
+#[inline(always)]
+fn refraction_sum<F: Real>(wo: [F; 3], wi: [F; 3], etap: F) -> [F; 3] {
+    add(add(wo, wi), scale(wi, etap - F::ONE))
+}
+
+/// wi·wm + (wo·wm)/η' = (η' wi + wo)·wm/η', the denominator of the refraction's Jacobian and
+/// BSDF (Walter et al. 2007, eqs. 17 and 21), from [`refraction_sum`]: the two dot products
+/// cancel (to 0 at η' = 1 + 2⁻⁵², wi ≈ −wo), the projection of the accurate sum does not.
+#[inline(always)]
+pub(crate) fn refraction_denominator<F: Real>(wo: [F; 3], wi: [F; 3], wm: [F; 3], etap: F) -> F {
+    dot(refraction_sum(wo, wi, etap), wm) / etap
 }
 
 /// v normalised and turned to z ≥ 0; `None` for a zero or non-finite v.
@@ -187,9 +206,8 @@ pub fn jacobian_reflection<F: Real>(wi: [F; 3], wm: [F; 3]) -> F {
 /// [`half_vector_refraction`]).
 #[inline(always)]
 pub fn jacobian_refraction<F: Real>(wo: [F; 3], wi: [F; 3], wm: [F; 3], etap: F) -> F {
-    let (di, d_o) = (dot(wi, wm), dot(wo, wm));
-    let s = di + d_o / etap;
-    di.abs() / (s * s)
+    let s = refraction_denominator(wo, wi, wm, etap);
+    dot(wi, wm).abs() / (s * s)
 }
 
 /// A shading frame: orthonormal (s, t, n), z = n in local coordinates.

@@ -33,8 +33,10 @@ impl Exact {
     /// sweeps); [`Microfacet::exact`] is the same for a material built at compile time. GTR:
     /// isotropic at γ ≠ 2, as [`Microfacet::gtr`]. The family's other NDFs (Student-T, Ei,
     /// Erfc, K0, Bessel-K, generalised exponential) are anisotropic by stretching, with visible
-    /// normals by the exact slope-space inversion (quadratures: tens of microseconds a sample);
-    /// Student-T needs γ > 3/2 here (Λ is infinite below). Typed errors as the constructors'.
+    /// normals by the exact slope-space inversion (quadratures: tens to hundreds of
+    /// microseconds a sample, the most at grazing incidence; BENCHMARKS.md); Student-T needs
+    /// γ > 3/2 here (Λ is infinite below; just above, most visible normals lie within 1e-300
+    /// of the horizon: [`crate::sampling::radial`]). Typed errors as the constructors'.
     ///
     /// [`Microfacet::exact`]: crate::Microfacet::exact
     /// [`Microfacet::gtr`]: crate::Microfacet::gtr

@@ -301,4 +301,8 @@ impl RadialSlopes for StudentT {
         }
         (self.c * x.exp_m1()).sqrt()
     }
+    fn slope_tail_index(&self) -> Option<f64> {
+        // Q = (1 + r²/c)^{1−γ} = (c/r²)^{γ−1} (1 + O(γ c/r²)).
+        Some(2.0 * (self.gamma - 1.0))
+    }
 }

@@ -41,6 +41,16 @@ pub trait RadialSlopes: Ndf {
     fn slope_quantile(&self, xi: f64) -> f64 {
         quantile_by_newton(self, xi)
     }
+
+    /// The tail index β of an algebraic (Pareto) tail, 1 − F(r) ∝ r^{−β} (P22 ∝ r^{−β−2})
+    /// as r → ∞ up to corrections of relative order 1/r² or smaller; `None` (the default)
+    /// for tails lighter than every power, or not of that form. GGX and GTR β = 2, Student-T
+    /// β = 2γ − 2. The visible sampler ([`crate::sampling::radial`]) continues a tail with
+    /// β < 3/2 (visible mass ∝ r^{1−β} per ln r, spread over many decades) analytically
+    /// beyond the slopes its quadrature covers.
+    fn slope_tail_index(&self) -> Option<f64> {
+        None
+    }
 }
 
 /// 2π r P22(r, 0), with its limits at r = 0 and ∞ (not 0·∞): P22 grows slower than 1/r at the
@@ -127,6 +137,10 @@ impl RadialSlopes for Ggx {
             return f64::INFINITY;
         }
         self.alpha() * (xi / (1.0 - xi)).max(0.0).sqrt()
+    }
+    fn slope_tail_index(&self) -> Option<f64> {
+        // 1 − F = 1/(1 + x²).
+        Some(2.0)
     }
 }
 
@@ -230,6 +244,10 @@ impl RadialSlopes for Gtr {
         }
         self.burley().tan2(xi).sqrt()
     }
+    fn slope_tail_index(&self) -> Option<f64> {
+        // P22 = c (1 + r²)^{γ−2} (r² + α²)^{−γ} = c r⁻⁴ (1 + O(max(1, α²)/r²)) for every γ.
+        Some(2.0)
+    }
 }
 
 impl Gtr {
@@ -322,6 +340,21 @@ impl RadialSlopes for AnyNdf {
             AnyNdf::K0(n) => n.slope_quantile(xi),
             AnyNdf::BesselK(n) => n.slope_quantile(xi),
             AnyNdf::GenExponential(n) => n.slope_quantile(xi),
+        }
+    }
+    fn slope_tail_index(&self) -> Option<f64> {
+        match self {
+            AnyNdf::Ggx(n) => n.slope_tail_index(),
+            AnyNdf::Gtr(n) => n.slope_tail_index(),
+            AnyNdf::StudentT(n) => n.slope_tail_index(),
+            AnyNdf::Beckmann(_)
+            | AnyNdf::DoubleGgx(_)
+            | AnyNdf::Exponential(_)
+            | AnyNdf::Ei(_)
+            | AnyNdf::Erfc(_)
+            | AnyNdf::K0(_)
+            | AnyNdf::BesselK(_)
+            | AnyNdf::GenExponential(_) => None,
         }
     }
 }
