@@ -247,6 +247,8 @@ fn f32_d_from_the_vector() {
             ((got - want) / want).abs() < 2e-5,
             "{kind}: {got:e} vs {want:e}"
         );
+    }
+}
 
 /// Student-T just above γ = 3/2 from a grazing direction: the visible sampler returns at
 /// once (it took 40 s: its tail quadrature, whose integrand per ln r falls like r^{−2e-6},

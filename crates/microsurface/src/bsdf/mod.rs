@@ -417,18 +417,12 @@ impl<F: Real, D: MicrofacetDistribution<F>, const N: usize> RoughDielectric<F, D
     #[inline(always)]
     fn f_transmission(&self, wo: [F; 3], wi: [F; 3], wm: [F; 3], etap: F, t: F) -> F {
         let (di, d_o) = (dot(wi, wm), dot(wo, wm));
-<<<<<<< HEAD
-        let s = di + d_o / etap;
-        let mut f = self.dist.d(wm) * t * self.masking.g2(&self.dist, wo, wi) * (di * d_o).abs()
-            / (wi[2] * wo[2] * s * s).abs();
-=======
         let s = refraction_denominator(wo, wi, wm, etap);
         // G2/|cos θo cos θi| before the 1/s² (≥ (η' − 1)²/η'², 5e-32 at η' = 1 + 2⁻⁵²): the
         // cosines' product stays normal above the horizon floor, times s² it could underflow.
-        let geometric = g2(&self.dist, self.masking, wo, wi) / (wi[2] * wo[2]).abs()
+        let geometric = self.masking.g2(&self.dist, wo, wi) / (wi[2] * wo[2]).abs()
             * ((di * d_o).abs() / (s * s));
         let mut f = self.dist.d(wm) * t * geometric;
->>>>>>> h34-a
         if self.transport == Transport::Radiance {
             f = f / (etap * etap);
         }
