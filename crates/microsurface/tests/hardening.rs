@@ -443,3 +443,31 @@ fn transmission_at_eta_near_one_stays_finite() {
         }
     }
 }
+
+/// The walk BSDF from a direction of length 1e300 (in contract: any finite nonzero length):
+/// the walk stepped heights for a unit vector with the raw one and never ended (hours); now
+/// the same sample, f and pdf as from the unit direction, the same pdf, and a finite eval.
+#[test]
+fn walk_bsdf_at_any_length() {
+    use microsurface::bsdf::fresnel::One;
+    use microsurface::scattering::{MirrorFacets, MultipleScattering};
+    let g = Microfacet::<f64, Ggx>::new(0.3, 0.3).unwrap();
+    let ms = MultipleScattering::new(g, MirrorFacets(One::<1>));
+    let (wo, wi) = ([0.0, 0.6, 0.8], [0.6, 0.0, 0.8]);
+    let close = |a: f64, b: f64| (a - b).abs() <= 1e-12 * b.abs();
+    let want = ms.sample(wo, 0.4, [0.3, 0.6]).unwrap();
+    for s in [1e300, 1e-300] {
+        let wo_s = wo.map(|x| x * s);
+        let got = ms.sample(wo_s, 0.4, [0.3, 0.6]).unwrap();
+        assert!(
+            close(got.pdf, want.pdf) && close(got.f[0], want.f[0]),
+            "{got:?} vs {want:?}"
+        );
+        assert!((0..3).all(|k| (got.wi[k] - want.wi[k]).abs() < 1e-12));
+        let wi_s = wi.map(|x| x * s);
+        // (eval is a stochastic estimate seeded by the directions' bits: finite and positive.)
+        let f = ms.eval(wo_s, wi_s)[0];
+        assert!(f.is_finite() && f > 0.0, "{f}");
+        assert!(close(ms.pdf(wo_s, wi_s), ms.pdf(wo, wi)));
+    }
+}

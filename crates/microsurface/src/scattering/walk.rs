@@ -7,7 +7,7 @@ use super::albedo::{ByOrder, OrderSums};
 use crate::bsdf::frame::{dot, reflect};
 use crate::bsdf::fresnel::Fresnel;
 use crate::bsdf::{Bsdf, BsdfSample, Lobe, Transport};
-use crate::distribution::MicrofacetDistribution;
+use crate::distribution::{unit, MicrofacetDistribution};
 use crate::fast::Real;
 use crate::math::rng::SplitMix64;
 
@@ -525,6 +525,9 @@ impl<D: MicrofacetDistribution<f64>> RandomWalk<D> {
         rng: &mut WalkRng,
         mut event: impl FnMut(u32, [f64; 3], f64, bool, &[f64; N], &mut WalkRng),
     ) -> Option<Walked<N>> {
+        // (A guard: unit vectors are the documented input, and any other length would scale
+        // every height step; from |wo| = 1e300 a walk never ended.)
+        let wo = unit(wo);
         if wo[2] == 0.0 || !(wo[0].is_finite() && wo[1].is_finite() && wo[2].is_finite()) {
             return None;
         }
@@ -773,6 +776,9 @@ impl<F: Real, D: MicrofacetDistribution<f64>, Fa: Facets<N>, const N: usize> Bsd
 /// The walk's BSDF in f64 (the walk computes in f64 for every F).
 impl<D: MicrofacetDistribution<f64>, Fa: Facets<N>, const N: usize> MultipleScattering<D, Fa, N> {
     fn eval_f64(&self, wo: [f64; 3], wi: [f64; 3]) -> [f64; N] {
+        // (Directions of any finite nonzero length, as the contract has them: the walk's
+        // heights and cosines are for unit vectors, and from |wo| = 1e300 a walk never ended.)
+        let (wo, wi) = (unit(wo), unit(wi));
         let mut rng = WalkRng::new(seed_of(&[wo[0], wo[1], wo[2], wi[0], wi[1], wi[2]]));
         let e = self.surface.eval(&self.facets, wo, wi, &mut rng);
         let scale = self.transport_factor(wo, wi) / wi[2].abs();
@@ -787,6 +793,7 @@ impl<D: MicrofacetDistribution<f64>, Fa: Facets<N>, const N: usize> MultipleScat
     }
 
     fn pdf_f64(&self, wo: [f64; 3], wi: [f64; 3]) -> f64 {
+        let (wo, wi) = (unit(wo), unit(wi));
         if wo[2] == 0.0 || wi[2] == 0.0 || wo[2].is_nan() || wi[2].is_nan() {
             return 0.0;
         }
@@ -814,6 +821,7 @@ impl<D: MicrofacetDistribution<f64>, Fa: Facets<N>, const N: usize> MultipleScat
     }
 
     fn sample_f64(&self, wo: [f64; 3], uc: f64, u: [f64; 2]) -> Option<BsdfSample<f64, [f64; N]>> {
+        let wo = unit(wo);
         let mut rng = WalkRng::new(seed_of(&[uc, u[0], u[1]]));
         let p = self.surface.walk(&self.facets, wo, &mut rng)?;
         let wi = p.w;
