@@ -170,6 +170,12 @@ fn main() {
         mixture_vndf(&i, big, lambda, vndf);
         return;
     }
+    if std::env::var("MICROSURFACE_BENCH").as_deref() == Ok("sampler") {
+        // GGX and Beckmann visible normals through the public door against the C GGX
+        // sampler, each pair interleaved (issue 35's first two targets).
+        samplers_vs_c(&i, big);
+        return;
+    }
     if std::env::var("MICROSURFACE_BENCH").as_deref() == Ok("walk") {
         // Only the microsurface random walk.
         walks(&i);
@@ -1650,4 +1656,65 @@ fn walks(i: &Inputs) {
         "Fast Bessel-K a = 2.5",
         Microfacet::<f64, BesselK>::with_shape(0.5, 0.5, Some(2.5)).unwrap()
     );
+}
+
+/// Visible normals through `Microfacet` (the material built in each call, as a renderer with
+/// textured roughness does), `sample_wm` and `sample` (with its pdf), f64 and f32, each in
+/// rounds interleaved with the C GGX sampler (Heitz 2018, f64): the ratios are per round.
+fn samplers_vs_c(i: &Inputs, calls: usize) {
+    let w32: Vec<[f32; 3]> = i.w.iter().map(|w| [w.x as f32, w.y as f32, w.z as f32]).collect();
+    let xi32: Vec<[f32; 2]> = i.xi.iter().map(|x| [x[0] as f32, x[1] as f32]).collect();
+    let a32: Vec<f32> = i.alpha.iter().map(|&a| a as f32).collect();
+    let c_vndf = |k: usize| {
+        let w = i.w[k];
+        c::ggx_vndf([w.x, w.y, w.z], i.alpha[k], i.alpha[k], black_box(i.xi[k]))[2]
+    };
+    let pair = |name: &str, f: &mut dyn FnMut(usize) -> f64| {
+        let (mut ratios, mut ts, mut tc) = (Vec::new(), Vec::new(), Vec::new());
+        for _ in 0..15 {
+            let c = once(calls, &mut |k| c_vndf(k));
+            let t = once(calls, &mut |k| f(k));
+            ratios.push(t / c);
+            ts.push(t);
+            tc.push(c);
+        }
+        println!(
+            "{name:44} {:7.2} ns  C {:6.2} ns  {:5.2}× C GGX VNDF",
+            median(ts),
+            median(tc),
+            median(ratios)
+        );
+    };
+    macro_rules! door {
+        ($n:ty, $name:expr) => {
+            pair(concat!($name, " sample_wm f64"), &mut |k| {
+                let (w, a) = (i.w[k], i.alpha[k]);
+                Microfacet::<f64, $n>::new(a, a)
+                    .unwrap()
+                    .sample_wm([w.x, w.y, w.z], black_box(i.xi[k]))[2]
+            });
+            pair(concat!($name, " sample f64 (with pdf)"), &mut |k| {
+                let (w, a) = (i.w[k], i.alpha[k]);
+                let s = Microfacet::<f64, $n>::new(a, a)
+                    .unwrap()
+                    .sample([w.x, w.y, w.z], black_box(i.xi[k]));
+                s.wm[2] + s.pdf
+            });
+            pair(concat!($name, " sample_wm f32"), &mut |k| {
+                let a = a32[k];
+                Microfacet::<f32, $n>::new(a, a)
+                    .unwrap()
+                    .sample_wm(w32[k], black_box(xi32[k]))[2] as f64
+            });
+            pair(concat!($name, " sample f32 (with pdf)"), &mut |k| {
+                let a = a32[k];
+                let s = Microfacet::<f32, $n>::new(a, a)
+                    .unwrap()
+                    .sample(w32[k], black_box(xi32[k]));
+                (s.wm[2] + s.pdf) as f64
+            });
+        };
+    }
+    door!(Ggx, "GGX");
+    door!(Beckmann, "Beckmann");
 }
