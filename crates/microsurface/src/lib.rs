@@ -127,9 +127,12 @@
 //! the module docs cite by section ("derivations.md A.14").
 //!
 //! ## Accuracy
-//! Closed forms: ≤ 1e-13 relative (absolute 1e-300 where the value underflows). Quantities
-//! computed by quadrature (GTR Λ/σ/P2 for general γ, the Exponential NDF's Λ/σ): ≤ 1e-10
-//! relative documented, ≤ 1e-13 measured. Each module's docs say how.
+//! Closed forms: ≤ 1e-13 relative (absolute 1e-300 where the value underflows), or, far in a
+//! tail where the value's condition number κ = |d ln v/d ln x| in its input x is large,
+//! ≤ 4ε·κ (what the rounding of the binary input alone costs any implementation: D of a
+//! Beckmann lobe at 1e-300 has κ ≈ 1400; `tests/data/extra-tails.json` records κ with each
+//! value). Quantities computed by quadrature (GTR Λ/σ/P2 for general γ, the Exponential NDF's
+//! Λ/σ): ≤ 1e-10 relative documented, ≤ 1e-13 measured. Each module's docs say how.
 //!
 pub mod bsdf;
 pub mod check;
