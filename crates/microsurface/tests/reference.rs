@@ -174,3 +174,49 @@ fn beckmann_deep_tail() {
     assert!(rel(b.lambda(u), 1.9092522572204138212e-255) < 1e-14);
     assert!(rel(b.sigma(-u), 1.7579032586457312416e-255) < 1e-14);
 }
+
+/// D deep in the tails (tests/data/extra-tails.json) through the renderer's door
+/// (`AnyMicrofacet<f64>`, isotropic, the normal (√(1 − u²), 0, u)): the fast paths' D is the
+/// closed form at the normal's slopes (Bessel-K: its fitted ln K_ν, within about 1e-12), so the
+/// same references hold, at 1e-12 or 4ε times the record's condition number. Double GGX's D
+/// reads a fitted kernel table (its own bound, tests/fast.rs) and is left out.
+#[test]
+fn fast_d_in_the_tails() {
+    use microsurface::{AnyMicrofacet, MicrofacetDistribution};
+    let path = concat!(env!("CARGO_MANIFEST_DIR"), "/tests/data/extra-tails.json");
+    let json: Value = serde_json::from_str(&std::fs::read_to_string(path).unwrap()).unwrap();
+    let mut failures = Vec::new();
+    let mut n = 0;
+    for rec in json["records"].as_array().unwrap() {
+        let kind: NdfKind = rec["ndf"].as_str().unwrap().parse().unwrap();
+        if rec["quantity"] != "D" || kind == NdfKind::DoubleGgx {
+            continue;
+        }
+        let (alpha, gamma, u) = (
+            num(rec, "alpha").unwrap(),
+            num(rec, "gamma"),
+            num(rec, "u").unwrap(),
+        );
+        let want = rec["f64"].as_f64().unwrap();
+        // (Student-T γ ≤ 3/2 has no material: Λ is infinite.)
+        let Ok(m) = AnyMicrofacet::<f64>::new(kind, alpha, alpha, gamma) else {
+            continue;
+        };
+        let got = m.d([((1.0 - u) * (1.0 + u)).sqrt(), 0.0, u]);
+        let tol = 1e-12f64.max(4.0 * f64::EPSILON * num(rec, "cond").unwrap());
+        let err = ((got - want) / want).abs();
+        n += 1;
+        if !(err <= tol) {
+            failures.push(format!(
+                "{kind} α={alpha} γ={gamma:?} u={u:e}: got {got:e}, want {want:e}, rel err {err:.2e} > {tol:.1e}"
+            ));
+        }
+    }
+    assert!(n > 300, "{n}");
+    assert!(
+        failures.is_empty(),
+        "{} of {n}:\n{}",
+        failures.len(),
+        failures.join("\n")
+    );
+}
