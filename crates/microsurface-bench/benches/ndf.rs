@@ -1662,7 +1662,10 @@ fn walks(i: &Inputs) {
 /// textured roughness does), `sample_wm` and `sample` (with its pdf), f64 and f32, each in
 /// rounds interleaved with the C GGX sampler (Heitz 2018, f64): the ratios are per round.
 fn samplers_vs_c(i: &Inputs, calls: usize) {
-    let w32: Vec<[f32; 3]> = i.w.iter().map(|w| [w.x as f32, w.y as f32, w.z as f32]).collect();
+    let w32: Vec<[f32; 3]> =
+        i.w.iter()
+            .map(|w| [w.x as f32, w.y as f32, w.z as f32])
+            .collect();
     let xi32: Vec<[f32; 2]> = i.xi.iter().map(|x| [x[0] as f32, x[1] as f32]).collect();
     let a32: Vec<f32> = i.alpha.iter().map(|&a| a as f32).collect();
     let c_vndf = |k: usize| {
