@@ -90,6 +90,18 @@ pub trait Shape: sealed::Sealed + Sized {
     fn g1<F: Real>(data: &Self::Data, w: [F; 3], ax: F, ay: F, iso: bool) -> F {
         F::ONE / (F::ONE + Self::lambda(data, w, ax, ay, iso))
     }
+    /// The visible density D_w(wm) of a material: from [`Shape::d`] and [`Shape::g1`]
+    /// (overridden where a closed form is cheaper).
+    #[doc(hidden)]
+    #[inline(always)]
+    fn d_visible<F: Real>(data: &Self::Data, w: [F; 3], wm: [F; 3], ax: F, ay: F, iso: bool) -> F {
+        super::d_visible_with(
+            w,
+            wm,
+            || Self::d(data, wm, ax, ay, iso),
+            || Self::g1(data, w, ax, ay, iso),
+        )
+    }
     /// The visible-normal sampler at (αx, αy).
     #[doc(hidden)]
     fn sample_wm<F: Real>(data: &Self::Data, w: [F; 3], ax: F, ay: F, u: [F; 2]) -> [F; 3];
@@ -200,6 +212,10 @@ impl Shape for Ggx {
         ggx_g1(w, ax, ay)
     }
     #[inline(always)]
+    fn d_visible<F: Real>(_: &(), w: [F; 3], wm: [F; 3], ax: F, ay: F, _iso: bool) -> F {
+        ggx_d_visible(w, wm, ax, ay)
+    }
+    #[inline(always)]
     fn sample_wm<F: Real>(_: &(), w: [F; 3], ax: F, ay: F, u: [F; 2]) -> [F; 3] {
         fast::ggx::sample_visible(w, ax, ay, u)
     }
@@ -235,6 +251,33 @@ fn ggx_d_aniso<F: Real>(wm: [F; 3], ax: F, ay: F) -> F {
     let (x, y) = (wm[0] / ax, wm[1] / ay);
     let t = x * x + y * y + z * z;
     F::ONE / (F::PI * ax * ay * t * t)
+}
+
+/// GGX's visible density with one division besides the slopes' two: with G1(w) = 2|w.z|/(|w.z| + ℓ), ℓ the length of
+/// (αx w.x, αy w.y, w.z), and D(m) = 1/(π αx αy t²), t = (m.x/αx)² + (m.y/αy)² + m.z²,
+///
+///   D_w(m) = G1 (w·m) D/|w.z| = 2 (w·m)/(π αx αy t² (|w.z| + ℓ))
+///
+/// (the 1/|w.z| cancels: nothing grows toward the horizon; any length of w), where D, G1 and
+/// their product apart cost three. The mirror image for w.z < 0; 0 at grazing w, for m on or
+/// behind the plane perpendicular to w, and for m below the horizon.
+#[inline(always)]
+fn ggx_d_visible<F: Real>(w: [F; 3], wm: [F; 3], ax: F, ay: F) -> F {
+    let z = w[2].abs();
+    let c = if w[2] < F::ZERO {
+        -dot(w, wm)
+    } else {
+        dot(w, wm)
+    };
+    // (False for NaN.)
+    if !(c > F::ZERO && z > F::ZERO && wm[2] > F::ZERO) {
+        return if c.to_f64().is_nan() { c } else { F::ZERO };
+    }
+    let (sx, sy) = (ax * w[0], ay * w[1]);
+    let len = (sx * sx + sy * sy + z * z).sqrt();
+    let (mx, my) = (wm[0] / ax, wm[1] / ay);
+    let t = mx * mx + my * my + wm[2] * wm[2];
+    (c + c) / (F::PI * ax * ay * t * t * (z + len))
 }
 
 /// GGX's G1 = 1/(1 + Λ) = 2|z|/(|z| + √(z² + t)), t = αx²x² + αy²y²: one division (0 at
@@ -861,6 +904,11 @@ impl<F: Real, N: Shape> MicrofacetDistribution<F> for Microfacet<F, N> {
     #[inline(always)]
     fn g1(&self, w: [F; 3]) -> F {
         N::g1(&self.data, w, self.ax, self.ay, self.iso)
+    }
+
+    #[inline(always)]
+    fn d_visible(&self, w: [F; 3], wm: [F; 3]) -> F {
+        N::d_visible(&self.data, w, wm, self.ax, self.ay, self.iso)
     }
 
     #[inline(always)]

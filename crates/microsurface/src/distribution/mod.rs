@@ -153,24 +153,7 @@ pub trait MicrofacetDistribution<F: Real> {
     /// pbrt-v4); 0 at grazing w and for wm below the horizon.
     #[inline]
     fn d_visible(&self, w: [F; 3], wm: [F; 3]) -> F {
-        let z = w[2].abs();
-        let c = if w[2] < F::ZERO {
-            -dot(w, wm)
-        } else {
-            dot(w, wm)
-        };
-        // (False for NaN.)
-        if !(c > F::ZERO && z > F::ZERO) {
-            return if c.to_f64().is_nan() { c } else { F::ZERO };
-        }
-        let d = self.d(wm);
-        if d.to_f64() == f64::INFINITY {
-            // D's pole (the family's singular members at m = (0, 0, 1)), where g1·c can
-            // underflow to 0: the density is +∞ there, not NaN.
-            return d;
-        }
-        // (In this order: g1 ~ z/σ(0) cancels the 1/z of a direction near the horizon.)
-        self.g1(w) * c * d / z
+        d_visible_with(w, wm, || self.d(wm), || self.g1(w))
     }
 
     /// The density of [`MicrofacetDistribution::sample`]: [`MicrofacetDistribution::d_visible`].
@@ -244,6 +227,36 @@ pub trait MicrofacetDistribution<F: Real> {
         let (ax, ay) = self.alpha();
         ax.max(ay) < F::from_f64(1e-3)
     }
+}
+
+/// D_w(wm) = G1(w) max(0, w·m) D(m)/|w.z| from D(wm) and G1(w) (the mirror image for
+/// w.z < 0; 0 at grazing w and for wm behind the plane perpendicular to w): the formula of
+/// [`MicrofacetDistribution::d_visible`], shared with the materials' own.
+#[inline(always)]
+pub(crate) fn d_visible_with<F: Real>(
+    w: [F; 3],
+    wm: [F; 3],
+    d: impl FnOnce() -> F,
+    g1: impl FnOnce() -> F,
+) -> F {
+    let z = w[2].abs();
+    let c = if w[2] < F::ZERO {
+        -dot(w, wm)
+    } else {
+        dot(w, wm)
+    };
+    // (False for NaN.)
+    if !(c > F::ZERO && z > F::ZERO) {
+        return if c.to_f64().is_nan() { c } else { F::ZERO };
+    }
+    let d = d();
+    if d.to_f64() == f64::INFINITY {
+        // D's pole (the family's singular members at m = (0, 0, 1)), where g1·c can
+        // underflow to 0: the density is +∞ there, not NaN.
+        return d;
+    }
+    // (In this order: g1 ~ z/σ(0) cancels the 1/z of a direction near the horizon.)
+    g1() * c * d / z
 }
 
 /// w as a unit vector: w itself where it is one to rounding (one dot product: the common

@@ -273,18 +273,40 @@ fn ggx_dcos<F: Real>(ax: f64, ay: f64, u: [f64; 2], t: f64) -> [F; 3] {
 fn ggx_visible_stretched<F: Real>(w: [F; 3], ax: F, ay: F, sz: F, u: [F; 2]) -> [F; 3] {
     let (x, y, z) = (ax * w[0], ay * w[1], sz * w[2]);
     let n2 = x * x + y * y + z * z;
-    // Squared lengths past 1e±200 (f32: 1e±24) may have lost digits to under- or overflow
-    // (a direction far from unit length, or an extreme stretch): rescale w first (false for
-    // NaN, which the rescaling passes on).
+    if !stretched_len_safe(n2) {
+        return ggx_visible_rescaled(w, ax, ay, sz, u);
+    }
+    ggx_visible_stretched_len(w, ax, ay, sz, u, n2.sqrt())
+}
+
+/// Whether a squared stretched length n2 kept its digits: past 1e±200 (f32: 1e±24) it may
+/// have lost them to under- or overflow (a direction far from unit length, or an extreme
+/// stretch), and the caller rescales w first (false for NaN, which the rescaling passes on).
+#[inline(always)]
+fn stretched_len_safe<F: Real>(n2: F) -> bool {
     let (lo, hi) = if F::IS_F32 {
         (1e-24, 1e24)
     } else {
         (1e-200, 1e200)
     };
-    if !(n2 >= F::from_f64(lo) && n2 <= F::from_f64(hi)) {
-        return ggx_visible_rescaled(w, ax, ay, sz, u);
-    }
-    ggx_visible_stretched_len(w, ax, ay, sz, u, n2.sqrt())
+    n2 >= F::from_f64(lo) && n2 <= F::from_f64(hi)
+}
+
+/// The GGX sampler's hot-path test in one: the squared stretched length n2 is safe
+/// ([`stretched_len_safe`]) and m clearly faces w (w.z ≥ 0: already mirrored). The dot
+/// product in F: its rounding is below 3ε Σ|wᵢ||mᵢ| ≤ 3ε |w|₁ for the unit m, so above 4ε |w|₁
+/// the f64 test of [`facing`] passes too; at or below it (a normal within ~1e-15 of the plane
+/// perpendicular to w, 5e-7 in f32) the caller takes the edge path, which is `facing` itself.
+#[inline(always)]
+fn plain_and_facing<F: Real>(n2: F, m: [F; 3], w: [F; 3]) -> bool {
+    let d = m[0] * w[0] + m[1] * w[1] + m[2] * w[2];
+    let l1 = w[0].abs() + w[1].abs() + w[2].abs();
+    let eps4 = F::from_f64(if F::IS_F32 {
+        4.0 * 6e-8
+    } else {
+        4.0 * 1.12e-16
+    });
+    stretched_len_safe(n2) & (d > eps4 * l1)
 }
 
 /// [`ggx_visible_stretched`] for w rescaled to unit largest component, in f64 (out of line).
@@ -303,7 +325,14 @@ fn ggx_visible_rescaled<F: Real>(w: [F; 3], ax: F, ay: F, sz: F, u: [F; 2]) -> [
 /// [`ggx_visible_stretched`] given the length of the stretched direction (αx w.x, αy w.y,
 /// sz w.z), for a caller that has it already (the Double GGX sampler's acceptance test).
 #[inline(always)]
-fn ggx_visible_stretched_len<F: Real>(w: [F; 3], ax: F, ay: F, sz: F, u: [F; 2], len: F) -> [F; 3] {
+pub(crate) fn ggx_visible_stretched_len<F: Real>(
+    w: [F; 3],
+    ax: F,
+    ay: F,
+    sz: F,
+    u: [F; 2],
+    len: F,
+) -> [F; 3] {
     let inv = F::ONE / len;
     let (x, y, z) = (ax * w[0] * inv, ay * w[1] * inv, sz * w[2] * inv);
     let (c, s) = cos_sin_turn(u[0].to_f64());
