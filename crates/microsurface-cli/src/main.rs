@@ -61,7 +61,7 @@ const BSDF_USAGE: &str = "\
       scattering: single (default), kulla_conty or turquin (energy compensation: the lost
         energy put back from albedo tables, shipped or computed once per material),
         walk (the random walk of Heitz et al. 2016: sample is the walk, eval one
-        stochastic estimate seeded by the directions, pdf the MIS proxy); ndf names are
+        stochastic estimate seeded by the directions, pdf the MIS stand-in); ndf names are
         case-insensitive and take aliases (trowbridge_reitz, student-t, ...).
       op eval_ms: the multiple-scattering BSDF (the random walk of Heitz et al. 2016)
         by order, the mean of \"samples\" stochastic evaluations from \"seed\" (default 0)

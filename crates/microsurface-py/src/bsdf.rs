@@ -188,7 +188,8 @@ impl PyBsdf {
     }
 
     /// The density of ``sample``'s wi per unit solid angle (0 for delta lobes; the walk
-    /// model's MIS proxy, see the crate's walk module).
+    /// model's stand-in for multiple importance sampling, see the crate's
+    /// MultipleScattering).
     fn pdf(
         &self,
         py: Python<'_>,
