@@ -1719,5 +1719,27 @@ fn samplers_vs_c(i: &Inputs, calls: usize) {
         };
     }
     door!(Ggx, "GGX");
+    // The pdf alone at precomputed normals (where `sample`'s extra time goes).
+    let wm64: Vec<[f64; 3]> = (0..N)
+        .map(|k| {
+            let (w, a) = (i.w[k], i.alpha[k]);
+            Microfacet::<f64, Ggx>::new(a, a)
+                .unwrap()
+                .sample_wm([w.x, w.y, w.z], i.xi[k])
+        })
+        .collect();
+    let wm32: Vec<[f32; 3]> = wm64.iter().map(|m| m.map(|x| x as f32)).collect();
+    pair("GGX pdf f64", &mut |k| {
+        let (w, a) = (i.w[k], i.alpha[k]);
+        Microfacet::<f64, Ggx>::new(a, a)
+            .unwrap()
+            .pdf([w.x, w.y, w.z], black_box(wm64[k]))
+    });
+    pair("GGX pdf f32", &mut |k| {
+        let a = a32[k];
+        Microfacet::<f32, Ggx>::new(a, a)
+            .unwrap()
+            .pdf(w32[k], black_box(wm32[k])) as f64
+    });
     door!(Beckmann, "Beckmann");
 }
