@@ -142,8 +142,8 @@ pub(crate) fn sample_visible<F: Real>(w: [F; 3], ax: F, ay: F, u: [F; 2]) -> [F;
         w
     };
     // The common case in one test, the edges out of line (one branch where the range test of
-    // the stretched length and `facing` each had theirs: each cost the sampler about a tenth
-    // of the C sampler's time, BENCHMARKS.md).
+    // the stretched length and `facing` each had theirs: BENCHMARKS.md measures what each
+    // cost).
     let (x, y, z) = (ax * w[0], ay * w[1], w[2]);
     let n2 = x * x + y * y + z * z;
     let m = super::ggx_visible_stretched_len(w, ax, ay, F::ONE, u, n2.sqrt());
