@@ -175,8 +175,7 @@ fn from_f64s<F: Real>(w: [f64; 3]) -> [F; 3] {
 
 // The per-call methods are inlined whole (`inline(always)`: the match and every arm's body),
 // so that a caller's loop over one material sees a loop-invariant discriminant it can hoist;
-// with `inline` alone LLVM kept the large match out of line (BENCHMARKS.md, issue 35's
-// first steps).
+// with `inline` alone LLVM kept the large match out of line (BENCHMARKS.md).
 impl<F: Real> MicrofacetDistribution<F> for AnyMicrofacet<F> {
     #[inline]
     fn alpha(&self) -> (F, F) {
