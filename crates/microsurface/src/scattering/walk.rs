@@ -743,6 +743,11 @@ impl<F: Real, D: MicrofacetDistribution<f64>, Fa: Facets<N>, const N: usize> Bsd
     type Value = [F; N];
 
     fn eval(&self, wo: [F; 3], wi: [F; 3]) -> [F; N] {
+        // On the horizon of F (|cos θ| below 1e-18 in f32) as the single-scattering BSDFs:
+        // f carries 1/|cos θi|, which overflows f32 there (an f32 wi.z of 1e-40 gave f = ∞).
+        if crate::bsdf::on_horizon(wo[2]) || crate::bsdf::on_horizon(wi[2]) {
+            return [F::ZERO; N];
+        }
         self.eval_f64(wo.map(F::to_f64), wi.map(F::to_f64))
             .map(F::from_f64)
     }
