@@ -887,3 +887,388 @@ fn table_writes_json_and_binary() {
     }
     std::fs::remove_dir_all(&dir).ok();
 }
+
+/// A small seeded generator for the hostile-JSON test (xorshift64*, as tests/fuzz.rs's).
+struct Rng(u64);
+
+impl Rng {
+    fn next(&mut self) -> u64 {
+        self.0 ^= self.0 >> 12;
+        self.0 ^= self.0 << 25;
+        self.0 ^= self.0 >> 27;
+        self.0.wrapping_mul(0x2545_F491_4F6C_DD1D)
+    }
+    fn pick<'a>(&mut self, xs: &[&'a str]) -> &'a str {
+        xs[(self.next() % xs.len() as u64) as usize]
+    }
+    fn chance(&mut self, percent: u64) -> bool {
+        self.next() % 100 < percent
+    }
+}
+
+/// `bsdf` and `albedo` on seeded hostile JSON lines: well-formed requests with hostile
+/// values (α, η, k, shapes, μ at 0, ±1, subnormal, 1e300, out of range; directions zero,
+/// on and below the horizon, huge, tiny; uniforms at 0, 1 − ε, 1, negative) and, one line in
+/// five, a broken one (a field of the wrong type or op, a short array, an unknown name or
+/// field, broken JSON). The binary never panics, exits 0 or 1, answers every line with one
+/// JSON line without a null, an error in one line of at most 400 characters, and answers
+/// most of the well-formed lines with values. (Compensation and the walk only where they
+/// are cheap: isotropic classic NDFs for the tables, which an anisotropic or family
+/// material computes in seconds; Student-T from γ = 1.6 for the walk, whose cost grows like
+/// (γ − 3/2)^−2 toward its pole.)
+#[test]
+fn hostile_bsdf_and_albedo_lines() {
+    let mut r = Rng(0x5EED_0034_0002_0001);
+    let alphas = [
+        "0.3",
+        "1",
+        "1e-6",
+        "1e6",
+        "1e-3",
+        "0.999999999",
+        "30",
+        "[0.3,0.1]",
+        "[1e-6,1e6]",
+        "0",
+        "-1",
+        "1e-7",
+        "1e300",
+    ];
+    let etas = [
+        "1.5",
+        "0.6666666666666666",
+        "1",
+        "1.0000000000000002",
+        "1e-3",
+        "1e3",
+        "2.42",
+        "1e-300",
+        "1e300",
+        "0.2",
+    ];
+    let ks = ["0", "3.9", "1e-300", "1e300", "1e3"];
+    let shapes = [
+        "1.6", "2.5", "100", "0.1", "0.7", "1.5", "1e6", "0", "-1", "1e300",
+    ];
+    let vectors = [
+        "[0,0,1]",
+        "[0.6,0,0.8]",
+        "[0.3,0.4,0.866]",
+        "[0,0,-1]",
+        "[0.6,0,-0.8]",
+        "[1,0,0]",
+        "[1,0,1e-300]",
+        "[1e300,0,1e300]",
+        "[1e-300,0,1e-300]",
+        "[0.999,0,0.001]",
+        "[0,0,1e-310]",
+    ];
+    let uniforms = [
+        "[0.5,0.5,0.5]",
+        "[0,0,0]",
+        "[0.9999999999999999,0.9999999999999999,0.9999999999999999]",
+        "[0.3,5e-324,0.7]",
+        "[0.9,0.1,0.999999999]",
+        "[0.25,0.999999999,1e-300]",
+    ];
+    let broken = [
+        "\"spin\":1",
+        "\"u\":[0.5,0.5]",
+        "\"wo\":[0,1]",
+        "\"wo\":\"up\"",
+        "\"alpha\":\"x\"",
+        "\"eta\":null",
+        "\"op\":\"pdf\"",
+        "\"scattering\":\"double\"",
+        "\"g2\":\"beta\"",
+        "\"ndf\":\"phong\"",
+        "\"samples\":-1",
+        "\"wo\":[0,0,0]",
+        "\"u\":[1,0.5,0.5]",
+        "\"u\":[-0.1,0.5,0.5]",
+        "\"wo\":[1e999,0,1]",
+        "\"eta\":-1",
+    ];
+    let classic = ["ggx", "beckmann", "double_ggx", "exponential"];
+    let ndfs = [
+        "ggx",
+        "GGX",
+        "beckmann",
+        "double_ggx",
+        "exponential",
+        "trowbridge_reitz",
+        "gtr",
+        "student_t",
+        "ei",
+        "erfc",
+        "k0",
+        "bessel_k",
+        "gen_exponential",
+    ];
+    let mut input = String::new();
+    let mut lines_in = 0;
+    for _ in 0..400 {
+        let scattering = r.pick(&[
+            "single",
+            "single",
+            "single",
+            "walk",
+            "kulla_conty",
+            "turquin",
+        ]);
+        let costly = scattering != "single";
+        let bsdf = r.pick(&["conductor", "dielectric"]);
+        let mut fields = vec![format!("\"bsdf\":\"{bsdf}\"")];
+        let ndf = if costly {
+            r.pick(&classic)
+        } else {
+            r.pick(&ndfs)
+        };
+        fields.push(format!("\"ndf\":\"{ndf}\""));
+        match ndf {
+            "gtr" | "student_t" | "gen_exponential" => {
+                fields.push(format!("\"gamma\":{}", r.pick(&shapes)))
+            }
+            "bessel_k" => fields.push(format!("\"a\":{}", r.pick(&shapes))),
+            _ => {}
+        }
+        let alpha = if costly {
+            r.pick(&["0.05", "0.3", "1", "2"])
+        } else {
+            r.pick(&alphas)
+        };
+        fields.push(format!("\"alpha\":{alpha}"));
+        match (bsdf, costly) {
+            ("dielectric", true) => {
+                fields.push(format!("\"eta\":{}", r.pick(&["1.5", "1.33", "2.42"])))
+            }
+            ("dielectric", false) => fields.push(format!("\"eta\":{}", r.pick(&etas))),
+            _ if r.chance(60) => {
+                let three = |r: &mut Rng, xs: &[&str]| {
+                    format!("[{},{},{}]", r.pick(xs), r.pick(xs), r.pick(xs))
+                };
+                fields.push(format!("\"eta\":{}", three(&mut r, &etas)));
+                fields.push(format!("\"k\":{}", three(&mut r, &ks)));
+            }
+            _ => {}
+        }
+        if bsdf == "dielectric" && scattering == "single" && r.chance(40) {
+            let g2 = r.pick(&["correlated", "separable", "correlated_beta"]);
+            fields.push(format!("\"g2\":\"{g2}\""));
+        }
+        let op = r.pick(&["eval", "sample", "sample", "eval_ms"]);
+        // (eval_ms is the walk by order: no 'scattering', no 'g2'; a classic NDF at α up to 30,
+        // where walks are short: the generalised exponential's Λ is a quadrature per step.)
+        let g2 = fields.iter().any(|f| f.contains("g2"));
+        let walkable = classic.contains(&ndf) && !matches!(alpha, "1e6" | "1e300" | "[1e-6,1e6]");
+        let op = if op == "eval_ms" && (scattering != "single" || g2 || !walkable) {
+            "eval"
+        } else {
+            op
+        };
+        if op != "eval_ms" {
+            fields.push(format!("\"scattering\":\"{scattering}\""));
+        }
+        fields.push(format!("\"op\":\"{op}\""));
+        fields.push(format!("\"wo\":{}", r.pick(&vectors)));
+        match op {
+            "sample" => fields.push(format!("\"u\":{}", r.pick(&uniforms))),
+            _ => fields.push(format!("\"wi\":{}", r.pick(&vectors))),
+        }
+        if op == "eval_ms" {
+            fields.push(format!("\"samples\":{}", r.pick(&["1", "20", "0"])));
+        }
+        if r.chance(20) {
+            fields.push(r.pick(&broken).to_string());
+        }
+        input += &format!("{{{}}}\n", fields.join(","));
+        lines_in += 1;
+        if r.chance(3) {
+            input += r.pick(&[
+                "{",
+                "}",
+                "[]",
+                "{\"bsdf\":",
+                "3",
+                "\"x\"",
+                "{\"bsdf\":\"conductor\"}",
+            ]);
+            input.push('\n');
+            lines_in += 1;
+        }
+    }
+    let out = microsurface(&["bsdf"], &input);
+    check_answers("bsdf", &input, lines_in, &out, 0.4);
+
+    let mut input = String::new();
+    let mut lines_in = 0;
+    // Valid requests (μ at its edges, tiny and huge α, every material), then one field in
+    // two made hostile.
+    let hostile = [
+        "\"mu\":1.5",
+        "\"mu\":\"x\"",
+        "\"mu\":null",
+        "\"alpha\":-1",
+        "\"alpha\":1e-300",
+        "\"walks\":0",
+        "\"walks\":1e30",
+        "\"walks\":\"x\"",
+        "\"eta\":0",
+        "\"eta\":-1",
+        "\"rho\":1.5",
+        "\"k\":-1",
+        "\"seed\":-1",
+        "\"spin\":1",
+        "\"method\":\"mc\"",
+        "\"heights\":\"cauchy\"",
+        "\"gamma\":0",
+    ];
+    for _ in 0..80 {
+        let mut fields = Vec::new();
+        let quadrature = r.chance(20);
+        let ndf = if quadrature {
+            r.pick(&classic)
+        } else {
+            r.pick(&ndfs[..12])
+        };
+        fields.push(format!("\"ndf\":\"{ndf}\""));
+        match ndf {
+            "gtr" => fields.push(format!("\"gamma\":{}", r.pick(&["1", "1.5", "2"]))),
+            "student_t" => fields.push(format!("\"gamma\":{}", r.pick(&["1.6", "2.5", "100"]))),
+            "bessel_k" => fields.push(format!("\"a\":{}", r.pick(&["0.3", "1", "7"]))),
+            _ => {}
+        }
+        let alpha = r.pick(&["0.1", "0.5", "1", "3", "1e-6", "1e-3", "30"]);
+        fields.push(format!("\"alpha\":{alpha}"));
+        let material = r.pick(&["furnace", "conductor", "dielectric", "diffuse"]);
+        let mu = match material {
+            "dielectric" => r.pick(&["0.5", "1", "-0.5", "-1", "5e-324", "-1e-300", "0.999999999"]),
+            _ => r.pick(&["0.5", "1", "5e-324", "1e-300", "0.999999999", "0.01"]),
+        };
+        fields.push(format!("\"mu\":{mu}"));
+        match material {
+            "conductor" => fields.push(format!(
+                "\"material\":\"conductor\",\"eta\":{},\"k\":{}",
+                r.pick(&etas),
+                r.pick(&ks)
+            )),
+            "dielectric" => fields.push(format!(
+                "\"material\":\"dielectric\",\"eta\":{}",
+                r.pick(&[
+                    "1.5",
+                    "0.6666666666666666",
+                    "1",
+                    "1e3",
+                    "1e-3",
+                    "1.0000000000000002"
+                ])
+            )),
+            "diffuse" if !quadrature => fields.push(format!(
+                "\"material\":\"diffuse\",\"rho\":{}",
+                r.pick(&["0.5", "0", "1", "0.999999999"])
+            )),
+            _ => {}
+        }
+        if quadrature {
+            fields.push("\"method\":\"quadrature\"".into());
+        } else {
+            fields.push(format!("\"walks\":{}", r.pick(&["1", "50", "200"])));
+            if r.chance(30) {
+                let h = r.pick(&["uniform", "gaussian"]);
+                fields.push(format!("\"heights\":\"{h}\""));
+            }
+            if r.chance(30) {
+                let seed = r.pick(&["1", "18446744073709551615", "0"]);
+                fields.push(format!("\"seed\":{seed}"));
+            }
+        }
+        if r.chance(50) {
+            // (A later duplicate key is an error of its own: the hostile value replaces.)
+            let h = r.pick(&hostile);
+            let key = &h[..h.find(':').unwrap()];
+            fields.retain(|f| !f.starts_with(key));
+            fields.push(h.to_string());
+        }
+        input += &format!("{{{}}}\n", fields.join(","));
+        lines_in += 1;
+    }
+    let out = microsurface(&["albedo"], &input);
+    check_answers("albedo", &input, lines_in, &out, 0.3);
+}
+
+/// One JSON line per input line, no null, no panic, one-line short errors, exit 0 or 1, and
+/// at least a share `values` of the lines answered with values.
+fn check_answers(cmd: &str, input: &str, lines_in: usize, out: &Output, values: f64) {
+    let stderr = String::from_utf8_lossy(&out.stderr);
+    assert!(
+        matches!(out.status.code(), Some(0 | 1)) && !stderr.contains("panicked"),
+        "{cmd}: exit {:?}, stderr {stderr}",
+        out.status.code()
+    );
+    let stdout = String::from_utf8_lossy(&out.stdout);
+    let answers: Vec<&str> = stdout.lines().collect();
+    let errors = answers
+        .iter()
+        .filter(|a| a.starts_with("{\"error\""))
+        .count();
+    let mut kinds: std::collections::BTreeMap<String, usize> = Default::default();
+    for a in &answers {
+        if let Some(e) = serde_json::from_str::<serde_json::Value>(a)
+            .ok()
+            .and_then(|v| {
+                v.get("error")
+                    .and_then(|e| e.as_str().map(|e| e.chars().take(40).collect::<String>()))
+            })
+        {
+            *kinds.entry(e).or_default() += 1;
+        }
+    }
+    eprintln!("{cmd}: {kinds:#?}");
+    assert!(
+        (answers.len() - errors) as f64 >= values * lines_in as f64,
+        "{cmd}: {errors} errors of {} answers",
+        answers.len()
+    );
+    assert_eq!(
+        answers.len(),
+        lines_in,
+        "{cmd}: answers for {lines_in} lines"
+    );
+    for (line, answer) in input.lines().zip(&answers) {
+        let v: serde_json::Value = serde_json::from_str(answer)
+            .unwrap_or_else(|e| panic!("{cmd}: {answer} is not JSON ({e}) for {line}"));
+        // (A rejected sample's wi is null: it has none.)
+        let rejected = v.get("kind").and_then(|k| k.as_str()) == Some("rejected");
+        let v = match (rejected, v.clone()) {
+            (true, serde_json::Value::Object(mut o)) => {
+                assert!(
+                    o.remove("wi").is_some_and(|w| w.is_null()),
+                    "{cmd}: {answer}"
+                );
+                serde_json::Value::Object(o)
+            }
+            (_, v) => v,
+        };
+        assert!(!has_null(&v), "{cmd}: null in {answer} for {line}");
+        if let Some(e) = v.get("error") {
+            let e = e
+                .as_str()
+                .unwrap_or_else(|| panic!("{cmd}: error {e} for {line}"));
+            assert!(
+                !e.contains('\n') && e.len() <= 400,
+                "{cmd}: error of {} bytes for {line}: {e}",
+                e.len()
+            );
+        }
+    }
+}
+
+/// Whether a JSON value holds a null anywhere (a non-finite number written by serde).
+fn has_null(v: &serde_json::Value) -> bool {
+    match v {
+        serde_json::Value::Null => true,
+        serde_json::Value::Array(a) => a.iter().any(has_null),
+        serde_json::Value::Object(o) => o.values().any(has_null),
+        _ => false,
+    }
+}

@@ -4,7 +4,11 @@
 //! fallback, the compensated dielectric's horizon, the table files' shape parameter, the D·cos
 //! pdf near a pole, Student-T's visible sampler near γ = 3/2 and its D·cos sampler near γ = 1,
 //! D far in the tails, f32 D near a narrow pole, and the rough dielectric's transmission at
-//! η ≈ 1.
+//! η ≈ 1. Then the contract fuzz's (issue 34, item 2: tests/fuzz.rs's BSDF, Fresnel and
+//! compensation suites): Fresnel at grazing for an index ≈ 1 and at tiny, subnormal and
+//! huge indices, a zero Fresnel channel at a singular pole, the refraction at a tiny η,
+//! samples whose pdf or D had passed through subnormals, an f32 sample whose f overflowed,
+//! the conductor's reciprocity, and f32 indices of the shipped dielectric tables.
 
 use microsurface::bsdf::frame::Frame;
 use microsurface::bsdf::fresnel::{conductor, f82_tint};
@@ -470,4 +474,395 @@ fn walk_bsdf_at_any_length() {
         assert!(f.is_finite() && f > 0.0, "{f}");
         assert!(close(ms.pdf(wo_s, wi_s), ms.pdf(wo, wi)));
     }
+}
+
+/// Fresnel where its cosines cancel: η = 1 is no interface at every cos θ (the dielectric
+/// gave R = 1e-3 at cos θ = 1e-8 and 1 at 1e-9, the complex index n = 1 gave F = 1 at 1e-9:
+/// 1 − sin²θ/η² lost cos θt), and the two forms agree near grazing at η ≈ 1 (5.6e-11 apart
+/// at η = 1 + 1e-9, cos θ = 1.4e-6).
+#[test]
+fn fresnel_at_grazing_near_index_one() {
+    use microsurface::bsdf::fresnel::dielectric;
+    for c in [1e-300, 1e-20, 1e-9, 1e-8, 1e-3, 0.5, 1.0] {
+        assert_eq!(dielectric(c, 1.0), 0.0, "{c}");
+        assert_eq!(dielectric(-c, 1.0), 0.0, "{c}");
+        assert_eq!(conductor(c, 1.0, 0.0), 0.0, "{c}");
+    }
+    for (c, eta) in [
+        (1.4102246917088355e-6, 1.000000001),
+        (1.1408136438209473e-6, 1.000000001),
+    ] {
+        let (d, k): (f64, f64) = (dielectric(c, eta), conductor(c, eta, 0.0));
+        assert!((d - k).abs() < 1e-14 && d > 0.8 && d < 1.0, "{d} {k}");
+    }
+    let (d, k): (f32, f32) = (
+        dielectric(0.99999857, 2.3386985e-3),
+        conductor(0.99999857, 2.3386985e-3, 0.0),
+    );
+    assert!(
+        (d - k).abs() < 1e-6,
+        "f32: {d} vs {k} (3.6e-5 apart before)"
+    );
+}
+
+/// Fresnel at the ends of the index range: a conductor below |n| = 1e-75 (f32: 1e-9) is a
+/// mirror (NaN came out: n² underflowed in 1/n²), at n = f64::MAX seen at grazing 1
+/// (NaN: 1/s of a subnormal s overflowed in the ratios' scaling), never above 1 (1 + 4e-16
+/// at n = 1e-9 (1 + i)); a dielectric seen from inside at a subnormal η (1/η = ∞) reflects
+/// everything (NaN).
+#[test]
+fn fresnel_at_extreme_indices() {
+    use microsurface::bsdf::fresnel::dielectric;
+    for c in [0.0, 0.3, 1.0] {
+        let f: f64 = conductor(c, 1e-300, 0.0);
+        assert_eq!(f, 1.0, "{c}");
+        assert_eq!(conductor(c, 1e-300f64, 1e-300), 1.0);
+        assert_eq!(conductor(c as f32, 1e-30f32, 0.0), 1.0);
+        let d: f64 = dielectric(-c.max(1e-300), 5e-324);
+        assert_eq!(d, 1.0, "{c}");
+    }
+    let f: f64 = conductor(0.0, f64::MAX, 9.409114874380895e-3);
+    assert_eq!(f, 1.0);
+    let f: f64 = conductor(0.7912130912580625, 1e-9, 1e-9);
+    assert!((0.999..=1.0).contains(&f), "{f}");
+}
+
+/// A conductor's channel with F = 0 reflects nothing, also at a singular NDF's pole where
+/// D = +∞ (0 · ∞ gave NaN: K0 in f32 with Schlick F0 = 0, wo = wi = −z).
+#[test]
+fn zero_fresnel_channel_at_the_pole() {
+    use microsurface::bsdf::fresnel::Schlick;
+    use microsurface::bsdf::RoughConductor;
+    let m = AnyMicrofacet::<f32>::new(NdfKind::K0, 1.1976708e-5, 2.4527725e5, None).unwrap();
+    let b = RoughConductor::new(
+        m,
+        Schlick {
+            f0: [0.0f32, 0.04, 0.5],
+        },
+    );
+    let f = b.eval([0.0, 0.0, -1.0], [0.0, 0.0, -1.0]);
+    assert!(f[0] == 0.0 && f[1] == f32::INFINITY, "{f:?}");
+}
+
+/// The refraction at a tiny relative index is a unit vector (|wt| = 0.99989 at η = 1e-6:
+/// 1 − cos²θi lost sin θi near normal incidence; then 1 + 2e-10 while wi's part along the
+/// interface kept a component along n at the rounding of 1).
+#[test]
+fn refraction_at_a_tiny_index_is_unit() {
+    use microsurface::bsdf::frame::{normalize, refract};
+    let n: [f64; 3] = normalize([1e-7, -3e-7, 1.0]);
+    for wi in [
+        [0.0, 0.0, 1.0],
+        [2e-7, 1e-7, 1.0],
+        normalize([3e-7, 0.0, 1.0]),
+    ] {
+        for eta in [1e-6, 1e-3, 1e6] {
+            if let Some((wt, _)) = refract(normalize(wi), n, eta) {
+                let l = (wt[0] * wt[0] + wt[1] * wt[1] + wt[2] * wt[2]).sqrt();
+                assert!((l - 1.0).abs() < 1e-14, "η = {eta}: |wt| = {l}");
+            }
+        }
+    }
+    let b = microsurface::bsdf::RoughDielectric::new(
+        AnyMicrofacet::<f64>::new(
+            NdfKind::DoubleGgx,
+            1.0000000000000004,
+            1.0000000000000004,
+            None,
+        )
+        .unwrap(),
+        1e-6,
+    );
+    if let Some(s) = b.sample([0.0, 0.0, 1.0], 0.999999999, [0.18398373624911346, 0.0]) {
+        let l = (s.wi[0] * s.wi[0] + s.wi[1] * s.wi[1] + s.wi[2] * s.wi[2]).sqrt();
+        assert!((l - 1.0).abs() < 1e-14, "{s:?}");
+    }
+}
+
+/// The weight f|cos θi|/pdf of a sample, per channel.
+fn weight<F: microsurface::Real>(s: &microsurface::bsdf::BsdfSample<F, [F; 3]>) -> f64 {
+    let c = s.wi[2].to_f64().abs();
+    s.f.iter()
+        .map(|x| x.to_f64() * c / s.pdf.to_f64())
+        .fold(0.0, f64::max)
+}
+
+/// A sample carries a weight G2/G1 ≤ 1 (F = 1) to rounding: samples whose pdf or D had
+/// passed through subnormal products are rejected (weights of 1.0018 in f32 at a pdf of
+/// 1.5e-44, 1.0017 in f64 at a pdf of 4e-301 from D = 1e-321, 1 + 9e-7 where η ≈ 1's
+/// Jacobian 1/s² lifted a subnormal D back, 1 + 4e-12 at a pdf of 2.3e-293).
+#[test]
+fn samples_from_subnormals_are_rejected() {
+    use microsurface::bsdf::{Masking, RoughDielectric, Transport};
+    let ok = |w: f64| w <= 1.0 + 1e-9;
+    let m32 = AnyMicrofacet::<f32>::new(NdfKind::Beckmann, 4.8287145e-3, 1.0, None).unwrap();
+    let b32 = RoughDielectric::new(m32, 966.9001f32)
+        .with_masking(Masking::Separable)
+        .with_transport(Transport::Importance);
+    if let Some(s) = b32.sample(
+        [-2.2544164e-5f32, -6.118743e-5, 1.0],
+        0.99999994,
+        [0.13955802, 1e-45],
+    ) {
+        assert!(ok(weight(&s)), "{s:?}: weight {}", weight(&s));
+    }
+    // (NDF, αx, αy, η, masking, transport, wo, uc, u.)
+    type Case = (
+        NdfKind,
+        f64,
+        f64,
+        f64,
+        Masking,
+        Transport,
+        [f64; 3],
+        f64,
+        [f64; 2],
+    );
+    let cases: [Case; 3] = [
+        (
+            NdfKind::Beckmann,
+            2.5989706571101174e3,
+            2.5989706571101174e3,
+            1e-6,
+            Masking::Correlated,
+            Transport::Importance,
+            [-0.6871926064711165, 0.7264752725395637, 1e-20],
+            0.92435079341754,
+            [0.8753781679351919, 1e-310],
+        ),
+        (
+            NdfKind::Beckmann,
+            1.2117124342391022e-2,
+            1.2117124342391022e-2,
+            0.9999999999999999,
+            Masking::CorrelatedBeta,
+            Transport::Radiance,
+            [-0.0, -0.0, 1.0],
+            0.5420285100722243,
+            [5e-324, 0.17704751170266742],
+        ),
+        (
+            NdfKind::Beckmann,
+            8.26128440092048e4,
+            1e-6,
+            2.9091381326430453e-3,
+            Masking::Correlated,
+            Transport::Radiance,
+            [-0.42991001496221365, -0.9028717400800566, 1e-20],
+            0.9269380632219982,
+            [0.848804851692736, 1e-310],
+        ),
+    ];
+    for (kind, ax, ay, eta, mk, tr, wo, uc, u) in cases {
+        let m = AnyMicrofacet::<f64>::new(kind, ax, ay, None).unwrap();
+        let b = RoughDielectric::new(m, eta)
+            .with_masking(mk)
+            .with_transport(tr);
+        if let Some(s) = b.sample(wo, uc, u) {
+            let bound = if s.wi[2] * wo[2] < 0.0 && tr == Transport::Radiance {
+                1.0 / (s.eta * s.eta)
+            } else {
+                1.0
+            };
+            assert!(
+                weight(&s) <= bound * (1.0 + 1e-9),
+                "{s:?}: weight {}",
+                weight(&s)
+            );
+        }
+    }
+}
+
+/// An f32 sample's f is finite: the generalised exponential runs in f64, and its D rounded
+/// to f32 overflowed where f did not (f = ∞ or NaN with a finite pdf); such a sample is
+/// rejected.
+#[test]
+fn f32_sample_f_stays_finite() {
+    use microsurface::bsdf::{Masking, RoughDielectric, Transport};
+    // (αx, αy, γ, η, masking, transport, wo, uc, u.)
+    type Case = (
+        f32,
+        f32,
+        f64,
+        f32,
+        Masking,
+        Transport,
+        [f32; 3],
+        f32,
+        [f32; 2],
+    );
+    let cases: [Case; 3] = [
+        (
+            6.972285e4,
+            3.0346302,
+            0.1,
+            0.99999994,
+            Masking::CorrelatedBeta,
+            Transport::Radiance,
+            [0.82625395, 0.5445855, -0.14398293],
+            0.25,
+            [0.25, 0.47776532],
+        ),
+        (
+            1e6,
+            1e6,
+            0.1,
+            1.0001,
+            Masking::Separable,
+            Transport::Importance,
+            [0.0152829895, -0.90468943, 0.42579746],
+            0.99999994,
+            [0.71219546, 0.567456],
+        ),
+        (
+            4.3215936e-6,
+            1e3,
+            0.1,
+            0.37164146,
+            Masking::Correlated,
+            Transport::Radiance,
+            [-0.20501842, -0.6257599, -0.7525902],
+            0.7553412,
+            [0.99999994, 0.5284126],
+        ),
+    ];
+    for (ax, ay, g, eta, mk, tr, wo, uc, u) in cases {
+        let m = AnyMicrofacet::<f32>::new(NdfKind::GenExponential, ax, ay, Some(g)).unwrap();
+        let b = RoughDielectric::new(m, eta)
+            .with_masking(mk)
+            .with_transport(tr);
+        if let Some(s) = b.sample(wo, uc, u) {
+            assert!(
+                s.f.iter().all(|x| x.is_finite()) && weight(&s).is_finite(),
+                "{s:?}"
+            );
+        }
+    }
+}
+
+/// The rough conductor is reciprocal to the bit, f(wo, wi) = f(wi, wo): F at the mean of
+/// |wo·wm| and |wi·wm| and G2's Λo + Λi added first (a dielectric Fresnel term at η = 1,
+/// whose F is all rounding, gave 1.6e7 against 9.0e6 at grazing backscatter).
+#[test]
+fn conductor_reciprocity_to_the_bit() {
+    use microsurface::bsdf::fresnel::{Dielectric, Schlick};
+    use microsurface::bsdf::{Masking, RoughConductor};
+    let m = AnyMicrofacet::<f64>::new(NdfKind::Erfc, 1.0000000000000004, 0.9999999999999998, None)
+        .unwrap();
+    let pairs = [
+        (
+            [
+                0.43580301219516976,
+                0.9000420737730082,
+                1.0000000000000004e-8,
+            ],
+            [-0.43580301219516976, -0.9000420737730082, 1.4e-8],
+        ),
+        (
+            [0.6401913449549881, -0.7682154918020877, 1e-20],
+            [0.885536096845651, -0.40027137053920464, 0.23581486617691527],
+        ),
+        ([0.6, 0.0, 0.8], [-0.3, 0.2, 0.93]),
+    ];
+    for mk in [
+        Masking::Correlated,
+        Masking::Separable,
+        Masking::CorrelatedBeta,
+    ] {
+        let a = RoughConductor::new(m.clone(), Dielectric { eta: 1.0 }).with_masking(mk);
+        let b = RoughConductor::new(
+            m.clone(),
+            Schlick {
+                f0: [0.04, 0.5, 0.9],
+            },
+        )
+        .with_masking(mk);
+        for (wo, wi) in pairs {
+            let (x, y): ([f64; 3], [f64; 3]) = (a.eval(wo, wi), a.eval(wi, wo));
+            assert_eq!(x, y, "{mk:?} {wo:?} {wi:?}");
+            assert_eq!(b.eval(wo, wi), b.eval(wi, wo), "{mk:?} {wo:?} {wi:?}");
+        }
+    }
+}
+
+/// An f32 index of the shipped dielectric tables finds them (1.33f32 is 1.33 + 3e-8, which
+/// missed them: the tables were computed, a second, for every f32 compensated dielectric).
+#[test]
+fn shipped_dielectric_tables_at_f32_indices() {
+    use microsurface::scattering::DielectricTables;
+    for eta in [1.33f32, 1.5, 2.42, 1.0 / 1.5] {
+        assert!(
+            DielectricTables::shipped(NdfKind::Ggx, None, 0.5, eta as f64).is_some(),
+            "{eta}"
+        );
+    }
+}
+
+/// Turquin's compensated conductor scales its single-scattering sample's own f (it took
+/// eval's at the sampled wi, whose recomputed half vector rounded onto Erfc's pole: f = ∞
+/// with a finite pdf).
+#[test]
+fn turquin_sample_keeps_its_f() {
+    use microsurface::bsdf::fresnel::Schlick;
+    let m = AnyMicrofacet::<f64>::new(
+        NdfKind::Erfc,
+        0.05699642902645688,
+        0.05699642902645688,
+        None,
+    )
+    .unwrap();
+    let b = CompensatedConductor::new(
+        m,
+        Schlick {
+            f0: [0.34196597129697504, 1.0, 1e-9],
+        },
+        Scheme::Turquin,
+    );
+    for (wo, uc, u) in [
+        (
+            [
+                0.9883405047845698,
+                0.15225979969178233,
+                1.3778863906237667e-34,
+            ],
+            0.25,
+            [0.5738731689743743, 1e-300],
+        ),
+        (
+            [0.9407102640122038, 0.33921114247926737, 1e-40],
+            0.49333297347627114,
+            [0.9683256126940536, 0.0],
+        ),
+        (
+            [-0.42869177956923926, 0.44486510656591344, 0.786332242178748],
+            0.5496390368701861,
+            [0.7723042000168664, 1e-310],
+        ),
+    ] {
+        if let Some(s) = b.sample(wo, uc, u) {
+            assert!(
+                s.f.iter().all(|x| x.is_finite()) && s.pdf.is_finite(),
+                "{s:?}"
+            );
+        }
+    }
+}
+
+/// The random walk's BSDF in f32 answers 0 on f32's horizon, as the single-scattering ones
+/// (f = ∞ at wi.z = 1e-40: its 1/|cos θi| overflowed f32).
+#[test]
+fn walk_bsdf_f32_horizon() {
+    use microsurface::bsdf::fresnel;
+    use microsurface::scattering::{MirrorFacets, MultipleScattering};
+    let m = AnyMicrofacet::<f64>::new(NdfKind::StudentT, 30.0, 30.0, Some(1.6)).unwrap();
+    let gold = fresnel::Conductor {
+        eta: [1000.0, 0.2, 1.0],
+        k: [0.10827366413957763, 3.9, 0.0],
+    };
+    let b = MultipleScattering::new(m, MirrorFacets(gold));
+    let f: [f32; 3] = b.eval(
+        [0.14900278f32, 0.98883677, -1e-45],
+        [-0.73614454, -0.67682433, -1e-40],
+    );
+    assert!(f.iter().all(|x| x.is_finite() && *x >= 0.0), "{f:?}");
 }

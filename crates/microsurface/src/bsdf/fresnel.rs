@@ -21,7 +21,14 @@ use crate::fast::Real;
 
 /// Exact unpolarised Fresnel reflectance of a dielectric interface with relative index η
 /// (η_t/η_i; the side cos θ > 0 is outside), for cos θ ∈ [−1, 1]: cos θ < 0 swaps the sides.
-/// 1 at and beyond the critical angle; 0 at η = 1.
+/// 1 at and beyond the critical angle and at grazing; 0 at η = 1 (at every cos θ); in
+/// [0, 1] for every finite η > 0 (1 where η or 1/η overflows).
+///
+/// With (η cos θt)² = η² − sin²θ formed without cancellation, as (η − 1)(η + 1) + cos²θ
+/// above η = 1 and η² − (1 − cos θ)(1 + cos θ) below (the plain 1 − sin²θ/η² lost cos θt
+/// near grazing at η ≈ 1: at η = 1, cos θ = 1e-8 it gave R = 1e-3, not 0); past η = 1e150
+/// (1e18 in f32), where η² overflows, the ratios divided through by η. Near the critical
+/// angle R has a square-root edge, which turns the rounding ε of η² − sin²θ into √ε.
 #[inline]
 pub fn dielectric<F: Real>(cos_i: F, eta: F) -> F {
     let (cos_i, eta) = if cos_i < F::ZERO {
@@ -29,15 +36,36 @@ pub fn dielectric<F: Real>(cos_i: F, eta: F) -> F {
     } else {
         (cos_i, eta)
     };
-    let cos_i = cos_i.min(F::ONE);
-    let sin2_t = ((F::ONE - cos_i) * (F::ONE + cos_i)) / (eta * eta);
-    // (False for NaN: NaN then flows through the formulas below.)
-    if sin2_t >= F::ONE {
+    let c = cos_i.min(F::ONE);
+    if eta == F::ONE {
+        return F::ZERO;
+    }
+    if c == F::ZERO {
         return F::ONE;
     }
-    let cos_t = (F::ONE - sin2_t).max(F::ZERO).sqrt();
-    let r_parl = (eta * cos_i - cos_t) / (eta * cos_i + cos_t);
-    let r_perp = (cos_i - eta * cos_t) / (cos_i + eta * cos_t);
+    let big = F::from_f64(if F::IS_F32 { 1e18 } else { 1e150 });
+    // (NaN fails every test and flows through the formulas.)
+    let (r_parl, r_perp) = if eta > big {
+        let e = F::ONE / eta;
+        let cos_t = ((F::ONE - e) * (F::ONE + e) + (c * e) * (c * e)).sqrt();
+        (
+            (c - e * cos_t) / (c + e * cos_t),
+            (e * c - cos_t) / (e * c + cos_t),
+        )
+    } else {
+        let ect2 = if eta > F::ONE {
+            (eta - F::ONE) * (eta + F::ONE) + c * c
+        } else {
+            eta * eta - (F::ONE - c) * (F::ONE + c)
+        };
+        // Total internal reflection (false for NaN).
+        if ect2 <= F::ZERO {
+            return F::ONE;
+        }
+        let ect = ect2.sqrt();
+        let e2c = eta * eta * c;
+        ((e2c - ect) / (e2c + ect), (c - ect) / (c + ect))
+    };
     F::HALF * (r_parl * r_parl + r_perp * r_perp)
 }
 
@@ -67,9 +95,10 @@ impl<F: Real> Complex<F> {
     fn norm(self) -> F {
         self.re * self.re + self.im * self.im
     }
-    /// |a/b|² = |a|²/|b|², the four parts scaled by the largest first (no overflow or
-    /// underflow of the squares); 0 where both are 0 (the limit of every ratio the
-    /// reflectance takes there: an interface of index 1 seen at grazing).
+    /// |a/b|² = |a|²/|b|², the four parts divided by the largest first (no overflow or
+    /// underflow of the squares; divided, not multiplied by 1/s, which overflows for a
+    /// subnormal s); 0 where both are 0 (the limit of every ratio the reflectance takes
+    /// there: an interface of index 1 seen at grazing).
     fn norm_ratio(a: Self, b: Self) -> F {
         let s = a.re.abs().max(a.im.abs()).max(b.re.abs()).max(b.im.abs());
         if s == F::ZERO {
@@ -79,8 +108,8 @@ impl<F: Real> Complex<F> {
             // (∞ or NaN parts: the unscaled ratio says which.)
             return a.norm() / b.norm();
         }
-        let k = F::ONE / s;
-        a.scale(k).norm() / b.scale(k).norm()
+        let d = |z: Self| Complex::new(z.re / s, z.im / s);
+        d(a).norm() / d(b).norm()
     }
     /// 1/z by Smith's algorithm (no overflow of |z|² for large z).
     fn recip_smith(self) -> Self {
@@ -96,10 +125,6 @@ impl<F: Real> Complex<F> {
     }
     fn scale(self, s: F) -> Self {
         Complex::new(self.re * s, self.im * s)
-    }
-    fn recip(self) -> Self {
-        let n = self.norm();
-        Complex::new(self.re / n, -self.im / n)
     }
     /// The principal square root (re ≥ 0), without cancellation.
     fn sqrt(self) -> Self {
@@ -118,12 +143,25 @@ impl<F: Real> Complex<F> {
 }
 
 /// Exact unpolarised Fresnel reflectance of a conductor with complex relative index η + ik,
-/// for cos θ ∈ [0, 1] (clamped there; light arrives from outside): finite for every finite
-/// η + ik, → 1 as |η + ik| → ∞ (the ratios are divided through by n past |n| ~ 1e150, 1e18 in
-/// f32, where n² would overflow), 0 for n = 1 (no interface) at grazing too.
+/// for cos θ ∈ [0, 1] (clamped there; light arrives from outside): in [0, 1] and finite for
+/// every finite η + ik, → 1 as |η + ik| → ∞ (the ratios are divided through by n past
+/// |n| ~ 1e150, 1e18 in f32, where n² would overflow) and as |η + ik| → 0 (1 below
+/// |η|, |k| < 1e-75, 1e-9 in f32, where 1 − F ≤ 4|n| is below the rounding), 0 for n = 1
+/// (no interface) at every cos θ. cos²θt = 1 − sin²θ/n² is
+/// formed as ((n − 1)(n + 1) + cos²θ)/n², without the cancellation that lost it near
+/// grazing for n ≈ 1 (n = 1 gave F = 1 at cos θ = 1e-9).
 #[inline]
 pub fn conductor<F: Real>(cos_i: F, eta: F, k: F) -> F {
     let cos_i = cos_i.max(F::ZERO).min(F::ONE);
+    if eta == F::ONE && k == F::ZERO {
+        return F::ZERO;
+    }
+    // n² loses digits below |n| ~ 1e-154 (1e-19 in f32); F = 1 − O(|n|) rounds to 1 well
+    // before. (Both tested apart: a NaN part is false here and flows on.)
+    let tiny = F::from_f64(if F::IS_F32 { 1e-9 } else { 1e-75 });
+    if eta.abs() < tiny && k.abs() < tiny {
+        return F::ONE;
+    }
     let n = Complex::new(eta, k);
     let sin2_i = (F::ONE - cos_i) * (F::ONE + cos_i);
     // Past |n| ~ 1e150 (1e18 in f32) n² overflows: the same ratios divided through by n,
@@ -138,18 +176,38 @@ pub fn conductor<F: Real>(cos_i: F, eta: F, k: F) -> F {
         let ci_m = m.scale(cos_i);
         let r_parl = Complex::norm_ratio(ci.sub(ct_m), ci.add(ct_m));
         let r_perp = Complex::norm_ratio(ci_m.sub(cos_t), ci_m.add(cos_t));
-        return F::HALF * (r_parl + r_perp);
+        return at_most_one(F::HALF * (r_parl + r_perp));
     }
-    // cos θt = √(1 − sin²θi/n²).
+    // cos θt = √(1 − sin²θi/n²) = √((n² − sin²θi)/n²), n² − sin²θi formed as the
+    // dielectric's: (n − 1)(n + 1) + cos²θi for |n| ≥ 1, n² − (1 − cos θi)(1 + cos θi)
+    // below.
     let n2 = n.mul(n);
-    let sin2_t = n2.recip().scale(sin2_i);
-    let cos_t = Complex::new(F::ONE - sin2_t.re, -sin2_t.im).sqrt();
+    let w = if n.norm() >= F::ONE {
+        Complex::new(eta - F::ONE, k)
+            .mul(Complex::new(eta + F::ONE, k))
+            .add(Complex::new(cos_i * cos_i, F::ZERO))
+    } else {
+        n2.sub(Complex::new(sin2_i, F::ZERO))
+    };
+    // (Smith's 1/n², no overflow of |n²|² for |n| up to the switch at 1e150.)
+    let cos_t = w.mul(n2.recip_smith()).sqrt();
     let ci = Complex::new(cos_i, F::ZERO);
     let n_ci = n.scale(cos_i);
     let n_ct = n.mul(cos_t);
     let r_parl = Complex::norm_ratio(n_ci.sub(cos_t), n_ci.add(cos_t));
     let r_perp = Complex::norm_ratio(ci.sub(n_ct), ci.add(n_ct));
-    F::HALF * (r_parl + r_perp)
+    at_most_one(F::HALF * (r_parl + r_perp))
+}
+
+/// A reflectance rounded past 1 brought back to 1 (each ratio |a − b|²/|a + b|² is at most 1
+/// but for rounding: 1 + 4e-16 came out at n = 1e-9 (1 + i)); NaN passes through.
+#[inline(always)]
+fn at_most_one<F: Real>(r: F) -> F {
+    if r > F::ONE {
+        F::ONE
+    } else {
+        r
+    }
 }
 
 /// Schlick's approximation F0 + (1 − F0)(1 − cos θ)⁵, cos θ clamped to [0, 1].

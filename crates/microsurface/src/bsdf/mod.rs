@@ -150,8 +150,10 @@ pub trait Bsdf<F: Real> {
     fn pdf(&self, wo: [F; 3], wi: [F; 3]) -> F;
     /// A direction wi from the uniforms uc (the lobe choice) and u (the normal); `None` where
     /// the sample is rejected (a reflection below the horizon, a refraction back to wo's
-    /// side, a pdf that is not a positive finite number) or wo is on the horizon. A
-    /// sample's pdf is > 0 and finite, and f is finite.
+    /// side, a pdf that is not a positive finite number; for the single-scattering BSDFs
+    /// also a pdf below 2.2e-158 (f32: 1.2e-20), a subnormal D at the sampled normal, and
+    /// an f that overflows, each of probability ~0) or wo is on the horizon. A sample's pdf
+    /// is > 0 and finite, and f is finite.
     fn sample(&self, wo: [F; 3], uc: F, u: [F; 2]) -> Option<BsdfSample<F, Self::Value>>;
 }
 
@@ -166,23 +168,65 @@ pub(crate) fn on_horizon<F: Real>(z: F) -> bool {
     !(z.abs() >= floor)
 }
 
-/// A sampled pdf a renderer can divide by: positive and finite (a sample whose pdf
-/// underflowed or overflowed, probability ~0, is rejected; false for NaN).
+/// A sampled pdf a renderer can divide by: finite and at least the smallest normal float
+/// over the horizon floor ([`on_horizon`]), 2.2e-158 in f64 and 1.2e-20 in f32 (false for
+/// NaN). The visible density is G1 (wo·wm) D/|cos θo|: a smaller pdf may have passed through
+/// a subnormal product before the division by |cos θo| and lost the digits the weight
+/// f|cos θi|/pdf needs (f32's pdf of 1.5e-44 put it at 1.0018, f64's of 2.3e-293 at
+/// 1 + 4e-12, where it is G2/G1 ≤ 1). Such a sample carries no energy (f|cos θi| ≤ pdf for
+/// F ≤ 1: below 3e-157 over the sphere in f64, 2e-19 in f32) and is rejected, as one
+/// whose pdf underflowed or overflowed.
 #[inline(always)]
-fn usable<F: Real>(pdf: F) -> bool {
-    pdf > F::ZERO && pdf < F::from_f64(f64::INFINITY)
+pub(crate) fn usable<F: Real>(pdf: F) -> bool {
+    let min = F::from_f64(if F::IS_F32 {
+        f32::MIN_POSITIVE as f64 / 1e-18
+    } else {
+        f64::MIN_POSITIVE / 1e-150
+    });
+    pdf >= min && pdf < F::from_f64(f64::INFINITY)
 }
 
-/// The reflection lobe without its Fresnel factor: D(wm) G2(wo, wi)/(4|cos θo||cos θi|).
+/// The reflection lobe without its Fresnel factor: D(wm) G2(wo, wi)/(4|cos θo||cos θi|),
+/// with D(wm) given.
 #[inline(always)]
 fn reflected<F: Real, D: MicrofacetDistribution<F>>(
     d: &D,
     m: Masking,
     wo: [F; 3],
     wi: [F; 3],
-    wm: [F; 3],
+    d_wm: F,
 ) -> F {
-    d.d(wm) * m.g2(d, wo, wi) / (F::from_f64(4.0) * (wo[2] * wi[2]).abs())
+    d_wm * m.g2(d, wo, wi) / (F::from_f64(4.0) * (wo[2] * wi[2]).abs())
+}
+
+/// D at a sampled normal where a sample can carry it: a normal number. A subnormal D has
+/// lost digits that 1/|cos θo| or a transmission's Jacobian (up to 1e32 at η' = 1 + ε)
+/// bring back to the normal range of f and the pdf, each rounded its own way, so that their
+/// ratio, the weight, left its bound (1.0017 for a pdf of 4e-301 from D = 1e-321); such a
+/// normal has probability below 1e-150 (the pdf ∝ D/|cos θo|), and its sample is rejected
+/// like one with an unusable pdf.
+#[inline(always)]
+fn sampled_d<F: Real, D: MicrofacetDistribution<F>>(d: &D, wm: [F; 3]) -> Option<F> {
+    let v = d.d(wm);
+    usable(v).then_some(v)
+}
+
+/// Every channel of f finite (a sample's f: the parts of f, D first, can overflow F where f
+/// itself does not, as the generalised exponential's f64 D does rounded to f32).
+#[inline(always)]
+fn all_finite<F: Real>(f: &[F]) -> bool {
+    f.iter().all(|x| x.to_f64().is_finite())
+}
+
+/// A channel's Fresnel factor times the lobe: 0 where the channel reflects nothing (F = 0),
+/// also where the lobe is +∞ (a singular NDF's pole, D(1) = ∞: 0 · ∞ would be NaN).
+#[inline(always)]
+fn weighted<F: Real>(f: F, k: F) -> F {
+    if f == F::ZERO {
+        F::ZERO
+    } else {
+        f * k
+    }
 }
 
 /// A rough conductor: a [`MicrofacetDistribution`] and a [`Fresnel`] term of N channels (RGB: N = 3).
@@ -242,9 +286,14 @@ impl<F: Real, D: MicrofacetDistribution<F>, Fr: Fresnel<F, N>, const N: usize> B
         let Some(wm) = half_vector_reflection(wo, wi) else {
             return [F::ZERO; N];
         };
-        let fr = self.fresnel.eval(dot(wo, wm).abs());
-        let k = reflected(&self.dist, self.masking, wo, wi, wm);
-        fr.map(|f| f * k)
+        // F at the mean of |wo·wm| and |wi·wm| (equal but for rounding, which the half
+        // vector's 1/|wo + wi| magnifies toward backscatter): f(wo, wi) = f(wi, wo) up to
+        // G2's rounding, as reciprocity has it.
+        let fr = self
+            .fresnel
+            .eval(F::HALF * (dot(wo, wm).abs() + dot(wi, wm).abs()));
+        let k = reflected(&self.dist, self.masking, wo, wi, self.dist.d(wm));
+        fr.map(|f| weighted(f, k))
     }
 
     #[inline]
@@ -290,10 +339,20 @@ impl<F: Real, D: MicrofacetDistribution<F>, Fr: Fresnel<F, N>, const N: usize> B
             return None;
         }
         let fr = self.fresnel.eval(c);
-        let k = reflected(&self.dist, self.masking, wo, wi, s.wm);
+        let k = reflected(
+            &self.dist,
+            self.masking,
+            wo,
+            wi,
+            sampled_d(&self.dist, s.wm)?,
+        );
+        let f = fr.map(|f| weighted(f, k));
+        if !all_finite(&f) {
+            return None;
+        }
         Some(BsdfSample {
             wi,
-            f: fr.map(|f| f * k),
+            f,
             pdf,
             lobe: Lobe::Reflection,
             specular: false,
@@ -415,14 +474,14 @@ impl<F: Real, D: MicrofacetDistribution<F>, const N: usize> RoughDielectric<F, D
 
     /// f for a transmission through wm (one-sided η').
     #[inline(always)]
-    fn f_transmission(&self, wo: [F; 3], wi: [F; 3], wm: [F; 3], etap: F, t: F) -> F {
+    fn f_transmission(&self, wo: [F; 3], wi: [F; 3], wm: [F; 3], d_wm: F, etap: F, t: F) -> F {
         let (di, d_o) = (dot(wi, wm), dot(wo, wm));
         let s = refraction_denominator(wo, wi, wm, etap);
         // G2/|cos θo cos θi| before the 1/s² (≥ (η' − 1)²/η'², 5e-32 at η' = 1 + 2⁻⁵²): the
         // cosines' product stays normal above the horizon floor, times s² it could underflow.
         let geometric = self.masking.g2(&self.dist, wo, wi) / (wi[2] * wo[2]).abs()
             * ((di * d_o).abs() / (s * s));
-        let mut f = self.dist.d(wm) * t * geometric;
+        let mut f = d_wm * t * geometric;
         if self.transport == Transport::Radiance {
             f = f / (etap * etap);
         }
@@ -476,9 +535,10 @@ impl<F: Real, D: MicrofacetDistribution<F>, const N: usize> RoughDielectric<F, D
         };
         let r = fresnel::dielectric(dot(wo, wm), self.eta);
         if reflection {
-            r * reflected(&self.dist, self.masking, wo, wi, wm)
+            r * reflected(&self.dist, self.masking, wo, wi, self.dist.d(wm))
         } else {
-            self.f_transmission(wo, wi, wm, etap, F::ONE - r)
+            let d_wm = self.dist.d(wm);
+            self.f_transmission(wo, wi, wm, d_wm, etap, F::ONE - r)
         }
     }
 
@@ -518,9 +578,9 @@ impl<F: Real, D: MicrofacetDistribution<F>, const N: usize> RoughDielectric<F, D
             if !same_hemisphere(wo, wi) || on_horizon(wi[2]) {
                 return None;
             }
-            let f = r * reflected(&self.dist, self.masking, wo, wi, wm);
+            let f = r * reflected(&self.dist, self.masking, wo, wi, sampled_d(&self.dist, wm)?);
             let pdf = s.pdf * r / (F::from_f64(4.0) * c.abs());
-            if !usable(pdf) {
+            if !usable(pdf) || !all_finite(&[f]) {
                 return None;
             }
             return Some(BsdfSample {
@@ -538,12 +598,13 @@ impl<F: Real, D: MicrofacetDistribution<F>, const N: usize> RoughDielectric<F, D
         }
         let t = F::ONE - r;
         let pdf = s.pdf * t * jacobian_refraction(wo, wi, wm, etap);
-        if !usable(pdf) {
+        let f = self.f_transmission(wo, wi, wm, sampled_d(&self.dist, wm)?, etap, t);
+        if !usable(pdf) || !all_finite(&[f]) {
             return None;
         }
         Some(BsdfSample {
             wi,
-            f: self.f_transmission(wo, wi, wm, etap, t),
+            f,
             pdf,
             lobe: Lobe::Transmission,
             specular: false,

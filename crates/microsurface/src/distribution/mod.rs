@@ -136,10 +136,11 @@ pub trait MicrofacetDistribution<F: Real> {
         F::ONE / (F::ONE + self.lambda(w))
     }
 
-    /// Height-correlated G2(wo, wi) = 1/(1 + Λ(wo) + Λ(wi)).
+    /// Height-correlated G2(wo, wi) = 1/(1 + Λ(wo) + Λ(wi)), symmetric to the bit (Λo + Λi
+    /// first: the BSDFs' reciprocity).
     #[inline]
     fn g2(&self, wo: [F; 3], wi: [F; 3]) -> F {
-        F::ONE / (F::ONE + self.lambda(wo) + self.lambda(wi))
+        F::ONE / (F::ONE + (self.lambda(wo) + self.lambda(wi)))
     }
 
     /// Separable G2(wo, wi) = G1(wo) G1(wi) (Mitsuba 3's `G`).

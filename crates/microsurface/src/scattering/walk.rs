@@ -779,6 +779,7 @@ impl<D: MicrofacetDistribution<f64>, Fa: Facets<N>, const N: usize> MultipleScat
     pub fn eval_orders(&self, wo: [f64; 3], wi: [f64; 3], samples: u64, seed: u64) -> [ByOrder; N] {
         let mut rng = WalkRng::new(seed);
         let mut sums = [OrderSums::default(); N];
+        let (wo, wi) = (unit(wo), unit(wi));
         // On the horizon (either direction) f·|cos θi| → 0 and f is answered 0, as the
         // single-scattering BSDFs do there (1/|cos θi| would make 0 · ∞ = NaN).
         if crate::bsdf::on_horizon(wo[2]) || crate::bsdf::on_horizon(wi[2]) {
@@ -801,6 +802,13 @@ impl<F: Real, D: MicrofacetDistribution<f64>, Fa: Facets<N>, const N: usize> Bsd
     type Value = [F; N];
 
     fn eval(&self, wo: [F; 3], wi: [F; 3]) -> [F; N] {
+        // On the horizon of F (|cos θ| below 1e-18 in f32) as the single-scattering BSDFs:
+        // f carries 1/|cos θi|, which overflows f32 there (an f32 wi.z of 1e-40 gave f = ∞).
+        // The test reads the unit directions' cosines (any length is in contract).
+        let (wo, wi) = (unit(wo), unit(wi));
+        if crate::bsdf::on_horizon(wo[2]) || crate::bsdf::on_horizon(wi[2]) {
+            return [F::ZERO; N];
+        }
         self.eval_f64(wo.map(F::to_f64), wi.map(F::to_f64))
             .map(F::from_f64)
     }

@@ -270,10 +270,13 @@ fn conductor_lane<F: Real>(
     let (lo, li) = (ggx_lambda_lane(wo, ax, ay), ggx_lambda_lane(wi, ax, ay));
     let g2 = match masking {
         // (A conductor only reflects: both height-correlated forms are 1/(1 + Λo + Λi).)
-        Masking::Correlated | Masking::CorrelatedBeta => F::ONE / (F::ONE + lo + li),
+        Masking::Correlated | Masking::CorrelatedBeta => F::ONE / (F::ONE + (lo + li)),
         Masking::Separable => F::ONE / ((F::ONE + lo) * (F::ONE + li)),
     };
-    let c = (wo[0] * wm[0] + wo[1] * wm[1] + co * wm[2]).abs();
+    // (F at the mean of |wo·wm| and |wi·wm|, as the scalar BSDF.)
+    let c = F::HALF
+        * ((wo[0] * wm[0] + wo[1] * wm[1] + co * wm[2]).abs()
+            + (wi[0] * wm[0] + wi[1] * wm[1] + ci * wm[2]).abs());
     let k = d * g2 / (F::from_f64(4.0) * (co * ci).abs());
     let f = std::array::from_fn(|j| crate::bsdf::fresnel::conductor(c, fr.eta[j], fr.k[j]) * k);
     let pdf = d / ((F::ONE + lo) * F::from_f64(4.0) * co.abs());
@@ -416,7 +419,7 @@ fn conductor_sample_slice<F: Real>(
                 (wi.x[i], wi.y[i], wi.z[i]) = (v[0], v[1], v[2]);
                 (f0[i], f1[i], f2[i], pdf[i]) = (fv[0], fv[1], fv[2], p);
                 // Rejected (wi on the other side: pdf 0) or flagged: the scalar decides.
-                flags[i - start] = bad_m | bad_f | !(p > F::ZERO);
+                flags[i - start] = bad_m | bad_f | !crate::bsdf::usable(p);
             }
         }
         for i in start..end {

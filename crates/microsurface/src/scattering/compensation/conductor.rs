@@ -153,7 +153,16 @@ impl<F: Real, D: MicrofacetDistribution<F>, Fr: Fresnel<F, N>, const N: usize> B
                 if s.specular {
                     return Some(s);
                 }
-                let f = self.eval(wo, s.wi);
+                // The sample's own f scaled (eval at its wi would recompute the half vector,
+                // which can round onto a singular NDF's pole: f = ∞ with the sample's finite
+                // pdf, Erfc at α = 0.057).
+                let e = self.table.e(wo[2].to_f64().abs());
+                let f = std::array::from_fn(|c| {
+                    F::from_f64(s.f[c].to_f64() * (1.0 + self.factor[c] * (1.0 - e) / e))
+                });
+                if !f.iter().all(|x: &F| x.to_f64().is_finite()) {
+                    return None;
+                }
                 Some(BsdfSample { f, ..s })
             }
             Scheme::KullaConty => {
@@ -171,7 +180,7 @@ impl<F: Real, D: MicrofacetDistribution<F>, Fr: Fresnel<F, N>, const N: usize> B
                     s.wi
                 };
                 let pdf = self.pdf(wo, wi);
-                if !(pdf > F::ZERO && pdf.to_f64().is_finite()) {
+                if !crate::bsdf::usable(pdf) {
                     return None;
                 }
                 Some(BsdfSample {

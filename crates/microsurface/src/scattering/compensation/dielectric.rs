@@ -255,7 +255,7 @@ impl<F: Real, D: MicrofacetDistribution<F>, const N: usize> CompensatedDielectri
                     s.wi
                 };
                 let pdf = self.pdf(wo, wi);
-                if !(pdf > F::ZERO && pdf.to_f64().is_finite()) || wi[2] == F::ZERO {
+                if !crate::bsdf::usable(pdf) || wi[2] == F::ZERO {
                     return None;
                 }
                 let crossed = (wi[2] < F::ZERO) != (wo[2] < F::ZERO);

@@ -284,8 +284,10 @@ impl DielectricTables {
     /// inside at grazing μ; 1e-5 or less at α ≤ 0.6; tests/compensate.rs).
     pub fn shipped(kind: NdfKind, gamma: Option<f64>, alpha: f64, eta: f64) -> Option<Self> {
         let file = shipped_file(kind, gamma)?;
-        // (A relative 1e-12 of slack: an η written with its digits.)
-        let matches = |x: f64| (x - eta).abs() <= 1e-12 * x;
+        // (A relative 1e-7 of slack: an η written with its digits, or rounded to f32 (1.33f32
+        // is 1.33 + 3e-8, which missed the tables and computed them, a second); E moves by
+        // far less than the interpolation's 2e-4 over it.)
+        let matches = |x: f64| (x - eta).abs() <= 1e-7 * x;
         let (je, flip) = match SHIPPED_ETAS.iter().position(|&x| matches(x)) {
             Some(j) => (j, false),
             None => (SHIPPED_ETAS.iter().position(|&x| matches(1.0 / x))?, true),
