@@ -27,6 +27,12 @@ incidence, a = infinity):
   1/2, 8 x 20 octaves [2^-21, 2^-1) above, in one table (the cells below 1/2 first, each side
   row-major in t). Guess error about 2e-4 of min(1, X + a) (tests/fast.rs measures it), which
   the one step of order five in fast::beckmann takes below the rounding of N(X) itself.
+
+And the slope y = erfinv(2u - 1), the other half of the warp, without a logarithm:
+
+* ERFINV_Q: erfinv(v)/v at v = 1 - q on octaves of q in [2^-60, 1), 8 segments each, the
+  Chebyshev interpolant at 10 points of each (in mpmath at 60 digits: erfinv loses a digit
+  per decade of q near v = 1). Interpolation error about 2e-16, relative.
 """
 import math
 import sys
@@ -143,6 +149,27 @@ def x0_table(upper):
     return cells
 
 
+ERFINV_Q_K0, ERFINV_Q_M, ERFINV_Q_POINTS = -60, 3, 10
+
+
+def erfinv_q_table():
+    """Rows of erfinv(1 - q)/(1 - q) on the octave segments of [2^K0, 1) (fit.rs's layout)."""
+    rows = []
+    pts = chebyshev_points(ERFINV_Q_POINTS)
+    with mp.workdps(60):
+        def ratio(q):
+            v = 1 - q
+            return sqrt(pi) / 2 if v == 0 else mp.erfinv(v) / v
+        for e in range(ERFINV_Q_K0, 0):
+            lo = mpf(2) ** e
+            h = lo / 2**ERFINV_Q_M
+            for j in range(2**ERFINV_Q_M):
+                x0 = lo + j * h
+                c = monomial_fit(pts, [ratio(x0 + (s + 1) / 2 * h) for s in pts])
+                rows.append([float(c[i]) for i in range(ERFINV_Q_POINTS)])
+    return rows
+
+
 def f32(x):
     """The shortest decimal that reads back as the f32 nearest to x."""
     import struct
@@ -164,6 +191,16 @@ def main():
     out.write("/// per interval [head, tail, c₁, …, c₈], L = head + (tail + Σ c_j s^j), s ∈ [−1, 1].\n")
     out.write(f"pub static BECKMANN_L: [[f64; {L_POINTS + 1}]; {L_INTERVALS}] = [\n")
     for row in l_table():
+        out.write("    [" + ", ".join(repr(x + 0.0) for x in row) + "],\n")
+    out.write("];\n\n")
+    rows = erfinv_q_table()
+    out.write(f"/// erfinv(v)/v at v = 1 − q, q ∈ [2^{ERFINV_Q_K0}, 1): octaves of q, 2^{ERFINV_Q_M} segments each (fit.rs's layout).\n")
+    out.write(f"pub const ERFINV_Q_K0: i32 = {ERFINV_Q_K0};\n")
+    out.write(f"/// See [`ERFINV_Q_K0`].\n")
+    out.write(f"pub const ERFINV_Q_M: u32 = {ERFINV_Q_M};\n")
+    out.write(f"/// See [`ERFINV_Q_K0`].\n")
+    out.write(f"pub static ERFINV_Q: [[f64; {ERFINV_Q_POINTS}]; {len(rows)}] = [\n")
+    for row in rows:
         out.write("    [" + ", ".join(repr(x + 0.0) for x in row) + "],\n")
     out.write("];\n\n")
     nt, nk = X0_T, X0_K

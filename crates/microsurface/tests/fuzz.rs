@@ -1653,8 +1653,8 @@ macro_rules! fuzz_slices {
                             // f64 one round cos 2πu a few ulp apart, which the unstretch
                             // magnifies by up to the anisotropy; past 1e-3 the slice's
                             // normal is held to being a visible normal. Beckmann: the
-                            // slice's e^x and ln (fast::arith) and the scalar's (libm) put
-                            // the slopes ~1e-16 apart, magnified the same way.
+                            // slice's e^x (fast::arith) and the scalar's (libm) put x̃
+                            // ~1e-16 apart, magnified the same way.
                             let ratio = (ax / ay).max(ay / ax) as f64;
                             let tol = $tol * ratio.max(1.0);
                             let valid = {

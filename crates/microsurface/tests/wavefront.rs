@@ -64,9 +64,9 @@ fn close(a: f64, b: f64, tol: f64) -> bool {
 }
 
 /// GGX and Beckmann visible normals: the slice against `sample_wm`, per element, components
-/// within `tol` (GGX: the f32 azimuth polynomial; Beckmann: the slices' e^x and ln from
-/// `fast::arith` where the scalar sampler calls libm, ~1e-16 apart in the slopes, which the
-/// f32 normal rounds away or onto the neighbouring f32).
+/// within `tol` (GGX: the f32 azimuth polynomial; Beckmann: the slices' e^x from
+/// `fast::arith` where the scalar sampler calls libm, ~1e-16 apart in x̃, which the f32
+/// normal rounds away or onto the neighbouring f32).
 macro_rules! vndf_test {
     ($name:ident, $F:ty, $ggx:path, $beckmann:path, $tol:expr) => {
         #[test]

@@ -237,7 +237,7 @@ dispatched! {
 /// Beckmann visible normals for a slice of directions (as [`ggx_sample_visible_f32`]): the
 /// scalar sampler's exact warp in lanes ([`crate::fast::beckmann`]: the table guess and one
 /// step of order five, evaluated in f64 and rounded once, as the scalar f32 path), with e^x
-/// and ln from [`crate::fast::arith`] where the scalar sampler calls libm: the normals within
+/// from [`crate::fast::arith`] where the scalar sampler calls libm: the normals within
 /// a few f64 ulps of the scalar's, magnified by the anisotropy (6e-15 at αx/αy = 2000 in f64;
 /// the same f32 in the tests, tests/wavefront.rs). Lanes the one-step path does not cover
 /// (u₁ within 2^−11 of 0 or 2^−21 of 1, normal incidence, extreme lengths, a normal that
