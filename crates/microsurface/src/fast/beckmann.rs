@@ -344,12 +344,13 @@ pub(super) fn guess(t: f64, u: f64) -> f64 {
 }
 
 /// erfcx(x) for x ∈ [0, 2^5) (the hot path's |x̃| < 6), branch-free: the table, or
-/// 1 − 2x/√π below 2^−30 (as [`erfcx`]).
+/// 1 − 2x/√π below 2^−30 (as [`erfcx`], by a product: both sides of the select are
+/// evaluated, and a division would cost every call).
 #[inline(always)]
 fn erfcx_hot(x: f64) -> f64 {
     let table = super::fit::eval(&ERFCX, ERFCX_K0, ERFCX_M, x);
     if x < super::fit::pow2(ERFCX_K0) {
-        1.0 - 2.0 * x / SQRT_PI
+        1.0 - std::f64::consts::FRAC_2_SQRT_PI * x
     } else {
         table
     }
