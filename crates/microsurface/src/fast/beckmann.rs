@@ -258,11 +258,12 @@ fn visible11(a: f64, t: f64, u: [f64; 2]) -> (f64, f64) {
 }
 
 /// u₁ ∈ [2^−11, 1 − 2^−21] (the guess table's range: 5e-4 of the draws fall outside) and
-/// a ≤ 1e300 (so that a times the powers of |X₀| < 6 in [`visible_x_hot`] stays finite):
-/// the one-step path. False for NaN and a = ∞.
+/// 0 ≤ a ≤ 1e300 (so that a times the powers of |X₀| < 6 in [`visible_x_hot`] stays finite;
+/// a negative a, out of contract, is taken as 0 by the loop): the one-step path. False for
+/// NaN and a = ∞.
 #[inline(always)]
 fn hot(a: f64, u: f64) -> bool {
-    (U_LO..=U_HI).contains(&u) && a <= 1e300
+    (U_LO..=U_HI).contains(&u) && (0.0..=1e300).contains(&a)
 }
 
 /// The ends of [`hot`]'s range of u₁, 2^−11 and 1 − 2^−21.

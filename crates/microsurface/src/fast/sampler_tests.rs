@@ -181,6 +181,14 @@ fn beckmann_one_step_warp() {
             es = es.max(d.abs() * density / (f64::EPSILON * z));
         }
     }
+    // A negative a (out of contract) is the loop's a = 0.
+    for u in [0.3, 0.7] {
+        let (x, x0) = (
+            beckmann::sample_visible11(-1.0, [u, 0.5]).0,
+            beckmann::sample_visible11(0.0, [u, 0.5]).0,
+        );
+        assert!((x - x0).abs() < 1e-14, "{x} {x0}");
+    }
     println!(
         "Beckmann warp: guess {eg:.2e} of min(1, X + a), one step {es:.2} ε·Z/N′ from the loop"
     );
