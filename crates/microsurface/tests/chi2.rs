@@ -23,7 +23,7 @@ const ALPHAS: [f64; 4] = [0.05, 0.3, 1.0, 2.0];
 const INCIDENCE_DEG: [f64; 4] = [0.0, 45.0, 80.0, 89.0];
 /// Upper bound on the number of tests in this file (for the Šidák correction).
 /// (The last terms: the family sweep, 96; the heavy-tail cases, 3; the posterior's range
-/// ends, 8.)
+/// ends, 8; the fast Beckmann warp, 4 × 4 × 3 in the sweep and 2 × 4 in the subset.)
 const TESTS: usize = 4 * 4 * 2 * (4 + 1)
     + 4 * 5
     + 4 * 3
@@ -36,7 +36,9 @@ const TESTS: usize = 4 * 4 * 2 * (4 + 1)
     + 12 * 2 * 4
     + 96
     + 3
-    + 8;
+    + 8
+    + 4 * 4 * 3
+    + 2 * 4;
 
 fn direction(deg: f64) -> Vec3 {
     let t = deg.to_radians();
@@ -346,6 +348,80 @@ fn fast_subset() {
         run_stretched(kind, 0.3, 0.3, Some(45.0), samples(kind));
         run_stretched(kind, 0.5, 0.1, Some(80.0), samples(kind));
     }
+}
+
+/// The fast Beckmann visible normals (`Microfacet`'s warp: the table guess and one step of
+/// order five, issue 35; and the wavefront slice's lanes) against max(0, wi·m) D(m)/σ(wi) of
+/// the exact path: a subset here, the whole grid in [`fast_beckmann_visible_sweep`].
+#[test]
+fn fast_beckmann_visible() {
+    for (ax, ay) in [(0.3, 0.3), (0.5, 0.1)] {
+        run_fast_beckmann(ax, ay, 45.0, true);
+        run_fast_beckmann(ax, ay, 89.0, false);
+    }
+}
+
+/// [`fast_beckmann_visible`] over four roughnesses (anisotropic among them) and four
+/// incidences, normal and grazing included, f64, f32 and the slice.
+#[test]
+#[ignore = "full sweep: run by .ci/run with --ignored"]
+fn fast_beckmann_visible_sweep() {
+    let mut cases = Vec::new();
+    for (ax, ay) in [(0.05, 0.05), (0.3, 0.3), (0.5, 0.1), (1.0, 2.0)] {
+        for deg in INCIDENCE_DEG {
+            cases.push((ax, ay, deg));
+        }
+    }
+    on_every_core(&cases, |&(ax, ay, deg)| {
+        run_fast_beckmann(ax, ay, deg, true)
+    });
+}
+
+/// χ² of the fast Beckmann sampler at (αx, αy) and θi in f64, and with `all` in f32 and
+/// through the f64 slice (one element a call: the lanes' arithmetic, not their speed).
+fn run_fast_beckmann(ax: f64, ay: f64, deg: f64, all: bool) {
+    use microsurface::fast::batch::{beckmann_sample_visible_f64, Vectors, VectorsMut};
+    use microsurface::Beckmann;
+    let m = Exact::new(NdfKind::Beckmann, ax, ay, None).unwrap();
+    let coords = reference(ax, ay);
+    let fast = Microfacet::<f64, Beckmann>::new(ax, ay).unwrap();
+    let fast32 = Microfacet::<f32, Beckmann>::new(ax as f32, ay as f32).unwrap();
+    let wi = direction(deg);
+    let seed = 35 + ((ax * 1e3) as u64 ^ (((ay * 1e5) as u64) << 8) ^ ((deg as u64) << 20));
+    let n = samples(NdfKind::Beckmann);
+    let label = |what: &str| format!("fast Beckmann{what} α=({ax},{ay}) visible θi={deg}°");
+    check_visible(&label(""), &m, wi, &coords, n, seed, |u| {
+        fast.sample_wm(wi.into(), u).into()
+    });
+    if !all {
+        return;
+    }
+    let w32 = [wi.x as f32, wi.y as f32, wi.z as f32];
+    check_visible(&label(" f32"), &m, wi, &coords, n, seed + 1, |u| {
+        let n = fast32.sample_wm(w32, [u[0] as f32, u[1] as f32]);
+        // (The harness asks for unit length to 1e-9; an f32 normal is unit to its
+        // rounding, ~6e-8.)
+        Vec3::new(n[0] as f64, n[1] as f64, n[2] as f64).normalize()
+    });
+    check_visible(&label(" slice"), &m, wi, &coords, n, seed + 2, |u| {
+        let (mut x, mut y, mut z) = ([0.0], [0.0], [0.0]);
+        beckmann_sample_visible_f64(
+            &fast,
+            Vectors {
+                x: &[wi.x],
+                y: &[wi.y],
+                z: &[wi.z],
+            },
+            &[u[0]],
+            &[u[1]],
+            VectorsMut {
+                x: &mut x,
+                y: &mut y,
+                z: &mut z,
+            },
+        );
+        Vec3::new(x[0], y[0], z[0])
+    });
 }
 
 #[test]

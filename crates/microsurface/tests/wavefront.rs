@@ -63,8 +63,10 @@ fn close(a: f64, b: f64, tol: f64) -> bool {
     (a == b) || (a.is_nan() && b.is_nan()) || (a - b).abs() <= tol * a.abs().max(b.abs())
 }
 
-/// GGX and Beckmann visible normals: the slice against `sample_wm`, per element (GGX:
-/// components within `tol`, the f32 azimuth polynomial; Beckmann: the same bits).
+/// GGX and Beckmann visible normals: the slice against `sample_wm`, per element, components
+/// within `tol` (GGX: the f32 azimuth polynomial; Beckmann: the slices' e^x from
+/// `fast::arith` where the scalar sampler calls libm, ~1e-16 apart in x̃, which the f32
+/// normal rounds away or onto the neighbouring f32).
 macro_rules! vndf_test {
     ($name:ident, $F:ty, $ggx:path, $beckmann:path, $tol:expr) => {
         #[test]
@@ -119,13 +121,6 @@ macro_rules! vndf_test {
                                 g.sample_wm(wi, ui)
                             };
                             let got = [out[0][i], out[1][i], out[2][i]];
-                            if beckmann {
-                                assert_eq!(
-                                    got.map(|x| x.to_bits()),
-                                    want.map(|x| x.to_bits()),
-                                    "Beckmann {simd:?} at {i}"
-                                );
-                            }
                             for c in 0..3 {
                                 let (a, e) = (got[c] as f64, want[c] as f64);
                                 assert!(

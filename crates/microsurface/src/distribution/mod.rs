@@ -177,7 +177,7 @@ pub trait MicrofacetDistribution<F: Real> {
     /// [`MicrofacetDistribution::sample_wm`] (above) or a rejection from the mirror image (below):
     /// all exact, so the mixture is too. Provided: GGX (its spherical cap covers v.z < 0 as
     /// it is: Dupuy & Benyoub 2023, the cap z ∈ [−v.z, 1] of the stretched v), Beckmann (the
-    /// visible slope by rejection on both sides, four times cheaper than its warp above)
+    /// visible slope by rejection on both sides, cheaper than its warp above)
     /// and Double GGX (the mixing variable by rejection, then GGX's cap).
     #[inline]
     fn sample_wm_stream(&self, v: [F; 3], uniform: &mut dyn FnMut() -> F) -> Option<[F; 3]> {

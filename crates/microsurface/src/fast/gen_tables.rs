@@ -1,8 +1,8 @@
 //! Generates `src/fast/tables.rs`, the octave tables of the fast Double GGX and Exponential Λ
 //! (Chebyshev interpolation of the exact, reference-checked Λ), of erfcx and erfinv (for the
-//! fast Beckmann Λ and sampler), and the initial-guess grid of the fast Beckmann visible-normal
-//! sampler (the exact sampler's quantiles), and reports the fit errors measured between the
-//! nodes:
+//! fast Beckmann Λ and sampler) and the ziggurats' layers, and reports the fit errors measured
+//! between the nodes (the fast Beckmann visible-normal warp's own tables come from
+//! `scripts/beckmann_vndf_tables.py`):
 //!
 //! ```text
 //! cargo test --release -p microsurface --lib gen_tables -- --ignored --nocapture
@@ -81,33 +81,6 @@ fn bisect(below: impl Fn(f64) -> bool, mut lo: f64, mut hi: f64) -> f64 {
             hi = mid;
         }
     }
-}
-
-/// The grid of `fast::beckmann`'s visible sampler: the exact x̃-quantile at t = 1/(1 + a) =
-/// i/T and u = j/U (j clamped to 1..U−1, since the ends are −a and ∞), t = 0 being normal
-/// incidence (erfinv(2u − 1)).
-fn beckmann_guess(out: &mut String) {
-    use crate::fast::beckmann::{GUESS_T, GUESS_U};
-    writeln!(out, "/// Beckmann visible x̃-quantile at t = 1/(1 + cot θ) = i/{GUESS_T}, u = j/{GUESS_U} (end columns repeat their neighbours), row-major in t.").unwrap();
-    writeln!(
-        out,
-        "pub static BECKMANN_GUESS: [f32; {}] = [",
-        (GUESS_T + 1) * (GUESS_U + 1)
-    )
-    .unwrap();
-    for i in 0..=GUESS_T {
-        let t = i as f64 / GUESS_T as f64;
-        let a = if i == 0 { f64::INFINITY } else { (1.0 - t) / t };
-        let row: Vec<String> = (0..=GUESS_U)
-            .map(|j| {
-                let u = j.clamp(1, GUESS_U - 1) as f64 / GUESS_U as f64;
-                let x = crate::UnitSlopes::Beckmann.sample(a, [u, 0.5]).0;
-                format!("{:e}", x as f32)
-            })
-            .collect();
-        writeln!(out, "    {},", row.join(", ")).unwrap();
-    }
-    writeln!(out, "];").unwrap();
 }
 
 /// The layers of a 256-layer ziggurat (Marsaglia and Tsang 2000) for the decreasing density
@@ -380,8 +353,6 @@ fn gen_tables() {
         (-30, 10, 3),
         erfinv_ratio,
     );
-    out.push('\n');
-    beckmann_guess(&mut out);
     out.push('\n');
     // Exp(1) and the half-normal |N(0, 1)| for the fast samplers' variates (`fast::ziggurat`).
     let z1 = ziggurat(
