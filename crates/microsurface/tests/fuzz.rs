@@ -30,9 +30,10 @@
 //! `MICROSURFACE_FUZZ_SCALE` (default 1: 7.8·10⁶ evaluations in 32 to 35 s on two shared
 //! cores in release, 2026-11-27) multiplies every count; `MICROSURFACE_FUZZ_SCALE=14` makes
 //! 1.09·10⁸ in 544 s (727 s with more builds sharing the cores). At that scale one check
-//! fails that the default scale does not reach: `isotropic_samplers`' Student-T at
-//! γ = 1.5 + 1e-9, α = 7e4, whose exact visible pdf is +∞ at a normal of z = 1.4e-305 where
-//! D overflows and the pdf, about 1e296, does not (reported with issue 34, not fixed here).
+//! failed that the default scale does not reach: `isotropic_samplers`' Student-T at
+//! γ = 1.5 + 1e-9, α = 7e4, whose exact visible pdf was +∞ at a normal of z = 1.4e-305 where
+//! D overflows and the pdf, about 1e296, does not; fixed (the density from D cos θm there),
+//! with its regression in tests/hardening.rs.
 //! `MICROSURFACE_FUZZ_SEED` changes the seed.
 
 mod common;

@@ -15,7 +15,9 @@ use microsurface::bsdf::fresnel::{conductor, f82_tint};
 use microsurface::bsdf::Bsdf;
 use microsurface::scattering::table::{Grid, Material, Method, Spec};
 use microsurface::scattering::{CompensatedConductor, CompensatedDielectric, Scheme};
-use microsurface::{AnyMicrofacet, BesselK, Ei, Ggx, Microfacet, MicrofacetDistribution, NdfKind};
+use microsurface::{
+    AnyMicrofacet, BesselK, Ei, Exact, Ggx, Microfacet, MicrofacetDistribution, NdfKind,
+};
 
 /// The sample's pdf is the density at the unit w, whatever w's length (1: the door's
 /// samplers took the pdf at the w they were given, 0 at 5e299 and 1.42 at 5e-300).
@@ -865,4 +867,27 @@ fn walk_bsdf_f32_horizon() {
         [-0.73614454, -0.67682433, -1e-40],
     );
     assert!(f.iter().all(|x| x.is_finite() && *x >= 0.0), "{f:?}");
+}
+
+/// The exact visible density where D overflows and the density does not (the fuzz suite's
+/// one failure at scale 14): Student-T at γ = 1.5 + 1e-9, α = 7e4 grows like
+/// D ~ u^{2γ−4} toward the horizon, past f64::MAX at cos θm = 1.4e-305 while
+/// G1 D (w·m)/cos θo is about 1e296. Checked against the same density at cos θm = 1.4e-300
+/// (D finite there), which it must exceed by the factor 1e5^{4−2γ} (w·m moves by 1e-300).
+#[test]
+fn exact_visible_pdf_where_d_overflows() {
+    let g = 1.5 + 1e-9;
+    let e = Exact::new(NdfKind::StudentT, 7e4, 7e4, Some(g)).unwrap();
+    let w = [0.6, 0.0, 0.8];
+    let far = e.pdf(w, [1.0, 0.0, 1.4e-305]);
+    let near = e.pdf(w, [1.0, 0.0, 1.4e-300]);
+    assert!(
+        far.is_finite() && near.is_finite() && near > 0.0,
+        "{far} {near}"
+    );
+    let want = 1e5f64.powf(4.0 - 2.0 * g);
+    assert!(
+        (far / near / want - 1.0).abs() < 1e-6,
+        "{far} {near} {want}"
+    );
 }

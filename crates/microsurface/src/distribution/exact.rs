@@ -177,7 +177,15 @@ impl MicrofacetDistribution<f64> for Exact {
             };
         }
         let s = self.surface();
-        c * s.d(wm) / s.sigma(w)
+        let d = s.d(wm);
+        if d.is_finite() {
+            return c * d / s.sigma(w);
+        }
+        // D overflows toward the horizon where it grows there (Student-T at γ < 2: D ~
+        // u^{2γ−4}) while the density does not: c · D cos θm/σ/cos θm, D cos θm from
+        // the D·cos density, which such an NDF forms without the overflow (divided by
+        // cos θm last: c/cos θm alone can overflow).
+        c * s.pdf_dcos(wm) / s.sigma(w) / wm.z
     }
     /// As the trait's, for wm of any finite nonzero length (normalised here).
     fn pdf_dcos(&self, wm: [f64; 3]) -> f64 {

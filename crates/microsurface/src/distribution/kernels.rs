@@ -487,6 +487,23 @@ impl Microsurface for Shaped {
         self.stretched().d_with(wm, |u| self.unit.d(u))
     }
 
+    fn pdf_dcos(&self, wm: Vec3) -> f64 {
+        // D cos θm where D itself overflows toward the horizon (Student-T at γ < 2, D ~
+        // z^{2γ−4}): the slopes' form with one power of z fewer, in logarithms there.
+        let m = wm.to_unit();
+        if m.z > 0.0 {
+            let s = crate::math::vec3::hypot(m.x / self.alpha_x, m.y / self.alpha_y);
+            if m.z < 1e-150 * s {
+                return self
+                    .unit
+                    .d_cos_k_stretched(m.into(), self.alpha_x, self.alpha_y, 1);
+            }
+        } else {
+            return if m.z.is_nan() { m.z } else { 0.0 };
+        }
+        self.d(m) * m.z
+    }
+
     fn lambda(&self, w: Vec3) -> f64 {
         // From the stretched vector's cot θ = z/|(αx x, αy y)| where the member has Λ of cot θ
         // (the Beckmann mixtures): through the cosine, 1 − u² near the normal carries u's

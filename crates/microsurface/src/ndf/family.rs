@@ -372,17 +372,23 @@ impl AnyNdf {
     /// range), f(X)/(αx αy z⁴) in logarithms from ln X ([`AnyNdf::ln_f_far`]: Student-T's
     /// power law, whose next term γ(γ − 1)/X² ≤ 1e-18 there; 0 for the exponential tails).
     pub(crate) fn d_stretched(&self, wm: [f64; 3], ax: f64, ay: f64) -> f64 {
+        self.d_cos_k_stretched(wm, ax, ay, 0)
+    }
+
+    /// D(m) cos^k θm as [`AnyNdf::d_stretched`] forms D: k = 1 is the D·cos density, finite
+    /// where D overflows toward the horizon (Student-T at γ < 2).
+    pub(crate) fn d_cos_k_stretched(&self, wm: [f64; 3], ax: f64, ay: f64, k: i32) -> f64 {
         let z = wm[2];
         let s = crate::math::vec3::hypot(wm[0] / ax, wm[1] / ay);
         if s >= 1e15 * z {
             return match self.ln_f_far(s.ln() - z.ln()) {
-                Some(lf) => (lf - (ax * ay).ln() - 4.0 * z.ln()).exp(),
+                Some(lf) => (lf - (ax * ay).ln() - f64::from(4 - k) * z.ln()).exp(),
                 None => 0.0,
             };
         }
         let (gx, gy) = (wm[0] / (ax * z), wm[1] / (ay * z));
         let z2 = z * z;
-        self.p22(gx, gy) / (ax * ay * z2 * z2)
+        self.p22(gx, gy) * z.powi(k) / (ax * ay * z2 * z2)
     }
 
     /// Λ at x = cot θ/α given directly (not through a rounded cosine, whose rounding moves Λ
