@@ -80,13 +80,14 @@ pub(crate) fn lambda_x(x: f64) -> f64 {
     if x * x > EXP_UNDERFLOW {
         return 0.0;
     }
-    crate::math::quad::integrate(
-        |m| crate::ndf::beckmann::lambda_at(x / m.sqrt()),
+    // m = 1/(1 + v): the weight's e^{−x²/m} becomes e^{−x²} times a decay of scale
+    // 1/x² in v, which a fixed rule resolves at its level (math::smith::SMITH_LEVEL).
+    crate::math::quad::to_inf_fixed(
+        |v| crate::ndf::beckmann::lambda_at(x * (1.0 + v).sqrt()) / ((1.0 + v) * (1.0 + v)),
         0.0,
-        1.0,
-        1e-14,
+        1.0 / (x * x),
+        crate::math::smith::SMITH_LEVEL,
     )
-    .value
 }
 
 impl Ndf for Ei {
