@@ -131,6 +131,9 @@ pub fn cot_theta(u: f64) -> f64 {
 mod fixed_rule {
     use super::*;
 
+    /// A radial density of the offset d at a (factored at a), and the map's scale at a.
+    type Case = (Box<dyn Fn(f64, f64) -> f64>, Box<dyn Fn(f64) -> f64>);
+
     /// The fixed rule at SMITH_LEVEL against the adaptive rule at 1e-13, over a ∈ [1e-6 α,
     /// 1e3 α]: the Exponential NDF's e^{−2r/α} and GTR's radial P22 for α from 1e-3 to 100
     /// and γ from 0.6 to 50 (measured: within 5.4e-14; one level coarser, 1e-8).
@@ -139,7 +142,7 @@ mod fixed_rule {
         let mut worst = 0.0f64;
         for alpha in [1e-3, 0.3, 1.0, 3.0, 100.0] {
             let exponential = move |_a: f64, d: f64| (-2.0 * d / alpha).exp();
-            let mut cases: Vec<(Box<dyn Fn(f64, f64) -> f64>, Box<dyn Fn(f64) -> f64>)> =
+            let mut cases: Vec<Case> =
                 vec![(Box::new(exponential), Box::new(move |_| 0.5 * alpha))];
             for g in [0.6, 1.2, 1.7, 3.0, 10.0, 50.0] {
                 let a2 = alpha * alpha;
