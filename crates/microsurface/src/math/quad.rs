@@ -1,6 +1,9 @@
 //! Numerical quadrature: double-exponential (tanh-sinh) rules, used by the exact numerical
-//! quantities (GTR Λ, σ, P2 for general γ; the Exponential NDF's Λ and σ; Double GGX P2) and by
-//! the identity checks in [`crate::check::verify`].
+//! quantities (GTR Λ, σ, P2 for general γ; the Exponential NDF's Λ and σ; Double GGX P2; the
+//! family's Λ where it has no closed form) and by the identity checks in
+//! [`crate::check::verify`]. Λ, G1 and σ, which sweeps call most, take fixed rules
+//! ([`to_inf_fixed`], [`integrate_fixed`], [`to_inf_fixed_peaked`]) at a level each caller
+//! has measured against the adaptive rule, instead of the adaptive rule per call.
 //!
 //! Tanh-sinh (Takahasi & Mori 1974; Bailey, Jeyabalan & Li 2005) converges double-exponentially
 //! for integrands analytic in the open interval, even with integrable end-point singularities,

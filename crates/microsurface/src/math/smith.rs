@@ -1,5 +1,6 @@
 //! Numerical Smith integrals for isotropic NDFs whose Λ has no closed form (GTR for general γ,
-//! the Exponential NDF), and the projected-area ("delta") kernel used by the checks.
+//! the Exponential NDF; the generalised exponential through [`kernel`]), and the
+//! projected-area ("delta") kernel used by the checks.
 //!
 //! With a = cot θ and the slope density written radially, P22(p, q) = P(r), r² = p² + q²,
 //!

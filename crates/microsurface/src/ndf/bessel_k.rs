@@ -20,10 +20,12 @@
 //! where Q > ½ (where 1 − Q would cancel), come from the superposition, as the Gamma(a)
 //! average of a Beckmann closed form (σ, and so Λ(u) = σ(−u)/u at fixed u, are linear in D):
 //! Λ = E[Λ_Beckmann(cot θ/(α√m))], 1 − Q = E[1 − e^{−x²/m}]: one tanh-sinh quadrature over m
-//! (relative tolerance 1e-14) of a positive integrand, with the quadrature's scale at the
-//! integrand's peak m* (the root of (a − 1 − k)/m − 1 + x²/m² = 0 for an integrand
-//! ~ m^{a−1−k} e^{−m − x²/m}); the identity checks compare P22, P2 and Q with the same
-//! averages (`microsurface verify`).
+//! of a positive integrand, with the quadrature's scale at the integrand's peak m* (the root
+//! of (a − 1 − k)/m − 1 + x²/m² = 0 for an integrand ~ m^{a−1−k} e^{−m − x²/m}; in t = m^a
+//! for a < 1, with a − 1 dropped). Λ for a ≥ 0.35 by fixed rules of step 2⁻⁵ split at the
+//! peak (no adaptive refinement; within 3.5e-14 of the adaptive rule), else and for 1 − Q the
+//! adaptive rule (relative tolerance 1e-14); the identity checks compare P22, P2 and Q with
+//! the same averages (`microsurface verify`).
 //!
 //! **Parameters.** α ∈ [1e-6, 1e6], a ∈ [0.1, 100]. Below a = 0.1 the Gamma weight puts
 //! 1 − 10^{−30a} of its mass below m = 1e-30 (a spike that no longer tests anything a
