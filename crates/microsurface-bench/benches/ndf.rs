@@ -176,6 +176,11 @@ fn main() {
         samplers_vs_c(&i, big);
         return;
     }
+    if std::env::var("MICROSURFACE_BENCH").as_deref() == Ok("exact") {
+        // The exact path's Λ, G1 and σ(−u) of every NDF (issue 35, target 6).
+        exact_path(&i);
+        return;
+    }
     if std::env::var("MICROSURFACE_BENCH").as_deref() == Ok("walk") {
         // Only the microsurface random walk.
         walks(&i);
@@ -1742,4 +1747,50 @@ fn samplers_vs_c(i: &Inputs, calls: usize) {
             .pdf(w32[k], black_box(wm32[k])) as f64
     });
     door!(Beckmann, "Beckmann");
+}
+
+/// µs a call of the exact (research) path's Λ, G1 and σ(−u) for every NDF, the material built
+/// per call (as a sweep over α does), at random α ∈ [0.05, 1], u ∈ [0.02, 0.99] and the
+/// shapes listed; GGX's closed form as the baseline.
+fn exact_path(i: &Inputs) {
+    use microsurface::{AnyNdf, NdfKind::*};
+    let cases: [(microsurface::NdfKind, Option<f64>); 16] = [
+        (Ggx, None),
+        (Beckmann, None),
+        (DoubleGgx, None),
+        (Exponential, None),
+        (Gtr, Some(1.5)),
+        (Gtr, Some(0.7)),
+        (Gtr, Some(3.3)),
+        (StudentT, Some(2.5)),
+        (StudentT, Some(30.0)),
+        (Ei, None),
+        (Erfc, None),
+        (K0, None),
+        (BesselK, Some(0.4)),
+        (BesselK, Some(3.0)),
+        (GenExponential, Some(0.4)),
+        (GenExponential, Some(8.0)),
+    ];
+    println!(
+        "{:36} {:>10} {:>10} {:>10}",
+        "exact path, µs a call", "Λ", "G1", "σ(−u)"
+    );
+    for (kind, shape) in cases {
+        let calls = if kind == GenExponential { 100 } else { 2_000 };
+        let ndf = |k: usize| AnyNdf::new(kind, i.alpha[k], shape).unwrap();
+        let l = time(calls, |k| ndf(k).lambda(black_box(i.u[k])));
+        let g = time(calls, |k| ndf(k).g1(black_box(i.u[k])));
+        let s = time(calls, |k| ndf(k).sigma(-black_box(i.u[k])));
+        let name = match shape {
+            Some(x) => format!("{kind} {x}"),
+            None => kind.to_string(),
+        };
+        println!(
+            "{name:36} {:10.2} {:10.2} {:10.2}",
+            l * 1e-3,
+            g * 1e-3,
+            s * 1e-3
+        );
+    }
 }

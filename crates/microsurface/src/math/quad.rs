@@ -1,6 +1,9 @@
 //! Numerical quadrature: double-exponential (tanh-sinh) rules, used by the exact numerical
-//! quantities (GTR Λ, σ, P2 for general γ; the Exponential NDF's Λ and σ; Double GGX P2) and by
-//! the identity checks in [`crate::check::verify`].
+//! quantities (GTR Λ, σ, P2 for general γ; the Exponential NDF's Λ and σ; Double GGX P2; the
+//! family's Λ where it has no closed form) and by the identity checks in
+//! [`crate::check::verify`]. Λ, G1 and σ, which sweeps call most, take fixed rules
+//! ([`to_inf_fixed`], [`integrate_fixed`], [`to_inf_fixed_peaked`]) at a level each caller
+//! has measured against the adaptive rule, instead of the adaptive rule per call.
 //!
 //! Tanh-sinh (Takahasi & Mori 1974; Bailey, Jeyabalan & Li 2005) converges double-exponentially
 //! for integrands analytic in the open interval, even with integrable end-point singularities,
@@ -178,35 +181,113 @@ fn tanh_sinh_sub(
     }
 }
 
-/// ∫_a^b f(x) dx by the tanh-sinh rule of step 2^−level without refinement (about
+/// ∫_a^b f(x) dx by the tanh-sinh rule of step 2^−level without refinement (at most
 /// 2^{level+3} + 1 nodes): for integrands that are smooth, or have end-point singularities, but
 /// may have a kink inside (where the adaptive rule would refine for nothing), when a relative
-/// accuracy of about 1e-6 is enough (the χ² harness's expected counts).
+/// accuracy of about 1e-6 is enough (the χ² harness's expected counts), or where the caller
+/// knows the level that suffices (the exact Λ of the NDFs without a closed form). Each side
+/// of t = 0 is summed outward and stops after three consecutive terms below 1e-18 of the sum
+/// (the integrand has decayed past what the sum can hold); at most |t| ≤ 4.
 pub fn integrate_fixed(f: impl Fn(f64) -> f64, a: f64, b: f64, level: u32) -> f64 {
-    let level = level.min(MAX_LEVEL);
     let half = 0.5 * (b - a);
-    let stride = 1usize << (MAX_LEVEL - level);
-    let mut sum = 0.0;
-    // The cached nodes (`nodes`) at every stride-th position, t ≥ 0 and its mirror.
-    let reach = ((T_MAX as usize) << MAX_LEVEL) + 1;
-    for (i, node) in nodes()[..reach].iter().step_by(stride).enumerate() {
-        let (dist, w) = (2.0 * half * node.dist, half * node.w);
-        if !(w > 0.0 && dist > 0.0) {
-            continue;
-        }
-        let sides: &[f64] = if i == 0 {
-            &[a + dist]
-        } else {
-            &[a + dist, b - dist]
-        };
-        for &x in sides {
-            let v = f(x) * w;
-            if v.is_finite() {
-                sum += v;
+    let nodes = nodes();
+    fixed_sum(
+        |j, upper| {
+            let Node { dist, w } = nodes[j];
+            let (dist, w) = (2.0 * half * dist, half * w);
+            if !(w > 0.0 && dist > 0.0) {
+                return 0.0;
             }
+            let v = f(if upper { b - dist } else { a + dist }) * w;
+            if v.is_finite() {
+                v
+            } else {
+                0.0
+            }
+        },
+        level,
+    )
+}
+
+/// Σ of a tanh-sinh rule's terms at step 2^−level, `term(j, upper)` the term at t = ±j
+/// 2^−MAX_LEVEL (upper: t > 0): the centre, then each side outward until three consecutive
+/// terms fall below 1e-18 of the sum (the integrand has decayed past what the sum can hold),
+/// at most |t| ≤ 4; times the step.
+fn fixed_sum(term: impl Fn(usize, bool) -> f64, level: u32) -> f64 {
+    let level = level.min(MAX_LEVEL);
+    let stride = 1usize << (MAX_LEVEL - level);
+    let reach = (T_MAX as usize) << MAX_LEVEL;
+    let mut sum = term(0, true);
+    for upper in [false, true] {
+        let mut small = 0;
+        let mut j = stride;
+        let mut side = 0.0;
+        while j <= reach {
+            let v = term(j, upper);
+            side += v;
+            if v.abs() <= 1e-18 * (sum + side).abs() {
+                small += 1;
+                if small == 3 {
+                    break;
+                }
+            } else {
+                small = 0;
+            }
+            j += stride;
         }
+        sum += side;
     }
     sum * 0.5f64.powi(level as i32)
+}
+
+/// ∫_a^∞ f(x) dx by the tanh-sinh rule of step 2^−level under the map of [`integrate_to_inf`]
+/// (x = a + L s/(1 − s)), without refinement: a fixed rule for integrands whose caller has
+/// scaled the map to them (L where the integrand changes character), so that one level is
+/// known to suffice (the exact Λ of the NDFs without a closed form: `math::smith`). Summed as
+/// [`integrate_fixed`] is.
+pub fn to_inf_fixed(f: impl Fn(f64) -> f64, a: f64, scale: f64, level: u32) -> f64 {
+    let nodes = nodes();
+    fixed_sum(
+        |j, toward_inf| {
+            let Node { dist, w } = nodes[j];
+            // s on [0, 1] at distance `dist` from its nearer end: s = dist toward a, 1 − dist
+            // toward ∞; x = a + L s/(1 − s), dx = L/(1 − s)² ds.
+            let (s, sc) = if toward_inf {
+                (1.0 - dist, dist)
+            } else {
+                (dist, 1.0 - dist)
+            };
+            if !(w > 0.0 && sc > 0.0 && s > 0.0) {
+                return 0.0;
+            }
+            let v = f(a + scale * s / sc) * (0.5 * w) * scale / (sc * sc);
+            if v.is_finite() {
+                v
+            } else {
+                0.0
+            }
+        },
+        level,
+    )
+}
+
+/// ∫₀^∞ f(x) dx for a positive integrand with one peak at x = `peak` > 0, by fixed rules of
+/// step 2^−level split there: [0, peak] (tanh-sinh clusters its nodes at the peak, an end
+/// point) and [peak, ∞) under [`to_inf_fixed`]'s map scaled to the peak's width, estimated
+/// from the curvature of ln f at the peak (three more evaluations; the peak itself where the
+/// curvature says nothing). A peak far from the origin and narrow against its distance (a
+/// mixture's weight times e^{−x²/m} at large x) is a feature one fixed rule over the whole
+/// half line would not resolve.
+pub fn to_inf_fixed_peaked(f: impl Fn(f64) -> f64, peak: f64, level: u32) -> f64 {
+    let h = 0.1;
+    let (f0, fp, fm) = (f(peak), f(peak * (1.0 + h)), f(peak * (1.0 - h)));
+    let c2 = (fp.ln() + fm.ln() - 2.0 * f0.ln()) / ((h * peak) * (h * peak));
+    let width = if c2 < 0.0 && c2.is_finite() {
+        (1.0 / (-c2).sqrt()).min(peak)
+    } else {
+        peak
+    };
+    integrate_fixed(&f, 0.0, peak, level) + to_inf_fixed(&f, peak, width, level)
 }
 
 /// The tanh-sinh rule of step 2^−level on [0, 1] from the cached nodes (`nodes`): (distance

@@ -121,6 +121,16 @@ pub(crate) fn lambda_at(a: f64) -> f64 {
     if a == f64::INFINITY {
         return 0.0;
     }
+    if a >= 2.0 {
+        // As `lambda_of`, with r(a) = k/(a + k) from the fast path's table (within 3.6e-15 of
+        // the continued fraction on [2, 32), tests in ndf::erfc; the fraction costs ~50
+        // divisions at a = 2, the mixtures evaluate this at every node).
+        let a2 = Dd::mul_f(a, a);
+        if a2.hi > EXP_UNDERFLOW {
+            return 0.0;
+        }
+        return a2.exp_neg() * crate::fast::beckmann::erfc_ratio(a) / (2.0 * a * SQRT_PI);
+    }
     lambda_of(a, Dd::mul_f(a, a))
 }
 

@@ -80,13 +80,21 @@ pub(crate) fn lambda_x(x: f64) -> f64 {
     if x * x > EXP_UNDERFLOW {
         return 0.0;
     }
-    crate::math::quad::integrate(
-        |m| crate::ndf::beckmann::lambda_at(x / m.sqrt()),
+    // m = 1/(1 + v): Λ_B(z) = e^{−z²} r(z)/(2√π z) at z² = x²(1 + v) is e^{−x²} (once, in
+    // double-double) times e^{−x² v}, a decay of scale 1/x² in v that a fixed rule resolves
+    // at its level (math::smith::SMITH_LEVEL); r from the fast path's table (within 3.6e-15).
+    let x2 = Dd::mul_f(x, x);
+    let sum = crate::math::quad::to_inf_fixed(
+        |v| {
+            let z = x * (1.0 + v).sqrt();
+            let e = (-(x2.hi * v)).exp();
+            e * crate::fast::beckmann::erfc_ratio(z) / (z * (1.0 + v) * (1.0 + v))
+        },
         0.0,
-        1.0,
-        1e-14,
-    )
-    .value
+        1.0 / x2.hi,
+        crate::math::smith::SMITH_LEVEL,
+    );
+    x2.exp_neg() * sum / (2.0 * SQRT_PI)
 }
 
 impl Ndf for Ei {

@@ -7,7 +7,7 @@
 //!
 //! Λ and σ: the page says they are not known analytically; derivations.md A.14 derives
 //! Λ = (2K₁(z) − Ki₁(z))/π, z = 2 cot θ/α (Ki₁ the Bickley function). We compute them exactly
-//! by the Smith integral of `smith` (tanh-sinh quadrature with e^{−2a/α} factored out,
+//! by the Smith integral of `smith` (a fixed tanh-sinh rule with e^{−2a/α} factored out,
 //! relative tolerance 1e-13; documented accuracy 1e-10, measured ≤ 1e-13 against mpmath).
 //!
 //! The page's approximations are kept, under their own names, in [`approx`].

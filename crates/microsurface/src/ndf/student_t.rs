@@ -187,8 +187,21 @@ impl StudentT {
         // Smith: Λ = (1/μ) ∫_0^∞ d P2(μ + d) dd, μ = ζ √c.
         let sc = self.c.sqrt();
         let mu = zeta * sc;
-        crate::math::quad::integrate_to_inf(|d| d * self.p2(mu + d), 0.0, self.alpha, 1e-14).value
-            / mu
+        // A fixed rule scaled to P2's decay length at μ (α near the peak, ~ c/((2γ + 1) μ)
+        // in the tail), from the slope of ln P2 there.
+        let step = 1e-3 * self.alpha;
+        let slope = (self.p2(mu).ln() - self.p2(mu + step).ln()) / step;
+        let scale = if slope > 0.0 {
+            self.alpha.min(1.0 / slope)
+        } else {
+            self.alpha
+        };
+        crate::math::quad::to_inf_fixed(
+            |d| d * self.p2(mu + d),
+            0.0,
+            scale,
+            crate::math::smith::SMITH_LEVEL,
+        ) / mu
     }
 }
 
@@ -304,5 +317,43 @@ impl RadialSlopes for StudentT {
     fn slope_tail_index(&self) -> Option<f64> {
         // Q = (1 + r²/c)^{1−γ} = (c/r²)^{γ−1} (1 + O(γ c/r²)).
         Some(2.0 * (self.gamma - 1.0))
+    }
+}
+
+#[cfg(test)]
+mod fixed_rule {
+    use super::*;
+
+    /// Λ for γ > 21 by the fixed rule against the adaptive rule (the route it replaced).
+    #[test]
+    fn smith_by_the_fixed_rule_against_the_adaptive_rule() {
+        for g in [21.5, 25.0, 40.0, 70.0, 100.0] {
+            for alpha in [1e-3, 0.5, 30.0] {
+                let n = StudentT::new(alpha, g).unwrap();
+                for k in 0..200 {
+                    let u = (k as f64 + 0.5) / 200.0;
+                    let mu = crate::math::smith::cot_theta(u);
+                    let zeta = mu / n.c.sqrt();
+                    if 1.0 / (1.0 + zeta * zeta) <= SERIES_Z0_MAX {
+                        continue; // (the series' side)
+                    }
+                    let want = crate::math::quad::integrate_to_inf(
+                        |d| d * n.p2(mu + d),
+                        0.0,
+                        n.alpha,
+                        1e-14,
+                    )
+                    .value
+                        / mu;
+                    let got = n.lambda_pos(u);
+                    if want > 1e-290 {
+                        assert!(
+                            (got / want - 1.0).abs() < 1e-13,
+                            "γ={g} α={alpha} u={u}: {got} vs {want}"
+                        );
+                    }
+                }
+            }
+        }
     }
 }
