@@ -1472,8 +1472,8 @@ fn wavefront(i: &Inputs) {
             let mut loop_e = || {
                 for k in 0..LEN {
                     let (a, c) = ([wo[0][k], wo[1][k], wo[2][k]], [wi[0][k], wi[1][k], wi[2][k]]);
-                    let f = b.eval(a, c);
-                    (ox[k], oy[k], oz[k], p[k]) = (f[0], f[1], f[2], b.pdf(a, c));
+                    let (f, pdf) = b.eval_pdf(a, c);
+                    (ox[k], oy[k], oz[k], p[k]) = (f[0], f[1], f[2], pdf);
                 }
                 black_box(&ox);
             };

@@ -138,7 +138,8 @@
 //!   [`bsdf::RoughDielectric`] at any finite η > 0, 1 ± ε and 1e±6 included, every
 //!   [`bsdf::Masking`], both transports, over every NDF, f32 and f64), for unit wo, wi (on
 //!   and below the horizon, subnormal z) and uniforms in [0, 1): `eval` finite and ≥ 0
-//!   (+∞ only at a singular NDF's pole, wo and wi on the axis), `pdf` finite and ≥ 0. A
+//!   (+∞ only at a singular NDF's pole, wo and wi on the axis), `pdf` finite and ≥ 0,
+//!   `eval_pdf` the two bit for bit (every BSDF, the walk's included). A
 //!   sample is `None` or has a unit wi (1e-12, f32 1e-5) on the side its lobe names, a
 //!   finite pdf ≥ 2.2e-158 (f32 1.2e-20; a delta lobe's: its probability, ≤ 1), a finite
 //!   f ≥ 0, and a weight f|cos θi|/pdf ≤ 1 for F ≤ 1 (1/η'² for a radiance transmission)

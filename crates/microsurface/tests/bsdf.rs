@@ -21,8 +21,8 @@ use microsurface::check::chi2::{
     Coordinates, DcosCoordinates, SplitMix64,
 };
 use microsurface::{
-    Beckmann, DoubleGgx, Exact, Exponential, Ggx, Gtr, Microfacet, MicrofacetDistribution, NdfKind,
-    Real, Vec3,
+    AnyMicrofacet, Beckmann, DoubleGgx, Exact, Exponential, Ggx, Gtr, Microfacet,
+    MicrofacetDistribution, NdfKind, Real, Vec3,
 };
 
 /// Every NDF as a fast f64 material and its exact path; GTR at γ = 1.5 (isotropic only)
@@ -924,4 +924,57 @@ fn correlated_beta_albedo_is_the_walks_order_one() {
             });
         }
     }
+}
+
+/// `Bsdf::eval_pdf` is (eval, pdf) bit for bit: every NDF through the run-time door, f32 and
+/// f64, isotropic and anisotropic, a gold conductor (its override), a dielectric (the
+/// default), over random pairs of directions with the horizon and the pole among them.
+#[test]
+fn eval_pdf_is_eval_and_pdf_bit_for_bit() {
+    fn run<F: Real>() {
+        let mut rng = SplitMix64(0xe7a1_9df0);
+        let gold = fresnel::Conductor {
+            eta: [0.18, 0.42, 1.37].map(F::from_f64),
+            k: [3.42, 2.35, 1.77].map(F::from_f64),
+        };
+        let same = |a: F, b: F| a.to_f64().to_bits() == b.to_f64().to_bits();
+        for kind in NdfKind::ALL {
+            let shape = kind.shape_name().map(|n| if n == "a" { 0.7 } else { 2.5 });
+            for (ax, ay) in [(0.3, 0.3), (0.05, 0.6)] {
+                let Ok(m) = AnyMicrofacet::<F>::new(kind, F::from_f64(ax), F::from_f64(ay), shape)
+                else {
+                    continue; // (GTR is isotropic but at γ = 2)
+                };
+                let c = RoughConductor::new(m.clone(), gold);
+                let d = RoughDielectric::new(m, F::from_f64(1.5));
+                for i in 0..400 {
+                    let wo = random_direction(&mut rng);
+                    let wi = match i % 4 {
+                        0 => [-wo[0], -wo[1], wo[2]],
+                        1 => [wo[0], wo[1], 0.0],
+                        _ => random_direction(&mut rng),
+                    };
+                    let (wo, wi) = (wo.map(F::from_f64), wi.map(F::from_f64));
+                    let (f, p) = c.eval_pdf(wo, wi);
+                    let (fe, pe) = (c.eval(wo, wi), c.pdf(wo, wi));
+                    assert!(
+                        same(p, pe) && (0..3).all(|k| same(f[k], fe[k])),
+                        "{kind} {:?} {:?}",
+                        wo.map(F::to_f64),
+                        wi.map(F::to_f64)
+                    );
+                    let (f, p) = d.eval_pdf(wo, wi);
+                    let (fe, pe) = (d.eval(wo, wi), d.pdf(wo, wi));
+                    assert!(
+                        same(p, pe) && (0..3).all(|k| same(f[k], fe[k])),
+                        "{kind} {:?} {:?}",
+                        wo.map(F::to_f64),
+                        wi.map(F::to_f64)
+                    );
+                }
+            }
+        }
+    }
+    run::<f32>();
+    run::<f64>();
 }

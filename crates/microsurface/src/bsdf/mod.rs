@@ -148,6 +148,13 @@ pub trait Bsdf<F: Real> {
     fn eval(&self, wo: [F; 3], wi: [F; 3]) -> Self::Value;
     /// The density of [`Bsdf::sample`]'s wi per unit solid angle (0 for delta lobes).
     fn pdf(&self, wo: [F; 3], wi: [F; 3]) -> F;
+    /// (f, pdf) of the pair in one call, as multiple importance sampling needs both: equal
+    /// to ([`Bsdf::eval`], [`Bsdf::pdf`]) bit for bit. [`RoughConductor`] shares the half
+    /// vector and the tests between the two; the others answer the two calls.
+    #[inline]
+    fn eval_pdf(&self, wo: [F; 3], wi: [F; 3]) -> (Self::Value, F) {
+        (self.eval(wo, wi), self.pdf(wo, wi))
+    }
     /// A direction wi from the uniforms uc (the lobe choice) and u (the normal); `None` where
     /// the sample is rejected (a reflection below the horizon, a refraction back to wo's
     /// side, a pdf that is not a positive finite number; for the single-scattering BSDFs
@@ -309,6 +316,27 @@ impl<F: Real, D: MicrofacetDistribution<F>, Fr: Fresnel<F, N>, const N: usize> B
             return F::ZERO;
         };
         self.dist.pdf(wo, wm) / (F::from_f64(4.0) * dot(wo, wm).abs())
+    }
+
+    #[inline]
+    fn eval_pdf(&self, wo: [F; 3], wi: [F; 3]) -> ([F; N], F) {
+        // `eval` and `pdf` with their shared part once: the same operations on the same
+        // numbers, so bit for bit theirs.
+        if !same_hemisphere(wo, wi)
+            || on_horizon(wo[2])
+            || on_horizon(wi[2])
+            || self.dist.effectively_smooth()
+        {
+            return ([F::ZERO; N], F::ZERO);
+        }
+        let Some(wm) = half_vector_reflection(wo, wi) else {
+            return ([F::ZERO; N], F::ZERO);
+        };
+        let co = dot(wo, wm).abs();
+        let fr = self.fresnel.eval(F::HALF * (co + dot(wi, wm).abs()));
+        let k = reflected(&self.dist, self.masking, wo, wi, self.dist.d(wm));
+        let pdf = self.dist.pdf(wo, wm) / (F::from_f64(4.0) * co);
+        (fr.map(|f| weighted(f, k)), pdf)
     }
 
     #[inline]
