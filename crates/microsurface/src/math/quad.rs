@@ -2,7 +2,7 @@
 //! quantities (GTR Λ, σ, P2 for general γ; the Exponential NDF's Λ and σ; Double GGX P2; the
 //! family's Λ where it has no closed form) and by the identity checks in
 //! [`crate::check::verify`]. Λ, G1 and σ, which sweeps call most, take fixed rules
-//! ([`to_inf_fixed`], [`integrate_fixed`], [`to_inf_fixed_peaked`]) at a level each caller
+//! ([`to_inf_fixed`], [`integrate_fixed_positive`], [`to_inf_fixed_peaked`]) at a level each caller
 //! has measured against the adaptive rule, instead of the adaptive rule per call.
 //!
 //! Tanh-sinh (Takahasi & Mori 1974; Bailey, Jeyabalan & Li 2005) converges double-exponentially
@@ -184,11 +184,21 @@ fn tanh_sinh_sub(
 /// ∫_a^b f(x) dx by the tanh-sinh rule of step 2^−level without refinement (at most
 /// 2^{level+3} + 1 nodes): for integrands that are smooth, or have end-point singularities, but
 /// may have a kink inside (where the adaptive rule would refine for nothing), when a relative
-/// accuracy of about 1e-6 is enough (the χ² harness's expected counts), or where the caller
-/// knows the level that suffices (the exact Λ of the NDFs without a closed form). Each side
-/// of t = 0 is summed outward and stops after three consecutive terms below 1e-18 of the sum
-/// (the integrand has decayed past what the sum can hold); at most |t| ≤ 4.
+/// accuracy of about 1e-6 is enough (the χ² harness's expected counts). Every node to |t| = 4.
 pub fn integrate_fixed(f: impl Fn(f64) -> f64, a: f64, b: f64, level: u32) -> f64 {
+    fixed_finite(f, a, b, level, false)
+}
+
+/// [`integrate_fixed`] for an integrand positive on (a, b) at a level the caller has
+/// measured to suffice (the exact Λ of the NDFs without a closed form): each side of t = 0
+/// is summed outward and stops after three consecutive terms below 1e-18 of a nonzero sum
+/// (the integrand has decayed past what the sum can hold). (Not for an integrand that may
+/// vanish on a stretch and rise again toward an end: the χ² harness's cells are that.)
+pub fn integrate_fixed_positive(f: impl Fn(f64) -> f64, a: f64, b: f64, level: u32) -> f64 {
+    fixed_finite(f, a, b, level, true)
+}
+
+fn fixed_finite(f: impl Fn(f64) -> f64, a: f64, b: f64, level: u32, stop_early: bool) -> f64 {
     let half = 0.5 * (b - a);
     let nodes = nodes();
     fixed_sum(
@@ -206,14 +216,15 @@ pub fn integrate_fixed(f: impl Fn(f64) -> f64, a: f64, b: f64, level: u32) -> f6
             }
         },
         level,
+        stop_early,
     )
 }
 
 /// Σ of a tanh-sinh rule's terms at step 2^−level, `term(j, upper)` the term at t = ±j
-/// 2^−MAX_LEVEL (upper: t > 0): the centre, then each side outward until three consecutive
-/// terms fall below 1e-18 of the sum (the integrand has decayed past what the sum can hold),
-/// at most |t| ≤ 4; times the step.
-fn fixed_sum(term: impl Fn(usize, bool) -> f64, level: u32) -> f64 {
+/// 2^−MAX_LEVEL (upper: t > 0): the centre, then each side outward to |t| = 4, or with
+/// `stop_early` until three consecutive terms fall below 1e-18 of a nonzero sum (the
+/// integrand has decayed past what the sum can hold); times the step.
+fn fixed_sum(term: impl Fn(usize, bool) -> f64, level: u32, stop_early: bool) -> f64 {
     let level = level.min(MAX_LEVEL);
     let stride = 1usize << (MAX_LEVEL - level);
     let reach = (T_MAX as usize) << MAX_LEVEL;
@@ -225,7 +236,7 @@ fn fixed_sum(term: impl Fn(usize, bool) -> f64, level: u32) -> f64 {
         while j <= reach {
             let v = term(j, upper);
             side += v;
-            if v.abs() <= 1e-18 * (sum + side).abs() {
+            if stop_early && sum + side != 0.0 && v.abs() <= 1e-18 * (sum + side).abs() {
                 small += 1;
                 if small == 3 {
                     break;
@@ -243,8 +254,8 @@ fn fixed_sum(term: impl Fn(usize, bool) -> f64, level: u32) -> f64 {
 /// ∫_a^∞ f(x) dx by the tanh-sinh rule of step 2^−level under the map of [`integrate_to_inf`]
 /// (x = a + L s/(1 − s)), without refinement: a fixed rule for integrands whose caller has
 /// scaled the map to them (L where the integrand changes character), so that one level is
-/// known to suffice (the exact Λ of the NDFs without a closed form: `math::smith`). Summed as
-/// [`integrate_fixed`] is.
+/// known to suffice (the exact Λ of the NDFs without a closed form: `math::smith`), positive
+/// on the half line: summed as [`integrate_fixed_positive`] is.
 pub fn to_inf_fixed(f: impl Fn(f64) -> f64, a: f64, scale: f64, level: u32) -> f64 {
     let nodes = nodes();
     fixed_sum(
@@ -268,6 +279,7 @@ pub fn to_inf_fixed(f: impl Fn(f64) -> f64, a: f64, scale: f64, level: u32) -> f
             }
         },
         level,
+        true,
     )
 }
 
@@ -287,7 +299,7 @@ pub fn to_inf_fixed_peaked(f: impl Fn(f64) -> f64, peak: f64, level: u32) -> f64
     } else {
         peak
     };
-    integrate_fixed(&f, 0.0, peak, level) + to_inf_fixed(&f, peak, width, level)
+    integrate_fixed_positive(&f, 0.0, peak, level) + to_inf_fixed(&f, peak, width, level)
 }
 
 /// The tanh-sinh rule of step 2^−level on [0, 1] from the cached nodes (`nodes`): (distance

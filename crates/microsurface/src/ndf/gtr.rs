@@ -15,16 +15,17 @@
 //! * c: `c = expm1(L)/(πL) · t/(−expm1(−t))`, L = ln α², t = (γ−1)L, which is exact at the
 //!   removable singularities α = 1 and γ = 1 and has no 0/0 near them (derivations.md D); when c or the
 //!   power under- or overflows, D = exp(ln c − γ ln w). Closed forms: ≤ 1e-13 relative.
-//! * Λ and σ for γ ≠ 1, 2: the Smith integral in polar slope coordinates (`smith`), a
-//!   fixed tanh-sinh rule of step 2⁻⁵ scaled to a + α (documented bound 1e-10; measured
-//!   ≤ 1e-15 against mpmath, within 5.4e-14 of the adaptive rule at 1e-13).
+//! * Λ and σ for γ ≠ 1, 2: the Smith integral in polar slope coordinates (`smith`),
+//!   tanh-sinh quadrature to 1e-13 (documented bound 1e-10; measured ≤ 1e-13 against
+//!   mpmath). Adaptive: a fixed rule of step 2⁻⁵ was 5e-10 off at α = 1e-6 (two scales, α
+//!   and 1, with a power law between them; BENCHMARKS.md, issue 35).
 //! * P2 for γ ∉ {1, 3/2, 2}: P2(p) = 2∫₀^∞ P22(p, q) dq by tanh-sinh quadrature (same bounds).
 //!   For γ = 3/2, K − E = (m/3) R_D(0, 1−m, 1) (Carlson), which removes the α → 1 singularity.
 //! * Λ for γ = 1 is the seed's form rearranged so that it does not cancel as u → 1 or α → 1.
 
 use crate::error::{check_alpha, check_gamma, ParamError};
 use crate::math::quad;
-use crate::math::smith::{cot_theta, smith_integral, SMITH_TOL};
+use crate::math::smith::{cot_theta, smith_integral_adaptive as smith_integral, SMITH_TOL};
 use crate::math::special::{dd::Dd, elliprd, expm1_over_x, ln1p_over_x};
 use crate::ndf::ggx::Ggx;
 use crate::ndf::Ndf;
