@@ -58,14 +58,7 @@ pub fn h(y: f64) -> f64 {
 /// for α ∈ [1e-3, 100], but 5e-10 off at α = 1e-6, γ = 1, a = 1e-8.
 pub fn smith_integral(p_of_offset: impl Fn(f64) -> f64, a: f64, scale: f64) -> f64 {
     quad::to_inf_fixed(
-        |d| {
-            let k = kernel(a, d);
-            if k == 0.0 {
-                0.0
-            } else {
-                k * p_of_offset(d)
-            }
-        },
+        |d| kernel_times(a, d, || p_of_offset(d)),
         0.0,
         scale,
         SMITH_LEVEL,
@@ -79,6 +72,18 @@ pub const SMITH_LEVEL: u32 = 5;
 /// the reference the fixed rule is tested against).
 pub fn smith_integral_adaptive(p_of_offset: impl Fn(f64) -> f64, a: f64, scale: f64) -> f64 {
     quad::integrate_to_inf(|d| kernel(a, d) * p_of_offset(d), 0.0, scale, SMITH_TOL).value
+}
+
+/// The integrand r² h(y) P(r) at r = a + d: [`kernel`] times the density `p`, which is not
+/// evaluated where the kernel vanishes (past r = ∞, where P's own form may be NaN).
+#[inline]
+pub fn kernel_times(a: f64, d: f64, p: impl FnOnce() -> f64) -> f64 {
+    let k = kernel(a, d);
+    if k == 0.0 {
+        0.0
+    } else {
+        k * p()
+    }
 }
 
 /// The Smith kernel r² h(y) at r = a + d (cos y = a/r), from the exact offset d.

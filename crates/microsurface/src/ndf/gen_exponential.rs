@@ -105,19 +105,12 @@ impl GenExponential {
     /// keeps its relative accuracy until Λ itself underflows.
     fn smith_unit(&self, a: f64) -> f64 {
         use crate::math::quad;
-        use crate::math::smith::kernel;
+        use crate::math::smith::{kernel, kernel_times};
         let g = self.gamma;
         let norm = PI * self.g2;
         let inner = if a < 1.0 {
             quad::integrate_fixed_positive(
-                |d| {
-                    let k = kernel(a, d);
-                    if k == 0.0 {
-                        0.0
-                    } else {
-                        k * (-(a + d).powf(g)).exp()
-                    }
-                },
+                |d| kernel_times(a, d, || (-(a + d).powf(g)).exp()),
                 0.0,
                 1.0 - a,
                 LAMBDA_LEVEL,
