@@ -96,7 +96,7 @@ impl Domain<'_> {
         !matches!(self, Domain::Param(_))
     }
 
-    /// Why x is not allowed, for the message.
+    /// Why x is not allowed, for the message (a parameter: the library's whole message).
     fn why(&self, x: f64) -> String {
         match self {
             Domain::Any => String::new(),
@@ -104,7 +104,7 @@ impl Domain<'_> {
             Domain::Uniform => "must be in [0, 1)".into(),
             Domain::Finite => "must be finite".into(),
             Domain::Param(check) => match check(x) {
-                Err(e) => format!("is invalid ({e})"),
+                Err(e) => e.to_string(),
                 Ok(()) => String::new(),
             },
         }
@@ -169,19 +169,25 @@ fn domain_error(py: Python<'_>, name: &str, domain: Domain<'_>, given: &Bound<'_
         };
         let x = flat[first];
         let why = domain.why(x);
+        let param = matches!(domain, Domain::Param(_));
         if shape.is_empty() {
-            return Ok(format!("{name} {why} (got {x})"));
+            // (A parameter's message is the library's, which names it and its value.)
+            return Ok(if param {
+                why
+            } else {
+                format!("{name} {why} (got {x})")
+            });
         }
         let index: Vec<usize> = np
             .call_method1("unravel_index", (first, PyTuple::new(py, &shape)?))?
             .extract()?;
         let index: Vec<String> = index.iter().map(|i| i.to_string()).collect();
-        Ok(format!(
-            "{name} {why}: {} of {} elements are not (the first: {name}[{}] = {x})",
-            bad.len(),
-            flat.len(),
-            index.join(", ")
-        ))
+        let (bad, all, index) = (bad.len(), flat.len(), index.join(", "));
+        Ok(if param {
+            format!("{why}: {bad} of {all} elements of {name} are not valid (the first: {name}[{index}])")
+        } else {
+            format!("{name} {why}: {bad} of {all} elements are not (the first: {name}[{index}] = {x})")
+        })
     };
     match describe() {
         Ok(m) => PyValueError::new_err(m),
