@@ -167,6 +167,7 @@ fn domain_error(py: Python<'_>, name: &str, domain: Domain<'_>, given: &Bound<'_
         let Some(&first) = bad.first() else {
             return Ok(format!("{name} is out of its domain"));
         };
+        // (Debug: 1.0, not 1, as Python writes it.)
         let x = flat[first];
         let why = domain.why(x);
         let param = matches!(domain, Domain::Param(_));
@@ -175,7 +176,7 @@ fn domain_error(py: Python<'_>, name: &str, domain: Domain<'_>, given: &Bound<'_
             return Ok(if param {
                 why
             } else {
-                format!("{name} {why} (got {x})")
+                format!("{name} {why} (got {x:?})")
             });
         }
         let index: Vec<usize> = np
@@ -186,7 +187,7 @@ fn domain_error(py: Python<'_>, name: &str, domain: Domain<'_>, given: &Bound<'_
         Ok(if param {
             format!("{why}: {bad} of {all} elements of {name} are not valid (the first: {name}[{index}])")
         } else {
-            format!("{name} {why}: {bad} of {all} elements are not (the first: {name}[{index}] = {x})")
+            format!("{name} {why}: {bad} of {all} elements are not (the first: {name}[{index}] = {x:?})")
         })
     };
     match describe() {
