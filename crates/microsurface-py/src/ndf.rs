@@ -48,6 +48,11 @@ fn samples<'py>(
 /// ``pdf_visible``, ``sample_visible``, ...), the BSDFs built on the NDF and its albedos are
 /// the anisotropic material's.
 ///
+/// **Input.** NaN values give NaN outputs; cosines (``u``, ``u_o``, ``u_i``, ``mu``)
+/// outside [−1, 1], uniforms outside [0, 1), an infinite ``phi``, ``walks`` < 1 and ``n`` <
+/// 0 raise ``ValueError`` naming the argument; parameters raise the library's
+/// ``ValueError``, NaN included. Ctrl-C raises ``KeyboardInterrupt``.
+///
 /// **Two paths.** The functions of a cosine are always the library's exact f64 path (the
 /// research values): closed forms to ≤ 1e-13 relative, numerical quantities (the family's
 /// Λ by quadrature, Bessel-K, the generalised exponential) to ≤ 1e-10, measured against
@@ -293,7 +298,7 @@ impl NDF {
         s + ")"
     }
 
-    /// D(u): the density of microfacet normals per solid angle at u = cos θm (0 for u ≤ 0;
+    /// D(u): the density of microfacet normals per solid angle at u = cos θm ∈ [−1, 1] (0 for u ≤ 0;
     /// +∞ at u = 1 for the NDFs with a pole there: Ei, Erfc, K0, Bessel-K a ≤ 1).
     /// ``alpha``: an array of roughnesses broadcast with u (default: this NDF's).
     #[pyo3(signature = (u, alpha = None))]
@@ -489,7 +494,8 @@ impl NDF {
     }
 
     /// Visible normals for directions w: ``sample_visible(w, u)`` with uniforms u of shape
-    /// (..., 2) in [0, 1) (broadcast with w's batch shape), or ``sample_visible(w, rng, n)``
+    /// (..., 2) in [0, 1) (broadcast with w's batch shape; others raise ValueError, NaN gives
+    /// NaN), or ``sample_visible(w, rng, n)``
     /// with a ``numpy.random.Generator`` (n × 2 uniforms drawn from it). Returns
     /// ``Sample(wm, pdf)``: unit normals (..., 3) and their densities ``pdf_visible(w,
     /// wm)``. Samplers of the exact distribution (χ²-tested in the crate; ``sampler`` says
@@ -543,7 +549,8 @@ impl NDF {
     /// threads). Returns ``Albedo(reflect, reflect_stderr, transmit, transmit_stderr,
     /// total, total_stderr)``: reflect and transmit of shape (..., 4) for the orders 1, 2,
     /// 3 and ≥ 4, with their standard errors; total (...) is reflect + transmit summed
-    /// over orders. ``alpha``: an array of roughnesses broadcast with mu and phi (αy scaled
+    /// over orders. ``mu`` ∈ [−1, 1], ``phi`` finite, ``walks`` ≥ 1 (else ValueError); a NaN
+    /// ``mu`` or ``phi`` gives NaN fields. ``alpha``: an array of roughnesses broadcast with mu and phi (αy scaled
     /// with α), for tables over (α, μ) in one call. The walk runs this NDF's path (fast by
     /// default, ``exact=True`` the exact one).
     #[pyo3(signature = (mu, phi = None, walks = 100_000, seed = 0, eta = None, alpha = None))]
