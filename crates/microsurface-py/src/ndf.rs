@@ -49,7 +49,8 @@ fn samples<'py>(
 /// the anisotropic material's.
 ///
 /// **Input.** NaN values give NaN outputs; cosines (``u``, ``u_o``, ``u_i``, ``mu``)
-/// outside [−1, 1], uniforms outside [0, 1), an infinite ``phi``, ``walks`` < 1 and ``n`` <
+/// outside [−1, 1] (by more than 4ε: a rounded cosine is taken as ±1), uniforms outside
+/// [0, 1), an infinite ``phi``, ``walks`` < 1 and ``n`` <
 /// 0 raise ``ValueError`` naming the argument; parameters raise the library's
 /// ``ValueError``, NaN included. Ctrl-C raises ``KeyboardInterrupt``.
 ///
