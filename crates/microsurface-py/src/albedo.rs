@@ -2,7 +2,7 @@
 //! (the body of `NDF.albedo`), the single-scattering albedo by quadrature
 //! (`single_scattering_albedo`), and the tables of energy compensation (`AlbedoTable`).
 
-use crate::engine::{apply_vec, map_vec, named};
+use crate::engine::{apply_vec, count, map_vec, named, Domain, Item};
 use crate::ndf::NDF;
 use microsurface::scattering::{
     self, AlbedoTable as Table, DielectricFacets, Heights, MirrorFacets, RandomWalk,
@@ -11,7 +11,7 @@ use pyo3::exceptions::PyValueError;
 use pyo3::prelude::*;
 use pyo3::types::PyFloat;
 
-/// The direction at cos θ = mu and azimuth phi (mu outside [−1, 1] as its nearest end).
+/// The direction at cos θ = mu and azimuth phi (mu in [−1, 1]: the engine checks it).
 fn wo_of(mu: f64, phi: f64) -> [f64; 3] {
     let st = ((1.0 - mu) * (1.0 + mu)).max(0.0).sqrt();
     [st * phi.cos(), st * phi.sin(), mu]
@@ -25,14 +25,17 @@ pub fn walk(
     py: Python<'_>,
     mu: &Bound<'_, PyAny>,
     phi: Option<&Bound<'_, PyAny>>,
-    walks: u64,
-    seed: u64,
+    walks: i64,
+    seed: i128,
     eta: Option<f64>,
     alpha: Option<&Bound<'_, PyAny>>,
 ) -> PyResult<PyObject> {
     if alpha.is_none() {
         ndf.material()?;
     }
+    let walks = count(walks, "walks", 1)? as u64;
+    let seed = u64::try_from(seed)
+        .map_err(|_| PyValueError::new_err(format!("seed must be in [0, 2**64) (got {seed})")))?;
     if let Some(eta) = eta {
         if !(eta > 0.0 && eta.is_finite() && eta != 1.0) {
             return Err(PyValueError::new_err(format!(
@@ -41,42 +44,50 @@ pub fn walk(
         }
     }
     let zero = PyFloat::new(py, 0.0).into_any();
-    let nan = PyFloat::new(py, f64::NAN).into_any();
-    let phi = phi.unwrap_or(&zero);
-    let o = apply_vec(
-        py,
-        &[
-            (mu, 0, "mu"),
-            (phi, 0, "phi"),
-            (alpha.unwrap_or(&nan), 0, "alpha"),
-        ],
-        &[4, 4, 4, 4, 0, 0],
-        2,
-        |i, a, o| {
-            let surface = RandomWalk::new(ndf.material_at(a[2][0])?, Heights::Uniform);
-            let wo = wo_of(a[0][0], a[1][0]);
-            // (One stream per element, whatever thread runs it.)
-            let seed = seed.wrapping_add((i as u64).wrapping_mul(0x9E37_79B9_7F4A_7C15));
-            let r = match eta {
-                None => scattering::albedo(
-                    &surface,
-                    &MirrorFacets(microsurface::bsdf::fresnel::One::<1>),
-                    wo,
-                    walks,
-                    seed,
-                ),
-                Some(eta) => scattering::albedo(&surface, &DielectricFacets(eta), wo, walks, seed),
-            };
-            o[0..4].copy_from_slice(&r.reflect.orders);
-            o[4..8].copy_from_slice(&r.reflect.stderr);
-            o[8..12].copy_from_slice(&r.transmit.orders);
-            o[12..16].copy_from_slice(&r.transmit.stderr);
-            o[16] = r.total.mean;
-            o[17] = r.total.stderr;
-            Ok(())
-        },
-    )?;
+    let check = |a: f64| ndf.check_alpha(a);
+    let items = items(mu, phi.unwrap_or(&zero), alpha, &check);
+    let o = apply_vec(py, &items, &[4, 4, 4, 4, 0, 0], 2, |i, a, o| {
+        let surface = RandomWalk::new(ndf.material_at(a.get(2).map(|a| a[0]))?, Heights::Uniform);
+        let wo = wo_of(a[0][0], a[1][0]);
+        // (One stream per element, whatever thread runs it.)
+        let seed = seed.wrapping_add((i as u64).wrapping_mul(0x9E37_79B9_7F4A_7C15));
+        let r = match eta {
+            None => scattering::albedo(
+                &surface,
+                &MirrorFacets(microsurface::bsdf::fresnel::One::<1>),
+                wo,
+                walks,
+                seed,
+            ),
+            Some(eta) => scattering::albedo(&surface, &DielectricFacets(eta), wo, walks, seed),
+        };
+        o[0..4].copy_from_slice(&r.reflect.orders);
+        o[4..8].copy_from_slice(&r.reflect.stderr);
+        o[8..12].copy_from_slice(&r.transmit.orders);
+        o[12..16].copy_from_slice(&r.transmit.stderr);
+        o[16] = r.total.mean;
+        o[17] = r.total.stderr;
+        Ok(())
+    })?;
     named(py, "Albedo", o)
+}
+
+/// The arguments of the albedos: mu (a cosine), phi (finite), and alpha where given (a
+/// parameter array, checked by `check`).
+fn items<'a, 'py>(
+    mu: &'a Bound<'py, PyAny>,
+    phi: &'a Bound<'py, PyAny>,
+    alpha: Option<&'a Bound<'py, PyAny>>,
+    check: &'a (dyn Fn(f64) -> Result<(), microsurface::ParamError> + Sync),
+) -> Vec<Item<'a, 'py>> {
+    let mut items = vec![
+        (mu, 0, "mu", Domain::Cosine),
+        (phi, 0, "phi", Domain::Finite),
+    ];
+    if let Some(alpha) = alpha {
+        items.push((alpha, 0, "alpha", Domain::Param(check)));
+    }
+    items
 }
 
 /// The single-scattering albedo E₁(wo) of the F = 1 conductor (height-correlated G2) by
@@ -100,15 +111,10 @@ fn single_scattering_albedo(
     // (A copy: the loop runs without the GIL.)
     let ndf: NDF = (*ndf).clone();
     let zero = pyo3::types::PyFloat::new(py, 0.0).into_any();
-    let nan = pyo3::types::PyFloat::new(py, f64::NAN).into_any();
-    let phi = phi.unwrap_or(&zero);
-    let items = [
-        (mu, 0, "mu"),
-        (phi, 0, "phi"),
-        (alpha.unwrap_or(&nan), 0, "alpha"),
-    ];
+    let check = |a: f64| ndf.check_alpha(a);
+    let items = items(mu, phi.unwrap_or(&zero), alpha, &check);
     let mut o = apply_vec(py, &items, &[0], 2, |_, a, o| {
-        let d = ndf.material_at(a[2][0])?;
+        let d = ndf.material_at(a.get(2).map(|a| a[0]))?;
         o[0] = microsurface::scattering::single_scattering_albedo(&d, wo_of(a[0][0], a[1][0]));
         Ok(())
     })?;
@@ -139,7 +145,7 @@ impl AlbedoTable {
     /// E(μ), cubic in √μ between the nodes, vectorised over μ.
     fn e(&self, py: Python<'_>, mu: &Bound<'_, PyAny>) -> PyResult<PyObject> {
         let t = &self.table;
-        map_vec(py, &[(mu, 0, "mu")], |a| t.e(a[0][0]))
+        map_vec(py, &[(mu, 0, "mu", Domain::Cosine)], |a| t.e(a[0][0]))
     }
 
     /// E_avg = 2∫E(μ)μ dμ.

@@ -3,7 +3,7 @@
 //! their scattering model (single scattering, Kulla–Conty or Turquin energy compensation,
 //! the random walk).
 
-use crate::engine::{apply_vec, map_vec, named, v3};
+use crate::engine::{apply_vec, map_vec, named, v3, Domain};
 use crate::material::Material;
 use crate::ndf::NDF;
 use microsurface::bsdf::fresnel::{self, Fresnel};
@@ -176,7 +176,7 @@ impl PyBsdf {
         let outs = [if c == 1 { 0 } else { c }];
         let mut o = apply_vec(
             py,
-            &[(wo, 3, "wo"), (wi, 3, "wi")],
+            &[(wo, 3, "wo", Domain::Any), (wi, 3, "wi", Domain::Any)],
             &outs,
             256,
             |_, a, o| {
@@ -197,9 +197,11 @@ impl PyBsdf {
         wi: &Bound<'_, PyAny>,
     ) -> PyResult<PyObject> {
         let b = &self.inner;
-        map_vec(py, &[(wo, 3, "wo"), (wi, 3, "wi")], |a| {
-            b.pdf(v3(a[0]), v3(a[1]))
-        })
+        map_vec(
+            py,
+            &[(wo, 3, "wo", Domain::Any), (wi, 3, "wi", Domain::Any)],
+            |a| b.pdf(v3(a[0]), v3(a[1])),
+        )
     }
 
     /// Directions wi from wo: ``sample(wo, u)`` with uniforms u of shape (..., 3) (the lobe
@@ -215,26 +217,33 @@ impl PyBsdf {
         py: Python<'_>,
         wo: &Bound<'_, PyAny>,
         u: &Bound<'_, PyAny>,
-        n: Option<usize>,
+        n: Option<i64>,
     ) -> PyResult<PyObject> {
         let c = self.inner.channels();
         let b = &self.inner;
         let u = crate::engine::uniforms(py, u, n, 3)?;
         let outs = [3, if c == 1 { 0 } else { c }, 0, 0, 0, 0];
-        let mut o = apply_vec(py, &[(wo, 3, "wo"), (&u, 3, "u")], &outs, 256, |_, a, o| {
-            b.sample(v3(a[0]), a[1][0], [a[1][1], a[1][2]], o);
-            Ok(())
-        })?;
-        // (lobe as int8, specular as bool.)
+        let mut o = apply_vec(
+            py,
+            &[(wo, 3, "wo", Domain::Any), (&u, 3, "u", Domain::Uniform)],
+            &outs,
+            256,
+            |_, a, o| {
+                b.sample(v3(a[0]), a[1][0], [a[1][1], a[1][2]], o);
+                Ok(())
+            },
+        )?;
+        // (lobe as int8, specular as bool; an element with a NaN value, all NaN from the
+        // engine, is a rejected sample there: lobe 0, not specular.)
         let np = crate::engine::numpy(py)?;
-        o[3] = o[3]
-            .bind(py)
-            .call_method1("astype", (np.getattr("int8")?,))?
-            .unbind();
-        o[4] = o[4]
-            .bind(py)
-            .call_method1("astype", (np.getattr("bool_")?,))?
-            .unbind();
+        for (k, dtype) in [(3, "int8"), (4, "bool_")] {
+            let kwargs = pyo3::types::PyDict::new(py);
+            kwargs.set_item("nan", 0.0)?;
+            o[k] = np
+                .call_method("nan_to_num", (o[k].bind(py),), Some(&kwargs))?
+                .call_method1("astype", (np.getattr(dtype)?,))?
+                .unbind();
+        }
         named(py, "BSDFSample", o)
     }
 }

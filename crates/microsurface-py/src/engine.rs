@@ -11,6 +11,13 @@
 //! float64 arrays of the core lengths skips NumPy altogether ([`run_single`]: the same
 //! values and types, 20–30× less time a call).
 //!
+//! The input contract (issue 36), enforced here for every method: each argument has a
+//! [`Domain`]. NaN is in every domain of a value, and an element with a NaN value gives NaN
+//! outputs without running the computation; a finite (or infinite) value outside its
+//! domain (a cosine outside [−1, 1], a uniform outside [0, 1), an infinite azimuth) raises
+//! ValueError naming the argument, with, for an array, how many elements are bad and the
+//! first. Parameter arrays (α) raise the library's ValueError, NaN included.
+//!
 //! The methods call the front ends at the end of the file: [`apply`] (numbers broadcast
 //! together, the functions of a cosine), [`apply_vec`] and [`map_vec`] (directions and
 //! uniforms with their core axes), and build the package's named tuples with [`named`].
@@ -56,6 +63,148 @@ pub fn value_error(e: ParamError) -> PyErr {
     PyValueError::new_err(e.to_string())
 }
 
+/// What an argument's numbers may be: the input contract's domains (see the module's page).
+#[derive(Clone, Copy)]
+pub enum Domain<'a> {
+    /// Any number, ±∞ included (slopes, the components of directions); NaN gives NaN.
+    Any,
+    /// A cosine (u, μ): [−1, 1], and within 4ε beyond (a rounded unit vector's cosine, which
+    /// the library takes as ±1, as its contract has 1 + 2ε); NaN gives NaN.
+    Cosine,
+    /// A uniform: [0, 1); NaN gives NaN.
+    Uniform,
+    /// A finite number (an azimuth); NaN gives NaN.
+    Finite,
+    /// A parameter (an array of α), checked by the library: NaN is an error too, and an
+    /// element is never skipped for it.
+    Param(&'a (dyn Fn(f64) -> Result<(), ParamError> + Sync)),
+}
+
+impl Domain<'_> {
+    /// Whether x is allowed (for a value: NaN, or in the domain).
+    fn ok(&self, x: f64) -> bool {
+        match self {
+            Domain::Any => true,
+            Domain::Cosine => x.is_nan() || x.abs() <= 1.0 + 4.0 * f64::EPSILON,
+            Domain::Uniform => x.is_nan() || (0.0..1.0).contains(&x),
+            Domain::Finite => !x.is_infinite(),
+            Domain::Param(check) => check(x).is_ok(),
+        }
+    }
+
+    /// Whether a NaN of this argument makes the element's outputs NaN.
+    fn value(&self) -> bool {
+        !matches!(self, Domain::Param(_))
+    }
+
+    /// Why x is not allowed, for the message (a parameter: the library's whole message).
+    fn why(&self, x: f64) -> String {
+        match self {
+            Domain::Any => String::new(),
+            Domain::Cosine => "must be in [-1, 1]".into(),
+            Domain::Uniform => "must be in [0, 1)".into(),
+            Domain::Finite => "must be finite".into(),
+            Domain::Param(check) => match check(x) {
+                Err(e) => e.to_string(),
+                Ok(()) => String::new(),
+            },
+        }
+    }
+}
+
+/// An argument of a call: (the value, its core length (0: one number per element), its
+/// name, its domain).
+pub type Item<'a, 'py> = (&'a Bound<'py, PyAny>, usize, &'a str, Domain<'a>);
+
+/// ValueError unless every number of `data` (argument `name`'s, broadcast) is in `domain`.
+/// The fast pass over the data the loop reads; on failure the message counts the bad
+/// elements of the argument as given (`given`: it as an array of its own shape).
+pub fn check_domain<T: Copy + Into<f64> + Sync>(
+    py: Python<'_>,
+    data: &[T],
+    name: &str,
+    domain: Domain<'_>,
+    given: &Bound<'_, PyAny>,
+) -> PyResult<()> {
+    if matches!(domain, Domain::Any) {
+        return Ok(());
+    }
+    // (Rayon above PARALLEL elements: the pass reads memory, a few ns an element alone.)
+    let ok = |x: &T| domain.ok((*x).into());
+    let good = if data.len() >= PARALLEL {
+        data.par_iter().all(ok)
+    } else {
+        data.iter().all(ok)
+    };
+    if good {
+        return Ok(());
+    }
+    Err(domain_error(py, name, domain, given))
+}
+
+/// [`check_domain`] for one element given as numbers: `x`, the items' numbers back to back
+/// (each its core's count, one for core 0).
+pub fn check_numbers(py: Python<'_>, items: &[Item<'_, '_>], x: &[f64]) -> PyResult<()> {
+    let mut rest = x;
+    for &(given, core, name, domain) in items {
+        let (head, tail) = rest.split_at(core.max(1));
+        if !head.iter().all(|&v| domain.ok(v)) {
+            return Err(domain_error(py, name, domain, given));
+        }
+        rest = tail;
+    }
+    Ok(())
+}
+
+/// The ValueError of argument `name` (`given`, not all in `domain`): the value for a
+/// number, else how many elements are bad and the first, by its index.
+fn domain_error(py: Python<'_>, name: &str, domain: Domain<'_>, given: &Bound<'_, PyAny>) -> PyErr {
+    let describe = || -> PyResult<String> {
+        let np = numpy(py)?;
+        let a = np.call_method1("asarray", (given, float64(py)?))?;
+        let shape: Vec<usize> = a.getattr("shape")?.extract()?;
+        let flat: Vec<f64> = a.call_method1("reshape", (-1,))?.extract()?;
+        let bad: Vec<usize> = (0..flat.len()).filter(|&i| !domain.ok(flat[i])).collect();
+        let Some(&first) = bad.first() else {
+            return Ok(format!("{name} is out of its domain"));
+        };
+        // (Debug: 1.0, not 1, as Python writes it.)
+        let x = flat[first];
+        let why = domain.why(x);
+        let param = matches!(domain, Domain::Param(_));
+        if shape.is_empty() {
+            // (A parameter's message is the library's, which names it and its value.)
+            return Ok(if param {
+                why
+            } else {
+                format!("{name} {why} (got {x:?})")
+            });
+        }
+        let index: Vec<usize> = np
+            .call_method1("unravel_index", (first, PyTuple::new(py, &shape)?))?
+            .extract()?;
+        let index: Vec<String> = index.iter().map(|i| i.to_string()).collect();
+        let (bad, all, index) = (bad.len(), flat.len(), index.join(", "));
+        Ok(if param {
+            format!("{why}: {bad} of {all} elements of {name} are not valid (the first: {name}[{index}])")
+        } else {
+            format!("{name} {why}: {bad} of {all} elements are not (the first: {name}[{index}] = {x:?})")
+        })
+    };
+    match describe() {
+        Ok(m) => PyValueError::new_err(m),
+        Err(e) => e,
+    }
+}
+
+/// Whether an element's numbers (`x[k]`: argument k's, `domains[k]` its domain) have a NaN
+/// value: then its outputs are NaN and the computation does not run.
+fn nan_value(x: &[&[f64]], domains: &[Domain<'_>]) -> bool {
+    x.iter()
+        .zip(domains)
+        .any(|(x, d)| d.value() && x.iter().any(|v| v.is_nan()))
+}
+
 /// The arguments of one call, broadcast: flat float64 arrays (contiguous; no copy for
 /// contiguous float64 input of the broadcast shape).
 pub struct Args<'py> {
@@ -69,14 +218,14 @@ pub struct Args<'py> {
 }
 
 impl<'py> Args<'py> {
-    /// `items`: (the argument, its core length (0: one number per element), its name).
-    pub fn new(py: Python<'py>, items: &[(&Bound<'py, PyAny>, usize, &str)]) -> PyResult<Self> {
+    /// `items`: the arguments ([`Item`]), each checked against its domain.
+    pub fn new(py: Python<'py>, items: &[Item<'_, 'py>]) -> PyResult<Self> {
         let np = numpy(py)?;
         let float32 = np.getattr("float32")?;
         let mut f32 = true;
         let mut wide = Vec::with_capacity(items.len());
         let mut batches = Vec::with_capacity(items.len());
-        for &(x, core, name) in items {
+        for &(x, core, name, _) in items {
             let a = np.call_method1("asarray", (x,))?;
             f32 &= a.getattr("dtype")?.eq(&float32)?;
             let shape: Vec<usize> = a.getattr("shape")?.extract()?;
@@ -99,17 +248,19 @@ impl<'py> Args<'py> {
             .extract()?;
         let n = batch.iter().product();
         let mut arrays = Vec::with_capacity(items.len());
-        for (a, &(_, core, _)) in wide.into_iter().zip(items) {
+        for (a, &(_, core, name, domain)) in wide.into_iter().zip(items) {
             let mut full = batch.clone();
             if core > 0 {
                 full.push(core);
             }
-            let b = np.call_method1("broadcast_to", (a, PyTuple::new(py, &full)?))?;
+            let b = np.call_method1("broadcast_to", (&a, PyTuple::new(py, &full)?))?;
             let flat = np
                 .call_method1("ascontiguousarray", (b,))?
                 .call_method1("reshape", (-1,))?
                 .downcast_into::<PyArray1<f64>>()?;
-            arrays.push(flat.readonly());
+            let flat = flat.readonly();
+            check_domain(py, flat.as_slice()?, name, domain, &a)?;
+            arrays.push(flat);
         }
         Ok(Args {
             arrays,
@@ -213,9 +364,9 @@ pub fn compute(
 }
 
 /// `f(start, out)` over blocks of `block` elements (the last one shorter) into an n × width
-/// array: chunks of blocks that grow while they take under 50 ms, the signals checked
-/// (Ctrl-C raises KeyboardInterrupt) after each chunk, the GIL released meanwhile, rayon's
-/// pool from `parallel` elements a chunk. The first error stops the loop.
+/// array: chunks sized by time (about [`CHUNK`] each, whatever an element costs), the
+/// signals checked (Ctrl-C raises KeyboardInterrupt) after each chunk, the GIL released
+/// meanwhile, rayon's pool from `parallel` elements a chunk. The first error stops the loop.
 pub fn compute_blocks(
     py: Python<'_>,
     n: usize,
@@ -226,6 +377,17 @@ pub fn compute_blocks(
 ) -> PyResult<Bound<'_, PyArray1<f64>>> {
     compute_blocks_of(py, n, width, block, parallel, "float64", f)
 }
+
+/// The time a chunk of the loop aims at: Ctrl-C is answered within a chunk, so 50 ms keeps
+/// the answer under 0.5 s (the contract) even where a chunk runs 10× its estimate (elements
+/// of uneven cost), while a check (~20 µs: the GIL taken back, a rayon join ended) costs
+/// under 0.1 %.
+pub const CHUNK: Duration = Duration::from_millis(50);
+
+/// How much a chunk may grow over the last one: the cost estimate, from the elements done,
+/// is trusted within 8× (a chunk that takes the estimate's time at 8× the elements stays
+/// within 0.5 s where the first ones ran 10× slower than the next: a slow region of u).
+const GROWTH: f64 = 8.0;
 
 /// [`compute_blocks`] into an array of T (`dtype` its NumPy name).
 pub fn compute_blocks_of<'py, T: numpy::Element + Send>(
@@ -244,17 +406,12 @@ pub fn compute_blocks_of<'py, T: numpy::Element + Send>(
         drop(rw);
         return Ok(out);
     }
-    // (Slice kernels (blocks): 2^20 elements, about a millisecond, before the first check:
-    // each check takes the GIL back and ends a rayon join, ~20 µs, which at 0.1 ns an element
-    // doubled a float32 call over 10⁶ elements when it came every 2^16. Other cheap elements:
-    // 2^16; expensive ones (walks, quadratures: a small `parallel`) one per thread.)
-    let mut chunk = if block > 1 {
-        1 << 20
-    } else if parallel >= 1024 {
-        1 << 16
-    } else {
-        rayon::current_num_threads()
-    };
+    // (The first chunk: one element a thread, or one slice-kernel block a thread, whatever
+    // the elements cost (a quadrature or a walk of 10⁵ steps as well as a closed form); then
+    // chunks sized to take about CHUNK by the time the last one took, growing at most
+    // GROWTH×. Cheap elements reach chunks of millions in a few steps.)
+    let threads = rayon::current_num_threads();
+    let mut chunk = block * threads;
     let mut start = 0;
     let result: PyResult<()> = py.allow_threads(|| {
         while start < n {
@@ -271,12 +428,14 @@ pub fn compute_blocks_of<'py, T: numpy::Element + Send>(
                     .try_for_each(|(k, out)| f(start + k * block, out))
             };
             r.map_err(value_error)?;
+            let took = t.elapsed().as_secs_f64();
+            let done = end - start;
             start = end;
             if start < n {
                 Python::with_gil(|py| py.check_signals())?;
-                if t.elapsed() < Duration::from_millis(50) {
-                    chunk = chunk.saturating_mul(2);
-                }
+                let scale = (CHUNK.as_secs_f64() / took.max(1e-9)).min(GROWTH);
+                // (Whole blocks: a slice kernel's block starts at a multiple of `block`.)
+                chunk = (((done as f64 * scale) as usize).div_ceil(block) * block).max(block);
             }
         }
         Ok(())
@@ -303,9 +462,10 @@ pub fn empty<'py, T: numpy::Element>(
 pub fn uniforms<'py>(
     py: Python<'py>,
     u: &Bound<'py, PyAny>,
-    n: Option<usize>,
+    n: Option<i64>,
     k: usize,
 ) -> PyResult<Bound<'py, PyAny>> {
+    let n = n.map(|n| count(n, "n", 0)).transpose()?;
     static GENERATOR: GILOnceCell<PyObject> = GILOnceCell::new();
     let generator = GENERATOR
         .get_or_try_init(py, || {
@@ -326,15 +486,25 @@ pub fn uniforms<'py>(
     Ok(u.clone())
 }
 
+/// A count argument (`n` samples, `walks`) as a size: ValueError naming it below `min`.
+pub fn count(v: i64, name: &str, min: i64) -> PyResult<usize> {
+    if v < min {
+        return Err(PyValueError::new_err(format!(
+            "{name} must be at least {min} (got {v})"
+        )));
+    }
+    Ok(v as usize)
+}
+
 /// One element given without a batch, read without NumPy's conversions: every argument a
 /// Python number (core 0) or a list, tuple or 1-D float64 array of exactly its core length
 /// of Python numbers (floats, NumPy float64 scalars, ints); the numbers back to back, or
 /// `None` for anything else (batches, float32, other types: the array path decides).
-fn single_numbers(items: &[(&Bound<'_, PyAny>, usize, &str)]) -> Option<Vec<f64>> {
+fn single_numbers(items: &[Item<'_, '_>]) -> Option<Vec<f64>> {
     use pyo3::types::PyList;
     let number = |a: &Bound<'_, PyAny>| is_number(a).then(|| a.extract::<f64>().ok())?;
     let mut x = Vec::with_capacity(8);
-    for &(a, core, _) in items {
+    for &(a, core, _, _) in items {
         if core == 0 {
             x.push(number(a)?);
         } else if a.is_instance_of::<PyTuple>() || a.is_instance_of::<PyList>() {
@@ -360,10 +530,11 @@ fn single_numbers(items: &[(&Bound<'_, PyAny>, usize, &str)]) -> Option<Vec<f64>
 /// with a the arguments' numbers split by their cores, without the GIL, and the outputs as
 /// the array path shapes a batch of `()` (a NumPy float64 scalar for core 0, a float64
 /// array of the core's length otherwise). `None` where the arguments are not of that form.
-/// About 0.3 µs a call where NumPy's conversions and shaping take ~6 µs (BENCHMARKS.md).
+/// The domains checked and NaN values as in [`guarded`]. About 0.3 µs a call where NumPy's
+/// conversions and shaping take ~6 µs (BENCHMARKS.md).
 pub fn run_single(
     py: Python<'_>,
-    items: &[(&Bound<'_, PyAny>, usize, &str)],
+    items: &[Item<'_, '_>],
     outs: &[usize],
     f: impl Fn(usize, &[&[f64]], &mut [f64]) -> Result<(), ParamError> + Sync,
 ) -> PyResult<Option<Vec<PyObject>>> {
@@ -372,18 +543,18 @@ pub fn run_single(
     };
     let width: usize = outs.iter().map(|&c| c.max(1)).sum();
     let mut out = vec![0.0; width];
-    let cores: Vec<usize> = items.iter().map(|i| i.1).collect();
-    py.allow_threads(|| {
-        let mut a: Vec<&[f64]> = Vec::with_capacity(cores.len());
-        let mut rest = &x[..];
-        for &core in &cores {
-            let (head, tail) = rest.split_at(core.max(1));
-            a.push(head);
-            rest = tail;
-        }
-        f(0, &a, &mut out)
-    })
-    .map_err(value_error)?;
+    check_numbers(py, items, &x)?;
+    let mut a: Vec<&[f64]> = Vec::with_capacity(items.len());
+    let mut rest = &x[..];
+    for &(_, core, _, _) in items {
+        let (head, tail) = rest.split_at(core.max(1));
+        a.push(head);
+        rest = tail;
+    }
+    let domains: Vec<Domain<'_>> = items.iter().map(|i| i.3).collect();
+    let f = guarded(&domains, &f);
+    py.allow_threads(|| f(0, &a, &mut out))
+        .map_err(value_error)?;
     let mut result = Vec::with_capacity(outs.len());
     let mut offset = 0;
     for &core in outs {
@@ -397,6 +568,21 @@ pub fn run_single(
         offset += core.max(1);
     }
     Ok(Some(result))
+}
+
+/// `f` where no value of the element is NaN; NaN outputs where one is (NaN in, NaN out:
+/// the computation, a walk or a sampler, would make numbers of it).
+fn guarded<'a>(
+    domains: &'a [Domain<'a>],
+    f: &'a (impl Fn(usize, &[&[f64]], &mut [f64]) -> Result<(), ParamError> + Sync),
+) -> impl Fn(usize, &[&[f64]], &mut [f64]) -> Result<(), ParamError> + Sync + 'a {
+    move |i, a, o| {
+        if nan_value(a, domains) {
+            o.fill(f64::NAN);
+            return Ok(());
+        }
+        f(i, a, o)
+    }
 }
 
 /// `f()` on a thread of its own while this one waits without the GIL, checking the signals
@@ -431,36 +617,57 @@ pub fn interruptible<T: Send + 'static>(
 /// Above this many elements a cheap function's loop runs on rayon's pool.
 pub const PARALLEL: usize = 1 << 14;
 
-/// `f` over the elements of scalar arguments broadcast together (the isotropic quantities).
+/// `f` over the elements of scalar arguments broadcast together (the isotropic quantities),
+/// each argument with its name and domain ([`Item`] of core 0).
 pub fn apply<'py, const K: usize>(
     py: Python<'py>,
-    args: [&Bound<'py, PyAny>; K],
+    args: [(&Bound<'py, PyAny>, &str, Domain<'_>); K],
     f: impl Fn([f64; K]) -> Result<f64, ParamError> + Sync,
 ) -> PyResult<PyObject> {
+    let items: Vec<Item<'_, 'py>> = args.iter().map(|&(a, name, d)| (a, 0, name, d)).collect();
+    let domains = args.map(|a| a.2);
     // Python floats, NumPy float64 scalars (a float subclass) and ints only: no array, the
     // value as a NumPy float64 scalar, as a ufunc returns (0.13 µs a call against ~2.5 µs
     // through the array path's NumPy calls).
-    if args.iter().all(|a| is_number(a)) {
+    if args.iter().all(|a| is_number(a.0)) {
         let mut x = [0.0; K];
-        for (x, a) in x.iter_mut().zip(args) {
-            *x = a.extract::<f64>()?;
+        for (x, a) in x.iter_mut().zip(&args) {
+            *x = a.0.extract::<f64>()?;
         }
-        return Ok(float64(py)?.call1((f(x).map_err(value_error)?,))?.unbind());
+        check_numbers(py, &items, &x)?;
+        let y = if nan_of(&x, &domains) {
+            f64::NAN
+        } else {
+            f(x).map_err(value_error)?
+        };
+        return Ok(float64(py)?.call1((y,))?.unbind());
     }
-    let items: Vec<_> = args.iter().map(|&a| (a, 0, "argument")).collect();
     let a = Args::new(py, &items)?;
     let s: Vec<&[f64]> = (0..K).map(|k| a.slice(k)).collect::<PyResult<_>>()?;
     let mut out = a.run(py, 1, &[0], PARALLEL, |i, o| {
-        o[0] = f(std::array::from_fn(|k| s[k][i]))?;
+        let x = std::array::from_fn(|k| s[k][i]);
+        o[0] = if nan_of(&x, &domains) {
+            f64::NAN
+        } else {
+            f(x)?
+        };
         Ok(())
     })?;
     Ok(out.remove(0))
 }
 
-/// Direction arguments (core length 3, or 2 for uniforms) to `width` outputs per element.
+/// [`nan_value`] of one number per argument (no allocation: the cheap quantities' loop).
+fn nan_of<const K: usize>(x: &[f64; K], domains: &[Domain<'_>; K]) -> bool {
+    x.iter().zip(domains).any(|(v, d)| d.value() && v.is_nan())
+}
+
+/// Arguments with cores (3: a direction, 2 or 3: uniforms, 0: one number) to `outs`
+/// outputs per element (their core lengths), `f(i, a, out)` for element i with a the
+/// arguments' numbers; the domains checked, and NaN outputs for an element with a NaN value
+/// ([`guarded`]).
 pub fn apply_vec<'py>(
     py: Python<'py>,
-    items: &[(&Bound<'py, PyAny>, usize, &str)],
+    items: &[Item<'_, 'py>],
     outs: &[usize],
     parallel: usize,
     f: impl Fn(usize, &[&[f64]], &mut [f64]) -> Result<(), ParamError> + Sync,
@@ -473,6 +680,8 @@ pub fn apply_vec<'py>(
         .map(|k| a.slice(k))
         .collect::<PyResult<_>>()?;
     let cores: Vec<usize> = items.iter().map(|i| i.1.max(1)).collect();
+    let domains: Vec<Domain<'_>> = items.iter().map(|i| i.3).collect();
+    let f = guarded(&domains, &f);
     let width = outs.iter().map(|&c| c.max(1)).sum();
     a.run(py, width, outs, parallel, |i, o| {
         let e: Vec<&[f64]> = s
@@ -487,7 +696,7 @@ pub fn apply_vec<'py>(
 /// One number per element of direction arguments (cheap: rayon from [`PARALLEL`]).
 pub fn map_vec<'py>(
     py: Python<'py>,
-    items: &[(&Bound<'py, PyAny>, usize, &str)],
+    items: &[Item<'_, 'py>],
     f: impl Fn(&[&[f64]]) -> f64 + Sync,
 ) -> PyResult<PyObject> {
     let mut o = apply_vec(py, items, &[0], PARALLEL, |_, a, o| {

@@ -3,8 +3,8 @@
 //! (`microsurface::fast::batch`, within 3e-15 of the exact path), in f32 arithmetic for
 //! float32 input ([`kernel_f32`]), in blocks of [`BLOCK`] elements.
 
-use crate::engine::{self, float64, is_number, value_error, Args, PARALLEL};
-use microsurface::{AnyNdf, NdfKind, ParamError};
+use crate::engine::{self, float64, is_number, Args, Domain, PARALLEL};
+use microsurface::{AnyNdf, NdfKind};
 use numpy::{PyArray1, PyArrayMethods};
 use pyo3::prelude::*;
 
@@ -56,7 +56,9 @@ impl Kernel {
 /// Elements a slice kernel takes at a time (L1-resident, with the constant-α buffer).
 pub const BLOCK: usize = 4096;
 
-/// `kernel` over u (and an array α, validated, if given; else `alpha0`).
+/// `kernel` over u (a cosine; and an array α, validated, if given; else `alpha0`), with the
+/// engine's domains: NaN gives NaN (the closed forms propagate it), u outside [−1, 1] and a
+/// bad α raise ValueError.
 pub fn apply_kernel<'py>(
     py: Python<'py>,
     kind: NdfKind,
@@ -66,15 +68,18 @@ pub fn apply_kernel<'py>(
     k: Kernel,
 ) -> PyResult<PyObject> {
     let check = |a: f64| AnyNdf::new(kind, a, None).map(|_| ());
+    let mut items = vec![(u, 0, "u", Domain::Cosine)];
+    if let Some(a) = alpha {
+        items.push((a, 0, "alpha", Domain::Param(&check)));
+    }
     if is_number(u) && alpha.is_none_or(|a| is_number(a)) {
+        let x = u.extract::<f64>()?;
         let a = match alpha {
             Some(a) => a.extract::<f64>()?,
             None => alpha0,
         };
-        check(a).map_err(value_error)?;
-        return Ok(float64(py)?
-            .call1(((k.scalar)(u.extract::<f64>()?, a),))?
-            .unbind());
+        engine::check_numbers(py, &items, &[x, a])?;
+        return Ok(float64(py)?.call1(((k.scalar)(x, a),))?.unbind());
     }
     // float32 throughout: the f32 slice forms.
     let np = engine::numpy(py)?;
@@ -88,11 +93,7 @@ pub fn apply_kernel<'py>(
             .as_ref()
             .map_or(Ok(true), |a| a.getattr("dtype")?.eq(&float32))?
     {
-        return kernel_f32(py, &ua, aa.as_ref(), alpha0, k, check);
-    }
-    let mut items = vec![(u, 0, "u")];
-    if let Some(a) = alpha {
-        items.push((a, 0, "alpha"));
+        return kernel_f32(py, &ua, aa.as_ref(), alpha0, k, &items);
     }
     let a = Args::new(py, &items)?;
     let us = a.slice(0)?;
@@ -105,11 +106,7 @@ pub fn apply_kernel<'py>(
     let mut out = a.run_blocks(py, 1, &[0], BLOCK, PARALLEL, |start, out| {
         let u = &us[start..start + out.len()];
         let al = match alphas {
-            Some(al) => {
-                let al = &al[start..start + out.len()];
-                al.iter().try_for_each(|&a| check(a))?;
-                al
-            }
+            Some(al) => &al[start..start + out.len()],
             None => &constant[..out.len()],
         };
         (k.slice)(u, al, out);
@@ -119,15 +116,15 @@ pub fn apply_kernel<'py>(
 }
 
 /// `kernel` over float32 arrays in f32 (the library's f32 slice forms; α rounded to f32, or
-/// the float32 array `alpha`, broadcast with u and validated by `check`), without copies of
-/// contiguous input.
+/// the float32 array `alpha`, broadcast with u), without copies of contiguous input; `items`
+/// (u's and α's names and domains) checked as the engine checks float64 arrays.
 fn kernel_f32<'py>(
     py: Python<'py>,
     u: &Bound<'py, PyAny>,
     alpha: Option<&Bound<'py, PyAny>>,
     alpha0: f64,
     k: Kernel,
-    check: impl Fn(f64) -> Result<(), ParamError> + Sync,
+    items: &[engine::Item<'_, 'py>],
 ) -> PyResult<PyObject> {
     let np = engine::numpy(py)?;
     let flat = |a: &Bound<'py, PyAny>| -> PyResult<Bound<'py, PyArray1<f32>>> {
@@ -148,16 +145,16 @@ fn kernel_f32<'py>(
     let (ro, ra) = (u.readonly(), alpha.as_ref().map(|a| a.readonly()));
     let us = ro.as_slice()?;
     let als = ra.as_ref().map(|r| r.as_slice()).transpose()?;
+    engine::check_domain(py, us, items[0].2, items[0].3, items[0].0)?;
+    if let Some(al) = als {
+        engine::check_domain(py, al, items[1].2, items[1].3, items[1].0)?;
+    }
     let constant = [alpha0 as f32; BLOCK];
     let out =
         engine::compute_blocks_of(py, us.len(), 1, BLOCK, PARALLEL, "float32", |start, o| {
             let n = o.len();
             let al = match als {
-                Some(al) => {
-                    let al = &al[start..start + n];
-                    al.iter().try_for_each(|&a| check(f64::from(a)))?;
-                    al
-                }
+                Some(al) => &al[start..start + n],
                 None => &constant[..n],
             };
             (k.slice32)(&us[start..start + n], al, o);

@@ -59,8 +59,51 @@ fn pep440(v: &str) -> String {
     format!("{release}{tag}{n}")
 }
 
+/// NumPy's C array API (and rust-numpy's borrow checker), fetched at import, before any
+/// call. rust-numpy fetches them at their first use and panics if that fails; its fetch runs
+/// Python code (numpy.lib.NumpyVersion, the import of numpy._core.multiarray), where a
+/// Ctrl-C raises KeyboardInterrupt, which it turned into a PanicException at the first call
+/// (issue 36). Here the same Python code runs first with its errors propagated (a Ctrl-C is
+/// KeyboardInterrupt from the import), then rust-numpy's fetch, whose remaining window (its
+/// second NumpyVersion call) is guarded: a panic there is KeyboardInterrupt again.
+fn init_numpy_api(py: Python<'_>) -> PyResult<()> {
+    let np = engine::numpy(py)?;
+    let version = np.getattr("__version__")?;
+    let v = py
+        .import("numpy.lib")?
+        .getattr("NumpyVersion")?
+        .call1((version,))?;
+    let major: u32 = v.getattr("major")?.extract()?;
+    py.import(if major >= 2 {
+        "numpy._core.multiarray"
+    } else {
+        "numpy.core.multiarray"
+    })?;
+    let touch = || {
+        use numpy::PyArrayMethods;
+        let a = numpy::PyArray1::<f64>::zeros(py, 0, false);
+        drop(a.readwrite());
+        drop(numpy::PyArray1::<f32>::zeros(py, 0, false).readonly());
+    };
+    std::panic::catch_unwind(std::panic::AssertUnwindSafe(touch)).map_err(|panic| {
+        let msg = panic
+            .downcast_ref::<String>()
+            .cloned()
+            .or_else(|| panic.downcast_ref::<&str>().map(|s| s.to_string()))
+            .unwrap_or_default();
+        if msg.contains("KeyboardInterrupt") {
+            pyo3::exceptions::PyKeyboardInterrupt::new_err(())
+        } else {
+            pyo3::exceptions::PyImportError::new_err(format!(
+                "NumPy's array API could not be loaded: {msg}"
+            ))
+        }
+    })
+}
+
 #[pymodule]
 fn _microsurface(m: &Bound<'_, PyModule>) -> PyResult<()> {
+    init_numpy_api(m.py())?;
     // (Cargo's version in PEP 440's spelling, as maturin writes the wheel's: 1.0.0-rc.1 is
     // 1.0.0rc1.)
     m.add("__version__", pep440(env!("CARGO_PKG_VERSION")))?;

@@ -7,7 +7,9 @@
 #![allow(clippy::upper_case_acronyms)]
 
 use crate::albedo;
-use crate::engine::{apply, apply_vec, map_vec, named, uniforms, v3, value_error, Args, PARALLEL};
+use crate::engine::{
+    apply, apply_vec, map_vec, named, uniforms, v3, value_error, Domain, Item, PARALLEL,
+};
 use crate::kernel::{apply_kernel, Kernel, Q};
 use crate::material::{Material, Sampler};
 use microsurface::{AnyNdf, Exact, MicrofacetDistribution, Ndf, NdfKind, ParamError};
@@ -19,7 +21,7 @@ use std::sync::OnceLock;
 /// samplers of the family invert quadratures).
 fn samples<'py>(
     py: Python<'py>,
-    items: &[(&Bound<'py, PyAny>, usize, &str)],
+    items: &[Item<'_, 'py>],
     f: impl Fn(&[&[f64]]) -> microsurface::Sample<f64> + Sync,
 ) -> PyResult<PyObject> {
     let o = apply_vec(py, items, &[3, 0], 256, |_, a, o| {
@@ -45,6 +47,12 @@ fn samples<'py>(
 /// broadcast with the arguments; the functions of directions (``d_wm``, ``lambda_w``,
 /// ``pdf_visible``, ``sample_visible``, ...), the BSDFs built on the NDF and its albedos are
 /// the anisotropic material's.
+///
+/// **Input.** NaN values give NaN outputs; cosines (``u``, ``u_o``, ``u_i``, ``mu``)
+/// outside [−1, 1] (by more than 4ε: a rounded cosine is taken as ±1), uniforms outside
+/// [0, 1), an infinite ``phi``, ``walks`` < 1 and ``n`` <
+/// 0 raise ``ValueError`` naming the argument; parameters raise the library's
+/// ``ValueError``, NaN included. Ctrl-C raises ``KeyboardInterrupt``.
 ///
 /// **Two paths.** The functions of a cosine are always the library's exact f64 path (the
 /// research values): closed forms to ≤ 1e-13 relative, numerical quantities (the family's
@@ -130,14 +138,21 @@ impl NDF {
     }
 
     /// The same NDF at roughness α (αy scaled with it), for the `alpha=` arrays of the
-    /// albedo functions; this material at NaN (no array given).
-    pub fn material_at(&self, alpha: f64) -> Result<Material, ParamError> {
-        if alpha.is_nan() {
+    /// albedo functions; this material at None (no array given).
+    pub fn material_at(&self, alpha: Option<f64>) -> Result<Material, ParamError> {
+        let Some(alpha) = alpha else {
             return self.get_material().clone();
-        }
+        };
         let ay = alpha * (self.alpha_y / self.ndf.alpha());
         let (kind, shape) = (self.ndf.kind(), self.ndf.shape());
         Material::new(kind, alpha, ay, shape, self.exact, self.sampler)
+    }
+
+    /// Whether α is a valid roughness of this material's `alpha=` arrays (αy scaled with it;
+    /// the exact path's check, cheap, where building the fast material fits tables).
+    pub fn check_alpha(&self, alpha: f64) -> Result<(), ParamError> {
+        let ay = alpha * (self.alpha_y / self.ndf.alpha());
+        Exact::new(self.ndf.kind(), alpha, ay, self.ndf.shape()).map(|_| ())
     }
 
     /// The direction API's material, or why there is none; built at the first call.
@@ -155,15 +170,16 @@ impl NDF {
     }
 
     /// The isotropic NDF at each α of `alpha` (broadcast with the arguments), or this one.
+    /// `args`: the arguments with their names and domains (cosines, slopes).
     fn iso<'py, const K: usize>(
         &self,
         py: Python<'py>,
-        args: [&Bound<'py, PyAny>; K],
+        args: [(&Bound<'py, PyAny>, &str, Domain<'_>); K],
         alpha: Option<&Bound<'py, PyAny>>,
         kernel: Option<Kernel>,
         f: impl Fn(&AnyNdf, [f64; K]) -> f64 + Sync,
     ) -> PyResult<PyObject> {
-        if let (Some(k), [u]) = (kernel, &args[..]) {
+        if let (Some(k), [(u, _, _)]) = (kernel, &args[..]) {
             if alpha.is_some() || self.alpha_y == self.ndf.alpha() {
                 return apply_kernel(py, self.ndf.kind(), u, alpha, self.ndf.alpha(), k);
             }
@@ -180,23 +196,38 @@ impl NDF {
             }
             Some(alpha) => {
                 let (kind, shape) = (self.ndf.kind(), self.ndf.shape());
+                let check = |a: f64| AnyNdf::new(kind, a, shape).map(|_| ());
                 // [args..., alpha] through a K + 1 array: the engine's K is const.
-                let items: Vec<_> = args
+                let items: Vec<Item<'_, 'py>> = args
                     .iter()
-                    .chain(std::iter::once(&alpha))
-                    .map(|&a| (a, 0, "argument"))
+                    .map(|&(a, name, d)| (a, 0, name, d))
+                    .chain(std::iter::once((alpha, 0, "alpha", Domain::Param(&check))))
                     .collect();
-                let a = Args::new(py, &items)?;
-                let s: Vec<&[f64]> = (0..=K).map(|k| a.slice(k)).collect::<PyResult<_>>()?;
-                let mut out = a.run(py, 1, &[0], PARALLEL, |i, o| {
-                    let n = AnyNdf::new(kind, s[K][i], shape)?;
-                    o[0] = f(&n, std::array::from_fn(|k| s[k][i]));
+                let mut out = apply_vec(py, &items, &[0], PARALLEL, |_, a, o| {
+                    let n = AnyNdf::new(kind, a[K][0], shape)?;
+                    o[0] = f(&n, std::array::from_fn(|k| a[k][0]));
                     Ok(())
                 })?;
                 Ok(out.remove(0))
             }
         }
     }
+}
+
+/// A cosine argument (u, u_o, u_i): [−1, 1].
+fn cosine<'a, 'py>(
+    u: &'a Bound<'py, PyAny>,
+    name: &'a str,
+) -> (&'a Bound<'py, PyAny>, &'a str, Domain<'a>) {
+    (u, name, Domain::Cosine)
+}
+
+/// A slope argument (p, q): any number.
+fn slope<'a, 'py>(
+    p: &'a Bound<'py, PyAny>,
+    name: &'a str,
+) -> (&'a Bound<'py, PyAny>, &'a str, Domain<'a>) {
+    (p, name, Domain::Any)
 }
 
 #[pymethods]
@@ -268,7 +299,7 @@ impl NDF {
         s + ")"
     }
 
-    /// D(u): the density of microfacet normals per solid angle at u = cos θm (0 for u ≤ 0;
+    /// D(u): the density of microfacet normals per solid angle at u = cos θm ∈ [−1, 1] (0 for u ≤ 0;
     /// +∞ at u = 1 for the NDFs with a pole there: Ei, Erfc, K0, Bessel-K a ≤ 1).
     /// ``alpha``: an array of roughnesses broadcast with u (default: this NDF's).
     #[pyo3(signature = (u, alpha = None))]
@@ -278,7 +309,9 @@ impl NDF {
         u: &Bound<'_, PyAny>,
         alpha: Option<&Bound<'_, PyAny>>,
     ) -> PyResult<PyObject> {
-        self.iso(py, [u], alpha, self.kernel(Q::D), |n, [u]| n.d(u))
+        self.iso(py, [cosine(u, "u")], alpha, self.kernel(Q::D), |n, [u]| {
+            n.d(u)
+        })
     }
 
     /// Smith's Λ(u) of a direction at u = cos θ (Λ(|u|) for u < 0; +∞ at u = 0; 0 at 1).
@@ -290,7 +323,13 @@ impl NDF {
         u: &Bound<'_, PyAny>,
         alpha: Option<&Bound<'_, PyAny>>,
     ) -> PyResult<PyObject> {
-        self.iso(py, [u], alpha, self.kernel(Q::Lambda), |n, [u]| n.lambda(u))
+        self.iso(
+            py,
+            [cosine(u, "u")],
+            alpha,
+            self.kernel(Q::Lambda),
+            |n, [u]| n.lambda(u),
+        )
     }
 
     /// The projected area σ(u) = ∫ max(0, ω·m) D(m) dm of a direction at signed u = cos θ
@@ -303,7 +342,7 @@ impl NDF {
         u: &Bound<'_, PyAny>,
         alpha: Option<&Bound<'_, PyAny>>,
     ) -> PyResult<PyObject> {
-        self.iso(py, [u], alpha, None, |n, [u]| n.sigma(u))
+        self.iso(py, [cosine(u, "u")], alpha, None, |n, [u]| n.sigma(u))
     }
 
     /// Smith's masking G1(u) = 1/(1 + Λ(|u|)). ``alpha`` as for ``d``.
@@ -314,7 +353,9 @@ impl NDF {
         u: &Bound<'_, PyAny>,
         alpha: Option<&Bound<'_, PyAny>>,
     ) -> PyResult<PyObject> {
-        self.iso(py, [u], alpha, self.kernel(Q::G1), |n, [u]| n.g1(u))
+        self.iso(py, [cosine(u, "u")], alpha, self.kernel(Q::G1), |n, [u]| {
+            n.g1(u)
+        })
     }
 
     /// Height-correlated masking-shadowing G2(u_o, u_i) = 1/(1 + Λ(u_o) + Λ(u_i)) (Heitz
@@ -327,7 +368,13 @@ impl NDF {
         u_i: &Bound<'_, PyAny>,
         alpha: Option<&Bound<'_, PyAny>>,
     ) -> PyResult<PyObject> {
-        self.iso(py, [u_o, u_i], alpha, None, |n, [a, b]| n.g2(a, b))
+        self.iso(
+            py,
+            [cosine(u_o, "u_o"), cosine(u_i, "u_i")],
+            alpha,
+            None,
+            |n, [a, b]| n.g2(a, b),
+        )
     }
 
     /// Separable masking-shadowing G1(u_o) G1(u_i), broadcast over both arguments.
@@ -339,9 +386,13 @@ impl NDF {
         u_i: &Bound<'_, PyAny>,
         alpha: Option<&Bound<'_, PyAny>>,
     ) -> PyResult<PyObject> {
-        self.iso(py, [u_o, u_i], alpha, None, |n, [a, b]| {
-            n.g2_separable(a, b)
-        })
+        self.iso(
+            py,
+            [cosine(u_o, "u_o"), cosine(u_i, "u_i")],
+            alpha,
+            None,
+            |n, [a, b]| n.g2_separable(a, b),
+        )
     }
 
     /// The slope density P22(p, q) = D(u) u⁴ (u = 1/√(1 + p² + q²)), broadcast over p and q.
@@ -353,7 +404,13 @@ impl NDF {
         q: &Bound<'_, PyAny>,
         alpha: Option<&Bound<'_, PyAny>>,
     ) -> PyResult<PyObject> {
-        self.iso(py, [p, q], alpha, None, |n, [p, q]| n.p22(p, q))
+        self.iso(
+            py,
+            [slope(p, "p"), slope(q, "q")],
+            alpha,
+            None,
+            |n, [p, q]| n.p22(p, q),
+        )
     }
 
     /// The marginal slope density P2(p) = ∫ P22(p, q) dq.
@@ -364,7 +421,7 @@ impl NDF {
         p: &Bound<'_, PyAny>,
         alpha: Option<&Bound<'_, PyAny>>,
     ) -> PyResult<PyObject> {
-        self.iso(py, [p], alpha, None, |n, [p]| n.p2(p))
+        self.iso(py, [slope(p, "p")], alpha, None, |n, [p]| n.p2(p))
     }
 
     // ---- Directions: the anisotropic material (Rust: microsurface::AnyMicrofacet, or
@@ -374,26 +431,26 @@ impl NDF {
     /// D(wm) of unit normals wm (shape (..., 3)); 0 for wm.z ≤ 0.
     fn d_wm(&self, py: Python<'_>, wm: &Bound<'_, PyAny>) -> PyResult<PyObject> {
         let e = self.material()?;
-        map_vec(py, &[(wm, 3, "wm")], |a| e.d(v3(a[0])))
+        map_vec(py, &[(wm, 3, "wm", Domain::Any)], |a| e.d(v3(a[0])))
     }
 
     /// Smith Λ(w) of directions w (the side w comes from; +∞ on the horizon).
     fn lambda_w(&self, py: Python<'_>, w: &Bound<'_, PyAny>) -> PyResult<PyObject> {
         let e = self.material()?;
-        map_vec(py, &[(w, 3, "w")], |a| e.lambda(v3(a[0])))
+        map_vec(py, &[(w, 3, "w", Domain::Any)], |a| e.lambda(v3(a[0])))
     }
 
     /// G1(w) = 1/(1 + Λ(w)).
     fn g1_w(&self, py: Python<'_>, w: &Bound<'_, PyAny>) -> PyResult<PyObject> {
         let e = self.material()?;
-        map_vec(py, &[(w, 3, "w")], |a| e.g1(v3(a[0])))
+        map_vec(py, &[(w, 3, "w", Domain::Any)], |a| e.g1(v3(a[0])))
     }
 
     /// The projected area σ(w) = |w.z|(1 + Λ(w)) (finite on the horizon), w mirrored to
     /// the upper hemisphere.
     fn sigma_w(&self, py: Python<'_>, w: &Bound<'_, PyAny>) -> PyResult<PyObject> {
         let e = self.material()?;
-        map_vec(py, &[(w, 3, "w")], |a| e.sigma(v3(a[0])))
+        map_vec(py, &[(w, 3, "w", Domain::Any)], |a| e.sigma(v3(a[0])))
     }
 
     /// Height-correlated G2(wo, wi) = 1/(1 + Λ(wo) + Λ(wi)); ``separable=True``:
@@ -407,14 +464,18 @@ impl NDF {
         separable: bool,
     ) -> PyResult<PyObject> {
         let e = self.material()?;
-        map_vec(py, &[(wo, 3, "wo"), (wi, 3, "wi")], |a| {
-            let (wo, wi) = (v3(a[0]), v3(a[1]));
-            if separable {
-                e.g2_separable(wo, wi)
-            } else {
-                e.g2(wo, wi)
-            }
-        })
+        map_vec(
+            py,
+            &[(wo, 3, "wo", Domain::Any), (wi, 3, "wi", Domain::Any)],
+            |a| {
+                let (wo, wi) = (v3(a[0]), v3(a[1]));
+                if separable {
+                    e.g2_separable(wo, wi)
+                } else {
+                    e.g2(wo, wi)
+                }
+            },
+        )
     }
 
     /// The visible-normal density D_w(wm) = G1(w) max(0, w·wm) D(wm)/|w.z| per solid angle
@@ -426,13 +487,16 @@ impl NDF {
         wm: &Bound<'_, PyAny>,
     ) -> PyResult<PyObject> {
         let e = self.material()?;
-        map_vec(py, &[(w, 3, "w"), (wm, 3, "wm")], |a| {
-            e.pdf(v3(a[0]), v3(a[1]))
-        })
+        map_vec(
+            py,
+            &[(w, 3, "w", Domain::Any), (wm, 3, "wm", Domain::Any)],
+            |a| e.pdf(v3(a[0]), v3(a[1])),
+        )
     }
 
     /// Visible normals for directions w: ``sample_visible(w, u)`` with uniforms u of shape
-    /// (..., 2) in [0, 1) (broadcast with w's batch shape), or ``sample_visible(w, rng, n)``
+    /// (..., 2) in [0, 1) (broadcast with w's batch shape; others raise ValueError, NaN gives
+    /// NaN), or ``sample_visible(w, rng, n)``
     /// with a ``numpy.random.Generator`` (n × 2 uniforms drawn from it). Returns
     /// ``Sample(wm, pdf)``: unit normals (..., 3) and their densities ``pdf_visible(w,
     /// wm)``. Samplers of the exact distribution (χ²-tested in the crate; ``sampler`` says
@@ -443,19 +507,21 @@ impl NDF {
         py: Python<'_>,
         w: &Bound<'_, PyAny>,
         u: &Bound<'_, PyAny>,
-        n: Option<usize>,
+        n: Option<i64>,
     ) -> PyResult<PyObject> {
         let e = self.material()?;
         let u = uniforms(py, u, n, 2)?;
-        samples(py, &[(w, 3, "w"), (&u, 2, "u")], |a| {
-            e.sample(v3(a[0]), [a[1][0], a[1][1]])
-        })
+        samples(
+            py,
+            &[(w, 3, "w", Domain::Any), (&u, 2, "u", Domain::Uniform)],
+            |a| e.sample(v3(a[0]), [a[1][0], a[1][1]]),
+        )
     }
 
     /// The density D(wm) cos θm of ``sample_dcos`` (0 for wm.z ≤ 0).
     fn pdf_dcos(&self, py: Python<'_>, wm: &Bound<'_, PyAny>) -> PyResult<PyObject> {
         let e = self.material()?;
-        map_vec(py, &[(wm, 3, "wm")], |a| e.pdf_dcos(v3(a[0])))
+        map_vec(py, &[(wm, 3, "wm", Domain::Any)], |a| e.pdf_dcos(v3(a[0])))
     }
 
     /// Normals distributed as D(m) cos θm: ``sample_dcos(u)`` (u of shape (..., 2)) or
@@ -465,11 +531,13 @@ impl NDF {
         &self,
         py: Python<'_>,
         u: &Bound<'_, PyAny>,
-        n: Option<usize>,
+        n: Option<i64>,
     ) -> PyResult<PyObject> {
         let e = self.material()?;
         let u = uniforms(py, u, n, 2)?;
-        samples(py, &[(&u, 2, "u")], |a| e.sample_dcos([a[0][0], a[0][1]]))
+        samples(py, &[(&u, 2, "u", Domain::Uniform)], |a| {
+            e.sample_dcos([a[0][0], a[0][1]])
+        })
     }
 
     // ---- Multiple scattering.
@@ -482,7 +550,8 @@ impl NDF {
     /// threads). Returns ``Albedo(reflect, reflect_stderr, transmit, transmit_stderr,
     /// total, total_stderr)``: reflect and transmit of shape (..., 4) for the orders 1, 2,
     /// 3 and ≥ 4, with their standard errors; total (...) is reflect + transmit summed
-    /// over orders. ``alpha``: an array of roughnesses broadcast with mu and phi (αy scaled
+    /// over orders. ``mu`` ∈ [−1, 1], ``phi`` finite, ``walks`` ≥ 1 (else ValueError); a NaN
+    /// ``mu`` or ``phi`` gives NaN fields. ``alpha``: an array of roughnesses broadcast with mu and phi (αy scaled
     /// with α), for tables over (α, μ) in one call. The walk runs this NDF's path (fast by
     /// default, ``exact=True`` the exact one).
     #[pyo3(signature = (mu, phi = None, walks = 100_000, seed = 0, eta = None, alpha = None))]
@@ -492,8 +561,8 @@ impl NDF {
         py: Python<'_>,
         mu: &Bound<'_, PyAny>,
         phi: Option<&Bound<'_, PyAny>>,
-        walks: u64,
-        seed: u64,
+        walks: i64,
+        seed: i128,
         eta: Option<f64>,
         alpha: Option<&Bound<'_, PyAny>>,
     ) -> PyResult<PyObject> {

@@ -27,8 +27,17 @@ float32 results are the f64 values rounded once, except GGX's D, Λ and G1 in f3
   ``sample``, single scattering or with multiple scattering (``scattering='kulla_conty'``,
   ``'turquin'`` or ``'walk'``).
 
-Bad parameters raise ``ValueError`` with the library's message; NaN propagates; Ctrl-C
-interrupts long calls. See ``help(microsurface.NDF)`` for the quantities and their accuracy.
+The input contract: a NaN value gives NaN (every output of that element: a sampler's wm
+and pdf, an albedo's fields; a BSDF sample's lobe is 0). A value outside its domain raises
+``ValueError`` naming the argument (for an array, how many elements are bad and the first):
+cosines ``u``, ``u_o``, ``u_i``, ``mu`` in [-1, 1] (a rounded cosine within 4ε beyond is taken as
+±1); uniforms in [0, 1); ``phi`` finite;
+``walks`` ≥ 1, ``n`` ≥ 0, ``seed`` in [0, 2**64). Slopes ``p``, ``q`` take any number.
+Parameters (``alpha``, shapes, ``eta``, ``alpha=`` arrays) raise ``ValueError`` with the
+library's message, NaN included. Ctrl-C raises ``KeyboardInterrupt`` within 0.5 s in
+any call (the loop checks by time), except inside one element that alone runs longer
+(``walks`` of many millions). See ``help(microsurface.NDF)`` for the quantities and their
+accuracy.
 """
 
 from ._microsurface import (  # noqa: F401

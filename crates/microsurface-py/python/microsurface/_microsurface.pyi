@@ -9,9 +9,14 @@ from ._types import Albedo, BSDFSample, Sample
 ArrayLike = Union[float, int, npt.ArrayLike]
 # float32 in → float32 out, otherwise float64; scalars in → a NumPy scalar out.
 Result = Union[np.float64, np.float32, npt.NDArray[np.float64], npt.NDArray[np.float32]]
-# An array of uniforms (last axis 2, or 3 for a BSDF), or a Generator (with n).
+# An array of uniforms in [0, 1) (last axis 2, or 3 for a BSDF), or a Generator (with n >= 0).
 Uniforms = Union[npt.ArrayLike, np.random.Generator]
 Channels = Union[float, Sequence[float]]
+
+# The input contract (the package's docstring): NaN values give NaN; cosines (u, u_o, u_i,
+# mu) outside [-1, 1], uniforms outside [0, 1), an infinite phi, walks < 1, n < 0 and a seed
+# outside [0, 2**64) raise ValueError naming the argument; parameters (alpha, shapes, eta,
+# alpha= arrays) raise ValueError, NaN included; Ctrl-C raises KeyboardInterrupt.
 
 # The package's version (Cargo's, in PEP 440's spelling: 1.0.0rc1).
 __version__: str
@@ -33,7 +38,8 @@ class NDF:
     # GGX, the Exponential NDF and GTR at γ != 2); sampler='warp' needs exact=True.
     @property
     def sampler(self) -> str: ...
-    # Functions of a cosine (isotropic; alpha broadcasts with the arguments).
+    # Functions of a cosine (isotropic; alpha broadcasts with the arguments): u, u_o, u_i in
+    # [-1, 1], slopes p, q any number.
     def d(self, u: ArrayLike, alpha: Optional[ArrayLike] = None) -> Result: ...
     def lambda_(self, u: ArrayLike, alpha: Optional[ArrayLike] = None) -> Result: ...
     def sigma(self, u: ArrayLike, alpha: Optional[ArrayLike] = None) -> Result: ...
@@ -52,7 +58,7 @@ class NDF:
     def sample_visible(self, w: npt.ArrayLike, u: Uniforms, n: Optional[int] = None) -> Sample: ...
     def pdf_dcos(self, wm: npt.ArrayLike) -> Result: ...
     def sample_dcos(self, u: Uniforms, n: Optional[int] = None) -> Sample: ...
-    # Multiple scattering (the random walk).
+    # Multiple scattering (the random walk): mu in [-1, 1], phi finite, walks >= 1.
     def albedo(
         self,
         mu: ArrayLike,
