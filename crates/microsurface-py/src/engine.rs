@@ -80,14 +80,75 @@ pub enum Domain<'a> {
     Param(&'a (dyn Fn(f64) -> Result<(), ParamError> + Sync)),
 }
 
+/// The largest |u| a cosine may have: 1 and 4ε beyond (see [`Domain::Cosine`]).
+const COSINE_MAX: f64 = 1.0 + 4.0 * f64::EPSILON;
+
+/// Whether a value lies outside a domain, written without branches and false for NaN (which
+/// a value may be), so that a pass over an array vectorises: a cosine beyond ±[`COSINE_MAX`],
+/// a uniform outside [0, 1), an infinite number.
+#[inline(always)]
+fn bad_cosine(x: f64) -> bool {
+    x.abs() > COSINE_MAX
+}
+#[inline(always)]
+// (Not `!(0.0..1.0).contains(&x)`, which is true for NaN and branches.)
+#[allow(clippy::manual_range_contains)]
+fn bad_uniform(x: f64) -> bool {
+    (x < 0.0) | (x >= 1.0)
+}
+#[inline(always)]
+fn bad_finite(x: f64) -> bool {
+    x.abs() == f64::INFINITY
+}
+
+/// A float the domain checks read in its own precision (no conversion a lane: float32 arrays
+/// are tested four to a vector), each test false for NaN and branch-free.
+pub trait Lane: Copy + Sync + Into<f64> {
+    /// |x| > m (m representable in Self: 1 + 4ε of the precision, or the largest finite).
+    fn abs_gt(self, m: f64) -> bool;
+    /// x outside [0, 1).
+    fn outside_unit(self) -> bool;
+}
+
+impl Lane for f64 {
+    #[inline(always)]
+    fn abs_gt(self, m: f64) -> bool {
+        self.abs() > m
+    }
+    #[inline(always)]
+    fn outside_unit(self) -> bool {
+        bad_uniform(self)
+    }
+}
+
+impl Lane for f32 {
+    #[inline(always)]
+    fn abs_gt(self, m: f64) -> bool {
+        // (m as f32: 1 + 4ε₃₂ exactly; f64::MAX rounds to f32's ∞, which |x| never exceeds, so
+        // the finite test is |x| == ∞ there.)
+        let m = m as f32;
+        if m == f32::INFINITY {
+            self.abs() == m
+        } else {
+            self.abs() > m
+        }
+    }
+    #[inline(always)]
+    // (Not `!(0.0..1.0).contains(&x)`, which is true for NaN and branches.)
+    #[allow(clippy::manual_range_contains)]
+    fn outside_unit(self) -> bool {
+        (self < 0.0) | (self >= 1.0)
+    }
+}
+
 impl Domain<'_> {
     /// Whether x is allowed (for a value: NaN, or in the domain).
     fn ok(&self, x: f64) -> bool {
         match self {
             Domain::Any => true,
-            Domain::Cosine => x.is_nan() || x.abs() <= 1.0 + 4.0 * f64::EPSILON,
-            Domain::Uniform => x.is_nan() || (0.0..1.0).contains(&x),
-            Domain::Finite => !x.is_infinite(),
+            Domain::Cosine => !bad_cosine(x),
+            Domain::Uniform => !bad_uniform(x),
+            Domain::Finite => !bad_finite(x),
             Domain::Param(check) => check(x).is_ok(),
         }
     }
@@ -119,24 +180,43 @@ pub type Item<'a, 'py> = (&'a Bound<'py, PyAny>, usize, &'a str, Domain<'a>);
 /// ValueError unless every number of `data` (argument `name`'s, broadcast) is in `domain`.
 /// The fast pass over the data the loop reads; on failure the message counts the bad
 /// elements of the argument as given (`given`: it as an array of its own shape).
-pub fn check_domain<T: Copy + Into<f64> + Sync>(
+/// `single`: the argument came as float32, whose rounded cosines reach 4 of its own ε
+/// beyond ±1.
+pub fn check_domain<T: Lane>(
     py: Python<'_>,
     data: &[T],
     name: &str,
     domain: Domain<'_>,
     given: &Bound<'_, PyAny>,
+    single: bool,
 ) -> PyResult<()> {
     if matches!(domain, Domain::Any) {
         return Ok(());
     }
-    // (Rayon above PARALLEL elements: the pass reads memory, a few ns an element alone.)
-    let ok = |x: &T| domain.ok((*x).into());
-    let good = if data.len() >= PARALLEL {
-        data.par_iter().all(ok)
+    // One loop per domain, its test branch-free (an OR over a block, which the compiler
+    // vectorises: a test through the `Domain` match per element cost ~1 ns an element, 5–10×
+    // GGX's D itself); rayon above PARALLEL elements. A parameter's test is the library's.
+    fn any_bad<T: Copy + Sync>(data: &[T], bad: impl Fn(T) -> bool + Sync) -> bool {
+        let block = |c: &[T]| c.iter().fold(false, |acc, &x| acc | bad(x));
+        if data.len() >= PARALLEL {
+            data.par_chunks(PARALLEL).any(block)
+        } else {
+            block(data)
+        }
+    }
+    let cosine_max = if single {
+        1.0 + 4.0 * f64::from(f32::EPSILON)
     } else {
-        data.iter().all(ok)
+        COSINE_MAX
     };
-    if good {
+    let bad = match domain {
+        Domain::Any => false,
+        Domain::Cosine => any_bad(data, |x| x.abs_gt(cosine_max)),
+        Domain::Uniform => any_bad(data, |x| x.outside_unit()),
+        Domain::Finite => any_bad(data, |x| x.abs_gt(f64::MAX)),
+        Domain::Param(check) => any_bad(data, |x| check(x.into()).is_err()),
+    };
+    if !bad {
         return Ok(());
     }
     Err(domain_error(py, name, domain, given))
@@ -225,9 +305,12 @@ impl<'py> Args<'py> {
         let mut f32 = true;
         let mut wide = Vec::with_capacity(items.len());
         let mut batches = Vec::with_capacity(items.len());
+        let mut singles = Vec::with_capacity(items.len());
         for &(x, core, name, _) in items {
             let a = np.call_method1("asarray", (x,))?;
-            f32 &= a.getattr("dtype")?.eq(&float32)?;
+            let single = a.getattr("dtype")?.eq(&float32)?;
+            singles.push(single);
+            f32 &= single;
             let shape: Vec<usize> = a.getattr("shape")?.extract()?;
             if core > 0 && shape.last() != Some(&core) {
                 return Err(PyValueError::new_err(format!(
@@ -248,7 +331,7 @@ impl<'py> Args<'py> {
             .extract()?;
         let n = batch.iter().product();
         let mut arrays = Vec::with_capacity(items.len());
-        for (a, &(_, core, name, domain)) in wide.into_iter().zip(items) {
+        for ((a, &(_, core, name, domain)), single) in wide.into_iter().zip(items).zip(singles) {
             let mut full = batch.clone();
             if core > 0 {
                 full.push(core);
@@ -259,7 +342,7 @@ impl<'py> Args<'py> {
                 .call_method1("reshape", (-1,))?
                 .downcast_into::<PyArray1<f64>>()?;
             let flat = flat.readonly();
-            check_domain(py, flat.as_slice()?, name, domain, &a)?;
+            check_domain(py, flat.as_slice()?, name, domain, &a, single)?;
             arrays.push(flat);
         }
         Ok(Args {
@@ -406,12 +489,15 @@ pub fn compute_blocks_of<'py, T: numpy::Element + Send>(
         drop(rw);
         return Ok(out);
     }
-    // (The first chunk: one element a thread, or one slice-kernel block a thread, whatever
-    // the elements cost (a quadrature or a walk of 10⁵ steps as well as a closed form); then
-    // chunks sized to take about CHUNK by the time the last one took, growing at most
-    // GROWTH×. Cheap elements reach chunks of millions in a few steps.)
+    // (The first chunk: one element a thread, whatever the elements cost (a quadrature or a
+    // walk of 10⁵ steps as well as a closed form); then chunks sized to take about CHUNK by
+    // the time the last one took, growing at most GROWTH×. Cheap elements reach chunks of
+    // millions in a few steps. Slice kernels (block > 1: GGX's closed forms, ≤ 2 ns an
+    // element) start at 2^20 elements, ~1 ms: each check takes the GIL back and ends a rayon
+    // join, ~20 µs, and the ramp's three checks and single-threaded first chunk had made a
+    // float32 call over 10⁶ elements 2–3× slower.)
     let threads = rayon::current_num_threads();
-    let mut chunk = block * threads;
+    let mut chunk = if block > 1 { 1 << 20 } else { threads };
     let mut start = 0;
     let result: PyResult<()> = py.allow_threads(|| {
         while start < n {

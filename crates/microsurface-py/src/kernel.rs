@@ -145,9 +145,9 @@ fn kernel_f32<'py>(
     let (ro, ra) = (u.readonly(), alpha.as_ref().map(|a| a.readonly()));
     let us = ro.as_slice()?;
     let als = ra.as_ref().map(|r| r.as_slice()).transpose()?;
-    engine::check_domain(py, us, items[0].2, items[0].3, items[0].0)?;
+    engine::check_domain(py, us, items[0].2, items[0].3, items[0].0, true)?;
     if let Some(al) = als {
-        engine::check_domain(py, al, items[1].2, items[1].3, items[1].0)?;
+        engine::check_domain(py, al, items[1].2, items[1].3, items[1].0, true)?;
     }
     let constant = [alpha0 as f32; BLOCK];
     let out =

@@ -744,3 +744,9 @@ def test_rounded_cosines_are_taken_as_one():
         assert g.lambda_(u) == g.lambda_(1.0) and g.d(u) == g.d(1.0) and g.sigma(-u) == g.sigma(-1.0)
     with pytest.raises(ValueError, match=r"u must be in \[-1, 1\]"):
         g.lambda_(1 + 5 * 2.0**-52)
+    # float32: within 4 of float32's ε (GGX's f32 kernels, and the engine for the others).
+    for ndf in (g, mf.Beckmann(0.3)):
+        u32 = np.array([1, 1 + 2.0**-23, 1 + 2.0**-21, -1 - 2.0**-22], np.float32)
+        assert np.all(np.isfinite(ndf.lambda_(u32))) and np.all(ndf.lambda_(u32)[:3] == ndf.lambda_(np.float32(1)))
+        with pytest.raises(ValueError, match=r"u must be in \[-1, 1\]"):
+            ndf.lambda_(np.array([1 + 2.0**-20], np.float32))
