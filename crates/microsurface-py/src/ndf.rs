@@ -15,6 +15,7 @@ use crate::material::{Material, Sampler};
 use microsurface::{AnyNdf, Exact, MicrofacetDistribution, Ndf, NdfKind, ParamError};
 use pyo3::exceptions::PyValueError;
 use pyo3::prelude::*;
+use pyo3::types::PyTuple;
 use std::sync::OnceLock;
 
 /// ``Sample(wm, pdf)`` of a sampler per element (parallel from 256 elements: the exact
@@ -72,6 +73,10 @@ fn samples<'py>(
 /// normals (see ``sampler``). The fits of the fast path are made at the first direction
 /// call and cached for the process (GTR: per (α, γ), 1–90 ms; the family: per shape,
 /// 1–3 ms, Bessel-K ~0.1 s).
+///
+/// **Python objects.** Immutable: ``repr`` is the constructor call that builds it
+/// (``microsurface.GTR(0.3, gamma=1.5)``), ``==`` and ``hash`` compare the class and the
+/// parameters, ``pickle``, ``copy`` and ``deepcopy`` round-trip it.
 #[pyclass(subclass, frozen, module = "microsurface")]
 #[derive(Clone)]
 pub struct NDF {
@@ -130,6 +135,27 @@ impl NDF {
             sampler,
             material,
         })
+    }
+
+    /// The parameters `==` and `hash` compare: the kind, α, αy and the shape by their bits
+    /// (−0.0 cannot reach them: α > 0), `exact` and the sampler.
+    fn key(&self) -> (&'static str, u64, u64, Option<u64>, bool, &'static str) {
+        (
+            self.ndf.kind().name(),
+            self.ndf.alpha().to_bits(),
+            self.alpha_y.to_bits(),
+            self.ndf.shape().map(f64::to_bits),
+            self.exact,
+            self.sampler_arg(),
+        )
+    }
+
+    /// `sampler` as the constructor takes it.
+    fn sampler_arg(&self) -> &'static str {
+        match self.sampler {
+            Sampler::Posterior => "posterior",
+            Sampler::Warp => "warp",
+        }
     }
 
     /// The fast path of quantity q, where it is the closed form (GGX).
@@ -285,18 +311,76 @@ impl NDF {
         self.ndf.kind().name()
     }
 
-    fn __repr__(&self) -> String {
-        let mut s = format!("microsurface.NDF({}, alpha={}", self.name(), self.alpha());
-        if self.alpha_y != self.alpha() {
-            s += &format!(", alpha_y={}", self.alpha_y);
+    /// The constructor call that builds this NDF, evaluable back:
+    /// ``microsurface.GTR(0.3, gamma=1.5, alpha_y=0.2, exact=True)`` (numbers as Python
+    /// writes them, so the round trip is exact; defaults left out).
+    fn __repr__(slf: &Bound<'_, Self>) -> PyResult<String> {
+        let py = slf.py();
+        let this = slf.get();
+        let num = |x: f64| -> PyResult<String> { Ok(x.into_pyobject(py)?.repr()?.to_string()) };
+        let mut s = format!(
+            "microsurface.{}({}",
+            slf.get_type().name()?,
+            num(this.ndf.alpha())?
+        );
+        if let (Some(shape), Some(name)) = (this.ndf.shape(), this.ndf.kind().shape_name()) {
+            s += &format!(", {name}={}", num(shape)?);
         }
-        if let Some(shape) = self.ndf.shape() {
-            s += &format!(", shape={shape}");
+        if this.alpha_y != this.ndf.alpha() {
+            s += &format!(", alpha_y={}", num(this.alpha_y)?);
         }
-        if self.exact {
+        if this.exact {
             s += ", exact=True";
         }
-        s + ")"
+        if this.sampler == Sampler::Warp {
+            s += ", sampler='warp'";
+        }
+        Ok(s + ")")
+    }
+
+    /// The constructor's arguments (``pickle``, ``copy``; joblib and multiprocessing pass
+    /// NDFs this way): (class, (alpha[, shape], alpha_y, exact, sampler)).
+    fn __reduce__<'py>(
+        slf: &Bound<'py, Self>,
+    ) -> PyResult<(Bound<'py, PyAny>, Bound<'py, PyTuple>)> {
+        let py = slf.py();
+        let this = slf.get();
+        let sampler = this.sampler_arg();
+        let args = match this.ndf.shape() {
+            Some(shape) => {
+                (this.ndf.alpha(), shape, this.alpha_y, this.exact, sampler).into_pyobject(py)?
+            }
+            None => (this.ndf.alpha(), this.alpha_y, this.exact, sampler).into_pyobject(py)?,
+        };
+        Ok((slf.get_type().into_any(), args))
+    }
+
+    /// An NDF is immutable: its copy is itself (its cached fast-path material shared).
+    fn __copy__(slf: PyRef<'_, Self>) -> PyRef<'_, Self> {
+        slf
+    }
+
+    /// As ``__copy__``.
+    fn __deepcopy__<'py>(slf: PyRef<'py, Self>, _memo: &Bound<'py, PyAny>) -> PyRef<'py, Self> {
+        slf
+    }
+
+    /// Equal when of the same class with the same parameters (α, αy, shape, ``exact``,
+    /// ``sampler``).
+    fn __eq__(slf: &Bound<'_, Self>, other: &Bound<'_, PyAny>) -> bool {
+        let Ok(o) = other.downcast::<NDF>() else {
+            return false;
+        };
+        slf.get_type().is(o.get_type()) && slf.get().key() == o.get().key()
+    }
+
+    /// By the parameters ``==`` compares.
+    fn __hash__(slf: &Bound<'_, Self>) -> PyResult<isize> {
+        let key = slf.get().key();
+        let mut h = std::collections::hash_map::DefaultHasher::new();
+        std::hash::Hash::hash(&slf.get_type().name()?.to_string(), &mut h);
+        std::hash::Hash::hash(&key, &mut h);
+        Ok(std::hash::Hasher::finish(&h) as isize)
     }
 
     /// D(u): the density of microfacet normals per solid angle at u = cos θm ∈ [−1, 1] (0 for u ≤ 0;

@@ -750,3 +750,58 @@ def test_rounded_cosines_are_taken_as_one():
         assert np.all(np.isfinite(ndf.lambda_(u32))) and np.all(ndf.lambda_(u32)[:3] == ndf.lambda_(np.float32(1)))
         with pytest.raises(ValueError, match=r"u must be in \[-1, 1\]"):
             ndf.lambda_(np.array([1 + 2.0**-20], np.float32))
+
+
+def _every_ndf():
+    # Every class, plain and shaped, anisotropic, on the exact path, with the warp sampler.
+    return [
+        mf.GGX(0.5), mf.GGX(0.3, 0.1), mf.Beckmann(1e-6, exact=True), mf.DoubleGGX(2.0),
+        mf.Exponential(0.05), mf.Ei(0.3), mf.Erfc(0.7, exact=True, sampler="warp"), mf.K0(0.3),
+        mf.GTR(0.2, 0.5), mf.GTR(0.3, gamma=2.0, alpha_y=0.2), mf.StudentT(0.3, 2.5),
+        mf.StudentT(0.3, 1.2), mf.BesselK(0.4, a=0.7), mf.GenExponential(0.3, 8.0),
+        mf.GGX(0.1 + 0.2),  # (a float whose shortest repr is long)
+    ]
+
+
+def test_ndfs_are_ordinary_python_objects():
+    import copy
+    import pickle
+
+    ndfs = _every_ndf()
+    for n in ndfs:
+        # repr evaluates back to an equal NDF (numbers as Python writes them: exact).
+        back = eval(repr(n), {"microsurface": mf})
+        assert type(back) is type(n) and back == n and hash(back) == hash(n), repr(n)
+        assert repr(n).startswith(f"microsurface.{type(n).__name__}(")
+        # pickle (every protocol), copy and deepcopy round-trip to an equal NDF that computes
+        # the same values.
+        for proto in range(pickle.HIGHEST_PROTOCOL + 1):
+            p = pickle.loads(pickle.dumps(n, protocol=proto))
+            assert type(p) is type(n) and p == n and hash(p) == hash(n)
+            assert (p.alpha, p.alpha_y, p.shape, p.exact, p.sampler) == (n.alpha, n.alpha_y, n.shape, n.exact, n.sampler)
+        assert copy.copy(n) == n and copy.deepcopy(n) == n
+        w = np.array([0.6, 0.0, 0.8])
+        if n.name != "student_t" or n.shape > 1.5:
+            assert pickle.loads(pickle.dumps(n)).lambda_w(w) == n.lambda_w(w)
+    # == and hash by the class and the parameters.
+    assert mf.GGX(0.5) == mf.GGX(0.5) and mf.GGX(0.5) != mf.GGX(0.5000000000000001)
+    assert mf.GGX(0.5) != mf.Beckmann(0.5) and mf.GGX(0.5) != mf.GGX(0.5, exact=True)
+    assert mf.GTR(0.3, 2.0) != mf.GGX(0.3)  # (the same D, another class)
+    assert mf.GGX(0.5) != 0.5 and mf.GGX(0.5) != "ggx"
+    assert len({mf.GGX(0.5), mf.GGX(0.5), mf.Beckmann(0.5), *ndfs, *ndfs}) == len(set(map(repr, ndfs)) | {repr(mf.Beckmann(0.5))})
+
+
+def test_ndfs_cross_process_boundaries():
+    # multiprocessing (and joblib, which pickles the same way) sends NDFs to workers.
+    from concurrent.futures import ProcessPoolExecutor
+
+    ndfs = [mf.GGX(0.3), mf.StudentT(0.4, 3.0), mf.BesselK(0.4, a=0.7, exact=True)]
+    u = np.linspace(0.1, 0.9, 5)
+    with ProcessPoolExecutor(2) as pool:
+        got = list(pool.map(_lambda_of, ndfs, [u] * len(ndfs)))
+    for n, g in zip(ndfs, got):
+        assert np.array_equal(g, n.lambda_(u))
+
+
+def _lambda_of(n, u):
+    return n.lambda_(u)

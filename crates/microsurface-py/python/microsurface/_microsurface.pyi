@@ -1,5 +1,5 @@
 # Type stubs for the compiled module (see the docstrings for formulas and accuracy).
-from typing import Optional, Sequence, Union
+from typing import Optional, Sequence, Tuple, Union
 
 import numpy as np
 import numpy.typing as npt
@@ -22,6 +22,11 @@ Channels = Union[float, Sequence[float]]
 __version__: str
 
 class NDF:
+    # Ordinary immutable Python objects: repr evaluates back (microsurface.GTR(0.3,
+    # gamma=1.5)), == and hash by class and parameters, pickle/copy/deepcopy round-trip.
+    def __eq__(self, other: object) -> bool: ...
+    def __hash__(self) -> int: ...
+    def __reduce__(self) -> Tuple[type, tuple]: ...
     @property
     def alpha(self) -> float: ...
     @property
