@@ -14,6 +14,7 @@ use microsurface::scattering::{
 };
 use pyo3::exceptions::PyValueError;
 use pyo3::prelude::*;
+use pyo3::types::PyTuple;
 
 /// f's channels: a dielectric's one, a conductor's N.
 trait Channels: Copy {
@@ -152,10 +153,77 @@ where
 #[pyclass(name = "BSDF", subclass, frozen, module = "microsurface")]
 pub struct PyBsdf {
     inner: Box<dyn AnyBsdf>,
+    /// The constructor's arguments, normalised (channels as tuples of floats): what
+    /// `__reduce__` passes back, `__repr__` writes and `==` compares.
+    args: Py<PyTuple>,
+    /// Their names, for `__repr__`'s keywords (the first, the NDF, is positional).
+    names: &'static [&'static str],
+}
+
+impl PyBsdf {
+    fn new(
+        py: Python<'_>,
+        inner: Box<dyn AnyBsdf>,
+        args: Vec<PyObject>,
+        names: &'static [&'static str],
+    ) -> PyResult<Self> {
+        Ok(PyBsdf {
+            inner,
+            args: PyTuple::new(py, args)?.unbind(),
+            names,
+        })
+    }
 }
 
 #[pymethods]
 impl PyBsdf {
+    /// The constructor call that builds this BSDF, evaluable back:
+    /// ``microsurface.Conductor(microsurface.GGX(0.3), eta=(0.2,), k=(3.9,), masking='correlated', scattering='single')``.
+    fn __repr__(slf: &Bound<'_, Self>) -> PyResult<String> {
+        let py = slf.py();
+        let args = slf.get().args.bind(py);
+        let mut s = format!("microsurface.{}(", slf.get_type().name()?);
+        for (i, (a, name)) in args.iter().zip(slf.get().names).enumerate() {
+            if i > 0 {
+                s += &format!(", {name}=");
+            }
+            s += &a.repr()?.to_string();
+        }
+        Ok(s + ")")
+    }
+
+    /// The constructor's arguments (``pickle``, ``copy``; joblib and multiprocessing).
+    fn __reduce__<'py>(slf: &Bound<'py, Self>) -> (Bound<'py, PyAny>, Bound<'py, PyTuple>) {
+        (
+            slf.get_type().into_any(),
+            slf.get().args.bind(slf.py()).clone(),
+        )
+    }
+
+    /// A BSDF is immutable: its copy is itself.
+    fn __copy__(slf: PyRef<'_, Self>) -> PyRef<'_, Self> {
+        slf
+    }
+
+    /// As ``__copy__``.
+    fn __deepcopy__<'py>(slf: PyRef<'py, Self>, _memo: &Bound<'py, PyAny>) -> PyRef<'py, Self> {
+        slf
+    }
+
+    /// Equal when of the same class with equal arguments (the NDF by its own ``==``).
+    fn __eq__(slf: &Bound<'_, Self>, other: &Bound<'_, PyAny>) -> PyResult<bool> {
+        let Ok(o) = other.downcast::<PyBsdf>() else {
+            return Ok(false);
+        };
+        let py = slf.py();
+        Ok(slf.get_type().is(o.get_type()) && slf.get().args.bind(py).eq(o.get().args.bind(py))?)
+    }
+
+    /// By the arguments ``==`` compares.
+    fn __hash__(slf: &Bound<'_, Self>) -> PyResult<isize> {
+        slf.get().args.bind(slf.py()).hash()
+    }
+
     /// The number of channels of f (1 for a dielectric and a one-channel conductor).
     #[getter]
     fn channels(&self) -> usize {
@@ -266,14 +334,32 @@ impl Conductor {
     #[new]
     #[pyo3(signature = (ndf, eta = None, k = None, masking = "correlated", scattering = "single"))]
     fn new(
-        ndf: PyRef<'_, NDF>,
+        ndf: Bound<'_, NDF>,
         eta: Option<&Bound<'_, PyAny>>,
         k: Option<&Bound<'_, PyAny>>,
         masking: &str,
         scattering: &str,
     ) -> PyResult<(Self, PyBsdf)> {
-        let d = ndf.material()?.clone();
+        let py = ndf.py();
+        let d = ndf.get().material()?.clone();
         let (eta, k) = (channels(eta)?, channels(k)?);
+        let args = vec![
+            ndf.clone().into_any().unbind(),
+            eta.clone()
+                .map(|v| PyTuple::new(py, v))
+                .transpose()?
+                .into_pyobject(py)?
+                .into_any()
+                .unbind(),
+            k.clone()
+                .map(|v| PyTuple::new(py, v))
+                .transpose()?
+                .into_pyobject(py)?
+                .into_any()
+                .unbind(),
+            masking.into_pyobject(py)?.into_any().unbind(),
+            scattering.into_pyobject(py)?.into_any().unbind(),
+        ];
         let m = self::masking(masking)?;
         let model = self::model(scattering, m)?;
         let inner = match (eta, k) {
@@ -318,7 +404,15 @@ impl Conductor {
             }
             (None, Some(_)) => return Err(PyValueError::new_err("k needs eta")),
         };
-        Ok((Conductor, PyBsdf { inner }))
+        Ok((
+            Conductor,
+            PyBsdf::new(
+                py,
+                inner,
+                args,
+                &["ndf", "eta", "k", "masking", "scattering"],
+            )?,
+        ))
     }
 }
 
@@ -339,13 +433,21 @@ impl Dielectric {
     #[new]
     #[pyo3(signature = (ndf, eta, masking = "correlated", transport = "radiance", scattering = "single"))]
     fn new(
-        ndf: PyRef<'_, NDF>,
+        ndf: Bound<'_, NDF>,
         eta: f64,
         masking: &str,
         transport: &str,
         scattering: &str,
     ) -> PyResult<(Self, PyBsdf)> {
-        let d = ndf.material()?.clone();
+        let py = ndf.py();
+        let d = ndf.get().material()?.clone();
+        let args = vec![
+            ndf.clone().into_any().unbind(),
+            eta.into_pyobject(py)?.into_any().unbind(),
+            masking.into_pyobject(py)?.into_any().unbind(),
+            transport.into_pyobject(py)?.into_any().unbind(),
+            scattering.into_pyobject(py)?.into_any().unbind(),
+        ];
         if !(eta > 0.0 && eta.is_finite() && eta != 1.0) {
             return Err(PyValueError::new_err(format!(
                 "eta must be a positive finite number other than 1 (got {eta})"
@@ -370,7 +472,15 @@ impl Dielectric {
                 MultipleScattering::<_, _, 1>::new(d, DielectricFacets(eta)).with_transport(t),
             ),
         };
-        Ok((Dielectric, PyBsdf { inner }))
+        Ok((
+            Dielectric,
+            PyBsdf::new(
+                py,
+                inner,
+                args,
+                &["ndf", "eta", "masking", "transport", "scattering"],
+            )?,
+        ))
     }
 }
 

@@ -805,3 +805,29 @@ def test_ndfs_cross_process_boundaries():
 
 def _lambda_of(n, u):
     return n.lambda_(u)
+
+
+def test_bsdfs_are_ordinary_python_objects():
+    import copy
+    import pickle
+
+    g = mf.GGX(0.3, 0.2)
+    bsdfs = [
+        mf.Conductor(g), mf.Conductor(g, 0.2, 3.9), mf.Conductor(g, [0.18, 0.42, 1.37], np.array([3.4, 2.4, 1.8])),
+        mf.Conductor(mf.BesselK(0.4, a=0.7), 1.5, masking="separable"),
+        mf.Conductor(mf.GGX(0.4), 1.5, 2.0, scattering="kulla_conty"),
+        mf.Conductor(mf.Beckmann(0.5, exact=True), scattering="walk"),
+        mf.Dielectric(g, 1.5), mf.Dielectric(mf.StudentT(0.3, 2.5), 1 / 1.5, masking="correlated_beta", transport="importance"),
+    ]
+    wo, wi = np.array([0.0, 0.6, 0.8]), np.array([0.48, 0.0, 0.877])
+    for b in bsdfs:
+        back = eval(repr(b), {"microsurface": mf})
+        assert type(back) is type(b) and back == b and hash(back) == hash(b), repr(b)
+        for proto in range(pickle.HIGHEST_PROTOCOL + 1):
+            p = pickle.loads(pickle.dumps(b, protocol=proto))
+            assert type(p) is type(b) and p == b and hash(p) == hash(b)
+            assert np.array_equal(p.eval(wo, wi), b.eval(wo, wi)) and p.pdf(wo, wi) == b.pdf(wo, wi)
+        assert copy.copy(b) == b and copy.deepcopy(b) == b
+    assert mf.Conductor(g, 0.2, 3.9) != mf.Conductor(g, 0.2, 3.8) and mf.Dielectric(g, 1.5) != mf.Conductor(g, 1.5)
+    assert mf.Conductor(g, [0.2], [3.9]) == mf.Conductor(g, 0.2, 3.9)  # (channels normalised)
+    assert len({*bsdfs, *bsdfs}) == len(bsdfs)

@@ -27,7 +27,7 @@ float32 results are the f64 values rounded once, except GGX's D, Λ and G1 in f3
   ``sample``, single scattering or with multiple scattering (``scattering='kulla_conty'``,
   ``'turquin'`` or ``'walk'``).
 
-NDFs are ordinary immutable Python objects: ``repr`` evaluates back
+NDFs and BSDFs are ordinary immutable Python objects: ``repr`` evaluates back
 (``microsurface.GTR(0.3, gamma=1.5)``), ``==`` and ``hash`` compare the class and the
 parameters, and ``pickle``, ``copy`` and ``deepcopy`` round-trip them (so joblib and
 multiprocessing pass them to workers).
