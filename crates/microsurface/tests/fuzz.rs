@@ -2534,10 +2534,9 @@ fn bsdf_contract<F: fast::Real + std::fmt::Debug + 'static>(test: u64, draw: fn(
                 // eval_pdf is (eval, pdf) bit for bit.
                 let (fe, pe) = b.eval_pdf(wo, wi);
                 let same = |a: F, c: F| a.to_f64().to_bits() == c.to_f64().to_bits();
-                fails.check(
-                    same(pe, p) && (0..3).all(|k| same(fe[k], f[k])),
-                    || format!("eval_pdf ({fe:?}, {pe:?}) ≠ ({f:?}, {p:?}) at {}", ctx()),
-                );
+                fails.check(same(pe, p) && (0..3).all(|k| same(fe[k], f[k])), || {
+                    format!("eval_pdf ({fe:?}, {pe:?}) ≠ ({f:?}, {p:?}) at {}", ctx())
+                });
                 evals(1);
                 if let Some(lobe) = &lobe {
                     // F ≤ 1: f at most the F = 1 lobe's; reciprocity on wi's mirror image
