@@ -270,6 +270,20 @@ impl<F: Real, D: MicrofacetDistribution<F>, Fr: Fresnel<F, N>, const N: usize>
         &self.dist
     }
 
+    /// The half vector of a pair the rough lobe reaches (same side, neither on the horizon, a
+    /// rough surface), else `None`: what `eval`, `pdf` and `eval_pdf` share.
+    #[inline(always)]
+    fn lobe_normal(&self, wo: [F; 3], wi: [F; 3]) -> Option<[F; 3]> {
+        if !same_hemisphere(wo, wi)
+            || on_horizon(wo[2])
+            || on_horizon(wi[2])
+            || self.dist.effectively_smooth()
+        {
+            return None;
+        }
+        half_vector_reflection(wo, wi)
+    }
+
     /// (The slice kernels' view: the Fresnel term and the masking.)
     pub(crate) fn fresnel_masking(&self) -> (&Fr, Masking) {
         (&self.fresnel, self.masking)
@@ -283,14 +297,7 @@ impl<F: Real, D: MicrofacetDistribution<F>, Fr: Fresnel<F, N>, const N: usize> B
 
     #[inline]
     fn eval(&self, wo: [F; 3], wi: [F; 3]) -> [F; N] {
-        if !same_hemisphere(wo, wi)
-            || on_horizon(wo[2])
-            || on_horizon(wi[2])
-            || self.dist.effectively_smooth()
-        {
-            return [F::ZERO; N];
-        }
-        let Some(wm) = half_vector_reflection(wo, wi) else {
+        let Some(wm) = self.lobe_normal(wo, wi) else {
             return [F::ZERO; N];
         };
         // F at the mean of |wo·wm| and |wi·wm| (equal but for rounding, which the half
@@ -305,14 +312,7 @@ impl<F: Real, D: MicrofacetDistribution<F>, Fr: Fresnel<F, N>, const N: usize> B
 
     #[inline]
     fn pdf(&self, wo: [F; 3], wi: [F; 3]) -> F {
-        if !same_hemisphere(wo, wi)
-            || on_horizon(wo[2])
-            || on_horizon(wi[2])
-            || self.dist.effectively_smooth()
-        {
-            return F::ZERO;
-        }
-        let Some(wm) = half_vector_reflection(wo, wi) else {
+        let Some(wm) = self.lobe_normal(wo, wi) else {
             return F::ZERO;
         };
         self.dist.pdf(wo, wm) / (F::from_f64(4.0) * dot(wo, wm).abs())
@@ -322,14 +322,7 @@ impl<F: Real, D: MicrofacetDistribution<F>, Fr: Fresnel<F, N>, const N: usize> B
     fn eval_pdf(&self, wo: [F; 3], wi: [F; 3]) -> ([F; N], F) {
         // `eval` and `pdf` with their shared part once: the same operations on the same
         // numbers, so bit for bit theirs.
-        if !same_hemisphere(wo, wi)
-            || on_horizon(wo[2])
-            || on_horizon(wi[2])
-            || self.dist.effectively_smooth()
-        {
-            return ([F::ZERO; N], F::ZERO);
-        }
-        let Some(wm) = half_vector_reflection(wo, wi) else {
+        let Some(wm) = self.lobe_normal(wo, wi) else {
             return ([F::ZERO; N], F::ZERO);
         };
         let co = dot(wo, wm).abs();
