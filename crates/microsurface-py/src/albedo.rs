@@ -2,7 +2,7 @@
 //! (the body of `NDF.albedo`), the single-scattering albedo by quadrature
 //! (`single_scattering_albedo`), and the tables of energy compensation (`AlbedoTable`).
 
-use crate::engine::{apply_vec, count, map_vec, named, Domain, Item};
+use crate::engine::{count, map_vec, named, Domain, Item};
 use crate::ndf::NDF;
 use microsurface::scattering::{
     self, AlbedoTable as Table, DielectricFacets, Heights, MirrorFacets, RandomWalk,
@@ -18,8 +18,7 @@ fn wo_of(mu: f64, phi: f64) -> [f64; 3] {
 }
 
 /// `NDF.albedo` (its docstring there): the random walk's albedo by order of `ndf`'s
-/// material, or of the same NDF at each α of `alpha`.
-#[allow(clippy::too_many_arguments)]
+/// material at each element.
 pub fn walk(
     ndf: &NDF,
     py: Python<'_>,
@@ -28,9 +27,8 @@ pub fn walk(
     walks: i64,
     seed: i128,
     eta: Option<f64>,
-    alpha: Option<&Bound<'_, PyAny>>,
 ) -> PyResult<PyObject> {
-    if alpha.is_none() {
+    if !ndf.batched() {
         ndf.material()?;
     }
     let walks = count(walks, "walks", 1)? as u64;
@@ -44,10 +42,9 @@ pub fn walk(
         }
     }
     let zero = PyFloat::new(py, 0.0).into_any();
-    let check = |a: f64| ndf.check_alpha(a);
-    let items = items(mu, phi.unwrap_or(&zero), alpha, &check);
-    let o = apply_vec(py, &items, &[4, 4, 4, 4, 0, 0], 2, |i, a, o| {
-        let surface = RandomWalk::new(ndf.material_at(a.get(2).map(|a| a[0]))?, Heights::Uniform);
+    let items = items(mu, phi.unwrap_or(&zero));
+    let o = ndf.each(py, &items, &[4, 4, 4, 4, 0, 0], 2, |d, i, a, o| {
+        let surface = RandomWalk::new(d.clone(), Heights::Uniform);
         let wo = wo_of(a[0][0], a[1][0]);
         // (One stream per element, whatever thread runs it.)
         let seed = seed.wrapping_add((i as u64).wrapping_mul(0x9E37_79B9_7F4A_7C15));
@@ -67,56 +64,39 @@ pub fn walk(
         o[12..16].copy_from_slice(&r.transmit.stderr);
         o[16] = r.total.mean;
         o[17] = r.total.stderr;
-        Ok(())
     })?;
     named(py, "Albedo", o)
 }
 
-/// The arguments of the albedos: mu (a cosine), phi (finite), and alpha where given (a
-/// parameter array, checked by `check`).
-fn items<'a, 'py>(
-    mu: &'a Bound<'py, PyAny>,
-    phi: &'a Bound<'py, PyAny>,
-    alpha: Option<&'a Bound<'py, PyAny>>,
-    check: &'a (dyn Fn(f64) -> Result<(), microsurface::ParamError> + Sync),
-) -> Vec<Item<'a, 'py>> {
-    let mut items = vec![
+/// The arguments of the albedos: mu (a cosine) and phi (finite).
+fn items<'a, 'py>(mu: &'a Bound<'py, PyAny>, phi: &'a Bound<'py, PyAny>) -> Vec<Item<'a, 'py>> {
+    vec![
         (mu, 0, "mu", Domain::Cosine),
         (phi, 0, "phi", Domain::Finite),
-    ];
-    if let Some(alpha) = alpha {
-        items.push((alpha, 0, "alpha", Domain::Param(check)));
-    }
-    items
+    ]
 }
 
 /// The single-scattering albedo E₁(wo) of the F = 1 conductor (height-correlated G2) by
 /// adaptive quadrature (≤ 1e-9 relative requested, 1e-6 guaranteed): at cos θo = ``mu``
-/// and azimuth ``phi``, broadcast. Each element is a quadrature (milliseconds; the family's
-/// singular members longer): parallel, Ctrl-C between chunks. ``alpha``: an array of
-/// roughnesses broadcast with mu and phi (αy scaled with α). The integrand runs the NDF's
-/// path (the fast kernels, or the exact path with ``exact=True``).
+/// and azimuth ``phi``, broadcast together and with the NDF's parameter arrays (tables over
+/// (α, μ) in one call). Each element is a quadrature (milliseconds; the family's singular
+/// members longer): parallel, Ctrl-C between chunks. The integrand runs the NDF's path (the
+/// fast kernels, or the exact path with ``exact=True``).
 #[pyfunction]
-#[pyo3(signature = (ndf, mu, phi = None, alpha = None))]
+#[pyo3(signature = (ndf, mu, phi = None))]
 fn single_scattering_albedo(
     py: Python<'_>,
     ndf: PyRef<'_, NDF>,
     mu: &Bound<'_, PyAny>,
     phi: Option<&Bound<'_, PyAny>>,
-    alpha: Option<&Bound<'_, PyAny>>,
 ) -> PyResult<PyObject> {
-    if alpha.is_none() {
+    if !ndf.batched() {
         ndf.material()?;
     }
-    // (A copy: the loop runs without the GIL.)
-    let ndf: NDF = (*ndf).clone();
     let zero = pyo3::types::PyFloat::new(py, 0.0).into_any();
-    let check = |a: f64| ndf.check_alpha(a);
-    let items = items(mu, phi.unwrap_or(&zero), alpha, &check);
-    let mut o = apply_vec(py, &items, &[0], 2, |_, a, o| {
-        let d = ndf.material_at(a.get(2).map(|a| a[0]))?;
-        o[0] = microsurface::scattering::single_scattering_albedo(&d, wo_of(a[0][0], a[1][0]));
-        Ok(())
+    let items = items(mu, phi.unwrap_or(&zero));
+    let mut o = ndf.each(py, &items, &[0], 2, |d, _, a, o| {
+        o[0] = microsurface::scattering::single_scattering_albedo(d, wo_of(a[0][0], a[1][0]));
     })?;
     Ok(o.remove(0))
 }

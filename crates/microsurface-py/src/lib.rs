@@ -40,6 +40,7 @@ mod engine;
 mod kernel;
 mod material;
 mod ndf;
+mod params;
 
 use pyo3::prelude::*;
 

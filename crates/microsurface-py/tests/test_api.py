@@ -110,20 +110,90 @@ def test_bsdfs_equal_the_command_line():
 # ---- Shapes, dtypes, agreement between the cosine and direction forms.
 
 
-def test_alpha_as_an_array_broadcasts_and_equals_one_material_per_element():
-    u = np.linspace(0.05, 1.0, 7)[:, None]
-    alpha = np.array([0.05, 0.3, 1.0, 2.0])
-    for cls, extra in [(mf.GGX, ()), (mf.StudentT, (3.0,)), (mf.Erfc, ())]:
-        n = cls(0.5, *extra)
-        got = n.lambda_(u, alpha=alpha)
-        assert got.shape == (7, 4)
-        for j, a in enumerate(alpha):
-            assert np.array_equal(got[:, j], cls(a, *extra).lambda_(u[:, 0]))
-        assert n.d(np.float32(0.5), alpha=np.float32([0.1, 0.2])).dtype == np.float32
-    with pytest.raises(ValueError, match="alpha"):
-        mf.GGX(0.3).d(0.5, alpha=[0.1, -1.0])
+EVERY_CLASS = [(mf.GGX, {}), (mf.Beckmann, {}), (mf.DoubleGGX, {}), (mf.Exponential, {}), (mf.Ei, {}),
+               (mf.Erfc, {}), (mf.K0, {}), (mf.GTR, {"gamma": 1.5}), (mf.StudentT, {"gamma": 3.0}),
+               (mf.BesselK, {"a": 0.7}), (mf.GenExponential, {"gamma": 3.0})]
+
+
+@pytest.mark.parametrize("cls,shape", EVERY_CLASS, ids=[c.__name__ for c, _ in EVERY_CLASS])
+def test_parameters_broadcast_with_every_method(cls, shape):
+    # SciPy's frozen distributions: parameters (n, 1) against arguments (m,) give (n, m),
+    # each row bit for bit the object of that row's parameters, for every method.
+    alpha = np.array([0.2, 0.6])[:, None]
+    u = np.array([-0.4, 0.0, 0.1, 0.5, 0.95, 1.0])
+    w = unit([[0.3, 0.1, 0.9], [0.2, -0.5, 0.4], [0.0, 0.6, 0.8], [0.9, 0.0, 0.2], [0.1, 0.1, -0.9], [1.0, 0.0, 0.0]])
+    uu = np.array([[0.1, 0.2], [0.5, 0.5], [0.9, 0.3], [0.7, 0.99], [0.0, 0.0], [0.3, 0.6]])
+    b = cls(alpha, **shape)
+    assert b.param_shape == (2, 1) and np.array_equal(b.alpha, alpha)
+    cos = [(f, (u,)) for f in ("d", "lambda_", "sigma", "g1")]
+    cos += [(f, (u, u[::-1])) for f in ("g2", "g2_separable")] + [("p22", (u, u[::-1])), ("p2", (u,))]
+    dirs = [(f, (w,)) for f in ("d_wm", "lambda_w", "g1_w", "sigma_w", "pdf_dcos")]
+    dirs += [("pdf_visible", (w, w[::-1])), ("g2_w", (w, w[::-1]))]
+    for i, a in enumerate(alpha[:, 0]):
+        one = cls(a, **shape)
+        for name, args in cos + dirs:
+            got = getattr(b, name)(*args)
+            assert got.shape == (2, 6), name
+            assert np.array_equal(got[i], getattr(one, name)(*args), equal_nan=True), name
+        for name, args in cos[:6]:
+            got = getattr(b, name)(*args, fast=True)
+            assert np.array_equal(got[i], getattr(one, name)(*args, fast=True), equal_nan=True), name
+        for got, want in [(b.sample_visible(w, uu), one.sample_visible(w, uu)), (b.sample_dcos(uu), one.sample_dcos(uu))]:
+            assert got.wm.shape == (2, 6, 3) and got.pdf.shape == (2, 6)
+            assert np.array_equal(got.wm[i], want.wm) and np.array_equal(got.pdf[i], want.pdf)
+    # float32 arguments give float32, whatever the parameters' dtype.
+    assert b.d(np.float32([0.5, 0.7])).dtype == np.float32
+    assert b.lambda_(np.float32(0.5)).shape == (2, 1)
+
+
+def test_every_parameter_may_be_an_array():
+    u = np.array([0.2, 0.7])
+    # A shape parameter, αy, both with α: broadcast together.
+    gamma = np.array([1.2, 2.0, 3.0])
+    g = mf.GTR(0.3, gamma=gamma)
+    assert g.lambda_(u[:, None]).shape == (2, 3)
+    for j, c in enumerate(gamma):
+        assert np.array_equal(g.lambda_(u[:, None])[:, j], mf.GTR(0.3, c).lambda_(u))
+    assert g.sampler == "rejection" and mf.GTR(0.3, [2.0, 2.0]).sampler == "warp"
+    an = mf.Beckmann(np.array([0.3, 0.5]), alpha_y=np.array([[0.1], [0.3], [0.5]]))
+    assert an.param_shape == (3, 2)
+    w = unit([0.3, 0.4, 0.5])
+    want = [[mf.Beckmann(a, alpha_y=ay).d_wm(w) for a in (0.3, 0.5)] for ay in (0.1, 0.3, 0.5)]
+    assert np.array_equal(an.d_wm(w), want)
     with pytest.raises(ValueError, match="anisotropic"):
-        mf.GGX(0.3, 0.1).d(0.5)
+        an.d(0.5)
+    with pytest.raises(ValueError, match=r"do not broadcast together: alpha \(2,\), alpha_y \(3,\)"):
+        mf.GGX([0.1, 0.2], alpha_y=[0.1, 0.2, 0.3])
+    with pytest.raises(ValueError, match=r"1 of 3 elements of alpha are not valid \(the first: \[2\], alpha = -1.0\)"):
+        mf.GGX([0.1, 0.2, -1.0])
+    with pytest.raises(ValueError, match=r"gamma.*elements of alpha and gamma are not valid \(the first: \[0, 1\]"):
+        mf.GTR([[0.1], [0.2]], [1.0, 0.0])
+    # The BSDFs: η (and k, the channels their last axis) per element, with the NDF's arrays.
+    wo, wi = unit([0.1, 0.2, 0.9]), unit([-0.3, 0.1, 0.8])
+    alpha = np.array([0.2, 0.6])
+    eta = np.array([[0.2, 0.9, 1.1], [0.3, 1.0, 1.2]])
+    c = mf.Conductor(mf.GGX(alpha), eta=eta, k=[3.9, 2.4, 2.2])
+    f = c.eval(wo, wi)
+    assert f.shape == (2, 3) and c.channels == 3
+    for i in range(2):
+        assert np.array_equal(f[i], mf.Conductor(mf.GGX(alpha[i]), eta=eta[i], k=[3.9, 2.4, 2.2]).eval(wo, wi))
+    d = mf.Dielectric(mf.GGX(0.3), np.array([1.3, 1.5, 0.7]))
+    wt = unit([0.2, 0.1, -0.9])
+    assert np.array_equal(d.eval(wo, wt), [mf.Dielectric(mf.GGX(0.3), e).eval(wo, wt) for e in (1.3, 1.5, 0.7)])
+    s = d.sample(wo, [0.3, 0.4, 0.5])
+    assert s.wi.shape == (3, 3) and s.lobe.shape == (3,)
+    with pytest.raises(ValueError, match="eta"):
+        mf.Dielectric(mf.GGX(0.3), [1.5, 1.0])
+    # Objects of arrays: repr evaluates back, ==, hash and pickle by value.
+    import numpy
+    import pickle
+    for x in (g, an, c, d, mf.StudentT(np.array([0.3, 0.4]), 2.5, exact=True)):
+        y = eval(repr(x), {"microsurface": mf, "numpy": numpy})
+        assert y == x and hash(y) == hash(x) and pickle.loads(pickle.dumps(x)) == x
+    assert mf.GGX([0.1, 0.2]) != mf.GGX([0.1, 0.3]) and mf.GGX([0.1]) != mf.GGX(0.1)
+    # One material only: the albedo table.
+    with pytest.raises(ValueError, match="one material"):
+        mf.AlbedoTable(mf.GGX([0.3, 0.5]))
 
 
 @pytest.mark.parametrize("exact", [True, False])
@@ -395,19 +465,17 @@ def test_albedo_over_alpha_arrays():
     # A table over (α, μ) in one call equals one material per α.
     alpha = np.array([0.2, 0.7])[:, None]
     mu = np.array([0.3, 0.9])
-    g = mf.GGX(0.5)
-    t = mf.single_scattering_albedo(g, mu, alpha=alpha)
+    g = mf.GGX(alpha)
+    t = mf.single_scattering_albedo(g, mu)
     assert t.shape == (2, 2)
     for i, a in enumerate(alpha[:, 0]):
         assert np.array_equal(t[i], mf.single_scattering_albedo(mf.GGX(a), mu))
-    w = g.albedo(mu, walks=2000, alpha=alpha)
+    w = g.albedo(mu, walks=2000)
     assert w.reflect.shape == (2, 2, 4)
     # (Each element has its own stream: seed + index; the second row's are indices 2, 3.)
     assert np.array_equal(w.reflect[0], mf.GGX(0.2).albedo(mu, walks=2000).reflect)
-    an = mf.Beckmann(0.4, 0.2).albedo(0.5, walks=1000, alpha=[0.4, 0.8])
+    an = mf.Beckmann([0.4, 0.8], alpha_y=[0.2, 0.4]).albedo(0.5, walks=1000)
     assert an.total.shape == (2,) and np.all(an.total == 1.0)
-    with pytest.raises(ValueError, match="alpha"):
-        mf.single_scattering_albedo(g, 0.5, alpha=[0.3, -1.0])
 
 
 def test_bsdf_errors():
@@ -571,7 +639,7 @@ def test_fast_paths_at_every_length():
                 idx = rng.integers(0, n, 50)
                 assert np.array_equal(got[idx], np.array([f(x[i]) for i in idx])), (n, dtype, f.__name__)
                 a = np.full(n, 0.3, dtype=dtype)
-                assert np.array_equal(f(x, alpha=a), got), (n, dtype)
+                assert np.array_equal(getattr(mf.GGX(a), f.__name__)(x), got), (n, dtype)
 
 
 def test_seeded_fuzz_no_panic_at_the_edges():
@@ -590,15 +658,16 @@ def test_seeded_fuzz_no_panic_at_the_edges():
             mf.Exponential(0.05), mf.StudentT(0.3, 1.51), mf.Ei(0.3), mf.Erfc(0.7), mf.K0(0.3),
             mf.BesselK(0.4, 0.5), mf.GenExponential(0.5, 20.0)]
     for n in ndfs:
-        iso = n.alpha == n.alpha_y
-        a = None if iso else n.alpha
-        # (Cosines in [-1, 1] and NaN; slopes any number.)
+        # (Cosines in [-1, 1] and NaN; slopes any number; the functions of a cosine of the
+        # isotropic material, the fast path's too.)
         cos = us[~(np.abs(us) > 1)]
-        for f in (n.d, n.lambda_, n.sigma, n.g1):
-            f(cos, alpha=a)
-        n.p2(us, alpha=a)
-        n.g2(cos[:, None], cos, alpha=a)
-        n.p22(us[:, None], us, alpha=a)
+        if n.alpha == n.alpha_y:
+            for fast in (False, True):
+                for f in (n.d, n.lambda_, n.sigma, n.g1):
+                    f(cos, fast=fast)
+                n.g2(cos[:, None], cos, fast=fast)
+            n.p2(us)
+            n.p22(us[:, None], us)
         for f in (n.d_wm, n.lambda_w, n.g1_w, n.sigma_w, n.pdf_dcos):
             f(edge_w)
         n.pdf_visible(edge_w[:, None], edge_w)
@@ -654,12 +723,15 @@ def test_hostile_input_through_every_public_function(ndf):
     rng = np.random.default_rng(36)
     bsdfs = [mf.Conductor(ndf), mf.Conductor(ndf, eta=[0.2, 0.9, 1.1], k=[3.9, 2.4, 2.2]), mf.Dielectric(ndf, 1.5)]
     table = mf.AlbedoTable(ndf)
+    # (The same NDF with its α as an array of one: the parameter arrays' path.)
+    shape = [] if ndf.shape is None else [ndf.shape]
+    arr = type(ndf)(np.array([ndf.alpha]), *shape, exact=ndf.exact)
 
     # NaN in, NaN out.
     for f in (ndf.d, ndf.lambda_, ndf.sigma, ndf.g1, ndf.p2):
-        assert all_nan(f(nan), f(np.float32(nan)), f([0.5, nan])[1], f(np.array([nan], np.float32)), f([nan], alpha=[0.3]))
+        assert all_nan(f(nan), f(np.float32(nan)), f([0.5, nan])[1], f(np.array([nan], np.float32)), getattr(arr, f.__name__)([nan]))
     for f in (ndf.g2, ndf.g2_separable, ndf.p22):
-        assert all_nan(f(nan, 0.5), f(0.5, nan), f([0.5, nan], 0.5)[1], f(nan, 0.5, alpha=[0.3]))
+        assert all_nan(f(nan, 0.5), f(0.5, nan), f([0.5, nan], 0.5)[1], getattr(arr, f.__name__)(nan, 0.5))
     for f in (ndf.d_wm, ndf.lambda_w, ndf.g1_w, ndf.sigma_w, ndf.pdf_dcos):
         assert all_nan(f(w_nan), f([w_nan, w_nan])) and not np.isnan(f([up, w_nan])[0])
     assert all_nan(table.e(nan), table.e([0.5, nan])[1]) and not np.isnan(table.e([0.5, nan])[0])
@@ -673,7 +745,7 @@ def test_hostile_input_through_every_public_function(ndf):
         for s in (b.sample(up, [nan, 0.5, 0.5]), b.sample(w_nan, [0.5, 0.5, 0.5])):
             # (A NaN element is a rejected sample: lobe 0, not specular; its numbers NaN.)
             assert all_nan(s.wi, s.f, s.pdf, s.eta) and s.lobe == 0 and not s.specular
-    for a in (ndf.albedo(nan, walks=10), ndf.albedo(0.5, phi=nan, walks=10), ndf.albedo([nan], walks=10, alpha=[0.3])):
+    for a in (ndf.albedo(nan, walks=10), ndf.albedo(0.5, phi=nan, walks=10), arr.albedo([nan], walks=10)):
         assert all_nan(*a)
     assert all_nan(mf.single_scattering_albedo(ndf, nan), mf.single_scattering_albedo(ndf, 0.5, phi=[nan]))
     # Slopes take any number, ±∞ included.
@@ -688,7 +760,7 @@ def test_hostile_input_through_every_public_function(ndf):
             raises(f"u {cos}: 1 of 2 elements are not \\(the first: u\\[1\\] = {bad}\\)", f, [0.5, bad])
             if abs(np.float32(bad)) > 1:  # (-1 - 2e-15 is -1 in float32)
                 raises(f"u {cos}", f, np.array([bad], np.float32))
-            raises(f"u {cos}", f, [bad], alpha=[0.3])
+            raises(f"u {cos}", getattr(arr, f.__name__), [bad])
         for f in (ndf.g2, ndf.g2_separable):
             raises(f"u_o {cos}", f, bad, 0.5)
             raises(f"u_i {cos}: 1 of 3 elements", f, 0.5, [0.5, bad, nan])
@@ -716,12 +788,11 @@ def test_hostile_input_through_every_public_function(ndf):
     assert ndf.sample_dcos(rng, 0).wm.shape == (0, 3)
 
     # Parameters keep their ValueErrors, NaN included, as numbers and arrays.
-    for f in (ndf.d, ndf.sigma):
-        raises("alpha", f, 0.5, alpha=nan)
-        raises(r"alpha.*: 1 of 2 elements of alpha are not valid \(the first: alpha\[1\]\)", f, 0.5, alpha=[0.3, nan])
-    raises("alpha", ndf.g2, 0.5, 0.5, alpha=[0.0])
-    raises("alpha", ndf.albedo, 0.5, walks=10, alpha=nan)
-    raises("alpha", mf.single_scattering_albedo, ndf, 0.5, alpha=[0.3, -1.0])
+    cls = type(ndf)
+    raises("alpha", cls, nan, *shape)
+    raises(r"alpha.*: 1 of 2 elements of alpha are not valid \(the first: \[1\], alpha = nan", cls, [0.3, nan], *shape)
+    raises("alpha", cls, [0.0], *shape)
+    raises("alpha", cls, 0.3, *shape, alpha_y=[0.3, -1.0])
     raises("eta", ndf.albedo, 0.5, walks=10, eta=nan)
     raises("eta", mf.Dielectric, ndf, nan)
     raises("eta", mf.Conductor, ndf, eta=nan)
