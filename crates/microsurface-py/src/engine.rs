@@ -605,6 +605,12 @@ fn single_numbers(items: &[Item<'_, '_>]) -> Option<Vec<f64>> {
     Some(x)
 }
 
+/// Whether the arguments are one element given without a batch (the form [`run_single`]
+/// takes: Python numbers, and lists, tuples or 1-D float64 arrays of their core's length).
+pub fn one_element(items: &[Item<'_, '_>]) -> bool {
+    single_numbers(items).is_some()
+}
+
 /// [`Args::run`] for one element given without a batch ([`single_numbers`]): `f(0, a, out)`
 /// with a the arguments' numbers split by their cores, without the GIL, and the outputs as
 /// the array path shapes a batch of `()` (a NumPy float64 scalar for core 0, a float64
@@ -770,13 +776,17 @@ pub fn apply_vec<'py>(
     let domains: Vec<Domain<'_>> = items.iter().map(|i| i.3).collect();
     let f = guarded(&domains, &f);
     let width = outs.iter().map(|&c| c.max(1)).sum();
+    assert!(
+        s.len() <= MAX_ARGS,
+        "apply_vec takes at most {MAX_ARGS} arguments"
+    );
     a.run(py, width, outs, parallel, |i, o| {
-        let e: Vec<&[f64]> = s
-            .iter()
-            .zip(&cores)
-            .map(|(s, &c)| &s[i * c..(i + 1) * c])
-            .collect();
-        f(i, &e, o)
+        // (On the stack: an allocation per element cost more than GGX's pdf itself.)
+        let mut e: [&[f64]; MAX_ARGS] = [&[]; MAX_ARGS];
+        for ((e, s), &c) in e.iter_mut().zip(&s).zip(&cores) {
+            *e = &s[i * c..(i + 1) * c];
+        }
+        f(i, &e[..s.len()], o)
     })
 }
 

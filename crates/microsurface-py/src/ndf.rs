@@ -8,10 +8,13 @@
 
 use crate::albedo;
 use crate::engine::{apply, apply_vec, named, uniforms, v3, value_error, Domain, Item, PARALLEL};
-use crate::kernel::{apply_kernel, Kernel, Q};
+use crate::engine::{is_number, Args};
+use crate::kernel::{apply_kernel, Kernel, BLOCK, Q};
 use crate::material::{mixture, with_isotropic, with_material, Material, Sampler, P};
 use crate::params::{self, Arrays, Param};
-use microsurface::{AnyNdf, Exact, MicrofacetDistribution, Ndf, NdfKind, ParamError};
+use microsurface::{
+    AnyMicrofacet, AnyNdf, Exact, MicrofacetDistribution, Ndf, NdfKind, ParamError,
+};
 use pyo3::exceptions::PyValueError;
 use pyo3::prelude::*;
 use pyo3::types::PyTuple;
@@ -146,9 +149,8 @@ impl Cos {
     /// The fast path's value: the renderer's material (isotropic) at the direction of cosine
     /// u in the xz plane, with the cosine functions' conventions: D(u ≤ 0) = 0, Λ(u < 0) =
     /// −1 − Λ(|u|), σ(u < 0) = |u| Λ(|u|), G1 and G2 of |u|.
-    #[inline]
-    fn fast(self, m: &Material, x: &[f64]) -> f64 {
-        let w = |u: f64| [((1.0 - u) * (1.0 + u)).max(0.0).sqrt(), 0.0, u];
+    #[inline(always)]
+    fn fast(self, m: &AnyMicrofacet<f64>, x: &[f64]) -> f64 {
         match self {
             Cos::D => m.d(w(x[0])),
             Cos::Lambda => {
@@ -181,6 +183,40 @@ impl Cos {
         }
     }
 
+    /// [`Cos::fast`] over blocks of cosines (`u`, and `v` for G2), `self` matched once per
+    /// block and the loop over one material, whose run-time dispatch LLVM hoists out of it
+    /// (the door's methods are inlined whole); NaN in, NaN out.
+    fn fast_block(self, m: &AnyMicrofacet<f64>, u: &[f64], v: Option<&[f64]>, out: &mut [f64]) {
+        macro_rules! each {
+            (|$u:ident| $e:expr) => {{
+                for (o, &$u) in out.iter_mut().zip(u) {
+                    *o = if $u.is_nan() { $u } else { $e };
+                }
+            }};
+        }
+        macro_rules! each2 {
+            (|$a:ident, $b:ident| $e:expr) => {{
+                let v = v.expect("two cosines");
+                for ((o, &$a), &$b) in out.iter_mut().zip(u).zip(v) {
+                    *o = if $a.is_nan() || $b.is_nan() {
+                        f64::NAN
+                    } else {
+                        $e
+                    };
+                }
+            }};
+        }
+        match self {
+            Cos::D => each!(|u| m.d(w(u))),
+            Cos::Lambda => each!(|u| Cos::Lambda.fast(m, &[u])),
+            Cos::Sigma => each!(|u| Cos::Sigma.fast(m, &[u])),
+            Cos::G1 => each!(|u| m.g1(w(u))),
+            Cos::G2 => each2!(|a, b| m.g2(w(a), w(b))),
+            Cos::G2Separable => each2!(|a, b| m.g2_separable(w(a), w(b))),
+            Cos::P22 | Cos::P2 => unreachable!("no fast path: has_fast"),
+        }
+    }
+
     /// The GGX closed form's slice kernel, where it has one.
     fn kernel(self, kind: NdfKind) -> Option<Kernel> {
         let q = match self {
@@ -191,6 +227,94 @@ impl Cos {
         };
         Kernel::of(kind, q)
     }
+}
+
+/// The quantities of directions that the blocks evaluate (σ goes through `Material::sigma`).
+#[derive(Clone, Copy)]
+enum Dir {
+    D,
+    Lambda,
+    G1,
+    G2,
+    G2Separable,
+    Pdf,
+    PdfDcos,
+}
+
+impl Dir {
+    /// Every quantity, in the order of their discriminants.
+    const ALL: [Dir; 7] = [
+        Dir::D,
+        Dir::Lambda,
+        Dir::G1,
+        Dir::G2,
+        Dir::G2Separable,
+        Dir::Pdf,
+        Dir::PdfDcos,
+    ];
+
+    /// The quantity at one or two directions.
+    #[inline(always)]
+    fn eval<M: MicrofacetDistribution<f64>>(self, m: &M, a: [f64; 3], b: [f64; 3]) -> f64 {
+        match self {
+            Dir::D => m.d(a),
+            Dir::Lambda => m.lambda(a),
+            Dir::G1 => m.g1(a),
+            Dir::G2 => m.g2(a, b),
+            Dir::G2Separable => m.g2_separable(a, b),
+            Dir::Pdf => m.pdf(a, b),
+            Dir::PdfDcos => m.pdf_dcos(a),
+        }
+    }
+
+    /// Over a block of directions (`x`, and `y` for the two-direction quantities, 3 numbers
+    /// each), `self` matched once and the loop over one material (whose dispatch LLVM then
+    /// hoists); NaN in any number of an element gives NaN.
+    fn block<M: MicrofacetDistribution<f64>>(
+        self,
+        m: &M,
+        x: &[f64],
+        y: Option<&[f64]>,
+        out: &mut [f64],
+    ) {
+        // (One function per quantity, the quantity a constant in it: inlined into one
+        // function, the seven loops exhausted LLVM's inlining budget, and Double GGX's D was
+        // then called per element, 1.7× the Rust loop.)
+        #[inline(never)]
+        fn run<M: MicrofacetDistribution<f64>, const Q: u8>(
+            m: &M,
+            x: &[f64],
+            y: Option<&[f64]>,
+            out: &mut [f64],
+        ) {
+            let q = Dir::ALL[Q as usize];
+            // (A one-direction quantity reads x twice: the loop is the same.)
+            let y = y.unwrap_or(x);
+            let (x, y) = (&x[..3 * out.len()], &y[..3 * out.len()]);
+            out.iter_mut().enumerate().for_each(|(k, o)| {
+                let a = [x[3 * k], x[3 * k + 1], x[3 * k + 2]];
+                let b = [y[3 * k], y[3 * k + 1], y[3 * k + 2]];
+                let nan = a.iter().chain(&b).fold(false, |n, v| n | v.is_nan());
+                *o = if nan { f64::NAN } else { q.eval(m, a, b) };
+            });
+        }
+        match self {
+            Dir::D => run::<M, 0>(m, x, y, out),
+            Dir::Lambda => run::<M, 1>(m, x, y, out),
+            Dir::G1 => run::<M, 2>(m, x, y, out),
+            Dir::G2 => run::<M, 3>(m, x, y, out),
+            Dir::G2Separable => run::<M, 4>(m, x, y, out),
+            Dir::Pdf => run::<M, 5>(m, x, y, out),
+            Dir::PdfDcos => run::<M, 6>(m, x, y, out),
+        }
+    }
+}
+
+/// The unit direction of cosine u in the xz plane (the fast path's argument for the
+/// functions of a cosine: an isotropic material reads only its z).
+#[inline(always)]
+fn w(u: f64) -> [f64; 3] {
+    [((1.0 - u) * (1.0 + u)).max(0.0).sqrt(), 0.0, u]
 }
 
 /// The ValueError of a cosine function called on an anisotropic material.
@@ -430,6 +554,40 @@ impl NDF {
         })
     }
 
+    /// A quantity of directions (`dirs`: one or two direction arguments): in blocks over one
+    /// material where the parameters are numbers, else per element (as [`NDF::map`]).
+    fn dir<'py>(
+        &self,
+        py: Python<'py>,
+        q: Dir,
+        dirs: &[(&Bound<'py, PyAny>, &str)],
+    ) -> PyResult<PyObject> {
+        let items: Vec<Item<'_, 'py>> = dirs.iter().map(|&(a, n)| (a, 3, n, Domain::Any)).collect();
+        if self.one.is_none() || crate::engine::one_element(&items) {
+            return self.map(py, &items, |m, a| {
+                q.eval(m, v3(a[0]), a.get(1).map_or([0.0; 3], |b| v3(b)))
+            });
+        }
+        let m = self.material()?;
+        let a = Args::new(py, &items)?;
+        let x = a.slice(0)?;
+        let y = if items.len() > 1 {
+            Some(a.slice(1)?)
+        } else {
+            None
+        };
+        let mut out = a.run_blocks(py, 1, &[0], BLOCK, PARALLEL, |start, o| {
+            let r = 3 * start..3 * (start + o.len());
+            let y = y.map(|y| &y[r.clone()]);
+            match m {
+                Material::Fast(d) => q.block(d, &x[r], y, o),
+                m => q.block(m, &x[r], y, o),
+            }
+            Ok(())
+        })?;
+        Ok(out.remove(0))
+    }
+
     /// One number per element of direction arguments (as [`NDF::each`]).
     fn map<'py>(
         &self,
@@ -467,11 +625,11 @@ impl NDF {
         if let Some(one) = &self.one {
             if fast {
                 let p = one.p;
-                let m = Material::new(kind, p.alpha, p.alpha_y, p.shape, false, self.sampler)
-                    .map_err(value_error)?;
+                let m =
+                    AnyMicrofacet::new(kind, p.alpha, p.alpha_y, p.shape).map_err(value_error)?;
                 // (No fast path: the generalised exponential's is its exact one.)
                 if m.is_fast() {
-                    return apply(py, args, move |x| Ok(q.fast(&m, x)));
+                    return fast_cos(py, q, &m, args);
                 }
             }
             let n = one.ndf;
@@ -488,8 +646,9 @@ impl NDF {
         apply(py, &all, |x| {
             let p = self.p_of(&x[k..]);
             if fast {
-                let y = with_material(kind, p, false, self.sampler, |m| {
-                    m.is_fast().then(|| q.fast(m, &x[..k]))
+                let y = with_material(kind, p, false, self.sampler, |m| match m {
+                    Material::Fast(m) if m.is_fast() => Some(q.fast(m, &x[..k])),
+                    _ => None,
                 })?;
                 if let Some(y) = y {
                     return Ok(y);
@@ -510,6 +669,33 @@ impl NDF {
             ("alpha_y", self.alpha_y.as_ref()),
         ]
     }
+}
+
+/// [`Cos::fast`] of one material over cosine arguments broadcast together: numbers without
+/// arrays, arrays in blocks of [`BLOCK`] ([`Cos::fast_block`]).
+fn fast_cos<'py>(
+    py: Python<'py>,
+    q: Cos,
+    m: &AnyMicrofacet<f64>,
+    args: &[(&Bound<'py, PyAny>, &str, Domain<'_>)],
+) -> PyResult<PyObject> {
+    if args.iter().all(|a| is_number(a.0)) {
+        return apply(py, args, |x| Ok(q.fast(m, x)));
+    }
+    let items: Vec<Item<'_, 'py>> = args.iter().map(|&(a, name, d)| (a, 0, name, d)).collect();
+    let a = Args::new(py, &items)?;
+    let u = a.slice(0)?;
+    let v = if args.len() > 1 {
+        Some(a.slice(1)?)
+    } else {
+        None
+    };
+    let mut out = a.run_blocks(py, 1, &[0], BLOCK, PARALLEL, |start, o| {
+        let range = start..start + o.len();
+        q.fast_block(m, &u[range.clone()], v.map(|v| &v[range]), o);
+        Ok(())
+    })?;
+    Ok(out.remove(0))
 }
 
 /// A cosine argument (u, u_o, u_i): [−1, 1].
@@ -757,17 +943,17 @@ impl NDF {
 
     /// D(wm) of unit normals wm (shape (..., 3)); 0 for wm.z ≤ 0.
     fn d_wm(&self, py: Python<'_>, wm: &Bound<'_, PyAny>) -> PyResult<PyObject> {
-        self.map(py, &[(wm, 3, "wm", Domain::Any)], |e, a| e.d(v3(a[0])))
+        self.dir(py, Dir::D, &[(wm, "wm")])
     }
 
     /// Smith Λ(w) of directions w (the side w comes from; +∞ on the horizon).
     fn lambda_w(&self, py: Python<'_>, w: &Bound<'_, PyAny>) -> PyResult<PyObject> {
-        self.map(py, &[(w, 3, "w", Domain::Any)], |e, a| e.lambda(v3(a[0])))
+        self.dir(py, Dir::Lambda, &[(w, "w")])
     }
 
     /// G1(w) = 1/(1 + Λ(w)).
     fn g1_w(&self, py: Python<'_>, w: &Bound<'_, PyAny>) -> PyResult<PyObject> {
-        self.map(py, &[(w, 3, "w", Domain::Any)], |e, a| e.g1(v3(a[0])))
+        self.dir(py, Dir::G1, &[(w, "w")])
     }
 
     /// The projected area σ(w) = |w.z|(1 + Λ(w)) (finite on the horizon), w mirrored to
@@ -786,18 +972,8 @@ impl NDF {
         wi: &Bound<'_, PyAny>,
         separable: bool,
     ) -> PyResult<PyObject> {
-        self.map(
-            py,
-            &[(wo, 3, "wo", Domain::Any), (wi, 3, "wi", Domain::Any)],
-            |e, a| {
-                let (wo, wi) = (v3(a[0]), v3(a[1]));
-                if separable {
-                    e.g2_separable(wo, wi)
-                } else {
-                    e.g2(wo, wi)
-                }
-            },
-        )
+        let q = if separable { Dir::G2Separable } else { Dir::G2 };
+        self.dir(py, q, &[(wo, "wo"), (wi, "wi")])
     }
 
     /// The visible-normal density D_w(wm) = G1(w) max(0, w·wm) D(wm)/|w.z| per solid angle
@@ -808,11 +984,7 @@ impl NDF {
         w: &Bound<'_, PyAny>,
         wm: &Bound<'_, PyAny>,
     ) -> PyResult<PyObject> {
-        self.map(
-            py,
-            &[(w, 3, "w", Domain::Any), (wm, 3, "wm", Domain::Any)],
-            |e, a| e.pdf(v3(a[0]), v3(a[1])),
-        )
+        self.dir(py, Dir::Pdf, &[(w, "w"), (wm, "wm")])
     }
 
     /// Visible normals for directions w: ``sample_visible(w, u)`` with uniforms u of shape
@@ -837,9 +1009,7 @@ impl NDF {
 
     /// The density D(wm) cos θm of ``sample_dcos`` (0 for wm.z ≤ 0).
     fn pdf_dcos(&self, py: Python<'_>, wm: &Bound<'_, PyAny>) -> PyResult<PyObject> {
-        self.map(py, &[(wm, 3, "wm", Domain::Any)], |e, a| {
-            e.pdf_dcos(v3(a[0]))
-        })
+        self.dir(py, Dir::PdfDcos, &[(wm, "wm")])
     }
 
     /// Normals distributed as D(m) cos θm: ``sample_dcos(u)`` (u of shape (..., 2)) or
