@@ -129,8 +129,8 @@ fn _rust_fast_ns(
         for i in 0..n {
             let (a, b) = if quantity == "pdf" {
                 (
-                    dir(uniform(), 6.283 * uniform()),
-                    dir(uniform(), 6.283 * uniform()),
+                    dir(uniform(), std::f64::consts::TAU * uniform()),
+                    dir(uniform(), std::f64::consts::TAU * uniform()),
                 )
             } else {
                 (dir(uniform(), 0.0), [0.0; 3])
