@@ -1085,6 +1085,12 @@ macro_rules! plain {
 
         #[pymethods]
         impl $name {
+            /// The NDF's name as the library spells it (`matched_alpha` reads it).
+            #[classattr]
+            fn _kind() -> &'static str {
+                NdfKind::$kind.name()
+            }
+
             #[new]
             #[pyo3(signature = (alpha, alpha_y = None, exact = false, sampler = "posterior"))]
             fn new(
@@ -1114,6 +1120,12 @@ macro_rules! shaped {
 
         #[pymethods]
         impl $name {
+            /// The NDF's name as the library spells it (`matched_alpha` reads it).
+            #[classattr]
+            fn _kind() -> &'static str {
+                NdfKind::$kind.name()
+            }
+
             #[new]
             #[pyo3(signature = (alpha, $shape, alpha_y = None, exact = false, sampler = "posterior"))]
             fn new(
@@ -1161,8 +1173,92 @@ shaped! {
     GenExponential => GenExponential, gamma;
 }
 
+/// matched_alpha(ndf, reference, by='g1_45'): the NDF ``ndf`` at the roughness α whose
+/// quantity ``by`` equals the NDF ``reference``'s (matched roughness; Rust:
+/// ``AnyNdf::matched``). ``ndf``: a class (``microsurface.Beckmann``; a class with a shape
+/// parameter needs it: pass a name or an instance), a name (``"beckmann"``,
+/// ``"student_t:4"``, ``"gtr:1.5"``: the command line's specs) or an NDF instance (its shape,
+/// ``exact`` and ``sampler`` kept, its α replaced). ``by``: ``"g1_45"`` (Smith's G1 at
+/// θ = 45°), ``"sigma0"`` (the projected area at grazing σ(0)), ``"mean_slope"`` (E[tan θm]
+/// under D cos θm, = π σ(0): the same match as ``"sigma0"``), ``"dcos_median"`` (the
+/// median of tan θm under D cos θm). Returns an instance of the NDF's class. Bisection in
+/// ln α over [1e-6, 1e6] on the exact path: the matched quantity equals the reference's to
+/// ≤ 1e-10 relative. ValueError where no α matches (σ(0) = ∞ for Student-T at γ ≤ 3/2; G1
+/// at 45° of a smooth Beckmann, α ≲ 0.3, below any GGX's), or for a reference of parameter
+/// arrays (one material).
+#[pyfunction]
+#[pyo3(signature = (ndf, reference, by = "g1_45"))]
+fn matched_alpha<'py>(
+    py: Python<'py>,
+    ndf: &Bound<'py, PyAny>,
+    reference: PyRef<'py, NDF>,
+    by: &str,
+) -> PyResult<Bound<'py, PyAny>> {
+    let by: microsurface::ndf::MatchBy = by
+        .parse()
+        .map_err(|e: microsurface::ndf::MatchError| PyValueError::new_err(e.to_string()))?;
+    let Some(one) = &reference.one else {
+        return Err(PyValueError::new_err(
+            "matched_alpha: the reference must be one material (its parameters numbers)",
+        ));
+    };
+    // The kind and shape, and the class and keywords of the result.
+    let module = py.import("microsurface._microsurface")?;
+    let class_of = |kind: NdfKind| -> PyResult<Bound<'py, PyAny>> {
+        for name in module.dir()? {
+            let c = module.getattr(name.downcast::<pyo3::types::PyString>()?)?;
+            if c.getattr("_kind")
+                .is_ok_and(|k| k.eq(kind.name()).unwrap_or(false))
+            {
+                return Ok(c);
+            }
+        }
+        Err(PyValueError::new_err(format!("no class for {kind}")))
+    };
+    let kwargs = pyo3::types::PyDict::new(py);
+    let (kind, shape, class) = if let Ok(n) = ndf.downcast::<NDF>() {
+        let n = n.get();
+        let Some(o) = &n.one else {
+            return Err(PyValueError::new_err(
+                "matched_alpha: ndf must be one material (its parameters numbers)",
+            ));
+        };
+        kwargs.set_item("exact", n.exact)?;
+        kwargs.set_item("sampler", n.sampler_arg())?;
+        (n.kind, o.p.shape, ndf.get_type().into_any())
+    } else if let Ok(spec) = ndf.extract::<String>() {
+        let spec: microsurface::NdfSpec = spec
+            .parse()
+            .map_err(|e: microsurface::SpecError| PyValueError::new_err(e.to_string()))?;
+        (spec.kind, spec.shape, class_of(spec.kind)?)
+    } else {
+        let kind: String = ndf
+            .getattr("_kind")
+            .map_err(|_| {
+                PyValueError::new_err("ndf must be an NDF class, a name ('student_t:4') or an NDF")
+            })?
+            .extract()?;
+        let kind: NdfKind = kind
+            .parse()
+            .map_err(|e: microsurface::ndf::UnknownNdf| PyValueError::new_err(e.to_string()))?;
+        if let Some(shape_name) = kind.shape_name() {
+            return Err(PyValueError::new_err(format!(
+                "{kind} needs its {shape_name}: pass a name ('{kind}:<{shape_name}>') or an instance"
+            )));
+        }
+        (kind, None, ndf.clone())
+    };
+    let m = py
+        .allow_threads(|| AnyNdf::matched(kind, shape, &one.ndf, by))
+        .map_err(|e| PyValueError::new_err(e.to_string()))?;
+    let mut args = vec![m.alpha()];
+    args.extend(shape.filter(|_| kind.shape_name().is_some()));
+    class.call(PyTuple::new(py, args)?, Some(&kwargs))
+}
+
 /// Adds `NDF` and its subclasses to the module.
 pub fn register(m: &Bound<'_, PyModule>) -> PyResult<()> {
+    m.add_function(wrap_pyfunction!(matched_alpha, m)?)?;
     m.add_class::<NDF>()?;
     m.add_class::<Beckmann>()?;
     m.add_class::<GGX>()?;

@@ -29,6 +29,9 @@ and ``k``, whose last axis is the channels); never a Python loop.
 * Multiple scattering: ``ndf.albedo(mu, walks=...)`` by order (the random walk),
   ``single_scattering_albedo(ndf, mu)`` (quadrature), both over parameter arrays for
   (α, μ) tables, and ``AlbedoTable(ndf)`` (the compensation table, one material).
+* Matched roughness: ``matched_alpha(ndf, reference, by="g1_45")``, the NDF ``ndf`` (a
+  class, a name such as ``"student_t:4"``, or an instance) at the α whose G1 at 45°
+  (``"sigma0"``, ``"mean_slope"``, ``"dcos_median"``) equals the reference's.
 * BSDFs: ``Conductor(ndf, eta, k)`` and ``Dielectric(ndf, eta)`` with ``eval``, ``pdf`` and
   ``sample``, single scattering or with multiple scattering (``scattering='kulla_conty'``,
   ``'turquin'`` or ``'walk'``).
@@ -70,6 +73,7 @@ from ._microsurface import (  # noqa: F401
     GTR,
     K0,
     StudentT,
+    matched_alpha,
     single_scattering_albedo,
 )
 from ._types import Albedo, BSDFSample, Sample  # noqa: F401
@@ -93,6 +97,7 @@ __all__ = [
     "Dielectric",
     "AlbedoTable",
     "single_scattering_albedo",
+    "matched_alpha",
     "Sample",
     "BSDFSample",
     "Albedo",
