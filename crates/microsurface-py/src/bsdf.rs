@@ -33,6 +33,12 @@ impl<const M: usize> Channels for [f64; M] {
 
 /// A BSDF of any model, its value written as channels.
 trait AnyBsdf: Send + Sync {
+    /// The walk model's f as the mean of `samples` stochastic evaluations from the stream
+    /// `seed` (`MultipleScattering::eval_orders`); the deterministic models' own f.
+    fn eval_mean(&self, wo: [f64; 3], wi: [f64; 3], samples: u64, seed: u64, out: &mut [f64]) {
+        let _ = (samples, seed);
+        self.eval(wo, wi, out)
+    }
     fn eval(&self, wo: [f64; 3], wi: [f64; 3], out: &mut [f64]);
     fn pdf(&self, wo: [f64; 3], wi: [f64; 3]) -> f64;
     /// wi (3), f (channels), pdf, lobe (0 rejected, 1 reflection, 2 transmission),
@@ -67,6 +73,32 @@ where
             // (Zeros: no direction, f = pdf = 0, lobe 0.)
             None => out.fill(0.0),
         }
+    }
+}
+
+/// The walk's BSDF, with its averaged evaluation.
+struct Walk<D, Fa, const N: usize>(MultipleScattering<D, Fa, N>);
+
+impl<D, Fa, const N: usize> AnyBsdf for Walk<D, Fa, N>
+where
+    D: microsurface::MicrofacetDistribution<f64> + Send + Sync,
+    Fa: Facets<N> + Send + Sync,
+    MultipleScattering<D, Fa, N>: Bsdf<f64, Value = [f64; N]>,
+{
+    fn eval_mean(&self, wo: [f64; 3], wi: [f64; 3], samples: u64, seed: u64, out: &mut [f64]) {
+        let e = self.0.eval_orders(wo, wi, samples, seed);
+        for (o, e) in out.iter_mut().zip(&e) {
+            *o = e.total;
+        }
+    }
+    fn eval(&self, wo: [f64; 3], wi: [f64; 3], out: &mut [f64]) {
+        AnyBsdf::eval(&self.0, wo, wi, out)
+    }
+    fn pdf(&self, wo: [f64; 3], wi: [f64; 3]) -> f64 {
+        AnyBsdf::pdf(&self.0, wo, wi)
+    }
+    fn sample(&self, wo: [f64; 3], uc: f64, u: [f64; 2], out: &mut [f64]) {
+        AnyBsdf::sample(&self.0, wo, uc, u, out)
     }
 }
 
@@ -149,9 +181,9 @@ impl Recipe {
                         .with_channels::<1>()
                         .with_transport(t),
                 ),
-                Model::Walk => Box::new(
+                Model::Walk => Box::new(Walk(
                     MultipleScattering::<_, _, 1>::new(d, DielectricFacets(eta)).with_transport(t),
-                ),
+                )),
             };
         }
         let model = self.model;
@@ -196,7 +228,7 @@ where
     match model {
         Model::Single => Box::new(bsdf::RoughConductor::new(d, fr).with_masking(m)),
         Model::Compensated(s) => Box::new(CompensatedConductor::new(d, fr, s)),
-        Model::Walk => Box::new(MultipleScattering::new(d, MirrorFacets(fr))),
+        Model::Walk => Box::new(Walk(MultipleScattering::new(d, MirrorFacets(fr)))),
     }
 }
 
@@ -279,6 +311,8 @@ pub struct PyBsdf {
     inner: Inner,
     /// f's channels.
     channels: usize,
+    /// Whether the model is the random walk (stochastic eval).
+    walk: bool,
     /// The constructor's arguments, normalised (channels as tuples of floats): what
     /// `__reduce__` passes back, `__repr__` writes and `==` compares.
     args: Py<PyTuple>,
@@ -300,6 +334,7 @@ impl PyBsdf {
         names: &'static [&'static str],
     ) -> PyResult<Self> {
         let channels = recipe.channels;
+        let walk = recipe.model == Model::Walk;
         let n = ndf.get();
         let one = |c: &Option<Channel>| c.as_ref().map_or(Some(Vec::new()), |c| c.one.clone());
         let inner = match (n.batched(), one(&eta), one(&k)) {
@@ -333,6 +368,7 @@ impl PyBsdf {
         Ok(PyBsdf {
             inner,
             channels,
+            walk,
             args: PyTuple::new(py, args)?.unbind(),
             names,
         })
@@ -347,10 +383,21 @@ impl PyBsdf {
         outs: &[usize],
         f: impl Fn(&dyn AnyBsdf, &[&[f64]], &mut [f64]) + Sync,
     ) -> PyResult<Vec<PyObject>> {
+        self.each_indexed(py, items, outs, |b, _, a, o| f(b, a, o))
+    }
+
+    /// [`PyBsdf::each`] with the element's index: `f(bsdf, i, a, out)`.
+    fn each_indexed<'py>(
+        &self,
+        py: Python<'py>,
+        items: &[Item<'_, 'py>],
+        outs: &[usize],
+        f: impl Fn(&dyn AnyBsdf, usize, &[&[f64]], &mut [f64]) + Sync,
+    ) -> PyResult<Vec<PyObject>> {
         let b = match &self.inner {
             Inner::One(b) => {
-                return apply_vec(py, items, outs, 256, |_, a, o| {
-                    f(b.as_ref(), a, o);
+                return apply_vec(py, items, outs, 256, |i, a, o| {
+                    f(b.as_ref(), i, a, o);
                     Ok(())
                 })
             }
@@ -376,7 +423,7 @@ impl PyBsdf {
             all.push((a, core, *name, crate::engine::FIXED));
         }
         let has_eta = b.eta.is_some();
-        apply_vec(py, &all, outs, 256, |_, a, o| {
+        apply_vec(py, &all, outs, 256, |i, a, o| {
             let v: Vec<f64> = a[k0..k0 + nd].iter().map(|s| s[0]).collect();
             let p = b.ndf.p_of(&v);
             let rest = &a[k0 + nd..];
@@ -393,7 +440,7 @@ impl PyBsdf {
                 recent.with(
                     key,
                     || Ok::<_, ParamError>(b.recipe.build(m.clone(), eta, k)),
-                    |bsdf| f(bsdf.as_ref(), &a[..k0], o),
+                    |bsdf| f(bsdf.as_ref(), i, &a[..k0], o),
                 )
             })?
         })
@@ -490,21 +537,40 @@ impl PyBsdf {
 
     /// f(wo, wi) without the cosine, for directions of shape (..., 3) broadcast together:
     /// shape (...) for one channel, (..., channels) otherwise. The walk model returns one
-    /// stochastic estimate (unbiased; seeded by the directions).
+    /// stochastic estimate (unbiased; seeded by the directions), or with ``samples`` (≥ 1)
+    /// and ``seed`` the mean of ``samples`` estimates from the stream ``seed`` and the
+    /// element's index (the command line's ``samples``; the same numbers whatever the
+    /// threads). ``samples`` and ``seed`` are the walk model's (ValueError for the others).
+    #[pyo3(signature = (wo, wi, samples = None, seed = None))]
     fn eval(
         &self,
         py: Python<'_>,
         wo: &Bound<'_, PyAny>,
         wi: &Bound<'_, PyAny>,
+        samples: Option<i64>,
+        seed: Option<i128>,
     ) -> PyResult<PyObject> {
         let c = self.channels;
         let outs = [if c == 1 { 0 } else { c }];
-        let mut o = self.each(
-            py,
-            &[(wo, 3, "wo", Domain::Any), (wi, 3, "wi", Domain::Any)],
-            &outs,
-            |b, a, o| b.eval(v3(a[0]), v3(a[1]), o),
-        )?;
+        let items = [(wo, 3, "wo", Domain::Any), (wi, 3, "wi", Domain::Any)];
+        if samples.is_none() && seed.is_none() {
+            let mut o = self.each(py, &items, &outs, |b, a, o| b.eval(v3(a[0]), v3(a[1]), o))?;
+            return Ok(o.remove(0));
+        }
+        if !self.walk {
+            return Err(PyValueError::new_err(
+                "samples and seed are the walk model's (scattering='walk'): this BSDF's eval is deterministic",
+            ));
+        }
+        let samples = crate::engine::count(samples.unwrap_or(1), "samples", 1)? as u64;
+        let seed = seed.unwrap_or(0);
+        let seed = u64::try_from(seed).map_err(|_| {
+            PyValueError::new_err(format!("seed must be in [0, 2**64) (got {seed})"))
+        })?;
+        let mut o = self.each_indexed(py, &items, &outs, |b, i, a, o| {
+            let seed = seed.wrapping_add((i as u64).wrapping_mul(0x9E37_79B9_7F4A_7C15));
+            b.eval_mean(v3(a[0]), v3(a[1]), samples, seed, o);
+        })?;
         Ok(o.remove(0))
     }
 
@@ -654,7 +720,10 @@ impl Conductor {
 /// divides a transmitted f by η'² (Veach 1997, §5.2). ``masking``: 'correlated'
 /// (1/(1 + Λo + Λi) for both lobes, pbrt-v4's), 'separable' (G1(wo) G1(wi), Mitsuba's) or
 /// 'correlated_beta' (a transmission's exact height-correlated B(1 + Λo, 1 + Λi), the
-/// random walk's order 1; see the crate's ``bsdf::Masking``); single scattering only. ``scattering`` as for
+/// random walk's order 1; see the crate's ``bsdf::Masking``); single scattering only. The
+/// two transmission forms differ most at grazing angles on rough surfaces: GGX α = 1,
+/// μ = 0.05, η = 1.5 transmits 0.728 by 'correlated', 0.050 by 'correlated_beta' (their
+/// albedos: ``single_scattering_albedo(ndf, mu, eta=..., masking='pbrt' | 'exact')``). ``scattering`` as for
 /// ``Conductor`` ('kulla_conty'/'turquin' use the dielectric tables, computed here). The
 /// NDF's path (fast, or ``exact=True``) as for ``Conductor``.
 #[pyclass(extends = PyBsdf, frozen, module = "microsurface")]

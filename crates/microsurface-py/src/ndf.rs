@@ -1040,6 +1040,10 @@ impl NDF {
     /// errors; total (...) is reflect + transmit summed over orders. ``mu`` ∈ [−1, 1],
     /// ``phi`` finite, ``walks`` ≥ 1 (else ValueError); a NaN ``mu`` or ``phi`` gives NaN
     /// fields. The walk runs this NDF's path (fast by default, ``exact=True`` the exact one).
+    /// Dielectric facets: order 1 is single scattering with the exact height-correlated
+    /// transmission masking B(1 + Λo, 1 + Λi) (``single_scattering_albedo(ndf, mu, eta=eta,
+    /// masking='exact')``; ``Dielectric(..., masking='correlated_beta')``), not pbrt's
+    /// 1/(1 + Λo + Λi), the ``Dielectric`` BSDF's default (``masking='pbrt'`` there).
     #[pyo3(signature = (mu, phi = None, walks = 100_000, seed = 0, eta = None))]
     fn albedo(
         &self,

@@ -927,3 +927,55 @@ def test_matched_alpha():
         mf.matched_alpha("student_t:1.4", ref, by="sigma0")
     with pytest.raises(ValueError, match="g1_45"):
         mf.matched_alpha(mf.Beckmann, ref, by="rms")
+
+
+def test_walk_eval_samples_and_seed_equal_the_command_line():
+    # eval(wo, wi, samples, seed): the mean of `samples` walks from the stream seed (+ the
+    # element's index), the command line's op eval_ms for one element, bit for bit.
+    gold = dict(eta=[0.2, 0.9, 1.1], k=[3.9, 2.4, 2.2])
+    b = mf.Conductor(mf.GGX(0.5), scattering="walk", **gold)
+    wo, wi = [0.0, 0.6, 0.8], [0.6, 0.0, 0.8]
+    f = b.eval(np.array(wo), np.array(wi), samples=500, seed=7)
+    [r] = cli("bsdf", [dict(bsdf="conductor", op="eval_ms", ndf="ggx", alpha=0.5, wo=wo, wi=wi, samples=500, seed=7, **gold)])
+    assert f.tolist() == r["total"]
+    assert np.array_equal(f, b.eval(wo, wi, samples=500, seed=7))
+    assert not np.array_equal(f, b.eval(wo, wi, samples=500, seed=8))
+    # Element i draws from seed + i·φ: a batch's first element is the single call's.
+    fb = b.eval(np.array([wo, wo]), np.array(wi), samples=500, seed=7)
+    assert np.array_equal(fb[0], f) and not np.array_equal(fb[1], f)
+    with pytest.raises(ValueError, match="walk model"):
+        mf.Conductor(mf.GGX(0.5)).eval(wo, wi, samples=10)
+    with pytest.raises(ValueError, match="samples must be at least 1"):
+        b.eval(wo, wi, samples=0)
+
+
+def test_dielectric_single_scattering_albedo_by_masking():
+    # The two transmission maskings the issue measured apart (GGX α = 1, μ = 0.05, η = 1.5):
+    # pbrt's 1/(1 + Λo + Λi) transmits 0.728, the exact B(1 + Λo, 1 + Λi) 0.050, and the
+    # exact one is the random walk's order 1 (within 4σ of 10⁵ walks).
+    g = mf.GGX(1.0)
+    pbrt = mf.single_scattering_albedo(g, 0.05, eta=1.5)
+    exact = mf.single_scattering_albedo(g, 0.05, eta=1.5, masking="exact")
+    assert isinstance(pbrt, mf.DielectricAlbedo)
+    assert abs(pbrt.transmit - 0.728) < 5e-3 and abs(exact.transmit - 0.050) < 5e-3
+    assert pbrt.reflect == exact.reflect  # (a reflection's G2 is the same in both)
+    w = g.albedo(0.05, walks=100_000, eta=1.5, seed=3)
+    assert abs(w.transmit[0] - exact.transmit) < 4 * w.transmit_stderr[0] + 2e-5
+    assert abs(w.reflect[0] - exact.reflect) < 4 * w.reflect_stderr[0] + 2e-5
+    # η broadcasts with mu; from inside (μ < 0) and η < 1 too.
+    a = mf.single_scattering_albedo(mf.GGX(0.3), np.array([0.3, -0.3])[:, None], eta=[1.5, 0.7])
+    assert a.reflect.shape == (2, 2) and np.all((a.reflect + a.transmit) <= 1 + 2e-5)
+    with pytest.raises(ValueError, match="eta"):
+        mf.single_scattering_albedo(g, 0.5, eta=[1.5, 1.0])
+    with pytest.raises(ValueError, match="masking"):
+        mf.single_scattering_albedo(g, 0.5, eta=1.5, masking="walk")
+
+
+def test_float32_in_float32_out_of_the_albedos():
+    g = mf.GGX(0.4)
+    mu = np.float32([0.3, 0.8])
+    a = g.albedo(mu, walks=200)
+    assert all(x.dtype == np.float32 for x in a)
+    assert mf.single_scattering_albedo(g, mu).dtype == np.float32
+    assert mf.single_scattering_albedo(g, mu, eta=np.float32(1.5)).reflect.dtype == np.float32
+    assert mf.single_scattering_albedo(g, mu.astype(np.float64)).dtype == np.float64

@@ -76,7 +76,7 @@ from ._microsurface import (  # noqa: F401
     matched_alpha,
     single_scattering_albedo,
 )
-from ._types import Albedo, BSDFSample, Sample  # noqa: F401
+from ._types import Albedo, BSDFSample, DielectricAlbedo, Sample  # noqa: F401
 
 __all__ = [
     "__version__",
@@ -101,4 +101,5 @@ __all__ = [
     "Sample",
     "BSDFSample",
     "Albedo",
+    "DielectricAlbedo",
 ]

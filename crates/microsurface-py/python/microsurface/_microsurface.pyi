@@ -4,7 +4,7 @@ from typing import Optional, Sequence, Tuple, Union
 import numpy as np
 import numpy.typing as npt
 
-from ._types import Albedo, BSDFSample, Sample
+from ._types import Albedo, BSDFSample, DielectricAlbedo, Sample
 
 ArrayLike = Union[float, int, npt.ArrayLike]
 # float32 in → float32 out, otherwise float64; scalars in → a NumPy scalar out.
@@ -198,4 +198,12 @@ class AlbedoTable:
 # "sigma0", "mean_slope" or "dcos_median". Returns an instance of the NDF's class.
 def matched_alpha(ndf: Union[type, str, NDF], reference: NDF, by: str = "g1_45") -> NDF: ...
 
-def single_scattering_albedo(ndf: NDF, mu: ArrayLike, phi: Optional[ArrayLike] = None) -> Result: ...
+# Without eta: the F = 1 conductor's E1 (an array); with eta: DielectricAlbedo(reflect,
+# transmit) of the rough dielectric, masking "pbrt" (1/(1 + Λo + Λi)) or "exact" (B(1 + Λo, 1 + Λi)).
+def single_scattering_albedo(
+    ndf: NDF,
+    mu: ArrayLike,
+    phi: Optional[ArrayLike] = None,
+    eta: Optional[ArrayLike] = None,
+    masking: str = "pbrt",
+) -> Union[Result, DielectricAlbedo]: ...

@@ -35,3 +35,11 @@ class Albedo(NamedTuple):
     transmit_stderr: np.ndarray
     total: np.ndarray
     total_stderr: np.ndarray
+
+
+class DielectricAlbedo(NamedTuple):
+    """The single-scattering albedo of a rough dielectric: the energy ``reflect``ed back to
+    the side of incidence and ``transmit``ted through, each of the arguments' shape."""
+
+    reflect: np.ndarray
+    transmit: np.ndarray
