@@ -4,9 +4,12 @@
 
 use crate::engine::{count, map_vec, named, Domain, Item};
 use crate::ndf::NDF;
+use microsurface::scattering::table::{Grid, Material as TableMaterial, Method, Spec};
 use microsurface::scattering::{
     self, AlbedoTable as Table, DielectricFacets, Heights, MirrorFacets, RandomWalk,
 };
+use microsurface::{MicrofacetDistribution, NdfKind};
+use numpy::PyArray1;
 use pyo3::exceptions::PyValueError;
 use pyo3::prelude::*;
 use pyo3::types::PyFloat;
@@ -177,6 +180,21 @@ fn single_scattering_albedo(
 #[pyclass(frozen, module = "microsurface")]
 pub struct AlbedoTable {
     table: std::sync::Arc<Table>,
+    /// The material it is of (NDF, shape, α), where known: what the command line's format
+    /// records.
+    source: Option<(NdfKind, Option<f64>, f64)>,
+}
+
+/// The NDF spec of a table of the command line's binary form (`microsurface table`).
+fn grid_of(kind: NdfKind, shape: Option<f64>, alpha: Vec<f64>, mu: Vec<f64>) -> Spec {
+    Spec {
+        ndf: kind,
+        gamma: shape,
+        material: TableMaterial::Furnace,
+        method: Method::Quadrature,
+        alpha,
+        mu,
+    }
 }
 
 #[pymethods]
@@ -184,8 +202,129 @@ impl AlbedoTable {
     #[new]
     fn new(py: Python<'_>, ndf: PyRef<'_, NDF>) -> PyResult<Self> {
         let d = ndf.material()?.clone();
+        let source = d.ndf().map(|(kind, shape)| (kind, shape, d.alpha().0));
+        let source = source.filter(|_| d.alpha().0 == d.alpha().1);
         let table = crate::engine::interruptible(py, move || Table::new(&d))?;
-        Ok(AlbedoTable { table })
+        Ok(AlbedoTable { table, source })
+    }
+
+    /// The nodes' μ (uniform in √μ; the grazing node at μ = 1e-6), float64.
+    #[getter]
+    fn mu<'py>(&self, py: Python<'py>) -> Bound<'py, PyArray1<f64>> {
+        PyArray1::from_vec(py, self.table.mu())
+    }
+
+    /// E at the nodes, float64: the interpolant passes through them at √μ = k/(n − 1) (the
+    /// grazing node's value, E(1e-6), stands at √μ = 0).
+    #[getter]
+    fn values<'py>(&self, py: Python<'py>) -> Bound<'py, PyArray1<f64>> {
+        PyArray1::from_slice(py, self.table.values())
+    }
+
+    /// Writes the table: ``.npy``, an (n, 2) float64 array of (μ, E) at the nodes (exact);
+    /// ``.mfa``, the command line's binary form (``microsurface table --method quadrature``:
+    /// its header names the NDF, α and the nodes; values in float32, as that format keeps
+    /// them), for a table made from one isotropic NDF.
+    fn save(&self, py: Python<'_>, path: std::path::PathBuf) -> PyResult<()> {
+        let ext = path.extension().and_then(|e| e.to_str()).unwrap_or("");
+        match ext {
+            "npy" => {
+                let np = crate::engine::numpy(py)?;
+                let a = np.call_method1("stack", ((self.mu(py), self.values(py)),))?;
+                let a = a.call_method0("transpose")?;
+                np.call_method1("save", (path, a))?;
+                Ok(())
+            }
+            "mfa" => {
+                let Some((kind, shape, alpha)) = self.source else {
+                    return Err(PyValueError::new_err(
+                        "a .mfa table names its NDF and α: this table was not made from one isotropic NDF (save it as .npy)",
+                    ));
+                };
+                let grid = Grid {
+                    spec: grid_of(kind, shape, vec![alpha], self.table.mu()),
+                    quantities: vec!["e1".to_string()],
+                    values: self.table.values().iter().map(|&v| v as f32).collect(),
+                };
+                std::fs::write(&path, grid.to_bytes())
+                    .map_err(|e| pyo3::exceptions::PyOSError::new_err(e.to_string()))
+            }
+            _ => Err(PyValueError::new_err(
+                "path must end in .npy or .mfa (the command line's binary form)",
+            )),
+        }
+    }
+
+    /// Reads a table ``save`` wrote (``.npy``), or a table of the command line's binary form
+    /// (``.mfa``: quantity ``e1``, at α node ``alpha_index``, its μ nodes those of a table
+    /// uniform in √μ, as ``microsurface table --method quadrature --mu 0:1:N:sqrt`` writes).
+    #[staticmethod]
+    #[pyo3(signature = (path, alpha_index = 0))]
+    fn load(py: Python<'_>, path: std::path::PathBuf, alpha_index: usize) -> PyResult<Self> {
+        let bad = |m: String| PyValueError::new_err(format!("{}: {m}", path.display()));
+        let ext = path.extension().and_then(|e| e.to_str()).unwrap_or("");
+        let (mu, values, source) = match ext {
+            "npy" => {
+                let a = crate::engine::numpy(py)?.call_method1("load", (&path,))?;
+                let shape: Vec<usize> = a.getattr("shape")?.extract()?;
+                if shape.len() != 2 || shape[1] != 2 {
+                    return Err(bad(format!(
+                        "an (n, 2) array of (mu, E) expected, got shape {shape:?}"
+                    )));
+                }
+                let rows: Vec<[f64; 2]> = a.call_method0("tolist")?.extract()?;
+                (
+                    rows.iter().map(|r| r[0]).collect::<Vec<_>>(),
+                    rows.iter().map(|r| r[1]).collect::<Vec<_>>(),
+                    None,
+                )
+            }
+            "mfa" => {
+                let bytes = std::fs::read(&path)
+                    .map_err(|e| pyo3::exceptions::PyOSError::new_err(e.to_string()))?;
+                let g = Grid::from_bytes(&bytes).map_err(|e| bad(e.0))?;
+                let q = g.quantities.iter().position(|q| q == "e1").ok_or_else(|| {
+                    bad("no quantity e1 (the single-scattering albedo: --method quadrature)".into())
+                })?;
+                if alpha_index >= g.spec.alpha.len() {
+                    return Err(bad(format!(
+                        "alpha_index {alpha_index}: the table has {} alpha nodes",
+                        g.spec.alpha.len()
+                    )));
+                }
+                let values = (0..g.spec.mu.len())
+                    .map(|im| f64::from(g.value(alpha_index, im, q)))
+                    .collect();
+                let alpha = g.spec.alpha[alpha_index];
+                (
+                    g.spec.mu.clone(),
+                    values,
+                    Some((g.spec.ndf, g.spec.gamma, alpha)),
+                )
+            }
+            _ => {
+                return Err(PyValueError::new_err(
+                    "path must end in .npy or .mfa (the command line's binary form)",
+                ))
+            }
+        };
+        let table = Table::from_values(values)
+            .ok_or_else(|| bad("at least 4 finite values expected".into()))?;
+        let nodes = table.mu();
+        // (The grazing node: 0 as `microsurface table --mu 0:1:N:sqrt` writes it, or the
+        // library's 1e-6, where it takes the albedo's limit.)
+        let off =
+            |(k, (a, b)): (usize, (&f64, &f64))| (a - b).abs() > 1e-12 && !(k == 0 && *a == 0.0);
+        if mu.len() != nodes.len() || mu.iter().zip(&nodes).enumerate().any(off) {
+            return Err(bad(format!(
+                "the mu nodes are not uniform in sqrt(mu) ({} nodes from 1e-6 to 1)",
+                nodes.len()
+            )));
+        }
+        Ok(AlbedoTable {
+            table: std::sync::Arc::new(table),
+            source,
+        })
     }
 
     /// E(μ), cubic in √μ between the nodes, vectorised over μ.
@@ -207,8 +346,174 @@ impl AlbedoTable {
     }
 }
 
-/// Adds `AlbedoTable` and `single_scattering_albedo` to the module.
+/// A progress bar for `progress=True`: tqdm's where it is installed, else None (silent).
+fn progress_bar<'py>(py: Python<'py>, on: bool, unit: &str) -> PyResult<Option<Bound<'py, PyAny>>> {
+    if !on {
+        return Ok(None);
+    }
+    let Ok(tqdm) = py.import("tqdm") else {
+        return Ok(None);
+    };
+    let kwargs = pyo3::types::PyDict::new(py);
+    kwargs.set_item("unit", unit)?;
+    kwargs.set_item("total", 0)?;
+    Ok(Some(tqdm.getattr("tqdm")?.call((), Some(&kwargs))?))
+}
+
+/// The `Table` named tuple of a grid: its nodes, quantity names and values (α, μ, quantity).
+fn table_tuple(py: Python<'_>, g: &Grid) -> PyResult<PyObject> {
+    let (na, nm, nq) = (g.spec.alpha.len(), g.spec.mu.len(), g.quantities.len());
+    let values = PyArray1::from_slice(py, &g.values)
+        .into_any()
+        .call_method1("reshape", ((na, nm, nq),))?;
+    named(
+        py,
+        "Table",
+        vec![
+            PyArray1::from_slice(py, &g.spec.alpha).into_any().unbind(),
+            PyArray1::from_slice(py, &g.spec.mu).into_any().unbind(),
+            pyo3::types::PyTuple::new(py, &g.quantities)?
+                .into_any()
+                .unbind(),
+            values.unbind(),
+        ],
+    )
+}
+
+/// table(ndf, alpha, mu, material='furnace', eta=None, k=None, rho=None, method='walk',
+/// walks=100000, seed=0, out=None, progress=False): the albedo table over (α, μ) of the
+/// command line's ``microsurface table`` (the same options, the same numbers: the library's
+/// ``scattering::table::Grid::generate``, deterministic for any thread count). ``ndf``: a
+/// class, a name (``"gtr:1.5"``) or an NDF (its kind and shape); ``alpha``, ``mu``: the nodes
+/// (α > 0; μ in (0, 1], and [−1, 0) for a dielectric: from inside); ``material``:
+/// ``'furnace'`` (F = 1), ``'conductor'`` (``eta``, ``k``), ``'dielectric'`` (``eta``) or
+/// ``'diffuse'`` (``rho``, default 1); ``method``: ``'walk'`` (``walks`` per cell from
+/// ``seed``: orders 1, 2, 3, ≥ 4 per side with standard errors) or ``'quadrature'`` (the
+/// single-scattering albedo ``e1`` of the furnace). ``out``: also write it in the command
+/// line's binary form (``.mfa``). ``progress=True``: a tqdm bar where tqdm is installed
+/// (silent otherwise). Runs on every core; Ctrl-C interrupts it. Returns ``Table(alpha, mu,
+/// quantities, values)``, values float32 of shape (len(alpha), len(mu), len(quantities)).
+#[pyfunction]
+#[pyo3(signature = (ndf, alpha, mu, material = "furnace", eta = None, k = None, rho = None, method = "walk", walks = 100_000, seed = 0, out = None, progress = false))]
+#[allow(clippy::too_many_arguments)]
+fn table(
+    py: Python<'_>,
+    ndf: &Bound<'_, PyAny>,
+    alpha: Vec<f64>,
+    mu: Vec<f64>,
+    material: &str,
+    eta: Option<f64>,
+    k: Option<f64>,
+    rho: Option<f64>,
+    method: &str,
+    walks: i64,
+    seed: i128,
+    out: Option<std::path::PathBuf>,
+    progress: bool,
+) -> PyResult<PyObject> {
+    let (kind, shape, _, _) = crate::ndf::kind_of(py, ndf)?;
+    let need = |x: Option<f64>, what: &str| {
+        x.ok_or_else(|| PyValueError::new_err(format!("material '{material}' needs {what}")))
+    };
+    let material = match material {
+        "furnace" => TableMaterial::Furnace,
+        "conductor" => TableMaterial::Conductor {
+            eta: need(eta, "eta and k")?,
+            k: need(k, "eta and k")?,
+        },
+        "dielectric" => TableMaterial::Dielectric {
+            eta: need(eta, "eta")?,
+        },
+        "diffuse" => TableMaterial::Diffuse {
+            rho: rho.unwrap_or(1.0),
+        },
+        _ => {
+            return Err(PyValueError::new_err(format!(
+            "material must be 'furnace', 'conductor', 'dielectric' or 'diffuse' (got {material:?})"
+        )))
+        }
+    };
+    let seed = u64::try_from(seed)
+        .map_err(|_| PyValueError::new_err(format!("seed must be in [0, 2**64) (got {seed})")))?;
+    let method = match method {
+        "walk" => Method::Walk {
+            walks: count(walks, "walks", 1)? as u64,
+            seed,
+        },
+        "quadrature" => Method::Quadrature,
+        _ => {
+            return Err(PyValueError::new_err(format!(
+                "method must be 'walk' or 'quadrature' (got {method:?})"
+            )))
+        }
+    };
+    let spec = Spec {
+        ndf: kind,
+        gamma: shape,
+        material,
+        method,
+        alpha,
+        mu,
+    };
+    spec.validate().map_err(|e| PyValueError::new_err(e.0))?;
+    let bar = progress_bar(py, progress, "unit")?;
+    let state = std::sync::Arc::new([
+        std::sync::atomic::AtomicU64::new(0),
+        std::sync::atomic::AtomicU64::new(0),
+    ]);
+    let shared = state.clone();
+    let work = move || {
+        Grid::generate(&spec, &|done, total| {
+            shared[0].store(done, std::sync::atomic::Ordering::Relaxed);
+            shared[1].store(total, std::sync::atomic::Ordering::Relaxed);
+        })
+    };
+    let mut shown = 0u64;
+    let bar_ref = bar.as_ref().map(|b| b.clone().unbind());
+    let grid = crate::engine::interruptible_ticking(py, work, |py| {
+        if let Some(b) = &bar_ref {
+            let b = b.bind(py);
+            let (done, total) = (
+                state[0].load(std::sync::atomic::Ordering::Relaxed),
+                state[1].load(std::sync::atomic::Ordering::Relaxed),
+            );
+            b.setattr("total", total)?;
+            b.call_method1("update", (done.saturating_sub(shown),))?;
+            shown = shown.max(done);
+        }
+        Ok(())
+    })?
+    .map_err(|e| PyValueError::new_err(e.0))?;
+    if let Some(b) = &bar {
+        b.call_method0("close")?;
+    }
+    if let Some(path) = out {
+        if path.extension().and_then(|e| e.to_str()) != Some("mfa") {
+            return Err(PyValueError::new_err(
+                "out must end in .mfa (the command line's binary form)",
+            ));
+        }
+        std::fs::write(&path, grid.to_bytes())
+            .map_err(|e| pyo3::exceptions::PyOSError::new_err(e.to_string()))?;
+    }
+    table_tuple(py, &grid)
+}
+
+/// read_table(path): a table of the command line's binary form (``.mfa``, as ``table`` and
+/// ``microsurface table`` write it) as ``Table(alpha, mu, quantities, values)``.
+#[pyfunction]
+fn read_table(py: Python<'_>, path: std::path::PathBuf) -> PyResult<PyObject> {
+    let bytes =
+        std::fs::read(&path).map_err(|e| pyo3::exceptions::PyOSError::new_err(e.to_string()))?;
+    let g = Grid::from_bytes(&bytes)
+        .map_err(|e| PyValueError::new_err(format!("{}: {}", path.display(), e.0)))?;
+    table_tuple(py, &g)
+}
+
+/// Adds `AlbedoTable`, `single_scattering_albedo`, `table` and `read_table` to the module.
 pub fn register(m: &Bound<'_, PyModule>) -> PyResult<()> {
+    m.add_function(wrap_pyfunction!(table, m)?)?;
+    m.add_function(wrap_pyfunction!(read_table, m)?)?;
     m.add_class::<AlbedoTable>()?;
     m.add_function(wrap_pyfunction!(single_scattering_albedo, m)?)?;
     Ok(())

@@ -677,6 +677,16 @@ pub fn interruptible<T: Send + 'static>(
     py: Python<'_>,
     f: impl FnOnce() -> T + Send + 'static,
 ) -> PyResult<T> {
+    interruptible_ticking(py, f, |_| Ok(()))
+}
+
+/// [`interruptible`], calling `tick` with the GIL every 50 ms while `f` runs (a progress
+/// bar's update) and once at its end.
+pub fn interruptible_ticking<T: Send + 'static>(
+    py: Python<'_>,
+    f: impl FnOnce() -> T + Send + 'static,
+    mut tick: impl FnMut(Python<'_>) -> PyResult<()> + Send,
+) -> PyResult<T> {
     use std::sync::mpsc::{channel, RecvTimeoutError};
     let (tx, rx) = channel();
     std::thread::spawn(move || {
@@ -685,8 +695,14 @@ pub fn interruptible<T: Send + 'static>(
     });
     py.allow_threads(move || loop {
         match rx.recv_timeout(Duration::from_millis(50)) {
-            Ok(v) => return Ok(v),
-            Err(RecvTimeoutError::Timeout) => Python::with_gil(|py| py.check_signals())?,
+            Ok(v) => {
+                Python::with_gil(&mut tick)?;
+                return Ok(v);
+            }
+            Err(RecvTimeoutError::Timeout) => Python::with_gil(|py| {
+                py.check_signals()?;
+                tick(py)
+            })?,
             Err(RecvTimeoutError::Disconnected) => {
                 return Err(pyo3::exceptions::PyRuntimeError::new_err(
                     "the computation failed (a panic in the library: please report it)",

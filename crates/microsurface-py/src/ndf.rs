@@ -1177,6 +1177,65 @@ shaped! {
     GenExponential => GenExponential, gamma;
 }
 
+/// What [`kind_of`] finds: the NDF, its shape, the class of results and their keywords.
+pub type KindOf<'py> = (
+    NdfKind,
+    Option<f64>,
+    Bound<'py, PyAny>,
+    Bound<'py, pyo3::types::PyDict>,
+);
+
+/// The NDF kind and shape of `ndf`: a class (without a shape parameter), a spec string
+/// (`"student_t:4"`) or an instance of one material; with the class to build results of and
+/// the instance's keywords (`exact`, `sampler`).
+pub fn kind_of<'py>(py: Python<'py>, ndf: &Bound<'py, PyAny>) -> PyResult<KindOf<'py>> {
+    let module = py.import("microsurface._microsurface")?;
+    let class_of = |kind: NdfKind| -> PyResult<Bound<'py, PyAny>> {
+        for name in module.dir()? {
+            let c = module.getattr(name.downcast::<pyo3::types::PyString>()?)?;
+            if c.getattr("_kind")
+                .is_ok_and(|k| k.eq(kind.name()).unwrap_or(false))
+            {
+                return Ok(c);
+            }
+        }
+        Err(PyValueError::new_err(format!("no class for {kind}")))
+    };
+    let kwargs = pyo3::types::PyDict::new(py);
+    if let Ok(n) = ndf.downcast::<NDF>() {
+        let n = n.get();
+        let Some(o) = &n.one else {
+            return Err(PyValueError::new_err(
+                "ndf must be one material (its parameters numbers)",
+            ));
+        };
+        kwargs.set_item("exact", n.exact)?;
+        kwargs.set_item("sampler", n.sampler_arg())?;
+        return Ok((n.kind, o.p.shape, ndf.get_type().into_any(), kwargs));
+    }
+    if let Ok(spec) = ndf.extract::<String>() {
+        let spec: microsurface::NdfSpec = spec
+            .parse()
+            .map_err(|e: microsurface::SpecError| PyValueError::new_err(e.to_string()))?;
+        return Ok((spec.kind, spec.shape, class_of(spec.kind)?, kwargs));
+    }
+    let kind: String = ndf
+        .getattr("_kind")
+        .map_err(|_| {
+            PyValueError::new_err("ndf must be an NDF class, a name ('student_t:4') or an NDF")
+        })?
+        .extract()?;
+    let kind: NdfKind = kind
+        .parse()
+        .map_err(|e: microsurface::ndf::UnknownNdf| PyValueError::new_err(e.to_string()))?;
+    if let Some(shape_name) = kind.shape_name() {
+        return Err(PyValueError::new_err(format!(
+            "{kind} needs its {shape_name}: pass a name ('{kind}:<{shape_name}>') or an instance"
+        )));
+    }
+    Ok((kind, None, ndf.clone(), kwargs))
+}
+
 /// matched_alpha(ndf, reference, by='g1_45'): the NDF ``ndf`` at the roughness α whose
 /// quantity ``by`` equals the NDF ``reference``'s (matched roughness; Rust:
 /// ``AnyNdf::matched``). ``ndf``: a class (``microsurface.Beckmann``; a class with a shape
@@ -1206,52 +1265,7 @@ fn matched_alpha<'py>(
             "matched_alpha: the reference must be one material (its parameters numbers)",
         ));
     };
-    // The kind and shape, and the class and keywords of the result.
-    let module = py.import("microsurface._microsurface")?;
-    let class_of = |kind: NdfKind| -> PyResult<Bound<'py, PyAny>> {
-        for name in module.dir()? {
-            let c = module.getattr(name.downcast::<pyo3::types::PyString>()?)?;
-            if c.getattr("_kind")
-                .is_ok_and(|k| k.eq(kind.name()).unwrap_or(false))
-            {
-                return Ok(c);
-            }
-        }
-        Err(PyValueError::new_err(format!("no class for {kind}")))
-    };
-    let kwargs = pyo3::types::PyDict::new(py);
-    let (kind, shape, class) = if let Ok(n) = ndf.downcast::<NDF>() {
-        let n = n.get();
-        let Some(o) = &n.one else {
-            return Err(PyValueError::new_err(
-                "matched_alpha: ndf must be one material (its parameters numbers)",
-            ));
-        };
-        kwargs.set_item("exact", n.exact)?;
-        kwargs.set_item("sampler", n.sampler_arg())?;
-        (n.kind, o.p.shape, ndf.get_type().into_any())
-    } else if let Ok(spec) = ndf.extract::<String>() {
-        let spec: microsurface::NdfSpec = spec
-            .parse()
-            .map_err(|e: microsurface::SpecError| PyValueError::new_err(e.to_string()))?;
-        (spec.kind, spec.shape, class_of(spec.kind)?)
-    } else {
-        let kind: String = ndf
-            .getattr("_kind")
-            .map_err(|_| {
-                PyValueError::new_err("ndf must be an NDF class, a name ('student_t:4') or an NDF")
-            })?
-            .extract()?;
-        let kind: NdfKind = kind
-            .parse()
-            .map_err(|e: microsurface::ndf::UnknownNdf| PyValueError::new_err(e.to_string()))?;
-        if let Some(shape_name) = kind.shape_name() {
-            return Err(PyValueError::new_err(format!(
-                "{kind} needs its {shape_name}: pass a name ('{kind}:<{shape_name}>') or an instance"
-            )));
-        }
-        (kind, None, ndf.clone())
-    };
+    let (kind, shape, class, kwargs) = kind_of(py, ndf)?;
     let m = py
         .allow_threads(|| AnyNdf::matched(kind, shape, &one.ndf, by))
         .map_err(|e| PyValueError::new_err(e.to_string()))?;

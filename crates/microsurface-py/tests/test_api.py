@@ -979,3 +979,75 @@ def test_float32_in_float32_out_of_the_albedos():
     assert mf.single_scattering_albedo(g, mu).dtype == np.float32
     assert mf.single_scattering_albedo(g, mu, eta=np.float32(1.5)).reflect.dtype == np.float32
     assert mf.single_scattering_albedo(g, mu.astype(np.float64)).dtype == np.float64
+
+
+def test_table_equals_the_command_line(tmp_path):
+    # microsurface.table is `microsurface table`: the same options, the same bits.
+    out = tmp_path / "cli.mfa"
+    args = ["--ndf", "gtr", "--gamma", "1.5", "--alpha", "0.3:0.8:2", "--mu", "0.5:1:2", "--walks", "2000", "--seed", "3"]
+    if not os.path.exists(CLI):
+        pytest.skip("the command line is not built")
+    subprocess.run([CLI, "table", *args, "--out", str(out)], check=True, capture_output=True)
+    want = mf.read_table(out)
+    got = mf.table("gtr:1.5", [0.3, 0.8], [0.5, 1.0], walks=2000, seed=3, out=tmp_path / "py.mfa")
+    assert got.quantities == want.quantities and got.quantities[:2] == ("r1", "r1_se")
+    assert got.values.dtype == np.float32 and got.values.shape == (2, 2, 22)
+    assert np.array_equal(got.values, want.values) and np.array_equal(got.alpha, want.alpha)
+    assert (tmp_path / "py.mfa").read_bytes() == out.read_bytes()
+    # The furnace's walk conserves energy: e = 1 in every cell.
+    assert np.all(got.values[:, :, got.quantities.index("e")] == 1.0)
+    for kwargs, match in [(dict(material="dielectric"), "needs eta"), (dict(method="mc"), "method"),
+                          (dict(material="glass"), "material"), (dict(walks=0), "walks")]:
+        with pytest.raises(ValueError, match=match):
+            mf.table("ggx", [0.3], [0.5], **kwargs)
+    with pytest.raises(ValueError, match="mu"):
+        mf.table("ggx", [0.3], [1.5])
+
+
+def test_table_progress_uses_tqdm_where_installed(monkeypatch):
+    # progress=True drives a tqdm bar (a stand-in module here: tqdm is optional) to the
+    # table's total units of work; without tqdm it is silent.
+    import types
+
+    seen = {}
+
+    class Bar:
+        def __init__(self, unit, total):
+            self.total, self.n = total, 0
+
+        def update(self, k):
+            self.n += k
+
+        def close(self):
+            seen["done"] = (self.n, self.total)
+
+    monkeypatch.setitem(sys.modules, "tqdm", types.SimpleNamespace(tqdm=Bar))
+    mf.table("ggx", [0.3, 0.5], [0.5, 1.0], walks=70_000, progress=True)
+    n, total = seen["done"]
+    assert total >= 4 and n == total
+    monkeypatch.setitem(sys.modules, "tqdm", None)  # (import fails: silent)
+    mf.table("ggx", [0.3], [0.5], walks=100, progress=True)
+
+
+def test_albedo_table_nodes_save_and_load(tmp_path):
+    t = mf.AlbedoTable(mf.Exponential(0.4))
+    assert t.mu.shape == t.values.shape == (33,) and t.mu[0] == 1e-6 and t.mu[-1] == 1.0
+    # (The interpolant passes through the nodes at √μ = k/32; the grazing node's value,
+    # E(1e-6), stands at √μ = 0.)
+    assert np.allclose(t.e(t.mu[1:]), t.values[1:], rtol=0, atol=1e-15)
+    t.save(tmp_path / "e.npy")
+    u = mf.AlbedoTable.load(tmp_path / "e.npy")
+    assert np.array_equal(u.values, t.values) and u.e_avg == t.e_avg
+    t.save(tmp_path / "e.mfa")
+    v = mf.AlbedoTable.load(tmp_path / "e.mfa")
+    np.testing.assert_allclose(v.values, t.values, rtol=6e-8)  # (the format's float32)
+    r = mf.read_table(tmp_path / "e.mfa")
+    assert r.quantities == ("e1",) and r.alpha.tolist() == [0.4]
+    v.save(tmp_path / "again.mfa")  # (the NDF and α travel with it)
+    with pytest.raises(ValueError, match="npy"):
+        mf.AlbedoTable.load(tmp_path / "e.npy").save(tmp_path / "x.mfa")
+    with pytest.raises(ValueError, match="must end"):
+        t.save(tmp_path / "e.csv")
+    np.save(tmp_path / "bad.npy", np.stack([np.linspace(0, 1, 8), np.ones(8)], -1))
+    with pytest.raises(ValueError, match="uniform in sqrt"):
+        mf.AlbedoTable.load(tmp_path / "bad.npy")

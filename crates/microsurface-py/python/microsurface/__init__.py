@@ -28,7 +28,10 @@ and ``k``, whose last axis is the channels); never a Python loop.
   exact inversion, a warp of u.
 * Multiple scattering: ``ndf.albedo(mu, walks=...)`` by order (the random walk),
   ``single_scattering_albedo(ndf, mu)`` (quadrature), both over parameter arrays for
-  (α, μ) tables, and ``AlbedoTable(ndf)`` (the compensation table, one material).
+  (α, μ) tables, ``AlbedoTable(ndf)`` (the compensation table, one material; its nodes
+  ``mu`` and ``values``, ``save``/``load`` as ``.npy`` or the command line's ``.mfa``), and
+  ``table(ndf, alpha, mu, ...)``, the command line's ``microsurface table`` (walk or
+  quadrature, every material, ``progress=True`` for a tqdm bar), with ``read_table``.
 * Matched roughness: ``matched_alpha(ndf, reference, by="g1_45")``, the NDF ``ndf`` (a
   class, a name such as ``"student_t:4"``, or an instance) at the α whose G1 at 45°
   (``"sigma0"``, ``"mean_slope"``, ``"dcos_median"``) equals the reference's.
@@ -74,9 +77,11 @@ from ._microsurface import (  # noqa: F401
     K0,
     StudentT,
     matched_alpha,
+    read_table,
     single_scattering_albedo,
+    table,
 )
-from ._types import Albedo, BSDFSample, DielectricAlbedo, Sample  # noqa: F401
+from ._types import Albedo, BSDFSample, DielectricAlbedo, Sample, Table  # noqa: F401
 
 __all__ = [
     "__version__",
@@ -98,8 +103,11 @@ __all__ = [
     "AlbedoTable",
     "single_scattering_albedo",
     "matched_alpha",
+    "table",
+    "read_table",
     "Sample",
     "BSDFSample",
     "Albedo",
     "DielectricAlbedo",
+    "Table",
 ]

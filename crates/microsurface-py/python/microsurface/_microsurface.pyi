@@ -4,7 +4,7 @@ from typing import Optional, Sequence, Tuple, Union
 import numpy as np
 import numpy.typing as npt
 
-from ._types import Albedo, BSDFSample, DielectricAlbedo, Sample
+from ._types import Albedo, BSDFSample, DielectricAlbedo, Sample, Table
 
 ArrayLike = Union[float, int, npt.ArrayLike]
 # float32 in → float32 out, otherwise float64; scalars in → a NumPy scalar out.
@@ -188,6 +188,15 @@ class Dielectric(BSDF):
 
 class AlbedoTable:
     def __init__(self, ndf: NDF) -> None: ...
+    # The nodes (uniform in sqrt(mu)) and E there.
+    @property
+    def mu(self) -> npt.NDArray[np.float64]: ...
+    @property
+    def values(self) -> npt.NDArray[np.float64]: ...
+    # .npy ((n, 2): mu, E) or .mfa (the command line's binary form).
+    def save(self, path: str) -> None: ...
+    @staticmethod
+    def load(path: str, alpha_index: int = 0) -> "AlbedoTable": ...
     def e(self, mu: ArrayLike) -> Result: ...
     @property
     def e_avg(self) -> float: ...
@@ -207,3 +216,20 @@ def single_scattering_albedo(
     eta: Optional[ArrayLike] = None,
     masking: str = "pbrt",
 ) -> Union[Result, DielectricAlbedo]: ...
+
+# The command line's `microsurface table`: the albedo over (alpha, mu) by the walk or quadrature.
+def table(
+    ndf: Union[type, str, NDF],
+    alpha: Sequence[float],
+    mu: Sequence[float],
+    material: str = "furnace",
+    eta: Optional[float] = None,
+    k: Optional[float] = None,
+    rho: Optional[float] = None,
+    method: str = "walk",
+    walks: int = 100000,
+    seed: int = 0,
+    out: Optional[str] = None,
+    progress: bool = False,
+) -> Table: ...
+def read_table(path: str) -> Table: ...

@@ -43,3 +43,15 @@ class DielectricAlbedo(NamedTuple):
 
     reflect: np.ndarray
     transmit: np.ndarray
+
+
+class Table(NamedTuple):
+    """An albedo table over (α, μ) (``microsurface.table``, ``read_table``; the command line's
+    ``microsurface table``): the nodes ``alpha`` and ``mu``, the ``quantities``' names
+    (``e1``; or ``r1``…``r4``, ``r``, ``t1``…``t4``, ``t``, ``e`` and their ``_se`` standard
+    errors for the walk) and ``values`` (float32, (len(alpha), len(mu), len(quantities)))."""
+
+    alpha: np.ndarray
+    mu: np.ndarray
+    quantities: tuple
+    values: np.ndarray
