@@ -22,6 +22,7 @@ fn wo_of(mu: f64, phi: f64) -> [f64; 3] {
 
 /// `NDF.albedo` (its docstring there): the random walk's albedo by order of `ndf`'s
 /// material at each element.
+#[allow(clippy::too_many_arguments)]
 pub fn walk(
     ndf: &NDF,
     py: Python<'_>,
@@ -30,11 +31,19 @@ pub fn walk(
     walks: i64,
     seed: i128,
     eta: Option<f64>,
+    orders: i64,
 ) -> PyResult<PyObject> {
     if !ndf.batched() {
         ndf.material()?;
     }
     let walks = count(walks, "walks", 1)? as u64;
+    // (At most 1000 bins: an order of thousands is reached only at α ≳ 300.)
+    let k = count(orders, "orders", 1)?;
+    if k > 1000 {
+        return Err(PyValueError::new_err(format!(
+            "orders must be at most 1000 (got {orders})"
+        )));
+    }
     let seed = u64::try_from(seed)
         .map_err(|_| PyValueError::new_err(format!("seed must be in [0, 2**64) (got {seed})")))?;
     if let Some(eta) = eta {
@@ -46,27 +55,33 @@ pub fn walk(
     }
     let zero = zero_like(py, mu)?;
     let items = items(mu, phi.unwrap_or(&zero));
-    let o = ndf.each(py, &items, &[4, 4, 4, 4, 0, 0], 2, |d, i, a, o| {
+    let o = ndf.each(py, &items, &[k, k, k, k, 0, 0], 2, |d, i, a, o| {
         let surface = RandomWalk::new(d.clone(), Heights::Uniform);
         let wo = wo_of(a[0][0], a[1][0]);
         // (One stream per element, whatever thread runs it.)
         let seed = seed.wrapping_add((i as u64).wrapping_mul(0x9E37_79B9_7F4A_7C15));
         let r = match eta {
-            None => scattering::albedo(
+            None => scattering::albedo_orders(
                 &surface,
                 &MirrorFacets(microsurface::bsdf::fresnel::One::<1>),
                 wo,
                 walks,
                 seed,
+                k,
             ),
-            Some(eta) => scattering::albedo(&surface, &DielectricFacets(eta), wo, walks, seed),
+            Some(eta) => {
+                scattering::albedo_orders(&surface, &DielectricFacets(eta), wo, walks, seed, k)
+            }
         };
-        o[0..4].copy_from_slice(&r.reflect.orders);
-        o[4..8].copy_from_slice(&r.reflect.stderr);
-        o[8..12].copy_from_slice(&r.transmit.orders);
-        o[12..16].copy_from_slice(&r.transmit.stderr);
-        o[16] = r.total.mean;
-        o[17] = r.total.stderr;
+        for (j, side) in [&r.reflect, &r.transmit].into_iter().enumerate() {
+            let at = 2 * j * k;
+            for (n, e) in side.iter().enumerate() {
+                o[at + n] = e.mean;
+                o[at + k + n] = e.stderr;
+            }
+        }
+        o[4 * k] = r.total.mean;
+        o[4 * k + 1] = r.total.stderr;
     })?;
     named(py, "Albedo", o)
 }

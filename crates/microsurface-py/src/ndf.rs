@@ -1036,15 +1036,18 @@ impl NDF {
     /// of relative index ``eta``. ``walks`` walks per element, seeded by ``seed`` and the
     /// element's index (the same numbers whatever the threads). Returns ``Albedo(reflect,
     /// reflect_stderr, transmit, transmit_stderr, total, total_stderr)``: reflect and
-    /// transmit of shape (..., 4) for the orders 1, 2, 3 and ≥ 4, with their standard
-    /// errors; total (...) is reflect + transmit summed over orders. ``mu`` ∈ [−1, 1],
+    /// transmit of shape (..., ``orders``) for the orders 1, 2, …, ``orders`` − 1 and
+    /// ≥ ``orders`` (default 4: 1, 2, 3, ≥ 4; the same walks give the same lower orders for
+    /// any ``orders``, 1 ≤ ``orders`` ≤ 1000), with their standard errors; total (...) is
+    /// reflect + transmit summed over orders. ``mu`` ∈ [−1, 1],
     /// ``phi`` finite, ``walks`` ≥ 1 (else ValueError); a NaN ``mu`` or ``phi`` gives NaN
     /// fields. The walk runs this NDF's path (fast by default, ``exact=True`` the exact one).
     /// Dielectric facets: order 1 is single scattering with the exact height-correlated
     /// transmission masking B(1 + Λo, 1 + Λi) (``single_scattering_albedo(ndf, mu, eta=eta,
     /// masking='exact')``; ``Dielectric(..., masking='correlated_beta')``), not pbrt's
     /// 1/(1 + Λo + Λi), the ``Dielectric`` BSDF's default (``masking='pbrt'`` there).
-    #[pyo3(signature = (mu, phi = None, walks = 100_000, seed = 0, eta = None))]
+    #[pyo3(signature = (mu, phi = None, walks = 100_000, seed = 0, eta = None, orders = 4))]
+    #[allow(clippy::too_many_arguments)]
     fn albedo(
         &self,
         py: Python<'_>,
@@ -1053,8 +1056,9 @@ impl NDF {
         walks: i64,
         seed: i128,
         eta: Option<f64>,
+        orders: i64,
     ) -> PyResult<PyObject> {
-        albedo::walk(self, py, mu, phi, walks, seed, eta)
+        albedo::walk(self, py, mu, phi, walks, seed, eta, orders)
     }
 }
 

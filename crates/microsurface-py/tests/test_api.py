@@ -1051,3 +1051,19 @@ def test_albedo_table_nodes_save_and_load(tmp_path):
     np.save(tmp_path / "bad.npy", np.stack([np.linspace(0, 1, 8), np.ones(8)], -1))
     with pytest.raises(ValueError, match="uniform in sqrt"):
         mf.AlbedoTable.load(tmp_path / "bad.npy")
+
+
+def test_albedo_by_any_number_of_orders():
+    # orders=K: the last axis K (1, …, K − 1, ≥ K); the same walks give the same low orders,
+    # and the orders from 4 up sum to the default's ≥ 4.
+    g = mf.GGX(1.5)
+    a4 = g.albedo([0.3, 0.7], walks=5000, eta=1.5, seed=2)
+    a9 = g.albedo([0.3, 0.7], walks=5000, eta=1.5, seed=2, orders=9)
+    assert a9.reflect.shape == (2, 9) and a9.transmit_stderr.shape == (2, 9)
+    assert np.array_equal(a9.reflect[:, :3], a4.reflect[:, :3])
+    np.testing.assert_allclose(a9.transmit[:, 3:].sum(-1), a4.transmit[:, 3], rtol=1e-12)
+    assert np.array_equal(a9.total, a4.total)
+    assert g.albedo(0.5, walks=100, orders=1).reflect.shape == (1,)
+    for bad in (0, 1001):
+        with pytest.raises(ValueError, match="orders"):
+            g.albedo(0.5, walks=10, orders=bad)

@@ -78,6 +78,7 @@ class NDF:
         walks: int = 100000,
         seed: int = 0,
         eta: Optional[float] = None,
+        orders: int = 4,
     ) -> Albedo: ...
 
 class Beckmann(NDF):

@@ -27,7 +27,8 @@ class BSDFSample(NamedTuple):
 
 class Albedo(NamedTuple):
     """The albedo by scattering order (the last axis of ``reflect`` and ``transmit``: orders
-    1, 2, 3 and ≥ 4) with standard errors, and the total over sides and orders."""
+    1, 2, …, K − 1 and ≥ K for ``albedo(..., orders=K)``, default 4) with standard errors,
+    and the total over sides and orders."""
 
     reflect: np.ndarray
     reflect_stderr: np.ndarray
