@@ -26,12 +26,12 @@ pub enum MatchBy {
     /// falls like e^{−1/α²} for light tails and like α² for GGX's: a smooth Beckmann
     /// (α ≲ 0.3) has no GGX match by it ([`MatchError::Unreachable`]).
     G1At45,
-    /// The projected area at grazing σ(0) = lim u Λ(u) as u → 0, = E[max(0, −p)] = E|p|/2
+    /// The projected area at grazing σ(0) = lim u Λ(u) as u → 0, = E(max(0, −p)) = E|p|/2
     /// over the slope marginal: how much the microsurface sticks out sideways. Increasing
     /// in α; infinite for Student-T at γ ≤ 3/2 (no match then).
     SigmaZero,
-    /// The mean slope E[tan θm] under D cos θm (the slope density P22). For an isotropic
-    /// NDF E[tan θm] = π σ(0) (E|p| = (2/π) E[r] for a radially symmetric density), so this
+    /// The mean slope E(tan θm) under D cos θm (the slope density P22). For an isotropic
+    /// NDF E(tan θm) = π σ(0) (E|p| = (2/π) E(r) for a radially symmetric density), so this
     /// is the same match as [`MatchBy::SigmaZero`], offered under the name researchers use.
     MeanSlope,
     /// The median of tan θm under D cos θm ([`RadialSlopes::slope_quantile`] at ½): the
