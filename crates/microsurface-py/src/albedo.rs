@@ -32,6 +32,7 @@ pub fn walk(
     seed: i128,
     eta: Option<f64>,
     orders: i64,
+    progress: bool,
 ) -> PyResult<PyObject> {
     if !ndf.batched() {
         ndf.material()?;
@@ -55,33 +56,35 @@ pub fn walk(
     }
     let zero = zero_like(py, mu)?;
     let items = items(mu, phi.unwrap_or(&zero));
-    let o = ndf.each(py, &items, &[k, k, k, k, 0, 0], 2, |d, i, a, o| {
-        let surface = RandomWalk::new(d.clone(), Heights::Uniform);
-        let wo = wo_of(a[0][0], a[1][0]);
-        // (One stream per element, whatever thread runs it.)
-        let seed = seed.wrapping_add((i as u64).wrapping_mul(0x9E37_79B9_7F4A_7C15));
-        let r = match eta {
-            None => scattering::albedo_orders(
-                &surface,
-                &MirrorFacets(microsurface::bsdf::fresnel::One::<1>),
-                wo,
-                walks,
-                seed,
-                k,
-            ),
-            Some(eta) => {
-                scattering::albedo_orders(&surface, &DielectricFacets(eta), wo, walks, seed, k)
+    let o = crate::engine::with_progress(py, progress, || {
+        ndf.each(py, &items, &[k, k, k, k, 0, 0], 2, |d, i, a, o| {
+            let surface = RandomWalk::new(d.clone(), Heights::Uniform);
+            let wo = wo_of(a[0][0], a[1][0]);
+            // (One stream per element, whatever thread runs it.)
+            let seed = seed.wrapping_add((i as u64).wrapping_mul(0x9E37_79B9_7F4A_7C15));
+            let r = match eta {
+                None => scattering::albedo_orders(
+                    &surface,
+                    &MirrorFacets(microsurface::bsdf::fresnel::One::<1>),
+                    wo,
+                    walks,
+                    seed,
+                    k,
+                ),
+                Some(eta) => {
+                    scattering::albedo_orders(&surface, &DielectricFacets(eta), wo, walks, seed, k)
+                }
+            };
+            for (j, side) in [&r.reflect, &r.transmit].into_iter().enumerate() {
+                let at = 2 * j * k;
+                for (n, e) in side.iter().enumerate() {
+                    o[at + n] = e.mean;
+                    o[at + k + n] = e.stderr;
+                }
             }
-        };
-        for (j, side) in [&r.reflect, &r.transmit].into_iter().enumerate() {
-            let at = 2 * j * k;
-            for (n, e) in side.iter().enumerate() {
-                o[at + n] = e.mean;
-                o[at + k + n] = e.stderr;
-            }
-        }
-        o[4 * k] = r.total.mean;
-        o[4 * k + 1] = r.total.stderr;
+            o[4 * k] = r.total.mean;
+            o[4 * k + 1] = r.total.stderr;
+        })
     })?;
     named(py, "Albedo", o)
 }
@@ -126,8 +129,10 @@ fn zero_like<'py>(py: Python<'py>, mu: &Bound<'py, PyAny>) -> PyResult<Bound<'py
 /// height-correlated B(1 + Λo, 1 + Λi) of a transmission, ``masking='correlated_beta'``:
 /// the random walk's order 1). The two differ most at grazing angles on rough surfaces
 /// (GGX α = 1, μ = 0.05: transmission 0.728 by pbrt's form, 0.050 by the exact one).
+/// ``progress=True``: a tqdm bar over the elements where tqdm is installed (silent
+/// otherwise). The generalised exponential's quadratures take seconds an element.
 #[pyfunction]
-#[pyo3(signature = (ndf, mu, phi = None, eta = None, masking = "pbrt"))]
+#[pyo3(signature = (ndf, mu, phi = None, eta = None, masking = "pbrt", progress = false))]
 fn single_scattering_albedo(
     py: Python<'_>,
     ndf: PyRef<'_, NDF>,
@@ -135,6 +140,7 @@ fn single_scattering_albedo(
     phi: Option<&Bound<'_, PyAny>>,
     eta: Option<&Bound<'_, PyAny>>,
     masking: &str,
+    progress: bool,
 ) -> PyResult<PyObject> {
     if !ndf.batched() {
         ndf.material()?;
@@ -151,8 +157,10 @@ fn single_scattering_albedo(
     let zero = zero_like(py, mu)?;
     let mut items = items(mu, phi.unwrap_or(&zero));
     let Some(eta) = eta else {
-        let mut o = ndf.each(py, &items, &[0], 2, |d, _, a, o| {
-            o[0] = scattering::single_scattering_albedo(d, wo_of(a[0][0], a[1][0]));
+        let mut o = crate::engine::with_progress(py, progress, || {
+            ndf.each(py, &items, &[0], 2, |d, _, a, o| {
+                o[0] = scattering::single_scattering_albedo(d, wo_of(a[0][0], a[1][0]));
+            })
         })?;
         return Ok(o.remove(0));
     };
@@ -170,17 +178,19 @@ fn single_scattering_albedo(
         )));
     }
     items.push((eta, 0, "eta", Domain::Finite));
-    let o = ndf.each(py, &items, &[0, 0], 2, |d, _, a, o| {
-        let (mu, phi, eta) = (a[0][0], a[1][0], a[2][0]);
-        let (r, t) = scattering::single_scattering_albedo_dielectric_level(
-            d,
-            wo_of(mu, phi),
-            eta,
-            masking,
-            4,
-        );
-        o[0] = r;
-        o[1] = t;
+    let o = crate::engine::with_progress(py, progress, || {
+        ndf.each(py, &items, &[0, 0], 2, |d, _, a, o| {
+            let (mu, phi, eta) = (a[0][0], a[1][0], a[2][0]);
+            let (r, t) = scattering::single_scattering_albedo_dielectric_level(
+                d,
+                wo_of(mu, phi),
+                eta,
+                masking,
+                4,
+            );
+            o[0] = r;
+            o[1] = t;
+        })
     })?;
     named(py, "DielectricAlbedo", o)
 }
@@ -361,20 +371,6 @@ impl AlbedoTable {
     }
 }
 
-/// A progress bar for `progress=True`: tqdm's where it is installed, else None (silent).
-fn progress_bar<'py>(py: Python<'py>, on: bool, unit: &str) -> PyResult<Option<Bound<'py, PyAny>>> {
-    if !on {
-        return Ok(None);
-    }
-    let Ok(tqdm) = py.import("tqdm") else {
-        return Ok(None);
-    };
-    let kwargs = pyo3::types::PyDict::new(py);
-    kwargs.set_item("unit", unit)?;
-    kwargs.set_item("total", 0)?;
-    Ok(Some(tqdm.getattr("tqdm")?.call((), Some(&kwargs))?))
-}
-
 /// The `Table` named tuple of a grid: its nodes, quantity names and values (α, μ, quantity).
 fn table_tuple(py: Python<'_>, g: &Grid) -> PyResult<PyObject> {
     let (na, nm, nq) = (g.spec.alpha.len(), g.spec.mu.len(), g.quantities.len());
@@ -471,7 +467,11 @@ fn table(
         mu,
     };
     spec.validate().map_err(|e| PyValueError::new_err(e.0))?;
-    let bar = progress_bar(py, progress, "unit")?;
+    let bar = if progress {
+        crate::engine::tqdm(py)?
+    } else {
+        None
+    };
     let state = std::sync::Arc::new([
         std::sync::atomic::AtomicU64::new(0),
         std::sync::atomic::AtomicU64::new(0),
@@ -484,7 +484,7 @@ fn table(
         })
     };
     let mut shown = 0u64;
-    let bar_ref = bar.as_ref().map(|b| b.clone().unbind());
+    let bar_ref = bar.as_ref().map(|b| b.clone_ref(py));
     let grid = crate::engine::interruptible_ticking(py, work, |py| {
         if let Some(b) = &bar_ref {
             let b = b.bind(py);
@@ -500,7 +500,7 @@ fn table(
     })?
     .map_err(|e| PyValueError::new_err(e.0))?;
     if let Some(b) = &bar {
-        b.call_method0("close")?;
+        b.bind(py).call_method0("close")?;
     }
     if let Some(path) = out {
         if path.extension().and_then(|e| e.to_str()) != Some("mfa") {

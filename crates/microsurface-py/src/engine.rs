@@ -511,7 +511,10 @@ pub fn compute_blocks_of<'py, T: numpy::Element + Send>(
             let done = end - start;
             start = end;
             if start < n {
-                Python::with_gil(|py| py.check_signals())?;
+                Python::with_gil(|py| {
+                    py.check_signals()?;
+                    progress_update(py, start, n)
+                })?;
                 let scale = (CHUNK.as_secs_f64() / took.max(1e-9)).min(GROWTH);
                 // (Whole blocks: a slice kernel's block starts at a multiple of `block`.)
                 chunk = (((done as f64 * scale) as usize).div_ceil(block) * block).max(block);
@@ -520,7 +523,59 @@ pub fn compute_blocks_of<'py, T: numpy::Element + Send>(
         Ok(())
     });
     drop(rw);
+    if result.is_ok() {
+        progress_update(py, n, n)?;
+    }
     result.map(|()| out)
+}
+
+thread_local! {
+    /// The progress bar of the call running on this thread (`with_progress`), and the
+    /// elements it has been told of.
+    static PROGRESS: std::cell::RefCell<Option<(PyObject, usize)>> =
+        const { std::cell::RefCell::new(None) };
+}
+
+/// `f()` with a progress bar over the elements of its loop where `on` (tqdm's, where tqdm is
+/// installed; silent otherwise): the loop ([`compute_blocks_of`]) updates it after each
+/// chunk, with the GIL it takes for Ctrl-C anyway.
+pub fn with_progress<R>(py: Python<'_>, on: bool, f: impl FnOnce() -> PyResult<R>) -> PyResult<R> {
+    let bar = if on { tqdm(py)? } else { None };
+    let Some(bar) = bar else {
+        return f();
+    };
+    PROGRESS.with(|p| *p.borrow_mut() = Some((bar.clone_ref(py), 0)));
+    let r = f();
+    PROGRESS.with(|p| p.borrow_mut().take());
+    bar.bind(py).call_method0("close")?;
+    r
+}
+
+/// A new tqdm bar (total set by the loop), or None where tqdm is not installed.
+pub fn tqdm(py: Python<'_>) -> PyResult<Option<PyObject>> {
+    let Ok(module) = py.import("tqdm") else {
+        return Ok(None);
+    };
+    let kwargs = PyDict::new(py);
+    kwargs.set_item("total", 0)?;
+    Ok(Some(
+        module.getattr("tqdm")?.call((), Some(&kwargs))?.unbind(),
+    ))
+}
+
+/// Tells this thread's progress bar, if any, that `done` of `n` elements are done.
+fn progress_update(py: Python<'_>, done: usize, n: usize) -> PyResult<()> {
+    PROGRESS.with(|p| {
+        let mut p = p.borrow_mut();
+        let Some((bar, shown)) = p.as_mut() else {
+            return Ok(());
+        };
+        let bar = bar.bind(py);
+        bar.setattr("total", n)?;
+        bar.call_method1("update", (done.saturating_sub(*shown),))?;
+        *shown = done.max(*shown);
+        Ok(())
+    })
 }
 
 /// An uninitialised NumPy array of n elements (`numpy.empty`: NumPy's allocator, which

@@ -63,7 +63,12 @@ use std::sync::OnceLock;
 /// direction of cosine u: closed forms for GGX (≤ 1e-14 relative of the exact path) and
 /// Beckmann (≤ 1e-12), fitted tables of Λ (≤ 1e-7 relative; D exact or ≤ 1e-11) for the
 /// others; the slope densities and the generalised exponential have no fast path and run
-/// the exact one. Everything of
+/// the exact one. The fast bounds are relative for values above 1e-200 and absolute
+/// (1e-200) below, as the fitted tables state (near the normal Ei's and Erfc's fast Λ
+/// stops at ~1e-301 where the exact one falls to 0), and hold for D in the normal range
+/// (where D is subnormal, Beckmann's at θ = 83° for α = 0.3, the two paths round
+/// differently). ``g2(u_o[:, None], u_i)`` evaluates Λ per pair: over an outer grid, Λ of
+/// each cosine once (``lambda_``) and 1/(1 + Λo + Λi) are faster. Everything of
 /// directions runs, by default, the renderer's fast kernels (Rust: ``AnyMicrofacet<f64>``,
 /// bit for bit what a Rust renderer and the ``microsurface`` command line compute): closed
 /// forms for GGX (≤ 1e-14 relative of the exact path) and Beckmann (≤ 1e-12); fitted
@@ -817,6 +822,42 @@ impl NDF {
         Ok((slf.get_type().into_any(), PyTuple::new(py, args)?))
     }
 
+    /// The same NDF with some of its parameters changed (``dataclasses.replace``'s way):
+    /// ``replace(alpha=..., alpha_y=..., gamma=... or a=..., exact=..., sampler=...)``, the
+    /// others kept (an isotropic NDF stays isotropic at a new α). TypeError for another
+    /// name.
+    #[pyo3(signature = (**changes))]
+    fn replace<'py>(
+        slf: &Bound<'py, Self>,
+        changes: Option<&Bound<'py, pyo3::types::PyDict>>,
+    ) -> PyResult<Bound<'py, PyAny>> {
+        let py = slf.py();
+        let this = slf.get();
+        let kwargs = pyo3::types::PyDict::new(py);
+        kwargs.set_item("alpha", this.alpha.object(py)?)?;
+        let shape_name = this.kind.shape_name();
+        if let (Some(s), Some(name)) = (&this.shape, shape_name) {
+            kwargs.set_item(name, s.object(py)?)?;
+        }
+        if let Some(ay) = &this.alpha_y {
+            kwargs.set_item("alpha_y", ay.object(py)?)?;
+        }
+        kwargs.set_item("exact", this.exact)?;
+        kwargs.set_item("sampler", this.sampler_arg())?;
+        for (k, v) in changes.into_iter().flatten() {
+            let name: String = k.extract()?;
+            let known = ["alpha", "alpha_y", "exact", "sampler"].contains(&name.as_str())
+                || Some(name.as_str()) == shape_name;
+            if !known {
+                return Err(pyo3::exceptions::PyTypeError::new_err(format!(
+                    "replace() got an unexpected parameter {name:?}"
+                )));
+            }
+            kwargs.set_item(k, v)?;
+        }
+        slf.get_type().call((), Some(&kwargs))
+    }
+
     /// An NDF is immutable: its copy is itself (its cached fast-path material shared).
     fn __copy__(slf: PyRef<'_, Self>) -> PyRef<'_, Self> {
         slf
@@ -1039,14 +1080,16 @@ impl NDF {
     /// transmit of shape (..., ``orders``) for the orders 1, 2, …, ``orders`` − 1 and
     /// ≥ ``orders`` (default 4: 1, 2, 3, ≥ 4; the same walks give the same lower orders for
     /// any ``orders``, 1 ≤ ``orders`` ≤ 1000), with their standard errors; total (...) is
-    /// reflect + transmit summed over orders. ``mu`` ∈ [−1, 1],
+    /// reflect + transmit summed over orders (an F = 1 furnace conserves energy walk by
+    /// walk: its total is 1 with standard error 0). ``progress=True``: a tqdm bar over the
+    /// elements where tqdm is installed (silent otherwise). ``mu`` ∈ [−1, 1],
     /// ``phi`` finite, ``walks`` ≥ 1 (else ValueError); a NaN ``mu`` or ``phi`` gives NaN
     /// fields. The walk runs this NDF's path (fast by default, ``exact=True`` the exact one).
     /// Dielectric facets: order 1 is single scattering with the exact height-correlated
     /// transmission masking B(1 + Λo, 1 + Λi) (``single_scattering_albedo(ndf, mu, eta=eta,
     /// masking='exact')``; ``Dielectric(..., masking='correlated_beta')``), not pbrt's
     /// 1/(1 + Λo + Λi), the ``Dielectric`` BSDF's default (``masking='pbrt'`` there).
-    #[pyo3(signature = (mu, phi = None, walks = 100_000, seed = 0, eta = None, orders = 4))]
+    #[pyo3(signature = (mu, phi = None, walks = 100_000, seed = 0, eta = None, orders = 4, progress = false))]
     #[allow(clippy::too_many_arguments)]
     fn albedo(
         &self,
@@ -1057,8 +1100,9 @@ impl NDF {
         seed: i128,
         eta: Option<f64>,
         orders: i64,
+        progress: bool,
     ) -> PyResult<PyObject> {
-        albedo::walk(self, py, mu, phi, walks, seed, eta, orders)
+        albedo::walk(self, py, mu, phi, walks, seed, eta, orders, progress)
     }
 }
 

@@ -1012,7 +1012,7 @@ def test_table_progress_uses_tqdm_where_installed(monkeypatch):
     seen = {}
 
     class Bar:
-        def __init__(self, unit, total):
+        def __init__(self, total):
             self.total, self.n = total, 0
 
         def update(self, k):
@@ -1067,3 +1067,39 @@ def test_albedo_by_any_number_of_orders():
     for bad in (0, 1001):
         with pytest.raises(ValueError, match="orders"):
             g.albedo(0.5, walks=10, orders=bad)
+
+
+def test_replace_keeps_the_other_parameters():
+    n = mf.StudentT(0.3, 2.5, alpha_y=0.6, exact=True, sampler="warp")
+    m = n.replace(alpha=0.5)
+    assert m == mf.StudentT(0.5, 2.5, alpha_y=0.6, exact=True, sampler="warp")
+    assert n.replace(gamma=np.array([3.0, 4.0])).param_shape == (2,)
+    assert mf.GGX(0.3).replace(alpha=0.7) == mf.GGX(0.7)
+    with pytest.raises(TypeError, match="gamma"):
+        mf.GGX(0.3).replace(gamma=2.0)
+    with pytest.raises(ValueError, match="alpha"):
+        n.replace(alpha=-1.0)
+
+
+def test_progress_bars_follow_the_loop(monkeypatch):
+    # progress=True on the albedos: a tqdm bar (a stand-in here) driven to the element count.
+    import types
+
+    bars = []
+
+    class Bar:
+        def __init__(self, total):
+            self.total, self.n = total, 0
+            bars.append(self)
+
+        def update(self, k):
+            self.n += k
+
+        def close(self):
+            pass
+
+    monkeypatch.setitem(sys.modules, "tqdm", types.SimpleNamespace(tqdm=Bar))
+    g = mf.GGX(np.array([0.2, 0.5, 0.9])[:, None])
+    g.albedo(np.linspace(0.1, 1, 5), walks=200, progress=True)
+    mf.single_scattering_albedo(g, np.linspace(0.1, 1, 5), progress=True)
+    assert [(b.n, b.total) for b in bars] == [(15, 15), (15, 15)]

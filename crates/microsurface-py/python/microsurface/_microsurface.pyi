@@ -31,6 +31,8 @@ class NDF:
     def __eq__(self, other: object) -> bool: ...
     def __hash__(self) -> int: ...
     def __reduce__(self) -> Tuple[type, tuple]: ...
+    # The same NDF with some parameters changed (alpha, alpha_y, gamma/a, exact, sampler).
+    def replace(self, **changes: object) -> "NDF": ...
     @property
     def alpha(self) -> Param: ...
     @property
@@ -79,6 +81,7 @@ class NDF:
         seed: int = 0,
         eta: Optional[float] = None,
         orders: int = 4,
+        progress: bool = False,
     ) -> Albedo: ...
 
 class Beckmann(NDF):
@@ -216,6 +219,7 @@ def single_scattering_albedo(
     phi: Optional[ArrayLike] = None,
     eta: Optional[ArrayLike] = None,
     masking: str = "pbrt",
+    progress: bool = False,
 ) -> Union[Result, DielectricAlbedo]: ...
 
 # The command line's `microsurface table`: the albedo over (alpha, mu) by the walk or quadrature.
