@@ -295,6 +295,7 @@ impl<'py> Args<'py> {
         let np = numpy(py)?;
         let float32 = np.getattr("float32")?;
         let mut f32 = true;
+        let mut arguments = false;
         let mut wide = Vec::with_capacity(items.len());
         let mut batches = Vec::with_capacity(items.len());
         let mut singles = Vec::with_capacity(items.len());
@@ -302,8 +303,11 @@ impl<'py> Args<'py> {
             let a = np.call_method1("asarray", (x,))?;
             let single = a.getattr("dtype")?.eq(&float32)?;
             singles.push(single);
-            // (A parameter array does not choose the dtype: the arguments do.)
-            f32 &= single || matches!(domain, Domain::Fixed(_));
+            // (A parameter array does not choose the dtype: the arguments do; with none,
+            // float64.)
+            let fixed = matches!(domain, Domain::Fixed(_));
+            f32 &= single || fixed;
+            arguments |= !fixed;
             let shape: Vec<usize> = a.getattr("shape")?.extract()?;
             if core > 0 && shape.last() != Some(&core) {
                 return Err(PyValueError::new_err(format!(
@@ -342,7 +346,7 @@ impl<'py> Args<'py> {
             arrays,
             batch,
             n,
-            f32,
+            f32: f32 && arguments,
         })
     }
 

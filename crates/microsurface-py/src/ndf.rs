@@ -1294,9 +1294,10 @@ pub fn kind_of<'py>(py: Python<'py>, ndf: &Bound<'py, PyAny>) -> PyResult<KindOf
 /// under D cos θm, = π σ(0): the same match as ``"sigma0"``), ``"dcos_median"`` (the
 /// median of tan θm under D cos θm). Returns an instance of the NDF's class. Bisection in
 /// ln α over [1e-6, 1e6] on the exact path: the matched quantity equals the reference's to
-/// ≤ 1e-10 relative. ValueError where no α matches (σ(0) = ∞ for Student-T at γ ≤ 3/2; G1
-/// at 45° of a smooth Beckmann, α ≲ 0.3, below any GGX's), or for a reference of parameter
-/// arrays (one material).
+/// ≤ 1e-10 relative. Parameter arrays (the reference's, an instance's shape) broadcast: the
+/// result's α is an array, one match per element. ValueError where no α matches (σ(0) = ∞
+/// for Student-T at γ ≤ 3/2; G1 at 45° of a smooth Beckmann, α ≲ 0.3, below any GGX's) or
+/// for an anisotropic reference.
 #[pyfunction]
 #[pyo3(signature = (ndf, reference, by = "g1_45"))]
 fn matched_alpha<'py>(
@@ -1308,17 +1309,80 @@ fn matched_alpha<'py>(
     let by: microsurface::ndf::MatchBy = by
         .parse()
         .map_err(|e: microsurface::ndf::MatchError| PyValueError::new_err(e.to_string()))?;
-    let Some(one) = &reference.one else {
+    if !reference.isotropic {
         return Err(PyValueError::new_err(
-            "matched_alpha: the reference must be one material (its parameters numbers)",
+            "matched_alpha: the reference must be isotropic (alpha_y = alpha)",
         ));
+    }
+    // An instance's shape may be an array (then its α is not used); else kind_of's.
+    let (kind, shape, class, kwargs, shape_array) = match ndf.downcast::<NDF>() {
+        Ok(n) if n.get().batched() => {
+            let g = n.get();
+            let kwargs = pyo3::types::PyDict::new(py);
+            kwargs.set_item("exact", g.exact)?;
+            kwargs.set_item("sampler", g.sampler_arg())?;
+            let (shape, array) = match &g.shape {
+                Some(Param::Num(x)) => (Some(*x), None),
+                Some(Param::Arr(a)) => (None, Some(a.bind(py).clone())),
+                None => (None, None),
+            };
+            (g.kind, shape, ndf.get_type().into_any(), kwargs, array)
+        }
+        _ => {
+            let (kind, shape, class, kwargs) = kind_of(py, ndf)?;
+            (kind, shape, class, kwargs, None)
+        }
     };
-    let (kind, shape, class, kwargs) = kind_of(py, ndf)?;
-    let m = py
-        .allow_threads(|| AnyNdf::matched(kind, shape, &one.ndf, by))
-        .map_err(|e| PyValueError::new_err(e.to_string()))?;
-    let mut args = vec![m.alpha()];
-    args.extend(shape.filter(|_| kind.shape_name().is_some()));
+    let match_one = |r: &AnyNdf, shape: Option<f64>| {
+        AnyNdf::matched(kind, shape, r, by)
+            .map(|m| m.alpha())
+            .map_err(|e| PyValueError::new_err(e.to_string()))
+    };
+    let alpha: Bound<'py, PyAny> = match (&reference.one, &shape_array) {
+        (Some(one), None) => {
+            let a = py.allow_threads(|| match_one(&one.ndf, shape))?;
+            a.into_pyobject(py)?.into_any()
+        }
+        _ => {
+            // Parameter arrays: one match per element of the reference's arrays broadcast
+            // with the NDF's shape array (each a bisection: microseconds to a millisecond).
+            let arrays = reference.arrays(py);
+            let mut args: Vec<(&Bound<'py, PyAny>, &str, Domain<'_>)> = arrays
+                .iter()
+                .map(|(a, n)| (a, *n, crate::engine::FIXED))
+                .collect();
+            if let Some(s) = &shape_array {
+                args.push((s, "shape", crate::engine::FIXED));
+            }
+            let nr = arrays.len();
+            let has_shape_array = shape_array.is_some();
+            let reference: &NDF = &reference;
+            let failure = std::sync::Mutex::new(None);
+            let out = apply(py, &args, |x| {
+                let p = reference.p_of(&x[..nr]);
+                let s = if has_shape_array { Some(x[nr]) } else { shape };
+                let r = AnyNdf::new(reference.kind, p.alpha, p.shape)?;
+                match AnyNdf::matched(kind, s, &r, by) {
+                    Ok(m) => Ok(m.alpha()),
+                    Err(e) => {
+                        failure.lock().unwrap().get_or_insert(e.to_string());
+                        Ok(f64::NAN)
+                    }
+                }
+            })?;
+            if let Some(e) = failure.into_inner().unwrap() {
+                return Err(PyValueError::new_err(e));
+            }
+            out.into_bound(py)
+        }
+    };
+    let mut args = vec![alpha];
+    if kind.shape_name().is_some() {
+        args.push(match (&shape_array, shape) {
+            (Some(a), _) => a.clone(),
+            (None, s) => s.into_pyobject(py)?.into_any(),
+        });
+    }
     class.call(PyTuple::new(py, args)?, Some(&kwargs))
 }
 

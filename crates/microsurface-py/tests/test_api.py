@@ -1103,3 +1103,18 @@ def test_progress_bars_follow_the_loop(monkeypatch):
     g.albedo(np.linspace(0.1, 1, 5), walks=200, progress=True)
     mf.single_scattering_albedo(g, np.linspace(0.1, 1, 5), progress=True)
     assert [(b.n, b.total) for b in bars] == [(15, 15), (15, 15)]
+
+
+def test_matched_alpha_over_parameter_arrays():
+    # The reference's arrays and an instance's shape array broadcast: one match per element.
+    ref = mf.GGX(np.array([0.1, 0.3, 0.6])[:, None])
+    s = mf.matched_alpha(mf.StudentT(1.0, np.array([1.6, 2.5, 8.0])), ref, by="sigma0")
+    assert type(s) is mf.StudentT and s.param_shape == (3, 3)
+    for i, a in enumerate([0.1, 0.3, 0.6]):
+        for j, g in enumerate([1.6, 2.5, 8.0]):
+            one = mf.matched_alpha(f"student_t:{g}", mf.GGX(a), by="sigma0")
+            assert s.alpha[i, j] == one.alpha
+    b = mf.matched_alpha(mf.Beckmann, mf.GGX([0.3, 0.5]))
+    assert b.alpha.shape == (2,) and b.alpha[1] == mf.matched_alpha(mf.Beckmann, mf.GGX(0.5)).alpha
+    with pytest.raises(ValueError, match="no alpha"):
+        mf.matched_alpha("student_t:1.4", mf.GGX([0.3, 0.5]), by="sigma0")
