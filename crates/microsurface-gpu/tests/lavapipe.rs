@@ -113,7 +113,8 @@ fn dir(c: f64, phi: f64) -> [f32; 3] {
     [(s * phi.cos()) as f32, (s * phi.sin()) as f32, c as f32]
 }
 
-/// Normal incidence, cos θ from 0.9 to 1e-4 at four azimuths, and a few below the horizon.
+/// Normal incidence, cos θ from 0.9 to 1e-4 at four azimuths, a few below the horizon, and
+/// one on it.
 fn directions() -> Vec<[f32; 3]> {
     let mut v = vec![[0.0, 0.0, 1.0]];
     for c in [0.9, 0.5, 0.1, 1e-2, 1e-4] {
@@ -124,6 +125,8 @@ fn directions() -> Vec<[f32; 3]> {
     for c in [-0.7, -0.05] {
         v.push(dir(c, 2.4));
     }
+    // On the horizon: Λ = +∞, G1 = G2 = 0, the pdfs 0, a conductor's sample rejected.
+    v.push([0.6, 0.8, 0.0]);
     v
 }
 
@@ -234,4 +237,254 @@ fn ggx_d_lambda_g1_g2_pdfs_match_rust_f32() {
         }
     }
     w.check(&[TOL; 8]);
+}
+
+/// The largest component difference of two unit vectors.
+fn vec_diff(a: [f32; 3], b: [f32; 3]) -> f64 {
+    (0..3)
+        .map(|i| (a[i] as f64 - b[i] as f64).abs())
+        .fold(0.0, f64::max)
+}
+
+/// The sampled normals' bound per component, 16ε: the Rust f32 samplers form cos 2πu in f64
+/// and round it (½ ulp), the WGSL forms it in f32 (a few ulp), and the cap point and the
+/// unstretch round once more on each side. Measured on lavapipe over the grids below
+/// (anisotropy up to 50:1): 4ε (BENCHMARKS.md).
+const NORMAL_TOL: f64 = 16.0 * EPS;
+
+#[test]
+fn ggx_samplers_give_the_rust_f32_normals() {
+    let mut els = Vec::new();
+    for &a in &ALPHAS {
+        for &wo in &directions() {
+            for &u in &uniforms() {
+                els.push(El::new(a, wo, [0.0, 0.0, 1.0], u));
+            }
+        }
+    }
+    let (Some(vis), Some(bounded)) = (run("ms_k_ggx_sample", &els), run("ms_k_ggx_bounded", &els))
+    else {
+        return;
+    };
+    let names = [
+        "visible normal",
+        "visible pdf at it",
+        "D·cos normal",
+        "D·cos pdf at it",
+        "bounded normal",
+        "bounded pdf at it",
+    ];
+    let mut w = Worst::new(&names);
+    for ((e, o), b) in els.iter().zip(&vis).zip(&bounded) {
+        let m = Microfacet::<f32, Ggx>::new(e.alpha[0], e.alpha[1]).unwrap();
+        let what = |g: [f32; 4], r: [f32; 3], p: f32| {
+            move || format!("{e:?}: gpu {g:?} rust {r:?} (pdf {p})")
+        };
+        let s = m.sample(e.wo, e.u);
+        let g = o[0];
+        w.add(0, vec_diff([g[0], g[1], g[2]], s.wm), what(g, s.wm, s.pdf));
+        // The pdf at the GPU's own normal: the pdf arithmetic apart from the normal's.
+        let p = m.pdf(e.wo, [g[0], g[1], g[2]]);
+        w.add(1, rel(g[3], p), what(g, s.wm, p));
+        let s = m.sample_dcos(e.u);
+        let g = o[1];
+        w.add(2, vec_diff([g[0], g[1], g[2]], s.wm), what(g, s.wm, s.pdf));
+        let p = m.pdf_dcos([g[0], g[1], g[2]]);
+        w.add(3, rel(g[3], p), what(g, s.wm, p));
+        let s = m.sample_bounded(e.wo, e.u);
+        let g = b[0];
+        w.add(4, vec_diff([g[0], g[1], g[2]], s.wm), what(g, s.wm, s.pdf));
+        let p = m.pdf_bounded(e.wo, [g[0], g[1], g[2]]);
+        w.add(5, rel(g[3], p), what(g, s.wm, p));
+    }
+    w.check(&[NORMAL_TOL, TOL, NORMAL_TOL, TOL, NORMAL_TOL, TOL]);
+}
+
+#[test]
+fn ggx_bounded_reflection_pdf_matches_rust_f32() {
+    let mut els = Vec::new();
+    for &a in &ALPHAS {
+        for &wo in &directions() {
+            for &wi in &directions() {
+                els.push(El::new(a, wo, wi, [0.5; 2]));
+            }
+        }
+    }
+    let Some(out) = run("ms_k_ggx_bounded", &els) else {
+        return;
+    };
+    let mut w = Worst::new(&["bounded reflection pdf"]);
+    for (e, o) in els.iter().zip(&out) {
+        let m = Microfacet::<f32, Ggx>::new(e.alpha[0], e.alpha[1]).unwrap();
+        let r = m.pdf_bounded_reflection(e.wo, e.wi);
+        w.add(0, rel(o[1][0], r), || format!("{e:?}: gpu {} rust {r}", o[1][0]));
+    }
+    w.check(&[TOL]);
+}
+
+/// The Fresnel terms of the tests: (kind, a, b) as `MsFresnel`.
+fn fresnels() -> Vec<(u32, [f32; 3], [f32; 3])> {
+    vec![
+        (0, [1.0; 3], [0.0; 3]),
+        (1, [1.5, 0.0, 0.0], [0.0; 3]),
+        (1, [1.0 / 1.5, 0.0, 0.0], [0.0; 3]),
+        (2, [0.2, 1.1, 1.5], [3.9, 2.2, 0.0]),
+        (2, [0.14, 0.42, 1.37], [3.98, 2.38, 1.6]),
+        (3, [0.04, 0.5, 0.95], [0.0; 3]),
+        (4, [0.9, 0.6, 0.3], [0.7, 1.0, 0.2]),
+    ]
+}
+
+#[test]
+fn fresnel_matches_rust_f32() {
+    let mut els = Vec::new();
+    let params: [(f32, f32); 10] = [
+        (1.5, 0.0),
+        (1.0 / 1.5, 0.0),
+        (1.0, 0.0),
+        (1.0001, 0.0),
+        (3.0, 0.5),
+        (0.2, 3.9),
+        (0.05, 0.1),
+        (2e18, 2e18),
+        (0.9, 0.7),
+        (0.04, 1.0),
+    ];
+    for &(x, y) in &params {
+        for i in 0..=40 {
+            let c = -1.0 + i as f32 / 20.0;
+            for c in [c, c * 1e-3] {
+                let mut e = El::new([0.3; 2], [0.0, 0.0, c], [0.0, 0.0, 1.0], [0.5; 2]);
+                e.fr = (2, [x; 3], [y; 3]);
+                els.push(e);
+            }
+        }
+    }
+    let Some(out) = run("ms_k_fresnel", &els) else {
+        return;
+    };
+    let names = ["dielectric", "conductor", "Schlick", "F82-tint", "MsFresnel (conductor)"];
+    let mut w = Worst::new(&names);
+    for (e, o) in els.iter().zip(&out) {
+        let (c, x, y) = (e.wo[2], e.fr.1[0], e.fr.2[0]);
+        let r = [
+            fresnel::dielectric(c, x),
+            fresnel::conductor(c, x, y),
+            fresnel::schlick(c, x),
+            fresnel::f82_tint(c, x, y),
+            fresnel::conductor(c, x, y),
+        ];
+        let g = [o[0][0], o[0][1], o[0][2], o[0][3], o[1][0]];
+        for k in 0..names.len() {
+            w.add(k, rel(g[k], r[k]), || format!("cos {c} a {x} b {y}: gpu {} rust {}", g[k], r[k]));
+        }
+    }
+    w.check(&[TOL; 5]);
+}
+
+/// The Rust conductor of an element (its Fresnel kind and masking).
+fn rust_conductor(e: &El) -> Box<dyn Bsdf<f32, Value = [f32; 3]>> {
+    let m = Microfacet::<f32, Ggx>::new(e.alpha[0], e.alpha[1]).unwrap();
+    let masking = [Masking::Correlated, Masking::Separable, Masking::CorrelatedBeta][e.masking as usize];
+    let (k, a, b) = e.fr;
+    match k {
+        0 => Box::new(RoughConductor::new(m, One::<3>).with_masking(masking)),
+        1 => Box::new(RoughConductor::new(m, Dielectric { eta: a[0] }).with_masking(masking)),
+        2 => Box::new(RoughConductor::new(m, Conductor { eta: a, k: b }).with_masking(masking)),
+        3 => Box::new(RoughConductor::new(m, Schlick { f0: a }).with_masking(masking)),
+        _ => Box::new(RoughConductor::new(m, F82Tint { f0: a, h: b }).with_masking(masking)),
+    }
+}
+
+/// The conductor grid: every roughness (and an effectively smooth one), every Fresnel term,
+/// the three maskings, directions × (directions or uniforms).
+fn conductor_els(second: &[[f32; 3]], us: &[[f32; 2]]) -> Vec<El> {
+    let mut els = Vec::new();
+    let mut alphas = ALPHAS.to_vec();
+    alphas.push([5e-4, 5e-4]);
+    for (i, &a) in alphas.iter().enumerate() {
+        for (j, fr) in fresnels().into_iter().enumerate() {
+            for &wo in &directions() {
+                for &wi in second {
+                    for &u in us {
+                        let mut e = El::new(a, wo, wi, u);
+                        e.fr = fr;
+                        e.masking = ((i + j) % 3) as u32;
+                        els.push(e);
+                    }
+                }
+            }
+        }
+    }
+    els
+}
+
+/// The bound of a BSDF value at the half vector wm of a material of roughness α: 2e-6 plus
+/// 8ε times D's condition number in the half vector, 1 + 4 tan θh/α² (with α the smaller
+/// roughness), as the module docs derive.
+fn bsdf_tol(wm: [f32; 3], alpha: [f32; 2]) -> f64 {
+    let a = alpha[0].min(alpha[1]) as f64;
+    let z = (wm[2] as f64).clamp(1e-6, 1.0);
+    let tan = (1.0 - z * z).max(0.0).sqrt() / z;
+    TOL + 8.0 * EPS * (1.0 + 4.0 * tan / (a * a))
+}
+
+fn half_vector(wo: [f32; 3], wi: [f32; 3]) -> [f32; 3] {
+    microsurface::bsdf::frame::half_vector_reflection(wo, wi).unwrap_or([0.0, 0.0, 1.0])
+}
+
+#[test]
+fn conductor_eval_and_pdf_match_rust_f32() {
+    let els = conductor_els(&directions(), &[[0.5; 2]]);
+    let Some(out) = run("ms_k_conductor_eval", &els) else {
+        return;
+    };
+    let names = ["eval / bound", "pdf / bound", "eval_pdf = (eval, pdf)"];
+    let mut w = Worst::new(&names);
+    for (e, o) in els.iter().zip(&out) {
+        let c = rust_conductor(e);
+        let (f, p) = (c.eval(e.wo, e.wi), c.pdf(e.wo, e.wi));
+        let tol = bsdf_tol(half_vector(e.wo, e.wi), e.alpha);
+        for ch in 0..3 {
+            w.add(0, rel(o[0][ch], f[ch]) / tol, || format!("{e:?}: gpu {:?} rust {f:?}", o[0]));
+        }
+        w.add(1, rel(o[0][3], p) / tol, || format!("{e:?}: gpu {} rust {p}", o[0][3]));
+        let same = (0..4).all(|k| o[0][k] == o[1][k]);
+        w.add(2, if same { 0.0 } else { 1.0 }, || format!("{e:?}: {:?} {:?}", o[0], o[1]));
+    }
+    w.check(&[1.0, 1.0, 0.0]);
+}
+
+#[test]
+fn conductor_samples_match_rust_f32() {
+    let els = conductor_els(&[[0.0, 0.0, 1.0]], &uniforms());
+    let Some(out) = run("ms_k_conductor_sample", &els) else {
+        return;
+    };
+    let names = ["validity", "wi", "pdf / bound", "f / bound"];
+    let mut w = Worst::new(&names);
+    for (e, o) in els.iter().zip(&out) {
+        let c = rust_conductor(e);
+        let s = c.sample(e.wo, e.uc, e.u);
+        let flags = o[1][3] as u32;
+        let g_wi = [o[0][0], o[0][1], o[0][2]];
+        let what = || format!("{e:?}: gpu {o:?} rust {s:?}");
+        let Some(s) = s else {
+            w.add(0, if flags & 1 == 0 { 0.0 } else { 1.0 }, what);
+            continue;
+        };
+        let expect = 1 | if s.specular { 2 } else { 0 };
+        w.add(0, if flags == expect { 0.0 } else { 1.0 }, what);
+        if flags != expect {
+            continue;
+        }
+        // wi = 2(wo·wm)wm − wo doubles the normal's difference.
+        w.add(1, vec_diff(g_wi, s.wi) / (2.0 * NORMAL_TOL), what);
+        let tol = bsdf_tol(half_vector(e.wo, s.wi), e.alpha);
+        w.add(2, rel(o[0][3], s.pdf) / tol, what);
+        for ch in 0..3 {
+            w.add(3, rel(o[1][ch], s.f[ch]) / tol, what);
+        }
+    }
+    w.check(&[0.0, 1.0, 1.0, 1.0]);
 }
