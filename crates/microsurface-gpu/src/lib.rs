@@ -17,7 +17,11 @@
 //!         let s = ms_ggx_sample(wo, vec2<f32>(0.3, 0.1), vec2<f32>(0.25, 0.5));
 //!         out[id.x] = s.pdf;
 //!     }");
-//! # let _ = shader;
+//! // (naga, the compiler wgpu uses, validates it.)
+//! let module = naga::front::wgsl::parse_str(&shader).expect("parses");
+//! naga::valid::Validator::new(Default::default(), Default::default())
+//!     .validate(&module)
+//!     .expect("validates");
 //! ```
 //!
 //! and from any other build, by prepending the generated one-file form
@@ -273,7 +277,12 @@ impl Gpu {
     }
 
     /// The bind group of `program`'s layout over an input and an output buffer.
-    pub fn bind(&self, program: &Program, input: &wgpu::Buffer, output: &wgpu::Buffer) -> wgpu::BindGroup {
+    pub fn bind(
+        &self,
+        program: &Program,
+        input: &wgpu::Buffer,
+        output: &wgpu::Buffer,
+    ) -> wgpu::BindGroup {
         self.device.create_bind_group(&wgpu::BindGroupDescriptor {
             label: Some("microsurface"),
             layout: &program.layout,
