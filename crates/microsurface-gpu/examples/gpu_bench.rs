@@ -183,6 +183,9 @@ fn dispatch(gpu: &Gpu, pipeline: &wgpu::ComputePipeline, bind: &wgpu::BindGroup,
     ticks * gpu.queue().get_timestamp_period() as f64 * 1e-9
 }
 
+/// A CPU input: (wo, wi, u).
+type Input = ([f32; 3], [f32; 3], [f32; 2]);
+
 /// The same operations through the Rust f32 path on one CPU thread (2^20 evaluations each,
 /// inputs precomputed), for scale.
 fn cpu_reference() {
@@ -207,7 +210,7 @@ fn cpu_reference() {
         [sn * co, sn * si, c]
     };
     let k = 1 << 20;
-    let inputs: Vec<([f32; 3], [f32; 3], [f32; 2])> = (0..k)
+    let inputs: Vec<Input> = (0..k)
         .map(|_| {
             let wo = dir(0.05 + 0.95 * next(), next());
             let wi = dir(0.05 + 0.95 * next(), next());
@@ -215,7 +218,7 @@ fn cpu_reference() {
         })
         .collect();
     println!("CPU, one thread, Rust f32 path (for scale):");
-    let time = |label: &str, f: &dyn Fn(&([f32; 3], [f32; 3], [f32; 2])) -> f32| {
+    let time = |label: &str, f: &dyn Fn(&Input) -> f32| {
         let mut best = f64::INFINITY;
         let mut acc = 0.0f32;
         for _ in 0..3 {
