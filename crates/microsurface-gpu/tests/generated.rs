@@ -34,3 +34,28 @@ fn generated_files_are_current() {
         "generated/glsl holds other files than the entry points'"
     );
 }
+
+/// The README's WGSL snippet (the block after "## GPU") compiles with the library in front:
+/// naga parses and validates it, as wgpu would.
+#[test]
+fn readme_wgsl_snippet_validates_with_the_library() {
+    let readme = include_str!("../../../README.md");
+    let section = readme
+        .split("## GPU")
+        .nth(1)
+        .expect("the README has a GPU section");
+    let snippet = section
+        .split("```wgsl\n")
+        .nth(1)
+        .and_then(|s| s.split("```").next())
+        .expect("the GPU section has a wgsl block");
+    let source = format!("{}\n{snippet}", microsurface_gpu::WGSL);
+    let module = naga::front::wgsl::parse_str(&source)
+        .unwrap_or_else(|e| panic!("{}", e.emit_to_string(&source)));
+    naga::valid::Validator::new(
+        naga::valid::ValidationFlags::all(),
+        naga::valid::Capabilities::empty(),
+    )
+    .validate(&module)
+    .unwrap_or_else(|e| panic!("{}", e.emit_to_string(&source)));
+}
