@@ -4,7 +4,8 @@
 //! # The library
 //!
 //! [`WGSL`] is the library's one source: the files under `wgsl/` of this crate (common,
-//! Fresnel, GGX, the run-time distribution, the rough conductor) in one string. WGSL has no
+//! Fresnel, GGX, the run-time distribution, the rough conductor and dielectric) in one
+//! string. WGSL has no
 //! `#include`: a shader includes the library by being compiled with it in front, which WGSL
 //! allows as module-scope declarations may come in any order. From Rust:
 //!
@@ -40,6 +41,8 @@
 //! | `ms_fresnel_dielectric`, `ms_fresnel_conductor`, `ms_fresnel_schlick`, `ms_fresnel_f82_tint`; `MsFresnel` + `ms_fresnel_eval` | `bsdf::fresnel::{dielectric, conductor, schlick, f82_tint}`; the `Fresnel` terms |
 //! | `MsMicrofacet` + `ms_d`, `ms_lambda`, `ms_g1`, `ms_g2`, `ms_pdf`, `ms_sample`, `ms_sample_dcos` | `MicrofacetDistribution` |
 //! | `MsConductor` + `ms_conductor_eval`, `ms_conductor_pdf`, `ms_conductor_eval_pdf`, `ms_conductor_sample` → `MsBsdfSample` | `bsdf::RoughConductor` (`Masking::Correlated` or `Separable`) |
+//! | `MsDielectric` + `ms_dielectric_eval`, `ms_dielectric_pdf`, `ms_dielectric_sample` → `MsBsdfSample` | `bsdf::RoughDielectric` (`Masking::Correlated` or `Separable`; both transports) |
+//! | `ms_reflect`, `ms_refract`, `ms_half_vector_reflection`, `ms_half_vector_refraction`, `ms_jacobian_refraction` | `bsdf::frame` |
 //!
 //! Conventions are the Rust crate's: unit directions in the local shading frame (z = the
 //! normal), wo and wi pointing away from the surface, w.z < 0 mirrored by the visible-normal
@@ -70,7 +73,7 @@ use std::fmt;
 use std::sync::{mpsc, Mutex};
 
 /// The WGSL library, one source: `wgsl/common.wgsl`, `fresnel.wgsl`, `ggx.wgsl`,
-/// `microfacet.wgsl`, `conductor.wgsl`, in that order.
+/// `microfacet.wgsl`, `conductor.wgsl`, `dielectric.wgsl`, in that order.
 pub const WGSL: &str = concat!(
     include_str!("../wgsl/common.wgsl"),
     "\n",
@@ -81,6 +84,8 @@ pub const WGSL: &str = concat!(
     include_str!("../wgsl/microfacet.wgsl"),
     "\n",
     include_str!("../wgsl/conductor.wgsl"),
+    "\n",
+    include_str!("../wgsl/dielectric.wgsl"),
 );
 
 /// The test kernels (`wgsl/kernels.wgsl`): compute entry points over records of five
@@ -93,13 +98,15 @@ pub const KERNEL_IN: usize = 5;
 pub const KERNEL_OUT: usize = 2;
 
 /// The compute entry points of [`KERNELS_WGSL`].
-pub const KERNEL_ENTRY_POINTS: [&str; 6] = [
+pub const KERNEL_ENTRY_POINTS: [&str; 8] = [
     "ms_k_ggx_eval",
     "ms_k_ggx_sample",
     "ms_k_ggx_bounded",
     "ms_k_fresnel",
     "ms_k_conductor_eval",
     "ms_k_conductor_sample",
+    "ms_k_dielectric_eval",
+    "ms_k_dielectric_sample",
 ];
 
 /// The library followed by its test kernels: one WGSL module.

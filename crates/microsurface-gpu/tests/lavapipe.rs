@@ -15,13 +15,15 @@
 //! * Sampled normals (warps of u): the same normal as the Rust f32 sampler to
 //!   `NORMAL_TOL` per component, the bound measured here (the Rust f32 path forms cos 2πu in
 //!   f64 and rounds, the WGSL in f32: 1 ulp of the angle, magnified by the unstretch).
-//! * BSDF values: the half vector is recomputed on each side, and D at the half vector has
-//!   condition number κ = |d ln D/d ln wm| up to 4/α²·|wm − n| (the lobe's slope); the
-//!   bound is 2e-6 + 8ε κ_h where κ_h = 1 + 4 tan θh/α² (the crate-wide 4εκ rule of the
-//!   Rust docs' Accuracy section, with the rounding of the half vector, 2ε, as the input's).
+//! * BSDF values: the half vector is recomputed on each side (or comes from a sampled normal
+//!   that may differ by `NORMAL_TOL`), and may move by δ = 2 · 4ε(1 + η')/|η' wi + wo| (the
+//!   Rust docs' rounding of a recomputed half vector, once per side); the bound is 2e-6 plus
+//!   what δ costs D (δ(1 + 4 tan θh/α²), D's condition number: the crate-wide 4εκ rule of
+//!   the Rust docs' Accuracy section) plus what it costs the Fresnel factor, measured from
+//!   the Rust function at cos θ ± δ (`value_tol`).
 
 use microsurface::bsdf::fresnel::{self, Conductor, Dielectric, F82Tint, One, Schlick};
-use microsurface::bsdf::{Bsdf, Masking, RoughConductor};
+use microsurface::bsdf::{Bsdf, Lobe, Masking, RoughConductor, RoughDielectric, Transport};
 use microsurface::{Ggx, Microfacet, MicrofacetDistribution};
 use microsurface_gpu::{kernels_source, Error, Gpu, Program, KERNEL_IN, KERNEL_OUT};
 use std::sync::OnceLock;
@@ -404,6 +406,11 @@ fn fresnel_matches_rust_f32() {
         ];
         let g = [o[0][0], o[0][1], o[0][2], o[0][3], o[1][0]];
         for k in 0..names.len() {
+            // Schlick and F82-tint take F0 = a in [0, 1] (their contract); the element's a
+            // is an index of refraction for the other two.
+            if (k == 2 || k == 3) && !(0.0..=1.0).contains(&x) {
+                continue;
+            }
             w.add(k, rel(g[k], r[k]), || {
                 format!("cos {c} a {x} b {y}: gpu {} rust {}", g[k], r[k])
             });
@@ -453,18 +460,75 @@ fn conductor_els(second: &[[f32; 3]], us: &[[f32; 2]]) -> Vec<El> {
     els
 }
 
-/// The bound of a BSDF value at the half vector wm of a material of roughness α: 2e-6 plus
-/// 8ε times D's condition number in the half vector, 1 + 4 tan θh/α² (with α the smaller
-/// roughness), as the module docs derive.
-fn bsdf_tol(wm: [f32; 3], alpha: [f32; 2]) -> f64 {
-    let a = alpha[0].min(alpha[1]) as f64;
-    let z = (wm[2] as f64).clamp(1e-6, 1.0);
-    let tan = (1.0 - z * z).max(0.0).sqrt() / z;
-    TOL + 8.0 * EPS * (1.0 + 4.0 * tan / (a * a))
+/// How far the half vector of (wo, wi) may move between two f32 evaluations: twice the Rust
+/// docs' δ = 4ε(1 + η')/|η' wi + wo| (each side rounds it once; η' = 1 for a reflection), and
+/// for a sampled wi at least the normals' bound, NORMAL_TOL. Returns (wm in f64, η', δ).
+fn half_vector_delta(wo: [f32; 3], wi: [f32; 3], eta: f32, sampled: bool) -> ([f64; 3], f64, f64) {
+    let (o, i) = (wo.map(f64::from), wi.map(f64::from));
+    let etap = if o[2] * i[2] > 0.0 {
+        1.0
+    } else if o[2] > 0.0 {
+        eta as f64
+    } else {
+        1.0 / eta as f64
+    };
+    let sum = [etap * i[0] + o[0], etap * i[1] + o[1], etap * i[2] + o[2]];
+    let len = sum.iter().map(|x| x * x).sum::<f64>().sqrt();
+    let mut wm = sum.map(|x| x / len.max(1e-300));
+    if wm[2] < 0.0 {
+        wm = wm.map(|x| -x);
+    }
+    let mut delta = 2.0 * 4.0 * EPS * (1.0 + etap) / len.max(1e-30);
+    if sampled {
+        delta = delta.max(NORMAL_TOL);
+    }
+    (wm, etap, delta)
 }
 
-fn half_vector(wo: [f32; 3], wi: [f32; 3]) -> [f32; 3] {
-    microsurface::bsdf::frame::half_vector_reflection(wo, wi).unwrap_or([0.0, 0.0, 1.0])
+/// The relative bound of a BSDF value (f or pdf) whose half vector wm may move by δ: 2e-6
+/// (the NDF quantities' bound) plus what the move costs D, δ(1 + 4 tan θh/α²) (D's condition
+/// number in the normal, α the smaller roughness: the crate-wide 4εκ rule of the Rust docs'
+/// Accuracy section), plus what it costs the Fresnel factor `fr` at c = |wo·wm|, measured as
+/// the largest change of fr(c ± δ) relative to `weight(fr(c))` (fr itself, or 1 − fr for a
+/// transmission): finite near the dielectric's critical angle, where fr has a square-root
+/// edge.
+fn value_tol(
+    wm: [f64; 3],
+    alpha: [f32; 2],
+    delta: f64,
+    c: f64,
+    fr: &dyn Fn(f64) -> f64,
+    weight: &dyn Fn(f64) -> f64,
+) -> f64 {
+    let a = alpha[0].min(alpha[1]) as f64;
+    let z = wm[2].clamp(1e-6, 1.0);
+    let tan = (1.0 - z * z).max(0.0).sqrt() / z;
+    let d_term = delta * (1.0 + 4.0 * tan / (a * a));
+    let f0 = fr(c);
+    let df = (fr(c + delta) - f0).abs().max((fr(c - delta) - f0).abs());
+    let w = weight(f0);
+    let f_term = if w > 0.0 { df / w } else { 0.0 };
+    TOL + d_term + f_term
+}
+
+/// The element's Fresnel term, channel `ch`, as a function of cos θ (f64).
+fn fresnel_fn(e: &El, ch: usize) -> impl Fn(f64) -> f64 {
+    let (k, a, b) = e.fr;
+    let (x, y) = (a[ch] as f64, b[ch] as f64);
+    move |c: f64| match k {
+        0 => 1.0,
+        1 => fresnel::dielectric(c, x),
+        2 => fresnel::conductor(c, x, y),
+        3 => fresnel::schlick(c, x),
+        _ => fresnel::f82_tint(c, x, y),
+    }
+}
+
+/// The conductor's bound at (wo, wi), channel `ch` (see [`value_tol`]).
+fn conductor_tol(e: &El, wi: [f32; 3], ch: usize, sampled: bool) -> f64 {
+    let (wm, _, delta) = half_vector_delta(e.wo, wi, 1.0, sampled);
+    let c = (0..3).map(|k| e.wo[k] as f64 * wm[k]).sum::<f64>().abs();
+    value_tol(wm, e.alpha, delta, c, &fresnel_fn(e, ch), &|f| f)
 }
 
 #[test]
@@ -478,12 +542,15 @@ fn conductor_eval_and_pdf_match_rust_f32() {
     for (e, o) in els.iter().zip(&out) {
         let c = rust_conductor(e);
         let (f, p) = (c.eval(e.wo, e.wi), c.pdf(e.wo, e.wi));
-        let tol = bsdf_tol(half_vector(e.wo, e.wi), e.alpha);
-        for ch in 0..3 {
-            w.add(0, rel(o[0][ch], f[ch]) / tol, || {
+        for (ch, &r) in f.iter().enumerate() {
+            let tol = conductor_tol(e, e.wi, ch, false);
+            w.add(0, rel(o[0][ch], r) / tol, || {
                 format!("{e:?}: gpu {:?} rust {f:?}", o[0])
             });
         }
+        // (The pdf has no Fresnel factor: F = 1's bound.)
+        let (wm, _, delta) = half_vector_delta(e.wo, e.wi, 1.0, false);
+        let tol = value_tol(wm, e.alpha, delta, 1.0, &|_| 1.0, &|f| f);
         w.add(1, rel(o[0][3], p) / tol, || {
             format!("{e:?}: gpu {} rust {p}", o[0][3])
         });
@@ -520,11 +587,131 @@ fn conductor_samples_match_rust_f32() {
         }
         // wi = 2(wo·wm)wm − wo doubles the normal's difference.
         w.add(1, vec_diff(g_wi, s.wi) / (2.0 * NORMAL_TOL), what);
-        let tol = bsdf_tol(half_vector(e.wo, s.wi), e.alpha);
+        let (wm, _, delta) = half_vector_delta(e.wo, s.wi, 1.0, true);
+        let tol = value_tol(wm, e.alpha, delta, 1.0, &|_| 1.0, &|f| f);
         w.add(2, rel(o[0][3], s.pdf) / tol, what);
-        for (&g, &r) in o[1].iter().zip(&s.f) {
-            w.add(3, rel(g, r) / tol, what);
+        for (ch, (&g, &r)) in o[1].iter().zip(&s.f).enumerate() {
+            w.add(3, rel(g, r) / conductor_tol(e, s.wi, ch, true), what);
         }
     }
     w.check(&[0.0, 1.0, 1.0, 1.0]);
+}
+
+/// Directions of both hemispheres: [`directions`] and their mirror images below.
+fn both_sides() -> Vec<[f32; 3]> {
+    let mut v = directions();
+    let below: Vec<[f32; 3]> = v
+        .iter()
+        .filter(|w| w[2] > 0.0)
+        .map(|w| [w[0], -w[1], -w[2]])
+        .collect();
+    v.extend(below);
+    v
+}
+
+/// The dielectric grid: every roughness (and an effectively smooth one), η from 1/2.4 to 2.4
+/// (1, the pass-through, included), both maskings the WGSL has, both transports.
+fn dielectric_els(second: &[[f32; 3]], us: &[[f32; 2]], ucs: &[f32]) -> Vec<El> {
+    let mut els = Vec::new();
+    let mut alphas = ALPHAS.to_vec();
+    alphas.push([5e-4, 5e-4]);
+    for (i, &a) in alphas.iter().enumerate() {
+        for (j, &eta) in [1.5f32, 1.0 / 1.5, 2.4, 1.0 / 2.4, 1.0, 1.0001]
+            .iter()
+            .enumerate()
+        {
+            for &wo in &both_sides() {
+                for &wi in second {
+                    for &u in us {
+                        for &uc in ucs {
+                            let mut e = El::new(a, wo, wi, u);
+                            e.uc = uc;
+                            e.fr = (1, [eta, 0.0, 0.0], [((i + j) % 2) as f32, 0.0, 0.0]);
+                            e.masking = ((i + 2 * j) % 2) as u32;
+                            els.push(e);
+                        }
+                    }
+                }
+            }
+        }
+    }
+    els
+}
+
+fn rust_dielectric(e: &El) -> RoughDielectric<f32, Microfacet<f32, Ggx>> {
+    let m = Microfacet::<f32, Ggx>::new(e.alpha[0], e.alpha[1]).unwrap();
+    let masking = [Masking::Correlated, Masking::Separable][e.masking as usize];
+    let transport = [Transport::Radiance, Transport::Importance][e.fr.2[0] as usize];
+    RoughDielectric::new(m, e.fr.1[0])
+        .with_masking(masking)
+        .with_transport(transport)
+}
+
+/// The dielectric's bound at (wo, wi) (see [`value_tol`]): the half vector of a refraction
+/// moves by up to 1/|η' wi + wo| more than a reflection's, and the Fresnel factor is R for a
+/// reflection, 1 − R for a transmission.
+fn dielectric_tol(e: &El, wi: [f32; 3], sampled: bool) -> f64 {
+    let eta = e.fr.1[0];
+    let (wm, _, delta) = half_vector_delta(e.wo, wi, eta, sampled);
+    let c = (0..3).map(|k| e.wo[k] as f64 * wm[k]).sum::<f64>();
+    let r = move |c: f64| fresnel::dielectric(c, eta as f64);
+    if e.wo[2] * wi[2] > 0.0 {
+        value_tol(wm, e.alpha, delta, c, &r, &|f| f)
+    } else {
+        value_tol(wm, e.alpha, delta, c, &r, &|f| 1.0 - f)
+    }
+}
+
+#[test]
+fn dielectric_eval_and_pdf_match_rust_f32() {
+    let els = dielectric_els(&both_sides(), &[[0.5; 2]], &[0.5]);
+    let Some(out) = run("ms_k_dielectric_eval", &els) else {
+        return;
+    };
+    let names = ["eval / bound", "pdf / bound"];
+    let mut w = Worst::new(&names);
+    for (e, o) in els.iter().zip(&out) {
+        let d = rust_dielectric(e);
+        let (f, p) = (d.eval(e.wo, e.wi)[0], d.pdf(e.wo, e.wi));
+        let tol = dielectric_tol(e, e.wi, false);
+        let what = || format!("{e:?}: gpu {:?} rust {f} {p}", o[0]);
+        w.add(0, rel(o[0][0], f) / tol, what);
+        w.add(1, rel(o[0][1], p) / tol, what);
+    }
+    w.check(&[1.0, 1.0]);
+}
+
+#[test]
+fn dielectric_samples_match_rust_f32() {
+    let els = dielectric_els(&[[0.0, 0.0, 1.0]], &uniforms(), &[0.02, 0.5, 0.97]);
+    let Some(out) = run("ms_k_dielectric_sample", &els) else {
+        return;
+    };
+    let names = ["validity, lobe", "wi", "pdf / bound", "f / bound", "η'"];
+    let mut w = Worst::new(&names);
+    for (e, o) in els.iter().zip(&out) {
+        let d = rust_dielectric(e);
+        let s = d.sample(e.wo, e.uc, e.u);
+        let flags = o[1][2] as u32;
+        let g_wi = [o[0][0], o[0][1], o[0][2]];
+        let what = || format!("{e:?}: gpu {o:?} rust {s:?}");
+        let Some(s) = s else {
+            w.add(0, if flags & 1 == 0 { 0.0 } else { 1.0 }, what);
+            continue;
+        };
+        let expect =
+            1 | if s.specular { 2 } else { 0 } | if s.lobe == Lobe::Transmission { 4 } else { 0 };
+        w.add(0, if flags == expect { 0.0 } else { 1.0 }, what);
+        if flags != expect {
+            continue;
+        }
+        // The refraction of the normal's difference grows with 1/|η' cos θt|: 2·16ε × η'.
+        let etap = s.eta.max(1.0 / s.eta) as f64;
+        w.add(1, vec_diff(g_wi, s.wi) / (2.0 * NORMAL_TOL * etap), what);
+        let tol = dielectric_tol(e, s.wi, true);
+        w.add(2, rel(o[0][3], s.pdf) / tol, what);
+        w.add(3, rel(o[1][0], s.f[0]) / tol, what);
+        w.add(4, rel(o[1][1], s.eta), what);
+    }
+    w.check(&[0.0, 1.0, 1.0, 1.0, 0.0]);
 }

@@ -148,3 +148,62 @@ fn ms_facing(m: vec3<f32>, w: vec3<f32>) -> vec3<f32> {
     let e = ms_dot(m, wu) - 2.0 * 4e-7;
     return ms_unit_normal(m - e * wu);
 }
+
+// η' wi + wo, formed as (wo + wi) + (η' − 1) wi: accurate to a few ulp of its own length,
+// also where it nearly vanishes (η' → 1, wi → −wo).
+fn ms_refraction_sum(wo: vec3<f32>, wi: vec3<f32>, etap: f32) -> vec3<f32> {
+    return (wo + wi) + wi * (etap - 1.0);
+}
+
+// The generalised half vector of a refraction with relative index η (η_inside/η_outside),
+// wm ∝ η' wi + wo, η' = η for wo.z > 0 and 1/η below, turned to z ≥ 0: vec4(wm, η'), or
+// (0, 0, 0, η') where it vanishes.
+fn ms_half_vector_refraction(wo: vec3<f32>, wi: vec3<f32>, eta: f32) -> vec4<f32> {
+    var etap = eta;
+    if !(wo.z > 0.0) {
+        etap = 1.0 / eta;
+    }
+    let s = ms_refraction_sum(wo, wi, etap);
+    if !(max(abs(s.x), max(abs(s.y), abs(s.z))) > 0.0) {
+        return vec4<f32>(0.0, 0.0, 0.0, etap);
+    }
+    var m = ms_normalize(s);
+    if m.z < 0.0 {
+        m = -m;
+    }
+    return vec4<f32>(m, etap);
+}
+
+// wi·wm + (wo·wm)/η' = (η' wi + wo)·wm/η', the refraction's Jacobian and BSDF denominator.
+fn ms_refraction_denominator(wo: vec3<f32>, wi: vec3<f32>, wm: vec3<f32>, etap: f32) -> f32 {
+    return ms_dot(ms_refraction_sum(wo, wi, etap), wm) / etap;
+}
+
+// |∂wm/∂wi| of the refraction half vector: |wi·wm|/(wi·wm + (wo·wm)/η')² (Walter et al.
+// 2007, eq. 17).
+fn ms_jacobian_refraction(wo: vec3<f32>, wi: vec3<f32>, wm: vec3<f32>, etap: f32) -> f32 {
+    let s = ms_refraction_denominator(wo, wi, wm, etap);
+    return abs(ms_dot(wi, wm)) / (s * s);
+}
+
+// The refraction of wi through the unit normal n with relative index η = η_t/η_i (the Rust
+// `frame::refract`, pbrt-v4's Refract with wi's tangential part projected twice): wi on the
+// other side of n flips n and takes 1/η. vec4(wt, η'), or η' = 0 at total internal reflection.
+fn ms_refract(wi: vec3<f32>, n_in: vec3<f32>, eta_in: f32) -> vec4<f32> {
+    var cos_i = ms_dot(n_in, wi);
+    var eta = eta_in;
+    var n = n_in;
+    if cos_i < 0.0 {
+        eta = 1.0 / eta;
+        cos_i = -cos_i;
+        n = -n;
+    }
+    let t0 = wi + n * -cos_i;
+    let t = t0 + n * -ms_dot(t0, n);
+    let sin2_t = ms_dot(t, t) / (eta * eta);
+    if !(sin2_t < 1.0) {
+        return vec4<f32>(0.0);
+    }
+    let cos_t = sqrt(1.0 - sin2_t);
+    return vec4<f32>(t * (-1.0 / eta) + n * -cos_t, eta);
+}

@@ -23,13 +23,16 @@ struct MsConductor {
     masking: u32,
 }
 
-// A sampled direction: wi, f(wo, wi) without the cosine, its pdf, and flags
-// (MS_SAMPLE_VALID: a sample; MS_SAMPLE_SPECULAR: a delta lobe, f and pdf its weights).
+// A sampled direction: wi, f(wo, wi) without the cosine, its pdf, flags (MS_SAMPLE_VALID: a
+// sample; MS_SAMPLE_SPECULAR: a delta lobe, f and pdf its weights; MS_SAMPLE_TRANSMISSION:
+// the dielectric's refracted lobe), and the relative index η' along the path (1 for a
+// reflection).
 struct MsBsdfSample {
     wi: vec3<f32>,
     pdf: f32,
     f: vec3<f32>,
     flags: u32,
+    eta: f32,
 }
 
 const MS_SAMPLE_VALID: u32 = 1u;
@@ -110,7 +113,7 @@ fn ms_conductor_eval_pdf(c: MsConductor, wo: vec3<f32>, wi: vec3<f32>) -> vec4<f
 // A direction wi from the uniforms u (the visible normal); uc, the lobe choice, is unused by
 // a conductor and kept for the dielectric's signature.
 fn ms_conductor_sample(c: MsConductor, wo: vec3<f32>, uc: f32, u: vec2<f32>) -> MsBsdfSample {
-    let none = MsBsdfSample(vec3<f32>(0.0), 0.0, vec3<f32>(0.0), 0u);
+    let none = MsBsdfSample(vec3<f32>(0.0), 0.0, vec3<f32>(0.0), 0u, 1.0);
     if ms_on_horizon(wo.z) {
         return none;
     }
@@ -118,7 +121,7 @@ fn ms_conductor_sample(c: MsConductor, wo: vec3<f32>, uc: f32, u: vec2<f32>) -> 
         let wi = vec3<f32>(-wo.x, -wo.y, wo.z);
         let k = 1.0 / abs(wi.z);
         return MsBsdfSample(wi, 1.0, ms_fresnel_eval(c.fresnel, abs(wo.z)) * k,
-            MS_SAMPLE_VALID | MS_SAMPLE_SPECULAR);
+            MS_SAMPLE_VALID | MS_SAMPLE_SPECULAR, 1.0);
     }
     let s = ms_sample(c.mf, wo, u);
     let wi = ms_reflect(wo, s.wm);
@@ -139,5 +142,5 @@ fn ms_conductor_sample(c: MsConductor, wo: vec3<f32>, uc: f32, u: vec2<f32>) -> 
     if !all(f <= vec3<f32>(3.4028235e38)) {
         return none;
     }
-    return MsBsdfSample(wi, pdf, f, MS_SAMPLE_VALID);
+    return MsBsdfSample(wi, pdf, f, MS_SAMPLE_VALID, 1.0);
 }

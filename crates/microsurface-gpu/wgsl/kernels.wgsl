@@ -129,3 +129,44 @@ fn ms_k_conductor_sample(@builtin(global_invocation_id) id: vec3<u32>,
     ms_out[i * MS_K_OUT] = vec4<f32>(s.wi, s.pdf);
     ms_out[i * MS_K_OUT + 1u] = vec4<f32>(s.f, f32(s.flags));
 }
+
+fn ms_k_dielectric(i: u32) -> MsDielectric {
+    let r0 = ms_in[i * MS_K_IN];
+    let r2 = ms_in[i * MS_K_IN + 2u];
+    let r3 = ms_in[i * MS_K_IN + 3u];
+    let r4 = ms_in[i * MS_K_IN + 4u];
+    return MsDielectric(MsMicrofacet(u32(r2.w), r0.xy), r3.x, u32(r4.w), u32(r4.x));
+}
+
+// The element's dielectric (η = Fresnel a.x, transport = b.x, masking) at (wo, wi):
+// (eval, pdf).
+@compute @workgroup_size(64)
+fn ms_k_dielectric_eval(@builtin(global_invocation_id) id: vec3<u32>,
+    @builtin(num_workgroups) groups: vec3<u32>) {
+    let i = ms_k_index(id, groups);
+    if i == arrayLength(&ms_in) / MS_K_IN {
+        return;
+    }
+    let d = ms_k_dielectric(i);
+    let wo = ms_in[i * MS_K_IN + 1u].xyz;
+    let wi = ms_in[i * MS_K_IN + 2u].xyz;
+    ms_out[i * MS_K_OUT] = vec4<f32>(ms_dielectric_eval(d, wo, wi), ms_dielectric_pdf(d, wo, wi),
+        0.0, 0.0);
+    ms_out[i * MS_K_OUT + 1u] = vec4<f32>(0.0);
+}
+
+// The element's dielectric sampled at (wo, uc, u): (wi, pdf), (f, η', flags, 0).
+@compute @workgroup_size(64)
+fn ms_k_dielectric_sample(@builtin(global_invocation_id) id: vec3<u32>,
+    @builtin(num_workgroups) groups: vec3<u32>) {
+    let i = ms_k_index(id, groups);
+    if i == arrayLength(&ms_in) / MS_K_IN {
+        return;
+    }
+    let d = ms_k_dielectric(i);
+    let r0 = ms_in[i * MS_K_IN];
+    let r1 = ms_in[i * MS_K_IN + 1u];
+    let s = ms_dielectric_sample(d, r1.xyz, r1.w, r0.zw);
+    ms_out[i * MS_K_OUT] = vec4<f32>(s.wi, s.pdf);
+    ms_out[i * MS_K_OUT + 1u] = vec4<f32>(s.f.x, s.eta, f32(s.flags), 0.0);
+}

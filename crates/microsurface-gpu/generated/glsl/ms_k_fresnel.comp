@@ -27,6 +27,13 @@ struct MsBsdfSample {
     float pdf;
     vec3 f;
     uint flags;
+    float eta;
+};
+struct MsDielectric {
+    MsMicrofacet mf;
+    float eta;
+    uint masking;
+    uint transport;
 };
 const float MS_PI = 3.1415927;
 const float MS_TAU = 6.2831855;
@@ -41,6 +48,9 @@ const uint MS_MASKING_SEPARABLE = 1u;
 const uint MS_MASKING_CORRELATED_BETA = 2u;
 const uint MS_SAMPLE_VALID = 1u;
 const uint MS_SAMPLE_SPECULAR = 2u;
+const uint MS_TRANSPORT_RADIANCE = 0u;
+const uint MS_TRANSPORT_IMPORTANCE = 1u;
+const uint MS_SAMPLE_TRANSMISSION = 4u;
 const uint MS_K_IN = 5u;
 const uint MS_K_OUT = 2u;
 
@@ -79,9 +89,9 @@ vec2 ms_cos_sin_turn(float v) {
 
 vec3 ms_rescaled(vec3 a) {
     bool local = false;
-    float m_2 = max(abs(a.x), max(abs(a.y), abs(a.z)));
-    if ((m_2 > 0.0)) {
-        local = (m_2 <= 3.4028235e38);
+    float m_3 = max(abs(a.x), max(abs(a.y), abs(a.z)));
+    if ((m_3 > 0.0)) {
+        local = (m_3 <= 3.4028235e38);
     } else {
         local = false;
     }
@@ -89,7 +99,7 @@ vec3 ms_rescaled(vec3 a) {
     if (!(_e16)) {
         return a;
     }
-    return (a / vec3(m_2));
+    return (a / vec3(m_3));
 }
 
 float ms_dot(vec3 a_1, vec3 b) {
@@ -119,9 +129,9 @@ vec3 ms_unit(vec3 w) {
     if ((abs((_e1 - 1.0)) <= 1e-6)) {
         return w;
     }
-    float m_3 = max(abs(w.x), max(abs(w.y), abs(w.z)));
-    if ((m_3 > 0.0)) {
-        local_2 = (m_3 <= 3.4028235e38);
+    float m_4 = max(abs(w.x), max(abs(w.y), abs(w.z)));
+    if ((m_4 > 0.0)) {
+        local_2 = (m_4 <= 3.4028235e38);
     } else {
         local_2 = false;
     }
@@ -129,7 +139,7 @@ vec3 ms_unit(vec3 w) {
     if (!(_e22)) {
         return w;
     }
-    vec3 _e27 = ms_normalize((w * (1.0 / m_3)));
+    vec3 _e27 = ms_normalize((w * (1.0 / m_4)));
     return _e27;
 }
 
@@ -145,11 +155,11 @@ vec3 ms_unit_normal(vec3 v_1) {
     if (_e9) {
         return (v_1 * (1.0 / sqrt(_e1)));
     }
-    float m_4 = max(abs(v_1.x), max(abs(v_1.y), abs(v_1.z)));
-    if ((m_4 == 0.0)) {
+    float m_5 = max(abs(v_1.x), max(abs(v_1.y), abs(v_1.z)));
+    if ((m_5 == 0.0)) {
         return vec3(0.0, 0.0, 1.0);
     }
-    vec3 s_3 = (v_1 / vec3(m_4));
+    vec3 s_3 = (v_1 / vec3(m_5));
     float _e30 = ms_dot(s_3, s_3);
     return (s_3 * (1.0 / sqrt(_e30)));
 }
@@ -206,46 +216,125 @@ vec3 ms_facing(vec3 m_1, vec3 w_1) {
     return _e30;
 }
 
-float ms_fresnel_dielectric(float cos_in, float eta_in) {
+vec3 ms_refraction_sum(vec3 wo_2, vec3 wi_1, float etap) {
+    return ((wo_2 + wi_1) + (wi_1 * (etap - 1.0)));
+}
+
+vec4 ms_half_vector_refraction(vec3 wo_3, vec3 wi_2, float eta) {
+    float etap_1 = 0.0;
+    vec3 m_2 = vec3(0.0);
+    etap_1 = eta;
+    if (!((wo_3.z > 0.0))) {
+        etap_1 = (1.0 / eta);
+    }
+    float _e10 = etap_1;
+    vec3 _e11 = ms_refraction_sum(wo_3, wi_2, _e10);
+    if (!((max(abs(_e11.x), max(abs(_e11.y), abs(_e11.z))) > 0.0))) {
+        float _e23 = etap_1;
+        return vec4(0.0, 0.0, 0.0, _e23);
+    }
+    vec3 _e28 = ms_normalize(_e11);
+    m_2 = _e28;
+    float _e31 = m_2.z;
+    if ((_e31 < 0.0)) {
+        vec3 _e34 = m_2;
+        m_2 = -(_e34);
+    }
+    vec3 _e36 = m_2;
+    float _e37 = etap_1;
+    return vec4(_e36, _e37);
+}
+
+float ms_refraction_denominator(vec3 wo_4, vec3 wi_3, vec3 wm, float etap_2) {
+    vec3 _e4 = ms_refraction_sum(wo_4, wi_3, etap_2);
+    float _e5 = ms_dot(_e4, wm);
+    return (_e5 / etap_2);
+}
+
+float ms_jacobian_refraction(vec3 wo_5, vec3 wi_4, vec3 wm_1, float etap_3) {
+    float _e4 = ms_refraction_denominator(wo_5, wi_4, wm_1, etap_3);
+    float _e5 = ms_dot(wi_4, wm_1);
+    return (abs(_e5) / (_e4 * _e4));
+}
+
+vec4 ms_refract(vec3 wi_5, vec3 n_in, float eta_in) {
     float cos_i = 0.0;
-    float eta = 0.0;
+    float eta_1 = 0.0;
+    vec3 n_1 = vec3(0.0);
+    float _e3 = ms_dot(n_in, wi_5);
+    cos_i = _e3;
+    eta_1 = eta_in;
+    n_1 = n_in;
+    float _e7 = cos_i;
+    if ((_e7 < 0.0)) {
+        float _e10 = eta_1;
+        eta_1 = (1.0 / _e10);
+        float _e13 = cos_i;
+        cos_i = -(_e13);
+        vec3 _e15 = n_1;
+        n_1 = -(_e15);
+    }
+    vec3 _e17 = n_1;
+    float _e18 = cos_i;
+    vec3 t0_ = (wi_5 + (_e17 * -(_e18)));
+    vec3 _e22 = n_1;
+    vec3 _e23 = n_1;
+    float _e24 = ms_dot(t0_, _e23);
+    vec3 t_1 = (t0_ + (_e22 * -(_e24)));
+    float _e28 = ms_dot(t_1, t_1);
+    float _e29 = eta_1;
+    float _e30 = eta_1;
+    float sin2_t = (_e28 / (_e29 * _e30));
+    if (!((sin2_t < 1.0))) {
+        return vec4(0.0);
+    }
+    float cos_t = sqrt((1.0 - sin2_t));
+    float _e41 = eta_1;
+    vec3 _e45 = n_1;
+    float _e49 = eta_1;
+    return vec4(((t_1 * (-1.0 / _e41)) + (_e45 * -(cos_t))), _e49);
+}
+
+float ms_fresnel_dielectric(float cos_in, float eta_in_1) {
+    float cos_i_1 = 0.0;
+    float eta_2 = 0.0;
     float r_parl = 0.0;
     float r_perp = 0.0;
     float ect2_ = 0.0;
-    cos_i = cos_in;
-    eta = eta_in;
-    float _e4 = cos_i;
+    cos_i_1 = cos_in;
+    eta_2 = eta_in_1;
+    float _e4 = cos_i_1;
     if ((_e4 < 0.0)) {
-        float _e7 = cos_i;
-        cos_i = -(_e7);
-        float _e9 = eta;
-        eta = (1.0 / _e9);
+        float _e7 = cos_i_1;
+        cos_i_1 = -(_e7);
+        float _e9 = eta_2;
+        eta_2 = (1.0 / _e9);
     }
-    float _e12 = cos_i;
+    float _e12 = cos_i_1;
     float c_7 = min(_e12, 1.0);
-    float _e15 = eta;
+    float _e15 = eta_2;
     if ((_e15 == 1.0)) {
         return 0.0;
     }
     if ((c_7 == 0.0)) {
         return 1.0;
     }
-    float _e24 = eta;
+    float _e24 = eta_2;
     if ((_e24 > 1e18)) {
-        float _e27 = eta;
+        float _e27 = eta_2;
         float e_1 = (1.0 / _e27);
-        float cos_t = sqrt((((1.0 - e_1) * (1.0 + e_1)) + ((c_7 * e_1) * (c_7 * e_1))));
-        r_parl = ((c_7 - (e_1 * cos_t)) / (c_7 + (e_1 * cos_t)));
-        r_perp = (((e_1 * c_7) - cos_t) / ((e_1 * c_7) + cos_t));
+        float cos_t_1 = sqrt((((1.0 - e_1) * (1.0 + e_1)) + ((c_7 * e_1) * (c_7 * e_1))));
+        r_parl = ((c_7 - (e_1 * cos_t_1)) / (c_7 + (e_1 * cos_t_1)));
+        r_perp = (((e_1 * c_7) - cos_t_1) / ((e_1 * c_7) + cos_t_1));
     } else {
-        float _e51 = eta;
+        float _e51 = eta_2;
         if ((_e51 > 1.0)) {
-            float _e54 = eta;
-            float _e57 = eta;
+            float _e54 = eta_2;
+            float _e57 = eta_2;
             ect2_ = (((_e54 - 1.0) * (_e57 + 1.0)) + (c_7 * c_7));
         } else {
-            float _e63 = eta;
-            float _e64 = eta;
+            float _e63 = eta_2;
+            float _e64 = eta_2;
             ect2_ = ((_e63 * _e64) - ((1.0 - c_7) * (1.0 + c_7)));
         }
         float _e72 = ect2_;
@@ -254,8 +343,8 @@ float ms_fresnel_dielectric(float cos_in, float eta_in) {
         }
         float _e76 = ect2_;
         float ect = sqrt(_e76);
-        float _e78 = eta;
-        float _e79 = eta;
+        float _e78 = eta_2;
+        float _e79 = eta_2;
         float e2c = ((_e78 * _e79) * c_7);
         r_parl = ((e2c - ect) / (e2c + ect));
         r_perp = ((c_7 - ect) / (c_7 + ect));
@@ -293,12 +382,12 @@ float ms_cnorm_ratio(vec2 a_6, vec2 b_3) {
 vec2 ms_crecip(vec2 a_7) {
     if ((abs(a_7.x) >= abs(a_7.y))) {
         float r_1 = (a_7.y / a_7.x);
-        float d_1 = (a_7.x + (a_7.y * r_1));
-        return vec2((1.0 / d_1), (-(r_1) / d_1));
+        float d_9 = (a_7.x + (a_7.y * r_1));
+        return vec2((1.0 / d_9), (-(r_1) / d_9));
     }
     float r_2 = (a_7.x / a_7.y);
-    float d_2 = ((a_7.x * r_2) + a_7.y);
-    return vec2((r_2 / d_2), (-1.0 / d_2));
+    float d_10 = ((a_7.x * r_2) + a_7.y);
+    return vec2((r_2 / d_10), (-1.0 / d_10));
 }
 
 vec2 ms_csqrt(vec2 a_8) {
@@ -308,24 +397,24 @@ vec2 ms_csqrt(vec2 a_8) {
     if ((r_3 == 0.0)) {
         return vec2(0.0);
     }
-    float t = sqrt(((r_3 + abs(a_8.x)) * 0.5));
+    float t_2 = sqrt(((r_3 + abs(a_8.x)) * 0.5));
     if ((a_8.x >= 0.0)) {
-        return vec2(t, (a_8.y / (t + t)));
+        return vec2(t_2, (a_8.y / (t_2 + t_2)));
     }
-    s_1 = t;
+    s_1 = t_2;
     if ((a_8.y < 0.0)) {
-        s_1 = -(t);
+        s_1 = -(t_2);
     }
     float _e29 = s_1;
-    return vec2((abs(a_8.y) / (t + t)), _e29);
+    return vec2((abs(a_8.y) / (t_2 + t_2)), _e29);
 }
 
-float ms_fresnel_conductor(float cos_in_1, float eta_1, float k) {
+float ms_fresnel_conductor(float cos_in_1, float eta_3, float k) {
     bool local_4 = false;
     bool local_5 = false;
     vec2 w_2 = vec2(0.0);
-    float cos_i_4 = min(max(cos_in_1, 0.0), 1.0);
-    if ((eta_1 == 1.0)) {
+    float cos_i_5 = min(max(cos_in_1, 0.0), 1.0);
+    if ((eta_3 == 1.0)) {
         local_4 = (k == 0.0);
     } else {
         local_4 = false;
@@ -334,7 +423,7 @@ float ms_fresnel_conductor(float cos_in_1, float eta_1, float k) {
     if (_e14) {
         return 0.0;
     }
-    if ((abs(eta_1) < 1e-9)) {
+    if ((abs(eta_3) < 1e-9)) {
         local_5 = (abs(k) < 1e-9);
     } else {
         local_5 = false;
@@ -343,25 +432,25 @@ float ms_fresnel_conductor(float cos_in_1, float eta_1, float k) {
     if (_e25) {
         return 1.0;
     }
-    vec2 n_1 = vec2(eta_1, k);
-    float sin2_i = ((1.0 - cos_i_4) * (1.0 + cos_i_4));
-    vec2 ci = vec2(cos_i_4, 0.0);
-    if ((max(abs(eta_1), abs(k)) > 1e18)) {
-        vec2 _e40 = ms_crecip(n_1);
+    vec2 n_2 = vec2(eta_3, k);
+    float sin2_i = ((1.0 - cos_i_5) * (1.0 + cos_i_5));
+    vec2 ci = vec2(cos_i_5, 0.0);
+    if ((max(abs(eta_3), abs(k)) > 1e18)) {
+        vec2 _e40 = ms_crecip(n_2);
         vec2 _e41 = ms_cmul(_e40, _e40);
-        vec2 sin2_t = (_e41 * sin2_i);
-        vec2 _e49 = ms_csqrt(vec2((1.0 - sin2_t.x), -(sin2_t.y)));
+        vec2 sin2_t_1 = (_e41 * sin2_i);
+        vec2 _e49 = ms_csqrt(vec2((1.0 - sin2_t_1.x), -(sin2_t_1.y)));
         vec2 _e50 = ms_cmul(_e49, _e40);
-        vec2 ci_m = (_e40 * cos_i_4);
+        vec2 ci_m = (_e40 * cos_i_5);
         float _e54 = ms_cnorm_ratio((ci - _e50), (ci + _e50));
         float _e57 = ms_cnorm_ratio((ci_m - _e49), (ci_m + _e49));
         return min((0.5 * (_e54 + _e57)), 1.0);
     }
-    vec2 _e63 = ms_cmul(n_1, n_1);
-    float _e65 = ms_cnorm(n_1);
+    vec2 _e63 = ms_cmul(n_2, n_2);
+    float _e65 = ms_cnorm(n_2);
     if ((_e65 >= 1.0)) {
-        vec2 _e74 = ms_cmul(vec2((eta_1 - 1.0), k), vec2((eta_1 + 1.0), k));
-        w_2 = (_e74 + vec2((cos_i_4 * cos_i_4), 0.0));
+        vec2 _e74 = ms_cmul(vec2((eta_3 - 1.0), k), vec2((eta_3 + 1.0), k));
+        w_2 = (_e74 + vec2((cos_i_5 * cos_i_5), 0.0));
     } else {
         w_2 = (_e63 - vec2(sin2_i, 0.0));
     }
@@ -369,53 +458,53 @@ float ms_fresnel_conductor(float cos_in_1, float eta_1, float k) {
     vec2 _e83 = ms_crecip(_e63);
     vec2 _e84 = ms_cmul(_e82, _e83);
     vec2 _e85 = ms_csqrt(_e84);
-    vec2 n_ci = (n_1 * cos_i_4);
-    vec2 _e87 = ms_cmul(n_1, _e85);
+    vec2 n_ci = (n_2 * cos_i_5);
+    vec2 _e87 = ms_cmul(n_2, _e85);
     float _e90 = ms_cnorm_ratio((n_ci - _e85), (n_ci + _e85));
     float _e93 = ms_cnorm_ratio((ci - _e87), (ci + _e87));
     return min((0.5 * (_e90 + _e93)), 1.0);
 }
 
-float ms_fresnel_schlick(float cos_i_1, float f0_) {
-    float m_5 = (1.0 - min(max(cos_i_1, 0.0), 1.0));
-    float m2_ = (m_5 * m_5);
-    return (f0_ + ((1.0 - f0_) * ((m2_ * m2_) * m_5)));
+float ms_fresnel_schlick(float cos_i_2, float f0_) {
+    float m_6 = (1.0 - min(max(cos_i_2, 0.0), 1.0));
+    float m2_ = (m_6 * m_6);
+    return (f0_ + ((1.0 - f0_) * ((m2_ * m2_) * m_6)));
 }
 
-float ms_fresnel_f82_tint(float cos_i_2, float f0_1, float h) {
-    float mu = min(max(cos_i_2, 0.0), 1.0);
-    float m_6 = (1.0 - mu);
-    float m5_ = ((((m_6 * m_6) * m_6) * m_6) * m_6);
+float ms_fresnel_f82_tint(float cos_i_3, float f0_1, float h) {
+    float mu = min(max(cos_i_3, 0.0), 1.0);
+    float m_7 = (1.0 - mu);
+    float m5_ = ((((m_7 * m_7) * m_7) * m_7) * m_7);
     float a_9 = (((f0_1 + ((1.0 - f0_1) * 0.46266437)) * (1.0 - h)) / 0.05665278);
-    float r_4 = ((f0_1 + ((1.0 - f0_1) * m5_)) - (((a_9 * mu) * m5_) * m_6));
+    float r_4 = ((f0_1 + ((1.0 - f0_1) * m5_)) - (((a_9 * mu) * m5_) * m_7));
     return min(max(r_4, 0.0), 1.0);
 }
 
-vec3 ms_fresnel_eval(MsFresnel fr, float cos_i_3) {
+vec3 ms_fresnel_eval(MsFresnel fr, float cos_i_4) {
     switch(fr.kind) {
         case 0u: {
             return vec3(1.0);
         }
         case 1u: {
-            float _e7 = ms_fresnel_dielectric(cos_i_3, fr.a.x);
+            float _e7 = ms_fresnel_dielectric(cos_i_4, fr.a.x);
             return vec3(_e7);
         }
         case 2u: {
-            float _e13 = ms_fresnel_conductor(cos_i_3, fr.a.x, fr.b.x);
-            float _e18 = ms_fresnel_conductor(cos_i_3, fr.a.y, fr.b.y);
-            float _e23 = ms_fresnel_conductor(cos_i_3, fr.a.z, fr.b.z);
+            float _e13 = ms_fresnel_conductor(cos_i_4, fr.a.x, fr.b.x);
+            float _e18 = ms_fresnel_conductor(cos_i_4, fr.a.y, fr.b.y);
+            float _e23 = ms_fresnel_conductor(cos_i_4, fr.a.z, fr.b.z);
             return vec3(_e13, _e18, _e23);
         }
         case 3u: {
-            float _e27 = ms_fresnel_schlick(cos_i_3, fr.a.x);
-            float _e30 = ms_fresnel_schlick(cos_i_3, fr.a.y);
-            float _e33 = ms_fresnel_schlick(cos_i_3, fr.a.z);
+            float _e27 = ms_fresnel_schlick(cos_i_4, fr.a.x);
+            float _e30 = ms_fresnel_schlick(cos_i_4, fr.a.y);
+            float _e33 = ms_fresnel_schlick(cos_i_4, fr.a.z);
             return vec3(_e27, _e30, _e33);
         }
         case 4u: {
-            float _e39 = ms_fresnel_f82_tint(cos_i_3, fr.a.x, fr.b.x);
-            float _e44 = ms_fresnel_f82_tint(cos_i_3, fr.a.y, fr.b.y);
-            float _e49 = ms_fresnel_f82_tint(cos_i_3, fr.a.z, fr.b.z);
+            float _e39 = ms_fresnel_f82_tint(cos_i_4, fr.a.x, fr.b.x);
+            float _e44 = ms_fresnel_f82_tint(cos_i_4, fr.a.y, fr.b.y);
+            float _e49 = ms_fresnel_f82_tint(cos_i_4, fr.a.z, fr.b.z);
             return vec3(_e39, _e44, _e49);
         }
         default: {
@@ -424,32 +513,32 @@ vec3 ms_fresnel_eval(MsFresnel fr, float cos_i_3) {
     }
 }
 
-float ms_ggx_d(vec3 wm, vec2 alpha) {
-    float z_1 = wm.z;
+float ms_ggx_d(vec3 wm_2, vec2 alpha) {
+    float z_1 = wm_2.z;
     if (!((z_1 > 0.0))) {
         return 0.0;
     }
-    float x_1 = (wm.x / alpha.x);
-    float y = (wm.y / alpha.y);
-    float t_1 = (((x_1 * x_1) + (y * y)) + (z_1 * z_1));
-    return (1.0 / ((((MS_PI * alpha.x) * alpha.y) * t_1) * t_1));
+    float x_1 = (wm_2.x / alpha.x);
+    float y = (wm_2.y / alpha.y);
+    float t_3 = (((x_1 * x_1) + (y * y)) + (z_1 * z_1));
+    return (1.0 / ((((MS_PI * alpha.x) * alpha.y) * t_3) * t_3));
 }
 
 float ms_ggx_lambda(vec3 w_3, vec2 alpha_1) {
     float x_2 = (alpha_1.x * w_3.x);
     float y_1 = (alpha_1.y * w_3.y);
     float z_2 = abs(w_3.z);
-    float t_2 = ((x_2 * x_2) + (y_1 * y_1));
+    float t_4 = ((x_2 * x_2) + (y_1 * y_1));
     float z2_ = (z_2 * z_2);
-    float den = (2.0 * (z2_ + (z_2 * sqrt((z2_ + t_2)))));
+    float den = (2.0 * (z2_ + (z_2 * sqrt((z2_ + t_4)))));
     if (!((den > 0.0))) {
         if ((z_2 == 0.0)) {
             float _e25 = ms_inf();
             return _e25;
         }
-        return ((t_2 / (z_2 + sqrt(((z_2 * z_2) + t_2)))) / (z_2 + z_2));
+        return ((t_4 / (z_2 + sqrt(((z_2 * z_2) + t_4)))) / (z_2 + z_2));
     }
-    return (t_2 / den);
+    return (t_4 / den);
 }
 
 float ms_ggx_g1_(vec3 w_4, vec2 alpha_2) {
@@ -463,24 +552,24 @@ float ms_ggx_g1_(vec3 w_4, vec2 alpha_2) {
     return ((z_3 + z_3) / den_1);
 }
 
-float ms_ggx_g2_(vec3 wo_2, vec3 wi_1, vec2 alpha_3) {
-    float _e3 = ms_ggx_lambda(wo_2, alpha_3);
-    float _e4 = ms_ggx_lambda(wi_1, alpha_3);
+float ms_ggx_g2_(vec3 wo_6, vec3 wi_6, vec2 alpha_3) {
+    float _e3 = ms_ggx_lambda(wo_6, alpha_3);
+    float _e4 = ms_ggx_lambda(wi_6, alpha_3);
     return (1.0 / (1.0 + (_e3 + _e4)));
 }
 
-float ms_ggx_g2_separable(vec3 wo_3, vec3 wi_2, vec2 alpha_4) {
-    float _e3 = ms_ggx_g1_(wo_3, alpha_4);
-    float _e4 = ms_ggx_g1_(wi_2, alpha_4);
+float ms_ggx_g2_separable(vec3 wo_7, vec3 wi_7, vec2 alpha_4) {
+    float _e3 = ms_ggx_g1_(wo_7, alpha_4);
+    float _e4 = ms_ggx_g1_(wi_7, alpha_4);
     return (_e3 * _e4);
 }
 
-float ms_ggx_pdf(vec3 w_5, vec3 wm_1, vec2 alpha_5) {
+float ms_ggx_pdf(vec3 w_5, vec3 wm_3, vec2 alpha_5) {
     float c = 0.0;
     bool local_6 = false;
     bool local_7 = false;
     float z_4 = abs(w_5.z);
-    float _e5 = ms_dot(w_5, wm_1);
+    float _e5 = ms_dot(w_5, wm_3);
     c = _e5;
     if ((w_5.z < 0.0)) {
         float _e10 = c;
@@ -494,7 +583,7 @@ float ms_ggx_pdf(vec3 w_5, vec3 wm_1, vec2 alpha_5) {
     }
     bool _e20 = local_6;
     if (_e20) {
-        local_7 = (wm_1.z > 0.0);
+        local_7 = (wm_3.z > 0.0);
     } else {
         local_7 = false;
     }
@@ -505,12 +594,12 @@ float ms_ggx_pdf(vec3 w_5, vec3 wm_1, vec2 alpha_5) {
     float sx = (alpha_5.x * w_5.x);
     float sy = (alpha_5.y * w_5.y);
     float len_1 = sqrt((((sx * sx) + (sy * sy)) + (z_4 * z_4)));
-    float mx = (wm_1.x / alpha_5.x);
-    float my = (wm_1.y / alpha_5.y);
-    float t_3 = (((mx * mx) + (my * my)) + (wm_1.z * wm_1.z));
+    float mx = (wm_3.x / alpha_5.x);
+    float my = (wm_3.y / alpha_5.y);
+    float t_5 = (((mx * mx) + (my * my)) + (wm_3.z * wm_3.z));
     float _e55 = c;
     float _e56 = c;
-    return ((_e55 + _e56) / (((((MS_PI * alpha_5.x) * alpha_5.y) * t_3) * t_3) * (z_4 + len_1)));
+    return ((_e55 + _e56) / (((((MS_PI * alpha_5.x) * alpha_5.y) * t_5) * t_5) * (z_4 + len_1)));
 }
 
 vec3 ms_ggx_cap_normal(vec3 w_6, vec2 alpha_6, vec2 u, float len) {
@@ -523,8 +612,8 @@ vec3 ms_ggx_cap_normal(vec3 w_6, vec2 alpha_6, vec2 u, float len) {
     float cz = (above - z_5);
     float sin_ = sqrt(max((1.0 - (cz * cz)), 0.0));
     vec3 h_1 = vec3((alpha_6.x * ((sin_ * _e17.x) + x_4)), (alpha_6.y * ((sin_ * _e17.y) + y_3)), above);
-    float n_2 = (1.0 / sqrt((((h_1.x * h_1.x) + (h_1.y * h_1.y)) + (h_1.z * h_1.z))));
-    return (h_1 * n_2);
+    float n_3 = (1.0 / sqrt((((h_1.x * h_1.x) + (h_1.y * h_1.y)) + (h_1.z * h_1.z))));
+    return (h_1 * n_3);
 }
 
 vec3 ms_ggx_sample_wm(vec3 w_in, vec2 alpha_7, vec2 u_1) {
@@ -553,12 +642,12 @@ vec3 ms_ggx_sample_wm(vec3 w_in, vec2 alpha_7, vec2 u_1) {
         float _e45 = w_7.x;
         float _e49 = w_7.y;
         float _e54 = w_7.z;
-        float d_3 = (((_e42.x * _e45) + (_e42.y * _e49)) + (_e42.z * _e54));
+        float d_11 = (((_e42.x * _e45) + (_e42.y * _e49)) + (_e42.z * _e54));
         float _e58 = w_7.x;
         float _e61 = w_7.y;
         float _e65 = w_7.z;
         float l1_ = ((abs(_e58) + abs(_e61)) + abs(_e65));
-        if ((d_3 > (2.4e-7 * l1_))) {
+        if ((d_11 > (2.4e-7 * l1_))) {
             return _e42;
         }
         vec3 _e71 = w_7;
@@ -581,12 +670,12 @@ MsSample ms_ggx_sample(vec3 w_8, vec2 alpha_8, vec2 u_2) {
     return MsSample(_e3, _e5);
 }
 
-float ms_ggx_pdf_dcos(vec3 wm_2, vec2 alpha_9) {
-    if (!((wm_2.z > 0.0))) {
+float ms_ggx_pdf_dcos(vec3 wm_4, vec2 alpha_9) {
+    if (!((wm_4.z > 0.0))) {
         return 0.0;
     }
-    float _e7 = ms_ggx_d(wm_2, alpha_9);
-    return (_e7 * wm_2.z);
+    float _e7 = ms_ggx_d(wm_4, alpha_9);
+    return (_e7 * wm_4.z);
 }
 
 MsSample ms_ggx_sample_dcos(vec2 alpha_10, vec2 u_3) {
@@ -625,18 +714,18 @@ vec4 ms_ggx_bounded_cap(vec3 w_9, vec2 alpha_11) {
     return vec4(_e18, (k_3 * _e18.z));
 }
 
-float ms_ggx_pdf_bounded(vec3 w_in_1, vec3 wm_3, vec2 alpha_12) {
+float ms_ggx_pdf_bounded(vec3 w_in_1, vec3 wm_5, vec2 alpha_12) {
     vec3 _e3 = ms_unit(w_in_1);
     vec4 _e4 = ms_ggx_bounded_cap(_e3, alpha_12);
     vec3 ws = _e4.xyz;
     float b_4 = _e4.w;
-    vec3 _e15 = ms_normalize(vec3((wm_3.x / alpha_12.x), (wm_3.y / alpha_12.y), wm_3.z));
+    vec3 _e15 = ms_normalize(vec3((wm_5.x / alpha_12.x), (wm_5.y / alpha_12.y), wm_5.z));
     float _e16 = ms_dot(_e15, ws);
     float cz_1 = (((_e16 + _e16) * _e15.z) - ws.z);
     if ((cz_1 < -(b_4))) {
         return 0.0;
     }
-    float _e25 = ms_ggx_pdf(_e3, wm_3, alpha_12);
+    float _e25 = ms_ggx_pdf(_e3, wm_5, alpha_12);
     return ((_e25 * (1.0 + ws.z)) / (1.0 + b_4));
 }
 
@@ -649,31 +738,31 @@ MsSample ms_ggx_sample_bounded(vec3 w_in_2, vec2 alpha_13, vec2 u_4) {
     float above_1 = ((1.0 - u_4.y) * (1.0 + b_5));
     float z_6 = (above_1 - b_5);
     float sin_1 = sqrt(max(((1.0 - z_6) * (1.0 + z_6)), 0.0));
-    vec3 m_7 = vec3(((sin_1 * _e8.x) + ws_1.x), ((sin_1 * _e8.y) + ws_1.y), (above_1 + (ws_1.z - b_5)));
-    vec3 _e46 = ms_normalize(vec3((alpha_13.x * m_7.x), (alpha_13.y * m_7.y), max(m_7.z, 0.0)));
+    vec3 m_8 = vec3(((sin_1 * _e8.x) + ws_1.x), ((sin_1 * _e8.y) + ws_1.y), (above_1 + (ws_1.z - b_5)));
+    vec3 _e46 = ms_normalize(vec3((alpha_13.x * m_8.x), (alpha_13.y * m_8.y), max(m_8.z, 0.0)));
     vec3 _e47 = ms_facing(_e46, _e3);
     float _e48 = ms_ggx_pdf_bounded(_e3, _e47, alpha_13);
     return MsSample(_e47, _e48);
 }
 
-float ms_ggx_pdf_bounded_reflection(vec3 wo_4, vec3 wi_3, vec2 alpha_14) {
-    vec3 _e3 = ms_half_vector_reflection(wo_4, wi_3);
+float ms_ggx_pdf_bounded_reflection(vec3 wo_8, vec3 wi_8, vec2 alpha_14) {
+    vec3 _e3 = ms_half_vector_reflection(wo_8, wi_8);
     bool _e4 = ms_half_vector_ok(_e3);
     if (!(_e4)) {
         return 0.0;
     }
-    float _e7 = ms_dot(wo_4, _e3);
+    float _e7 = ms_dot(wo_8, _e3);
     float c_8 = abs(_e7);
     if (!((c_8 > 0.0))) {
         return 0.0;
     }
-    float _e13 = ms_ggx_pdf_bounded(wo_4, _e3, alpha_14);
+    float _e13 = ms_ggx_pdf_bounded(wo_8, _e3, alpha_14);
     return (_e13 / (4.0 * c_8));
 }
 
-float ms_d(MsMicrofacet mf, vec3 wm_4) {
+float ms_d(MsMicrofacet mf, vec3 wm_6) {
     if ((mf.ndf == MS_NDF_GGX)) {
-        float _e6 = ms_ggx_d(wm_4, mf.alpha);
+        float _e6 = ms_ggx_d(wm_6, mf.alpha);
         return _e6;
     }
     return 0.0;
@@ -695,23 +784,23 @@ float ms_g1_(MsMicrofacet mf_2, vec3 w_11) {
     return 0.0;
 }
 
-float ms_g2_(MsMicrofacet mf_3, vec3 wo_5, vec3 wi_4) {
+float ms_g2_(MsMicrofacet mf_3, vec3 wo_9, vec3 wi_9) {
     if ((mf_3.ndf == MS_NDF_GGX)) {
-        float _e7 = ms_ggx_g2_(wo_5, wi_4, mf_3.alpha);
+        float _e7 = ms_ggx_g2_(wo_9, wi_9, mf_3.alpha);
         return _e7;
     }
     return 0.0;
 }
 
-float ms_g2_separable(MsMicrofacet mf_4, vec3 wo_6, vec3 wi_5) {
-    float _e3 = ms_g1_(mf_4, wo_6);
-    float _e4 = ms_g1_(mf_4, wi_5);
+float ms_g2_separable(MsMicrofacet mf_4, vec3 wo_10, vec3 wi_10) {
+    float _e3 = ms_g1_(mf_4, wo_10);
+    float _e4 = ms_g1_(mf_4, wi_10);
     return (_e3 * _e4);
 }
 
-float ms_pdf(MsMicrofacet mf_5, vec3 w_12, vec3 wm_5) {
+float ms_pdf(MsMicrofacet mf_5, vec3 w_12, vec3 wm_7) {
     if ((mf_5.ndf == MS_NDF_GGX)) {
-        float _e7 = ms_ggx_pdf(w_12, wm_5, mf_5.alpha);
+        float _e7 = ms_ggx_pdf(w_12, wm_7, mf_5.alpha);
         return _e7;
     }
     return 0.0;
@@ -752,38 +841,38 @@ bool ms_usable(float v_3) {
     return _e8;
 }
 
-float ms_masking_g2_(MsMicrofacet mf_9, uint masking, vec3 wo_7, vec3 wi_6) {
+float ms_masking_g2_(MsMicrofacet mf_9, uint masking, vec3 wo_11, vec3 wi_11) {
     if ((masking == MS_MASKING_SEPARABLE)) {
-        float _e6 = ms_g2_separable(mf_9, wo_7, wi_6);
+        float _e6 = ms_g2_separable(mf_9, wo_11, wi_11);
         return _e6;
     }
-    float _e7 = ms_g2_(mf_9, wo_7, wi_6);
+    float _e7 = ms_g2_(mf_9, wo_11, wi_11);
     return _e7;
 }
 
-float ms_reflected(MsMicrofacet mf_10, uint masking_1, vec3 wo_8, vec3 wi_7, float d_wm) {
-    float _e5 = ms_masking_g2_(mf_10, masking_1, wo_8, wi_7);
-    return ((d_wm * _e5) / (4.0 * abs((wo_8.z * wi_7.z))));
+float ms_reflected(MsMicrofacet mf_10, uint masking_1, vec3 wo_12, vec3 wi_12, float d_wm) {
+    float _e5 = ms_masking_g2_(mf_10, masking_1, wo_12, wi_12);
+    return ((d_wm * _e5) / (4.0 * abs((wo_12.z * wi_12.z))));
 }
 
 vec3 ms_weighted(vec3 fr_1, float k_1) {
     return mix((fr_1 * k_1), vec3(0.0), equal(fr_1, vec3(0.0)));
 }
 
-vec3 ms_conductor_lobe_normal(MsConductor c_1, vec3 wo_9, vec3 wi_8) {
+vec3 ms_conductor_lobe_normal(MsConductor c_1, vec3 wo_13, vec3 wi_13) {
     bool local_10 = false;
     bool local_11 = false;
     bool local_12 = false;
-    bool _e3 = ms_same_hemisphere(wo_9, wi_8);
+    bool _e3 = ms_same_hemisphere(wo_13, wi_13);
     if (!(!(_e3))) {
-        bool _e9 = ms_on_horizon(wo_9.z);
+        bool _e9 = ms_on_horizon(wo_13.z);
         local_10 = _e9;
     } else {
         local_10 = true;
     }
     bool _e11 = local_10;
     if (!(_e11)) {
-        bool _e16 = ms_on_horizon(wi_8.z);
+        bool _e16 = ms_on_horizon(wi_13.z);
         local_11 = _e16;
     } else {
         local_11 = true;
@@ -799,108 +888,351 @@ vec3 ms_conductor_lobe_normal(MsConductor c_1, vec3 wo_9, vec3 wi_8) {
     if (_e25) {
         return vec3(0.0);
     }
-    vec3 _e28 = ms_half_vector_reflection(wo_9, wi_8);
+    vec3 _e28 = ms_half_vector_reflection(wo_13, wi_13);
     return _e28;
 }
 
-vec3 ms_conductor_eval(MsConductor c_2, vec3 wo_10, vec3 wi_9) {
-    vec3 _e3 = ms_conductor_lobe_normal(c_2, wo_10, wi_9);
+vec3 ms_conductor_eval(MsConductor c_2, vec3 wo_14, vec3 wi_14) {
+    vec3 _e3 = ms_conductor_lobe_normal(c_2, wo_14, wi_14);
     bool _e4 = ms_half_vector_ok(_e3);
     if (!(_e4)) {
         return vec3(0.0);
     }
-    float _e9 = ms_dot(wo_10, _e3);
-    float _e11 = ms_dot(wi_9, _e3);
+    float _e9 = ms_dot(wo_14, _e3);
+    float _e11 = ms_dot(wi_14, _e3);
     vec3 _e16 = ms_fresnel_eval(c_2.fresnel, (0.5 * (abs(_e9) + abs(_e11))));
     float _e20 = ms_d(c_2.mf, _e3);
-    float _e21 = ms_reflected(c_2.mf, c_2.masking, wo_10, wi_9, _e20);
+    float _e21 = ms_reflected(c_2.mf, c_2.masking, wo_14, wi_14, _e20);
     vec3 _e22 = ms_weighted(_e16, _e21);
     return _e22;
 }
 
-float ms_conductor_pdf(MsConductor c_3, vec3 wo_11, vec3 wi_10) {
-    vec3 _e3 = ms_conductor_lobe_normal(c_3, wo_11, wi_10);
+float ms_conductor_pdf(MsConductor c_3, vec3 wo_15, vec3 wi_15) {
+    vec3 _e3 = ms_conductor_lobe_normal(c_3, wo_15, wi_15);
     bool _e4 = ms_half_vector_ok(_e3);
     if (!(_e4)) {
         return 0.0;
     }
-    float _e8 = ms_pdf(c_3.mf, wo_11, _e3);
-    float _e9 = ms_dot(wo_11, _e3);
+    float _e8 = ms_pdf(c_3.mf, wo_15, _e3);
+    float _e9 = ms_dot(wo_15, _e3);
     return (_e8 / (4.0 * abs(_e9)));
 }
 
-vec4 ms_conductor_eval_pdf(MsConductor c_4, vec3 wo_12, vec3 wi_11) {
-    vec3 _e3 = ms_conductor_lobe_normal(c_4, wo_12, wi_11);
+vec4 ms_conductor_eval_pdf(MsConductor c_4, vec3 wo_16, vec3 wi_16) {
+    vec3 _e3 = ms_conductor_lobe_normal(c_4, wo_16, wi_16);
     bool _e4 = ms_half_vector_ok(_e3);
     if (!(_e4)) {
         return vec4(0.0);
     }
-    float _e8 = ms_dot(wo_12, _e3);
+    float _e8 = ms_dot(wo_16, _e3);
     float co = abs(_e8);
-    float _e11 = ms_dot(wi_11, _e3);
+    float _e11 = ms_dot(wi_16, _e3);
     vec3 _e16 = ms_fresnel_eval(c_4.fresnel, (0.5 * (co + abs(_e11))));
     float _e20 = ms_d(c_4.mf, _e3);
-    float _e21 = ms_reflected(c_4.mf, c_4.masking, wo_12, wi_11, _e20);
+    float _e21 = ms_reflected(c_4.mf, c_4.masking, wo_16, wi_16, _e20);
     vec3 _e22 = ms_weighted(_e16, _e21);
-    float _e24 = ms_pdf(c_4.mf, wo_12, _e3);
+    float _e24 = ms_pdf(c_4.mf, wo_16, _e3);
     return vec4(_e22, (_e24 / (4.0 * co)));
 }
 
-MsBsdfSample ms_conductor_sample(MsConductor c_5, vec3 wo_13, float uc, vec2 u_7) {
+MsBsdfSample ms_conductor_sample(MsConductor c_5, vec3 wo_17, float uc, vec2 u_7) {
     bool local_13 = false;
-    MsBsdfSample none = MsBsdfSample(vec3(0.0), 0.0, vec3(0.0), 0u);
-    bool _e12 = ms_on_horizon(wo_13.z);
-    if (_e12) {
+    MsBsdfSample none = MsBsdfSample(vec3(0.0), 0.0, vec3(0.0), 0u, 1.0);
+    bool _e13 = ms_on_horizon(wo_17.z);
+    if (_e13) {
         return none;
     }
-    bool _e14 = ms_effectively_smooth(c_5.mf);
-    if (_e14) {
-        vec3 wi_12 = vec3(-(wo_13.x), -(wo_13.y), wo_13.z);
-        float k_4 = (1.0 / abs(wi_12.z));
-        vec3 _e28 = ms_fresnel_eval(c_5.fresnel, abs(wo_13.z));
-        return MsBsdfSample(wi_12, 1.0, (_e28 * k_4), 3u);
+    bool _e15 = ms_effectively_smooth(c_5.mf);
+    if (_e15) {
+        vec3 wi_22 = vec3(-(wo_17.x), -(wo_17.y), wo_17.z);
+        float k_4 = (1.0 / abs(wi_22.z));
+        vec3 _e29 = ms_fresnel_eval(c_5.fresnel, abs(wo_17.z));
+        return MsBsdfSample(wi_22, 1.0, (_e29 * k_4), 3u, 1.0);
     }
-    MsSample _e34 = ms_sample(c_5.mf, wo_13, u_7);
-    vec3 _e36 = ms_reflect(wo_13, _e34.wm);
-    bool _e37 = ms_same_hemisphere(wo_13, _e36);
-    if (!(!(_e37))) {
-        bool _e43 = ms_on_horizon(_e36.z);
-        local_13 = _e43;
+    MsSample _e36 = ms_sample(c_5.mf, wo_17, u_7);
+    vec3 _e38 = ms_reflect(wo_17, _e36.wm);
+    bool _e39 = ms_same_hemisphere(wo_17, _e38);
+    if (!(!(_e39))) {
+        bool _e45 = ms_on_horizon(_e38.z);
+        local_13 = _e45;
     } else {
         local_13 = true;
     }
-    bool _e45 = local_13;
-    if (_e45) {
+    bool _e47 = local_13;
+    if (_e47) {
         return none;
     }
-    float _e47 = ms_dot(wo_13, _e34.wm);
-    float co_1 = abs(_e47);
-    float pdf = (_e34.pdf / (4.0 * co_1));
-    bool _e53 = ms_usable(pdf);
-    if (!(_e53)) {
+    float _e49 = ms_dot(wo_17, _e36.wm);
+    float co_1 = abs(_e49);
+    float pdf = (_e36.pdf / (4.0 * co_1));
+    bool _e55 = ms_usable(pdf);
+    if (!(_e55)) {
         return none;
     }
-    vec3 _e56 = ms_fresnel_eval(c_5.fresnel, co_1);
-    float _e59 = ms_d(c_5.mf, _e34.wm);
-    bool _e60 = ms_usable(_e59);
-    if (!(_e60)) {
+    vec3 _e58 = ms_fresnel_eval(c_5.fresnel, co_1);
+    float _e61 = ms_d(c_5.mf, _e36.wm);
+    bool _e62 = ms_usable(_e61);
+    if (!(_e62)) {
         return none;
     }
-    float _e64 = ms_reflected(c_5.mf, c_5.masking, wo_13, _e36, _e59);
-    vec3 _e65 = ms_weighted(_e56, _e64);
-    if (!(all(lessThanEqual(_e65, vec3(3.4028235e38))))) {
+    float _e66 = ms_reflected(c_5.mf, c_5.masking, wo_17, _e38, _e61);
+    vec3 _e67 = ms_weighted(_e58, _e66);
+    if (!(all(lessThanEqual(_e67, vec3(3.4028235e38))))) {
         return none;
     }
-    return MsBsdfSample(_e36, pdf, _e65, MS_SAMPLE_VALID);
+    return MsBsdfSample(_e38, pdf, _e67, MS_SAMPLE_VALID, 1.0);
 }
 
-uint ms_k_index(uvec3 id_6, uvec3 groups_6) {
-    uint i_1 = (id_6.x + ((id_6.y * groups_6.x) * 64u));
-    uint n_3 = (uint(_group_0_binding_0_cs.length()) / MS_K_IN);
-    if ((i_1 >= n_3)) {
-        return n_3;
+bool ms_dielectric_smooth(MsDielectric d_1) {
+    bool local_14 = false;
+    if (!((d_1.eta == 1.0))) {
+        bool _e8 = ms_effectively_smooth(d_1.mf);
+        local_14 = _e8;
+    } else {
+        local_14 = true;
     }
-    return i_1;
+    bool _e10 = local_14;
+    return _e10;
+}
+
+float ms_dielectric_g2_(MsDielectric d_2, vec3 wo_18, vec3 wi_17) {
+    float _e5 = ms_masking_g2_(d_2.mf, d_2.masking, wo_18, wi_17);
+    return _e5;
+}
+
+vec4 ms_dielectric_half(MsDielectric d_3, vec3 wo_19, vec3 wi_18) {
+    bool local_15 = false;
+    vec3 wm_8 = vec3(0.0);
+    float etap_4 = 1.0;
+    bool local_16 = false;
+    vec4 none_1 = vec4(0.0);
+    float co_2 = wo_19.z;
+    float ci_1 = wi_18.z;
+    bool _e7 = ms_on_horizon(co_2);
+    if (!(_e7)) {
+        bool _e11 = ms_on_horizon(ci_1);
+        local_15 = _e11;
+    } else {
+        local_15 = true;
+    }
+    bool _e13 = local_15;
+    if (_e13) {
+        return none_1;
+    }
+    if (((co_2 * ci_1) > 0.0)) {
+        vec3 _e20 = ms_half_vector_reflection(wo_19, wi_18);
+        wm_8 = _e20;
+    } else {
+        vec4 _e22 = ms_half_vector_refraction(wo_19, wi_18, d_3.eta);
+        wm_8 = _e22.xyz;
+        etap_4 = _e22.w;
+    }
+    vec3 _e25 = wm_8;
+    bool _e26 = ms_half_vector_ok(_e25);
+    if (!(_e26)) {
+        return none_1;
+    }
+    vec3 _e28 = wm_8;
+    float _e29 = ms_dot(_e28, wi_18);
+    if (!(((_e29 * ci_1) < 0.0))) {
+        vec3 _e36 = wm_8;
+        float _e37 = ms_dot(_e36, wo_19);
+        local_16 = ((_e37 * co_2) < 0.0);
+    } else {
+        local_16 = true;
+    }
+    bool _e42 = local_16;
+    if (_e42) {
+        return none_1;
+    }
+    vec3 _e43 = wm_8;
+    float _e44 = etap_4;
+    return vec4(_e43, _e44);
+}
+
+float ms_dielectric_f_transmission(MsDielectric d_4, vec3 wo_20, vec3 wi_19, vec3 wm_9, float d_wm_1, float etap_5, float t) {
+    float f = 0.0;
+    float _e7 = ms_dot(wi_19, wm_9);
+    float _e8 = ms_dot(wo_20, wm_9);
+    float _e9 = ms_refraction_denominator(wo_20, wi_19, wm_9, etap_5);
+    float _e10 = ms_dielectric_g2_(d_4, wo_20, wi_19);
+    float geometric = ((_e10 / abs((wi_19.z * wo_20.z))) * (abs((_e7 * _e8)) / (_e9 * _e9)));
+    f = ((d_wm_1 * t) * geometric);
+    if ((d_4.transport == MS_TRANSPORT_RADIANCE)) {
+        float _e27 = f;
+        f = (_e27 / (etap_5 * etap_5));
+    }
+    float _e30 = f;
+    return _e30;
+}
+
+float ms_dielectric_eval(MsDielectric d_5, vec3 wo_21, vec3 wi_20) {
+    bool _e3 = ms_dielectric_smooth(d_5);
+    if (_e3) {
+        return 0.0;
+    }
+    vec4 _e5 = ms_dielectric_half(d_5, wo_21, wi_20);
+    if ((_e5.w == 0.0)) {
+        return 0.0;
+    }
+    vec3 wm_10 = _e5.xyz;
+    float _e11 = ms_dot(wo_21, wm_10);
+    float _e13 = ms_fresnel_dielectric(_e11, d_5.eta);
+    float _e15 = ms_d(d_5.mf, wm_10);
+    if (((wo_21.z * wi_20.z) > 0.0)) {
+        float _e23 = ms_reflected(d_5.mf, d_5.masking, wo_21, wi_20, _e15);
+        return (_e13 * _e23);
+    }
+    float _e28 = ms_dielectric_f_transmission(d_5, wo_21, wi_20, wm_10, _e15, _e5.w, (1.0 - _e13));
+    return _e28;
+}
+
+float ms_dielectric_pdf(MsDielectric d_6, vec3 wo_22, vec3 wi_21) {
+    bool _e3 = ms_dielectric_smooth(d_6);
+    if (_e3) {
+        return 0.0;
+    }
+    vec4 _e5 = ms_dielectric_half(d_6, wo_22, wi_21);
+    if ((_e5.w == 0.0)) {
+        return 0.0;
+    }
+    vec3 wm_11 = _e5.xyz;
+    float _e11 = ms_dot(wo_22, wm_11);
+    float _e13 = ms_fresnel_dielectric(_e11, d_6.eta);
+    float _e15 = ms_pdf(d_6.mf, wo_22, wm_11);
+    if (((wo_22.z * wi_21.z) > 0.0)) {
+        float _e22 = ms_dot(wo_22, wm_11);
+        return ((_e15 * _e13) / (4.0 * abs(_e22)));
+    }
+    float _e31 = ms_jacobian_refraction(wo_22, wi_21, wm_11, _e5.w);
+    return ((_e15 * (1.0 - _e13)) * _e31);
+}
+
+MsBsdfSample ms_dielectric_sample_smooth(MsDielectric d_7, vec3 wo_23, float uc_1) {
+    float f_1 = 0.0;
+    float _e5 = ms_fresnel_dielectric(wo_23.z, d_7.eta);
+    if ((uc_1 < _e5)) {
+        vec3 wi_23 = vec3(-(wo_23.x), -(wo_23.y), wo_23.z);
+        return MsBsdfSample(wi_23, _e5, vec3((_e5 / abs(wi_23.z))), 3u, 1.0);
+    }
+    MsBsdfSample none_2 = MsBsdfSample(vec3(0.0), 0.0, vec3(0.0), 0u, 1.0);
+    vec4 _e33 = ms_refract(wo_23, vec3(0.0, 0.0, 1.0), d_7.eta);
+    if ((_e33.w == 0.0)) {
+        return none_2;
+    }
+    vec3 wi_24 = _e33.xyz;
+    bool _e39 = ms_on_horizon(wi_24.z);
+    if (_e39) {
+        return none_2;
+    }
+    float t_6 = (1.0 - _e5);
+    f_1 = (t_6 / abs(wi_24.z));
+    if ((d_7.transport == MS_TRANSPORT_RADIANCE)) {
+        float _e49 = f_1;
+        f_1 = (_e49 / (_e33.w * _e33.w));
+    }
+    float _e54 = f_1;
+    return MsBsdfSample(wi_24, t_6, vec3(_e54), 7u, _e33.w);
+}
+
+MsBsdfSample ms_dielectric_sample(MsDielectric d_8, vec3 wo_24, float uc_2, vec2 u_8) {
+    bool local_17 = false;
+    bool local_18 = false;
+    bool local_19 = false;
+    bool local_20 = false;
+    MsBsdfSample none_3 = MsBsdfSample(vec3(0.0), 0.0, vec3(0.0), 0u, 1.0);
+    bool _e13 = ms_on_horizon(wo_24.z);
+    if (_e13) {
+        return none_3;
+    }
+    bool _e14 = ms_dielectric_smooth(d_8);
+    if (_e14) {
+        MsBsdfSample _e15 = ms_dielectric_sample_smooth(d_8, wo_24, uc_2);
+        return _e15;
+    }
+    MsSample _e17 = ms_sample(d_8.mf, wo_24, u_8);
+    vec3 wm_12 = _e17.wm;
+    float _e19 = ms_dot(wo_24, wm_12);
+    float _e21 = ms_fresnel_dielectric(_e19, d_8.eta);
+    if ((uc_2 < _e21)) {
+        vec3 _e23 = ms_reflect(wo_24, wm_12);
+        bool _e24 = ms_same_hemisphere(wo_24, _e23);
+        if (!(!(_e24))) {
+            bool _e30 = ms_on_horizon(_e23.z);
+            local_17 = _e30;
+        } else {
+            local_17 = true;
+        }
+        bool _e32 = local_17;
+        if (_e32) {
+            return none_3;
+        }
+        float _e34 = ms_d(d_8.mf, wm_12);
+        bool _e35 = ms_usable(_e34);
+        if (!(_e35)) {
+            return none_3;
+        }
+        float _e39 = ms_reflected(d_8.mf, d_8.masking, wo_24, _e23, _e34);
+        float f_2 = (_e21 * _e39);
+        float pdf_1 = ((_e17.pdf * _e21) / (4.0 * abs(_e19)));
+        bool _e47 = ms_usable(pdf_1);
+        if (!(!(_e47))) {
+            local_18 = !((f_2 <= 3.4028235e38));
+        } else {
+            local_18 = true;
+        }
+        bool _e56 = local_18;
+        if (_e56) {
+            return none_3;
+        }
+        return MsBsdfSample(_e23, pdf_1, vec3(f_2), MS_SAMPLE_VALID, 1.0);
+    }
+    vec4 _e62 = ms_refract(wo_24, wm_12, d_8.eta);
+    if ((_e62.w == 0.0)) {
+        return none_3;
+    }
+    vec3 wi_25 = _e62.xyz;
+    float etap_6 = _e62.w;
+    bool _e68 = ms_same_hemisphere(wo_24, wi_25);
+    if (!(_e68)) {
+        bool _e73 = ms_on_horizon(wi_25.z);
+        local_19 = _e73;
+    } else {
+        local_19 = true;
+    }
+    bool _e75 = local_19;
+    if (_e75) {
+        return none_3;
+    }
+    float t_7 = (1.0 - _e21);
+    float _e80 = ms_jacobian_refraction(wo_24, wi_25, wm_12, etap_6);
+    float pdf_2 = ((_e17.pdf * t_7) * _e80);
+    float _e83 = ms_d(d_8.mf, wm_12);
+    bool _e84 = ms_usable(_e83);
+    if (!(_e84)) {
+        return none_3;
+    }
+    float _e86 = ms_dielectric_f_transmission(d_8, wo_24, wi_25, wm_12, _e83, etap_6, t_7);
+    bool _e87 = ms_usable(pdf_2);
+    if (!(!(_e87))) {
+        local_20 = !((_e86 <= 3.4028235e38));
+    } else {
+        local_20 = true;
+    }
+    bool _e96 = local_20;
+    if (_e96) {
+        return none_3;
+    }
+    return MsBsdfSample(wi_25, pdf_2, vec3(_e86), 5u, etap_6);
+}
+
+uint ms_k_index(uvec3 id_8, uvec3 groups_8) {
+    uint i_2 = (id_8.x + ((id_8.y * groups_8.x) * 64u));
+    uint n_4 = (uint(_group_0_binding_0_cs.length()) / MS_K_IN);
+    if ((i_2 >= n_4)) {
+        return n_4;
+    }
+    return i_2;
 }
 
 MsConductor ms_k_conductor(uint i) {
@@ -910,6 +1242,14 @@ MsConductor ms_k_conductor(uint i) {
     vec4 r4_ = _group_0_binding_0_cs[((i * MS_K_IN) + 4u)];
     MsMicrofacet mf_11 = MsMicrofacet(uint(r2_.w), r0_.xy);
     return MsConductor(mf_11, MsFresnel(uint(r3_.w), r3_.xyz, r4_.xyz), uint(r4_.w));
+}
+
+MsDielectric ms_k_dielectric(uint i_1) {
+    vec4 r0_1 = _group_0_binding_0_cs[(i_1 * MS_K_IN)];
+    vec4 r2_1 = _group_0_binding_0_cs[((i_1 * MS_K_IN) + 2u)];
+    vec4 r3_1 = _group_0_binding_0_cs[((i_1 * MS_K_IN) + 3u)];
+    vec4 r4_1 = _group_0_binding_0_cs[((i_1 * MS_K_IN) + 4u)];
+    return MsDielectric(MsMicrofacet(uint(r2_1.w), r0_1.xy), r3_1.x, uint(r4_1.w), uint(r4_1.x));
 }
 
 void main() {
