@@ -16,7 +16,7 @@
 //! path (`Microfacet<f32, Ggx>`, `RoughConductor`), for scale.
 
 use microsurface::bsdf::fresnel::Conductor;
-use microsurface::bsdf::{Bsdf, RoughConductor};
+use microsurface::bsdf::{Bsdf, RoughConductor, RoughDielectric};
 use microsurface::{Ggx, Microfacet, MicrofacetDistribution};
 use microsurface_gpu::{groups, Gpu, WGSL};
 use std::time::Instant;
@@ -25,7 +25,7 @@ use std::time::Instant;
 const ITER: u64 = 8;
 const ALPHA: [f32; 2] = [0.3, 0.15];
 
-const KERNELS: [(&str, &str); 6] = [
+const KERNELS: [(&str, &str); 8] = [
     ("bench_inputs", "inputs (hash, directions; no library call)"),
     (
         "bench_ggx_sample",
@@ -41,6 +41,11 @@ const KERNELS: [(&str, &str); 6] = [
         "bench_conductor_sample",
         "GGX conductor sample (complex Fresnel)",
     ),
+    (
+        "bench_dielectric_eval_pdf",
+        "GGX dielectric eval + pdf (η = 1.5)",
+    ),
+    ("bench_dielectric_sample", "GGX dielectric sample (η = 1.5)"),
 ];
 
 fn main() {
@@ -246,8 +251,23 @@ fn cpu_reference() {
         let (f, p) = gold.eval_pdf(x.0, x.1);
         f[0] + f[1] + f[2] + p
     });
+    let glass = RoughDielectric::new(m.clone(), 1.5f32);
     time("GGX conductor sample (complex Fresnel)", &|x| {
         gold.sample(x.0, 0.5, x.2)
+            .map_or(0.0, |s| s.wi[0] + s.pdf + s.f[1])
+    });
+    time("GGX dielectric eval + pdf (η = 1.5)", &|x| {
+        // (Half the pairs transmitted, as in the GPU kernel.)
+        let wi = if x.2[0] < 0.5 {
+            x.1
+        } else {
+            [x.1[0], x.1[1], -x.1[2]]
+        };
+        glass.eval(x.0, wi)[0] + glass.pdf(x.0, wi)
+    });
+    time("GGX dielectric sample (η = 1.5)", &|x| {
+        glass
+            .sample(x.0, x.1[0] * 0.5 + 0.5, x.2)
             .map_or(0.0, |s| s.wi[0] + s.pdf + s.f[1])
     });
 }

@@ -153,3 +153,46 @@ fn bench_conductor_sample(@builtin(global_invocation_id) id: vec3<u32>,
     }
     ms_out[i] = acc;
 }
+
+fn glass() -> MsDielectric {
+    return MsDielectric(MsMicrofacet(MS_NDF_GGX, ms_in[0].xy), 1.5, MS_MASKING_CORRELATED,
+        MS_TRANSPORT_RADIANCE);
+}
+
+@compute @workgroup_size(64)
+fn bench_dielectric_eval_pdf(@builtin(global_invocation_id) id: vec3<u32>,
+    @builtin(num_workgroups) groups: vec3<u32>) {
+    let i = index(id, groups);
+    if i >= bitcast<u32>(ms_in[0].z) {
+        return;
+    }
+    let d = glass();
+    var acc = 0.0;
+    for (var j = 0u; j < ITER; j++) {
+        let x = input(i, j);
+        // Half the pairs transmitted: wi mirrored below on odd j.
+        var wi = x.wi;
+        if (j & 1u) == 1u {
+            wi.z = -wi.z;
+        }
+        acc += ms_dielectric_eval(d, x.wo, wi) + ms_dielectric_pdf(d, x.wo, wi);
+    }
+    ms_out[i] = acc;
+}
+
+@compute @workgroup_size(64)
+fn bench_dielectric_sample(@builtin(global_invocation_id) id: vec3<u32>,
+    @builtin(num_workgroups) groups: vec3<u32>) {
+    let i = index(id, groups);
+    if i >= bitcast<u32>(ms_in[0].z) {
+        return;
+    }
+    let d = glass();
+    var acc = 0.0;
+    for (var j = 0u; j < ITER; j++) {
+        let x = input(i, j);
+        let s = ms_dielectric_sample(d, x.wo, x.wi.x * 0.5 + 0.5, x.u);
+        acc += s.wi.x + s.pdf + s.f.y;
+    }
+    ms_out[i] = acc;
+}
