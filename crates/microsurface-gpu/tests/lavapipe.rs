@@ -485,7 +485,14 @@ fn fresnel_cancellation(k: usize, c: f64, a: f64, b: f64) -> f64 {
             return 1.0;
         }
         let (ect, e2c) = (ect2.sqrt(), eta * eta * c);
-        ((e2c + ect) / (e2c - ect).abs()).max((c + ect) / (c - ect).abs())
+        // η ≤ 1: η² cos²θt = η² − sin²θi itself cancels toward the critical angle, and the
+        // subtractions below magnify that error of η cos θt in turn.
+        let k2 = if eta > 1.0 {
+            1.0
+        } else {
+            1.0 + (eta * eta + (1.0 - c * c)) / ect2
+        };
+        k2 * ((e2c + ect) / (e2c - ect).abs()).max((c + ect) / (c - ect).abs())
     };
     match k {
         0 => dielectric(c, a),
@@ -647,7 +654,8 @@ const BSDF_TOL: f64 = 3.0 * TOL;
 /// Accuracy section), plus what it costs the Fresnel factor `fr` at c = |wo·wm|, measured as
 /// the largest change of fr(c ± δ) relative to `weight(fr(c))` (fr itself, or 1 − fr for a
 /// transmission): finite near the dielectric's critical angle, where fr has a square-root
-/// edge.
+/// edge; and what the Fresnel formula's own cancellation costs, 16ε times `formula`
+/// (`fresnel_cancellation`).
 fn value_tol(
     wm: [f64; 3],
     alpha: [f32; 2],
@@ -655,6 +663,7 @@ fn value_tol(
     c: f64,
     fr: &dyn Fn(f64) -> f64,
     weight: &dyn Fn(f64) -> f64,
+    formula: f64,
 ) -> f64 {
     let a = alpha[0].min(alpha[1]) as f64;
     let z = wm[2].clamp(1e-6, 1.0);
@@ -663,7 +672,11 @@ fn value_tol(
     let f0 = fr(c);
     let df = (fr(c + delta) - f0).abs().max((fr(c - delta) - f0).abs());
     let w = weight(f0);
-    let f_term = if w > 0.0 { df / w } else { 0.0 };
+    let f_term = if w > 0.0 {
+        (df + 16.0 * EPS * formula * f0) / w
+    } else {
+        0.0
+    };
     BSDF_TOL + d_term + f_term
 }
 
@@ -684,7 +697,15 @@ fn fresnel_fn(e: &El, ch: usize) -> impl Fn(f64) -> f64 {
 fn conductor_tol(e: &El, wi: [f32; 3], ch: usize, sampled: Option<f64>) -> f64 {
     let (wm, _, delta) = half_vector_delta(e.wo, wi, 1.0, sampled);
     let c = (0..3).map(|k| e.wo[k] as f64 * wm[k]).sum::<f64>().abs();
-    value_tol(wm, e.alpha, delta, c, &fresnel_fn(e, ch), &|f| f)
+    // (The element's Fresnel kind as `fresnel_cancellation`'s function index.)
+    let (kind, a, b) = e.fr;
+    let formula = match kind {
+        1 => fresnel_cancellation(0, c, a[ch] as f64, 0.0),
+        2 => fresnel_cancellation(1, c, a[ch] as f64, b[ch] as f64),
+        4 => fresnel_cancellation(3, c, a[ch] as f64, b[ch] as f64),
+        _ => 1.0,
+    };
+    value_tol(wm, e.alpha, delta, c, &fresnel_fn(e, ch), &|f| f, formula)
 }
 
 #[test]
@@ -706,7 +727,7 @@ fn conductor_eval_and_pdf_match_rust_f32() {
         }
         // (The pdf has no Fresnel factor: F = 1's bound.)
         let (wm, _, delta) = half_vector_delta(e.wo, e.wi, 1.0, None);
-        let tol = value_tol(wm, e.alpha, delta, 1.0, &|_| 1.0, &|f| f);
+        let tol = value_tol(wm, e.alpha, delta, 1.0, &|_| 1.0, &|f| f, 0.0);
         w.add(1, rel(o[0][3], p) / tol, || {
             format!("{e:?}: gpu {} rust {p}", o[0][3])
         });
@@ -747,7 +768,7 @@ fn conductor_samples_match_rust_f32() {
         // wi = 2(wo·wm)wm − wo doubles the normal's difference.
         w.add(1, vec_diff(g_wi, s.wi) / (2.0 * cap_bound(e, false)), what);
         let (wm, _, delta) = half_vector_delta(e.wo, s.wi, 1.0, Some(cap_bound(e, false)));
-        let tol = value_tol(wm, e.alpha, delta, 1.0, &|_| 1.0, &|f| f);
+        let tol = value_tol(wm, e.alpha, delta, 1.0, &|_| 1.0, &|f| f, 0.0);
         w.add(2, rel(o[0][3], s.pdf) / tol, what);
         for (ch, (&g, &r)) in o[1].iter().zip(&s.f).enumerate() {
             w.add(
@@ -851,10 +872,11 @@ fn dielectric_tol(e: &El, wi: [f32; 3], sampled: Option<f64>) -> f64 {
     let (wm, _, delta) = half_vector_delta(e.wo, wi, eta, sampled);
     let c = (0..3).map(|k| e.wo[k] as f64 * wm[k]).sum::<f64>();
     let r = move |c: f64| fresnel::dielectric(c, eta as f64);
+    let formula = fresnel_cancellation(0, c, eta as f64, 0.0);
     if e.wo[2] * wi[2] > 0.0 {
-        value_tol(wm, e.alpha, delta, c, &r, &|f| f)
+        value_tol(wm, e.alpha, delta, c, &r, &|f| f, formula)
     } else {
-        value_tol(wm, e.alpha, delta, c, &r, &|f| 1.0 - f)
+        value_tol(wm, e.alpha, delta, c, &r, &|f| 1.0 - f, formula)
     }
 }
 
@@ -904,13 +926,17 @@ fn dielectric_samples_match_rust_f32() {
         if flags != expect {
             continue;
         }
-        // The refraction of the normal's difference grows with η': 2 · the normal's bound · η'.
+        // The refraction of the normal's difference grows with η' (2 · the normal's bound · η'),
+        // and cos θt = √(1 − sin²θt) magnifies sin²θt's move (≤ 4 · bound/η'², plus its
+        // rounding) by 1/(2 cos θt) toward a grazing refraction.
+        let bound = cap_bound(e, false);
         let etap = s.eta.max(1.0 / s.eta) as f64;
-        w.add(
-            1,
-            vec_diff(g_wi, s.wi) / (2.0 * cap_bound(e, false) * etap),
-            what,
-        );
+        let mut wi_tol = 2.0 * bound * etap;
+        if s.lobe == Lobe::Transmission {
+            let e2 = (s.eta as f64) * (s.eta as f64);
+            wi_tol += (4.0 * bound / e2 + 8.0 * EPS) / (2.0 * (s.wi[2] as f64).abs().max(1e-30));
+        }
+        w.add(1, vec_diff(g_wi, s.wi) / wi_tol, what);
         let tol = dielectric_tol(e, s.wi, Some(cap_bound(e, false)));
         w.add(2, rel(o[0][3], s.pdf) / tol, what);
         w.add(3, rel(o[1][0], s.f[0]) / tol, what);
