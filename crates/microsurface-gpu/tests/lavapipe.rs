@@ -6,21 +6,27 @@
 //! incidence, cos θ from 0.9 down to 1e-4 (grazing) at four azimuths, and below the
 //! horizon; uniforms 0, 2⁻²⁴, ¼, ½, 0.9 and 1 − 2⁻²⁴ in each coordinate.
 //!
-//! Tolerances (relative, |gpu − rust| ≤ tol·|rust|), and where each comes from:
-//! * D, Λ, G1, G2 (both forms), the visible pdf, the D·cos pdf, the bounded pdf: 2e-6, twice
-//!   the f32 fast path's documented bound (GGX f32 ≤ 1e-6 of the exact value: the table of
-//!   `microsurface::fast`), as both sides are held to it.
-//! * Fresnel: 2e-6 likewise where the Rust f32 function is well conditioned; the
-//!   functions' docs state f32 to f32's rounding of their inputs.
-//! * Sampled normals (warps of u): the same normal as the Rust f32 sampler to
-//!   `NORMAL_TOL` per component, the bound measured here (the Rust f32 path forms cos 2πu in
-//!   f64 and rounds, the WGSL in f32: 1 ulp of the angle, magnified by the unstretch).
-//! * BSDF values: the half vector is recomputed on each side (or comes from a sampled normal
-//!   that may differ by `NORMAL_TOL`), and may move by δ = 2 · 4ε(1 + η')/|η' wi + wo| (the
-//!   Rust docs' rounding of a recomputed half vector, once per side); the bound is 2e-6 plus
-//!   what δ costs D (δ(1 + 4 tan θh/α²), D's condition number: the crate-wide 4εκ rule of
-//!   the Rust docs' Accuracy section) plus what it costs the Fresnel factor, measured from
-//!   the Rust function at cos θ ± δ (`value_tol`).
+//! Tolerances, and where each comes from. They are the f32 bounds of the Rust docs, and
+//! where a quantity is ill-conditioned, what its conditioning makes of f32 roundings,
+//! computed per element in f64, so that they hold on any device that rounds as Vulkan
+//! allows (measured on lavapipe and on an NVIDIA H200: BENCHMARKS.md):
+//! * D, Λ, G1, G2 (both forms), the visible, D·cos and bounded pdfs: relative 2e-6 (`TOL`),
+//!   twice the f32 fast path's documented bound (GGX f32 ≤ 1e-6 of the exact value: the
+//!   table of `microsurface::fast`), as both sides are held to it.
+//! * Sampled normals (warps of u): the Rust f32 sampler's normal to `NORMAL_TOL` = 16ε per
+//!   component (the Rust f32 path forms cos 2πu in f64 and rounds, the WGSL in f32), plus,
+//!   near the caps' poles, what √(1 − cz²) makes of cz's rounding (`cap_bound`); a pdf at its
+//!   own normal to `TOL` plus the dot product's cancellation at the visible edge, except on
+//!   the bounded cap's edge, where its indicator is decided by rounding.
+//! * Fresnel: `TOL` plus 16ε times the formula's cancellation (`fresnel_cancellation`: η → 1,
+//!   the critical angle, F82-tint's subtraction), inside each function's contract.
+//! * BSDF values: `BSDF_TOL` (three of `TOL`: D, G2 and F each held to it) plus what the half
+//!   vector's rounding δ = 2 · 4ε(1 + η')/|η' wi + wo| (the Rust docs' δ, once per side; a
+//!   sampled normal's bound where larger) costs D (δ(1 + 4 tan θh/α²): D's condition number,
+//!   the crate-wide 4εκ rule of the Rust docs' Accuracy section) and the Fresnel factor
+//!   (from the Rust function at cos θ ± δ, and its formula's cancellation): `value_tol`.
+//!   A sample's accept/reject and lobe decisions must agree except where the normal's bound
+//!   reaches the decision's margin (`decision_is_close`).
 
 use microsurface::bsdf::fresnel::{self, Conductor, Dielectric, F82Tint, One, Schlick};
 use microsurface::bsdf::{Bsdf, Lobe, Masking, RoughConductor, RoughDielectric, Transport};
