@@ -19,8 +19,11 @@ element (the fastest of 11 rounds) and as a ratio to GGX's (the target: ≤ 3× 
 but the generalised exponential, which has no fast path); with ``--exact`` also through the
 exact path (``exact=True``; the only path before 1.0.0rc1).
 
+Then (issue 35, target 8) every NDF's D, Λ, G1 with ``fast=True`` and its visible pdf over 10⁶
+elements against the Rust door's loop over the same inputs (the target: within 1.3×).
+
 Run ``python benchmark.py bsdf`` for the BSDF table alone, ``python benchmark.py slices`` for
-the first part alone. RAYON_NUM_THREADS=1 gives per-core figures.
+the first part alone, ``python benchmark.py fast`` for the fast-path table alone. RAYON_NUM_THREADS=1 gives per-core figures.
 """
 
 import sys
@@ -142,8 +145,59 @@ def bsdf_table(n=100_000, exact=False):
         print(f"{label:22} {per:>12} {t / ggx:7.2f}×")
 
 
+# (label, spec for the Rust door, constructor) of every NDF with a fast path, at α = 0.3.
+FAST = [
+    ("GGX", "ggx", lambda: microsurface.GGX(0.3)),
+    ("Beckmann", "beckmann", lambda: microsurface.Beckmann(0.3)),
+    ("GTR γ=1.5", "gtr:1.5", lambda: microsurface.GTR(0.3, 1.5)),
+    ("Double GGX", "double_ggx", lambda: microsurface.DoubleGGX(0.3)),
+    ("Exponential", "exponential", lambda: microsurface.Exponential(0.3)),
+    ("Student-T γ=2.5", "student_t:2.5", lambda: microsurface.StudentT(0.3, 2.5)),
+    ("Ei", "ei", lambda: microsurface.Ei(0.3)),
+    ("Erfc", "erfc", lambda: microsurface.Erfc(0.3)),
+    ("K0", "k0", lambda: microsurface.K0(0.3)),
+    ("Bessel-K a=0.7", "bessel_k:0.7", lambda: microsurface.BesselK(0.3, 0.7)),
+]
+
+
+def fast_table(n=N, rounds=11):
+    """Issue 35, target 8: every NDF's D, Λ, G1 (fast=True, 10⁶ uniform cosines) and visible
+    pdf (pdf_visible, 10⁶ direction pairs) from Python against the Rust door's loop over the
+    same inputs in this process (_rust_fast_ns, rayon as the Python call), per element."""
+    rng = np.random.default_rng(3)
+    u = rng.random(n)
+
+    def hemisphere():
+        mu, phi = rng.random(n), 2 * np.pi * rng.random(n)
+        s = np.sqrt((1 - mu) * (1 + mu))
+        return np.stack([s * np.cos(phi), s * np.sin(phi), mu], axis=-1)
+
+    w, wm = hemisphere(), hemisphere()
+    print(f"fast path per element, {n} elements, median of {rounds} (ns): Python | Rust door loop (rayon) | ratio")
+    print(f"{'':17} " + " ".join(f"{q:>20}" for q in ("D", "Λ", "G1", "pdf_visible")))
+    worst = 0.0
+    for label, spec, make in FAST:
+        ndf = make()
+        calls = [
+            ("d", lambda: ndf.d(u, fast=True)),
+            ("lambda", lambda: ndf.lambda_(u, fast=True)),
+            ("g1", lambda: ndf.g1(u, fast=True)),
+            ("pdf", lambda: ndf.pdf_visible(w, wm)),
+        ]
+        cells = []
+        for q, call in calls:
+            ours = median_ns(call, rounds=rounds, n=n)
+            _, par = _microsurface._rust_fast_ns(spec, q, n, 0.3, rounds)
+            worst = max(worst, ours / par)
+            cells.append(f"{ours:6.2f} {par:6.2f} {ours / par:5.2f}×")
+        print(f"{label:17} " + " ".join(f"{c:>20}" for c in cells))
+    print(f"worst ratio: {worst:.2f}× (target ≤ 1.3×)")
+
+
 if __name__ == "__main__":
     what = sys.argv[1] if len(sys.argv) > 1 else "all"
+    if what in ("all", "fast"):
+        fast_table()
     if what in ("all", "slices"):
         main()
     if what in ("all", "bsdf"):

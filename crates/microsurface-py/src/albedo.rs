@@ -2,11 +2,14 @@
 //! (the body of `NDF.albedo`), the single-scattering albedo by quadrature
 //! (`single_scattering_albedo`), and the tables of energy compensation (`AlbedoTable`).
 
-use crate::engine::{apply_vec, count, map_vec, named, Domain, Item};
+use crate::engine::{count, map_vec, named, Domain, Item};
 use crate::ndf::NDF;
+use microsurface::scattering::table::{Grid, Material as TableMaterial, Method, Spec};
 use microsurface::scattering::{
     self, AlbedoTable as Table, DielectricFacets, Heights, MirrorFacets, RandomWalk,
 };
+use microsurface::{MicrofacetDistribution, NdfKind};
+use numpy::PyArray1;
 use pyo3::exceptions::PyValueError;
 use pyo3::prelude::*;
 use pyo3::types::PyFloat;
@@ -18,7 +21,7 @@ fn wo_of(mu: f64, phi: f64) -> [f64; 3] {
 }
 
 /// `NDF.albedo` (its docstring there): the random walk's albedo by order of `ndf`'s
-/// material, or of the same NDF at each α of `alpha`.
+/// material at each element.
 #[allow(clippy::too_many_arguments)]
 pub fn walk(
     ndf: &NDF,
@@ -28,12 +31,20 @@ pub fn walk(
     walks: i64,
     seed: i128,
     eta: Option<f64>,
-    alpha: Option<&Bound<'_, PyAny>>,
+    orders: i64,
+    progress: bool,
 ) -> PyResult<PyObject> {
-    if alpha.is_none() {
+    if !ndf.batched() {
         ndf.material()?;
     }
     let walks = count(walks, "walks", 1)? as u64;
+    // (At most 1000 bins: an order of thousands is reached only at α ≳ 300.)
+    let k = count(orders, "orders", 1)?;
+    if k > 1000 {
+        return Err(PyValueError::new_err(format!(
+            "orders must be at most 1000 (got {orders})"
+        )));
+    }
     let seed = u64::try_from(seed)
         .map_err(|_| PyValueError::new_err(format!("seed must be in [0, 2**64) (got {seed})")))?;
     if let Some(eta) = eta {
@@ -43,82 +54,145 @@ pub fn walk(
             )));
         }
     }
-    let zero = PyFloat::new(py, 0.0).into_any();
-    let check = |a: f64| ndf.check_alpha(a);
-    let items = items(mu, phi.unwrap_or(&zero), alpha, &check);
-    let o = apply_vec(py, &items, &[4, 4, 4, 4, 0, 0], 2, |i, a, o| {
-        let surface = RandomWalk::new(ndf.material_at(a.get(2).map(|a| a[0]))?, Heights::Uniform);
-        let wo = wo_of(a[0][0], a[1][0]);
-        // (One stream per element, whatever thread runs it.)
-        let seed = seed.wrapping_add((i as u64).wrapping_mul(0x9E37_79B9_7F4A_7C15));
-        let r = match eta {
-            None => scattering::albedo(
-                &surface,
-                &MirrorFacets(microsurface::bsdf::fresnel::One::<1>),
-                wo,
-                walks,
-                seed,
-            ),
-            Some(eta) => scattering::albedo(&surface, &DielectricFacets(eta), wo, walks, seed),
-        };
-        o[0..4].copy_from_slice(&r.reflect.orders);
-        o[4..8].copy_from_slice(&r.reflect.stderr);
-        o[8..12].copy_from_slice(&r.transmit.orders);
-        o[12..16].copy_from_slice(&r.transmit.stderr);
-        o[16] = r.total.mean;
-        o[17] = r.total.stderr;
-        Ok(())
+    let zero = zero_like(py, mu)?;
+    let items = items(mu, phi.unwrap_or(&zero));
+    let o = crate::engine::with_progress(py, progress, || {
+        ndf.each(py, &items, &[k, k, k, k, 0, 0], 2, |d, i, a, o| {
+            let surface = RandomWalk::new(d.clone(), Heights::Uniform);
+            let wo = wo_of(a[0][0], a[1][0]);
+            // (One stream per element, whatever thread runs it.)
+            let seed = seed.wrapping_add((i as u64).wrapping_mul(0x9E37_79B9_7F4A_7C15));
+            let r = match eta {
+                None => scattering::albedo_orders(
+                    &surface,
+                    &MirrorFacets(microsurface::bsdf::fresnel::One::<1>),
+                    wo,
+                    walks,
+                    seed,
+                    k,
+                ),
+                Some(eta) => {
+                    scattering::albedo_orders(&surface, &DielectricFacets(eta), wo, walks, seed, k)
+                }
+            };
+            for (j, side) in [&r.reflect, &r.transmit].into_iter().enumerate() {
+                let at = 2 * j * k;
+                for (n, e) in side.iter().enumerate() {
+                    o[at + n] = e.mean;
+                    o[at + k + n] = e.stderr;
+                }
+            }
+            o[4 * k] = r.total.mean;
+            o[4 * k + 1] = r.total.stderr;
+        })
     })?;
     named(py, "Albedo", o)
 }
 
-/// The arguments of the albedos: mu (a cosine), phi (finite), and alpha where given (a
-/// parameter array, checked by `check`).
-fn items<'a, 'py>(
-    mu: &'a Bound<'py, PyAny>,
-    phi: &'a Bound<'py, PyAny>,
-    alpha: Option<&'a Bound<'py, PyAny>>,
-    check: &'a (dyn Fn(f64) -> Result<(), microsurface::ParamError> + Sync),
-) -> Vec<Item<'a, 'py>> {
-    let mut items = vec![
+/// The arguments of the albedos: mu (a cosine) and phi (finite).
+fn items<'a, 'py>(mu: &'a Bound<'py, PyAny>, phi: &'a Bound<'py, PyAny>) -> Vec<Item<'a, 'py>> {
+    vec![
         (mu, 0, "mu", Domain::Cosine),
         (phi, 0, "phi", Domain::Finite),
-    ];
-    if let Some(alpha) = alpha {
-        items.push((alpha, 0, "alpha", Domain::Param(check)));
-    }
-    items
+    ]
 }
 
-/// The single-scattering albedo E₁(wo) of the F = 1 conductor (height-correlated G2) by
-/// adaptive quadrature (≤ 1e-9 relative requested, 1e-6 guaranteed): at cos θo = ``mu``
-/// and azimuth ``phi``, broadcast. Each element is a quadrature (milliseconds; the family's
-/// singular members longer): parallel, Ctrl-C between chunks. ``alpha``: an array of
-/// roughnesses broadcast with mu and phi (αy scaled with α). The integrand runs the NDF's
-/// path (the fast kernels, or the exact path with ``exact=True``).
+/// A zero azimuth of `mu`'s precision (float32 for float32 mu: the output's dtype follows
+/// the arguments, and a default argument must not change it).
+fn zero_like<'py>(py: Python<'py>, mu: &Bound<'py, PyAny>) -> PyResult<Bound<'py, PyAny>> {
+    let np = crate::engine::numpy(py)?;
+    let float32 = np.getattr("float32")?;
+    if np
+        .call_method1("asarray", (mu,))?
+        .getattr("dtype")?
+        .eq(&float32)?
+    {
+        return float32.call1((0.0,));
+    }
+    Ok(PyFloat::new(py, 0.0).into_any())
+}
+
+/// The single-scattering albedo of the NDF's material by quadrature, at cos θo = ``mu`` and
+/// azimuth ``phi``, broadcast together and with the NDF's parameter arrays (tables over
+/// (α, μ) in one call). Each element is a quadrature (milliseconds; the family's singular
+/// members longer): parallel, Ctrl-C between chunks. The integrand runs the NDF's path (the
+/// fast kernels, or the exact path with ``exact=True``).
+///
+/// Without ``eta``: E₁(wo) of the F = 1 conductor with the height-correlated G2 (≤ 1e-9
+/// relative requested, 1e-6 guaranteed; the random walk's order 1). With ``eta`` (the
+/// relative index η_inside/η_outside, a number or an array broadcast with mu; η > 0, ≠ 1):
+/// the rough dielectric's ``DielectricAlbedo(reflect, transmit)`` from the side of mu's sign
+/// (μ < 0: from inside), with Fresnel at each microfacet (within 1.7e-5 by the library's
+/// level-4 tanh-sinh rule over the microfacet normal). ``masking`` chooses the transmission's
+/// masking-shadowing: ``'pbrt'`` (the default; 1/(1 + Λo + Λi), pbrt-v4's and
+/// ``Dielectric``'s default, ``masking='correlated'`` there) or ``'exact'`` (the exact
+/// height-correlated B(1 + Λo, 1 + Λi) of a transmission, ``masking='correlated_beta'``:
+/// the random walk's order 1). The two differ most at grazing angles on rough surfaces
+/// (GGX α = 1, μ = 0.05: transmission 0.728 by pbrt's form, 0.050 by the exact one).
+/// ``progress=True``: a tqdm bar over the elements where tqdm is installed (silent
+/// otherwise). The generalised exponential's quadratures take seconds an element.
 #[pyfunction]
-#[pyo3(signature = (ndf, mu, phi = None, alpha = None))]
+#[pyo3(signature = (ndf, mu, phi = None, eta = None, masking = "pbrt", progress = false))]
 fn single_scattering_albedo(
     py: Python<'_>,
     ndf: PyRef<'_, NDF>,
     mu: &Bound<'_, PyAny>,
     phi: Option<&Bound<'_, PyAny>>,
-    alpha: Option<&Bound<'_, PyAny>>,
+    eta: Option<&Bound<'_, PyAny>>,
+    masking: &str,
+    progress: bool,
 ) -> PyResult<PyObject> {
-    if alpha.is_none() {
+    if !ndf.batched() {
         ndf.material()?;
     }
-    // (A copy: the loop runs without the GIL.)
-    let ndf: NDF = (*ndf).clone();
-    let zero = pyo3::types::PyFloat::new(py, 0.0).into_any();
-    let check = |a: f64| ndf.check_alpha(a);
-    let items = items(mu, phi.unwrap_or(&zero), alpha, &check);
-    let mut o = apply_vec(py, &items, &[0], 2, |_, a, o| {
-        let d = ndf.material_at(a.get(2).map(|a| a[0]))?;
-        o[0] = microsurface::scattering::single_scattering_albedo(&d, wo_of(a[0][0], a[1][0]));
-        Ok(())
+    let masking = match masking {
+        "pbrt" => microsurface::bsdf::Masking::Correlated,
+        "exact" => microsurface::bsdf::Masking::CorrelatedBeta,
+        _ => {
+            return Err(PyValueError::new_err(format!(
+                "masking must be 'pbrt' or 'exact' (got {masking:?})"
+            )))
+        }
+    };
+    let zero = zero_like(py, mu)?;
+    let mut items = items(mu, phi.unwrap_or(&zero));
+    let Some(eta) = eta else {
+        let mut o = crate::engine::with_progress(py, progress, || {
+            ndf.each(py, &items, &[0], 2, |d, _, a, o| {
+                o[0] = scattering::single_scattering_albedo(d, wo_of(a[0][0], a[1][0]));
+            })
+        })?;
+        return Ok(o.remove(0));
+    };
+    // η: positive, finite, not 1 (every element), as the Dielectric's.
+    let np = crate::engine::numpy(py)?;
+    let e = np.call_method1("asarray", (eta, "float64"))?;
+    let ok = |x: f64| x > 0.0 && x.is_finite() && x != 1.0;
+    let values: Vec<f64> = np
+        .call_method1("ravel", (&e,))?
+        .call_method0("tolist")?
+        .extract()?;
+    if let Some(bad) = values.iter().find(|&&x| !ok(x)) {
+        return Err(PyValueError::new_err(format!(
+            "eta must be a positive finite number other than 1 (got {bad})"
+        )));
+    }
+    items.push((eta, 0, "eta", Domain::Finite));
+    let o = crate::engine::with_progress(py, progress, || {
+        ndf.each(py, &items, &[0, 0], 2, |d, _, a, o| {
+            let (mu, phi, eta) = (a[0][0], a[1][0], a[2][0]);
+            let (r, t) = scattering::single_scattering_albedo_dielectric_level(
+                d,
+                wo_of(mu, phi),
+                eta,
+                masking,
+                4,
+            );
+            o[0] = r;
+            o[1] = t;
+        })
     })?;
-    Ok(o.remove(0))
+    named(py, "DielectricAlbedo", o)
 }
 
 /// AlbedoTable(ndf): the directional albedo E(μ) of the single-scattering conductor with
@@ -131,6 +205,21 @@ fn single_scattering_albedo(
 #[pyclass(frozen, module = "microsurface")]
 pub struct AlbedoTable {
     table: std::sync::Arc<Table>,
+    /// The material it is of (NDF, shape, α), where known: what the command line's format
+    /// records.
+    source: Option<(NdfKind, Option<f64>, f64)>,
+}
+
+/// The NDF spec of a table of the command line's binary form (`microsurface table`).
+fn grid_of(kind: NdfKind, shape: Option<f64>, alpha: Vec<f64>, mu: Vec<f64>) -> Spec {
+    Spec {
+        ndf: kind,
+        gamma: shape,
+        material: TableMaterial::Furnace,
+        method: Method::Quadrature,
+        alpha,
+        mu,
+    }
 }
 
 #[pymethods]
@@ -138,8 +227,129 @@ impl AlbedoTable {
     #[new]
     fn new(py: Python<'_>, ndf: PyRef<'_, NDF>) -> PyResult<Self> {
         let d = ndf.material()?.clone();
+        let source = d.ndf().map(|(kind, shape)| (kind, shape, d.alpha().0));
+        let source = source.filter(|_| d.alpha().0 == d.alpha().1);
         let table = crate::engine::interruptible(py, move || Table::new(&d))?;
-        Ok(AlbedoTable { table })
+        Ok(AlbedoTable { table, source })
+    }
+
+    /// The nodes' μ (uniform in √μ; the grazing node at μ = 1e-6), float64.
+    #[getter]
+    fn mu<'py>(&self, py: Python<'py>) -> Bound<'py, PyArray1<f64>> {
+        PyArray1::from_vec(py, self.table.mu())
+    }
+
+    /// E at the nodes, float64: the interpolant passes through them at √μ = k/(n − 1) (the
+    /// grazing node's value, E(1e-6), stands at √μ = 0).
+    #[getter]
+    fn values<'py>(&self, py: Python<'py>) -> Bound<'py, PyArray1<f64>> {
+        PyArray1::from_slice(py, self.table.values())
+    }
+
+    /// Writes the table: ``.npy``, an (n, 2) float64 array of (μ, E) at the nodes (exact);
+    /// ``.mfa``, the command line's binary form (``microsurface table --method quadrature``:
+    /// its header names the NDF, α and the nodes; values in float32, as that format keeps
+    /// them), for a table made from one isotropic NDF.
+    fn save(&self, py: Python<'_>, path: std::path::PathBuf) -> PyResult<()> {
+        let ext = path.extension().and_then(|e| e.to_str()).unwrap_or("");
+        match ext {
+            "npy" => {
+                let np = crate::engine::numpy(py)?;
+                let a = np.call_method1("stack", ((self.mu(py), self.values(py)),))?;
+                let a = a.call_method0("transpose")?;
+                np.call_method1("save", (path, a))?;
+                Ok(())
+            }
+            "mfa" => {
+                let Some((kind, shape, alpha)) = self.source else {
+                    return Err(PyValueError::new_err(
+                        "a .mfa table names its NDF and α: this table was not made from one isotropic NDF (save it as .npy)",
+                    ));
+                };
+                let grid = Grid {
+                    spec: grid_of(kind, shape, vec![alpha], self.table.mu()),
+                    quantities: vec!["e1".to_string()],
+                    values: self.table.values().iter().map(|&v| v as f32).collect(),
+                };
+                std::fs::write(&path, grid.to_bytes())
+                    .map_err(|e| pyo3::exceptions::PyOSError::new_err(e.to_string()))
+            }
+            _ => Err(PyValueError::new_err(
+                "path must end in .npy or .mfa (the command line's binary form)",
+            )),
+        }
+    }
+
+    /// Reads a table ``save`` wrote (``.npy``), or a table of the command line's binary form
+    /// (``.mfa``: quantity ``e1``, at α node ``alpha_index``, its μ nodes those of a table
+    /// uniform in √μ, as ``microsurface table --method quadrature --mu 0:1:N:sqrt`` writes).
+    #[staticmethod]
+    #[pyo3(signature = (path, alpha_index = 0))]
+    fn load(py: Python<'_>, path: std::path::PathBuf, alpha_index: usize) -> PyResult<Self> {
+        let bad = |m: String| PyValueError::new_err(format!("{}: {m}", path.display()));
+        let ext = path.extension().and_then(|e| e.to_str()).unwrap_or("");
+        let (mu, values, source) = match ext {
+            "npy" => {
+                let a = crate::engine::numpy(py)?.call_method1("load", (&path,))?;
+                let shape: Vec<usize> = a.getattr("shape")?.extract()?;
+                if shape.len() != 2 || shape[1] != 2 {
+                    return Err(bad(format!(
+                        "an (n, 2) array of (mu, E) expected, got shape {shape:?}"
+                    )));
+                }
+                let rows: Vec<[f64; 2]> = a.call_method0("tolist")?.extract()?;
+                (
+                    rows.iter().map(|r| r[0]).collect::<Vec<_>>(),
+                    rows.iter().map(|r| r[1]).collect::<Vec<_>>(),
+                    None,
+                )
+            }
+            "mfa" => {
+                let bytes = std::fs::read(&path)
+                    .map_err(|e| pyo3::exceptions::PyOSError::new_err(e.to_string()))?;
+                let g = Grid::from_bytes(&bytes).map_err(|e| bad(e.0))?;
+                let q = g.quantities.iter().position(|q| q == "e1").ok_or_else(|| {
+                    bad("no quantity e1 (the single-scattering albedo: --method quadrature)".into())
+                })?;
+                if alpha_index >= g.spec.alpha.len() {
+                    return Err(bad(format!(
+                        "alpha_index {alpha_index}: the table has {} alpha nodes",
+                        g.spec.alpha.len()
+                    )));
+                }
+                let values = (0..g.spec.mu.len())
+                    .map(|im| f64::from(g.value(alpha_index, im, q)))
+                    .collect();
+                let alpha = g.spec.alpha[alpha_index];
+                (
+                    g.spec.mu.clone(),
+                    values,
+                    Some((g.spec.ndf, g.spec.gamma, alpha)),
+                )
+            }
+            _ => {
+                return Err(PyValueError::new_err(
+                    "path must end in .npy or .mfa (the command line's binary form)",
+                ))
+            }
+        };
+        let table = Table::from_values(values)
+            .ok_or_else(|| bad("at least 4 finite values expected".into()))?;
+        let nodes = table.mu();
+        // (The grazing node: 0 as `microsurface table --mu 0:1:N:sqrt` writes it, or the
+        // library's 1e-6, where it takes the albedo's limit.)
+        let off =
+            |(k, (a, b)): (usize, (&f64, &f64))| (a - b).abs() > 1e-12 && !(k == 0 && *a == 0.0);
+        if mu.len() != nodes.len() || mu.iter().zip(&nodes).enumerate().any(off) {
+            return Err(bad(format!(
+                "the mu nodes are not uniform in sqrt(mu) ({} nodes from 1e-6 to 1)",
+                nodes.len()
+            )));
+        }
+        Ok(AlbedoTable {
+            table: std::sync::Arc::new(table),
+            source,
+        })
     }
 
     /// E(μ), cubic in √μ between the nodes, vectorised over μ.
@@ -161,8 +371,164 @@ impl AlbedoTable {
     }
 }
 
-/// Adds `AlbedoTable` and `single_scattering_albedo` to the module.
+/// The `Table` named tuple of a grid: its nodes, quantity names and values (α, μ, quantity).
+fn table_tuple(py: Python<'_>, g: &Grid) -> PyResult<PyObject> {
+    let (na, nm, nq) = (g.spec.alpha.len(), g.spec.mu.len(), g.quantities.len());
+    let values = PyArray1::from_slice(py, &g.values)
+        .into_any()
+        .call_method1("reshape", ((na, nm, nq),))?;
+    named(
+        py,
+        "Table",
+        vec![
+            PyArray1::from_slice(py, &g.spec.alpha).into_any().unbind(),
+            PyArray1::from_slice(py, &g.spec.mu).into_any().unbind(),
+            pyo3::types::PyTuple::new(py, &g.quantities)?
+                .into_any()
+                .unbind(),
+            values.unbind(),
+        ],
+    )
+}
+
+/// table(ndf, alpha, mu, material='furnace', eta=None, k=None, rho=None, method='walk',
+/// walks=100000, seed=0, out=None, progress=False): the albedo table over (α, μ) of the
+/// command line's ``microsurface table`` (the same options, the same numbers: the library's
+/// ``scattering::table::Grid::generate``, deterministic for any thread count). ``ndf``: a
+/// class, a name (``"gtr:1.5"``) or an NDF (its kind and shape); ``alpha``, ``mu``: the nodes
+/// (α > 0; μ in (0, 1], and [−1, 0) for a dielectric: from inside); ``material``:
+/// ``'furnace'`` (F = 1), ``'conductor'`` (``eta``, ``k``), ``'dielectric'`` (``eta``) or
+/// ``'diffuse'`` (``rho``, default 1); ``method``: ``'walk'`` (``walks`` per cell from
+/// ``seed``: orders 1, 2, 3, ≥ 4 per side with standard errors) or ``'quadrature'`` (the
+/// single-scattering albedo ``e1`` of the furnace). ``out``: also write it in the command
+/// line's binary form (``.mfa``). ``progress=True``: a tqdm bar where tqdm is installed
+/// (silent otherwise). Runs on every core; Ctrl-C interrupts it. Returns ``Table(alpha, mu,
+/// quantities, values)``, values float32 of shape (len(alpha), len(mu), len(quantities)).
+#[pyfunction]
+#[pyo3(signature = (ndf, alpha, mu, material = "furnace", eta = None, k = None, rho = None, method = "walk", walks = 100_000, seed = 0, out = None, progress = false))]
+#[allow(clippy::too_many_arguments)]
+fn table(
+    py: Python<'_>,
+    ndf: &Bound<'_, PyAny>,
+    alpha: Vec<f64>,
+    mu: Vec<f64>,
+    material: &str,
+    eta: Option<f64>,
+    k: Option<f64>,
+    rho: Option<f64>,
+    method: &str,
+    walks: i64,
+    seed: i128,
+    out: Option<std::path::PathBuf>,
+    progress: bool,
+) -> PyResult<PyObject> {
+    let (kind, shape, _, _) = crate::ndf::kind_of(py, ndf)?;
+    let need = |x: Option<f64>, what: &str| {
+        x.ok_or_else(|| PyValueError::new_err(format!("material '{material}' needs {what}")))
+    };
+    let material = match material {
+        "furnace" => TableMaterial::Furnace,
+        "conductor" => TableMaterial::Conductor {
+            eta: need(eta, "eta and k")?,
+            k: need(k, "eta and k")?,
+        },
+        "dielectric" => TableMaterial::Dielectric {
+            eta: need(eta, "eta")?,
+        },
+        "diffuse" => TableMaterial::Diffuse {
+            rho: rho.unwrap_or(1.0),
+        },
+        _ => {
+            return Err(PyValueError::new_err(format!(
+            "material must be 'furnace', 'conductor', 'dielectric' or 'diffuse' (got {material:?})"
+        )))
+        }
+    };
+    let seed = u64::try_from(seed)
+        .map_err(|_| PyValueError::new_err(format!("seed must be in [0, 2**64) (got {seed})")))?;
+    let method = match method {
+        "walk" => Method::Walk {
+            walks: count(walks, "walks", 1)? as u64,
+            seed,
+        },
+        "quadrature" => Method::Quadrature,
+        _ => {
+            return Err(PyValueError::new_err(format!(
+                "method must be 'walk' or 'quadrature' (got {method:?})"
+            )))
+        }
+    };
+    let spec = Spec {
+        ndf: kind,
+        gamma: shape,
+        material,
+        method,
+        alpha,
+        mu,
+    };
+    spec.validate().map_err(|e| PyValueError::new_err(e.0))?;
+    let bar = if progress {
+        crate::engine::tqdm(py)?
+    } else {
+        None
+    };
+    let state = std::sync::Arc::new([
+        std::sync::atomic::AtomicU64::new(0),
+        std::sync::atomic::AtomicU64::new(0),
+    ]);
+    let shared = state.clone();
+    let work = move || {
+        Grid::generate(&spec, &|done, total| {
+            shared[0].store(done, std::sync::atomic::Ordering::Relaxed);
+            shared[1].store(total, std::sync::atomic::Ordering::Relaxed);
+        })
+    };
+    let mut shown = 0u64;
+    let bar_ref = bar.as_ref().map(|b| b.clone_ref(py));
+    let grid = crate::engine::interruptible_ticking(py, work, |py| {
+        if let Some(b) = &bar_ref {
+            let b = b.bind(py);
+            let (done, total) = (
+                state[0].load(std::sync::atomic::Ordering::Relaxed),
+                state[1].load(std::sync::atomic::Ordering::Relaxed),
+            );
+            b.setattr("total", total)?;
+            b.call_method1("update", (done.saturating_sub(shown),))?;
+            shown = shown.max(done);
+        }
+        Ok(())
+    })?
+    .map_err(|e| PyValueError::new_err(e.0))?;
+    if let Some(b) = &bar {
+        b.bind(py).call_method0("close")?;
+    }
+    if let Some(path) = out {
+        if path.extension().and_then(|e| e.to_str()) != Some("mfa") {
+            return Err(PyValueError::new_err(
+                "out must end in .mfa (the command line's binary form)",
+            ));
+        }
+        std::fs::write(&path, grid.to_bytes())
+            .map_err(|e| pyo3::exceptions::PyOSError::new_err(e.to_string()))?;
+    }
+    table_tuple(py, &grid)
+}
+
+/// read_table(path): a table of the command line's binary form (``.mfa``, as ``table`` and
+/// ``microsurface table`` write it) as ``Table(alpha, mu, quantities, values)``.
+#[pyfunction]
+fn read_table(py: Python<'_>, path: std::path::PathBuf) -> PyResult<PyObject> {
+    let bytes =
+        std::fs::read(&path).map_err(|e| pyo3::exceptions::PyOSError::new_err(e.to_string()))?;
+    let g = Grid::from_bytes(&bytes)
+        .map_err(|e| PyValueError::new_err(format!("{}: {}", path.display(), e.0)))?;
+    table_tuple(py, &g)
+}
+
+/// Adds `AlbedoTable`, `single_scattering_albedo`, `table` and `read_table` to the module.
 pub fn register(m: &Bound<'_, PyModule>) -> PyResult<()> {
+    m.add_function(wrap_pyfunction!(table, m)?)?;
+    m.add_function(wrap_pyfunction!(read_table, m)?)?;
     m.add_class::<AlbedoTable>()?;
     m.add_function(wrap_pyfunction!(single_scattering_albedo, m)?)?;
     Ok(())

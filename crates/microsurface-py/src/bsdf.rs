@@ -3,15 +3,17 @@
 //! their scattering model (single scattering, Kulla–Conty or Turquin energy compensation,
 //! the random walk).
 
-use crate::engine::{apply_vec, map_vec, named, v3, Domain};
+use crate::engine::{apply_vec, named, v3, Domain, Item};
 use crate::material::Material;
 use crate::ndf::NDF;
+use crate::params::{self, Param};
 use microsurface::bsdf::fresnel::{self, Fresnel};
 use microsurface::bsdf::{self, Bsdf, Lobe, Masking, Transport};
 use microsurface::scattering::{
     CompensatedConductor, CompensatedDielectric, DielectricFacets, Facets, MirrorFacets,
     MultipleScattering, Scheme,
 };
+use microsurface::ParamError;
 use pyo3::exceptions::PyValueError;
 use pyo3::prelude::*;
 use pyo3::types::PyTuple;
@@ -31,7 +33,12 @@ impl<const M: usize> Channels for [f64; M] {
 
 /// A BSDF of any model, its value written as channels.
 trait AnyBsdf: Send + Sync {
-    fn channels(&self) -> usize;
+    /// The walk model's f as the mean of `samples` stochastic evaluations from the stream
+    /// `seed` (`MultipleScattering::eval_orders`); the deterministic models' own f.
+    fn eval_mean(&self, wo: [f64; 3], wi: [f64; 3], samples: u64, seed: u64, out: &mut [f64]) {
+        let _ = (samples, seed);
+        self.eval(wo, wi, out)
+    }
     fn eval(&self, wo: [f64; 3], wi: [f64; 3], out: &mut [f64]);
     fn pdf(&self, wo: [f64; 3], wi: [f64; 3]) -> f64;
     /// wi (3), f (channels), pdf, lobe (0 rejected, 1 reflection, 2 transmission),
@@ -43,9 +50,6 @@ impl<B: Bsdf<f64> + Send + Sync> AnyBsdf for B
 where
     B::Value: Channels,
 {
-    fn channels(&self) -> usize {
-        B::Value::N
-    }
     fn eval(&self, wo: [f64; 3], wi: [f64; 3], out: &mut [f64]) {
         Bsdf::eval(self, wo, wi).write(out);
     }
@@ -69,6 +73,32 @@ where
             // (Zeros: no direction, f = pdf = 0, lobe 0.)
             None => out.fill(0.0),
         }
+    }
+}
+
+/// The walk's BSDF, with its averaged evaluation.
+struct Walk<D, Fa, const N: usize>(MultipleScattering<D, Fa, N>);
+
+impl<D, Fa, const N: usize> AnyBsdf for Walk<D, Fa, N>
+where
+    D: microsurface::MicrofacetDistribution<f64> + Send + Sync,
+    Fa: Facets<N> + Send + Sync,
+    MultipleScattering<D, Fa, N>: Bsdf<f64, Value = [f64; N]>,
+{
+    fn eval_mean(&self, wo: [f64; 3], wi: [f64; 3], samples: u64, seed: u64, out: &mut [f64]) {
+        let e = self.0.eval_orders(wo, wi, samples, seed);
+        for (o, e) in out.iter_mut().zip(&e) {
+            *o = e.total;
+        }
+    }
+    fn eval(&self, wo: [f64; 3], wi: [f64; 3], out: &mut [f64]) {
+        AnyBsdf::eval(&self.0, wo, wi, out)
+    }
+    fn pdf(&self, wo: [f64; 3], wi: [f64; 3]) -> f64 {
+        AnyBsdf::pdf(&self.0, wo, wi)
+    }
+    fn sample(&self, wo: [f64; 3], uc: f64, u: [f64; 2], out: &mut [f64]) {
+        AnyBsdf::sample(&self.0, wo, uc, u, out)
     }
 }
 
@@ -121,14 +151,67 @@ fn model(s: &str, m: Masking) -> PyResult<Model> {
     Ok(model)
 }
 
-/// A number or a sequence of numbers per channel.
-fn channels(x: Option<&Bound<'_, PyAny>>) -> PyResult<Option<Vec<f64>>> {
-    match x {
-        None => Ok(None),
-        Some(x) => match x.extract::<f64>() {
-            Ok(v) => Ok(Some(vec![v])),
-            Err(_) => Ok(Some(x.extract::<Vec<f64>>()?)),
-        },
+/// What a BSDF is built from, beside its NDF's material: the model and its settings, and
+/// the Fresnel parameters of one element (η and k per channel; a dielectric's one η).
+#[derive(Clone)]
+struct Recipe {
+    dielectric: bool,
+    channels: usize,
+    masking: Masking,
+    transport: Transport,
+    model: Model,
+}
+
+impl Recipe {
+    /// The BSDF of material `d` with `eta` (and `k`; empty: F = 1 for a conductor).
+    fn build(&self, d: Material, eta: &[f64], k: &[f64]) -> Box<dyn AnyBsdf> {
+        let (m, t) = (self.masking, self.transport);
+        if self.dielectric {
+            let eta = eta[0];
+            return match self.model {
+                // (One channel: a dielectric's f is grey.)
+                Model::Single => Box::new(
+                    bsdf::RoughDielectric::new(d, eta)
+                        .with_channels::<1>()
+                        .with_masking(m)
+                        .with_transport(t),
+                ),
+                Model::Compensated(s) => Box::new(
+                    CompensatedDielectric::new(d, eta, s)
+                        .with_channels::<1>()
+                        .with_transport(t),
+                ),
+                Model::Walk => Box::new(Walk(
+                    MultipleScattering::<_, _, 1>::new(d, DielectricFacets(eta)).with_transport(t),
+                )),
+            };
+        }
+        let model = self.model;
+        match (eta.len(), k.len()) {
+            (0, _) => conductor_of::<1, _>(d, fresnel::One::<1>, m, model),
+            (1, _) => conductor_of::<1, _>(
+                d,
+                fresnel::Conductor {
+                    eta: [eta[0]],
+                    k: [k.first().copied().unwrap_or(0.0)],
+                },
+                m,
+                model,
+            ),
+            _ => conductor_of::<3, _>(
+                d,
+                fresnel::Conductor {
+                    eta: [eta[0], eta[1], eta[2]],
+                    k: if k.is_empty() {
+                        [0.0; 3]
+                    } else {
+                        [k[0], k[1], k[2]]
+                    },
+                },
+                m,
+                model,
+            ),
+        }
     }
 }
 
@@ -145,14 +228,91 @@ where
     match model {
         Model::Single => Box::new(bsdf::RoughConductor::new(d, fr).with_masking(m)),
         Model::Compensated(s) => Box::new(CompensatedConductor::new(d, fr, s)),
-        Model::Walk => Box::new(MultipleScattering::new(d, MirrorFacets(fr))),
+        Model::Walk => Box::new(Walk(MultipleScattering::new(d, MirrorFacets(fr)))),
     }
+}
+
+/// A Fresnel parameter (η, k): a number, a sequence per channel (its last axis: the
+/// conductor's channels), or an array of them per element (the leading axes: the batch).
+struct Channel {
+    param: Param,
+    /// The numbers of one element's channels, where it is one element.
+    one: Option<Vec<f64>>,
+}
+
+impl Channel {
+    /// `x` as a conductor's per-channel parameter (`channel`: the last axis is the
+    /// channels) or a dielectric's number (`!channel`); each value through `ok`.
+    fn new(
+        py: Python<'_>,
+        x: &Bound<'_, PyAny>,
+        name: &str,
+        channel: bool,
+        ok: fn(f64) -> bool,
+        want: &str,
+    ) -> PyResult<Self> {
+        let param = Param::new(py, x, name)?;
+        let np = crate::engine::numpy(py)?;
+        let values: Vec<f64> = np
+            .call_method1("ravel", (param.object(py)?,))?
+            .call_method0("tolist")?
+            .extract()?;
+        if values.is_empty() || !values.iter().all(|&v| ok(v)) {
+            return Err(PyValueError::new_err(format!(
+                "{name} must be {want} (got {})",
+                param.repr(py)?
+            )));
+        }
+        let shape = param.shape(py)?;
+        let one = match (&param, channel) {
+            (Param::Num(x), _) => Some(vec![*x]),
+            (Param::Arr(_), true) if shape.len() == 1 => Some(values),
+            _ => None,
+        };
+        Ok(Channel { param, one })
+    }
+
+    /// The number of channels (the last axis of a conductor's parameter; 1 for a number).
+    fn channels(&self, py: Python<'_>) -> PyResult<usize> {
+        Ok(self.param.shape(py)?.last().copied().unwrap_or(1))
+    }
+}
+
+/// Per-element BSDFs of one object, each built once for a run of elements with the same
+/// parameters: the key is the object's id and the element's parameters' bits.
+type BsdfKey = Vec<u64>;
+
+thread_local! {
+    static BSDFS: std::cell::RefCell<Option<(BsdfKey, Box<dyn AnyBsdf>)>> =
+        const { std::cell::RefCell::new(None) };
+}
+
+/// A BSDF object's ids (each one's own key prefix in [`BSDFS`]).
+static NEXT_ID: std::sync::atomic::AtomicU64 = std::sync::atomic::AtomicU64::new(0);
+
+/// A BSDF whose parameters are arrays: its parts, each element's BSDF built in the loop.
+struct Batch {
+    id: u64,
+    ndf: NDF,
+    eta: Option<Channel>,
+    k: Option<Channel>,
+    recipe: Recipe,
+}
+
+/// The BSDF of one object: one, or one per element.
+enum Inner {
+    One(Box<dyn AnyBsdf>),
+    Batch(Box<Batch>),
 }
 
 /// The methods of both BSDF classes.
 #[pyclass(name = "BSDF", subclass, frozen, module = "microsurface")]
 pub struct PyBsdf {
-    inner: Box<dyn AnyBsdf>,
+    inner: Inner,
+    /// f's channels.
+    channels: usize,
+    /// Whether the model is the random walk (stochastic eval).
+    walk: bool,
     /// The constructor's arguments, normalised (channels as tuples of floats): what
     /// `__reduce__` passes back, `__repr__` writes and `==` compares.
     args: Py<PyTuple>,
@@ -161,18 +321,141 @@ pub struct PyBsdf {
 }
 
 impl PyBsdf {
+    /// The BSDF of `ndf` with the Fresnel parameters `eta` and `k` (None: absent) by
+    /// `recipe`: one, where every parameter is a number (or a conductor's sequence of
+    /// channels), else one per element.
     fn new(
         py: Python<'_>,
-        inner: Box<dyn AnyBsdf>,
+        ndf: &Bound<'_, NDF>,
+        eta: Option<Channel>,
+        k: Option<Channel>,
+        recipe: Recipe,
         args: Vec<PyObject>,
         names: &'static [&'static str],
     ) -> PyResult<Self> {
+        let channels = recipe.channels;
+        let walk = recipe.model == Model::Walk;
+        let n = ndf.get();
+        let one = |c: &Option<Channel>| c.as_ref().map_or(Some(Vec::new()), |c| c.one.clone());
+        let inner = match (n.batched(), one(&eta), one(&k)) {
+            (false, Some(e), Some(kk)) => Inner::One(recipe.build(n.material()?.clone(), &e, &kk)),
+            _ => {
+                // (The shapes: the NDF's parameters, η's and k's batch axes broadcast.)
+                let np = crate::engine::numpy(py)?;
+                let mut shapes = vec![PyTuple::new(py, n.param_shape_vec())?];
+                for c in [&eta, &k].into_iter().flatten() {
+                    let mut s = c.param.shape(py)?;
+                    if !recipe.dielectric {
+                        s.pop();
+                    }
+                    shapes.push(PyTuple::new(py, s)?);
+                }
+                np.call_method1("broadcast_shapes", PyTuple::new(py, shapes)?)
+                    .map_err(|_| {
+                        PyValueError::new_err(
+                            "the parameters' shapes (the NDF's, eta's and k's, less their channel axis) do not broadcast together",
+                        )
+                    })?;
+                Inner::Batch(Box::new(Batch {
+                    id: NEXT_ID.fetch_add(1, std::sync::atomic::Ordering::Relaxed),
+                    ndf: n.clone(),
+                    eta,
+                    k,
+                    recipe,
+                }))
+            }
+        };
         Ok(PyBsdf {
             inner,
+            channels,
+            walk,
             args: PyTuple::new(py, args)?.unbind(),
             names,
         })
     }
+
+    /// `f(bsdf, a, out)` for every element of the arguments `items` (a: their numbers),
+    /// broadcast with the parameter arrays, with the element's BSDF.
+    fn each<'py>(
+        &self,
+        py: Python<'py>,
+        items: &[Item<'_, 'py>],
+        outs: &[usize],
+        f: impl Fn(&dyn AnyBsdf, &[&[f64]], &mut [f64]) + Sync,
+    ) -> PyResult<Vec<PyObject>> {
+        self.each_indexed(py, items, outs, |b, _, a, o| f(b, a, o))
+    }
+
+    /// [`PyBsdf::each`] with the element's index: `f(bsdf, i, a, out)`.
+    fn each_indexed<'py>(
+        &self,
+        py: Python<'py>,
+        items: &[Item<'_, 'py>],
+        outs: &[usize],
+        f: impl Fn(&dyn AnyBsdf, usize, &[&[f64]], &mut [f64]) + Sync,
+    ) -> PyResult<Vec<PyObject>> {
+        let b = match &self.inner {
+            Inner::One(b) => {
+                return apply_vec(py, items, outs, 256, |i, a, o| {
+                    f(b.as_ref(), i, a, o);
+                    Ok(())
+                })
+            }
+            Inner::Batch(b) => b,
+        };
+        let mut arrays = b.ndf.arrays(py);
+        let nd = arrays.len();
+        let mut all = items.to_vec();
+        let mut cores = Vec::new();
+        for (c, name) in [(&b.eta, "eta"), (&b.k, "k")] {
+            if let Some(c) = c {
+                arrays.push((c.param.object(py)?, name));
+                cores.push(if b.recipe.dielectric || c.param.num().is_some() {
+                    0
+                } else {
+                    c.channels(py)?
+                });
+            }
+        }
+        let k0 = items.len();
+        for (j, (a, name)) in arrays.iter().enumerate() {
+            let core = if j < nd { 0 } else { cores[j - nd] };
+            all.push((a, core, *name, crate::engine::FIXED));
+        }
+        let has_eta = b.eta.is_some();
+        apply_vec(py, &all, outs, 256, |i, a, o| {
+            let v: Vec<f64> = a[k0..k0 + nd].iter().map(|s| s[0]).collect();
+            let p = b.ndf.p_of(&v);
+            let rest = &a[k0 + nd..];
+            let (eta, k): (&[f64], &[f64]) = match (has_eta, rest.len()) {
+                (true, 2) => (rest[0], rest[1]),
+                (true, 1) => (rest[0], &[]),
+                _ => (&[], &[]),
+            };
+            let mut key = vec![b.id, p.alpha.to_bits(), p.alpha_y.to_bits()];
+            key.extend(p.shape.map(f64::to_bits));
+            key.extend(eta.iter().chain(k).map(|x| x.to_bits()));
+            let recent = params::Recent::new(&BSDFS);
+            b.ndf.with_material(p, |m| {
+                recent.with(
+                    key,
+                    || Ok::<_, ParamError>(b.recipe.build(m.clone(), eta, k)),
+                    |bsdf| f(bsdf.as_ref(), i, &a[..k0], o),
+                )
+            })?
+        })
+    }
+}
+
+/// `repr` of a constructor argument, evaluable back: an array as ``numpy.array([...])``.
+fn arg_repr(py: Python<'_>, a: &Bound<'_, PyAny>) -> PyResult<String> {
+    if a.is_instance(&crate::engine::numpy(py)?.getattr("ndarray")?)? {
+        return Ok(format!(
+            "numpy.array({})",
+            a.call_method0("tolist")?.repr()?
+        ));
+    }
+    Ok(a.repr()?.to_string())
 }
 
 #[pymethods]
@@ -187,7 +470,7 @@ impl PyBsdf {
             if i > 0 {
                 s += &format!(", {name}=");
             }
-            s += &a.repr()?.to_string();
+            s += &arg_repr(py, &a)?;
         }
         Ok(s + ")")
     }
@@ -216,42 +499,78 @@ impl PyBsdf {
             return Ok(false);
         };
         let py = slf.py();
-        Ok(slf.get_type().is(o.get_type()) && slf.get().args.bind(py).eq(o.get().args.bind(py))?)
+        if !slf.get_type().is(o.get_type()) {
+            return Ok(false);
+        }
+        let np = crate::engine::numpy(py)?;
+        let ndarray = np.getattr("ndarray")?;
+        for (a, b) in slf
+            .get()
+            .args
+            .bind(py)
+            .iter()
+            .zip(o.get().args.bind(py).iter())
+        {
+            let same = if a.is_instance(&ndarray)? || b.is_instance(&ndarray)? {
+                np.call_method1("array_equal", (&a, &b))?.is_truthy()?
+                    && a.is_instance(&ndarray)? == b.is_instance(&ndarray)?
+            } else {
+                a.eq(&b)?
+            };
+            if !same {
+                return Ok(false);
+            }
+        }
+        Ok(true)
     }
 
-    /// By the arguments ``==`` compares.
+    /// By the arguments ``==`` compares (their ``repr``).
     fn __hash__(slf: &Bound<'_, Self>) -> PyResult<isize> {
-        slf.get().args.bind(slf.py()).hash()
+        Self::__repr__(slf)?.into_pyobject(slf.py())?.hash()
     }
 
     /// The number of channels of f (1 for a dielectric and a one-channel conductor).
     #[getter]
     fn channels(&self) -> usize {
-        self.inner.channels()
+        self.channels
     }
 
     /// f(wo, wi) without the cosine, for directions of shape (..., 3) broadcast together:
     /// shape (...) for one channel, (..., channels) otherwise. The walk model returns one
-    /// stochastic estimate (unbiased; seeded by the directions).
+    /// stochastic estimate (unbiased; seeded by the directions), or with ``samples`` (≥ 1)
+    /// and ``seed`` the mean of ``samples`` estimates from the stream ``seed`` and the
+    /// element's index (the command line's ``samples``; the same numbers whatever the
+    /// threads). ``samples`` and ``seed`` are the walk model's (ValueError for the others).
+    #[pyo3(signature = (wo, wi, samples = None, seed = None))]
     fn eval(
         &self,
         py: Python<'_>,
         wo: &Bound<'_, PyAny>,
         wi: &Bound<'_, PyAny>,
+        samples: Option<i64>,
+        seed: Option<i128>,
     ) -> PyResult<PyObject> {
-        let c = self.inner.channels();
-        let b = &self.inner;
+        let c = self.channels;
         let outs = [if c == 1 { 0 } else { c }];
-        let mut o = apply_vec(
-            py,
-            &[(wo, 3, "wo", Domain::Any), (wi, 3, "wi", Domain::Any)],
-            &outs,
-            256,
-            |_, a, o| {
-                b.eval(v3(a[0]), v3(a[1]), o);
-                Ok(())
-            },
-        )?;
+        let items = [(wo, 3, "wo", Domain::Any), (wi, 3, "wi", Domain::Any)];
+        if samples.is_none() && seed.is_none() {
+            let mut o = self.each(py, &items, &outs, |b, a, o| b.eval(v3(a[0]), v3(a[1]), o))?;
+            return Ok(o.remove(0));
+        }
+        if !self.walk {
+            return Err(PyValueError::new_err(
+                "samples and seed are the walk model's (scattering='walk'): this BSDF's eval is deterministic",
+            ));
+        }
+        let samples = crate::engine::count(samples.unwrap_or(1), "samples", 1)? as u64;
+        let seed = seed.unwrap_or(0);
+        let seed = u64::try_from(seed).map_err(|_| {
+            PyValueError::new_err(format!("seed must be in [0, 2**64) (got {seed})"))
+        })?;
+        let mut o = self.each_indexed(py, &items, &outs, |b, i, a, o| {
+            let seed = seed.wrapping_add((i as u64).wrapping_mul(0x9E37_79B9_7F4A_7C15));
+            b.eval_mean(v3(a[0]), v3(a[1]), samples, seed, o);
+        })?;
         Ok(o.remove(0))
     }
 
@@ -264,12 +583,13 @@ impl PyBsdf {
         wo: &Bound<'_, PyAny>,
         wi: &Bound<'_, PyAny>,
     ) -> PyResult<PyObject> {
-        let b = &self.inner;
-        map_vec(
+        let mut o = self.each(
             py,
             &[(wo, 3, "wo", Domain::Any), (wi, 3, "wi", Domain::Any)],
-            |a| b.pdf(v3(a[0]), v3(a[1])),
-        )
+            &[0],
+            |b, a, o| o[0] = b.pdf(v3(a[0]), v3(a[1])),
+        )?;
+        Ok(o.remove(0))
     }
 
     /// Directions wi from wo: ``sample(wo, u)`` with uniforms u of shape (..., 3) (the lobe
@@ -287,19 +607,14 @@ impl PyBsdf {
         u: &Bound<'_, PyAny>,
         n: Option<i64>,
     ) -> PyResult<PyObject> {
-        let c = self.inner.channels();
-        let b = &self.inner;
+        let c = self.channels;
         let u = crate::engine::uniforms(py, u, n, 3)?;
         let outs = [3, if c == 1 { 0 } else { c }, 0, 0, 0, 0];
-        let mut o = apply_vec(
+        let mut o = self.each(
             py,
             &[(wo, 3, "wo", Domain::Any), (&u, 3, "u", Domain::Uniform)],
             &outs,
-            256,
-            |_, a, o| {
-                b.sample(v3(a[0]), a[1][0], [a[1][1], a[1][2]], o);
-                Ok(())
-            },
+            |b, a, o| b.sample(v3(a[0]), a[1][0], [a[1][1], a[1][2]], o),
         )?;
         // (lobe as int8, specular as bool; an element with a NaN value, all NaN from the
         // engine, is a rejected sample there: lobe 0, not specular.)
@@ -341,77 +656,60 @@ impl Conductor {
         scattering: &str,
     ) -> PyResult<(Self, PyBsdf)> {
         let py = ndf.py();
-        let d = ndf.get().material()?.clone();
-        let (eta, k) = (channels(eta)?, channels(k)?);
+        let positive = |x: f64| x > 0.0 && x.is_finite();
+        let eta = eta
+            .map(|e| Channel::new(py, e, "eta", true, positive, "positive and finite"))
+            .transpose()?;
+        let k = k
+            .map(|k| Channel::new(py, k, "k", true, f64::is_finite, "finite"))
+            .transpose()?;
+        let channels = match (&eta, &k) {
+            (None, None) => 1,
+            (Some(e), k) => {
+                let c = e.channels(py)?;
+                if let Some(k) = k {
+                    if k.channels(py)? != c {
+                        return Err(PyValueError::new_err(
+                            "eta and k must have the same number of channels (their last axis)",
+                        ));
+                    }
+                }
+                if c != 1 && c != 3 {
+                    return Err(PyValueError::new_err(format!(
+                        "1 or 3 channels are supported (got {c})"
+                    )));
+                }
+                c
+            }
+            (None, Some(_)) => return Err(PyValueError::new_err("k needs eta")),
+        };
+        // (Sequences of channels as tuples, as given before arrays: what repr writes.)
+        let arg = |c: &Option<Channel>| -> PyResult<PyObject> {
+            Ok(match c {
+                None => py.None(),
+                Some(Channel { one: Some(v), .. }) => PyTuple::new(py, v)?.into_any().unbind(),
+                Some(c) => c.param.object(py)?.unbind(),
+            })
+        };
         let args = vec![
             ndf.clone().into_any().unbind(),
-            eta.clone()
-                .map(|v| PyTuple::new(py, v))
-                .transpose()?
-                .into_pyobject(py)?
-                .into_any()
-                .unbind(),
-            k.clone()
-                .map(|v| PyTuple::new(py, v))
-                .transpose()?
-                .into_pyobject(py)?
-                .into_any()
-                .unbind(),
+            arg(&eta)?,
+            arg(&k)?,
             masking.into_pyobject(py)?.into_any().unbind(),
             scattering.into_pyobject(py)?.into_any().unbind(),
         ];
         let m = self::masking(masking)?;
-        let model = self::model(scattering, m)?;
-        let inner = match (eta, k) {
-            (None, None) => conductor_of::<1, _>(d, fresnel::One::<1>, m, model),
-            (Some(eta), k) => {
-                let k = k.unwrap_or_else(|| vec![0.0; eta.len()]);
-                if k.len() != eta.len() || eta.is_empty() {
-                    return Err(PyValueError::new_err(
-                        "eta and k must have the same number of channels (at least one)",
-                    ));
-                }
-                if eta.iter().chain(&k).any(|x| !x.is_finite()) || eta.iter().any(|&x| x <= 0.0) {
-                    return Err(PyValueError::new_err(
-                        "eta must be positive and finite, k finite",
-                    ));
-                }
-                match eta.len() {
-                    1 => conductor_of::<1, _>(
-                        d,
-                        fresnel::Conductor {
-                            eta: [eta[0]],
-                            k: [k[0]],
-                        },
-                        m,
-                        model,
-                    ),
-                    3 => conductor_of::<3, _>(
-                        d,
-                        fresnel::Conductor {
-                            eta: [eta[0], eta[1], eta[2]],
-                            k: [k[0], k[1], k[2]],
-                        },
-                        m,
-                        model,
-                    ),
-                    n => {
-                        return Err(PyValueError::new_err(format!(
-                            "1 or 3 channels are supported (got {n})"
-                        )))
-                    }
-                }
-            }
-            (None, Some(_)) => return Err(PyValueError::new_err("k needs eta")),
+        let recipe = Recipe {
+            dielectric: false,
+            channels,
+            masking: m,
+            transport: Transport::Radiance,
+            model: self::model(scattering, m)?,
         };
+        let names = &["ndf", "eta", "k", "masking", "scattering"];
         Ok((
             Conductor,
-            PyBsdf::new(
-                py,
-                inner,
-                args,
-                &["ndf", "eta", "k", "masking", "scattering"],
-            )?,
+            PyBsdf::new(py, &ndf, eta, k, recipe, args, names)?,
         ))
     }
 }
@@ -422,7 +720,10 @@ impl Conductor {
 /// divides a transmitted f by η'² (Veach 1997, §5.2). ``masking``: 'correlated'
 /// (1/(1 + Λo + Λi) for both lobes, pbrt-v4's), 'separable' (G1(wo) G1(wi), Mitsuba's) or
 /// 'correlated_beta' (a transmission's exact height-correlated B(1 + Λo, 1 + Λi), the
-/// random walk's order 1; see the crate's ``bsdf::Masking``); single scattering only. ``scattering`` as for
+/// random walk's order 1; see the crate's ``bsdf::Masking``); single scattering only. The
+/// two transmission forms differ most at grazing angles on rough surfaces: GGX α = 1,
+/// μ = 0.05, η = 1.5 transmits 0.728 by 'correlated', 0.050 by 'correlated_beta' (their
+/// albedos: ``single_scattering_albedo(ndf, mu, eta=..., masking='pbrt' | 'exact')``). ``scattering`` as for
 /// ``Conductor`` ('kulla_conty'/'turquin' use the dielectric tables, computed here). The
 /// NDF's path (fast, or ``exact=True``) as for ``Conductor``.
 #[pyclass(extends = PyBsdf, frozen, module = "microsurface")]
@@ -434,52 +735,40 @@ impl Dielectric {
     #[pyo3(signature = (ndf, eta, masking = "correlated", transport = "radiance", scattering = "single"))]
     fn new(
         ndf: Bound<'_, NDF>,
-        eta: f64,
+        eta: &Bound<'_, PyAny>,
         masking: &str,
         transport: &str,
         scattering: &str,
     ) -> PyResult<(Self, PyBsdf)> {
         let py = ndf.py();
-        let d = ndf.get().material()?.clone();
+        let ok = |x: f64| x > 0.0 && x.is_finite() && x != 1.0;
+        let eta = Channel::new(
+            py,
+            eta,
+            "eta",
+            false,
+            ok,
+            "a positive finite number other than 1",
+        )?;
         let args = vec![
             ndf.clone().into_any().unbind(),
-            eta.into_pyobject(py)?.into_any().unbind(),
+            eta.param.object(py)?.unbind(),
             masking.into_pyobject(py)?.into_any().unbind(),
             transport.into_pyobject(py)?.into_any().unbind(),
             scattering.into_pyobject(py)?.into_any().unbind(),
         ];
-        if !(eta > 0.0 && eta.is_finite() && eta != 1.0) {
-            return Err(PyValueError::new_err(format!(
-                "eta must be a positive finite number other than 1 (got {eta})"
-            )));
-        }
         let m = self::masking(masking)?;
-        let t = self::transport(transport)?;
-        let inner: Box<dyn AnyBsdf> = match self::model(scattering, m)? {
-            // (One channel: a dielectric's f is grey.)
-            Model::Single => Box::new(
-                bsdf::RoughDielectric::new(d, eta)
-                    .with_channels::<1>()
-                    .with_masking(m)
-                    .with_transport(t),
-            ),
-            Model::Compensated(s) => Box::new(
-                CompensatedDielectric::new(d, eta, s)
-                    .with_channels::<1>()
-                    .with_transport(t),
-            ),
-            Model::Walk => Box::new(
-                MultipleScattering::<_, _, 1>::new(d, DielectricFacets(eta)).with_transport(t),
-            ),
+        let recipe = Recipe {
+            dielectric: true,
+            channels: 1,
+            masking: m,
+            transport: self::transport(transport)?,
+            model: self::model(scattering, m)?,
         };
+        let names = &["ndf", "eta", "masking", "transport", "scattering"];
         Ok((
             Dielectric,
-            PyBsdf::new(
-                py,
-                inner,
-                args,
-                &["ndf", "eta", "masking", "transport", "scattering"],
-            )?,
+            PyBsdf::new(py, &ndf, Some(eta), None, recipe, args, names)?,
         ))
     }
 }

@@ -75,10 +75,14 @@ pub enum Domain<'a> {
     Uniform,
     /// A finite number (an azimuth); NaN gives NaN.
     Finite,
-    /// A parameter (an array of α), checked by the library: NaN is an error too, and an
-    /// element is never skipped for it.
-    Param(&'a (dyn Fn(f64) -> Result<(), ParamError> + Sync)),
+    /// An object's parameter array (α, γ, η, ...), validated when the object was built: not
+    /// checked again, and not counted in the output's dtype (which follows the method's
+    /// arguments).
+    Fixed(std::marker::PhantomData<&'a ()>),
 }
+
+/// The domain of an object's parameter arrays.
+pub const FIXED: Domain<'static> = Domain::Fixed(std::marker::PhantomData);
 
 /// The largest |u| a cosine may have: 1 and 4ε beyond (see [`Domain::Cosine`]).
 const COSINE_MAX: f64 = 1.0 + 4.0 * f64::EPSILON;
@@ -149,26 +153,23 @@ impl Domain<'_> {
             Domain::Cosine => !bad_cosine(x),
             Domain::Uniform => !bad_uniform(x),
             Domain::Finite => !bad_finite(x),
-            Domain::Param(check) => check(x).is_ok(),
+            Domain::Fixed(_) => true,
         }
     }
 
     /// Whether a NaN of this argument makes the element's outputs NaN.
     fn value(&self) -> bool {
-        !matches!(self, Domain::Param(_))
+        !matches!(self, Domain::Fixed(_))
     }
 
     /// Why x is not allowed, for the message (a parameter: the library's whole message).
-    fn why(&self, x: f64) -> String {
+    fn why(&self) -> String {
         match self {
             Domain::Any => String::new(),
             Domain::Cosine => "must be in [-1, 1]".into(),
             Domain::Uniform => "must be in [0, 1)".into(),
             Domain::Finite => "must be finite".into(),
-            Domain::Param(check) => match check(x) {
-                Err(e) => e.to_string(),
-                Ok(()) => String::new(),
-            },
+            Domain::Fixed(_) => String::new(),
         }
     }
 }
@@ -190,7 +191,7 @@ pub fn check_domain<T: Lane>(
     given: &Bound<'_, PyAny>,
     single: bool,
 ) -> PyResult<()> {
-    if matches!(domain, Domain::Any) {
+    if matches!(domain, Domain::Any | Domain::Fixed(_)) {
         return Ok(());
     }
     // One loop per domain, its test branch-free (an OR over a block, which the compiler
@@ -210,11 +211,10 @@ pub fn check_domain<T: Lane>(
         COSINE_MAX
     };
     let bad = match domain {
-        Domain::Any => false,
+        Domain::Any | Domain::Fixed(_) => false,
         Domain::Cosine => any_bad(data, |x| x.abs_gt(cosine_max)),
         Domain::Uniform => any_bad(data, |x| x.outside_unit()),
         Domain::Finite => any_bad(data, |x| x.abs_gt(f64::MAX)),
-        Domain::Param(check) => any_bad(data, |x| check(x.into()).is_err()),
     };
     if !bad {
         return Ok(());
@@ -250,26 +250,18 @@ fn domain_error(py: Python<'_>, name: &str, domain: Domain<'_>, given: &Bound<'_
         };
         // (Debug: 1.0, not 1, as Python writes it.)
         let x = flat[first];
-        let why = domain.why(x);
-        let param = matches!(domain, Domain::Param(_));
+        let why = domain.why();
         if shape.is_empty() {
-            // (A parameter's message is the library's, which names it and its value.)
-            return Ok(if param {
-                why
-            } else {
-                format!("{name} {why} (got {x:?})")
-            });
+            return Ok(format!("{name} {why} (got {x:?})"));
         }
         let index: Vec<usize> = np
             .call_method1("unravel_index", (first, PyTuple::new(py, &shape)?))?
             .extract()?;
         let index: Vec<String> = index.iter().map(|i| i.to_string()).collect();
         let (bad, all, index) = (bad.len(), flat.len(), index.join(", "));
-        Ok(if param {
-            format!("{why}: {bad} of {all} elements of {name} are not valid (the first: {name}[{index}])")
-        } else {
-            format!("{name} {why}: {bad} of {all} elements are not (the first: {name}[{index}] = {x:?})")
-        })
+        Ok(format!(
+            "{name} {why}: {bad} of {all} elements are not (the first: {name}[{index}] = {x:?})"
+        ))
     };
     match describe() {
         Ok(m) => PyValueError::new_err(m),
@@ -306,11 +298,12 @@ impl<'py> Args<'py> {
         let mut wide = Vec::with_capacity(items.len());
         let mut batches = Vec::with_capacity(items.len());
         let mut singles = Vec::with_capacity(items.len());
-        for &(x, core, name, _) in items {
+        for &(x, core, name, domain) in items {
             let a = np.call_method1("asarray", (x,))?;
             let single = a.getattr("dtype")?.eq(&float32)?;
             singles.push(single);
-            f32 &= single;
+            // (A parameter array does not choose the dtype: the arguments do.)
+            f32 &= single || matches!(domain, Domain::Fixed(_));
             let shape: Vec<usize> = a.getattr("shape")?.extract()?;
             if core > 0 && shape.last() != Some(&core) {
                 return Err(PyValueError::new_err(format!(
@@ -518,7 +511,10 @@ pub fn compute_blocks_of<'py, T: numpy::Element + Send>(
             let done = end - start;
             start = end;
             if start < n {
-                Python::with_gil(|py| py.check_signals())?;
+                Python::with_gil(|py| {
+                    py.check_signals()?;
+                    progress_update(py, start, n)
+                })?;
                 let scale = (CHUNK.as_secs_f64() / took.max(1e-9)).min(GROWTH);
                 // (Whole blocks: a slice kernel's block starts at a multiple of `block`.)
                 chunk = (((done as f64 * scale) as usize).div_ceil(block) * block).max(block);
@@ -527,7 +523,59 @@ pub fn compute_blocks_of<'py, T: numpy::Element + Send>(
         Ok(())
     });
     drop(rw);
+    if result.is_ok() {
+        progress_update(py, n, n)?;
+    }
     result.map(|()| out)
+}
+
+thread_local! {
+    /// The progress bar of the call running on this thread (`with_progress`), and the
+    /// elements it has been told of.
+    static PROGRESS: std::cell::RefCell<Option<(PyObject, usize)>> =
+        const { std::cell::RefCell::new(None) };
+}
+
+/// `f()` with a progress bar over the elements of its loop where `on` (tqdm's, where tqdm is
+/// installed; silent otherwise): the loop ([`compute_blocks_of`]) updates it after each
+/// chunk, with the GIL it takes for Ctrl-C anyway.
+pub fn with_progress<R>(py: Python<'_>, on: bool, f: impl FnOnce() -> PyResult<R>) -> PyResult<R> {
+    let bar = if on { tqdm(py)? } else { None };
+    let Some(bar) = bar else {
+        return f();
+    };
+    PROGRESS.with(|p| *p.borrow_mut() = Some((bar.clone_ref(py), 0)));
+    let r = f();
+    PROGRESS.with(|p| p.borrow_mut().take());
+    bar.bind(py).call_method0("close")?;
+    r
+}
+
+/// A new tqdm bar (total set by the loop), or None where tqdm is not installed.
+pub fn tqdm(py: Python<'_>) -> PyResult<Option<PyObject>> {
+    let Ok(module) = py.import("tqdm") else {
+        return Ok(None);
+    };
+    let kwargs = PyDict::new(py);
+    kwargs.set_item("total", 0)?;
+    Ok(Some(
+        module.getattr("tqdm")?.call((), Some(&kwargs))?.unbind(),
+    ))
+}
+
+/// Tells this thread's progress bar, if any, that `done` of `n` elements are done.
+fn progress_update(py: Python<'_>, done: usize, n: usize) -> PyResult<()> {
+    PROGRESS.with(|p| {
+        let mut p = p.borrow_mut();
+        let Some((bar, shown)) = p.as_mut() else {
+            return Ok(());
+        };
+        let bar = bar.bind(py);
+        bar.setattr("total", n)?;
+        bar.call_method1("update", (done.saturating_sub(*shown),))?;
+        *shown = done.max(*shown);
+        Ok(())
+    })
 }
 
 /// An uninitialised NumPy array of n elements (`numpy.empty`: NumPy's allocator, which
@@ -612,6 +660,12 @@ fn single_numbers(items: &[Item<'_, '_>]) -> Option<Vec<f64>> {
     Some(x)
 }
 
+/// Whether the arguments are one element given without a batch (the form [`run_single`]
+/// takes: Python numbers, and lists, tuples or 1-D float64 arrays of their core's length).
+pub fn one_element(items: &[Item<'_, '_>]) -> bool {
+    single_numbers(items).is_some()
+}
+
 /// [`Args::run`] for one element given without a batch ([`single_numbers`]): `f(0, a, out)`
 /// with a the arguments' numbers split by their cores, without the GIL, and the outputs as
 /// the array path shapes a batch of `()` (a NumPy float64 scalar for core 0, a float64
@@ -678,6 +732,16 @@ pub fn interruptible<T: Send + 'static>(
     py: Python<'_>,
     f: impl FnOnce() -> T + Send + 'static,
 ) -> PyResult<T> {
+    interruptible_ticking(py, f, |_| Ok(()))
+}
+
+/// [`interruptible`], calling `tick` with the GIL every 50 ms while `f` runs (a progress
+/// bar's update) and once at its end.
+pub fn interruptible_ticking<T: Send + 'static>(
+    py: Python<'_>,
+    f: impl FnOnce() -> T + Send + 'static,
+    mut tick: impl FnMut(Python<'_>) -> PyResult<()> + Send,
+) -> PyResult<T> {
     use std::sync::mpsc::{channel, RecvTimeoutError};
     let (tx, rx) = channel();
     std::thread::spawn(move || {
@@ -686,8 +750,14 @@ pub fn interruptible<T: Send + 'static>(
     });
     py.allow_threads(move || loop {
         match rx.recv_timeout(Duration::from_millis(50)) {
-            Ok(v) => return Ok(v),
-            Err(RecvTimeoutError::Timeout) => Python::with_gil(|py| py.check_signals())?,
+            Ok(v) => {
+                Python::with_gil(&mut tick)?;
+                return Ok(v);
+            }
+            Err(RecvTimeoutError::Timeout) => Python::with_gil(|py| {
+                py.check_signals()?;
+                tick(py)
+            })?,
             Err(RecvTimeoutError::Disconnected) => {
                 return Err(pyo3::exceptions::PyRuntimeError::new_err(
                     "the computation failed (a panic in the library: please report it)",
@@ -703,25 +773,33 @@ pub fn interruptible<T: Send + 'static>(
 /// Above this many elements a cheap function's loop runs on rayon's pool.
 pub const PARALLEL: usize = 1 << 14;
 
-/// `f` over the elements of scalar arguments broadcast together (the isotropic quantities),
-/// each argument with its name and domain ([`Item`] of core 0).
-pub fn apply<'py, const K: usize>(
+/// The most arguments of core 0 [`apply`] takes (a cosine function's two, and three
+/// parameters).
+pub const MAX_ARGS: usize = 8;
+
+/// `f` over the elements of scalar arguments broadcast together (the isotropic quantities,
+/// with their parameter arrays), each argument with its name and domain ([`Item`] of core
+/// 0); `f` gets one number per argument, in their order.
+pub fn apply<'py>(
     py: Python<'py>,
-    args: [(&Bound<'py, PyAny>, &str, Domain<'_>); K],
-    f: impl Fn([f64; K]) -> Result<f64, ParamError> + Sync,
+    args: &[(&Bound<'py, PyAny>, &str, Domain<'_>)],
+    f: impl Fn(&[f64]) -> Result<f64, ParamError> + Sync,
 ) -> PyResult<PyObject> {
+    let k = args.len();
+    assert!(k <= MAX_ARGS, "apply takes at most {MAX_ARGS} arguments");
     let items: Vec<Item<'_, 'py>> = args.iter().map(|&(a, name, d)| (a, 0, name, d)).collect();
-    let domains = args.map(|a| a.2);
+    let domains: Vec<Domain<'_>> = args.iter().map(|a| a.2).collect();
     // Python floats, NumPy float64 scalars (a float subclass) and ints only: no array, the
     // value as a NumPy float64 scalar, as a ufunc returns (0.13 µs a call against ~2.5 µs
     // through the array path's NumPy calls).
     if args.iter().all(|a| is_number(a.0)) {
-        let mut x = [0.0; K];
-        for (x, a) in x.iter_mut().zip(&args) {
+        let mut x = [0.0; MAX_ARGS];
+        for (x, a) in x.iter_mut().zip(args) {
             *x = a.0.extract::<f64>()?;
         }
-        check_numbers(py, &items, &x)?;
-        let y = if nan_of(&x, &domains) {
+        let x = &x[..k];
+        check_numbers(py, &items, x)?;
+        let y = if nan_of(x, &domains) {
             f64::NAN
         } else {
             f(x).map_err(value_error)?
@@ -729,21 +807,21 @@ pub fn apply<'py, const K: usize>(
         return Ok(float64(py)?.call1((y,))?.unbind());
     }
     let a = Args::new(py, &items)?;
-    let s: Vec<&[f64]> = (0..K).map(|k| a.slice(k)).collect::<PyResult<_>>()?;
+    let s: Vec<&[f64]> = (0..k).map(|j| a.slice(j)).collect::<PyResult<_>>()?;
     let mut out = a.run(py, 1, &[0], PARALLEL, |i, o| {
-        let x = std::array::from_fn(|k| s[k][i]);
-        o[0] = if nan_of(&x, &domains) {
-            f64::NAN
-        } else {
-            f(x)?
-        };
+        let mut x = [0.0; MAX_ARGS];
+        for (x, s) in x.iter_mut().zip(&s) {
+            *x = s[i];
+        }
+        let x = &x[..k];
+        o[0] = if nan_of(x, &domains) { f64::NAN } else { f(x)? };
         Ok(())
     })?;
     Ok(out.remove(0))
 }
 
 /// [`nan_value`] of one number per argument (no allocation: the cheap quantities' loop).
-fn nan_of<const K: usize>(x: &[f64; K], domains: &[Domain<'_>; K]) -> bool {
+fn nan_of(x: &[f64], domains: &[Domain<'_>]) -> bool {
     x.iter().zip(domains).any(|(v, d)| d.value() && v.is_nan())
 }
 
@@ -769,13 +847,17 @@ pub fn apply_vec<'py>(
     let domains: Vec<Domain<'_>> = items.iter().map(|i| i.3).collect();
     let f = guarded(&domains, &f);
     let width = outs.iter().map(|&c| c.max(1)).sum();
+    assert!(
+        s.len() <= MAX_ARGS,
+        "apply_vec takes at most {MAX_ARGS} arguments"
+    );
     a.run(py, width, outs, parallel, |i, o| {
-        let e: Vec<&[f64]> = s
-            .iter()
-            .zip(&cores)
-            .map(|(s, &c)| &s[i * c..(i + 1) * c])
-            .collect();
-        f(i, &e, o)
+        // (On the stack: an allocation per element cost more than GGX's pdf itself.)
+        let mut e: [&[f64]; MAX_ARGS] = [&[]; MAX_ARGS];
+        for ((e, s), &c) in e.iter_mut().zip(&s).zip(&cores) {
+            *e = &s[i * c..(i + 1) * c];
+        }
+        f(i, &e[..s.len()], o)
     })
 }
 

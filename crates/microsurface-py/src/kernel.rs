@@ -4,7 +4,7 @@
 //! float32 input ([`kernel_f32`]), in blocks of [`BLOCK`] elements.
 
 use crate::engine::{self, float64, is_number, Args, Domain, PARALLEL};
-use microsurface::{AnyNdf, NdfKind};
+use microsurface::NdfKind;
 use numpy::{PyArray1, PyArrayMethods};
 use pyo3::prelude::*;
 
@@ -56,21 +56,34 @@ impl Kernel {
 /// Elements a slice kernel takes at a time (L1-resident, with the constant-α buffer).
 pub const BLOCK: usize = 4096;
 
+/// Heitz's extension of Λ below the horizon, Λ(u) = −1 − Λ(|u|) for u < 0, over a block
+/// whose kernel gave Λ(|u|) (a select, branch-free; −0 keeps Λ(0) = +∞).
+fn odd<T: Copy + PartialOrd + Default + std::ops::Neg<Output = T> + std::ops::Sub<Output = T>>(
+    u: &[T],
+    out: &mut [T],
+    one: T,
+) {
+    for (o, &u) in out.iter_mut().zip(u) {
+        let reflected = -one - *o;
+        *o = if u < T::default() { reflected } else { *o };
+    }
+}
+
 /// `kernel` over u (a cosine; and an array α, validated, if given; else `alpha0`), with the
 /// engine's domains: NaN gives NaN (the closed forms propagate it), u outside [−1, 1] and a
-/// bad α raise ValueError.
+/// bad α raise ValueError. `lambda`: the kernel is Λ, extended below the horizon as the
+/// library's `Ndf::lambda` (−1 − Λ(|u|)).
 pub fn apply_kernel<'py>(
     py: Python<'py>,
-    kind: NdfKind,
     u: &Bound<'py, PyAny>,
     alpha: Option<&Bound<'py, PyAny>>,
     alpha0: f64,
     k: Kernel,
+    lambda: bool,
 ) -> PyResult<PyObject> {
-    let check = |a: f64| AnyNdf::new(kind, a, None).map(|_| ());
     let mut items = vec![(u, 0, "u", Domain::Cosine)];
     if let Some(a) = alpha {
-        items.push((a, 0, "alpha", Domain::Param(&check)));
+        items.push((a, 0, "alpha", engine::FIXED));
     }
     if is_number(u) && alpha.is_none_or(|a| is_number(a)) {
         let x = u.extract::<f64>()?;
@@ -79,21 +92,21 @@ pub fn apply_kernel<'py>(
             None => alpha0,
         };
         engine::check_numbers(py, &items, &[x, a])?;
-        return Ok(float64(py)?.call1(((k.scalar)(x, a),))?.unbind());
+        let mut y = [(k.scalar)(x, a)];
+        if lambda {
+            odd(&[x], &mut y, 1.0);
+        }
+        return Ok(float64(py)?.call1((y[0],))?.unbind());
     }
-    // float32 throughout: the f32 slice forms.
+    // u float32: the f32 slice forms (α rounded to f32, as a renderer's f32 material).
     let np = engine::numpy(py)?;
     let float32 = np.getattr("float32")?;
     let ua = np.call_method1("asarray", (u,))?;
-    let aa = alpha
-        .map(|a| np.call_method1("asarray", (a,)))
-        .transpose()?;
-    if ua.getattr("dtype")?.eq(&float32)?
-        && aa
-            .as_ref()
-            .map_or(Ok(true), |a| a.getattr("dtype")?.eq(&float32))?
-    {
-        return kernel_f32(py, &ua, aa.as_ref(), alpha0, k, &items);
+    if ua.getattr("dtype")?.eq(&float32)? {
+        let aa = alpha
+            .map(|a| np.call_method1("asarray", (a, &float32)))
+            .transpose()?;
+        return kernel_f32(py, &ua, aa.as_ref(), alpha0, k, lambda, &items);
     }
     let a = Args::new(py, &items)?;
     let us = a.slice(0)?;
@@ -110,6 +123,9 @@ pub fn apply_kernel<'py>(
             None => &constant[..out.len()],
         };
         (k.slice)(u, al, out);
+        if lambda {
+            odd(u, out, 1.0);
+        }
         Ok(())
     })?;
     Ok(out.remove(0))
@@ -124,6 +140,7 @@ fn kernel_f32<'py>(
     alpha: Option<&Bound<'py, PyAny>>,
     alpha0: f64,
     k: Kernel,
+    lambda: bool,
     items: &[engine::Item<'_, 'py>],
 ) -> PyResult<PyObject> {
     let np = engine::numpy(py)?;
@@ -158,6 +175,9 @@ fn kernel_f32<'py>(
                 None => &constant[..n],
             };
             (k.slice32)(&us[start..start + n], al, o);
+            if lambda {
+                odd(&us[start..start + n], o, 1.0f32);
+            }
             Ok(())
         })?;
     let mut result = out.into_any().call_method1("reshape", (shape,))?;

@@ -2,8 +2,9 @@
 //! directions, samplers and albedos vectorised over NumPy arrays, the BSDFs and the albedo
 //! tables. The package (`python/microsurface`) re-exports this module, `_microsurface`.
 //!
-//! The isotropic functions of a cosine are the library's exact f64 path ([`AnyNdf`]), except
-//! GGX's D, Λ and G1, which run the fast closed forms (`microsurface::fast::ggx`, the slice
+//! The isotropic functions of a cosine are the library's exact f64 path ([`AnyNdf`]) (or,
+//! with `fast=True`, the fast material's), except GGX's D, Λ and G1, which run the fast
+//! closed forms (`microsurface::fast::ggx`, the slice
 //! forms of `fast::batch`; within 3e-15 of the exact path) and for float32 input their f32
 //! slice forms. Directions, samplers, BSDFs and walks run one material (`material`): the
 //! library's run-time door [`microsurface::AnyMicrofacet`] (the fast kernels of every NDF) by
@@ -22,6 +23,9 @@
 //!   float32 in f32).
 //! - `material.rs`: the material of the direction methods, samplers, BSDFs and walks:
 //!   `AnyMicrofacet<f64>` (fast) or `Exact` with the posterior or warp visible sampler.
+//! - `params.rs`: parameters as numbers or arrays (SciPy's frozen distributions): broadcast
+//!   and validated at construction, appended to every method's arguments, one material per
+//!   element.
 //! - `ndf.rs`: the NDF classes (`NDF` and its eleven subclasses): the functions of a cosine
 //!   and of directions, the samplers, `NDF.albedo`.
 //! - `bsdf.rs`: the BSDF classes (`BSDF`, `Conductor`, `Dielectric`) over every scattering
@@ -40,6 +44,7 @@ mod engine;
 mod kernel;
 mod material;
 mod ndf;
+mod params;
 
 use pyo3::prelude::*;
 

@@ -61,6 +61,12 @@ impl Material {
         })
     }
 
+    /// Whether this material runs a fast path (the fast door, and an NDF that has one: every
+    /// NDF but the generalised exponential).
+    pub fn is_fast(&self) -> bool {
+        matches!(self, Material::Fast(m) if m.is_fast())
+    }
+
     /// The exact path of this material.
     pub fn exact(&self) -> Exact {
         match self {
@@ -202,4 +208,65 @@ impl MicrofacetDistribution<f64> for Material {
     fn effectively_smooth(&self) -> bool {
         both!(self, |d| d.effectively_smooth())
     }
+}
+
+/// One element's parameters: α, αy and the shape (γ or a), as the engine's loop reads them.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct P {
+    pub alpha: f64,
+    pub alpha_y: f64,
+    pub shape: Option<f64>,
+}
+
+/// What an isotropic NDF is built from: the NDF, α's and the shape's bits.
+type IsoKey = (NdfKind, u64, Option<u64>);
+
+/// What a material is built from: the NDF, its parameters' bits, the path and the sampler.
+type Key = (NdfKind, u64, u64, Option<u64>, bool, Sampler);
+
+thread_local! {
+    static MATERIALS: std::cell::RefCell<Option<(Key, Material)>> =
+        const { std::cell::RefCell::new(None) };
+    static ISOTROPIC: std::cell::RefCell<Option<(IsoKey, microsurface::AnyNdf)>> =
+        const { std::cell::RefCell::new(None) };
+}
+
+/// `f` of the material of NDF `kind` at `p` on the path `exact` with `sampler`, built once
+/// for a run of elements with the same parameters ([`crate::params::Recent`]).
+pub fn with_material<R>(
+    kind: NdfKind,
+    p: P,
+    exact: bool,
+    sampler: Sampler,
+    f: impl FnOnce(&Material) -> R,
+) -> Result<R, ParamError> {
+    let key = (
+        kind,
+        p.alpha.to_bits(),
+        p.alpha_y.to_bits(),
+        p.shape.map(f64::to_bits),
+        exact,
+        sampler,
+    );
+    crate::params::Recent::new(&MATERIALS).with(
+        key,
+        || Material::new(kind, p.alpha, p.alpha_y, p.shape, exact, sampler),
+        f,
+    )
+}
+
+/// `f` of the isotropic NDF `kind` at (α, shape) (the functions of a cosine' exact path),
+/// built once for a run of elements with the same parameters.
+pub fn with_isotropic<R>(
+    kind: NdfKind,
+    alpha: f64,
+    shape: Option<f64>,
+    f: impl FnOnce(&microsurface::AnyNdf) -> R,
+) -> Result<R, ParamError> {
+    let key = (kind, alpha.to_bits(), shape.map(f64::to_bits));
+    crate::params::Recent::new(&ISOTROPIC).with(
+        key,
+        || microsurface::AnyNdf::new(kind, alpha, shape),
+        f,
+    )
 }

@@ -7,32 +7,18 @@
 #![allow(clippy::upper_case_acronyms)]
 
 use crate::albedo;
-use crate::engine::{
-    apply, apply_vec, map_vec, named, uniforms, v3, value_error, Domain, Item, PARALLEL,
+use crate::engine::{apply, apply_vec, named, uniforms, v3, value_error, Domain, Item, PARALLEL};
+use crate::engine::{is_number, Args};
+use crate::kernel::{apply_kernel, Kernel, BLOCK, Q};
+use crate::material::{mixture, with_isotropic, with_material, Material, Sampler, P};
+use crate::params::{self, Arrays, Param};
+use microsurface::{
+    AnyMicrofacet, AnyNdf, Exact, MicrofacetDistribution, Ndf, NdfKind, ParamError,
 };
-use crate::kernel::{apply_kernel, Kernel, Q};
-use crate::material::{Material, Sampler};
-use microsurface::{AnyNdf, Exact, MicrofacetDistribution, Ndf, NdfKind, ParamError};
 use pyo3::exceptions::PyValueError;
 use pyo3::prelude::*;
 use pyo3::types::PyTuple;
 use std::sync::OnceLock;
-
-/// ``Sample(wm, pdf)`` of a sampler per element (parallel from 256 elements: the exact
-/// samplers of the family invert quadratures).
-fn samples<'py>(
-    py: Python<'py>,
-    items: &[Item<'_, 'py>],
-    f: impl Fn(&[&[f64]]) -> microsurface::Sample<f64> + Sync,
-) -> PyResult<PyObject> {
-    let o = apply_vec(py, items, &[3, 0], 256, |_, a, o| {
-        let s = f(a);
-        o[..3].copy_from_slice(&s.wm);
-        o[3] = s.pdf;
-        Ok(())
-    })?;
-    named(py, "Sample", o)
-}
 
 /// A microfacet NDF of the library (the base class of ``GGX``, ``Beckmann``, ``GTR``, ...).
 ///
@@ -43,11 +29,22 @@ fn samples<'py>(
 /// u ≤ 0.
 ///
 /// Every class takes ``alpha`` and an optional ``alpha_y`` (anisotropic by stretching; GTR
-/// only at γ = 2), ``exact=False`` and ``sampler='posterior'``. The functions of a cosine
-/// (``d``, ``lambda_``, ...) are the isotropic NDF's, at ``alpha`` or at an array ``alpha=``
-/// broadcast with the arguments; the functions of directions (``d_wm``, ``lambda_w``,
-/// ``pdf_visible``, ``sample_visible``, ...), the BSDFs built on the NDF and its albedos are
-/// the anisotropic material's.
+/// only at γ = 2), its shape parameter where it has one, ``exact=False`` and
+/// ``sampler='posterior'``. The functions of a cosine (``d``, ``lambda_``, ...) are the
+/// isotropic NDF's; the functions of directions (``d_wm``, ``lambda_w``, ``pdf_visible``,
+/// ``sample_visible``, ...), the BSDFs built on the NDF and its albedos are the anisotropic
+/// material's.
+///
+/// **Parameters as arrays** (SciPy's frozen distributions): ``alpha``, ``alpha_y`` and the
+/// shape may each be a number or an array. The arrays broadcast together when the object is
+/// built (``param_shape``), and in every method with the method's arguments: the output has
+/// the broadcast shape, one material per element (``GGX(np.array([0.1, 0.3])[:, None]).d(u)``
+/// is (2, len(u))), computed in one loop in Rust. A material is built once for a run of
+/// elements with the same parameters; the fast path of GTR fits Λ per (α, γ) (1–90 ms each,
+/// cached for the process) and the family per shape, so sweep those over few distinct
+/// values, or use the exact path (the functions of a cosine by default). Every element is
+/// validated at construction (a bad one raises ValueError with its index). The output's
+/// dtype follows the method's arguments, not the parameters'.
 ///
 /// **Input.** NaN values give NaN outputs; cosines (``u``, ``u_o``, ``u_i``, ``mu``)
 /// outside [−1, 1] (by more than 4ε: a rounded cosine is taken as ±1), uniforms outside
@@ -55,12 +52,23 @@ fn samples<'py>(
 /// 0 raise ``ValueError`` naming the argument; parameters raise the library's
 /// ``ValueError``, NaN included. Ctrl-C raises ``KeyboardInterrupt``.
 ///
-/// **Two paths.** The functions of a cosine are always the library's exact f64 path (the
-/// research values): closed forms to ≤ 1e-13 relative, numerical quantities (the family's
-/// Λ by quadrature, Bessel-K, the generalised exponential) to ≤ 1e-10, measured against
-/// mpmath (the crate's tests and README); float32 input gives the float64 value rounded
-/// once, except GGX's D, Λ and G1, which run the library's fast slice forms (in f64 within
-/// 3e-15 of the exact path, in f32 in f32 arithmetic, within 6e-7). Everything of
+/// **Two paths.** The functions of a cosine are, by default, the library's exact f64 path
+/// (the research values): closed forms to ≤ 1e-13 relative, numerical quantities (the
+/// family's Λ by quadrature, Bessel-K, the generalised exponential) to ≤ 1e-10, measured
+/// against mpmath (the crate's tests and README); float32 input gives the float64 value
+/// rounded once, except GGX's D, Λ and G1, which run the library's fast slice forms (in f64
+/// within 3e-15 of the exact path, in f32 in f32 arithmetic, within 6e-7). With
+/// ``fast=True`` (``d``, ``lambda_``, ``sigma``, ``g1``, ``g2``, ``g2_separable``) they run
+/// the renderer's fast kernels instead, the same ones as the directions below, at the
+/// direction of cosine u: closed forms for GGX (≤ 1e-14 relative of the exact path) and
+/// Beckmann (≤ 1e-12), fitted tables of Λ (≤ 1e-7 relative; D exact or ≤ 1e-11) for the
+/// others; the slope densities and the generalised exponential have no fast path and run
+/// the exact one. The fast bounds are relative for values above 1e-200 and absolute
+/// (1e-200) below, as the fitted tables state (near the normal Ei's and Erfc's fast Λ
+/// stops at ~1e-301 where the exact one falls to 0), and hold for D in the normal range
+/// (where D is subnormal, Beckmann's at θ = 83° for α = 0.3, the two paths round
+/// differently). ``g2(u_o[:, None], u_i)`` evaluates Λ per pair: over an outer grid, Λ of
+/// each cosine once (``lambda_``) and 1/(1 + Λo + Λi) are faster. Everything of
 /// directions runs, by default, the renderer's fast kernels (Rust: ``AnyMicrofacet<f64>``,
 /// bit for bit what a Rust renderer and the ``microsurface`` command line compute): closed
 /// forms for GGX (≤ 1e-14 relative of the exact path) and Beckmann (≤ 1e-12); fitted
@@ -80,23 +88,254 @@ fn samples<'py>(
 #[pyclass(subclass, frozen, module = "microsurface")]
 #[derive(Clone)]
 pub struct NDF {
-    ndf: AnyNdf,
-    alpha_y: f64,
+    kind: NdfKind,
+    /// α (αx of an anisotropic material), αy (None: α) and the shape, numbers or arrays.
+    alpha: Param,
+    alpha_y: Option<Param>,
+    shape: Option<Param>,
     /// ``exact=True``: the directions on the exact path.
     exact: bool,
     /// The exact path's sampler (``sampler=``).
     sampler: Sampler,
+    /// The parameter arrays' broadcast shape; None where every parameter is a number.
+    batch: Option<Vec<usize>>,
+    /// Whether αy = α at every element (the functions of a cosine need it).
+    isotropic: bool,
+    /// How `sample_visible` draws (`NDF.sampler`).
+    sampler_name: &'static str,
+    /// Every parameter a number: the isotropic NDF and the direction API's material.
+    one: Option<One>,
+}
+
+/// The NDF of an object whose parameters are numbers.
+#[derive(Clone)]
+struct One {
+    ndf: AnyNdf,
+    p: P,
     /// The direction API's material, built at its first use (the fast path's fits), or why
     /// this material has none (Student-T at γ ≤ 3/2: Λ = ∞).
     material: OnceLock<Result<Material, ParamError>>,
 }
 
+/// The quantities of a cosine.
+#[derive(Clone, Copy, PartialEq, Eq)]
+enum Cos {
+    D,
+    Lambda,
+    Sigma,
+    G1,
+    G2,
+    G2Separable,
+    P22,
+    P2,
+}
+
+impl Cos {
+    /// The exact path's value (the library's `Ndf` methods).
+    #[inline]
+    fn exact(self, n: &AnyNdf, x: &[f64]) -> f64 {
+        match self {
+            Cos::D => n.d(x[0]),
+            Cos::Lambda => n.lambda(x[0]),
+            Cos::Sigma => n.sigma(x[0]),
+            Cos::G1 => n.g1(x[0]),
+            Cos::G2 => n.g2(x[0], x[1]),
+            Cos::G2Separable => n.g2_separable(x[0], x[1]),
+            Cos::P22 => n.p22(x[0], x[1]),
+            Cos::P2 => n.p2(x[0]),
+        }
+    }
+
+    /// Whether `fast=True` has a path of its own (the slope densities have none).
+    fn has_fast(self) -> bool {
+        !matches!(self, Cos::P22 | Cos::P2)
+    }
+
+    /// The fast path's value: the renderer's material (isotropic) at the direction of cosine
+    /// u in the xz plane, with the cosine functions' conventions: D(u ≤ 0) = 0, Λ(u < 0) =
+    /// −1 − Λ(|u|), σ(u < 0) = |u| Λ(|u|), G1 and G2 of |u|.
+    #[inline(always)]
+    fn fast(self, m: &AnyMicrofacet<f64>, x: &[f64]) -> f64 {
+        match self {
+            Cos::D => m.d(w(x[0])),
+            Cos::Lambda => {
+                let u = x[0];
+                let l = m.lambda(w(u));
+                if u < 0.0 {
+                    -1.0 - l
+                } else {
+                    l
+                }
+            }
+            Cos::Sigma => {
+                let u = x[0];
+                let l = m.lambda(w(u));
+                if u != 0.0 && l.is_finite() {
+                    if u > 0.0 {
+                        u + u * l
+                    } else {
+                        -u * l
+                    }
+                } else {
+                    // (On the horizon, Λ = ∞: the exact σ(0).)
+                    m.exact().sigma(w(u))
+                }
+            }
+            Cos::G1 => m.g1(w(x[0])),
+            Cos::G2 => m.g2(w(x[0]), w(x[1])),
+            Cos::G2Separable => m.g2_separable(w(x[0]), w(x[1])),
+            Cos::P22 | Cos::P2 => unreachable!("no fast path: has_fast"),
+        }
+    }
+
+    /// [`Cos::fast`] over blocks of cosines (`u`, and `v` for G2), `self` matched once per
+    /// block and the loop over one material, whose run-time dispatch LLVM hoists out of it
+    /// (the door's methods are inlined whole); NaN in, NaN out.
+    fn fast_block(self, m: &AnyMicrofacet<f64>, u: &[f64], v: Option<&[f64]>, out: &mut [f64]) {
+        macro_rules! each {
+            (|$u:ident| $e:expr) => {{
+                for (o, &$u) in out.iter_mut().zip(u) {
+                    *o = if $u.is_nan() { $u } else { $e };
+                }
+            }};
+        }
+        macro_rules! each2 {
+            (|$a:ident, $b:ident| $e:expr) => {{
+                let v = v.expect("two cosines");
+                for ((o, &$a), &$b) in out.iter_mut().zip(u).zip(v) {
+                    *o = if $a.is_nan() || $b.is_nan() {
+                        f64::NAN
+                    } else {
+                        $e
+                    };
+                }
+            }};
+        }
+        match self {
+            Cos::D => each!(|u| m.d(w(u))),
+            Cos::Lambda => each!(|u| Cos::Lambda.fast(m, &[u])),
+            Cos::Sigma => each!(|u| Cos::Sigma.fast(m, &[u])),
+            Cos::G1 => each!(|u| m.g1(w(u))),
+            Cos::G2 => each2!(|a, b| m.g2(w(a), w(b))),
+            Cos::G2Separable => each2!(|a, b| m.g2_separable(w(a), w(b))),
+            Cos::P22 | Cos::P2 => unreachable!("no fast path: has_fast"),
+        }
+    }
+
+    /// The GGX closed form's slice kernel, where it has one.
+    fn kernel(self, kind: NdfKind) -> Option<Kernel> {
+        let q = match self {
+            Cos::D => Q::D,
+            Cos::Lambda => Q::Lambda,
+            Cos::G1 => Q::G1,
+            _ => return None,
+        };
+        Kernel::of(kind, q)
+    }
+}
+
+/// The quantities of directions that the blocks evaluate (σ goes through `Material::sigma`).
+#[derive(Clone, Copy)]
+enum Dir {
+    D,
+    Lambda,
+    G1,
+    G2,
+    G2Separable,
+    Pdf,
+    PdfDcos,
+}
+
+impl Dir {
+    /// Every quantity, in the order of their discriminants.
+    const ALL: [Dir; 7] = [
+        Dir::D,
+        Dir::Lambda,
+        Dir::G1,
+        Dir::G2,
+        Dir::G2Separable,
+        Dir::Pdf,
+        Dir::PdfDcos,
+    ];
+
+    /// The quantity at one or two directions.
+    #[inline(always)]
+    fn eval<M: MicrofacetDistribution<f64>>(self, m: &M, a: [f64; 3], b: [f64; 3]) -> f64 {
+        match self {
+            Dir::D => m.d(a),
+            Dir::Lambda => m.lambda(a),
+            Dir::G1 => m.g1(a),
+            Dir::G2 => m.g2(a, b),
+            Dir::G2Separable => m.g2_separable(a, b),
+            Dir::Pdf => m.pdf(a, b),
+            Dir::PdfDcos => m.pdf_dcos(a),
+        }
+    }
+
+    /// Over a block of directions (`x`, and `y` for the two-direction quantities, 3 numbers
+    /// each), `self` matched once and the loop over one material (whose dispatch LLVM then
+    /// hoists); NaN in any number of an element gives NaN.
+    fn block<M: MicrofacetDistribution<f64>>(
+        self,
+        m: &M,
+        x: &[f64],
+        y: Option<&[f64]>,
+        out: &mut [f64],
+    ) {
+        // (One function per quantity, the quantity a constant in it: inlined into one
+        // function, the seven loops exhausted LLVM's inlining budget, and Double GGX's D was
+        // then called per element, 1.7× the Rust loop.)
+        #[inline(never)]
+        fn run<M: MicrofacetDistribution<f64>, const Q: u8>(
+            m: &M,
+            x: &[f64],
+            y: Option<&[f64]>,
+            out: &mut [f64],
+        ) {
+            let q = Dir::ALL[Q as usize];
+            // (A one-direction quantity reads x twice: the loop is the same.)
+            let y = y.unwrap_or(x);
+            let (x, y) = (&x[..3 * out.len()], &y[..3 * out.len()]);
+            out.iter_mut().enumerate().for_each(|(k, o)| {
+                let a = [x[3 * k], x[3 * k + 1], x[3 * k + 2]];
+                let b = [y[3 * k], y[3 * k + 1], y[3 * k + 2]];
+                let nan = a.iter().chain(&b).fold(false, |n, v| n | v.is_nan());
+                *o = if nan { f64::NAN } else { q.eval(m, a, b) };
+            });
+        }
+        match self {
+            Dir::D => run::<M, 0>(m, x, y, out),
+            Dir::Lambda => run::<M, 1>(m, x, y, out),
+            Dir::G1 => run::<M, 2>(m, x, y, out),
+            Dir::G2 => run::<M, 3>(m, x, y, out),
+            Dir::G2Separable => run::<M, 4>(m, x, y, out),
+            Dir::Pdf => run::<M, 5>(m, x, y, out),
+            Dir::PdfDcos => run::<M, 6>(m, x, y, out),
+        }
+    }
+}
+
+/// The unit direction of cosine u in the xz plane (the fast path's argument for the
+/// functions of a cosine: an isotropic material reads only its z).
+#[inline(always)]
+fn w(u: f64) -> [f64; 3] {
+    [((1.0 - u) * (1.0 + u)).max(0.0).sqrt(), 0.0, u]
+}
+
+/// The ValueError of a cosine function called on an anisotropic material.
+fn anisotropic() -> PyErr {
+    PyValueError::new_err(
+        "the functions of a cosine are isotropic: this material is anisotropic (alpha_y != alpha); use the direction methods (d_wm, lambda_w, ...)",
+    )
+}
+
 impl NDF {
     fn build(
+        py: Python<'_>,
         kind: NdfKind,
-        alpha: f64,
-        alpha_y: Option<f64>,
-        shape: Option<f64>,
+        alpha: &Bound<'_, PyAny>,
+        alpha_y: Option<&Bound<'_, PyAny>>,
+        shape: Option<&Bound<'_, PyAny>>,
         exact: bool,
         sampler: &str,
     ) -> PyResult<Self> {
@@ -114,40 +353,88 @@ impl NDF {
                 )))
             }
         };
-        let ndf = AnyNdf::new(kind, alpha, shape).map_err(value_error)?;
-        let alpha_y = alpha_y.unwrap_or(alpha);
-        // (The parameters of the direction API validated here, cheaply, on the exact path:
-        // the fast material, whose fits take milliseconds, is built at its first use.)
-        let material = OnceLock::new();
-        match Exact::new(kind, alpha, alpha_y, shape) {
-            // (Student-T below γ = 3/2 keeps its isotropic functions: D, P22, P2 are
-            // finite there; only Λ and what needs it are not.)
-            Err(e @ ParamError::Shape { .. }) if kind == NdfKind::StudentT && alpha_y == alpha => {
-                let _ = material.set(Err(e));
+        let alpha = Param::new(py, alpha, "alpha")?;
+        let mut alpha_y = alpha_y.map(|a| Param::new(py, a, "alpha_y")).transpose()?;
+        // (αy equal to α as numbers is the isotropic material: written without it.)
+        if let (Some(ay), Some(a)) = (alpha_y.as_ref().and_then(Param::num), alpha.num()) {
+            if ay.to_bits() == a.to_bits() {
+                alpha_y = None;
             }
-            Err(e) => return Err(value_error(e)),
-            Ok(_) => {}
         }
+        let shape_name = kind.shape_name().unwrap_or("shape");
+        let shape = shape.map(|s| Param::new(py, s, shape_name)).transpose()?;
+        let mut named = vec![("alpha", &alpha)];
+        if let Some(ay) = &alpha_y {
+            named.push(("alpha_y", ay));
+        }
+        if let Some(s) = &shape {
+            named.push((shape_name, s));
+        }
+        let batch = params::broadcast(py, &named)?;
+        // Every element: the isotropic NDF (its functions of a cosine) and the direction
+        // API's parameters, checked cheaply on the exact path (the fast material, whose fits
+        // take milliseconds, is built at its first use). Student-T below γ = 3/2 keeps its
+        // isotropic functions (D, P22, P2 are finite there; only Λ and what needs it are
+        // not): its direction API's error comes at its use.
+        let isotropic = std::cell::Cell::new(true);
+        let rejection = std::cell::Cell::new(false);
+        let (has_ay, has_shape) = (alpha_y.is_some(), shape.is_some());
+        let check = |v: &[f64]| -> Result<P, ParamError> {
+            let a = v[0];
+            let ay = if has_ay { v[1] } else { a };
+            let s = has_shape.then(|| v[v.len() - 1]);
+            AnyNdf::new(kind, a, s)?;
+            match Exact::new(kind, a, ay, s) {
+                Err(ParamError::Shape { .. }) if kind == NdfKind::StudentT && ay == a => {}
+                Err(e) => return Err(e),
+                Ok(_) => {}
+            }
+            isotropic.set(isotropic.get() && ay == a);
+            rejection.set(rejection.get() || (kind == NdfKind::Gtr && s != Some(2.0)));
+            Ok(P {
+                alpha: a,
+                alpha_y: ay,
+                shape: s,
+            })
+        };
+        let one = match &batch {
+            None => {
+                let v: Vec<f64> = named.iter().map(|(_, p)| p.num().unwrap()).collect();
+                let p = check(&v).map_err(value_error)?;
+                let ndf = AnyNdf::new(kind, p.alpha, p.shape).map_err(value_error)?;
+                let material = OnceLock::new();
+                if let Err(e) = Exact::new(kind, p.alpha, p.alpha_y, p.shape) {
+                    let _ = material.set(Err(e));
+                }
+                Some(One { ndf, p, material })
+            }
+            Some(b) => {
+                params::validate(py, &named, b, |v| check(v).map(|_| ()))?;
+                None
+            }
+        };
+        let sampler_name = match sampler {
+            Sampler::Warp => "warp",
+            Sampler::Posterior if mixture(kind) => "posterior",
+            Sampler::Posterior if exact => "warp",
+            Sampler::Posterior => match kind {
+                NdfKind::DoubleGgx | NdfKind::Exponential => "rejection",
+                NdfKind::Gtr if rejection.get() => "rejection",
+                _ => "warp",
+            },
+        };
         Ok(NDF {
-            ndf,
+            kind,
+            alpha,
             alpha_y,
+            shape,
             exact,
             sampler,
-            material,
+            batch,
+            isotropic: isotropic.get(),
+            sampler_name,
+            one,
         })
-    }
-
-    /// The parameters `==` and `hash` compare: the kind, α, αy and the shape by their bits
-    /// (−0.0 cannot reach them: α > 0), `exact` and the sampler.
-    fn key(&self) -> (&'static str, u64, u64, Option<u64>, bool, &'static str) {
-        (
-            self.ndf.kind().name(),
-            self.ndf.alpha().to_bits(),
-            self.alpha_y.to_bits(),
-            self.ndf.shape().map(f64::to_bits),
-            self.exact,
-            self.sampler_arg(),
-        )
     }
 
     /// `sampler` as the constructor takes it.
@@ -158,86 +445,262 @@ impl NDF {
         }
     }
 
-    /// The fast path of quantity q, where it is the closed form (GGX).
-    fn kernel(&self, q: Q) -> Option<Kernel> {
-        Kernel::of(self.ndf.kind(), q)
+    /// The parameter arrays, as the engine's arguments (α, αy, the shape: those that are
+    /// arrays, in this order); empty where every parameter is a number.
+    pub fn arrays<'py>(&self, py: Python<'py>) -> Arrays<'py> {
+        let shape_name = self.kind.shape_name().unwrap_or("shape");
+        [
+            (Some(&self.alpha), "alpha"),
+            (self.alpha_y.as_ref(), "alpha_y"),
+            (self.shape.as_ref(), shape_name),
+        ]
+        .into_iter()
+        .filter_map(|(p, name)| match p {
+            Some(Param::Arr(a)) => Some((a.bind(py).clone(), name)),
+            _ => None,
+        })
+        .collect()
     }
 
-    /// The same NDF at roughness α (αy scaled with it), for the `alpha=` arrays of the
-    /// albedo functions; this material at None (no array given).
-    pub fn material_at(&self, alpha: Option<f64>) -> Result<Material, ParamError> {
-        let Some(alpha) = alpha else {
-            return self.get_material().clone();
+    /// One element's parameters from the values of [`NDF::arrays`] there (in their order).
+    #[inline]
+    pub fn p_of(&self, v: &[f64]) -> P {
+        if let Some(one) = &self.one {
+            return one.p;
+        }
+        let mut v = v.iter().copied();
+        let mut get = |p: &Param| match p {
+            Param::Num(x) => *x,
+            Param::Arr(_) => v.next().expect("one value per array"),
         };
-        let ay = alpha * (self.alpha_y / self.ndf.alpha());
-        let (kind, shape) = (self.ndf.kind(), self.ndf.shape());
-        Material::new(kind, alpha, ay, shape, self.exact, self.sampler)
+        let alpha = get(&self.alpha);
+        let alpha_y = self.alpha_y.as_ref().map_or(alpha, &mut get);
+        let shape = self.shape.as_ref().map(&mut get);
+        P {
+            alpha,
+            alpha_y,
+            shape,
+        }
     }
 
-    /// Whether α is a valid roughness of this material's `alpha=` arrays (αy scaled with it;
-    /// the exact path's check, cheap, where building the fast material fits tables).
-    pub fn check_alpha(&self, alpha: f64) -> Result<(), ParamError> {
-        let ay = alpha * (self.alpha_y / self.ndf.alpha());
-        Exact::new(self.ndf.kind(), alpha, ay, self.ndf.shape()).map(|_| ())
+    /// `f` of the direction API's material at `p` (built once for a run of elements with the
+    /// same parameters; this object's own where its parameters are numbers).
+    #[inline]
+    pub fn with_material<R>(&self, p: P, f: impl FnOnce(&Material) -> R) -> Result<R, ParamError> {
+        if let Some(one) = &self.one {
+            return match self.get_material(one) {
+                Ok(m) => Ok(f(m)),
+                Err(e) => Err(*e),
+            };
+        }
+        with_material(self.kind, p, self.exact, self.sampler, f)
     }
 
     /// The direction API's material, or why there is none; built at the first call.
-    fn get_material(&self) -> &Result<Material, ParamError> {
-        self.material.get_or_init(|| {
-            let (kind, shape) = (self.ndf.kind(), self.ndf.shape());
-            let ax = self.ndf.alpha();
-            Material::new(kind, ax, self.alpha_y, shape, self.exact, self.sampler)
+    fn get_material<'a>(&self, one: &'a One) -> &'a Result<Material, ParamError> {
+        one.material.get_or_init(|| {
+            let p = one.p;
+            Material::new(
+                self.kind,
+                p.alpha,
+                p.alpha_y,
+                p.shape,
+                self.exact,
+                self.sampler,
+            )
         })
     }
 
-    /// The direction API's material (or why there is none, as a ValueError).
+    /// The direction API's one material (or why there is none, as a ValueError); ValueError
+    /// for an object of parameter arrays (one material per element: `AlbedoTable`).
     pub fn material(&self) -> PyResult<&Material> {
-        self.get_material().as_ref().map_err(|e| value_error(*e))
+        match &self.one {
+            Some(one) => self.get_material(one).as_ref().map_err(|e| value_error(*e)),
+            None => Err(PyValueError::new_err(
+                "this needs one material: the NDF's parameters are arrays (build one per element)",
+            )),
+        }
     }
 
-    /// The isotropic NDF at each α of `alpha` (broadcast with the arguments), or this one.
-    /// `args`: the arguments with their names and domains (cosines, slopes).
-    fn iso<'py, const K: usize>(
+    /// The parameter arrays' broadcast shape (empty where every parameter is a number).
+    pub fn param_shape_vec(&self) -> Vec<usize> {
+        self.batch.clone().unwrap_or_default()
+    }
+
+    /// Whether the parameters are arrays.
+    pub fn batched(&self) -> bool {
+        self.one.is_none()
+    }
+
+    /// `f(material, i, a, out)` for every element i of the arguments `items` broadcast with
+    /// the parameter arrays (a: the arguments' numbers), with the element's material.
+    pub fn each<'py>(
         &self,
         py: Python<'py>,
-        args: [(&Bound<'py, PyAny>, &str, Domain<'_>); K],
-        alpha: Option<&Bound<'py, PyAny>>,
-        kernel: Option<Kernel>,
-        f: impl Fn(&AnyNdf, [f64; K]) -> f64 + Sync,
-    ) -> PyResult<PyObject> {
-        if let (Some(k), [(u, _, _)]) = (kernel, &args[..]) {
-            if alpha.is_some() || self.alpha_y == self.ndf.alpha() {
-                return apply_kernel(py, self.ndf.kind(), u, alpha, self.ndf.alpha(), k);
-            }
+        items: &[Item<'_, 'py>],
+        outs: &[usize],
+        parallel: usize,
+        f: impl Fn(&Material, usize, &[&[f64]], &mut [f64]) + Sync,
+    ) -> PyResult<Vec<PyObject>> {
+        if self.one.is_some() {
+            let m = self.material()?;
+            return apply_vec(py, items, outs, parallel, |i, a, o| {
+                f(m, i, a, o);
+                Ok(())
+            });
         }
-        match alpha {
-            None => {
-                if self.alpha_y != self.ndf.alpha() {
-                    return Err(PyValueError::new_err(
-                        "the functions of a cosine are isotropic: this material is anisotropic (alpha_y != alpha); use the direction methods (d_wm, lambda_w, ...) or pass alpha=",
-                    ));
-                }
-                let n = self.ndf;
-                apply(py, args, move |x| Ok(f(&n, x)))
-            }
-            Some(alpha) => {
-                let (kind, shape) = (self.ndf.kind(), self.ndf.shape());
-                let check = |a: f64| AnyNdf::new(kind, a, shape).map(|_| ());
-                // [args..., alpha] through a K + 1 array: the engine's K is const.
-                let items: Vec<Item<'_, 'py>> = args
-                    .iter()
-                    .map(|&(a, name, d)| (a, 0, name, d))
-                    .chain(std::iter::once((alpha, 0, "alpha", Domain::Param(&check))))
-                    .collect();
-                let mut out = apply_vec(py, &items, &[0], PARALLEL, |_, a, o| {
-                    let n = AnyNdf::new(kind, a[K][0], shape)?;
-                    o[0] = f(&n, std::array::from_fn(|k| a[k][0]));
-                    Ok(())
-                })?;
-                Ok(out.remove(0))
-            }
-        }
+        let arrays = self.arrays(py);
+        let all = params::with_arrays(items, &arrays);
+        let k = items.len();
+        apply_vec(py, &all, outs, parallel, |i, a, o| {
+            let v: [f64; 3] = std::array::from_fn(|j| a.get(k + j).map_or(0.0, |s| s[0]));
+            let p = self.p_of(&v[..a.len() - k]);
+            self.with_material(p, |m| f(m, i, &a[..k], o))
+        })
     }
+
+    /// A quantity of directions (`dirs`: one or two direction arguments): in blocks over one
+    /// material where the parameters are numbers, else per element (as [`NDF::map`]).
+    fn dir<'py>(
+        &self,
+        py: Python<'py>,
+        q: Dir,
+        dirs: &[(&Bound<'py, PyAny>, &str)],
+    ) -> PyResult<PyObject> {
+        let items: Vec<Item<'_, 'py>> = dirs.iter().map(|&(a, n)| (a, 3, n, Domain::Any)).collect();
+        if self.one.is_none() || crate::engine::one_element(&items) {
+            return self.map(py, &items, |m, a| {
+                q.eval(m, v3(a[0]), a.get(1).map_or([0.0; 3], |b| v3(b)))
+            });
+        }
+        let m = self.material()?;
+        let a = Args::new(py, &items)?;
+        let x = a.slice(0)?;
+        let y = if items.len() > 1 {
+            Some(a.slice(1)?)
+        } else {
+            None
+        };
+        let mut out = a.run_blocks(py, 1, &[0], BLOCK, PARALLEL, |start, o| {
+            let r = 3 * start..3 * (start + o.len());
+            let y = y.map(|y| &y[r.clone()]);
+            match m {
+                Material::Fast(d) => q.block(d, &x[r], y, o),
+                m => q.block(m, &x[r], y, o),
+            }
+            Ok(())
+        })?;
+        Ok(out.remove(0))
+    }
+
+    /// One number per element of direction arguments (as [`NDF::each`]).
+    fn map<'py>(
+        &self,
+        py: Python<'py>,
+        items: &[Item<'_, 'py>],
+        f: impl Fn(&Material, &[&[f64]]) -> f64 + Sync,
+    ) -> PyResult<PyObject> {
+        let mut o = self.each(py, items, &[0], PARALLEL, |m, _, a, o| o[0] = f(m, a))?;
+        Ok(o.remove(0))
+    }
+
+    /// A quantity of a cosine over `args` (cosines or slopes, broadcast together and with
+    /// the parameter arrays): the exact path, GGX's closed forms, or (`fast`) the fast
+    /// material's.
+    fn cos<'py>(
+        &self,
+        py: Python<'py>,
+        q: Cos,
+        args: &[(&Bound<'py, PyAny>, &str, Domain<'_>)],
+        fast: bool,
+    ) -> PyResult<PyObject> {
+        if !self.isotropic {
+            return Err(anisotropic());
+        }
+        let kind = self.kind;
+        if let (Some(k), [(u, _, _)]) = (q.kernel(kind), args) {
+            let alpha = match &self.alpha {
+                Param::Arr(a) => Some(a.bind(py)),
+                Param::Num(_) => None,
+            };
+            let alpha0 = self.alpha.num().unwrap_or(f64::NAN);
+            return apply_kernel(py, u, alpha, alpha0, k, q == Cos::Lambda);
+        }
+        let fast = fast && q.has_fast();
+        if let Some(one) = &self.one {
+            if fast {
+                let p = one.p;
+                let m =
+                    AnyMicrofacet::new(kind, p.alpha, p.alpha_y, p.shape).map_err(value_error)?;
+                // (No fast path: the generalised exponential's is its exact one.)
+                if m.is_fast() {
+                    return fast_cos(py, q, &m, args);
+                }
+            }
+            let n = one.ndf;
+            return apply(py, args, move |x| Ok(q.exact(&n, x)));
+        }
+        let arrays = self.arrays(py);
+        let mut all: Vec<(&Bound<'py, PyAny>, &str, Domain<'_>)> = args.to_vec();
+        all.extend(
+            arrays
+                .iter()
+                .map(|(a, name)| (a, *name, crate::engine::FIXED)),
+        );
+        let k = args.len();
+        apply(py, &all, |x| {
+            let p = self.p_of(&x[k..]);
+            if fast {
+                let y = with_material(kind, p, false, self.sampler, |m| match m {
+                    Material::Fast(m) if m.is_fast() => Some(q.fast(m, &x[..k])),
+                    _ => None,
+                })?;
+                if let Some(y) = y {
+                    return Ok(y);
+                }
+            }
+            with_isotropic(kind, p.alpha, p.shape, |n| q.exact(n, &x[..k]))
+        })
+    }
+
+    /// The parameters as `(name, param)`, for `==`, `hash` and `repr`.
+    fn named(&self) -> Vec<(&'static str, Option<&Param>)> {
+        vec![
+            ("alpha", Some(&self.alpha)),
+            (
+                self.kind.shape_name().unwrap_or("shape"),
+                self.shape.as_ref(),
+            ),
+            ("alpha_y", self.alpha_y.as_ref()),
+        ]
+    }
+}
+
+/// [`Cos::fast`] of one material over cosine arguments broadcast together: numbers without
+/// arrays, arrays in blocks of [`BLOCK`] ([`Cos::fast_block`]).
+fn fast_cos<'py>(
+    py: Python<'py>,
+    q: Cos,
+    m: &AnyMicrofacet<f64>,
+    args: &[(&Bound<'py, PyAny>, &str, Domain<'_>)],
+) -> PyResult<PyObject> {
+    if args.iter().all(|a| is_number(a.0)) {
+        return apply(py, args, |x| Ok(q.fast(m, x)));
+    }
+    let items: Vec<Item<'_, 'py>> = args.iter().map(|&(a, name, d)| (a, 0, name, d)).collect();
+    let a = Args::new(py, &items)?;
+    let u = a.slice(0)?;
+    let v = if args.len() > 1 {
+        Some(a.slice(1)?)
+    } else {
+        None
+    };
+    let mut out = a.run_blocks(py, 1, &[0], BLOCK, PARALLEL, |start, o| {
+        let range = start..start + o.len();
+        q.fast_block(m, &u[range.clone()], v.map(|v| &v[range]), o);
+        Ok(())
+    })?;
+    Ok(out.remove(0))
 }
 
 /// A cosine argument (u, u_o, u_i): [−1, 1].
@@ -258,23 +721,30 @@ fn slope<'a, 'py>(
 
 #[pymethods]
 impl NDF {
-    /// The roughness α (αx of an anisotropic material).
+    /// The roughness α (αx of an anisotropic material): a float, or the array given.
     #[getter]
-    fn alpha(&self) -> f64 {
-        self.ndf.alpha()
+    fn alpha<'py>(&self, py: Python<'py>) -> PyResult<Bound<'py, PyAny>> {
+        self.alpha.object(py)
     }
 
-    /// αy (α for an isotropic material).
+    /// αy (α for an isotropic material): a float, or the array given.
     #[getter]
-    fn alpha_y(&self) -> f64 {
-        self.alpha_y
+    fn alpha_y<'py>(&self, py: Python<'py>) -> PyResult<Bound<'py, PyAny>> {
+        self.alpha_y.as_ref().unwrap_or(&self.alpha).object(py)
     }
 
     /// The shape parameter (γ of GTR, Student-T and the generalised exponential, a of
-    /// Bessel-K), or None.
+    /// Bessel-K; a float or the array given), or None.
     #[getter]
-    fn shape(&self) -> Option<f64> {
-        self.ndf.shape()
+    fn shape<'py>(&self, py: Python<'py>) -> PyResult<Option<Bound<'py, PyAny>>> {
+        self.shape.as_ref().map(|s| s.object(py)).transpose()
+    }
+
+    /// The broadcast shape of the parameter arrays (``()`` where every parameter is a
+    /// number): every method's output has the shape of its arguments broadcast with it.
+    #[getter]
+    fn param_shape<'py>(&self, py: Python<'py>) -> PyResult<Bound<'py, PyTuple>> {
+        PyTuple::new(py, self.batch.clone().unwrap_or_default())
     }
 
     /// Whether the directions, samplers, BSDFs and albedos run the exact path
@@ -297,37 +767,31 @@ impl NDF {
     /// inverts quadratures, 8 µs to 3 ms a sample, 20 ms near Student-T's γ = 3/2).
     #[getter]
     fn sampler(&self) -> &'static str {
-        match self.get_material() {
-            Ok(m) => m.sampler_name(),
-            // (No direction API: Student-T at γ ≤ 3/2.)
-            Err(_) if self.sampler == Sampler::Posterior => "posterior",
-            Err(_) => "warp",
-        }
+        self.sampler_name
     }
 
     /// The NDF's name, as the command line spells it (``ggx``, ``student_t``, ...).
     #[getter]
     fn name(&self) -> &'static str {
-        self.ndf.kind().name()
+        self.kind.name()
     }
 
-    /// The constructor call that builds this NDF, evaluable back:
-    /// ``microsurface.GTR(0.3, gamma=1.5, alpha_y=0.2, exact=True)`` (numbers as Python
-    /// writes them, so the round trip is exact; defaults left out).
+    /// The constructor call that builds this NDF, evaluable back (with ``import numpy``
+    /// for parameter arrays): ``microsurface.GTR(0.3, gamma=1.5, alpha_y=0.2, exact=True)``,
+    /// ``microsurface.GGX(numpy.array([0.1, 0.2]))`` (numbers as Python writes them, so the
+    /// round trip is exact; defaults left out).
     fn __repr__(slf: &Bound<'_, Self>) -> PyResult<String> {
         let py = slf.py();
         let this = slf.get();
-        let num = |x: f64| -> PyResult<String> { Ok(x.into_pyobject(py)?.repr()?.to_string()) };
         let mut s = format!(
             "microsurface.{}({}",
             slf.get_type().name()?,
-            num(this.ndf.alpha())?
+            this.alpha.repr(py)?
         );
-        if let (Some(shape), Some(name)) = (this.ndf.shape(), this.ndf.kind().shape_name()) {
-            s += &format!(", {name}={}", num(shape)?);
-        }
-        if this.alpha_y != this.ndf.alpha() {
-            s += &format!(", alpha_y={}", num(this.alpha_y)?);
+        for (name, p) in &this.named()[1..] {
+            if let Some(p) = p {
+                s += &format!(", {name}={}", p.repr(py)?);
+            }
         }
         if this.exact {
             s += ", exact=True";
@@ -345,14 +809,53 @@ impl NDF {
     ) -> PyResult<(Bound<'py, PyAny>, Bound<'py, PyTuple>)> {
         let py = slf.py();
         let this = slf.get();
-        let sampler = this.sampler_arg();
-        let args = match this.ndf.shape() {
-            Some(shape) => {
-                (this.ndf.alpha(), shape, this.alpha_y, this.exact, sampler).into_pyobject(py)?
+        let mut args = vec![this.alpha.object(py)?];
+        if let Some(s) = &this.shape {
+            args.push(s.object(py)?);
+        }
+        args.push(match &this.alpha_y {
+            Some(ay) => ay.object(py)?,
+            None => py.None().into_bound(py),
+        });
+        args.push(this.exact.into_pyobject(py)?.to_owned().into_any());
+        args.push(this.sampler_arg().into_pyobject(py)?.into_any());
+        Ok((slf.get_type().into_any(), PyTuple::new(py, args)?))
+    }
+
+    /// The same NDF with some of its parameters changed (``dataclasses.replace``'s way):
+    /// ``replace(alpha=..., alpha_y=..., gamma=... or a=..., exact=..., sampler=...)``, the
+    /// others kept (an isotropic NDF stays isotropic at a new α). TypeError for another
+    /// name.
+    #[pyo3(signature = (**changes))]
+    fn replace<'py>(
+        slf: &Bound<'py, Self>,
+        changes: Option<&Bound<'py, pyo3::types::PyDict>>,
+    ) -> PyResult<Bound<'py, PyAny>> {
+        let py = slf.py();
+        let this = slf.get();
+        let kwargs = pyo3::types::PyDict::new(py);
+        kwargs.set_item("alpha", this.alpha.object(py)?)?;
+        let shape_name = this.kind.shape_name();
+        if let (Some(s), Some(name)) = (&this.shape, shape_name) {
+            kwargs.set_item(name, s.object(py)?)?;
+        }
+        if let Some(ay) = &this.alpha_y {
+            kwargs.set_item("alpha_y", ay.object(py)?)?;
+        }
+        kwargs.set_item("exact", this.exact)?;
+        kwargs.set_item("sampler", this.sampler_arg())?;
+        for (k, v) in changes.into_iter().flatten() {
+            let name: String = k.extract()?;
+            let known = ["alpha", "alpha_y", "exact", "sampler"].contains(&name.as_str())
+                || Some(name.as_str()) == shape_name;
+            if !known {
+                return Err(pyo3::exceptions::PyTypeError::new_err(format!(
+                    "replace() got an unexpected parameter {name:?}"
+                )));
             }
-            None => (this.ndf.alpha(), this.alpha_y, this.exact, sampler).into_pyobject(py)?,
-        };
-        Ok((slf.get_type().into_any(), args))
+            kwargs.set_item(k, v)?;
+        }
+        slf.get_type().call((), Some(&kwargs))
     }
 
     /// An NDF is immutable: its copy is itself (its cached fast-path material shared).
@@ -365,147 +868,114 @@ impl NDF {
         slf
     }
 
-    /// Equal when of the same class with the same parameters (α, αy, shape, ``exact``,
-    /// ``sampler``).
-    fn __eq__(slf: &Bound<'_, Self>, other: &Bound<'_, PyAny>) -> bool {
+    /// Equal when of the same class with the same parameters (α, αy, shape: equal numbers,
+    /// or arrays of the same shape and values; ``exact``, ``sampler``).
+    fn __eq__(slf: &Bound<'_, Self>, other: &Bound<'_, PyAny>) -> PyResult<bool> {
         let Ok(o) = other.downcast::<NDF>() else {
-            return false;
+            return Ok(false);
         };
-        slf.get_type().is(o.get_type()) && slf.get().key() == o.get().key()
+        let py = slf.py();
+        let (a, b) = (slf.get(), o.get());
+        if !slf.get_type().is(o.get_type()) || a.exact != b.exact || a.sampler != b.sampler {
+            return Ok(false);
+        }
+        for ((_, x), (_, y)) in a.named().into_iter().zip(b.named()) {
+            let same = match (x, y) {
+                (None, None) => true,
+                (Some(x), Some(y)) => x.same(py, y)?,
+                _ => false,
+            };
+            if !same {
+                return Ok(false);
+            }
+        }
+        Ok(true)
     }
 
     /// By the parameters ``==`` compares.
     fn __hash__(slf: &Bound<'_, Self>) -> PyResult<isize> {
-        let key = slf.get().key();
+        let py = slf.py();
+        let this = slf.get();
         let mut h = std::collections::hash_map::DefaultHasher::new();
         std::hash::Hash::hash(&slf.get_type().name()?.to_string(), &mut h);
-        std::hash::Hash::hash(&key, &mut h);
+        for (_, p) in this.named() {
+            std::hash::Hash::hash(&p.map(|p| p.hash_key(py)).transpose()?, &mut h);
+        }
+        std::hash::Hash::hash(&(this.exact, this.sampler_arg()), &mut h);
         Ok(std::hash::Hasher::finish(&h) as isize)
     }
 
-    /// D(u): the density of microfacet normals per solid angle at u = cos θm ∈ [−1, 1] (0 for u ≤ 0;
-    /// +∞ at u = 1 for the NDFs with a pole there: Ei, Erfc, K0, Bessel-K a ≤ 1).
-    /// ``alpha``: an array of roughnesses broadcast with u (default: this NDF's).
-    #[pyo3(signature = (u, alpha = None))]
-    fn d(
-        &self,
-        py: Python<'_>,
-        u: &Bound<'_, PyAny>,
-        alpha: Option<&Bound<'_, PyAny>>,
-    ) -> PyResult<PyObject> {
-        self.iso(py, [cosine(u, "u")], alpha, self.kernel(Q::D), |n, [u]| {
-            n.d(u)
-        })
+    /// D(u): the density of microfacet normals per solid angle at u = cos θm ∈ [−1, 1] (0
+    /// for u ≤ 0; +∞ at u = 1 for the NDFs with a pole there: Ei, Erfc, K0, Bessel-K a ≤ 1).
+    /// ``fast=True``: the renderer's fast path (see the class).
+    #[pyo3(signature = (u, fast = false))]
+    fn d(&self, py: Python<'_>, u: &Bound<'_, PyAny>, fast: bool) -> PyResult<PyObject> {
+        self.cos(py, Cos::D, &[cosine(u, "u")], fast)
     }
 
-    /// Smith's Λ(u) of a direction at u = cos θ (Λ(|u|) for u < 0; +∞ at u = 0; 0 at 1).
-    /// (``lambda`` is a Python keyword.) ``alpha`` as for ``d``.
-    #[pyo3(signature = (u, alpha = None))]
-    fn lambda_(
-        &self,
-        py: Python<'_>,
-        u: &Bound<'_, PyAny>,
-        alpha: Option<&Bound<'_, PyAny>>,
-    ) -> PyResult<PyObject> {
-        self.iso(
-            py,
-            [cosine(u, "u")],
-            alpha,
-            self.kernel(Q::Lambda),
-            |n, [u]| n.lambda(u),
-        )
+    /// Smith's Λ(u) of a direction at u = cos θ: +∞ at u = 0, 0 at 1, and for u < 0 Heitz's
+    /// extension Λ(u) = −1 − Λ(|u|) (so that σ(u) = u(1 + Λ(u)) for every u ≠ 0), as the
+    /// Rust ``Ndf::lambda``. (``lambda`` is a Python keyword.) ``fast`` as for ``d``.
+    #[pyo3(signature = (u, fast = false))]
+    fn lambda_(&self, py: Python<'_>, u: &Bound<'_, PyAny>, fast: bool) -> PyResult<PyObject> {
+        self.cos(py, Cos::Lambda, &[cosine(u, "u")], fast)
     }
 
     /// The projected area σ(u) = ∫ max(0, ω·m) D(m) dm of a direction at signed u = cos θ
-    /// (σ(u) = u(1 + Λ(u)) above the horizon, |u| Λ(|u|) below; σ(0) finite). ``alpha`` as
+    /// (σ(u) = u(1 + Λ(u)) above the horizon, |u| Λ(|u|) below; σ(0) finite). ``fast`` as
     /// for ``d``.
-    #[pyo3(signature = (u, alpha = None))]
-    fn sigma(
-        &self,
-        py: Python<'_>,
-        u: &Bound<'_, PyAny>,
-        alpha: Option<&Bound<'_, PyAny>>,
-    ) -> PyResult<PyObject> {
-        self.iso(py, [cosine(u, "u")], alpha, None, |n, [u]| n.sigma(u))
+    #[pyo3(signature = (u, fast = false))]
+    fn sigma(&self, py: Python<'_>, u: &Bound<'_, PyAny>, fast: bool) -> PyResult<PyObject> {
+        self.cos(py, Cos::Sigma, &[cosine(u, "u")], fast)
     }
 
-    /// Smith's masking G1(u) = 1/(1 + Λ(|u|)). ``alpha`` as for ``d``.
-    #[pyo3(signature = (u, alpha = None))]
-    fn g1(
-        &self,
-        py: Python<'_>,
-        u: &Bound<'_, PyAny>,
-        alpha: Option<&Bound<'_, PyAny>>,
-    ) -> PyResult<PyObject> {
-        self.iso(py, [cosine(u, "u")], alpha, self.kernel(Q::G1), |n, [u]| {
-            n.g1(u)
-        })
+    /// Smith's masking G1(u) = 1/(1 + Λ(|u|)). ``fast`` as for ``d``.
+    #[pyo3(signature = (u, fast = false))]
+    fn g1(&self, py: Python<'_>, u: &Bound<'_, PyAny>, fast: bool) -> PyResult<PyObject> {
+        self.cos(py, Cos::G1, &[cosine(u, "u")], fast)
     }
 
-    /// Height-correlated masking-shadowing G2(u_o, u_i) = 1/(1 + Λ(u_o) + Λ(u_i)) (Heitz
-    /// 2014), broadcast over both arguments. ``alpha`` as for ``d``.
-    #[pyo3(signature = (u_o, u_i, alpha = None))]
+    /// Height-correlated masking-shadowing G2(u_o, u_i) = 1/(1 + Λ(|u_o|) + Λ(|u_i|))
+    /// (Heitz 2014), broadcast over both arguments. ``fast`` as for ``d``.
+    #[pyo3(signature = (u_o, u_i, fast = false))]
     fn g2(
         &self,
         py: Python<'_>,
         u_o: &Bound<'_, PyAny>,
         u_i: &Bound<'_, PyAny>,
-        alpha: Option<&Bound<'_, PyAny>>,
+        fast: bool,
     ) -> PyResult<PyObject> {
-        self.iso(
-            py,
-            [cosine(u_o, "u_o"), cosine(u_i, "u_i")],
-            alpha,
-            None,
-            |n, [a, b]| n.g2(a, b),
-        )
+        let args = [cosine(u_o, "u_o"), cosine(u_i, "u_i")];
+        self.cos(py, Cos::G2, &args, fast)
     }
 
     /// Separable masking-shadowing G1(u_o) G1(u_i), broadcast over both arguments.
-    #[pyo3(signature = (u_o, u_i, alpha = None))]
+    #[pyo3(signature = (u_o, u_i, fast = false))]
     fn g2_separable(
         &self,
         py: Python<'_>,
         u_o: &Bound<'_, PyAny>,
         u_i: &Bound<'_, PyAny>,
-        alpha: Option<&Bound<'_, PyAny>>,
+        fast: bool,
     ) -> PyResult<PyObject> {
-        self.iso(
-            py,
-            [cosine(u_o, "u_o"), cosine(u_i, "u_i")],
-            alpha,
-            None,
-            |n, [a, b]| n.g2_separable(a, b),
-        )
+        let args = [cosine(u_o, "u_o"), cosine(u_i, "u_i")];
+        self.cos(py, Cos::G2Separable, &args, fast)
     }
 
-    /// The slope density P22(p, q) = D(u) u⁴ (u = 1/√(1 + p² + q²)), broadcast over p and q.
-    #[pyo3(signature = (p, q, alpha = None))]
+    /// The slope density P22(p, q) = D(u) u⁴ (u = 1/√(1 + p² + q²)), broadcast over p and
+    /// q (the exact path: the renderer's has no slope densities).
     fn p22(
         &self,
         py: Python<'_>,
         p: &Bound<'_, PyAny>,
         q: &Bound<'_, PyAny>,
-        alpha: Option<&Bound<'_, PyAny>>,
     ) -> PyResult<PyObject> {
-        self.iso(
-            py,
-            [slope(p, "p"), slope(q, "q")],
-            alpha,
-            None,
-            |n, [p, q]| n.p22(p, q),
-        )
+        self.cos(py, Cos::P22, &[slope(p, "p"), slope(q, "q")], false)
     }
 
-    /// The marginal slope density P2(p) = ∫ P22(p, q) dq.
-    #[pyo3(signature = (p, alpha = None))]
-    fn p2(
-        &self,
-        py: Python<'_>,
-        p: &Bound<'_, PyAny>,
-        alpha: Option<&Bound<'_, PyAny>>,
-    ) -> PyResult<PyObject> {
-        self.iso(py, [slope(p, "p")], alpha, None, |n, [p]| n.p2(p))
+    /// The marginal slope density P2(p) = ∫ P22(p, q) dq (the exact path).
+    fn p2(&self, py: Python<'_>, p: &Bound<'_, PyAny>) -> PyResult<PyObject> {
+        self.cos(py, Cos::P2, &[slope(p, "p")], false)
     }
 
     // ---- Directions: the anisotropic material (Rust: microsurface::AnyMicrofacet, or
@@ -514,27 +984,23 @@ impl NDF {
 
     /// D(wm) of unit normals wm (shape (..., 3)); 0 for wm.z ≤ 0.
     fn d_wm(&self, py: Python<'_>, wm: &Bound<'_, PyAny>) -> PyResult<PyObject> {
-        let e = self.material()?;
-        map_vec(py, &[(wm, 3, "wm", Domain::Any)], |a| e.d(v3(a[0])))
+        self.dir(py, Dir::D, &[(wm, "wm")])
     }
 
     /// Smith Λ(w) of directions w (the side w comes from; +∞ on the horizon).
     fn lambda_w(&self, py: Python<'_>, w: &Bound<'_, PyAny>) -> PyResult<PyObject> {
-        let e = self.material()?;
-        map_vec(py, &[(w, 3, "w", Domain::Any)], |a| e.lambda(v3(a[0])))
+        self.dir(py, Dir::Lambda, &[(w, "w")])
     }
 
     /// G1(w) = 1/(1 + Λ(w)).
     fn g1_w(&self, py: Python<'_>, w: &Bound<'_, PyAny>) -> PyResult<PyObject> {
-        let e = self.material()?;
-        map_vec(py, &[(w, 3, "w", Domain::Any)], |a| e.g1(v3(a[0])))
+        self.dir(py, Dir::G1, &[(w, "w")])
     }
 
     /// The projected area σ(w) = |w.z|(1 + Λ(w)) (finite on the horizon), w mirrored to
     /// the upper hemisphere.
     fn sigma_w(&self, py: Python<'_>, w: &Bound<'_, PyAny>) -> PyResult<PyObject> {
-        let e = self.material()?;
-        map_vec(py, &[(w, 3, "w", Domain::Any)], |a| e.sigma(v3(a[0])))
+        self.map(py, &[(w, 3, "w", Domain::Any)], |e, a| e.sigma(v3(a[0])))
     }
 
     /// Height-correlated G2(wo, wi) = 1/(1 + Λ(wo) + Λ(wi)); ``separable=True``:
@@ -547,19 +1013,8 @@ impl NDF {
         wi: &Bound<'_, PyAny>,
         separable: bool,
     ) -> PyResult<PyObject> {
-        let e = self.material()?;
-        map_vec(
-            py,
-            &[(wo, 3, "wo", Domain::Any), (wi, 3, "wi", Domain::Any)],
-            |a| {
-                let (wo, wi) = (v3(a[0]), v3(a[1]));
-                if separable {
-                    e.g2_separable(wo, wi)
-                } else {
-                    e.g2(wo, wi)
-                }
-            },
-        )
+        let q = if separable { Dir::G2Separable } else { Dir::G2 };
+        self.dir(py, q, &[(wo, "wo"), (wi, "wi")])
     }
 
     /// The visible-normal density D_w(wm) = G1(w) max(0, w·wm) D(wm)/|w.z| per solid angle
@@ -570,12 +1025,7 @@ impl NDF {
         w: &Bound<'_, PyAny>,
         wm: &Bound<'_, PyAny>,
     ) -> PyResult<PyObject> {
-        let e = self.material()?;
-        map_vec(
-            py,
-            &[(w, 3, "w", Domain::Any), (wm, 3, "wm", Domain::Any)],
-            |a| e.pdf(v3(a[0]), v3(a[1])),
-        )
+        self.dir(py, Dir::Pdf, &[(w, "w"), (wm, "wm")])
     }
 
     /// Visible normals for directions w: ``sample_visible(w, u)`` with uniforms u of shape
@@ -593,19 +1043,14 @@ impl NDF {
         u: &Bound<'_, PyAny>,
         n: Option<i64>,
     ) -> PyResult<PyObject> {
-        let e = self.material()?;
         let u = uniforms(py, u, n, 2)?;
-        samples(
-            py,
-            &[(w, 3, "w", Domain::Any), (&u, 2, "u", Domain::Uniform)],
-            |a| e.sample(v3(a[0]), [a[1][0], a[1][1]]),
-        )
+        let items = [(w, 3, "w", Domain::Any), (&u, 2, "u", Domain::Uniform)];
+        self.samples(py, &items, |e, a| e.sample(v3(a[0]), [a[1][0], a[1][1]]))
     }
 
     /// The density D(wm) cos θm of ``sample_dcos`` (0 for wm.z ≤ 0).
     fn pdf_dcos(&self, py: Python<'_>, wm: &Bound<'_, PyAny>) -> PyResult<PyObject> {
-        let e = self.material()?;
-        map_vec(py, &[(wm, 3, "wm", Domain::Any)], |a| e.pdf_dcos(v3(a[0])))
+        self.dir(py, Dir::PdfDcos, &[(wm, "wm")])
     }
 
     /// Normals distributed as D(m) cos θm: ``sample_dcos(u)`` (u of shape (..., 2)) or
@@ -617,9 +1062,8 @@ impl NDF {
         u: &Bound<'_, PyAny>,
         n: Option<i64>,
     ) -> PyResult<PyObject> {
-        let e = self.material()?;
         let u = uniforms(py, u, n, 2)?;
-        samples(py, &[(&u, 2, "u", Domain::Uniform)], |a| {
+        self.samples(py, &[(&u, 2, "u", Domain::Uniform)], |e, a| {
             e.sample_dcos([a[0][0], a[0][1]])
         })
     }
@@ -628,17 +1072,24 @@ impl NDF {
 
     /// The albedo of the microsurface by scattering order, by Heitz et al.'s random walk
     /// (2016; uniform heights), from directions at cos θo = ``mu`` and azimuth ``phi``
-    /// (broadcast together): F = 1 mirror facets (the white furnace, a conductor's
-    /// energy), or dielectric facets of relative index ``eta``. ``walks`` walks per
-    /// element, seeded by ``seed`` and the element's index (the same numbers whatever the
-    /// threads). Returns ``Albedo(reflect, reflect_stderr, transmit, transmit_stderr,
-    /// total, total_stderr)``: reflect and transmit of shape (..., 4) for the orders 1, 2,
-    /// 3 and ≥ 4, with their standard errors; total (...) is reflect + transmit summed
-    /// over orders. ``mu`` ∈ [−1, 1], ``phi`` finite, ``walks`` ≥ 1 (else ValueError); a NaN
-    /// ``mu`` or ``phi`` gives NaN fields. ``alpha``: an array of roughnesses broadcast with mu and phi (αy scaled
-    /// with α), for tables over (α, μ) in one call. The walk runs this NDF's path (fast by
-    /// default, ``exact=True`` the exact one).
-    #[pyo3(signature = (mu, phi = None, walks = 100_000, seed = 0, eta = None, alpha = None))]
+    /// (broadcast together, and with the parameter arrays: tables over (α, μ) in one call):
+    /// F = 1 mirror facets (the white furnace, a conductor's energy), or dielectric facets
+    /// of relative index ``eta``. ``walks`` walks per element, seeded by ``seed`` and the
+    /// element's index (the same numbers whatever the threads). Returns ``Albedo(reflect,
+    /// reflect_stderr, transmit, transmit_stderr, total, total_stderr)``: reflect and
+    /// transmit of shape (..., ``orders``) for the orders 1, 2, …, ``orders`` − 1 and
+    /// ≥ ``orders`` (default 4: 1, 2, 3, ≥ 4; the same walks give the same lower orders for
+    /// any ``orders``, 1 ≤ ``orders`` ≤ 1000), with their standard errors; total (...) is
+    /// reflect + transmit summed over orders (an F = 1 furnace conserves energy walk by
+    /// walk: its total is 1 with standard error 0). ``progress=True``: a tqdm bar over the
+    /// elements where tqdm is installed (silent otherwise). ``mu`` ∈ [−1, 1],
+    /// ``phi`` finite, ``walks`` ≥ 1 (else ValueError); a NaN ``mu`` or ``phi`` gives NaN
+    /// fields. The walk runs this NDF's path (fast by default, ``exact=True`` the exact one).
+    /// Dielectric facets: order 1 is single scattering with the exact height-correlated
+    /// transmission masking B(1 + Λo, 1 + Λi) (``single_scattering_albedo(ndf, mu, eta=eta,
+    /// masking='exact')``; ``Dielectric(..., masking='correlated_beta')``), not pbrt's
+    /// 1/(1 + Λo + Λi), the ``Dielectric`` BSDF's default (``masking='pbrt'`` there).
+    #[pyo3(signature = (mu, phi = None, walks = 100_000, seed = 0, eta = None, orders = 4, progress = false))]
     #[allow(clippy::too_many_arguments)]
     fn albedo(
         &self,
@@ -648,9 +1099,28 @@ impl NDF {
         walks: i64,
         seed: i128,
         eta: Option<f64>,
-        alpha: Option<&Bound<'_, PyAny>>,
+        orders: i64,
+        progress: bool,
     ) -> PyResult<PyObject> {
-        albedo::walk(self, py, mu, phi, walks, seed, eta, alpha)
+        albedo::walk(self, py, mu, phi, walks, seed, eta, orders, progress)
+    }
+}
+
+impl NDF {
+    /// ``Sample(wm, pdf)`` of a sampler per element (parallel from 256 elements: the exact
+    /// samplers of the family invert quadratures).
+    fn samples<'py>(
+        &self,
+        py: Python<'py>,
+        items: &[Item<'_, 'py>],
+        f: impl Fn(&Material, &[&[f64]]) -> microsurface::Sample<f64> + Sync,
+    ) -> PyResult<PyObject> {
+        let o = self.each(py, items, &[3, 0], 256, |m, _, a, o| {
+            let s = f(m, a);
+            o[..3].copy_from_slice(&s.wm);
+            o[3] = s.pdf;
+        })?;
+        named(py, "Sample", o)
     }
 }
 
@@ -667,15 +1137,22 @@ macro_rules! plain {
 
         #[pymethods]
         impl $name {
+            /// The NDF's name as the library spells it (`matched_alpha` reads it).
+            #[classattr]
+            fn _kind() -> &'static str {
+                NdfKind::$kind.name()
+            }
+
             #[new]
             #[pyo3(signature = (alpha, alpha_y = None, exact = false, sampler = "posterior"))]
             fn new(
-                alpha: f64,
-                alpha_y: Option<f64>,
+                py: Python<'_>,
+                alpha: &Bound<'_, PyAny>,
+                alpha_y: Option<&Bound<'_, PyAny>>,
                 exact: bool,
                 sampler: &str,
             ) -> PyResult<(Self, NDF)> {
-                let ndf = NDF::build(NdfKind::$kind, alpha, alpha_y, None, exact, sampler)?;
+                let ndf = NDF::build(py, NdfKind::$kind, alpha, alpha_y, None, exact, sampler)?;
                 Ok(($name, ndf))
             }
         }
@@ -695,16 +1172,23 @@ macro_rules! shaped {
 
         #[pymethods]
         impl $name {
+            /// The NDF's name as the library spells it (`matched_alpha` reads it).
+            #[classattr]
+            fn _kind() -> &'static str {
+                NdfKind::$kind.name()
+            }
+
             #[new]
             #[pyo3(signature = (alpha, $shape, alpha_y = None, exact = false, sampler = "posterior"))]
             fn new(
-                alpha: f64,
-                $shape: f64,
-                alpha_y: Option<f64>,
+                py: Python<'_>,
+                alpha: &Bound<'_, PyAny>,
+                $shape: &Bound<'_, PyAny>,
+                alpha_y: Option<&Bound<'_, PyAny>>,
                 exact: bool,
                 sampler: &str,
             ) -> PyResult<(Self, NDF)> {
-                let ndf = NDF::build(NdfKind::$kind, alpha, alpha_y, Some($shape), exact, sampler)?;
+                let ndf = NDF::build(py, NdfKind::$kind, alpha, alpha_y, Some($shape), exact, sampler)?;
                 Ok(($name, ndf))
             }
         }
@@ -741,8 +1225,106 @@ shaped! {
     GenExponential => GenExponential, gamma;
 }
 
+/// What [`kind_of`] finds: the NDF, its shape, the class of results and their keywords.
+pub type KindOf<'py> = (
+    NdfKind,
+    Option<f64>,
+    Bound<'py, PyAny>,
+    Bound<'py, pyo3::types::PyDict>,
+);
+
+/// The NDF kind and shape of `ndf`: a class (without a shape parameter), a spec string
+/// (`"student_t:4"`) or an instance of one material; with the class to build results of and
+/// the instance's keywords (`exact`, `sampler`).
+pub fn kind_of<'py>(py: Python<'py>, ndf: &Bound<'py, PyAny>) -> PyResult<KindOf<'py>> {
+    let module = py.import("microsurface._microsurface")?;
+    let class_of = |kind: NdfKind| -> PyResult<Bound<'py, PyAny>> {
+        for name in module.dir()? {
+            let c = module.getattr(name.downcast::<pyo3::types::PyString>()?)?;
+            if c.getattr("_kind")
+                .is_ok_and(|k| k.eq(kind.name()).unwrap_or(false))
+            {
+                return Ok(c);
+            }
+        }
+        Err(PyValueError::new_err(format!("no class for {kind}")))
+    };
+    let kwargs = pyo3::types::PyDict::new(py);
+    if let Ok(n) = ndf.downcast::<NDF>() {
+        let n = n.get();
+        let Some(o) = &n.one else {
+            return Err(PyValueError::new_err(
+                "ndf must be one material (its parameters numbers)",
+            ));
+        };
+        kwargs.set_item("exact", n.exact)?;
+        kwargs.set_item("sampler", n.sampler_arg())?;
+        return Ok((n.kind, o.p.shape, ndf.get_type().into_any(), kwargs));
+    }
+    if let Ok(spec) = ndf.extract::<String>() {
+        let spec: microsurface::NdfSpec = spec
+            .parse()
+            .map_err(|e: microsurface::SpecError| PyValueError::new_err(e.to_string()))?;
+        return Ok((spec.kind, spec.shape, class_of(spec.kind)?, kwargs));
+    }
+    let kind: String = ndf
+        .getattr("_kind")
+        .map_err(|_| {
+            PyValueError::new_err("ndf must be an NDF class, a name ('student_t:4') or an NDF")
+        })?
+        .extract()?;
+    let kind: NdfKind = kind
+        .parse()
+        .map_err(|e: microsurface::ndf::UnknownNdf| PyValueError::new_err(e.to_string()))?;
+    if let Some(shape_name) = kind.shape_name() {
+        return Err(PyValueError::new_err(format!(
+            "{kind} needs its {shape_name}: pass a name ('{kind}:<{shape_name}>') or an instance"
+        )));
+    }
+    Ok((kind, None, ndf.clone(), kwargs))
+}
+
+/// matched_alpha(ndf, reference, by='g1_45'): the NDF ``ndf`` at the roughness α whose
+/// quantity ``by`` equals the NDF ``reference``'s (matched roughness; Rust:
+/// ``AnyNdf::matched``). ``ndf``: a class (``microsurface.Beckmann``; a class with a shape
+/// parameter needs it: pass a name or an instance), a name (``"beckmann"``,
+/// ``"student_t:4"``, ``"gtr:1.5"``: the command line's specs) or an NDF instance (its shape,
+/// ``exact`` and ``sampler`` kept, its α replaced). ``by``: ``"g1_45"`` (Smith's G1 at
+/// θ = 45°), ``"sigma0"`` (the projected area at grazing σ(0)), ``"mean_slope"`` (E[tan θm]
+/// under D cos θm, = π σ(0): the same match as ``"sigma0"``), ``"dcos_median"`` (the
+/// median of tan θm under D cos θm). Returns an instance of the NDF's class. Bisection in
+/// ln α over [1e-6, 1e6] on the exact path: the matched quantity equals the reference's to
+/// ≤ 1e-10 relative. ValueError where no α matches (σ(0) = ∞ for Student-T at γ ≤ 3/2; G1
+/// at 45° of a smooth Beckmann, α ≲ 0.3, below any GGX's), or for a reference of parameter
+/// arrays (one material).
+#[pyfunction]
+#[pyo3(signature = (ndf, reference, by = "g1_45"))]
+fn matched_alpha<'py>(
+    py: Python<'py>,
+    ndf: &Bound<'py, PyAny>,
+    reference: PyRef<'py, NDF>,
+    by: &str,
+) -> PyResult<Bound<'py, PyAny>> {
+    let by: microsurface::ndf::MatchBy = by
+        .parse()
+        .map_err(|e: microsurface::ndf::MatchError| PyValueError::new_err(e.to_string()))?;
+    let Some(one) = &reference.one else {
+        return Err(PyValueError::new_err(
+            "matched_alpha: the reference must be one material (its parameters numbers)",
+        ));
+    };
+    let (kind, shape, class, kwargs) = kind_of(py, ndf)?;
+    let m = py
+        .allow_threads(|| AnyNdf::matched(kind, shape, &one.ndf, by))
+        .map_err(|e| PyValueError::new_err(e.to_string()))?;
+    let mut args = vec![m.alpha()];
+    args.extend(shape.filter(|_| kind.shape_name().is_some()));
+    class.call(PyTuple::new(py, args)?, Some(&kwargs))
+}
+
 /// Adds `NDF` and its subclasses to the module.
 pub fn register(m: &Bound<'_, PyModule>) -> PyResult<()> {
+    m.add_function(wrap_pyfunction!(matched_alpha, m)?)?;
     m.add_class::<NDF>()?;
     m.add_class::<Beckmann>()?;
     m.add_class::<GGX>()?;

@@ -153,3 +153,19 @@ def test_path_keywords():
         with pytest.raises(ValueError):
             mf.GTR(0.3, 1.5, alpha_y=0.4, exact=exact)
         assert mf.GTR(0.3, 2.0, alpha_y=0.4, exact=exact).lambda_w([0.6, 0.0, 0.8]) > 0
+
+
+@pytest.mark.parametrize("cls,args,rtol", NDFS, ids=IDS)
+def test_fast_cosine_functions_within_the_fast_bounds(cls, args, rtol):
+    # fast=True: the functions of a cosine on the renderer's kernels (at the direction of
+    # cosine u), within the same bounds of the exact path (the default), below the horizon
+    # too (Λ(u < 0) = −1 − Λ(|u|), σ(u < 0) = |u| Λ(|u|)); u = 0 gives Λ = ∞ and σ(0) on both.
+    n = cls(*args)
+    u = np.concatenate([np.geomspace(1e-3, 1, 200), -np.geomspace(1e-3, 1, 50), [0.0, -0.0]])
+    for name in ("d", "lambda_", "sigma", "g1"):
+        f = getattr(n, name)
+        close(f(u, fast=True), f(u), rtol, name)
+    close(n.g2(u[:, None], u[::7], fast=True), n.g2(u[:, None], u[::7]), rtol, "g2")
+    close(n.g2_separable(u[:, None], u[::7], fast=True), n.g2_separable(u[:, None], u[::7]), rtol, "g2_separable")
+    # The slope densities have no fast path: the exact values.
+    assert n.lambda_(-0.5) == -1 - n.lambda_(0.5) and n.lambda_(-0.0) == np.inf

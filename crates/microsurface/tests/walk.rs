@@ -6,8 +6,8 @@
 use microsurface::bsdf::fresnel::One;
 use microsurface::bsdf::{Bsdf, Masking, RoughConductor, RoughDielectric, Transport};
 use microsurface::scattering::{
-    albedo, single_scattering_albedo, DielectricFacets, Facets, Heights, MirrorFacets,
-    MultipleScattering, RandomWalk, WalkRng,
+    albedo, albedo_orders, single_scattering_albedo, DielectricFacets, Facets, Heights,
+    MirrorFacets, MultipleScattering, RandomWalk, WalkRng,
 };
 use microsurface::{
     Beckmann, DoubleGgx, Exponential, Ggx, Gtr, Microfacet, MicrofacetDistribution,
@@ -85,6 +85,47 @@ fn furnace_and_order_one() {
             });
         }
     }
+}
+
+/// The albedo by any number of orders (`albedo_orders`): at 4 orders it is `albedo`, bit
+/// for bit; at 12 the same walks give the same orders below the last bin, and the orders
+/// from 4 up sum to `albedo`'s "≥ 4" (to rounding); the totals are equal. A rough GGX
+/// dielectric (α = 1.5, η = 1.5, μ = 0.3), whose walks reach high orders.
+#[test]
+fn albedo_by_any_number_of_orders() {
+    let s = RandomWalk::new(
+        Microfacet::<f64, Ggx>::new(1.5, 1.5).unwrap(),
+        Heights::Uniform,
+    );
+    let f = DielectricFacets(1.5);
+    let a = albedo(&s, &f, wo(0.3), 50_000, 11);
+    let four = albedo_orders(&s, &f, wo(0.3), 50_000, 11, 4);
+    let twelve = albedo_orders(&s, &f, wo(0.3), 50_000, 11, 12);
+    for (by4, side, side12) in [
+        (&a.reflect, &four.reflect, &twelve.reflect),
+        (&a.transmit, &four.transmit, &twelve.transmit),
+    ] {
+        for (k, e) in side.iter().enumerate() {
+            assert_eq!((by4.orders[k], by4.stderr[k]), (e.mean, e.stderr));
+        }
+        for k in 0..3 {
+            assert_eq!(side[k], side12[k]);
+        }
+        let tail: f64 = side12[3..].iter().map(|e| e.mean).sum();
+        assert!(
+            (tail - by4.orders[3]).abs() <= 1e-12,
+            "{tail} vs {}",
+            by4.orders[3]
+        );
+    }
+    let high: f64 = twelve.reflect[5..]
+        .iter()
+        .chain(&twelve.transmit[5..])
+        .map(|e| e.mean)
+        .sum();
+    assert!(high > 0.0, "orders ≥ 6 carry energy here");
+    assert_eq!(a.total, twelve.total);
+    assert_eq!(a.reflect.total, twelve.reflect_total.mean);
 }
 
 /// A dielectric (η = 1.5, from outside and from inside): the walk's order 1, reflection and

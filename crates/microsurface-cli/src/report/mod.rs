@@ -15,6 +15,7 @@ use microsurface::check::chi2::SplitMix64;
 use microsurface::check::verify::{run as run_checks, sigma_by_delta_integral, Sweep};
 use microsurface::ndf::exponential::approx::{ei_g1, g1_rational};
 use microsurface::ndf::mixture::{superpose_beckmann, superpose_ggx, Mixing};
+use microsurface::ndf::MatchBy;
 use microsurface::{AnyNdf, Exact, MicrofacetDistribution, Ndf, NdfKind, Vec3};
 use std::fmt::Write as _;
 use std::process::ExitCode;
@@ -662,21 +663,13 @@ fn chi3_histogram_plot() -> Plot {
     .with(Series::new("pdf", curve, Style::Line))
 }
 
-/// α at which `q(kind at α)` equals `q(GGX at α = 0.3)`, by bisection in ln α (q monotone
-/// in α).
-fn matched_alpha(kind: NdfKind, gamma: Option<f64>, q: impl Fn(&AnyNdf) -> f64) -> f64 {
-    let target = q(&ndf(NdfKind::Ggx, 0.3, None));
-    let (mut lo, mut hi) = (1e-3f64.ln(), 10f64.ln());
-    let rising = q(&ndf(kind, 10.0, gamma)) > q(&ndf(kind, 1e-3, gamma));
-    for _ in 0..80 {
-        let mid = 0.5 * (lo + hi);
-        if (q(&ndf(kind, mid.exp(), gamma)) < target) == rising {
-            lo = mid;
-        } else {
-            hi = mid;
-        }
-    }
-    (0.5 * (lo + hi)).exp()
+/// α at which NDF `kind` (shape `gamma`) matches GGX at α = 0.3 by `by` (the library's
+/// matched roughness, `AnyNdf::matched`).
+fn matched_alpha(kind: NdfKind, gamma: Option<f64>, by: MatchBy) -> f64 {
+    let ggx = ndf(NdfKind::Ggx, 0.3, None);
+    AnyNdf::matched(kind, gamma, &ggx, by)
+        .expect("every plotted NDF has a match for GGX at 0.3")
+        .alpha()
 }
 
 fn comparison_plots() -> Vec<Plot> {
@@ -728,7 +721,7 @@ fn comparison_plots() -> Vec<Plot> {
     let mut beckmann_alpha = 0.0;
     for (k, g, name) in kinds {
         same = same.with(Series::new(name, d_of(&ndf(k, 0.3, g)), Style::Line));
-        let a = matched_alpha(k, g, |n| -n.g1(u45));
+        let a = matched_alpha(k, g, MatchBy::G1At45);
         if k == NdfKind::Beckmann {
             beckmann_alpha = a;
         }
@@ -743,7 +736,7 @@ fn comparison_plots() -> Vec<Plot> {
             g1_of(&m),
             Style::Line,
         ));
-        let a = matched_alpha(k, g, |n| n.sigma(0.0));
+        let a = matched_alpha(k, g, MatchBy::SigmaZero);
         by_slope = by_slope.with(Series::new(
             format!("{name} α={a:.3}"),
             d_of(&ndf(k, a, g)),

@@ -6,9 +6,15 @@ methods: NumPy arrays of any shape (or scalars) in, arrays of the broadcast shap
 float32 for float32 input and float64 otherwise, computed in Rust on every core (f64;
 float32 results are the f64 values rounded once, except GGX's D, Λ and G1 in f32).
 
-* Functions of a cosine (the isotropic NDF; ``alpha=`` broadcasts an array of roughnesses),
-  always the library's exact path: ``d``, ``lambda_``, ``sigma``, ``g1``, ``g2``,
-  ``g2_separable``, ``p22``, ``p2``.
+Parameters are numbers or arrays, as SciPy's frozen distributions: ``GGX(np.array([0.1,
+0.3])[:, None]).d(u)`` has the shape of the parameters broadcast with ``u``, one material
+per element (``GTR(0.3, gamma=[1.5, 2.5])``, ``Beckmann(a, alpha_y=ay)``, a BSDF's ``eta``
+and ``k``, whose last axis is the channels); never a Python loop.
+
+* Functions of a cosine (the isotropic NDF): ``d``, ``lambda_``, ``sigma``, ``g1``, ``g2``,
+  ``g2_separable``, ``p22``, ``p2``: the library's exact path (the research values), or with
+  ``fast=True`` the renderer's fast kernels (every NDF but the slope densities and the
+  generalised exponential, which have none).
 * Functions of directions (unit vectors on the last axis, anisotropic): ``d_wm``,
   ``lambda_w``, ``g1_w``, ``sigma_w``, ``g2_w``, ``pdf_visible``, ``pdf_dcos``; the samplers
   ``sample_visible(w, u)`` and ``sample_dcos(u)`` with uniforms u (last axis 2) or
@@ -21,8 +27,14 @@ float32 results are the f64 values rounded once, except GGX's D, Λ and G1 in f3
   mixing variable (~0.2 µs) on both paths; ``exact=True, sampler='warp'`` draws them by the
   exact inversion, a warp of u.
 * Multiple scattering: ``ndf.albedo(mu, walks=...)`` by order (the random walk),
-  ``single_scattering_albedo(ndf, mu)`` (quadrature), both with ``alpha=`` arrays for
-  (α, μ) tables, and ``AlbedoTable(ndf)`` (the compensation table).
+  ``single_scattering_albedo(ndf, mu)`` (quadrature), both over parameter arrays for
+  (α, μ) tables, ``AlbedoTable(ndf)`` (the compensation table, one material; its nodes
+  ``mu`` and ``values``, ``save``/``load`` as ``.npy`` or the command line's ``.mfa``), and
+  ``table(ndf, alpha, mu, ...)``, the command line's ``microsurface table`` (walk or
+  quadrature, every material, ``progress=True`` for a tqdm bar), with ``read_table``.
+* Matched roughness: ``matched_alpha(ndf, reference, by="g1_45")``, the NDF ``ndf`` (a
+  class, a name such as ``"student_t:4"``, or an instance) at the α whose G1 at 45°
+  (``"sigma0"``, ``"mean_slope"``, ``"dcos_median"``) equals the reference's.
 * BSDFs: ``Conductor(ndf, eta, k)`` and ``Dielectric(ndf, eta)`` with ``eval``, ``pdf`` and
   ``sample``, single scattering or with multiple scattering (``scattering='kulla_conty'``,
   ``'turquin'`` or ``'walk'``).
@@ -38,8 +50,9 @@ and pdf, an albedo's fields; a BSDF sample's lobe is 0). A value outside its dom
 cosines ``u``, ``u_o``, ``u_i``, ``mu`` in [-1, 1] (a rounded cosine within 4ε beyond is taken as
 ±1); uniforms in [0, 1); ``phi`` finite;
 ``walks`` ≥ 1, ``n`` ≥ 0, ``seed`` in [0, 2**64). Slopes ``p``, ``q`` take any number.
-Parameters (``alpha``, shapes, ``eta``, ``alpha=`` arrays) raise ``ValueError`` with the
-library's message, NaN included. Ctrl-C raises ``KeyboardInterrupt`` within 0.5 s in
+Parameters (``alpha``, shapes, ``eta``; numbers or every element of an array) raise
+``ValueError`` with the library's message, NaN included (for an array, how many elements
+are bad and the first). Ctrl-C raises ``KeyboardInterrupt`` within 0.5 s in
 any call (the loop checks by time), except inside one element that alone runs longer
 (``walks`` of many millions). See ``help(microsurface.NDF)`` for the quantities and their
 accuracy.
@@ -63,9 +76,12 @@ from ._microsurface import (  # noqa: F401
     GTR,
     K0,
     StudentT,
+    matched_alpha,
+    read_table,
     single_scattering_albedo,
+    table,
 )
-from ._types import Albedo, BSDFSample, Sample  # noqa: F401
+from ._types import Albedo, BSDFSample, DielectricAlbedo, Sample, Table  # noqa: F401
 
 __all__ = [
     "__version__",
@@ -86,7 +102,12 @@ __all__ = [
     "Dielectric",
     "AlbedoTable",
     "single_scattering_albedo",
+    "matched_alpha",
+    "table",
+    "read_table",
     "Sample",
     "BSDFSample",
     "Albedo",
+    "DielectricAlbedo",
+    "Table",
 ]

@@ -27,7 +27,8 @@ class BSDFSample(NamedTuple):
 
 class Albedo(NamedTuple):
     """The albedo by scattering order (the last axis of ``reflect`` and ``transmit``: orders
-    1, 2, 3 and ≥ 4) with standard errors, and the total over sides and orders."""
+    1, 2, …, K − 1 and ≥ K for ``albedo(..., orders=K)``, default 4) with standard errors,
+    and the total over sides and orders."""
 
     reflect: np.ndarray
     reflect_stderr: np.ndarray
@@ -35,3 +36,23 @@ class Albedo(NamedTuple):
     transmit_stderr: np.ndarray
     total: np.ndarray
     total_stderr: np.ndarray
+
+
+class DielectricAlbedo(NamedTuple):
+    """The single-scattering albedo of a rough dielectric: the energy ``reflect``ed back to
+    the side of incidence and ``transmit``ted through, each of the arguments' shape."""
+
+    reflect: np.ndarray
+    transmit: np.ndarray
+
+
+class Table(NamedTuple):
+    """An albedo table over (α, μ) (``microsurface.table``, ``read_table``; the command line's
+    ``microsurface table``): the nodes ``alpha`` and ``mu``, the ``quantities``' names
+    (``e1``; or ``r1``…``r4``, ``r``, ``t1``…``t4``, ``t``, ``e`` and their ``_se`` standard
+    errors for the walk) and ``values`` (float32, (len(alpha), len(mu), len(quantities)))."""
+
+    alpha: np.ndarray
+    mu: np.ndarray
+    quantities: tuple
+    values: np.ndarray

@@ -11,6 +11,7 @@ pub mod gen_exponential;
 pub mod ggx;
 pub mod gtr;
 pub mod k0;
+mod matched;
 pub mod mixture;
 pub mod student_t;
 
@@ -25,6 +26,7 @@ pub use gen_exponential::GenExponential;
 pub use ggx::Ggx;
 pub use gtr::Gtr;
 pub use k0::K0;
+pub use matched::{MatchBy, MatchError};
 pub use student_t::StudentT;
 
 /// Below u = GRAZING · min(σ(0), 1) Λ and σ take their grazing asymptotes σ(0)/u − ½ and

@@ -147,16 +147,32 @@ impl Bin {
 }
 
 /// Running sums of [`Albedo`]'s estimators (bins per side and order, per side, and the
-/// total).
-#[derive(Clone, Copy, Debug, Default)]
+/// total), over `orders` order bins (1, 2, …, ≥ `orders`; [`Albedo`]'s 4 by default).
+#[derive(Clone, Debug)]
 pub(crate) struct AlbedoSums {
-    /// [side][order 1, 2, 3, ≥ 4, any], side 0 reflection, 1 transmission.
-    bins: [[Bin; 5]; 2],
+    /// [side][order 1, …, ≥ orders, any], side 0 reflection, 1 transmission.
+    bins: [Vec<Bin>; 2],
     total: Bin,
     walks: u64,
 }
 
+impl Default for AlbedoSums {
+    fn default() -> Self {
+        AlbedoSums::with_orders(4)
+    }
+}
+
 impl AlbedoSums {
+    /// Sums over `orders` ≥ 1 order bins (the last one: that order and above).
+    pub(crate) fn with_orders(orders: usize) -> Self {
+        let k = orders.max(1) + 1;
+        AlbedoSums {
+            bins: [vec![Bin::default(); k], vec![Bin::default(); k]],
+            total: Bin::default(),
+            walks: 0,
+        }
+    }
+
     /// One walk from wo (`None`: failed, weight 0).
     #[inline]
     pub(crate) fn add<const N: usize>(&mut self, wo: [f64; 3], walked: Option<Walked<N>>) {
@@ -167,8 +183,9 @@ impl AlbedoSums {
         let w = p.weight[0];
         let side = usize::from((p.w[2] < 0.0) != (wo[2] < 0.0));
         let bins = &mut self.bins[side];
-        bins[(p.order.clamp(1, 4) - 1) as usize].add(w);
-        bins[4].add(w);
+        let any = bins.len() - 1;
+        bins[(p.order.max(1) as usize).min(any) - 1].add(w);
+        bins[any].add(w);
         self.total.add(w);
     }
 
@@ -182,20 +199,57 @@ impl AlbedoSums {
         self.walks += o.walks;
     }
 
+    /// The estimates by side and order.
+    pub(crate) fn finish_orders(&self) -> AlbedoOrders {
+        let side = |b: &[Bin]| {
+            let e: Vec<Estimate> = b.iter().map(|x| x.estimate(self.walks)).collect();
+            let (orders, total) = e.split_at(e.len() - 1);
+            (orders.to_vec(), total[0])
+        };
+        let (reflect, reflect_total) = side(&self.bins[0]);
+        let (transmit, transmit_total) = side(&self.bins[1]);
+        AlbedoOrders {
+            reflect,
+            reflect_total,
+            transmit,
+            transmit_total,
+            total: self.total.estimate(self.walks),
+        }
+    }
+
+    /// [`Albedo`] (of sums with 4 order bins, the default).
     pub(crate) fn finish(&self) -> Albedo {
-        let side = |b: &[Bin; 5]| {
-            let e = b.map(|x| x.estimate(self.walks));
-            ByOrder {
-                orders: [e[0].mean, e[1].mean, e[2].mean, e[3].mean],
-                stderr: [e[0].stderr, e[1].stderr, e[2].stderr, e[3].stderr],
-                total: e[4].mean,
-                total_stderr: e[4].stderr,
-            }
+        self.finish_orders().four()
+    }
+}
+
+/// The albedo by side and by any number of orders K ([`albedo_orders`]): `reflect[k]` and
+/// `transmit[k]` the energy leaving on each side after k + 1 events, the last entry after
+/// K or more; each side's total; and the total over sides.
+#[derive(Clone, Debug, PartialEq, Default)]
+pub struct AlbedoOrders {
+    pub reflect: Vec<Estimate>,
+    pub reflect_total: Estimate,
+    pub transmit: Vec<Estimate>,
+    pub transmit_total: Estimate,
+    pub total: Estimate,
+}
+
+impl AlbedoOrders {
+    /// [`Albedo`] of estimates by 4 order bins (orders 1, 2, 3, ≥ 4), as [`albedo`] makes
+    /// them.
+    fn four(self) -> Albedo {
+        debug_assert_eq!(self.reflect.len(), 4, "four order bins");
+        let side = |o: &[Estimate], t: Estimate| ByOrder {
+            orders: std::array::from_fn(|k| o[k].mean),
+            stderr: std::array::from_fn(|k| o[k].stderr),
+            total: t.mean,
+            total_stderr: t.stderr,
         };
         Albedo {
-            reflect: side(&self.bins[0]),
-            transmit: side(&self.bins[1]),
-            total: self.total.estimate(self.walks),
+            reflect: side(&self.reflect, self.reflect_total),
+            transmit: side(&self.transmit, self.transmit_total),
+            total: self.total,
         }
     }
 }
@@ -203,7 +257,7 @@ impl AlbedoSums {
 /// [`Albedo`] from `walks` walks from wo (E_k(wo) = E[weight; the walk leaves on that side
 /// after k events]); walks that fail (wo on the horizon, cut paths) count with weight 0.
 /// One channel (a spectral albedo is one call per channel, each with its own seed or the
-/// same one for correlated estimates).
+/// same one for correlated estimates). [`albedo_orders`] with 4 orders.
 pub fn albedo<D: MicrofacetDistribution<f64>>(
     surface: &RandomWalk<D>,
     facets: &impl Facets<1>,
@@ -211,12 +265,26 @@ pub fn albedo<D: MicrofacetDistribution<f64>>(
     walks: u64,
     seed: u64,
 ) -> Albedo {
+    albedo_orders(surface, facets, wo, walks, seed, 4).four()
+}
+
+/// The albedo by side and by `orders` order bins (1, 2, …, `orders` − 1 and ≥ `orders`;
+/// at least 1), as [`albedo`] (the same walks from the same seed: its 4-order figures are
+/// these at `orders` = 4, and the orders below the last are the same for any `orders`).
+pub fn albedo_orders<D: MicrofacetDistribution<f64>>(
+    surface: &RandomWalk<D>,
+    facets: &impl Facets<1>,
+    wo: [f64; 3],
+    walks: u64,
+    seed: u64,
+    orders: usize,
+) -> AlbedoOrders {
     let mut rng = WalkRng::new(seed);
-    let mut sums = AlbedoSums::default();
+    let mut sums = AlbedoSums::with_orders(orders);
     for _ in 0..walks {
         sums.add(wo, surface.walk(facets, wo, &mut rng));
     }
-    sums.finish()
+    sums.finish_orders()
 }
 
 /// The single-scattering albedo of a conductor with F = 1 and the height-correlated G2,

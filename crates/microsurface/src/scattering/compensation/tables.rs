@@ -147,6 +147,26 @@ impl AlbedoTable {
         t
     }
 
+    /// The table of E at `values.len()` nodes uniform in √μ ([`AlbedoTable::mu`]), as
+    /// [`AlbedoTable::values`] gives them (a table saved and read back); `None` for fewer than
+    /// 4 nodes or a value that is not finite.
+    pub fn from_values(values: Vec<f64>) -> Option<Self> {
+        (values.len() >= 4 && values.iter().all(|v| v.is_finite()))
+            .then(|| Self::from_nodes(values))
+    }
+
+    /// E at the nodes (the interpolant passes through them).
+    pub fn values(&self) -> &[f64] {
+        &self.e
+    }
+
+    /// The nodes' μ: s² for s = k/(n − 1) uniform, the grazing node at μ = 1e-6 (the
+    /// albedo's limit there).
+    pub fn mu(&self) -> Vec<f64> {
+        let n = self.e.len();
+        (0..n).map(|k| node_mu(k, n)).collect()
+    }
+
     /// E(μ) for μ ∈ [0, 1] (clamped), by the interpolant.
     pub fn e(&self, mu: f64) -> f64 {
         self.e_at_s(mu.clamp(0.0, 1.0).sqrt())
