@@ -1,0 +1,393 @@
+//! The `microsurface` fast paths as a WGSL shader library, and a small wgpu compute runner
+//! that checks it against the Rust f32 path.
+//!
+//! # The library
+//!
+//! [`WGSL`] is the library's one source: the files under `wgsl/` of this crate (common,
+//! Fresnel, GGX, the run-time distribution, the rough conductor and dielectric) in one
+//! string. WGSL has no
+//! `#include`: a shader includes the library by being compiled with it in front, which WGSL
+//! allows as module-scope declarations may come in any order. From Rust:
+//!
+//! ```
+//! let shader = format!("{}\n{}", microsurface_gpu::WGSL, "
+//!     @group(0) @binding(0) var<storage, read_write> out: array<f32>;
+//!     @compute @workgroup_size(64)
+//!     fn main(@builtin(global_invocation_id) id: vec3<u32>) {
+//!         let wo = vec3<f32>(0.48, 0.0, 0.8775);
+//!         let s = ms_ggx_sample(wo, vec2<f32>(0.3, 0.1), vec2<f32>(0.25, 0.5));
+//!         out[id.x] = s.pdf;
+//!     }");
+//! // (naga, the compiler wgpu uses, validates it.)
+//! let module = naga::front::wgsl::parse_str(&shader).expect("parses");
+//! naga::valid::Validator::new(Default::default(), Default::default())
+//!     .validate(&module)
+//!     .expect("validates");
+//! ```
+//!
+//! and from any other build, by prepending the generated one-file form
+//! `generated/microsurface.wgsl` (the same string, written by `examples/translate.rs`, which
+//! also writes GLSL 450, HLSL, MSL and SPIR-V translations of the library with its test
+//! kernels through naga). Every public name starts with `ms_` (`Ms`, `MS_` for types and
+//! constants).
+//!
+//! | WGSL | Rust (f32) |
+//! |---|---|
+//! | `ms_ggx_d(wm, α)`, `ms_ggx_lambda(w, α)`, `ms_ggx_g1(w, α)` | `Microfacet::<f32, Ggx>` `d`, `lambda`, `g1` |
+//! | `ms_ggx_g2(wo, wi, α)`, `ms_ggx_g2_separable(wo, wi, α)` | `g2`, `g2_separable` |
+//! | `ms_ggx_pdf(w, wm, α)`, `ms_ggx_sample(w, α, u)` → `MsSample` | `pdf` (= `d_visible`), `sample` (spherical caps) |
+//! | `ms_ggx_sample_dcos(α, u)`, `ms_ggx_pdf_dcos(wm, α)` | `sample_dcos`, `pdf_dcos` |
+//! | `ms_ggx_sample_bounded(w, α, u)`, `ms_ggx_pdf_bounded(w, wm, α)`, `ms_ggx_pdf_bounded_reflection(wo, wi, α)` | `sample_bounded`, `pdf_bounded`, `pdf_bounded_reflection` |
+//! | `ms_fresnel_dielectric`, `ms_fresnel_conductor`, `ms_fresnel_schlick`, `ms_fresnel_f82_tint`; `MsFresnel` + `ms_fresnel_eval` | `bsdf::fresnel::{dielectric, conductor, schlick, f82_tint}`; the `Fresnel` terms |
+//! | `MsMicrofacet` + `ms_d`, `ms_lambda`, `ms_g1`, `ms_g2`, `ms_pdf`, `ms_sample`, `ms_sample_dcos` | `MicrofacetDistribution` |
+//! | `MsConductor` + `ms_conductor_eval`, `ms_conductor_pdf`, `ms_conductor_eval_pdf`, `ms_conductor_sample` → `MsBsdfSample` | `bsdf::RoughConductor` (`Masking::Correlated` or `Separable`) |
+//! | `MsDielectric` + `ms_dielectric_eval`, `ms_dielectric_pdf`, `ms_dielectric_sample` → `MsBsdfSample` | `bsdf::RoughDielectric` (`Masking::Correlated` or `Separable`; both transports) |
+//! | `ms_reflect`, `ms_refract`, `ms_half_vector_reflection`, `ms_half_vector_refraction`, `ms_jacobian_refraction` | `bsdf::frame` |
+//!
+//! Conventions are the Rust crate's: unit directions in the local shading frame (z = the
+//! normal), wo and wi pointing away from the surface, w.z < 0 mirrored by the visible-normal
+//! functions, roughness `vec2(αx, αy)`; uniforms in [0, 1)². The formulas, their sources and
+//! their guards are those of the Rust f32 fast path, operation for operation (each WGSL
+//! function's comment names its Rust counterpart); where the Rust f32 path computes in f64
+//! (the samplers' cos 2πu, and out-of-line edge paths), the WGSL computes in f32: WGSL has no
+//! portable f64.
+//!
+//! # Accuracy against the Rust f32 path
+//!
+//! `tests/lavapipe.rs` runs every function above in compute shaders and compares element by
+//! element with `Microfacet<f32, Ggx>`, the `fresnel` functions, `RoughConductor` and
+//! `RoughDielectric`, on grids of directions (normal incidence, grazing cos θ = 1e-4, below
+//! and on the horizon), roughness (2e-3 to 2, isotropic and anisotropic), η (1/2.4 to 2.4)
+//! and uniforms (0 and 1 − 2⁻²⁴ included). D, Λ, G1, G2 and the pdfs agree within 2e-6
+//! relative (twice the Rust f32 fast path's documented 1e-6); sampled normals within 16ε
+//! per component, except near the spherical caps' poles, where √(1 − cz²) magnifies the
+//! rounding of cz on either side (measured there: 3e-2 between an NVIDIA H200 and the Rust
+//! f32 path, whose own f64 path is 1e-1 away); BSDF values within bounds derived per element
+//! from the half vector's rounding and the Fresnel formulas' conditioning (the test file has
+//! each derivation). CI checks them on Mesa's lavapipe; the same test binary passes on an
+//! NVIDIA H200, whose compiler fuses multiply-adds and divides to Vulkan's 2.5 ulp.
+//! BENCHMARKS.md has the measured maxima on both.
+//!
+//! # The runner
+//!
+//! [`Gpu`] opens the first Vulkan adapter (wgpu, Vulkan back end only; a discrete GPU
+//! before others), compiles a WGSL source ([`Gpu::program`]) and runs one of its compute
+//! entry points over an input buffer of `vec4<f32>` records ([`Gpu::run`]): the tests'
+//! harness, and the bench's device (`examples/gpu_bench.rs`). On an NVIDIA machine without a
+//! display, point the Vulkan loader at the driver's EGL library (`VK_ICD_FILENAMES`: an ICD
+//! file whose `library_path` is `libEGL_nvidia.so.0`): the GLX one that the driver's own ICD
+//! file names creates no instance without an X server (BENCHMARKS.md).
+
+use std::collections::HashMap;
+use std::fmt;
+use std::sync::{mpsc, Mutex};
+
+/// The WGSL library, one source: `wgsl/common.wgsl`, `fresnel.wgsl`, `ggx.wgsl`,
+/// `microfacet.wgsl`, `conductor.wgsl`, `dielectric.wgsl`, in that order.
+pub const WGSL: &str = concat!(
+    include_str!("../wgsl/common.wgsl"),
+    "\n",
+    include_str!("../wgsl/fresnel.wgsl"),
+    "\n",
+    include_str!("../wgsl/ggx.wgsl"),
+    "\n",
+    include_str!("../wgsl/microfacet.wgsl"),
+    "\n",
+    include_str!("../wgsl/conductor.wgsl"),
+    "\n",
+    include_str!("../wgsl/dielectric.wgsl"),
+);
+
+/// The test kernels (`wgsl/kernels.wgsl`): compute entry points over records of five
+/// `vec4<f32>` in and two out (the layout is in the file), compiled after [`WGSL`].
+pub const KERNELS_WGSL: &str = include_str!("../wgsl/kernels.wgsl");
+
+/// Records in and out per element of the test kernels.
+pub const KERNEL_IN: usize = 5;
+/// See [`KERNEL_IN`].
+pub const KERNEL_OUT: usize = 2;
+
+/// The compute entry points of [`KERNELS_WGSL`].
+pub const KERNEL_ENTRY_POINTS: [&str; 8] = [
+    "ms_k_ggx_eval",
+    "ms_k_ggx_sample",
+    "ms_k_ggx_bounded",
+    "ms_k_fresnel",
+    "ms_k_conductor_eval",
+    "ms_k_conductor_sample",
+    "ms_k_dielectric_eval",
+    "ms_k_dielectric_sample",
+];
+
+/// The library followed by its test kernels: one WGSL module.
+pub fn kernels_source() -> String {
+    format!("{WGSL}\n{KERNELS_WGSL}")
+}
+
+/// The workgroup size of the kernels (x).
+pub const WORKGROUP: u32 = 64;
+
+/// What went wrong opening the device or running a kernel.
+#[derive(Debug)]
+pub enum Error {
+    /// No Vulkan adapter (no GPU driver, no lavapipe).
+    NoAdapter(String),
+    /// The adapter would not give a device.
+    Device(String),
+    /// The shader or the pipeline did not validate (naga's message).
+    Shader(String),
+    /// Mapping the results back failed.
+    Readback(String),
+}
+
+impl fmt::Display for Error {
+    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
+        match self {
+            Error::NoAdapter(m) => write!(f, "no Vulkan adapter: {m}"),
+            Error::Device(m) => write!(f, "no device: {m}"),
+            Error::Shader(m) => write!(f, "shader: {m}"),
+            Error::Readback(m) => write!(f, "readback: {m}"),
+        }
+    }
+}
+
+impl std::error::Error for Error {}
+
+/// A Vulkan device and queue (wgpu), with the adapter's description.
+pub struct Gpu {
+    device: wgpu::Device,
+    queue: wgpu::Queue,
+    info: wgpu::AdapterInfo,
+    timestamps: bool,
+}
+
+/// A compiled WGSL module whose entry points take the two storage buffers of the kernels'
+/// layout (binding 0 read, binding 1 read-write); pipelines are made per entry point on
+/// first use.
+pub struct Program {
+    module: wgpu::ShaderModule,
+    layout: wgpu::BindGroupLayout,
+    pipeline_layout: wgpu::PipelineLayout,
+    pipelines: Mutex<HashMap<String, wgpu::ComputePipeline>>,
+}
+
+impl Gpu {
+    /// The first Vulkan adapter (high-performance preferred), its device with the adapter's
+    /// own limits (large storage buffers) and timestamp queries where it has them.
+    pub fn new() -> Result<Gpu, Error> {
+        let instance = wgpu::Instance::new(wgpu::InstanceDescriptor {
+            backends: wgpu::Backends::VULKAN,
+            ..wgpu::InstanceDescriptor::new_without_display_handle()
+        });
+        let adapter = pollster::block_on(instance.request_adapter(&wgpu::RequestAdapterOptions {
+            power_preference: wgpu::PowerPreference::HighPerformance,
+            ..Default::default()
+        }))
+        .map_err(|e| Error::NoAdapter(e.to_string()))?;
+        let timestamps = adapter.features().contains(wgpu::Features::TIMESTAMP_QUERY);
+        let features = if timestamps {
+            wgpu::Features::TIMESTAMP_QUERY
+        } else {
+            wgpu::Features::empty()
+        };
+        let (device, queue) = pollster::block_on(adapter.request_device(&wgpu::DeviceDescriptor {
+            label: Some("microsurface-gpu"),
+            required_features: features,
+            required_limits: adapter.limits(),
+            ..Default::default()
+        }))
+        .map_err(|e| Error::Device(e.to_string()))?;
+        Ok(Gpu {
+            device,
+            queue,
+            info: adapter.get_info(),
+            timestamps,
+        })
+    }
+
+    /// The adapter's name, driver and device type.
+    pub fn adapter_info(&self) -> &wgpu::AdapterInfo {
+        &self.info
+    }
+
+    /// Whether the device has timestamp queries (the bench times with them where it has).
+    pub fn has_timestamps(&self) -> bool {
+        self.timestamps
+    }
+
+    /// The wgpu device.
+    pub fn device(&self) -> &wgpu::Device {
+        &self.device
+    }
+
+    /// The wgpu queue.
+    pub fn queue(&self) -> &wgpu::Queue {
+        &self.queue
+    }
+
+    /// Compiles a WGSL source whose compute entry points use the kernels' two bindings;
+    /// `Err` with naga's message where it does not validate.
+    pub fn program(&self, source: &str) -> Result<Program, Error> {
+        let scope = self.device.push_error_scope(wgpu::ErrorFilter::Validation);
+        let module = self
+            .device
+            .create_shader_module(wgpu::ShaderModuleDescriptor {
+                label: Some("microsurface"),
+                source: wgpu::ShaderSource::Wgsl(source.into()),
+            });
+        if let Some(e) = pollster::block_on(scope.pop()) {
+            return Err(Error::Shader(e.to_string()));
+        }
+        let entry = |binding, read_only| wgpu::BindGroupLayoutEntry {
+            binding,
+            visibility: wgpu::ShaderStages::COMPUTE,
+            ty: wgpu::BindingType::Buffer {
+                ty: wgpu::BufferBindingType::Storage { read_only },
+                has_dynamic_offset: false,
+                min_binding_size: None,
+            },
+            count: None,
+        };
+        let layout = self
+            .device
+            .create_bind_group_layout(&wgpu::BindGroupLayoutDescriptor {
+                label: Some("microsurface"),
+                entries: &[entry(0, true), entry(1, false)],
+            });
+        let pipeline_layout = self
+            .device
+            .create_pipeline_layout(&wgpu::PipelineLayoutDescriptor {
+                label: Some("microsurface"),
+                bind_group_layouts: &[Some(&layout)],
+                immediate_size: 0,
+            });
+        Ok(Program {
+            module,
+            layout,
+            pipeline_layout,
+            pipelines: Mutex::new(HashMap::new()),
+        })
+    }
+
+    /// The compute pipeline of `entry` in `program` (made once, then cached).
+    pub fn pipeline(&self, program: &Program, entry: &str) -> Result<wgpu::ComputePipeline, Error> {
+        let mut map = program.pipelines.lock().unwrap_or_else(|e| e.into_inner());
+        if let Some(p) = map.get(entry) {
+            return Ok(p.clone());
+        }
+        let scope = self.device.push_error_scope(wgpu::ErrorFilter::Validation);
+        let p = self
+            .device
+            .create_compute_pipeline(&wgpu::ComputePipelineDescriptor {
+                label: Some(entry),
+                layout: Some(&program.pipeline_layout),
+                module: &program.module,
+                entry_point: Some(entry),
+                compilation_options: Default::default(),
+                cache: None,
+            });
+        if let Some(e) = pollster::block_on(scope.pop()) {
+            return Err(Error::Shader(format!("{entry}: {e}")));
+        }
+        map.insert(entry.to_string(), p.clone());
+        Ok(p)
+    }
+
+    /// The bind group of `program`'s layout over an input and an output buffer.
+    pub fn bind(
+        &self,
+        program: &Program,
+        input: &wgpu::Buffer,
+        output: &wgpu::Buffer,
+    ) -> wgpu::BindGroup {
+        self.device.create_bind_group(&wgpu::BindGroupDescriptor {
+            label: Some("microsurface"),
+            layout: &program.layout,
+            entries: &[
+                wgpu::BindGroupEntry {
+                    binding: 0,
+                    resource: input.as_entire_binding(),
+                },
+                wgpu::BindGroupEntry {
+                    binding: 1,
+                    resource: output.as_entire_binding(),
+                },
+            ],
+        })
+    }
+
+    /// A storage buffer of `bytes` (copy source and destination too).
+    pub fn storage(&self, bytes: u64) -> wgpu::Buffer {
+        self.device.create_buffer(&wgpu::BufferDescriptor {
+            label: Some("microsurface"),
+            size: bytes.max(16),
+            usage: wgpu::BufferUsages::STORAGE
+                | wgpu::BufferUsages::COPY_DST
+                | wgpu::BufferUsages::COPY_SRC,
+            mapped_at_creation: false,
+        })
+    }
+
+    /// Runs `entry` over `input` (`per_in` records of `vec4<f32>` per element) and returns
+    /// `per_out` records per element: workgroups of [`WORKGROUP`] in x, then y where x
+    /// would pass the device's 65535 (the kernels take the index x + y·64·(groups in x)).
+    pub fn run(
+        &self,
+        program: &Program,
+        entry: &str,
+        input: &[[f32; 4]],
+        per_in: usize,
+        per_out: usize,
+    ) -> Result<Vec<[f32; 4]>, Error> {
+        let n = input.len() / per_in;
+        let pipeline = self.pipeline(program, entry)?;
+        let in_buf = self.storage((input.len() * 16) as u64);
+        self.queue
+            .write_buffer(&in_buf, 0, bytemuck::cast_slice(&input[..n * per_in]));
+        let out_bytes = (n * per_out * 16) as u64;
+        let out_buf = self.storage(out_bytes);
+        let read = self.device.create_buffer(&wgpu::BufferDescriptor {
+            label: Some("readback"),
+            size: out_bytes.max(16),
+            usage: wgpu::BufferUsages::MAP_READ | wgpu::BufferUsages::COPY_DST,
+            mapped_at_creation: false,
+        });
+        let bind = self.bind(program, &in_buf, &out_buf);
+        let mut enc = self
+            .device
+            .create_command_encoder(&wgpu::CommandEncoderDescriptor { label: None });
+        {
+            let mut pass = enc.begin_compute_pass(&wgpu::ComputePassDescriptor::default());
+            pass.set_pipeline(&pipeline);
+            pass.set_bind_group(0, &bind, &[]);
+            let (x, y) = groups(n as u64);
+            pass.dispatch_workgroups(x, y, 1);
+        }
+        enc.copy_buffer_to_buffer(&out_buf, 0, &read, 0, out_bytes.max(16));
+        self.queue.submit([enc.finish()]);
+        let (tx, rx) = mpsc::channel();
+        read.slice(..).map_async(wgpu::MapMode::Read, move |r| {
+            let _ = tx.send(r);
+        });
+        self.device
+            .poll(wgpu::PollType::wait_indefinitely())
+            .map_err(|e| Error::Readback(e.to_string()))?;
+        rx.recv()
+            .map_err(|e| Error::Readback(e.to_string()))?
+            .map_err(|e| Error::Readback(e.to_string()))?;
+        let view = read
+            .get_mapped_range(..)
+            .map_err(|e| Error::Readback(e.to_string()))?;
+        let out: Vec<[f32; 4]> = bytemuck::cast_slice(&view[..(n * per_out * 16)]).to_vec();
+        drop(view);
+        read.unmap();
+        Ok(out)
+    }
+}
+
+/// Workgroups (x, y) covering n elements in groups of [`WORKGROUP`]: x at most 65535.
+pub fn groups(n: u64) -> (u32, u32) {
+    let g = n.div_ceil(WORKGROUP as u64).max(1);
+    let x = g.min(65_535);
+    (x as u32, g.div_ceil(x) as u32)
+}

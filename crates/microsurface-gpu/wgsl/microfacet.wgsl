@@ -1,0 +1,78 @@
+// microsurface WGSL library: a material's distribution chosen at run time (microfacet.wgsl),
+// the WGSL counterpart of the Rust `MicrofacetDistribution` door that the BSDFs use. A
+// renderer that knows its NDF calls the per-NDF functions (ms_ggx_d, …) directly.
+
+// Which NDF (`ndf`: an MS_NDF_* constant) at roughness (αx, αy).
+struct MsMicrofacet {
+    ndf: u32,
+    alpha: vec2<f32>,
+}
+
+const MS_NDF_GGX: u32 = 0u;
+
+// D(wm); 0 below the horizon (and for an NDF this library does not have).
+fn ms_d(mf: MsMicrofacet, wm: vec3<f32>) -> f32 {
+    if mf.ndf == MS_NDF_GGX {
+        return ms_ggx_d(wm, mf.alpha);
+    }
+    return 0.0;
+}
+
+// Smith Λ(w).
+fn ms_lambda(mf: MsMicrofacet, w: vec3<f32>) -> f32 {
+    if mf.ndf == MS_NDF_GGX {
+        return ms_ggx_lambda(w, mf.alpha);
+    }
+    return 0.0;
+}
+
+// G1(w).
+fn ms_g1(mf: MsMicrofacet, w: vec3<f32>) -> f32 {
+    if mf.ndf == MS_NDF_GGX {
+        return ms_ggx_g1(w, mf.alpha);
+    }
+    return 0.0;
+}
+
+// Height-correlated G2(wo, wi).
+fn ms_g2(mf: MsMicrofacet, wo: vec3<f32>, wi: vec3<f32>) -> f32 {
+    if mf.ndf == MS_NDF_GGX {
+        return ms_ggx_g2(wo, wi, mf.alpha);
+    }
+    return 0.0;
+}
+
+// Separable G2(wo, wi) = G1(wo) G1(wi).
+fn ms_g2_separable(mf: MsMicrofacet, wo: vec3<f32>, wi: vec3<f32>) -> f32 {
+    return ms_g1(mf, wo) * ms_g1(mf, wi);
+}
+
+// The visible-normal density D_w(wm).
+fn ms_pdf(mf: MsMicrofacet, w: vec3<f32>, wm: vec3<f32>) -> f32 {
+    if mf.ndf == MS_NDF_GGX {
+        return ms_ggx_pdf(w, wm, mf.alpha);
+    }
+    return 0.0;
+}
+
+// A visible normal for w from u ∈ [0, 1)², with its pdf.
+fn ms_sample(mf: MsMicrofacet, w: vec3<f32>, u: vec2<f32>) -> MsSample {
+    if mf.ndf == MS_NDF_GGX {
+        return ms_ggx_sample(w, mf.alpha, u);
+    }
+    return MsSample(vec3<f32>(0.0, 0.0, 1.0), 0.0);
+}
+
+// A normal distributed as D(m) cos θm, with its pdf.
+fn ms_sample_dcos(mf: MsMicrofacet, u: vec2<f32>) -> MsSample {
+    if mf.ndf == MS_NDF_GGX {
+        return ms_ggx_sample_dcos(mf.alpha, u);
+    }
+    return MsSample(vec3<f32>(0.0, 0.0, 1.0), 0.0);
+}
+
+// Whether the surface is effectively smooth (max(αx, αy) < 1e-3): the BSDFs are then a
+// delta lobe, as pbrt-v4's and the Rust types'.
+fn ms_effectively_smooth(mf: MsMicrofacet) -> bool {
+    return max(mf.alpha.x, mf.alpha.y) < 1e-3;
+}
