@@ -233,6 +233,75 @@ impl AlbedoTable {
         Ok(AlbedoTable { table, source })
     }
 
+    /// The same table from its node values and material (`__reduce__`'s inverse, not API).
+    #[staticmethod]
+    #[pyo3(signature = (values, source = None))]
+    fn _restore(values: Vec<f64>, source: Option<(String, Option<f64>, f64)>) -> PyResult<Self> {
+        let table = Table::from_values(values)
+            .ok_or_else(|| PyValueError::new_err("at least 4 finite values expected"))?;
+        let source = source
+            .map(|(kind, shape, alpha)| {
+                kind.parse::<NdfKind>()
+                    .map(|k| (k, shape, alpha))
+                    .map_err(|e| PyValueError::new_err(e.to_string()))
+            })
+            .transpose()?;
+        Ok(AlbedoTable {
+            table: std::sync::Arc::new(table),
+            source,
+        })
+    }
+
+    /// Pickle, copy: the node values (exact) and the material it is of.
+    fn __reduce__<'py>(
+        slf: &Bound<'py, Self>,
+    ) -> PyResult<(Bound<'py, PyAny>, Bound<'py, pyo3::types::PyTuple>)> {
+        let py = slf.py();
+        let this = slf.get();
+        let source = this.source.map(|(k, s, a)| (k.name(), s, a));
+        let args = (this.table.values().to_vec(), source).into_pyobject(py)?;
+        Ok((slf.get_type().getattr("_restore")?, args))
+    }
+
+    /// ``AlbedoTable(<ndf at α>, 33 nodes, E_avg = ...)``: what it is of (not evaluable: a
+    /// table is computed; ``pickle`` and ``save``/``load`` round-trip it).
+    fn __repr__(&self) -> String {
+        let of = match self.source {
+            Some((k, Some(s), a)) => format!("{k}:{s} at alpha={a}, "),
+            Some((k, None, a)) => format!("{k} at alpha={a}, "),
+            None => String::new(),
+        };
+        format!(
+            "AlbedoTable({of}{} nodes, e_avg={})",
+            self.table.values().len(),
+            self.table.e_avg()
+        )
+    }
+
+    /// Equal when of the same node values and material.
+    fn __eq__(&self, other: &Bound<'_, PyAny>) -> bool {
+        let Ok(o) = other.downcast::<AlbedoTable>() else {
+            return false;
+        };
+        let o = o.get();
+        self.table.values() == o.table.values() && self.source == o.source
+    }
+
+    /// By the node values' bits and the material.
+    fn __hash__(&self) -> isize {
+        let mut h = std::collections::hash_map::DefaultHasher::new();
+        for v in self.table.values() {
+            std::hash::Hash::hash(&v.to_bits(), &mut h);
+        }
+        std::hash::Hash::hash(
+            &self
+                .source
+                .map(|(k, s, a)| (k.name(), s.map(f64::to_bits), a.to_bits())),
+            &mut h,
+        );
+        std::hash::Hasher::finish(&h) as isize
+    }
+
     /// The nodes' μ (uniform in √μ; the grazing node at μ = 1e-6), float64.
     #[getter]
     fn mu<'py>(&self, py: Python<'py>) -> Bound<'py, PyArray1<f64>> {

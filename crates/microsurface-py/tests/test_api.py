@@ -1118,3 +1118,13 @@ def test_matched_alpha_over_parameter_arrays():
     assert b.alpha.shape == (2,) and b.alpha[1] == mf.matched_alpha(mf.Beckmann, mf.GGX(0.5)).alpha
     with pytest.raises(ValueError, match="no alpha"):
         mf.matched_alpha("student_t:1.4", mf.GGX([0.3, 0.5]), by="sigma0")
+
+
+def test_albedo_table_is_an_ordinary_object():
+    import copy
+    import pickle
+
+    t = mf.AlbedoTable(mf.GTR(0.4, 1.5))
+    for u in (pickle.loads(pickle.dumps(t)), copy.copy(t), copy.deepcopy(t)):
+        assert u == t and hash(u) == hash(t) and np.array_equal(u.values, t.values) and u.e_avg == t.e_avg
+    assert "gtr:1.5 at alpha=0.4" in repr(t) and t != mf.AlbedoTable(mf.GTR(0.5, 1.5))
