@@ -9,6 +9,19 @@ use rayon::prelude::*;
 /// A slice form: (u, α, out).
 type Slice<T> = fn(&[T], &[T], &mut [T]);
 
+/// The median over `reps` runs of `run`, in ns per element of n.
+fn median(reps: usize, n: usize, mut run: impl FnMut()) -> f64 {
+    let mut t: Vec<f64> = (0..reps.max(1))
+        .map(|_| {
+            let start = std::time::Instant::now();
+            run();
+            start.elapsed().as_secs_f64() * 1e9 / n as f64
+        })
+        .collect();
+    t.sort_by(f64::total_cmp);
+    t[t.len() / 2]
+}
+
 /// The Rust slice forms' own speed in this process, for the benchmark script
 /// (benchmark.py): GGX `quantity` ('d' or 'lambda') over n uniform cosines at α in f64 or
 /// (`f32`) f32, into a preallocated output, on one thread and on rayon's pool in pieces of
@@ -28,17 +41,6 @@ fn _rust_slice_ns(
         "lambda" => (batch::ggx_lambda, batch::ggx_lambda_f32),
         _ => return Err(PyValueError::new_err("quantity: 'd' or 'lambda'")),
     };
-    fn median(reps: usize, n: usize, mut run: impl FnMut()) -> f64 {
-        let mut t: Vec<f64> = (0..reps.max(1))
-            .map(|_| {
-                let start = std::time::Instant::now();
-                run();
-                start.elapsed().as_secs_f64() * 1e9 / n as f64
-            })
-            .collect();
-        t.sort_by(f64::total_cmp);
-        t[t.len() / 2]
-    }
     fn both<T: Copy + Send + Sync + Default>(
         u: &[T],
         alpha: T,
@@ -99,17 +101,6 @@ fn _rust_fast_ns(
         return Err(PyValueError::new_err(
             "quantity: 'd', 'lambda', 'g1' or 'pdf'",
         ));
-    }
-    fn median(reps: usize, n: usize, mut run: impl FnMut()) -> f64 {
-        let mut t: Vec<f64> = (0..reps.max(1))
-            .map(|_| {
-                let start = std::time::Instant::now();
-                run();
-                start.elapsed().as_secs_f64() * 1e9 / n as f64
-            })
-            .collect();
-        t.sort_by(f64::total_cmp);
-        t[t.len() / 2]
     }
     Ok(py.allow_threads(|| {
         let mut s = 0x9E37_79B9_7F4A_7C15u64;
