@@ -200,8 +200,9 @@ fn single_scattering_albedo(
 /// uses them: interpolated from the tables the library ships where ``ndf`` is one of them
 /// (isotropic GGX, Beckmann, Double GGX, the Exponential NDF, GTR γ ∈ {1, 2}, α ∈ [0.01,
 /// 4]), else 33 quadratures computed here on the material's fast kernels (tens of
-/// milliseconds to seconds; Ctrl-C interrupts the wait) and kept for the process: the
-/// compensated BSDFs of the same material reuse them.
+/// milliseconds to seconds, minutes for the generalised exponential; Ctrl-C interrupts the
+/// wait; ``progress=True``: a tqdm bar over the nodes where tqdm is installed) and kept for
+/// the process: the compensated BSDFs of the same material reuse them.
 #[pyclass(frozen, module = "microsurface")]
 pub struct AlbedoTable {
     table: std::sync::Arc<Table>,
@@ -225,11 +226,20 @@ fn grid_of(kind: NdfKind, shape: Option<f64>, alpha: Vec<f64>, mu: Vec<f64>) -> 
 #[pymethods]
 impl AlbedoTable {
     #[new]
-    fn new(py: Python<'_>, ndf: PyRef<'_, NDF>) -> PyResult<Self> {
+    #[pyo3(signature = (ndf, progress = false))]
+    fn new(py: Python<'_>, ndf: PyRef<'_, NDF>, progress: bool) -> PyResult<Self> {
         let d = ndf.material()?.clone();
         let source = d.ndf().map(|(kind, shape)| (kind, shape, d.alpha().0));
         let source = source.filter(|_| d.alpha().0 == d.alpha().1);
-        let table = crate::engine::interruptible(py, move || Table::new(&d))?;
+        let progress = Progress::new(py, progress)?;
+        let counts = progress.counts();
+        let report = move |done: usize, total: usize| counts.set(done as u64, total as u64);
+        let table = crate::engine::interruptible_ticking(
+            py,
+            move || Table::new_with_progress(&d, &report),
+            progress.ticker(),
+        )?;
+        progress.close(py)?;
         Ok(AlbedoTable { table, source })
     }
 
@@ -440,6 +450,68 @@ impl AlbedoTable {
     }
 }
 
+/// A long call's progress: the counts its worker sets (done, total; from any thread) and the
+/// tqdm bar (where `progress=True` and tqdm is installed) that a ticker brings up to date
+/// with the GIL, every 50 ms of [`crate::engine::interruptible_ticking`]'s wait.
+struct Progress {
+    bar: Option<PyObject>,
+    counts: std::sync::Arc<Counts>,
+}
+
+/// (done, total) of a worker.
+#[derive(Default)]
+struct Counts([std::sync::atomic::AtomicU64; 2]);
+
+impl Counts {
+    fn set(&self, done: u64, total: u64) {
+        self.0[0].store(done, std::sync::atomic::Ordering::Relaxed);
+        self.0[1].store(total, std::sync::atomic::Ordering::Relaxed);
+    }
+}
+
+impl Progress {
+    fn new(py: Python<'_>, on: bool) -> PyResult<Self> {
+        Ok(Progress {
+            bar: if on { crate::engine::tqdm(py)? } else { None },
+            counts: Default::default(),
+        })
+    }
+
+    /// The counts, for the worker.
+    fn counts(&self) -> std::sync::Arc<Counts> {
+        self.counts.clone()
+    }
+
+    /// The bar's update, for the wait.
+    fn ticker(&self) -> impl FnMut(Python<'_>) -> PyResult<()> + Send + use<> {
+        let bar = self
+            .bar
+            .as_ref()
+            .map(|b| Python::with_gil(|py| b.clone_ref(py)));
+        let counts = self.counts.clone();
+        let mut shown = 0u64;
+        move |py| {
+            let Some(b) = &bar else {
+                return Ok(());
+            };
+            let b = b.bind(py);
+            let done = counts.0[0].load(std::sync::atomic::Ordering::Relaxed);
+            let total = counts.0[1].load(std::sync::atomic::Ordering::Relaxed);
+            b.setattr("total", total)?;
+            b.call_method1("update", (done.saturating_sub(shown),))?;
+            shown = shown.max(done);
+            Ok(())
+        }
+    }
+
+    fn close(&self, py: Python<'_>) -> PyResult<()> {
+        if let Some(b) = &self.bar {
+            b.bind(py).call_method0("close")?;
+        }
+        Ok(())
+    }
+}
+
 /// The `Table` named tuple of a grid: its nodes, quantity names and values (α, μ, quantity).
 fn table_tuple(py: Python<'_>, g: &Grid) -> PyResult<PyObject> {
     let (na, nm, nq) = (g.spec.alpha.len(), g.spec.mu.len(), g.quantities.len());
@@ -536,41 +608,12 @@ fn table(
         mu,
     };
     spec.validate().map_err(|e| PyValueError::new_err(e.0))?;
-    let bar = if progress {
-        crate::engine::tqdm(py)?
-    } else {
-        None
-    };
-    let state = std::sync::Arc::new([
-        std::sync::atomic::AtomicU64::new(0),
-        std::sync::atomic::AtomicU64::new(0),
-    ]);
-    let shared = state.clone();
-    let work = move || {
-        Grid::generate(&spec, &|done, total| {
-            shared[0].store(done, std::sync::atomic::Ordering::Relaxed);
-            shared[1].store(total, std::sync::atomic::Ordering::Relaxed);
-        })
-    };
-    let mut shown = 0u64;
-    let bar_ref = bar.as_ref().map(|b| b.clone_ref(py));
-    let grid = crate::engine::interruptible_ticking(py, work, |py| {
-        if let Some(b) = &bar_ref {
-            let b = b.bind(py);
-            let (done, total) = (
-                state[0].load(std::sync::atomic::Ordering::Relaxed),
-                state[1].load(std::sync::atomic::Ordering::Relaxed),
-            );
-            b.setattr("total", total)?;
-            b.call_method1("update", (done.saturating_sub(shown),))?;
-            shown = shown.max(done);
-        }
-        Ok(())
-    })?
-    .map_err(|e| PyValueError::new_err(e.0))?;
-    if let Some(b) = &bar {
-        b.bind(py).call_method0("close")?;
-    }
+    let progress = Progress::new(py, progress)?;
+    let counts = progress.counts();
+    let work = move || Grid::generate(&spec, &|done, total| counts.set(done, total));
+    let grid = crate::engine::interruptible_ticking(py, work, progress.ticker())?
+        .map_err(|e| PyValueError::new_err(e.0))?;
+    progress.close(py)?;
     if let Some(path) = out {
         if path.extension().and_then(|e| e.to_str()) != Some("mfa") {
             return Err(PyValueError::new_err(

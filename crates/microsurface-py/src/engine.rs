@@ -731,16 +731,8 @@ fn guarded<'a>(
 
 /// `f()` on a thread of its own while this one waits without the GIL, checking the signals
 /// every 50 ms: Ctrl-C raises KeyboardInterrupt at once (the computation, which cannot be
-/// cut short from outside, finishes in the background and is dropped).
-pub fn interruptible<T: Send + 'static>(
-    py: Python<'_>,
-    f: impl FnOnce() -> T + Send + 'static,
-) -> PyResult<T> {
-    interruptible_ticking(py, f, |_| Ok(()))
-}
-
-/// [`interruptible`], calling `tick` with the GIL every 50 ms while `f` runs (a progress
-/// bar's update) and once at its end.
+/// cut short from outside, finishes in the background and is dropped); `tick` is called
+/// with the GIL at each check (a progress bar's update) and once at the end.
 pub fn interruptible_ticking<T: Send + 'static>(
     py: Python<'_>,
     f: impl FnOnce() -> T + Send + 'static,

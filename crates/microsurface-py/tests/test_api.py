@@ -1025,6 +1025,9 @@ def test_table_progress_uses_tqdm_where_installed(monkeypatch):
     mf.table("ggx", [0.3, 0.5], [0.5, 1.0], walks=70_000, progress=True)
     n, total = seen["done"]
     assert total >= 4 and n == total
+    # AlbedoTable: a computed table's 33 nodes (Student-T has no shipped table).
+    mf.AlbedoTable(mf.StudentT(0.37, 3.3), progress=True)
+    assert seen["done"] == (33, 33)
     monkeypatch.setitem(sys.modules, "tqdm", None)  # (import fails: silent)
     mf.table("ggx", [0.3], [0.5], walks=100, progress=True)
 

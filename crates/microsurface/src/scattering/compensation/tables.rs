@@ -57,31 +57,59 @@ impl AlbedoTable {
     /// own precision). Computed tables of the library's materials are cached for the
     /// process, so the compensated BSDFs of one material share one table.
     pub fn new<F: Real, D: MicrofacetDistribution<F>>(dist: &D) -> Arc<Self> {
+        Self::new_with_progress(dist, &|_, _| {})
+    }
+
+    /// [`AlbedoTable::new`], calling `progress(done, total)` after each node a computed table
+    /// evaluates (from the computing thread; never for a shipped or cached table): for a
+    /// caller that shows progress (the Python package's `progress=True`; the generalised
+    /// exponential's table takes minutes).
+    pub fn new_with_progress<F: Real, D: MicrofacetDistribution<F>>(
+        dist: &D,
+        progress: &(dyn Fn(usize, usize) + Sync),
+    ) -> Arc<Self> {
         static TABLES: TableCache<AlbedoTable> = OnceLock::new();
-        table_of(dist, &TABLES, 0, Self::shipped, Self::compute, || {
-            Self::compute(&Widened(dist, PhantomData))
-        })
+        table_of(
+            dist,
+            &TABLES,
+            0,
+            Self::shipped,
+            |twin| Self::compute_with_progress(twin, progress),
+            || Self::compute_with_progress(&Widened(dist, PhantomData), progress),
+        )
     }
 
     /// The table of `dist` computed here: 33 quadratures of the single-scattering albedo
     /// (tens of milliseconds; hundreds at small α, where the lobe is narrow).
     pub fn compute<D: MicrofacetDistribution<f64>>(dist: &D) -> Self {
+        Self::compute_with_progress(dist, &|_, _| {})
+    }
+
+    /// [`AlbedoTable::compute`], calling `progress(done, total)` after each node.
+    pub fn compute_with_progress<D: MicrofacetDistribution<f64>>(
+        dist: &D,
+        progress: &(dyn Fn(usize, usize) + Sync),
+    ) -> Self {
         let (ax, ay) = dist.alpha();
         let azimuths: &[f64] = if ax == ay {
             &[0.0]
         } else {
             &[0.0, 0.25, 0.5, 0.75]
         };
+        let done = std::sync::atomic::AtomicUsize::new(0);
         Self::from_fn(|mu| {
             let st = ((1.0 - mu) * (1.0 + mu)).sqrt();
-            azimuths
+            let e = azimuths
                 .iter()
                 .map(|&p| {
                     let (sp, cp) = (p * std::f64::consts::FRAC_PI_2).sin_cos();
                     single_scattering_albedo_tol(dist, [st * cp, st * sp, mu], TABLE_TOL)
                 })
                 .sum::<f64>()
-                / azimuths.len() as f64
+                / azimuths.len() as f64;
+            let k = done.fetch_add(1, std::sync::atomic::Ordering::Relaxed) + 1;
+            progress(k, NODES);
+            e
         })
     }
 
