@@ -269,7 +269,7 @@ pub fn albedo<D: MicrofacetDistribution<f64>>(
 }
 
 /// The albedo by side and by `orders` order bins (1, 2, …, `orders` − 1 and ≥ `orders`;
-/// at least 1), as [`albedo`] (the same walks from the same seed: its 4-order figures are
+/// at least 1) from wo (any finite nonzero length), as [`albedo`] (the same walks from the same seed: its 4-order figures are
 /// these at `orders` = 4, and the orders below the last are the same for any `orders`).
 pub fn albedo_orders<D: MicrofacetDistribution<f64>>(
     surface: &RandomWalk<D>,
@@ -279,6 +279,9 @@ pub fn albedo_orders<D: MicrofacetDistribution<f64>>(
     seed: u64,
     orders: usize,
 ) -> AlbedoOrders {
+    // (A direction of any finite nonzero length, as the contract has them: the walk's
+    // heights and cosines are for unit vectors.)
+    let wo = crate::distribution::unit(wo);
     let mut rng = WalkRng::new(seed);
     let mut sums = AlbedoSums::with_orders(orders);
     for _ in 0..walks {
