@@ -3642,8 +3642,8 @@ fn matched_orders_and_table_values() {
         }
     }
     // The albedo by orders: F = 1 mirror facets, the NDFs without a shape (the walk's own
-    // fuzz test covers the family; the walk stalls for Student-T near γ = 3/2: 200 walks at
-    // α = 0.0075 took 50 s here, noted), any wo.
+    // fuzz test covers the family, with Student-T at γ ≥ 1.6: drawn from its whole
+    // finite-Λ range here, 200 of its walks at α = 0.0075 took 50 s, noted), any wo.
     let facets = MirrorFacets(microsurface::bsdf::fresnel::One::<1>);
     for _ in 0..10 * scale() {
         let kind = r.pick(&[
