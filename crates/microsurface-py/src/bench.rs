@@ -77,8 +77,8 @@ fn _rust_slice_ns(
     }))
 }
 
-/// The Rust loop that the Python fast path of every NDF is measured against (benchmark.py,
-/// issue 35 target 8): `quantity` ('d', 'lambda', 'g1' of n uniform cosines, at the direction
+/// The Rust loop that the Python fast path of every NDF is measured against (benchmark.py's
+/// `fast` table): `quantity` ('d', 'lambda', 'g1' of n uniform cosines, at the direction
 /// (√(1 − u²), 0, u) formed in the loop; 'pdf': the visible density of n pairs of upper-hemisphere directions)
 /// of the material `spec` (a spec string: 'ggx', 'gtr:1.5', ...) at α through the library's
 /// run-time door ([`microsurface::AnyMicrofacet<f64>`]), for every element into a

@@ -1,4 +1,4 @@
-//! Parameters as arrays, SciPy's frozen distributions' way (issue 36, item 1): every
+//! Parameters as arrays, SciPy's frozen distributions' way: every
 //! parameter of a class (α, αy, γ or a; η and k of the BSDFs) is a number or an array. The
 //! arrays broadcast with each other when the object is built (a shape error names each
 //! parameter's shape, a bad element its index) and, in every method, with the method's
