@@ -422,9 +422,26 @@ fn over_normals<D: MicrofacetDistribution<f64>>(
     masking: Masking,
     level: u32,
 ) -> (f64, f64) {
+    let (r, t) = over_normals_weighted(dist, wo, eta, masking, level, |_| [1.0]);
+    (r[0], t[0])
+}
+
+/// [`over_normals`] of K integrands at once: the facets' reflected and transmitted shares
+/// each weighted by `weights(c)`, c = wo·m the cosine at the microfacet (a split sum's
+/// Fresnel terms; smooth in c, so the rule's cuts at the level sets of c stay the only
+/// places the integrand is not smooth).
+pub(crate) fn over_normals_weighted<D: MicrofacetDistribution<f64>, const K: usize>(
+    dist: &D,
+    wo: [f64; 3],
+    eta: Option<f64>,
+    masking: Masking,
+    level: u32,
+    weights: impl Fn(f64) -> [f64; K],
+) -> ([f64; K], [f64; K]) {
     use std::f64::consts::{FRAC_PI_2, PI};
+    let zero = ([0.0; K], [0.0; K]);
     if wo.iter().any(|x| !x.is_finite()) || wo[2] == 0.0 || (eta.is_none() && wo[2] < 0.0) {
-        return (0.0, 0.0);
+        return zero;
     }
     // (A mirror is η = ∞: no transmission, R = 1; its levels below are the dielectric's
     // with η > 1.)
@@ -460,7 +477,7 @@ fn over_normals<D: MicrofacetDistribution<f64>>(
         let c = (k * k + (1.0 - eta) * (1.0 + eta)) / (2.0 * k);
         (c >= k && c <= 1.0).then_some(c)
     };
-    let integrand = |theta: f64, phi: f64| -> (f64, f64) {
+    let integrand = |theta: f64, phi: f64| -> ([f64; K], [f64; K]) {
         let (sm, cm) = theta.sin_cos();
         let (sp, cp) = phi.sin_cos();
         let m = [
@@ -470,11 +487,11 @@ fn over_normals<D: MicrofacetDistribution<f64>>(
         ];
         let c = dot(wo, m);
         if !(c > 0.0) {
-            return (0.0, 0.0);
+            return zero;
         }
         let w = dist.d(m) * c / mu * sm;
         if !(w > 0.0 && w.is_finite()) {
-            return (0.0, 0.0);
+            return zero;
         }
         let r = if mirror {
             1.0
@@ -507,12 +524,14 @@ fn over_normals<D: MicrofacetDistribution<f64>>(
         } else {
             0.0
         };
-        (w * r * gr, w * (1.0 - r) * gt)
+        let (wr, wt) = (w * r * gr, w * (1.0 - r) * gt);
+        let k = weights(c);
+        (k.map(|x| wr * x), k.map(|x| wt * x))
     };
     let rule = crate::math::quad::rule01(level);
     let (ax, ay) = dist.alpha();
     let iso = ax == ay;
-    let over_phi = |theta: f64| -> (f64, f64) {
+    let over_phi = |theta: f64| -> ([f64; K], [f64; K]) {
         let (sm, cm) = theta.sin_cos();
         let mut cuts = vec![0.0, PI];
         let mut levels = vec![0.0, mu / (2.0 * cm)];
@@ -528,19 +547,14 @@ fn over_normals<D: MicrofacetDistribution<f64>>(
             }
         }
         cuts.sort_by(f64::total_cmp);
-        let mut sum = (0.0, 0.0);
+        let mut sum = zero;
         for p in cuts.windows(2) {
             let (r, t) = apply_rule(&rule, p[0], p[1], |phi| {
                 let a = integrand(theta, phi);
-                if iso {
-                    (2.0 * a.0, 2.0 * a.1)
-                } else {
-                    let b = integrand(theta, -phi);
-                    (a.0 + b.0, a.1 + b.1)
-                }
+                let b = if iso { a } else { integrand(theta, -phi) };
+                (add(a.0, b.0), add(a.1, b.1))
             });
-            sum.0 += r;
-            sum.1 += t;
+            sum = (add(sum.0, r), add(sum.1, t));
         }
         sum
     };
@@ -601,33 +615,38 @@ fn over_normals<D: MicrofacetDistribution<f64>>(
     }
     cuts.sort_by(f64::total_cmp);
     cuts.dedup();
-    let mut sum = (0.0, 0.0);
+    let mut sum = zero;
     for p in cuts.windows(2) {
         let (r, t) = apply_rule(&rule, p[0], p[1], over_phi);
-        sum.0 += r;
-        sum.1 += t;
+        sum = (add(sum.0, r), add(sum.1, t));
     }
     sum
 }
 
-/// ∫_a^b of a pair-valued f by `rule`.
-fn apply_rule(
+fn add<const K: usize>(a: [f64; K], b: [f64; K]) -> [f64; K] {
+    std::array::from_fn(|i| a[i] + b[i])
+}
+
+/// ∫_a^b of a pair-valued f by `rule` (a node whose value is not finite counts 0).
+fn apply_rule<const K: usize>(
     rule: &[(f64, bool, f64)],
     a: f64,
     b: f64,
-    mut f: impl FnMut(f64) -> (f64, f64),
-) -> (f64, f64) {
+    mut f: impl FnMut(f64) -> ([f64; K], [f64; K]),
+) -> ([f64; K], [f64; K]) {
     let len = b - a;
-    let mut sum = (0.0, 0.0);
+    let mut sum = ([0.0; K], [0.0; K]);
     for &(d, upper, w) in rule {
         let x = if upper { b - len * d } else { a + len * d };
         let (p, q) = f(x);
-        if p.is_finite() && q.is_finite() {
-            sum.0 += w * p;
-            sum.1 += w * q;
+        if p.iter().chain(&q).all(|v| v.is_finite()) {
+            for i in 0..K {
+                sum.0[i] += w * p[i];
+                sum.1[i] += w * q[i];
+            }
         }
     }
-    (sum.0 * len, sum.1 * len)
+    (sum.0.map(|v| v * len), sum.1.map(|v| v * len))
 }
 
 /// ∫ g(wi) dωi over the hemisphere of sign `side` (±1: wi.z of that sign) of a lobe that

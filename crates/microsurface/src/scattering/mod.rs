@@ -100,6 +100,7 @@
 
 pub(crate) mod albedo;
 pub(crate) mod compensation;
+pub mod lut;
 pub mod table;
 pub(crate) mod walk;
 

@@ -26,7 +26,7 @@ const DIELECTRIC_NODES: usize = 65;
 
 /// Gauss–Legendre nodes and weights on [0, 1], 8 points (exact for degree 15: the cubic
 /// interpolant times μ on each interval, and the smooth Fresnel averages).
-pub(super) const GL8: [(f64, f64); 8] = [
+pub(crate) const GL8: [(f64, f64); 8] = [
     (0.019_855_071_751_231_856, 0.050_614_268_145_188_13),
     (0.101_666_761_293_186_63, 0.111_190_517_226_687_24),
     (0.237_233_795_041_835_5, 0.156_853_322_938_943_64),
