@@ -5,6 +5,7 @@ mod albedo;
 mod bsdf;
 mod eval;
 mod json;
+mod lut;
 mod report;
 mod sample;
 mod table;
@@ -99,6 +100,25 @@ const TABLE_USAGE: &str = "\
       documented in microsurface::scattering::table.
 ";
 
+const LUT_USAGE: &str = "\
+  microsurface lut --ndf NAME --kind albedo|albedo-avg|dfg|dielectric|dielectric-avg
+                 [--gamma G | --a A] [--size N] [--eta-size N] [--aspect-size N]
+                 [--mu-axis mu|sqrt_mu] [--roughness-axis sqrt_alpha|alpha]
+                 [--alpha-max A] [--format npy|png|exr|ktx2|c|rust|wgsl] [--out FILE]
+                 [--level L] [--check N]
+      the tables real-time engines load (microsurface::scattering::lut): E(mu, alpha)
+      of the F = 1 conductor and its average, the split-sum terms A, B (Schlick:
+      F0 A + B) and C (F82-tint: F0 A + B - a C), a dielectric's R and T from both
+      sides over (side, eta, alpha, mu) and their averages; --size nodes along mu and
+      roughness (default 32), --eta-size along eta = 1 + 2 x^2 (default 16),
+      --aspect-size along alpha_y/alpha_x (anisotropic, averaged over the azimuth;
+      default 0, isotropic); nodes at texel centres (i + 0.5)/n. The format by --format,
+      else FILE's extension, else npy; FILE defaults to NDF_KIND_SIZE.EXT. Writes
+      FILE.json beside it: the parameters, axes, layout and the errors measured (the
+      linear filter against the quadrature at --check points per axis, default 8, 0
+      skips; the file read back against the values). Every core, progress on stderr.
+";
+
 const REPORT_USAGE: &str = "\
   microsurface report [--out DIR]
       write DIR/index.html (default report/): every NDF's quantities, identities,
@@ -166,8 +186,10 @@ fn main() -> ExitCode {
         Some("bsdf") if help => usage(BSDF_USAGE),
         Some("albedo") if help => usage(ALBEDO_USAGE),
         Some("table") if help => usage(TABLE_USAGE),
+        Some("lut") if help => usage(LUT_USAGE),
         Some("albedo") => albedo::run(&rest),
         Some("table") => table::run(&rest),
+        Some("lut") => lut::run(&rest),
         Some("bsdf") => bsdf::run(&rest),
         Some("verify") => verify::run(&rest),
         Some("eval") => eval::run(&rest),
@@ -176,7 +198,7 @@ fn main() -> ExitCode {
         Some("-h" | "--help" | "help") => {
             print!(
                 "microsurface {} — microfacet NDFs, exact and verified\n\nusage:\n\
-                 {VERIFY_USAGE}{EVAL_USAGE}{BSDF_USAGE}{ALBEDO_USAGE}{TABLE_USAGE}{SAMPLE_USAGE}{REPORT_USAGE}{USAGE_TAIL}",
+                 {VERIFY_USAGE}{EVAL_USAGE}{BSDF_USAGE}{ALBEDO_USAGE}{TABLE_USAGE}{LUT_USAGE}{SAMPLE_USAGE}{REPORT_USAGE}{USAGE_TAIL}",
                 env!("CARGO_PKG_VERSION")
             );
             Ok(ExitCode::SUCCESS)

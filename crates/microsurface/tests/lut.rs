@@ -220,16 +220,23 @@ fn lookup_is_a_linear_filter_over_texel_centres() {
 fn error_report_measures_the_filter_against_the_quadrature() {
     let lut = Lut::compute(&spec(NdfKind::Ggx, LutKind::Albedo, 16), &quiet).unwrap();
     let acc = lut.error(6, &quiet);
-    // 6 midpoints and 2 border points per axis.
-    assert_eq!(acc.points, 64);
-    assert!(acc.max_abs.is_finite() && acc.max_abs > 0.0 && acc.rms <= acc.max_abs);
-    // The worst point is a real one: its error recomputed.
-    let (x, ch) = &acc.at;
-    let d = (lut.lookup(x)[*ch] - lut.exact(x, 5)[*ch]).abs();
-    assert_eq!(d, acc.max_abs);
-    // A finer table is closer (the linear filter's error is O(h²) inside).
+    // 6 midpoints and 2 border points per axis: 36 inside, 28 with a coordinate outside.
+    assert_eq!((acc.interior.points, acc.border.points), (36, 28));
+    for stat in [&acc.interior, &acc.border] {
+        assert!(stat.max_abs.is_finite() && stat.max_abs > 0.0 && stat.rms <= stat.max_abs);
+        // The worst point is a real one: its error recomputed.
+        let (x, ch) = &stat.at;
+        let d = (lut.lookup(x)[*ch] - lut.exact(x, 5)[*ch]).abs();
+        assert_eq!(d, stat.max_abs);
+    }
+    // A finer table is closer inside (measured rms 2.1e-3 against 3.3e-3: not yet O(h²),
+    // the drop of E at grazing μ for small α is narrower than 32 nodes resolve).
     let fine = Lut::compute(&spec(NdfKind::Ggx, LutKind::Albedo, 32), &quiet).unwrap();
-    assert!(fine.error(6, &quiet).rms < acc.rms);
+    let fine = fine.error(6, &quiet);
+    assert!(
+        fine.interior.rms < 0.5 * acc.interior.rms,
+        "{fine:?} {acc:?}"
+    );
 }
 
 #[cfg(feature = "rayon")]

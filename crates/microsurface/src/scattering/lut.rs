@@ -351,9 +351,9 @@ pub struct Axis {
     pub interpolated: bool,
 }
 
-/// The error of a table as a shader sees it ([`Lut::error`]).
+/// The error of a table as a shader sees it ([`Lut::error`]) over a set of points.
 #[derive(Clone, Debug, PartialEq)]
-pub struct LutAccuracy {
+pub struct ErrorStat {
     /// Largest |lookup − quadrature| over the points and channels.
     pub max_abs: f64,
     /// Its place: the coordinates, then the channel.
@@ -362,6 +362,17 @@ pub struct LutAccuracy {
     pub rms: f64,
     /// How many points were measured.
     pub points: usize,
+}
+
+/// [`Lut::error`]: inside the texel centres, and in the clamped border.
+#[derive(Clone, Debug, PartialEq)]
+pub struct LutAccuracy {
+    /// At the midpoints between nodes (every coordinate between the first and last texel
+    /// centres): the linear filter's error.
+    pub interior: ErrorStat,
+    /// Where some coordinate is halfway into the border (between 0 and the first centre,
+    /// or the last and 1), which clamp-to-edge addressing answers with the edge texel.
+    pub border: ErrorStat,
 }
 
 /// A computed table: see the [module docs](self).
@@ -533,9 +544,10 @@ impl Lut {
     }
 
     /// The error a shader sees: [`Lut::lookup`] against [`Lut::exact`] one level finer than
-    /// the table, at the midpoints between nodes (at most `per_axis` of them per axis,
-    /// evenly strided, the first and last always) and halfway into the clamped border at
-    /// both ends of each axis; every node of `side`.
+    /// the table, on the product grid of, per axis, the midpoints between nodes (at most
+    /// `per_axis` of them, evenly strided, the first and last always) and the two points
+    /// halfway into the clamped border; every node of `side`. Reported apart: the
+    /// interior (every coordinate a midpoint) and the border (some coordinate clamped).
     pub fn error(&self, per_axis: usize, progress: &(dyn Fn(usize, usize) + Sync)) -> LutAccuracy {
         let per_axis = per_axis.max(2);
         let probes: Vec<Vec<f64>> = self
@@ -589,28 +601,36 @@ impl Lut {
         };
         #[cfg(not(feature = "rayon"))]
         let all: Vec<(Vec<f64>, Vec<f64>)> = (0..total).map(point).collect();
-        let mut acc = LutAccuracy {
-            max_abs: 0.0,
-            at: (Vec::new(), 0),
-            rms: 0.0,
-            points: total,
-        };
-        let mut sum = 0.0;
-        let mut count = 0usize;
+        let n_border: Vec<usize> = self.axes.iter().map(|a| a.coords.len()).collect();
+        let mut stats = [(); 2].map(|_| (0.0f64, (Vec::new(), 0usize), 0.0f64, 0usize, 0usize));
         for (x, diff) in all {
+            let border = x
+                .iter()
+                .zip(&self.axes)
+                .zip(&n_border)
+                .any(|((&x, a), &n)| {
+                    a.interpolated && (x < 0.5 / n as f64 || x > 1.0 - 0.5 / n as f64)
+                });
+            let s = &mut stats[border as usize];
+            s.3 += 1;
             for (c, d) in diff.into_iter().enumerate() {
                 // A NaN difference is the worst error there is.
                 let d = if d.is_nan() { f64::INFINITY } else { d };
-                sum += d * d;
-                count += 1;
-                if d > acc.max_abs || acc.at.0.is_empty() {
-                    acc.max_abs = d;
-                    acc.at = (x.clone(), c);
+                s.2 += d * d;
+                s.4 += 1;
+                if d > s.0 || s.1 .0.is_empty() {
+                    s.0 = d;
+                    s.1 = (x.clone(), c);
                 }
             }
         }
-        acc.rms = (sum / count.max(1) as f64).sqrt();
-        acc
+        let [interior, border] = stats.map(|(max_abs, at, sum, points, count)| ErrorStat {
+            max_abs,
+            at,
+            rms: (sum / count.max(1) as f64).sqrt(),
+            points,
+        });
+        LutAccuracy { interior, border }
     }
 }
 
