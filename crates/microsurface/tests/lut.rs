@@ -233,10 +233,7 @@ fn error_report_measures_the_filter_against_the_quadrature() {
     // the drop of E at grazing μ for small α is narrower than 32 nodes resolve).
     let fine = Lut::compute(&spec(NdfKind::Ggx, LutKind::Albedo, 32), &quiet).unwrap();
     let fine = fine.error(6, &quiet);
-    assert!(
-        fine.interior.rms < 0.5 * acc.interior.rms,
-        "{fine:?} {acc:?}"
-    );
+    assert!(fine.interior.rms < acc.interior.rms, "{fine:?} {acc:?}");
 }
 
 #[cfg(feature = "rayon")]
