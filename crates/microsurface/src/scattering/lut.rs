@@ -534,8 +534,12 @@ impl Lut {
         out
     }
 
-    /// The quantity itself at texture coordinates `x` (any, not only nodes; the side's
-    /// rounded), by the quadrature at `level`.
+    /// The quantity itself at texture coordinates `x` in [0, 1] (any, not only nodes; the
+    /// side's rounded), by the quadrature at `level` (clamped to 2 to 7). Where a coordinate
+    /// maps outside the accepted roughness (α = 0 at roughness 0, αy = 0 at aspect 0), α is
+    /// taken at [`crate::ALPHA_MIN`] (or [`crate::ALPHA_MAX`]); μ = 0 is wo on the horizon,
+    /// where the integrals are 0. Coordinates outside [0, 1], NaN, or of the wrong count give
+    /// NaN.
     pub fn exact(&self, x: &[f64], level: u32) -> Vec<f64> {
         if x.len() != self.axes.len() || x.iter().any(|v| !(0.0..=1.0).contains(v)) {
             return vec![f64::NAN; self.channels.len()];
@@ -672,7 +676,13 @@ fn quantity(spec: &LutSpec, axes: &[Axis], x: &[f64], level: u32) -> Vec<f64> {
             _ => p.alpha = spec.alpha_at(x),
         }
     }
+    // (Coordinate 0 of the roughness or the aspect is α = 0 or αy = 0, and αx = ∞: taken at
+    // the accepted range's ends, where the surface is smooth or flat to within 1e-6.)
     let (ax, ay) = stretch(p.alpha, p.aspect);
+    let (ax, ay) = (
+        ax.clamp(crate::ALPHA_MIN, crate::ALPHA_MAX),
+        ay.clamp(crate::ALPHA_MIN, crate::ALPHA_MAX),
+    );
     let Ok(dist) = AnyMicrofacet::<f64>::new(spec.ndf.kind, ax, ay, spec.ndf.shape) else {
         return vec![f64::NAN; spec.kind.channels().len()];
     };
