@@ -5,6 +5,9 @@ mod albedo;
 mod bsdf;
 mod eval;
 mod json;
+// The `lut` command's formats; the command that uses them comes next.
+#[allow(dead_code)]
+mod lut;
 mod report;
 mod sample;
 mod table;

@@ -1,0 +1,2 @@
+//! Lookup tables for real-time engines: the file formats they are written in.
+pub mod format;
