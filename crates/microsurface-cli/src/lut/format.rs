@@ -1029,9 +1029,306 @@ fn read_source(text: &str) -> Result<LutData, String> {
     let expected = meta.nodes()? * meta.channels.len();
     let code = strip_comments(text);
     let (_, init) = code.split_once('=').ok_or("no '=' after the declaration")?;
+    // Up to the declaration's ';': without it the file was cut, maybe inside the last number.
+    let (init, _) = init.split_once(';').ok_or("no ';' closing the array: a truncated file")?;
     let values = float_tokens(init)?;
     if values.len() != expected {
         return Err(format!("{} numbers for dims {:?} × {} channels", values.len(), meta.dims, meta.channels.len()));
     }
     Ok(meta.with_values(values))
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use std::path::PathBuf;
+
+    /// A fresh directory of this process and test (no tempfile crate), removed by `Drop`.
+    struct TempDir(PathBuf);
+
+    impl TempDir {
+        fn new(test: &str) -> TempDir {
+            let dir = std::env::temp_dir().join(format!("microsurface-lut-{}-{test}", std::process::id()));
+            let _ = std::fs::remove_dir_all(&dir);
+            std::fs::create_dir_all(&dir).unwrap();
+            TempDir(dir)
+        }
+    }
+
+    impl Drop for TempDir {
+        fn drop(&mut self) {
+            let _ = std::fs::remove_dir_all(&self.0);
+        }
+    }
+
+    /// Deterministic values in [0, 1] (SplitMix64), opening with the edge cases: 0, 1, a
+    /// subnormal and 0.5 exactly.
+    fn table(dims: &[usize], channels: usize, seed: u64) -> LutData {
+        let count = dims.iter().product::<usize>() * channels;
+        let mut state = seed;
+        let mut values: Vec<f32> = (0..count)
+            .map(|_| {
+                state = state.wrapping_add(0x9E37_79B9_7F4A_7C15);
+                let mut z = state;
+                z = (z ^ (z >> 30)).wrapping_mul(0xBF58_476D_1CE4_E5B9);
+                z = (z ^ (z >> 27)).wrapping_mul(0x94D0_49BB_1331_11EB);
+                ((z ^ (z >> 31)) >> 40) as f32 / (1u64 << 24) as f32
+            })
+            .collect();
+        for (v, edge) in values.iter_mut().zip([0.0, 1.0, 1e-40, 0.5]) {
+            *v = edge;
+        }
+        let axes = ["side", "eta", "sqrt_alpha", "mu"];
+        LutData {
+            name: "test_lut".into(),
+            axes: axes[4 - dims.len()..].iter().map(|s| s.to_string()).collect(),
+            dims: dims.to_vec(),
+            channels: ["A", "B", "C", "D"][..channels].iter().map(|s| s.to_string()).collect(),
+            values,
+        }
+    }
+
+    /// 2, 3 and 4 axes; a last axis of at most 4 nodes (the `.npy` channel-axis rule's edge).
+    const DIMS: [&[usize]; 6] = [&[5, 7], &[6, 3], &[3, 4, 6], &[2, 5, 3], &[2, 3, 4, 5], &[2, 2, 3, 4]];
+
+    fn check_roundtrip(data: &LutData, back: &LutData, format: Format) {
+        let what = format!("{format} {:?} × {}", data.dims, data.channels.len());
+        assert_eq!(back.dims, data.dims, "{what}");
+        assert_eq!(back.values.len(), data.values.len(), "{what}");
+        if format == Format::Npy {
+            assert_eq!(back.channels.len(), data.channels.len(), "{what}");
+            assert_eq!(back.name, "test_lut", "{what}: the stem");
+        } else {
+            assert_eq!((&back.name, &back.axes, &back.channels), (&data.name, &data.axes, &data.channels), "{what}");
+        }
+        for (i, (&v, &r)) in data.values.iter().zip(&back.values).enumerate() {
+            if format.is_exact() {
+                assert_eq!(r.to_bits(), v.to_bits(), "{what}: value {i}: {r} for {v}");
+            } else {
+                let q = (f64::from(v) * 65535.0).round() as u16;
+                assert_eq!(r, f32::from(q) / 65535.0, "{what}: value {i}");
+                assert!((r - v).abs() <= 0.5 / 65535.0 + f32::EPSILON, "{what}: value {i}: {r} for {v}");
+            }
+        }
+    }
+
+    #[test]
+    fn lut_every_format_reads_back_what_it_wrote() {
+        let dir = TempDir::new("roundtrip");
+        for format in Format::ALL {
+            for (d, dims) in DIMS.iter().enumerate() {
+                for channels in 1..=4 {
+                    let data = table(dims, channels, (d * 4 + channels) as u64);
+                    let sub = dir.0.join(format!("{format}_{d}_{channels}"));
+                    std::fs::create_dir(&sub).unwrap();
+                    let path = sub.join(format!("test_lut.{}", format.extension()));
+                    write(&data, format, &path).unwrap();
+                    let back = read(format, &path).unwrap_or_else(|e| panic!("{format}: {e}"));
+                    check_roundtrip(&data, &back, format);
+                }
+            }
+        }
+    }
+
+    #[test]
+    fn lut_png_rejects_values_outside_the_unit_interval() {
+        let dir = TempDir::new("png_range");
+        for bad in [1.5, -1e-7, 1.0000001] {
+            let mut data = table(&[3, 4], 2, 7);
+            data.values[5] = bad;
+            let path = dir.0.join("bad.png");
+            let err = write(&data, Format::Png16, &path).unwrap_err();
+            assert!(err.contains("[0, 1]") && err.contains("channel B"), "{err}");
+            assert!(!path.exists(), "no file after a bad value");
+            assert!(!err.contains('\n'));
+        }
+    }
+
+    #[test]
+    fn lut_bad_tables_are_errors() {
+        let dir = TempDir::new("bad_tables");
+        let good = table(&[3, 4], 2, 1);
+        let mut cases = Vec::new();
+        let mut t = good.clone();
+        t.values.pop();
+        cases.push(t);
+        let mut t = good.clone();
+        t.dims = vec![12];
+        t.axes = vec!["mu".into()];
+        cases.push(t);
+        let mut t = good.clone();
+        t.channels = (0..5).map(|i| format!("c{i}")).collect();
+        cases.push(t);
+        let mut t = good.clone();
+        t.name = "2bad name".into();
+        cases.push(t);
+        let mut t = good.clone();
+        t.axes.pop();
+        cases.push(t);
+        let mut t = good.clone();
+        t.values[3] = f32::NAN;
+        cases.push(t);
+        for (i, case) in cases.iter().enumerate() {
+            for format in Format::ALL {
+                let path = dir.0.join(format!("case{i}.{}", format.extension()));
+                let err = write(case, format, &path).unwrap_err();
+                assert!(!err.is_empty() && !err.contains('\n'), "{err}");
+            }
+        }
+        let missing = dir.0.join("no_such_dir").join("t.npy");
+        for format in Format::ALL {
+            assert!(write(&good, format, &missing.with_extension(format.extension())).is_err(), "{format}");
+            assert!(read(format, &missing).is_err());
+        }
+    }
+
+    /// Truncated, empty and garbage files give an error or, where the cut removed nothing that
+    /// matters (a source file's last newline, a PNG's end chunk), the table: never a panic and
+    /// never other values.
+    #[test]
+    fn lut_truncated_and_garbage_files_are_errors() {
+        let dir = TempDir::new("truncated");
+        for format in Format::ALL {
+            for (dims, channels) in [(&[2, 3, 4, 5][..], 3), (&[4, 6][..], 1)] {
+                let data = table(dims, channels, 11);
+                let path = dir.0.join(format!("whole.{}", format.extension()));
+                write(&data, format, &path).unwrap();
+                let bytes = std::fs::read(&path).unwrap();
+                let n = bytes.len();
+                let mut cuts = vec![0, 1, 6, 10, 12, 40, 79, 80, 100, 120, n / 3, n / 2, n - 8, n - 4, n - 1];
+                cuts.retain(|&c| c < n);
+                for cut in cuts {
+                    let cut_path = dir.0.join(format!("cut{cut}.{}", format.extension()));
+                    std::fs::write(&cut_path, &bytes[..cut]).unwrap();
+                    match read(format, &cut_path) {
+                        Err(e) => assert!(!e.contains('\n'), "{e}"),
+                        Ok(back) => check_roundtrip(&data, &back, format),
+                    }
+                }
+                // Flipped bytes in the middle: an error or well-formed data, never a panic.
+                let mut flipped = bytes.clone();
+                for b in flipped.iter_mut().skip(n / 4).step_by(7).take(64) {
+                    *b ^= 0x5A;
+                }
+                let flipped_path = dir.0.join(format!("flipped.{}", format.extension()));
+                std::fs::write(&flipped_path, &flipped).unwrap();
+                let _ = read(format, &flipped_path);
+            }
+            let garbage: Vec<u8> = (0..4096u32).map(|i| (i.wrapping_mul(2_654_435_761) >> 13) as u8).collect();
+            let path = dir.0.join(format!("garbage.{}", format.extension()));
+            std::fs::write(&path, &garbage).unwrap();
+            assert!(read(format, &path).is_err(), "{format}");
+        }
+    }
+
+    #[test]
+    fn lut_format_names() {
+        for format in Format::ALL {
+            assert_eq!(format.name().parse::<Format>(), Ok(format));
+            assert_eq!(format.to_string(), format.name());
+        }
+        assert_eq!("KTX2".parse::<Format>(), Ok(Format::Ktx2));
+        let err = "tiff".parse::<Format>().unwrap_err();
+        assert!(err.contains("tiff") && err.contains("npy, png, exr, ktx2, c, rust, wgsl"), "{err}");
+        assert_eq!(Format::ALL.iter().filter(|f| !f.is_exact()).collect::<Vec<_>>(), [&Format::Png16]);
+    }
+
+    #[test]
+    fn lut_npy_header() {
+        let dir = TempDir::new("npy");
+        for (dims, channels, shape) in [
+            (&[5, 7][..], 1, "(5, 7)"),
+            (&[5, 7][..], 3, "(5, 7, 3)"),
+            (&[2, 5, 7][..], 1, "(2, 5, 7)"),
+            (&[2, 5, 3][..], 1, "(2, 5, 3, 1)"),
+            (&[2, 2, 5, 3][..], 1, "(2, 2, 5, 3, 1)"),
+        ] {
+            let path = dir.0.join("t.npy");
+            write(&table(dims, channels, 3), Format::Npy, &path).unwrap();
+            let bytes = std::fs::read(&path).unwrap();
+            assert_eq!(&bytes[..8], b"\x93NUMPY\x01\x00");
+            let header_len = usize::from(u16::from_le_bytes([bytes[8], bytes[9]]));
+            assert_eq!((10 + header_len) % 64, 0);
+            let header = std::str::from_utf8(&bytes[10..10 + header_len]).unwrap();
+            let expected = format!("{{'descr': '<f4', 'fortran_order': False, 'shape': {shape}, }}");
+            assert_eq!(header.trim_end_matches([' ', '\n']), expected);
+            assert!(header.ends_with('\n'));
+        }
+    }
+
+    fn u32_at(bytes: &[u8], at: usize) -> u32 {
+        u32::from_le_bytes(bytes[at..at + 4].try_into().unwrap())
+    }
+
+    fn u64_at(bytes: &[u8], at: usize) -> u64 {
+        u64::from_le_bytes(bytes[at..at + 8].try_into().unwrap())
+    }
+
+    /// The byte layout of the KTX 2.0 spec, field by field.
+    #[test]
+    fn lut_ktx2_layout() {
+        let data = table(&[2, 3, 4, 5], 3, 5);
+        let bytes = ktx2_bytes(&data).unwrap();
+        assert_eq!(bytes[..12], KTX2_IDENTIFIER);
+        let header: Vec<u32> = (0..9).map(|i| u32_at(&bytes, 12 + 4 * i)).collect();
+        // vkFormat R32G32B32A32_SFLOAT, typeSize, width μ, height, depth, layers, faces, levels, scheme
+        assert_eq!(header, [109, 4, 5, 4, 3, 2, 1, 1, 0]);
+        let (dfd_offset, dfd_len) = (u32_at(&bytes, 48) as usize, u32_at(&bytes, 52) as usize);
+        let (kvd_offset, kvd_len) = (u32_at(&bytes, 56) as usize, u32_at(&bytes, 60) as usize);
+        assert_eq!((u64_at(&bytes, 64), u64_at(&bytes, 72)), (0, 0), "no supercompression global data");
+        assert_eq!(dfd_offset, 80 + 24, "the DFD follows the one-level index");
+        assert_eq!(dfd_len, 4 + 24 + 4 * 16);
+        assert_eq!(kvd_offset, dfd_offset + dfd_len);
+        let (level_offset, level_len) = (u64_at(&bytes, 80) as usize, u64_at(&bytes, 88) as usize);
+        assert_eq!(u64_at(&bytes, 96) as usize, level_len, "uncompressedByteLength");
+        assert_eq!(level_len, 2 * 3 * 4 * 5 * 16);
+        assert_eq!(level_offset % 16, 0, "mipPadding: lcm(texel block size 16, 4)");
+        assert!(level_offset >= kvd_offset + kvd_len && level_offset < kvd_offset + kvd_len + 16);
+        assert_eq!(level_offset + level_len, bytes.len());
+        // The basic DFD block.
+        let dfd: Vec<u32> = (0..dfd_len / 4).map(|i| u32_at(&bytes, dfd_offset + 4 * i)).collect();
+        assert_eq!(dfd[..7], [92, 0, 2 | 88 << 16, 1 | 1 << 8 | 1 << 16, 0, 16, 0]);
+        for (k, id) in [0u32, 1, 2, 15].into_iter().enumerate() {
+            let s = &dfd[7 + 4 * k..11 + 4 * k];
+            assert_eq!(s, [32 * k as u32 | 31 << 16 | (id | 0xC0) << 24, 0, 0xBF80_0000, 0x3F80_0000]);
+        }
+        // Key/value data: sorted keys, NUL-terminated values, each entry padded to 4.
+        let kvd = &bytes[kvd_offset..kvd_offset + kvd_len];
+        let first_len = u32_at(kvd, 0) as usize;
+        let writer = format!("KTXwriter\0microsurface {}\0", env!("CARGO_PKG_VERSION"));
+        assert_eq!(&kvd[4..4 + first_len], writer.as_bytes());
+        let second = (4 + first_len).next_multiple_of(4);
+        let second_len = u32_at(kvd, second) as usize;
+        let meta = format!("microsurface\0{}\0", data.meta());
+        assert_eq!(&kvd[second + 4..second + 4 + second_len], meta.as_bytes());
+        assert_eq!(kvd_len, (second + 4 + second_len).next_multiple_of(4));
+        // The texels: channels padded with 0 to four.
+        let texel = &bytes[level_offset + 16..level_offset + 32];
+        let texel: Vec<f32> = texel.chunks_exact(4).map(|b| f32::from_le_bytes(b.try_into().unwrap())).collect();
+        assert_eq!(texel, [data.values[3], data.values[4], data.values[5], 0.0]);
+        // 2 axes: a 2D texture; 3 axes: a 3D one.
+        for (dims, expected) in [(&[4, 5][..], [5, 4, 0, 0]), (&[3, 4, 5][..], [5, 4, 3, 0])] {
+            let bytes = ktx2_bytes(&table(dims, 1, 1)).unwrap();
+            let extents: Vec<u32> = (0..4).map(|i| u32_at(&bytes, 20 + 4 * i)).collect();
+            assert_eq!(extents, expected);
+            assert_eq!(u32_at(&bytes, 12), 100, "R32_SFLOAT");
+        }
+    }
+
+    #[test]
+    fn lut_source_arrays_declare_what_the_docs_say() {
+        let data = table(&[2, 3], 3, 9);
+        let c = source(&data, Format::C);
+        assert!(c.contains("static const float test_lut[2][3][3] = {"), "{c}");
+        assert!(c.contains("{0.0f, 1.0f, 1e-40f}"), "{c}");
+        let rust = source(&data, Format::Rust);
+        assert!(rust.contains("pub static TEST_LUT: [[[f32; 3]; 3]; 2] = ["), "{rust}");
+        assert!(rust.contains("[0.0, 1.0, 1e-40]"), "{rust}");
+        let wgsl = source(&data, Format::Wgsl);
+        assert!(wgsl.contains("var<private> TEST_LUT: array<vec3<f32>, 6> = array<vec3<f32>, 6>("), "{wgsl}");
+        assert!(wgsl.contains("TEST_LUT[(i_sqrt_alpha) * 3u + i_mu]"), "{wgsl}");
+        assert!(wgsl.contains("vec3<f32>(0.0f, 1.0f, 1e-40f)"), "{wgsl}");
+        let one = source(&table(&[2, 3], 1, 9), Format::C);
+        assert!(one.contains("static const float test_lut[2][3] = {"), "{one}");
+    }
 }
