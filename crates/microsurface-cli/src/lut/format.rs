@@ -70,8 +70,8 @@
 //! Format version 1.0 (NumPy Enhancement Proposal 1, "A simple file format for NumPy arrays"):
 //! magic `\x93NUMPY`, version `1 0`, a little-endian u16 header length, and the header, a Python
 //! dict literal `{'descr': '<f4', 'fortran_order': False, 'shape': (…), }` padded with spaces
-//! and a newline so that the data starts at a multiple of 64 bytes (NumPy's own choice since
-//! 1.16; the NEP asks for 16). The shape is `dims + [channels]`, the channel axis dropped for
+//! and a newline so that the data starts at a multiple of 64 bytes (as NumPy's own writer pads;
+//! the NEP asks for 16). The shape is `dims + [channels]`, the channel axis dropped for
 //! one channel, except where dropping it would be ambiguous: a 1-channel table of 3 or 4 axes
 //! whose last has at most 4 nodes keeps a channel axis of length 1. So a reader takes the last
 //! axis as channels when the array has 5 axes, or 3 or 4 axes of which the last has at most 4
@@ -89,12 +89,14 @@
 //!   elision, so `-Wmissing-braces` is quiet), the channel extent dropped for one channel.
 //! - Rust: `pub static NAME: [[[f32; c]; d_{n-1}]; …; d0] = […];`, the name in SCREAMING_CASE,
 //!   `#[rustfmt::skip]`; the channel extent dropped for one channel. `include!`-able.
-//! - WGSL: `var<private> NAME: array<T, N> = array<T, N>(…);`, flat over the nodes, T = `f32`,
-//!   `vec2<f32>`, `vec3<f32>` or `vec4<f32>` for 1 to 4 channels (the private address space has
-//!   no layout rules, so vec3 needs no padding). Flat because WGSL's nested arrays of a
-//!   different length per level are verbose and an index formula is what a shader writes
-//!   anyway; `var<private>` rather than `const` because indexing a `const` array with a run-time
-//!   index is rejected by some naga versions.
+//! - WGSL: `const NAME: array<T, N> = array<T, N>(…);`, flat over the nodes, T = `f32`,
+//!   `vec2<f32>`, `vec3<f32>` or `vec4<f32>` for 1 to 4 channels (a constant has no
+//!   address-space layout, so vec3 needs no padding). Flat because nested WGSL arrays spell
+//!   every level's type and an index formula is what a shader writes anyway. `const` rather
+//!   than `var<private>`: naga 30 accepts a run-time index into a `const` array and emits it as
+//!   one constant table (MSL `constant`, HLSL `static const`), whereas a `var<private>` array is
+//!   per invocation, and naga's MSL output copies the whole table into each thread. (A compiler
+//!   that rejects the run-time index into a `const` array takes `var<private>` in its place.)
 //!
 //! # Metadata
 //! PNG, EXR, KTX and the source arrays carry one ASCII string,
@@ -138,7 +140,7 @@ pub enum Format {
     C,
     /// A Rust `pub static` array.
     Rust,
-    /// A WGSL `var<private>` array.
+    /// A WGSL `const` array.
     Wgsl,
 }
 
@@ -947,7 +949,7 @@ fn source(data: &LutData, format: Format) -> String {
             }
             let element = if c == 1 { "f32".to_string() } else { format!("vec{c}<f32>") };
             let ty = format!("array<{element}, {}>", data.nodes());
-            out.push_str(&format!("var<private> {upper}: {ty} = {ty}(\n"));
+            out.push_str(&format!("const {upper}: {ty} = {ty}(\n"));
             let row = data.dims.last().expect("checked: 2 to 4 dims") * c;
             for (i, line) in data.values.chunks_exact(row).enumerate() {
                 let items: Vec<String> = line
@@ -1325,7 +1327,7 @@ mod tests {
         assert!(rust.contains("pub static TEST_LUT: [[[f32; 3]; 3]; 2] = ["), "{rust}");
         assert!(rust.contains("[0.0, 1.0, 1e-40]"), "{rust}");
         let wgsl = source(&data, Format::Wgsl);
-        assert!(wgsl.contains("var<private> TEST_LUT: array<vec3<f32>, 6> = array<vec3<f32>, 6>("), "{wgsl}");
+        assert!(wgsl.contains("const TEST_LUT: array<vec3<f32>, 6> = array<vec3<f32>, 6>("), "{wgsl}");
         assert!(wgsl.contains("TEST_LUT[(i_sqrt_alpha) * 3u + i_mu]"), "{wgsl}");
         assert!(wgsl.contains("vec3<f32>(0.0f, 1.0f, 1e-40f)"), "{wgsl}");
         let one = source(&table(&[2, 3], 1, 9), Format::C);
