@@ -216,7 +216,9 @@ pub fn write(data: &LutData, format: Format, path: &Path) -> Result<(), String> 
         Format::Png16 => write_png(data, path),
         Format::Exr => write_exr(data, path),
         Format::Ktx2 => write_bytes(path, &ktx2_bytes(data)?),
-        Format::C | Format::Rust | Format::Wgsl => write_bytes(path, source(data, format).as_bytes()),
+        Format::C | Format::Rust | Format::Wgsl => {
+            write_bytes(path, source(data, format).as_bytes())
+        }
     }
 }
 
@@ -236,7 +238,8 @@ pub fn read(format: Format, path: &Path) -> Result<LutData, String> {
         }
     };
     let data = data.map_err(|e| format!("{}: {e}", path.display()))?;
-    data.check().map_err(|e| format!("{}: {e}", path.display()))?;
+    data.check()
+        .map_err(|e| format!("{}: {e}", path.display()))?;
     Ok(data)
 }
 
@@ -273,14 +276,25 @@ impl LutData {
             return Err(format!("every axis needs a node (dims {:?})", self.dims));
         }
         if self.axes.len() != self.dims.len() {
-            return Err(format!("{} axis names for {} dims", self.axes.len(), self.dims.len()));
+            return Err(format!(
+                "{} axis names for {} dims",
+                self.axes.len(),
+                self.dims.len()
+            ));
         }
         if !(1..=MAX_CHANNELS).contains(&self.channels.len()) {
-            return Err(format!("a table has 1 to 4 channels, not {}", self.channels.len()));
+            return Err(format!(
+                "a table has 1 to 4 channels, not {}",
+                self.channels.len()
+            ));
         }
-        let names = std::iter::once(&self.name).chain(&self.axes).chain(&self.channels);
+        let names = std::iter::once(&self.name)
+            .chain(&self.axes)
+            .chain(&self.channels);
         if let Some(bad) = names.into_iter().find(|s| !is_identifier(s)) {
-            return Err(format!("'{bad}' is not an identifier ([A-Za-z_][A-Za-z0-9_]*)"));
+            return Err(format!(
+                "'{bad}' is not an identifier ([A-Za-z_][A-Za-z0-9_]*)"
+            ));
         }
         let expected = self
             .dims
@@ -296,7 +310,10 @@ impl LutData {
             ));
         }
         if let Some(i) = self.values.iter().position(|v| !v.is_finite()) {
-            return Err(format!("value {i} is {} (tables hold finite values)", self.values[i]));
+            return Err(format!(
+                "value {i} is {} (tables hold finite values)",
+                self.values[i]
+            ));
         }
         Ok(())
     }
@@ -318,7 +335,10 @@ impl LutData {
         let height: usize = outer.iter().product();
         match (u32::try_from(width), u32::try_from(height)) {
             (Ok(w), Ok(h)) => Ok((w, h)),
-            _ => Err(format!("dims {:?} exceed an image's 2^32 − 1 pixels a side", self.dims)),
+            _ => Err(format!(
+                "dims {:?} exceed an image's 2^32 − 1 pixels a side",
+                self.dims
+            )),
         }
     }
 }
@@ -335,7 +355,9 @@ impl Meta {
     fn parse(text: &str) -> Result<Meta, String> {
         let (mut name, mut axes, mut dims, mut channels) = (None, None, None, None);
         for field in text.trim().split(';') {
-            let (key, value) = field.split_once('=').ok_or_else(|| format!("bad metadata field '{field}'"))?;
+            let (key, value) = field
+                .split_once('=')
+                .ok_or_else(|| format!("bad metadata field '{field}'"))?;
             let list = || value.split(',').map(str::to_string).collect::<Vec<_>>();
             match key {
                 "name" => name = Some(value.to_string()),
@@ -349,21 +371,42 @@ impl Meta {
             }
         }
         match (name, axes, dims, channels) {
-            (Some(name), Some(axes), Some(dims), Some(channels)) => Ok(Meta { name, axes, dims, channels }),
-            _ => Err(format!("metadata '{text}' lacks name, axes, dims or channels")),
+            (Some(name), Some(axes), Some(dims), Some(channels)) => Ok(Meta {
+                name,
+                axes,
+                dims,
+                channels,
+            }),
+            _ => Err(format!(
+                "metadata '{text}' lacks name, axes, dims or channels"
+            )),
         }
     }
 
     /// The table with these values ([`read`] checks their count).
     fn with_values(self, values: Vec<f32>) -> LutData {
-        LutData { name: self.name, axes: self.axes, dims: self.dims, channels: self.channels, values }
+        LutData {
+            name: self.name,
+            axes: self.axes,
+            dims: self.dims,
+            channels: self.channels,
+            values,
+        }
     }
 
     fn nodes(&self) -> Result<usize, String> {
-        if !(2..=4).contains(&self.dims.len()) || !(1..=MAX_CHANNELS).contains(&self.channels.len()) {
-            return Err(format!("metadata with {} dims and {} channels", self.dims.len(), self.channels.len()));
+        if !(2..=4).contains(&self.dims.len()) || !(1..=MAX_CHANNELS).contains(&self.channels.len())
+        {
+            return Err(format!(
+                "metadata with {} dims and {} channels",
+                self.dims.len(),
+                self.channels.len()
+            ));
         }
-        self.dims.iter().try_fold(1usize, |n, &d| n.checked_mul(d)).ok_or_else(|| "the dims overflow".to_string())
+        self.dims
+            .iter()
+            .try_fold(1usize, |n, &d| n.checked_mul(d))
+            .ok_or_else(|| "the dims overflow".to_string())
     }
 }
 
@@ -378,7 +421,11 @@ fn read_bytes(path: &Path) -> Result<Vec<u8>, String> {
 /// The table's name when the file stores none: the file's stem if it is an identifier.
 fn name_from_path(path: &Path) -> String {
     let stem = path.file_stem().and_then(|s| s.to_str()).unwrap_or("");
-    if is_identifier(stem) { stem.to_string() } else { "lut".to_string() }
+    if is_identifier(stem) {
+        stem.to_string()
+    } else {
+        "lut".to_string()
+    }
 }
 
 // ---------------------------------------------------------------------------------------------
@@ -400,11 +447,18 @@ fn npy_bytes(data: &LutData) -> Result<Vec<u8>, String> {
         shape.push(data.channels.len());
     }
     let shape: Vec<String> = shape.iter().map(usize::to_string).collect();
-    let dict = format!("{{'descr': '<f4', 'fortran_order': False, 'shape': ({}), }}", shape.join(", "));
+    let dict = format!(
+        "{{'descr': '<f4', 'fortran_order': False, 'shape': ({}), }}",
+        shape.join(", ")
+    );
     // magic (6) + version (2) + header length (2) + dict + padding + '\n'
     let unpadded = NPY_MAGIC.len() + 4 + dict.len() + 1;
-    let header = format!("{dict}{}\n", " ".repeat(unpadded.next_multiple_of(NPY_ALIGN) - unpadded));
-    let header_len = u16::try_from(header.len()).map_err(|_| "the .npy header exceeds 65535 bytes")?;
+    let header = format!(
+        "{dict}{}\n",
+        " ".repeat(unpadded.next_multiple_of(NPY_ALIGN) - unpadded)
+    );
+    let header_len =
+        u16::try_from(header.len()).map_err(|_| "the .npy header exceeds 65535 bytes")?;
     let mut bytes = Vec::with_capacity(unpadded + data.values.len() * 4 + NPY_ALIGN);
     bytes.extend_from_slice(NPY_MAGIC);
     bytes.extend_from_slice(&[1, 0]);
@@ -418,15 +472,21 @@ fn npy_bytes(data: &LutData) -> Result<Vec<u8>, String> {
 
 /// The value of `'key': value` in the header dict, up to the next top-level comma or brace.
 fn npy_field<'a>(header: &'a str, key: &str) -> Result<&'a str, String> {
-    let start = header.find(&format!("'{key}'")).ok_or_else(|| format!("the .npy header has no '{key}'"))?;
+    let start = header
+        .find(&format!("'{key}'"))
+        .ok_or_else(|| format!("the .npy header has no '{key}'"))?;
     let rest = header[start + key.len() + 2..].trim_start();
-    let rest = rest.strip_prefix(':').ok_or_else(|| format!("bad '{key}' in the .npy header"))?.trim_start();
+    let rest = rest
+        .strip_prefix(':')
+        .ok_or_else(|| format!("bad '{key}' in the .npy header"))?
+        .trim_start();
     let end = if rest.starts_with('(') {
         rest.find(')').map(|i| i + 1)
     } else {
         rest.find([',', '}'])
     };
-    end.map(|i| rest[..i].trim()).ok_or_else(|| format!("bad '{key}' in the .npy header"))
+    end.map(|i| rest[..i].trim())
+        .ok_or_else(|| format!("bad '{key}' in the .npy header"))
 }
 
 fn read_npy(bytes: &[u8], path: &Path) -> Result<LutData, String> {
@@ -435,15 +495,27 @@ fn read_npy(bytes: &[u8], path: &Path) -> Result<LutData, String> {
     }
     // Versions 2.0 and 3.0 differ only by a u32 header length (3.0: UTF-8 header).
     let (header_len, start) = match bytes[6] {
-        1 => (usize::from(u16::from_le_bytes([bytes[8], bytes[9]])), 10usize),
-        2 | 3 if bytes.len() >= 12 => (u32::from_le_bytes([bytes[8], bytes[9], bytes[10], bytes[11]]) as usize, 12),
+        1 => (
+            usize::from(u16::from_le_bytes([bytes[8], bytes[9]])),
+            10usize,
+        ),
+        2 | 3 if bytes.len() >= 12 => (
+            u32::from_le_bytes([bytes[8], bytes[9], bytes[10], bytes[11]]) as usize,
+            12,
+        ),
         v => return Err(format!("unsupported .npy version {v}.{}", bytes[7])),
     };
-    let header = bytes.get(start..start.saturating_add(header_len)).ok_or("truncated .npy header")?;
-    let header = std::str::from_utf8(header).map_err(|_| "the .npy header is not text")?.replace('"', "'");
+    let header = bytes
+        .get(start..start.saturating_add(header_len))
+        .ok_or("truncated .npy header")?;
+    let header = std::str::from_utf8(header)
+        .map_err(|_| "the .npy header is not text")?
+        .replace('"', "'");
     let descr = npy_field(&header, "descr")?;
     if descr != "'<f4'" {
-        return Err(format!("the .npy dtype is {descr}; tables are '<f4' (little-endian f32)"));
+        return Err(format!(
+            "the .npy dtype is {descr}; tables are '<f4' (little-endian f32)"
+        ));
     }
     if npy_field(&header, "fortran_order")? != "False" {
         return Err("the .npy array is in Fortran order; tables are in C order".into());
@@ -471,9 +543,15 @@ fn read_npy(bytes: &[u8], path: &Path) -> Result<LutData, String> {
         .ok_or("the .npy shape overflows")?;
     let data = &bytes[start + header_len..];
     if data.len() != count {
-        return Err(format!("{} data bytes for shape {dims:?} × {channels} (expected {count})", data.len()));
+        return Err(format!(
+            "{} data bytes for shape {dims:?} × {channels} (expected {count})",
+            data.len()
+        ));
     }
-    let values = data.chunks_exact(4).map(|b| f32::from_le_bytes([b[0], b[1], b[2], b[3]])).collect();
+    let values = data
+        .chunks_exact(4)
+        .map(|b| f32::from_le_bytes([b[0], b[1], b[2], b[3]]))
+        .collect();
     Ok(LutData {
         name: name_from_path(path),
         axes: (0..dims.len()).map(|i| format!("axis{i}")).collect(),
@@ -520,8 +598,12 @@ fn write_png(data: &LutData, path: &Path) -> Result<(), String> {
     let mut encoder = png::Encoder::new(BufWriter::new(file), width, height);
     encoder.set_color(color);
     encoder.set_depth(png::BitDepth::Sixteen);
-    encoder.add_text_chunk(META_KEY.to_string(), data.meta()).map_err(|e| fail(&e))?;
-    encoder.add_text_chunk("Software".to_string(), writer_name()).map_err(|e| fail(&e))?;
+    encoder
+        .add_text_chunk(META_KEY.to_string(), data.meta())
+        .map_err(|e| fail(&e))?;
+    encoder
+        .add_text_chunk("Software".to_string(), writer_name())
+        .map_err(|e| fail(&e))?;
     let mut writer = encoder.write_header().map_err(|e| fail(&e))?;
     writer.write_image_data(&bytes).map_err(|e| fail(&e))?;
     writer.finish().map_err(|e| fail(&e))
@@ -533,20 +615,35 @@ fn read_png(path: &Path) -> Result<LutData, String> {
     decoder.set_transformations(png::Transformations::IDENTITY);
     let mut reader = decoder.read_info().map_err(|e| e.to_string())?;
     let info = reader.info();
-    let text = info.uncompressed_latin1_text.iter().find(|t| t.keyword == META_KEY);
-    let meta = Meta::parse(&text.ok_or("no 'microsurface' tEXt chunk: not a table written by microsurface")?.text)?;
+    let text = info
+        .uncompressed_latin1_text
+        .iter()
+        .find(|t| t.keyword == META_KEY);
+    let meta = Meta::parse(
+        &text
+            .ok_or("no 'microsurface' tEXt chunk: not a table written by microsurface")?
+            .text,
+    )?;
     let nodes = meta.nodes()?;
     let c = meta.channels.len();
     let (color, samples) = png_color(c);
     let (width, height) = (info.width as usize, info.height as usize);
     let (&mu, outer) = meta.dims.split_last().expect("checked: 2 to 4 dims");
     if info.bit_depth != png::BitDepth::Sixteen || info.color_type != color {
-        return Err(format!("{:?} {:?}-bit, not the 16-bit {color:?} of {c} channels", info.color_type, info.bit_depth));
+        return Err(format!(
+            "{:?} {:?}-bit, not the 16-bit {color:?} of {c} channels",
+            info.color_type, info.bit_depth
+        ));
     }
     if width != mu || height != outer.iter().product::<usize>() {
         return Err(format!("a {width}×{height} image for dims {:?}", meta.dims));
     }
-    let mut buf = vec![0; reader.output_buffer_size().ok_or("the image is too large")?];
+    let mut buf = vec![
+        0;
+        reader
+            .output_buffer_size()
+            .ok_or("the image is too large")?
+    ];
     reader.next_frame(&mut buf).map_err(|e| e.to_string())?;
     let mut values = Vec::with_capacity(nodes * c);
     for texel in buf.chunks_exact(2 * samples).take(nodes) {
@@ -573,12 +670,23 @@ fn write_exr(data: &LutData, path: &Path) -> Result<(), String> {
             AnyChannel::new(EXR_CHANNELS[k], FlatSamples::F32(samples))
         })
         .collect();
-    let mut attributes = LayerAttributes::default();
-    attributes.software_name = Some(Text::from(writer_name().as_str()));
-    attributes.other.insert(Text::from(META_KEY), AttributeValue::Text(Text::from(data.meta().as_str())));
+    let meta = AttributeValue::Text(Text::from(data.meta().as_str()));
+    let attributes = LayerAttributes {
+        software_name: Some(Text::from(writer_name().as_str())),
+        other: [(Text::from(META_KEY), meta)].into_iter().collect(),
+        ..LayerAttributes::default()
+    };
     let size = (width as usize, height as usize);
-    let layer = Layer::new(size, attributes, Encoding::SMALL_LOSSLESS, AnyChannels::sort(list));
-    Image::from_layer(layer).write().to_file(path).map_err(|e| format!("{}: {e}", path.display()))
+    let layer = Layer::new(
+        size,
+        attributes,
+        Encoding::SMALL_LOSSLESS,
+        AnyChannels::sort(list),
+    );
+    Image::from_layer(layer)
+        .write()
+        .to_file(path)
+        .map_err(|e| format!("{}: {e}", path.display()))
 }
 
 fn read_exr(path: &Path) -> Result<LutData, String> {
@@ -601,19 +709,24 @@ fn read_exr(path: &Path) -> Result<LutData, String> {
     let nodes = meta.nodes()?;
     let (&mu, outer) = meta.dims.split_last().expect("checked: 2 to 4 dims");
     if layer.size.0 != mu || layer.size.1 != outer.iter().product::<usize>() {
-        return Err(format!("a {}×{} image for dims {:?}", layer.size.0, layer.size.1, meta.dims));
+        return Err(format!(
+            "a {}×{} image for dims {:?}",
+            layer.size.0, layer.size.1, meta.dims
+        ));
     }
     let c = meta.channels.len();
     let mut columns = Vec::with_capacity(c);
     for name in &EXR_CHANNELS[..c] {
-        let channel = layer.channel_data.list.iter().find(|ch| ch.name == Text::from(*name));
+        let channel = layer.channel_data.list.iter().find(|ch| ch.name == **name);
         match channel.map(|ch| &ch.sample_data) {
             Some(FlatSamples::F32(samples)) if samples.len() == nodes => columns.push(samples),
             Some(_) => return Err(format!("channel {name} is not {nodes} f32 samples")),
             None => return Err(format!("no channel {name}")),
         }
     }
-    let values = (0..nodes).flat_map(|i| columns.iter().map(move |col| col[i])).collect();
+    let values = (0..nodes)
+        .flat_map(|i| columns.iter().map(move |col| col[i]))
+        .collect();
     Ok(meta.with_values(values))
 }
 
@@ -621,7 +734,9 @@ fn read_exr(path: &Path) -> Result<LutData, String> {
 // KTX 2.0
 
 /// Section "identifier": «KTX 20»\r\n\x1A\n.
-const KTX2_IDENTIFIER: [u8; 12] = [0xAB, 0x4B, 0x54, 0x58, 0x20, 0x32, 0x30, 0xBB, 0x0D, 0x0A, 0x1A, 0x0A];
+const KTX2_IDENTIFIER: [u8; 12] = [
+    0xAB, 0x4B, 0x54, 0x58, 0x20, 0x32, 0x30, 0xBB, 0x0D, 0x0A, 0x1A, 0x0A,
+];
 /// Identifier, 9 header u32s and the index (4 u32s, 2 u64s): section "File Structure".
 const KTX2_HEADER_LEN: usize = 80;
 /// One level index entry: byteOffset, byteLength, uncompressedByteLength (u64 each).
@@ -656,20 +771,30 @@ fn ktx2_components(channels: usize) -> (u32, usize) {
 fn ktx2_dfd(components: usize) -> Vec<u8> {
     let block_size = KHR_DF_BASIC_LEN + KHR_DF_SAMPLE_LEN * components;
     let mut words = vec![
-        (4 + block_size) as u32,                               // dfdTotalSize
-        0, // vendorId 0 (Khronos) | descriptorType 0 (basic) << 17
-        KHR_DF_VERSIONNUMBER_1_3 | (block_size as u32) << 16, // versionNumber | descriptorBlockSize
-        KHR_DF_MODEL_RGBSDA | KHR_DF_PRIMARIES_BT709 << 8 | KHR_DF_TRANSFER_LINEAR << 16, // flags 0: straight alpha
-        0,                         // texelBlockDimension0..3: 1×1×1×1, stored minus one
-        4 * components as u32,     // bytesPlane0: one plane of the whole texel
-        0,                         // bytesPlane4..7
+        // dfdTotalSize: this word and the block
+        (4 + block_size) as u32,
+        // vendorId 0 (Khronos) | descriptorType 0 (basic) << 17
+        0,
+        // versionNumber (1.3) | descriptorBlockSize << 16
+        KHR_DF_VERSIONNUMBER_1_3 | ((block_size as u32) << 16),
+        // colorModel | colorPrimaries << 8 | transferFunction << 16 | flags 0 (straight alpha)
+        KHR_DF_MODEL_RGBSDA | (KHR_DF_PRIMARIES_BT709 << 8) | (KHR_DF_TRANSFER_LINEAR << 16),
+        // texelBlockDimension0..3: 1×1×1×1, each stored minus one
+        0,
+        // bytesPlane0..3: one plane holding the whole texel
+        4 * components as u32,
+        // bytesPlane4..7
+        0,
     ];
+    let qualifiers = KHR_DF_SAMPLE_DATATYPE_FLOAT | KHR_DF_SAMPLE_DATATYPE_SIGNED;
     for (k, channel) in KHR_DF_CHANNEL_RGBSDA.iter().take(components).enumerate() {
-        let qualifiers = KHR_DF_SAMPLE_DATATYPE_FLOAT | KHR_DF_SAMPLE_DATATYPE_SIGNED;
-        words.push((32 * k) as u32 | 31 << 16 | (channel | qualifiers) << 24); // bitOffset | bitLength − 1 | channelType
-        words.push(0); // samplePosition0..3
-        words.push((-1.0f32).to_bits()); // sampleLower: the float formats' nominal range
-        words.push(1.0f32.to_bits()); // sampleUpper
+        // bitOffset | (bitLength − 1) << 16 | (channelId | qualifiers) << 24
+        words.push((32 * k) as u32 | (31 << 16) | ((channel | qualifiers) << 24));
+        // samplePosition0..3: the texel's origin
+        words.push(0);
+        // sampleLower, sampleUpper: −1.0 and 1.0, a signed float format's nominal range
+        words.push((-1.0f32).to_bits());
+        words.push(1.0f32.to_bits());
     }
     words.iter().flat_map(|w| w.to_le_bytes()).collect()
 }
@@ -761,13 +886,18 @@ fn read_ktx2(bytes: &[u8], path: &Path) -> Result<LutData, String> {
     }
     let word = |i: usize| le_u32(bytes, 12 + 4 * i);
     let (vk_format, type_size) = (word(0)?, word(1)?);
-    let [width, height, depth, layers] = [word(2)?, word(3)?, word(4)?, word(5)?].map(|w| w as usize);
+    let [width, height, depth, layers] =
+        [word(2)?, word(3)?, word(4)?, word(5)?].map(|w| w as usize);
     let (faces, supercompression) = (word(6)?, word(8)?);
     let components = match vk_format {
         VK_FORMAT_R32_SFLOAT => 1,
         VK_FORMAT_R32G32_SFLOAT => 2,
         VK_FORMAT_R32G32B32A32_SFLOAT => 4,
-        f => return Err(format!("vkFormat {f}; tables are R32, R32G32 or R32G32B32A32 SFLOAT")),
+        f => {
+            return Err(format!(
+                "vkFormat {f}; tables are R32, R32G32 or R32G32B32A32 SFLOAT"
+            ))
+        }
     };
     if type_size != 4 || faces != 1 || supercompression != 0 || width == 0 || height == 0 {
         return Err(format!(
@@ -776,7 +906,12 @@ fn read_ktx2(bytes: &[u8], path: &Path) -> Result<LutData, String> {
         ));
     }
     // DFD: one basic block with one 32-bit float sample per component.
-    let dfd = section(bytes, word(9)? as usize, word(10)? as usize, "data format descriptor")?;
+    let dfd = section(
+        bytes,
+        word(9)? as usize,
+        word(10)? as usize,
+        "data format descriptor",
+    )?;
     let dfd_word = |i: usize| le_u32(dfd, 4 * i);
     let block_size = (dfd_word(2)? >> 16) as usize;
     if dfd_word(0)? as usize != dfd.len()
@@ -784,15 +919,24 @@ fn read_ktx2(bytes: &[u8], path: &Path) -> Result<LutData, String> {
         || block_size != KHR_DF_BASIC_LEN + KHR_DF_SAMPLE_LEN * components
         || dfd_word(3)? & 0xFF != KHR_DF_MODEL_RGBSDA
     {
-        return Err("the data format descriptor is not a basic RGBSDA block for the vkFormat".into());
+        return Err(
+            "the data format descriptor is not a basic RGBSDA block for the vkFormat".into(),
+        );
     }
     for k in 0..components {
         let sample = dfd_word(7 + 4 * k)?;
-        if sample >> 16 & 0xFF != 31 || sample >> 24 & KHR_DF_SAMPLE_DATATYPE_FLOAT == 0 {
-            return Err(format!("the data format descriptor's sample {k} is not a 32-bit float"));
+        if (sample >> 16) & 0xFF != 31 || (sample >> 24) & KHR_DF_SAMPLE_DATATYPE_FLOAT == 0 {
+            return Err(format!(
+                "the data format descriptor's sample {k} is not a 32-bit float"
+            ));
         }
     }
-    let kvd = section(bytes, word(11)? as usize, word(12)? as usize, "key/value data")?;
+    let kvd = section(
+        bytes,
+        word(11)? as usize,
+        word(12)? as usize,
+        "key/value data",
+    )?;
     let mut meta_text = None;
     let mut at = 0;
     while at + 4 <= kvd.len() {
@@ -801,7 +945,8 @@ fn read_ktx2(bytes: &[u8], path: &Path) -> Result<LutData, String> {
         if let Some((key, value)) = entry.split_once_nul() {
             if key == META_KEY.as_bytes() {
                 let value = value.strip_suffix(&[0]).unwrap_or(value);
-                meta_text = Some(std::str::from_utf8(value).map_err(|_| "the metadata is not UTF-8")?);
+                meta_text =
+                    Some(std::str::from_utf8(value).map_err(|_| "the metadata is not UTF-8")?);
             }
         }
         at = (at + 4 + len).next_multiple_of(4);
@@ -811,9 +956,14 @@ fn read_ktx2(bytes: &[u8], path: &Path) -> Result<LutData, String> {
     let (offset, len) = (le_u64(bytes, level)?, le_u64(bytes, level + 8)?);
     let mut dims: Vec<usize> = [layers, depth].into_iter().filter(|&d| d > 0).collect();
     dims.extend([height, width]);
-    let texels = dims.iter().try_fold(1usize, |n, &d| n.checked_mul(d)).ok_or("the extents overflow")?;
+    let texels = dims
+        .iter()
+        .try_fold(1usize, |n, &d| n.checked_mul(d))
+        .ok_or("the extents overflow")?;
     if texels.checked_mul(4 * components) != Some(len) {
-        return Err(format!("a level of {len} bytes for extents {dims:?} of {components} floats"));
+        return Err(format!(
+            "a level of {len} bytes for extents {dims:?} of {components} floats"
+        ));
     }
     let data = section(bytes, offset, len, "level 0")?;
     let meta = match meta_text {
@@ -822,16 +972,26 @@ fn read_ktx2(bytes: &[u8], path: &Path) -> Result<LutData, String> {
             name: name_from_path(path),
             axes: (0..dims.len()).map(|i| format!("axis{i}")).collect(),
             dims: dims.clone(),
-            channels: EXR_CHANNELS[..components].iter().map(|s| s.to_string()).collect(),
+            channels: EXR_CHANNELS[..components]
+                .iter()
+                .map(|s| s.to_string())
+                .collect(),
         },
     };
     let c = meta.channels.len();
     if meta.dims != dims || c > components || (c < components && !(c == 3 && components == 4)) {
-        return Err(format!("metadata dims {:?} × {c} for a texture of {dims:?} × {components}", meta.dims));
+        return Err(format!(
+            "metadata dims {:?} × {c} for a texture of {dims:?} × {components}",
+            meta.dims
+        ));
     }
     let values = data
         .chunks_exact(4 * components)
-        .flat_map(|t| t.chunks_exact(4).take(c).map(|b| f32::from_le_bytes([b[0], b[1], b[2], b[3]])))
+        .flat_map(|t| {
+            t.chunks_exact(4)
+                .take(c)
+                .map(|b| f32::from_le_bytes([b[0], b[1], b[2], b[3]]))
+        })
         .collect();
     Ok(meta.with_values(values))
 }
@@ -861,11 +1021,20 @@ fn number(v: f32, format: Format) -> String {
 
 /// The header comment's lines (without comment markers).
 fn header_lines(data: &LutData, format: Format, array: &str) -> Vec<String> {
-    let axes: Vec<String> = data.axes.iter().zip(&data.dims).map(|(a, d)| format!("{a} ({d} nodes)")).collect();
+    let axes: Vec<String> = data
+        .axes
+        .iter()
+        .zip(&data.dims)
+        .map(|(a, d)| format!("{a} ({d} nodes)"))
+        .collect();
     let c = data.channels.len();
     let index: Vec<String> = data.axes.iter().map(|a| format!("i_{a}")).collect();
     let mut lines = vec![
-        format!("{}: a lookup table written by {}.", data.name, writer_name()),
+        format!(
+            "{}: a lookup table written by {}.",
+            data.name,
+            writer_name()
+        ),
         format!("Axes, outermost first: {}.", axes.join(", ")),
         format!("Channels: {}.", data.channels.join(", ")),
     ];
@@ -876,13 +1045,25 @@ fn header_lines(data: &LutData, format: Format, array: &str) -> Vec<String> {
             for (i, d) in index.iter().zip(&data.dims).skip(1) {
                 flat = format!("({flat}) * {d}u + {i}");
             }
-            let element = if c == 1 { "the value" } else { "a vector of the channels in order" };
-            lines.push(format!("Layout: flat, row-major, the last axis fastest; {array}[{flat}] is {element}."));
+            let element = if c == 1 {
+                "the value"
+            } else {
+                "a vector of the channels in order"
+            };
+            lines.push(format!(
+                "Layout: flat, row-major, the last axis fastest; {array}[{flat}] is {element}."
+            ));
         }
         _ => {
-            let channel = if c == 1 { String::new() } else { "[channel]".to_string() };
+            let channel = if c == 1 {
+                String::new()
+            } else {
+                "[channel]".to_string()
+            };
             let subscripts: String = index.iter().map(|i| format!("[{i}]")).collect();
-            lines.push(format!("Layout: row-major, the last axis fastest; {array}{subscripts}{channel}."));
+            lines.push(format!(
+                "Layout: row-major, the last axis fastest; {array}{subscripts}{channel}."
+            ));
         }
     }
     lines.push(format!("{SOURCE_TAG} {}", data.meta()));
@@ -891,7 +1072,11 @@ fn header_lines(data: &LutData, format: Format, array: &str) -> Vec<String> {
 
 /// Nested array literal over `extents`, numbers innermost on one line.
 fn nested(out: &mut String, values: &[f32], extents: &[usize], format: Format, indent: usize) {
-    let (open, close) = if format == Format::Rust { ('[', ']') } else { ('{', '}') };
+    let (open, close) = if format == Format::Rust {
+        ('[', ']')
+    } else {
+        ('{', '}')
+    };
     out.push(open);
     match extents {
         [_] => {
@@ -938,7 +1123,10 @@ fn source(data: &LutData, format: Format) -> String {
             for line in header_lines(data, format, &upper) {
                 out.push_str(&format!("// {line}\n"));
             }
-            let ty = extents.iter().rev().fold("f32".to_string(), |ty, e| format!("[{ty}; {e}]"));
+            let ty = extents
+                .iter()
+                .rev()
+                .fold("f32".to_string(), |ty, e| format!("[{ty}; {e}]"));
             out.push_str(&format!("#[rustfmt::skip]\npub static {upper}: {ty} = "));
             nested(&mut out, &data.values, &extents, format, 0);
             out.push_str(";\n");
@@ -947,7 +1135,11 @@ fn source(data: &LutData, format: Format) -> String {
             for line in header_lines(data, format, &upper) {
                 out.push_str(&format!("// {line}\n"));
             }
-            let element = if c == 1 { "f32".to_string() } else { format!("vec{c}<f32>") };
+            let element = if c == 1 {
+                "f32".to_string()
+            } else {
+                format!("vec{c}<f32>")
+            };
             let ty = format!("array<{element}, {}>", data.nodes());
             out.push_str(&format!("const {upper}: {ty} = {ty}(\n"));
             let row = data.dims.last().expect("checked: 2 to 4 dims") * c;
@@ -956,10 +1148,18 @@ fn source(data: &LutData, format: Format) -> String {
                     .chunks_exact(c)
                     .map(|t| {
                         let n: Vec<String> = t.iter().map(|&v| number(v, format)).collect();
-                        if c == 1 { n.join("") } else { format!("{element}({})", n.join(", ")) }
+                        if c == 1 {
+                            n.join("")
+                        } else {
+                            format!("{element}({})", n.join(", "))
+                        }
                     })
                     .collect();
-                let comma = if (i + 1) * row < data.values.len() { "," } else { "" };
+                let comma = if (i + 1) * row < data.values.len() {
+                    ","
+                } else {
+                    ""
+                };
                 out.push_str(&format!("    {}{comma}\n", items.join(", ")));
             }
             out.push_str(");\n");
@@ -976,7 +1176,11 @@ fn float_tokens(text: &str) -> Result<Vec<f32>, String> {
     let mut i = 0;
     while i < bytes.len() {
         let b = bytes[i];
-        let starts_number = |j: usize| bytes.get(j).is_some_and(|b| b.is_ascii_digit() || *b == b'.');
+        let starts_number = |j: usize| {
+            bytes
+                .get(j)
+                .is_some_and(|b| b.is_ascii_digit() || *b == b'.')
+        };
         if b.is_ascii_alphabetic() || b == b'_' {
             while i < bytes.len() && (bytes[i].is_ascii_alphanumeric() || bytes[i] == b'_') {
                 i += 1;
@@ -986,8 +1190,10 @@ fn float_tokens(text: &str) -> Result<Vec<f32>, String> {
             i += 1;
             while i < bytes.len() {
                 let d = bytes[i];
-                let sign_after_exponent = (d == b'-' || d == b'+') && matches!(bytes[i - 1], b'e' | b'E');
-                if d.is_ascii_digit() || d == b'.' || d == b'e' || d == b'E' || sign_after_exponent {
+                let sign_after_exponent =
+                    (d == b'-' || d == b'+') && matches!(bytes[i - 1], b'e' | b'E');
+                if d.is_ascii_digit() || d == b'.' || d == b'e' || d == b'E' || sign_after_exponent
+                {
                     i += 1;
                 } else {
                     break;
@@ -1032,10 +1238,17 @@ fn read_source(text: &str) -> Result<LutData, String> {
     let code = strip_comments(text);
     let (_, init) = code.split_once('=').ok_or("no '=' after the declaration")?;
     // Up to the declaration's ';': without it the file was cut, maybe inside the last number.
-    let (init, _) = init.split_once(';').ok_or("no ';' closing the array: a truncated file")?;
+    let (init, _) = init
+        .split_once(';')
+        .ok_or("no ';' closing the array: a truncated file")?;
     let values = float_tokens(init)?;
     if values.len() != expected {
-        return Err(format!("{} numbers for dims {:?} × {} channels", values.len(), meta.dims, meta.channels.len()));
+        return Err(format!(
+            "{} numbers for dims {:?} × {} channels",
+            values.len(),
+            meta.dims,
+            meta.channels.len()
+        ));
     }
     Ok(meta.with_values(values))
 }
@@ -1050,7 +1263,8 @@ mod tests {
 
     impl TempDir {
         fn new(test: &str) -> TempDir {
-            let dir = std::env::temp_dir().join(format!("microsurface-lut-{}-{test}", std::process::id()));
+            let dir = std::env::temp_dir()
+                .join(format!("microsurface-lut-{}-{test}", std::process::id()));
             let _ = std::fs::remove_dir_all(&dir);
             std::fs::create_dir_all(&dir).unwrap();
             TempDir(dir)
@@ -1083,15 +1297,28 @@ mod tests {
         let axes = ["side", "eta", "sqrt_alpha", "mu"];
         LutData {
             name: "test_lut".into(),
-            axes: axes[4 - dims.len()..].iter().map(|s| s.to_string()).collect(),
+            axes: axes[4 - dims.len()..]
+                .iter()
+                .map(|s| s.to_string())
+                .collect(),
             dims: dims.to_vec(),
-            channels: ["A", "B", "C", "D"][..channels].iter().map(|s| s.to_string()).collect(),
+            channels: ["A", "B", "C", "D"][..channels]
+                .iter()
+                .map(|s| s.to_string())
+                .collect(),
             values,
         }
     }
 
     /// 2, 3 and 4 axes; a last axis of at most 4 nodes (the `.npy` channel-axis rule's edge).
-    const DIMS: [&[usize]; 6] = [&[5, 7], &[6, 3], &[3, 4, 6], &[2, 5, 3], &[2, 3, 4, 5], &[2, 2, 3, 4]];
+    const DIMS: [&[usize]; 6] = [
+        &[5, 7],
+        &[6, 3],
+        &[3, 4, 6],
+        &[2, 5, 3],
+        &[2, 3, 4, 5],
+        &[2, 2, 3, 4],
+    ];
 
     fn check_roundtrip(data: &LutData, back: &LutData, format: Format) {
         let what = format!("{format} {:?} × {}", data.dims, data.channels.len());
@@ -1101,7 +1328,11 @@ mod tests {
             assert_eq!(back.channels.len(), data.channels.len(), "{what}");
             assert_eq!(back.name, "test_lut", "{what}: the stem");
         } else {
-            assert_eq!((&back.name, &back.axes, &back.channels), (&data.name, &data.axes, &data.channels), "{what}");
+            assert_eq!(
+                (&back.name, &back.axes, &back.channels),
+                (&data.name, &data.axes, &data.channels),
+                "{what}"
+            );
         }
         for (i, (&v, &r)) in data.values.iter().zip(&back.values).enumerate() {
             if format.is_exact() {
@@ -1109,7 +1340,10 @@ mod tests {
             } else {
                 let q = (f64::from(v) * 65535.0).round() as u16;
                 assert_eq!(r, f32::from(q) / 65535.0, "{what}: value {i}");
-                assert!((r - v).abs() <= 0.5 / 65535.0 + f32::EPSILON, "{what}: value {i}: {r} for {v}");
+                assert!(
+                    (r - v).abs() <= 0.5 / 65535.0 + f32::EPSILON,
+                    "{what}: value {i}: {r} for {v}"
+                );
             }
         }
     }
@@ -1179,7 +1413,10 @@ mod tests {
         }
         let missing = dir.0.join("no_such_dir").join("t.npy");
         for format in Format::ALL {
-            assert!(write(&good, format, &missing.with_extension(format.extension())).is_err(), "{format}");
+            assert!(
+                write(&good, format, &missing.with_extension(format.extension())).is_err(),
+                "{format}"
+            );
             assert!(read(format, &missing).is_err());
         }
     }
@@ -1197,7 +1434,23 @@ mod tests {
                 write(&data, format, &path).unwrap();
                 let bytes = std::fs::read(&path).unwrap();
                 let n = bytes.len();
-                let mut cuts = vec![0, 1, 6, 10, 12, 40, 79, 80, 100, 120, n / 3, n / 2, n - 8, n - 4, n - 1];
+                let mut cuts = vec![
+                    0,
+                    1,
+                    6,
+                    10,
+                    12,
+                    40,
+                    79,
+                    80,
+                    100,
+                    120,
+                    n / 3,
+                    n / 2,
+                    n - 8,
+                    n - 4,
+                    n - 1,
+                ];
                 cuts.retain(|&c| c < n);
                 for cut in cuts {
                     let cut_path = dir.0.join(format!("cut{cut}.{}", format.extension()));
@@ -1216,7 +1469,9 @@ mod tests {
                 std::fs::write(&flipped_path, &flipped).unwrap();
                 let _ = read(format, &flipped_path);
             }
-            let garbage: Vec<u8> = (0..4096u32).map(|i| (i.wrapping_mul(2_654_435_761) >> 13) as u8).collect();
+            let garbage: Vec<u8> = (0..4096u32)
+                .map(|i| (i.wrapping_mul(2_654_435_761) >> 13) as u8)
+                .collect();
             let path = dir.0.join(format!("garbage.{}", format.extension()));
             std::fs::write(&path, &garbage).unwrap();
             assert!(read(format, &path).is_err(), "{format}");
@@ -1231,8 +1486,17 @@ mod tests {
         }
         assert_eq!("KTX2".parse::<Format>(), Ok(Format::Ktx2));
         let err = "tiff".parse::<Format>().unwrap_err();
-        assert!(err.contains("tiff") && err.contains("npy, png, exr, ktx2, c, rust, wgsl"), "{err}");
-        assert_eq!(Format::ALL.iter().filter(|f| !f.is_exact()).collect::<Vec<_>>(), [&Format::Png16]);
+        assert!(
+            err.contains("tiff") && err.contains("npy, png, exr, ktx2, c, rust, wgsl"),
+            "{err}"
+        );
+        assert_eq!(
+            Format::ALL
+                .iter()
+                .filter(|f| !f.is_exact())
+                .collect::<Vec<_>>(),
+            [&Format::Png16]
+        );
     }
 
     #[test]
@@ -1252,7 +1516,8 @@ mod tests {
             let header_len = usize::from(u16::from_le_bytes([bytes[8], bytes[9]]));
             assert_eq!((10 + header_len) % 64, 0);
             let header = std::str::from_utf8(&bytes[10..10 + header_len]).unwrap();
-            let expected = format!("{{'descr': '<f4', 'fortran_order': False, 'shape': {shape}, }}");
+            let expected =
+                format!("{{'descr': '<f4', 'fortran_order': False, 'shape': {shape}, }}");
             assert_eq!(header.trim_end_matches([' ', '\n']), expected);
             assert!(header.ends_with('\n'));
         }
@@ -1277,22 +1542,47 @@ mod tests {
         assert_eq!(header, [109, 4, 5, 4, 3, 2, 1, 1, 0]);
         let (dfd_offset, dfd_len) = (u32_at(&bytes, 48) as usize, u32_at(&bytes, 52) as usize);
         let (kvd_offset, kvd_len) = (u32_at(&bytes, 56) as usize, u32_at(&bytes, 60) as usize);
-        assert_eq!((u64_at(&bytes, 64), u64_at(&bytes, 72)), (0, 0), "no supercompression global data");
+        assert_eq!(
+            (u64_at(&bytes, 64), u64_at(&bytes, 72)),
+            (0, 0),
+            "no supercompression global data"
+        );
         assert_eq!(dfd_offset, 80 + 24, "the DFD follows the one-level index");
         assert_eq!(dfd_len, 4 + 24 + 4 * 16);
         assert_eq!(kvd_offset, dfd_offset + dfd_len);
         let (level_offset, level_len) = (u64_at(&bytes, 80) as usize, u64_at(&bytes, 88) as usize);
-        assert_eq!(u64_at(&bytes, 96) as usize, level_len, "uncompressedByteLength");
+        assert_eq!(
+            u64_at(&bytes, 96) as usize,
+            level_len,
+            "uncompressedByteLength"
+        );
         assert_eq!(level_len, 2 * 3 * 4 * 5 * 16);
-        assert_eq!(level_offset % 16, 0, "mipPadding: lcm(texel block size 16, 4)");
+        assert_eq!(
+            level_offset % 16,
+            0,
+            "mipPadding: lcm(texel block size 16, 4)"
+        );
         assert!(level_offset >= kvd_offset + kvd_len && level_offset < kvd_offset + kvd_len + 16);
         assert_eq!(level_offset + level_len, bytes.len());
         // The basic DFD block.
-        let dfd: Vec<u32> = (0..dfd_len / 4).map(|i| u32_at(&bytes, dfd_offset + 4 * i)).collect();
-        assert_eq!(dfd[..7], [92, 0, 2 | 88 << 16, 1 | 1 << 8 | 1 << 16, 0, 16, 0]);
+        let dfd: Vec<u32> = (0..dfd_len / 4)
+            .map(|i| u32_at(&bytes, dfd_offset + 4 * i))
+            .collect();
+        assert_eq!(
+            dfd[..7],
+            [92, 0, 2 | (88 << 16), 1 | (1 << 8) | (1 << 16), 0, 16, 0]
+        );
         for (k, id) in [0u32, 1, 2, 15].into_iter().enumerate() {
             let s = &dfd[7 + 4 * k..11 + 4 * k];
-            assert_eq!(s, [32 * k as u32 | 31 << 16 | (id | 0xC0) << 24, 0, 0xBF80_0000, 0x3F80_0000]);
+            assert_eq!(
+                s,
+                [
+                    (32 * k as u32) | (31 << 16) | ((id | 0xC0) << 24),
+                    0,
+                    0xBF80_0000,
+                    0x3F80_0000
+                ]
+            );
         }
         // Key/value data: sorted keys, NUL-terminated values, each entry padded to 4.
         let kvd = &bytes[kvd_offset..kvd_offset + kvd_len];
@@ -1306,7 +1596,10 @@ mod tests {
         assert_eq!(kvd_len, (second + 4 + second_len).next_multiple_of(4));
         // The texels: channels padded with 0 to four.
         let texel = &bytes[level_offset + 16..level_offset + 32];
-        let texel: Vec<f32> = texel.chunks_exact(4).map(|b| f32::from_le_bytes(b.try_into().unwrap())).collect();
+        let texel: Vec<f32> = texel
+            .chunks_exact(4)
+            .map(|b| f32::from_le_bytes(b.try_into().unwrap()))
+            .collect();
         assert_eq!(texel, [data.values[3], data.values[4], data.values[5], 0.0]);
         // 2 axes: a 2D texture; 3 axes: a 3D one.
         for (dims, expected) in [(&[4, 5][..], [5, 4, 0, 0]), (&[3, 4, 5][..], [5, 4, 3, 0])] {
@@ -1321,16 +1614,31 @@ mod tests {
     fn lut_source_arrays_declare_what_the_docs_say() {
         let data = table(&[2, 3], 3, 9);
         let c = source(&data, Format::C);
-        assert!(c.contains("static const float test_lut[2][3][3] = {"), "{c}");
+        assert!(
+            c.contains("static const float test_lut[2][3][3] = {"),
+            "{c}"
+        );
         assert!(c.contains("{0.0f, 1.0f, 1e-40f}"), "{c}");
         let rust = source(&data, Format::Rust);
-        assert!(rust.contains("pub static TEST_LUT: [[[f32; 3]; 3]; 2] = ["), "{rust}");
+        assert!(
+            rust.contains("pub static TEST_LUT: [[[f32; 3]; 3]; 2] = ["),
+            "{rust}"
+        );
         assert!(rust.contains("[0.0, 1.0, 1e-40]"), "{rust}");
         let wgsl = source(&data, Format::Wgsl);
-        assert!(wgsl.contains("const TEST_LUT: array<vec3<f32>, 6> = array<vec3<f32>, 6>("), "{wgsl}");
-        assert!(wgsl.contains("TEST_LUT[(i_sqrt_alpha) * 3u + i_mu]"), "{wgsl}");
+        assert!(
+            wgsl.contains("const TEST_LUT: array<vec3<f32>, 6> = array<vec3<f32>, 6>("),
+            "{wgsl}"
+        );
+        assert!(
+            wgsl.contains("TEST_LUT[(i_sqrt_alpha) * 3u + i_mu]"),
+            "{wgsl}"
+        );
         assert!(wgsl.contains("vec3<f32>(0.0f, 1.0f, 1e-40f)"), "{wgsl}");
         let one = source(&table(&[2, 3], 1, 9), Format::C);
-        assert!(one.contains("static const float test_lut[2][3] = {"), "{one}");
+        assert!(
+            one.contains("static const float test_lut[2][3] = {"),
+            "{one}"
+        );
     }
 }
