@@ -1234,7 +1234,10 @@ fn read_source(text: &str) -> Result<LutData, String> {
         .find_map(|l| l.split_once(SOURCE_TAG).map(|(_, m)| m))
         .ok_or("no 'microsurface-lut:' line: not a table written by microsurface")?;
     let meta = Meta::parse(line)?;
-    let expected = meta.nodes()? * meta.channels.len();
+    let expected = meta
+        .nodes()?
+        .checked_mul(meta.channels.len())
+        .ok_or("the dims overflow")?;
     let code = strip_comments(text);
     let (_, init) = code.split_once('=').ok_or("no '=' after the declaration")?;
     // Up to the declaration's ';': without it the file was cut, maybe inside the last number.
@@ -1476,6 +1479,20 @@ mod tests {
             std::fs::write(&path, &garbage).unwrap();
             assert!(read(format, &path).is_err(), "{format}");
         }
+    }
+
+    #[test]
+    fn lut_absurd_metadata_is_an_error() {
+        let dir = TempDir::new("absurd");
+        let path = dir.0.join("t.h");
+        let huge = usize::MAX / 2;
+        let text = format!(
+            "// microsurface-lut: name=t;axes=a,b;dims={huge},1;channels=A,B,C,D\n\
+             static const float t[1][1] = {{0.5f}};\n"
+        );
+        std::fs::write(&path, text).unwrap();
+        let err = read(Format::C, &path).unwrap_err();
+        assert!(err.contains("overflow"), "{err}");
     }
 
     #[test]
