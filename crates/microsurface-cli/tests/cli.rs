@@ -325,7 +325,7 @@ fn one_line_error(out: &Output, needle: &str) {
 
 #[test]
 fn every_subcommand_answers_help_and_the_binary_its_version() {
-    for cmd in ["verify", "eval", "bsdf", "sample", "report"] {
+    for cmd in ["verify", "eval", "bsdf", "sample", "report", "table", "lut"] {
         for flag in ["--help", "-h"] {
             let out = microsurface(&[cmd, flag], "");
             assert!(out.status.success(), "{cmd} {flag}");
@@ -1271,4 +1271,168 @@ fn has_null(v: &serde_json::Value) -> bool {
         serde_json::Value::Object(o) => o.values().any(has_null),
         _ => false,
     }
+}
+
+/// `lut`: every format written, read back by the command itself (the manifest's storage
+/// error), the npy equal to the library's table bit for bit in f32, the manifest's axes the
+/// library's; the dielectric's four axes; bad arguments one line each.
+#[test]
+fn lut_writes_every_format_with_its_manifest() {
+    use microsurface::scattering::lut::{Lut, LutKind, LutSpec};
+    let dir = std::env::temp_dir().join(format!("microsurface-lut-{}", std::process::id()));
+    std::fs::create_dir_all(&dir).unwrap();
+    let mut spec = LutSpec::new("ggx".parse().unwrap(), LutKind::Dfg);
+    spec.size = 3;
+    let want = Lut::compute(&spec, &|_, _| {}).unwrap();
+    for ext in ["npy", "png", "exr", "ktx2", "h", "rs", "wgsl"] {
+        let out = dir.join(format!("t.{ext}"));
+        let o = microsurface(
+            &[
+                "lut",
+                "--ndf",
+                "ggx",
+                "--kind",
+                "dfg",
+                "--size",
+                "3",
+                "--check",
+                "2",
+                "--out",
+                out.to_str().unwrap(),
+            ],
+            "",
+        );
+        assert!(
+            o.status.success(),
+            "{ext}: {}",
+            String::from_utf8_lossy(&o.stderr)
+        );
+        let manifest: serde_json::Value = serde_json::from_str(
+            &std::fs::read_to_string(dir.join(format!("t.{ext}.json"))).unwrap(),
+        )
+        .unwrap();
+        let storage = manifest["error"]["storage"]["max_abs"].as_f64().unwrap();
+        // f32: half an ulp of values ≤ 1; 16-bit PNG: half a step.
+        let bound = if ext == "png" {
+            0.5 / 65535.0 + 1e-9
+        } else {
+            6e-8
+        };
+        assert!(storage <= bound, "{ext}: {storage:e}");
+        assert_eq!(manifest["kind"], "dfg");
+        assert_eq!(manifest["channels"].as_array().unwrap().len(), 3);
+        for (axis, a) in manifest["axes"].as_array().unwrap().iter().zip(&want.axes) {
+            assert_eq!(axis["name"], a.name);
+            let params: Vec<f64> = serde_json::from_value(axis["params"].clone()).unwrap();
+            assert_eq!(params, a.params);
+        }
+        for key in ["interior", "border"] {
+            let e = manifest["error"]["filter"][key]["max_abs"]
+                .as_f64()
+                .unwrap();
+            assert!(e.is_finite() && e > 0.0, "{ext} {key}: {e}");
+        }
+    }
+    // The npy's values, parsed here: the library's table in f32.
+    let bytes = std::fs::read(dir.join("t.npy")).unwrap();
+    let header = u16::from_le_bytes([bytes[8], bytes[9]]) as usize;
+    let text = std::str::from_utf8(&bytes[10..10 + header]).unwrap();
+    assert!(
+        text.contains("'<f4'") && text.contains("(3, 3, 3)"),
+        "{text}"
+    );
+    let values: Vec<f32> = bytes[10 + header..]
+        .chunks_exact(4)
+        .map(|b| f32::from_le_bytes([b[0], b[1], b[2], b[3]]))
+        .collect();
+    let want32: Vec<f32> = want.values.iter().map(|&v| v as f32).collect();
+    assert_eq!(values, want32);
+    // The dielectric: (side, eta, roughness, mu), two channels; the default file name.
+    let o = Command::new(env!("CARGO_BIN_EXE_microsurface"))
+        .args([
+            "lut",
+            "--ndf",
+            "beckmann",
+            "--kind",
+            "dielectric",
+            "--size",
+            "2",
+            "--eta-size",
+            "2",
+            "--format",
+            "exr",
+            "--check",
+            "0",
+        ])
+        .current_dir(&dir)
+        .output()
+        .unwrap();
+    assert!(o.status.success(), "{}", String::from_utf8_lossy(&o.stderr));
+    let manifest: serde_json::Value = serde_json::from_str(
+        &std::fs::read_to_string(dir.join("beckmann_dielectric_2.exr.json")).unwrap(),
+    )
+    .unwrap();
+    let names: Vec<&str> = manifest["axes"]
+        .as_array()
+        .unwrap()
+        .iter()
+        .map(|a| a["name"].as_str().unwrap())
+        .collect();
+    assert_eq!(names, ["side", "eta", "sqrt_alpha", "mu"]);
+    assert!(manifest["error"]["filter"].is_null());
+    let missing = dir.join("no-such-dir").join("t.npy");
+    for (args, needle) in [
+        (vec!["lut", "--kind", "dfg"], "--ndf is required"),
+        (vec!["lut", "--ndf", "ggx"], "--kind is required"),
+        (
+            vec!["lut", "--ndf", "ggx", "--kind", "dgf"],
+            "unknown table kind",
+        ),
+        (
+            vec!["lut", "--ndf", "ggx", "--kind", "dfg", "--size", "1"],
+            "size must be",
+        ),
+        (
+            vec!["lut", "--ndf", "ggx", "--kind", "dfg", "--size", "x"],
+            "--size",
+        ),
+        (
+            vec!["lut", "--ndf", "ggx", "--kind", "dfg", "--format", "tiff"],
+            "tiff",
+        ),
+        (
+            vec!["lut", "--ndf", "ggx", "--kind", "dfg", "--out", "t.bmp"],
+            "--format",
+        ),
+        (
+            vec!["lut", "--ndf", "ggx", "--kind", "dfg", "--alpha-max", "0"],
+            "alpha",
+        ),
+        (vec!["lut", "--ndf", "gtr", "--kind", "dfg"], "gtr"),
+        (
+            vec!["lut", "--ndf", "ggx", "--kind", "dfg", "--level", "9"],
+            "level",
+        ),
+        (
+            vec!["lut", "--ndf", "ggx", "--kind", "dfg", "--mu-axis", "cos"],
+            "mu axis",
+        ),
+        (
+            vec![
+                "lut",
+                "--ndf",
+                "ggx",
+                "--kind",
+                "dfg",
+                "--size",
+                "2",
+                "--out",
+                missing.to_str().unwrap(),
+            ],
+            "t.npy",
+        ),
+    ] {
+        one_line_error(&microsurface(&args, ""), needle);
+    }
+    std::fs::remove_dir_all(&dir).unwrap();
 }

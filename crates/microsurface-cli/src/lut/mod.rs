@@ -153,7 +153,19 @@ pub fn run(args: &[String]) -> Result<ExitCode, String> {
         axes: lut.axes.iter().map(|a| a.name.to_string()).collect(),
         dims: lut.dims(),
         channels: lut.channels.iter().map(|c| c.to_string()).collect(),
-        values: lut.values.iter().map(|&v| v as f32).collect(),
+        // (16-bit PNG holds [0, 1]: a quadrature's 1 + 1e-9 is stored as 1, and counted in
+        // the storage error below.)
+        values: lut
+            .values
+            .iter()
+            .map(|&v| {
+                if format.is_exact() {
+                    v as f32
+                } else {
+                    v.clamp(0.0, 1.0) as f32
+                }
+            })
+            .collect(),
     };
     format::write(&data, format, &out).map_err(err)?;
     // The storage's error: the file read back against the f64 values.
@@ -220,7 +232,10 @@ pub fn run(args: &[String]) -> Result<ExitCode, String> {
         "level": spec.level,
         "error": {
             "filter": filter,
-            "storage_max_abs": storage,
+            "storage": {
+                "max_abs": storage,
+                "how": if format.is_exact() { "f32, read back from the file" } else { "16-bit, read back from the file" },
+            },
         },
     });
     let manifest_path = manifest_path(&out);
