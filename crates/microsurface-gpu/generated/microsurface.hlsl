@@ -15,6 +15,15 @@ struct MsSample {
     float pdf;
 };
 
+struct MsBoundedCap {
+    float3 ws;
+    float b;
+    float top;
+    int _end_pad_0;
+    int _end_pad_1;
+    int _end_pad_2;
+};
+
 struct MsMicrofacet {
     uint ndf;
     int _pad1_0;
@@ -671,8 +680,7 @@ float3 ms_ggx_cap_normal(float3 w_6, float2 alpha_6, float2 u, float len)
     float z_5 = (w_6.z * inv);
     const float2 _e17 = ms_cos_sin_turn(u.x);
     float above = ((1.0 - u.y) * (1.0 + z_5));
-    float cz = (above - z_5);
-    float sin_ = sqrt(max((1.0 - (cz * cz)), 0.0));
+    float sin_ = sqrt(max((u.y * ((above * (1.0 + z_5)) + ((x_4 * x_4) + (y_3 * y_3)))), 0.0));
     float3 h_1 = float3((alpha_6.x * ((sin_ * _e17.x) + x_4)), (alpha_6.y * ((sin_ * _e17.y) + y_3)), above);
     float n_3 = (1.0 / sqrt((((h_1.x * h_1.x) + (h_1.y * h_1.y)) + (h_1.z * h_1.z))));
     return (h_1 * n_3);
@@ -762,7 +770,15 @@ MsSample ms_ggx_sample_dcos(float2 alpha_10, float2 u_3)
     return mssample_1;
 }
 
-float4 ms_ggx_bounded_cap(float3 w_9, float2 alpha_11)
+MsBoundedCap ConstructMsBoundedCap(float3 arg0, float arg1, float arg2) {
+    MsBoundedCap ret = (MsBoundedCap)0;
+    ret.ws = arg0;
+    ret.b = arg1;
+    ret.top = arg2;
+    return ret;
+}
+
+MsBoundedCap ms_ggx_bounded_cap(float3 w_9, float2 alpha_11)
 {
     float3 v_2 = (float3)0;
 
@@ -776,32 +792,38 @@ float4 ms_ggx_bounded_cap(float3 w_9, float2 alpha_11)
     float _e16 = v_2.z;
     const float3 _e18 = ms_normalize(float3((alpha_11.x * _e9), (alpha_11.y * _e13), _e16));
     if (down) {
-        return float4(_e18, _e18.z);
+        const MsBoundedCap msboundedcap = ConstructMsBoundedCap(_e18, _e18.z, 0.0);
+        return msboundedcap;
     }
     float a_10 = min(min(alpha_11.x, alpha_11.y), 1.0);
-    float _e27 = v_2.x;
-    float _e29 = v_2.x;
-    float _e32 = v_2.y;
-    float _e34 = v_2.y;
-    float s_7 = (1.0 + sqrt(((_e27 * _e29) + (_e32 * _e34))));
+    float _e28 = v_2.x;
+    float _e30 = v_2.x;
+    float _e33 = v_2.y;
+    float _e35 = v_2.y;
+    float s_7 = (1.0 + sqrt(((_e28 * _e30) + (_e33 * _e35))));
     float a2_ = (a_10 * a_10);
     float s2_ = (s_7 * s_7);
-    float _e46 = v_2.z;
-    float _e49 = v_2.z;
-    float k_3 = (((1.0 - a2_) * s2_) / (s2_ + ((a2_ * _e46) * _e49)));
-    return float4(_e18, (k_3 * _e18.z));
+    float _e44 = v_2.z;
+    float _e47 = v_2.z;
+    float den_2 = (s2_ + ((a2_ * _e44) * _e47));
+    float k_3 = (((1.0 - a2_) * s2_) / den_2);
+    float _e55 = v_2.z;
+    float _e57 = v_2.z;
+    float one_minus_k = ((a2_ * (s2_ + (_e55 * _e57))) / den_2);
+    const MsBoundedCap msboundedcap_1 = ConstructMsBoundedCap(_e18, (k_3 * _e18.z), (one_minus_k * _e18.z));
+    return msboundedcap_1;
 }
 
 float ms_ggx_pdf_bounded(float3 w_in_1, float3 wm_5, float2 alpha_12)
 {
     const float3 _e3 = ms_unit(w_in_1);
-    const float4 _e4 = ms_ggx_bounded_cap(_e3, alpha_12);
-    float3 ws = _e4.xyz;
-    float b_4 = _e4.w;
+    const MsBoundedCap _e4 = ms_ggx_bounded_cap(_e3, alpha_12);
+    float3 ws = _e4.ws;
+    float b_4 = _e4.b;
     const float3 _e15 = ms_normalize(float3((wm_5.x / alpha_12.x), (wm_5.y / alpha_12.y), wm_5.z));
     const float _e16 = ms_dot(_e15, ws);
-    float cz_1 = (((_e16 + _e16) * _e15.z) - ws.z);
-    if ((cz_1 < -(b_4))) {
+    float cz = (((_e16 + _e16) * _e15.z) - ws.z);
+    if ((cz < -(b_4))) {
         return 0.0;
     }
     const float _e25 = ms_ggx_pdf(_e3, wm_5, alpha_12);
@@ -811,18 +833,18 @@ float ms_ggx_pdf_bounded(float3 w_in_1, float3 wm_5, float2 alpha_12)
 MsSample ms_ggx_sample_bounded(float3 w_in_2, float2 alpha_13, float2 u_4)
 {
     const float3 _e3 = ms_unit(w_in_2);
-    const float4 _e4 = ms_ggx_bounded_cap(_e3, alpha_13);
-    float3 ws_1 = _e4.xyz;
-    float b_5 = _e4.w;
+    const MsBoundedCap _e4 = ms_ggx_bounded_cap(_e3, alpha_13);
+    float3 ws_1 = _e4.ws;
+    float b_5 = _e4.b;
     const float2 _e8 = ms_cos_sin_turn(u_4.x);
     float above_1 = ((1.0 - u_4.y) * (1.0 + b_5));
-    float z_6 = (above_1 - b_5);
-    float sin_1 = sqrt(max(((1.0 - z_6) * (1.0 + z_6)), 0.0));
-    float3 m_8 = float3(((sin_1 * _e8.x) + ws_1.x), ((sin_1 * _e8.y) + ws_1.y), (above_1 + (ws_1.z - b_5)));
-    const float3 _e46 = ms_normalize(float3((alpha_13.x * m_8.x), (alpha_13.y * m_8.y), max(m_8.z, 0.0)));
-    const float3 _e47 = ms_facing(_e46, _e3);
-    const float _e48 = ms_ggx_pdf_bounded(_e3, _e47, alpha_13);
-    const MsSample mssample_2 = ConstructMsSample(_e47, _e48);
+    float one_minus_b = ((((ws_1.x * ws_1.x) + (ws_1.y * ws_1.y)) / (1.0 + ws_1.z)) + _e4.top);
+    float sin_1 = sqrt(max(((u_4.y * (1.0 + b_5)) * (above_1 + one_minus_b)), 0.0));
+    float3 m_8 = float3(((sin_1 * _e8.x) + ws_1.x), ((sin_1 * _e8.y) + ws_1.y), (above_1 + _e4.top));
+    const float3 _e58 = ms_normalize(float3((alpha_13.x * m_8.x), (alpha_13.y * m_8.y), max(m_8.z, 0.0)));
+    const float3 _e59 = ms_facing(_e58, _e3);
+    const float _e60 = ms_ggx_pdf_bounded(_e3, _e59, alpha_13);
+    const MsSample mssample_2 = ConstructMsSample(_e59, _e60);
     return mssample_2;
 }
 

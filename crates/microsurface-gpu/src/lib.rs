@@ -60,9 +60,9 @@
 //! and on the horizon), roughness (2e-3 to 2, isotropic and anisotropic), η (1/2.4 to 2.4)
 //! and uniforms (0 and 1 − 2⁻²⁴ included). D, Λ, G1, G2 and the pdfs agree within 2e-6
 //! relative (twice the Rust f32 fast path's documented 1e-6); sampled normals within 16ε
-//! per component, except near the spherical caps' poles, where √(1 − cz²) magnifies the
-//! rounding of cz on either side (measured there: 3e-2 between an NVIDIA H200 and the Rust
-//! f32 path, whose own f64 path is 1e-1 away); BSDF values within bounds derived per element
+//! per component times the cancellation of the caps' unnormalised normal where the cap
+//! point nears the antipode of the stretched w (both sides form the caps' sine without
+//! cancellation at the poles); BSDF values within bounds derived per element
 //! from the half vector's rounding and the Fresnel formulas' conditioning (the test file has
 //! each derivation). CI checks them on Mesa's lavapipe; the same test binary passes on an
 //! NVIDIA H200, whose compiler fuses multiply-adds and divides to Vulkan's 2.5 ulp.

@@ -14,8 +14,9 @@
 //!   twice the f32 fast path's documented bound (GGX f32 ≤ 1e-6 of the exact value: the
 //!   table of `microsurface::fast`), as both sides are held to it.
 //! * Sampled normals (warps of u): the Rust f32 sampler's normal to `NORMAL_TOL` = 16ε per
-//!   component (the Rust f32 path forms cos 2πu in f64 and rounds, the WGSL in f32), plus,
-//!   near the caps' poles, what √(1 − cz²) makes of cz's rounding (`cap_bound`); a pdf at its
+//!   component (the Rust f32 path forms cos 2πu in f64 and rounds, the WGSL in f32), times
+//!   the cancellation of the caps' unnormalised normal where the cap point nears −w'
+//!   (`cap_bound`; the caps' sine itself is formed without cancellation); a pdf at its
 //!   own normal to `TOL` plus the dot product's cancellation at the visible edge, except on
 //!   the bounded cap's edge, where its indicator is decided by rounding.
 //! * Fresnel: `TOL` plus 16ε times the formula's cancellation (`fresnel_cancellation`: η → 1,
@@ -280,14 +281,14 @@ fn vec_diff(a: [f32; 3], b: [f32; 3]) -> f64 {
 /// (anisotropy up to 50:1): 4ε (BENCHMARKS.md).
 const NORMAL_TOL: f64 = 16.0 * EPS;
 
-/// The bound of a sampled normal's components at the element's uniforms: `NORMAL_TOL` plus
-/// what the cap's sine costs where it is ill-conditioned. The spherical cap (and the bounded
-/// one) takes sin = √(1 − cz²) of the cap point's height cz, which carries an absolute
-/// rounding of a few ε on either side (formed as (1 − u₁)(1 + z) − z); near the cap's poles
-/// (|cz| → 1: u₁ → 0, or u₁ → 1 for a stretched direction near the normal, i.e. small α)
-/// that moves sin by up to √Δ or Δ/(2 sin), Δ = 10ε (a fused multiply-add forms 1 − cz²
-/// exactly where a plain product rounds cz² first), and the unstretched normal
-/// m ∝ h = (αx(sin cos φ + x), αy(sin sin φ + y), ·) by 2 αmax δsin/|h|. Replayed in f64.
+/// The bound of a sampled normal's components at the element's uniforms: `NORMAL_TOL` times
+/// the cancellation of the unnormalised normal h = (αx(sin cos φ + x), αy(sin sin φ + y),
+/// h.z) (the cap point plus the stretched w' = (x, y, z), unstretched): Σ|terms|/|h|. Both
+/// sides form the cap's sine without cancellation (sin² = u₁(above (1 + z) + x² + y²), and
+/// the bounded cap's analogue, sums of positive terms), so each term of h carries a few ε
+/// relative on each side, and h's components move by 16ε times the sum of their terms'
+/// magnitudes; the unit normal by that over |h|. The factor is 1 to √3 except where the cap
+/// point nears −w' (u₁ → 1, φ opposite w'), the sampler's own conditioning. Replayed in f64.
 fn cap_bound(e: &El, bounded: bool) -> f64 {
     let (ax, ay) = (e.alpha[0] as f64, e.alpha[1] as f64);
     let mut w = e.wo.map(f64::from);
@@ -302,32 +303,27 @@ fn cap_bound(e: &El, bounded: bool) -> f64 {
     let ws = st.map(|x| x / len);
     let (u0, u1) = (e.u[0] as f64, e.u[1] as f64);
     let (sphi, cphi) = (std::f64::consts::TAU * u0).sin_cos();
-    let (sin, h) = if bounded {
-        let b = if down {
-            ws[2]
-        } else {
-            let a = ax.min(ay).min(1.0);
-            let sxy = 1.0 + (w[0] * w[0] + w[1] * w[1]).sqrt();
-            (1.0 - a * a) * sxy * sxy / (sxy * sxy + a * a * w[2] * w[2]) * ws[2]
-        };
-        let above = (1.0 - u1) * (1.0 + b);
-        let z = above - b;
-        let sin = ((1.0 - z) * (1.0 + z)).max(0.0).sqrt();
-        let m = [sin * cphi + ws[0], sin * sphi + ws[1], above + (ws[2] - b)];
-        (sin, [ax * m[0], ay * m[1], m[2].max(0.0)])
+    // The cap's lower bound −b: w'.z for the full cap, k w'.z for the bounded one.
+    let b = if bounded && !down {
+        let a = ax.min(ay).min(1.0);
+        let sxy = 1.0 + (w[0] * w[0] + w[1] * w[1]).sqrt();
+        (1.0 - a * a) * sxy * sxy / (sxy * sxy + a * a * w[2] * w[2]) * ws[2]
     } else {
-        let above = (1.0 - u1) * (1.0 + ws[2]);
-        let cz = above - ws[2];
-        let sin = (1.0 - cz * cz).max(0.0).sqrt();
-        (
-            sin,
-            [ax * (sin * cphi + ws[0]), ay * (sin * sphi + ws[1]), above],
-        )
+        ws[2]
     };
-    let delta = 10.0 * EPS;
-    let dsin = delta.sqrt().min(delta / (2.0 * sin.max(1e-300)));
+    let above = (1.0 - u1) * (1.0 + b);
+    let sin = (u1 * (1.0 + b) * (2.0 - u1 * (1.0 + b))).max(0.0).sqrt();
+    let h = [
+        ax * (sin * cphi + ws[0]),
+        ay * (sin * sphi + ws[1]),
+        above + (ws[2] - b),
+    ];
+    let terms = ax * ((sin * cphi).abs() + ws[0].abs())
+        + ay * ((sin * sphi).abs() + ws[1].abs())
+        + above
+        + (ws[2] - b).abs();
     let hl = h.iter().map(|x| x * x).sum::<f64>().sqrt().max(1e-30);
-    NORMAL_TOL + 2.0 * ax.max(ay) * dsin / hl
+    NORMAL_TOL * (terms / hl).max(1.0)
 }
 
 /// Whether a normal wm (f64) lies within rounding of the bounded cap's edge for w, where

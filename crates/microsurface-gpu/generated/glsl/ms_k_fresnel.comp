@@ -13,6 +13,11 @@ struct MsSample {
     vec3 wm;
     float pdf;
 };
+struct MsBoundedCap {
+    vec3 ws;
+    float b;
+    float top;
+};
 struct MsMicrofacet {
     uint ndf;
     vec2 alpha;
@@ -609,8 +614,7 @@ vec3 ms_ggx_cap_normal(vec3 w_6, vec2 alpha_6, vec2 u, float len) {
     float z_5 = (w_6.z * inv);
     vec2 _e17 = ms_cos_sin_turn(u.x);
     float above = ((1.0 - u.y) * (1.0 + z_5));
-    float cz = (above - z_5);
-    float sin_ = sqrt(max((1.0 - (cz * cz)), 0.0));
+    float sin_ = sqrt(max((u.y * ((above * (1.0 + z_5)) + ((x_4 * x_4) + (y_3 * y_3)))), 0.0));
     vec3 h_1 = vec3((alpha_6.x * ((sin_ * _e17.x) + x_4)), (alpha_6.y * ((sin_ * _e17.y) + y_3)), above);
     float n_3 = (1.0 / sqrt((((h_1.x * h_1.x) + (h_1.y * h_1.y)) + (h_1.z * h_1.z))));
     return (h_1 * n_3);
@@ -686,7 +690,7 @@ MsSample ms_ggx_sample_dcos(vec2 alpha_10, vec2 u_3) {
     return MsSample(_e21, (_e22 * _e21.z));
 }
 
-vec4 ms_ggx_bounded_cap(vec3 w_9, vec2 alpha_11) {
+MsBoundedCap ms_ggx_bounded_cap(vec3 w_9, vec2 alpha_11) {
     vec3 v_2 = vec3(0.0);
     bool down = (w_9.z < 0.0);
     v_2 = w_9;
@@ -698,31 +702,35 @@ vec4 ms_ggx_bounded_cap(vec3 w_9, vec2 alpha_11) {
     float _e16 = v_2.z;
     vec3 _e18 = ms_normalize(vec3((alpha_11.x * _e9), (alpha_11.y * _e13), _e16));
     if (down) {
-        return vec4(_e18, _e18.z);
+        return MsBoundedCap(_e18, _e18.z, 0.0);
     }
     float a_10 = min(min(alpha_11.x, alpha_11.y), 1.0);
-    float _e27 = v_2.x;
-    float _e29 = v_2.x;
-    float _e32 = v_2.y;
-    float _e34 = v_2.y;
-    float s_7 = (1.0 + sqrt(((_e27 * _e29) + (_e32 * _e34))));
+    float _e28 = v_2.x;
+    float _e30 = v_2.x;
+    float _e33 = v_2.y;
+    float _e35 = v_2.y;
+    float s_7 = (1.0 + sqrt(((_e28 * _e30) + (_e33 * _e35))));
     float a2_ = (a_10 * a_10);
     float s2_ = (s_7 * s_7);
-    float _e46 = v_2.z;
-    float _e49 = v_2.z;
-    float k_3 = (((1.0 - a2_) * s2_) / (s2_ + ((a2_ * _e46) * _e49)));
-    return vec4(_e18, (k_3 * _e18.z));
+    float _e44 = v_2.z;
+    float _e47 = v_2.z;
+    float den_2 = (s2_ + ((a2_ * _e44) * _e47));
+    float k_3 = (((1.0 - a2_) * s2_) / den_2);
+    float _e55 = v_2.z;
+    float _e57 = v_2.z;
+    float one_minus_k = ((a2_ * (s2_ + (_e55 * _e57))) / den_2);
+    return MsBoundedCap(_e18, (k_3 * _e18.z), (one_minus_k * _e18.z));
 }
 
 float ms_ggx_pdf_bounded(vec3 w_in_1, vec3 wm_5, vec2 alpha_12) {
     vec3 _e3 = ms_unit(w_in_1);
-    vec4 _e4 = ms_ggx_bounded_cap(_e3, alpha_12);
-    vec3 ws = _e4.xyz;
-    float b_4 = _e4.w;
+    MsBoundedCap _e4 = ms_ggx_bounded_cap(_e3, alpha_12);
+    vec3 ws = _e4.ws;
+    float b_4 = _e4.b;
     vec3 _e15 = ms_normalize(vec3((wm_5.x / alpha_12.x), (wm_5.y / alpha_12.y), wm_5.z));
     float _e16 = ms_dot(_e15, ws);
-    float cz_1 = (((_e16 + _e16) * _e15.z) - ws.z);
-    if ((cz_1 < -(b_4))) {
+    float cz = (((_e16 + _e16) * _e15.z) - ws.z);
+    if ((cz < -(b_4))) {
         return 0.0;
     }
     float _e25 = ms_ggx_pdf(_e3, wm_5, alpha_12);
@@ -731,18 +739,18 @@ float ms_ggx_pdf_bounded(vec3 w_in_1, vec3 wm_5, vec2 alpha_12) {
 
 MsSample ms_ggx_sample_bounded(vec3 w_in_2, vec2 alpha_13, vec2 u_4) {
     vec3 _e3 = ms_unit(w_in_2);
-    vec4 _e4 = ms_ggx_bounded_cap(_e3, alpha_13);
-    vec3 ws_1 = _e4.xyz;
-    float b_5 = _e4.w;
+    MsBoundedCap _e4 = ms_ggx_bounded_cap(_e3, alpha_13);
+    vec3 ws_1 = _e4.ws;
+    float b_5 = _e4.b;
     vec2 _e8 = ms_cos_sin_turn(u_4.x);
     float above_1 = ((1.0 - u_4.y) * (1.0 + b_5));
-    float z_6 = (above_1 - b_5);
-    float sin_1 = sqrt(max(((1.0 - z_6) * (1.0 + z_6)), 0.0));
-    vec3 m_8 = vec3(((sin_1 * _e8.x) + ws_1.x), ((sin_1 * _e8.y) + ws_1.y), (above_1 + (ws_1.z - b_5)));
-    vec3 _e46 = ms_normalize(vec3((alpha_13.x * m_8.x), (alpha_13.y * m_8.y), max(m_8.z, 0.0)));
-    vec3 _e47 = ms_facing(_e46, _e3);
-    float _e48 = ms_ggx_pdf_bounded(_e3, _e47, alpha_13);
-    return MsSample(_e47, _e48);
+    float one_minus_b = ((((ws_1.x * ws_1.x) + (ws_1.y * ws_1.y)) / (1.0 + ws_1.z)) + _e4.top);
+    float sin_1 = sqrt(max(((u_4.y * (1.0 + b_5)) * (above_1 + one_minus_b)), 0.0));
+    vec3 m_8 = vec3(((sin_1 * _e8.x) + ws_1.x), ((sin_1 * _e8.y) + ws_1.y), (above_1 + _e4.top));
+    vec3 _e58 = ms_normalize(vec3((alpha_13.x * m_8.x), (alpha_13.y * m_8.y), max(m_8.z, 0.0)));
+    vec3 _e59 = ms_facing(_e58, _e3);
+    float _e60 = ms_ggx_pdf_bounded(_e3, _e59, alpha_13);
+    return MsSample(_e59, _e60);
 }
 
 float ms_ggx_pdf_bounded_reflection(vec3 wo_8, vec3 wi_8, vec2 alpha_14) {
