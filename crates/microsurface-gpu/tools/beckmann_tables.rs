@@ -101,9 +101,9 @@ fn fit(t: &Table, j: usize) -> [f64; DEGREE + 1] {
     let mut cheb = vec![0.0; n];
     for (i, c) in cheb.iter_mut().enumerate() {
         let mut sum = 0.0;
-        for k in 0..n {
+        for (k, v) in vals.iter().enumerate() {
             let theta = std::f64::consts::PI * (k as f64 + 0.5) / n as f64;
-            sum += vals[k] * (i as f64 * theta).cos();
+            sum += v * (i as f64 * theta).cos();
         }
         *c = 2.0 * sum / n as f64;
     }
