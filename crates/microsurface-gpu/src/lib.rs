@@ -4,7 +4,7 @@
 //! # The library
 //!
 //! [`WGSL`] is the library's one source: the files under `wgsl/` of this crate (common,
-//! Fresnel, GGX, the run-time distribution, the rough conductor and dielectric) in one
+//! Fresnel, GGX, Beckmann with its generated tables, the run-time distribution, the rough conductor and dielectric) in one
 //! string. WGSL has no
 //! `#include`: a shader includes the library by being compiled with it in front, which WGSL
 //! allows as module-scope declarations may come in any order. From Rust:
@@ -38,6 +38,8 @@
 //! | `ms_ggx_pdf(w, wm, α)`, `ms_ggx_sample(w, α, u)` → `MsSample` | `pdf` (= `d_visible`), `sample` (spherical caps) |
 //! | `ms_ggx_sample_dcos(α, u)`, `ms_ggx_pdf_dcos(wm, α)` | `sample_dcos`, `pdf_dcos` |
 //! | `ms_ggx_sample_bounded(w, α, u)`, `ms_ggx_pdf_bounded(w, wm, α)`, `ms_ggx_pdf_bounded_reflection(wo, wi, α)` | `sample_bounded`, `pdf_bounded`, `pdf_bounded_reflection` |
+//! | `ms_beckmann_d`, `ms_beckmann_lambda`, `ms_beckmann_g1`, `ms_beckmann_g2`, `ms_beckmann_g2_separable` | `Microfacet::<f32, Beckmann>` `d`, `lambda`, `g1`, `g2`, `g2_separable` |
+//! | `ms_beckmann_pdf(w, wm, α)`, `ms_beckmann_sample(w, α, u)`; `ms_beckmann_sample_dcos`, `ms_beckmann_pdf_dcos` | `pdf`, `sample` (the same warp of u: slope-space inversion); `sample_dcos`, `pdf_dcos` |
 //! | `ms_fresnel_dielectric`, `ms_fresnel_conductor`, `ms_fresnel_schlick`, `ms_fresnel_f82_tint`; `MsFresnel` + `ms_fresnel_eval` | `bsdf::fresnel::{dielectric, conductor, schlick, f82_tint}`; the `Fresnel` terms |
 //! | `MsMicrofacet` + `ms_d`, `ms_lambda`, `ms_g1`, `ms_g2`, `ms_pdf`, `ms_sample`, `ms_sample_dcos` | `MicrofacetDistribution` |
 //! | `MsConductor` + `ms_conductor_eval`, `ms_conductor_pdf`, `ms_conductor_eval_pdf`, `ms_conductor_sample` → `MsBsdfSample` | `bsdf::RoughConductor` (`Masking::Correlated` or `Separable`) |
@@ -60,9 +62,9 @@
 //! and on the horizon), roughness (2e-3 to 2, isotropic and anisotropic), η (1/2.4 to 2.4)
 //! and uniforms (0 and 1 − 2⁻²⁴ included). D, Λ, G1, G2 and the pdfs agree within 2e-6
 //! relative (twice the Rust f32 fast path's documented 1e-6); sampled normals within 16ε
-//! per component, except near the spherical caps' poles, where √(1 − cz²) magnifies the
-//! rounding of cz on either side (measured there: 3e-2 between an NVIDIA H200 and the Rust
-//! f32 path, whose own f64 path is 1e-1 away); BSDF values within bounds derived per element
+//! per component times the cancellation of the caps' unnormalised normal where the cap
+//! point nears the antipode of the stretched w (both sides form the caps' sine without
+//! cancellation at the poles); BSDF values within bounds derived per element
 //! from the half vector's rounding and the Fresnel formulas' conditioning (the test file has
 //! each derivation). CI checks them on Mesa's lavapipe; the same test binary passes on an
 //! NVIDIA H200, whose compiler fuses multiply-adds and divides to Vulkan's 2.5 ulp.
@@ -83,13 +85,18 @@ use std::fmt;
 use std::sync::{mpsc, Mutex};
 
 /// The WGSL library, one source: `wgsl/common.wgsl`, `fresnel.wgsl`, `ggx.wgsl`,
-/// `microfacet.wgsl`, `conductor.wgsl`, `dielectric.wgsl`, in that order.
+/// `beckmann_tables.wgsl` (generated), `beckmann.wgsl`, `microfacet.wgsl`, `conductor.wgsl`,
+/// `dielectric.wgsl`, in that order.
 pub const WGSL: &str = concat!(
     include_str!("../wgsl/common.wgsl"),
     "\n",
     include_str!("../wgsl/fresnel.wgsl"),
     "\n",
     include_str!("../wgsl/ggx.wgsl"),
+    "\n",
+    include_str!("../wgsl/beckmann_tables.wgsl"),
+    "\n",
+    include_str!("../wgsl/beckmann.wgsl"),
     "\n",
     include_str!("../wgsl/microfacet.wgsl"),
     "\n",
@@ -108,10 +115,12 @@ pub const KERNEL_IN: usize = 5;
 pub const KERNEL_OUT: usize = 2;
 
 /// The compute entry points of [`KERNELS_WGSL`].
-pub const KERNEL_ENTRY_POINTS: [&str; 8] = [
+pub const KERNEL_ENTRY_POINTS: [&str; 10] = [
     "ms_k_ggx_eval",
     "ms_k_ggx_sample",
     "ms_k_ggx_bounded",
+    "ms_k_beckmann_eval",
+    "ms_k_beckmann_sample",
     "ms_k_fresnel",
     "ms_k_conductor_eval",
     "ms_k_conductor_sample",

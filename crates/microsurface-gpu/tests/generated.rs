@@ -4,6 +4,22 @@
 #[path = "../tools/translate.rs"]
 mod translate;
 
+#[path = "../tools/beckmann_tables.rs"]
+mod beckmann_tables;
+
+/// wgsl/beckmann_tables.wgsl is what the generator writes from the Rust functions now (and
+/// each table's fit error within its bound: the generator panics otherwise).
+#[test]
+fn beckmann_tables_are_current() {
+    let root = std::path::Path::new(env!("CARGO_MANIFEST_DIR"));
+    let on_disk =
+        std::fs::read_to_string(root.join("wgsl/beckmann_tables.wgsl")).unwrap_or_default();
+    assert!(
+        on_disk == beckmann_tables::wgsl(),
+        "wgsl/beckmann_tables.wgsl is stale: run `cargo run -p microsurface-gpu --example translate`"
+    );
+}
+
 #[test]
 fn generated_files_are_current() {
     let root = std::path::Path::new(env!("CARGO_MANIFEST_DIR"));

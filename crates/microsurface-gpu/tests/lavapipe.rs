@@ -14,8 +14,9 @@
 //!   twice the f32 fast path's documented bound (GGX f32 ≤ 1e-6 of the exact value: the
 //!   table of `microsurface::fast`), as both sides are held to it.
 //! * Sampled normals (warps of u): the Rust f32 sampler's normal to `NORMAL_TOL` = 16ε per
-//!   component (the Rust f32 path forms cos 2πu in f64 and rounds, the WGSL in f32), plus,
-//!   near the caps' poles, what √(1 − cz²) makes of cz's rounding (`cap_bound`); a pdf at its
+//!   component (the Rust f32 path forms cos 2πu in f64 and rounds, the WGSL in f32), times
+//!   the cancellation of the caps' unnormalised normal where the cap point nears −w'
+//!   (`cap_bound`; the caps' sine itself is formed without cancellation); a pdf at its
 //!   own normal to `TOL` plus the dot product's cancellation at the visible edge, except on
 //!   the bounded cap's edge, where its indicator is decided by rounding.
 //! * Fresnel: `TOL` plus 16ε times the formula's cancellation (`fresnel_cancellation`: η → 1,
@@ -280,14 +281,14 @@ fn vec_diff(a: [f32; 3], b: [f32; 3]) -> f64 {
 /// (anisotropy up to 50:1): 4ε (BENCHMARKS.md).
 const NORMAL_TOL: f64 = 16.0 * EPS;
 
-/// The bound of a sampled normal's components at the element's uniforms: `NORMAL_TOL` plus
-/// what the cap's sine costs where it is ill-conditioned. The spherical cap (and the bounded
-/// one) takes sin = √(1 − cz²) of the cap point's height cz, which carries an absolute
-/// rounding of a few ε on either side (formed as (1 − u₁)(1 + z) − z); near the cap's poles
-/// (|cz| → 1: u₁ → 0, or u₁ → 1 for a stretched direction near the normal, i.e. small α)
-/// that moves sin by up to √Δ or Δ/(2 sin), Δ = 10ε (a fused multiply-add forms 1 − cz²
-/// exactly where a plain product rounds cz² first), and the unstretched normal
-/// m ∝ h = (αx(sin cos φ + x), αy(sin sin φ + y), ·) by 2 αmax δsin/|h|. Replayed in f64.
+/// The bound of a sampled normal's components at the element's uniforms: `NORMAL_TOL` times
+/// the cancellation of the unnormalised normal h = (αx(sin cos φ + x), αy(sin sin φ + y),
+/// h.z) (the cap point plus the stretched w' = (x, y, z), unstretched): Σ|terms|/|h|. Both
+/// sides form the cap's sine without cancellation (sin² = u₁(above (1 + z) + x² + y²), and
+/// the bounded cap's analogue, sums of positive terms), so each term of h carries a few ε
+/// relative on each side, and h's components move by 16ε times the sum of their terms'
+/// magnitudes; the unit normal by that over |h|. The factor is 1 to √3 except where the cap
+/// point nears −w' (u₁ → 1, φ opposite w'), the sampler's own conditioning. Replayed in f64.
 fn cap_bound(e: &El, bounded: bool) -> f64 {
     let (ax, ay) = (e.alpha[0] as f64, e.alpha[1] as f64);
     let mut w = e.wo.map(f64::from);
@@ -302,32 +303,27 @@ fn cap_bound(e: &El, bounded: bool) -> f64 {
     let ws = st.map(|x| x / len);
     let (u0, u1) = (e.u[0] as f64, e.u[1] as f64);
     let (sphi, cphi) = (std::f64::consts::TAU * u0).sin_cos();
-    let (sin, h) = if bounded {
-        let b = if down {
-            ws[2]
-        } else {
-            let a = ax.min(ay).min(1.0);
-            let sxy = 1.0 + (w[0] * w[0] + w[1] * w[1]).sqrt();
-            (1.0 - a * a) * sxy * sxy / (sxy * sxy + a * a * w[2] * w[2]) * ws[2]
-        };
-        let above = (1.0 - u1) * (1.0 + b);
-        let z = above - b;
-        let sin = ((1.0 - z) * (1.0 + z)).max(0.0).sqrt();
-        let m = [sin * cphi + ws[0], sin * sphi + ws[1], above + (ws[2] - b)];
-        (sin, [ax * m[0], ay * m[1], m[2].max(0.0)])
+    // The cap's lower bound −b: w'.z for the full cap, k w'.z for the bounded one.
+    let b = if bounded && !down {
+        let a = ax.min(ay).min(1.0);
+        let sxy = 1.0 + (w[0] * w[0] + w[1] * w[1]).sqrt();
+        (1.0 - a * a) * sxy * sxy / (sxy * sxy + a * a * w[2] * w[2]) * ws[2]
     } else {
-        let above = (1.0 - u1) * (1.0 + ws[2]);
-        let cz = above - ws[2];
-        let sin = (1.0 - cz * cz).max(0.0).sqrt();
-        (
-            sin,
-            [ax * (sin * cphi + ws[0]), ay * (sin * sphi + ws[1]), above],
-        )
+        ws[2]
     };
-    let delta = 10.0 * EPS;
-    let dsin = delta.sqrt().min(delta / (2.0 * sin.max(1e-300)));
+    let above = (1.0 - u1) * (1.0 + b);
+    let sin = (u1 * (1.0 + b) * (2.0 - u1 * (1.0 + b))).max(0.0).sqrt();
+    let h = [
+        ax * (sin * cphi + ws[0]),
+        ay * (sin * sphi + ws[1]),
+        above + (ws[2] - b),
+    ];
+    let terms = ax * ((sin * cphi).abs() + ws[0].abs())
+        + ay * ((sin * sphi).abs() + ws[1].abs())
+        + above
+        + (ws[2] - b).abs();
     let hl = h.iter().map(|x| x * x).sum::<f64>().sqrt().max(1e-30);
-    NORMAL_TOL + 2.0 * ax.max(ay) * dsin / hl
+    NORMAL_TOL * (terms / hl).max(1.0)
 }
 
 /// Whether a normal wm (f64) lies within rounding of the bounded cap's edge for w, where
@@ -949,4 +945,228 @@ fn dielectric_samples_match_rust_f32() {
         w.add(4, rel(o[1][1], s.eta), what);
     }
     w.check(&[0.0, 1.0, 1.0, 1.0, 0.0]);
+}
+
+// Beckmann. The WGSL evaluates in f32 what the Rust f32 path evaluates in f64 and rounds
+// (Λ, the samplers), so the bounds are those of f32 arithmetic on the formulas, through
+// each quantity's condition number, with Vulkan's allowance for exp (3 + 2|x| ulp).
+
+/// D's relative bound at wm: `TOL` plus the exponent e = ((x/αx)² + (y/αy)²)/z², which
+/// carries a few roundings (4ε e) and whose exponential Vulkan may take to (3 + 2e) ulp:
+/// (6 + 24e)ε, with a margin for the normalisation's products.
+fn beckmann_d_bound(wm: [f32; 3], alpha: [f32; 2]) -> f64 {
+    let (x, y, z) = (
+        wm[0] as f64 / alpha[0] as f64,
+        wm[1] as f64 / alpha[1] as f64,
+        wm[2] as f64,
+    );
+    let e = if z > 0.0 {
+        (x * x + y * y) / (z * z)
+    } else {
+        0.0
+    };
+    TOL + (8.0 + 24.0 * e) * EPS
+}
+
+/// cot θ̃ of w at the roughness (f64; +∞ at the normal).
+fn beckmann_cot(w: [f32; 3], alpha: [f32; 2]) -> f64 {
+    let (x, y) = (alpha[0] as f64 * w[0] as f64, alpha[1] as f64 * w[1] as f64);
+    (w[2] as f64).abs() / (x * x + y * y).sqrt()
+}
+
+/// Λ's relative bound at w: `TOL` plus a's rounding (2ε) times Λ's condition number in a
+/// (2a² + 1 + …) and e^{−a²}'s allowance (3 + 2a² ulp): 16ε(1 + 2a²).
+fn beckmann_lambda_bound(w: [f32; 3], alpha: [f32; 2]) -> f64 {
+    let a = beckmann_cot(w, alpha).min(1e3);
+    TOL + 16.0 * EPS * (1.0 + 2.0 * a * a)
+}
+
+/// |g − r|/|r| as `rel`, with differences below 1e-36 taken as 0: Λ past a ≈ 9 is
+/// subnormal, and a pdf within 2⁶ of the least normal f32 has a subnormal factor on the way
+/// (D, then times G1 c/z), which a device may flush to zero.
+fn rel_normal(g: f32, r: f32) -> f64 {
+    if (g as f64 - r as f64).abs() <= 1e-36 {
+        return 0.0;
+    }
+    rel(g, r)
+}
+
+#[test]
+fn beckmann_d_lambda_g1_g2_pdfs_match_rust_f32() {
+    use microsurface::Beckmann;
+    let mut els = Vec::new();
+    for &a in &ALPHAS {
+        for &wo in &directions() {
+            for &wm in &normals() {
+                els.push(El::new(a, wo, wm, [0.5; 2]));
+            }
+        }
+    }
+    let Some(out) = run("ms_k_beckmann_eval", &els) else {
+        return;
+    };
+    let names = [
+        "D / bound",
+        "Λ / bound",
+        "G1 / bound",
+        "G2 correlated / bound",
+        "G2 separable / bound",
+        "visible pdf / bound",
+        "D·cos pdf / bound",
+        "MsMicrofacet pdf / bound",
+    ];
+    let mut w = Worst::new(&names);
+    for (e, o) in els.iter().zip(&out) {
+        let m = Microfacet::<f32, Beckmann>::new(e.alpha[0], e.alpha[1]).unwrap();
+        let (wo, wm) = (e.wo, e.wi);
+        let r = [
+            m.d(wm),
+            m.lambda(wo),
+            m.g1(wo),
+            m.g2(wo, wm),
+            m.g2_separable(wo, wm),
+            m.pdf(wo, wm),
+            m.pdf_dcos(wm),
+            m.pdf(wo, wm),
+        ];
+        let g = [
+            o[0][0], o[0][1], o[0][2], o[0][3], o[1][0], o[1][1], o[1][2], o[1][3],
+        ];
+        // G1 = 1/(1 + Λ) and G2 take Λ's relative error times Λ/(1 + Λ) (≤ 1).
+        let (lo, li) = (m.lambda(wo) as f64, m.lambda(wm) as f64);
+        let (bo, bi) = (
+            beckmann_lambda_bound(wo, e.alpha),
+            beckmann_lambda_bound(wm, e.alpha),
+        );
+        let frac = |l: f64| if l.is_finite() { l / (1.0 + l) } else { 1.0 };
+        let g1 = TOL + bo * frac(lo);
+        let g2 = TOL + bo.max(bi) * frac(lo + li);
+        let d = beckmann_d_bound(wm, e.alpha);
+        let pdf = g1 + d + 8.0 * EPS * dot_cancellation(wo, wm);
+        let tol = [d, bo, g1, g2, 2.0 * g1 + TOL, pdf, d, pdf];
+        for k in 0..names.len() {
+            w.add(k, rel_normal(g[k], r[k]) / tol[k], || {
+                format!("{e:?}: gpu {} rust {} (bound {:e})", g[k], r[k], tol[k])
+            });
+        }
+    }
+    w.check(&[1.0; 8]);
+}
+
+/// The bound of a Beckmann visible normal's components at the element's uniforms, from the
+/// conditioning of the slope inversion, replayed in f64 at the slopes (x̃, ỹ) of the Rust f64
+/// sampler's normal: x̃ solves F = N(X) − u₀Z = 0, whose f32 evaluation rounds by a few ε
+/// times the magnitudes of its terms T (a's rounding moves F by no more), so x̃ moves by
+/// 32ε T/N′(x̃), N′ = (x̃ + a)e^{−x̃²}/√π, plus 8ε(1 + |x̃|) (the stopping rule and the
+/// tables' fit, 1e-7); ỹ by 8ε(1 + |ỹ|); at normal incidence x̃ is Gaussian as ỹ. Then the
+/// rotation and unstretch, p = αx(cos φ x̃ − sin φ ỹ), q = αy(sin φ x̃ + cos φ ỹ), move p and
+/// q by those plus 4ε of their terms, and the unit normal (p, q, 1)/L by (δp + δq)/L, plus
+/// `NORMAL_TOL` for the normalisation on both sides.
+fn beckmann_normal_bound(e: &El) -> f64 {
+    use microsurface::fast::beckmann::erfcx;
+    use microsurface::Beckmann;
+    let (ax, ay) = (e.alpha[0] as f64, e.alpha[1] as f64);
+    let w64 = e.wo.map(f64::from);
+    let u64 = [e.u[0] as f64, e.u[1] as f64];
+    let m = Microfacet::<f64, Beckmann>::new(ax, ay).unwrap();
+    let n = m.sample(w64, u64).wm;
+    let sign = if w64[2] < 0.0 { -1.0 } else { 1.0 };
+    let (sx, sy, c) = (sign * ax * w64[0], sign * ay * w64[1], sign * w64[2]);
+    let h = (sx * sx + sy * sy).sqrt();
+    let (cp, sp) = if h > 0.0 {
+        (sx / h, sy / h)
+    } else {
+        (1.0, 0.0)
+    };
+    let (p, q) = (n[0] / n[2], n[1] / n[2]);
+    let (px, qy) = (p / ax, q / ay);
+    let (x, y) = (cp * px + sp * qy, -sp * px + cp * qy);
+    let dy = 8.0 * EPS * (1.0 + y.abs());
+    let dx = if h > 0.0 {
+        let a = c / h;
+        let u = u64[0];
+        let ea = (-a * a).exp();
+        let erfc_a = erfcx(a) * ea;
+        let half_ea = 0.5 * ea / std::f64::consts::PI.sqrt();
+        let z = 0.5 * a * (2.0 - erfc_a) + half_ea;
+        let ex = (-x * x).exp();
+        let ec = erfcx(x.abs()) * ex;
+        let half_e = 0.5 * ex / std::f64::consts::PI.sqrt();
+        let t = if x <= 0.0 {
+            0.5 * a * (ec + erfc_a) + half_e + half_ea + u * z
+        } else {
+            (1.0 - u) * z + 0.5 * a * ec + half_e
+        };
+        let dn = (x + a) * ex / std::f64::consts::PI.sqrt();
+        (32.0 * EPS * t / dn.max(1e-300)).min(1e3) + 8.0 * EPS * (1.0 + x.abs())
+    } else {
+        8.0 * EPS * (1.0 + x.abs())
+    };
+    let dp = ax * (cp.abs() * dx + sp.abs() * dy + 4.0 * EPS * ((cp * x).abs() + (sp * y).abs()));
+    let dq = ay * (sp.abs() * dx + cp.abs() * dy + 4.0 * EPS * ((sp * x).abs() + (cp * y).abs()));
+    let l = (p * p + q * q + 1.0).sqrt();
+    NORMAL_TOL + (dp + dq) / l
+}
+
+#[test]
+fn beckmann_samplers_give_the_rust_f32_normals() {
+    use microsurface::Beckmann;
+    let mut els = Vec::new();
+    for &a in &ALPHAS {
+        for &wo in &directions() {
+            for &u in &uniforms() {
+                els.push(El::new(a, wo, [0.0, 0.0, 1.0], u));
+            }
+        }
+    }
+    let Some(out) = run("ms_k_beckmann_sample", &els) else {
+        return;
+    };
+    let names = [
+        "visible normal / bound",
+        "visible pdf at it / bound",
+        "D·cos normal / bound",
+        "D·cos pdf at it / bound",
+    ];
+    let mut w = Worst::new(&names);
+    for (e, o) in els.iter().zip(&out) {
+        let m = Microfacet::<f32, Beckmann>::new(e.alpha[0], e.alpha[1]).unwrap();
+        let what = |g: [f32; 4], r: [f32; 3], p: f32| {
+            move || format!("{e:?}: gpu {g:?} rust {r:?} (pdf {p})")
+        };
+        let s = m.sample(e.wo, e.u);
+        let g = o[0];
+        let gm = [g[0], g[1], g[2]];
+        // u₀ = 0 at cot θ̃ > 9: the root is the end X = −a, but N and N′ underflow over a
+        // whole interval of X before it (e^{−X²} below the least f32 past |X| = 9.3, the
+        // least f64 past 26.6), where F = −u₀Z = 0 to rounding: each iteration stops at a
+        // point of that interval (the Rust f32 sampler at X ≈ −11 for a = 41), a normal of
+        // density below 1e-37 either way. Not compared.
+        if !(e.u[0] == 0.0 && beckmann_cot(e.wo, e.alpha) > 9.0) {
+            w.add(
+                0,
+                vec_diff(gm, s.wm) / beckmann_normal_bound(e),
+                what(g, s.wm, s.pdf),
+            );
+        }
+        // The pdf at the GPU's own normal: the pdf arithmetic apart from the normal's.
+        let p = m.pdf(e.wo, gm);
+        let tol = TOL
+            + beckmann_d_bound(gm, e.alpha)
+            + beckmann_lambda_bound(e.wo, e.alpha)
+            + 8.0 * EPS * dot_cancellation(e.wo, gm);
+        w.add(1, rel_normal(g[3], p) / tol, what(g, s.wm, p));
+        // D·cos: r = √(−ln(1 − u₀)) from a series or log (a few ε), the azimuth as GGX's.
+        let s = m.sample_dcos(e.u);
+        let g = o[1];
+        let gm = [g[0], g[1], g[2]];
+        w.add(2, vec_diff(gm, s.wm) / NORMAL_TOL, what(g, s.wm, s.pdf));
+        let p = m.pdf_dcos(gm);
+        w.add(
+            3,
+            rel_normal(g[3], p) / beckmann_d_bound(gm, e.alpha),
+            what(g, s.wm, p),
+        );
+    }
+    w.check(&[1.0; 4]);
 }

@@ -101,10 +101,11 @@ fn ms_ggx_cap_normal(w: vec3<f32>, alpha: vec2<f32>, u: vec2<f32>, len: f32) -> 
     let y = alpha.y * w.y * inv;
     let z = w.z * inv;
     let cs = ms_cos_sin_turn(u.x);
-    // cz + z = (1 − u₁)(1 + z) formed without the cancellation (u₁ → 1).
+    // cz + z = (1 − u₁)(1 + z) formed without the cancellation (u₁ → 1); sin² = (1 − cz)
+    // (1 + cz) = u₁(above (1 + z) + x² + y²), a sum of positive terms (1 − cz² cancels at
+    // the poles, cz → ±1).
     let above = (1.0 - u.y) * (1.0 + z);
-    let cz = above - z;
-    let sin = sqrt(max(1.0 - cz * cz, 0.0));
+    let sin = sqrt(max(u.y * (above * (1.0 + z) + (x * x + y * y)), 0.0));
     let h = vec3<f32>(alpha.x * (sin * cs.x + x), alpha.y * (sin * cs.y + y), above);
     let n = 1.0 / sqrt(h.x * h.x + h.y * h.y + h.z * h.z);
     return h * n;
@@ -160,9 +161,16 @@ fn ms_ggx_sample_dcos(alpha: vec2<f32>, u: vec2<f32>) -> MsSample {
     return MsSample(wm, ms_ggx_d(wm, alpha) * wm.z);
 }
 
-// The bounded VNDF's stretched unit direction w' and the cap's lower bound −b for the unit
-// w (mirrored to w.z ≥ 0): (w'.x, w'.y, w'.z, b).
-fn ms_ggx_bounded_cap(w: vec3<f32>, alpha: vec2<f32>) -> vec4<f32> {
+// The bounded VNDF's cap for the unit w (mirrored to w.z ≥ 0): the stretched unit direction
+// w', the cap's lower bound −b, and w'.z − b = (1 − k) w'.z with 1 − k formed without the
+// cancellation of k → 1 (a small α).
+struct MsBoundedCap {
+    ws: vec3<f32>,
+    b: f32,
+    top: f32,
+}
+
+fn ms_ggx_bounded_cap(w: vec3<f32>, alpha: vec2<f32>) -> MsBoundedCap {
     let down = w.z < 0.0;
     var v = w;
     if down {
@@ -170,14 +178,17 @@ fn ms_ggx_bounded_cap(w: vec3<f32>, alpha: vec2<f32>) -> vec4<f32> {
     }
     let ws = ms_normalize(vec3<f32>(alpha.x * v.x, alpha.y * v.y, v.z));
     if down {
-        return vec4<f32>(ws, ws.z);
+        return MsBoundedCap(ws, ws.z, 0.0);
     }
     let a = min(min(alpha.x, alpha.y), 1.0);
     let s = 1.0 + sqrt(v.x * v.x + v.y * v.y);
     let a2 = a * a;
     let s2 = s * s;
-    let k = (1.0 - a2) * s2 / (s2 + a2 * v.z * v.z);
-    return vec4<f32>(ws, k * ws.z);
+    let den = s2 + a2 * v.z * v.z;
+    let k = (1.0 - a2) * s2 / den;
+    // 1 − k = a²(s² + w.z²)/(s² + a²w.z²).
+    let one_minus_k = a2 * (s2 + v.z * v.z) / den;
+    return MsBoundedCap(ws, k * ws.z, one_minus_k * ws.z);
 }
 
 // Bounded visible-normal sampling for reflection (Eto & Tokuyoshi 2023): the spherical cap
@@ -187,13 +198,16 @@ fn ms_ggx_bounded_cap(w: vec3<f32>, alpha: vec2<f32>) -> vec4<f32> {
 fn ms_ggx_sample_bounded(w_in: vec3<f32>, alpha: vec2<f32>, u: vec2<f32>) -> MsSample {
     let w = ms_unit(w_in);
     let cap = ms_ggx_bounded_cap(w, alpha);
-    let ws = cap.xyz;
-    let b = cap.w;
+    let ws = cap.ws;
+    let b = cap.b;
     let cs = ms_cos_sin_turn(u.x);
+    // The cap point's height z ∈ [−b, 1]: z + b = above, 1 − z = u₁(1 + b), 1 + z = above +
+    // (1 − b), 1 − b = (1 − w'.z) + (w'.z − b), 1 − w'.z = (w'.x² + w'.y²)/(1 + w'.z): sin²
+    // without the cancellation of 1 − z² at the poles (z → ±1).
     let above = (1.0 - u.y) * (1.0 + b);
-    let z = above - b;
-    let sin = sqrt(max((1.0 - z) * (1.0 + z), 0.0));
-    let m = vec3<f32>(sin * cs.x + ws.x, sin * cs.y + ws.y, above + (ws.z - b));
+    let one_minus_b = (ws.x * ws.x + ws.y * ws.y) / (1.0 + ws.z) + cap.top;
+    let sin = sqrt(max(u.y * (1.0 + b) * (above + one_minus_b), 0.0));
+    let m = vec3<f32>(sin * cs.x + ws.x, sin * cs.y + ws.y, above + cap.top);
     let wm = ms_facing(ms_normalize(vec3<f32>(alpha.x * m.x, alpha.y * m.y, max(m.z, 0.0))), w);
     return MsSample(wm, ms_ggx_pdf_bounded(w, wm, alpha));
 }
@@ -203,8 +217,8 @@ fn ms_ggx_sample_bounded(w_in: vec3<f32>, alpha: vec2<f32>, u: vec2<f32>) -> MsS
 fn ms_ggx_pdf_bounded(w_in: vec3<f32>, wm: vec3<f32>, alpha: vec2<f32>) -> f32 {
     let w = ms_unit(w_in);
     let cap = ms_ggx_bounded_cap(w, alpha);
-    let ws = cap.xyz;
-    let b = cap.w;
+    let ws = cap.ws;
+    let b = cap.b;
     let m = ms_normalize(vec3<f32>(wm.x / alpha.x, wm.y / alpha.y, wm.z));
     let d = ms_dot(m, ws);
     // The cap point: the reflection of w' about m'.

@@ -49,6 +49,42 @@ fn ms_k_ggx_eval(@builtin(global_invocation_id) id: vec3<u32>,
         ms_ggx_pdf_dcos(wm, a), ms_ggx_pdf_bounded(wo, wm, a));
 }
 
+// Beckmann: D(wm), Λ(wo), G1(wo), G2(wo, wm); separable G2, D_wo(wm), D(wm) cos θm, and
+// D_wo(wm) through MsMicrofacet (the run-time door).
+@compute @workgroup_size(64)
+fn ms_k_beckmann_eval(@builtin(global_invocation_id) id: vec3<u32>,
+    @builtin(num_workgroups) groups: vec3<u32>) {
+    let i = ms_k_index(id, groups);
+    if i == arrayLength(&ms_in) / MS_K_IN {
+        return;
+    }
+    let a = ms_in[i * MS_K_IN].xy;
+    let wo = ms_in[i * MS_K_IN + 1u].xyz;
+    let wm = ms_in[i * MS_K_IN + 2u].xyz;
+    ms_out[i * MS_K_OUT] = vec4<f32>(ms_beckmann_d(wm, a), ms_beckmann_lambda(wo, a),
+        ms_beckmann_g1(wo, a), ms_beckmann_g2(wo, wm, a));
+    ms_out[i * MS_K_OUT + 1u] = vec4<f32>(ms_beckmann_g2_separable(wo, wm, a),
+        ms_beckmann_pdf(wo, wm, a), ms_beckmann_pdf_dcos(wm, a),
+        ms_pdf(MsMicrofacet(MS_NDF_BECKMANN, a), wo, wm));
+}
+
+// Beckmann: the visible normal of wo and u with its pdf (through MsMicrofacet); the D·cos
+// normal of u with its pdf.
+@compute @workgroup_size(64)
+fn ms_k_beckmann_sample(@builtin(global_invocation_id) id: vec3<u32>,
+    @builtin(num_workgroups) groups: vec3<u32>) {
+    let i = ms_k_index(id, groups);
+    if i == arrayLength(&ms_in) / MS_K_IN {
+        return;
+    }
+    let r0 = ms_in[i * MS_K_IN];
+    let wo = ms_in[i * MS_K_IN + 1u].xyz;
+    let s = ms_sample(MsMicrofacet(MS_NDF_BECKMANN, r0.xy), wo, r0.zw);
+    let t = ms_beckmann_sample_dcos(r0.xy, r0.zw);
+    ms_out[i * MS_K_OUT] = vec4<f32>(s.wm, s.pdf);
+    ms_out[i * MS_K_OUT + 1u] = vec4<f32>(t.wm, t.pdf);
+}
+
 // The visible normal of wo and u with its pdf; the D·cos normal of u with its pdf.
 @compute @workgroup_size(64)
 fn ms_k_ggx_sample(@builtin(global_invocation_id) id: vec3<u32>,

@@ -9,11 +9,15 @@ struct MsMicrofacet {
 }
 
 const MS_NDF_GGX: u32 = 0u;
+const MS_NDF_BECKMANN: u32 = 1u;
 
 // D(wm); 0 below the horizon (and for an NDF this library does not have).
 fn ms_d(mf: MsMicrofacet, wm: vec3<f32>) -> f32 {
     if mf.ndf == MS_NDF_GGX {
         return ms_ggx_d(wm, mf.alpha);
+    }
+    if mf.ndf == MS_NDF_BECKMANN {
+        return ms_beckmann_d(wm, mf.alpha);
     }
     return 0.0;
 }
@@ -23,6 +27,9 @@ fn ms_lambda(mf: MsMicrofacet, w: vec3<f32>) -> f32 {
     if mf.ndf == MS_NDF_GGX {
         return ms_ggx_lambda(w, mf.alpha);
     }
+    if mf.ndf == MS_NDF_BECKMANN {
+        return ms_beckmann_lambda(w, mf.alpha);
+    }
     return 0.0;
 }
 
@@ -31,6 +38,9 @@ fn ms_g1(mf: MsMicrofacet, w: vec3<f32>) -> f32 {
     if mf.ndf == MS_NDF_GGX {
         return ms_ggx_g1(w, mf.alpha);
     }
+    if mf.ndf == MS_NDF_BECKMANN {
+        return ms_beckmann_g1(w, mf.alpha);
+    }
     return 0.0;
 }
 
@@ -38,6 +48,9 @@ fn ms_g1(mf: MsMicrofacet, w: vec3<f32>) -> f32 {
 fn ms_g2(mf: MsMicrofacet, wo: vec3<f32>, wi: vec3<f32>) -> f32 {
     if mf.ndf == MS_NDF_GGX {
         return ms_ggx_g2(wo, wi, mf.alpha);
+    }
+    if mf.ndf == MS_NDF_BECKMANN {
+        return ms_beckmann_g2(wo, wi, mf.alpha);
     }
     return 0.0;
 }
@@ -52,6 +65,9 @@ fn ms_pdf(mf: MsMicrofacet, w: vec3<f32>, wm: vec3<f32>) -> f32 {
     if mf.ndf == MS_NDF_GGX {
         return ms_ggx_pdf(w, wm, mf.alpha);
     }
+    if mf.ndf == MS_NDF_BECKMANN {
+        return ms_beckmann_pdf(w, wm, mf.alpha);
+    }
     return 0.0;
 }
 
@@ -60,6 +76,9 @@ fn ms_sample(mf: MsMicrofacet, w: vec3<f32>, u: vec2<f32>) -> MsSample {
     if mf.ndf == MS_NDF_GGX {
         return ms_ggx_sample(w, mf.alpha, u);
     }
+    if mf.ndf == MS_NDF_BECKMANN {
+        return ms_beckmann_sample(w, mf.alpha, u);
+    }
     return MsSample(vec3<f32>(0.0, 0.0, 1.0), 0.0);
 }
 
@@ -67,6 +86,9 @@ fn ms_sample(mf: MsMicrofacet, w: vec3<f32>, u: vec2<f32>) -> MsSample {
 fn ms_sample_dcos(mf: MsMicrofacet, u: vec2<f32>) -> MsSample {
     if mf.ndf == MS_NDF_GGX {
         return ms_ggx_sample_dcos(mf.alpha, u);
+    }
+    if mf.ndf == MS_NDF_BECKMANN {
+        return ms_beckmann_sample_dcos(mf.alpha, u);
     }
     return MsSample(vec3<f32>(0.0, 0.0, 1.0), 0.0);
 }

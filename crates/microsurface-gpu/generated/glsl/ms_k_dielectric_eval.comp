@@ -13,6 +13,11 @@ struct MsSample {
     vec3 wm;
     float pdf;
 };
+struct MsBoundedCap {
+    vec3 ws;
+    float b;
+    float top;
+};
 struct MsMicrofacet {
     uint ndf;
     vec2 alpha;
@@ -42,7 +47,20 @@ const uint MS_FRESNEL_DIELECTRIC = 1u;
 const uint MS_FRESNEL_CONDUCTOR = 2u;
 const uint MS_FRESNEL_SCHLICK = 3u;
 const uint MS_FRESNEL_F82_TINT = 4u;
+const uint MS_BK_SEGMENTS_LOG2_ = 2u;
+const int MS_BK_ERFCX_K0_ = -14;
+const int MS_BK_ERFCX_K1_ = 5;
+const int MS_BK_ERFC_RATIO_K0_ = -14;
+const int MS_BK_ERFC_RATIO_K1_ = 5;
+const int MS_BK_ERFINV_Q_K0_ = -25;
+const int MS_BK_ERFINV_Q_K1_ = 0;
+const int MS_BK_ERFINV_W_K0_ = 4;
+const int MS_BK_ERFINV_W_K1_ = 7;
+const float MS_BK_QUANTILE_EDGE = -27.200563;
+const float MS_FRAC_1_SQRT_PI = 0.5641896;
+const float MS_SQRT_PI = 1.7724539;
 const uint MS_NDF_GGX = 0u;
+const uint MS_NDF_BECKMANN = 1u;
 const uint MS_MASKING_CORRELATED = 0u;
 const uint MS_MASKING_SEPARABLE = 1u;
 const uint MS_MASKING_CORRELATED_BETA = 2u;
@@ -54,9 +72,11 @@ const uint MS_SAMPLE_TRANSMISSION = 4u;
 const uint MS_K_IN = 5u;
 const uint MS_K_OUT = 2u;
 
-layout(std430, binding = 0) readonly buffer type_6_block_0Compute { vec4 _group_0_binding_0_cs[]; };
+vec4 MS_BK_ERFC_RATIO[152] = vec4[152](vec4(0.9998783, -1.3520655e-5, 1.16372106e-10, 8.9372953e-14), vec4(5.4622973e-14, -1.831868e-13, -3.5083048e-14, 1.0746959e-13), vec4(0.9998513, -1.3520189e-5, 1.1636769e-10, 8.6985974e-14), vec4(5.395684e-14, -1.777467e-13, -3.463896e-14, 1.04360964e-13), vec4(0.9998242, -1.3519723e-5, 1.16361754e-10, 9.531265e-14), vec4(5.6621374e-14, -1.926237e-13, -3.6415315e-14, 1.1235457e-13), vec4(0.99979717, -1.3519258e-5, 1.1635656e-10, 9.2870156e-14), vec4(5.6621374e-14, -1.8840485e-13, -3.5971226e-14, 1.09690035e-13), vec4(0.99975663, -2.7037118e-5, 4.654685e-10, 8.06577e-14), vec4(5.6177285e-14, -1.761924e-13, -3.5527137e-14, 1.03472786e-13), vec4(0.9997026, -2.7035258e-5, 4.654293e-10, 8.9595e-14), vec4(5.973e-14, -1.9295676e-13, -3.8191672e-14, 1.1279866e-13), vec4(0.9996485, -2.7033395e-5, 4.653939e-10, 8.01581e-14), vec4(5.4178884e-14, -1.7652546e-13, -3.463896e-14, 1.03916875e-13), vec4(0.99959445, -2.7031534e-5, 4.6535684e-10, 8.01581e-14), vec4(5.306866e-14, -1.7652546e-13, -3.419487e-14, 1.03916875e-13), vec4(0.9995133, -5.4057484e-5, 1.8612636e-9, 3.8469228e-14), vec4(5.5067062e-14, -1.8152146e-13, -3.5527137e-14, 1.070255e-13), vec4(0.9994052, -5.405004e-5, 1.8609614e-9, 3.758105e-14), vec4(5.5067062e-14, -1.7952306e-13, -3.5527137e-14, 1.0613732e-13), vec4(0.99929714, -5.4042597e-5, 1.8606601e-9, 4.4131365e-14), vec4(5.4622973e-14, -1.9173552e-13, -3.5527137e-14, 1.1235457e-13), vec4(0.9991891, -5.4035154e-5, 1.8603591e-9, 4.052314e-14), vec4(5.1958438e-14, -1.8540725e-13, -3.330669e-14, 1.09245946e-13), vec4(0.99902695, -0.000108047985, 7.439686e-9, -3.1830094e-13), vec4(5.4622973e-14, -1.7141844e-13, -3.5083048e-14, 1.0125234e-13), vec4(0.9988109, -0.000108018234, 7.4372717e-9, -3.2190917e-13), vec4(5.6621374e-14, -1.6553425e-13, -3.6415315e-14, 9.8143715e-14), vec4(0.9985949, -0.00010798849, 7.43486e-9, -3.1646907e-13), vec4(5.4845017e-14, -1.7352786e-13, -3.5083048e-14, 1.0169643e-13), vec4(0.99837893, -0.00010795875, 7.4324493e-9, -3.1152858e-13), vec4(5.0404125e-14, -1.8207658e-13, -3.1974423e-14, 1.0658141e-13), vec4(0.99805516, -0.00021582833, 2.9715395e-8, -3.128331e-12), vec4(5.551115e-14, -1.7486013e-13, -3.5527137e-14, 1.03472786e-13), vec4(0.9976236, -0.00021570952, 2.969612e-8, -3.120837e-12), vec4(5.7065463e-14, -1.8207658e-13, -3.5971226e-14, 1.0658141e-13), vec4(0.9971923, -0.00021559077, 2.9676862e-8, -3.1179503e-12), vec4(5.1292304e-14, -1.8363089e-13, -3.2418512e-14, 1.0746959e-13), vec4(0.99676126, -0.0002154721, 2.9657613e-8, -3.1167846e-12), vec4(5.973e-14, -1.8129942e-13, -3.8191672e-14, 1.0613732e-13), vec4(0.9961151, -0.00043058846, 1.1851517e-7, -2.5533409e-11), vec4(5.4622973e-14, -1.8196555e-13, -3.1974423e-14, 1.070255e-13), vec4(0.9952544, -0.0004301147, 1.1836154e-7, -2.549444e-11), vec4(5.750955e-14, -1.8396396e-13, -3.375078e-14, 1.0791368e-13), vec4(0.9943946, -0.00042964157, 1.1820814e-7, -2.54613e-11), vec4(5.750955e-14, -1.771916e-13, -3.330669e-14, 1.04805054e-13), vec4(0.9935358, -0.00042916907, 1.1805497e-7, -2.5424052e-11), vec4(5.77316e-14, -1.7463808e-13, -3.419487e-14, 1.0258461e-13), vec4(0.99224937, -0.0008569228, 4.713026e-7, -2.0354624e-10), vec4(1.2922996e-13, -1.7463808e-13, -3.463896e-14, 1.0258461e-13), vec4(0.9905374, -0.00085504004, 4.700826e-7, -2.0295265e-10), vec4(1.298961e-13, -1.6986412e-13, -3.5527137e-14, 1.0036416e-13), vec4(0.9888292, -0.00085316214, 4.6886615e-7, -2.0235569e-10), vec4(1.2811974e-13, -1.7386093e-13, -3.463896e-14, 1.0214052e-13), vec4(0.98712474, -0.00085128914, 4.676533e-7, -2.0176294e-10), vec4(1.2834178e-13, -1.7452706e-13, -3.5083048e-14, 1.030287e-13), vec4(0.9845751, -0.0016969773, 1.8633626e-6, -1.6076107e-9), vec4(1.2352341e-12, -1.8551827e-13, -3.6859404e-14, 1.08801856e-13), vec4(0.9811886, -0.0016895431, 1.8537446e-6, -1.5982158e-9), vec4(1.2265744e-12, -1.8851587e-13, -3.5971226e-14, 1.09245946e-13), vec4(0.9778169, -0.0016821473, 1.8441829e-6, -1.5888955e-9), vec4(1.2161383e-12, -1.6819879e-13, -3.375078e-14, 9.8143715e-14), vec4(0.97445995, -0.0016747896, 1.8346768e-6, -1.5796264e-9), vec4(1.209477e-12, -1.6719959e-13, -3.463896e-14, 9.8587805e-14), vec4(0.9694521, -0.0033276482, 7.2820867e-6, -1.2527211e-8), vec4(1.8354651e-11, -1.9839685e-13, -3.1974423e-14, 1.03472786e-13), vec4(0.9628258, -0.0032986696, 7.2073603e-6, -1.238172e-8), vec4(1.8118618e-11, -1.9206858e-13, -3.1530334e-14, 9.8587805e-14), vec4(0.95625716, -0.003269988, 7.133501e-6, -1.2238096e-8), vec4(1.7883695e-11, -1.8784974e-13, -2.9309888e-14, 9.7699626e-14), vec4(0.94974566, -0.0032416002, 7.0604983e-6, -1.2096301e-8), vec4(1.765632e-11, -1.9806379e-13, -2.9753977e-14, 1.030287e-13), vec4(0.94008404, -0.006399124, 2.7810303e-5, -9.509669e-8), vec4(2.7642266e-10, -8.895107e-13, -3.1086245e-14, 1.04805054e-13), vec4(0.9273963, -0.006289015, 2.7246298e-5, -9.291387e-8), vec4(2.6941782e-10, -8.56093e-13, -3.1530334e-14, 9.636736e-14), vec4(0.9149265, -0.0061811362, 2.6695225e-5, -9.078632e-8), vec4(2.6260571e-10, -8.3555385e-13, -3.1974423e-14, 9.503509e-14), vec4(0.9026703, -0.0060754367, 2.6156755e-5, -8.871252e-8), vec4(2.5598057e-10, -8.2167606e-13, -3.1974423e-14, 9.9031894e-14), vec4(0.88467705, -0.011841728, 0.000101487945, -6.8559564e-7), vec4(3.9413006e-9, -2.022571e-11, 6.039613e-14, 9.8143715e-14), vec4(0.8613941, -0.0114438785, 9.746738e-5, -6.548533e-7), vec4(3.7461754e-9, -1.9134916e-11, 5.728751e-14, 9.148238e-14), vec4(0.838891, -0.011061749, 9.3626666e-5, -6.256297e-7), vec4(3.5615182e-9, -1.8111956e-11, 5.3290705e-14, 8.7041485e-14), vec4(0.8171371, -0.010694638, 8.995695e-5, -5.9784344e-7), vec4(3.3867338e-9, -1.7152058e-11, 4.7073456e-14, 8.615331e-14), vec4(0.78584695, -0.020341357, 0.00033901897, -4.4695416e-6), vec4(5.0268525e-8, -5.015497e-10, 4.514167e-12, 3.996803e-14), vec4(0.7464853, -0.019037347, 0.0003133691, -4.086745e-6), vec4(4.5516558e-8, -4.5011284e-10, 4.0136783e-12, 4.7073456e-14), vec4(0.7096321, -0.01783149, 0.000289906, -3.7399832e-6), vec4(4.1250228e-8, -4.043006e-10, 3.574474e-12, 4.6185278e-14), vec4(0.6750995, -0.016715458, 0.0002684246, -3.4255886e-6), vec4(3.7416495e-8, -3.634768e-10, 3.1872283e-12, 4.6185278e-14), vec4(0.6272794, -0.030387005, 0.0009580818, -2.4061048e-5), vec4(5.1801413e-7, -9.927543e-9, 1.7332358e-10, -2.7222669e-12), vec4(0.57015324, -0.026827596, 0.0008253934, -2.0287804e-5), vec4(4.283978e-7, -8.065489e-9, 1.3850876e-10, -2.1382895e-12), vec4(0.5196439, -0.023756387, 0.0007133347, -1.7162258e-5), vec4(3.5547052e-7, -6.5749886e-9, 1.1106582e-10, -1.677547e-12), vec4(0.47485265, -0.021098126, 0.000618392, -1.4564653e-5), vec4(2.9592425e-7, -5.377808e-9, 8.935852e-11, -1.3233858e-12), vec4(0.4167533, -0.035502225, 0.0020077599, -9.16237e-5), vec4(3.617964e-6, -1.2807482e-7, 4.1592605e-9, -1.2519785e-10), vec4(0.35310093, -0.028464397, 0.0015355214, -6.720277e-5), vec4(2.5549414e-6, -8.734229e-8, 2.74549e-9, -8.015033e-11), vec4(0.30181482, -0.023053482, 0.0011872437, -4.985952e-5), vec4(1.8258146e-6, -6.0294994e-8, 1.8349833e-9, -5.1961768e-11), vec4(0.26008537, -0.018848889, 0.00092748983, -3.7398404e-5), vec4(1.3196806e-6, -4.211374e-8, 1.24123e-9, -3.4098946e-11), vec4(0.21097384, -0.02833318, 0.0026085791, -0.00019815165), vec4(1.3240014e-5, -8.032937e-7, 4.5332847e-8, -2.383124e-9), vec4(0.16334534, -0.019909557, 0.0016825865, -0.00011829047), vec4(7.361291e-6, -4.1804822e-7, 2.216081e-8, -1.0987664e-9), vec4(0.12941593, -0.014392785, 0.0011207133, -7.312401e-5), vec4(4.2474107e-6, -2.2617557e-7, 1.1279408e-8, -5.2811067e-10), vec4(0.1045896, -0.010667653, 0.00076819374, -4.665181e-5), vec4(2.534995e-6, -1.2680964e-7, 5.958998e-9, -2.638087e-10), vec4(0.07841912, -0.014176364, 0.0018281857, -0.00020045321), vec4(1.9795682e-5, -1.8097585e-6, 1.5757479e-7, -1.2851965e-8), vec4(0.0560429, -0.008755298, 0.0009860945, -9.524624e-5), vec4(8.346028e-6, -6.8116896e-7, 5.3103143e-8, -3.906189e-9), vec4(0.04182938, -0.0057326877, 0.0005708639, -4.907507e-5), vec4(3.84914e-6, -2.8258418e-7, 1.986625e-8, -1.325575e-9), vec4(0.03230852, -0.0039342963, 0.00035016204, -2.7042239e-5), vec4(1.9139986e-6, -1.2730473e-7, 8.125588e-9, -4.946015e-10), vec4(0.023056017, -0.0047972575, 0.0007341793, -9.804619e-5), vec4(1.20590175e-5, -1.4004432e-6, 1.5913854e-7, -1.7034818e-8), vec4(0.015770199, -0.0027393384, 0.0003519189, -3.9650156e-5), vec4(4.1337757e-6, -4.0863492e-7, 3.944863e-8, -3.62363e-9), vec4(0.011437163, -0.0017017398, 0.00018792653, -1.8260866e-5), vec4(1.6470873e-6, -1.412674e-7, 1.1818231e-8, -9.471726e-10), vec4(0.00866178, -0.0011258711, 0.0001088732, -9.2847595e-6), vec4(7.365851e-7, -5.5677763e-8, 4.1018984e-9, -2.9088262e-10), vec4(0.006061911, -0.0013231621, 0.00021536356, -3.0982304e-5), vec4(4.154092e-6, -5.319391e-7, 6.779496e-8, -8.1705505e-9), vec4(0.0040820343, -0.0007332432, 9.839357e-5, -1.1690638e-5), vec4(1.2970188e-6, -1.3763658e-7, 1.44309e-8, -1.4465321e-9), vec4(0.002932701, -0.00044726077, 5.101198e-5, -5.157015e-6), vec4(4.873513e-7, -4.4093955e-8, 3.9244634e-9, -3.361419e-10), vec4(0.0022075695, -0.0002924102, 2.8986162e-5, -2.548597e-6), vec4(2.0962135e-7, -1.6517234e-8, 1.276658e-9, -9.536809e-11), vec4(0.00153612, -0.00033979642, 5.6287994e-5, -8.275684e-6), vec4(1.1385838e-6, -1.502121e-7, 1.9849313e-8, -2.4841724e-9), vec4(0.0010298727, -0.00018667341, 2.5351253e-5, -3.0571844e-6), vec4(3.4523006e-7, -3.7393693e-8, 4.0174672e-9, -4.1333592e-10), vec4(0.0007380098, -0.00011328932, 1.3033428e-5, -1.331858e-6), vec4(1.274904e-7, -1.170815e-8, 1.0604964e-9, -9.25777e-11), vec4(0.00055463216, -7.382818e-5, 7.366494e-6, -6.529916e-7), vec4(5.4233485e-8, -4.32196e-9, 3.384992e-10, -2.5654366e-11));
 
-layout(std430, binding = 1) buffer type_6_block_1Compute { vec4 _group_0_binding_1_cs[]; };
+layout(std430, binding = 0) readonly buffer type_10_block_0Compute { vec4 _group_0_binding_0_cs[]; };
+
+layout(std430, binding = 1) buffer type_10_block_1Compute { vec4 _group_0_binding_1_cs[]; };
 
 
 float ms_inf() {
@@ -66,25 +86,25 @@ float ms_inf() {
 }
 
 vec2 ms_cos_sin_turn(float v) {
-    float k_2 = roundEven((4.0 * v));
-    float r = (v - (0.25 * k_2));
-    float x = (MS_TAU * r);
-    float x2_ = (x * x);
-    float s_2 = (x * (1.0 + (x2_ * (-0.16666667 + (x2_ * (0.008333333 + (x2_ * (-0.0001984127 + (x2_ * 2.7557319e-6)))))))));
-    float c_6 = (1.0 + (x2_ * (-0.5 + (x2_ * (0.041666668 + (x2_ * (-0.0013888889 + (x2_ * (2.4801588e-5 + (x2_ * -2.755732e-7))))))))));
-    int q = (int(k_2) & 3);
+    float k_3 = roundEven((4.0 * v));
+    float r = (v - (0.25 * k_3));
+    float x_4 = (MS_TAU * r);
+    float x2_ = (x_4 * x_4);
+    float s_3 = (x_4 * (1.0 + (x2_ * (-0.16666667 + (x2_ * (0.008333333 + (x2_ * (-0.0001984127 + (x2_ * 2.7557319e-6)))))))));
+    float c_7 = (1.0 + (x2_ * (-0.5 + (x2_ * (0.041666668 + (x2_ * (-0.0013888889 + (x2_ * (2.4801588e-5 + (x2_ * -2.755732e-7))))))))));
+    int q = (int(k_3) & 3);
     if ((q == 0)) {
-        return vec2(c_6, s_2);
+        return vec2(c_7, s_3);
     } else {
         if ((q == 1)) {
-            return vec2(-(s_2), c_6);
+            return vec2(-(s_3), c_7);
         } else {
             if ((q == 2)) {
-                return vec2(-(c_6), -(s_2));
+                return vec2(-(c_7), -(s_3));
             }
         }
     }
-    return vec2(s_2, -(c_6));
+    return vec2(s_3, -(c_7));
 }
 
 vec3 ms_rescaled(vec3 a) {
@@ -159,9 +179,9 @@ vec3 ms_unit_normal(vec3 v_1) {
     if ((m_5 == 0.0)) {
         return vec3(0.0, 0.0, 1.0);
     }
-    vec3 s_3 = (v_1 / vec3(m_5));
-    float _e30 = ms_dot(s_3, s_3);
-    return (s_3 * (1.0 / sqrt(_e30)));
+    vec3 s_4 = (v_1 / vec3(m_5));
+    float _e30 = ms_dot(s_4, s_4);
+    return (s_4 * (1.0 / sqrt(_e30)));
 }
 
 vec3 ms_reflect(vec3 wo, vec3 n) {
@@ -174,11 +194,11 @@ bool ms_same_hemisphere(vec3 a_3, vec3 b_1) {
 }
 
 vec3 ms_half_vector_reflection(vec3 wo_1, vec3 wi) {
-    vec3 s_4 = (wo_1 + wi);
-    if (!((max(abs(s_4.x), max(abs(s_4.y), abs(s_4.z))) > 0.0))) {
+    vec3 s_5 = (wo_1 + wi);
+    if (!((max(abs(s_5.x), max(abs(s_5.y), abs(s_5.z))) > 0.0))) {
         return vec3(0.0);
     }
-    vec3 _e16 = ms_normalize(s_4);
+    vec3 _e16 = ms_normalize(s_5);
     if ((_e16.z < 0.0)) {
         return -(_e16);
     }
@@ -311,31 +331,31 @@ float ms_fresnel_dielectric(float cos_in, float eta_in_1) {
         eta_2 = (1.0 / _e9);
     }
     float _e12 = cos_i_1;
-    float c_7 = min(_e12, 1.0);
+    float c_8 = min(_e12, 1.0);
     float _e15 = eta_2;
     if ((_e15 == 1.0)) {
         return 0.0;
     }
-    if ((c_7 == 0.0)) {
+    if ((c_8 == 0.0)) {
         return 1.0;
     }
     float _e24 = eta_2;
     if ((_e24 > 1e18)) {
         float _e27 = eta_2;
         float e_1 = (1.0 / _e27);
-        float cos_t_1 = sqrt((((1.0 - e_1) * (1.0 + e_1)) + ((c_7 * e_1) * (c_7 * e_1))));
-        r_parl = ((c_7 - (e_1 * cos_t_1)) / (c_7 + (e_1 * cos_t_1)));
-        r_perp = (((e_1 * c_7) - cos_t_1) / ((e_1 * c_7) + cos_t_1));
+        float cos_t_1 = sqrt((((1.0 - e_1) * (1.0 + e_1)) + ((c_8 * e_1) * (c_8 * e_1))));
+        r_parl = ((c_8 - (e_1 * cos_t_1)) / (c_8 + (e_1 * cos_t_1)));
+        r_perp = (((e_1 * c_8) - cos_t_1) / ((e_1 * c_8) + cos_t_1));
     } else {
         float _e51 = eta_2;
         if ((_e51 > 1.0)) {
             float _e54 = eta_2;
             float _e57 = eta_2;
-            ect2_ = (((_e54 - 1.0) * (_e57 + 1.0)) + (c_7 * c_7));
+            ect2_ = (((_e54 - 1.0) * (_e57 + 1.0)) + (c_8 * c_8));
         } else {
             float _e63 = eta_2;
             float _e64 = eta_2;
-            ect2_ = ((_e63 * _e64) - ((1.0 - c_7) * (1.0 + c_7)));
+            ect2_ = ((_e63 * _e64) - ((1.0 - c_8) * (1.0 + c_8)));
         }
         float _e72 = ect2_;
         if ((_e72 <= 0.0)) {
@@ -345,9 +365,9 @@ float ms_fresnel_dielectric(float cos_in, float eta_in_1) {
         float ect = sqrt(_e76);
         float _e78 = eta_2;
         float _e79 = eta_2;
-        float e2c = ((_e78 * _e79) * c_7);
+        float e2c = ((_e78 * _e79) * c_8);
         r_parl = ((e2c - ect) / (e2c + ect));
-        r_perp = ((c_7 - ect) / (c_7 + ect));
+        r_perp = ((c_8 - ect) / (c_8 + ect));
     }
     float _e88 = r_parl;
     float _e89 = r_parl;
@@ -365,17 +385,17 @@ float ms_cnorm(vec2 a_5) {
 }
 
 float ms_cnorm_ratio(vec2 a_6, vec2 b_3) {
-    float s_5 = max(max(abs(a_6.x), abs(a_6.y)), max(abs(b_3.x), abs(b_3.y)));
-    if ((s_5 == 0.0)) {
+    float s_6 = max(max(abs(a_6.x), abs(a_6.y)), max(abs(b_3.x), abs(b_3.y)));
+    if ((s_6 == 0.0)) {
         return 0.0;
     }
-    if (!((s_5 <= 3.4028235e38))) {
+    if (!((s_6 <= 3.4028235e38))) {
         float _e19 = ms_cnorm(a_6);
         float _e20 = ms_cnorm(b_3);
         return (_e19 / _e20);
     }
-    float _e24 = ms_cnorm((a_6 / vec2(s_5)));
-    float _e27 = ms_cnorm((b_3 / vec2(s_5)));
+    float _e24 = ms_cnorm((a_6 / vec2(s_6)));
+    float _e27 = ms_cnorm((b_3 / vec2(s_6)));
     return (_e24 / _e27);
 }
 
@@ -475,8 +495,8 @@ float ms_fresnel_f82_tint(float cos_i_3, float f0_1, float h) {
     float mu = min(max(cos_i_3, 0.0), 1.0);
     float m_7 = (1.0 - mu);
     float m5_ = ((((m_7 * m_7) * m_7) * m_7) * m_7);
-    float a_9 = (((f0_1 + ((1.0 - f0_1) * 0.46266437)) * (1.0 - h)) / 0.05665278);
-    float r_4 = ((f0_1 + ((1.0 - f0_1) * m5_)) - (((a_9 * mu) * m5_) * m_7));
+    float a_12 = (((f0_1 + ((1.0 - f0_1) * 0.46266437)) * (1.0 - h)) / 0.05665278);
+    float r_4 = ((f0_1 + ((1.0 - f0_1) * m5_)) - (((a_12 * mu) * m5_) * m_7));
     return min(max(r_4, 0.0), 1.0);
 }
 
@@ -518,17 +538,17 @@ float ms_ggx_d(vec3 wm_2, vec2 alpha) {
     if (!((z_1 > 0.0))) {
         return 0.0;
     }
-    float x_1 = (wm_2.x / alpha.x);
+    float x_5 = (wm_2.x / alpha.x);
     float y = (wm_2.y / alpha.y);
-    float t_3 = (((x_1 * x_1) + (y * y)) + (z_1 * z_1));
+    float t_3 = (((x_5 * x_5) + (y * y)) + (z_1 * z_1));
     return (1.0 / ((((MS_PI * alpha.x) * alpha.y) * t_3) * t_3));
 }
 
 float ms_ggx_lambda(vec3 w_3, vec2 alpha_1) {
-    float x_2 = (alpha_1.x * w_3.x);
+    float x_6 = (alpha_1.x * w_3.x);
     float y_1 = (alpha_1.y * w_3.y);
     float z_2 = abs(w_3.z);
-    float t_4 = ((x_2 * x_2) + (y_1 * y_1));
+    float t_4 = ((x_6 * x_6) + (y_1 * y_1));
     float z2_ = (z_2 * z_2);
     float den = (2.0 * (z2_ + (z_2 * sqrt((z2_ + t_4)))));
     if (!((den > 0.0))) {
@@ -542,10 +562,10 @@ float ms_ggx_lambda(vec3 w_3, vec2 alpha_1) {
 }
 
 float ms_ggx_g1_(vec3 w_4, vec2 alpha_2) {
-    float x_3 = (alpha_2.x * w_4.x);
+    float x_7 = (alpha_2.x * w_4.x);
     float y_2 = (alpha_2.y * w_4.y);
     float z_3 = abs(w_4.z);
-    float den_1 = (z_3 + sqrt(((z_3 * z_3) + ((x_3 * x_3) + (y_2 * y_2)))));
+    float den_1 = (z_3 + sqrt(((z_3 * z_3) + ((x_7 * x_7) + (y_2 * y_2)))));
     if (!((den_1 > 0.0))) {
         return 0.0;
     }
@@ -604,14 +624,13 @@ float ms_ggx_pdf(vec3 w_5, vec3 wm_3, vec2 alpha_5) {
 
 vec3 ms_ggx_cap_normal(vec3 w_6, vec2 alpha_6, vec2 u, float len) {
     float inv = (1.0 / len);
-    float x_4 = ((alpha_6.x * w_6.x) * inv);
+    float x_8 = ((alpha_6.x * w_6.x) * inv);
     float y_3 = ((alpha_6.y * w_6.y) * inv);
     float z_5 = (w_6.z * inv);
     vec2 _e17 = ms_cos_sin_turn(u.x);
     float above = ((1.0 - u.y) * (1.0 + z_5));
-    float cz = (above - z_5);
-    float sin_ = sqrt(max((1.0 - (cz * cz)), 0.0));
-    vec3 h_1 = vec3((alpha_6.x * ((sin_ * _e17.x) + x_4)), (alpha_6.y * ((sin_ * _e17.y) + y_3)), above);
+    float sin_ = sqrt(max((u.y * ((above * (1.0 + z_5)) + ((x_8 * x_8) + (y_3 * y_3)))), 0.0));
+    vec3 h_1 = vec3((alpha_6.x * ((sin_ * _e17.x) + x_8)), (alpha_6.y * ((sin_ * _e17.y) + y_3)), above);
     float n_3 = (1.0 / sqrt((((h_1.x * h_1.x) + (h_1.y * h_1.y)) + (h_1.z * h_1.z))));
     return (h_1 * n_3);
 }
@@ -628,8 +647,8 @@ vec3 ms_ggx_sample_wm(vec3 w_in, vec2 alpha_7, vec2 u_1) {
     float _e12 = w_7.x;
     float _e16 = w_7.y;
     float _e19 = w_7.z;
-    vec3 s_6 = vec3((alpha_7.x * _e12), (alpha_7.y * _e16), _e19);
-    float n2_ = (((s_6.x * s_6.x) + (s_6.y * s_6.y)) + (s_6.z * s_6.z));
+    vec3 s_7 = vec3((alpha_7.x * _e12), (alpha_7.y * _e16), _e19);
+    float n2_ = (((s_7.x * s_7.x) + (s_7.y * s_7.y)) + (s_7.z * s_7.z));
     if ((n2_ >= 1e-24)) {
         local_8 = (n2_ <= 1e24);
     } else {
@@ -686,7 +705,7 @@ MsSample ms_ggx_sample_dcos(vec2 alpha_10, vec2 u_3) {
     return MsSample(_e21, (_e22 * _e21.z));
 }
 
-vec4 ms_ggx_bounded_cap(vec3 w_9, vec2 alpha_11) {
+MsBoundedCap ms_ggx_bounded_cap(vec3 w_9, vec2 alpha_11) {
     vec3 v_2 = vec3(0.0);
     bool down = (w_9.z < 0.0);
     v_2 = w_9;
@@ -698,31 +717,35 @@ vec4 ms_ggx_bounded_cap(vec3 w_9, vec2 alpha_11) {
     float _e16 = v_2.z;
     vec3 _e18 = ms_normalize(vec3((alpha_11.x * _e9), (alpha_11.y * _e13), _e16));
     if (down) {
-        return vec4(_e18, _e18.z);
+        return MsBoundedCap(_e18, _e18.z, 0.0);
     }
-    float a_10 = min(min(alpha_11.x, alpha_11.y), 1.0);
-    float _e27 = v_2.x;
-    float _e29 = v_2.x;
-    float _e32 = v_2.y;
-    float _e34 = v_2.y;
-    float s_7 = (1.0 + sqrt(((_e27 * _e29) + (_e32 * _e34))));
-    float a2_ = (a_10 * a_10);
-    float s2_ = (s_7 * s_7);
-    float _e46 = v_2.z;
-    float _e49 = v_2.z;
-    float k_3 = (((1.0 - a2_) * s2_) / (s2_ + ((a2_ * _e46) * _e49)));
-    return vec4(_e18, (k_3 * _e18.z));
+    float a_13 = min(min(alpha_11.x, alpha_11.y), 1.0);
+    float _e28 = v_2.x;
+    float _e30 = v_2.x;
+    float _e33 = v_2.y;
+    float _e35 = v_2.y;
+    float s_8 = (1.0 + sqrt(((_e28 * _e30) + (_e33 * _e35))));
+    float a2_ = (a_13 * a_13);
+    float s2_ = (s_8 * s_8);
+    float _e44 = v_2.z;
+    float _e47 = v_2.z;
+    float den_2 = (s2_ + ((a2_ * _e44) * _e47));
+    float k_4 = (((1.0 - a2_) * s2_) / den_2);
+    float _e55 = v_2.z;
+    float _e57 = v_2.z;
+    float one_minus_k = ((a2_ * (s2_ + (_e55 * _e57))) / den_2);
+    return MsBoundedCap(_e18, (k_4 * _e18.z), (one_minus_k * _e18.z));
 }
 
 float ms_ggx_pdf_bounded(vec3 w_in_1, vec3 wm_5, vec2 alpha_12) {
     vec3 _e3 = ms_unit(w_in_1);
-    vec4 _e4 = ms_ggx_bounded_cap(_e3, alpha_12);
-    vec3 ws = _e4.xyz;
-    float b_4 = _e4.w;
+    MsBoundedCap _e4 = ms_ggx_bounded_cap(_e3, alpha_12);
+    vec3 ws = _e4.ws;
+    float b_4 = _e4.b;
     vec3 _e15 = ms_normalize(vec3((wm_5.x / alpha_12.x), (wm_5.y / alpha_12.y), wm_5.z));
     float _e16 = ms_dot(_e15, ws);
-    float cz_1 = (((_e16 + _e16) * _e15.z) - ws.z);
-    if ((cz_1 < -(b_4))) {
+    float cz = (((_e16 + _e16) * _e15.z) - ws.z);
+    if ((cz < -(b_4))) {
         return 0.0;
     }
     float _e25 = ms_ggx_pdf(_e3, wm_5, alpha_12);
@@ -731,18 +754,18 @@ float ms_ggx_pdf_bounded(vec3 w_in_1, vec3 wm_5, vec2 alpha_12) {
 
 MsSample ms_ggx_sample_bounded(vec3 w_in_2, vec2 alpha_13, vec2 u_4) {
     vec3 _e3 = ms_unit(w_in_2);
-    vec4 _e4 = ms_ggx_bounded_cap(_e3, alpha_13);
-    vec3 ws_1 = _e4.xyz;
-    float b_5 = _e4.w;
+    MsBoundedCap _e4 = ms_ggx_bounded_cap(_e3, alpha_13);
+    vec3 ws_1 = _e4.ws;
+    float b_5 = _e4.b;
     vec2 _e8 = ms_cos_sin_turn(u_4.x);
     float above_1 = ((1.0 - u_4.y) * (1.0 + b_5));
-    float z_6 = (above_1 - b_5);
-    float sin_1 = sqrt(max(((1.0 - z_6) * (1.0 + z_6)), 0.0));
-    vec3 m_8 = vec3(((sin_1 * _e8.x) + ws_1.x), ((sin_1 * _e8.y) + ws_1.y), (above_1 + (ws_1.z - b_5)));
-    vec3 _e46 = ms_normalize(vec3((alpha_13.x * m_8.x), (alpha_13.y * m_8.y), max(m_8.z, 0.0)));
-    vec3 _e47 = ms_facing(_e46, _e3);
-    float _e48 = ms_ggx_pdf_bounded(_e3, _e47, alpha_13);
-    return MsSample(_e47, _e48);
+    float one_minus_b = ((((ws_1.x * ws_1.x) + (ws_1.y * ws_1.y)) / (1.0 + ws_1.z)) + _e4.top);
+    float sin_1 = sqrt(max(((u_4.y * (1.0 + b_5)) * (above_1 + one_minus_b)), 0.0));
+    vec3 m_8 = vec3(((sin_1 * _e8.x) + ws_1.x), ((sin_1 * _e8.y) + ws_1.y), (above_1 + _e4.top));
+    vec3 _e58 = ms_normalize(vec3((alpha_13.x * m_8.x), (alpha_13.y * m_8.y), max(m_8.z, 0.0)));
+    vec3 _e59 = ms_facing(_e58, _e3);
+    float _e60 = ms_ggx_pdf_bounded(_e3, _e59, alpha_13);
+    return MsSample(_e59, _e60);
 }
 
 float ms_ggx_pdf_bounded_reflection(vec3 wo_8, vec3 wi_8, vec2 alpha_14) {
@@ -752,72 +775,256 @@ float ms_ggx_pdf_bounded_reflection(vec3 wo_8, vec3 wi_8, vec2 alpha_14) {
         return 0.0;
     }
     float _e7 = ms_dot(wo_8, _e3);
-    float c_8 = abs(_e7);
-    if (!((c_8 > 0.0))) {
+    float c_9 = abs(_e7);
+    if (!((c_9 > 0.0))) {
         return 0.0;
     }
     float _e13 = ms_ggx_pdf_bounded(wo_8, _e3, alpha_14);
-    return (_e13 / (4.0 * c_8));
+    return (_e13 / (4.0 * c_9));
 }
 
-float ms_d(MsMicrofacet mf, vec3 wm_6) {
-    if ((mf.ndf == MS_NDF_GGX)) {
-        float _e6 = ms_ggx_d(wm_6, mf.alpha);
-        return _e6;
+vec2 ms_bk_segment(float x, int k0_, int k1_) {
+    uint bits_1 = floatBitsToUint(x);
+    uint rows = (uint((k1_ - k0_)) << MS_BK_SEGMENTS_LOG2_);
+    uint idx = min(((bits_1 >> (23u - MS_BK_SEGMENTS_LOG2_)) - (uint((127 + k0_)) << MS_BK_SEGMENTS_LOG2_)), (rows - 1u));
+    uint pos = ((bits_1 << (9u + MS_BK_SEGMENTS_LOG2_)) >> 9u);
+    return vec2(float(idx), (uintBitsToFloat((1073741824u | pos)) - 3.0));
+}
+
+float ms_bk_poly(vec4 lo, vec4 hi, float s_2) {
+    return ((((((((((((((hi.w * s_2) + hi.z) * s_2) + hi.y) * s_2) + hi.x) * s_2) + lo.w) * s_2) + lo.z) * s_2) + lo.y) * s_2) + lo.x);
+}
+
+float ms_bk_erfc_ratio(float a_9) {
+    if ((a_9 < 6.1035156e-5)) {
+        return (1.0 - (MS_SQRT_PI * a_9));
     }
-    return 0.0;
-}
-
-float ms_lambda(MsMicrofacet mf_1, vec3 w_10) {
-    if ((mf_1.ndf == MS_NDF_GGX)) {
-        float _e6 = ms_ggx_lambda(w_10, mf_1.alpha);
-        return _e6;
+    if ((a_9 >= 32.0)) {
+        float r_6 = (1.0 / (a_9 * a_9));
+        return (r_6 * (0.5 - (r_6 * (0.75 - (r_6 * (1.875 - (r_6 * (6.5625 - (r_6 * 29.53125)))))))));
     }
-    return 0.0;
+    vec2 _e28 = ms_bk_segment(a_9, MS_BK_ERFC_RATIO_K0_, MS_BK_ERFC_RATIO_K1_);
+    uint i_2 = (2u * uint(_e28.x));
+    vec4 _e35 = MS_BK_ERFC_RATIO[i_2];
+    vec4 _e40 = MS_BK_ERFC_RATIO[(i_2 + 1u)];
+    float _e42 = ms_bk_poly(_e35, _e40, _e28.y);
+    return _e42;
 }
 
-float ms_g1_(MsMicrofacet mf_2, vec3 w_11) {
-    if ((mf_2.ndf == MS_NDF_GGX)) {
-        float _e6 = ms_ggx_g1_(w_11, mf_2.alpha);
-        return _e6;
+float ms_bk_ln_1m(float xi) {
+    if ((xi > 0.5)) {
+        return log((1.0 - xi));
     }
-    return 0.0;
+    float t_6 = (-(xi) / (2.0 - xi));
+    float t2_ = (t_6 * t_6);
+    float p = (1.0 + (t2_ * (0.33333334 + (t2_ * (0.2 + (t2_ * (0.14285715 + (t2_ * (0.11111111 + (t2_ * (0.09090909 + (t2_ * (0.07692308 + (t2_ * 0.06666667))))))))))))));
+    return ((2.0 * t_6) * p);
 }
 
-float ms_g2_(MsMicrofacet mf_3, vec3 wo_9, vec3 wi_9) {
-    if ((mf_3.ndf == MS_NDF_GGX)) {
-        float _e7 = ms_ggx_g2_(wo_9, wi_9, mf_3.alpha);
-        return _e7;
+float ms_beckmann_d(vec3 wm_6, vec2 alpha_15) {
+    bool local_9 = false;
+    float z_6 = wm_6.z;
+    float r_7 = (1.0 / (alpha_15.x * alpha_15.y));
+    float x_9 = ((wm_6.x * alpha_15.y) * r_7);
+    float y_4 = ((wm_6.y * alpha_15.x) * r_7);
+    float z2_1 = (z_6 * z_6);
+    if ((z_6 > 0.0)) {
+        local_9 = (z2_1 > 0.0);
+    } else {
+        local_9 = false;
     }
-    return 0.0;
+    bool _e24 = local_9;
+    if (!(_e24)) {
+        return 0.0;
+    }
+    float e_2 = (((x_9 * x_9) + (y_4 * y_4)) / z2_1);
+    if ((e_2 <= 80.0)) {
+        return ((exp(-(e_2)) * r_7) / ((MS_PI * z2_1) * z2_1));
+    }
+    return exp((((log(r_7) - 1.14473) - (4.0 * log(z_6))) - e_2));
 }
 
-float ms_g2_separable(MsMicrofacet mf_4, vec3 wo_10, vec3 wi_10) {
-    float _e3 = ms_g1_(mf_4, wo_10);
-    float _e4 = ms_g1_(mf_4, wi_10);
+float ms_beckmann_lambda_cot(float a_10) {
+    if (!((a_10 > 0.0))) {
+        float _e4 = ms_inf();
+        return _e4;
+    }
+    if ((a_10 > 10.5)) {
+        return 0.0;
+    }
+    float _e13 = ms_bk_erfc_ratio(a_10);
+    return (((0.5 * exp((-(a_10) * a_10))) * _e13) / (MS_SQRT_PI * a_10));
+}
+
+float ms_beckmann_lambda(vec3 w_10, vec2 alpha_16) {
+    float x_10 = (alpha_16.x * w_10.x);
+    float y_5 = (alpha_16.y * w_10.y);
+    float s_9 = sqrt(((x_10 * x_10) + (y_5 * y_5)));
+    if (!((s_9 > 0.0))) {
+        return 0.0;
+    }
+    float _e19 = ms_beckmann_lambda_cot((abs(w_10.z) / s_9));
+    return _e19;
+}
+
+float ms_beckmann_g1_(vec3 w_11, vec2 alpha_17) {
+    if ((w_11.z == 0.0)) {
+        return 0.0;
+    }
+    float _e6 = ms_beckmann_lambda(w_11, alpha_17);
+    return (1.0 / (1.0 + _e6));
+}
+
+float ms_beckmann_g2_(vec3 wo_9, vec3 wi_9, vec2 alpha_18) {
+    bool local_10 = false;
+    if (!((wo_9.z == 0.0))) {
+        local_10 = (wi_9.z == 0.0);
+    } else {
+        local_10 = true;
+    }
+    bool _e13 = local_10;
+    if (_e13) {
+        return 0.0;
+    }
+    float _e15 = ms_beckmann_lambda(wo_9, alpha_18);
+    float _e16 = ms_beckmann_lambda(wi_9, alpha_18);
+    return (1.0 / (1.0 + (_e15 + _e16)));
+}
+
+float ms_beckmann_g2_separable(vec3 wo_10, vec3 wi_10, vec2 alpha_19) {
+    float _e3 = ms_beckmann_g1_(wo_10, alpha_19);
+    float _e4 = ms_beckmann_g1_(wi_10, alpha_19);
     return (_e3 * _e4);
 }
 
-float ms_pdf(MsMicrofacet mf_5, vec3 w_12, vec3 wm_7) {
-    if ((mf_5.ndf == MS_NDF_GGX)) {
-        float _e7 = ms_ggx_pdf(w_12, wm_7, mf_5.alpha);
-        return _e7;
+float ms_beckmann_pdf(vec3 w_12, vec3 wm_7, vec2 alpha_20) {
+    float c_1 = 0.0;
+    bool local_11 = false;
+    float z_7 = abs(w_12.z);
+    float _e5 = ms_dot(w_12, wm_7);
+    c_1 = _e5;
+    if ((w_12.z < 0.0)) {
+        float _e10 = c_1;
+        c_1 = -(_e10);
+    }
+    float _e12 = c_1;
+    if ((_e12 > 0.0)) {
+        local_11 = (z_7 > 0.0);
+    } else {
+        local_11 = false;
+    }
+    bool _e20 = local_11;
+    if (!(_e20)) {
+        return 0.0;
+    }
+    float _e23 = ms_beckmann_g1_(w_12, alpha_20);
+    float _e24 = c_1;
+    float _e26 = ms_beckmann_d(wm_7, alpha_20);
+    return (((_e23 * _e24) * _e26) / z_7);
+}
+
+float ms_beckmann_pdf_dcos(vec3 wm_8, vec2 alpha_21) {
+    if (!((wm_8.z > 0.0))) {
+        return 0.0;
+    }
+    float _e7 = ms_beckmann_d(wm_8, alpha_21);
+    return (_e7 * wm_8.z);
+}
+
+MsSample ms_beckmann_sample_dcos(vec2 alpha_22, vec2 u_6) {
+    vec3 v_3 = vec3(0.0);
+    vec2 _e3 = ms_cos_sin_turn(u_6.y);
+    if ((u_6.x >= 1.0)) {
+        v_3 = vec3((alpha_22.x * _e3.x), (alpha_22.y * _e3.y), 0.0);
+    } else {
+        float _e17 = ms_bk_ln_1m(u_6.x);
+        float r_8 = sqrt(-(_e17));
+        if ((r_8 > 1.0)) {
+            v_3 = vec3((alpha_22.x * _e3.x), (alpha_22.y * _e3.y), (1.0 / r_8));
+        } else {
+            v_3 = vec3(((alpha_22.x * r_8) * _e3.x), ((alpha_22.y * r_8) * _e3.y), 1.0);
+        }
+    }
+    vec3 _e41 = v_3;
+    vec3 _e42 = ms_unit_normal(_e41);
+    float _e43 = ms_beckmann_d(_e42, alpha_22);
+    return MsSample(_e42, (_e43 * _e42.z));
+}
+
+float ms_d(MsMicrofacet mf, vec3 wm_9) {
+    if ((mf.ndf == MS_NDF_GGX)) {
+        float _e6 = ms_ggx_d(wm_9, mf.alpha);
+        return _e6;
+    }
+    if ((mf.ndf == MS_NDF_BECKMANN)) {
+        float _e11 = ms_beckmann_d(wm_9, mf.alpha);
+        return _e11;
     }
     return 0.0;
 }
 
-MsSample ms_sample(MsMicrofacet mf_6, vec3 w_13, vec2 u_5) {
-    if ((mf_6.ndf == MS_NDF_GGX)) {
-        MsSample _e7 = ms_ggx_sample(w_13, mf_6.alpha, u_5);
-        return _e7;
+float ms_lambda(MsMicrofacet mf_1, vec3 w_15) {
+    if ((mf_1.ndf == MS_NDF_GGX)) {
+        float _e6 = ms_ggx_lambda(w_15, mf_1.alpha);
+        return _e6;
     }
-    return MsSample(vec3(0.0, 0.0, 1.0), 0.0);
+    if ((mf_1.ndf == MS_NDF_BECKMANN)) {
+        float _e11 = ms_beckmann_lambda(w_15, mf_1.alpha);
+        return _e11;
+    }
+    return 0.0;
 }
 
-MsSample ms_sample_dcos(MsMicrofacet mf_7, vec2 u_6) {
-    if ((mf_7.ndf == MS_NDF_GGX)) {
-        MsSample _e6 = ms_ggx_sample_dcos(mf_7.alpha, u_6);
+float ms_g1_(MsMicrofacet mf_2, vec3 w_16) {
+    if ((mf_2.ndf == MS_NDF_GGX)) {
+        float _e6 = ms_ggx_g1_(w_16, mf_2.alpha);
         return _e6;
+    }
+    if ((mf_2.ndf == MS_NDF_BECKMANN)) {
+        float _e11 = ms_beckmann_g1_(w_16, mf_2.alpha);
+        return _e11;
+    }
+    return 0.0;
+}
+
+float ms_g2_(MsMicrofacet mf_3, vec3 wo_11, vec3 wi_11) {
+    if ((mf_3.ndf == MS_NDF_GGX)) {
+        float _e7 = ms_ggx_g2_(wo_11, wi_11, mf_3.alpha);
+        return _e7;
+    }
+    if ((mf_3.ndf == MS_NDF_BECKMANN)) {
+        float _e12 = ms_beckmann_g2_(wo_11, wi_11, mf_3.alpha);
+        return _e12;
+    }
+    return 0.0;
+}
+
+float ms_g2_separable(MsMicrofacet mf_4, vec3 wo_12, vec3 wi_12) {
+    float _e3 = ms_g1_(mf_4, wo_12);
+    float _e4 = ms_g1_(mf_4, wi_12);
+    return (_e3 * _e4);
+}
+
+float ms_pdf(MsMicrofacet mf_5, vec3 w_17, vec3 wm_10) {
+    if ((mf_5.ndf == MS_NDF_GGX)) {
+        float _e7 = ms_ggx_pdf(w_17, wm_10, mf_5.alpha);
+        return _e7;
+    }
+    if ((mf_5.ndf == MS_NDF_BECKMANN)) {
+        float _e12 = ms_beckmann_pdf(w_17, wm_10, mf_5.alpha);
+        return _e12;
+    }
+    return 0.0;
+}
+
+MsSample ms_sample_dcos(MsMicrofacet mf_7, vec2 u_11) {
+    if ((mf_7.ndf == MS_NDF_GGX)) {
+        MsSample _e6 = ms_ggx_sample_dcos(mf_7.alpha, u_11);
+        return _e6;
+    }
+    if ((mf_7.ndf == MS_NDF_BECKMANN)) {
+        MsSample _e11 = ms_beckmann_sample_dcos(mf_7.alpha, u_11);
+        return _e11;
     }
     return MsSample(vec3(0.0, 0.0, 1.0), 0.0);
 }
@@ -830,409 +1037,270 @@ bool ms_on_horizon(float z) {
     return !((abs(z) >= 1e-18));
 }
 
-bool ms_usable(float v_3) {
-    bool local_9 = false;
-    if ((v_3 >= 1.1754944e-20)) {
-        local_9 = (v_3 <= 3.4028235e38);
+bool ms_usable(float v_4) {
+    bool local_14 = false;
+    if ((v_4 >= 1.1754944e-20)) {
+        local_14 = (v_4 <= 3.4028235e38);
     } else {
-        local_9 = false;
+        local_14 = false;
     }
-    bool _e8 = local_9;
+    bool _e8 = local_14;
     return _e8;
 }
 
-float ms_masking_g2_(MsMicrofacet mf_9, uint masking, vec3 wo_11, vec3 wi_11) {
+float ms_masking_g2_(MsMicrofacet mf_9, uint masking, vec3 wo_13, vec3 wi_13) {
     if ((masking == MS_MASKING_SEPARABLE)) {
-        float _e6 = ms_g2_separable(mf_9, wo_11, wi_11);
+        float _e6 = ms_g2_separable(mf_9, wo_13, wi_13);
         return _e6;
     }
-    float _e7 = ms_g2_(mf_9, wo_11, wi_11);
+    float _e7 = ms_g2_(mf_9, wo_13, wi_13);
     return _e7;
 }
 
-float ms_reflected(MsMicrofacet mf_10, uint masking_1, vec3 wo_12, vec3 wi_12, float d_wm) {
-    float _e5 = ms_masking_g2_(mf_10, masking_1, wo_12, wi_12);
-    return ((d_wm * _e5) / (4.0 * abs((wo_12.z * wi_12.z))));
+float ms_reflected(MsMicrofacet mf_10, uint masking_1, vec3 wo_14, vec3 wi_14, float d_wm) {
+    float _e5 = ms_masking_g2_(mf_10, masking_1, wo_14, wi_14);
+    return ((d_wm * _e5) / (4.0 * abs((wo_14.z * wi_14.z))));
 }
 
-vec3 ms_weighted(vec3 fr_1, float k_1) {
-    return mix((fr_1 * k_1), vec3(0.0), equal(fr_1, vec3(0.0)));
+vec3 ms_weighted(vec3 fr_1, float k_2) {
+    return mix((fr_1 * k_2), vec3(0.0), equal(fr_1, vec3(0.0)));
 }
 
-vec3 ms_conductor_lobe_normal(MsConductor c_1, vec3 wo_13, vec3 wi_13) {
-    bool local_10 = false;
-    bool local_11 = false;
-    bool local_12 = false;
-    bool _e3 = ms_same_hemisphere(wo_13, wi_13);
+vec3 ms_conductor_lobe_normal(MsConductor c_2, vec3 wo_15, vec3 wi_15) {
+    bool local_15 = false;
+    bool local_16 = false;
+    bool local_17 = false;
+    bool _e3 = ms_same_hemisphere(wo_15, wi_15);
     if (!(!(_e3))) {
-        bool _e9 = ms_on_horizon(wo_13.z);
-        local_10 = _e9;
+        bool _e9 = ms_on_horizon(wo_15.z);
+        local_15 = _e9;
     } else {
-        local_10 = true;
+        local_15 = true;
     }
-    bool _e11 = local_10;
+    bool _e11 = local_15;
     if (!(_e11)) {
-        bool _e16 = ms_on_horizon(wi_13.z);
-        local_11 = _e16;
+        bool _e16 = ms_on_horizon(wi_15.z);
+        local_16 = _e16;
     } else {
-        local_11 = true;
+        local_16 = true;
     }
-    bool _e18 = local_11;
+    bool _e18 = local_16;
     if (!(_e18)) {
-        bool _e23 = ms_effectively_smooth(c_1.mf);
-        local_12 = _e23;
+        bool _e23 = ms_effectively_smooth(c_2.mf);
+        local_17 = _e23;
     } else {
-        local_12 = true;
+        local_17 = true;
     }
-    bool _e25 = local_12;
+    bool _e25 = local_17;
     if (_e25) {
         return vec3(0.0);
     }
-    vec3 _e28 = ms_half_vector_reflection(wo_13, wi_13);
+    vec3 _e28 = ms_half_vector_reflection(wo_15, wi_15);
     return _e28;
 }
 
-vec3 ms_conductor_eval(MsConductor c_2, vec3 wo_14, vec3 wi_14) {
-    vec3 _e3 = ms_conductor_lobe_normal(c_2, wo_14, wi_14);
+vec3 ms_conductor_eval(MsConductor c_3, vec3 wo_16, vec3 wi_16) {
+    vec3 _e3 = ms_conductor_lobe_normal(c_3, wo_16, wi_16);
     bool _e4 = ms_half_vector_ok(_e3);
     if (!(_e4)) {
         return vec3(0.0);
     }
-    float _e9 = ms_dot(wo_14, _e3);
-    float _e11 = ms_dot(wi_14, _e3);
-    vec3 _e16 = ms_fresnel_eval(c_2.fresnel, (0.5 * (abs(_e9) + abs(_e11))));
-    float _e20 = ms_d(c_2.mf, _e3);
-    float _e21 = ms_reflected(c_2.mf, c_2.masking, wo_14, wi_14, _e20);
+    float _e9 = ms_dot(wo_16, _e3);
+    float _e11 = ms_dot(wi_16, _e3);
+    vec3 _e16 = ms_fresnel_eval(c_3.fresnel, (0.5 * (abs(_e9) + abs(_e11))));
+    float _e20 = ms_d(c_3.mf, _e3);
+    float _e21 = ms_reflected(c_3.mf, c_3.masking, wo_16, wi_16, _e20);
     vec3 _e22 = ms_weighted(_e16, _e21);
     return _e22;
 }
 
-float ms_conductor_pdf(MsConductor c_3, vec3 wo_15, vec3 wi_15) {
-    vec3 _e3 = ms_conductor_lobe_normal(c_3, wo_15, wi_15);
+float ms_conductor_pdf(MsConductor c_4, vec3 wo_17, vec3 wi_17) {
+    vec3 _e3 = ms_conductor_lobe_normal(c_4, wo_17, wi_17);
     bool _e4 = ms_half_vector_ok(_e3);
     if (!(_e4)) {
         return 0.0;
     }
-    float _e8 = ms_pdf(c_3.mf, wo_15, _e3);
-    float _e9 = ms_dot(wo_15, _e3);
+    float _e8 = ms_pdf(c_4.mf, wo_17, _e3);
+    float _e9 = ms_dot(wo_17, _e3);
     return (_e8 / (4.0 * abs(_e9)));
 }
 
-vec4 ms_conductor_eval_pdf(MsConductor c_4, vec3 wo_16, vec3 wi_16) {
-    vec3 _e3 = ms_conductor_lobe_normal(c_4, wo_16, wi_16);
+vec4 ms_conductor_eval_pdf(MsConductor c_5, vec3 wo_18, vec3 wi_18) {
+    vec3 _e3 = ms_conductor_lobe_normal(c_5, wo_18, wi_18);
     bool _e4 = ms_half_vector_ok(_e3);
     if (!(_e4)) {
         return vec4(0.0);
     }
-    float _e8 = ms_dot(wo_16, _e3);
+    float _e8 = ms_dot(wo_18, _e3);
     float co = abs(_e8);
-    float _e11 = ms_dot(wi_16, _e3);
-    vec3 _e16 = ms_fresnel_eval(c_4.fresnel, (0.5 * (co + abs(_e11))));
-    float _e20 = ms_d(c_4.mf, _e3);
-    float _e21 = ms_reflected(c_4.mf, c_4.masking, wo_16, wi_16, _e20);
+    float _e11 = ms_dot(wi_18, _e3);
+    vec3 _e16 = ms_fresnel_eval(c_5.fresnel, (0.5 * (co + abs(_e11))));
+    float _e20 = ms_d(c_5.mf, _e3);
+    float _e21 = ms_reflected(c_5.mf, c_5.masking, wo_18, wi_18, _e20);
     vec3 _e22 = ms_weighted(_e16, _e21);
-    float _e24 = ms_pdf(c_4.mf, wo_16, _e3);
+    float _e24 = ms_pdf(c_5.mf, wo_18, _e3);
     return vec4(_e22, (_e24 / (4.0 * co)));
 }
 
-MsBsdfSample ms_conductor_sample(MsConductor c_5, vec3 wo_17, float uc, vec2 u_7) {
-    bool local_13 = false;
-    MsBsdfSample none = MsBsdfSample(vec3(0.0), 0.0, vec3(0.0), 0u, 1.0);
-    bool _e13 = ms_on_horizon(wo_17.z);
-    if (_e13) {
-        return none;
-    }
-    bool _e15 = ms_effectively_smooth(c_5.mf);
-    if (_e15) {
-        vec3 wi_22 = vec3(-(wo_17.x), -(wo_17.y), wo_17.z);
-        float k_4 = (1.0 / abs(wi_22.z));
-        vec3 _e29 = ms_fresnel_eval(c_5.fresnel, abs(wo_17.z));
-        return MsBsdfSample(wi_22, 1.0, (_e29 * k_4), 3u, 1.0);
-    }
-    MsSample _e36 = ms_sample(c_5.mf, wo_17, u_7);
-    vec3 _e38 = ms_reflect(wo_17, _e36.wm);
-    bool _e39 = ms_same_hemisphere(wo_17, _e38);
-    if (!(!(_e39))) {
-        bool _e45 = ms_on_horizon(_e38.z);
-        local_13 = _e45;
-    } else {
-        local_13 = true;
-    }
-    bool _e47 = local_13;
-    if (_e47) {
-        return none;
-    }
-    float _e49 = ms_dot(wo_17, _e36.wm);
-    float co_1 = abs(_e49);
-    float pdf = (_e36.pdf / (4.0 * co_1));
-    bool _e55 = ms_usable(pdf);
-    if (!(_e55)) {
-        return none;
-    }
-    vec3 _e58 = ms_fresnel_eval(c_5.fresnel, co_1);
-    float _e61 = ms_d(c_5.mf, _e36.wm);
-    bool _e62 = ms_usable(_e61);
-    if (!(_e62)) {
-        return none;
-    }
-    float _e66 = ms_reflected(c_5.mf, c_5.masking, wo_17, _e38, _e61);
-    vec3 _e67 = ms_weighted(_e58, _e66);
-    if (!(all(lessThanEqual(_e67, vec3(3.4028235e38))))) {
-        return none;
-    }
-    return MsBsdfSample(_e38, pdf, _e67, MS_SAMPLE_VALID, 1.0);
-}
-
 bool ms_dielectric_smooth(MsDielectric d_1) {
-    bool local_14 = false;
+    bool local_19 = false;
     if (!((d_1.eta == 1.0))) {
         bool _e8 = ms_effectively_smooth(d_1.mf);
-        local_14 = _e8;
+        local_19 = _e8;
     } else {
-        local_14 = true;
+        local_19 = true;
     }
-    bool _e10 = local_14;
+    bool _e10 = local_19;
     return _e10;
 }
 
-float ms_dielectric_g2_(MsDielectric d_2, vec3 wo_18, vec3 wi_17) {
-    float _e5 = ms_masking_g2_(d_2.mf, d_2.masking, wo_18, wi_17);
+float ms_dielectric_g2_(MsDielectric d_2, vec3 wo_20, vec3 wi_19) {
+    float _e5 = ms_masking_g2_(d_2.mf, d_2.masking, wo_20, wi_19);
     return _e5;
 }
 
-vec4 ms_dielectric_half(MsDielectric d_3, vec3 wo_19, vec3 wi_18) {
-    bool local_15 = false;
-    vec3 wm_8 = vec3(0.0);
+vec4 ms_dielectric_half(MsDielectric d_3, vec3 wo_21, vec3 wi_20) {
+    bool local_20 = false;
+    vec3 wm_11 = vec3(0.0);
     float etap_4 = 1.0;
-    bool local_16 = false;
-    vec4 none_1 = vec4(0.0);
-    float co_2 = wo_19.z;
-    float ci_1 = wi_18.z;
-    bool _e7 = ms_on_horizon(co_2);
+    bool local_21 = false;
+    vec4 none = vec4(0.0);
+    float co_1 = wo_21.z;
+    float ci_1 = wi_20.z;
+    bool _e7 = ms_on_horizon(co_1);
     if (!(_e7)) {
         bool _e11 = ms_on_horizon(ci_1);
-        local_15 = _e11;
+        local_20 = _e11;
     } else {
-        local_15 = true;
+        local_20 = true;
     }
-    bool _e13 = local_15;
+    bool _e13 = local_20;
     if (_e13) {
-        return none_1;
+        return none;
     }
-    if (((co_2 * ci_1) > 0.0)) {
-        vec3 _e20 = ms_half_vector_reflection(wo_19, wi_18);
-        wm_8 = _e20;
+    if (((co_1 * ci_1) > 0.0)) {
+        vec3 _e20 = ms_half_vector_reflection(wo_21, wi_20);
+        wm_11 = _e20;
     } else {
-        vec4 _e22 = ms_half_vector_refraction(wo_19, wi_18, d_3.eta);
-        wm_8 = _e22.xyz;
+        vec4 _e22 = ms_half_vector_refraction(wo_21, wi_20, d_3.eta);
+        wm_11 = _e22.xyz;
         etap_4 = _e22.w;
     }
-    vec3 _e25 = wm_8;
+    vec3 _e25 = wm_11;
     bool _e26 = ms_half_vector_ok(_e25);
     if (!(_e26)) {
-        return none_1;
+        return none;
     }
-    vec3 _e28 = wm_8;
-    float _e29 = ms_dot(_e28, wi_18);
+    vec3 _e28 = wm_11;
+    float _e29 = ms_dot(_e28, wi_20);
     if (!(((_e29 * ci_1) < 0.0))) {
-        vec3 _e36 = wm_8;
-        float _e37 = ms_dot(_e36, wo_19);
-        local_16 = ((_e37 * co_2) < 0.0);
+        vec3 _e36 = wm_11;
+        float _e37 = ms_dot(_e36, wo_21);
+        local_21 = ((_e37 * co_1) < 0.0);
     } else {
-        local_16 = true;
+        local_21 = true;
     }
-    bool _e42 = local_16;
+    bool _e42 = local_21;
     if (_e42) {
-        return none_1;
+        return none;
     }
-    vec3 _e43 = wm_8;
+    vec3 _e43 = wm_11;
     float _e44 = etap_4;
     return vec4(_e43, _e44);
 }
 
-float ms_dielectric_f_transmission(MsDielectric d_4, vec3 wo_20, vec3 wi_19, vec3 wm_9, float d_wm_1, float etap_5, float t) {
-    float f = 0.0;
-    float _e7 = ms_dot(wi_19, wm_9);
-    float _e8 = ms_dot(wo_20, wm_9);
-    float _e9 = ms_refraction_denominator(wo_20, wi_19, wm_9, etap_5);
-    float _e10 = ms_dielectric_g2_(d_4, wo_20, wi_19);
-    float geometric = ((_e10 / abs((wi_19.z * wo_20.z))) * (abs((_e7 * _e8)) / (_e9 * _e9)));
-    f = ((d_wm_1 * t) * geometric);
+float ms_dielectric_f_transmission(MsDielectric d_4, vec3 wo_22, vec3 wi_21, vec3 wm_12, float d_wm_1, float etap_5, float t) {
+    float f_1 = 0.0;
+    float _e7 = ms_dot(wi_21, wm_12);
+    float _e8 = ms_dot(wo_22, wm_12);
+    float _e9 = ms_refraction_denominator(wo_22, wi_21, wm_12, etap_5);
+    float _e10 = ms_dielectric_g2_(d_4, wo_22, wi_21);
+    float geometric = ((_e10 / abs((wi_21.z * wo_22.z))) * (abs((_e7 * _e8)) / (_e9 * _e9)));
+    f_1 = ((d_wm_1 * t) * geometric);
     if ((d_4.transport == MS_TRANSPORT_RADIANCE)) {
-        float _e27 = f;
-        f = (_e27 / (etap_5 * etap_5));
+        float _e27 = f_1;
+        f_1 = (_e27 / (etap_5 * etap_5));
     }
-    float _e30 = f;
+    float _e30 = f_1;
     return _e30;
 }
 
-float ms_dielectric_eval(MsDielectric d_5, vec3 wo_21, vec3 wi_20) {
+float ms_dielectric_eval(MsDielectric d_5, vec3 wo_23, vec3 wi_22) {
     bool _e3 = ms_dielectric_smooth(d_5);
     if (_e3) {
         return 0.0;
     }
-    vec4 _e5 = ms_dielectric_half(d_5, wo_21, wi_20);
+    vec4 _e5 = ms_dielectric_half(d_5, wo_23, wi_22);
     if ((_e5.w == 0.0)) {
         return 0.0;
     }
-    vec3 wm_10 = _e5.xyz;
-    float _e11 = ms_dot(wo_21, wm_10);
+    vec3 wm_13 = _e5.xyz;
+    float _e11 = ms_dot(wo_23, wm_13);
     float _e13 = ms_fresnel_dielectric(_e11, d_5.eta);
-    float _e15 = ms_d(d_5.mf, wm_10);
-    if (((wo_21.z * wi_20.z) > 0.0)) {
-        float _e23 = ms_reflected(d_5.mf, d_5.masking, wo_21, wi_20, _e15);
+    float _e15 = ms_d(d_5.mf, wm_13);
+    if (((wo_23.z * wi_22.z) > 0.0)) {
+        float _e23 = ms_reflected(d_5.mf, d_5.masking, wo_23, wi_22, _e15);
         return (_e13 * _e23);
     }
-    float _e28 = ms_dielectric_f_transmission(d_5, wo_21, wi_20, wm_10, _e15, _e5.w, (1.0 - _e13));
+    float _e28 = ms_dielectric_f_transmission(d_5, wo_23, wi_22, wm_13, _e15, _e5.w, (1.0 - _e13));
     return _e28;
 }
 
-float ms_dielectric_pdf(MsDielectric d_6, vec3 wo_22, vec3 wi_21) {
+float ms_dielectric_pdf(MsDielectric d_6, vec3 wo_24, vec3 wi_23) {
     bool _e3 = ms_dielectric_smooth(d_6);
     if (_e3) {
         return 0.0;
     }
-    vec4 _e5 = ms_dielectric_half(d_6, wo_22, wi_21);
+    vec4 _e5 = ms_dielectric_half(d_6, wo_24, wi_23);
     if ((_e5.w == 0.0)) {
         return 0.0;
     }
-    vec3 wm_11 = _e5.xyz;
-    float _e11 = ms_dot(wo_22, wm_11);
+    vec3 wm_14 = _e5.xyz;
+    float _e11 = ms_dot(wo_24, wm_14);
     float _e13 = ms_fresnel_dielectric(_e11, d_6.eta);
-    float _e15 = ms_pdf(d_6.mf, wo_22, wm_11);
-    if (((wo_22.z * wi_21.z) > 0.0)) {
-        float _e22 = ms_dot(wo_22, wm_11);
+    float _e15 = ms_pdf(d_6.mf, wo_24, wm_14);
+    if (((wo_24.z * wi_23.z) > 0.0)) {
+        float _e22 = ms_dot(wo_24, wm_14);
         return ((_e15 * _e13) / (4.0 * abs(_e22)));
     }
-    float _e31 = ms_jacobian_refraction(wo_22, wi_21, wm_11, _e5.w);
+    float _e31 = ms_jacobian_refraction(wo_24, wi_23, wm_14, _e5.w);
     return ((_e15 * (1.0 - _e13)) * _e31);
 }
 
-MsBsdfSample ms_dielectric_sample_smooth(MsDielectric d_7, vec3 wo_23, float uc_1) {
-    float f_1 = 0.0;
-    float _e5 = ms_fresnel_dielectric(wo_23.z, d_7.eta);
+MsBsdfSample ms_dielectric_sample_smooth(MsDielectric d_7, vec3 wo_25, float uc_1) {
+    float f_2 = 0.0;
+    float _e5 = ms_fresnel_dielectric(wo_25.z, d_7.eta);
     if ((uc_1 < _e5)) {
-        vec3 wi_23 = vec3(-(wo_23.x), -(wo_23.y), wo_23.z);
-        return MsBsdfSample(wi_23, _e5, vec3((_e5 / abs(wi_23.z))), 3u, 1.0);
+        vec3 wi_24 = vec3(-(wo_25.x), -(wo_25.y), wo_25.z);
+        return MsBsdfSample(wi_24, _e5, vec3((_e5 / abs(wi_24.z))), 3u, 1.0);
     }
-    MsBsdfSample none_2 = MsBsdfSample(vec3(0.0), 0.0, vec3(0.0), 0u, 1.0);
-    vec4 _e33 = ms_refract(wo_23, vec3(0.0, 0.0, 1.0), d_7.eta);
+    MsBsdfSample none_1 = MsBsdfSample(vec3(0.0), 0.0, vec3(0.0), 0u, 1.0);
+    vec4 _e33 = ms_refract(wo_25, vec3(0.0, 0.0, 1.0), d_7.eta);
     if ((_e33.w == 0.0)) {
-        return none_2;
+        return none_1;
     }
-    vec3 wi_24 = _e33.xyz;
-    bool _e39 = ms_on_horizon(wi_24.z);
+    vec3 wi_25 = _e33.xyz;
+    bool _e39 = ms_on_horizon(wi_25.z);
     if (_e39) {
-        return none_2;
+        return none_1;
     }
-    float t_6 = (1.0 - _e5);
-    f_1 = (t_6 / abs(wi_24.z));
+    float t_7 = (1.0 - _e5);
+    f_2 = (t_7 / abs(wi_25.z));
     if ((d_7.transport == MS_TRANSPORT_RADIANCE)) {
-        float _e49 = f_1;
-        f_1 = (_e49 / (_e33.w * _e33.w));
+        float _e49 = f_2;
+        f_2 = (_e49 / (_e33.w * _e33.w));
     }
-    float _e54 = f_1;
-    return MsBsdfSample(wi_24, t_6, vec3(_e54), 7u, _e33.w);
+    float _e54 = f_2;
+    return MsBsdfSample(wi_25, t_7, vec3(_e54), 7u, _e33.w);
 }
 
-MsBsdfSample ms_dielectric_sample(MsDielectric d_8, vec3 wo_24, float uc_2, vec2 u_8) {
-    bool local_17 = false;
-    bool local_18 = false;
-    bool local_19 = false;
-    bool local_20 = false;
-    MsBsdfSample none_3 = MsBsdfSample(vec3(0.0), 0.0, vec3(0.0), 0u, 1.0);
-    bool _e13 = ms_on_horizon(wo_24.z);
-    if (_e13) {
-        return none_3;
-    }
-    bool _e14 = ms_dielectric_smooth(d_8);
-    if (_e14) {
-        MsBsdfSample _e15 = ms_dielectric_sample_smooth(d_8, wo_24, uc_2);
-        return _e15;
-    }
-    MsSample _e17 = ms_sample(d_8.mf, wo_24, u_8);
-    vec3 wm_12 = _e17.wm;
-    float _e19 = ms_dot(wo_24, wm_12);
-    float _e21 = ms_fresnel_dielectric(_e19, d_8.eta);
-    if ((uc_2 < _e21)) {
-        vec3 _e23 = ms_reflect(wo_24, wm_12);
-        bool _e24 = ms_same_hemisphere(wo_24, _e23);
-        if (!(!(_e24))) {
-            bool _e30 = ms_on_horizon(_e23.z);
-            local_17 = _e30;
-        } else {
-            local_17 = true;
-        }
-        bool _e32 = local_17;
-        if (_e32) {
-            return none_3;
-        }
-        float _e34 = ms_d(d_8.mf, wm_12);
-        bool _e35 = ms_usable(_e34);
-        if (!(_e35)) {
-            return none_3;
-        }
-        float _e39 = ms_reflected(d_8.mf, d_8.masking, wo_24, _e23, _e34);
-        float f_2 = (_e21 * _e39);
-        float pdf_1 = ((_e17.pdf * _e21) / (4.0 * abs(_e19)));
-        bool _e47 = ms_usable(pdf_1);
-        if (!(!(_e47))) {
-            local_18 = !((f_2 <= 3.4028235e38));
-        } else {
-            local_18 = true;
-        }
-        bool _e56 = local_18;
-        if (_e56) {
-            return none_3;
-        }
-        return MsBsdfSample(_e23, pdf_1, vec3(f_2), MS_SAMPLE_VALID, 1.0);
-    }
-    vec4 _e62 = ms_refract(wo_24, wm_12, d_8.eta);
-    if ((_e62.w == 0.0)) {
-        return none_3;
-    }
-    vec3 wi_25 = _e62.xyz;
-    float etap_6 = _e62.w;
-    bool _e68 = ms_same_hemisphere(wo_24, wi_25);
-    if (!(_e68)) {
-        bool _e73 = ms_on_horizon(wi_25.z);
-        local_19 = _e73;
-    } else {
-        local_19 = true;
-    }
-    bool _e75 = local_19;
-    if (_e75) {
-        return none_3;
-    }
-    float t_7 = (1.0 - _e21);
-    float _e80 = ms_jacobian_refraction(wo_24, wi_25, wm_12, etap_6);
-    float pdf_2 = ((_e17.pdf * t_7) * _e80);
-    float _e83 = ms_d(d_8.mf, wm_12);
-    bool _e84 = ms_usable(_e83);
-    if (!(_e84)) {
-        return none_3;
-    }
-    float _e86 = ms_dielectric_f_transmission(d_8, wo_24, wi_25, wm_12, _e83, etap_6, t_7);
-    bool _e87 = ms_usable(pdf_2);
-    if (!(!(_e87))) {
-        local_20 = !((_e86 <= 3.4028235e38));
-    } else {
-        local_20 = true;
-    }
-    bool _e96 = local_20;
-    if (_e96) {
-        return none_3;
-    }
-    return MsBsdfSample(wi_25, pdf_2, vec3(_e86), 5u, etap_6);
-}
-
-uint ms_k_index(uvec3 id_8, uvec3 groups_8) {
-    uint i_2 = (id_8.x + ((id_8.y * groups_8.x) * 64u));
+uint ms_k_index(uvec3 id_10, uvec3 groups_10) {
+    uint i_3 = (id_10.x + ((id_10.y * groups_10.x) * 64u));
     uint n_4 = (uint(_group_0_binding_0_cs.length()) / MS_K_IN);
-    if ((i_2 >= n_4)) {
+    if ((i_3 >= n_4)) {
         return n_4;
     }
-    return i_2;
+    return i_3;
 }
 
 MsConductor ms_k_conductor(uint i) {
@@ -1253,19 +1321,19 @@ MsDielectric ms_k_dielectric(uint i_1) {
 }
 
 void main() {
-    uvec3 id_6 = gl_GlobalInvocationID;
-    uvec3 groups_6 = gl_NumWorkGroups;
-    uint _e2 = ms_k_index(id_6, groups_6);
+    uvec3 id_8 = gl_GlobalInvocationID;
+    uvec3 groups_8 = gl_NumWorkGroups;
+    uint _e2 = ms_k_index(id_8, groups_8);
     if ((_e2 == (uint(_group_0_binding_0_cs.length()) / MS_K_IN))) {
         return;
     }
     MsDielectric _e8 = ms_k_dielectric(_e2);
     vec4 _e15 = _group_0_binding_0_cs[((_e2 * MS_K_IN) + 1u)];
-    vec3 wo_25 = _e15.xyz;
+    vec3 wo_27 = _e15.xyz;
     vec4 _e23 = _group_0_binding_0_cs[((_e2 * MS_K_IN) + 2u)];
     vec3 wi_26 = _e23.xyz;
-    float _e29 = ms_dielectric_eval(_e8, wo_25, wi_26);
-    float _e30 = ms_dielectric_pdf(_e8, wo_25, wi_26);
+    float _e29 = ms_dielectric_eval(_e8, wo_27, wi_26);
+    float _e30 = ms_dielectric_pdf(_e8, wo_27, wi_26);
     _group_0_binding_1_cs[(_e2 * MS_K_OUT)] = vec4(_e29, _e30, 0.0, 0.0);
     _group_0_binding_1_cs[((_e2 * MS_K_OUT) + 1u)] = vec4(0.0);
     return;

@@ -13,6 +13,11 @@ struct MsSample {
     vec3 wm;
     float pdf;
 };
+struct MsBoundedCap {
+    vec3 ws;
+    float b;
+    float top;
+};
 struct MsMicrofacet {
     uint ndf;
     vec2 alpha;
@@ -42,7 +47,20 @@ const uint MS_FRESNEL_DIELECTRIC = 1u;
 const uint MS_FRESNEL_CONDUCTOR = 2u;
 const uint MS_FRESNEL_SCHLICK = 3u;
 const uint MS_FRESNEL_F82_TINT = 4u;
+const uint MS_BK_SEGMENTS_LOG2_ = 2u;
+const int MS_BK_ERFCX_K0_ = -14;
+const int MS_BK_ERFCX_K1_ = 5;
+const int MS_BK_ERFC_RATIO_K0_ = -14;
+const int MS_BK_ERFC_RATIO_K1_ = 5;
+const int MS_BK_ERFINV_Q_K0_ = -25;
+const int MS_BK_ERFINV_Q_K1_ = 0;
+const int MS_BK_ERFINV_W_K0_ = 4;
+const int MS_BK_ERFINV_W_K1_ = 7;
+const float MS_BK_QUANTILE_EDGE = -27.200563;
+const float MS_FRAC_1_SQRT_PI = 0.5641896;
+const float MS_SQRT_PI = 1.7724539;
 const uint MS_NDF_GGX = 0u;
+const uint MS_NDF_BECKMANN = 1u;
 const uint MS_MASKING_CORRELATED = 0u;
 const uint MS_MASKING_SEPARABLE = 1u;
 const uint MS_MASKING_CORRELATED_BETA = 2u;
@@ -54,9 +72,9 @@ const uint MS_SAMPLE_TRANSMISSION = 4u;
 const uint MS_K_IN = 5u;
 const uint MS_K_OUT = 2u;
 
-layout(std430, binding = 0) readonly buffer type_6_block_0Compute { vec4 _group_0_binding_0_cs[]; };
+layout(std430, binding = 0) readonly buffer type_10_block_0Compute { vec4 _group_0_binding_0_cs[]; };
 
-layout(std430, binding = 1) buffer type_6_block_1Compute { vec4 _group_0_binding_1_cs[]; };
+layout(std430, binding = 1) buffer type_10_block_1Compute { vec4 _group_0_binding_1_cs[]; };
 
 
 float ms_inf() {
@@ -66,25 +84,25 @@ float ms_inf() {
 }
 
 vec2 ms_cos_sin_turn(float v) {
-    float k_2 = roundEven((4.0 * v));
-    float r = (v - (0.25 * k_2));
-    float x = (MS_TAU * r);
-    float x2_ = (x * x);
-    float s_2 = (x * (1.0 + (x2_ * (-0.16666667 + (x2_ * (0.008333333 + (x2_ * (-0.0001984127 + (x2_ * 2.7557319e-6)))))))));
-    float c_6 = (1.0 + (x2_ * (-0.5 + (x2_ * (0.041666668 + (x2_ * (-0.0013888889 + (x2_ * (2.4801588e-5 + (x2_ * -2.755732e-7))))))))));
-    int q = (int(k_2) & 3);
+    float k_3 = roundEven((4.0 * v));
+    float r = (v - (0.25 * k_3));
+    float x_4 = (MS_TAU * r);
+    float x2_ = (x_4 * x_4);
+    float s_3 = (x_4 * (1.0 + (x2_ * (-0.16666667 + (x2_ * (0.008333333 + (x2_ * (-0.0001984127 + (x2_ * 2.7557319e-6)))))))));
+    float c_7 = (1.0 + (x2_ * (-0.5 + (x2_ * (0.041666668 + (x2_ * (-0.0013888889 + (x2_ * (2.4801588e-5 + (x2_ * -2.755732e-7))))))))));
+    int q = (int(k_3) & 3);
     if ((q == 0)) {
-        return vec2(c_6, s_2);
+        return vec2(c_7, s_3);
     } else {
         if ((q == 1)) {
-            return vec2(-(s_2), c_6);
+            return vec2(-(s_3), c_7);
         } else {
             if ((q == 2)) {
-                return vec2(-(c_6), -(s_2));
+                return vec2(-(c_7), -(s_3));
             }
         }
     }
-    return vec2(s_2, -(c_6));
+    return vec2(s_3, -(c_7));
 }
 
 vec3 ms_rescaled(vec3 a) {
@@ -159,9 +177,9 @@ vec3 ms_unit_normal(vec3 v_1) {
     if ((m_5 == 0.0)) {
         return vec3(0.0, 0.0, 1.0);
     }
-    vec3 s_3 = (v_1 / vec3(m_5));
-    float _e30 = ms_dot(s_3, s_3);
-    return (s_3 * (1.0 / sqrt(_e30)));
+    vec3 s_4 = (v_1 / vec3(m_5));
+    float _e30 = ms_dot(s_4, s_4);
+    return (s_4 * (1.0 / sqrt(_e30)));
 }
 
 vec3 ms_reflect(vec3 wo, vec3 n) {
@@ -174,11 +192,11 @@ bool ms_same_hemisphere(vec3 a_3, vec3 b_1) {
 }
 
 vec3 ms_half_vector_reflection(vec3 wo_1, vec3 wi) {
-    vec3 s_4 = (wo_1 + wi);
-    if (!((max(abs(s_4.x), max(abs(s_4.y), abs(s_4.z))) > 0.0))) {
+    vec3 s_5 = (wo_1 + wi);
+    if (!((max(abs(s_5.x), max(abs(s_5.y), abs(s_5.z))) > 0.0))) {
         return vec3(0.0);
     }
-    vec3 _e16 = ms_normalize(s_4);
+    vec3 _e16 = ms_normalize(s_5);
     if ((_e16.z < 0.0)) {
         return -(_e16);
     }
@@ -311,31 +329,31 @@ float ms_fresnel_dielectric(float cos_in, float eta_in_1) {
         eta_2 = (1.0 / _e9);
     }
     float _e12 = cos_i_1;
-    float c_7 = min(_e12, 1.0);
+    float c_8 = min(_e12, 1.0);
     float _e15 = eta_2;
     if ((_e15 == 1.0)) {
         return 0.0;
     }
-    if ((c_7 == 0.0)) {
+    if ((c_8 == 0.0)) {
         return 1.0;
     }
     float _e24 = eta_2;
     if ((_e24 > 1e18)) {
         float _e27 = eta_2;
         float e_1 = (1.0 / _e27);
-        float cos_t_1 = sqrt((((1.0 - e_1) * (1.0 + e_1)) + ((c_7 * e_1) * (c_7 * e_1))));
-        r_parl = ((c_7 - (e_1 * cos_t_1)) / (c_7 + (e_1 * cos_t_1)));
-        r_perp = (((e_1 * c_7) - cos_t_1) / ((e_1 * c_7) + cos_t_1));
+        float cos_t_1 = sqrt((((1.0 - e_1) * (1.0 + e_1)) + ((c_8 * e_1) * (c_8 * e_1))));
+        r_parl = ((c_8 - (e_1 * cos_t_1)) / (c_8 + (e_1 * cos_t_1)));
+        r_perp = (((e_1 * c_8) - cos_t_1) / ((e_1 * c_8) + cos_t_1));
     } else {
         float _e51 = eta_2;
         if ((_e51 > 1.0)) {
             float _e54 = eta_2;
             float _e57 = eta_2;
-            ect2_ = (((_e54 - 1.0) * (_e57 + 1.0)) + (c_7 * c_7));
+            ect2_ = (((_e54 - 1.0) * (_e57 + 1.0)) + (c_8 * c_8));
         } else {
             float _e63 = eta_2;
             float _e64 = eta_2;
-            ect2_ = ((_e63 * _e64) - ((1.0 - c_7) * (1.0 + c_7)));
+            ect2_ = ((_e63 * _e64) - ((1.0 - c_8) * (1.0 + c_8)));
         }
         float _e72 = ect2_;
         if ((_e72 <= 0.0)) {
@@ -345,9 +363,9 @@ float ms_fresnel_dielectric(float cos_in, float eta_in_1) {
         float ect = sqrt(_e76);
         float _e78 = eta_2;
         float _e79 = eta_2;
-        float e2c = ((_e78 * _e79) * c_7);
+        float e2c = ((_e78 * _e79) * c_8);
         r_parl = ((e2c - ect) / (e2c + ect));
-        r_perp = ((c_7 - ect) / (c_7 + ect));
+        r_perp = ((c_8 - ect) / (c_8 + ect));
     }
     float _e88 = r_parl;
     float _e89 = r_parl;
@@ -365,17 +383,17 @@ float ms_cnorm(vec2 a_5) {
 }
 
 float ms_cnorm_ratio(vec2 a_6, vec2 b_3) {
-    float s_5 = max(max(abs(a_6.x), abs(a_6.y)), max(abs(b_3.x), abs(b_3.y)));
-    if ((s_5 == 0.0)) {
+    float s_6 = max(max(abs(a_6.x), abs(a_6.y)), max(abs(b_3.x), abs(b_3.y)));
+    if ((s_6 == 0.0)) {
         return 0.0;
     }
-    if (!((s_5 <= 3.4028235e38))) {
+    if (!((s_6 <= 3.4028235e38))) {
         float _e19 = ms_cnorm(a_6);
         float _e20 = ms_cnorm(b_3);
         return (_e19 / _e20);
     }
-    float _e24 = ms_cnorm((a_6 / vec2(s_5)));
-    float _e27 = ms_cnorm((b_3 / vec2(s_5)));
+    float _e24 = ms_cnorm((a_6 / vec2(s_6)));
+    float _e27 = ms_cnorm((b_3 / vec2(s_6)));
     return (_e24 / _e27);
 }
 
@@ -475,8 +493,8 @@ float ms_fresnel_f82_tint(float cos_i_3, float f0_1, float h) {
     float mu = min(max(cos_i_3, 0.0), 1.0);
     float m_7 = (1.0 - mu);
     float m5_ = ((((m_7 * m_7) * m_7) * m_7) * m_7);
-    float a_9 = (((f0_1 + ((1.0 - f0_1) * 0.46266437)) * (1.0 - h)) / 0.05665278);
-    float r_4 = ((f0_1 + ((1.0 - f0_1) * m5_)) - (((a_9 * mu) * m5_) * m_7));
+    float a_12 = (((f0_1 + ((1.0 - f0_1) * 0.46266437)) * (1.0 - h)) / 0.05665278);
+    float r_4 = ((f0_1 + ((1.0 - f0_1) * m5_)) - (((a_12 * mu) * m5_) * m_7));
     return min(max(r_4, 0.0), 1.0);
 }
 
@@ -518,17 +536,17 @@ float ms_ggx_d(vec3 wm_2, vec2 alpha) {
     if (!((z_1 > 0.0))) {
         return 0.0;
     }
-    float x_1 = (wm_2.x / alpha.x);
+    float x_5 = (wm_2.x / alpha.x);
     float y = (wm_2.y / alpha.y);
-    float t_3 = (((x_1 * x_1) + (y * y)) + (z_1 * z_1));
+    float t_3 = (((x_5 * x_5) + (y * y)) + (z_1 * z_1));
     return (1.0 / ((((MS_PI * alpha.x) * alpha.y) * t_3) * t_3));
 }
 
 float ms_ggx_lambda(vec3 w_3, vec2 alpha_1) {
-    float x_2 = (alpha_1.x * w_3.x);
+    float x_6 = (alpha_1.x * w_3.x);
     float y_1 = (alpha_1.y * w_3.y);
     float z_2 = abs(w_3.z);
-    float t_4 = ((x_2 * x_2) + (y_1 * y_1));
+    float t_4 = ((x_6 * x_6) + (y_1 * y_1));
     float z2_ = (z_2 * z_2);
     float den = (2.0 * (z2_ + (z_2 * sqrt((z2_ + t_4)))));
     if (!((den > 0.0))) {
@@ -542,10 +560,10 @@ float ms_ggx_lambda(vec3 w_3, vec2 alpha_1) {
 }
 
 float ms_ggx_g1_(vec3 w_4, vec2 alpha_2) {
-    float x_3 = (alpha_2.x * w_4.x);
+    float x_7 = (alpha_2.x * w_4.x);
     float y_2 = (alpha_2.y * w_4.y);
     float z_3 = abs(w_4.z);
-    float den_1 = (z_3 + sqrt(((z_3 * z_3) + ((x_3 * x_3) + (y_2 * y_2)))));
+    float den_1 = (z_3 + sqrt(((z_3 * z_3) + ((x_7 * x_7) + (y_2 * y_2)))));
     if (!((den_1 > 0.0))) {
         return 0.0;
     }
@@ -604,14 +622,13 @@ float ms_ggx_pdf(vec3 w_5, vec3 wm_3, vec2 alpha_5) {
 
 vec3 ms_ggx_cap_normal(vec3 w_6, vec2 alpha_6, vec2 u, float len) {
     float inv = (1.0 / len);
-    float x_4 = ((alpha_6.x * w_6.x) * inv);
+    float x_8 = ((alpha_6.x * w_6.x) * inv);
     float y_3 = ((alpha_6.y * w_6.y) * inv);
     float z_5 = (w_6.z * inv);
     vec2 _e17 = ms_cos_sin_turn(u.x);
     float above = ((1.0 - u.y) * (1.0 + z_5));
-    float cz = (above - z_5);
-    float sin_ = sqrt(max((1.0 - (cz * cz)), 0.0));
-    vec3 h_1 = vec3((alpha_6.x * ((sin_ * _e17.x) + x_4)), (alpha_6.y * ((sin_ * _e17.y) + y_3)), above);
+    float sin_ = sqrt(max((u.y * ((above * (1.0 + z_5)) + ((x_8 * x_8) + (y_3 * y_3)))), 0.0));
+    vec3 h_1 = vec3((alpha_6.x * ((sin_ * _e17.x) + x_8)), (alpha_6.y * ((sin_ * _e17.y) + y_3)), above);
     float n_3 = (1.0 / sqrt((((h_1.x * h_1.x) + (h_1.y * h_1.y)) + (h_1.z * h_1.z))));
     return (h_1 * n_3);
 }
@@ -628,8 +645,8 @@ vec3 ms_ggx_sample_wm(vec3 w_in, vec2 alpha_7, vec2 u_1) {
     float _e12 = w_7.x;
     float _e16 = w_7.y;
     float _e19 = w_7.z;
-    vec3 s_6 = vec3((alpha_7.x * _e12), (alpha_7.y * _e16), _e19);
-    float n2_ = (((s_6.x * s_6.x) + (s_6.y * s_6.y)) + (s_6.z * s_6.z));
+    vec3 s_7 = vec3((alpha_7.x * _e12), (alpha_7.y * _e16), _e19);
+    float n2_ = (((s_7.x * s_7.x) + (s_7.y * s_7.y)) + (s_7.z * s_7.z));
     if ((n2_ >= 1e-24)) {
         local_8 = (n2_ <= 1e24);
     } else {
@@ -686,7 +703,7 @@ MsSample ms_ggx_sample_dcos(vec2 alpha_10, vec2 u_3) {
     return MsSample(_e21, (_e22 * _e21.z));
 }
 
-vec4 ms_ggx_bounded_cap(vec3 w_9, vec2 alpha_11) {
+MsBoundedCap ms_ggx_bounded_cap(vec3 w_9, vec2 alpha_11) {
     vec3 v_2 = vec3(0.0);
     bool down = (w_9.z < 0.0);
     v_2 = w_9;
@@ -698,31 +715,35 @@ vec4 ms_ggx_bounded_cap(vec3 w_9, vec2 alpha_11) {
     float _e16 = v_2.z;
     vec3 _e18 = ms_normalize(vec3((alpha_11.x * _e9), (alpha_11.y * _e13), _e16));
     if (down) {
-        return vec4(_e18, _e18.z);
+        return MsBoundedCap(_e18, _e18.z, 0.0);
     }
-    float a_10 = min(min(alpha_11.x, alpha_11.y), 1.0);
-    float _e27 = v_2.x;
-    float _e29 = v_2.x;
-    float _e32 = v_2.y;
-    float _e34 = v_2.y;
-    float s_7 = (1.0 + sqrt(((_e27 * _e29) + (_e32 * _e34))));
-    float a2_ = (a_10 * a_10);
-    float s2_ = (s_7 * s_7);
-    float _e46 = v_2.z;
-    float _e49 = v_2.z;
-    float k_3 = (((1.0 - a2_) * s2_) / (s2_ + ((a2_ * _e46) * _e49)));
-    return vec4(_e18, (k_3 * _e18.z));
+    float a_13 = min(min(alpha_11.x, alpha_11.y), 1.0);
+    float _e28 = v_2.x;
+    float _e30 = v_2.x;
+    float _e33 = v_2.y;
+    float _e35 = v_2.y;
+    float s_8 = (1.0 + sqrt(((_e28 * _e30) + (_e33 * _e35))));
+    float a2_ = (a_13 * a_13);
+    float s2_ = (s_8 * s_8);
+    float _e44 = v_2.z;
+    float _e47 = v_2.z;
+    float den_2 = (s2_ + ((a2_ * _e44) * _e47));
+    float k_4 = (((1.0 - a2_) * s2_) / den_2);
+    float _e55 = v_2.z;
+    float _e57 = v_2.z;
+    float one_minus_k = ((a2_ * (s2_ + (_e55 * _e57))) / den_2);
+    return MsBoundedCap(_e18, (k_4 * _e18.z), (one_minus_k * _e18.z));
 }
 
 float ms_ggx_pdf_bounded(vec3 w_in_1, vec3 wm_5, vec2 alpha_12) {
     vec3 _e3 = ms_unit(w_in_1);
-    vec4 _e4 = ms_ggx_bounded_cap(_e3, alpha_12);
-    vec3 ws = _e4.xyz;
-    float b_4 = _e4.w;
+    MsBoundedCap _e4 = ms_ggx_bounded_cap(_e3, alpha_12);
+    vec3 ws = _e4.ws;
+    float b_4 = _e4.b;
     vec3 _e15 = ms_normalize(vec3((wm_5.x / alpha_12.x), (wm_5.y / alpha_12.y), wm_5.z));
     float _e16 = ms_dot(_e15, ws);
-    float cz_1 = (((_e16 + _e16) * _e15.z) - ws.z);
-    if ((cz_1 < -(b_4))) {
+    float cz = (((_e16 + _e16) * _e15.z) - ws.z);
+    if ((cz < -(b_4))) {
         return 0.0;
     }
     float _e25 = ms_ggx_pdf(_e3, wm_5, alpha_12);
@@ -731,18 +752,18 @@ float ms_ggx_pdf_bounded(vec3 w_in_1, vec3 wm_5, vec2 alpha_12) {
 
 MsSample ms_ggx_sample_bounded(vec3 w_in_2, vec2 alpha_13, vec2 u_4) {
     vec3 _e3 = ms_unit(w_in_2);
-    vec4 _e4 = ms_ggx_bounded_cap(_e3, alpha_13);
-    vec3 ws_1 = _e4.xyz;
-    float b_5 = _e4.w;
+    MsBoundedCap _e4 = ms_ggx_bounded_cap(_e3, alpha_13);
+    vec3 ws_1 = _e4.ws;
+    float b_5 = _e4.b;
     vec2 _e8 = ms_cos_sin_turn(u_4.x);
     float above_1 = ((1.0 - u_4.y) * (1.0 + b_5));
-    float z_6 = (above_1 - b_5);
-    float sin_1 = sqrt(max(((1.0 - z_6) * (1.0 + z_6)), 0.0));
-    vec3 m_8 = vec3(((sin_1 * _e8.x) + ws_1.x), ((sin_1 * _e8.y) + ws_1.y), (above_1 + (ws_1.z - b_5)));
-    vec3 _e46 = ms_normalize(vec3((alpha_13.x * m_8.x), (alpha_13.y * m_8.y), max(m_8.z, 0.0)));
-    vec3 _e47 = ms_facing(_e46, _e3);
-    float _e48 = ms_ggx_pdf_bounded(_e3, _e47, alpha_13);
-    return MsSample(_e47, _e48);
+    float one_minus_b = ((((ws_1.x * ws_1.x) + (ws_1.y * ws_1.y)) / (1.0 + ws_1.z)) + _e4.top);
+    float sin_1 = sqrt(max(((u_4.y * (1.0 + b_5)) * (above_1 + one_minus_b)), 0.0));
+    vec3 m_8 = vec3(((sin_1 * _e8.x) + ws_1.x), ((sin_1 * _e8.y) + ws_1.y), (above_1 + _e4.top));
+    vec3 _e58 = ms_normalize(vec3((alpha_13.x * m_8.x), (alpha_13.y * m_8.y), max(m_8.z, 0.0)));
+    vec3 _e59 = ms_facing(_e58, _e3);
+    float _e60 = ms_ggx_pdf_bounded(_e3, _e59, alpha_13);
+    return MsSample(_e59, _e60);
 }
 
 float ms_ggx_pdf_bounded_reflection(vec3 wo_8, vec3 wi_8, vec2 alpha_14) {
@@ -752,72 +773,107 @@ float ms_ggx_pdf_bounded_reflection(vec3 wo_8, vec3 wi_8, vec2 alpha_14) {
         return 0.0;
     }
     float _e7 = ms_dot(wo_8, _e3);
-    float c_8 = abs(_e7);
-    if (!((c_8 > 0.0))) {
+    float c_9 = abs(_e7);
+    if (!((c_9 > 0.0))) {
         return 0.0;
     }
     float _e13 = ms_ggx_pdf_bounded(wo_8, _e3, alpha_14);
-    return (_e13 / (4.0 * c_8));
+    return (_e13 / (4.0 * c_9));
 }
 
-float ms_d(MsMicrofacet mf, vec3 wm_6) {
+vec2 ms_bk_segment(float x, int k0_, int k1_) {
+    uint bits_1 = floatBitsToUint(x);
+    uint rows = (uint((k1_ - k0_)) << MS_BK_SEGMENTS_LOG2_);
+    uint idx = min(((bits_1 >> (23u - MS_BK_SEGMENTS_LOG2_)) - (uint((127 + k0_)) << MS_BK_SEGMENTS_LOG2_)), (rows - 1u));
+    uint pos = ((bits_1 << (9u + MS_BK_SEGMENTS_LOG2_)) >> 9u);
+    return vec2(float(idx), (uintBitsToFloat((1073741824u | pos)) - 3.0));
+}
+
+float ms_bk_poly(vec4 lo, vec4 hi, float s_2) {
+    return ((((((((((((((hi.w * s_2) + hi.z) * s_2) + hi.y) * s_2) + hi.x) * s_2) + lo.w) * s_2) + lo.z) * s_2) + lo.y) * s_2) + lo.x);
+}
+
+float ms_bk_ln_1m(float xi) {
+    if ((xi > 0.5)) {
+        return log((1.0 - xi));
+    }
+    float t_6 = (-(xi) / (2.0 - xi));
+    float t2_ = (t_6 * t_6);
+    float p = (1.0 + (t2_ * (0.33333334 + (t2_ * (0.2 + (t2_ * (0.14285715 + (t2_ * (0.11111111 + (t2_ * (0.09090909 + (t2_ * (0.07692308 + (t2_ * 0.06666667))))))))))))));
+    return ((2.0 * t_6) * p);
+}
+
+float ms_beckmann_d(vec3 wm_6, vec2 alpha_15) {
+    bool local_9 = false;
+    float z_6 = wm_6.z;
+    float r_6 = (1.0 / (alpha_15.x * alpha_15.y));
+    float x_9 = ((wm_6.x * alpha_15.y) * r_6);
+    float y_4 = ((wm_6.y * alpha_15.x) * r_6);
+    float z2_1 = (z_6 * z_6);
+    if ((z_6 > 0.0)) {
+        local_9 = (z2_1 > 0.0);
+    } else {
+        local_9 = false;
+    }
+    bool _e24 = local_9;
+    if (!(_e24)) {
+        return 0.0;
+    }
+    float e_2 = (((x_9 * x_9) + (y_4 * y_4)) / z2_1);
+    if ((e_2 <= 80.0)) {
+        return ((exp(-(e_2)) * r_6) / ((MS_PI * z2_1) * z2_1));
+    }
+    return exp((((log(r_6) - 1.14473) - (4.0 * log(z_6))) - e_2));
+}
+
+float ms_beckmann_pdf_dcos(vec3 wm_8, vec2 alpha_21) {
+    if (!((wm_8.z > 0.0))) {
+        return 0.0;
+    }
+    float _e7 = ms_beckmann_d(wm_8, alpha_21);
+    return (_e7 * wm_8.z);
+}
+
+MsSample ms_beckmann_sample_dcos(vec2 alpha_22, vec2 u_6) {
+    vec3 v_3 = vec3(0.0);
+    vec2 _e3 = ms_cos_sin_turn(u_6.y);
+    if ((u_6.x >= 1.0)) {
+        v_3 = vec3((alpha_22.x * _e3.x), (alpha_22.y * _e3.y), 0.0);
+    } else {
+        float _e17 = ms_bk_ln_1m(u_6.x);
+        float r_7 = sqrt(-(_e17));
+        if ((r_7 > 1.0)) {
+            v_3 = vec3((alpha_22.x * _e3.x), (alpha_22.y * _e3.y), (1.0 / r_7));
+        } else {
+            v_3 = vec3(((alpha_22.x * r_7) * _e3.x), ((alpha_22.y * r_7) * _e3.y), 1.0);
+        }
+    }
+    vec3 _e41 = v_3;
+    vec3 _e42 = ms_unit_normal(_e41);
+    float _e43 = ms_beckmann_d(_e42, alpha_22);
+    return MsSample(_e42, (_e43 * _e42.z));
+}
+
+float ms_d(MsMicrofacet mf, vec3 wm_9) {
     if ((mf.ndf == MS_NDF_GGX)) {
-        float _e6 = ms_ggx_d(wm_6, mf.alpha);
+        float _e6 = ms_ggx_d(wm_9, mf.alpha);
         return _e6;
     }
-    return 0.0;
-}
-
-float ms_lambda(MsMicrofacet mf_1, vec3 w_10) {
-    if ((mf_1.ndf == MS_NDF_GGX)) {
-        float _e6 = ms_ggx_lambda(w_10, mf_1.alpha);
-        return _e6;
+    if ((mf.ndf == MS_NDF_BECKMANN)) {
+        float _e11 = ms_beckmann_d(wm_9, mf.alpha);
+        return _e11;
     }
     return 0.0;
 }
 
-float ms_g1_(MsMicrofacet mf_2, vec3 w_11) {
-    if ((mf_2.ndf == MS_NDF_GGX)) {
-        float _e6 = ms_ggx_g1_(w_11, mf_2.alpha);
-        return _e6;
-    }
-    return 0.0;
-}
-
-float ms_g2_(MsMicrofacet mf_3, vec3 wo_9, vec3 wi_9) {
-    if ((mf_3.ndf == MS_NDF_GGX)) {
-        float _e7 = ms_ggx_g2_(wo_9, wi_9, mf_3.alpha);
-        return _e7;
-    }
-    return 0.0;
-}
-
-float ms_g2_separable(MsMicrofacet mf_4, vec3 wo_10, vec3 wi_10) {
-    float _e3 = ms_g1_(mf_4, wo_10);
-    float _e4 = ms_g1_(mf_4, wi_10);
-    return (_e3 * _e4);
-}
-
-float ms_pdf(MsMicrofacet mf_5, vec3 w_12, vec3 wm_7) {
-    if ((mf_5.ndf == MS_NDF_GGX)) {
-        float _e7 = ms_ggx_pdf(w_12, wm_7, mf_5.alpha);
-        return _e7;
-    }
-    return 0.0;
-}
-
-MsSample ms_sample(MsMicrofacet mf_6, vec3 w_13, vec2 u_5) {
-    if ((mf_6.ndf == MS_NDF_GGX)) {
-        MsSample _e7 = ms_ggx_sample(w_13, mf_6.alpha, u_5);
-        return _e7;
-    }
-    return MsSample(vec3(0.0, 0.0, 1.0), 0.0);
-}
-
-MsSample ms_sample_dcos(MsMicrofacet mf_7, vec2 u_6) {
+MsSample ms_sample_dcos(MsMicrofacet mf_7, vec2 u_11) {
     if ((mf_7.ndf == MS_NDF_GGX)) {
-        MsSample _e6 = ms_ggx_sample_dcos(mf_7.alpha, u_6);
+        MsSample _e6 = ms_ggx_sample_dcos(mf_7.alpha, u_11);
         return _e6;
+    }
+    if ((mf_7.ndf == MS_NDF_BECKMANN)) {
+        MsSample _e11 = ms_beckmann_sample_dcos(mf_7.alpha, u_11);
+        return _e11;
     }
     return MsSample(vec3(0.0, 0.0, 1.0), 0.0);
 }
@@ -830,404 +886,145 @@ bool ms_on_horizon(float z) {
     return !((abs(z) >= 1e-18));
 }
 
-bool ms_usable(float v_3) {
-    bool local_9 = false;
-    if ((v_3 >= 1.1754944e-20)) {
-        local_9 = (v_3 <= 3.4028235e38);
+bool ms_usable(float v_4) {
+    bool local_14 = false;
+    if ((v_4 >= 1.1754944e-20)) {
+        local_14 = (v_4 <= 3.4028235e38);
     } else {
-        local_9 = false;
+        local_14 = false;
     }
-    bool _e8 = local_9;
+    bool _e8 = local_14;
     return _e8;
 }
 
-float ms_masking_g2_(MsMicrofacet mf_9, uint masking, vec3 wo_11, vec3 wi_11) {
-    if ((masking == MS_MASKING_SEPARABLE)) {
-        float _e6 = ms_g2_separable(mf_9, wo_11, wi_11);
-        return _e6;
-    }
-    float _e7 = ms_g2_(mf_9, wo_11, wi_11);
-    return _e7;
+vec3 ms_weighted(vec3 fr_1, float k_2) {
+    return mix((fr_1 * k_2), vec3(0.0), equal(fr_1, vec3(0.0)));
 }
 
-float ms_reflected(MsMicrofacet mf_10, uint masking_1, vec3 wo_12, vec3 wi_12, float d_wm) {
-    float _e5 = ms_masking_g2_(mf_10, masking_1, wo_12, wi_12);
-    return ((d_wm * _e5) / (4.0 * abs((wo_12.z * wi_12.z))));
-}
-
-vec3 ms_weighted(vec3 fr_1, float k_1) {
-    return mix((fr_1 * k_1), vec3(0.0), equal(fr_1, vec3(0.0)));
-}
-
-vec3 ms_conductor_lobe_normal(MsConductor c_1, vec3 wo_13, vec3 wi_13) {
-    bool local_10 = false;
-    bool local_11 = false;
-    bool local_12 = false;
-    bool _e3 = ms_same_hemisphere(wo_13, wi_13);
-    if (!(!(_e3))) {
-        bool _e9 = ms_on_horizon(wo_13.z);
-        local_10 = _e9;
-    } else {
-        local_10 = true;
-    }
-    bool _e11 = local_10;
-    if (!(_e11)) {
-        bool _e16 = ms_on_horizon(wi_13.z);
-        local_11 = _e16;
-    } else {
-        local_11 = true;
-    }
-    bool _e18 = local_11;
-    if (!(_e18)) {
-        bool _e23 = ms_effectively_smooth(c_1.mf);
-        local_12 = _e23;
-    } else {
-        local_12 = true;
-    }
-    bool _e25 = local_12;
-    if (_e25) {
-        return vec3(0.0);
-    }
-    vec3 _e28 = ms_half_vector_reflection(wo_13, wi_13);
-    return _e28;
-}
-
-vec3 ms_conductor_eval(MsConductor c_2, vec3 wo_14, vec3 wi_14) {
-    vec3 _e3 = ms_conductor_lobe_normal(c_2, wo_14, wi_14);
-    bool _e4 = ms_half_vector_ok(_e3);
-    if (!(_e4)) {
-        return vec3(0.0);
-    }
-    float _e9 = ms_dot(wo_14, _e3);
-    float _e11 = ms_dot(wi_14, _e3);
-    vec3 _e16 = ms_fresnel_eval(c_2.fresnel, (0.5 * (abs(_e9) + abs(_e11))));
-    float _e20 = ms_d(c_2.mf, _e3);
-    float _e21 = ms_reflected(c_2.mf, c_2.masking, wo_14, wi_14, _e20);
-    vec3 _e22 = ms_weighted(_e16, _e21);
-    return _e22;
-}
-
-float ms_conductor_pdf(MsConductor c_3, vec3 wo_15, vec3 wi_15) {
-    vec3 _e3 = ms_conductor_lobe_normal(c_3, wo_15, wi_15);
-    bool _e4 = ms_half_vector_ok(_e3);
-    if (!(_e4)) {
-        return 0.0;
-    }
-    float _e8 = ms_pdf(c_3.mf, wo_15, _e3);
-    float _e9 = ms_dot(wo_15, _e3);
-    return (_e8 / (4.0 * abs(_e9)));
-}
-
-vec4 ms_conductor_eval_pdf(MsConductor c_4, vec3 wo_16, vec3 wi_16) {
-    vec3 _e3 = ms_conductor_lobe_normal(c_4, wo_16, wi_16);
-    bool _e4 = ms_half_vector_ok(_e3);
-    if (!(_e4)) {
-        return vec4(0.0);
-    }
-    float _e8 = ms_dot(wo_16, _e3);
-    float co = abs(_e8);
-    float _e11 = ms_dot(wi_16, _e3);
-    vec3 _e16 = ms_fresnel_eval(c_4.fresnel, (0.5 * (co + abs(_e11))));
-    float _e20 = ms_d(c_4.mf, _e3);
-    float _e21 = ms_reflected(c_4.mf, c_4.masking, wo_16, wi_16, _e20);
-    vec3 _e22 = ms_weighted(_e16, _e21);
-    float _e24 = ms_pdf(c_4.mf, wo_16, _e3);
-    return vec4(_e22, (_e24 / (4.0 * co)));
-}
-
-MsBsdfSample ms_conductor_sample(MsConductor c_5, vec3 wo_17, float uc, vec2 u_7) {
-    bool local_13 = false;
-    MsBsdfSample none = MsBsdfSample(vec3(0.0), 0.0, vec3(0.0), 0u, 1.0);
-    bool _e13 = ms_on_horizon(wo_17.z);
-    if (_e13) {
-        return none;
-    }
-    bool _e15 = ms_effectively_smooth(c_5.mf);
-    if (_e15) {
-        vec3 wi_22 = vec3(-(wo_17.x), -(wo_17.y), wo_17.z);
-        float k_4 = (1.0 / abs(wi_22.z));
-        vec3 _e29 = ms_fresnel_eval(c_5.fresnel, abs(wo_17.z));
-        return MsBsdfSample(wi_22, 1.0, (_e29 * k_4), 3u, 1.0);
-    }
-    MsSample _e36 = ms_sample(c_5.mf, wo_17, u_7);
-    vec3 _e38 = ms_reflect(wo_17, _e36.wm);
-    bool _e39 = ms_same_hemisphere(wo_17, _e38);
-    if (!(!(_e39))) {
-        bool _e45 = ms_on_horizon(_e38.z);
-        local_13 = _e45;
-    } else {
-        local_13 = true;
-    }
-    bool _e47 = local_13;
-    if (_e47) {
-        return none;
-    }
-    float _e49 = ms_dot(wo_17, _e36.wm);
-    float co_1 = abs(_e49);
-    float pdf = (_e36.pdf / (4.0 * co_1));
-    bool _e55 = ms_usable(pdf);
-    if (!(_e55)) {
-        return none;
-    }
-    vec3 _e58 = ms_fresnel_eval(c_5.fresnel, co_1);
-    float _e61 = ms_d(c_5.mf, _e36.wm);
-    bool _e62 = ms_usable(_e61);
-    if (!(_e62)) {
-        return none;
-    }
-    float _e66 = ms_reflected(c_5.mf, c_5.masking, wo_17, _e38, _e61);
-    vec3 _e67 = ms_weighted(_e58, _e66);
-    if (!(all(lessThanEqual(_e67, vec3(3.4028235e38))))) {
-        return none;
-    }
-    return MsBsdfSample(_e38, pdf, _e67, MS_SAMPLE_VALID, 1.0);
-}
-
-bool ms_dielectric_smooth(MsDielectric d_1) {
-    bool local_14 = false;
-    if (!((d_1.eta == 1.0))) {
-        bool _e8 = ms_effectively_smooth(d_1.mf);
-        local_14 = _e8;
-    } else {
-        local_14 = true;
-    }
-    bool _e10 = local_14;
-    return _e10;
-}
-
-float ms_dielectric_g2_(MsDielectric d_2, vec3 wo_18, vec3 wi_17) {
-    float _e5 = ms_masking_g2_(d_2.mf, d_2.masking, wo_18, wi_17);
-    return _e5;
-}
-
-vec4 ms_dielectric_half(MsDielectric d_3, vec3 wo_19, vec3 wi_18) {
+vec3 ms_conductor_lobe_normal(MsConductor c_2, vec3 wo_15, vec3 wi_15) {
     bool local_15 = false;
-    vec3 wm_8 = vec3(0.0);
-    float etap_4 = 1.0;
     bool local_16 = false;
-    vec4 none_1 = vec4(0.0);
-    float co_2 = wo_19.z;
-    float ci_1 = wi_18.z;
-    bool _e7 = ms_on_horizon(co_2);
-    if (!(_e7)) {
-        bool _e11 = ms_on_horizon(ci_1);
-        local_15 = _e11;
+    bool local_17 = false;
+    bool _e3 = ms_same_hemisphere(wo_15, wi_15);
+    if (!(!(_e3))) {
+        bool _e9 = ms_on_horizon(wo_15.z);
+        local_15 = _e9;
     } else {
         local_15 = true;
     }
-    bool _e13 = local_15;
-    if (_e13) {
-        return none_1;
-    }
-    if (((co_2 * ci_1) > 0.0)) {
-        vec3 _e20 = ms_half_vector_reflection(wo_19, wi_18);
-        wm_8 = _e20;
-    } else {
-        vec4 _e22 = ms_half_vector_refraction(wo_19, wi_18, d_3.eta);
-        wm_8 = _e22.xyz;
-        etap_4 = _e22.w;
-    }
-    vec3 _e25 = wm_8;
-    bool _e26 = ms_half_vector_ok(_e25);
-    if (!(_e26)) {
-        return none_1;
-    }
-    vec3 _e28 = wm_8;
-    float _e29 = ms_dot(_e28, wi_18);
-    if (!(((_e29 * ci_1) < 0.0))) {
-        vec3 _e36 = wm_8;
-        float _e37 = ms_dot(_e36, wo_19);
-        local_16 = ((_e37 * co_2) < 0.0);
+    bool _e11 = local_15;
+    if (!(_e11)) {
+        bool _e16 = ms_on_horizon(wi_15.z);
+        local_16 = _e16;
     } else {
         local_16 = true;
     }
-    bool _e42 = local_16;
-    if (_e42) {
-        return none_1;
+    bool _e18 = local_16;
+    if (!(_e18)) {
+        bool _e23 = ms_effectively_smooth(c_2.mf);
+        local_17 = _e23;
+    } else {
+        local_17 = true;
     }
-    vec3 _e43 = wm_8;
+    bool _e25 = local_17;
+    if (_e25) {
+        return vec3(0.0);
+    }
+    vec3 _e28 = ms_half_vector_reflection(wo_15, wi_15);
+    return _e28;
+}
+
+bool ms_dielectric_smooth(MsDielectric d_1) {
+    bool local_19 = false;
+    if (!((d_1.eta == 1.0))) {
+        bool _e8 = ms_effectively_smooth(d_1.mf);
+        local_19 = _e8;
+    } else {
+        local_19 = true;
+    }
+    bool _e10 = local_19;
+    return _e10;
+}
+
+vec4 ms_dielectric_half(MsDielectric d_3, vec3 wo_21, vec3 wi_20) {
+    bool local_20 = false;
+    vec3 wm_11 = vec3(0.0);
+    float etap_4 = 1.0;
+    bool local_21 = false;
+    vec4 none = vec4(0.0);
+    float co = wo_21.z;
+    float ci_1 = wi_20.z;
+    bool _e7 = ms_on_horizon(co);
+    if (!(_e7)) {
+        bool _e11 = ms_on_horizon(ci_1);
+        local_20 = _e11;
+    } else {
+        local_20 = true;
+    }
+    bool _e13 = local_20;
+    if (_e13) {
+        return none;
+    }
+    if (((co * ci_1) > 0.0)) {
+        vec3 _e20 = ms_half_vector_reflection(wo_21, wi_20);
+        wm_11 = _e20;
+    } else {
+        vec4 _e22 = ms_half_vector_refraction(wo_21, wi_20, d_3.eta);
+        wm_11 = _e22.xyz;
+        etap_4 = _e22.w;
+    }
+    vec3 _e25 = wm_11;
+    bool _e26 = ms_half_vector_ok(_e25);
+    if (!(_e26)) {
+        return none;
+    }
+    vec3 _e28 = wm_11;
+    float _e29 = ms_dot(_e28, wi_20);
+    if (!(((_e29 * ci_1) < 0.0))) {
+        vec3 _e36 = wm_11;
+        float _e37 = ms_dot(_e36, wo_21);
+        local_21 = ((_e37 * co) < 0.0);
+    } else {
+        local_21 = true;
+    }
+    bool _e42 = local_21;
+    if (_e42) {
+        return none;
+    }
+    vec3 _e43 = wm_11;
     float _e44 = etap_4;
     return vec4(_e43, _e44);
 }
 
-float ms_dielectric_f_transmission(MsDielectric d_4, vec3 wo_20, vec3 wi_19, vec3 wm_9, float d_wm_1, float etap_5, float t) {
-    float f = 0.0;
-    float _e7 = ms_dot(wi_19, wm_9);
-    float _e8 = ms_dot(wo_20, wm_9);
-    float _e9 = ms_refraction_denominator(wo_20, wi_19, wm_9, etap_5);
-    float _e10 = ms_dielectric_g2_(d_4, wo_20, wi_19);
-    float geometric = ((_e10 / abs((wi_19.z * wo_20.z))) * (abs((_e7 * _e8)) / (_e9 * _e9)));
-    f = ((d_wm_1 * t) * geometric);
-    if ((d_4.transport == MS_TRANSPORT_RADIANCE)) {
-        float _e27 = f;
-        f = (_e27 / (etap_5 * etap_5));
-    }
-    float _e30 = f;
-    return _e30;
-}
-
-float ms_dielectric_eval(MsDielectric d_5, vec3 wo_21, vec3 wi_20) {
-    bool _e3 = ms_dielectric_smooth(d_5);
-    if (_e3) {
-        return 0.0;
-    }
-    vec4 _e5 = ms_dielectric_half(d_5, wo_21, wi_20);
-    if ((_e5.w == 0.0)) {
-        return 0.0;
-    }
-    vec3 wm_10 = _e5.xyz;
-    float _e11 = ms_dot(wo_21, wm_10);
-    float _e13 = ms_fresnel_dielectric(_e11, d_5.eta);
-    float _e15 = ms_d(d_5.mf, wm_10);
-    if (((wo_21.z * wi_20.z) > 0.0)) {
-        float _e23 = ms_reflected(d_5.mf, d_5.masking, wo_21, wi_20, _e15);
-        return (_e13 * _e23);
-    }
-    float _e28 = ms_dielectric_f_transmission(d_5, wo_21, wi_20, wm_10, _e15, _e5.w, (1.0 - _e13));
-    return _e28;
-}
-
-float ms_dielectric_pdf(MsDielectric d_6, vec3 wo_22, vec3 wi_21) {
-    bool _e3 = ms_dielectric_smooth(d_6);
-    if (_e3) {
-        return 0.0;
-    }
-    vec4 _e5 = ms_dielectric_half(d_6, wo_22, wi_21);
-    if ((_e5.w == 0.0)) {
-        return 0.0;
-    }
-    vec3 wm_11 = _e5.xyz;
-    float _e11 = ms_dot(wo_22, wm_11);
-    float _e13 = ms_fresnel_dielectric(_e11, d_6.eta);
-    float _e15 = ms_pdf(d_6.mf, wo_22, wm_11);
-    if (((wo_22.z * wi_21.z) > 0.0)) {
-        float _e22 = ms_dot(wo_22, wm_11);
-        return ((_e15 * _e13) / (4.0 * abs(_e22)));
-    }
-    float _e31 = ms_jacobian_refraction(wo_22, wi_21, wm_11, _e5.w);
-    return ((_e15 * (1.0 - _e13)) * _e31);
-}
-
-MsBsdfSample ms_dielectric_sample_smooth(MsDielectric d_7, vec3 wo_23, float uc_1) {
-    float f_1 = 0.0;
-    float _e5 = ms_fresnel_dielectric(wo_23.z, d_7.eta);
+MsBsdfSample ms_dielectric_sample_smooth(MsDielectric d_7, vec3 wo_25, float uc_1) {
+    float f_2 = 0.0;
+    float _e5 = ms_fresnel_dielectric(wo_25.z, d_7.eta);
     if ((uc_1 < _e5)) {
-        vec3 wi_23 = vec3(-(wo_23.x), -(wo_23.y), wo_23.z);
-        return MsBsdfSample(wi_23, _e5, vec3((_e5 / abs(wi_23.z))), 3u, 1.0);
+        vec3 wi_24 = vec3(-(wo_25.x), -(wo_25.y), wo_25.z);
+        return MsBsdfSample(wi_24, _e5, vec3((_e5 / abs(wi_24.z))), 3u, 1.0);
     }
-    MsBsdfSample none_2 = MsBsdfSample(vec3(0.0), 0.0, vec3(0.0), 0u, 1.0);
-    vec4 _e33 = ms_refract(wo_23, vec3(0.0, 0.0, 1.0), d_7.eta);
+    MsBsdfSample none_1 = MsBsdfSample(vec3(0.0), 0.0, vec3(0.0), 0u, 1.0);
+    vec4 _e33 = ms_refract(wo_25, vec3(0.0, 0.0, 1.0), d_7.eta);
     if ((_e33.w == 0.0)) {
-        return none_2;
+        return none_1;
     }
-    vec3 wi_24 = _e33.xyz;
-    bool _e39 = ms_on_horizon(wi_24.z);
+    vec3 wi_25 = _e33.xyz;
+    bool _e39 = ms_on_horizon(wi_25.z);
     if (_e39) {
-        return none_2;
+        return none_1;
     }
-    float t_6 = (1.0 - _e5);
-    f_1 = (t_6 / abs(wi_24.z));
+    float t_7 = (1.0 - _e5);
+    f_2 = (t_7 / abs(wi_25.z));
     if ((d_7.transport == MS_TRANSPORT_RADIANCE)) {
-        float _e49 = f_1;
-        f_1 = (_e49 / (_e33.w * _e33.w));
+        float _e49 = f_2;
+        f_2 = (_e49 / (_e33.w * _e33.w));
     }
-    float _e54 = f_1;
-    return MsBsdfSample(wi_24, t_6, vec3(_e54), 7u, _e33.w);
+    float _e54 = f_2;
+    return MsBsdfSample(wi_25, t_7, vec3(_e54), 7u, _e33.w);
 }
 
-MsBsdfSample ms_dielectric_sample(MsDielectric d_8, vec3 wo_24, float uc_2, vec2 u_8) {
-    bool local_17 = false;
-    bool local_18 = false;
-    bool local_19 = false;
-    bool local_20 = false;
-    MsBsdfSample none_3 = MsBsdfSample(vec3(0.0), 0.0, vec3(0.0), 0u, 1.0);
-    bool _e13 = ms_on_horizon(wo_24.z);
-    if (_e13) {
-        return none_3;
-    }
-    bool _e14 = ms_dielectric_smooth(d_8);
-    if (_e14) {
-        MsBsdfSample _e15 = ms_dielectric_sample_smooth(d_8, wo_24, uc_2);
-        return _e15;
-    }
-    MsSample _e17 = ms_sample(d_8.mf, wo_24, u_8);
-    vec3 wm_12 = _e17.wm;
-    float _e19 = ms_dot(wo_24, wm_12);
-    float _e21 = ms_fresnel_dielectric(_e19, d_8.eta);
-    if ((uc_2 < _e21)) {
-        vec3 _e23 = ms_reflect(wo_24, wm_12);
-        bool _e24 = ms_same_hemisphere(wo_24, _e23);
-        if (!(!(_e24))) {
-            bool _e30 = ms_on_horizon(_e23.z);
-            local_17 = _e30;
-        } else {
-            local_17 = true;
-        }
-        bool _e32 = local_17;
-        if (_e32) {
-            return none_3;
-        }
-        float _e34 = ms_d(d_8.mf, wm_12);
-        bool _e35 = ms_usable(_e34);
-        if (!(_e35)) {
-            return none_3;
-        }
-        float _e39 = ms_reflected(d_8.mf, d_8.masking, wo_24, _e23, _e34);
-        float f_2 = (_e21 * _e39);
-        float pdf_1 = ((_e17.pdf * _e21) / (4.0 * abs(_e19)));
-        bool _e47 = ms_usable(pdf_1);
-        if (!(!(_e47))) {
-            local_18 = !((f_2 <= 3.4028235e38));
-        } else {
-            local_18 = true;
-        }
-        bool _e56 = local_18;
-        if (_e56) {
-            return none_3;
-        }
-        return MsBsdfSample(_e23, pdf_1, vec3(f_2), MS_SAMPLE_VALID, 1.0);
-    }
-    vec4 _e62 = ms_refract(wo_24, wm_12, d_8.eta);
-    if ((_e62.w == 0.0)) {
-        return none_3;
-    }
-    vec3 wi_25 = _e62.xyz;
-    float etap_6 = _e62.w;
-    bool _e68 = ms_same_hemisphere(wo_24, wi_25);
-    if (!(_e68)) {
-        bool _e73 = ms_on_horizon(wi_25.z);
-        local_19 = _e73;
-    } else {
-        local_19 = true;
-    }
-    bool _e75 = local_19;
-    if (_e75) {
-        return none_3;
-    }
-    float t_7 = (1.0 - _e21);
-    float _e80 = ms_jacobian_refraction(wo_24, wi_25, wm_12, etap_6);
-    float pdf_2 = ((_e17.pdf * t_7) * _e80);
-    float _e83 = ms_d(d_8.mf, wm_12);
-    bool _e84 = ms_usable(_e83);
-    if (!(_e84)) {
-        return none_3;
-    }
-    float _e86 = ms_dielectric_f_transmission(d_8, wo_24, wi_25, wm_12, _e83, etap_6, t_7);
-    bool _e87 = ms_usable(pdf_2);
-    if (!(!(_e87))) {
-        local_20 = !((_e86 <= 3.4028235e38));
-    } else {
-        local_20 = true;
-    }
-    bool _e96 = local_20;
-    if (_e96) {
-        return none_3;
-    }
-    return MsBsdfSample(wi_25, pdf_2, vec3(_e86), 5u, etap_6);
-}
-
-uint ms_k_index(uvec3 id_8, uvec3 groups_8) {
-    uint i_2 = (id_8.x + ((id_8.y * groups_8.x) * 64u));
+uint ms_k_index(uvec3 id_10, uvec3 groups_10) {
+    uint i_2 = (id_10.x + ((id_10.y * groups_10.x) * 64u));
     uint n_4 = (uint(_group_0_binding_0_cs.length()) / MS_K_IN);
     if ((i_2 >= n_4)) {
         return n_4;
@@ -1253,21 +1050,21 @@ MsDielectric ms_k_dielectric(uint i_1) {
 }
 
 void main() {
-    uvec3 id_3 = gl_GlobalInvocationID;
-    uvec3 groups_3 = gl_NumWorkGroups;
-    uint _e2 = ms_k_index(id_3, groups_3);
+    uvec3 id_5 = gl_GlobalInvocationID;
+    uvec3 groups_5 = gl_NumWorkGroups;
+    uint _e2 = ms_k_index(id_5, groups_5);
     if ((_e2 == (uint(_group_0_binding_0_cs.length()) / MS_K_IN))) {
         return;
     }
-    float c_9 = _group_0_binding_0_cs[((_e2 * MS_K_IN) + 1u)].z;
+    float c_10 = _group_0_binding_0_cs[((_e2 * MS_K_IN) + 1u)].z;
     MsConductor _e16 = ms_k_conductor(_e2);
     MsFresnel fr_2 = _e16.fresnel;
-    float _e24 = ms_fresnel_dielectric(c_9, fr_2.a.x);
-    float _e29 = ms_fresnel_conductor(c_9, fr_2.a.x, fr_2.b.x);
-    float _e32 = ms_fresnel_schlick(c_9, fr_2.a.x);
-    float _e37 = ms_fresnel_f82_tint(c_9, fr_2.a.x, fr_2.b.x);
+    float _e24 = ms_fresnel_dielectric(c_10, fr_2.a.x);
+    float _e29 = ms_fresnel_conductor(c_10, fr_2.a.x, fr_2.b.x);
+    float _e32 = ms_fresnel_schlick(c_10, fr_2.a.x);
+    float _e37 = ms_fresnel_f82_tint(c_10, fr_2.a.x, fr_2.b.x);
     _group_0_binding_1_cs[(_e2 * MS_K_OUT)] = vec4(_e24, _e29, _e32, _e37);
-    vec3 _e45 = ms_fresnel_eval(fr_2, c_9);
+    vec3 _e45 = ms_fresnel_eval(fr_2, c_10);
     _group_0_binding_1_cs[((_e2 * MS_K_OUT) + 1u)] = vec4(_e45, 0.0);
     return;
 }

@@ -318,8 +318,9 @@ fn ggx_spherical_cap(a: f64, u: [f64; 2]) -> (f64, f64) {
     // z + w.z = (1 − u₁)(1 + w.z), formed without the cancellation (at u₁ → 1 the sum
     // would round to either sign).
     let above = (1.0 - u[1]) * (1.0 + wz);
-    let z = above - wz;
-    let sin = (1.0 - z * z).max(0.0).sqrt();
+    // sin² = (1 − z)(1 + z) with 1 − z = u₁(1 + w.z), 1 + z = above + (1 − w.z) and
+    // (1 − w.z)(1 + w.z) = w.x²: no cancellation at the poles (z → ±1), as 1 − z² has.
+    let sin = (u[1] * (above * (1.0 + wz) + wx * wx)).max(0.0).sqrt();
     let (hx, hy, hz) = (sin * phi.cos() + wx, sin * phi.sin(), above);
     // Slopes of h ∝ (x̃, ỹ, 1).
     (hx / hz, hy / hz)

@@ -809,20 +809,24 @@ impl<F: Real, N: Shape> Microfacet<F, N> {
 
 impl<F: Real> Microfacet<F, Ggx> {
     /// The cap's lower bound −b of Eto & Tokuyoshi's bounded VNDF for w (mirrored to w.z ≥ 0),
-    /// with the stretched unit direction w'.
+    /// with the stretched unit direction w' and w'.z − b = (1 − k) w'.z, formed without the
+    /// cancellation of k → 1 (a small α): the sampler's 1 − b and the cap's top need it.
     #[inline(always)]
-    fn bounded_cap(&self, w: [F; 3]) -> ([F; 3], F) {
+    fn bounded_cap(&self, w: [F; 3]) -> ([F; 3], F, F) {
         let down = w[2] < F::ZERO;
         let w = if down { crate::bsdf::frame::neg(w) } else { w };
         let ws = normalize([self.ax * w[0], self.ay * w[1], w[2]]);
         if down {
-            return (ws, ws[2]);
+            return (ws, ws[2], F::ZERO);
         }
         let a = self.ax.min(self.ay).min(F::ONE);
         let s = F::ONE + (w[0] * w[0] + w[1] * w[1]).sqrt();
         let (a2, s2) = (a * a, s * s);
-        let k = (F::ONE - a2) * s2 / (s2 + a2 * w[2] * w[2]);
-        (ws, k * ws[2])
+        let den = s2 + a2 * w[2] * w[2];
+        let k = (F::ONE - a2) * s2 / den;
+        // 1 − k = a²(s² + w.z²)/(s² + a²w.z²).
+        let one_minus_k = a2 * (s2 + w[2] * w[2]) / den;
+        (ws, k * ws[2], one_minus_k * ws[2])
     }
 
     /// Bounded visible-normal sampling for reflection (Eto & Tokuyoshi 2023): the spherical
@@ -833,13 +837,20 @@ impl<F: Real> Microfacet<F, Ggx> {
     /// (1 + w'.z)/(1 + k w'.z).
     pub fn sample_bounded(&self, w: [F; 3], u: [F; 2]) -> Sample<F> {
         let w = super::unit(w);
-        let (ws, b) = self.bounded_cap(w);
+        let (ws, b, top) = self.bounded_cap(w);
         let (c, s) = fast::cos_sin_turn(u[0].to_f64());
         let (c, s) = (F::from_f64(c), F::from_f64(s));
+        // The cap point's height z ∈ [−b, 1]: z + b = above, 1 − z = u₁(1 + b), and
+        // 1 + z = above + (1 − b), 1 − b = (1 − w'.z) + (w'.z − b), 1 − w'.z = (w'.x² +
+        // w'.y²)/(1 + w'.z): sin² = (1 − z)(1 + z) without the cancellation at the poles
+        // (z → ±1: u₁ → 0, or u₁ → 1 at a small α), where 1 − z² would lose it to z's
+        // rounding.
         let above = (F::ONE - u[1]) * (F::ONE + b);
-        let z = above - b;
-        let sin = ((F::ONE - z) * (F::ONE + z)).max(F::ZERO).sqrt();
-        let m = [sin * c + ws[0], sin * s + ws[1], above + (ws[2] - b)];
+        let one_minus_b = (ws[0] * ws[0] + ws[1] * ws[1]) / (F::ONE + ws[2]) + top;
+        let sin = (u[1] * (F::ONE + b) * (above + one_minus_b))
+            .max(F::ZERO)
+            .sqrt();
+        let m = [sin * c + ws[0], sin * s + ws[1], above + top];
         let wm = normalize([self.ax * m[0], self.ay * m[1], m[2].max(F::ZERO)]);
         let wm = fast::facing(wm, w);
         Sample {
@@ -851,7 +862,7 @@ impl<F: Real> Microfacet<F, Ggx> {
     /// Density of [`Microfacet::sample_bounded`] w.r.t. the solid angle of the normal.
     pub fn pdf_bounded(&self, w: [F; 3], wm: [F; 3]) -> F {
         let w = super::unit(w);
-        let (ws, b) = self.bounded_cap(w);
+        let (ws, b, _) = self.bounded_cap(w);
         let m = normalize([wm[0] / self.ax, wm[1] / self.ay, wm[2]]);
         let d = dot(m, ws);
         // The cap point: the reflection of w' about m'.

@@ -341,8 +341,13 @@ pub(crate) fn ggx_visible_stretched_len<F: Real>(
     // cancellation (at u₁ → 1 the sum would round to either sign: a normal below the
     // horizon, or facing away from w).
     let above = (F::ONE - u[1]) * (F::ONE + z);
-    let cz = above - z;
-    let sin = (F::ONE - cz * cz).max(F::ZERO).sqrt();
+    // sin²θ = (1 − cz)(1 + cz) with 1 − cz = u₁(1 + z), 1 + cz = above + (1 − z) and
+    // (1 − z)(1 + z) = x² + y²: u₁(above (1 + z) + x² + y²), a sum of positive terms. Not
+    // 1 − cz², which cancels at both poles (cz → ±1: u₁ → 0, or u₁ → 1 at a small α), where
+    // cz's rounding alone would move sin by √ε.
+    let sin = (u[1] * (above * (F::ONE + z) + (x * x + y * y)))
+        .max(F::ZERO)
+        .sqrt();
     let (hx, hy, hz) = (ax * (sin * c + x), ay * (sin * s + y), sz * above);
     let inv = F::ONE / (hx * hx + hy * hy + hz * hz).sqrt();
     [hx * inv, hy * inv, hz * inv]

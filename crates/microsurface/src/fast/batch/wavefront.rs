@@ -96,8 +96,10 @@ fn ggx_vndf_lane<F: Real>(w: [F; 3], ax: F, ay: F, u: [F; 2]) -> ([F; 3], bool) 
     let (x, y, z) = (x * inv, y * inv, wz * inv);
     let (c, sn) = cos_sin_turn_f(u[0]);
     let above = (F::ONE - u[1]) * (F::ONE + z);
-    let cz = above - z;
-    let sin = (F::ONE - cz * cz).max(F::ZERO).sqrt();
+    // sin²θ without the cancellation at the cap's poles, as the scalar sampler.
+    let sin = (u[1] * (above * (F::ONE + z) + (x * x + y * y)))
+        .max(F::ZERO)
+        .sqrt();
     let (hx, hy, hz) = (ax * (sin * c + x), ay * (sin * sn + y), above);
     let inv = F::ONE / (hx * hx + hy * hy + hz * hz).sqrt();
     let m = [hx * inv, hy * inv, hz * inv];
