@@ -83,7 +83,7 @@ use std::fmt;
 use std::sync::{mpsc, Mutex};
 
 /// The WGSL library, one source: `wgsl/common.wgsl`, `fresnel.wgsl`, `ggx.wgsl`,
-/// `microfacet.wgsl`, `conductor.wgsl`, `dielectric.wgsl`, in that order.
+/// `microfacet.wgsl`, `conductor.wgsl`, `dielectric.wgsl`, `compensation.wgsl`, in that order.
 pub const WGSL: &str = concat!(
     include_str!("../wgsl/common.wgsl"),
     "\n",
@@ -96,6 +96,8 @@ pub const WGSL: &str = concat!(
     include_str!("../wgsl/conductor.wgsl"),
     "\n",
     include_str!("../wgsl/dielectric.wgsl"),
+    "\n",
+    include_str!("../wgsl/compensation.wgsl"),
 );
 
 /// The test kernels (`wgsl/kernels.wgsl`): compute entry points over records of five
