@@ -61,6 +61,10 @@ struct MsDielectric {
     uint transport;
     char _pad4[4];
 };
+struct MsLutTap {
+    uint i;
+    float f;
+};
 typedef metal::float4 type_10[1];
 constant float MS_PI = 3.1415927;
 constant float MS_TAU = 6.2831855;
@@ -109,33 +113,33 @@ metal::float2 ms_cos_sin_turn(
     float v
 ) {
     float k_3 = metal::rint(4.0 * v);
-    float r = v - (0.25 * k_3);
-    float x_4 = MS_TAU * r;
-    float x2_ = x_4 * x_4;
-    float s_3 = x_4 * (1.0 + (x2_ * (-0.16666667 + (x2_ * (0.008333333 + (x2_ * (-0.0001984127 + (x2_ * 0.0000027557319))))))));
-    float c_7 = 1.0 + (x2_ * (-0.5 + (x2_ * (0.041666668 + (x2_ * (-0.0013888889 + (x2_ * (0.000024801588 + (x2_ * -0.0000002755732)))))))));
+    float r_1 = v - (0.25 * k_3);
+    float x_5 = MS_TAU * r_1;
+    float x2_ = x_5 * x_5;
+    float s_3 = x_5 * (1.0 + (x2_ * (-0.16666667 + (x2_ * (0.008333333 + (x2_ * (-0.0001984127 + (x2_ * 0.0000027557319))))))));
+    float c_9 = 1.0 + (x2_ * (-0.5 + (x2_ * (0.041666668 + (x2_ * (-0.0013888889 + (x2_ * (0.000024801588 + (x2_ * -0.0000002755732)))))))));
     int q = naga_f2i32(k_3) & 3;
     if (q == 0) {
-        return metal::float2(c_7, s_3);
+        return metal::float2(c_9, s_3);
     } else {
         if (q == 1) {
-            return metal::float2(-(s_3), c_7);
+            return metal::float2(-(s_3), c_9);
         } else {
             if (q == 2) {
-                return metal::float2(-(c_7), -(s_3));
+                return metal::float2(-(c_9), -(s_3));
             }
         }
     }
-    return metal::float2(s_3, -(c_7));
+    return metal::float2(s_3, -(c_9));
 }
 
 metal::float3 ms_rescaled(
     metal::float3 a
 ) {
     bool local = {};
-    float m_3 = metal::max(metal::abs(a.x), metal::max(metal::abs(a.y), metal::abs(a.z)));
-    if (m_3 > 0.0) {
-        local = m_3 <= 340282350000000000000000000000000000000.0;
+    float m_4 = metal::max(metal::abs(a.x), metal::max(metal::abs(a.y), metal::abs(a.z)));
+    if (m_4 > 0.0) {
+        local = m_4 <= 340282350000000000000000000000000000000.0;
     } else {
         local = false;
     }
@@ -143,7 +147,7 @@ metal::float3 ms_rescaled(
     if (!(_e16)) {
         return a;
     }
-    return a / metal::float3(m_3);
+    return a / metal::float3(m_4);
 }
 
 float ms_dot(
@@ -180,9 +184,9 @@ metal::float3 ms_unit(
     if (metal::abs(_e1 - 1.0) <= 0.000001) {
         return w;
     }
-    float m_4 = metal::max(metal::abs(w.x), metal::max(metal::abs(w.y), metal::abs(w.z)));
-    if (m_4 > 0.0) {
-        local_2 = m_4 <= 340282350000000000000000000000000000000.0;
+    float m_5 = metal::max(metal::abs(w.x), metal::max(metal::abs(w.y), metal::abs(w.z)));
+    if (m_5 > 0.0) {
+        local_2 = m_5 <= 340282350000000000000000000000000000000.0;
     } else {
         local_2 = false;
     }
@@ -190,7 +194,7 @@ metal::float3 ms_unit(
     if (!(_e22)) {
         return w;
     }
-    metal::float3 _e27 = ms_normalize(w * (1.0 / m_4));
+    metal::float3 _e27 = ms_normalize(w * (1.0 / m_5));
     return _e27;
 }
 
@@ -208,11 +212,11 @@ metal::float3 ms_unit_normal(
     if (_e9) {
         return v_1 * (1.0 / metal::sqrt(_e1));
     }
-    float m_5 = metal::max(metal::abs(v_1.x), metal::max(metal::abs(v_1.y), metal::abs(v_1.z)));
-    if (m_5 == 0.0) {
+    float m_6 = metal::max(metal::abs(v_1.x), metal::max(metal::abs(v_1.y), metal::abs(v_1.z)));
+    if (m_6 == 0.0) {
         return metal::float3(0.0, 0.0, 1.0);
     }
-    metal::float3 s_4 = v_1 / metal::float3(m_5);
+    metal::float3 s_4 = v_1 / metal::float3(m_6);
     float _e30 = ms_dot(s_4, s_4);
     return s_4 * (1.0 / metal::sqrt(_e30));
 }
@@ -369,8 +373,8 @@ metal::float4 ms_refract(
     metal::float3 _e22 = n_1;
     metal::float3 _e23 = n_1;
     float _e24 = ms_dot(t0_, _e23);
-    metal::float3 t_1 = t0_ + (_e22 * -(_e24));
-    float _e28 = ms_dot(t_1, t_1);
+    metal::float3 t_2 = t0_ + (_e22 * -(_e24));
+    float _e28 = ms_dot(t_2, t_2);
     float _e29 = eta_1;
     float _e30 = eta_1;
     float sin2_t = _e28 / (_e29 * _e30);
@@ -381,7 +385,7 @@ metal::float4 ms_refract(
     float _e41 = eta_1;
     metal::float3 _e45 = n_1;
     float _e49 = eta_1;
-    return metal::float4((t_1 * (-1.0 / _e41)) + (_e45 * -(cos_t)), _e49);
+    return metal::float4((t_2 * (-1.0 / _e41)) + (_e45 * -(cos_t)), _e49);
 }
 
 float ms_fresnel_dielectric(
@@ -403,31 +407,31 @@ float ms_fresnel_dielectric(
         eta_2 = 1.0 / _e9;
     }
     float _e12 = cos_i_1;
-    float c_8 = metal::min(_e12, 1.0);
+    float c_10 = metal::min(_e12, 1.0);
     float _e15 = eta_2;
     if (_e15 == 1.0) {
         return 0.0;
     }
-    if (c_8 == 0.0) {
+    if (c_10 == 0.0) {
         return 1.0;
     }
     float _e24 = eta_2;
     if (_e24 > 1000000000000000000.0) {
         float _e27 = eta_2;
         float e_1 = 1.0 / _e27;
-        float cos_t_1 = metal::sqrt(((1.0 - e_1) * (1.0 + e_1)) + ((c_8 * e_1) * (c_8 * e_1)));
-        r_parl = (c_8 - (e_1 * cos_t_1)) / (c_8 + (e_1 * cos_t_1));
-        r_perp = ((e_1 * c_8) - cos_t_1) / ((e_1 * c_8) + cos_t_1);
+        float cos_t_1 = metal::sqrt(((1.0 - e_1) * (1.0 + e_1)) + ((c_10 * e_1) * (c_10 * e_1)));
+        r_parl = (c_10 - (e_1 * cos_t_1)) / (c_10 + (e_1 * cos_t_1));
+        r_perp = ((e_1 * c_10) - cos_t_1) / ((e_1 * c_10) + cos_t_1);
     } else {
         float _e51 = eta_2;
         if (_e51 > 1.0) {
             float _e54 = eta_2;
             float _e57 = eta_2;
-            ect2_ = ((_e54 - 1.0) * (_e57 + 1.0)) + (c_8 * c_8);
+            ect2_ = ((_e54 - 1.0) * (_e57 + 1.0)) + (c_10 * c_10);
         } else {
             float _e63 = eta_2;
             float _e64 = eta_2;
-            ect2_ = (_e63 * _e64) - ((1.0 - c_8) * (1.0 + c_8));
+            ect2_ = (_e63 * _e64) - ((1.0 - c_10) * (1.0 + c_10));
         }
         float _e72 = ect2_;
         if (_e72 <= 0.0) {
@@ -437,9 +441,9 @@ float ms_fresnel_dielectric(
         float ect = metal::sqrt(_e76);
         float _e78 = eta_2;
         float _e79 = eta_2;
-        float e2c = (_e78 * _e79) * c_8;
+        float e2c = (_e78 * _e79) * c_10;
         r_parl = (e2c - ect) / (e2c + ect);
-        r_perp = (c_8 - ect) / (c_8 + ect);
+        r_perp = (c_10 - ect) / (c_10 + ect);
     }
     float _e88 = r_parl;
     float _e89 = r_parl;
@@ -483,13 +487,13 @@ metal::float2 ms_crecip(
     metal::float2 a_7
 ) {
     if (metal::abs(a_7.x) >= metal::abs(a_7.y)) {
-        float r_1 = a_7.y / a_7.x;
-        float d_9 = a_7.x + (a_7.y * r_1);
-        return metal::float2(1.0 / d_9, -(r_1) / d_9);
+        float r_2 = a_7.y / a_7.x;
+        float d_9 = a_7.x + (a_7.y * r_2);
+        return metal::float2(1.0 / d_9, -(r_2) / d_9);
     }
-    float r_2 = a_7.x / a_7.y;
-    float d_10 = (a_7.x * r_2) + a_7.y;
-    return metal::float2(r_2 / d_10, -1.0 / d_10);
+    float r_3 = a_7.x / a_7.y;
+    float d_10 = (a_7.x * r_3) + a_7.y;
+    return metal::float2(r_3 / d_10, -1.0 / d_10);
 }
 
 metal::float2 ms_csqrt(
@@ -497,20 +501,20 @@ metal::float2 ms_csqrt(
 ) {
     float s_1 = {};
     float _e1 = ms_cnorm(a_8);
-    float r_3 = metal::sqrt(_e1);
-    if (r_3 == 0.0) {
+    float r_4 = metal::sqrt(_e1);
+    if (r_4 == 0.0) {
         return metal::float2(0.0);
     }
-    float t_2 = metal::sqrt((r_3 + metal::abs(a_8.x)) * 0.5);
+    float t_3 = metal::sqrt((r_4 + metal::abs(a_8.x)) * 0.5);
     if (a_8.x >= 0.0) {
-        return metal::float2(t_2, a_8.y / (t_2 + t_2));
+        return metal::float2(t_3, a_8.y / (t_3 + t_3));
     }
-    s_1 = t_2;
+    s_1 = t_3;
     if (a_8.y < 0.0) {
-        s_1 = -(t_2);
+        s_1 = -(t_3);
     }
     float _e29 = s_1;
-    return metal::float2(metal::abs(a_8.y) / (t_2 + t_2), _e29);
+    return metal::float2(metal::abs(a_8.y) / (t_3 + t_3), _e29);
 }
 
 float ms_fresnel_conductor(
@@ -540,11 +544,11 @@ float ms_fresnel_conductor(
     if (_e25) {
         return 1.0;
     }
-    metal::float2 n_2 = metal::float2(eta_3, k);
+    metal::float2 n_3 = metal::float2(eta_3, k);
     float sin2_i = (1.0 - cos_i_5) * (1.0 + cos_i_5);
     metal::float2 ci = metal::float2(cos_i_5, 0.0);
     if (metal::max(metal::abs(eta_3), metal::abs(k)) > 1000000000000000000.0) {
-        metal::float2 _e40 = ms_crecip(n_2);
+        metal::float2 _e40 = ms_crecip(n_3);
         metal::float2 _e41 = ms_cmul(_e40, _e40);
         metal::float2 sin2_t_1 = _e41 * sin2_i;
         metal::float2 _e49 = ms_csqrt(metal::float2(1.0 - sin2_t_1.x, -(sin2_t_1.y)));
@@ -554,8 +558,8 @@ float ms_fresnel_conductor(
         float _e57 = ms_cnorm_ratio(ci_m - _e49, ci_m + _e49);
         return metal::min(0.5 * (_e54 + _e57), 1.0);
     }
-    metal::float2 _e63 = ms_cmul(n_2, n_2);
-    float _e65 = ms_cnorm(n_2);
+    metal::float2 _e63 = ms_cmul(n_3, n_3);
+    float _e65 = ms_cnorm(n_3);
     if (_e65 >= 1.0) {
         metal::float2 _e74 = ms_cmul(metal::float2(eta_3 - 1.0, k), metal::float2(eta_3 + 1.0, k));
         w_2 = _e74 + metal::float2(cos_i_5 * cos_i_5, 0.0);
@@ -566,8 +570,8 @@ float ms_fresnel_conductor(
     metal::float2 _e83 = ms_crecip(_e63);
     metal::float2 _e84 = ms_cmul(_e82, _e83);
     metal::float2 _e85 = ms_csqrt(_e84);
-    metal::float2 n_ci = n_2 * cos_i_5;
-    metal::float2 _e87 = ms_cmul(n_2, _e85);
+    metal::float2 n_ci = n_3 * cos_i_5;
+    metal::float2 _e87 = ms_cmul(n_3, _e85);
     float _e90 = ms_cnorm_ratio(n_ci - _e85, n_ci + _e85);
     float _e93 = ms_cnorm_ratio(ci - _e87, ci + _e87);
     return metal::min(0.5 * (_e90 + _e93), 1.0);
@@ -577,9 +581,9 @@ float ms_fresnel_schlick(
     float cos_i_2,
     float f0_
 ) {
-    float m_6 = 1.0 - metal::min(metal::max(cos_i_2, 0.0), 1.0);
-    float m2_ = m_6 * m_6;
-    return f0_ + ((1.0 - f0_) * ((m2_ * m2_) * m_6));
+    float m_7 = 1.0 - metal::min(metal::max(cos_i_2, 0.0), 1.0);
+    float m2_ = m_7 * m_7;
+    return f0_ + ((1.0 - f0_) * ((m2_ * m2_) * m_7));
 }
 
 float ms_fresnel_f82_tint(
@@ -588,11 +592,11 @@ float ms_fresnel_f82_tint(
     float h
 ) {
     float mu = metal::min(metal::max(cos_i_3, 0.0), 1.0);
-    float m_7 = 1.0 - mu;
-    float m5_ = (((m_7 * m_7) * m_7) * m_7) * m_7;
+    float m_8 = 1.0 - mu;
+    float m5_ = (((m_8 * m_8) * m_8) * m_8) * m_8;
     float a_12 = ((f0_1 + ((1.0 - f0_1) * 0.46266437)) * (1.0 - h)) / 0.05665278;
-    float r_4 = (f0_1 + ((1.0 - f0_1) * m5_)) - (((a_12 * mu) * m5_) * m_7);
-    return metal::min(metal::max(r_4, 0.0), 1.0);
+    float r_5 = (f0_1 + ((1.0 - f0_1) * m5_)) - (((a_12 * mu) * m5_) * m_8);
+    return metal::min(metal::max(r_5, 0.0), 1.0);
 }
 
 metal::float3 ms_fresnel_eval(
@@ -639,40 +643,40 @@ float ms_ggx_d(
     if (!((z_1 > 0.0))) {
         return 0.0;
     }
-    float x_5 = wm_2.x / alpha.x;
+    float x_6 = wm_2.x / alpha.x;
     float y = wm_2.y / alpha.y;
-    float t_3 = ((x_5 * x_5) + (y * y)) + (z_1 * z_1);
-    return 1.0 / ((((MS_PI * alpha.x) * alpha.y) * t_3) * t_3);
+    float t_4 = ((x_6 * x_6) + (y * y)) + (z_1 * z_1);
+    return 1.0 / ((((MS_PI * alpha.x) * alpha.y) * t_4) * t_4);
 }
 
 float ms_ggx_lambda(
     metal::float3 w_3,
     metal::float2 alpha_1
 ) {
-    float x_6 = alpha_1.x * w_3.x;
+    float x_7 = alpha_1.x * w_3.x;
     float y_1 = alpha_1.y * w_3.y;
     float z_2 = metal::abs(w_3.z);
-    float t_4 = (x_6 * x_6) + (y_1 * y_1);
+    float t_5 = (x_7 * x_7) + (y_1 * y_1);
     float z2_ = z_2 * z_2;
-    float den = 2.0 * (z2_ + (z_2 * metal::sqrt(z2_ + t_4)));
+    float den = 2.0 * (z2_ + (z_2 * metal::sqrt(z2_ + t_5)));
     if (!((den > 0.0))) {
         if (z_2 == 0.0) {
             float _e25 = ms_inf();
             return _e25;
         }
-        return (t_4 / (z_2 + metal::sqrt((z_2 * z_2) + t_4))) / (z_2 + z_2);
+        return (t_5 / (z_2 + metal::sqrt((z_2 * z_2) + t_5))) / (z_2 + z_2);
     }
-    return t_4 / den;
+    return t_5 / den;
 }
 
 float ms_ggx_g1_(
     metal::float3 w_4,
     metal::float2 alpha_2
 ) {
-    float x_7 = alpha_2.x * w_4.x;
+    float x_8 = alpha_2.x * w_4.x;
     float y_2 = alpha_2.y * w_4.y;
     float z_3 = metal::abs(w_4.z);
-    float den_1 = z_3 + metal::sqrt((z_3 * z_3) + ((x_7 * x_7) + (y_2 * y_2)));
+    float den_1 = z_3 + metal::sqrt((z_3 * z_3) + ((x_8 * x_8) + (y_2 * y_2)));
     if (!((den_1 > 0.0))) {
         return 0.0;
     }
@@ -735,10 +739,10 @@ float ms_ggx_pdf(
     float len_1 = metal::sqrt(((sx * sx) + (sy * sy)) + (z_4 * z_4));
     float mx = wm_3.x / alpha_5.x;
     float my = wm_3.y / alpha_5.y;
-    float t_5 = ((mx * mx) + (my * my)) + (wm_3.z * wm_3.z);
+    float t_6 = ((mx * mx) + (my * my)) + (wm_3.z * wm_3.z);
     float _e55 = c;
     float _e56 = c;
-    return (_e55 + _e56) / (((((MS_PI * alpha_5.x) * alpha_5.y) * t_5) * t_5) * (z_4 + len_1));
+    return (_e55 + _e56) / (((((MS_PI * alpha_5.x) * alpha_5.y) * t_6) * t_6) * (z_4 + len_1));
 }
 
 metal::float3 ms_ggx_cap_normal(
@@ -748,15 +752,15 @@ metal::float3 ms_ggx_cap_normal(
     float len
 ) {
     float inv = 1.0 / len;
-    float x_8 = (alpha_6.x * w_6.x) * inv;
+    float x_9 = (alpha_6.x * w_6.x) * inv;
     float y_3 = (alpha_6.y * w_6.y) * inv;
     float z_5 = w_6.z * inv;
     metal::float2 _e17 = ms_cos_sin_turn(u.x);
     float above = (1.0 - u.y) * (1.0 + z_5);
-    float sin = metal::sqrt(metal::max(u.y * ((above * (1.0 + z_5)) + ((x_8 * x_8) + (y_3 * y_3))), 0.0));
-    metal::float3 h_1 = metal::float3(alpha_6.x * ((sin * _e17.x) + x_8), alpha_6.y * ((sin * _e17.y) + y_3), above);
-    float n_3 = 1.0 / metal::sqrt(((h_1.x * h_1.x) + (h_1.y * h_1.y)) + (h_1.z * h_1.z));
-    return h_1 * n_3;
+    float sin = metal::sqrt(metal::max(u.y * ((above * (1.0 + z_5)) + ((x_9 * x_9) + (y_3 * y_3))), 0.0));
+    metal::float3 h_1 = metal::float3(alpha_6.x * ((sin * _e17.x) + x_9), alpha_6.y * ((sin * _e17.y) + y_3), above);
+    float n_4 = 1.0 / metal::sqrt(((h_1.x * h_1.x) + (h_1.y * h_1.y)) + (h_1.z * h_1.z));
+    return h_1 * n_4;
 }
 
 metal::float3 ms_ggx_sample_wm(
@@ -837,8 +841,8 @@ MsSample ms_ggx_sample_dcos(
     metal::float2 u_3
 ) {
     metal::float2 _e3 = ms_cos_sin_turn(u_3.y);
-    float r_5 = metal::sqrt(u_3.x);
-    metal::float3 _e21 = ms_unit_normal(metal::float3((alpha_10.x * r_5) * _e3.x, (alpha_10.y * r_5) * _e3.y, metal::sqrt(metal::max(1.0 - u_3.x, 0.0))));
+    float r_6 = metal::sqrt(u_3.x);
+    metal::float3 _e21 = ms_unit_normal(metal::float3((alpha_10.x * r_6) * _e3.x, (alpha_10.y * r_6) * _e3.y, metal::sqrt(metal::max(1.0 - u_3.x, 0.0))));
     float _e22 = ms_ggx_d(_e21, alpha_10);
     return MsSample {_e21, _e22 * _e21.z};
 }
@@ -910,8 +914,8 @@ MsSample ms_ggx_sample_bounded(
     float above_1 = (1.0 - u_4.y) * (1.0 + b_5);
     float one_minus_b = (((_e4.ws[0] * _e4.ws[0]) + (_e4.ws[1] * _e4.ws[1])) / (1.0 + _e4.ws[2])) + _e4.top;
     float sin_1 = metal::sqrt(metal::max((u_4.y * (1.0 + b_5)) * (above_1 + one_minus_b), 0.0));
-    metal::float3 m_8 = metal::float3((sin_1 * _e8.x) + _e4.ws[0], (sin_1 * _e8.y) + _e4.ws[1], above_1 + _e4.top);
-    metal::float3 _e58 = ms_normalize(metal::float3(alpha_13.x * m_8.x, alpha_13.y * m_8.y, metal::max(m_8.z, 0.0)));
+    metal::float3 m_9 = metal::float3((sin_1 * _e8.x) + _e4.ws[0], (sin_1 * _e8.y) + _e4.ws[1], above_1 + _e4.top);
+    metal::float3 _e58 = ms_normalize(metal::float3(alpha_13.x * m_9.x, alpha_13.y * m_9.y, metal::max(m_9.z, 0.0)));
     metal::float3 _e59 = ms_facing(_e58, _e3);
     float _e60 = ms_ggx_pdf_bounded(_e3, _e59, alpha_13);
     return MsSample {_e59, _e60};
@@ -928,12 +932,12 @@ float ms_ggx_pdf_bounded_reflection(
         return 0.0;
     }
     float _e7 = ms_dot(wo_8, _e3);
-    float c_9 = metal::abs(_e7);
-    if (!((c_9 > 0.0))) {
+    float c_11 = metal::abs(_e7);
+    if (!((c_11 > 0.0))) {
         return 0.0;
     }
     float _e13 = ms_ggx_pdf_bounded(wo_8, _e3, alpha_14);
-    return _e13 / (4.0 * c_9);
+    return _e13 / (4.0 * c_11);
 }
 
 metal::float2 ms_bk_segment(
@@ -968,8 +972,8 @@ float ms_bk_erfcx(
         return 1.0 - (1.1283792 * x_1);
     }
     if (x_1 >= 32.0) {
-        float r_6 = 1.0 / (x_1 * x_1);
-        return ((1.0 - (r_6 * (0.5 - (r_6 * (0.75 - (r_6 * (1.875 - (r_6 * 6.5625)))))))) * MS_FRAC_1_SQRT_PI) / x_1;
+        float r_7 = 1.0 / (x_1 * x_1);
+        return ((1.0 - (r_7 * (0.5 - (r_7 * (0.75 - (r_7 * (1.875 - (r_7 * 6.5625)))))))) * MS_FRAC_1_SQRT_PI) / x_1;
     }
     metal::float2 _e30 = ms_bk_segment(x_1, MS_BK_ERFCX_K0_, MS_BK_ERFCX_K1_);
     uint i_2 = 2u * naga_f2u32(_e30.x);
@@ -987,8 +991,8 @@ float ms_bk_erfc_ratio(
         return 1.0 - (MS_SQRT_PI * a_9);
     }
     if (a_9 >= 32.0) {
-        float r_7 = 1.0 / (a_9 * a_9);
-        return r_7 * (0.5 - (r_7 * (0.75 - (r_7 * (1.875 - (r_7 * (6.5625 - (r_7 * 29.53125))))))));
+        float r_8 = 1.0 / (a_9 * a_9);
+        return r_8 * (0.5 - (r_8 * (0.75 - (r_8 * (1.875 - (r_8 * (6.5625 - (r_8 * 29.53125))))))));
     }
     metal::float2 _e28 = ms_bk_segment(a_9, MS_BK_ERFC_RATIO_K0_, MS_BK_ERFC_RATIO_K1_);
     uint i_3 = 2u * naga_f2u32(_e28.x);
@@ -1040,10 +1044,10 @@ float ms_bk_ln_1m(
     if (xi > 0.5) {
         return metal::log(1.0 - xi);
     }
-    float t_6 = -(xi) / (2.0 - xi);
-    float t2_ = t_6 * t_6;
+    float t_7 = -(xi) / (2.0 - xi);
+    float t2_ = t_7 * t_7;
     float p = 1.0 + (t2_ * (0.33333334 + (t2_ * (0.2 + (t2_ * (0.14285715 + (t2_ * (0.11111111 + (t2_ * (0.09090909 + (t2_ * (0.07692308 + (t2_ * 0.06666667)))))))))))));
-    return (2.0 * t_6) * p;
+    return (2.0 * t_7) * p;
 }
 
 float ms_beckmann_d(
@@ -1052,9 +1056,9 @@ float ms_beckmann_d(
 ) {
     bool local_9 = {};
     float z_6 = wm_6.z;
-    float r_8 = 1.0 / (alpha_15.x * alpha_15.y);
-    float x_9 = (wm_6.x * alpha_15.y) * r_8;
-    float y_4 = (wm_6.y * alpha_15.x) * r_8;
+    float r_9 = 1.0 / (alpha_15.x * alpha_15.y);
+    float x_10 = (wm_6.x * alpha_15.y) * r_9;
+    float y_4 = (wm_6.y * alpha_15.x) * r_9;
     float z2_1 = z_6 * z_6;
     if (z_6 > 0.0) {
         local_9 = z2_1 > 0.0;
@@ -1065,11 +1069,11 @@ float ms_beckmann_d(
     if (!(_e24)) {
         return 0.0;
     }
-    float e_2 = ((x_9 * x_9) + (y_4 * y_4)) / z2_1;
+    float e_2 = ((x_10 * x_10) + (y_4 * y_4)) / z2_1;
     if (e_2 <= 80.0) {
-        return (metal::exp(-(e_2)) * r_8) / ((MS_PI * z2_1) * z2_1);
+        return (metal::exp(-(e_2)) * r_9) / ((MS_PI * z2_1) * z2_1);
     }
-    return metal::exp(((metal::log(r_8) - 1.14473) - (4.0 * metal::log(z_6))) - e_2);
+    return metal::exp(((metal::log(r_9) - 1.14473) - (4.0 * metal::log(z_6))) - e_2);
 }
 
 float ms_beckmann_lambda_cot(
@@ -1092,9 +1096,9 @@ float ms_beckmann_lambda(
     metal::float2 alpha_16,
     thread type_7& MS_BK_ERFC_RATIO
 ) {
-    float x_10 = alpha_16.x * w_10.x;
+    float x_11 = alpha_16.x * w_10.x;
     float y_5 = alpha_16.y * w_10.y;
-    float s_9 = metal::sqrt((x_10 * x_10) + (y_5 * y_5));
+    float s_9 = metal::sqrt((x_11 * x_11) + (y_5 * y_5));
     if (!((s_9 > 0.0))) {
         return 0.0;
     }
@@ -1198,11 +1202,11 @@ MsSample ms_beckmann_sample_dcos(
         v_3 = metal::float3(alpha_22.x * _e3.x, alpha_22.y * _e3.y, 0.0);
     } else {
         float _e17 = ms_bk_ln_1m(u_6.x);
-        float r_9 = metal::sqrt(-(_e17));
-        if (r_9 > 1.0) {
-            v_3 = metal::float3(alpha_22.x * _e3.x, alpha_22.y * _e3.y, 1.0 / r_9);
+        float r_10 = metal::sqrt(-(_e17));
+        if (r_10 > 1.0) {
+            v_3 = metal::float3(alpha_22.x * _e3.x, alpha_22.y * _e3.y, 1.0 / r_10);
         } else {
-            v_3 = metal::float3((alpha_22.x * r_9) * _e3.x, (alpha_22.y * r_9) * _e3.y, 1.0);
+            v_3 = metal::float3((alpha_22.x * r_10) * _e3.x, (alpha_22.y * r_10) * _e3.y, 1.0);
         }
     }
     metal::float3 _e41 = v_3;
@@ -1370,14 +1374,14 @@ metal::float3 ms_beckmann_sample_wm(
     float _e14 = sign_1;
     float sy_1 = (_e14 * alpha_23.y) * w_13.y;
     float _e19 = sign_1;
-    float c_10 = _e19 * w_13.z;
+    float c_12 = _e19 * w_13.z;
     float h_2 = metal::sqrt((sx_1 * sx_1) + (sy_1 * sy_1));
     float _e27 = ms_bk_quantile(u_8.y, MS_BK_ERFINV_Q, MS_BK_ERFINV_W);
     if (h_2 > 0.0) {
         float inv_1 = 1.0 / h_2;
         cp = sx_1 * inv_1;
         sp = sy_1 * inv_1;
-        float _e41 = ms_bk_visible_x(c_10 * inv_1, u_8.x, MS_BK_ERFCX, MS_BK_ERFINV_Q, MS_BK_ERFINV_W);
+        float _e41 = ms_bk_visible_x(c_12 * inv_1, u_8.x, MS_BK_ERFCX, MS_BK_ERFINV_Q, MS_BK_ERFINV_W);
         x_3 = _e41;
     } else {
         float _e43 = ms_bk_quantile(u_8.x, MS_BK_ERFINV_Q, MS_BK_ERFINV_W);
@@ -1391,8 +1395,8 @@ metal::float3 ms_beckmann_sample_wm(
     float _e54 = x_3;
     float _e56 = cp;
     float q_2 = alpha_23.y * ((_e53 * _e54) + (_e56 * _e27));
-    float n_4 = 1.0 / metal::sqrt(((p_1 * p_1) + (q_2 * q_2)) + 1.0);
-    metal::float3 _e71 = ms_facing(metal::float3(p_1 * n_4, q_2 * n_4, n_4), w_13);
+    float n_5 = 1.0 / metal::sqrt(((p_1 * p_1) + (q_2 * q_2)) + 1.0);
+    metal::float3 _e71 = ms_facing(metal::float3(p_1 * n_5, q_2 * n_5, n_5), w_13);
     return _e71;
 }
 
@@ -1710,10 +1714,10 @@ MsBsdfSample ms_conductor_sample(
     }
     bool _e15 = ms_effectively_smooth(c_6.mf);
     if (_e15) {
-        metal::float3 wi_24 = metal::float3(-(wo_19.x), -(wo_19.y), wo_19.z);
-        float k_5 = 1.0 / metal::abs(wi_24.z);
+        metal::float3 wi_26 = metal::float3(-(wo_19.x), -(wo_19.y), wo_19.z);
+        float k_5 = 1.0 / metal::abs(wi_26.z);
         metal::float3 _e29 = ms_fresnel_eval(c_6.fresnel, metal::abs(wo_19.z));
-        return MsBsdfSample {wi_24, 1.0, _e29 * k_5, 3u, 1.0};
+        return MsBsdfSample {wi_26, 1.0, _e29 * k_5, 3u, 1.0};
     }
     MsSample _e36 = ms_sample(c_6.mf, wo_19, u_12, MS_BK_ERFCX, MS_BK_ERFC_RATIO, MS_BK_ERFINV_Q, MS_BK_ERFINV_W);
     metal::float3 _e38 = ms_reflect(wo_19, _e36.wm);
@@ -1912,27 +1916,27 @@ MsBsdfSample ms_dielectric_sample_smooth(
     float f_2 = {};
     float _e5 = ms_fresnel_dielectric(wo_25.z, d_7.eta);
     if (uc_1 < _e5) {
-        metal::float3 wi_25 = metal::float3(-(wo_25.x), -(wo_25.y), wo_25.z);
-        return MsBsdfSample {wi_25, _e5, metal::float3(_e5 / metal::abs(wi_25.z)), 3u, 1.0};
+        metal::float3 wi_27 = metal::float3(-(wo_25.x), -(wo_25.y), wo_25.z);
+        return MsBsdfSample {wi_27, _e5, metal::float3(_e5 / metal::abs(wi_27.z)), 3u, 1.0};
     }
     MsBsdfSample none_2 = MsBsdfSample {metal::float3(0.0), 0.0, metal::float3(0.0), 0u, 1.0};
     metal::float4 _e33 = ms_refract(wo_25, metal::float3(0.0, 0.0, 1.0), d_7.eta);
     if (_e33.w == 0.0) {
         return none_2;
     }
-    metal::float3 wi_26 = _e33.xyz;
-    bool _e39 = ms_on_horizon(wi_26.z);
+    metal::float3 wi_28 = _e33.xyz;
+    bool _e39 = ms_on_horizon(wi_28.z);
     if (_e39) {
         return none_2;
     }
-    float t_7 = 1.0 - _e5;
-    f_2 = t_7 / metal::abs(wi_26.z);
+    float t_8 = 1.0 - _e5;
+    f_2 = t_8 / metal::abs(wi_28.z);
     if (d_7.transport == MS_TRANSPORT_RADIANCE) {
         float _e49 = f_2;
         f_2 = _e49 / (_e33.w * _e33.w);
     }
     float _e54 = f_2;
-    return MsBsdfSample {wi_26, t_7, metal::float3(_e54), 7u, _e33.w};
+    return MsBsdfSample {wi_28, t_8, metal::float3(_e54), 7u, _e33.w};
 }
 
 MsBsdfSample ms_dielectric_sample(
@@ -2000,11 +2004,11 @@ MsBsdfSample ms_dielectric_sample(
     if (_e62.w == 0.0) {
         return none_3;
     }
-    metal::float3 wi_27 = _e62.xyz;
+    metal::float3 wi_29 = _e62.xyz;
     float etap_6 = _e62.w;
-    bool _e68 = ms_same_hemisphere(wo_26, wi_27);
+    bool _e68 = ms_same_hemisphere(wo_26, wi_29);
     if (!(_e68)) {
-        bool _e73 = ms_on_horizon(wi_27.z);
+        bool _e73 = ms_on_horizon(wi_29.z);
         local_24 = _e73;
     } else {
         local_24 = true;
@@ -2013,15 +2017,15 @@ MsBsdfSample ms_dielectric_sample(
     if (_e75) {
         return none_3;
     }
-    float t_8 = 1.0 - _e21;
-    float _e80 = ms_jacobian_refraction(wo_26, wi_27, wm_15, etap_6);
-    float pdf_2 = (_e17.pdf * t_8) * _e80;
+    float t_9 = 1.0 - _e21;
+    float _e80 = ms_jacobian_refraction(wo_26, wi_29, wm_15, etap_6);
+    float pdf_2 = (_e17.pdf * t_9) * _e80;
     float _e83 = ms_d(d_8.mf, wm_15);
     bool _e84 = ms_usable(_e83);
     if (!(_e84)) {
         return none_3;
     }
-    float _e86 = ms_dielectric_f_transmission(d_8, wo_26, wi_27, wm_15, _e83, etap_6, t_8, MS_BK_ERFC_RATIO);
+    float _e86 = ms_dielectric_f_transmission(d_8, wo_26, wi_29, wm_15, _e83, etap_6, t_9, MS_BK_ERFC_RATIO);
     bool _e87 = ms_usable(pdf_2);
     if (!(!(_e87))) {
         local_25 = !((_e86 <= 340282350000000000000000000000000000000.0));
@@ -2032,7 +2036,109 @@ MsBsdfSample ms_dielectric_sample(
     if (_e96) {
         return none_3;
     }
-    return MsBsdfSample {wi_27, pdf_2, metal::float3(_e86), 5u, etap_6};
+    return MsBsdfSample {wi_29, pdf_2, metal::float3(_e86), 5u, etap_6};
+}
+
+MsLutTap ms_lut_tap(
+    float x_4,
+    uint n_2
+) {
+    float t_10 = metal::clamp((x_4 * static_cast<float>(n_2)) - 0.5, 0.0, static_cast<float>(n_2 - 1u));
+    uint i_6 = metal::min(naga_f2u32(metal::floor(t_10)), n_2 - 2u);
+    return MsLutTap {i_6, t_10 - static_cast<float>(i_6)};
+}
+
+uint ms_lut_index(
+    uint ir,
+    uint im,
+    uint n_mu
+) {
+    return (ir * n_mu) + im;
+}
+
+float ms_lut_lerp(
+    MsLutTap t_1,
+    float v0_,
+    float v1_
+) {
+    return ((1.0 - t_1.f) * v0_) + (t_1.f * v1_);
+}
+
+float ms_lut_bilerp(
+    MsLutTap r,
+    MsLutTap m_3,
+    float v00_,
+    float v10_,
+    float v01_,
+    float v11_
+) {
+    float gr = 1.0 - r.f;
+    float gm = 1.0 - m_3.f;
+    return ((((gr * gm) * v00_) + ((r.f * gm) * v10_)) + ((gr * m_3.f) * v01_)) + ((r.f * m_3.f) * v11_);
+}
+
+float ms_lut_roughness_coord(
+    metal::float2 alpha_25,
+    float alpha_max
+) {
+    return metal::sqrt(metal::sqrt(alpha_25.x * alpha_25.y) / alpha_max);
+}
+
+metal::float3 ms_kulla_conty_f_ms(
+    metal::float3 f_avg,
+    float e_avg
+) {
+    return ((f_avg * f_avg) * e_avg) / (metal::float3(1.0) - (f_avg * (1.0 - e_avg)));
+}
+
+float ms_kulla_conty_lobe(
+    float e_o,
+    float e_i,
+    float e_avg_1
+) {
+    float den_3 = MS_PI * (1.0 - e_avg_1);
+    if (!((den_3 > 0.0))) {
+        return 0.0;
+    }
+    return (metal::max(1.0 - e_o, 0.0) * metal::max(1.0 - e_i, 0.0)) / den_3;
+}
+
+metal::float3 ms_conductor_eval_kulla_conty(
+    MsConductor c_7,
+    metal::float3 wo_27,
+    metal::float3 wi_24,
+    float e_o_1,
+    float e_i_1,
+    float e_avg_2,
+    metal::float3 f_ms,
+    thread type_7& MS_BK_ERFC_RATIO
+) {
+    metal::float3 _e7 = ms_conductor_eval(c_7, wo_27, wi_24, MS_BK_ERFC_RATIO);
+    if (!(((wo_27.z * wi_24.z) > 0.0))) {
+        return _e7;
+    }
+    float _e14 = ms_kulla_conty_lobe(e_o_1, e_i_1, e_avg_2);
+    return _e7 + (_e14 * f_ms);
+}
+
+metal::float3 ms_turquin_scale(
+    float e_o_2,
+    metal::float3 f0_2
+) {
+    return metal::float3(1.0) + ((f0_2 * (1.0 - e_o_2)) / metal::float3(e_o_2));
+}
+
+metal::float3 ms_conductor_eval_turquin(
+    MsConductor c_8,
+    metal::float3 wo_28,
+    metal::float3 wi_25,
+    float e_o_3,
+    metal::float3 f0_3,
+    thread type_7& MS_BK_ERFC_RATIO
+) {
+    metal::float3 _e5 = ms_conductor_eval(c_8, wo_28, wi_25, MS_BK_ERFC_RATIO);
+    metal::float3 _e6 = ms_turquin_scale(e_o_3, f0_3);
+    return _e5 * _e6;
 }
 
 uint naga_div(uint lhs, uint rhs) {
@@ -2045,12 +2151,12 @@ uint ms_k_index(
     device type_10 const& ms_in,
     constant _mslBufferSizes& _buffer_sizes
 ) {
-    uint i_6 = id_10.x + ((id_10.y * groups_10.x) * 64u);
-    uint n_5 = naga_div(1 + (_buffer_sizes.size4 - 0 - 16) / 16, MS_K_IN);
-    if (i_6 >= n_5) {
-        return n_5;
+    uint i_7 = id_10.x + ((id_10.y * groups_10.x) * 64u);
+    uint n_6 = naga_div(1 + (_buffer_sizes.size4 - 0 - 16) / 16, MS_K_IN);
+    if (i_7 >= n_6) {
+        return n_6;
     }
-    return i_6;
+    return i_7;
 }
 
 MsConductor ms_k_conductor(
@@ -2094,18 +2200,18 @@ kernel void ms_k_ggx_eval(
     metal::float4 _e12 = ms_in[_e2 * MS_K_IN];
     metal::float2 a_14 = _e12.xy;
     metal::float4 _e20 = ms_in[(_e2 * MS_K_IN) + 1u];
-    metal::float3 wo_27 = _e20.xyz;
+    metal::float3 wo_29 = _e20.xyz;
     metal::float4 _e28 = ms_in[(_e2 * MS_K_IN) + 2u];
     metal::float3 wm_16 = _e28.xyz;
     float _e34 = ms_ggx_d(wm_16, a_14);
-    float _e35 = ms_ggx_lambda(wo_27, a_14);
-    float _e36 = ms_ggx_g1_(wo_27, a_14);
-    float _e37 = ms_ggx_g2_(wo_27, wm_16, a_14);
+    float _e35 = ms_ggx_lambda(wo_29, a_14);
+    float _e36 = ms_ggx_g1_(wo_29, a_14);
+    float _e37 = ms_ggx_g2_(wo_29, wm_16, a_14);
     ms_out[_e2 * MS_K_OUT] = metal::float4(_e34, _e35, _e36, _e37);
-    float _e45 = ms_ggx_g2_separable(wo_27, wm_16, a_14);
-    float _e46 = ms_ggx_pdf(wo_27, wm_16, a_14);
+    float _e45 = ms_ggx_g2_separable(wo_29, wm_16, a_14);
+    float _e46 = ms_ggx_pdf(wo_29, wm_16, a_14);
     float _e47 = ms_ggx_pdf_dcos(wm_16, a_14);
-    float _e48 = ms_ggx_pdf_bounded(wo_27, wm_16, a_14);
+    float _e48 = ms_ggx_pdf_bounded(wo_29, wm_16, a_14);
     ms_out[(_e2 * MS_K_OUT) + 1u] = metal::float4(_e45, _e46, _e47, _e48);
     return;
 }
@@ -2128,18 +2234,18 @@ kernel void ms_k_beckmann_eval(
     metal::float4 _e12 = ms_in[_e2 * MS_K_IN];
     metal::float2 a_15 = _e12.xy;
     metal::float4 _e20 = ms_in[(_e2 * MS_K_IN) + 1u];
-    metal::float3 wo_28 = _e20.xyz;
+    metal::float3 wo_30 = _e20.xyz;
     metal::float4 _e28 = ms_in[(_e2 * MS_K_IN) + 2u];
     metal::float3 wm_17 = _e28.xyz;
     float _e34 = ms_beckmann_d(wm_17, a_15);
-    float _e35 = ms_beckmann_lambda(wo_28, a_15, MS_BK_ERFC_RATIO);
-    float _e36 = ms_beckmann_g1_(wo_28, a_15, MS_BK_ERFC_RATIO);
-    float _e37 = ms_beckmann_g2_(wo_28, wm_17, a_15, MS_BK_ERFC_RATIO);
+    float _e35 = ms_beckmann_lambda(wo_30, a_15, MS_BK_ERFC_RATIO);
+    float _e36 = ms_beckmann_g1_(wo_30, a_15, MS_BK_ERFC_RATIO);
+    float _e37 = ms_beckmann_g2_(wo_30, wm_17, a_15, MS_BK_ERFC_RATIO);
     ms_out[_e2 * MS_K_OUT] = metal::float4(_e34, _e35, _e36, _e37);
-    float _e45 = ms_beckmann_g2_separable(wo_28, wm_17, a_15, MS_BK_ERFC_RATIO);
-    float _e46 = ms_beckmann_pdf(wo_28, wm_17, a_15, MS_BK_ERFC_RATIO);
+    float _e45 = ms_beckmann_g2_separable(wo_30, wm_17, a_15, MS_BK_ERFC_RATIO);
+    float _e46 = ms_beckmann_pdf(wo_30, wm_17, a_15, MS_BK_ERFC_RATIO);
     float _e47 = ms_beckmann_pdf_dcos(wm_17, a_15);
-    float _e50 = ms_pdf(MsMicrofacet {MS_NDF_BECKMANN, {}, a_15}, wo_28, wm_17, MS_BK_ERFC_RATIO);
+    float _e50 = ms_pdf(MsMicrofacet {MS_NDF_BECKMANN, {}, a_15}, wo_30, wm_17, MS_BK_ERFC_RATIO);
     ms_out[(_e2 * MS_K_OUT) + 1u] = metal::float4(_e45, _e46, _e47, _e50);
     return;
 }
@@ -2164,8 +2270,8 @@ kernel void ms_k_beckmann_sample(
     }
     metal::float4 r0_2 = ms_in[_e2 * MS_K_IN];
     metal::float4 _e19 = ms_in[(_e2 * MS_K_IN) + 1u];
-    metal::float3 wo_29 = _e19.xyz;
-    MsSample _e25 = ms_sample(MsMicrofacet {MS_NDF_BECKMANN, {}, r0_2.xy}, wo_29, r0_2.zw, MS_BK_ERFCX, MS_BK_ERFC_RATIO, MS_BK_ERFINV_Q, MS_BK_ERFINV_W);
+    metal::float3 wo_31 = _e19.xyz;
+    MsSample _e25 = ms_sample(MsMicrofacet {MS_NDF_BECKMANN, {}, r0_2.xy}, wo_31, r0_2.zw, MS_BK_ERFCX, MS_BK_ERFC_RATIO, MS_BK_ERFINV_Q, MS_BK_ERFINV_W);
     MsSample _e28 = ms_beckmann_sample_dcos(r0_2.xy, r0_2.zw);
     ms_out[_e2 * MS_K_OUT] = metal::float4(_e25.wm, _e25.pdf);
     ms_out[(_e2 * MS_K_OUT) + 1u] = metal::float4(_e28.wm, _e28.pdf);
@@ -2188,8 +2294,8 @@ kernel void ms_k_ggx_sample(
     }
     metal::float4 r0_3 = ms_in[_e2 * MS_K_IN];
     metal::float4 _e19 = ms_in[(_e2 * MS_K_IN) + 1u];
-    metal::float3 wo_30 = _e19.xyz;
-    MsSample _e23 = ms_ggx_sample(wo_30, r0_3.xy, r0_3.zw);
+    metal::float3 wo_32 = _e19.xyz;
+    MsSample _e23 = ms_ggx_sample(wo_32, r0_3.xy, r0_3.zw);
     MsSample _e26 = ms_ggx_sample_dcos(r0_3.xy, r0_3.zw);
     ms_out[_e2 * MS_K_OUT] = metal::float4(_e23.wm, _e23.pdf);
     ms_out[(_e2 * MS_K_OUT) + 1u] = metal::float4(_e26.wm, _e26.pdf);
@@ -2212,12 +2318,12 @@ kernel void ms_k_ggx_bounded(
     }
     metal::float4 r0_4 = ms_in[_e2 * MS_K_IN];
     metal::float4 _e19 = ms_in[(_e2 * MS_K_IN) + 1u];
-    metal::float3 wo_31 = _e19.xyz;
+    metal::float3 wo_33 = _e19.xyz;
     metal::float4 _e27 = ms_in[(_e2 * MS_K_IN) + 2u];
-    metal::float3 wi_28 = _e27.xyz;
-    MsSample _e31 = ms_ggx_sample_bounded(wo_31, r0_4.xy, r0_4.zw);
+    metal::float3 wi_30 = _e27.xyz;
+    MsSample _e31 = ms_ggx_sample_bounded(wo_33, r0_4.xy, r0_4.zw);
     ms_out[_e2 * MS_K_OUT] = metal::float4(_e31.wm, _e31.pdf);
-    float _e46 = ms_ggx_pdf_bounded_reflection(wo_31, wi_28, r0_4.xy);
+    float _e46 = ms_ggx_pdf_bounded_reflection(wo_33, wi_30, r0_4.xy);
     ms_out[(_e2 * MS_K_OUT) + 1u] = metal::float4(_e46, 0.0, 0.0, 0.0);
     return;
 }
@@ -2236,15 +2342,15 @@ kernel void ms_k_fresnel(
     if (_e2 == naga_div(1 + (_buffer_sizes.size4 - 0 - 16) / 16, MS_K_IN)) {
         return;
     }
-    float c_11 = ms_in[(_e2 * MS_K_IN) + 1u].z;
+    float c_13 = ms_in[(_e2 * MS_K_IN) + 1u].z;
     MsConductor _e16 = ms_k_conductor(_e2, ms_in, _buffer_sizes);
     MsFresnel fr_2 = _e16.fresnel;
-    float _e24 = ms_fresnel_dielectric(c_11, _e16.fresnel.a.x);
-    float _e29 = ms_fresnel_conductor(c_11, _e16.fresnel.a.x, _e16.fresnel.b.x);
-    float _e32 = ms_fresnel_schlick(c_11, _e16.fresnel.a.x);
-    float _e37 = ms_fresnel_f82_tint(c_11, _e16.fresnel.a.x, _e16.fresnel.b.x);
+    float _e24 = ms_fresnel_dielectric(c_13, _e16.fresnel.a.x);
+    float _e29 = ms_fresnel_conductor(c_13, _e16.fresnel.a.x, _e16.fresnel.b.x);
+    float _e32 = ms_fresnel_schlick(c_13, _e16.fresnel.a.x);
+    float _e37 = ms_fresnel_f82_tint(c_13, _e16.fresnel.a.x, _e16.fresnel.b.x);
     ms_out[_e2 * MS_K_OUT] = metal::float4(_e24, _e29, _e32, _e37);
-    metal::float3 _e45 = ms_fresnel_eval(fr_2, c_11);
+    metal::float3 _e45 = ms_fresnel_eval(fr_2, c_13);
     ms_out[(_e2 * MS_K_OUT) + 1u] = metal::float4(_e45, 0.0);
     return;
 }
@@ -2266,13 +2372,13 @@ kernel void ms_k_conductor_eval(
     }
     MsConductor _e8 = ms_k_conductor(_e2, ms_in, _buffer_sizes);
     metal::float4 _e15 = ms_in[(_e2 * MS_K_IN) + 1u];
-    metal::float3 wo_32 = _e15.xyz;
+    metal::float3 wo_34 = _e15.xyz;
     metal::float4 _e23 = ms_in[(_e2 * MS_K_IN) + 2u];
-    metal::float3 wi_29 = _e23.xyz;
-    metal::float3 _e29 = ms_conductor_eval(_e8, wo_32, wi_29, MS_BK_ERFC_RATIO);
-    float _e30 = ms_conductor_pdf(_e8, wo_32, wi_29, MS_BK_ERFC_RATIO);
+    metal::float3 wi_31 = _e23.xyz;
+    metal::float3 _e29 = ms_conductor_eval(_e8, wo_34, wi_31, MS_BK_ERFC_RATIO);
+    float _e30 = ms_conductor_pdf(_e8, wo_34, wi_31, MS_BK_ERFC_RATIO);
     ms_out[_e2 * MS_K_OUT] = metal::float4(_e29, _e30);
-    metal::float4 _e38 = ms_conductor_eval_pdf(_e8, wo_32, wi_29, MS_BK_ERFC_RATIO);
+    metal::float4 _e38 = ms_conductor_eval_pdf(_e8, wo_34, wi_31, MS_BK_ERFC_RATIO);
     ms_out[(_e2 * MS_K_OUT) + 1u] = _e38;
     return;
 }
@@ -2321,11 +2427,11 @@ kernel void ms_k_dielectric_eval(
     }
     MsDielectric _e8 = ms_k_dielectric(_e2, ms_in, _buffer_sizes);
     metal::float4 _e15 = ms_in[(_e2 * MS_K_IN) + 1u];
-    metal::float3 wo_33 = _e15.xyz;
+    metal::float3 wo_35 = _e15.xyz;
     metal::float4 _e23 = ms_in[(_e2 * MS_K_IN) + 2u];
-    metal::float3 wi_30 = _e23.xyz;
-    float _e29 = ms_dielectric_eval(_e8, wo_33, wi_30, MS_BK_ERFC_RATIO);
-    float _e30 = ms_dielectric_pdf(_e8, wo_33, wi_30, MS_BK_ERFC_RATIO);
+    metal::float3 wi_32 = _e23.xyz;
+    float _e29 = ms_dielectric_eval(_e8, wo_35, wi_32, MS_BK_ERFC_RATIO);
+    float _e30 = ms_dielectric_pdf(_e8, wo_35, wi_32, MS_BK_ERFC_RATIO);
     ms_out[_e2 * MS_K_OUT] = metal::float4(_e29, _e30, 0.0, 0.0);
     ms_out[(_e2 * MS_K_OUT) + 1u] = metal::float4(0.0);
     return;

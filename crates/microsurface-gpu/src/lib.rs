@@ -4,8 +4,8 @@
 //! # The library
 //!
 //! [`WGSL`] is the library's one source: the files under `wgsl/` of this crate (common,
-//! Fresnel, GGX, Beckmann with its generated tables, the run-time distribution, the rough conductor and dielectric) in one
-//! string. WGSL has no
+//! Fresnel, GGX, Beckmann with its generated tables, the run-time distribution, the rough
+//! conductor and dielectric, energy compensation) in one string. WGSL has no
 //! `#include`: a shader includes the library by being compiled with it in front, which WGSL
 //! allows as module-scope declarations may come in any order. From Rust:
 //!
@@ -44,6 +44,8 @@
 //! | `MsMicrofacet` + `ms_d`, `ms_lambda`, `ms_g1`, `ms_g2`, `ms_pdf`, `ms_sample`, `ms_sample_dcos` | `MicrofacetDistribution` |
 //! | `MsConductor` + `ms_conductor_eval`, `ms_conductor_pdf`, `ms_conductor_eval_pdf`, `ms_conductor_sample` → `MsBsdfSample` | `bsdf::RoughConductor` (`Masking::Correlated` or `Separable`) |
 //! | `MsDielectric` + `ms_dielectric_eval`, `ms_dielectric_pdf`, `ms_dielectric_sample` → `MsBsdfSample` | `bsdf::RoughDielectric` (`Masking::Correlated` or `Separable`; both transports) |
+//! | `MsLutTap` + `ms_lut_tap(x, n)`, `ms_lut_index`, `ms_lut_lerp`, `ms_lut_bilerp`, `ms_lut_roughness_coord(α, α_max)` | `scattering::lut::Lut::lookup` (texel centres, clamp-to-edge) |
+//! | `ms_kulla_conty_f_ms(F_avg, E_avg)`, `ms_kulla_conty_lobe(E(μo), E(μi), E_avg)`, `ms_conductor_eval_kulla_conty`; `ms_turquin_scale(E(μo), F0)`, `ms_conductor_eval_turquin` | `scattering::CompensatedConductor` (`Scheme::KullaConty`, `Scheme::Turquin`) `eval` |
 //! | `ms_reflect`, `ms_refract`, `ms_half_vector_reflection`, `ms_half_vector_refraction`, `ms_jacobian_refraction` | `bsdf::frame` |
 //!
 //! Conventions are the Rust crate's: unit directions in the local shading frame (z = the
@@ -53,6 +55,37 @@
 //! function's comment names its Rust counterpart); where the Rust f32 path computes in f64
 //! (the samplers' cos 2πu, and out-of-line edge paths), the WGSL computes in f32: WGSL has no
 //! portable f64.
+//!
+//! # Energy compensation over the engines' tables
+//!
+//! `compensation.wgsl` reads the tables of `microsurface::scattering::lut` as the CLI's
+//! `microsurface lut --kind albedo` and `--kind albedo-avg` write them (the defaults: μ and √α
+//! coordinates, α_max = 1): E(μ, α) row-major `[roughness][μ]`, E_avg(α) one value per
+//! roughness node, every axis' nodes at the texel centres (i + ½)/n. The library declares no
+//! binding (WGSL has no externs, and the tables may live in a storage buffer, a filtered
+//! texture or constants): `ms_lut_tap` gives a coordinate's node and weight (t = clamp(x·n −
+//! ½, 0, n − 1), i = min(⌊t⌋, n − 2), f = t − i, as `Lut::lookup`), the shader fetches the two
+//! or four nodes (`ms_lut_index`), and `ms_lut_lerp`/`ms_lut_bilerp` blend them with
+//! `Lut::lookup`'s weights; the roughness coordinate is √α, or (αx αy)^¼ for anisotropic
+//! roughness. The compensated conductor then takes the looked-up albedos: Kulla & Conty
+//! 2017's f_ss + F_ms (1 − E(μo))(1 − E(μi))/(π(1 − E_avg)), F_ms = F_avg² E_avg/(1 −
+//! F_avg(1 − E_avg)) for the caller's F_avg, or Turquin 2019's f_ss (1 + F0 (1 −
+//! E(μo))/E(μo)). `tests/furnace.rs` has a whole shader (tables in a third storage binding).
+//!
+//! Measured on lavapipe (`tests/furnace.rs`): the filter is within its f32 rounding bound of
+//! `Lut::lookup` (at most a quarter of it, 32 and 64 nodes, 0, 1 and past them included). The
+//! white furnace (F = 1, GGX, α ∈ [0.05, 1], μo ∈ [0.05, 1]), summed from the GPU's f on a
+//! quadrature rule, equals 1 + E(μo) − E_l(μo) for Kulla–Conty (E_l the lookup, E_avg the
+//! average of the looked-up E) and E/E_l for Turquin within 2e-6: the deviation is the
+//! table's own filter error. Max |furnace − 1| for Kulla–Conty: 1.9e-2 (32 nodes) and 9.4e-3
+//! (64), at α = 1, which lies half a texel past the last roughness centre (clamp-to-edge's
+//! error, falling as 1/n: 1.2e-3 at 512); with √α and μ inside the last centres 2.6e-3 (32),
+//! 1.6e-3 (64), 1.8e-4 (128), largest at grazing μo = 0.05 and α = 0.05, where E bends most
+//! along a linear μ axis: 1e-3 holds there from 128 nodes. Turquin's deviation is Kulla–Conty's
+//! over E_l (5.8e-2 and 3.0e-2 at α = 1). Taking E_avg from the `albedo-avg` table (the exact
+//! average) instead of the average of the looked-up E moves the furnace by at most 1.4e-4
+//! (32 nodes) and 3.6e-5 (64): small beside the filter's error, but only the lookup's average
+//! makes the identity exact.
 //!
 //! # Accuracy against the Rust f32 path
 //!
@@ -86,7 +119,7 @@ use std::sync::{mpsc, Mutex};
 
 /// The WGSL library, one source: `wgsl/common.wgsl`, `fresnel.wgsl`, `ggx.wgsl`,
 /// `beckmann_tables.wgsl` (generated), `beckmann.wgsl`, `microfacet.wgsl`, `conductor.wgsl`,
-/// `dielectric.wgsl`, in that order.
+/// `dielectric.wgsl`, `compensation.wgsl`, in that order.
 pub const WGSL: &str = concat!(
     include_str!("../wgsl/common.wgsl"),
     "\n",
@@ -103,6 +136,8 @@ pub const WGSL: &str = concat!(
     include_str!("../wgsl/conductor.wgsl"),
     "\n",
     include_str!("../wgsl/dielectric.wgsl"),
+    "\n",
+    include_str!("../wgsl/compensation.wgsl"),
 );
 
 /// The test kernels (`wgsl/kernels.wgsl`): compute entry points over records of five

@@ -80,6 +80,7 @@ pub fn translate() -> Result<Vec<(String, Vec<u8>)>, String> {
     hlsl::Writer::new(&mut out, &options, &pipeline)
         .write(&module, &info, None)
         .map_err(|e| format!("hlsl: {e}"))?;
+    let out = brace_initializers(&out);
     files.push((
         "generated/microsurface.hlsl".to_string(),
         format!("{}{out}", header("//")).into_bytes(),
@@ -115,3 +116,21 @@ pub fn translate() -> Result<Vec<(String, Vec<u8>)>, String> {
 
 /// The naga version the files name (Cargo.toml's requirement, which the lock file pins).
 const NAGA_VERSION: &str = "30.0";
+
+/// naga initialises a static array with a call of its constructor function
+/// (`static float4 T[24] = Constructarray24_float4_(a, b, ...);`), which DXC accepts but
+/// glslang's HLSL front end (the validator CI has) rejects as "Recursion detected" when
+/// linking; an initializer list (`= { a, b, ... };`) is the same array in both. Lines of any
+/// other shape pass unchanged.
+fn brace_initializers(hlsl: &str) -> String {
+    let mut out = String::with_capacity(hlsl.len());
+    for line in hlsl.split_inclusive('\n') {
+        let rewritten = line.strip_prefix("static ").and_then(|rest| {
+            let (decl, init) = rest.split_once(" = Constructarray")?;
+            let args = init.split_once('(')?.1.trim_end().strip_suffix(");")?;
+            Some(format!("static {decl} = {{ {args} }};\n"))
+        });
+        out.push_str(rewritten.as_deref().unwrap_or(line));
+    }
+    out
+}

@@ -40,6 +40,10 @@ struct MsDielectric {
     uint masking;
     uint transport;
 };
+struct MsLutTap {
+    uint i;
+    float f;
+};
 const float MS_PI = 3.1415927;
 const float MS_TAU = 6.2831855;
 const uint MS_FRESNEL_ONE = 0u;
@@ -85,31 +89,31 @@ float ms_inf() {
 
 vec2 ms_cos_sin_turn(float v) {
     float k_3 = roundEven((4.0 * v));
-    float r = (v - (0.25 * k_3));
-    float x_4 = (MS_TAU * r);
-    float x2_ = (x_4 * x_4);
-    float s_3 = (x_4 * (1.0 + (x2_ * (-0.16666667 + (x2_ * (0.008333333 + (x2_ * (-0.0001984127 + (x2_ * 2.7557319e-6)))))))));
-    float c_7 = (1.0 + (x2_ * (-0.5 + (x2_ * (0.041666668 + (x2_ * (-0.0013888889 + (x2_ * (2.4801588e-5 + (x2_ * -2.755732e-7))))))))));
+    float r_1 = (v - (0.25 * k_3));
+    float x_5 = (MS_TAU * r_1);
+    float x2_ = (x_5 * x_5);
+    float s_3 = (x_5 * (1.0 + (x2_ * (-0.16666667 + (x2_ * (0.008333333 + (x2_ * (-0.0001984127 + (x2_ * 2.7557319e-6)))))))));
+    float c_9 = (1.0 + (x2_ * (-0.5 + (x2_ * (0.041666668 + (x2_ * (-0.0013888889 + (x2_ * (2.4801588e-5 + (x2_ * -2.755732e-7))))))))));
     int q = (int(k_3) & 3);
     if ((q == 0)) {
-        return vec2(c_7, s_3);
+        return vec2(c_9, s_3);
     } else {
         if ((q == 1)) {
-            return vec2(-(s_3), c_7);
+            return vec2(-(s_3), c_9);
         } else {
             if ((q == 2)) {
-                return vec2(-(c_7), -(s_3));
+                return vec2(-(c_9), -(s_3));
             }
         }
     }
-    return vec2(s_3, -(c_7));
+    return vec2(s_3, -(c_9));
 }
 
 vec3 ms_rescaled(vec3 a) {
     bool local = false;
-    float m_3 = max(abs(a.x), max(abs(a.y), abs(a.z)));
-    if ((m_3 > 0.0)) {
-        local = (m_3 <= 3.4028235e38);
+    float m_4 = max(abs(a.x), max(abs(a.y), abs(a.z)));
+    if ((m_4 > 0.0)) {
+        local = (m_4 <= 3.4028235e38);
     } else {
         local = false;
     }
@@ -117,7 +121,7 @@ vec3 ms_rescaled(vec3 a) {
     if (!(_e16)) {
         return a;
     }
-    return (a / vec3(m_3));
+    return (a / vec3(m_4));
 }
 
 float ms_dot(vec3 a_1, vec3 b) {
@@ -147,9 +151,9 @@ vec3 ms_unit(vec3 w) {
     if ((abs((_e1 - 1.0)) <= 1e-6)) {
         return w;
     }
-    float m_4 = max(abs(w.x), max(abs(w.y), abs(w.z)));
-    if ((m_4 > 0.0)) {
-        local_2 = (m_4 <= 3.4028235e38);
+    float m_5 = max(abs(w.x), max(abs(w.y), abs(w.z)));
+    if ((m_5 > 0.0)) {
+        local_2 = (m_5 <= 3.4028235e38);
     } else {
         local_2 = false;
     }
@@ -157,7 +161,7 @@ vec3 ms_unit(vec3 w) {
     if (!(_e22)) {
         return w;
     }
-    vec3 _e27 = ms_normalize((w * (1.0 / m_4)));
+    vec3 _e27 = ms_normalize((w * (1.0 / m_5)));
     return _e27;
 }
 
@@ -173,11 +177,11 @@ vec3 ms_unit_normal(vec3 v_1) {
     if (_e9) {
         return (v_1 * (1.0 / sqrt(_e1)));
     }
-    float m_5 = max(abs(v_1.x), max(abs(v_1.y), abs(v_1.z)));
-    if ((m_5 == 0.0)) {
+    float m_6 = max(abs(v_1.x), max(abs(v_1.y), abs(v_1.z)));
+    if ((m_6 == 0.0)) {
         return vec3(0.0, 0.0, 1.0);
     }
-    vec3 s_4 = (v_1 / vec3(m_5));
+    vec3 s_4 = (v_1 / vec3(m_6));
     float _e30 = ms_dot(s_4, s_4);
     return (s_4 * (1.0 / sqrt(_e30)));
 }
@@ -298,8 +302,8 @@ vec4 ms_refract(vec3 wi_5, vec3 n_in, float eta_in) {
     vec3 _e22 = n_1;
     vec3 _e23 = n_1;
     float _e24 = ms_dot(t0_, _e23);
-    vec3 t_1 = (t0_ + (_e22 * -(_e24)));
-    float _e28 = ms_dot(t_1, t_1);
+    vec3 t_2 = (t0_ + (_e22 * -(_e24)));
+    float _e28 = ms_dot(t_2, t_2);
     float _e29 = eta_1;
     float _e30 = eta_1;
     float sin2_t = (_e28 / (_e29 * _e30));
@@ -310,7 +314,7 @@ vec4 ms_refract(vec3 wi_5, vec3 n_in, float eta_in) {
     float _e41 = eta_1;
     vec3 _e45 = n_1;
     float _e49 = eta_1;
-    return vec4(((t_1 * (-1.0 / _e41)) + (_e45 * -(cos_t))), _e49);
+    return vec4(((t_2 * (-1.0 / _e41)) + (_e45 * -(cos_t))), _e49);
 }
 
 float ms_fresnel_dielectric(float cos_in, float eta_in_1) {
@@ -329,31 +333,31 @@ float ms_fresnel_dielectric(float cos_in, float eta_in_1) {
         eta_2 = (1.0 / _e9);
     }
     float _e12 = cos_i_1;
-    float c_8 = min(_e12, 1.0);
+    float c_10 = min(_e12, 1.0);
     float _e15 = eta_2;
     if ((_e15 == 1.0)) {
         return 0.0;
     }
-    if ((c_8 == 0.0)) {
+    if ((c_10 == 0.0)) {
         return 1.0;
     }
     float _e24 = eta_2;
     if ((_e24 > 1e18)) {
         float _e27 = eta_2;
         float e_1 = (1.0 / _e27);
-        float cos_t_1 = sqrt((((1.0 - e_1) * (1.0 + e_1)) + ((c_8 * e_1) * (c_8 * e_1))));
-        r_parl = ((c_8 - (e_1 * cos_t_1)) / (c_8 + (e_1 * cos_t_1)));
-        r_perp = (((e_1 * c_8) - cos_t_1) / ((e_1 * c_8) + cos_t_1));
+        float cos_t_1 = sqrt((((1.0 - e_1) * (1.0 + e_1)) + ((c_10 * e_1) * (c_10 * e_1))));
+        r_parl = ((c_10 - (e_1 * cos_t_1)) / (c_10 + (e_1 * cos_t_1)));
+        r_perp = (((e_1 * c_10) - cos_t_1) / ((e_1 * c_10) + cos_t_1));
     } else {
         float _e51 = eta_2;
         if ((_e51 > 1.0)) {
             float _e54 = eta_2;
             float _e57 = eta_2;
-            ect2_ = (((_e54 - 1.0) * (_e57 + 1.0)) + (c_8 * c_8));
+            ect2_ = (((_e54 - 1.0) * (_e57 + 1.0)) + (c_10 * c_10));
         } else {
             float _e63 = eta_2;
             float _e64 = eta_2;
-            ect2_ = ((_e63 * _e64) - ((1.0 - c_8) * (1.0 + c_8)));
+            ect2_ = ((_e63 * _e64) - ((1.0 - c_10) * (1.0 + c_10)));
         }
         float _e72 = ect2_;
         if ((_e72 <= 0.0)) {
@@ -363,9 +367,9 @@ float ms_fresnel_dielectric(float cos_in, float eta_in_1) {
         float ect = sqrt(_e76);
         float _e78 = eta_2;
         float _e79 = eta_2;
-        float e2c = ((_e78 * _e79) * c_8);
+        float e2c = ((_e78 * _e79) * c_10);
         r_parl = ((e2c - ect) / (e2c + ect));
-        r_perp = ((c_8 - ect) / (c_8 + ect));
+        r_perp = ((c_10 - ect) / (c_10 + ect));
     }
     float _e88 = r_parl;
     float _e89 = r_parl;
@@ -399,32 +403,32 @@ float ms_cnorm_ratio(vec2 a_6, vec2 b_3) {
 
 vec2 ms_crecip(vec2 a_7) {
     if ((abs(a_7.x) >= abs(a_7.y))) {
-        float r_1 = (a_7.y / a_7.x);
-        float d_9 = (a_7.x + (a_7.y * r_1));
-        return vec2((1.0 / d_9), (-(r_1) / d_9));
+        float r_2 = (a_7.y / a_7.x);
+        float d_9 = (a_7.x + (a_7.y * r_2));
+        return vec2((1.0 / d_9), (-(r_2) / d_9));
     }
-    float r_2 = (a_7.x / a_7.y);
-    float d_10 = ((a_7.x * r_2) + a_7.y);
-    return vec2((r_2 / d_10), (-1.0 / d_10));
+    float r_3 = (a_7.x / a_7.y);
+    float d_10 = ((a_7.x * r_3) + a_7.y);
+    return vec2((r_3 / d_10), (-1.0 / d_10));
 }
 
 vec2 ms_csqrt(vec2 a_8) {
     float s_1 = 0.0;
     float _e1 = ms_cnorm(a_8);
-    float r_3 = sqrt(_e1);
-    if ((r_3 == 0.0)) {
+    float r_4 = sqrt(_e1);
+    if ((r_4 == 0.0)) {
         return vec2(0.0);
     }
-    float t_2 = sqrt(((r_3 + abs(a_8.x)) * 0.5));
+    float t_3 = sqrt(((r_4 + abs(a_8.x)) * 0.5));
     if ((a_8.x >= 0.0)) {
-        return vec2(t_2, (a_8.y / (t_2 + t_2)));
+        return vec2(t_3, (a_8.y / (t_3 + t_3)));
     }
-    s_1 = t_2;
+    s_1 = t_3;
     if ((a_8.y < 0.0)) {
-        s_1 = -(t_2);
+        s_1 = -(t_3);
     }
     float _e29 = s_1;
-    return vec2((abs(a_8.y) / (t_2 + t_2)), _e29);
+    return vec2((abs(a_8.y) / (t_3 + t_3)), _e29);
 }
 
 float ms_fresnel_conductor(float cos_in_1, float eta_3, float k) {
@@ -450,11 +454,11 @@ float ms_fresnel_conductor(float cos_in_1, float eta_3, float k) {
     if (_e25) {
         return 1.0;
     }
-    vec2 n_2 = vec2(eta_3, k);
+    vec2 n_3 = vec2(eta_3, k);
     float sin2_i = ((1.0 - cos_i_5) * (1.0 + cos_i_5));
     vec2 ci = vec2(cos_i_5, 0.0);
     if ((max(abs(eta_3), abs(k)) > 1e18)) {
-        vec2 _e40 = ms_crecip(n_2);
+        vec2 _e40 = ms_crecip(n_3);
         vec2 _e41 = ms_cmul(_e40, _e40);
         vec2 sin2_t_1 = (_e41 * sin2_i);
         vec2 _e49 = ms_csqrt(vec2((1.0 - sin2_t_1.x), -(sin2_t_1.y)));
@@ -464,8 +468,8 @@ float ms_fresnel_conductor(float cos_in_1, float eta_3, float k) {
         float _e57 = ms_cnorm_ratio((ci_m - _e49), (ci_m + _e49));
         return min((0.5 * (_e54 + _e57)), 1.0);
     }
-    vec2 _e63 = ms_cmul(n_2, n_2);
-    float _e65 = ms_cnorm(n_2);
+    vec2 _e63 = ms_cmul(n_3, n_3);
+    float _e65 = ms_cnorm(n_3);
     if ((_e65 >= 1.0)) {
         vec2 _e74 = ms_cmul(vec2((eta_3 - 1.0), k), vec2((eta_3 + 1.0), k));
         w_2 = (_e74 + vec2((cos_i_5 * cos_i_5), 0.0));
@@ -476,26 +480,26 @@ float ms_fresnel_conductor(float cos_in_1, float eta_3, float k) {
     vec2 _e83 = ms_crecip(_e63);
     vec2 _e84 = ms_cmul(_e82, _e83);
     vec2 _e85 = ms_csqrt(_e84);
-    vec2 n_ci = (n_2 * cos_i_5);
-    vec2 _e87 = ms_cmul(n_2, _e85);
+    vec2 n_ci = (n_3 * cos_i_5);
+    vec2 _e87 = ms_cmul(n_3, _e85);
     float _e90 = ms_cnorm_ratio((n_ci - _e85), (n_ci + _e85));
     float _e93 = ms_cnorm_ratio((ci - _e87), (ci + _e87));
     return min((0.5 * (_e90 + _e93)), 1.0);
 }
 
 float ms_fresnel_schlick(float cos_i_2, float f0_) {
-    float m_6 = (1.0 - min(max(cos_i_2, 0.0), 1.0));
-    float m2_ = (m_6 * m_6);
-    return (f0_ + ((1.0 - f0_) * ((m2_ * m2_) * m_6)));
+    float m_7 = (1.0 - min(max(cos_i_2, 0.0), 1.0));
+    float m2_ = (m_7 * m_7);
+    return (f0_ + ((1.0 - f0_) * ((m2_ * m2_) * m_7)));
 }
 
 float ms_fresnel_f82_tint(float cos_i_3, float f0_1, float h) {
     float mu = min(max(cos_i_3, 0.0), 1.0);
-    float m_7 = (1.0 - mu);
-    float m5_ = ((((m_7 * m_7) * m_7) * m_7) * m_7);
+    float m_8 = (1.0 - mu);
+    float m5_ = ((((m_8 * m_8) * m_8) * m_8) * m_8);
     float a_12 = (((f0_1 + ((1.0 - f0_1) * 0.46266437)) * (1.0 - h)) / 0.05665278);
-    float r_4 = ((f0_1 + ((1.0 - f0_1) * m5_)) - (((a_12 * mu) * m5_) * m_7));
-    return min(max(r_4, 0.0), 1.0);
+    float r_5 = ((f0_1 + ((1.0 - f0_1) * m5_)) - (((a_12 * mu) * m5_) * m_8));
+    return min(max(r_5, 0.0), 1.0);
 }
 
 vec3 ms_fresnel_eval(MsFresnel fr, float cos_i_4) {
@@ -536,34 +540,34 @@ float ms_ggx_d(vec3 wm_2, vec2 alpha) {
     if (!((z_1 > 0.0))) {
         return 0.0;
     }
-    float x_5 = (wm_2.x / alpha.x);
+    float x_6 = (wm_2.x / alpha.x);
     float y = (wm_2.y / alpha.y);
-    float t_3 = (((x_5 * x_5) + (y * y)) + (z_1 * z_1));
-    return (1.0 / ((((MS_PI * alpha.x) * alpha.y) * t_3) * t_3));
+    float t_4 = (((x_6 * x_6) + (y * y)) + (z_1 * z_1));
+    return (1.0 / ((((MS_PI * alpha.x) * alpha.y) * t_4) * t_4));
 }
 
 float ms_ggx_lambda(vec3 w_3, vec2 alpha_1) {
-    float x_6 = (alpha_1.x * w_3.x);
+    float x_7 = (alpha_1.x * w_3.x);
     float y_1 = (alpha_1.y * w_3.y);
     float z_2 = abs(w_3.z);
-    float t_4 = ((x_6 * x_6) + (y_1 * y_1));
+    float t_5 = ((x_7 * x_7) + (y_1 * y_1));
     float z2_ = (z_2 * z_2);
-    float den = (2.0 * (z2_ + (z_2 * sqrt((z2_ + t_4)))));
+    float den = (2.0 * (z2_ + (z_2 * sqrt((z2_ + t_5)))));
     if (!((den > 0.0))) {
         if ((z_2 == 0.0)) {
             float _e25 = ms_inf();
             return _e25;
         }
-        return ((t_4 / (z_2 + sqrt(((z_2 * z_2) + t_4)))) / (z_2 + z_2));
+        return ((t_5 / (z_2 + sqrt(((z_2 * z_2) + t_5)))) / (z_2 + z_2));
     }
-    return (t_4 / den);
+    return (t_5 / den);
 }
 
 float ms_ggx_g1_(vec3 w_4, vec2 alpha_2) {
-    float x_7 = (alpha_2.x * w_4.x);
+    float x_8 = (alpha_2.x * w_4.x);
     float y_2 = (alpha_2.y * w_4.y);
     float z_3 = abs(w_4.z);
-    float den_1 = (z_3 + sqrt(((z_3 * z_3) + ((x_7 * x_7) + (y_2 * y_2)))));
+    float den_1 = (z_3 + sqrt(((z_3 * z_3) + ((x_8 * x_8) + (y_2 * y_2)))));
     if (!((den_1 > 0.0))) {
         return 0.0;
     }
@@ -614,23 +618,23 @@ float ms_ggx_pdf(vec3 w_5, vec3 wm_3, vec2 alpha_5) {
     float len_1 = sqrt((((sx * sx) + (sy * sy)) + (z_4 * z_4)));
     float mx = (wm_3.x / alpha_5.x);
     float my = (wm_3.y / alpha_5.y);
-    float t_5 = (((mx * mx) + (my * my)) + (wm_3.z * wm_3.z));
+    float t_6 = (((mx * mx) + (my * my)) + (wm_3.z * wm_3.z));
     float _e55 = c;
     float _e56 = c;
-    return ((_e55 + _e56) / (((((MS_PI * alpha_5.x) * alpha_5.y) * t_5) * t_5) * (z_4 + len_1)));
+    return ((_e55 + _e56) / (((((MS_PI * alpha_5.x) * alpha_5.y) * t_6) * t_6) * (z_4 + len_1)));
 }
 
 vec3 ms_ggx_cap_normal(vec3 w_6, vec2 alpha_6, vec2 u, float len) {
     float inv = (1.0 / len);
-    float x_8 = ((alpha_6.x * w_6.x) * inv);
+    float x_9 = ((alpha_6.x * w_6.x) * inv);
     float y_3 = ((alpha_6.y * w_6.y) * inv);
     float z_5 = (w_6.z * inv);
     vec2 _e17 = ms_cos_sin_turn(u.x);
     float above = ((1.0 - u.y) * (1.0 + z_5));
-    float sin_ = sqrt(max((u.y * ((above * (1.0 + z_5)) + ((x_8 * x_8) + (y_3 * y_3)))), 0.0));
-    vec3 h_1 = vec3((alpha_6.x * ((sin_ * _e17.x) + x_8)), (alpha_6.y * ((sin_ * _e17.y) + y_3)), above);
-    float n_3 = (1.0 / sqrt((((h_1.x * h_1.x) + (h_1.y * h_1.y)) + (h_1.z * h_1.z))));
-    return (h_1 * n_3);
+    float sin_ = sqrt(max((u.y * ((above * (1.0 + z_5)) + ((x_9 * x_9) + (y_3 * y_3)))), 0.0));
+    vec3 h_1 = vec3((alpha_6.x * ((sin_ * _e17.x) + x_9)), (alpha_6.y * ((sin_ * _e17.y) + y_3)), above);
+    float n_4 = (1.0 / sqrt((((h_1.x * h_1.x) + (h_1.y * h_1.y)) + (h_1.z * h_1.z))));
+    return (h_1 * n_4);
 }
 
 vec3 ms_ggx_sample_wm(vec3 w_in, vec2 alpha_7, vec2 u_1) {
@@ -697,8 +701,8 @@ float ms_ggx_pdf_dcos(vec3 wm_4, vec2 alpha_9) {
 
 MsSample ms_ggx_sample_dcos(vec2 alpha_10, vec2 u_3) {
     vec2 _e3 = ms_cos_sin_turn(u_3.y);
-    float r_5 = sqrt(u_3.x);
-    vec3 _e21 = ms_unit_normal(vec3(((alpha_10.x * r_5) * _e3.x), ((alpha_10.y * r_5) * _e3.y), sqrt(max((1.0 - u_3.x), 0.0))));
+    float r_6 = sqrt(u_3.x);
+    vec3 _e21 = ms_unit_normal(vec3(((alpha_10.x * r_6) * _e3.x), ((alpha_10.y * r_6) * _e3.y), sqrt(max((1.0 - u_3.x), 0.0))));
     float _e22 = ms_ggx_d(_e21, alpha_10);
     return MsSample(_e21, (_e22 * _e21.z));
 }
@@ -759,8 +763,8 @@ MsSample ms_ggx_sample_bounded(vec3 w_in_2, vec2 alpha_13, vec2 u_4) {
     float above_1 = ((1.0 - u_4.y) * (1.0 + b_5));
     float one_minus_b = ((((ws_1.x * ws_1.x) + (ws_1.y * ws_1.y)) / (1.0 + ws_1.z)) + _e4.top);
     float sin_1 = sqrt(max(((u_4.y * (1.0 + b_5)) * (above_1 + one_minus_b)), 0.0));
-    vec3 m_8 = vec3(((sin_1 * _e8.x) + ws_1.x), ((sin_1 * _e8.y) + ws_1.y), (above_1 + _e4.top));
-    vec3 _e58 = ms_normalize(vec3((alpha_13.x * m_8.x), (alpha_13.y * m_8.y), max(m_8.z, 0.0)));
+    vec3 m_9 = vec3(((sin_1 * _e8.x) + ws_1.x), ((sin_1 * _e8.y) + ws_1.y), (above_1 + _e4.top));
+    vec3 _e58 = ms_normalize(vec3((alpha_13.x * m_9.x), (alpha_13.y * m_9.y), max(m_9.z, 0.0)));
     vec3 _e59 = ms_facing(_e58, _e3);
     float _e60 = ms_ggx_pdf_bounded(_e3, _e59, alpha_13);
     return MsSample(_e59, _e60);
@@ -773,12 +777,12 @@ float ms_ggx_pdf_bounded_reflection(vec3 wo_8, vec3 wi_8, vec2 alpha_14) {
         return 0.0;
     }
     float _e7 = ms_dot(wo_8, _e3);
-    float c_9 = abs(_e7);
-    if (!((c_9 > 0.0))) {
+    float c_11 = abs(_e7);
+    if (!((c_11 > 0.0))) {
         return 0.0;
     }
     float _e13 = ms_ggx_pdf_bounded(wo_8, _e3, alpha_14);
-    return (_e13 / (4.0 * c_9));
+    return (_e13 / (4.0 * c_11));
 }
 
 vec2 ms_bk_segment(float x, int k0_, int k1_) {
@@ -797,18 +801,18 @@ float ms_bk_ln_1m(float xi) {
     if ((xi > 0.5)) {
         return log((1.0 - xi));
     }
-    float t_6 = (-(xi) / (2.0 - xi));
-    float t2_ = (t_6 * t_6);
+    float t_7 = (-(xi) / (2.0 - xi));
+    float t2_ = (t_7 * t_7);
     float p = (1.0 + (t2_ * (0.33333334 + (t2_ * (0.2 + (t2_ * (0.14285715 + (t2_ * (0.11111111 + (t2_ * (0.09090909 + (t2_ * (0.07692308 + (t2_ * 0.06666667))))))))))))));
-    return ((2.0 * t_6) * p);
+    return ((2.0 * t_7) * p);
 }
 
 float ms_beckmann_d(vec3 wm_6, vec2 alpha_15) {
     bool local_9 = false;
     float z_6 = wm_6.z;
-    float r_6 = (1.0 / (alpha_15.x * alpha_15.y));
-    float x_9 = ((wm_6.x * alpha_15.y) * r_6);
-    float y_4 = ((wm_6.y * alpha_15.x) * r_6);
+    float r_7 = (1.0 / (alpha_15.x * alpha_15.y));
+    float x_10 = ((wm_6.x * alpha_15.y) * r_7);
+    float y_4 = ((wm_6.y * alpha_15.x) * r_7);
     float z2_1 = (z_6 * z_6);
     if ((z_6 > 0.0)) {
         local_9 = (z2_1 > 0.0);
@@ -819,11 +823,11 @@ float ms_beckmann_d(vec3 wm_6, vec2 alpha_15) {
     if (!(_e24)) {
         return 0.0;
     }
-    float e_2 = (((x_9 * x_9) + (y_4 * y_4)) / z2_1);
+    float e_2 = (((x_10 * x_10) + (y_4 * y_4)) / z2_1);
     if ((e_2 <= 80.0)) {
-        return ((exp(-(e_2)) * r_6) / ((MS_PI * z2_1) * z2_1));
+        return ((exp(-(e_2)) * r_7) / ((MS_PI * z2_1) * z2_1));
     }
-    return exp((((log(r_6) - 1.14473) - (4.0 * log(z_6))) - e_2));
+    return exp((((log(r_7) - 1.14473) - (4.0 * log(z_6))) - e_2));
 }
 
 float ms_beckmann_pdf_dcos(vec3 wm_8, vec2 alpha_21) {
@@ -841,11 +845,11 @@ MsSample ms_beckmann_sample_dcos(vec2 alpha_22, vec2 u_6) {
         v_3 = vec3((alpha_22.x * _e3.x), (alpha_22.y * _e3.y), 0.0);
     } else {
         float _e17 = ms_bk_ln_1m(u_6.x);
-        float r_7 = sqrt(-(_e17));
-        if ((r_7 > 1.0)) {
-            v_3 = vec3((alpha_22.x * _e3.x), (alpha_22.y * _e3.y), (1.0 / r_7));
+        float r_8 = sqrt(-(_e17));
+        if ((r_8 > 1.0)) {
+            v_3 = vec3((alpha_22.x * _e3.x), (alpha_22.y * _e3.y), (1.0 / r_8));
         } else {
-            v_3 = vec3(((alpha_22.x * r_7) * _e3.x), ((alpha_22.y * r_7) * _e3.y), 1.0);
+            v_3 = vec3(((alpha_22.x * r_8) * _e3.x), ((alpha_22.y * r_8) * _e3.y), 1.0);
         }
     }
     vec3 _e41 = v_3;
@@ -1000,36 +1004,76 @@ MsBsdfSample ms_dielectric_sample_smooth(MsDielectric d_7, vec3 wo_25, float uc_
     float f_2 = 0.0;
     float _e5 = ms_fresnel_dielectric(wo_25.z, d_7.eta);
     if ((uc_1 < _e5)) {
-        vec3 wi_24 = vec3(-(wo_25.x), -(wo_25.y), wo_25.z);
-        return MsBsdfSample(wi_24, _e5, vec3((_e5 / abs(wi_24.z))), 3u, 1.0);
+        vec3 wi_26 = vec3(-(wo_25.x), -(wo_25.y), wo_25.z);
+        return MsBsdfSample(wi_26, _e5, vec3((_e5 / abs(wi_26.z))), 3u, 1.0);
     }
     MsBsdfSample none_1 = MsBsdfSample(vec3(0.0), 0.0, vec3(0.0), 0u, 1.0);
     vec4 _e33 = ms_refract(wo_25, vec3(0.0, 0.0, 1.0), d_7.eta);
     if ((_e33.w == 0.0)) {
         return none_1;
     }
-    vec3 wi_25 = _e33.xyz;
-    bool _e39 = ms_on_horizon(wi_25.z);
+    vec3 wi_27 = _e33.xyz;
+    bool _e39 = ms_on_horizon(wi_27.z);
     if (_e39) {
         return none_1;
     }
-    float t_7 = (1.0 - _e5);
-    f_2 = (t_7 / abs(wi_25.z));
+    float t_8 = (1.0 - _e5);
+    f_2 = (t_8 / abs(wi_27.z));
     if ((d_7.transport == MS_TRANSPORT_RADIANCE)) {
         float _e49 = f_2;
         f_2 = (_e49 / (_e33.w * _e33.w));
     }
     float _e54 = f_2;
-    return MsBsdfSample(wi_25, t_7, vec3(_e54), 7u, _e33.w);
+    return MsBsdfSample(wi_27, t_8, vec3(_e54), 7u, _e33.w);
+}
+
+MsLutTap ms_lut_tap(float x_4, uint n_2) {
+    float t_9 = clamp(((x_4 * float(n_2)) - 0.5), 0.0, float((n_2 - 1u)));
+    uint i_2 = min(uint(floor(t_9)), (n_2 - 2u));
+    return MsLutTap(i_2, (t_9 - float(i_2)));
+}
+
+uint ms_lut_index(uint ir, uint im, uint n_mu) {
+    return ((ir * n_mu) + im);
+}
+
+float ms_lut_lerp(MsLutTap t_1, float v0_, float v1_) {
+    return (((1.0 - t_1.f) * v0_) + (t_1.f * v1_));
+}
+
+float ms_lut_bilerp(MsLutTap r, MsLutTap m_3, float v00_, float v10_, float v01_, float v11_) {
+    float gr = (1.0 - r.f);
+    float gm = (1.0 - m_3.f);
+    return (((((gr * gm) * v00_) + ((r.f * gm) * v10_)) + ((gr * m_3.f) * v01_)) + ((r.f * m_3.f) * v11_));
+}
+
+float ms_lut_roughness_coord(vec2 alpha_25, float alpha_max) {
+    return sqrt((sqrt((alpha_25.x * alpha_25.y)) / alpha_max));
+}
+
+vec3 ms_kulla_conty_f_ms(vec3 f_avg, float e_avg) {
+    return (((f_avg * f_avg) * e_avg) / (vec3(1.0) - (f_avg * (1.0 - e_avg))));
+}
+
+float ms_kulla_conty_lobe(float e_o, float e_i, float e_avg_1) {
+    float den_3 = (MS_PI * (1.0 - e_avg_1));
+    if (!((den_3 > 0.0))) {
+        return 0.0;
+    }
+    return ((max((1.0 - e_o), 0.0) * max((1.0 - e_i), 0.0)) / den_3);
+}
+
+vec3 ms_turquin_scale(float e_o_2, vec3 f0_2) {
+    return (vec3(1.0) + ((f0_2 * (1.0 - e_o_2)) / vec3(e_o_2)));
 }
 
 uint ms_k_index(uvec3 id_10, uvec3 groups_10) {
-    uint i_2 = (id_10.x + ((id_10.y * groups_10.x) * 64u));
-    uint n_4 = (uint(_group_0_binding_0_cs.length()) / MS_K_IN);
-    if ((i_2 >= n_4)) {
-        return n_4;
+    uint i_3 = (id_10.x + ((id_10.y * groups_10.x) * 64u));
+    uint n_5 = (uint(_group_0_binding_0_cs.length()) / MS_K_IN);
+    if ((i_3 >= n_5)) {
+        return n_5;
     }
-    return i_2;
+    return i_3;
 }
 
 MsConductor ms_k_conductor(uint i) {
@@ -1058,8 +1102,8 @@ void main() {
     }
     vec4 r0_2 = _group_0_binding_0_cs[(_e2 * MS_K_IN)];
     vec4 _e19 = _group_0_binding_0_cs[((_e2 * MS_K_IN) + 1u)];
-    vec3 wo_27 = _e19.xyz;
-    MsSample _e23 = ms_ggx_sample(wo_27, r0_2.xy, r0_2.zw);
+    vec3 wo_29 = _e19.xyz;
+    MsSample _e23 = ms_ggx_sample(wo_29, r0_2.xy, r0_2.zw);
     MsSample _e26 = ms_ggx_sample_dcos(r0_2.xy, r0_2.zw);
     _group_0_binding_1_cs[(_e2 * MS_K_OUT)] = vec4(_e23.wm, _e23.pdf);
     _group_0_binding_1_cs[((_e2 * MS_K_OUT) + 1u)] = vec4(_e26.wm, _e26.pdf);

@@ -1,0 +1,122 @@
+// microsurface WGSL library: energy compensation of the rough conductor (compensation.wgsl),
+// as the Rust `scattering::CompensatedConductor` in f32, with its albedo read from the tables
+// of `scattering::lut` (the CLI's `microsurface lut --kind albedo` and `--kind albedo-avg`).
+//
+// The tables. E(μ, α) = the F = 1 single-scattering albedo, row-major [roughness][μ] (μ the
+// inner, fastest index), and E_avg(α) = 2∫E(μ)μ dμ, one value per roughness node. An axis of n
+// nodes puts them at the texel centres x_i = (i + ½)/n of its coordinate: the roughness
+// coordinate is √(α/α_max) for isotropic α, (αx αy)^¼/√α_max for anisotropic roughness
+// (ms_lut_roughness_coord), the μ coordinate is μ = |cos θ| itself (the `Lut` defaults:
+// `sqrt_alpha`, `mu`, α_max = 1). A lookup is the linear filter with clamp-to-edge addressing,
+// as `Lut::lookup` (and a GPU's sampler) computes it:
+//
+//   t = clamp(x n − ½, 0, n − 1),  i = min(⌊t⌋, n − 2),  f = t − i,
+//   value = (1 − f) v_i + f v_{i+1}      (bilinear: the product weights, summed in Rust's order)
+//
+// The library declares no binding: where the tables live (a storage buffer, a texture whose
+// sampler does the filtering, constants) is the including shader's choice. It takes a tap per
+// axis (ms_lut_tap: the node index and the weight) and the fetched node values, and the
+// compensation functions take the looked-up albedos. A shader with the tables in a storage
+// buffer `lut` (E at offset 0, E_avg after it) writes, say:
+//
+//   let r = ms_lut_tap(ms_lut_roughness_coord(alpha, 1.0), n_alpha);
+//   let m = ms_lut_tap(abs(wo.z), n_mu);
+//   let e_o = ms_lut_bilerp(r, m, lut[ms_lut_index(r.i, m.i, n_mu)],
+//       lut[ms_lut_index(r.i + 1u, m.i, n_mu)], lut[ms_lut_index(r.i, m.i + 1u, n_mu)],
+//       lut[ms_lut_index(r.i + 1u, m.i + 1u, n_mu)]);
+//
+// (the crate's tests/furnace.rs has the whole shader).
+//
+// Kulla & Conty 2017 ("Revisiting Physically Based Shading at Imageworks", SIGGRAPH course):
+// the single-scattering lobe plus
+//
+//   f_ms(μo, μi) = F_ms (1 − E(μo))(1 − E(μi)) / (π (1 − E_avg)),
+//   F_ms = F_avg² E_avg / (1 − F_avg (1 − E_avg)),
+//
+// F_avg = 2∫F(μ)μ dμ of the Fresnel term (the Rust type's: 8-point Gauss–Legendre on 16
+// intervals; the caller passes it). With F = 1 the white furnace ∫(f_ss + f_ms) cos θi dωi is
+// 1 + E(μo) − E_l(μo), E_l the table's lookup, exactly when E_avg is the average of the
+// looked-up E (a linear filter's E_l ≤ 1 wherever the nodes are, so no clamp changes the lobe's
+// normalisation; the Rust type's `lost_avg` is then 1 − E_avg). Turquin 2019 ("Practical
+// multiple scattering compensation for microfacet models"): the single-scattering lobe scaled
+// by 1 + F0 (1 − E(μo))/E(μo), F0 = F(μ = 1); with F = 1 the furnace is E(μo)/E_l(μo).
+
+// One axis' tap: the lower node `i` and the weight `f` of node i + 1.
+struct MsLutTap {
+    i: u32,
+    f: f32,
+}
+
+// The tap of coordinate x on an axis of n ≥ 2 texel-centred nodes (`Lut::lookup`'s):
+// clamped to the edge nodes outside [½/n, 1 − ½/n], so x = 0 and x = 1 are the edge values.
+fn ms_lut_tap(x: f32, n: u32) -> MsLutTap {
+    let t = clamp(x * f32(n) - 0.5, 0.0, f32(n - 1u));
+    let i = min(u32(floor(t)), n - 2u);
+    return MsLutTap(i, t - f32(i));
+}
+
+// The flat index of node (roughness ir, μ im) of a row-major [roughness][μ] table of n_mu
+// nodes along μ.
+fn ms_lut_index(ir: u32, im: u32, n_mu: u32) -> u32 {
+    return ir * n_mu + im;
+}
+
+// The 1-D linear filter between v0 (node t.i) and v1 (node t.i + 1).
+fn ms_lut_lerp(t: MsLutTap, v0: f32, v1: f32) -> f32 {
+    return (1.0 - t.f) * v0 + t.f * v1;
+}
+
+// The bilinear filter of a [roughness][μ] table: v_ab the node (r.i + a, m.i + b). The weights
+// and the order of the sum are `Lut::lookup`'s (roughness the outer axis).
+fn ms_lut_bilerp(r: MsLutTap, m: MsLutTap, v00: f32, v10: f32, v01: f32, v11: f32) -> f32 {
+    let gr = 1.0 - r.f;
+    let gm = 1.0 - m.f;
+    return gr * gm * v00 + r.f * gm * v10 + gr * m.f * v01 + r.f * m.f * v11;
+}
+
+// The roughness coordinate of a `sqrt_alpha` axis: √(√(αx αy)/α_max) (perceptual roughness;
+// for isotropic α, √(α/α_max)).
+fn ms_lut_roughness_coord(alpha: vec2<f32>, alpha_max: f32) -> f32 {
+    return sqrt(sqrt(alpha.x * alpha.y) / alpha_max);
+}
+
+// Kulla–Conty's Fresnel factor F_ms = F_avg² E_avg / (1 − F_avg (1 − E_avg)), per channel.
+fn ms_kulla_conty_f_ms(f_avg: vec3<f32>, e_avg: f32) -> vec3<f32> {
+    return f_avg * f_avg * e_avg / (1.0 - f_avg * (1.0 - e_avg));
+}
+
+// Kulla–Conty's lobe without F_ms, (1 − E(μo))(1 − E(μi))/(π (1 − E_avg)), from the looked-up
+// e_o = E(μo), e_i = E(μi): each factor clamped at 0 (as the Rust type: f ≥ 0 wherever a
+// table's value passes 1), and 0 where nothing is lost (E_avg ≥ 1: a smooth surface).
+fn ms_kulla_conty_lobe(e_o: f32, e_i: f32, e_avg: f32) -> f32 {
+    let den = MS_PI * (1.0 - e_avg);
+    if !(den > 0.0) {
+        return 0.0;
+    }
+    return max(1.0 - e_o, 0.0) * max(1.0 - e_i, 0.0) / den;
+}
+
+// The Kulla–Conty compensated conductor's f(wo, wi) without the cosine: ms_conductor_eval plus
+// f_ms ms_kulla_conty_lobe where wo and wi lie on one side (the single-scattering lobe's
+// sides). e_o, e_i: E at |cos θo|, |cos θi| and the material's roughness; f_ms:
+// ms_kulla_conty_f_ms of the Fresnel term's average.
+fn ms_conductor_eval_kulla_conty(c: MsConductor, wo: vec3<f32>, wi: vec3<f32>, e_o: f32,
+    e_i: f32, e_avg: f32, f_ms: vec3<f32>) -> vec3<f32> {
+    let f = ms_conductor_eval(c, wo, wi);
+    if !(wo.z * wi.z > 0.0) {
+        return f;
+    }
+    return f + ms_kulla_conty_lobe(e_o, e_i, e_avg) * f_ms;
+}
+
+// Turquin's scale of the single-scattering lobe, 1 + F0 (1 − E(μo))/E(μo), per channel.
+fn ms_turquin_scale(e_o: f32, f0: vec3<f32>) -> vec3<f32> {
+    return 1.0 + f0 * (1.0 - e_o) / e_o;
+}
+
+// The Turquin compensated conductor's f(wo, wi) without the cosine: ms_conductor_eval scaled
+// by ms_turquin_scale(e_o, f0), e_o = E(|cos θo|), f0 = the Fresnel term at normal incidence.
+fn ms_conductor_eval_turquin(c: MsConductor, wo: vec3<f32>, wi: vec3<f32>, e_o: f32,
+    f0: vec3<f32>) -> vec3<f32> {
+    return ms_conductor_eval(c, wo, wi) * ms_turquin_scale(e_o, f0);
+}
