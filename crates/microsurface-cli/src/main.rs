@@ -105,14 +105,16 @@ const LUT_USAGE: &str = "\
                  [--gamma G | --a A] [--size N] [--eta-size N] [--aspect-size N]
                  [--mu-axis mu|sqrt_mu] [--roughness-axis sqrt_alpha|alpha]
                  [--alpha-max A] [--format npy|png|exr|ktx2|c|rust|wgsl] [--out FILE]
-                 [--level L] [--check N]
+                 [--nodes centres|edges] [--level L] [--check N]
       the tables real-time engines load (microsurface::scattering::lut): E(mu, alpha)
       of the F = 1 conductor and its average, the split-sum terms A, B (Schlick:
       F0 A + B) and C (F82-tint: F0 A + B - a C), a dielectric's R and T from both
       sides over (side, eta, alpha, mu) and their averages; --size nodes along mu and
       roughness (default 32), --eta-size along eta = 1 + 2 x^2 (default 16),
       --aspect-size along alpha_y/alpha_x (anisotropic, averaged over the azimuth;
-      default 0, isotropic); nodes at texel centres (i + 0.5)/n. The format by --format,
+      default 0, isotropic); nodes at texel centres (i + 0.5)/n, for a GPU's linear
+      filter, or with --nodes edges at i/(n - 1), both ends included (Cycles' lookup;
+      mu = 0 and alpha = 0 taken at their limits). The format by --format,
       else FILE's extension, else npy; FILE defaults to NDF_KIND_SIZE.EXT. Writes
       FILE.json beside it: the parameters, axes, layout and the errors measured (the
       linear filter against the quadrature at --check points per axis, default 8, 0

@@ -1379,7 +1379,38 @@ fn lut_writes_every_format_with_its_manifest() {
         .map(|a| a["name"].as_str().unwrap())
         .collect();
     assert_eq!(names, ["side", "eta", "sqrt_alpha", "mu"]);
+    assert_eq!(manifest["axes"][3]["coords"], "texel centres (i + 0.5)/n");
     assert!(manifest["error"]["filter"].is_null());
+    // Edge-aligned nodes: μ = 0 and 1 are nodes.
+    let out = dir.join("edges.npy");
+    let o = microsurface(
+        &[
+            "lut",
+            "--ndf",
+            "ggx",
+            "--kind",
+            "albedo",
+            "--size",
+            "3",
+            "--nodes",
+            "edges",
+            "--check",
+            "2",
+            "--out",
+            out.to_str().unwrap(),
+        ],
+        "",
+    );
+    assert!(o.status.success(), "{}", String::from_utf8_lossy(&o.stderr));
+    let manifest: serde_json::Value =
+        serde_json::from_str(&std::fs::read_to_string(dir.join("edges.npy.json")).unwrap())
+            .unwrap();
+    assert_eq!(
+        manifest["axes"][1]["params"],
+        serde_json::json!([0.0, 0.5, 1.0])
+    );
+    assert_eq!(manifest["axes"][1]["coords"], "edges i/(n - 1)");
+    assert_eq!(manifest["error"]["filter"]["border"]["points"], 0);
     let missing = dir.join("no-such-dir").join("t.npy");
     for (args, needle) in [
         (vec!["lut", "--kind", "dfg"], "--ndf is required"),
@@ -1416,6 +1447,10 @@ fn lut_writes_every_format_with_its_manifest() {
         (
             vec!["lut", "--ndf", "ggx", "--kind", "dfg", "--mu-axis", "cos"],
             "mu axis",
+        ),
+        (
+            vec!["lut", "--ndf", "ggx", "--kind", "dfg", "--nodes", "ends"],
+            "node layout",
         ),
         (
             vec![

@@ -3699,7 +3699,7 @@ fn matched_orders_and_table_values() {
 /// coordinates never panic, and are finite at finite ones.
 #[test]
 fn lut_tables() {
-    use microsurface::scattering::lut::{Lut, LutKind, LutSpec, MuAxis, RoughnessAxis};
+    use microsurface::scattering::lut::{Lut, LutKind, LutSpec, MuAxis, Nodes, RoughnessAxis};
     use microsurface::NdfSpec;
     let mut r = Rng::new(67);
     let mut fails = Failures::default();
@@ -3754,6 +3754,7 @@ fn lut_tables() {
         };
         spec.mu_axis = r.pick(&[MuAxis::Cos, MuAxis::SqrtCos]);
         spec.roughness_axis = r.pick(&[RoughnessAxis::SqrtAlpha, RoughnessAxis::Alpha]);
+        spec.nodes = r.pick(&[Nodes::Centres, Nodes::Edges]);
         spec.alpha_max = if hostile(&mut r) {
             r.pick(&[0.0, -1.0, 1e-7, 2e6, f64::NAN, f64::INFINITY])
         } else if r.chance(0.2) {

@@ -7,7 +7,9 @@
 use microsurface::bsdf::fresnel::{self, F82Tint, Schlick};
 use microsurface::bsdf::{Bsdf, RoughConductor};
 use microsurface::check::quad::integrate;
-use microsurface::scattering::lut::{Lut, LutError, LutKind, LutSpec, MuAxis, RoughnessAxis};
+use microsurface::scattering::lut::{
+    Lut, LutError, LutKind, LutSpec, MuAxis, Nodes, RoughnessAxis, MU_MIN,
+};
 use microsurface::scattering::{
     single_scattering_albedo, single_scattering_albedo_dielectric, AlbedoTable,
 };
@@ -288,4 +290,31 @@ fn bad_specs_are_typed_errors() {
         .parse::<LutKind>()
         .unwrap_err()
         .contains("dielectric-avg"));
+}
+
+#[test]
+fn edge_aligned_nodes_include_both_ends() {
+    let mut s = spec(NdfKind::Ggx, LutKind::Albedo, 5);
+    s.nodes = Nodes::Edges;
+    s.roughness_axis = RoughnessAxis::Alpha;
+    let lut = Lut::compute(&s, &quiet).unwrap();
+    assert_eq!(lut.axes[1].coords, vec![0.0, 0.25, 0.5, 0.75, 1.0]);
+    assert_eq!(lut.axes[0].params[4], 1.0);
+    // The end nodes: μ = 0 is the grazing limit at MU_MIN, α = 0 the smooth limit at 1e-6.
+    let at = |alpha: f64, mu: f64| {
+        let d = AnyMicrofacet::<f64>::new(NdfKind::Ggx, alpha, alpha, None).unwrap();
+        let st = ((1.0 - mu) * (1.0 + mu)).sqrt();
+        single_scattering_albedo(&d, [st, 0.0, mu])
+    };
+    assert!((lut.values[4 * 5] - at(1.0, MU_MIN)).abs() < 1e-8);
+    assert!((lut.values[2] - at(microsurface::ALPHA_MIN, 0.5)).abs() < 1e-8);
+    assert!((lut.values[2] - 1.0).abs() < 1e-5, "smooth: E = 1");
+    // Cycles' lookup: t = x (n − 1), nodes at their coordinates, halfway the mean.
+    assert_eq!(lut.lookup(&[0.75, 0.25]), vec![lut.values[3 * 5 + 1]]);
+    let mid = lut.lookup(&[0.875, 0.25])[0];
+    assert!((mid - 0.5 * (lut.values[3 * 5 + 1] + lut.values[4 * 5 + 1])).abs() < 1e-15);
+    // No border: every probe is between two nodes.
+    let acc = lut.error(3, &quiet);
+    assert_eq!((acc.interior.points, acc.border.points), (9, 0));
+    assert!(acc.interior.max_abs.is_finite());
 }

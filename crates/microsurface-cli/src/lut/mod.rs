@@ -7,7 +7,7 @@
 pub mod format;
 
 use format::{Format, LutData};
-use microsurface::scattering::lut::{Lut, LutKind, LutSpec, MuAxis, RoughnessAxis};
+use microsurface::scattering::lut::{Lut, LutKind, LutSpec, MuAxis, Nodes, RoughnessAxis};
 use microsurface::NdfSpec;
 use serde_json::json;
 use std::path::{Path, PathBuf};
@@ -68,6 +68,7 @@ pub fn run(args: &[String]) -> Result<ExitCode, String> {
     let mut format = None;
     let mut out = None;
     let mut check = 8usize;
+    let mut nodes = None;
     let mut it = args.iter();
     while let Some(flag) = it.next() {
         let v = it
@@ -92,6 +93,7 @@ pub fn run(args: &[String]) -> Result<ExitCode, String> {
             "--alpha-max" => alpha_max = Some(number(v)?),
             "--level" => level = Some(count(flag, v, 0)?),
             "--check" => check = count(flag, v, 0)?,
+            "--nodes" => nodes = Some(v.parse::<Nodes>().map_err(err)?),
             "--format" => format = Some(v.parse::<Format>().map_err(err)?),
             "--out" => out = Some(PathBuf::from(v)),
             other => return Err(err(format!("unknown option '{}'", crate::clip(other)))),
@@ -115,6 +117,7 @@ pub fn run(args: &[String]) -> Result<ExitCode, String> {
     spec.mu_axis = mu_axis.unwrap_or(spec.mu_axis);
     spec.roughness_axis = roughness_axis.unwrap_or(spec.roughness_axis);
     spec.alpha_max = alpha_max.unwrap_or(spec.alpha_max);
+    spec.nodes = nodes.unwrap_or(spec.nodes);
     if let Some(l) = level {
         spec.level = u32::try_from(l).unwrap_or(u32::MAX);
     }
@@ -203,7 +206,7 @@ pub fn run(args: &[String]) -> Result<ExitCode, String> {
             "border": stat(&acc.border),
             "per_axis": check,
             "reference": format!("quadrature at level {}", (spec.level + 1).min(7)),
-            "how": "a linear filter over the texel centres (clamp to edge) against the quantity: interior at the midpoints between nodes, border where a coordinate is halfway between an edge texel's centre and the edge",
+            "how": "the linear filter between the nodes (clamped to the end nodes) against the quantity: interior at the midpoints between nodes, border where a coordinate of a texel-centred axis is halfway between the end node and the edge",
         })
     } else {
         serde_json::Value::Null
@@ -223,7 +226,11 @@ pub fn run(args: &[String]) -> Result<ExitCode, String> {
             "name": a.name,
             "nodes": a.coords.len(),
             "map": a.map,
-            "coords": if a.interpolated { "texel centres (i + 0.5)/n" } else { "node index" },
+            "coords": match (a.interpolated, a.nodes) {
+                (false, _) => "node index",
+                (true, Nodes::Centres) => "texel centres (i + 0.5)/n",
+                (true, Nodes::Edges) => "edges i/(n - 1)",
+            },
             "params": a.params,
         })).collect::<Vec<_>>(),
         "layout": "row-major over the axes (outermost first), then the channels",

@@ -32,13 +32,18 @@
 //!   separate table; here it is the outer axis of one.
 //! * [`LutKind::DielectricAvg`]: 2∫ R μ dμ and 2∫ T μ dμ, as for `AlbedoAvg`.
 //!
-//! # Axes and texel centres
+//! # Axes: texel centres or edges
 //!
-//! An axis of n nodes puts them at the texture coordinates xᵢ = (i + ½)/n, the centres of
-//! a texture's n texels: a shader samples the table with the hardware's linear filter at
-//! the coordinate of its parameter and clamp-to-edge addressing, which is [`Lut::lookup`]
-//! exactly (Filament's and Unreal's DFG tables are laid out so). No node sits at μ = 0 or
-//! α = 0, where the integrals degenerate. The coordinate of each parameter:
+//! [`Nodes::Centres`] (the default) puts an axis' n nodes at the texture coordinates
+//! xᵢ = (i + ½)/n, the centres of a texture's n texels: a shader samples the table with the
+//! hardware's linear filter at the coordinate of its parameter and clamp-to-edge addressing,
+//! which is [`Lut::lookup`] exactly (Filament's and Unreal's DFG tables are laid out so); no
+//! node sits at μ = 0 or α = 0, and the half texels at both ends are clamped.
+//! [`Nodes::Edges`] puts them at xᵢ = i/(n − 1), both ends included (Cycles'
+//! `lookup_table_read`: t = x(n − 1)); a texture sampler reaches them at
+//! (x(n − 1) + ½)/n. Its end nodes are limits: α = 0 is taken at [`crate::ALPHA_MIN`] and
+//! μ = 0 at [`MU_MIN`] (the grazing limit), η = 1 is the index-matched interface; the aspect
+//! axis keeps texel centres (αy/αx = 0 is no material). The coordinate of each parameter:
 //!
 //! | axis | coordinate x ∈ [0, 1] | parameter |
 //! |---|---|---|
@@ -209,7 +214,33 @@ pub struct LutSpec {
     pub alpha_max: f64,
     /// The level of the tanh-sinh rule (step 2^−level), 2 to 7.
     pub level: u32,
+    /// Where the nodes of μ, the roughness and η sit.
+    pub nodes: Nodes,
 }
+
+/// Where an axis' nodes sit: see the [module docs](self).
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Hash)]
+pub enum Nodes {
+    /// xᵢ = (i + ½)/n (`centres`): a texture's texel centres.
+    Centres,
+    /// xᵢ = i/(n − 1) (`edges`): both ends are nodes.
+    Edges,
+}
+
+impl FromStr for Nodes {
+    type Err = String;
+    fn from_str(s: &str) -> Result<Self, String> {
+        match s {
+            "centres" | "centers" => Ok(Nodes::Centres),
+            "edges" => Ok(Nodes::Edges),
+            _ => Err(format!("unknown node layout '{s}' (centres or edges)")),
+        }
+    }
+}
+
+/// The smallest μ a table computes: μ = 0 (an edge node, or [`Lut::exact`] there) is the
+/// grazing limit, taken here (the integrals at wo on the horizon are 0, not their limit).
+pub const MU_MIN: f64 = 1e-6;
 
 /// Fewest nodes along an axis (a linear filter needs two).
 pub const MIN_NODES: usize = 2;
@@ -217,8 +248,8 @@ pub const MIN_NODES: usize = 2;
 pub const MAX_NODES: usize = 4096;
 
 impl LutSpec {
-    /// The defaults for `kind`: GGX, 32 nodes along μ (coordinate μ) and √α (α_max = 1), 16
-    /// along η, isotropic, level 4.
+    /// The defaults for `kind` of `ndf`: 32 nodes along μ (coordinate μ) and √α (α_max = 1),
+    /// 16 along η, isotropic, at texel centres, level 4.
     pub fn new(ndf: NdfSpec, kind: LutKind) -> LutSpec {
         LutSpec {
             ndf,
@@ -230,6 +261,7 @@ impl LutSpec {
             roughness_axis: RoughnessAxis::SqrtAlpha,
             alpha_max: 1.0,
             level: 4,
+            nodes: Nodes::Centres,
         }
     }
 
@@ -251,11 +283,12 @@ impl LutSpec {
         if !(2..=7).contains(&self.level) {
             return Err(LutError::Level(self.level));
         }
-        // Every node's material is built once here: a bad α_max or shape fails before the
-        // work starts (the extreme nodes bound every other one).
-        let lo = 0.5 / self.size as f64;
-        let hi = 1.0 - lo;
-        for r in [lo, hi] {
+        if !(crate::ALPHA_MIN..=crate::ALPHA_MAX).contains(&self.alpha_max) {
+            return Err(ParamError::Alpha(self.alpha_max).into());
+        }
+        // The extreme nodes' materials are built here: a bad shape, or GTR's anisotropy,
+        // fails before the work starts.
+        for r in [0.0, 1.0] {
             let alpha = self.alpha_at(r);
             for s in self.aspects() {
                 let (ax, ay) = stretch(alpha, s);
@@ -288,10 +321,13 @@ impl LutSpec {
     }
 }
 
-/// (αx, αy) of roughness α = √(αx αy) and aspect s = αy/αx.
+/// (αx, αy) of roughness α = √(αx αy) and aspect s = αy/αx, each taken into the accepted
+/// range (α = 0 at roughness 0 is the smooth limit, taken at α = 1e-6; αy = 0 at aspect 0,
+/// and αx = ∞, at the range's ends).
 fn stretch(alpha: f64, s: f64) -> (f64, f64) {
     let r = s.sqrt();
-    (alpha / r, alpha * r)
+    let clamp = |a: f64| a.clamp(crate::ALPHA_MIN, crate::ALPHA_MAX);
+    (clamp(alpha / r), clamp(alpha * r))
 }
 
 /// η at coordinate x (Cycles' map).
@@ -301,7 +337,15 @@ fn eta_at(x: f64) -> f64 {
 
 /// The texel centres (i + ½)/n.
 fn centres(n: usize) -> Vec<f64> {
-    (0..n).map(|i| (i as f64 + 0.5) / n as f64).collect()
+    coords(n, Nodes::Centres)
+}
+
+/// The nodes' coordinates of an axis of n ≥ 2 nodes.
+fn coords(n: usize, nodes: Nodes) -> Vec<f64> {
+    match nodes {
+        Nodes::Centres => (0..n).map(|i| (i as f64 + 0.5) / n as f64).collect(),
+        Nodes::Edges => (0..n).map(|i| i as f64 / (n - 1) as f64).collect(),
+    }
 }
 
 /// Why a table cannot be made.
@@ -343,8 +387,10 @@ pub struct Axis {
     pub name: &'static str,
     /// The parameter at coordinate x, as a formula (`alpha = 1 * x^2`).
     pub map: String,
-    /// The coordinates of the nodes (texel centres; the side's are 0 and 1).
+    /// The coordinates of the nodes (the side's are 0 and 1).
     pub coords: Vec<f64>,
+    /// Where they sit (the side's: `Edges`).
+    pub nodes: Nodes,
     /// The parameter at each node (μ, α, αy/αx, η; the side's ±1: wo.z's sign).
     pub params: Vec<f64>,
     /// Whether [`Lut::lookup`] interpolates along it (all but `side`).
@@ -436,25 +482,32 @@ impl Lut {
 
     fn axes_of(spec: &LutSpec) -> Vec<Axis> {
         let mut axes = Vec::new();
-        let axis = |name, map: String, coords: Vec<f64>, f: &dyn Fn(f64) -> f64| Axis {
-            name,
-            map,
-            params: coords.iter().map(|&x| f(x)).collect(),
-            coords,
-            interpolated: true,
+        let axis = |name, map: String, nodes: Nodes, n: usize, f: &dyn Fn(f64) -> f64| {
+            let coords = coords(n, nodes);
+            Axis {
+                name,
+                map,
+                params: coords.iter().map(|&x| f(x)).collect(),
+                coords,
+                nodes,
+                interpolated: true,
+            }
         };
+        let nodes = spec.nodes;
         if spec.kind.dielectric() {
             axes.push(Axis {
                 name: "side",
                 map: "0: wo outside (eta), 1: wo inside (1/eta)".into(),
                 coords: vec![0.0, 1.0],
                 params: vec![1.0, -1.0],
+                nodes: Nodes::Edges,
                 interpolated: false,
             });
             axes.push(axis(
                 "eta",
                 "eta = 1 + 2 x^2".into(),
-                centres(spec.eta_size),
+                nodes,
+                spec.eta_size,
                 &eta_at,
             ));
         }
@@ -462,7 +515,8 @@ impl Lut {
             axes.push(axis(
                 "aspect",
                 "alpha_y/alpha_x = x".into(),
-                centres(spec.aspect_size),
+                Nodes::Centres,
+                spec.aspect_size,
                 &|x| x,
             ));
         }
@@ -471,15 +525,13 @@ impl Lut {
             RoughnessAxis::SqrtAlpha => ("sqrt_alpha", format!("alpha = {a:?} x^2")),
             RoughnessAxis::Alpha => ("alpha", format!("alpha = {a:?} x")),
         };
-        axes.push(axis(name, map, centres(spec.size), &|x| spec.alpha_at(x)));
+        axes.push(axis(name, map, nodes, spec.size, &|x| spec.alpha_at(x)));
         if !spec.kind.average() {
             let (name, map) = match spec.mu_axis {
                 MuAxis::Cos => ("mu", "mu = x"),
                 MuAxis::SqrtCos => ("sqrt_mu", "mu = x^2"),
             };
-            axes.push(axis(name, map.into(), centres(spec.size), &|x| {
-                spec.mu_at(x)
-            }));
+            axes.push(axis(name, map.into(), nodes, spec.size, &|x| spec.mu_at(x)));
         }
         axes
     }
@@ -489,9 +541,9 @@ impl Lut {
         self.axes.iter().map(|a| a.coords.len()).collect()
     }
 
-    /// The table at texture coordinates `x` (one per axis; the side's rounded to its node):
-    /// multilinear between the texel centres, clamped to the edge texels outside them, the
-    /// value a GPU's linear filter returns (in f64). `x` of the wrong length, or NaN, gives
+    /// The table at coordinates `x` (one per axis; the side's rounded to its node):
+    /// multilinear between the nodes, clamped to the end nodes outside them (texel centres:
+    /// the value a GPU's linear filter returns, in f64; edges: Cycles' lookup). `x` of the wrong length, or NaN, gives
     /// NaN channels.
     pub fn lookup(&self, x: &[f64]) -> Vec<f64> {
         let c = self.channels.len();
@@ -509,7 +561,11 @@ impl Lut {
                     let i = (x.clamp(0.0, 1.0) * (n - 1) as f64).round() as usize;
                     return [(i, 1.0), (i, 0.0)];
                 }
-                let t = (x * n as f64 - 0.5).clamp(0.0, (n - 1) as f64);
+                let t = match a.nodes {
+                    Nodes::Centres => x * n as f64 - 0.5,
+                    Nodes::Edges => x * (n - 1) as f64,
+                }
+                .clamp(0.0, (n - 1) as f64);
                 let i = (t.floor() as usize).min(n - 2);
                 let f = t - i as f64;
                 [(i, 1.0 - f), (i + 1, f)]
@@ -537,9 +593,8 @@ impl Lut {
     /// The quantity itself at texture coordinates `x` in [0, 1] (any, not only nodes; the
     /// side's rounded), by the quadrature at `level` (clamped to 2 to 7). Where a coordinate
     /// maps outside the accepted roughness (α = 0 at roughness 0, αy = 0 at aspect 0), α is
-    /// taken at [`crate::ALPHA_MIN`] (or [`crate::ALPHA_MAX`]); μ = 0 is wo on the horizon,
-    /// where the integrals are 0. Coordinates outside [0, 1], NaN, or of the wrong count give
-    /// NaN.
+    /// taken at [`crate::ALPHA_MIN`] (or [`crate::ALPHA_MAX`]), and μ below [`MU_MIN`] at
+    /// it. Coordinates outside [0, 1], NaN, or of the wrong count give NaN.
     pub fn exact(&self, x: &[f64], level: u32) -> Vec<f64> {
         if x.len() != self.axes.len() || x.iter().any(|v| !(0.0..=1.0).contains(v)) {
             return vec![f64::NAN; self.channels.len()];
@@ -550,8 +605,9 @@ impl Lut {
     /// The error a shader sees: [`Lut::lookup`] against [`Lut::exact`] one level finer than
     /// the table, on the product grid of, per axis, the midpoints between nodes (at most
     /// `per_axis` of them, evenly strided, the first and last always) and the two points
-    /// halfway into the clamped border; every node of `side`. Reported apart: the
-    /// interior (every coordinate a midpoint) and the border (some coordinate clamped).
+    /// halfway into the clamped border (texel-centred axes; an edge-aligned one has none);
+    /// every node of `side`. Reported apart: the interior (every coordinate a midpoint) and
+    /// the border (some coordinate clamped).
     pub fn error(&self, per_axis: usize, progress: &(dyn Fn(usize, usize) + Sync)) -> LutAccuracy {
         let per_axis = per_axis.max(2);
         let probes: Vec<Vec<f64>> = self
@@ -571,11 +627,16 @@ impl Lut {
                         } else {
                             k * (mids - 1) / (take - 1)
                         };
-                        (j as f64 + 1.0) / n as f64
+                        match a.nodes {
+                            Nodes::Centres => (j as f64 + 1.0) / n as f64,
+                            Nodes::Edges => (j as f64 + 0.5) / (n - 1) as f64,
+                        }
                     })
                     .collect();
-                xs.push(0.25 / n as f64);
-                xs.push(1.0 - 0.25 / n as f64);
+                if a.nodes == Nodes::Centres {
+                    xs.push(0.25 / n as f64);
+                    xs.push(1.0 - 0.25 / n as f64);
+                }
                 xs
             })
             .collect();
@@ -613,7 +674,9 @@ impl Lut {
                 .zip(&self.axes)
                 .zip(&n_border)
                 .any(|((&x, a), &n)| {
-                    a.interpolated && (x < 0.5 / n as f64 || x > 1.0 - 0.5 / n as f64)
+                    a.interpolated
+                        && a.nodes == Nodes::Centres
+                        && (x < 0.5 / n as f64 || x > 1.0 - 0.5 / n as f64)
                 });
             let s = &mut stats[border as usize];
             s.3 += 1;
@@ -672,17 +735,11 @@ fn quantity(spec: &LutSpec, axes: &[Axis], x: &[f64], level: u32) -> Vec<f64> {
             "side" => p.inside = x >= 0.5,
             "eta" => p.eta = eta_at(x),
             "aspect" => p.aspect = x,
-            "mu" | "sqrt_mu" => p.mu = spec.mu_at(x),
+            "mu" | "sqrt_mu" => p.mu = spec.mu_at(x).max(MU_MIN),
             _ => p.alpha = spec.alpha_at(x),
         }
     }
-    // (Coordinate 0 of the roughness or the aspect is α = 0 or αy = 0, and αx = ∞: taken at
-    // the accepted range's ends, where the surface is smooth or flat to within 1e-6.)
     let (ax, ay) = stretch(p.alpha, p.aspect);
-    let (ax, ay) = (
-        ax.clamp(crate::ALPHA_MIN, crate::ALPHA_MAX),
-        ay.clamp(crate::ALPHA_MIN, crate::ALPHA_MAX),
-    );
     let Ok(dist) = AnyMicrofacet::<f64>::new(spec.ndf.kind, ax, ay, spec.ndf.shape) else {
         return vec![f64::NAN; spec.kind.channels().len()];
     };
