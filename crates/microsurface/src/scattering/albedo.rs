@@ -282,6 +282,35 @@ pub fn albedo_orders<D: MicrofacetDistribution<f64>>(
     // (A direction of any finite nonzero length, as the contract has them: the walk's
     // heights and cosines are for unit vectors.)
     let wo = crate::distribution::unit(wo);
+    let mut rngs = [WalkRng::new(seed), WalkRng::new(lane_seed(seed, 1))];
+    let mut sums = [
+        AlbedoSums::with_orders(orders),
+        AlbedoSums::with_orders(orders),
+    ];
+    surface.walk_lanes(facets, wo, walks, &mut rngs, |j, w| sums[j].add(wo, w));
+    let [mut a, b] = sums;
+    a.merge(&b);
+    a.finish_orders()
+}
+
+/// The seed of lane `j` ≥ 1's stream from the call's `seed` (a SplitMix64 output: streams
+/// far apart in the generator's sequence).
+fn lane_seed(seed: u64, j: u64) -> u64 {
+    crate::math::rng::SplitMix64(seed ^ j.wrapping_mul(0xD1B5_4A32_D192_ED03)).next_u64()
+}
+
+/// [`albedo_orders`] as it was before the walks were interleaved: one stream, one walk after
+/// another (the benchmark's baseline).
+#[doc(hidden)]
+pub fn albedo_orders_serial<D: MicrofacetDistribution<f64>>(
+    surface: &RandomWalk<D>,
+    facets: &impl Facets<1>,
+    wo: [f64; 3],
+    walks: u64,
+    seed: u64,
+    orders: usize,
+) -> AlbedoOrders {
+    let wo = crate::distribution::unit(wo);
     let mut rng = WalkRng::new(seed);
     let mut sums = AlbedoSums::with_orders(orders);
     for _ in 0..walks {

@@ -580,6 +580,122 @@ impl<D: MicrofacetDistribution<f64>> RandomWalk<D> {
         None
     }
 
+    /// `walks` walks from wo in `L` interleaved lanes: lane j runs a fixed share,
+    /// ⌈(walks − j)/L⌉ walks, one after the other from its own stream
+    /// `rngs[j]`, each walk exactly what [`RandomWalk::walk`] from that stream would give,
+    /// and `record(j, walked)` is called with each result in the lane's order. The lanes
+    /// advance in lockstep, one height step and event each per round, so that their
+    /// dependency chains overlap; a lane that ends a walk starts its next at once.
+    #[inline]
+    pub(crate) fn walk_lanes<const N: usize, const L: usize, Fa: Facets<N>>(
+        &self,
+        facets: &Fa,
+        wo: [f64; 3],
+        walks: u64,
+        rngs: &mut [WalkRng; L],
+        mut record: impl FnMut(usize, Option<Walked<N>>),
+    ) {
+        let wo = unit(wo);
+        let quota: [u64; L] = std::array::from_fn(|j| (walks + (L - 1 - j) as u64) / L as u64);
+        if wo[2] == 0.0 || !(wo[0].is_finite() && wo[1].is_finite() && wo[2].is_finite()) {
+            for (j, &q) in quota.iter().enumerate() {
+                for _ in 0..q {
+                    record(j, None);
+                }
+            }
+            return;
+        }
+        let inside0 = wo[2] < 0.0;
+        let w0 = if inside0 { wo } else { [-wo[0], -wo[1], -wo[2]] };
+        #[derive(Clone, Copy)]
+        struct Lane<const N: usize> {
+            w: [f64; 3],
+            h: f64,
+            weight: [f64; N],
+            inside: bool,
+            order: u32,
+            left: u64,
+        }
+        let fresh = |left: u64| Lane {
+            w: w0,
+            h: 0.0,
+            weight: [1.0; N],
+            inside: inside0,
+            order: 0,
+            left,
+        };
+        // (`left`: the walks the lane has still to start after the current one.)
+        let mut lanes: [Lane<N>; L] = std::array::from_fn(|j| fresh(quota[j].saturating_sub(1)));
+        let mut active: [bool; L] = std::array::from_fn(|j| quota[j] > 0);
+        // One height step and event of lane j: `Some(result)` when its walk ended.
+        #[inline(always)]
+        fn step<D: MicrofacetDistribution<f64>, const N: usize, Fa: Facets<N>>(
+            s: &RandomWalk<D>,
+            facets: &Fa,
+            x: &mut Lane<N>,
+            rng: &mut WalkRng,
+        ) -> Option<Option<Walked<N>>> {
+            match s.next_height(x.w, x.h, rng.next_open()) {
+                None => {
+                    let w = if x.inside { [-x.w[0], -x.w[1], -x.w[2]] } else { x.w };
+                    return Some(Some(Walked {
+                        w,
+                        weight: x.weight,
+                        order: x.order,
+                    }));
+                }
+                Some(next) => x.h = next,
+            }
+            let v = [-x.w[0], -x.w[1], -x.w[2]];
+            let m = s.visible_normal(v, rng);
+            let Some(sc) = facets.scatter(v, m, x.inside, rng) else {
+                return Some(None);
+            };
+            for (a, b) in x.weight.iter_mut().zip(sc.weight) {
+                *a *= b;
+            }
+            if sc.crossed {
+                x.w = [-sc.w[0], -sc.w[1], -sc.w[2]];
+                x.h = s.heights.cross(x.h);
+                x.inside = !x.inside;
+            } else {
+                x.w = sc.w;
+            }
+            if !(x.w[0].is_finite() && x.w[1].is_finite() && x.w[2].is_finite()) || x.h.is_nan() {
+                return Some(None);
+            }
+            x.order += 1;
+            (x.order > MAX_ORDER).then_some(None)
+        }
+        // Lockstep while every lane is busy; then the stragglers one by one.
+        'lockstep: while active.iter().all(|&a| a) {
+            for j in 0..L {
+                if let Some(r) = step(self, facets, &mut lanes[j], &mut rngs[j]) {
+                    record(j, r);
+                    let left = lanes[j].left;
+                    if left == 0 {
+                        active[j] = false;
+                        break 'lockstep;
+                    }
+                    lanes[j] = fresh(left - 1);
+                }
+            }
+        }
+        for j in 0..L {
+            while active[j] {
+                if let Some(r) = step(self, facets, &mut lanes[j], &mut rngs[j]) {
+                    record(j, r);
+                    let left = lanes[j].left;
+                    if left == 0 {
+                        active[j] = false;
+                    } else {
+                        lanes[j] = fresh(left - 1);
+                    }
+                }
+            }
+        }
+    }
+
     /// One walk from the direction wo (toward the viewer; below the surface for a path that
     /// starts in a dielectric's lower medium, or a conductor seen from below, which is its
     /// mirror image). `None` for wo on the horizon or not finite, or a path cut at
