@@ -1674,7 +1674,7 @@ fn walks(i: &Inputs) {
 /// round; medians over the rounds.
 fn walk_lanes() {
     use microsurface::bsdf::fresnel::One;
-    use microsurface::scattering::{albedo_orders, albedo_orders_serial, Heights, MirrorFacets, RandomWalk};
+    use microsurface::scattering::{albedo_orders, albedo_orders_lanes, albedo_orders_serial, Heights, MirrorFacets, RandomWalk};
     let rounds: usize = std::env::var("MICROSURFACE_ROUNDS")
         .ok()
         .and_then(|s| s.parse().ok())
@@ -1687,7 +1687,7 @@ fn walk_lanes() {
                     let s = RandomWalk::new(Microfacet::<f64, $n>::new(alpha, alpha).unwrap(), Heights::Uniform);
                     let wo = [((1.0 - mu) * (1.0 + mu)).sqrt(), 0.0, mu];
                     let n = 200_000u64;
-                    let (mut a, mut b, mut r) = (Vec::new(), Vec::new(), Vec::new());
+                    let (mut a, mut b, mut r, mut c, mut r4) = (Vec::new(), Vec::new(), Vec::new(), Vec::new(), Vec::new());
                     for k in 0..rounds {
                         let t = Instant::now();
                         black_box(albedo_orders_serial(&s, &MirrorFacets(One::<1>), wo, n, k as u64, 4));
@@ -1695,16 +1695,23 @@ fn walk_lanes() {
                         let t = Instant::now();
                         black_box(albedo_orders(&s, &MirrorFacets(One::<1>), wo, n, k as u64, 4));
                         let tl = t.elapsed().as_secs_f64();
+                        let t = Instant::now();
+                        black_box(albedo_orders_lanes::<_, 4>(&s, &MirrorFacets(One::<1>), wo, n, k as u64, 4));
+                        let t4 = t.elapsed().as_secs_f64();
                         a.push(n as f64 / ts / 1e6);
                         b.push(n as f64 / tl / 1e6);
                         r.push(ts / tl);
+                        c.push(n as f64 / t4 / 1e6);
+                        r4.push(ts / t4);
                     }
                     println!(
-                        "{:9} α = {alpha:3} μ = {mu}: serial {:6.3}  interleaved {:6.3} M/s  {:5.3}×",
+                        "{:9} α = {alpha:3} μ = {mu}: serial {:6.3}  2 lanes {:6.3} M/s {:5.3}×  4 lanes {:6.3} M/s {:5.3}×",
                         $name,
                         median(a),
                         median(b),
-                        median(r)
+                        median(r),
+                        median(c),
+                        median(r4)
                     );
                 }
             }
