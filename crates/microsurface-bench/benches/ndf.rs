@@ -1671,10 +1671,12 @@ fn walks(i: &Inputs) {
 /// `albedo_orders` (interleaved walks) against `albedo_orders_serial` (one walk after
 /// another, the code before), F = 1 conductor, GGX and Beckmann, α ∈ {0.1, 0.5, 1},
 /// μ ∈ {0.2, 0.8}, one core: the two in turn in each round, 200 000 walks each, the ratio per
-/// round; medians over the rounds.
+/// round (the first of the two alternating); medians over the rounds.
 fn walk_lanes() {
     use microsurface::bsdf::fresnel::One;
-    use microsurface::scattering::{albedo_orders, albedo_orders_lanes, albedo_orders_serial, Heights, MirrorFacets, RandomWalk};
+    use microsurface::scattering::{
+        albedo_orders, albedo_orders_serial, Heights, MirrorFacets, RandomWalk,
+    };
     let rounds: usize = std::env::var("MICROSURFACE_ROUNDS")
         .ok()
         .and_then(|s| s.parse().ok())
@@ -1684,34 +1686,56 @@ fn walk_lanes() {
         ($name:expr, $n:ty) => {
             for alpha in [0.1, 0.5, 1.0] {
                 for mu in [0.2f64, 0.8] {
-                    let s = RandomWalk::new(Microfacet::<f64, $n>::new(alpha, alpha).unwrap(), Heights::Uniform);
+                    let s = RandomWalk::new(
+                        Microfacet::<f64, $n>::new(alpha, alpha).unwrap(),
+                        Heights::Uniform,
+                    );
                     let wo = [((1.0 - mu) * (1.0 + mu)).sqrt(), 0.0, mu];
                     let n = 200_000u64;
-                    let (mut a, mut b, mut r, mut c, mut r4) = (Vec::new(), Vec::new(), Vec::new(), Vec::new(), Vec::new());
+                    let (mut a, mut b, mut r) = (Vec::new(), Vec::new(), Vec::new());
                     for k in 0..rounds {
-                        let t = Instant::now();
-                        black_box(albedo_orders_serial(&s, &MirrorFacets(One::<1>), wo, n, k as u64, 4));
-                        let ts = t.elapsed().as_secs_f64();
-                        let t = Instant::now();
-                        black_box(albedo_orders(&s, &MirrorFacets(One::<1>), wo, n, k as u64, 4));
-                        let tl = t.elapsed().as_secs_f64();
-                        let t = Instant::now();
-                        black_box(albedo_orders_lanes::<_, 4>(&s, &MirrorFacets(One::<1>), wo, n, k as u64, 4));
-                        let t4 = t.elapsed().as_secs_f64();
+                        let serial = || {
+                            let t = Instant::now();
+                            black_box(albedo_orders_serial(
+                                &s,
+                                &MirrorFacets(One::<1>),
+                                wo,
+                                n,
+                                k as u64,
+                                4,
+                            ));
+                            t.elapsed().as_secs_f64()
+                        };
+                        let lanes = || {
+                            let t = Instant::now();
+                            black_box(albedo_orders(
+                                &s,
+                                &MirrorFacets(One::<1>),
+                                wo,
+                                n,
+                                k as u64,
+                                4,
+                            ));
+                            t.elapsed().as_secs_f64()
+                        };
+                        // (The two in turn, the first alternating between rounds.)
+                        let (ts, tl) = if k % 2 == 0 {
+                            let ts = serial();
+                            (ts, lanes())
+                        } else {
+                            let tl = lanes();
+                            (serial(), tl)
+                        };
                         a.push(n as f64 / ts / 1e6);
                         b.push(n as f64 / tl / 1e6);
                         r.push(ts / tl);
-                        c.push(n as f64 / t4 / 1e6);
-                        r4.push(ts / t4);
                     }
                     println!(
-                        "{:9} α = {alpha:3} μ = {mu}: serial {:6.3}  2 lanes {:6.3} M/s {:5.3}×  4 lanes {:6.3} M/s {:5.3}×",
+                        "{:9} α = {alpha:3} μ = {mu}: serial {:6.3}  2 lanes {:6.3} M/s {:5.3}×",
                         $name,
                         median(a),
                         median(b),
-                        median(r),
-                        median(c),
-                        median(r4)
+                        median(r)
                     );
                 }
             }

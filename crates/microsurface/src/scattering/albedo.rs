@@ -281,35 +281,23 @@ pub fn albedo_orders<D: MicrofacetDistribution<f64>>(
 ) -> AlbedoOrders {
     // (A direction of any finite nonzero length, as the contract has them: the walk's
     // heights and cosines are for unit vectors.)
-    albedo_orders_lanes::<D, 2>(surface, facets, wo, walks, seed, orders)
+    let wo = crate::distribution::unit(wo);
+    let mut rngs: [WalkRng; LANES] = std::array::from_fn(|j| match j {
+        0 => WalkRng::new(seed),
+        _ => WalkRng::new(lane_seed(seed, j as u64)),
+    });
+    let mut sums: [AlbedoSums; LANES] = std::array::from_fn(|_| AlbedoSums::with_orders(orders));
+    surface.walk_lanes(facets, wo, walks, &mut rngs, |j, w| sums[j].add(wo, w));
+    let (first, rest) = sums.split_at_mut(1);
+    for b in rest.iter() {
+        first[0].merge(b);
+    }
+    first[0].finish_orders()
 }
 
-/// [`albedo_orders`] in `L` lanes (experiment).
-#[doc(hidden)]
-pub fn albedo_orders_lanes<D: MicrofacetDistribution<f64>, const L: usize>(
-    surface: &RandomWalk<D>,
-    facets: &impl Facets<1>,
-    wo: [f64; 3],
-    walks: u64,
-    seed: u64,
-    orders: usize,
-) -> AlbedoOrders {
-    let wo = crate::distribution::unit(wo);
-    let mut rngs: [WalkRng; L] = std::array::from_fn(|j| {
-        if j == 0 {
-            WalkRng::new(seed)
-        } else {
-            WalkRng::new(lane_seed(seed, j as u64))
-        }
-    });
-    let mut sums: [AlbedoSums; L] = std::array::from_fn(|_| AlbedoSums::with_orders(orders));
-    surface.walk_lanes(facets, wo, walks, &mut rngs, |j, w| sums[j].add(wo, w));
-    let (a, rest) = sums.split_at_mut(1);
-    for b in rest.iter() {
-        a[0].merge(b);
-    }
-    a[0].finish_orders()
-}
+/// The walks [`albedo_orders`] interleaves ([`RandomWalk`]'s lanes): two measured faster than
+/// one and than four (BENCHMARKS.md, target 7).
+const LANES: usize = 2;
 
 /// The seed of lane `j` ≥ 1's stream from the call's `seed` (a SplitMix64 output: streams
 /// far apart in the generator's sequence).
