@@ -710,3 +710,32 @@ pub(crate) fn lobe_integral(
     let m = mu_peak.clamp(0.0, 1.0);
     integrate(over_phi, 0.0, m, tol).value + integrate(over_phi, m, 1.0, tol).value
 }
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::scattering::{DielectricFacets, Heights};
+    use crate::{Ggx, Microfacet};
+
+    /// The interleaved walks are each lane's walks one after another: `albedo_orders` is,
+    /// bit for bit, the merged sums of ⌈n/2⌉ walks from the seed's stream and ⌊n/2⌋ from the
+    /// second lane's (an odd count, a rough dielectric whose walks end at different steps).
+    #[test]
+    fn lanes_are_their_streams_walks() {
+        let s = RandomWalk::new(
+            Microfacet::<f64, Ggx>::new(1.5, 1.5).unwrap(),
+            Heights::Uniform,
+        );
+        let (f, wo, n, seed) = (DielectricFacets(1.5), [0.6, 0.0, 0.8], 20_001, 5);
+        let lane = |rng: &mut WalkRng, walks: u64| {
+            let mut sums = AlbedoSums::with_orders(6);
+            for _ in 0..walks {
+                sums.add(wo, s.walk::<1>(&f, wo, rng));
+            }
+            sums
+        };
+        let mut a = lane(&mut WalkRng::new(seed), n - n / 2);
+        a.merge(&lane(&mut WalkRng::new(lane_seed(seed, 1)), n / 2));
+        assert_eq!(a.finish_orders(), albedo_orders(&s, &f, wo, n, seed, 6));
+    }
+}
