@@ -258,6 +258,12 @@ impl AlbedoOrders {
 /// after k events]); walks that fail (wo on the horizon, cut paths) count with weight 0.
 /// One channel (a spectral albedo is one call per channel, each with its own seed or the
 /// same one for correlated estimates). [`albedo_orders`] with 4 orders.
+///
+/// **Streams.** The walks run in two interleaved lanes (their dependency chains overlap in
+/// the processor): ⌈walks/2⌉ walks one after another from the stream of `seed`
+/// ([`WalkRng::new`]), ⌊walks/2⌋ from a second stream derived from it, each walk what
+/// [`RandomWalk::walk`] gives from its stream, the two lanes' sums merged. A deterministic
+/// function of the arguments, as before the lanes; not the figures of one stream.
 pub fn albedo<D: MicrofacetDistribution<f64>>(
     surface: &RandomWalk<D>,
     facets: &impl Facets<1>,
@@ -269,8 +275,9 @@ pub fn albedo<D: MicrofacetDistribution<f64>>(
 }
 
 /// The albedo by side and by `orders` order bins (1, 2, …, `orders` − 1 and ≥ `orders`;
-/// at least 1) from wo (any finite nonzero length), as [`albedo`] (the same walks from the same seed: its 4-order figures are
-/// these at `orders` = 4, and the orders below the last are the same for any `orders`).
+/// at least 1) from wo (any finite nonzero length), as [`albedo`] (the same walks from the
+/// same seed, in the same two lanes: its 4-order figures are these at `orders` = 4, and the
+/// orders below the last are the same for any `orders`).
 pub fn albedo_orders<D: MicrofacetDistribution<f64>>(
     surface: &RandomWalk<D>,
     facets: &impl Facets<1>,
