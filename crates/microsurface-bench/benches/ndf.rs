@@ -186,6 +186,11 @@ fn main() {
         walks(&i);
         return;
     }
+    if std::env::var("MICROSURFACE_BENCH").as_deref() == Ok("walk-lanes") {
+        // The interleaved walks of `albedo` against one walk after another (target 7).
+        walk_lanes();
+        return;
+    }
     if std::env::var("MICROSURFACE_BENCH").as_deref() == Ok("wavefront") {
         // Only the wavefront slices.
         wavefront(&i);
@@ -1661,6 +1666,83 @@ fn walks(i: &Inputs) {
         "Fast Bessel-K a = 2.5",
         Microfacet::<f64, BesselK>::with_shape(0.5, 0.5, Some(2.5)).unwrap()
     );
+}
+
+/// `albedo_orders` (interleaved walks) against `albedo_orders_serial` (one walk after
+/// another, the code before), F = 1 conductor, GGX and Beckmann, α ∈ {0.1, 0.5, 1},
+/// μ ∈ {0.2, 0.8}, one core: the two in turn in each round, 200 000 walks each, the ratio per
+/// round (the first of the two alternating); medians over the rounds.
+fn walk_lanes() {
+    use microsurface::bsdf::fresnel::One;
+    use microsurface::scattering::{
+        albedo_orders, albedo_orders_serial, Heights, MirrorFacets, RandomWalk,
+    };
+    let rounds: usize = std::env::var("MICROSURFACE_ROUNDS")
+        .ok()
+        .and_then(|s| s.parse().ok())
+        .unwrap_or(9);
+    println!("walks interleaved vs serial (F = 1 conductor; M walks/s one core, median of {rounds} rounds; ratio per round)");
+    macro_rules! row {
+        ($name:expr, $n:ty) => {
+            for alpha in [0.1, 0.5, 1.0] {
+                for mu in [0.2f64, 0.8] {
+                    let s = RandomWalk::new(
+                        Microfacet::<f64, $n>::new(alpha, alpha).unwrap(),
+                        Heights::Uniform,
+                    );
+                    let wo = [((1.0 - mu) * (1.0 + mu)).sqrt(), 0.0, mu];
+                    let n = 200_000u64;
+                    let (mut a, mut b, mut r) = (Vec::new(), Vec::new(), Vec::new());
+                    for k in 0..rounds {
+                        let serial = || {
+                            let t = Instant::now();
+                            black_box(albedo_orders_serial(
+                                &s,
+                                &MirrorFacets(One::<1>),
+                                wo,
+                                n,
+                                k as u64,
+                                4,
+                            ));
+                            t.elapsed().as_secs_f64()
+                        };
+                        let lanes = || {
+                            let t = Instant::now();
+                            black_box(albedo_orders(
+                                &s,
+                                &MirrorFacets(One::<1>),
+                                wo,
+                                n,
+                                k as u64,
+                                4,
+                            ));
+                            t.elapsed().as_secs_f64()
+                        };
+                        // (The two in turn, the first alternating between rounds.)
+                        let (ts, tl) = if k % 2 == 0 {
+                            let ts = serial();
+                            (ts, lanes())
+                        } else {
+                            let tl = lanes();
+                            (serial(), tl)
+                        };
+                        a.push(n as f64 / ts / 1e6);
+                        b.push(n as f64 / tl / 1e6);
+                        r.push(ts / tl);
+                    }
+                    println!(
+                        "{:9} α = {alpha:3} μ = {mu}: serial {:6.3}  2 lanes {:6.3} M/s {:5.3}×",
+                        $name,
+                        median(a),
+                        median(b),
+                        median(r)
+                    );
+                }
+            }
+        };
+    }
+    row!("GGX", Ggx);
+    row!("Beckmann", Beckmann);
 }
 
 /// Visible normals through `Microfacet` (the material built in each call, as a renderer with

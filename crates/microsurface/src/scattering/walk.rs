@@ -416,6 +416,32 @@ pub const MAX_ORDER: u32 = 10_000;
 /// value is [`crate::bsdf::Transport::Importance`]'s.)
 pub type OrderValues<const N: usize> = [[f64; N]; 4];
 
+/// A walk's state between steps: the travel direction and height ℓ = ln C1 in the frame of
+/// the side it is on, the weight so far, the side, and the number of events so far.
+#[derive(Clone, Copy, Debug)]
+struct Path<const N: usize> {
+    w: [f64; 3],
+    h: f64,
+    weight: [f64; N],
+    inside: bool,
+    order: u32,
+}
+
+impl<const N: usize> Path<N> {
+    /// A path arriving along −wo (wo a finite unit vector off the horizon) at the top.
+    #[inline]
+    fn start(wo: [f64; 3]) -> Self {
+        let inside = wo[2] < 0.0;
+        Path {
+            w: if inside { wo } else { [-wo[0], -wo[1], -wo[2]] },
+            h: 0.0,
+            weight: [1.0; N],
+            inside,
+            order: 0,
+        }
+    }
+}
+
 /// The microsurface of a distribution with a height distribution: the walk's state-free part.
 #[derive(Clone, Debug)]
 pub struct RandomWalk<D> {
@@ -544,40 +570,126 @@ impl<D: MicrofacetDistribution<f64>> RandomWalk<D> {
         if wo[2] == 0.0 || !(wo[0].is_finite() && wo[1].is_finite() && wo[2].is_finite()) {
             return None;
         }
-        let mut inside = wo[2] < 0.0;
-        let mut w = if inside { wo } else { [-wo[0], -wo[1], -wo[2]] };
-        let mut h = 0.0;
-        let mut weight = [1.0; N];
-        for order in 0..=MAX_ORDER {
-            match self.next_height(w, h, rng.next_open()) {
-                None => {
-                    let w = if inside { [-w[0], -w[1], -w[2]] } else { w };
-                    return Some(Walked { w, weight, order });
-                }
-                Some(next) => h = next,
-            }
-            let v = [-w[0], -w[1], -w[2]];
-            event(order + 1, v, h, inside, &weight, rng);
-            let m = self.visible_normal(v, rng);
-            let s = facets.scatter(v, m, inside, rng)?;
-            for (a, b) in weight.iter_mut().zip(s.weight) {
-                *a *= b;
-            }
-            if s.crossed {
-                // The other medium's frame: every vector and height negated.
-                w = [-s.w[0], -s.w[1], -s.w[2]];
-                h = self.heights.cross(h);
-                inside = !inside;
-            } else {
-                w = s.w;
-            }
-            // (ℓ = 0 is the top: a grazing ray can meet the surface where C1 rounds to 1.
-            // Only NaN is a failure.)
-            if !(w[0].is_finite() && w[1].is_finite() && w[2].is_finite()) || h.is_nan() {
-                return None;
+        let mut x = Path::start(wo);
+        loop {
+            if let Some(r) = self.step(facets, &mut x, rng, &mut event) {
+                return r;
             }
         }
-        None
+    }
+
+    /// One height step of a path and, if it meets the surface, its scattering event (the
+    /// body of [`RandomWalk::run`]'s loop): `Some(result)` when the walk ended (escaped,
+    /// absorbed, failed or cut at [`MAX_ORDER`]).
+    #[inline(always)]
+    fn step<const N: usize, Fa: Facets<N>>(
+        &self,
+        facets: &Fa,
+        x: &mut Path<N>,
+        rng: &mut WalkRng,
+        event: &mut impl FnMut(u32, [f64; 3], f64, bool, &[f64; N], &mut WalkRng),
+    ) -> Option<Option<Walked<N>>> {
+        match self.next_height(x.w, x.h, rng.next_open()) {
+            None => {
+                let w = if x.inside {
+                    [-x.w[0], -x.w[1], -x.w[2]]
+                } else {
+                    x.w
+                };
+                return Some(Some(Walked {
+                    w,
+                    weight: x.weight,
+                    order: x.order,
+                }));
+            }
+            Some(next) => x.h = next,
+        }
+        let v = [-x.w[0], -x.w[1], -x.w[2]];
+        event(x.order + 1, v, x.h, x.inside, &x.weight, rng);
+        let m = self.visible_normal(v, rng);
+        let Some(s) = facets.scatter(v, m, x.inside, rng) else {
+            return Some(None);
+        };
+        for (a, b) in x.weight.iter_mut().zip(s.weight) {
+            *a *= b;
+        }
+        if s.crossed {
+            // The other medium's frame: every vector and height negated.
+            x.w = [-s.w[0], -s.w[1], -s.w[2]];
+            x.h = self.heights.cross(x.h);
+            x.inside = !x.inside;
+        } else {
+            x.w = s.w;
+        }
+        // (ℓ = 0 is the top: a grazing ray can meet the surface where C1 rounds to 1.
+        // Only NaN is a failure.)
+        if !(x.w[0].is_finite() && x.w[1].is_finite() && x.w[2].is_finite()) || x.h.is_nan() {
+            return Some(None);
+        }
+        x.order += 1;
+        (x.order > MAX_ORDER).then_some(None)
+    }
+
+    /// `walks` walks from wo (a unit vector) in `L` interleaved lanes: lane j runs a fixed
+    /// share, ⌈(walks − j)/L⌉ walks, one after the other from its own stream `rngs[j]`, each
+    /// walk what [`RandomWalk::walk`] from that stream gives, and `record(j, walked)` is
+    /// called with each in the lane's order. While every lane is busy they advance in
+    /// lockstep, one height step and event each a round, so that their dependency chains
+    /// (each event's direction depends on the last) overlap in the processor; a lane that
+    /// ends a walk starts its next one in the same round. What each lane computes does not
+    /// depend on the interleaving.
+    #[inline]
+    pub(crate) fn walk_lanes<const N: usize, const L: usize, Fa: Facets<N>>(
+        &self,
+        facets: &Fa,
+        wo: [f64; 3],
+        walks: u64,
+        rngs: &mut [WalkRng; L],
+        mut record: impl FnMut(usize, Option<Walked<N>>),
+    ) {
+        let wo = unit(wo);
+        let quota: [u64; L] = std::array::from_fn(|j| (walks + (L - 1 - j) as u64) / L as u64);
+        if wo[2] == 0.0 || !(wo[0].is_finite() && wo[1].is_finite() && wo[2].is_finite()) {
+            for (j, &q) in quota.iter().enumerate() {
+                for _ in 0..q {
+                    record(j, None);
+                }
+            }
+            return;
+        }
+        let start = Path::start(wo);
+        let mut none = |_: u32, _: [f64; 3], _: f64, _: bool, _: &[f64; N], _: &mut WalkRng| {};
+        let mut lanes = [start; L];
+        // The walks each lane has still to start after its current one.
+        let mut left: [u64; L] = std::array::from_fn(|j| quota[j].saturating_sub(1));
+        let mut busy: [bool; L] = std::array::from_fn(|j| quota[j] > 0);
+        'lockstep: while busy.iter().all(|&b| b) {
+            for j in 0..L {
+                if let Some(r) = self.step(facets, &mut lanes[j], &mut rngs[j], &mut none) {
+                    record(j, r);
+                    if left[j] == 0 {
+                        busy[j] = false;
+                        break 'lockstep;
+                    }
+                    left[j] -= 1;
+                    lanes[j] = start;
+                }
+            }
+        }
+        // The lanes still busy, one after the other.
+        for j in 0..L {
+            while busy[j] {
+                if let Some(r) = self.step(facets, &mut lanes[j], &mut rngs[j], &mut none) {
+                    record(j, r);
+                    if left[j] == 0 {
+                        busy[j] = false;
+                    } else {
+                        left[j] -= 1;
+                        lanes[j] = start;
+                    }
+                }
+            }
+        }
     }
 
     /// One walk from the direction wo (toward the viewer; below the surface for a path that
