@@ -169,7 +169,10 @@
 //!   (1/η'² for a radiance transmission) within 1e-9 (f32 1e-5).
 //! * **Tables** ([`scattering::table`]): `Grid::from_bytes` of any bytes is an error or a
 //!   grid whose values fill it; `Spec::validate` answers for any parameters; `Grid::value`
-//!   outside the grid is NaN.
+//!   outside the grid is NaN. [`scattering::lut`]: a spec is a typed error or a table of
+//!   finite values (albedos ≤ 1 within the rule's error at its level); `Lut::lookup` and
+//!   `Lut::exact` answer any coordinates (NaN where they are NaN or out of range for
+//!   `exact`).
 //!
 //! ## Sources
 //! d'Eon, *A Hitchhiker's Guide to Multiple Scattering* (2020) and its NDF pages (GGX,

@@ -2,7 +2,8 @@
 //! its facets, the walk's BSDF [`MultipleScattering`], albedos by order and the
 //! single-scattering albedo by quadrature), energy compensation of the single-scattering
 //! BSDFs ([`CompensatedConductor`], [`CompensatedDielectric`] over [`AlbedoTable`] and
-//! [`DielectricTables`]), and albedo tables over (α, μ) ([`table`]).
+//! [`DielectricTables`]), albedo tables over (α, μ) ([`table`]), and the tables real-time
+//! engines load ([`lut`]: the split sum, E and E_avg, a dielectric's R and T).
 //!
 //! # The random walk
 //!
