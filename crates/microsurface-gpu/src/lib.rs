@@ -118,7 +118,8 @@ use std::fmt;
 use std::sync::{mpsc, Mutex};
 
 /// The WGSL library, one source: `wgsl/common.wgsl`, `fresnel.wgsl`, `ggx.wgsl`,
-/// `beckmann_tables.wgsl` (generated), `beckmann.wgsl`, `microfacet.wgsl`, `conductor.wgsl`,
+/// `beckmann_tables.wgsl` (generated), `beckmann.wgsl`, `family_tables.wgsl` (generated),
+/// `stream.wgsl`, `double_ggx.wgsl`, `exponential.wgsl`, `microfacet.wgsl`, `conductor.wgsl`,
 /// `dielectric.wgsl`, `compensation.wgsl`, in that order.
 pub const WGSL: &str = concat!(
     include_str!("../wgsl/common.wgsl"),
@@ -130,6 +131,14 @@ pub const WGSL: &str = concat!(
     include_str!("../wgsl/beckmann_tables.wgsl"),
     "\n",
     include_str!("../wgsl/beckmann.wgsl"),
+    "\n",
+    include_str!("../wgsl/family_tables.wgsl"),
+    "\n",
+    include_str!("../wgsl/stream.wgsl"),
+    "\n",
+    include_str!("../wgsl/double_ggx.wgsl"),
+    "\n",
+    include_str!("../wgsl/exponential.wgsl"),
     "\n",
     include_str!("../wgsl/microfacet.wgsl"),
     "\n",

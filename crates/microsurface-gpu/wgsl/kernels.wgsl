@@ -206,3 +206,66 @@ fn ms_k_dielectric_sample(@builtin(global_invocation_id) id: vec3<u32>,
     ms_out[i * MS_K_OUT] = vec4<f32>(s.wi, s.pdf);
     ms_out[i * MS_K_OUT + 1u] = vec4<f32>(s.f.x, s.eta, f32(s.flags), 0.0);
 }
+
+// Double GGX and the Exponential NDF through MsMicrofacet (the NDF in record 2's w): D(wm),
+// Λ(wo), G1(wo), G2(wo, wm); separable G2, D_wo(wm), D(wm) cos θm (the per-NDF function),
+// G1(wm).
+@compute @workgroup_size(64)
+fn ms_k_family_eval(@builtin(global_invocation_id) id: vec3<u32>,
+    @builtin(num_workgroups) groups: vec3<u32>) {
+    let i = ms_k_index(id, groups);
+    if i == arrayLength(&ms_in) / MS_K_IN {
+        return;
+    }
+    let a = ms_in[i * MS_K_IN].xy;
+    let wo = ms_in[i * MS_K_IN + 1u].xyz;
+    let r2 = ms_in[i * MS_K_IN + 2u];
+    let wm = r2.xyz;
+    let mf = MsMicrofacet(u32(r2.w), a);
+    var dcos: f32;
+    if mf.ndf == MS_NDF_DOUBLE_GGX {
+        dcos = ms_double_ggx_pdf_dcos(wm, a);
+    } else {
+        dcos = ms_exponential_pdf_dcos(wm, a);
+    }
+    ms_out[i * MS_K_OUT] = vec4<f32>(ms_d(mf, wm), ms_lambda(mf, wo), ms_g1(mf, wo),
+        ms_g2(mf, wo, wm));
+    ms_out[i * MS_K_OUT + 1u] = vec4<f32>(ms_g2_separable(mf, wo, wm), ms_pdf(mf, wo, wm), dcos,
+        ms_g1(mf, wm));
+}
+
+// The D·cos normal of u with its pdf through MsMicrofacet (the NDF in record 2's w); the
+// stream's first f32 uniform and ziggurat variate.
+@compute @workgroup_size(64)
+fn ms_k_family_sample(@builtin(global_invocation_id) id: vec3<u32>,
+    @builtin(num_workgroups) groups: vec3<u32>) {
+    let i = ms_k_index(id, groups);
+    if i == arrayLength(&ms_in) / MS_K_IN {
+        return;
+    }
+    let r0 = ms_in[i * MS_K_IN];
+    let ndf = u32(ms_in[i * MS_K_IN + 2u].w);
+    let t = ms_sample_dcos(MsMicrofacet(ndf, r0.xy), r0.zw);
+    var state = ms_stream_new(r0.zw);
+    let v = ms_stream_next(&state);
+    let e = ms_zig_exp1(v, &state);
+    ms_out[i * MS_K_OUT] = vec4<f32>(t.wm, t.pdf);
+    ms_out[i * MS_K_OUT + 1u] = vec4<f32>(v, e, 0.0, 0.0);
+}
+
+// The uniform stream of u (record 0's zw): its first two 64-bit outputs as 16-bit pieces
+// (exact in f32), low first.
+@compute @workgroup_size(64)
+fn ms_k_stream(@builtin(global_invocation_id) id: vec3<u32>,
+    @builtin(num_workgroups) groups: vec3<u32>) {
+    let i = ms_k_index(id, groups);
+    if i == arrayLength(&ms_in) / MS_K_IN {
+        return;
+    }
+    var state = ms_stream_new(ms_in[i * MS_K_IN].zw);
+    for (var k = 0u; k < 2u; k++) {
+        let z = ms_stream_next_u64(&state);
+        ms_out[i * MS_K_OUT + k] = vec4<f32>(f32(z.x & 0xffffu), f32(z.x >> 16u),
+            f32(z.y & 0xffffu), f32(z.y >> 16u));
+    }
+}
