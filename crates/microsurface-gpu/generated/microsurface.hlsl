@@ -81,42 +81,6 @@ ret_Constructarray24_float4_ Constructarray24_float4_(float4 arg0, float4 arg1, 
     return ret;
 }
 
-typedef float4 ret_Constructarray368_float4_[368];
-ret_Constructarray368_float4_ Constructarray368_float4_(float4 arg0, float4 arg1, float4 arg2, float4 arg3, float4 arg4, float4 arg5, float4 arg6, float4 arg7, float4 arg8, float4 arg9, float4 arg10, float4 arg11, float4 arg12, float4 arg13, float4 arg14, float4 arg15, float4 arg16, float4 arg17, float4 arg18, float4 arg19, float4 arg20, float4 arg21, float4 arg22, float4 arg23, float4 arg24, float4 arg25, float4 arg26, float4 arg27, float4 arg28, float4 arg29, float4 arg30, float4 arg31, float4 arg32, float4 arg33, float4 arg34, float4 arg35, float4 arg36, float4 arg37, float4 arg38, float4 arg39, float4 arg40, float4 arg41, float4 arg42, float4 arg43, float4 arg44, float4 arg45, float4 arg46, float4 arg47, float4 arg48, float4 arg49, float4 arg50, float4 arg51, float4 arg52, float4 arg53, float4 arg54, float4 arg55, float4 arg56, float4 arg57, float4 arg58, float4 arg59, float4 arg60, float4 arg61, float4 arg62, float4 arg63, float4 arg64, float4 arg65, float4 arg66, float4 arg67, float4 arg68, float4 arg69, float4 arg70, float4 arg71, float4 arg72, float4 arg73, float4 arg74, float4 arg75, float4 arg76, float4 arg77, float4 arg78, float4 arg79, float4 arg80, float4 arg81, float4 arg82, float4 arg83, float4 arg84, float4 arg85, float4 arg86, float4 arg87, float4 arg88, float4 arg89, float4 arg90, float4 arg91, float4 arg92, float4 arg93, float4 arg94, float4 arg95, float4 arg96, float4 arg97, float4 arg98, float4 arg99, float4 arg100, float4 arg101, float4 arg102, float4 arg103, float4 arg104, float4 arg105, float4 arg106, float4 arg107, float4 arg108, float4 arg109, float4 arg110, float4 arg111, float4 arg112, float4 arg113, float4 arg114, float4 arg115, float4 arg116, float4 arg117, float4 arg118, float4 arg119, float4 arg120, float4 arg121, float4 arg122, float4 arg123, float4 arg124, float4 arg125, float4 arg126, float4 arg127, float4 arg128, float4 arg129, float4 arg130, float4 arg131, float4 arg132, float4 arg133, float4 arg134, float4 arg135, float4 arg136, float4 arg137, float4 arg138, float4 arg139, float4 arg140, float4 arg141, float4 arg142, float4 arg143, float4 arg144, float4 arg145, float4 arg146, float4 arg147, float4 arg148, float4 arg149, float4 arg150, float4 arg151, float4 arg152, float4 arg153, float4 arg154, float4 arg155, float4 arg156, float4 arg157, float4 arg158, float4 arg159, float4 arg160, float4 arg161, float4 arg162, float4 arg163, float4 arg164, float4 arg165, float4 arg166, float4 arg167, float4 arg168, float4 arg169, float4 arg170, float4 arg171, float4 arg172, float4 arg173, float4 arg174, float4 arg175, float4 arg176, float4 arg177, float4 arg178, float4 arg179, float4 arg180, float4 arg181, float4 arg182, float4 arg183, float4 arg184, float4 arg185, float4 arg186, float4 arg187, float4 arg188, float4 arg189, float4 arg190, float4 arg191, float4 arg192, float4 arg193, float4 arg194, float4 arg195, float4 arg196, float4 arg197, float4 arg198, float4 arg199, float4 arg200, float4 arg201, float4 arg202, float4 arg203, float4 arg204, float4 arg205, float4 arg206, float4 arg207, float4 arg208, float4 arg209, float4 arg210, float4 arg211, float4 arg212, float4 arg213, float4 arg214, float4 arg215, float4 arg216, float4 arg217, float4 arg218, float4 arg219, float4 arg220, float4 arg221, float4 arg222, float4 arg223, float4 arg224, float4 arg225, float4 arg226, float4 arg227, float4 arg228, float4 arg229, float4 arg230, float4 arg231, float4 arg232, float4 arg233, float4 arg234, float4 arg235, float4 arg236, float4 arg237, float4 arg238, float4 arg239, float4 arg240, float4 arg241, float4 arg242, float4 arg243, float4 arg244, float4 arg245, float4 arg246, float4 arg247, float4 arg248, float4 arg249, float4 arg250, float4 arg251, float4 arg252, float4 arg253, float4 arg254, float4 arg255, float4 arg256, float4 arg257, float4 arg258, float4 arg259, float4 arg260, float4 arg261, float4 arg262, float4 arg263, float4 arg264, float4 arg265, float4 arg266, float4 arg267, float4 arg268, float4 arg269, float4 arg270, float4 arg271, float4 arg272, float4 arg273, float4 arg274, float4 arg275, float4 arg276, float4 arg277, float4 arg278, float4 arg279, float4 arg280, float4 arg281, float4 arg282, float4 arg283, float4 arg284, float4 arg285, float4 arg286, float4 arg287, float4 arg288, float4 arg289, float4 arg290, float4 arg291, float4 arg292, float4 arg293, float4 arg294, float4 arg295, float4 arg296, float4 arg297, float4 arg298, float4 arg299, float4 arg300, float4 arg301, float4 arg302, float4 arg303, float4 arg304, float4 arg305, float4 arg306, float4 arg307, float4 arg308, float4 arg309, float4 arg310, float4 arg311, float4 arg312, float4 arg313, float4 arg314, float4 arg315, float4 arg316, float4 arg317, float4 arg318, float4 arg319, float4 arg320, float4 arg321, float4 arg322, float4 arg323, float4 arg324, float4 arg325, float4 arg326, float4 arg327, float4 arg328, float4 arg329, float4 arg330, float4 arg331, float4 arg332, float4 arg333, float4 arg334, float4 arg335, float4 arg336, float4 arg337, float4 arg338, float4 arg339, float4 arg340, float4 arg341, float4 arg342, float4 arg343, float4 arg344, float4 arg345, float4 arg346, float4 arg347, float4 arg348, float4 arg349, float4 arg350, float4 arg351, float4 arg352, float4 arg353, float4 arg354, float4 arg355, float4 arg356, float4 arg357, float4 arg358, float4 arg359, float4 arg360, float4 arg361, float4 arg362, float4 arg363, float4 arg364, float4 arg365, float4 arg366, float4 arg367) {
-    float4 ret[368] = { arg0, arg1, arg2, arg3, arg4, arg5, arg6, arg7, arg8, arg9, arg10, arg11, arg12, arg13, arg14, arg15, arg16, arg17, arg18, arg19, arg20, arg21, arg22, arg23, arg24, arg25, arg26, arg27, arg28, arg29, arg30, arg31, arg32, arg33, arg34, arg35, arg36, arg37, arg38, arg39, arg40, arg41, arg42, arg43, arg44, arg45, arg46, arg47, arg48, arg49, arg50, arg51, arg52, arg53, arg54, arg55, arg56, arg57, arg58, arg59, arg60, arg61, arg62, arg63, arg64, arg65, arg66, arg67, arg68, arg69, arg70, arg71, arg72, arg73, arg74, arg75, arg76, arg77, arg78, arg79, arg80, arg81, arg82, arg83, arg84, arg85, arg86, arg87, arg88, arg89, arg90, arg91, arg92, arg93, arg94, arg95, arg96, arg97, arg98, arg99, arg100, arg101, arg102, arg103, arg104, arg105, arg106, arg107, arg108, arg109, arg110, arg111, arg112, arg113, arg114, arg115, arg116, arg117, arg118, arg119, arg120, arg121, arg122, arg123, arg124, arg125, arg126, arg127, arg128, arg129, arg130, arg131, arg132, arg133, arg134, arg135, arg136, arg137, arg138, arg139, arg140, arg141, arg142, arg143, arg144, arg145, arg146, arg147, arg148, arg149, arg150, arg151, arg152, arg153, arg154, arg155, arg156, arg157, arg158, arg159, arg160, arg161, arg162, arg163, arg164, arg165, arg166, arg167, arg168, arg169, arg170, arg171, arg172, arg173, arg174, arg175, arg176, arg177, arg178, arg179, arg180, arg181, arg182, arg183, arg184, arg185, arg186, arg187, arg188, arg189, arg190, arg191, arg192, arg193, arg194, arg195, arg196, arg197, arg198, arg199, arg200, arg201, arg202, arg203, arg204, arg205, arg206, arg207, arg208, arg209, arg210, arg211, arg212, arg213, arg214, arg215, arg216, arg217, arg218, arg219, arg220, arg221, arg222, arg223, arg224, arg225, arg226, arg227, arg228, arg229, arg230, arg231, arg232, arg233, arg234, arg235, arg236, arg237, arg238, arg239, arg240, arg241, arg242, arg243, arg244, arg245, arg246, arg247, arg248, arg249, arg250, arg251, arg252, arg253, arg254, arg255, arg256, arg257, arg258, arg259, arg260, arg261, arg262, arg263, arg264, arg265, arg266, arg267, arg268, arg269, arg270, arg271, arg272, arg273, arg274, arg275, arg276, arg277, arg278, arg279, arg280, arg281, arg282, arg283, arg284, arg285, arg286, arg287, arg288, arg289, arg290, arg291, arg292, arg293, arg294, arg295, arg296, arg297, arg298, arg299, arg300, arg301, arg302, arg303, arg304, arg305, arg306, arg307, arg308, arg309, arg310, arg311, arg312, arg313, arg314, arg315, arg316, arg317, arg318, arg319, arg320, arg321, arg322, arg323, arg324, arg325, arg326, arg327, arg328, arg329, arg330, arg331, arg332, arg333, arg334, arg335, arg336, arg337, arg338, arg339, arg340, arg341, arg342, arg343, arg344, arg345, arg346, arg347, arg348, arg349, arg350, arg351, arg352, arg353, arg354, arg355, arg356, arg357, arg358, arg359, arg360, arg361, arg362, arg363, arg364, arg365, arg366, arg367 };
-    return ret;
-}
-
-typedef float4 ret_Constructarray720_float4_[720];
-ret_Constructarray720_float4_ Constructarray720_float4_(float4 arg0, float4 arg1, float4 arg2, float4 arg3, float4 arg4, float4 arg5, float4 arg6, float4 arg7, float4 arg8, float4 arg9, float4 arg10, float4 arg11, float4 arg12, float4 arg13, float4 arg14, float4 arg15, float4 arg16, float4 arg17, float4 arg18, float4 arg19, float4 arg20, float4 arg21, float4 arg22, float4 arg23, float4 arg24, float4 arg25, float4 arg26, float4 arg27, float4 arg28, float4 arg29, float4 arg30, float4 arg31, float4 arg32, float4 arg33, float4 arg34, float4 arg35, float4 arg36, float4 arg37, float4 arg38, float4 arg39, float4 arg40, float4 arg41, float4 arg42, float4 arg43, float4 arg44, float4 arg45, float4 arg46, float4 arg47, float4 arg48, float4 arg49, float4 arg50, float4 arg51, float4 arg52, float4 arg53, float4 arg54, float4 arg55, float4 arg56, float4 arg57, float4 arg58, float4 arg59, float4 arg60, float4 arg61, float4 arg62, float4 arg63, float4 arg64, float4 arg65, float4 arg66, float4 arg67, float4 arg68, float4 arg69, float4 arg70, float4 arg71, float4 arg72, float4 arg73, float4 arg74, float4 arg75, float4 arg76, float4 arg77, float4 arg78, float4 arg79, float4 arg80, float4 arg81, float4 arg82, float4 arg83, float4 arg84, float4 arg85, float4 arg86, float4 arg87, float4 arg88, float4 arg89, float4 arg90, float4 arg91, float4 arg92, float4 arg93, float4 arg94, float4 arg95, float4 arg96, float4 arg97, float4 arg98, float4 arg99, float4 arg100, float4 arg101, float4 arg102, float4 arg103, float4 arg104, float4 arg105, float4 arg106, float4 arg107, float4 arg108, float4 arg109, float4 arg110, float4 arg111, float4 arg112, float4 arg113, float4 arg114, float4 arg115, float4 arg116, float4 arg117, float4 arg118, float4 arg119, float4 arg120, float4 arg121, float4 arg122, float4 arg123, float4 arg124, float4 arg125, float4 arg126, float4 arg127, float4 arg128, float4 arg129, float4 arg130, float4 arg131, float4 arg132, float4 arg133, float4 arg134, float4 arg135, float4 arg136, float4 arg137, float4 arg138, float4 arg139, float4 arg140, float4 arg141, float4 arg142, float4 arg143, float4 arg144, float4 arg145, float4 arg146, float4 arg147, float4 arg148, float4 arg149, float4 arg150, float4 arg151, float4 arg152, float4 arg153, float4 arg154, float4 arg155, float4 arg156, float4 arg157, float4 arg158, float4 arg159, float4 arg160, float4 arg161, float4 arg162, float4 arg163, float4 arg164, float4 arg165, float4 arg166, float4 arg167, float4 arg168, float4 arg169, float4 arg170, float4 arg171, float4 arg172, float4 arg173, float4 arg174, float4 arg175, float4 arg176, float4 arg177, float4 arg178, float4 arg179, float4 arg180, float4 arg181, float4 arg182, float4 arg183, float4 arg184, float4 arg185, float4 arg186, float4 arg187, float4 arg188, float4 arg189, float4 arg190, float4 arg191, float4 arg192, float4 arg193, float4 arg194, float4 arg195, float4 arg196, float4 arg197, float4 arg198, float4 arg199, float4 arg200, float4 arg201, float4 arg202, float4 arg203, float4 arg204, float4 arg205, float4 arg206, float4 arg207, float4 arg208, float4 arg209, float4 arg210, float4 arg211, float4 arg212, float4 arg213, float4 arg214, float4 arg215, float4 arg216, float4 arg217, float4 arg218, float4 arg219, float4 arg220, float4 arg221, float4 arg222, float4 arg223, float4 arg224, float4 arg225, float4 arg226, float4 arg227, float4 arg228, float4 arg229, float4 arg230, float4 arg231, float4 arg232, float4 arg233, float4 arg234, float4 arg235, float4 arg236, float4 arg237, float4 arg238, float4 arg239, float4 arg240, float4 arg241, float4 arg242, float4 arg243, float4 arg244, float4 arg245, float4 arg246, float4 arg247, float4 arg248, float4 arg249, float4 arg250, float4 arg251, float4 arg252, float4 arg253, float4 arg254, float4 arg255, float4 arg256, float4 arg257, float4 arg258, float4 arg259, float4 arg260, float4 arg261, float4 arg262, float4 arg263, float4 arg264, float4 arg265, float4 arg266, float4 arg267, float4 arg268, float4 arg269, float4 arg270, float4 arg271, float4 arg272, float4 arg273, float4 arg274, float4 arg275, float4 arg276, float4 arg277, float4 arg278, float4 arg279, float4 arg280, float4 arg281, float4 arg282, float4 arg283, float4 arg284, float4 arg285, float4 arg286, float4 arg287, float4 arg288, float4 arg289, float4 arg290, float4 arg291, float4 arg292, float4 arg293, float4 arg294, float4 arg295, float4 arg296, float4 arg297, float4 arg298, float4 arg299, float4 arg300, float4 arg301, float4 arg302, float4 arg303, float4 arg304, float4 arg305, float4 arg306, float4 arg307, float4 arg308, float4 arg309, float4 arg310, float4 arg311, float4 arg312, float4 arg313, float4 arg314, float4 arg315, float4 arg316, float4 arg317, float4 arg318, float4 arg319, float4 arg320, float4 arg321, float4 arg322, float4 arg323, float4 arg324, float4 arg325, float4 arg326, float4 arg327, float4 arg328, float4 arg329, float4 arg330, float4 arg331, float4 arg332, float4 arg333, float4 arg334, float4 arg335, float4 arg336, float4 arg337, float4 arg338, float4 arg339, float4 arg340, float4 arg341, float4 arg342, float4 arg343, float4 arg344, float4 arg345, float4 arg346, float4 arg347, float4 arg348, float4 arg349, float4 arg350, float4 arg351, float4 arg352, float4 arg353, float4 arg354, float4 arg355, float4 arg356, float4 arg357, float4 arg358, float4 arg359, float4 arg360, float4 arg361, float4 arg362, float4 arg363, float4 arg364, float4 arg365, float4 arg366, float4 arg367, float4 arg368, float4 arg369, float4 arg370, float4 arg371, float4 arg372, float4 arg373, float4 arg374, float4 arg375, float4 arg376, float4 arg377, float4 arg378, float4 arg379, float4 arg380, float4 arg381, float4 arg382, float4 arg383, float4 arg384, float4 arg385, float4 arg386, float4 arg387, float4 arg388, float4 arg389, float4 arg390, float4 arg391, float4 arg392, float4 arg393, float4 arg394, float4 arg395, float4 arg396, float4 arg397, float4 arg398, float4 arg399, float4 arg400, float4 arg401, float4 arg402, float4 arg403, float4 arg404, float4 arg405, float4 arg406, float4 arg407, float4 arg408, float4 arg409, float4 arg410, float4 arg411, float4 arg412, float4 arg413, float4 arg414, float4 arg415, float4 arg416, float4 arg417, float4 arg418, float4 arg419, float4 arg420, float4 arg421, float4 arg422, float4 arg423, float4 arg424, float4 arg425, float4 arg426, float4 arg427, float4 arg428, float4 arg429, float4 arg430, float4 arg431, float4 arg432, float4 arg433, float4 arg434, float4 arg435, float4 arg436, float4 arg437, float4 arg438, float4 arg439, float4 arg440, float4 arg441, float4 arg442, float4 arg443, float4 arg444, float4 arg445, float4 arg446, float4 arg447, float4 arg448, float4 arg449, float4 arg450, float4 arg451, float4 arg452, float4 arg453, float4 arg454, float4 arg455, float4 arg456, float4 arg457, float4 arg458, float4 arg459, float4 arg460, float4 arg461, float4 arg462, float4 arg463, float4 arg464, float4 arg465, float4 arg466, float4 arg467, float4 arg468, float4 arg469, float4 arg470, float4 arg471, float4 arg472, float4 arg473, float4 arg474, float4 arg475, float4 arg476, float4 arg477, float4 arg478, float4 arg479, float4 arg480, float4 arg481, float4 arg482, float4 arg483, float4 arg484, float4 arg485, float4 arg486, float4 arg487, float4 arg488, float4 arg489, float4 arg490, float4 arg491, float4 arg492, float4 arg493, float4 arg494, float4 arg495, float4 arg496, float4 arg497, float4 arg498, float4 arg499, float4 arg500, float4 arg501, float4 arg502, float4 arg503, float4 arg504, float4 arg505, float4 arg506, float4 arg507, float4 arg508, float4 arg509, float4 arg510, float4 arg511, float4 arg512, float4 arg513, float4 arg514, float4 arg515, float4 arg516, float4 arg517, float4 arg518, float4 arg519, float4 arg520, float4 arg521, float4 arg522, float4 arg523, float4 arg524, float4 arg525, float4 arg526, float4 arg527, float4 arg528, float4 arg529, float4 arg530, float4 arg531, float4 arg532, float4 arg533, float4 arg534, float4 arg535, float4 arg536, float4 arg537, float4 arg538, float4 arg539, float4 arg540, float4 arg541, float4 arg542, float4 arg543, float4 arg544, float4 arg545, float4 arg546, float4 arg547, float4 arg548, float4 arg549, float4 arg550, float4 arg551, float4 arg552, float4 arg553, float4 arg554, float4 arg555, float4 arg556, float4 arg557, float4 arg558, float4 arg559, float4 arg560, float4 arg561, float4 arg562, float4 arg563, float4 arg564, float4 arg565, float4 arg566, float4 arg567, float4 arg568, float4 arg569, float4 arg570, float4 arg571, float4 arg572, float4 arg573, float4 arg574, float4 arg575, float4 arg576, float4 arg577, float4 arg578, float4 arg579, float4 arg580, float4 arg581, float4 arg582, float4 arg583, float4 arg584, float4 arg585, float4 arg586, float4 arg587, float4 arg588, float4 arg589, float4 arg590, float4 arg591, float4 arg592, float4 arg593, float4 arg594, float4 arg595, float4 arg596, float4 arg597, float4 arg598, float4 arg599, float4 arg600, float4 arg601, float4 arg602, float4 arg603, float4 arg604, float4 arg605, float4 arg606, float4 arg607, float4 arg608, float4 arg609, float4 arg610, float4 arg611, float4 arg612, float4 arg613, float4 arg614, float4 arg615, float4 arg616, float4 arg617, float4 arg618, float4 arg619, float4 arg620, float4 arg621, float4 arg622, float4 arg623, float4 arg624, float4 arg625, float4 arg626, float4 arg627, float4 arg628, float4 arg629, float4 arg630, float4 arg631, float4 arg632, float4 arg633, float4 arg634, float4 arg635, float4 arg636, float4 arg637, float4 arg638, float4 arg639, float4 arg640, float4 arg641, float4 arg642, float4 arg643, float4 arg644, float4 arg645, float4 arg646, float4 arg647, float4 arg648, float4 arg649, float4 arg650, float4 arg651, float4 arg652, float4 arg653, float4 arg654, float4 arg655, float4 arg656, float4 arg657, float4 arg658, float4 arg659, float4 arg660, float4 arg661, float4 arg662, float4 arg663, float4 arg664, float4 arg665, float4 arg666, float4 arg667, float4 arg668, float4 arg669, float4 arg670, float4 arg671, float4 arg672, float4 arg673, float4 arg674, float4 arg675, float4 arg676, float4 arg677, float4 arg678, float4 arg679, float4 arg680, float4 arg681, float4 arg682, float4 arg683, float4 arg684, float4 arg685, float4 arg686, float4 arg687, float4 arg688, float4 arg689, float4 arg690, float4 arg691, float4 arg692, float4 arg693, float4 arg694, float4 arg695, float4 arg696, float4 arg697, float4 arg698, float4 arg699, float4 arg700, float4 arg701, float4 arg702, float4 arg703, float4 arg704, float4 arg705, float4 arg706, float4 arg707, float4 arg708, float4 arg709, float4 arg710, float4 arg711, float4 arg712, float4 arg713, float4 arg714, float4 arg715, float4 arg716, float4 arg717, float4 arg718, float4 arg719) {
-    float4 ret[720] = { arg0, arg1, arg2, arg3, arg4, arg5, arg6, arg7, arg8, arg9, arg10, arg11, arg12, arg13, arg14, arg15, arg16, arg17, arg18, arg19, arg20, arg21, arg22, arg23, arg24, arg25, arg26, arg27, arg28, arg29, arg30, arg31, arg32, arg33, arg34, arg35, arg36, arg37, arg38, arg39, arg40, arg41, arg42, arg43, arg44, arg45, arg46, arg47, arg48, arg49, arg50, arg51, arg52, arg53, arg54, arg55, arg56, arg57, arg58, arg59, arg60, arg61, arg62, arg63, arg64, arg65, arg66, arg67, arg68, arg69, arg70, arg71, arg72, arg73, arg74, arg75, arg76, arg77, arg78, arg79, arg80, arg81, arg82, arg83, arg84, arg85, arg86, arg87, arg88, arg89, arg90, arg91, arg92, arg93, arg94, arg95, arg96, arg97, arg98, arg99, arg100, arg101, arg102, arg103, arg104, arg105, arg106, arg107, arg108, arg109, arg110, arg111, arg112, arg113, arg114, arg115, arg116, arg117, arg118, arg119, arg120, arg121, arg122, arg123, arg124, arg125, arg126, arg127, arg128, arg129, arg130, arg131, arg132, arg133, arg134, arg135, arg136, arg137, arg138, arg139, arg140, arg141, arg142, arg143, arg144, arg145, arg146, arg147, arg148, arg149, arg150, arg151, arg152, arg153, arg154, arg155, arg156, arg157, arg158, arg159, arg160, arg161, arg162, arg163, arg164, arg165, arg166, arg167, arg168, arg169, arg170, arg171, arg172, arg173, arg174, arg175, arg176, arg177, arg178, arg179, arg180, arg181, arg182, arg183, arg184, arg185, arg186, arg187, arg188, arg189, arg190, arg191, arg192, arg193, arg194, arg195, arg196, arg197, arg198, arg199, arg200, arg201, arg202, arg203, arg204, arg205, arg206, arg207, arg208, arg209, arg210, arg211, arg212, arg213, arg214, arg215, arg216, arg217, arg218, arg219, arg220, arg221, arg222, arg223, arg224, arg225, arg226, arg227, arg228, arg229, arg230, arg231, arg232, arg233, arg234, arg235, arg236, arg237, arg238, arg239, arg240, arg241, arg242, arg243, arg244, arg245, arg246, arg247, arg248, arg249, arg250, arg251, arg252, arg253, arg254, arg255, arg256, arg257, arg258, arg259, arg260, arg261, arg262, arg263, arg264, arg265, arg266, arg267, arg268, arg269, arg270, arg271, arg272, arg273, arg274, arg275, arg276, arg277, arg278, arg279, arg280, arg281, arg282, arg283, arg284, arg285, arg286, arg287, arg288, arg289, arg290, arg291, arg292, arg293, arg294, arg295, arg296, arg297, arg298, arg299, arg300, arg301, arg302, arg303, arg304, arg305, arg306, arg307, arg308, arg309, arg310, arg311, arg312, arg313, arg314, arg315, arg316, arg317, arg318, arg319, arg320, arg321, arg322, arg323, arg324, arg325, arg326, arg327, arg328, arg329, arg330, arg331, arg332, arg333, arg334, arg335, arg336, arg337, arg338, arg339, arg340, arg341, arg342, arg343, arg344, arg345, arg346, arg347, arg348, arg349, arg350, arg351, arg352, arg353, arg354, arg355, arg356, arg357, arg358, arg359, arg360, arg361, arg362, arg363, arg364, arg365, arg366, arg367, arg368, arg369, arg370, arg371, arg372, arg373, arg374, arg375, arg376, arg377, arg378, arg379, arg380, arg381, arg382, arg383, arg384, arg385, arg386, arg387, arg388, arg389, arg390, arg391, arg392, arg393, arg394, arg395, arg396, arg397, arg398, arg399, arg400, arg401, arg402, arg403, arg404, arg405, arg406, arg407, arg408, arg409, arg410, arg411, arg412, arg413, arg414, arg415, arg416, arg417, arg418, arg419, arg420, arg421, arg422, arg423, arg424, arg425, arg426, arg427, arg428, arg429, arg430, arg431, arg432, arg433, arg434, arg435, arg436, arg437, arg438, arg439, arg440, arg441, arg442, arg443, arg444, arg445, arg446, arg447, arg448, arg449, arg450, arg451, arg452, arg453, arg454, arg455, arg456, arg457, arg458, arg459, arg460, arg461, arg462, arg463, arg464, arg465, arg466, arg467, arg468, arg469, arg470, arg471, arg472, arg473, arg474, arg475, arg476, arg477, arg478, arg479, arg480, arg481, arg482, arg483, arg484, arg485, arg486, arg487, arg488, arg489, arg490, arg491, arg492, arg493, arg494, arg495, arg496, arg497, arg498, arg499, arg500, arg501, arg502, arg503, arg504, arg505, arg506, arg507, arg508, arg509, arg510, arg511, arg512, arg513, arg514, arg515, arg516, arg517, arg518, arg519, arg520, arg521, arg522, arg523, arg524, arg525, arg526, arg527, arg528, arg529, arg530, arg531, arg532, arg533, arg534, arg535, arg536, arg537, arg538, arg539, arg540, arg541, arg542, arg543, arg544, arg545, arg546, arg547, arg548, arg549, arg550, arg551, arg552, arg553, arg554, arg555, arg556, arg557, arg558, arg559, arg560, arg561, arg562, arg563, arg564, arg565, arg566, arg567, arg568, arg569, arg570, arg571, arg572, arg573, arg574, arg575, arg576, arg577, arg578, arg579, arg580, arg581, arg582, arg583, arg584, arg585, arg586, arg587, arg588, arg589, arg590, arg591, arg592, arg593, arg594, arg595, arg596, arg597, arg598, arg599, arg600, arg601, arg602, arg603, arg604, arg605, arg606, arg607, arg608, arg609, arg610, arg611, arg612, arg613, arg614, arg615, arg616, arg617, arg618, arg619, arg620, arg621, arg622, arg623, arg624, arg625, arg626, arg627, arg628, arg629, arg630, arg631, arg632, arg633, arg634, arg635, arg636, arg637, arg638, arg639, arg640, arg641, arg642, arg643, arg644, arg645, arg646, arg647, arg648, arg649, arg650, arg651, arg652, arg653, arg654, arg655, arg656, arg657, arg658, arg659, arg660, arg661, arg662, arg663, arg664, arg665, arg666, arg667, arg668, arg669, arg670, arg671, arg672, arg673, arg674, arg675, arg676, arg677, arg678, arg679, arg680, arg681, arg682, arg683, arg684, arg685, arg686, arg687, arg688, arg689, arg690, arg691, arg692, arg693, arg694, arg695, arg696, arg697, arg698, arg699, arg700, arg701, arg702, arg703, arg704, arg705, arg706, arg707, arg708, arg709, arg710, arg711, arg712, arg713, arg714, arg715, arg716, arg717, arg718, arg719 };
-    return ret;
-}
-
-typedef float4 ret_Constructarray960_float4_[960];
-ret_Constructarray960_float4_ Constructarray960_float4_(float4 arg0, float4 arg1, float4 arg2, float4 arg3, float4 arg4, float4 arg5, float4 arg6, float4 arg7, float4 arg8, float4 arg9, float4 arg10, float4 arg11, float4 arg12, float4 arg13, float4 arg14, float4 arg15, float4 arg16, float4 arg17, float4 arg18, float4 arg19, float4 arg20, float4 arg21, float4 arg22, float4 arg23, float4 arg24, float4 arg25, float4 arg26, float4 arg27, float4 arg28, float4 arg29, float4 arg30, float4 arg31, float4 arg32, float4 arg33, float4 arg34, float4 arg35, float4 arg36, float4 arg37, float4 arg38, float4 arg39, float4 arg40, float4 arg41, float4 arg42, float4 arg43, float4 arg44, float4 arg45, float4 arg46, float4 arg47, float4 arg48, float4 arg49, float4 arg50, float4 arg51, float4 arg52, float4 arg53, float4 arg54, float4 arg55, float4 arg56, float4 arg57, float4 arg58, float4 arg59, float4 arg60, float4 arg61, float4 arg62, float4 arg63, float4 arg64, float4 arg65, float4 arg66, float4 arg67, float4 arg68, float4 arg69, float4 arg70, float4 arg71, float4 arg72, float4 arg73, float4 arg74, float4 arg75, float4 arg76, float4 arg77, float4 arg78, float4 arg79, float4 arg80, float4 arg81, float4 arg82, float4 arg83, float4 arg84, float4 arg85, float4 arg86, float4 arg87, float4 arg88, float4 arg89, float4 arg90, float4 arg91, float4 arg92, float4 arg93, float4 arg94, float4 arg95, float4 arg96, float4 arg97, float4 arg98, float4 arg99, float4 arg100, float4 arg101, float4 arg102, float4 arg103, float4 arg104, float4 arg105, float4 arg106, float4 arg107, float4 arg108, float4 arg109, float4 arg110, float4 arg111, float4 arg112, float4 arg113, float4 arg114, float4 arg115, float4 arg116, float4 arg117, float4 arg118, float4 arg119, float4 arg120, float4 arg121, float4 arg122, float4 arg123, float4 arg124, float4 arg125, float4 arg126, float4 arg127, float4 arg128, float4 arg129, float4 arg130, float4 arg131, float4 arg132, float4 arg133, float4 arg134, float4 arg135, float4 arg136, float4 arg137, float4 arg138, float4 arg139, float4 arg140, float4 arg141, float4 arg142, float4 arg143, float4 arg144, float4 arg145, float4 arg146, float4 arg147, float4 arg148, float4 arg149, float4 arg150, float4 arg151, float4 arg152, float4 arg153, float4 arg154, float4 arg155, float4 arg156, float4 arg157, float4 arg158, float4 arg159, float4 arg160, float4 arg161, float4 arg162, float4 arg163, float4 arg164, float4 arg165, float4 arg166, float4 arg167, float4 arg168, float4 arg169, float4 arg170, float4 arg171, float4 arg172, float4 arg173, float4 arg174, float4 arg175, float4 arg176, float4 arg177, float4 arg178, float4 arg179, float4 arg180, float4 arg181, float4 arg182, float4 arg183, float4 arg184, float4 arg185, float4 arg186, float4 arg187, float4 arg188, float4 arg189, float4 arg190, float4 arg191, float4 arg192, float4 arg193, float4 arg194, float4 arg195, float4 arg196, float4 arg197, float4 arg198, float4 arg199, float4 arg200, float4 arg201, float4 arg202, float4 arg203, float4 arg204, float4 arg205, float4 arg206, float4 arg207, float4 arg208, float4 arg209, float4 arg210, float4 arg211, float4 arg212, float4 arg213, float4 arg214, float4 arg215, float4 arg216, float4 arg217, float4 arg218, float4 arg219, float4 arg220, float4 arg221, float4 arg222, float4 arg223, float4 arg224, float4 arg225, float4 arg226, float4 arg227, float4 arg228, float4 arg229, float4 arg230, float4 arg231, float4 arg232, float4 arg233, float4 arg234, float4 arg235, float4 arg236, float4 arg237, float4 arg238, float4 arg239, float4 arg240, float4 arg241, float4 arg242, float4 arg243, float4 arg244, float4 arg245, float4 arg246, float4 arg247, float4 arg248, float4 arg249, float4 arg250, float4 arg251, float4 arg252, float4 arg253, float4 arg254, float4 arg255, float4 arg256, float4 arg257, float4 arg258, float4 arg259, float4 arg260, float4 arg261, float4 arg262, float4 arg263, float4 arg264, float4 arg265, float4 arg266, float4 arg267, float4 arg268, float4 arg269, float4 arg270, float4 arg271, float4 arg272, float4 arg273, float4 arg274, float4 arg275, float4 arg276, float4 arg277, float4 arg278, float4 arg279, float4 arg280, float4 arg281, float4 arg282, float4 arg283, float4 arg284, float4 arg285, float4 arg286, float4 arg287, float4 arg288, float4 arg289, float4 arg290, float4 arg291, float4 arg292, float4 arg293, float4 arg294, float4 arg295, float4 arg296, float4 arg297, float4 arg298, float4 arg299, float4 arg300, float4 arg301, float4 arg302, float4 arg303, float4 arg304, float4 arg305, float4 arg306, float4 arg307, float4 arg308, float4 arg309, float4 arg310, float4 arg311, float4 arg312, float4 arg313, float4 arg314, float4 arg315, float4 arg316, float4 arg317, float4 arg318, float4 arg319, float4 arg320, float4 arg321, float4 arg322, float4 arg323, float4 arg324, float4 arg325, float4 arg326, float4 arg327, float4 arg328, float4 arg329, float4 arg330, float4 arg331, float4 arg332, float4 arg333, float4 arg334, float4 arg335, float4 arg336, float4 arg337, float4 arg338, float4 arg339, float4 arg340, float4 arg341, float4 arg342, float4 arg343, float4 arg344, float4 arg345, float4 arg346, float4 arg347, float4 arg348, float4 arg349, float4 arg350, float4 arg351, float4 arg352, float4 arg353, float4 arg354, float4 arg355, float4 arg356, float4 arg357, float4 arg358, float4 arg359, float4 arg360, float4 arg361, float4 arg362, float4 arg363, float4 arg364, float4 arg365, float4 arg366, float4 arg367, float4 arg368, float4 arg369, float4 arg370, float4 arg371, float4 arg372, float4 arg373, float4 arg374, float4 arg375, float4 arg376, float4 arg377, float4 arg378, float4 arg379, float4 arg380, float4 arg381, float4 arg382, float4 arg383, float4 arg384, float4 arg385, float4 arg386, float4 arg387, float4 arg388, float4 arg389, float4 arg390, float4 arg391, float4 arg392, float4 arg393, float4 arg394, float4 arg395, float4 arg396, float4 arg397, float4 arg398, float4 arg399, float4 arg400, float4 arg401, float4 arg402, float4 arg403, float4 arg404, float4 arg405, float4 arg406, float4 arg407, float4 arg408, float4 arg409, float4 arg410, float4 arg411, float4 arg412, float4 arg413, float4 arg414, float4 arg415, float4 arg416, float4 arg417, float4 arg418, float4 arg419, float4 arg420, float4 arg421, float4 arg422, float4 arg423, float4 arg424, float4 arg425, float4 arg426, float4 arg427, float4 arg428, float4 arg429, float4 arg430, float4 arg431, float4 arg432, float4 arg433, float4 arg434, float4 arg435, float4 arg436, float4 arg437, float4 arg438, float4 arg439, float4 arg440, float4 arg441, float4 arg442, float4 arg443, float4 arg444, float4 arg445, float4 arg446, float4 arg447, float4 arg448, float4 arg449, float4 arg450, float4 arg451, float4 arg452, float4 arg453, float4 arg454, float4 arg455, float4 arg456, float4 arg457, float4 arg458, float4 arg459, float4 arg460, float4 arg461, float4 arg462, float4 arg463, float4 arg464, float4 arg465, float4 arg466, float4 arg467, float4 arg468, float4 arg469, float4 arg470, float4 arg471, float4 arg472, float4 arg473, float4 arg474, float4 arg475, float4 arg476, float4 arg477, float4 arg478, float4 arg479, float4 arg480, float4 arg481, float4 arg482, float4 arg483, float4 arg484, float4 arg485, float4 arg486, float4 arg487, float4 arg488, float4 arg489, float4 arg490, float4 arg491, float4 arg492, float4 arg493, float4 arg494, float4 arg495, float4 arg496, float4 arg497, float4 arg498, float4 arg499, float4 arg500, float4 arg501, float4 arg502, float4 arg503, float4 arg504, float4 arg505, float4 arg506, float4 arg507, float4 arg508, float4 arg509, float4 arg510, float4 arg511, float4 arg512, float4 arg513, float4 arg514, float4 arg515, float4 arg516, float4 arg517, float4 arg518, float4 arg519, float4 arg520, float4 arg521, float4 arg522, float4 arg523, float4 arg524, float4 arg525, float4 arg526, float4 arg527, float4 arg528, float4 arg529, float4 arg530, float4 arg531, float4 arg532, float4 arg533, float4 arg534, float4 arg535, float4 arg536, float4 arg537, float4 arg538, float4 arg539, float4 arg540, float4 arg541, float4 arg542, float4 arg543, float4 arg544, float4 arg545, float4 arg546, float4 arg547, float4 arg548, float4 arg549, float4 arg550, float4 arg551, float4 arg552, float4 arg553, float4 arg554, float4 arg555, float4 arg556, float4 arg557, float4 arg558, float4 arg559, float4 arg560, float4 arg561, float4 arg562, float4 arg563, float4 arg564, float4 arg565, float4 arg566, float4 arg567, float4 arg568, float4 arg569, float4 arg570, float4 arg571, float4 arg572, float4 arg573, float4 arg574, float4 arg575, float4 arg576, float4 arg577, float4 arg578, float4 arg579, float4 arg580, float4 arg581, float4 arg582, float4 arg583, float4 arg584, float4 arg585, float4 arg586, float4 arg587, float4 arg588, float4 arg589, float4 arg590, float4 arg591, float4 arg592, float4 arg593, float4 arg594, float4 arg595, float4 arg596, float4 arg597, float4 arg598, float4 arg599, float4 arg600, float4 arg601, float4 arg602, float4 arg603, float4 arg604, float4 arg605, float4 arg606, float4 arg607, float4 arg608, float4 arg609, float4 arg610, float4 arg611, float4 arg612, float4 arg613, float4 arg614, float4 arg615, float4 arg616, float4 arg617, float4 arg618, float4 arg619, float4 arg620, float4 arg621, float4 arg622, float4 arg623, float4 arg624, float4 arg625, float4 arg626, float4 arg627, float4 arg628, float4 arg629, float4 arg630, float4 arg631, float4 arg632, float4 arg633, float4 arg634, float4 arg635, float4 arg636, float4 arg637, float4 arg638, float4 arg639, float4 arg640, float4 arg641, float4 arg642, float4 arg643, float4 arg644, float4 arg645, float4 arg646, float4 arg647, float4 arg648, float4 arg649, float4 arg650, float4 arg651, float4 arg652, float4 arg653, float4 arg654, float4 arg655, float4 arg656, float4 arg657, float4 arg658, float4 arg659, float4 arg660, float4 arg661, float4 arg662, float4 arg663, float4 arg664, float4 arg665, float4 arg666, float4 arg667, float4 arg668, float4 arg669, float4 arg670, float4 arg671, float4 arg672, float4 arg673, float4 arg674, float4 arg675, float4 arg676, float4 arg677, float4 arg678, float4 arg679, float4 arg680, float4 arg681, float4 arg682, float4 arg683, float4 arg684, float4 arg685, float4 arg686, float4 arg687, float4 arg688, float4 arg689, float4 arg690, float4 arg691, float4 arg692, float4 arg693, float4 arg694, float4 arg695, float4 arg696, float4 arg697, float4 arg698, float4 arg699, float4 arg700, float4 arg701, float4 arg702, float4 arg703, float4 arg704, float4 arg705, float4 arg706, float4 arg707, float4 arg708, float4 arg709, float4 arg710, float4 arg711, float4 arg712, float4 arg713, float4 arg714, float4 arg715, float4 arg716, float4 arg717, float4 arg718, float4 arg719, float4 arg720, float4 arg721, float4 arg722, float4 arg723, float4 arg724, float4 arg725, float4 arg726, float4 arg727, float4 arg728, float4 arg729, float4 arg730, float4 arg731, float4 arg732, float4 arg733, float4 arg734, float4 arg735, float4 arg736, float4 arg737, float4 arg738, float4 arg739, float4 arg740, float4 arg741, float4 arg742, float4 arg743, float4 arg744, float4 arg745, float4 arg746, float4 arg747, float4 arg748, float4 arg749, float4 arg750, float4 arg751, float4 arg752, float4 arg753, float4 arg754, float4 arg755, float4 arg756, float4 arg757, float4 arg758, float4 arg759, float4 arg760, float4 arg761, float4 arg762, float4 arg763, float4 arg764, float4 arg765, float4 arg766, float4 arg767, float4 arg768, float4 arg769, float4 arg770, float4 arg771, float4 arg772, float4 arg773, float4 arg774, float4 arg775, float4 arg776, float4 arg777, float4 arg778, float4 arg779, float4 arg780, float4 arg781, float4 arg782, float4 arg783, float4 arg784, float4 arg785, float4 arg786, float4 arg787, float4 arg788, float4 arg789, float4 arg790, float4 arg791, float4 arg792, float4 arg793, float4 arg794, float4 arg795, float4 arg796, float4 arg797, float4 arg798, float4 arg799, float4 arg800, float4 arg801, float4 arg802, float4 arg803, float4 arg804, float4 arg805, float4 arg806, float4 arg807, float4 arg808, float4 arg809, float4 arg810, float4 arg811, float4 arg812, float4 arg813, float4 arg814, float4 arg815, float4 arg816, float4 arg817, float4 arg818, float4 arg819, float4 arg820, float4 arg821, float4 arg822, float4 arg823, float4 arg824, float4 arg825, float4 arg826, float4 arg827, float4 arg828, float4 arg829, float4 arg830, float4 arg831, float4 arg832, float4 arg833, float4 arg834, float4 arg835, float4 arg836, float4 arg837, float4 arg838, float4 arg839, float4 arg840, float4 arg841, float4 arg842, float4 arg843, float4 arg844, float4 arg845, float4 arg846, float4 arg847, float4 arg848, float4 arg849, float4 arg850, float4 arg851, float4 arg852, float4 arg853, float4 arg854, float4 arg855, float4 arg856, float4 arg857, float4 arg858, float4 arg859, float4 arg860, float4 arg861, float4 arg862, float4 arg863, float4 arg864, float4 arg865, float4 arg866, float4 arg867, float4 arg868, float4 arg869, float4 arg870, float4 arg871, float4 arg872, float4 arg873, float4 arg874, float4 arg875, float4 arg876, float4 arg877, float4 arg878, float4 arg879, float4 arg880, float4 arg881, float4 arg882, float4 arg883, float4 arg884, float4 arg885, float4 arg886, float4 arg887, float4 arg888, float4 arg889, float4 arg890, float4 arg891, float4 arg892, float4 arg893, float4 arg894, float4 arg895, float4 arg896, float4 arg897, float4 arg898, float4 arg899, float4 arg900, float4 arg901, float4 arg902, float4 arg903, float4 arg904, float4 arg905, float4 arg906, float4 arg907, float4 arg908, float4 arg909, float4 arg910, float4 arg911, float4 arg912, float4 arg913, float4 arg914, float4 arg915, float4 arg916, float4 arg917, float4 arg918, float4 arg919, float4 arg920, float4 arg921, float4 arg922, float4 arg923, float4 arg924, float4 arg925, float4 arg926, float4 arg927, float4 arg928, float4 arg929, float4 arg930, float4 arg931, float4 arg932, float4 arg933, float4 arg934, float4 arg935, float4 arg936, float4 arg937, float4 arg938, float4 arg939, float4 arg940, float4 arg941, float4 arg942, float4 arg943, float4 arg944, float4 arg945, float4 arg946, float4 arg947, float4 arg948, float4 arg949, float4 arg950, float4 arg951, float4 arg952, float4 arg953, float4 arg954, float4 arg955, float4 arg956, float4 arg957, float4 arg958, float4 arg959) {
-    float4 ret[960] = { arg0, arg1, arg2, arg3, arg4, arg5, arg6, arg7, arg8, arg9, arg10, arg11, arg12, arg13, arg14, arg15, arg16, arg17, arg18, arg19, arg20, arg21, arg22, arg23, arg24, arg25, arg26, arg27, arg28, arg29, arg30, arg31, arg32, arg33, arg34, arg35, arg36, arg37, arg38, arg39, arg40, arg41, arg42, arg43, arg44, arg45, arg46, arg47, arg48, arg49, arg50, arg51, arg52, arg53, arg54, arg55, arg56, arg57, arg58, arg59, arg60, arg61, arg62, arg63, arg64, arg65, arg66, arg67, arg68, arg69, arg70, arg71, arg72, arg73, arg74, arg75, arg76, arg77, arg78, arg79, arg80, arg81, arg82, arg83, arg84, arg85, arg86, arg87, arg88, arg89, arg90, arg91, arg92, arg93, arg94, arg95, arg96, arg97, arg98, arg99, arg100, arg101, arg102, arg103, arg104, arg105, arg106, arg107, arg108, arg109, arg110, arg111, arg112, arg113, arg114, arg115, arg116, arg117, arg118, arg119, arg120, arg121, arg122, arg123, arg124, arg125, arg126, arg127, arg128, arg129, arg130, arg131, arg132, arg133, arg134, arg135, arg136, arg137, arg138, arg139, arg140, arg141, arg142, arg143, arg144, arg145, arg146, arg147, arg148, arg149, arg150, arg151, arg152, arg153, arg154, arg155, arg156, arg157, arg158, arg159, arg160, arg161, arg162, arg163, arg164, arg165, arg166, arg167, arg168, arg169, arg170, arg171, arg172, arg173, arg174, arg175, arg176, arg177, arg178, arg179, arg180, arg181, arg182, arg183, arg184, arg185, arg186, arg187, arg188, arg189, arg190, arg191, arg192, arg193, arg194, arg195, arg196, arg197, arg198, arg199, arg200, arg201, arg202, arg203, arg204, arg205, arg206, arg207, arg208, arg209, arg210, arg211, arg212, arg213, arg214, arg215, arg216, arg217, arg218, arg219, arg220, arg221, arg222, arg223, arg224, arg225, arg226, arg227, arg228, arg229, arg230, arg231, arg232, arg233, arg234, arg235, arg236, arg237, arg238, arg239, arg240, arg241, arg242, arg243, arg244, arg245, arg246, arg247, arg248, arg249, arg250, arg251, arg252, arg253, arg254, arg255, arg256, arg257, arg258, arg259, arg260, arg261, arg262, arg263, arg264, arg265, arg266, arg267, arg268, arg269, arg270, arg271, arg272, arg273, arg274, arg275, arg276, arg277, arg278, arg279, arg280, arg281, arg282, arg283, arg284, arg285, arg286, arg287, arg288, arg289, arg290, arg291, arg292, arg293, arg294, arg295, arg296, arg297, arg298, arg299, arg300, arg301, arg302, arg303, arg304, arg305, arg306, arg307, arg308, arg309, arg310, arg311, arg312, arg313, arg314, arg315, arg316, arg317, arg318, arg319, arg320, arg321, arg322, arg323, arg324, arg325, arg326, arg327, arg328, arg329, arg330, arg331, arg332, arg333, arg334, arg335, arg336, arg337, arg338, arg339, arg340, arg341, arg342, arg343, arg344, arg345, arg346, arg347, arg348, arg349, arg350, arg351, arg352, arg353, arg354, arg355, arg356, arg357, arg358, arg359, arg360, arg361, arg362, arg363, arg364, arg365, arg366, arg367, arg368, arg369, arg370, arg371, arg372, arg373, arg374, arg375, arg376, arg377, arg378, arg379, arg380, arg381, arg382, arg383, arg384, arg385, arg386, arg387, arg388, arg389, arg390, arg391, arg392, arg393, arg394, arg395, arg396, arg397, arg398, arg399, arg400, arg401, arg402, arg403, arg404, arg405, arg406, arg407, arg408, arg409, arg410, arg411, arg412, arg413, arg414, arg415, arg416, arg417, arg418, arg419, arg420, arg421, arg422, arg423, arg424, arg425, arg426, arg427, arg428, arg429, arg430, arg431, arg432, arg433, arg434, arg435, arg436, arg437, arg438, arg439, arg440, arg441, arg442, arg443, arg444, arg445, arg446, arg447, arg448, arg449, arg450, arg451, arg452, arg453, arg454, arg455, arg456, arg457, arg458, arg459, arg460, arg461, arg462, arg463, arg464, arg465, arg466, arg467, arg468, arg469, arg470, arg471, arg472, arg473, arg474, arg475, arg476, arg477, arg478, arg479, arg480, arg481, arg482, arg483, arg484, arg485, arg486, arg487, arg488, arg489, arg490, arg491, arg492, arg493, arg494, arg495, arg496, arg497, arg498, arg499, arg500, arg501, arg502, arg503, arg504, arg505, arg506, arg507, arg508, arg509, arg510, arg511, arg512, arg513, arg514, arg515, arg516, arg517, arg518, arg519, arg520, arg521, arg522, arg523, arg524, arg525, arg526, arg527, arg528, arg529, arg530, arg531, arg532, arg533, arg534, arg535, arg536, arg537, arg538, arg539, arg540, arg541, arg542, arg543, arg544, arg545, arg546, arg547, arg548, arg549, arg550, arg551, arg552, arg553, arg554, arg555, arg556, arg557, arg558, arg559, arg560, arg561, arg562, arg563, arg564, arg565, arg566, arg567, arg568, arg569, arg570, arg571, arg572, arg573, arg574, arg575, arg576, arg577, arg578, arg579, arg580, arg581, arg582, arg583, arg584, arg585, arg586, arg587, arg588, arg589, arg590, arg591, arg592, arg593, arg594, arg595, arg596, arg597, arg598, arg599, arg600, arg601, arg602, arg603, arg604, arg605, arg606, arg607, arg608, arg609, arg610, arg611, arg612, arg613, arg614, arg615, arg616, arg617, arg618, arg619, arg620, arg621, arg622, arg623, arg624, arg625, arg626, arg627, arg628, arg629, arg630, arg631, arg632, arg633, arg634, arg635, arg636, arg637, arg638, arg639, arg640, arg641, arg642, arg643, arg644, arg645, arg646, arg647, arg648, arg649, arg650, arg651, arg652, arg653, arg654, arg655, arg656, arg657, arg658, arg659, arg660, arg661, arg662, arg663, arg664, arg665, arg666, arg667, arg668, arg669, arg670, arg671, arg672, arg673, arg674, arg675, arg676, arg677, arg678, arg679, arg680, arg681, arg682, arg683, arg684, arg685, arg686, arg687, arg688, arg689, arg690, arg691, arg692, arg693, arg694, arg695, arg696, arg697, arg698, arg699, arg700, arg701, arg702, arg703, arg704, arg705, arg706, arg707, arg708, arg709, arg710, arg711, arg712, arg713, arg714, arg715, arg716, arg717, arg718, arg719, arg720, arg721, arg722, arg723, arg724, arg725, arg726, arg727, arg728, arg729, arg730, arg731, arg732, arg733, arg734, arg735, arg736, arg737, arg738, arg739, arg740, arg741, arg742, arg743, arg744, arg745, arg746, arg747, arg748, arg749, arg750, arg751, arg752, arg753, arg754, arg755, arg756, arg757, arg758, arg759, arg760, arg761, arg762, arg763, arg764, arg765, arg766, arg767, arg768, arg769, arg770, arg771, arg772, arg773, arg774, arg775, arg776, arg777, arg778, arg779, arg780, arg781, arg782, arg783, arg784, arg785, arg786, arg787, arg788, arg789, arg790, arg791, arg792, arg793, arg794, arg795, arg796, arg797, arg798, arg799, arg800, arg801, arg802, arg803, arg804, arg805, arg806, arg807, arg808, arg809, arg810, arg811, arg812, arg813, arg814, arg815, arg816, arg817, arg818, arg819, arg820, arg821, arg822, arg823, arg824, arg825, arg826, arg827, arg828, arg829, arg830, arg831, arg832, arg833, arg834, arg835, arg836, arg837, arg838, arg839, arg840, arg841, arg842, arg843, arg844, arg845, arg846, arg847, arg848, arg849, arg850, arg851, arg852, arg853, arg854, arg855, arg856, arg857, arg858, arg859, arg860, arg861, arg862, arg863, arg864, arg865, arg866, arg867, arg868, arg869, arg870, arg871, arg872, arg873, arg874, arg875, arg876, arg877, arg878, arg879, arg880, arg881, arg882, arg883, arg884, arg885, arg886, arg887, arg888, arg889, arg890, arg891, arg892, arg893, arg894, arg895, arg896, arg897, arg898, arg899, arg900, arg901, arg902, arg903, arg904, arg905, arg906, arg907, arg908, arg909, arg910, arg911, arg912, arg913, arg914, arg915, arg916, arg917, arg918, arg919, arg920, arg921, arg922, arg923, arg924, arg925, arg926, arg927, arg928, arg929, arg930, arg931, arg932, arg933, arg934, arg935, arg936, arg937, arg938, arg939, arg940, arg941, arg942, arg943, arg944, arg945, arg946, arg947, arg948, arg949, arg950, arg951, arg952, arg953, arg954, arg955, arg956, arg957, arg958, arg959 };
-    return ret;
-}
-
-typedef float4 ret_Constructarray768_float4_[768];
-ret_Constructarray768_float4_ Constructarray768_float4_(float4 arg0, float4 arg1, float4 arg2, float4 arg3, float4 arg4, float4 arg5, float4 arg6, float4 arg7, float4 arg8, float4 arg9, float4 arg10, float4 arg11, float4 arg12, float4 arg13, float4 arg14, float4 arg15, float4 arg16, float4 arg17, float4 arg18, float4 arg19, float4 arg20, float4 arg21, float4 arg22, float4 arg23, float4 arg24, float4 arg25, float4 arg26, float4 arg27, float4 arg28, float4 arg29, float4 arg30, float4 arg31, float4 arg32, float4 arg33, float4 arg34, float4 arg35, float4 arg36, float4 arg37, float4 arg38, float4 arg39, float4 arg40, float4 arg41, float4 arg42, float4 arg43, float4 arg44, float4 arg45, float4 arg46, float4 arg47, float4 arg48, float4 arg49, float4 arg50, float4 arg51, float4 arg52, float4 arg53, float4 arg54, float4 arg55, float4 arg56, float4 arg57, float4 arg58, float4 arg59, float4 arg60, float4 arg61, float4 arg62, float4 arg63, float4 arg64, float4 arg65, float4 arg66, float4 arg67, float4 arg68, float4 arg69, float4 arg70, float4 arg71, float4 arg72, float4 arg73, float4 arg74, float4 arg75, float4 arg76, float4 arg77, float4 arg78, float4 arg79, float4 arg80, float4 arg81, float4 arg82, float4 arg83, float4 arg84, float4 arg85, float4 arg86, float4 arg87, float4 arg88, float4 arg89, float4 arg90, float4 arg91, float4 arg92, float4 arg93, float4 arg94, float4 arg95, float4 arg96, float4 arg97, float4 arg98, float4 arg99, float4 arg100, float4 arg101, float4 arg102, float4 arg103, float4 arg104, float4 arg105, float4 arg106, float4 arg107, float4 arg108, float4 arg109, float4 arg110, float4 arg111, float4 arg112, float4 arg113, float4 arg114, float4 arg115, float4 arg116, float4 arg117, float4 arg118, float4 arg119, float4 arg120, float4 arg121, float4 arg122, float4 arg123, float4 arg124, float4 arg125, float4 arg126, float4 arg127, float4 arg128, float4 arg129, float4 arg130, float4 arg131, float4 arg132, float4 arg133, float4 arg134, float4 arg135, float4 arg136, float4 arg137, float4 arg138, float4 arg139, float4 arg140, float4 arg141, float4 arg142, float4 arg143, float4 arg144, float4 arg145, float4 arg146, float4 arg147, float4 arg148, float4 arg149, float4 arg150, float4 arg151, float4 arg152, float4 arg153, float4 arg154, float4 arg155, float4 arg156, float4 arg157, float4 arg158, float4 arg159, float4 arg160, float4 arg161, float4 arg162, float4 arg163, float4 arg164, float4 arg165, float4 arg166, float4 arg167, float4 arg168, float4 arg169, float4 arg170, float4 arg171, float4 arg172, float4 arg173, float4 arg174, float4 arg175, float4 arg176, float4 arg177, float4 arg178, float4 arg179, float4 arg180, float4 arg181, float4 arg182, float4 arg183, float4 arg184, float4 arg185, float4 arg186, float4 arg187, float4 arg188, float4 arg189, float4 arg190, float4 arg191, float4 arg192, float4 arg193, float4 arg194, float4 arg195, float4 arg196, float4 arg197, float4 arg198, float4 arg199, float4 arg200, float4 arg201, float4 arg202, float4 arg203, float4 arg204, float4 arg205, float4 arg206, float4 arg207, float4 arg208, float4 arg209, float4 arg210, float4 arg211, float4 arg212, float4 arg213, float4 arg214, float4 arg215, float4 arg216, float4 arg217, float4 arg218, float4 arg219, float4 arg220, float4 arg221, float4 arg222, float4 arg223, float4 arg224, float4 arg225, float4 arg226, float4 arg227, float4 arg228, float4 arg229, float4 arg230, float4 arg231, float4 arg232, float4 arg233, float4 arg234, float4 arg235, float4 arg236, float4 arg237, float4 arg238, float4 arg239, float4 arg240, float4 arg241, float4 arg242, float4 arg243, float4 arg244, float4 arg245, float4 arg246, float4 arg247, float4 arg248, float4 arg249, float4 arg250, float4 arg251, float4 arg252, float4 arg253, float4 arg254, float4 arg255, float4 arg256, float4 arg257, float4 arg258, float4 arg259, float4 arg260, float4 arg261, float4 arg262, float4 arg263, float4 arg264, float4 arg265, float4 arg266, float4 arg267, float4 arg268, float4 arg269, float4 arg270, float4 arg271, float4 arg272, float4 arg273, float4 arg274, float4 arg275, float4 arg276, float4 arg277, float4 arg278, float4 arg279, float4 arg280, float4 arg281, float4 arg282, float4 arg283, float4 arg284, float4 arg285, float4 arg286, float4 arg287, float4 arg288, float4 arg289, float4 arg290, float4 arg291, float4 arg292, float4 arg293, float4 arg294, float4 arg295, float4 arg296, float4 arg297, float4 arg298, float4 arg299, float4 arg300, float4 arg301, float4 arg302, float4 arg303, float4 arg304, float4 arg305, float4 arg306, float4 arg307, float4 arg308, float4 arg309, float4 arg310, float4 arg311, float4 arg312, float4 arg313, float4 arg314, float4 arg315, float4 arg316, float4 arg317, float4 arg318, float4 arg319, float4 arg320, float4 arg321, float4 arg322, float4 arg323, float4 arg324, float4 arg325, float4 arg326, float4 arg327, float4 arg328, float4 arg329, float4 arg330, float4 arg331, float4 arg332, float4 arg333, float4 arg334, float4 arg335, float4 arg336, float4 arg337, float4 arg338, float4 arg339, float4 arg340, float4 arg341, float4 arg342, float4 arg343, float4 arg344, float4 arg345, float4 arg346, float4 arg347, float4 arg348, float4 arg349, float4 arg350, float4 arg351, float4 arg352, float4 arg353, float4 arg354, float4 arg355, float4 arg356, float4 arg357, float4 arg358, float4 arg359, float4 arg360, float4 arg361, float4 arg362, float4 arg363, float4 arg364, float4 arg365, float4 arg366, float4 arg367, float4 arg368, float4 arg369, float4 arg370, float4 arg371, float4 arg372, float4 arg373, float4 arg374, float4 arg375, float4 arg376, float4 arg377, float4 arg378, float4 arg379, float4 arg380, float4 arg381, float4 arg382, float4 arg383, float4 arg384, float4 arg385, float4 arg386, float4 arg387, float4 arg388, float4 arg389, float4 arg390, float4 arg391, float4 arg392, float4 arg393, float4 arg394, float4 arg395, float4 arg396, float4 arg397, float4 arg398, float4 arg399, float4 arg400, float4 arg401, float4 arg402, float4 arg403, float4 arg404, float4 arg405, float4 arg406, float4 arg407, float4 arg408, float4 arg409, float4 arg410, float4 arg411, float4 arg412, float4 arg413, float4 arg414, float4 arg415, float4 arg416, float4 arg417, float4 arg418, float4 arg419, float4 arg420, float4 arg421, float4 arg422, float4 arg423, float4 arg424, float4 arg425, float4 arg426, float4 arg427, float4 arg428, float4 arg429, float4 arg430, float4 arg431, float4 arg432, float4 arg433, float4 arg434, float4 arg435, float4 arg436, float4 arg437, float4 arg438, float4 arg439, float4 arg440, float4 arg441, float4 arg442, float4 arg443, float4 arg444, float4 arg445, float4 arg446, float4 arg447, float4 arg448, float4 arg449, float4 arg450, float4 arg451, float4 arg452, float4 arg453, float4 arg454, float4 arg455, float4 arg456, float4 arg457, float4 arg458, float4 arg459, float4 arg460, float4 arg461, float4 arg462, float4 arg463, float4 arg464, float4 arg465, float4 arg466, float4 arg467, float4 arg468, float4 arg469, float4 arg470, float4 arg471, float4 arg472, float4 arg473, float4 arg474, float4 arg475, float4 arg476, float4 arg477, float4 arg478, float4 arg479, float4 arg480, float4 arg481, float4 arg482, float4 arg483, float4 arg484, float4 arg485, float4 arg486, float4 arg487, float4 arg488, float4 arg489, float4 arg490, float4 arg491, float4 arg492, float4 arg493, float4 arg494, float4 arg495, float4 arg496, float4 arg497, float4 arg498, float4 arg499, float4 arg500, float4 arg501, float4 arg502, float4 arg503, float4 arg504, float4 arg505, float4 arg506, float4 arg507, float4 arg508, float4 arg509, float4 arg510, float4 arg511, float4 arg512, float4 arg513, float4 arg514, float4 arg515, float4 arg516, float4 arg517, float4 arg518, float4 arg519, float4 arg520, float4 arg521, float4 arg522, float4 arg523, float4 arg524, float4 arg525, float4 arg526, float4 arg527, float4 arg528, float4 arg529, float4 arg530, float4 arg531, float4 arg532, float4 arg533, float4 arg534, float4 arg535, float4 arg536, float4 arg537, float4 arg538, float4 arg539, float4 arg540, float4 arg541, float4 arg542, float4 arg543, float4 arg544, float4 arg545, float4 arg546, float4 arg547, float4 arg548, float4 arg549, float4 arg550, float4 arg551, float4 arg552, float4 arg553, float4 arg554, float4 arg555, float4 arg556, float4 arg557, float4 arg558, float4 arg559, float4 arg560, float4 arg561, float4 arg562, float4 arg563, float4 arg564, float4 arg565, float4 arg566, float4 arg567, float4 arg568, float4 arg569, float4 arg570, float4 arg571, float4 arg572, float4 arg573, float4 arg574, float4 arg575, float4 arg576, float4 arg577, float4 arg578, float4 arg579, float4 arg580, float4 arg581, float4 arg582, float4 arg583, float4 arg584, float4 arg585, float4 arg586, float4 arg587, float4 arg588, float4 arg589, float4 arg590, float4 arg591, float4 arg592, float4 arg593, float4 arg594, float4 arg595, float4 arg596, float4 arg597, float4 arg598, float4 arg599, float4 arg600, float4 arg601, float4 arg602, float4 arg603, float4 arg604, float4 arg605, float4 arg606, float4 arg607, float4 arg608, float4 arg609, float4 arg610, float4 arg611, float4 arg612, float4 arg613, float4 arg614, float4 arg615, float4 arg616, float4 arg617, float4 arg618, float4 arg619, float4 arg620, float4 arg621, float4 arg622, float4 arg623, float4 arg624, float4 arg625, float4 arg626, float4 arg627, float4 arg628, float4 arg629, float4 arg630, float4 arg631, float4 arg632, float4 arg633, float4 arg634, float4 arg635, float4 arg636, float4 arg637, float4 arg638, float4 arg639, float4 arg640, float4 arg641, float4 arg642, float4 arg643, float4 arg644, float4 arg645, float4 arg646, float4 arg647, float4 arg648, float4 arg649, float4 arg650, float4 arg651, float4 arg652, float4 arg653, float4 arg654, float4 arg655, float4 arg656, float4 arg657, float4 arg658, float4 arg659, float4 arg660, float4 arg661, float4 arg662, float4 arg663, float4 arg664, float4 arg665, float4 arg666, float4 arg667, float4 arg668, float4 arg669, float4 arg670, float4 arg671, float4 arg672, float4 arg673, float4 arg674, float4 arg675, float4 arg676, float4 arg677, float4 arg678, float4 arg679, float4 arg680, float4 arg681, float4 arg682, float4 arg683, float4 arg684, float4 arg685, float4 arg686, float4 arg687, float4 arg688, float4 arg689, float4 arg690, float4 arg691, float4 arg692, float4 arg693, float4 arg694, float4 arg695, float4 arg696, float4 arg697, float4 arg698, float4 arg699, float4 arg700, float4 arg701, float4 arg702, float4 arg703, float4 arg704, float4 arg705, float4 arg706, float4 arg707, float4 arg708, float4 arg709, float4 arg710, float4 arg711, float4 arg712, float4 arg713, float4 arg714, float4 arg715, float4 arg716, float4 arg717, float4 arg718, float4 arg719, float4 arg720, float4 arg721, float4 arg722, float4 arg723, float4 arg724, float4 arg725, float4 arg726, float4 arg727, float4 arg728, float4 arg729, float4 arg730, float4 arg731, float4 arg732, float4 arg733, float4 arg734, float4 arg735, float4 arg736, float4 arg737, float4 arg738, float4 arg739, float4 arg740, float4 arg741, float4 arg742, float4 arg743, float4 arg744, float4 arg745, float4 arg746, float4 arg747, float4 arg748, float4 arg749, float4 arg750, float4 arg751, float4 arg752, float4 arg753, float4 arg754, float4 arg755, float4 arg756, float4 arg757, float4 arg758, float4 arg759, float4 arg760, float4 arg761, float4 arg762, float4 arg763, float4 arg764, float4 arg765, float4 arg766, float4 arg767) {
-    float4 ret[768] = { arg0, arg1, arg2, arg3, arg4, arg5, arg6, arg7, arg8, arg9, arg10, arg11, arg12, arg13, arg14, arg15, arg16, arg17, arg18, arg19, arg20, arg21, arg22, arg23, arg24, arg25, arg26, arg27, arg28, arg29, arg30, arg31, arg32, arg33, arg34, arg35, arg36, arg37, arg38, arg39, arg40, arg41, arg42, arg43, arg44, arg45, arg46, arg47, arg48, arg49, arg50, arg51, arg52, arg53, arg54, arg55, arg56, arg57, arg58, arg59, arg60, arg61, arg62, arg63, arg64, arg65, arg66, arg67, arg68, arg69, arg70, arg71, arg72, arg73, arg74, arg75, arg76, arg77, arg78, arg79, arg80, arg81, arg82, arg83, arg84, arg85, arg86, arg87, arg88, arg89, arg90, arg91, arg92, arg93, arg94, arg95, arg96, arg97, arg98, arg99, arg100, arg101, arg102, arg103, arg104, arg105, arg106, arg107, arg108, arg109, arg110, arg111, arg112, arg113, arg114, arg115, arg116, arg117, arg118, arg119, arg120, arg121, arg122, arg123, arg124, arg125, arg126, arg127, arg128, arg129, arg130, arg131, arg132, arg133, arg134, arg135, arg136, arg137, arg138, arg139, arg140, arg141, arg142, arg143, arg144, arg145, arg146, arg147, arg148, arg149, arg150, arg151, arg152, arg153, arg154, arg155, arg156, arg157, arg158, arg159, arg160, arg161, arg162, arg163, arg164, arg165, arg166, arg167, arg168, arg169, arg170, arg171, arg172, arg173, arg174, arg175, arg176, arg177, arg178, arg179, arg180, arg181, arg182, arg183, arg184, arg185, arg186, arg187, arg188, arg189, arg190, arg191, arg192, arg193, arg194, arg195, arg196, arg197, arg198, arg199, arg200, arg201, arg202, arg203, arg204, arg205, arg206, arg207, arg208, arg209, arg210, arg211, arg212, arg213, arg214, arg215, arg216, arg217, arg218, arg219, arg220, arg221, arg222, arg223, arg224, arg225, arg226, arg227, arg228, arg229, arg230, arg231, arg232, arg233, arg234, arg235, arg236, arg237, arg238, arg239, arg240, arg241, arg242, arg243, arg244, arg245, arg246, arg247, arg248, arg249, arg250, arg251, arg252, arg253, arg254, arg255, arg256, arg257, arg258, arg259, arg260, arg261, arg262, arg263, arg264, arg265, arg266, arg267, arg268, arg269, arg270, arg271, arg272, arg273, arg274, arg275, arg276, arg277, arg278, arg279, arg280, arg281, arg282, arg283, arg284, arg285, arg286, arg287, arg288, arg289, arg290, arg291, arg292, arg293, arg294, arg295, arg296, arg297, arg298, arg299, arg300, arg301, arg302, arg303, arg304, arg305, arg306, arg307, arg308, arg309, arg310, arg311, arg312, arg313, arg314, arg315, arg316, arg317, arg318, arg319, arg320, arg321, arg322, arg323, arg324, arg325, arg326, arg327, arg328, arg329, arg330, arg331, arg332, arg333, arg334, arg335, arg336, arg337, arg338, arg339, arg340, arg341, arg342, arg343, arg344, arg345, arg346, arg347, arg348, arg349, arg350, arg351, arg352, arg353, arg354, arg355, arg356, arg357, arg358, arg359, arg360, arg361, arg362, arg363, arg364, arg365, arg366, arg367, arg368, arg369, arg370, arg371, arg372, arg373, arg374, arg375, arg376, arg377, arg378, arg379, arg380, arg381, arg382, arg383, arg384, arg385, arg386, arg387, arg388, arg389, arg390, arg391, arg392, arg393, arg394, arg395, arg396, arg397, arg398, arg399, arg400, arg401, arg402, arg403, arg404, arg405, arg406, arg407, arg408, arg409, arg410, arg411, arg412, arg413, arg414, arg415, arg416, arg417, arg418, arg419, arg420, arg421, arg422, arg423, arg424, arg425, arg426, arg427, arg428, arg429, arg430, arg431, arg432, arg433, arg434, arg435, arg436, arg437, arg438, arg439, arg440, arg441, arg442, arg443, arg444, arg445, arg446, arg447, arg448, arg449, arg450, arg451, arg452, arg453, arg454, arg455, arg456, arg457, arg458, arg459, arg460, arg461, arg462, arg463, arg464, arg465, arg466, arg467, arg468, arg469, arg470, arg471, arg472, arg473, arg474, arg475, arg476, arg477, arg478, arg479, arg480, arg481, arg482, arg483, arg484, arg485, arg486, arg487, arg488, arg489, arg490, arg491, arg492, arg493, arg494, arg495, arg496, arg497, arg498, arg499, arg500, arg501, arg502, arg503, arg504, arg505, arg506, arg507, arg508, arg509, arg510, arg511, arg512, arg513, arg514, arg515, arg516, arg517, arg518, arg519, arg520, arg521, arg522, arg523, arg524, arg525, arg526, arg527, arg528, arg529, arg530, arg531, arg532, arg533, arg534, arg535, arg536, arg537, arg538, arg539, arg540, arg541, arg542, arg543, arg544, arg545, arg546, arg547, arg548, arg549, arg550, arg551, arg552, arg553, arg554, arg555, arg556, arg557, arg558, arg559, arg560, arg561, arg562, arg563, arg564, arg565, arg566, arg567, arg568, arg569, arg570, arg571, arg572, arg573, arg574, arg575, arg576, arg577, arg578, arg579, arg580, arg581, arg582, arg583, arg584, arg585, arg586, arg587, arg588, arg589, arg590, arg591, arg592, arg593, arg594, arg595, arg596, arg597, arg598, arg599, arg600, arg601, arg602, arg603, arg604, arg605, arg606, arg607, arg608, arg609, arg610, arg611, arg612, arg613, arg614, arg615, arg616, arg617, arg618, arg619, arg620, arg621, arg622, arg623, arg624, arg625, arg626, arg627, arg628, arg629, arg630, arg631, arg632, arg633, arg634, arg635, arg636, arg637, arg638, arg639, arg640, arg641, arg642, arg643, arg644, arg645, arg646, arg647, arg648, arg649, arg650, arg651, arg652, arg653, arg654, arg655, arg656, arg657, arg658, arg659, arg660, arg661, arg662, arg663, arg664, arg665, arg666, arg667, arg668, arg669, arg670, arg671, arg672, arg673, arg674, arg675, arg676, arg677, arg678, arg679, arg680, arg681, arg682, arg683, arg684, arg685, arg686, arg687, arg688, arg689, arg690, arg691, arg692, arg693, arg694, arg695, arg696, arg697, arg698, arg699, arg700, arg701, arg702, arg703, arg704, arg705, arg706, arg707, arg708, arg709, arg710, arg711, arg712, arg713, arg714, arg715, arg716, arg717, arg718, arg719, arg720, arg721, arg722, arg723, arg724, arg725, arg726, arg727, arg728, arg729, arg730, arg731, arg732, arg733, arg734, arg735, arg736, arg737, arg738, arg739, arg740, arg741, arg742, arg743, arg744, arg745, arg746, arg747, arg748, arg749, arg750, arg751, arg752, arg753, arg754, arg755, arg756, arg757, arg758, arg759, arg760, arg761, arg762, arg763, arg764, arg765, arg766, arg767 };
-    return ret;
-}
-
-typedef float4 ret_Constructarray64_float4_[64];
-ret_Constructarray64_float4_ Constructarray64_float4_(float4 arg0, float4 arg1, float4 arg2, float4 arg3, float4 arg4, float4 arg5, float4 arg6, float4 arg7, float4 arg8, float4 arg9, float4 arg10, float4 arg11, float4 arg12, float4 arg13, float4 arg14, float4 arg15, float4 arg16, float4 arg17, float4 arg18, float4 arg19, float4 arg20, float4 arg21, float4 arg22, float4 arg23, float4 arg24, float4 arg25, float4 arg26, float4 arg27, float4 arg28, float4 arg29, float4 arg30, float4 arg31, float4 arg32, float4 arg33, float4 arg34, float4 arg35, float4 arg36, float4 arg37, float4 arg38, float4 arg39, float4 arg40, float4 arg41, float4 arg42, float4 arg43, float4 arg44, float4 arg45, float4 arg46, float4 arg47, float4 arg48, float4 arg49, float4 arg50, float4 arg51, float4 arg52, float4 arg53, float4 arg54, float4 arg55, float4 arg56, float4 arg57, float4 arg58, float4 arg59, float4 arg60, float4 arg61, float4 arg62, float4 arg63) {
-    float4 ret[64] = { arg0, arg1, arg2, arg3, arg4, arg5, arg6, arg7, arg8, arg9, arg10, arg11, arg12, arg13, arg14, arg15, arg16, arg17, arg18, arg19, arg20, arg21, arg22, arg23, arg24, arg25, arg26, arg27, arg28, arg29, arg30, arg31, arg32, arg33, arg34, arg35, arg36, arg37, arg38, arg39, arg40, arg41, arg42, arg43, arg44, arg45, arg46, arg47, arg48, arg49, arg50, arg51, arg52, arg53, arg54, arg55, arg56, arg57, arg58, arg59, arg60, arg61, arg62, arg63 };
-    return ret;
-}
-
-typedef float ret_Constructarray257_float_[257];
-ret_Constructarray257_float_ Constructarray257_float_(float arg0, float arg1, float arg2, float arg3, float arg4, float arg5, float arg6, float arg7, float arg8, float arg9, float arg10, float arg11, float arg12, float arg13, float arg14, float arg15, float arg16, float arg17, float arg18, float arg19, float arg20, float arg21, float arg22, float arg23, float arg24, float arg25, float arg26, float arg27, float arg28, float arg29, float arg30, float arg31, float arg32, float arg33, float arg34, float arg35, float arg36, float arg37, float arg38, float arg39, float arg40, float arg41, float arg42, float arg43, float arg44, float arg45, float arg46, float arg47, float arg48, float arg49, float arg50, float arg51, float arg52, float arg53, float arg54, float arg55, float arg56, float arg57, float arg58, float arg59, float arg60, float arg61, float arg62, float arg63, float arg64, float arg65, float arg66, float arg67, float arg68, float arg69, float arg70, float arg71, float arg72, float arg73, float arg74, float arg75, float arg76, float arg77, float arg78, float arg79, float arg80, float arg81, float arg82, float arg83, float arg84, float arg85, float arg86, float arg87, float arg88, float arg89, float arg90, float arg91, float arg92, float arg93, float arg94, float arg95, float arg96, float arg97, float arg98, float arg99, float arg100, float arg101, float arg102, float arg103, float arg104, float arg105, float arg106, float arg107, float arg108, float arg109, float arg110, float arg111, float arg112, float arg113, float arg114, float arg115, float arg116, float arg117, float arg118, float arg119, float arg120, float arg121, float arg122, float arg123, float arg124, float arg125, float arg126, float arg127, float arg128, float arg129, float arg130, float arg131, float arg132, float arg133, float arg134, float arg135, float arg136, float arg137, float arg138, float arg139, float arg140, float arg141, float arg142, float arg143, float arg144, float arg145, float arg146, float arg147, float arg148, float arg149, float arg150, float arg151, float arg152, float arg153, float arg154, float arg155, float arg156, float arg157, float arg158, float arg159, float arg160, float arg161, float arg162, float arg163, float arg164, float arg165, float arg166, float arg167, float arg168, float arg169, float arg170, float arg171, float arg172, float arg173, float arg174, float arg175, float arg176, float arg177, float arg178, float arg179, float arg180, float arg181, float arg182, float arg183, float arg184, float arg185, float arg186, float arg187, float arg188, float arg189, float arg190, float arg191, float arg192, float arg193, float arg194, float arg195, float arg196, float arg197, float arg198, float arg199, float arg200, float arg201, float arg202, float arg203, float arg204, float arg205, float arg206, float arg207, float arg208, float arg209, float arg210, float arg211, float arg212, float arg213, float arg214, float arg215, float arg216, float arg217, float arg218, float arg219, float arg220, float arg221, float arg222, float arg223, float arg224, float arg225, float arg226, float arg227, float arg228, float arg229, float arg230, float arg231, float arg232, float arg233, float arg234, float arg235, float arg236, float arg237, float arg238, float arg239, float arg240, float arg241, float arg242, float arg243, float arg244, float arg245, float arg246, float arg247, float arg248, float arg249, float arg250, float arg251, float arg252, float arg253, float arg254, float arg255, float arg256) {
-    float ret[257] = { arg0, arg1, arg2, arg3, arg4, arg5, arg6, arg7, arg8, arg9, arg10, arg11, arg12, arg13, arg14, arg15, arg16, arg17, arg18, arg19, arg20, arg21, arg22, arg23, arg24, arg25, arg26, arg27, arg28, arg29, arg30, arg31, arg32, arg33, arg34, arg35, arg36, arg37, arg38, arg39, arg40, arg41, arg42, arg43, arg44, arg45, arg46, arg47, arg48, arg49, arg50, arg51, arg52, arg53, arg54, arg55, arg56, arg57, arg58, arg59, arg60, arg61, arg62, arg63, arg64, arg65, arg66, arg67, arg68, arg69, arg70, arg71, arg72, arg73, arg74, arg75, arg76, arg77, arg78, arg79, arg80, arg81, arg82, arg83, arg84, arg85, arg86, arg87, arg88, arg89, arg90, arg91, arg92, arg93, arg94, arg95, arg96, arg97, arg98, arg99, arg100, arg101, arg102, arg103, arg104, arg105, arg106, arg107, arg108, arg109, arg110, arg111, arg112, arg113, arg114, arg115, arg116, arg117, arg118, arg119, arg120, arg121, arg122, arg123, arg124, arg125, arg126, arg127, arg128, arg129, arg130, arg131, arg132, arg133, arg134, arg135, arg136, arg137, arg138, arg139, arg140, arg141, arg142, arg143, arg144, arg145, arg146, arg147, arg148, arg149, arg150, arg151, arg152, arg153, arg154, arg155, arg156, arg157, arg158, arg159, arg160, arg161, arg162, arg163, arg164, arg165, arg166, arg167, arg168, arg169, arg170, arg171, arg172, arg173, arg174, arg175, arg176, arg177, arg178, arg179, arg180, arg181, arg182, arg183, arg184, arg185, arg186, arg187, arg188, arg189, arg190, arg191, arg192, arg193, arg194, arg195, arg196, arg197, arg198, arg199, arg200, arg201, arg202, arg203, arg204, arg205, arg206, arg207, arg208, arg209, arg210, arg211, arg212, arg213, arg214, arg215, arg216, arg217, arg218, arg219, arg220, arg221, arg222, arg223, arg224, arg225, arg226, arg227, arg228, arg229, arg230, arg231, arg232, arg233, arg234, arg235, arg236, arg237, arg238, arg239, arg240, arg241, arg242, arg243, arg244, arg245, arg246, arg247, arg248, arg249, arg250, arg251, arg252, arg253, arg254, arg255, arg256 };
-    return ret;
-}
-
 static const float MS_PI = 3.1415927;
 static const float MS_TAU = 6.2831855;
 static const uint MS_FRESNEL_ONE = 0u;
@@ -136,26 +100,8 @@ static const int MS_BK_ERFINV_W_K1_ = int(7);
 static const float MS_BK_QUANTILE_EDGE = -27.200563;
 static const float MS_FRAC_1_SQRT_PI = 0.5641896;
 static const float MS_SQRT_PI = 1.7724539;
-static const int MS_DG_LAMBDA_K0_ = int(-30);
-static const int MS_DG_LAMBDA_K1_ = int(16);
-static const uint MS_DG_LAMBDA_M = 3u;
-static const int MS_DG_D_K0_ = int(-30);
-static const int MS_DG_D_K1_ = int(30);
-static const uint MS_DG_D_M = 2u;
-static const int MS_EXP_QA_K0_ = int(-24);
-static const int MS_EXP_QA_K1_ = int(6);
-static const uint MS_EXP_QA_M = 5u;
-static const int MS_EXP_QB_K0_ = int(6);
-static const int MS_EXP_QB_K1_ = int(12);
-static const uint MS_EXP_QB_M = 7u;
-static const int MS_EXP_FAR_K0_ = int(5);
-static const int MS_EXP_FAR_K1_ = int(9);
-static const uint MS_EXP_FAR_M = 3u;
-static const float MS_EULER_GAMMA = 0.5772157;
 static const uint MS_NDF_GGX = 0u;
 static const uint MS_NDF_BECKMANN = 1u;
-static const uint MS_NDF_DOUBLE_GGX = 2u;
-static const uint MS_NDF_EXPONENTIAL = 3u;
 static const uint MS_MASKING_CORRELATED = 0u;
 static const uint MS_MASKING_SEPARABLE = 1u;
 static const uint MS_MASKING_CORRELATED_BETA = 2u;
@@ -171,13 +117,6 @@ static float4 MS_BK_ERFCX[152] = { float4(0.9999225, -8.607803e-6, 5.8177935e-11
 static float4 MS_BK_ERFC_RATIO[152] = { float4(0.9998783, -1.3520655e-5, 1.16372106e-10, 8.9372953e-14), float4(5.4622973e-14, -1.831868e-13, -3.5083048e-14, 1.0746959e-13), float4(0.9998513, -1.3520189e-5, 1.1636769e-10, 8.6985974e-14), float4(5.395684e-14, -1.777467e-13, -3.463896e-14, 1.04360964e-13), float4(0.9998242, -1.3519723e-5, 1.16361754e-10, 9.531265e-14), float4(5.6621374e-14, -1.926237e-13, -3.6415315e-14, 1.1235457e-13), float4(0.99979717, -1.3519258e-5, 1.1635656e-10, 9.2870156e-14), float4(5.6621374e-14, -1.8840485e-13, -3.5971226e-14, 1.09690035e-13), float4(0.99975663, -2.7037118e-5, 4.654685e-10, 8.06577e-14), float4(5.6177285e-14, -1.761924e-13, -3.5527137e-14, 1.03472786e-13), float4(0.9997026, -2.7035258e-5, 4.654293e-10, 8.9595e-14), float4(5.973e-14, -1.9295676e-13, -3.8191672e-14, 1.1279866e-13), float4(0.9996485, -2.7033395e-5, 4.653939e-10, 8.01581e-14), float4(5.4178884e-14, -1.7652546e-13, -3.463896e-14, 1.03916875e-13), float4(0.99959445, -2.7031534e-5, 4.6535684e-10, 8.01581e-14), float4(5.306866e-14, -1.7652546e-13, -3.419487e-14, 1.03916875e-13), float4(0.9995133, -5.4057484e-5, 1.8612636e-9, 3.8469228e-14), float4(5.5067062e-14, -1.8152146e-13, -3.5527137e-14, 1.070255e-13), float4(0.9994052, -5.405004e-5, 1.8609614e-9, 3.758105e-14), float4(5.5067062e-14, -1.7952306e-13, -3.5527137e-14, 1.0613732e-13), float4(0.99929714, -5.4042597e-5, 1.8606601e-9, 4.4131365e-14), float4(5.4622973e-14, -1.9173552e-13, -3.5527137e-14, 1.1235457e-13), float4(0.9991891, -5.4035154e-5, 1.8603591e-9, 4.052314e-14), float4(5.1958438e-14, -1.8540725e-13, -3.330669e-14, 1.09245946e-13), float4(0.99902695, -0.000108047985, 7.439686e-9, -3.1830094e-13), float4(5.4622973e-14, -1.7141844e-13, -3.5083048e-14, 1.0125234e-13), float4(0.9988109, -0.000108018234, 7.4372717e-9, -3.2190917e-13), float4(5.6621374e-14, -1.6553425e-13, -3.6415315e-14, 9.8143715e-14), float4(0.9985949, -0.00010798849, 7.43486e-9, -3.1646907e-13), float4(5.4845017e-14, -1.7352786e-13, -3.5083048e-14, 1.0169643e-13), float4(0.99837893, -0.00010795875, 7.4324493e-9, -3.1152858e-13), float4(5.0404125e-14, -1.8207658e-13, -3.1974423e-14, 1.0658141e-13), float4(0.99805516, -0.00021582833, 2.9715395e-8, -3.128331e-12), float4(5.551115e-14, -1.7486013e-13, -3.5527137e-14, 1.03472786e-13), float4(0.9976236, -0.00021570952, 2.969612e-8, -3.120837e-12), float4(5.7065463e-14, -1.8207658e-13, -3.5971226e-14, 1.0658141e-13), float4(0.9971923, -0.00021559077, 2.9676862e-8, -3.1179503e-12), float4(5.1292304e-14, -1.8363089e-13, -3.2418512e-14, 1.0746959e-13), float4(0.99676126, -0.0002154721, 2.9657613e-8, -3.1167846e-12), float4(5.973e-14, -1.8129942e-13, -3.8191672e-14, 1.0613732e-13), float4(0.9961151, -0.00043058846, 1.1851517e-7, -2.5533409e-11), float4(5.4622973e-14, -1.8196555e-13, -3.1974423e-14, 1.070255e-13), float4(0.9952544, -0.0004301147, 1.1836154e-7, -2.549444e-11), float4(5.750955e-14, -1.8396396e-13, -3.375078e-14, 1.0791368e-13), float4(0.9943946, -0.00042964157, 1.1820814e-7, -2.54613e-11), float4(5.750955e-14, -1.771916e-13, -3.330669e-14, 1.04805054e-13), float4(0.9935358, -0.00042916907, 1.1805497e-7, -2.5424052e-11), float4(5.77316e-14, -1.7463808e-13, -3.419487e-14, 1.0258461e-13), float4(0.99224937, -0.0008569228, 4.713026e-7, -2.0354624e-10), float4(1.2922996e-13, -1.7463808e-13, -3.463896e-14, 1.0258461e-13), float4(0.9905374, -0.00085504004, 4.700826e-7, -2.0295265e-10), float4(1.298961e-13, -1.6986412e-13, -3.5527137e-14, 1.0036416e-13), float4(0.9888292, -0.00085316214, 4.6886615e-7, -2.0235569e-10), float4(1.2811974e-13, -1.7386093e-13, -3.463896e-14, 1.0214052e-13), float4(0.98712474, -0.00085128914, 4.676533e-7, -2.0176294e-10), float4(1.2834178e-13, -1.7452706e-13, -3.5083048e-14, 1.030287e-13), float4(0.9845751, -0.0016969773, 1.8633626e-6, -1.6076107e-9), float4(1.2352341e-12, -1.8551827e-13, -3.6859404e-14, 1.08801856e-13), float4(0.9811886, -0.0016895431, 1.8537446e-6, -1.5982158e-9), float4(1.2265744e-12, -1.8851587e-13, -3.5971226e-14, 1.09245946e-13), float4(0.9778169, -0.0016821473, 1.8441829e-6, -1.5888955e-9), float4(1.2161383e-12, -1.6819879e-13, -3.375078e-14, 9.8143715e-14), float4(0.97445995, -0.0016747896, 1.8346768e-6, -1.5796264e-9), float4(1.209477e-12, -1.6719959e-13, -3.463896e-14, 9.8587805e-14), float4(0.9694521, -0.0033276482, 7.2820867e-6, -1.2527211e-8), float4(1.8354651e-11, -1.9839685e-13, -3.1974423e-14, 1.03472786e-13), float4(0.9628258, -0.0032986696, 7.2073603e-6, -1.238172e-8), float4(1.8118618e-11, -1.9206858e-13, -3.1530334e-14, 9.8587805e-14), float4(0.95625716, -0.003269988, 7.133501e-6, -1.2238096e-8), float4(1.7883695e-11, -1.8784974e-13, -2.9309888e-14, 9.7699626e-14), float4(0.94974566, -0.0032416002, 7.0604983e-6, -1.2096301e-8), float4(1.765632e-11, -1.9806379e-13, -2.9753977e-14, 1.030287e-13), float4(0.94008404, -0.006399124, 2.7810303e-5, -9.509669e-8), float4(2.7642266e-10, -8.895107e-13, -3.1086245e-14, 1.04805054e-13), float4(0.9273963, -0.006289015, 2.7246298e-5, -9.291387e-8), float4(2.6941782e-10, -8.56093e-13, -3.1530334e-14, 9.636736e-14), float4(0.9149265, -0.0061811362, 2.6695225e-5, -9.078632e-8), float4(2.6260571e-10, -8.3555385e-13, -3.1974423e-14, 9.503509e-14), float4(0.9026703, -0.0060754367, 2.6156755e-5, -8.871252e-8), float4(2.5598057e-10, -8.2167606e-13, -3.1974423e-14, 9.9031894e-14), float4(0.88467705, -0.011841728, 0.000101487945, -6.8559564e-7), float4(3.9413006e-9, -2.022571e-11, 6.039613e-14, 9.8143715e-14), float4(0.8613941, -0.0114438785, 9.746738e-5, -6.548533e-7), float4(3.7461754e-9, -1.9134916e-11, 5.728751e-14, 9.148238e-14), float4(0.838891, -0.011061749, 9.3626666e-5, -6.256297e-7), float4(3.5615182e-9, -1.8111956e-11, 5.3290705e-14, 8.7041485e-14), float4(0.8171371, -0.010694638, 8.995695e-5, -5.9784344e-7), float4(3.3867338e-9, -1.7152058e-11, 4.7073456e-14, 8.615331e-14), float4(0.78584695, -0.020341357, 0.00033901897, -4.4695416e-6), float4(5.0268525e-8, -5.015497e-10, 4.514167e-12, 3.996803e-14), float4(0.7464853, -0.019037347, 0.0003133691, -4.086745e-6), float4(4.5516558e-8, -4.5011284e-10, 4.0136783e-12, 4.7073456e-14), float4(0.7096321, -0.01783149, 0.000289906, -3.7399832e-6), float4(4.1250228e-8, -4.043006e-10, 3.574474e-12, 4.6185278e-14), float4(0.6750995, -0.016715458, 0.0002684246, -3.4255886e-6), float4(3.7416495e-8, -3.634768e-10, 3.1872283e-12, 4.6185278e-14), float4(0.6272794, -0.030387005, 0.0009580818, -2.4061048e-5), float4(5.1801413e-7, -9.927543e-9, 1.7332358e-10, -2.7222669e-12), float4(0.57015324, -0.026827596, 0.0008253934, -2.0287804e-5), float4(4.283978e-7, -8.065489e-9, 1.3850876e-10, -2.1382895e-12), float4(0.5196439, -0.023756387, 0.0007133347, -1.7162258e-5), float4(3.5547052e-7, -6.5749886e-9, 1.1106582e-10, -1.677547e-12), float4(0.47485265, -0.021098126, 0.000618392, -1.4564653e-5), float4(2.9592425e-7, -5.377808e-9, 8.935852e-11, -1.3233858e-12), float4(0.4167533, -0.035502225, 0.0020077599, -9.16237e-5), float4(3.617964e-6, -1.2807482e-7, 4.1592605e-9, -1.2519785e-10), float4(0.35310093, -0.028464397, 0.0015355214, -6.720277e-5), float4(2.5549414e-6, -8.734229e-8, 2.74549e-9, -8.015033e-11), float4(0.30181482, -0.023053482, 0.0011872437, -4.985952e-5), float4(1.8258146e-6, -6.0294994e-8, 1.8349833e-9, -5.1961768e-11), float4(0.26008537, -0.018848889, 0.00092748983, -3.7398404e-5), float4(1.3196806e-6, -4.211374e-8, 1.24123e-9, -3.4098946e-11), float4(0.21097384, -0.02833318, 0.0026085791, -0.00019815165), float4(1.3240014e-5, -8.032937e-7, 4.5332847e-8, -2.383124e-9), float4(0.16334534, -0.019909557, 0.0016825865, -0.00011829047), float4(7.361291e-6, -4.1804822e-7, 2.216081e-8, -1.0987664e-9), float4(0.12941593, -0.014392785, 0.0011207133, -7.312401e-5), float4(4.2474107e-6, -2.2617557e-7, 1.1279408e-8, -5.2811067e-10), float4(0.1045896, -0.010667653, 0.00076819374, -4.665181e-5), float4(2.534995e-6, -1.2680964e-7, 5.958998e-9, -2.638087e-10), float4(0.07841912, -0.014176364, 0.0018281857, -0.00020045321), float4(1.9795682e-5, -1.8097585e-6, 1.5757479e-7, -1.2851965e-8), float4(0.0560429, -0.008755298, 0.0009860945, -9.524624e-5), float4(8.346028e-6, -6.8116896e-7, 5.3103143e-8, -3.906189e-9), float4(0.04182938, -0.0057326877, 0.0005708639, -4.907507e-5), float4(3.84914e-6, -2.8258418e-7, 1.986625e-8, -1.325575e-9), float4(0.03230852, -0.0039342963, 0.00035016204, -2.7042239e-5), float4(1.9139986e-6, -1.2730473e-7, 8.125588e-9, -4.946015e-10), float4(0.023056017, -0.0047972575, 0.0007341793, -9.804619e-5), float4(1.20590175e-5, -1.4004432e-6, 1.5913854e-7, -1.7034818e-8), float4(0.015770199, -0.0027393384, 0.0003519189, -3.9650156e-5), float4(4.1337757e-6, -4.0863492e-7, 3.944863e-8, -3.62363e-9), float4(0.011437163, -0.0017017398, 0.00018792653, -1.8260866e-5), float4(1.6470873e-6, -1.412674e-7, 1.1818231e-8, -9.471726e-10), float4(0.00866178, -0.0011258711, 0.0001088732, -9.2847595e-6), float4(7.365851e-7, -5.5677763e-8, 4.1018984e-9, -2.9088262e-10), float4(0.006061911, -0.0013231621, 0.00021536356, -3.0982304e-5), float4(4.154092e-6, -5.319391e-7, 6.779496e-8, -8.1705505e-9), float4(0.0040820343, -0.0007332432, 9.839357e-5, -1.1690638e-5), float4(1.2970188e-6, -1.3763658e-7, 1.44309e-8, -1.4465321e-9), float4(0.002932701, -0.00044726077, 5.101198e-5, -5.157015e-6), float4(4.873513e-7, -4.4093955e-8, 3.9244634e-9, -3.361419e-10), float4(0.0022075695, -0.0002924102, 2.8986162e-5, -2.548597e-6), float4(2.0962135e-7, -1.6517234e-8, 1.276658e-9, -9.536809e-11), float4(0.00153612, -0.00033979642, 5.6287994e-5, -8.275684e-6), float4(1.1385838e-6, -1.502121e-7, 1.9849313e-8, -2.4841724e-9), float4(0.0010298727, -0.00018667341, 2.5351253e-5, -3.0571844e-6), float4(3.4523006e-7, -3.7393693e-8, 4.0174672e-9, -4.1333592e-10), float4(0.0007380098, -0.00011328932, 1.3033428e-5, -1.331858e-6), float4(1.274904e-7, -1.170815e-8, 1.0604964e-9, -9.25777e-11), float4(0.00055463216, -7.382818e-5, 7.366494e-6, -6.529916e-7), float4(5.4233485e-8, -4.32196e-9, 3.384992e-10, -2.5654366e-11) };
 static float4 MS_BK_ERFINV_Q[200] = { float4(3.9046016, -0.013801319, 0.000743736, -5.4314907e-5), float4(4.4844564e-6, -3.9593175e-7, 3.7148247e-8, -3.5245051e-9), float4(3.8796005, -0.011360582, 0.00050071336, -2.9913715e-5), float4(2.0206483e-6, -1.4595663e-7, 1.1134741e-8, -8.638139e-10), float4(3.8586712, -0.0096619185, 0.00036021826, -1.8206969e-5), float4(1.0405903e-6, -6.3597454e-8, 4.09052e-9, -2.6818192e-10), float4(3.8406575, -0.008410642, 0.00027168475, -1.1899763e-5), float4(5.8939276e-7, -3.121761e-8, 1.7361579e-9, -9.8363984e-11), float4(3.8175905, -0.014097435, 0.00075870205, -5.5376688e-5), float4(4.5705096e-6, -4.034267e-7, 3.784378e-8, -3.5899408e-9), float4(3.7920496, -0.0116073135, 0.0005109042, -3.0504969e-5), float4(2.0598447e-6, -1.4874925e-7, 1.13454615e-8, -8.8002494e-10), float4(3.7706635, -0.009873917, 0.00036761994, -1.8570187e-5), float4(1.0609601e-6, -6.482521e-8, 4.1686317e-9, -2.732765e-10), float4(3.7522526, -0.008596826, 0.00027731352, -1.2139064e-5), float4(6.0102127e-7, -3.182494e-8, 1.7695712e-9, -1.0026646e-10), float4(3.7286723, -0.014413081, 0.0007745885, -5.6501816e-5), float4(4.6615996e-6, -4.1135434e-7, 3.8579007e-8, -3.659057e-9), float4(3.702556, -0.01187052, 0.00052172894, -3.1131895e-5), float4(2.101361e-6, -1.5170475e-7, 1.1568334e-8, -8.971881e-10), float4(3.6806822, -0.01010022, 0.00037548656, -1.8955525e-5), float4(1.0825465e-6, -6.612525e-8, 4.2512838e-9, -2.7866953e-10), float4(3.6618476, -0.008795687, 0.0002832988, -1.2393057e-5), float4(6.133498e-7, -3.24683e-8, 1.8049384e-9, -1.022773e-10), float4(3.6377184, -0.014750466, 0.00079149194, -5.7696743e-5), float4(4.75823e-6, -4.1975713e-7, 3.9357786e-8, -3.7322554e-9), float4(3.6109867, -0.01215209, 0.00053325505, -3.1798165e-5), float4(2.1454307e-6, -1.5483947e-7, 1.180455e-8, -9.15346e-10), float4(3.588591, -0.010342483, 0.000383868, -1.9365283e-5), float4(1.1054735e-6, -6.750487e-8, 4.3389274e-9, -2.843752e-10), float4(3.5693026, -0.009008703, 0.0002896792, -1.2663283e-5), float4(6.2645034e-7, -3.3151345e-8, 1.842464e-9, -1.0441781e-10), float4(3.5445855, -0.015112158, 0.00080952386, -5.896887e-5), float4(4.860975e-6, -4.286838e-7, 4.018454e-8, -3.8099e-9), float4(3.5171936, -0.012454218, 0.0005455602, -3.2508004e-5), float4(2.1923224e-6, -1.581719e-7, 1.20555015e-8, -9.346071e-10), float4(3.4942381, -0.010602634, 0.00039282197, -1.9802106e-5), float4(1.1298831e-6, -6.897236e-8, 4.4321133e-9, -2.9042546e-10), float4(3.4744618, -0.009237601, 0.0002964994, -1.2951515e-5), float4(6.4040535e-7, -3.3878305e-8, 1.8823698e-9, -1.0666312e-10), float4(3.4491127, -0.015501155, 0.0008288132, -6.032672e-5), float4(4.970496e-6, -4.3818997e-7, 4.1064304e-8, -3.892488e-9), float4(3.4210105, -0.012779471, 0.00055873464, -3.3266275e-5), float4(2.2423446e-6, -1.617233e-7, 1.2322719e-8, -9.551169e-10), float4(3.3974519, -0.010882929, 0.00040241532, -2.0269052e-5), float4(1.1559393e-6, -7.0537226e-8, 4.5313797e-9, -2.9689673e-10), float4(3.37715, -0.009484401, 0.00030381125, -1.32598025e-5), float4(6.5531015e-7, -3.465392e-8, 1.9249136e-9, -1.09070086e-10), float4(3.3511188, -0.015920965, 0.00084950996, -6.178017e-5), float4(5.087556e-6, -4.4834e-7, 4.200286e-8, -3.980542e-9), float4(3.3222501, -0.013130857, 0.0005728834, -3.4078632e-5), float4(2.2958548e-6, -1.655182e-7, 1.2608043e-8, -9.770353e-10), float4(3.2980394, -0.011186014, 0.00041272625, -2.0769668e-5), float4(1.1838317e-6, -7.221059e-8, 4.6374424e-9, -3.037819e-10), float4(3.277169, -0.009751473, 0.0003116754, -1.3590532e-5), float4(6.71275e-7, -3.5483797e-8, 1.9704043e-9, -1.1163692e-10), float4(3.2503996, -0.016375713, 0.0008717899, -6.334072e-5), float4(5.213043e-6, -4.5920837e-7, 4.3006956e-8, -4.074634e-9), float4(3.2206998, -0.013511909, 0.0005881297, -3.4951667e-5), float4(2.3532677e-6, -1.6958528e-7, 1.2913533e-8, -1.000446e-9), float4(3.1957817, -0.011514996, 0.00042384653, -2.1308108e-5), float4(1.2137815e-6, -7.4005264e-8, 4.7510866e-9, -3.1115022e-10), float4(3.174294, -0.010041602, 0.00032016315, -1.3946497e-5), float4(6.8842894e-7, -3.637438e-8, 2.0191653e-9, -1.1440093e-10), float4(3.1467223, -0.016870238, 0.0008958599, -6.502186e-5), float4(5.347992e-6, -4.708819e-7, 4.4084366e-8, -4.175549e-9), float4(3.116118, -0.013926776, 0.000604619, -3.589312e-5), float4(2.4150706e-6, -1.7395772e-7, 1.3241644e-8, -1.0256045e-9), float4(3.0904295, -0.011873523, 0.0004358846, -2.188925e-5), float4(1.246048e-6, -7.593623e-8, 4.8732485e-9, -3.1908698e-10), float4(3.0682685, -0.010358051, 0.00032935888, -1.4330984e-5), float4(7.069231e-7, -3.7333344e-8, 2.07163e-9, -1.1734258e-10), float4(3.0398211, -0.017410206, 0.0009219652, -6.683949e-5), float4(5.4936227e-6, -4.8346243e-7, 4.524427e-8, -4.2841144e-9), float4(3.0082288, -0.0143803, 0.0006225238, -3.6912148e-5), float4(2.4818357e-6, -1.7867475e-7, 1.35952245e-8, -1.0526833e-9), float4(2.9816978, -0.01226584, 0.00044896934, -2.2518867e-5), float4(1.2809368e-6, -7.802119e-8, 5.005015e-9, -3.2763658e-10), float4(2.9588, -0.010704613, 0.00033936297, -1.4747889e-5), float4(7.269362e-7, -3.836955e-8, 2.1282425e-9, -1.2052404e-10), float4(2.929393, -0.018002173, 0.00095039775, -6.881249e-5), float4(5.6513745e-6, -4.970702e-7, 4.649744e-8, -4.40129e-9), float4(2.8967168, -0.014878061, 0.0006420499, -3.8019614e-5), float4(2.554242e-6, -1.837827e-7, 1.3977669e-8, -1.0819079e-9), float4(2.8692605, -0.012696815, 0.00046325443, -2.3203835e-5), float4(1.3188106e-6, -8.0281076e-8, 5.147651e-9, -3.3688075e-10), float4(2.8455532, -0.011085614, 0.0003502952, -1.5201849e-5), float4(7.4868024e-7, -3.9493628e-8, 2.1895872e-9, -1.2397017e-10), float4(2.815091, -0.018653564, 0.0009815063, -7.096336e-5), float4(5.822963e-6, -5.118478e-7, 4.7856616e-8, -4.528255e-9), float4(2.7812214, -0.015426309, 0.0006634432, -3.92285e-5), float4(2.6330981e-6, -1.8933653e-7, 1.4392947e-8, -1.1136372e-9), float4(2.7527456, -0.013171851, 0.00047892373, -2.3952363e-5), float4(1.3601024e-6, -8.2740854e-8, 5.3027023e-9, -3.4688163e-10), float4(2.7281454, -0.011505804, 0.00036229877, -1.5698415e-5), float4(7.7240867e-7, -4.0718195e-8, 2.2563267e-9, -1.2772361e-10), float4(2.696519, -0.019372422, 0.0010157079, -7.3319046e-5), float4(6.0104376e-6, -5.2796565e-7, 4.933704e-8, -4.666397e-9), float4(2.6613321, -0.01603169, 0.0006869972, -4.0554365e-5), float4(2.7193719e-6, -1.9540201e-7, 1.48458685e-8, -1.1482246e-9), float4(2.6317303, -0.0136965765, 0.00049619644, -2.4774296e-5), float4(1.4053304e-6, -8.543022e-8, 5.471989e-9, -3.578311e-10), float4(2.606144, -0.011970042, 0.0003755443, -1.6244237e-5), float4(7.984251e-7, -4.205842e-8, 2.329264e-9, -1.31811e-10), float4(2.573231, -0.020166716, 0.0010534975, -7.5911834e-5), float4(6.2162558e-6, -5.4562787e-7, 5.09569e-8, -4.8173803e-9), float4(2.536589, -0.016700514, 0.0007130596, -4.2015832e-5), float4(2.8142244e-6, -2.0205817e-7, 1.5342142e-8, -1.1860406e-9), float4(2.5057435, -0.014276106, 0.000515331, -2.5681413e-5), float4(1.4551165e-6, -8.8384986e-8, 5.657702e-9, -3.6982772e-10), float4(2.4790678, -0.01248253, 0.0003902321, -1.6847269e-5), float4(8.270938e-7, -4.353243e-8, 2.4093687e-9, -1.362972e-10), float4(2.4447355, -0.02104281, 0.001095453, -7.878026e-5), float4(6.443364e-6, -5.6507946e-7, 5.2738095e-8, -4.9831614e-9), float4(2.4064891, -0.017437218, 0.0007420323, -4.3635056e-5), float4(2.9190458e-6, -2.0939954e-7, 1.5888661e-8, -1.2276562e-9), float4(2.3742747, -0.014913496, 0.0005366236, -2.668767e-5), float4(1.5102039e-6, -9.1648126e-8, 5.86246e-9, -3.8298698e-10), float4(2.3464022, -0.01304529, 0.00040658945, -1.7516893e-5), float4(8.588491e-7, -4.5162007e-8, 2.49777e-9, -1.4122747e-10), float4(2.3105128, -0.022002447, 0.0011422209, -8.1969505e-5), float4(6.695264e-6, -5.866131e-7, 5.4706796e-8, -5.1661893e-9), float4(2.2705123, -0.018241411, 0.00077435584, -4.5437824e-5), float4(3.0354806e-6, -2.1753901e-7, 1.6493642e-8, -1.273647e-9), float4(2.236806, -0.015606855, 0.00056039204, -2.7809185e-5), float4(1.5714677e-6, -9.527039e-8, 6.089433e-9, -3.9760462e-10), float4(2.2076337, -0.013655325, 0.00042485518, -1.8263856e-5), float4(8.9419996e-7, -4.697286e-8, 2.5958737e-9, -1.4669865e-10), float4(2.1700609, -0.023037259, 0.0011944568, -8.553065e-5), float4(6.9760285e-6, -6.1057364e-7, 5.6894102e-8, -5.3692695e-9), float4(2.1281753, -0.019102605, 0.00081045576, -4.7452715e-5), float4(3.1654206e-6, -2.2660836e-7, 1.7166768e-8, -1.324767e-9), float4(2.0928764, -0.016344287, 0.00058692734, -2.9063465e-5), float4(1.6399031e-6, -9.9310945e-8, 6.3422583e-9, -4.1385917e-10), float4(2.0623264, -0.014299758, 0.00044523497, -1.909959e-5), float4(9.337183e-7, -4.8994558e-8, 2.7052582e-9, -1.5282353e-10), float4(2.022984, -0.024119532, 0.0012526698, -8.951629e-5), float4(7.290149e-6, -6.373527e-7, 5.933588e-8, -5.595746e-9), float4(1.979139, -0.019991564, 0.00085060863, -4.970783e-5), float4(3.3108984e-6, -2.3675476e-7, 1.7919117e-8, -1.3818449e-9), float4(1.942207, -0.017095732, 0.00061637646, -3.0466854e-5), float4(1.7165502e-6, -1.0383447e-7, 6.6250836e-9, -4.3201887e-10), float4(1.9102618, -0.014948109, 0.00046779844, -2.0034176e-5), float4(9.779849e-7, -5.125901e-8, 2.8277016e-9, -1.5964474e-10), float4(1.8691553, -0.025187917, 0.0013168737, -9.3968345e-5), float4(7.641974e-6, -6.673582e-7, 6.207099e-8, -5.8492855e-9), float4(1.8233994, -0.020847276, 0.0008946555, -5.222205e-5), float4(3.4737473e-6, -2.4812485e-7, 1.8762261e-8, -1.4457795e-9), float4(1.7849144, -0.017800989, 0.0006485017, -3.202801e-5), float4(1.8022729e-6, -1.08902384e-7, 6.9421056e-9, -4.523848e-10), float4(1.7516758, -0.015541209, 0.0004922726, -2.1071275e-5), float4(1.027437e-6, -5.3794814e-8, 2.9649403e-9, -1.6729018e-10), float4(1.7089858, -0.026127469, 0.0013859146, -9.8889126e-5), float4(8.034221e-6, -7.0092483e-7, 6.513523e-8, -6.1335106e-9), float4(1.661593, -0.02155937, 0.00094147393, -5.4985212e-5), float4(3.6547415e-6, -2.6082154e-7, 1.970593e-8, -1.5174422e-9), float4(1.6218514, -0.01835404, 0.00068225386, -3.3733508e-5), float4(1.8972198e-6, -1.145496e-7, 7.2964355e-9, -4.751515e-10), float4(1.5876296, -0.015977072, 0.0005176902, -2.219729e-5), float4(1.0820094e-6, -5.6613743e-8, 3.1180836e-9, -1.7583979e-10), float4(1.5438341, -0.026745113, 0.0014563905, -0.00010418113), float4(8.464568e-6, -7.380944e-7, 6.854569e-8, -6.4507653e-9), float4(1.4954515, -0.021947289, 0.0009881904, -5.7918332e-5), float4(3.851704e-6, -2.7480246e-7, 2.0751955e-8, -1.597166e-9), float4(1.4551003, -0.018584935, 0.0007151847, -3.5519966e-5), float4(1.9996733e-6, -1.2073113e-7, 7.687485e-9, -5.0042903e-10), float4(1.4205356, -0.016094834, 0.00054194545, -2.3360897e-5), float4(1.1403876e-6, -5.968042e-8, 3.286317e-9, -1.8528468e-10), float4(1.3765777, -0.026741873, 0.0015214762, -0.00010953786), float4(8.9188425e-6, -7.7814497e-7, 7.2265436e-8, -6.799411e-9), float4(1.3284252, -0.021736078, 0.0010295288, -6.0804487e-5), float4(4.0558825e-6, -2.8966952e-7, 2.1881299e-8, -1.6840769e-9), float4(1.2886416, -0.018237479, 0.0007431373, -3.722715e-5), float4(2.1039357e-6, -1.27216e-7, 8.105257e-9, -5.2774496e-10), float4(1.2548714, -0.015653165, 0.00056172244, -2.443957e-5), float4(1.1986928e-6, -6.285337e-8, 3.4641143e-9, -1.954179e-10), float4(1.2123915, -0.025669008, 0.0015716114, -0.000114269154), float4(9.359751e-6, -8.1871406e-7, 7.61339e-8, -7.1681012e-9), float4(1.1665534, -0.020507988, 0.0010593316, -6.3177686e-5), float4(4.246493e-6, -3.0429752e-7, 2.302945e-8, -1.7743171e-9), float4(1.1293287, -0.016913543, 0.0007623282, -3.851879e-5), float4(2.1974927e-6, -1.334076e-7, 8.52023e-9, -5.555725e-10), float4(1.0982742, -0.0142653985, 0.00057499664, -2.5177267e-5), float4(1.2489646e-6, -6.5789614e-8, 3.6365875e-9, -2.0552937e-10), float4(1.0600606, -0.022765124, 0.0016065057, -0.000116895484), float4(9.718163e-6, -8.5442923e-7, 7.975475e-8, -7.525863e-9), float4(1.0201536, -0.017486874, 0.0010848793, -6.394562e-5), float4(4.3910923e-6, -3.162387e-7, 2.4051475e-8, -1.858278e-9), float4(0.9890693, -0.013795619, 0.00078597997, -3.848282e-5), float4(2.2658453e-6, -1.3800106e-7, 8.871655e-9, -5.8034155e-10), float4(0.9643464, -0.01105056, 0.0006002069, -2.4733703e-5), float4(1.2869389e-6, -6.768162e-8, 3.776423e-9, -2.1408253e-10), float4(0.93601894, -0.01600197, 0.0017300105, -0.00011061144), float4(1.0079049e-5, -8.684125e-7, 8.26543e-8, -7.7986275e-9), float4(0.910188, -0.01014341, 0.0012541759, -5.498795e-5), float4(4.7320996e-6, -3.095109e-7, 2.5183692e-8, -1.8972703e-9), float4(0.8945452, -0.0056558223, 0.0010179977, -2.6360902e-5), float4(2.7362382e-6, -1.1889169e-7, 9.967572e-9, -5.541012e-10), float4(0.8871352, -0.0018204233, 0.0009180593, -7.889442e-6), float4(2.0247833e-6, -3.1811947e-8, 5.627185e-9, -1.276832e-10) };
 static float4 MS_BK_ERFINV_W[24] = { float4(4.0847907, 0.23805167, -0.0065722, 0.00035707987), float4(-2.402215e-5, 1.7950236e-6, -1.4368759e-7, 1.15537375e-8), float4(4.537127, 0.21539979, -0.004890394, 0.00021908246), float4(-1.21752e-5, 7.5388596e-7, -5.0288303e-8, 3.464292e-9), float4(4.9499445, 0.19812965, -0.003817813, 0.00014543012), float4(-6.8792533e-6, 3.6283808e-7, -2.0583688e-8, 1.2122374e-9), float4(5.331996, 0.18440899, -0.0030855183, 0.00010220255), float4(-4.207019e-6, 1.9318979e-7, -9.5291295e-9, 4.892762e-10), float4(5.8599133, 0.33653504, -0.009400734, 0.0005206732), float4(-3.5867182e-5, 2.757981e-6, -2.3015748e-7, 1.9792743e-8), float4(6.4990478, 0.30421674, -0.0069607254, 0.0003162562), float4(-1.788632e-5, 1.1297641e-6, -7.708788e-8, 5.4481575e-9), float4(7.081914, 0.27967435, -0.0054173684, 0.00020858926), float4(-1.00035295e-5, 5.3599996e-7, -3.094365e-8, 1.8562574e-9), float4(7.621117, 0.26022553, -0.0043693497, 0.00014594554), float4(-6.0745874e-6, 2.825655e-7, -1.4139069e-8, 7.3704953e-10), float4(8.365978, 0.47478202, -0.0132863475, 0.00074028183), float4(-5.14196e-5, 3.9930333e-6, -3.3704123e-7, 2.9332409e-8), float4(9.267606, 0.42914096, -0.009823337, 0.00044806645), float4(-2.5490534e-5, 1.6217386e-6, -1.1159105e-7, 7.958128e-9), float4(10.089817, 0.39452025, -0.007639068, 0.00029490137), float4(-1.4204039e-5, 7.652497e-7, -4.4464695e-8, 2.686253e-9), float4(10.850455, 0.36710206, -0.0061583975, 0.00020605928), float4(-8.604421e-6, 4.0195354e-7, -2.0215943e-8, 1.0598242e-9) };
-static float4 MS_DG_LAMBDA[368] = { float4(1.08104805e-8, 6.0680677e-10, -8.5648925e-13, 1.6801664e-14), float4(1.2020797e-8, 6.035697e-10, -7.662442e-13, 1.3447851e-14), float4(1.3224975e-8, 6.0065686e-10, -6.932104e-13, 1.100667e-14), float4(1.4423601e-8, 5.9800925e-10, -6.328914e-13, 9.174653e-15), float4(1.561716e-8, 5.955825e-10, -5.822319e-13, 7.764749e-15), float4(1.6806055e-8, 5.9334265e-10, -5.390831e-13, 6.6565647e-15), float4(1.7990637e-8, 5.912629e-10, -5.0188965e-13, 5.769762e-15), float4(1.91712e-8, 5.89322e-10, -4.6949803e-13, 5.049067e-15), float4(2.093507e-8, 1.173267e-9, -1.7129785e-12, 3.360333e-14), float4(2.327501e-8, 1.1667929e-9, -1.5324883e-12, 2.6895702e-14), float4(2.5602674e-8, 1.1609673e-9, -1.3864208e-12, 2.201334e-14), float4(2.7919233e-8, 1.155672e-9, -1.2657828e-12, 1.8349305e-14), float4(3.0225657e-8, 1.1508186e-9, -1.1644638e-12, 1.5529499e-14), float4(3.2522756e-8, 1.1463389e-9, -1.0781661e-12, 1.3313129e-14), float4(3.4811226e-8, 1.1421794e-9, -1.0037793e-12, 1.1539524e-14), float4(3.709166e-8, 1.1382975e-9, -9.389961e-13, 1.0098134e-14), float4(4.049836e-8, 2.2658413e-9, -3.4259568e-12, 6.720666e-14), float4(4.5016854e-8, 2.2528928e-9, -3.0649767e-12, 5.3791403e-14), float4(4.9510795e-8, 2.2412416e-9, -2.7728414e-12, 4.402668e-14), float4(5.398253e-8, 2.2306512e-9, -2.5315655e-12, 3.669861e-14), float4(5.843399e-8, 2.2209443e-9, -2.3289274e-12, 3.1058997e-14), float4(6.28668e-8, 2.2119848e-9, -2.1563322e-12, 2.6626259e-14), float4(6.728236e-8, 2.203666e-9, -2.0075584e-12, 2.3079046e-14), float4(7.168184e-8, 2.195902e-9, -1.877992e-12, 2.0196267e-14), float4(7.8253166e-8, 4.3702966e-9, -6.851913e-12, 1.3441331e-13), float4(8.696738e-8, 4.3444e-9, -6.129953e-12, 1.07582807e-13), float4(9.563249e-8, 4.3210973e-9, -5.5456824e-12, 8.805336e-14), float4(1.0425318e-7, 4.2999164e-9, -5.0631305e-12, 7.339722e-14), float4(1.1283333e-7, 4.2805026e-9, -4.6578544e-12, 6.2117995e-14), float4(1.2137619e-7, 4.2625836e-9, -4.312664e-12, 5.3252518e-14), float4(1.2988451e-7, 4.245946e-9, -4.0151164e-12, 4.615809e-14), float4(1.383607e-7, 4.2304182e-9, -3.7559834e-12, 4.0392535e-14), float4(1.5101921e-7, 8.417821e-9, -1.37038245e-11, 2.6882663e-13), float4(1.678021e-7, 8.366028e-9, -1.2259904e-11, 2.151656e-13), float4(1.8448677e-7, 8.319423e-9, -1.1091363e-11, 1.7610671e-13), float4(2.0108261e-7, 8.277061e-9, -1.0126259e-11, 1.4679444e-13), float4(2.1759736e-7, 8.238233e-9, -9.315707e-12, 1.2423599e-13), float4(2.3403753e-7, 8.202395e-9, -8.625326e-12, 1.06505035e-13), float4(2.5040865e-7, 8.16912e-9, -8.030231e-12, 9.231618e-14), float4(2.667155e-7, 8.1380644e-9, -7.511965e-12, 8.078507e-14), float4(2.9106417e-7, 1.61901e-8, -2.7407642e-11, 5.3765326e-13), float4(3.2333887e-7, 1.6086512e-8, -2.4519801e-11, 4.303312e-13), float4(3.5541711e-7, 1.5993303e-8, -2.218272e-11, 3.522134e-13), float4(3.8731773e-7, 1.590858e-8, -2.0252511e-11, 2.9358888e-13), float4(4.1905614e-7, 1.5830924e-8, -1.8631407e-11, 2.4847195e-13), float4(4.506454e-7, 1.5759248e-8, -1.7250645e-11, 2.1301006e-13), float4(4.8209654e-7, 1.5692697e-8, -1.6060455e-11, 1.8463237e-13), float4(5.1341914e-7, 1.5630585e-8, -1.5023925e-11, 1.6157013e-13), float4(5.601799e-7, 3.108911e-8, -5.481526e-11, 1.0753064e-12), float4(6.2214707e-7, 3.088194e-8, -4.9039574e-11, 8.606624e-13), float4(6.8372145e-7, 3.069552e-8, -4.4365414e-11, 7.044268e-13), float4(7.4494045e-7, 3.052607e-8, -4.0505e-11, 5.871777e-13), float4(8.058351e-7, 3.037076e-8, -3.726279e-11, 4.969439e-13), float4(8.6643144e-7, 3.022741e-8, -3.4501266e-11, 4.260201e-13), float4(9.2675157e-7, 3.009431e-8, -3.2120886e-11, 3.692647e-13), float4(9.868146e-7, 2.9970085e-8, -3.0047822e-11, 3.2314025e-13), float4(1.0764628e-6, 5.9596054e-8, -1.09630416e-10, 2.1506128e-12), float4(1.1952329e-6, 5.918171e-8, -9.807905e-11, 1.7213246e-12), float4(1.3132172e-6, 5.880887e-8, -8.873073e-11, 1.4088535e-12), float4(1.4304909e-6, 5.8469972e-8, -8.10099e-11, 1.1743554e-12), float4(1.547116e-6, 5.8159355e-8, -7.452548e-11, 9.938877e-13), float4(1.6631443e-6, 5.787265e-8, -6.9002436e-11, 8.520401e-13), float4(1.7786202e-6, 5.7606446e-8, -6.4241674e-11, 7.3852935e-13), float4(1.893582e-6, 5.7358005e-8, -6.0095554e-11, 6.462804e-13), float4(2.0651319e-6, 1.1402777e-7, -2.1926046e-10, 4.3012247e-12), float4(2.2923432e-6, 1.1319908e-7, -1.9615773e-10, 3.4426487e-12), float4(2.5179834e-6, 1.1245341e-7, -1.7746109e-10, 2.8177066e-12), float4(2.742202e-6, 1.1177561e-7, -1.6201943e-10, 2.3487104e-12), float4(2.9651235e-6, 1.1115438e-7, -1.4905059e-10, 1.987775e-12), float4(3.1868515e-6, 1.1058098e-7, -1.3800451e-10, 1.7040799e-12), float4(3.4074747e-6, 1.1004857e-7, -1.2848299e-10, 1.4770584e-12), float4(3.6270694e-6, 1.09551685e-7, -1.2019075e-10, 1.2925606e-12), float4(3.9546762e-6, 2.177269e-7, -4.3851947e-10, 8.602448e-12), float4(4.388442e-6, 2.1606952e-7, -3.9231404e-10, 6.8852957e-12), float4(4.8190645e-6, 2.1457818e-7, -3.5492076e-10, 5.6354114e-12), float4(5.246845e-6, 2.132226e-7, -3.2403746e-10, 4.697419e-12), float4(5.6720305e-6, 2.1198014e-7, -2.980998e-10, 3.9755486e-12), float4(6.094829e-6, 2.1083333e-7, -2.7600763e-10, 3.4081583e-12), float4(6.515418e-6, 2.0976853e-7, -2.5696462e-10, 2.9541155e-12), float4(6.9339508e-6, 2.0877475e-7, -2.403801e-10, 2.5851198e-12), float4(7.5581784e-6, 4.147966e-7, -8.7703356e-10, 1.7204887e-11), float4(8.384395e-6, 4.1148186e-7, -7.846227e-10, 1.3770584e-11), float4(9.2043265e-6, 4.084992e-7, -7.098362e-10, 1.1270816e-11), float4(1.00185725e-5, 4.057881e-7, -6.480696e-10, 9.394832e-12), float4(1.082763e-5, 4.0330315e-7, -5.9619437e-10, 7.951091e-12), float4(1.1631913e-5, 4.0100957e-7, -5.5201005e-10, 6.8163114e-12), float4(1.2431778e-5, 3.9888e-7, -5.13924e-10, 5.9082257e-12), float4(1.3227527e-5, 3.9689246e-7, -4.8075505e-10, 5.170235e-12), float4(1.4414012e-5, 7.882792e-7, -1.7540466e-9, 3.440974e-11), float4(1.5983818e-5, 7.816498e-7, -1.5692251e-9, 2.7541136e-11), float4(1.7541053e-5, 7.756845e-7, -1.4196523e-9, 2.2541602e-11), float4(1.9086918e-5, 7.702624e-7, -1.2961193e-9, 1.8789638e-11), float4(2.0622403e-5, 7.652926e-7, -1.1923689e-9, 1.590216e-11), float4(2.2148342e-5, 7.607055e-7, -1.1040004e-9, 1.3632601e-11), float4(2.3665443e-5, 7.564464e-7, -1.0278285e-9, 1.1816431e-11), float4(2.5174319e-5, 7.5247146e-7, -9.614908e-10, 1.0340451e-11), float4(2.7423346e-5, 1.4939317e-6, -3.508016e-9, 6.881934e-11), float4(3.0397705e-5, 1.4806732e-6, -3.138374e-9, 5.5082147e-11), float4(3.334692e-5, 1.4687429e-6, -2.839229e-9, 4.5083094e-11), float4(3.62734e-5, 1.4578989e-6, -2.5921638e-9, 3.7579172e-11), float4(3.917912e-5, 1.4479597e-6, -2.3846636e-9, 3.1804222e-11), float4(4.206575e-5, 1.4387858e-6, -2.2079272e-9, 2.7265114e-11), float4(4.49347e-5, 1.4302678e-6, -2.0555837e-9, 2.363278e-11), float4(4.7787198e-5, 1.4223183e-6, -1.9229087e-9, 2.0680825e-11), float4(5.2037383e-5, 2.8226148e-6, -7.015744e-9, 1.3763812e-10), float4(5.7655605e-5, 2.7960991e-6, -6.276463e-9, 1.10163795e-10), float4(6.3223546e-5, 2.7722397e-6, -5.6781757e-9, 9.0165736e-11), float4(6.874601e-5, 2.7505528e-6, -5.184048e-9, 7.5157935e-11), float4(7.422696e-5, 2.7306755e-6, -4.7690496e-9, 6.360807e-11), float4(7.966973e-5, 2.712329e-6, -4.415579e-9, 5.4529877e-11), float4(8.5077154e-5, 2.6952941e-6, -4.1108943e-9, 4.7265233e-11), float4(9.0451664e-5, 2.679396e-6, -3.845546e-9, 4.1361345e-11), float4(9.8456316e-5, 5.314752e-6, -1.4030413e-8, 2.75274e-10), float4(0.00010903181, 5.2617247e-6, -1.25518635e-8, 2.2032559e-10), float4(0.000119506745, 5.21401e-6, -1.1355301e-8, 1.8032967e-10), float4(0.00012989074, 5.17064e-6, -1.0367055e-8, 1.5031422e-10), float4(0.00014019171, 5.13089e-6, -9.537068e-9, 1.2721461e-10), float4(0.00015041634, 5.094201e-6, -8.830136e-9, 1.0905835e-10), float4(0.00016057027, 5.060135e-6, -8.220775e-9, 9.452916e-11), float4(0.00017065839, 5.028343e-6, -7.690086e-9, 8.272147e-11), float4(0.00018567636, 9.968618e-6, -2.8056842e-8, 5.505391e-10), float4(0.00020550558, 9.862579e-6, -2.5099794e-8, 4.4064322e-10), float4(0.00022513374, 9.7671655e-6, -2.2706715e-8, 3.6065212e-10), float4(0.00024458003, 9.6804415e-6, -2.0730264e-8, 3.0062186e-10), float4(0.00026386033, 9.600956e-6, -1.9070328e-8, 2.5442318e-10), float4(0.00028298792, 9.527593e-6, -1.7656498e-8, 2.1811108e-10), float4(0.00030197419, 9.459477e-6, -1.6437808e-8, 1.890531e-10), float4(0.00032082887, 9.395908e-6, -1.5376461e-8, 1.6543805e-10), float4(0.0003488825, 1.8615723e-5, -5.6099008e-8, 1.1010426e-9), float4(0.000385898, 1.8403704e-5, -5.0185115e-8, 8.8125457e-10), float4(0.00042251145, 1.8212935e-5, -4.5399137e-8, 7.212754e-10), float4(0.0004587613, 1.8039544e-5, -4.1446402e-8, 6.0121735e-10), float4(0.00049467926, 1.7880628e-5, -3.8126682e-8, 5.0882215e-10), float4(0.00053029193, 1.7733959e-5, -3.5299163e-8, 4.3619977e-10), float4(0.00056562206, 1.7597782e-5, -3.2861912e-8, 3.7808534e-10), float4(0.00060068915, 1.7470697e-5, -3.0739336e-8, 3.308566e-10), float4(0.00065283314, 3.458937e-5, -1.12144356e-7, 2.2019426e-9), float4(0.0007215802, 3.4165547e-5, -1.0031737e-7, 1.7623817e-9), float4(0.0007895236, 3.3784218e-5, -9.074614e-8, 1.4424356e-9), float4(0.0008567402, 3.3437642e-5, -8.284133e-8, 1.2023296e-9), float4(0.0009232934, 3.3120017e-5, -7.62025e-8, 1.0175476e-9), float4(0.0009892365, 3.282688e-5, -7.054801e-8, 8.7231e-10), float4(0.0010546149, 3.2554726e-5, -6.567403e-8, 7.560873e-10), float4(0.0011194675, 3.2300755e-5, -6.142937e-8, 6.616352e-10), float4(0.0012158342, 6.389805e-5, -2.2409415e-7, 4.403317e-9), float4(0.0013427676, 6.305117e-5, -2.0044341e-7, 3.524255e-9), float4(0.0014680953, 6.228928e-5, -1.8130385e-7, 2.8844114e-9), float4(0.0015919709, 6.1596875e-5, -1.6549687e-7, 2.4042395e-9), float4(0.0017145213, 6.096236e-5, -1.5222162e-7, 2.0347093e-9), float4(0.001835853, 6.0376813e-5, -1.4091488e-7, 1.7442628e-9), float4(0.0019560566, 5.9833226e-5, -1.3116897e-7, 1.5118422e-9), float4(0.0020752102, 5.9325997e-5, -1.2268158e-7, 1.3229596e-9), float4(0.0022521182, 0.00011724719, -4.4749032e-7, 8.804367e-9), float4(0.0024848902, 0.00011555619, -4.0020169e-7, 7.0464834e-9), float4(0.002714456, 0.000114035116, -3.6193416e-7, 5.7669904e-9), float4(0.0029411232, 0.00011265299, -3.3033066e-7, 4.8068074e-9), float4(0.0031651452, 0.000111386595, -3.037898e-7, 4.0678816e-9), float4(0.0033867348, 0.0001102181, -2.8118515e-7, 3.4871037e-9), float4(0.0036060733, 0.000109133485, -2.6170162e-7, 3.0223615e-9), float4(0.0038233171, 0.00010812155, -2.4473448e-7, 2.6446825e-9), float4(0.0041455477, 0.00021344097, -8.925083e-7, 1.759972e-8), float4(0.0045689945, 0.00021006877, -7.979822e-7, 1.4084913e-8), float4(0.0049860487, 0.00020703621, -7.21493e-7, 1.1526703e-8), float4(0.005397324, 0.00020428137, -6.5832774e-7, 9.606978e-9), float4(0.005803328, 0.00020175784, -6.0528413e-7, 8.129665e-9), float4(0.006204486, 0.00019942995, -5.601101e-7, 6.9685675e-9), float4(0.0066011595, 0.0001972697, -5.211756e-7, 6.0394783e-9), float4(0.006993661, 0.00019525469, -4.8727173e-7, 5.284464e-9), float4(0.007575177, 0.00038493125, -1.7763956e-6, 3.5163744e-8), float4(0.008338204, 0.0003782209, -1.5875456e-6, 2.8137958e-8), float4(0.009088512, 0.0003721891, -1.4347489e-6, 2.3024638e-8), float4(0.009827329, 0.00036671202, -1.3085831e-6, 1.9187745e-8), float4(0.010555668, 0.00036169693, -1.2026466e-6, 1.6235266e-8), float4(0.011274377, 0.00035707257, -1.1124372e-6, 1.3914898e-8), float4(0.011984181, 0.00035278292, -1.0346969e-6, 1.2058295e-8), float4(0.012685701, 0.00034878327, -9.67009e-7, 1.0549637e-8), float4(0.013723622, 0.0006864997, -3.5233136e-6, 7.018714e-8), float4(0.015083066, 0.0006731953, -3.1464085e-6, 5.6150814e-8), float4(0.016417304, 0.0006612449, -2.8415275e-6, 4.59365e-8), float4(0.017728783, 0.00065040134, -2.5898412e-6, 3.8272887e-8), float4(0.019019522, 0.00064047927, -2.3785574e-6, 3.2376462e-8), float4(0.020291219, 0.00063133636, -2.198681e-6, 2.7742988e-8), float4(0.021545311, 0.00062286085, -2.043702e-6, 2.4036035e-8), float4(0.022783047, 0.0006149634, -1.9087927e-6, 2.102416e-8), float4(0.024611302, 0.0012080917, -6.9482953e-6, 1.3982884e-7), float4(0.027000764, 0.00118187, -6.19757e-6, 1.1181662e-7), float4(0.029340576, 0.0011583447, -5.5905675e-6, 9.1436796e-8), float4(0.03163561, 0.0011370223, -5.0896883e-6, 7.614981e-8), float4(0.033889886, 0.0011175335, -4.6693926e-6, 6.439069e-8), float4(0.036106776, 0.0010995944, -4.311725e-6, 5.515242e-8), float4(0.03828915, 0.001082982, -4.0036925e-6, 4.776318e-8), float4(0.040439468, 0.0010675183, -3.7356622e-6, 4.1760877e-8), float4(0.043609485, 0.0020923347, -1.3578713e-5, 2.7757648e-7), float4(0.04774197, 0.0020411385, -1.2089014e-5, 2.2178959e-7), float4(0.051777598, 0.0019952909, -1.0885477e-5, 1.812215e-7), float4(0.055726036, 0.0019538095, -9.893145e-6, 1.5080514e-7), float4(0.05959525, 0.0019159595, -9.061116e-6, 1.2741879e-7), float4(0.06339192, 0.0018811759, -8.3536115e-6, 1.0905419e-7), float4(0.0671217, 0.0018490158, -7.744756e-6, 9.437186e-8), float4(0.07078949, 0.0018191254, -7.2153666e-6, 8.245069e-8), float4(0.076184064, 0.0035558625, -2.6170086e-5, 5.4743236e-7), float4(0.08319531, 0.0034573302, -2.3234155e-5, 4.3677838e-7), float4(0.09002039, 0.0033693316, -2.0865602e-5, 3.5638158e-7), float4(0.09667835, 0.00328992, -1.8915434e-5, 2.9615543e-7), float4(0.10318482, 0.0032176396, -1.7282546e-5, 2.4988884e-7), float4(0.109552905, 0.0031513735, -1.5895916e-5, 2.1358788e-7), float4(0.115793735, 0.0030902456, -1.4704203e-5, 1.8458998e-7), float4(0.121916845, 0.0030335572, -1.3669374e-5, 1.6106502e-7), float4(0.13089867, 0.005911274, -4.9425e-5, 1.0673878e-6), float4(0.1425317, 0.0057255533, -4.3707227e-5, 8.495504e-7), float4(0.15381451, 0.0055603227, -3.9105566e-5, 6.915318e-7), float4(0.16478407, 0.0054117553, -3.5325626e-5, 5.733445e-7), float4(0.17547072, 0.005276995, -3.2167856e-5, 4.8269163e-7), float4(0.18589978, 0.005153852, -2.9492245e-5, 4.1167314e-7), float4(0.19609272, 0.005040614, -2.719769e-5, 3.5502705e-7), float4(0.20606792, 0.0049359147, -2.5209387e-5, 3.0913975e-7), float4(0.22065678, 0.009585025, -9.077162e-5, 2.0425605e-6), float4(0.2394794, 0.009244838, -7.985033e-5, 1.6194352e-6), float4(0.25766212, 0.008943713, -7.109417e-5, 1.313349e-6), float4(0.2752753, 0.00867424, -6.392768e-5, 1.0850314e-6), float4(0.29237646, 0.008430898, -5.7961613e-5, 9.103631e-7), float4(0.3090135, 0.008209469, -5.292344e-5, 7.738741e-7), float4(0.32522672, 0.008006659, -4.8616737e-5, 6.652771e-7), float4(0.34105077, 0.007819853, -4.489647e-5, 5.7751885e-7), float4(0.3641212, 0.0151302535, -0.00016082333, 3.7991404e-6), float4(0.39376748, 0.014529486, -0.00014056418, 2.9954115e-6), float4(0.4222872, 0.014000985, -0.00012440921, 2.4165456e-6), float4(0.44981015, 0.013530731, -0.000111254616, 1.9865672e-6), float4(0.47644195, 0.013108328, -0.00010035639, 1.6589489e-6), float4(0.50227004, 0.012725862, -9.119533e-5, 1.4039338e-6), float4(0.5273679, 0.012377179, -8.339851e-5, 1.201789e-6), float4(0.55179805, 0.012057406, -7.66914e-5, 1.0390216e-6), float4(0.58730686, 0.023247147, -0.0002731088, 6.795988e-6), float4(0.63276064, 0.022230627, -0.00023699379, 5.3199788e-6), float4(0.6763147, 0.021342492, -0.00020839374, 4.2635293e-6), float4(0.71819896, 0.020557145, -0.00018525429, 3.4833931e-6), float4(0.75859916, 0.019855717, -0.00016619792, 2.8922548e-6), float4(0.79766816, 0.019223928, -0.00015026816, 2.43452e-6), float4(0.83553386, 0.018650731, -0.00013678128, 2.0734806e-6), float4(0.8723043, 0.018127419, -0.00012523626, 1.7841386e-6), float4(0.9256055, 0.034842193, -0.0004433474, 1.1592821e-5), float4(0.9936049, 0.033198003, -0.0003819814, 9.001887e-6), float4(1.0585419, 0.03177112, -0.00033375886, 7.161684e-6), float4(1.1208042, 0.030516941, -0.00029501598, 5.8123924e-6), float4(1.1807029, 0.02940282, -0.00026331292, 4.796665e-6), float4(1.2384924, 0.028404215, -0.00023696655, 4.0149307e-6), float4(1.2943841, 0.027502252, -0.00021478084, 3.40182e-6), float4(1.3485559, 0.026682144, -0.00019588433, 2.9130604e-6), float4(1.4269143, 0.05116063, -0.0006898112, 1.8804556e-5), float4(1.5266197, 0.04861049, -0.00059064786, 1.44875985e-5), float4(1.6215888, 0.046410188, -0.0005132998, 1.1446311e-5), float4(1.712444, 0.04448599, -0.0004515643, 9.2325445e-6), float4(1.7996808, 0.042784315, -0.0004013426, 7.576994e-6), float4(1.8837026, 0.041265137, -0.0003598268, 6.3104353e-6), float4(1.9648426, 0.039897885, -0.00032503434, 5.3224962e-6), float4(2.0433795, 0.038658716, -0.00029552908, 4.538873e-6), float4(2.1568127, 0.07399966, -0.0010364982, 2.9137233e-5), float4(2.3008876, 0.07017706, -0.00088333135, 2.2302554e-5), float4(2.4378788, 0.06689317, -0.0007645847, 1.7522107e-5), float4(2.5687413, 0.064032026, -0.000670305, 1.4064265e-5), float4(2.6942325, 0.06150992, -0.00059396157, 1.1492692e-5), float4(2.8149652, 0.059264667, -0.0005311088, 9.535065e-6), float4(2.931444, 0.057249, -0.00047862553, 8.014847e-6), float4(3.0440898, 0.05542622, -0.00043426236, 6.813847e-6), float4(3.206635, 0.105983995, -0.0015189003, 4.356501e-5), float4(3.4128585, 0.100391276, -0.0012904061, 3.3191744e-5), float4(3.6087332, 0.09560045, -0.0011140187, 2.5975389e-5), float4(3.7956772, 0.09143642, -0.00097448385, 2.0779657e-5), float4(3.974812, 0.087773375, -0.0008618482, 1.693105e-5), float4(4.1470423, 0.08451823, -0.0007693686, 1.4011501e-5), float4(4.3131094, 0.08160048, -0.0006923307, 1.1751274e-5), float4(4.4736323, 0.078965575, -0.0006273496, 9.970542e-6), float4(4.705139, 0.150904, -0.0021906106, 6.3583626e-5), float4(4.9986672, 0.14284573, -0.0018575933, 4.8302976e-5), float4(5.2772975, 0.1359546, -0.0016012046, 3.7710044e-5), float4(5.543091, 0.12997352, -0.0013988354, 3.010568e-5), float4(5.797674, 0.1247183, -0.0012357878, 2.44871e-5), float4(6.0423565, 0.12005308, -0.001102135, 2.0234087e-5), float4(6.2782106, 0.11587511, -0.0009909563, 1.6947752e-5), float4(6.506129, 0.11210507, -0.0008972937, 1.4362898e-5), float4(6.834737, 0.21416405, -0.0031303046, 9.145801e-5), float4(7.2512383, 0.20265523, -0.0026516847, 6.9363006e-5), float4(7.6464715, 0.19282252, -0.0022837566, 5.4077675e-5), float4(8.0233965, 0.18429494, -0.0019937137, 4.3123488e-5), float4(8.384343, 0.17680715, -0.0017602745, 3.5041478e-5), float4(8.731187, 0.17016368, -0.0015690933, 2.8931276e-5), float4(9.065461, 0.16421692, -0.0014101833, 2.421489e-5), float4(9.388442, 0.15885301, -0.0012764002, 2.0508678e-5), float4(9.85404, 0.30341908, -0.0044506574, 0.00013048682), float4(10.444066, 0.2870605, -0.00376809, 9.887438e-5), float4(11.00387, 0.27309126, -0.0032438098, 7.702943e-5), float4(11.537667, 0.26098114, -0.0028307892, 6.138877e-5), float4(12.048779, 0.25035125, -0.0024985587, 4.985801e-5), float4(12.539872, 0.24092269, -0.0022265993, 4.11462e-5), float4(13.013129, 0.23248501, -0.0020006387, 3.4425473e-5), float4(13.470364, 0.22487597, -0.0018104751, 2.9146817e-5), float4(14.129445, 0.42948967, -0.0063113025, 0.00018536898), float4(14.964586, 0.4062956, -0.0053418707, 0.00014039507), float4(15.756882, 0.3864943, -0.0045975656, 0.000109335306), float4(16.512318, 0.36933187, -0.004011416, 8.71077e-5), float4(17.235607, 0.35426983, -0.003540058, 7.072743e-5), float4(17.93053, 0.340912, -0.0031543053, 5.8355905e-5), float4(18.60019, 0.3289595, -0.002833866, 4.8814687e-5), float4(19.247152, 0.31818202, -0.00256424, 4.1322633e-5), float4(20.17968, 0.6076678, -0.00893776, 0.00026274854), float4(21.36126, 0.5748239, -0.007563813, 0.00019895364), float4(22.48217, 0.546788, -0.0065091588, 0.00015490904), float4(23.550898, 0.52249086, -0.005678752, 0.00012339673), float4(24.574112, 0.5011692, -0.0050110705, 0.00010017902), float4(25.55718, 0.48226142, -0.0044647176, 8.264643e-5), float4(26.504482, 0.46534392, -0.004010918, 6.912689e-5), float4(27.419662, 0.4500904, -0.0036291145, 5.8512298e-5), float4(28.738773, 0.85956895, -0.012648595, 0.00037200787), float4(30.410141, 0.8130905, -0.01070343, 0.00028165118), float4(31.995659, 0.7734185, -0.009210467, 0.00021927757), float4(33.507336, 0.7390389, -0.008035052, 0.00017465708), float4(34.954617, 0.7088708, -0.0070900396, 0.00014178491), float4(36.34509, 0.68211913, -0.0063167997, 0.00011696403), float4(37.684967, 0.65818423, -0.005674583, 9.7825854e-5), float4(38.979393, 0.636604, -0.00513428, 8.28009e-5), float4(40.845123, 1.2157536, -0.017893976, 0.0005264004), float4(43.20905, 1.1500016, -0.015141601, 0.0003985194), float4(45.45153, 1.0938805, -0.013029199, 0.00031024934), float4(47.58955, 1.0452474, -0.011366172, 0.00024710715), float4(49.636482, 1.002573, -0.010029179, 0.00020059239), float4(51.603058, 0.9647319, -0.008935241, 0.00016547188), float4(53.498062, 0.93087566, -0.008026692, 0.0001383932), float4(55.32878, 0.90035075, -0.00726234, 0.000117135), float4(57.967476, 1.7194339, -0.025310267, 0.0007446564), float4(61.310757, 1.6264316, -0.021416761, 0.0005637363), float4(64.482254, 1.5470526, -0.018428642, 0.00043886082), float4(67.50601, 1.4782659, -0.016076243, 0.00034953648), float4(70.400925, 1.4179077, -0.014185063, 0.00028373586), float4(73.18219, 1.3643862, -0.01263771, 0.0002340549), float4(75.86222, 1.3165014, -0.011352604, 0.00019575047), float4(78.45133, 1.2733283, -0.01027147, 0.00016567999), float4(82.18313, 2.4317167, -0.035797212, 0.0010532545), float4(86.91136, 2.3001807, -0.03029021, 0.00079734606), float4(91.39665, 2.1879137, -0.026063854, 0.0006207151), float4(95.67298, 2.0906281, -0.022736687, 0.0004943717), float4(99.76709, 2.0052633, -0.020061884, 0.0004013023), float4(103.70046, 1.9295684, -0.017873392, 0.00033103355), float4(107.49067, 1.8618454, -0.016055817, 0.00027685627), float4(111.15228, 1.8007865, -0.014526739, 0.00023432534), float4(116.42992, 3.4390159, -0.050627083, 0.0014896339), float4(123.116745, 3.2529883, -0.042838477, 0.0011276901), float4(129.45998, 3.094213, -0.036861144, 0.0008778748), float4(135.50769, 2.956626, -0.03215556, 0.0006991843), float4(141.2977, 2.8358984, -0.02837262, 0.00056755485), float4(146.86038, 2.7288465, -0.025277479, 0.00046817327), float4(152.22058, 2.633069, -0.02270693, 0.0003915504), float4(157.39893, 2.5467167, -0.020544397, 0.00033139915), float4(164.86269, 4.863538, -0.07159905, 0.0021067362), float4(174.31937, 4.60045, -0.060583927, 0.0015948459), float4(183.2901, 4.3759036, -0.05213044, 0.0012415386), float4(191.8429, 4.1813226, -0.04547555, 0.0009888222), float4(200.03125, 4.010586, -0.04012553, 0.0008026634), float4(207.8981, 3.8591893, -0.035748236, 0.00066211197), float4(215.4786, 3.7237377, -0.03211285, 0.0005537475), float4(222.80193, 3.6016157, -0.029054508, 0.0004686784), float4(233.35732, 6.878106, -0.10125744, 0.0029794285), float4(246.73111, 6.5060396, -0.085679434, 0.002255489), float4(259.4177, 6.18848, -0.07372422, 0.0017558262), float4(271.5132, 5.913299, -0.06431265, 0.0013984243), float4(283.09332, 5.6718383, -0.056746487, 0.0011351514), float4(294.21875, 5.45773, -0.050555985, 0.0009363783), float4(304.93924, 5.2661715, -0.04541472, 0.0007831255), float4(315.296, 5.093464, -0.041089524, 0.00066281785) };
-static float4 MS_DG_D[720] = { float4(1.0, -4.656634e-10, -1.2034818e-14, -3.3795188e-14), float4(4.0856207e-14, 2.0348168e-13, -4.689582e-14, -3.215206e-13), float4(1.7053026e-14, 1.5489831e-13, 0.0, 0.0), float4(1.0, -4.6566087e-10, -1.3100632e-14, -5.5733196e-14), float4(3.8014036e-14, 2.7986503e-13, -3.4816595e-14, -4.266809e-13), float4(8.526513e-15, 2.0321523e-13, 0.0, 0.0), float4(1.0, -4.6566184e-10, -1.6342483e-14, -4.733991e-14), float4(6.2705395e-14, 2.4655833e-13, -8.029133e-14, -3.7942983e-13), float4(3.2684965e-14, 1.8189894e-13, 0.0, 0.0), float4(1.0, -4.656623e-10, -1.7630342e-14, -3.9301895e-14), float4(6.536993e-14, 2.2000179e-13, -8.31335e-14, -3.449685e-13), float4(3.4106053e-14, 1.66267e-13, 0.0, 0.0), float4(1.0, -9.313227e-10, -2.1627145e-14, -5.382361e-14), float4(7.993606e-14, 2.7391422e-13, -1.0089707e-13, -4.1779912e-13), float4(4.121148e-14, 1.9895197e-13, 0.0, 0.0), float4(1.0, -9.3132185e-10, -1.4521718e-14, -5.804246e-14), float4(5.471179e-14, 2.782663e-13, -7.1054274e-14, -4.1744386e-13), float4(2.9842794e-14, 1.9753088e-13, 0.0, 0.0), float4(1.0, -9.3132185e-10, -1.5898393e-14, -5.888623e-14), float4(5.6665782e-14, 2.872369e-13, -6.750156e-14, -4.355627e-13), float4(2.5579538e-14, 2.0747848e-13, 0.0, 0.0), float4(1.0, -9.313226e-10, -1.8296476e-14, -5.7687186e-14), float4(6.306067e-14, 2.8945734e-13, -7.460699e-14, -4.3947067e-13), float4(2.842171e-14, 2.0889956e-13, 0.0, 0.0), float4(1.0, -1.8626456e-9, -1.5498714e-14, -4.7251093e-14), float4(5.4001247e-14, 2.5277558e-13, -6.252776e-14, -3.9150904e-13), float4(2.2737368e-14, 1.8758328e-13, 0.0, 0.0), float4(1.0, -1.8626447e-9, -1.8296476e-14, -5.959677e-14), float4(6.6080476e-14, 2.9487524e-13, -8.029133e-14, -4.4764192e-13), float4(3.126388e-14, 2.1316282e-13, 0.0, 0.0), float4(1.0, -1.862646e-9, -1.4965807e-14, -4.369838e-14), float4(5.0803806e-14, 2.438938e-13, -5.82645e-14, -3.8298255e-13), float4(2.1316282e-14, 1.8474111e-13, 0.0, 0.0), float4(1.0, -1.8626454e-9, -1.9673152e-14, -4.6673775e-14), float4(7.3008263e-14, 2.4238389e-13, -9.30811e-14, -3.719691e-13), float4(3.836931e-14, 1.7763568e-13, 0.0, 0.0), float4(0.99999994, -3.725292e-9, -1.5942803e-14, -3.5971226e-14), float4(5.222489e-14, 2.1298519e-13, -5.7553964e-14, -3.389289e-13), float4(1.9895196e-14, 1.6484592e-13, 0.0, 0.0), float4(0.99999994, -3.725292e-9, -2.0783375e-14, -4.1611158e-14), float4(8.06466e-14, 2.4682478e-13, -1.08002494e-13, -3.9399595e-13), float4(4.689582e-14, 1.9184654e-13, 0.0, 0.0), float4(0.99999994, -3.7252916e-9, -1.9628743e-14, -2.5623948e-14), float4(8.029133e-14, 1.7257307e-13, -1.1155521e-13, -2.8741454e-13), float4(4.973799e-14, 1.4352964e-13, 0.0, 0.0), float4(0.99999994, -3.7252907e-9, -1.5321078e-14, -4.209966e-14), float4(5.2402527e-14, 2.359002e-13, -6.110668e-14, -3.709033e-13), float4(2.2737368e-14, 1.7905677e-13, 0.0, 0.0), float4(0.99999994, -7.4505815e-9, -1.7497116e-14, -3.126388e-14), float4(6.128431e-14, 1.9895197e-13, -7.531753e-14, -3.2400748e-13), float4(2.9842794e-14, 1.5916157e-13, 0.0, 0.0), float4(0.99999994, -7.450581e-9, -1.8429702e-14, -4.2765792e-14), float4(6.377121e-14, 2.4522607e-13, -7.531753e-14, -3.8902215e-13), float4(2.842171e-14, 1.8900437e-13, 0.0, 0.0), float4(0.9999999, -7.4505797e-9, -1.7230661e-14, -5.0404125e-14), float4(6.430412e-14, 2.6565417e-13, -8.242296e-14, -4.082068e-13), float4(3.4106053e-14, 1.9468871e-13, 0.0, 0.0), float4(0.9999999, -7.4505793e-9, -1.5143441e-14, -5.4400928e-14), float4(5.222489e-14, 2.866152e-13, -6.110668e-14, -4.4231285e-13), float4(2.2737368e-14, 2.1174173e-13, 0.0, 0.0), float4(0.9999999, -1.4901156e-8, -1.6298074e-14, -5.884182e-14), float4(6.3948846e-14, 2.8643754e-13, -8.242296e-14, -4.330758e-13), float4(3.4106053e-14, 2.060574e-13, 0.0, 0.0), float4(0.9999998, -1.4901153e-8, -1.8607339e-14, -7.158718e-14), float4(7.389644e-14, 3.2276403e-13, -9.4502185e-14, -4.7108986e-13), float4(3.836931e-14, 2.1884716e-13, 0.0, 0.0), float4(0.9999998, -1.4901155e-8, -1.9584333e-14, -5.4312112e-14), float4(7.194245e-14, 2.8252956e-13, -8.881784e-14, -4.3876014e-13), float4(3.5527137e-14, 2.1174173e-13, 0.0, 0.0), float4(0.99999976, -1.4901154e-8, -1.5898393e-14, -5.2580163e-14), float4(5.897505e-14, 2.7657875e-13, -7.247536e-14, -4.2703617e-13), float4(2.842171e-14, 2.046363e-13, 0.0, 0.0), float4(0.99999976, -2.9802305e-8, -1.5942803e-14, -5.551115e-14), float4(6.3948846e-14, 2.6556535e-13, -7.9580785e-14, -3.971934e-13), float4(3.126388e-14, 1.8758328e-13, 0.0, 0.0), float4(0.9999997, -2.98023e-8, -1.7497116e-14, -5.7420736e-14), float4(6.32383e-14, 2.8448354e-13, -7.31859e-14, -4.3520743e-13), float4(2.7000624e-14, 2.0889956e-13, 0.0, 0.0), float4(0.99999964, -2.9802298e-8, -1.5498714e-14, -4.1877614e-14), float4(5.702105e-14, 2.310152e-13, -6.6080476e-14, -3.6486368e-13), float4(2.4158454e-14, 1.7763568e-13, 0.0, 0.0), float4(0.9999996, -2.980229e-8, -1.3944401e-14, -7.331913e-14), float4(5.435652e-14, 3.2995828e-13, -6.750156e-14, -4.8352435e-13), float4(2.7000624e-14, 2.2595258e-13, 0.0, 0.0), float4(0.99999946, -5.9604574e-8, -7.1942455e-15, -4.5385916e-14), float4(4.1389113e-14, 2.284395e-13, -4.973799e-14, -3.4958703e-13), float4(1.847411e-14, 1.6768809e-13, 0.0, 0.0), float4(0.99999934, -5.9604556e-8, -1.89182e-14, -5.5466743e-14), float4(8.757439e-14, 2.6956215e-13, -1.1155521e-13, -4.0536463e-13), float4(4.5474736e-14, 1.9184654e-13, 0.0, 0.0), float4(0.9999992, -5.960454e-8, -1.0214052e-14, -3.259615e-14), float4(4.902745e-14, 2.0037306e-13, -5.471179e-14, -3.2116532e-13), float4(1.847411e-14, 1.563194e-13, 0.0, 0.0), float4(0.9999991, -5.9604524e-8, -1.7497116e-14, -4.5030647e-14), float4(8.206769e-14, 2.444267e-13, -1.07291956e-13, -3.8227199e-13), float4(4.5474736e-14, 1.8474111e-13, 0.0, 0.0), float4(0.9999989, -1.19209005e-7, -7.549517e-16, -4.2543748e-14), float4(6.181722e-14, 2.4211744e-13, -7.7449155e-14, -3.7587712e-13), float4(3.126388e-14, 1.7905677e-13, 0.0, 0.0), float4(0.9999987, -1.19208934e-7, 3.907985e-15, -5.3246297e-14), float4(4.52971e-14, 2.583711e-13, -5.5422335e-14, -3.8760106e-13), float4(2.1316282e-14, 1.8332002e-13, 0.0, 0.0), float4(0.99999845, -1.1920888e-7, -1.7763569e-16, -5.3246297e-14), float4(6.128431e-14, 2.6671997e-13, -7.8870246e-14, -4.0394353e-13), float4(3.2684965e-14, 1.9184654e-13, 0.0, 0.0), float4(0.9999982, -1.1920881e-7, 1.5543122e-15, -2.882139e-14), float4(5.2580163e-14, 1.9690915e-13, -6.6080476e-14, -3.2791548e-13), float4(2.7000624e-14, 1.6342483e-13, 0.0, 0.0), float4(0.99999785, -2.3841743e-7, 4.6673775e-14, -4.485301e-14), float4(6.5902836e-14, 2.469136e-13, -8.526513e-14, -3.8795632e-13), float4(3.5527137e-14, 1.8758328e-13, 0.0, 0.0), float4(0.9999974, -2.3841717e-7, 4.5385916e-14, -5.9063865e-14), float4(7.602807e-14, 2.9647395e-13, -1.05160326e-13, -4.4977355e-13), float4(4.689582e-14, 2.1316282e-13, 0.0, 0.0), float4(0.9999969, -2.3841692e-7, 4.8672177e-14, -4.236611e-14), float4(5.0803806e-14, 2.5259794e-13, -5.82645e-14, -4.0643045e-13), float4(2.1316282e-14, 1.9895197e-13, 0.0, 0.0), float4(0.9999964, -2.3841666e-7, 4.2676972e-14, -4.0989435e-14), float4(8.100187e-14, 2.2568614e-13, -1.05160326e-13, -3.549161e-13), float4(4.4053648e-14, 1.7195135e-13, 0.0, 0.0), float4(0.9999957, -4.7683255e-7, 2.4069635e-13, -3.1841195e-14), float4(5.4001247e-14, 2.235545e-13, -6.536993e-14, -3.733902e-13), float4(2.5579538e-14, 1.861622e-13, 0.0, 0.0), float4(0.99999475, -4.7683153e-7, 2.3665515e-13, -5.915268e-14), float4(6.732393e-14, 2.781775e-13, -8.3844044e-14, -4.121148e-13), float4(3.4106053e-14, 1.9326763e-13, 0.0, 0.0), float4(0.9999938, -4.768305e-7, 2.3927526e-13, -5.058176e-14), float4(6.092904e-14, 2.5268676e-13, -7.81597e-14, -3.8760106e-13), float4(3.2684965e-14, 1.861622e-13, 0.0, 0.0), float4(0.99999285, -4.7682948e-7, 2.3767655e-13, -4.0634163e-14), float4(6.217249e-14, 2.4025226e-13, -7.1054274e-14, -3.8902215e-13), float4(2.5579538e-14, 1.9184654e-13, 0.0, 0.0), float4(0.9999914, -9.536559e-7, 1.0079493e-12, -4.7206684e-14), float4(5.77316e-14, 2.4966696e-13, -7.31859e-14, -3.8689053e-13), float4(2.9842794e-14, 1.861622e-13, 0.0, 0.0), float4(0.9999895, -9.536518e-7, 1.0051515e-12, -5.0137672e-14), float4(6.785683e-14, 2.663647e-13, -8.668621e-14, -4.1247005e-13), float4(3.5527137e-14, 1.9753088e-13, 0.0, 0.0), float4(0.9999876, -9.536477e-7, 1.00564e-12, -5.018208e-14), float4(6.661338e-14, 2.5242032e-13, -8.31335e-14, -3.8298255e-13), float4(3.2684965e-14, 1.8189894e-13, 0.0, 0.0), float4(0.9999857, -9.536436e-7, 1.0045298e-12, -4.3431926e-14), float4(6.767919e-14, 2.284395e-13, -8.5975674e-14, -3.5100812e-13), float4(3.5527137e-14, 1.6768809e-13, 0.0, 0.0), float4(0.99998283, -1.907275e-6, 4.076517e-12, -4.3876015e-14), float4(5.2402527e-14, 2.3501202e-13, -5.6132877e-14, -3.687717e-13), float4(1.847411e-14, 1.7905677e-13, 0.0, 0.0), float4(0.999979, -1.9072586e-6, 4.0750957e-12, -4.1255888e-14), float4(6.3593573e-14, 2.324363e-13, -8.029133e-14, -3.6628477e-13), float4(3.2684965e-14, 1.7763568e-13, 0.0, 0.0), float4(0.9999752, -1.9072422e-6, 4.0778934e-12, -4.8094863e-14), float4(4.9915628e-14, 2.5410785e-13, -5.968559e-14, -3.932854e-13), float4(2.2737368e-14, 1.8900437e-13, 0.0, 0.0), float4(0.9999714, -1.9072259e-6, 4.071543e-12, -4.9293902e-14), float4(7.7449155e-14, 2.5313085e-13, -9.947598e-14, -3.9008797e-13), float4(4.121148e-14, 1.8758328e-13, 0.0, 0.0), float4(0.99996567, -3.8144026e-6, 1.6357759e-11, -4.569678e-14), float4(2.8776982e-14, 2.5055514e-13, -1.7763568e-14, -3.9470648e-13), float4(-1.4210855e-15, 1.9184654e-13, 0.0, 0.0), float4(0.99995804, -3.814337e-6, 1.6345324e-11, -6.004086e-14), float4(8.970602e-14, 2.9842795e-13, -1.1937117e-13, -4.504841e-13), float4(5.1159076e-14, 2.1316282e-13, 0.0, 0.0), float4(0.9999504, -3.8142716e-6, 1.6348967e-11, -5.7376325e-14), float4(6.714629e-14, 2.8652636e-13, -8.526513e-14, -4.3272054e-13), float4(3.5527137e-14, 2.046363e-13, 0.0, 0.0), float4(0.9999428, -3.8142061e-6, 1.634568e-11, -4.938272e-14), float4(8.402168e-14, 2.6059154e-13, -1.0942358e-13, -4.057199e-13), float4(4.5474736e-14, 1.961098e-13, 0.0, 0.0), float4(0.99993134, -7.628216e-6, 6.5451866e-11, -6.386003e-14), float4(5.595524e-14, 3.1032953e-13, -7.531753e-14, -4.7108986e-13), float4(3.2684965e-14, 2.2453151e-13, 0.0, 0.0), float4(0.9999161, -7.6279543e-6, 6.544383e-11, -2.9531932e-14), float4(6.5902836e-14, 1.8287593e-13, -8.31335e-14, -2.9451997e-13), float4(3.4106053e-14, 1.4352964e-13, 0.0, 0.0), float4(0.9999008, -7.6276924e-6, 6.544054e-11, -3.250733e-14), float4(6.945555e-14, 2.0108359e-13, -9.4502185e-14, -3.2827075e-13), float4(4.121148e-14, 1.6200374e-13, 0.0, 0.0), float4(0.99988556, -7.6274305e-6, 6.543468e-11, -3.9301895e-14), float4(7.247536e-14, 2.2444268e-13, -9.4502185e-14, -3.5846882e-13), float4(3.9790393e-14, 1.7479352e-13, 0.0, 0.0), float4(0.9998627, -1.5254075e-5, 2.61776e-10, -4.893863e-14), float4(5.0270897e-14, 2.4797943e-13, -5.82645e-14, -3.922196e-13), float4(2.1316282e-14, 1.9042545e-13, 0.0, 0.0), float4(0.9998322, -1.5253028e-5, 2.6174515e-10, -4.7473137e-14), float4(5.2402527e-14, 2.2444268e-13, -6.8212105e-14, -3.4710012e-13), float4(2.842171e-14, 1.66267e-13, 0.0, 0.0), float4(0.9998017, -1.52519815e-5, 2.617087e-10, -6.17284e-14), float4(6.8034466e-14, 2.897238e-13, -8.668621e-14, -4.455103e-13), float4(3.5527137e-14, 2.1316282e-13, 0.0, 0.0), float4(0.9997712, -1.5250935e-5, 2.6167588e-10, -5.8131275e-14), float4(7.0699e-14, 2.7169377e-13, -9.0238926e-14, -4.181544e-13), float4(3.694822e-14, 2.0037306e-13, 0.0, 0.0), float4(0.9997254, -3.049873e-5, 1.0465673e-9, -7.580603e-14), float4(7.531753e-14, 2.2195578e-13, -9.30811e-14, -3.7125858e-13), float4(3.694822e-14, 1.861622e-13, 0.0, 0.0), float4(0.9996644, -3.0494544e-5, 1.0463136e-9, -1.1719514e-13), float4(6.536993e-14, 3.3759662e-13, -7.602807e-14, -4.9560356e-13), float4(2.842171e-14, 2.3163692e-13, 0.0, 0.0), float4(0.99960345, -3.0490359e-5, 1.0460617e-9, -1.04805054e-13), float4(4.9560355e-14, 2.8492763e-13, -5.1159076e-14, -4.220624e-13), float4(1.563194e-14, 1.9895197e-13, 0.0, 0.0), float4(0.9995425, -3.0486175e-5, 1.045803e-9, -7.704948e-14), float4(7.176482e-14, 2.1058711e-13, -8.952839e-14, -3.399947e-13), float4(3.5527137e-14, 1.66267e-13, 0.0, 0.0), float4(0.99945104, -6.0959803e-5, 4.1817403e-9, -3.7889692e-13), float4(6.412648e-14, 2.2382096e-13, -7.460699e-14, -3.5242919e-13), float4(2.7000624e-14, 1.7053026e-13, 0.0, 0.0), float4(0.99932915, -6.094308e-5, 4.1797037e-9, -3.9359626e-13), float4(5.435652e-14, 2.7045033e-13, -6.536993e-14, -4.1033843e-13), float4(2.5579538e-14, 1.9468871e-13, 0.0, 0.0), float4(0.99920726, -6.0926362e-5, 4.1776627e-9, -3.7507774e-13), float4(7.531753e-14, 2.3039348e-13, -9.166001e-14, -3.8156145e-13), float4(3.5527137e-14, 1.9042545e-13, 0.0, 0.0), float4(0.9990854, -6.0909657e-5, 4.1756314e-9, -3.6806113e-13), float4(5.82645e-14, 1.8687273e-13, -6.8922644e-14, -3.0553338e-13), float4(2.5579538e-14, 1.5063507e-13, 0.0, 0.0), float4(0.99890274, -0.000121769226, 1.6690375e-8, -2.7688962e-12), float4(5.2935432e-14, 2.6947333e-13, -6.32383e-14, -3.9861446e-13), float4(2.4158454e-14, 1.8758328e-13, 0.0, 0.0), float4(0.99865925, -0.0001217025, 1.6674127e-8, -2.7378544e-12), float4(5.915268e-14, 1.7932322e-13, -7.1054274e-14, -2.7746693e-13), float4(2.7000624e-14, 1.3216095e-13, 0.0, 0.0), float4(0.9984159, -0.00012163583, 1.6657905e-8, -2.7359005e-12), float4(5.2047254e-14, 2.0206059e-13, -5.7553964e-14, -3.200995e-13), float4(1.9895196e-14, 1.5489831e-13, 0.0, 0.0), float4(0.9981727, -0.00012156923, 1.6641705e-8, -2.7438496e-12), float4(6.004086e-14, 2.5011105e-13, -6.8922644e-14, -3.8937741e-13), float4(2.5579538e-14, 1.8758328e-13, 0.0, 0.0), float4(0.99780816, -0.00024293891, 6.646987e-8, -2.1565772e-11), float4(6.732393e-14, 2.110312e-13, -6.252776e-14, -3.410605e-13), float4(2.1316282e-14, 1.6768809e-13, 0.0, 0.0), float4(0.99732256, -0.00024267328, 6.634088e-8, -2.1545566e-11), float4(8.8107297e-14, 3.4505732e-13, -1.0658141e-13, -4.9844574e-13), float4(4.5474736e-14, 2.3163692e-13, 0.0, 0.0), float4(0.99683744, -0.00024240819, 6.6212294e-8, -2.1441782e-11), float4(3.3040238e-14, 2.2577495e-13, -2.1316282e-14, -3.5313975e-13), float4(4.2632566e-15, 1.7053026e-13, 0.0, 0.0), float4(0.9963529, -0.0002421436, 6.608407e-8, -2.1392044e-11), float4(8.5087495e-14, 2.8830272e-13, -1.0018653e-13, -4.3840487e-13), float4(4.2632564e-14, 2.0747848e-13, 0.0, 0.0), float4(0.99562705, -0.00048349533, 2.6356997e-7, -1.6997426e-10), float4(1.991296e-13, 2.692957e-13, -9.0238926e-14, -4.1353588e-13), float4(3.694822e-14, 1.9895197e-13, 0.0, 0.0), float4(0.99466115, -0.00048244308, 2.6255353e-7, -1.6896151e-10), float4(1.8935964e-13, 2.9638515e-13, -8.1712415e-14, -4.4018123e-13), float4(3.4106053e-14, 2.060574e-13, 0.0, 0.0), float4(0.9936973, -0.00048139488, 2.6154316e-7, -1.6790733e-10), float4(2.1564972e-13, 1.4805934e-13, -1.2008172e-13, -2.4904522e-13), float4(5.1159076e-14, 1.2363443e-13, 0.0, 0.0), float4(0.99273556, -0.00048035072, 2.6053883e-7, -1.6695241e-10), float4(2.0747848e-13, 3.2791548e-13, -1.1297629e-13, -4.9595885e-13), float4(4.973799e-14, 2.359002e-13, 0.0, 0.0), float4(0.9912968, -0.00095758395, 1.0361744e-6, -1.3232332e-9), float4(2.0300207e-12, 2.7213786e-13, -7.247536e-14, -4.1353588e-13), float4(2.842171e-14, 1.961098e-13, 0.0, 0.0), float4(0.9893858, -0.0009534551, 1.0282824e-6, -1.307596e-9), float4(1.960565e-12, 2.9638515e-13, -1.7053026e-14, -4.5865536e-13), float4(2.842171e-15, 2.2026825e-13, 0.0, 0.0), float4(0.987483, -0.0009493576, 1.0204834e-6, -1.2922011e-9), float4(1.9461765e-12, 2.3314684e-13, -4.4053648e-14, -3.733902e-13), float4(1.4210855e-14, 1.8047785e-13, 0.0, 0.0), float4(0.9855884, -0.0009452911, 1.012776e-6, -1.2770583e-9), float4(1.9408474e-12, 1.389111e-13, -7.9580785e-14, -2.4300562e-13), float4(2.9842794e-14, 1.2221336e-13, 0.0, 0.0), float4(0.98276156, -0.0018784974, 4.005532e-6, -1.0038706e-8), float4(2.9339375e-11, 1.3855583e-13, -1.3002932e-13, -3.6948222e-13), float4(5.5422335e-14, 1.7905677e-13, 0.0, 0.0), float4(0.97902054, -0.0018625949, 3.945994e-6, -9.808617e-9), float4(2.8365577e-11, 1.5525359e-13, -9.947598e-14, -3.6806113e-13), float4(4.2632564e-14, 1.7053026e-13, 0.0, 0.0), float4(0.97531104, -0.0018469277, 3.8878143e-6, -9.585989e-9), float4(2.7424108e-11, 2.364331e-13, -5.4001247e-14, -4.8956396e-13), float4(1.9895196e-14, 2.33058e-13, 0.0, 0.0), float4(0.97163266, -0.0018314905, 3.8309486e-6, -9.370443e-9), float4(2.6557067e-11, 1.6164847e-13, -5.4001247e-14, -3.9790393e-13), float4(1.847411e-14, 1.961098e-13, 0.0, 0.0), float4(0.9661724, -0.0036175102, 1.4992095e-5, -7.247863e-8), float4(4.0433168e-10, -2.3299585e-12, -9.947598e-15, -3.6273206e-13), float4(4.2632566e-15, 1.7763568e-13, 0.0, 0.0), float4(0.9589968, -0.0035583987, 1.4566726e-5, -6.934376e-8), float4(3.7980766e-10, -2.1611157e-12, -3.9790393e-14, -3.1548099e-13), float4(1.9895196e-14, 1.563194e-13, 0.0, 0.0), float4(0.9519377, -0.003500952, 1.4159594e-5, -6.6397334e-8), float4(3.5723174e-10, -1.861622e-12, -5.5422335e-14, -4.391154e-13), float4(2.4158454e-14, 2.0179413e-13, 0.0, 0.0), float4(0.9449919, -0.003445099, 1.3769612e-5, -6.362442e-8), float4(3.3642938e-10, -1.7327473e-12, -1.0018653e-13, -4.1104896e-13), float4(4.4053648e-14, 1.9753088e-13, 0.0, 0.0), float4(0.93477887, -0.0067283274, 5.2858522e-5, -4.7809255e-7), float4(4.9283138e-9, -5.6851412e-11, 6.288303e-13, -2.394529e-13), float4(4.121148e-14, 1.1937117e-13, 0.0, 0.0), float4(0.9215299, -0.006522477, 5.0103856e-5, -4.408346e-7), float4(4.399544e-9, -4.8796432e-11, 5.31486e-13, -3.733902e-13), float4(2.9842794e-14, 1.7763568e-13, 0.0, 0.0), float4(0.90868187, -0.006327215, 4.7560654e-5, -4.0750783e-7), float4(3.9432613e-9, -4.2243188e-11, 3.907985e-13, -3.0127013e-13), float4(4.689582e-14, 1.3926638e-13, 0.0, 0.0), float4(0.8962145, -0.0061417394, 4.520696e-5, -3.7758312e-7), float4(3.5472716e-9, -3.677867e-11, 2.9132252e-13, -2.4265036e-13), float4(5.5422335e-14, 1.179501e-13, 0.0, 0.0), float4(0.8781862, -0.011760647, 0.00016796311, -2.705018e-6), float4(4.8727752e-8, -9.677165e-10, 2.0886404e-11, -6.9171334e-13), float4(2.2737368e-14, 9.5212724e-14, 0.0, 0.0), float4(0.85531586, -0.01111977, 0.00015282976, -2.3508153e-6), float4(4.018063e-8, -7.524938e-10, 1.5185719e-11, -8.4803274e-13), float4(3.9790393e-14, 2.4016344e-13, 0.0, 0.0), float4(0.8336695, -0.010535432, 0.00013963242, -2.0572145e-6), float4(3.348336e-8, -5.941628e-10, 1.1322854e-11, -5.4782844e-13), float4(1.7053026e-14, 1.4495072e-13, 0.0, 0.0), float4(0.8131412, -0.010000563, 0.00012804777, -1.8114252e-6), float4(2.816208e-8, -4.750305e-10, 8.5321975e-12, -6.4943607e-13), float4(3.9790393e-14, 2.1600499e-13, 0.0, 0.0), float4(0.7842452, -0.018556649, 0.00045258808, -1.2096336e-5), float4(3.528734e-7, -1.1111291e-8, 3.7369077e-10, -1.3644197e-11), float4(5.1159077e-13, 1.4352964e-13, 0.0, 0.0), float4(0.7488508, -0.016880982, 0.0003876717, -9.664666e-6), float4(2.6094423e-7, -7.555131e-9, 2.3236808e-10, -7.794832e-12), float4(2.4158453e-13, 1.2292389e-13, 0.0, 0.0), float4(0.71656615, -0.015438484, 0.00033539304, -7.845951e-6), float4(1.9747785e-7, -5.3009495e-9, 1.5046667e-10, -4.5304203e-12), float4(1.16529e-13, 3.126388e-14, 0.0, 0.0), float4(0.686971, -0.014185142, 0.00029266605, -6.456378e-6), float4(1.5237971e-7, -3.8175787e-9, 1.0068106e-10, -2.9762859e-12), float4(9.0238926e-14, 1.0444978e-13, 0.0, 0.0), float4(0.6468867, -0.025176845, 0.0009674642, -3.9391554e-5), float4(1.7036004e-6, -7.775216e-8, 3.7184875e-9, -1.8531505e-10), float4(9.639933e-12, -4.6398443e-13, 0.0, 0.0), float4(0.60011274, -0.021730753, 0.00076656416, -2.8366827e-5), float4(1.1063033e-6, -4.52452e-8, 1.9288653e-9, -8.550334e-11), float4(3.923617e-12, -6.465939e-14, 0.0, 0.0), float4(0.55950695, -0.01897278, 0.0006197067, -2.1059226e-5), float4(7.494345e-7, -2.7825521e-8, 1.0723312e-9, -4.3035797e-11), float4(1.811884e-12, 8.100187e-14, 0.0, 0.0), float4(0.52388287, -0.016724719, 0.0005093432, -1.602632e-5), float4(5.2526724e-7, -1.7885863e-8, 6.3001837e-10, -2.3013235e-11), float4(8.56204e-13, 4.1922022e-14, 0.0, 0.0), float4(0.47789872, -0.02810214, 0.0015572221, -8.838051e-5), float4(5.1907828e-6, -3.150968e-7, 1.970239e-8, -1.2650648e-9), float4(8.4108366e-11, -5.501022e-12, 0.0, 0.0), float4(0.42729038, -0.022789631, 0.0011303158, -5.6890047e-5), float4(2.942655e-6, -1.5646835e-7, 8.532486e-9, -4.761359e-10), float4(2.7402792e-11, -1.4971135e-12, 0.0, 0.0), float4(0.38581982, -0.01886795, 0.0008488521, -3.8467508e-5), float4(1.7817267e-6, -8.44738e-8, 4.0935824e-9, -2.0220306e-10), float4(1.0156498e-11, -5.755396e-13, 0.0, 0.0), float4(0.35119763, -0.01588319, 0.0006549132, -2.7035181e-5), float4(1.135561e-6, -4.8653796e-8, 2.1246034e-9, -9.453984e-11), float4(4.342482e-12, -1.4495072e-13, 0.0, 0.0), float4(0.30879384, -0.02515609, 0.0018478157, -0.0001348767), float4(9.9630315e-6, -7.4757827e-7, 5.697885e-8, -4.4075037e-9), float4(3.5114595e-10, -2.7911895e-11, 0.0, 0.0), float4(0.26493257, -0.019115072, 0.0012290902, -7.792716e-5), float4(4.972059e-6, -3.208716e-7, 2.0962961e-8, -1.3859125e-9), float4(9.370922e-11, -6.3693053e-12, 0.0, 0.0), float4(0.23106582, -0.014996914, 0.00085942814, -4.826962e-5), float4(2.7163353e-6, -1.5409705e-7, 8.826524e-9, -5.1087223e-10), float4(3.0091485e-11, -1.6100899e-12, 0.0, 0.0), float4(0.2041626, -0.012062349, 0.0006244964, -3.15311e-5), float4(1.5894985e-6, -8.055956e-8, 4.113857e-9, -2.1222872e-10), float4(1.103082e-11, -3.684164e-13, 0.0, 0.0), float4(0.17285645, -0.018045181, 0.0016356099, -0.00014372423), float4(1.2556188e-5, -1.0993467e-6, 9.672248e-8, -8.561739e-9), float4(7.782461e-10, -6.9794656e-11, 0.0, 0.0), float4(0.14232971, -0.012898196, 0.0010052373, -7.549118e-5), float4(5.6121708e-6, -4.16777e-7, 3.102492e-8, -2.3186955e-9), float4(1.7656561e-10, -1.3273471e-11, 0.0, 0.0), float4(0.120028526, -0.009631822, 0.0006597896, -4.334511e-5), float4(2.8095578e-6, -1.8146298e-7, 1.1725502e-8, -7.595021e-10), float4(4.9872995e-11, -3.2137847e-12, 0.0, 0.0), float4(0.10309709, -0.0074354606, 0.00045501083, -2.6602445e-5), float4(1.5304726e-6, -8.756127e-8, 5.0039772e-9, -2.8630986e-10), float4(1.6549605e-11, -9.274359e-13, 0.0, 0.0), float4(0.084273346, -0.010575515, 0.0011179436, -0.00011239671), float4(1.1084435e-5, -1.0844861e-6, 1.0577039e-7, -1.0312659e-8), float4(1.0308846e-9, -1.0071277e-10, 0.0, 0.0), float4(0.06684323, -0.007168023, 0.00064272905, -5.4559096e-5), float4(4.5283036e-6, -3.7197273e-7, 3.040501e-8, -2.4805125e-9), float4(2.0567867e-10, -1.6761526e-11, 0.0, 0.0), float4(0.05470385, -0.005131766, 0.00040022618, -2.9444855e-5), float4(2.112852e-6, -1.497738e-7, 1.0550057e-8, -7.408271e-10), float4(5.2588333e-11, -3.6752823e-12, 0.0, 0.0), float4(0.045835268, -0.0038268303, 0.00026439672, -1.718297e-5), float4(1.0870192e-6, -6.783347e-8, 4.2015844e-9, -2.5919678e-10), float4(1.6105162e-11, -9.814816e-13, 0.0, 0.0), float4(0.036344558, -0.0052188607, 0.0006167174, -6.831998e-5), float4(7.3500064e-6, -7.7864263e-7, 8.1744744e-8, -8.539351e-9), float4(9.138718e-10, -9.4969456e-11, 0.0, 0.0), float4(0.027924158, -0.003386312, 0.00033604607, -3.115492e-5), float4(2.7983506e-6, -2.470724e-7, 2.1591491e-8, -1.875188e-9), float4(1.6526011e-10, -1.4249313e-11, 0.0, 0.0), float4(0.022284523, -0.0023427603, 0.00020067116, -1.601577e-5), float4(1.23614e-6, -9.3658834e-8, 7.0167454e-9, -5.219619e-10), float4(3.9173574e-11, -2.8859137e-12, 0.0, 0.0), float4(0.018290734, -0.0016990538, 0.0001281427, -8.985964e-6), float4(6.084994e-7, -4.0406324e-8, 2.6508968e-9, -1.7256581e-10), float4(1.1290325e-11, -7.252865e-13, 0.0, 0.0), float4(0.014145321, -0.0022406406, 0.00028696412, -3.408568e-5), float4(3.9029387e-6, -4.376743e-7, 4.842992e-8, -5.314429e-9), float4(5.972312e-10, -6.485042e-11, 0.0, 0.0), float4(0.010590195, -0.0014045356, 0.00014997198, -1.4813785e-5), float4(1.4081163e-6, -1.3091567e-7, 1.2000194e-8, -1.0897881e-9), float4(1.00322875e-10, -9.002898e-12, 0.0, 0.0), float4(0.008281491, -0.0009459269, 8.670181e-5, -7.3370716e-6), float4(5.9669355e-7, -4.7416766e-8, 3.7123915e-9, -2.877658e-10), float4(2.2474323e-11, -1.7184587e-12, 0.0, 0.0), float4(0.0066859834, -0.0006712604, 5.3937463e-5, -3.99511e-6), float4(2.8407612e-7, -1.972195e-8, 1.3482018e-9, -9.120162e-11), float4(6.191525e-12, -4.1198157e-13, 0.0, 0.0), float4(0.005068806, -0.0008624461, 0.00011707453, -1.4622326e-5), float4(1.7509971e-6, -2.0452964e-7, 2.3499844e-8, -2.6711127e-9), float4(3.1088374e-10, -3.483116e-11, 0.0, 0.0), float4(0.0037179298, -0.0005263837, 5.9266848e-5, -6.1279725e-6), float4(6.067016e-7, -5.8536184e-8, 5.5523754e-9, -5.206078e-10), float4(4.94469e-11, -4.5655758e-12, 0.0, 0.0), float4(0.0028613391, -0.00034724647, 3.3429842e-5, -2.951127e-6), float4(2.4920854e-7, -2.0493347e-8, 1.6559919e-9, -1.3220658e-10), float4(1.0624052e-11, -8.342271e-13, 0.0, 0.0), float4(0.0022803796, -0.00024233757, 2.038882e-5, -1.5711131e-6), float4(1.1571718e-7, -8.294876e-9, 5.840337e-10, -4.061159e-11), float4(2.8308994e-12, -1.9312607e-13, 0.0, 0.0), float4(0.0017021558, -0.00030520523, 4.322169e-5, -5.5981413e-6), float4(6.9238814e-7, -8.328658e-8, 9.831807e-9, -1.1461302e-9), float4(1.3680011e-10, -1.5674503e-11, 0.0, 0.0), float4(0.0012287702, -0.00018252023, 2.1360174e-5, -2.2830093e-6), float4(2.3278474e-7, -2.3068317e-8, 2.2426903e-9, -2.151695e-10), float4(2.090133e-11, -1.9697536e-12, 0.0, 0.0), float4(0.00093401317, -0.00011852049, 1.1826654e-5, -1.0766075e-6), float4(9.3427154e-8, -7.875315e-9, 6.510453e-10, -5.309224e-11), float4(4.3550163e-12, -3.4856146e-13, 0.0, 0.0), float4(0.0007369446, -8.166858e-5, 7.1061822e-6, -5.6358084e-7), float4(4.2582972e-8, -3.1239604e-9, 2.246961e-10, -1.5937906e-11), float4(1.1323887e-12, -7.873285e-14, 0.0, 0.0), float4(0.000543503, -0.00010130456, 1.4798497e-5, -1.9682495e-6), float4(2.4922562e-7, -3.0624445e-8, 3.686629e-9, -4.3768214e-10), float4(5.3201877e-11, -6.19516e-12, 0.0, 0.0), float4(0.00038754012, -5.9650654e-5, 7.182156e-6, -7.864899e-7), float4(8.1933905e-8, -8.278807e-9, 8.1937507e-10, -7.993216e-11), float4(7.89196e-12, -7.547844e-13, 0.0, 0.0), float4(0.0002917654, -3.82723e-5, 3.9213664e-6, -3.6510684e-7), float4(3.2321285e-8, -2.7740423e-9, 2.3315905e-10, -1.9309316e-11), float4(1.6076817e-12, -1.3045363e-13, 0.0, 0.0), float4(0.0002284266, -2.611827e-5, 2.3298414e-6, -1.8872943e-7), float4(1.4529161e-8, -1.084061e-9, 7.919366e-11, -5.6990367e-12), float4(4.105643e-13, -2.8903617e-14, 0.0, 0.0), float4(0.00016690556, -3.2025397e-5, 4.7871736e-6, -6.492874e-7), float4(8.36461e-8, -1.0439839e-8, 1.274866e-9, -1.5338152e-10), float4(1.8893371e-11, -2.2260173e-12, 0.0, 0.0), float4(0.0001178792, -1.8635772e-5, 2.2917989e-6, -2.5551182e-7), float4(2.7042812e-8, -2.771769e-9, 2.7794428e-10, -2.7446035e-11), float4(2.742249e-12, -2.6510304e-13, 0.0, 0.0), float4(8.80896e-5, -1.1847759e-5, 1.2381256e-6, -1.17222676e-7), float4(1.05311315e-8, -9.159385e-10, 7.792758e-11, -6.52699e-12), float4(5.493923e-13, -4.502492e-14, 0.0, 0.0), float4(6.855226e-5, -8.025702e-6, 7.2937826e-7, -6.00217e-8), float4(4.6851816e-9, -3.5396633e-10, 2.6155694e-11, -1.9023296e-12), float4(1.3844716e-13, -9.838744e-15, 0.0, 0.0), float4(4.9728107e-5, -9.754038e-6, 1.4834819e-6, -2.041669e-7), float4(2.6642027e-8, -3.3638188e-9, 4.1513548e-10, -5.043788e-11), float4(6.2739276e-12, -7.455859e-13, 0.0, 0.0), float4(3.4860626e-5, -5.6246495e-6, 7.0284705e-7, -7.9422215e-8), float4(8.505716e-9, -8.8110447e-10, 8.921613e-11, -8.889397e-12), float4(8.960091e-13, -8.7307765e-14, 0.0, 0.0), float4(2.5899995e-5, -3.5507492e-6, 3.7665586e-7, -3.611259e-8), float4(3.2802823e-9, -2.8814096e-10, 2.4737804e-11, -2.0894055e-12), float4(1.7729594e-13, -1.4637986e-14, 0.0, 0.0), float4(2.0060837e-5, -2.3915948e-6, 2.2044664e-7, -1.8357941e-8), float4(1.4479783e-9, -1.104218e-10, 8.229325e-12, -6.032673e-13), float4(4.423701e-14, -3.166998e-15, 0.0, 0.0), float4(1.4469778e-5, -2.8867664e-6, 4.448795e-7, -6.19091e-8), float4(8.157163e-9, -1.0388977e-9, 1.2923003e-10, -1.5816471e-11), float4(1.9817882e-12, -2.3702492e-13, 0.0, 0.0), float4(1.00844045e-5, -1.6529644e-6, 2.0909607e-7, -2.387142e-8), float4(2.5794742e-9, -2.6935565e-10, 2.7473307e-11, -2.755933e-12), float4(2.7961552e-13, -2.7407211e-14, 0.0, 0.0), float4(7.4580053e-6, -1.0377724e-6, 1.1135919e-7, -1.07799805e-8), float4(9.874419e-10, -8.739019e-11, 7.554136e-12, -6.420734e-13), float4(5.481437e-14, -4.5507e-15, 0.0, 0.0), float4(5.755073e-6, -6.9587924e-7, 6.484783e-8, -5.449747e-9), float4(4.3327325e-10, -3.3276385e-11, 2.4960303e-12, -1.8406938e-13), float4(1.357445e-14, -9.770288e-16, 0.0, 0.0), float4(4.1324206e-6, -8.3546064e-7, 1.3007761e-7, -1.8256513e-8), float4(2.4233802e-9, -3.106914e-10, 3.8880246e-11, -4.785022e-12), float4(6.02871e-13, -7.245272e-14, 0.0, 0.0), float4(2.8665863e-6, -4.757435e-7, 6.075729e-8, -6.99157e-9), float4(7.607056e-10, -7.9923915e-11, 8.197489e-12, -8.2654754e-13), float4(8.428025e-14, -8.297784e-15, 0.0, 0.0), float4(2.1122462e-6, -2.9739175e-7, 3.2200596e-8, -3.1405187e-9), float4(2.895396e-10, -2.577299e-11, 2.2395467e-12, -1.912721e-13), float4(1.6404689e-14, -1.3677346e-15, 0.0, 0.0), float4(1.6250713e-6, -1.9871392e-7, 1.8677358e-8, -1.5808235e-9), float4(1.2645662e-10, -9.765496e-12, 7.361468e-13, -5.4535498e-14), float4(4.0393036e-15, -2.9189163e-16, 0.0, 0.0), float4(1.1626524e-6, -2.3755727e-7, 3.728639e-8, -5.268233e-9), float4(7.0335604e-10, -9.063811e-11, 1.13953005e-11, -1.4084296e-12), float4(1.7820226e-13, -2.1495511e-14, 0.0, 0.0), float4(8.0347553e-7, -1.3467825e-7, 1.7330278e-8, -2.0067412e-9), float4(2.195189e-10, -2.3174383e-11, 2.387205e-12, -2.4165793e-13), float4(2.4736042e-14, -2.4437714e-15, 0.0, 0.0), float4(5.90284e-7, -8.389701e-8, 9.1493995e-9, -8.976225e-10), float4(8.317834e-11, -7.437497e-12, 6.4892324e-13, -5.5630102e-14), float4(4.7882984e-15, -4.0051376e-16, 0.0, 0.0), float4(4.530349e-7, -5.5900433e-8, 5.2902474e-9, -4.5028845e-10), float4(3.6195612e-11, -2.8072124e-12, 2.1243767e-13, -1.5793998e-14), float4(1.1737728e-15, -8.507463e-17, 0.0, 0.0), float4(3.231643e-7, -6.6598226e-8, 1.0520944e-8, -1.4944364e-9), float4(2.0043442e-10, -2.5933682e-11, 3.2723644e-12, -4.0580996e-13), float4(5.151519e-14, -6.231861e-15, 0.0, 0.0), float4(2.2264099e-7, -3.7621838e-8, 4.8707047e-9, -5.668196e-10), float4(6.2271036e-11, -6.5988287e-12, 6.8207164e-13, -6.926242e-14), float4(7.111115e-15, -7.0442987e-16, 0.0, 0.0), float4(1.6316703e-7, -2.3370331e-8, 2.5634588e-9, -2.5268887e-10), float4(2.3510823e-11, -2.109808e-12, 1.8467703e-13, -1.5878617e-14), float4(1.3705918e-15, -1.149339e-16, 0.0, 0.0), float4(1.2497743e-7, -1.5535694e-8, 1.4784393e-9, -1.2641242e-10), float4(1.0201018e-11, -7.938756e-13, 6.0262796e-14, -4.4929783e-15), float4(3.3479808e-16, -2.4327125e-17, 0.0, 0.0), float4(8.893243e-8, -1.8456852e-8, 2.9311524e-9, -4.181466e-10), float4(5.6288658e-11, -7.306685e-12, 9.246588e-13, -1.1497358e-13), float4(1.463354e-14, -1.7742684e-15, 0.0, 0.0), float4(6.111235e-8, -1.0395877e-8, 1.3526198e-9, -1.5804848e-10), float4(1.742353e-11, -1.8520003e-12, 1.9195213e-13, -1.9540937e-14), float4(2.0110864e-15, -1.9964626e-16, 0.0, 0.0), float4(4.4696407e-8, -6.442839e-9, 7.1007455e-10, -7.026569e-11), float4(6.5593065e-12, -5.903272e-13, 5.1807564e-14, -4.4650186e-15), float4(3.8627582e-16, -3.245839e-17, 0.0, 0.0), float4(3.4177788e-8, -4.274783e-9, 4.0867057e-10, -3.5073017e-11), float4(2.8392393e-12, -2.215741e-13, 1.6861616e-14, -1.260001e-15), float4(9.409147e-17, -6.850294e-18, 0.0, 0.0), float4(2.4270674e-8, -5.066745e-9, 8.081684e-10, -1.15698166e-10), float4(1.5621579e-11, -2.0331558e-12, 2.579035e-13, -3.2137243e-14), float4(4.099008e-15, -4.979024e-16, 0.0, 0.0), float4(1.664237e-8, -2.8469e-9, 3.71948e-10, -4.3606414e-11), float4(4.8209414e-12, -5.1371223e-13, 5.3363062e-14, -5.443459e-15), float4(5.613163e-16, -5.581949e-17, 0.0, 0.0), float4(1.2151041e-8, -1.7609452e-9, 1.9484654e-10, -1.9342954e-11), float4(1.8105826e-12, -1.6333809e-13, 1.4365233e-14, -1.2404618e-15), float4(1.07511755e-16, -9.04898e-18, 0.0, 0.0), float4(9.27832e-9, -1.1665093e-9, 1.11945536e-10, -9.637102e-12), float4(7.821897e-13, -6.118203e-14, 4.6654456e-15, -3.4927864e-16), float4(2.6128478e-17, -1.9054006e-18, 0.0, 0.0), float4(6.577366e-9, -1.3799166e-9, 2.2090814e-10, -3.1718694e-11), float4(4.293362e-12, -5.6000343e-13, 7.117414e-14, -8.884677e-15), float4(1.1351801e-15, -1.3809573e-16, 0.0, 0.0), float4(4.5018345e-9, -7.737527e-10, 1.0144317e-10, -1.1926342e-11), float4(1.321655e-12, -1.4112542e-13, 1.4686821e-14, -1.5006847e-15), float4(1.5499571e-16, -1.5435354e-17, 0.0, 0.0), float4(3.2821017e-9, -4.7781873e-10, 5.304712e-11, -5.2803087e-12), float4(4.9538395e-13, -4.4778797e-14, 3.945168e-15, -3.4121862e-16), float4(2.9618492e-17, -2.4961108e-18, 0.0, 0.0), float4(2.5031188e-9, -3.1609426e-10, 3.0432604e-11, -2.6266764e-12), float4(2.1366085e-13, -1.6744322e-14, 1.2790194e-15, -9.590159e-17), float4(7.184515e-18, -5.246787e-19, 0.0, 0.0), float4(1.7718077e-9, -3.733001e-10, 5.9946416e-11, -8.628729e-12), float4(1.1704168e-12, -1.5294238e-13, 1.9469977e-14, -2.4340248e-15), float4(3.1143985e-16, -3.793398e-17, 0.0, 0.0), float4(1.2107926e-9, -2.089512e-10, 2.7475916e-11, -3.2379295e-12), float4(3.5954e-13, -3.8458355e-14, 4.008537e-15, -4.1016266e-16), float4(4.2419804e-17, -4.2294154e-18, 0.0, 0.0), float4(8.816253e-10, -1.2885348e-10, 1.43461285e-11, -1.4312796e-12), float4(1.3453732e-13, -1.2181482e-14, 1.074829e-15, -9.308721e-17), float4(8.09046e-18, -6.8268074e-19, 0.0, 0.0), float4(6.71674e-10, -8.5142136e-11, 8.219944e-12, -7.1104516e-13), float4(5.79461e-14, -4.548516e-15, 3.4793964e-16, -2.6122716e-17), float4(1.9593713e-18, -1.4321342e-19, 0.0, 0.0), float4(4.748241e-10, -1.00407085e-10, 1.6166842e-11, -2.3320172e-12), float4(3.1688484e-13, -4.1472746e-14, 5.2868624e-15, -6.617563e-16), float4(8.4776365e-17, -1.03367194e-17, 0.0, 0.0), float4(3.240348e-10, -5.6116892e-11, 7.397906e-12, -8.7359015e-13), float4(9.716947e-14, -1.0409202e-14, 1.0863853e-15, -1.1129359e-16), float4(1.1523243e-17, -1.1500411e-18, 0.0, 0.0), float4(2.3568322e-10, -3.456351e-11, 3.857684e-12, -3.8562865e-13), float4(3.6308088e-14, -3.292164e-15, 2.9085137e-16, -2.5218464e-17), float4(2.1941588e-18, -1.8531294e-19, 0.0, 0.0), float4(1.7939335e-10, -2.2815425e-11, 2.2079664e-12, -1.9135881e-13), float4(1.561959e-14, -1.2277695e-15, 9.403388e-17, -7.067714e-18), float4(5.306708e-19, -3.882852e-20, 0.0, 0.0), float4(1.2667484e-10, -2.6872529e-11, 4.3368226e-12, -6.267226e-13), float4(8.529293e-14, -1.1177713e-14, 1.4265926e-15, -1.7875654e-16), float4(2.2923901e-17, -2.7975774e-18, 0.0, 0.0), float4(8.634329e-11, -1.4999108e-11, 1.9817284e-12, -2.3442744e-13), float4(2.6113877e-14, -2.8010033e-15, 2.9266502e-16, -3.0012286e-17), float4(3.1104646e-18, -3.1069912e-19, 0.0, 0.0), float4(6.274029e-11, -9.2284696e-12, 1.0322179e-12, -1.0336044e-13), float4(9.745585e-15, -8.8475254e-16, 7.82502e-17, -6.791401e-18), float4(5.914394e-19, -4.9995126e-20, 0.0, 0.0), float4(4.7717223e-11, -6.0863628e-12, 5.9024107e-13, -5.1239554e-14), float4(4.1882107e-15, -3.2960675e-16, 2.5271084e-17, -1.9012217e-18), float4(1.4287783e-19, -1.0462263e-20, 0.0, 0.0), float4(3.366101e-11, -7.1608544e-12, 1.1579908e-12, -1.676115e-13), float4(2.2841377e-14, -2.9968424e-15, 3.8287213e-16, -4.8019168e-17), float4(6.1635233e-18, -7.527568e-19, 0.0, 0.0), float4(2.2919524e-11, -3.992263e-12, 5.284977e-13, -6.261472e-14), float4(6.9838997e-15, -7.4993317e-16, 7.843422e-17, -8.050389e-18), float4(8.3503955e-19, -8.347183e-20, 0.0, 0.0), float4(1.663998e-11, -2.4540233e-12, 2.7500485e-13, -2.757858e-14), float4(2.6035538e-15, -2.366178e-16, 2.0947069e-17, -1.8195653e-18), float4(1.5858689e-19, -1.3414987e-20, 0.0, 0.0), float4(1.26465505e-11, -1.6172217e-12, 1.5712322e-13, -1.3659915e-14), float4(1.1178871e-15, -8.806836e-17, 6.758475e-18, -5.0888213e-19), float4(3.827249e-20, -2.804742e-21, 0.0, 0.0), float4(8.913342e-12, -1.9008985e-12, 3.0794494e-13, -4.4635763e-14), float4(6.089908e-15, -7.998185e-16, 1.0227466e-16, -1.2837391e-17), float4(1.6490309e-18, -2.0153152e-19, 0.0, 0.0), float4(6.0633148e-12, -1.0586894e-12, 1.4039117e-13, -1.66557e-14), float4(1.8598398e-15, -1.9990477e-16, 2.0925653e-17, -2.1494387e-18), float4(2.2311726e-19, -2.2317436e-20, 0.0, 0.0), float4(4.398726e-12, -6.502334e-13, 7.2988965e-14, -7.329282e-15), float4(6.926801e-16, -6.3012104e-17, 5.5829215e-18, -4.8532227e-19), float4(4.2328574e-20, -3.582933e-21, 0.0, 0.0), float4(3.3409519e-12, -4.2821378e-13, 4.167162e-14, -3.627494e-15), float4(2.9718122e-16, -2.3433835e-17, 1.7998015e-18, -1.356154e-19), float4(1.020639e-20, -7.4844336e-22, 0.0, 0.0), float4(2.3528597e-12, -5.028965e-13, 8.1598174e-14, -1.18421855e-14), float4(1.6173719e-15, -2.1260718e-16, 2.7207908e-17, -3.4175093e-18), float4(4.3929696e-19, -5.3718686e-20, 0.0, 0.0), float4(1.599188e-12, -2.798285e-13, 3.716453e-14, -4.414437e-15), float4(4.934271e-16, -5.308168e-17, 5.560702e-18, -5.7157177e-19), float4(5.936888e-20, -5.9417365e-21, 0.0, 0.0), float4(1.159365e-12, -1.7174036e-13, 1.9306698e-14, -1.9409824e-15), float4(1.8361823e-16, -1.671747e-17, 1.4822721e-18, -1.2893876e-19), float4(1.1252661e-20, -9.529651e-22, 0.0, 0.0), float4(8.8006696e-13, -1.1303061e-13, 1.1015619e-14, -9.600034e-16), float4(7.872278e-17, -6.212655e-18, 4.7749694e-19, -3.6002703e-20), float4(2.7111814e-21, -1.9889688e-22, 0.0, 0.0), float4(6.193462e-13, -1.3264215e-13, 2.1552545e-14, -3.1313607e-15), float4(4.2806718e-16, -5.6315005e-17, 7.211799e-18, -9.064193e-19), float4(1.1658428e-19, -1.4263673e-20, 0.0, 0.0), float4(4.20637e-13, -7.37462e-14, 9.8078224e-15, -1.1662383e-15), float4(1.3047367e-16, -1.4046807e-17, 1.4724996e-18, -1.5144617e-19), float4(1.5739623e-20, -1.576037e-21, 0.0, 0.0), float4(3.0476218e-13, -4.5230614e-14, 5.091542e-15, -5.1241136e-16), float4(4.8516648e-17, -4.420483e-18, 3.922039e-19, -3.4136745e-20), float4(2.9807928e-21, -2.5256506e-22, 0.0, 0.0), float4(2.3122403e-13, -2.9751954e-14, 2.9033346e-15, -2.5328347e-16), float4(2.0787578e-17, -1.6417142e-18, 1.26261e-19, -9.5253725e-21), float4(7.1769035e-22, -5.268236e-23, 0.0, 0.0), float4(1.626194e-13, -3.4890056e-14, 5.6763888e-15, -8.255442e-16), float4(1.1294791e-16, -1.4869566e-17, 1.9054066e-18, -2.3961556e-19), float4(3.0836114e-20, -3.7744167e-21, 0.0, 0.0), float4(1.10369254e-13, -1.9383822e-14, 2.581129e-15, -3.0721692e-16), float4(3.439766e-17, -3.7058006e-18, 3.8870615e-19, -3.9999873e-20), float4(4.159263e-21, -4.166617e-22, 0.0, 0.0), float4(7.99208e-14, -1.1881537e-14, 1.3391028e-15, -1.3489435e-16), float4(1.27821896e-17, -1.1654002e-18, 1.0345999e-19, -9.009708e-21), float4(7.8710774e-22, -6.672181e-23, 0.0, 0.0), float4(6.0607837e-14, -7.811566e-15, 7.631913e-16, -6.664154e-17), float4(5.473617e-18, -4.3256632e-19, 3.3286956e-20, -2.512525e-21), float4(1.8939657e-22, -1.3907458e-23, 0.0, 0.0), float4(4.2600567e-14, -9.1548956e-15, 1.4911606e-15, -2.170621e-16), float4(2.9719766e-17, -3.9150963e-18, 5.0196613e-19, -6.315659e-20), float4(8.1315425e-21, -9.957309e-22, 0.0, 0.0), float4(2.8894818e-14, -5.0827745e-15, 6.775757e-16, -8.071858e-17), float4(9.044229e-18, -9.749752e-19, 1.02321886e-19, -1.0534557e-20), float4(1.0959051e-21, -1.0982789e-22, 0.0, 0.0), float4(2.0912762e-14, -3.1138553e-15, 3.5133002e-16, -3.542147e-17), float4(3.3588051e-18, -3.0641998e-19, 2.721726e-20, -2.3713083e-21), float4(2.072539e-22, -1.7575326e-23, 0.0, 0.0), float4(1.5852418e-14, -2.046286e-15, 2.0013726e-16, -1.7490557e-17), float4(1.4375852e-18, -1.1367605e-19, 8.752169e-21, -6.60926e-22), float4(4.9842277e-23, -3.6614655e-24, 0.0, 0.0), float4(1.11365715e-14, -2.3968193e-15, 3.9080605e-16, -5.6934544e-17), float4(7.80064e-18, -1.0282005e-18, 1.3189516e-19, -1.6602329e-20), float4(2.1385145e-21, -2.6196422e-22, 0.0, 0.0), float4(7.549331e-15, -1.3298985e-15, 1.7746731e-16, -2.1158236e-17), float4(2.3722607e-18, -2.558751e-19, 2.6866813e-20, -2.7672865e-21), float4(2.879986e-22, -2.8872782e-23, 0.0, 0.0), float4(5.4613313e-15, -8.1433165e-16, 9.19711e-17, -9.279837e-18), float4(8.805158e-19, -8.037249e-20, 7.1423815e-21, -6.225476e-22), float4(5.4432835e-23, -4.6175397e-24, 0.0, 0.0), float4(4.1382193e-15, -5.349201e-16, 5.236918e-17, -4.5801826e-18), float4(3.7669156e-19, -2.9802632e-20, 2.2956496e-21, -1.7343017e-22), float4(1.3083999e-23, -9.615318e-25, 0.0, 0.0), float4(2.9057503e-15, -6.262287e-16, 1.0220549e-16, -1.4900893e-17), float4(2.0428346e-18, -2.6940675e-19, 3.4574705e-20, -4.3538777e-21), float4(5.61036e-22, -6.8749e-23, 0.0, 0.0), float4(1.9687396e-15, -3.4727583e-16, 4.6385175e-17, -5.5342072e-18), float4(6.208661e-19, -6.7001604e-20, 7.038289e-21, -7.2523353e-22), float4(7.5505254e-23, -7.572116e-24, 0.0, 0.0), float4(1.4236181e-15, -2.1254988e-16, 2.4027425e-17, -2.4260773e-18), float4(2.303326e-19, -2.1034996e-20, 1.8701122e-21, -1.6306699e-22), float4(1.4263022e-23, -1.2103322e-24, 0.0, 0.0), float4(1.0783335e-15, -1.3956718e-16, 1.367601e-17, -1.1969315e-18), float4(9.849671e-20, -7.796564e-21, 6.0081434e-22, -4.5407263e-23), float4(3.426818e-24, -2.519079e-25, 0.0, 0.0), float4(7.568395e-16, -1.6331314e-16, 2.6677369e-17, -3.892037e-18), float4(5.3387736e-19, -7.0440846e-20, 9.043905e-21, -1.1392934e-21), float4(1.4686085e-22, -1.8001729e-23, 0.0, 0.0), float4(5.1253657e-16, -9.051926e-17, 1.2100881e-17, -1.4447138e-18), float4(1.6216677e-19, -1.7508607e-20, 1.839969e-21, -1.896614e-22), float4(1.9752722e-23, -1.9815013e-24, 0.0, 0.0), float4(3.7047585e-16, -5.537921e-17, 6.2655184e-18, -6.330488e-19), float4(6.013406e-20, -5.4942176e-21, 4.886573e-22, -4.262428e-23), float4(3.729463e-24, -3.1656547e-25, 0.0, 0.0), float4(2.8052807e-16, -3.6351087e-17, 3.5649317e-18, -3.1220433e-19), float4(2.5705134e-20, -2.0356174e-21, 1.5692906e-22, -1.18642424e-23), float4(8.956717e-25, -6.585758e-26, 0.0, 0.0), float4(1.9681034e-16, -4.251728e-17, 6.950841e-18, -1.0147128e-18), float4(1.3926152e-19, -1.8382501e-20, 2.3610336e-21, -2.9752935e-22), float4(3.8365676e-23, -4.7040462e-24, 0.0, 0.0), float4(1.3322206e-16, -2.3554891e-17, 3.1513668e-18, -3.7646897e-19), float4(4.2279253e-20, -4.566704e-21, 4.800914e-22, -4.9503597e-23), float4(5.1572823e-24, -5.174967e-25, 0.0, 0.0), float4(9.6261794e-17, -1.4405238e-17, 1.6310453e-18, -1.6489456e-19), float4(1.5671244e-20, -1.4324217e-21, 1.2744663e-22, -1.11204625e-23), float4(9.732928e-25, -8.2633654e-26, 0.0, 0.0), float4(7.2868186e-17, -9.452594e-18, 9.277152e-19, -8.1293954e-20), float4(6.6965226e-21, -5.3052347e-22, 4.0913637e-23, -3.0941665e-24), float4(2.336577e-25, -1.7185256e-26, 0.0, 0.0), float4(5.1102705e-17, -1.1051569e-17, 1.8080849e-18, -2.641041e-19), float4(3.6263424e-20, -4.788698e-21, 6.152727e-22, -7.7558835e-23), float4(1.0004033e-23, -1.2269174e-24, 0.0, 0.0), float4(3.4577496e-17, -6.1199917e-18, 8.193784e-19, -9.793987e-20), float4(1.1004203e-20, -1.189064e-21, 1.2504764e-22, -1.2897963e-23), float4(1.344095e-24, -1.3490323e-25, 0.0, 0.0), float4(2.4976156e-17, -3.741418e-18, 4.239277e-19, -4.2881734e-20), float4(4.0772427e-21, -3.728222e-22, 3.3182235e-23, -2.8962101e-24), float4(2.5355437e-25, -2.1532904e-26, 0.0, 0.0), float4(1.8901089e-17, -2.4543543e-18, 2.4104935e-19, -2.1134205e-20), float4(1.7416904e-21, -1.3803565e-22, 1.0648751e-23, -8.055672e-25), float4(6.0849735e-26, -4.4769632e-27, 0.0, 0.0) };
-static float4 MS_EXP_QA[960] = { float4(2586.9585, -19.903526, 0.22969571, -0.0029448576), float4(2548.047, -19.019007, 0.21293393, -0.0026484663), float4(2510.84, -18.198116, 0.1978359, -0.0023893518), float4(2475.2163, -17.434622, 0.18419519, -0.0021619403), float4(2441.067, -16.72306, 0.17183578, -0.0019616173), float4(2408.2927, -16.058619, 0.160607, -0.0017845407), float4(2376.804, -15.437037, 0.15037926, -0.0016274971), float4(2346.5186, -14.8545475, 0.14104067, -0.0014877847), float4(2317.3618, -14.307789, 0.13249426, -0.0013631218), float4(2289.2656, -13.793768, 0.12465568, -0.0012515737), float4(2262.1667, -13.309804, 0.1174513, -0.0011514927), float4(2236.0078, -12.853494, 0.11081665, -0.0010614704), float4(2210.7358, -12.422672, 0.10469508, -0.0009802983), float4(2186.3015, -12.015392, 0.099036686, -0.0009069357), float4(2162.6597, -11.62989, 0.09379735, -0.0008404837), float4(2139.7686, -11.26457, 0.088938005, -0.000780163), float4(2117.5889, -10.917984, 0.084423944, -0.00072529615), float4(2096.085, -10.588813, 0.080224246, -0.0006752923), float4(2075.223, -10.275856, 0.07631131, -0.0006296349), float4(2054.9714, -9.978017, 0.07266045, -0.000587871), float4(2035.3014, -9.694292, 0.069249526, -0.0005496023), float4(2016.1855, -9.423763, 0.06605863, -0.0005144779), float4(1997.5981, -9.165587, 0.06306984, -0.0004821877), float4(1979.5155, -8.918988, 0.060267, -0.0004524571), float4(1961.9149, -8.683251, 0.057635494, -0.00042504247), float4(1944.7756, -8.45772, 0.055162083, -0.00039972703), float4(1928.0776, -8.241784, 0.052834768, -0.00037631762), float4(1911.8025, -8.0348835, 0.050642632, -0.00035464176), float4(1895.9325, -7.8364973, 0.04857575, -0.00033454507), float4(1880.4512, -7.6461425, 0.046625067, -0.00031588922), float4(1865.3429, -7.463371, 0.04478232, -0.0002985499), float4(1850.5929, -7.287767, 0.04303994, -0.00028241533), float4(1829.1095, -14.073918, 0.1624194, -0.0020823288), float4(1801.595, -13.448469, 0.15056702, -0.0018727485), float4(1775.2856, -12.8680105, 0.1398911, -0.0016895268), float4(1750.0958, -12.328139, 0.13024567, -0.0015287227), float4(1725.9486, -11.824989, 0.121506244, -0.0013870728), float4(1702.7737, -11.355157, 0.113566294, -0.0012618608), float4(1680.5077, -10.915634, 0.10633419, -0.0011508142), float4(1659.0928, -10.503751, 0.099730805, -0.0010520226), float4(1638.476, -10.117134, 0.09368759, -0.00096387265), float4(1618.6088, -9.753667, 0.088144876, -0.0008849962), float4(1599.447, -9.411452, 0.083050616, -0.00081422826), float4(1580.95, -9.088792, 0.07835921, -0.0007505729), float4(1563.0798, -8.784156, 0.0740306, -0.00069317553), float4(1545.8022, -8.496165, 0.07002951, -0.0006413004), float4(1529.085, -8.223575, 0.06632474, -0.00059431174), float4(1512.8984, -7.9652543, 0.06288867, -0.00055165857), float4(1497.2151, -7.7201805, 0.059696745, -0.0005128618), float4(1482.0095, -7.487421, 0.056727108, -0.00047750375), float4(1467.2578, -7.266127, 0.05396025, -0.0004452191), float4(1452.9379, -7.055523, 0.0513787, -0.00041568757), float4(1439.029, -6.8548994, 0.04896681, -0.00038862752), float4(1425.5121, -6.663607, 0.046710502, -0.0003637908), float4(1412.3688, -6.481049, 0.04459711, -0.00034095818), float4(1399.5824, -6.306677, 0.042615205, -0.0003199355), float4(1387.137, -6.139986, 0.04075445, -0.0003005504), float4(1375.0176, -5.9805107, 0.039005484, -0.00028264968), float4(1363.2104, -5.8278217, 0.037359823, -0.00026609673), float4(1351.7021, -5.681521, 0.035809748, -0.00025076958), float4(1340.4803, -5.54124, 0.034348242, -0.00023655909), float4(1329.5333, -5.406639, 0.0329689, -0.0002233674), float4(1318.8502, -5.2774, 0.03166588, -0.00021110666), float4(1308.4204, -5.153229, 0.030433834, -0.0001996978), float4(1293.2292, -9.951762, 0.114847854, -0.0014724288), float4(1273.7736, -9.509503, 0.106466964, -0.0013242331), float4(1255.17, -9.099057, 0.09891795, -0.0011946759), float4(1237.3583, -8.717311, 0.09209759, -0.0010809702), float4(1220.2836, -8.36153, 0.08591789, -0.0009808085), float4(1203.8965, -8.029308, 0.0803035, -0.00089227036), float4(1188.152, -7.7185183, 0.07518963, -0.0008137486), float4(1173.0093, -7.4272733, 0.07052033, -0.0007438923), float4(1158.431, -7.153894, 0.06624713, -0.00068156084), float4(1144.3828, -6.8968835, 0.062327836, -0.0006257868), float4(1130.8335, -6.6549015, 0.05872565, -0.00057574635), float4(1117.754, -6.4267464, 0.055408325, -0.0005307352), float4(1105.118, -6.211336, 0.05234754, -0.00049014913), float4(1092.9009, -6.0076957, 0.04951834, -0.00045346786), float4(1081.08, -5.8149447, 0.046898674, -0.00042024185), float4(1069.6343, -5.632285, 0.044469003, -0.0003900815), float4(1058.5446, -5.4589915, 0.042211972, -0.00036264808), float4(1047.7926, -5.294406, 0.040112123, -0.00033764614), float4(1037.3616, -5.1379275, 0.038155656, -0.00031481744), float4(1027.2358, -4.989008, 0.036330227, -0.0002939355), float4(1017.4008, -4.8471456, 0.034624763, -0.00027480116), float4(1007.84283, -4.7118816, 0.033029314, -0.00025723895), float4(998.54913, -4.582793, 0.031534918, -0.00024109385), float4(989.5078, -4.4594936, 0.030133499, -0.00022622856), float4(980.7076, -4.3416257, 0.028817745, -0.00021252122), float4(972.1379, -4.2288594, 0.027581042, -0.0001998635), float4(963.78894, -4.120892, 0.026417384, -0.00018815881), float4(955.6513, -4.0174417, 0.025321316, -0.00017732088), float4(947.7163, -3.9182484, 0.024287876, -0.00016727253), float4(939.97565, -3.8230708, 0.023312533, -0.0001579446), float4(932.4215, -3.7316852, 0.022391157, -0.00014927494), float4(925.0465, -3.643883, 0.021519968, -0.00014120767), float4(914.3048, -7.036958, 0.0812097, -0.0010411644), float4(900.54755, -6.7242336, 0.07528351, -0.00093637424), float4(887.3929, -6.434005, 0.06994555, -0.0008447634), float4(874.79803, -6.164069, 0.06512283, -0.00076436135), float4(862.72437, -5.912494, 0.060753122, -0.00069353636), float4(851.13696, -5.677578, 0.056783147, -0.0006309304), float4(840.00397, -5.457816, 0.053167094, -0.0005754071), float4(829.29645, -5.251875, 0.049865402, -0.0005260113), float4(818.98804, -5.0585666, 0.04684379, -0.0004819363), float4(809.0545, -4.876833, 0.044072434, -0.0004424981), float4(799.47363, -4.7057257, 0.041525304, -0.00040711413), float4(790.2251, -4.5443954, 0.0391796, -0.00037528644), float4(781.29004, -4.3920774, 0.0370153, -0.00034658777), float4(772.6512, -4.248082, 0.035014752, -0.0003206502), float4(764.2926, -4.111787, 0.03316237, -0.00029715587), float4(756.19934, -3.9826264, 0.031444333, -0.00027582928), float4(748.35767, -3.8600895, 0.02984837, -0.0002564309), float4(740.7548, -3.74371, 0.028363552, -0.00023875188), float4(733.37897, -3.633063, 0.026980123, -0.00022260955), float4(726.21906, -3.527761, 0.025689349, -0.00020784378), float4(719.26465, -3.4274492, 0.024483403, -0.00019431376), float4(712.5061, -3.331803, 0.02335525, -0.0001818954), float4(705.9345, -3.240524, 0.022298554, -0.00017047909), float4(699.5413, -3.153338, 0.0213076, -0.00015996773), float4(693.3186, -3.0699925, 0.020377222, -0.0001502752), float4(687.2589, -2.9902549, 0.01950274, -0.00014132484), float4(681.3553, -2.9139104, 0.01867991, -0.00013304836), float4(675.60114, -2.84076, 0.017904874, -0.00012538479), float4(669.9903, -2.7706196, 0.017174121, -0.00011827954), float4(664.5168, -2.703319, 0.01648445, -0.0001116837), float4(659.17523, -2.6386995, 0.015832938, -0.00010555332), float4(653.9603, -2.5766141, 0.015216916, -9.984889e-5), float4(646.36475, -4.97588, 0.057423923, -0.00073621434), float4(636.6369, -4.7547507, 0.05323348, -0.00066211657), float4(627.33514, -4.5495276, 0.049458973, -0.0005973379), float4(618.42926, -4.3586545, 0.046048794, -0.0005404851), float4(609.8919, -4.180764, 0.04295894, -0.00049040426), float4(601.69836, -4.014653, 0.040151745, -0.00044613515), float4(593.8261, -3.8592584, 0.03759481, -0.00040687426), float4(586.2548, -3.7136357, 0.035260163, -0.00037194614), float4(578.96564, -3.5769463, 0.03312356, -0.00034078042), float4(571.9415, -3.448441, 0.031163916, -0.0003128934), float4(565.1669, -3.32745, 0.029362824, -0.00028787315), float4(558.62714, -3.2133722, 0.02770416, -0.0002653676), float4(552.30914, -3.105667, 0.026173769, -0.00024507454), float4(546.20056, -3.0038471, 0.024759168, -0.00022673392), float4(540.2901, -2.9074717, 0.023449335, -0.00021012091), float4(534.5673, -2.8161418, 0.0222345, -0.00019504075), float4(529.0224, -2.729495, 0.021105984, -0.00018132402), float4(523.6464, -2.6472023, 0.02005606, -0.00016882305), float4(518.4309, -2.568963, 0.019077826, -0.00015740872), float4(513.36804, -2.4945033, 0.018165112, -0.00014696774), float4(508.45056, -2.423572, 0.01731238, -0.00013740057), float4(503.67157, -2.35594, 0.016514655, -0.00012861946), float4(499.02472, -2.291396, 0.015767459, -0.000120546916), float4(494.50406, -2.229746, 0.0150667485, -0.00011311427), float4(490.10394, -2.1708121, 0.0144088715, -0.0001062606), float4(485.8191, -2.114429, 0.013790519, -9.993175e-5), float4(481.64462, -2.0604453, 0.01320869, -9.40794e-5), float4(477.5758, -2.0087202, 0.012660657, -8.866043e-5), float4(473.6083, -1.9591235, 0.012143936, -8.363626e-5), float4(469.73798, -1.9115348, 0.011656266, -7.89723e-5), float4(465.9609, -1.865842, 0.011195578, -7.4637464e-5), float4(462.27344, -1.8219409, 0.010759983, -7.0603826e-5), float4(456.90256, -3.518478, 0.04060484, -0.00052058214), float4(450.02396, -3.3621156, 0.03764175, -0.0004681871), float4(443.44662, -3.2170012, 0.034972772, -0.00042238168), float4(437.14917, -3.0820332, 0.03256141, -0.00038218065), float4(431.11237, -2.956246, 0.030376555, -0.00034676815), float4(425.31866, -2.8387878, 0.02839157, -0.00031546518), float4(419.75217, -2.728907, 0.026583543, -0.00028770353), float4(414.3984, -2.6259363, 0.024932697, -0.0002630056), float4(409.2442, -2.529282, 0.023421891, -0.00024096813), float4(404.27744, -2.4384153, 0.022036213, -0.00022124902), float4(399.487, -2.3528616, 0.020762648, -0.00020355705), float4(394.86273, -2.2721965, 0.019589799, -0.0001876432), float4(390.3952, -2.1960375, 0.018507646, -0.00017329387), float4(386.0758, -2.12404, 0.017507374, -0.00016032509), float4(381.89648, -2.0558922, 0.016581181, -0.0001485779), float4(377.84985, -1.9913123, 0.015722163, -0.00013791463), float4(373.92905, -1.9300438, 0.014924183, -0.00012821544), float4(370.12762, -1.871854, 0.014181774, -0.00011937592), float4(366.4397, -1.8165305, 0.0134900585, -0.00011130476), float4(362.85974, -1.7638794, 0.0128446715, -0.00010392188), float4(359.38254, -1.7137237, 0.012241699, -9.7156866e-5), float4(356.00327, -1.6659005, 0.011677623, -9.094769e-5), float4(352.71747, -1.620261, 0.011149275, -8.523953e-5), float4(349.52087, -1.576668, 0.0106537985, -7.998386e-5), float4(346.40952, -1.5349953, 0.010188609, -7.513759e-5), float4(343.3797, -1.4951265, 0.009751368, -7.066241e-5), float4(340.4279, -1.4569542, 0.009339953, -6.6524175e-5), float4(337.5508, -1.420379, 0.008952435, -6.269239e-5), float4(334.74536, -1.3853089, 0.008587059, -5.9139762e-5), float4(332.00864, -1.3516586, 0.0082422225, -5.584184e-5), float4(329.33783, -1.3193488, 0.007916467, -5.2776653e-5), float4(326.73038, -1.2883061, 0.007608456, -4.9924438e-5), float4(322.93262, -2.4879384, 0.028711954, -0.0003681071), float4(318.0687, -2.3773737, 0.026616732, -0.00033105823), float4(313.41782, -2.2747622, 0.02472948, -0.00029866892), float4(308.96487, -2.1793253, 0.02302439, -0.00027024248), float4(304.6962, -2.0903804, 0.021479465, -0.0002452021), float4(300.59943, -2.007325, 0.020075867, -0.00022306755), float4(296.66333, -1.9296275, 0.0187974, -0.0002034371), float4(292.87766, -1.8568163, 0.017630076, -0.00018597304), float4(289.2331, -1.7884715, 0.016561775, -0.00017039018), float4(285.72104, -1.7242188, 0.015581953, -0.00015644667), float4(282.3337, -1.6637235, 0.014681407, -0.00014393654), float4(279.06384, -1.6066846, 0.013852076, -0.00013268377), float4(275.90485, -1.552832, 0.01308688, -0.00012253725), float4(272.85056, -1.501922, 0.01237958, -0.000113366936), float4(269.89532, -1.4537344, 0.011724663, -0.00010506043), float4(267.03394, -1.4080694, 0.011117246, -9.752035e-5), float4(264.2615, -1.3647461, 0.010552988, -9.066199e-5), float4(261.57352, -1.3235997, 0.010028026, -8.441151e-5), float4(258.96576, -1.2844801, 0.009538909, -7.870434e-5), float4(256.43433, -1.2472502, 0.009082552, -7.3483854e-5), float4(253.97557, -1.2117846, 0.008656186, -6.870027e-5), float4(251.58609, -1.1779686, 0.008257324, -6.4309716e-5), float4(249.26266, -1.1456966, 0.007883726, -6.0273444e-5), float4(247.00233, -1.1148717, 0.007533371, -5.655712e-5), float4(244.80228, -1.0854046, 0.0072044325, -5.313029e-5), float4(242.65987, -1.0572132, 0.0068952567, -4.996586e-5), float4(240.57263, -1.0302213, 0.0066043423, -4.7039684e-5), float4(238.53822, -1.0043588, 0.0063303253, -4.4330205e-5), float4(236.55447, -0.97956043, 0.006071965, -4.181812e-5), float4(234.61932, -0.9557661, 0.00582813, -3.9486138e-5), float4(232.73079, -0.9329197, 0.005597786, -3.7318725e-5), float4(230.88704, -0.91096914, 0.0053799893, -3.5301902e-5), float4(228.20161, -1.7592363, 0.020302411, -0.00026029098), float4(224.76231, -1.6810553, 0.018820865, -0.00023409347), float4(221.47365, -1.6084981, 0.017486377, -0.00021119077), float4(218.32494, -1.5410142, 0.016280698, -0.00019109025), float4(215.30653, -1.4781204, 0.01518827, -0.00017338402), float4(212.40968, -1.4193915, 0.014195777, -0.00015773253), float4(209.62643, -1.3644512, 0.013291764, -0.00014385172), float4(206.94957, -1.3129659, 0.012466341, -0.00013150276), float4(204.37247, -1.2646388, 0.011710939, -0.00012048402), float4(201.88908, -1.2192054, 0.0110181, -0.000110624474), float4(199.49388, -1.1764287, 0.010381318, -0.00010177848), float4(197.18175, -1.1360961, 0.009794893, -9.382157e-5), float4(194.948, -1.0980166, 0.009253818, -8.66469e-5), float4(192.7883, -1.0620178, 0.008753681, -8.016251e-5), float4(190.69864, -1.027944, 0.008290585, -7.4288924e-5), float4(188.67532, -0.995654, 0.007861076, -6.8957284e-5), float4(186.71492, -0.96501976, 0.0074620857, -6.410769e-5), float4(184.81422, -0.9359249, 0.0070908815, -5.9687936e-5), float4(182.97026, -0.9082632, 0.006745024, -5.5652356e-5), float4(181.18028, -0.8819377, 0.006422331, -5.1960913e-5), float4(179.44168, -0.8568598, 0.0061208447, -4.857841e-5), float4(177.75206, -0.83294827, 0.0058388067, -4.5473822e-5), float4(176.10916, -0.8101285, 0.005574633, -4.2619748e-5), float4(174.51086, -0.78833205, 0.0053268946, -3.9991908e-5), float4(172.9552, -0.7674957, 0.0050943005, -3.7568774e-5), float4(171.44028, -0.74756134, 0.00487568, -3.5331188e-5), float4(169.96439, -0.7284752, 0.004669972, -3.326207e-5), float4(168.52585, -0.7101876, 0.0044762134, -3.1346175e-5), float4(167.12314, -0.6926526, 0.004293525, -2.9569866e-5), float4(165.75476, -0.67582744, 0.0041211075, -2.7920905e-5), float4(164.41937, -0.6596726, 0.00395823, -2.6388312e-5), float4(163.11566, -0.6441513, 0.0038042243, -2.4962204e-5), float4(161.21678, -1.2439656, 0.014355964, -0.00018405345), float4(158.78482, -1.1886833, 0.013308353, -0.00016552901), float4(156.4594, -1.1373776, 0.012364727, -0.00014933437), float4(154.23293, -1.0896592, 0.011512183, -0.00013512115), float4(152.0986, -1.0451868, 0.01073972, -0.00012260096), float4(150.05022, -1.0036591, 0.010037922, -0.00011153369), float4(148.08217, -0.96481043, 0.009398689, -0.00010171848), float4(146.18935, -0.92840487, 0.008815028, -9.298645e-5), float4(144.36707, -0.8942325, 0.008280878, -8.5195024e-5), float4(142.61105, -0.86210626, 0.007790967, -7.8223275e-5), float4(140.91739, -0.8318586, 0.0073406943, -7.196822e-5), float4(139.28247, -0.8033392, 0.006926029, -6.634183e-5), float4(137.70297, -0.77641296, 0.006543431, -6.1268576e-5), float4(136.17583, -0.75095797, 0.0061897817, -5.668342e-5), float4(134.69823, -0.72686416, 0.0058623236, -5.2530173e-5), float4(133.26753, -0.7040317, 0.005558615, -4.8760136e-5), float4(131.88132, -0.68237007, 0.0052764863, -4.5330955e-5), float4(130.53734, -0.66179687, 0.0050140056, -4.220572e-5), float4(129.23346, -0.6422371, 0.0047694477, -3.9352133e-5), float4(127.96775, -0.62362224, 0.004541269, -3.674189e-5), float4(126.73838, -0.6058895, 0.0043280865, -3.43501e-5), float4(125.54365, -0.5889815, 0.0041286554, -3.215483e-5), float4(124.38194, -0.5728455, 0.0039418563, -3.0136693e-5), float4(123.25178, -0.55743307, 0.0037666792, -2.8278531e-5), float4(122.15176, -0.5426996, 0.0036022102, -2.6565118e-5), float4(121.08056, -0.52860385, 0.0034476225, -2.4982905e-5), float4(120.03694, -0.5151079, 0.0033021653, -2.3519819e-5), float4(119.01975, -0.5021767, 0.003165157, -2.2165079e-5), float4(118.02788, -0.48977757, 0.0030359772, -2.0909038e-5), float4(117.0603, -0.47788042, 0.0029140597, -1.9743047e-5), float4(116.11604, -0.46645722, 0.002798888, -1.865934e-5), float4(115.194176, -0.455482, 0.0026899895, -1.7650931e-5), float4(113.85147, -0.8796131, 0.010151186, -0.00013014534), float4(112.13183, -0.84052265, 0.009410414, -0.0001170466), float4(110.48751, -0.8042441, 0.008743171, -0.00010559526), float4(108.91316, -0.7705022, 0.008140331, -9.554501e-5), float4(107.40397, -0.73905545, 0.0075941184, -8.66919e-5), float4(105.95555, -0.709691, 0.0070978724, -7.8866164e-5), float4(104.56394, -0.6822209, 0.0066458667, -7.192576e-5), float4(103.22552, -0.6564783, 0.006233156, -6.575129e-5), float4(101.93698, -0.6323148, 0.005855455, -6.0241924e-5), float4(100.6953, -0.60959816, 0.0055090366, -5.5312154e-5), float4(99.4977, -0.58820987, 0.005190646, -5.0889164e-5), float4(98.341644, -0.56804365, 0.0048974333, -4.691071e-5), float4(97.22478, -0.54900396, 0.004626896, -4.332338e-5), float4(96.144936, -0.5310046, 0.0043768287, -4.0081188e-5), float4(95.10011, -0.5139677, 0.004145281, -3.71444e-5), float4(94.08847, -0.49782276, 0.003930527, -3.447858e-5), float4(93.10828, -0.4825057, 0.0037310321, -3.2053787e-5), float4(92.157936, -0.4679583, 0.0035454305, -2.9843915e-5), float4(91.23596, -0.4541275, 0.003372502, -2.7826129e-5), float4(90.34098, -0.4409648, 0.0032111555, -2.598041e-5), float4(89.47169, -0.42842588, 0.0030604128, -2.428916e-5), float4(88.626884, -0.41647014, 0.002919394, -2.2736867e-5), float4(87.80544, -0.40506032, 0.0027873074, -2.1309832e-5), float4(87.0063, -0.39416212, 0.0026634387, -1.9995916e-5), float4(86.22848, -0.38374397, 0.0025471416, -1.8784349e-5), float4(85.47102, -0.37377682, 0.0024378316, -1.7665558e-5), float4(84.733086, -0.3642338, 0.002334978, -1.6631e-5), float4(84.013824, -0.35509002, 0.0022380988, -1.5673055e-5), float4(83.31247, -0.34632254, 0.0021467549, -1.47849005e-5), float4(82.628296, -0.33791, 0.0020605463, -1.3960422e-5), float4(81.96061, -0.3298326, 0.0019791077, -1.3194127e-5), float4(81.308754, -0.32207197, 0.0019021049, -1.2481075e-5), float4(80.35933, -0.62197554, 0.007177954, -9.2026516e-5), float4(79.143364, -0.5943345, 0.00665415, -8.276431e-5), float4(77.98067, -0.5686818, 0.006182338, -7.4667e-5), float4(76.86745, -0.5448227, 0.005756067, -6.756041e-5), float4(75.80029, -0.5225866, 0.005369837, -6.130032e-5), float4(74.776115, -0.5018228, 0.005018939, -5.5766697e-5), float4(73.79211, -0.48239857, 0.004699323, -5.08591e-5), float4(72.84571, -0.46419588, 0.004407493, -4.6493093e-5), float4(71.93458, -0.4471098, 0.004140419, -4.259739e-5), float4(71.05659, -0.43104672, 0.0038954644, -3.911152e-5), float4(70.20977, -0.41592297, 0.0036703285, -3.5984e-5), float4(69.39232, -0.40166333, 0.0034629966, -3.317081e-5), float4(68.602585, -0.38820028, 0.0032716983, -3.063419e-5), float4(67.83903, -0.37547287, 0.0030948739, -2.8341618e-5), float4(67.10024, -0.36342603, 0.0029311455, -2.6265e-5), float4(66.3849, -0.35200986, 0.0027792917, -2.4379984e-5), float4(65.69181, -0.3411791, 0.002638228, -2.26654e-5), float4(65.01983, -0.3308926, 0.002506988, -2.1102785e-5), float4(64.367905, -0.32111275, 0.0023847094, -1.9675996e-5), float4(63.735058, -0.31180537, 0.0022706205, -1.8370878e-5), float4(63.120388, -0.30293906, 0.0021640295, -1.7174987e-5), float4(62.52303, -0.29448512, 0.0020643144, -1.6077352e-5), float4(61.94219, -0.2864172, 0.0019709154, -1.5068287e-5), float4(61.377117, -0.27871102, 0.0018833271, -1.4139209e-5), float4(60.827118, -0.2713443, 0.001801093, -1.3282505e-5), float4(60.29153, -0.2642965, 0.0017237994, -1.24914e-5), float4(59.769733, -0.2575486, 0.0016510711, -1.175986e-5), float4(59.261147, -0.25108302, 0.0015825673, -1.1082492e-5), float4(58.765224, -0.2448835, 0.0015179777, -1.0454473e-5), float4(58.281445, -0.23893495, 0.0014570191, -9.87148e-6), float4(57.809326, -0.2332234, 0.0013994335, -9.3296285e-6), float4(57.348404, -0.22773582, 0.0013449845, -8.8254255e-6), float4(56.677067, -0.43979633, 0.005075554, -6.507237e-5), float4(55.817265, -0.42025125, 0.0047051692, -5.852302e-5), float4(54.995125, -0.40211213, 0.0043715495, -5.2797368e-5), float4(54.20797, -0.38524133, 0.004070131, -4.777226e-5), float4(53.453392, -0.36951807, 0.0037970261, -4.3345724e-5), float4(52.729206, -0.354836, 0.0035489046, -3.943287e-5), float4(52.033417, -0.34110105, 0.0033229028, -3.5962683e-5), float4(51.364223, -0.32822987, 0.0031165488, -3.2875458e-5), float4(50.719975, -0.31614825, 0.0029276994, -3.0120787e-5), float4(50.09915, -0.30479002, 0.002754491, -2.7655913e-5), float4(49.50037, -0.294096, 0.0025952966, -2.5444428e-5), float4(48.92236, -0.28401297, 0.0024486913, -2.3455208e-5), float4(48.36394, -0.27449325, 0.0023134237, -2.1661552e-5), float4(47.82404, -0.26549366, 0.0021883906, -2.0040463e-5), float4(47.301647, -0.25697532, 0.0020726176, -1.8572076e-5), float4(46.79584, -0.24890293, 0.0019652413, -1.7239174e-5), float4(46.30576, -0.2412445, 0.0018654945, -1.6026783e-5), float4(45.830605, -0.23397088, 0.0017726943, -1.4921851e-5), float4(45.369637, -0.22705555, 0.0016862307, -1.3912963e-5), float4(44.92216, -0.22047427, 0.0016055581, -1.2990109e-5), float4(44.487534, -0.21420489, 0.0015301872, -1.2144488e-5), float4(44.065147, -0.20822711, 0.0014596784, -1.1368347e-5), float4(43.65444, -0.20252226, 0.0013936356, -1.0654832e-5), float4(43.254887, -0.19707324, 0.0013317016, -9.997878e-6), float4(42.86599, -0.19186424, 0.0012735536, -9.392099e-6), float4(42.48728, -0.18688072, 0.001218899, -8.832706e-6), float4(42.118324, -0.18210928, 0.0011674728, -8.31543e-6), float4(41.75871, -0.17753746, 0.0011190335, -7.836461e-6), float4(41.40805, -0.17315379, 0.001073362, -7.3923866e-6), float4(41.06598, -0.16894758, 0.001030258, -6.9801495e-6), float4(40.732147, -0.16490893, 0.0009895391, -6.5970044e-6), float4(40.406235, -0.16102867, 0.0009510381, -6.2404806e-6), float4(39.931545, -0.31097332, 0.0035889214, -4.601283e-5), float4(39.323593, -0.29715303, 0.0033270218, -4.1381758e-5), float4(38.742268, -0.28432685, 0.0030911183, -3.733313e-5), float4(38.185688, -0.27239752, 0.002877985, -3.377986e-5), float4(37.652138, -0.26127964, 0.0026848717, -3.064984e-5), float4(37.140076, -0.25089797, 0.0025094245, -2.788305e-5), float4(36.6481, -0.24118601, 0.0023496184, -2.5429268e-5), float4(36.174927, -0.23208483, 0.002203705, -2.3246284e-5), float4(35.719387, -0.22354195, 0.0020701694, -2.1298449e-5), float4(35.28042, -0.21551058, 0.0019476935, -1.9555528e-5), float4(34.857033, -0.20794885, 0.001835127, -1.799178e-5), float4(34.448334, -0.20081918, 0.0017314623, -1.65852e-5), float4(34.05349, -0.1940878, 0.0016358144, -1.53169e-5), float4(33.671738, -0.18772423, 0.0015474034, -1.4170625e-5), float4(33.30237, -0.18170093, 0.0014655403, -1.3132325e-5), float4(32.944725, -0.17599298, 0.0013896144, -1.21898265e-5), float4(32.5982, -0.17057773, 0.0013190835, -1.1332542e-5), float4(32.262234, -0.16543458, 0.0012534644, -1.0551243e-5), float4(31.936293, -0.16054478, 0.001192326, -9.837856e-6), float4(31.619896, -0.15589121, 0.0011352825, -9.1853035e-6), float4(31.312582, -0.15145816, 0.0010819877, -8.587364e-6), float4(31.013926, -0.1472313, 0.0010321309, -8.0385535e-6), float4(30.723528, -0.14319743, 0.0009854321, -7.5340263e-6), float4(30.441015, -0.13934445, 0.00094163866, -7.0694928e-6), float4(30.166037, -0.1356612, 0.0009005222, -6.6411453e-6), float4(29.898264, -0.13213739, 0.00086187606, -6.2455974e-6), float4(29.637388, -0.12876353, 0.0008255125, -5.8798314e-6), float4(29.383116, -0.12553082, 0.0007912612, -5.5411515e-6), float4(29.135176, -0.12243115, 0.0007589669, -5.227146e-6), float4(28.893307, -0.11945697, 0.0007284882, -4.935653e-6), float4(28.657269, -0.11660128, 0.0006996959, -4.664731e-6), float4(28.426828, -0.113857575, 0.0006724719, -4.4126327e-6), float4(28.09119, -0.21987772, 0.0025376983, -3.253558e-5), float4(27.661331, -0.2101055, 0.0023525094, -2.9260947e-5), float4(27.2503, -0.20103623, 0.0021857028, -2.6398162e-5), float4(26.856764, -0.19260111, 0.0020349966, -2.3885645e-5), float4(26.479513, -0.18473975, 0.0018984469, -2.167241e-5), float4(26.117456, -0.17739898, 0.0017743887, -1.9716012e-5), float4(25.769602, -0.17053175, 0.0016613903, -1.7980945e-5), float4(25.435041, -0.1640964, 0.0015582156, -1.6437358e-5), float4(25.112953, -0.15805583, 0.0014637931, -1.50600445e-5), float4(24.802578, -0.15237693, 0.0013771909, -1.3827628e-5), float4(24.503223, -0.14703013, 0.0012975957, -1.2721905e-5), float4(24.214254, -0.14198883, 0.0012242949, -1.1727312e-5), float4(23.935081, -0.13722916, 0.0011566627, -1.08305e-5), float4(23.665163, -0.13272956, 0.0010941478, -1.001997e-5), float4(23.404001, -0.12847058, 0.0010362628, -9.285792e-6), float4(23.151133, -0.12443457, 0.000982576, -8.619352e-6), float4(22.906126, -0.12060552, 0.0009327041, -8.0131695e-6), float4(22.668583, -0.116968885, 0.00088630524, -7.4607146e-6), float4(22.438131, -0.11351138, 0.0008430747, -6.9562807e-6), float4(22.214426, -0.11022091, 0.0008027396, -6.494863e-6), float4(21.997143, -0.107086375, 0.0007650553, -6.0720618e-6), float4(21.785982, -0.104097635, 0.00072980195, -5.6839995e-6), float4(21.580662, -0.10124536, 0.00069678156, -5.32725e-6), float4(21.380917, -0.09852099, 0.00066581555, -4.9987802e-6), float4(21.186499, -0.09591663, 0.00063674245, -4.6958976e-6), float4(20.997175, -0.09342501, 0.0006094161, -4.4162075e-6), float4(20.812727, -0.09103942, 0.0005837038, -4.157576e-6), float4(20.63295, -0.08875364, 0.000559485, -3.918097e-6), float4(20.45765, -0.086561926, 0.00053665, -3.6960653e-6), float4(20.286644, -0.08445894, 0.0005150988, -3.489952e-6), float4(20.119759, -0.08243974, 0.00049474003, -3.2983842e-6), float4(19.956831, -0.08049972, 0.00047549023, -3.1201268e-6), float4(19.71953, -0.15545778, 0.0017943493, -2.3005558e-5), float4(19.415611, -0.14854807, 0.0016634045, -2.0690086e-5), float4(19.125006, -0.1421354, 0.0015454573, -1.8665829e-5), float4(18.84677, -0.13617113, 0.0014388949, -1.6889244e-5), float4(18.580051, -0.13061257, 0.0013423424, -1.532428e-5), float4(18.324074, -0.1254221, 0.0012546225, -1.3940927e-5), float4(18.07814, -0.12056648, 0.0011747228, -1.2714074e-5), float4(17.841606, -0.116016224, 0.0011017694, -1.16226165e-5), float4(17.613888, -0.11174511, 0.0010350046, -1.06487305e-5), float4(17.394455, -0.10772974, 0.0009737696, -9.7773e-6), float4(17.182814, -0.103949174, 0.00091748906, -8.995453e-6), float4(16.978514, -0.10038464, 0.00086565927, -8.292187e-6), float4(16.781141, -0.09701923, 0.00081783766, -7.65806e-6), float4(16.590315, -0.093837716, 0.00077363447, -7.0849433e-6), float4(16.405678, -0.09082633, 0.00073270506, -6.565813e-6), float4(16.226904, -0.08797262, 0.0006947442, -6.0945817e-6), float4(16.05369, -0.085265234, 0.00065948063, -5.6659565e-6), float4(15.885752, -0.082693905, 0.00062667293, -5.2753226e-6), float4(15.72283, -0.08024924, 0.00059610547, -4.9186433e-6), float4(15.564676, -0.07792267, 0.00056758535, -4.592381e-6), float4(15.411065, -0.07570637, 0.0005409396, -4.293424e-6), float4(15.261783, -0.073593155, 0.0005160127, -4.0190303e-6), float4(15.116629, -0.07157643, 0.00049266475, -3.766778e-6), float4(14.975416, -0.06965014, 0.00047076942, -3.5345217e-6), float4(14.837971, -0.06780871, 0.0004502125, -3.3203578e-6), float4(14.704128, -0.066047005, 0.00043089068, -3.1225932e-6), float4(14.573733, -0.06436026, 0.00041271013, -2.9397188e-6), float4(14.44664, -0.06274409, 0.00039558564, -2.770387e-6), float4(14.322713, -0.06119443, 0.0003794396, -2.613392e-6), float4(14.20182, -0.059707515, 0.0003642013, -2.4676528e-6), float4(14.083843, -0.05827984, 0.00034980616, -2.3321986e-6), float4(13.968664, -0.05690815, 0.00033619517, -2.2061558e-6), float4(13.800907, -0.10989807, 0.0012686915, -1.6266578e-5), float4(13.586058, -0.105012566, 0.0011761042, -1.4629351e-5), float4(13.380622, -0.10047852, 0.0010927073, -1.3198038e-5), float4(13.183932, -0.09626153, 0.0010173602, -1.1941851e-5), float4(12.995385, -0.092331395, 0.00094909105, -1.0835299e-5), float4(12.814433, -0.08866152, 0.00088706723, -9.857159e-6), float4(12.640581, -0.085228406, 0.0008305729, -8.989679e-6), float4(12.473376, -0.082011215, 0.00077899016, -8.217935e-6), float4(12.312405, -0.07899138, 0.0007317832, -7.5293233e-6), float4(12.1572895, -0.07615239, 0.0006884862, -6.9131565e-6), float4(12.007685, -0.073479414, 0.0006486924, -6.360333e-6), float4(11.863271, -0.07095918, 0.00061204564, -5.8630717e-6), float4(11.723754, -0.06857974, 0.0005782329, -5.414698e-6), float4(11.588864, -0.066330336, 0.00054697867, -5.009463e-6), float4(11.458352, -0.06420121, 0.0005180393, -4.642401e-6), float4(11.331985, -0.06218357, 0.0004911988, -4.3092073e-6), float4(11.209549, -0.0602694, 0.00046626554, -4.0061395e-6), float4(11.090844, -0.05845142, 0.00044306874, -3.7299342e-6), float4(10.975684, -0.056723002, 0.00042145594, -3.477738e-6), float4(10.863896, -0.055078086, 0.00040129074, -3.2470482e-6), float4(10.75532, -0.05351113, 0.00038245082, -3.0356657e-6), float4(10.649803, -0.052017063, 0.0003648263, -2.8416514e-6), float4(10.547206, -0.05059122, 0.00034831814, -2.6632924e-6), float4(10.447395, -0.04922932, 0.0003328371, -2.4990723e-6), float4(10.350248, -0.04792742, 0.00031830242, -2.3476448e-6), float4(10.255649, -0.04668188, 0.00030464103, -2.2078127e-6), float4(10.163486, -0.045489352, 0.00029178656, -2.0785092e-6), float4(10.073658, -0.04434672, 0.0002796788, -1.9587812e-6), float4(9.986068, -0.043251112, 0.00026826287, -1.8477763e-6), float4(9.900623, -0.04219987, 0.00025748878, -1.74473e-6), float4(9.81724, -0.04119051, 0.00024731085, -1.6489558e-6), float4(9.735835, -0.040220734, 0.00023768733, -1.5598363e-6), float4(9.61727, -0.07767131, 0.0008969515, -1.1501065e-5), float4(9.4654255, -0.07421733, 0.000831489, -1.0343454e-5), float4(9.320236, -0.07101183, 0.00077252457, -9.3314375e-6), float4(9.18123, -0.0680305, 0.0007192519, -8.443248e-6), float4(9.047978, -0.06525198, 0.0006709836, -7.660858e-6), float4(8.920098, -0.06265748, 0.0006271311, -6.9692646e-6), float4(8.797237, -0.060230374, 0.00058718823, -6.3559146e-6), float4(8.679075, -0.05795593, 0.00055071805, -5.8102555e-6), float4(8.565321, -0.055821024, 0.00051734183, -5.323376e-6), float4(8.455706, -0.05381397, 0.00048673004, -4.8877196e-6), float4(8.349987, -0.051924296, 0.00045859517, -4.4968497e-6), float4(8.247937, -0.050142616, 0.0004326854, -4.1452663e-6), float4(8.14935, -0.048460476, 0.00040877942, -3.8282483e-6), float4(8.054033, -0.04687027, 0.00038668237, -3.5417322e-6), float4(7.961812, -0.04536511, 0.000366222, -3.2822063e-6), float4(7.872521, -0.043938763, 0.00034724563, -3.0466267e-6), float4(7.7860084, -0.042585574, 0.00032961776, -2.832348e-6), float4(7.702133, -0.04130039, 0.0003132176, -2.6370622e-6), float4(7.6207643, -0.040078525, 0.00029793737, -2.458752e-6), float4(7.5417795, -0.038915697, 0.00028368065, -2.295648e-6), float4(7.465065, -0.037807986, 0.00027036094, -2.146195e-6), float4(7.3905134, -0.036751807, 0.00025790054, -2.009022e-6), float4(7.3180256, -0.035743862, 0.00024622944, -1.882918e-6), float4(7.247508, -0.034781124, 0.00023528453, -1.7668108e-6), float4(7.1788726, -0.033860806, 0.00022500873, -1.6597485e-6), float4(7.112038, -0.032980334, 0.00021535034, -1.5608846e-6), float4(7.0469265, -0.032137338, 0.00020626248, -1.4694648e-6), float4(6.983465, -0.03132962, 0.00019770255, -1.3848153e-6), float4(6.9215856, -0.030555148, 0.00018963176, -1.3063332e-6), float4(6.8612237, -0.029812036, 0.00018201474, -1.2334781e-6), float4(6.802318, -0.029098539, 0.00017481922, -1.1657647e-6), float4(6.744811, -0.028413026, 0.00016801569, -1.1027564e-6), float4(6.6610546, -0.0548679, 0.0006340294, -8.130863e-6), float4(6.553791, -0.05242639, 0.00058774976, -7.312426e-6), float4(6.451232, -0.05016055, 0.0005460643, -6.596929e-6), float4(6.3530436, -0.048053183, 0.00050840294, -5.968979e-6), float4(6.258924, -0.046089202, 0.0004742796, -5.4158336e-6), float4(6.1686, -0.04425531, 0.0004432782, -4.926882e-6), float4(6.081824, -0.042539753, 0.0004150409, -4.4932503e-6), float4(5.998369, -0.04093212, 0.00038925876, -4.107477e-6), float4(5.9180293, -0.039423134, 0.000365664, -3.7632612e-6), float4(5.840616, -0.03800453, 0.00034402363, -3.4552606e-6), float4(5.765956, -0.036668904, 0.0003241344, -3.1789248e-6), float4(5.6938896, -0.03540962, 0.00030581822, -2.9303644e-6), float4(5.6242704, -0.034220707, 0.00028891873, -2.706242e-6), float4(5.5569634, -0.03309678, 0.00027329806, -2.5036843e-6), float4(5.4918437, -0.032032974, 0.00025883445, -2.3202088e-6), float4(5.4287944, -0.03102488, 0.00024542003, -2.153663e-6), float4(5.3677096, -0.0300685, 0.00023295889, -2.0021769e-6), float4(5.3084884, -0.029160196, 0.00022136571, -1.8641185e-6), float4(5.251039, -0.028296651, 0.00021056428, -1.7380618e-6), float4(5.195274, -0.02747484, 0.0002004864, -1.6227556e-6), float4(5.1411138, -0.026691988, 0.00019107095, -1.5171003e-6), float4(5.088482, -0.025945563, 0.00018226299, -1.4201268e-6), float4(5.0373087, -0.025233233, 0.00017401301, -1.330979e-6), float4(4.987528, -0.02455286, 0.0001662764, -1.2488985e-6), float4(4.9390774, -0.02390247, 0.0001590128, -1.1732125e-6), float4(4.891899, -0.023280248, 0.00015218568, -1.1033227e-6), float4(4.8459387, -0.022684515, 0.00014576188, -1.0386955e-6), float4(4.801144, -0.022113718, 0.00013971128, -9.788547e-7), float4(4.7574677, -0.02156642, 0.00013400646, -9.2337405e-7), float4(4.714864, -0.021041293, 0.00012862244, -8.718715e-7), float4(4.673289, -0.020537095, 0.00012353637, -8.240039e-7), float4(4.6327024, -0.020052679, 0.00011872741, -7.7946254e-7), float4(4.573592, -0.03872165, 0.00044802664, -5.747094e-6), float4(4.4978957, -0.036996413, 0.00041531524, -5.168539e-6), float4(4.4255238, -0.035395343, 0.00038585148, -4.6627565e-6), float4(4.35624, -0.033906285, 0.0003592323, -4.218865e-6), float4(4.289831, -0.03251857, 0.00033511413, -3.827855e-6), float4(4.2261043, -0.0312228, 0.00031320282, -3.4822265e-6), float4(4.164884, -0.03001067, 0.00029324536, -3.1757045e-6), float4(4.106011, -0.028874815, 0.00027502337, -2.9030145e-6), float4(4.0493383, -0.027808681, 0.00025834754, -2.6597027e-6), float4(3.9947336, -0.026806423, 0.0002430532, -2.4419915e-6), float4(3.9420736, -0.025862811, 0.00022899665, -2.2466645e-6), float4(3.8912463, -0.024973154, 0.00021605202, -2.070972e-6), float4(3.8421478, -0.024133228, 0.00020410873, -1.9125546e-6), float4(3.7946827, -0.02333923, 0.00019306937, -1.7693811e-6), float4(3.7487626, -0.02258772, 0.00018284784, -1.6396966e-6), float4(3.7043056, -0.021875583, 0.0001733679, -1.5219796e-6), float4(3.6612358, -0.021199992, 0.00016456174, -1.4149077e-6), float4(3.619483, -0.020558374, 0.00015636907, -1.3173277e-6), float4(3.5789814, -0.019948386, 0.000148736, -1.2282311e-6), float4(3.5396698, -0.019367889, 0.00014161435, -1.1467338e-6), float4(3.5014915, -0.018814925, 0.00013496088, -1.0720584e-6), float4(3.464393, -0.018287702, 0.00012873676, -1.0035196e-6), float4(3.4283245, -0.017784571, 0.00012290703, -9.405124e-7), float4(3.3932395, -0.017304022, 0.000117440126, -8.8250073e-7), float4(3.3590944, -0.01684466, 0.000112307534, -8.2900897e-7), float4(3.3258476, -0.016405202, 0.00010748342, -7.796141e-7), float4(3.293461, -0.01598446, 0.00010294436, -7.339391e-7), float4(3.261898, -0.01558134, 9.866905e-5, -6.9164713e-7), float4(3.2311246, -0.015194823, 9.463812e-5, -6.5243705e-7), float4(3.2011085, -0.01482397, 9.08339e-5, -6.1603873e-7), float4(3.171819, -0.014467906, 8.724026e-5, -5.822097e-7), float4(3.1432273, -0.014125819, 8.384245e-5, -5.507316e-7), float4(3.10159, -0.027274514, 0.00031637572, -4.060551e-6), float4(3.0482745, -0.026056256, 0.00029326408, -3.6516876e-6), float4(2.9973066, -0.024925727, 0.00027244753, -3.294259e-6), float4(2.948519, -0.023874333, 0.0002536412, -2.9805735e-6), float4(2.9017615, -0.022894537, 0.00023660224, -2.7042624e-6), float4(2.8568976, -0.021979697, 0.00022112274, -2.460025e-6), float4(2.8138032, -0.021123946, 0.00020702393, -2.243426e-6), float4(2.7723658, -0.020322077, 0.00019415145, -2.0507373e-6), float4(2.7324822, -0.01956946, 0.00018237151, -1.8788108e-6), float4(2.694058, -0.018861966, 0.00017156775, -1.7249769e-6), float4(2.6570067, -0.0181959, 0.00016163859, -1.5869617e-6), float4(2.621249, -0.017567942, 0.00015249508, -1.4628224e-6), float4(2.5867114, -0.016975114, 0.0001440591, -1.3508912e-6), float4(2.5533268, -0.016414724, 0.00013626178, -1.2497325e-6), float4(2.5210326, -0.015884345, 0.0001290423, -1.1581059e-6), float4(2.489771, -0.015381775, 0.00012234676, -1.0749362e-6), float4(2.4594884, -0.014905016, 0.000116127274, -9.99289e-7), float4(2.4301348, -0.014452252, 0.000110341214, -9.303491e-7), float4(2.4016645, -0.014021826, 0.0001049505, -8.6740374e-7), float4(2.3740337, -0.013612227, 9.99211e-5, -8.0982824e-7), float4(2.3472025, -0.013222071, 9.522244e-5, -7.5707305e-7), float4(2.3211334, -0.012850093, 9.082712e-5, -7.086541e-7), float4(2.295791, -0.012495129, 8.671039e-5, -6.641437e-7), float4(2.2711422, -0.012156111, 8.284998e-5, -6.231631e-7), float4(2.2471564, -0.011832054, 7.922573e-5, -5.8537603e-7), float4(2.2238045, -0.011522051, 7.581939e-5, -5.504837e-7), float4(2.2010593, -0.0112252645, 7.2614406e-5, -5.182196e-7), float4(2.1788952, -0.010940919, 6.9595735e-5, -4.8834585e-7), float4(2.1572878, -0.010668297, 6.6749686e-5, -4.6064946e-7), float4(2.1362147, -0.010406734, 6.406377e-5, -4.349397e-7), float4(2.115654, -0.0101556135, 6.1526596e-5, -4.110451e-7), float4(2.0955856, -0.00991436, 5.9127746e-5, -3.888115e-7), float4(2.0663643, -0.01913965, 0.00022310158, -2.8666036e-6), float4(2.028955, -0.018280597, 0.00020678602, -2.5778306e-6), float4(1.9932007, -0.017483473, 0.00019209138, -2.325394e-6), float4(1.9589839, -0.01674221, 0.00017881645, -2.103859e-6), float4(1.9261982, -0.016051486, 0.00016678967, -1.9087265e-6), float4(1.8947474, -0.0154066095, 0.00015586418, -1.7362504e-6), float4(1.8645439, -0.014803437, 0.0001459137, -1.5832976e-6), float4(1.8355083, -0.0142382905, 0.00013682917, -1.4472341e-6), float4(1.8075676, -0.013707904, 0.00012851611, -1.3258359e-6), float4(1.7806555, -0.013209359, 0.00012089232, -1.2172168e-6), float4(1.7547107, -0.012740046, 0.00011388606, -1.1197706e-6), float4(1.7296773, -0.012297623, 0.000107434505, -1.0321244e-6), float4(1.7055037, -0.011879987, 0.00010148247, -9.5310054e-7), float4(1.6821421, -0.011485238, 9.598133e-5, -8.816846e-7), float4(1.6595486, -0.011111661, 9.088813e-5, -8.170005e-7), float4(1.6376824, -0.0107577015, 8.6164786e-5, -7.5828876e-7), float4(1.6165057, -0.01042195, 8.177751e-5, -7.0488915e-7), float4(1.5959834, -0.010103125, 7.7696175e-5, -6.5622606e-7), float4(1.5760827, -0.009800056, 7.389391e-5, -6.11796e-7), float4(1.5567733, -0.009511676, 7.0346665e-5, -5.7115767e-7), float4(1.5380268, -0.00923701, 6.703287e-5, -5.3392307e-7), float4(1.5198168, -0.008975163, 6.393316e-5, -4.997502e-7), float4(1.5021182, -0.008725315, 6.1030078e-5, -4.6833696e-7), float4(1.484908, -0.008486711, 5.8307884e-5, -4.3941594e-7), float4(1.4681643, -0.008258658, 5.5752353e-5, -4.1274967e-7), float4(1.4518667, -0.008040514, 5.33506e-5, -3.881271e-7), float4(1.435996, -0.007831687, 5.1090934e-5, -3.6536002e-7), float4(1.4205341, -0.007631633, 4.8962735e-5, -3.4428044e-7), float4(1.405464, -0.0074398434, 4.695634e-5, -3.2473798e-7), float4(1.3907696, -0.0072558504, 4.5062934e-5, -3.065979e-7), float4(1.3764358, -0.0070792176, 4.3274475e-5, -2.8973918e-7), float4(1.3624481, -0.006909541, 4.1583604e-5, -2.7405295e-7), float4(1.3420864, -0.013334502, 0.00015688321, -2.0203636e-6), float4(1.3160291, -0.012730475, 0.00014538468, -1.8166505e-6), float4(1.2911354, -0.012170091, 0.0001350296, -1.6385837e-6), float4(1.2673225, -0.01164907, 0.00012567591, -1.4823263e-6), float4(1.2445154, -0.0111636575, 0.00011720258, -1.3447013e-6), float4(1.2226464, -0.010710545, 0.00010950595, -1.2230647e-6), float4(1.2016537, -0.010286809, 0.000102496895, -1.1152046e-6), float4(1.1814812, -0.009889858, 9.609848e-5, -1.0192615e-6), float4(1.1620779, -0.009517387, 9.0244044e-5, -9.3366566e-7), float4(1.1433969, -0.009167339, 8.487557e-5, -8.5708575e-7), float4(1.1253948, -0.008837874, 7.9942474e-5, -7.8838815e-7), float4(1.1080327, -0.008527343, 7.540041e-5, -7.2660396e-7), float4(1.0912739, -0.008234261, 7.121046e-5, -6.709019e-7), float4(1.0750849, -0.007957289, 6.7338326e-5, -6.205662e-7), float4(1.0594348, -0.0076952185, 6.3753694e-5, -5.749786e-7), float4(1.0442948, -0.0074469554, 6.042974e-5, -5.3360327e-7), float4(1.0296384, -0.0072115045, 5.7342593e-5, -4.9597423e-7), float4(1.0154408, -0.0069879633, 5.4471035e-5, -4.6168537e-7), float4(1.0016792, -0.0067755072, 5.1796105e-5, -4.3038153e-7), float4(0.988332, -0.0065733846, 4.9300845e-5, -4.0175132e-7), float4(0.9753792, -0.0063809087, 4.697005e-5, -3.7552098e-7), float4(0.9628023, -0.0061974484, 4.479006e-5, -3.5144933e-7), float4(0.9505838, -0.0060224268, 4.2748576e-5, -3.2932323e-7), float4(0.93870735, -0.005855311, 4.0834493e-5, -3.0895401e-7), float4(0.9271576, -0.0056956136, 3.903779e-5, -2.9017426e-7), float4(0.91592026, -0.0055428827, 3.734938e-5, -2.7283502e-7), float4(0.90498173, -0.005396702, 3.5761022e-5, -2.5680365e-7), float4(0.8943293, -0.005256687, 3.426524e-5, -2.419616e-7), float4(0.88395107, -0.00512248, 3.285521e-5, -2.282029e-7), float4(0.87383574, -0.004993752, 3.1524727e-5, -2.1543245e-7), float4(0.86397266, -0.0048701963, 3.0268126e-5, -2.0356497e-7), float4(0.8543517, -0.004751527, 2.9080215e-5, -1.9252364e-7), float4(0.8403537, -0.009164223, 0.00010968189, -1.4190899e-6), float4(0.8224529, -0.008742006, 0.00010160624, -1.2757313e-6), float4(0.8053653, -0.008350436, 9.4335206e-5, -1.1504392e-6), float4(0.78903276, -0.007986503, 8.7768734e-5, -1.0405092e-6), float4(0.77340263, -0.0076475637, 8.182156e-5, -9.43702e-7), float4(0.7584274, -0.007331293, 7.6420685e-5, -8.581541e-7), float4(0.74406374, -0.0070356345, 7.150335e-5, -7.823067e-7), float4(0.7302723, -0.006758766, 6.70154e-5, -7.148496e-7), float4(0.71701723, -0.0064990656, 6.290987e-5, -6.5467657e-7), float4(0.7042656, -0.0062550884, 5.914596e-5, -6.0084983e-7), float4(0.6919873, -0.006025541, 5.5688033e-5, -5.525707e-7), float4(0.68015456, -0.005809264, 5.25049e-5, -5.091568e-7), float4(0.66874206, -0.0056052133, 4.9569167e-5, -4.7002254e-7), float4(0.65772617, -0.00541245, 4.6856705e-5, -4.3466386e-7), float4(0.6470853, -0.0052301246, 4.434619e-5, -4.0264538e-7), float4(0.6367992, -0.005057467, 4.201874e-5, -3.7358978e-7), float4(0.6268494, -0.0048937807, 3.9857583e-5, -3.4716905e-7), float4(0.61721855, -0.00473843, 3.784778e-5, -3.2309725e-7), float4(0.60789055, -0.0045908373, 3.597601e-5, -3.0112437e-7), float4(0.59885037, -0.004450475, 3.4230343e-5, -2.8103125e-7), float4(0.59008414, -0.00431686, 3.260009e-5, -2.6262524e-7), float4(0.58157873, -0.004189551, 3.1075655e-5, -2.4573654e-7), float4(0.573322, -0.0040681413, 2.9648383e-5, -2.3021525e-7), float4(0.5653025, -0.0039522597, 2.831048e-5, -2.1592858e-7), float4(0.55750954, -0.0038415617, 2.7054895e-5, -2.0275877e-7), float4(0.549933, -0.0037357318, 2.587525e-5, -1.9060104e-7), float4(0.54256356, -0.003634478, 2.4765755e-5, -1.7936206e-7), float4(0.5353922, -0.00353753, 2.3721152e-5, -1.689585e-7), float4(0.52841073, -0.0034446386, 2.2736655e-5, -1.5931576e-7), float4(0.52161115, -0.0033555718, 2.1807906e-5, -1.5036706e-7), float4(0.51498604, -0.003270115, 2.093092e-5, -1.4205236e-7), float4(0.5085284, -0.0031880683, 2.010206e-5, -1.343177e-7), float4(0.49914154, -0.0061419797, 7.5777236e-5, -9.897259e-7), float4(0.48715293, -0.005850384, 7.0146205e-5, -8.893467e-7), float4(0.47572577, -0.005580154, 6.507847e-5, -8.0164517e-7), float4(0.4648195, -0.0053291814, 6.0503848e-5, -7.2472056e-7), float4(0.45439744, -0.005095618, 5.6362514e-5, -6.5700004e-7), float4(0.4444265, -0.004877836, 5.260328e-5, -5.9717456e-7), float4(0.43487653, -0.0046743974, 4.918215e-5, -5.4414943e-7), float4(0.42572019, -0.0044840286, 4.6061148e-5, -4.9700486e-7), float4(0.41693246, -0.004305597, 4.320738e-5, -4.5496424e-7), float4(0.40849054, -0.0041380916, 4.0592247e-5, -4.1736936e-7), float4(0.40037343, -0.0039806096, 3.8190792e-5, -3.8365988e-7), float4(0.39256194, -0.0038323414, 3.598118e-5, -3.5335694e-7), float4(0.3850384, -0.003692559, 3.3944223e-5, -3.2604987e-7), float4(0.3777865, -0.0035606062, 3.206303e-5, -3.0138517e-7), float4(0.37079117, -0.0034358904, 3.0322693e-5, -2.7905753e-7), float4(0.36403847, -0.0033178758, 2.8709992e-5, -2.588025e-7), float4(0.3575155, -0.0032060754, 2.7213197e-5, -2.403901e-7), float4(0.35121033, -0.0031000471, 2.5821864e-5, -2.2362006e-7), float4(0.34511176, -0.0029993884, 2.4526676e-5, -2.0831716e-7), float4(0.33920944, -0.0029037313, 2.33193e-5, -1.9432788e-7), float4(0.3334937, -0.0028127402, 2.2192267e-5, -1.8151732e-7), float4(0.32795557, -0.0027261074, 2.1138867e-5, -1.697666e-7), float4(0.32258657, -0.0026435505, 2.0153064e-5, -1.5897075e-7), float4(0.31737882, -0.0025648104, 1.9229408e-5, -1.4903686e-7), float4(0.31232494, -0.0024896485, 1.8362984e-5, -1.398825e-7), float4(0.307418, -0.002417845, 1.7549337e-5, -1.3143438e-7), float4(0.30265146, -0.002349197, 1.6784426e-5, -1.2362719e-7), float4(0.29801923, -0.002283517, 1.6064587e-5, -1.16402674e-7), float4(0.29351553, -0.0022206316, 1.538648e-5, -1.0970868e-7), float4(0.28913495, -0.0021603801, 1.4747067e-5, -1.034985e-7), float4(0.28487235, -0.0021026132, 1.4143571e-5, -9.773018e-8), float4(0.28072292, -0.0020471925, 1.3573456e-5, -9.2366015e-8), float4(0.27470106, -0.003936363, 5.111038e-5, -6.8013077e-7), float4(0.26702744, -0.0037398308, 4.7242545e-5, -6.105832e-7), float4(0.25973195, -0.0035579677, 4.376487e-5, -5.4985907e-7), float4(0.25278676, -0.003389314, 4.0628507e-5, -4.966319e-7), float4(0.24616675, -0.0032325904, 3.779186e-5, -4.4980428e-7), float4(0.23984921, -0.0030866712, 3.5219342e-5, -4.0846325e-7), float4(0.23381352, -0.0029505633, 3.2880387e-5, -3.7184572e-7), float4(0.22804101, -0.0028233868, 3.0748626e-5, -3.3931067e-7), float4(0.22251455, -0.0027043596, 2.8801225e-5, -3.1031723e-7), float4(0.2172186, -0.002592785, 2.7018346e-5, -2.8440707e-7), float4(0.21213886, -0.002488041, 2.5382687e-5, -2.611902e-7), float4(0.20726225, -0.0023895695, 2.387911e-5, -2.4033346e-7), float4(0.20257674, -0.0022968696, 2.2494332e-5, -2.215513e-7), float4(0.19807123, -0.0022094902, 2.1216658e-5, -2.0459797e-7), float4(0.1937355, -0.0021270236, 2.0035763e-5, -1.8926136e-7), float4(0.1895601, -0.0020491017, 1.8942514e-5, -1.7535774e-7), float4(0.18553628, -0.0019753908, 1.7928798e-5, -1.6272753e-7), float4(0.18165594, -0.001905587, 1.6987402e-5, -1.5123165e-7), float4(0.17791152, -0.0018394147, 1.6111891e-5, -1.407486e-7), float4(0.17429602, -0.0017766218, 1.5296517e-5, -1.3117193e-7), float4(0.17080294, -0.0017169784, 1.4536122e-5, -1.2240812e-7), float4(0.16742615, -0.0016602741, 1.3826085e-5, -1.1437484e-7), float4(0.16416, -0.0016063158, 1.3162243e-5, -1.0699937e-7), float4(0.16099918, -0.0015549266, 1.2540847e-5, -1.002174e-7), float4(0.15793869, -0.0015059436, 1.1958508e-5, -9.397189e-8), float4(0.1549739, -0.0014592166, 1.1412164e-5, -8.821215e-8), float4(0.15210041, -0.0014146075, 1.0899037e-5, -8.289303e-8), float4(0.14931414, -0.0013719886, 1.0416607e-5, -7.797427e-8), float4(0.14661121, -0.0013312416, 9.962581e-6, -7.341984e-8), float4(0.143988, -0.0012922572, 9.534871e-6, -6.919748e-8), float4(0.14144108, -0.0012549341, 9.131575e-6, -6.5278265e-8), float4(0.13896722, -0.0012191781, 8.750951e-6, -6.163615e-8), float4(0.13538681, -0.002336586, 3.2881064e-5, -4.5320238e-7), float4(0.13084161, -0.0022103293, 3.0306168e-5, -4.060787e-7), float4(0.12653899, -0.0020938287, 2.7995457e-5, -3.6499063e-7), float4(0.122460455, -0.0019860966, 2.5915531e-5, -3.2902528e-7), float4(0.11858934, -0.0018862686, 2.4037987e-5, -2.974281e-7), float4(0.11491062, -0.0017935853, 2.2338545e-5, -2.6957196e-7), float4(0.111410685, -0.0017073769, 2.0796371e-5, -2.4493306e-7), float4(0.10807719, -0.0016270519, 1.939352e-5, -2.2307182e-7), float4(0.10489891, -0.0015520845, 1.8114459e-5, -2.0361762e-7), float4(0.10186559, -0.0014820076, 1.6945714e-5, -1.8625667e-7), float4(0.098967895, -0.0014164039, 1.5875545e-5, -1.7072225e-7), float4(0.09619725, -0.0013549002, 1.48936915e-5, -1.5678667e-7), float4(0.09354579, -0.0012971619, 1.3991159e-5, -1.4425495e-7), float4(0.09100629, -0.0012428877, 1.3160037e-5, -1.3295946e-7), float4(0.08857211, -0.0011918064, 1.2393354e-5, -1.2275561e-7), float4(0.086237095, -0.001143673, 1.16849415e-5, -1.13518276e-7), float4(0.083995596, -0.0010982653, 1.1029334e-5, -1.0513888e-7), float4(0.081842355, -0.0010553823, 1.0421672e-5, -9.75229e-8), float4(0.07977251, -0.0010148411, 9.857629e-6, -9.0587804e-8), float4(0.07778154, -0.00097647496, 9.333341e-6, -8.426135e-8), float4(0.07586526, -0.000940132, 8.845349e-6, -7.848015e-8), float4(0.07401975, -0.0009056735, 8.390552e-6, -7.318841e-8), float4(0.072241396, -0.00087297213, 7.966164e-6, -6.833694e-8), float4(0.07052677, -0.0008419116, 7.5696757e-6, -6.388224e-8), float4(0.06887273, -0.0008123849, 7.1988247e-6, -5.97858e-8), float4(0.06727628, -0.0007842935, 6.851566e-6, -5.601338e-8), float4(0.065734655, -0.000757547, 6.526048e-6, -5.2534563e-8), float4(0.06424525, -0.00073206174, 6.220592e-6, -4.93222e-8), float4(0.062805615, -0.0007077606, 5.933673e-6, -4.635205e-8), float4(0.061413463, -0.0006845723, 5.663904e-6, -4.3602427e-8), float4(0.06006663, -0.00066243083, 5.410022e-6, -4.1053873e-8), float4(0.058763083, -0.00064127496, 5.170872e-6, -3.868893e-8), float4(0.056884773, -0.0012225321, 1.9353032e-5, -2.836588e-7), float4(0.0545149, -0.0011484134, 1.7744429e-5, -2.5319105e-7), float4(0.052287064, -0.001080378, 1.6306392e-5, -2.2670228e-7), float4(0.050189756, -0.0010177891, 1.5016932e-5, -2.0358308e-7), float4(0.04821265, -0.00096009107, 1.38573805e-5, -1.8333057e-7), float4(0.04634646, -0.0009067972, 1.28118245e-5, -1.6552761e-7), float4(0.04458281, -0.0008574795, 1.18666385e-5, -1.498264e-7), float4(0.04291414, -0.0008117607, 1.1010108e-5, -1.3593566e-7), float4(0.041333593, -0.0007693071, 1.02321255e-5, -1.2361022e-7), float4(0.039834935, -0.0007298224, 9.523936e-6, -1.1264291e-7), float4(0.0384125, -0.0006930431, 8.87793e-6, -1.0285794e-7), float4(0.037061118, -0.0006587342, 8.287473e-6, -9.410557e-8), float4(0.035776056, -0.00062668533, 7.746764e-6, -8.625777e-8), float4(0.034552995, -0.000596708, 7.250712e-6, -7.920469e-8), float4(0.03338796, -0.00056863273, 6.794838e-6, -7.2851755e-8), float4(0.032277297, -0.00054230704, 6.3751927e-6, -6.71173e-8), float4(0.031217655, -0.00051759306, 5.988281e-6, -6.1930564e-8), float4(0.030205933, -0.0004943662, 5.631005e-6, -5.723007e-8), float4(0.029239275, -0.00047251367, 5.300612e-6, -5.296225e-8), float4(0.028315032, -0.00045193286, 4.9946484e-6, -4.9080302e-8), float4(0.027430758, -0.00043253053, 4.7109243e-6, -4.5543224e-8), float4(0.02658418, -0.0004142218, 4.447481e-6, -4.2315023e-8), float4(0.025773194, -0.0003969291, 4.202562e-6, -3.9363997e-8), float4(0.024995834, -0.00038058154, 3.97459e-6, -3.666219e-8), float4(0.02425028, -0.00036511428, 3.7621446e-6, -3.4184872e-8), float4(0.02353483, -0.00035046777, 3.5639462e-6, -3.1910133e-8), float4(0.022847898, -0.00033658743, 3.3788388e-6, -2.9818512e-8), float4(0.022188004, -0.000323423, 3.205776e-6, -2.7892698e-8), float4(0.02155376, -0.0003109283, 3.0438107e-6, -2.611725e-8), float4(0.020943873, -0.0002990606, 2.8920822e-6, -2.4478386e-8), float4(0.020357126, -0.0002877806, 2.7498093e-6, -2.2963766e-8), float4(0.019792382, -0.00027705193, 2.6162795e-6, -2.156233e-8), float4(0.018984202, -0.00052383944, 9.725706e-6, -1.5723472e-7), float4(0.017974196, -0.0004867584, 8.837187e-6, -1.393348e-7), float4(0.017034939, -0.00045302548, 8.048596e-6, -1.2386228e-7), float4(0.016160112, -0.00042226876, 7.346547e-6, -1.1043572e-7), float4(0.015344095, -0.00039416543, 6.7197325e-6, -9.874162e-8), float4(0.014581869, -0.0003684344, 6.158556e-6, -8.852094e-8), float4(0.013868941, -0.00034483, 5.6548406e-6, -7.955855e-8), float4(0.013201276, -0.00032313686, 5.20159e-6, -7.167496e-8), float4(0.012575245, -0.0003031655, 4.7927933e-6, -6.47197e-8), float4(0.011987578, -0.00028474873, 4.423271e-6, -5.856613e-8), float4(0.011435313, -0.00026773877, 4.088542e-6, -5.3107204e-8), float4(0.010915773, -0.00025200436, 3.7847171e-6, -4.82521e-8), float4(0.010426523, -0.00023742893, 3.5084117e-6, -4.3923464e-8), float4(0.009965354, -0.00022390844, 3.2566695e-6, -4.00552e-8), float4(0.009530249, -0.00021134996, 3.026902e-6, -3.6590613e-8), float4(0.009119368, -0.00019967026, 2.8168372e-6, -3.3480948e-8), float4(0.008731032, -0.00018879463, 2.624474e-6, -3.0684127e-8), float4(0.008363699, -0.00017865589, 2.4480473e-6, -2.8163734e-8), float4(0.008015958, -0.00016919349, 2.2859954e-6, -2.5888165e-8), float4(0.0076865107, -0.00016035278, 2.1369333e-6, -2.3829914e-8), float4(0.007374165, -0.0001520843, 1.9996305e-6, -2.1964986e-8), float4(0.0070778215, -0.0001443433, 1.8729917e-6, -2.027239e-8), float4(0.006796467, -0.00013708908, 1.7560387e-6, -1.873372e-8), float4(0.0065291654, -0.00013028471, 1.6478979e-6, -1.7332807e-8), float4(0.0062750513, -0.00012389653, 1.5477858e-6, -1.60554e-8), float4(0.0060333223, -0.000117893884, 1.4550002e-6, -1.4888927e-8), float4(0.005803237, -0.00011224873, 1.3689091e-6, -1.3822266e-8), float4(0.0055841063, -0.00010693546, 1.2889441e-6, -1.2845559e-8), float4(0.00537529, -0.00010193063, 1.214592e-6, -1.19500525e-8), float4(0.0051761926, -9.721272e-5, 1.1453893e-6, -1.112796e-8), float4(0.004986261, -9.2762e-5, 1.080917e-6, -1.0372339e-8), float4(0.0048049786, -8.8560315e-5, 1.0207948e-6, -9.676995e-9), float4(0.0045482293, -0.00016537713, 3.7529771e-6, -6.98945e-8), float4(0.0042319414, -0.00015117212, 3.36045e-6, -6.11557e-8), float4(0.0039425613, -0.000138437, 3.0164524e-6, -5.3683262e-8), float4(0.003677334, -0.00012699206, 2.714032e-6, -4.7268394e-8), float4(0.0034338364, -0.00011668308, 2.44737e-6, -4.1740837e-8), float4(0.0032099334, -0.00010737714, 2.2115732e-6, -3.6961026e-8), float4(0.0030037363, -9.895934e-5, 2.00251e-6, -3.281397e-8), float4(0.0028135707, -9.132999e-5, 1.8166777e-6, -2.9204465e-8), float4(0.0026379486, -8.4402316e-5, 1.6510946e-6, -2.6053357e-8), float4(0.0024755443, -7.8100595e-5, 1.5032142e-6, -2.3294525e-8), float4(0.0023251735, -7.235851e-5, 1.3708535e-6, -2.0872529e-8), float4(0.0021857761, -6.7117864e-5, 1.252135e-6, -1.8740693e-8), float4(0.002056402, -6.232742e-5, 1.145439e-6, -1.6859579e-8), float4(0.0019361966, -5.7941972e-5, 1.0493641e-6, -1.5195745e-8), float4(0.0018243908, -5.3921543e-5, 9.626938e-7, -1.3720742e-8), float4(0.0017202907, -5.0230694e-5, 8.843698e-7, -1.2410282e-8), float4(0.0016232694, -4.6837933e-5, 8.1346866e-7, -1.1243571e-8), float4(0.001532759, -4.371523e-5, 7.4918273e-7, -1.0202755e-8), float4(0.0014482451, -4.0837585e-5, 6.908037e-7, -9.272457e-9), float4(0.0013692604, -3.8182643e-5, 6.3770915e-7, -8.439398e-9), float4(0.0012953795, -3.573039e-5, 5.893509e-7, -7.6920825e-9), float4(0.0012262156, -3.3462875e-5, 5.452451e-7, -7.020533e-9), float4(0.0011614156, -3.136397e-5, 5.049637e-7, -6.416069e-9), float4(0.001100657, -2.941915e-5, 4.6812735e-7, -5.871119e-9), float4(0.0010436451, -2.7615326e-5, 4.3439923e-7, -5.379067e-9), float4(0.0009901096, -2.594068e-5, 4.0347967e-7, -4.934116e-9), float4(0.0009398034, -2.4384526e-5, 3.7510165e-7, -4.531179e-9), float4(0.00089249905, -2.2937182e-5, 3.4902672e-7, -4.165782e-9), float4(0.000847988, -2.1589874e-5, 3.2504175e-7, -3.8339816e-9), float4(0.0008060782, -2.0334634e-5, 3.0295573e-7, -3.532296e-9), float4(0.0007665929, -1.9164214e-5, 2.8259743e-7, -3.2576466e-9), float4(0.00072936923, -1.807202e-5, 2.6381295e-7, -3.0073048e-9), float4(0.0006774483, -3.313478e-5, 9.534653e-7, -2.1382784e-8), float4(0.0006148264, -2.9566318e-5, 8.3458946e-7, -1.8323824e-8), float4(0.0005588896, -2.643846e-5, 7.325478e-7, -1.5756715e-8), float4(0.00050882023, -2.3689447e-5, 6.4466167e-7, -1.359353e-8), float4(0.0004639141, -2.1267246e-5, 5.687263e-7, -1.1763643e-8), float4(0.00042356286, -1.912784e-5, 5.0291845e-7, -1.0210012e-8), float4(0.00038723927, -1.7233862e-5, 4.4572374e-7, -8.886333e-9), float4(0.00035448512, -1.5553485e-5, 3.9587925e-7, -7.754835e-9), float4(0.00032490114, -1.4059497e-5, 3.5232745e-7, -6.7845694e-9), float4(0.0002981385, -1.2728568e-5, 3.1417957e-7, -5.950064e-9), float4(0.0002738916, -1.15406365e-5, 2.80686e-7, -5.230268e-9), float4(0.0002518922, -1.0478397e-5, 2.5121233e-7, -4.6077178e-9), float4(0.00023190425, -9.5268815e-6, 2.2521986e-7, -4.0678665e-9), float4(0.00021371956, -8.673115e-6, 2.022499e-7, -3.5985581e-9), float4(0.00019715418, -7.905816e-6, 1.8191054e-7, -3.189597e-9), float4(0.00018204523, -7.2151556e-6, 1.638661e-7, -2.832404e-9), float4(0.00016824821, -6.5925487e-6, 1.4782825e-7, -2.5197378e-9), float4(0.0001556347, -6.0304806e-6, 1.3354867e-7, -2.2454676e-9), float4(0.00014409034, -5.52236e-6, 1.2081298e-7, -2.0043878e-9), float4(0.00013351317, -5.062393e-6, 1.0943566e-7, -1.792066e-9), float4(0.00012381207, -4.645479e-6, 9.925578e-8, -1.6047187e-9), float4(0.00011490557, -4.267114e-6, 9.013342e-8, -1.439107e-9), float4(0.00010672059, -3.9233205e-6, 8.194671e-8, -1.2924517e-9), float4(9.9191595e-5, -3.610574e-6, 7.458923e-8, -1.162363e-9), float4(9.225969e-5, -3.3257486e-6, 6.79679e-8, -1.0467801e-9), float4(8.587185e-5, -3.0660676e-6, 6.2001156e-8, -9.439232e-10), float4(7.998031e-5, -2.8290597e-6, 5.6617353e-8, -8.5225055e-10), float4(7.454197e-5, -2.6125226e-6, 5.175348e-8, -7.70425e-10), float4(6.951788e-5, -2.4144904e-6, 4.7354025e-8, -6.97284e-10), float4(6.4872846e-5, -2.233206e-6, 4.336997e-8, -6.3181477e-10), float4(6.0574945e-5, -2.0670968e-6, 3.9757996e-8, -5.731336e-10), float4(5.659528e-5, -1.914753e-6, 3.647974e-8, -5.204679e-10) };
-static float4 MS_EXP_QB[768] = { float4(5.380349e-5, -9.0438135e-7, 8.553779e-9, -6.055752e-11), float4(5.2028467e-5, -8.7088296e-7, 8.198912e-9, -5.7753618e-11), float4(5.0319035e-5, -8.387709e-7, 7.860433e-9, -5.5093576e-11), float4(4.86725e-5, -8.0798134e-7, 7.537504e-9, -5.256925e-11), float4(4.708627e-5, -7.784537e-7, 7.2293336e-9, -5.0173015e-11), float4(4.555788e-5, -7.5013037e-7, 6.935174e-9, -4.789771e-11), float4(4.4084984e-5, -7.2295677e-7, 6.654321e-9, -4.5736605e-11), float4(4.2665324e-5, -6.9688105e-7, 6.3861085e-9, -4.36834e-11), float4(4.129676e-5, -6.7185385e-7, 6.1299064e-9, -4.1732152e-11), float4(3.997724e-5, -6.478285e-7, 5.88512e-9, -3.9877296e-11), float4(3.8704806e-5, -6.247603e-7, 5.6511875e-9, -3.811359e-11), float4(3.747759e-5, -6.026069e-7, 5.427576e-9, -3.6436104e-11), float4(3.6293797e-5, -5.813282e-7, 5.2137827e-9, -3.48402e-11), float4(3.515172e-5, -5.608858e-7, 5.0093316e-9, -3.3321523e-11), float4(3.404972e-5, -5.412432e-7, 4.813771e-9, -3.1875953e-11), float4(3.2986238e-5, -5.223657e-7, 4.6266746e-9, -3.049963e-11), float4(3.195977e-5, -5.042204e-7, 4.447638e-9, -2.9188905e-11), float4(3.0968888e-5, -4.8677566e-7, 4.276277e-9, -2.7940344e-11), float4(3.001222e-5, -4.7000162e-7, 4.1122297e-9, -2.6750708e-11), float4(2.9088453e-5, -4.538697e-7, 3.9551513e-9, -2.561694e-11), float4(2.8196331e-5, -4.3835266e-7, 3.804715e-9, -2.4536165e-11), float4(2.733465e-5, -4.2342458e-7, 3.6606118e-9, -2.350566e-11), float4(2.6502257e-5, -4.0906073e-7, 3.5225471e-9, -2.2522857e-11), float4(2.5698046e-5, -3.952375e-7, 3.3902425e-9, -2.1585338e-11), float4(2.492096e-5, -3.8193238e-7, 3.2634329e-9, -2.0690808e-11), float4(2.4169985e-5, -3.691239e-7, 3.141867e-9, -1.9837111e-11), float4(2.3444149e-5, -3.5679162e-7, 3.025306e-9, -1.9022197e-11), float4(2.2742515e-5, -3.449159e-7, 2.9135232e-9, -1.8244139e-11), float4(2.2064192e-5, -3.334781e-7, 2.806303e-9, -1.7501108e-11), float4(2.1408323e-5, -3.2246038e-7, 2.70344e-9, -1.6791376e-11), float4(2.0774081e-5, -3.1184572e-7, 2.60474e-9, -1.6113305e-11), float4(2.0160682e-5, -3.0161783e-7, 2.510017e-9, -1.5465353e-11), float4(1.9567364e-5, -2.9176115e-7, 2.4190956e-9, -1.484605e-11), float4(1.89934e-5, -2.8226083e-7, 2.3318072e-9, -1.4254011e-11), float4(1.8438092e-5, -2.7310264e-7, 2.247993e-9, -1.3687922e-11), float4(1.790077e-5, -2.64273e-7, 2.1675004e-9, -1.3146538e-11), float4(1.738079e-5, -2.5575892e-7, 2.090185e-9, -1.2628678e-11), float4(1.6877531e-5, -2.4754797e-7, 2.0159092e-9, -1.2133224e-11), float4(1.6390404e-5, -2.3962826e-7, 1.9445414e-9, -1.1659115e-11), float4(1.5918833e-5, -2.3198841e-7, 1.875957e-9, -1.1205346e-11), float4(1.546227e-5, -2.2461751e-7, 1.8100367e-9, -1.0770962e-11), float4(1.502019e-5, -2.1750513e-7, 1.7466667e-9, -1.0355058e-11), float4(1.4592085e-5, -2.1064132e-7, 1.685739e-9, -9.956774e-12), float4(1.4177465e-5, -2.040165e-7, 1.6271501e-9, -9.575295e-12), float4(1.3775865e-5, -1.976215e-7, 1.5708017e-9, -9.2098456e-12), float4(1.33868325e-5, -1.9144758e-7, 1.5165998e-9, -8.859689e-12), float4(1.3009933e-5, -1.854863e-7, 1.4644548e-9, -8.524128e-12), float4(1.264475e-5, -1.7972964e-7, 1.414281e-9, -8.202496e-12), float4(1.2290883e-5, -1.7416986e-7, 1.365997e-9, -7.894164e-12), float4(1.1947945e-5, -1.6879955e-7, 1.3195245e-9, -7.598529e-12), float4(1.1615563e-5, -1.6361163e-7, 1.2747892e-9, -7.315022e-12), float4(1.1293381e-5, -1.5859929e-7, 1.2317198e-9, -7.043099e-12), float4(1.09810535e-5, -1.53756e-7, 1.1902487e-9, -6.7822445e-12), float4(1.0678249e-5, -1.4907552e-7, 1.1503107e-9, -6.5319664e-12), float4(1.0384647e-5, -1.445518e-7, 1.1118438e-9, -6.2917965e-12), float4(1.00999405e-5, -1.4017911e-7, 1.0747889e-9, -6.0612904e-12), float4(9.823833e-6, -1.3595192e-7, 1.039089e-9, -5.8400233e-12), float4(9.55604e-6, -1.318649e-7, 1.00469e-9, -5.627592e-12), float4(9.296284e-6, -1.2791294e-7, 9.715402e-10, -5.4236116e-12), float4(9.044301e-6, -1.2409117e-7, 9.395897e-10, -5.227716e-12), float4(8.799836e-6, -1.2039487e-7, 9.087913e-10, -5.0395556e-12), float4(8.562642e-6, -1.1681954e-7, 8.790995e-10, -4.8587974e-12), float4(8.332479e-6, -1.1336084e-7, 8.5047086e-10, -4.685125e-12), float4(8.109123e-6, -1.1001459e-7, 8.228638e-10, -4.518235e-12), float4(7.8923495e-6, -1.0677678e-7, 7.962384e-10, -4.35784e-12), float4(7.681946e-6, -1.0364358e-7, 7.705566e-10, -4.203664e-12), float4(7.4777076e-6, -1.00611274e-7, 7.4578194e-10, -4.0554443e-12), float4(7.279436e-6, -9.7676306e-8, 7.2187933e-10, -3.9129307e-12), float4(7.0869396e-6, -9.483526e-8, 6.988153e-10, -3.7758846e-12), float4(6.9000344e-6, -9.2084846e-8, 6.765577e-10, -3.644077e-12), float4(6.718542e-6, -8.9421896e-8, 6.550758e-10, -3.5172904e-12), float4(6.5422905e-6, -8.6843364e-8, 6.3434014e-10, -3.3953168e-12), float4(6.3711145e-6, -8.434633e-8, 6.143223e-10, -3.2779575e-12), float4(6.204853e-6, -8.192798e-8, 5.9499533e-10, -3.1650225e-12), float4(6.0433517e-6, -7.95856e-8, 5.7633315e-10, -3.0563306e-12), float4(5.8864616e-6, -7.731657e-8, 5.5831084e-10, -2.9517085e-12), float4(5.734038e-6, -7.511839e-8, 5.4090443e-10, -2.8509905e-12), float4(5.5859423e-6, -7.298864e-8, 5.2409105e-10, -2.7540182e-12), float4(5.4420398e-6, -7.0925e-8, 5.0784865e-10, -2.6606402e-12), float4(5.3022e-6, -6.892521e-8, 4.9215615e-10, -2.570712e-12), float4(5.166298e-6, -6.698713e-8, 4.7699317e-10, -2.484095e-12), float4(5.0342114e-6, -6.510867e-8, 4.6234033e-10, -2.400657e-12), float4(4.9058244e-6, -6.3287835e-8, 4.4817888e-10, -2.3202707e-12), float4(4.781023e-6, -6.152269e-8, 4.3449092e-10, -2.2428155e-12), float4(4.659698e-6, -5.981138e-8, 4.212592e-10, -2.1681751e-12), float4(4.541743e-6, -5.8152104e-8, 4.0846715e-10, -2.0962388e-12), float4(4.427056e-6, -5.6543144e-8, 3.9609888e-10, -2.0268997e-12), float4(4.315538e-6, -5.4982834e-8, 3.841391e-10, -1.9600565e-12), float4(4.2070933e-6, -5.346957e-8, 3.7257317e-10, -1.8956115e-12), float4(4.101629e-6, -5.2001806e-8, 3.6138692e-10, -1.8334715e-12), float4(3.999057e-6, -5.057805e-8, 3.5056685e-10, -1.773547e-12), float4(3.899289e-6, -4.919686e-8, 3.400999e-10, -1.7157523e-12), float4(3.8022417e-6, -4.785685e-8, 3.2997352e-10, -1.6600054e-12), float4(3.7078348e-6, -4.655669e-8, 3.201757e-10, -1.6062276e-12), float4(3.6159893e-6, -4.5295078e-8, 3.106948e-10, -1.5543434e-12), float4(3.5266296e-6, -4.4070774e-8, 3.0151975e-10, -1.5042806e-12), float4(3.4396821e-6, -4.2882576e-8, 2.9263977e-10, -1.45597e-12), float4(3.355076e-6, -4.1729322e-8, 2.8404457e-10, -1.409345e-12), float4(3.2727423e-6, -4.0609898e-8, 2.7572422e-10, -1.3643419e-12), float4(3.1926145e-6, -3.952322e-8, 2.676692e-10, -1.3208997e-12), float4(3.1146283e-6, -3.8468244e-8, 2.5987026e-10, -1.2789596e-12), float4(3.0387212e-6, -3.7443968e-8, 2.5231864e-10, -1.2384654e-12), float4(2.9648327e-6, -3.6449418e-8, 2.4500577e-10, -1.1993631e-12), float4(2.8929041e-6, -3.5483655e-8, 2.3792346e-10, -1.1616009e-12), float4(2.8228794e-6, -3.454577e-8, 2.3106385e-10, -1.1251292e-12), float4(2.7547032e-6, -3.363489e-8, 2.244193e-10, -1.0899001e-12), float4(2.6883224e-6, -3.2750172e-8, 2.1798253e-10, -1.0558678e-12), float4(2.6236855e-6, -3.1890796e-8, 2.1174647e-10, -1.0229884e-12), float4(2.5607428e-6, -3.1055976e-8, 2.0570433e-10, -9.912196e-13), float4(2.4994458e-6, -3.0244944e-8, 1.9984958e-10, -9.605207e-13), float4(2.4397477e-6, -2.9456967e-8, 1.9417593e-10, -9.308529e-13), float4(2.381603e-6, -2.8691332e-8, 1.8867727e-10, -9.0217867e-13), float4(2.324968e-6, -2.7947351e-8, 1.8334777e-10, -8.7446196e-13), float4(2.2697996e-6, -2.722436e-8, 1.7818179e-10, -8.4766824e-13), float4(2.2160568e-6, -2.6521713e-8, 1.7317388e-10, -8.2176426e-13), float4(2.1636997e-6, -2.583879e-8, 1.6831882e-10, -7.967181e-13), float4(2.1126891e-6, -2.5174991e-8, 1.6361153e-10, -7.724991e-13), float4(2.0629873e-6, -2.4529731e-8, 1.5904715e-10, -7.490776e-13), float4(2.014558e-6, -2.3902452e-8, 1.5462098e-10, -7.264254e-13), float4(1.967366e-6, -2.3292607e-8, 1.5032849e-10, -7.04515e-13), float4(1.9213765e-6, -2.2699673e-8, 1.4616529e-10, -6.833203e-13), float4(1.8765563e-6, -2.2123139e-8, 1.4212719e-10, -6.62816e-13), float4(1.8328732e-6, -2.1562515e-8, 1.3821011e-10, -6.4297775e-13), float4(1.790296e-6, -2.1017321e-8, 1.3441011e-10, -6.237823e-13), float4(1.7487939e-6, -2.0487102e-8, 1.3072342e-10, -6.052071e-13), float4(1.7083379e-6, -1.9971408e-8, 1.2714636e-10, -5.8723046e-13), float4(1.6688989e-6, -1.9469807e-8, 1.2367543e-10, -5.698316e-13), float4(1.6304494e-6, -1.8981883e-8, 1.2030722e-10, -5.529905e-13), float4(1.5745718e-6, -3.6549526e-8, 4.6178492e-10, -4.2300135e-12), float4(1.5032864e-6, -3.4752276e-8, 4.3714554e-10, -3.985475e-12), float4(1.4354989e-6, -3.3050704e-8, 4.139272e-10, -3.756186e-12), float4(1.3710236e-6, -3.1439303e-8, 3.9204145e-10, -3.541123e-12), float4(1.3096851e-6, -2.991291e-8, 3.7140582e-10, -3.3393366e-12), float4(1.2513184e-6, -2.8466689e-8, 3.519434e-10, -3.1499451e-12), float4(1.1957679e-6, -2.7096082e-8, 3.335822e-10, -2.97213e-12), float4(1.1428866e-6, -2.5796824e-8, 3.162551e-10, -2.80513e-12), float4(1.0925357e-6, -2.4564907e-8, 2.998994e-10, -2.6482384e-12), float4(1.0445846e-6, -2.3396565e-8, 2.844564e-10, -2.5007975e-12), float4(9.989095e-7, -2.2288255e-8, 2.6987126e-10, -2.3621955e-12), float4(9.553937e-7, -2.1236653e-8, 2.560927e-10, -2.2318631e-12), float4(9.139271e-7, -2.0238629e-8, 2.4307267e-10, -2.1092707e-12), float4(8.744055e-7, -1.9291239e-8, 2.3076624e-10, -1.9939241e-12), float4(8.3673024e-7, -1.8391717e-8, 2.1913132e-10, -1.8853638e-12), float4(8.0080844e-7, -1.7537452e-8, 2.0812851e-10, -1.7831613e-12), float4(7.665519e-7, -1.6725993e-8, 1.9772088e-10, -1.6869168e-12), float4(7.3387747e-7, -1.5955031e-8, 1.8787379e-10, -1.5962574e-12), float4(7.0270625e-7, -1.5222387e-8, 1.785548e-10, -1.5108357e-12), float4(6.729637e-7, -1.4526012e-8, 1.6973345e-10, -1.430327e-12), float4(6.445793e-7, -1.3863972e-8, 1.6138119e-10, -1.3544281e-12), float4(6.174862e-7, -1.3234446e-8, 1.5347122e-10, -1.2828561e-12), float4(5.91621e-7, -1.26357165e-8, 1.4597838e-10, -1.2153465e-12), float4(5.6692386e-7, -1.20661605e-8, 1.3887906e-10, -1.1516521e-12), float4(5.4333793e-7, -1.1524251e-8, 1.3215104e-10, -1.0915419e-12), float4(5.208094e-7, -1.1008543e-8, 1.2577347e-10, -1.0347996e-12), float4(4.992872e-7, -1.05176765e-8, 1.197268e-10, -9.812233e-13), float4(4.78723e-7, -1.0050365e-8, 1.1399255e-10, -9.306236e-13), float4(4.5907086e-7, -9.605392e-9, 1.0855343e-10, -8.8282344e-13), float4(4.402873e-7, -9.181612e-9, 1.0339314e-10, -8.3765693e-13), float4(4.22331e-7, -8.777939e-9, 9.849634e-11, -7.9496875e-13), float4(4.051628e-7, -8.393351e-9, 9.3848616e-11, -7.546133e-13), float4(3.8874552e-7, -8.026876e-9, 8.9436375e-11, -7.1645413e-13), float4(3.7304383e-7, -7.6776e-9, 8.5246823e-11, -6.8036337e-13), float4(3.5802424e-7, -7.3446556e-9, 8.126792e-11, -6.4622103e-13), float4(3.4365488e-7, -7.027224e-9, 7.7488314e-11, -6.139146e-13), float4(3.299055e-7, -6.7245294e-9, 7.389731e-11, -5.833385e-13), float4(3.1674742e-7, -6.435837e-9, 7.0484826e-11, -5.5439366e-13), float4(3.041533e-7, -6.1604535e-9, 6.724136e-11, -5.2698693e-13), float4(2.9209718e-7, -5.8977196e-9, 6.4157936e-11, -5.01031e-13), float4(2.805544e-7, -5.647013e-9, 6.1226114e-11, -4.7644375e-13), float4(2.695015e-7, -5.407743e-9, 5.84379e-11, -4.531481e-13), float4(2.5891617e-7, -5.179351e-9, 5.5785775e-11, -4.3107147e-13), float4(2.487772e-7, -4.9613065e-9, 5.3262627e-11, -4.1014574e-13), float4(2.3906438e-7, -4.7531077e-9, 5.0861745e-11, -3.9030685e-13), float4(2.2975853e-7, -4.5542774e-9, 4.857679e-11, -3.7149445e-13), float4(2.2084133e-7, -4.364365e-9, 4.6401775e-11, -3.5365187e-13), float4(2.122954e-7, -4.1829415e-9, 4.4331042e-11, -3.367257e-13), float4(2.0410418e-7, -4.009601e-9, 4.2359248e-11, -3.2066572e-13), float4(1.9625188e-7, -3.843958e-9, 4.0481337e-11, -3.0542458e-13), float4(1.8872346e-7, -3.6856465e-9, 3.869253e-11, -2.9095771e-13), float4(1.8150463e-7, -3.5343193e-9, 3.6988305e-11, -2.772232e-13), float4(1.7458174e-7, -3.3896463e-9, 3.5364395e-11, -2.6418142e-13), float4(1.6794182e-7, -3.2513152e-9, 3.381675e-11, -2.5179514e-13), float4(1.6157246e-7, -3.119028e-9, 3.234155e-11, -2.4002922e-13), float4(1.5546186e-7, -2.9925025e-9, 3.0935168e-11, -2.288505e-13), float4(1.4959879e-7, -2.8714704e-9, 2.9594178e-11, -2.1822774e-13), float4(1.4397249e-7, -2.7556766e-9, 2.831533e-11, -2.0813145e-13), float4(1.3857274e-7, -2.6448788e-9, 2.7095551e-11, -1.9853383e-13), float4(1.333898e-7, -2.5388467e-9, 2.5931932e-11, -1.8940862e-13), float4(1.2841433e-7, -2.437361e-9, 2.4821709e-11, -1.8073103e-13), float4(1.2363746e-7, -2.3402138e-9, 2.3762268e-11, -1.7247767e-13), float4(1.1905072e-7, -2.2472064e-9, 2.2751133e-11, -1.6462644e-13), float4(1.14646e-7, -2.158151e-9, 2.178595e-11, -1.5715647e-13), float4(1.104156e-7, -2.0728679e-9, 2.0864496e-11, -1.5004804e-13), float4(1.06352125e-7, -1.9911865e-9, 1.9984655e-11, -1.432825e-13), float4(1.0244856e-7, -1.9129445e-9, 1.9144422e-11, -1.3684225e-13), float4(9.869816e-8, -1.8379872e-9, 1.83419e-11, -1.3071063e-13), float4(9.509452e-8, -1.7661674e-9, 1.757528e-11, -1.248719e-13), float4(9.163149e-8, -1.697345e-9, 1.6842854e-11, -1.1931116e-13), float4(8.830323e-8, -1.6313866e-9, 1.6142991e-11, -1.1401433e-13), float4(8.510412e-8, -1.5681649e-9, 1.5474155e-11, -1.0896807e-13), float4(8.2028826e-8, -1.5075589e-9, 1.4834875e-11, -1.04159784e-13), float4(7.907222e-8, -1.449453e-9, 1.4223763e-11, -9.957751e-14), float4(7.622942e-8, -1.3937375e-9, 1.3639494e-11, -9.5209966e-14), float4(7.349575e-8, -1.3403072e-9, 1.3080814e-11, -9.104644e-14), float4(7.086673e-8, -1.2890625e-9, 1.254653e-11, -8.707679e-14), float4(6.83381e-8, -1.2399078e-9, 1.2035506e-11, -8.3291426e-14), float4(6.5905766e-8, -1.1927526e-9, 1.1546665e-11, -7.968125e-14), float4(6.356582e-8, -1.1475099e-9, 1.10789815e-11, -7.623764e-14), float4(6.131451e-8, -1.1040971e-9, 1.0631481e-11, -7.295242e-14), float4(5.9148263e-8, -1.0624356e-9, 1.0203236e-11, -6.9817856e-14), float4(5.706365e-8, -1.0224498e-9, 9.793366e-12, -6.68266e-14), float4(5.5057395e-8, -9.840682e-10, 9.40103e-12, -6.3971696e-14), float4(5.3126353e-8, -9.472221e-10, 9.025432e-12, -6.124653e-14), float4(5.1267527e-8, -9.118461e-10, 8.665813e-12, -5.864485e-14), float4(4.9478032e-8, -8.7787777e-10, 8.321448e-12, -5.6160704e-14), float4(4.7755115e-8, -8.4525753e-10, 7.991649e-12, -5.3788452e-14), float4(4.609614e-8, -8.1392837e-10, 7.675763e-12, -5.1522744e-14), float4(4.4498577e-8, -7.838359e-10, 7.373164e-12, -4.9358497e-14), float4(4.2960007e-8, -7.5492823e-10, 7.0832576e-12, -4.729089e-14), float4(4.147811e-8, -7.2715567e-10, 6.8054794e-12, -4.5315334e-14), float4(4.0050658e-8, -7.004709e-10, 6.5392895e-12, -4.3427488e-14), float4(3.867553e-8, -6.7482847e-10, 6.284174e-12, -4.1623216e-14), float4(3.735068e-8, -6.5018513e-10, 6.0396436e-12, -3.9898586e-14), float4(3.607415e-8, -6.264995e-10, 5.8052317e-12, -3.8249873e-14), float4(3.484407e-8, -6.03732e-10, 5.580493e-12, -3.6673528e-14), float4(3.3658637e-8, -5.818448e-10, 5.3650044e-12, -3.5166186e-14), float4(3.2516127e-8, -5.608016e-10, 5.1583607e-12, -3.3724634e-14), float4(3.1414892e-8, -5.4056803e-10, 4.960177e-12, -3.2345834e-14), float4(3.0353338e-8, -5.2111077e-10, 4.770085e-12, -3.1026885e-14), float4(2.932995e-8, -5.023983e-10, 4.5877343e-12, -2.9765033e-14), float4(2.8343269e-8, -4.844003e-10, 4.4127904e-12, -2.8557655e-14), float4(2.7391893e-8, -4.670877e-10, 4.2449334e-12, -2.740226e-14), float4(2.647448e-8, -4.5043289e-10, 4.083859e-12, -2.6296475e-14), float4(2.558974e-8, -4.3440926e-10, 3.929276e-12, -2.523804e-14), float4(2.4736439e-8, -4.1899142e-10, 3.7809074e-12, -2.4224809e-14), float4(2.3913387e-8, -4.0415507e-10, 3.638488e-12, -2.3254734e-14), float4(2.3119446e-8, -3.8987688e-10, 3.5017644e-12, -2.2325866e-14), float4(2.2353522e-8, -3.761346e-10, 3.370495e-12, -2.1436352e-14), float4(2.1614564e-8, -3.6290684e-10, 3.2444492e-12, -2.0584425e-14), float4(2.0901565e-8, -3.5017317e-10, 3.1234065e-12, -1.9768404e-14), float4(2.0213555e-8, -3.37914e-10, 3.0071564e-12, -1.8986682e-14), float4(1.9549606e-8, -3.2611056e-10, 2.8954974e-12, -1.8237736e-14), float4(1.8908821e-8, -3.1474487e-10, 2.7882377e-12, -1.7520109e-14), float4(1.8290345e-8, -3.0379974e-10, 2.6851932e-12, -1.6832413e-14), float4(1.7693354e-8, -2.932586e-10, 2.5861886e-12, -1.6173328e-14), float4(1.7117053e-8, -2.831057e-10, 2.491056e-12, -1.5541593e-14), float4(1.6560682e-8, -2.7332583e-10, 2.3996345e-12, -1.4936006e-14), float4(1.602351e-8, -2.6390448e-10, 2.3117714e-12, -1.4355423e-14), float4(1.5504835e-8, -2.548277e-10, 2.2273195e-12, -1.3798749e-14), float4(1.5003979e-8, -2.4608213e-10, 2.1461383e-12, -1.32649425e-14), float4(1.4520293e-8, -2.3765492e-10, 2.0680942e-12, -1.275301e-14), float4(1.4053155e-8, -2.2953385e-10, 1.9930583e-12, -1.2262003e-14), float4(1.3601962e-8, -2.217071e-10, 1.920908e-12, -1.1791017e-14), float4(1.31661375e-8, -2.1416335e-10, 1.8515259e-12, -1.1339188e-14), float4(1.2745127e-8, -2.068918e-10, 1.7847993e-12, -1.0905691e-14), float4(1.2338396e-8, -1.9988199e-10, 1.7206207e-12, -1.0489739e-14), float4(1.1753956e-8, -3.7967274e-10, 6.5161995e-12, -7.918133e-14), float4(1.1020051e-8, -3.545371e-10, 6.0589827e-12, -7.3296654e-14), float4(1.03346345e-8, -3.3116135e-10, 5.6356703e-12, -6.787376e-14), float4(9.694319e-9, -3.0941527e-10, 5.243608e-12, -6.287445e-14), float4(9.0959675e-9, -2.8917888e-10, 4.880361e-12, -5.826381e-14), float4(8.536672e-9, -2.703414e-10, 4.543693e-12, -5.4010002e-14), float4(8.013737e-9, -2.5280072e-10, 4.2315526e-12, -5.00839e-14), float4(7.524667e-9, -2.3646257e-10, 3.942054e-12, -4.645889e-14), float4(7.0671438e-9, -2.212399e-10, 3.673465e-12, -4.3110643e-14), float4(6.639018e-9, -2.0705232e-10, 3.4241921e-12, -4.0016896e-14), float4(6.238294e-9, -1.9382554e-10, 3.1927707e-12, -3.715726e-14), float4(5.8631207e-9, -1.814909e-10, 2.9778528e-12, -3.451308e-14), float4(5.511778e-9, -1.6998492e-10, 2.7781974e-12, -3.206725e-14), float4(5.182668e-9, -1.5924886e-10, 2.592662e-12, -2.980411e-14), float4(4.8743054e-9, -1.4922838e-10, 2.4201945e-12, -2.770929e-14), float4(4.585311e-9, -1.398732e-10, 2.259825e-12, -2.5769607e-14), float4(4.3144004e-9, -1.3113671e-10, 2.1106589e-12, -2.3972969e-14), float4(4.0603805e-9, -1.2297582e-10, 1.971872e-12, -2.2308273e-14), float4(3.82214e-9, -1.1535052e-10, 1.842704e-12, -2.0765323e-14), float4(3.598646e-9, -1.08223784e-10, 1.7224524e-12, -1.933475e-14), float4(3.3889356e-9, -1.0156126e-10, 1.6104691e-12, -1.8007942e-14), float4(3.1921128e-9, -9.533109e-11, 1.5061558e-12, -1.6776985e-14), float4(3.0073428e-9, -8.950371e-11, 1.4089593e-12, -1.5634595e-14), float4(2.8338478e-9, -8.405171e-11, 1.3183688e-12, -1.457407e-14), float4(2.6709026e-9, -7.894961e-11, 1.2339116e-12, -1.3589243e-14), float4(2.5178317e-9, -7.417377e-11, 1.1551508e-12, -1.2674431e-14), float4(2.3740048e-9, -6.970223e-11, 1.0816824e-12, -1.1824405e-14), float4(2.2388338e-9, -6.551457e-11, 1.0131321e-12, -1.10343406e-14), float4(2.1117699e-9, -6.159184e-11, 9.491537e-13, -1.0299794e-14), float4(1.9923014e-9, -5.7916387e-11, 8.8942666e-13, -9.616664e-15), float4(1.8799504e-9, -5.4471816e-11, 8.336538e-13, -8.981172e-15), float4(1.7742705e-9, -5.1242868e-11, 7.815599e-13, -8.389826e-15), float4(1.6748447e-9, -4.821534e-11, 7.3288993e-13, -7.839406e-15), float4(1.5812837e-9, -4.537603e-11, 6.874073e-13, -7.326937e-15), float4(1.4932233e-9, -4.271262e-11, 6.448928e-13, -6.8496717e-15), float4(1.4103236e-9, -4.0213662e-11, 6.0514267e-13, -6.4050704e-15), float4(1.3322662e-9, -3.7868476e-11, 5.6796825e-13, -5.9907866e-15), float4(1.2587538e-9, -3.5667115e-11, 5.3319415e-13, -5.6046497e-15), float4(1.189508e-9, -3.3600314e-11, 5.0065757e-13, -5.2446535e-15), float4(1.1242687e-9, -3.165942e-11, 4.702073e-13, -4.9089396e-15), float4(1.0627919e-9, -2.9836383e-11, 4.417029e-13, -4.5957903e-15), float4(1.0048495e-9, -2.8123682e-11, 4.150138e-13, -4.303614e-15), float4(9.502282e-10, -2.65143e-11, 3.900186e-13, -4.030937e-15), float4(8.9872787e-10, -2.5001688e-11, 3.6660448e-13, -3.7763943e-15), float4(8.5016105e-10, -2.357974e-11, 3.4466646e-13, -3.5387211e-15), float4(8.0435225e-10, -2.224275e-11, 3.2410687e-13, -3.316745e-15), float4(7.61137e-10, -2.0985384e-11, 3.0483485e-13, -3.1093785e-15), float4(7.2036094e-10, -1.9802668e-11, 2.8676578e-13, -2.915614e-15), float4(6.8187966e-10, -1.8689947e-11, 2.698209e-13, -2.7345159e-15), float4(6.455574e-10, -1.7642875e-11, 2.5392682e-13, -2.5652162e-15), float4(6.112671e-10, -1.6657387e-11, 2.3901521e-13, -2.4069093e-15), float4(5.788893e-10, -1.5729681e-11, 2.250224e-13, -2.2588471e-15), float4(5.4831223e-10, -1.4856205e-11, 2.1188899e-13, -2.1203352e-15), float4(5.194306e-10, -1.4033632e-11, 1.9955967e-13, -1.9907277e-15), float4(4.921458e-10, -1.325885e-11, 1.8798282e-13, -1.8694252e-15), float4(4.663653e-10, -1.25289475e-11, 1.7711029e-13, -1.7558702e-15), float4(4.4200194e-10, -1.1841198e-11, 1.6689719e-13, -1.6495443e-15), float4(4.1897408e-10, -1.119305e-11, 1.573016e-13, -1.5499656e-15), float4(3.9720494e-10, -1.0582111e-11, 1.4828438e-13, -1.4566855e-15), float4(3.7662234e-10, -1.0006143e-11, 1.3980902e-13, -1.3692872e-15), float4(3.5715847e-10, -9.463047e-12, 1.3184141e-13, -1.2873821e-15), float4(3.3874956e-10, -8.9508565e-12, 1.2434967e-13, -1.2106089e-15), float4(3.2133565e-10, -8.467729e-12, 1.1730403e-13, -1.1386309e-15), float4(3.0486041e-10, -8.011937e-12, 1.1067668e-13, -1.0711347e-15), float4(2.8927077e-10, -7.581858e-12, 1.04441615e-13, -1.0078283e-15), float4(2.7451685e-10, -7.1759742e-12, 9.8574516e-14, -9.484393e-16), float4(2.605517e-10, -6.7928592e-12, 9.305265e-14, -8.927143e-16), float4(2.4733113e-10, -6.431175e-12, 8.7854745e-14, -8.4041667e-16), float4(2.3481356e-10, -6.0896665e-12, 8.2960914e-14, -7.9132587e-16), float4(2.229598e-10, -5.767155e-12, 7.835253e-14, -7.4523626e-16), float4(2.11733e-10, -5.4625336e-12, 7.401218e-14, -7.0195595e-16), float4(2.0109843e-10, -5.174764e-12, 6.992354e-14, -6.613058e-16), float4(1.9102336e-10, -4.9028693e-12, 6.607134e-14, -6.231187e-16), float4(1.8147699e-10, -4.645934e-12, 6.244128e-14, -5.872385e-16), float4(1.7243024e-10, -4.403096e-12, 5.901994e-14, -5.535196e-16), float4(1.6385575e-10, -4.1735456e-12, 5.5794785e-14, -5.218259e-16), float4(1.5572771e-10, -3.956522e-12, 5.2754045e-14, -4.920302e-16), float4(1.4802179e-10, -3.751311e-12, 4.9886686e-14, -4.640137e-16), float4(1.4071504e-10, -3.5572387e-12, 4.7182378e-14, -4.3766534e-16), float4(1.3378583e-10, -3.373673e-12, 4.463142e-14, -4.1288137e-16), float4(1.2721374e-10, -3.200019e-12, 4.222472e-14, -3.8956467e-16), float4(1.2097952e-10, -3.0357169e-12, 3.995375e-14, -3.6762453e-16), float4(1.15064985e-10, -2.88024e-12, 3.7810514e-14, -3.46976e-16), float4(1.09453e-10, -2.7330926e-12, 3.5787494e-14, -3.2753967e-16), float4(1.0412737e-10, -2.593808e-12, 3.387765e-14, -3.0924122e-16), float4(9.907282e-11, -2.461947e-12, 3.2074356e-14, -2.92011e-16), float4(9.4274914e-11, -2.3370962e-12, 3.037141e-14, -2.7578397e-16), float4(8.972002e-11, -2.2188657e-12, 2.8762972e-14, -2.6049908e-16), float4(8.539528e-11, -2.1068887e-12, 2.7243563e-14, -2.460992e-16), float4(8.128853e-11, -2.0008192e-12, 2.5808035e-14, -2.3253087e-16), float4(7.738828e-11, -1.900332e-12, 2.445155e-14, -2.197439e-16), float4(7.3683684e-11, -1.80512e-12, 2.3169566e-14, -2.0769137e-16), float4(7.016448e-11, -1.7148936e-12, 2.1957804e-14, -1.963292e-16), float4(6.682097e-11, -1.6293803e-12, 2.0812252e-14, -1.8561614e-16), float4(6.3643986e-11, -1.5483228e-12, 1.972913e-14, -1.7551349e-16), float4(6.062487e-11, -1.4714785e-12, 1.8704885e-14, -1.6598493e-16), float4(5.775542e-11, -1.398619e-12, 1.7736177e-14, -1.5699645e-16), float4(5.502788e-11, -1.3295281e-12, 1.681986e-14, -1.4851607e-16), float4(5.243493e-11, -1.2640024e-12, 1.595298e-14, -1.4051385e-16), float4(4.9969626e-11, -1.2018498e-12, 1.513275e-14, -1.3296165e-16), float4(4.7625404e-11, -1.1428891e-12, 1.4356551e-14, -1.2583308e-16), float4(4.5396055e-11, -1.0869489e-12, 1.3621915e-14, -1.1910334e-16), float4(4.3275702e-11, -1.033868e-12, 1.29265215e-14, -1.1274916e-16), float4(4.1258778e-11, -9.834936e-13, 1.2268183e-14, -1.06748704e-16), float4(3.934002e-11, -9.356817e-13, 1.1644838e-14, -1.01081405e-16), float4(3.7514436e-11, -8.9029625e-13, 1.10545465e-14, -9.5727984e-17), float4(3.57773e-11, -8.4720886e-13, 1.0495481e-14, -9.0670324e-17), float4(3.4124148e-11, -8.06298e-13, 9.965918e-15, -8.589138e-17), float4(3.2550736e-11, -7.67449e-13, 9.464233e-15, -8.1375143e-17), float4(3.105305e-11, -7.305534e-13, 8.988896e-15, -7.7106554e-17), float4(2.962729e-11, -6.9550875e-13, 8.538464e-15, -7.307146e-17), float4(2.8269847e-11, -6.622182e-13, 8.111576e-15, -6.925656e-17), float4(2.6977308e-11, -6.305902e-13, 7.7069495e-15, -6.564931e-17), float4(2.5746434e-11, -6.0053807e-13, 7.323373e-15, -6.223794e-17), float4(2.4574159e-11, -5.7197996e-13, 6.959706e-15, -5.9011376e-17), float4(2.3457571e-11, -5.448385e-13, 6.6148703e-15, -5.595917e-17), float4(2.239391e-11, -5.190402e-13, 6.2878504e-15, -5.3071514e-17), float4(2.138056e-11, -4.94516e-13, 5.977686e-15, -5.0339165e-17), float4(2.0415041e-11, -4.712001e-13, 5.6834725e-15, -4.775342e-17), float4(1.9494996e-11, -4.490306e-13, 5.4043544e-15, -4.530609e-17), float4(1.8618194e-11, -4.2794864e-13, 5.139525e-15, -4.2989447e-17), float4(1.7782513e-11, -4.0789862e-13, 4.888222e-15, -4.079623e-17), float4(1.6985946e-11, -3.8882794e-13, 4.6497255e-15, -3.871959e-17), float4(1.6226583e-11, -3.706867e-13, 4.4233556e-15, -3.6753074e-17), float4(1.5502611e-11, -3.5342768e-13, 4.20847e-15, -3.4890597e-17), float4(1.4812313e-11, -3.3700622e-13, 4.0044618e-15, -3.3126433e-17), float4(1.41540555e-11, -3.2137997e-13, 3.8107576e-15, -3.1455177e-17), float4(1.35262895e-11, -3.0650878e-13, 3.6268155e-15, -2.9871732e-17), float4(1.26386115e-11, -5.710703e-13, 1.3474503e-14, -2.2122919e-16), float4(1.1548633e-11, -5.1974945e-13, 1.221289e-14, -1.996548e-16), float4(1.0556418e-11, -4.7322405e-13, 1.1074056e-14, -1.8026637e-16), float4(9.652851e-12, -4.3102834e-13, 1.0045587e-14, -1.6283392e-16), float4(8.829698e-12, -3.9274362e-13, 9.116373e-15, -1.4715255e-16), float4(8.079521e-12, -3.5799323e-13, 8.276464e-15, -1.3303963e-16), float4(7.395596e-12, -3.2643818e-13, 7.5169465e-15, -1.2033233e-16), float4(6.7718426e-12, -2.9777323e-13, 6.8298304e-15, -1.0888534e-16), float4(6.20276e-12, -2.7172345e-13, 6.2079494e-15, -9.856891e-17), float4(5.683371e-12, -2.4804106e-13, 5.6448736e-15, -8.926719e-17), float4(5.2091673e-12, -2.2650263e-13, 5.13483e-15, -8.0876605e-17), float4(4.776066e-12, -2.0690662e-13, 4.6726357e-15, -7.330456e-17), float4(4.380367e-12, -1.8907118e-13, 4.2536313e-15, -6.646823e-17), float4(4.018717e-12, -1.728321e-13, 3.873628e-15, -6.029345e-17), float4(3.6880737e-12, -1.5804107e-13, 3.5288602e-15, -5.4713835e-17), float4(3.3856774e-12, -1.4456409e-13, 3.2159376e-15, -4.966989e-17), float4(3.1090226e-12, -1.3228e-13, 2.931809e-15, -4.5108283e-17), float4(2.8558354e-12, -1.2107924e-13, 2.673726e-15, -4.098119e-17), float4(2.6240496e-12, -1.108627e-13, 2.4392126e-15, -3.7245706e-17), float4(2.4117884e-12, -1.01540656e-13, 2.2260363e-15, -3.3863312e-17), float4(2.217345e-12, -9.303188e-14, 2.0321843e-15, -3.0799405e-17), float4(2.0391679e-12, -8.526277e-14, 1.85584e-15, -2.8022914e-17), float4(1.8758456e-12, -7.816665e-14, 1.6953645e-15, -2.5505891e-17), float4(1.7260931e-12, -7.168307e-14, 1.5492774e-15, -2.3223213e-17), float4(1.5887415e-12, -6.5757214e-14, 1.4162415e-15, -2.1152272e-17), float4(1.4627258e-12, -6.0339334e-14, 1.2950484e-15, -1.9272723e-17), float4(1.3470758e-12, -5.538429e-14, 1.1846055e-15, -1.7566239e-17), float4(1.2409074e-12, -5.08511e-14, 1.0839248e-15, -1.6016316e-17), float4(1.143415e-12, -4.670255e-14, 9.921122e-16, -1.4608077e-17), float4(1.0538635e-12, -4.2904807e-14, 9.083586e-16, -1.3328108e-17), float4(9.715824e-13, -3.9427137e-14, 8.3193104e-16, -1.2164311e-17), float4(8.959602e-13, -3.624159e-14, 7.6216586e-16, -1.1105769e-17), float4(8.2643836e-13, -3.3322744e-14, 6.9846157e-16, -1.0142625e-17), float4(7.625069e-13, -3.0647465e-14, 6.402728e-16, -9.265979e-18), float4(7.037002e-13, -2.8194705e-14, 5.871051e-16, -8.46779e-18), float4(6.495926e-13, -2.5945292e-14, 5.385098e-16, -7.74079e-18), float4(5.997951e-13, -2.3881769e-14, 4.9407993e-16, -7.078408e-18), float4(5.5395223e-13, -2.1988227e-14, 4.534458e-16, -6.474699e-18), float4(5.117386e-13, -2.0250167e-14, 4.1627167e-16, -5.9242866e-18), float4(4.728567e-13, -1.8654373e-14, 3.8225268e-16, -5.4223017e-18), float4(4.370343e-13, -1.718879e-14, 3.5111162e-16, -4.964336e-18), float4(4.040221e-13, -1.5842418e-14, 3.225966e-16, -4.5463964e-18), float4(3.7359186e-13, -1.4605221e-14, 2.9647845e-16, -4.164864e-18), float4(3.4553455e-13, -1.3468038e-14, 2.7254868e-16, -3.8164583e-18), float4(3.1965863e-13, -1.2422501e-14, 2.5061765e-16, -3.498205e-18), float4(2.9578857e-13, -1.1460968e-14, 2.3051258e-16, -3.207405e-18), float4(2.7376343e-13, -1.0576455e-14, 2.1207628e-16, -2.9416094e-18), float4(2.5343567e-13, -9.762578e-15, 1.9516544e-16, -2.698595e-18), float4(2.3466992e-13, -9.013505e-15, 1.7964955e-16, -2.4763434e-18), float4(2.1734203e-13, -8.323894e-15, 1.6540959e-16, -2.2730204e-18), float4(2.0133798e-13, -7.688866e-15, 1.5233706e-16, -2.0869593e-18), float4(1.8655317e-13, -7.103952e-15, 1.4033302e-16, -1.9166453e-18), float4(1.728915e-13, -6.565061e-15, 1.2930715e-16, -1.760701e-18), float4(1.6026475e-13, -6.06845e-15, 1.1917706e-16, -1.6178737e-18), float4(1.485918e-13, -5.610688e-15, 1.09867525e-16, -1.4870226e-18), float4(1.3779819e-13, -5.188633e-15, 1.01309826e-16, -1.3671102e-18), float4(1.278154e-13, -4.7994056e-15, 9.344122e-17, -1.2571917e-18), float4(1.1858045e-13, -4.440366e-15, 8.620435e-17, -1.1564066e-18), float4(1.1003542e-13, -4.109095e-15, 7.954681e-17, -1.0639706e-18), float4(1.0212704e-13, -3.803372e-15, 7.342068e-17, -9.791694e-19), float4(9.480626e-14, -3.521161e-15, 6.778212e-17, -9.013515e-19), float4(8.8027974e-14, -3.2605932e-15, 6.259104e-17, -8.299231e-19), float4(8.175061e-14, -3.0199537e-15, 5.781076e-17, -7.6434213e-19), float4(7.593592e-14, -2.7976672e-15, 5.3407697e-17, -7.0411434e-19), float4(7.054867e-14, -2.592288e-15, 4.9351098e-17, -6.4878846e-19), float4(6.5556386e-14, -2.4024872e-15, 4.5612807e-17, -5.9795253e-19), float4(6.0929153e-14, -2.2270444e-15, 4.216703e-17, -5.512303e-19), float4(5.663939e-14, -2.0648374e-15, 3.8990128e-17, -5.082782e-19), float4(5.2661668e-14, -1.914835e-15, 3.6060436e-17, -4.6878197e-19), float4(4.8972548e-14, -1.7760888e-15, 3.3358093e-17, -4.3245473e-19), float4(4.5550393e-14, -1.6477264e-15, 3.0864878e-17, -3.9903394e-19), float4(4.2375256e-14, -1.5289453e-15, 2.8564085e-17, -3.682796e-19), float4(3.942872e-14, -1.4190072e-15, 2.6440385e-17, -3.3997216e-19), float4(3.6693786e-14, -1.3172322e-15, 2.4479704e-17, -3.139107e-19), float4(3.4154767e-14, -1.2229945e-15, 2.2669126e-17, -2.8991132e-19), float4(3.179717e-14, -1.1357179e-15, 2.0996792e-17, -2.6780567e-19), float4(2.960761e-14, -1.0548716e-15, 1.9451807e-17, -2.4743953e-19), float4(2.7573723e-14, -9.799666e-16, 1.8024163e-17, -2.286717e-19), float4(2.5684084e-14, -9.105522e-16, 1.6704663e-17, -2.113728e-19), float4(2.392813e-14, -8.46213e-16, 1.5484854e-17, -1.9542417e-19), float4(2.2296103e-14, -7.865661e-16, 1.4356965e-17, -1.8071712e-19), float4(2.0778973e-14, -7.312584e-16, 1.3313851e-17, -1.6715195e-19), float4(1.9368394e-14, -6.799641e-16, 1.2348936e-17, -1.5463723e-19), float4(1.8056643e-14, -6.323828e-16, 1.1456174e-17, -1.4308904e-19), float4(1.6836574e-14, -5.8823707e-16, 1.06300004e-17, -1.3243041e-19), float4(1.5701575e-14, -5.4727106e-16, 9.86529e-18, -1.225907e-19), float4(1.4645528e-14, -5.0924854e-16, 9.157329e-18, -1.13505e-19), float4(1.3662764e-14, -4.7395136e-16, 8.501772e-18, -1.05113744e-19), float4(1.274804e-14, -4.4117793e-16, 7.894621e-18, -9.736221e-20), float4(1.1896495e-14, -4.107422e-16, 7.3321885e-18, -9.0200117e-20), float4(1.1103628e-14, -3.8247222e-16, 6.8110788e-18, -8.358126e-20), float4(1.0365268e-14, -3.5620904e-16, 6.3281616e-18, -7.7463164e-20), float4(9.677552e-15, -3.3180575e-16, 5.8805515e-18, -7.180678e-20), float4(9.036896e-15, -3.0912655e-16, 5.4655864e-18, -6.657619e-20), float4(8.43998e-15, -2.8804584e-16, 5.0808126e-18, -6.173836e-20), float4(7.8837244e-15, -2.6844748e-16, 4.723965e-18, -5.726289e-20), float4(7.365274e-15, -2.50224e-16, 4.3929556e-18, -5.312182e-20), float4(6.881979e-15, -2.3327594e-16, 4.0858553e-18, -4.9289402e-20), float4(6.4313814e-15, -2.1751134e-16, 3.8008846e-18, -4.5741925e-20), float4(6.0112014e-15, -2.0284498e-16, 3.5363998e-18, -4.2457565e-20), float4(5.619322e-15, -1.8919802e-16, 3.2908837e-18, -3.9416216e-20), float4(5.253778e-15, -1.7649742e-16, 3.062934e-18, -3.6599356e-20), float4(4.9127466e-15, -1.6467557e-16, 2.8512558e-18, -3.3989908e-20), float4(4.594532e-15, -1.5366979e-16, 2.6546525e-18, -3.1572143e-20), float4(4.2975623e-15, -1.4342205e-16, 2.472018e-18, -2.933156e-20), float4(4.0203745e-15, -1.3387855e-16, 2.3023298e-18, -2.7254784e-20), float4(3.761612e-15, -1.2498941e-16, 2.1446428e-18, -2.5329479e-20), float4(3.5200116e-15, -1.1670843e-16, 1.998082e-18, -2.3544268e-20), float4(3.2944012e-15, -1.08992725e-16, 1.8618394e-18, -2.1888653e-20), float4(3.0836904e-15, -1.01802554e-16, 1.7351664e-18, -2.0352945e-20), float4(2.8868653e-15, -9.510104e-17, 1.6173711e-18, -1.8928204e-20), float4(2.7029834e-15, -8.8853975e-17, 1.5078123e-18, -1.7606173e-20), float4(2.5311676e-15, -8.3029624e-17, 1.4058973e-18, -1.6379228e-20), float4(2.3706028e-15, -7.759852e-17, 1.3110767e-18, -1.5240326e-20), float4(2.2205297e-15, -7.253333e-17, 1.2228422e-18, -1.4182968e-20), float4(2.0802424e-15, -6.7808653e-17, 1.1407226e-18, -1.32011386e-20), float4(1.9490838e-15, -6.3400926e-17, 1.0642816e-18, -1.2289287e-20), float4(1.8264421e-15, -5.928825e-17, 9.93115e-19, -1.1442278e-20), float4(1.7117477e-15, -5.545029e-17, 9.268481e-19, -1.0655367e-20), float4(1.6044703e-15, -5.1868155e-17, 8.651336e-19, -9.924163e-21), float4(1.5041162e-15, -4.8524287e-17, 8.076497e-19, -9.244609e-21), float4(1.4102253e-15, -4.5402372e-17, 7.5409776e-19, -8.61295e-21), float4(1.3223689e-15, -4.2487242e-17, 7.04201e-19, -8.0257134e-21), float4(1.2401478e-15, -3.9764802e-17, 6.577027e-19, -7.479682e-21), float4(1.16319e-15, -3.7221936e-17, 6.143645e-19, -6.971883e-21), float4(1.0911486e-15, -3.4846456e-17, 5.739656e-19, -6.4995604e-21), float4(1.0237002e-15, -3.262702e-17, 5.363007e-19, -6.0601647e-21), float4(9.605435e-16, -3.0553084e-17, 5.0117943e-19, -5.6513347e-21), float4(8.7324565e-16, -5.5387395e-17, 1.8120661e-18, -4.0732894e-20), float4(7.6940153e-16, -4.860877e-17, 1.583844e-18, -3.5454354e-20), float4(6.782429e-16, -4.268224e-17, 1.3851398e-18, -3.087814e-20), float4(5.9817816e-16, -3.7497814e-17, 1.2120336e-18, -2.6908334e-20), float4(5.278208e-16, -3.296008e-17, 1.0611402e-18, -2.3462458e-20), float4(4.659622e-16, -2.8986215e-17, 9.295336e-19, -2.0469544e-20), float4(4.1154822e-16, -2.5504283e-17, 8.1468326e-19, -1.786849e-20), float4(3.6365896e-16, -2.2451771e-17, 7.143997e-19, -1.560665e-20), float4(3.2149125e-16, -1.9774317e-17, 6.267868e-19, -1.363863e-20), float4(2.8434332e-16, -1.7424622e-17, 5.5020167e-19, -1.1925272e-20), float4(2.5160182e-16, -1.536151e-17, 4.8322004e-19, -1.0432769e-20), float4(2.2273025e-16, -1.3549109e-17, 4.2460623e-19, -9.131915e-21), float4(1.9725918e-16, -1.1956157e-17, 3.732878e-19, -7.997468e-21), float4(1.7477759e-16, -1.05553896e-17, 3.283332e-19, -7.0075955e-21), float4(1.5492544e-16, -9.323017e-18, 2.8893287e-19, -6.143399e-21), float4(1.3738716e-16, -8.238273e-18, 2.5438296e-19, -5.3885162e-21), float4(1.2188607e-16, -7.2830134e-18, 2.24071e-19, -4.7287674e-21), float4(1.08179395e-16, -6.441386e-18, 1.9746388e-19, -4.1518594e-21), float4(9.605405e-17, -5.6995255e-18, 1.7409721e-19, -3.647126e-21), float4(8.5322906e-17, -5.045303e-18, 1.5356631e-19, -3.2053111e-21), float4(7.5821526e-17, -4.468101e-18, 1.3551829e-19, -2.8183734e-21), float4(6.740538e-17, -3.9586213e-18, 1.1964532e-19, -2.4793255e-21), float4(5.994735e-17, -3.5087165e-18, 1.0567863e-19, -2.1820918e-21), float4(5.3335577e-17, -3.1112436e-18, 9.338354e-20, -1.9213869e-21), float4(4.747161e-17, -2.7599386e-18, 8.255497e-20, -1.6926097e-21), float4(4.2268724e-17, -2.4493035e-18, 7.3013624e-20, -1.4917531e-21), float4(3.7650515e-17, -2.1745118e-18, 6.4602664e-20, -1.315325e-21), float4(3.3549622e-17, -1.9313245e-18, 5.718484e-20, -1.1602813e-21), float4(2.9906642e-17, -1.7160155e-18, 5.0639978e-20, -1.023966e-21), float4(2.6669165e-17, -1.5253098e-18, 4.48628e-20, -9.040613e-22), float4(2.3790929e-17, -1.3563259e-18, 3.9761044e-20, -7.985431e-22), float4(2.1231078e-17, -1.2065283e-18, 3.5253798e-20, -7.0564327e-22), float4(1.8953519e-17, -1.0736852e-18, 3.1270083e-20, -6.238159e-22), float4(1.692635e-17, -9.5583e-19, 2.7747602e-20, -5.5170927e-22), float4(1.5121366e-17, -8.512304e-19, 2.4631652e-20, -4.881406e-22), float4(1.3513615e-17, -7.5835893e-19, 2.1874168e-20, -4.320745e-22), float4(1.2081014e-17, -6.7586844e-19, 1.9432914e-20, -3.826041e-22), float4(1.0804016e-17, -6.0257026e-19, 1.7270743e-20, -3.3893486e-22), float4(9.665307e-18, -5.374152e-19, 1.5354981e-20, -3.003701e-22), float4(8.6495464e-18, -4.794767e-19, 1.3656868e-20, -2.6629897e-22), float4(7.743138e-18, -4.2793607e-19, 1.2151086e-20, -2.3618528e-22), float4(6.9340214e-18, -3.820698e-19, 1.0815327e-20, -2.0955846e-22), float4(6.2115035e-18, -3.4123816e-19, 9.629933e-21, -1.8600516e-22), float4(5.5660913e-18, -3.0487525e-19, 8.577575e-21, -1.651622e-22), float4(4.9893582e-18, -2.7248027e-19, 7.642968e-21, -1.4671032e-22), float4(4.4738216e-18, -2.4360994e-19, 6.8126216e-21, -1.3036874e-22), float4(4.012832e-18, -2.1787164e-19, 6.0746315e-21, -1.1589043e-22), float4(3.60048e-18, -1.9491749e-19, 5.4184817e-21, -1.03057975e-22), float4(3.231512e-18, -1.744392e-19, 4.834883e-21, -9.167988e-23), float4(2.9012553e-18, -1.5616341e-19, 4.3156246e-21, -8.158747e-23), float4(2.6055523e-18, -1.3984765e-19, 3.8534467e-21, -7.2632083e-23), float4(2.3407021e-18, -1.2527678e-19, 3.441928e-21, -6.468264e-23), float4(2.1034097e-18, -1.122598e-19, 3.075386e-21, -5.7623525e-23), float4(1.8907405e-18, -1.00627116e-19, 2.7487908e-21, -5.1352718e-23), float4(1.7000792e-18, -9.0228086e-20, 2.4576879e-21, -4.578015e-23), float4(1.5290953e-18, -8.092884e-20, 2.1981305e-21, -4.0826288e-23), float4(1.3757103e-18, -7.261035e-20, 1.966621e-21, -3.6420856e-23), float4(1.2380709e-18, -6.516678e-20, 1.7600592e-21, -3.250175e-23), float4(1.114523e-18, -5.850399e-20, 1.5756946e-21, -2.9014055e-23), float4(1.0035904e-18, -5.253819e-20, 1.4110869e-21, -2.5909198e-23), float4(9.039555e-19, -4.7194787e-20, 1.2640707e-21, -2.3144198e-23), float4(8.1444084e-19, -4.2407356e-20, 1.132723e-21, -2.0681011e-23), float4(7.33995e-19, -3.8116725e-20, 1.0153358e-21, -1.8485942e-23), float4(6.6167806e-19, -3.427016e-20, 9.103915e-22, -1.6529152e-23), float4(5.9664977e-19, -3.082066e-20, 8.165413e-22, -1.4784187e-23), float4(5.3815874e-19, -2.7726296e-20, 7.325858e-22, -1.3227603e-23), float4(4.8553284e-19, -2.4949679e-20, 6.574583e-22, -1.1838606e-23), float4(4.3817055e-19, -2.2457443e-20, 5.9020947e-22, -1.0598747e-23), float4(3.9553342e-19, -2.0219802e-20, 5.299946e-22, -9.4916565e-24), float4(3.571394e-19, -1.8210161e-20, 4.7606143e-22, -8.502799e-24), float4(3.2255665e-19, -1.6404767e-20, 4.277399e-22, -7.619267e-24), float4(2.9139836e-19, -1.4782396e-20, 3.844332e-22, -6.829592e-24), float4(2.6331775e-19, -1.3324076e-20, 3.456092e-22, -6.123583e-24), float4(2.3800403e-19, -1.2012848e-20, 3.107936e-22, -5.4921794e-24), float4(2.1517845e-19, -1.08335465e-20, 2.7956334e-22, -4.927324e-24), float4(1.9459097e-19, -9.772602e-21, 2.5154106e-22, -4.4218474e-24), float4(1.7601726e-19, -8.8178705e-21, 2.2638993e-22, -3.9693706e-24), float4(1.5925595e-19, -7.958485e-21, 2.0380927e-22, -3.564215e-24), float4(1.4412627e-19, -7.184712e-21, 1.8353061e-22, -3.2013232e-24), float4(1.3046586e-19, -6.4878356e-21, 1.6531412e-22, -2.8761898e-24), float4(1.1812889e-19, -5.8600447e-21, 1.489455e-22, -2.5848006e-24), float4(1.069843e-19, -5.2943404e-21, 1.3423319e-22, -2.3235772e-24), float4(9.691433e-20, -4.784448e-21, 1.2100595e-22, -2.0893289e-24), float4(8.7813074e-20, -4.3247398e-21, 1.091106e-22, -1.87921e-24), float4(7.958529e-20, -3.9101696e-21, 9.841011e-23, -1.690681e-24), float4(7.214533e-20, -3.536209e-21, 8.878186e-23, -1.5214756e-24), float4(6.5416105e-20, -3.1987927e-21, 8.0116076e-23, -1.3695708e-24), float4(5.932824e-20, -2.8942724e-21, 7.231448e-23, -1.2331595e-24), float4(5.3819275e-20, -2.6193718e-21, 6.5289025e-23, -1.1106275e-24), float4(4.8832973e-20, -2.3711472e-21, 5.896084e-23, -1.0005325e-24), float4(4.431867e-20, -2.1469543e-21, 5.325924e-23, -9.015852e-25), float4(4.0230724e-20, -1.9444167e-21, 4.8120837e-23, -8.1263274e-25), float4(3.6528e-20, -1.7613973e-21, 4.3488826e-23, -7.3264397e-25), float4(3.317341e-20, -1.595975e-21, 3.931223e-23, -6.606965e-25), float4(3.013352e-20, -1.4464217e-21, 3.5545318e-23, -5.9596484e-25), float4(2.7378182e-20, -1.3111826e-21, 3.2147054e-23, -5.377099e-25), float4(2.4880184e-20, -1.1888585e-21, 2.9080594e-23, -4.8527005e-25), float4(2.261498e-20, -1.0781895e-21, 2.6312852e-23, -4.3805254e-25), float4(2.0560414e-20, -9.780419e-22, 2.3814114e-23, -3.9552633e-25), float4(1.8696482e-20, -8.873942e-22, 2.1557685e-23, -3.572156e-25), float4(1.7005121e-20, -8.053259e-22, 1.9519573e-23, -3.2269369e-25), float4(1.5470014e-20, -7.3100814e-22, 1.767821e-23, -2.9157808e-25), float4(1.4076422e-20, -6.636934e-22, 1.6014206e-23, -2.6352562e-25), float4(1.2811022e-20, -6.02708e-22, 1.4510118e-23, -2.382285e-25), float4(1.16617765e-20, -5.474443e-22, 1.3150259e-23, -2.1541048e-25), float4(1.0617797e-20, -4.973542e-22, 1.1920509e-23, -1.9482352e-25), float4(9.669241e-21, -4.5194334e-22, 1.080816e-23, -1.76245e-25), float4(8.807203e-21, -4.1076538e-22, 9.801773e-24, -1.594749e-25), float4(8.023627e-21, -3.734176e-22, 8.891042e-24, -1.4433358e-25), float4(7.3112224e-21, -3.395363e-22, 8.066689e-24, -1.3065956e-25), float4(6.66339e-21, -3.0879313e-22, 7.3203515e-24, -1.1830775e-25), float4(6.0741565e-21, -2.8089133e-22, 6.644494e-24, -1.0714766e-25), float4(5.53811e-21, -2.555629e-22, 6.0323243e-24, -9.706196e-26), float4(5.0503512e-21, -2.325656e-22, 5.477717e-24, -8.79451e-26), float4(4.60644e-21, -2.1168049e-22, 4.9751485e-24, -7.970211e-26), float4(4.2023534e-21, -1.9270954e-22, 4.519636e-24, -7.2247536e-26), float4(3.8344454e-21, -1.7547377e-22, 4.1066844e-24, -6.5504415e-26), float4(3.49941e-21, -1.5981118e-22, 3.732235e-24, -5.940348e-26), float4(3.19425e-21, -1.4557526e-22, 3.3926257e-24, -5.388233e-26), float4(2.9162467e-21, -1.326334e-22, 3.0845481e-24, -4.8884752e-26), float4(2.662934e-21, -1.2086558e-22, 2.8050156e-24, -4.4360092e-26), float4(2.4320744e-21, -1.1016314e-22, 2.55133e-24, -4.02627e-26), float4(2.2216369e-21, -1.0042765e-22, 2.3210526e-24, -3.6551408e-26), float4(2.0297786e-21, -9.156999e-23, 2.1119804e-24, -3.318911e-26), float4(1.854826e-21, -8.35094e-23, 1.922121e-24, -3.014233e-26), float4(1.6952586e-21, -7.617272e-23, 1.7496734e-24, -2.7380863e-26), float4(1.5496967e-21, -6.949361e-23, 1.59300885e-24, -2.4877457e-26), float4(1.416886e-21, -6.341196e-23, 1.4506538e-24, -2.260752e-26), float4(1.239114e-21, -1.1058371e-22, 5.0470816e-24, -1.5679356e-25), float4(1.0369238e-21, -9.217711e-23, 4.190151e-24, -1.29641e-25), float4(8.683286e-22, -7.689001e-23, 3.481349e-24, -1.0727512e-25), float4(7.2764515e-22, -6.418417e-23, 2.8946103e-24, -8.8837053e-26), float4(6.1016874e-22, -5.36159e-23, 2.4085377e-24, -7.362472e-26), float4(5.1200203e-22, -4.481911e-23, 2.0055518e-24, -6.106377e-26), float4(4.29914e-22, -3.7491555e-23, 1.671197e-24, -5.0683906e-26), float4(3.6122385e-22, -3.1383462e-23, 1.393578e-24, -4.2099732e-26), float4(3.0370572e-22, -2.6288267e-23, 1.1628965e-24, -3.4995124e-26), float4(2.5551015e-22, -2.2035028e-23, 9.71077e-25, -2.9110598e-26), float4(2.1509927e-22, -1.8482151e-23, 8.1145714e-25, -2.4232958e-26), float4(1.8119335e-22, -1.5512276e-23, 6.78537e-25, -2.0186915e-26), float4(1.5272678e-22, -1.3028051e-23, 5.6777223e-25, -1.6828221e-26), float4(1.2881156e-22, -1.094867e-23, 4.7540555e-25, -1.4038083e-26), float4(1.0870722e-22, -9.207e-24, 3.9832787e-25, -1.1718592e-26), float4(9.1795843e-23, -7.747238e-24, 3.339645e-25, -9.788987e-27), float4(7.756146e-23, -6.5229603e-24, 2.8018192e-25, -8.182606e-27), float4(6.5572927e-23, -5.49552e-24, 2.3521069e-25, -6.844376e-27), float4(5.546974e-23, -4.632722e-24, 1.9758237e-25, -5.7287688e-27), float4(4.6950272e-23, -3.9077286e-24, 1.6607743e-25, -4.798118e-27), float4(3.976197e-23, -3.2981507e-24, 1.3968234e-25, -4.021238e-27), float4(3.3693256e-23, -2.7852996e-24, 1.1755417e-25, -3.37229e-27), float4(2.8566752e-23, -2.3535643e-24, 9.8991406e-26, -2.8298496e-27), float4(2.423367e-23, -1.989896e-24, 8.3409813e-26, -2.3761417e-27), float4(2.056911e-23, -1.6833803e-24, 7.032251e-26, -1.9964067e-27), float4(1.746817e-23, -1.4248833e-24, 5.932346e-26, -1.6783815e-27), float4(1.4842692e-23, -1.2067547e-24, 5.0073855e-26, -1.4118698e-27), float4(1.2618537e-23, -1.0225841e-24, 4.2290747e-26, -1.18838785e-27), float4(1.0733321e-23, -8.669959e-25, 3.5737738e-26, -1.0008725e-27), float4(9.134522e-24, -7.3547958e-25, 3.0217163e-26, -8.434392e-28), float4(7.777893e-24, -6.242485e-25, 2.5563646e-26, -7.1118184e-28), float4(6.6261366e-24, -5.3012163e-25, 2.1638744e-26, -6.000079e-28), float4(5.6477964e-24, -4.504249e-25, 1.8326484e-26, -5.06501e-28), float4(4.8163248e-24, -3.8290929e-25, 1.5529651e-26, -4.278073e-28), float4(4.109307e-24, -3.2568219e-25, 1.316672e-26, -3.6154159e-28), float4(3.5078053e-24, -2.7714976e-25, 1.1169263e-26, -3.0570897e-28), float4(2.9958117e-24, -2.3596925e-25, 9.479824e-27, -2.5864002e-28), float4(2.559786e-24, -2.0100857e-25, 8.0501276e-27, -2.189367e-28), float4(2.1882708e-24, -1.713129e-25, 6.8395866e-27, -1.8542766e-28), float4(1.8715646e-24, -1.4607634e-25, 5.8140593e-27, -1.5713081e-28), float4(1.6014488e-24, -1.2461837e-25, 4.9448093e-27, -1.3322232e-28), float4(1.3709574e-24, -1.0636399e-25, 4.207635e-27, -1.1301061e-28), float4(1.1741829e-24, -9.0827164e-26, 3.5821438e-27, -9.5914886e-29), float4(1.0061126e-24, -7.759676e-26, 3.0511422e-27, -8.144704e-29), float4(8.624914e-25, -6.632484e-26, 2.6001264e-27, -6.9196647e-29), float4(7.39705e-25, -5.671682e-26, 2.2168542e-27, -5.8818406e-29), float4(6.3468213e-25, -4.8523124e-26, 1.890987e-27, -5.0021646e-29), float4(5.448114e-25, -4.1532217e-26, 1.6137897e-27, -4.2561535e-29), float4(4.6787163e-25, -3.5564706e-26, 1.3778768e-27, -3.623174e-29), float4(4.0197233e-25, -3.046838e-26, 1.1770019e-27, -3.0858294e-29), float4(3.455039e-25, -2.6114026e-26, 1.0058785e-27, -2.6294418e-29), float4(2.9709512e-25, -2.2391903e-26, 8.600302e-28, -2.2416215e-29), float4(2.555773e-25, -1.9208754e-26, 7.3566475e-28, -1.911905e-29), float4(2.1995392e-25, -1.64853e-26, 6.2956787e-28, -1.6314503e-29), float4(1.8937482e-25, -1.4154101e-26, 5.3901387e-28, -1.392782e-29), float4(1.6311446e-25, -1.2157773e-26, 4.616899e-28, -1.1895769e-29), float4(1.4055323e-25, -1.0447454e-26, 3.9563276e-28, -1.01648326e-29), float4(1.2116185e-25, -8.981526e-27, 3.3917511e-28, -8.689696e-30), float4(1.0448797e-25, -7.724519e-27, 2.9090019e-28, -7.43197e-30), float4(9.014476e-26, -6.646193e-27, 2.4960353e-28, -6.359116e-30), float4(7.780136e-26, -5.720753e-27, 2.1426074e-28, -5.4435383e-30), float4(6.7174575e-26, -4.9261852e-27, 1.8400016e-28, -4.6618255e-30), float4(5.8021965e-26, -4.2436946e-27, 1.5807964e-28, -3.994104e-30), float4(5.0135836e-26, -3.6572273e-27, 1.3586712e-28, -3.423496e-30), float4(4.333823e-26, -3.1530643e-27, 1.1682399e-28, -2.9356604e-30), float4(3.747657e-26, -2.7194772e-27, 1.0049108e-28, -2.5184066e-30), float4(3.2419992e-26, -2.346434e-27, 8.647675e-29, -2.1613668e-30), float4(2.805622e-26, -2.0253509e-27, 7.4446834e-29, -1.8557189e-30), float4(2.4288873e-26, -1.7488794e-27, 6.411604e-29, -1.5939534e-30), float4(2.103518e-26, -1.5107264e-27, 5.5240726e-29, -1.3696741e-30), float4(1.8224034e-26, -1.3055001e-27, 4.761272e-29, -1.1774317e-30), float4(1.5794325e-26, -1.1285786e-27, 4.1054065e-29, -1.0125807e-30), float4(1.3693505e-26, -9.759988e-28, 3.5412582e-29, -8.711594e-31), float4(1.1876379e-26, -8.443608e-28, 3.0558074e-29, -7.497878e-31), float4(1.0304055e-26, -7.3074693e-28, 2.6379107e-29, -6.455806e-31), float4(8.9430534e-27, -6.3265195e-28, 2.2780257e-29, -5.560741e-31), float4(7.764543e-27, -5.479241e-28, 1.9679784e-29, -4.7916342e-31), float4(6.7436845e-27, -4.7471453e-28, 1.7007639e-29, -4.130495e-31), float4(5.8590706e-27, -4.114338e-28, 1.470376e-29, -3.5619414e-31), float4(5.0922454e-27, -3.567153e-28, 1.271664e-29, -3.0728149e-31), float4(4.4272892e-27, -3.0938307e-28, 1.1002078e-29, -2.6518548e-31), float4(3.8504667e-27, -2.6842526e-28, 9.5221324e-30, -2.2894208e-31), float4(3.349922e-27, -2.3297057e-28, 8.244223e-30, -1.9772553e-31), float4(2.9154182e-27, -2.0226863e-28, 7.140361e-30, -1.7082839e-31), float4(2.5381122e-27, -1.7567288e-28, 6.1864906e-30, -1.4764414e-31), float4(2.2103626e-27, -1.5262601e-28, 5.3619304e-30, -1.2765275e-31), float4(1.9255642e-27, -1.3264747e-28, 4.6488932e-30, -1.1040805e-31), float4(1.6780048e-27, -1.1532274e-28, 4.032073e-30, -9.552714e-32), float4(1.4627436e-27, -1.002941e-28, 3.4982968e-30, -8.268128e-32), float4(1.2755045e-27, -8.72528e-29, 3.0362195e-30, -7.15881e-32), float4(1.1125861e-27, -7.593218e-29, 2.6360703e-30, -6.200499e-32), float4(9.70783e-28, -6.610188e-29, 2.2894282e-30, -5.37234e-32), float4(8.473184e-28, -5.756285e-29, 1.9890342e-30, -4.6564005e-32), float4(7.3978604e-28, -5.0143e-29, 1.7286288e-30, -4.0372547e-32), float4(6.4609995e-28, -4.369351e-29, 1.5028109e-30, -3.5016266e-32), float4(5.644513e-28, -3.8085635e-29, 1.3069205e-30, -3.0380884e-32), float4(4.9327096e-28, -3.3207955e-29, 1.136934e-30, -2.6367975e-32), float4(4.3119727e-28, -2.896402e-29, 9.8937645e-31, -2.2892751e-32), float4(3.7704833e-28, -2.52703e-29, 8.612459e-31, -1.9882135e-32), float4(3.2979774e-28, -2.2054436e-29, 7.4994795e-31, -1.7273125e-32), float4(2.8855402e-28, -1.9253714e-29, 6.5323956e-31, -1.5011382e-32), float4(2.5254252e-28, -1.6813776e-29, 5.691809e-31, -1.3050025e-32), float4(2.2108997e-28, -1.468748e-29, 4.9609374e-31, -1.1348591e-32), float4(1.9361091e-28, -1.2833932e-29, 4.3252564e-31, -9.8721454e-33), float4(1.6959618e-28, -1.1217646e-29, 3.7721912e-31, -8.590516e-33), float4(1.4860278e-28, -9.8078186e-30, 3.2908526e-31, -7.477632e-33), float4(1.3024518e-28, -8.577703e-30, 2.8718068e-31, -6.510962e-33), float4(1.1418771e-28, -7.5040655e-30, 2.5068776e-31, -5.6710245e-33), float4(1.0013811e-28, -6.56672e-30, 2.1889776e-31, -4.940972e-33), float4(8.7841725e-29, -5.748119e-30, 1.9119606e-31, -4.3062256e-33), float4(7.7076685e-29, -5.0330075e-30, 1.6704949e-31, -3.7541693e-33), float4(6.764959e-29, -4.4081185e-30, 1.459954e-31, -3.27388e-33), float4(5.93918e-29, -3.8619082e-30, 1.2763217e-31, -2.8558975e-33), float4(5.215623e-29, -3.3843314e-30, 1.1161106e-31, -2.4920264e-33), float4(4.5814572e-29, -2.9666427e-30, 9.7629185e-32, -2.1751634e-33), float4(4.0254834e-29, -2.6012276e-30, 8.542336e-32, -1.8991514e-33), float4(3.5379255e-29, -2.2814523e-30, 7.476484e-32, -1.6586508e-33), float4(3.110247e-29, -2.0015372e-30, 6.545474e-32, -1.4490293e-33), float4(2.7349905e-29, -1.7564443e-30, 5.732011e-32, -1.2662673e-33), float4(2.4056416e-29, -1.5417816e-30, 5.0210483e-32, -1.1068756e-33), float4(2.1165057e-29, -1.3537184e-30, 4.399491e-32, -9.678247e-34), float4(1.8626048e-29, -1.188913e-30, 3.8559415e-32, -8.46483e-34), float4(1.6395852e-29, -1.0444495e-30, 3.3804743e-32, -7.4056424e-34), float4(1.4436393e-29, -9.177823e-31, 2.9644445e-32, -6.4808103e-34), float4(1.2714347e-29, -8.066889e-31, 2.6003196e-32, -5.673059e-34), float4(1.1200554e-29, -7.092282e-31, 2.2815354e-32, -4.967363e-34), float4(9.8694814e-30, -6.2370433e-31, 2.0023684e-32, -4.350653e-34), float4(8.698771e-30, -5.4863514e-31, 1.757828e-32, -3.8115542e-34) };
-static float4 MS_EXP_FAR[64] = { float4(0.07111587, -0.002246514, 0.00010573132, -5.497686e-6), float4(2.9870606e-7, -1.6718072e-8, 9.44299e-10, 0.0), float4(0.06700608, -0.0018811737, 7.877816e-5, -3.648073e-6), float4(1.7665366e-7, -8.806663e-9, 4.4379203e-10, 0.0), float4(0.06353223, -0.0016048107, 6.0520677e-5, -2.5256554e-6), float4(1.1027937e-7, -4.9554725e-9, 2.2536348e-10, 0.0), float4(0.060546108, -0.0013898631, 4.7666133e-5, -1.8100195e-6), float4(7.1946e-8, -2.9423612e-9, 1.2190093e-10, 0.0), float4(0.05794363, -0.00121883, 3.8324113e-5, -1.3348546e-6), float4(4.868659e-8, -1.8267587e-9, 6.9485924e-11, 0.0), float4(0.055649314, -0.0010801274, 3.1352698e-5, -1.0084839e-6), float4(3.3979106e-8, -1.1776131e-9, 4.1399533e-11, 0.0), float4(0.05360691, -0.00096581783, 2.6032296e-5, -7.7778105e-7), float4(2.4348072e-8, -7.8394863e-10, 2.5611497e-11, 0.0), float4(0.051773548, -0.0008703009, 2.1892976e-5, -6.10632e-7), float4(1.7848933e-8, -5.365844e-10, 1.6378612e-11, 0.0), float4(0.04934452, -0.0015073958, 6.893625e-5, -3.4965565e-6), float4(1.8591417e-7, -1.0208081e-8, 5.6703947e-10, 0.0), float4(0.046580184, -0.001268377, 5.1723375e-5, -2.3401205e-6), float4(1.11017e-7, -5.4340528e-9, 2.6944086e-10, 0.0), float4(0.04423322, -0.0010863993, 3.9970582e-5, -1.6319623e-6), float4(6.988309e-8, -3.0856753e-9, 1.3815178e-10, 0.0), float4(0.042208277, -0.00094408635, 3.1639298e-5, -1.1769074e-6), float4(4.592217e-8, -1.8468107e-9, 7.536792e-11, 0.0), float4(0.040437926, -0.00083031674, 2.5548821e-5, -8.7269524e-7), float4(3.127352e-8, -1.1546849e-9, 4.328723e-11, 0.0), float4(0.038872972, -0.00073767756, 2.0980424e-5, -6.6248845e-7), float4(2.1948832e-8, -7.4903106e-10, 2.5966087e-11, 0.0), float4(0.03747657, -0.0006610586, 1.7478125e-5, -5.1310735e-7), float4(1.5806263e-8, -5.0143756e-10, 1.615801e-11, 0.0), float4(0.036220495, -0.00059683475, 1.4742335e-5, -4.0436328e-7), float4(1.1639013e-8, -3.4494801e-10, 1.0394257e-11, 0.0), float4(0.034552623, -0.0010363347, 4.6599005e-5, -2.32694e-6), float4(1.2194789e-7, -6.6056907e-9, 3.623846e-10, 0.0), float4(0.032649495, -0.0008744242, 3.5113193e-5, -1.566006e-6), float4(7.330524e-8, -3.5432177e-9, 1.7364311e-10, 0.0), float4(0.03102964, -0.00075067027, 2.7230604e-5, -1.0971651e-6), float4(4.640167e-8, -2.0249022e-9, 8.966895e-11, 0.0), float4(0.029629128, -0.00065357494, 2.161885e-5, -7.9432914e-7), float4(3.0636365e-8, -1.218566e-9, 4.922062e-11, 0.0), float4(0.028402554, -0.0005757397, 1.7501497e-5, -5.909812e-7), float4(2.0948754e-8, -7.654922e-10, 2.8419609e-11, 0.0), float4(0.027316663, -0.0005122113, 1.4403438e-5, -4.4993268e-7), float4(1.47546455e-8, -4.986109e-10, 1.7126847e-11, 0.0), float4(0.026346477, -0.00045956133, 1.2021881e-5, -3.493636e-7), float4(1.0658463e-8, -3.3500694e-10, 1.0694746e-11, 0.0), float4(0.025472807, -0.00041534996, 1.0157099e-5, -2.7593788e-7), float4(7.869969e-9, -2.3119767e-10, 6.9104245e-12, 0.0), float4(0.024311308, -0.00072218425, 3.2174954e-5, -1.5925119e-6), float4(8.275261e-8, -4.445751e-9, 2.4198663e-10, 0.0), float4(0.022984095, -0.0006102595, 2.43021e-5, -1.0751786e-6), float4(4.9941516e-8, -2.3958373e-9, 1.1656924e-10, 0.0), float4(0.021852912, -0.000524526, 1.8883204e-5, -7.552677e-7), float4(3.1715967e-8, -1.3745001e-9, 6.0465286e-11, 0.0), float4(0.020873819, -0.00045714062, 1.5016035e-5, -5.480046e-7), float4(2.0997641e-8, -8.2985496e-10, 3.3318015e-11, 0.0), float4(0.020015528, -0.00040304102, 1.21729e-5, -4.0847695e-7), float4(1.4391403e-8, -5.227571e-10, 1.9298911e-11, 0.0), float4(0.019255085, -0.00035882893, 1.0029889e-5, -3.1148537e-7), float4(1.01565165e-8, -3.413132e-10, 1.1662861e-11, 0.0), float4(0.018575206, -0.0003221474, 8.380028e-6, -2.42199e-7), float4(7.3496906e-9, -2.2980214e-10, 7.292793e-12, 0.0), float4(0.017962605, -0.00029131552, 7.086478e-6, -1.9152965e-7), float4(5.4351585e-9, -1.5888171e-10, 4.729225e-12, 0.0) };
-static float MS_ZIG_EXP_X[257] = { 8.697118, 7.6971173, 6.941034, 6.4783783, 6.1441646, 5.8821445, 5.66641, 5.4828906, 5.3230906, 5.181487, 5.0542884, 4.938777, 4.8329396, 4.735243, 4.6444917, 4.559737, 4.4802117, 4.4052877, 4.3344436, 4.2672424, 4.203314, 4.1423407, 4.084051, 4.0282087, 3.974606, 3.9230626, 3.8734176, 3.8255293, 3.779271, 3.7345288, 3.691201, 3.6491954, 3.6084287, 3.5688252, 3.5303159, 3.4928377, 3.456333, 3.4207485, 3.3860354, 3.352149, 3.3190475, 3.2866921, 3.2550473, 3.2240796, 3.193758, 3.1640534, 3.134939, 3.106389, 3.07838, 3.05089, 3.0238974, 2.9973829, 2.9713278, 2.9457145, 2.9205263, 2.8957477, 2.871364, 2.8473608, 2.8237252, 2.8004444, 2.777506, 2.7548993, 2.7326126, 2.7106361, 2.6889596, 2.667574, 2.64647, 2.625639, 2.605073, 2.5847638, 2.5647042, 2.5448866, 2.5253043, 2.5059507, 2.4868193, 2.467904, 2.449199, 2.4306984, 2.412397, 2.394289, 2.3763702, 2.358635, 2.3410792, 2.3236978, 2.3064868, 2.2894418, 2.272559, 2.2558339, 2.2392628, 2.2228425, 2.206569, 2.190439, 2.174449, 2.1585958, 2.1428764, 2.1272876, 2.1118267, 2.0964901, 2.081276, 2.0661807, 2.0512023, 2.036338, 2.0215852, 2.0069418, 1.9924049, 1.9779727, 1.9636427, 1.9494127, 1.9352808, 1.9212447, 1.9073025, 1.8934522, 1.8796918, 1.8660195, 1.8524336, 1.8389319, 1.8255131, 1.8121753, 1.7989168, 1.785736, 1.7726312, 1.7596009, 1.7466437, 1.7337579, 1.720942, 1.7081947, 1.6955146, 1.6829001, 1.67035, 1.6578629, 1.6454375, 1.6330724, 1.6207665, 1.6085185, 1.5963271, 1.5841911, 1.5721092, 1.5600805, 1.5481036, 1.5361774, 1.5243009, 1.5124729, 1.5006921, 1.4889578, 1.4772687, 1.4656237, 1.4540218, 1.4424621, 1.4309433, 1.4194646, 1.4080249, 1.3966233, 1.3852586, 1.37393, 1.3626364, 1.3513769, 1.3401506, 1.3289564, 1.3177934, 1.3066607, 1.2955571, 1.284482, 1.2734343, 1.2624129, 1.2514172, 1.2404459, 1.2294981, 1.2185732, 1.2076699, 1.1967874, 1.1859246, 1.1750807, 1.1642547, 1.1534455, 1.1426523, 1.131874, 1.1211096, 1.1103581, 1.0996186, 1.08889, 1.0781711, 1.0674613, 1.056759, 1.0460634, 1.0353734, 1.0246879, 1.0140057, 1.0033256, 0.9926464, 0.98196703, 0.97128624, 0.9606027, 0.9499152, 0.93922234, 0.92852277, 0.9178152, 0.90709805, 0.89637, 0.8856295, 0.8748749, 0.8641046, 0.853317, 0.84251034, 0.83168286, 0.8208326, 0.80995774, 0.7990562, 0.7881259, 0.77716464, 0.7661701, 0.75514, 0.7440717, 0.73296267, 0.7218101, 0.71061105, 0.69936246, 0.6880611, 0.6767036, 0.6652861, 0.65380496, 0.64225596, 0.63063467, 0.6189365, 0.6071562, 0.5952886, 0.5833277, 0.5712673, 0.55910057, 0.5468201, 0.53441787, 0.52188504, 0.50921196, 0.49638805, 0.48340148, 0.47023928, 0.45688683, 0.44332787, 0.42954394, 0.41551417, 0.4012147, 0.386618, 0.37169215, 0.35639977, 0.34069648, 0.3245291, 0.30783296, 0.29052797, 0.27251318, 0.25365835, 0.23379049, 0.2126715, 0.18995869, 0.16512762, 0.13730498, 0.104838505, 0.06385216, 0.0 };
-static float MS_ZIG_EXP_F[257] = { 0.0001670667, 0.00045413437, 0.0009672693, 0.0015362998, 0.0021459677, 0.0027887989, 0.0034602648, 0.004157295, 0.0048776558, 0.0056196423, 0.006381906, 0.0071633533, 0.007963077, 0.008780315, 0.009614414, 0.01046481, 0.011331013, 0.012212592, 0.013109165, 0.014020392, 0.014945968, 0.015885621, 0.016839107, 0.0178062, 0.0187867, 0.019780423, 0.020787204, 0.021806888, 0.022839336, 0.023884421, 0.024942026, 0.026012046, 0.027094385, 0.02818895, 0.02929566, 0.030414443, 0.031545233, 0.032687962, 0.033842582, 0.035009038, 0.036187284, 0.037377283, 0.038578995, 0.039792392, 0.041017443, 0.042254124, 0.043502413, 0.0447623, 0.046033762, 0.047316793, 0.048611384, 0.049917534, 0.051235236, 0.052564494, 0.053905312, 0.05525769, 0.05662164, 0.057997175, 0.059384305, 0.060783047, 0.062193416, 0.063615434, 0.06504912, 0.066494495, 0.06795159, 0.069420435, 0.07090106, 0.072393484, 0.07389775, 0.07541389, 0.076941945, 0.07848195, 0.08003395, 0.081597984, 0.083174095, 0.08476233, 0.08636274, 0.087975375, 0.08960028, 0.091237515, 0.09288713, 0.09454919, 0.09622374, 0.09791085, 0.09961058, 0.101323, 0.10304816, 0.10478614, 0.10653701, 0.10830083, 0.11007768, 0.11186763, 0.11367077, 0.115487166, 0.1173169, 0.119160056, 0.12101672, 0.12288698, 0.12477092, 0.12666863, 0.1285802, 0.13050574, 0.13244532, 0.13439907, 0.13636707, 0.13834943, 0.14034624, 0.14235765, 0.14438373, 0.14642459, 0.14848037, 0.15055119, 0.15263714, 0.15473837, 0.15685499, 0.15898713, 0.16113494, 0.16329853, 0.16547804, 0.16767362, 0.1698854, 0.17211354, 0.17435817, 0.17661946, 0.17889754, 0.1811926, 0.18350479, 0.18583426, 0.1881812, 0.19054577, 0.19292815, 0.19532852, 0.19774707, 0.20018397, 0.20263945, 0.20511365, 0.20760682, 0.21011916, 0.21265087, 0.21520215, 0.21777324, 0.22036438, 0.22297576, 0.22560766, 0.2282603, 0.23093392, 0.23362878, 0.23634516, 0.23908329, 0.24184346, 0.24462597, 0.24743107, 0.25025907, 0.2531103, 0.25598502, 0.25888354, 0.26180625, 0.26475343, 0.2677254, 0.2707226, 0.2737453, 0.27679393, 0.27986884, 0.28297043, 0.28609908, 0.28925523, 0.29243928, 0.2956517, 0.29889292, 0.3021634, 0.3054636, 0.30879408, 0.31215525, 0.31554767, 0.3189719, 0.3224285, 0.32591796, 0.32944095, 0.33299807, 0.3365899, 0.34021714, 0.34388044, 0.3475805, 0.351318, 0.35509375, 0.35890847, 0.362763, 0.3666581, 0.37059465, 0.37457356, 0.37859577, 0.38266218, 0.38677382, 0.39093173, 0.39513698, 0.3993907, 0.403694, 0.40804818, 0.41245446, 0.4169142, 0.42142874, 0.42599955, 0.43062815, 0.43531612, 0.44006512, 0.44487688, 0.44975325, 0.45469615, 0.45970762, 0.46478975, 0.46994483, 0.4751752, 0.48048335, 0.485872, 0.49134386, 0.496902, 0.5025495, 0.50828975, 0.5141264, 0.52006316, 0.5261042, 0.53225386, 0.5385169, 0.5448982, 0.5514034, 0.5580383, 0.5648092, 0.57172304, 0.5787874, 0.58601034, 0.5934009, 0.60096896, 0.60872537, 0.6166822, 0.6248527, 0.63325197, 0.6418967, 0.65080583, 0.66000086, 0.6695063, 0.67935055, 0.6895665, 0.70019263, 0.71127474, 0.72286767, 0.7350381, 0.7478686, 0.7614634, 0.77595687, 0.7915276, 0.8084217, 0.8269933, 0.8477855, 0.87170434, 0.90046996, 0.9381437, 1.0 };
 ByteAddressBuffer ms_in : register(t0);
 RWByteAddressBuffer ms_out : register(u1);
 
@@ -195,34 +134,34 @@ int naga_f2i32(float value) {
 
 float2 ms_cos_sin_turn(float v)
 {
-    float k_6 = round((4.0 * v));
-    float r_1 = (v - (0.25 * k_6));
-    float x_10 = (MS_TAU * r_1);
-    float x2_ = (x_10 * x_10);
-    float s_5 = (x_10 * (1.0 + (x2_ * (-0.16666667 + (x2_ * (0.008333333 + (x2_ * (-0.0001984127 + (x2_ * 2.7557319e-6)))))))));
-    float c_12 = (1.0 + (x2_ * (-0.5 + (x2_ * (0.041666668 + (x2_ * (-0.0013888889 + (x2_ * (2.4801588e-5 + (x2_ * -2.755732e-7))))))))));
-    int q_2 = (naga_f2i32(k_6) & int(3));
-    if ((q_2 == int(0))) {
-        return float2(c_12, s_5);
+    float k_3 = round((4.0 * v));
+    float r_1 = (v - (0.25 * k_3));
+    float x_5 = (MS_TAU * r_1);
+    float x2_ = (x_5 * x_5);
+    float s_3 = (x_5 * (1.0 + (x2_ * (-0.16666667 + (x2_ * (0.008333333 + (x2_ * (-0.0001984127 + (x2_ * 2.7557319e-6)))))))));
+    float c_9 = (1.0 + (x2_ * (-0.5 + (x2_ * (0.041666668 + (x2_ * (-0.0013888889 + (x2_ * (2.4801588e-5 + (x2_ * -2.755732e-7))))))))));
+    int q = (naga_f2i32(k_3) & int(3));
+    if ((q == int(0))) {
+        return float2(c_9, s_3);
     } else {
-        if ((q_2 == int(1))) {
-            return float2(-(s_5), c_12);
+        if ((q == int(1))) {
+            return float2(-(s_3), c_9);
         } else {
-            if ((q_2 == int(2))) {
-                return float2(-(c_12), -(s_5));
+            if ((q == int(2))) {
+                return float2(-(c_9), -(s_3));
             }
         }
     }
-    return float2(s_5, -(c_12));
+    return float2(s_3, -(c_9));
 }
 
 float3 ms_rescaled(float3 a)
 {
     bool local = (bool)0;
 
-    float m_5 = max(abs(a.x), max(abs(a.y), abs(a.z)));
-    if ((m_5 > 0.0)) {
-        local = (m_5 <= 3.4028235e38);
+    float m_4 = max(abs(a.x), max(abs(a.y), abs(a.z)));
+    if ((m_4 > 0.0)) {
+        local = (m_4 <= 3.4028235e38);
     } else {
         local = false;
     }
@@ -230,7 +169,7 @@ float3 ms_rescaled(float3 a)
     if (!(_e16)) {
         return a;
     }
-    return (a / (m_5).xxx);
+    return (a / (m_4).xxx);
 }
 
 float ms_dot(float3 a_1, float3 b)
@@ -265,9 +204,9 @@ float3 ms_unit(float3 w)
     if ((abs((_e1 - 1.0)) <= 1e-6)) {
         return w;
     }
-    float m_6 = max(abs(w.x), max(abs(w.y), abs(w.z)));
-    if ((m_6 > 0.0)) {
-        local_2 = (m_6 <= 3.4028235e38);
+    float m_5 = max(abs(w.x), max(abs(w.y), abs(w.z)));
+    if ((m_5 > 0.0)) {
+        local_2 = (m_5 <= 3.4028235e38);
     } else {
         local_2 = false;
     }
@@ -275,7 +214,7 @@ float3 ms_unit(float3 w)
     if (!(_e22)) {
         return w;
     }
-    const float3 _e27 = ms_normalize((w * (1.0 / m_6)));
+    const float3 _e27 = ms_normalize((w * (1.0 / m_5)));
     return _e27;
 }
 
@@ -293,13 +232,13 @@ float3 ms_unit_normal(float3 v_1)
     if (_e9) {
         return (v_1 * (1.0 / sqrt(_e1)));
     }
-    float m_7 = max(abs(v_1.x), max(abs(v_1.y), abs(v_1.z)));
-    if ((m_7 == 0.0)) {
+    float m_6 = max(abs(v_1.x), max(abs(v_1.y), abs(v_1.z)));
+    if ((m_6 == 0.0)) {
         return float3(0.0, 0.0, 1.0);
     }
-    float3 s_6 = (v_1 / (m_7).xxx);
-    const float _e30 = ms_dot(s_6, s_6);
-    return (s_6 * (1.0 / sqrt(_e30)));
+    float3 s_4 = (v_1 / (m_6).xxx);
+    const float _e30 = ms_dot(s_4, s_4);
+    return (s_4 * (1.0 / sqrt(_e30)));
 }
 
 float3 ms_reflect(float3 wo, float3 n)
@@ -315,11 +254,11 @@ bool ms_same_hemisphere(float3 a_3, float3 b_1)
 
 float3 ms_half_vector_reflection(float3 wo_1, float3 wi)
 {
-    float3 s_7 = (wo_1 + wi);
-    if (!((max(abs(s_7.x), max(abs(s_7.y), abs(s_7.z))) > 0.0))) {
+    float3 s_5 = (wo_1 + wi);
+    if (!((max(abs(s_5.x), max(abs(s_5.y), abs(s_5.z))) > 0.0))) {
         return (0.0).xxx;
     }
-    const float3 _e16 = ms_normalize(s_7);
+    const float3 _e16 = ms_normalize(s_5);
     if ((_e16.z < 0.0)) {
         return -(_e16);
     }
@@ -464,31 +403,31 @@ float ms_fresnel_dielectric(float cos_in, float eta_in_1)
         eta_2 = (1.0 / _e9);
     }
     float _e12 = cos_i_1;
-    float c_13 = min(_e12, 1.0);
+    float c_10 = min(_e12, 1.0);
     float _e15 = eta_2;
     if ((_e15 == 1.0)) {
         return 0.0;
     }
-    if ((c_13 == 0.0)) {
+    if ((c_10 == 0.0)) {
         return 1.0;
     }
     float _e24 = eta_2;
     if ((_e24 > 1e18)) {
         float _e27 = eta_2;
         float e_1 = (1.0 / _e27);
-        float cos_t_1 = sqrt((((1.0 - e_1) * (1.0 + e_1)) + ((c_13 * e_1) * (c_13 * e_1))));
-        r_parl = ((c_13 - (e_1 * cos_t_1)) / (c_13 + (e_1 * cos_t_1)));
-        r_perp = (((e_1 * c_13) - cos_t_1) / ((e_1 * c_13) + cos_t_1));
+        float cos_t_1 = sqrt((((1.0 - e_1) * (1.0 + e_1)) + ((c_10 * e_1) * (c_10 * e_1))));
+        r_parl = ((c_10 - (e_1 * cos_t_1)) / (c_10 + (e_1 * cos_t_1)));
+        r_perp = (((e_1 * c_10) - cos_t_1) / ((e_1 * c_10) + cos_t_1));
     } else {
         float _e51 = eta_2;
         if ((_e51 > 1.0)) {
             float _e54 = eta_2;
             float _e57 = eta_2;
-            ect2_ = (((_e54 - 1.0) * (_e57 + 1.0)) + (c_13 * c_13));
+            ect2_ = (((_e54 - 1.0) * (_e57 + 1.0)) + (c_10 * c_10));
         } else {
             float _e63 = eta_2;
             float _e64 = eta_2;
-            ect2_ = ((_e63 * _e64) - ((1.0 - c_13) * (1.0 + c_13)));
+            ect2_ = ((_e63 * _e64) - ((1.0 - c_10) * (1.0 + c_10)));
         }
         float _e72 = ect2_;
         if ((_e72 <= 0.0)) {
@@ -498,9 +437,9 @@ float ms_fresnel_dielectric(float cos_in, float eta_in_1)
         float ect = sqrt(_e76);
         float _e78 = eta_2;
         float _e79 = eta_2;
-        float e2c = ((_e78 * _e79) * c_13);
+        float e2c = ((_e78 * _e79) * c_10);
         r_parl = ((e2c - ect) / (e2c + ect));
-        r_perp = ((c_13 - ect) / (c_13 + ect));
+        r_perp = ((c_10 - ect) / (c_10 + ect));
     }
     float _e88 = r_parl;
     float _e89 = r_parl;
@@ -521,17 +460,17 @@ float ms_cnorm(float2 a_5)
 
 float ms_cnorm_ratio(float2 a_6, float2 b_3)
 {
-    float s_8 = max(max(abs(a_6.x), abs(a_6.y)), max(abs(b_3.x), abs(b_3.y)));
-    if ((s_8 == 0.0)) {
+    float s_6 = max(max(abs(a_6.x), abs(a_6.y)), max(abs(b_3.x), abs(b_3.y)));
+    if ((s_6 == 0.0)) {
         return 0.0;
     }
-    if (!((s_8 <= 3.4028235e38))) {
+    if (!((s_6 <= 3.4028235e38))) {
         const float _e19 = ms_cnorm(a_6);
         const float _e20 = ms_cnorm(b_3);
         return (_e19 / _e20);
     }
-    const float _e24 = ms_cnorm((a_6 / (s_8).xx));
-    const float _e27 = ms_cnorm((b_3 / (s_8).xx));
+    const float _e24 = ms_cnorm((a_6 / (s_6).xx));
+    const float _e27 = ms_cnorm((b_3 / (s_6).xx));
     return (_e24 / _e27);
 }
 
@@ -568,7 +507,7 @@ float2 ms_csqrt(float2 a_8)
     return float2((abs(a_8.y) / (t_3 + t_3)), _e29);
 }
 
-float ms_fresnel_conductor(float cos_in_1, float eta_3, float k_1)
+float ms_fresnel_conductor(float cos_in_1, float eta_3, float k)
 {
     bool local_4 = (bool)0;
     bool local_5 = (bool)0;
@@ -576,7 +515,7 @@ float ms_fresnel_conductor(float cos_in_1, float eta_3, float k_1)
 
     float cos_i_5 = min(max(cos_in_1, 0.0), 1.0);
     if ((eta_3 == 1.0)) {
-        local_4 = (k_1 == 0.0);
+        local_4 = (k == 0.0);
     } else {
         local_4 = false;
     }
@@ -585,7 +524,7 @@ float ms_fresnel_conductor(float cos_in_1, float eta_3, float k_1)
         return 0.0;
     }
     if ((abs(eta_3) < 1e-9)) {
-        local_5 = (abs(k_1) < 1e-9);
+        local_5 = (abs(k) < 1e-9);
     } else {
         local_5 = false;
     }
@@ -593,11 +532,11 @@ float ms_fresnel_conductor(float cos_in_1, float eta_3, float k_1)
     if (_e25) {
         return 1.0;
     }
-    float2 n_4 = float2(eta_3, k_1);
+    float2 n_3 = float2(eta_3, k);
     float sin2_i = ((1.0 - cos_i_5) * (1.0 + cos_i_5));
     float2 ci = float2(cos_i_5, 0.0);
-    if ((max(abs(eta_3), abs(k_1)) > 1e18)) {
-        const float2 _e40 = ms_crecip(n_4);
+    if ((max(abs(eta_3), abs(k)) > 1e18)) {
+        const float2 _e40 = ms_crecip(n_3);
         const float2 _e41 = ms_cmul(_e40, _e40);
         float2 sin2_t_1 = (_e41 * sin2_i);
         const float2 _e49 = ms_csqrt(float2((1.0 - sin2_t_1.x), -(sin2_t_1.y)));
@@ -607,10 +546,10 @@ float ms_fresnel_conductor(float cos_in_1, float eta_3, float k_1)
         const float _e57 = ms_cnorm_ratio((ci_m - _e49), (ci_m + _e49));
         return min((0.5 * (_e54 + _e57)), 1.0);
     }
-    const float2 _e63 = ms_cmul(n_4, n_4);
-    const float _e65 = ms_cnorm(n_4);
+    const float2 _e63 = ms_cmul(n_3, n_3);
+    const float _e65 = ms_cnorm(n_3);
     if ((_e65 >= 1.0)) {
-        const float2 _e74 = ms_cmul(float2((eta_3 - 1.0), k_1), float2((eta_3 + 1.0), k_1));
+        const float2 _e74 = ms_cmul(float2((eta_3 - 1.0), k), float2((eta_3 + 1.0), k));
         w_2 = (_e74 + float2((cos_i_5 * cos_i_5), 0.0));
     } else {
         w_2 = (_e63 - float2(sin2_i, 0.0));
@@ -619,8 +558,8 @@ float ms_fresnel_conductor(float cos_in_1, float eta_3, float k_1)
     const float2 _e83 = ms_crecip(_e63);
     const float2 _e84 = ms_cmul(_e82, _e83);
     const float2 _e85 = ms_csqrt(_e84);
-    float2 n_ci = (n_4 * cos_i_5);
-    const float2 _e87 = ms_cmul(n_4, _e85);
+    float2 n_ci = (n_3 * cos_i_5);
+    const float2 _e87 = ms_cmul(n_3, _e85);
     const float _e90 = ms_cnorm_ratio((n_ci - _e85), (n_ci + _e85));
     const float _e93 = ms_cnorm_ratio((ci - _e87), (ci + _e87));
     return min((0.5 * (_e90 + _e93)), 1.0);
@@ -628,18 +567,18 @@ float ms_fresnel_conductor(float cos_in_1, float eta_3, float k_1)
 
 float ms_fresnel_schlick(float cos_i_2, float f0_)
 {
-    float m_8 = (1.0 - min(max(cos_i_2, 0.0), 1.0));
-    float m2_ = (m_8 * m_8);
-    return (f0_ + ((1.0 - f0_) * ((m2_ * m2_) * m_8)));
+    float m_7 = (1.0 - min(max(cos_i_2, 0.0), 1.0));
+    float m2_ = (m_7 * m_7);
+    return (f0_ + ((1.0 - f0_) * ((m2_ * m2_) * m_7)));
 }
 
 float ms_fresnel_f82_tint(float cos_i_3, float f0_1, float h)
 {
     float mu = min(max(cos_i_3, 0.0), 1.0);
-    float m_9 = (1.0 - mu);
-    float m5_ = ((((m_9 * m_9) * m_9) * m_9) * m_9);
-    float a_18 = (((f0_1 + ((1.0 - f0_1) * 0.46266437)) * (1.0 - h)) / 0.05665278);
-    float r_5 = ((f0_1 + ((1.0 - f0_1) * m5_)) - (((a_18 * mu) * m5_) * m_9));
+    float m_8 = (1.0 - mu);
+    float m5_ = ((((m_8 * m_8) * m_8) * m_8) * m_8);
+    float a_12 = (((f0_1 + ((1.0 - f0_1) * 0.46266437)) * (1.0 - h)) / 0.05665278);
+    float r_5 = ((f0_1 + ((1.0 - f0_1) * m5_)) - (((a_12 * mu) * m5_) * m_8));
     return min(max(r_5, 0.0), 1.0);
 }
 
@@ -679,44 +618,44 @@ float3 ms_fresnel_eval(MsFresnel fr, float cos_i_4)
 
 float ms_ggx_d(float3 wm_2, float2 alpha)
 {
-    float z_3 = wm_2.z;
-    if (!((z_3 > 0.0))) {
+    float z_1 = wm_2.z;
+    if (!((z_1 > 0.0))) {
         return 0.0;
     }
-    float x_11 = (wm_2.x / alpha.x);
-    float y_2 = (wm_2.y / alpha.y);
-    float t_4 = (((x_11 * x_11) + (y_2 * y_2)) + (z_3 * z_3));
+    float x_6 = (wm_2.x / alpha.x);
+    float y = (wm_2.y / alpha.y);
+    float t_4 = (((x_6 * x_6) + (y * y)) + (z_1 * z_1));
     return (1.0 / ((((MS_PI * alpha.x) * alpha.y) * t_4) * t_4));
 }
 
 float ms_ggx_lambda(float3 w_3, float2 alpha_1)
 {
-    float x_12 = (alpha_1.x * w_3.x);
-    float y_3 = (alpha_1.y * w_3.y);
-    float z_4 = abs(w_3.z);
-    float t_5 = ((x_12 * x_12) + (y_3 * y_3));
-    float z2_ = (z_4 * z_4);
-    float den = (2.0 * (z2_ + (z_4 * sqrt((z2_ + t_5)))));
+    float x_7 = (alpha_1.x * w_3.x);
+    float y_1 = (alpha_1.y * w_3.y);
+    float z_2 = abs(w_3.z);
+    float t_5 = ((x_7 * x_7) + (y_1 * y_1));
+    float z2_ = (z_2 * z_2);
+    float den = (2.0 * (z2_ + (z_2 * sqrt((z2_ + t_5)))));
     if (!((den > 0.0))) {
-        if ((z_4 == 0.0)) {
+        if ((z_2 == 0.0)) {
             const float _e25 = ms_inf();
             return _e25;
         }
-        return ((t_5 / (z_4 + sqrt(((z_4 * z_4) + t_5)))) / (z_4 + z_4));
+        return ((t_5 / (z_2 + sqrt(((z_2 * z_2) + t_5)))) / (z_2 + z_2));
     }
     return (t_5 / den);
 }
 
 float ms_ggx_g1_(float3 w_4, float2 alpha_2)
 {
-    float x_13 = (alpha_2.x * w_4.x);
-    float y_4 = (alpha_2.y * w_4.y);
-    float z_5 = abs(w_4.z);
-    float den_1 = (z_5 + sqrt(((z_5 * z_5) + ((x_13 * x_13) + (y_4 * y_4)))));
+    float x_8 = (alpha_2.x * w_4.x);
+    float y_2 = (alpha_2.y * w_4.y);
+    float z_3 = abs(w_4.z);
+    float den_1 = (z_3 + sqrt(((z_3 * z_3) + ((x_8 * x_8) + (y_2 * y_2)))));
     if (!((den_1 > 0.0))) {
         return 0.0;
     }
-    return ((z_5 + z_5) / den_1);
+    return ((z_3 + z_3) / den_1);
 }
 
 float ms_ggx_g2_(float3 wo_6, float3 wi_6, float2 alpha_3)
@@ -739,7 +678,7 @@ float ms_ggx_pdf(float3 w_5, float3 wm_3, float2 alpha_5)
     bool local_6 = (bool)0;
     bool local_7 = (bool)0;
 
-    float z_6 = abs(w_5.z);
+    float z_4 = abs(w_5.z);
     const float _e5 = ms_dot(w_5, wm_3);
     c = _e5;
     if ((w_5.z < 0.0)) {
@@ -748,7 +687,7 @@ float ms_ggx_pdf(float3 w_5, float3 wm_3, float2 alpha_5)
     }
     float _e12 = c;
     if ((_e12 > 0.0)) {
-        local_6 = (z_6 > 0.0);
+        local_6 = (z_4 > 0.0);
     } else {
         local_6 = false;
     }
@@ -764,27 +703,27 @@ float ms_ggx_pdf(float3 w_5, float3 wm_3, float2 alpha_5)
     }
     float sx = (alpha_5.x * w_5.x);
     float sy = (alpha_5.y * w_5.y);
-    float len_1 = sqrt((((sx * sx) + (sy * sy)) + (z_6 * z_6)));
+    float len_1 = sqrt((((sx * sx) + (sy * sy)) + (z_4 * z_4)));
     float mx = (wm_3.x / alpha_5.x);
     float my = (wm_3.y / alpha_5.y);
     float t_6 = (((mx * mx) + (my * my)) + (wm_3.z * wm_3.z));
     float _e55 = c;
     float _e56 = c;
-    return ((_e55 + _e56) / (((((MS_PI * alpha_5.x) * alpha_5.y) * t_6) * t_6) * (z_6 + len_1)));
+    return ((_e55 + _e56) / (((((MS_PI * alpha_5.x) * alpha_5.y) * t_6) * t_6) * (z_4 + len_1)));
 }
 
 float3 ms_ggx_cap_normal(float3 w_6, float2 alpha_6, float2 u, float len)
 {
     float inv = (1.0 / len);
-    float x_14 = ((alpha_6.x * w_6.x) * inv);
-    float y_5 = ((alpha_6.y * w_6.y) * inv);
-    float z_7 = (w_6.z * inv);
+    float x_9 = ((alpha_6.x * w_6.x) * inv);
+    float y_3 = ((alpha_6.y * w_6.y) * inv);
+    float z_5 = (w_6.z * inv);
     const float2 _e17 = ms_cos_sin_turn(u.x);
-    float above = ((1.0 - u.y) * (1.0 + z_7));
-    float sin_ = sqrt(max((u.y * ((above * (1.0 + z_7)) + ((x_14 * x_14) + (y_5 * y_5)))), 0.0));
-    float3 h_1 = float3((alpha_6.x * ((sin_ * _e17.x) + x_14)), (alpha_6.y * ((sin_ * _e17.y) + y_5)), above);
-    float n_5 = (1.0 / sqrt((((h_1.x * h_1.x) + (h_1.y * h_1.y)) + (h_1.z * h_1.z))));
-    return (h_1 * n_5);
+    float above = ((1.0 - u.y) * (1.0 + z_5));
+    float sin_ = sqrt(max((u.y * ((above * (1.0 + z_5)) + ((x_9 * x_9) + (y_3 * y_3)))), 0.0));
+    float3 h_1 = float3((alpha_6.x * ((sin_ * _e17.x) + x_9)), (alpha_6.y * ((sin_ * _e17.y) + y_3)), above);
+    float n_4 = (1.0 / sqrt((((h_1.x * h_1.x) + (h_1.y * h_1.y)) + (h_1.z * h_1.z))));
+    return (h_1 * n_4);
 }
 
 float3 ms_ggx_sample_wm(float3 w_in, float2 alpha_7, float2 u_1)
@@ -801,8 +740,8 @@ float3 ms_ggx_sample_wm(float3 w_in, float2 alpha_7, float2 u_1)
     float _e12 = w_7.x;
     float _e16 = w_7.y;
     float _e19 = w_7.z;
-    float3 s_9 = float3((alpha_7.x * _e12), (alpha_7.y * _e16), _e19);
-    float n2_ = (((s_9.x * s_9.x) + (s_9.y * s_9.y)) + (s_9.z * s_9.z));
+    float3 s_7 = float3((alpha_7.x * _e12), (alpha_7.y * _e16), _e19);
+    float n2_ = (((s_7.x * s_7.x) + (s_7.y * s_7.y)) + (s_7.z * s_7.z));
     if ((n2_ >= 1e-24)) {
         local_8 = (n2_ <= 1e24);
     } else {
@@ -896,22 +835,22 @@ MsBoundedCap ms_ggx_bounded_cap(float3 w_9, float2 alpha_11)
         const MsBoundedCap msboundedcap = ConstructMsBoundedCap(_e18, _e18.z, 0.0);
         return msboundedcap;
     }
-    float a_19 = min(min(alpha_11.x, alpha_11.y), 1.0);
+    float a_13 = min(min(alpha_11.x, alpha_11.y), 1.0);
     float _e28 = v_2.x;
     float _e30 = v_2.x;
     float _e33 = v_2.y;
     float _e35 = v_2.y;
-    float s_10 = (1.0 + sqrt(((_e28 * _e30) + (_e33 * _e35))));
-    float a2_ = (a_19 * a_19);
-    float s2_ = (s_10 * s_10);
+    float s_8 = (1.0 + sqrt(((_e28 * _e30) + (_e33 * _e35))));
+    float a2_ = (a_13 * a_13);
+    float s2_ = (s_8 * s_8);
     float _e44 = v_2.z;
     float _e47 = v_2.z;
     float den_2 = (s2_ + ((a2_ * _e44) * _e47));
-    float k_7 = (((1.0 - a2_) * s2_) / den_2);
+    float k_4 = (((1.0 - a2_) * s2_) / den_2);
     float _e55 = v_2.z;
     float _e57 = v_2.z;
     float one_minus_k = ((a2_ * (s2_ + (_e55 * _e57))) / den_2);
-    const MsBoundedCap msboundedcap_1 = ConstructMsBoundedCap(_e18, (k_7 * _e18.z), (one_minus_k * _e18.z));
+    const MsBoundedCap msboundedcap_1 = ConstructMsBoundedCap(_e18, (k_4 * _e18.z), (one_minus_k * _e18.z));
     return msboundedcap_1;
 }
 
@@ -920,15 +859,15 @@ float ms_ggx_pdf_bounded(float3 w_in_1, float3 wm_5, float2 alpha_12)
     const float3 _e3 = ms_unit(w_in_1);
     const MsBoundedCap _e4 = ms_ggx_bounded_cap(_e3, alpha_12);
     float3 ws = _e4.ws;
-    float b_6 = _e4.b;
+    float b_4 = _e4.b;
     const float3 _e15 = ms_normalize(float3((wm_5.x / alpha_12.x), (wm_5.y / alpha_12.y), wm_5.z));
     const float _e16 = ms_dot(_e15, ws);
     float cz = (((_e16 + _e16) * _e15.z) - ws.z);
-    if ((cz < -(b_6))) {
+    if ((cz < -(b_4))) {
         return 0.0;
     }
     const float _e25 = ms_ggx_pdf(_e3, wm_5, alpha_12);
-    return ((_e25 * (1.0 + ws.z)) / (1.0 + b_6));
+    return ((_e25 * (1.0 + ws.z)) / (1.0 + b_4));
 }
 
 MsSample ms_ggx_sample_bounded(float3 w_in_2, float2 alpha_13, float2 u_4)
@@ -936,13 +875,13 @@ MsSample ms_ggx_sample_bounded(float3 w_in_2, float2 alpha_13, float2 u_4)
     const float3 _e3 = ms_unit(w_in_2);
     const MsBoundedCap _e4 = ms_ggx_bounded_cap(_e3, alpha_13);
     float3 ws_1 = _e4.ws;
-    float b_7 = _e4.b;
+    float b_5 = _e4.b;
     const float2 _e8 = ms_cos_sin_turn(u_4.x);
-    float above_1 = ((1.0 - u_4.y) * (1.0 + b_7));
+    float above_1 = ((1.0 - u_4.y) * (1.0 + b_5));
     float one_minus_b = ((((ws_1.x * ws_1.x) + (ws_1.y * ws_1.y)) / (1.0 + ws_1.z)) + _e4.top);
-    float sin_1 = sqrt(max(((u_4.y * (1.0 + b_7)) * (above_1 + one_minus_b)), 0.0));
-    float3 m_10 = float3(((sin_1 * _e8.x) + ws_1.x), ((sin_1 * _e8.y) + ws_1.y), (above_1 + _e4.top));
-    const float3 _e58 = ms_normalize(float3((alpha_13.x * m_10.x), (alpha_13.y * m_10.y), max(m_10.z, 0.0)));
+    float sin_1 = sqrt(max(((u_4.y * (1.0 + b_5)) * (above_1 + one_minus_b)), 0.0));
+    float3 m_9 = float3(((sin_1 * _e8.x) + ws_1.x), ((sin_1 * _e8.y) + ws_1.y), (above_1 + _e4.top));
+    const float3 _e58 = ms_normalize(float3((alpha_13.x * m_9.x), (alpha_13.y * m_9.y), max(m_9.z, 0.0)));
     const float3 _e59 = ms_facing(_e58, _e3);
     const float _e60 = ms_ggx_pdf_bounded(_e3, _e59, alpha_13);
     const MsSample mssample_2 = ConstructMsSample(_e59, _e60);
@@ -957,12 +896,12 @@ float ms_ggx_pdf_bounded_reflection(float3 wo_8, float3 wi_8, float2 alpha_14)
         return 0.0;
     }
     const float _e7 = ms_dot(wo_8, _e3);
-    float c_14 = abs(_e7);
-    if (!((c_14 > 0.0))) {
+    float c_11 = abs(_e7);
+    if (!((c_11 > 0.0))) {
         return 0.0;
     }
     const float _e13 = ms_ggx_pdf_bounded(wo_8, _e3, alpha_14);
-    return (_e13 / (4.0 * c_14));
+    return (_e13 / (4.0 * c_11));
 }
 
 float2 ms_bk_segment(float x, int k0_, int k1_)
@@ -993,9 +932,9 @@ float ms_bk_erfcx(float x_1)
         return (((1.0 - (r_7 * (0.5 - (r_7 * (0.75 - (r_7 * (1.875 - (r_7 * 6.5625)))))))) * MS_FRAC_1_SQRT_PI) / x_1);
     }
     const float2 _e30 = ms_bk_segment(x_1, MS_BK_ERFCX_K0_, MS_BK_ERFCX_K1_);
-    uint i_4 = (2u * naga_f2u32(_e30.x));
-    float4 _e37 = MS_BK_ERFCX[min(uint(i_4), 151u)];
-    float4 _e42 = MS_BK_ERFCX[min(uint((i_4 + 1u)), 151u)];
+    uint i_2 = (2u * naga_f2u32(_e30.x));
+    float4 _e37 = MS_BK_ERFCX[min(uint(i_2), 151u)];
+    float4 _e42 = MS_BK_ERFCX[min(uint((i_2 + 1u)), 151u)];
     const float _e44 = ms_bk_poly(_e37, _e42, _e30.y);
     return _e44;
 }
@@ -1010,9 +949,9 @@ float ms_bk_erfc_ratio(float a_9)
         return (r_8 * (0.5 - (r_8 * (0.75 - (r_8 * (1.875 - (r_8 * (6.5625 - (r_8 * 29.53125)))))))));
     }
     const float2 _e28 = ms_bk_segment(a_9, MS_BK_ERFC_RATIO_K0_, MS_BK_ERFC_RATIO_K1_);
-    uint i_5 = (2u * naga_f2u32(_e28.x));
-    float4 _e35 = MS_BK_ERFC_RATIO[min(uint(i_5), 151u)];
-    float4 _e40 = MS_BK_ERFC_RATIO[min(uint((i_5 + 1u)), 151u)];
+    uint i_3 = (2u * naga_f2u32(_e28.x));
+    float4 _e35 = MS_BK_ERFC_RATIO[min(uint(i_3), 151u)];
+    float4 _e40 = MS_BK_ERFC_RATIO[min(uint((i_3 + 1u)), 151u)];
     const float _e42 = ms_bk_poly(_e35, _e40, _e28.y);
     return _e42;
 }
@@ -1022,33 +961,33 @@ float ms_bk_quantile(float u_5)
     float sign_ = 1.0;
     float ratio = (float)0;
 
-    float q_3 = (2.0 * min(u_5, (1.0 - u_5)));
+    float q_1 = (2.0 * min(u_5, (1.0 - u_5)));
     if ((u_5 < 0.5)) {
         sign_ = -1.0;
     }
-    if (!((q_3 > 0.0))) {
+    if (!((q_1 > 0.0))) {
         float _e14 = sign_;
         return (-(_e14) * MS_BK_QUANTILE_EDGE);
     }
-    if ((q_3 >= 2.9802322e-8)) {
-        const float2 _e25 = ms_bk_segment(min(q_3, 0.99999994), MS_BK_ERFINV_Q_K0_, MS_BK_ERFINV_Q_K1_);
-        uint i_6 = (2u * naga_f2u32(_e25.x));
-        float4 _e32 = MS_BK_ERFINV_Q[min(uint(i_6), 199u)];
-        float4 _e37 = MS_BK_ERFINV_Q[min(uint((i_6 + 1u)), 199u)];
+    if ((q_1 >= 2.9802322e-8)) {
+        const float2 _e25 = ms_bk_segment(min(q_1, 0.99999994), MS_BK_ERFINV_Q_K0_, MS_BK_ERFINV_Q_K1_);
+        uint i_4 = (2u * naga_f2u32(_e25.x));
+        float4 _e32 = MS_BK_ERFINV_Q[min(uint(i_4), 199u)];
+        float4 _e37 = MS_BK_ERFINV_Q[min(uint((i_4 + 1u)), 199u)];
         const float _e39 = ms_bk_poly(_e32, _e37, _e25.y);
         ratio = _e39;
     } else {
-        float w_26 = min((-(log(q_3)) - 0.6931472), 127.99);
-        const float2 _e48 = ms_bk_segment(w_26, MS_BK_ERFINV_W_K0_, MS_BK_ERFINV_W_K1_);
-        uint i_7 = (2u * naga_f2u32(_e48.x));
-        float4 _e55 = MS_BK_ERFINV_W[min(uint(i_7), 23u)];
-        float4 _e60 = MS_BK_ERFINV_W[min(uint((i_7 + 1u)), 23u)];
+        float w_19 = min((-(log(q_1)) - 0.6931472), 127.99);
+        const float2 _e48 = ms_bk_segment(w_19, MS_BK_ERFINV_W_K0_, MS_BK_ERFINV_W_K1_);
+        uint i_5 = (2u * naga_f2u32(_e48.x));
+        float4 _e55 = MS_BK_ERFINV_W[min(uint(i_5), 23u)];
+        float4 _e60 = MS_BK_ERFINV_W[min(uint((i_5 + 1u)), 23u)];
         const float _e62 = ms_bk_poly(_e55, _e60, _e48.y);
         ratio = _e62;
     }
     float _e63 = sign_;
     float _e66 = ratio;
-    return (_e63 * ((1.0 - q_3) * _e66));
+    return (_e63 * ((1.0 - q_1) * _e66));
 }
 
 float ms_bk_ln_1m(float xi)
@@ -1066,12 +1005,12 @@ float ms_beckmann_d(float3 wm_6, float2 alpha_15)
 {
     bool local_9 = (bool)0;
 
-    float z_8 = wm_6.z;
+    float z_6 = wm_6.z;
     float r_9 = (1.0 / (alpha_15.x * alpha_15.y));
-    float x_15 = ((wm_6.x * alpha_15.y) * r_9);
-    float y_6 = ((wm_6.y * alpha_15.x) * r_9);
-    float z2_1 = (z_8 * z_8);
-    if ((z_8 > 0.0)) {
+    float x_10 = ((wm_6.x * alpha_15.y) * r_9);
+    float y_4 = ((wm_6.y * alpha_15.x) * r_9);
+    float z2_1 = (z_6 * z_6);
+    if ((z_6 > 0.0)) {
         local_9 = (z2_1 > 0.0);
     } else {
         local_9 = false;
@@ -1080,11 +1019,11 @@ float ms_beckmann_d(float3 wm_6, float2 alpha_15)
     if (!(_e24)) {
         return 0.0;
     }
-    float e_2 = (((x_15 * x_15) + (y_6 * y_6)) / z2_1);
+    float e_2 = (((x_10 * x_10) + (y_4 * y_4)) / z2_1);
     if ((e_2 <= 80.0)) {
         return ((exp(-(e_2)) * r_9) / ((MS_PI * z2_1) * z2_1));
     }
-    return exp((((log(r_9) - 1.14473) - (4.0 * log(z_8))) - e_2));
+    return exp((((log(r_9) - 1.14473) - (4.0 * log(z_6))) - e_2));
 }
 
 float ms_beckmann_lambda_cot(float a_10)
@@ -1102,13 +1041,13 @@ float ms_beckmann_lambda_cot(float a_10)
 
 float ms_beckmann_lambda(float3 w_10, float2 alpha_16)
 {
-    float x_16 = (alpha_16.x * w_10.x);
-    float y_7 = (alpha_16.y * w_10.y);
-    float s_11 = sqrt(((x_16 * x_16) + (y_7 * y_7)));
-    if (!((s_11 > 0.0))) {
+    float x_11 = (alpha_16.x * w_10.x);
+    float y_5 = (alpha_16.y * w_10.y);
+    float s_9 = sqrt(((x_11 * x_11) + (y_5 * y_5)));
+    if (!((s_9 > 0.0))) {
         return 0.0;
     }
-    const float _e19 = ms_beckmann_lambda_cot((abs(w_10.z) / s_11));
+    const float _e19 = ms_beckmann_lambda_cot((abs(w_10.z) / s_9));
     return _e19;
 }
 
@@ -1151,7 +1090,7 @@ float ms_beckmann_pdf(float3 w_12, float3 wm_7, float2 alpha_20)
     float c_1 = (float)0;
     bool local_11 = (bool)0;
 
-    float z_9 = abs(w_12.z);
+    float z_7 = abs(w_12.z);
     const float _e5 = ms_dot(w_12, wm_7);
     c_1 = _e5;
     if ((w_12.z < 0.0)) {
@@ -1160,7 +1099,7 @@ float ms_beckmann_pdf(float3 w_12, float3 wm_7, float2 alpha_20)
     }
     float _e12 = c_1;
     if ((_e12 > 0.0)) {
-        local_11 = (z_9 > 0.0);
+        local_11 = (z_7 > 0.0);
     } else {
         local_11 = false;
     }
@@ -1171,7 +1110,7 @@ float ms_beckmann_pdf(float3 w_12, float3 wm_7, float2 alpha_20)
     const float _e23 = ms_beckmann_g1_(w_12, alpha_20);
     float _e24 = c_1;
     const float _e26 = ms_beckmann_d(wm_7, alpha_20);
-    return (((_e23 * _e24) * _e26) / z_9);
+    return (((_e23 * _e24) * _e26) / z_7);
 }
 
 float ms_beckmann_pdf_dcos(float3 wm_8, float2 alpha_21)
@@ -1215,7 +1154,7 @@ float ms_bk_visible_x(float a_11, float u_7)
     float lo_1 = (float)0;
     float hi_1 = 8.0;
     float x_2 = (float)0;
-    int k_2 = int(0);
+    int k_1 = int(0);
     float f = (float)0;
     float step_ = (float)0;
     bool local_12 = (bool)0;
@@ -1225,9 +1164,9 @@ float ms_bk_visible_x(float a_11, float u_7)
     const float _e5 = ms_bk_erfcx(a_11);
     float erfc_a = (_e5 * ea);
     float half_ea = (0.2820948 * ea);
-    float z_10 = (((0.5 * a_11) * (2.0 - erfc_a)) + half_ea);
-    float target_lo = (u_7 * z_10);
-    float target_hi = ((1.0 - u_7) * z_10);
+    float z_8 = (((0.5 * a_11) * (2.0 - erfc_a)) + half_ea);
+    float target_lo = (u_7 * z_8);
+    float target_hi = ((1.0 - u_7) * z_8);
     lo_1 = -(a_11);
     if ((a_11 >= 1.0)) {
         const float _e26 = ms_bk_quantile(u_7);
@@ -1246,11 +1185,11 @@ float ms_bk_visible_x(float a_11, float u_7)
         if (all(loop_bound == uint2(0u, 0u))) { break; }
         loop_bound -= uint2(loop_bound.y == 0u, 1u);
         if (!loop_init) {
-            int _e157 = k_2;
-            k_2 = asint(asuint(_e157) + asuint(int(1)));
+            int _e157 = k_1;
+            k_1 = asint(asuint(_e157) + asuint(int(1)));
         }
         loop_init = false;
-        int _e37 = k_2;
+        int _e37 = k_1;
         if ((_e37 < int(64))) {
         } else {
             break;
@@ -1360,14 +1299,14 @@ float3 ms_beckmann_sample_wm(float3 w_13, float2 alpha_23, float2 u_8)
     float _e14 = sign_1;
     float sy_1 = ((_e14 * alpha_23.y) * w_13.y);
     float _e19 = sign_1;
-    float c_15 = (_e19 * w_13.z);
+    float c_12 = (_e19 * w_13.z);
     float h_2 = sqrt(((sx_1 * sx_1) + (sy_1 * sy_1)));
     const float _e27 = ms_bk_quantile(u_8.y);
     if ((h_2 > 0.0)) {
         float inv_1 = (1.0 / h_2);
         cp = (sx_1 * inv_1);
         sp = (sy_1 * inv_1);
-        const float _e41 = ms_bk_visible_x((c_15 * inv_1), u_8.x);
+        const float _e41 = ms_bk_visible_x((c_12 * inv_1), u_8.x);
         x_3 = _e41;
     } else {
         const float _e43 = ms_bk_quantile(u_8.x);
@@ -1380,9 +1319,9 @@ float3 ms_beckmann_sample_wm(float3 w_13, float2 alpha_23, float2 u_8)
     float _e53 = sp;
     float _e54 = x_3;
     float _e56 = cp;
-    float q_4 = (alpha_23.y * ((_e53 * _e54) + (_e56 * _e27)));
-    float n_6 = (1.0 / sqrt((((p_1 * p_1) + (q_4 * q_4)) + 1.0)));
-    const float3 _e71 = ms_facing(float3((p_1 * n_6), (q_4 * n_6), n_6), w_13);
+    float q_2 = (alpha_23.y * ((_e53 * _e54) + (_e56 * _e27)));
+    float n_5 = (1.0 / sqrt((((p_1 * p_1) + (q_2 * q_2)) + 1.0)));
+    const float3 _e71 = ms_facing(float3((p_1 * n_5), (q_2 * n_5), n_5), w_13);
     return _e71;
 }
 
@@ -1395,766 +1334,108 @@ MsSample ms_beckmann_sample(float3 w_14, float2 alpha_24, float2 u_9)
     return mssample_4;
 }
 
-uint2 ms_u64_add(uint2 a_12, uint2 b_4)
-{
-    uint lo_2 = (a_12.x + b_4.x);
-    return uint2(lo_2, ((a_12.y + b_4.y) + ((lo_2 < a_12.x) ? 1u : 0u)));
-}
-
-uint2 ms_u32_mul_wide(uint x_4, uint y)
-{
-    uint x0_ = (x_4 & 65535u);
-    uint x1_ = (x_4 >> 16u);
-    uint y0_ = (y & 65535u);
-    uint y1_ = (y >> 16u);
-    uint p00_ = (x0_ * y0_);
-    uint p01_ = (x0_ * y1_);
-    uint p10_ = (x1_ * y0_);
-    uint p11_ = (x1_ * y1_);
-    uint mid = (((p00_ >> 16u) + (p01_ & 65535u)) + (p10_ & 65535u));
-    return uint2(((mid << 16u) | (p00_ & 65535u)), (((p11_ + (p01_ >> 16u)) + (p10_ >> 16u)) + (mid >> 16u)));
-}
-
-uint2 ms_u64_mul(uint2 a_13, uint2 b_5)
-{
-    const uint2 _e4 = ms_u32_mul_wide(a_13.x, b_5.x);
-    return uint2(_e4.x, ((_e4.y + (a_13.x * b_5.y)) + (a_13.y * b_5.x)));
-}
-
-uint2 ms_u64_xorshift(uint2 a_14, uint k_3)
-{
-    return (a_14 ^ uint2(((a_14.x >> k_3) | (a_14.y << (32u - k_3))), (a_14.y >> k_3)));
-}
-
-uint2 ms_f64_bits(float v_4)
-{
-    uint man = (uint)0;
-    uint e64_ = (uint)0;
-
-    uint b_8 = asuint(v_4);
-    uint sign_2 = (b_8 & 2147483648u);
-    uint e_4 = ((b_8 >> 23u) & 255u);
-    man = (b_8 & 8388607u);
-    if ((e_4 == 0u)) {
-        uint _e14 = man;
-        if ((_e14 == 0u)) {
-            return uint2(0u, sign_2);
-        }
-        uint _e19 = man;
-        uint p_2 = firstbithigh(_e19);
-        e64_ = (p_2 + 874u);
-        uint _e23 = man;
-        man = ((_e23 << (23u - p_2)) & 8388607u);
-    } else {
-        if ((e_4 == 255u)) {
-            e64_ = 2047u;
-        } else {
-            e64_ = (e_4 + 896u);
-        }
-    }
-    uint _e34 = man;
-    uint _e37 = e64_;
-    uint _e41 = man;
-    return uint2((_e34 << 29u), ((sign_2 | (_e37 << 20u)) | (_e41 >> 3u)));
-}
-
-uint2 ms_stream_new(float2 u_10)
-{
-    const uint2 _e2 = ms_f64_bits(u_10.x);
-    const uint2 _e4 = ms_f64_bits(u_10.y);
-    uint2 rot = uint2(((_e4.x << 29u) | (_e4.y >> 3u)), ((_e4.y << 29u) | (_e4.x >> 3u)));
-    return ((_e2 ^ rot) ^ uint2(2242054355u, 608135816u));
-}
-
-uint2 ms_stream_next_u64_(inout uint2 state_2)
-{
-    uint2 z = (uint2)0;
-
-    uint2 _e1 = state_2;
-    const uint2 _e5 = ms_u64_add(_e1, uint2(2135587861u, 2654435769u));
-    state_2 = _e5;
-    uint2 _e6 = state_2;
-    const uint2 _e8 = ms_u64_xorshift(_e6, 30u);
-    const uint2 _e12 = ms_u64_mul(_e8, uint2(484763065u, 3210233709u));
-    z = _e12;
-    uint2 _e14 = z;
-    const uint2 _e16 = ms_u64_xorshift(_e14, 27u);
-    const uint2 _e20 = ms_u64_mul(_e16, uint2(321982955u, 2496678331u));
-    z = _e20;
-    uint2 _e21 = z;
-    const uint2 _e23 = ms_u64_xorshift(_e21, 31u);
-    return _e23;
-}
-
-float ms_stream_next(inout uint2 state_3)
-{
-    const uint2 _e1 = ms_stream_next_u64_(state_3);
-    return (float((_e1.y >> 8u)) * 5.9604645e-8);
-}
-
-float ms_zig_exp1_(float w_15, inout uint2 state_4)
-{
-    float y_1 = (float)0;
-    uint k_4 = (uint)0;
-    uint i = (uint)0;
-    float x_5 = (float)0;
-    int n_2 = int(0);
-
-    y_1 = (w_15 * 256.0);
-    float _e5 = y_1;
-    k_4 = naga_f2u32(max(_e5, 0.0));
-    uint _e10 = k_4;
-    i = (_e10 & 255u);
-    float _e14 = y_1;
-    uint _e15 = k_4;
-    uint _e19 = i;
-    float _e21 = MS_ZIG_EXP_X[min(uint(_e19), 256u)];
-    x_5 = ((_e14 - float(_e15)) * _e21);
-    float _e24 = x_5;
-    uint _e26 = i;
-    float _e30 = MS_ZIG_EXP_X[min(uint((_e26 + 1u)), 256u)];
-    if ((_e24 < _e30)) {
-        float _e32 = x_5;
-        return _e32;
-    }
-    uint2 loop_bound_1 = uint2(4294967295u, 4294967295u);
-    bool loop_init_1 = true;
-    while(true) {
-        if (all(loop_bound_1 == uint2(0u, 0u))) { break; }
-        loop_bound_1 -= uint2(loop_bound_1.y == 0u, 1u);
-        if (!loop_init_1) {
-            int _e103 = n_2;
-            n_2 = asint(asuint(_e103) + asuint(int(1)));
-        }
-        loop_init_1 = false;
-        int _e35 = n_2;
-        if ((_e35 < int(64))) {
-        } else {
-            break;
-        }
-        {
-            float _e38 = x_5;
-            float _e39 = x_5;
-            if ((_e38 != _e39)) {
-                float _e41 = x_5;
-                return _e41;
-            }
-            uint _e42 = i;
-            if ((_e42 == 0u)) {
-                float _e47 = MS_ZIG_EXP_X[1];
-                const float _e48 = ms_stream_next(state_4);
-                return (_e47 - log((1.0 - _e48)));
-            }
-            uint _e54 = i;
-            float _e56 = MS_ZIG_EXP_F[min(uint(_e54), 256u)];
-            const float _e57 = ms_stream_next(state_4);
-            uint _e59 = i;
-            float _e63 = MS_ZIG_EXP_F[min(uint((_e59 + 1u)), 256u)];
-            uint _e65 = i;
-            float _e67 = MS_ZIG_EXP_F[min(uint(_e65), 256u)];
-            float h_3 = (_e56 + (_e57 * (_e63 - _e67)));
-            float _e71 = x_5;
-            if ((h_3 < exp(-(_e71)))) {
-                float _e75 = x_5;
-                return _e75;
-            }
-            const float _e76 = ms_stream_next(state_4);
-            y_1 = (_e76 * 256.0);
-            float _e79 = y_1;
-            k_4 = naga_f2u32(_e79);
-            uint _e81 = k_4;
-            i = (_e81 & 255u);
-            float _e84 = y_1;
-            uint _e85 = k_4;
-            uint _e89 = i;
-            float _e91 = MS_ZIG_EXP_X[min(uint(_e89), 256u)];
-            x_5 = ((_e84 - float(_e85)) * _e91);
-            float _e93 = x_5;
-            uint _e95 = i;
-            float _e99 = MS_ZIG_EXP_X[min(uint((_e95 + 1u)), 256u)];
-            if ((_e93 < _e99)) {
-                float _e101 = x_5;
-                return _e101;
-            }
-        }
-    }
-    float _e105 = x_5;
-    return _e105;
-}
-
-float2 ms_fam_segment(float x_6, int k0_1, int k1_1, uint m_3)
-{
-    uint bits_2 = asuint(x_6);
-    uint rows_1 = (uint(asint(asuint(k1_1) - asuint(k0_1))) << m_3);
-    uint idx_1 = min(((bits_2 >> (23u - m_3)) - (uint(asint(asuint(int(127)) + asuint(k0_1))) << m_3)), (rows_1 - 1u));
-    uint pos_1 = ((bits_2 << (9u + m_3)) >> 9u);
-    return float2(float(idx_1), (asfloat((1073741824u | pos_1)) - 3.0));
-}
-
-float ms_fam_cubic(float4 c_2, float s_3)
-{
-    return ((((((c_2.w * s_3) + c_2.z) * s_3) + c_2.y) * s_3) + c_2.x);
-}
-
-float ms_dg_lambda_table(float x_7)
-{
-    const float2 _e4 = ms_fam_segment(x_7, MS_DG_LAMBDA_K0_, MS_DG_LAMBDA_K1_, MS_DG_LAMBDA_M);
-    float4 _e9 = MS_DG_LAMBDA[min(uint(naga_f2u32(_e4.x)), 367u)];
-    const float _e11 = ms_fam_cubic(_e9, _e4.y);
-    return _e11;
-}
-
-float ms_dg_lambda_ends(float u_11, float a_15)
-{
-    float x_17 = ((((0.5 * a_15) * a_15) * ((1.0 - u_11) * (1.0 + u_11))) / (u_11 * u_11));
-    if ((x_17 < 9.313226e-10)) {
-        if ((x_17 <= 0.0)) {
-            return 0.0;
-        }
-        return ((0.5 * x_17) * (0.42278433 - log((0.5 * x_17))));
-    }
-    float sx_2 = ((a_15 * sqrt(((0.5 * (1.0 - u_11)) * (1.0 + u_11)))) / u_11);
-    float r_11 = (1.0 / (sx_2 * sx_2));
-    return (((1.2533141 * sx_2) * (1.0 + (r_11 * (0.125 - (r_11 * 0.0234375))))) - 0.5);
-}
-
-float ms_double_ggx_lambda(float3 w_16, float2 alpha_25)
-{
-    float x_8 = (float)0;
-    bool local_14 = (bool)0;
-    float a_16 = (float)0;
-    bool local_15 = (bool)0;
-
-    float u_18 = abs(w_16.z);
-    if ((alpha_25.x == alpha_25.y)) {
-        float a_20 = alpha_25.x;
-        x_8 = ((((0.5 * a_20) * a_20) * ((1.0 - u_18) * (1.0 + u_18))) / (u_18 * u_18));
-    } else {
-        float sx_3 = (alpha_25.x * w_16.x);
-        float sy_2 = (alpha_25.y * w_16.y);
-        x_8 = (0.5 * (((sx_3 * sx_3) + (sy_2 * sy_2)) / (w_16.z * w_16.z)));
-    }
-    float _e35 = x_8;
-    if ((_e35 >= 9.313226e-10)) {
-        float _e40 = x_8;
-        local_14 = (_e40 < 65536.0);
-    } else {
-        local_14 = false;
-    }
-    bool _e44 = local_14;
-    if (_e44) {
-        float _e45 = x_8;
-        const float _e46 = ms_dg_lambda_table(_e45);
-        return _e46;
-    }
-    a_16 = alpha_25.x;
-    float s2_1 = ((w_16.x * w_16.x) + (w_16.y * w_16.y));
-    if ((alpha_25.x != alpha_25.y)) {
-        local_15 = (s2_1 > 0.0);
-    } else {
-        local_15 = false;
-    }
-    bool _e64 = local_15;
-    if (_e64) {
-        a_16 = sqrt((((((alpha_25.x * alpha_25.x) * w_16.x) * w_16.x) + (((alpha_25.y * alpha_25.y) * w_16.y) * w_16.y)) / s2_1));
-    }
-    float _e82 = a_16;
-    const float _e83 = ms_dg_lambda_ends(u_18, _e82);
-    return _e83;
-}
-
-float ms_double_ggx_g1_(float3 w_17, float2 alpha_26)
-{
-    if ((w_17.z == 0.0)) {
-        return 0.0;
-    }
-    const float _e6 = ms_double_ggx_lambda(w_17, alpha_26);
-    return (1.0 / (1.0 + _e6));
-}
-
-float ms_double_ggx_g2_(float3 wo_11, float3 wi_11, float2 alpha_27)
-{
-    bool local_16 = (bool)0;
-
-    if (!((wo_11.z == 0.0))) {
-        local_16 = (wi_11.z == 0.0);
-    } else {
-        local_16 = true;
-    }
-    bool _e13 = local_16;
-    if (_e13) {
-        return 0.0;
-    }
-    const float _e15 = ms_double_ggx_lambda(wo_11, alpha_27);
-    const float _e16 = ms_double_ggx_lambda(wi_11, alpha_27);
-    return (1.0 / (1.0 + (_e15 + _e16)));
-}
-
-float ms_double_ggx_g2_separable(float3 wo_12, float3 wi_12, float2 alpha_28)
-{
-    const float _e3 = ms_double_ggx_g1_(wo_12, alpha_28);
-    const float _e4 = ms_double_ggx_g1_(wi_12, alpha_28);
-    return (_e3 * _e4);
-}
-
-float ms_dg_kernel_row(uint i_1, float s_4)
-{
-    float4 c0_ = MS_DG_D[min(uint((3u * i_1)), 719u)];
-    float4 c1_ = MS_DG_D[min(uint(((3u * i_1) + 1u)), 719u)];
-    float4 c2_ = MS_DG_D[min(uint(((3u * i_1) + 2u)), 719u)];
-    float s2_2 = (s_4 * s_4);
-    float s4_ = (s2_2 * s2_2);
-    float s8_ = (s4_ * s4_);
-    float b0_ = (c0_.x + (c0_.y * s_4));
-    float b1_ = (c0_.z + (c0_.w * s_4));
-    float b2_ = (c1_.x + (c1_.y * s_4));
-    float b3_ = (c1_.z + (c1_.w * s_4));
-    float b4_ = (c2_.x + (c2_.y * s_4));
-    return (((b0_ + (b1_ * s2_2)) + ((b2_ + (b3_ * s2_2)) * s4_)) + (b4_ * s8_));
-}
-
-float ms_double_ggx_d(float3 wm_9, float2 alpha_29)
-{
-    bool local_17 = (bool)0;
-
-    float z_11 = wm_9.z;
-    float r_12 = (1.0 / (alpha_29.x * alpha_29.y));
-    float x_18 = ((wm_9.x * alpha_29.y) * r_12);
-    float y_8 = ((wm_9.y * alpha_29.x) * r_12);
-    float q_5 = ((x_18 * x_18) + (y_8 * y_8));
-    if (!((z_11 > 0.0))) {
-        return ((z_11 != z_11) ? z_11 : 0.0);
-    }
-    float z2_2 = (z_11 * z_11);
-    float t_8 = (q_5 / z2_2);
-    if ((t_8 >= 9.313226e-10)) {
-        local_17 = (t_8 < 1073741800.0);
-    } else {
-        local_17 = false;
-    }
-    bool _e34 = local_17;
-    if (_e34) {
-        const float2 _e38 = ms_fam_segment(t_8, MS_DG_D_K0_, MS_DG_D_K1_, MS_DG_D_M);
-        const float _e42 = ms_dg_kernel_row(naga_f2u32(_e38.x), _e38.y);
-        return ((_e42 * r_12) / ((MS_PI * z2_2) * z2_2));
-    }
-    if ((t_8 < 9.313226e-10)) {
-        return (r_12 / ((MS_PI * z2_2) * z2_2));
-    }
-    return (((((log(q_5) - (2.0 * log(z_11))) - MS_EULER_GAMMA) - 1.0) * r_12) / ((MS_PI * q_5) * q_5));
-}
-
-float ms_double_ggx_pdf(float3 w_18, float3 wm_10, float2 alpha_30)
-{
-    float c_3 = (float)0;
-    bool local_18 = (bool)0;
-
-    float z_12 = abs(w_18.z);
-    const float _e5 = ms_dot(w_18, wm_10);
-    c_3 = _e5;
-    if ((w_18.z < 0.0)) {
-        float _e10 = c_3;
-        c_3 = -(_e10);
-    }
-    float _e12 = c_3;
-    if ((_e12 > 0.0)) {
-        local_18 = (z_12 > 0.0);
-    } else {
-        local_18 = false;
-    }
-    bool _e20 = local_18;
-    if (!(_e20)) {
-        return 0.0;
-    }
-    const float _e23 = ms_double_ggx_g1_(w_18, alpha_30);
-    float _e24 = c_3;
-    const float _e26 = ms_double_ggx_d(wm_10, alpha_30);
-    return (((_e23 * _e24) * _e26) / z_12);
-}
-
-float ms_double_ggx_pdf_dcos(float3 wm_11, float2 alpha_31)
-{
-    if (!((wm_11.z > 0.0))) {
-        return 0.0;
-    }
-    const float _e7 = ms_double_ggx_d(wm_11, alpha_31);
-    return (_e7 * wm_11.z);
-}
-
-MsSample ms_double_ggx_sample_dcos(float2 alpha_32, float2 u_12)
-{
-    uint2 state_5 = (uint2)0;
-
-    const uint2 _e2 = ms_stream_new(u_12);
-    state_5 = _e2;
-    const float _e4 = ms_stream_next(state_5);
-    const float _e5 = ms_zig_exp1_(_e4, state_5);
-    float t_9 = max(_e5, 1e-36);
-    const float2 _e9 = ms_cos_sin_turn(u_12.y);
-    float r_13 = sqrt(u_12.x);
-    const float3 _e28 = ms_unit_normal(float3(((alpha_32.x * r_13) * _e9.x), ((alpha_32.y * r_13) * _e9.y), sqrt((t_9 * max((1.0 - u_12.x), 0.0)))));
-    const float _e29 = ms_double_ggx_d(_e28, alpha_32);
-    const MsSample mssample_5 = ConstructMsSample(_e28, (_e29 * _e28.z));
-    return mssample_5;
-}
-
-float ms_exp_lambda_q(float q)
-{
-    if ((q < 64.0)) {
-        const float2 _e6 = ms_fam_segment(q, MS_EXP_QA_K0_, MS_EXP_QA_K1_, MS_EXP_QA_M);
-        float4 _e11 = MS_EXP_QA[min(uint(naga_f2u32(_e6.x)), 959u)];
-        const float _e13 = ms_fam_cubic(_e11, _e6.y);
-        return _e13;
-    }
-    const float2 _e17 = ms_fam_segment(q, MS_EXP_QB_K0_, MS_EXP_QB_K1_, MS_EXP_QB_M);
-    float4 _e22 = MS_EXP_QB[min(uint(naga_f2u32(_e17.x)), 767u)];
-    const float _e24 = ms_fam_cubic(_e22, _e17.y);
-    return _e24;
-}
-
-float ms_exp_lambda_z(float z_1)
-{
-    if ((z_1 < 0.00024414063)) {
-        return (((0.63661975 / z_1) - 0.5) + (0.15915494 * z_1));
-    }
-    float q_6 = (z_1 * z_1);
-    if ((q_6 < 4096.0)) {
-        const float _e13 = ms_exp_lambda_q(q_6);
-        return _e13;
-    }
-    if ((z_1 < 512.0)) {
-        const float2 _e19 = ms_fam_segment(z_1, MS_EXP_FAR_K0_, MS_EXP_FAR_K1_, MS_EXP_FAR_M);
-        uint i_8 = (2u * naga_f2u32(_e19.x));
-        float4 lo_3 = MS_EXP_FAR[min(uint(i_8), 63u)];
-        float4 hi_2 = MS_EXP_FAR[min(uint((i_8 + 1u)), 63u)];
-        float s_12 = _e19.y;
-        float s2_3 = (s_12 * s_12);
-        float p_3 = (((lo_3.x + (lo_3.y * s_12)) + ((lo_3.z + (lo_3.w * s_12)) * s2_3)) + (((hi_2.x + (hi_2.y * s_12)) + (hi_2.z * s2_3)) * (s2_3 * s2_3)));
-        return (p_3 * exp(-(z_1)));
-    }
-    if ((z_1 != z_1)) {
-        return z_1;
-    }
-    return 0.0;
-}
-
-float ms_exponential_lambda(float3 w_19, float2 alpha_33)
-{
-    float q_1 = (float)0;
-    bool local_19 = (bool)0;
-    float a_17 = (float)0;
-    bool local_20 = (bool)0;
-
-    float u_19 = abs(w_19.z);
-    if ((alpha_33.x == alpha_33.y)) {
-        float a_21 = alpha_33.x;
-        q_1 = (((4.0 * u_19) * u_19) / ((a_21 * a_21) * ((1.0 - u_19) * (1.0 + u_19))));
-    } else {
-        float sx_4 = (alpha_33.x * w_19.x);
-        float sy_3 = (alpha_33.y * w_19.y);
-        q_1 = ((4.0 * (w_19.z * w_19.z)) / ((sx_4 * sx_4) + (sy_3 * sy_3)));
-    }
-    float _e35 = q_1;
-    if ((_e35 >= 5.9604645e-8)) {
-        float _e40 = q_1;
-        local_19 = (_e40 < 4096.0);
-    } else {
-        local_19 = false;
-    }
-    bool _e44 = local_19;
-    if (_e44) {
-        float _e45 = q_1;
-        const float _e46 = ms_exp_lambda_q(_e45);
-        return _e46;
-    }
-    a_17 = alpha_33.x;
-    float s2_4 = ((w_19.x * w_19.x) + (w_19.y * w_19.y));
-    if ((alpha_33.x != alpha_33.y)) {
-        local_20 = (s2_4 > 0.0);
-    } else {
-        local_20 = false;
-    }
-    bool _e64 = local_20;
-    if (_e64) {
-        a_17 = sqrt((((((alpha_33.x * alpha_33.x) * w_19.x) * w_19.x) + (((alpha_33.y * alpha_33.y) * w_19.y) * w_19.y)) / s2_4));
-    }
-    float _e83 = a_17;
-    const float _e92 = ms_exp_lambda_z(((u_19 + u_19) / (_e83 * sqrt(((1.0 - u_19) * (1.0 + u_19))))));
-    return _e92;
-}
-
-float ms_exponential_g1_(float3 w_20, float2 alpha_34)
-{
-    if ((w_20.z == 0.0)) {
-        return 0.0;
-    }
-    const float _e6 = ms_exponential_lambda(w_20, alpha_34);
-    return (1.0 / (1.0 + _e6));
-}
-
-float ms_exponential_g2_(float3 wo_13, float3 wi_13, float2 alpha_35)
-{
-    bool local_21 = (bool)0;
-
-    if (!((wo_13.z == 0.0))) {
-        local_21 = (wi_13.z == 0.0);
-    } else {
-        local_21 = true;
-    }
-    bool _e13 = local_21;
-    if (_e13) {
-        return 0.0;
-    }
-    const float _e15 = ms_exponential_lambda(wo_13, alpha_35);
-    const float _e16 = ms_exponential_lambda(wi_13, alpha_35);
-    return (1.0 / (1.0 + (_e15 + _e16)));
-}
-
-float ms_exponential_g2_separable(float3 wo_14, float3 wi_14, float2 alpha_36)
-{
-    const float _e3 = ms_exponential_g1_(wo_14, alpha_36);
-    const float _e4 = ms_exponential_g1_(wi_14, alpha_36);
-    return (_e3 * _e4);
-}
-
-float ms_exponential_d(float3 wm_12, float2 alpha_37)
-{
-    bool local_22 = (bool)0;
-
-    float z_13 = wm_12.z;
-    float r_14 = (1.0 / (alpha_37.x * alpha_37.y));
-    float x_19 = ((wm_12.x * alpha_37.y) * r_14);
-    float y_9 = ((wm_12.y * alpha_37.x) * r_14);
-    float z2_3 = (z_13 * z_13);
-    if ((z_13 > 0.0)) {
-        local_22 = (z2_3 > 0.0);
-    } else {
-        local_22 = false;
-    }
-    bool _e24 = local_22;
-    if (!(_e24)) {
-        return ((z_13 != z_13) ? z_13 : 0.0);
-    }
-    float e_5 = ((2.0 * sqrt(((x_19 * x_19) + (y_9 * y_9)))) / z_13);
-    if ((e_5 <= 80.0)) {
-        return (((2.0 * exp(-(e_5))) * r_14) / ((MS_PI * z2_3) * z2_3));
-    }
-    return exp((((log((2.0 * r_14)) - 1.14473) - (4.0 * log(z_13))) - e_5));
-}
-
-float ms_exponential_pdf(float3 w_21, float3 wm_13, float2 alpha_38)
-{
-    float c_4 = (float)0;
-    bool local_23 = (bool)0;
-
-    float z_14 = abs(w_21.z);
-    const float _e5 = ms_dot(w_21, wm_13);
-    c_4 = _e5;
-    if ((w_21.z < 0.0)) {
-        float _e10 = c_4;
-        c_4 = -(_e10);
-    }
-    float _e12 = c_4;
-    if ((_e12 > 0.0)) {
-        local_23 = (z_14 > 0.0);
-    } else {
-        local_23 = false;
-    }
-    bool _e20 = local_23;
-    if (!(_e20)) {
-        return 0.0;
-    }
-    const float _e23 = ms_exponential_g1_(w_21, alpha_38);
-    float _e24 = c_4;
-    const float _e26 = ms_exponential_d(wm_13, alpha_38);
-    return (((_e23 * _e24) * _e26) / z_14);
-}
-
-float ms_exponential_pdf_dcos(float3 wm_14, float2 alpha_39)
-{
-    if (!((wm_14.z > 0.0))) {
-        return 0.0;
-    }
-    const float _e7 = ms_exponential_d(wm_14, alpha_39);
-    return (_e7 * wm_14.z);
-}
-
-MsSample ms_exponential_sample_dcos(float2 alpha_40, float2 u_13)
-{
-    uint2 state_6 = (uint2)0;
-    float3 v_5 = (float3)0;
-
-    const uint2 _e2 = ms_stream_new(u_13);
-    state_6 = _e2;
-    const float _e4 = ms_stream_next(state_6);
-    const float _e5 = ms_zig_exp1_(_e4, state_6);
-    const float _e7 = ms_bk_ln_1m(u_13.x);
-    float r_15 = (0.5 * (_e5 - _e7));
-    const float2 _e12 = ms_cos_sin_turn(u_13.y);
-    if ((r_15 > 1.0)) {
-        v_5 = float3((alpha_40.x * _e12.x), (alpha_40.y * _e12.y), (1.0 / r_15));
-    } else {
-        v_5 = float3(((alpha_40.x * r_15) * _e12.x), ((alpha_40.y * r_15) * _e12.y), 1.0);
-    }
-    float3 _e35 = v_5;
-    const float3 _e36 = ms_unit_normal(_e35);
-    const float _e37 = ms_exponential_d(_e36, alpha_40);
-    const MsSample mssample_6 = ConstructMsSample(_e36, (_e37 * _e36.z));
-    return mssample_6;
-}
-
-float ms_d(MsMicrofacet mf, float3 wm_15)
+float ms_d(MsMicrofacet mf, float3 wm_9)
 {
     if ((mf.ndf == MS_NDF_GGX)) {
-        const float _e6 = ms_ggx_d(wm_15, mf.alpha);
+        const float _e6 = ms_ggx_d(wm_9, mf.alpha);
         return _e6;
     }
     if ((mf.ndf == MS_NDF_BECKMANN)) {
-        const float _e11 = ms_beckmann_d(wm_15, mf.alpha);
+        const float _e11 = ms_beckmann_d(wm_9, mf.alpha);
         return _e11;
-    }
-    if ((mf.ndf == MS_NDF_DOUBLE_GGX)) {
-        const float _e16 = ms_double_ggx_d(wm_15, mf.alpha);
-        return _e16;
-    }
-    if ((mf.ndf == MS_NDF_EXPONENTIAL)) {
-        const float _e21 = ms_exponential_d(wm_15, mf.alpha);
-        return _e21;
     }
     return 0.0;
 }
 
-float ms_lambda(MsMicrofacet mf_1, float3 w_22)
+float ms_lambda(MsMicrofacet mf_1, float3 w_15)
 {
     if ((mf_1.ndf == MS_NDF_GGX)) {
-        const float _e6 = ms_ggx_lambda(w_22, mf_1.alpha);
+        const float _e6 = ms_ggx_lambda(w_15, mf_1.alpha);
         return _e6;
     }
     if ((mf_1.ndf == MS_NDF_BECKMANN)) {
-        const float _e11 = ms_beckmann_lambda(w_22, mf_1.alpha);
+        const float _e11 = ms_beckmann_lambda(w_15, mf_1.alpha);
         return _e11;
-    }
-    if ((mf_1.ndf == MS_NDF_DOUBLE_GGX)) {
-        const float _e16 = ms_double_ggx_lambda(w_22, mf_1.alpha);
-        return _e16;
-    }
-    if ((mf_1.ndf == MS_NDF_EXPONENTIAL)) {
-        const float _e21 = ms_exponential_lambda(w_22, mf_1.alpha);
-        return _e21;
     }
     return 0.0;
 }
 
-float ms_g1_(MsMicrofacet mf_2, float3 w_23)
+float ms_g1_(MsMicrofacet mf_2, float3 w_16)
 {
     if ((mf_2.ndf == MS_NDF_GGX)) {
-        const float _e6 = ms_ggx_g1_(w_23, mf_2.alpha);
+        const float _e6 = ms_ggx_g1_(w_16, mf_2.alpha);
         return _e6;
     }
     if ((mf_2.ndf == MS_NDF_BECKMANN)) {
-        const float _e11 = ms_beckmann_g1_(w_23, mf_2.alpha);
+        const float _e11 = ms_beckmann_g1_(w_16, mf_2.alpha);
         return _e11;
-    }
-    if ((mf_2.ndf == MS_NDF_DOUBLE_GGX)) {
-        const float _e16 = ms_double_ggx_g1_(w_23, mf_2.alpha);
-        return _e16;
-    }
-    if ((mf_2.ndf == MS_NDF_EXPONENTIAL)) {
-        const float _e21 = ms_exponential_g1_(w_23, mf_2.alpha);
-        return _e21;
     }
     return 0.0;
 }
 
-float ms_g2_(MsMicrofacet mf_3, float3 wo_15, float3 wi_15)
+float ms_g2_(MsMicrofacet mf_3, float3 wo_11, float3 wi_11)
 {
     if ((mf_3.ndf == MS_NDF_GGX)) {
-        const float _e7 = ms_ggx_g2_(wo_15, wi_15, mf_3.alpha);
+        const float _e7 = ms_ggx_g2_(wo_11, wi_11, mf_3.alpha);
         return _e7;
     }
     if ((mf_3.ndf == MS_NDF_BECKMANN)) {
-        const float _e12 = ms_beckmann_g2_(wo_15, wi_15, mf_3.alpha);
+        const float _e12 = ms_beckmann_g2_(wo_11, wi_11, mf_3.alpha);
         return _e12;
-    }
-    if ((mf_3.ndf == MS_NDF_DOUBLE_GGX)) {
-        const float _e17 = ms_double_ggx_g2_(wo_15, wi_15, mf_3.alpha);
-        return _e17;
-    }
-    if ((mf_3.ndf == MS_NDF_EXPONENTIAL)) {
-        const float _e22 = ms_exponential_g2_(wo_15, wi_15, mf_3.alpha);
-        return _e22;
     }
     return 0.0;
 }
 
-float ms_g2_separable(MsMicrofacet mf_4, float3 wo_16, float3 wi_16)
+float ms_g2_separable(MsMicrofacet mf_4, float3 wo_12, float3 wi_12)
 {
-    const float _e3 = ms_g1_(mf_4, wo_16);
-    const float _e4 = ms_g1_(mf_4, wi_16);
+    const float _e3 = ms_g1_(mf_4, wo_12);
+    const float _e4 = ms_g1_(mf_4, wi_12);
     return (_e3 * _e4);
 }
 
-float ms_pdf(MsMicrofacet mf_5, float3 w_24, float3 wm_16)
+float ms_pdf(MsMicrofacet mf_5, float3 w_17, float3 wm_10)
 {
     if ((mf_5.ndf == MS_NDF_GGX)) {
-        const float _e7 = ms_ggx_pdf(w_24, wm_16, mf_5.alpha);
+        const float _e7 = ms_ggx_pdf(w_17, wm_10, mf_5.alpha);
         return _e7;
     }
     if ((mf_5.ndf == MS_NDF_BECKMANN)) {
-        const float _e12 = ms_beckmann_pdf(w_24, wm_16, mf_5.alpha);
+        const float _e12 = ms_beckmann_pdf(w_17, wm_10, mf_5.alpha);
         return _e12;
-    }
-    if ((mf_5.ndf == MS_NDF_DOUBLE_GGX)) {
-        const float _e17 = ms_double_ggx_pdf(w_24, wm_16, mf_5.alpha);
-        return _e17;
-    }
-    if ((mf_5.ndf == MS_NDF_EXPONENTIAL)) {
-        const float _e22 = ms_exponential_pdf(w_24, wm_16, mf_5.alpha);
-        return _e22;
     }
     return 0.0;
 }
 
-MsSample ms_sample(MsMicrofacet mf_6, float3 w_25, float2 u_14)
+MsSample ms_sample(MsMicrofacet mf_6, float3 w_18, float2 u_10)
 {
     if ((mf_6.ndf == MS_NDF_GGX)) {
-        const MsSample _e7 = ms_ggx_sample(w_25, mf_6.alpha, u_14);
-        const MsSample mssample_7 = _e7;
-        return mssample_7;
+        const MsSample _e7 = ms_ggx_sample(w_18, mf_6.alpha, u_10);
+        const MsSample mssample_5 = _e7;
+        return mssample_5;
     }
     if ((mf_6.ndf == MS_NDF_BECKMANN)) {
-        const MsSample _e12 = ms_beckmann_sample(w_25, mf_6.alpha, u_14);
-        const MsSample mssample_8 = _e12;
-        return mssample_8;
+        const MsSample _e12 = ms_beckmann_sample(w_18, mf_6.alpha, u_10);
+        const MsSample mssample_6 = _e12;
+        return mssample_6;
     }
-    const MsSample mssample_9 = ConstructMsSample(float3(0.0, 0.0, 1.0), 0.0);
-    return mssample_9;
+    const MsSample mssample_7 = ConstructMsSample(float3(0.0, 0.0, 1.0), 0.0);
+    return mssample_7;
 }
 
-MsSample ms_sample_dcos(MsMicrofacet mf_7, float2 u_15)
+MsSample ms_sample_dcos(MsMicrofacet mf_7, float2 u_11)
 {
     if ((mf_7.ndf == MS_NDF_GGX)) {
-        const MsSample _e6 = ms_ggx_sample_dcos(mf_7.alpha, u_15);
-        const MsSample mssample_10 = _e6;
-        return mssample_10;
+        const MsSample _e6 = ms_ggx_sample_dcos(mf_7.alpha, u_11);
+        const MsSample mssample_8 = _e6;
+        return mssample_8;
     }
     if ((mf_7.ndf == MS_NDF_BECKMANN)) {
-        const MsSample _e11 = ms_beckmann_sample_dcos(mf_7.alpha, u_15);
-        const MsSample mssample_11 = _e11;
-        return mssample_11;
+        const MsSample _e11 = ms_beckmann_sample_dcos(mf_7.alpha, u_11);
+        const MsSample mssample_9 = _e11;
+        return mssample_9;
     }
-    if ((mf_7.ndf == MS_NDF_DOUBLE_GGX)) {
-        const MsSample _e16 = ms_double_ggx_sample_dcos(mf_7.alpha, u_15);
-        const MsSample mssample_12 = _e16;
-        return mssample_12;
-    }
-    if ((mf_7.ndf == MS_NDF_EXPONENTIAL)) {
-        const MsSample _e21 = ms_exponential_sample_dcos(mf_7.alpha, u_15);
-        const MsSample mssample_13 = _e21;
-        return mssample_13;
-    }
-    const MsSample mssample_14 = ConstructMsSample(float3(0.0, 0.0, 1.0), 0.0);
-    return mssample_14;
+    const MsSample mssample_10 = ConstructMsSample(float3(0.0, 0.0, 1.0), 0.0);
+    return mssample_10;
 }
 
 bool ms_effectively_smooth(MsMicrofacet mf_8)
@@ -2162,123 +1443,123 @@ bool ms_effectively_smooth(MsMicrofacet mf_8)
     return (max(mf_8.alpha.x, mf_8.alpha.y) < 0.001);
 }
 
-bool ms_on_horizon(float z_2)
+bool ms_on_horizon(float z)
 {
-    return !((abs(z_2) >= 1e-18));
+    return !((abs(z) >= 1e-18));
 }
 
-bool ms_usable(float v_6)
+bool ms_usable(float v_4)
 {
-    bool local_24 = (bool)0;
+    bool local_14 = (bool)0;
 
-    if ((v_6 >= 1.1754944e-20)) {
-        local_24 = (v_6 <= 3.4028235e38);
+    if ((v_4 >= 1.1754944e-20)) {
+        local_14 = (v_4 <= 3.4028235e38);
     } else {
-        local_24 = false;
+        local_14 = false;
     }
-    bool _e8 = local_24;
+    bool _e8 = local_14;
     return _e8;
 }
 
-float ms_masking_g2_(MsMicrofacet mf_9, uint masking, float3 wo_17, float3 wi_17)
+float ms_masking_g2_(MsMicrofacet mf_9, uint masking, float3 wo_13, float3 wi_13)
 {
     if ((masking == MS_MASKING_SEPARABLE)) {
-        const float _e6 = ms_g2_separable(mf_9, wo_17, wi_17);
+        const float _e6 = ms_g2_separable(mf_9, wo_13, wi_13);
         return _e6;
     }
-    const float _e7 = ms_g2_(mf_9, wo_17, wi_17);
+    const float _e7 = ms_g2_(mf_9, wo_13, wi_13);
     return _e7;
 }
 
-float ms_reflected(MsMicrofacet mf_10, uint masking_1, float3 wo_18, float3 wi_18, float d_wm)
+float ms_reflected(MsMicrofacet mf_10, uint masking_1, float3 wo_14, float3 wi_14, float d_wm)
 {
-    const float _e5 = ms_masking_g2_(mf_10, masking_1, wo_18, wi_18);
-    return ((d_wm * _e5) / (4.0 * abs((wo_18.z * wi_18.z))));
+    const float _e5 = ms_masking_g2_(mf_10, masking_1, wo_14, wi_14);
+    return ((d_wm * _e5) / (4.0 * abs((wo_14.z * wi_14.z))));
 }
 
-float3 ms_weighted(float3 fr_1, float k_5)
+float3 ms_weighted(float3 fr_1, float k_2)
 {
-    return ((fr_1 == (0.0).xxx) ? (0.0).xxx : (fr_1 * k_5));
+    return ((fr_1 == (0.0).xxx) ? (0.0).xxx : (fr_1 * k_2));
 }
 
-float3 ms_conductor_lobe_normal(MsConductor c_5, float3 wo_19, float3 wi_19)
+float3 ms_conductor_lobe_normal(MsConductor c_2, float3 wo_15, float3 wi_15)
 {
-    bool local_25 = (bool)0;
-    bool local_26 = (bool)0;
-    bool local_27 = (bool)0;
+    bool local_15 = (bool)0;
+    bool local_16 = (bool)0;
+    bool local_17 = (bool)0;
 
-    const bool _e3 = ms_same_hemisphere(wo_19, wi_19);
+    const bool _e3 = ms_same_hemisphere(wo_15, wi_15);
     if (!(!(_e3))) {
-        const bool _e9 = ms_on_horizon(wo_19.z);
-        local_25 = _e9;
+        const bool _e9 = ms_on_horizon(wo_15.z);
+        local_15 = _e9;
     } else {
-        local_25 = true;
+        local_15 = true;
     }
-    bool _e11 = local_25;
+    bool _e11 = local_15;
     if (!(_e11)) {
-        const bool _e16 = ms_on_horizon(wi_19.z);
-        local_26 = _e16;
+        const bool _e16 = ms_on_horizon(wi_15.z);
+        local_16 = _e16;
     } else {
-        local_26 = true;
+        local_16 = true;
     }
-    bool _e18 = local_26;
+    bool _e18 = local_16;
     if (!(_e18)) {
-        const bool _e23 = ms_effectively_smooth(c_5.mf);
-        local_27 = _e23;
+        const bool _e23 = ms_effectively_smooth(c_2.mf);
+        local_17 = _e23;
     } else {
-        local_27 = true;
+        local_17 = true;
     }
-    bool _e25 = local_27;
+    bool _e25 = local_17;
     if (_e25) {
         return (0.0).xxx;
     }
-    const float3 _e28 = ms_half_vector_reflection(wo_19, wi_19);
+    const float3 _e28 = ms_half_vector_reflection(wo_15, wi_15);
     return _e28;
 }
 
-float3 ms_conductor_eval(MsConductor c_6, float3 wo_20, float3 wi_20)
+float3 ms_conductor_eval(MsConductor c_3, float3 wo_16, float3 wi_16)
 {
-    const float3 _e3 = ms_conductor_lobe_normal(c_6, wo_20, wi_20);
+    const float3 _e3 = ms_conductor_lobe_normal(c_3, wo_16, wi_16);
     const bool _e4 = ms_half_vector_ok(_e3);
     if (!(_e4)) {
         return (0.0).xxx;
     }
-    const float _e9 = ms_dot(wo_20, _e3);
-    const float _e11 = ms_dot(wi_20, _e3);
-    const float3 _e16 = ms_fresnel_eval(c_6.fresnel, (0.5 * (abs(_e9) + abs(_e11))));
-    const float _e20 = ms_d(c_6.mf, _e3);
-    const float _e21 = ms_reflected(c_6.mf, c_6.masking, wo_20, wi_20, _e20);
+    const float _e9 = ms_dot(wo_16, _e3);
+    const float _e11 = ms_dot(wi_16, _e3);
+    const float3 _e16 = ms_fresnel_eval(c_3.fresnel, (0.5 * (abs(_e9) + abs(_e11))));
+    const float _e20 = ms_d(c_3.mf, _e3);
+    const float _e21 = ms_reflected(c_3.mf, c_3.masking, wo_16, wi_16, _e20);
     const float3 _e22 = ms_weighted(_e16, _e21);
     return _e22;
 }
 
-float ms_conductor_pdf(MsConductor c_7, float3 wo_21, float3 wi_21)
+float ms_conductor_pdf(MsConductor c_4, float3 wo_17, float3 wi_17)
 {
-    const float3 _e3 = ms_conductor_lobe_normal(c_7, wo_21, wi_21);
+    const float3 _e3 = ms_conductor_lobe_normal(c_4, wo_17, wi_17);
     const bool _e4 = ms_half_vector_ok(_e3);
     if (!(_e4)) {
         return 0.0;
     }
-    const float _e8 = ms_pdf(c_7.mf, wo_21, _e3);
-    const float _e9 = ms_dot(wo_21, _e3);
+    const float _e8 = ms_pdf(c_4.mf, wo_17, _e3);
+    const float _e9 = ms_dot(wo_17, _e3);
     return (_e8 / (4.0 * abs(_e9)));
 }
 
-float4 ms_conductor_eval_pdf(MsConductor c_8, float3 wo_22, float3 wi_22)
+float4 ms_conductor_eval_pdf(MsConductor c_5, float3 wo_18, float3 wi_18)
 {
-    const float3 _e3 = ms_conductor_lobe_normal(c_8, wo_22, wi_22);
+    const float3 _e3 = ms_conductor_lobe_normal(c_5, wo_18, wi_18);
     const bool _e4 = ms_half_vector_ok(_e3);
     if (!(_e4)) {
         return (0.0).xxxx;
     }
-    const float _e8 = ms_dot(wo_22, _e3);
+    const float _e8 = ms_dot(wo_18, _e3);
     float co = abs(_e8);
-    const float _e11 = ms_dot(wi_22, _e3);
-    const float3 _e16 = ms_fresnel_eval(c_8.fresnel, (0.5 * (co + abs(_e11))));
-    const float _e20 = ms_d(c_8.mf, _e3);
-    const float _e21 = ms_reflected(c_8.mf, c_8.masking, wo_22, wi_22, _e20);
+    const float _e11 = ms_dot(wi_18, _e3);
+    const float3 _e16 = ms_fresnel_eval(c_5.fresnel, (0.5 * (co + abs(_e11))));
+    const float _e20 = ms_d(c_5.mf, _e3);
+    const float _e21 = ms_reflected(c_5.mf, c_5.masking, wo_18, wi_18, _e20);
     const float3 _e22 = ms_weighted(_e16, _e21);
-    const float _e24 = ms_pdf(c_8.mf, wo_22, _e3);
+    const float _e24 = ms_pdf(c_5.mf, wo_18, _e3);
     return float4(_e22, (_e24 / (4.0 * co)));
 }
 
@@ -2292,39 +1573,39 @@ MsBsdfSample ConstructMsBsdfSample(float3 arg0, float arg1, float3 arg2, uint ar
     return ret;
 }
 
-MsBsdfSample ms_conductor_sample(MsConductor c_9, float3 wo_23, float uc, float2 u_16)
+MsBsdfSample ms_conductor_sample(MsConductor c_6, float3 wo_19, float uc, float2 u_12)
 {
-    bool local_28 = (bool)0;
+    bool local_18 = (bool)0;
 
     MsBsdfSample none = ConstructMsBsdfSample((0.0).xxx, 0.0, (0.0).xxx, 0u, 1.0);
-    const bool _e13 = ms_on_horizon(wo_23.z);
+    const bool _e13 = ms_on_horizon(wo_19.z);
     if (_e13) {
         const MsBsdfSample msbsdfsample = none;
         return msbsdfsample;
     }
-    const bool _e15 = ms_effectively_smooth(c_9.mf);
+    const bool _e15 = ms_effectively_smooth(c_6.mf);
     if (_e15) {
-        float3 wi_30 = float3(-(wo_23.x), -(wo_23.y), wo_23.z);
-        float k_8 = (1.0 / abs(wi_30.z));
-        const float3 _e29 = ms_fresnel_eval(c_9.fresnel, abs(wo_23.z));
-        const MsBsdfSample msbsdfsample_1 = ConstructMsBsdfSample(wi_30, 1.0, (_e29 * k_8), 3u, 1.0);
+        float3 wi_26 = float3(-(wo_19.x), -(wo_19.y), wo_19.z);
+        float k_5 = (1.0 / abs(wi_26.z));
+        const float3 _e29 = ms_fresnel_eval(c_6.fresnel, abs(wo_19.z));
+        const MsBsdfSample msbsdfsample_1 = ConstructMsBsdfSample(wi_26, 1.0, (_e29 * k_5), 3u, 1.0);
         return msbsdfsample_1;
     }
-    const MsSample _e36 = ms_sample(c_9.mf, wo_23, u_16);
-    const float3 _e38 = ms_reflect(wo_23, _e36.wm);
-    const bool _e39 = ms_same_hemisphere(wo_23, _e38);
+    const MsSample _e36 = ms_sample(c_6.mf, wo_19, u_12);
+    const float3 _e38 = ms_reflect(wo_19, _e36.wm);
+    const bool _e39 = ms_same_hemisphere(wo_19, _e38);
     if (!(!(_e39))) {
         const bool _e45 = ms_on_horizon(_e38.z);
-        local_28 = _e45;
+        local_18 = _e45;
     } else {
-        local_28 = true;
+        local_18 = true;
     }
-    bool _e47 = local_28;
+    bool _e47 = local_18;
     if (_e47) {
         const MsBsdfSample msbsdfsample_2 = none;
         return msbsdfsample_2;
     }
-    const float _e49 = ms_dot(wo_23, _e36.wm);
+    const float _e49 = ms_dot(wo_19, _e36.wm);
     float co_1 = abs(_e49);
     float pdf = (_e36.pdf / (4.0 * co_1));
     const bool _e55 = ms_usable(pdf);
@@ -2332,14 +1613,14 @@ MsBsdfSample ms_conductor_sample(MsConductor c_9, float3 wo_23, float uc, float2
         const MsBsdfSample msbsdfsample_3 = none;
         return msbsdfsample_3;
     }
-    const float3 _e58 = ms_fresnel_eval(c_9.fresnel, co_1);
-    const float _e61 = ms_d(c_9.mf, _e36.wm);
+    const float3 _e58 = ms_fresnel_eval(c_6.fresnel, co_1);
+    const float _e61 = ms_d(c_6.mf, _e36.wm);
     const bool _e62 = ms_usable(_e61);
     if (!(_e62)) {
         const MsBsdfSample msbsdfsample_4 = none;
         return msbsdfsample_4;
     }
-    const float _e66 = ms_reflected(c_9.mf, c_9.masking, wo_23, _e38, _e61);
+    const float _e66 = ms_reflected(c_6.mf, c_6.masking, wo_19, _e38, _e61);
     const float3 _e67 = ms_weighted(_e58, _e66);
     if (!(all((_e67 <= (3.4028235e38).xxx)))) {
         const MsBsdfSample msbsdfsample_5 = none;
@@ -2351,85 +1632,85 @@ MsBsdfSample ms_conductor_sample(MsConductor c_9, float3 wo_23, float uc, float2
 
 bool ms_dielectric_smooth(MsDielectric d_1)
 {
-    bool local_29 = (bool)0;
+    bool local_19 = (bool)0;
 
     if (!((d_1.eta == 1.0))) {
         const bool _e8 = ms_effectively_smooth(d_1.mf);
-        local_29 = _e8;
+        local_19 = _e8;
     } else {
-        local_29 = true;
+        local_19 = true;
     }
-    bool _e10 = local_29;
+    bool _e10 = local_19;
     return _e10;
 }
 
-float ms_dielectric_g2_(MsDielectric d_2, float3 wo_24, float3 wi_23)
+float ms_dielectric_g2_(MsDielectric d_2, float3 wo_20, float3 wi_19)
 {
-    const float _e5 = ms_masking_g2_(d_2.mf, d_2.masking, wo_24, wi_23);
+    const float _e5 = ms_masking_g2_(d_2.mf, d_2.masking, wo_20, wi_19);
     return _e5;
 }
 
-float4 ms_dielectric_half(MsDielectric d_3, float3 wo_25, float3 wi_24)
+float4 ms_dielectric_half(MsDielectric d_3, float3 wo_21, float3 wi_20)
 {
-    bool local_30 = (bool)0;
-    float3 wm_17 = (float3)0;
+    bool local_20 = (bool)0;
+    float3 wm_11 = (float3)0;
     float etap_4 = 1.0;
-    bool local_31 = (bool)0;
+    bool local_21 = (bool)0;
 
     float4 none_1 = (0.0).xxxx;
-    float co_2 = wo_25.z;
-    float ci_1 = wi_24.z;
+    float co_2 = wo_21.z;
+    float ci_1 = wi_20.z;
     const bool _e7 = ms_on_horizon(co_2);
     if (!(_e7)) {
         const bool _e11 = ms_on_horizon(ci_1);
-        local_30 = _e11;
+        local_20 = _e11;
     } else {
-        local_30 = true;
+        local_20 = true;
     }
-    bool _e13 = local_30;
+    bool _e13 = local_20;
     if (_e13) {
         return none_1;
     }
     if (((co_2 * ci_1) > 0.0)) {
-        const float3 _e20 = ms_half_vector_reflection(wo_25, wi_24);
-        wm_17 = _e20;
+        const float3 _e20 = ms_half_vector_reflection(wo_21, wi_20);
+        wm_11 = _e20;
     } else {
-        const float4 _e22 = ms_half_vector_refraction(wo_25, wi_24, d_3.eta);
-        wm_17 = _e22.xyz;
+        const float4 _e22 = ms_half_vector_refraction(wo_21, wi_20, d_3.eta);
+        wm_11 = _e22.xyz;
         etap_4 = _e22.w;
     }
-    float3 _e25 = wm_17;
+    float3 _e25 = wm_11;
     const bool _e26 = ms_half_vector_ok(_e25);
     if (!(_e26)) {
         return none_1;
     }
-    float3 _e28 = wm_17;
-    const float _e29 = ms_dot(_e28, wi_24);
+    float3 _e28 = wm_11;
+    const float _e29 = ms_dot(_e28, wi_20);
     if (!(((_e29 * ci_1) < 0.0))) {
-        float3 _e36 = wm_17;
-        const float _e37 = ms_dot(_e36, wo_25);
-        local_31 = ((_e37 * co_2) < 0.0);
+        float3 _e36 = wm_11;
+        const float _e37 = ms_dot(_e36, wo_21);
+        local_21 = ((_e37 * co_2) < 0.0);
     } else {
-        local_31 = true;
+        local_21 = true;
     }
-    bool _e42 = local_31;
+    bool _e42 = local_21;
     if (_e42) {
         return none_1;
     }
-    float3 _e43 = wm_17;
+    float3 _e43 = wm_11;
     float _e44 = etap_4;
     return float4(_e43, _e44);
 }
 
-float ms_dielectric_f_transmission(MsDielectric d_4, float3 wo_26, float3 wi_25, float3 wm_18, float d_wm_1, float etap_5, float t)
+float ms_dielectric_f_transmission(MsDielectric d_4, float3 wo_22, float3 wi_21, float3 wm_12, float d_wm_1, float etap_5, float t)
 {
     float f_1 = (float)0;
 
-    const float _e7 = ms_dot(wi_25, wm_18);
-    const float _e8 = ms_dot(wo_26, wm_18);
-    const float _e9 = ms_refraction_denominator(wo_26, wi_25, wm_18, etap_5);
-    const float _e10 = ms_dielectric_g2_(d_4, wo_26, wi_25);
-    float geometric = ((_e10 / abs((wi_25.z * wo_26.z))) * (abs((_e7 * _e8)) / (_e9 * _e9)));
+    const float _e7 = ms_dot(wi_21, wm_12);
+    const float _e8 = ms_dot(wo_22, wm_12);
+    const float _e9 = ms_refraction_denominator(wo_22, wi_21, wm_12, etap_5);
+    const float _e10 = ms_dielectric_g2_(d_4, wo_22, wi_21);
+    float geometric = ((_e10 / abs((wi_21.z * wo_22.z))) * (abs((_e7 * _e8)) / (_e9 * _e9)));
     f_1 = ((d_wm_1 * t) * geometric);
     if ((d_4.transport == MS_TRANSPORT_RADIANCE)) {
         float _e27 = f_1;
@@ -2439,136 +1720,136 @@ float ms_dielectric_f_transmission(MsDielectric d_4, float3 wo_26, float3 wi_25,
     return _e30;
 }
 
-float ms_dielectric_eval(MsDielectric d_5, float3 wo_27, float3 wi_26)
+float ms_dielectric_eval(MsDielectric d_5, float3 wo_23, float3 wi_22)
 {
     const bool _e3 = ms_dielectric_smooth(d_5);
     if (_e3) {
         return 0.0;
     }
-    const float4 _e5 = ms_dielectric_half(d_5, wo_27, wi_26);
+    const float4 _e5 = ms_dielectric_half(d_5, wo_23, wi_22);
     if ((_e5.w == 0.0)) {
         return 0.0;
     }
-    float3 wm_19 = _e5.xyz;
-    const float _e11 = ms_dot(wo_27, wm_19);
+    float3 wm_13 = _e5.xyz;
+    const float _e11 = ms_dot(wo_23, wm_13);
     const float _e13 = ms_fresnel_dielectric(_e11, d_5.eta);
-    const float _e15 = ms_d(d_5.mf, wm_19);
-    if (((wo_27.z * wi_26.z) > 0.0)) {
-        const float _e23 = ms_reflected(d_5.mf, d_5.masking, wo_27, wi_26, _e15);
+    const float _e15 = ms_d(d_5.mf, wm_13);
+    if (((wo_23.z * wi_22.z) > 0.0)) {
+        const float _e23 = ms_reflected(d_5.mf, d_5.masking, wo_23, wi_22, _e15);
         return (_e13 * _e23);
     }
-    const float _e28 = ms_dielectric_f_transmission(d_5, wo_27, wi_26, wm_19, _e15, _e5.w, (1.0 - _e13));
+    const float _e28 = ms_dielectric_f_transmission(d_5, wo_23, wi_22, wm_13, _e15, _e5.w, (1.0 - _e13));
     return _e28;
 }
 
-float ms_dielectric_pdf(MsDielectric d_6, float3 wo_28, float3 wi_27)
+float ms_dielectric_pdf(MsDielectric d_6, float3 wo_24, float3 wi_23)
 {
     const bool _e3 = ms_dielectric_smooth(d_6);
     if (_e3) {
         return 0.0;
     }
-    const float4 _e5 = ms_dielectric_half(d_6, wo_28, wi_27);
+    const float4 _e5 = ms_dielectric_half(d_6, wo_24, wi_23);
     if ((_e5.w == 0.0)) {
         return 0.0;
     }
-    float3 wm_20 = _e5.xyz;
-    const float _e11 = ms_dot(wo_28, wm_20);
+    float3 wm_14 = _e5.xyz;
+    const float _e11 = ms_dot(wo_24, wm_14);
     const float _e13 = ms_fresnel_dielectric(_e11, d_6.eta);
-    const float _e15 = ms_pdf(d_6.mf, wo_28, wm_20);
-    if (((wo_28.z * wi_27.z) > 0.0)) {
-        const float _e22 = ms_dot(wo_28, wm_20);
+    const float _e15 = ms_pdf(d_6.mf, wo_24, wm_14);
+    if (((wo_24.z * wi_23.z) > 0.0)) {
+        const float _e22 = ms_dot(wo_24, wm_14);
         return ((_e15 * _e13) / (4.0 * abs(_e22)));
     }
-    const float _e31 = ms_jacobian_refraction(wo_28, wi_27, wm_20, _e5.w);
+    const float _e31 = ms_jacobian_refraction(wo_24, wi_23, wm_14, _e5.w);
     return ((_e15 * (1.0 - _e13)) * _e31);
 }
 
-MsBsdfSample ms_dielectric_sample_smooth(MsDielectric d_7, float3 wo_29, float uc_1)
+MsBsdfSample ms_dielectric_sample_smooth(MsDielectric d_7, float3 wo_25, float uc_1)
 {
     float f_2 = (float)0;
 
-    const float _e5 = ms_fresnel_dielectric(wo_29.z, d_7.eta);
+    const float _e5 = ms_fresnel_dielectric(wo_25.z, d_7.eta);
     if ((uc_1 < _e5)) {
-        float3 wi_31 = float3(-(wo_29.x), -(wo_29.y), wo_29.z);
-        const MsBsdfSample msbsdfsample_7 = ConstructMsBsdfSample(wi_31, _e5, ((_e5 / abs(wi_31.z))).xxx, 3u, 1.0);
+        float3 wi_27 = float3(-(wo_25.x), -(wo_25.y), wo_25.z);
+        const MsBsdfSample msbsdfsample_7 = ConstructMsBsdfSample(wi_27, _e5, ((_e5 / abs(wi_27.z))).xxx, 3u, 1.0);
         return msbsdfsample_7;
     }
     MsBsdfSample none_2 = ConstructMsBsdfSample((0.0).xxx, 0.0, (0.0).xxx, 0u, 1.0);
-    const float4 _e33 = ms_refract(wo_29, float3(0.0, 0.0, 1.0), d_7.eta);
+    const float4 _e33 = ms_refract(wo_25, float3(0.0, 0.0, 1.0), d_7.eta);
     if ((_e33.w == 0.0)) {
         const MsBsdfSample msbsdfsample_8 = none_2;
         return msbsdfsample_8;
     }
-    float3 wi_32 = _e33.xyz;
-    const bool _e39 = ms_on_horizon(wi_32.z);
+    float3 wi_28 = _e33.xyz;
+    const bool _e39 = ms_on_horizon(wi_28.z);
     if (_e39) {
         const MsBsdfSample msbsdfsample_9 = none_2;
         return msbsdfsample_9;
     }
-    float t_10 = (1.0 - _e5);
-    f_2 = (t_10 / abs(wi_32.z));
+    float t_8 = (1.0 - _e5);
+    f_2 = (t_8 / abs(wi_28.z));
     if ((d_7.transport == MS_TRANSPORT_RADIANCE)) {
         float _e49 = f_2;
         f_2 = (_e49 / (_e33.w * _e33.w));
     }
     float _e54 = f_2;
-    const MsBsdfSample msbsdfsample_10 = ConstructMsBsdfSample(wi_32, t_10, (_e54).xxx, 7u, _e33.w);
+    const MsBsdfSample msbsdfsample_10 = ConstructMsBsdfSample(wi_28, t_8, (_e54).xxx, 7u, _e33.w);
     return msbsdfsample_10;
 }
 
-MsBsdfSample ms_dielectric_sample(MsDielectric d_8, float3 wo_30, float uc_2, float2 u_17)
+MsBsdfSample ms_dielectric_sample(MsDielectric d_8, float3 wo_26, float uc_2, float2 u_13)
 {
-    bool local_32 = (bool)0;
-    bool local_33 = (bool)0;
-    bool local_34 = (bool)0;
-    bool local_35 = (bool)0;
+    bool local_22 = (bool)0;
+    bool local_23 = (bool)0;
+    bool local_24 = (bool)0;
+    bool local_25 = (bool)0;
 
     MsBsdfSample none_3 = ConstructMsBsdfSample((0.0).xxx, 0.0, (0.0).xxx, 0u, 1.0);
-    const bool _e13 = ms_on_horizon(wo_30.z);
+    const bool _e13 = ms_on_horizon(wo_26.z);
     if (_e13) {
         const MsBsdfSample msbsdfsample_11 = none_3;
         return msbsdfsample_11;
     }
     const bool _e14 = ms_dielectric_smooth(d_8);
     if (_e14) {
-        const MsBsdfSample _e15 = ms_dielectric_sample_smooth(d_8, wo_30, uc_2);
+        const MsBsdfSample _e15 = ms_dielectric_sample_smooth(d_8, wo_26, uc_2);
         const MsBsdfSample msbsdfsample_12 = _e15;
         return msbsdfsample_12;
     }
-    const MsSample _e17 = ms_sample(d_8.mf, wo_30, u_17);
-    float3 wm_21 = _e17.wm;
-    const float _e19 = ms_dot(wo_30, wm_21);
+    const MsSample _e17 = ms_sample(d_8.mf, wo_26, u_13);
+    float3 wm_15 = _e17.wm;
+    const float _e19 = ms_dot(wo_26, wm_15);
     const float _e21 = ms_fresnel_dielectric(_e19, d_8.eta);
     if ((uc_2 < _e21)) {
-        const float3 _e23 = ms_reflect(wo_30, wm_21);
-        const bool _e24 = ms_same_hemisphere(wo_30, _e23);
+        const float3 _e23 = ms_reflect(wo_26, wm_15);
+        const bool _e24 = ms_same_hemisphere(wo_26, _e23);
         if (!(!(_e24))) {
             const bool _e30 = ms_on_horizon(_e23.z);
-            local_32 = _e30;
+            local_22 = _e30;
         } else {
-            local_32 = true;
+            local_22 = true;
         }
-        bool _e32 = local_32;
+        bool _e32 = local_22;
         if (_e32) {
             const MsBsdfSample msbsdfsample_13 = none_3;
             return msbsdfsample_13;
         }
-        const float _e34 = ms_d(d_8.mf, wm_21);
+        const float _e34 = ms_d(d_8.mf, wm_15);
         const bool _e35 = ms_usable(_e34);
         if (!(_e35)) {
             const MsBsdfSample msbsdfsample_14 = none_3;
             return msbsdfsample_14;
         }
-        const float _e39 = ms_reflected(d_8.mf, d_8.masking, wo_30, _e23, _e34);
+        const float _e39 = ms_reflected(d_8.mf, d_8.masking, wo_26, _e23, _e34);
         float f_3 = (_e21 * _e39);
         float pdf_1 = ((_e17.pdf * _e21) / (4.0 * abs(_e19)));
         const bool _e47 = ms_usable(pdf_1);
         if (!(!(_e47))) {
-            local_33 = !((f_3 <= 3.4028235e38));
+            local_23 = !((f_3 <= 3.4028235e38));
         } else {
-            local_33 = true;
+            local_23 = true;
         }
-        bool _e56 = local_33;
+        bool _e56 = local_23;
         if (_e56) {
             const MsBsdfSample msbsdfsample_15 = none_3;
             return msbsdfsample_15;
@@ -2576,47 +1857,47 @@ MsBsdfSample ms_dielectric_sample(MsDielectric d_8, float3 wo_30, float uc_2, fl
         const MsBsdfSample msbsdfsample_16 = ConstructMsBsdfSample(_e23, pdf_1, (f_3).xxx, MS_SAMPLE_VALID, 1.0);
         return msbsdfsample_16;
     }
-    const float4 _e62 = ms_refract(wo_30, wm_21, d_8.eta);
+    const float4 _e62 = ms_refract(wo_26, wm_15, d_8.eta);
     if ((_e62.w == 0.0)) {
         const MsBsdfSample msbsdfsample_17 = none_3;
         return msbsdfsample_17;
     }
-    float3 wi_33 = _e62.xyz;
+    float3 wi_29 = _e62.xyz;
     float etap_6 = _e62.w;
-    const bool _e68 = ms_same_hemisphere(wo_30, wi_33);
+    const bool _e68 = ms_same_hemisphere(wo_26, wi_29);
     if (!(_e68)) {
-        const bool _e73 = ms_on_horizon(wi_33.z);
-        local_34 = _e73;
+        const bool _e73 = ms_on_horizon(wi_29.z);
+        local_24 = _e73;
     } else {
-        local_34 = true;
+        local_24 = true;
     }
-    bool _e75 = local_34;
+    bool _e75 = local_24;
     if (_e75) {
         const MsBsdfSample msbsdfsample_18 = none_3;
         return msbsdfsample_18;
     }
-    float t_11 = (1.0 - _e21);
-    const float _e80 = ms_jacobian_refraction(wo_30, wi_33, wm_21, etap_6);
-    float pdf_2 = ((_e17.pdf * t_11) * _e80);
-    const float _e83 = ms_d(d_8.mf, wm_21);
+    float t_9 = (1.0 - _e21);
+    const float _e80 = ms_jacobian_refraction(wo_26, wi_29, wm_15, etap_6);
+    float pdf_2 = ((_e17.pdf * t_9) * _e80);
+    const float _e83 = ms_d(d_8.mf, wm_15);
     const bool _e84 = ms_usable(_e83);
     if (!(_e84)) {
         const MsBsdfSample msbsdfsample_19 = none_3;
         return msbsdfsample_19;
     }
-    const float _e86 = ms_dielectric_f_transmission(d_8, wo_30, wi_33, wm_21, _e83, etap_6, t_11);
+    const float _e86 = ms_dielectric_f_transmission(d_8, wo_26, wi_29, wm_15, _e83, etap_6, t_9);
     const bool _e87 = ms_usable(pdf_2);
     if (!(!(_e87))) {
-        local_35 = !((_e86 <= 3.4028235e38));
+        local_25 = !((_e86 <= 3.4028235e38));
     } else {
-        local_35 = true;
+        local_25 = true;
     }
-    bool _e96 = local_35;
+    bool _e96 = local_25;
     if (_e96) {
         const MsBsdfSample msbsdfsample_20 = none_3;
         return msbsdfsample_20;
     }
-    const MsBsdfSample msbsdfsample_21 = ConstructMsBsdfSample(wi_33, pdf_2, (_e86).xxx, 5u, etap_6);
+    const MsBsdfSample msbsdfsample_21 = ConstructMsBsdfSample(wi_29, pdf_2, (_e86).xxx, 5u, etap_6);
     return msbsdfsample_21;
 }
 
@@ -2627,11 +1908,11 @@ MsLutTap ConstructMsLutTap(uint arg0, float arg1) {
     return ret;
 }
 
-MsLutTap ms_lut_tap(float x_9, uint n_3)
+MsLutTap ms_lut_tap(float x_4, uint n_2)
 {
-    float t_12 = clamp(((x_9 * float(n_3)) - 0.5), 0.0, float((n_3 - 1u)));
-    uint i_9 = min(naga_f2u32(floor(t_12)), (n_3 - 2u));
-    const MsLutTap msluttap = ConstructMsLutTap(i_9, (t_12 - float(i_9)));
+    float t_10 = clamp(((x_4 * float(n_2)) - 0.5), 0.0, float((n_2 - 1u)));
+    uint i_6 = min(naga_f2u32(floor(t_10)), (n_2 - 2u));
+    const MsLutTap msluttap = ConstructMsLutTap(i_6, (t_10 - float(i_6)));
     return msluttap;
 }
 
@@ -2645,16 +1926,16 @@ float ms_lut_lerp(MsLutTap t_1, float v0_, float v1_)
     return (((1.0 - t_1.f) * v0_) + (t_1.f * v1_));
 }
 
-float ms_lut_bilerp(MsLutTap r, MsLutTap m_4, float v00_, float v10_, float v01_, float v11_)
+float ms_lut_bilerp(MsLutTap r, MsLutTap m_3, float v00_, float v10_, float v01_, float v11_)
 {
     float gr = (1.0 - r.f);
-    float gm = (1.0 - m_4.f);
-    return (((((gr * gm) * v00_) + ((r.f * gm) * v10_)) + ((gr * m_4.f) * v01_)) + ((r.f * m_4.f) * v11_));
+    float gm = (1.0 - m_3.f);
+    return (((((gr * gm) * v00_) + ((r.f * gm) * v10_)) + ((gr * m_3.f) * v01_)) + ((r.f * m_3.f) * v11_));
 }
 
-float ms_lut_roughness_coord(float2 alpha_41, float alpha_max)
+float ms_lut_roughness_coord(float2 alpha_25, float alpha_max)
 {
-    return sqrt((sqrt((alpha_41.x * alpha_41.y)) / alpha_max));
+    return sqrt((sqrt((alpha_25.x * alpha_25.y)) / alpha_max));
 }
 
 float3 ms_kulla_conty_f_ms(float3 f_avg, float e_avg)
@@ -2671,10 +1952,10 @@ float ms_kulla_conty_lobe(float e_o, float e_i, float e_avg_1)
     return ((max((1.0 - e_o), 0.0) * max((1.0 - e_i), 0.0)) / den_3);
 }
 
-float3 ms_conductor_eval_kulla_conty(MsConductor c_10, float3 wo_31, float3 wi_28, float e_o_1, float e_i_1, float e_avg_2, float3 f_ms)
+float3 ms_conductor_eval_kulla_conty(MsConductor c_7, float3 wo_27, float3 wi_24, float e_o_1, float e_i_1, float e_avg_2, float3 f_ms)
 {
-    const float3 _e7 = ms_conductor_eval(c_10, wo_31, wi_28);
-    if (!(((wo_31.z * wi_28.z) > 0.0))) {
+    const float3 _e7 = ms_conductor_eval(c_7, wo_27, wi_24);
+    if (!(((wo_27.z * wi_24.z) > 0.0))) {
         return _e7;
     }
     const float _e14 = ms_kulla_conty_lobe(e_o_1, e_i_1, e_avg_2);
@@ -2686,9 +1967,9 @@ float3 ms_turquin_scale(float e_o_2, float3 f0_2)
     return ((1.0).xxx + ((f0_2 * (1.0 - e_o_2)) / (e_o_2).xxx));
 }
 
-float3 ms_conductor_eval_turquin(MsConductor c_11, float3 wo_32, float3 wi_29, float e_o_3, float3 f0_3)
+float3 ms_conductor_eval_turquin(MsConductor c_8, float3 wo_28, float3 wi_25, float e_o_3, float3 f0_3)
 {
-    const float3 _e5 = ms_conductor_eval(c_11, wo_32, wi_29);
+    const float3 _e5 = ms_conductor_eval(c_8, wo_28, wi_25);
     const float3 _e6 = ms_turquin_scale(e_o_3, f0_3);
     return (_e5 * _e6);
 }
@@ -2704,14 +1985,14 @@ uint NagaBufferLength(ByteAddressBuffer buffer)
     return ret;
 }
 
-uint ms_k_index(uint3 id_13, uint3 groups_13)
+uint ms_k_index(uint3 id_10, uint3 groups_10)
 {
-    uint i_10 = (id_13.x + ((id_13.y * groups_13.x) * 64u));
-    uint n_7 = naga_div(((NagaBufferLength(ms_in) - 0) / 16), MS_K_IN);
-    if ((i_10 >= n_7)) {
-        return n_7;
+    uint i_7 = (id_10.x + ((id_10.y * groups_10.x) * 64u));
+    uint n_6 = naga_div(((NagaBufferLength(ms_in) - 0) / 16), MS_K_IN);
+    if ((i_7 >= n_6)) {
+        return n_6;
     }
-    return i_10;
+    return i_7;
 }
 
 MsMicrofacet ConstructMsMicrofacet(uint arg0, float2 arg1) {
@@ -2737,12 +2018,12 @@ MsConductor ConstructMsConductor(MsMicrofacet arg0, MsFresnel arg1, uint arg2) {
     return ret;
 }
 
-MsConductor ms_k_conductor(uint i_2)
+MsConductor ms_k_conductor(uint i)
 {
-    float4 r0_ = asfloat(ms_in.Load4((i_2 * MS_K_IN)*16));
-    float4 r2_ = asfloat(ms_in.Load4(((i_2 * MS_K_IN) + 2u)*16));
-    float4 r3_ = asfloat(ms_in.Load4(((i_2 * MS_K_IN) + 3u)*16));
-    float4 r4_ = asfloat(ms_in.Load4(((i_2 * MS_K_IN) + 4u)*16));
+    float4 r0_ = asfloat(ms_in.Load4((i * MS_K_IN)*16));
+    float4 r2_ = asfloat(ms_in.Load4(((i * MS_K_IN) + 2u)*16));
+    float4 r3_ = asfloat(ms_in.Load4(((i * MS_K_IN) + 3u)*16));
+    float4 r4_ = asfloat(ms_in.Load4(((i * MS_K_IN) + 4u)*16));
     MsMicrofacet mf_11 = ConstructMsMicrofacet(naga_f2u32(r2_.w), r0_.xy);
     const MsConductor msconductor = ConstructMsConductor(mf_11, ConstructMsFresnel(naga_f2u32(r3_.w), r3_.xyz, r4_.xyz), naga_f2u32(r4_.w));
     return msconductor;
@@ -2757,12 +2038,12 @@ MsDielectric ConstructMsDielectric(MsMicrofacet arg0, float arg1, uint arg2, uin
     return ret;
 }
 
-MsDielectric ms_k_dielectric(uint i_3)
+MsDielectric ms_k_dielectric(uint i_1)
 {
-    float4 r0_1 = asfloat(ms_in.Load4((i_3 * MS_K_IN)*16));
-    float4 r2_1 = asfloat(ms_in.Load4(((i_3 * MS_K_IN) + 2u)*16));
-    float4 r3_1 = asfloat(ms_in.Load4(((i_3 * MS_K_IN) + 3u)*16));
-    float4 r4_1 = asfloat(ms_in.Load4(((i_3 * MS_K_IN) + 4u)*16));
+    float4 r0_1 = asfloat(ms_in.Load4((i_1 * MS_K_IN)*16));
+    float4 r2_1 = asfloat(ms_in.Load4(((i_1 * MS_K_IN) + 2u)*16));
+    float4 r3_1 = asfloat(ms_in.Load4(((i_1 * MS_K_IN) + 3u)*16));
+    float4 r4_1 = asfloat(ms_in.Load4(((i_1 * MS_K_IN) + 4u)*16));
     const MsDielectric msdielectric = ConstructMsDielectric(ConstructMsMicrofacet(naga_f2u32(r2_1.w), r0_1.xy), r3_1.x, naga_f2u32(r4_1.w), naga_f2u32(r4_1.x));
     return msdielectric;
 }
@@ -2775,20 +2056,20 @@ void ms_k_ggx_eval(uint3 id : SV_DispatchThreadID, uint3 groups : SV_GroupID)
         return;
     }
     float4 _e12 = asfloat(ms_in.Load4((_e2 * MS_K_IN)*16));
-    float2 a_22 = _e12.xy;
+    float2 a_14 = _e12.xy;
     float4 _e20 = asfloat(ms_in.Load4(((_e2 * MS_K_IN) + 1u)*16));
-    float3 wo_33 = _e20.xyz;
+    float3 wo_29 = _e20.xyz;
     float4 _e28 = asfloat(ms_in.Load4(((_e2 * MS_K_IN) + 2u)*16));
-    float3 wm_22 = _e28.xyz;
-    const float _e34 = ms_ggx_d(wm_22, a_22);
-    const float _e35 = ms_ggx_lambda(wo_33, a_22);
-    const float _e36 = ms_ggx_g1_(wo_33, a_22);
-    const float _e37 = ms_ggx_g2_(wo_33, wm_22, a_22);
+    float3 wm_16 = _e28.xyz;
+    const float _e34 = ms_ggx_d(wm_16, a_14);
+    const float _e35 = ms_ggx_lambda(wo_29, a_14);
+    const float _e36 = ms_ggx_g1_(wo_29, a_14);
+    const float _e37 = ms_ggx_g2_(wo_29, wm_16, a_14);
     ms_out.Store4((_e2 * MS_K_OUT)*16, asuint(float4(_e34, _e35, _e36, _e37)));
-    const float _e45 = ms_ggx_g2_separable(wo_33, wm_22, a_22);
-    const float _e46 = ms_ggx_pdf(wo_33, wm_22, a_22);
-    const float _e47 = ms_ggx_pdf_dcos(wm_22, a_22);
-    const float _e48 = ms_ggx_pdf_bounded(wo_33, wm_22, a_22);
+    const float _e45 = ms_ggx_g2_separable(wo_29, wm_16, a_14);
+    const float _e46 = ms_ggx_pdf(wo_29, wm_16, a_14);
+    const float _e47 = ms_ggx_pdf_dcos(wm_16, a_14);
+    const float _e48 = ms_ggx_pdf_bounded(wo_29, wm_16, a_14);
     ms_out.Store4(((_e2 * MS_K_OUT) + 1u)*16, asuint(float4(_e45, _e46, _e47, _e48)));
     return;
 }
@@ -2801,20 +2082,20 @@ void ms_k_beckmann_eval(uint3 id_1 : SV_DispatchThreadID, uint3 groups_1 : SV_Gr
         return;
     }
     float4 _e12 = asfloat(ms_in.Load4((_e2 * MS_K_IN)*16));
-    float2 a_23 = _e12.xy;
+    float2 a_15 = _e12.xy;
     float4 _e20 = asfloat(ms_in.Load4(((_e2 * MS_K_IN) + 1u)*16));
-    float3 wo_34 = _e20.xyz;
+    float3 wo_30 = _e20.xyz;
     float4 _e28 = asfloat(ms_in.Load4(((_e2 * MS_K_IN) + 2u)*16));
-    float3 wm_23 = _e28.xyz;
-    const float _e34 = ms_beckmann_d(wm_23, a_23);
-    const float _e35 = ms_beckmann_lambda(wo_34, a_23);
-    const float _e36 = ms_beckmann_g1_(wo_34, a_23);
-    const float _e37 = ms_beckmann_g2_(wo_34, wm_23, a_23);
+    float3 wm_17 = _e28.xyz;
+    const float _e34 = ms_beckmann_d(wm_17, a_15);
+    const float _e35 = ms_beckmann_lambda(wo_30, a_15);
+    const float _e36 = ms_beckmann_g1_(wo_30, a_15);
+    const float _e37 = ms_beckmann_g2_(wo_30, wm_17, a_15);
     ms_out.Store4((_e2 * MS_K_OUT)*16, asuint(float4(_e34, _e35, _e36, _e37)));
-    const float _e45 = ms_beckmann_g2_separable(wo_34, wm_23, a_23);
-    const float _e46 = ms_beckmann_pdf(wo_34, wm_23, a_23);
-    const float _e47 = ms_beckmann_pdf_dcos(wm_23, a_23);
-    const float _e50 = ms_pdf(ConstructMsMicrofacet(MS_NDF_BECKMANN, a_23), wo_34, wm_23);
+    const float _e45 = ms_beckmann_g2_separable(wo_30, wm_17, a_15);
+    const float _e46 = ms_beckmann_pdf(wo_30, wm_17, a_15);
+    const float _e47 = ms_beckmann_pdf_dcos(wm_17, a_15);
+    const float _e50 = ms_pdf(ConstructMsMicrofacet(MS_NDF_BECKMANN, a_15), wo_30, wm_17);
     ms_out.Store4(((_e2 * MS_K_OUT) + 1u)*16, asuint(float4(_e45, _e46, _e47, _e50)));
     return;
 }
@@ -2828,8 +2109,8 @@ void ms_k_beckmann_sample(uint3 id_2 : SV_DispatchThreadID, uint3 groups_2 : SV_
     }
     float4 r0_2 = asfloat(ms_in.Load4((_e2 * MS_K_IN)*16));
     float4 _e19 = asfloat(ms_in.Load4(((_e2 * MS_K_IN) + 1u)*16));
-    float3 wo_35 = _e19.xyz;
-    const MsSample _e25 = ms_sample(ConstructMsMicrofacet(MS_NDF_BECKMANN, r0_2.xy), wo_35, r0_2.zw);
+    float3 wo_31 = _e19.xyz;
+    const MsSample _e25 = ms_sample(ConstructMsMicrofacet(MS_NDF_BECKMANN, r0_2.xy), wo_31, r0_2.zw);
     const MsSample _e28 = ms_beckmann_sample_dcos(r0_2.xy, r0_2.zw);
     ms_out.Store4((_e2 * MS_K_OUT)*16, asuint(float4(_e25.wm, _e25.pdf)));
     ms_out.Store4(((_e2 * MS_K_OUT) + 1u)*16, asuint(float4(_e28.wm, _e28.pdf)));
@@ -2845,8 +2126,8 @@ void ms_k_ggx_sample(uint3 id_3 : SV_DispatchThreadID, uint3 groups_3 : SV_Group
     }
     float4 r0_3 = asfloat(ms_in.Load4((_e2 * MS_K_IN)*16));
     float4 _e19 = asfloat(ms_in.Load4(((_e2 * MS_K_IN) + 1u)*16));
-    float3 wo_36 = _e19.xyz;
-    const MsSample _e23 = ms_ggx_sample(wo_36, r0_3.xy, r0_3.zw);
+    float3 wo_32 = _e19.xyz;
+    const MsSample _e23 = ms_ggx_sample(wo_32, r0_3.xy, r0_3.zw);
     const MsSample _e26 = ms_ggx_sample_dcos(r0_3.xy, r0_3.zw);
     ms_out.Store4((_e2 * MS_K_OUT)*16, asuint(float4(_e23.wm, _e23.pdf)));
     ms_out.Store4(((_e2 * MS_K_OUT) + 1u)*16, asuint(float4(_e26.wm, _e26.pdf)));
@@ -2862,12 +2143,12 @@ void ms_k_ggx_bounded(uint3 id_4 : SV_DispatchThreadID, uint3 groups_4 : SV_Grou
     }
     float4 r0_4 = asfloat(ms_in.Load4((_e2 * MS_K_IN)*16));
     float4 _e19 = asfloat(ms_in.Load4(((_e2 * MS_K_IN) + 1u)*16));
-    float3 wo_37 = _e19.xyz;
+    float3 wo_33 = _e19.xyz;
     float4 _e27 = asfloat(ms_in.Load4(((_e2 * MS_K_IN) + 2u)*16));
-    float3 wi_34 = _e27.xyz;
-    const MsSample _e31 = ms_ggx_sample_bounded(wo_37, r0_4.xy, r0_4.zw);
+    float3 wi_30 = _e27.xyz;
+    const MsSample _e31 = ms_ggx_sample_bounded(wo_33, r0_4.xy, r0_4.zw);
     ms_out.Store4((_e2 * MS_K_OUT)*16, asuint(float4(_e31.wm, _e31.pdf)));
-    const float _e46 = ms_ggx_pdf_bounded_reflection(wo_37, wi_34, r0_4.xy);
+    const float _e46 = ms_ggx_pdf_bounded_reflection(wo_33, wi_30, r0_4.xy);
     ms_out.Store4(((_e2 * MS_K_OUT) + 1u)*16, asuint(float4(_e46, 0.0, 0.0, 0.0)));
     return;
 }
@@ -2879,15 +2160,15 @@ void ms_k_fresnel(uint3 id_5 : SV_DispatchThreadID, uint3 groups_5 : SV_GroupID)
     if ((_e2 == naga_div(((NagaBufferLength(ms_in) - 0) / 16), MS_K_IN))) {
         return;
     }
-    float c_16 = asfloat(ms_in.Load(8+((_e2 * MS_K_IN) + 1u)*16));
+    float c_13 = asfloat(ms_in.Load(8+((_e2 * MS_K_IN) + 1u)*16));
     const MsConductor _e16 = ms_k_conductor(_e2);
     MsFresnel fr_2 = _e16.fresnel;
-    const float _e24 = ms_fresnel_dielectric(c_16, fr_2.a.x);
-    const float _e29 = ms_fresnel_conductor(c_16, fr_2.a.x, fr_2.b.x);
-    const float _e32 = ms_fresnel_schlick(c_16, fr_2.a.x);
-    const float _e37 = ms_fresnel_f82_tint(c_16, fr_2.a.x, fr_2.b.x);
+    const float _e24 = ms_fresnel_dielectric(c_13, fr_2.a.x);
+    const float _e29 = ms_fresnel_conductor(c_13, fr_2.a.x, fr_2.b.x);
+    const float _e32 = ms_fresnel_schlick(c_13, fr_2.a.x);
+    const float _e37 = ms_fresnel_f82_tint(c_13, fr_2.a.x, fr_2.b.x);
     ms_out.Store4((_e2 * MS_K_OUT)*16, asuint(float4(_e24, _e29, _e32, _e37)));
-    const float3 _e45 = ms_fresnel_eval(fr_2, c_16);
+    const float3 _e45 = ms_fresnel_eval(fr_2, c_13);
     ms_out.Store4(((_e2 * MS_K_OUT) + 1u)*16, asuint(float4(_e45, 0.0)));
     return;
 }
@@ -2901,13 +2182,13 @@ void ms_k_conductor_eval(uint3 id_6 : SV_DispatchThreadID, uint3 groups_6 : SV_G
     }
     const MsConductor _e8 = ms_k_conductor(_e2);
     float4 _e15 = asfloat(ms_in.Load4(((_e2 * MS_K_IN) + 1u)*16));
-    float3 wo_38 = _e15.xyz;
+    float3 wo_34 = _e15.xyz;
     float4 _e23 = asfloat(ms_in.Load4(((_e2 * MS_K_IN) + 2u)*16));
-    float3 wi_35 = _e23.xyz;
-    const float3 _e29 = ms_conductor_eval(_e8, wo_38, wi_35);
-    const float _e30 = ms_conductor_pdf(_e8, wo_38, wi_35);
+    float3 wi_31 = _e23.xyz;
+    const float3 _e29 = ms_conductor_eval(_e8, wo_34, wi_31);
+    const float _e30 = ms_conductor_pdf(_e8, wo_34, wi_31);
     ms_out.Store4((_e2 * MS_K_OUT)*16, asuint(float4(_e29, _e30)));
-    const float4 _e38 = ms_conductor_eval_pdf(_e8, wo_38, wi_35);
+    const float4 _e38 = ms_conductor_eval_pdf(_e8, wo_34, wi_31);
     ms_out.Store4(((_e2 * MS_K_OUT) + 1u)*16, asuint(_e38));
     return;
 }
@@ -2937,11 +2218,11 @@ void ms_k_dielectric_eval(uint3 id_8 : SV_DispatchThreadID, uint3 groups_8 : SV_
     }
     const MsDielectric _e8 = ms_k_dielectric(_e2);
     float4 _e15 = asfloat(ms_in.Load4(((_e2 * MS_K_IN) + 1u)*16));
-    float3 wo_39 = _e15.xyz;
+    float3 wo_35 = _e15.xyz;
     float4 _e23 = asfloat(ms_in.Load4(((_e2 * MS_K_IN) + 2u)*16));
-    float3 wi_36 = _e23.xyz;
-    const float _e29 = ms_dielectric_eval(_e8, wo_39, wi_36);
-    const float _e30 = ms_dielectric_pdf(_e8, wo_39, wi_36);
+    float3 wi_32 = _e23.xyz;
+    const float _e29 = ms_dielectric_eval(_e8, wo_35, wi_32);
+    const float _e30 = ms_dielectric_pdf(_e8, wo_35, wi_32);
     ms_out.Store4((_e2 * MS_K_OUT)*16, asuint(float4(_e29, _e30, 0.0, 0.0)));
     ms_out.Store4(((_e2 * MS_K_OUT) + 1u)*16, asuint((0.0).xxxx));
     return;
@@ -2960,100 +2241,5 @@ void ms_k_dielectric_sample(uint3 id_9 : SV_DispatchThreadID, uint3 groups_9 : S
     const MsBsdfSample _e24 = ms_dielectric_sample(_e8, r1_1.xyz, r1_1.w, r0_6.zw);
     ms_out.Store4((_e2 * MS_K_OUT)*16, asuint(float4(_e24.wi, _e24.pdf)));
     ms_out.Store4(((_e2 * MS_K_OUT) + 1u)*16, asuint(float4(_e24.f.x, _e24.eta, float(_e24.flags), 0.0)));
-    return;
-}
-
-[numthreads(64, 1, 1)]
-void ms_k_family_eval(uint3 id_10 : SV_DispatchThreadID, uint3 groups_10 : SV_GroupID)
-{
-    float dcos = (float)0;
-
-    const uint _e2 = ms_k_index(id_10, groups_10);
-    if ((_e2 == naga_div(((NagaBufferLength(ms_in) - 0) / 16), MS_K_IN))) {
-        return;
-    }
-    float4 _e12 = asfloat(ms_in.Load4((_e2 * MS_K_IN)*16));
-    float2 a_24 = _e12.xy;
-    float4 _e20 = asfloat(ms_in.Load4(((_e2 * MS_K_IN) + 1u)*16));
-    float3 wo_40 = _e20.xyz;
-    float4 r2_2 = asfloat(ms_in.Load4(((_e2 * MS_K_IN) + 2u)*16));
-    float3 wm_24 = r2_2.xyz;
-    MsMicrofacet mf_12 = ConstructMsMicrofacet(naga_f2u32(r2_2.w), a_24);
-    if ((mf_12.ndf == MS_NDF_DOUBLE_GGX)) {
-        const float _e37 = ms_double_ggx_pdf_dcos(wm_24, a_24);
-        dcos = _e37;
-    } else {
-        const float _e38 = ms_exponential_pdf_dcos(wm_24, a_24);
-        dcos = _e38;
-    }
-    const float _e43 = ms_d(mf_12, wm_24);
-    const float _e44 = ms_lambda(mf_12, wo_40);
-    const float _e45 = ms_g1_(mf_12, wo_40);
-    const float _e46 = ms_g2_(mf_12, wo_40, wm_24);
-    ms_out.Store4((_e2 * MS_K_OUT)*16, asuint(float4(_e43, _e44, _e45, _e46)));
-    const float _e54 = ms_g2_separable(mf_12, wo_40, wm_24);
-    const float _e55 = ms_pdf(mf_12, wo_40, wm_24);
-    float _e56 = dcos;
-    const float _e57 = ms_g1_(mf_12, wm_24);
-    ms_out.Store4(((_e2 * MS_K_OUT) + 1u)*16, asuint(float4(_e54, _e55, _e56, _e57)));
-    return;
-}
-
-[numthreads(64, 1, 1)]
-void ms_k_family_sample(uint3 id_11 : SV_DispatchThreadID, uint3 groups_11 : SV_GroupID)
-{
-    uint2 state = (uint2)0;
-
-    const uint _e2 = ms_k_index(id_11, groups_11);
-    if ((_e2 == naga_div(((NagaBufferLength(ms_in) - 0) / 16), MS_K_IN))) {
-        return;
-    }
-    float4 r0_7 = asfloat(ms_in.Load4((_e2 * MS_K_IN)*16));
-    float _e20 = asfloat(ms_in.Load(12+((_e2 * MS_K_IN) + 2u)*16));
-    uint ndf = naga_f2u32(_e20);
-    const MsSample _e25 = ms_sample_dcos(ConstructMsMicrofacet(ndf, r0_7.xy), r0_7.zw);
-    const uint2 _e27 = ms_stream_new(r0_7.zw);
-    state = _e27;
-    const float _e29 = ms_stream_next(state);
-    const float _e30 = ms_zig_exp1_(_e29, state);
-    ms_out.Store4((_e2 * MS_K_OUT)*16, asuint(float4(_e25.wm, _e25.pdf)));
-    ms_out.Store4(((_e2 * MS_K_OUT) + 1u)*16, asuint(float4(_e29, _e30, 0.0, 0.0)));
-    return;
-}
-
-[numthreads(64, 1, 1)]
-void ms_k_stream(uint3 id_12 : SV_DispatchThreadID, uint3 groups_12 : SV_GroupID)
-{
-    uint2 state_1 = (uint2)0;
-    uint k = 0u;
-
-    const uint _e2 = ms_k_index(id_12, groups_12);
-    if ((_e2 == naga_div(((NagaBufferLength(ms_in) - 0) / 16), MS_K_IN))) {
-        return;
-    }
-    float4 _e12 = asfloat(ms_in.Load4((_e2 * MS_K_IN)*16));
-    const uint2 _e14 = ms_stream_new(_e12.zw);
-    state_1 = _e14;
-    uint2 loop_bound_2 = uint2(4294967295u, 4294967295u);
-    bool loop_init_2 = true;
-    while(true) {
-        if (all(loop_bound_2 == uint2(0u, 0u))) { break; }
-        loop_bound_2 -= uint2(loop_bound_2.y == 0u, 1u);
-        if (!loop_init_2) {
-            uint _e46 = k;
-            k = (_e46 + 1u);
-        }
-        loop_init_2 = false;
-        uint _e18 = k;
-        if ((_e18 < 2u)) {
-        } else {
-            break;
-        }
-        {
-            const uint2 _e21 = ms_stream_next_u64_(state_1);
-            uint _e25 = k;
-            ms_out.Store4(((_e2 * MS_K_OUT) + _e25)*16, asuint(float4(float((_e21.x & 65535u)), float((_e21.x >> 16u)), float((_e21.y & 65535u)), float((_e21.y >> 16u)))));
-        }
-    }
     return;
 }

@@ -10,8 +10,6 @@ struct MsMicrofacet {
 
 const MS_NDF_GGX: u32 = 0u;
 const MS_NDF_BECKMANN: u32 = 1u;
-const MS_NDF_DOUBLE_GGX: u32 = 2u;
-const MS_NDF_EXPONENTIAL: u32 = 3u;
 
 // D(wm); 0 below the horizon (and for an NDF this library does not have).
 fn ms_d(mf: MsMicrofacet, wm: vec3<f32>) -> f32 {
@@ -20,12 +18,6 @@ fn ms_d(mf: MsMicrofacet, wm: vec3<f32>) -> f32 {
     }
     if mf.ndf == MS_NDF_BECKMANN {
         return ms_beckmann_d(wm, mf.alpha);
-    }
-    if mf.ndf == MS_NDF_DOUBLE_GGX {
-        return ms_double_ggx_d(wm, mf.alpha);
-    }
-    if mf.ndf == MS_NDF_EXPONENTIAL {
-        return ms_exponential_d(wm, mf.alpha);
     }
     return 0.0;
 }
@@ -38,12 +30,6 @@ fn ms_lambda(mf: MsMicrofacet, w: vec3<f32>) -> f32 {
     if mf.ndf == MS_NDF_BECKMANN {
         return ms_beckmann_lambda(w, mf.alpha);
     }
-    if mf.ndf == MS_NDF_DOUBLE_GGX {
-        return ms_double_ggx_lambda(w, mf.alpha);
-    }
-    if mf.ndf == MS_NDF_EXPONENTIAL {
-        return ms_exponential_lambda(w, mf.alpha);
-    }
     return 0.0;
 }
 
@@ -55,12 +41,6 @@ fn ms_g1(mf: MsMicrofacet, w: vec3<f32>) -> f32 {
     if mf.ndf == MS_NDF_BECKMANN {
         return ms_beckmann_g1(w, mf.alpha);
     }
-    if mf.ndf == MS_NDF_DOUBLE_GGX {
-        return ms_double_ggx_g1(w, mf.alpha);
-    }
-    if mf.ndf == MS_NDF_EXPONENTIAL {
-        return ms_exponential_g1(w, mf.alpha);
-    }
     return 0.0;
 }
 
@@ -71,12 +51,6 @@ fn ms_g2(mf: MsMicrofacet, wo: vec3<f32>, wi: vec3<f32>) -> f32 {
     }
     if mf.ndf == MS_NDF_BECKMANN {
         return ms_beckmann_g2(wo, wi, mf.alpha);
-    }
-    if mf.ndf == MS_NDF_DOUBLE_GGX {
-        return ms_double_ggx_g2(wo, wi, mf.alpha);
-    }
-    if mf.ndf == MS_NDF_EXPONENTIAL {
-        return ms_exponential_g2(wo, wi, mf.alpha);
     }
     return 0.0;
 }
@@ -94,18 +68,10 @@ fn ms_pdf(mf: MsMicrofacet, w: vec3<f32>, wm: vec3<f32>) -> f32 {
     if mf.ndf == MS_NDF_BECKMANN {
         return ms_beckmann_pdf(w, wm, mf.alpha);
     }
-    if mf.ndf == MS_NDF_DOUBLE_GGX {
-        return ms_double_ggx_pdf(w, wm, mf.alpha);
-    }
-    if mf.ndf == MS_NDF_EXPONENTIAL {
-        return ms_exponential_pdf(w, wm, mf.alpha);
-    }
     return 0.0;
 }
 
-// A visible normal for w from u ∈ [0, 1)², with its pdf. Double GGX and the Exponential
-// NDF have no visible-normal sampler here yet (the Rust ones are rejection samplers over
-// the stream of u): the normal (0, 0, 1) with pdf 0, which a BSDF reads as no sample.
+// A visible normal for w from u ∈ [0, 1)², with its pdf.
 fn ms_sample(mf: MsMicrofacet, w: vec3<f32>, u: vec2<f32>) -> MsSample {
     if mf.ndf == MS_NDF_GGX {
         return ms_ggx_sample(w, mf.alpha, u);
@@ -123,12 +89,6 @@ fn ms_sample_dcos(mf: MsMicrofacet, u: vec2<f32>) -> MsSample {
     }
     if mf.ndf == MS_NDF_BECKMANN {
         return ms_beckmann_sample_dcos(mf.alpha, u);
-    }
-    if mf.ndf == MS_NDF_DOUBLE_GGX {
-        return ms_double_ggx_sample_dcos(mf.alpha, u);
-    }
-    if mf.ndf == MS_NDF_EXPONENTIAL {
-        return ms_exponential_sample_dcos(mf.alpha, u);
     }
     return MsSample(vec3<f32>(0.0, 0.0, 1.0), 0.0);
 }

@@ -63,26 +63,8 @@ const int MS_BK_ERFINV_W_K1_ = 7;
 const float MS_BK_QUANTILE_EDGE = -27.200563;
 const float MS_FRAC_1_SQRT_PI = 0.5641896;
 const float MS_SQRT_PI = 1.7724539;
-const int MS_DG_LAMBDA_K0_ = -30;
-const int MS_DG_LAMBDA_K1_ = 16;
-const uint MS_DG_LAMBDA_M = 3u;
-const int MS_DG_D_K0_ = -30;
-const int MS_DG_D_K1_ = 30;
-const uint MS_DG_D_M = 2u;
-const int MS_EXP_QA_K0_ = -24;
-const int MS_EXP_QA_K1_ = 6;
-const uint MS_EXP_QA_M = 5u;
-const int MS_EXP_QB_K0_ = 6;
-const int MS_EXP_QB_K1_ = 12;
-const uint MS_EXP_QB_M = 7u;
-const int MS_EXP_FAR_K0_ = 5;
-const int MS_EXP_FAR_K1_ = 9;
-const uint MS_EXP_FAR_M = 3u;
-const float MS_EULER_GAMMA = 0.5772157;
 const uint MS_NDF_GGX = 0u;
 const uint MS_NDF_BECKMANN = 1u;
-const uint MS_NDF_DOUBLE_GGX = 2u;
-const uint MS_NDF_EXPONENTIAL = 3u;
 const uint MS_MASKING_CORRELATED = 0u;
 const uint MS_MASKING_SEPARABLE = 1u;
 const uint MS_MASKING_CORRELATED_BETA = 2u;
@@ -94,9 +76,9 @@ const uint MS_SAMPLE_TRANSMISSION = 4u;
 const uint MS_K_IN = 5u;
 const uint MS_K_OUT = 2u;
 
-layout(std430, binding = 0) readonly buffer type_18_block_0Compute { vec4 _group_0_binding_0_cs[]; };
+layout(std430, binding = 0) readonly buffer type_10_block_0Compute { vec4 _group_0_binding_0_cs[]; };
 
-layout(std430, binding = 1) buffer type_18_block_1Compute { vec4 _group_0_binding_1_cs[]; };
+layout(std430, binding = 1) buffer type_10_block_1Compute { vec4 _group_0_binding_1_cs[]; };
 
 
 float ms_inf() {
@@ -106,32 +88,32 @@ float ms_inf() {
 }
 
 vec2 ms_cos_sin_turn(float v) {
-    float k_6 = roundEven((4.0 * v));
-    float r_1 = (v - (0.25 * k_6));
-    float x_10 = (MS_TAU * r_1);
-    float x2_ = (x_10 * x_10);
-    float s_5 = (x_10 * (1.0 + (x2_ * (-0.16666667 + (x2_ * (0.008333333 + (x2_ * (-0.0001984127 + (x2_ * 2.7557319e-6)))))))));
-    float c_12 = (1.0 + (x2_ * (-0.5 + (x2_ * (0.041666668 + (x2_ * (-0.0013888889 + (x2_ * (2.4801588e-5 + (x2_ * -2.755732e-7))))))))));
-    int q_2 = (int(k_6) & 3);
-    if ((q_2 == 0)) {
-        return vec2(c_12, s_5);
+    float k_3 = roundEven((4.0 * v));
+    float r_1 = (v - (0.25 * k_3));
+    float x_5 = (MS_TAU * r_1);
+    float x2_ = (x_5 * x_5);
+    float s_3 = (x_5 * (1.0 + (x2_ * (-0.16666667 + (x2_ * (0.008333333 + (x2_ * (-0.0001984127 + (x2_ * 2.7557319e-6)))))))));
+    float c_9 = (1.0 + (x2_ * (-0.5 + (x2_ * (0.041666668 + (x2_ * (-0.0013888889 + (x2_ * (2.4801588e-5 + (x2_ * -2.755732e-7))))))))));
+    int q = (int(k_3) & 3);
+    if ((q == 0)) {
+        return vec2(c_9, s_3);
     } else {
-        if ((q_2 == 1)) {
-            return vec2(-(s_5), c_12);
+        if ((q == 1)) {
+            return vec2(-(s_3), c_9);
         } else {
-            if ((q_2 == 2)) {
-                return vec2(-(c_12), -(s_5));
+            if ((q == 2)) {
+                return vec2(-(c_9), -(s_3));
             }
         }
     }
-    return vec2(s_5, -(c_12));
+    return vec2(s_3, -(c_9));
 }
 
 vec3 ms_rescaled(vec3 a) {
     bool local = false;
-    float m_5 = max(abs(a.x), max(abs(a.y), abs(a.z)));
-    if ((m_5 > 0.0)) {
-        local = (m_5 <= 3.4028235e38);
+    float m_4 = max(abs(a.x), max(abs(a.y), abs(a.z)));
+    if ((m_4 > 0.0)) {
+        local = (m_4 <= 3.4028235e38);
     } else {
         local = false;
     }
@@ -139,7 +121,7 @@ vec3 ms_rescaled(vec3 a) {
     if (!(_e16)) {
         return a;
     }
-    return (a / vec3(m_5));
+    return (a / vec3(m_4));
 }
 
 float ms_dot(vec3 a_1, vec3 b) {
@@ -169,9 +151,9 @@ vec3 ms_unit(vec3 w) {
     if ((abs((_e1 - 1.0)) <= 1e-6)) {
         return w;
     }
-    float m_6 = max(abs(w.x), max(abs(w.y), abs(w.z)));
-    if ((m_6 > 0.0)) {
-        local_2 = (m_6 <= 3.4028235e38);
+    float m_5 = max(abs(w.x), max(abs(w.y), abs(w.z)));
+    if ((m_5 > 0.0)) {
+        local_2 = (m_5 <= 3.4028235e38);
     } else {
         local_2 = false;
     }
@@ -179,7 +161,7 @@ vec3 ms_unit(vec3 w) {
     if (!(_e22)) {
         return w;
     }
-    vec3 _e27 = ms_normalize((w * (1.0 / m_6)));
+    vec3 _e27 = ms_normalize((w * (1.0 / m_5)));
     return _e27;
 }
 
@@ -195,13 +177,13 @@ vec3 ms_unit_normal(vec3 v_1) {
     if (_e9) {
         return (v_1 * (1.0 / sqrt(_e1)));
     }
-    float m_7 = max(abs(v_1.x), max(abs(v_1.y), abs(v_1.z)));
-    if ((m_7 == 0.0)) {
+    float m_6 = max(abs(v_1.x), max(abs(v_1.y), abs(v_1.z)));
+    if ((m_6 == 0.0)) {
         return vec3(0.0, 0.0, 1.0);
     }
-    vec3 s_6 = (v_1 / vec3(m_7));
-    float _e30 = ms_dot(s_6, s_6);
-    return (s_6 * (1.0 / sqrt(_e30)));
+    vec3 s_4 = (v_1 / vec3(m_6));
+    float _e30 = ms_dot(s_4, s_4);
+    return (s_4 * (1.0 / sqrt(_e30)));
 }
 
 vec3 ms_reflect(vec3 wo, vec3 n) {
@@ -214,11 +196,11 @@ bool ms_same_hemisphere(vec3 a_3, vec3 b_1) {
 }
 
 vec3 ms_half_vector_reflection(vec3 wo_1, vec3 wi) {
-    vec3 s_7 = (wo_1 + wi);
-    if (!((max(abs(s_7.x), max(abs(s_7.y), abs(s_7.z))) > 0.0))) {
+    vec3 s_5 = (wo_1 + wi);
+    if (!((max(abs(s_5.x), max(abs(s_5.y), abs(s_5.z))) > 0.0))) {
         return vec3(0.0);
     }
-    vec3 _e16 = ms_normalize(s_7);
+    vec3 _e16 = ms_normalize(s_5);
     if ((_e16.z < 0.0)) {
         return -(_e16);
     }
@@ -351,31 +333,31 @@ float ms_fresnel_dielectric(float cos_in, float eta_in_1) {
         eta_2 = (1.0 / _e9);
     }
     float _e12 = cos_i_1;
-    float c_13 = min(_e12, 1.0);
+    float c_10 = min(_e12, 1.0);
     float _e15 = eta_2;
     if ((_e15 == 1.0)) {
         return 0.0;
     }
-    if ((c_13 == 0.0)) {
+    if ((c_10 == 0.0)) {
         return 1.0;
     }
     float _e24 = eta_2;
     if ((_e24 > 1e18)) {
         float _e27 = eta_2;
         float e_1 = (1.0 / _e27);
-        float cos_t_1 = sqrt((((1.0 - e_1) * (1.0 + e_1)) + ((c_13 * e_1) * (c_13 * e_1))));
-        r_parl = ((c_13 - (e_1 * cos_t_1)) / (c_13 + (e_1 * cos_t_1)));
-        r_perp = (((e_1 * c_13) - cos_t_1) / ((e_1 * c_13) + cos_t_1));
+        float cos_t_1 = sqrt((((1.0 - e_1) * (1.0 + e_1)) + ((c_10 * e_1) * (c_10 * e_1))));
+        r_parl = ((c_10 - (e_1 * cos_t_1)) / (c_10 + (e_1 * cos_t_1)));
+        r_perp = (((e_1 * c_10) - cos_t_1) / ((e_1 * c_10) + cos_t_1));
     } else {
         float _e51 = eta_2;
         if ((_e51 > 1.0)) {
             float _e54 = eta_2;
             float _e57 = eta_2;
-            ect2_ = (((_e54 - 1.0) * (_e57 + 1.0)) + (c_13 * c_13));
+            ect2_ = (((_e54 - 1.0) * (_e57 + 1.0)) + (c_10 * c_10));
         } else {
             float _e63 = eta_2;
             float _e64 = eta_2;
-            ect2_ = ((_e63 * _e64) - ((1.0 - c_13) * (1.0 + c_13)));
+            ect2_ = ((_e63 * _e64) - ((1.0 - c_10) * (1.0 + c_10)));
         }
         float _e72 = ect2_;
         if ((_e72 <= 0.0)) {
@@ -385,9 +367,9 @@ float ms_fresnel_dielectric(float cos_in, float eta_in_1) {
         float ect = sqrt(_e76);
         float _e78 = eta_2;
         float _e79 = eta_2;
-        float e2c = ((_e78 * _e79) * c_13);
+        float e2c = ((_e78 * _e79) * c_10);
         r_parl = ((e2c - ect) / (e2c + ect));
-        r_perp = ((c_13 - ect) / (c_13 + ect));
+        r_perp = ((c_10 - ect) / (c_10 + ect));
     }
     float _e88 = r_parl;
     float _e89 = r_parl;
@@ -405,17 +387,17 @@ float ms_cnorm(vec2 a_5) {
 }
 
 float ms_cnorm_ratio(vec2 a_6, vec2 b_3) {
-    float s_8 = max(max(abs(a_6.x), abs(a_6.y)), max(abs(b_3.x), abs(b_3.y)));
-    if ((s_8 == 0.0)) {
+    float s_6 = max(max(abs(a_6.x), abs(a_6.y)), max(abs(b_3.x), abs(b_3.y)));
+    if ((s_6 == 0.0)) {
         return 0.0;
     }
-    if (!((s_8 <= 3.4028235e38))) {
+    if (!((s_6 <= 3.4028235e38))) {
         float _e19 = ms_cnorm(a_6);
         float _e20 = ms_cnorm(b_3);
         return (_e19 / _e20);
     }
-    float _e24 = ms_cnorm((a_6 / vec2(s_8)));
-    float _e27 = ms_cnorm((b_3 / vec2(s_8)));
+    float _e24 = ms_cnorm((a_6 / vec2(s_6)));
+    float _e27 = ms_cnorm((b_3 / vec2(s_6)));
     return (_e24 / _e27);
 }
 
@@ -449,13 +431,13 @@ vec2 ms_csqrt(vec2 a_8) {
     return vec2((abs(a_8.y) / (t_3 + t_3)), _e29);
 }
 
-float ms_fresnel_conductor(float cos_in_1, float eta_3, float k_1) {
+float ms_fresnel_conductor(float cos_in_1, float eta_3, float k) {
     bool local_4 = false;
     bool local_5 = false;
     vec2 w_2 = vec2(0.0);
     float cos_i_5 = min(max(cos_in_1, 0.0), 1.0);
     if ((eta_3 == 1.0)) {
-        local_4 = (k_1 == 0.0);
+        local_4 = (k == 0.0);
     } else {
         local_4 = false;
     }
@@ -464,7 +446,7 @@ float ms_fresnel_conductor(float cos_in_1, float eta_3, float k_1) {
         return 0.0;
     }
     if ((abs(eta_3) < 1e-9)) {
-        local_5 = (abs(k_1) < 1e-9);
+        local_5 = (abs(k) < 1e-9);
     } else {
         local_5 = false;
     }
@@ -472,11 +454,11 @@ float ms_fresnel_conductor(float cos_in_1, float eta_3, float k_1) {
     if (_e25) {
         return 1.0;
     }
-    vec2 n_4 = vec2(eta_3, k_1);
+    vec2 n_3 = vec2(eta_3, k);
     float sin2_i = ((1.0 - cos_i_5) * (1.0 + cos_i_5));
     vec2 ci = vec2(cos_i_5, 0.0);
-    if ((max(abs(eta_3), abs(k_1)) > 1e18)) {
-        vec2 _e40 = ms_crecip(n_4);
+    if ((max(abs(eta_3), abs(k)) > 1e18)) {
+        vec2 _e40 = ms_crecip(n_3);
         vec2 _e41 = ms_cmul(_e40, _e40);
         vec2 sin2_t_1 = (_e41 * sin2_i);
         vec2 _e49 = ms_csqrt(vec2((1.0 - sin2_t_1.x), -(sin2_t_1.y)));
@@ -486,10 +468,10 @@ float ms_fresnel_conductor(float cos_in_1, float eta_3, float k_1) {
         float _e57 = ms_cnorm_ratio((ci_m - _e49), (ci_m + _e49));
         return min((0.5 * (_e54 + _e57)), 1.0);
     }
-    vec2 _e63 = ms_cmul(n_4, n_4);
-    float _e65 = ms_cnorm(n_4);
+    vec2 _e63 = ms_cmul(n_3, n_3);
+    float _e65 = ms_cnorm(n_3);
     if ((_e65 >= 1.0)) {
-        vec2 _e74 = ms_cmul(vec2((eta_3 - 1.0), k_1), vec2((eta_3 + 1.0), k_1));
+        vec2 _e74 = ms_cmul(vec2((eta_3 - 1.0), k), vec2((eta_3 + 1.0), k));
         w_2 = (_e74 + vec2((cos_i_5 * cos_i_5), 0.0));
     } else {
         w_2 = (_e63 - vec2(sin2_i, 0.0));
@@ -498,25 +480,25 @@ float ms_fresnel_conductor(float cos_in_1, float eta_3, float k_1) {
     vec2 _e83 = ms_crecip(_e63);
     vec2 _e84 = ms_cmul(_e82, _e83);
     vec2 _e85 = ms_csqrt(_e84);
-    vec2 n_ci = (n_4 * cos_i_5);
-    vec2 _e87 = ms_cmul(n_4, _e85);
+    vec2 n_ci = (n_3 * cos_i_5);
+    vec2 _e87 = ms_cmul(n_3, _e85);
     float _e90 = ms_cnorm_ratio((n_ci - _e85), (n_ci + _e85));
     float _e93 = ms_cnorm_ratio((ci - _e87), (ci + _e87));
     return min((0.5 * (_e90 + _e93)), 1.0);
 }
 
 float ms_fresnel_schlick(float cos_i_2, float f0_) {
-    float m_8 = (1.0 - min(max(cos_i_2, 0.0), 1.0));
-    float m2_ = (m_8 * m_8);
-    return (f0_ + ((1.0 - f0_) * ((m2_ * m2_) * m_8)));
+    float m_7 = (1.0 - min(max(cos_i_2, 0.0), 1.0));
+    float m2_ = (m_7 * m_7);
+    return (f0_ + ((1.0 - f0_) * ((m2_ * m2_) * m_7)));
 }
 
 float ms_fresnel_f82_tint(float cos_i_3, float f0_1, float h) {
     float mu = min(max(cos_i_3, 0.0), 1.0);
-    float m_9 = (1.0 - mu);
-    float m5_ = ((((m_9 * m_9) * m_9) * m_9) * m_9);
-    float a_18 = (((f0_1 + ((1.0 - f0_1) * 0.46266437)) * (1.0 - h)) / 0.05665278);
-    float r_5 = ((f0_1 + ((1.0 - f0_1) * m5_)) - (((a_18 * mu) * m5_) * m_9));
+    float m_8 = (1.0 - mu);
+    float m5_ = ((((m_8 * m_8) * m_8) * m_8) * m_8);
+    float a_12 = (((f0_1 + ((1.0 - f0_1) * 0.46266437)) * (1.0 - h)) / 0.05665278);
+    float r_5 = ((f0_1 + ((1.0 - f0_1) * m5_)) - (((a_12 * mu) * m5_) * m_8));
     return min(max(r_5, 0.0), 1.0);
 }
 
@@ -554,42 +536,42 @@ vec3 ms_fresnel_eval(MsFresnel fr, float cos_i_4) {
 }
 
 float ms_ggx_d(vec3 wm_2, vec2 alpha) {
-    float z_3 = wm_2.z;
-    if (!((z_3 > 0.0))) {
+    float z_1 = wm_2.z;
+    if (!((z_1 > 0.0))) {
         return 0.0;
     }
-    float x_11 = (wm_2.x / alpha.x);
-    float y_2 = (wm_2.y / alpha.y);
-    float t_4 = (((x_11 * x_11) + (y_2 * y_2)) + (z_3 * z_3));
+    float x_6 = (wm_2.x / alpha.x);
+    float y = (wm_2.y / alpha.y);
+    float t_4 = (((x_6 * x_6) + (y * y)) + (z_1 * z_1));
     return (1.0 / ((((MS_PI * alpha.x) * alpha.y) * t_4) * t_4));
 }
 
 float ms_ggx_lambda(vec3 w_3, vec2 alpha_1) {
-    float x_12 = (alpha_1.x * w_3.x);
-    float y_3 = (alpha_1.y * w_3.y);
-    float z_4 = abs(w_3.z);
-    float t_5 = ((x_12 * x_12) + (y_3 * y_3));
-    float z2_ = (z_4 * z_4);
-    float den = (2.0 * (z2_ + (z_4 * sqrt((z2_ + t_5)))));
+    float x_7 = (alpha_1.x * w_3.x);
+    float y_1 = (alpha_1.y * w_3.y);
+    float z_2 = abs(w_3.z);
+    float t_5 = ((x_7 * x_7) + (y_1 * y_1));
+    float z2_ = (z_2 * z_2);
+    float den = (2.0 * (z2_ + (z_2 * sqrt((z2_ + t_5)))));
     if (!((den > 0.0))) {
-        if ((z_4 == 0.0)) {
+        if ((z_2 == 0.0)) {
             float _e25 = ms_inf();
             return _e25;
         }
-        return ((t_5 / (z_4 + sqrt(((z_4 * z_4) + t_5)))) / (z_4 + z_4));
+        return ((t_5 / (z_2 + sqrt(((z_2 * z_2) + t_5)))) / (z_2 + z_2));
     }
     return (t_5 / den);
 }
 
 float ms_ggx_g1_(vec3 w_4, vec2 alpha_2) {
-    float x_13 = (alpha_2.x * w_4.x);
-    float y_4 = (alpha_2.y * w_4.y);
-    float z_5 = abs(w_4.z);
-    float den_1 = (z_5 + sqrt(((z_5 * z_5) + ((x_13 * x_13) + (y_4 * y_4)))));
+    float x_8 = (alpha_2.x * w_4.x);
+    float y_2 = (alpha_2.y * w_4.y);
+    float z_3 = abs(w_4.z);
+    float den_1 = (z_3 + sqrt(((z_3 * z_3) + ((x_8 * x_8) + (y_2 * y_2)))));
     if (!((den_1 > 0.0))) {
         return 0.0;
     }
-    return ((z_5 + z_5) / den_1);
+    return ((z_3 + z_3) / den_1);
 }
 
 float ms_ggx_g2_(vec3 wo_6, vec3 wi_6, vec2 alpha_3) {
@@ -608,7 +590,7 @@ float ms_ggx_pdf(vec3 w_5, vec3 wm_3, vec2 alpha_5) {
     float c = 0.0;
     bool local_6 = false;
     bool local_7 = false;
-    float z_6 = abs(w_5.z);
+    float z_4 = abs(w_5.z);
     float _e5 = ms_dot(w_5, wm_3);
     c = _e5;
     if ((w_5.z < 0.0)) {
@@ -617,7 +599,7 @@ float ms_ggx_pdf(vec3 w_5, vec3 wm_3, vec2 alpha_5) {
     }
     float _e12 = c;
     if ((_e12 > 0.0)) {
-        local_6 = (z_6 > 0.0);
+        local_6 = (z_4 > 0.0);
     } else {
         local_6 = false;
     }
@@ -633,26 +615,26 @@ float ms_ggx_pdf(vec3 w_5, vec3 wm_3, vec2 alpha_5) {
     }
     float sx = (alpha_5.x * w_5.x);
     float sy = (alpha_5.y * w_5.y);
-    float len_1 = sqrt((((sx * sx) + (sy * sy)) + (z_6 * z_6)));
+    float len_1 = sqrt((((sx * sx) + (sy * sy)) + (z_4 * z_4)));
     float mx = (wm_3.x / alpha_5.x);
     float my = (wm_3.y / alpha_5.y);
     float t_6 = (((mx * mx) + (my * my)) + (wm_3.z * wm_3.z));
     float _e55 = c;
     float _e56 = c;
-    return ((_e55 + _e56) / (((((MS_PI * alpha_5.x) * alpha_5.y) * t_6) * t_6) * (z_6 + len_1)));
+    return ((_e55 + _e56) / (((((MS_PI * alpha_5.x) * alpha_5.y) * t_6) * t_6) * (z_4 + len_1)));
 }
 
 vec3 ms_ggx_cap_normal(vec3 w_6, vec2 alpha_6, vec2 u, float len) {
     float inv = (1.0 / len);
-    float x_14 = ((alpha_6.x * w_6.x) * inv);
-    float y_5 = ((alpha_6.y * w_6.y) * inv);
-    float z_7 = (w_6.z * inv);
+    float x_9 = ((alpha_6.x * w_6.x) * inv);
+    float y_3 = ((alpha_6.y * w_6.y) * inv);
+    float z_5 = (w_6.z * inv);
     vec2 _e17 = ms_cos_sin_turn(u.x);
-    float above = ((1.0 - u.y) * (1.0 + z_7));
-    float sin_ = sqrt(max((u.y * ((above * (1.0 + z_7)) + ((x_14 * x_14) + (y_5 * y_5)))), 0.0));
-    vec3 h_1 = vec3((alpha_6.x * ((sin_ * _e17.x) + x_14)), (alpha_6.y * ((sin_ * _e17.y) + y_5)), above);
-    float n_5 = (1.0 / sqrt((((h_1.x * h_1.x) + (h_1.y * h_1.y)) + (h_1.z * h_1.z))));
-    return (h_1 * n_5);
+    float above = ((1.0 - u.y) * (1.0 + z_5));
+    float sin_ = sqrt(max((u.y * ((above * (1.0 + z_5)) + ((x_9 * x_9) + (y_3 * y_3)))), 0.0));
+    vec3 h_1 = vec3((alpha_6.x * ((sin_ * _e17.x) + x_9)), (alpha_6.y * ((sin_ * _e17.y) + y_3)), above);
+    float n_4 = (1.0 / sqrt((((h_1.x * h_1.x) + (h_1.y * h_1.y)) + (h_1.z * h_1.z))));
+    return (h_1 * n_4);
 }
 
 vec3 ms_ggx_sample_wm(vec3 w_in, vec2 alpha_7, vec2 u_1) {
@@ -667,8 +649,8 @@ vec3 ms_ggx_sample_wm(vec3 w_in, vec2 alpha_7, vec2 u_1) {
     float _e12 = w_7.x;
     float _e16 = w_7.y;
     float _e19 = w_7.z;
-    vec3 s_9 = vec3((alpha_7.x * _e12), (alpha_7.y * _e16), _e19);
-    float n2_ = (((s_9.x * s_9.x) + (s_9.y * s_9.y)) + (s_9.z * s_9.z));
+    vec3 s_7 = vec3((alpha_7.x * _e12), (alpha_7.y * _e16), _e19);
+    float n2_ = (((s_7.x * s_7.x) + (s_7.y * s_7.y)) + (s_7.z * s_7.z));
     if ((n2_ >= 1e-24)) {
         local_8 = (n2_ <= 1e24);
     } else {
@@ -739,50 +721,50 @@ MsBoundedCap ms_ggx_bounded_cap(vec3 w_9, vec2 alpha_11) {
     if (down) {
         return MsBoundedCap(_e18, _e18.z, 0.0);
     }
-    float a_19 = min(min(alpha_11.x, alpha_11.y), 1.0);
+    float a_13 = min(min(alpha_11.x, alpha_11.y), 1.0);
     float _e28 = v_2.x;
     float _e30 = v_2.x;
     float _e33 = v_2.y;
     float _e35 = v_2.y;
-    float s_10 = (1.0 + sqrt(((_e28 * _e30) + (_e33 * _e35))));
-    float a2_ = (a_19 * a_19);
-    float s2_ = (s_10 * s_10);
+    float s_8 = (1.0 + sqrt(((_e28 * _e30) + (_e33 * _e35))));
+    float a2_ = (a_13 * a_13);
+    float s2_ = (s_8 * s_8);
     float _e44 = v_2.z;
     float _e47 = v_2.z;
     float den_2 = (s2_ + ((a2_ * _e44) * _e47));
-    float k_7 = (((1.0 - a2_) * s2_) / den_2);
+    float k_4 = (((1.0 - a2_) * s2_) / den_2);
     float _e55 = v_2.z;
     float _e57 = v_2.z;
     float one_minus_k = ((a2_ * (s2_ + (_e55 * _e57))) / den_2);
-    return MsBoundedCap(_e18, (k_7 * _e18.z), (one_minus_k * _e18.z));
+    return MsBoundedCap(_e18, (k_4 * _e18.z), (one_minus_k * _e18.z));
 }
 
 float ms_ggx_pdf_bounded(vec3 w_in_1, vec3 wm_5, vec2 alpha_12) {
     vec3 _e3 = ms_unit(w_in_1);
     MsBoundedCap _e4 = ms_ggx_bounded_cap(_e3, alpha_12);
     vec3 ws = _e4.ws;
-    float b_6 = _e4.b;
+    float b_4 = _e4.b;
     vec3 _e15 = ms_normalize(vec3((wm_5.x / alpha_12.x), (wm_5.y / alpha_12.y), wm_5.z));
     float _e16 = ms_dot(_e15, ws);
     float cz = (((_e16 + _e16) * _e15.z) - ws.z);
-    if ((cz < -(b_6))) {
+    if ((cz < -(b_4))) {
         return 0.0;
     }
     float _e25 = ms_ggx_pdf(_e3, wm_5, alpha_12);
-    return ((_e25 * (1.0 + ws.z)) / (1.0 + b_6));
+    return ((_e25 * (1.0 + ws.z)) / (1.0 + b_4));
 }
 
 MsSample ms_ggx_sample_bounded(vec3 w_in_2, vec2 alpha_13, vec2 u_4) {
     vec3 _e3 = ms_unit(w_in_2);
     MsBoundedCap _e4 = ms_ggx_bounded_cap(_e3, alpha_13);
     vec3 ws_1 = _e4.ws;
-    float b_7 = _e4.b;
+    float b_5 = _e4.b;
     vec2 _e8 = ms_cos_sin_turn(u_4.x);
-    float above_1 = ((1.0 - u_4.y) * (1.0 + b_7));
+    float above_1 = ((1.0 - u_4.y) * (1.0 + b_5));
     float one_minus_b = ((((ws_1.x * ws_1.x) + (ws_1.y * ws_1.y)) / (1.0 + ws_1.z)) + _e4.top);
-    float sin_1 = sqrt(max(((u_4.y * (1.0 + b_7)) * (above_1 + one_minus_b)), 0.0));
-    vec3 m_10 = vec3(((sin_1 * _e8.x) + ws_1.x), ((sin_1 * _e8.y) + ws_1.y), (above_1 + _e4.top));
-    vec3 _e58 = ms_normalize(vec3((alpha_13.x * m_10.x), (alpha_13.y * m_10.y), max(m_10.z, 0.0)));
+    float sin_1 = sqrt(max(((u_4.y * (1.0 + b_5)) * (above_1 + one_minus_b)), 0.0));
+    vec3 m_9 = vec3(((sin_1 * _e8.x) + ws_1.x), ((sin_1 * _e8.y) + ws_1.y), (above_1 + _e4.top));
+    vec3 _e58 = ms_normalize(vec3((alpha_13.x * m_9.x), (alpha_13.y * m_9.y), max(m_9.z, 0.0)));
     vec3 _e59 = ms_facing(_e58, _e3);
     float _e60 = ms_ggx_pdf_bounded(_e3, _e59, alpha_13);
     return MsSample(_e59, _e60);
@@ -795,12 +777,12 @@ float ms_ggx_pdf_bounded_reflection(vec3 wo_8, vec3 wi_8, vec2 alpha_14) {
         return 0.0;
     }
     float _e7 = ms_dot(wo_8, _e3);
-    float c_14 = abs(_e7);
-    if (!((c_14 > 0.0))) {
+    float c_11 = abs(_e7);
+    if (!((c_11 > 0.0))) {
         return 0.0;
     }
     float _e13 = ms_ggx_pdf_bounded(wo_8, _e3, alpha_14);
-    return (_e13 / (4.0 * c_14));
+    return (_e13 / (4.0 * c_11));
 }
 
 vec2 ms_bk_segment(float x, int k0_, int k1_) {
@@ -827,12 +809,12 @@ float ms_bk_ln_1m(float xi) {
 
 float ms_beckmann_d(vec3 wm_6, vec2 alpha_15) {
     bool local_9 = false;
-    float z_8 = wm_6.z;
+    float z_6 = wm_6.z;
     float r_7 = (1.0 / (alpha_15.x * alpha_15.y));
-    float x_15 = ((wm_6.x * alpha_15.y) * r_7);
-    float y_6 = ((wm_6.y * alpha_15.x) * r_7);
-    float z2_1 = (z_8 * z_8);
-    if ((z_8 > 0.0)) {
+    float x_10 = ((wm_6.x * alpha_15.y) * r_7);
+    float y_4 = ((wm_6.y * alpha_15.x) * r_7);
+    float z2_1 = (z_6 * z_6);
+    if ((z_6 > 0.0)) {
         local_9 = (z2_1 > 0.0);
     } else {
         local_9 = false;
@@ -841,11 +823,11 @@ float ms_beckmann_d(vec3 wm_6, vec2 alpha_15) {
     if (!(_e24)) {
         return 0.0;
     }
-    float e_2 = (((x_15 * x_15) + (y_6 * y_6)) / z2_1);
+    float e_2 = (((x_10 * x_10) + (y_4 * y_4)) / z2_1);
     if ((e_2 <= 80.0)) {
         return ((exp(-(e_2)) * r_7) / ((MS_PI * z2_1) * z2_1));
     }
-    return exp((((log(r_7) - 1.14473) - (4.0 * log(z_8))) - e_2));
+    return exp((((log(r_7) - 1.14473) - (4.0 * log(z_6))) - e_2));
 }
 
 float ms_beckmann_pdf_dcos(vec3 wm_8, vec2 alpha_21) {
@@ -876,298 +858,179 @@ MsSample ms_beckmann_sample_dcos(vec2 alpha_22, vec2 u_6) {
     return MsSample(_e42, (_e43 * _e42.z));
 }
 
-uvec2 ms_u64_add(uvec2 a_12, uvec2 b_4) {
-    uint lo_2 = (a_12.x + b_4.x);
-    return uvec2(lo_2, ((a_12.y + b_4.y) + ((lo_2 < a_12.x) ? 1u : 0u)));
-}
-
-uvec2 ms_u32_mul_wide(uint x_4, uint y) {
-    uint x0_ = (x_4 & 65535u);
-    uint x1_ = (x_4 >> 16u);
-    uint y0_ = (y & 65535u);
-    uint y1_ = (y >> 16u);
-    uint p00_ = (x0_ * y0_);
-    uint p01_ = (x0_ * y1_);
-    uint p10_ = (x1_ * y0_);
-    uint p11_ = (x1_ * y1_);
-    uint mid = (((p00_ >> 16u) + (p01_ & 65535u)) + (p10_ & 65535u));
-    return uvec2(((mid << 16u) | (p00_ & 65535u)), (((p11_ + (p01_ >> 16u)) + (p10_ >> 16u)) + (mid >> 16u)));
-}
-
-uvec2 ms_u64_mul(uvec2 a_13, uvec2 b_5) {
-    uvec2 _e4 = ms_u32_mul_wide(a_13.x, b_5.x);
-    return uvec2(_e4.x, ((_e4.y + (a_13.x * b_5.y)) + (a_13.y * b_5.x)));
-}
-
-uvec2 ms_u64_xorshift(uvec2 a_14, uint k_3) {
-    return (a_14 ^ uvec2(((a_14.x >> k_3) | (a_14.y << (32u - k_3))), (a_14.y >> k_3)));
-}
-
-uvec2 ms_f64_bits(float v_4) {
-    uint man = 0u;
-    uint e64_ = 0u;
-    uint b_8 = floatBitsToUint(v_4);
-    uint sign_2 = (b_8 & 2147483648u);
-    uint e_3 = ((b_8 >> 23u) & 255u);
-    man = (b_8 & 8388607u);
-    if ((e_3 == 0u)) {
-        uint _e14 = man;
-        if ((_e14 == 0u)) {
-            return uvec2(0u, sign_2);
-        }
-        uint _e19 = man;
-        uint p_1 = uint(findMSB(_e19));
-        e64_ = (p_1 + 874u);
-        uint _e23 = man;
-        man = ((_e23 << (23u - p_1)) & 8388607u);
-    } else {
-        if ((e_3 == 255u)) {
-            e64_ = 2047u;
-        } else {
-            e64_ = (e_3 + 896u);
-        }
+float ms_d(MsMicrofacet mf, vec3 wm_9) {
+    if ((mf.ndf == MS_NDF_GGX)) {
+        float _e6 = ms_ggx_d(wm_9, mf.alpha);
+        return _e6;
     }
-    uint _e34 = man;
-    uint _e37 = e64_;
-    uint _e41 = man;
-    return uvec2((_e34 << 29u), ((sign_2 | (_e37 << 20u)) | (_e41 >> 3u)));
-}
-
-uvec2 ms_stream_new(vec2 u_10) {
-    uvec2 _e2 = ms_f64_bits(u_10.x);
-    uvec2 _e4 = ms_f64_bits(u_10.y);
-    uvec2 rot = uvec2(((_e4.x << 29u) | (_e4.y >> 3u)), ((_e4.y << 29u) | (_e4.x >> 3u)));
-    return ((_e2 ^ rot) ^ uvec2(2242054355u, 608135816u));
-}
-
-uvec2 ms_stream_next_u64_(inout uvec2 state_2) {
-    uvec2 z = uvec2(0u);
-    uvec2 _e1 = state_2;
-    uvec2 _e5 = ms_u64_add(_e1, uvec2(2135587861u, 2654435769u));
-    state_2 = _e5;
-    uvec2 _e6 = state_2;
-    uvec2 _e8 = ms_u64_xorshift(_e6, 30u);
-    uvec2 _e12 = ms_u64_mul(_e8, uvec2(484763065u, 3210233709u));
-    z = _e12;
-    uvec2 _e14 = z;
-    uvec2 _e16 = ms_u64_xorshift(_e14, 27u);
-    uvec2 _e20 = ms_u64_mul(_e16, uvec2(321982955u, 2496678331u));
-    z = _e20;
-    uvec2 _e21 = z;
-    uvec2 _e23 = ms_u64_xorshift(_e21, 31u);
-    return _e23;
-}
-
-float ms_stream_next(inout uvec2 state_3) {
-    uvec2 _e1 = ms_stream_next_u64_(state_3);
-    return (float((_e1.y >> 8u)) * 5.9604645e-8);
-}
-
-vec2 ms_fam_segment(float x_6, int k0_1, int k1_1, uint m_3) {
-    uint bits_2 = floatBitsToUint(x_6);
-    uint rows_1 = (uint((k1_1 - k0_1)) << m_3);
-    uint idx_1 = min(((bits_2 >> (23u - m_3)) - (uint((127 + k0_1)) << m_3)), (rows_1 - 1u));
-    uint pos_1 = ((bits_2 << (9u + m_3)) >> 9u);
-    return vec2(float(idx_1), (uintBitsToFloat((1073741824u | pos_1)) - 3.0));
-}
-
-float ms_fam_cubic(vec4 c_2, float s_3) {
-    return ((((((c_2.w * s_3) + c_2.z) * s_3) + c_2.y) * s_3) + c_2.x);
-}
-
-float ms_dg_lambda_ends(float u_11, float a_15) {
-    float x_16 = ((((0.5 * a_15) * a_15) * ((1.0 - u_11) * (1.0 + u_11))) / (u_11 * u_11));
-    if ((x_16 < 9.313226e-10)) {
-        if ((x_16 <= 0.0)) {
-            return 0.0;
-        }
-        return ((0.5 * x_16) * (0.42278433 - log((0.5 * x_16))));
+    if ((mf.ndf == MS_NDF_BECKMANN)) {
+        float _e11 = ms_beckmann_d(wm_9, mf.alpha);
+        return _e11;
     }
-    float sx_1 = ((a_15 * sqrt(((0.5 * (1.0 - u_11)) * (1.0 + u_11)))) / u_11);
-    float r_9 = (1.0 / (sx_1 * sx_1));
-    return (((1.2533141 * sx_1) * (1.0 + (r_9 * (0.125 - (r_9 * 0.0234375))))) - 0.5);
+    return 0.0;
 }
 
-float ms_exponential_d(vec3 wm_12, vec2 alpha_37) {
-    bool local_22 = false;
-    float z_9 = wm_12.z;
-    float r_10 = (1.0 / (alpha_37.x * alpha_37.y));
-    float x_17 = ((wm_12.x * alpha_37.y) * r_10);
-    float y_7 = ((wm_12.y * alpha_37.x) * r_10);
-    float z2_2 = (z_9 * z_9);
-    if ((z_9 > 0.0)) {
-        local_22 = (z2_2 > 0.0);
-    } else {
-        local_22 = false;
+MsSample ms_sample_dcos(MsMicrofacet mf_7, vec2 u_11) {
+    if ((mf_7.ndf == MS_NDF_GGX)) {
+        MsSample _e6 = ms_ggx_sample_dcos(mf_7.alpha, u_11);
+        return _e6;
     }
-    bool _e24 = local_22;
-    if (!(_e24)) {
-        return ((z_9 != z_9) ? z_9 : 0.0);
+    if ((mf_7.ndf == MS_NDF_BECKMANN)) {
+        MsSample _e11 = ms_beckmann_sample_dcos(mf_7.alpha, u_11);
+        return _e11;
     }
-    float e_4 = ((2.0 * sqrt(((x_17 * x_17) + (y_7 * y_7)))) / z_9);
-    if ((e_4 <= 80.0)) {
-        return (((2.0 * exp(-(e_4))) * r_10) / ((MS_PI * z2_2) * z2_2));
-    }
-    return exp((((log((2.0 * r_10)) - 1.14473) - (4.0 * log(z_9))) - e_4));
-}
-
-float ms_exponential_pdf_dcos(vec3 wm_14, vec2 alpha_39) {
-    if (!((wm_14.z > 0.0))) {
-        return 0.0;
-    }
-    float _e7 = ms_exponential_d(wm_14, alpha_39);
-    return (_e7 * wm_14.z);
+    return MsSample(vec3(0.0, 0.0, 1.0), 0.0);
 }
 
 bool ms_effectively_smooth(MsMicrofacet mf_8) {
     return (max(mf_8.alpha.x, mf_8.alpha.y) < 0.001);
 }
 
-bool ms_on_horizon(float z_2) {
-    return !((abs(z_2) >= 1e-18));
+bool ms_on_horizon(float z) {
+    return !((abs(z) >= 1e-18));
 }
 
-bool ms_usable(float v_6) {
-    bool local_24 = false;
-    if ((v_6 >= 1.1754944e-20)) {
-        local_24 = (v_6 <= 3.4028235e38);
+bool ms_usable(float v_4) {
+    bool local_14 = false;
+    if ((v_4 >= 1.1754944e-20)) {
+        local_14 = (v_4 <= 3.4028235e38);
     } else {
-        local_24 = false;
+        local_14 = false;
     }
-    bool _e8 = local_24;
+    bool _e8 = local_14;
     return _e8;
 }
 
-vec3 ms_weighted(vec3 fr_1, float k_5) {
-    return mix((fr_1 * k_5), vec3(0.0), equal(fr_1, vec3(0.0)));
+vec3 ms_weighted(vec3 fr_1, float k_2) {
+    return mix((fr_1 * k_2), vec3(0.0), equal(fr_1, vec3(0.0)));
 }
 
-vec3 ms_conductor_lobe_normal(MsConductor c_5, vec3 wo_19, vec3 wi_19) {
-    bool local_25 = false;
-    bool local_26 = false;
-    bool local_27 = false;
-    bool _e3 = ms_same_hemisphere(wo_19, wi_19);
+vec3 ms_conductor_lobe_normal(MsConductor c_2, vec3 wo_15, vec3 wi_15) {
+    bool local_15 = false;
+    bool local_16 = false;
+    bool local_17 = false;
+    bool _e3 = ms_same_hemisphere(wo_15, wi_15);
     if (!(!(_e3))) {
-        bool _e9 = ms_on_horizon(wo_19.z);
-        local_25 = _e9;
+        bool _e9 = ms_on_horizon(wo_15.z);
+        local_15 = _e9;
     } else {
-        local_25 = true;
+        local_15 = true;
     }
-    bool _e11 = local_25;
+    bool _e11 = local_15;
     if (!(_e11)) {
-        bool _e16 = ms_on_horizon(wi_19.z);
-        local_26 = _e16;
+        bool _e16 = ms_on_horizon(wi_15.z);
+        local_16 = _e16;
     } else {
-        local_26 = true;
+        local_16 = true;
     }
-    bool _e18 = local_26;
+    bool _e18 = local_16;
     if (!(_e18)) {
-        bool _e23 = ms_effectively_smooth(c_5.mf);
-        local_27 = _e23;
+        bool _e23 = ms_effectively_smooth(c_2.mf);
+        local_17 = _e23;
     } else {
-        local_27 = true;
+        local_17 = true;
     }
-    bool _e25 = local_27;
+    bool _e25 = local_17;
     if (_e25) {
         return vec3(0.0);
     }
-    vec3 _e28 = ms_half_vector_reflection(wo_19, wi_19);
+    vec3 _e28 = ms_half_vector_reflection(wo_15, wi_15);
     return _e28;
 }
 
 bool ms_dielectric_smooth(MsDielectric d_1) {
-    bool local_29 = false;
+    bool local_19 = false;
     if (!((d_1.eta == 1.0))) {
         bool _e8 = ms_effectively_smooth(d_1.mf);
-        local_29 = _e8;
+        local_19 = _e8;
     } else {
-        local_29 = true;
+        local_19 = true;
     }
-    bool _e10 = local_29;
+    bool _e10 = local_19;
     return _e10;
 }
 
-vec4 ms_dielectric_half(MsDielectric d_3, vec3 wo_25, vec3 wi_24) {
-    bool local_30 = false;
-    vec3 wm_17 = vec3(0.0);
+vec4 ms_dielectric_half(MsDielectric d_3, vec3 wo_21, vec3 wi_20) {
+    bool local_20 = false;
+    vec3 wm_11 = vec3(0.0);
     float etap_4 = 1.0;
-    bool local_31 = false;
+    bool local_21 = false;
     vec4 none = vec4(0.0);
-    float co = wo_25.z;
-    float ci_1 = wi_24.z;
+    float co = wo_21.z;
+    float ci_1 = wi_20.z;
     bool _e7 = ms_on_horizon(co);
     if (!(_e7)) {
         bool _e11 = ms_on_horizon(ci_1);
-        local_30 = _e11;
+        local_20 = _e11;
     } else {
-        local_30 = true;
+        local_20 = true;
     }
-    bool _e13 = local_30;
+    bool _e13 = local_20;
     if (_e13) {
         return none;
     }
     if (((co * ci_1) > 0.0)) {
-        vec3 _e20 = ms_half_vector_reflection(wo_25, wi_24);
-        wm_17 = _e20;
+        vec3 _e20 = ms_half_vector_reflection(wo_21, wi_20);
+        wm_11 = _e20;
     } else {
-        vec4 _e22 = ms_half_vector_refraction(wo_25, wi_24, d_3.eta);
-        wm_17 = _e22.xyz;
+        vec4 _e22 = ms_half_vector_refraction(wo_21, wi_20, d_3.eta);
+        wm_11 = _e22.xyz;
         etap_4 = _e22.w;
     }
-    vec3 _e25 = wm_17;
+    vec3 _e25 = wm_11;
     bool _e26 = ms_half_vector_ok(_e25);
     if (!(_e26)) {
         return none;
     }
-    vec3 _e28 = wm_17;
-    float _e29 = ms_dot(_e28, wi_24);
+    vec3 _e28 = wm_11;
+    float _e29 = ms_dot(_e28, wi_20);
     if (!(((_e29 * ci_1) < 0.0))) {
-        vec3 _e36 = wm_17;
-        float _e37 = ms_dot(_e36, wo_25);
-        local_31 = ((_e37 * co) < 0.0);
+        vec3 _e36 = wm_11;
+        float _e37 = ms_dot(_e36, wo_21);
+        local_21 = ((_e37 * co) < 0.0);
     } else {
-        local_31 = true;
+        local_21 = true;
     }
-    bool _e42 = local_31;
+    bool _e42 = local_21;
     if (_e42) {
         return none;
     }
-    vec3 _e43 = wm_17;
+    vec3 _e43 = wm_11;
     float _e44 = etap_4;
     return vec4(_e43, _e44);
 }
 
-MsBsdfSample ms_dielectric_sample_smooth(MsDielectric d_7, vec3 wo_29, float uc_1) {
+MsBsdfSample ms_dielectric_sample_smooth(MsDielectric d_7, vec3 wo_25, float uc_1) {
     float f_2 = 0.0;
-    float _e5 = ms_fresnel_dielectric(wo_29.z, d_7.eta);
+    float _e5 = ms_fresnel_dielectric(wo_25.z, d_7.eta);
     if ((uc_1 < _e5)) {
-        vec3 wi_30 = vec3(-(wo_29.x), -(wo_29.y), wo_29.z);
-        return MsBsdfSample(wi_30, _e5, vec3((_e5 / abs(wi_30.z))), 3u, 1.0);
+        vec3 wi_26 = vec3(-(wo_25.x), -(wo_25.y), wo_25.z);
+        return MsBsdfSample(wi_26, _e5, vec3((_e5 / abs(wi_26.z))), 3u, 1.0);
     }
     MsBsdfSample none_1 = MsBsdfSample(vec3(0.0), 0.0, vec3(0.0), 0u, 1.0);
-    vec4 _e33 = ms_refract(wo_29, vec3(0.0, 0.0, 1.0), d_7.eta);
+    vec4 _e33 = ms_refract(wo_25, vec3(0.0, 0.0, 1.0), d_7.eta);
     if ((_e33.w == 0.0)) {
         return none_1;
     }
-    vec3 wi_31 = _e33.xyz;
-    bool _e39 = ms_on_horizon(wi_31.z);
+    vec3 wi_27 = _e33.xyz;
+    bool _e39 = ms_on_horizon(wi_27.z);
     if (_e39) {
         return none_1;
     }
     float t_8 = (1.0 - _e5);
-    f_2 = (t_8 / abs(wi_31.z));
+    f_2 = (t_8 / abs(wi_27.z));
     if ((d_7.transport == MS_TRANSPORT_RADIANCE)) {
         float _e49 = f_2;
         f_2 = (_e49 / (_e33.w * _e33.w));
     }
     float _e54 = f_2;
-    return MsBsdfSample(wi_31, t_8, vec3(_e54), 7u, _e33.w);
+    return MsBsdfSample(wi_27, t_8, vec3(_e54), 7u, _e33.w);
 }
 
-MsLutTap ms_lut_tap(float x_9, uint n_3) {
-    float t_9 = clamp(((x_9 * float(n_3)) - 0.5), 0.0, float((n_3 - 1u)));
-    uint i_4 = min(uint(floor(t_9)), (n_3 - 2u));
-    return MsLutTap(i_4, (t_9 - float(i_4)));
+MsLutTap ms_lut_tap(float x_4, uint n_2) {
+    float t_9 = clamp(((x_4 * float(n_2)) - 0.5), 0.0, float((n_2 - 1u)));
+    uint i_2 = min(uint(floor(t_9)), (n_2 - 2u));
+    return MsLutTap(i_2, (t_9 - float(i_2)));
 }
 
 uint ms_lut_index(uint ir, uint im, uint n_mu) {
@@ -1178,14 +1041,14 @@ float ms_lut_lerp(MsLutTap t_1, float v0_, float v1_) {
     return (((1.0 - t_1.f) * v0_) + (t_1.f * v1_));
 }
 
-float ms_lut_bilerp(MsLutTap r, MsLutTap m_4, float v00_, float v10_, float v01_, float v11_) {
+float ms_lut_bilerp(MsLutTap r, MsLutTap m_3, float v00_, float v10_, float v01_, float v11_) {
     float gr = (1.0 - r.f);
-    float gm = (1.0 - m_4.f);
-    return (((((gr * gm) * v00_) + ((r.f * gm) * v10_)) + ((gr * m_4.f) * v01_)) + ((r.f * m_4.f) * v11_));
+    float gm = (1.0 - m_3.f);
+    return (((((gr * gm) * v00_) + ((r.f * gm) * v10_)) + ((gr * m_3.f) * v01_)) + ((r.f * m_3.f) * v11_));
 }
 
-float ms_lut_roughness_coord(vec2 alpha_41, float alpha_max) {
-    return sqrt((sqrt((alpha_41.x * alpha_41.y)) / alpha_max));
+float ms_lut_roughness_coord(vec2 alpha_25, float alpha_max) {
+    return sqrt((sqrt((alpha_25.x * alpha_25.y)) / alpha_max));
 }
 
 vec3 ms_kulla_conty_f_ms(vec3 f_avg, float e_avg) {
@@ -1204,29 +1067,29 @@ vec3 ms_turquin_scale(float e_o_2, vec3 f0_2) {
     return (vec3(1.0) + ((f0_2 * (1.0 - e_o_2)) / vec3(e_o_2)));
 }
 
-uint ms_k_index(uvec3 id_13, uvec3 groups_13) {
-    uint i_5 = (id_13.x + ((id_13.y * groups_13.x) * 64u));
-    uint n_6 = (uint(_group_0_binding_0_cs.length()) / MS_K_IN);
-    if ((i_5 >= n_6)) {
-        return n_6;
+uint ms_k_index(uvec3 id_10, uvec3 groups_10) {
+    uint i_3 = (id_10.x + ((id_10.y * groups_10.x) * 64u));
+    uint n_5 = (uint(_group_0_binding_0_cs.length()) / MS_K_IN);
+    if ((i_3 >= n_5)) {
+        return n_5;
     }
-    return i_5;
+    return i_3;
 }
 
-MsConductor ms_k_conductor(uint i_2) {
-    vec4 r0_ = _group_0_binding_0_cs[(i_2 * MS_K_IN)];
-    vec4 r2_ = _group_0_binding_0_cs[((i_2 * MS_K_IN) + 2u)];
-    vec4 r3_ = _group_0_binding_0_cs[((i_2 * MS_K_IN) + 3u)];
-    vec4 r4_ = _group_0_binding_0_cs[((i_2 * MS_K_IN) + 4u)];
+MsConductor ms_k_conductor(uint i) {
+    vec4 r0_ = _group_0_binding_0_cs[(i * MS_K_IN)];
+    vec4 r2_ = _group_0_binding_0_cs[((i * MS_K_IN) + 2u)];
+    vec4 r3_ = _group_0_binding_0_cs[((i * MS_K_IN) + 3u)];
+    vec4 r4_ = _group_0_binding_0_cs[((i * MS_K_IN) + 4u)];
     MsMicrofacet mf_11 = MsMicrofacet(uint(r2_.w), r0_.xy);
     return MsConductor(mf_11, MsFresnel(uint(r3_.w), r3_.xyz, r4_.xyz), uint(r4_.w));
 }
 
-MsDielectric ms_k_dielectric(uint i_3) {
-    vec4 r0_1 = _group_0_binding_0_cs[(i_3 * MS_K_IN)];
-    vec4 r2_1 = _group_0_binding_0_cs[((i_3 * MS_K_IN) + 2u)];
-    vec4 r3_1 = _group_0_binding_0_cs[((i_3 * MS_K_IN) + 3u)];
-    vec4 r4_1 = _group_0_binding_0_cs[((i_3 * MS_K_IN) + 4u)];
+MsDielectric ms_k_dielectric(uint i_1) {
+    vec4 r0_1 = _group_0_binding_0_cs[(i_1 * MS_K_IN)];
+    vec4 r2_1 = _group_0_binding_0_cs[((i_1 * MS_K_IN) + 2u)];
+    vec4 r3_1 = _group_0_binding_0_cs[((i_1 * MS_K_IN) + 3u)];
+    vec4 r4_1 = _group_0_binding_0_cs[((i_1 * MS_K_IN) + 4u)];
     return MsDielectric(MsMicrofacet(uint(r2_1.w), r0_1.xy), r3_1.x, uint(r4_1.w), uint(r4_1.x));
 }
 
@@ -1239,12 +1102,12 @@ void main() {
     }
     vec4 r0_2 = _group_0_binding_0_cs[(_e2 * MS_K_IN)];
     vec4 _e19 = _group_0_binding_0_cs[((_e2 * MS_K_IN) + 1u)];
-    vec3 wo_33 = _e19.xyz;
+    vec3 wo_29 = _e19.xyz;
     vec4 _e27 = _group_0_binding_0_cs[((_e2 * MS_K_IN) + 2u)];
-    vec3 wi_32 = _e27.xyz;
-    MsSample _e31 = ms_ggx_sample_bounded(wo_33, r0_2.xy, r0_2.zw);
+    vec3 wi_28 = _e27.xyz;
+    MsSample _e31 = ms_ggx_sample_bounded(wo_29, r0_2.xy, r0_2.zw);
     _group_0_binding_1_cs[(_e2 * MS_K_OUT)] = vec4(_e31.wm, _e31.pdf);
-    float _e46 = ms_ggx_pdf_bounded_reflection(wo_33, wi_32, r0_2.xy);
+    float _e46 = ms_ggx_pdf_bounded_reflection(wo_29, wi_28, r0_2.xy);
     _group_0_binding_1_cs[((_e2 * MS_K_OUT) + 1u)] = vec4(_e46, 0.0, 0.0, 0.0);
     return;
 }
