@@ -422,17 +422,18 @@ fn uniform_stream_is_the_rust_one_bit_for_bit() {
         let mut rs64 = UniformStream::new(*u);
         let mut rs32 = UniformStream::new(*u);
         for (k, q) in o.iter().enumerate() {
-            let g = q
-                .iter()
-                .rev()
-                .fold(0u64, |acc, &h| (acc << 16) | h as u64);
+            let g = q.iter().rev().fold(0u64, |acc, &h| (acc << 16) | h as u64);
             let reference = splitmix(&mut state);
             let top53 = (rs64.next_uniform::<f64>() * 9_007_199_254_740_992.0) as u64;
             let v32: f32 = rs32.next_uniform();
             assert_eq!(top53, reference >> 11, "the reference copy at {u:?}");
             assert_eq!(g >> 11, top53, "output {k} at {u:?}: {g:#x}");
             assert_eq!(g, reference, "output {k} at {u:?}: {g:#x}");
-            assert_eq!((g >> 40) as f32 / 16_777_216.0, v32, "f32 draw {k} at {u:?}");
+            assert_eq!(
+                (g >> 40) as f32 / 16_777_216.0,
+                v32,
+                "f32 draw {k} at {u:?}"
+            );
         }
     }
     eprintln!("{} seeds: the first two outputs equal", us.len());

@@ -15,8 +15,7 @@ mod family_tables;
 #[test]
 fn family_tables_are_current() {
     let root = std::path::Path::new(env!("CARGO_MANIFEST_DIR"));
-    let on_disk =
-        std::fs::read_to_string(root.join("wgsl/family_tables.wgsl")).unwrap_or_default();
+    let on_disk = std::fs::read_to_string(root.join("wgsl/family_tables.wgsl")).unwrap_or_default();
     assert!(
         on_disk == family_tables::wgsl(),
         "wgsl/family_tables.wgsl is stale: run `cargo run -p microsurface-gpu --example translate`"

@@ -87,7 +87,10 @@ fn rounded<const N: usize>(name: &str, rows: &[[f64; N]]) -> (Vec<Vec<f32>>, f64
             c
         })
         .collect();
-    assert!(worst <= ROUND_TOL, "{name}: rounding {worst:e} > {ROUND_TOL:e}");
+    assert!(
+        worst <= ROUND_TOL,
+        "{name}: rounding {worst:e} > {ROUND_TOL:e}"
+    );
     (out, worst)
 }
 
