@@ -40,6 +40,8 @@
 //! | `ms_ggx_sample_bounded(w, α, u)`, `ms_ggx_pdf_bounded(w, wm, α)`, `ms_ggx_pdf_bounded_reflection(wo, wi, α)` | `sample_bounded`, `pdf_bounded`, `pdf_bounded_reflection` |
 //! | `ms_beckmann_d`, `ms_beckmann_lambda`, `ms_beckmann_g1`, `ms_beckmann_g2`, `ms_beckmann_g2_separable` | `Microfacet::<f32, Beckmann>` `d`, `lambda`, `g1`, `g2`, `g2_separable` |
 //! | `ms_beckmann_pdf(w, wm, α)`, `ms_beckmann_sample(w, α, u)`; `ms_beckmann_sample_dcos`, `ms_beckmann_pdf_dcos` | `pdf`, `sample` (the same warp of u: slope-space inversion); `sample_dcos`, `pdf_dcos` |
+//! | `ms_double_ggx_d`, `_lambda`, `_g1`, `_g2`, `_g2_separable`, `_pdf`, `_pdf_dcos`, `_sample_dcos`; `ms_exponential_` the same | `Microfacet::<f32, DoubleGgx>`, `Microfacet::<f32, Exponential>`: `d`, `lambda`, `g1`, `g2`, `g2_separable`, `pdf`, `pdf_dcos`, `sample_dcos` (the same normal for the same u); no visible-normal sampler yet (the Rust ones reject over the stream of u); in [`FAMILY_WGSL`], not yet in [`WGSL`] nor `MsMicrofacet` |
+//! | `ms_stream_new(u)`, `ms_stream_next(&state)`, `ms_stream_next_u64`; `ms_zig_exp1(w, &state)` | `distribution::UniformStream` (SplitMix64 seeded by u's bits, bit for bit); `fast::ziggurat::exp1` |
 //! | `ms_fresnel_dielectric`, `ms_fresnel_conductor`, `ms_fresnel_schlick`, `ms_fresnel_f82_tint`; `MsFresnel` + `ms_fresnel_eval` | `bsdf::fresnel::{dielectric, conductor, schlick, f82_tint}`; the `Fresnel` terms |
 //! | `MsMicrofacet` + `ms_d`, `ms_lambda`, `ms_g1`, `ms_g2`, `ms_pdf`, `ms_sample`, `ms_sample_dcos` | `MicrofacetDistribution` |
 //! | `MsConductor` + `ms_conductor_eval`, `ms_conductor_pdf`, `ms_conductor_eval_pdf`, `ms_conductor_sample` → `MsBsdfSample` | `bsdf::RoughConductor` (`Masking::Correlated` or `Separable`) |
@@ -139,6 +141,26 @@ pub const WGSL: &str = concat!(
     "\n",
     include_str!("../wgsl/compensation.wgsl"),
 );
+
+/// Double GGX and the Exponential NDF, to be compiled after [`WGSL`]: `wgsl/family_tables.wgsl`
+/// (generated), `stream.wgsl`, `double_ggx.wgsl`, `exponential.wgsl`. Kept out of [`WGSL`]
+/// (and so out of `MsMicrofacet`'s run-time choice and the translations) for now: their
+/// tables are ~3.6k `vec4` of module-scope `var<private>` data, which every entry point of
+/// a module carries (naga emits all globals), and lavapipe's pipeline builds then took
+/// minutes per entry point (measured: the existing kernels' tests no longer finished).
+pub const FAMILY_WGSL: &str = concat!(
+    include_str!("../wgsl/family_tables.wgsl"),
+    "\n",
+    include_str!("../wgsl/stream.wgsl"),
+    "\n",
+    include_str!("../wgsl/double_ggx.wgsl"),
+    "\n",
+    include_str!("../wgsl/exponential.wgsl"),
+);
+
+/// The test kernels of [`FAMILY_WGSL`] (`wgsl/family_kernels.wgsl`), compiled after
+/// [`WGSL`], [`FAMILY_WGSL`] and [`KERNELS_WGSL`] (whose bindings and helpers they use).
+pub const FAMILY_KERNELS_WGSL: &str = include_str!("../wgsl/family_kernels.wgsl");
 
 /// The test kernels (`wgsl/kernels.wgsl`): compute entry points over records of five
 /// `vec4<f32>` in and two out (the layout is in the file), compiled after [`WGSL`].

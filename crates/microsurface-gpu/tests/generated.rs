@@ -7,6 +7,21 @@ mod translate;
 #[path = "../tools/beckmann_tables.rs"]
 mod beckmann_tables;
 
+#[path = "../tools/family_tables.rs"]
+mod family_tables;
+
+/// wgsl/family_tables.wgsl is what the generator writes from the Rust tables now (and each
+/// rounded table within its bound: the generator panics otherwise).
+#[test]
+fn family_tables_are_current() {
+    let root = std::path::Path::new(env!("CARGO_MANIFEST_DIR"));
+    let on_disk = std::fs::read_to_string(root.join("wgsl/family_tables.wgsl")).unwrap_or_default();
+    assert!(
+        on_disk == family_tables::wgsl(),
+        "wgsl/family_tables.wgsl is stale: run `cargo run -p microsurface-gpu --example translate`"
+    );
+}
+
 /// wgsl/beckmann_tables.wgsl is what the generator writes from the Rust functions now (and
 /// each table's fit error within its bound: the generator panics otherwise).
 #[test]

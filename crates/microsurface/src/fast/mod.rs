@@ -64,8 +64,11 @@ pub(crate) mod fit;
 pub mod fitted;
 pub mod ggx;
 pub mod gtr;
+// Public only for the GPU crate's table generator (tools/family_tables.rs), which writes
+// these tables as WGSL data: not part of the API.
+#[doc(hidden)]
 #[rustfmt::skip]
-mod tables;
+pub mod tables;
 #[cfg(test)]
 mod gen_tables;
 pub(crate) mod ziggurat;

@@ -1,0 +1,163 @@
+// microsurface WGSL library: the Exponential NDF, anisotropic (exponential.wgsl).
+//
+// The Rust `Microfacet<f32, Exponential>` (crates/microsurface/src/fast/exponential.rs, the
+// `Shape for Exponential` of distribution/microfacet.rs), with the Rust tables as generated
+// WGSL data (family_tables.wgsl). The slope density is P22(r) = 2e^{−2r}/π at unit roughness
+// (d'Eon, "A Hitchhiker's Guide to Multiple Scattering"; derivations.md A.14):
+//
+//   D(m) = 2 e^{−2√q/z}/(π αx αy z⁴),  q = (m.x/αx)² + (m.y/αy)²        (0 for m.z ≤ 0)
+//   Λ(w) = (2K₁(z) − Ki₁(z))/π,  z = 2|w.z|/√(αx²w.x² + αy²w.y²)
+//   G1 = 1/(1 + Λ),  G2 = 1/(1 + (Λ(wo) + Λ(wi))) (height-correlated), G1 G1 (separable)
+//   D_w(m) = G1(w)(w·m)D(m)/|w.z|
+//
+// Λ: the Rust f32 path reads its f32 cubic tables (EXPONENTIAL32_QA on q = z² ∈ [2^−24, 64),
+// _QB on [64, 4096), Horner) at a q formed in f64; here q is formed in f32 (WGSL has no
+// portable f64), which costs Λ its condition number in z (about z, up to 64 in the tables)
+// times q's few roundings: the bound of tests/family.rs. Outside the tables (the Rust f64
+// ends, in f32): z < 2^−12, Λ = 2/(πz) − ½ + z/(2π); 64 ≤ z < 2^9, Λ e^z from the far table
+// (EXPONENTIAL_FAR rounded to f32) times e^{−z}; beyond, 0 (e^{−z} is below f32's range).
+// D: e^{−e}, e = 2√q/z, times the normalisation; past e = 80 the normalisation joins the
+// exponent (as beckmann.wgsl's D), so that D stays a normal f32 where the Rust path (in f64)
+// has one. D·cos: the slope radius at unit roughness is Gamma(2, ½): r = ½(E − ln(1 − u₀)),
+// E ~ Exp(1) from the uniform stream (stream.wgsl's ziggurat), azimuth 2πu₁, stretched (the
+// Rust sample_dcos). Visible normals (the Rust rejection in slope space) are not in this
+// file yet.
+
+// Λ from the q tables at 2^−24 ≤ q < 4096 (the Rust eval_narrow of EXPONENTIAL32_QA/_QB).
+fn ms_exp_lambda_q(q: f32) -> f32 {
+    if q < 64.0 {
+        let g = ms_fam_segment(q, MS_EXP_QA_K0, MS_EXP_QA_K1, MS_EXP_QA_M);
+        return ms_fam_cubic(MS_EXP_QA[u32(g.x)], g.y);
+    }
+    let g = ms_fam_segment(q, MS_EXP_QB_K0, MS_EXP_QB_K1, MS_EXP_QB_M);
+    return ms_fam_cubic(MS_EXP_QB[u32(g.x)], g.y);
+}
+
+// Λ(z) past the q tables (the Rust lambda_z_ends): +∞ at z = 0, NaN for NaN.
+fn ms_exp_lambda_z(z: f32) -> f32 {
+    if z < 2.44140625e-4 {
+        return 0.6366197723675814 / z - 0.5 + 0.15915494309189535 * z;
+    }
+    let q = z * z;
+    if q < 4096.0 {
+        return ms_exp_lambda_q(q);
+    }
+    if z < 512.0 {
+        let g = ms_fam_segment(z, MS_EXP_FAR_K0, MS_EXP_FAR_K1, MS_EXP_FAR_M);
+        let i = 2u * u32(g.x);
+        let lo = MS_EXP_FAR[i];
+        let hi = MS_EXP_FAR[i + 1u];
+        let s = g.y;
+        let s2 = s * s;
+        let p = ((lo.x + lo.y * s) + (lo.z + lo.w * s) * s2) + ((hi.x + hi.y * s) + hi.z * s2) * (s2 * s2);
+        return p * exp(-z);
+    }
+    if z != z {
+        return z;
+    }
+    return 0.0;
+}
+
+// Smith Λ(w), Λ(−w) = Λ(w): q = 4u²/(α²(1 − u)(1 + u)) at u = |w.z| where isotropic (the Rust
+// q_of), q = 4w.z²/(αx²w.x² + αy²w.y²) where anisotropic; the ends at z = 2u/(α̃√((1 − u)(1 +
+// u))), α̃ the projected roughness (the Rust lambda_projected).
+fn ms_exponential_lambda(w: vec3<f32>, alpha: vec2<f32>) -> f32 {
+    let u = abs(w.z);
+    var q: f32;
+    if alpha.x == alpha.y {
+        let a = alpha.x;
+        q = 4.0 * u * u / (a * a * ((1.0 - u) * (1.0 + u)));
+    } else {
+        let sx = alpha.x * w.x;
+        let sy = alpha.y * w.y;
+        q = 4.0 * (w.z * w.z) / (sx * sx + sy * sy);
+    }
+    // 2^−24 ≤ q < 4096 (false for NaN).
+    if q >= 5.960464477539063e-8 && q < 4096.0 {
+        return ms_exp_lambda_q(q);
+    }
+    var a = alpha.x;
+    let s2 = w.x * w.x + w.y * w.y;
+    if alpha.x != alpha.y && s2 > 0.0 {
+        a = sqrt((alpha.x * alpha.x * w.x * w.x + alpha.y * alpha.y * w.y * w.y) / s2);
+    }
+    return ms_exp_lambda_z((u + u) / (a * sqrt((1.0 - u) * (1.0 + u))));
+}
+
+// G1(w) = 1/(1 + Λ(w)); 0 on the horizon.
+fn ms_exponential_g1(w: vec3<f32>, alpha: vec2<f32>) -> f32 {
+    if w.z == 0.0 {
+        return 0.0;
+    }
+    return 1.0 / (1.0 + ms_exponential_lambda(w, alpha));
+}
+
+// Height-correlated G2(wo, wi) = 1/(1 + (Λ(wo) + Λ(wi))).
+fn ms_exponential_g2(wo: vec3<f32>, wi: vec3<f32>, alpha: vec2<f32>) -> f32 {
+    if wo.z == 0.0 || wi.z == 0.0 {
+        return 0.0;
+    }
+    return 1.0 / (1.0 + (ms_exponential_lambda(wo, alpha) + ms_exponential_lambda(wi, alpha)));
+}
+
+// Separable G2(wo, wi) = G1(wo) G1(wi).
+fn ms_exponential_g2_separable(wo: vec3<f32>, wi: vec3<f32>, alpha: vec2<f32>) -> f32 {
+    return ms_exponential_g1(wo, alpha) * ms_exponential_g1(wi, alpha);
+}
+
+// D(wm) (the Rust d_aniso, isotropic included); 0 below the horizon.
+fn ms_exponential_d(wm: vec3<f32>, alpha: vec2<f32>) -> f32 {
+    let z = wm.z;
+    let r = 1.0 / (alpha.x * alpha.y);
+    let x = wm.x * alpha.y * r;
+    let y = wm.y * alpha.x * r;
+    let z2 = z * z;
+    if !(z > 0.0 && z2 > 0.0) {
+        return select(0.0, z, z != z);
+    }
+    let e = 2.0 * sqrt(x * x + y * y) / z;
+    if e <= 80.0 {
+        return 2.0 * exp(-e) * r / (MS_PI * z2 * z2);
+    }
+    return exp((log(2.0 * r) - log(MS_PI) - 4.0 * log(z)) - e);
+}
+
+// The visible-normal density D_w(wm) = G1(w)(w·wm)D(wm)/|w.z| (the Rust d_visible_with);
+// w.z < 0 mirrored; 0 at grazing w and for wm facing away from w.
+fn ms_exponential_pdf(w: vec3<f32>, wm: vec3<f32>, alpha: vec2<f32>) -> f32 {
+    let z = abs(w.z);
+    var c = ms_dot(w, wm);
+    if w.z < 0.0 {
+        c = -c;
+    }
+    if !(c > 0.0 && z > 0.0) {
+        return 0.0;
+    }
+    return ms_exponential_g1(w, alpha) * c * ms_exponential_d(wm, alpha) / z;
+}
+
+// The density of ms_exponential_sample_dcos: D(wm) cos θm (0 for wm.z ≤ 0).
+fn ms_exponential_pdf_dcos(wm: vec3<f32>, alpha: vec2<f32>) -> f32 {
+    if !(wm.z > 0.0) {
+        return 0.0;
+    }
+    return ms_exponential_d(wm, alpha) * wm.z;
+}
+
+// A normal distributed as D(m) cos θm with its pdf (the Rust sample_dcos): r = ½(E − ln(1 −
+// u₀)) at unit roughness, E ~ Exp(1) from the stream of u, azimuth 2πu₁; m ∝ (αx r cos φ,
+// αy r sin φ, 1), or divided by r past r = 1 (the Rust normal_from_polar).
+fn ms_exponential_sample_dcos(alpha: vec2<f32>, u: vec2<f32>) -> MsSample {
+    var state = ms_stream_new(u);
+    let e = ms_zig_exp1(ms_stream_next(&state), &state);
+    let r = 0.5 * (e - ms_bk_ln_1m(u.x));
+    let cs = ms_cos_sin_turn(u.y);
+    var v: vec3<f32>;
+    if r > 1.0 {
+        v = vec3<f32>(alpha.x * cs.x, alpha.y * cs.y, 1.0 / r);
+    } else {
+        v = vec3<f32>(alpha.x * r * cs.x, alpha.y * r * cs.y, 1.0);
+    }
+    let wm = ms_unit_normal(v);
+    return MsSample(wm, ms_exponential_d(wm, alpha) * wm.z);
+}

@@ -1,0 +1,124 @@
+// microsurface WGSL library: the rejection samplers' uniform stream and the Exp(1) ziggurat
+// (stream.wgsl).
+//
+// The Rust samplers of Double GGX and the Exponential NDF draw uniforms beyond u from
+// `UniformStream` (crates/microsurface/src/distribution/mod.rs): SplitMix64 (Steele, Lea &
+// Flood 2014; math/rng.rs) seeded by the bits of u as f64, a ^ rotl(b, 29) ^ 0x243F6A8885A308D3,
+// each f32 uniform the top 24 bits of an output over 2^24. WGSL has only 32-bit integers: a
+// 64-bit word is vec2<u32>(low, high), and the add, the multiplications and the shifts are
+// written out on the halves (the multiplications through 16-bit limbs), so the stream is the
+// Rust one bit for bit (tests/family.rs). The state lives in the caller's function variable.
+
+// a + b (mod 2^64).
+fn ms_u64_add(a: vec2<u32>, b: vec2<u32>) -> vec2<u32> {
+    let lo = a.x + b.x;
+    return vec2<u32>(lo, a.y + b.y + select(0u, 1u, lo < a.x));
+}
+
+// The full 64-bit product of two u32, by 16-bit limbs (every partial sum fits in u32).
+fn ms_u32_mul_wide(x: u32, y: u32) -> vec2<u32> {
+    let x0 = x & 0xffffu;
+    let x1 = x >> 16u;
+    let y0 = y & 0xffffu;
+    let y1 = y >> 16u;
+    let p00 = x0 * y0;
+    let p01 = x0 * y1;
+    let p10 = x1 * y0;
+    let p11 = x1 * y1;
+    let mid = (p00 >> 16u) + (p01 & 0xffffu) + (p10 & 0xffffu);
+    return vec2<u32>((mid << 16u) | (p00 & 0xffffu), p11 + (p01 >> 16u) + (p10 >> 16u) + (mid >> 16u));
+}
+
+// a · b (mod 2^64): the low halves' full product, the cross terms into the high half.
+fn ms_u64_mul(a: vec2<u32>, b: vec2<u32>) -> vec2<u32> {
+    let p = ms_u32_mul_wide(a.x, b.x);
+    return vec2<u32>(p.x, p.y + a.x * b.y + a.y * b.x);
+}
+
+// a ^ (a >> k) for 0 < k < 32.
+fn ms_u64_xorshift(a: vec2<u32>, k: u32) -> vec2<u32> {
+    return a ^ vec2<u32>((a.x >> k) | (a.y << (32u - k)), a.y >> k);
+}
+
+// The bits of the f64 of an f32 (exact: subnormal f32 become normal f64; infinities and
+// NaN keep their class).
+fn ms_f64_bits(v: f32) -> vec2<u32> {
+    let b = bitcast<u32>(v);
+    let sign = b & 0x80000000u;
+    let e = (b >> 23u) & 0xffu;
+    var man = b & 0x7fffffu;
+    var e64: u32;
+    if e == 0u {
+        if man == 0u {
+            return vec2<u32>(0u, sign);
+        }
+        // man · 2^−149 with its leading bit at p: 2^{p−149}(1 + the bits below p).
+        let p = firstLeadingBit(man);
+        e64 = p + 874u;
+        man = (man << (23u - p)) & 0x7fffffu;
+    } else if e == 255u {
+        e64 = 2047u;
+    } else {
+        e64 = e + 896u;
+    }
+    return vec2<u32>(man << 29u, sign | (e64 << 20u) | (man >> 3u));
+}
+
+// The stream of u: SplitMix64's state a ^ rotl(b, 29) ^ 0x243F6A8885A308D3, a and b the f64
+// bits of u₀ and u₁ (the Rust UniformStream::new).
+fn ms_stream_new(u: vec2<f32>) -> vec2<u32> {
+    let a = ms_f64_bits(u.x);
+    let b = ms_f64_bits(u.y);
+    let rot = vec2<u32>((b.x << 29u) | (b.y >> 3u), (b.y << 29u) | (b.x >> 3u));
+    return a ^ rot ^ vec2<u32>(0x85a308d3u, 0x243f6a88u);
+}
+
+// SplitMix64's next 64 bits (the Rust SplitMix64::next_u64).
+fn ms_stream_next_u64(state: ptr<function, vec2<u32>>) -> vec2<u32> {
+    *state = ms_u64_add(*state, vec2<u32>(0x7f4a7c15u, 0x9e3779b9u));
+    var z = ms_u64_mul(ms_u64_xorshift(*state, 30u), vec2<u32>(0x1ce4e5b9u, 0xbf58476du));
+    z = ms_u64_mul(ms_u64_xorshift(z, 27u), vec2<u32>(0x133111ebu, 0x94d049bbu));
+    return ms_u64_xorshift(z, 31u);
+}
+
+// The next uniform in [0, 1): the top 24 bits over 2^24 (the Rust next_uniform::<f32>).
+fn ms_stream_next(state: ptr<function, vec2<u32>>) -> f32 {
+    let z = ms_stream_next_u64(state);
+    return f32(z.y >> 8u) * (1.0 / 16777216.0);
+}
+
+// An Exp(1) variate from w ∈ [0, 1) by the ziggurat of Marsaglia & Tsang 2000 (the Rust
+// fast::ziggurat::exp1 over its generated layers, family_tables.wgsl, in f32): layer
+// i = ⌊256w⌋, x = (256w − i)x_i, kept when below x_{i+1}; else the tail r + Exp(1) (layer
+// 0, from −ln(1 − v)) or the wedge's height test, with further uniforms from the stream.
+fn ms_zig_exp1(w: f32, state: ptr<function, vec2<u32>>) -> f32 {
+    var y = w * 256.0;
+    var k = u32(max(y, 0.0));
+    var i = k & 255u;
+    var x = (y - f32(k)) * MS_ZIG_EXP_X[i];
+    if x < MS_ZIG_EXP_X[i + 1u] {
+        return x;
+    }
+    // Each pass keeps its candidate with probability ≥ 0.98; the cap (the Rust one) only
+    // guarantees termination.
+    for (var n = 0; n < 64; n++) {
+        if x != x {
+            return x;
+        }
+        if i == 0u {
+            return MS_ZIG_EXP_X[1] - log(1.0 - ms_stream_next(state));
+        }
+        let h = MS_ZIG_EXP_F[i] + ms_stream_next(state) * (MS_ZIG_EXP_F[i + 1u] - MS_ZIG_EXP_F[i]);
+        if h < exp(-x) {
+            return x;
+        }
+        y = ms_stream_next(state) * 256.0;
+        k = u32(y);
+        i = k & 255u;
+        x = (y - f32(k)) * MS_ZIG_EXP_X[i];
+        if x < MS_ZIG_EXP_X[i + 1u] {
+            return x;
+        }
+    }
+    return x;
+}
