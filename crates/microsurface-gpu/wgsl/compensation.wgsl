@@ -40,6 +40,12 @@
 // normalisation; the Rust type's `lost_avg` is then 1 − E_avg). Turquin 2019 ("Practical
 // multiple scattering compensation for microfacet models"): the single-scattering lobe scaled
 // by 1 + F0 (1 − E(μo))/E(μo), F0 = F(μ = 1); with F = 1 the furnace is E(μo)/E_l(μo).
+//
+// Sampling, as the Rust type: Kulla–Conty mixes the added lobe (a cosine-weighted direction on
+// wo's side) with probability q = 1 − E(μo) and the single-scattering sample, pdf = (1 − q)
+// pdf_ss + q |cos θi|/π; Turquin samples and weighs as the single-scattering lobe. The
+// Kulla–Conty sampler returns the single-scattering f at its wi: the added lobe needs E at
+// the sampled |cos θi|, which the including shader looks up and adds (ms_kulla_conty_sample_f).
 
 // One axis' tap: the lower node `i` and the weight `f` of node i + 1.
 struct MsLutTap {
@@ -119,4 +125,97 @@ fn ms_turquin_scale(e_o: f32, f0: vec3<f32>) -> vec3<f32> {
 fn ms_conductor_eval_turquin(c: MsConductor, wo: vec3<f32>, wi: vec3<f32>, e_o: f32,
     f0: vec3<f32>) -> vec3<f32> {
     return ms_conductor_eval(c, wo, wi) * ms_turquin_scale(e_o, f0);
+}
+
+// Kulla–Conty's probability of sampling the added lobe, 1 − E(μo) clamped to [0, 1]: its share
+// of the energy with F = 1 (the Rust type's `p_ms`).
+fn ms_kulla_conty_p_ms(e_o: f32) -> f32 {
+    return clamp(1.0 - e_o, 0.0, 1.0);
+}
+
+// The density of a cosine-weighted direction wi on wo's side, |cos θi|/π (0 across the
+// surface): the added lobe's sampling density.
+fn ms_cosine_pdf_same_side(wo: vec3<f32>, wi: vec3<f32>) -> f32 {
+    if !(wo.z * wi.z > 0.0) {
+        return 0.0;
+    }
+    return abs(wi.z) / MS_PI;
+}
+
+// The Kulla–Conty compensated conductor's pdf: the mixture (1 − q) pdf_ss + q |cos θi|/π,
+// q = ms_kulla_conty_p_ms(e_o), e_o = E(|cos θo|) (`CompensatedConductor::pdf`). Turquin's
+// pdf is the single-scattering one, ms_conductor_pdf.
+fn ms_conductor_pdf_kulla_conty(c: MsConductor, wo: vec3<f32>, wi: vec3<f32>, e_o: f32) -> f32 {
+    let q = ms_kulla_conty_p_ms(e_o);
+    return (1.0 - q) * ms_conductor_pdf(c, wo, wi) + q * ms_cosine_pdf_same_side(wo, wi);
+}
+
+// A cosine-weighted direction on the upper hemisphere from u (Malley's method, the Rust
+// `frame::cosine_hemisphere`): (√u₀ cos 2πu₁, √u₀ sin 2πu₁, √(1 − u₀)).
+fn ms_cosine_hemisphere(u: vec2<f32>) -> vec3<f32> {
+    let r = sqrt(u.x);
+    let cs = ms_cos_sin_turn(u.y);
+    return vec3<f32>(r * cs.x, r * cs.y, sqrt(max(1.0 - u.x, 0.0)));
+}
+
+// The Kulla–Conty compensated conductor's sample (`CompensatedConductor::sample`): with
+// probability q = 1 − E(μo) (uc < q) a cosine-weighted direction on wo's side, else the
+// single-scattering sample from the same u (a delta lobe returned as it is); pdf the mixture's,
+// ms_conductor_pdf_kulla_conty at wi (rejected where it is not ms_usable). f is the
+// single-scattering f at wi, ms_conductor_eval: the added lobe needs E(|cos θi|) at the
+// sampled direction, which the caller looks up and adds with ms_kulla_conty_sample_f.
+fn ms_conductor_sample_kulla_conty(c: MsConductor, wo: vec3<f32>, uc: f32, u: vec2<f32>,
+    e_o: f32) -> MsBsdfSample {
+    let none = MsBsdfSample(vec3<f32>(0.0), 0.0, vec3<f32>(0.0), 0u, 1.0);
+    if ms_on_horizon(wo.z) {
+        return none;
+    }
+    let q = ms_kulla_conty_p_ms(e_o);
+    var wi: vec3<f32>;
+    if uc < q {
+        wi = ms_cosine_hemisphere(u);
+        if wo.z < 0.0 {
+            wi.z = -wi.z;
+        }
+    } else {
+        let s = ms_conductor_sample(c, wo, (uc - q) / (1.0 - q), u);
+        if (s.flags & MS_SAMPLE_VALID) == 0u || (s.flags & MS_SAMPLE_SPECULAR) != 0u {
+            return s;
+        }
+        wi = s.wi;
+    }
+    let pdf = ms_conductor_pdf_kulla_conty(c, wo, wi, e_o);
+    if !ms_usable(pdf) {
+        return none;
+    }
+    return MsBsdfSample(wi, pdf, ms_conductor_eval(c, wo, wi), MS_SAMPLE_VALID, 1.0);
+}
+
+// A ms_conductor_sample_kulla_conty sample's f completed with the added lobe: + f_ms
+// ms_kulla_conty_lobe(e_o, e_i, e_avg) on wo's side, e_i = E(|cos θi|) at s.wi (a delta or
+// rejected sample as it is). Equal to ms_conductor_eval_kulla_conty at s.wi.
+fn ms_kulla_conty_sample_f(s: MsBsdfSample, wo: vec3<f32>, e_o: f32, e_i: f32, e_avg: f32,
+    f_ms: vec3<f32>) -> MsBsdfSample {
+    if (s.flags & MS_SAMPLE_VALID) == 0u || (s.flags & MS_SAMPLE_SPECULAR) != 0u
+        || !(wo.z * s.wi.z > 0.0) {
+        return s;
+    }
+    return MsBsdfSample(s.wi, s.pdf, s.f + ms_kulla_conty_lobe(e_o, e_i, e_avg) * f_ms, s.flags,
+        s.eta);
+}
+
+// The Turquin compensated conductor's sample (`CompensatedConductor::sample`, Scheme::Turquin):
+// the single-scattering sample with its own f scaled by ms_turquin_scale(e_o, f0) (a delta
+// lobe as it is; a scaled f that overflows is rejected); the pdf is ms_conductor_pdf.
+fn ms_conductor_sample_turquin(c: MsConductor, wo: vec3<f32>, uc: f32, u: vec2<f32>, e_o: f32,
+    f0: vec3<f32>) -> MsBsdfSample {
+    let s = ms_conductor_sample(c, wo, uc, u);
+    if (s.flags & MS_SAMPLE_VALID) == 0u || (s.flags & MS_SAMPLE_SPECULAR) != 0u {
+        return s;
+    }
+    let f = s.f * ms_turquin_scale(e_o, f0);
+    if !all(f <= vec3<f32>(3.4028235e38)) {
+        return MsBsdfSample(vec3<f32>(0.0), 0.0, vec3<f32>(0.0), 0u, 1.0);
+    }
+    return MsBsdfSample(s.wi, s.pdf, f, s.flags, s.eta);
 }
