@@ -46,6 +46,7 @@
 //! | `MsDielectric` + `ms_dielectric_eval`, `ms_dielectric_pdf`, `ms_dielectric_sample` → `MsBsdfSample` | `bsdf::RoughDielectric` (`Masking::Correlated` or `Separable`; both transports) |
 //! | `MsLutTap` + `ms_lut_tap(x, n)`, `ms_lut_index`, `ms_lut_lerp`, `ms_lut_bilerp`, `ms_lut_roughness_coord(α, α_max)` | `scattering::lut::Lut::lookup` (texel centres, clamp-to-edge) |
 //! | `ms_kulla_conty_f_ms(F_avg, E_avg)`, `ms_kulla_conty_lobe(E(μo), E(μi), E_avg)`, `ms_conductor_eval_kulla_conty`, `ms_conductor_pdf_kulla_conty`, `ms_conductor_sample_kulla_conty` + `ms_kulla_conty_sample_f` (E(μi) at the sampled wi); `ms_turquin_scale(E(μo), F0)`, `ms_conductor_eval_turquin`, `ms_conductor_sample_turquin` (pdf: `ms_conductor_pdf`) | `scattering::CompensatedConductor` (`Scheme::KullaConty`, `Scheme::Turquin`) `eval`, `pdf`, `sample` |
+//! | `ms_lut_index3`, `ms_lut_eta_coord(η)` (√((η − 1)/2)), `ms_lut_trilerp`, `ms_lut_bilerp_eta`; `ms_dielectric_kulla_conty_k`, `ms_dielectric_kulla_conty_lobe`, `ms_dielectric_eval_kulla_conty`, `ms_dielectric_eval_turquin` (over `LutKind::Dielectric` and `DielectricAvg`, E = R + T) | `Lut::lookup`; `scattering::CompensatedDielectric` `eval` (pdf and sample not yet in WGSL) |
 //! | `ms_reflect`, `ms_refract`, `ms_half_vector_reflection`, `ms_half_vector_refraction`, `ms_jacobian_refraction` | `bsdf::frame` |
 //!
 //! Conventions are the Rust crate's: unit directions in the local shading frame (z = the

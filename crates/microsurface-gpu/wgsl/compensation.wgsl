@@ -219,3 +219,116 @@ fn ms_conductor_sample_turquin(c: MsConductor, wo: vec3<f32>, uc: f32, u: vec2<f
     }
     return MsBsdfSample(s.wi, s.pdf, f, s.flags, s.eta);
 }
+
+// ---- The compensated rough dielectric (two-sided Kulla–Conty, Turquin's 1/E), as the Rust
+// `scattering::CompensatedDielectric` in f32, over the `lut` tables `LutKind::Dielectric`
+// (R, T over [side][η][roughness][μ]; the shader keeps E = R + T) and `DielectricAvg`.
+//
+// Axes: side 0 is wo outside (relative index η > 1), 1 wo inside (1/η); the η coordinate is
+// √((η − 1)/2) (Cycles' map, η = 1 + 2x²), texel centres as the other axes. Within a side the
+// lookup is trilinear over (η, roughness, μ), `Lut::lookup`'s weights and order of the sum.
+//
+// From side s the lost energy 1 − E_s(μo) is split: reflected share 1 − k_s, lobe
+// (1 − k_s)(1 − E_s(μo))(1 − E_s(μi))/(π(1 − E_avg,s)); transmitted share k_s, lobe
+// k_s(1 − E_s(μo))(1 − E_s̄(μi))/(π(1 − E_avg,s̄)) (s̄ the other side; ÷ η'² for radiance
+// transport). k_out = 1 − F_avg(η), k_in = k_out (1 − E_avg,out)/(η²(1 − E_avg,in))
+// (reciprocity of importance transport, f(out → in) = η² f(in → out)), both scaled down
+// together where k_in passes 1 (ms_dielectric_kulla_conty_k). Each lobe integrates to its share
+// exactly when E_avg is the average of the looked-up E, so the white furnace (importance
+// transport, reflection + transmission) is 1 + E(μo) − E_l(μo), the table's own filter error.
+// Turquin: the single-scattering lobes scaled by 1/E_s(μo).
+
+// The flat index of node (η ie, roughness ir, μ im) within one side's block of a row-major
+// [η][roughness][μ] table (the side's block starts at side · n_eta n_r n_mu).
+fn ms_lut_index3(ie: u32, ir: u32, im: u32, n_r: u32, n_mu: u32) -> u32 {
+    return (ie * n_r + ir) * n_mu + im;
+}
+
+// The η coordinate of an interface of relative index η ≥ 1: √((η − 1)/2).
+fn ms_lut_eta_coord(eta: f32) -> f32 {
+    return sqrt(max(eta - 1.0, 0.0) * 0.5);
+}
+
+// The trilinear filter over (η, roughness, μ): v[b] the node (e.i + b₀, r.i + b₁, m.i + b₂),
+// b = b₀ + 2b₁ + 4b₂ (the η tap the fastest bit, as `Lut::lookup`'s corners, summed in its
+// order with its weights ((w_η) w_r) w_μ).
+fn ms_lut_trilerp(e: MsLutTap, r: MsLutTap, m: MsLutTap, v: array<f32, 8>) -> f32 {
+    let we = vec2<f32>(1.0 - e.f, e.f);
+    let wr = vec2<f32>(1.0 - r.f, r.f);
+    let wm = vec2<f32>(1.0 - m.f, m.f);
+    var vv = v;
+    var s = 0.0;
+    for (var b = 0u; b < 8u; b++) {
+        s += we[b & 1u] * wr[(b >> 1u) & 1u] * wm[b >> 2u] * vv[b];
+    }
+    return s;
+}
+
+// The bilinear filter over (η, roughness) of an average table: v[b], b = b₀ + 2b₁.
+fn ms_lut_bilerp_eta(e: MsLutTap, r: MsLutTap, v: array<f32, 4>) -> f32 {
+    let we = vec2<f32>(1.0 - e.f, e.f);
+    let wr = vec2<f32>(1.0 - r.f, r.f);
+    var vv = v;
+    var s = 0.0;
+    for (var b = 0u; b < 4u; b++) {
+        s += we[b & 1u] * wr[b >> 1u] * vv[b];
+    }
+    return s;
+}
+
+// Kulla–Conty's transmitted shares (k_out, k_in) of an interface of relative index η with the
+// smooth interface's Fresnel average f_avg = 2∫F(μ)μ dμ from outside (the caller's; the Rust
+// type integrates it by Gauss–Legendre) and the sides' averages e_avg = (E_avg,out, E_avg,in).
+fn ms_dielectric_kulla_conty_k(eta: f32, f_avg: f32, e_avg: vec2<f32>) -> vec2<f32> {
+    let k_out = 1.0 - f_avg;
+    var k = vec2<f32>(k_out, k_out * (1.0 - e_avg.x) / (eta * eta * (1.0 - e_avg.y)));
+    if !(k.y <= 1.0) {
+        // (Also a lossless inside, whose lobes are 0 anyway.)
+        k = k * select(0.0, 1.0 / k.y, k.y > 1.0);
+    }
+    return k;
+}
+
+// Kulla–Conty's added f(wo, wi) of the dielectric (the Rust type's `f_ms`): e_o = E_s(|cos θo|)
+// of wo's side s, e_i = E_t(|cos θi|) and e_avg_i = E_avg,t of wi's side t, k_o = k_s. 0 on
+// the horizon and where nothing is lost.
+fn ms_dielectric_kulla_conty_lobe(d: MsDielectric, wo: vec3<f32>, wi: vec3<f32>, e_o: f32,
+    e_i: f32, e_avg_i: f32, k_o: f32) -> f32 {
+    if !(abs(wo.z) > 0.0 && abs(wi.z) > 0.0) {
+        return 0.0;
+    }
+    let lost = 1.0 - e_o;
+    let crossed = (wi.z < 0.0) != (wo.z < 0.0);
+    let share = select(1.0 - k_o, k_o, crossed);
+    let den = MS_PI * (1.0 - e_avg_i);
+    if !(den > 0.0 && lost > 0.0) {
+        return 0.0;
+    }
+    var f = share * lost * max(1.0 - e_i, 0.0) / den;
+    if crossed && d.transport == MS_TRANSPORT_RADIANCE {
+        let etap = select(1.0 / d.eta, d.eta, wo.z > 0.0);
+        f = f / (etap * etap);
+    }
+    return f;
+}
+
+// The Kulla–Conty compensated dielectric's f(wo, wi) without the cosine (grey): the
+// single-scattering f plus ms_dielectric_kulla_conty_lobe (a smooth interface as it is).
+fn ms_dielectric_eval_kulla_conty(d: MsDielectric, wo: vec3<f32>, wi: vec3<f32>, e_o: f32,
+    e_i: f32, e_avg_i: f32, k_o: f32) -> f32 {
+    let f = ms_dielectric_eval(d, wo, wi);
+    if ms_dielectric_smooth(d) {
+        return f;
+    }
+    return f + ms_dielectric_kulla_conty_lobe(d, wo, wi, e_o, e_i, e_avg_i, k_o);
+}
+
+// The Turquin compensated dielectric's f(wo, wi): the single-scattering f over e_o = E_s(μo)
+// of wo's side (1 where e_o is not positive).
+fn ms_dielectric_eval_turquin(d: MsDielectric, wo: vec3<f32>, wi: vec3<f32>, e_o: f32) -> f32 {
+    let f = ms_dielectric_eval(d, wo, wi);
+    if ms_dielectric_smooth(d) || !(e_o > 0.0) {
+        return f;
+    }
+    return f / e_o;
+}
