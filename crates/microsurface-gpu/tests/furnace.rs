@@ -120,18 +120,18 @@ fn fz_d_e(side: u32, e: MsLutTap, r: MsLutTap, x: f32) -> f32 {
     let nm = u32(lut[2]);
     let m = ms_lut_tap(x, nm);
     let at = FZ_E + fz_d_block(side);
-    var v: array<f32, 8>;
+    var v: array<vec4<f32>, 2>;
     for (var b = 0u; b < 8u; b++) {
-        v[b] = lut[at + ms_lut_index3(e.i + (b & 1u), r.i + ((b >> 1u) & 1u), m.i + (b >> 2u),
-            nr, nm)];
+        v[b >> 2u][b & 3u] = lut[at + ms_lut_index3(e.i + (b & 1u), r.i + ((b >> 1u) & 1u),
+            m.i + (b >> 2u), nr, nm)];
     }
-    return ms_lut_trilerp(e, r, m, v);
+    return ms_lut_trilerp(e, r, m, v[0], v[1]);
 }
 
 fn fz_d_avg(side: u32, e: MsLutTap, r: MsLutTap) -> f32 {
     let nr = u32(lut[1]);
     let at = u32(lut[3]) + side * u32(lut[0]) * nr;
-    var v: array<f32, 4>;
+    var v: vec4<f32>;
     for (var b = 0u; b < 4u; b++) {
         v[b] = lut[at + (e.i + (b & 1u)) * nr + r.i + (b >> 1u)];
     }

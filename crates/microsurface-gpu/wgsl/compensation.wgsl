@@ -249,29 +249,30 @@ fn ms_lut_eta_coord(eta: f32) -> f32 {
     return sqrt(max(eta - 1.0, 0.0) * 0.5);
 }
 
-// The trilinear filter over (η, roughness, μ): v[b] the node (e.i + b₀, r.i + b₁, m.i + b₂),
-// b = b₀ + 2b₁ + 4b₂ (the η tap the fastest bit, as `Lut::lookup`'s corners, summed in its
-// order with its weights ((w_η) w_r) w_μ).
-fn ms_lut_trilerp(e: MsLutTap, r: MsLutTap, m: MsLutTap, v: array<f32, 8>) -> f32 {
+// The trilinear filter over (η, roughness, μ): node (e.i + b₀, r.i + b₁, m.i + b₂) is lo[b₀ +
+// 2b₁] for b₂ = 0 and hi[b₀ + 2b₁] for b₂ = 1 (the η tap the fastest, as `Lut::lookup`'s
+// corners), summed in its order with its weights ((w_η) w_r) w_μ. (Two vec4 rather than an
+// array: naga's HLSL writes a by-value array's zero initialiser in a form glslang rejects.)
+fn ms_lut_trilerp(e: MsLutTap, r: MsLutTap, m: MsLutTap, lo: vec4<f32>, hi: vec4<f32>) -> f32 {
     let we = vec2<f32>(1.0 - e.f, e.f);
     let wr = vec2<f32>(1.0 - r.f, r.f);
     let wm = vec2<f32>(1.0 - m.f, m.f);
-    var vv = v;
     var s = 0.0;
     for (var b = 0u; b < 8u; b++) {
-        s += we[b & 1u] * wr[(b >> 1u) & 1u] * wm[b >> 2u] * vv[b];
+        let v = select(lo[b & 3u], hi[b & 3u], b >= 4u);
+        s += we[b & 1u] * wr[(b >> 1u) & 1u] * wm[b >> 2u] * v;
     }
     return s;
 }
 
-// The bilinear filter over (η, roughness) of an average table: v[b], b = b₀ + 2b₁.
-fn ms_lut_bilerp_eta(e: MsLutTap, r: MsLutTap, v: array<f32, 4>) -> f32 {
+// The bilinear filter over (η, roughness) of an average table: v[b₀ + 2b₁] the node
+// (e.i + b₀, r.i + b₁).
+fn ms_lut_bilerp_eta(e: MsLutTap, r: MsLutTap, v: vec4<f32>) -> f32 {
     let we = vec2<f32>(1.0 - e.f, e.f);
     let wr = vec2<f32>(1.0 - r.f, r.f);
-    var vv = v;
     var s = 0.0;
     for (var b = 0u; b < 4u; b++) {
-        s += we[b & 1u] * wr[b >> 1u] * vv[b];
+        s += we[b & 1u] * wr[b >> 1u] * v[b];
     }
     return s;
 }
