@@ -47,7 +47,8 @@
 //! | `MsConductor` + `ms_conductor_eval`, `ms_conductor_pdf`, `ms_conductor_eval_pdf`, `ms_conductor_sample` → `MsBsdfSample` | `bsdf::RoughConductor` (`Masking::Correlated` or `Separable`) |
 //! | `MsDielectric` + `ms_dielectric_eval`, `ms_dielectric_pdf`, `ms_dielectric_sample` → `MsBsdfSample` | `bsdf::RoughDielectric` (`Masking::Correlated` or `Separable`; both transports) |
 //! | `MsLutTap` + `ms_lut_tap(x, n)`, `ms_lut_index`, `ms_lut_lerp`, `ms_lut_bilerp`, `ms_lut_roughness_coord(α, α_max)` | `scattering::lut::Lut::lookup` (texel centres, clamp-to-edge) |
-//! | `ms_kulla_conty_f_ms(F_avg, E_avg)`, `ms_kulla_conty_lobe(E(μo), E(μi), E_avg)`, `ms_conductor_eval_kulla_conty`; `ms_turquin_scale(E(μo), F0)`, `ms_conductor_eval_turquin` | `scattering::CompensatedConductor` (`Scheme::KullaConty`, `Scheme::Turquin`) `eval` |
+//! | `ms_kulla_conty_f_ms(F_avg, E_avg)`, `ms_kulla_conty_lobe(E(μo), E(μi), E_avg)`, `ms_conductor_eval_kulla_conty`, `ms_conductor_pdf_kulla_conty`, `ms_conductor_sample_kulla_conty` + `ms_kulla_conty_sample_f` (E(μi) at the sampled wi); `ms_turquin_scale(E(μo), F0)`, `ms_conductor_eval_turquin`, `ms_conductor_sample_turquin` (pdf: `ms_conductor_pdf`) | `scattering::CompensatedConductor` (`Scheme::KullaConty`, `Scheme::Turquin`) `eval`, `pdf`, `sample` |
+//! | `ms_lut_index3`, `ms_lut_eta_coord(η)` (√((η − 1)/2)), `ms_lut_trilerp`, `ms_lut_bilerp_eta`; `ms_dielectric_kulla_conty_k`, `ms_dielectric_kulla_conty_lobe`, `ms_dielectric_eval_kulla_conty`, `ms_dielectric_eval_turquin` (over `LutKind::Dielectric` and `DielectricAvg`, E = R + T) | `Lut::lookup`; `scattering::CompensatedDielectric` `eval` (pdf and sample not yet in WGSL) |
 //! | `ms_reflect`, `ms_refract`, `ms_half_vector_reflection`, `ms_half_vector_refraction`, `ms_jacobian_refraction` | `bsdf::frame` |
 //!
 //! Conventions are the Rust crate's: unit directions in the local shading frame (z = the
@@ -73,6 +74,16 @@
 //! 2017's f_ss + F_ms (1 − E(μo))(1 − E(μi))/(π(1 − E_avg)), F_ms = F_avg² E_avg/(1 −
 //! F_avg(1 − E_avg)) for the caller's F_avg, or Turquin 2019's f_ss (1 + F0 (1 −
 //! E(μo))/E(μo)). `tests/furnace.rs` has a whole shader (tables in a third storage binding).
+//!
+//! Sampling (Kulla–Conty) mixes as the Rust type: the added lobe, cosine-weighted on wo's side,
+//! with probability q = 1 − E(μo), the single-scattering sample otherwise; pdf (1 − q) pdf_ss +
+//! q |cos θi|/π. The sampler's f is the single-scattering one: E(μi) at the sampled direction
+//! is a lookup only the caller can make, and `ms_kulla_conty_sample_f` adds the lobe with it.
+//! `tests/furnace.rs` checks eval, pdf and samples against `CompensatedConductor<f32, …>` element
+//! by element, fed the Rust table's E(μo), E(μi) and E_avg as numbers (the Rust type reads its
+//! own cubic √μ table, not `lut`'s): the GPU's values differ from the Rust type's by the
+//! single-scattering part's own difference plus f32 roundings of the compensation, no more
+//! (at most 0.58 of that bound); the pdf integrates to q + (1 − q)∫pdf_ss within 4e-8.
 //!
 //! Measured on lavapipe (`tests/furnace.rs`): the filter is within its f32 rounding bound of
 //! `Lut::lookup` (at most a quarter of it, 32 and 64 nodes, 0, 1 and past them included). The
