@@ -134,34 +134,34 @@ int naga_f2i32(float value) {
 
 float2 ms_cos_sin_turn(float v)
 {
-    float k_3 = round((4.0 * v));
-    float r_1 = (v - (0.25 * k_3));
-    float x_5 = (MS_TAU * r_1);
+    float k_4 = round((4.0 * v));
+    float r_3 = (v - (0.25 * k_4));
+    float x_5 = (MS_TAU * r_3);
     float x2_ = (x_5 * x_5);
-    float s_3 = (x_5 * (1.0 + (x2_ * (-0.16666667 + (x2_ * (0.008333333 + (x2_ * (-0.0001984127 + (x2_ * 2.7557319e-6)))))))));
-    float c_9 = (1.0 + (x2_ * (-0.5 + (x2_ * (0.041666668 + (x2_ * (-0.0013888889 + (x2_ * (2.4801588e-5 + (x2_ * -2.755732e-7))))))))));
-    int q = (naga_f2i32(k_3) & int(3));
+    float s_6 = (x_5 * (1.0 + (x2_ * (-0.16666667 + (x2_ * (0.008333333 + (x2_ * (-0.0001984127 + (x2_ * 2.7557319e-6)))))))));
+    float c_12 = (1.0 + (x2_ * (-0.5 + (x2_ * (0.041666668 + (x2_ * (-0.0013888889 + (x2_ * (2.4801588e-5 + (x2_ * -2.755732e-7))))))))));
+    int q = (naga_f2i32(k_4) & int(3));
     if ((q == int(0))) {
-        return float2(c_9, s_3);
+        return float2(c_12, s_6);
     } else {
         if ((q == int(1))) {
-            return float2(-(s_3), c_9);
+            return float2(-(s_6), c_12);
         } else {
             if ((q == int(2))) {
-                return float2(-(c_9), -(s_3));
+                return float2(-(c_12), -(s_6));
             }
         }
     }
-    return float2(s_3, -(c_9));
+    return float2(s_6, -(c_12));
 }
 
 float3 ms_rescaled(float3 a)
 {
     bool local = (bool)0;
 
-    float m_4 = max(abs(a.x), max(abs(a.y), abs(a.z)));
-    if ((m_4 > 0.0)) {
-        local = (m_4 <= 3.4028235e38);
+    float m_5 = max(abs(a.x), max(abs(a.y), abs(a.z)));
+    if ((m_5 > 0.0)) {
+        local = (m_5 <= 3.4028235e38);
     } else {
         local = false;
     }
@@ -169,7 +169,7 @@ float3 ms_rescaled(float3 a)
     if (!(_e16)) {
         return a;
     }
-    return (a / (m_4).xxx);
+    return (a / (m_5).xxx);
 }
 
 float ms_dot(float3 a_1, float3 b)
@@ -204,9 +204,9 @@ float3 ms_unit(float3 w)
     if ((abs((_e1 - 1.0)) <= 1e-6)) {
         return w;
     }
-    float m_5 = max(abs(w.x), max(abs(w.y), abs(w.z)));
-    if ((m_5 > 0.0)) {
-        local_2 = (m_5 <= 3.4028235e38);
+    float m_6 = max(abs(w.x), max(abs(w.y), abs(w.z)));
+    if ((m_6 > 0.0)) {
+        local_2 = (m_6 <= 3.4028235e38);
     } else {
         local_2 = false;
     }
@@ -214,7 +214,7 @@ float3 ms_unit(float3 w)
     if (!(_e22)) {
         return w;
     }
-    const float3 _e27 = ms_normalize((w * (1.0 / m_5)));
+    const float3 _e27 = ms_normalize((w * (1.0 / m_6)));
     return _e27;
 }
 
@@ -232,13 +232,13 @@ float3 ms_unit_normal(float3 v_1)
     if (_e9) {
         return (v_1 * (1.0 / sqrt(_e1)));
     }
-    float m_6 = max(abs(v_1.x), max(abs(v_1.y), abs(v_1.z)));
-    if ((m_6 == 0.0)) {
+    float m_7 = max(abs(v_1.x), max(abs(v_1.y), abs(v_1.z)));
+    if ((m_7 == 0.0)) {
         return float3(0.0, 0.0, 1.0);
     }
-    float3 s_4 = (v_1 / (m_6).xxx);
-    const float _e30 = ms_dot(s_4, s_4);
-    return (s_4 * (1.0 / sqrt(_e30)));
+    float3 s_7 = (v_1 / (m_7).xxx);
+    const float _e30 = ms_dot(s_7, s_7);
+    return (s_7 * (1.0 / sqrt(_e30)));
 }
 
 float3 ms_reflect(float3 wo, float3 n)
@@ -254,11 +254,11 @@ bool ms_same_hemisphere(float3 a_3, float3 b_1)
 
 float3 ms_half_vector_reflection(float3 wo_1, float3 wi)
 {
-    float3 s_5 = (wo_1 + wi);
-    if (!((max(abs(s_5.x), max(abs(s_5.y), abs(s_5.z))) > 0.0))) {
+    float3 s_8 = (wo_1 + wi);
+    if (!((max(abs(s_8.x), max(abs(s_8.y), abs(s_8.z))) > 0.0))) {
         return (0.0).xxx;
     }
-    const float3 _e16 = ms_normalize(s_5);
+    const float3 _e16 = ms_normalize(s_8);
     if ((_e16.z < 0.0)) {
         return -(_e16);
     }
@@ -294,8 +294,8 @@ float3 ms_facing(float3 m_1, float3 w_1)
     const float _e21 = ms_dot(_e12, _e12);
     float3 wu = ((_e19 * _e12) / (sqrt(_e21)).xxx);
     const float _e25 = ms_dot(m_1, wu);
-    float e = (_e25 - 8e-7);
-    const float3 _e30 = ms_unit_normal((m_1 - (e * wu)));
+    float e_2 = (_e25 - 8e-7);
+    const float3 _e30 = ms_unit_normal((m_1 - (e_2 * wu)));
     return _e30;
 }
 
@@ -403,31 +403,31 @@ float ms_fresnel_dielectric(float cos_in, float eta_in_1)
         eta_2 = (1.0 / _e9);
     }
     float _e12 = cos_i_1;
-    float c_10 = min(_e12, 1.0);
+    float c_13 = min(_e12, 1.0);
     float _e15 = eta_2;
     if ((_e15 == 1.0)) {
         return 0.0;
     }
-    if ((c_10 == 0.0)) {
+    if ((c_13 == 0.0)) {
         return 1.0;
     }
     float _e24 = eta_2;
     if ((_e24 > 1e18)) {
         float _e27 = eta_2;
-        float e_1 = (1.0 / _e27);
-        float cos_t_1 = sqrt((((1.0 - e_1) * (1.0 + e_1)) + ((c_10 * e_1) * (c_10 * e_1))));
-        r_parl = ((c_10 - (e_1 * cos_t_1)) / (c_10 + (e_1 * cos_t_1)));
-        r_perp = (((e_1 * c_10) - cos_t_1) / ((e_1 * c_10) + cos_t_1));
+        float e_3 = (1.0 / _e27);
+        float cos_t_1 = sqrt((((1.0 - e_3) * (1.0 + e_3)) + ((c_13 * e_3) * (c_13 * e_3))));
+        r_parl = ((c_13 - (e_3 * cos_t_1)) / (c_13 + (e_3 * cos_t_1)));
+        r_perp = (((e_3 * c_13) - cos_t_1) / ((e_3 * c_13) + cos_t_1));
     } else {
         float _e51 = eta_2;
         if ((_e51 > 1.0)) {
             float _e54 = eta_2;
             float _e57 = eta_2;
-            ect2_ = (((_e54 - 1.0) * (_e57 + 1.0)) + (c_10 * c_10));
+            ect2_ = (((_e54 - 1.0) * (_e57 + 1.0)) + (c_13 * c_13));
         } else {
             float _e63 = eta_2;
             float _e64 = eta_2;
-            ect2_ = ((_e63 * _e64) - ((1.0 - c_10) * (1.0 + c_10)));
+            ect2_ = ((_e63 * _e64) - ((1.0 - c_13) * (1.0 + c_13)));
         }
         float _e72 = ect2_;
         if ((_e72 <= 0.0)) {
@@ -437,9 +437,9 @@ float ms_fresnel_dielectric(float cos_in, float eta_in_1)
         float ect = sqrt(_e76);
         float _e78 = eta_2;
         float _e79 = eta_2;
-        float e2c = ((_e78 * _e79) * c_10);
+        float e2c = ((_e78 * _e79) * c_13);
         r_parl = ((e2c - ect) / (e2c + ect));
-        r_perp = ((c_10 - ect) / (c_10 + ect));
+        r_perp = ((c_13 - ect) / (c_13 + ect));
     }
     float _e88 = r_parl;
     float _e89 = r_parl;
@@ -460,30 +460,30 @@ float ms_cnorm(float2 a_5)
 
 float ms_cnorm_ratio(float2 a_6, float2 b_3)
 {
-    float s_6 = max(max(abs(a_6.x), abs(a_6.y)), max(abs(b_3.x), abs(b_3.y)));
-    if ((s_6 == 0.0)) {
+    float s_9 = max(max(abs(a_6.x), abs(a_6.y)), max(abs(b_3.x), abs(b_3.y)));
+    if ((s_9 == 0.0)) {
         return 0.0;
     }
-    if (!((s_6 <= 3.4028235e38))) {
+    if (!((s_9 <= 3.4028235e38))) {
         const float _e19 = ms_cnorm(a_6);
         const float _e20 = ms_cnorm(b_3);
         return (_e19 / _e20);
     }
-    const float _e24 = ms_cnorm((a_6 / (s_6).xx));
-    const float _e27 = ms_cnorm((b_3 / (s_6).xx));
+    const float _e24 = ms_cnorm((a_6 / (s_9).xx));
+    const float _e27 = ms_cnorm((b_3 / (s_9).xx));
     return (_e24 / _e27);
 }
 
 float2 ms_crecip(float2 a_7)
 {
     if ((abs(a_7.x) >= abs(a_7.y))) {
-        float r_2 = (a_7.y / a_7.x);
-        float d_9 = (a_7.x + (a_7.y * r_2));
-        return float2((1.0 / d_9), (-(r_2) / d_9));
+        float r_4 = (a_7.y / a_7.x);
+        float d_12 = (a_7.x + (a_7.y * r_4));
+        return float2((1.0 / d_12), (-(r_4) / d_12));
     }
-    float r_3 = (a_7.x / a_7.y);
-    float d_10 = ((a_7.x * r_3) + a_7.y);
-    return float2((r_3 / d_10), (-1.0 / d_10));
+    float r_5 = (a_7.x / a_7.y);
+    float d_13 = ((a_7.x * r_5) + a_7.y);
+    return float2((r_5 / d_13), (-1.0 / d_13));
 }
 
 float2 ms_csqrt(float2 a_8)
@@ -491,11 +491,11 @@ float2 ms_csqrt(float2 a_8)
     float s_1 = (float)0;
 
     const float _e1 = ms_cnorm(a_8);
-    float r_4 = sqrt(_e1);
-    if ((r_4 == 0.0)) {
+    float r_6 = sqrt(_e1);
+    if ((r_6 == 0.0)) {
         return (0.0).xx;
     }
-    float t_3 = sqrt(((r_4 + abs(a_8.x)) * 0.5));
+    float t_3 = sqrt(((r_6 + abs(a_8.x)) * 0.5));
     if ((a_8.x >= 0.0)) {
         return float2(t_3, (a_8.y / (t_3 + t_3)));
     }
@@ -567,19 +567,19 @@ float ms_fresnel_conductor(float cos_in_1, float eta_3, float k)
 
 float ms_fresnel_schlick(float cos_i_2, float f0_)
 {
-    float m_7 = (1.0 - min(max(cos_i_2, 0.0), 1.0));
-    float m2_ = (m_7 * m_7);
-    return (f0_ + ((1.0 - f0_) * ((m2_ * m2_) * m_7)));
+    float m_8 = (1.0 - min(max(cos_i_2, 0.0), 1.0));
+    float m2_ = (m_8 * m_8);
+    return (f0_ + ((1.0 - f0_) * ((m2_ * m2_) * m_8)));
 }
 
 float ms_fresnel_f82_tint(float cos_i_3, float f0_1, float h)
 {
     float mu = min(max(cos_i_3, 0.0), 1.0);
-    float m_8 = (1.0 - mu);
-    float m5_ = ((((m_8 * m_8) * m_8) * m_8) * m_8);
+    float m_9 = (1.0 - mu);
+    float m5_ = ((((m_9 * m_9) * m_9) * m_9) * m_9);
     float a_12 = (((f0_1 + ((1.0 - f0_1) * 0.46266437)) * (1.0 - h)) / 0.05665278);
-    float r_5 = ((f0_1 + ((1.0 - f0_1) * m5_)) - (((a_12 * mu) * m5_) * m_8));
-    return min(max(r_5, 0.0), 1.0);
+    float r_7 = ((f0_1 + ((1.0 - f0_1) * m5_)) - (((a_12 * mu) * m5_) * m_9));
+    return min(max(r_7, 0.0), 1.0);
 }
 
 float3 ms_fresnel_eval(MsFresnel fr, float cos_i_4)
@@ -740,8 +740,8 @@ float3 ms_ggx_sample_wm(float3 w_in, float2 alpha_7, float2 u_1)
     float _e12 = w_7.x;
     float _e16 = w_7.y;
     float _e19 = w_7.z;
-    float3 s_7 = float3((alpha_7.x * _e12), (alpha_7.y * _e16), _e19);
-    float n2_ = (((s_7.x * s_7.x) + (s_7.y * s_7.y)) + (s_7.z * s_7.z));
+    float3 s_10 = float3((alpha_7.x * _e12), (alpha_7.y * _e16), _e19);
+    float n2_ = (((s_10.x * s_10.x) + (s_10.y * s_10.y)) + (s_10.z * s_10.z));
     if ((n2_ >= 1e-24)) {
         local_8 = (n2_ <= 1e24);
     } else {
@@ -754,12 +754,12 @@ float3 ms_ggx_sample_wm(float3 w_in, float2 alpha_7, float2 u_1)
         float _e45 = w_7.x;
         float _e49 = w_7.y;
         float _e54 = w_7.z;
-        float d_11 = (((_e42.x * _e45) + (_e42.y * _e49)) + (_e42.z * _e54));
+        float d_14 = (((_e42.x * _e45) + (_e42.y * _e49)) + (_e42.z * _e54));
         float _e58 = w_7.x;
         float _e61 = w_7.y;
         float _e65 = w_7.z;
         float l1_ = ((abs(_e58) + abs(_e61)) + abs(_e65));
-        if ((d_11 > (2.4e-7 * l1_))) {
+        if ((d_14 > (2.4e-7 * l1_))) {
             return _e42;
         }
         float3 _e71 = w_7;
@@ -803,8 +803,8 @@ float ms_ggx_pdf_dcos(float3 wm_4, float2 alpha_9)
 MsSample ms_ggx_sample_dcos(float2 alpha_10, float2 u_3)
 {
     const float2 _e3 = ms_cos_sin_turn(u_3.y);
-    float r_6 = sqrt(u_3.x);
-    const float3 _e21 = ms_unit_normal(float3(((alpha_10.x * r_6) * _e3.x), ((alpha_10.y * r_6) * _e3.y), sqrt(max((1.0 - u_3.x), 0.0))));
+    float r_8 = sqrt(u_3.x);
+    const float3 _e21 = ms_unit_normal(float3(((alpha_10.x * r_8) * _e3.x), ((alpha_10.y * r_8) * _e3.y), sqrt(max((1.0 - u_3.x), 0.0))));
     const float _e22 = ms_ggx_d(_e21, alpha_10);
     const MsSample mssample_1 = ConstructMsSample(_e21, (_e22 * _e21.z));
     return mssample_1;
@@ -840,17 +840,17 @@ MsBoundedCap ms_ggx_bounded_cap(float3 w_9, float2 alpha_11)
     float _e30 = v_2.x;
     float _e33 = v_2.y;
     float _e35 = v_2.y;
-    float s_8 = (1.0 + sqrt(((_e28 * _e30) + (_e33 * _e35))));
+    float s_11 = (1.0 + sqrt(((_e28 * _e30) + (_e33 * _e35))));
     float a2_ = (a_13 * a_13);
-    float s2_ = (s_8 * s_8);
+    float s2_ = (s_11 * s_11);
     float _e44 = v_2.z;
     float _e47 = v_2.z;
     float den_2 = (s2_ + ((a2_ * _e44) * _e47));
-    float k_4 = (((1.0 - a2_) * s2_) / den_2);
+    float k_5 = (((1.0 - a2_) * s2_) / den_2);
     float _e55 = v_2.z;
     float _e57 = v_2.z;
     float one_minus_k = ((a2_ * (s2_ + (_e55 * _e57))) / den_2);
-    const MsBoundedCap msboundedcap_1 = ConstructMsBoundedCap(_e18, (k_4 * _e18.z), (one_minus_k * _e18.z));
+    const MsBoundedCap msboundedcap_1 = ConstructMsBoundedCap(_e18, (k_5 * _e18.z), (one_minus_k * _e18.z));
     return msboundedcap_1;
 }
 
@@ -859,15 +859,15 @@ float ms_ggx_pdf_bounded(float3 w_in_1, float3 wm_5, float2 alpha_12)
     const float3 _e3 = ms_unit(w_in_1);
     const MsBoundedCap _e4 = ms_ggx_bounded_cap(_e3, alpha_12);
     float3 ws = _e4.ws;
-    float b_4 = _e4.b;
+    float b_6 = _e4.b;
     const float3 _e15 = ms_normalize(float3((wm_5.x / alpha_12.x), (wm_5.y / alpha_12.y), wm_5.z));
     const float _e16 = ms_dot(_e15, ws);
     float cz = (((_e16 + _e16) * _e15.z) - ws.z);
-    if ((cz < -(b_4))) {
+    if ((cz < -(b_6))) {
         return 0.0;
     }
     const float _e25 = ms_ggx_pdf(_e3, wm_5, alpha_12);
-    return ((_e25 * (1.0 + ws.z)) / (1.0 + b_4));
+    return ((_e25 * (1.0 + ws.z)) / (1.0 + b_6));
 }
 
 MsSample ms_ggx_sample_bounded(float3 w_in_2, float2 alpha_13, float2 u_4)
@@ -875,13 +875,13 @@ MsSample ms_ggx_sample_bounded(float3 w_in_2, float2 alpha_13, float2 u_4)
     const float3 _e3 = ms_unit(w_in_2);
     const MsBoundedCap _e4 = ms_ggx_bounded_cap(_e3, alpha_13);
     float3 ws_1 = _e4.ws;
-    float b_5 = _e4.b;
+    float b_7 = _e4.b;
     const float2 _e8 = ms_cos_sin_turn(u_4.x);
-    float above_1 = ((1.0 - u_4.y) * (1.0 + b_5));
+    float above_1 = ((1.0 - u_4.y) * (1.0 + b_7));
     float one_minus_b = ((((ws_1.x * ws_1.x) + (ws_1.y * ws_1.y)) / (1.0 + ws_1.z)) + _e4.top);
-    float sin_1 = sqrt(max(((u_4.y * (1.0 + b_5)) * (above_1 + one_minus_b)), 0.0));
-    float3 m_9 = float3(((sin_1 * _e8.x) + ws_1.x), ((sin_1 * _e8.y) + ws_1.y), (above_1 + _e4.top));
-    const float3 _e58 = ms_normalize(float3((alpha_13.x * m_9.x), (alpha_13.y * m_9.y), max(m_9.z, 0.0)));
+    float sin_1 = sqrt(max(((u_4.y * (1.0 + b_7)) * (above_1 + one_minus_b)), 0.0));
+    float3 m_10 = float3(((sin_1 * _e8.x) + ws_1.x), ((sin_1 * _e8.y) + ws_1.y), (above_1 + _e4.top));
+    const float3 _e58 = ms_normalize(float3((alpha_13.x * m_10.x), (alpha_13.y * m_10.y), max(m_10.z, 0.0)));
     const float3 _e59 = ms_facing(_e58, _e3);
     const float _e60 = ms_ggx_pdf_bounded(_e3, _e59, alpha_13);
     const MsSample mssample_2 = ConstructMsSample(_e59, _e60);
@@ -896,12 +896,12 @@ float ms_ggx_pdf_bounded_reflection(float3 wo_8, float3 wi_8, float2 alpha_14)
         return 0.0;
     }
     const float _e7 = ms_dot(wo_8, _e3);
-    float c_11 = abs(_e7);
-    if (!((c_11 > 0.0))) {
+    float c_14 = abs(_e7);
+    if (!((c_14 > 0.0))) {
         return 0.0;
     }
     const float _e13 = ms_ggx_pdf_bounded(wo_8, _e3, alpha_14);
-    return (_e13 / (4.0 * c_11));
+    return (_e13 / (4.0 * c_14));
 }
 
 float2 ms_bk_segment(float x, int k0_, int k1_)
@@ -928,8 +928,8 @@ float ms_bk_erfcx(float x_1)
         return (1.0 - (1.1283792 * x_1));
     }
     if ((x_1 >= 32.0)) {
-        float r_7 = (1.0 / (x_1 * x_1));
-        return (((1.0 - (r_7 * (0.5 - (r_7 * (0.75 - (r_7 * (1.875 - (r_7 * 6.5625)))))))) * MS_FRAC_1_SQRT_PI) / x_1);
+        float r_9 = (1.0 / (x_1 * x_1));
+        return (((1.0 - (r_9 * (0.5 - (r_9 * (0.75 - (r_9 * (1.875 - (r_9 * 6.5625)))))))) * MS_FRAC_1_SQRT_PI) / x_1);
     }
     const float2 _e30 = ms_bk_segment(x_1, MS_BK_ERFCX_K0_, MS_BK_ERFCX_K1_);
     uint i_2 = (2u * naga_f2u32(_e30.x));
@@ -945,8 +945,8 @@ float ms_bk_erfc_ratio(float a_9)
         return (1.0 - (MS_SQRT_PI * a_9));
     }
     if ((a_9 >= 32.0)) {
-        float r_8 = (1.0 / (a_9 * a_9));
-        return (r_8 * (0.5 - (r_8 * (0.75 - (r_8 * (1.875 - (r_8 * (6.5625 - (r_8 * 29.53125)))))))));
+        float r_10 = (1.0 / (a_9 * a_9));
+        return (r_10 * (0.5 - (r_10 * (0.75 - (r_10 * (1.875 - (r_10 * (6.5625 - (r_10 * 29.53125)))))))));
     }
     const float2 _e28 = ms_bk_segment(a_9, MS_BK_ERFC_RATIO_K0_, MS_BK_ERFC_RATIO_K1_);
     uint i_3 = (2u * naga_f2u32(_e28.x));
@@ -1006,9 +1006,9 @@ float ms_beckmann_d(float3 wm_6, float2 alpha_15)
     bool local_9 = (bool)0;
 
     float z_6 = wm_6.z;
-    float r_9 = (1.0 / (alpha_15.x * alpha_15.y));
-    float x_10 = ((wm_6.x * alpha_15.y) * r_9);
-    float y_4 = ((wm_6.y * alpha_15.x) * r_9);
+    float r_11 = (1.0 / (alpha_15.x * alpha_15.y));
+    float x_10 = ((wm_6.x * alpha_15.y) * r_11);
+    float y_4 = ((wm_6.y * alpha_15.x) * r_11);
     float z2_1 = (z_6 * z_6);
     if ((z_6 > 0.0)) {
         local_9 = (z2_1 > 0.0);
@@ -1019,11 +1019,11 @@ float ms_beckmann_d(float3 wm_6, float2 alpha_15)
     if (!(_e24)) {
         return 0.0;
     }
-    float e_2 = (((x_10 * x_10) + (y_4 * y_4)) / z2_1);
-    if ((e_2 <= 80.0)) {
-        return ((exp(-(e_2)) * r_9) / ((MS_PI * z2_1) * z2_1));
+    float e_4 = (((x_10 * x_10) + (y_4 * y_4)) / z2_1);
+    if ((e_4 <= 80.0)) {
+        return ((exp(-(e_4)) * r_11) / ((MS_PI * z2_1) * z2_1));
     }
-    return exp((((log(r_9) - 1.14473) - (4.0 * log(z_6))) - e_2));
+    return exp((((log(r_11) - 1.14473) - (4.0 * log(z_6))) - e_4));
 }
 
 float ms_beckmann_lambda_cot(float a_10)
@@ -1043,11 +1043,11 @@ float ms_beckmann_lambda(float3 w_10, float2 alpha_16)
 {
     float x_11 = (alpha_16.x * w_10.x);
     float y_5 = (alpha_16.y * w_10.y);
-    float s_9 = sqrt(((x_11 * x_11) + (y_5 * y_5)));
-    if (!((s_9 > 0.0))) {
+    float s_12 = sqrt(((x_11 * x_11) + (y_5 * y_5)));
+    if (!((s_12 > 0.0))) {
         return 0.0;
     }
-    const float _e19 = ms_beckmann_lambda_cot((abs(w_10.z) / s_9));
+    const float _e19 = ms_beckmann_lambda_cot((abs(w_10.z) / s_12));
     return _e19;
 }
 
@@ -1131,11 +1131,11 @@ MsSample ms_beckmann_sample_dcos(float2 alpha_22, float2 u_6)
         v_3 = float3((alpha_22.x * _e3.x), (alpha_22.y * _e3.y), 0.0);
     } else {
         const float _e17 = ms_bk_ln_1m(u_6.x);
-        float r_10 = sqrt(-(_e17));
-        if ((r_10 > 1.0)) {
-            v_3 = float3((alpha_22.x * _e3.x), (alpha_22.y * _e3.y), (1.0 / r_10));
+        float r_12 = sqrt(-(_e17));
+        if ((r_12 > 1.0)) {
+            v_3 = float3((alpha_22.x * _e3.x), (alpha_22.y * _e3.y), (1.0 / r_12));
         } else {
-            v_3 = float3(((alpha_22.x * r_10) * _e3.x), ((alpha_22.y * r_10) * _e3.y), 1.0);
+            v_3 = float3(((alpha_22.x * r_12) * _e3.x), ((alpha_22.y * r_12) * _e3.y), 1.0);
         }
     }
     float3 _e41 = v_3;
@@ -1197,11 +1197,11 @@ float ms_bk_visible_x(float a_11, float u_7)
         {
             float _e40 = x_2;
             float _e42 = x_2;
-            float e_3 = exp((-(_e40) * _e42));
+            float e_5 = exp((-(_e40) * _e42));
             float _e45 = x_2;
             const float _e47 = ms_bk_erfcx(abs(_e45));
-            float ec = (_e47 * e_3);
-            float half_e = (0.2820948 * e_3);
+            float ec = (_e47 * e_5);
+            float half_e = (0.2820948 * e_5);
             f = ZeroValuefloat();
             float _e53 = x_2;
             if ((_e53 <= 0.0)) {
@@ -1228,7 +1228,7 @@ float ms_bk_visible_x(float a_11, float u_7)
             float _e79 = x_2;
             float _e82 = x_2;
             float g2_ = (1.0 - ((2.0 * _e79) * (_e82 + a_11)));
-            float big_e = (e_3 * MS_FRAC_1_SQRT_PI);
+            float big_e = (e_5 * MS_FRAC_1_SQRT_PI);
             float _e89 = f;
             float fg2_ = (_e89 * g2_);
             float g1e = ((g1_ * g1_) * big_e);
@@ -1299,14 +1299,14 @@ float3 ms_beckmann_sample_wm(float3 w_13, float2 alpha_23, float2 u_8)
     float _e14 = sign_1;
     float sy_1 = ((_e14 * alpha_23.y) * w_13.y);
     float _e19 = sign_1;
-    float c_12 = (_e19 * w_13.z);
+    float c_15 = (_e19 * w_13.z);
     float h_2 = sqrt(((sx_1 * sx_1) + (sy_1 * sy_1)));
     const float _e27 = ms_bk_quantile(u_8.y);
     if ((h_2 > 0.0)) {
         float inv_1 = (1.0 / h_2);
         cp = (sx_1 * inv_1);
         sp = (sy_1 * inv_1);
-        const float _e41 = ms_bk_visible_x((c_12 * inv_1), u_8.x);
+        const float _e41 = ms_bk_visible_x((c_15 * inv_1), u_8.x);
         x_3 = _e41;
     } else {
         const float _e43 = ms_bk_quantile(u_8.x);
@@ -1585,10 +1585,10 @@ MsBsdfSample ms_conductor_sample(MsConductor c_6, float3 wo_19, float uc, float2
     }
     const bool _e15 = ms_effectively_smooth(c_6.mf);
     if (_e15) {
-        float3 wi_26 = float3(-(wo_19.x), -(wo_19.y), wo_19.z);
-        float k_5 = (1.0 / abs(wi_26.z));
+        float3 wi_32 = float3(-(wo_19.x), -(wo_19.y), wo_19.z);
+        float k_6 = (1.0 / abs(wi_32.z));
         const float3 _e29 = ms_fresnel_eval(c_6.fresnel, abs(wo_19.z));
-        const MsBsdfSample msbsdfsample_1 = ConstructMsBsdfSample(wi_26, 1.0, (_e29 * k_5), 3u, 1.0);
+        const MsBsdfSample msbsdfsample_1 = ConstructMsBsdfSample(wi_32, 1.0, (_e29 * k_6), 3u, 1.0);
         return msbsdfsample_1;
     }
     const MsSample _e36 = ms_sample(c_6.mf, wo_19, u_12);
@@ -1770,8 +1770,8 @@ MsBsdfSample ms_dielectric_sample_smooth(MsDielectric d_7, float3 wo_25, float u
 
     const float _e5 = ms_fresnel_dielectric(wo_25.z, d_7.eta);
     if ((uc_1 < _e5)) {
-        float3 wi_27 = float3(-(wo_25.x), -(wo_25.y), wo_25.z);
-        const MsBsdfSample msbsdfsample_7 = ConstructMsBsdfSample(wi_27, _e5, ((_e5 / abs(wi_27.z))).xxx, 3u, 1.0);
+        float3 wi_33 = float3(-(wo_25.x), -(wo_25.y), wo_25.z);
+        const MsBsdfSample msbsdfsample_7 = ConstructMsBsdfSample(wi_33, _e5, ((_e5 / abs(wi_33.z))).xxx, 3u, 1.0);
         return msbsdfsample_7;
     }
     MsBsdfSample none_2 = ConstructMsBsdfSample((0.0).xxx, 0.0, (0.0).xxx, 0u, 1.0);
@@ -1780,20 +1780,20 @@ MsBsdfSample ms_dielectric_sample_smooth(MsDielectric d_7, float3 wo_25, float u
         const MsBsdfSample msbsdfsample_8 = none_2;
         return msbsdfsample_8;
     }
-    float3 wi_28 = _e33.xyz;
-    const bool _e39 = ms_on_horizon(wi_28.z);
+    float3 wi_34 = _e33.xyz;
+    const bool _e39 = ms_on_horizon(wi_34.z);
     if (_e39) {
         const MsBsdfSample msbsdfsample_9 = none_2;
         return msbsdfsample_9;
     }
     float t_8 = (1.0 - _e5);
-    f_2 = (t_8 / abs(wi_28.z));
+    f_2 = (t_8 / abs(wi_34.z));
     if ((d_7.transport == MS_TRANSPORT_RADIANCE)) {
         float _e49 = f_2;
         f_2 = (_e49 / (_e33.w * _e33.w));
     }
     float _e54 = f_2;
-    const MsBsdfSample msbsdfsample_10 = ConstructMsBsdfSample(wi_28, t_8, (_e54).xxx, 7u, _e33.w);
+    const MsBsdfSample msbsdfsample_10 = ConstructMsBsdfSample(wi_34, t_8, (_e54).xxx, 7u, _e33.w);
     return msbsdfsample_10;
 }
 
@@ -1841,11 +1841,11 @@ MsBsdfSample ms_dielectric_sample(MsDielectric d_8, float3 wo_26, float uc_2, fl
             return msbsdfsample_14;
         }
         const float _e39 = ms_reflected(d_8.mf, d_8.masking, wo_26, _e23, _e34);
-        float f_3 = (_e21 * _e39);
+        float f_4 = (_e21 * _e39);
         float pdf_1 = ((_e17.pdf * _e21) / (4.0 * abs(_e19)));
         const bool _e47 = ms_usable(pdf_1);
         if (!(!(_e47))) {
-            local_23 = !((f_3 <= 3.4028235e38));
+            local_23 = !((f_4 <= 3.4028235e38));
         } else {
             local_23 = true;
         }
@@ -1854,7 +1854,7 @@ MsBsdfSample ms_dielectric_sample(MsDielectric d_8, float3 wo_26, float uc_2, fl
             const MsBsdfSample msbsdfsample_15 = none_3;
             return msbsdfsample_15;
         }
-        const MsBsdfSample msbsdfsample_16 = ConstructMsBsdfSample(_e23, pdf_1, (f_3).xxx, MS_SAMPLE_VALID, 1.0);
+        const MsBsdfSample msbsdfsample_16 = ConstructMsBsdfSample(_e23, pdf_1, (f_4).xxx, MS_SAMPLE_VALID, 1.0);
         return msbsdfsample_16;
     }
     const float4 _e62 = ms_refract(wo_26, wm_15, d_8.eta);
@@ -1862,11 +1862,11 @@ MsBsdfSample ms_dielectric_sample(MsDielectric d_8, float3 wo_26, float uc_2, fl
         const MsBsdfSample msbsdfsample_17 = none_3;
         return msbsdfsample_17;
     }
-    float3 wi_29 = _e62.xyz;
+    float3 wi_35 = _e62.xyz;
     float etap_6 = _e62.w;
-    const bool _e68 = ms_same_hemisphere(wo_26, wi_29);
+    const bool _e68 = ms_same_hemisphere(wo_26, wi_35);
     if (!(_e68)) {
-        const bool _e73 = ms_on_horizon(wi_29.z);
+        const bool _e73 = ms_on_horizon(wi_35.z);
         local_24 = _e73;
     } else {
         local_24 = true;
@@ -1877,7 +1877,7 @@ MsBsdfSample ms_dielectric_sample(MsDielectric d_8, float3 wo_26, float uc_2, fl
         return msbsdfsample_18;
     }
     float t_9 = (1.0 - _e21);
-    const float _e80 = ms_jacobian_refraction(wo_26, wi_29, wm_15, etap_6);
+    const float _e80 = ms_jacobian_refraction(wo_26, wi_35, wm_15, etap_6);
     float pdf_2 = ((_e17.pdf * t_9) * _e80);
     const float _e83 = ms_d(d_8.mf, wm_15);
     const bool _e84 = ms_usable(_e83);
@@ -1885,7 +1885,7 @@ MsBsdfSample ms_dielectric_sample(MsDielectric d_8, float3 wo_26, float uc_2, fl
         const MsBsdfSample msbsdfsample_19 = none_3;
         return msbsdfsample_19;
     }
-    const float _e86 = ms_dielectric_f_transmission(d_8, wo_26, wi_29, wm_15, _e83, etap_6, t_9);
+    const float _e86 = ms_dielectric_f_transmission(d_8, wo_26, wi_35, wm_15, _e83, etap_6, t_9);
     const bool _e87 = ms_usable(pdf_2);
     if (!(!(_e87))) {
         local_25 = !((_e86 <= 3.4028235e38));
@@ -1897,7 +1897,7 @@ MsBsdfSample ms_dielectric_sample(MsDielectric d_8, float3 wo_26, float uc_2, fl
         const MsBsdfSample msbsdfsample_20 = none_3;
         return msbsdfsample_20;
     }
-    const MsBsdfSample msbsdfsample_21 = ConstructMsBsdfSample(wi_29, pdf_2, (_e86).xxx, 5u, etap_6);
+    const MsBsdfSample msbsdfsample_21 = ConstructMsBsdfSample(wi_35, pdf_2, (_e86).xxx, 5u, etap_6);
     return msbsdfsample_21;
 }
 
@@ -1972,6 +1972,306 @@ float3 ms_conductor_eval_turquin(MsConductor c_8, float3 wo_28, float3 wi_25, fl
     const float3 _e5 = ms_conductor_eval(c_8, wo_28, wi_25);
     const float3 _e6 = ms_turquin_scale(e_o_3, f0_3);
     return (_e5 * _e6);
+}
+
+float ms_kulla_conty_p_ms(float e_o_4)
+{
+    return clamp((1.0 - e_o_4), 0.0, 1.0);
+}
+
+float ms_cosine_pdf_same_side(float3 wo_29, float3 wi_26)
+{
+    if (!(((wo_29.z * wi_26.z) > 0.0))) {
+        return 0.0;
+    }
+    return (abs(wi_26.z) / MS_PI);
+}
+
+float ms_conductor_pdf_kulla_conty(MsConductor c_9, float3 wo_30, float3 wi_27, float e_o_5)
+{
+    const float _e4 = ms_kulla_conty_p_ms(e_o_5);
+    const float _e7 = ms_conductor_pdf(c_9, wo_30, wi_27);
+    const float _e9 = ms_cosine_pdf_same_side(wo_30, wi_27);
+    return (((1.0 - _e4) * _e7) + (_e4 * _e9));
+}
+
+float3 ms_cosine_hemisphere(float2 u_14)
+{
+    float r_13 = sqrt(u_14.x);
+    const float2 _e4 = ms_cos_sin_turn(u_14.y);
+    return float3((r_13 * _e4.x), (r_13 * _e4.y), sqrt(max((1.0 - u_14.x), 0.0)));
+}
+
+MsBsdfSample ms_conductor_sample_kulla_conty(MsConductor c_10, float3 wo_31, float uc_3, float2 u_15, float e_o_6)
+{
+    float3 wi_28 = (float3)0;
+    bool local_26 = (bool)0;
+
+    MsBsdfSample none_4 = ConstructMsBsdfSample((0.0).xxx, 0.0, (0.0).xxx, 0u, 1.0);
+    const bool _e14 = ms_on_horizon(wo_31.z);
+    if (_e14) {
+        const MsBsdfSample msbsdfsample_22 = none_4;
+        return msbsdfsample_22;
+    }
+    const float _e15 = ms_kulla_conty_p_ms(e_o_6);
+    if ((uc_3 < _e15)) {
+        const float3 _e18 = ms_cosine_hemisphere(u_15);
+        wi_28 = _e18;
+        if ((wo_31.z < 0.0)) {
+            float _e24 = wi_28.z;
+            wi_28.z = -(_e24);
+        }
+    } else {
+        const MsBsdfSample _e30 = ms_conductor_sample(c_10, wo_31, ((uc_3 - _e15) / (1.0 - _e15)), u_15);
+        if (!(((_e30.flags & MS_SAMPLE_VALID) == 0u))) {
+            local_26 = ((_e30.flags & MS_SAMPLE_SPECULAR) != 0u);
+        } else {
+            local_26 = true;
+        }
+        bool _e45 = local_26;
+        if (_e45) {
+            const MsBsdfSample msbsdfsample_23 = _e30;
+            return msbsdfsample_23;
+        }
+        wi_28 = _e30.wi;
+    }
+    float3 _e47 = wi_28;
+    const float _e48 = ms_conductor_pdf_kulla_conty(c_10, wo_31, _e47, e_o_6);
+    const bool _e49 = ms_usable(_e48);
+    if (!(_e49)) {
+        const MsBsdfSample msbsdfsample_24 = none_4;
+        return msbsdfsample_24;
+    }
+    float3 _e51 = wi_28;
+    float3 _e52 = wi_28;
+    const float3 _e53 = ms_conductor_eval(c_10, wo_31, _e52);
+    const MsBsdfSample msbsdfsample_25 = ConstructMsBsdfSample(_e51, _e48, _e53, MS_SAMPLE_VALID, 1.0);
+    return msbsdfsample_25;
+}
+
+MsBsdfSample ms_kulla_conty_sample_f(MsBsdfSample s_3, float3 wo_32, float e_o_7, float e_i_2, float e_avg_3, float3 f_ms_1)
+{
+    bool local_27 = (bool)0;
+    bool local_28 = (bool)0;
+
+    if (!(((s_3.flags & MS_SAMPLE_VALID) == 0u))) {
+        local_27 = ((s_3.flags & MS_SAMPLE_SPECULAR) != 0u);
+    } else {
+        local_27 = true;
+    }
+    bool _e20 = local_27;
+    if (!(_e20)) {
+        local_28 = !(((wo_32.z * s_3.wi.z) > 0.0));
+    } else {
+        local_28 = true;
+    }
+    bool _e32 = local_28;
+    if (_e32) {
+        const MsBsdfSample msbsdfsample_26 = s_3;
+        return msbsdfsample_26;
+    }
+    const float _e36 = ms_kulla_conty_lobe(e_o_7, e_i_2, e_avg_3);
+    const MsBsdfSample msbsdfsample_27 = ConstructMsBsdfSample(s_3.wi, s_3.pdf, (s_3.f + (_e36 * f_ms_1)), s_3.flags, s_3.eta);
+    return msbsdfsample_27;
+}
+
+MsBsdfSample ms_conductor_sample_turquin(MsConductor c_11, float3 wo_33, float uc_4, float2 u_16, float e_o_8, float3 f0_4)
+{
+    bool local_29 = (bool)0;
+
+    const MsBsdfSample _e6 = ms_conductor_sample(c_11, wo_33, uc_4, u_16);
+    if (!(((_e6.flags & MS_SAMPLE_VALID) == 0u))) {
+        local_29 = ((_e6.flags & MS_SAMPLE_SPECULAR) != 0u);
+    } else {
+        local_29 = true;
+    }
+    bool _e21 = local_29;
+    if (_e21) {
+        const MsBsdfSample msbsdfsample_28 = _e6;
+        return msbsdfsample_28;
+    }
+    const float3 _e23 = ms_turquin_scale(e_o_8, f0_4);
+    float3 f_5 = (_e6.f * _e23);
+    if (!(all((f_5 <= (3.4028235e38).xxx)))) {
+        const MsBsdfSample msbsdfsample_29 = ConstructMsBsdfSample((0.0).xxx, 0.0, (0.0).xxx, 0u, 1.0);
+        return msbsdfsample_29;
+    }
+    const MsBsdfSample msbsdfsample_30 = ConstructMsBsdfSample(_e6.wi, _e6.pdf, f_5, _e6.flags, _e6.eta);
+    return msbsdfsample_30;
+}
+
+uint ms_lut_index3_(uint ie, uint ir_1, uint im_1, uint n_r, uint n_mu_1)
+{
+    return ((((ie * n_r) + ir_1) * n_mu_1) + im_1);
+}
+
+float ms_lut_eta_coord(float eta_4)
+{
+    return sqrt((max((eta_4 - 1.0), 0.0) * 0.5));
+}
+
+float ms_lut_trilerp(MsLutTap e, MsLutTap r_1, MsLutTap m_4, float4 lo_2, float4 hi_2)
+{
+    float s_4 = 0.0;
+    uint b_4 = 0u;
+
+    float2 we = float2((1.0 - e.f), e.f);
+    float2 wr = float2((1.0 - r_1.f), r_1.f);
+    float2 wm_16 = float2((1.0 - m_4.f), m_4.f);
+    uint2 loop_bound_1 = uint2(4294967295u, 4294967295u);
+    bool loop_init_1 = true;
+    while(true) {
+        if (all(loop_bound_1 == uint2(0u, 0u))) { break; }
+        loop_bound_1 -= uint2(loop_bound_1.y == 0u, 1u);
+        if (!loop_init_1) {
+            uint _e59 = b_4;
+            b_4 = (_e59 + 1u);
+        }
+        loop_init_1 = false;
+        uint _e24 = b_4;
+        if ((_e24 < 8u)) {
+        } else {
+            break;
+        }
+        {
+            uint _e27 = b_4;
+            uint _e31 = b_4;
+            uint _e35 = b_4;
+            float v_6 = ((_e35 >= 4u) ? hi_2[min(uint((_e31 & 3u)), 3u)] : lo_2[min(uint((_e27 & 3u)), 3u)]);
+            float _e39 = s_4;
+            uint _e40 = b_4;
+            uint _e44 = b_4;
+            uint _e51 = b_4;
+            s_4 = (_e39 + (((we[min(uint((_e40 & 1u)), 1u)] * wr[min(uint(((_e44 >> 1u) & 1u)), 1u)]) * wm_16[min(uint((_e51 >> 2u)), 1u)]) * v_6));
+        }
+    }
+    float _e61 = s_4;
+    return _e61;
+}
+
+float ms_lut_bilerp_eta(MsLutTap e_1, MsLutTap r_2, float4 v_5)
+{
+    float s_5 = 0.0;
+    uint b_5 = 0u;
+
+    float2 we_1 = float2((1.0 - e_1.f), e_1.f);
+    float2 wr_1 = float2((1.0 - r_2.f), r_2.f);
+    uint2 loop_bound_2 = uint2(4294967295u, 4294967295u);
+    bool loop_init_2 = true;
+    while(true) {
+        if (all(loop_bound_2 == uint2(0u, 0u))) { break; }
+        loop_bound_2 -= uint2(loop_bound_2.y == 0u, 1u);
+        if (!loop_init_2) {
+            uint _e35 = b_5;
+            b_5 = (_e35 + 1u);
+        }
+        loop_init_2 = false;
+        uint _e17 = b_5;
+        if ((_e17 < 4u)) {
+        } else {
+            break;
+        }
+        {
+            float _e20 = s_5;
+            uint _e21 = b_5;
+            uint _e25 = b_5;
+            uint _e30 = b_5;
+            s_5 = (_e20 + ((we_1[min(uint((_e21 & 1u)), 1u)] * wr_1[min(uint((_e25 >> 1u)), 1u)]) * v_5[min(uint(_e30), 3u)]));
+        }
+    }
+    float _e37 = s_5;
+    return _e37;
+}
+
+float2 ms_dielectric_kulla_conty_k(float eta_5, float f_avg_1, float2 e_avg_4)
+{
+    float2 k_3 = (float2)0;
+
+    float k_out = (1.0 - f_avg_1);
+    k_3 = float2(k_out, ((k_out * (1.0 - e_avg_4.x)) / ((eta_5 * eta_5) * (1.0 - e_avg_4.y))));
+    float _e18 = k_3.y;
+    if (!((_e18 <= 1.0))) {
+        float2 _e22 = k_3;
+        float _e24 = k_3.y;
+        float _e28 = k_3.y;
+        k_3 = (_e22 * ((_e28 > 1.0) ? (1.0 / _e24) : 0.0));
+    }
+    float2 _e34 = k_3;
+    return _e34;
+}
+
+float ms_dielectric_kulla_conty_lobe(MsDielectric d_9, float3 wo_34, float3 wi_29, float e_o_9, float e_i_3, float e_avg_i, float k_o)
+{
+    bool local_30 = (bool)0;
+    bool local_31 = (bool)0;
+    float f_3 = (float)0;
+    bool local_32 = (bool)0;
+
+    if ((abs(wo_34.z) > 0.0)) {
+        local_30 = (abs(wi_29.z) > 0.0);
+    } else {
+        local_30 = false;
+    }
+    bool _e18 = local_30;
+    if (!(_e18)) {
+        return 0.0;
+    }
+    float lost = (1.0 - e_o_9);
+    bool crossed = ((wi_29.z < 0.0) != (wo_34.z < 0.0));
+    float share = (crossed ? k_o : (1.0 - k_o));
+    float den_4 = (MS_PI * (1.0 - e_avg_i));
+    if ((den_4 > 0.0)) {
+        local_31 = (lost > 0.0);
+    } else {
+        local_31 = false;
+    }
+    bool _e44 = local_31;
+    if (!(_e44)) {
+        return 0.0;
+    }
+    f_3 = (((share * lost) * max((1.0 - e_i_3), 0.0)) / den_4);
+    if (crossed) {
+        local_32 = (d_9.transport == MS_TRANSPORT_RADIANCE);
+    } else {
+        local_32 = false;
+    }
+    bool _e61 = local_32;
+    if (_e61) {
+        float etap_7 = ((wo_34.z > 0.0) ? d_9.eta : (1.0 / d_9.eta));
+        float _e70 = f_3;
+        f_3 = (_e70 / (etap_7 * etap_7));
+    }
+    float _e73 = f_3;
+    return _e73;
+}
+
+float ms_dielectric_eval_kulla_conty(MsDielectric d_10, float3 wo_35, float3 wi_30, float e_o_10, float e_i_4, float e_avg_i_1, float k_o_1)
+{
+    const float _e7 = ms_dielectric_eval(d_10, wo_35, wi_30);
+    const bool _e8 = ms_dielectric_smooth(d_10);
+    if (_e8) {
+        return _e7;
+    }
+    const float _e9 = ms_dielectric_kulla_conty_lobe(d_10, wo_35, wi_30, e_o_10, e_i_4, e_avg_i_1, k_o_1);
+    return (_e7 + _e9);
+}
+
+float ms_dielectric_eval_turquin(MsDielectric d_11, float3 wo_36, float3 wi_31, float e_o_11)
+{
+    bool local_33 = (bool)0;
+
+    const float _e4 = ms_dielectric_eval(d_11, wo_36, wi_31);
+    const bool _e5 = ms_dielectric_smooth(d_11);
+    if (!(_e5)) {
+        local_33 = !((e_o_11 > 0.0));
+    } else {
+        local_33 = true;
+    }
+    bool _e13 = local_33;
+    if (_e13) {
+        return _e4;
+    }
+    return (_e4 / e_o_11);
 }
 
 uint naga_div(uint lhs, uint rhs) {
@@ -2058,18 +2358,18 @@ void ms_k_ggx_eval(uint3 id : SV_DispatchThreadID, uint3 groups : SV_GroupID)
     float4 _e12 = asfloat(ms_in.Load4((_e2 * MS_K_IN)*16));
     float2 a_14 = _e12.xy;
     float4 _e20 = asfloat(ms_in.Load4(((_e2 * MS_K_IN) + 1u)*16));
-    float3 wo_29 = _e20.xyz;
+    float3 wo_37 = _e20.xyz;
     float4 _e28 = asfloat(ms_in.Load4(((_e2 * MS_K_IN) + 2u)*16));
-    float3 wm_16 = _e28.xyz;
-    const float _e34 = ms_ggx_d(wm_16, a_14);
-    const float _e35 = ms_ggx_lambda(wo_29, a_14);
-    const float _e36 = ms_ggx_g1_(wo_29, a_14);
-    const float _e37 = ms_ggx_g2_(wo_29, wm_16, a_14);
+    float3 wm_17 = _e28.xyz;
+    const float _e34 = ms_ggx_d(wm_17, a_14);
+    const float _e35 = ms_ggx_lambda(wo_37, a_14);
+    const float _e36 = ms_ggx_g1_(wo_37, a_14);
+    const float _e37 = ms_ggx_g2_(wo_37, wm_17, a_14);
     ms_out.Store4((_e2 * MS_K_OUT)*16, asuint(float4(_e34, _e35, _e36, _e37)));
-    const float _e45 = ms_ggx_g2_separable(wo_29, wm_16, a_14);
-    const float _e46 = ms_ggx_pdf(wo_29, wm_16, a_14);
-    const float _e47 = ms_ggx_pdf_dcos(wm_16, a_14);
-    const float _e48 = ms_ggx_pdf_bounded(wo_29, wm_16, a_14);
+    const float _e45 = ms_ggx_g2_separable(wo_37, wm_17, a_14);
+    const float _e46 = ms_ggx_pdf(wo_37, wm_17, a_14);
+    const float _e47 = ms_ggx_pdf_dcos(wm_17, a_14);
+    const float _e48 = ms_ggx_pdf_bounded(wo_37, wm_17, a_14);
     ms_out.Store4(((_e2 * MS_K_OUT) + 1u)*16, asuint(float4(_e45, _e46, _e47, _e48)));
     return;
 }
@@ -2084,18 +2384,18 @@ void ms_k_beckmann_eval(uint3 id_1 : SV_DispatchThreadID, uint3 groups_1 : SV_Gr
     float4 _e12 = asfloat(ms_in.Load4((_e2 * MS_K_IN)*16));
     float2 a_15 = _e12.xy;
     float4 _e20 = asfloat(ms_in.Load4(((_e2 * MS_K_IN) + 1u)*16));
-    float3 wo_30 = _e20.xyz;
+    float3 wo_38 = _e20.xyz;
     float4 _e28 = asfloat(ms_in.Load4(((_e2 * MS_K_IN) + 2u)*16));
-    float3 wm_17 = _e28.xyz;
-    const float _e34 = ms_beckmann_d(wm_17, a_15);
-    const float _e35 = ms_beckmann_lambda(wo_30, a_15);
-    const float _e36 = ms_beckmann_g1_(wo_30, a_15);
-    const float _e37 = ms_beckmann_g2_(wo_30, wm_17, a_15);
+    float3 wm_18 = _e28.xyz;
+    const float _e34 = ms_beckmann_d(wm_18, a_15);
+    const float _e35 = ms_beckmann_lambda(wo_38, a_15);
+    const float _e36 = ms_beckmann_g1_(wo_38, a_15);
+    const float _e37 = ms_beckmann_g2_(wo_38, wm_18, a_15);
     ms_out.Store4((_e2 * MS_K_OUT)*16, asuint(float4(_e34, _e35, _e36, _e37)));
-    const float _e45 = ms_beckmann_g2_separable(wo_30, wm_17, a_15);
-    const float _e46 = ms_beckmann_pdf(wo_30, wm_17, a_15);
-    const float _e47 = ms_beckmann_pdf_dcos(wm_17, a_15);
-    const float _e50 = ms_pdf(ConstructMsMicrofacet(MS_NDF_BECKMANN, a_15), wo_30, wm_17);
+    const float _e45 = ms_beckmann_g2_separable(wo_38, wm_18, a_15);
+    const float _e46 = ms_beckmann_pdf(wo_38, wm_18, a_15);
+    const float _e47 = ms_beckmann_pdf_dcos(wm_18, a_15);
+    const float _e50 = ms_pdf(ConstructMsMicrofacet(MS_NDF_BECKMANN, a_15), wo_38, wm_18);
     ms_out.Store4(((_e2 * MS_K_OUT) + 1u)*16, asuint(float4(_e45, _e46, _e47, _e50)));
     return;
 }
@@ -2109,8 +2409,8 @@ void ms_k_beckmann_sample(uint3 id_2 : SV_DispatchThreadID, uint3 groups_2 : SV_
     }
     float4 r0_2 = asfloat(ms_in.Load4((_e2 * MS_K_IN)*16));
     float4 _e19 = asfloat(ms_in.Load4(((_e2 * MS_K_IN) + 1u)*16));
-    float3 wo_31 = _e19.xyz;
-    const MsSample _e25 = ms_sample(ConstructMsMicrofacet(MS_NDF_BECKMANN, r0_2.xy), wo_31, r0_2.zw);
+    float3 wo_39 = _e19.xyz;
+    const MsSample _e25 = ms_sample(ConstructMsMicrofacet(MS_NDF_BECKMANN, r0_2.xy), wo_39, r0_2.zw);
     const MsSample _e28 = ms_beckmann_sample_dcos(r0_2.xy, r0_2.zw);
     ms_out.Store4((_e2 * MS_K_OUT)*16, asuint(float4(_e25.wm, _e25.pdf)));
     ms_out.Store4(((_e2 * MS_K_OUT) + 1u)*16, asuint(float4(_e28.wm, _e28.pdf)));
@@ -2126,8 +2426,8 @@ void ms_k_ggx_sample(uint3 id_3 : SV_DispatchThreadID, uint3 groups_3 : SV_Group
     }
     float4 r0_3 = asfloat(ms_in.Load4((_e2 * MS_K_IN)*16));
     float4 _e19 = asfloat(ms_in.Load4(((_e2 * MS_K_IN) + 1u)*16));
-    float3 wo_32 = _e19.xyz;
-    const MsSample _e23 = ms_ggx_sample(wo_32, r0_3.xy, r0_3.zw);
+    float3 wo_40 = _e19.xyz;
+    const MsSample _e23 = ms_ggx_sample(wo_40, r0_3.xy, r0_3.zw);
     const MsSample _e26 = ms_ggx_sample_dcos(r0_3.xy, r0_3.zw);
     ms_out.Store4((_e2 * MS_K_OUT)*16, asuint(float4(_e23.wm, _e23.pdf)));
     ms_out.Store4(((_e2 * MS_K_OUT) + 1u)*16, asuint(float4(_e26.wm, _e26.pdf)));
@@ -2143,12 +2443,12 @@ void ms_k_ggx_bounded(uint3 id_4 : SV_DispatchThreadID, uint3 groups_4 : SV_Grou
     }
     float4 r0_4 = asfloat(ms_in.Load4((_e2 * MS_K_IN)*16));
     float4 _e19 = asfloat(ms_in.Load4(((_e2 * MS_K_IN) + 1u)*16));
-    float3 wo_33 = _e19.xyz;
+    float3 wo_41 = _e19.xyz;
     float4 _e27 = asfloat(ms_in.Load4(((_e2 * MS_K_IN) + 2u)*16));
-    float3 wi_30 = _e27.xyz;
-    const MsSample _e31 = ms_ggx_sample_bounded(wo_33, r0_4.xy, r0_4.zw);
+    float3 wi_36 = _e27.xyz;
+    const MsSample _e31 = ms_ggx_sample_bounded(wo_41, r0_4.xy, r0_4.zw);
     ms_out.Store4((_e2 * MS_K_OUT)*16, asuint(float4(_e31.wm, _e31.pdf)));
-    const float _e46 = ms_ggx_pdf_bounded_reflection(wo_33, wi_30, r0_4.xy);
+    const float _e46 = ms_ggx_pdf_bounded_reflection(wo_41, wi_36, r0_4.xy);
     ms_out.Store4(((_e2 * MS_K_OUT) + 1u)*16, asuint(float4(_e46, 0.0, 0.0, 0.0)));
     return;
 }
@@ -2160,15 +2460,15 @@ void ms_k_fresnel(uint3 id_5 : SV_DispatchThreadID, uint3 groups_5 : SV_GroupID)
     if ((_e2 == naga_div(((NagaBufferLength(ms_in) - 0) / 16), MS_K_IN))) {
         return;
     }
-    float c_13 = asfloat(ms_in.Load(8+((_e2 * MS_K_IN) + 1u)*16));
+    float c_16 = asfloat(ms_in.Load(8+((_e2 * MS_K_IN) + 1u)*16));
     const MsConductor _e16 = ms_k_conductor(_e2);
     MsFresnel fr_2 = _e16.fresnel;
-    const float _e24 = ms_fresnel_dielectric(c_13, fr_2.a.x);
-    const float _e29 = ms_fresnel_conductor(c_13, fr_2.a.x, fr_2.b.x);
-    const float _e32 = ms_fresnel_schlick(c_13, fr_2.a.x);
-    const float _e37 = ms_fresnel_f82_tint(c_13, fr_2.a.x, fr_2.b.x);
+    const float _e24 = ms_fresnel_dielectric(c_16, fr_2.a.x);
+    const float _e29 = ms_fresnel_conductor(c_16, fr_2.a.x, fr_2.b.x);
+    const float _e32 = ms_fresnel_schlick(c_16, fr_2.a.x);
+    const float _e37 = ms_fresnel_f82_tint(c_16, fr_2.a.x, fr_2.b.x);
     ms_out.Store4((_e2 * MS_K_OUT)*16, asuint(float4(_e24, _e29, _e32, _e37)));
-    const float3 _e45 = ms_fresnel_eval(fr_2, c_13);
+    const float3 _e45 = ms_fresnel_eval(fr_2, c_16);
     ms_out.Store4(((_e2 * MS_K_OUT) + 1u)*16, asuint(float4(_e45, 0.0)));
     return;
 }
@@ -2182,13 +2482,13 @@ void ms_k_conductor_eval(uint3 id_6 : SV_DispatchThreadID, uint3 groups_6 : SV_G
     }
     const MsConductor _e8 = ms_k_conductor(_e2);
     float4 _e15 = asfloat(ms_in.Load4(((_e2 * MS_K_IN) + 1u)*16));
-    float3 wo_34 = _e15.xyz;
+    float3 wo_42 = _e15.xyz;
     float4 _e23 = asfloat(ms_in.Load4(((_e2 * MS_K_IN) + 2u)*16));
-    float3 wi_31 = _e23.xyz;
-    const float3 _e29 = ms_conductor_eval(_e8, wo_34, wi_31);
-    const float _e30 = ms_conductor_pdf(_e8, wo_34, wi_31);
+    float3 wi_37 = _e23.xyz;
+    const float3 _e29 = ms_conductor_eval(_e8, wo_42, wi_37);
+    const float _e30 = ms_conductor_pdf(_e8, wo_42, wi_37);
     ms_out.Store4((_e2 * MS_K_OUT)*16, asuint(float4(_e29, _e30)));
-    const float4 _e38 = ms_conductor_eval_pdf(_e8, wo_34, wi_31);
+    const float4 _e38 = ms_conductor_eval_pdf(_e8, wo_42, wi_37);
     ms_out.Store4(((_e2 * MS_K_OUT) + 1u)*16, asuint(_e38));
     return;
 }
@@ -2218,11 +2518,11 @@ void ms_k_dielectric_eval(uint3 id_8 : SV_DispatchThreadID, uint3 groups_8 : SV_
     }
     const MsDielectric _e8 = ms_k_dielectric(_e2);
     float4 _e15 = asfloat(ms_in.Load4(((_e2 * MS_K_IN) + 1u)*16));
-    float3 wo_35 = _e15.xyz;
+    float3 wo_43 = _e15.xyz;
     float4 _e23 = asfloat(ms_in.Load4(((_e2 * MS_K_IN) + 2u)*16));
-    float3 wi_32 = _e23.xyz;
-    const float _e29 = ms_dielectric_eval(_e8, wo_35, wi_32);
-    const float _e30 = ms_dielectric_pdf(_e8, wo_35, wi_32);
+    float3 wi_38 = _e23.xyz;
+    const float _e29 = ms_dielectric_eval(_e8, wo_43, wi_38);
+    const float _e30 = ms_dielectric_pdf(_e8, wo_43, wi_38);
     ms_out.Store4((_e2 * MS_K_OUT)*16, asuint(float4(_e29, _e30, 0.0, 0.0)));
     ms_out.Store4(((_e2 * MS_K_OUT) + 1u)*16, asuint((0.0).xxxx));
     return;

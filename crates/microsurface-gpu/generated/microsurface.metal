@@ -112,34 +112,34 @@ int naga_f2i32(float value) {
 metal::float2 ms_cos_sin_turn(
     float v
 ) {
-    float k_3 = metal::rint(4.0 * v);
-    float r_1 = v - (0.25 * k_3);
-    float x_5 = MS_TAU * r_1;
+    float k_4 = metal::rint(4.0 * v);
+    float r_3 = v - (0.25 * k_4);
+    float x_5 = MS_TAU * r_3;
     float x2_ = x_5 * x_5;
-    float s_3 = x_5 * (1.0 + (x2_ * (-0.16666667 + (x2_ * (0.008333333 + (x2_ * (-0.0001984127 + (x2_ * 0.0000027557319))))))));
-    float c_9 = 1.0 + (x2_ * (-0.5 + (x2_ * (0.041666668 + (x2_ * (-0.0013888889 + (x2_ * (0.000024801588 + (x2_ * -0.0000002755732)))))))));
-    int q = naga_f2i32(k_3) & 3;
+    float s_6 = x_5 * (1.0 + (x2_ * (-0.16666667 + (x2_ * (0.008333333 + (x2_ * (-0.0001984127 + (x2_ * 0.0000027557319))))))));
+    float c_12 = 1.0 + (x2_ * (-0.5 + (x2_ * (0.041666668 + (x2_ * (-0.0013888889 + (x2_ * (0.000024801588 + (x2_ * -0.0000002755732)))))))));
+    int q = naga_f2i32(k_4) & 3;
     if (q == 0) {
-        return metal::float2(c_9, s_3);
+        return metal::float2(c_12, s_6);
     } else {
         if (q == 1) {
-            return metal::float2(-(s_3), c_9);
+            return metal::float2(-(s_6), c_12);
         } else {
             if (q == 2) {
-                return metal::float2(-(c_9), -(s_3));
+                return metal::float2(-(c_12), -(s_6));
             }
         }
     }
-    return metal::float2(s_3, -(c_9));
+    return metal::float2(s_6, -(c_12));
 }
 
 metal::float3 ms_rescaled(
     metal::float3 a
 ) {
     bool local = {};
-    float m_4 = metal::max(metal::abs(a.x), metal::max(metal::abs(a.y), metal::abs(a.z)));
-    if (m_4 > 0.0) {
-        local = m_4 <= 340282350000000000000000000000000000000.0;
+    float m_5 = metal::max(metal::abs(a.x), metal::max(metal::abs(a.y), metal::abs(a.z)));
+    if (m_5 > 0.0) {
+        local = m_5 <= 340282350000000000000000000000000000000.0;
     } else {
         local = false;
     }
@@ -147,7 +147,7 @@ metal::float3 ms_rescaled(
     if (!(_e16)) {
         return a;
     }
-    return a / metal::float3(m_4);
+    return a / metal::float3(m_5);
 }
 
 float ms_dot(
@@ -184,9 +184,9 @@ metal::float3 ms_unit(
     if (metal::abs(_e1 - 1.0) <= 0.000001) {
         return w;
     }
-    float m_5 = metal::max(metal::abs(w.x), metal::max(metal::abs(w.y), metal::abs(w.z)));
-    if (m_5 > 0.0) {
-        local_2 = m_5 <= 340282350000000000000000000000000000000.0;
+    float m_6 = metal::max(metal::abs(w.x), metal::max(metal::abs(w.y), metal::abs(w.z)));
+    if (m_6 > 0.0) {
+        local_2 = m_6 <= 340282350000000000000000000000000000000.0;
     } else {
         local_2 = false;
     }
@@ -194,7 +194,7 @@ metal::float3 ms_unit(
     if (!(_e22)) {
         return w;
     }
-    metal::float3 _e27 = ms_normalize(w * (1.0 / m_5));
+    metal::float3 _e27 = ms_normalize(w * (1.0 / m_6));
     return _e27;
 }
 
@@ -212,13 +212,13 @@ metal::float3 ms_unit_normal(
     if (_e9) {
         return v_1 * (1.0 / metal::sqrt(_e1));
     }
-    float m_6 = metal::max(metal::abs(v_1.x), metal::max(metal::abs(v_1.y), metal::abs(v_1.z)));
-    if (m_6 == 0.0) {
+    float m_7 = metal::max(metal::abs(v_1.x), metal::max(metal::abs(v_1.y), metal::abs(v_1.z)));
+    if (m_7 == 0.0) {
         return metal::float3(0.0, 0.0, 1.0);
     }
-    metal::float3 s_4 = v_1 / metal::float3(m_6);
-    float _e30 = ms_dot(s_4, s_4);
-    return s_4 * (1.0 / metal::sqrt(_e30));
+    metal::float3 s_7 = v_1 / metal::float3(m_7);
+    float _e30 = ms_dot(s_7, s_7);
+    return s_7 * (1.0 / metal::sqrt(_e30));
 }
 
 metal::float3 ms_reflect(
@@ -240,11 +240,11 @@ metal::float3 ms_half_vector_reflection(
     metal::float3 wo_1,
     metal::float3 wi
 ) {
-    metal::float3 s_5 = wo_1 + wi;
-    if (!((metal::max(metal::abs(s_5.x), metal::max(metal::abs(s_5.y), metal::abs(s_5.z))) > 0.0))) {
+    metal::float3 s_8 = wo_1 + wi;
+    if (!((metal::max(metal::abs(s_8.x), metal::max(metal::abs(s_8.y), metal::abs(s_8.z))) > 0.0))) {
         return metal::float3(0.0);
     }
-    metal::float3 _e16 = ms_normalize(s_5);
+    metal::float3 _e16 = ms_normalize(s_8);
     if (_e16.z < 0.0) {
         return -(_e16);
     }
@@ -282,8 +282,8 @@ metal::float3 ms_facing(
     float _e21 = ms_dot(_e12, _e12);
     metal::float3 wu = (_e19 * _e12) / metal::float3(metal::sqrt(_e21));
     float _e25 = ms_dot(m_1, wu);
-    float e = _e25 - 0.0000008;
-    metal::float3 _e30 = ms_unit_normal(m_1 - (e * wu));
+    float e_2 = _e25 - 0.0000008;
+    metal::float3 _e30 = ms_unit_normal(m_1 - (e_2 * wu));
     return _e30;
 }
 
@@ -407,31 +407,31 @@ float ms_fresnel_dielectric(
         eta_2 = 1.0 / _e9;
     }
     float _e12 = cos_i_1;
-    float c_10 = metal::min(_e12, 1.0);
+    float c_13 = metal::min(_e12, 1.0);
     float _e15 = eta_2;
     if (_e15 == 1.0) {
         return 0.0;
     }
-    if (c_10 == 0.0) {
+    if (c_13 == 0.0) {
         return 1.0;
     }
     float _e24 = eta_2;
     if (_e24 > 1000000000000000000.0) {
         float _e27 = eta_2;
-        float e_1 = 1.0 / _e27;
-        float cos_t_1 = metal::sqrt(((1.0 - e_1) * (1.0 + e_1)) + ((c_10 * e_1) * (c_10 * e_1)));
-        r_parl = (c_10 - (e_1 * cos_t_1)) / (c_10 + (e_1 * cos_t_1));
-        r_perp = ((e_1 * c_10) - cos_t_1) / ((e_1 * c_10) + cos_t_1);
+        float e_3 = 1.0 / _e27;
+        float cos_t_1 = metal::sqrt(((1.0 - e_3) * (1.0 + e_3)) + ((c_13 * e_3) * (c_13 * e_3)));
+        r_parl = (c_13 - (e_3 * cos_t_1)) / (c_13 + (e_3 * cos_t_1));
+        r_perp = ((e_3 * c_13) - cos_t_1) / ((e_3 * c_13) + cos_t_1);
     } else {
         float _e51 = eta_2;
         if (_e51 > 1.0) {
             float _e54 = eta_2;
             float _e57 = eta_2;
-            ect2_ = ((_e54 - 1.0) * (_e57 + 1.0)) + (c_10 * c_10);
+            ect2_ = ((_e54 - 1.0) * (_e57 + 1.0)) + (c_13 * c_13);
         } else {
             float _e63 = eta_2;
             float _e64 = eta_2;
-            ect2_ = (_e63 * _e64) - ((1.0 - c_10) * (1.0 + c_10));
+            ect2_ = (_e63 * _e64) - ((1.0 - c_13) * (1.0 + c_13));
         }
         float _e72 = ect2_;
         if (_e72 <= 0.0) {
@@ -441,9 +441,9 @@ float ms_fresnel_dielectric(
         float ect = metal::sqrt(_e76);
         float _e78 = eta_2;
         float _e79 = eta_2;
-        float e2c = (_e78 * _e79) * c_10;
+        float e2c = (_e78 * _e79) * c_13;
         r_parl = (e2c - ect) / (e2c + ect);
-        r_perp = (c_10 - ect) / (c_10 + ect);
+        r_perp = (c_13 - ect) / (c_13 + ect);
     }
     float _e88 = r_parl;
     float _e89 = r_parl;
@@ -469,17 +469,17 @@ float ms_cnorm_ratio(
     metal::float2 a_6,
     metal::float2 b_3
 ) {
-    float s_6 = metal::max(metal::max(metal::abs(a_6.x), metal::abs(a_6.y)), metal::max(metal::abs(b_3.x), metal::abs(b_3.y)));
-    if (s_6 == 0.0) {
+    float s_9 = metal::max(metal::max(metal::abs(a_6.x), metal::abs(a_6.y)), metal::max(metal::abs(b_3.x), metal::abs(b_3.y)));
+    if (s_9 == 0.0) {
         return 0.0;
     }
-    if (!((s_6 <= 340282350000000000000000000000000000000.0))) {
+    if (!((s_9 <= 340282350000000000000000000000000000000.0))) {
         float _e19 = ms_cnorm(a_6);
         float _e20 = ms_cnorm(b_3);
         return _e19 / _e20;
     }
-    float _e24 = ms_cnorm(a_6 / metal::float2(s_6));
-    float _e27 = ms_cnorm(b_3 / metal::float2(s_6));
+    float _e24 = ms_cnorm(a_6 / metal::float2(s_9));
+    float _e27 = ms_cnorm(b_3 / metal::float2(s_9));
     return _e24 / _e27;
 }
 
@@ -487,13 +487,13 @@ metal::float2 ms_crecip(
     metal::float2 a_7
 ) {
     if (metal::abs(a_7.x) >= metal::abs(a_7.y)) {
-        float r_2 = a_7.y / a_7.x;
-        float d_9 = a_7.x + (a_7.y * r_2);
-        return metal::float2(1.0 / d_9, -(r_2) / d_9);
+        float r_4 = a_7.y / a_7.x;
+        float d_12 = a_7.x + (a_7.y * r_4);
+        return metal::float2(1.0 / d_12, -(r_4) / d_12);
     }
-    float r_3 = a_7.x / a_7.y;
-    float d_10 = (a_7.x * r_3) + a_7.y;
-    return metal::float2(r_3 / d_10, -1.0 / d_10);
+    float r_5 = a_7.x / a_7.y;
+    float d_13 = (a_7.x * r_5) + a_7.y;
+    return metal::float2(r_5 / d_13, -1.0 / d_13);
 }
 
 metal::float2 ms_csqrt(
@@ -501,11 +501,11 @@ metal::float2 ms_csqrt(
 ) {
     float s_1 = {};
     float _e1 = ms_cnorm(a_8);
-    float r_4 = metal::sqrt(_e1);
-    if (r_4 == 0.0) {
+    float r_6 = metal::sqrt(_e1);
+    if (r_6 == 0.0) {
         return metal::float2(0.0);
     }
-    float t_3 = metal::sqrt((r_4 + metal::abs(a_8.x)) * 0.5);
+    float t_3 = metal::sqrt((r_6 + metal::abs(a_8.x)) * 0.5);
     if (a_8.x >= 0.0) {
         return metal::float2(t_3, a_8.y / (t_3 + t_3));
     }
@@ -581,9 +581,9 @@ float ms_fresnel_schlick(
     float cos_i_2,
     float f0_
 ) {
-    float m_7 = 1.0 - metal::min(metal::max(cos_i_2, 0.0), 1.0);
-    float m2_ = m_7 * m_7;
-    return f0_ + ((1.0 - f0_) * ((m2_ * m2_) * m_7));
+    float m_8 = 1.0 - metal::min(metal::max(cos_i_2, 0.0), 1.0);
+    float m2_ = m_8 * m_8;
+    return f0_ + ((1.0 - f0_) * ((m2_ * m2_) * m_8));
 }
 
 float ms_fresnel_f82_tint(
@@ -592,11 +592,11 @@ float ms_fresnel_f82_tint(
     float h
 ) {
     float mu = metal::min(metal::max(cos_i_3, 0.0), 1.0);
-    float m_8 = 1.0 - mu;
-    float m5_ = (((m_8 * m_8) * m_8) * m_8) * m_8;
+    float m_9 = 1.0 - mu;
+    float m5_ = (((m_9 * m_9) * m_9) * m_9) * m_9;
     float a_12 = ((f0_1 + ((1.0 - f0_1) * 0.46266437)) * (1.0 - h)) / 0.05665278;
-    float r_5 = (f0_1 + ((1.0 - f0_1) * m5_)) - (((a_12 * mu) * m5_) * m_8);
-    return metal::min(metal::max(r_5, 0.0), 1.0);
+    float r_7 = (f0_1 + ((1.0 - f0_1) * m5_)) - (((a_12 * mu) * m5_) * m_9);
+    return metal::min(metal::max(r_7, 0.0), 1.0);
 }
 
 metal::float3 ms_fresnel_eval(
@@ -779,8 +779,8 @@ metal::float3 ms_ggx_sample_wm(
     float _e12 = w_7.x;
     float _e16 = w_7.y;
     float _e19 = w_7.z;
-    metal::float3 s_7 = metal::float3(alpha_7.x * _e12, alpha_7.y * _e16, _e19);
-    float n2_ = ((s_7.x * s_7.x) + (s_7.y * s_7.y)) + (s_7.z * s_7.z);
+    metal::float3 s_10 = metal::float3(alpha_7.x * _e12, alpha_7.y * _e16, _e19);
+    float n2_ = ((s_10.x * s_10.x) + (s_10.y * s_10.y)) + (s_10.z * s_10.z);
     if (n2_ >= 0.000000000000000000000001) {
         local_8 = n2_ <= 1000000000000000000000000.0;
     } else {
@@ -793,12 +793,12 @@ metal::float3 ms_ggx_sample_wm(
         float _e45 = w_7.x;
         float _e49 = w_7.y;
         float _e54 = w_7.z;
-        float d_11 = ((_e42.x * _e45) + (_e42.y * _e49)) + (_e42.z * _e54);
+        float d_14 = ((_e42.x * _e45) + (_e42.y * _e49)) + (_e42.z * _e54);
         float _e58 = w_7.x;
         float _e61 = w_7.y;
         float _e65 = w_7.z;
         float l1_ = (metal::abs(_e58) + metal::abs(_e61)) + metal::abs(_e65);
-        if (d_11 > (0.00000024 * l1_)) {
+        if (d_14 > (0.00000024 * l1_)) {
             return _e42;
         }
         metal::float3 _e71 = w_7;
@@ -841,8 +841,8 @@ MsSample ms_ggx_sample_dcos(
     metal::float2 u_3
 ) {
     metal::float2 _e3 = ms_cos_sin_turn(u_3.y);
-    float r_6 = metal::sqrt(u_3.x);
-    metal::float3 _e21 = ms_unit_normal(metal::float3((alpha_10.x * r_6) * _e3.x, (alpha_10.y * r_6) * _e3.y, metal::sqrt(metal::max(1.0 - u_3.x, 0.0))));
+    float r_8 = metal::sqrt(u_3.x);
+    metal::float3 _e21 = ms_unit_normal(metal::float3((alpha_10.x * r_8) * _e3.x, (alpha_10.y * r_8) * _e3.y, metal::sqrt(metal::max(1.0 - u_3.x, 0.0))));
     float _e22 = ms_ggx_d(_e21, alpha_10);
     return MsSample {_e21, _e22 * _e21.z};
 }
@@ -869,17 +869,17 @@ MsBoundedCap ms_ggx_bounded_cap(
     float _e30 = v_2.x;
     float _e33 = v_2.y;
     float _e35 = v_2.y;
-    float s_8 = 1.0 + metal::sqrt((_e28 * _e30) + (_e33 * _e35));
+    float s_11 = 1.0 + metal::sqrt((_e28 * _e30) + (_e33 * _e35));
     float a2_ = a_13 * a_13;
-    float s2_ = s_8 * s_8;
+    float s2_ = s_11 * s_11;
     float _e44 = v_2.z;
     float _e47 = v_2.z;
     float den_2 = s2_ + ((a2_ * _e44) * _e47);
-    float k_4 = ((1.0 - a2_) * s2_) / den_2;
+    float k_5 = ((1.0 - a2_) * s2_) / den_2;
     float _e55 = v_2.z;
     float _e57 = v_2.z;
     float one_minus_k = (a2_ * (s2_ + (_e55 * _e57))) / den_2;
-    return MsBoundedCap {_e18, k_4 * _e18.z, one_minus_k * _e18.z};
+    return MsBoundedCap {_e18, k_5 * _e18.z, one_minus_k * _e18.z};
 }
 
 float ms_ggx_pdf_bounded(
@@ -890,15 +890,15 @@ float ms_ggx_pdf_bounded(
     metal::float3 _e3 = ms_unit(w_in_1);
     MsBoundedCap _e4 = ms_ggx_bounded_cap(_e3, alpha_12);
     metal::float3 ws = _e4.ws;
-    float b_4 = _e4.b;
+    float b_6 = _e4.b;
     metal::float3 _e15 = ms_normalize(metal::float3(wm_5.x / alpha_12.x, wm_5.y / alpha_12.y, wm_5.z));
     float _e16 = ms_dot(_e15, ws);
     float cz = ((_e16 + _e16) * _e15.z) - _e4.ws[2];
-    if (cz < -(b_4)) {
+    if (cz < -(b_6)) {
         return 0.0;
     }
     float _e25 = ms_ggx_pdf(_e3, wm_5, alpha_12);
-    return (_e25 * (1.0 + _e4.ws[2])) / (1.0 + b_4);
+    return (_e25 * (1.0 + _e4.ws[2])) / (1.0 + b_6);
 }
 
 MsSample ms_ggx_sample_bounded(
@@ -909,13 +909,13 @@ MsSample ms_ggx_sample_bounded(
     metal::float3 _e3 = ms_unit(w_in_2);
     MsBoundedCap _e4 = ms_ggx_bounded_cap(_e3, alpha_13);
     metal::float3 ws_1 = _e4.ws;
-    float b_5 = _e4.b;
+    float b_7 = _e4.b;
     metal::float2 _e8 = ms_cos_sin_turn(u_4.x);
-    float above_1 = (1.0 - u_4.y) * (1.0 + b_5);
+    float above_1 = (1.0 - u_4.y) * (1.0 + b_7);
     float one_minus_b = (((_e4.ws[0] * _e4.ws[0]) + (_e4.ws[1] * _e4.ws[1])) / (1.0 + _e4.ws[2])) + _e4.top;
-    float sin_1 = metal::sqrt(metal::max((u_4.y * (1.0 + b_5)) * (above_1 + one_minus_b), 0.0));
-    metal::float3 m_9 = metal::float3((sin_1 * _e8.x) + _e4.ws[0], (sin_1 * _e8.y) + _e4.ws[1], above_1 + _e4.top);
-    metal::float3 _e58 = ms_normalize(metal::float3(alpha_13.x * m_9.x, alpha_13.y * m_9.y, metal::max(m_9.z, 0.0)));
+    float sin_1 = metal::sqrt(metal::max((u_4.y * (1.0 + b_7)) * (above_1 + one_minus_b), 0.0));
+    metal::float3 m_10 = metal::float3((sin_1 * _e8.x) + _e4.ws[0], (sin_1 * _e8.y) + _e4.ws[1], above_1 + _e4.top);
+    metal::float3 _e58 = ms_normalize(metal::float3(alpha_13.x * m_10.x, alpha_13.y * m_10.y, metal::max(m_10.z, 0.0)));
     metal::float3 _e59 = ms_facing(_e58, _e3);
     float _e60 = ms_ggx_pdf_bounded(_e3, _e59, alpha_13);
     return MsSample {_e59, _e60};
@@ -932,12 +932,12 @@ float ms_ggx_pdf_bounded_reflection(
         return 0.0;
     }
     float _e7 = ms_dot(wo_8, _e3);
-    float c_11 = metal::abs(_e7);
-    if (!((c_11 > 0.0))) {
+    float c_14 = metal::abs(_e7);
+    if (!((c_14 > 0.0))) {
         return 0.0;
     }
     float _e13 = ms_ggx_pdf_bounded(wo_8, _e3, alpha_14);
-    return _e13 / (4.0 * c_11);
+    return _e13 / (4.0 * c_14);
 }
 
 metal::float2 ms_bk_segment(
@@ -972,8 +972,8 @@ float ms_bk_erfcx(
         return 1.0 - (1.1283792 * x_1);
     }
     if (x_1 >= 32.0) {
-        float r_7 = 1.0 / (x_1 * x_1);
-        return ((1.0 - (r_7 * (0.5 - (r_7 * (0.75 - (r_7 * (1.875 - (r_7 * 6.5625)))))))) * MS_FRAC_1_SQRT_PI) / x_1;
+        float r_9 = 1.0 / (x_1 * x_1);
+        return ((1.0 - (r_9 * (0.5 - (r_9 * (0.75 - (r_9 * (1.875 - (r_9 * 6.5625)))))))) * MS_FRAC_1_SQRT_PI) / x_1;
     }
     metal::float2 _e30 = ms_bk_segment(x_1, MS_BK_ERFCX_K0_, MS_BK_ERFCX_K1_);
     uint i_2 = 2u * naga_f2u32(_e30.x);
@@ -991,8 +991,8 @@ float ms_bk_erfc_ratio(
         return 1.0 - (MS_SQRT_PI * a_9);
     }
     if (a_9 >= 32.0) {
-        float r_8 = 1.0 / (a_9 * a_9);
-        return r_8 * (0.5 - (r_8 * (0.75 - (r_8 * (1.875 - (r_8 * (6.5625 - (r_8 * 29.53125))))))));
+        float r_10 = 1.0 / (a_9 * a_9);
+        return r_10 * (0.5 - (r_10 * (0.75 - (r_10 * (1.875 - (r_10 * (6.5625 - (r_10 * 29.53125))))))));
     }
     metal::float2 _e28 = ms_bk_segment(a_9, MS_BK_ERFC_RATIO_K0_, MS_BK_ERFC_RATIO_K1_);
     uint i_3 = 2u * naga_f2u32(_e28.x);
@@ -1056,9 +1056,9 @@ float ms_beckmann_d(
 ) {
     bool local_9 = {};
     float z_6 = wm_6.z;
-    float r_9 = 1.0 / (alpha_15.x * alpha_15.y);
-    float x_10 = (wm_6.x * alpha_15.y) * r_9;
-    float y_4 = (wm_6.y * alpha_15.x) * r_9;
+    float r_11 = 1.0 / (alpha_15.x * alpha_15.y);
+    float x_10 = (wm_6.x * alpha_15.y) * r_11;
+    float y_4 = (wm_6.y * alpha_15.x) * r_11;
     float z2_1 = z_6 * z_6;
     if (z_6 > 0.0) {
         local_9 = z2_1 > 0.0;
@@ -1069,11 +1069,11 @@ float ms_beckmann_d(
     if (!(_e24)) {
         return 0.0;
     }
-    float e_2 = ((x_10 * x_10) + (y_4 * y_4)) / z2_1;
-    if (e_2 <= 80.0) {
-        return (metal::exp(-(e_2)) * r_9) / ((MS_PI * z2_1) * z2_1);
+    float e_4 = ((x_10 * x_10) + (y_4 * y_4)) / z2_1;
+    if (e_4 <= 80.0) {
+        return (metal::exp(-(e_4)) * r_11) / ((MS_PI * z2_1) * z2_1);
     }
-    return metal::exp(((metal::log(r_9) - 1.14473) - (4.0 * metal::log(z_6))) - e_2);
+    return metal::exp(((metal::log(r_11) - 1.14473) - (4.0 * metal::log(z_6))) - e_4);
 }
 
 float ms_beckmann_lambda_cot(
@@ -1098,11 +1098,11 @@ float ms_beckmann_lambda(
 ) {
     float x_11 = alpha_16.x * w_10.x;
     float y_5 = alpha_16.y * w_10.y;
-    float s_9 = metal::sqrt((x_11 * x_11) + (y_5 * y_5));
-    if (!((s_9 > 0.0))) {
+    float s_12 = metal::sqrt((x_11 * x_11) + (y_5 * y_5));
+    if (!((s_12 > 0.0))) {
         return 0.0;
     }
-    float _e19 = ms_beckmann_lambda_cot(metal::abs(w_10.z) / s_9, MS_BK_ERFC_RATIO);
+    float _e19 = ms_beckmann_lambda_cot(metal::abs(w_10.z) / s_12, MS_BK_ERFC_RATIO);
     return _e19;
 }
 
@@ -1202,11 +1202,11 @@ MsSample ms_beckmann_sample_dcos(
         v_3 = metal::float3(alpha_22.x * _e3.x, alpha_22.y * _e3.y, 0.0);
     } else {
         float _e17 = ms_bk_ln_1m(u_6.x);
-        float r_10 = metal::sqrt(-(_e17));
-        if (r_10 > 1.0) {
-            v_3 = metal::float3(alpha_22.x * _e3.x, alpha_22.y * _e3.y, 1.0 / r_10);
+        float r_12 = metal::sqrt(-(_e17));
+        if (r_12 > 1.0) {
+            v_3 = metal::float3(alpha_22.x * _e3.x, alpha_22.y * _e3.y, 1.0 / r_12);
         } else {
-            v_3 = metal::float3((alpha_22.x * r_10) * _e3.x, (alpha_22.y * r_10) * _e3.y, 1.0);
+            v_3 = metal::float3((alpha_22.x * r_12) * _e3.x, (alpha_22.y * r_12) * _e3.y, 1.0);
         }
     }
     metal::float3 _e41 = v_3;
@@ -1267,11 +1267,11 @@ float ms_bk_visible_x(
         {
             float _e40 = x_2;
             float _e42 = x_2;
-            float e_3 = metal::exp(-(_e40) * _e42);
+            float e_5 = metal::exp(-(_e40) * _e42);
             float _e45 = x_2;
             float _e47 = ms_bk_erfcx(metal::abs(_e45), MS_BK_ERFCX);
-            float ec = _e47 * e_3;
-            float half_e = 0.2820948 * e_3;
+            float ec = _e47 * e_5;
+            float half_e = 0.2820948 * e_5;
             f = float {};
             float _e53 = x_2;
             if (_e53 <= 0.0) {
@@ -1298,7 +1298,7 @@ float ms_bk_visible_x(
             float _e79 = x_2;
             float _e82 = x_2;
             float g2_ = 1.0 - ((2.0 * _e79) * (_e82 + a_11));
-            float big_e = e_3 * MS_FRAC_1_SQRT_PI;
+            float big_e = e_5 * MS_FRAC_1_SQRT_PI;
             float _e89 = f;
             float fg2_ = _e89 * g2_;
             float g1e = (g1_ * g1_) * big_e;
@@ -1374,14 +1374,14 @@ metal::float3 ms_beckmann_sample_wm(
     float _e14 = sign_1;
     float sy_1 = (_e14 * alpha_23.y) * w_13.y;
     float _e19 = sign_1;
-    float c_12 = _e19 * w_13.z;
+    float c_15 = _e19 * w_13.z;
     float h_2 = metal::sqrt((sx_1 * sx_1) + (sy_1 * sy_1));
     float _e27 = ms_bk_quantile(u_8.y, MS_BK_ERFINV_Q, MS_BK_ERFINV_W);
     if (h_2 > 0.0) {
         float inv_1 = 1.0 / h_2;
         cp = sx_1 * inv_1;
         sp = sy_1 * inv_1;
-        float _e41 = ms_bk_visible_x(c_12 * inv_1, u_8.x, MS_BK_ERFCX, MS_BK_ERFINV_Q, MS_BK_ERFINV_W);
+        float _e41 = ms_bk_visible_x(c_15 * inv_1, u_8.x, MS_BK_ERFCX, MS_BK_ERFINV_Q, MS_BK_ERFINV_W);
         x_3 = _e41;
     } else {
         float _e43 = ms_bk_quantile(u_8.x, MS_BK_ERFINV_Q, MS_BK_ERFINV_W);
@@ -1714,10 +1714,10 @@ MsBsdfSample ms_conductor_sample(
     }
     bool _e15 = ms_effectively_smooth(c_6.mf);
     if (_e15) {
-        metal::float3 wi_26 = metal::float3(-(wo_19.x), -(wo_19.y), wo_19.z);
-        float k_5 = 1.0 / metal::abs(wi_26.z);
+        metal::float3 wi_32 = metal::float3(-(wo_19.x), -(wo_19.y), wo_19.z);
+        float k_6 = 1.0 / metal::abs(wi_32.z);
         metal::float3 _e29 = ms_fresnel_eval(c_6.fresnel, metal::abs(wo_19.z));
-        return MsBsdfSample {wi_26, 1.0, _e29 * k_5, 3u, 1.0};
+        return MsBsdfSample {wi_32, 1.0, _e29 * k_6, 3u, 1.0};
     }
     MsSample _e36 = ms_sample(c_6.mf, wo_19, u_12, MS_BK_ERFCX, MS_BK_ERFC_RATIO, MS_BK_ERFINV_Q, MS_BK_ERFINV_W);
     metal::float3 _e38 = ms_reflect(wo_19, _e36.wm);
@@ -1916,27 +1916,27 @@ MsBsdfSample ms_dielectric_sample_smooth(
     float f_2 = {};
     float _e5 = ms_fresnel_dielectric(wo_25.z, d_7.eta);
     if (uc_1 < _e5) {
-        metal::float3 wi_27 = metal::float3(-(wo_25.x), -(wo_25.y), wo_25.z);
-        return MsBsdfSample {wi_27, _e5, metal::float3(_e5 / metal::abs(wi_27.z)), 3u, 1.0};
+        metal::float3 wi_33 = metal::float3(-(wo_25.x), -(wo_25.y), wo_25.z);
+        return MsBsdfSample {wi_33, _e5, metal::float3(_e5 / metal::abs(wi_33.z)), 3u, 1.0};
     }
     MsBsdfSample none_2 = MsBsdfSample {metal::float3(0.0), 0.0, metal::float3(0.0), 0u, 1.0};
     metal::float4 _e33 = ms_refract(wo_25, metal::float3(0.0, 0.0, 1.0), d_7.eta);
     if (_e33.w == 0.0) {
         return none_2;
     }
-    metal::float3 wi_28 = _e33.xyz;
-    bool _e39 = ms_on_horizon(wi_28.z);
+    metal::float3 wi_34 = _e33.xyz;
+    bool _e39 = ms_on_horizon(wi_34.z);
     if (_e39) {
         return none_2;
     }
     float t_8 = 1.0 - _e5;
-    f_2 = t_8 / metal::abs(wi_28.z);
+    f_2 = t_8 / metal::abs(wi_34.z);
     if (d_7.transport == MS_TRANSPORT_RADIANCE) {
         float _e49 = f_2;
         f_2 = _e49 / (_e33.w * _e33.w);
     }
     float _e54 = f_2;
-    return MsBsdfSample {wi_28, t_8, metal::float3(_e54), 7u, _e33.w};
+    return MsBsdfSample {wi_34, t_8, metal::float3(_e54), 7u, _e33.w};
 }
 
 MsBsdfSample ms_dielectric_sample(
@@ -1986,11 +1986,11 @@ MsBsdfSample ms_dielectric_sample(
             return none_3;
         }
         float _e39 = ms_reflected(d_8.mf, d_8.masking, wo_26, _e23, _e34, MS_BK_ERFC_RATIO);
-        float f_3 = _e21 * _e39;
+        float f_4 = _e21 * _e39;
         float pdf_1 = (_e17.pdf * _e21) / (4.0 * metal::abs(_e19));
         bool _e47 = ms_usable(pdf_1);
         if (!(!(_e47))) {
-            local_23 = !((f_3 <= 340282350000000000000000000000000000000.0));
+            local_23 = !((f_4 <= 340282350000000000000000000000000000000.0));
         } else {
             local_23 = true;
         }
@@ -1998,17 +1998,17 @@ MsBsdfSample ms_dielectric_sample(
         if (_e56) {
             return none_3;
         }
-        return MsBsdfSample {_e23, pdf_1, metal::float3(f_3), MS_SAMPLE_VALID, 1.0};
+        return MsBsdfSample {_e23, pdf_1, metal::float3(f_4), MS_SAMPLE_VALID, 1.0};
     }
     metal::float4 _e62 = ms_refract(wo_26, wm_15, d_8.eta);
     if (_e62.w == 0.0) {
         return none_3;
     }
-    metal::float3 wi_29 = _e62.xyz;
+    metal::float3 wi_35 = _e62.xyz;
     float etap_6 = _e62.w;
-    bool _e68 = ms_same_hemisphere(wo_26, wi_29);
+    bool _e68 = ms_same_hemisphere(wo_26, wi_35);
     if (!(_e68)) {
-        bool _e73 = ms_on_horizon(wi_29.z);
+        bool _e73 = ms_on_horizon(wi_35.z);
         local_24 = _e73;
     } else {
         local_24 = true;
@@ -2018,14 +2018,14 @@ MsBsdfSample ms_dielectric_sample(
         return none_3;
     }
     float t_9 = 1.0 - _e21;
-    float _e80 = ms_jacobian_refraction(wo_26, wi_29, wm_15, etap_6);
+    float _e80 = ms_jacobian_refraction(wo_26, wi_35, wm_15, etap_6);
     float pdf_2 = (_e17.pdf * t_9) * _e80;
     float _e83 = ms_d(d_8.mf, wm_15);
     bool _e84 = ms_usable(_e83);
     if (!(_e84)) {
         return none_3;
     }
-    float _e86 = ms_dielectric_f_transmission(d_8, wo_26, wi_29, wm_15, _e83, etap_6, t_9, MS_BK_ERFC_RATIO);
+    float _e86 = ms_dielectric_f_transmission(d_8, wo_26, wi_35, wm_15, _e83, etap_6, t_9, MS_BK_ERFC_RATIO);
     bool _e87 = ms_usable(pdf_2);
     if (!(!(_e87))) {
         local_25 = !((_e86 <= 340282350000000000000000000000000000000.0));
@@ -2036,7 +2036,7 @@ MsBsdfSample ms_dielectric_sample(
     if (_e96) {
         return none_3;
     }
-    return MsBsdfSample {wi_29, pdf_2, metal::float3(_e86), 5u, etap_6};
+    return MsBsdfSample {wi_35, pdf_2, metal::float3(_e86), 5u, etap_6};
 }
 
 MsLutTap ms_lut_tap(
@@ -2141,6 +2141,360 @@ metal::float3 ms_conductor_eval_turquin(
     return _e5 * _e6;
 }
 
+float ms_kulla_conty_p_ms(
+    float e_o_4
+) {
+    return metal::clamp(1.0 - e_o_4, 0.0, 1.0);
+}
+
+float ms_cosine_pdf_same_side(
+    metal::float3 wo_29,
+    metal::float3 wi_26
+) {
+    if (!(((wo_29.z * wi_26.z) > 0.0))) {
+        return 0.0;
+    }
+    return metal::abs(wi_26.z) / MS_PI;
+}
+
+float ms_conductor_pdf_kulla_conty(
+    MsConductor c_9,
+    metal::float3 wo_30,
+    metal::float3 wi_27,
+    float e_o_5,
+    thread type_7& MS_BK_ERFC_RATIO
+) {
+    float _e4 = ms_kulla_conty_p_ms(e_o_5);
+    float _e7 = ms_conductor_pdf(c_9, wo_30, wi_27, MS_BK_ERFC_RATIO);
+    float _e9 = ms_cosine_pdf_same_side(wo_30, wi_27);
+    return ((1.0 - _e4) * _e7) + (_e4 * _e9);
+}
+
+metal::float3 ms_cosine_hemisphere(
+    metal::float2 u_14
+) {
+    float r_13 = metal::sqrt(u_14.x);
+    metal::float2 _e4 = ms_cos_sin_turn(u_14.y);
+    return metal::float3(r_13 * _e4.x, r_13 * _e4.y, metal::sqrt(metal::max(1.0 - u_14.x, 0.0)));
+}
+
+MsBsdfSample ms_conductor_sample_kulla_conty(
+    MsConductor c_10,
+    metal::float3 wo_31,
+    float uc_3,
+    metal::float2 u_15,
+    float e_o_6,
+    thread type_7& MS_BK_ERFCX,
+    thread type_7& MS_BK_ERFC_RATIO,
+    thread type_8& MS_BK_ERFINV_Q,
+    thread type_9& MS_BK_ERFINV_W
+) {
+    metal::float3 wi_28 = {};
+    bool local_26 = {};
+    MsBsdfSample none_4 = MsBsdfSample {metal::float3(0.0), 0.0, metal::float3(0.0), 0u, 1.0};
+    bool _e14 = ms_on_horizon(wo_31.z);
+    if (_e14) {
+        return none_4;
+    }
+    float _e15 = ms_kulla_conty_p_ms(e_o_6);
+    if (uc_3 < _e15) {
+        metal::float3 _e18 = ms_cosine_hemisphere(u_15);
+        wi_28 = _e18;
+        if (wo_31.z < 0.0) {
+            float _e24 = wi_28.z;
+            wi_28.z = -(_e24);
+        }
+    } else {
+        MsBsdfSample _e30 = ms_conductor_sample(c_10, wo_31, (uc_3 - _e15) / (1.0 - _e15), u_15, MS_BK_ERFCX, MS_BK_ERFC_RATIO, MS_BK_ERFINV_Q, MS_BK_ERFINV_W);
+        if (!(((_e30.flags & MS_SAMPLE_VALID) == 0u))) {
+            local_26 = (_e30.flags & MS_SAMPLE_SPECULAR) != 0u;
+        } else {
+            local_26 = true;
+        }
+        bool _e45 = local_26;
+        if (_e45) {
+            return _e30;
+        }
+        wi_28 = _e30.wi;
+    }
+    metal::float3 _e47 = wi_28;
+    float _e48 = ms_conductor_pdf_kulla_conty(c_10, wo_31, _e47, e_o_6, MS_BK_ERFC_RATIO);
+    bool _e49 = ms_usable(_e48);
+    if (!(_e49)) {
+        return none_4;
+    }
+    metal::float3 _e51 = wi_28;
+    metal::float3 _e52 = wi_28;
+    metal::float3 _e53 = ms_conductor_eval(c_10, wo_31, _e52, MS_BK_ERFC_RATIO);
+    return MsBsdfSample {_e51, _e48, _e53, MS_SAMPLE_VALID, 1.0};
+}
+
+MsBsdfSample ms_kulla_conty_sample_f(
+    MsBsdfSample s_3,
+    metal::float3 wo_32,
+    float e_o_7,
+    float e_i_2,
+    float e_avg_3,
+    metal::float3 f_ms_1
+) {
+    bool local_27 = {};
+    bool local_28 = {};
+    if (!(((s_3.flags & MS_SAMPLE_VALID) == 0u))) {
+        local_27 = (s_3.flags & MS_SAMPLE_SPECULAR) != 0u;
+    } else {
+        local_27 = true;
+    }
+    bool _e20 = local_27;
+    if (!(_e20)) {
+        local_28 = !(((wo_32.z * s_3.wi[2]) > 0.0));
+    } else {
+        local_28 = true;
+    }
+    bool _e32 = local_28;
+    if (_e32) {
+        return s_3;
+    }
+    float _e36 = ms_kulla_conty_lobe(e_o_7, e_i_2, e_avg_3);
+    return MsBsdfSample {s_3.wi, s_3.pdf, s_3.f + (_e36 * f_ms_1), s_3.flags, s_3.eta};
+}
+
+MsBsdfSample ms_conductor_sample_turquin(
+    MsConductor c_11,
+    metal::float3 wo_33,
+    float uc_4,
+    metal::float2 u_16,
+    float e_o_8,
+    metal::float3 f0_4,
+    thread type_7& MS_BK_ERFCX,
+    thread type_7& MS_BK_ERFC_RATIO,
+    thread type_8& MS_BK_ERFINV_Q,
+    thread type_9& MS_BK_ERFINV_W
+) {
+    bool local_29 = {};
+    MsBsdfSample _e6 = ms_conductor_sample(c_11, wo_33, uc_4, u_16, MS_BK_ERFCX, MS_BK_ERFC_RATIO, MS_BK_ERFINV_Q, MS_BK_ERFINV_W);
+    if (!(((_e6.flags & MS_SAMPLE_VALID) == 0u))) {
+        local_29 = (_e6.flags & MS_SAMPLE_SPECULAR) != 0u;
+    } else {
+        local_29 = true;
+    }
+    bool _e21 = local_29;
+    if (_e21) {
+        return _e6;
+    }
+    metal::float3 _e23 = ms_turquin_scale(e_o_8, f0_4);
+    metal::float3 f_5 = _e6.f * _e23;
+    if (!(metal::all(f_5 <= metal::float3(340282350000000000000000000000000000000.0)))) {
+        return MsBsdfSample {metal::float3(0.0), 0.0, metal::float3(0.0), 0u, 1.0};
+    }
+    return MsBsdfSample {_e6.wi, _e6.pdf, f_5, _e6.flags, _e6.eta};
+}
+
+uint ms_lut_index3_(
+    uint ie,
+    uint ir_1,
+    uint im_1,
+    uint n_r,
+    uint n_mu_1
+) {
+    return (((ie * n_r) + ir_1) * n_mu_1) + im_1;
+}
+
+float ms_lut_eta_coord(
+    float eta_4
+) {
+    return metal::sqrt(metal::max(eta_4 - 1.0, 0.0) * 0.5);
+}
+
+float ms_lut_trilerp(
+    MsLutTap e,
+    MsLutTap r_1,
+    MsLutTap m_4,
+    metal::float4 lo_2,
+    metal::float4 hi_2
+) {
+    float s_4 = 0.0;
+    uint b_4 = 0u;
+    metal::float2 we = metal::float2(1.0 - e.f, e.f);
+    metal::float2 wr = metal::float2(1.0 - r_1.f, r_1.f);
+    metal::float2 wm_16 = metal::float2(1.0 - m_4.f, m_4.f);
+    uint2 loop_bound_1 = uint2(4294967295u);
+    bool loop_init_1 = true;
+    while(true) {
+        if (metal::all(loop_bound_1 == uint2(0u))) { break; }
+        loop_bound_1 -= uint2(loop_bound_1.y == 0u, 1u);
+        if (!loop_init_1) {
+            uint _e59 = b_4;
+            b_4 = _e59 + 1u;
+        }
+        loop_init_1 = false;
+        uint _e24 = b_4;
+        if (_e24 < 8u) {
+        } else {
+            break;
+        }
+        {
+            uint _e27 = b_4;
+            uint _e31 = b_4;
+            uint _e35 = b_4;
+            float v_6 = (_e35 >= 4u) ? hi_2[_e31 & 3u] : lo_2[_e27 & 3u];
+            float _e39 = s_4;
+            uint _e40 = b_4;
+            uint _e44 = b_4;
+            uint _e51 = b_4;
+            s_4 = _e39 + (((we[_e40 & 1u] * wr[(_e44 >> 1u) & 1u]) * wm_16[_e51 >> 2u]) * v_6);
+        }
+    }
+    float _e61 = s_4;
+    return _e61;
+}
+
+float ms_lut_bilerp_eta(
+    MsLutTap e_1,
+    MsLutTap r_2,
+    metal::float4 v_5
+) {
+    float s_5 = 0.0;
+    uint b_5 = 0u;
+    metal::float2 we_1 = metal::float2(1.0 - e_1.f, e_1.f);
+    metal::float2 wr_1 = metal::float2(1.0 - r_2.f, r_2.f);
+    uint2 loop_bound_2 = uint2(4294967295u);
+    bool loop_init_2 = true;
+    while(true) {
+        if (metal::all(loop_bound_2 == uint2(0u))) { break; }
+        loop_bound_2 -= uint2(loop_bound_2.y == 0u, 1u);
+        if (!loop_init_2) {
+            uint _e35 = b_5;
+            b_5 = _e35 + 1u;
+        }
+        loop_init_2 = false;
+        uint _e17 = b_5;
+        if (_e17 < 4u) {
+        } else {
+            break;
+        }
+        {
+            float _e20 = s_5;
+            uint _e21 = b_5;
+            uint _e25 = b_5;
+            uint _e30 = b_5;
+            s_5 = _e20 + ((we_1[_e21 & 1u] * wr_1[_e25 >> 1u]) * v_5[_e30]);
+        }
+    }
+    float _e37 = s_5;
+    return _e37;
+}
+
+metal::float2 ms_dielectric_kulla_conty_k(
+    float eta_5,
+    float f_avg_1,
+    metal::float2 e_avg_4
+) {
+    metal::float2 k_3 = {};
+    float k_out = 1.0 - f_avg_1;
+    k_3 = metal::float2(k_out, (k_out * (1.0 - e_avg_4.x)) / ((eta_5 * eta_5) * (1.0 - e_avg_4.y)));
+    float _e18 = k_3.y;
+    if (!((_e18 <= 1.0))) {
+        metal::float2 _e22 = k_3;
+        float _e24 = k_3.y;
+        float _e28 = k_3.y;
+        k_3 = _e22 * ((_e28 > 1.0) ? (1.0 / _e24) : 0.0);
+    }
+    metal::float2 _e34 = k_3;
+    return _e34;
+}
+
+float ms_dielectric_kulla_conty_lobe(
+    MsDielectric d_9,
+    metal::float3 wo_34,
+    metal::float3 wi_29,
+    float e_o_9,
+    float e_i_3,
+    float e_avg_i,
+    float k_o
+) {
+    bool local_30 = {};
+    bool local_31 = {};
+    float f_3 = {};
+    bool local_32 = {};
+    if (metal::abs(wo_34.z) > 0.0) {
+        local_30 = metal::abs(wi_29.z) > 0.0;
+    } else {
+        local_30 = false;
+    }
+    bool _e18 = local_30;
+    if (!(_e18)) {
+        return 0.0;
+    }
+    float lost = 1.0 - e_o_9;
+    bool crossed = (wi_29.z < 0.0) != (wo_34.z < 0.0);
+    float share = crossed ? k_o : (1.0 - k_o);
+    float den_4 = MS_PI * (1.0 - e_avg_i);
+    if (den_4 > 0.0) {
+        local_31 = lost > 0.0;
+    } else {
+        local_31 = false;
+    }
+    bool _e44 = local_31;
+    if (!(_e44)) {
+        return 0.0;
+    }
+    f_3 = ((share * lost) * metal::max(1.0 - e_i_3, 0.0)) / den_4;
+    if (crossed) {
+        local_32 = d_9.transport == MS_TRANSPORT_RADIANCE;
+    } else {
+        local_32 = false;
+    }
+    bool _e61 = local_32;
+    if (_e61) {
+        float etap_7 = (wo_34.z > 0.0) ? d_9.eta : (1.0 / d_9.eta);
+        float _e70 = f_3;
+        f_3 = _e70 / (etap_7 * etap_7);
+    }
+    float _e73 = f_3;
+    return _e73;
+}
+
+float ms_dielectric_eval_kulla_conty(
+    MsDielectric d_10,
+    metal::float3 wo_35,
+    metal::float3 wi_30,
+    float e_o_10,
+    float e_i_4,
+    float e_avg_i_1,
+    float k_o_1,
+    thread type_7& MS_BK_ERFC_RATIO
+) {
+    float _e7 = ms_dielectric_eval(d_10, wo_35, wi_30, MS_BK_ERFC_RATIO);
+    bool _e8 = ms_dielectric_smooth(d_10);
+    if (_e8) {
+        return _e7;
+    }
+    float _e9 = ms_dielectric_kulla_conty_lobe(d_10, wo_35, wi_30, e_o_10, e_i_4, e_avg_i_1, k_o_1);
+    return _e7 + _e9;
+}
+
+float ms_dielectric_eval_turquin(
+    MsDielectric d_11,
+    metal::float3 wo_36,
+    metal::float3 wi_31,
+    float e_o_11,
+    thread type_7& MS_BK_ERFC_RATIO
+) {
+    bool local_33 = {};
+    float _e4 = ms_dielectric_eval(d_11, wo_36, wi_31, MS_BK_ERFC_RATIO);
+    bool _e5 = ms_dielectric_smooth(d_11);
+    if (!(_e5)) {
+        local_33 = !((e_o_11 > 0.0));
+    } else {
+        local_33 = true;
+    }
+    bool _e13 = local_33;
+    if (_e13) {
+        return _e4;
+    }
+    return _e4 / e_o_11;
+}
+
 uint naga_div(uint lhs, uint rhs) {
     return lhs / metal::select(rhs, 1u, rhs == 0u);
 }
@@ -2200,18 +2554,18 @@ kernel void ms_k_ggx_eval(
     metal::float4 _e12 = ms_in[_e2 * MS_K_IN];
     metal::float2 a_14 = _e12.xy;
     metal::float4 _e20 = ms_in[(_e2 * MS_K_IN) + 1u];
-    metal::float3 wo_29 = _e20.xyz;
+    metal::float3 wo_37 = _e20.xyz;
     metal::float4 _e28 = ms_in[(_e2 * MS_K_IN) + 2u];
-    metal::float3 wm_16 = _e28.xyz;
-    float _e34 = ms_ggx_d(wm_16, a_14);
-    float _e35 = ms_ggx_lambda(wo_29, a_14);
-    float _e36 = ms_ggx_g1_(wo_29, a_14);
-    float _e37 = ms_ggx_g2_(wo_29, wm_16, a_14);
+    metal::float3 wm_17 = _e28.xyz;
+    float _e34 = ms_ggx_d(wm_17, a_14);
+    float _e35 = ms_ggx_lambda(wo_37, a_14);
+    float _e36 = ms_ggx_g1_(wo_37, a_14);
+    float _e37 = ms_ggx_g2_(wo_37, wm_17, a_14);
     ms_out[_e2 * MS_K_OUT] = metal::float4(_e34, _e35, _e36, _e37);
-    float _e45 = ms_ggx_g2_separable(wo_29, wm_16, a_14);
-    float _e46 = ms_ggx_pdf(wo_29, wm_16, a_14);
-    float _e47 = ms_ggx_pdf_dcos(wm_16, a_14);
-    float _e48 = ms_ggx_pdf_bounded(wo_29, wm_16, a_14);
+    float _e45 = ms_ggx_g2_separable(wo_37, wm_17, a_14);
+    float _e46 = ms_ggx_pdf(wo_37, wm_17, a_14);
+    float _e47 = ms_ggx_pdf_dcos(wm_17, a_14);
+    float _e48 = ms_ggx_pdf_bounded(wo_37, wm_17, a_14);
     ms_out[(_e2 * MS_K_OUT) + 1u] = metal::float4(_e45, _e46, _e47, _e48);
     return;
 }
@@ -2234,18 +2588,18 @@ kernel void ms_k_beckmann_eval(
     metal::float4 _e12 = ms_in[_e2 * MS_K_IN];
     metal::float2 a_15 = _e12.xy;
     metal::float4 _e20 = ms_in[(_e2 * MS_K_IN) + 1u];
-    metal::float3 wo_30 = _e20.xyz;
+    metal::float3 wo_38 = _e20.xyz;
     metal::float4 _e28 = ms_in[(_e2 * MS_K_IN) + 2u];
-    metal::float3 wm_17 = _e28.xyz;
-    float _e34 = ms_beckmann_d(wm_17, a_15);
-    float _e35 = ms_beckmann_lambda(wo_30, a_15, MS_BK_ERFC_RATIO);
-    float _e36 = ms_beckmann_g1_(wo_30, a_15, MS_BK_ERFC_RATIO);
-    float _e37 = ms_beckmann_g2_(wo_30, wm_17, a_15, MS_BK_ERFC_RATIO);
+    metal::float3 wm_18 = _e28.xyz;
+    float _e34 = ms_beckmann_d(wm_18, a_15);
+    float _e35 = ms_beckmann_lambda(wo_38, a_15, MS_BK_ERFC_RATIO);
+    float _e36 = ms_beckmann_g1_(wo_38, a_15, MS_BK_ERFC_RATIO);
+    float _e37 = ms_beckmann_g2_(wo_38, wm_18, a_15, MS_BK_ERFC_RATIO);
     ms_out[_e2 * MS_K_OUT] = metal::float4(_e34, _e35, _e36, _e37);
-    float _e45 = ms_beckmann_g2_separable(wo_30, wm_17, a_15, MS_BK_ERFC_RATIO);
-    float _e46 = ms_beckmann_pdf(wo_30, wm_17, a_15, MS_BK_ERFC_RATIO);
-    float _e47 = ms_beckmann_pdf_dcos(wm_17, a_15);
-    float _e50 = ms_pdf(MsMicrofacet {MS_NDF_BECKMANN, {}, a_15}, wo_30, wm_17, MS_BK_ERFC_RATIO);
+    float _e45 = ms_beckmann_g2_separable(wo_38, wm_18, a_15, MS_BK_ERFC_RATIO);
+    float _e46 = ms_beckmann_pdf(wo_38, wm_18, a_15, MS_BK_ERFC_RATIO);
+    float _e47 = ms_beckmann_pdf_dcos(wm_18, a_15);
+    float _e50 = ms_pdf(MsMicrofacet {MS_NDF_BECKMANN, {}, a_15}, wo_38, wm_18, MS_BK_ERFC_RATIO);
     ms_out[(_e2 * MS_K_OUT) + 1u] = metal::float4(_e45, _e46, _e47, _e50);
     return;
 }
@@ -2270,8 +2624,8 @@ kernel void ms_k_beckmann_sample(
     }
     metal::float4 r0_2 = ms_in[_e2 * MS_K_IN];
     metal::float4 _e19 = ms_in[(_e2 * MS_K_IN) + 1u];
-    metal::float3 wo_31 = _e19.xyz;
-    MsSample _e25 = ms_sample(MsMicrofacet {MS_NDF_BECKMANN, {}, r0_2.xy}, wo_31, r0_2.zw, MS_BK_ERFCX, MS_BK_ERFC_RATIO, MS_BK_ERFINV_Q, MS_BK_ERFINV_W);
+    metal::float3 wo_39 = _e19.xyz;
+    MsSample _e25 = ms_sample(MsMicrofacet {MS_NDF_BECKMANN, {}, r0_2.xy}, wo_39, r0_2.zw, MS_BK_ERFCX, MS_BK_ERFC_RATIO, MS_BK_ERFINV_Q, MS_BK_ERFINV_W);
     MsSample _e28 = ms_beckmann_sample_dcos(r0_2.xy, r0_2.zw);
     ms_out[_e2 * MS_K_OUT] = metal::float4(_e25.wm, _e25.pdf);
     ms_out[(_e2 * MS_K_OUT) + 1u] = metal::float4(_e28.wm, _e28.pdf);
@@ -2294,8 +2648,8 @@ kernel void ms_k_ggx_sample(
     }
     metal::float4 r0_3 = ms_in[_e2 * MS_K_IN];
     metal::float4 _e19 = ms_in[(_e2 * MS_K_IN) + 1u];
-    metal::float3 wo_32 = _e19.xyz;
-    MsSample _e23 = ms_ggx_sample(wo_32, r0_3.xy, r0_3.zw);
+    metal::float3 wo_40 = _e19.xyz;
+    MsSample _e23 = ms_ggx_sample(wo_40, r0_3.xy, r0_3.zw);
     MsSample _e26 = ms_ggx_sample_dcos(r0_3.xy, r0_3.zw);
     ms_out[_e2 * MS_K_OUT] = metal::float4(_e23.wm, _e23.pdf);
     ms_out[(_e2 * MS_K_OUT) + 1u] = metal::float4(_e26.wm, _e26.pdf);
@@ -2318,12 +2672,12 @@ kernel void ms_k_ggx_bounded(
     }
     metal::float4 r0_4 = ms_in[_e2 * MS_K_IN];
     metal::float4 _e19 = ms_in[(_e2 * MS_K_IN) + 1u];
-    metal::float3 wo_33 = _e19.xyz;
+    metal::float3 wo_41 = _e19.xyz;
     metal::float4 _e27 = ms_in[(_e2 * MS_K_IN) + 2u];
-    metal::float3 wi_30 = _e27.xyz;
-    MsSample _e31 = ms_ggx_sample_bounded(wo_33, r0_4.xy, r0_4.zw);
+    metal::float3 wi_36 = _e27.xyz;
+    MsSample _e31 = ms_ggx_sample_bounded(wo_41, r0_4.xy, r0_4.zw);
     ms_out[_e2 * MS_K_OUT] = metal::float4(_e31.wm, _e31.pdf);
-    float _e46 = ms_ggx_pdf_bounded_reflection(wo_33, wi_30, r0_4.xy);
+    float _e46 = ms_ggx_pdf_bounded_reflection(wo_41, wi_36, r0_4.xy);
     ms_out[(_e2 * MS_K_OUT) + 1u] = metal::float4(_e46, 0.0, 0.0, 0.0);
     return;
 }
@@ -2342,15 +2696,15 @@ kernel void ms_k_fresnel(
     if (_e2 == naga_div(1 + (_buffer_sizes.size4 - 0 - 16) / 16, MS_K_IN)) {
         return;
     }
-    float c_13 = ms_in[(_e2 * MS_K_IN) + 1u].z;
+    float c_16 = ms_in[(_e2 * MS_K_IN) + 1u].z;
     MsConductor _e16 = ms_k_conductor(_e2, ms_in, _buffer_sizes);
     MsFresnel fr_2 = _e16.fresnel;
-    float _e24 = ms_fresnel_dielectric(c_13, _e16.fresnel.a.x);
-    float _e29 = ms_fresnel_conductor(c_13, _e16.fresnel.a.x, _e16.fresnel.b.x);
-    float _e32 = ms_fresnel_schlick(c_13, _e16.fresnel.a.x);
-    float _e37 = ms_fresnel_f82_tint(c_13, _e16.fresnel.a.x, _e16.fresnel.b.x);
+    float _e24 = ms_fresnel_dielectric(c_16, _e16.fresnel.a.x);
+    float _e29 = ms_fresnel_conductor(c_16, _e16.fresnel.a.x, _e16.fresnel.b.x);
+    float _e32 = ms_fresnel_schlick(c_16, _e16.fresnel.a.x);
+    float _e37 = ms_fresnel_f82_tint(c_16, _e16.fresnel.a.x, _e16.fresnel.b.x);
     ms_out[_e2 * MS_K_OUT] = metal::float4(_e24, _e29, _e32, _e37);
-    metal::float3 _e45 = ms_fresnel_eval(fr_2, c_13);
+    metal::float3 _e45 = ms_fresnel_eval(fr_2, c_16);
     ms_out[(_e2 * MS_K_OUT) + 1u] = metal::float4(_e45, 0.0);
     return;
 }
@@ -2372,13 +2726,13 @@ kernel void ms_k_conductor_eval(
     }
     MsConductor _e8 = ms_k_conductor(_e2, ms_in, _buffer_sizes);
     metal::float4 _e15 = ms_in[(_e2 * MS_K_IN) + 1u];
-    metal::float3 wo_34 = _e15.xyz;
+    metal::float3 wo_42 = _e15.xyz;
     metal::float4 _e23 = ms_in[(_e2 * MS_K_IN) + 2u];
-    metal::float3 wi_31 = _e23.xyz;
-    metal::float3 _e29 = ms_conductor_eval(_e8, wo_34, wi_31, MS_BK_ERFC_RATIO);
-    float _e30 = ms_conductor_pdf(_e8, wo_34, wi_31, MS_BK_ERFC_RATIO);
+    metal::float3 wi_37 = _e23.xyz;
+    metal::float3 _e29 = ms_conductor_eval(_e8, wo_42, wi_37, MS_BK_ERFC_RATIO);
+    float _e30 = ms_conductor_pdf(_e8, wo_42, wi_37, MS_BK_ERFC_RATIO);
     ms_out[_e2 * MS_K_OUT] = metal::float4(_e29, _e30);
-    metal::float4 _e38 = ms_conductor_eval_pdf(_e8, wo_34, wi_31, MS_BK_ERFC_RATIO);
+    metal::float4 _e38 = ms_conductor_eval_pdf(_e8, wo_42, wi_37, MS_BK_ERFC_RATIO);
     ms_out[(_e2 * MS_K_OUT) + 1u] = _e38;
     return;
 }
@@ -2427,11 +2781,11 @@ kernel void ms_k_dielectric_eval(
     }
     MsDielectric _e8 = ms_k_dielectric(_e2, ms_in, _buffer_sizes);
     metal::float4 _e15 = ms_in[(_e2 * MS_K_IN) + 1u];
-    metal::float3 wo_35 = _e15.xyz;
+    metal::float3 wo_43 = _e15.xyz;
     metal::float4 _e23 = ms_in[(_e2 * MS_K_IN) + 2u];
-    metal::float3 wi_32 = _e23.xyz;
-    float _e29 = ms_dielectric_eval(_e8, wo_35, wi_32, MS_BK_ERFC_RATIO);
-    float _e30 = ms_dielectric_pdf(_e8, wo_35, wi_32, MS_BK_ERFC_RATIO);
+    metal::float3 wi_38 = _e23.xyz;
+    float _e29 = ms_dielectric_eval(_e8, wo_43, wi_38, MS_BK_ERFC_RATIO);
+    float _e30 = ms_dielectric_pdf(_e8, wo_43, wi_38, MS_BK_ERFC_RATIO);
     ms_out[_e2 * MS_K_OUT] = metal::float4(_e29, _e30, 0.0, 0.0);
     ms_out[(_e2 * MS_K_OUT) + 1u] = metal::float4(0.0);
     return;

@@ -2032,6 +2032,12 @@ fn ms_dielectric_sample(d: MsDielectric, wo: vec3<f32>, uc: f32, u: vec2<f32>) -
 // normalisation; the Rust type's `lost_avg` is then 1 − E_avg). Turquin 2019 ("Practical
 // multiple scattering compensation for microfacet models"): the single-scattering lobe scaled
 // by 1 + F0 (1 − E(μo))/E(μo), F0 = F(μ = 1); with F = 1 the furnace is E(μo)/E_l(μo).
+//
+// Sampling, as the Rust type: Kulla–Conty mixes the added lobe (a cosine-weighted direction on
+// wo's side) with probability q = 1 − E(μo) and the single-scattering sample, pdf = (1 − q)
+// pdf_ss + q |cos θi|/π; Turquin samples and weighs as the single-scattering lobe. The
+// Kulla–Conty sampler returns the single-scattering f at its wi: the added lobe needs E at
+// the sampled |cos θi|, which the including shader looks up and adds (ms_kulla_conty_sample_f).
 
 // One axis' tap: the lower node `i` and the weight `f` of node i + 1.
 struct MsLutTap {
@@ -2111,4 +2117,211 @@ fn ms_turquin_scale(e_o: f32, f0: vec3<f32>) -> vec3<f32> {
 fn ms_conductor_eval_turquin(c: MsConductor, wo: vec3<f32>, wi: vec3<f32>, e_o: f32,
     f0: vec3<f32>) -> vec3<f32> {
     return ms_conductor_eval(c, wo, wi) * ms_turquin_scale(e_o, f0);
+}
+
+// Kulla–Conty's probability of sampling the added lobe, 1 − E(μo) clamped to [0, 1]: its share
+// of the energy with F = 1 (the Rust type's `p_ms`).
+fn ms_kulla_conty_p_ms(e_o: f32) -> f32 {
+    return clamp(1.0 - e_o, 0.0, 1.0);
+}
+
+// The density of a cosine-weighted direction wi on wo's side, |cos θi|/π (0 across the
+// surface): the added lobe's sampling density.
+fn ms_cosine_pdf_same_side(wo: vec3<f32>, wi: vec3<f32>) -> f32 {
+    if !(wo.z * wi.z > 0.0) {
+        return 0.0;
+    }
+    return abs(wi.z) / MS_PI;
+}
+
+// The Kulla–Conty compensated conductor's pdf: the mixture (1 − q) pdf_ss + q |cos θi|/π,
+// q = ms_kulla_conty_p_ms(e_o), e_o = E(|cos θo|) (`CompensatedConductor::pdf`). Turquin's
+// pdf is the single-scattering one, ms_conductor_pdf.
+fn ms_conductor_pdf_kulla_conty(c: MsConductor, wo: vec3<f32>, wi: vec3<f32>, e_o: f32) -> f32 {
+    let q = ms_kulla_conty_p_ms(e_o);
+    return (1.0 - q) * ms_conductor_pdf(c, wo, wi) + q * ms_cosine_pdf_same_side(wo, wi);
+}
+
+// A cosine-weighted direction on the upper hemisphere from u (Malley's method, the Rust
+// `frame::cosine_hemisphere`): (√u₀ cos 2πu₁, √u₀ sin 2πu₁, √(1 − u₀)).
+fn ms_cosine_hemisphere(u: vec2<f32>) -> vec3<f32> {
+    let r = sqrt(u.x);
+    let cs = ms_cos_sin_turn(u.y);
+    return vec3<f32>(r * cs.x, r * cs.y, sqrt(max(1.0 - u.x, 0.0)));
+}
+
+// The Kulla–Conty compensated conductor's sample (`CompensatedConductor::sample`): with
+// probability q = 1 − E(μo) (uc < q) a cosine-weighted direction on wo's side, else the
+// single-scattering sample from the same u (a delta lobe returned as it is); pdf the mixture's,
+// ms_conductor_pdf_kulla_conty at wi (rejected where it is not ms_usable). f is the
+// single-scattering f at wi, ms_conductor_eval: the added lobe needs E(|cos θi|) at the
+// sampled direction, which the caller looks up and adds with ms_kulla_conty_sample_f.
+fn ms_conductor_sample_kulla_conty(c: MsConductor, wo: vec3<f32>, uc: f32, u: vec2<f32>,
+    e_o: f32) -> MsBsdfSample {
+    let none = MsBsdfSample(vec3<f32>(0.0), 0.0, vec3<f32>(0.0), 0u, 1.0);
+    if ms_on_horizon(wo.z) {
+        return none;
+    }
+    let q = ms_kulla_conty_p_ms(e_o);
+    var wi: vec3<f32>;
+    if uc < q {
+        wi = ms_cosine_hemisphere(u);
+        if wo.z < 0.0 {
+            wi.z = -wi.z;
+        }
+    } else {
+        let s = ms_conductor_sample(c, wo, (uc - q) / (1.0 - q), u);
+        if (s.flags & MS_SAMPLE_VALID) == 0u || (s.flags & MS_SAMPLE_SPECULAR) != 0u {
+            return s;
+        }
+        wi = s.wi;
+    }
+    let pdf = ms_conductor_pdf_kulla_conty(c, wo, wi, e_o);
+    if !ms_usable(pdf) {
+        return none;
+    }
+    return MsBsdfSample(wi, pdf, ms_conductor_eval(c, wo, wi), MS_SAMPLE_VALID, 1.0);
+}
+
+// A ms_conductor_sample_kulla_conty sample's f completed with the added lobe: + f_ms
+// ms_kulla_conty_lobe(e_o, e_i, e_avg) on wo's side, e_i = E(|cos θi|) at s.wi (a delta or
+// rejected sample as it is). Equal to ms_conductor_eval_kulla_conty at s.wi.
+fn ms_kulla_conty_sample_f(s: MsBsdfSample, wo: vec3<f32>, e_o: f32, e_i: f32, e_avg: f32,
+    f_ms: vec3<f32>) -> MsBsdfSample {
+    if (s.flags & MS_SAMPLE_VALID) == 0u || (s.flags & MS_SAMPLE_SPECULAR) != 0u
+        || !(wo.z * s.wi.z > 0.0) {
+        return s;
+    }
+    return MsBsdfSample(s.wi, s.pdf, s.f + ms_kulla_conty_lobe(e_o, e_i, e_avg) * f_ms, s.flags,
+        s.eta);
+}
+
+// The Turquin compensated conductor's sample (`CompensatedConductor::sample`, Scheme::Turquin):
+// the single-scattering sample with its own f scaled by ms_turquin_scale(e_o, f0) (a delta
+// lobe as it is; a scaled f that overflows is rejected); the pdf is ms_conductor_pdf.
+fn ms_conductor_sample_turquin(c: MsConductor, wo: vec3<f32>, uc: f32, u: vec2<f32>, e_o: f32,
+    f0: vec3<f32>) -> MsBsdfSample {
+    let s = ms_conductor_sample(c, wo, uc, u);
+    if (s.flags & MS_SAMPLE_VALID) == 0u || (s.flags & MS_SAMPLE_SPECULAR) != 0u {
+        return s;
+    }
+    let f = s.f * ms_turquin_scale(e_o, f0);
+    if !all(f <= vec3<f32>(3.4028235e38)) {
+        return MsBsdfSample(vec3<f32>(0.0), 0.0, vec3<f32>(0.0), 0u, 1.0);
+    }
+    return MsBsdfSample(s.wi, s.pdf, f, s.flags, s.eta);
+}
+
+// ---- The compensated rough dielectric (two-sided Kulla–Conty, Turquin's 1/E), as the Rust
+// `scattering::CompensatedDielectric` in f32, over the `lut` tables `LutKind::Dielectric`
+// (R, T over [side][η][roughness][μ]; the shader keeps E = R + T) and `DielectricAvg`.
+//
+// Axes: side 0 is wo outside (relative index η > 1), 1 wo inside (1/η); the η coordinate is
+// √((η − 1)/2) (Cycles' map, η = 1 + 2x²), texel centres as the other axes. Within a side the
+// lookup is trilinear over (η, roughness, μ), `Lut::lookup`'s weights and order of the sum.
+//
+// From side s the lost energy 1 − E_s(μo) is split: reflected share 1 − k_s, lobe
+// (1 − k_s)(1 − E_s(μo))(1 − E_s(μi))/(π(1 − E_avg,s)); transmitted share k_s, lobe
+// k_s(1 − E_s(μo))(1 − E_s̄(μi))/(π(1 − E_avg,s̄)) (s̄ the other side; ÷ η'² for radiance
+// transport). k_out = 1 − F_avg(η), k_in = k_out (1 − E_avg,out)/(η²(1 − E_avg,in))
+// (reciprocity of importance transport, f(out → in) = η² f(in → out)), both scaled down
+// together where k_in passes 1 (ms_dielectric_kulla_conty_k). Each lobe integrates to its share
+// exactly when E_avg is the average of the looked-up E, so the white furnace (importance
+// transport, reflection + transmission) is 1 + E(μo) − E_l(μo), the table's own filter error.
+// Turquin: the single-scattering lobes scaled by 1/E_s(μo).
+
+// The flat index of node (η ie, roughness ir, μ im) within one side's block of a row-major
+// [η][roughness][μ] table (the side's block starts at side · n_eta n_r n_mu).
+fn ms_lut_index3(ie: u32, ir: u32, im: u32, n_r: u32, n_mu: u32) -> u32 {
+    return (ie * n_r + ir) * n_mu + im;
+}
+
+// The η coordinate of an interface of relative index η ≥ 1: √((η − 1)/2).
+fn ms_lut_eta_coord(eta: f32) -> f32 {
+    return sqrt(max(eta - 1.0, 0.0) * 0.5);
+}
+
+// The trilinear filter over (η, roughness, μ): node (e.i + b₀, r.i + b₁, m.i + b₂) is lo[b₀ +
+// 2b₁] for b₂ = 0 and hi[b₀ + 2b₁] for b₂ = 1 (the η tap the fastest, as `Lut::lookup`'s
+// corners), summed in its order with its weights ((w_η) w_r) w_μ. (Two vec4 rather than an
+// array: naga's HLSL writes a by-value array's zero initialiser in a form glslang rejects.)
+fn ms_lut_trilerp(e: MsLutTap, r: MsLutTap, m: MsLutTap, lo: vec4<f32>, hi: vec4<f32>) -> f32 {
+    let we = vec2<f32>(1.0 - e.f, e.f);
+    let wr = vec2<f32>(1.0 - r.f, r.f);
+    let wm = vec2<f32>(1.0 - m.f, m.f);
+    var s = 0.0;
+    for (var b = 0u; b < 8u; b++) {
+        let v = select(lo[b & 3u], hi[b & 3u], b >= 4u);
+        s += we[b & 1u] * wr[(b >> 1u) & 1u] * wm[b >> 2u] * v;
+    }
+    return s;
+}
+
+// The bilinear filter over (η, roughness) of an average table: v[b₀ + 2b₁] the node
+// (e.i + b₀, r.i + b₁).
+fn ms_lut_bilerp_eta(e: MsLutTap, r: MsLutTap, v: vec4<f32>) -> f32 {
+    let we = vec2<f32>(1.0 - e.f, e.f);
+    let wr = vec2<f32>(1.0 - r.f, r.f);
+    var s = 0.0;
+    for (var b = 0u; b < 4u; b++) {
+        s += we[b & 1u] * wr[b >> 1u] * v[b];
+    }
+    return s;
+}
+
+// Kulla–Conty's transmitted shares (k_out, k_in) of an interface of relative index η with the
+// smooth interface's Fresnel average f_avg = 2∫F(μ)μ dμ from outside (the caller's; the Rust
+// type integrates it by Gauss–Legendre) and the sides' averages e_avg = (E_avg,out, E_avg,in).
+fn ms_dielectric_kulla_conty_k(eta: f32, f_avg: f32, e_avg: vec2<f32>) -> vec2<f32> {
+    let k_out = 1.0 - f_avg;
+    var k = vec2<f32>(k_out, k_out * (1.0 - e_avg.x) / (eta * eta * (1.0 - e_avg.y)));
+    if !(k.y <= 1.0) {
+        // (Also a lossless inside, whose lobes are 0 anyway.)
+        k = k * select(0.0, 1.0 / k.y, k.y > 1.0);
+    }
+    return k;
+}
+
+// Kulla–Conty's added f(wo, wi) of the dielectric (the Rust type's `f_ms`): e_o = E_s(|cos θo|)
+// of wo's side s, e_i = E_t(|cos θi|) and e_avg_i = E_avg,t of wi's side t, k_o = k_s. 0 on
+// the horizon and where nothing is lost.
+fn ms_dielectric_kulla_conty_lobe(d: MsDielectric, wo: vec3<f32>, wi: vec3<f32>, e_o: f32,
+    e_i: f32, e_avg_i: f32, k_o: f32) -> f32 {
+    if !(abs(wo.z) > 0.0 && abs(wi.z) > 0.0) {
+        return 0.0;
+    }
+    let lost = 1.0 - e_o;
+    let crossed = (wi.z < 0.0) != (wo.z < 0.0);
+    let share = select(1.0 - k_o, k_o, crossed);
+    let den = MS_PI * (1.0 - e_avg_i);
+    if !(den > 0.0 && lost > 0.0) {
+        return 0.0;
+    }
+    var f = share * lost * max(1.0 - e_i, 0.0) / den;
+    if crossed && d.transport == MS_TRANSPORT_RADIANCE {
+        let etap = select(1.0 / d.eta, d.eta, wo.z > 0.0);
+        f = f / (etap * etap);
+    }
+    return f;
+}
+
+// The Kulla–Conty compensated dielectric's f(wo, wi) without the cosine (grey): the
+// single-scattering f plus ms_dielectric_kulla_conty_lobe (a smooth interface as it is).
+fn ms_dielectric_eval_kulla_conty(d: MsDielectric, wo: vec3<f32>, wi: vec3<f32>, e_o: f32,
+    e_i: f32, e_avg_i: f32, k_o: f32) -> f32 {
+    let f = ms_dielectric_eval(d, wo, wi);
+    if ms_dielectric_smooth(d) {
+        return f;
+    }
+    return f + ms_dielectric_kulla_conty_lobe(d, wo, wi, e_o, e_i, e_avg_i, k_o);
+}
+
+// The Turquin compensated dielectric's f(wo, wi): the single-scattering f over e_o = E_s(μo)
+// of wo's side (1 where e_o is not positive).
+fn ms_dielectric_eval_turquin(d: MsDielectric, wo: vec3<f32>, wi: vec3<f32>, e_o: f32) -> f32 {
+    let f = ms_dielectric_eval(d, wo, wi);
+    if ms_dielectric_smooth(d) || !(e_o > 0.0) {
+        return f;
+    }
+    return f / e_o;
 }

@@ -96,32 +96,32 @@ float ms_inf() {
 }
 
 vec2 ms_cos_sin_turn(float v) {
-    float k_3 = roundEven((4.0 * v));
-    float r_1 = (v - (0.25 * k_3));
-    float x_5 = (MS_TAU * r_1);
+    float k_4 = roundEven((4.0 * v));
+    float r_3 = (v - (0.25 * k_4));
+    float x_5 = (MS_TAU * r_3);
     float x2_ = (x_5 * x_5);
-    float s_3 = (x_5 * (1.0 + (x2_ * (-0.16666667 + (x2_ * (0.008333333 + (x2_ * (-0.0001984127 + (x2_ * 2.7557319e-6)))))))));
-    float c_9 = (1.0 + (x2_ * (-0.5 + (x2_ * (0.041666668 + (x2_ * (-0.0013888889 + (x2_ * (2.4801588e-5 + (x2_ * -2.755732e-7))))))))));
-    int q = (int(k_3) & 3);
+    float s_6 = (x_5 * (1.0 + (x2_ * (-0.16666667 + (x2_ * (0.008333333 + (x2_ * (-0.0001984127 + (x2_ * 2.7557319e-6)))))))));
+    float c_12 = (1.0 + (x2_ * (-0.5 + (x2_ * (0.041666668 + (x2_ * (-0.0013888889 + (x2_ * (2.4801588e-5 + (x2_ * -2.755732e-7))))))))));
+    int q = (int(k_4) & 3);
     if ((q == 0)) {
-        return vec2(c_9, s_3);
+        return vec2(c_12, s_6);
     } else {
         if ((q == 1)) {
-            return vec2(-(s_3), c_9);
+            return vec2(-(s_6), c_12);
         } else {
             if ((q == 2)) {
-                return vec2(-(c_9), -(s_3));
+                return vec2(-(c_12), -(s_6));
             }
         }
     }
-    return vec2(s_3, -(c_9));
+    return vec2(s_6, -(c_12));
 }
 
 vec3 ms_rescaled(vec3 a) {
     bool local = false;
-    float m_4 = max(abs(a.x), max(abs(a.y), abs(a.z)));
-    if ((m_4 > 0.0)) {
-        local = (m_4 <= 3.4028235e38);
+    float m_5 = max(abs(a.x), max(abs(a.y), abs(a.z)));
+    if ((m_5 > 0.0)) {
+        local = (m_5 <= 3.4028235e38);
     } else {
         local = false;
     }
@@ -129,7 +129,7 @@ vec3 ms_rescaled(vec3 a) {
     if (!(_e16)) {
         return a;
     }
-    return (a / vec3(m_4));
+    return (a / vec3(m_5));
 }
 
 float ms_dot(vec3 a_1, vec3 b) {
@@ -159,9 +159,9 @@ vec3 ms_unit(vec3 w) {
     if ((abs((_e1 - 1.0)) <= 1e-6)) {
         return w;
     }
-    float m_5 = max(abs(w.x), max(abs(w.y), abs(w.z)));
-    if ((m_5 > 0.0)) {
-        local_2 = (m_5 <= 3.4028235e38);
+    float m_6 = max(abs(w.x), max(abs(w.y), abs(w.z)));
+    if ((m_6 > 0.0)) {
+        local_2 = (m_6 <= 3.4028235e38);
     } else {
         local_2 = false;
     }
@@ -169,7 +169,7 @@ vec3 ms_unit(vec3 w) {
     if (!(_e22)) {
         return w;
     }
-    vec3 _e27 = ms_normalize((w * (1.0 / m_5)));
+    vec3 _e27 = ms_normalize((w * (1.0 / m_6)));
     return _e27;
 }
 
@@ -185,13 +185,13 @@ vec3 ms_unit_normal(vec3 v_1) {
     if (_e9) {
         return (v_1 * (1.0 / sqrt(_e1)));
     }
-    float m_6 = max(abs(v_1.x), max(abs(v_1.y), abs(v_1.z)));
-    if ((m_6 == 0.0)) {
+    float m_7 = max(abs(v_1.x), max(abs(v_1.y), abs(v_1.z)));
+    if ((m_7 == 0.0)) {
         return vec3(0.0, 0.0, 1.0);
     }
-    vec3 s_4 = (v_1 / vec3(m_6));
-    float _e30 = ms_dot(s_4, s_4);
-    return (s_4 * (1.0 / sqrt(_e30)));
+    vec3 s_7 = (v_1 / vec3(m_7));
+    float _e30 = ms_dot(s_7, s_7);
+    return (s_7 * (1.0 / sqrt(_e30)));
 }
 
 vec3 ms_reflect(vec3 wo, vec3 n) {
@@ -204,11 +204,11 @@ bool ms_same_hemisphere(vec3 a_3, vec3 b_1) {
 }
 
 vec3 ms_half_vector_reflection(vec3 wo_1, vec3 wi) {
-    vec3 s_5 = (wo_1 + wi);
-    if (!((max(abs(s_5.x), max(abs(s_5.y), abs(s_5.z))) > 0.0))) {
+    vec3 s_8 = (wo_1 + wi);
+    if (!((max(abs(s_8.x), max(abs(s_8.y), abs(s_8.z))) > 0.0))) {
         return vec3(0.0);
     }
-    vec3 _e16 = ms_normalize(s_5);
+    vec3 _e16 = ms_normalize(s_8);
     if ((_e16.z < 0.0)) {
         return -(_e16);
     }
@@ -241,8 +241,8 @@ vec3 ms_facing(vec3 m_1, vec3 w_1) {
     float _e21 = ms_dot(_e12, _e12);
     vec3 wu = ((_e19 * _e12) / vec3(sqrt(_e21)));
     float _e25 = ms_dot(m_1, wu);
-    float e = (_e25 - 8e-7);
-    vec3 _e30 = ms_unit_normal((m_1 - (e * wu)));
+    float e_2 = (_e25 - 8e-7);
+    vec3 _e30 = ms_unit_normal((m_1 - (e_2 * wu)));
     return _e30;
 }
 
@@ -341,31 +341,31 @@ float ms_fresnel_dielectric(float cos_in, float eta_in_1) {
         eta_2 = (1.0 / _e9);
     }
     float _e12 = cos_i_1;
-    float c_10 = min(_e12, 1.0);
+    float c_13 = min(_e12, 1.0);
     float _e15 = eta_2;
     if ((_e15 == 1.0)) {
         return 0.0;
     }
-    if ((c_10 == 0.0)) {
+    if ((c_13 == 0.0)) {
         return 1.0;
     }
     float _e24 = eta_2;
     if ((_e24 > 1e18)) {
         float _e27 = eta_2;
-        float e_1 = (1.0 / _e27);
-        float cos_t_1 = sqrt((((1.0 - e_1) * (1.0 + e_1)) + ((c_10 * e_1) * (c_10 * e_1))));
-        r_parl = ((c_10 - (e_1 * cos_t_1)) / (c_10 + (e_1 * cos_t_1)));
-        r_perp = (((e_1 * c_10) - cos_t_1) / ((e_1 * c_10) + cos_t_1));
+        float e_3 = (1.0 / _e27);
+        float cos_t_1 = sqrt((((1.0 - e_3) * (1.0 + e_3)) + ((c_13 * e_3) * (c_13 * e_3))));
+        r_parl = ((c_13 - (e_3 * cos_t_1)) / (c_13 + (e_3 * cos_t_1)));
+        r_perp = (((e_3 * c_13) - cos_t_1) / ((e_3 * c_13) + cos_t_1));
     } else {
         float _e51 = eta_2;
         if ((_e51 > 1.0)) {
             float _e54 = eta_2;
             float _e57 = eta_2;
-            ect2_ = (((_e54 - 1.0) * (_e57 + 1.0)) + (c_10 * c_10));
+            ect2_ = (((_e54 - 1.0) * (_e57 + 1.0)) + (c_13 * c_13));
         } else {
             float _e63 = eta_2;
             float _e64 = eta_2;
-            ect2_ = ((_e63 * _e64) - ((1.0 - c_10) * (1.0 + c_10)));
+            ect2_ = ((_e63 * _e64) - ((1.0 - c_13) * (1.0 + c_13)));
         }
         float _e72 = ect2_;
         if ((_e72 <= 0.0)) {
@@ -375,9 +375,9 @@ float ms_fresnel_dielectric(float cos_in, float eta_in_1) {
         float ect = sqrt(_e76);
         float _e78 = eta_2;
         float _e79 = eta_2;
-        float e2c = ((_e78 * _e79) * c_10);
+        float e2c = ((_e78 * _e79) * c_13);
         r_parl = ((e2c - ect) / (e2c + ect));
-        r_perp = ((c_10 - ect) / (c_10 + ect));
+        r_perp = ((c_13 - ect) / (c_13 + ect));
     }
     float _e88 = r_parl;
     float _e89 = r_parl;
@@ -395,39 +395,39 @@ float ms_cnorm(vec2 a_5) {
 }
 
 float ms_cnorm_ratio(vec2 a_6, vec2 b_3) {
-    float s_6 = max(max(abs(a_6.x), abs(a_6.y)), max(abs(b_3.x), abs(b_3.y)));
-    if ((s_6 == 0.0)) {
+    float s_9 = max(max(abs(a_6.x), abs(a_6.y)), max(abs(b_3.x), abs(b_3.y)));
+    if ((s_9 == 0.0)) {
         return 0.0;
     }
-    if (!((s_6 <= 3.4028235e38))) {
+    if (!((s_9 <= 3.4028235e38))) {
         float _e19 = ms_cnorm(a_6);
         float _e20 = ms_cnorm(b_3);
         return (_e19 / _e20);
     }
-    float _e24 = ms_cnorm((a_6 / vec2(s_6)));
-    float _e27 = ms_cnorm((b_3 / vec2(s_6)));
+    float _e24 = ms_cnorm((a_6 / vec2(s_9)));
+    float _e27 = ms_cnorm((b_3 / vec2(s_9)));
     return (_e24 / _e27);
 }
 
 vec2 ms_crecip(vec2 a_7) {
     if ((abs(a_7.x) >= abs(a_7.y))) {
-        float r_2 = (a_7.y / a_7.x);
-        float d_9 = (a_7.x + (a_7.y * r_2));
-        return vec2((1.0 / d_9), (-(r_2) / d_9));
+        float r_4 = (a_7.y / a_7.x);
+        float d_12 = (a_7.x + (a_7.y * r_4));
+        return vec2((1.0 / d_12), (-(r_4) / d_12));
     }
-    float r_3 = (a_7.x / a_7.y);
-    float d_10 = ((a_7.x * r_3) + a_7.y);
-    return vec2((r_3 / d_10), (-1.0 / d_10));
+    float r_5 = (a_7.x / a_7.y);
+    float d_13 = ((a_7.x * r_5) + a_7.y);
+    return vec2((r_5 / d_13), (-1.0 / d_13));
 }
 
 vec2 ms_csqrt(vec2 a_8) {
     float s_1 = 0.0;
     float _e1 = ms_cnorm(a_8);
-    float r_4 = sqrt(_e1);
-    if ((r_4 == 0.0)) {
+    float r_6 = sqrt(_e1);
+    if ((r_6 == 0.0)) {
         return vec2(0.0);
     }
-    float t_3 = sqrt(((r_4 + abs(a_8.x)) * 0.5));
+    float t_3 = sqrt(((r_6 + abs(a_8.x)) * 0.5));
     if ((a_8.x >= 0.0)) {
         return vec2(t_3, (a_8.y / (t_3 + t_3)));
     }
@@ -496,18 +496,18 @@ float ms_fresnel_conductor(float cos_in_1, float eta_3, float k) {
 }
 
 float ms_fresnel_schlick(float cos_i_2, float f0_) {
-    float m_7 = (1.0 - min(max(cos_i_2, 0.0), 1.0));
-    float m2_ = (m_7 * m_7);
-    return (f0_ + ((1.0 - f0_) * ((m2_ * m2_) * m_7)));
+    float m_8 = (1.0 - min(max(cos_i_2, 0.0), 1.0));
+    float m2_ = (m_8 * m_8);
+    return (f0_ + ((1.0 - f0_) * ((m2_ * m2_) * m_8)));
 }
 
 float ms_fresnel_f82_tint(float cos_i_3, float f0_1, float h) {
     float mu = min(max(cos_i_3, 0.0), 1.0);
-    float m_8 = (1.0 - mu);
-    float m5_ = ((((m_8 * m_8) * m_8) * m_8) * m_8);
+    float m_9 = (1.0 - mu);
+    float m5_ = ((((m_9 * m_9) * m_9) * m_9) * m_9);
     float a_12 = (((f0_1 + ((1.0 - f0_1) * 0.46266437)) * (1.0 - h)) / 0.05665278);
-    float r_5 = ((f0_1 + ((1.0 - f0_1) * m5_)) - (((a_12 * mu) * m5_) * m_8));
-    return min(max(r_5, 0.0), 1.0);
+    float r_7 = ((f0_1 + ((1.0 - f0_1) * m5_)) - (((a_12 * mu) * m5_) * m_9));
+    return min(max(r_7, 0.0), 1.0);
 }
 
 vec3 ms_fresnel_eval(MsFresnel fr, float cos_i_4) {
@@ -657,8 +657,8 @@ vec3 ms_ggx_sample_wm(vec3 w_in, vec2 alpha_7, vec2 u_1) {
     float _e12 = w_7.x;
     float _e16 = w_7.y;
     float _e19 = w_7.z;
-    vec3 s_7 = vec3((alpha_7.x * _e12), (alpha_7.y * _e16), _e19);
-    float n2_ = (((s_7.x * s_7.x) + (s_7.y * s_7.y)) + (s_7.z * s_7.z));
+    vec3 s_10 = vec3((alpha_7.x * _e12), (alpha_7.y * _e16), _e19);
+    float n2_ = (((s_10.x * s_10.x) + (s_10.y * s_10.y)) + (s_10.z * s_10.z));
     if ((n2_ >= 1e-24)) {
         local_8 = (n2_ <= 1e24);
     } else {
@@ -671,12 +671,12 @@ vec3 ms_ggx_sample_wm(vec3 w_in, vec2 alpha_7, vec2 u_1) {
         float _e45 = w_7.x;
         float _e49 = w_7.y;
         float _e54 = w_7.z;
-        float d_11 = (((_e42.x * _e45) + (_e42.y * _e49)) + (_e42.z * _e54));
+        float d_14 = (((_e42.x * _e45) + (_e42.y * _e49)) + (_e42.z * _e54));
         float _e58 = w_7.x;
         float _e61 = w_7.y;
         float _e65 = w_7.z;
         float l1_ = ((abs(_e58) + abs(_e61)) + abs(_e65));
-        if ((d_11 > (2.4e-7 * l1_))) {
+        if ((d_14 > (2.4e-7 * l1_))) {
             return _e42;
         }
         vec3 _e71 = w_7;
@@ -709,8 +709,8 @@ float ms_ggx_pdf_dcos(vec3 wm_4, vec2 alpha_9) {
 
 MsSample ms_ggx_sample_dcos(vec2 alpha_10, vec2 u_3) {
     vec2 _e3 = ms_cos_sin_turn(u_3.y);
-    float r_6 = sqrt(u_3.x);
-    vec3 _e21 = ms_unit_normal(vec3(((alpha_10.x * r_6) * _e3.x), ((alpha_10.y * r_6) * _e3.y), sqrt(max((1.0 - u_3.x), 0.0))));
+    float r_8 = sqrt(u_3.x);
+    vec3 _e21 = ms_unit_normal(vec3(((alpha_10.x * r_8) * _e3.x), ((alpha_10.y * r_8) * _e3.y), sqrt(max((1.0 - u_3.x), 0.0))));
     float _e22 = ms_ggx_d(_e21, alpha_10);
     return MsSample(_e21, (_e22 * _e21.z));
 }
@@ -734,45 +734,45 @@ MsBoundedCap ms_ggx_bounded_cap(vec3 w_9, vec2 alpha_11) {
     float _e30 = v_2.x;
     float _e33 = v_2.y;
     float _e35 = v_2.y;
-    float s_8 = (1.0 + sqrt(((_e28 * _e30) + (_e33 * _e35))));
+    float s_11 = (1.0 + sqrt(((_e28 * _e30) + (_e33 * _e35))));
     float a2_ = (a_13 * a_13);
-    float s2_ = (s_8 * s_8);
+    float s2_ = (s_11 * s_11);
     float _e44 = v_2.z;
     float _e47 = v_2.z;
     float den_2 = (s2_ + ((a2_ * _e44) * _e47));
-    float k_4 = (((1.0 - a2_) * s2_) / den_2);
+    float k_5 = (((1.0 - a2_) * s2_) / den_2);
     float _e55 = v_2.z;
     float _e57 = v_2.z;
     float one_minus_k = ((a2_ * (s2_ + (_e55 * _e57))) / den_2);
-    return MsBoundedCap(_e18, (k_4 * _e18.z), (one_minus_k * _e18.z));
+    return MsBoundedCap(_e18, (k_5 * _e18.z), (one_minus_k * _e18.z));
 }
 
 float ms_ggx_pdf_bounded(vec3 w_in_1, vec3 wm_5, vec2 alpha_12) {
     vec3 _e3 = ms_unit(w_in_1);
     MsBoundedCap _e4 = ms_ggx_bounded_cap(_e3, alpha_12);
     vec3 ws = _e4.ws;
-    float b_4 = _e4.b;
+    float b_6 = _e4.b;
     vec3 _e15 = ms_normalize(vec3((wm_5.x / alpha_12.x), (wm_5.y / alpha_12.y), wm_5.z));
     float _e16 = ms_dot(_e15, ws);
     float cz = (((_e16 + _e16) * _e15.z) - ws.z);
-    if ((cz < -(b_4))) {
+    if ((cz < -(b_6))) {
         return 0.0;
     }
     float _e25 = ms_ggx_pdf(_e3, wm_5, alpha_12);
-    return ((_e25 * (1.0 + ws.z)) / (1.0 + b_4));
+    return ((_e25 * (1.0 + ws.z)) / (1.0 + b_6));
 }
 
 MsSample ms_ggx_sample_bounded(vec3 w_in_2, vec2 alpha_13, vec2 u_4) {
     vec3 _e3 = ms_unit(w_in_2);
     MsBoundedCap _e4 = ms_ggx_bounded_cap(_e3, alpha_13);
     vec3 ws_1 = _e4.ws;
-    float b_5 = _e4.b;
+    float b_7 = _e4.b;
     vec2 _e8 = ms_cos_sin_turn(u_4.x);
-    float above_1 = ((1.0 - u_4.y) * (1.0 + b_5));
+    float above_1 = ((1.0 - u_4.y) * (1.0 + b_7));
     float one_minus_b = ((((ws_1.x * ws_1.x) + (ws_1.y * ws_1.y)) / (1.0 + ws_1.z)) + _e4.top);
-    float sin_1 = sqrt(max(((u_4.y * (1.0 + b_5)) * (above_1 + one_minus_b)), 0.0));
-    vec3 m_9 = vec3(((sin_1 * _e8.x) + ws_1.x), ((sin_1 * _e8.y) + ws_1.y), (above_1 + _e4.top));
-    vec3 _e58 = ms_normalize(vec3((alpha_13.x * m_9.x), (alpha_13.y * m_9.y), max(m_9.z, 0.0)));
+    float sin_1 = sqrt(max(((u_4.y * (1.0 + b_7)) * (above_1 + one_minus_b)), 0.0));
+    vec3 m_10 = vec3(((sin_1 * _e8.x) + ws_1.x), ((sin_1 * _e8.y) + ws_1.y), (above_1 + _e4.top));
+    vec3 _e58 = ms_normalize(vec3((alpha_13.x * m_10.x), (alpha_13.y * m_10.y), max(m_10.z, 0.0)));
     vec3 _e59 = ms_facing(_e58, _e3);
     float _e60 = ms_ggx_pdf_bounded(_e3, _e59, alpha_13);
     return MsSample(_e59, _e60);
@@ -785,12 +785,12 @@ float ms_ggx_pdf_bounded_reflection(vec3 wo_8, vec3 wi_8, vec2 alpha_14) {
         return 0.0;
     }
     float _e7 = ms_dot(wo_8, _e3);
-    float c_11 = abs(_e7);
-    if (!((c_11 > 0.0))) {
+    float c_14 = abs(_e7);
+    if (!((c_14 > 0.0))) {
         return 0.0;
     }
     float _e13 = ms_ggx_pdf_bounded(wo_8, _e3, alpha_14);
-    return (_e13 / (4.0 * c_11));
+    return (_e13 / (4.0 * c_14));
 }
 
 vec2 ms_bk_segment(float x, int k0_, int k1_) {
@@ -810,8 +810,8 @@ float ms_bk_erfcx(float x_1) {
         return (1.0 - (1.1283792 * x_1));
     }
     if ((x_1 >= 32.0)) {
-        float r_7 = (1.0 / (x_1 * x_1));
-        return (((1.0 - (r_7 * (0.5 - (r_7 * (0.75 - (r_7 * (1.875 - (r_7 * 6.5625)))))))) * MS_FRAC_1_SQRT_PI) / x_1);
+        float r_9 = (1.0 / (x_1 * x_1));
+        return (((1.0 - (r_9 * (0.5 - (r_9 * (0.75 - (r_9 * (1.875 - (r_9 * 6.5625)))))))) * MS_FRAC_1_SQRT_PI) / x_1);
     }
     vec2 _e30 = ms_bk_segment(x_1, MS_BK_ERFCX_K0_, MS_BK_ERFCX_K1_);
     uint i_2 = (2u * uint(_e30.x));
@@ -826,8 +826,8 @@ float ms_bk_erfc_ratio(float a_9) {
         return (1.0 - (MS_SQRT_PI * a_9));
     }
     if ((a_9 >= 32.0)) {
-        float r_8 = (1.0 / (a_9 * a_9));
-        return (r_8 * (0.5 - (r_8 * (0.75 - (r_8 * (1.875 - (r_8 * (6.5625 - (r_8 * 29.53125)))))))));
+        float r_10 = (1.0 / (a_9 * a_9));
+        return (r_10 * (0.5 - (r_10 * (0.75 - (r_10 * (1.875 - (r_10 * (6.5625 - (r_10 * 29.53125)))))))));
     }
     vec2 _e28 = ms_bk_segment(a_9, MS_BK_ERFC_RATIO_K0_, MS_BK_ERFC_RATIO_K1_);
     uint i_3 = (2u * uint(_e28.x));
@@ -882,9 +882,9 @@ float ms_bk_ln_1m(float xi) {
 float ms_beckmann_d(vec3 wm_6, vec2 alpha_15) {
     bool local_9 = false;
     float z_6 = wm_6.z;
-    float r_9 = (1.0 / (alpha_15.x * alpha_15.y));
-    float x_10 = ((wm_6.x * alpha_15.y) * r_9);
-    float y_4 = ((wm_6.y * alpha_15.x) * r_9);
+    float r_11 = (1.0 / (alpha_15.x * alpha_15.y));
+    float x_10 = ((wm_6.x * alpha_15.y) * r_11);
+    float y_4 = ((wm_6.y * alpha_15.x) * r_11);
     float z2_1 = (z_6 * z_6);
     if ((z_6 > 0.0)) {
         local_9 = (z2_1 > 0.0);
@@ -895,11 +895,11 @@ float ms_beckmann_d(vec3 wm_6, vec2 alpha_15) {
     if (!(_e24)) {
         return 0.0;
     }
-    float e_2 = (((x_10 * x_10) + (y_4 * y_4)) / z2_1);
-    if ((e_2 <= 80.0)) {
-        return ((exp(-(e_2)) * r_9) / ((MS_PI * z2_1) * z2_1));
+    float e_4 = (((x_10 * x_10) + (y_4 * y_4)) / z2_1);
+    if ((e_4 <= 80.0)) {
+        return ((exp(-(e_4)) * r_11) / ((MS_PI * z2_1) * z2_1));
     }
-    return exp((((log(r_9) - 1.14473) - (4.0 * log(z_6))) - e_2));
+    return exp((((log(r_11) - 1.14473) - (4.0 * log(z_6))) - e_4));
 }
 
 float ms_beckmann_lambda_cot(float a_10) {
@@ -917,11 +917,11 @@ float ms_beckmann_lambda_cot(float a_10) {
 float ms_beckmann_lambda(vec3 w_10, vec2 alpha_16) {
     float x_11 = (alpha_16.x * w_10.x);
     float y_5 = (alpha_16.y * w_10.y);
-    float s_9 = sqrt(((x_11 * x_11) + (y_5 * y_5)));
-    if (!((s_9 > 0.0))) {
+    float s_12 = sqrt(((x_11 * x_11) + (y_5 * y_5)));
+    if (!((s_12 > 0.0))) {
         return 0.0;
     }
-    float _e19 = ms_beckmann_lambda_cot((abs(w_10.z) / s_9));
+    float _e19 = ms_beckmann_lambda_cot((abs(w_10.z) / s_12));
     return _e19;
 }
 
@@ -996,11 +996,11 @@ MsSample ms_beckmann_sample_dcos(vec2 alpha_22, vec2 u_6) {
         v_3 = vec3((alpha_22.x * _e3.x), (alpha_22.y * _e3.y), 0.0);
     } else {
         float _e17 = ms_bk_ln_1m(u_6.x);
-        float r_10 = sqrt(-(_e17));
-        if ((r_10 > 1.0)) {
-            v_3 = vec3((alpha_22.x * _e3.x), (alpha_22.y * _e3.y), (1.0 / r_10));
+        float r_12 = sqrt(-(_e17));
+        if ((r_12 > 1.0)) {
+            v_3 = vec3((alpha_22.x * _e3.x), (alpha_22.y * _e3.y), (1.0 / r_12));
         } else {
-            v_3 = vec3(((alpha_22.x * r_10) * _e3.x), ((alpha_22.y * r_10) * _e3.y), 1.0);
+            v_3 = vec3(((alpha_22.x * r_12) * _e3.x), ((alpha_22.y * r_12) * _e3.y), 1.0);
         }
     }
     vec3 _e41 = v_3;
@@ -1052,11 +1052,11 @@ float ms_bk_visible_x(float a_11, float u_7) {
         {
             float _e40 = x_2;
             float _e42 = x_2;
-            float e_3 = exp((-(_e40) * _e42));
+            float e_5 = exp((-(_e40) * _e42));
             float _e45 = x_2;
             float _e47 = ms_bk_erfcx(abs(_e45));
-            float ec = (_e47 * e_3);
-            float half_e = (0.2820948 * e_3);
+            float ec = (_e47 * e_5);
+            float half_e = (0.2820948 * e_5);
             f = 0.0;
             float _e53 = x_2;
             if ((_e53 <= 0.0)) {
@@ -1083,7 +1083,7 @@ float ms_bk_visible_x(float a_11, float u_7) {
             float _e79 = x_2;
             float _e82 = x_2;
             float g2_ = (1.0 - ((2.0 * _e79) * (_e82 + a_11)));
-            float big_e = (e_3 * MS_FRAC_1_SQRT_PI);
+            float big_e = (e_5 * MS_FRAC_1_SQRT_PI);
             float _e89 = f;
             float fg2_ = (_e89 * g2_);
             float g1e = ((g1_ * g1_) * big_e);
@@ -1152,14 +1152,14 @@ vec3 ms_beckmann_sample_wm(vec3 w_13, vec2 alpha_23, vec2 u_8) {
     float _e14 = sign_1;
     float sy_1 = ((_e14 * alpha_23.y) * w_13.y);
     float _e19 = sign_1;
-    float c_12 = (_e19 * w_13.z);
+    float c_15 = (_e19 * w_13.z);
     float h_2 = sqrt(((sx_1 * sx_1) + (sy_1 * sy_1)));
     float _e27 = ms_bk_quantile(u_8.y);
     if ((h_2 > 0.0)) {
         float inv_1 = (1.0 / h_2);
         cp = (sx_1 * inv_1);
         sp = (sy_1 * inv_1);
-        float _e41 = ms_bk_visible_x((c_12 * inv_1), u_8.x);
+        float _e41 = ms_bk_visible_x((c_15 * inv_1), u_8.x);
         x_3 = _e41;
     } else {
         float _e43 = ms_bk_quantile(u_8.x);
@@ -1397,10 +1397,10 @@ MsBsdfSample ms_conductor_sample(MsConductor c_6, vec3 wo_19, float uc, vec2 u_1
     }
     bool _e15 = ms_effectively_smooth(c_6.mf);
     if (_e15) {
-        vec3 wi_26 = vec3(-(wo_19.x), -(wo_19.y), wo_19.z);
-        float k_5 = (1.0 / abs(wi_26.z));
+        vec3 wi_32 = vec3(-(wo_19.x), -(wo_19.y), wo_19.z);
+        float k_6 = (1.0 / abs(wi_32.z));
         vec3 _e29 = ms_fresnel_eval(c_6.fresnel, abs(wo_19.z));
-        return MsBsdfSample(wi_26, 1.0, (_e29 * k_5), 3u, 1.0);
+        return MsBsdfSample(wi_32, 1.0, (_e29 * k_6), 3u, 1.0);
     }
     MsSample _e36 = ms_sample(c_6.mf, wo_19, u_12);
     vec3 _e38 = ms_reflect(wo_19, _e36.wm);
@@ -1565,27 +1565,27 @@ MsBsdfSample ms_dielectric_sample_smooth(MsDielectric d_7, vec3 wo_25, float uc_
     float f_2 = 0.0;
     float _e5 = ms_fresnel_dielectric(wo_25.z, d_7.eta);
     if ((uc_1 < _e5)) {
-        vec3 wi_27 = vec3(-(wo_25.x), -(wo_25.y), wo_25.z);
-        return MsBsdfSample(wi_27, _e5, vec3((_e5 / abs(wi_27.z))), 3u, 1.0);
+        vec3 wi_33 = vec3(-(wo_25.x), -(wo_25.y), wo_25.z);
+        return MsBsdfSample(wi_33, _e5, vec3((_e5 / abs(wi_33.z))), 3u, 1.0);
     }
     MsBsdfSample none_2 = MsBsdfSample(vec3(0.0), 0.0, vec3(0.0), 0u, 1.0);
     vec4 _e33 = ms_refract(wo_25, vec3(0.0, 0.0, 1.0), d_7.eta);
     if ((_e33.w == 0.0)) {
         return none_2;
     }
-    vec3 wi_28 = _e33.xyz;
-    bool _e39 = ms_on_horizon(wi_28.z);
+    vec3 wi_34 = _e33.xyz;
+    bool _e39 = ms_on_horizon(wi_34.z);
     if (_e39) {
         return none_2;
     }
     float t_8 = (1.0 - _e5);
-    f_2 = (t_8 / abs(wi_28.z));
+    f_2 = (t_8 / abs(wi_34.z));
     if ((d_7.transport == MS_TRANSPORT_RADIANCE)) {
         float _e49 = f_2;
         f_2 = (_e49 / (_e33.w * _e33.w));
     }
     float _e54 = f_2;
-    return MsBsdfSample(wi_28, t_8, vec3(_e54), 7u, _e33.w);
+    return MsBsdfSample(wi_34, t_8, vec3(_e54), 7u, _e33.w);
 }
 
 MsBsdfSample ms_dielectric_sample(MsDielectric d_8, vec3 wo_26, float uc_2, vec2 u_13) {
@@ -1626,11 +1626,11 @@ MsBsdfSample ms_dielectric_sample(MsDielectric d_8, vec3 wo_26, float uc_2, vec2
             return none_3;
         }
         float _e39 = ms_reflected(d_8.mf, d_8.masking, wo_26, _e23, _e34);
-        float f_3 = (_e21 * _e39);
+        float f_4 = (_e21 * _e39);
         float pdf_1 = ((_e17.pdf * _e21) / (4.0 * abs(_e19)));
         bool _e47 = ms_usable(pdf_1);
         if (!(!(_e47))) {
-            local_23 = !((f_3 <= 3.4028235e38));
+            local_23 = !((f_4 <= 3.4028235e38));
         } else {
             local_23 = true;
         }
@@ -1638,17 +1638,17 @@ MsBsdfSample ms_dielectric_sample(MsDielectric d_8, vec3 wo_26, float uc_2, vec2
         if (_e56) {
             return none_3;
         }
-        return MsBsdfSample(_e23, pdf_1, vec3(f_3), MS_SAMPLE_VALID, 1.0);
+        return MsBsdfSample(_e23, pdf_1, vec3(f_4), MS_SAMPLE_VALID, 1.0);
     }
     vec4 _e62 = ms_refract(wo_26, wm_15, d_8.eta);
     if ((_e62.w == 0.0)) {
         return none_3;
     }
-    vec3 wi_29 = _e62.xyz;
+    vec3 wi_35 = _e62.xyz;
     float etap_6 = _e62.w;
-    bool _e68 = ms_same_hemisphere(wo_26, wi_29);
+    bool _e68 = ms_same_hemisphere(wo_26, wi_35);
     if (!(_e68)) {
-        bool _e73 = ms_on_horizon(wi_29.z);
+        bool _e73 = ms_on_horizon(wi_35.z);
         local_24 = _e73;
     } else {
         local_24 = true;
@@ -1658,14 +1658,14 @@ MsBsdfSample ms_dielectric_sample(MsDielectric d_8, vec3 wo_26, float uc_2, vec2
         return none_3;
     }
     float t_9 = (1.0 - _e21);
-    float _e80 = ms_jacobian_refraction(wo_26, wi_29, wm_15, etap_6);
+    float _e80 = ms_jacobian_refraction(wo_26, wi_35, wm_15, etap_6);
     float pdf_2 = ((_e17.pdf * t_9) * _e80);
     float _e83 = ms_d(d_8.mf, wm_15);
     bool _e84 = ms_usable(_e83);
     if (!(_e84)) {
         return none_3;
     }
-    float _e86 = ms_dielectric_f_transmission(d_8, wo_26, wi_29, wm_15, _e83, etap_6, t_9);
+    float _e86 = ms_dielectric_f_transmission(d_8, wo_26, wi_35, wm_15, _e83, etap_6, t_9);
     bool _e87 = ms_usable(pdf_2);
     if (!(!(_e87))) {
         local_25 = !((_e86 <= 3.4028235e38));
@@ -1676,7 +1676,7 @@ MsBsdfSample ms_dielectric_sample(MsDielectric d_8, vec3 wo_26, float uc_2, vec2
     if (_e96) {
         return none_3;
     }
-    return MsBsdfSample(wi_29, pdf_2, vec3(_e86), 5u, etap_6);
+    return MsBsdfSample(wi_35, pdf_2, vec3(_e86), 5u, etap_6);
 }
 
 MsLutTap ms_lut_tap(float x_4, uint n_2) {
@@ -1732,6 +1732,268 @@ vec3 ms_conductor_eval_turquin(MsConductor c_8, vec3 wo_28, vec3 wi_25, float e_
     vec3 _e5 = ms_conductor_eval(c_8, wo_28, wi_25);
     vec3 _e6 = ms_turquin_scale(e_o_3, f0_3);
     return (_e5 * _e6);
+}
+
+float ms_kulla_conty_p_ms(float e_o_4) {
+    return clamp((1.0 - e_o_4), 0.0, 1.0);
+}
+
+float ms_cosine_pdf_same_side(vec3 wo_29, vec3 wi_26) {
+    if (!(((wo_29.z * wi_26.z) > 0.0))) {
+        return 0.0;
+    }
+    return (abs(wi_26.z) / MS_PI);
+}
+
+float ms_conductor_pdf_kulla_conty(MsConductor c_9, vec3 wo_30, vec3 wi_27, float e_o_5) {
+    float _e4 = ms_kulla_conty_p_ms(e_o_5);
+    float _e7 = ms_conductor_pdf(c_9, wo_30, wi_27);
+    float _e9 = ms_cosine_pdf_same_side(wo_30, wi_27);
+    return (((1.0 - _e4) * _e7) + (_e4 * _e9));
+}
+
+vec3 ms_cosine_hemisphere(vec2 u_14) {
+    float r_13 = sqrt(u_14.x);
+    vec2 _e4 = ms_cos_sin_turn(u_14.y);
+    return vec3((r_13 * _e4.x), (r_13 * _e4.y), sqrt(max((1.0 - u_14.x), 0.0)));
+}
+
+MsBsdfSample ms_conductor_sample_kulla_conty(MsConductor c_10, vec3 wo_31, float uc_3, vec2 u_15, float e_o_6) {
+    vec3 wi_28 = vec3(0.0);
+    bool local_26 = false;
+    MsBsdfSample none_4 = MsBsdfSample(vec3(0.0), 0.0, vec3(0.0), 0u, 1.0);
+    bool _e14 = ms_on_horizon(wo_31.z);
+    if (_e14) {
+        return none_4;
+    }
+    float _e15 = ms_kulla_conty_p_ms(e_o_6);
+    if ((uc_3 < _e15)) {
+        vec3 _e18 = ms_cosine_hemisphere(u_15);
+        wi_28 = _e18;
+        if ((wo_31.z < 0.0)) {
+            float _e24 = wi_28.z;
+            wi_28.z = -(_e24);
+        }
+    } else {
+        MsBsdfSample _e30 = ms_conductor_sample(c_10, wo_31, ((uc_3 - _e15) / (1.0 - _e15)), u_15);
+        if (!(((_e30.flags & MS_SAMPLE_VALID) == 0u))) {
+            local_26 = ((_e30.flags & MS_SAMPLE_SPECULAR) != 0u);
+        } else {
+            local_26 = true;
+        }
+        bool _e45 = local_26;
+        if (_e45) {
+            return _e30;
+        }
+        wi_28 = _e30.wi;
+    }
+    vec3 _e47 = wi_28;
+    float _e48 = ms_conductor_pdf_kulla_conty(c_10, wo_31, _e47, e_o_6);
+    bool _e49 = ms_usable(_e48);
+    if (!(_e49)) {
+        return none_4;
+    }
+    vec3 _e51 = wi_28;
+    vec3 _e52 = wi_28;
+    vec3 _e53 = ms_conductor_eval(c_10, wo_31, _e52);
+    return MsBsdfSample(_e51, _e48, _e53, MS_SAMPLE_VALID, 1.0);
+}
+
+MsBsdfSample ms_kulla_conty_sample_f(MsBsdfSample s_3, vec3 wo_32, float e_o_7, float e_i_2, float e_avg_3, vec3 f_ms_1) {
+    bool local_27 = false;
+    bool local_28 = false;
+    if (!(((s_3.flags & MS_SAMPLE_VALID) == 0u))) {
+        local_27 = ((s_3.flags & MS_SAMPLE_SPECULAR) != 0u);
+    } else {
+        local_27 = true;
+    }
+    bool _e20 = local_27;
+    if (!(_e20)) {
+        local_28 = !(((wo_32.z * s_3.wi.z) > 0.0));
+    } else {
+        local_28 = true;
+    }
+    bool _e32 = local_28;
+    if (_e32) {
+        return s_3;
+    }
+    float _e36 = ms_kulla_conty_lobe(e_o_7, e_i_2, e_avg_3);
+    return MsBsdfSample(s_3.wi, s_3.pdf, (s_3.f + (_e36 * f_ms_1)), s_3.flags, s_3.eta);
+}
+
+MsBsdfSample ms_conductor_sample_turquin(MsConductor c_11, vec3 wo_33, float uc_4, vec2 u_16, float e_o_8, vec3 f0_4) {
+    bool local_29 = false;
+    MsBsdfSample _e6 = ms_conductor_sample(c_11, wo_33, uc_4, u_16);
+    if (!(((_e6.flags & MS_SAMPLE_VALID) == 0u))) {
+        local_29 = ((_e6.flags & MS_SAMPLE_SPECULAR) != 0u);
+    } else {
+        local_29 = true;
+    }
+    bool _e21 = local_29;
+    if (_e21) {
+        return _e6;
+    }
+    vec3 _e23 = ms_turquin_scale(e_o_8, f0_4);
+    vec3 f_5 = (_e6.f * _e23);
+    if (!(all(lessThanEqual(f_5, vec3(3.4028235e38))))) {
+        return MsBsdfSample(vec3(0.0), 0.0, vec3(0.0), 0u, 1.0);
+    }
+    return MsBsdfSample(_e6.wi, _e6.pdf, f_5, _e6.flags, _e6.eta);
+}
+
+uint ms_lut_index3_(uint ie, uint ir_1, uint im_1, uint n_r, uint n_mu_1) {
+    return ((((ie * n_r) + ir_1) * n_mu_1) + im_1);
+}
+
+float ms_lut_eta_coord(float eta_4) {
+    return sqrt((max((eta_4 - 1.0), 0.0) * 0.5));
+}
+
+float ms_lut_trilerp(MsLutTap e, MsLutTap r_1, MsLutTap m_4, vec4 lo_2, vec4 hi_2) {
+    float s_4 = 0.0;
+    uint b_4 = 0u;
+    vec2 we = vec2((1.0 - e.f), e.f);
+    vec2 wr = vec2((1.0 - r_1.f), r_1.f);
+    vec2 wm_16 = vec2((1.0 - m_4.f), m_4.f);
+    bool loop_init_1 = true;
+    while(true) {
+        if (!loop_init_1) {
+            uint _e59 = b_4;
+            b_4 = (_e59 + 1u);
+        }
+        loop_init_1 = false;
+        uint _e24 = b_4;
+        if ((_e24 < 8u)) {
+        } else {
+            break;
+        }
+        {
+            uint _e27 = b_4;
+            uint _e31 = b_4;
+            uint _e35 = b_4;
+            float v_6 = ((_e35 >= 4u) ? hi_2[(_e31 & 3u)] : lo_2[(_e27 & 3u)]);
+            float _e39 = s_4;
+            uint _e40 = b_4;
+            uint _e44 = b_4;
+            uint _e51 = b_4;
+            s_4 = (_e39 + (((we[(_e40 & 1u)] * wr[((_e44 >> 1u) & 1u)]) * wm_16[(_e51 >> 2u)]) * v_6));
+        }
+    }
+    float _e61 = s_4;
+    return _e61;
+}
+
+float ms_lut_bilerp_eta(MsLutTap e_1, MsLutTap r_2, vec4 v_5) {
+    float s_5 = 0.0;
+    uint b_5 = 0u;
+    vec2 we_1 = vec2((1.0 - e_1.f), e_1.f);
+    vec2 wr_1 = vec2((1.0 - r_2.f), r_2.f);
+    bool loop_init_2 = true;
+    while(true) {
+        if (!loop_init_2) {
+            uint _e35 = b_5;
+            b_5 = (_e35 + 1u);
+        }
+        loop_init_2 = false;
+        uint _e17 = b_5;
+        if ((_e17 < 4u)) {
+        } else {
+            break;
+        }
+        {
+            float _e20 = s_5;
+            uint _e21 = b_5;
+            uint _e25 = b_5;
+            uint _e30 = b_5;
+            s_5 = (_e20 + ((we_1[(_e21 & 1u)] * wr_1[(_e25 >> 1u)]) * v_5[_e30]));
+        }
+    }
+    float _e37 = s_5;
+    return _e37;
+}
+
+vec2 ms_dielectric_kulla_conty_k(float eta_5, float f_avg_1, vec2 e_avg_4) {
+    vec2 k_3 = vec2(0.0);
+    float k_out = (1.0 - f_avg_1);
+    k_3 = vec2(k_out, ((k_out * (1.0 - e_avg_4.x)) / ((eta_5 * eta_5) * (1.0 - e_avg_4.y))));
+    float _e18 = k_3.y;
+    if (!((_e18 <= 1.0))) {
+        vec2 _e22 = k_3;
+        float _e24 = k_3.y;
+        float _e28 = k_3.y;
+        k_3 = (_e22 * ((_e28 > 1.0) ? (1.0 / _e24) : 0.0));
+    }
+    vec2 _e34 = k_3;
+    return _e34;
+}
+
+float ms_dielectric_kulla_conty_lobe(MsDielectric d_9, vec3 wo_34, vec3 wi_29, float e_o_9, float e_i_3, float e_avg_i, float k_o) {
+    bool local_30 = false;
+    bool local_31 = false;
+    float f_3 = 0.0;
+    bool local_32 = false;
+    if ((abs(wo_34.z) > 0.0)) {
+        local_30 = (abs(wi_29.z) > 0.0);
+    } else {
+        local_30 = false;
+    }
+    bool _e18 = local_30;
+    if (!(_e18)) {
+        return 0.0;
+    }
+    float lost = (1.0 - e_o_9);
+    bool crossed = ((wi_29.z < 0.0) != (wo_34.z < 0.0));
+    float share = (crossed ? k_o : (1.0 - k_o));
+    float den_4 = (MS_PI * (1.0 - e_avg_i));
+    if ((den_4 > 0.0)) {
+        local_31 = (lost > 0.0);
+    } else {
+        local_31 = false;
+    }
+    bool _e44 = local_31;
+    if (!(_e44)) {
+        return 0.0;
+    }
+    f_3 = (((share * lost) * max((1.0 - e_i_3), 0.0)) / den_4);
+    if (crossed) {
+        local_32 = (d_9.transport == MS_TRANSPORT_RADIANCE);
+    } else {
+        local_32 = false;
+    }
+    bool _e61 = local_32;
+    if (_e61) {
+        float etap_7 = ((wo_34.z > 0.0) ? d_9.eta : (1.0 / d_9.eta));
+        float _e70 = f_3;
+        f_3 = (_e70 / (etap_7 * etap_7));
+    }
+    float _e73 = f_3;
+    return _e73;
+}
+
+float ms_dielectric_eval_kulla_conty(MsDielectric d_10, vec3 wo_35, vec3 wi_30, float e_o_10, float e_i_4, float e_avg_i_1, float k_o_1) {
+    float _e7 = ms_dielectric_eval(d_10, wo_35, wi_30);
+    bool _e8 = ms_dielectric_smooth(d_10);
+    if (_e8) {
+        return _e7;
+    }
+    float _e9 = ms_dielectric_kulla_conty_lobe(d_10, wo_35, wi_30, e_o_10, e_i_4, e_avg_i_1, k_o_1);
+    return (_e7 + _e9);
+}
+
+float ms_dielectric_eval_turquin(MsDielectric d_11, vec3 wo_36, vec3 wi_31, float e_o_11) {
+    bool local_33 = false;
+    float _e4 = ms_dielectric_eval(d_11, wo_36, wi_31);
+    bool _e5 = ms_dielectric_smooth(d_11);
+    if (!(_e5)) {
+        local_33 = !((e_o_11 > 0.0));
+    } else {
+        local_33 = true;
+    }
+    bool _e13 = local_33;
+    if (_e13) {
+        return _e4;
+    }
+    return (_e4 / e_o_11);
 }
 
 uint ms_k_index(uvec3 id_10, uvec3 groups_10) {
