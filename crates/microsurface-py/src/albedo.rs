@@ -637,10 +637,96 @@ fn read_table(py: Python<'_>, path: std::path::PathBuf) -> PyResult<PyObject> {
     table_tuple(py, &g)
 }
 
+/// lut(ndf, kind, size=32, eta_size=16, aspect_size=0, mu_axis='mu',
+/// roughness_axis='sqrt_alpha', alpha_max=1.0, nodes='centres', level=4, progress=False):
+/// the tables real-time engines load, the command line's ``microsurface lut`` (the library's
+/// ``scattering::lut``, the same numbers before the file's rounding). ``kind``: ``'albedo'``
+/// (E(μ, α) of the F = 1 conductor), ``'albedo-avg'`` (E_avg(α)), ``'dfg'`` (the split sum's
+/// A, B, C: Schlick's albedo F0·A + B, F82-tint's F0·A + B − a·C), ``'dielectric'`` (R, T over
+/// (side, η, α, μ); side 0 from outside at η, 1 from inside at 1/η) or ``'dielectric-avg'``.
+/// ``size`` nodes along μ and the roughness, ``eta_size`` along η = 1 + 2x², ``aspect_size``
+/// along αy/αx (anisotropic, averaged over the azimuth; 0: isotropic); ``mu_axis``
+/// ``'mu'`` or ``'sqrt_mu'``, ``roughness_axis`` ``'sqrt_alpha'`` (α = α_max x²) or
+/// ``'alpha'``; ``nodes`` ``'centres'`` (x = (i + ½)/n, a GPU's linear filter) or
+/// ``'edges'`` (x = i/(n − 1)); ``level`` the quadrature's (2 to 7). Every core; Ctrl-C
+/// interrupts it. Returns ``Lut(axes, coords, params, channels, values)``: the axes' names,
+/// their nodes' coordinates and parameters (μ, α, η, αy/αx; the side's ±1), the channels'
+/// names, and ``values`` (float64, the axes' node counts then the channels).
+#[pyfunction]
+#[pyo3(signature = (ndf, kind, size = 32, eta_size = 16, aspect_size = 0, mu_axis = "mu", roughness_axis = "sqrt_alpha", alpha_max = 1.0, nodes = "centres", level = 4, progress = false))]
+#[allow(clippy::too_many_arguments)]
+fn lut(
+    py: Python<'_>,
+    ndf: &Bound<'_, PyAny>,
+    kind: &str,
+    size: i64,
+    eta_size: i64,
+    aspect_size: i64,
+    mu_axis: &str,
+    roughness_axis: &str,
+    alpha_max: f64,
+    nodes: &str,
+    level: i64,
+    progress: bool,
+) -> PyResult<PyObject> {
+    use microsurface::scattering::lut::{Lut, LutSpec};
+    let (kind_ndf, shape, _, _) = crate::ndf::kind_of(py, ndf)?;
+    let bad = |e: String| PyValueError::new_err(e);
+    let ndf_spec = microsurface::NdfSpec::new(kind_ndf, shape).map_err(|e| bad(e.to_string()))?;
+    let mut spec = LutSpec::new(ndf_spec, kind.parse().map_err(bad)?);
+    spec.size = count(size, "size", 0)?;
+    spec.eta_size = count(eta_size, "eta_size", 0)?;
+    spec.aspect_size = count(aspect_size, "aspect_size", 0)?;
+    spec.mu_axis = mu_axis.parse().map_err(bad)?;
+    spec.roughness_axis = roughness_axis.parse().map_err(bad)?;
+    spec.alpha_max = alpha_max;
+    spec.nodes = nodes.parse().map_err(bad)?;
+    spec.level = u32::try_from(count(level, "level", 0)?).unwrap_or(u32::MAX);
+    let progress = Progress::new(py, progress)?;
+    let counts = progress.counts();
+    let work = move || Lut::compute(&spec, &|done, total| counts.set(done as u64, total as u64));
+    let table = crate::engine::interruptible_ticking(py, work, progress.ticker())?
+        .map_err(|e| bad(e.to_string()))?;
+    progress.close(py)?;
+    let mut shape: Vec<usize> = table.dims();
+    shape.push(table.channels.len());
+    let values = PyArray1::from_slice(py, &table.values)
+        .into_any()
+        .call_method1("reshape", (shape,))?;
+    let axes: Vec<&str> = table.axes.iter().map(|a| a.name).collect();
+    let tuple_of = |xs: Vec<PyObject>| -> PyResult<PyObject> {
+        Ok(pyo3::types::PyTuple::new(py, xs)?.into_any().unbind())
+    };
+    let coords = table
+        .axes
+        .iter()
+        .map(|a| PyArray1::from_slice(py, &a.coords).into_any().unbind())
+        .collect();
+    let params = table
+        .axes
+        .iter()
+        .map(|a| PyArray1::from_slice(py, &a.params).into_any().unbind())
+        .collect();
+    named(
+        py,
+        "Lut",
+        vec![
+            pyo3::types::PyTuple::new(py, axes)?.into_any().unbind(),
+            tuple_of(coords)?,
+            tuple_of(params)?,
+            pyo3::types::PyTuple::new(py, table.channels)?
+                .into_any()
+                .unbind(),
+            values.unbind(),
+        ],
+    )
+}
+
 /// Adds `AlbedoTable`, `single_scattering_albedo`, `table` and `read_table` to the module.
 pub fn register(m: &Bound<'_, PyModule>) -> PyResult<()> {
     m.add_function(wrap_pyfunction!(table, m)?)?;
     m.add_function(wrap_pyfunction!(read_table, m)?)?;
+    m.add_function(wrap_pyfunction!(lut, m)?)?;
     m.add_class::<AlbedoTable>()?;
     m.add_function(wrap_pyfunction!(single_scattering_albedo, m)?)?;
     Ok(())

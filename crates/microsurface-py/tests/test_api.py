@@ -1004,6 +1004,31 @@ def test_table_equals_the_command_line(tmp_path):
         mf.table("ggx", [0.3], [1.5])
 
 
+def test_lut_equals_the_command_line(tmp_path):
+    # microsurface.lut is `microsurface lut`: the library's table, the CLI's .npy its float32.
+    got = mf.lut(mf.GGX, "dfg", size=3)
+    assert got.axes == ("sqrt_alpha", "mu") and got.channels == ("A", "B", "C")
+    assert got.values.dtype == np.float64 and got.values.shape == (3, 3, 3)
+    assert np.allclose(got.coords[1], [1 / 6, 0.5, 5 / 6]) and np.allclose(got.params[0], got.coords[0] ** 2)
+    # A + B is the conductor's albedo E.
+    e = mf.lut("ggx", "albedo", size=3)
+    assert np.allclose(got.values[..., 0] + got.values[..., 1], e.values[..., 0], rtol=0, atol=1e-13)
+    d = mf.lut(mf.Beckmann, "dielectric", size=2, eta_size=2, nodes="edges")
+    assert d.axes == ("side", "eta", "sqrt_alpha", "mu") and d.values.shape == (2, 2, 2, 2, 2)
+    assert np.array_equal(d.params[1], [1.0, 3.0]) and np.array_equal(d.params[0], [1.0, -1.0])
+    if os.path.exists(CLI):
+        out = tmp_path / "t.npy"
+        subprocess.run([CLI, "lut", "--ndf", "ggx", "--kind", "dfg", "--size", "3", "--check", "0",
+                        "--out", str(out)], check=True, capture_output=True)
+        assert np.array_equal(np.load(out), got.values.astype(np.float32))
+    for kwargs, match in [(dict(kind="dgf"), "table kind"), (dict(kind="dfg", size=1), "size"),
+                          (dict(kind="dfg", mu_axis="cos"), "mu axis"), (dict(kind="dfg", nodes="ends"), "layout"),
+                          (dict(kind="dfg", alpha_max=0.0), "alpha"), (dict(kind="dfg", level=9), "level"),
+                          (dict(kind="dfg", size=-1), "size")]:
+        with pytest.raises(ValueError, match=match):
+            mf.lut("ggx", **kwargs)
+
+
 def test_table_progress_uses_tqdm_where_installed(monkeypatch):
     # progress=True drives a tqdm bar (a stand-in module here: tqdm is optional) to the
     # table's total units of work; without tqdm it is silent.

@@ -76,12 +76,13 @@ from ._microsurface import (  # noqa: F401
     GTR,
     K0,
     StudentT,
+    lut,
     matched_alpha,
     read_table,
     single_scattering_albedo,
     table,
 )
-from ._types import Albedo, BSDFSample, DielectricAlbedo, Sample, Table  # noqa: F401
+from ._types import Albedo, BSDFSample, DielectricAlbedo, Lut, Sample, Table  # noqa: F401
 
 __all__ = [
     "__version__",
@@ -105,6 +106,8 @@ __all__ = [
     "matched_alpha",
     "table",
     "read_table",
+    "lut",
+    "Lut",
     "Sample",
     "BSDFSample",
     "Albedo",

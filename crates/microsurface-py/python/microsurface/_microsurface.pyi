@@ -4,7 +4,7 @@ from typing import Optional, Sequence, Tuple, Union
 import numpy as np
 import numpy.typing as npt
 
-from ._types import Albedo, BSDFSample, DielectricAlbedo, Sample, Table
+from ._types import Albedo, BSDFSample, DielectricAlbedo, Lut, Sample, Table
 
 ArrayLike = Union[float, int, npt.ArrayLike]
 # float32 in → float32 out, otherwise float64; scalars in → a NumPy scalar out.
@@ -241,3 +241,18 @@ def table(
     progress: bool = False,
 ) -> Table: ...
 def read_table(path: str) -> Table: ...
+
+# The command line's `microsurface lut`: the tables real-time engines load.
+def lut(
+    ndf: Union[type, str, NDF],
+    kind: str,
+    size: int = 32,
+    eta_size: int = 16,
+    aspect_size: int = 0,
+    mu_axis: str = "mu",
+    roughness_axis: str = "sqrt_alpha",
+    alpha_max: float = 1.0,
+    nodes: str = "centres",
+    level: int = 4,
+    progress: bool = False,
+) -> Lut: ...

@@ -56,3 +56,17 @@ class Table(NamedTuple):
     mu: np.ndarray
     quantities: tuple
     values: np.ndarray
+
+
+class Lut(NamedTuple):
+    """A table real-time engines load (``microsurface.lut``; the command line's
+    ``microsurface lut``): the ``axes``' names (outermost first: side, eta, aspect,
+    sqrt_alpha or alpha, mu or sqrt_mu, those the kind has), each axis' node ``coords``
+    (texture coordinates in [0, 1]) and ``params`` (μ, α, η, αy/αx; the side's ±1), the
+    ``channels``' names and ``values`` (float64, the node counts then the channels)."""
+
+    axes: tuple
+    coords: tuple
+    params: tuple
+    channels: tuple
+    values: np.ndarray
