@@ -136,9 +136,9 @@ float2 ms_cos_sin_turn(float v)
 {
     float k_4 = round((4.0 * v));
     float r_3 = (v - (0.25 * k_4));
-    float x_5 = (MS_TAU * r_3);
-    float x2_ = (x_5 * x_5);
-    float s_6 = (x_5 * (1.0 + (x2_ * (-0.16666667 + (x2_ * (0.008333333 + (x2_ * (-0.0001984127 + (x2_ * 2.7557319e-6)))))))));
+    float x_6 = (MS_TAU * r_3);
+    float x2_ = (x_6 * x_6);
+    float s_6 = (x_6 * (1.0 + (x2_ * (-0.16666667 + (x2_ * (0.008333333 + (x2_ * (-0.0001984127 + (x2_ * 2.7557319e-6)))))))));
     float c_12 = (1.0 + (x2_ * (-0.5 + (x2_ * (0.041666668 + (x2_ * (-0.0013888889 + (x2_ * (2.4801588e-5 + (x2_ * -2.755732e-7))))))))));
     int q = (naga_f2i32(k_4) & int(3));
     if ((q == int(0))) {
@@ -532,11 +532,11 @@ float ms_fresnel_conductor(float cos_in_1, float eta_3, float k)
     if (_e25) {
         return 1.0;
     }
-    float2 n_3 = float2(eta_3, k);
+    float2 n_4 = float2(eta_3, k);
     float sin2_i = ((1.0 - cos_i_5) * (1.0 + cos_i_5));
     float2 ci = float2(cos_i_5, 0.0);
     if ((max(abs(eta_3), abs(k)) > 1e18)) {
-        const float2 _e40 = ms_crecip(n_3);
+        const float2 _e40 = ms_crecip(n_4);
         const float2 _e41 = ms_cmul(_e40, _e40);
         float2 sin2_t_1 = (_e41 * sin2_i);
         const float2 _e49 = ms_csqrt(float2((1.0 - sin2_t_1.x), -(sin2_t_1.y)));
@@ -546,8 +546,8 @@ float ms_fresnel_conductor(float cos_in_1, float eta_3, float k)
         const float _e57 = ms_cnorm_ratio((ci_m - _e49), (ci_m + _e49));
         return min((0.5 * (_e54 + _e57)), 1.0);
     }
-    const float2 _e63 = ms_cmul(n_3, n_3);
-    const float _e65 = ms_cnorm(n_3);
+    const float2 _e63 = ms_cmul(n_4, n_4);
+    const float _e65 = ms_cnorm(n_4);
     if ((_e65 >= 1.0)) {
         const float2 _e74 = ms_cmul(float2((eta_3 - 1.0), k), float2((eta_3 + 1.0), k));
         w_2 = (_e74 + float2((cos_i_5 * cos_i_5), 0.0));
@@ -558,8 +558,8 @@ float ms_fresnel_conductor(float cos_in_1, float eta_3, float k)
     const float2 _e83 = ms_crecip(_e63);
     const float2 _e84 = ms_cmul(_e82, _e83);
     const float2 _e85 = ms_csqrt(_e84);
-    float2 n_ci = (n_3 * cos_i_5);
-    const float2 _e87 = ms_cmul(n_3, _e85);
+    float2 n_ci = (n_4 * cos_i_5);
+    const float2 _e87 = ms_cmul(n_4, _e85);
     const float _e90 = ms_cnorm_ratio((n_ci - _e85), (n_ci + _e85));
     const float _e93 = ms_cnorm_ratio((ci - _e87), (ci + _e87));
     return min((0.5 * (_e90 + _e93)), 1.0);
@@ -622,18 +622,18 @@ float ms_ggx_d(float3 wm_2, float2 alpha)
     if (!((z_1 > 0.0))) {
         return 0.0;
     }
-    float x_6 = (wm_2.x / alpha.x);
+    float x_7 = (wm_2.x / alpha.x);
     float y = (wm_2.y / alpha.y);
-    float t_4 = (((x_6 * x_6) + (y * y)) + (z_1 * z_1));
+    float t_4 = (((x_7 * x_7) + (y * y)) + (z_1 * z_1));
     return (1.0 / ((((MS_PI * alpha.x) * alpha.y) * t_4) * t_4));
 }
 
 float ms_ggx_lambda(float3 w_3, float2 alpha_1)
 {
-    float x_7 = (alpha_1.x * w_3.x);
+    float x_8 = (alpha_1.x * w_3.x);
     float y_1 = (alpha_1.y * w_3.y);
     float z_2 = abs(w_3.z);
-    float t_5 = ((x_7 * x_7) + (y_1 * y_1));
+    float t_5 = ((x_8 * x_8) + (y_1 * y_1));
     float z2_ = (z_2 * z_2);
     float den = (2.0 * (z2_ + (z_2 * sqrt((z2_ + t_5)))));
     if (!((den > 0.0))) {
@@ -648,10 +648,10 @@ float ms_ggx_lambda(float3 w_3, float2 alpha_1)
 
 float ms_ggx_g1_(float3 w_4, float2 alpha_2)
 {
-    float x_8 = (alpha_2.x * w_4.x);
+    float x_9 = (alpha_2.x * w_4.x);
     float y_2 = (alpha_2.y * w_4.y);
     float z_3 = abs(w_4.z);
-    float den_1 = (z_3 + sqrt(((z_3 * z_3) + ((x_8 * x_8) + (y_2 * y_2)))));
+    float den_1 = (z_3 + sqrt(((z_3 * z_3) + ((x_9 * x_9) + (y_2 * y_2)))));
     if (!((den_1 > 0.0))) {
         return 0.0;
     }
@@ -715,15 +715,15 @@ float ms_ggx_pdf(float3 w_5, float3 wm_3, float2 alpha_5)
 float3 ms_ggx_cap_normal(float3 w_6, float2 alpha_6, float2 u, float len)
 {
     float inv = (1.0 / len);
-    float x_9 = ((alpha_6.x * w_6.x) * inv);
+    float x_10 = ((alpha_6.x * w_6.x) * inv);
     float y_3 = ((alpha_6.y * w_6.y) * inv);
     float z_5 = (w_6.z * inv);
     const float2 _e17 = ms_cos_sin_turn(u.x);
     float above = ((1.0 - u.y) * (1.0 + z_5));
-    float sin_ = sqrt(max((u.y * ((above * (1.0 + z_5)) + ((x_9 * x_9) + (y_3 * y_3)))), 0.0));
-    float3 h_1 = float3((alpha_6.x * ((sin_ * _e17.x) + x_9)), (alpha_6.y * ((sin_ * _e17.y) + y_3)), above);
-    float n_4 = (1.0 / sqrt((((h_1.x * h_1.x) + (h_1.y * h_1.y)) + (h_1.z * h_1.z))));
-    return (h_1 * n_4);
+    float sin_ = sqrt(max((u.y * ((above * (1.0 + z_5)) + ((x_10 * x_10) + (y_3 * y_3)))), 0.0));
+    float3 h_1 = float3((alpha_6.x * ((sin_ * _e17.x) + x_10)), (alpha_6.y * ((sin_ * _e17.y) + y_3)), above);
+    float n_5 = (1.0 / sqrt((((h_1.x * h_1.x) + (h_1.y * h_1.y)) + (h_1.z * h_1.z))));
+    return (h_1 * n_5);
 }
 
 float3 ms_ggx_sample_wm(float3 w_in, float2 alpha_7, float2 u_1)
@@ -1007,7 +1007,7 @@ float ms_beckmann_d(float3 wm_6, float2 alpha_15)
 
     float z_6 = wm_6.z;
     float r_11 = (1.0 / (alpha_15.x * alpha_15.y));
-    float x_10 = ((wm_6.x * alpha_15.y) * r_11);
+    float x_11 = ((wm_6.x * alpha_15.y) * r_11);
     float y_4 = ((wm_6.y * alpha_15.x) * r_11);
     float z2_1 = (z_6 * z_6);
     if ((z_6 > 0.0)) {
@@ -1019,7 +1019,7 @@ float ms_beckmann_d(float3 wm_6, float2 alpha_15)
     if (!(_e24)) {
         return 0.0;
     }
-    float e_4 = (((x_10 * x_10) + (y_4 * y_4)) / z2_1);
+    float e_4 = (((x_11 * x_11) + (y_4 * y_4)) / z2_1);
     if ((e_4 <= 80.0)) {
         return ((exp(-(e_4)) * r_11) / ((MS_PI * z2_1) * z2_1));
     }
@@ -1041,9 +1041,9 @@ float ms_beckmann_lambda_cot(float a_10)
 
 float ms_beckmann_lambda(float3 w_10, float2 alpha_16)
 {
-    float x_11 = (alpha_16.x * w_10.x);
+    float x_12 = (alpha_16.x * w_10.x);
     float y_5 = (alpha_16.y * w_10.y);
-    float s_12 = sqrt(((x_11 * x_11) + (y_5 * y_5)));
+    float s_12 = sqrt(((x_12 * x_12) + (y_5 * y_5)));
     if (!((s_12 > 0.0))) {
         return 0.0;
     }
@@ -1320,8 +1320,8 @@ float3 ms_beckmann_sample_wm(float3 w_13, float2 alpha_23, float2 u_8)
     float _e54 = x_3;
     float _e56 = cp;
     float q_2 = (alpha_23.y * ((_e53 * _e54) + (_e56 * _e27)));
-    float n_5 = (1.0 / sqrt((((p_1 * p_1) + (q_2 * q_2)) + 1.0)));
-    const float3 _e71 = ms_facing(float3((p_1 * n_5), (q_2 * n_5), n_5), w_13);
+    float n_6 = (1.0 / sqrt((((p_1 * p_1) + (q_2 * q_2)) + 1.0)));
+    const float3 _e71 = ms_facing(float3((p_1 * n_6), (q_2 * n_6), n_6), w_13);
     return _e71;
 }
 
@@ -1916,6 +1916,14 @@ MsLutTap ms_lut_tap(float x_4, uint n_2)
     return msluttap;
 }
 
+MsLutTap ms_lut_tap_edges(float x_5, uint n_3)
+{
+    float t_11 = clamp((x_5 * float((n_3 - 1u))), 0.0, float((n_3 - 1u)));
+    uint i_7 = min(naga_f2u32(floor(t_11)), (n_3 - 2u));
+    const MsLutTap msluttap_1 = ConstructMsLutTap(i_7, (t_11 - float(i_7)));
+    return msluttap_1;
+}
+
 uint ms_lut_index(uint ir, uint im, uint n_mu)
 {
     return ((ir * n_mu) + im);
@@ -2287,12 +2295,12 @@ uint NagaBufferLength(ByteAddressBuffer buffer)
 
 uint ms_k_index(uint3 id_10, uint3 groups_10)
 {
-    uint i_7 = (id_10.x + ((id_10.y * groups_10.x) * 64u));
-    uint n_6 = naga_div(((NagaBufferLength(ms_in) - 0) / 16), MS_K_IN);
-    if ((i_7 >= n_6)) {
-        return n_6;
+    uint i_8 = (id_10.x + ((id_10.y * groups_10.x) * 64u));
+    uint n_7 = naga_div(((NagaBufferLength(ms_in) - 0) / 16), MS_K_IN);
+    if ((i_8 >= n_7)) {
+        return n_7;
     }
-    return i_7;
+    return i_8;
 }
 
 MsMicrofacet ConstructMsMicrofacet(uint arg0, float2 arg1) {

@@ -114,9 +114,9 @@ metal::float2 ms_cos_sin_turn(
 ) {
     float k_4 = metal::rint(4.0 * v);
     float r_3 = v - (0.25 * k_4);
-    float x_5 = MS_TAU * r_3;
-    float x2_ = x_5 * x_5;
-    float s_6 = x_5 * (1.0 + (x2_ * (-0.16666667 + (x2_ * (0.008333333 + (x2_ * (-0.0001984127 + (x2_ * 0.0000027557319))))))));
+    float x_6 = MS_TAU * r_3;
+    float x2_ = x_6 * x_6;
+    float s_6 = x_6 * (1.0 + (x2_ * (-0.16666667 + (x2_ * (0.008333333 + (x2_ * (-0.0001984127 + (x2_ * 0.0000027557319))))))));
     float c_12 = 1.0 + (x2_ * (-0.5 + (x2_ * (0.041666668 + (x2_ * (-0.0013888889 + (x2_ * (0.000024801588 + (x2_ * -0.0000002755732)))))))));
     int q = naga_f2i32(k_4) & 3;
     if (q == 0) {
@@ -544,11 +544,11 @@ float ms_fresnel_conductor(
     if (_e25) {
         return 1.0;
     }
-    metal::float2 n_3 = metal::float2(eta_3, k);
+    metal::float2 n_4 = metal::float2(eta_3, k);
     float sin2_i = (1.0 - cos_i_5) * (1.0 + cos_i_5);
     metal::float2 ci = metal::float2(cos_i_5, 0.0);
     if (metal::max(metal::abs(eta_3), metal::abs(k)) > 1000000000000000000.0) {
-        metal::float2 _e40 = ms_crecip(n_3);
+        metal::float2 _e40 = ms_crecip(n_4);
         metal::float2 _e41 = ms_cmul(_e40, _e40);
         metal::float2 sin2_t_1 = _e41 * sin2_i;
         metal::float2 _e49 = ms_csqrt(metal::float2(1.0 - sin2_t_1.x, -(sin2_t_1.y)));
@@ -558,8 +558,8 @@ float ms_fresnel_conductor(
         float _e57 = ms_cnorm_ratio(ci_m - _e49, ci_m + _e49);
         return metal::min(0.5 * (_e54 + _e57), 1.0);
     }
-    metal::float2 _e63 = ms_cmul(n_3, n_3);
-    float _e65 = ms_cnorm(n_3);
+    metal::float2 _e63 = ms_cmul(n_4, n_4);
+    float _e65 = ms_cnorm(n_4);
     if (_e65 >= 1.0) {
         metal::float2 _e74 = ms_cmul(metal::float2(eta_3 - 1.0, k), metal::float2(eta_3 + 1.0, k));
         w_2 = _e74 + metal::float2(cos_i_5 * cos_i_5, 0.0);
@@ -570,8 +570,8 @@ float ms_fresnel_conductor(
     metal::float2 _e83 = ms_crecip(_e63);
     metal::float2 _e84 = ms_cmul(_e82, _e83);
     metal::float2 _e85 = ms_csqrt(_e84);
-    metal::float2 n_ci = n_3 * cos_i_5;
-    metal::float2 _e87 = ms_cmul(n_3, _e85);
+    metal::float2 n_ci = n_4 * cos_i_5;
+    metal::float2 _e87 = ms_cmul(n_4, _e85);
     float _e90 = ms_cnorm_ratio(n_ci - _e85, n_ci + _e85);
     float _e93 = ms_cnorm_ratio(ci - _e87, ci + _e87);
     return metal::min(0.5 * (_e90 + _e93), 1.0);
@@ -643,9 +643,9 @@ float ms_ggx_d(
     if (!((z_1 > 0.0))) {
         return 0.0;
     }
-    float x_6 = wm_2.x / alpha.x;
+    float x_7 = wm_2.x / alpha.x;
     float y = wm_2.y / alpha.y;
-    float t_4 = ((x_6 * x_6) + (y * y)) + (z_1 * z_1);
+    float t_4 = ((x_7 * x_7) + (y * y)) + (z_1 * z_1);
     return 1.0 / ((((MS_PI * alpha.x) * alpha.y) * t_4) * t_4);
 }
 
@@ -653,10 +653,10 @@ float ms_ggx_lambda(
     metal::float3 w_3,
     metal::float2 alpha_1
 ) {
-    float x_7 = alpha_1.x * w_3.x;
+    float x_8 = alpha_1.x * w_3.x;
     float y_1 = alpha_1.y * w_3.y;
     float z_2 = metal::abs(w_3.z);
-    float t_5 = (x_7 * x_7) + (y_1 * y_1);
+    float t_5 = (x_8 * x_8) + (y_1 * y_1);
     float z2_ = z_2 * z_2;
     float den = 2.0 * (z2_ + (z_2 * metal::sqrt(z2_ + t_5)));
     if (!((den > 0.0))) {
@@ -673,10 +673,10 @@ float ms_ggx_g1_(
     metal::float3 w_4,
     metal::float2 alpha_2
 ) {
-    float x_8 = alpha_2.x * w_4.x;
+    float x_9 = alpha_2.x * w_4.x;
     float y_2 = alpha_2.y * w_4.y;
     float z_3 = metal::abs(w_4.z);
-    float den_1 = z_3 + metal::sqrt((z_3 * z_3) + ((x_8 * x_8) + (y_2 * y_2)));
+    float den_1 = z_3 + metal::sqrt((z_3 * z_3) + ((x_9 * x_9) + (y_2 * y_2)));
     if (!((den_1 > 0.0))) {
         return 0.0;
     }
@@ -752,15 +752,15 @@ metal::float3 ms_ggx_cap_normal(
     float len
 ) {
     float inv = 1.0 / len;
-    float x_9 = (alpha_6.x * w_6.x) * inv;
+    float x_10 = (alpha_6.x * w_6.x) * inv;
     float y_3 = (alpha_6.y * w_6.y) * inv;
     float z_5 = w_6.z * inv;
     metal::float2 _e17 = ms_cos_sin_turn(u.x);
     float above = (1.0 - u.y) * (1.0 + z_5);
-    float sin = metal::sqrt(metal::max(u.y * ((above * (1.0 + z_5)) + ((x_9 * x_9) + (y_3 * y_3))), 0.0));
-    metal::float3 h_1 = metal::float3(alpha_6.x * ((sin * _e17.x) + x_9), alpha_6.y * ((sin * _e17.y) + y_3), above);
-    float n_4 = 1.0 / metal::sqrt(((h_1.x * h_1.x) + (h_1.y * h_1.y)) + (h_1.z * h_1.z));
-    return h_1 * n_4;
+    float sin = metal::sqrt(metal::max(u.y * ((above * (1.0 + z_5)) + ((x_10 * x_10) + (y_3 * y_3))), 0.0));
+    metal::float3 h_1 = metal::float3(alpha_6.x * ((sin * _e17.x) + x_10), alpha_6.y * ((sin * _e17.y) + y_3), above);
+    float n_5 = 1.0 / metal::sqrt(((h_1.x * h_1.x) + (h_1.y * h_1.y)) + (h_1.z * h_1.z));
+    return h_1 * n_5;
 }
 
 metal::float3 ms_ggx_sample_wm(
@@ -1057,7 +1057,7 @@ float ms_beckmann_d(
     bool local_9 = {};
     float z_6 = wm_6.z;
     float r_11 = 1.0 / (alpha_15.x * alpha_15.y);
-    float x_10 = (wm_6.x * alpha_15.y) * r_11;
+    float x_11 = (wm_6.x * alpha_15.y) * r_11;
     float y_4 = (wm_6.y * alpha_15.x) * r_11;
     float z2_1 = z_6 * z_6;
     if (z_6 > 0.0) {
@@ -1069,7 +1069,7 @@ float ms_beckmann_d(
     if (!(_e24)) {
         return 0.0;
     }
-    float e_4 = ((x_10 * x_10) + (y_4 * y_4)) / z2_1;
+    float e_4 = ((x_11 * x_11) + (y_4 * y_4)) / z2_1;
     if (e_4 <= 80.0) {
         return (metal::exp(-(e_4)) * r_11) / ((MS_PI * z2_1) * z2_1);
     }
@@ -1096,9 +1096,9 @@ float ms_beckmann_lambda(
     metal::float2 alpha_16,
     thread type_7& MS_BK_ERFC_RATIO
 ) {
-    float x_11 = alpha_16.x * w_10.x;
+    float x_12 = alpha_16.x * w_10.x;
     float y_5 = alpha_16.y * w_10.y;
-    float s_12 = metal::sqrt((x_11 * x_11) + (y_5 * y_5));
+    float s_12 = metal::sqrt((x_12 * x_12) + (y_5 * y_5));
     if (!((s_12 > 0.0))) {
         return 0.0;
     }
@@ -1395,8 +1395,8 @@ metal::float3 ms_beckmann_sample_wm(
     float _e54 = x_3;
     float _e56 = cp;
     float q_2 = alpha_23.y * ((_e53 * _e54) + (_e56 * _e27));
-    float n_5 = 1.0 / metal::sqrt(((p_1 * p_1) + (q_2 * q_2)) + 1.0);
-    metal::float3 _e71 = ms_facing(metal::float3(p_1 * n_5, q_2 * n_5, n_5), w_13);
+    float n_6 = 1.0 / metal::sqrt(((p_1 * p_1) + (q_2 * q_2)) + 1.0);
+    metal::float3 _e71 = ms_facing(metal::float3(p_1 * n_6, q_2 * n_6, n_6), w_13);
     return _e71;
 }
 
@@ -2048,6 +2048,15 @@ MsLutTap ms_lut_tap(
     return MsLutTap {i_6, t_10 - static_cast<float>(i_6)};
 }
 
+MsLutTap ms_lut_tap_edges(
+    float x_5,
+    uint n_3
+) {
+    float t_11 = metal::clamp(x_5 * static_cast<float>(n_3 - 1u), 0.0, static_cast<float>(n_3 - 1u));
+    uint i_7 = metal::min(naga_f2u32(metal::floor(t_11)), n_3 - 2u);
+    return MsLutTap {i_7, t_11 - static_cast<float>(i_7)};
+}
+
 uint ms_lut_index(
     uint ir,
     uint im,
@@ -2505,12 +2514,12 @@ uint ms_k_index(
     device type_10 const& ms_in,
     constant _mslBufferSizes& _buffer_sizes
 ) {
-    uint i_7 = id_10.x + ((id_10.y * groups_10.x) * 64u);
-    uint n_6 = naga_div(1 + (_buffer_sizes.size4 - 0 - 16) / 16, MS_K_IN);
-    if (i_7 >= n_6) {
-        return n_6;
+    uint i_8 = id_10.x + ((id_10.y * groups_10.x) * 64u);
+    uint n_7 = naga_div(1 + (_buffer_sizes.size4 - 0 - 16) / 16, MS_K_IN);
+    if (i_8 >= n_7) {
+        return n_7;
     }
-    return i_7;
+    return i_8;
 }
 
 MsConductor ms_k_conductor(

@@ -2053,6 +2053,16 @@ fn ms_lut_tap(x: f32, n: u32) -> MsLutTap {
     return MsLutTap(i, t - f32(i));
 }
 
+// The tap of coordinate x on an axis of n ≥ 2 edge-aligned nodes x_i = i/(n − 1) (the
+// `lut` tables written with `--nodes edges`, Cycles' layout: `Lut::lookup`'s t = x(n − 1)),
+// clamped to [0, 1]. (A texture sampler reaches node i at (i + ½)/n instead: sample at
+// (x(n − 1) + ½)/n there.)
+fn ms_lut_tap_edges(x: f32, n: u32) -> MsLutTap {
+    let t = clamp(x * f32(n - 1u), 0.0, f32(n - 1u));
+    let i = min(u32(floor(t)), n - 2u);
+    return MsLutTap(i, t - f32(i));
+}
+
 // The flat index of node (roughness ir, μ im) of a row-major [roughness][μ] table of n_mu
 // nodes along μ.
 fn ms_lut_index(ir: u32, im: u32, n_mu: u32) -> u32 {

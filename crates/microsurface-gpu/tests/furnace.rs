@@ -79,6 +79,20 @@ fn fz_lookup(@builtin(global_invocation_id) id: vec3<u32>,
         fz_albedo_avg(r, u32(lut[3])), ms_lut_roughness_coord(x.zw, 1.0));
 }
 
+// In: (x, n, 0, 0). Out: the taps (i, f) at texel centres and at edge-aligned nodes.
+@compute @workgroup_size(64)
+fn fz_taps(@builtin(global_invocation_id) id: vec3<u32>,
+    @builtin(num_workgroups) groups: vec3<u32>) {
+    let i = fz_index(id, groups);
+    if i >= arrayLength(&fz_in) {
+        return;
+    }
+    let x = fz_in[i];
+    let c = ms_lut_tap(x.x, u32(x.y));
+    let e = ms_lut_tap_edges(x.x, u32(x.y));
+    fz_out[i] = vec4<f32>(f32(c.i), c.f, f32(e.i), e.f);
+}
+
 // In: (wo, α), (wi, 0). Out: f(wo, wi) of the F = 1 GGX conductor (channel x), compensated:
 // (Kulla–Conty with the exact E_avg, Kulla–Conty with the lookup's E_avg, Turquin, none).
 @compute @workgroup_size(64)
@@ -175,6 +189,7 @@ struct Runner {
     gpu: Gpu,
     layout: wgpu::BindGroupLayout,
     lookup: wgpu::ComputePipeline,
+    taps: wgpu::ComputePipeline,
     furnace: wgpu::ComputePipeline,
     dielectric: wgpu::ComputePipeline,
 }
@@ -230,12 +245,14 @@ fn runner() -> Option<&'static Runner> {
         };
         let (lookup, furnace) = (pipeline("fz_lookup"), pipeline("fz_furnace"));
         let dielectric = pipeline("fz_dielectric");
+        let taps = pipeline("fz_taps");
         if let Some(e) = pollster::block_on(scope.pop()) {
             panic!("the kernels do not validate: {e}");
         }
         Some(Runner {
             layout,
             lookup,
+            taps,
             furnace,
             dielectric,
             gpu,
@@ -376,6 +393,54 @@ const U: f64 = f32::EPSILON as f64 / 2.0;
 /// (The roughness coordinate √(√(αx αy)): the product's rounding, quartered by the two roots,
 /// and each root's, which Vulkan allows as its inverse square root's 2 ulp and a division's
 /// 2.5 (9u), the inner one halved by the outer: 14u; 16u.)
+/// The taps of both node layouts against `Lut::lookup`'s: t = clamp(x n − ½, 0, n − 1) at
+/// texel centres, clamp(x(n − 1), 0, n − 1) at edges, i = min(⌊t⌋, n − 2), f = t − i, from
+/// tables of 2 to 128 nodes and coordinates at, between and beside the nodes and past both
+/// ends. The node index is equal and the weight within one rounding of t (t ≤ n: n u, where
+/// the product x n rounds; the weights of the f64 lookup are t's, so this is the whole
+/// difference).
+#[test]
+fn taps_of_both_layouts_are_the_rust_filters() {
+    let Some(r) = runner() else { return };
+    let mut input = Vec::new();
+    for n in [2u32, 3, 8, 32, 33, 128] {
+        let nf = n as f64;
+        let mut xs = vec![-0.5, -0.0, 0.0, 1.0, 1.5, 0.3, 0.6543];
+        for i in 0..n {
+            let (c, e) = ((i as f64 + 0.5) / nf, i as f64 / (nf - 1.0));
+            xs.extend([
+                c,
+                c + 0.25 / nf,
+                c - 1e-6,
+                e,
+                e + 0.4 / (nf - 1.0),
+                e - 1e-6,
+            ]);
+        }
+        input.extend(xs.iter().map(|&x| [x as f32, n as f32, 0.0, 0.0]));
+    }
+    let out = r.run(&r.taps, &input, 1, &[0.0]);
+    for (x, g) in input.iter().zip(&out) {
+        let (xf, n) = (x[0] as f64, x[1] as f64);
+        for (k, t) in [
+            (0, (xf * n - 0.5).clamp(0.0, n - 1.0)),
+            (2, (xf * (n - 1.0)).clamp(0.0, n - 1.0)),
+        ] {
+            let i = (t.floor()).min(n - 2.0);
+            let f = t - i;
+            let (gi, gf) = (g[k] as f64, g[k + 1] as f64);
+            // (t within a rounding of an integer may floor either way: then the taps are
+            // (i, 1) and (i + 1, 0), the same blend.)
+            let same = gi == i && (gf - f).abs() <= 2.0 * U * n
+                || (gi - i).abs() == 1.0 && (gi + gf - t).abs() <= 2.0 * U * n;
+            assert!(
+                same,
+                "x {xf}, n {n}, layout {k}: GPU ({gi}, {gf}), Rust ({i}, {f})"
+            );
+        }
+    }
+}
+
 #[test]
 fn lookup_matches_the_rust_filter() {
     let Some(r) = runner() else { return };

@@ -90,9 +90,9 @@ float ms_inf() {
 vec2 ms_cos_sin_turn(float v) {
     float k_4 = roundEven((4.0 * v));
     float r_3 = (v - (0.25 * k_4));
-    float x_5 = (MS_TAU * r_3);
-    float x2_ = (x_5 * x_5);
-    float s_6 = (x_5 * (1.0 + (x2_ * (-0.16666667 + (x2_ * (0.008333333 + (x2_ * (-0.0001984127 + (x2_ * 2.7557319e-6)))))))));
+    float x_6 = (MS_TAU * r_3);
+    float x2_ = (x_6 * x_6);
+    float s_6 = (x_6 * (1.0 + (x2_ * (-0.16666667 + (x2_ * (0.008333333 + (x2_ * (-0.0001984127 + (x2_ * 2.7557319e-6)))))))));
     float c_12 = (1.0 + (x2_ * (-0.5 + (x2_ * (0.041666668 + (x2_ * (-0.0013888889 + (x2_ * (2.4801588e-5 + (x2_ * -2.755732e-7))))))))));
     int q = (int(k_4) & 3);
     if ((q == 0)) {
@@ -454,11 +454,11 @@ float ms_fresnel_conductor(float cos_in_1, float eta_3, float k) {
     if (_e25) {
         return 1.0;
     }
-    vec2 n_3 = vec2(eta_3, k);
+    vec2 n_4 = vec2(eta_3, k);
     float sin2_i = ((1.0 - cos_i_5) * (1.0 + cos_i_5));
     vec2 ci = vec2(cos_i_5, 0.0);
     if ((max(abs(eta_3), abs(k)) > 1e18)) {
-        vec2 _e40 = ms_crecip(n_3);
+        vec2 _e40 = ms_crecip(n_4);
         vec2 _e41 = ms_cmul(_e40, _e40);
         vec2 sin2_t_1 = (_e41 * sin2_i);
         vec2 _e49 = ms_csqrt(vec2((1.0 - sin2_t_1.x), -(sin2_t_1.y)));
@@ -468,8 +468,8 @@ float ms_fresnel_conductor(float cos_in_1, float eta_3, float k) {
         float _e57 = ms_cnorm_ratio((ci_m - _e49), (ci_m + _e49));
         return min((0.5 * (_e54 + _e57)), 1.0);
     }
-    vec2 _e63 = ms_cmul(n_3, n_3);
-    float _e65 = ms_cnorm(n_3);
+    vec2 _e63 = ms_cmul(n_4, n_4);
+    float _e65 = ms_cnorm(n_4);
     if ((_e65 >= 1.0)) {
         vec2 _e74 = ms_cmul(vec2((eta_3 - 1.0), k), vec2((eta_3 + 1.0), k));
         w_2 = (_e74 + vec2((cos_i_5 * cos_i_5), 0.0));
@@ -480,8 +480,8 @@ float ms_fresnel_conductor(float cos_in_1, float eta_3, float k) {
     vec2 _e83 = ms_crecip(_e63);
     vec2 _e84 = ms_cmul(_e82, _e83);
     vec2 _e85 = ms_csqrt(_e84);
-    vec2 n_ci = (n_3 * cos_i_5);
-    vec2 _e87 = ms_cmul(n_3, _e85);
+    vec2 n_ci = (n_4 * cos_i_5);
+    vec2 _e87 = ms_cmul(n_4, _e85);
     float _e90 = ms_cnorm_ratio((n_ci - _e85), (n_ci + _e85));
     float _e93 = ms_cnorm_ratio((ci - _e87), (ci + _e87));
     return min((0.5 * (_e90 + _e93)), 1.0);
@@ -540,17 +540,17 @@ float ms_ggx_d(vec3 wm_2, vec2 alpha) {
     if (!((z_1 > 0.0))) {
         return 0.0;
     }
-    float x_6 = (wm_2.x / alpha.x);
+    float x_7 = (wm_2.x / alpha.x);
     float y = (wm_2.y / alpha.y);
-    float t_4 = (((x_6 * x_6) + (y * y)) + (z_1 * z_1));
+    float t_4 = (((x_7 * x_7) + (y * y)) + (z_1 * z_1));
     return (1.0 / ((((MS_PI * alpha.x) * alpha.y) * t_4) * t_4));
 }
 
 float ms_ggx_lambda(vec3 w_3, vec2 alpha_1) {
-    float x_7 = (alpha_1.x * w_3.x);
+    float x_8 = (alpha_1.x * w_3.x);
     float y_1 = (alpha_1.y * w_3.y);
     float z_2 = abs(w_3.z);
-    float t_5 = ((x_7 * x_7) + (y_1 * y_1));
+    float t_5 = ((x_8 * x_8) + (y_1 * y_1));
     float z2_ = (z_2 * z_2);
     float den = (2.0 * (z2_ + (z_2 * sqrt((z2_ + t_5)))));
     if (!((den > 0.0))) {
@@ -564,10 +564,10 @@ float ms_ggx_lambda(vec3 w_3, vec2 alpha_1) {
 }
 
 float ms_ggx_g1_(vec3 w_4, vec2 alpha_2) {
-    float x_8 = (alpha_2.x * w_4.x);
+    float x_9 = (alpha_2.x * w_4.x);
     float y_2 = (alpha_2.y * w_4.y);
     float z_3 = abs(w_4.z);
-    float den_1 = (z_3 + sqrt(((z_3 * z_3) + ((x_8 * x_8) + (y_2 * y_2)))));
+    float den_1 = (z_3 + sqrt(((z_3 * z_3) + ((x_9 * x_9) + (y_2 * y_2)))));
     if (!((den_1 > 0.0))) {
         return 0.0;
     }
@@ -626,15 +626,15 @@ float ms_ggx_pdf(vec3 w_5, vec3 wm_3, vec2 alpha_5) {
 
 vec3 ms_ggx_cap_normal(vec3 w_6, vec2 alpha_6, vec2 u, float len) {
     float inv = (1.0 / len);
-    float x_9 = ((alpha_6.x * w_6.x) * inv);
+    float x_10 = ((alpha_6.x * w_6.x) * inv);
     float y_3 = ((alpha_6.y * w_6.y) * inv);
     float z_5 = (w_6.z * inv);
     vec2 _e17 = ms_cos_sin_turn(u.x);
     float above = ((1.0 - u.y) * (1.0 + z_5));
-    float sin_ = sqrt(max((u.y * ((above * (1.0 + z_5)) + ((x_9 * x_9) + (y_3 * y_3)))), 0.0));
-    vec3 h_1 = vec3((alpha_6.x * ((sin_ * _e17.x) + x_9)), (alpha_6.y * ((sin_ * _e17.y) + y_3)), above);
-    float n_4 = (1.0 / sqrt((((h_1.x * h_1.x) + (h_1.y * h_1.y)) + (h_1.z * h_1.z))));
-    return (h_1 * n_4);
+    float sin_ = sqrt(max((u.y * ((above * (1.0 + z_5)) + ((x_10 * x_10) + (y_3 * y_3)))), 0.0));
+    vec3 h_1 = vec3((alpha_6.x * ((sin_ * _e17.x) + x_10)), (alpha_6.y * ((sin_ * _e17.y) + y_3)), above);
+    float n_5 = (1.0 / sqrt((((h_1.x * h_1.x) + (h_1.y * h_1.y)) + (h_1.z * h_1.z))));
+    return (h_1 * n_5);
 }
 
 vec3 ms_ggx_sample_wm(vec3 w_in, vec2 alpha_7, vec2 u_1) {
@@ -811,7 +811,7 @@ float ms_beckmann_d(vec3 wm_6, vec2 alpha_15) {
     bool local_9 = false;
     float z_6 = wm_6.z;
     float r_9 = (1.0 / (alpha_15.x * alpha_15.y));
-    float x_10 = ((wm_6.x * alpha_15.y) * r_9);
+    float x_11 = ((wm_6.x * alpha_15.y) * r_9);
     float y_4 = ((wm_6.y * alpha_15.x) * r_9);
     float z2_1 = (z_6 * z_6);
     if ((z_6 > 0.0)) {
@@ -823,7 +823,7 @@ float ms_beckmann_d(vec3 wm_6, vec2 alpha_15) {
     if (!(_e24)) {
         return 0.0;
     }
-    float e_4 = (((x_10 * x_10) + (y_4 * y_4)) / z2_1);
+    float e_4 = (((x_11 * x_11) + (y_4 * y_4)) / z2_1);
     if ((e_4 <= 80.0)) {
         return ((exp(-(e_4)) * r_9) / ((MS_PI * z2_1) * z2_1));
     }
@@ -1033,6 +1033,12 @@ MsLutTap ms_lut_tap(float x_4, uint n_2) {
     return MsLutTap(i_2, (t_9 - float(i_2)));
 }
 
+MsLutTap ms_lut_tap_edges(float x_5, uint n_3) {
+    float t_10 = clamp((x_5 * float((n_3 - 1u))), 0.0, float((n_3 - 1u)));
+    uint i_3 = min(uint(floor(t_10)), (n_3 - 2u));
+    return MsLutTap(i_3, (t_10 - float(i_3)));
+}
+
 uint ms_lut_index(uint ir, uint im, uint n_mu) {
     return ((ir * n_mu) + im);
 }
@@ -1236,12 +1242,12 @@ float ms_dielectric_kulla_conty_lobe(MsDielectric d_9, vec3 wo_34, vec3 wi_29, f
 }
 
 uint ms_k_index(uvec3 id_10, uvec3 groups_10) {
-    uint i_3 = (id_10.x + ((id_10.y * groups_10.x) * 64u));
-    uint n_5 = (uint(_group_0_binding_0_cs.length()) / MS_K_IN);
-    if ((i_3 >= n_5)) {
-        return n_5;
+    uint i_4 = (id_10.x + ((id_10.y * groups_10.x) * 64u));
+    uint n_6 = (uint(_group_0_binding_0_cs.length()) / MS_K_IN);
+    if ((i_4 >= n_6)) {
+        return n_6;
     }
-    return i_3;
+    return i_4;
 }
 
 MsConductor ms_k_conductor(uint i) {
