@@ -52,7 +52,7 @@
 //! | `sqrt_alpha` ([`RoughnessAxis::SqrtAlpha`]) | √(α/α_max), or (αx αy)^¼/√α_max: perceptual roughness | α = α_max x² |
 //! | `alpha` ([`RoughnessAxis::Alpha`]) | α/α_max | α = α_max x |
 //! | `aspect` (anisotropic tables) | αy/αx | αx = α/√x, αy = α√x (α = √(αx αy)) |
-//! | `eta` | √((η − 1)/2), as Cycles maps η | η = 1 + 2x², η ∈ (1, 3) |
+//! | `eta` | √((η − 1)/2), as Cycles maps η | η = 1 + 2x², η ∈ [1, 3] |
 //! | `side` | the node index: 0 outside (η), 1 inside (1/η) | not interpolated |
 //!
 //! Anisotropic tables (`aspect_size` > 0) hold the average over the azimuth of wo
