@@ -308,7 +308,7 @@ const LANES: usize = 2;
 
 /// The seed of lane `j` ≥ 1's stream from the call's `seed` (a SplitMix64 output: streams
 /// far apart in the generator's sequence).
-fn lane_seed(seed: u64, j: u64) -> u64 {
+pub(crate) fn lane_seed(seed: u64, j: u64) -> u64 {
     crate::math::rng::SplitMix64(seed ^ j.wrapping_mul(0xD1B5_4A32_D192_ED03)).next_u64()
 }
 

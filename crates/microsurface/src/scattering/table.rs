@@ -4,8 +4,9 @@
 //!
 //! **Generation** ([`Grid::generate`]) is deterministic for a given seed whatever the number
 //! of threads: each cell's walks run in chunks of [`CHUNK`] walks, chunk j of cell c from
-//! the stream `seed_of(seed, c, j)`, and the chunks' sums are merged in order. With the
-//! `rayon` feature the chunks run on every core.
+//! the stream `seed_of(seed, c, j)` (in the two interleaved lanes of
+//! [`crate::scattering::albedo`]: that stream and one derived from it), and the chunks' sums
+//! are merged in order. With the `rayon` feature the chunks run on every core.
 //!
 //! **Quantities** per cell, named in the file:
 //! * method `quadrature`: `e1`, the single-scattering albedo of the F = 1 conductor with the
@@ -33,7 +34,7 @@
 
 use crate::distribution::MicrofacetDistribution;
 use crate::ndf::family::NdfKind;
-use crate::scattering::albedo::{single_scattering_albedo_tol, AlbedoSums};
+use crate::scattering::albedo::{lane_seed, single_scattering_albedo_tol, AlbedoSums};
 use crate::scattering::walk::{
     DielectricFacets, DiffuseFacets, Heights, MirrorFacets, RandomWalk, WalkRng,
 };
@@ -239,14 +240,15 @@ fn cell<D: MicrofacetDistribution<f64> + Clone>(
         return Done::E1(single_scattering_albedo_tol(d, wo, 1e-7));
     };
     let s = RandomWalk::new(d.clone(), Heights::Uniform);
-    let mut rng = WalkRng::new(chunk_seed(seed, t.cell as u64, t.chunk));
-    let mut sums = AlbedoSums::default();
+    // The chunk's walks in albedo's two interleaved lanes: the chunk's stream and one derived
+    // from it (each lane's walks independent of the interleaving).
+    let chunk = chunk_seed(seed, t.cell as u64, t.chunk);
+    let mut rngs = [WalkRng::new(chunk), WalkRng::new(lane_seed(chunk, 1))];
+    let mut lanes = [AlbedoSums::default(), AlbedoSums::default()];
     macro_rules! walks {
         ($facets:expr) => {{
             let f = $facets;
-            for _ in 0..t.walks {
-                sums.add(wo, s.walk::<1>(&f, wo, &mut rng));
-            }
+            s.walk_lanes::<1, 2, _>(&f, wo, t.walks, &mut rngs, |j, w| lanes[j].add(wo, w));
         }};
     }
     match spec.material {
@@ -258,6 +260,8 @@ fn cell<D: MicrofacetDistribution<f64> + Clone>(
         Material::Dielectric { eta } => walks!(DielectricFacets(eta)),
         Material::Diffuse { rho } => walks!(DiffuseFacets(rho)),
     }
+    let [mut sums, second] = lanes;
+    sums.merge(&second);
     Done::Walks(Box::new(sums))
 }
 
