@@ -40,7 +40,7 @@ use microsurface_gpu::{
 use std::sync::OnceLock;
 
 mod grid;
-use grid::{directions, normals, uniforms, ALPHAS};
+use grid::{directions, normals, uniforms, vec_diff, Worst, ALPHAS};
 
 /// The device and the compiled kernels, once per test binary; `None` (the tests skip) only
 /// where no Vulkan adapter exists and `MICROSURFACE_GPU_REQUIRED` is not 1.
@@ -118,37 +118,13 @@ fn rel(g: f32, r: f32) -> f64 {
     (g - r).abs() / r.abs()
 }
 
-/// The largest component difference of two unit vectors.
-fn vec_diff(a: [f32; 3], b: [f32; 3]) -> f64 {
-    (0..3)
-        .map(|k| (a[k] as f64 - b[k] as f64).abs())
-        .fold(0.0, f64::max)
-}
-
 /// |w||m|/|w·m| (f64), the cancellation of the visible pdf's dot product (1e12 capped).
 fn dot_cancellation(w: [f32; 3], m: [f32; 3]) -> f64 {
     let d: f64 = (0..3).map(|k| w[k] as f64 * m[k] as f64).sum();
     (1.0 / d.abs()).min(1e12)
 }
 
-/// The largest ratio of difference to bound for each named quantity, and where.
-struct Worst {
-    names: Vec<&'static str>,
-    max: Vec<(f64, String)>,
-}
-
 impl Worst {
-    fn new(names: &[&'static str]) -> Self {
-        Worst {
-            names: names.to_vec(),
-            max: vec![(0.0, String::new()); names.len()],
-        }
-    }
-    fn add(&mut self, k: usize, e: f64, what: impl FnOnce() -> String) {
-        if e > self.max[k].0 || e.is_nan() {
-            self.max[k] = (e, what());
-        }
-    }
     fn check(&self) {
         for (k, (e, w)) in self.max.iter().enumerate() {
             eprintln!("{:>28}: max {e:.3e} of its bound {w}", self.names[k]);

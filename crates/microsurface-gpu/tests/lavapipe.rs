@@ -36,7 +36,7 @@ use microsurface_gpu::{kernels_source, Error, Gpu, Program, KERNEL_IN, KERNEL_OU
 use std::sync::OnceLock;
 
 mod grid;
-use grid::{directions, normals, uniforms, ALPHAS};
+use grid::{directions, normals, uniforms, vec_diff, Worst, ALPHAS};
 
 /// The device and the compiled kernels, once per test binary; `None` (the tests skip) only
 /// where no Vulkan adapter exists and `MICROSURFACE_GPU_REQUIRED` is not 1.
@@ -125,24 +125,7 @@ fn rel(g: f32, r: f32) -> f64 {
     (g - r).abs() / r.abs()
 }
 
-/// The largest relative difference of each named quantity and where it occurred.
-struct Worst {
-    names: Vec<&'static str>,
-    max: Vec<(f64, String)>,
-}
-
 impl Worst {
-    fn new(names: &[&'static str]) -> Self {
-        Worst {
-            names: names.to_vec(),
-            max: vec![(0.0, String::new()); names.len()],
-        }
-    }
-    fn add(&mut self, k: usize, e: f64, what: impl FnOnce() -> String) {
-        if e > self.max[k].0 || e.is_nan() {
-            self.max[k] = (e, what());
-        }
-    }
     fn check(&self, tol: &[f64]) {
         for (k, (e, w)) in self.max.iter().enumerate() {
             eprintln!(
@@ -213,13 +196,6 @@ fn ggx_d_lambda_g1_g2_pdfs_match_rust_f32() {
         }
     }
     w.check(&[TOL; 8]);
-}
-
-/// The largest component difference of two unit vectors.
-fn vec_diff(a: [f32; 3], b: [f32; 3]) -> f64 {
-    (0..3)
-        .map(|i| (a[i] as f64 - b[i] as f64).abs())
-        .fold(0.0, f64::max)
 }
 
 /// The sampled normals' bound per component, 16ε: the Rust f32 samplers form cos 2πu in f64

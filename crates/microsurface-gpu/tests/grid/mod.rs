@@ -1,5 +1,6 @@
-//! The grids the GPU tests share: roughness, directions, normals and uniforms, from normal
-//! incidence to grazing and below the horizon, and the edge uniforms 0 and 1 − 2⁻²⁴.
+//! What the GPU tests share: the grids (roughness, directions, normals and uniforms, from
+//! normal incidence to grazing and below the horizon, and the edge uniforms 0 and 1 − 2⁻²⁴),
+//! and the worst-error bookkeeping (`Worst`, `vec_diff`).
 #![allow(dead_code)] // (each test file uses its part)
 
 /// Roughness (αx, αy): isotropic from 2e-3 to 2, and anisotropic both ways.
@@ -57,4 +58,32 @@ pub fn uniforms() -> Vec<[f32; 2]> {
         .iter()
         .flat_map(|&a| UNIFORMS.iter().map(move |&b| [a, b]))
         .collect()
+}
+
+/// The largest component difference of two unit vectors.
+pub fn vec_diff(a: [f32; 3], b: [f32; 3]) -> f64 {
+    (0..3)
+        .map(|k| (a[k] as f64 - b[k] as f64).abs())
+        .fold(0.0, f64::max)
+}
+
+/// The largest error of each named quantity (a relative difference, or a ratio to its
+/// bound) and where it occurred; each test file reports and asserts it (`check`).
+pub struct Worst {
+    pub names: Vec<&'static str>,
+    pub max: Vec<(f64, String)>,
+}
+
+impl Worst {
+    pub fn new(names: &[&'static str]) -> Self {
+        Worst {
+            names: names.to_vec(),
+            max: vec![(0.0, String::new()); names.len()],
+        }
+    }
+    pub fn add(&mut self, k: usize, e: f64, what: impl FnOnce() -> String) {
+        if e > self.max[k].0 || e.is_nan() {
+            self.max[k] = (e, what());
+        }
+    }
 }
