@@ -156,6 +156,7 @@ fn dispatch(gpu: &Gpu, pipeline: &wgpu::ComputePipeline, bind: &wgpu::BindGroup,
         });
         pass.set_pipeline(pipeline);
         pass.set_bind_group(0, bind, &[]);
+        pass.set_bind_group(1, gpu.tables(), &[]);
         let (x, y) = groups(n);
         pass.dispatch_workgroups(x, y, 1);
     }

@@ -7,6 +7,8 @@
 
 @group(0) @binding(0) var<storage, read> ms_in: array<vec4<f32>>;
 @group(0) @binding(1) var<storage, read_write> ms_out: array<f32>;
+const MS_TABLES_GROUP: u32 = 1u;
+const MS_TABLES_BINDING: u32 = 0u;
 
 const ITER: u32 = 8u;
 

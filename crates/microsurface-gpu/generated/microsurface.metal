@@ -6,8 +6,9 @@
 using metal::uint;
 
 struct _mslBufferSizes {
-    uint size4;
-    uint size5;
+    uint size0;
+    uint size1;
+    uint size2;
 };
 
 struct MsFresnel {
@@ -26,15 +27,7 @@ struct MsBoundedCap {
     float top;
     char _pad3[12];
 };
-struct type_7 {
-    metal::float4 inner[152];
-};
-struct type_8 {
-    metal::float4 inner[200];
-};
-struct type_9 {
-    metal::float4 inner[24];
-};
+typedef metal::float4 type_7[1];
 struct MsMicrofacet {
     uint ndf;
     char _pad1[4];
@@ -65,28 +58,60 @@ struct MsLutTap {
     uint i;
     float f;
 };
-typedef metal::float4 type_10[1];
 constant float MS_PI = 3.1415927;
+constant float MS_FRAC_1_PI = 0.31830987;
 constant float MS_TAU = 6.2831855;
 constant uint MS_FRESNEL_ONE = 0u;
 constant uint MS_FRESNEL_DIELECTRIC = 1u;
 constant uint MS_FRESNEL_CONDUCTOR = 2u;
 constant uint MS_FRESNEL_SCHLICK = 3u;
 constant uint MS_FRESNEL_F82_TINT = 4u;
+constant uint MS_TABLES_GROUP = 1u;
+constant uint MS_TABLES_BINDING = 0u;
 constant uint MS_BK_SEGMENTS_LOG2_ = 2u;
 constant int MS_BK_ERFCX_K0_ = -14;
 constant int MS_BK_ERFCX_K1_ = 5;
+constant uint MS_BK_ERFCX_AT = 0u;
 constant int MS_BK_ERFC_RATIO_K0_ = -14;
 constant int MS_BK_ERFC_RATIO_K1_ = 5;
+constant uint MS_BK_ERFC_RATIO_AT = 152u;
 constant int MS_BK_ERFINV_Q_K0_ = -25;
 constant int MS_BK_ERFINV_Q_K1_ = 0;
+constant uint MS_BK_ERFINV_Q_AT = 304u;
 constant int MS_BK_ERFINV_W_K0_ = 4;
 constant int MS_BK_ERFINV_W_K1_ = 7;
+constant uint MS_BK_ERFINV_W_AT = 504u;
 constant float MS_BK_QUANTILE_EDGE = -27.200563;
+constant int MS_DG_LAMBDA_K0_ = -30;
+constant int MS_DG_LAMBDA_K1_ = 16;
+constant uint MS_DG_LAMBDA_M = 3u;
+constant uint MS_DG_LAMBDA_AT = 528u;
+constant int MS_DG_D_K0_ = -30;
+constant int MS_DG_D_K1_ = 30;
+constant uint MS_DG_D_M = 2u;
+constant uint MS_DG_D_AT = 896u;
+constant int MS_EXP_QA_K0_ = -24;
+constant int MS_EXP_QA_K1_ = 6;
+constant uint MS_EXP_QA_M = 5u;
+constant uint MS_EXP_QA_AT = 1616u;
+constant int MS_EXP_QB_K0_ = 6;
+constant int MS_EXP_QB_K1_ = 12;
+constant uint MS_EXP_QB_M = 7u;
+constant uint MS_EXP_QB_AT = 2576u;
+constant int MS_EXP_FAR_K0_ = 5;
+constant int MS_EXP_FAR_K1_ = 9;
+constant uint MS_EXP_FAR_M = 3u;
+constant uint MS_EXP_FAR_AT = 3344u;
+constant uint MS_ZIG_EXP_AT = 3408u;
+constant uint MS_ZIG_NORMAL_AT = 3664u;
+constant uint MS_TABLES_ROWS = 3920u;
 constant float MS_FRAC_1_SQRT_PI = 0.5641896;
 constant float MS_SQRT_PI = 1.7724539;
+constant float MS_EULER_GAMMA = 0.5772157;
 constant uint MS_NDF_GGX = 0u;
 constant uint MS_NDF_BECKMANN = 1u;
+constant uint MS_NDF_DOUBLE_GGX = 2u;
+constant uint MS_NDF_EXPONENTIAL = 3u;
 constant uint MS_MASKING_CORRELATED = 0u;
 constant uint MS_MASKING_SEPARABLE = 1u;
 constant uint MS_MASKING_CORRELATED_BETA = 2u;
@@ -112,34 +137,34 @@ int naga_f2i32(float value) {
 metal::float2 ms_cos_sin_turn(
     float v
 ) {
-    float k_4 = metal::rint(4.0 * v);
-    float r_3 = v - (0.25 * k_4);
-    float x_6 = MS_TAU * r_3;
-    float x2_ = x_6 * x_6;
-    float s_6 = x_6 * (1.0 + (x2_ * (-0.16666667 + (x2_ * (0.008333333 + (x2_ * (-0.0001984127 + (x2_ * 0.0000027557319))))))));
-    float c_12 = 1.0 + (x2_ * (-0.5 + (x2_ * (0.041666668 + (x2_ * (-0.0013888889 + (x2_ * (0.000024801588 + (x2_ * -0.0000002755732)))))))));
-    int q = naga_f2i32(k_4) & 3;
-    if (q == 0) {
-        return metal::float2(c_12, s_6);
+    float k_7 = metal::rint(4.0 * v);
+    float r_3 = v - (0.25 * k_7);
+    float x_12 = MS_TAU * r_3;
+    float x2_ = x_12 * x_12;
+    float s_9 = x_12 * (1.0 + (x2_ * (-0.16666667 + (x2_ * (0.008333333 + (x2_ * (-0.0001984127 + (x2_ * 0.0000027557319))))))));
+    float c_15 = 1.0 + (x2_ * (-0.5 + (x2_ * (0.041666668 + (x2_ * (-0.0013888889 + (x2_ * (0.000024801588 + (x2_ * -0.0000002755732)))))))));
+    int q_2 = naga_f2i32(k_7) & 3;
+    if (q_2 == 0) {
+        return metal::float2(c_15, s_9);
     } else {
-        if (q == 1) {
-            return metal::float2(-(s_6), c_12);
+        if (q_2 == 1) {
+            return metal::float2(-(s_9), c_15);
         } else {
-            if (q == 2) {
-                return metal::float2(-(c_12), -(s_6));
+            if (q_2 == 2) {
+                return metal::float2(-(c_15), -(s_9));
             }
         }
     }
-    return metal::float2(s_6, -(c_12));
+    return metal::float2(s_9, -(c_15));
 }
 
 metal::float3 ms_rescaled(
     metal::float3 a
 ) {
     bool local = {};
-    float m_5 = metal::max(metal::abs(a.x), metal::max(metal::abs(a.y), metal::abs(a.z)));
-    if (m_5 > 0.0) {
-        local = m_5 <= 340282350000000000000000000000000000000.0;
+    float m_6 = metal::max(metal::abs(a.x), metal::max(metal::abs(a.y), metal::abs(a.z)));
+    if (m_6 > 0.0) {
+        local = m_6 <= 340282350000000000000000000000000000000.0;
     } else {
         local = false;
     }
@@ -147,7 +172,7 @@ metal::float3 ms_rescaled(
     if (!(_e16)) {
         return a;
     }
-    return a / metal::float3(m_5);
+    return a / metal::float3(m_6);
 }
 
 float ms_dot(
@@ -184,9 +209,9 @@ metal::float3 ms_unit(
     if (metal::abs(_e1 - 1.0) <= 0.000001) {
         return w;
     }
-    float m_6 = metal::max(metal::abs(w.x), metal::max(metal::abs(w.y), metal::abs(w.z)));
-    if (m_6 > 0.0) {
-        local_2 = m_6 <= 340282350000000000000000000000000000000.0;
+    float m_7 = metal::max(metal::abs(w.x), metal::max(metal::abs(w.y), metal::abs(w.z)));
+    if (m_7 > 0.0) {
+        local_2 = m_7 <= 340282350000000000000000000000000000000.0;
     } else {
         local_2 = false;
     }
@@ -194,7 +219,7 @@ metal::float3 ms_unit(
     if (!(_e22)) {
         return w;
     }
-    metal::float3 _e27 = ms_normalize(w * (1.0 / m_6));
+    metal::float3 _e27 = ms_normalize(w * (1.0 / m_7));
     return _e27;
 }
 
@@ -212,13 +237,13 @@ metal::float3 ms_unit_normal(
     if (_e9) {
         return v_1 * (1.0 / metal::sqrt(_e1));
     }
-    float m_7 = metal::max(metal::abs(v_1.x), metal::max(metal::abs(v_1.y), metal::abs(v_1.z)));
-    if (m_7 == 0.0) {
+    float m_8 = metal::max(metal::abs(v_1.x), metal::max(metal::abs(v_1.y), metal::abs(v_1.z)));
+    if (m_8 == 0.0) {
         return metal::float3(0.0, 0.0, 1.0);
     }
-    metal::float3 s_7 = v_1 / metal::float3(m_7);
-    float _e30 = ms_dot(s_7, s_7);
-    return s_7 * (1.0 / metal::sqrt(_e30));
+    metal::float3 s_10 = v_1 / metal::float3(m_8);
+    float _e30 = ms_dot(s_10, s_10);
+    return s_10 * (1.0 / metal::sqrt(_e30));
 }
 
 metal::float3 ms_reflect(
@@ -240,11 +265,11 @@ metal::float3 ms_half_vector_reflection(
     metal::float3 wo_1,
     metal::float3 wi
 ) {
-    metal::float3 s_8 = wo_1 + wi;
-    if (!((metal::max(metal::abs(s_8.x), metal::max(metal::abs(s_8.y), metal::abs(s_8.z))) > 0.0))) {
+    metal::float3 s_11 = wo_1 + wi;
+    if (!((metal::max(metal::abs(s_11.x), metal::max(metal::abs(s_11.y), metal::abs(s_11.z))) > 0.0))) {
         return metal::float3(0.0);
     }
-    metal::float3 _e16 = ms_normalize(s_8);
+    metal::float3 _e16 = ms_normalize(s_11);
     if (_e16.z < 0.0) {
         return -(_e16);
     }
@@ -373,8 +398,8 @@ metal::float4 ms_refract(
     metal::float3 _e22 = n_1;
     metal::float3 _e23 = n_1;
     float _e24 = ms_dot(t0_, _e23);
-    metal::float3 t_2 = t0_ + (_e22 * -(_e24));
-    float _e28 = ms_dot(t_2, t_2);
+    metal::float3 t_4 = t0_ + (_e22 * -(_e24));
+    float _e28 = ms_dot(t_4, t_4);
     float _e29 = eta_1;
     float _e30 = eta_1;
     float sin2_t = _e28 / (_e29 * _e30);
@@ -385,7 +410,7 @@ metal::float4 ms_refract(
     float _e41 = eta_1;
     metal::float3 _e45 = n_1;
     float _e49 = eta_1;
-    return metal::float4((t_2 * (-1.0 / _e41)) + (_e45 * -(cos_t)), _e49);
+    return metal::float4((t_4 * (-1.0 / _e41)) + (_e45 * -(cos_t)), _e49);
 }
 
 float ms_fresnel_dielectric(
@@ -407,31 +432,31 @@ float ms_fresnel_dielectric(
         eta_2 = 1.0 / _e9;
     }
     float _e12 = cos_i_1;
-    float c_13 = metal::min(_e12, 1.0);
+    float c_16 = metal::min(_e12, 1.0);
     float _e15 = eta_2;
     if (_e15 == 1.0) {
         return 0.0;
     }
-    if (c_13 == 0.0) {
+    if (c_16 == 0.0) {
         return 1.0;
     }
     float _e24 = eta_2;
     if (_e24 > 1000000000000000000.0) {
         float _e27 = eta_2;
         float e_3 = 1.0 / _e27;
-        float cos_t_1 = metal::sqrt(((1.0 - e_3) * (1.0 + e_3)) + ((c_13 * e_3) * (c_13 * e_3)));
-        r_parl = (c_13 - (e_3 * cos_t_1)) / (c_13 + (e_3 * cos_t_1));
-        r_perp = ((e_3 * c_13) - cos_t_1) / ((e_3 * c_13) + cos_t_1);
+        float cos_t_1 = metal::sqrt(((1.0 - e_3) * (1.0 + e_3)) + ((c_16 * e_3) * (c_16 * e_3)));
+        r_parl = (c_16 - (e_3 * cos_t_1)) / (c_16 + (e_3 * cos_t_1));
+        r_perp = ((e_3 * c_16) - cos_t_1) / ((e_3 * c_16) + cos_t_1);
     } else {
         float _e51 = eta_2;
         if (_e51 > 1.0) {
             float _e54 = eta_2;
             float _e57 = eta_2;
-            ect2_ = ((_e54 - 1.0) * (_e57 + 1.0)) + (c_13 * c_13);
+            ect2_ = ((_e54 - 1.0) * (_e57 + 1.0)) + (c_16 * c_16);
         } else {
             float _e63 = eta_2;
             float _e64 = eta_2;
-            ect2_ = (_e63 * _e64) - ((1.0 - c_13) * (1.0 + c_13));
+            ect2_ = (_e63 * _e64) - ((1.0 - c_16) * (1.0 + c_16));
         }
         float _e72 = ect2_;
         if (_e72 <= 0.0) {
@@ -441,9 +466,9 @@ float ms_fresnel_dielectric(
         float ect = metal::sqrt(_e76);
         float _e78 = eta_2;
         float _e79 = eta_2;
-        float e2c = (_e78 * _e79) * c_13;
+        float e2c = (_e78 * _e79) * c_16;
         r_parl = (e2c - ect) / (e2c + ect);
-        r_perp = (c_13 - ect) / (c_13 + ect);
+        r_perp = (c_16 - ect) / (c_16 + ect);
     }
     float _e88 = r_parl;
     float _e89 = r_parl;
@@ -469,17 +494,17 @@ float ms_cnorm_ratio(
     metal::float2 a_6,
     metal::float2 b_3
 ) {
-    float s_9 = metal::max(metal::max(metal::abs(a_6.x), metal::abs(a_6.y)), metal::max(metal::abs(b_3.x), metal::abs(b_3.y)));
-    if (s_9 == 0.0) {
+    float s_12 = metal::max(metal::max(metal::abs(a_6.x), metal::abs(a_6.y)), metal::max(metal::abs(b_3.x), metal::abs(b_3.y)));
+    if (s_12 == 0.0) {
         return 0.0;
     }
-    if (!((s_9 <= 340282350000000000000000000000000000000.0))) {
+    if (!((s_12 <= 340282350000000000000000000000000000000.0))) {
         float _e19 = ms_cnorm(a_6);
         float _e20 = ms_cnorm(b_3);
         return _e19 / _e20;
     }
-    float _e24 = ms_cnorm(a_6 / metal::float2(s_9));
-    float _e27 = ms_cnorm(b_3 / metal::float2(s_9));
+    float _e24 = ms_cnorm(a_6 / metal::float2(s_12));
+    float _e27 = ms_cnorm(b_3 / metal::float2(s_12));
     return _e24 / _e27;
 }
 
@@ -505,29 +530,29 @@ metal::float2 ms_csqrt(
     if (r_6 == 0.0) {
         return metal::float2(0.0);
     }
-    float t_3 = metal::sqrt((r_6 + metal::abs(a_8.x)) * 0.5);
+    float t_5 = metal::sqrt((r_6 + metal::abs(a_8.x)) * 0.5);
     if (a_8.x >= 0.0) {
-        return metal::float2(t_3, a_8.y / (t_3 + t_3));
+        return metal::float2(t_5, a_8.y / (t_5 + t_5));
     }
-    s_1 = t_3;
+    s_1 = t_5;
     if (a_8.y < 0.0) {
-        s_1 = -(t_3);
+        s_1 = -(t_5);
     }
     float _e29 = s_1;
-    return metal::float2(metal::abs(a_8.y) / (t_3 + t_3), _e29);
+    return metal::float2(metal::abs(a_8.y) / (t_5 + t_5), _e29);
 }
 
 float ms_fresnel_conductor(
     float cos_in_1,
     float eta_3,
-    float k
+    float k_1
 ) {
     bool local_4 = {};
     bool local_5 = {};
     metal::float2 w_2 = {};
     float cos_i_5 = metal::min(metal::max(cos_in_1, 0.0), 1.0);
     if (eta_3 == 1.0) {
-        local_4 = k == 0.0;
+        local_4 = k_1 == 0.0;
     } else {
         local_4 = false;
     }
@@ -536,7 +561,7 @@ float ms_fresnel_conductor(
         return 0.0;
     }
     if (metal::abs(eta_3) < 0.000000001) {
-        local_5 = metal::abs(k) < 0.000000001;
+        local_5 = metal::abs(k_1) < 0.000000001;
     } else {
         local_5 = false;
     }
@@ -544,11 +569,11 @@ float ms_fresnel_conductor(
     if (_e25) {
         return 1.0;
     }
-    metal::float2 n_4 = metal::float2(eta_3, k);
+    metal::float2 n_7 = metal::float2(eta_3, k_1);
     float sin2_i = (1.0 - cos_i_5) * (1.0 + cos_i_5);
     metal::float2 ci = metal::float2(cos_i_5, 0.0);
-    if (metal::max(metal::abs(eta_3), metal::abs(k)) > 1000000000000000000.0) {
-        metal::float2 _e40 = ms_crecip(n_4);
+    if (metal::max(metal::abs(eta_3), metal::abs(k_1)) > 1000000000000000000.0) {
+        metal::float2 _e40 = ms_crecip(n_7);
         metal::float2 _e41 = ms_cmul(_e40, _e40);
         metal::float2 sin2_t_1 = _e41 * sin2_i;
         metal::float2 _e49 = ms_csqrt(metal::float2(1.0 - sin2_t_1.x, -(sin2_t_1.y)));
@@ -558,10 +583,10 @@ float ms_fresnel_conductor(
         float _e57 = ms_cnorm_ratio(ci_m - _e49, ci_m + _e49);
         return metal::min(0.5 * (_e54 + _e57), 1.0);
     }
-    metal::float2 _e63 = ms_cmul(n_4, n_4);
-    float _e65 = ms_cnorm(n_4);
+    metal::float2 _e63 = ms_cmul(n_7, n_7);
+    float _e65 = ms_cnorm(n_7);
     if (_e65 >= 1.0) {
-        metal::float2 _e74 = ms_cmul(metal::float2(eta_3 - 1.0, k), metal::float2(eta_3 + 1.0, k));
+        metal::float2 _e74 = ms_cmul(metal::float2(eta_3 - 1.0, k_1), metal::float2(eta_3 + 1.0, k_1));
         w_2 = _e74 + metal::float2(cos_i_5 * cos_i_5, 0.0);
     } else {
         w_2 = _e63 - metal::float2(sin2_i, 0.0);
@@ -570,8 +595,8 @@ float ms_fresnel_conductor(
     metal::float2 _e83 = ms_crecip(_e63);
     metal::float2 _e84 = ms_cmul(_e82, _e83);
     metal::float2 _e85 = ms_csqrt(_e84);
-    metal::float2 n_ci = n_4 * cos_i_5;
-    metal::float2 _e87 = ms_cmul(n_4, _e85);
+    metal::float2 n_ci = n_7 * cos_i_5;
+    metal::float2 _e87 = ms_cmul(n_7, _e85);
     float _e90 = ms_cnorm_ratio(n_ci - _e85, n_ci + _e85);
     float _e93 = ms_cnorm_ratio(ci - _e87, ci + _e87);
     return metal::min(0.5 * (_e90 + _e93), 1.0);
@@ -581,9 +606,9 @@ float ms_fresnel_schlick(
     float cos_i_2,
     float f0_
 ) {
-    float m_8 = 1.0 - metal::min(metal::max(cos_i_2, 0.0), 1.0);
-    float m2_ = m_8 * m_8;
-    return f0_ + ((1.0 - f0_) * ((m2_ * m2_) * m_8));
+    float m_9 = 1.0 - metal::min(metal::max(cos_i_2, 0.0), 1.0);
+    float m2_ = m_9 * m_9;
+    return f0_ + ((1.0 - f0_) * ((m2_ * m2_) * m_9));
 }
 
 float ms_fresnel_f82_tint(
@@ -592,10 +617,10 @@ float ms_fresnel_f82_tint(
     float h
 ) {
     float mu = metal::min(metal::max(cos_i_3, 0.0), 1.0);
-    float m_9 = 1.0 - mu;
-    float m5_ = (((m_9 * m_9) * m_9) * m_9) * m_9;
-    float a_12 = ((f0_1 + ((1.0 - f0_1) * 0.46266437)) * (1.0 - h)) / 0.05665278;
-    float r_7 = (f0_1 + ((1.0 - f0_1) * m5_)) - (((a_12 * mu) * m5_) * m_9);
+    float m_10 = 1.0 - mu;
+    float m5_ = (((m_10 * m_10) * m_10) * m_10) * m_10;
+    float a_18 = ((f0_1 + ((1.0 - f0_1) * 0.46266437)) * (1.0 - h)) / 0.05665278;
+    float r_7 = (f0_1 + ((1.0 - f0_1) * m5_)) - (((a_18 * mu) * m5_) * m_10);
     return metal::min(metal::max(r_7, 0.0), 1.0);
 }
 
@@ -639,48 +664,48 @@ float ms_ggx_d(
     metal::float3 wm_2,
     metal::float2 alpha
 ) {
-    float z_1 = wm_2.z;
-    if (!((z_1 > 0.0))) {
+    float z_3 = wm_2.z;
+    if (!((z_3 > 0.0))) {
         return 0.0;
     }
-    float x_7 = wm_2.x / alpha.x;
-    float y = wm_2.y / alpha.y;
-    float t_4 = ((x_7 * x_7) + (y * y)) + (z_1 * z_1);
-    return 1.0 / ((((MS_PI * alpha.x) * alpha.y) * t_4) * t_4);
+    float x_13 = wm_2.x / alpha.x;
+    float y_3 = wm_2.y / alpha.y;
+    float t_6 = ((x_13 * x_13) + (y_3 * y_3)) + (z_3 * z_3);
+    return 1.0 / ((((MS_PI * alpha.x) * alpha.y) * t_6) * t_6);
 }
 
 float ms_ggx_lambda(
     metal::float3 w_3,
     metal::float2 alpha_1
 ) {
-    float x_8 = alpha_1.x * w_3.x;
-    float y_1 = alpha_1.y * w_3.y;
-    float z_2 = metal::abs(w_3.z);
-    float t_5 = (x_8 * x_8) + (y_1 * y_1);
-    float z2_ = z_2 * z_2;
-    float den = 2.0 * (z2_ + (z_2 * metal::sqrt(z2_ + t_5)));
+    float x_14 = alpha_1.x * w_3.x;
+    float y_4 = alpha_1.y * w_3.y;
+    float z_4 = metal::abs(w_3.z);
+    float t_7 = (x_14 * x_14) + (y_4 * y_4);
+    float z2_ = z_4 * z_4;
+    float den = 2.0 * (z2_ + (z_4 * metal::sqrt(z2_ + t_7)));
     if (!((den > 0.0))) {
-        if (z_2 == 0.0) {
+        if (z_4 == 0.0) {
             float _e25 = ms_inf();
             return _e25;
         }
-        return (t_5 / (z_2 + metal::sqrt((z_2 * z_2) + t_5))) / (z_2 + z_2);
+        return (t_7 / (z_4 + metal::sqrt((z_4 * z_4) + t_7))) / (z_4 + z_4);
     }
-    return t_5 / den;
+    return t_7 / den;
 }
 
 float ms_ggx_g1_(
     metal::float3 w_4,
     metal::float2 alpha_2
 ) {
-    float x_9 = alpha_2.x * w_4.x;
-    float y_2 = alpha_2.y * w_4.y;
-    float z_3 = metal::abs(w_4.z);
-    float den_1 = z_3 + metal::sqrt((z_3 * z_3) + ((x_9 * x_9) + (y_2 * y_2)));
+    float x_15 = alpha_2.x * w_4.x;
+    float y_5 = alpha_2.y * w_4.y;
+    float z_5 = metal::abs(w_4.z);
+    float den_1 = z_5 + metal::sqrt((z_5 * z_5) + ((x_15 * x_15) + (y_5 * y_5)));
     if (!((den_1 > 0.0))) {
         return 0.0;
     }
-    return (z_3 + z_3) / den_1;
+    return (z_5 + z_5) / den_1;
 }
 
 float ms_ggx_g2_(
@@ -711,7 +736,7 @@ float ms_ggx_pdf(
     float c = {};
     bool local_6 = {};
     bool local_7 = {};
-    float z_4 = metal::abs(w_5.z);
+    float z_6 = metal::abs(w_5.z);
     float _e5 = ms_dot(w_5, wm_3);
     c = _e5;
     if (w_5.z < 0.0) {
@@ -720,7 +745,7 @@ float ms_ggx_pdf(
     }
     float _e12 = c;
     if (_e12 > 0.0) {
-        local_6 = z_4 > 0.0;
+        local_6 = z_6 > 0.0;
     } else {
         local_6 = false;
     }
@@ -736,51 +761,61 @@ float ms_ggx_pdf(
     }
     float sx = alpha_5.x * w_5.x;
     float sy = alpha_5.y * w_5.y;
-    float len_1 = metal::sqrt(((sx * sx) + (sy * sy)) + (z_4 * z_4));
+    float len_3 = metal::sqrt(((sx * sx) + (sy * sy)) + (z_6 * z_6));
     float mx = wm_3.x / alpha_5.x;
     float my = wm_3.y / alpha_5.y;
-    float t_6 = ((mx * mx) + (my * my)) + (wm_3.z * wm_3.z);
+    float t_8 = ((mx * mx) + (my * my)) + (wm_3.z * wm_3.z);
     float _e55 = c;
     float _e56 = c;
-    return (_e55 + _e56) / (((((MS_PI * alpha_5.x) * alpha_5.y) * t_6) * t_6) * (z_4 + len_1));
+    return (_e55 + _e56) / (((((MS_PI * alpha_5.x) * alpha_5.y) * t_8) * t_8) * (z_6 + len_3));
 }
 
-metal::float3 ms_ggx_cap_normal(
+metal::float3 ms_ggx_cap_normal_stretched(
     metal::float3 w_6,
-    metal::float2 alpha_6,
+    metal::float3 stretch,
     metal::float2 u,
     float len
 ) {
     float inv = 1.0 / len;
-    float x_10 = (alpha_6.x * w_6.x) * inv;
-    float y_3 = (alpha_6.y * w_6.y) * inv;
-    float z_5 = w_6.z * inv;
-    metal::float2 _e17 = ms_cos_sin_turn(u.x);
-    float above = (1.0 - u.y) * (1.0 + z_5);
-    float sin = metal::sqrt(metal::max(u.y * ((above * (1.0 + z_5)) + ((x_10 * x_10) + (y_3 * y_3))), 0.0));
-    metal::float3 h_1 = metal::float3(alpha_6.x * ((sin * _e17.x) + x_10), alpha_6.y * ((sin * _e17.y) + y_3), above);
-    float n_5 = 1.0 / metal::sqrt(((h_1.x * h_1.x) + (h_1.y * h_1.y)) + (h_1.z * h_1.z));
-    return h_1 * n_5;
+    float x_16 = (stretch.x * w_6.x) * inv;
+    float y_6 = (stretch.y * w_6.y) * inv;
+    float z_7 = (stretch.z * w_6.z) * inv;
+    metal::float2 _e19 = ms_cos_sin_turn(u.x);
+    float above = (1.0 - u.y) * (1.0 + z_7);
+    float sin = metal::sqrt(metal::max(u.y * ((above * (1.0 + z_7)) + ((x_16 * x_16) + (y_6 * y_6))), 0.0));
+    metal::float3 h_1 = metal::float3(stretch.x * ((sin * _e19.x) + x_16), stretch.y * ((sin * _e19.y) + y_6), stretch.z * above);
+    float n_8 = 1.0 / metal::sqrt(((h_1.x * h_1.x) + (h_1.y * h_1.y)) + (h_1.z * h_1.z));
+    return h_1 * n_8;
+}
+
+metal::float3 ms_ggx_cap_normal(
+    metal::float3 w_7,
+    metal::float2 alpha_6,
+    metal::float2 u_1,
+    float len_1
+) {
+    metal::float3 _e6 = ms_ggx_cap_normal_stretched(w_7, metal::float3(alpha_6, 1.0), u_1, len_1);
+    return _e6;
 }
 
 metal::float3 ms_ggx_sample_wm(
     metal::float3 w_in,
     metal::float2 alpha_7,
-    metal::float2 u_1
+    metal::float2 u_2
 ) {
-    metal::float3 w_7 = {};
+    metal::float3 w_8 = {};
     bool local_8 = {};
-    w_7 = w_in;
-    float _e5 = w_7.z;
+    w_8 = w_in;
+    float _e5 = w_8.z;
     if (_e5 < 0.0) {
-        metal::float3 _e8 = w_7;
-        w_7 = -(_e8);
+        metal::float3 _e8 = w_8;
+        w_8 = -(_e8);
     }
-    float _e12 = w_7.x;
-    float _e16 = w_7.y;
-    float _e19 = w_7.z;
-    metal::float3 s_10 = metal::float3(alpha_7.x * _e12, alpha_7.y * _e16, _e19);
-    float n2_ = ((s_10.x * s_10.x) + (s_10.y * s_10.y)) + (s_10.z * s_10.z);
+    float _e12 = w_8.x;
+    float _e16 = w_8.y;
+    float _e19 = w_8.z;
+    metal::float3 s_13 = metal::float3(alpha_7.x * _e12, alpha_7.y * _e16, _e19);
+    float n2_ = ((s_13.x * s_13.x) + (s_13.y * s_13.y)) + (s_13.z * s_13.z);
     if (n2_ >= 0.000000000000000000000001) {
         local_8 = n2_ <= 1000000000000000000000000.0;
     } else {
@@ -788,39 +823,39 @@ metal::float3 ms_ggx_sample_wm(
     }
     bool _e39 = local_8;
     if (_e39) {
-        metal::float3 _e40 = w_7;
-        metal::float3 _e42 = ms_ggx_cap_normal(_e40, alpha_7, u_1, metal::sqrt(n2_));
-        float _e45 = w_7.x;
-        float _e49 = w_7.y;
-        float _e54 = w_7.z;
+        metal::float3 _e40 = w_8;
+        metal::float3 _e42 = ms_ggx_cap_normal(_e40, alpha_7, u_2, metal::sqrt(n2_));
+        float _e45 = w_8.x;
+        float _e49 = w_8.y;
+        float _e54 = w_8.z;
         float d_14 = ((_e42.x * _e45) + (_e42.y * _e49)) + (_e42.z * _e54);
-        float _e58 = w_7.x;
-        float _e61 = w_7.y;
-        float _e65 = w_7.z;
+        float _e58 = w_8.x;
+        float _e61 = w_8.y;
+        float _e65 = w_8.z;
         float l1_ = (metal::abs(_e58) + metal::abs(_e61)) + metal::abs(_e65);
         if (d_14 > (0.00000024 * l1_)) {
             return _e42;
         }
-        metal::float3 _e71 = w_7;
+        metal::float3 _e71 = w_8;
         metal::float3 _e72 = ms_facing(_e42, _e71);
         return _e72;
     }
-    metal::float3 _e73 = w_7;
+    metal::float3 _e73 = w_8;
     metal::float3 _e74 = ms_rescaled(_e73);
     metal::float3 sr = metal::float3(alpha_7.x * _e74.x, alpha_7.y * _e74.y, _e74.z);
-    metal::float3 _e95 = ms_ggx_cap_normal(_e74, alpha_7, u_1, metal::sqrt(((sr.x * sr.x) + (sr.y * sr.y)) + (sr.z * sr.z)));
-    metal::float3 _e96 = w_7;
+    metal::float3 _e95 = ms_ggx_cap_normal(_e74, alpha_7, u_2, metal::sqrt(((sr.x * sr.x) + (sr.y * sr.y)) + (sr.z * sr.z)));
+    metal::float3 _e96 = w_8;
     metal::float3 _e97 = ms_facing(_e95, _e96);
     return _e97;
 }
 
 MsSample ms_ggx_sample(
-    metal::float3 w_8,
+    metal::float3 w_9,
     metal::float2 alpha_8,
-    metal::float2 u_2
+    metal::float2 u_3
 ) {
-    metal::float3 _e3 = ms_ggx_sample_wm(w_8, alpha_8, u_2);
-    metal::float3 _e4 = ms_unit(w_8);
+    metal::float3 _e3 = ms_ggx_sample_wm(w_9, alpha_8, u_3);
+    metal::float3 _e4 = ms_unit(w_9);
     float _e5 = ms_ggx_pdf(_e4, _e3, alpha_8);
     return MsSample {_e3, _e5};
 }
@@ -838,24 +873,24 @@ float ms_ggx_pdf_dcos(
 
 MsSample ms_ggx_sample_dcos(
     metal::float2 alpha_10,
-    metal::float2 u_3
+    metal::float2 u_4
 ) {
-    metal::float2 _e3 = ms_cos_sin_turn(u_3.y);
-    float r_8 = metal::sqrt(u_3.x);
-    metal::float3 _e21 = ms_unit_normal(metal::float3((alpha_10.x * r_8) * _e3.x, (alpha_10.y * r_8) * _e3.y, metal::sqrt(metal::max(1.0 - u_3.x, 0.0))));
+    metal::float2 _e3 = ms_cos_sin_turn(u_4.y);
+    float r_8 = metal::sqrt(u_4.x);
+    metal::float3 _e21 = ms_unit_normal(metal::float3((alpha_10.x * r_8) * _e3.x, (alpha_10.y * r_8) * _e3.y, metal::sqrt(metal::max(1.0 - u_4.x, 0.0))));
     float _e22 = ms_ggx_d(_e21, alpha_10);
     return MsSample {_e21, _e22 * _e21.z};
 }
 
 MsBoundedCap ms_ggx_bounded_cap(
-    metal::float3 w_9,
+    metal::float3 w_10,
     metal::float2 alpha_11
 ) {
     metal::float3 v_2 = {};
-    bool down = w_9.z < 0.0;
-    v_2 = w_9;
+    bool down = w_10.z < 0.0;
+    v_2 = w_10;
     if (down) {
-        v_2 = -(w_9);
+        v_2 = -(w_10);
     }
     float _e9 = v_2.x;
     float _e13 = v_2.y;
@@ -864,22 +899,22 @@ MsBoundedCap ms_ggx_bounded_cap(
     if (down) {
         return MsBoundedCap {_e18, _e18.z, 0.0};
     }
-    float a_13 = metal::min(metal::min(alpha_11.x, alpha_11.y), 1.0);
+    float a_19 = metal::min(metal::min(alpha_11.x, alpha_11.y), 1.0);
     float _e28 = v_2.x;
     float _e30 = v_2.x;
     float _e33 = v_2.y;
     float _e35 = v_2.y;
-    float s_11 = 1.0 + metal::sqrt((_e28 * _e30) + (_e33 * _e35));
-    float a2_ = a_13 * a_13;
-    float s2_ = s_11 * s_11;
+    float s_14 = 1.0 + metal::sqrt((_e28 * _e30) + (_e33 * _e35));
+    float a2_ = a_19 * a_19;
+    float s2_ = s_14 * s_14;
     float _e44 = v_2.z;
     float _e47 = v_2.z;
     float den_2 = s2_ + ((a2_ * _e44) * _e47);
-    float k_5 = ((1.0 - a2_) * s2_) / den_2;
+    float k_8 = ((1.0 - a2_) * s2_) / den_2;
     float _e55 = v_2.z;
     float _e57 = v_2.z;
     float one_minus_k = (a2_ * (s2_ + (_e55 * _e57))) / den_2;
-    return MsBoundedCap {_e18, k_5 * _e18.z, one_minus_k * _e18.z};
+    return MsBoundedCap {_e18, k_8 * _e18.z, one_minus_k * _e18.z};
 }
 
 float ms_ggx_pdf_bounded(
@@ -890,32 +925,32 @@ float ms_ggx_pdf_bounded(
     metal::float3 _e3 = ms_unit(w_in_1);
     MsBoundedCap _e4 = ms_ggx_bounded_cap(_e3, alpha_12);
     metal::float3 ws = _e4.ws;
-    float b_6 = _e4.b;
+    float b_8 = _e4.b;
     metal::float3 _e15 = ms_normalize(metal::float3(wm_5.x / alpha_12.x, wm_5.y / alpha_12.y, wm_5.z));
     float _e16 = ms_dot(_e15, ws);
     float cz = ((_e16 + _e16) * _e15.z) - _e4.ws[2];
-    if (cz < -(b_6)) {
+    if (cz < -(b_8)) {
         return 0.0;
     }
     float _e25 = ms_ggx_pdf(_e3, wm_5, alpha_12);
-    return (_e25 * (1.0 + _e4.ws[2])) / (1.0 + b_6);
+    return (_e25 * (1.0 + _e4.ws[2])) / (1.0 + b_8);
 }
 
 MsSample ms_ggx_sample_bounded(
     metal::float3 w_in_2,
     metal::float2 alpha_13,
-    metal::float2 u_4
+    metal::float2 u_5
 ) {
     metal::float3 _e3 = ms_unit(w_in_2);
     MsBoundedCap _e4 = ms_ggx_bounded_cap(_e3, alpha_13);
     metal::float3 ws_1 = _e4.ws;
-    float b_7 = _e4.b;
-    metal::float2 _e8 = ms_cos_sin_turn(u_4.x);
-    float above_1 = (1.0 - u_4.y) * (1.0 + b_7);
+    float b_9 = _e4.b;
+    metal::float2 _e8 = ms_cos_sin_turn(u_5.x);
+    float above_1 = (1.0 - u_5.y) * (1.0 + b_9);
     float one_minus_b = (((_e4.ws[0] * _e4.ws[0]) + (_e4.ws[1] * _e4.ws[1])) / (1.0 + _e4.ws[2])) + _e4.top;
-    float sin_1 = metal::sqrt(metal::max((u_4.y * (1.0 + b_7)) * (above_1 + one_minus_b), 0.0));
-    metal::float3 m_10 = metal::float3((sin_1 * _e8.x) + _e4.ws[0], (sin_1 * _e8.y) + _e4.ws[1], above_1 + _e4.top);
-    metal::float3 _e58 = ms_normalize(metal::float3(alpha_13.x * m_10.x, alpha_13.y * m_10.y, metal::max(m_10.z, 0.0)));
+    float sin_1 = metal::sqrt(metal::max((u_5.y * (1.0 + b_9)) * (above_1 + one_minus_b), 0.0));
+    metal::float3 m_11 = metal::float3((sin_1 * _e8.x) + _e4.ws[0], (sin_1 * _e8.y) + _e4.ws[1], above_1 + _e4.top);
+    metal::float3 _e58 = ms_normalize(metal::float3(alpha_13.x * m_11.x, alpha_13.y * m_11.y, metal::max(m_11.z, 0.0)));
     metal::float3 _e59 = ms_facing(_e58, _e3);
     float _e60 = ms_ggx_pdf_bounded(_e3, _e59, alpha_13);
     return MsSample {_e59, _e60};
@@ -932,20 +967,284 @@ float ms_ggx_pdf_bounded_reflection(
         return 0.0;
     }
     float _e7 = ms_dot(wo_8, _e3);
-    float c_14 = metal::abs(_e7);
-    if (!((c_14 > 0.0))) {
+    float c_17 = metal::abs(_e7);
+    if (!((c_17 > 0.0))) {
         return 0.0;
     }
     float _e13 = ms_ggx_pdf_bounded(wo_8, _e3, alpha_14);
-    return _e13 / (4.0 * c_14);
+    return _e13 / (4.0 * c_17);
+}
+
+metal::uint2 ms_u64_add(
+    metal::uint2 a_9,
+    metal::uint2 b_4
+) {
+    uint lo_3 = a_9.x + b_4.x;
+    return metal::uint2(lo_3, (a_9.y + b_4.y) + ((lo_3 < a_9.x) ? 1u : 0u));
+}
+
+metal::uint2 ms_u32_mul_wide(
+    uint x,
+    uint y
+) {
+    uint x0_ = x & 65535u;
+    uint x1_ = x >> 16u;
+    uint y0_ = y & 65535u;
+    uint y1_ = y >> 16u;
+    uint p00_ = x0_ * y0_;
+    uint p01_ = x0_ * y1_;
+    uint p10_ = x1_ * y0_;
+    uint p11_ = x1_ * y1_;
+    uint mid = ((p00_ >> 16u) + (p01_ & 65535u)) + (p10_ & 65535u);
+    return metal::uint2((mid << 16u) | (p00_ & 65535u), ((p11_ + (p01_ >> 16u)) + (p10_ >> 16u)) + (mid >> 16u));
+}
+
+metal::uint2 ms_u64_mul(
+    metal::uint2 a_10,
+    metal::uint2 b_5
+) {
+    metal::uint2 _e4 = ms_u32_mul_wide(a_10.x, b_5.x);
+    return metal::uint2(_e4.x, (_e4.y + (a_10.x * b_5.y)) + (a_10.y * b_5.x));
+}
+
+metal::uint2 ms_u64_xorshift(
+    metal::uint2 a_11,
+    uint k_2
+) {
+    return a_11 ^ metal::uint2((a_11.x >> k_2) | (a_11.y << (32u - k_2)), a_11.y >> k_2);
+}
+
+metal::uint2 ms_f64_bits(
+    float v_3
+) {
+    uint man = {};
+    uint e64_ = {};
+    uint b_10 = as_type<uint>(v_3);
+    uint sign_2 = b_10 & 2147483648u;
+    uint e_4 = (b_10 >> 23u) & 255u;
+    man = b_10 & 8388607u;
+    if (e_4 == 0u) {
+        uint _e14 = man;
+        if (_e14 == 0u) {
+            return metal::uint2(0u, sign_2);
+        }
+        uint _e19 = man;
+        uint p = metal::select(31 - metal::clz(_e19), uint(-1), _e19 == 0);
+        e64_ = p + 874u;
+        uint _e23 = man;
+        man = (_e23 << (23u - p)) & 8388607u;
+    } else {
+        if (e_4 == 255u) {
+            e64_ = 2047u;
+        } else {
+            e64_ = e_4 + 896u;
+        }
+    }
+    uint _e34 = man;
+    uint _e37 = e64_;
+    uint _e41 = man;
+    return metal::uint2(_e34 << 29u, (sign_2 | (_e37 << 20u)) | (_e41 >> 3u));
+}
+
+metal::uint2 ms_stream_new(
+    metal::float2 u_6
+) {
+    metal::uint2 _e2 = ms_f64_bits(u_6.x);
+    metal::uint2 _e4 = ms_f64_bits(u_6.y);
+    metal::uint2 rot = metal::uint2((_e4.x << 29u) | (_e4.y >> 3u), (_e4.y << 29u) | (_e4.x >> 3u));
+    return (_e2 ^ rot) ^ metal::uint2(2242054355u, 608135816u);
+}
+
+metal::uint2 ms_stream_next_u64_(
+    thread metal::uint2& state_1
+) {
+    metal::uint2 z = {};
+    metal::uint2 _e1 = state_1;
+    metal::uint2 _e5 = ms_u64_add(_e1, metal::uint2(2135587861u, 2654435769u));
+    state_1 = _e5;
+    metal::uint2 _e6 = state_1;
+    metal::uint2 _e8 = ms_u64_xorshift(_e6, 30u);
+    metal::uint2 _e12 = ms_u64_mul(_e8, metal::uint2(484763065u, 3210233709u));
+    z = _e12;
+    metal::uint2 _e14 = z;
+    metal::uint2 _e16 = ms_u64_xorshift(_e14, 27u);
+    metal::uint2 _e20 = ms_u64_mul(_e16, metal::uint2(321982955u, 2496678331u));
+    z = _e20;
+    metal::uint2 _e21 = z;
+    metal::uint2 _e23 = ms_u64_xorshift(_e21, 31u);
+    return _e23;
+}
+
+float ms_stream_next(
+    thread metal::uint2& state_2
+) {
+    metal::uint2 _e1 = ms_stream_next_u64_(state_2);
+    return static_cast<float>(_e1.y >> 8u) * 0.000000059604645;
+}
+
+uint naga_f2u32(float value) {
+    return static_cast<uint>(metal::clamp(value, 0.0, 4294967000.0));
+}
+
+float ms_zig_sample(
+    uint at,
+    bool normal,
+    float w_11,
+    thread metal::uint2& state_3,
+    device type_7 const& ms_tables,
+    constant _mslBufferSizes& _buffer_sizes
+) {
+    float y_1 = {};
+    uint k_3 = {};
+    uint i = {};
+    metal::float4 layer = {};
+    float x_1 = {};
+    int n_2 = 0;
+    int j = {};
+    float f = {};
+    y_1 = w_11 * 256.0;
+    float _e7 = y_1;
+    k_3 = naga_f2u32(metal::max(_e7, 0.0));
+    uint _e12 = k_3;
+    i = _e12 & 255u;
+    uint _e17 = i;
+    metal::float4 _e20 = ms_tables[at + _e17];
+    layer = _e20;
+    float _e22 = y_1;
+    uint _e23 = k_3;
+    float _e27 = layer.x;
+    x_1 = (_e22 - static_cast<float>(_e23)) * _e27;
+    float _e30 = x_1;
+    float _e32 = layer.z;
+    if (_e30 < _e32) {
+        float _e34 = x_1;
+        return _e34;
+    }
+    uint2 loop_bound = uint2(4294967295u);
+    bool loop_init = true;
+    while(true) {
+        if (metal::all(loop_bound == uint2(0u))) { break; }
+        loop_bound -= uint2(loop_bound.y == 0u, 1u);
+        if (!loop_init) {
+            int _e128 = n_2;
+            n_2 = as_type<int>(as_type<uint>(_e128) + as_type<uint>(1));
+        }
+        loop_init = false;
+        int _e37 = n_2;
+        if (_e37 < 64) {
+        } else {
+            break;
+        }
+        {
+            float _e40 = x_1;
+            float _e41 = x_1;
+            if (_e40 != _e41) {
+                float _e43 = x_1;
+                return _e43;
+            }
+            uint _e44 = i;
+            if (_e44 == 0u) {
+                float r_9 = layer.z;
+                if (!(normal)) {
+                    float _e50 = ms_stream_next(state_3);
+                    return r_9 - metal::log(1.0 - _e50);
+                }
+                j = 0;
+                uint2 loop_bound_1 = uint2(4294967295u);
+                bool loop_init_1 = true;
+                while(true) {
+                    if (metal::all(loop_bound_1 == uint2(0u))) { break; }
+                    loop_bound_1 -= uint2(loop_bound_1.y == 0u, 1u);
+                    if (!loop_init_1) {
+                        int _e77 = j;
+                        j = as_type<int>(as_type<uint>(_e77) + as_type<uint>(1));
+                    }
+                    loop_init_1 = false;
+                    int _e57 = j;
+                    if (_e57 < 64) {
+                    } else {
+                        break;
+                    }
+                    {
+                        float _e60 = ms_stream_next(state_3);
+                        float a_20 = -(metal::log(1.0 - _e60)) / r_9;
+                        float _e66 = ms_stream_next(state_3);
+                        float b_11 = -(metal::log(1.0 - _e66));
+                        if ((2.0 * b_11) > (a_20 * a_20)) {
+                            return r_9 + a_20;
+                        }
+                    }
+                }
+                return r_9;
+            }
+            float _e80 = layer.y;
+            float _e81 = ms_stream_next(state_3);
+            float _e83 = layer.w;
+            float _e85 = layer.y;
+            float h_2 = _e80 + (_e81 * (_e83 - _e85));
+            float _e89 = x_1;
+            f = metal::exp(-(_e89));
+            if (normal) {
+                float _e93 = x_1;
+                float _e96 = x_1;
+                f = metal::exp((-0.5 * _e93) * _e96);
+            }
+            float _e99 = f;
+            if (h_2 < _e99) {
+                float _e101 = x_1;
+                return _e101;
+            }
+            float _e102 = ms_stream_next(state_3);
+            y_1 = _e102 * 256.0;
+            float _e105 = y_1;
+            k_3 = naga_f2u32(_e105);
+            uint _e107 = k_3;
+            i = _e107 & 255u;
+            uint _e111 = i;
+            metal::float4 _e114 = ms_tables[at + _e111];
+            layer = _e114;
+            float _e115 = y_1;
+            uint _e116 = k_3;
+            float _e120 = layer.x;
+            x_1 = (_e115 - static_cast<float>(_e116)) * _e120;
+            float _e122 = x_1;
+            float _e124 = layer.z;
+            if (_e122 < _e124) {
+                float _e126 = x_1;
+                return _e126;
+            }
+        }
+    }
+    float _e130 = x_1;
+    return _e130;
+}
+
+float ms_zig_exp1_(
+    float w_12,
+    thread metal::uint2& state_4,
+    device type_7 const& ms_tables,
+    constant _mslBufferSizes& _buffer_sizes
+) {
+    float _e4 = ms_zig_sample(MS_ZIG_EXP_AT, false, w_12, state_4, ms_tables, _buffer_sizes);
+    return _e4;
+}
+
+float ms_zig_half_normal(
+    float w_13,
+    thread metal::uint2& state_5,
+    device type_7 const& ms_tables,
+    constant _mslBufferSizes& _buffer_sizes
+) {
+    float _e4 = ms_zig_sample(MS_ZIG_NORMAL_AT, true, w_13, state_5, ms_tables, _buffer_sizes);
+    return _e4;
 }
 
 metal::float2 ms_bk_segment(
-    float x,
+    float x_2,
     int k0_,
     int k1_
 ) {
-    uint bits_1 = as_type<uint>(x);
+    uint bits_1 = as_type<uint>(x_2);
     uint rows = static_cast<uint>(as_type<int>(as_type<uint>(k1_) - as_type<uint>(k0_))) << MS_BK_SEGMENTS_LOG2_;
     uint idx = metal::min((bits_1 >> (23u - MS_BK_SEGMENTS_LOG2_)) - (static_cast<uint>(as_type<int>(as_type<uint>(127) + as_type<uint>(k0_))) << MS_BK_SEGMENTS_LOG2_), rows - 1u);
     uint pos = (bits_1 << (9u + MS_BK_SEGMENTS_LOG2_)) >> 9u;
@@ -960,82 +1259,80 @@ float ms_bk_poly(
     return (((((((((((((hi.w * s_2) + hi.z) * s_2) + hi.y) * s_2) + hi.x) * s_2) + lo.w) * s_2) + lo.z) * s_2) + lo.y) * s_2) + lo.x;
 }
 
-uint naga_f2u32(float value) {
-    return static_cast<uint>(metal::clamp(value, 0.0, 4294967000.0));
-}
-
 float ms_bk_erfcx(
-    float x_1,
-    thread type_7& MS_BK_ERFCX
+    float x_3,
+    device type_7 const& ms_tables,
+    constant _mslBufferSizes& _buffer_sizes
 ) {
-    if (x_1 < 0.000061035156) {
-        return 1.0 - (1.1283792 * x_1);
+    if (x_3 < 0.000061035156) {
+        return 1.0 - (1.1283792 * x_3);
     }
-    if (x_1 >= 32.0) {
-        float r_9 = 1.0 / (x_1 * x_1);
-        return ((1.0 - (r_9 * (0.5 - (r_9 * (0.75 - (r_9 * (1.875 - (r_9 * 6.5625)))))))) * MS_FRAC_1_SQRT_PI) / x_1;
+    if (x_3 >= 32.0) {
+        float r_10 = 1.0 / (x_3 * x_3);
+        return ((1.0 - (r_10 * (0.5 - (r_10 * (0.75 - (r_10 * (1.875 - (r_10 * 6.5625)))))))) * MS_FRAC_1_SQRT_PI) / x_3;
     }
-    metal::float2 _e30 = ms_bk_segment(x_1, MS_BK_ERFCX_K0_, MS_BK_ERFCX_K1_);
-    uint i_2 = 2u * naga_f2u32(_e30.x);
-    metal::float4 _e37 = MS_BK_ERFCX.inner[i_2];
-    metal::float4 _e42 = MS_BK_ERFCX.inner[i_2 + 1u];
-    float _e44 = ms_bk_poly(_e37, _e42, _e30.y);
-    return _e44;
+    metal::float2 _e30 = ms_bk_segment(x_3, MS_BK_ERFCX_K0_, MS_BK_ERFCX_K1_);
+    uint i_4 = 2u * naga_f2u32(_e30.x);
+    metal::float4 _e39 = ms_tables[MS_BK_ERFCX_AT + i_4];
+    metal::float4 _e46 = ms_tables[(MS_BK_ERFCX_AT + i_4) + 1u];
+    float _e48 = ms_bk_poly(_e39, _e46, _e30.y);
+    return _e48;
 }
 
 float ms_bk_erfc_ratio(
-    float a_9,
-    thread type_7& MS_BK_ERFC_RATIO
+    float a_12,
+    device type_7 const& ms_tables,
+    constant _mslBufferSizes& _buffer_sizes
 ) {
-    if (a_9 < 0.000061035156) {
-        return 1.0 - (MS_SQRT_PI * a_9);
+    if (a_12 < 0.000061035156) {
+        return 1.0 - (MS_SQRT_PI * a_12);
     }
-    if (a_9 >= 32.0) {
-        float r_10 = 1.0 / (a_9 * a_9);
-        return r_10 * (0.5 - (r_10 * (0.75 - (r_10 * (1.875 - (r_10 * (6.5625 - (r_10 * 29.53125))))))));
+    if (a_12 >= 32.0) {
+        float r_11 = 1.0 / (a_12 * a_12);
+        return r_11 * (0.5 - (r_11 * (0.75 - (r_11 * (1.875 - (r_11 * (6.5625 - (r_11 * 29.53125))))))));
     }
-    metal::float2 _e28 = ms_bk_segment(a_9, MS_BK_ERFC_RATIO_K0_, MS_BK_ERFC_RATIO_K1_);
-    uint i_3 = 2u * naga_f2u32(_e28.x);
-    metal::float4 _e35 = MS_BK_ERFC_RATIO.inner[i_3];
-    metal::float4 _e40 = MS_BK_ERFC_RATIO.inner[i_3 + 1u];
-    float _e42 = ms_bk_poly(_e35, _e40, _e28.y);
-    return _e42;
+    metal::float2 _e28 = ms_bk_segment(a_12, MS_BK_ERFC_RATIO_K0_, MS_BK_ERFC_RATIO_K1_);
+    uint i_5 = 2u * naga_f2u32(_e28.x);
+    metal::float4 _e37 = ms_tables[MS_BK_ERFC_RATIO_AT + i_5];
+    metal::float4 _e44 = ms_tables[(MS_BK_ERFC_RATIO_AT + i_5) + 1u];
+    float _e46 = ms_bk_poly(_e37, _e44, _e28.y);
+    return _e46;
 }
 
 float ms_bk_quantile(
-    float u_5,
-    thread type_8& MS_BK_ERFINV_Q,
-    thread type_9& MS_BK_ERFINV_W
+    float u_7,
+    device type_7 const& ms_tables,
+    constant _mslBufferSizes& _buffer_sizes
 ) {
     float sign = 1.0;
     float ratio = {};
-    float q_1 = 2.0 * metal::min(u_5, 1.0 - u_5);
-    if (u_5 < 0.5) {
+    float q_3 = 2.0 * metal::min(u_7, 1.0 - u_7);
+    if (u_7 < 0.5) {
         sign = -1.0;
     }
-    if (!((q_1 > 0.0))) {
+    if (!((q_3 > 0.0))) {
         float _e14 = sign;
         return -(_e14) * MS_BK_QUANTILE_EDGE;
     }
-    if (q_1 >= 0.000000029802322) {
-        metal::float2 _e25 = ms_bk_segment(metal::min(q_1, 0.99999994), MS_BK_ERFINV_Q_K0_, MS_BK_ERFINV_Q_K1_);
-        uint i_4 = 2u * naga_f2u32(_e25.x);
-        metal::float4 _e32 = MS_BK_ERFINV_Q.inner[i_4];
-        metal::float4 _e37 = MS_BK_ERFINV_Q.inner[i_4 + 1u];
-        float _e39 = ms_bk_poly(_e32, _e37, _e25.y);
-        ratio = _e39;
+    if (q_3 >= 0.000000029802322) {
+        metal::float2 _e25 = ms_bk_segment(metal::min(q_3, 0.99999994), MS_BK_ERFINV_Q_K0_, MS_BK_ERFINV_Q_K1_);
+        uint i_6 = 2u * naga_f2u32(_e25.x);
+        metal::float4 _e34 = ms_tables[MS_BK_ERFINV_Q_AT + i_6];
+        metal::float4 _e41 = ms_tables[(MS_BK_ERFINV_Q_AT + i_6) + 1u];
+        float _e43 = ms_bk_poly(_e34, _e41, _e25.y);
+        ratio = _e43;
     } else {
-        float w_19 = metal::min(-(metal::log(q_1)) - 0.6931472, 127.99);
-        metal::float2 _e48 = ms_bk_segment(w_19, MS_BK_ERFINV_W_K0_, MS_BK_ERFINV_W_K1_);
-        uint i_5 = 2u * naga_f2u32(_e48.x);
-        metal::float4 _e55 = MS_BK_ERFINV_W.inner[i_5];
-        metal::float4 _e60 = MS_BK_ERFINV_W.inner[i_5 + 1u];
-        float _e62 = ms_bk_poly(_e55, _e60, _e48.y);
-        ratio = _e62;
+        float w_33 = metal::min(-(metal::log(q_3)) - 0.6931472, 127.99);
+        metal::float2 _e52 = ms_bk_segment(w_33, MS_BK_ERFINV_W_K0_, MS_BK_ERFINV_W_K1_);
+        uint i_7 = 2u * naga_f2u32(_e52.x);
+        metal::float4 _e61 = ms_tables[MS_BK_ERFINV_W_AT + i_7];
+        metal::float4 _e68 = ms_tables[(MS_BK_ERFINV_W_AT + i_7) + 1u];
+        float _e70 = ms_bk_poly(_e61, _e68, _e52.y);
+        ratio = _e70;
     }
-    float _e63 = sign;
-    float _e66 = ratio;
-    return _e63 * ((1.0 - q_1) * _e66);
+    float _e71 = sign;
+    float _e74 = ratio;
+    return _e71 * ((1.0 - q_3) * _e74);
 }
 
 float ms_bk_ln_1m(
@@ -1044,10 +1341,10 @@ float ms_bk_ln_1m(
     if (xi > 0.5) {
         return metal::log(1.0 - xi);
     }
-    float t_7 = -(xi) / (2.0 - xi);
-    float t2_ = t_7 * t_7;
-    float p = 1.0 + (t2_ * (0.33333334 + (t2_ * (0.2 + (t2_ * (0.14285715 + (t2_ * (0.11111111 + (t2_ * (0.09090909 + (t2_ * (0.07692308 + (t2_ * 0.06666667)))))))))))));
-    return (2.0 * t_7) * p;
+    float t_9 = -(xi) / (2.0 - xi);
+    float t2_ = t_9 * t_9;
+    float p_1 = 1.0 + (t2_ * (0.33333334 + (t2_ * (0.2 + (t2_ * (0.14285715 + (t2_ * (0.11111111 + (t2_ * (0.09090909 + (t2_ * (0.07692308 + (t2_ * 0.06666667)))))))))))));
+    return (2.0 * t_9) * p_1;
 }
 
 float ms_beckmann_d(
@@ -1055,12 +1352,12 @@ float ms_beckmann_d(
     metal::float2 alpha_15
 ) {
     bool local_9 = {};
-    float z_6 = wm_6.z;
-    float r_11 = 1.0 / (alpha_15.x * alpha_15.y);
-    float x_11 = (wm_6.x * alpha_15.y) * r_11;
-    float y_4 = (wm_6.y * alpha_15.x) * r_11;
-    float z2_1 = z_6 * z_6;
-    if (z_6 > 0.0) {
+    float z_8 = wm_6.z;
+    float r_12 = 1.0 / (alpha_15.x * alpha_15.y);
+    float x_17 = (wm_6.x * alpha_15.y) * r_12;
+    float y_7 = (wm_6.y * alpha_15.x) * r_12;
+    float z2_1 = z_8 * z_8;
+    if (z_8 > 0.0) {
         local_9 = z2_1 > 0.0;
     } else {
         local_9 = false;
@@ -1069,52 +1366,55 @@ float ms_beckmann_d(
     if (!(_e24)) {
         return 0.0;
     }
-    float e_4 = ((x_11 * x_11) + (y_4 * y_4)) / z2_1;
-    if (e_4 <= 80.0) {
-        return (metal::exp(-(e_4)) * r_11) / ((MS_PI * z2_1) * z2_1);
+    float e_5 = ((x_17 * x_17) + (y_7 * y_7)) / z2_1;
+    if (e_5 <= 80.0) {
+        return (metal::exp(-(e_5)) * r_12) / ((MS_PI * z2_1) * z2_1);
     }
-    return metal::exp(((metal::log(r_11) - 1.14473) - (4.0 * metal::log(z_6))) - e_4);
+    return metal::exp(((metal::log(r_12) - 1.14473) - (4.0 * metal::log(z_8))) - e_5);
 }
 
 float ms_beckmann_lambda_cot(
-    float a_10,
-    thread type_7& MS_BK_ERFC_RATIO
+    float a_13,
+    device type_7 const& ms_tables,
+    constant _mslBufferSizes& _buffer_sizes
 ) {
-    if (!((a_10 > 0.0))) {
+    if (!((a_13 > 0.0))) {
         float _e4 = ms_inf();
         return _e4;
     }
-    if (a_10 > 10.5) {
+    if (a_13 > 10.5) {
         return 0.0;
     }
-    float _e13 = ms_bk_erfc_ratio(a_10, MS_BK_ERFC_RATIO);
-    return ((0.5 * metal::exp(-(a_10) * a_10)) * _e13) / (MS_SQRT_PI * a_10);
+    float _e13 = ms_bk_erfc_ratio(a_13, ms_tables, _buffer_sizes);
+    return ((0.5 * metal::exp(-(a_13) * a_13)) * _e13) / (MS_SQRT_PI * a_13);
 }
 
 float ms_beckmann_lambda(
-    metal::float3 w_10,
+    metal::float3 w_14,
     metal::float2 alpha_16,
-    thread type_7& MS_BK_ERFC_RATIO
+    device type_7 const& ms_tables,
+    constant _mslBufferSizes& _buffer_sizes
 ) {
-    float x_12 = alpha_16.x * w_10.x;
-    float y_5 = alpha_16.y * w_10.y;
-    float s_12 = metal::sqrt((x_12 * x_12) + (y_5 * y_5));
-    if (!((s_12 > 0.0))) {
+    float x_18 = alpha_16.x * w_14.x;
+    float y_8 = alpha_16.y * w_14.y;
+    float s_15 = metal::sqrt((x_18 * x_18) + (y_8 * y_8));
+    if (!((s_15 > 0.0))) {
         return 0.0;
     }
-    float _e19 = ms_beckmann_lambda_cot(metal::abs(w_10.z) / s_12, MS_BK_ERFC_RATIO);
+    float _e19 = ms_beckmann_lambda_cot(metal::abs(w_14.z) / s_15, ms_tables, _buffer_sizes);
     return _e19;
 }
 
 float ms_beckmann_g1_(
-    metal::float3 w_11,
+    metal::float3 w_15,
     metal::float2 alpha_17,
-    thread type_7& MS_BK_ERFC_RATIO
+    device type_7 const& ms_tables,
+    constant _mslBufferSizes& _buffer_sizes
 ) {
-    if (w_11.z == 0.0) {
+    if (w_15.z == 0.0) {
         return 0.0;
     }
-    float _e6 = ms_beckmann_lambda(w_11, alpha_17, MS_BK_ERFC_RATIO);
+    float _e6 = ms_beckmann_lambda(w_15, alpha_17, ms_tables, _buffer_sizes);
     return 1.0 / (1.0 + _e6);
 }
 
@@ -1122,7 +1422,8 @@ float ms_beckmann_g2_(
     metal::float3 wo_9,
     metal::float3 wi_9,
     metal::float2 alpha_18,
-    thread type_7& MS_BK_ERFC_RATIO
+    device type_7 const& ms_tables,
+    constant _mslBufferSizes& _buffer_sizes
 ) {
     bool local_10 = {};
     if (!((wo_9.z == 0.0))) {
@@ -1134,8 +1435,8 @@ float ms_beckmann_g2_(
     if (_e13) {
         return 0.0;
     }
-    float _e15 = ms_beckmann_lambda(wo_9, alpha_18, MS_BK_ERFC_RATIO);
-    float _e16 = ms_beckmann_lambda(wi_9, alpha_18, MS_BK_ERFC_RATIO);
+    float _e15 = ms_beckmann_lambda(wo_9, alpha_18, ms_tables, _buffer_sizes);
+    float _e16 = ms_beckmann_lambda(wi_9, alpha_18, ms_tables, _buffer_sizes);
     return 1.0 / (1.0 + (_e15 + _e16));
 }
 
@@ -1143,31 +1444,33 @@ float ms_beckmann_g2_separable(
     metal::float3 wo_10,
     metal::float3 wi_10,
     metal::float2 alpha_19,
-    thread type_7& MS_BK_ERFC_RATIO
+    device type_7 const& ms_tables,
+    constant _mslBufferSizes& _buffer_sizes
 ) {
-    float _e3 = ms_beckmann_g1_(wo_10, alpha_19, MS_BK_ERFC_RATIO);
-    float _e4 = ms_beckmann_g1_(wi_10, alpha_19, MS_BK_ERFC_RATIO);
+    float _e3 = ms_beckmann_g1_(wo_10, alpha_19, ms_tables, _buffer_sizes);
+    float _e4 = ms_beckmann_g1_(wi_10, alpha_19, ms_tables, _buffer_sizes);
     return _e3 * _e4;
 }
 
 float ms_beckmann_pdf(
-    metal::float3 w_12,
+    metal::float3 w_16,
     metal::float3 wm_7,
     metal::float2 alpha_20,
-    thread type_7& MS_BK_ERFC_RATIO
+    device type_7 const& ms_tables,
+    constant _mslBufferSizes& _buffer_sizes
 ) {
     float c_1 = {};
     bool local_11 = {};
-    float z_7 = metal::abs(w_12.z);
-    float _e5 = ms_dot(w_12, wm_7);
+    float z_9 = metal::abs(w_16.z);
+    float _e5 = ms_dot(w_16, wm_7);
     c_1 = _e5;
-    if (w_12.z < 0.0) {
+    if (w_16.z < 0.0) {
         float _e10 = c_1;
         c_1 = -(_e10);
     }
     float _e12 = c_1;
     if (_e12 > 0.0) {
-        local_11 = z_7 > 0.0;
+        local_11 = z_9 > 0.0;
     } else {
         local_11 = false;
     }
@@ -1175,10 +1478,10 @@ float ms_beckmann_pdf(
     if (!(_e20)) {
         return 0.0;
     }
-    float _e23 = ms_beckmann_g1_(w_12, alpha_20, MS_BK_ERFC_RATIO);
+    float _e23 = ms_beckmann_g1_(w_16, alpha_20, ms_tables, _buffer_sizes);
     float _e24 = c_1;
     float _e26 = ms_beckmann_d(wm_7, alpha_20);
-    return ((_e23 * _e24) * _e26) / z_7;
+    return ((_e23 * _e24) * _e26) / z_9;
 }
 
 float ms_beckmann_pdf_dcos(
@@ -1194,137 +1497,136 @@ float ms_beckmann_pdf_dcos(
 
 MsSample ms_beckmann_sample_dcos(
     metal::float2 alpha_22,
-    metal::float2 u_6
+    metal::float2 u_8
 ) {
-    metal::float3 v_3 = {};
-    metal::float2 _e3 = ms_cos_sin_turn(u_6.y);
-    if (u_6.x >= 1.0) {
-        v_3 = metal::float3(alpha_22.x * _e3.x, alpha_22.y * _e3.y, 0.0);
+    metal::float3 v_4 = {};
+    metal::float2 _e3 = ms_cos_sin_turn(u_8.y);
+    if (u_8.x >= 1.0) {
+        v_4 = metal::float3(alpha_22.x * _e3.x, alpha_22.y * _e3.y, 0.0);
     } else {
-        float _e17 = ms_bk_ln_1m(u_6.x);
-        float r_12 = metal::sqrt(-(_e17));
-        if (r_12 > 1.0) {
-            v_3 = metal::float3(alpha_22.x * _e3.x, alpha_22.y * _e3.y, 1.0 / r_12);
+        float _e17 = ms_bk_ln_1m(u_8.x);
+        float r_13 = metal::sqrt(-(_e17));
+        if (r_13 > 1.0) {
+            v_4 = metal::float3(alpha_22.x * _e3.x, alpha_22.y * _e3.y, 1.0 / r_13);
         } else {
-            v_3 = metal::float3((alpha_22.x * r_12) * _e3.x, (alpha_22.y * r_12) * _e3.y, 1.0);
+            v_4 = metal::float3((alpha_22.x * r_13) * _e3.x, (alpha_22.y * r_13) * _e3.y, 1.0);
         }
     }
-    metal::float3 _e41 = v_3;
+    metal::float3 _e41 = v_4;
     metal::float3 _e42 = ms_unit_normal(_e41);
     float _e43 = ms_beckmann_d(_e42, alpha_22);
     return MsSample {_e42, _e43 * _e42.z};
 }
 
 float ms_bk_visible_x(
-    float a_11,
-    float u_7,
-    thread type_7& MS_BK_ERFCX,
-    thread type_8& MS_BK_ERFINV_Q,
-    thread type_9& MS_BK_ERFINV_W
+    float a_14,
+    float u_9,
+    device type_7 const& ms_tables,
+    constant _mslBufferSizes& _buffer_sizes
 ) {
     float lo_1 = {};
     float hi_1 = 8.0;
-    float x_2 = {};
-    int k_1 = 0;
-    float f = {};
+    float x_4 = {};
+    int k_4 = 0;
+    float f_1 = {};
     float step = {};
     bool local_12 = {};
     bool local_13 = {};
-    float ea = metal::exp(-(a_11) * a_11);
-    float _e5 = ms_bk_erfcx(a_11, MS_BK_ERFCX);
+    float ea = metal::exp(-(a_14) * a_14);
+    float _e5 = ms_bk_erfcx(a_14, ms_tables, _buffer_sizes);
     float erfc_a = _e5 * ea;
     float half_ea = 0.2820948 * ea;
-    float z_8 = ((0.5 * a_11) * (2.0 - erfc_a)) + half_ea;
-    float target_lo = u_7 * z_8;
-    float target_hi = (1.0 - u_7) * z_8;
-    lo_1 = -(a_11);
-    if (a_11 >= 1.0) {
-        float _e26 = ms_bk_quantile(u_7, MS_BK_ERFINV_Q, MS_BK_ERFINV_W);
-        x_2 = _e26;
+    float z_10 = ((0.5 * a_14) * (2.0 - erfc_a)) + half_ea;
+    float target_lo = u_9 * z_10;
+    float target_hi = (1.0 - u_9) * z_10;
+    lo_1 = -(a_14);
+    if (a_14 >= 1.0) {
+        float _e26 = ms_bk_quantile(u_9, ms_tables, _buffer_sizes);
+        x_4 = _e26;
     } else {
-        float _e27 = ms_bk_ln_1m(u_7);
-        x_2 = metal::sqrt(-(_e27)) - a_11;
+        float _e27 = ms_bk_ln_1m(u_9);
+        x_4 = metal::sqrt(-(_e27)) - a_14;
     }
-    float _e31 = x_2;
+    float _e31 = x_4;
     float _e32 = lo_1;
     float _e33 = hi_1;
-    x_2 = metal::clamp(_e31, _e32, _e33);
-    uint2 loop_bound = uint2(4294967295u);
-    bool loop_init = true;
+    x_4 = metal::clamp(_e31, _e32, _e33);
+    uint2 loop_bound_2 = uint2(4294967295u);
+    bool loop_init_2 = true;
     while(true) {
-        if (metal::all(loop_bound == uint2(0u))) { break; }
-        loop_bound -= uint2(loop_bound.y == 0u, 1u);
-        if (!loop_init) {
-            int _e157 = k_1;
-            k_1 = as_type<int>(as_type<uint>(_e157) + as_type<uint>(1));
+        if (metal::all(loop_bound_2 == uint2(0u))) { break; }
+        loop_bound_2 -= uint2(loop_bound_2.y == 0u, 1u);
+        if (!loop_init_2) {
+            int _e157 = k_4;
+            k_4 = as_type<int>(as_type<uint>(_e157) + as_type<uint>(1));
         }
-        loop_init = false;
-        int _e37 = k_1;
+        loop_init_2 = false;
+        int _e37 = k_4;
         if (_e37 < 64) {
         } else {
             break;
         }
         {
-            float _e40 = x_2;
-            float _e42 = x_2;
-            float e_5 = metal::exp(-(_e40) * _e42);
-            float _e45 = x_2;
-            float _e47 = ms_bk_erfcx(metal::abs(_e45), MS_BK_ERFCX);
-            float ec = _e47 * e_5;
-            float half_e = 0.2820948 * e_5;
-            f = float {};
-            float _e53 = x_2;
+            float _e40 = x_4;
+            float _e42 = x_4;
+            float e_6 = metal::exp(-(_e40) * _e42);
+            float _e45 = x_4;
+            float _e47 = ms_bk_erfcx(metal::abs(_e45), ms_tables, _buffer_sizes);
+            float ec = _e47 * e_6;
+            float half_e = 0.2820948 * e_6;
+            f_1 = float {};
+            float _e53 = x_4;
             if (_e53 <= 0.0) {
-                f = (((0.5 * a_11) * (ec - erfc_a)) - (half_e - half_ea)) - target_lo;
+                f_1 = (((0.5 * a_14) * (ec - erfc_a)) - (half_e - half_ea)) - target_lo;
             } else {
-                f = (target_hi - ((0.5 * a_11) * ec)) - half_e;
+                f_1 = (target_hi - ((0.5 * a_14) * ec)) - half_e;
             }
-            float _e68 = f;
+            float _e68 = f_1;
             if (_e68 < 0.0) {
-                float _e71 = x_2;
+                float _e71 = x_4;
                 lo_1 = _e71;
             } else {
-                float _e72 = f;
+                float _e72 = f_1;
                 if (_e72 > 0.0) {
-                    float _e75 = x_2;
+                    float _e75 = x_4;
                     hi_1 = _e75;
                 } else {
-                    float _e76 = x_2;
+                    float _e76 = x_4;
                     return _e76;
                 }
             }
-            float _e77 = x_2;
-            float g1_ = _e77 + a_11;
-            float _e79 = x_2;
-            float _e82 = x_2;
-            float g2_ = 1.0 - ((2.0 * _e79) * (_e82 + a_11));
-            float big_e = e_5 * MS_FRAC_1_SQRT_PI;
-            float _e89 = f;
+            float _e77 = x_4;
+            float g1_ = _e77 + a_14;
+            float _e79 = x_4;
+            float _e82 = x_4;
+            float g2_ = 1.0 - ((2.0 * _e79) * (_e82 + a_14));
+            float big_e = e_6 * MS_FRAC_1_SQRT_PI;
+            float _e89 = f_1;
             float fg2_ = _e89 * g2_;
             float g1e = (g1_ * g1_) * big_e;
             step = float {};
             if (metal::abs(fg2_) < g1e) {
-                float _e97 = f;
+                float _e97 = f_1;
                 step = ((2.0 * _e97) * g1_) / ((2.0 * g1e) - fg2_);
             } else {
-                float _e105 = f;
+                float _e105 = f_1;
                 step = _e105 / (g1_ * big_e);
             }
-            float _e108 = x_2;
+            float _e108 = x_4;
             float _e109 = step;
             float next = _e108 - _e109;
             float _e111 = step;
             float size = metal::abs(_e111);
-            float _e113 = x_2;
+            float _e113 = x_4;
             if ((size * (1.0 + metal::abs(_e113))) <= 0.0001) {
-                float _e122 = x_2;
-                local_12 = size <= (0.0001 * (_e122 + a_11));
+                float _e122 = x_4;
+                local_12 = size <= (0.0001 * (_e122 + a_14));
             } else {
                 local_12 = false;
             }
             bool _e128 = local_12;
             if (_e128) {
-                return metal::clamp(next, -(a_11), 8.0);
+                return metal::clamp(next, -(a_14), 8.0);
             }
             float _e132 = lo_1;
             if (next > _e132) {
@@ -1335,11 +1637,11 @@ float ms_bk_visible_x(
             }
             bool _e139 = local_13;
             if (_e139) {
-                x_2 = next;
+                x_4 = next;
             } else {
                 float _e140 = lo_1;
                 float _e141 = hi_1;
-                x_2 = 0.5 * (_e140 + _e141);
+                x_4 = 0.5 * (_e140 + _e141);
             }
             float _e145 = hi_1;
             float _e146 = lo_1;
@@ -1350,194 +1652,978 @@ float ms_bk_visible_x(
             }
         }
     }
-    float _e159 = x_2;
+    float _e159 = x_4;
     return _e159;
 }
 
 metal::float3 ms_beckmann_sample_wm(
-    metal::float3 w_13,
+    metal::float3 w_17,
     metal::float2 alpha_23,
-    metal::float2 u_8,
-    thread type_7& MS_BK_ERFCX,
-    thread type_8& MS_BK_ERFINV_Q,
-    thread type_9& MS_BK_ERFINV_W
+    metal::float2 u_10,
+    device type_7 const& ms_tables,
+    constant _mslBufferSizes& _buffer_sizes
 ) {
     float sign_1 = 1.0;
-    float x_3 = {};
+    float x_5 = {};
     float cp = 1.0;
     float sp = 0.0;
-    if (w_13.z < 0.0) {
+    if (w_17.z < 0.0) {
         sign_1 = -1.0;
     }
     float _e9 = sign_1;
-    float sx_1 = (_e9 * alpha_23.x) * w_13.x;
+    float sx_1 = (_e9 * alpha_23.x) * w_17.x;
     float _e14 = sign_1;
-    float sy_1 = (_e14 * alpha_23.y) * w_13.y;
+    float sy_1 = (_e14 * alpha_23.y) * w_17.y;
     float _e19 = sign_1;
-    float c_15 = _e19 * w_13.z;
-    float h_2 = metal::sqrt((sx_1 * sx_1) + (sy_1 * sy_1));
-    float _e27 = ms_bk_quantile(u_8.y, MS_BK_ERFINV_Q, MS_BK_ERFINV_W);
-    if (h_2 > 0.0) {
-        float inv_1 = 1.0 / h_2;
+    float c_18 = _e19 * w_17.z;
+    float h_3 = metal::sqrt((sx_1 * sx_1) + (sy_1 * sy_1));
+    float _e27 = ms_bk_quantile(u_10.y, ms_tables, _buffer_sizes);
+    if (h_3 > 0.0) {
+        float inv_1 = 1.0 / h_3;
         cp = sx_1 * inv_1;
         sp = sy_1 * inv_1;
-        float _e41 = ms_bk_visible_x(c_15 * inv_1, u_8.x, MS_BK_ERFCX, MS_BK_ERFINV_Q, MS_BK_ERFINV_W);
-        x_3 = _e41;
+        float _e41 = ms_bk_visible_x(c_18 * inv_1, u_10.x, ms_tables, _buffer_sizes);
+        x_5 = _e41;
     } else {
-        float _e43 = ms_bk_quantile(u_8.x, MS_BK_ERFINV_Q, MS_BK_ERFINV_W);
-        x_3 = _e43;
+        float _e43 = ms_bk_quantile(u_10.x, ms_tables, _buffer_sizes);
+        x_5 = _e43;
     }
     float _e45 = cp;
-    float _e46 = x_3;
+    float _e46 = x_5;
     float _e48 = sp;
-    float p_1 = alpha_23.x * ((_e45 * _e46) - (_e48 * _e27));
+    float p_2 = alpha_23.x * ((_e45 * _e46) - (_e48 * _e27));
     float _e53 = sp;
-    float _e54 = x_3;
+    float _e54 = x_5;
     float _e56 = cp;
-    float q_2 = alpha_23.y * ((_e53 * _e54) + (_e56 * _e27));
-    float n_6 = 1.0 / metal::sqrt(((p_1 * p_1) + (q_2 * q_2)) + 1.0);
-    metal::float3 _e71 = ms_facing(metal::float3(p_1 * n_6, q_2 * n_6, n_6), w_13);
+    float q_4 = alpha_23.y * ((_e53 * _e54) + (_e56 * _e27));
+    float n_9 = 1.0 / metal::sqrt(((p_2 * p_2) + (q_4 * q_4)) + 1.0);
+    metal::float3 _e71 = ms_facing(metal::float3(p_2 * n_9, q_4 * n_9, n_9), w_17);
     return _e71;
 }
 
 MsSample ms_beckmann_sample(
-    metal::float3 w_14,
+    metal::float3 w_18,
     metal::float2 alpha_24,
-    metal::float2 u_9,
-    thread type_7& MS_BK_ERFCX,
-    thread type_7& MS_BK_ERFC_RATIO,
-    thread type_8& MS_BK_ERFINV_Q,
-    thread type_9& MS_BK_ERFINV_W
+    metal::float2 u_11,
+    device type_7 const& ms_tables,
+    constant _mslBufferSizes& _buffer_sizes
 ) {
-    metal::float3 _e3 = ms_beckmann_sample_wm(w_14, alpha_24, u_9, MS_BK_ERFCX, MS_BK_ERFINV_Q, MS_BK_ERFINV_W);
-    metal::float3 _e4 = ms_unit(w_14);
-    float _e5 = ms_beckmann_pdf(_e4, _e3, alpha_24, MS_BK_ERFC_RATIO);
+    metal::float3 _e3 = ms_beckmann_sample_wm(w_18, alpha_24, u_11, ms_tables, _buffer_sizes);
+    metal::float3 _e4 = ms_unit(w_18);
+    float _e5 = ms_beckmann_pdf(_e4, _e3, alpha_24, ms_tables, _buffer_sizes);
+    return MsSample {_e3, _e5};
+}
+
+metal::float2 ms_fam_segment(
+    float x_6,
+    int k0_1,
+    int k1_1,
+    uint m_3
+) {
+    uint bits_2 = as_type<uint>(x_6);
+    uint rows_1 = static_cast<uint>(as_type<int>(as_type<uint>(k1_1) - as_type<uint>(k0_1))) << m_3;
+    uint idx_1 = metal::min((bits_2 >> (23u - m_3)) - (static_cast<uint>(as_type<int>(as_type<uint>(127) + as_type<uint>(k0_1))) << m_3), rows_1 - 1u);
+    uint pos_1 = (bits_2 << (9u + m_3)) >> 9u;
+    return metal::float2(static_cast<float>(idx_1), as_type<float>(1073741824u | pos_1) - 3.0);
+}
+
+float ms_fam_cubic(
+    metal::float4 c_2,
+    float s_3
+) {
+    return (((((c_2.w * s_3) + c_2.z) * s_3) + c_2.y) * s_3) + c_2.x;
+}
+
+float ms_dg_lambda_table(
+    float x_7,
+    device type_7 const& ms_tables,
+    constant _mslBufferSizes& _buffer_sizes
+) {
+    metal::float2 _e4 = ms_fam_segment(x_7, MS_DG_LAMBDA_K0_, MS_DG_LAMBDA_K1_, MS_DG_LAMBDA_M);
+    metal::float4 _e11 = ms_tables[MS_DG_LAMBDA_AT + naga_f2u32(_e4.x)];
+    float _e13 = ms_fam_cubic(_e11, _e4.y);
+    return _e13;
+}
+
+float ms_dg_lambda_ends(
+    float u_12,
+    float a_15
+) {
+    float x_19 = (((0.5 * a_15) * a_15) * ((1.0 - u_12) * (1.0 + u_12))) / (u_12 * u_12);
+    if (x_19 < 0.0000000009313226) {
+        if (x_19 <= 0.0) {
+            return 0.0;
+        }
+        return (0.5 * x_19) * (0.42278433 - metal::log(0.5 * x_19));
+    }
+    float sx_2 = (a_15 * metal::sqrt((0.5 * (1.0 - u_12)) * (1.0 + u_12))) / u_12;
+    float r_14 = 1.0 / (sx_2 * sx_2);
+    return ((1.2533141 * sx_2) * (1.0 + (r_14 * (0.125 - (r_14 * 0.0234375))))) - 0.5;
+}
+
+float ms_double_ggx_lambda(
+    metal::float3 w_19,
+    metal::float2 alpha_25,
+    device type_7 const& ms_tables,
+    constant _mslBufferSizes& _buffer_sizes
+) {
+    float x_8 = {};
+    bool local_14 = {};
+    float a_16 = {};
+    bool local_15 = {};
+    float u_26 = metal::abs(w_19.z);
+    if (alpha_25.x == alpha_25.y) {
+        float a_21 = alpha_25.x;
+        x_8 = (((0.5 * a_21) * a_21) * ((1.0 - u_26) * (1.0 + u_26))) / (u_26 * u_26);
+    } else {
+        float sx_3 = alpha_25.x * w_19.x;
+        float sy_2 = alpha_25.y * w_19.y;
+        x_8 = 0.5 * (((sx_3 * sx_3) + (sy_2 * sy_2)) / (w_19.z * w_19.z));
+    }
+    float _e35 = x_8;
+    if (_e35 >= 0.0000000009313226) {
+        float _e40 = x_8;
+        local_14 = _e40 < 65536.0;
+    } else {
+        local_14 = false;
+    }
+    bool _e44 = local_14;
+    if (_e44) {
+        float _e45 = x_8;
+        float _e46 = ms_dg_lambda_table(_e45, ms_tables, _buffer_sizes);
+        return _e46;
+    }
+    a_16 = alpha_25.x;
+    float s2_1 = (w_19.x * w_19.x) + (w_19.y * w_19.y);
+    if (alpha_25.x != alpha_25.y) {
+        local_15 = s2_1 > 0.0;
+    } else {
+        local_15 = false;
+    }
+    bool _e64 = local_15;
+    if (_e64) {
+        a_16 = metal::sqrt(((((alpha_25.x * alpha_25.x) * w_19.x) * w_19.x) + (((alpha_25.y * alpha_25.y) * w_19.y) * w_19.y)) / s2_1);
+    }
+    float _e82 = a_16;
+    float _e83 = ms_dg_lambda_ends(u_26, _e82);
+    return _e83;
+}
+
+float ms_double_ggx_g1_(
+    metal::float3 w_20,
+    metal::float2 alpha_26,
+    device type_7 const& ms_tables,
+    constant _mslBufferSizes& _buffer_sizes
+) {
+    if (w_20.z == 0.0) {
+        return 0.0;
+    }
+    float _e6 = ms_double_ggx_lambda(w_20, alpha_26, ms_tables, _buffer_sizes);
+    return 1.0 / (1.0 + _e6);
+}
+
+float ms_double_ggx_g2_(
+    metal::float3 wo_11,
+    metal::float3 wi_11,
+    metal::float2 alpha_27,
+    device type_7 const& ms_tables,
+    constant _mslBufferSizes& _buffer_sizes
+) {
+    bool local_16 = {};
+    if (!((wo_11.z == 0.0))) {
+        local_16 = wi_11.z == 0.0;
+    } else {
+        local_16 = true;
+    }
+    bool _e13 = local_16;
+    if (_e13) {
+        return 0.0;
+    }
+    float _e15 = ms_double_ggx_lambda(wo_11, alpha_27, ms_tables, _buffer_sizes);
+    float _e16 = ms_double_ggx_lambda(wi_11, alpha_27, ms_tables, _buffer_sizes);
+    return 1.0 / (1.0 + (_e15 + _e16));
+}
+
+float ms_double_ggx_g2_separable(
+    metal::float3 wo_12,
+    metal::float3 wi_12,
+    metal::float2 alpha_28,
+    device type_7 const& ms_tables,
+    constant _mslBufferSizes& _buffer_sizes
+) {
+    float _e3 = ms_double_ggx_g1_(wo_12, alpha_28, ms_tables, _buffer_sizes);
+    float _e4 = ms_double_ggx_g1_(wi_12, alpha_28, ms_tables, _buffer_sizes);
+    return _e3 * _e4;
+}
+
+float ms_dg_kernel_row(
+    uint i_1,
+    float s_4,
+    device type_7 const& ms_tables,
+    constant _mslBufferSizes& _buffer_sizes
+) {
+    metal::float4 c0_ = ms_tables[MS_DG_D_AT + (3u * i_1)];
+    metal::float4 c1_ = ms_tables[(MS_DG_D_AT + (3u * i_1)) + 1u];
+    metal::float4 c2_ = ms_tables[(MS_DG_D_AT + (3u * i_1)) + 2u];
+    float s2_2 = s_4 * s_4;
+    float s4_ = s2_2 * s2_2;
+    float s8_ = s4_ * s4_;
+    float b0_ = c0_.x + (c0_.y * s_4);
+    float b1_ = c0_.z + (c0_.w * s_4);
+    float b2_ = c1_.x + (c1_.y * s_4);
+    float b3_ = c1_.z + (c1_.w * s_4);
+    float b4_ = c2_.x + (c2_.y * s_4);
+    return ((b0_ + (b1_ * s2_2)) + ((b2_ + (b3_ * s2_2)) * s4_)) + (b4_ * s8_);
+}
+
+float ms_double_ggx_d(
+    metal::float3 wm_9,
+    metal::float2 alpha_29,
+    device type_7 const& ms_tables,
+    constant _mslBufferSizes& _buffer_sizes
+) {
+    bool local_17 = {};
+    float z_11 = wm_9.z;
+    float r_15 = 1.0 / (alpha_29.x * alpha_29.y);
+    float x_20 = (wm_9.x * alpha_29.y) * r_15;
+    float y_9 = (wm_9.y * alpha_29.x) * r_15;
+    float q_5 = (x_20 * x_20) + (y_9 * y_9);
+    if (!((z_11 > 0.0))) {
+        return (z_11 != z_11) ? z_11 : 0.0;
+    }
+    float z2_2 = z_11 * z_11;
+    float t_10 = q_5 / z2_2;
+    if (t_10 >= 0.0000000009313226) {
+        local_17 = t_10 < 1073741800.0;
+    } else {
+        local_17 = false;
+    }
+    bool _e34 = local_17;
+    if (_e34) {
+        metal::float2 _e38 = ms_fam_segment(t_10, MS_DG_D_K0_, MS_DG_D_K1_, MS_DG_D_M);
+        float _e42 = ms_dg_kernel_row(naga_f2u32(_e38.x), _e38.y, ms_tables, _buffer_sizes);
+        return (_e42 * r_15) / ((MS_PI * z2_2) * z2_2);
+    }
+    if (t_10 < 0.0000000009313226) {
+        return r_15 / ((MS_PI * z2_2) * z2_2);
+    }
+    return ((((metal::log(q_5) - (2.0 * metal::log(z_11))) - MS_EULER_GAMMA) - 1.0) * r_15) / ((MS_PI * q_5) * q_5);
+}
+
+float ms_double_ggx_pdf(
+    metal::float3 w_21,
+    metal::float3 wm_10,
+    metal::float2 alpha_30,
+    device type_7 const& ms_tables,
+    constant _mslBufferSizes& _buffer_sizes
+) {
+    float c_3 = {};
+    bool local_18 = {};
+    float z_12 = metal::abs(w_21.z);
+    float _e5 = ms_dot(w_21, wm_10);
+    c_3 = _e5;
+    if (w_21.z < 0.0) {
+        float _e10 = c_3;
+        c_3 = -(_e10);
+    }
+    float _e12 = c_3;
+    if (_e12 > 0.0) {
+        local_18 = z_12 > 0.0;
+    } else {
+        local_18 = false;
+    }
+    bool _e20 = local_18;
+    if (!(_e20)) {
+        return 0.0;
+    }
+    float _e23 = ms_double_ggx_g1_(w_21, alpha_30, ms_tables, _buffer_sizes);
+    float _e24 = c_3;
+    float _e26 = ms_double_ggx_d(wm_10, alpha_30, ms_tables, _buffer_sizes);
+    return ((_e23 * _e24) * _e26) / z_12;
+}
+
+float ms_double_ggx_pdf_dcos(
+    metal::float3 wm_11,
+    metal::float2 alpha_31,
+    device type_7 const& ms_tables,
+    constant _mslBufferSizes& _buffer_sizes
+) {
+    if (!((wm_11.z > 0.0))) {
+        return 0.0;
+    }
+    float _e7 = ms_double_ggx_d(wm_11, alpha_31, ms_tables, _buffer_sizes);
+    return _e7 * wm_11.z;
+}
+
+MsSample ms_double_ggx_sample_dcos(
+    metal::float2 alpha_32,
+    metal::float2 u_13,
+    device type_7 const& ms_tables,
+    constant _mslBufferSizes& _buffer_sizes
+) {
+    metal::uint2 state_6 = {};
+    metal::uint2 _e2 = ms_stream_new(u_13);
+    state_6 = _e2;
+    float _e4 = ms_stream_next(state_6);
+    float _e5 = ms_zig_exp1_(_e4, state_6, ms_tables, _buffer_sizes);
+    float t_11 = metal::max(_e5, 0.000000000000000000000000000000000001);
+    metal::float2 _e9 = ms_cos_sin_turn(u_13.y);
+    float r_16 = metal::sqrt(u_13.x);
+    metal::float3 _e28 = ms_unit_normal(metal::float3((alpha_32.x * r_16) * _e9.x, (alpha_32.y * r_16) * _e9.y, metal::sqrt(t_11 * metal::max(1.0 - u_13.x, 0.0))));
+    float _e29 = ms_double_ggx_d(_e28, alpha_32, ms_tables, _buffer_sizes);
+    return MsSample {_e28, _e29 * _e28.z};
+}
+
+metal::float3 ms_double_ggx_sample_wm(
+    metal::float3 w_in_3,
+    metal::float2 alpha_33,
+    metal::float2 u_14,
+    device type_7 const& ms_tables,
+    constant _mslBufferSizes& _buffer_sizes
+) {
+    metal::float3 w_22 = {};
+    metal::uint2 state_7 = {};
+    float s_5 = 1.0;
+    float len_2 = 1.0;
+    int n_3 = 0;
+    float t_1 = {};
+    metal::float3 _e3 = ms_unit(w_in_3);
+    w_22 = _e3;
+    float _e6 = w_22.z;
+    if (_e6 < 0.0) {
+        metal::float3 _e9 = w_22;
+        w_22 = -(_e9);
+    }
+    float _e13 = w_22.x;
+    float sx_4 = alpha_33.x * _e13;
+    float _e17 = w_22.y;
+    float sy_3 = alpha_33.y * _e17;
+    float c_19 = w_22.z;
+    float h_4 = metal::sqrt((sx_4 * sx_4) + (sy_3 * sy_3));
+    if (!((metal::abs(c_19 + h_4) <= 340282350000000000000000000000000000000.0))) {
+        return metal::float3(c_19 + h_4);
+    }
+    float e_7 = 2.0 * c_19;
+    float g = MS_SQRT_PI * h_4;
+    float p_exp = e_7 / (e_7 + g);
+    float inv_p = metal::min((e_7 + g) / e_7, 340282350000000000000000000000000000000.0);
+    float inv_q = metal::min((e_7 + g) / g, 340282350000000000000000000000000000000.0);
+    metal::uint2 _e46 = ms_stream_new(u_14);
+    state_7 = _e46;
+    uint2 loop_bound_3 = uint2(4294967295u);
+    bool loop_init_3 = true;
+    while(true) {
+        if (metal::all(loop_bound_3 == uint2(0u))) { break; }
+        loop_bound_3 -= uint2(loop_bound_3.y == 0u, 1u);
+        if (!loop_init_3) {
+            int _e91 = n_3;
+            n_3 = as_type<int>(as_type<uint>(_e91) + as_type<uint>(1));
+        }
+        loop_init_3 = false;
+        int _e54 = n_3;
+        if (_e54 < 64) {
+        } else {
+            break;
+        }
+        {
+            float _e57 = ms_stream_next(state_7);
+            t_1 = float {};
+            if (_e57 < p_exp) {
+                float _e62 = ms_zig_exp1_(_e57 * inv_p, state_7, ms_tables, _buffer_sizes);
+                t_1 = _e62;
+            } else {
+                float _e65 = ms_zig_half_normal((_e57 - p_exp) * inv_q, state_7, ms_tables, _buffer_sizes);
+                t_1 = (0.5 * _e65) * _e65;
+            }
+            float _e69 = t_1;
+            t_1 = metal::max(_e69, 0.000000000000000000000000000000000001);
+            float _e72 = t_1;
+            s_5 = metal::sqrt(_e72);
+            float _e75 = t_1;
+            len_2 = metal::sqrt(((c_19 * c_19) * _e75) + (h_4 * h_4));
+            float _e80 = ms_stream_next(state_7);
+            float _e81 = s_5;
+            float _e85 = s_5;
+            float _e87 = len_2;
+            if ((_e80 * ((e_7 * _e81) + h_4)) <= ((c_19 * _e85) + _e87)) {
+                break;
+            }
+        }
+    }
+    metal::float3 _e93 = w_22;
+    float _e94 = s_5;
+    float _e96 = len_2;
+    metal::float3 _e97 = ms_ggx_cap_normal_stretched(_e93, metal::float3(alpha_33, _e94), u_14, _e96);
+    metal::float3 _e98 = w_22;
+    metal::float3 _e99 = ms_facing(_e97, _e98);
+    return _e99;
+}
+
+MsSample ms_double_ggx_sample(
+    metal::float3 w_23,
+    metal::float2 alpha_34,
+    metal::float2 u_15,
+    device type_7 const& ms_tables,
+    constant _mslBufferSizes& _buffer_sizes
+) {
+    metal::float3 _e3 = ms_double_ggx_sample_wm(w_23, alpha_34, u_15, ms_tables, _buffer_sizes);
+    metal::float3 _e4 = ms_unit(w_23);
+    float _e5 = ms_double_ggx_pdf(_e4, _e3, alpha_34, ms_tables, _buffer_sizes);
+    return MsSample {_e3, _e5};
+}
+
+float ms_exp_lambda_q(
+    float q,
+    device type_7 const& ms_tables,
+    constant _mslBufferSizes& _buffer_sizes
+) {
+    if (q < 64.0) {
+        metal::float2 _e6 = ms_fam_segment(q, MS_EXP_QA_K0_, MS_EXP_QA_K1_, MS_EXP_QA_M);
+        metal::float4 _e13 = ms_tables[MS_EXP_QA_AT + naga_f2u32(_e6.x)];
+        float _e15 = ms_fam_cubic(_e13, _e6.y);
+        return _e15;
+    }
+    metal::float2 _e19 = ms_fam_segment(q, MS_EXP_QB_K0_, MS_EXP_QB_K1_, MS_EXP_QB_M);
+    metal::float4 _e26 = ms_tables[MS_EXP_QB_AT + naga_f2u32(_e19.x)];
+    float _e28 = ms_fam_cubic(_e26, _e19.y);
+    return _e28;
+}
+
+float ms_exp_lambda_z(
+    float z_1,
+    device type_7 const& ms_tables,
+    constant _mslBufferSizes& _buffer_sizes
+) {
+    if (z_1 < 0.00024414063) {
+        return ((0.63661975 / z_1) - 0.5) + (0.15915494 * z_1);
+    }
+    float q_6 = z_1 * z_1;
+    if (q_6 < 4096.0) {
+        float _e13 = ms_exp_lambda_q(q_6, ms_tables, _buffer_sizes);
+        return _e13;
+    }
+    if (z_1 < 512.0) {
+        metal::float2 _e19 = ms_fam_segment(z_1, MS_EXP_FAR_K0_, MS_EXP_FAR_K1_, MS_EXP_FAR_M);
+        uint i_8 = 2u * naga_f2u32(_e19.x);
+        metal::float4 lo_4 = ms_tables[MS_EXP_FAR_AT + i_8];
+        metal::float4 hi_3 = ms_tables[(MS_EXP_FAR_AT + i_8) + 1u];
+        float s_16 = _e19.y;
+        float s2_3 = s_16 * s_16;
+        float p_3 = ((lo_4.x + (lo_4.y * s_16)) + ((lo_4.z + (lo_4.w * s_16)) * s2_3)) + (((hi_3.x + (hi_3.y * s_16)) + (hi_3.z * s2_3)) * (s2_3 * s2_3));
+        return p_3 * metal::exp(-(z_1));
+    }
+    if (z_1 != z_1) {
+        return z_1;
+    }
+    return 0.0;
+}
+
+float ms_exponential_lambda(
+    metal::float3 w_24,
+    metal::float2 alpha_35,
+    device type_7 const& ms_tables,
+    constant _mslBufferSizes& _buffer_sizes
+) {
+    float q_1 = {};
+    bool local_19 = {};
+    float a_17 = {};
+    bool local_20 = {};
+    float u_27 = metal::abs(w_24.z);
+    if (alpha_35.x == alpha_35.y) {
+        float a_22 = alpha_35.x;
+        q_1 = ((4.0 * u_27) * u_27) / ((a_22 * a_22) * ((1.0 - u_27) * (1.0 + u_27)));
+    } else {
+        float sx_5 = alpha_35.x * w_24.x;
+        float sy_4 = alpha_35.y * w_24.y;
+        q_1 = (4.0 * (w_24.z * w_24.z)) / ((sx_5 * sx_5) + (sy_4 * sy_4));
+    }
+    float _e35 = q_1;
+    if (_e35 >= 0.000000059604645) {
+        float _e40 = q_1;
+        local_19 = _e40 < 4096.0;
+    } else {
+        local_19 = false;
+    }
+    bool _e44 = local_19;
+    if (_e44) {
+        float _e45 = q_1;
+        float _e46 = ms_exp_lambda_q(_e45, ms_tables, _buffer_sizes);
+        return _e46;
+    }
+    a_17 = alpha_35.x;
+    float s2_4 = (w_24.x * w_24.x) + (w_24.y * w_24.y);
+    if (alpha_35.x != alpha_35.y) {
+        local_20 = s2_4 > 0.0;
+    } else {
+        local_20 = false;
+    }
+    bool _e64 = local_20;
+    if (_e64) {
+        a_17 = metal::sqrt(((((alpha_35.x * alpha_35.x) * w_24.x) * w_24.x) + (((alpha_35.y * alpha_35.y) * w_24.y) * w_24.y)) / s2_4);
+    }
+    float _e83 = a_17;
+    float _e92 = ms_exp_lambda_z((u_27 + u_27) / (_e83 * metal::sqrt((1.0 - u_27) * (1.0 + u_27))), ms_tables, _buffer_sizes);
+    return _e92;
+}
+
+float ms_exponential_g1_(
+    metal::float3 w_25,
+    metal::float2 alpha_36,
+    device type_7 const& ms_tables,
+    constant _mslBufferSizes& _buffer_sizes
+) {
+    if (w_25.z == 0.0) {
+        return 0.0;
+    }
+    float _e6 = ms_exponential_lambda(w_25, alpha_36, ms_tables, _buffer_sizes);
+    return 1.0 / (1.0 + _e6);
+}
+
+float ms_exponential_g2_(
+    metal::float3 wo_13,
+    metal::float3 wi_13,
+    metal::float2 alpha_37,
+    device type_7 const& ms_tables,
+    constant _mslBufferSizes& _buffer_sizes
+) {
+    bool local_21 = {};
+    if (!((wo_13.z == 0.0))) {
+        local_21 = wi_13.z == 0.0;
+    } else {
+        local_21 = true;
+    }
+    bool _e13 = local_21;
+    if (_e13) {
+        return 0.0;
+    }
+    float _e15 = ms_exponential_lambda(wo_13, alpha_37, ms_tables, _buffer_sizes);
+    float _e16 = ms_exponential_lambda(wi_13, alpha_37, ms_tables, _buffer_sizes);
+    return 1.0 / (1.0 + (_e15 + _e16));
+}
+
+float ms_exponential_g2_separable(
+    metal::float3 wo_14,
+    metal::float3 wi_14,
+    metal::float2 alpha_38,
+    device type_7 const& ms_tables,
+    constant _mslBufferSizes& _buffer_sizes
+) {
+    float _e3 = ms_exponential_g1_(wo_14, alpha_38, ms_tables, _buffer_sizes);
+    float _e4 = ms_exponential_g1_(wi_14, alpha_38, ms_tables, _buffer_sizes);
+    return _e3 * _e4;
+}
+
+float ms_exponential_d(
+    metal::float3 wm_12,
+    metal::float2 alpha_39
+) {
+    bool local_22 = {};
+    float z_13 = wm_12.z;
+    float r_17 = 1.0 / (alpha_39.x * alpha_39.y);
+    float x_21 = (wm_12.x * alpha_39.y) * r_17;
+    float y_10 = (wm_12.y * alpha_39.x) * r_17;
+    float z2_3 = z_13 * z_13;
+    if (z_13 > 0.0) {
+        local_22 = z2_3 > 0.0;
+    } else {
+        local_22 = false;
+    }
+    bool _e24 = local_22;
+    if (!(_e24)) {
+        return (z_13 != z_13) ? z_13 : 0.0;
+    }
+    float e_8 = (2.0 * metal::sqrt((x_21 * x_21) + (y_10 * y_10))) / z_13;
+    if (e_8 <= 80.0) {
+        return ((2.0 * metal::exp(-(e_8))) * r_17) / ((MS_PI * z2_3) * z2_3);
+    }
+    return metal::exp(((metal::log(2.0 * r_17) - 1.14473) - (4.0 * metal::log(z_13))) - e_8);
+}
+
+float ms_exponential_pdf(
+    metal::float3 w_26,
+    metal::float3 wm_13,
+    metal::float2 alpha_40,
+    device type_7 const& ms_tables,
+    constant _mslBufferSizes& _buffer_sizes
+) {
+    float c_4 = {};
+    bool local_23 = {};
+    float z_14 = metal::abs(w_26.z);
+    float _e5 = ms_dot(w_26, wm_13);
+    c_4 = _e5;
+    if (w_26.z < 0.0) {
+        float _e10 = c_4;
+        c_4 = -(_e10);
+    }
+    float _e12 = c_4;
+    if (_e12 > 0.0) {
+        local_23 = z_14 > 0.0;
+    } else {
+        local_23 = false;
+    }
+    bool _e20 = local_23;
+    if (!(_e20)) {
+        return 0.0;
+    }
+    float _e23 = ms_exponential_g1_(w_26, alpha_40, ms_tables, _buffer_sizes);
+    float _e24 = c_4;
+    float _e26 = ms_exponential_d(wm_13, alpha_40);
+    return ((_e23 * _e24) * _e26) / z_14;
+}
+
+float ms_exponential_pdf_dcos(
+    metal::float3 wm_14,
+    metal::float2 alpha_41
+) {
+    if (!((wm_14.z > 0.0))) {
+        return 0.0;
+    }
+    float _e7 = ms_exponential_d(wm_14, alpha_41);
+    return _e7 * wm_14.z;
+}
+
+MsSample ms_exponential_sample_dcos(
+    metal::float2 alpha_42,
+    metal::float2 u_16,
+    device type_7 const& ms_tables,
+    constant _mslBufferSizes& _buffer_sizes
+) {
+    metal::uint2 state_8 = {};
+    metal::float3 v_5 = {};
+    metal::uint2 _e2 = ms_stream_new(u_16);
+    state_8 = _e2;
+    float _e4 = ms_stream_next(state_8);
+    float _e5 = ms_zig_exp1_(_e4, state_8, ms_tables, _buffer_sizes);
+    float _e7 = ms_bk_ln_1m(u_16.x);
+    float r_18 = 0.5 * (_e5 - _e7);
+    metal::float2 _e12 = ms_cos_sin_turn(u_16.y);
+    if (r_18 > 1.0) {
+        v_5 = metal::float3(alpha_42.x * _e12.x, alpha_42.y * _e12.y, 1.0 / r_18);
+    } else {
+        v_5 = metal::float3((alpha_42.x * r_18) * _e12.x, (alpha_42.y * r_18) * _e12.y, 1.0);
+    }
+    metal::float3 _e35 = v_5;
+    metal::float3 _e36 = ms_unit_normal(_e35);
+    float _e37 = ms_exponential_d(_e36, alpha_42);
+    return MsSample {_e36, _e37 * _e36.z};
+}
+
+metal::float3 ms_exponential_sample_wm(
+    metal::float3 w_in_4,
+    metal::float2 alpha_43,
+    metal::float2 u_17
+) {
+    metal::float3 w_27 = {};
+    float cp_1 = 1.0;
+    float sp_1 = 0.0;
+    metal::uint2 state_9 = {};
+    float v0_ = {};
+    float v1_ = {};
+    float x_9 = 0.0;
+    float y_2 = 0.0;
+    int n_4 = 0;
+    bool local_24 = {};
+    metal::float3 _e3 = ms_unit(w_in_4);
+    w_27 = _e3;
+    float _e6 = w_27.z;
+    if (_e6 < 0.0) {
+        metal::float3 _e9 = w_27;
+        w_27 = -(_e9);
+    }
+    float _e13 = w_27.x;
+    float sx_6 = alpha_43.x * _e13;
+    float _e17 = w_27.y;
+    float sy_5 = alpha_43.y * _e17;
+    float e_9 = w_27.z;
+    float h_5 = metal::sqrt((sx_6 * sx_6) + (sy_5 * sy_5));
+    if (h_5 > 0.0) {
+        cp_1 = sx_6 / h_5;
+        sp_1 = sy_5 / h_5;
+    }
+    if (!((metal::abs(e_9 + h_5) <= 340282350000000000000000000000000000000.0))) {
+        return metal::float3(e_9 + h_5);
+    }
+    float g_1 = h_5 * MS_FRAC_1_PI;
+    float total = e_9 + g_1;
+    float inv_p_1 = metal::min(total / e_9, 340282350000000000000000000000000000000.0);
+    float inv_g = metal::min(1.0 / g_1, 340282350000000000000000000000000000000.0);
+    metal::uint2 _e50 = ms_stream_new(u_17);
+    state_9 = _e50;
+    v0_ = u_17.x;
+    v1_ = u_17.y;
+    uint2 loop_bound_4 = uint2(4294967295u);
+    bool loop_init_4 = true;
+    while(true) {
+        if (metal::all(loop_bound_4 == uint2(0u))) { break; }
+        loop_bound_4 -= uint2(loop_bound_4.y == 0u, 1u);
+        if (!loop_init_4) {
+            int _e134 = n_4;
+            n_4 = as_type<int>(as_type<uint>(_e134) + as_type<uint>(1));
+        }
+        loop_init_4 = false;
+        int _e62 = n_4;
+        if (_e62 < 64) {
+        } else {
+            break;
+        }
+        {
+            int _e65 = n_4;
+            if (_e65 > 0) {
+                float _e68 = ms_stream_next(state_9);
+                v0_ = _e68;
+                float _e69 = ms_stream_next(state_9);
+                v1_ = _e69;
+            }
+            float _e70 = v1_;
+            float _e73 = ms_stream_next(state_9);
+            float prod = (1.0 - _e70) * (1.0 - _e73);
+            float _e77 = v0_;
+            float d_15 = (_e77 * total) - e_9;
+            if (d_15 < 0.0) {
+                float r_19 = -0.5 * metal::log(prod);
+                float _e85 = v0_;
+                float turn = _e85 * inv_p_1;
+                metal::float2 _e87 = ms_cos_sin_turn(turn);
+                x_9 = r_19 * _e87.x;
+                y_2 = r_19 * _e87.y;
+                if (!((metal::abs(turn - 0.5) >= 0.25))) {
+                    float _e100 = ms_stream_next(state_9);
+                    float _e102 = x_9;
+                    local_24 = (_e100 * e_9) <= (e_9 + (h_5 * _e102));
+                } else {
+                    local_24 = true;
+                }
+                bool _e107 = local_24;
+                if (_e107) {
+                    break;
+                }
+            } else {
+                float _e108 = ms_stream_next(state_9);
+                float r_20 = -0.5 * metal::log(prod * (1.0 - _e108));
+                float one_plus = 2.0 * (d_15 * inv_g);
+                float _e118 = v0_;
+                float one_minus = (2.0 * (1.0 - _e118)) * (total * inv_g);
+                x_9 = r_20 * metal::sqrt(metal::max(one_minus * one_plus, 0.0));
+                y_2 = r_20 * (one_plus - 1.0);
+                break;
+            }
+        }
+    }
+    float _e137 = cp_1;
+    float _e138 = x_9;
+    float _e140 = sp_1;
+    float _e141 = y_2;
+    float p_4 = alpha_43.x * ((_e137 * _e138) - (_e140 * _e141));
+    float _e146 = sp_1;
+    float _e147 = x_9;
+    float _e149 = cp_1;
+    float _e150 = y_2;
+    float q_7 = alpha_43.y * ((_e146 * _e147) + (_e149 * _e150));
+    metal::float3 _e156 = ms_unit_normal(metal::float3(p_4, q_7, 1.0));
+    metal::float3 _e157 = w_27;
+    metal::float3 _e158 = ms_facing(_e156, _e157);
+    return _e158;
+}
+
+MsSample ms_exponential_sample(
+    metal::float3 w_28,
+    metal::float2 alpha_44,
+    metal::float2 u_18,
+    device type_7 const& ms_tables,
+    constant _mslBufferSizes& _buffer_sizes
+) {
+    metal::float3 _e3 = ms_exponential_sample_wm(w_28, alpha_44, u_18);
+    metal::float3 _e4 = ms_unit(w_28);
+    float _e5 = ms_exponential_pdf(_e4, _e3, alpha_44, ms_tables, _buffer_sizes);
     return MsSample {_e3, _e5};
 }
 
 float ms_d(
     MsMicrofacet mf,
-    metal::float3 wm_9
+    metal::float3 wm_15,
+    device type_7 const& ms_tables,
+    constant _mslBufferSizes& _buffer_sizes
 ) {
     if (mf.ndf == MS_NDF_GGX) {
-        float _e6 = ms_ggx_d(wm_9, mf.alpha);
+        float _e6 = ms_ggx_d(wm_15, mf.alpha);
         return _e6;
     }
     if (mf.ndf == MS_NDF_BECKMANN) {
-        float _e11 = ms_beckmann_d(wm_9, mf.alpha);
+        float _e11 = ms_beckmann_d(wm_15, mf.alpha);
         return _e11;
+    }
+    if (mf.ndf == MS_NDF_DOUBLE_GGX) {
+        float _e16 = ms_double_ggx_d(wm_15, mf.alpha, ms_tables, _buffer_sizes);
+        return _e16;
+    }
+    if (mf.ndf == MS_NDF_EXPONENTIAL) {
+        float _e21 = ms_exponential_d(wm_15, mf.alpha);
+        return _e21;
     }
     return 0.0;
 }
 
 float ms_lambda(
     MsMicrofacet mf_1,
-    metal::float3 w_15,
-    thread type_7& MS_BK_ERFC_RATIO
+    metal::float3 w_29,
+    device type_7 const& ms_tables,
+    constant _mslBufferSizes& _buffer_sizes
 ) {
     if (mf_1.ndf == MS_NDF_GGX) {
-        float _e6 = ms_ggx_lambda(w_15, mf_1.alpha);
+        float _e6 = ms_ggx_lambda(w_29, mf_1.alpha);
         return _e6;
     }
     if (mf_1.ndf == MS_NDF_BECKMANN) {
-        float _e11 = ms_beckmann_lambda(w_15, mf_1.alpha, MS_BK_ERFC_RATIO);
+        float _e11 = ms_beckmann_lambda(w_29, mf_1.alpha, ms_tables, _buffer_sizes);
         return _e11;
+    }
+    if (mf_1.ndf == MS_NDF_DOUBLE_GGX) {
+        float _e16 = ms_double_ggx_lambda(w_29, mf_1.alpha, ms_tables, _buffer_sizes);
+        return _e16;
+    }
+    if (mf_1.ndf == MS_NDF_EXPONENTIAL) {
+        float _e21 = ms_exponential_lambda(w_29, mf_1.alpha, ms_tables, _buffer_sizes);
+        return _e21;
     }
     return 0.0;
 }
 
 float ms_g1_(
     MsMicrofacet mf_2,
-    metal::float3 w_16,
-    thread type_7& MS_BK_ERFC_RATIO
+    metal::float3 w_30,
+    device type_7 const& ms_tables,
+    constant _mslBufferSizes& _buffer_sizes
 ) {
     if (mf_2.ndf == MS_NDF_GGX) {
-        float _e6 = ms_ggx_g1_(w_16, mf_2.alpha);
+        float _e6 = ms_ggx_g1_(w_30, mf_2.alpha);
         return _e6;
     }
     if (mf_2.ndf == MS_NDF_BECKMANN) {
-        float _e11 = ms_beckmann_g1_(w_16, mf_2.alpha, MS_BK_ERFC_RATIO);
+        float _e11 = ms_beckmann_g1_(w_30, mf_2.alpha, ms_tables, _buffer_sizes);
         return _e11;
+    }
+    if (mf_2.ndf == MS_NDF_DOUBLE_GGX) {
+        float _e16 = ms_double_ggx_g1_(w_30, mf_2.alpha, ms_tables, _buffer_sizes);
+        return _e16;
+    }
+    if (mf_2.ndf == MS_NDF_EXPONENTIAL) {
+        float _e21 = ms_exponential_g1_(w_30, mf_2.alpha, ms_tables, _buffer_sizes);
+        return _e21;
     }
     return 0.0;
 }
 
 float ms_g2_(
     MsMicrofacet mf_3,
-    metal::float3 wo_11,
-    metal::float3 wi_11,
-    thread type_7& MS_BK_ERFC_RATIO
+    metal::float3 wo_15,
+    metal::float3 wi_15,
+    device type_7 const& ms_tables,
+    constant _mslBufferSizes& _buffer_sizes
 ) {
     if (mf_3.ndf == MS_NDF_GGX) {
-        float _e7 = ms_ggx_g2_(wo_11, wi_11, mf_3.alpha);
+        float _e7 = ms_ggx_g2_(wo_15, wi_15, mf_3.alpha);
         return _e7;
     }
     if (mf_3.ndf == MS_NDF_BECKMANN) {
-        float _e12 = ms_beckmann_g2_(wo_11, wi_11, mf_3.alpha, MS_BK_ERFC_RATIO);
+        float _e12 = ms_beckmann_g2_(wo_15, wi_15, mf_3.alpha, ms_tables, _buffer_sizes);
         return _e12;
+    }
+    if (mf_3.ndf == MS_NDF_DOUBLE_GGX) {
+        float _e17 = ms_double_ggx_g2_(wo_15, wi_15, mf_3.alpha, ms_tables, _buffer_sizes);
+        return _e17;
+    }
+    if (mf_3.ndf == MS_NDF_EXPONENTIAL) {
+        float _e22 = ms_exponential_g2_(wo_15, wi_15, mf_3.alpha, ms_tables, _buffer_sizes);
+        return _e22;
     }
     return 0.0;
 }
 
 float ms_g2_separable(
     MsMicrofacet mf_4,
-    metal::float3 wo_12,
-    metal::float3 wi_12,
-    thread type_7& MS_BK_ERFC_RATIO
+    metal::float3 wo_16,
+    metal::float3 wi_16,
+    device type_7 const& ms_tables,
+    constant _mslBufferSizes& _buffer_sizes
 ) {
-    float _e3 = ms_g1_(mf_4, wo_12, MS_BK_ERFC_RATIO);
-    float _e4 = ms_g1_(mf_4, wi_12, MS_BK_ERFC_RATIO);
+    float _e3 = ms_g1_(mf_4, wo_16, ms_tables, _buffer_sizes);
+    float _e4 = ms_g1_(mf_4, wi_16, ms_tables, _buffer_sizes);
     return _e3 * _e4;
 }
 
 float ms_pdf(
     MsMicrofacet mf_5,
-    metal::float3 w_17,
-    metal::float3 wm_10,
-    thread type_7& MS_BK_ERFC_RATIO
+    metal::float3 w_31,
+    metal::float3 wm_16,
+    device type_7 const& ms_tables,
+    constant _mslBufferSizes& _buffer_sizes
 ) {
     if (mf_5.ndf == MS_NDF_GGX) {
-        float _e7 = ms_ggx_pdf(w_17, wm_10, mf_5.alpha);
+        float _e7 = ms_ggx_pdf(w_31, wm_16, mf_5.alpha);
         return _e7;
     }
     if (mf_5.ndf == MS_NDF_BECKMANN) {
-        float _e12 = ms_beckmann_pdf(w_17, wm_10, mf_5.alpha, MS_BK_ERFC_RATIO);
+        float _e12 = ms_beckmann_pdf(w_31, wm_16, mf_5.alpha, ms_tables, _buffer_sizes);
         return _e12;
+    }
+    if (mf_5.ndf == MS_NDF_DOUBLE_GGX) {
+        float _e17 = ms_double_ggx_pdf(w_31, wm_16, mf_5.alpha, ms_tables, _buffer_sizes);
+        return _e17;
+    }
+    if (mf_5.ndf == MS_NDF_EXPONENTIAL) {
+        float _e22 = ms_exponential_pdf(w_31, wm_16, mf_5.alpha, ms_tables, _buffer_sizes);
+        return _e22;
     }
     return 0.0;
 }
 
 MsSample ms_sample(
     MsMicrofacet mf_6,
-    metal::float3 w_18,
-    metal::float2 u_10,
-    thread type_7& MS_BK_ERFCX,
-    thread type_7& MS_BK_ERFC_RATIO,
-    thread type_8& MS_BK_ERFINV_Q,
-    thread type_9& MS_BK_ERFINV_W
+    metal::float3 w_32,
+    metal::float2 u_19,
+    device type_7 const& ms_tables,
+    constant _mslBufferSizes& _buffer_sizes
 ) {
     if (mf_6.ndf == MS_NDF_GGX) {
-        MsSample _e7 = ms_ggx_sample(w_18, mf_6.alpha, u_10);
+        MsSample _e7 = ms_ggx_sample(w_32, mf_6.alpha, u_19);
         return _e7;
     }
     if (mf_6.ndf == MS_NDF_BECKMANN) {
-        MsSample _e12 = ms_beckmann_sample(w_18, mf_6.alpha, u_10, MS_BK_ERFCX, MS_BK_ERFC_RATIO, MS_BK_ERFINV_Q, MS_BK_ERFINV_W);
+        MsSample _e12 = ms_beckmann_sample(w_32, mf_6.alpha, u_19, ms_tables, _buffer_sizes);
         return _e12;
+    }
+    if (mf_6.ndf == MS_NDF_DOUBLE_GGX) {
+        MsSample _e17 = ms_double_ggx_sample(w_32, mf_6.alpha, u_19, ms_tables, _buffer_sizes);
+        return _e17;
+    }
+    if (mf_6.ndf == MS_NDF_EXPONENTIAL) {
+        MsSample _e22 = ms_exponential_sample(w_32, mf_6.alpha, u_19, ms_tables, _buffer_sizes);
+        return _e22;
     }
     return MsSample {metal::float3(0.0, 0.0, 1.0), 0.0};
 }
 
 MsSample ms_sample_dcos(
     MsMicrofacet mf_7,
-    metal::float2 u_11
+    metal::float2 u_20,
+    device type_7 const& ms_tables,
+    constant _mslBufferSizes& _buffer_sizes
 ) {
     if (mf_7.ndf == MS_NDF_GGX) {
-        MsSample _e6 = ms_ggx_sample_dcos(mf_7.alpha, u_11);
+        MsSample _e6 = ms_ggx_sample_dcos(mf_7.alpha, u_20);
         return _e6;
     }
     if (mf_7.ndf == MS_NDF_BECKMANN) {
-        MsSample _e11 = ms_beckmann_sample_dcos(mf_7.alpha, u_11);
+        MsSample _e11 = ms_beckmann_sample_dcos(mf_7.alpha, u_20);
         return _e11;
+    }
+    if (mf_7.ndf == MS_NDF_DOUBLE_GGX) {
+        MsSample _e16 = ms_double_ggx_sample_dcos(mf_7.alpha, u_20, ms_tables, _buffer_sizes);
+        return _e16;
+    }
+    if (mf_7.ndf == MS_NDF_EXPONENTIAL) {
+        MsSample _e21 = ms_exponential_sample_dcos(mf_7.alpha, u_20, ms_tables, _buffer_sizes);
+        return _e21;
     }
     return MsSample {metal::float3(0.0, 0.0, 1.0), 0.0};
 }
@@ -1549,203 +2635,206 @@ bool ms_effectively_smooth(
 }
 
 bool ms_on_horizon(
-    float z
+    float z_2
 ) {
-    return !((metal::abs(z) >= 0.000000000000000001));
+    return !((metal::abs(z_2) >= 0.000000000000000001));
 }
 
 bool ms_usable(
-    float v_4
+    float v_6
 ) {
-    bool local_14 = {};
-    if (v_4 >= 0.000000000000000000011754944) {
-        local_14 = v_4 <= 340282350000000000000000000000000000000.0;
+    bool local_25 = {};
+    if (v_6 >= 0.000000000000000000011754944) {
+        local_25 = v_6 <= 340282350000000000000000000000000000000.0;
     } else {
-        local_14 = false;
+        local_25 = false;
     }
-    bool _e8 = local_14;
+    bool _e8 = local_25;
     return _e8;
 }
 
 float ms_masking_g2_(
     MsMicrofacet mf_9,
     uint masking,
-    metal::float3 wo_13,
-    metal::float3 wi_13,
-    thread type_7& MS_BK_ERFC_RATIO
+    metal::float3 wo_17,
+    metal::float3 wi_17,
+    device type_7 const& ms_tables,
+    constant _mslBufferSizes& _buffer_sizes
 ) {
     if (masking == MS_MASKING_SEPARABLE) {
-        float _e6 = ms_g2_separable(mf_9, wo_13, wi_13, MS_BK_ERFC_RATIO);
+        float _e6 = ms_g2_separable(mf_9, wo_17, wi_17, ms_tables, _buffer_sizes);
         return _e6;
     }
-    float _e7 = ms_g2_(mf_9, wo_13, wi_13, MS_BK_ERFC_RATIO);
+    float _e7 = ms_g2_(mf_9, wo_17, wi_17, ms_tables, _buffer_sizes);
     return _e7;
 }
 
 float ms_reflected(
     MsMicrofacet mf_10,
     uint masking_1,
-    metal::float3 wo_14,
-    metal::float3 wi_14,
+    metal::float3 wo_18,
+    metal::float3 wi_18,
     float d_wm,
-    thread type_7& MS_BK_ERFC_RATIO
+    device type_7 const& ms_tables,
+    constant _mslBufferSizes& _buffer_sizes
 ) {
-    float _e5 = ms_masking_g2_(mf_10, masking_1, wo_14, wi_14, MS_BK_ERFC_RATIO);
-    return (d_wm * _e5) / (4.0 * metal::abs(wo_14.z * wi_14.z));
+    float _e5 = ms_masking_g2_(mf_10, masking_1, wo_18, wi_18, ms_tables, _buffer_sizes);
+    return (d_wm * _e5) / (4.0 * metal::abs(wo_18.z * wi_18.z));
 }
 
 metal::float3 ms_weighted(
     metal::float3 fr_1,
-    float k_2
+    float k_5
 ) {
-    return metal::select(fr_1 * k_2, metal::float3(0.0), fr_1 == metal::float3(0.0));
+    return metal::select(fr_1 * k_5, metal::float3(0.0), fr_1 == metal::float3(0.0));
 }
 
 metal::float3 ms_conductor_lobe_normal(
-    MsConductor c_2,
-    metal::float3 wo_15,
-    metal::float3 wi_15
+    MsConductor c_5,
+    metal::float3 wo_19,
+    metal::float3 wi_19
 ) {
-    bool local_15 = {};
-    bool local_16 = {};
-    bool local_17 = {};
-    bool _e3 = ms_same_hemisphere(wo_15, wi_15);
+    bool local_26 = {};
+    bool local_27 = {};
+    bool local_28 = {};
+    bool _e3 = ms_same_hemisphere(wo_19, wi_19);
     if (!(!(_e3))) {
-        bool _e9 = ms_on_horizon(wo_15.z);
-        local_15 = _e9;
+        bool _e9 = ms_on_horizon(wo_19.z);
+        local_26 = _e9;
     } else {
-        local_15 = true;
+        local_26 = true;
     }
-    bool _e11 = local_15;
+    bool _e11 = local_26;
     if (!(_e11)) {
-        bool _e16 = ms_on_horizon(wi_15.z);
-        local_16 = _e16;
+        bool _e16 = ms_on_horizon(wi_19.z);
+        local_27 = _e16;
     } else {
-        local_16 = true;
+        local_27 = true;
     }
-    bool _e18 = local_16;
+    bool _e18 = local_27;
     if (!(_e18)) {
-        bool _e23 = ms_effectively_smooth(c_2.mf);
-        local_17 = _e23;
+        bool _e23 = ms_effectively_smooth(c_5.mf);
+        local_28 = _e23;
     } else {
-        local_17 = true;
+        local_28 = true;
     }
-    bool _e25 = local_17;
+    bool _e25 = local_28;
     if (_e25) {
         return metal::float3(0.0);
     }
-    metal::float3 _e28 = ms_half_vector_reflection(wo_15, wi_15);
+    metal::float3 _e28 = ms_half_vector_reflection(wo_19, wi_19);
     return _e28;
 }
 
 metal::float3 ms_conductor_eval(
-    MsConductor c_3,
-    metal::float3 wo_16,
-    metal::float3 wi_16,
-    thread type_7& MS_BK_ERFC_RATIO
+    MsConductor c_6,
+    metal::float3 wo_20,
+    metal::float3 wi_20,
+    device type_7 const& ms_tables,
+    constant _mslBufferSizes& _buffer_sizes
 ) {
-    metal::float3 _e3 = ms_conductor_lobe_normal(c_3, wo_16, wi_16);
+    metal::float3 _e3 = ms_conductor_lobe_normal(c_6, wo_20, wi_20);
     bool _e4 = ms_half_vector_ok(_e3);
     if (!(_e4)) {
         return metal::float3(0.0);
     }
-    float _e9 = ms_dot(wo_16, _e3);
-    float _e11 = ms_dot(wi_16, _e3);
-    metal::float3 _e16 = ms_fresnel_eval(c_3.fresnel, 0.5 * (metal::abs(_e9) + metal::abs(_e11)));
-    float _e20 = ms_d(c_3.mf, _e3);
-    float _e21 = ms_reflected(c_3.mf, c_3.masking, wo_16, wi_16, _e20, MS_BK_ERFC_RATIO);
+    float _e9 = ms_dot(wo_20, _e3);
+    float _e11 = ms_dot(wi_20, _e3);
+    metal::float3 _e16 = ms_fresnel_eval(c_6.fresnel, 0.5 * (metal::abs(_e9) + metal::abs(_e11)));
+    float _e20 = ms_d(c_6.mf, _e3, ms_tables, _buffer_sizes);
+    float _e21 = ms_reflected(c_6.mf, c_6.masking, wo_20, wi_20, _e20, ms_tables, _buffer_sizes);
     metal::float3 _e22 = ms_weighted(_e16, _e21);
     return _e22;
 }
 
 float ms_conductor_pdf(
-    MsConductor c_4,
-    metal::float3 wo_17,
-    metal::float3 wi_17,
-    thread type_7& MS_BK_ERFC_RATIO
+    MsConductor c_7,
+    metal::float3 wo_21,
+    metal::float3 wi_21,
+    device type_7 const& ms_tables,
+    constant _mslBufferSizes& _buffer_sizes
 ) {
-    metal::float3 _e3 = ms_conductor_lobe_normal(c_4, wo_17, wi_17);
+    metal::float3 _e3 = ms_conductor_lobe_normal(c_7, wo_21, wi_21);
     bool _e4 = ms_half_vector_ok(_e3);
     if (!(_e4)) {
         return 0.0;
     }
-    float _e8 = ms_pdf(c_4.mf, wo_17, _e3, MS_BK_ERFC_RATIO);
-    float _e9 = ms_dot(wo_17, _e3);
+    float _e8 = ms_pdf(c_7.mf, wo_21, _e3, ms_tables, _buffer_sizes);
+    float _e9 = ms_dot(wo_21, _e3);
     return _e8 / (4.0 * metal::abs(_e9));
 }
 
 metal::float4 ms_conductor_eval_pdf(
-    MsConductor c_5,
-    metal::float3 wo_18,
-    metal::float3 wi_18,
-    thread type_7& MS_BK_ERFC_RATIO
+    MsConductor c_8,
+    metal::float3 wo_22,
+    metal::float3 wi_22,
+    device type_7 const& ms_tables,
+    constant _mslBufferSizes& _buffer_sizes
 ) {
-    metal::float3 _e3 = ms_conductor_lobe_normal(c_5, wo_18, wi_18);
+    metal::float3 _e3 = ms_conductor_lobe_normal(c_8, wo_22, wi_22);
     bool _e4 = ms_half_vector_ok(_e3);
     if (!(_e4)) {
         return metal::float4(0.0);
     }
-    float _e8 = ms_dot(wo_18, _e3);
+    float _e8 = ms_dot(wo_22, _e3);
     float co = metal::abs(_e8);
-    float _e11 = ms_dot(wi_18, _e3);
-    metal::float3 _e16 = ms_fresnel_eval(c_5.fresnel, 0.5 * (co + metal::abs(_e11)));
-    float _e20 = ms_d(c_5.mf, _e3);
-    float _e21 = ms_reflected(c_5.mf, c_5.masking, wo_18, wi_18, _e20, MS_BK_ERFC_RATIO);
+    float _e11 = ms_dot(wi_22, _e3);
+    metal::float3 _e16 = ms_fresnel_eval(c_8.fresnel, 0.5 * (co + metal::abs(_e11)));
+    float _e20 = ms_d(c_8.mf, _e3, ms_tables, _buffer_sizes);
+    float _e21 = ms_reflected(c_8.mf, c_8.masking, wo_22, wi_22, _e20, ms_tables, _buffer_sizes);
     metal::float3 _e22 = ms_weighted(_e16, _e21);
-    float _e24 = ms_pdf(c_5.mf, wo_18, _e3, MS_BK_ERFC_RATIO);
+    float _e24 = ms_pdf(c_8.mf, wo_22, _e3, ms_tables, _buffer_sizes);
     return metal::float4(_e22, _e24 / (4.0 * co));
 }
 
 MsBsdfSample ms_conductor_sample(
-    MsConductor c_6,
-    metal::float3 wo_19,
+    MsConductor c_9,
+    metal::float3 wo_23,
     float uc,
-    metal::float2 u_12,
-    thread type_7& MS_BK_ERFCX,
-    thread type_7& MS_BK_ERFC_RATIO,
-    thread type_8& MS_BK_ERFINV_Q,
-    thread type_9& MS_BK_ERFINV_W
+    metal::float2 u_21,
+    device type_7 const& ms_tables,
+    constant _mslBufferSizes& _buffer_sizes
 ) {
-    bool local_18 = {};
+    bool local_29 = {};
     MsBsdfSample none = MsBsdfSample {metal::float3(0.0), 0.0, metal::float3(0.0), 0u, 1.0};
-    bool _e13 = ms_on_horizon(wo_19.z);
+    bool _e13 = ms_on_horizon(wo_23.z);
     if (_e13) {
         return none;
     }
-    bool _e15 = ms_effectively_smooth(c_6.mf);
+    bool _e15 = ms_effectively_smooth(c_9.mf);
     if (_e15) {
-        metal::float3 wi_32 = metal::float3(-(wo_19.x), -(wo_19.y), wo_19.z);
-        float k_6 = 1.0 / metal::abs(wi_32.z);
-        metal::float3 _e29 = ms_fresnel_eval(c_6.fresnel, metal::abs(wo_19.z));
-        return MsBsdfSample {wi_32, 1.0, _e29 * k_6, 3u, 1.0};
+        metal::float3 wi_36 = metal::float3(-(wo_23.x), -(wo_23.y), wo_23.z);
+        float k_9 = 1.0 / metal::abs(wi_36.z);
+        metal::float3 _e29 = ms_fresnel_eval(c_9.fresnel, metal::abs(wo_23.z));
+        return MsBsdfSample {wi_36, 1.0, _e29 * k_9, 3u, 1.0};
     }
-    MsSample _e36 = ms_sample(c_6.mf, wo_19, u_12, MS_BK_ERFCX, MS_BK_ERFC_RATIO, MS_BK_ERFINV_Q, MS_BK_ERFINV_W);
-    metal::float3 _e38 = ms_reflect(wo_19, _e36.wm);
-    bool _e39 = ms_same_hemisphere(wo_19, _e38);
+    MsSample _e36 = ms_sample(c_9.mf, wo_23, u_21, ms_tables, _buffer_sizes);
+    metal::float3 _e38 = ms_reflect(wo_23, _e36.wm);
+    bool _e39 = ms_same_hemisphere(wo_23, _e38);
     if (!(!(_e39))) {
         bool _e45 = ms_on_horizon(_e38.z);
-        local_18 = _e45;
+        local_29 = _e45;
     } else {
-        local_18 = true;
+        local_29 = true;
     }
-    bool _e47 = local_18;
+    bool _e47 = local_29;
     if (_e47) {
         return none;
     }
-    float _e49 = ms_dot(wo_19, _e36.wm);
+    float _e49 = ms_dot(wo_23, _e36.wm);
     float co_1 = metal::abs(_e49);
     float pdf = _e36.pdf / (4.0 * co_1);
     bool _e55 = ms_usable(pdf);
     if (!(_e55)) {
         return none;
     }
-    metal::float3 _e58 = ms_fresnel_eval(c_6.fresnel, co_1);
-    float _e61 = ms_d(c_6.mf, _e36.wm);
+    metal::float3 _e58 = ms_fresnel_eval(c_9.fresnel, co_1);
+    float _e61 = ms_d(c_9.mf, _e36.wm, ms_tables, _buffer_sizes);
     bool _e62 = ms_usable(_e61);
     if (!(_e62)) {
         return none;
     }
-    float _e66 = ms_reflected(c_6.mf, c_6.masking, wo_19, _e38, _e61, MS_BK_ERFC_RATIO);
+    float _e66 = ms_reflected(c_9.mf, c_9.masking, wo_23, _e38, _e61, ms_tables, _buffer_sizes);
     metal::float3 _e67 = ms_weighted(_e58, _e66);
     if (!(metal::all(_e67 <= metal::float3(340282350000000000000000000000000000000.0)))) {
         return none;
@@ -1756,305 +2845,307 @@ MsBsdfSample ms_conductor_sample(
 bool ms_dielectric_smooth(
     MsDielectric d_1
 ) {
-    bool local_19 = {};
+    bool local_30 = {};
     if (!((d_1.eta == 1.0))) {
         bool _e8 = ms_effectively_smooth(d_1.mf);
-        local_19 = _e8;
+        local_30 = _e8;
     } else {
-        local_19 = true;
+        local_30 = true;
     }
-    bool _e10 = local_19;
+    bool _e10 = local_30;
     return _e10;
 }
 
 float ms_dielectric_g2_(
     MsDielectric d_2,
-    metal::float3 wo_20,
-    metal::float3 wi_19,
-    thread type_7& MS_BK_ERFC_RATIO
+    metal::float3 wo_24,
+    metal::float3 wi_23,
+    device type_7 const& ms_tables,
+    constant _mslBufferSizes& _buffer_sizes
 ) {
-    float _e5 = ms_masking_g2_(d_2.mf, d_2.masking, wo_20, wi_19, MS_BK_ERFC_RATIO);
+    float _e5 = ms_masking_g2_(d_2.mf, d_2.masking, wo_24, wi_23, ms_tables, _buffer_sizes);
     return _e5;
 }
 
 metal::float4 ms_dielectric_half(
     MsDielectric d_3,
-    metal::float3 wo_21,
-    metal::float3 wi_20
+    metal::float3 wo_25,
+    metal::float3 wi_24
 ) {
-    bool local_20 = {};
-    metal::float3 wm_11 = {};
+    bool local_31 = {};
+    metal::float3 wm_17 = {};
     float etap_4 = 1.0;
-    bool local_21 = {};
+    bool local_32 = {};
     metal::float4 none_1 = metal::float4(0.0);
-    float co_2 = wo_21.z;
-    float ci_1 = wi_20.z;
+    float co_2 = wo_25.z;
+    float ci_1 = wi_24.z;
     bool _e7 = ms_on_horizon(co_2);
     if (!(_e7)) {
         bool _e11 = ms_on_horizon(ci_1);
-        local_20 = _e11;
+        local_31 = _e11;
     } else {
-        local_20 = true;
+        local_31 = true;
     }
-    bool _e13 = local_20;
+    bool _e13 = local_31;
     if (_e13) {
         return none_1;
     }
     if ((co_2 * ci_1) > 0.0) {
-        metal::float3 _e20 = ms_half_vector_reflection(wo_21, wi_20);
-        wm_11 = _e20;
+        metal::float3 _e20 = ms_half_vector_reflection(wo_25, wi_24);
+        wm_17 = _e20;
     } else {
-        metal::float4 _e22 = ms_half_vector_refraction(wo_21, wi_20, d_3.eta);
-        wm_11 = _e22.xyz;
+        metal::float4 _e22 = ms_half_vector_refraction(wo_25, wi_24, d_3.eta);
+        wm_17 = _e22.xyz;
         etap_4 = _e22.w;
     }
-    metal::float3 _e25 = wm_11;
+    metal::float3 _e25 = wm_17;
     bool _e26 = ms_half_vector_ok(_e25);
     if (!(_e26)) {
         return none_1;
     }
-    metal::float3 _e28 = wm_11;
-    float _e29 = ms_dot(_e28, wi_20);
+    metal::float3 _e28 = wm_17;
+    float _e29 = ms_dot(_e28, wi_24);
     if (!(((_e29 * ci_1) < 0.0))) {
-        metal::float3 _e36 = wm_11;
-        float _e37 = ms_dot(_e36, wo_21);
-        local_21 = (_e37 * co_2) < 0.0;
+        metal::float3 _e36 = wm_17;
+        float _e37 = ms_dot(_e36, wo_25);
+        local_32 = (_e37 * co_2) < 0.0;
     } else {
-        local_21 = true;
+        local_32 = true;
     }
-    bool _e42 = local_21;
+    bool _e42 = local_32;
     if (_e42) {
         return none_1;
     }
-    metal::float3 _e43 = wm_11;
+    metal::float3 _e43 = wm_17;
     float _e44 = etap_4;
     return metal::float4(_e43, _e44);
 }
 
 float ms_dielectric_f_transmission(
     MsDielectric d_4,
-    metal::float3 wo_22,
-    metal::float3 wi_21,
-    metal::float3 wm_12,
+    metal::float3 wo_26,
+    metal::float3 wi_25,
+    metal::float3 wm_18,
     float d_wm_1,
     float etap_5,
-    float t,
-    thread type_7& MS_BK_ERFC_RATIO
+    float t_2,
+    device type_7 const& ms_tables,
+    constant _mslBufferSizes& _buffer_sizes
 ) {
-    float f_1 = {};
-    float _e7 = ms_dot(wi_21, wm_12);
-    float _e8 = ms_dot(wo_22, wm_12);
-    float _e9 = ms_refraction_denominator(wo_22, wi_21, wm_12, etap_5);
-    float _e10 = ms_dielectric_g2_(d_4, wo_22, wi_21, MS_BK_ERFC_RATIO);
-    float geometric = (_e10 / metal::abs(wi_21.z * wo_22.z)) * (metal::abs(_e7 * _e8) / (_e9 * _e9));
-    f_1 = (d_wm_1 * t) * geometric;
+    float f_2 = {};
+    float _e7 = ms_dot(wi_25, wm_18);
+    float _e8 = ms_dot(wo_26, wm_18);
+    float _e9 = ms_refraction_denominator(wo_26, wi_25, wm_18, etap_5);
+    float _e10 = ms_dielectric_g2_(d_4, wo_26, wi_25, ms_tables, _buffer_sizes);
+    float geometric = (_e10 / metal::abs(wi_25.z * wo_26.z)) * (metal::abs(_e7 * _e8) / (_e9 * _e9));
+    f_2 = (d_wm_1 * t_2) * geometric;
     if (d_4.transport == MS_TRANSPORT_RADIANCE) {
-        float _e27 = f_1;
-        f_1 = _e27 / (etap_5 * etap_5);
+        float _e27 = f_2;
+        f_2 = _e27 / (etap_5 * etap_5);
     }
-    float _e30 = f_1;
+    float _e30 = f_2;
     return _e30;
 }
 
 float ms_dielectric_eval(
     MsDielectric d_5,
-    metal::float3 wo_23,
-    metal::float3 wi_22,
-    thread type_7& MS_BK_ERFC_RATIO
+    metal::float3 wo_27,
+    metal::float3 wi_26,
+    device type_7 const& ms_tables,
+    constant _mslBufferSizes& _buffer_sizes
 ) {
     bool _e3 = ms_dielectric_smooth(d_5);
     if (_e3) {
         return 0.0;
     }
-    metal::float4 _e5 = ms_dielectric_half(d_5, wo_23, wi_22);
+    metal::float4 _e5 = ms_dielectric_half(d_5, wo_27, wi_26);
     if (_e5.w == 0.0) {
         return 0.0;
     }
-    metal::float3 wm_13 = _e5.xyz;
-    float _e11 = ms_dot(wo_23, wm_13);
+    metal::float3 wm_19 = _e5.xyz;
+    float _e11 = ms_dot(wo_27, wm_19);
     float _e13 = ms_fresnel_dielectric(_e11, d_5.eta);
-    float _e15 = ms_d(d_5.mf, wm_13);
-    if ((wo_23.z * wi_22.z) > 0.0) {
-        float _e23 = ms_reflected(d_5.mf, d_5.masking, wo_23, wi_22, _e15, MS_BK_ERFC_RATIO);
+    float _e15 = ms_d(d_5.mf, wm_19, ms_tables, _buffer_sizes);
+    if ((wo_27.z * wi_26.z) > 0.0) {
+        float _e23 = ms_reflected(d_5.mf, d_5.masking, wo_27, wi_26, _e15, ms_tables, _buffer_sizes);
         return _e13 * _e23;
     }
-    float _e28 = ms_dielectric_f_transmission(d_5, wo_23, wi_22, wm_13, _e15, _e5.w, 1.0 - _e13, MS_BK_ERFC_RATIO);
+    float _e28 = ms_dielectric_f_transmission(d_5, wo_27, wi_26, wm_19, _e15, _e5.w, 1.0 - _e13, ms_tables, _buffer_sizes);
     return _e28;
 }
 
 float ms_dielectric_pdf(
     MsDielectric d_6,
-    metal::float3 wo_24,
-    metal::float3 wi_23,
-    thread type_7& MS_BK_ERFC_RATIO
+    metal::float3 wo_28,
+    metal::float3 wi_27,
+    device type_7 const& ms_tables,
+    constant _mslBufferSizes& _buffer_sizes
 ) {
     bool _e3 = ms_dielectric_smooth(d_6);
     if (_e3) {
         return 0.0;
     }
-    metal::float4 _e5 = ms_dielectric_half(d_6, wo_24, wi_23);
+    metal::float4 _e5 = ms_dielectric_half(d_6, wo_28, wi_27);
     if (_e5.w == 0.0) {
         return 0.0;
     }
-    metal::float3 wm_14 = _e5.xyz;
-    float _e11 = ms_dot(wo_24, wm_14);
+    metal::float3 wm_20 = _e5.xyz;
+    float _e11 = ms_dot(wo_28, wm_20);
     float _e13 = ms_fresnel_dielectric(_e11, d_6.eta);
-    float _e15 = ms_pdf(d_6.mf, wo_24, wm_14, MS_BK_ERFC_RATIO);
-    if ((wo_24.z * wi_23.z) > 0.0) {
-        float _e22 = ms_dot(wo_24, wm_14);
+    float _e15 = ms_pdf(d_6.mf, wo_28, wm_20, ms_tables, _buffer_sizes);
+    if ((wo_28.z * wi_27.z) > 0.0) {
+        float _e22 = ms_dot(wo_28, wm_20);
         return (_e15 * _e13) / (4.0 * metal::abs(_e22));
     }
-    float _e31 = ms_jacobian_refraction(wo_24, wi_23, wm_14, _e5.w);
+    float _e31 = ms_jacobian_refraction(wo_28, wi_27, wm_20, _e5.w);
     return (_e15 * (1.0 - _e13)) * _e31;
 }
 
 MsBsdfSample ms_dielectric_sample_smooth(
     MsDielectric d_7,
-    metal::float3 wo_25,
+    metal::float3 wo_29,
     float uc_1
 ) {
-    float f_2 = {};
-    float _e5 = ms_fresnel_dielectric(wo_25.z, d_7.eta);
+    float f_3 = {};
+    float _e5 = ms_fresnel_dielectric(wo_29.z, d_7.eta);
     if (uc_1 < _e5) {
-        metal::float3 wi_33 = metal::float3(-(wo_25.x), -(wo_25.y), wo_25.z);
-        return MsBsdfSample {wi_33, _e5, metal::float3(_e5 / metal::abs(wi_33.z)), 3u, 1.0};
+        metal::float3 wi_37 = metal::float3(-(wo_29.x), -(wo_29.y), wo_29.z);
+        return MsBsdfSample {wi_37, _e5, metal::float3(_e5 / metal::abs(wi_37.z)), 3u, 1.0};
     }
     MsBsdfSample none_2 = MsBsdfSample {metal::float3(0.0), 0.0, metal::float3(0.0), 0u, 1.0};
-    metal::float4 _e33 = ms_refract(wo_25, metal::float3(0.0, 0.0, 1.0), d_7.eta);
+    metal::float4 _e33 = ms_refract(wo_29, metal::float3(0.0, 0.0, 1.0), d_7.eta);
     if (_e33.w == 0.0) {
         return none_2;
     }
-    metal::float3 wi_34 = _e33.xyz;
-    bool _e39 = ms_on_horizon(wi_34.z);
+    metal::float3 wi_38 = _e33.xyz;
+    bool _e39 = ms_on_horizon(wi_38.z);
     if (_e39) {
         return none_2;
     }
-    float t_8 = 1.0 - _e5;
-    f_2 = t_8 / metal::abs(wi_34.z);
+    float t_12 = 1.0 - _e5;
+    f_3 = t_12 / metal::abs(wi_38.z);
     if (d_7.transport == MS_TRANSPORT_RADIANCE) {
-        float _e49 = f_2;
-        f_2 = _e49 / (_e33.w * _e33.w);
+        float _e49 = f_3;
+        f_3 = _e49 / (_e33.w * _e33.w);
     }
-    float _e54 = f_2;
-    return MsBsdfSample {wi_34, t_8, metal::float3(_e54), 7u, _e33.w};
+    float _e54 = f_3;
+    return MsBsdfSample {wi_38, t_12, metal::float3(_e54), 7u, _e33.w};
 }
 
 MsBsdfSample ms_dielectric_sample(
     MsDielectric d_8,
-    metal::float3 wo_26,
+    metal::float3 wo_30,
     float uc_2,
-    metal::float2 u_13,
-    thread type_7& MS_BK_ERFCX,
-    thread type_7& MS_BK_ERFC_RATIO,
-    thread type_8& MS_BK_ERFINV_Q,
-    thread type_9& MS_BK_ERFINV_W
+    metal::float2 u_22,
+    device type_7 const& ms_tables,
+    constant _mslBufferSizes& _buffer_sizes
 ) {
-    bool local_22 = {};
-    bool local_23 = {};
-    bool local_24 = {};
-    bool local_25 = {};
+    bool local_33 = {};
+    bool local_34 = {};
+    bool local_35 = {};
+    bool local_36 = {};
     MsBsdfSample none_3 = MsBsdfSample {metal::float3(0.0), 0.0, metal::float3(0.0), 0u, 1.0};
-    bool _e13 = ms_on_horizon(wo_26.z);
+    bool _e13 = ms_on_horizon(wo_30.z);
     if (_e13) {
         return none_3;
     }
     bool _e14 = ms_dielectric_smooth(d_8);
     if (_e14) {
-        MsBsdfSample _e15 = ms_dielectric_sample_smooth(d_8, wo_26, uc_2);
+        MsBsdfSample _e15 = ms_dielectric_sample_smooth(d_8, wo_30, uc_2);
         return _e15;
     }
-    MsSample _e17 = ms_sample(d_8.mf, wo_26, u_13, MS_BK_ERFCX, MS_BK_ERFC_RATIO, MS_BK_ERFINV_Q, MS_BK_ERFINV_W);
-    metal::float3 wm_15 = _e17.wm;
-    float _e19 = ms_dot(wo_26, wm_15);
+    MsSample _e17 = ms_sample(d_8.mf, wo_30, u_22, ms_tables, _buffer_sizes);
+    metal::float3 wm_21 = _e17.wm;
+    float _e19 = ms_dot(wo_30, wm_21);
     float _e21 = ms_fresnel_dielectric(_e19, d_8.eta);
     if (uc_2 < _e21) {
-        metal::float3 _e23 = ms_reflect(wo_26, wm_15);
-        bool _e24 = ms_same_hemisphere(wo_26, _e23);
+        metal::float3 _e23 = ms_reflect(wo_30, wm_21);
+        bool _e24 = ms_same_hemisphere(wo_30, _e23);
         if (!(!(_e24))) {
             bool _e30 = ms_on_horizon(_e23.z);
-            local_22 = _e30;
+            local_33 = _e30;
         } else {
-            local_22 = true;
+            local_33 = true;
         }
-        bool _e32 = local_22;
+        bool _e32 = local_33;
         if (_e32) {
             return none_3;
         }
-        float _e34 = ms_d(d_8.mf, wm_15);
+        float _e34 = ms_d(d_8.mf, wm_21, ms_tables, _buffer_sizes);
         bool _e35 = ms_usable(_e34);
         if (!(_e35)) {
             return none_3;
         }
-        float _e39 = ms_reflected(d_8.mf, d_8.masking, wo_26, _e23, _e34, MS_BK_ERFC_RATIO);
-        float f_4 = _e21 * _e39;
+        float _e39 = ms_reflected(d_8.mf, d_8.masking, wo_30, _e23, _e34, ms_tables, _buffer_sizes);
+        float f_5 = _e21 * _e39;
         float pdf_1 = (_e17.pdf * _e21) / (4.0 * metal::abs(_e19));
         bool _e47 = ms_usable(pdf_1);
         if (!(!(_e47))) {
-            local_23 = !((f_4 <= 340282350000000000000000000000000000000.0));
+            local_34 = !((f_5 <= 340282350000000000000000000000000000000.0));
         } else {
-            local_23 = true;
+            local_34 = true;
         }
-        bool _e56 = local_23;
+        bool _e56 = local_34;
         if (_e56) {
             return none_3;
         }
-        return MsBsdfSample {_e23, pdf_1, metal::float3(f_4), MS_SAMPLE_VALID, 1.0};
+        return MsBsdfSample {_e23, pdf_1, metal::float3(f_5), MS_SAMPLE_VALID, 1.0};
     }
-    metal::float4 _e62 = ms_refract(wo_26, wm_15, d_8.eta);
+    metal::float4 _e62 = ms_refract(wo_30, wm_21, d_8.eta);
     if (_e62.w == 0.0) {
         return none_3;
     }
-    metal::float3 wi_35 = _e62.xyz;
+    metal::float3 wi_39 = _e62.xyz;
     float etap_6 = _e62.w;
-    bool _e68 = ms_same_hemisphere(wo_26, wi_35);
+    bool _e68 = ms_same_hemisphere(wo_30, wi_39);
     if (!(_e68)) {
-        bool _e73 = ms_on_horizon(wi_35.z);
-        local_24 = _e73;
+        bool _e73 = ms_on_horizon(wi_39.z);
+        local_35 = _e73;
     } else {
-        local_24 = true;
+        local_35 = true;
     }
-    bool _e75 = local_24;
+    bool _e75 = local_35;
     if (_e75) {
         return none_3;
     }
-    float t_9 = 1.0 - _e21;
-    float _e80 = ms_jacobian_refraction(wo_26, wi_35, wm_15, etap_6);
-    float pdf_2 = (_e17.pdf * t_9) * _e80;
-    float _e83 = ms_d(d_8.mf, wm_15);
+    float t_13 = 1.0 - _e21;
+    float _e80 = ms_jacobian_refraction(wo_30, wi_39, wm_21, etap_6);
+    float pdf_2 = (_e17.pdf * t_13) * _e80;
+    float _e83 = ms_d(d_8.mf, wm_21, ms_tables, _buffer_sizes);
     bool _e84 = ms_usable(_e83);
     if (!(_e84)) {
         return none_3;
     }
-    float _e86 = ms_dielectric_f_transmission(d_8, wo_26, wi_35, wm_15, _e83, etap_6, t_9, MS_BK_ERFC_RATIO);
+    float _e86 = ms_dielectric_f_transmission(d_8, wo_30, wi_39, wm_21, _e83, etap_6, t_13, ms_tables, _buffer_sizes);
     bool _e87 = ms_usable(pdf_2);
     if (!(!(_e87))) {
-        local_25 = !((_e86 <= 340282350000000000000000000000000000000.0));
+        local_36 = !((_e86 <= 340282350000000000000000000000000000000.0));
     } else {
-        local_25 = true;
+        local_36 = true;
     }
-    bool _e96 = local_25;
+    bool _e96 = local_36;
     if (_e96) {
         return none_3;
     }
-    return MsBsdfSample {wi_35, pdf_2, metal::float3(_e86), 5u, etap_6};
+    return MsBsdfSample {wi_39, pdf_2, metal::float3(_e86), 5u, etap_6};
 }
 
 MsLutTap ms_lut_tap(
-    float x_4,
-    uint n_2
+    float x_10,
+    uint n_5
 ) {
-    float t_10 = metal::clamp((x_4 * static_cast<float>(n_2)) - 0.5, 0.0, static_cast<float>(n_2 - 1u));
-    uint i_6 = metal::min(naga_f2u32(metal::floor(t_10)), n_2 - 2u);
-    return MsLutTap {i_6, t_10 - static_cast<float>(i_6)};
+    float t_14 = metal::clamp((x_10 * static_cast<float>(n_5)) - 0.5, 0.0, static_cast<float>(n_5 - 1u));
+    uint i_9 = metal::min(naga_f2u32(metal::floor(t_14)), n_5 - 2u);
+    return MsLutTap {i_9, t_14 - static_cast<float>(i_9)};
 }
 
 MsLutTap ms_lut_tap_edges(
-    float x_5,
-    uint n_3
+    float x_11,
+    uint n_6
 ) {
-    float t_11 = metal::clamp(x_5 * static_cast<float>(n_3 - 1u), 0.0, static_cast<float>(n_3 - 1u));
-    uint i_7 = metal::min(naga_f2u32(metal::floor(t_11)), n_3 - 2u);
-    return MsLutTap {i_7, t_11 - static_cast<float>(i_7)};
+    float t_15 = metal::clamp(x_11 * static_cast<float>(n_6 - 1u), 0.0, static_cast<float>(n_6 - 1u));
+    uint i_10 = metal::min(naga_f2u32(metal::floor(t_15)), n_6 - 2u);
+    return MsLutTap {i_10, t_15 - static_cast<float>(i_10)};
 }
 
 uint ms_lut_index(
@@ -2066,31 +3157,31 @@ uint ms_lut_index(
 }
 
 float ms_lut_lerp(
-    MsLutTap t_1,
-    float v0_,
-    float v1_
+    MsLutTap t_3,
+    float v0_1,
+    float v1_1
 ) {
-    return ((1.0 - t_1.f) * v0_) + (t_1.f * v1_);
+    return ((1.0 - t_3.f) * v0_1) + (t_3.f * v1_1);
 }
 
 float ms_lut_bilerp(
     MsLutTap r,
-    MsLutTap m_3,
+    MsLutTap m_4,
     float v00_,
     float v10_,
     float v01_,
     float v11_
 ) {
     float gr = 1.0 - r.f;
-    float gm = 1.0 - m_3.f;
-    return ((((gr * gm) * v00_) + ((r.f * gm) * v10_)) + ((gr * m_3.f) * v01_)) + ((r.f * m_3.f) * v11_);
+    float gm = 1.0 - m_4.f;
+    return ((((gr * gm) * v00_) + ((r.f * gm) * v10_)) + ((gr * m_4.f) * v01_)) + ((r.f * m_4.f) * v11_);
 }
 
 float ms_lut_roughness_coord(
-    metal::float2 alpha_25,
+    metal::float2 alpha_45,
     float alpha_max
 ) {
-    return metal::sqrt(metal::sqrt(alpha_25.x * alpha_25.y) / alpha_max);
+    return metal::sqrt(metal::sqrt(alpha_45.x * alpha_45.y) / alpha_max);
 }
 
 metal::float3 ms_kulla_conty_f_ms(
@@ -2113,17 +3204,18 @@ float ms_kulla_conty_lobe(
 }
 
 metal::float3 ms_conductor_eval_kulla_conty(
-    MsConductor c_7,
-    metal::float3 wo_27,
-    metal::float3 wi_24,
+    MsConductor c_10,
+    metal::float3 wo_31,
+    metal::float3 wi_28,
     float e_o_1,
     float e_i_1,
     float e_avg_2,
     metal::float3 f_ms,
-    thread type_7& MS_BK_ERFC_RATIO
+    device type_7 const& ms_tables,
+    constant _mslBufferSizes& _buffer_sizes
 ) {
-    metal::float3 _e7 = ms_conductor_eval(c_7, wo_27, wi_24, MS_BK_ERFC_RATIO);
-    if (!(((wo_27.z * wi_24.z) > 0.0))) {
+    metal::float3 _e7 = ms_conductor_eval(c_10, wo_31, wi_28, ms_tables, _buffer_sizes);
+    if (!(((wo_31.z * wi_28.z) > 0.0))) {
         return _e7;
     }
     float _e14 = ms_kulla_conty_lobe(e_o_1, e_i_1, e_avg_2);
@@ -2138,14 +3230,15 @@ metal::float3 ms_turquin_scale(
 }
 
 metal::float3 ms_conductor_eval_turquin(
-    MsConductor c_8,
-    metal::float3 wo_28,
-    metal::float3 wi_25,
+    MsConductor c_11,
+    metal::float3 wo_32,
+    metal::float3 wi_29,
     float e_o_3,
     metal::float3 f0_3,
-    thread type_7& MS_BK_ERFC_RATIO
+    device type_7 const& ms_tables,
+    constant _mslBufferSizes& _buffer_sizes
 ) {
-    metal::float3 _e5 = ms_conductor_eval(c_8, wo_28, wi_25, MS_BK_ERFC_RATIO);
+    metal::float3 _e5 = ms_conductor_eval(c_11, wo_32, wi_29, ms_tables, _buffer_sizes);
     metal::float3 _e6 = ms_turquin_scale(e_o_3, f0_3);
     return _e5 * _e6;
 }
@@ -2157,145 +3250,142 @@ float ms_kulla_conty_p_ms(
 }
 
 float ms_cosine_pdf_same_side(
-    metal::float3 wo_29,
-    metal::float3 wi_26
+    metal::float3 wo_33,
+    metal::float3 wi_30
 ) {
-    if (!(((wo_29.z * wi_26.z) > 0.0))) {
+    if (!(((wo_33.z * wi_30.z) > 0.0))) {
         return 0.0;
     }
-    return metal::abs(wi_26.z) / MS_PI;
+    return metal::abs(wi_30.z) / MS_PI;
 }
 
 float ms_conductor_pdf_kulla_conty(
-    MsConductor c_9,
-    metal::float3 wo_30,
-    metal::float3 wi_27,
+    MsConductor c_12,
+    metal::float3 wo_34,
+    metal::float3 wi_31,
     float e_o_5,
-    thread type_7& MS_BK_ERFC_RATIO
+    device type_7 const& ms_tables,
+    constant _mslBufferSizes& _buffer_sizes
 ) {
     float _e4 = ms_kulla_conty_p_ms(e_o_5);
-    float _e7 = ms_conductor_pdf(c_9, wo_30, wi_27, MS_BK_ERFC_RATIO);
-    float _e9 = ms_cosine_pdf_same_side(wo_30, wi_27);
+    float _e7 = ms_conductor_pdf(c_12, wo_34, wi_31, ms_tables, _buffer_sizes);
+    float _e9 = ms_cosine_pdf_same_side(wo_34, wi_31);
     return ((1.0 - _e4) * _e7) + (_e4 * _e9);
 }
 
 metal::float3 ms_cosine_hemisphere(
-    metal::float2 u_14
+    metal::float2 u_23
 ) {
-    float r_13 = metal::sqrt(u_14.x);
-    metal::float2 _e4 = ms_cos_sin_turn(u_14.y);
-    return metal::float3(r_13 * _e4.x, r_13 * _e4.y, metal::sqrt(metal::max(1.0 - u_14.x, 0.0)));
+    float r_21 = metal::sqrt(u_23.x);
+    metal::float2 _e4 = ms_cos_sin_turn(u_23.y);
+    return metal::float3(r_21 * _e4.x, r_21 * _e4.y, metal::sqrt(metal::max(1.0 - u_23.x, 0.0)));
 }
 
 MsBsdfSample ms_conductor_sample_kulla_conty(
-    MsConductor c_10,
-    metal::float3 wo_31,
+    MsConductor c_13,
+    metal::float3 wo_35,
     float uc_3,
-    metal::float2 u_15,
+    metal::float2 u_24,
     float e_o_6,
-    thread type_7& MS_BK_ERFCX,
-    thread type_7& MS_BK_ERFC_RATIO,
-    thread type_8& MS_BK_ERFINV_Q,
-    thread type_9& MS_BK_ERFINV_W
+    device type_7 const& ms_tables,
+    constant _mslBufferSizes& _buffer_sizes
 ) {
-    metal::float3 wi_28 = {};
-    bool local_26 = {};
+    metal::float3 wi_32 = {};
+    bool local_37 = {};
     MsBsdfSample none_4 = MsBsdfSample {metal::float3(0.0), 0.0, metal::float3(0.0), 0u, 1.0};
-    bool _e14 = ms_on_horizon(wo_31.z);
+    bool _e14 = ms_on_horizon(wo_35.z);
     if (_e14) {
         return none_4;
     }
     float _e15 = ms_kulla_conty_p_ms(e_o_6);
     if (uc_3 < _e15) {
-        metal::float3 _e18 = ms_cosine_hemisphere(u_15);
-        wi_28 = _e18;
-        if (wo_31.z < 0.0) {
-            float _e24 = wi_28.z;
-            wi_28.z = -(_e24);
+        metal::float3 _e18 = ms_cosine_hemisphere(u_24);
+        wi_32 = _e18;
+        if (wo_35.z < 0.0) {
+            float _e24 = wi_32.z;
+            wi_32.z = -(_e24);
         }
     } else {
-        MsBsdfSample _e30 = ms_conductor_sample(c_10, wo_31, (uc_3 - _e15) / (1.0 - _e15), u_15, MS_BK_ERFCX, MS_BK_ERFC_RATIO, MS_BK_ERFINV_Q, MS_BK_ERFINV_W);
+        MsBsdfSample _e30 = ms_conductor_sample(c_13, wo_35, (uc_3 - _e15) / (1.0 - _e15), u_24, ms_tables, _buffer_sizes);
         if (!(((_e30.flags & MS_SAMPLE_VALID) == 0u))) {
-            local_26 = (_e30.flags & MS_SAMPLE_SPECULAR) != 0u;
+            local_37 = (_e30.flags & MS_SAMPLE_SPECULAR) != 0u;
         } else {
-            local_26 = true;
+            local_37 = true;
         }
-        bool _e45 = local_26;
+        bool _e45 = local_37;
         if (_e45) {
             return _e30;
         }
-        wi_28 = _e30.wi;
+        wi_32 = _e30.wi;
     }
-    metal::float3 _e47 = wi_28;
-    float _e48 = ms_conductor_pdf_kulla_conty(c_10, wo_31, _e47, e_o_6, MS_BK_ERFC_RATIO);
+    metal::float3 _e47 = wi_32;
+    float _e48 = ms_conductor_pdf_kulla_conty(c_13, wo_35, _e47, e_o_6, ms_tables, _buffer_sizes);
     bool _e49 = ms_usable(_e48);
     if (!(_e49)) {
         return none_4;
     }
-    metal::float3 _e51 = wi_28;
-    metal::float3 _e52 = wi_28;
-    metal::float3 _e53 = ms_conductor_eval(c_10, wo_31, _e52, MS_BK_ERFC_RATIO);
+    metal::float3 _e51 = wi_32;
+    metal::float3 _e52 = wi_32;
+    metal::float3 _e53 = ms_conductor_eval(c_13, wo_35, _e52, ms_tables, _buffer_sizes);
     return MsBsdfSample {_e51, _e48, _e53, MS_SAMPLE_VALID, 1.0};
 }
 
 MsBsdfSample ms_kulla_conty_sample_f(
-    MsBsdfSample s_3,
-    metal::float3 wo_32,
+    MsBsdfSample s_6,
+    metal::float3 wo_36,
     float e_o_7,
     float e_i_2,
     float e_avg_3,
     metal::float3 f_ms_1
 ) {
-    bool local_27 = {};
-    bool local_28 = {};
-    if (!(((s_3.flags & MS_SAMPLE_VALID) == 0u))) {
-        local_27 = (s_3.flags & MS_SAMPLE_SPECULAR) != 0u;
+    bool local_38 = {};
+    bool local_39 = {};
+    if (!(((s_6.flags & MS_SAMPLE_VALID) == 0u))) {
+        local_38 = (s_6.flags & MS_SAMPLE_SPECULAR) != 0u;
     } else {
-        local_27 = true;
+        local_38 = true;
     }
-    bool _e20 = local_27;
+    bool _e20 = local_38;
     if (!(_e20)) {
-        local_28 = !(((wo_32.z * s_3.wi[2]) > 0.0));
+        local_39 = !(((wo_36.z * s_6.wi[2]) > 0.0));
     } else {
-        local_28 = true;
+        local_39 = true;
     }
-    bool _e32 = local_28;
+    bool _e32 = local_39;
     if (_e32) {
-        return s_3;
+        return s_6;
     }
     float _e36 = ms_kulla_conty_lobe(e_o_7, e_i_2, e_avg_3);
-    return MsBsdfSample {s_3.wi, s_3.pdf, s_3.f + (_e36 * f_ms_1), s_3.flags, s_3.eta};
+    return MsBsdfSample {s_6.wi, s_6.pdf, s_6.f + (_e36 * f_ms_1), s_6.flags, s_6.eta};
 }
 
 MsBsdfSample ms_conductor_sample_turquin(
-    MsConductor c_11,
-    metal::float3 wo_33,
+    MsConductor c_14,
+    metal::float3 wo_37,
     float uc_4,
-    metal::float2 u_16,
+    metal::float2 u_25,
     float e_o_8,
     metal::float3 f0_4,
-    thread type_7& MS_BK_ERFCX,
-    thread type_7& MS_BK_ERFC_RATIO,
-    thread type_8& MS_BK_ERFINV_Q,
-    thread type_9& MS_BK_ERFINV_W
+    device type_7 const& ms_tables,
+    constant _mslBufferSizes& _buffer_sizes
 ) {
-    bool local_29 = {};
-    MsBsdfSample _e6 = ms_conductor_sample(c_11, wo_33, uc_4, u_16, MS_BK_ERFCX, MS_BK_ERFC_RATIO, MS_BK_ERFINV_Q, MS_BK_ERFINV_W);
+    bool local_40 = {};
+    MsBsdfSample _e6 = ms_conductor_sample(c_14, wo_37, uc_4, u_25, ms_tables, _buffer_sizes);
     if (!(((_e6.flags & MS_SAMPLE_VALID) == 0u))) {
-        local_29 = (_e6.flags & MS_SAMPLE_SPECULAR) != 0u;
+        local_40 = (_e6.flags & MS_SAMPLE_SPECULAR) != 0u;
     } else {
-        local_29 = true;
+        local_40 = true;
     }
-    bool _e21 = local_29;
+    bool _e21 = local_40;
     if (_e21) {
         return _e6;
     }
     metal::float3 _e23 = ms_turquin_scale(e_o_8, f0_4);
-    metal::float3 f_5 = _e6.f * _e23;
-    if (!(metal::all(f_5 <= metal::float3(340282350000000000000000000000000000000.0)))) {
+    metal::float3 f_6 = _e6.f * _e23;
+    if (!(metal::all(f_6 <= metal::float3(340282350000000000000000000000000000000.0)))) {
         return MsBsdfSample {metal::float3(0.0), 0.0, metal::float3(0.0), 0u, 1.0};
     }
-    return MsBsdfSample {_e6.wi, _e6.pdf, f_5, _e6.flags, _e6.eta};
+    return MsBsdfSample {_e6.wi, _e6.pdf, f_6, _e6.flags, _e6.eta};
 }
 
 uint ms_lut_index3_(
@@ -2317,79 +3407,79 @@ float ms_lut_eta_coord(
 float ms_lut_trilerp(
     MsLutTap e,
     MsLutTap r_1,
-    MsLutTap m_4,
+    MsLutTap m_5,
     metal::float4 lo_2,
     metal::float4 hi_2
 ) {
-    float s_4 = 0.0;
-    uint b_4 = 0u;
+    float s_7 = 0.0;
+    uint b_6 = 0u;
     metal::float2 we = metal::float2(1.0 - e.f, e.f);
     metal::float2 wr = metal::float2(1.0 - r_1.f, r_1.f);
-    metal::float2 wm_16 = metal::float2(1.0 - m_4.f, m_4.f);
-    uint2 loop_bound_1 = uint2(4294967295u);
-    bool loop_init_1 = true;
+    metal::float2 wm_22 = metal::float2(1.0 - m_5.f, m_5.f);
+    uint2 loop_bound_5 = uint2(4294967295u);
+    bool loop_init_5 = true;
     while(true) {
-        if (metal::all(loop_bound_1 == uint2(0u))) { break; }
-        loop_bound_1 -= uint2(loop_bound_1.y == 0u, 1u);
-        if (!loop_init_1) {
-            uint _e59 = b_4;
-            b_4 = _e59 + 1u;
+        if (metal::all(loop_bound_5 == uint2(0u))) { break; }
+        loop_bound_5 -= uint2(loop_bound_5.y == 0u, 1u);
+        if (!loop_init_5) {
+            uint _e59 = b_6;
+            b_6 = _e59 + 1u;
         }
-        loop_init_1 = false;
-        uint _e24 = b_4;
+        loop_init_5 = false;
+        uint _e24 = b_6;
         if (_e24 < 8u) {
         } else {
             break;
         }
         {
-            uint _e27 = b_4;
-            uint _e31 = b_4;
-            uint _e35 = b_4;
-            float v_6 = (_e35 >= 4u) ? hi_2[_e31 & 3u] : lo_2[_e27 & 3u];
-            float _e39 = s_4;
-            uint _e40 = b_4;
-            uint _e44 = b_4;
-            uint _e51 = b_4;
-            s_4 = _e39 + (((we[_e40 & 1u] * wr[(_e44 >> 1u) & 1u]) * wm_16[_e51 >> 2u]) * v_6);
+            uint _e27 = b_6;
+            uint _e31 = b_6;
+            uint _e35 = b_6;
+            float v_8 = (_e35 >= 4u) ? hi_2[_e31 & 3u] : lo_2[_e27 & 3u];
+            float _e39 = s_7;
+            uint _e40 = b_6;
+            uint _e44 = b_6;
+            uint _e51 = b_6;
+            s_7 = _e39 + (((we[_e40 & 1u] * wr[(_e44 >> 1u) & 1u]) * wm_22[_e51 >> 2u]) * v_8);
         }
     }
-    float _e61 = s_4;
+    float _e61 = s_7;
     return _e61;
 }
 
 float ms_lut_bilerp_eta(
     MsLutTap e_1,
     MsLutTap r_2,
-    metal::float4 v_5
+    metal::float4 v_7
 ) {
-    float s_5 = 0.0;
-    uint b_5 = 0u;
+    float s_8 = 0.0;
+    uint b_7 = 0u;
     metal::float2 we_1 = metal::float2(1.0 - e_1.f, e_1.f);
     metal::float2 wr_1 = metal::float2(1.0 - r_2.f, r_2.f);
-    uint2 loop_bound_2 = uint2(4294967295u);
-    bool loop_init_2 = true;
+    uint2 loop_bound_6 = uint2(4294967295u);
+    bool loop_init_6 = true;
     while(true) {
-        if (metal::all(loop_bound_2 == uint2(0u))) { break; }
-        loop_bound_2 -= uint2(loop_bound_2.y == 0u, 1u);
-        if (!loop_init_2) {
-            uint _e35 = b_5;
-            b_5 = _e35 + 1u;
+        if (metal::all(loop_bound_6 == uint2(0u))) { break; }
+        loop_bound_6 -= uint2(loop_bound_6.y == 0u, 1u);
+        if (!loop_init_6) {
+            uint _e35 = b_7;
+            b_7 = _e35 + 1u;
         }
-        loop_init_2 = false;
-        uint _e17 = b_5;
+        loop_init_6 = false;
+        uint _e17 = b_7;
         if (_e17 < 4u) {
         } else {
             break;
         }
         {
-            float _e20 = s_5;
-            uint _e21 = b_5;
-            uint _e25 = b_5;
-            uint _e30 = b_5;
-            s_5 = _e20 + ((we_1[_e21 & 1u] * wr_1[_e25 >> 1u]) * v_5[_e30]);
+            float _e20 = s_8;
+            uint _e21 = b_7;
+            uint _e25 = b_7;
+            uint _e30 = b_7;
+            s_8 = _e20 + ((we_1[_e21 & 1u] * wr_1[_e25 >> 1u]) * v_7[_e30]);
         }
     }
-    float _e37 = s_5;
+    float _e37 = s_8;
     return _e37;
 }
 
@@ -2398,106 +3488,108 @@ metal::float2 ms_dielectric_kulla_conty_k(
     float f_avg_1,
     metal::float2 e_avg_4
 ) {
-    metal::float2 k_3 = {};
+    metal::float2 k_6 = {};
     float k_out = 1.0 - f_avg_1;
-    k_3 = metal::float2(k_out, (k_out * (1.0 - e_avg_4.x)) / ((eta_5 * eta_5) * (1.0 - e_avg_4.y)));
-    float _e18 = k_3.y;
+    k_6 = metal::float2(k_out, (k_out * (1.0 - e_avg_4.x)) / ((eta_5 * eta_5) * (1.0 - e_avg_4.y)));
+    float _e18 = k_6.y;
     if (!((_e18 <= 1.0))) {
-        metal::float2 _e22 = k_3;
-        float _e24 = k_3.y;
-        float _e28 = k_3.y;
-        k_3 = _e22 * ((_e28 > 1.0) ? (1.0 / _e24) : 0.0);
+        metal::float2 _e22 = k_6;
+        float _e24 = k_6.y;
+        float _e28 = k_6.y;
+        k_6 = _e22 * ((_e28 > 1.0) ? (1.0 / _e24) : 0.0);
     }
-    metal::float2 _e34 = k_3;
+    metal::float2 _e34 = k_6;
     return _e34;
 }
 
 float ms_dielectric_kulla_conty_lobe(
     MsDielectric d_9,
-    metal::float3 wo_34,
-    metal::float3 wi_29,
+    metal::float3 wo_38,
+    metal::float3 wi_33,
     float e_o_9,
     float e_i_3,
     float e_avg_i,
     float k_o
 ) {
-    bool local_30 = {};
-    bool local_31 = {};
-    float f_3 = {};
-    bool local_32 = {};
-    if (metal::abs(wo_34.z) > 0.0) {
-        local_30 = metal::abs(wi_29.z) > 0.0;
+    bool local_41 = {};
+    bool local_42 = {};
+    float f_4 = {};
+    bool local_43 = {};
+    if (metal::abs(wo_38.z) > 0.0) {
+        local_41 = metal::abs(wi_33.z) > 0.0;
     } else {
-        local_30 = false;
+        local_41 = false;
     }
-    bool _e18 = local_30;
+    bool _e18 = local_41;
     if (!(_e18)) {
         return 0.0;
     }
     float lost = 1.0 - e_o_9;
-    bool crossed = (wi_29.z < 0.0) != (wo_34.z < 0.0);
+    bool crossed = (wi_33.z < 0.0) != (wo_38.z < 0.0);
     float share = crossed ? k_o : (1.0 - k_o);
     float den_4 = MS_PI * (1.0 - e_avg_i);
     if (den_4 > 0.0) {
-        local_31 = lost > 0.0;
+        local_42 = lost > 0.0;
     } else {
-        local_31 = false;
+        local_42 = false;
     }
-    bool _e44 = local_31;
+    bool _e44 = local_42;
     if (!(_e44)) {
         return 0.0;
     }
-    f_3 = ((share * lost) * metal::max(1.0 - e_i_3, 0.0)) / den_4;
+    f_4 = ((share * lost) * metal::max(1.0 - e_i_3, 0.0)) / den_4;
     if (crossed) {
-        local_32 = d_9.transport == MS_TRANSPORT_RADIANCE;
+        local_43 = d_9.transport == MS_TRANSPORT_RADIANCE;
     } else {
-        local_32 = false;
+        local_43 = false;
     }
-    bool _e61 = local_32;
+    bool _e61 = local_43;
     if (_e61) {
-        float etap_7 = (wo_34.z > 0.0) ? d_9.eta : (1.0 / d_9.eta);
-        float _e70 = f_3;
-        f_3 = _e70 / (etap_7 * etap_7);
+        float etap_7 = (wo_38.z > 0.0) ? d_9.eta : (1.0 / d_9.eta);
+        float _e70 = f_4;
+        f_4 = _e70 / (etap_7 * etap_7);
     }
-    float _e73 = f_3;
+    float _e73 = f_4;
     return _e73;
 }
 
 float ms_dielectric_eval_kulla_conty(
     MsDielectric d_10,
-    metal::float3 wo_35,
-    metal::float3 wi_30,
+    metal::float3 wo_39,
+    metal::float3 wi_34,
     float e_o_10,
     float e_i_4,
     float e_avg_i_1,
     float k_o_1,
-    thread type_7& MS_BK_ERFC_RATIO
+    device type_7 const& ms_tables,
+    constant _mslBufferSizes& _buffer_sizes
 ) {
-    float _e7 = ms_dielectric_eval(d_10, wo_35, wi_30, MS_BK_ERFC_RATIO);
+    float _e7 = ms_dielectric_eval(d_10, wo_39, wi_34, ms_tables, _buffer_sizes);
     bool _e8 = ms_dielectric_smooth(d_10);
     if (_e8) {
         return _e7;
     }
-    float _e9 = ms_dielectric_kulla_conty_lobe(d_10, wo_35, wi_30, e_o_10, e_i_4, e_avg_i_1, k_o_1);
+    float _e9 = ms_dielectric_kulla_conty_lobe(d_10, wo_39, wi_34, e_o_10, e_i_4, e_avg_i_1, k_o_1);
     return _e7 + _e9;
 }
 
 float ms_dielectric_eval_turquin(
     MsDielectric d_11,
-    metal::float3 wo_36,
-    metal::float3 wi_31,
+    metal::float3 wo_40,
+    metal::float3 wi_35,
     float e_o_11,
-    thread type_7& MS_BK_ERFC_RATIO
+    device type_7 const& ms_tables,
+    constant _mslBufferSizes& _buffer_sizes
 ) {
-    bool local_33 = {};
-    float _e4 = ms_dielectric_eval(d_11, wo_36, wi_31, MS_BK_ERFC_RATIO);
+    bool local_44 = {};
+    float _e4 = ms_dielectric_eval(d_11, wo_40, wi_35, ms_tables, _buffer_sizes);
     bool _e5 = ms_dielectric_smooth(d_11);
     if (!(_e5)) {
-        local_33 = !((e_o_11 > 0.0));
+        local_44 = !((e_o_11 > 0.0));
     } else {
-        local_33 = true;
+        local_44 = true;
     }
-    bool _e13 = local_33;
+    bool _e13 = local_44;
     if (_e13) {
         return _e4;
     }
@@ -2509,41 +3601,41 @@ uint naga_div(uint lhs, uint rhs) {
 }
 
 uint ms_k_index(
-    metal::uint3 id_10,
-    metal::uint3 groups_10,
-    device type_10 const& ms_in,
+    metal::uint3 id_13,
+    metal::uint3 groups_13,
+    device type_7 const& ms_in,
     constant _mslBufferSizes& _buffer_sizes
 ) {
-    uint i_8 = id_10.x + ((id_10.y * groups_10.x) * 64u);
-    uint n_7 = naga_div(1 + (_buffer_sizes.size4 - 0 - 16) / 16, MS_K_IN);
-    if (i_8 >= n_7) {
-        return n_7;
+    uint i_11 = id_13.x + ((id_13.y * groups_13.x) * 64u);
+    uint n_10 = naga_div(1 + (_buffer_sizes.size1 - 0 - 16) / 16, MS_K_IN);
+    if (i_11 >= n_10) {
+        return n_10;
     }
-    return i_8;
+    return i_11;
 }
 
 MsConductor ms_k_conductor(
-    uint i,
-    device type_10 const& ms_in,
+    uint i_2,
+    device type_7 const& ms_in,
     constant _mslBufferSizes& _buffer_sizes
 ) {
-    metal::float4 r0_ = ms_in[i * MS_K_IN];
-    metal::float4 r2_ = ms_in[(i * MS_K_IN) + 2u];
-    metal::float4 r3_ = ms_in[(i * MS_K_IN) + 3u];
-    metal::float4 r4_ = ms_in[(i * MS_K_IN) + 4u];
+    metal::float4 r0_ = ms_in[i_2 * MS_K_IN];
+    metal::float4 r2_ = ms_in[(i_2 * MS_K_IN) + 2u];
+    metal::float4 r3_ = ms_in[(i_2 * MS_K_IN) + 3u];
+    metal::float4 r4_ = ms_in[(i_2 * MS_K_IN) + 4u];
     MsMicrofacet mf_11 = MsMicrofacet {naga_f2u32(r2_.w), {}, r0_.xy};
     return MsConductor {mf_11, MsFresnel {naga_f2u32(r3_.w), {}, r3_.xyz, r4_.xyz}, naga_f2u32(r4_.w)};
 }
 
 MsDielectric ms_k_dielectric(
-    uint i_1,
-    device type_10 const& ms_in,
+    uint i_3,
+    device type_7 const& ms_in,
     constant _mslBufferSizes& _buffer_sizes
 ) {
-    metal::float4 r0_1 = ms_in[i_1 * MS_K_IN];
-    metal::float4 r2_1 = ms_in[(i_1 * MS_K_IN) + 2u];
-    metal::float4 r3_1 = ms_in[(i_1 * MS_K_IN) + 3u];
-    metal::float4 r4_1 = ms_in[(i_1 * MS_K_IN) + 4u];
+    metal::float4 r0_1 = ms_in[i_3 * MS_K_IN];
+    metal::float4 r2_1 = ms_in[(i_3 * MS_K_IN) + 2u];
+    metal::float4 r3_1 = ms_in[(i_3 * MS_K_IN) + 3u];
+    metal::float4 r4_1 = ms_in[(i_3 * MS_K_IN) + 4u];
     return MsDielectric {MsMicrofacet {naga_f2u32(r2_1.w), {}, r0_1.xy}, r3_1.x, naga_f2u32(r4_1.w), naga_f2u32(r4_1.x)};
 }
 
@@ -2552,29 +3644,29 @@ struct ms_k_ggx_evalInput {
 kernel void ms_k_ggx_eval(
   metal::uint3 id [[thread_position_in_grid]]
 , metal::uint3 groups [[threadgroups_per_grid]]
-, device type_10 const& ms_in [[user(fake0)]]
-, device type_10& ms_out [[user(fake0)]]
+, device type_7 const& ms_in [[user(fake0)]]
+, device type_7& ms_out [[user(fake0)]]
 , constant _mslBufferSizes& _buffer_sizes [[user(fake0)]]
 ) {
     uint _e2 = ms_k_index(id, groups, ms_in, _buffer_sizes);
-    if (_e2 == naga_div(1 + (_buffer_sizes.size4 - 0 - 16) / 16, MS_K_IN)) {
+    if (_e2 == naga_div(1 + (_buffer_sizes.size1 - 0 - 16) / 16, MS_K_IN)) {
         return;
     }
     metal::float4 _e12 = ms_in[_e2 * MS_K_IN];
-    metal::float2 a_14 = _e12.xy;
+    metal::float2 a_23 = _e12.xy;
     metal::float4 _e20 = ms_in[(_e2 * MS_K_IN) + 1u];
-    metal::float3 wo_37 = _e20.xyz;
+    metal::float3 wo_41 = _e20.xyz;
     metal::float4 _e28 = ms_in[(_e2 * MS_K_IN) + 2u];
-    metal::float3 wm_17 = _e28.xyz;
-    float _e34 = ms_ggx_d(wm_17, a_14);
-    float _e35 = ms_ggx_lambda(wo_37, a_14);
-    float _e36 = ms_ggx_g1_(wo_37, a_14);
-    float _e37 = ms_ggx_g2_(wo_37, wm_17, a_14);
+    metal::float3 wm_23 = _e28.xyz;
+    float _e34 = ms_ggx_d(wm_23, a_23);
+    float _e35 = ms_ggx_lambda(wo_41, a_23);
+    float _e36 = ms_ggx_g1_(wo_41, a_23);
+    float _e37 = ms_ggx_g2_(wo_41, wm_23, a_23);
     ms_out[_e2 * MS_K_OUT] = metal::float4(_e34, _e35, _e36, _e37);
-    float _e45 = ms_ggx_g2_separable(wo_37, wm_17, a_14);
-    float _e46 = ms_ggx_pdf(wo_37, wm_17, a_14);
-    float _e47 = ms_ggx_pdf_dcos(wm_17, a_14);
-    float _e48 = ms_ggx_pdf_bounded(wo_37, wm_17, a_14);
+    float _e45 = ms_ggx_g2_separable(wo_41, wm_23, a_23);
+    float _e46 = ms_ggx_pdf(wo_41, wm_23, a_23);
+    float _e47 = ms_ggx_pdf_dcos(wm_23, a_23);
+    float _e48 = ms_ggx_pdf_bounded(wo_41, wm_23, a_23);
     ms_out[(_e2 * MS_K_OUT) + 1u] = metal::float4(_e45, _e46, _e47, _e48);
     return;
 }
@@ -2585,30 +3677,30 @@ struct ms_k_beckmann_evalInput {
 kernel void ms_k_beckmann_eval(
   metal::uint3 id_1 [[thread_position_in_grid]]
 , metal::uint3 groups_1 [[threadgroups_per_grid]]
-, device type_10 const& ms_in [[user(fake0)]]
-, device type_10& ms_out [[user(fake0)]]
+, device type_7 const& ms_tables [[user(fake0)]]
+, device type_7 const& ms_in [[user(fake0)]]
+, device type_7& ms_out [[user(fake0)]]
 , constant _mslBufferSizes& _buffer_sizes [[user(fake0)]]
 ) {
-    type_7 MS_BK_ERFC_RATIO = type_7 {{metal::float4(0.9998783, -0.000013520655, 0.000000000116372106, 0.000000000000089372953), metal::float4(0.000000000000054622973, -0.0000000000001831868, -0.000000000000035083048, 0.00000000000010746959), metal::float4(0.9998513, -0.000013520189, 0.00000000011636769, 0.000000000000086985974), metal::float4(0.00000000000005395684, -0.0000000000001777467, -0.00000000000003463896, 0.000000000000104360964), metal::float4(0.9998242, -0.000013519723, 0.000000000116361754, 0.00000000000009531265), metal::float4(0.000000000000056621374, -0.0000000000001926237, -0.000000000000036415315, 0.00000000000011235457), metal::float4(0.99979717, -0.000013519258, 0.00000000011635656, 0.000000000000092870156), metal::float4(0.000000000000056621374, -0.00000000000018840485, -0.000000000000035971226, 0.000000000000109690035), metal::float4(0.99975663, -0.000027037118, 0.0000000004654685, 0.0000000000000806577), metal::float4(0.000000000000056177285, -0.0000000000001761924, -0.000000000000035527137, 0.000000000000103472786), metal::float4(0.9997026, -0.000027035258, 0.0000000004654293, 0.000000000000089595), metal::float4(0.00000000000005973, -0.00000000000019295676, -0.000000000000038191672, 0.00000000000011279866), metal::float4(0.9996485, -0.000027033395, 0.0000000004653939, 0.0000000000000801581), metal::float4(0.000000000000054178884, -0.00000000000017652546, -0.00000000000003463896, 0.000000000000103916875), metal::float4(0.99959445, -0.000027031534, 0.00000000046535684, 0.0000000000000801581), metal::float4(0.00000000000005306866, -0.00000000000017652546, -0.00000000000003419487, 0.000000000000103916875), metal::float4(0.9995133, -0.000054057484, 0.0000000018612636, 0.000000000000038469228), metal::float4(0.000000000000055067062, -0.00000000000018152146, -0.000000000000035527137, 0.0000000000001070255), metal::float4(0.9994052, -0.00005405004, 0.0000000018609614, 0.00000000000003758105), metal::float4(0.000000000000055067062, -0.00000000000017952306, -0.000000000000035527137, 0.00000000000010613732), metal::float4(0.99929714, -0.000054042597, 0.0000000018606601, 0.000000000000044131365), metal::float4(0.000000000000054622973, -0.00000000000019173552, -0.000000000000035527137, 0.00000000000011235457), metal::float4(0.9991891, -0.000054035154, 0.0000000018603591, 0.00000000000004052314), metal::float4(0.000000000000051958438, -0.00000000000018540725, -0.00000000000003330669, 0.000000000000109245946), metal::float4(0.99902695, -0.000108047985, 0.000000007439686, -0.00000000000031830094), metal::float4(0.000000000000054622973, -0.00000000000017141844, -0.000000000000035083048, 0.00000000000010125234), metal::float4(0.9988109, -0.000108018234, 0.0000000074372717, -0.00000000000032190917), metal::float4(0.000000000000056621374, -0.00000000000016553425, -0.000000000000036415315, 0.000000000000098143715), metal::float4(0.9985949, -0.00010798849, 0.00000000743486, -0.00000000000031646907), metal::float4(0.000000000000054845017, -0.00000000000017352786, -0.000000000000035083048, 0.00000000000010169643), metal::float4(0.99837893, -0.00010795875, 0.0000000074324493, -0.00000000000031152858), metal::float4(0.000000000000050404125, -0.00000000000018207658, -0.000000000000031974423, 0.00000000000010658141), metal::float4(0.99805516, -0.00021582833, 0.000000029715395, -0.000000000003128331), metal::float4(0.00000000000005551115, -0.00000000000017486013, -0.000000000000035527137, 0.000000000000103472786), metal::float4(0.9976236, -0.00021570952, 0.00000002969612, -0.000000000003120837), metal::float4(0.000000000000057065463, -0.00000000000018207658, -0.000000000000035971226, 0.00000000000010658141), metal::float4(0.9971923, -0.00021559077, 0.000000029676862, -0.0000000000031179503), metal::float4(0.000000000000051292304, -0.00000000000018363089, -0.000000000000032418512, 0.00000000000010746959), metal::float4(0.99676126, -0.0002154721, 0.000000029657613, -0.0000000000031167846), metal::float4(0.00000000000005973, -0.00000000000018129942, -0.000000000000038191672, 0.00000000000010613732), metal::float4(0.9961151, -0.00043058846, 0.00000011851517, -0.000000000025533409), metal::float4(0.000000000000054622973, -0.00000000000018196555, -0.000000000000031974423, 0.0000000000001070255), metal::float4(0.9952544, -0.0004301147, 0.00000011836154, -0.00000000002549444), metal::float4(0.00000000000005750955, -0.00000000000018396396, -0.00000000000003375078, 0.00000000000010791368), metal::float4(0.9943946, -0.00042964157, 0.00000011820814, -0.0000000000254613), metal::float4(0.00000000000005750955, -0.0000000000001771916, -0.00000000000003330669, 0.000000000000104805054), metal::float4(0.9935358, -0.00042916907, 0.00000011805497, -0.000000000025424052), metal::float4(0.0000000000000577316, -0.00000000000017463808, -0.00000000000003419487, 0.00000000000010258461), metal::float4(0.99224937, -0.0008569228, 0.0000004713026, -0.00000000020354624), metal::float4(0.00000000000012922996, -0.00000000000017463808, -0.00000000000003463896, 0.00000000000010258461), metal::float4(0.9905374, -0.00085504004, 0.0000004700826, -0.00000000020295265), metal::float4(0.0000000000001298961, -0.00000000000016986412, -0.000000000000035527137, 0.00000000000010036416), metal::float4(0.9888292, -0.00085316214, 0.00000046886615, -0.00000000020235569), metal::float4(0.00000000000012811974, -0.00000000000017386093, -0.00000000000003463896, 0.00000000000010214052), metal::float4(0.98712474, -0.00085128914, 0.0000004676533, -0.00000000020176294), metal::float4(0.00000000000012834178, -0.00000000000017452706, -0.000000000000035083048, 0.0000000000001030287), metal::float4(0.9845751, -0.0016969773, 0.0000018633626, -0.0000000016076107), metal::float4(0.0000000000012352341, -0.00000000000018551827, -0.000000000000036859404, 0.000000000000108801856), metal::float4(0.9811886, -0.0016895431, 0.0000018537446, -0.0000000015982158), metal::float4(0.0000000000012265744, -0.00000000000018851587, -0.000000000000035971226, 0.000000000000109245946), metal::float4(0.9778169, -0.0016821473, 0.0000018441829, -0.0000000015888955), metal::float4(0.0000000000012161383, -0.00000000000016819879, -0.00000000000003375078, 0.000000000000098143715), metal::float4(0.97445995, -0.0016747896, 0.0000018346768, -0.0000000015796264), metal::float4(0.000000000001209477, -0.00000000000016719959, -0.00000000000003463896, 0.000000000000098587805), metal::float4(0.9694521, -0.0033276482, 0.0000072820867, -0.000000012527211), metal::float4(0.000000000018354651, -0.00000000000019839685, -0.000000000000031974423, 0.000000000000103472786), metal::float4(0.9628258, -0.0032986696, 0.0000072073603, -0.00000001238172), metal::float4(0.000000000018118618, -0.00000000000019206858, -0.000000000000031530334, 0.000000000000098587805), metal::float4(0.95625716, -0.003269988, 0.000007133501, -0.000000012238096), metal::float4(0.000000000017883695, -0.00000000000018784974, -0.000000000000029309888, 0.000000000000097699626), metal::float4(0.94974566, -0.0032416002, 0.0000070604983, -0.000000012096301), metal::float4(0.00000000001765632, -0.00000000000019806379, -0.000000000000029753977, 0.0000000000001030287), metal::float4(0.94008404, -0.006399124, 0.000027810303, -0.00000009509669), metal::float4(0.00000000027642266, -0.0000000000008895107, -0.000000000000031086245, 0.000000000000104805054), metal::float4(0.9273963, -0.006289015, 0.000027246298, -0.00000009291387), metal::float4(0.00000000026941782, -0.000000000000856093, -0.000000000000031530334, 0.00000000000009636736), metal::float4(0.9149265, -0.0061811362, 0.000026695225, -0.00000009078632), metal::float4(0.00000000026260571, -0.00000000000083555385, -0.000000000000031974423, 0.00000000000009503509), metal::float4(0.9026703, -0.0060754367, 0.000026156755, -0.00000008871252), metal::float4(0.00000000025598057, -0.00000000000082167606, -0.000000000000031974423, 0.000000000000099031894), metal::float4(0.88467705, -0.011841728, 0.000101487945, -0.00000068559564), metal::float4(0.0000000039413006, -0.00000000002022571, 0.00000000000006039613, 0.000000000000098143715), metal::float4(0.8613941, -0.0114438785, 0.00009746738, -0.0000006548533), metal::float4(0.0000000037461754, -0.000000000019134916, 0.00000000000005728751, 0.00000000000009148238), metal::float4(0.838891, -0.011061749, 0.000093626666, -0.0000006256297), metal::float4(0.0000000035615182, -0.000000000018111956, 0.000000000000053290705, 0.000000000000087041485), metal::float4(0.8171371, -0.010694638, 0.00008995695, -0.00000059784344), metal::float4(0.0000000033867338, -0.000000000017152058, 0.000000000000047073456, 0.00000000000008615331), metal::float4(0.78584695, -0.020341357, 0.00033901897, -0.0000044695416), metal::float4(0.000000050268525, -0.0000000005015497, 0.000000000004514167, 0.00000000000003996803), metal::float4(0.7464853, -0.019037347, 0.0003133691, -0.000004086745), metal::float4(0.000000045516558, -0.00000000045011284, 0.0000000000040136783, 0.000000000000047073456), metal::float4(0.7096321, -0.01783149, 0.000289906, -0.0000037399832), metal::float4(0.000000041250228, -0.0000000004043006, 0.000000000003574474, 0.000000000000046185278), metal::float4(0.6750995, -0.016715458, 0.0002684246, -0.0000034255886), metal::float4(0.000000037416495, -0.0000000003634768, 0.0000000000031872283, 0.000000000000046185278), metal::float4(0.6272794, -0.030387005, 0.0009580818, -0.000024061048), metal::float4(0.00000051801413, -0.000000009927543, 0.00000000017332358, -0.0000000000027222669), metal::float4(0.57015324, -0.026827596, 0.0008253934, -0.000020287804), metal::float4(0.0000004283978, -0.000000008065489, 0.00000000013850876, -0.0000000000021382895), metal::float4(0.5196439, -0.023756387, 0.0007133347, -0.000017162258), metal::float4(0.00000035547052, -0.0000000065749886, 0.00000000011106582, -0.000000000001677547), metal::float4(0.47485265, -0.021098126, 0.000618392, -0.000014564653), metal::float4(0.00000029592425, -0.000000005377808, 0.00000000008935852, -0.0000000000013233858), metal::float4(0.4167533, -0.035502225, 0.0020077599, -0.0000916237), metal::float4(0.000003617964, -0.00000012807482, 0.0000000041592605, -0.00000000012519785), metal::float4(0.35310093, -0.028464397, 0.0015355214, -0.00006720277), metal::float4(0.0000025549414, -0.00000008734229, 0.00000000274549, -0.00000000008015033), metal::float4(0.30181482, -0.023053482, 0.0011872437, -0.00004985952), metal::float4(0.0000018258146, -0.000000060294994, 0.0000000018349833, -0.000000000051961768), metal::float4(0.26008537, -0.018848889, 0.00092748983, -0.000037398404), metal::float4(0.0000013196806, -0.00000004211374, 0.00000000124123, -0.000000000034098946), metal::float4(0.21097384, -0.02833318, 0.0026085791, -0.00019815165), metal::float4(0.000013240014, -0.0000008032937, 0.000000045332847, -0.000000002383124), metal::float4(0.16334534, -0.019909557, 0.0016825865, -0.00011829047), metal::float4(0.000007361291, -0.00000041804822, 0.00000002216081, -0.0000000010987664), metal::float4(0.12941593, -0.014392785, 0.0011207133, -0.00007312401), metal::float4(0.0000042474107, -0.00000022617557, 0.000000011279408, -0.00000000052811067), metal::float4(0.1045896, -0.010667653, 0.00076819374, -0.00004665181), metal::float4(0.000002534995, -0.00000012680964, 0.000000005958998, -0.0000000002638087), metal::float4(0.07841912, -0.014176364, 0.0018281857, -0.00020045321), metal::float4(0.000019795682, -0.0000018097585, 0.00000015757479, -0.000000012851965), metal::float4(0.0560429, -0.008755298, 0.0009860945, -0.00009524624), metal::float4(0.000008346028, -0.00000068116896, 0.000000053103143, -0.000000003906189), metal::float4(0.04182938, -0.0057326877, 0.0005708639, -0.00004907507), metal::float4(0.00000384914, -0.00000028258418, 0.00000001986625, -0.000000001325575), metal::float4(0.03230852, -0.0039342963, 0.00035016204, -0.000027042239), metal::float4(0.0000019139986, -0.00000012730473, 0.000000008125588, -0.0000000004946015), metal::float4(0.023056017, -0.0047972575, 0.0007341793, -0.00009804619), metal::float4(0.0000120590175, -0.0000014004432, 0.00000015913854, -0.000000017034818), metal::float4(0.015770199, -0.0027393384, 0.0003519189, -0.000039650156), metal::float4(0.0000041337757, -0.00000040863492, 0.00000003944863, -0.00000000362363), metal::float4(0.011437163, -0.0017017398, 0.00018792653, -0.000018260866), metal::float4(0.0000016470873, -0.0000001412674, 0.000000011818231, -0.0000000009471726), metal::float4(0.00866178, -0.0011258711, 0.0001088732, -0.0000092847595), metal::float4(0.0000007365851, -0.000000055677763, 0.0000000041018984, -0.00000000029088262), metal::float4(0.006061911, -0.0013231621, 0.00021536356, -0.000030982304), metal::float4(0.000004154092, -0.0000005319391, 0.00000006779496, -0.0000000081705505), metal::float4(0.0040820343, -0.0007332432, 0.00009839357, -0.000011690638), metal::float4(0.0000012970188, -0.00000013763658, 0.0000000144309, -0.0000000014465321), metal::float4(0.002932701, -0.00044726077, 0.00005101198, -0.000005157015), metal::float4(0.0000004873513, -0.000000044093955, 0.0000000039244634, -0.0000000003361419), metal::float4(0.0022075695, -0.0002924102, 0.000028986162, -0.000002548597), metal::float4(0.00000020962135, -0.000000016517234, 0.000000001276658, -0.00000000009536809), metal::float4(0.00153612, -0.00033979642, 0.000056287994, -0.000008275684), metal::float4(0.0000011385838, -0.0000001502121, 0.000000019849313, -0.0000000024841724), metal::float4(0.0010298727, -0.00018667341, 0.000025351253, -0.0000030571844), metal::float4(0.00000034523006, -0.000000037393693, 0.0000000040174672, -0.00000000041333592), metal::float4(0.0007380098, -0.00011328932, 0.000013033428, -0.000001331858), metal::float4(0.0000001274904, -0.00000001170815, 0.0000000010604964, -0.0000000000925777), metal::float4(0.00055463216, -0.00007382818, 0.000007366494, -0.0000006529916), metal::float4(0.000000054233485, -0.00000000432196, 0.0000000003384992, -0.000000000025654366)}};
     uint _e2 = ms_k_index(id_1, groups_1, ms_in, _buffer_sizes);
-    if (_e2 == naga_div(1 + (_buffer_sizes.size4 - 0 - 16) / 16, MS_K_IN)) {
+    if (_e2 == naga_div(1 + (_buffer_sizes.size1 - 0 - 16) / 16, MS_K_IN)) {
         return;
     }
     metal::float4 _e12 = ms_in[_e2 * MS_K_IN];
-    metal::float2 a_15 = _e12.xy;
+    metal::float2 a_24 = _e12.xy;
     metal::float4 _e20 = ms_in[(_e2 * MS_K_IN) + 1u];
-    metal::float3 wo_38 = _e20.xyz;
+    metal::float3 wo_42 = _e20.xyz;
     metal::float4 _e28 = ms_in[(_e2 * MS_K_IN) + 2u];
-    metal::float3 wm_18 = _e28.xyz;
-    float _e34 = ms_beckmann_d(wm_18, a_15);
-    float _e35 = ms_beckmann_lambda(wo_38, a_15, MS_BK_ERFC_RATIO);
-    float _e36 = ms_beckmann_g1_(wo_38, a_15, MS_BK_ERFC_RATIO);
-    float _e37 = ms_beckmann_g2_(wo_38, wm_18, a_15, MS_BK_ERFC_RATIO);
+    metal::float3 wm_24 = _e28.xyz;
+    float _e34 = ms_beckmann_d(wm_24, a_24);
+    float _e35 = ms_beckmann_lambda(wo_42, a_24, ms_tables, _buffer_sizes);
+    float _e36 = ms_beckmann_g1_(wo_42, a_24, ms_tables, _buffer_sizes);
+    float _e37 = ms_beckmann_g2_(wo_42, wm_24, a_24, ms_tables, _buffer_sizes);
     ms_out[_e2 * MS_K_OUT] = metal::float4(_e34, _e35, _e36, _e37);
-    float _e45 = ms_beckmann_g2_separable(wo_38, wm_18, a_15, MS_BK_ERFC_RATIO);
-    float _e46 = ms_beckmann_pdf(wo_38, wm_18, a_15, MS_BK_ERFC_RATIO);
-    float _e47 = ms_beckmann_pdf_dcos(wm_18, a_15);
-    float _e50 = ms_pdf(MsMicrofacet {MS_NDF_BECKMANN, {}, a_15}, wo_38, wm_18, MS_BK_ERFC_RATIO);
+    float _e45 = ms_beckmann_g2_separable(wo_42, wm_24, a_24, ms_tables, _buffer_sizes);
+    float _e46 = ms_beckmann_pdf(wo_42, wm_24, a_24, ms_tables, _buffer_sizes);
+    float _e47 = ms_beckmann_pdf_dcos(wm_24, a_24);
+    float _e50 = ms_pdf(MsMicrofacet {MS_NDF_BECKMANN, {}, a_24}, wo_42, wm_24, ms_tables, _buffer_sizes);
     ms_out[(_e2 * MS_K_OUT) + 1u] = metal::float4(_e45, _e46, _e47, _e50);
     return;
 }
@@ -2619,22 +3711,19 @@ struct ms_k_beckmann_sampleInput {
 kernel void ms_k_beckmann_sample(
   metal::uint3 id_2 [[thread_position_in_grid]]
 , metal::uint3 groups_2 [[threadgroups_per_grid]]
-, device type_10 const& ms_in [[user(fake0)]]
-, device type_10& ms_out [[user(fake0)]]
+, device type_7 const& ms_tables [[user(fake0)]]
+, device type_7 const& ms_in [[user(fake0)]]
+, device type_7& ms_out [[user(fake0)]]
 , constant _mslBufferSizes& _buffer_sizes [[user(fake0)]]
 ) {
-    type_7 MS_BK_ERFCX = type_7 {{metal::float4(0.9999225, -0.000008607803, 0.000000000058177935, 0.00000000000008471002), metal::float4(0.00000000000004973799, -0.00000000000017230661, -0.000000000000031530334, 0.00000000000010125234), metal::float4(0.9999053, -0.00000860757, 0.00000000005817566, 0.00000000000008326673), metal::float4(0.000000000000051736393, -0.00000000000017030821, -0.00000000000003330669, 0.00000000000010036416), metal::float4(0.9998881, -0.000008607337, 0.000000000058172744, 0.0000000000000930922), metal::float4(0.000000000000052402527, -0.00000000000018574031, -0.0000000000000328626, 0.00000000000010791368), metal::float4(0.9998709, -0.000008607104, 0.000000000058170968, 0.00000000000008915091), metal::float4(0.000000000000054845017, -0.00000000000018163249, -0.000000000000035527137, 0.00000000000010658141), metal::float4(0.9998451, -0.00001721351, 0.00000000023273894, 0.00000000000009314771), metal::float4(0.000000000000047517545, -0.0000000000001911804, -0.000000000000030198066, 0.0000000000001110223), metal::float4(0.99981064, -0.000017212578, 0.00000000023271904, 0.000000000000092370556), metal::float4(0.00000000000005684342, -0.00000000000019029223, -0.000000000000035971226, 0.0000000000001110223), metal::float4(0.9997762, -0.000017211647, 0.00000000023270427, 0.00000000000009003909), metal::float4(0.00000000000005306866, -0.00000000000018607338, -0.00000000000003330669, 0.00000000000010835777), metal::float4(0.9997418, -0.000017210717, 0.00000000023268884, 0.00000000000008837375), metal::float4(0.000000000000054400928, -0.00000000000017963409, -0.000000000000035083048, 0.000000000000103916875), metal::float4(0.9996902, -0.00003441864, 0.0000000009307227, 0.000000000000070665696), metal::float4(0.000000000000056621374, -0.00000000000018485213, -0.000000000000036415315, 0.00000000000010791368), metal::float4(0.99962133, -0.00003441492, 0.0000000009305945, 0.00000000000007438494), metal::float4(0.00000000000005639933, -0.00000000000019229063, -0.000000000000035971226, 0.00000000000011191048), metal::float4(0.9995525, -0.000034411194, 0.0000000009304685, 0.00000000000006267209), metal::float4(0.00000000000005151435, -0.00000000000017219559, -0.00000000000003330669, 0.00000000000010169643), metal::float4(0.9994837, -0.000034407472, 0.0000000009303388, 0.000000000000073996365), metal::float4(0.000000000000055289107, -0.00000000000019084734, -0.000000000000035527137, 0.00000000000011057821), metal::float4(0.99938047, -0.00006880378, 0.0000000037206538, -0.00000000000008376633), metal::float4(0.000000000000054845017, -0.00000000000017730262, -0.000000000000035527137, 0.000000000000104360964), metal::float4(0.99924284, -0.000068788904, 0.0000000037196282, -0.00000000000008493206), metal::float4(0.000000000000054400928, -0.00000000000017497115, -0.00000000000003419487, 0.0000000000001030287), metal::float4(0.99910533, -0.000068774025, 0.0000000037186056, -0.00000000000007971401), metal::float4(0.00000000000005107026, -0.00000000000018074431, -0.000000000000032418512, 0.000000000000104805054), metal::float4(0.99896777, -0.00006875915, 0.0000000037175791, -0.00000000000007582823), metal::float4(0.000000000000056621374, -0.00000000000019029223, -0.000000000000035527137, 0.0000000000001110223), metal::float4(0.99876153, -0.0001374737, 0.000000014864249, -0.0000000000012666534), metal::float4(0.000000000000052402527, -0.00000000000019473312, -0.00000000000003375078, 0.00000000000011279866), metal::float4(0.99848664, -0.00013741427, 0.000000014856064, -0.0000000000012739254), metal::float4(0.000000000000055289107, -0.00000000000018085533, -0.000000000000035083048, 0.00000000000010613732), metal::float4(0.99821186, -0.00013735486, 0.000000014847887, -0.0000000000012725376), metal::float4(0.000000000000050404125, -0.00000000000018096635, -0.000000000000031974423, 0.00000000000010569323), metal::float4(0.9979372, -0.00013729549, 0.000000014839712, -0.0000000000012732593), metal::float4(0.0000000000000577316, -0.00000000000018152146, -0.000000000000036859404, 0.0000000000001070255), metal::float4(0.99752545, -0.00027441297, 0.000000059309926, -0.000000000010789258), metal::float4(0.000000000000051736393, -0.00000000000018762769, -0.000000000000031974423, 0.000000000000109245946), metal::float4(0.9969769, -0.00027417587, 0.000000059244666, -0.000000000010777879), metal::float4(0.00000000000005595524, -0.00000000000018329782, -0.000000000000035083048, 0.0000000000001070255), metal::float4(0.9964288, -0.00027393902, 0.000000059179495, -0.0000000000107598375), metal::float4(0.00000000000005795364, -0.00000000000019095836, -0.000000000000035971226, 0.00000000000011191048), metal::float4(0.99588114, -0.00027370243, 0.00000005911441, -0.000000000010746071), metal::float4(0.000000000000058619776, -0.00000000000018851587, -0.000000000000036415315, 0.000000000000109245946), metal::float4(0.99506056, -0.0005466961, 0.00000023606782, -0.00000000008645806), metal::float4(0.00000000000008104628, -0.00000000000019739765, -0.00000000000003375078, 0.00000000000011457502), metal::float4(0.9939681, -0.0005457528, 0.00000023554915, -0.000000000086238516), metal::float4(0.000000000000079269924, -0.0000000000001881828, -0.00000000000003330669, 0.000000000000108801856), metal::float4(0.99287754, -0.00054481166, 0.00000023503182, -0.0000000000860223), metal::float4(0.00000000000008326673, -0.00000000000017630342, -0.000000000000035083048, 0.0000000000001030287), metal::float4(0.99178886, -0.00054387253, 0.00000023451582, -0.000000000085797314), metal::float4(0.00000000000008726353, -0.00000000000018129942, -0.00000000000003863576, 0.00000000000010613732), metal::float4(0.99015933, -0.0010849356, 0.00000093497744, -0.0000000006843407), metal::float4(0.0000000000004958256, -0.00000000000018651747, -0.00000000000003375078, 0.00000000000010835777), metal::float4(0.9879932, -0.0010812038, 0.00000093088147, -0.00000000068081535), metal::float4(0.0000000000004967138, -0.0000000000001757483, -0.000000000000035971226, 0.000000000000103472786), metal::float4(0.98583454, -0.0010774885, 0.0000009268066, -0.00000000067730505), metal::float4(0.00000000000049449334, -0.00000000000016886492, -0.000000000000036415315, 0.000000000000099031894), metal::float4(0.9836832, -0.0010737894, 0.00000092275275, -0.0000000006738057), metal::float4(0.0000000000004898304, -0.00000000000018474111, -0.000000000000035083048, 0.00000000000010835777), metal::float4(0.9804702, -0.002136542, 0.0000036668446, -0.000000005349492), metal::float4(0.0000000000069506623, -0.00000000000018463009, -0.000000000000030642155, 0.000000000000103472786), metal::float4(0.9762117, -0.0021219386, 0.000003634912, -0.000000005294606), metal::float4(0.0000000000068760553, -0.00000000000016997515, -0.00000000000003463896, 0.00000000000009636736), metal::float4(0.9719823, -0.0021074624, 0.000003603307, -0.0000000052403415), metal::float4(0.0000000000067961192, -0.00000000000017919, -0.00000000000003419487, 0.00000000000010036416), metal::float4(0.9677818, -0.0020931116, 0.0000035720257, -0.0000000051867053), metal::float4(0.00000000000672018, -0.00000000000018951507, -0.000000000000035527137, 0.00000000000010524914), metal::float4(0.96153444, -0.0041436376, 0.0000141028095, -0.000000040860034), metal::float4(0.000000000104839026, -0.00000000000040389914, -0.000000000000030198066, 0.00000000000009503509), metal::float4(0.9533033, -0.0040877135, 0.0000138601445, -0.00000004003137), metal::float4(0.00000000010243628, -0.00000000000040412118, -0.0000000000000328626, 0.000000000000097699626), metal::float4(0.9451829, -0.00403275, 0.000013622393, -0.00000003922171), metal::float4(0.00000000010009482, -0.00000000000039857007, -0.00000000000003463896, 0.000000000000098587805), metal::float4(0.93717164, -0.003978728, 0.0000133894455, -0.000000038430567), metal::float4(0.00000000009780243, -0.00000000000038902215, -0.000000000000029309888, 0.00000000000009592327), metal::float4(0.9253549, -0.007798837, 0.00005219515, -0.00000029822098), metal::float4(0.0000000015110095, -0.000000000007114087, -0.0000000000000017763568, 0.00000000000009681145), metal::float4(0.90996367, -0.007593587, 0.00005044154, -0.0000002864066), metal::float4(0.0000000014432613, -0.0000000000067774675, -0.0000000000000053290705, 0.00000000000010214052), metal::float4(0.89497596, -0.007395212, 0.000048757214, -0.0000002751207), metal::float4(0.0000000013788544, -0.0000000000064440675, -0.0000000000000057731597, 0.00000000000009636736), metal::float4(0.8803784, -0.007203441, 0.000047139085, -0.00000026433727), metal::float4(0.0000000013176158, -0.000000000006128653, -0.000000000000006661338, 0.000000000000092370556), metal::float4(0.8591853, -0.013855208, 0.00017931846, -0.0000019924057), metal::float4(0.000000019700584, -0.00000000017741708, 0.0000000000014441781, 0.000000000000082156504), metal::float4(0.8321765, -0.013161226, 0.000167823, -0.0000018416622), metal::float4(0.000000018013315, -0.00000000016064183, 0.0000000000012949641, 0.0000000000000741629), metal::float4(0.8065109, -0.01251147, 0.00015719283, -0.0000017037701), metal::float4(0.000000016484886, -0.00000000014560297, 0.0000000000011577406, 0.00000000000007771561), metal::float4(0.78210336, -0.0119026285, 0.00014735448, -0.0000015775245), metal::float4(0.00000001509912, -0.00000000013207224, 0.0000000000010387247, 0.00000000000007149836), metal::float4(0.7476803, -0.022119032, 0.000535751, -0.000011261245), metal::float4(0.00000021210928, -0.0000000036533685, 0.000000000058341776, -0.0000000000007904788), metal::float4(0.7054984, -0.020104656, 0.0004729953, -0.000009701633), metal::float4(0.00000017884639, -0.0000000030213583, 0.00000000004739409, -0.0000000000006177281), metal::float4(0.6671063, -0.018323604, 0.00041884705, -0.000008384501), metal::float4(0.00000015129326, -0.0000000025070404, 0.00000000003863443, -0.00000000000048361315), metal::float4(0.6320697, -0.016744182, 0.00037197946, -0.0000072685484), metal::float4(0.00000012839418, -0.0000000020870798, 0.000000000031593617, -0.00000000000038458126), metal::float4(0.5849986, -0.029390983, 0.0012518741, -0.000047198217), metal::float4(0.0000016154092, -0.000000051030575, 0.0000000015075681, -0.000000000041826098), metal::float4(0.53087085, -0.024901982, 0.0010037073, -0.00003609688), metal::float4(0.000001184846, -0.000000036036894, 0.0000000010280106, -0.000000000027595037), metal::float4(0.48481083, -0.021285098, 0.0008129084, -0.000027909606), metal::float4(0.00000087906886, -0.000000025752737, 0.0000000007096015, -0.000000000018429702), metal::float4(0.44528228, -0.018342182, 0.0006646467, -0.000021803336), metal::float4(0.0000006593681, -0.000000018613841, 0.00000000049558735, -0.0000000000124527055), metal::float4(0.39569807, -0.029757312, 0.0019981607, -0.00012264443), metal::float4(0.000006987141, -0.00000037349582, 0.000000018967754, -0.00000000091232955), metal::float4(0.3432959, -0.023039434, 0.0014040956, -0.00007910815), metal::float4(0.0000041711164, -0.00000020765906, 0.0000000098661594, -0.0000000004460312), metal::float4(0.3022612, -0.018253779, 0.0010150324, -0.00005269123), metal::float4(0.0000025784761, -0.00000011981767, 0.0000000053355205, -0.00000000022702906), metal::float4(0.26942998, -0.01475209, 0.0007523223, -0.000036117242), metal::float4(0.0000016450233, -0.00000007151112, 0.00000000299032, -0.00000000011994128), metal::float4(0.23108725, -0.022121625, 0.0019995393, -0.0001719072), metal::float4(0.000014136136, -0.0000011168833, 0.00000008599324, -0.0000000063321353), metal::float4(0.19366209, -0.01580941, 0.0012349121, -0.00009272403), metal::float4(0.000006716945, -0.0000004708829, 0.000000032301084, -0.0000000021350468), metal::float4(0.16633534, -0.0117998505, 0.0008085807, -0.00005367924), metal::float4(0.000003460897, -0.00000021716717, 0.000000013379374, -0.0000000007990484), metal::float4(0.14558972, -0.009114064, 0.0005549222, -0.000032926295), metal::float4(0.0000019070969, -0.00000010798676, 0.0000000060202017, -0.00000000032691727), metal::float4(0.1224848, -0.013007964, 0.0013532817, -0.00013807204), metal::float4(0.000013827661, -0.0000013608255, 0.00000013408695, -0.000000012762786), metal::float4(0.10096222, -0.008897383, 0.0007727532, -0.00006618298), metal::float4(0.0000055922324, -0.00000046646701, 0.000000038935426, -0.000000003167861), metal::float4(0.08580567, -0.006452728, 0.00048005197, -0.000035342062), metal::float4(0.0000025755642, -0.00000018585855, 0.0000000134171385, -0.0000000009498649), metal::float4(0.074573696, -0.0048868856, 0.00031760236, -0.000020475041), metal::float4(0.0000013095655, -0.00000008311601, 0.0000000052764815, -0.00000000032987502), metal::float4(0.062307723, -0.0068401345, 0.0007465146, -0.000081003855), metal::float4(0.00000873851, -0.00000093759945, 0.00000010234092, -0.000000010859012), metal::float4(0.051080596, -0.0046060826, 0.00041368822, -0.00003700841), metal::float4(0.0000032976134, -0.00000029272368, 0.000000026292172, -0.000000002315999), metal::float4(0.04327192, -0.0033091987, 0.00025233987, -0.00001918695), metal::float4(0.0000014547079, -0.00000010998697, 0.000000008387229, -0.00000000063057826), metal::float4(0.037529606, -0.0024909754, 0.00016497479, -0.0000109024595), metal::float4(0.00000071892913, -0.00000004730736, 0.000000003133176, -0.00000000020528737), metal::float4(0.031295717, -0.0034666515, 0.0003834194, -0.000042342763), metal::float4(0.000004668181, -0.00000051397853, 0.000000057898873, -0.000000006355341), metal::float4(0.02561857, -0.0023241737, 0.0002106384, -0.000019070545), metal::float4(0.0000017246861, -0.00000015583068, 0.000000014297796, -0.0000000012891967), metal::float4(0.021683585, -0.0016655098, 0.00012783332, -0.000009804431), metal::float4(0.0000007513878, -0.000000057545, 0.0000000044559494, -0.00000000034075398), metal::float4(0.018795889, -0.0012516708, 0.000083306186, -0.0000055414653), metal::float4(0.00000036840203, -0.000000024478858, 0.0000000016400711, -0.00000000010885354)}};
-    type_7 MS_BK_ERFC_RATIO = type_7 {{metal::float4(0.9998783, -0.000013520655, 0.000000000116372106, 0.000000000000089372953), metal::float4(0.000000000000054622973, -0.0000000000001831868, -0.000000000000035083048, 0.00000000000010746959), metal::float4(0.9998513, -0.000013520189, 0.00000000011636769, 0.000000000000086985974), metal::float4(0.00000000000005395684, -0.0000000000001777467, -0.00000000000003463896, 0.000000000000104360964), metal::float4(0.9998242, -0.000013519723, 0.000000000116361754, 0.00000000000009531265), metal::float4(0.000000000000056621374, -0.0000000000001926237, -0.000000000000036415315, 0.00000000000011235457), metal::float4(0.99979717, -0.000013519258, 0.00000000011635656, 0.000000000000092870156), metal::float4(0.000000000000056621374, -0.00000000000018840485, -0.000000000000035971226, 0.000000000000109690035), metal::float4(0.99975663, -0.000027037118, 0.0000000004654685, 0.0000000000000806577), metal::float4(0.000000000000056177285, -0.0000000000001761924, -0.000000000000035527137, 0.000000000000103472786), metal::float4(0.9997026, -0.000027035258, 0.0000000004654293, 0.000000000000089595), metal::float4(0.00000000000005973, -0.00000000000019295676, -0.000000000000038191672, 0.00000000000011279866), metal::float4(0.9996485, -0.000027033395, 0.0000000004653939, 0.0000000000000801581), metal::float4(0.000000000000054178884, -0.00000000000017652546, -0.00000000000003463896, 0.000000000000103916875), metal::float4(0.99959445, -0.000027031534, 0.00000000046535684, 0.0000000000000801581), metal::float4(0.00000000000005306866, -0.00000000000017652546, -0.00000000000003419487, 0.000000000000103916875), metal::float4(0.9995133, -0.000054057484, 0.0000000018612636, 0.000000000000038469228), metal::float4(0.000000000000055067062, -0.00000000000018152146, -0.000000000000035527137, 0.0000000000001070255), metal::float4(0.9994052, -0.00005405004, 0.0000000018609614, 0.00000000000003758105), metal::float4(0.000000000000055067062, -0.00000000000017952306, -0.000000000000035527137, 0.00000000000010613732), metal::float4(0.99929714, -0.000054042597, 0.0000000018606601, 0.000000000000044131365), metal::float4(0.000000000000054622973, -0.00000000000019173552, -0.000000000000035527137, 0.00000000000011235457), metal::float4(0.9991891, -0.000054035154, 0.0000000018603591, 0.00000000000004052314), metal::float4(0.000000000000051958438, -0.00000000000018540725, -0.00000000000003330669, 0.000000000000109245946), metal::float4(0.99902695, -0.000108047985, 0.000000007439686, -0.00000000000031830094), metal::float4(0.000000000000054622973, -0.00000000000017141844, -0.000000000000035083048, 0.00000000000010125234), metal::float4(0.9988109, -0.000108018234, 0.0000000074372717, -0.00000000000032190917), metal::float4(0.000000000000056621374, -0.00000000000016553425, -0.000000000000036415315, 0.000000000000098143715), metal::float4(0.9985949, -0.00010798849, 0.00000000743486, -0.00000000000031646907), metal::float4(0.000000000000054845017, -0.00000000000017352786, -0.000000000000035083048, 0.00000000000010169643), metal::float4(0.99837893, -0.00010795875, 0.0000000074324493, -0.00000000000031152858), metal::float4(0.000000000000050404125, -0.00000000000018207658, -0.000000000000031974423, 0.00000000000010658141), metal::float4(0.99805516, -0.00021582833, 0.000000029715395, -0.000000000003128331), metal::float4(0.00000000000005551115, -0.00000000000017486013, -0.000000000000035527137, 0.000000000000103472786), metal::float4(0.9976236, -0.00021570952, 0.00000002969612, -0.000000000003120837), metal::float4(0.000000000000057065463, -0.00000000000018207658, -0.000000000000035971226, 0.00000000000010658141), metal::float4(0.9971923, -0.00021559077, 0.000000029676862, -0.0000000000031179503), metal::float4(0.000000000000051292304, -0.00000000000018363089, -0.000000000000032418512, 0.00000000000010746959), metal::float4(0.99676126, -0.0002154721, 0.000000029657613, -0.0000000000031167846), metal::float4(0.00000000000005973, -0.00000000000018129942, -0.000000000000038191672, 0.00000000000010613732), metal::float4(0.9961151, -0.00043058846, 0.00000011851517, -0.000000000025533409), metal::float4(0.000000000000054622973, -0.00000000000018196555, -0.000000000000031974423, 0.0000000000001070255), metal::float4(0.9952544, -0.0004301147, 0.00000011836154, -0.00000000002549444), metal::float4(0.00000000000005750955, -0.00000000000018396396, -0.00000000000003375078, 0.00000000000010791368), metal::float4(0.9943946, -0.00042964157, 0.00000011820814, -0.0000000000254613), metal::float4(0.00000000000005750955, -0.0000000000001771916, -0.00000000000003330669, 0.000000000000104805054), metal::float4(0.9935358, -0.00042916907, 0.00000011805497, -0.000000000025424052), metal::float4(0.0000000000000577316, -0.00000000000017463808, -0.00000000000003419487, 0.00000000000010258461), metal::float4(0.99224937, -0.0008569228, 0.0000004713026, -0.00000000020354624), metal::float4(0.00000000000012922996, -0.00000000000017463808, -0.00000000000003463896, 0.00000000000010258461), metal::float4(0.9905374, -0.00085504004, 0.0000004700826, -0.00000000020295265), metal::float4(0.0000000000001298961, -0.00000000000016986412, -0.000000000000035527137, 0.00000000000010036416), metal::float4(0.9888292, -0.00085316214, 0.00000046886615, -0.00000000020235569), metal::float4(0.00000000000012811974, -0.00000000000017386093, -0.00000000000003463896, 0.00000000000010214052), metal::float4(0.98712474, -0.00085128914, 0.0000004676533, -0.00000000020176294), metal::float4(0.00000000000012834178, -0.00000000000017452706, -0.000000000000035083048, 0.0000000000001030287), metal::float4(0.9845751, -0.0016969773, 0.0000018633626, -0.0000000016076107), metal::float4(0.0000000000012352341, -0.00000000000018551827, -0.000000000000036859404, 0.000000000000108801856), metal::float4(0.9811886, -0.0016895431, 0.0000018537446, -0.0000000015982158), metal::float4(0.0000000000012265744, -0.00000000000018851587, -0.000000000000035971226, 0.000000000000109245946), metal::float4(0.9778169, -0.0016821473, 0.0000018441829, -0.0000000015888955), metal::float4(0.0000000000012161383, -0.00000000000016819879, -0.00000000000003375078, 0.000000000000098143715), metal::float4(0.97445995, -0.0016747896, 0.0000018346768, -0.0000000015796264), metal::float4(0.000000000001209477, -0.00000000000016719959, -0.00000000000003463896, 0.000000000000098587805), metal::float4(0.9694521, -0.0033276482, 0.0000072820867, -0.000000012527211), metal::float4(0.000000000018354651, -0.00000000000019839685, -0.000000000000031974423, 0.000000000000103472786), metal::float4(0.9628258, -0.0032986696, 0.0000072073603, -0.00000001238172), metal::float4(0.000000000018118618, -0.00000000000019206858, -0.000000000000031530334, 0.000000000000098587805), metal::float4(0.95625716, -0.003269988, 0.000007133501, -0.000000012238096), metal::float4(0.000000000017883695, -0.00000000000018784974, -0.000000000000029309888, 0.000000000000097699626), metal::float4(0.94974566, -0.0032416002, 0.0000070604983, -0.000000012096301), metal::float4(0.00000000001765632, -0.00000000000019806379, -0.000000000000029753977, 0.0000000000001030287), metal::float4(0.94008404, -0.006399124, 0.000027810303, -0.00000009509669), metal::float4(0.00000000027642266, -0.0000000000008895107, -0.000000000000031086245, 0.000000000000104805054), metal::float4(0.9273963, -0.006289015, 0.000027246298, -0.00000009291387), metal::float4(0.00000000026941782, -0.000000000000856093, -0.000000000000031530334, 0.00000000000009636736), metal::float4(0.9149265, -0.0061811362, 0.000026695225, -0.00000009078632), metal::float4(0.00000000026260571, -0.00000000000083555385, -0.000000000000031974423, 0.00000000000009503509), metal::float4(0.9026703, -0.0060754367, 0.000026156755, -0.00000008871252), metal::float4(0.00000000025598057, -0.00000000000082167606, -0.000000000000031974423, 0.000000000000099031894), metal::float4(0.88467705, -0.011841728, 0.000101487945, -0.00000068559564), metal::float4(0.0000000039413006, -0.00000000002022571, 0.00000000000006039613, 0.000000000000098143715), metal::float4(0.8613941, -0.0114438785, 0.00009746738, -0.0000006548533), metal::float4(0.0000000037461754, -0.000000000019134916, 0.00000000000005728751, 0.00000000000009148238), metal::float4(0.838891, -0.011061749, 0.000093626666, -0.0000006256297), metal::float4(0.0000000035615182, -0.000000000018111956, 0.000000000000053290705, 0.000000000000087041485), metal::float4(0.8171371, -0.010694638, 0.00008995695, -0.00000059784344), metal::float4(0.0000000033867338, -0.000000000017152058, 0.000000000000047073456, 0.00000000000008615331), metal::float4(0.78584695, -0.020341357, 0.00033901897, -0.0000044695416), metal::float4(0.000000050268525, -0.0000000005015497, 0.000000000004514167, 0.00000000000003996803), metal::float4(0.7464853, -0.019037347, 0.0003133691, -0.000004086745), metal::float4(0.000000045516558, -0.00000000045011284, 0.0000000000040136783, 0.000000000000047073456), metal::float4(0.7096321, -0.01783149, 0.000289906, -0.0000037399832), metal::float4(0.000000041250228, -0.0000000004043006, 0.000000000003574474, 0.000000000000046185278), metal::float4(0.6750995, -0.016715458, 0.0002684246, -0.0000034255886), metal::float4(0.000000037416495, -0.0000000003634768, 0.0000000000031872283, 0.000000000000046185278), metal::float4(0.6272794, -0.030387005, 0.0009580818, -0.000024061048), metal::float4(0.00000051801413, -0.000000009927543, 0.00000000017332358, -0.0000000000027222669), metal::float4(0.57015324, -0.026827596, 0.0008253934, -0.000020287804), metal::float4(0.0000004283978, -0.000000008065489, 0.00000000013850876, -0.0000000000021382895), metal::float4(0.5196439, -0.023756387, 0.0007133347, -0.000017162258), metal::float4(0.00000035547052, -0.0000000065749886, 0.00000000011106582, -0.000000000001677547), metal::float4(0.47485265, -0.021098126, 0.000618392, -0.000014564653), metal::float4(0.00000029592425, -0.000000005377808, 0.00000000008935852, -0.0000000000013233858), metal::float4(0.4167533, -0.035502225, 0.0020077599, -0.0000916237), metal::float4(0.000003617964, -0.00000012807482, 0.0000000041592605, -0.00000000012519785), metal::float4(0.35310093, -0.028464397, 0.0015355214, -0.00006720277), metal::float4(0.0000025549414, -0.00000008734229, 0.00000000274549, -0.00000000008015033), metal::float4(0.30181482, -0.023053482, 0.0011872437, -0.00004985952), metal::float4(0.0000018258146, -0.000000060294994, 0.0000000018349833, -0.000000000051961768), metal::float4(0.26008537, -0.018848889, 0.00092748983, -0.000037398404), metal::float4(0.0000013196806, -0.00000004211374, 0.00000000124123, -0.000000000034098946), metal::float4(0.21097384, -0.02833318, 0.0026085791, -0.00019815165), metal::float4(0.000013240014, -0.0000008032937, 0.000000045332847, -0.000000002383124), metal::float4(0.16334534, -0.019909557, 0.0016825865, -0.00011829047), metal::float4(0.000007361291, -0.00000041804822, 0.00000002216081, -0.0000000010987664), metal::float4(0.12941593, -0.014392785, 0.0011207133, -0.00007312401), metal::float4(0.0000042474107, -0.00000022617557, 0.000000011279408, -0.00000000052811067), metal::float4(0.1045896, -0.010667653, 0.00076819374, -0.00004665181), metal::float4(0.000002534995, -0.00000012680964, 0.000000005958998, -0.0000000002638087), metal::float4(0.07841912, -0.014176364, 0.0018281857, -0.00020045321), metal::float4(0.000019795682, -0.0000018097585, 0.00000015757479, -0.000000012851965), metal::float4(0.0560429, -0.008755298, 0.0009860945, -0.00009524624), metal::float4(0.000008346028, -0.00000068116896, 0.000000053103143, -0.000000003906189), metal::float4(0.04182938, -0.0057326877, 0.0005708639, -0.00004907507), metal::float4(0.00000384914, -0.00000028258418, 0.00000001986625, -0.000000001325575), metal::float4(0.03230852, -0.0039342963, 0.00035016204, -0.000027042239), metal::float4(0.0000019139986, -0.00000012730473, 0.000000008125588, -0.0000000004946015), metal::float4(0.023056017, -0.0047972575, 0.0007341793, -0.00009804619), metal::float4(0.0000120590175, -0.0000014004432, 0.00000015913854, -0.000000017034818), metal::float4(0.015770199, -0.0027393384, 0.0003519189, -0.000039650156), metal::float4(0.0000041337757, -0.00000040863492, 0.00000003944863, -0.00000000362363), metal::float4(0.011437163, -0.0017017398, 0.00018792653, -0.000018260866), metal::float4(0.0000016470873, -0.0000001412674, 0.000000011818231, -0.0000000009471726), metal::float4(0.00866178, -0.0011258711, 0.0001088732, -0.0000092847595), metal::float4(0.0000007365851, -0.000000055677763, 0.0000000041018984, -0.00000000029088262), metal::float4(0.006061911, -0.0013231621, 0.00021536356, -0.000030982304), metal::float4(0.000004154092, -0.0000005319391, 0.00000006779496, -0.0000000081705505), metal::float4(0.0040820343, -0.0007332432, 0.00009839357, -0.000011690638), metal::float4(0.0000012970188, -0.00000013763658, 0.0000000144309, -0.0000000014465321), metal::float4(0.002932701, -0.00044726077, 0.00005101198, -0.000005157015), metal::float4(0.0000004873513, -0.000000044093955, 0.0000000039244634, -0.0000000003361419), metal::float4(0.0022075695, -0.0002924102, 0.000028986162, -0.000002548597), metal::float4(0.00000020962135, -0.000000016517234, 0.000000001276658, -0.00000000009536809), metal::float4(0.00153612, -0.00033979642, 0.000056287994, -0.000008275684), metal::float4(0.0000011385838, -0.0000001502121, 0.000000019849313, -0.0000000024841724), metal::float4(0.0010298727, -0.00018667341, 0.000025351253, -0.0000030571844), metal::float4(0.00000034523006, -0.000000037393693, 0.0000000040174672, -0.00000000041333592), metal::float4(0.0007380098, -0.00011328932, 0.000013033428, -0.000001331858), metal::float4(0.0000001274904, -0.00000001170815, 0.0000000010604964, -0.0000000000925777), metal::float4(0.00055463216, -0.00007382818, 0.000007366494, -0.0000006529916), metal::float4(0.000000054233485, -0.00000000432196, 0.0000000003384992, -0.000000000025654366)}};
-    type_8 MS_BK_ERFINV_Q = type_8 {{metal::float4(3.9046016, -0.013801319, 0.000743736, -0.000054314907), metal::float4(0.0000044844564, -0.00000039593175, 0.000000037148247, -0.0000000035245051), metal::float4(3.8796005, -0.011360582, 0.00050071336, -0.000029913715), metal::float4(0.0000020206483, -0.00000014595663, 0.000000011134741, -0.0000000008638139), metal::float4(3.8586712, -0.0096619185, 0.00036021826, -0.000018206969), metal::float4(0.0000010405903, -0.000000063597454, 0.00000000409052, -0.00000000026818192), metal::float4(3.8406575, -0.008410642, 0.00027168475, -0.000011899763), metal::float4(0.00000058939276, -0.00000003121761, 0.0000000017361579, -0.000000000098363984), metal::float4(3.8175905, -0.014097435, 0.00075870205, -0.000055376688), metal::float4(0.0000045705096, -0.0000004034267, 0.00000003784378, -0.0000000035899408), metal::float4(3.7920496, -0.0116073135, 0.0005109042, -0.000030504969), metal::float4(0.0000020598447, -0.00000014874925, 0.0000000113454615, -0.00000000088002494), metal::float4(3.7706635, -0.009873917, 0.00036761994, -0.000018570187), metal::float4(0.0000010609601, -0.00000006482521, 0.0000000041686317, -0.0000000002732765), metal::float4(3.7522526, -0.008596826, 0.00027731352, -0.000012139064), metal::float4(0.00000060102127, -0.00000003182494, 0.0000000017695712, -0.00000000010026646), metal::float4(3.7286723, -0.014413081, 0.0007745885, -0.000056501816), metal::float4(0.0000046615996, -0.00000041135434, 0.000000038579007, -0.000000003659057), metal::float4(3.702556, -0.01187052, 0.00052172894, -0.000031131895), metal::float4(0.000002101361, -0.00000015170475, 0.000000011568334, -0.0000000008971881), metal::float4(3.6806822, -0.01010022, 0.00037548656, -0.000018955525), metal::float4(0.0000010825465, -0.00000006612525, 0.0000000042512838, -0.00000000027866953), metal::float4(3.6618476, -0.008795687, 0.0002832988, -0.000012393057), metal::float4(0.0000006133498, -0.0000000324683, 0.0000000018049384, -0.0000000001022773), metal::float4(3.6377184, -0.014750466, 0.00079149194, -0.000057696743), metal::float4(0.00000475823, -0.00000041975713, 0.000000039357786, -0.0000000037322554), metal::float4(3.6109867, -0.01215209, 0.00053325505, -0.000031798165), metal::float4(0.0000021454307, -0.00000015483947, 0.00000001180455, -0.000000000915346), metal::float4(3.588591, -0.010342483, 0.000383868, -0.000019365283), metal::float4(0.0000011054735, -0.00000006750487, 0.0000000043389274, -0.0000000002843752), metal::float4(3.5693026, -0.009008703, 0.0002896792, -0.000012663283), metal::float4(0.00000062645034, -0.000000033151345, 0.000000001842464, -0.00000000010441781), metal::float4(3.5445855, -0.015112158, 0.00080952386, -0.00005896887), metal::float4(0.000004860975, -0.0000004286838, 0.00000004018454, -0.0000000038099), metal::float4(3.5171936, -0.012454218, 0.0005455602, -0.000032508004), metal::float4(0.0000021923224, -0.0000001581719, 0.0000000120555015, -0.0000000009346071), metal::float4(3.4942381, -0.010602634, 0.00039282197, -0.000019802106), metal::float4(0.0000011298831, -0.00000006897236, 0.0000000044321133, -0.00000000029042546), metal::float4(3.4744618, -0.009237601, 0.0002964994, -0.000012951515), metal::float4(0.00000064040535, -0.000000033878305, 0.0000000018823698, -0.00000000010666312), metal::float4(3.4491127, -0.015501155, 0.0008288132, -0.00006032672), metal::float4(0.000004970496, -0.00000043818997, 0.000000041064304, -0.000000003892488), metal::float4(3.4210105, -0.012779471, 0.00055873464, -0.000033266275), metal::float4(0.0000022423446, -0.0000001617233, 0.000000012322719, -0.0000000009551169), metal::float4(3.3974519, -0.010882929, 0.00040241532, -0.000020269052), metal::float4(0.0000011559393, -0.000000070537226, 0.0000000045313797, -0.00000000029689673), metal::float4(3.37715, -0.009484401, 0.00030381125, -0.0000132598025), metal::float4(0.00000065531015, -0.00000003465392, 0.0000000019249136, -0.000000000109070086), metal::float4(3.3511188, -0.015920965, 0.00084950996, -0.00006178017), metal::float4(0.000005087556, -0.00000044834, 0.00000004200286, -0.000000003980542), metal::float4(3.3222501, -0.013130857, 0.0005728834, -0.000034078632), metal::float4(0.0000022958548, -0.0000001655182, 0.000000012608043, -0.0000000009770353), metal::float4(3.2980394, -0.011186014, 0.00041272625, -0.000020769668), metal::float4(0.0000011838317, -0.00000007221059, 0.0000000046374424, -0.0000000003037819), metal::float4(3.277169, -0.009751473, 0.0003116754, -0.000013590532), metal::float4(0.000000671275, -0.000000035483797, 0.0000000019704043, -0.00000000011163692), metal::float4(3.2503996, -0.016375713, 0.0008717899, -0.00006334072), metal::float4(0.000005213043, -0.00000045920837, 0.000000043006956, -0.000000004074634), metal::float4(3.2206998, -0.013511909, 0.0005881297, -0.000034951667), metal::float4(0.0000023532677, -0.00000016958528, 0.000000012913533, -0.000000001000446), metal::float4(3.1957817, -0.011514996, 0.00042384653, -0.000021308108), metal::float4(0.0000012137815, -0.000000074005264, 0.0000000047510866, -0.00000000031115022), metal::float4(3.174294, -0.010041602, 0.00032016315, -0.000013946497), metal::float4(0.00000068842894, -0.00000003637438, 0.0000000020191653, -0.00000000011440093), metal::float4(3.1467223, -0.016870238, 0.0008958599, -0.00006502186), metal::float4(0.000005347992, -0.0000004708819, 0.000000044084366, -0.000000004175549), metal::float4(3.116118, -0.013926776, 0.000604619, -0.00003589312), metal::float4(0.0000024150706, -0.00000017395772, 0.000000013241644, -0.0000000010256045), metal::float4(3.0904295, -0.011873523, 0.0004358846, -0.00002188925), metal::float4(0.000001246048, -0.00000007593623, 0.0000000048732485, -0.00000000031908698), metal::float4(3.0682685, -0.010358051, 0.00032935888, -0.000014330984), metal::float4(0.0000007069231, -0.000000037333344, 0.00000000207163, -0.00000000011734258), metal::float4(3.0398211, -0.017410206, 0.0009219652, -0.00006683949), metal::float4(0.0000054936227, -0.00000048346243, 0.00000004524427, -0.0000000042841144), metal::float4(3.0082288, -0.0143803, 0.0006225238, -0.000036912148), metal::float4(0.0000024818357, -0.00000017867475, 0.0000000135952245, -0.0000000010526833), metal::float4(2.9816978, -0.01226584, 0.00044896934, -0.000022518867), metal::float4(0.0000012809368, -0.00000007802119, 0.000000005005015, -0.00000000032763658), metal::float4(2.9588, -0.010704613, 0.00033936297, -0.000014747889), metal::float4(0.0000007269362, -0.00000003836955, 0.0000000021282425, -0.00000000012052404), metal::float4(2.929393, -0.018002173, 0.00095039775, -0.00006881249), metal::float4(0.0000056513745, -0.0000004970702, 0.00000004649744, -0.00000000440129), metal::float4(2.8967168, -0.014878061, 0.0006420499, -0.000038019614), metal::float4(0.000002554242, -0.0000001837827, 0.000000013977669, -0.0000000010819079), metal::float4(2.8692605, -0.012696815, 0.00046325443, -0.000023203835), metal::float4(0.0000013188106, -0.000000080281076, 0.000000005147651, -0.00000000033688075), metal::float4(2.8455532, -0.011085614, 0.0003502952, -0.000015201849), metal::float4(0.00000074868024, -0.000000039493628, 0.0000000021895872, -0.00000000012397017), metal::float4(2.815091, -0.018653564, 0.0009815063, -0.00007096336), metal::float4(0.000005822963, -0.0000005118478, 0.000000047856616, -0.000000004528255), metal::float4(2.7812214, -0.015426309, 0.0006634432, -0.0000392285), metal::float4(0.0000026330981, -0.00000018933653, 0.000000014392947, -0.0000000011136372), metal::float4(2.7527456, -0.013171851, 0.00047892373, -0.000023952363), metal::float4(0.0000013601024, -0.000000082740854, 0.0000000053027023, -0.00000000034688163), metal::float4(2.7281454, -0.011505804, 0.00036229877, -0.000015698415), metal::float4(0.00000077240867, -0.000000040718195, 0.0000000022563267, -0.00000000012772361), metal::float4(2.696519, -0.019372422, 0.0010157079, -0.000073319046), metal::float4(0.0000060104376, -0.00000052796565, 0.00000004933704, -0.000000004666397), metal::float4(2.6613321, -0.01603169, 0.0006869972, -0.000040554365), metal::float4(0.0000027193719, -0.00000019540201, 0.0000000148458685, -0.0000000011482246), metal::float4(2.6317303, -0.0136965765, 0.00049619644, -0.000024774296), metal::float4(0.0000014053304, -0.00000008543022, 0.000000005471989, -0.0000000003578311), metal::float4(2.606144, -0.011970042, 0.0003755443, -0.000016244237), metal::float4(0.0000007984251, -0.00000004205842, 0.000000002329264, -0.000000000131811), metal::float4(2.573231, -0.020166716, 0.0010534975, -0.000075911834), metal::float4(0.0000062162558, -0.00000054562787, 0.0000000509569, -0.0000000048173803), metal::float4(2.536589, -0.016700514, 0.0007130596, -0.000042015832), metal::float4(0.0000028142244, -0.00000020205817, 0.000000015342142, -0.0000000011860406), metal::float4(2.5057435, -0.014276106, 0.000515331, -0.000025681413), metal::float4(0.0000014551165, -0.000000088384986, 0.000000005657702, -0.00000000036982772), metal::float4(2.4790678, -0.01248253, 0.0003902321, -0.000016847269), metal::float4(0.0000008270938, -0.00000004353243, 0.0000000024093687, -0.0000000001362972), metal::float4(2.4447355, -0.02104281, 0.001095453, -0.00007878026), metal::float4(0.000006443364, -0.00000056507946, 0.000000052738095, -0.0000000049831614), metal::float4(2.4064891, -0.017437218, 0.0007420323, -0.000043635056), metal::float4(0.0000029190458, -0.00000020939954, 0.000000015888661, -0.0000000012276562), metal::float4(2.3742747, -0.014913496, 0.0005366236, -0.00002668767), metal::float4(0.0000015102039, -0.000000091648126, 0.00000000586246, -0.00000000038298698), metal::float4(2.3464022, -0.01304529, 0.00040658945, -0.000017516893), metal::float4(0.0000008588491, -0.000000045162007, 0.00000000249777, -0.00000000014122747), metal::float4(2.3105128, -0.022002447, 0.0011422209, -0.000081969505), metal::float4(0.000006695264, -0.0000005866131, 0.000000054706796, -0.0000000051661893), metal::float4(2.2705123, -0.018241411, 0.00077435584, -0.000045437824), metal::float4(0.0000030354806, -0.00000021753901, 0.000000016493642, -0.000000001273647), metal::float4(2.236806, -0.015606855, 0.00056039204, -0.000027809185), metal::float4(0.0000015714677, -0.00000009527039, 0.000000006089433, -0.00000000039760462), metal::float4(2.2076337, -0.013655325, 0.00042485518, -0.000018263856), metal::float4(0.00000089419996, -0.00000004697286, 0.0000000025958737, -0.00000000014669865), metal::float4(2.1700609, -0.023037259, 0.0011944568, -0.00008553065), metal::float4(0.0000069760285, -0.00000061057364, 0.000000056894102, -0.0000000053692695), metal::float4(2.1281753, -0.019102605, 0.00081045576, -0.000047452715), metal::float4(0.0000031654206, -0.00000022660836, 0.000000017166768, -0.000000001324767), metal::float4(2.0928764, -0.016344287, 0.00058692734, -0.000029063465), metal::float4(0.0000016399031, -0.000000099310945, 0.0000000063422583, -0.00000000041385917), metal::float4(2.0623264, -0.014299758, 0.00044523497, -0.00001909959), metal::float4(0.0000009337183, -0.000000048994558, 0.0000000027052582, -0.00000000015282353), metal::float4(2.022984, -0.024119532, 0.0012526698, -0.00008951629), metal::float4(0.000007290149, -0.0000006373527, 0.00000005933588, -0.000000005595746), metal::float4(1.979139, -0.019991564, 0.00085060863, -0.00004970783), metal::float4(0.0000033108984, -0.00000023675476, 0.000000017919117, -0.0000000013818449), metal::float4(1.942207, -0.017095732, 0.00061637646, -0.000030466854), metal::float4(0.0000017165502, -0.00000010383447, 0.0000000066250836, -0.00000000043201887), metal::float4(1.9102618, -0.014948109, 0.00046779844, -0.000020034176), metal::float4(0.0000009779849, -0.00000005125901, 0.0000000028277016, -0.00000000015964474), metal::float4(1.8691553, -0.025187917, 0.0013168737, -0.000093968345), metal::float4(0.000007641974, -0.0000006673582, 0.00000006207099, -0.0000000058492855), metal::float4(1.8233994, -0.020847276, 0.0008946555, -0.00005222205), metal::float4(0.0000034737473, -0.00000024812485, 0.000000018762261, -0.0000000014457795), metal::float4(1.7849144, -0.017800989, 0.0006485017, -0.00003202801), metal::float4(0.0000018022729, -0.000000108902384, 0.0000000069421056, -0.0000000004523848), metal::float4(1.7516758, -0.015541209, 0.0004922726, -0.000021071275), metal::float4(0.000001027437, -0.000000053794814, 0.0000000029649403, -0.00000000016729018), metal::float4(1.7089858, -0.026127469, 0.0013859146, -0.000098889126), metal::float4(0.000008034221, -0.00000070092483, 0.00000006513523, -0.0000000061335106), metal::float4(1.661593, -0.02155937, 0.00094147393, -0.000054985212), metal::float4(0.0000036547415, -0.00000026082154, 0.00000001970593, -0.0000000015174422), metal::float4(1.6218514, -0.01835404, 0.00068225386, -0.000033733508), metal::float4(0.0000018972198, -0.0000001145496, 0.0000000072964355, -0.0000000004751515), metal::float4(1.5876296, -0.015977072, 0.0005176902, -0.00002219729), metal::float4(0.0000010820094, -0.000000056613743, 0.0000000031180836, -0.00000000017583979), metal::float4(1.5438341, -0.026745113, 0.0014563905, -0.00010418113), metal::float4(0.000008464568, -0.0000007380944, 0.00000006854569, -0.0000000064507653), metal::float4(1.4954515, -0.021947289, 0.0009881904, -0.000057918332), metal::float4(0.000003851704, -0.00000027480246, 0.000000020751955, -0.000000001597166), metal::float4(1.4551003, -0.018584935, 0.0007151847, -0.000035519966), metal::float4(0.0000019996733, -0.00000012073113, 0.000000007687485, -0.00000000050042903), metal::float4(1.4205356, -0.016094834, 0.00054194545, -0.000023360897), metal::float4(0.0000011403876, -0.00000005968042, 0.000000003286317, -0.00000000018528468), metal::float4(1.3765777, -0.026741873, 0.0015214762, -0.00010953786), metal::float4(0.0000089188425, -0.00000077814497, 0.000000072265436, -0.000000006799411), metal::float4(1.3284252, -0.021736078, 0.0010295288, -0.000060804487), metal::float4(0.0000040558825, -0.00000028966952, 0.000000021881299, -0.0000000016840769), metal::float4(1.2886416, -0.018237479, 0.0007431373, -0.00003722715), metal::float4(0.0000021039357, -0.000000127216, 0.000000008105257, -0.00000000052774496), metal::float4(1.2548714, -0.015653165, 0.00056172244, -0.00002443957), metal::float4(0.0000011986928, -0.00000006285337, 0.0000000034641143, -0.0000000001954179), metal::float4(1.2123915, -0.025669008, 0.0015716114, -0.000114269154), metal::float4(0.000009359751, -0.00000081871406, 0.0000000761339, -0.0000000071681012), metal::float4(1.1665534, -0.020507988, 0.0010593316, -0.000063177686), metal::float4(0.000004246493, -0.00000030429752, 0.00000002302945, -0.0000000017743171), metal::float4(1.1293287, -0.016913543, 0.0007623282, -0.00003851879), metal::float4(0.0000021974927, -0.0000001334076, 0.00000000852023, -0.0000000005555725), metal::float4(1.0982742, -0.0142653985, 0.00057499664, -0.000025177267), metal::float4(0.0000012489646, -0.000000065789614, 0.0000000036365875, -0.00000000020552937), metal::float4(1.0600606, -0.022765124, 0.0016065057, -0.000116895484), metal::float4(0.000009718163, -0.00000085442923, 0.00000007975475, -0.000000007525863), metal::float4(1.0201536, -0.017486874, 0.0010848793, -0.00006394562), metal::float4(0.0000043910923, -0.0000003162387, 0.000000024051475, -0.000000001858278), metal::float4(0.9890693, -0.013795619, 0.00078597997, -0.00003848282), metal::float4(0.0000022658453, -0.00000013800106, 0.000000008871655, -0.00000000058034155), metal::float4(0.9643464, -0.01105056, 0.0006002069, -0.000024733703), metal::float4(0.0000012869389, -0.00000006768162, 0.000000003776423, -0.00000000021408253), metal::float4(0.93601894, -0.01600197, 0.0017300105, -0.00011061144), metal::float4(0.000010079049, -0.0000008684125, 0.0000000826543, -0.0000000077986275), metal::float4(0.910188, -0.01014341, 0.0012541759, -0.00005498795), metal::float4(0.0000047320996, -0.0000003095109, 0.000000025183692, -0.0000000018972703), metal::float4(0.8945452, -0.0056558223, 0.0010179977, -0.000026360902), metal::float4(0.0000027362382, -0.00000011889169, 0.000000009967572, -0.0000000005541012), metal::float4(0.8871352, -0.0018204233, 0.0009180593, -0.000007889442), metal::float4(0.0000020247833, -0.000000031811947, 0.000000005627185, -0.0000000001276832)}};
-    type_9 MS_BK_ERFINV_W = type_9 {{metal::float4(4.0847907, 0.23805167, -0.0065722, 0.00035707987), metal::float4(-0.00002402215, 0.0000017950236, -0.00000014368759, 0.0000000115537375), metal::float4(4.537127, 0.21539979, -0.004890394, 0.00021908246), metal::float4(-0.0000121752, 0.00000075388596, -0.000000050288303, 0.000000003464292), metal::float4(4.9499445, 0.19812965, -0.003817813, 0.00014543012), metal::float4(-0.0000068792533, 0.00000036283808, -0.000000020583688, 0.0000000012122374), metal::float4(5.331996, 0.18440899, -0.0030855183, 0.00010220255), metal::float4(-0.000004207019, 0.00000019318979, -0.0000000095291295, 0.0000000004892762), metal::float4(5.8599133, 0.33653504, -0.009400734, 0.0005206732), metal::float4(-0.000035867182, 0.000002757981, -0.00000023015748, 0.000000019792743), metal::float4(6.4990478, 0.30421674, -0.0069607254, 0.0003162562), metal::float4(-0.00001788632, 0.0000011297641, -0.00000007708788, 0.0000000054481575), metal::float4(7.081914, 0.27967435, -0.0054173684, 0.00020858926), metal::float4(-0.0000100035295, 0.00000053599996, -0.00000003094365, 0.0000000018562574), metal::float4(7.621117, 0.26022553, -0.0043693497, 0.00014594554), metal::float4(-0.0000060745874, 0.0000002825655, -0.000000014139069, 0.00000000073704953), metal::float4(8.365978, 0.47478202, -0.0132863475, 0.00074028183), metal::float4(-0.0000514196, 0.0000039930333, -0.00000033704123, 0.000000029332409), metal::float4(9.267606, 0.42914096, -0.009823337, 0.00044806645), metal::float4(-0.000025490534, 0.0000016217386, -0.00000011159105, 0.000000007958128), metal::float4(10.089817, 0.39452025, -0.007639068, 0.00029490137), metal::float4(-0.000014204039, 0.0000007652497, -0.000000044464695, 0.000000002686253), metal::float4(10.850455, 0.36710206, -0.0061583975, 0.00020605928), metal::float4(-0.000008604421, 0.00000040195354, -0.000000020215943, 0.0000000010598242)}};
     uint _e2 = ms_k_index(id_2, groups_2, ms_in, _buffer_sizes);
-    if (_e2 == naga_div(1 + (_buffer_sizes.size4 - 0 - 16) / 16, MS_K_IN)) {
+    if (_e2 == naga_div(1 + (_buffer_sizes.size1 - 0 - 16) / 16, MS_K_IN)) {
         return;
     }
     metal::float4 r0_2 = ms_in[_e2 * MS_K_IN];
     metal::float4 _e19 = ms_in[(_e2 * MS_K_IN) + 1u];
-    metal::float3 wo_39 = _e19.xyz;
-    MsSample _e25 = ms_sample(MsMicrofacet {MS_NDF_BECKMANN, {}, r0_2.xy}, wo_39, r0_2.zw, MS_BK_ERFCX, MS_BK_ERFC_RATIO, MS_BK_ERFINV_Q, MS_BK_ERFINV_W);
+    metal::float3 wo_43 = _e19.xyz;
+    MsSample _e25 = ms_sample(MsMicrofacet {MS_NDF_BECKMANN, {}, r0_2.xy}, wo_43, r0_2.zw, ms_tables, _buffer_sizes);
     MsSample _e28 = ms_beckmann_sample_dcos(r0_2.xy, r0_2.zw);
     ms_out[_e2 * MS_K_OUT] = metal::float4(_e25.wm, _e25.pdf);
     ms_out[(_e2 * MS_K_OUT) + 1u] = metal::float4(_e28.wm, _e28.pdf);
@@ -2647,18 +3736,18 @@ struct ms_k_ggx_sampleInput {
 kernel void ms_k_ggx_sample(
   metal::uint3 id_3 [[thread_position_in_grid]]
 , metal::uint3 groups_3 [[threadgroups_per_grid]]
-, device type_10 const& ms_in [[user(fake0)]]
-, device type_10& ms_out [[user(fake0)]]
+, device type_7 const& ms_in [[user(fake0)]]
+, device type_7& ms_out [[user(fake0)]]
 , constant _mslBufferSizes& _buffer_sizes [[user(fake0)]]
 ) {
     uint _e2 = ms_k_index(id_3, groups_3, ms_in, _buffer_sizes);
-    if (_e2 == naga_div(1 + (_buffer_sizes.size4 - 0 - 16) / 16, MS_K_IN)) {
+    if (_e2 == naga_div(1 + (_buffer_sizes.size1 - 0 - 16) / 16, MS_K_IN)) {
         return;
     }
     metal::float4 r0_3 = ms_in[_e2 * MS_K_IN];
     metal::float4 _e19 = ms_in[(_e2 * MS_K_IN) + 1u];
-    metal::float3 wo_40 = _e19.xyz;
-    MsSample _e23 = ms_ggx_sample(wo_40, r0_3.xy, r0_3.zw);
+    metal::float3 wo_44 = _e19.xyz;
+    MsSample _e23 = ms_ggx_sample(wo_44, r0_3.xy, r0_3.zw);
     MsSample _e26 = ms_ggx_sample_dcos(r0_3.xy, r0_3.zw);
     ms_out[_e2 * MS_K_OUT] = metal::float4(_e23.wm, _e23.pdf);
     ms_out[(_e2 * MS_K_OUT) + 1u] = metal::float4(_e26.wm, _e26.pdf);
@@ -2671,22 +3760,22 @@ struct ms_k_ggx_boundedInput {
 kernel void ms_k_ggx_bounded(
   metal::uint3 id_4 [[thread_position_in_grid]]
 , metal::uint3 groups_4 [[threadgroups_per_grid]]
-, device type_10 const& ms_in [[user(fake0)]]
-, device type_10& ms_out [[user(fake0)]]
+, device type_7 const& ms_in [[user(fake0)]]
+, device type_7& ms_out [[user(fake0)]]
 , constant _mslBufferSizes& _buffer_sizes [[user(fake0)]]
 ) {
     uint _e2 = ms_k_index(id_4, groups_4, ms_in, _buffer_sizes);
-    if (_e2 == naga_div(1 + (_buffer_sizes.size4 - 0 - 16) / 16, MS_K_IN)) {
+    if (_e2 == naga_div(1 + (_buffer_sizes.size1 - 0 - 16) / 16, MS_K_IN)) {
         return;
     }
     metal::float4 r0_4 = ms_in[_e2 * MS_K_IN];
     metal::float4 _e19 = ms_in[(_e2 * MS_K_IN) + 1u];
-    metal::float3 wo_41 = _e19.xyz;
+    metal::float3 wo_45 = _e19.xyz;
     metal::float4 _e27 = ms_in[(_e2 * MS_K_IN) + 2u];
-    metal::float3 wi_36 = _e27.xyz;
-    MsSample _e31 = ms_ggx_sample_bounded(wo_41, r0_4.xy, r0_4.zw);
+    metal::float3 wi_40 = _e27.xyz;
+    MsSample _e31 = ms_ggx_sample_bounded(wo_45, r0_4.xy, r0_4.zw);
     ms_out[_e2 * MS_K_OUT] = metal::float4(_e31.wm, _e31.pdf);
-    float _e46 = ms_ggx_pdf_bounded_reflection(wo_41, wi_36, r0_4.xy);
+    float _e46 = ms_ggx_pdf_bounded_reflection(wo_45, wi_40, r0_4.xy);
     ms_out[(_e2 * MS_K_OUT) + 1u] = metal::float4(_e46, 0.0, 0.0, 0.0);
     return;
 }
@@ -2697,23 +3786,23 @@ struct ms_k_fresnelInput {
 kernel void ms_k_fresnel(
   metal::uint3 id_5 [[thread_position_in_grid]]
 , metal::uint3 groups_5 [[threadgroups_per_grid]]
-, device type_10 const& ms_in [[user(fake0)]]
-, device type_10& ms_out [[user(fake0)]]
+, device type_7 const& ms_in [[user(fake0)]]
+, device type_7& ms_out [[user(fake0)]]
 , constant _mslBufferSizes& _buffer_sizes [[user(fake0)]]
 ) {
     uint _e2 = ms_k_index(id_5, groups_5, ms_in, _buffer_sizes);
-    if (_e2 == naga_div(1 + (_buffer_sizes.size4 - 0 - 16) / 16, MS_K_IN)) {
+    if (_e2 == naga_div(1 + (_buffer_sizes.size1 - 0 - 16) / 16, MS_K_IN)) {
         return;
     }
-    float c_16 = ms_in[(_e2 * MS_K_IN) + 1u].z;
+    float c_20 = ms_in[(_e2 * MS_K_IN) + 1u].z;
     MsConductor _e16 = ms_k_conductor(_e2, ms_in, _buffer_sizes);
     MsFresnel fr_2 = _e16.fresnel;
-    float _e24 = ms_fresnel_dielectric(c_16, _e16.fresnel.a.x);
-    float _e29 = ms_fresnel_conductor(c_16, _e16.fresnel.a.x, _e16.fresnel.b.x);
-    float _e32 = ms_fresnel_schlick(c_16, _e16.fresnel.a.x);
-    float _e37 = ms_fresnel_f82_tint(c_16, _e16.fresnel.a.x, _e16.fresnel.b.x);
+    float _e24 = ms_fresnel_dielectric(c_20, _e16.fresnel.a.x);
+    float _e29 = ms_fresnel_conductor(c_20, _e16.fresnel.a.x, _e16.fresnel.b.x);
+    float _e32 = ms_fresnel_schlick(c_20, _e16.fresnel.a.x);
+    float _e37 = ms_fresnel_f82_tint(c_20, _e16.fresnel.a.x, _e16.fresnel.b.x);
     ms_out[_e2 * MS_K_OUT] = metal::float4(_e24, _e29, _e32, _e37);
-    metal::float3 _e45 = ms_fresnel_eval(fr_2, c_16);
+    metal::float3 _e45 = ms_fresnel_eval(fr_2, c_20);
     ms_out[(_e2 * MS_K_OUT) + 1u] = metal::float4(_e45, 0.0);
     return;
 }
@@ -2724,24 +3813,24 @@ struct ms_k_conductor_evalInput {
 kernel void ms_k_conductor_eval(
   metal::uint3 id_6 [[thread_position_in_grid]]
 , metal::uint3 groups_6 [[threadgroups_per_grid]]
-, device type_10 const& ms_in [[user(fake0)]]
-, device type_10& ms_out [[user(fake0)]]
+, device type_7 const& ms_tables [[user(fake0)]]
+, device type_7 const& ms_in [[user(fake0)]]
+, device type_7& ms_out [[user(fake0)]]
 , constant _mslBufferSizes& _buffer_sizes [[user(fake0)]]
 ) {
-    type_7 MS_BK_ERFC_RATIO = type_7 {{metal::float4(0.9998783, -0.000013520655, 0.000000000116372106, 0.000000000000089372953), metal::float4(0.000000000000054622973, -0.0000000000001831868, -0.000000000000035083048, 0.00000000000010746959), metal::float4(0.9998513, -0.000013520189, 0.00000000011636769, 0.000000000000086985974), metal::float4(0.00000000000005395684, -0.0000000000001777467, -0.00000000000003463896, 0.000000000000104360964), metal::float4(0.9998242, -0.000013519723, 0.000000000116361754, 0.00000000000009531265), metal::float4(0.000000000000056621374, -0.0000000000001926237, -0.000000000000036415315, 0.00000000000011235457), metal::float4(0.99979717, -0.000013519258, 0.00000000011635656, 0.000000000000092870156), metal::float4(0.000000000000056621374, -0.00000000000018840485, -0.000000000000035971226, 0.000000000000109690035), metal::float4(0.99975663, -0.000027037118, 0.0000000004654685, 0.0000000000000806577), metal::float4(0.000000000000056177285, -0.0000000000001761924, -0.000000000000035527137, 0.000000000000103472786), metal::float4(0.9997026, -0.000027035258, 0.0000000004654293, 0.000000000000089595), metal::float4(0.00000000000005973, -0.00000000000019295676, -0.000000000000038191672, 0.00000000000011279866), metal::float4(0.9996485, -0.000027033395, 0.0000000004653939, 0.0000000000000801581), metal::float4(0.000000000000054178884, -0.00000000000017652546, -0.00000000000003463896, 0.000000000000103916875), metal::float4(0.99959445, -0.000027031534, 0.00000000046535684, 0.0000000000000801581), metal::float4(0.00000000000005306866, -0.00000000000017652546, -0.00000000000003419487, 0.000000000000103916875), metal::float4(0.9995133, -0.000054057484, 0.0000000018612636, 0.000000000000038469228), metal::float4(0.000000000000055067062, -0.00000000000018152146, -0.000000000000035527137, 0.0000000000001070255), metal::float4(0.9994052, -0.00005405004, 0.0000000018609614, 0.00000000000003758105), metal::float4(0.000000000000055067062, -0.00000000000017952306, -0.000000000000035527137, 0.00000000000010613732), metal::float4(0.99929714, -0.000054042597, 0.0000000018606601, 0.000000000000044131365), metal::float4(0.000000000000054622973, -0.00000000000019173552, -0.000000000000035527137, 0.00000000000011235457), metal::float4(0.9991891, -0.000054035154, 0.0000000018603591, 0.00000000000004052314), metal::float4(0.000000000000051958438, -0.00000000000018540725, -0.00000000000003330669, 0.000000000000109245946), metal::float4(0.99902695, -0.000108047985, 0.000000007439686, -0.00000000000031830094), metal::float4(0.000000000000054622973, -0.00000000000017141844, -0.000000000000035083048, 0.00000000000010125234), metal::float4(0.9988109, -0.000108018234, 0.0000000074372717, -0.00000000000032190917), metal::float4(0.000000000000056621374, -0.00000000000016553425, -0.000000000000036415315, 0.000000000000098143715), metal::float4(0.9985949, -0.00010798849, 0.00000000743486, -0.00000000000031646907), metal::float4(0.000000000000054845017, -0.00000000000017352786, -0.000000000000035083048, 0.00000000000010169643), metal::float4(0.99837893, -0.00010795875, 0.0000000074324493, -0.00000000000031152858), metal::float4(0.000000000000050404125, -0.00000000000018207658, -0.000000000000031974423, 0.00000000000010658141), metal::float4(0.99805516, -0.00021582833, 0.000000029715395, -0.000000000003128331), metal::float4(0.00000000000005551115, -0.00000000000017486013, -0.000000000000035527137, 0.000000000000103472786), metal::float4(0.9976236, -0.00021570952, 0.00000002969612, -0.000000000003120837), metal::float4(0.000000000000057065463, -0.00000000000018207658, -0.000000000000035971226, 0.00000000000010658141), metal::float4(0.9971923, -0.00021559077, 0.000000029676862, -0.0000000000031179503), metal::float4(0.000000000000051292304, -0.00000000000018363089, -0.000000000000032418512, 0.00000000000010746959), metal::float4(0.99676126, -0.0002154721, 0.000000029657613, -0.0000000000031167846), metal::float4(0.00000000000005973, -0.00000000000018129942, -0.000000000000038191672, 0.00000000000010613732), metal::float4(0.9961151, -0.00043058846, 0.00000011851517, -0.000000000025533409), metal::float4(0.000000000000054622973, -0.00000000000018196555, -0.000000000000031974423, 0.0000000000001070255), metal::float4(0.9952544, -0.0004301147, 0.00000011836154, -0.00000000002549444), metal::float4(0.00000000000005750955, -0.00000000000018396396, -0.00000000000003375078, 0.00000000000010791368), metal::float4(0.9943946, -0.00042964157, 0.00000011820814, -0.0000000000254613), metal::float4(0.00000000000005750955, -0.0000000000001771916, -0.00000000000003330669, 0.000000000000104805054), metal::float4(0.9935358, -0.00042916907, 0.00000011805497, -0.000000000025424052), metal::float4(0.0000000000000577316, -0.00000000000017463808, -0.00000000000003419487, 0.00000000000010258461), metal::float4(0.99224937, -0.0008569228, 0.0000004713026, -0.00000000020354624), metal::float4(0.00000000000012922996, -0.00000000000017463808, -0.00000000000003463896, 0.00000000000010258461), metal::float4(0.9905374, -0.00085504004, 0.0000004700826, -0.00000000020295265), metal::float4(0.0000000000001298961, -0.00000000000016986412, -0.000000000000035527137, 0.00000000000010036416), metal::float4(0.9888292, -0.00085316214, 0.00000046886615, -0.00000000020235569), metal::float4(0.00000000000012811974, -0.00000000000017386093, -0.00000000000003463896, 0.00000000000010214052), metal::float4(0.98712474, -0.00085128914, 0.0000004676533, -0.00000000020176294), metal::float4(0.00000000000012834178, -0.00000000000017452706, -0.000000000000035083048, 0.0000000000001030287), metal::float4(0.9845751, -0.0016969773, 0.0000018633626, -0.0000000016076107), metal::float4(0.0000000000012352341, -0.00000000000018551827, -0.000000000000036859404, 0.000000000000108801856), metal::float4(0.9811886, -0.0016895431, 0.0000018537446, -0.0000000015982158), metal::float4(0.0000000000012265744, -0.00000000000018851587, -0.000000000000035971226, 0.000000000000109245946), metal::float4(0.9778169, -0.0016821473, 0.0000018441829, -0.0000000015888955), metal::float4(0.0000000000012161383, -0.00000000000016819879, -0.00000000000003375078, 0.000000000000098143715), metal::float4(0.97445995, -0.0016747896, 0.0000018346768, -0.0000000015796264), metal::float4(0.000000000001209477, -0.00000000000016719959, -0.00000000000003463896, 0.000000000000098587805), metal::float4(0.9694521, -0.0033276482, 0.0000072820867, -0.000000012527211), metal::float4(0.000000000018354651, -0.00000000000019839685, -0.000000000000031974423, 0.000000000000103472786), metal::float4(0.9628258, -0.0032986696, 0.0000072073603, -0.00000001238172), metal::float4(0.000000000018118618, -0.00000000000019206858, -0.000000000000031530334, 0.000000000000098587805), metal::float4(0.95625716, -0.003269988, 0.000007133501, -0.000000012238096), metal::float4(0.000000000017883695, -0.00000000000018784974, -0.000000000000029309888, 0.000000000000097699626), metal::float4(0.94974566, -0.0032416002, 0.0000070604983, -0.000000012096301), metal::float4(0.00000000001765632, -0.00000000000019806379, -0.000000000000029753977, 0.0000000000001030287), metal::float4(0.94008404, -0.006399124, 0.000027810303, -0.00000009509669), metal::float4(0.00000000027642266, -0.0000000000008895107, -0.000000000000031086245, 0.000000000000104805054), metal::float4(0.9273963, -0.006289015, 0.000027246298, -0.00000009291387), metal::float4(0.00000000026941782, -0.000000000000856093, -0.000000000000031530334, 0.00000000000009636736), metal::float4(0.9149265, -0.0061811362, 0.000026695225, -0.00000009078632), metal::float4(0.00000000026260571, -0.00000000000083555385, -0.000000000000031974423, 0.00000000000009503509), metal::float4(0.9026703, -0.0060754367, 0.000026156755, -0.00000008871252), metal::float4(0.00000000025598057, -0.00000000000082167606, -0.000000000000031974423, 0.000000000000099031894), metal::float4(0.88467705, -0.011841728, 0.000101487945, -0.00000068559564), metal::float4(0.0000000039413006, -0.00000000002022571, 0.00000000000006039613, 0.000000000000098143715), metal::float4(0.8613941, -0.0114438785, 0.00009746738, -0.0000006548533), metal::float4(0.0000000037461754, -0.000000000019134916, 0.00000000000005728751, 0.00000000000009148238), metal::float4(0.838891, -0.011061749, 0.000093626666, -0.0000006256297), metal::float4(0.0000000035615182, -0.000000000018111956, 0.000000000000053290705, 0.000000000000087041485), metal::float4(0.8171371, -0.010694638, 0.00008995695, -0.00000059784344), metal::float4(0.0000000033867338, -0.000000000017152058, 0.000000000000047073456, 0.00000000000008615331), metal::float4(0.78584695, -0.020341357, 0.00033901897, -0.0000044695416), metal::float4(0.000000050268525, -0.0000000005015497, 0.000000000004514167, 0.00000000000003996803), metal::float4(0.7464853, -0.019037347, 0.0003133691, -0.000004086745), metal::float4(0.000000045516558, -0.00000000045011284, 0.0000000000040136783, 0.000000000000047073456), metal::float4(0.7096321, -0.01783149, 0.000289906, -0.0000037399832), metal::float4(0.000000041250228, -0.0000000004043006, 0.000000000003574474, 0.000000000000046185278), metal::float4(0.6750995, -0.016715458, 0.0002684246, -0.0000034255886), metal::float4(0.000000037416495, -0.0000000003634768, 0.0000000000031872283, 0.000000000000046185278), metal::float4(0.6272794, -0.030387005, 0.0009580818, -0.000024061048), metal::float4(0.00000051801413, -0.000000009927543, 0.00000000017332358, -0.0000000000027222669), metal::float4(0.57015324, -0.026827596, 0.0008253934, -0.000020287804), metal::float4(0.0000004283978, -0.000000008065489, 0.00000000013850876, -0.0000000000021382895), metal::float4(0.5196439, -0.023756387, 0.0007133347, -0.000017162258), metal::float4(0.00000035547052, -0.0000000065749886, 0.00000000011106582, -0.000000000001677547), metal::float4(0.47485265, -0.021098126, 0.000618392, -0.000014564653), metal::float4(0.00000029592425, -0.000000005377808, 0.00000000008935852, -0.0000000000013233858), metal::float4(0.4167533, -0.035502225, 0.0020077599, -0.0000916237), metal::float4(0.000003617964, -0.00000012807482, 0.0000000041592605, -0.00000000012519785), metal::float4(0.35310093, -0.028464397, 0.0015355214, -0.00006720277), metal::float4(0.0000025549414, -0.00000008734229, 0.00000000274549, -0.00000000008015033), metal::float4(0.30181482, -0.023053482, 0.0011872437, -0.00004985952), metal::float4(0.0000018258146, -0.000000060294994, 0.0000000018349833, -0.000000000051961768), metal::float4(0.26008537, -0.018848889, 0.00092748983, -0.000037398404), metal::float4(0.0000013196806, -0.00000004211374, 0.00000000124123, -0.000000000034098946), metal::float4(0.21097384, -0.02833318, 0.0026085791, -0.00019815165), metal::float4(0.000013240014, -0.0000008032937, 0.000000045332847, -0.000000002383124), metal::float4(0.16334534, -0.019909557, 0.0016825865, -0.00011829047), metal::float4(0.000007361291, -0.00000041804822, 0.00000002216081, -0.0000000010987664), metal::float4(0.12941593, -0.014392785, 0.0011207133, -0.00007312401), metal::float4(0.0000042474107, -0.00000022617557, 0.000000011279408, -0.00000000052811067), metal::float4(0.1045896, -0.010667653, 0.00076819374, -0.00004665181), metal::float4(0.000002534995, -0.00000012680964, 0.000000005958998, -0.0000000002638087), metal::float4(0.07841912, -0.014176364, 0.0018281857, -0.00020045321), metal::float4(0.000019795682, -0.0000018097585, 0.00000015757479, -0.000000012851965), metal::float4(0.0560429, -0.008755298, 0.0009860945, -0.00009524624), metal::float4(0.000008346028, -0.00000068116896, 0.000000053103143, -0.000000003906189), metal::float4(0.04182938, -0.0057326877, 0.0005708639, -0.00004907507), metal::float4(0.00000384914, -0.00000028258418, 0.00000001986625, -0.000000001325575), metal::float4(0.03230852, -0.0039342963, 0.00035016204, -0.000027042239), metal::float4(0.0000019139986, -0.00000012730473, 0.000000008125588, -0.0000000004946015), metal::float4(0.023056017, -0.0047972575, 0.0007341793, -0.00009804619), metal::float4(0.0000120590175, -0.0000014004432, 0.00000015913854, -0.000000017034818), metal::float4(0.015770199, -0.0027393384, 0.0003519189, -0.000039650156), metal::float4(0.0000041337757, -0.00000040863492, 0.00000003944863, -0.00000000362363), metal::float4(0.011437163, -0.0017017398, 0.00018792653, -0.000018260866), metal::float4(0.0000016470873, -0.0000001412674, 0.000000011818231, -0.0000000009471726), metal::float4(0.00866178, -0.0011258711, 0.0001088732, -0.0000092847595), metal::float4(0.0000007365851, -0.000000055677763, 0.0000000041018984, -0.00000000029088262), metal::float4(0.006061911, -0.0013231621, 0.00021536356, -0.000030982304), metal::float4(0.000004154092, -0.0000005319391, 0.00000006779496, -0.0000000081705505), metal::float4(0.0040820343, -0.0007332432, 0.00009839357, -0.000011690638), metal::float4(0.0000012970188, -0.00000013763658, 0.0000000144309, -0.0000000014465321), metal::float4(0.002932701, -0.00044726077, 0.00005101198, -0.000005157015), metal::float4(0.0000004873513, -0.000000044093955, 0.0000000039244634, -0.0000000003361419), metal::float4(0.0022075695, -0.0002924102, 0.000028986162, -0.000002548597), metal::float4(0.00000020962135, -0.000000016517234, 0.000000001276658, -0.00000000009536809), metal::float4(0.00153612, -0.00033979642, 0.000056287994, -0.000008275684), metal::float4(0.0000011385838, -0.0000001502121, 0.000000019849313, -0.0000000024841724), metal::float4(0.0010298727, -0.00018667341, 0.000025351253, -0.0000030571844), metal::float4(0.00000034523006, -0.000000037393693, 0.0000000040174672, -0.00000000041333592), metal::float4(0.0007380098, -0.00011328932, 0.000013033428, -0.000001331858), metal::float4(0.0000001274904, -0.00000001170815, 0.0000000010604964, -0.0000000000925777), metal::float4(0.00055463216, -0.00007382818, 0.000007366494, -0.0000006529916), metal::float4(0.000000054233485, -0.00000000432196, 0.0000000003384992, -0.000000000025654366)}};
     uint _e2 = ms_k_index(id_6, groups_6, ms_in, _buffer_sizes);
-    if (_e2 == naga_div(1 + (_buffer_sizes.size4 - 0 - 16) / 16, MS_K_IN)) {
+    if (_e2 == naga_div(1 + (_buffer_sizes.size1 - 0 - 16) / 16, MS_K_IN)) {
         return;
     }
     MsConductor _e8 = ms_k_conductor(_e2, ms_in, _buffer_sizes);
     metal::float4 _e15 = ms_in[(_e2 * MS_K_IN) + 1u];
-    metal::float3 wo_42 = _e15.xyz;
+    metal::float3 wo_46 = _e15.xyz;
     metal::float4 _e23 = ms_in[(_e2 * MS_K_IN) + 2u];
-    metal::float3 wi_37 = _e23.xyz;
-    metal::float3 _e29 = ms_conductor_eval(_e8, wo_42, wi_37, MS_BK_ERFC_RATIO);
-    float _e30 = ms_conductor_pdf(_e8, wo_42, wi_37, MS_BK_ERFC_RATIO);
+    metal::float3 wi_41 = _e23.xyz;
+    metal::float3 _e29 = ms_conductor_eval(_e8, wo_46, wi_41, ms_tables, _buffer_sizes);
+    float _e30 = ms_conductor_pdf(_e8, wo_46, wi_41, ms_tables, _buffer_sizes);
     ms_out[_e2 * MS_K_OUT] = metal::float4(_e29, _e30);
-    metal::float4 _e38 = ms_conductor_eval_pdf(_e8, wo_42, wi_37, MS_BK_ERFC_RATIO);
+    metal::float4 _e38 = ms_conductor_eval_pdf(_e8, wo_46, wi_41, ms_tables, _buffer_sizes);
     ms_out[(_e2 * MS_K_OUT) + 1u] = _e38;
     return;
 }
@@ -2752,22 +3841,19 @@ struct ms_k_conductor_sampleInput {
 kernel void ms_k_conductor_sample(
   metal::uint3 id_7 [[thread_position_in_grid]]
 , metal::uint3 groups_7 [[threadgroups_per_grid]]
-, device type_10 const& ms_in [[user(fake0)]]
-, device type_10& ms_out [[user(fake0)]]
+, device type_7 const& ms_tables [[user(fake0)]]
+, device type_7 const& ms_in [[user(fake0)]]
+, device type_7& ms_out [[user(fake0)]]
 , constant _mslBufferSizes& _buffer_sizes [[user(fake0)]]
 ) {
-    type_7 MS_BK_ERFCX = type_7 {{metal::float4(0.9999225, -0.000008607803, 0.000000000058177935, 0.00000000000008471002), metal::float4(0.00000000000004973799, -0.00000000000017230661, -0.000000000000031530334, 0.00000000000010125234), metal::float4(0.9999053, -0.00000860757, 0.00000000005817566, 0.00000000000008326673), metal::float4(0.000000000000051736393, -0.00000000000017030821, -0.00000000000003330669, 0.00000000000010036416), metal::float4(0.9998881, -0.000008607337, 0.000000000058172744, 0.0000000000000930922), metal::float4(0.000000000000052402527, -0.00000000000018574031, -0.0000000000000328626, 0.00000000000010791368), metal::float4(0.9998709, -0.000008607104, 0.000000000058170968, 0.00000000000008915091), metal::float4(0.000000000000054845017, -0.00000000000018163249, -0.000000000000035527137, 0.00000000000010658141), metal::float4(0.9998451, -0.00001721351, 0.00000000023273894, 0.00000000000009314771), metal::float4(0.000000000000047517545, -0.0000000000001911804, -0.000000000000030198066, 0.0000000000001110223), metal::float4(0.99981064, -0.000017212578, 0.00000000023271904, 0.000000000000092370556), metal::float4(0.00000000000005684342, -0.00000000000019029223, -0.000000000000035971226, 0.0000000000001110223), metal::float4(0.9997762, -0.000017211647, 0.00000000023270427, 0.00000000000009003909), metal::float4(0.00000000000005306866, -0.00000000000018607338, -0.00000000000003330669, 0.00000000000010835777), metal::float4(0.9997418, -0.000017210717, 0.00000000023268884, 0.00000000000008837375), metal::float4(0.000000000000054400928, -0.00000000000017963409, -0.000000000000035083048, 0.000000000000103916875), metal::float4(0.9996902, -0.00003441864, 0.0000000009307227, 0.000000000000070665696), metal::float4(0.000000000000056621374, -0.00000000000018485213, -0.000000000000036415315, 0.00000000000010791368), metal::float4(0.99962133, -0.00003441492, 0.0000000009305945, 0.00000000000007438494), metal::float4(0.00000000000005639933, -0.00000000000019229063, -0.000000000000035971226, 0.00000000000011191048), metal::float4(0.9995525, -0.000034411194, 0.0000000009304685, 0.00000000000006267209), metal::float4(0.00000000000005151435, -0.00000000000017219559, -0.00000000000003330669, 0.00000000000010169643), metal::float4(0.9994837, -0.000034407472, 0.0000000009303388, 0.000000000000073996365), metal::float4(0.000000000000055289107, -0.00000000000019084734, -0.000000000000035527137, 0.00000000000011057821), metal::float4(0.99938047, -0.00006880378, 0.0000000037206538, -0.00000000000008376633), metal::float4(0.000000000000054845017, -0.00000000000017730262, -0.000000000000035527137, 0.000000000000104360964), metal::float4(0.99924284, -0.000068788904, 0.0000000037196282, -0.00000000000008493206), metal::float4(0.000000000000054400928, -0.00000000000017497115, -0.00000000000003419487, 0.0000000000001030287), metal::float4(0.99910533, -0.000068774025, 0.0000000037186056, -0.00000000000007971401), metal::float4(0.00000000000005107026, -0.00000000000018074431, -0.000000000000032418512, 0.000000000000104805054), metal::float4(0.99896777, -0.00006875915, 0.0000000037175791, -0.00000000000007582823), metal::float4(0.000000000000056621374, -0.00000000000019029223, -0.000000000000035527137, 0.0000000000001110223), metal::float4(0.99876153, -0.0001374737, 0.000000014864249, -0.0000000000012666534), metal::float4(0.000000000000052402527, -0.00000000000019473312, -0.00000000000003375078, 0.00000000000011279866), metal::float4(0.99848664, -0.00013741427, 0.000000014856064, -0.0000000000012739254), metal::float4(0.000000000000055289107, -0.00000000000018085533, -0.000000000000035083048, 0.00000000000010613732), metal::float4(0.99821186, -0.00013735486, 0.000000014847887, -0.0000000000012725376), metal::float4(0.000000000000050404125, -0.00000000000018096635, -0.000000000000031974423, 0.00000000000010569323), metal::float4(0.9979372, -0.00013729549, 0.000000014839712, -0.0000000000012732593), metal::float4(0.0000000000000577316, -0.00000000000018152146, -0.000000000000036859404, 0.0000000000001070255), metal::float4(0.99752545, -0.00027441297, 0.000000059309926, -0.000000000010789258), metal::float4(0.000000000000051736393, -0.00000000000018762769, -0.000000000000031974423, 0.000000000000109245946), metal::float4(0.9969769, -0.00027417587, 0.000000059244666, -0.000000000010777879), metal::float4(0.00000000000005595524, -0.00000000000018329782, -0.000000000000035083048, 0.0000000000001070255), metal::float4(0.9964288, -0.00027393902, 0.000000059179495, -0.0000000000107598375), metal::float4(0.00000000000005795364, -0.00000000000019095836, -0.000000000000035971226, 0.00000000000011191048), metal::float4(0.99588114, -0.00027370243, 0.00000005911441, -0.000000000010746071), metal::float4(0.000000000000058619776, -0.00000000000018851587, -0.000000000000036415315, 0.000000000000109245946), metal::float4(0.99506056, -0.0005466961, 0.00000023606782, -0.00000000008645806), metal::float4(0.00000000000008104628, -0.00000000000019739765, -0.00000000000003375078, 0.00000000000011457502), metal::float4(0.9939681, -0.0005457528, 0.00000023554915, -0.000000000086238516), metal::float4(0.000000000000079269924, -0.0000000000001881828, -0.00000000000003330669, 0.000000000000108801856), metal::float4(0.99287754, -0.00054481166, 0.00000023503182, -0.0000000000860223), metal::float4(0.00000000000008326673, -0.00000000000017630342, -0.000000000000035083048, 0.0000000000001030287), metal::float4(0.99178886, -0.00054387253, 0.00000023451582, -0.000000000085797314), metal::float4(0.00000000000008726353, -0.00000000000018129942, -0.00000000000003863576, 0.00000000000010613732), metal::float4(0.99015933, -0.0010849356, 0.00000093497744, -0.0000000006843407), metal::float4(0.0000000000004958256, -0.00000000000018651747, -0.00000000000003375078, 0.00000000000010835777), metal::float4(0.9879932, -0.0010812038, 0.00000093088147, -0.00000000068081535), metal::float4(0.0000000000004967138, -0.0000000000001757483, -0.000000000000035971226, 0.000000000000103472786), metal::float4(0.98583454, -0.0010774885, 0.0000009268066, -0.00000000067730505), metal::float4(0.00000000000049449334, -0.00000000000016886492, -0.000000000000036415315, 0.000000000000099031894), metal::float4(0.9836832, -0.0010737894, 0.00000092275275, -0.0000000006738057), metal::float4(0.0000000000004898304, -0.00000000000018474111, -0.000000000000035083048, 0.00000000000010835777), metal::float4(0.9804702, -0.002136542, 0.0000036668446, -0.000000005349492), metal::float4(0.0000000000069506623, -0.00000000000018463009, -0.000000000000030642155, 0.000000000000103472786), metal::float4(0.9762117, -0.0021219386, 0.000003634912, -0.000000005294606), metal::float4(0.0000000000068760553, -0.00000000000016997515, -0.00000000000003463896, 0.00000000000009636736), metal::float4(0.9719823, -0.0021074624, 0.000003603307, -0.0000000052403415), metal::float4(0.0000000000067961192, -0.00000000000017919, -0.00000000000003419487, 0.00000000000010036416), metal::float4(0.9677818, -0.0020931116, 0.0000035720257, -0.0000000051867053), metal::float4(0.00000000000672018, -0.00000000000018951507, -0.000000000000035527137, 0.00000000000010524914), metal::float4(0.96153444, -0.0041436376, 0.0000141028095, -0.000000040860034), metal::float4(0.000000000104839026, -0.00000000000040389914, -0.000000000000030198066, 0.00000000000009503509), metal::float4(0.9533033, -0.0040877135, 0.0000138601445, -0.00000004003137), metal::float4(0.00000000010243628, -0.00000000000040412118, -0.0000000000000328626, 0.000000000000097699626), metal::float4(0.9451829, -0.00403275, 0.000013622393, -0.00000003922171), metal::float4(0.00000000010009482, -0.00000000000039857007, -0.00000000000003463896, 0.000000000000098587805), metal::float4(0.93717164, -0.003978728, 0.0000133894455, -0.000000038430567), metal::float4(0.00000000009780243, -0.00000000000038902215, -0.000000000000029309888, 0.00000000000009592327), metal::float4(0.9253549, -0.007798837, 0.00005219515, -0.00000029822098), metal::float4(0.0000000015110095, -0.000000000007114087, -0.0000000000000017763568, 0.00000000000009681145), metal::float4(0.90996367, -0.007593587, 0.00005044154, -0.0000002864066), metal::float4(0.0000000014432613, -0.0000000000067774675, -0.0000000000000053290705, 0.00000000000010214052), metal::float4(0.89497596, -0.007395212, 0.000048757214, -0.0000002751207), metal::float4(0.0000000013788544, -0.0000000000064440675, -0.0000000000000057731597, 0.00000000000009636736), metal::float4(0.8803784, -0.007203441, 0.000047139085, -0.00000026433727), metal::float4(0.0000000013176158, -0.000000000006128653, -0.000000000000006661338, 0.000000000000092370556), metal::float4(0.8591853, -0.013855208, 0.00017931846, -0.0000019924057), metal::float4(0.000000019700584, -0.00000000017741708, 0.0000000000014441781, 0.000000000000082156504), metal::float4(0.8321765, -0.013161226, 0.000167823, -0.0000018416622), metal::float4(0.000000018013315, -0.00000000016064183, 0.0000000000012949641, 0.0000000000000741629), metal::float4(0.8065109, -0.01251147, 0.00015719283, -0.0000017037701), metal::float4(0.000000016484886, -0.00000000014560297, 0.0000000000011577406, 0.00000000000007771561), metal::float4(0.78210336, -0.0119026285, 0.00014735448, -0.0000015775245), metal::float4(0.00000001509912, -0.00000000013207224, 0.0000000000010387247, 0.00000000000007149836), metal::float4(0.7476803, -0.022119032, 0.000535751, -0.000011261245), metal::float4(0.00000021210928, -0.0000000036533685, 0.000000000058341776, -0.0000000000007904788), metal::float4(0.7054984, -0.020104656, 0.0004729953, -0.000009701633), metal::float4(0.00000017884639, -0.0000000030213583, 0.00000000004739409, -0.0000000000006177281), metal::float4(0.6671063, -0.018323604, 0.00041884705, -0.000008384501), metal::float4(0.00000015129326, -0.0000000025070404, 0.00000000003863443, -0.00000000000048361315), metal::float4(0.6320697, -0.016744182, 0.00037197946, -0.0000072685484), metal::float4(0.00000012839418, -0.0000000020870798, 0.000000000031593617, -0.00000000000038458126), metal::float4(0.5849986, -0.029390983, 0.0012518741, -0.000047198217), metal::float4(0.0000016154092, -0.000000051030575, 0.0000000015075681, -0.000000000041826098), metal::float4(0.53087085, -0.024901982, 0.0010037073, -0.00003609688), metal::float4(0.000001184846, -0.000000036036894, 0.0000000010280106, -0.000000000027595037), metal::float4(0.48481083, -0.021285098, 0.0008129084, -0.000027909606), metal::float4(0.00000087906886, -0.000000025752737, 0.0000000007096015, -0.000000000018429702), metal::float4(0.44528228, -0.018342182, 0.0006646467, -0.000021803336), metal::float4(0.0000006593681, -0.000000018613841, 0.00000000049558735, -0.0000000000124527055), metal::float4(0.39569807, -0.029757312, 0.0019981607, -0.00012264443), metal::float4(0.000006987141, -0.00000037349582, 0.000000018967754, -0.00000000091232955), metal::float4(0.3432959, -0.023039434, 0.0014040956, -0.00007910815), metal::float4(0.0000041711164, -0.00000020765906, 0.0000000098661594, -0.0000000004460312), metal::float4(0.3022612, -0.018253779, 0.0010150324, -0.00005269123), metal::float4(0.0000025784761, -0.00000011981767, 0.0000000053355205, -0.00000000022702906), metal::float4(0.26942998, -0.01475209, 0.0007523223, -0.000036117242), metal::float4(0.0000016450233, -0.00000007151112, 0.00000000299032, -0.00000000011994128), metal::float4(0.23108725, -0.022121625, 0.0019995393, -0.0001719072), metal::float4(0.000014136136, -0.0000011168833, 0.00000008599324, -0.0000000063321353), metal::float4(0.19366209, -0.01580941, 0.0012349121, -0.00009272403), metal::float4(0.000006716945, -0.0000004708829, 0.000000032301084, -0.0000000021350468), metal::float4(0.16633534, -0.0117998505, 0.0008085807, -0.00005367924), metal::float4(0.000003460897, -0.00000021716717, 0.000000013379374, -0.0000000007990484), metal::float4(0.14558972, -0.009114064, 0.0005549222, -0.000032926295), metal::float4(0.0000019070969, -0.00000010798676, 0.0000000060202017, -0.00000000032691727), metal::float4(0.1224848, -0.013007964, 0.0013532817, -0.00013807204), metal::float4(0.000013827661, -0.0000013608255, 0.00000013408695, -0.000000012762786), metal::float4(0.10096222, -0.008897383, 0.0007727532, -0.00006618298), metal::float4(0.0000055922324, -0.00000046646701, 0.000000038935426, -0.000000003167861), metal::float4(0.08580567, -0.006452728, 0.00048005197, -0.000035342062), metal::float4(0.0000025755642, -0.00000018585855, 0.0000000134171385, -0.0000000009498649), metal::float4(0.074573696, -0.0048868856, 0.00031760236, -0.000020475041), metal::float4(0.0000013095655, -0.00000008311601, 0.0000000052764815, -0.00000000032987502), metal::float4(0.062307723, -0.0068401345, 0.0007465146, -0.000081003855), metal::float4(0.00000873851, -0.00000093759945, 0.00000010234092, -0.000000010859012), metal::float4(0.051080596, -0.0046060826, 0.00041368822, -0.00003700841), metal::float4(0.0000032976134, -0.00000029272368, 0.000000026292172, -0.000000002315999), metal::float4(0.04327192, -0.0033091987, 0.00025233987, -0.00001918695), metal::float4(0.0000014547079, -0.00000010998697, 0.000000008387229, -0.00000000063057826), metal::float4(0.037529606, -0.0024909754, 0.00016497479, -0.0000109024595), metal::float4(0.00000071892913, -0.00000004730736, 0.000000003133176, -0.00000000020528737), metal::float4(0.031295717, -0.0034666515, 0.0003834194, -0.000042342763), metal::float4(0.000004668181, -0.00000051397853, 0.000000057898873, -0.000000006355341), metal::float4(0.02561857, -0.0023241737, 0.0002106384, -0.000019070545), metal::float4(0.0000017246861, -0.00000015583068, 0.000000014297796, -0.0000000012891967), metal::float4(0.021683585, -0.0016655098, 0.00012783332, -0.000009804431), metal::float4(0.0000007513878, -0.000000057545, 0.0000000044559494, -0.00000000034075398), metal::float4(0.018795889, -0.0012516708, 0.000083306186, -0.0000055414653), metal::float4(0.00000036840203, -0.000000024478858, 0.0000000016400711, -0.00000000010885354)}};
-    type_7 MS_BK_ERFC_RATIO = type_7 {{metal::float4(0.9998783, -0.000013520655, 0.000000000116372106, 0.000000000000089372953), metal::float4(0.000000000000054622973, -0.0000000000001831868, -0.000000000000035083048, 0.00000000000010746959), metal::float4(0.9998513, -0.000013520189, 0.00000000011636769, 0.000000000000086985974), metal::float4(0.00000000000005395684, -0.0000000000001777467, -0.00000000000003463896, 0.000000000000104360964), metal::float4(0.9998242, -0.000013519723, 0.000000000116361754, 0.00000000000009531265), metal::float4(0.000000000000056621374, -0.0000000000001926237, -0.000000000000036415315, 0.00000000000011235457), metal::float4(0.99979717, -0.000013519258, 0.00000000011635656, 0.000000000000092870156), metal::float4(0.000000000000056621374, -0.00000000000018840485, -0.000000000000035971226, 0.000000000000109690035), metal::float4(0.99975663, -0.000027037118, 0.0000000004654685, 0.0000000000000806577), metal::float4(0.000000000000056177285, -0.0000000000001761924, -0.000000000000035527137, 0.000000000000103472786), metal::float4(0.9997026, -0.000027035258, 0.0000000004654293, 0.000000000000089595), metal::float4(0.00000000000005973, -0.00000000000019295676, -0.000000000000038191672, 0.00000000000011279866), metal::float4(0.9996485, -0.000027033395, 0.0000000004653939, 0.0000000000000801581), metal::float4(0.000000000000054178884, -0.00000000000017652546, -0.00000000000003463896, 0.000000000000103916875), metal::float4(0.99959445, -0.000027031534, 0.00000000046535684, 0.0000000000000801581), metal::float4(0.00000000000005306866, -0.00000000000017652546, -0.00000000000003419487, 0.000000000000103916875), metal::float4(0.9995133, -0.000054057484, 0.0000000018612636, 0.000000000000038469228), metal::float4(0.000000000000055067062, -0.00000000000018152146, -0.000000000000035527137, 0.0000000000001070255), metal::float4(0.9994052, -0.00005405004, 0.0000000018609614, 0.00000000000003758105), metal::float4(0.000000000000055067062, -0.00000000000017952306, -0.000000000000035527137, 0.00000000000010613732), metal::float4(0.99929714, -0.000054042597, 0.0000000018606601, 0.000000000000044131365), metal::float4(0.000000000000054622973, -0.00000000000019173552, -0.000000000000035527137, 0.00000000000011235457), metal::float4(0.9991891, -0.000054035154, 0.0000000018603591, 0.00000000000004052314), metal::float4(0.000000000000051958438, -0.00000000000018540725, -0.00000000000003330669, 0.000000000000109245946), metal::float4(0.99902695, -0.000108047985, 0.000000007439686, -0.00000000000031830094), metal::float4(0.000000000000054622973, -0.00000000000017141844, -0.000000000000035083048, 0.00000000000010125234), metal::float4(0.9988109, -0.000108018234, 0.0000000074372717, -0.00000000000032190917), metal::float4(0.000000000000056621374, -0.00000000000016553425, -0.000000000000036415315, 0.000000000000098143715), metal::float4(0.9985949, -0.00010798849, 0.00000000743486, -0.00000000000031646907), metal::float4(0.000000000000054845017, -0.00000000000017352786, -0.000000000000035083048, 0.00000000000010169643), metal::float4(0.99837893, -0.00010795875, 0.0000000074324493, -0.00000000000031152858), metal::float4(0.000000000000050404125, -0.00000000000018207658, -0.000000000000031974423, 0.00000000000010658141), metal::float4(0.99805516, -0.00021582833, 0.000000029715395, -0.000000000003128331), metal::float4(0.00000000000005551115, -0.00000000000017486013, -0.000000000000035527137, 0.000000000000103472786), metal::float4(0.9976236, -0.00021570952, 0.00000002969612, -0.000000000003120837), metal::float4(0.000000000000057065463, -0.00000000000018207658, -0.000000000000035971226, 0.00000000000010658141), metal::float4(0.9971923, -0.00021559077, 0.000000029676862, -0.0000000000031179503), metal::float4(0.000000000000051292304, -0.00000000000018363089, -0.000000000000032418512, 0.00000000000010746959), metal::float4(0.99676126, -0.0002154721, 0.000000029657613, -0.0000000000031167846), metal::float4(0.00000000000005973, -0.00000000000018129942, -0.000000000000038191672, 0.00000000000010613732), metal::float4(0.9961151, -0.00043058846, 0.00000011851517, -0.000000000025533409), metal::float4(0.000000000000054622973, -0.00000000000018196555, -0.000000000000031974423, 0.0000000000001070255), metal::float4(0.9952544, -0.0004301147, 0.00000011836154, -0.00000000002549444), metal::float4(0.00000000000005750955, -0.00000000000018396396, -0.00000000000003375078, 0.00000000000010791368), metal::float4(0.9943946, -0.00042964157, 0.00000011820814, -0.0000000000254613), metal::float4(0.00000000000005750955, -0.0000000000001771916, -0.00000000000003330669, 0.000000000000104805054), metal::float4(0.9935358, -0.00042916907, 0.00000011805497, -0.000000000025424052), metal::float4(0.0000000000000577316, -0.00000000000017463808, -0.00000000000003419487, 0.00000000000010258461), metal::float4(0.99224937, -0.0008569228, 0.0000004713026, -0.00000000020354624), metal::float4(0.00000000000012922996, -0.00000000000017463808, -0.00000000000003463896, 0.00000000000010258461), metal::float4(0.9905374, -0.00085504004, 0.0000004700826, -0.00000000020295265), metal::float4(0.0000000000001298961, -0.00000000000016986412, -0.000000000000035527137, 0.00000000000010036416), metal::float4(0.9888292, -0.00085316214, 0.00000046886615, -0.00000000020235569), metal::float4(0.00000000000012811974, -0.00000000000017386093, -0.00000000000003463896, 0.00000000000010214052), metal::float4(0.98712474, -0.00085128914, 0.0000004676533, -0.00000000020176294), metal::float4(0.00000000000012834178, -0.00000000000017452706, -0.000000000000035083048, 0.0000000000001030287), metal::float4(0.9845751, -0.0016969773, 0.0000018633626, -0.0000000016076107), metal::float4(0.0000000000012352341, -0.00000000000018551827, -0.000000000000036859404, 0.000000000000108801856), metal::float4(0.9811886, -0.0016895431, 0.0000018537446, -0.0000000015982158), metal::float4(0.0000000000012265744, -0.00000000000018851587, -0.000000000000035971226, 0.000000000000109245946), metal::float4(0.9778169, -0.0016821473, 0.0000018441829, -0.0000000015888955), metal::float4(0.0000000000012161383, -0.00000000000016819879, -0.00000000000003375078, 0.000000000000098143715), metal::float4(0.97445995, -0.0016747896, 0.0000018346768, -0.0000000015796264), metal::float4(0.000000000001209477, -0.00000000000016719959, -0.00000000000003463896, 0.000000000000098587805), metal::float4(0.9694521, -0.0033276482, 0.0000072820867, -0.000000012527211), metal::float4(0.000000000018354651, -0.00000000000019839685, -0.000000000000031974423, 0.000000000000103472786), metal::float4(0.9628258, -0.0032986696, 0.0000072073603, -0.00000001238172), metal::float4(0.000000000018118618, -0.00000000000019206858, -0.000000000000031530334, 0.000000000000098587805), metal::float4(0.95625716, -0.003269988, 0.000007133501, -0.000000012238096), metal::float4(0.000000000017883695, -0.00000000000018784974, -0.000000000000029309888, 0.000000000000097699626), metal::float4(0.94974566, -0.0032416002, 0.0000070604983, -0.000000012096301), metal::float4(0.00000000001765632, -0.00000000000019806379, -0.000000000000029753977, 0.0000000000001030287), metal::float4(0.94008404, -0.006399124, 0.000027810303, -0.00000009509669), metal::float4(0.00000000027642266, -0.0000000000008895107, -0.000000000000031086245, 0.000000000000104805054), metal::float4(0.9273963, -0.006289015, 0.000027246298, -0.00000009291387), metal::float4(0.00000000026941782, -0.000000000000856093, -0.000000000000031530334, 0.00000000000009636736), metal::float4(0.9149265, -0.0061811362, 0.000026695225, -0.00000009078632), metal::float4(0.00000000026260571, -0.00000000000083555385, -0.000000000000031974423, 0.00000000000009503509), metal::float4(0.9026703, -0.0060754367, 0.000026156755, -0.00000008871252), metal::float4(0.00000000025598057, -0.00000000000082167606, -0.000000000000031974423, 0.000000000000099031894), metal::float4(0.88467705, -0.011841728, 0.000101487945, -0.00000068559564), metal::float4(0.0000000039413006, -0.00000000002022571, 0.00000000000006039613, 0.000000000000098143715), metal::float4(0.8613941, -0.0114438785, 0.00009746738, -0.0000006548533), metal::float4(0.0000000037461754, -0.000000000019134916, 0.00000000000005728751, 0.00000000000009148238), metal::float4(0.838891, -0.011061749, 0.000093626666, -0.0000006256297), metal::float4(0.0000000035615182, -0.000000000018111956, 0.000000000000053290705, 0.000000000000087041485), metal::float4(0.8171371, -0.010694638, 0.00008995695, -0.00000059784344), metal::float4(0.0000000033867338, -0.000000000017152058, 0.000000000000047073456, 0.00000000000008615331), metal::float4(0.78584695, -0.020341357, 0.00033901897, -0.0000044695416), metal::float4(0.000000050268525, -0.0000000005015497, 0.000000000004514167, 0.00000000000003996803), metal::float4(0.7464853, -0.019037347, 0.0003133691, -0.000004086745), metal::float4(0.000000045516558, -0.00000000045011284, 0.0000000000040136783, 0.000000000000047073456), metal::float4(0.7096321, -0.01783149, 0.000289906, -0.0000037399832), metal::float4(0.000000041250228, -0.0000000004043006, 0.000000000003574474, 0.000000000000046185278), metal::float4(0.6750995, -0.016715458, 0.0002684246, -0.0000034255886), metal::float4(0.000000037416495, -0.0000000003634768, 0.0000000000031872283, 0.000000000000046185278), metal::float4(0.6272794, -0.030387005, 0.0009580818, -0.000024061048), metal::float4(0.00000051801413, -0.000000009927543, 0.00000000017332358, -0.0000000000027222669), metal::float4(0.57015324, -0.026827596, 0.0008253934, -0.000020287804), metal::float4(0.0000004283978, -0.000000008065489, 0.00000000013850876, -0.0000000000021382895), metal::float4(0.5196439, -0.023756387, 0.0007133347, -0.000017162258), metal::float4(0.00000035547052, -0.0000000065749886, 0.00000000011106582, -0.000000000001677547), metal::float4(0.47485265, -0.021098126, 0.000618392, -0.000014564653), metal::float4(0.00000029592425, -0.000000005377808, 0.00000000008935852, -0.0000000000013233858), metal::float4(0.4167533, -0.035502225, 0.0020077599, -0.0000916237), metal::float4(0.000003617964, -0.00000012807482, 0.0000000041592605, -0.00000000012519785), metal::float4(0.35310093, -0.028464397, 0.0015355214, -0.00006720277), metal::float4(0.0000025549414, -0.00000008734229, 0.00000000274549, -0.00000000008015033), metal::float4(0.30181482, -0.023053482, 0.0011872437, -0.00004985952), metal::float4(0.0000018258146, -0.000000060294994, 0.0000000018349833, -0.000000000051961768), metal::float4(0.26008537, -0.018848889, 0.00092748983, -0.000037398404), metal::float4(0.0000013196806, -0.00000004211374, 0.00000000124123, -0.000000000034098946), metal::float4(0.21097384, -0.02833318, 0.0026085791, -0.00019815165), metal::float4(0.000013240014, -0.0000008032937, 0.000000045332847, -0.000000002383124), metal::float4(0.16334534, -0.019909557, 0.0016825865, -0.00011829047), metal::float4(0.000007361291, -0.00000041804822, 0.00000002216081, -0.0000000010987664), metal::float4(0.12941593, -0.014392785, 0.0011207133, -0.00007312401), metal::float4(0.0000042474107, -0.00000022617557, 0.000000011279408, -0.00000000052811067), metal::float4(0.1045896, -0.010667653, 0.00076819374, -0.00004665181), metal::float4(0.000002534995, -0.00000012680964, 0.000000005958998, -0.0000000002638087), metal::float4(0.07841912, -0.014176364, 0.0018281857, -0.00020045321), metal::float4(0.000019795682, -0.0000018097585, 0.00000015757479, -0.000000012851965), metal::float4(0.0560429, -0.008755298, 0.0009860945, -0.00009524624), metal::float4(0.000008346028, -0.00000068116896, 0.000000053103143, -0.000000003906189), metal::float4(0.04182938, -0.0057326877, 0.0005708639, -0.00004907507), metal::float4(0.00000384914, -0.00000028258418, 0.00000001986625, -0.000000001325575), metal::float4(0.03230852, -0.0039342963, 0.00035016204, -0.000027042239), metal::float4(0.0000019139986, -0.00000012730473, 0.000000008125588, -0.0000000004946015), metal::float4(0.023056017, -0.0047972575, 0.0007341793, -0.00009804619), metal::float4(0.0000120590175, -0.0000014004432, 0.00000015913854, -0.000000017034818), metal::float4(0.015770199, -0.0027393384, 0.0003519189, -0.000039650156), metal::float4(0.0000041337757, -0.00000040863492, 0.00000003944863, -0.00000000362363), metal::float4(0.011437163, -0.0017017398, 0.00018792653, -0.000018260866), metal::float4(0.0000016470873, -0.0000001412674, 0.000000011818231, -0.0000000009471726), metal::float4(0.00866178, -0.0011258711, 0.0001088732, -0.0000092847595), metal::float4(0.0000007365851, -0.000000055677763, 0.0000000041018984, -0.00000000029088262), metal::float4(0.006061911, -0.0013231621, 0.00021536356, -0.000030982304), metal::float4(0.000004154092, -0.0000005319391, 0.00000006779496, -0.0000000081705505), metal::float4(0.0040820343, -0.0007332432, 0.00009839357, -0.000011690638), metal::float4(0.0000012970188, -0.00000013763658, 0.0000000144309, -0.0000000014465321), metal::float4(0.002932701, -0.00044726077, 0.00005101198, -0.000005157015), metal::float4(0.0000004873513, -0.000000044093955, 0.0000000039244634, -0.0000000003361419), metal::float4(0.0022075695, -0.0002924102, 0.000028986162, -0.000002548597), metal::float4(0.00000020962135, -0.000000016517234, 0.000000001276658, -0.00000000009536809), metal::float4(0.00153612, -0.00033979642, 0.000056287994, -0.000008275684), metal::float4(0.0000011385838, -0.0000001502121, 0.000000019849313, -0.0000000024841724), metal::float4(0.0010298727, -0.00018667341, 0.000025351253, -0.0000030571844), metal::float4(0.00000034523006, -0.000000037393693, 0.0000000040174672, -0.00000000041333592), metal::float4(0.0007380098, -0.00011328932, 0.000013033428, -0.000001331858), metal::float4(0.0000001274904, -0.00000001170815, 0.0000000010604964, -0.0000000000925777), metal::float4(0.00055463216, -0.00007382818, 0.000007366494, -0.0000006529916), metal::float4(0.000000054233485, -0.00000000432196, 0.0000000003384992, -0.000000000025654366)}};
-    type_8 MS_BK_ERFINV_Q = type_8 {{metal::float4(3.9046016, -0.013801319, 0.000743736, -0.000054314907), metal::float4(0.0000044844564, -0.00000039593175, 0.000000037148247, -0.0000000035245051), metal::float4(3.8796005, -0.011360582, 0.00050071336, -0.000029913715), metal::float4(0.0000020206483, -0.00000014595663, 0.000000011134741, -0.0000000008638139), metal::float4(3.8586712, -0.0096619185, 0.00036021826, -0.000018206969), metal::float4(0.0000010405903, -0.000000063597454, 0.00000000409052, -0.00000000026818192), metal::float4(3.8406575, -0.008410642, 0.00027168475, -0.000011899763), metal::float4(0.00000058939276, -0.00000003121761, 0.0000000017361579, -0.000000000098363984), metal::float4(3.8175905, -0.014097435, 0.00075870205, -0.000055376688), metal::float4(0.0000045705096, -0.0000004034267, 0.00000003784378, -0.0000000035899408), metal::float4(3.7920496, -0.0116073135, 0.0005109042, -0.000030504969), metal::float4(0.0000020598447, -0.00000014874925, 0.0000000113454615, -0.00000000088002494), metal::float4(3.7706635, -0.009873917, 0.00036761994, -0.000018570187), metal::float4(0.0000010609601, -0.00000006482521, 0.0000000041686317, -0.0000000002732765), metal::float4(3.7522526, -0.008596826, 0.00027731352, -0.000012139064), metal::float4(0.00000060102127, -0.00000003182494, 0.0000000017695712, -0.00000000010026646), metal::float4(3.7286723, -0.014413081, 0.0007745885, -0.000056501816), metal::float4(0.0000046615996, -0.00000041135434, 0.000000038579007, -0.000000003659057), metal::float4(3.702556, -0.01187052, 0.00052172894, -0.000031131895), metal::float4(0.000002101361, -0.00000015170475, 0.000000011568334, -0.0000000008971881), metal::float4(3.6806822, -0.01010022, 0.00037548656, -0.000018955525), metal::float4(0.0000010825465, -0.00000006612525, 0.0000000042512838, -0.00000000027866953), metal::float4(3.6618476, -0.008795687, 0.0002832988, -0.000012393057), metal::float4(0.0000006133498, -0.0000000324683, 0.0000000018049384, -0.0000000001022773), metal::float4(3.6377184, -0.014750466, 0.00079149194, -0.000057696743), metal::float4(0.00000475823, -0.00000041975713, 0.000000039357786, -0.0000000037322554), metal::float4(3.6109867, -0.01215209, 0.00053325505, -0.000031798165), metal::float4(0.0000021454307, -0.00000015483947, 0.00000001180455, -0.000000000915346), metal::float4(3.588591, -0.010342483, 0.000383868, -0.000019365283), metal::float4(0.0000011054735, -0.00000006750487, 0.0000000043389274, -0.0000000002843752), metal::float4(3.5693026, -0.009008703, 0.0002896792, -0.000012663283), metal::float4(0.00000062645034, -0.000000033151345, 0.000000001842464, -0.00000000010441781), metal::float4(3.5445855, -0.015112158, 0.00080952386, -0.00005896887), metal::float4(0.000004860975, -0.0000004286838, 0.00000004018454, -0.0000000038099), metal::float4(3.5171936, -0.012454218, 0.0005455602, -0.000032508004), metal::float4(0.0000021923224, -0.0000001581719, 0.0000000120555015, -0.0000000009346071), metal::float4(3.4942381, -0.010602634, 0.00039282197, -0.000019802106), metal::float4(0.0000011298831, -0.00000006897236, 0.0000000044321133, -0.00000000029042546), metal::float4(3.4744618, -0.009237601, 0.0002964994, -0.000012951515), metal::float4(0.00000064040535, -0.000000033878305, 0.0000000018823698, -0.00000000010666312), metal::float4(3.4491127, -0.015501155, 0.0008288132, -0.00006032672), metal::float4(0.000004970496, -0.00000043818997, 0.000000041064304, -0.000000003892488), metal::float4(3.4210105, -0.012779471, 0.00055873464, -0.000033266275), metal::float4(0.0000022423446, -0.0000001617233, 0.000000012322719, -0.0000000009551169), metal::float4(3.3974519, -0.010882929, 0.00040241532, -0.000020269052), metal::float4(0.0000011559393, -0.000000070537226, 0.0000000045313797, -0.00000000029689673), metal::float4(3.37715, -0.009484401, 0.00030381125, -0.0000132598025), metal::float4(0.00000065531015, -0.00000003465392, 0.0000000019249136, -0.000000000109070086), metal::float4(3.3511188, -0.015920965, 0.00084950996, -0.00006178017), metal::float4(0.000005087556, -0.00000044834, 0.00000004200286, -0.000000003980542), metal::float4(3.3222501, -0.013130857, 0.0005728834, -0.000034078632), metal::float4(0.0000022958548, -0.0000001655182, 0.000000012608043, -0.0000000009770353), metal::float4(3.2980394, -0.011186014, 0.00041272625, -0.000020769668), metal::float4(0.0000011838317, -0.00000007221059, 0.0000000046374424, -0.0000000003037819), metal::float4(3.277169, -0.009751473, 0.0003116754, -0.000013590532), metal::float4(0.000000671275, -0.000000035483797, 0.0000000019704043, -0.00000000011163692), metal::float4(3.2503996, -0.016375713, 0.0008717899, -0.00006334072), metal::float4(0.000005213043, -0.00000045920837, 0.000000043006956, -0.000000004074634), metal::float4(3.2206998, -0.013511909, 0.0005881297, -0.000034951667), metal::float4(0.0000023532677, -0.00000016958528, 0.000000012913533, -0.000000001000446), metal::float4(3.1957817, -0.011514996, 0.00042384653, -0.000021308108), metal::float4(0.0000012137815, -0.000000074005264, 0.0000000047510866, -0.00000000031115022), metal::float4(3.174294, -0.010041602, 0.00032016315, -0.000013946497), metal::float4(0.00000068842894, -0.00000003637438, 0.0000000020191653, -0.00000000011440093), metal::float4(3.1467223, -0.016870238, 0.0008958599, -0.00006502186), metal::float4(0.000005347992, -0.0000004708819, 0.000000044084366, -0.000000004175549), metal::float4(3.116118, -0.013926776, 0.000604619, -0.00003589312), metal::float4(0.0000024150706, -0.00000017395772, 0.000000013241644, -0.0000000010256045), metal::float4(3.0904295, -0.011873523, 0.0004358846, -0.00002188925), metal::float4(0.000001246048, -0.00000007593623, 0.0000000048732485, -0.00000000031908698), metal::float4(3.0682685, -0.010358051, 0.00032935888, -0.000014330984), metal::float4(0.0000007069231, -0.000000037333344, 0.00000000207163, -0.00000000011734258), metal::float4(3.0398211, -0.017410206, 0.0009219652, -0.00006683949), metal::float4(0.0000054936227, -0.00000048346243, 0.00000004524427, -0.0000000042841144), metal::float4(3.0082288, -0.0143803, 0.0006225238, -0.000036912148), metal::float4(0.0000024818357, -0.00000017867475, 0.0000000135952245, -0.0000000010526833), metal::float4(2.9816978, -0.01226584, 0.00044896934, -0.000022518867), metal::float4(0.0000012809368, -0.00000007802119, 0.000000005005015, -0.00000000032763658), metal::float4(2.9588, -0.010704613, 0.00033936297, -0.000014747889), metal::float4(0.0000007269362, -0.00000003836955, 0.0000000021282425, -0.00000000012052404), metal::float4(2.929393, -0.018002173, 0.00095039775, -0.00006881249), metal::float4(0.0000056513745, -0.0000004970702, 0.00000004649744, -0.00000000440129), metal::float4(2.8967168, -0.014878061, 0.0006420499, -0.000038019614), metal::float4(0.000002554242, -0.0000001837827, 0.000000013977669, -0.0000000010819079), metal::float4(2.8692605, -0.012696815, 0.00046325443, -0.000023203835), metal::float4(0.0000013188106, -0.000000080281076, 0.000000005147651, -0.00000000033688075), metal::float4(2.8455532, -0.011085614, 0.0003502952, -0.000015201849), metal::float4(0.00000074868024, -0.000000039493628, 0.0000000021895872, -0.00000000012397017), metal::float4(2.815091, -0.018653564, 0.0009815063, -0.00007096336), metal::float4(0.000005822963, -0.0000005118478, 0.000000047856616, -0.000000004528255), metal::float4(2.7812214, -0.015426309, 0.0006634432, -0.0000392285), metal::float4(0.0000026330981, -0.00000018933653, 0.000000014392947, -0.0000000011136372), metal::float4(2.7527456, -0.013171851, 0.00047892373, -0.000023952363), metal::float4(0.0000013601024, -0.000000082740854, 0.0000000053027023, -0.00000000034688163), metal::float4(2.7281454, -0.011505804, 0.00036229877, -0.000015698415), metal::float4(0.00000077240867, -0.000000040718195, 0.0000000022563267, -0.00000000012772361), metal::float4(2.696519, -0.019372422, 0.0010157079, -0.000073319046), metal::float4(0.0000060104376, -0.00000052796565, 0.00000004933704, -0.000000004666397), metal::float4(2.6613321, -0.01603169, 0.0006869972, -0.000040554365), metal::float4(0.0000027193719, -0.00000019540201, 0.0000000148458685, -0.0000000011482246), metal::float4(2.6317303, -0.0136965765, 0.00049619644, -0.000024774296), metal::float4(0.0000014053304, -0.00000008543022, 0.000000005471989, -0.0000000003578311), metal::float4(2.606144, -0.011970042, 0.0003755443, -0.000016244237), metal::float4(0.0000007984251, -0.00000004205842, 0.000000002329264, -0.000000000131811), metal::float4(2.573231, -0.020166716, 0.0010534975, -0.000075911834), metal::float4(0.0000062162558, -0.00000054562787, 0.0000000509569, -0.0000000048173803), metal::float4(2.536589, -0.016700514, 0.0007130596, -0.000042015832), metal::float4(0.0000028142244, -0.00000020205817, 0.000000015342142, -0.0000000011860406), metal::float4(2.5057435, -0.014276106, 0.000515331, -0.000025681413), metal::float4(0.0000014551165, -0.000000088384986, 0.000000005657702, -0.00000000036982772), metal::float4(2.4790678, -0.01248253, 0.0003902321, -0.000016847269), metal::float4(0.0000008270938, -0.00000004353243, 0.0000000024093687, -0.0000000001362972), metal::float4(2.4447355, -0.02104281, 0.001095453, -0.00007878026), metal::float4(0.000006443364, -0.00000056507946, 0.000000052738095, -0.0000000049831614), metal::float4(2.4064891, -0.017437218, 0.0007420323, -0.000043635056), metal::float4(0.0000029190458, -0.00000020939954, 0.000000015888661, -0.0000000012276562), metal::float4(2.3742747, -0.014913496, 0.0005366236, -0.00002668767), metal::float4(0.0000015102039, -0.000000091648126, 0.00000000586246, -0.00000000038298698), metal::float4(2.3464022, -0.01304529, 0.00040658945, -0.000017516893), metal::float4(0.0000008588491, -0.000000045162007, 0.00000000249777, -0.00000000014122747), metal::float4(2.3105128, -0.022002447, 0.0011422209, -0.000081969505), metal::float4(0.000006695264, -0.0000005866131, 0.000000054706796, -0.0000000051661893), metal::float4(2.2705123, -0.018241411, 0.00077435584, -0.000045437824), metal::float4(0.0000030354806, -0.00000021753901, 0.000000016493642, -0.000000001273647), metal::float4(2.236806, -0.015606855, 0.00056039204, -0.000027809185), metal::float4(0.0000015714677, -0.00000009527039, 0.000000006089433, -0.00000000039760462), metal::float4(2.2076337, -0.013655325, 0.00042485518, -0.000018263856), metal::float4(0.00000089419996, -0.00000004697286, 0.0000000025958737, -0.00000000014669865), metal::float4(2.1700609, -0.023037259, 0.0011944568, -0.00008553065), metal::float4(0.0000069760285, -0.00000061057364, 0.000000056894102, -0.0000000053692695), metal::float4(2.1281753, -0.019102605, 0.00081045576, -0.000047452715), metal::float4(0.0000031654206, -0.00000022660836, 0.000000017166768, -0.000000001324767), metal::float4(2.0928764, -0.016344287, 0.00058692734, -0.000029063465), metal::float4(0.0000016399031, -0.000000099310945, 0.0000000063422583, -0.00000000041385917), metal::float4(2.0623264, -0.014299758, 0.00044523497, -0.00001909959), metal::float4(0.0000009337183, -0.000000048994558, 0.0000000027052582, -0.00000000015282353), metal::float4(2.022984, -0.024119532, 0.0012526698, -0.00008951629), metal::float4(0.000007290149, -0.0000006373527, 0.00000005933588, -0.000000005595746), metal::float4(1.979139, -0.019991564, 0.00085060863, -0.00004970783), metal::float4(0.0000033108984, -0.00000023675476, 0.000000017919117, -0.0000000013818449), metal::float4(1.942207, -0.017095732, 0.00061637646, -0.000030466854), metal::float4(0.0000017165502, -0.00000010383447, 0.0000000066250836, -0.00000000043201887), metal::float4(1.9102618, -0.014948109, 0.00046779844, -0.000020034176), metal::float4(0.0000009779849, -0.00000005125901, 0.0000000028277016, -0.00000000015964474), metal::float4(1.8691553, -0.025187917, 0.0013168737, -0.000093968345), metal::float4(0.000007641974, -0.0000006673582, 0.00000006207099, -0.0000000058492855), metal::float4(1.8233994, -0.020847276, 0.0008946555, -0.00005222205), metal::float4(0.0000034737473, -0.00000024812485, 0.000000018762261, -0.0000000014457795), metal::float4(1.7849144, -0.017800989, 0.0006485017, -0.00003202801), metal::float4(0.0000018022729, -0.000000108902384, 0.0000000069421056, -0.0000000004523848), metal::float4(1.7516758, -0.015541209, 0.0004922726, -0.000021071275), metal::float4(0.000001027437, -0.000000053794814, 0.0000000029649403, -0.00000000016729018), metal::float4(1.7089858, -0.026127469, 0.0013859146, -0.000098889126), metal::float4(0.000008034221, -0.00000070092483, 0.00000006513523, -0.0000000061335106), metal::float4(1.661593, -0.02155937, 0.00094147393, -0.000054985212), metal::float4(0.0000036547415, -0.00000026082154, 0.00000001970593, -0.0000000015174422), metal::float4(1.6218514, -0.01835404, 0.00068225386, -0.000033733508), metal::float4(0.0000018972198, -0.0000001145496, 0.0000000072964355, -0.0000000004751515), metal::float4(1.5876296, -0.015977072, 0.0005176902, -0.00002219729), metal::float4(0.0000010820094, -0.000000056613743, 0.0000000031180836, -0.00000000017583979), metal::float4(1.5438341, -0.026745113, 0.0014563905, -0.00010418113), metal::float4(0.000008464568, -0.0000007380944, 0.00000006854569, -0.0000000064507653), metal::float4(1.4954515, -0.021947289, 0.0009881904, -0.000057918332), metal::float4(0.000003851704, -0.00000027480246, 0.000000020751955, -0.000000001597166), metal::float4(1.4551003, -0.018584935, 0.0007151847, -0.000035519966), metal::float4(0.0000019996733, -0.00000012073113, 0.000000007687485, -0.00000000050042903), metal::float4(1.4205356, -0.016094834, 0.00054194545, -0.000023360897), metal::float4(0.0000011403876, -0.00000005968042, 0.000000003286317, -0.00000000018528468), metal::float4(1.3765777, -0.026741873, 0.0015214762, -0.00010953786), metal::float4(0.0000089188425, -0.00000077814497, 0.000000072265436, -0.000000006799411), metal::float4(1.3284252, -0.021736078, 0.0010295288, -0.000060804487), metal::float4(0.0000040558825, -0.00000028966952, 0.000000021881299, -0.0000000016840769), metal::float4(1.2886416, -0.018237479, 0.0007431373, -0.00003722715), metal::float4(0.0000021039357, -0.000000127216, 0.000000008105257, -0.00000000052774496), metal::float4(1.2548714, -0.015653165, 0.00056172244, -0.00002443957), metal::float4(0.0000011986928, -0.00000006285337, 0.0000000034641143, -0.0000000001954179), metal::float4(1.2123915, -0.025669008, 0.0015716114, -0.000114269154), metal::float4(0.000009359751, -0.00000081871406, 0.0000000761339, -0.0000000071681012), metal::float4(1.1665534, -0.020507988, 0.0010593316, -0.000063177686), metal::float4(0.000004246493, -0.00000030429752, 0.00000002302945, -0.0000000017743171), metal::float4(1.1293287, -0.016913543, 0.0007623282, -0.00003851879), metal::float4(0.0000021974927, -0.0000001334076, 0.00000000852023, -0.0000000005555725), metal::float4(1.0982742, -0.0142653985, 0.00057499664, -0.000025177267), metal::float4(0.0000012489646, -0.000000065789614, 0.0000000036365875, -0.00000000020552937), metal::float4(1.0600606, -0.022765124, 0.0016065057, -0.000116895484), metal::float4(0.000009718163, -0.00000085442923, 0.00000007975475, -0.000000007525863), metal::float4(1.0201536, -0.017486874, 0.0010848793, -0.00006394562), metal::float4(0.0000043910923, -0.0000003162387, 0.000000024051475, -0.000000001858278), metal::float4(0.9890693, -0.013795619, 0.00078597997, -0.00003848282), metal::float4(0.0000022658453, -0.00000013800106, 0.000000008871655, -0.00000000058034155), metal::float4(0.9643464, -0.01105056, 0.0006002069, -0.000024733703), metal::float4(0.0000012869389, -0.00000006768162, 0.000000003776423, -0.00000000021408253), metal::float4(0.93601894, -0.01600197, 0.0017300105, -0.00011061144), metal::float4(0.000010079049, -0.0000008684125, 0.0000000826543, -0.0000000077986275), metal::float4(0.910188, -0.01014341, 0.0012541759, -0.00005498795), metal::float4(0.0000047320996, -0.0000003095109, 0.000000025183692, -0.0000000018972703), metal::float4(0.8945452, -0.0056558223, 0.0010179977, -0.000026360902), metal::float4(0.0000027362382, -0.00000011889169, 0.000000009967572, -0.0000000005541012), metal::float4(0.8871352, -0.0018204233, 0.0009180593, -0.000007889442), metal::float4(0.0000020247833, -0.000000031811947, 0.000000005627185, -0.0000000001276832)}};
-    type_9 MS_BK_ERFINV_W = type_9 {{metal::float4(4.0847907, 0.23805167, -0.0065722, 0.00035707987), metal::float4(-0.00002402215, 0.0000017950236, -0.00000014368759, 0.0000000115537375), metal::float4(4.537127, 0.21539979, -0.004890394, 0.00021908246), metal::float4(-0.0000121752, 0.00000075388596, -0.000000050288303, 0.000000003464292), metal::float4(4.9499445, 0.19812965, -0.003817813, 0.00014543012), metal::float4(-0.0000068792533, 0.00000036283808, -0.000000020583688, 0.0000000012122374), metal::float4(5.331996, 0.18440899, -0.0030855183, 0.00010220255), metal::float4(-0.000004207019, 0.00000019318979, -0.0000000095291295, 0.0000000004892762), metal::float4(5.8599133, 0.33653504, -0.009400734, 0.0005206732), metal::float4(-0.000035867182, 0.000002757981, -0.00000023015748, 0.000000019792743), metal::float4(6.4990478, 0.30421674, -0.0069607254, 0.0003162562), metal::float4(-0.00001788632, 0.0000011297641, -0.00000007708788, 0.0000000054481575), metal::float4(7.081914, 0.27967435, -0.0054173684, 0.00020858926), metal::float4(-0.0000100035295, 0.00000053599996, -0.00000003094365, 0.0000000018562574), metal::float4(7.621117, 0.26022553, -0.0043693497, 0.00014594554), metal::float4(-0.0000060745874, 0.0000002825655, -0.000000014139069, 0.00000000073704953), metal::float4(8.365978, 0.47478202, -0.0132863475, 0.00074028183), metal::float4(-0.0000514196, 0.0000039930333, -0.00000033704123, 0.000000029332409), metal::float4(9.267606, 0.42914096, -0.009823337, 0.00044806645), metal::float4(-0.000025490534, 0.0000016217386, -0.00000011159105, 0.000000007958128), metal::float4(10.089817, 0.39452025, -0.007639068, 0.00029490137), metal::float4(-0.000014204039, 0.0000007652497, -0.000000044464695, 0.000000002686253), metal::float4(10.850455, 0.36710206, -0.0061583975, 0.00020605928), metal::float4(-0.000008604421, 0.00000040195354, -0.000000020215943, 0.0000000010598242)}};
     uint _e2 = ms_k_index(id_7, groups_7, ms_in, _buffer_sizes);
-    if (_e2 == naga_div(1 + (_buffer_sizes.size4 - 0 - 16) / 16, MS_K_IN)) {
+    if (_e2 == naga_div(1 + (_buffer_sizes.size1 - 0 - 16) / 16, MS_K_IN)) {
         return;
     }
     MsConductor _e8 = ms_k_conductor(_e2, ms_in, _buffer_sizes);
     metal::float4 r0_5 = ms_in[_e2 * MS_K_IN];
     metal::float4 r1_ = ms_in[(_e2 * MS_K_IN) + 1u];
-    MsBsdfSample _e24 = ms_conductor_sample(_e8, r1_.xyz, r1_.w, r0_5.zw, MS_BK_ERFCX, MS_BK_ERFC_RATIO, MS_BK_ERFINV_Q, MS_BK_ERFINV_W);
+    MsBsdfSample _e24 = ms_conductor_sample(_e8, r1_.xyz, r1_.w, r0_5.zw, ms_tables, _buffer_sizes);
     ms_out[_e2 * MS_K_OUT] = metal::float4(_e24.wi, _e24.pdf);
     ms_out[(_e2 * MS_K_OUT) + 1u] = metal::float4(_e24.f, static_cast<float>(_e24.flags));
     return;
@@ -2779,22 +3865,22 @@ struct ms_k_dielectric_evalInput {
 kernel void ms_k_dielectric_eval(
   metal::uint3 id_8 [[thread_position_in_grid]]
 , metal::uint3 groups_8 [[threadgroups_per_grid]]
-, device type_10 const& ms_in [[user(fake0)]]
-, device type_10& ms_out [[user(fake0)]]
+, device type_7 const& ms_tables [[user(fake0)]]
+, device type_7 const& ms_in [[user(fake0)]]
+, device type_7& ms_out [[user(fake0)]]
 , constant _mslBufferSizes& _buffer_sizes [[user(fake0)]]
 ) {
-    type_7 MS_BK_ERFC_RATIO = type_7 {{metal::float4(0.9998783, -0.000013520655, 0.000000000116372106, 0.000000000000089372953), metal::float4(0.000000000000054622973, -0.0000000000001831868, -0.000000000000035083048, 0.00000000000010746959), metal::float4(0.9998513, -0.000013520189, 0.00000000011636769, 0.000000000000086985974), metal::float4(0.00000000000005395684, -0.0000000000001777467, -0.00000000000003463896, 0.000000000000104360964), metal::float4(0.9998242, -0.000013519723, 0.000000000116361754, 0.00000000000009531265), metal::float4(0.000000000000056621374, -0.0000000000001926237, -0.000000000000036415315, 0.00000000000011235457), metal::float4(0.99979717, -0.000013519258, 0.00000000011635656, 0.000000000000092870156), metal::float4(0.000000000000056621374, -0.00000000000018840485, -0.000000000000035971226, 0.000000000000109690035), metal::float4(0.99975663, -0.000027037118, 0.0000000004654685, 0.0000000000000806577), metal::float4(0.000000000000056177285, -0.0000000000001761924, -0.000000000000035527137, 0.000000000000103472786), metal::float4(0.9997026, -0.000027035258, 0.0000000004654293, 0.000000000000089595), metal::float4(0.00000000000005973, -0.00000000000019295676, -0.000000000000038191672, 0.00000000000011279866), metal::float4(0.9996485, -0.000027033395, 0.0000000004653939, 0.0000000000000801581), metal::float4(0.000000000000054178884, -0.00000000000017652546, -0.00000000000003463896, 0.000000000000103916875), metal::float4(0.99959445, -0.000027031534, 0.00000000046535684, 0.0000000000000801581), metal::float4(0.00000000000005306866, -0.00000000000017652546, -0.00000000000003419487, 0.000000000000103916875), metal::float4(0.9995133, -0.000054057484, 0.0000000018612636, 0.000000000000038469228), metal::float4(0.000000000000055067062, -0.00000000000018152146, -0.000000000000035527137, 0.0000000000001070255), metal::float4(0.9994052, -0.00005405004, 0.0000000018609614, 0.00000000000003758105), metal::float4(0.000000000000055067062, -0.00000000000017952306, -0.000000000000035527137, 0.00000000000010613732), metal::float4(0.99929714, -0.000054042597, 0.0000000018606601, 0.000000000000044131365), metal::float4(0.000000000000054622973, -0.00000000000019173552, -0.000000000000035527137, 0.00000000000011235457), metal::float4(0.9991891, -0.000054035154, 0.0000000018603591, 0.00000000000004052314), metal::float4(0.000000000000051958438, -0.00000000000018540725, -0.00000000000003330669, 0.000000000000109245946), metal::float4(0.99902695, -0.000108047985, 0.000000007439686, -0.00000000000031830094), metal::float4(0.000000000000054622973, -0.00000000000017141844, -0.000000000000035083048, 0.00000000000010125234), metal::float4(0.9988109, -0.000108018234, 0.0000000074372717, -0.00000000000032190917), metal::float4(0.000000000000056621374, -0.00000000000016553425, -0.000000000000036415315, 0.000000000000098143715), metal::float4(0.9985949, -0.00010798849, 0.00000000743486, -0.00000000000031646907), metal::float4(0.000000000000054845017, -0.00000000000017352786, -0.000000000000035083048, 0.00000000000010169643), metal::float4(0.99837893, -0.00010795875, 0.0000000074324493, -0.00000000000031152858), metal::float4(0.000000000000050404125, -0.00000000000018207658, -0.000000000000031974423, 0.00000000000010658141), metal::float4(0.99805516, -0.00021582833, 0.000000029715395, -0.000000000003128331), metal::float4(0.00000000000005551115, -0.00000000000017486013, -0.000000000000035527137, 0.000000000000103472786), metal::float4(0.9976236, -0.00021570952, 0.00000002969612, -0.000000000003120837), metal::float4(0.000000000000057065463, -0.00000000000018207658, -0.000000000000035971226, 0.00000000000010658141), metal::float4(0.9971923, -0.00021559077, 0.000000029676862, -0.0000000000031179503), metal::float4(0.000000000000051292304, -0.00000000000018363089, -0.000000000000032418512, 0.00000000000010746959), metal::float4(0.99676126, -0.0002154721, 0.000000029657613, -0.0000000000031167846), metal::float4(0.00000000000005973, -0.00000000000018129942, -0.000000000000038191672, 0.00000000000010613732), metal::float4(0.9961151, -0.00043058846, 0.00000011851517, -0.000000000025533409), metal::float4(0.000000000000054622973, -0.00000000000018196555, -0.000000000000031974423, 0.0000000000001070255), metal::float4(0.9952544, -0.0004301147, 0.00000011836154, -0.00000000002549444), metal::float4(0.00000000000005750955, -0.00000000000018396396, -0.00000000000003375078, 0.00000000000010791368), metal::float4(0.9943946, -0.00042964157, 0.00000011820814, -0.0000000000254613), metal::float4(0.00000000000005750955, -0.0000000000001771916, -0.00000000000003330669, 0.000000000000104805054), metal::float4(0.9935358, -0.00042916907, 0.00000011805497, -0.000000000025424052), metal::float4(0.0000000000000577316, -0.00000000000017463808, -0.00000000000003419487, 0.00000000000010258461), metal::float4(0.99224937, -0.0008569228, 0.0000004713026, -0.00000000020354624), metal::float4(0.00000000000012922996, -0.00000000000017463808, -0.00000000000003463896, 0.00000000000010258461), metal::float4(0.9905374, -0.00085504004, 0.0000004700826, -0.00000000020295265), metal::float4(0.0000000000001298961, -0.00000000000016986412, -0.000000000000035527137, 0.00000000000010036416), metal::float4(0.9888292, -0.00085316214, 0.00000046886615, -0.00000000020235569), metal::float4(0.00000000000012811974, -0.00000000000017386093, -0.00000000000003463896, 0.00000000000010214052), metal::float4(0.98712474, -0.00085128914, 0.0000004676533, -0.00000000020176294), metal::float4(0.00000000000012834178, -0.00000000000017452706, -0.000000000000035083048, 0.0000000000001030287), metal::float4(0.9845751, -0.0016969773, 0.0000018633626, -0.0000000016076107), metal::float4(0.0000000000012352341, -0.00000000000018551827, -0.000000000000036859404, 0.000000000000108801856), metal::float4(0.9811886, -0.0016895431, 0.0000018537446, -0.0000000015982158), metal::float4(0.0000000000012265744, -0.00000000000018851587, -0.000000000000035971226, 0.000000000000109245946), metal::float4(0.9778169, -0.0016821473, 0.0000018441829, -0.0000000015888955), metal::float4(0.0000000000012161383, -0.00000000000016819879, -0.00000000000003375078, 0.000000000000098143715), metal::float4(0.97445995, -0.0016747896, 0.0000018346768, -0.0000000015796264), metal::float4(0.000000000001209477, -0.00000000000016719959, -0.00000000000003463896, 0.000000000000098587805), metal::float4(0.9694521, -0.0033276482, 0.0000072820867, -0.000000012527211), metal::float4(0.000000000018354651, -0.00000000000019839685, -0.000000000000031974423, 0.000000000000103472786), metal::float4(0.9628258, -0.0032986696, 0.0000072073603, -0.00000001238172), metal::float4(0.000000000018118618, -0.00000000000019206858, -0.000000000000031530334, 0.000000000000098587805), metal::float4(0.95625716, -0.003269988, 0.000007133501, -0.000000012238096), metal::float4(0.000000000017883695, -0.00000000000018784974, -0.000000000000029309888, 0.000000000000097699626), metal::float4(0.94974566, -0.0032416002, 0.0000070604983, -0.000000012096301), metal::float4(0.00000000001765632, -0.00000000000019806379, -0.000000000000029753977, 0.0000000000001030287), metal::float4(0.94008404, -0.006399124, 0.000027810303, -0.00000009509669), metal::float4(0.00000000027642266, -0.0000000000008895107, -0.000000000000031086245, 0.000000000000104805054), metal::float4(0.9273963, -0.006289015, 0.000027246298, -0.00000009291387), metal::float4(0.00000000026941782, -0.000000000000856093, -0.000000000000031530334, 0.00000000000009636736), metal::float4(0.9149265, -0.0061811362, 0.000026695225, -0.00000009078632), metal::float4(0.00000000026260571, -0.00000000000083555385, -0.000000000000031974423, 0.00000000000009503509), metal::float4(0.9026703, -0.0060754367, 0.000026156755, -0.00000008871252), metal::float4(0.00000000025598057, -0.00000000000082167606, -0.000000000000031974423, 0.000000000000099031894), metal::float4(0.88467705, -0.011841728, 0.000101487945, -0.00000068559564), metal::float4(0.0000000039413006, -0.00000000002022571, 0.00000000000006039613, 0.000000000000098143715), metal::float4(0.8613941, -0.0114438785, 0.00009746738, -0.0000006548533), metal::float4(0.0000000037461754, -0.000000000019134916, 0.00000000000005728751, 0.00000000000009148238), metal::float4(0.838891, -0.011061749, 0.000093626666, -0.0000006256297), metal::float4(0.0000000035615182, -0.000000000018111956, 0.000000000000053290705, 0.000000000000087041485), metal::float4(0.8171371, -0.010694638, 0.00008995695, -0.00000059784344), metal::float4(0.0000000033867338, -0.000000000017152058, 0.000000000000047073456, 0.00000000000008615331), metal::float4(0.78584695, -0.020341357, 0.00033901897, -0.0000044695416), metal::float4(0.000000050268525, -0.0000000005015497, 0.000000000004514167, 0.00000000000003996803), metal::float4(0.7464853, -0.019037347, 0.0003133691, -0.000004086745), metal::float4(0.000000045516558, -0.00000000045011284, 0.0000000000040136783, 0.000000000000047073456), metal::float4(0.7096321, -0.01783149, 0.000289906, -0.0000037399832), metal::float4(0.000000041250228, -0.0000000004043006, 0.000000000003574474, 0.000000000000046185278), metal::float4(0.6750995, -0.016715458, 0.0002684246, -0.0000034255886), metal::float4(0.000000037416495, -0.0000000003634768, 0.0000000000031872283, 0.000000000000046185278), metal::float4(0.6272794, -0.030387005, 0.0009580818, -0.000024061048), metal::float4(0.00000051801413, -0.000000009927543, 0.00000000017332358, -0.0000000000027222669), metal::float4(0.57015324, -0.026827596, 0.0008253934, -0.000020287804), metal::float4(0.0000004283978, -0.000000008065489, 0.00000000013850876, -0.0000000000021382895), metal::float4(0.5196439, -0.023756387, 0.0007133347, -0.000017162258), metal::float4(0.00000035547052, -0.0000000065749886, 0.00000000011106582, -0.000000000001677547), metal::float4(0.47485265, -0.021098126, 0.000618392, -0.000014564653), metal::float4(0.00000029592425, -0.000000005377808, 0.00000000008935852, -0.0000000000013233858), metal::float4(0.4167533, -0.035502225, 0.0020077599, -0.0000916237), metal::float4(0.000003617964, -0.00000012807482, 0.0000000041592605, -0.00000000012519785), metal::float4(0.35310093, -0.028464397, 0.0015355214, -0.00006720277), metal::float4(0.0000025549414, -0.00000008734229, 0.00000000274549, -0.00000000008015033), metal::float4(0.30181482, -0.023053482, 0.0011872437, -0.00004985952), metal::float4(0.0000018258146, -0.000000060294994, 0.0000000018349833, -0.000000000051961768), metal::float4(0.26008537, -0.018848889, 0.00092748983, -0.000037398404), metal::float4(0.0000013196806, -0.00000004211374, 0.00000000124123, -0.000000000034098946), metal::float4(0.21097384, -0.02833318, 0.0026085791, -0.00019815165), metal::float4(0.000013240014, -0.0000008032937, 0.000000045332847, -0.000000002383124), metal::float4(0.16334534, -0.019909557, 0.0016825865, -0.00011829047), metal::float4(0.000007361291, -0.00000041804822, 0.00000002216081, -0.0000000010987664), metal::float4(0.12941593, -0.014392785, 0.0011207133, -0.00007312401), metal::float4(0.0000042474107, -0.00000022617557, 0.000000011279408, -0.00000000052811067), metal::float4(0.1045896, -0.010667653, 0.00076819374, -0.00004665181), metal::float4(0.000002534995, -0.00000012680964, 0.000000005958998, -0.0000000002638087), metal::float4(0.07841912, -0.014176364, 0.0018281857, -0.00020045321), metal::float4(0.000019795682, -0.0000018097585, 0.00000015757479, -0.000000012851965), metal::float4(0.0560429, -0.008755298, 0.0009860945, -0.00009524624), metal::float4(0.000008346028, -0.00000068116896, 0.000000053103143, -0.000000003906189), metal::float4(0.04182938, -0.0057326877, 0.0005708639, -0.00004907507), metal::float4(0.00000384914, -0.00000028258418, 0.00000001986625, -0.000000001325575), metal::float4(0.03230852, -0.0039342963, 0.00035016204, -0.000027042239), metal::float4(0.0000019139986, -0.00000012730473, 0.000000008125588, -0.0000000004946015), metal::float4(0.023056017, -0.0047972575, 0.0007341793, -0.00009804619), metal::float4(0.0000120590175, -0.0000014004432, 0.00000015913854, -0.000000017034818), metal::float4(0.015770199, -0.0027393384, 0.0003519189, -0.000039650156), metal::float4(0.0000041337757, -0.00000040863492, 0.00000003944863, -0.00000000362363), metal::float4(0.011437163, -0.0017017398, 0.00018792653, -0.000018260866), metal::float4(0.0000016470873, -0.0000001412674, 0.000000011818231, -0.0000000009471726), metal::float4(0.00866178, -0.0011258711, 0.0001088732, -0.0000092847595), metal::float4(0.0000007365851, -0.000000055677763, 0.0000000041018984, -0.00000000029088262), metal::float4(0.006061911, -0.0013231621, 0.00021536356, -0.000030982304), metal::float4(0.000004154092, -0.0000005319391, 0.00000006779496, -0.0000000081705505), metal::float4(0.0040820343, -0.0007332432, 0.00009839357, -0.000011690638), metal::float4(0.0000012970188, -0.00000013763658, 0.0000000144309, -0.0000000014465321), metal::float4(0.002932701, -0.00044726077, 0.00005101198, -0.000005157015), metal::float4(0.0000004873513, -0.000000044093955, 0.0000000039244634, -0.0000000003361419), metal::float4(0.0022075695, -0.0002924102, 0.000028986162, -0.000002548597), metal::float4(0.00000020962135, -0.000000016517234, 0.000000001276658, -0.00000000009536809), metal::float4(0.00153612, -0.00033979642, 0.000056287994, -0.000008275684), metal::float4(0.0000011385838, -0.0000001502121, 0.000000019849313, -0.0000000024841724), metal::float4(0.0010298727, -0.00018667341, 0.000025351253, -0.0000030571844), metal::float4(0.00000034523006, -0.000000037393693, 0.0000000040174672, -0.00000000041333592), metal::float4(0.0007380098, -0.00011328932, 0.000013033428, -0.000001331858), metal::float4(0.0000001274904, -0.00000001170815, 0.0000000010604964, -0.0000000000925777), metal::float4(0.00055463216, -0.00007382818, 0.000007366494, -0.0000006529916), metal::float4(0.000000054233485, -0.00000000432196, 0.0000000003384992, -0.000000000025654366)}};
     uint _e2 = ms_k_index(id_8, groups_8, ms_in, _buffer_sizes);
-    if (_e2 == naga_div(1 + (_buffer_sizes.size4 - 0 - 16) / 16, MS_K_IN)) {
+    if (_e2 == naga_div(1 + (_buffer_sizes.size1 - 0 - 16) / 16, MS_K_IN)) {
         return;
     }
     MsDielectric _e8 = ms_k_dielectric(_e2, ms_in, _buffer_sizes);
     metal::float4 _e15 = ms_in[(_e2 * MS_K_IN) + 1u];
-    metal::float3 wo_43 = _e15.xyz;
+    metal::float3 wo_47 = _e15.xyz;
     metal::float4 _e23 = ms_in[(_e2 * MS_K_IN) + 2u];
-    metal::float3 wi_38 = _e23.xyz;
-    float _e29 = ms_dielectric_eval(_e8, wo_43, wi_38, MS_BK_ERFC_RATIO);
-    float _e30 = ms_dielectric_pdf(_e8, wo_43, wi_38, MS_BK_ERFC_RATIO);
+    metal::float3 wi_42 = _e23.xyz;
+    float _e29 = ms_dielectric_eval(_e8, wo_47, wi_42, ms_tables, _buffer_sizes);
+    float _e30 = ms_dielectric_pdf(_e8, wo_47, wi_42, ms_tables, _buffer_sizes);
     ms_out[_e2 * MS_K_OUT] = metal::float4(_e29, _e30, 0.0, 0.0);
     ms_out[(_e2 * MS_K_OUT) + 1u] = metal::float4(0.0);
     return;
@@ -2806,23 +3892,147 @@ struct ms_k_dielectric_sampleInput {
 kernel void ms_k_dielectric_sample(
   metal::uint3 id_9 [[thread_position_in_grid]]
 , metal::uint3 groups_9 [[threadgroups_per_grid]]
-, device type_10 const& ms_in [[user(fake0)]]
-, device type_10& ms_out [[user(fake0)]]
+, device type_7 const& ms_tables [[user(fake0)]]
+, device type_7 const& ms_in [[user(fake0)]]
+, device type_7& ms_out [[user(fake0)]]
 , constant _mslBufferSizes& _buffer_sizes [[user(fake0)]]
 ) {
-    type_7 MS_BK_ERFCX = type_7 {{metal::float4(0.9999225, -0.000008607803, 0.000000000058177935, 0.00000000000008471002), metal::float4(0.00000000000004973799, -0.00000000000017230661, -0.000000000000031530334, 0.00000000000010125234), metal::float4(0.9999053, -0.00000860757, 0.00000000005817566, 0.00000000000008326673), metal::float4(0.000000000000051736393, -0.00000000000017030821, -0.00000000000003330669, 0.00000000000010036416), metal::float4(0.9998881, -0.000008607337, 0.000000000058172744, 0.0000000000000930922), metal::float4(0.000000000000052402527, -0.00000000000018574031, -0.0000000000000328626, 0.00000000000010791368), metal::float4(0.9998709, -0.000008607104, 0.000000000058170968, 0.00000000000008915091), metal::float4(0.000000000000054845017, -0.00000000000018163249, -0.000000000000035527137, 0.00000000000010658141), metal::float4(0.9998451, -0.00001721351, 0.00000000023273894, 0.00000000000009314771), metal::float4(0.000000000000047517545, -0.0000000000001911804, -0.000000000000030198066, 0.0000000000001110223), metal::float4(0.99981064, -0.000017212578, 0.00000000023271904, 0.000000000000092370556), metal::float4(0.00000000000005684342, -0.00000000000019029223, -0.000000000000035971226, 0.0000000000001110223), metal::float4(0.9997762, -0.000017211647, 0.00000000023270427, 0.00000000000009003909), metal::float4(0.00000000000005306866, -0.00000000000018607338, -0.00000000000003330669, 0.00000000000010835777), metal::float4(0.9997418, -0.000017210717, 0.00000000023268884, 0.00000000000008837375), metal::float4(0.000000000000054400928, -0.00000000000017963409, -0.000000000000035083048, 0.000000000000103916875), metal::float4(0.9996902, -0.00003441864, 0.0000000009307227, 0.000000000000070665696), metal::float4(0.000000000000056621374, -0.00000000000018485213, -0.000000000000036415315, 0.00000000000010791368), metal::float4(0.99962133, -0.00003441492, 0.0000000009305945, 0.00000000000007438494), metal::float4(0.00000000000005639933, -0.00000000000019229063, -0.000000000000035971226, 0.00000000000011191048), metal::float4(0.9995525, -0.000034411194, 0.0000000009304685, 0.00000000000006267209), metal::float4(0.00000000000005151435, -0.00000000000017219559, -0.00000000000003330669, 0.00000000000010169643), metal::float4(0.9994837, -0.000034407472, 0.0000000009303388, 0.000000000000073996365), metal::float4(0.000000000000055289107, -0.00000000000019084734, -0.000000000000035527137, 0.00000000000011057821), metal::float4(0.99938047, -0.00006880378, 0.0000000037206538, -0.00000000000008376633), metal::float4(0.000000000000054845017, -0.00000000000017730262, -0.000000000000035527137, 0.000000000000104360964), metal::float4(0.99924284, -0.000068788904, 0.0000000037196282, -0.00000000000008493206), metal::float4(0.000000000000054400928, -0.00000000000017497115, -0.00000000000003419487, 0.0000000000001030287), metal::float4(0.99910533, -0.000068774025, 0.0000000037186056, -0.00000000000007971401), metal::float4(0.00000000000005107026, -0.00000000000018074431, -0.000000000000032418512, 0.000000000000104805054), metal::float4(0.99896777, -0.00006875915, 0.0000000037175791, -0.00000000000007582823), metal::float4(0.000000000000056621374, -0.00000000000019029223, -0.000000000000035527137, 0.0000000000001110223), metal::float4(0.99876153, -0.0001374737, 0.000000014864249, -0.0000000000012666534), metal::float4(0.000000000000052402527, -0.00000000000019473312, -0.00000000000003375078, 0.00000000000011279866), metal::float4(0.99848664, -0.00013741427, 0.000000014856064, -0.0000000000012739254), metal::float4(0.000000000000055289107, -0.00000000000018085533, -0.000000000000035083048, 0.00000000000010613732), metal::float4(0.99821186, -0.00013735486, 0.000000014847887, -0.0000000000012725376), metal::float4(0.000000000000050404125, -0.00000000000018096635, -0.000000000000031974423, 0.00000000000010569323), metal::float4(0.9979372, -0.00013729549, 0.000000014839712, -0.0000000000012732593), metal::float4(0.0000000000000577316, -0.00000000000018152146, -0.000000000000036859404, 0.0000000000001070255), metal::float4(0.99752545, -0.00027441297, 0.000000059309926, -0.000000000010789258), metal::float4(0.000000000000051736393, -0.00000000000018762769, -0.000000000000031974423, 0.000000000000109245946), metal::float4(0.9969769, -0.00027417587, 0.000000059244666, -0.000000000010777879), metal::float4(0.00000000000005595524, -0.00000000000018329782, -0.000000000000035083048, 0.0000000000001070255), metal::float4(0.9964288, -0.00027393902, 0.000000059179495, -0.0000000000107598375), metal::float4(0.00000000000005795364, -0.00000000000019095836, -0.000000000000035971226, 0.00000000000011191048), metal::float4(0.99588114, -0.00027370243, 0.00000005911441, -0.000000000010746071), metal::float4(0.000000000000058619776, -0.00000000000018851587, -0.000000000000036415315, 0.000000000000109245946), metal::float4(0.99506056, -0.0005466961, 0.00000023606782, -0.00000000008645806), metal::float4(0.00000000000008104628, -0.00000000000019739765, -0.00000000000003375078, 0.00000000000011457502), metal::float4(0.9939681, -0.0005457528, 0.00000023554915, -0.000000000086238516), metal::float4(0.000000000000079269924, -0.0000000000001881828, -0.00000000000003330669, 0.000000000000108801856), metal::float4(0.99287754, -0.00054481166, 0.00000023503182, -0.0000000000860223), metal::float4(0.00000000000008326673, -0.00000000000017630342, -0.000000000000035083048, 0.0000000000001030287), metal::float4(0.99178886, -0.00054387253, 0.00000023451582, -0.000000000085797314), metal::float4(0.00000000000008726353, -0.00000000000018129942, -0.00000000000003863576, 0.00000000000010613732), metal::float4(0.99015933, -0.0010849356, 0.00000093497744, -0.0000000006843407), metal::float4(0.0000000000004958256, -0.00000000000018651747, -0.00000000000003375078, 0.00000000000010835777), metal::float4(0.9879932, -0.0010812038, 0.00000093088147, -0.00000000068081535), metal::float4(0.0000000000004967138, -0.0000000000001757483, -0.000000000000035971226, 0.000000000000103472786), metal::float4(0.98583454, -0.0010774885, 0.0000009268066, -0.00000000067730505), metal::float4(0.00000000000049449334, -0.00000000000016886492, -0.000000000000036415315, 0.000000000000099031894), metal::float4(0.9836832, -0.0010737894, 0.00000092275275, -0.0000000006738057), metal::float4(0.0000000000004898304, -0.00000000000018474111, -0.000000000000035083048, 0.00000000000010835777), metal::float4(0.9804702, -0.002136542, 0.0000036668446, -0.000000005349492), metal::float4(0.0000000000069506623, -0.00000000000018463009, -0.000000000000030642155, 0.000000000000103472786), metal::float4(0.9762117, -0.0021219386, 0.000003634912, -0.000000005294606), metal::float4(0.0000000000068760553, -0.00000000000016997515, -0.00000000000003463896, 0.00000000000009636736), metal::float4(0.9719823, -0.0021074624, 0.000003603307, -0.0000000052403415), metal::float4(0.0000000000067961192, -0.00000000000017919, -0.00000000000003419487, 0.00000000000010036416), metal::float4(0.9677818, -0.0020931116, 0.0000035720257, -0.0000000051867053), metal::float4(0.00000000000672018, -0.00000000000018951507, -0.000000000000035527137, 0.00000000000010524914), metal::float4(0.96153444, -0.0041436376, 0.0000141028095, -0.000000040860034), metal::float4(0.000000000104839026, -0.00000000000040389914, -0.000000000000030198066, 0.00000000000009503509), metal::float4(0.9533033, -0.0040877135, 0.0000138601445, -0.00000004003137), metal::float4(0.00000000010243628, -0.00000000000040412118, -0.0000000000000328626, 0.000000000000097699626), metal::float4(0.9451829, -0.00403275, 0.000013622393, -0.00000003922171), metal::float4(0.00000000010009482, -0.00000000000039857007, -0.00000000000003463896, 0.000000000000098587805), metal::float4(0.93717164, -0.003978728, 0.0000133894455, -0.000000038430567), metal::float4(0.00000000009780243, -0.00000000000038902215, -0.000000000000029309888, 0.00000000000009592327), metal::float4(0.9253549, -0.007798837, 0.00005219515, -0.00000029822098), metal::float4(0.0000000015110095, -0.000000000007114087, -0.0000000000000017763568, 0.00000000000009681145), metal::float4(0.90996367, -0.007593587, 0.00005044154, -0.0000002864066), metal::float4(0.0000000014432613, -0.0000000000067774675, -0.0000000000000053290705, 0.00000000000010214052), metal::float4(0.89497596, -0.007395212, 0.000048757214, -0.0000002751207), metal::float4(0.0000000013788544, -0.0000000000064440675, -0.0000000000000057731597, 0.00000000000009636736), metal::float4(0.8803784, -0.007203441, 0.000047139085, -0.00000026433727), metal::float4(0.0000000013176158, -0.000000000006128653, -0.000000000000006661338, 0.000000000000092370556), metal::float4(0.8591853, -0.013855208, 0.00017931846, -0.0000019924057), metal::float4(0.000000019700584, -0.00000000017741708, 0.0000000000014441781, 0.000000000000082156504), metal::float4(0.8321765, -0.013161226, 0.000167823, -0.0000018416622), metal::float4(0.000000018013315, -0.00000000016064183, 0.0000000000012949641, 0.0000000000000741629), metal::float4(0.8065109, -0.01251147, 0.00015719283, -0.0000017037701), metal::float4(0.000000016484886, -0.00000000014560297, 0.0000000000011577406, 0.00000000000007771561), metal::float4(0.78210336, -0.0119026285, 0.00014735448, -0.0000015775245), metal::float4(0.00000001509912, -0.00000000013207224, 0.0000000000010387247, 0.00000000000007149836), metal::float4(0.7476803, -0.022119032, 0.000535751, -0.000011261245), metal::float4(0.00000021210928, -0.0000000036533685, 0.000000000058341776, -0.0000000000007904788), metal::float4(0.7054984, -0.020104656, 0.0004729953, -0.000009701633), metal::float4(0.00000017884639, -0.0000000030213583, 0.00000000004739409, -0.0000000000006177281), metal::float4(0.6671063, -0.018323604, 0.00041884705, -0.000008384501), metal::float4(0.00000015129326, -0.0000000025070404, 0.00000000003863443, -0.00000000000048361315), metal::float4(0.6320697, -0.016744182, 0.00037197946, -0.0000072685484), metal::float4(0.00000012839418, -0.0000000020870798, 0.000000000031593617, -0.00000000000038458126), metal::float4(0.5849986, -0.029390983, 0.0012518741, -0.000047198217), metal::float4(0.0000016154092, -0.000000051030575, 0.0000000015075681, -0.000000000041826098), metal::float4(0.53087085, -0.024901982, 0.0010037073, -0.00003609688), metal::float4(0.000001184846, -0.000000036036894, 0.0000000010280106, -0.000000000027595037), metal::float4(0.48481083, -0.021285098, 0.0008129084, -0.000027909606), metal::float4(0.00000087906886, -0.000000025752737, 0.0000000007096015, -0.000000000018429702), metal::float4(0.44528228, -0.018342182, 0.0006646467, -0.000021803336), metal::float4(0.0000006593681, -0.000000018613841, 0.00000000049558735, -0.0000000000124527055), metal::float4(0.39569807, -0.029757312, 0.0019981607, -0.00012264443), metal::float4(0.000006987141, -0.00000037349582, 0.000000018967754, -0.00000000091232955), metal::float4(0.3432959, -0.023039434, 0.0014040956, -0.00007910815), metal::float4(0.0000041711164, -0.00000020765906, 0.0000000098661594, -0.0000000004460312), metal::float4(0.3022612, -0.018253779, 0.0010150324, -0.00005269123), metal::float4(0.0000025784761, -0.00000011981767, 0.0000000053355205, -0.00000000022702906), metal::float4(0.26942998, -0.01475209, 0.0007523223, -0.000036117242), metal::float4(0.0000016450233, -0.00000007151112, 0.00000000299032, -0.00000000011994128), metal::float4(0.23108725, -0.022121625, 0.0019995393, -0.0001719072), metal::float4(0.000014136136, -0.0000011168833, 0.00000008599324, -0.0000000063321353), metal::float4(0.19366209, -0.01580941, 0.0012349121, -0.00009272403), metal::float4(0.000006716945, -0.0000004708829, 0.000000032301084, -0.0000000021350468), metal::float4(0.16633534, -0.0117998505, 0.0008085807, -0.00005367924), metal::float4(0.000003460897, -0.00000021716717, 0.000000013379374, -0.0000000007990484), metal::float4(0.14558972, -0.009114064, 0.0005549222, -0.000032926295), metal::float4(0.0000019070969, -0.00000010798676, 0.0000000060202017, -0.00000000032691727), metal::float4(0.1224848, -0.013007964, 0.0013532817, -0.00013807204), metal::float4(0.000013827661, -0.0000013608255, 0.00000013408695, -0.000000012762786), metal::float4(0.10096222, -0.008897383, 0.0007727532, -0.00006618298), metal::float4(0.0000055922324, -0.00000046646701, 0.000000038935426, -0.000000003167861), metal::float4(0.08580567, -0.006452728, 0.00048005197, -0.000035342062), metal::float4(0.0000025755642, -0.00000018585855, 0.0000000134171385, -0.0000000009498649), metal::float4(0.074573696, -0.0048868856, 0.00031760236, -0.000020475041), metal::float4(0.0000013095655, -0.00000008311601, 0.0000000052764815, -0.00000000032987502), metal::float4(0.062307723, -0.0068401345, 0.0007465146, -0.000081003855), metal::float4(0.00000873851, -0.00000093759945, 0.00000010234092, -0.000000010859012), metal::float4(0.051080596, -0.0046060826, 0.00041368822, -0.00003700841), metal::float4(0.0000032976134, -0.00000029272368, 0.000000026292172, -0.000000002315999), metal::float4(0.04327192, -0.0033091987, 0.00025233987, -0.00001918695), metal::float4(0.0000014547079, -0.00000010998697, 0.000000008387229, -0.00000000063057826), metal::float4(0.037529606, -0.0024909754, 0.00016497479, -0.0000109024595), metal::float4(0.00000071892913, -0.00000004730736, 0.000000003133176, -0.00000000020528737), metal::float4(0.031295717, -0.0034666515, 0.0003834194, -0.000042342763), metal::float4(0.000004668181, -0.00000051397853, 0.000000057898873, -0.000000006355341), metal::float4(0.02561857, -0.0023241737, 0.0002106384, -0.000019070545), metal::float4(0.0000017246861, -0.00000015583068, 0.000000014297796, -0.0000000012891967), metal::float4(0.021683585, -0.0016655098, 0.00012783332, -0.000009804431), metal::float4(0.0000007513878, -0.000000057545, 0.0000000044559494, -0.00000000034075398), metal::float4(0.018795889, -0.0012516708, 0.000083306186, -0.0000055414653), metal::float4(0.00000036840203, -0.000000024478858, 0.0000000016400711, -0.00000000010885354)}};
-    type_7 MS_BK_ERFC_RATIO = type_7 {{metal::float4(0.9998783, -0.000013520655, 0.000000000116372106, 0.000000000000089372953), metal::float4(0.000000000000054622973, -0.0000000000001831868, -0.000000000000035083048, 0.00000000000010746959), metal::float4(0.9998513, -0.000013520189, 0.00000000011636769, 0.000000000000086985974), metal::float4(0.00000000000005395684, -0.0000000000001777467, -0.00000000000003463896, 0.000000000000104360964), metal::float4(0.9998242, -0.000013519723, 0.000000000116361754, 0.00000000000009531265), metal::float4(0.000000000000056621374, -0.0000000000001926237, -0.000000000000036415315, 0.00000000000011235457), metal::float4(0.99979717, -0.000013519258, 0.00000000011635656, 0.000000000000092870156), metal::float4(0.000000000000056621374, -0.00000000000018840485, -0.000000000000035971226, 0.000000000000109690035), metal::float4(0.99975663, -0.000027037118, 0.0000000004654685, 0.0000000000000806577), metal::float4(0.000000000000056177285, -0.0000000000001761924, -0.000000000000035527137, 0.000000000000103472786), metal::float4(0.9997026, -0.000027035258, 0.0000000004654293, 0.000000000000089595), metal::float4(0.00000000000005973, -0.00000000000019295676, -0.000000000000038191672, 0.00000000000011279866), metal::float4(0.9996485, -0.000027033395, 0.0000000004653939, 0.0000000000000801581), metal::float4(0.000000000000054178884, -0.00000000000017652546, -0.00000000000003463896, 0.000000000000103916875), metal::float4(0.99959445, -0.000027031534, 0.00000000046535684, 0.0000000000000801581), metal::float4(0.00000000000005306866, -0.00000000000017652546, -0.00000000000003419487, 0.000000000000103916875), metal::float4(0.9995133, -0.000054057484, 0.0000000018612636, 0.000000000000038469228), metal::float4(0.000000000000055067062, -0.00000000000018152146, -0.000000000000035527137, 0.0000000000001070255), metal::float4(0.9994052, -0.00005405004, 0.0000000018609614, 0.00000000000003758105), metal::float4(0.000000000000055067062, -0.00000000000017952306, -0.000000000000035527137, 0.00000000000010613732), metal::float4(0.99929714, -0.000054042597, 0.0000000018606601, 0.000000000000044131365), metal::float4(0.000000000000054622973, -0.00000000000019173552, -0.000000000000035527137, 0.00000000000011235457), metal::float4(0.9991891, -0.000054035154, 0.0000000018603591, 0.00000000000004052314), metal::float4(0.000000000000051958438, -0.00000000000018540725, -0.00000000000003330669, 0.000000000000109245946), metal::float4(0.99902695, -0.000108047985, 0.000000007439686, -0.00000000000031830094), metal::float4(0.000000000000054622973, -0.00000000000017141844, -0.000000000000035083048, 0.00000000000010125234), metal::float4(0.9988109, -0.000108018234, 0.0000000074372717, -0.00000000000032190917), metal::float4(0.000000000000056621374, -0.00000000000016553425, -0.000000000000036415315, 0.000000000000098143715), metal::float4(0.9985949, -0.00010798849, 0.00000000743486, -0.00000000000031646907), metal::float4(0.000000000000054845017, -0.00000000000017352786, -0.000000000000035083048, 0.00000000000010169643), metal::float4(0.99837893, -0.00010795875, 0.0000000074324493, -0.00000000000031152858), metal::float4(0.000000000000050404125, -0.00000000000018207658, -0.000000000000031974423, 0.00000000000010658141), metal::float4(0.99805516, -0.00021582833, 0.000000029715395, -0.000000000003128331), metal::float4(0.00000000000005551115, -0.00000000000017486013, -0.000000000000035527137, 0.000000000000103472786), metal::float4(0.9976236, -0.00021570952, 0.00000002969612, -0.000000000003120837), metal::float4(0.000000000000057065463, -0.00000000000018207658, -0.000000000000035971226, 0.00000000000010658141), metal::float4(0.9971923, -0.00021559077, 0.000000029676862, -0.0000000000031179503), metal::float4(0.000000000000051292304, -0.00000000000018363089, -0.000000000000032418512, 0.00000000000010746959), metal::float4(0.99676126, -0.0002154721, 0.000000029657613, -0.0000000000031167846), metal::float4(0.00000000000005973, -0.00000000000018129942, -0.000000000000038191672, 0.00000000000010613732), metal::float4(0.9961151, -0.00043058846, 0.00000011851517, -0.000000000025533409), metal::float4(0.000000000000054622973, -0.00000000000018196555, -0.000000000000031974423, 0.0000000000001070255), metal::float4(0.9952544, -0.0004301147, 0.00000011836154, -0.00000000002549444), metal::float4(0.00000000000005750955, -0.00000000000018396396, -0.00000000000003375078, 0.00000000000010791368), metal::float4(0.9943946, -0.00042964157, 0.00000011820814, -0.0000000000254613), metal::float4(0.00000000000005750955, -0.0000000000001771916, -0.00000000000003330669, 0.000000000000104805054), metal::float4(0.9935358, -0.00042916907, 0.00000011805497, -0.000000000025424052), metal::float4(0.0000000000000577316, -0.00000000000017463808, -0.00000000000003419487, 0.00000000000010258461), metal::float4(0.99224937, -0.0008569228, 0.0000004713026, -0.00000000020354624), metal::float4(0.00000000000012922996, -0.00000000000017463808, -0.00000000000003463896, 0.00000000000010258461), metal::float4(0.9905374, -0.00085504004, 0.0000004700826, -0.00000000020295265), metal::float4(0.0000000000001298961, -0.00000000000016986412, -0.000000000000035527137, 0.00000000000010036416), metal::float4(0.9888292, -0.00085316214, 0.00000046886615, -0.00000000020235569), metal::float4(0.00000000000012811974, -0.00000000000017386093, -0.00000000000003463896, 0.00000000000010214052), metal::float4(0.98712474, -0.00085128914, 0.0000004676533, -0.00000000020176294), metal::float4(0.00000000000012834178, -0.00000000000017452706, -0.000000000000035083048, 0.0000000000001030287), metal::float4(0.9845751, -0.0016969773, 0.0000018633626, -0.0000000016076107), metal::float4(0.0000000000012352341, -0.00000000000018551827, -0.000000000000036859404, 0.000000000000108801856), metal::float4(0.9811886, -0.0016895431, 0.0000018537446, -0.0000000015982158), metal::float4(0.0000000000012265744, -0.00000000000018851587, -0.000000000000035971226, 0.000000000000109245946), metal::float4(0.9778169, -0.0016821473, 0.0000018441829, -0.0000000015888955), metal::float4(0.0000000000012161383, -0.00000000000016819879, -0.00000000000003375078, 0.000000000000098143715), metal::float4(0.97445995, -0.0016747896, 0.0000018346768, -0.0000000015796264), metal::float4(0.000000000001209477, -0.00000000000016719959, -0.00000000000003463896, 0.000000000000098587805), metal::float4(0.9694521, -0.0033276482, 0.0000072820867, -0.000000012527211), metal::float4(0.000000000018354651, -0.00000000000019839685, -0.000000000000031974423, 0.000000000000103472786), metal::float4(0.9628258, -0.0032986696, 0.0000072073603, -0.00000001238172), metal::float4(0.000000000018118618, -0.00000000000019206858, -0.000000000000031530334, 0.000000000000098587805), metal::float4(0.95625716, -0.003269988, 0.000007133501, -0.000000012238096), metal::float4(0.000000000017883695, -0.00000000000018784974, -0.000000000000029309888, 0.000000000000097699626), metal::float4(0.94974566, -0.0032416002, 0.0000070604983, -0.000000012096301), metal::float4(0.00000000001765632, -0.00000000000019806379, -0.000000000000029753977, 0.0000000000001030287), metal::float4(0.94008404, -0.006399124, 0.000027810303, -0.00000009509669), metal::float4(0.00000000027642266, -0.0000000000008895107, -0.000000000000031086245, 0.000000000000104805054), metal::float4(0.9273963, -0.006289015, 0.000027246298, -0.00000009291387), metal::float4(0.00000000026941782, -0.000000000000856093, -0.000000000000031530334, 0.00000000000009636736), metal::float4(0.9149265, -0.0061811362, 0.000026695225, -0.00000009078632), metal::float4(0.00000000026260571, -0.00000000000083555385, -0.000000000000031974423, 0.00000000000009503509), metal::float4(0.9026703, -0.0060754367, 0.000026156755, -0.00000008871252), metal::float4(0.00000000025598057, -0.00000000000082167606, -0.000000000000031974423, 0.000000000000099031894), metal::float4(0.88467705, -0.011841728, 0.000101487945, -0.00000068559564), metal::float4(0.0000000039413006, -0.00000000002022571, 0.00000000000006039613, 0.000000000000098143715), metal::float4(0.8613941, -0.0114438785, 0.00009746738, -0.0000006548533), metal::float4(0.0000000037461754, -0.000000000019134916, 0.00000000000005728751, 0.00000000000009148238), metal::float4(0.838891, -0.011061749, 0.000093626666, -0.0000006256297), metal::float4(0.0000000035615182, -0.000000000018111956, 0.000000000000053290705, 0.000000000000087041485), metal::float4(0.8171371, -0.010694638, 0.00008995695, -0.00000059784344), metal::float4(0.0000000033867338, -0.000000000017152058, 0.000000000000047073456, 0.00000000000008615331), metal::float4(0.78584695, -0.020341357, 0.00033901897, -0.0000044695416), metal::float4(0.000000050268525, -0.0000000005015497, 0.000000000004514167, 0.00000000000003996803), metal::float4(0.7464853, -0.019037347, 0.0003133691, -0.000004086745), metal::float4(0.000000045516558, -0.00000000045011284, 0.0000000000040136783, 0.000000000000047073456), metal::float4(0.7096321, -0.01783149, 0.000289906, -0.0000037399832), metal::float4(0.000000041250228, -0.0000000004043006, 0.000000000003574474, 0.000000000000046185278), metal::float4(0.6750995, -0.016715458, 0.0002684246, -0.0000034255886), metal::float4(0.000000037416495, -0.0000000003634768, 0.0000000000031872283, 0.000000000000046185278), metal::float4(0.6272794, -0.030387005, 0.0009580818, -0.000024061048), metal::float4(0.00000051801413, -0.000000009927543, 0.00000000017332358, -0.0000000000027222669), metal::float4(0.57015324, -0.026827596, 0.0008253934, -0.000020287804), metal::float4(0.0000004283978, -0.000000008065489, 0.00000000013850876, -0.0000000000021382895), metal::float4(0.5196439, -0.023756387, 0.0007133347, -0.000017162258), metal::float4(0.00000035547052, -0.0000000065749886, 0.00000000011106582, -0.000000000001677547), metal::float4(0.47485265, -0.021098126, 0.000618392, -0.000014564653), metal::float4(0.00000029592425, -0.000000005377808, 0.00000000008935852, -0.0000000000013233858), metal::float4(0.4167533, -0.035502225, 0.0020077599, -0.0000916237), metal::float4(0.000003617964, -0.00000012807482, 0.0000000041592605, -0.00000000012519785), metal::float4(0.35310093, -0.028464397, 0.0015355214, -0.00006720277), metal::float4(0.0000025549414, -0.00000008734229, 0.00000000274549, -0.00000000008015033), metal::float4(0.30181482, -0.023053482, 0.0011872437, -0.00004985952), metal::float4(0.0000018258146, -0.000000060294994, 0.0000000018349833, -0.000000000051961768), metal::float4(0.26008537, -0.018848889, 0.00092748983, -0.000037398404), metal::float4(0.0000013196806, -0.00000004211374, 0.00000000124123, -0.000000000034098946), metal::float4(0.21097384, -0.02833318, 0.0026085791, -0.00019815165), metal::float4(0.000013240014, -0.0000008032937, 0.000000045332847, -0.000000002383124), metal::float4(0.16334534, -0.019909557, 0.0016825865, -0.00011829047), metal::float4(0.000007361291, -0.00000041804822, 0.00000002216081, -0.0000000010987664), metal::float4(0.12941593, -0.014392785, 0.0011207133, -0.00007312401), metal::float4(0.0000042474107, -0.00000022617557, 0.000000011279408, -0.00000000052811067), metal::float4(0.1045896, -0.010667653, 0.00076819374, -0.00004665181), metal::float4(0.000002534995, -0.00000012680964, 0.000000005958998, -0.0000000002638087), metal::float4(0.07841912, -0.014176364, 0.0018281857, -0.00020045321), metal::float4(0.000019795682, -0.0000018097585, 0.00000015757479, -0.000000012851965), metal::float4(0.0560429, -0.008755298, 0.0009860945, -0.00009524624), metal::float4(0.000008346028, -0.00000068116896, 0.000000053103143, -0.000000003906189), metal::float4(0.04182938, -0.0057326877, 0.0005708639, -0.00004907507), metal::float4(0.00000384914, -0.00000028258418, 0.00000001986625, -0.000000001325575), metal::float4(0.03230852, -0.0039342963, 0.00035016204, -0.000027042239), metal::float4(0.0000019139986, -0.00000012730473, 0.000000008125588, -0.0000000004946015), metal::float4(0.023056017, -0.0047972575, 0.0007341793, -0.00009804619), metal::float4(0.0000120590175, -0.0000014004432, 0.00000015913854, -0.000000017034818), metal::float4(0.015770199, -0.0027393384, 0.0003519189, -0.000039650156), metal::float4(0.0000041337757, -0.00000040863492, 0.00000003944863, -0.00000000362363), metal::float4(0.011437163, -0.0017017398, 0.00018792653, -0.000018260866), metal::float4(0.0000016470873, -0.0000001412674, 0.000000011818231, -0.0000000009471726), metal::float4(0.00866178, -0.0011258711, 0.0001088732, -0.0000092847595), metal::float4(0.0000007365851, -0.000000055677763, 0.0000000041018984, -0.00000000029088262), metal::float4(0.006061911, -0.0013231621, 0.00021536356, -0.000030982304), metal::float4(0.000004154092, -0.0000005319391, 0.00000006779496, -0.0000000081705505), metal::float4(0.0040820343, -0.0007332432, 0.00009839357, -0.000011690638), metal::float4(0.0000012970188, -0.00000013763658, 0.0000000144309, -0.0000000014465321), metal::float4(0.002932701, -0.00044726077, 0.00005101198, -0.000005157015), metal::float4(0.0000004873513, -0.000000044093955, 0.0000000039244634, -0.0000000003361419), metal::float4(0.0022075695, -0.0002924102, 0.000028986162, -0.000002548597), metal::float4(0.00000020962135, -0.000000016517234, 0.000000001276658, -0.00000000009536809), metal::float4(0.00153612, -0.00033979642, 0.000056287994, -0.000008275684), metal::float4(0.0000011385838, -0.0000001502121, 0.000000019849313, -0.0000000024841724), metal::float4(0.0010298727, -0.00018667341, 0.000025351253, -0.0000030571844), metal::float4(0.00000034523006, -0.000000037393693, 0.0000000040174672, -0.00000000041333592), metal::float4(0.0007380098, -0.00011328932, 0.000013033428, -0.000001331858), metal::float4(0.0000001274904, -0.00000001170815, 0.0000000010604964, -0.0000000000925777), metal::float4(0.00055463216, -0.00007382818, 0.000007366494, -0.0000006529916), metal::float4(0.000000054233485, -0.00000000432196, 0.0000000003384992, -0.000000000025654366)}};
-    type_8 MS_BK_ERFINV_Q = type_8 {{metal::float4(3.9046016, -0.013801319, 0.000743736, -0.000054314907), metal::float4(0.0000044844564, -0.00000039593175, 0.000000037148247, -0.0000000035245051), metal::float4(3.8796005, -0.011360582, 0.00050071336, -0.000029913715), metal::float4(0.0000020206483, -0.00000014595663, 0.000000011134741, -0.0000000008638139), metal::float4(3.8586712, -0.0096619185, 0.00036021826, -0.000018206969), metal::float4(0.0000010405903, -0.000000063597454, 0.00000000409052, -0.00000000026818192), metal::float4(3.8406575, -0.008410642, 0.00027168475, -0.000011899763), metal::float4(0.00000058939276, -0.00000003121761, 0.0000000017361579, -0.000000000098363984), metal::float4(3.8175905, -0.014097435, 0.00075870205, -0.000055376688), metal::float4(0.0000045705096, -0.0000004034267, 0.00000003784378, -0.0000000035899408), metal::float4(3.7920496, -0.0116073135, 0.0005109042, -0.000030504969), metal::float4(0.0000020598447, -0.00000014874925, 0.0000000113454615, -0.00000000088002494), metal::float4(3.7706635, -0.009873917, 0.00036761994, -0.000018570187), metal::float4(0.0000010609601, -0.00000006482521, 0.0000000041686317, -0.0000000002732765), metal::float4(3.7522526, -0.008596826, 0.00027731352, -0.000012139064), metal::float4(0.00000060102127, -0.00000003182494, 0.0000000017695712, -0.00000000010026646), metal::float4(3.7286723, -0.014413081, 0.0007745885, -0.000056501816), metal::float4(0.0000046615996, -0.00000041135434, 0.000000038579007, -0.000000003659057), metal::float4(3.702556, -0.01187052, 0.00052172894, -0.000031131895), metal::float4(0.000002101361, -0.00000015170475, 0.000000011568334, -0.0000000008971881), metal::float4(3.6806822, -0.01010022, 0.00037548656, -0.000018955525), metal::float4(0.0000010825465, -0.00000006612525, 0.0000000042512838, -0.00000000027866953), metal::float4(3.6618476, -0.008795687, 0.0002832988, -0.000012393057), metal::float4(0.0000006133498, -0.0000000324683, 0.0000000018049384, -0.0000000001022773), metal::float4(3.6377184, -0.014750466, 0.00079149194, -0.000057696743), metal::float4(0.00000475823, -0.00000041975713, 0.000000039357786, -0.0000000037322554), metal::float4(3.6109867, -0.01215209, 0.00053325505, -0.000031798165), metal::float4(0.0000021454307, -0.00000015483947, 0.00000001180455, -0.000000000915346), metal::float4(3.588591, -0.010342483, 0.000383868, -0.000019365283), metal::float4(0.0000011054735, -0.00000006750487, 0.0000000043389274, -0.0000000002843752), metal::float4(3.5693026, -0.009008703, 0.0002896792, -0.000012663283), metal::float4(0.00000062645034, -0.000000033151345, 0.000000001842464, -0.00000000010441781), metal::float4(3.5445855, -0.015112158, 0.00080952386, -0.00005896887), metal::float4(0.000004860975, -0.0000004286838, 0.00000004018454, -0.0000000038099), metal::float4(3.5171936, -0.012454218, 0.0005455602, -0.000032508004), metal::float4(0.0000021923224, -0.0000001581719, 0.0000000120555015, -0.0000000009346071), metal::float4(3.4942381, -0.010602634, 0.00039282197, -0.000019802106), metal::float4(0.0000011298831, -0.00000006897236, 0.0000000044321133, -0.00000000029042546), metal::float4(3.4744618, -0.009237601, 0.0002964994, -0.000012951515), metal::float4(0.00000064040535, -0.000000033878305, 0.0000000018823698, -0.00000000010666312), metal::float4(3.4491127, -0.015501155, 0.0008288132, -0.00006032672), metal::float4(0.000004970496, -0.00000043818997, 0.000000041064304, -0.000000003892488), metal::float4(3.4210105, -0.012779471, 0.00055873464, -0.000033266275), metal::float4(0.0000022423446, -0.0000001617233, 0.000000012322719, -0.0000000009551169), metal::float4(3.3974519, -0.010882929, 0.00040241532, -0.000020269052), metal::float4(0.0000011559393, -0.000000070537226, 0.0000000045313797, -0.00000000029689673), metal::float4(3.37715, -0.009484401, 0.00030381125, -0.0000132598025), metal::float4(0.00000065531015, -0.00000003465392, 0.0000000019249136, -0.000000000109070086), metal::float4(3.3511188, -0.015920965, 0.00084950996, -0.00006178017), metal::float4(0.000005087556, -0.00000044834, 0.00000004200286, -0.000000003980542), metal::float4(3.3222501, -0.013130857, 0.0005728834, -0.000034078632), metal::float4(0.0000022958548, -0.0000001655182, 0.000000012608043, -0.0000000009770353), metal::float4(3.2980394, -0.011186014, 0.00041272625, -0.000020769668), metal::float4(0.0000011838317, -0.00000007221059, 0.0000000046374424, -0.0000000003037819), metal::float4(3.277169, -0.009751473, 0.0003116754, -0.000013590532), metal::float4(0.000000671275, -0.000000035483797, 0.0000000019704043, -0.00000000011163692), metal::float4(3.2503996, -0.016375713, 0.0008717899, -0.00006334072), metal::float4(0.000005213043, -0.00000045920837, 0.000000043006956, -0.000000004074634), metal::float4(3.2206998, -0.013511909, 0.0005881297, -0.000034951667), metal::float4(0.0000023532677, -0.00000016958528, 0.000000012913533, -0.000000001000446), metal::float4(3.1957817, -0.011514996, 0.00042384653, -0.000021308108), metal::float4(0.0000012137815, -0.000000074005264, 0.0000000047510866, -0.00000000031115022), metal::float4(3.174294, -0.010041602, 0.00032016315, -0.000013946497), metal::float4(0.00000068842894, -0.00000003637438, 0.0000000020191653, -0.00000000011440093), metal::float4(3.1467223, -0.016870238, 0.0008958599, -0.00006502186), metal::float4(0.000005347992, -0.0000004708819, 0.000000044084366, -0.000000004175549), metal::float4(3.116118, -0.013926776, 0.000604619, -0.00003589312), metal::float4(0.0000024150706, -0.00000017395772, 0.000000013241644, -0.0000000010256045), metal::float4(3.0904295, -0.011873523, 0.0004358846, -0.00002188925), metal::float4(0.000001246048, -0.00000007593623, 0.0000000048732485, -0.00000000031908698), metal::float4(3.0682685, -0.010358051, 0.00032935888, -0.000014330984), metal::float4(0.0000007069231, -0.000000037333344, 0.00000000207163, -0.00000000011734258), metal::float4(3.0398211, -0.017410206, 0.0009219652, -0.00006683949), metal::float4(0.0000054936227, -0.00000048346243, 0.00000004524427, -0.0000000042841144), metal::float4(3.0082288, -0.0143803, 0.0006225238, -0.000036912148), metal::float4(0.0000024818357, -0.00000017867475, 0.0000000135952245, -0.0000000010526833), metal::float4(2.9816978, -0.01226584, 0.00044896934, -0.000022518867), metal::float4(0.0000012809368, -0.00000007802119, 0.000000005005015, -0.00000000032763658), metal::float4(2.9588, -0.010704613, 0.00033936297, -0.000014747889), metal::float4(0.0000007269362, -0.00000003836955, 0.0000000021282425, -0.00000000012052404), metal::float4(2.929393, -0.018002173, 0.00095039775, -0.00006881249), metal::float4(0.0000056513745, -0.0000004970702, 0.00000004649744, -0.00000000440129), metal::float4(2.8967168, -0.014878061, 0.0006420499, -0.000038019614), metal::float4(0.000002554242, -0.0000001837827, 0.000000013977669, -0.0000000010819079), metal::float4(2.8692605, -0.012696815, 0.00046325443, -0.000023203835), metal::float4(0.0000013188106, -0.000000080281076, 0.000000005147651, -0.00000000033688075), metal::float4(2.8455532, -0.011085614, 0.0003502952, -0.000015201849), metal::float4(0.00000074868024, -0.000000039493628, 0.0000000021895872, -0.00000000012397017), metal::float4(2.815091, -0.018653564, 0.0009815063, -0.00007096336), metal::float4(0.000005822963, -0.0000005118478, 0.000000047856616, -0.000000004528255), metal::float4(2.7812214, -0.015426309, 0.0006634432, -0.0000392285), metal::float4(0.0000026330981, -0.00000018933653, 0.000000014392947, -0.0000000011136372), metal::float4(2.7527456, -0.013171851, 0.00047892373, -0.000023952363), metal::float4(0.0000013601024, -0.000000082740854, 0.0000000053027023, -0.00000000034688163), metal::float4(2.7281454, -0.011505804, 0.00036229877, -0.000015698415), metal::float4(0.00000077240867, -0.000000040718195, 0.0000000022563267, -0.00000000012772361), metal::float4(2.696519, -0.019372422, 0.0010157079, -0.000073319046), metal::float4(0.0000060104376, -0.00000052796565, 0.00000004933704, -0.000000004666397), metal::float4(2.6613321, -0.01603169, 0.0006869972, -0.000040554365), metal::float4(0.0000027193719, -0.00000019540201, 0.0000000148458685, -0.0000000011482246), metal::float4(2.6317303, -0.0136965765, 0.00049619644, -0.000024774296), metal::float4(0.0000014053304, -0.00000008543022, 0.000000005471989, -0.0000000003578311), metal::float4(2.606144, -0.011970042, 0.0003755443, -0.000016244237), metal::float4(0.0000007984251, -0.00000004205842, 0.000000002329264, -0.000000000131811), metal::float4(2.573231, -0.020166716, 0.0010534975, -0.000075911834), metal::float4(0.0000062162558, -0.00000054562787, 0.0000000509569, -0.0000000048173803), metal::float4(2.536589, -0.016700514, 0.0007130596, -0.000042015832), metal::float4(0.0000028142244, -0.00000020205817, 0.000000015342142, -0.0000000011860406), metal::float4(2.5057435, -0.014276106, 0.000515331, -0.000025681413), metal::float4(0.0000014551165, -0.000000088384986, 0.000000005657702, -0.00000000036982772), metal::float4(2.4790678, -0.01248253, 0.0003902321, -0.000016847269), metal::float4(0.0000008270938, -0.00000004353243, 0.0000000024093687, -0.0000000001362972), metal::float4(2.4447355, -0.02104281, 0.001095453, -0.00007878026), metal::float4(0.000006443364, -0.00000056507946, 0.000000052738095, -0.0000000049831614), metal::float4(2.4064891, -0.017437218, 0.0007420323, -0.000043635056), metal::float4(0.0000029190458, -0.00000020939954, 0.000000015888661, -0.0000000012276562), metal::float4(2.3742747, -0.014913496, 0.0005366236, -0.00002668767), metal::float4(0.0000015102039, -0.000000091648126, 0.00000000586246, -0.00000000038298698), metal::float4(2.3464022, -0.01304529, 0.00040658945, -0.000017516893), metal::float4(0.0000008588491, -0.000000045162007, 0.00000000249777, -0.00000000014122747), metal::float4(2.3105128, -0.022002447, 0.0011422209, -0.000081969505), metal::float4(0.000006695264, -0.0000005866131, 0.000000054706796, -0.0000000051661893), metal::float4(2.2705123, -0.018241411, 0.00077435584, -0.000045437824), metal::float4(0.0000030354806, -0.00000021753901, 0.000000016493642, -0.000000001273647), metal::float4(2.236806, -0.015606855, 0.00056039204, -0.000027809185), metal::float4(0.0000015714677, -0.00000009527039, 0.000000006089433, -0.00000000039760462), metal::float4(2.2076337, -0.013655325, 0.00042485518, -0.000018263856), metal::float4(0.00000089419996, -0.00000004697286, 0.0000000025958737, -0.00000000014669865), metal::float4(2.1700609, -0.023037259, 0.0011944568, -0.00008553065), metal::float4(0.0000069760285, -0.00000061057364, 0.000000056894102, -0.0000000053692695), metal::float4(2.1281753, -0.019102605, 0.00081045576, -0.000047452715), metal::float4(0.0000031654206, -0.00000022660836, 0.000000017166768, -0.000000001324767), metal::float4(2.0928764, -0.016344287, 0.00058692734, -0.000029063465), metal::float4(0.0000016399031, -0.000000099310945, 0.0000000063422583, -0.00000000041385917), metal::float4(2.0623264, -0.014299758, 0.00044523497, -0.00001909959), metal::float4(0.0000009337183, -0.000000048994558, 0.0000000027052582, -0.00000000015282353), metal::float4(2.022984, -0.024119532, 0.0012526698, -0.00008951629), metal::float4(0.000007290149, -0.0000006373527, 0.00000005933588, -0.000000005595746), metal::float4(1.979139, -0.019991564, 0.00085060863, -0.00004970783), metal::float4(0.0000033108984, -0.00000023675476, 0.000000017919117, -0.0000000013818449), metal::float4(1.942207, -0.017095732, 0.00061637646, -0.000030466854), metal::float4(0.0000017165502, -0.00000010383447, 0.0000000066250836, -0.00000000043201887), metal::float4(1.9102618, -0.014948109, 0.00046779844, -0.000020034176), metal::float4(0.0000009779849, -0.00000005125901, 0.0000000028277016, -0.00000000015964474), metal::float4(1.8691553, -0.025187917, 0.0013168737, -0.000093968345), metal::float4(0.000007641974, -0.0000006673582, 0.00000006207099, -0.0000000058492855), metal::float4(1.8233994, -0.020847276, 0.0008946555, -0.00005222205), metal::float4(0.0000034737473, -0.00000024812485, 0.000000018762261, -0.0000000014457795), metal::float4(1.7849144, -0.017800989, 0.0006485017, -0.00003202801), metal::float4(0.0000018022729, -0.000000108902384, 0.0000000069421056, -0.0000000004523848), metal::float4(1.7516758, -0.015541209, 0.0004922726, -0.000021071275), metal::float4(0.000001027437, -0.000000053794814, 0.0000000029649403, -0.00000000016729018), metal::float4(1.7089858, -0.026127469, 0.0013859146, -0.000098889126), metal::float4(0.000008034221, -0.00000070092483, 0.00000006513523, -0.0000000061335106), metal::float4(1.661593, -0.02155937, 0.00094147393, -0.000054985212), metal::float4(0.0000036547415, -0.00000026082154, 0.00000001970593, -0.0000000015174422), metal::float4(1.6218514, -0.01835404, 0.00068225386, -0.000033733508), metal::float4(0.0000018972198, -0.0000001145496, 0.0000000072964355, -0.0000000004751515), metal::float4(1.5876296, -0.015977072, 0.0005176902, -0.00002219729), metal::float4(0.0000010820094, -0.000000056613743, 0.0000000031180836, -0.00000000017583979), metal::float4(1.5438341, -0.026745113, 0.0014563905, -0.00010418113), metal::float4(0.000008464568, -0.0000007380944, 0.00000006854569, -0.0000000064507653), metal::float4(1.4954515, -0.021947289, 0.0009881904, -0.000057918332), metal::float4(0.000003851704, -0.00000027480246, 0.000000020751955, -0.000000001597166), metal::float4(1.4551003, -0.018584935, 0.0007151847, -0.000035519966), metal::float4(0.0000019996733, -0.00000012073113, 0.000000007687485, -0.00000000050042903), metal::float4(1.4205356, -0.016094834, 0.00054194545, -0.000023360897), metal::float4(0.0000011403876, -0.00000005968042, 0.000000003286317, -0.00000000018528468), metal::float4(1.3765777, -0.026741873, 0.0015214762, -0.00010953786), metal::float4(0.0000089188425, -0.00000077814497, 0.000000072265436, -0.000000006799411), metal::float4(1.3284252, -0.021736078, 0.0010295288, -0.000060804487), metal::float4(0.0000040558825, -0.00000028966952, 0.000000021881299, -0.0000000016840769), metal::float4(1.2886416, -0.018237479, 0.0007431373, -0.00003722715), metal::float4(0.0000021039357, -0.000000127216, 0.000000008105257, -0.00000000052774496), metal::float4(1.2548714, -0.015653165, 0.00056172244, -0.00002443957), metal::float4(0.0000011986928, -0.00000006285337, 0.0000000034641143, -0.0000000001954179), metal::float4(1.2123915, -0.025669008, 0.0015716114, -0.000114269154), metal::float4(0.000009359751, -0.00000081871406, 0.0000000761339, -0.0000000071681012), metal::float4(1.1665534, -0.020507988, 0.0010593316, -0.000063177686), metal::float4(0.000004246493, -0.00000030429752, 0.00000002302945, -0.0000000017743171), metal::float4(1.1293287, -0.016913543, 0.0007623282, -0.00003851879), metal::float4(0.0000021974927, -0.0000001334076, 0.00000000852023, -0.0000000005555725), metal::float4(1.0982742, -0.0142653985, 0.00057499664, -0.000025177267), metal::float4(0.0000012489646, -0.000000065789614, 0.0000000036365875, -0.00000000020552937), metal::float4(1.0600606, -0.022765124, 0.0016065057, -0.000116895484), metal::float4(0.000009718163, -0.00000085442923, 0.00000007975475, -0.000000007525863), metal::float4(1.0201536, -0.017486874, 0.0010848793, -0.00006394562), metal::float4(0.0000043910923, -0.0000003162387, 0.000000024051475, -0.000000001858278), metal::float4(0.9890693, -0.013795619, 0.00078597997, -0.00003848282), metal::float4(0.0000022658453, -0.00000013800106, 0.000000008871655, -0.00000000058034155), metal::float4(0.9643464, -0.01105056, 0.0006002069, -0.000024733703), metal::float4(0.0000012869389, -0.00000006768162, 0.000000003776423, -0.00000000021408253), metal::float4(0.93601894, -0.01600197, 0.0017300105, -0.00011061144), metal::float4(0.000010079049, -0.0000008684125, 0.0000000826543, -0.0000000077986275), metal::float4(0.910188, -0.01014341, 0.0012541759, -0.00005498795), metal::float4(0.0000047320996, -0.0000003095109, 0.000000025183692, -0.0000000018972703), metal::float4(0.8945452, -0.0056558223, 0.0010179977, -0.000026360902), metal::float4(0.0000027362382, -0.00000011889169, 0.000000009967572, -0.0000000005541012), metal::float4(0.8871352, -0.0018204233, 0.0009180593, -0.000007889442), metal::float4(0.0000020247833, -0.000000031811947, 0.000000005627185, -0.0000000001276832)}};
-    type_9 MS_BK_ERFINV_W = type_9 {{metal::float4(4.0847907, 0.23805167, -0.0065722, 0.00035707987), metal::float4(-0.00002402215, 0.0000017950236, -0.00000014368759, 0.0000000115537375), metal::float4(4.537127, 0.21539979, -0.004890394, 0.00021908246), metal::float4(-0.0000121752, 0.00000075388596, -0.000000050288303, 0.000000003464292), metal::float4(4.9499445, 0.19812965, -0.003817813, 0.00014543012), metal::float4(-0.0000068792533, 0.00000036283808, -0.000000020583688, 0.0000000012122374), metal::float4(5.331996, 0.18440899, -0.0030855183, 0.00010220255), metal::float4(-0.000004207019, 0.00000019318979, -0.0000000095291295, 0.0000000004892762), metal::float4(5.8599133, 0.33653504, -0.009400734, 0.0005206732), metal::float4(-0.000035867182, 0.000002757981, -0.00000023015748, 0.000000019792743), metal::float4(6.4990478, 0.30421674, -0.0069607254, 0.0003162562), metal::float4(-0.00001788632, 0.0000011297641, -0.00000007708788, 0.0000000054481575), metal::float4(7.081914, 0.27967435, -0.0054173684, 0.00020858926), metal::float4(-0.0000100035295, 0.00000053599996, -0.00000003094365, 0.0000000018562574), metal::float4(7.621117, 0.26022553, -0.0043693497, 0.00014594554), metal::float4(-0.0000060745874, 0.0000002825655, -0.000000014139069, 0.00000000073704953), metal::float4(8.365978, 0.47478202, -0.0132863475, 0.00074028183), metal::float4(-0.0000514196, 0.0000039930333, -0.00000033704123, 0.000000029332409), metal::float4(9.267606, 0.42914096, -0.009823337, 0.00044806645), metal::float4(-0.000025490534, 0.0000016217386, -0.00000011159105, 0.000000007958128), metal::float4(10.089817, 0.39452025, -0.007639068, 0.00029490137), metal::float4(-0.000014204039, 0.0000007652497, -0.000000044464695, 0.000000002686253), metal::float4(10.850455, 0.36710206, -0.0061583975, 0.00020605928), metal::float4(-0.000008604421, 0.00000040195354, -0.000000020215943, 0.0000000010598242)}};
     uint _e2 = ms_k_index(id_9, groups_9, ms_in, _buffer_sizes);
-    if (_e2 == naga_div(1 + (_buffer_sizes.size4 - 0 - 16) / 16, MS_K_IN)) {
+    if (_e2 == naga_div(1 + (_buffer_sizes.size1 - 0 - 16) / 16, MS_K_IN)) {
         return;
     }
     MsDielectric _e8 = ms_k_dielectric(_e2, ms_in, _buffer_sizes);
     metal::float4 r0_6 = ms_in[_e2 * MS_K_IN];
     metal::float4 r1_1 = ms_in[(_e2 * MS_K_IN) + 1u];
-    MsBsdfSample _e24 = ms_dielectric_sample(_e8, r1_1.xyz, r1_1.w, r0_6.zw, MS_BK_ERFCX, MS_BK_ERFC_RATIO, MS_BK_ERFINV_Q, MS_BK_ERFINV_W);
+    MsBsdfSample _e24 = ms_dielectric_sample(_e8, r1_1.xyz, r1_1.w, r0_6.zw, ms_tables, _buffer_sizes);
     ms_out[_e2 * MS_K_OUT] = metal::float4(_e24.wi, _e24.pdf);
     ms_out[(_e2 * MS_K_OUT) + 1u] = metal::float4(_e24.f[0], _e24.eta, static_cast<float>(_e24.flags), 0.0);
+    return;
+}
+
+
+struct ms_k_family_evalInput {
+};
+kernel void ms_k_family_eval(
+  metal::uint3 id_10 [[thread_position_in_grid]]
+, metal::uint3 groups_10 [[threadgroups_per_grid]]
+, device type_7 const& ms_tables [[user(fake0)]]
+, device type_7 const& ms_in [[user(fake0)]]
+, device type_7& ms_out [[user(fake0)]]
+, constant _mslBufferSizes& _buffer_sizes [[user(fake0)]]
+) {
+    uint _e2 = ms_k_index(id_10, groups_10, ms_in, _buffer_sizes);
+    if (_e2 == naga_div(1 + (_buffer_sizes.size1 - 0 - 16) / 16, MS_K_IN)) {
+        return;
+    }
+    metal::float4 _e12 = ms_in[_e2 * MS_K_IN];
+    metal::float2 a_25 = _e12.xy;
+    metal::float4 _e20 = ms_in[(_e2 * MS_K_IN) + 1u];
+    metal::float3 wo_48 = _e20.xyz;
+    metal::float4 r2_2 = ms_in[(_e2 * MS_K_IN) + 2u];
+    metal::float3 wm_25 = r2_2.xyz;
+    if (naga_f2u32(r2_2.w) == MS_NDF_DOUBLE_GGX) {
+        float _e38 = ms_double_ggx_d(wm_25, a_25, ms_tables, _buffer_sizes);
+        float _e39 = ms_double_ggx_lambda(wo_48, a_25, ms_tables, _buffer_sizes);
+        float _e40 = ms_double_ggx_g1_(wo_48, a_25, ms_tables, _buffer_sizes);
+        float _e41 = ms_double_ggx_g2_(wo_48, wm_25, a_25, ms_tables, _buffer_sizes);
+        ms_out[_e2 * MS_K_OUT] = metal::float4(_e38, _e39, _e40, _e41);
+        float _e49 = ms_double_ggx_g2_separable(wo_48, wm_25, a_25, ms_tables, _buffer_sizes);
+        float _e50 = ms_double_ggx_pdf(wo_48, wm_25, a_25, ms_tables, _buffer_sizes);
+        float _e51 = ms_double_ggx_pdf_dcos(wm_25, a_25, ms_tables, _buffer_sizes);
+        float _e52 = ms_double_ggx_g1_(wm_25, a_25, ms_tables, _buffer_sizes);
+        ms_out[(_e2 * MS_K_OUT) + 1u] = metal::float4(_e49, _e50, _e51, _e52);
+        return;
+    } else {
+        float _e58 = ms_exponential_d(wm_25, a_25);
+        float _e59 = ms_exponential_lambda(wo_48, a_25, ms_tables, _buffer_sizes);
+        float _e60 = ms_exponential_g1_(wo_48, a_25, ms_tables, _buffer_sizes);
+        float _e61 = ms_exponential_g2_(wo_48, wm_25, a_25, ms_tables, _buffer_sizes);
+        ms_out[_e2 * MS_K_OUT] = metal::float4(_e58, _e59, _e60, _e61);
+        float _e69 = ms_exponential_g2_separable(wo_48, wm_25, a_25, ms_tables, _buffer_sizes);
+        float _e70 = ms_exponential_pdf(wo_48, wm_25, a_25, ms_tables, _buffer_sizes);
+        float _e71 = ms_exponential_pdf_dcos(wm_25, a_25);
+        float _e72 = ms_exponential_g1_(wm_25, a_25, ms_tables, _buffer_sizes);
+        ms_out[(_e2 * MS_K_OUT) + 1u] = metal::float4(_e69, _e70, _e71, _e72);
+        return;
+    }
+}
+
+
+struct ms_k_family_sampleInput {
+};
+kernel void ms_k_family_sample(
+  metal::uint3 id_11 [[thread_position_in_grid]]
+, metal::uint3 groups_11 [[threadgroups_per_grid]]
+, device type_7 const& ms_tables [[user(fake0)]]
+, device type_7 const& ms_in [[user(fake0)]]
+, device type_7& ms_out [[user(fake0)]]
+, constant _mslBufferSizes& _buffer_sizes [[user(fake0)]]
+) {
+    MsSample t = {};
+    uint _e2 = ms_k_index(id_11, groups_11, ms_in, _buffer_sizes);
+    if (_e2 == naga_div(1 + (_buffer_sizes.size1 - 0 - 16) / 16, MS_K_IN)) {
+        return;
+    }
+    metal::float4 r0_7 = ms_in[_e2 * MS_K_IN];
+    metal::float4 _e19 = ms_in[(_e2 * MS_K_IN) + 1u];
+    metal::float3 wo_49 = _e19.xyz;
+    float _e28 = ms_in[(_e2 * MS_K_IN) + 2u].w;
+    uint ndf = naga_f2u32(_e28);
+    if (ndf == MS_NDF_DOUBLE_GGX) {
+        MsSample _e35 = ms_double_ggx_sample_dcos(r0_7.xy, r0_7.zw, ms_tables, _buffer_sizes);
+        t = _e35;
+    } else {
+        MsSample _e38 = ms_exponential_sample_dcos(r0_7.xy, r0_7.zw, ms_tables, _buffer_sizes);
+        t = _e38;
+    }
+    MsSample _e42 = ms_sample(MsMicrofacet {ndf, {}, r0_7.xy}, wo_49, r0_7.zw, ms_tables, _buffer_sizes);
+    metal::float3 _e48 = t.wm;
+    float _e50 = t.pdf;
+    ms_out[_e2 * MS_K_OUT] = metal::float4(_e48, _e50);
+    ms_out[(_e2 * MS_K_OUT) + 1u] = metal::float4(_e42.wm, _e42.pdf);
+    return;
+}
+
+
+struct ms_k_streamInput {
+};
+kernel void ms_k_stream(
+  metal::uint3 id_12 [[thread_position_in_grid]]
+, metal::uint3 groups_12 [[threadgroups_per_grid]]
+, device type_7 const& ms_in [[user(fake0)]]
+, device type_7& ms_out [[user(fake0)]]
+, constant _mslBufferSizes& _buffer_sizes [[user(fake0)]]
+) {
+    metal::uint2 state = {};
+    uint k = 0u;
+    uint _e2 = ms_k_index(id_12, groups_12, ms_in, _buffer_sizes);
+    if (_e2 == naga_div(1 + (_buffer_sizes.size1 - 0 - 16) / 16, MS_K_IN)) {
+        return;
+    }
+    metal::float4 _e12 = ms_in[_e2 * MS_K_IN];
+    metal::uint2 _e14 = ms_stream_new(_e12.zw);
+    state = _e14;
+    uint2 loop_bound_7 = uint2(4294967295u);
+    bool loop_init_7 = true;
+    while(true) {
+        if (metal::all(loop_bound_7 == uint2(0u))) { break; }
+        loop_bound_7 -= uint2(loop_bound_7.y == 0u, 1u);
+        if (!loop_init_7) {
+            uint _e46 = k;
+            k = _e46 + 1u;
+        }
+        loop_init_7 = false;
+        uint _e18 = k;
+        if (_e18 < 2u) {
+        } else {
+            break;
+        }
+        {
+            metal::uint2 _e21 = ms_stream_next_u64_(state);
+            uint _e25 = k;
+            ms_out[(_e2 * MS_K_OUT) + _e25] = metal::float4(static_cast<float>(_e21.x & 65535u), static_cast<float>(_e21.x >> 16u), static_cast<float>(_e21.y & 65535u), static_cast<float>(_e21.y >> 16u));
+        }
+    }
     return;
 }

@@ -23,7 +23,7 @@ use microsurface::scattering::{
     CompensatedConductor, Scheme,
 };
 use microsurface::{Ggx, Microfacet, NdfKind, NdfSpec};
-use microsurface_gpu::{groups, Error, Gpu, WGSL};
+use microsurface_gpu::{groups, storage_entry, Error, Gpu, WGSL};
 use std::sync::{mpsc, OnceLock};
 
 /// The test kernels: the library's lookups and compensated conductor over a table in a
@@ -33,6 +33,8 @@ const KERNELS: &str = r#"
 @group(0) @binding(0) var<storage, read> fz_in: array<vec4<f32>>;
 @group(0) @binding(1) var<storage, read_write> fz_out: array<vec4<f32>>;
 @group(0) @binding(2) var<storage, read> lut: array<f32>;
+const MS_TABLES_GROUP: u32 = 1u;
+const MS_TABLES_BINDING: u32 = 0u;
 
 // E(μ, α) row-major [roughness][μ] from lut[4]; E_avg(α) at lut[lut[2]] (the AlbedoAvg
 // table: the exact average) and at lut[lut[3]] (the average of the looked-up E).
@@ -183,7 +185,7 @@ fn fz_dielectric(@builtin(global_invocation_id) id: vec3<u32>,
 "#;
 
 /// The device with the kernels compiled against a three-binding layout (the crate's
-/// `Program` has two), once per test binary; `None` (the tests skip) only where no Vulkan
+/// `Program` has two) and the library's tables at group 1, once per test binary; `None` (the tests skip) only where no Vulkan
 /// adapter exists and `MICROSURFACE_GPU_REQUIRED` is not 1.
 struct Runner {
     gpu: Gpu,
@@ -214,23 +216,17 @@ fn runner() -> Option<&'static Runner> {
             label: Some("furnace"),
             source: wgpu::ShaderSource::Wgsl(format!("{WGSL}\n{KERNELS}").into()),
         });
-        let entry = |binding, read_only| wgpu::BindGroupLayoutEntry {
-            binding,
-            visibility: wgpu::ShaderStages::COMPUTE,
-            ty: wgpu::BindingType::Buffer {
-                ty: wgpu::BufferBindingType::Storage { read_only },
-                has_dynamic_offset: false,
-                min_binding_size: None,
-            },
-            count: None,
-        };
         let layout = device.create_bind_group_layout(&wgpu::BindGroupLayoutDescriptor {
             label: Some("furnace"),
-            entries: &[entry(0, true), entry(1, false), entry(2, true)],
+            entries: &[
+                storage_entry(0, true),
+                storage_entry(1, false),
+                storage_entry(2, true),
+            ],
         });
         let pipeline_layout = device.create_pipeline_layout(&wgpu::PipelineLayoutDescriptor {
             label: Some("furnace"),
-            bind_group_layouts: &[Some(&layout)],
+            bind_group_layouts: &[Some(&layout), Some(gpu.tables_layout())],
             immediate_size: 0,
         });
         let pipeline = |name: &str| {
@@ -309,6 +305,7 @@ impl Runner {
             let mut pass = enc.begin_compute_pass(&wgpu::ComputePassDescriptor::default());
             pass.set_pipeline(pipeline);
             pass.set_bind_group(0, &bind, &[]);
+            pass.set_bind_group(1, self.gpu.tables(), &[]);
             let (x, y) = groups(n as u64);
             pass.dispatch_workgroups(x, y, 1);
         }
@@ -823,6 +820,8 @@ fn furnace_by_table_size() {
 const CC_KERNELS: &str = r#"
 @group(0) @binding(0) var<storage, read> cc_in: array<vec4<f32>>;
 @group(0) @binding(1) var<storage, read_write> cc_out: array<vec4<f32>>;
+const MS_TABLES_GROUP: u32 = 1u;
+const MS_TABLES_BINDING: u32 = 0u;
 
 struct CcIn {
     c: MsConductor,

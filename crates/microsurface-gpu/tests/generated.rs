@@ -10,28 +10,24 @@ mod beckmann_tables;
 #[path = "../tools/family_tables.rs"]
 mod family_tables;
 
-/// wgsl/family_tables.wgsl is what the generator writes from the Rust tables now (and each
-/// rounded table within its bound: the generator panics otherwise).
-#[test]
-fn family_tables_are_current() {
-    let root = std::path::Path::new(env!("CARGO_MANIFEST_DIR"));
-    let on_disk = std::fs::read_to_string(root.join("wgsl/family_tables.wgsl")).unwrap_or_default();
-    assert!(
-        on_disk == family_tables::wgsl(),
-        "wgsl/family_tables.wgsl is stale: run `cargo run -p microsurface-gpu --example translate`"
-    );
-}
+#[path = "../tools/tables.rs"]
+mod tables;
 
-/// wgsl/beckmann_tables.wgsl is what the generator writes from the Rust functions now (and
-/// each table's fit error within its bound: the generator panics otherwise).
+/// wgsl/tables.wgsl and generated/microsurface_tables.bin are what the generator writes
+/// from the Rust library now (and each table within its fit or rounding bound: the generator
+/// panics otherwise).
 #[test]
-fn beckmann_tables_are_current() {
+fn tables_are_current() {
     let root = std::path::Path::new(env!("CARGO_MANIFEST_DIR"));
-    let on_disk =
-        std::fs::read_to_string(root.join("wgsl/beckmann_tables.wgsl")).unwrap_or_default();
+    let (wgsl, bin) = tables::generate();
+    let on_disk = std::fs::read_to_string(root.join("wgsl/tables.wgsl")).unwrap_or_default();
     assert!(
-        on_disk == beckmann_tables::wgsl(),
-        "wgsl/beckmann_tables.wgsl is stale: run `cargo run -p microsurface-gpu --example translate`"
+        on_disk == wgsl,
+        "wgsl/tables.wgsl is stale: run `cargo run -p microsurface-gpu --example translate`"
+    );
+    assert!(
+        microsurface_gpu::TABLES == bin.as_slice(),
+        "generated/microsurface_tables.bin is stale: run `cargo run -p microsurface-gpu --example translate`"
     );
 }
 

@@ -1,20 +1,17 @@
-//! The tables of `wgsl/family_tables.wgsl` (Double GGX and the Exponential NDF), written
+//! The blocks of Double GGX and the Exponential NDF in the tables buffer (`tools/tables.rs`), written
 //! from the Rust library's own tables (`microsurface::fast::tables`, generated there by
 //! `gen_tables.rs`), never refitted or retyped: the f32 Λ tables (`DGGX32`,
 //! `EXPONENTIAL32_QA`, `EXPONENTIAL32_QB`) bit for bit, and the f64 ones that the WGSL needs
 //! in f32 (the Double GGX slope kernel `DGGX_D`, the Exponential far table
-//! `EXPONENTIAL_FAR`, the ziggurats' layers `ZIG_*`) rounded to f32, their coefficients
+//! `EXPONENTIAL_FAR`, the ziggurats' layers `ZIG_*`: Exp(1) and the half normal) rounded to f32, their coefficients
 //! below the least normal f32 written as 0 (a device may flush them; their terms are below
-//! 2^−126 of the row's value). Written by `examples/translate.rs`; `tests/generated.rs`
-//! checks the file is current (shared by both through `#[path]`).
+//! 2^−126 of the row's value).
 //!
 //! The rounding of an f64 table costs each row at most Σ|c_j| 2^−24 absolutely; the
 //! generator measures the relative difference of the rounded row from the f64 row (both
 //! evaluated in f64) on 64 points per segment and panics past `ROUND_TOL`.
-//!
-//! The tables are module-scope `var<private>` arrays, as beckmann_tables.wgsl's (a `const`
-//! array indexed at run time is copied per use by naga).
 
+use super::tables::Block;
 use microsurface::fast::tables as t;
 
 /// The largest relative change of an f64 table's value by the rounding of its coefficients
@@ -37,37 +34,31 @@ fn horner64(c: &[f64], s: f64) -> f64 {
     c.iter().rev().fold(0.0, |acc, &k| acc * s + k)
 }
 
-/// Rows of f32 coefficients as vec4 lines, each row padded with zeros to `per` vec4.
-fn rows_wgsl(rows: &[Vec<f32>], per: usize) -> String {
-    let mut body = String::new();
-    for r in rows {
-        let mut r = r.clone();
-        r.resize(4 * per, 0.0);
-        for q in r.chunks(4) {
-            let v: Vec<String> = q.iter().map(|x| format!("{x:e}")).collect();
-            body.push_str(&format!("    vec4<f32>({}),\n", v.join(", ")));
-        }
-    }
-    body
-}
-
-/// One octave table's constants and array.
+/// One octave table's block: its K0/K1/M and its rows, each padded with zeros to `per` vec4.
 fn table(
-    out: &mut String,
     name: &str,
     what: &str,
     (k0, k1, m): (i32, i32, u32),
     rows: &[Vec<f32>],
     per: usize,
-) {
+) -> Block {
     assert_eq!(rows.len(), ((k1 - k0) as usize) << m, "{name}: rows");
-    let n = rows.len() * per;
-    out.push_str(&format!(
-        "\n// {what}\nconst {name}_K0: i32 = {k0};\nconst {name}_K1: i32 = {k1};\n\
-         const {name}_M: u32 = {m}u;\n\
-         var<private> {name}: array<vec4<f32>, {n}> = array<vec4<f32>, {n}>(\n{});\n",
-        rows_wgsl(rows, per)
-    ));
+    let mut out = Vec::with_capacity(rows.len() * per);
+    for r in rows {
+        let mut r = r.clone();
+        r.resize(4 * per, 0.0);
+        out.extend(r.chunks(4).map(|q| [q[0], q[1], q[2], q[3]]));
+    }
+    Block {
+        name: name.into(),
+        what: what.into(),
+        consts: vec![
+            format!("const {name}_K0: i32 = {k0};"),
+            format!("const {name}_K1: i32 = {k1};"),
+            format!("const {name}_M: u32 = {m}u;"),
+        ],
+        rows: out,
+    }
 }
 
 /// An f64 table rounded to f32, with the largest relative change of its values (64 points
@@ -99,54 +90,47 @@ fn exact<const N: usize>(rows: &[[f32; N]]) -> Vec<Vec<f32>> {
     rows.iter().map(|r| r.to_vec()).collect()
 }
 
-/// A flat f32 array (the ziggurats' layers).
-fn flat(out: &mut String, name: &str, what: &str, v: &[f64]) {
-    let body: Vec<String> = v
-        .chunks(4)
-        .map(|q| {
-            let s: Vec<String> = q.iter().map(|&x| format!("{:e}", x as f32)).collect();
-            format!("    {},\n", s.join(", "))
-        })
-        .collect();
-    out.push_str(&format!(
-        "\n// {what}\nvar<private> {name}: array<f32, {n}> = array<f32, {n}>(\n{});\n",
-        body.concat(),
-        n = v.len()
-    ));
+/// A ziggurat's layers as rows (x_i, f_i, x_{i+1}, f_{i+1}), i < 256, rounded to f32: one
+/// fetch gives a layer's both edges.
+fn ziggurat(name: &str, what: &str, x: &[f64], f: &[f64]) -> Block {
+    assert!(
+        x.len() == 257 && f.len() == 257,
+        "a ziggurat has 256 layers"
+    );
+    Block {
+        name: name.into(),
+        what: format!("{what}: row i = (x_i, f(x_i), x_{{i+1}}, f(x_{{i+1}}))."),
+        consts: Vec::new(),
+        rows: (0..256)
+            .map(|i| [x[i] as f32, f[i] as f32, x[i + 1] as f32, f[i + 1] as f32])
+            .collect(),
+    }
 }
 
-/// The WGSL file. Panics if a rounded table moves past `ROUND_TOL`.
-pub fn wgsl() -> String {
-    let mut out = String::new();
-    out.push_str(
-        "// microsurface WGSL library: the tables of Double GGX and the Exponential NDF\n\
-         // (family_tables.wgsl). Generated by crates/microsurface-gpu/tools/family_tables.rs\n\
-         // (examples/translate.rs) from the Rust tables of microsurface::fast::tables; do not\n\
-         // edit. Octave tables as fast::fit's: x ∈ [2^K0, 2^K1), 2^M segments per octave, each\n\
-         // row the polynomial in s ∈ [−1, 1) of one segment (s⁰ first, zero-padded to vec4).\n",
-    );
-    table(
-        &mut out,
+/// The blocks of Double GGX and the Exponential NDF. Octave tables as fast::fit's: x ∈
+/// [2^K0, 2^K1), 2^M segments per octave, each segment's polynomial in s ∈ [−1, 1) (s⁰
+/// first, zero-padded to whole vec4). Panics if a rounded table moves past `ROUND_TOL`.
+pub fn blocks() -> Vec<Block> {
+    let mut out = Vec::new();
+    out.push(table(
         "MS_DG_LAMBDA",
         "Double GGX Λ(x), x = α² tan²θ/2: the Rust DGGX32 (f32 cubics), bit for bit.",
         (t::DGGX32_K0, t::DGGX32_K1, t::DGGX32_M),
         &exact(&t::DGGX32),
         1,
-    );
+    ));
     let (rows, worst) = rounded("MS_DG_D", &t::DGGX_D);
-    table(
-        &mut out,
+    out.push(table(
         "MS_DG_D",
         &format!(
-            "Double GGX slope kernel G(1/y), y = tan²θ/α²: the Rust DGGX_D (degree 9, f64)\n\
-             // rounded to f32 (largest relative change {worst:.1e})."
+            "Double GGX slope kernel G(1/y), y = tan²θ/α²: the Rust DGGX_D (degree 9, f64) \
+             rounded to f32 (largest relative change {worst:.1e})."
         ),
         (t::DGGX_D_K0, t::DGGX_D_K1, t::DGGX_D_M),
         &rows,
         3,
-    );
-    table(
-        &mut out,
+    ));
+    out.push(table(
         "MS_EXP_QA",
         "Exponential Λ(√q), q = z² < 64: the Rust EXPONENTIAL32_QA (f32 cubics), bit for bit.",
         (
@@ -156,9 +140,8 @@ pub fn wgsl() -> String {
         ),
         &exact(&t::EXPONENTIAL32_QA),
         1,
-    );
-    table(
-        &mut out,
+    ));
+    out.push(table(
         "MS_EXP_QB",
         "Exponential Λ(√q), 64 ≤ q < 4096: the Rust EXPONENTIAL32_QB (f32 cubics), bit for bit.",
         (
@@ -168,14 +151,13 @@ pub fn wgsl() -> String {
         ),
         &exact(&t::EXPONENTIAL32_QB),
         1,
-    );
+    ));
     let (rows, worst) = rounded("MS_EXP_FAR", &t::EXPONENTIAL_FAR);
-    table(
-        &mut out,
+    out.push(table(
         "MS_EXP_FAR",
         &format!(
-            "Exponential Λ(z) e^z on octaves of z: the Rust EXPONENTIAL_FAR (degree 6, f64)\n\
-             // rounded to f32 (largest relative change {worst:.1e})."
+            "Exponential Λ(z) e^z on octaves of z: the Rust EXPONENTIAL_FAR (degree 6, f64) \
+             rounded to f32 (largest relative change {worst:.1e})."
         ),
         (
             t::EXPONENTIAL_FAR_K0,
@@ -184,18 +166,18 @@ pub fn wgsl() -> String {
         ),
         &rows,
         2,
-    );
-    flat(
-        &mut out,
-        "MS_ZIG_EXP_X",
-        "The Exp(1) ziggurat's layer edges x_i (the Rust ZIG_EXP_X, rounded to f32).",
+    ));
+    out.push(ziggurat(
+        "MS_ZIG_EXP",
+        "The Exp(1) ziggurat's layers, f(x) = e^{−x} (the Rust ZIG_EXP_X and ZIG_EXP_F, rounded to f32)",
         &t::ZIG_EXP_X,
-    );
-    flat(
-        &mut out,
-        "MS_ZIG_EXP_F",
-        "e^{−x_i} at those edges (the Rust ZIG_EXP_F, rounded to f32).",
         &t::ZIG_EXP_F,
-    );
+    ));
+    out.push(ziggurat(
+        "MS_ZIG_NORMAL",
+        "The half-normal ziggurat's layers, f(x) = e^{−x²/2} (the Rust ZIG_NORMAL_X and ZIG_NORMAL_F, rounded to f32)",
+        &t::ZIG_NORMAL_X,
+        &t::ZIG_NORMAL_F,
+    ));
     out
 }

@@ -28,16 +28,11 @@ pub fn translate() -> Result<Vec<(String, Vec<u8>)>, String> {
     };
 
     // GLSL 450: one file per compute entry point, with explicit bindings (group 0's binding
-    // b at b), so that it compiles for OpenGL and, by glslang, for Vulkan.
+    // b at b, the tables, group 1's binding 0, at 2), so that it compiles for OpenGL and, by
+    // glslang, for Vulkan.
     let mut binding_map = glsl::BindingMap::default();
-    for b in 0..2 {
-        binding_map.insert(
-            naga::ResourceBinding {
-                group: 0,
-                binding: b,
-            },
-            b as u8,
-        );
+    for (group, binding, at) in [(0, 0, 0u8), (0, 1, 1), (1, 0, 2)] {
+        binding_map.insert(naga::ResourceBinding { group, binding }, at);
     }
     let options = glsl::Options {
         version: glsl::Version::Desktop(450),

@@ -4,7 +4,7 @@
 // `Shape for Beckmann` of distribution/microfacet.rs), in f32 throughout. The Rust f32 path
 // evaluates Λ and the samplers in f64 and rounds once; here the same formulas run in f32,
 // arranged so that nothing cancels, with the special functions from the tables of
-// beckmann_tables.wgsl (generated from the Rust f64 functions):
+// the library's tables buffer (tables.wgsl, generated from the Rust f64 functions):
 //
 //   D(m)   = e^{−e}/(π αx αy z⁴),  e = ((m.x/αx)² + (m.y/αy)²)/z²        (0 for m.z ≤ 0)
 //   Λ(w)   = e^{−a²} r(a)/(2a√π),  a = |w.z|/√(αx²w.x² + αy²w.y²),  r(a) = 1 − √π a erfcx(a)
@@ -24,7 +24,7 @@
 const MS_FRAC_1_SQRT_PI: f32 = 0.564189583547756287;
 const MS_SQRT_PI: f32 = 1.77245385090551603;
 
-// One segment of an octave table (beckmann_tables.wgsl) at x ∈ [2^k0, 2^k1): its first row
+// One segment of an octave table (tables.wgsl) at x ∈ [2^k0, 2^k1): its first row
 // (two per segment) and s ∈ [−1, 1), exactly from x's bits (the Rust fast::fit::octave_segment32).
 fn ms_bk_segment(x: f32, k0: i32, k1: i32) -> vec2<f32> {
     let m = MS_BK_SEGMENTS_LOG2;
@@ -53,7 +53,7 @@ fn ms_bk_erfcx(x: f32) -> f32 {
     }
     let g = ms_bk_segment(x, MS_BK_ERFCX_K0, MS_BK_ERFCX_K1);
     let i = 2u * u32(g.x);
-    return ms_bk_poly(MS_BK_ERFCX[i], MS_BK_ERFCX[i + 1u], g.y);
+    return ms_bk_poly(ms_tables[MS_BK_ERFCX_AT + i], ms_tables[MS_BK_ERFCX_AT + i + 1u], g.y);
 }
 
 // r(a) = 1 − √π a erfcx(a) for a ≥ 0: 1 − √π a below 2^−14 (the next term, 2a², is below
@@ -68,7 +68,7 @@ fn ms_bk_erfc_ratio(a: f32) -> f32 {
     }
     let g = ms_bk_segment(a, MS_BK_ERFC_RATIO_K0, MS_BK_ERFC_RATIO_K1);
     let i = 2u * u32(g.x);
-    return ms_bk_poly(MS_BK_ERFC_RATIO[i], MS_BK_ERFC_RATIO[i + 1u], g.y);
+    return ms_bk_poly(ms_tables[MS_BK_ERFC_RATIO_AT + i], ms_tables[MS_BK_ERFC_RATIO_AT + i + 1u], g.y);
 }
 
 // erfinv(2u − 1), the quantile of N(0, ½), for u ∈ [0, 1): q = 2 min(u, 1 − u) exactly, the
@@ -88,13 +88,13 @@ fn ms_bk_quantile(u: f32) -> f32 {
     if q >= 2.9802322e-8 {
         let g = ms_bk_segment(min(q, 0.99999994), MS_BK_ERFINV_Q_K0, MS_BK_ERFINV_Q_K1);
         let i = 2u * u32(g.x);
-        ratio = ms_bk_poly(MS_BK_ERFINV_Q[i], MS_BK_ERFINV_Q[i + 1u], g.y);
+        ratio = ms_bk_poly(ms_tables[MS_BK_ERFINV_Q_AT + i], ms_tables[MS_BK_ERFINV_Q_AT + i + 1u], g.y);
     } else {
         // (2 − q rounds to 2; w within the table up to q = 2^−126 and held inside below.)
         let w = min(-log(q) - log(2.0), 127.99);
         let g = ms_bk_segment(w, MS_BK_ERFINV_W_K0, MS_BK_ERFINV_W_K1);
         let i = 2u * u32(g.x);
-        ratio = ms_bk_poly(MS_BK_ERFINV_W[i], MS_BK_ERFINV_W[i + 1u], g.y);
+        ratio = ms_bk_poly(ms_tables[MS_BK_ERFINV_W_AT + i], ms_tables[MS_BK_ERFINV_W_AT + i + 1u], g.y);
     }
     return sign * ((1.0 - q) * ratio);
 }

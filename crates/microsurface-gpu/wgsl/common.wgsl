@@ -8,6 +8,7 @@
 // its edge guards are written as the Rust code's (`!(x > 0.0)` is false for NaN there too).
 
 const MS_PI: f32 = 3.14159265358979323846;
+const MS_FRAC_1_PI: f32 = 0.318309886183790671538;
 const MS_TAU: f32 = 6.28318530717958647692;
 
 // +∞ (Λ on the horizon, as the Rust fast path answers). Formed at run time from its bits:

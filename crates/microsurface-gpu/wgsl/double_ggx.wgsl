@@ -1,8 +1,8 @@
 // microsurface WGSL library: Double GGX, anisotropic (double_ggx.wgsl).
 //
 // The Rust `Microfacet<f32, DoubleGgx>` (crates/microsurface/src/fast/double_ggx.rs, the
-// `Shape for DoubleGgx` of distribution/microfacet.rs), with the Rust tables as generated
-// WGSL data (family_tables.wgsl). Double GGX is the Gamma-1 superposition of GGX,
+// `Shape for DoubleGgx` of distribution/microfacet.rs), with the Rust tables in the
+// library's tables buffer (tables.wgsl). Double GGX is the Gamma-1 superposition of GGX,
 // D = ∫₀^∞ e^{−t} D_GGX(α/√t) dt (d'Eon, "A Hitchhiker's Guide to Multiple Scattering"):
 //
 //   D(m) = G(1/y)/(π αx αy z⁴),  y = ((m.x/αx)² + (m.y/αy)²)/z²,
@@ -22,7 +22,7 @@
 // 1)/(π αx αy q²), q = (m.x/αx)² + (m.y/αy)², without z⁴.
 // D·cos: t ~ Exp(1) from the uniform stream (stream.wgsl's ziggurat), then GGX's D·cos
 // at α/√t: m ∝ (αx √u₀ cos 2πu₁, αy √u₀ sin 2πu₁, √(t(1 − u₀))) (the Rust sample_dcos).
-// Visible normals (the Rust rejection over t, then GGX's caps) are not in this file yet.
+// Visible normals: the Rust rejection over t, then GGX's caps (ms_double_ggx_sample_wm).
 
 const MS_EULER_GAMMA: f32 = 0.5772156649015329;
 
@@ -45,7 +45,7 @@ fn ms_fam_cubic(c: vec4<f32>, s: f32) -> f32 {
 // Double GGX Λ from the table at x ∈ [2^−30, 2^16) (the Rust eval32 of DGGX32).
 fn ms_dg_lambda_table(x: f32) -> f32 {
     let g = ms_fam_segment(x, MS_DG_LAMBDA_K0, MS_DG_LAMBDA_K1, MS_DG_LAMBDA_M);
-    return ms_fam_cubic(MS_DG_LAMBDA[u32(g.x)], g.y);
+    return ms_fam_cubic(ms_tables[MS_DG_LAMBDA_AT + u32(g.x)], g.y);
 }
 
 // Λ outside the table at u = |w.z| and the (projected) roughness a: the near-normal
@@ -113,9 +113,9 @@ fn ms_double_ggx_g2_separable(wo: vec3<f32>, wi: vec3<f32>, alpha: vec2<f32>) ->
 
 // The degree-9 kernel row (three vec4, s⁰ first) by Estrin's scheme, as the Rust estrin.
 fn ms_dg_kernel_row(i: u32, s: f32) -> f32 {
-    let c0 = MS_DG_D[3u * i];
-    let c1 = MS_DG_D[3u * i + 1u];
-    let c2 = MS_DG_D[3u * i + 2u];
+    let c0 = ms_tables[MS_DG_D_AT + 3u * i];
+    let c1 = ms_tables[MS_DG_D_AT + 3u * i + 1u];
+    let c2 = ms_tables[MS_DG_D_AT + 3u * i + 2u];
     let s2 = s * s;
     let s4 = s2 * s2;
     let s8 = s4 * s4;
@@ -186,4 +186,59 @@ fn ms_double_ggx_sample_dcos(alpha: vec2<f32>, u: vec2<f32>) -> MsSample {
     let wm = ms_unit_normal(vec3<f32>(alpha.x * r * cs.x, alpha.y * r * cs.y,
         sqrt(t * max(1.0 - u.x, 0.0))));
     return MsSample(wm, ms_double_ggx_d(wm, alpha) * wm.z);
+}
+
+// A visible normal for w (w.z < 0 mirrored) from u ∈ [0, 1)² (the Rust sample_visible, in
+// f32): σ is linear in D, so the visible normals of the superposition are its GGX
+// components' with weights e^{−t} σ_t(w), σ_t = (c + √(c² + h²/t))/2 (c = w.z, h the
+// stretched horizontal length). t is drawn by rejection from the envelope e^{−t}(2c +
+// h t^{−1/2}), a mixture of Exp(1) (mass 2c) and Gamma(½) = Z²/2 (mass h√π, Z half-normal),
+// both by ziggurat over the stream of u, and kept with probability (c s + √(c²t + h²))/(2c s
+// + h), s = √t (≥ 4/5); the normal is then GGX's cap at the stretch (αx, αy, s), driven by u.
+// t is floored at 1e-36 as in ms_double_ggx_sample_dcos.
+fn ms_double_ggx_sample_wm(w_in: vec3<f32>, alpha: vec2<f32>, u: vec2<f32>) -> vec3<f32> {
+    var w = ms_unit(w_in);
+    if w.z < 0.0 {
+        w = -w;
+    }
+    let sx = alpha.x * w.x;
+    let sy = alpha.y * w.y;
+    let c = w.z;
+    let h = sqrt(sx * sx + sy * sy);
+    if !(abs(c + h) <= 3.4028235e38) {
+        return vec3<f32>(c + h);
+    }
+    let e = 2.0 * c;
+    let g = MS_SQRT_PI * h;
+    let p_exp = e / (e + g);
+    // (Capped: at grazing w or normal incidence a share is 0 and its reciprocal infinite.)
+    let inv_p = min((e + g) / e, 3.4028235e38);
+    let inv_q = min((e + g) / g, 3.4028235e38);
+    var state = ms_stream_new(u);
+    var s = 1.0;
+    var len = 1.0;
+    for (var n = 0; n < 64; n++) {
+        let v = ms_stream_next(&state);
+        var t: f32;
+        if v < p_exp {
+            t = ms_zig_exp1(v * inv_p, &state);
+        } else {
+            let z = ms_zig_half_normal((v - p_exp) * inv_q, &state);
+            t = 0.5 * z * z;
+        }
+        t = max(t, 1e-36);
+        s = sqrt(t);
+        len = sqrt(c * c * t + h * h);
+        if ms_stream_next(&state) * (e * s + h) <= c * s + len {
+            break;
+        }
+    }
+    let m = ms_ggx_cap_normal_stretched(w, vec3<f32>(alpha, s), u, len);
+    return ms_facing(m, w);
+}
+
+// A visible normal with its pdf (ms_double_ggx_pdf).
+fn ms_double_ggx_sample(w: vec3<f32>, alpha: vec2<f32>, u: vec2<f32>) -> MsSample {
+    let wm = ms_double_ggx_sample_wm(w, alpha, u);
+    return MsSample(wm, ms_double_ggx_pdf(ms_unit(w), wm, alpha));
 }

@@ -1,8 +1,8 @@
 // microsurface WGSL library: the Exponential NDF, anisotropic (exponential.wgsl).
 //
 // The Rust `Microfacet<f32, Exponential>` (crates/microsurface/src/fast/exponential.rs, the
-// `Shape for Exponential` of distribution/microfacet.rs), with the Rust tables as generated
-// WGSL data (family_tables.wgsl). The slope density is P22(r) = 2e^{−2r}/π at unit roughness
+// `Shape for Exponential` of distribution/microfacet.rs), with the Rust tables in the
+// library's tables buffer (tables.wgsl). The slope density is P22(r) = 2e^{−2r}/π at unit roughness
 // (d'Eon, "A Hitchhiker's Guide to Multiple Scattering"; derivations.md A.14):
 //
 //   D(m) = 2 e^{−2√q/z}/(π αx αy z⁴),  q = (m.x/αx)² + (m.y/αy)²        (0 for m.z ≤ 0)
@@ -20,17 +20,17 @@
 // exponent (as beckmann.wgsl's D), so that D stays a normal f32 where the Rust path (in f64)
 // has one. D·cos: the slope radius at unit roughness is Gamma(2, ½): r = ½(E − ln(1 − u₀)),
 // E ~ Exp(1) from the uniform stream (stream.wgsl's ziggurat), azimuth 2πu₁, stretched (the
-// Rust sample_dcos). Visible normals (the Rust rejection in slope space) are not in this
-// file yet.
+// Rust sample_dcos). Visible normals: the Rust rejection in slope space over the stream
+// of u (ms_exponential_sample_wm).
 
 // Λ from the q tables at 2^−24 ≤ q < 4096 (the Rust eval_narrow of EXPONENTIAL32_QA/_QB).
 fn ms_exp_lambda_q(q: f32) -> f32 {
     if q < 64.0 {
         let g = ms_fam_segment(q, MS_EXP_QA_K0, MS_EXP_QA_K1, MS_EXP_QA_M);
-        return ms_fam_cubic(MS_EXP_QA[u32(g.x)], g.y);
+        return ms_fam_cubic(ms_tables[MS_EXP_QA_AT + u32(g.x)], g.y);
     }
     let g = ms_fam_segment(q, MS_EXP_QB_K0, MS_EXP_QB_K1, MS_EXP_QB_M);
-    return ms_fam_cubic(MS_EXP_QB[u32(g.x)], g.y);
+    return ms_fam_cubic(ms_tables[MS_EXP_QB_AT + u32(g.x)], g.y);
 }
 
 // Λ(z) past the q tables (the Rust lambda_z_ends): +∞ at z = 0, NaN for NaN.
@@ -45,8 +45,8 @@ fn ms_exp_lambda_z(z: f32) -> f32 {
     if z < 512.0 {
         let g = ms_fam_segment(z, MS_EXP_FAR_K0, MS_EXP_FAR_K1, MS_EXP_FAR_M);
         let i = 2u * u32(g.x);
-        let lo = MS_EXP_FAR[i];
-        let hi = MS_EXP_FAR[i + 1u];
+        let lo = ms_tables[MS_EXP_FAR_AT + i];
+        let hi = ms_tables[MS_EXP_FAR_AT + i + 1u];
         let s = g.y;
         let s2 = s * s;
         let p = ((lo.x + lo.y * s) + (lo.z + lo.w * s) * s2) + ((hi.x + hi.y * s) + hi.z * s2) * (s2 * s2);
@@ -160,4 +160,82 @@ fn ms_exponential_sample_dcos(alpha: vec2<f32>, u: vec2<f32>) -> MsSample {
     }
     let wm = ms_unit_normal(v);
     return MsSample(wm, ms_exponential_d(wm, alpha) * wm.z);
+}
+
+// A visible normal for w (w.z < 0 mirrored) from u ∈ [0, 1)² (the Rust sample_visible, in
+// f32), by rejection in slope space. In the stretched frame of w (h cos φ, h sin φ, c) the
+// visible slopes (x̃ along φ, ỹ across) have the density (c + h x̃)⁺ P22, P22(r) =
+// 2e^{−2r}/π; the envelope c + h x̃⁺ has two exactly sampled parts: c P22 (mass c; r ~
+// Gamma(2, ½) = −½ ln(v₁v₂), azimuth uniform; kept where x̃ ≥ 0, else with probability
+// (c + h x̃)⁺/c) and h x̃⁺ P22 (mass h/π; r ~ Gamma(3, ½), sin ψ uniform on (−1, 1)). u
+// drives the first candidate (u₀ the part and the azimuth, u₁ a factor of the radius), the
+// stream of u the rest.
+fn ms_exponential_sample_wm(w_in: vec3<f32>, alpha: vec2<f32>, u: vec2<f32>) -> vec3<f32> {
+    var w = ms_unit(w_in);
+    if w.z < 0.0 {
+        w = -w;
+    }
+    let sx = alpha.x * w.x;
+    let sy = alpha.y * w.y;
+    let c = w.z;
+    let h = sqrt(sx * sx + sy * sy);
+    var cp = 1.0;
+    var sp = 0.0;
+    if h > 0.0 {
+        cp = sx / h;
+        sp = sy / h;
+    }
+    if !(abs(c + h) <= 3.4028235e38) {
+        return vec3<f32>(c + h);
+    }
+    let e = c;
+    let g = h * MS_FRAC_1_PI;
+    let total = e + g;
+    // (Capped: at grazing w or normal incidence a mass is 0 and its reciprocal infinite.)
+    let inv_p = min(total / e, 3.4028235e38);
+    let inv_g = min(1.0 / g, 3.4028235e38);
+    var state = ms_stream_new(u);
+    var v0 = u.x;
+    var v1 = u.y;
+    var x = 0.0;
+    var y = 0.0;
+    // Each candidate is kept with probability above ½; the cap only guarantees termination.
+    for (var n = 0; n < 64; n++) {
+        if n > 0 {
+            v0 = ms_stream_next(&state);
+            v1 = ms_stream_next(&state);
+        }
+        let prod = (1.0 - v1) * (1.0 - ms_stream_next(&state));
+        let d = v0 * total - e;
+        if d < 0.0 {
+            let r = -0.5 * log(prod);
+            let turn = v0 * inv_p;
+            let cs = ms_cos_sin_turn(turn);
+            x = r * cs.x;
+            y = r * cs.y;
+            if abs(turn - 0.5) >= 0.25 || ms_stream_next(&state) * c <= c + h * x {
+                break;
+            }
+        } else {
+            let r = -0.5 * log(prod * (1.0 - ms_stream_next(&state)));
+            // sin ψ = s = 2d/g − 1, with 1 + s = 2d/g and 1 − s = 2(1 − v₀)(total/g) each
+            // formed without cancellation (1 − s from s itself would lose its digits as
+            // v₀ → 1 in f32; the Rust path is f64).
+            let one_plus = 2.0 * (d * inv_g);
+            let one_minus = 2.0 * (1.0 - v0) * (total * inv_g);
+            x = r * sqrt(max(one_minus * one_plus, 0.0));
+            y = r * (one_plus - 1.0);
+            break;
+        }
+    }
+    let p = alpha.x * (cp * x - sp * y);
+    let q = alpha.y * (sp * x + cp * y);
+    let m = ms_unit_normal(vec3<f32>(p, q, 1.0));
+    return ms_facing(m, w);
+}
+
+// A visible normal with its pdf (ms_exponential_pdf).
+fn ms_exponential_sample(w: vec3<f32>, alpha: vec2<f32>, u: vec2<f32>) -> MsSample {
+    let wm = ms_exponential_sample_wm(w, alpha, u);
+    return MsSample(wm, ms_exponential_pdf(ms_unit(w), wm, alpha));
 }

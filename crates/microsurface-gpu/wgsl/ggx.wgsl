@@ -93,22 +93,29 @@ fn ms_ggx_pdf(w: vec3<f32>, wm: vec3<f32>, alpha: vec2<f32>) -> f32 {
     return (c + c) / (MS_PI * alpha.x * alpha.y * t * t * (z + len));
 }
 
-// The spherical-cap visible normal for the unit w (w.z ≥ 0) given the length of the
-// stretched (αx w.x, αy w.y, w.z): a point of the cap z ∈ [−w'.z, 1] about w', unstretched.
-fn ms_ggx_cap_normal(w: vec3<f32>, alpha: vec2<f32>, u: vec2<f32>, len: f32) -> vec3<f32> {
+// The spherical-cap visible normal for the unit w (w.z ≥ 0) with the stretch (αx, αy, sz)
+// (roughness (αx, αy)/sz, the same directions up to a common factor), given the length of
+// the stretched (αx w.x, αy w.y, sz w.z): a point of the cap z ∈ [−w'.z, 1] about w',
+// unstretched (the Rust ggx_visible_stretched_len).
+fn ms_ggx_cap_normal_stretched(w: vec3<f32>, stretch: vec3<f32>, u: vec2<f32>, len: f32) -> vec3<f32> {
     let inv = 1.0 / len;
-    let x = alpha.x * w.x * inv;
-    let y = alpha.y * w.y * inv;
-    let z = w.z * inv;
+    let x = stretch.x * w.x * inv;
+    let y = stretch.y * w.y * inv;
+    let z = stretch.z * w.z * inv;
     let cs = ms_cos_sin_turn(u.x);
     // cz + z = (1 − u₁)(1 + z) formed without the cancellation (u₁ → 1); sin² = (1 − cz)
     // (1 + cz) = u₁(above (1 + z) + x² + y²), a sum of positive terms (1 − cz² cancels at
     // the poles, cz → ±1).
     let above = (1.0 - u.y) * (1.0 + z);
     let sin = sqrt(max(u.y * (above * (1.0 + z) + (x * x + y * y)), 0.0));
-    let h = vec3<f32>(alpha.x * (sin * cs.x + x), alpha.y * (sin * cs.y + y), above);
+    let h = vec3<f32>(stretch.x * (sin * cs.x + x), stretch.y * (sin * cs.y + y), stretch.z * above);
     let n = 1.0 / sqrt(h.x * h.x + h.y * h.y + h.z * h.z);
     return h * n;
+}
+
+// The spherical-cap visible normal at roughness (αx, αy) (the stretch (αx, αy, 1)).
+fn ms_ggx_cap_normal(w: vec3<f32>, alpha: vec2<f32>, u: vec2<f32>, len: f32) -> vec3<f32> {
+    return ms_ggx_cap_normal_stretched(w, vec3<f32>(alpha, 1.0), u, len);
 }
 
 // A visible normal for w (any finite nonzero length; w.z < 0 mirrored) from u ∈ [0, 1)²:

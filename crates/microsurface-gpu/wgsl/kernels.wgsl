@@ -9,6 +9,9 @@
 
 @group(0) @binding(0) var<storage, read> ms_in: array<vec4<f32>>;
 @group(0) @binding(1) var<storage, read_write> ms_out: array<vec4<f32>>;
+// The library's tables (microsurface_gpu::TABLES).
+const MS_TABLES_GROUP: u32 = 1u;
+const MS_TABLES_BINDING: u32 = 0u;
 
 const MS_K_IN: u32 = 5u;
 const MS_K_OUT: u32 = 2u;
@@ -205,4 +208,72 @@ fn ms_k_dielectric_sample(@builtin(global_invocation_id) id: vec3<u32>,
     let s = ms_dielectric_sample(d, r1.xyz, r1.w, r0.zw);
     ms_out[i * MS_K_OUT] = vec4<f32>(s.wi, s.pdf);
     ms_out[i * MS_K_OUT + 1u] = vec4<f32>(s.f.x, s.eta, f32(s.flags), 0.0);
+}
+
+// Double GGX and the Exponential NDF: the NDF is record 2's w (MS_NDF_DOUBLE_GGX or
+// MS_NDF_EXPONENTIAL).
+
+// D(wm), Λ(wo), G1(wo), G2(wo, wm); separable G2, D_wo(wm), D(wm) cos θm, G1(wm).
+@compute @workgroup_size(64)
+fn ms_k_family_eval(@builtin(global_invocation_id) id: vec3<u32>,
+    @builtin(num_workgroups) groups: vec3<u32>) {
+    let i = ms_k_index(id, groups);
+    if i == arrayLength(&ms_in) / MS_K_IN {
+        return;
+    }
+    let a = ms_in[i * MS_K_IN].xy;
+    let wo = ms_in[i * MS_K_IN + 1u].xyz;
+    let r2 = ms_in[i * MS_K_IN + 2u];
+    let wm = r2.xyz;
+    if u32(r2.w) == MS_NDF_DOUBLE_GGX {
+        ms_out[i * MS_K_OUT] = vec4<f32>(ms_double_ggx_d(wm, a), ms_double_ggx_lambda(wo, a),
+            ms_double_ggx_g1(wo, a), ms_double_ggx_g2(wo, wm, a));
+        ms_out[i * MS_K_OUT + 1u] = vec4<f32>(ms_double_ggx_g2_separable(wo, wm, a),
+            ms_double_ggx_pdf(wo, wm, a), ms_double_ggx_pdf_dcos(wm, a), ms_double_ggx_g1(wm, a));
+    } else {
+        ms_out[i * MS_K_OUT] = vec4<f32>(ms_exponential_d(wm, a), ms_exponential_lambda(wo, a),
+            ms_exponential_g1(wo, a), ms_exponential_g2(wo, wm, a));
+        ms_out[i * MS_K_OUT + 1u] = vec4<f32>(ms_exponential_g2_separable(wo, wm, a),
+            ms_exponential_pdf(wo, wm, a), ms_exponential_pdf_dcos(wm, a), ms_exponential_g1(wm, a));
+    }
+}
+
+// The D·cos normal of u with its pdf; the visible normal for wo of u with its pdf, through
+// the run-time door MsMicrofacet.
+@compute @workgroup_size(64)
+fn ms_k_family_sample(@builtin(global_invocation_id) id: vec3<u32>,
+    @builtin(num_workgroups) groups: vec3<u32>) {
+    let i = ms_k_index(id, groups);
+    if i == arrayLength(&ms_in) / MS_K_IN {
+        return;
+    }
+    let r0 = ms_in[i * MS_K_IN];
+    let wo = ms_in[i * MS_K_IN + 1u].xyz;
+    let ndf = u32(ms_in[i * MS_K_IN + 2u].w);
+    var t: MsSample;
+    if ndf == MS_NDF_DOUBLE_GGX {
+        t = ms_double_ggx_sample_dcos(r0.xy, r0.zw);
+    } else {
+        t = ms_exponential_sample_dcos(r0.xy, r0.zw);
+    }
+    let v = ms_sample(MsMicrofacet(ndf, r0.xy), wo, r0.zw);
+    ms_out[i * MS_K_OUT] = vec4<f32>(t.wm, t.pdf);
+    ms_out[i * MS_K_OUT + 1u] = vec4<f32>(v.wm, v.pdf);
+}
+
+// The uniform stream of u (record 0's zw): its first two 64-bit outputs as 16-bit pieces
+// (exact in f32), low first.
+@compute @workgroup_size(64)
+fn ms_k_stream(@builtin(global_invocation_id) id: vec3<u32>,
+    @builtin(num_workgroups) groups: vec3<u32>) {
+    let i = ms_k_index(id, groups);
+    if i == arrayLength(&ms_in) / MS_K_IN {
+        return;
+    }
+    var state = ms_stream_new(ms_in[i * MS_K_IN].zw);
+    for (var k = 0u; k < 2u; k++) {
+        let z = ms_stream_next_u64(&state);
+        ms_out[i * MS_K_OUT + k] = vec4<f32>(f32(z.x & 0xffffu), f32(z.x >> 16u),
+            f32(z.y & 0xffffu), f32(z.y >> 16u));
+    }
 }

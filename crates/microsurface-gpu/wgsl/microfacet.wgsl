@@ -2,7 +2,9 @@
 // the WGSL counterpart of the Rust `MicrofacetDistribution` door that the BSDFs use. A
 // renderer that knows its NDF calls the per-NDF functions (ms_ggx_d, …) directly.
 
-// Which NDF (`ndf`: an MS_NDF_* constant) at roughness (αx, αy).
+// Which NDF (`ndf`: an MS_NDF_* constant) at roughness (αx, αy). Beckmann, Double GGX and
+// the Exponential NDF read the library's tables (tables.wgsl), so a shader that takes this
+// door binds them.
 struct MsMicrofacet {
     ndf: u32,
     alpha: vec2<f32>,
@@ -10,6 +12,8 @@ struct MsMicrofacet {
 
 const MS_NDF_GGX: u32 = 0u;
 const MS_NDF_BECKMANN: u32 = 1u;
+const MS_NDF_DOUBLE_GGX: u32 = 2u;
+const MS_NDF_EXPONENTIAL: u32 = 3u;
 
 // D(wm); 0 below the horizon (and for an NDF this library does not have).
 fn ms_d(mf: MsMicrofacet, wm: vec3<f32>) -> f32 {
@@ -18,6 +22,12 @@ fn ms_d(mf: MsMicrofacet, wm: vec3<f32>) -> f32 {
     }
     if mf.ndf == MS_NDF_BECKMANN {
         return ms_beckmann_d(wm, mf.alpha);
+    }
+    if mf.ndf == MS_NDF_DOUBLE_GGX {
+        return ms_double_ggx_d(wm, mf.alpha);
+    }
+    if mf.ndf == MS_NDF_EXPONENTIAL {
+        return ms_exponential_d(wm, mf.alpha);
     }
     return 0.0;
 }
@@ -30,6 +40,12 @@ fn ms_lambda(mf: MsMicrofacet, w: vec3<f32>) -> f32 {
     if mf.ndf == MS_NDF_BECKMANN {
         return ms_beckmann_lambda(w, mf.alpha);
     }
+    if mf.ndf == MS_NDF_DOUBLE_GGX {
+        return ms_double_ggx_lambda(w, mf.alpha);
+    }
+    if mf.ndf == MS_NDF_EXPONENTIAL {
+        return ms_exponential_lambda(w, mf.alpha);
+    }
     return 0.0;
 }
 
@@ -41,6 +57,12 @@ fn ms_g1(mf: MsMicrofacet, w: vec3<f32>) -> f32 {
     if mf.ndf == MS_NDF_BECKMANN {
         return ms_beckmann_g1(w, mf.alpha);
     }
+    if mf.ndf == MS_NDF_DOUBLE_GGX {
+        return ms_double_ggx_g1(w, mf.alpha);
+    }
+    if mf.ndf == MS_NDF_EXPONENTIAL {
+        return ms_exponential_g1(w, mf.alpha);
+    }
     return 0.0;
 }
 
@@ -51,6 +73,12 @@ fn ms_g2(mf: MsMicrofacet, wo: vec3<f32>, wi: vec3<f32>) -> f32 {
     }
     if mf.ndf == MS_NDF_BECKMANN {
         return ms_beckmann_g2(wo, wi, mf.alpha);
+    }
+    if mf.ndf == MS_NDF_DOUBLE_GGX {
+        return ms_double_ggx_g2(wo, wi, mf.alpha);
+    }
+    if mf.ndf == MS_NDF_EXPONENTIAL {
+        return ms_exponential_g2(wo, wi, mf.alpha);
     }
     return 0.0;
 }
@@ -68,6 +96,12 @@ fn ms_pdf(mf: MsMicrofacet, w: vec3<f32>, wm: vec3<f32>) -> f32 {
     if mf.ndf == MS_NDF_BECKMANN {
         return ms_beckmann_pdf(w, wm, mf.alpha);
     }
+    if mf.ndf == MS_NDF_DOUBLE_GGX {
+        return ms_double_ggx_pdf(w, wm, mf.alpha);
+    }
+    if mf.ndf == MS_NDF_EXPONENTIAL {
+        return ms_exponential_pdf(w, wm, mf.alpha);
+    }
     return 0.0;
 }
 
@@ -79,6 +113,12 @@ fn ms_sample(mf: MsMicrofacet, w: vec3<f32>, u: vec2<f32>) -> MsSample {
     if mf.ndf == MS_NDF_BECKMANN {
         return ms_beckmann_sample(w, mf.alpha, u);
     }
+    if mf.ndf == MS_NDF_DOUBLE_GGX {
+        return ms_double_ggx_sample(w, mf.alpha, u);
+    }
+    if mf.ndf == MS_NDF_EXPONENTIAL {
+        return ms_exponential_sample(w, mf.alpha, u);
+    }
     return MsSample(vec3<f32>(0.0, 0.0, 1.0), 0.0);
 }
 
@@ -89,6 +129,12 @@ fn ms_sample_dcos(mf: MsMicrofacet, u: vec2<f32>) -> MsSample {
     }
     if mf.ndf == MS_NDF_BECKMANN {
         return ms_beckmann_sample_dcos(mf.alpha, u);
+    }
+    if mf.ndf == MS_NDF_DOUBLE_GGX {
+        return ms_double_ggx_sample_dcos(mf.alpha, u);
+    }
+    if mf.ndf == MS_NDF_EXPONENTIAL {
+        return ms_exponential_sample_dcos(mf.alpha, u);
     }
     return MsSample(vec3<f32>(0.0, 0.0, 1.0), 0.0);
 }

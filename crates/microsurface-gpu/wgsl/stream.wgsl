@@ -87,16 +87,19 @@ fn ms_stream_next(state: ptr<function, vec2<u32>>) -> f32 {
     return f32(z.y >> 8u) * (1.0 / 16777216.0);
 }
 
-// An Exp(1) variate from w ∈ [0, 1) by the ziggurat of Marsaglia & Tsang 2000 (the Rust
-// fast::ziggurat::exp1 over its generated layers, family_tables.wgsl, in f32): layer
-// i = ⌊256w⌋, x = (256w − i)x_i, kept when below x_{i+1}; else the tail r + Exp(1) (layer
-// 0, from −ln(1 − v)) or the wedge's height test, with further uniforms from the stream.
-fn ms_zig_exp1(w: f32, state: ptr<function, vec2<u32>>) -> f32 {
+// A variate of a ziggurat's density from w ∈ [0, 1) (the Rust fast::ziggurat::sample over
+// its generated layers, the rows at `at` of tables.wgsl, in f32): layer i = ⌊256w⌋, x =
+// (256w − i)x_i, kept when below x_{i+1}; else the tail (layer 0) or the wedge's height test
+// against f(x) (e^{−x}, or e^{−x²/2} where `normal`), with further uniforms from the
+// stream. The tail beyond r = x₁: r + Exp(1) for e^{−x}; Marsaglia's 1964 method for the
+// normal (r + a, a ~ Exp(r), kept when 2b > a², b ~ Exp(1)).
+fn ms_zig_sample(at: u32, normal: bool, w: f32, state: ptr<function, vec2<u32>>) -> f32 {
     var y = w * 256.0;
     var k = u32(max(y, 0.0));
     var i = k & 255u;
-    var x = (y - f32(k)) * MS_ZIG_EXP_X[i];
-    if x < MS_ZIG_EXP_X[i + 1u] {
+    var layer = ms_tables[at + i];
+    var x = (y - f32(k)) * layer.x;
+    if x < layer.z {
         return x;
     }
     // Each pass keeps its candidate with probability ≥ 0.98; the cap (the Rust one) only
@@ -106,19 +109,45 @@ fn ms_zig_exp1(w: f32, state: ptr<function, vec2<u32>>) -> f32 {
             return x;
         }
         if i == 0u {
-            return MS_ZIG_EXP_X[1] - log(1.0 - ms_stream_next(state));
+            let r = layer.z;
+            if !normal {
+                return r - log(1.0 - ms_stream_next(state));
+            }
+            for (var j = 0; j < 64; j++) {
+                let a = -log(1.0 - ms_stream_next(state)) / r;
+                let b = -log(1.0 - ms_stream_next(state));
+                if 2.0 * b > a * a {
+                    return r + a;
+                }
+            }
+            return r;
         }
-        let h = MS_ZIG_EXP_F[i] + ms_stream_next(state) * (MS_ZIG_EXP_F[i + 1u] - MS_ZIG_EXP_F[i]);
-        if h < exp(-x) {
+        let h = layer.y + ms_stream_next(state) * (layer.w - layer.y);
+        var f = exp(-x);
+        if normal {
+            f = exp(-0.5 * x * x);
+        }
+        if h < f {
             return x;
         }
         y = ms_stream_next(state) * 256.0;
         k = u32(y);
         i = k & 255u;
-        x = (y - f32(k)) * MS_ZIG_EXP_X[i];
-        if x < MS_ZIG_EXP_X[i + 1u] {
+        layer = ms_tables[at + i];
+        x = (y - f32(k)) * layer.x;
+        if x < layer.z {
             return x;
         }
     }
     return x;
+}
+
+// An Exp(1) variate from w ∈ [0, 1) (the Rust fast::ziggurat::exp1; Marsaglia & Tsang 2000).
+fn ms_zig_exp1(w: f32, state: ptr<function, vec2<u32>>) -> f32 {
+    return ms_zig_sample(MS_ZIG_EXP_AT, false, w, state);
+}
+
+// A half-normal variate |Z| from w ∈ [0, 1) (the Rust fast::ziggurat::half_normal).
+fn ms_zig_half_normal(w: f32, state: ptr<function, vec2<u32>>) -> f32 {
+    return ms_zig_sample(MS_ZIG_NORMAL_AT, true, w, state);
 }

@@ -45,26 +45,59 @@ struct MsLutTap {
     float f;
 };
 const float MS_PI = 3.1415927;
+const float MS_FRAC_1_PI = 0.31830987;
 const float MS_TAU = 6.2831855;
 const uint MS_FRESNEL_ONE = 0u;
 const uint MS_FRESNEL_DIELECTRIC = 1u;
 const uint MS_FRESNEL_CONDUCTOR = 2u;
 const uint MS_FRESNEL_SCHLICK = 3u;
 const uint MS_FRESNEL_F82_TINT = 4u;
+const uint MS_TABLES_GROUP = 1u;
+const uint MS_TABLES_BINDING = 0u;
 const uint MS_BK_SEGMENTS_LOG2_ = 2u;
 const int MS_BK_ERFCX_K0_ = -14;
 const int MS_BK_ERFCX_K1_ = 5;
+const uint MS_BK_ERFCX_AT = 0u;
 const int MS_BK_ERFC_RATIO_K0_ = -14;
 const int MS_BK_ERFC_RATIO_K1_ = 5;
+const uint MS_BK_ERFC_RATIO_AT = 152u;
 const int MS_BK_ERFINV_Q_K0_ = -25;
 const int MS_BK_ERFINV_Q_K1_ = 0;
+const uint MS_BK_ERFINV_Q_AT = 304u;
 const int MS_BK_ERFINV_W_K0_ = 4;
 const int MS_BK_ERFINV_W_K1_ = 7;
+const uint MS_BK_ERFINV_W_AT = 504u;
 const float MS_BK_QUANTILE_EDGE = -27.200563;
+const int MS_DG_LAMBDA_K0_ = -30;
+const int MS_DG_LAMBDA_K1_ = 16;
+const uint MS_DG_LAMBDA_M = 3u;
+const uint MS_DG_LAMBDA_AT = 528u;
+const int MS_DG_D_K0_ = -30;
+const int MS_DG_D_K1_ = 30;
+const uint MS_DG_D_M = 2u;
+const uint MS_DG_D_AT = 896u;
+const int MS_EXP_QA_K0_ = -24;
+const int MS_EXP_QA_K1_ = 6;
+const uint MS_EXP_QA_M = 5u;
+const uint MS_EXP_QA_AT = 1616u;
+const int MS_EXP_QB_K0_ = 6;
+const int MS_EXP_QB_K1_ = 12;
+const uint MS_EXP_QB_M = 7u;
+const uint MS_EXP_QB_AT = 2576u;
+const int MS_EXP_FAR_K0_ = 5;
+const int MS_EXP_FAR_K1_ = 9;
+const uint MS_EXP_FAR_M = 3u;
+const uint MS_EXP_FAR_AT = 3344u;
+const uint MS_ZIG_EXP_AT = 3408u;
+const uint MS_ZIG_NORMAL_AT = 3664u;
+const uint MS_TABLES_ROWS = 3920u;
 const float MS_FRAC_1_SQRT_PI = 0.5641896;
 const float MS_SQRT_PI = 1.7724539;
+const float MS_EULER_GAMMA = 0.5772157;
 const uint MS_NDF_GGX = 0u;
 const uint MS_NDF_BECKMANN = 1u;
+const uint MS_NDF_DOUBLE_GGX = 2u;
+const uint MS_NDF_EXPONENTIAL = 3u;
 const uint MS_MASKING_CORRELATED = 0u;
 const uint MS_MASKING_SEPARABLE = 1u;
 const uint MS_MASKING_CORRELATED_BETA = 2u;
@@ -76,11 +109,11 @@ const uint MS_SAMPLE_TRANSMISSION = 4u;
 const uint MS_K_IN = 5u;
 const uint MS_K_OUT = 2u;
 
-vec4 MS_BK_ERFC_RATIO[152] = vec4[152](vec4(0.9998783, -1.3520655e-5, 1.16372106e-10, 8.9372953e-14), vec4(5.4622973e-14, -1.831868e-13, -3.5083048e-14, 1.0746959e-13), vec4(0.9998513, -1.3520189e-5, 1.1636769e-10, 8.6985974e-14), vec4(5.395684e-14, -1.777467e-13, -3.463896e-14, 1.04360964e-13), vec4(0.9998242, -1.3519723e-5, 1.16361754e-10, 9.531265e-14), vec4(5.6621374e-14, -1.926237e-13, -3.6415315e-14, 1.1235457e-13), vec4(0.99979717, -1.3519258e-5, 1.1635656e-10, 9.2870156e-14), vec4(5.6621374e-14, -1.8840485e-13, -3.5971226e-14, 1.09690035e-13), vec4(0.99975663, -2.7037118e-5, 4.654685e-10, 8.06577e-14), vec4(5.6177285e-14, -1.761924e-13, -3.5527137e-14, 1.03472786e-13), vec4(0.9997026, -2.7035258e-5, 4.654293e-10, 8.9595e-14), vec4(5.973e-14, -1.9295676e-13, -3.8191672e-14, 1.1279866e-13), vec4(0.9996485, -2.7033395e-5, 4.653939e-10, 8.01581e-14), vec4(5.4178884e-14, -1.7652546e-13, -3.463896e-14, 1.03916875e-13), vec4(0.99959445, -2.7031534e-5, 4.6535684e-10, 8.01581e-14), vec4(5.306866e-14, -1.7652546e-13, -3.419487e-14, 1.03916875e-13), vec4(0.9995133, -5.4057484e-5, 1.8612636e-9, 3.8469228e-14), vec4(5.5067062e-14, -1.8152146e-13, -3.5527137e-14, 1.070255e-13), vec4(0.9994052, -5.405004e-5, 1.8609614e-9, 3.758105e-14), vec4(5.5067062e-14, -1.7952306e-13, -3.5527137e-14, 1.0613732e-13), vec4(0.99929714, -5.4042597e-5, 1.8606601e-9, 4.4131365e-14), vec4(5.4622973e-14, -1.9173552e-13, -3.5527137e-14, 1.1235457e-13), vec4(0.9991891, -5.4035154e-5, 1.8603591e-9, 4.052314e-14), vec4(5.1958438e-14, -1.8540725e-13, -3.330669e-14, 1.09245946e-13), vec4(0.99902695, -0.000108047985, 7.439686e-9, -3.1830094e-13), vec4(5.4622973e-14, -1.7141844e-13, -3.5083048e-14, 1.0125234e-13), vec4(0.9988109, -0.000108018234, 7.4372717e-9, -3.2190917e-13), vec4(5.6621374e-14, -1.6553425e-13, -3.6415315e-14, 9.8143715e-14), vec4(0.9985949, -0.00010798849, 7.43486e-9, -3.1646907e-13), vec4(5.4845017e-14, -1.7352786e-13, -3.5083048e-14, 1.0169643e-13), vec4(0.99837893, -0.00010795875, 7.4324493e-9, -3.1152858e-13), vec4(5.0404125e-14, -1.8207658e-13, -3.1974423e-14, 1.0658141e-13), vec4(0.99805516, -0.00021582833, 2.9715395e-8, -3.128331e-12), vec4(5.551115e-14, -1.7486013e-13, -3.5527137e-14, 1.03472786e-13), vec4(0.9976236, -0.00021570952, 2.969612e-8, -3.120837e-12), vec4(5.7065463e-14, -1.8207658e-13, -3.5971226e-14, 1.0658141e-13), vec4(0.9971923, -0.00021559077, 2.9676862e-8, -3.1179503e-12), vec4(5.1292304e-14, -1.8363089e-13, -3.2418512e-14, 1.0746959e-13), vec4(0.99676126, -0.0002154721, 2.9657613e-8, -3.1167846e-12), vec4(5.973e-14, -1.8129942e-13, -3.8191672e-14, 1.0613732e-13), vec4(0.9961151, -0.00043058846, 1.1851517e-7, -2.5533409e-11), vec4(5.4622973e-14, -1.8196555e-13, -3.1974423e-14, 1.070255e-13), vec4(0.9952544, -0.0004301147, 1.1836154e-7, -2.549444e-11), vec4(5.750955e-14, -1.8396396e-13, -3.375078e-14, 1.0791368e-13), vec4(0.9943946, -0.00042964157, 1.1820814e-7, -2.54613e-11), vec4(5.750955e-14, -1.771916e-13, -3.330669e-14, 1.04805054e-13), vec4(0.9935358, -0.00042916907, 1.1805497e-7, -2.5424052e-11), vec4(5.77316e-14, -1.7463808e-13, -3.419487e-14, 1.0258461e-13), vec4(0.99224937, -0.0008569228, 4.713026e-7, -2.0354624e-10), vec4(1.2922996e-13, -1.7463808e-13, -3.463896e-14, 1.0258461e-13), vec4(0.9905374, -0.00085504004, 4.700826e-7, -2.0295265e-10), vec4(1.298961e-13, -1.6986412e-13, -3.5527137e-14, 1.0036416e-13), vec4(0.9888292, -0.00085316214, 4.6886615e-7, -2.0235569e-10), vec4(1.2811974e-13, -1.7386093e-13, -3.463896e-14, 1.0214052e-13), vec4(0.98712474, -0.00085128914, 4.676533e-7, -2.0176294e-10), vec4(1.2834178e-13, -1.7452706e-13, -3.5083048e-14, 1.030287e-13), vec4(0.9845751, -0.0016969773, 1.8633626e-6, -1.6076107e-9), vec4(1.2352341e-12, -1.8551827e-13, -3.6859404e-14, 1.08801856e-13), vec4(0.9811886, -0.0016895431, 1.8537446e-6, -1.5982158e-9), vec4(1.2265744e-12, -1.8851587e-13, -3.5971226e-14, 1.09245946e-13), vec4(0.9778169, -0.0016821473, 1.8441829e-6, -1.5888955e-9), vec4(1.2161383e-12, -1.6819879e-13, -3.375078e-14, 9.8143715e-14), vec4(0.97445995, -0.0016747896, 1.8346768e-6, -1.5796264e-9), vec4(1.209477e-12, -1.6719959e-13, -3.463896e-14, 9.8587805e-14), vec4(0.9694521, -0.0033276482, 7.2820867e-6, -1.2527211e-8), vec4(1.8354651e-11, -1.9839685e-13, -3.1974423e-14, 1.03472786e-13), vec4(0.9628258, -0.0032986696, 7.2073603e-6, -1.238172e-8), vec4(1.8118618e-11, -1.9206858e-13, -3.1530334e-14, 9.8587805e-14), vec4(0.95625716, -0.003269988, 7.133501e-6, -1.2238096e-8), vec4(1.7883695e-11, -1.8784974e-13, -2.9309888e-14, 9.7699626e-14), vec4(0.94974566, -0.0032416002, 7.0604983e-6, -1.2096301e-8), vec4(1.765632e-11, -1.9806379e-13, -2.9753977e-14, 1.030287e-13), vec4(0.94008404, -0.006399124, 2.7810303e-5, -9.509669e-8), vec4(2.7642266e-10, -8.895107e-13, -3.1086245e-14, 1.04805054e-13), vec4(0.9273963, -0.006289015, 2.7246298e-5, -9.291387e-8), vec4(2.6941782e-10, -8.56093e-13, -3.1530334e-14, 9.636736e-14), vec4(0.9149265, -0.0061811362, 2.6695225e-5, -9.078632e-8), vec4(2.6260571e-10, -8.3555385e-13, -3.1974423e-14, 9.503509e-14), vec4(0.9026703, -0.0060754367, 2.6156755e-5, -8.871252e-8), vec4(2.5598057e-10, -8.2167606e-13, -3.1974423e-14, 9.9031894e-14), vec4(0.88467705, -0.011841728, 0.000101487945, -6.8559564e-7), vec4(3.9413006e-9, -2.022571e-11, 6.039613e-14, 9.8143715e-14), vec4(0.8613941, -0.0114438785, 9.746738e-5, -6.548533e-7), vec4(3.7461754e-9, -1.9134916e-11, 5.728751e-14, 9.148238e-14), vec4(0.838891, -0.011061749, 9.3626666e-5, -6.256297e-7), vec4(3.5615182e-9, -1.8111956e-11, 5.3290705e-14, 8.7041485e-14), vec4(0.8171371, -0.010694638, 8.995695e-5, -5.9784344e-7), vec4(3.3867338e-9, -1.7152058e-11, 4.7073456e-14, 8.615331e-14), vec4(0.78584695, -0.020341357, 0.00033901897, -4.4695416e-6), vec4(5.0268525e-8, -5.015497e-10, 4.514167e-12, 3.996803e-14), vec4(0.7464853, -0.019037347, 0.0003133691, -4.086745e-6), vec4(4.5516558e-8, -4.5011284e-10, 4.0136783e-12, 4.7073456e-14), vec4(0.7096321, -0.01783149, 0.000289906, -3.7399832e-6), vec4(4.1250228e-8, -4.043006e-10, 3.574474e-12, 4.6185278e-14), vec4(0.6750995, -0.016715458, 0.0002684246, -3.4255886e-6), vec4(3.7416495e-8, -3.634768e-10, 3.1872283e-12, 4.6185278e-14), vec4(0.6272794, -0.030387005, 0.0009580818, -2.4061048e-5), vec4(5.1801413e-7, -9.927543e-9, 1.7332358e-10, -2.7222669e-12), vec4(0.57015324, -0.026827596, 0.0008253934, -2.0287804e-5), vec4(4.283978e-7, -8.065489e-9, 1.3850876e-10, -2.1382895e-12), vec4(0.5196439, -0.023756387, 0.0007133347, -1.7162258e-5), vec4(3.5547052e-7, -6.5749886e-9, 1.1106582e-10, -1.677547e-12), vec4(0.47485265, -0.021098126, 0.000618392, -1.4564653e-5), vec4(2.9592425e-7, -5.377808e-9, 8.935852e-11, -1.3233858e-12), vec4(0.4167533, -0.035502225, 0.0020077599, -9.16237e-5), vec4(3.617964e-6, -1.2807482e-7, 4.1592605e-9, -1.2519785e-10), vec4(0.35310093, -0.028464397, 0.0015355214, -6.720277e-5), vec4(2.5549414e-6, -8.734229e-8, 2.74549e-9, -8.015033e-11), vec4(0.30181482, -0.023053482, 0.0011872437, -4.985952e-5), vec4(1.8258146e-6, -6.0294994e-8, 1.8349833e-9, -5.1961768e-11), vec4(0.26008537, -0.018848889, 0.00092748983, -3.7398404e-5), vec4(1.3196806e-6, -4.211374e-8, 1.24123e-9, -3.4098946e-11), vec4(0.21097384, -0.02833318, 0.0026085791, -0.00019815165), vec4(1.3240014e-5, -8.032937e-7, 4.5332847e-8, -2.383124e-9), vec4(0.16334534, -0.019909557, 0.0016825865, -0.00011829047), vec4(7.361291e-6, -4.1804822e-7, 2.216081e-8, -1.0987664e-9), vec4(0.12941593, -0.014392785, 0.0011207133, -7.312401e-5), vec4(4.2474107e-6, -2.2617557e-7, 1.1279408e-8, -5.2811067e-10), vec4(0.1045896, -0.010667653, 0.00076819374, -4.665181e-5), vec4(2.534995e-6, -1.2680964e-7, 5.958998e-9, -2.638087e-10), vec4(0.07841912, -0.014176364, 0.0018281857, -0.00020045321), vec4(1.9795682e-5, -1.8097585e-6, 1.5757479e-7, -1.2851965e-8), vec4(0.0560429, -0.008755298, 0.0009860945, -9.524624e-5), vec4(8.346028e-6, -6.8116896e-7, 5.3103143e-8, -3.906189e-9), vec4(0.04182938, -0.0057326877, 0.0005708639, -4.907507e-5), vec4(3.84914e-6, -2.8258418e-7, 1.986625e-8, -1.325575e-9), vec4(0.03230852, -0.0039342963, 0.00035016204, -2.7042239e-5), vec4(1.9139986e-6, -1.2730473e-7, 8.125588e-9, -4.946015e-10), vec4(0.023056017, -0.0047972575, 0.0007341793, -9.804619e-5), vec4(1.20590175e-5, -1.4004432e-6, 1.5913854e-7, -1.7034818e-8), vec4(0.015770199, -0.0027393384, 0.0003519189, -3.9650156e-5), vec4(4.1337757e-6, -4.0863492e-7, 3.944863e-8, -3.62363e-9), vec4(0.011437163, -0.0017017398, 0.00018792653, -1.8260866e-5), vec4(1.6470873e-6, -1.412674e-7, 1.1818231e-8, -9.471726e-10), vec4(0.00866178, -0.0011258711, 0.0001088732, -9.2847595e-6), vec4(7.365851e-7, -5.5677763e-8, 4.1018984e-9, -2.9088262e-10), vec4(0.006061911, -0.0013231621, 0.00021536356, -3.0982304e-5), vec4(4.154092e-6, -5.319391e-7, 6.779496e-8, -8.1705505e-9), vec4(0.0040820343, -0.0007332432, 9.839357e-5, -1.1690638e-5), vec4(1.2970188e-6, -1.3763658e-7, 1.44309e-8, -1.4465321e-9), vec4(0.002932701, -0.00044726077, 5.101198e-5, -5.157015e-6), vec4(4.873513e-7, -4.4093955e-8, 3.9244634e-9, -3.361419e-10), vec4(0.0022075695, -0.0002924102, 2.8986162e-5, -2.548597e-6), vec4(2.0962135e-7, -1.6517234e-8, 1.276658e-9, -9.536809e-11), vec4(0.00153612, -0.00033979642, 5.6287994e-5, -8.275684e-6), vec4(1.1385838e-6, -1.502121e-7, 1.9849313e-8, -2.4841724e-9), vec4(0.0010298727, -0.00018667341, 2.5351253e-5, -3.0571844e-6), vec4(3.4523006e-7, -3.7393693e-8, 4.0174672e-9, -4.1333592e-10), vec4(0.0007380098, -0.00011328932, 1.3033428e-5, -1.331858e-6), vec4(1.274904e-7, -1.170815e-8, 1.0604964e-9, -9.25777e-11), vec4(0.00055463216, -7.382818e-5, 7.366494e-6, -6.529916e-7), vec4(5.4233485e-8, -4.32196e-9, 3.384992e-10, -2.5654366e-11));
+layout(std430, binding = 2) readonly buffer type_7_block_0Compute { vec4 _group_1_binding_0_cs[]; };
 
-layout(std430, binding = 0) readonly buffer type_10_block_0Compute { vec4 _group_0_binding_0_cs[]; };
+layout(std430, binding = 0) readonly buffer type_7_block_1Compute { vec4 _group_0_binding_0_cs[]; };
 
-layout(std430, binding = 1) buffer type_10_block_1Compute { vec4 _group_0_binding_1_cs[]; };
+layout(std430, binding = 1) buffer type_7_block_2Compute { vec4 _group_0_binding_1_cs[]; };
 
 
 float ms_inf() {
@@ -90,32 +123,32 @@ float ms_inf() {
 }
 
 vec2 ms_cos_sin_turn(float v) {
-    float k_4 = roundEven((4.0 * v));
-    float r_3 = (v - (0.25 * k_4));
-    float x_6 = (MS_TAU * r_3);
-    float x2_ = (x_6 * x_6);
-    float s_6 = (x_6 * (1.0 + (x2_ * (-0.16666667 + (x2_ * (0.008333333 + (x2_ * (-0.0001984127 + (x2_ * 2.7557319e-6)))))))));
-    float c_12 = (1.0 + (x2_ * (-0.5 + (x2_ * (0.041666668 + (x2_ * (-0.0013888889 + (x2_ * (2.4801588e-5 + (x2_ * -2.755732e-7))))))))));
-    int q = (int(k_4) & 3);
-    if ((q == 0)) {
-        return vec2(c_12, s_6);
+    float k_7 = roundEven((4.0 * v));
+    float r_3 = (v - (0.25 * k_7));
+    float x_12 = (MS_TAU * r_3);
+    float x2_ = (x_12 * x_12);
+    float s_9 = (x_12 * (1.0 + (x2_ * (-0.16666667 + (x2_ * (0.008333333 + (x2_ * (-0.0001984127 + (x2_ * 2.7557319e-6)))))))));
+    float c_15 = (1.0 + (x2_ * (-0.5 + (x2_ * (0.041666668 + (x2_ * (-0.0013888889 + (x2_ * (2.4801588e-5 + (x2_ * -2.755732e-7))))))))));
+    int q_2 = (int(k_7) & 3);
+    if ((q_2 == 0)) {
+        return vec2(c_15, s_9);
     } else {
-        if ((q == 1)) {
-            return vec2(-(s_6), c_12);
+        if ((q_2 == 1)) {
+            return vec2(-(s_9), c_15);
         } else {
-            if ((q == 2)) {
-                return vec2(-(c_12), -(s_6));
+            if ((q_2 == 2)) {
+                return vec2(-(c_15), -(s_9));
             }
         }
     }
-    return vec2(s_6, -(c_12));
+    return vec2(s_9, -(c_15));
 }
 
 vec3 ms_rescaled(vec3 a) {
     bool local = false;
-    float m_5 = max(abs(a.x), max(abs(a.y), abs(a.z)));
-    if ((m_5 > 0.0)) {
-        local = (m_5 <= 3.4028235e38);
+    float m_6 = max(abs(a.x), max(abs(a.y), abs(a.z)));
+    if ((m_6 > 0.0)) {
+        local = (m_6 <= 3.4028235e38);
     } else {
         local = false;
     }
@@ -123,7 +156,7 @@ vec3 ms_rescaled(vec3 a) {
     if (!(_e16)) {
         return a;
     }
-    return (a / vec3(m_5));
+    return (a / vec3(m_6));
 }
 
 float ms_dot(vec3 a_1, vec3 b) {
@@ -153,9 +186,9 @@ vec3 ms_unit(vec3 w) {
     if ((abs((_e1 - 1.0)) <= 1e-6)) {
         return w;
     }
-    float m_6 = max(abs(w.x), max(abs(w.y), abs(w.z)));
-    if ((m_6 > 0.0)) {
-        local_2 = (m_6 <= 3.4028235e38);
+    float m_7 = max(abs(w.x), max(abs(w.y), abs(w.z)));
+    if ((m_7 > 0.0)) {
+        local_2 = (m_7 <= 3.4028235e38);
     } else {
         local_2 = false;
     }
@@ -163,7 +196,7 @@ vec3 ms_unit(vec3 w) {
     if (!(_e22)) {
         return w;
     }
-    vec3 _e27 = ms_normalize((w * (1.0 / m_6)));
+    vec3 _e27 = ms_normalize((w * (1.0 / m_7)));
     return _e27;
 }
 
@@ -179,13 +212,13 @@ vec3 ms_unit_normal(vec3 v_1) {
     if (_e9) {
         return (v_1 * (1.0 / sqrt(_e1)));
     }
-    float m_7 = max(abs(v_1.x), max(abs(v_1.y), abs(v_1.z)));
-    if ((m_7 == 0.0)) {
+    float m_8 = max(abs(v_1.x), max(abs(v_1.y), abs(v_1.z)));
+    if ((m_8 == 0.0)) {
         return vec3(0.0, 0.0, 1.0);
     }
-    vec3 s_7 = (v_1 / vec3(m_7));
-    float _e30 = ms_dot(s_7, s_7);
-    return (s_7 * (1.0 / sqrt(_e30)));
+    vec3 s_10 = (v_1 / vec3(m_8));
+    float _e30 = ms_dot(s_10, s_10);
+    return (s_10 * (1.0 / sqrt(_e30)));
 }
 
 vec3 ms_reflect(vec3 wo, vec3 n) {
@@ -198,11 +231,11 @@ bool ms_same_hemisphere(vec3 a_3, vec3 b_1) {
 }
 
 vec3 ms_half_vector_reflection(vec3 wo_1, vec3 wi) {
-    vec3 s_8 = (wo_1 + wi);
-    if (!((max(abs(s_8.x), max(abs(s_8.y), abs(s_8.z))) > 0.0))) {
+    vec3 s_11 = (wo_1 + wi);
+    if (!((max(abs(s_11.x), max(abs(s_11.y), abs(s_11.z))) > 0.0))) {
         return vec3(0.0);
     }
-    vec3 _e16 = ms_normalize(s_8);
+    vec3 _e16 = ms_normalize(s_11);
     if ((_e16.z < 0.0)) {
         return -(_e16);
     }
@@ -304,8 +337,8 @@ vec4 ms_refract(vec3 wi_5, vec3 n_in, float eta_in) {
     vec3 _e22 = n_1;
     vec3 _e23 = n_1;
     float _e24 = ms_dot(t0_, _e23);
-    vec3 t_2 = (t0_ + (_e22 * -(_e24)));
-    float _e28 = ms_dot(t_2, t_2);
+    vec3 t_4 = (t0_ + (_e22 * -(_e24)));
+    float _e28 = ms_dot(t_4, t_4);
     float _e29 = eta_1;
     float _e30 = eta_1;
     float sin2_t = (_e28 / (_e29 * _e30));
@@ -316,7 +349,7 @@ vec4 ms_refract(vec3 wi_5, vec3 n_in, float eta_in) {
     float _e41 = eta_1;
     vec3 _e45 = n_1;
     float _e49 = eta_1;
-    return vec4(((t_2 * (-1.0 / _e41)) + (_e45 * -(cos_t))), _e49);
+    return vec4(((t_4 * (-1.0 / _e41)) + (_e45 * -(cos_t))), _e49);
 }
 
 float ms_fresnel_dielectric(float cos_in, float eta_in_1) {
@@ -335,31 +368,31 @@ float ms_fresnel_dielectric(float cos_in, float eta_in_1) {
         eta_2 = (1.0 / _e9);
     }
     float _e12 = cos_i_1;
-    float c_13 = min(_e12, 1.0);
+    float c_16 = min(_e12, 1.0);
     float _e15 = eta_2;
     if ((_e15 == 1.0)) {
         return 0.0;
     }
-    if ((c_13 == 0.0)) {
+    if ((c_16 == 0.0)) {
         return 1.0;
     }
     float _e24 = eta_2;
     if ((_e24 > 1e18)) {
         float _e27 = eta_2;
         float e_3 = (1.0 / _e27);
-        float cos_t_1 = sqrt((((1.0 - e_3) * (1.0 + e_3)) + ((c_13 * e_3) * (c_13 * e_3))));
-        r_parl = ((c_13 - (e_3 * cos_t_1)) / (c_13 + (e_3 * cos_t_1)));
-        r_perp = (((e_3 * c_13) - cos_t_1) / ((e_3 * c_13) + cos_t_1));
+        float cos_t_1 = sqrt((((1.0 - e_3) * (1.0 + e_3)) + ((c_16 * e_3) * (c_16 * e_3))));
+        r_parl = ((c_16 - (e_3 * cos_t_1)) / (c_16 + (e_3 * cos_t_1)));
+        r_perp = (((e_3 * c_16) - cos_t_1) / ((e_3 * c_16) + cos_t_1));
     } else {
         float _e51 = eta_2;
         if ((_e51 > 1.0)) {
             float _e54 = eta_2;
             float _e57 = eta_2;
-            ect2_ = (((_e54 - 1.0) * (_e57 + 1.0)) + (c_13 * c_13));
+            ect2_ = (((_e54 - 1.0) * (_e57 + 1.0)) + (c_16 * c_16));
         } else {
             float _e63 = eta_2;
             float _e64 = eta_2;
-            ect2_ = ((_e63 * _e64) - ((1.0 - c_13) * (1.0 + c_13)));
+            ect2_ = ((_e63 * _e64) - ((1.0 - c_16) * (1.0 + c_16)));
         }
         float _e72 = ect2_;
         if ((_e72 <= 0.0)) {
@@ -369,9 +402,9 @@ float ms_fresnel_dielectric(float cos_in, float eta_in_1) {
         float ect = sqrt(_e76);
         float _e78 = eta_2;
         float _e79 = eta_2;
-        float e2c = ((_e78 * _e79) * c_13);
+        float e2c = ((_e78 * _e79) * c_16);
         r_parl = ((e2c - ect) / (e2c + ect));
-        r_perp = ((c_13 - ect) / (c_13 + ect));
+        r_perp = ((c_16 - ect) / (c_16 + ect));
     }
     float _e88 = r_parl;
     float _e89 = r_parl;
@@ -389,17 +422,17 @@ float ms_cnorm(vec2 a_5) {
 }
 
 float ms_cnorm_ratio(vec2 a_6, vec2 b_3) {
-    float s_9 = max(max(abs(a_6.x), abs(a_6.y)), max(abs(b_3.x), abs(b_3.y)));
-    if ((s_9 == 0.0)) {
+    float s_12 = max(max(abs(a_6.x), abs(a_6.y)), max(abs(b_3.x), abs(b_3.y)));
+    if ((s_12 == 0.0)) {
         return 0.0;
     }
-    if (!((s_9 <= 3.4028235e38))) {
+    if (!((s_12 <= 3.4028235e38))) {
         float _e19 = ms_cnorm(a_6);
         float _e20 = ms_cnorm(b_3);
         return (_e19 / _e20);
     }
-    float _e24 = ms_cnorm((a_6 / vec2(s_9)));
-    float _e27 = ms_cnorm((b_3 / vec2(s_9)));
+    float _e24 = ms_cnorm((a_6 / vec2(s_12)));
+    float _e27 = ms_cnorm((b_3 / vec2(s_12)));
     return (_e24 / _e27);
 }
 
@@ -421,25 +454,25 @@ vec2 ms_csqrt(vec2 a_8) {
     if ((r_6 == 0.0)) {
         return vec2(0.0);
     }
-    float t_3 = sqrt(((r_6 + abs(a_8.x)) * 0.5));
+    float t_5 = sqrt(((r_6 + abs(a_8.x)) * 0.5));
     if ((a_8.x >= 0.0)) {
-        return vec2(t_3, (a_8.y / (t_3 + t_3)));
+        return vec2(t_5, (a_8.y / (t_5 + t_5)));
     }
-    s_1 = t_3;
+    s_1 = t_5;
     if ((a_8.y < 0.0)) {
-        s_1 = -(t_3);
+        s_1 = -(t_5);
     }
     float _e29 = s_1;
-    return vec2((abs(a_8.y) / (t_3 + t_3)), _e29);
+    return vec2((abs(a_8.y) / (t_5 + t_5)), _e29);
 }
 
-float ms_fresnel_conductor(float cos_in_1, float eta_3, float k) {
+float ms_fresnel_conductor(float cos_in_1, float eta_3, float k_1) {
     bool local_4 = false;
     bool local_5 = false;
     vec2 w_2 = vec2(0.0);
     float cos_i_5 = min(max(cos_in_1, 0.0), 1.0);
     if ((eta_3 == 1.0)) {
-        local_4 = (k == 0.0);
+        local_4 = (k_1 == 0.0);
     } else {
         local_4 = false;
     }
@@ -448,7 +481,7 @@ float ms_fresnel_conductor(float cos_in_1, float eta_3, float k) {
         return 0.0;
     }
     if ((abs(eta_3) < 1e-9)) {
-        local_5 = (abs(k) < 1e-9);
+        local_5 = (abs(k_1) < 1e-9);
     } else {
         local_5 = false;
     }
@@ -456,11 +489,11 @@ float ms_fresnel_conductor(float cos_in_1, float eta_3, float k) {
     if (_e25) {
         return 1.0;
     }
-    vec2 n_4 = vec2(eta_3, k);
+    vec2 n_7 = vec2(eta_3, k_1);
     float sin2_i = ((1.0 - cos_i_5) * (1.0 + cos_i_5));
     vec2 ci = vec2(cos_i_5, 0.0);
-    if ((max(abs(eta_3), abs(k)) > 1e18)) {
-        vec2 _e40 = ms_crecip(n_4);
+    if ((max(abs(eta_3), abs(k_1)) > 1e18)) {
+        vec2 _e40 = ms_crecip(n_7);
         vec2 _e41 = ms_cmul(_e40, _e40);
         vec2 sin2_t_1 = (_e41 * sin2_i);
         vec2 _e49 = ms_csqrt(vec2((1.0 - sin2_t_1.x), -(sin2_t_1.y)));
@@ -470,10 +503,10 @@ float ms_fresnel_conductor(float cos_in_1, float eta_3, float k) {
         float _e57 = ms_cnorm_ratio((ci_m - _e49), (ci_m + _e49));
         return min((0.5 * (_e54 + _e57)), 1.0);
     }
-    vec2 _e63 = ms_cmul(n_4, n_4);
-    float _e65 = ms_cnorm(n_4);
+    vec2 _e63 = ms_cmul(n_7, n_7);
+    float _e65 = ms_cnorm(n_7);
     if ((_e65 >= 1.0)) {
-        vec2 _e74 = ms_cmul(vec2((eta_3 - 1.0), k), vec2((eta_3 + 1.0), k));
+        vec2 _e74 = ms_cmul(vec2((eta_3 - 1.0), k_1), vec2((eta_3 + 1.0), k_1));
         w_2 = (_e74 + vec2((cos_i_5 * cos_i_5), 0.0));
     } else {
         w_2 = (_e63 - vec2(sin2_i, 0.0));
@@ -482,25 +515,25 @@ float ms_fresnel_conductor(float cos_in_1, float eta_3, float k) {
     vec2 _e83 = ms_crecip(_e63);
     vec2 _e84 = ms_cmul(_e82, _e83);
     vec2 _e85 = ms_csqrt(_e84);
-    vec2 n_ci = (n_4 * cos_i_5);
-    vec2 _e87 = ms_cmul(n_4, _e85);
+    vec2 n_ci = (n_7 * cos_i_5);
+    vec2 _e87 = ms_cmul(n_7, _e85);
     float _e90 = ms_cnorm_ratio((n_ci - _e85), (n_ci + _e85));
     float _e93 = ms_cnorm_ratio((ci - _e87), (ci + _e87));
     return min((0.5 * (_e90 + _e93)), 1.0);
 }
 
 float ms_fresnel_schlick(float cos_i_2, float f0_) {
-    float m_8 = (1.0 - min(max(cos_i_2, 0.0), 1.0));
-    float m2_ = (m_8 * m_8);
-    return (f0_ + ((1.0 - f0_) * ((m2_ * m2_) * m_8)));
+    float m_9 = (1.0 - min(max(cos_i_2, 0.0), 1.0));
+    float m2_ = (m_9 * m_9);
+    return (f0_ + ((1.0 - f0_) * ((m2_ * m2_) * m_9)));
 }
 
 float ms_fresnel_f82_tint(float cos_i_3, float f0_1, float h) {
     float mu = min(max(cos_i_3, 0.0), 1.0);
-    float m_9 = (1.0 - mu);
-    float m5_ = ((((m_9 * m_9) * m_9) * m_9) * m_9);
-    float a_12 = (((f0_1 + ((1.0 - f0_1) * 0.46266437)) * (1.0 - h)) / 0.05665278);
-    float r_7 = ((f0_1 + ((1.0 - f0_1) * m5_)) - (((a_12 * mu) * m5_) * m_9));
+    float m_10 = (1.0 - mu);
+    float m5_ = ((((m_10 * m_10) * m_10) * m_10) * m_10);
+    float a_18 = (((f0_1 + ((1.0 - f0_1) * 0.46266437)) * (1.0 - h)) / 0.05665278);
+    float r_7 = ((f0_1 + ((1.0 - f0_1) * m5_)) - (((a_18 * mu) * m5_) * m_10));
     return min(max(r_7, 0.0), 1.0);
 }
 
@@ -538,42 +571,42 @@ vec3 ms_fresnel_eval(MsFresnel fr, float cos_i_4) {
 }
 
 float ms_ggx_d(vec3 wm_2, vec2 alpha) {
-    float z_1 = wm_2.z;
-    if (!((z_1 > 0.0))) {
+    float z_3 = wm_2.z;
+    if (!((z_3 > 0.0))) {
         return 0.0;
     }
-    float x_7 = (wm_2.x / alpha.x);
-    float y = (wm_2.y / alpha.y);
-    float t_4 = (((x_7 * x_7) + (y * y)) + (z_1 * z_1));
-    return (1.0 / ((((MS_PI * alpha.x) * alpha.y) * t_4) * t_4));
+    float x_13 = (wm_2.x / alpha.x);
+    float y_3 = (wm_2.y / alpha.y);
+    float t_6 = (((x_13 * x_13) + (y_3 * y_3)) + (z_3 * z_3));
+    return (1.0 / ((((MS_PI * alpha.x) * alpha.y) * t_6) * t_6));
 }
 
 float ms_ggx_lambda(vec3 w_3, vec2 alpha_1) {
-    float x_8 = (alpha_1.x * w_3.x);
-    float y_1 = (alpha_1.y * w_3.y);
-    float z_2 = abs(w_3.z);
-    float t_5 = ((x_8 * x_8) + (y_1 * y_1));
-    float z2_ = (z_2 * z_2);
-    float den = (2.0 * (z2_ + (z_2 * sqrt((z2_ + t_5)))));
+    float x_14 = (alpha_1.x * w_3.x);
+    float y_4 = (alpha_1.y * w_3.y);
+    float z_4 = abs(w_3.z);
+    float t_7 = ((x_14 * x_14) + (y_4 * y_4));
+    float z2_ = (z_4 * z_4);
+    float den = (2.0 * (z2_ + (z_4 * sqrt((z2_ + t_7)))));
     if (!((den > 0.0))) {
-        if ((z_2 == 0.0)) {
+        if ((z_4 == 0.0)) {
             float _e25 = ms_inf();
             return _e25;
         }
-        return ((t_5 / (z_2 + sqrt(((z_2 * z_2) + t_5)))) / (z_2 + z_2));
+        return ((t_7 / (z_4 + sqrt(((z_4 * z_4) + t_7)))) / (z_4 + z_4));
     }
-    return (t_5 / den);
+    return (t_7 / den);
 }
 
 float ms_ggx_g1_(vec3 w_4, vec2 alpha_2) {
-    float x_9 = (alpha_2.x * w_4.x);
-    float y_2 = (alpha_2.y * w_4.y);
-    float z_3 = abs(w_4.z);
-    float den_1 = (z_3 + sqrt(((z_3 * z_3) + ((x_9 * x_9) + (y_2 * y_2)))));
+    float x_15 = (alpha_2.x * w_4.x);
+    float y_5 = (alpha_2.y * w_4.y);
+    float z_5 = abs(w_4.z);
+    float den_1 = (z_5 + sqrt(((z_5 * z_5) + ((x_15 * x_15) + (y_5 * y_5)))));
     if (!((den_1 > 0.0))) {
         return 0.0;
     }
-    return ((z_3 + z_3) / den_1);
+    return ((z_5 + z_5) / den_1);
 }
 
 float ms_ggx_g2_(vec3 wo_6, vec3 wi_6, vec2 alpha_3) {
@@ -592,7 +625,7 @@ float ms_ggx_pdf(vec3 w_5, vec3 wm_3, vec2 alpha_5) {
     float c = 0.0;
     bool local_6 = false;
     bool local_7 = false;
-    float z_4 = abs(w_5.z);
+    float z_6 = abs(w_5.z);
     float _e5 = ms_dot(w_5, wm_3);
     c = _e5;
     if ((w_5.z < 0.0)) {
@@ -601,7 +634,7 @@ float ms_ggx_pdf(vec3 w_5, vec3 wm_3, vec2 alpha_5) {
     }
     float _e12 = c;
     if ((_e12 > 0.0)) {
-        local_6 = (z_4 > 0.0);
+        local_6 = (z_6 > 0.0);
     } else {
         local_6 = false;
     }
@@ -617,42 +650,47 @@ float ms_ggx_pdf(vec3 w_5, vec3 wm_3, vec2 alpha_5) {
     }
     float sx = (alpha_5.x * w_5.x);
     float sy = (alpha_5.y * w_5.y);
-    float len_1 = sqrt((((sx * sx) + (sy * sy)) + (z_4 * z_4)));
+    float len_3 = sqrt((((sx * sx) + (sy * sy)) + (z_6 * z_6)));
     float mx = (wm_3.x / alpha_5.x);
     float my = (wm_3.y / alpha_5.y);
-    float t_6 = (((mx * mx) + (my * my)) + (wm_3.z * wm_3.z));
+    float t_8 = (((mx * mx) + (my * my)) + (wm_3.z * wm_3.z));
     float _e55 = c;
     float _e56 = c;
-    return ((_e55 + _e56) / (((((MS_PI * alpha_5.x) * alpha_5.y) * t_6) * t_6) * (z_4 + len_1)));
+    return ((_e55 + _e56) / (((((MS_PI * alpha_5.x) * alpha_5.y) * t_8) * t_8) * (z_6 + len_3)));
 }
 
-vec3 ms_ggx_cap_normal(vec3 w_6, vec2 alpha_6, vec2 u, float len) {
+vec3 ms_ggx_cap_normal_stretched(vec3 w_6, vec3 stretch, vec2 u, float len) {
     float inv = (1.0 / len);
-    float x_10 = ((alpha_6.x * w_6.x) * inv);
-    float y_3 = ((alpha_6.y * w_6.y) * inv);
-    float z_5 = (w_6.z * inv);
-    vec2 _e17 = ms_cos_sin_turn(u.x);
-    float above = ((1.0 - u.y) * (1.0 + z_5));
-    float sin_ = sqrt(max((u.y * ((above * (1.0 + z_5)) + ((x_10 * x_10) + (y_3 * y_3)))), 0.0));
-    vec3 h_1 = vec3((alpha_6.x * ((sin_ * _e17.x) + x_10)), (alpha_6.y * ((sin_ * _e17.y) + y_3)), above);
-    float n_5 = (1.0 / sqrt((((h_1.x * h_1.x) + (h_1.y * h_1.y)) + (h_1.z * h_1.z))));
-    return (h_1 * n_5);
+    float x_16 = ((stretch.x * w_6.x) * inv);
+    float y_6 = ((stretch.y * w_6.y) * inv);
+    float z_7 = ((stretch.z * w_6.z) * inv);
+    vec2 _e19 = ms_cos_sin_turn(u.x);
+    float above = ((1.0 - u.y) * (1.0 + z_7));
+    float sin_ = sqrt(max((u.y * ((above * (1.0 + z_7)) + ((x_16 * x_16) + (y_6 * y_6)))), 0.0));
+    vec3 h_1 = vec3((stretch.x * ((sin_ * _e19.x) + x_16)), (stretch.y * ((sin_ * _e19.y) + y_6)), (stretch.z * above));
+    float n_8 = (1.0 / sqrt((((h_1.x * h_1.x) + (h_1.y * h_1.y)) + (h_1.z * h_1.z))));
+    return (h_1 * n_8);
 }
 
-vec3 ms_ggx_sample_wm(vec3 w_in, vec2 alpha_7, vec2 u_1) {
-    vec3 w_7 = vec3(0.0);
+vec3 ms_ggx_cap_normal(vec3 w_7, vec2 alpha_6, vec2 u_1, float len_1) {
+    vec3 _e6 = ms_ggx_cap_normal_stretched(w_7, vec3(alpha_6, 1.0), u_1, len_1);
+    return _e6;
+}
+
+vec3 ms_ggx_sample_wm(vec3 w_in, vec2 alpha_7, vec2 u_2) {
+    vec3 w_8 = vec3(0.0);
     bool local_8 = false;
-    w_7 = w_in;
-    float _e5 = w_7.z;
+    w_8 = w_in;
+    float _e5 = w_8.z;
     if ((_e5 < 0.0)) {
-        vec3 _e8 = w_7;
-        w_7 = -(_e8);
+        vec3 _e8 = w_8;
+        w_8 = -(_e8);
     }
-    float _e12 = w_7.x;
-    float _e16 = w_7.y;
-    float _e19 = w_7.z;
-    vec3 s_10 = vec3((alpha_7.x * _e12), (alpha_7.y * _e16), _e19);
-    float n2_ = (((s_10.x * s_10.x) + (s_10.y * s_10.y)) + (s_10.z * s_10.z));
+    float _e12 = w_8.x;
+    float _e16 = w_8.y;
+    float _e19 = w_8.z;
+    vec3 s_13 = vec3((alpha_7.x * _e12), (alpha_7.y * _e16), _e19);
+    float n2_ = (((s_13.x * s_13.x) + (s_13.y * s_13.y)) + (s_13.z * s_13.z));
     if ((n2_ >= 1e-24)) {
         local_8 = (n2_ <= 1e24);
     } else {
@@ -660,35 +698,35 @@ vec3 ms_ggx_sample_wm(vec3 w_in, vec2 alpha_7, vec2 u_1) {
     }
     bool _e39 = local_8;
     if (_e39) {
-        vec3 _e40 = w_7;
-        vec3 _e42 = ms_ggx_cap_normal(_e40, alpha_7, u_1, sqrt(n2_));
-        float _e45 = w_7.x;
-        float _e49 = w_7.y;
-        float _e54 = w_7.z;
+        vec3 _e40 = w_8;
+        vec3 _e42 = ms_ggx_cap_normal(_e40, alpha_7, u_2, sqrt(n2_));
+        float _e45 = w_8.x;
+        float _e49 = w_8.y;
+        float _e54 = w_8.z;
         float d_14 = (((_e42.x * _e45) + (_e42.y * _e49)) + (_e42.z * _e54));
-        float _e58 = w_7.x;
-        float _e61 = w_7.y;
-        float _e65 = w_7.z;
+        float _e58 = w_8.x;
+        float _e61 = w_8.y;
+        float _e65 = w_8.z;
         float l1_ = ((abs(_e58) + abs(_e61)) + abs(_e65));
         if ((d_14 > (2.4e-7 * l1_))) {
             return _e42;
         }
-        vec3 _e71 = w_7;
+        vec3 _e71 = w_8;
         vec3 _e72 = ms_facing(_e42, _e71);
         return _e72;
     }
-    vec3 _e73 = w_7;
+    vec3 _e73 = w_8;
     vec3 _e74 = ms_rescaled(_e73);
     vec3 sr = vec3((alpha_7.x * _e74.x), (alpha_7.y * _e74.y), _e74.z);
-    vec3 _e95 = ms_ggx_cap_normal(_e74, alpha_7, u_1, sqrt((((sr.x * sr.x) + (sr.y * sr.y)) + (sr.z * sr.z))));
-    vec3 _e96 = w_7;
+    vec3 _e95 = ms_ggx_cap_normal(_e74, alpha_7, u_2, sqrt((((sr.x * sr.x) + (sr.y * sr.y)) + (sr.z * sr.z))));
+    vec3 _e96 = w_8;
     vec3 _e97 = ms_facing(_e95, _e96);
     return _e97;
 }
 
-MsSample ms_ggx_sample(vec3 w_8, vec2 alpha_8, vec2 u_2) {
-    vec3 _e3 = ms_ggx_sample_wm(w_8, alpha_8, u_2);
-    vec3 _e4 = ms_unit(w_8);
+MsSample ms_ggx_sample(vec3 w_9, vec2 alpha_8, vec2 u_3) {
+    vec3 _e3 = ms_ggx_sample_wm(w_9, alpha_8, u_3);
+    vec3 _e4 = ms_unit(w_9);
     float _e5 = ms_ggx_pdf(_e4, _e3, alpha_8);
     return MsSample(_e3, _e5);
 }
@@ -701,20 +739,20 @@ float ms_ggx_pdf_dcos(vec3 wm_4, vec2 alpha_9) {
     return (_e7 * wm_4.z);
 }
 
-MsSample ms_ggx_sample_dcos(vec2 alpha_10, vec2 u_3) {
-    vec2 _e3 = ms_cos_sin_turn(u_3.y);
-    float r_8 = sqrt(u_3.x);
-    vec3 _e21 = ms_unit_normal(vec3(((alpha_10.x * r_8) * _e3.x), ((alpha_10.y * r_8) * _e3.y), sqrt(max((1.0 - u_3.x), 0.0))));
+MsSample ms_ggx_sample_dcos(vec2 alpha_10, vec2 u_4) {
+    vec2 _e3 = ms_cos_sin_turn(u_4.y);
+    float r_8 = sqrt(u_4.x);
+    vec3 _e21 = ms_unit_normal(vec3(((alpha_10.x * r_8) * _e3.x), ((alpha_10.y * r_8) * _e3.y), sqrt(max((1.0 - u_4.x), 0.0))));
     float _e22 = ms_ggx_d(_e21, alpha_10);
     return MsSample(_e21, (_e22 * _e21.z));
 }
 
-MsBoundedCap ms_ggx_bounded_cap(vec3 w_9, vec2 alpha_11) {
+MsBoundedCap ms_ggx_bounded_cap(vec3 w_10, vec2 alpha_11) {
     vec3 v_2 = vec3(0.0);
-    bool down = (w_9.z < 0.0);
-    v_2 = w_9;
+    bool down = (w_10.z < 0.0);
+    v_2 = w_10;
     if (down) {
-        v_2 = -(w_9);
+        v_2 = -(w_10);
     }
     float _e9 = v_2.x;
     float _e13 = v_2.y;
@@ -723,50 +761,50 @@ MsBoundedCap ms_ggx_bounded_cap(vec3 w_9, vec2 alpha_11) {
     if (down) {
         return MsBoundedCap(_e18, _e18.z, 0.0);
     }
-    float a_13 = min(min(alpha_11.x, alpha_11.y), 1.0);
+    float a_19 = min(min(alpha_11.x, alpha_11.y), 1.0);
     float _e28 = v_2.x;
     float _e30 = v_2.x;
     float _e33 = v_2.y;
     float _e35 = v_2.y;
-    float s_11 = (1.0 + sqrt(((_e28 * _e30) + (_e33 * _e35))));
-    float a2_ = (a_13 * a_13);
-    float s2_ = (s_11 * s_11);
+    float s_14 = (1.0 + sqrt(((_e28 * _e30) + (_e33 * _e35))));
+    float a2_ = (a_19 * a_19);
+    float s2_ = (s_14 * s_14);
     float _e44 = v_2.z;
     float _e47 = v_2.z;
     float den_2 = (s2_ + ((a2_ * _e44) * _e47));
-    float k_5 = (((1.0 - a2_) * s2_) / den_2);
+    float k_8 = (((1.0 - a2_) * s2_) / den_2);
     float _e55 = v_2.z;
     float _e57 = v_2.z;
     float one_minus_k = ((a2_ * (s2_ + (_e55 * _e57))) / den_2);
-    return MsBoundedCap(_e18, (k_5 * _e18.z), (one_minus_k * _e18.z));
+    return MsBoundedCap(_e18, (k_8 * _e18.z), (one_minus_k * _e18.z));
 }
 
 float ms_ggx_pdf_bounded(vec3 w_in_1, vec3 wm_5, vec2 alpha_12) {
     vec3 _e3 = ms_unit(w_in_1);
     MsBoundedCap _e4 = ms_ggx_bounded_cap(_e3, alpha_12);
     vec3 ws = _e4.ws;
-    float b_6 = _e4.b;
+    float b_8 = _e4.b;
     vec3 _e15 = ms_normalize(vec3((wm_5.x / alpha_12.x), (wm_5.y / alpha_12.y), wm_5.z));
     float _e16 = ms_dot(_e15, ws);
     float cz = (((_e16 + _e16) * _e15.z) - ws.z);
-    if ((cz < -(b_6))) {
+    if ((cz < -(b_8))) {
         return 0.0;
     }
     float _e25 = ms_ggx_pdf(_e3, wm_5, alpha_12);
-    return ((_e25 * (1.0 + ws.z)) / (1.0 + b_6));
+    return ((_e25 * (1.0 + ws.z)) / (1.0 + b_8));
 }
 
-MsSample ms_ggx_sample_bounded(vec3 w_in_2, vec2 alpha_13, vec2 u_4) {
+MsSample ms_ggx_sample_bounded(vec3 w_in_2, vec2 alpha_13, vec2 u_5) {
     vec3 _e3 = ms_unit(w_in_2);
     MsBoundedCap _e4 = ms_ggx_bounded_cap(_e3, alpha_13);
     vec3 ws_1 = _e4.ws;
-    float b_7 = _e4.b;
-    vec2 _e8 = ms_cos_sin_turn(u_4.x);
-    float above_1 = ((1.0 - u_4.y) * (1.0 + b_7));
+    float b_9 = _e4.b;
+    vec2 _e8 = ms_cos_sin_turn(u_5.x);
+    float above_1 = ((1.0 - u_5.y) * (1.0 + b_9));
     float one_minus_b = ((((ws_1.x * ws_1.x) + (ws_1.y * ws_1.y)) / (1.0 + ws_1.z)) + _e4.top);
-    float sin_1 = sqrt(max(((u_4.y * (1.0 + b_7)) * (above_1 + one_minus_b)), 0.0));
-    vec3 m_10 = vec3(((sin_1 * _e8.x) + ws_1.x), ((sin_1 * _e8.y) + ws_1.y), (above_1 + _e4.top));
-    vec3 _e58 = ms_normalize(vec3((alpha_13.x * m_10.x), (alpha_13.y * m_10.y), max(m_10.z, 0.0)));
+    float sin_1 = sqrt(max(((u_5.y * (1.0 + b_9)) * (above_1 + one_minus_b)), 0.0));
+    vec3 m_11 = vec3(((sin_1 * _e8.x) + ws_1.x), ((sin_1 * _e8.y) + ws_1.y), (above_1 + _e4.top));
+    vec3 _e58 = ms_normalize(vec3((alpha_13.x * m_11.x), (alpha_13.y * m_11.y), max(m_11.z, 0.0)));
     vec3 _e59 = ms_facing(_e58, _e3);
     float _e60 = ms_ggx_pdf_bounded(_e3, _e59, alpha_13);
     return MsSample(_e59, _e60);
@@ -779,16 +817,233 @@ float ms_ggx_pdf_bounded_reflection(vec3 wo_8, vec3 wi_8, vec2 alpha_14) {
         return 0.0;
     }
     float _e7 = ms_dot(wo_8, _e3);
-    float c_14 = abs(_e7);
-    if (!((c_14 > 0.0))) {
+    float c_17 = abs(_e7);
+    if (!((c_17 > 0.0))) {
         return 0.0;
     }
     float _e13 = ms_ggx_pdf_bounded(wo_8, _e3, alpha_14);
-    return (_e13 / (4.0 * c_14));
+    return (_e13 / (4.0 * c_17));
 }
 
-vec2 ms_bk_segment(float x, int k0_, int k1_) {
-    uint bits_1 = floatBitsToUint(x);
+uvec2 ms_u64_add(uvec2 a_9, uvec2 b_4) {
+    uint lo_3 = (a_9.x + b_4.x);
+    return uvec2(lo_3, ((a_9.y + b_4.y) + ((lo_3 < a_9.x) ? 1u : 0u)));
+}
+
+uvec2 ms_u32_mul_wide(uint x, uint y) {
+    uint x0_ = (x & 65535u);
+    uint x1_ = (x >> 16u);
+    uint y0_ = (y & 65535u);
+    uint y1_ = (y >> 16u);
+    uint p00_ = (x0_ * y0_);
+    uint p01_ = (x0_ * y1_);
+    uint p10_ = (x1_ * y0_);
+    uint p11_ = (x1_ * y1_);
+    uint mid = (((p00_ >> 16u) + (p01_ & 65535u)) + (p10_ & 65535u));
+    return uvec2(((mid << 16u) | (p00_ & 65535u)), (((p11_ + (p01_ >> 16u)) + (p10_ >> 16u)) + (mid >> 16u)));
+}
+
+uvec2 ms_u64_mul(uvec2 a_10, uvec2 b_5) {
+    uvec2 _e4 = ms_u32_mul_wide(a_10.x, b_5.x);
+    return uvec2(_e4.x, ((_e4.y + (a_10.x * b_5.y)) + (a_10.y * b_5.x)));
+}
+
+uvec2 ms_u64_xorshift(uvec2 a_11, uint k_2) {
+    return (a_11 ^ uvec2(((a_11.x >> k_2) | (a_11.y << (32u - k_2))), (a_11.y >> k_2)));
+}
+
+uvec2 ms_f64_bits(float v_3) {
+    uint man = 0u;
+    uint e64_ = 0u;
+    uint b_10 = floatBitsToUint(v_3);
+    uint sign_2 = (b_10 & 2147483648u);
+    uint e_4 = ((b_10 >> 23u) & 255u);
+    man = (b_10 & 8388607u);
+    if ((e_4 == 0u)) {
+        uint _e14 = man;
+        if ((_e14 == 0u)) {
+            return uvec2(0u, sign_2);
+        }
+        uint _e19 = man;
+        uint p = uint(findMSB(_e19));
+        e64_ = (p + 874u);
+        uint _e23 = man;
+        man = ((_e23 << (23u - p)) & 8388607u);
+    } else {
+        if ((e_4 == 255u)) {
+            e64_ = 2047u;
+        } else {
+            e64_ = (e_4 + 896u);
+        }
+    }
+    uint _e34 = man;
+    uint _e37 = e64_;
+    uint _e41 = man;
+    return uvec2((_e34 << 29u), ((sign_2 | (_e37 << 20u)) | (_e41 >> 3u)));
+}
+
+uvec2 ms_stream_new(vec2 u_6) {
+    uvec2 _e2 = ms_f64_bits(u_6.x);
+    uvec2 _e4 = ms_f64_bits(u_6.y);
+    uvec2 rot = uvec2(((_e4.x << 29u) | (_e4.y >> 3u)), ((_e4.y << 29u) | (_e4.x >> 3u)));
+    return ((_e2 ^ rot) ^ uvec2(2242054355u, 608135816u));
+}
+
+uvec2 ms_stream_next_u64_(inout uvec2 state_1) {
+    uvec2 z = uvec2(0u);
+    uvec2 _e1 = state_1;
+    uvec2 _e5 = ms_u64_add(_e1, uvec2(2135587861u, 2654435769u));
+    state_1 = _e5;
+    uvec2 _e6 = state_1;
+    uvec2 _e8 = ms_u64_xorshift(_e6, 30u);
+    uvec2 _e12 = ms_u64_mul(_e8, uvec2(484763065u, 3210233709u));
+    z = _e12;
+    uvec2 _e14 = z;
+    uvec2 _e16 = ms_u64_xorshift(_e14, 27u);
+    uvec2 _e20 = ms_u64_mul(_e16, uvec2(321982955u, 2496678331u));
+    z = _e20;
+    uvec2 _e21 = z;
+    uvec2 _e23 = ms_u64_xorshift(_e21, 31u);
+    return _e23;
+}
+
+float ms_stream_next(inout uvec2 state_2) {
+    uvec2 _e1 = ms_stream_next_u64_(state_2);
+    return (float((_e1.y >> 8u)) * 5.9604645e-8);
+}
+
+float ms_zig_sample(uint at, bool normal, float w_11, inout uvec2 state_3) {
+    float y_1 = 0.0;
+    uint k_3 = 0u;
+    uint i = 0u;
+    vec4 layer = vec4(0.0);
+    float x_1 = 0.0;
+    int n_2 = 0;
+    int j = 0;
+    float f = 0.0;
+    y_1 = (w_11 * 256.0);
+    float _e7 = y_1;
+    k_3 = uint(max(_e7, 0.0));
+    uint _e12 = k_3;
+    i = (_e12 & 255u);
+    uint _e17 = i;
+    vec4 _e20 = _group_1_binding_0_cs[(at + _e17)];
+    layer = _e20;
+    float _e22 = y_1;
+    uint _e23 = k_3;
+    float _e27 = layer.x;
+    x_1 = ((_e22 - float(_e23)) * _e27);
+    float _e30 = x_1;
+    float _e32 = layer.z;
+    if ((_e30 < _e32)) {
+        float _e34 = x_1;
+        return _e34;
+    }
+    bool loop_init = true;
+    while(true) {
+        if (!loop_init) {
+            int _e128 = n_2;
+            n_2 = (_e128 + 1);
+        }
+        loop_init = false;
+        int _e37 = n_2;
+        if ((_e37 < 64)) {
+        } else {
+            break;
+        }
+        {
+            float _e40 = x_1;
+            float _e41 = x_1;
+            if ((_e40 != _e41)) {
+                float _e43 = x_1;
+                return _e43;
+            }
+            uint _e44 = i;
+            if ((_e44 == 0u)) {
+                float r_9 = layer.z;
+                if (!(normal)) {
+                    float _e50 = ms_stream_next(state_3);
+                    return (r_9 - log((1.0 - _e50)));
+                }
+                j = 0;
+                bool loop_init_1 = true;
+                while(true) {
+                    if (!loop_init_1) {
+                        int _e77 = j;
+                        j = (_e77 + 1);
+                    }
+                    loop_init_1 = false;
+                    int _e57 = j;
+                    if ((_e57 < 64)) {
+                    } else {
+                        break;
+                    }
+                    {
+                        float _e60 = ms_stream_next(state_3);
+                        float a_20 = (-(log((1.0 - _e60))) / r_9);
+                        float _e66 = ms_stream_next(state_3);
+                        float b_11 = -(log((1.0 - _e66)));
+                        if (((2.0 * b_11) > (a_20 * a_20))) {
+                            return (r_9 + a_20);
+                        }
+                    }
+                }
+                return r_9;
+            }
+            float _e80 = layer.y;
+            float _e81 = ms_stream_next(state_3);
+            float _e83 = layer.w;
+            float _e85 = layer.y;
+            float h_2 = (_e80 + (_e81 * (_e83 - _e85)));
+            float _e89 = x_1;
+            f = exp(-(_e89));
+            if (normal) {
+                float _e93 = x_1;
+                float _e96 = x_1;
+                f = exp(((-0.5 * _e93) * _e96));
+            }
+            float _e99 = f;
+            if ((h_2 < _e99)) {
+                float _e101 = x_1;
+                return _e101;
+            }
+            float _e102 = ms_stream_next(state_3);
+            y_1 = (_e102 * 256.0);
+            float _e105 = y_1;
+            k_3 = uint(_e105);
+            uint _e107 = k_3;
+            i = (_e107 & 255u);
+            uint _e111 = i;
+            vec4 _e114 = _group_1_binding_0_cs[(at + _e111)];
+            layer = _e114;
+            float _e115 = y_1;
+            uint _e116 = k_3;
+            float _e120 = layer.x;
+            x_1 = ((_e115 - float(_e116)) * _e120);
+            float _e122 = x_1;
+            float _e124 = layer.z;
+            if ((_e122 < _e124)) {
+                float _e126 = x_1;
+                return _e126;
+            }
+        }
+    }
+    float _e130 = x_1;
+    return _e130;
+}
+
+float ms_zig_exp1_(float w_12, inout uvec2 state_4) {
+    float _e4 = ms_zig_sample(MS_ZIG_EXP_AT, false, w_12, state_4);
+    return _e4;
+}
+
+float ms_zig_half_normal(float w_13, inout uvec2 state_5) {
+    float _e4 = ms_zig_sample(MS_ZIG_NORMAL_AT, true, w_13, state_5);
+    return _e4;
+}
+
+vec2 ms_bk_segment(float x_2, int k0_, int k1_) {
+    uint bits_1 = floatBitsToUint(x_2);
     uint rows = (uint((k1_ - k0_)) << MS_BK_SEGMENTS_LOG2_);
     uint idx = min(((bits_1 >> (23u - MS_BK_SEGMENTS_LOG2_)) - (uint((127 + k0_)) << MS_BK_SEGMENTS_LOG2_)), (rows - 1u));
     uint pos = ((bits_1 << (9u + MS_BK_SEGMENTS_LOG2_)) >> 9u);
@@ -799,40 +1054,88 @@ float ms_bk_poly(vec4 lo, vec4 hi, float s_2) {
     return ((((((((((((((hi.w * s_2) + hi.z) * s_2) + hi.y) * s_2) + hi.x) * s_2) + lo.w) * s_2) + lo.z) * s_2) + lo.y) * s_2) + lo.x);
 }
 
-float ms_bk_erfc_ratio(float a_9) {
-    if ((a_9 < 6.1035156e-5)) {
-        return (1.0 - (MS_SQRT_PI * a_9));
+float ms_bk_erfcx(float x_3) {
+    if ((x_3 < 6.1035156e-5)) {
+        return (1.0 - (1.1283792 * x_3));
     }
-    if ((a_9 >= 32.0)) {
-        float r_9 = (1.0 / (a_9 * a_9));
-        return (r_9 * (0.5 - (r_9 * (0.75 - (r_9 * (1.875 - (r_9 * (6.5625 - (r_9 * 29.53125)))))))));
+    if ((x_3 >= 32.0)) {
+        float r_10 = (1.0 / (x_3 * x_3));
+        return (((1.0 - (r_10 * (0.5 - (r_10 * (0.75 - (r_10 * (1.875 - (r_10 * 6.5625)))))))) * MS_FRAC_1_SQRT_PI) / x_3);
     }
-    vec2 _e28 = ms_bk_segment(a_9, MS_BK_ERFC_RATIO_K0_, MS_BK_ERFC_RATIO_K1_);
-    uint i_2 = (2u * uint(_e28.x));
-    vec4 _e35 = MS_BK_ERFC_RATIO[i_2];
-    vec4 _e40 = MS_BK_ERFC_RATIO[(i_2 + 1u)];
-    float _e42 = ms_bk_poly(_e35, _e40, _e28.y);
-    return _e42;
+    vec2 _e30 = ms_bk_segment(x_3, MS_BK_ERFCX_K0_, MS_BK_ERFCX_K1_);
+    uint i_4 = (2u * uint(_e30.x));
+    vec4 _e39 = _group_1_binding_0_cs[(MS_BK_ERFCX_AT + i_4)];
+    vec4 _e46 = _group_1_binding_0_cs[((MS_BK_ERFCX_AT + i_4) + 1u)];
+    float _e48 = ms_bk_poly(_e39, _e46, _e30.y);
+    return _e48;
+}
+
+float ms_bk_erfc_ratio(float a_12) {
+    if ((a_12 < 6.1035156e-5)) {
+        return (1.0 - (MS_SQRT_PI * a_12));
+    }
+    if ((a_12 >= 32.0)) {
+        float r_11 = (1.0 / (a_12 * a_12));
+        return (r_11 * (0.5 - (r_11 * (0.75 - (r_11 * (1.875 - (r_11 * (6.5625 - (r_11 * 29.53125)))))))));
+    }
+    vec2 _e28 = ms_bk_segment(a_12, MS_BK_ERFC_RATIO_K0_, MS_BK_ERFC_RATIO_K1_);
+    uint i_5 = (2u * uint(_e28.x));
+    vec4 _e37 = _group_1_binding_0_cs[(MS_BK_ERFC_RATIO_AT + i_5)];
+    vec4 _e44 = _group_1_binding_0_cs[((MS_BK_ERFC_RATIO_AT + i_5) + 1u)];
+    float _e46 = ms_bk_poly(_e37, _e44, _e28.y);
+    return _e46;
+}
+
+float ms_bk_quantile(float u_7) {
+    float sign_ = 1.0;
+    float ratio = 0.0;
+    float q_3 = (2.0 * min(u_7, (1.0 - u_7)));
+    if ((u_7 < 0.5)) {
+        sign_ = -1.0;
+    }
+    if (!((q_3 > 0.0))) {
+        float _e14 = sign_;
+        return (-(_e14) * MS_BK_QUANTILE_EDGE);
+    }
+    if ((q_3 >= 2.9802322e-8)) {
+        vec2 _e25 = ms_bk_segment(min(q_3, 0.99999994), MS_BK_ERFINV_Q_K0_, MS_BK_ERFINV_Q_K1_);
+        uint i_6 = (2u * uint(_e25.x));
+        vec4 _e34 = _group_1_binding_0_cs[(MS_BK_ERFINV_Q_AT + i_6)];
+        vec4 _e41 = _group_1_binding_0_cs[((MS_BK_ERFINV_Q_AT + i_6) + 1u)];
+        float _e43 = ms_bk_poly(_e34, _e41, _e25.y);
+        ratio = _e43;
+    } else {
+        float w_33 = min((-(log(q_3)) - 0.6931472), 127.99);
+        vec2 _e52 = ms_bk_segment(w_33, MS_BK_ERFINV_W_K0_, MS_BK_ERFINV_W_K1_);
+        uint i_7 = (2u * uint(_e52.x));
+        vec4 _e61 = _group_1_binding_0_cs[(MS_BK_ERFINV_W_AT + i_7)];
+        vec4 _e68 = _group_1_binding_0_cs[((MS_BK_ERFINV_W_AT + i_7) + 1u)];
+        float _e70 = ms_bk_poly(_e61, _e68, _e52.y);
+        ratio = _e70;
+    }
+    float _e71 = sign_;
+    float _e74 = ratio;
+    return (_e71 * ((1.0 - q_3) * _e74));
 }
 
 float ms_bk_ln_1m(float xi) {
     if ((xi > 0.5)) {
         return log((1.0 - xi));
     }
-    float t_7 = (-(xi) / (2.0 - xi));
-    float t2_ = (t_7 * t_7);
-    float p = (1.0 + (t2_ * (0.33333334 + (t2_ * (0.2 + (t2_ * (0.14285715 + (t2_ * (0.11111111 + (t2_ * (0.09090909 + (t2_ * (0.07692308 + (t2_ * 0.06666667))))))))))))));
-    return ((2.0 * t_7) * p);
+    float t_9 = (-(xi) / (2.0 - xi));
+    float t2_ = (t_9 * t_9);
+    float p_1 = (1.0 + (t2_ * (0.33333334 + (t2_ * (0.2 + (t2_ * (0.14285715 + (t2_ * (0.11111111 + (t2_ * (0.09090909 + (t2_ * (0.07692308 + (t2_ * 0.06666667))))))))))))));
+    return ((2.0 * t_9) * p_1);
 }
 
 float ms_beckmann_d(vec3 wm_6, vec2 alpha_15) {
     bool local_9 = false;
-    float z_6 = wm_6.z;
-    float r_10 = (1.0 / (alpha_15.x * alpha_15.y));
-    float x_11 = ((wm_6.x * alpha_15.y) * r_10);
-    float y_4 = ((wm_6.y * alpha_15.x) * r_10);
-    float z2_1 = (z_6 * z_6);
-    if ((z_6 > 0.0)) {
+    float z_8 = wm_6.z;
+    float r_12 = (1.0 / (alpha_15.x * alpha_15.y));
+    float x_17 = ((wm_6.x * alpha_15.y) * r_12);
+    float y_7 = ((wm_6.y * alpha_15.x) * r_12);
+    float z2_1 = (z_8 * z_8);
+    if ((z_8 > 0.0)) {
         local_9 = (z2_1 > 0.0);
     } else {
         local_9 = false;
@@ -841,41 +1144,41 @@ float ms_beckmann_d(vec3 wm_6, vec2 alpha_15) {
     if (!(_e24)) {
         return 0.0;
     }
-    float e_4 = (((x_11 * x_11) + (y_4 * y_4)) / z2_1);
-    if ((e_4 <= 80.0)) {
-        return ((exp(-(e_4)) * r_10) / ((MS_PI * z2_1) * z2_1));
+    float e_5 = (((x_17 * x_17) + (y_7 * y_7)) / z2_1);
+    if ((e_5 <= 80.0)) {
+        return ((exp(-(e_5)) * r_12) / ((MS_PI * z2_1) * z2_1));
     }
-    return exp((((log(r_10) - 1.14473) - (4.0 * log(z_6))) - e_4));
+    return exp((((log(r_12) - 1.14473) - (4.0 * log(z_8))) - e_5));
 }
 
-float ms_beckmann_lambda_cot(float a_10) {
-    if (!((a_10 > 0.0))) {
+float ms_beckmann_lambda_cot(float a_13) {
+    if (!((a_13 > 0.0))) {
         float _e4 = ms_inf();
         return _e4;
     }
-    if ((a_10 > 10.5)) {
+    if ((a_13 > 10.5)) {
         return 0.0;
     }
-    float _e13 = ms_bk_erfc_ratio(a_10);
-    return (((0.5 * exp((-(a_10) * a_10))) * _e13) / (MS_SQRT_PI * a_10));
+    float _e13 = ms_bk_erfc_ratio(a_13);
+    return (((0.5 * exp((-(a_13) * a_13))) * _e13) / (MS_SQRT_PI * a_13));
 }
 
-float ms_beckmann_lambda(vec3 w_10, vec2 alpha_16) {
-    float x_12 = (alpha_16.x * w_10.x);
-    float y_5 = (alpha_16.y * w_10.y);
-    float s_12 = sqrt(((x_12 * x_12) + (y_5 * y_5)));
-    if (!((s_12 > 0.0))) {
+float ms_beckmann_lambda(vec3 w_14, vec2 alpha_16) {
+    float x_18 = (alpha_16.x * w_14.x);
+    float y_8 = (alpha_16.y * w_14.y);
+    float s_15 = sqrt(((x_18 * x_18) + (y_8 * y_8)));
+    if (!((s_15 > 0.0))) {
         return 0.0;
     }
-    float _e19 = ms_beckmann_lambda_cot((abs(w_10.z) / s_12));
+    float _e19 = ms_beckmann_lambda_cot((abs(w_14.z) / s_15));
     return _e19;
 }
 
-float ms_beckmann_g1_(vec3 w_11, vec2 alpha_17) {
-    if ((w_11.z == 0.0)) {
+float ms_beckmann_g1_(vec3 w_15, vec2 alpha_17) {
+    if ((w_15.z == 0.0)) {
         return 0.0;
     }
-    float _e6 = ms_beckmann_lambda(w_11, alpha_17);
+    float _e6 = ms_beckmann_lambda(w_15, alpha_17);
     return (1.0 / (1.0 + _e6));
 }
 
@@ -901,19 +1204,19 @@ float ms_beckmann_g2_separable(vec3 wo_10, vec3 wi_10, vec2 alpha_19) {
     return (_e3 * _e4);
 }
 
-float ms_beckmann_pdf(vec3 w_12, vec3 wm_7, vec2 alpha_20) {
+float ms_beckmann_pdf(vec3 w_16, vec3 wm_7, vec2 alpha_20) {
     float c_1 = 0.0;
     bool local_11 = false;
-    float z_7 = abs(w_12.z);
-    float _e5 = ms_dot(w_12, wm_7);
+    float z_9 = abs(w_16.z);
+    float _e5 = ms_dot(w_16, wm_7);
     c_1 = _e5;
-    if ((w_12.z < 0.0)) {
+    if ((w_16.z < 0.0)) {
         float _e10 = c_1;
         c_1 = -(_e10);
     }
     float _e12 = c_1;
     if ((_e12 > 0.0)) {
-        local_11 = (z_7 > 0.0);
+        local_11 = (z_9 > 0.0);
     } else {
         local_11 = false;
     }
@@ -921,10 +1224,10 @@ float ms_beckmann_pdf(vec3 w_12, vec3 wm_7, vec2 alpha_20) {
     if (!(_e20)) {
         return 0.0;
     }
-    float _e23 = ms_beckmann_g1_(w_12, alpha_20);
+    float _e23 = ms_beckmann_g1_(w_16, alpha_20);
     float _e24 = c_1;
     float _e26 = ms_beckmann_d(wm_7, alpha_20);
-    return (((_e23 * _e24) * _e26) / z_7);
+    return (((_e23 * _e24) * _e26) / z_9);
 }
 
 float ms_beckmann_pdf_dcos(vec3 wm_8, vec2 alpha_21) {
@@ -935,100 +1238,930 @@ float ms_beckmann_pdf_dcos(vec3 wm_8, vec2 alpha_21) {
     return (_e7 * wm_8.z);
 }
 
-MsSample ms_beckmann_sample_dcos(vec2 alpha_22, vec2 u_6) {
-    vec3 v_3 = vec3(0.0);
-    vec2 _e3 = ms_cos_sin_turn(u_6.y);
-    if ((u_6.x >= 1.0)) {
-        v_3 = vec3((alpha_22.x * _e3.x), (alpha_22.y * _e3.y), 0.0);
+MsSample ms_beckmann_sample_dcos(vec2 alpha_22, vec2 u_8) {
+    vec3 v_4 = vec3(0.0);
+    vec2 _e3 = ms_cos_sin_turn(u_8.y);
+    if ((u_8.x >= 1.0)) {
+        v_4 = vec3((alpha_22.x * _e3.x), (alpha_22.y * _e3.y), 0.0);
     } else {
-        float _e17 = ms_bk_ln_1m(u_6.x);
-        float r_11 = sqrt(-(_e17));
-        if ((r_11 > 1.0)) {
-            v_3 = vec3((alpha_22.x * _e3.x), (alpha_22.y * _e3.y), (1.0 / r_11));
+        float _e17 = ms_bk_ln_1m(u_8.x);
+        float r_13 = sqrt(-(_e17));
+        if ((r_13 > 1.0)) {
+            v_4 = vec3((alpha_22.x * _e3.x), (alpha_22.y * _e3.y), (1.0 / r_13));
         } else {
-            v_3 = vec3(((alpha_22.x * r_11) * _e3.x), ((alpha_22.y * r_11) * _e3.y), 1.0);
+            v_4 = vec3(((alpha_22.x * r_13) * _e3.x), ((alpha_22.y * r_13) * _e3.y), 1.0);
         }
     }
-    vec3 _e41 = v_3;
+    vec3 _e41 = v_4;
     vec3 _e42 = ms_unit_normal(_e41);
     float _e43 = ms_beckmann_d(_e42, alpha_22);
     return MsSample(_e42, (_e43 * _e42.z));
 }
 
-float ms_d(MsMicrofacet mf, vec3 wm_9) {
-    if ((mf.ndf == MS_NDF_GGX)) {
-        float _e6 = ms_ggx_d(wm_9, mf.alpha);
-        return _e6;
+float ms_bk_visible_x(float a_14, float u_9) {
+    float lo_1 = 0.0;
+    float hi_1 = 8.0;
+    float x_4 = 0.0;
+    int k_4 = 0;
+    float f_1 = 0.0;
+    float step_ = 0.0;
+    bool local_12 = false;
+    bool local_13 = false;
+    float ea = exp((-(a_14) * a_14));
+    float _e5 = ms_bk_erfcx(a_14);
+    float erfc_a = (_e5 * ea);
+    float half_ea = (0.2820948 * ea);
+    float z_10 = (((0.5 * a_14) * (2.0 - erfc_a)) + half_ea);
+    float target_lo = (u_9 * z_10);
+    float target_hi = ((1.0 - u_9) * z_10);
+    lo_1 = -(a_14);
+    if ((a_14 >= 1.0)) {
+        float _e26 = ms_bk_quantile(u_9);
+        x_4 = _e26;
+    } else {
+        float _e27 = ms_bk_ln_1m(u_9);
+        x_4 = (sqrt(-(_e27)) - a_14);
     }
-    if ((mf.ndf == MS_NDF_BECKMANN)) {
-        float _e11 = ms_beckmann_d(wm_9, mf.alpha);
-        return _e11;
+    float _e31 = x_4;
+    float _e32 = lo_1;
+    float _e33 = hi_1;
+    x_4 = clamp(_e31, _e32, _e33);
+    bool loop_init_2 = true;
+    while(true) {
+        if (!loop_init_2) {
+            int _e157 = k_4;
+            k_4 = (_e157 + 1);
+        }
+        loop_init_2 = false;
+        int _e37 = k_4;
+        if ((_e37 < 64)) {
+        } else {
+            break;
+        }
+        {
+            float _e40 = x_4;
+            float _e42 = x_4;
+            float e_6 = exp((-(_e40) * _e42));
+            float _e45 = x_4;
+            float _e47 = ms_bk_erfcx(abs(_e45));
+            float ec = (_e47 * e_6);
+            float half_e = (0.2820948 * e_6);
+            f_1 = 0.0;
+            float _e53 = x_4;
+            if ((_e53 <= 0.0)) {
+                f_1 = ((((0.5 * a_14) * (ec - erfc_a)) - (half_e - half_ea)) - target_lo);
+            } else {
+                f_1 = ((target_hi - ((0.5 * a_14) * ec)) - half_e);
+            }
+            float _e68 = f_1;
+            if ((_e68 < 0.0)) {
+                float _e71 = x_4;
+                lo_1 = _e71;
+            } else {
+                float _e72 = f_1;
+                if ((_e72 > 0.0)) {
+                    float _e75 = x_4;
+                    hi_1 = _e75;
+                } else {
+                    float _e76 = x_4;
+                    return _e76;
+                }
+            }
+            float _e77 = x_4;
+            float g1_ = (_e77 + a_14);
+            float _e79 = x_4;
+            float _e82 = x_4;
+            float g2_ = (1.0 - ((2.0 * _e79) * (_e82 + a_14)));
+            float big_e = (e_6 * MS_FRAC_1_SQRT_PI);
+            float _e89 = f_1;
+            float fg2_ = (_e89 * g2_);
+            float g1e = ((g1_ * g1_) * big_e);
+            step_ = 0.0;
+            if ((abs(fg2_) < g1e)) {
+                float _e97 = f_1;
+                step_ = (((2.0 * _e97) * g1_) / ((2.0 * g1e) - fg2_));
+            } else {
+                float _e105 = f_1;
+                step_ = (_e105 / (g1_ * big_e));
+            }
+            float _e108 = x_4;
+            float _e109 = step_;
+            float next = (_e108 - _e109);
+            float _e111 = step_;
+            float size = abs(_e111);
+            float _e113 = x_4;
+            if (((size * (1.0 + abs(_e113))) <= 0.0001)) {
+                float _e122 = x_4;
+                local_12 = (size <= (0.0001 * (_e122 + a_14)));
+            } else {
+                local_12 = false;
+            }
+            bool _e128 = local_12;
+            if (_e128) {
+                return clamp(next, -(a_14), 8.0);
+            }
+            float _e132 = lo_1;
+            if ((next > _e132)) {
+                float _e136 = hi_1;
+                local_13 = (next < _e136);
+            } else {
+                local_13 = false;
+            }
+            bool _e139 = local_13;
+            if (_e139) {
+                x_4 = next;
+            } else {
+                float _e140 = lo_1;
+                float _e141 = hi_1;
+                x_4 = (0.5 * (_e140 + _e141));
+            }
+            float _e145 = hi_1;
+            float _e146 = lo_1;
+            float _e148 = hi_1;
+            float _e150 = lo_1;
+            if (((_e145 - _e146) <= (2.4e-7 * max(abs(_e148), abs(_e150))))) {
+                break;
+            }
+        }
     }
-    return 0.0;
+    float _e159 = x_4;
+    return _e159;
 }
 
-float ms_lambda(MsMicrofacet mf_1, vec3 w_15) {
-    if ((mf_1.ndf == MS_NDF_GGX)) {
-        float _e6 = ms_ggx_lambda(w_15, mf_1.alpha);
-        return _e6;
+vec3 ms_beckmann_sample_wm(vec3 w_17, vec2 alpha_23, vec2 u_10) {
+    float sign_1 = 1.0;
+    float x_5 = 0.0;
+    float cp = 1.0;
+    float sp = 0.0;
+    if ((w_17.z < 0.0)) {
+        sign_1 = -1.0;
     }
-    if ((mf_1.ndf == MS_NDF_BECKMANN)) {
-        float _e11 = ms_beckmann_lambda(w_15, mf_1.alpha);
-        return _e11;
+    float _e9 = sign_1;
+    float sx_1 = ((_e9 * alpha_23.x) * w_17.x);
+    float _e14 = sign_1;
+    float sy_1 = ((_e14 * alpha_23.y) * w_17.y);
+    float _e19 = sign_1;
+    float c_18 = (_e19 * w_17.z);
+    float h_3 = sqrt(((sx_1 * sx_1) + (sy_1 * sy_1)));
+    float _e27 = ms_bk_quantile(u_10.y);
+    if ((h_3 > 0.0)) {
+        float inv_1 = (1.0 / h_3);
+        cp = (sx_1 * inv_1);
+        sp = (sy_1 * inv_1);
+        float _e41 = ms_bk_visible_x((c_18 * inv_1), u_10.x);
+        x_5 = _e41;
+    } else {
+        float _e43 = ms_bk_quantile(u_10.x);
+        x_5 = _e43;
     }
-    return 0.0;
+    float _e45 = cp;
+    float _e46 = x_5;
+    float _e48 = sp;
+    float p_2 = (alpha_23.x * ((_e45 * _e46) - (_e48 * _e27)));
+    float _e53 = sp;
+    float _e54 = x_5;
+    float _e56 = cp;
+    float q_4 = (alpha_23.y * ((_e53 * _e54) + (_e56 * _e27)));
+    float n_9 = (1.0 / sqrt((((p_2 * p_2) + (q_4 * q_4)) + 1.0)));
+    vec3 _e71 = ms_facing(vec3((p_2 * n_9), (q_4 * n_9), n_9), w_17);
+    return _e71;
 }
 
-float ms_g1_(MsMicrofacet mf_2, vec3 w_16) {
-    if ((mf_2.ndf == MS_NDF_GGX)) {
-        float _e6 = ms_ggx_g1_(w_16, mf_2.alpha);
-        return _e6;
-    }
-    if ((mf_2.ndf == MS_NDF_BECKMANN)) {
-        float _e11 = ms_beckmann_g1_(w_16, mf_2.alpha);
-        return _e11;
-    }
-    return 0.0;
+MsSample ms_beckmann_sample(vec3 w_18, vec2 alpha_24, vec2 u_11) {
+    vec3 _e3 = ms_beckmann_sample_wm(w_18, alpha_24, u_11);
+    vec3 _e4 = ms_unit(w_18);
+    float _e5 = ms_beckmann_pdf(_e4, _e3, alpha_24);
+    return MsSample(_e3, _e5);
 }
 
-float ms_g2_(MsMicrofacet mf_3, vec3 wo_11, vec3 wi_11) {
-    if ((mf_3.ndf == MS_NDF_GGX)) {
-        float _e7 = ms_ggx_g2_(wo_11, wi_11, mf_3.alpha);
-        return _e7;
-    }
-    if ((mf_3.ndf == MS_NDF_BECKMANN)) {
-        float _e12 = ms_beckmann_g2_(wo_11, wi_11, mf_3.alpha);
-        return _e12;
-    }
-    return 0.0;
+vec2 ms_fam_segment(float x_6, int k0_1, int k1_1, uint m_3) {
+    uint bits_2 = floatBitsToUint(x_6);
+    uint rows_1 = (uint((k1_1 - k0_1)) << m_3);
+    uint idx_1 = min(((bits_2 >> (23u - m_3)) - (uint((127 + k0_1)) << m_3)), (rows_1 - 1u));
+    uint pos_1 = ((bits_2 << (9u + m_3)) >> 9u);
+    return vec2(float(idx_1), (uintBitsToFloat((1073741824u | pos_1)) - 3.0));
 }
 
-float ms_g2_separable(MsMicrofacet mf_4, vec3 wo_12, vec3 wi_12) {
-    float _e3 = ms_g1_(mf_4, wo_12);
-    float _e4 = ms_g1_(mf_4, wi_12);
+float ms_fam_cubic(vec4 c_2, float s_3) {
+    return ((((((c_2.w * s_3) + c_2.z) * s_3) + c_2.y) * s_3) + c_2.x);
+}
+
+float ms_dg_lambda_table(float x_7) {
+    vec2 _e4 = ms_fam_segment(x_7, MS_DG_LAMBDA_K0_, MS_DG_LAMBDA_K1_, MS_DG_LAMBDA_M);
+    vec4 _e11 = _group_1_binding_0_cs[(MS_DG_LAMBDA_AT + uint(_e4.x))];
+    float _e13 = ms_fam_cubic(_e11, _e4.y);
+    return _e13;
+}
+
+float ms_dg_lambda_ends(float u_12, float a_15) {
+    float x_19 = ((((0.5 * a_15) * a_15) * ((1.0 - u_12) * (1.0 + u_12))) / (u_12 * u_12));
+    if ((x_19 < 9.313226e-10)) {
+        if ((x_19 <= 0.0)) {
+            return 0.0;
+        }
+        return ((0.5 * x_19) * (0.42278433 - log((0.5 * x_19))));
+    }
+    float sx_2 = ((a_15 * sqrt(((0.5 * (1.0 - u_12)) * (1.0 + u_12)))) / u_12);
+    float r_14 = (1.0 / (sx_2 * sx_2));
+    return (((1.2533141 * sx_2) * (1.0 + (r_14 * (0.125 - (r_14 * 0.0234375))))) - 0.5);
+}
+
+float ms_double_ggx_lambda(vec3 w_19, vec2 alpha_25) {
+    float x_8 = 0.0;
+    bool local_14 = false;
+    float a_16 = 0.0;
+    bool local_15 = false;
+    float u_26 = abs(w_19.z);
+    if ((alpha_25.x == alpha_25.y)) {
+        float a_21 = alpha_25.x;
+        x_8 = ((((0.5 * a_21) * a_21) * ((1.0 - u_26) * (1.0 + u_26))) / (u_26 * u_26));
+    } else {
+        float sx_3 = (alpha_25.x * w_19.x);
+        float sy_2 = (alpha_25.y * w_19.y);
+        x_8 = (0.5 * (((sx_3 * sx_3) + (sy_2 * sy_2)) / (w_19.z * w_19.z)));
+    }
+    float _e35 = x_8;
+    if ((_e35 >= 9.313226e-10)) {
+        float _e40 = x_8;
+        local_14 = (_e40 < 65536.0);
+    } else {
+        local_14 = false;
+    }
+    bool _e44 = local_14;
+    if (_e44) {
+        float _e45 = x_8;
+        float _e46 = ms_dg_lambda_table(_e45);
+        return _e46;
+    }
+    a_16 = alpha_25.x;
+    float s2_1 = ((w_19.x * w_19.x) + (w_19.y * w_19.y));
+    if ((alpha_25.x != alpha_25.y)) {
+        local_15 = (s2_1 > 0.0);
+    } else {
+        local_15 = false;
+    }
+    bool _e64 = local_15;
+    if (_e64) {
+        a_16 = sqrt((((((alpha_25.x * alpha_25.x) * w_19.x) * w_19.x) + (((alpha_25.y * alpha_25.y) * w_19.y) * w_19.y)) / s2_1));
+    }
+    float _e82 = a_16;
+    float _e83 = ms_dg_lambda_ends(u_26, _e82);
+    return _e83;
+}
+
+float ms_double_ggx_g1_(vec3 w_20, vec2 alpha_26) {
+    if ((w_20.z == 0.0)) {
+        return 0.0;
+    }
+    float _e6 = ms_double_ggx_lambda(w_20, alpha_26);
+    return (1.0 / (1.0 + _e6));
+}
+
+float ms_double_ggx_g2_(vec3 wo_11, vec3 wi_11, vec2 alpha_27) {
+    bool local_16 = false;
+    if (!((wo_11.z == 0.0))) {
+        local_16 = (wi_11.z == 0.0);
+    } else {
+        local_16 = true;
+    }
+    bool _e13 = local_16;
+    if (_e13) {
+        return 0.0;
+    }
+    float _e15 = ms_double_ggx_lambda(wo_11, alpha_27);
+    float _e16 = ms_double_ggx_lambda(wi_11, alpha_27);
+    return (1.0 / (1.0 + (_e15 + _e16)));
+}
+
+float ms_double_ggx_g2_separable(vec3 wo_12, vec3 wi_12, vec2 alpha_28) {
+    float _e3 = ms_double_ggx_g1_(wo_12, alpha_28);
+    float _e4 = ms_double_ggx_g1_(wi_12, alpha_28);
     return (_e3 * _e4);
 }
 
-float ms_pdf(MsMicrofacet mf_5, vec3 w_17, vec3 wm_10) {
-    if ((mf_5.ndf == MS_NDF_GGX)) {
-        float _e7 = ms_ggx_pdf(w_17, wm_10, mf_5.alpha);
-        return _e7;
+float ms_dg_kernel_row(uint i_1, float s_4) {
+    vec4 c0_ = _group_1_binding_0_cs[(MS_DG_D_AT + (3u * i_1))];
+    vec4 c1_ = _group_1_binding_0_cs[((MS_DG_D_AT + (3u * i_1)) + 1u)];
+    vec4 c2_ = _group_1_binding_0_cs[((MS_DG_D_AT + (3u * i_1)) + 2u)];
+    float s2_2 = (s_4 * s_4);
+    float s4_ = (s2_2 * s2_2);
+    float s8_ = (s4_ * s4_);
+    float b0_ = (c0_.x + (c0_.y * s_4));
+    float b1_ = (c0_.z + (c0_.w * s_4));
+    float b2_ = (c1_.x + (c1_.y * s_4));
+    float b3_ = (c1_.z + (c1_.w * s_4));
+    float b4_ = (c2_.x + (c2_.y * s_4));
+    return (((b0_ + (b1_ * s2_2)) + ((b2_ + (b3_ * s2_2)) * s4_)) + (b4_ * s8_));
+}
+
+float ms_double_ggx_d(vec3 wm_9, vec2 alpha_29) {
+    bool local_17 = false;
+    float z_11 = wm_9.z;
+    float r_15 = (1.0 / (alpha_29.x * alpha_29.y));
+    float x_20 = ((wm_9.x * alpha_29.y) * r_15);
+    float y_9 = ((wm_9.y * alpha_29.x) * r_15);
+    float q_5 = ((x_20 * x_20) + (y_9 * y_9));
+    if (!((z_11 > 0.0))) {
+        return ((z_11 != z_11) ? z_11 : 0.0);
     }
-    if ((mf_5.ndf == MS_NDF_BECKMANN)) {
-        float _e12 = ms_beckmann_pdf(w_17, wm_10, mf_5.alpha);
-        return _e12;
+    float z2_2 = (z_11 * z_11);
+    float t_10 = (q_5 / z2_2);
+    if ((t_10 >= 9.313226e-10)) {
+        local_17 = (t_10 < 1073741800.0);
+    } else {
+        local_17 = false;
+    }
+    bool _e34 = local_17;
+    if (_e34) {
+        vec2 _e38 = ms_fam_segment(t_10, MS_DG_D_K0_, MS_DG_D_K1_, MS_DG_D_M);
+        float _e42 = ms_dg_kernel_row(uint(_e38.x), _e38.y);
+        return ((_e42 * r_15) / ((MS_PI * z2_2) * z2_2));
+    }
+    if ((t_10 < 9.313226e-10)) {
+        return (r_15 / ((MS_PI * z2_2) * z2_2));
+    }
+    return (((((log(q_5) - (2.0 * log(z_11))) - MS_EULER_GAMMA) - 1.0) * r_15) / ((MS_PI * q_5) * q_5));
+}
+
+float ms_double_ggx_pdf(vec3 w_21, vec3 wm_10, vec2 alpha_30) {
+    float c_3 = 0.0;
+    bool local_18 = false;
+    float z_12 = abs(w_21.z);
+    float _e5 = ms_dot(w_21, wm_10);
+    c_3 = _e5;
+    if ((w_21.z < 0.0)) {
+        float _e10 = c_3;
+        c_3 = -(_e10);
+    }
+    float _e12 = c_3;
+    if ((_e12 > 0.0)) {
+        local_18 = (z_12 > 0.0);
+    } else {
+        local_18 = false;
+    }
+    bool _e20 = local_18;
+    if (!(_e20)) {
+        return 0.0;
+    }
+    float _e23 = ms_double_ggx_g1_(w_21, alpha_30);
+    float _e24 = c_3;
+    float _e26 = ms_double_ggx_d(wm_10, alpha_30);
+    return (((_e23 * _e24) * _e26) / z_12);
+}
+
+float ms_double_ggx_pdf_dcos(vec3 wm_11, vec2 alpha_31) {
+    if (!((wm_11.z > 0.0))) {
+        return 0.0;
+    }
+    float _e7 = ms_double_ggx_d(wm_11, alpha_31);
+    return (_e7 * wm_11.z);
+}
+
+MsSample ms_double_ggx_sample_dcos(vec2 alpha_32, vec2 u_13) {
+    uvec2 state_6 = uvec2(0u);
+    uvec2 _e2 = ms_stream_new(u_13);
+    state_6 = _e2;
+    float _e4 = ms_stream_next(state_6);
+    float _e5 = ms_zig_exp1_(_e4, state_6);
+    float t_11 = max(_e5, 1e-36);
+    vec2 _e9 = ms_cos_sin_turn(u_13.y);
+    float r_16 = sqrt(u_13.x);
+    vec3 _e28 = ms_unit_normal(vec3(((alpha_32.x * r_16) * _e9.x), ((alpha_32.y * r_16) * _e9.y), sqrt((t_11 * max((1.0 - u_13.x), 0.0)))));
+    float _e29 = ms_double_ggx_d(_e28, alpha_32);
+    return MsSample(_e28, (_e29 * _e28.z));
+}
+
+vec3 ms_double_ggx_sample_wm(vec3 w_in_3, vec2 alpha_33, vec2 u_14) {
+    vec3 w_22 = vec3(0.0);
+    uvec2 state_7 = uvec2(0u);
+    float s_5 = 1.0;
+    float len_2 = 1.0;
+    int n_3 = 0;
+    float t_1 = 0.0;
+    vec3 _e3 = ms_unit(w_in_3);
+    w_22 = _e3;
+    float _e6 = w_22.z;
+    if ((_e6 < 0.0)) {
+        vec3 _e9 = w_22;
+        w_22 = -(_e9);
+    }
+    float _e13 = w_22.x;
+    float sx_4 = (alpha_33.x * _e13);
+    float _e17 = w_22.y;
+    float sy_3 = (alpha_33.y * _e17);
+    float c_19 = w_22.z;
+    float h_4 = sqrt(((sx_4 * sx_4) + (sy_3 * sy_3)));
+    if (!((abs((c_19 + h_4)) <= 3.4028235e38))) {
+        return vec3((c_19 + h_4));
+    }
+    float e_7 = (2.0 * c_19);
+    float g = (MS_SQRT_PI * h_4);
+    float p_exp = (e_7 / (e_7 + g));
+    float inv_p = min(((e_7 + g) / e_7), 3.4028235e38);
+    float inv_q = min(((e_7 + g) / g), 3.4028235e38);
+    uvec2 _e46 = ms_stream_new(u_14);
+    state_7 = _e46;
+    bool loop_init_3 = true;
+    while(true) {
+        if (!loop_init_3) {
+            int _e91 = n_3;
+            n_3 = (_e91 + 1);
+        }
+        loop_init_3 = false;
+        int _e54 = n_3;
+        if ((_e54 < 64)) {
+        } else {
+            break;
+        }
+        {
+            float _e57 = ms_stream_next(state_7);
+            t_1 = 0.0;
+            if ((_e57 < p_exp)) {
+                float _e62 = ms_zig_exp1_((_e57 * inv_p), state_7);
+                t_1 = _e62;
+            } else {
+                float _e65 = ms_zig_half_normal(((_e57 - p_exp) * inv_q), state_7);
+                t_1 = ((0.5 * _e65) * _e65);
+            }
+            float _e69 = t_1;
+            t_1 = max(_e69, 1e-36);
+            float _e72 = t_1;
+            s_5 = sqrt(_e72);
+            float _e75 = t_1;
+            len_2 = sqrt((((c_19 * c_19) * _e75) + (h_4 * h_4)));
+            float _e80 = ms_stream_next(state_7);
+            float _e81 = s_5;
+            float _e85 = s_5;
+            float _e87 = len_2;
+            if (((_e80 * ((e_7 * _e81) + h_4)) <= ((c_19 * _e85) + _e87))) {
+                break;
+            }
+        }
+    }
+    vec3 _e93 = w_22;
+    float _e94 = s_5;
+    float _e96 = len_2;
+    vec3 _e97 = ms_ggx_cap_normal_stretched(_e93, vec3(alpha_33, _e94), u_14, _e96);
+    vec3 _e98 = w_22;
+    vec3 _e99 = ms_facing(_e97, _e98);
+    return _e99;
+}
+
+MsSample ms_double_ggx_sample(vec3 w_23, vec2 alpha_34, vec2 u_15) {
+    vec3 _e3 = ms_double_ggx_sample_wm(w_23, alpha_34, u_15);
+    vec3 _e4 = ms_unit(w_23);
+    float _e5 = ms_double_ggx_pdf(_e4, _e3, alpha_34);
+    return MsSample(_e3, _e5);
+}
+
+float ms_exp_lambda_q(float q) {
+    if ((q < 64.0)) {
+        vec2 _e6 = ms_fam_segment(q, MS_EXP_QA_K0_, MS_EXP_QA_K1_, MS_EXP_QA_M);
+        vec4 _e13 = _group_1_binding_0_cs[(MS_EXP_QA_AT + uint(_e6.x))];
+        float _e15 = ms_fam_cubic(_e13, _e6.y);
+        return _e15;
+    }
+    vec2 _e19 = ms_fam_segment(q, MS_EXP_QB_K0_, MS_EXP_QB_K1_, MS_EXP_QB_M);
+    vec4 _e26 = _group_1_binding_0_cs[(MS_EXP_QB_AT + uint(_e19.x))];
+    float _e28 = ms_fam_cubic(_e26, _e19.y);
+    return _e28;
+}
+
+float ms_exp_lambda_z(float z_1) {
+    if ((z_1 < 0.00024414063)) {
+        return (((0.63661975 / z_1) - 0.5) + (0.15915494 * z_1));
+    }
+    float q_6 = (z_1 * z_1);
+    if ((q_6 < 4096.0)) {
+        float _e13 = ms_exp_lambda_q(q_6);
+        return _e13;
+    }
+    if ((z_1 < 512.0)) {
+        vec2 _e19 = ms_fam_segment(z_1, MS_EXP_FAR_K0_, MS_EXP_FAR_K1_, MS_EXP_FAR_M);
+        uint i_8 = (2u * uint(_e19.x));
+        vec4 lo_4 = _group_1_binding_0_cs[(MS_EXP_FAR_AT + i_8)];
+        vec4 hi_3 = _group_1_binding_0_cs[((MS_EXP_FAR_AT + i_8) + 1u)];
+        float s_16 = _e19.y;
+        float s2_3 = (s_16 * s_16);
+        float p_3 = (((lo_4.x + (lo_4.y * s_16)) + ((lo_4.z + (lo_4.w * s_16)) * s2_3)) + (((hi_3.x + (hi_3.y * s_16)) + (hi_3.z * s2_3)) * (s2_3 * s2_3)));
+        return (p_3 * exp(-(z_1)));
+    }
+    if ((z_1 != z_1)) {
+        return z_1;
     }
     return 0.0;
 }
 
-MsSample ms_sample_dcos(MsMicrofacet mf_7, vec2 u_11) {
+float ms_exponential_lambda(vec3 w_24, vec2 alpha_35) {
+    float q_1 = 0.0;
+    bool local_19 = false;
+    float a_17 = 0.0;
+    bool local_20 = false;
+    float u_27 = abs(w_24.z);
+    if ((alpha_35.x == alpha_35.y)) {
+        float a_22 = alpha_35.x;
+        q_1 = (((4.0 * u_27) * u_27) / ((a_22 * a_22) * ((1.0 - u_27) * (1.0 + u_27))));
+    } else {
+        float sx_5 = (alpha_35.x * w_24.x);
+        float sy_4 = (alpha_35.y * w_24.y);
+        q_1 = ((4.0 * (w_24.z * w_24.z)) / ((sx_5 * sx_5) + (sy_4 * sy_4)));
+    }
+    float _e35 = q_1;
+    if ((_e35 >= 5.9604645e-8)) {
+        float _e40 = q_1;
+        local_19 = (_e40 < 4096.0);
+    } else {
+        local_19 = false;
+    }
+    bool _e44 = local_19;
+    if (_e44) {
+        float _e45 = q_1;
+        float _e46 = ms_exp_lambda_q(_e45);
+        return _e46;
+    }
+    a_17 = alpha_35.x;
+    float s2_4 = ((w_24.x * w_24.x) + (w_24.y * w_24.y));
+    if ((alpha_35.x != alpha_35.y)) {
+        local_20 = (s2_4 > 0.0);
+    } else {
+        local_20 = false;
+    }
+    bool _e64 = local_20;
+    if (_e64) {
+        a_17 = sqrt((((((alpha_35.x * alpha_35.x) * w_24.x) * w_24.x) + (((alpha_35.y * alpha_35.y) * w_24.y) * w_24.y)) / s2_4));
+    }
+    float _e83 = a_17;
+    float _e92 = ms_exp_lambda_z(((u_27 + u_27) / (_e83 * sqrt(((1.0 - u_27) * (1.0 + u_27))))));
+    return _e92;
+}
+
+float ms_exponential_g1_(vec3 w_25, vec2 alpha_36) {
+    if ((w_25.z == 0.0)) {
+        return 0.0;
+    }
+    float _e6 = ms_exponential_lambda(w_25, alpha_36);
+    return (1.0 / (1.0 + _e6));
+}
+
+float ms_exponential_g2_(vec3 wo_13, vec3 wi_13, vec2 alpha_37) {
+    bool local_21 = false;
+    if (!((wo_13.z == 0.0))) {
+        local_21 = (wi_13.z == 0.0);
+    } else {
+        local_21 = true;
+    }
+    bool _e13 = local_21;
+    if (_e13) {
+        return 0.0;
+    }
+    float _e15 = ms_exponential_lambda(wo_13, alpha_37);
+    float _e16 = ms_exponential_lambda(wi_13, alpha_37);
+    return (1.0 / (1.0 + (_e15 + _e16)));
+}
+
+float ms_exponential_g2_separable(vec3 wo_14, vec3 wi_14, vec2 alpha_38) {
+    float _e3 = ms_exponential_g1_(wo_14, alpha_38);
+    float _e4 = ms_exponential_g1_(wi_14, alpha_38);
+    return (_e3 * _e4);
+}
+
+float ms_exponential_d(vec3 wm_12, vec2 alpha_39) {
+    bool local_22 = false;
+    float z_13 = wm_12.z;
+    float r_17 = (1.0 / (alpha_39.x * alpha_39.y));
+    float x_21 = ((wm_12.x * alpha_39.y) * r_17);
+    float y_10 = ((wm_12.y * alpha_39.x) * r_17);
+    float z2_3 = (z_13 * z_13);
+    if ((z_13 > 0.0)) {
+        local_22 = (z2_3 > 0.0);
+    } else {
+        local_22 = false;
+    }
+    bool _e24 = local_22;
+    if (!(_e24)) {
+        return ((z_13 != z_13) ? z_13 : 0.0);
+    }
+    float e_8 = ((2.0 * sqrt(((x_21 * x_21) + (y_10 * y_10)))) / z_13);
+    if ((e_8 <= 80.0)) {
+        return (((2.0 * exp(-(e_8))) * r_17) / ((MS_PI * z2_3) * z2_3));
+    }
+    return exp((((log((2.0 * r_17)) - 1.14473) - (4.0 * log(z_13))) - e_8));
+}
+
+float ms_exponential_pdf(vec3 w_26, vec3 wm_13, vec2 alpha_40) {
+    float c_4 = 0.0;
+    bool local_23 = false;
+    float z_14 = abs(w_26.z);
+    float _e5 = ms_dot(w_26, wm_13);
+    c_4 = _e5;
+    if ((w_26.z < 0.0)) {
+        float _e10 = c_4;
+        c_4 = -(_e10);
+    }
+    float _e12 = c_4;
+    if ((_e12 > 0.0)) {
+        local_23 = (z_14 > 0.0);
+    } else {
+        local_23 = false;
+    }
+    bool _e20 = local_23;
+    if (!(_e20)) {
+        return 0.0;
+    }
+    float _e23 = ms_exponential_g1_(w_26, alpha_40);
+    float _e24 = c_4;
+    float _e26 = ms_exponential_d(wm_13, alpha_40);
+    return (((_e23 * _e24) * _e26) / z_14);
+}
+
+float ms_exponential_pdf_dcos(vec3 wm_14, vec2 alpha_41) {
+    if (!((wm_14.z > 0.0))) {
+        return 0.0;
+    }
+    float _e7 = ms_exponential_d(wm_14, alpha_41);
+    return (_e7 * wm_14.z);
+}
+
+MsSample ms_exponential_sample_dcos(vec2 alpha_42, vec2 u_16) {
+    uvec2 state_8 = uvec2(0u);
+    vec3 v_5 = vec3(0.0);
+    uvec2 _e2 = ms_stream_new(u_16);
+    state_8 = _e2;
+    float _e4 = ms_stream_next(state_8);
+    float _e5 = ms_zig_exp1_(_e4, state_8);
+    float _e7 = ms_bk_ln_1m(u_16.x);
+    float r_18 = (0.5 * (_e5 - _e7));
+    vec2 _e12 = ms_cos_sin_turn(u_16.y);
+    if ((r_18 > 1.0)) {
+        v_5 = vec3((alpha_42.x * _e12.x), (alpha_42.y * _e12.y), (1.0 / r_18));
+    } else {
+        v_5 = vec3(((alpha_42.x * r_18) * _e12.x), ((alpha_42.y * r_18) * _e12.y), 1.0);
+    }
+    vec3 _e35 = v_5;
+    vec3 _e36 = ms_unit_normal(_e35);
+    float _e37 = ms_exponential_d(_e36, alpha_42);
+    return MsSample(_e36, (_e37 * _e36.z));
+}
+
+vec3 ms_exponential_sample_wm(vec3 w_in_4, vec2 alpha_43, vec2 u_17) {
+    vec3 w_27 = vec3(0.0);
+    float cp_1 = 1.0;
+    float sp_1 = 0.0;
+    uvec2 state_9 = uvec2(0u);
+    float v0_ = 0.0;
+    float v1_ = 0.0;
+    float x_9 = 0.0;
+    float y_2 = 0.0;
+    int n_4 = 0;
+    bool local_24 = false;
+    vec3 _e3 = ms_unit(w_in_4);
+    w_27 = _e3;
+    float _e6 = w_27.z;
+    if ((_e6 < 0.0)) {
+        vec3 _e9 = w_27;
+        w_27 = -(_e9);
+    }
+    float _e13 = w_27.x;
+    float sx_6 = (alpha_43.x * _e13);
+    float _e17 = w_27.y;
+    float sy_5 = (alpha_43.y * _e17);
+    float e_9 = w_27.z;
+    float h_5 = sqrt(((sx_6 * sx_6) + (sy_5 * sy_5)));
+    if ((h_5 > 0.0)) {
+        cp_1 = (sx_6 / h_5);
+        sp_1 = (sy_5 / h_5);
+    }
+    if (!((abs((e_9 + h_5)) <= 3.4028235e38))) {
+        return vec3((e_9 + h_5));
+    }
+    float g_1 = (h_5 * MS_FRAC_1_PI);
+    float total = (e_9 + g_1);
+    float inv_p_1 = min((total / e_9), 3.4028235e38);
+    float inv_g = min((1.0 / g_1), 3.4028235e38);
+    uvec2 _e50 = ms_stream_new(u_17);
+    state_9 = _e50;
+    v0_ = u_17.x;
+    v1_ = u_17.y;
+    bool loop_init_4 = true;
+    while(true) {
+        if (!loop_init_4) {
+            int _e134 = n_4;
+            n_4 = (_e134 + 1);
+        }
+        loop_init_4 = false;
+        int _e62 = n_4;
+        if ((_e62 < 64)) {
+        } else {
+            break;
+        }
+        {
+            int _e65 = n_4;
+            if ((_e65 > 0)) {
+                float _e68 = ms_stream_next(state_9);
+                v0_ = _e68;
+                float _e69 = ms_stream_next(state_9);
+                v1_ = _e69;
+            }
+            float _e70 = v1_;
+            float _e73 = ms_stream_next(state_9);
+            float prod = ((1.0 - _e70) * (1.0 - _e73));
+            float _e77 = v0_;
+            float d_15 = ((_e77 * total) - e_9);
+            if ((d_15 < 0.0)) {
+                float r_19 = (-0.5 * log(prod));
+                float _e85 = v0_;
+                float turn = (_e85 * inv_p_1);
+                vec2 _e87 = ms_cos_sin_turn(turn);
+                x_9 = (r_19 * _e87.x);
+                y_2 = (r_19 * _e87.y);
+                if (!((abs((turn - 0.5)) >= 0.25))) {
+                    float _e100 = ms_stream_next(state_9);
+                    float _e102 = x_9;
+                    local_24 = ((_e100 * e_9) <= (e_9 + (h_5 * _e102)));
+                } else {
+                    local_24 = true;
+                }
+                bool _e107 = local_24;
+                if (_e107) {
+                    break;
+                }
+            } else {
+                float _e108 = ms_stream_next(state_9);
+                float r_20 = (-0.5 * log((prod * (1.0 - _e108))));
+                float one_plus = (2.0 * (d_15 * inv_g));
+                float _e118 = v0_;
+                float one_minus = ((2.0 * (1.0 - _e118)) * (total * inv_g));
+                x_9 = (r_20 * sqrt(max((one_minus * one_plus), 0.0)));
+                y_2 = (r_20 * (one_plus - 1.0));
+                break;
+            }
+        }
+    }
+    float _e137 = cp_1;
+    float _e138 = x_9;
+    float _e140 = sp_1;
+    float _e141 = y_2;
+    float p_4 = (alpha_43.x * ((_e137 * _e138) - (_e140 * _e141)));
+    float _e146 = sp_1;
+    float _e147 = x_9;
+    float _e149 = cp_1;
+    float _e150 = y_2;
+    float q_7 = (alpha_43.y * ((_e146 * _e147) + (_e149 * _e150)));
+    vec3 _e156 = ms_unit_normal(vec3(p_4, q_7, 1.0));
+    vec3 _e157 = w_27;
+    vec3 _e158 = ms_facing(_e156, _e157);
+    return _e158;
+}
+
+MsSample ms_exponential_sample(vec3 w_28, vec2 alpha_44, vec2 u_18) {
+    vec3 _e3 = ms_exponential_sample_wm(w_28, alpha_44, u_18);
+    vec3 _e4 = ms_unit(w_28);
+    float _e5 = ms_exponential_pdf(_e4, _e3, alpha_44);
+    return MsSample(_e3, _e5);
+}
+
+float ms_d(MsMicrofacet mf, vec3 wm_15) {
+    if ((mf.ndf == MS_NDF_GGX)) {
+        float _e6 = ms_ggx_d(wm_15, mf.alpha);
+        return _e6;
+    }
+    if ((mf.ndf == MS_NDF_BECKMANN)) {
+        float _e11 = ms_beckmann_d(wm_15, mf.alpha);
+        return _e11;
+    }
+    if ((mf.ndf == MS_NDF_DOUBLE_GGX)) {
+        float _e16 = ms_double_ggx_d(wm_15, mf.alpha);
+        return _e16;
+    }
+    if ((mf.ndf == MS_NDF_EXPONENTIAL)) {
+        float _e21 = ms_exponential_d(wm_15, mf.alpha);
+        return _e21;
+    }
+    return 0.0;
+}
+
+float ms_lambda(MsMicrofacet mf_1, vec3 w_29) {
+    if ((mf_1.ndf == MS_NDF_GGX)) {
+        float _e6 = ms_ggx_lambda(w_29, mf_1.alpha);
+        return _e6;
+    }
+    if ((mf_1.ndf == MS_NDF_BECKMANN)) {
+        float _e11 = ms_beckmann_lambda(w_29, mf_1.alpha);
+        return _e11;
+    }
+    if ((mf_1.ndf == MS_NDF_DOUBLE_GGX)) {
+        float _e16 = ms_double_ggx_lambda(w_29, mf_1.alpha);
+        return _e16;
+    }
+    if ((mf_1.ndf == MS_NDF_EXPONENTIAL)) {
+        float _e21 = ms_exponential_lambda(w_29, mf_1.alpha);
+        return _e21;
+    }
+    return 0.0;
+}
+
+float ms_g1_(MsMicrofacet mf_2, vec3 w_30) {
+    if ((mf_2.ndf == MS_NDF_GGX)) {
+        float _e6 = ms_ggx_g1_(w_30, mf_2.alpha);
+        return _e6;
+    }
+    if ((mf_2.ndf == MS_NDF_BECKMANN)) {
+        float _e11 = ms_beckmann_g1_(w_30, mf_2.alpha);
+        return _e11;
+    }
+    if ((mf_2.ndf == MS_NDF_DOUBLE_GGX)) {
+        float _e16 = ms_double_ggx_g1_(w_30, mf_2.alpha);
+        return _e16;
+    }
+    if ((mf_2.ndf == MS_NDF_EXPONENTIAL)) {
+        float _e21 = ms_exponential_g1_(w_30, mf_2.alpha);
+        return _e21;
+    }
+    return 0.0;
+}
+
+float ms_g2_(MsMicrofacet mf_3, vec3 wo_15, vec3 wi_15) {
+    if ((mf_3.ndf == MS_NDF_GGX)) {
+        float _e7 = ms_ggx_g2_(wo_15, wi_15, mf_3.alpha);
+        return _e7;
+    }
+    if ((mf_3.ndf == MS_NDF_BECKMANN)) {
+        float _e12 = ms_beckmann_g2_(wo_15, wi_15, mf_3.alpha);
+        return _e12;
+    }
+    if ((mf_3.ndf == MS_NDF_DOUBLE_GGX)) {
+        float _e17 = ms_double_ggx_g2_(wo_15, wi_15, mf_3.alpha);
+        return _e17;
+    }
+    if ((mf_3.ndf == MS_NDF_EXPONENTIAL)) {
+        float _e22 = ms_exponential_g2_(wo_15, wi_15, mf_3.alpha);
+        return _e22;
+    }
+    return 0.0;
+}
+
+float ms_g2_separable(MsMicrofacet mf_4, vec3 wo_16, vec3 wi_16) {
+    float _e3 = ms_g1_(mf_4, wo_16);
+    float _e4 = ms_g1_(mf_4, wi_16);
+    return (_e3 * _e4);
+}
+
+float ms_pdf(MsMicrofacet mf_5, vec3 w_31, vec3 wm_16) {
+    if ((mf_5.ndf == MS_NDF_GGX)) {
+        float _e7 = ms_ggx_pdf(w_31, wm_16, mf_5.alpha);
+        return _e7;
+    }
+    if ((mf_5.ndf == MS_NDF_BECKMANN)) {
+        float _e12 = ms_beckmann_pdf(w_31, wm_16, mf_5.alpha);
+        return _e12;
+    }
+    if ((mf_5.ndf == MS_NDF_DOUBLE_GGX)) {
+        float _e17 = ms_double_ggx_pdf(w_31, wm_16, mf_5.alpha);
+        return _e17;
+    }
+    if ((mf_5.ndf == MS_NDF_EXPONENTIAL)) {
+        float _e22 = ms_exponential_pdf(w_31, wm_16, mf_5.alpha);
+        return _e22;
+    }
+    return 0.0;
+}
+
+MsSample ms_sample(MsMicrofacet mf_6, vec3 w_32, vec2 u_19) {
+    if ((mf_6.ndf == MS_NDF_GGX)) {
+        MsSample _e7 = ms_ggx_sample(w_32, mf_6.alpha, u_19);
+        return _e7;
+    }
+    if ((mf_6.ndf == MS_NDF_BECKMANN)) {
+        MsSample _e12 = ms_beckmann_sample(w_32, mf_6.alpha, u_19);
+        return _e12;
+    }
+    if ((mf_6.ndf == MS_NDF_DOUBLE_GGX)) {
+        MsSample _e17 = ms_double_ggx_sample(w_32, mf_6.alpha, u_19);
+        return _e17;
+    }
+    if ((mf_6.ndf == MS_NDF_EXPONENTIAL)) {
+        MsSample _e22 = ms_exponential_sample(w_32, mf_6.alpha, u_19);
+        return _e22;
+    }
+    return MsSample(vec3(0.0, 0.0, 1.0), 0.0);
+}
+
+MsSample ms_sample_dcos(MsMicrofacet mf_7, vec2 u_20) {
     if ((mf_7.ndf == MS_NDF_GGX)) {
-        MsSample _e6 = ms_ggx_sample_dcos(mf_7.alpha, u_11);
+        MsSample _e6 = ms_ggx_sample_dcos(mf_7.alpha, u_20);
         return _e6;
     }
     if ((mf_7.ndf == MS_NDF_BECKMANN)) {
-        MsSample _e11 = ms_beckmann_sample_dcos(mf_7.alpha, u_11);
+        MsSample _e11 = ms_beckmann_sample_dcos(mf_7.alpha, u_20);
         return _e11;
+    }
+    if ((mf_7.ndf == MS_NDF_DOUBLE_GGX)) {
+        MsSample _e16 = ms_double_ggx_sample_dcos(mf_7.alpha, u_20);
+        return _e16;
+    }
+    if ((mf_7.ndf == MS_NDF_EXPONENTIAL)) {
+        MsSample _e21 = ms_exponential_sample_dcos(mf_7.alpha, u_20);
+        return _e21;
     }
     return MsSample(vec3(0.0, 0.0, 1.0), 0.0);
 }
@@ -1037,295 +2170,434 @@ bool ms_effectively_smooth(MsMicrofacet mf_8) {
     return (max(mf_8.alpha.x, mf_8.alpha.y) < 0.001);
 }
 
-bool ms_on_horizon(float z) {
-    return !((abs(z) >= 1e-18));
+bool ms_on_horizon(float z_2) {
+    return !((abs(z_2) >= 1e-18));
 }
 
-bool ms_usable(float v_4) {
-    bool local_14 = false;
-    if ((v_4 >= 1.1754944e-20)) {
-        local_14 = (v_4 <= 3.4028235e38);
+bool ms_usable(float v_6) {
+    bool local_25 = false;
+    if ((v_6 >= 1.1754944e-20)) {
+        local_25 = (v_6 <= 3.4028235e38);
     } else {
-        local_14 = false;
+        local_25 = false;
     }
-    bool _e8 = local_14;
+    bool _e8 = local_25;
     return _e8;
 }
 
-float ms_masking_g2_(MsMicrofacet mf_9, uint masking, vec3 wo_13, vec3 wi_13) {
+float ms_masking_g2_(MsMicrofacet mf_9, uint masking, vec3 wo_17, vec3 wi_17) {
     if ((masking == MS_MASKING_SEPARABLE)) {
-        float _e6 = ms_g2_separable(mf_9, wo_13, wi_13);
+        float _e6 = ms_g2_separable(mf_9, wo_17, wi_17);
         return _e6;
     }
-    float _e7 = ms_g2_(mf_9, wo_13, wi_13);
+    float _e7 = ms_g2_(mf_9, wo_17, wi_17);
     return _e7;
 }
 
-float ms_reflected(MsMicrofacet mf_10, uint masking_1, vec3 wo_14, vec3 wi_14, float d_wm) {
-    float _e5 = ms_masking_g2_(mf_10, masking_1, wo_14, wi_14);
-    return ((d_wm * _e5) / (4.0 * abs((wo_14.z * wi_14.z))));
+float ms_reflected(MsMicrofacet mf_10, uint masking_1, vec3 wo_18, vec3 wi_18, float d_wm) {
+    float _e5 = ms_masking_g2_(mf_10, masking_1, wo_18, wi_18);
+    return ((d_wm * _e5) / (4.0 * abs((wo_18.z * wi_18.z))));
 }
 
-vec3 ms_weighted(vec3 fr_1, float k_2) {
-    return mix((fr_1 * k_2), vec3(0.0), equal(fr_1, vec3(0.0)));
+vec3 ms_weighted(vec3 fr_1, float k_5) {
+    return mix((fr_1 * k_5), vec3(0.0), equal(fr_1, vec3(0.0)));
 }
 
-vec3 ms_conductor_lobe_normal(MsConductor c_2, vec3 wo_15, vec3 wi_15) {
-    bool local_15 = false;
-    bool local_16 = false;
-    bool local_17 = false;
-    bool _e3 = ms_same_hemisphere(wo_15, wi_15);
+vec3 ms_conductor_lobe_normal(MsConductor c_5, vec3 wo_19, vec3 wi_19) {
+    bool local_26 = false;
+    bool local_27 = false;
+    bool local_28 = false;
+    bool _e3 = ms_same_hemisphere(wo_19, wi_19);
     if (!(!(_e3))) {
-        bool _e9 = ms_on_horizon(wo_15.z);
-        local_15 = _e9;
+        bool _e9 = ms_on_horizon(wo_19.z);
+        local_26 = _e9;
     } else {
-        local_15 = true;
+        local_26 = true;
     }
-    bool _e11 = local_15;
+    bool _e11 = local_26;
     if (!(_e11)) {
-        bool _e16 = ms_on_horizon(wi_15.z);
-        local_16 = _e16;
+        bool _e16 = ms_on_horizon(wi_19.z);
+        local_27 = _e16;
     } else {
-        local_16 = true;
+        local_27 = true;
     }
-    bool _e18 = local_16;
+    bool _e18 = local_27;
     if (!(_e18)) {
-        bool _e23 = ms_effectively_smooth(c_2.mf);
-        local_17 = _e23;
+        bool _e23 = ms_effectively_smooth(c_5.mf);
+        local_28 = _e23;
     } else {
-        local_17 = true;
+        local_28 = true;
     }
-    bool _e25 = local_17;
+    bool _e25 = local_28;
     if (_e25) {
         return vec3(0.0);
     }
-    vec3 _e28 = ms_half_vector_reflection(wo_15, wi_15);
+    vec3 _e28 = ms_half_vector_reflection(wo_19, wi_19);
     return _e28;
 }
 
-vec3 ms_conductor_eval(MsConductor c_3, vec3 wo_16, vec3 wi_16) {
-    vec3 _e3 = ms_conductor_lobe_normal(c_3, wo_16, wi_16);
+vec3 ms_conductor_eval(MsConductor c_6, vec3 wo_20, vec3 wi_20) {
+    vec3 _e3 = ms_conductor_lobe_normal(c_6, wo_20, wi_20);
     bool _e4 = ms_half_vector_ok(_e3);
     if (!(_e4)) {
         return vec3(0.0);
     }
-    float _e9 = ms_dot(wo_16, _e3);
-    float _e11 = ms_dot(wi_16, _e3);
-    vec3 _e16 = ms_fresnel_eval(c_3.fresnel, (0.5 * (abs(_e9) + abs(_e11))));
-    float _e20 = ms_d(c_3.mf, _e3);
-    float _e21 = ms_reflected(c_3.mf, c_3.masking, wo_16, wi_16, _e20);
+    float _e9 = ms_dot(wo_20, _e3);
+    float _e11 = ms_dot(wi_20, _e3);
+    vec3 _e16 = ms_fresnel_eval(c_6.fresnel, (0.5 * (abs(_e9) + abs(_e11))));
+    float _e20 = ms_d(c_6.mf, _e3);
+    float _e21 = ms_reflected(c_6.mf, c_6.masking, wo_20, wi_20, _e20);
     vec3 _e22 = ms_weighted(_e16, _e21);
     return _e22;
 }
 
-float ms_conductor_pdf(MsConductor c_4, vec3 wo_17, vec3 wi_17) {
-    vec3 _e3 = ms_conductor_lobe_normal(c_4, wo_17, wi_17);
+float ms_conductor_pdf(MsConductor c_7, vec3 wo_21, vec3 wi_21) {
+    vec3 _e3 = ms_conductor_lobe_normal(c_7, wo_21, wi_21);
     bool _e4 = ms_half_vector_ok(_e3);
     if (!(_e4)) {
         return 0.0;
     }
-    float _e8 = ms_pdf(c_4.mf, wo_17, _e3);
-    float _e9 = ms_dot(wo_17, _e3);
+    float _e8 = ms_pdf(c_7.mf, wo_21, _e3);
+    float _e9 = ms_dot(wo_21, _e3);
     return (_e8 / (4.0 * abs(_e9)));
 }
 
-vec4 ms_conductor_eval_pdf(MsConductor c_5, vec3 wo_18, vec3 wi_18) {
-    vec3 _e3 = ms_conductor_lobe_normal(c_5, wo_18, wi_18);
+vec4 ms_conductor_eval_pdf(MsConductor c_8, vec3 wo_22, vec3 wi_22) {
+    vec3 _e3 = ms_conductor_lobe_normal(c_8, wo_22, wi_22);
     bool _e4 = ms_half_vector_ok(_e3);
     if (!(_e4)) {
         return vec4(0.0);
     }
-    float _e8 = ms_dot(wo_18, _e3);
+    float _e8 = ms_dot(wo_22, _e3);
     float co = abs(_e8);
-    float _e11 = ms_dot(wi_18, _e3);
-    vec3 _e16 = ms_fresnel_eval(c_5.fresnel, (0.5 * (co + abs(_e11))));
-    float _e20 = ms_d(c_5.mf, _e3);
-    float _e21 = ms_reflected(c_5.mf, c_5.masking, wo_18, wi_18, _e20);
+    float _e11 = ms_dot(wi_22, _e3);
+    vec3 _e16 = ms_fresnel_eval(c_8.fresnel, (0.5 * (co + abs(_e11))));
+    float _e20 = ms_d(c_8.mf, _e3);
+    float _e21 = ms_reflected(c_8.mf, c_8.masking, wo_22, wi_22, _e20);
     vec3 _e22 = ms_weighted(_e16, _e21);
-    float _e24 = ms_pdf(c_5.mf, wo_18, _e3);
+    float _e24 = ms_pdf(c_8.mf, wo_22, _e3);
     return vec4(_e22, (_e24 / (4.0 * co)));
 }
 
-bool ms_dielectric_smooth(MsDielectric d_1) {
-    bool local_19 = false;
-    if (!((d_1.eta == 1.0))) {
-        bool _e8 = ms_effectively_smooth(d_1.mf);
-        local_19 = _e8;
-    } else {
-        local_19 = true;
-    }
-    bool _e10 = local_19;
-    return _e10;
-}
-
-float ms_dielectric_g2_(MsDielectric d_2, vec3 wo_20, vec3 wi_19) {
-    float _e5 = ms_masking_g2_(d_2.mf, d_2.masking, wo_20, wi_19);
-    return _e5;
-}
-
-vec4 ms_dielectric_half(MsDielectric d_3, vec3 wo_21, vec3 wi_20) {
-    bool local_20 = false;
-    vec3 wm_11 = vec3(0.0);
-    float etap_4 = 1.0;
-    bool local_21 = false;
-    vec4 none = vec4(0.0);
-    float co_1 = wo_21.z;
-    float ci_1 = wi_20.z;
-    bool _e7 = ms_on_horizon(co_1);
-    if (!(_e7)) {
-        bool _e11 = ms_on_horizon(ci_1);
-        local_20 = _e11;
-    } else {
-        local_20 = true;
-    }
-    bool _e13 = local_20;
+MsBsdfSample ms_conductor_sample(MsConductor c_9, vec3 wo_23, float uc, vec2 u_21) {
+    bool local_29 = false;
+    MsBsdfSample none = MsBsdfSample(vec3(0.0), 0.0, vec3(0.0), 0u, 1.0);
+    bool _e13 = ms_on_horizon(wo_23.z);
     if (_e13) {
         return none;
     }
-    if (((co_1 * ci_1) > 0.0)) {
-        vec3 _e20 = ms_half_vector_reflection(wo_21, wi_20);
-        wm_11 = _e20;
+    bool _e15 = ms_effectively_smooth(c_9.mf);
+    if (_e15) {
+        vec3 wi_36 = vec3(-(wo_23.x), -(wo_23.y), wo_23.z);
+        float k_9 = (1.0 / abs(wi_36.z));
+        vec3 _e29 = ms_fresnel_eval(c_9.fresnel, abs(wo_23.z));
+        return MsBsdfSample(wi_36, 1.0, (_e29 * k_9), 3u, 1.0);
+    }
+    MsSample _e36 = ms_sample(c_9.mf, wo_23, u_21);
+    vec3 _e38 = ms_reflect(wo_23, _e36.wm);
+    bool _e39 = ms_same_hemisphere(wo_23, _e38);
+    if (!(!(_e39))) {
+        bool _e45 = ms_on_horizon(_e38.z);
+        local_29 = _e45;
     } else {
-        vec4 _e22 = ms_half_vector_refraction(wo_21, wi_20, d_3.eta);
-        wm_11 = _e22.xyz;
+        local_29 = true;
+    }
+    bool _e47 = local_29;
+    if (_e47) {
+        return none;
+    }
+    float _e49 = ms_dot(wo_23, _e36.wm);
+    float co_1 = abs(_e49);
+    float pdf = (_e36.pdf / (4.0 * co_1));
+    bool _e55 = ms_usable(pdf);
+    if (!(_e55)) {
+        return none;
+    }
+    vec3 _e58 = ms_fresnel_eval(c_9.fresnel, co_1);
+    float _e61 = ms_d(c_9.mf, _e36.wm);
+    bool _e62 = ms_usable(_e61);
+    if (!(_e62)) {
+        return none;
+    }
+    float _e66 = ms_reflected(c_9.mf, c_9.masking, wo_23, _e38, _e61);
+    vec3 _e67 = ms_weighted(_e58, _e66);
+    if (!(all(lessThanEqual(_e67, vec3(3.4028235e38))))) {
+        return none;
+    }
+    return MsBsdfSample(_e38, pdf, _e67, MS_SAMPLE_VALID, 1.0);
+}
+
+bool ms_dielectric_smooth(MsDielectric d_1) {
+    bool local_30 = false;
+    if (!((d_1.eta == 1.0))) {
+        bool _e8 = ms_effectively_smooth(d_1.mf);
+        local_30 = _e8;
+    } else {
+        local_30 = true;
+    }
+    bool _e10 = local_30;
+    return _e10;
+}
+
+float ms_dielectric_g2_(MsDielectric d_2, vec3 wo_24, vec3 wi_23) {
+    float _e5 = ms_masking_g2_(d_2.mf, d_2.masking, wo_24, wi_23);
+    return _e5;
+}
+
+vec4 ms_dielectric_half(MsDielectric d_3, vec3 wo_25, vec3 wi_24) {
+    bool local_31 = false;
+    vec3 wm_17 = vec3(0.0);
+    float etap_4 = 1.0;
+    bool local_32 = false;
+    vec4 none_1 = vec4(0.0);
+    float co_2 = wo_25.z;
+    float ci_1 = wi_24.z;
+    bool _e7 = ms_on_horizon(co_2);
+    if (!(_e7)) {
+        bool _e11 = ms_on_horizon(ci_1);
+        local_31 = _e11;
+    } else {
+        local_31 = true;
+    }
+    bool _e13 = local_31;
+    if (_e13) {
+        return none_1;
+    }
+    if (((co_2 * ci_1) > 0.0)) {
+        vec3 _e20 = ms_half_vector_reflection(wo_25, wi_24);
+        wm_17 = _e20;
+    } else {
+        vec4 _e22 = ms_half_vector_refraction(wo_25, wi_24, d_3.eta);
+        wm_17 = _e22.xyz;
         etap_4 = _e22.w;
     }
-    vec3 _e25 = wm_11;
+    vec3 _e25 = wm_17;
     bool _e26 = ms_half_vector_ok(_e25);
     if (!(_e26)) {
-        return none;
+        return none_1;
     }
-    vec3 _e28 = wm_11;
-    float _e29 = ms_dot(_e28, wi_20);
+    vec3 _e28 = wm_17;
+    float _e29 = ms_dot(_e28, wi_24);
     if (!(((_e29 * ci_1) < 0.0))) {
-        vec3 _e36 = wm_11;
-        float _e37 = ms_dot(_e36, wo_21);
-        local_21 = ((_e37 * co_1) < 0.0);
+        vec3 _e36 = wm_17;
+        float _e37 = ms_dot(_e36, wo_25);
+        local_32 = ((_e37 * co_2) < 0.0);
     } else {
-        local_21 = true;
+        local_32 = true;
     }
-    bool _e42 = local_21;
+    bool _e42 = local_32;
     if (_e42) {
-        return none;
+        return none_1;
     }
-    vec3 _e43 = wm_11;
+    vec3 _e43 = wm_17;
     float _e44 = etap_4;
     return vec4(_e43, _e44);
 }
 
-float ms_dielectric_f_transmission(MsDielectric d_4, vec3 wo_22, vec3 wi_21, vec3 wm_12, float d_wm_1, float etap_5, float t) {
-    float f_1 = 0.0;
-    float _e7 = ms_dot(wi_21, wm_12);
-    float _e8 = ms_dot(wo_22, wm_12);
-    float _e9 = ms_refraction_denominator(wo_22, wi_21, wm_12, etap_5);
-    float _e10 = ms_dielectric_g2_(d_4, wo_22, wi_21);
-    float geometric = ((_e10 / abs((wi_21.z * wo_22.z))) * (abs((_e7 * _e8)) / (_e9 * _e9)));
-    f_1 = ((d_wm_1 * t) * geometric);
+float ms_dielectric_f_transmission(MsDielectric d_4, vec3 wo_26, vec3 wi_25, vec3 wm_18, float d_wm_1, float etap_5, float t_2) {
+    float f_2 = 0.0;
+    float _e7 = ms_dot(wi_25, wm_18);
+    float _e8 = ms_dot(wo_26, wm_18);
+    float _e9 = ms_refraction_denominator(wo_26, wi_25, wm_18, etap_5);
+    float _e10 = ms_dielectric_g2_(d_4, wo_26, wi_25);
+    float geometric = ((_e10 / abs((wi_25.z * wo_26.z))) * (abs((_e7 * _e8)) / (_e9 * _e9)));
+    f_2 = ((d_wm_1 * t_2) * geometric);
     if ((d_4.transport == MS_TRANSPORT_RADIANCE)) {
-        float _e27 = f_1;
-        f_1 = (_e27 / (etap_5 * etap_5));
+        float _e27 = f_2;
+        f_2 = (_e27 / (etap_5 * etap_5));
     }
-    float _e30 = f_1;
+    float _e30 = f_2;
     return _e30;
 }
 
-float ms_dielectric_eval(MsDielectric d_5, vec3 wo_23, vec3 wi_22) {
+float ms_dielectric_eval(MsDielectric d_5, vec3 wo_27, vec3 wi_26) {
     bool _e3 = ms_dielectric_smooth(d_5);
     if (_e3) {
         return 0.0;
     }
-    vec4 _e5 = ms_dielectric_half(d_5, wo_23, wi_22);
+    vec4 _e5 = ms_dielectric_half(d_5, wo_27, wi_26);
     if ((_e5.w == 0.0)) {
         return 0.0;
     }
-    vec3 wm_13 = _e5.xyz;
-    float _e11 = ms_dot(wo_23, wm_13);
+    vec3 wm_19 = _e5.xyz;
+    float _e11 = ms_dot(wo_27, wm_19);
     float _e13 = ms_fresnel_dielectric(_e11, d_5.eta);
-    float _e15 = ms_d(d_5.mf, wm_13);
-    if (((wo_23.z * wi_22.z) > 0.0)) {
-        float _e23 = ms_reflected(d_5.mf, d_5.masking, wo_23, wi_22, _e15);
+    float _e15 = ms_d(d_5.mf, wm_19);
+    if (((wo_27.z * wi_26.z) > 0.0)) {
+        float _e23 = ms_reflected(d_5.mf, d_5.masking, wo_27, wi_26, _e15);
         return (_e13 * _e23);
     }
-    float _e28 = ms_dielectric_f_transmission(d_5, wo_23, wi_22, wm_13, _e15, _e5.w, (1.0 - _e13));
+    float _e28 = ms_dielectric_f_transmission(d_5, wo_27, wi_26, wm_19, _e15, _e5.w, (1.0 - _e13));
     return _e28;
 }
 
-float ms_dielectric_pdf(MsDielectric d_6, vec3 wo_24, vec3 wi_23) {
+float ms_dielectric_pdf(MsDielectric d_6, vec3 wo_28, vec3 wi_27) {
     bool _e3 = ms_dielectric_smooth(d_6);
     if (_e3) {
         return 0.0;
     }
-    vec4 _e5 = ms_dielectric_half(d_6, wo_24, wi_23);
+    vec4 _e5 = ms_dielectric_half(d_6, wo_28, wi_27);
     if ((_e5.w == 0.0)) {
         return 0.0;
     }
-    vec3 wm_14 = _e5.xyz;
-    float _e11 = ms_dot(wo_24, wm_14);
+    vec3 wm_20 = _e5.xyz;
+    float _e11 = ms_dot(wo_28, wm_20);
     float _e13 = ms_fresnel_dielectric(_e11, d_6.eta);
-    float _e15 = ms_pdf(d_6.mf, wo_24, wm_14);
-    if (((wo_24.z * wi_23.z) > 0.0)) {
-        float _e22 = ms_dot(wo_24, wm_14);
+    float _e15 = ms_pdf(d_6.mf, wo_28, wm_20);
+    if (((wo_28.z * wi_27.z) > 0.0)) {
+        float _e22 = ms_dot(wo_28, wm_20);
         return ((_e15 * _e13) / (4.0 * abs(_e22)));
     }
-    float _e31 = ms_jacobian_refraction(wo_24, wi_23, wm_14, _e5.w);
+    float _e31 = ms_jacobian_refraction(wo_28, wi_27, wm_20, _e5.w);
     return ((_e15 * (1.0 - _e13)) * _e31);
 }
 
-MsBsdfSample ms_dielectric_sample_smooth(MsDielectric d_7, vec3 wo_25, float uc_1) {
-    float f_2 = 0.0;
-    float _e5 = ms_fresnel_dielectric(wo_25.z, d_7.eta);
+MsBsdfSample ms_dielectric_sample_smooth(MsDielectric d_7, vec3 wo_29, float uc_1) {
+    float f_3 = 0.0;
+    float _e5 = ms_fresnel_dielectric(wo_29.z, d_7.eta);
     if ((uc_1 < _e5)) {
-        vec3 wi_32 = vec3(-(wo_25.x), -(wo_25.y), wo_25.z);
-        return MsBsdfSample(wi_32, _e5, vec3((_e5 / abs(wi_32.z))), 3u, 1.0);
+        vec3 wi_37 = vec3(-(wo_29.x), -(wo_29.y), wo_29.z);
+        return MsBsdfSample(wi_37, _e5, vec3((_e5 / abs(wi_37.z))), 3u, 1.0);
     }
-    MsBsdfSample none_1 = MsBsdfSample(vec3(0.0), 0.0, vec3(0.0), 0u, 1.0);
-    vec4 _e33 = ms_refract(wo_25, vec3(0.0, 0.0, 1.0), d_7.eta);
+    MsBsdfSample none_2 = MsBsdfSample(vec3(0.0), 0.0, vec3(0.0), 0u, 1.0);
+    vec4 _e33 = ms_refract(wo_29, vec3(0.0, 0.0, 1.0), d_7.eta);
     if ((_e33.w == 0.0)) {
-        return none_1;
+        return none_2;
     }
-    vec3 wi_33 = _e33.xyz;
-    bool _e39 = ms_on_horizon(wi_33.z);
+    vec3 wi_38 = _e33.xyz;
+    bool _e39 = ms_on_horizon(wi_38.z);
     if (_e39) {
-        return none_1;
+        return none_2;
     }
-    float t_8 = (1.0 - _e5);
-    f_2 = (t_8 / abs(wi_33.z));
+    float t_12 = (1.0 - _e5);
+    f_3 = (t_12 / abs(wi_38.z));
     if ((d_7.transport == MS_TRANSPORT_RADIANCE)) {
-        float _e49 = f_2;
-        f_2 = (_e49 / (_e33.w * _e33.w));
+        float _e49 = f_3;
+        f_3 = (_e49 / (_e33.w * _e33.w));
     }
-    float _e54 = f_2;
-    return MsBsdfSample(wi_33, t_8, vec3(_e54), 7u, _e33.w);
+    float _e54 = f_3;
+    return MsBsdfSample(wi_38, t_12, vec3(_e54), 7u, _e33.w);
 }
 
-MsLutTap ms_lut_tap(float x_4, uint n_2) {
-    float t_9 = clamp(((x_4 * float(n_2)) - 0.5), 0.0, float((n_2 - 1u)));
-    uint i_3 = min(uint(floor(t_9)), (n_2 - 2u));
-    return MsLutTap(i_3, (t_9 - float(i_3)));
+MsBsdfSample ms_dielectric_sample(MsDielectric d_8, vec3 wo_30, float uc_2, vec2 u_22) {
+    bool local_33 = false;
+    bool local_34 = false;
+    bool local_35 = false;
+    bool local_36 = false;
+    MsBsdfSample none_3 = MsBsdfSample(vec3(0.0), 0.0, vec3(0.0), 0u, 1.0);
+    bool _e13 = ms_on_horizon(wo_30.z);
+    if (_e13) {
+        return none_3;
+    }
+    bool _e14 = ms_dielectric_smooth(d_8);
+    if (_e14) {
+        MsBsdfSample _e15 = ms_dielectric_sample_smooth(d_8, wo_30, uc_2);
+        return _e15;
+    }
+    MsSample _e17 = ms_sample(d_8.mf, wo_30, u_22);
+    vec3 wm_21 = _e17.wm;
+    float _e19 = ms_dot(wo_30, wm_21);
+    float _e21 = ms_fresnel_dielectric(_e19, d_8.eta);
+    if ((uc_2 < _e21)) {
+        vec3 _e23 = ms_reflect(wo_30, wm_21);
+        bool _e24 = ms_same_hemisphere(wo_30, _e23);
+        if (!(!(_e24))) {
+            bool _e30 = ms_on_horizon(_e23.z);
+            local_33 = _e30;
+        } else {
+            local_33 = true;
+        }
+        bool _e32 = local_33;
+        if (_e32) {
+            return none_3;
+        }
+        float _e34 = ms_d(d_8.mf, wm_21);
+        bool _e35 = ms_usable(_e34);
+        if (!(_e35)) {
+            return none_3;
+        }
+        float _e39 = ms_reflected(d_8.mf, d_8.masking, wo_30, _e23, _e34);
+        float f_5 = (_e21 * _e39);
+        float pdf_1 = ((_e17.pdf * _e21) / (4.0 * abs(_e19)));
+        bool _e47 = ms_usable(pdf_1);
+        if (!(!(_e47))) {
+            local_34 = !((f_5 <= 3.4028235e38));
+        } else {
+            local_34 = true;
+        }
+        bool _e56 = local_34;
+        if (_e56) {
+            return none_3;
+        }
+        return MsBsdfSample(_e23, pdf_1, vec3(f_5), MS_SAMPLE_VALID, 1.0);
+    }
+    vec4 _e62 = ms_refract(wo_30, wm_21, d_8.eta);
+    if ((_e62.w == 0.0)) {
+        return none_3;
+    }
+    vec3 wi_39 = _e62.xyz;
+    float etap_6 = _e62.w;
+    bool _e68 = ms_same_hemisphere(wo_30, wi_39);
+    if (!(_e68)) {
+        bool _e73 = ms_on_horizon(wi_39.z);
+        local_35 = _e73;
+    } else {
+        local_35 = true;
+    }
+    bool _e75 = local_35;
+    if (_e75) {
+        return none_3;
+    }
+    float t_13 = (1.0 - _e21);
+    float _e80 = ms_jacobian_refraction(wo_30, wi_39, wm_21, etap_6);
+    float pdf_2 = ((_e17.pdf * t_13) * _e80);
+    float _e83 = ms_d(d_8.mf, wm_21);
+    bool _e84 = ms_usable(_e83);
+    if (!(_e84)) {
+        return none_3;
+    }
+    float _e86 = ms_dielectric_f_transmission(d_8, wo_30, wi_39, wm_21, _e83, etap_6, t_13);
+    bool _e87 = ms_usable(pdf_2);
+    if (!(!(_e87))) {
+        local_36 = !((_e86 <= 3.4028235e38));
+    } else {
+        local_36 = true;
+    }
+    bool _e96 = local_36;
+    if (_e96) {
+        return none_3;
+    }
+    return MsBsdfSample(wi_39, pdf_2, vec3(_e86), 5u, etap_6);
 }
 
-MsLutTap ms_lut_tap_edges(float x_5, uint n_3) {
-    float t_10 = clamp((x_5 * float((n_3 - 1u))), 0.0, float((n_3 - 1u)));
-    uint i_4 = min(uint(floor(t_10)), (n_3 - 2u));
-    return MsLutTap(i_4, (t_10 - float(i_4)));
+MsLutTap ms_lut_tap(float x_10, uint n_5) {
+    float t_14 = clamp(((x_10 * float(n_5)) - 0.5), 0.0, float((n_5 - 1u)));
+    uint i_9 = min(uint(floor(t_14)), (n_5 - 2u));
+    return MsLutTap(i_9, (t_14 - float(i_9)));
+}
+
+MsLutTap ms_lut_tap_edges(float x_11, uint n_6) {
+    float t_15 = clamp((x_11 * float((n_6 - 1u))), 0.0, float((n_6 - 1u)));
+    uint i_10 = min(uint(floor(t_15)), (n_6 - 2u));
+    return MsLutTap(i_10, (t_15 - float(i_10)));
 }
 
 uint ms_lut_index(uint ir, uint im, uint n_mu) {
     return ((ir * n_mu) + im);
 }
 
-float ms_lut_lerp(MsLutTap t_1, float v0_, float v1_) {
-    return (((1.0 - t_1.f) * v0_) + (t_1.f * v1_));
+float ms_lut_lerp(MsLutTap t_3, float v0_1, float v1_1) {
+    return (((1.0 - t_3.f) * v0_1) + (t_3.f * v1_1));
 }
 
-float ms_lut_bilerp(MsLutTap r, MsLutTap m_3, float v00_, float v10_, float v01_, float v11_) {
+float ms_lut_bilerp(MsLutTap r, MsLutTap m_4, float v00_, float v10_, float v01_, float v11_) {
     float gr = (1.0 - r.f);
-    float gm = (1.0 - m_3.f);
-    return (((((gr * gm) * v00_) + ((r.f * gm) * v10_)) + ((gr * m_3.f) * v01_)) + ((r.f * m_3.f) * v11_));
+    float gm = (1.0 - m_4.f);
+    return (((((gr * gm) * v00_) + ((r.f * gm) * v10_)) + ((gr * m_4.f) * v01_)) + ((r.f * m_4.f) * v11_));
 }
 
-float ms_lut_roughness_coord(vec2 alpha_25, float alpha_max) {
-    return sqrt((sqrt((alpha_25.x * alpha_25.y)) / alpha_max));
+float ms_lut_roughness_coord(vec2 alpha_45, float alpha_max) {
+    return sqrt((sqrt((alpha_45.x * alpha_45.y)) / alpha_max));
 }
 
 vec3 ms_kulla_conty_f_ms(vec3 f_avg, float e_avg) {
@@ -1340,9 +2612,9 @@ float ms_kulla_conty_lobe(float e_o, float e_i, float e_avg_1) {
     return ((max((1.0 - e_o), 0.0) * max((1.0 - e_i), 0.0)) / den_3);
 }
 
-vec3 ms_conductor_eval_kulla_conty(MsConductor c_7, vec3 wo_27, vec3 wi_24, float e_o_1, float e_i_1, float e_avg_2, vec3 f_ms) {
-    vec3 _e7 = ms_conductor_eval(c_7, wo_27, wi_24);
-    if (!(((wo_27.z * wi_24.z) > 0.0))) {
+vec3 ms_conductor_eval_kulla_conty(MsConductor c_10, vec3 wo_31, vec3 wi_28, float e_o_1, float e_i_1, float e_avg_2, vec3 f_ms) {
+    vec3 _e7 = ms_conductor_eval(c_10, wo_31, wi_28);
+    if (!(((wo_31.z * wi_28.z) > 0.0))) {
         return _e7;
     }
     float _e14 = ms_kulla_conty_lobe(e_o_1, e_i_1, e_avg_2);
@@ -1353,8 +2625,8 @@ vec3 ms_turquin_scale(float e_o_2, vec3 f0_2) {
     return (vec3(1.0) + ((f0_2 * (1.0 - e_o_2)) / vec3(e_o_2)));
 }
 
-vec3 ms_conductor_eval_turquin(MsConductor c_8, vec3 wo_28, vec3 wi_25, float e_o_3, vec3 f0_3) {
-    vec3 _e5 = ms_conductor_eval(c_8, wo_28, wi_25);
+vec3 ms_conductor_eval_turquin(MsConductor c_11, vec3 wo_32, vec3 wi_29, float e_o_3, vec3 f0_3) {
+    vec3 _e5 = ms_conductor_eval(c_11, wo_32, wi_29);
     vec3 _e6 = ms_turquin_scale(e_o_3, f0_3);
     return (_e5 * _e6);
 }
@@ -1363,46 +2635,107 @@ float ms_kulla_conty_p_ms(float e_o_4) {
     return clamp((1.0 - e_o_4), 0.0, 1.0);
 }
 
-float ms_cosine_pdf_same_side(vec3 wo_29, vec3 wi_26) {
-    if (!(((wo_29.z * wi_26.z) > 0.0))) {
+float ms_cosine_pdf_same_side(vec3 wo_33, vec3 wi_30) {
+    if (!(((wo_33.z * wi_30.z) > 0.0))) {
         return 0.0;
     }
-    return (abs(wi_26.z) / MS_PI);
+    return (abs(wi_30.z) / MS_PI);
 }
 
-float ms_conductor_pdf_kulla_conty(MsConductor c_9, vec3 wo_30, vec3 wi_27, float e_o_5) {
+float ms_conductor_pdf_kulla_conty(MsConductor c_12, vec3 wo_34, vec3 wi_31, float e_o_5) {
     float _e4 = ms_kulla_conty_p_ms(e_o_5);
-    float _e7 = ms_conductor_pdf(c_9, wo_30, wi_27);
-    float _e9 = ms_cosine_pdf_same_side(wo_30, wi_27);
+    float _e7 = ms_conductor_pdf(c_12, wo_34, wi_31);
+    float _e9 = ms_cosine_pdf_same_side(wo_34, wi_31);
     return (((1.0 - _e4) * _e7) + (_e4 * _e9));
 }
 
-vec3 ms_cosine_hemisphere(vec2 u_14) {
-    float r_12 = sqrt(u_14.x);
-    vec2 _e4 = ms_cos_sin_turn(u_14.y);
-    return vec3((r_12 * _e4.x), (r_12 * _e4.y), sqrt(max((1.0 - u_14.x), 0.0)));
+vec3 ms_cosine_hemisphere(vec2 u_23) {
+    float r_21 = sqrt(u_23.x);
+    vec2 _e4 = ms_cos_sin_turn(u_23.y);
+    return vec3((r_21 * _e4.x), (r_21 * _e4.y), sqrt(max((1.0 - u_23.x), 0.0)));
 }
 
-MsBsdfSample ms_kulla_conty_sample_f(MsBsdfSample s_3, vec3 wo_32, float e_o_7, float e_i_2, float e_avg_3, vec3 f_ms_1) {
-    bool local_27 = false;
-    bool local_28 = false;
-    if (!(((s_3.flags & MS_SAMPLE_VALID) == 0u))) {
-        local_27 = ((s_3.flags & MS_SAMPLE_SPECULAR) != 0u);
-    } else {
-        local_27 = true;
+MsBsdfSample ms_conductor_sample_kulla_conty(MsConductor c_13, vec3 wo_35, float uc_3, vec2 u_24, float e_o_6) {
+    vec3 wi_32 = vec3(0.0);
+    bool local_37 = false;
+    MsBsdfSample none_4 = MsBsdfSample(vec3(0.0), 0.0, vec3(0.0), 0u, 1.0);
+    bool _e14 = ms_on_horizon(wo_35.z);
+    if (_e14) {
+        return none_4;
     }
-    bool _e20 = local_27;
+    float _e15 = ms_kulla_conty_p_ms(e_o_6);
+    if ((uc_3 < _e15)) {
+        vec3 _e18 = ms_cosine_hemisphere(u_24);
+        wi_32 = _e18;
+        if ((wo_35.z < 0.0)) {
+            float _e24 = wi_32.z;
+            wi_32.z = -(_e24);
+        }
+    } else {
+        MsBsdfSample _e30 = ms_conductor_sample(c_13, wo_35, ((uc_3 - _e15) / (1.0 - _e15)), u_24);
+        if (!(((_e30.flags & MS_SAMPLE_VALID) == 0u))) {
+            local_37 = ((_e30.flags & MS_SAMPLE_SPECULAR) != 0u);
+        } else {
+            local_37 = true;
+        }
+        bool _e45 = local_37;
+        if (_e45) {
+            return _e30;
+        }
+        wi_32 = _e30.wi;
+    }
+    vec3 _e47 = wi_32;
+    float _e48 = ms_conductor_pdf_kulla_conty(c_13, wo_35, _e47, e_o_6);
+    bool _e49 = ms_usable(_e48);
+    if (!(_e49)) {
+        return none_4;
+    }
+    vec3 _e51 = wi_32;
+    vec3 _e52 = wi_32;
+    vec3 _e53 = ms_conductor_eval(c_13, wo_35, _e52);
+    return MsBsdfSample(_e51, _e48, _e53, MS_SAMPLE_VALID, 1.0);
+}
+
+MsBsdfSample ms_kulla_conty_sample_f(MsBsdfSample s_6, vec3 wo_36, float e_o_7, float e_i_2, float e_avg_3, vec3 f_ms_1) {
+    bool local_38 = false;
+    bool local_39 = false;
+    if (!(((s_6.flags & MS_SAMPLE_VALID) == 0u))) {
+        local_38 = ((s_6.flags & MS_SAMPLE_SPECULAR) != 0u);
+    } else {
+        local_38 = true;
+    }
+    bool _e20 = local_38;
     if (!(_e20)) {
-        local_28 = !(((wo_32.z * s_3.wi.z) > 0.0));
+        local_39 = !(((wo_36.z * s_6.wi.z) > 0.0));
     } else {
-        local_28 = true;
+        local_39 = true;
     }
-    bool _e32 = local_28;
+    bool _e32 = local_39;
     if (_e32) {
-        return s_3;
+        return s_6;
     }
     float _e36 = ms_kulla_conty_lobe(e_o_7, e_i_2, e_avg_3);
-    return MsBsdfSample(s_3.wi, s_3.pdf, (s_3.f + (_e36 * f_ms_1)), s_3.flags, s_3.eta);
+    return MsBsdfSample(s_6.wi, s_6.pdf, (s_6.f + (_e36 * f_ms_1)), s_6.flags, s_6.eta);
+}
+
+MsBsdfSample ms_conductor_sample_turquin(MsConductor c_14, vec3 wo_37, float uc_4, vec2 u_25, float e_o_8, vec3 f0_4) {
+    bool local_40 = false;
+    MsBsdfSample _e6 = ms_conductor_sample(c_14, wo_37, uc_4, u_25);
+    if (!(((_e6.flags & MS_SAMPLE_VALID) == 0u))) {
+        local_40 = ((_e6.flags & MS_SAMPLE_SPECULAR) != 0u);
+    } else {
+        local_40 = true;
+    }
+    bool _e21 = local_40;
+    if (_e21) {
+        return _e6;
+    }
+    vec3 _e23 = ms_turquin_scale(e_o_8, f0_4);
+    vec3 f_6 = (_e6.f * _e23);
+    if (!(all(lessThanEqual(f_6, vec3(3.4028235e38))))) {
+        return MsBsdfSample(vec3(0.0), 0.0, vec3(0.0), 0u, 1.0);
+    }
+    return MsBsdfSample(_e6.wi, _e6.pdf, f_6, _e6.flags, _e6.eta);
 }
 
 uint ms_lut_index3_(uint ie, uint ir_1, uint im_1, uint n_r, uint n_mu_1) {
@@ -1413,176 +2746,176 @@ float ms_lut_eta_coord(float eta_4) {
     return sqrt((max((eta_4 - 1.0), 0.0) * 0.5));
 }
 
-float ms_lut_trilerp(MsLutTap e, MsLutTap r_1, MsLutTap m_4, vec4 lo_2, vec4 hi_2) {
-    float s_4 = 0.0;
-    uint b_4 = 0u;
+float ms_lut_trilerp(MsLutTap e, MsLutTap r_1, MsLutTap m_5, vec4 lo_2, vec4 hi_2) {
+    float s_7 = 0.0;
+    uint b_6 = 0u;
     vec2 we = vec2((1.0 - e.f), e.f);
     vec2 wr = vec2((1.0 - r_1.f), r_1.f);
-    vec2 wm_15 = vec2((1.0 - m_4.f), m_4.f);
-    bool loop_init = true;
+    vec2 wm_22 = vec2((1.0 - m_5.f), m_5.f);
+    bool loop_init_5 = true;
     while(true) {
-        if (!loop_init) {
-            uint _e59 = b_4;
-            b_4 = (_e59 + 1u);
+        if (!loop_init_5) {
+            uint _e59 = b_6;
+            b_6 = (_e59 + 1u);
         }
-        loop_init = false;
-        uint _e24 = b_4;
+        loop_init_5 = false;
+        uint _e24 = b_6;
         if ((_e24 < 8u)) {
         } else {
             break;
         }
         {
-            uint _e27 = b_4;
-            uint _e31 = b_4;
-            uint _e35 = b_4;
-            float v_6 = ((_e35 >= 4u) ? hi_2[(_e31 & 3u)] : lo_2[(_e27 & 3u)]);
-            float _e39 = s_4;
-            uint _e40 = b_4;
-            uint _e44 = b_4;
-            uint _e51 = b_4;
-            s_4 = (_e39 + (((we[(_e40 & 1u)] * wr[((_e44 >> 1u) & 1u)]) * wm_15[(_e51 >> 2u)]) * v_6));
+            uint _e27 = b_6;
+            uint _e31 = b_6;
+            uint _e35 = b_6;
+            float v_8 = ((_e35 >= 4u) ? hi_2[(_e31 & 3u)] : lo_2[(_e27 & 3u)]);
+            float _e39 = s_7;
+            uint _e40 = b_6;
+            uint _e44 = b_6;
+            uint _e51 = b_6;
+            s_7 = (_e39 + (((we[(_e40 & 1u)] * wr[((_e44 >> 1u) & 1u)]) * wm_22[(_e51 >> 2u)]) * v_8));
         }
     }
-    float _e61 = s_4;
+    float _e61 = s_7;
     return _e61;
 }
 
-float ms_lut_bilerp_eta(MsLutTap e_1, MsLutTap r_2, vec4 v_5) {
-    float s_5 = 0.0;
-    uint b_5 = 0u;
+float ms_lut_bilerp_eta(MsLutTap e_1, MsLutTap r_2, vec4 v_7) {
+    float s_8 = 0.0;
+    uint b_7 = 0u;
     vec2 we_1 = vec2((1.0 - e_1.f), e_1.f);
     vec2 wr_1 = vec2((1.0 - r_2.f), r_2.f);
-    bool loop_init_1 = true;
+    bool loop_init_6 = true;
     while(true) {
-        if (!loop_init_1) {
-            uint _e35 = b_5;
-            b_5 = (_e35 + 1u);
+        if (!loop_init_6) {
+            uint _e35 = b_7;
+            b_7 = (_e35 + 1u);
         }
-        loop_init_1 = false;
-        uint _e17 = b_5;
+        loop_init_6 = false;
+        uint _e17 = b_7;
         if ((_e17 < 4u)) {
         } else {
             break;
         }
         {
-            float _e20 = s_5;
-            uint _e21 = b_5;
-            uint _e25 = b_5;
-            uint _e30 = b_5;
-            s_5 = (_e20 + ((we_1[(_e21 & 1u)] * wr_1[(_e25 >> 1u)]) * v_5[_e30]));
+            float _e20 = s_8;
+            uint _e21 = b_7;
+            uint _e25 = b_7;
+            uint _e30 = b_7;
+            s_8 = (_e20 + ((we_1[(_e21 & 1u)] * wr_1[(_e25 >> 1u)]) * v_7[_e30]));
         }
     }
-    float _e37 = s_5;
+    float _e37 = s_8;
     return _e37;
 }
 
 vec2 ms_dielectric_kulla_conty_k(float eta_5, float f_avg_1, vec2 e_avg_4) {
-    vec2 k_3 = vec2(0.0);
+    vec2 k_6 = vec2(0.0);
     float k_out = (1.0 - f_avg_1);
-    k_3 = vec2(k_out, ((k_out * (1.0 - e_avg_4.x)) / ((eta_5 * eta_5) * (1.0 - e_avg_4.y))));
-    float _e18 = k_3.y;
+    k_6 = vec2(k_out, ((k_out * (1.0 - e_avg_4.x)) / ((eta_5 * eta_5) * (1.0 - e_avg_4.y))));
+    float _e18 = k_6.y;
     if (!((_e18 <= 1.0))) {
-        vec2 _e22 = k_3;
-        float _e24 = k_3.y;
-        float _e28 = k_3.y;
-        k_3 = (_e22 * ((_e28 > 1.0) ? (1.0 / _e24) : 0.0));
+        vec2 _e22 = k_6;
+        float _e24 = k_6.y;
+        float _e28 = k_6.y;
+        k_6 = (_e22 * ((_e28 > 1.0) ? (1.0 / _e24) : 0.0));
     }
-    vec2 _e34 = k_3;
+    vec2 _e34 = k_6;
     return _e34;
 }
 
-float ms_dielectric_kulla_conty_lobe(MsDielectric d_9, vec3 wo_34, vec3 wi_29, float e_o_9, float e_i_3, float e_avg_i, float k_o) {
-    bool local_30 = false;
-    bool local_31 = false;
-    float f_3 = 0.0;
-    bool local_32 = false;
-    if ((abs(wo_34.z) > 0.0)) {
-        local_30 = (abs(wi_29.z) > 0.0);
+float ms_dielectric_kulla_conty_lobe(MsDielectric d_9, vec3 wo_38, vec3 wi_33, float e_o_9, float e_i_3, float e_avg_i, float k_o) {
+    bool local_41 = false;
+    bool local_42 = false;
+    float f_4 = 0.0;
+    bool local_43 = false;
+    if ((abs(wo_38.z) > 0.0)) {
+        local_41 = (abs(wi_33.z) > 0.0);
     } else {
-        local_30 = false;
+        local_41 = false;
     }
-    bool _e18 = local_30;
+    bool _e18 = local_41;
     if (!(_e18)) {
         return 0.0;
     }
     float lost = (1.0 - e_o_9);
-    bool crossed = ((wi_29.z < 0.0) != (wo_34.z < 0.0));
+    bool crossed = ((wi_33.z < 0.0) != (wo_38.z < 0.0));
     float share = (crossed ? k_o : (1.0 - k_o));
     float den_4 = (MS_PI * (1.0 - e_avg_i));
     if ((den_4 > 0.0)) {
-        local_31 = (lost > 0.0);
+        local_42 = (lost > 0.0);
     } else {
-        local_31 = false;
+        local_42 = false;
     }
-    bool _e44 = local_31;
+    bool _e44 = local_42;
     if (!(_e44)) {
         return 0.0;
     }
-    f_3 = (((share * lost) * max((1.0 - e_i_3), 0.0)) / den_4);
+    f_4 = (((share * lost) * max((1.0 - e_i_3), 0.0)) / den_4);
     if (crossed) {
-        local_32 = (d_9.transport == MS_TRANSPORT_RADIANCE);
+        local_43 = (d_9.transport == MS_TRANSPORT_RADIANCE);
     } else {
-        local_32 = false;
+        local_43 = false;
     }
-    bool _e61 = local_32;
+    bool _e61 = local_43;
     if (_e61) {
-        float etap_6 = ((wo_34.z > 0.0) ? d_9.eta : (1.0 / d_9.eta));
-        float _e70 = f_3;
-        f_3 = (_e70 / (etap_6 * etap_6));
+        float etap_7 = ((wo_38.z > 0.0) ? d_9.eta : (1.0 / d_9.eta));
+        float _e70 = f_4;
+        f_4 = (_e70 / (etap_7 * etap_7));
     }
-    float _e73 = f_3;
+    float _e73 = f_4;
     return _e73;
 }
 
-float ms_dielectric_eval_kulla_conty(MsDielectric d_10, vec3 wo_35, vec3 wi_30, float e_o_10, float e_i_4, float e_avg_i_1, float k_o_1) {
-    float _e7 = ms_dielectric_eval(d_10, wo_35, wi_30);
+float ms_dielectric_eval_kulla_conty(MsDielectric d_10, vec3 wo_39, vec3 wi_34, float e_o_10, float e_i_4, float e_avg_i_1, float k_o_1) {
+    float _e7 = ms_dielectric_eval(d_10, wo_39, wi_34);
     bool _e8 = ms_dielectric_smooth(d_10);
     if (_e8) {
         return _e7;
     }
-    float _e9 = ms_dielectric_kulla_conty_lobe(d_10, wo_35, wi_30, e_o_10, e_i_4, e_avg_i_1, k_o_1);
+    float _e9 = ms_dielectric_kulla_conty_lobe(d_10, wo_39, wi_34, e_o_10, e_i_4, e_avg_i_1, k_o_1);
     return (_e7 + _e9);
 }
 
-float ms_dielectric_eval_turquin(MsDielectric d_11, vec3 wo_36, vec3 wi_31, float e_o_11) {
-    bool local_33 = false;
-    float _e4 = ms_dielectric_eval(d_11, wo_36, wi_31);
+float ms_dielectric_eval_turquin(MsDielectric d_11, vec3 wo_40, vec3 wi_35, float e_o_11) {
+    bool local_44 = false;
+    float _e4 = ms_dielectric_eval(d_11, wo_40, wi_35);
     bool _e5 = ms_dielectric_smooth(d_11);
     if (!(_e5)) {
-        local_33 = !((e_o_11 > 0.0));
+        local_44 = !((e_o_11 > 0.0));
     } else {
-        local_33 = true;
+        local_44 = true;
     }
-    bool _e13 = local_33;
+    bool _e13 = local_44;
     if (_e13) {
         return _e4;
     }
     return (_e4 / e_o_11);
 }
 
-uint ms_k_index(uvec3 id_10, uvec3 groups_10) {
-    uint i_5 = (id_10.x + ((id_10.y * groups_10.x) * 64u));
-    uint n_6 = (uint(_group_0_binding_0_cs.length()) / MS_K_IN);
-    if ((i_5 >= n_6)) {
-        return n_6;
+uint ms_k_index(uvec3 id_13, uvec3 groups_13) {
+    uint i_11 = (id_13.x + ((id_13.y * groups_13.x) * 64u));
+    uint n_10 = (uint(_group_0_binding_0_cs.length()) / MS_K_IN);
+    if ((i_11 >= n_10)) {
+        return n_10;
     }
-    return i_5;
+    return i_11;
 }
 
-MsConductor ms_k_conductor(uint i) {
-    vec4 r0_ = _group_0_binding_0_cs[(i * MS_K_IN)];
-    vec4 r2_ = _group_0_binding_0_cs[((i * MS_K_IN) + 2u)];
-    vec4 r3_ = _group_0_binding_0_cs[((i * MS_K_IN) + 3u)];
-    vec4 r4_ = _group_0_binding_0_cs[((i * MS_K_IN) + 4u)];
+MsConductor ms_k_conductor(uint i_2) {
+    vec4 r0_ = _group_0_binding_0_cs[(i_2 * MS_K_IN)];
+    vec4 r2_ = _group_0_binding_0_cs[((i_2 * MS_K_IN) + 2u)];
+    vec4 r3_ = _group_0_binding_0_cs[((i_2 * MS_K_IN) + 3u)];
+    vec4 r4_ = _group_0_binding_0_cs[((i_2 * MS_K_IN) + 4u)];
     MsMicrofacet mf_11 = MsMicrofacet(uint(r2_.w), r0_.xy);
     return MsConductor(mf_11, MsFresnel(uint(r3_.w), r3_.xyz, r4_.xyz), uint(r4_.w));
 }
 
-MsDielectric ms_k_dielectric(uint i_1) {
-    vec4 r0_1 = _group_0_binding_0_cs[(i_1 * MS_K_IN)];
-    vec4 r2_1 = _group_0_binding_0_cs[((i_1 * MS_K_IN) + 2u)];
-    vec4 r3_1 = _group_0_binding_0_cs[((i_1 * MS_K_IN) + 3u)];
-    vec4 r4_1 = _group_0_binding_0_cs[((i_1 * MS_K_IN) + 4u)];
+MsDielectric ms_k_dielectric(uint i_3) {
+    vec4 r0_1 = _group_0_binding_0_cs[(i_3 * MS_K_IN)];
+    vec4 r2_1 = _group_0_binding_0_cs[((i_3 * MS_K_IN) + 2u)];
+    vec4 r3_1 = _group_0_binding_0_cs[((i_3 * MS_K_IN) + 3u)];
+    vec4 r4_1 = _group_0_binding_0_cs[((i_3 * MS_K_IN) + 4u)];
     return MsDielectric(MsMicrofacet(uint(r2_1.w), r0_1.xy), r3_1.x, uint(r4_1.w), uint(r4_1.x));
 }
 
@@ -1595,13 +2928,13 @@ void main() {
     }
     MsConductor _e8 = ms_k_conductor(_e2);
     vec4 _e15 = _group_0_binding_0_cs[((_e2 * MS_K_IN) + 1u)];
-    vec3 wo_37 = _e15.xyz;
+    vec3 wo_41 = _e15.xyz;
     vec4 _e23 = _group_0_binding_0_cs[((_e2 * MS_K_IN) + 2u)];
-    vec3 wi_34 = _e23.xyz;
-    vec3 _e29 = ms_conductor_eval(_e8, wo_37, wi_34);
-    float _e30 = ms_conductor_pdf(_e8, wo_37, wi_34);
+    vec3 wi_40 = _e23.xyz;
+    vec3 _e29 = ms_conductor_eval(_e8, wo_41, wi_40);
+    float _e30 = ms_conductor_pdf(_e8, wo_41, wi_40);
     _group_0_binding_1_cs[(_e2 * MS_K_OUT)] = vec4(_e29, _e30);
-    vec4 _e38 = ms_conductor_eval_pdf(_e8, wo_37, wi_34);
+    vec4 _e38 = ms_conductor_eval_pdf(_e8, wo_41, wi_40);
     _group_0_binding_1_cs[((_e2 * MS_K_OUT) + 1u)] = _e38;
     return;
 }

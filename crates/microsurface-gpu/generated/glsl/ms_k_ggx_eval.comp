@@ -45,26 +45,59 @@ struct MsLutTap {
     float f;
 };
 const float MS_PI = 3.1415927;
+const float MS_FRAC_1_PI = 0.31830987;
 const float MS_TAU = 6.2831855;
 const uint MS_FRESNEL_ONE = 0u;
 const uint MS_FRESNEL_DIELECTRIC = 1u;
 const uint MS_FRESNEL_CONDUCTOR = 2u;
 const uint MS_FRESNEL_SCHLICK = 3u;
 const uint MS_FRESNEL_F82_TINT = 4u;
+const uint MS_TABLES_GROUP = 1u;
+const uint MS_TABLES_BINDING = 0u;
 const uint MS_BK_SEGMENTS_LOG2_ = 2u;
 const int MS_BK_ERFCX_K0_ = -14;
 const int MS_BK_ERFCX_K1_ = 5;
+const uint MS_BK_ERFCX_AT = 0u;
 const int MS_BK_ERFC_RATIO_K0_ = -14;
 const int MS_BK_ERFC_RATIO_K1_ = 5;
+const uint MS_BK_ERFC_RATIO_AT = 152u;
 const int MS_BK_ERFINV_Q_K0_ = -25;
 const int MS_BK_ERFINV_Q_K1_ = 0;
+const uint MS_BK_ERFINV_Q_AT = 304u;
 const int MS_BK_ERFINV_W_K0_ = 4;
 const int MS_BK_ERFINV_W_K1_ = 7;
+const uint MS_BK_ERFINV_W_AT = 504u;
 const float MS_BK_QUANTILE_EDGE = -27.200563;
+const int MS_DG_LAMBDA_K0_ = -30;
+const int MS_DG_LAMBDA_K1_ = 16;
+const uint MS_DG_LAMBDA_M = 3u;
+const uint MS_DG_LAMBDA_AT = 528u;
+const int MS_DG_D_K0_ = -30;
+const int MS_DG_D_K1_ = 30;
+const uint MS_DG_D_M = 2u;
+const uint MS_DG_D_AT = 896u;
+const int MS_EXP_QA_K0_ = -24;
+const int MS_EXP_QA_K1_ = 6;
+const uint MS_EXP_QA_M = 5u;
+const uint MS_EXP_QA_AT = 1616u;
+const int MS_EXP_QB_K0_ = 6;
+const int MS_EXP_QB_K1_ = 12;
+const uint MS_EXP_QB_M = 7u;
+const uint MS_EXP_QB_AT = 2576u;
+const int MS_EXP_FAR_K0_ = 5;
+const int MS_EXP_FAR_K1_ = 9;
+const uint MS_EXP_FAR_M = 3u;
+const uint MS_EXP_FAR_AT = 3344u;
+const uint MS_ZIG_EXP_AT = 3408u;
+const uint MS_ZIG_NORMAL_AT = 3664u;
+const uint MS_TABLES_ROWS = 3920u;
 const float MS_FRAC_1_SQRT_PI = 0.5641896;
 const float MS_SQRT_PI = 1.7724539;
+const float MS_EULER_GAMMA = 0.5772157;
 const uint MS_NDF_GGX = 0u;
 const uint MS_NDF_BECKMANN = 1u;
+const uint MS_NDF_DOUBLE_GGX = 2u;
+const uint MS_NDF_EXPONENTIAL = 3u;
 const uint MS_MASKING_CORRELATED = 0u;
 const uint MS_MASKING_SEPARABLE = 1u;
 const uint MS_MASKING_CORRELATED_BETA = 2u;
@@ -76,9 +109,9 @@ const uint MS_SAMPLE_TRANSMISSION = 4u;
 const uint MS_K_IN = 5u;
 const uint MS_K_OUT = 2u;
 
-layout(std430, binding = 0) readonly buffer type_10_block_0Compute { vec4 _group_0_binding_0_cs[]; };
+layout(std430, binding = 0) readonly buffer type_7_block_0Compute { vec4 _group_0_binding_0_cs[]; };
 
-layout(std430, binding = 1) buffer type_10_block_1Compute { vec4 _group_0_binding_1_cs[]; };
+layout(std430, binding = 1) buffer type_7_block_1Compute { vec4 _group_0_binding_1_cs[]; };
 
 
 float ms_inf() {
@@ -88,32 +121,32 @@ float ms_inf() {
 }
 
 vec2 ms_cos_sin_turn(float v) {
-    float k_4 = roundEven((4.0 * v));
-    float r_3 = (v - (0.25 * k_4));
-    float x_6 = (MS_TAU * r_3);
-    float x2_ = (x_6 * x_6);
-    float s_6 = (x_6 * (1.0 + (x2_ * (-0.16666667 + (x2_ * (0.008333333 + (x2_ * (-0.0001984127 + (x2_ * 2.7557319e-6)))))))));
-    float c_12 = (1.0 + (x2_ * (-0.5 + (x2_ * (0.041666668 + (x2_ * (-0.0013888889 + (x2_ * (2.4801588e-5 + (x2_ * -2.755732e-7))))))))));
-    int q = (int(k_4) & 3);
-    if ((q == 0)) {
-        return vec2(c_12, s_6);
+    float k_7 = roundEven((4.0 * v));
+    float r_3 = (v - (0.25 * k_7));
+    float x_12 = (MS_TAU * r_3);
+    float x2_ = (x_12 * x_12);
+    float s_9 = (x_12 * (1.0 + (x2_ * (-0.16666667 + (x2_ * (0.008333333 + (x2_ * (-0.0001984127 + (x2_ * 2.7557319e-6)))))))));
+    float c_15 = (1.0 + (x2_ * (-0.5 + (x2_ * (0.041666668 + (x2_ * (-0.0013888889 + (x2_ * (2.4801588e-5 + (x2_ * -2.755732e-7))))))))));
+    int q_2 = (int(k_7) & 3);
+    if ((q_2 == 0)) {
+        return vec2(c_15, s_9);
     } else {
-        if ((q == 1)) {
-            return vec2(-(s_6), c_12);
+        if ((q_2 == 1)) {
+            return vec2(-(s_9), c_15);
         } else {
-            if ((q == 2)) {
-                return vec2(-(c_12), -(s_6));
+            if ((q_2 == 2)) {
+                return vec2(-(c_15), -(s_9));
             }
         }
     }
-    return vec2(s_6, -(c_12));
+    return vec2(s_9, -(c_15));
 }
 
 vec3 ms_rescaled(vec3 a) {
     bool local = false;
-    float m_5 = max(abs(a.x), max(abs(a.y), abs(a.z)));
-    if ((m_5 > 0.0)) {
-        local = (m_5 <= 3.4028235e38);
+    float m_6 = max(abs(a.x), max(abs(a.y), abs(a.z)));
+    if ((m_6 > 0.0)) {
+        local = (m_6 <= 3.4028235e38);
     } else {
         local = false;
     }
@@ -121,7 +154,7 @@ vec3 ms_rescaled(vec3 a) {
     if (!(_e16)) {
         return a;
     }
-    return (a / vec3(m_5));
+    return (a / vec3(m_6));
 }
 
 float ms_dot(vec3 a_1, vec3 b) {
@@ -151,9 +184,9 @@ vec3 ms_unit(vec3 w) {
     if ((abs((_e1 - 1.0)) <= 1e-6)) {
         return w;
     }
-    float m_6 = max(abs(w.x), max(abs(w.y), abs(w.z)));
-    if ((m_6 > 0.0)) {
-        local_2 = (m_6 <= 3.4028235e38);
+    float m_7 = max(abs(w.x), max(abs(w.y), abs(w.z)));
+    if ((m_7 > 0.0)) {
+        local_2 = (m_7 <= 3.4028235e38);
     } else {
         local_2 = false;
     }
@@ -161,7 +194,7 @@ vec3 ms_unit(vec3 w) {
     if (!(_e22)) {
         return w;
     }
-    vec3 _e27 = ms_normalize((w * (1.0 / m_6)));
+    vec3 _e27 = ms_normalize((w * (1.0 / m_7)));
     return _e27;
 }
 
@@ -177,13 +210,13 @@ vec3 ms_unit_normal(vec3 v_1) {
     if (_e9) {
         return (v_1 * (1.0 / sqrt(_e1)));
     }
-    float m_7 = max(abs(v_1.x), max(abs(v_1.y), abs(v_1.z)));
-    if ((m_7 == 0.0)) {
+    float m_8 = max(abs(v_1.x), max(abs(v_1.y), abs(v_1.z)));
+    if ((m_8 == 0.0)) {
         return vec3(0.0, 0.0, 1.0);
     }
-    vec3 s_7 = (v_1 / vec3(m_7));
-    float _e30 = ms_dot(s_7, s_7);
-    return (s_7 * (1.0 / sqrt(_e30)));
+    vec3 s_10 = (v_1 / vec3(m_8));
+    float _e30 = ms_dot(s_10, s_10);
+    return (s_10 * (1.0 / sqrt(_e30)));
 }
 
 vec3 ms_reflect(vec3 wo, vec3 n) {
@@ -196,11 +229,11 @@ bool ms_same_hemisphere(vec3 a_3, vec3 b_1) {
 }
 
 vec3 ms_half_vector_reflection(vec3 wo_1, vec3 wi) {
-    vec3 s_8 = (wo_1 + wi);
-    if (!((max(abs(s_8.x), max(abs(s_8.y), abs(s_8.z))) > 0.0))) {
+    vec3 s_11 = (wo_1 + wi);
+    if (!((max(abs(s_11.x), max(abs(s_11.y), abs(s_11.z))) > 0.0))) {
         return vec3(0.0);
     }
-    vec3 _e16 = ms_normalize(s_8);
+    vec3 _e16 = ms_normalize(s_11);
     if ((_e16.z < 0.0)) {
         return -(_e16);
     }
@@ -302,8 +335,8 @@ vec4 ms_refract(vec3 wi_5, vec3 n_in, float eta_in) {
     vec3 _e22 = n_1;
     vec3 _e23 = n_1;
     float _e24 = ms_dot(t0_, _e23);
-    vec3 t_2 = (t0_ + (_e22 * -(_e24)));
-    float _e28 = ms_dot(t_2, t_2);
+    vec3 t_4 = (t0_ + (_e22 * -(_e24)));
+    float _e28 = ms_dot(t_4, t_4);
     float _e29 = eta_1;
     float _e30 = eta_1;
     float sin2_t = (_e28 / (_e29 * _e30));
@@ -314,7 +347,7 @@ vec4 ms_refract(vec3 wi_5, vec3 n_in, float eta_in) {
     float _e41 = eta_1;
     vec3 _e45 = n_1;
     float _e49 = eta_1;
-    return vec4(((t_2 * (-1.0 / _e41)) + (_e45 * -(cos_t))), _e49);
+    return vec4(((t_4 * (-1.0 / _e41)) + (_e45 * -(cos_t))), _e49);
 }
 
 float ms_fresnel_dielectric(float cos_in, float eta_in_1) {
@@ -333,31 +366,31 @@ float ms_fresnel_dielectric(float cos_in, float eta_in_1) {
         eta_2 = (1.0 / _e9);
     }
     float _e12 = cos_i_1;
-    float c_13 = min(_e12, 1.0);
+    float c_16 = min(_e12, 1.0);
     float _e15 = eta_2;
     if ((_e15 == 1.0)) {
         return 0.0;
     }
-    if ((c_13 == 0.0)) {
+    if ((c_16 == 0.0)) {
         return 1.0;
     }
     float _e24 = eta_2;
     if ((_e24 > 1e18)) {
         float _e27 = eta_2;
         float e_3 = (1.0 / _e27);
-        float cos_t_1 = sqrt((((1.0 - e_3) * (1.0 + e_3)) + ((c_13 * e_3) * (c_13 * e_3))));
-        r_parl = ((c_13 - (e_3 * cos_t_1)) / (c_13 + (e_3 * cos_t_1)));
-        r_perp = (((e_3 * c_13) - cos_t_1) / ((e_3 * c_13) + cos_t_1));
+        float cos_t_1 = sqrt((((1.0 - e_3) * (1.0 + e_3)) + ((c_16 * e_3) * (c_16 * e_3))));
+        r_parl = ((c_16 - (e_3 * cos_t_1)) / (c_16 + (e_3 * cos_t_1)));
+        r_perp = (((e_3 * c_16) - cos_t_1) / ((e_3 * c_16) + cos_t_1));
     } else {
         float _e51 = eta_2;
         if ((_e51 > 1.0)) {
             float _e54 = eta_2;
             float _e57 = eta_2;
-            ect2_ = (((_e54 - 1.0) * (_e57 + 1.0)) + (c_13 * c_13));
+            ect2_ = (((_e54 - 1.0) * (_e57 + 1.0)) + (c_16 * c_16));
         } else {
             float _e63 = eta_2;
             float _e64 = eta_2;
-            ect2_ = ((_e63 * _e64) - ((1.0 - c_13) * (1.0 + c_13)));
+            ect2_ = ((_e63 * _e64) - ((1.0 - c_16) * (1.0 + c_16)));
         }
         float _e72 = ect2_;
         if ((_e72 <= 0.0)) {
@@ -367,9 +400,9 @@ float ms_fresnel_dielectric(float cos_in, float eta_in_1) {
         float ect = sqrt(_e76);
         float _e78 = eta_2;
         float _e79 = eta_2;
-        float e2c = ((_e78 * _e79) * c_13);
+        float e2c = ((_e78 * _e79) * c_16);
         r_parl = ((e2c - ect) / (e2c + ect));
-        r_perp = ((c_13 - ect) / (c_13 + ect));
+        r_perp = ((c_16 - ect) / (c_16 + ect));
     }
     float _e88 = r_parl;
     float _e89 = r_parl;
@@ -387,17 +420,17 @@ float ms_cnorm(vec2 a_5) {
 }
 
 float ms_cnorm_ratio(vec2 a_6, vec2 b_3) {
-    float s_9 = max(max(abs(a_6.x), abs(a_6.y)), max(abs(b_3.x), abs(b_3.y)));
-    if ((s_9 == 0.0)) {
+    float s_12 = max(max(abs(a_6.x), abs(a_6.y)), max(abs(b_3.x), abs(b_3.y)));
+    if ((s_12 == 0.0)) {
         return 0.0;
     }
-    if (!((s_9 <= 3.4028235e38))) {
+    if (!((s_12 <= 3.4028235e38))) {
         float _e19 = ms_cnorm(a_6);
         float _e20 = ms_cnorm(b_3);
         return (_e19 / _e20);
     }
-    float _e24 = ms_cnorm((a_6 / vec2(s_9)));
-    float _e27 = ms_cnorm((b_3 / vec2(s_9)));
+    float _e24 = ms_cnorm((a_6 / vec2(s_12)));
+    float _e27 = ms_cnorm((b_3 / vec2(s_12)));
     return (_e24 / _e27);
 }
 
@@ -419,25 +452,25 @@ vec2 ms_csqrt(vec2 a_8) {
     if ((r_6 == 0.0)) {
         return vec2(0.0);
     }
-    float t_3 = sqrt(((r_6 + abs(a_8.x)) * 0.5));
+    float t_5 = sqrt(((r_6 + abs(a_8.x)) * 0.5));
     if ((a_8.x >= 0.0)) {
-        return vec2(t_3, (a_8.y / (t_3 + t_3)));
+        return vec2(t_5, (a_8.y / (t_5 + t_5)));
     }
-    s_1 = t_3;
+    s_1 = t_5;
     if ((a_8.y < 0.0)) {
-        s_1 = -(t_3);
+        s_1 = -(t_5);
     }
     float _e29 = s_1;
-    return vec2((abs(a_8.y) / (t_3 + t_3)), _e29);
+    return vec2((abs(a_8.y) / (t_5 + t_5)), _e29);
 }
 
-float ms_fresnel_conductor(float cos_in_1, float eta_3, float k) {
+float ms_fresnel_conductor(float cos_in_1, float eta_3, float k_1) {
     bool local_4 = false;
     bool local_5 = false;
     vec2 w_2 = vec2(0.0);
     float cos_i_5 = min(max(cos_in_1, 0.0), 1.0);
     if ((eta_3 == 1.0)) {
-        local_4 = (k == 0.0);
+        local_4 = (k_1 == 0.0);
     } else {
         local_4 = false;
     }
@@ -446,7 +479,7 @@ float ms_fresnel_conductor(float cos_in_1, float eta_3, float k) {
         return 0.0;
     }
     if ((abs(eta_3) < 1e-9)) {
-        local_5 = (abs(k) < 1e-9);
+        local_5 = (abs(k_1) < 1e-9);
     } else {
         local_5 = false;
     }
@@ -454,11 +487,11 @@ float ms_fresnel_conductor(float cos_in_1, float eta_3, float k) {
     if (_e25) {
         return 1.0;
     }
-    vec2 n_4 = vec2(eta_3, k);
+    vec2 n_7 = vec2(eta_3, k_1);
     float sin2_i = ((1.0 - cos_i_5) * (1.0 + cos_i_5));
     vec2 ci = vec2(cos_i_5, 0.0);
-    if ((max(abs(eta_3), abs(k)) > 1e18)) {
-        vec2 _e40 = ms_crecip(n_4);
+    if ((max(abs(eta_3), abs(k_1)) > 1e18)) {
+        vec2 _e40 = ms_crecip(n_7);
         vec2 _e41 = ms_cmul(_e40, _e40);
         vec2 sin2_t_1 = (_e41 * sin2_i);
         vec2 _e49 = ms_csqrt(vec2((1.0 - sin2_t_1.x), -(sin2_t_1.y)));
@@ -468,10 +501,10 @@ float ms_fresnel_conductor(float cos_in_1, float eta_3, float k) {
         float _e57 = ms_cnorm_ratio((ci_m - _e49), (ci_m + _e49));
         return min((0.5 * (_e54 + _e57)), 1.0);
     }
-    vec2 _e63 = ms_cmul(n_4, n_4);
-    float _e65 = ms_cnorm(n_4);
+    vec2 _e63 = ms_cmul(n_7, n_7);
+    float _e65 = ms_cnorm(n_7);
     if ((_e65 >= 1.0)) {
-        vec2 _e74 = ms_cmul(vec2((eta_3 - 1.0), k), vec2((eta_3 + 1.0), k));
+        vec2 _e74 = ms_cmul(vec2((eta_3 - 1.0), k_1), vec2((eta_3 + 1.0), k_1));
         w_2 = (_e74 + vec2((cos_i_5 * cos_i_5), 0.0));
     } else {
         w_2 = (_e63 - vec2(sin2_i, 0.0));
@@ -480,25 +513,25 @@ float ms_fresnel_conductor(float cos_in_1, float eta_3, float k) {
     vec2 _e83 = ms_crecip(_e63);
     vec2 _e84 = ms_cmul(_e82, _e83);
     vec2 _e85 = ms_csqrt(_e84);
-    vec2 n_ci = (n_4 * cos_i_5);
-    vec2 _e87 = ms_cmul(n_4, _e85);
+    vec2 n_ci = (n_7 * cos_i_5);
+    vec2 _e87 = ms_cmul(n_7, _e85);
     float _e90 = ms_cnorm_ratio((n_ci - _e85), (n_ci + _e85));
     float _e93 = ms_cnorm_ratio((ci - _e87), (ci + _e87));
     return min((0.5 * (_e90 + _e93)), 1.0);
 }
 
 float ms_fresnel_schlick(float cos_i_2, float f0_) {
-    float m_8 = (1.0 - min(max(cos_i_2, 0.0), 1.0));
-    float m2_ = (m_8 * m_8);
-    return (f0_ + ((1.0 - f0_) * ((m2_ * m2_) * m_8)));
+    float m_9 = (1.0 - min(max(cos_i_2, 0.0), 1.0));
+    float m2_ = (m_9 * m_9);
+    return (f0_ + ((1.0 - f0_) * ((m2_ * m2_) * m_9)));
 }
 
 float ms_fresnel_f82_tint(float cos_i_3, float f0_1, float h) {
     float mu = min(max(cos_i_3, 0.0), 1.0);
-    float m_9 = (1.0 - mu);
-    float m5_ = ((((m_9 * m_9) * m_9) * m_9) * m_9);
-    float a_12 = (((f0_1 + ((1.0 - f0_1) * 0.46266437)) * (1.0 - h)) / 0.05665278);
-    float r_7 = ((f0_1 + ((1.0 - f0_1) * m5_)) - (((a_12 * mu) * m5_) * m_9));
+    float m_10 = (1.0 - mu);
+    float m5_ = ((((m_10 * m_10) * m_10) * m_10) * m_10);
+    float a_18 = (((f0_1 + ((1.0 - f0_1) * 0.46266437)) * (1.0 - h)) / 0.05665278);
+    float r_7 = ((f0_1 + ((1.0 - f0_1) * m5_)) - (((a_18 * mu) * m5_) * m_10));
     return min(max(r_7, 0.0), 1.0);
 }
 
@@ -536,42 +569,42 @@ vec3 ms_fresnel_eval(MsFresnel fr, float cos_i_4) {
 }
 
 float ms_ggx_d(vec3 wm_2, vec2 alpha) {
-    float z_1 = wm_2.z;
-    if (!((z_1 > 0.0))) {
+    float z_3 = wm_2.z;
+    if (!((z_3 > 0.0))) {
         return 0.0;
     }
-    float x_7 = (wm_2.x / alpha.x);
-    float y = (wm_2.y / alpha.y);
-    float t_4 = (((x_7 * x_7) + (y * y)) + (z_1 * z_1));
-    return (1.0 / ((((MS_PI * alpha.x) * alpha.y) * t_4) * t_4));
+    float x_13 = (wm_2.x / alpha.x);
+    float y_3 = (wm_2.y / alpha.y);
+    float t_6 = (((x_13 * x_13) + (y_3 * y_3)) + (z_3 * z_3));
+    return (1.0 / ((((MS_PI * alpha.x) * alpha.y) * t_6) * t_6));
 }
 
 float ms_ggx_lambda(vec3 w_3, vec2 alpha_1) {
-    float x_8 = (alpha_1.x * w_3.x);
-    float y_1 = (alpha_1.y * w_3.y);
-    float z_2 = abs(w_3.z);
-    float t_5 = ((x_8 * x_8) + (y_1 * y_1));
-    float z2_ = (z_2 * z_2);
-    float den = (2.0 * (z2_ + (z_2 * sqrt((z2_ + t_5)))));
+    float x_14 = (alpha_1.x * w_3.x);
+    float y_4 = (alpha_1.y * w_3.y);
+    float z_4 = abs(w_3.z);
+    float t_7 = ((x_14 * x_14) + (y_4 * y_4));
+    float z2_ = (z_4 * z_4);
+    float den = (2.0 * (z2_ + (z_4 * sqrt((z2_ + t_7)))));
     if (!((den > 0.0))) {
-        if ((z_2 == 0.0)) {
+        if ((z_4 == 0.0)) {
             float _e25 = ms_inf();
             return _e25;
         }
-        return ((t_5 / (z_2 + sqrt(((z_2 * z_2) + t_5)))) / (z_2 + z_2));
+        return ((t_7 / (z_4 + sqrt(((z_4 * z_4) + t_7)))) / (z_4 + z_4));
     }
-    return (t_5 / den);
+    return (t_7 / den);
 }
 
 float ms_ggx_g1_(vec3 w_4, vec2 alpha_2) {
-    float x_9 = (alpha_2.x * w_4.x);
-    float y_2 = (alpha_2.y * w_4.y);
-    float z_3 = abs(w_4.z);
-    float den_1 = (z_3 + sqrt(((z_3 * z_3) + ((x_9 * x_9) + (y_2 * y_2)))));
+    float x_15 = (alpha_2.x * w_4.x);
+    float y_5 = (alpha_2.y * w_4.y);
+    float z_5 = abs(w_4.z);
+    float den_1 = (z_5 + sqrt(((z_5 * z_5) + ((x_15 * x_15) + (y_5 * y_5)))));
     if (!((den_1 > 0.0))) {
         return 0.0;
     }
-    return ((z_3 + z_3) / den_1);
+    return ((z_5 + z_5) / den_1);
 }
 
 float ms_ggx_g2_(vec3 wo_6, vec3 wi_6, vec2 alpha_3) {
@@ -590,7 +623,7 @@ float ms_ggx_pdf(vec3 w_5, vec3 wm_3, vec2 alpha_5) {
     float c = 0.0;
     bool local_6 = false;
     bool local_7 = false;
-    float z_4 = abs(w_5.z);
+    float z_6 = abs(w_5.z);
     float _e5 = ms_dot(w_5, wm_3);
     c = _e5;
     if ((w_5.z < 0.0)) {
@@ -599,7 +632,7 @@ float ms_ggx_pdf(vec3 w_5, vec3 wm_3, vec2 alpha_5) {
     }
     float _e12 = c;
     if ((_e12 > 0.0)) {
-        local_6 = (z_4 > 0.0);
+        local_6 = (z_6 > 0.0);
     } else {
         local_6 = false;
     }
@@ -615,42 +648,47 @@ float ms_ggx_pdf(vec3 w_5, vec3 wm_3, vec2 alpha_5) {
     }
     float sx = (alpha_5.x * w_5.x);
     float sy = (alpha_5.y * w_5.y);
-    float len_1 = sqrt((((sx * sx) + (sy * sy)) + (z_4 * z_4)));
+    float len_3 = sqrt((((sx * sx) + (sy * sy)) + (z_6 * z_6)));
     float mx = (wm_3.x / alpha_5.x);
     float my = (wm_3.y / alpha_5.y);
-    float t_6 = (((mx * mx) + (my * my)) + (wm_3.z * wm_3.z));
+    float t_8 = (((mx * mx) + (my * my)) + (wm_3.z * wm_3.z));
     float _e55 = c;
     float _e56 = c;
-    return ((_e55 + _e56) / (((((MS_PI * alpha_5.x) * alpha_5.y) * t_6) * t_6) * (z_4 + len_1)));
+    return ((_e55 + _e56) / (((((MS_PI * alpha_5.x) * alpha_5.y) * t_8) * t_8) * (z_6 + len_3)));
 }
 
-vec3 ms_ggx_cap_normal(vec3 w_6, vec2 alpha_6, vec2 u, float len) {
+vec3 ms_ggx_cap_normal_stretched(vec3 w_6, vec3 stretch, vec2 u, float len) {
     float inv = (1.0 / len);
-    float x_10 = ((alpha_6.x * w_6.x) * inv);
-    float y_3 = ((alpha_6.y * w_6.y) * inv);
-    float z_5 = (w_6.z * inv);
-    vec2 _e17 = ms_cos_sin_turn(u.x);
-    float above = ((1.0 - u.y) * (1.0 + z_5));
-    float sin_ = sqrt(max((u.y * ((above * (1.0 + z_5)) + ((x_10 * x_10) + (y_3 * y_3)))), 0.0));
-    vec3 h_1 = vec3((alpha_6.x * ((sin_ * _e17.x) + x_10)), (alpha_6.y * ((sin_ * _e17.y) + y_3)), above);
-    float n_5 = (1.0 / sqrt((((h_1.x * h_1.x) + (h_1.y * h_1.y)) + (h_1.z * h_1.z))));
-    return (h_1 * n_5);
+    float x_16 = ((stretch.x * w_6.x) * inv);
+    float y_6 = ((stretch.y * w_6.y) * inv);
+    float z_7 = ((stretch.z * w_6.z) * inv);
+    vec2 _e19 = ms_cos_sin_turn(u.x);
+    float above = ((1.0 - u.y) * (1.0 + z_7));
+    float sin_ = sqrt(max((u.y * ((above * (1.0 + z_7)) + ((x_16 * x_16) + (y_6 * y_6)))), 0.0));
+    vec3 h_1 = vec3((stretch.x * ((sin_ * _e19.x) + x_16)), (stretch.y * ((sin_ * _e19.y) + y_6)), (stretch.z * above));
+    float n_8 = (1.0 / sqrt((((h_1.x * h_1.x) + (h_1.y * h_1.y)) + (h_1.z * h_1.z))));
+    return (h_1 * n_8);
 }
 
-vec3 ms_ggx_sample_wm(vec3 w_in, vec2 alpha_7, vec2 u_1) {
-    vec3 w_7 = vec3(0.0);
+vec3 ms_ggx_cap_normal(vec3 w_7, vec2 alpha_6, vec2 u_1, float len_1) {
+    vec3 _e6 = ms_ggx_cap_normal_stretched(w_7, vec3(alpha_6, 1.0), u_1, len_1);
+    return _e6;
+}
+
+vec3 ms_ggx_sample_wm(vec3 w_in, vec2 alpha_7, vec2 u_2) {
+    vec3 w_8 = vec3(0.0);
     bool local_8 = false;
-    w_7 = w_in;
-    float _e5 = w_7.z;
+    w_8 = w_in;
+    float _e5 = w_8.z;
     if ((_e5 < 0.0)) {
-        vec3 _e8 = w_7;
-        w_7 = -(_e8);
+        vec3 _e8 = w_8;
+        w_8 = -(_e8);
     }
-    float _e12 = w_7.x;
-    float _e16 = w_7.y;
-    float _e19 = w_7.z;
-    vec3 s_10 = vec3((alpha_7.x * _e12), (alpha_7.y * _e16), _e19);
-    float n2_ = (((s_10.x * s_10.x) + (s_10.y * s_10.y)) + (s_10.z * s_10.z));
+    float _e12 = w_8.x;
+    float _e16 = w_8.y;
+    float _e19 = w_8.z;
+    vec3 s_13 = vec3((alpha_7.x * _e12), (alpha_7.y * _e16), _e19);
+    float n2_ = (((s_13.x * s_13.x) + (s_13.y * s_13.y)) + (s_13.z * s_13.z));
     if ((n2_ >= 1e-24)) {
         local_8 = (n2_ <= 1e24);
     } else {
@@ -658,35 +696,35 @@ vec3 ms_ggx_sample_wm(vec3 w_in, vec2 alpha_7, vec2 u_1) {
     }
     bool _e39 = local_8;
     if (_e39) {
-        vec3 _e40 = w_7;
-        vec3 _e42 = ms_ggx_cap_normal(_e40, alpha_7, u_1, sqrt(n2_));
-        float _e45 = w_7.x;
-        float _e49 = w_7.y;
-        float _e54 = w_7.z;
+        vec3 _e40 = w_8;
+        vec3 _e42 = ms_ggx_cap_normal(_e40, alpha_7, u_2, sqrt(n2_));
+        float _e45 = w_8.x;
+        float _e49 = w_8.y;
+        float _e54 = w_8.z;
         float d_14 = (((_e42.x * _e45) + (_e42.y * _e49)) + (_e42.z * _e54));
-        float _e58 = w_7.x;
-        float _e61 = w_7.y;
-        float _e65 = w_7.z;
+        float _e58 = w_8.x;
+        float _e61 = w_8.y;
+        float _e65 = w_8.z;
         float l1_ = ((abs(_e58) + abs(_e61)) + abs(_e65));
         if ((d_14 > (2.4e-7 * l1_))) {
             return _e42;
         }
-        vec3 _e71 = w_7;
+        vec3 _e71 = w_8;
         vec3 _e72 = ms_facing(_e42, _e71);
         return _e72;
     }
-    vec3 _e73 = w_7;
+    vec3 _e73 = w_8;
     vec3 _e74 = ms_rescaled(_e73);
     vec3 sr = vec3((alpha_7.x * _e74.x), (alpha_7.y * _e74.y), _e74.z);
-    vec3 _e95 = ms_ggx_cap_normal(_e74, alpha_7, u_1, sqrt((((sr.x * sr.x) + (sr.y * sr.y)) + (sr.z * sr.z))));
-    vec3 _e96 = w_7;
+    vec3 _e95 = ms_ggx_cap_normal(_e74, alpha_7, u_2, sqrt((((sr.x * sr.x) + (sr.y * sr.y)) + (sr.z * sr.z))));
+    vec3 _e96 = w_8;
     vec3 _e97 = ms_facing(_e95, _e96);
     return _e97;
 }
 
-MsSample ms_ggx_sample(vec3 w_8, vec2 alpha_8, vec2 u_2) {
-    vec3 _e3 = ms_ggx_sample_wm(w_8, alpha_8, u_2);
-    vec3 _e4 = ms_unit(w_8);
+MsSample ms_ggx_sample(vec3 w_9, vec2 alpha_8, vec2 u_3) {
+    vec3 _e3 = ms_ggx_sample_wm(w_9, alpha_8, u_3);
+    vec3 _e4 = ms_unit(w_9);
     float _e5 = ms_ggx_pdf(_e4, _e3, alpha_8);
     return MsSample(_e3, _e5);
 }
@@ -699,20 +737,20 @@ float ms_ggx_pdf_dcos(vec3 wm_4, vec2 alpha_9) {
     return (_e7 * wm_4.z);
 }
 
-MsSample ms_ggx_sample_dcos(vec2 alpha_10, vec2 u_3) {
-    vec2 _e3 = ms_cos_sin_turn(u_3.y);
-    float r_8 = sqrt(u_3.x);
-    vec3 _e21 = ms_unit_normal(vec3(((alpha_10.x * r_8) * _e3.x), ((alpha_10.y * r_8) * _e3.y), sqrt(max((1.0 - u_3.x), 0.0))));
+MsSample ms_ggx_sample_dcos(vec2 alpha_10, vec2 u_4) {
+    vec2 _e3 = ms_cos_sin_turn(u_4.y);
+    float r_8 = sqrt(u_4.x);
+    vec3 _e21 = ms_unit_normal(vec3(((alpha_10.x * r_8) * _e3.x), ((alpha_10.y * r_8) * _e3.y), sqrt(max((1.0 - u_4.x), 0.0))));
     float _e22 = ms_ggx_d(_e21, alpha_10);
     return MsSample(_e21, (_e22 * _e21.z));
 }
 
-MsBoundedCap ms_ggx_bounded_cap(vec3 w_9, vec2 alpha_11) {
+MsBoundedCap ms_ggx_bounded_cap(vec3 w_10, vec2 alpha_11) {
     vec3 v_2 = vec3(0.0);
-    bool down = (w_9.z < 0.0);
-    v_2 = w_9;
+    bool down = (w_10.z < 0.0);
+    v_2 = w_10;
     if (down) {
-        v_2 = -(w_9);
+        v_2 = -(w_10);
     }
     float _e9 = v_2.x;
     float _e13 = v_2.y;
@@ -721,50 +759,50 @@ MsBoundedCap ms_ggx_bounded_cap(vec3 w_9, vec2 alpha_11) {
     if (down) {
         return MsBoundedCap(_e18, _e18.z, 0.0);
     }
-    float a_13 = min(min(alpha_11.x, alpha_11.y), 1.0);
+    float a_19 = min(min(alpha_11.x, alpha_11.y), 1.0);
     float _e28 = v_2.x;
     float _e30 = v_2.x;
     float _e33 = v_2.y;
     float _e35 = v_2.y;
-    float s_11 = (1.0 + sqrt(((_e28 * _e30) + (_e33 * _e35))));
-    float a2_ = (a_13 * a_13);
-    float s2_ = (s_11 * s_11);
+    float s_14 = (1.0 + sqrt(((_e28 * _e30) + (_e33 * _e35))));
+    float a2_ = (a_19 * a_19);
+    float s2_ = (s_14 * s_14);
     float _e44 = v_2.z;
     float _e47 = v_2.z;
     float den_2 = (s2_ + ((a2_ * _e44) * _e47));
-    float k_5 = (((1.0 - a2_) * s2_) / den_2);
+    float k_8 = (((1.0 - a2_) * s2_) / den_2);
     float _e55 = v_2.z;
     float _e57 = v_2.z;
     float one_minus_k = ((a2_ * (s2_ + (_e55 * _e57))) / den_2);
-    return MsBoundedCap(_e18, (k_5 * _e18.z), (one_minus_k * _e18.z));
+    return MsBoundedCap(_e18, (k_8 * _e18.z), (one_minus_k * _e18.z));
 }
 
 float ms_ggx_pdf_bounded(vec3 w_in_1, vec3 wm_5, vec2 alpha_12) {
     vec3 _e3 = ms_unit(w_in_1);
     MsBoundedCap _e4 = ms_ggx_bounded_cap(_e3, alpha_12);
     vec3 ws = _e4.ws;
-    float b_6 = _e4.b;
+    float b_8 = _e4.b;
     vec3 _e15 = ms_normalize(vec3((wm_5.x / alpha_12.x), (wm_5.y / alpha_12.y), wm_5.z));
     float _e16 = ms_dot(_e15, ws);
     float cz = (((_e16 + _e16) * _e15.z) - ws.z);
-    if ((cz < -(b_6))) {
+    if ((cz < -(b_8))) {
         return 0.0;
     }
     float _e25 = ms_ggx_pdf(_e3, wm_5, alpha_12);
-    return ((_e25 * (1.0 + ws.z)) / (1.0 + b_6));
+    return ((_e25 * (1.0 + ws.z)) / (1.0 + b_8));
 }
 
-MsSample ms_ggx_sample_bounded(vec3 w_in_2, vec2 alpha_13, vec2 u_4) {
+MsSample ms_ggx_sample_bounded(vec3 w_in_2, vec2 alpha_13, vec2 u_5) {
     vec3 _e3 = ms_unit(w_in_2);
     MsBoundedCap _e4 = ms_ggx_bounded_cap(_e3, alpha_13);
     vec3 ws_1 = _e4.ws;
-    float b_7 = _e4.b;
-    vec2 _e8 = ms_cos_sin_turn(u_4.x);
-    float above_1 = ((1.0 - u_4.y) * (1.0 + b_7));
+    float b_9 = _e4.b;
+    vec2 _e8 = ms_cos_sin_turn(u_5.x);
+    float above_1 = ((1.0 - u_5.y) * (1.0 + b_9));
     float one_minus_b = ((((ws_1.x * ws_1.x) + (ws_1.y * ws_1.y)) / (1.0 + ws_1.z)) + _e4.top);
-    float sin_1 = sqrt(max(((u_4.y * (1.0 + b_7)) * (above_1 + one_minus_b)), 0.0));
-    vec3 m_10 = vec3(((sin_1 * _e8.x) + ws_1.x), ((sin_1 * _e8.y) + ws_1.y), (above_1 + _e4.top));
-    vec3 _e58 = ms_normalize(vec3((alpha_13.x * m_10.x), (alpha_13.y * m_10.y), max(m_10.z, 0.0)));
+    float sin_1 = sqrt(max(((u_5.y * (1.0 + b_9)) * (above_1 + one_minus_b)), 0.0));
+    vec3 m_11 = vec3(((sin_1 * _e8.x) + ws_1.x), ((sin_1 * _e8.y) + ws_1.y), (above_1 + _e4.top));
+    vec3 _e58 = ms_normalize(vec3((alpha_13.x * m_11.x), (alpha_13.y * m_11.y), max(m_11.z, 0.0)));
     vec3 _e59 = ms_facing(_e58, _e3);
     float _e60 = ms_ggx_pdf_bounded(_e3, _e59, alpha_13);
     return MsSample(_e59, _e60);
@@ -777,16 +815,103 @@ float ms_ggx_pdf_bounded_reflection(vec3 wo_8, vec3 wi_8, vec2 alpha_14) {
         return 0.0;
     }
     float _e7 = ms_dot(wo_8, _e3);
-    float c_14 = abs(_e7);
-    if (!((c_14 > 0.0))) {
+    float c_17 = abs(_e7);
+    if (!((c_17 > 0.0))) {
         return 0.0;
     }
     float _e13 = ms_ggx_pdf_bounded(wo_8, _e3, alpha_14);
-    return (_e13 / (4.0 * c_14));
+    return (_e13 / (4.0 * c_17));
 }
 
-vec2 ms_bk_segment(float x, int k0_, int k1_) {
-    uint bits_1 = floatBitsToUint(x);
+uvec2 ms_u64_add(uvec2 a_9, uvec2 b_4) {
+    uint lo_3 = (a_9.x + b_4.x);
+    return uvec2(lo_3, ((a_9.y + b_4.y) + ((lo_3 < a_9.x) ? 1u : 0u)));
+}
+
+uvec2 ms_u32_mul_wide(uint x, uint y) {
+    uint x0_ = (x & 65535u);
+    uint x1_ = (x >> 16u);
+    uint y0_ = (y & 65535u);
+    uint y1_ = (y >> 16u);
+    uint p00_ = (x0_ * y0_);
+    uint p01_ = (x0_ * y1_);
+    uint p10_ = (x1_ * y0_);
+    uint p11_ = (x1_ * y1_);
+    uint mid = (((p00_ >> 16u) + (p01_ & 65535u)) + (p10_ & 65535u));
+    return uvec2(((mid << 16u) | (p00_ & 65535u)), (((p11_ + (p01_ >> 16u)) + (p10_ >> 16u)) + (mid >> 16u)));
+}
+
+uvec2 ms_u64_mul(uvec2 a_10, uvec2 b_5) {
+    uvec2 _e4 = ms_u32_mul_wide(a_10.x, b_5.x);
+    return uvec2(_e4.x, ((_e4.y + (a_10.x * b_5.y)) + (a_10.y * b_5.x)));
+}
+
+uvec2 ms_u64_xorshift(uvec2 a_11, uint k_2) {
+    return (a_11 ^ uvec2(((a_11.x >> k_2) | (a_11.y << (32u - k_2))), (a_11.y >> k_2)));
+}
+
+uvec2 ms_f64_bits(float v_3) {
+    uint man = 0u;
+    uint e64_ = 0u;
+    uint b_10 = floatBitsToUint(v_3);
+    uint sign_2 = (b_10 & 2147483648u);
+    uint e_4 = ((b_10 >> 23u) & 255u);
+    man = (b_10 & 8388607u);
+    if ((e_4 == 0u)) {
+        uint _e14 = man;
+        if ((_e14 == 0u)) {
+            return uvec2(0u, sign_2);
+        }
+        uint _e19 = man;
+        uint p = uint(findMSB(_e19));
+        e64_ = (p + 874u);
+        uint _e23 = man;
+        man = ((_e23 << (23u - p)) & 8388607u);
+    } else {
+        if ((e_4 == 255u)) {
+            e64_ = 2047u;
+        } else {
+            e64_ = (e_4 + 896u);
+        }
+    }
+    uint _e34 = man;
+    uint _e37 = e64_;
+    uint _e41 = man;
+    return uvec2((_e34 << 29u), ((sign_2 | (_e37 << 20u)) | (_e41 >> 3u)));
+}
+
+uvec2 ms_stream_new(vec2 u_6) {
+    uvec2 _e2 = ms_f64_bits(u_6.x);
+    uvec2 _e4 = ms_f64_bits(u_6.y);
+    uvec2 rot = uvec2(((_e4.x << 29u) | (_e4.y >> 3u)), ((_e4.y << 29u) | (_e4.x >> 3u)));
+    return ((_e2 ^ rot) ^ uvec2(2242054355u, 608135816u));
+}
+
+uvec2 ms_stream_next_u64_(inout uvec2 state_1) {
+    uvec2 z = uvec2(0u);
+    uvec2 _e1 = state_1;
+    uvec2 _e5 = ms_u64_add(_e1, uvec2(2135587861u, 2654435769u));
+    state_1 = _e5;
+    uvec2 _e6 = state_1;
+    uvec2 _e8 = ms_u64_xorshift(_e6, 30u);
+    uvec2 _e12 = ms_u64_mul(_e8, uvec2(484763065u, 3210233709u));
+    z = _e12;
+    uvec2 _e14 = z;
+    uvec2 _e16 = ms_u64_xorshift(_e14, 27u);
+    uvec2 _e20 = ms_u64_mul(_e16, uvec2(321982955u, 2496678331u));
+    z = _e20;
+    uvec2 _e21 = z;
+    uvec2 _e23 = ms_u64_xorshift(_e21, 31u);
+    return _e23;
+}
+
+float ms_stream_next(inout uvec2 state_2) {
+    uvec2 _e1 = ms_stream_next_u64_(state_2);
+    return (float((_e1.y >> 8u)) * 5.9604645e-8);
+}
+
+vec2 ms_bk_segment(float x_2, int k0_, int k1_) {
+    uint bits_1 = floatBitsToUint(x_2);
     uint rows = (uint((k1_ - k0_)) << MS_BK_SEGMENTS_LOG2_);
     uint idx = min(((bits_1 >> (23u - MS_BK_SEGMENTS_LOG2_)) - (uint((127 + k0_)) << MS_BK_SEGMENTS_LOG2_)), (rows - 1u));
     uint pos = ((bits_1 << (9u + MS_BK_SEGMENTS_LOG2_)) >> 9u);
@@ -801,20 +926,20 @@ float ms_bk_ln_1m(float xi) {
     if ((xi > 0.5)) {
         return log((1.0 - xi));
     }
-    float t_7 = (-(xi) / (2.0 - xi));
-    float t2_ = (t_7 * t_7);
-    float p = (1.0 + (t2_ * (0.33333334 + (t2_ * (0.2 + (t2_ * (0.14285715 + (t2_ * (0.11111111 + (t2_ * (0.09090909 + (t2_ * (0.07692308 + (t2_ * 0.06666667))))))))))))));
-    return ((2.0 * t_7) * p);
+    float t_9 = (-(xi) / (2.0 - xi));
+    float t2_ = (t_9 * t_9);
+    float p_1 = (1.0 + (t2_ * (0.33333334 + (t2_ * (0.2 + (t2_ * (0.14285715 + (t2_ * (0.11111111 + (t2_ * (0.09090909 + (t2_ * (0.07692308 + (t2_ * 0.06666667))))))))))))));
+    return ((2.0 * t_9) * p_1);
 }
 
 float ms_beckmann_d(vec3 wm_6, vec2 alpha_15) {
     bool local_9 = false;
-    float z_6 = wm_6.z;
+    float z_8 = wm_6.z;
     float r_9 = (1.0 / (alpha_15.x * alpha_15.y));
-    float x_11 = ((wm_6.x * alpha_15.y) * r_9);
-    float y_4 = ((wm_6.y * alpha_15.x) * r_9);
-    float z2_1 = (z_6 * z_6);
-    if ((z_6 > 0.0)) {
+    float x_17 = ((wm_6.x * alpha_15.y) * r_9);
+    float y_7 = ((wm_6.y * alpha_15.x) * r_9);
+    float z2_1 = (z_8 * z_8);
+    if ((z_8 > 0.0)) {
         local_9 = (z2_1 > 0.0);
     } else {
         local_9 = false;
@@ -823,11 +948,11 @@ float ms_beckmann_d(vec3 wm_6, vec2 alpha_15) {
     if (!(_e24)) {
         return 0.0;
     }
-    float e_4 = (((x_11 * x_11) + (y_4 * y_4)) / z2_1);
-    if ((e_4 <= 80.0)) {
-        return ((exp(-(e_4)) * r_9) / ((MS_PI * z2_1) * z2_1));
+    float e_5 = (((x_17 * x_17) + (y_7 * y_7)) / z2_1);
+    if ((e_5 <= 80.0)) {
+        return ((exp(-(e_5)) * r_9) / ((MS_PI * z2_1) * z2_1));
     }
-    return exp((((log(r_9) - 1.14473) - (4.0 * log(z_6))) - e_4));
+    return exp((((log(r_9) - 1.14473) - (4.0 * log(z_8))) - e_5));
 }
 
 float ms_beckmann_pdf_dcos(vec3 wm_8, vec2 alpha_21) {
@@ -838,223 +963,365 @@ float ms_beckmann_pdf_dcos(vec3 wm_8, vec2 alpha_21) {
     return (_e7 * wm_8.z);
 }
 
-MsSample ms_beckmann_sample_dcos(vec2 alpha_22, vec2 u_6) {
-    vec3 v_3 = vec3(0.0);
-    vec2 _e3 = ms_cos_sin_turn(u_6.y);
-    if ((u_6.x >= 1.0)) {
-        v_3 = vec3((alpha_22.x * _e3.x), (alpha_22.y * _e3.y), 0.0);
+MsSample ms_beckmann_sample_dcos(vec2 alpha_22, vec2 u_8) {
+    vec3 v_4 = vec3(0.0);
+    vec2 _e3 = ms_cos_sin_turn(u_8.y);
+    if ((u_8.x >= 1.0)) {
+        v_4 = vec3((alpha_22.x * _e3.x), (alpha_22.y * _e3.y), 0.0);
     } else {
-        float _e17 = ms_bk_ln_1m(u_6.x);
+        float _e17 = ms_bk_ln_1m(u_8.x);
         float r_10 = sqrt(-(_e17));
         if ((r_10 > 1.0)) {
-            v_3 = vec3((alpha_22.x * _e3.x), (alpha_22.y * _e3.y), (1.0 / r_10));
+            v_4 = vec3((alpha_22.x * _e3.x), (alpha_22.y * _e3.y), (1.0 / r_10));
         } else {
-            v_3 = vec3(((alpha_22.x * r_10) * _e3.x), ((alpha_22.y * r_10) * _e3.y), 1.0);
+            v_4 = vec3(((alpha_22.x * r_10) * _e3.x), ((alpha_22.y * r_10) * _e3.y), 1.0);
         }
     }
-    vec3 _e41 = v_3;
+    vec3 _e41 = v_4;
     vec3 _e42 = ms_unit_normal(_e41);
     float _e43 = ms_beckmann_d(_e42, alpha_22);
     return MsSample(_e42, (_e43 * _e42.z));
 }
 
-float ms_d(MsMicrofacet mf, vec3 wm_9) {
-    if ((mf.ndf == MS_NDF_GGX)) {
-        float _e6 = ms_ggx_d(wm_9, mf.alpha);
-        return _e6;
-    }
-    if ((mf.ndf == MS_NDF_BECKMANN)) {
-        float _e11 = ms_beckmann_d(wm_9, mf.alpha);
-        return _e11;
-    }
-    return 0.0;
+vec2 ms_fam_segment(float x_6, int k0_1, int k1_1, uint m_3) {
+    uint bits_2 = floatBitsToUint(x_6);
+    uint rows_1 = (uint((k1_1 - k0_1)) << m_3);
+    uint idx_1 = min(((bits_2 >> (23u - m_3)) - (uint((127 + k0_1)) << m_3)), (rows_1 - 1u));
+    uint pos_1 = ((bits_2 << (9u + m_3)) >> 9u);
+    return vec2(float(idx_1), (uintBitsToFloat((1073741824u | pos_1)) - 3.0));
 }
 
-MsSample ms_sample_dcos(MsMicrofacet mf_7, vec2 u_11) {
-    if ((mf_7.ndf == MS_NDF_GGX)) {
-        MsSample _e6 = ms_ggx_sample_dcos(mf_7.alpha, u_11);
-        return _e6;
+float ms_fam_cubic(vec4 c_2, float s_3) {
+    return ((((((c_2.w * s_3) + c_2.z) * s_3) + c_2.y) * s_3) + c_2.x);
+}
+
+float ms_dg_lambda_ends(float u_12, float a_15) {
+    float x_18 = ((((0.5 * a_15) * a_15) * ((1.0 - u_12) * (1.0 + u_12))) / (u_12 * u_12));
+    if ((x_18 < 9.313226e-10)) {
+        if ((x_18 <= 0.0)) {
+            return 0.0;
+        }
+        return ((0.5 * x_18) * (0.42278433 - log((0.5 * x_18))));
     }
-    if ((mf_7.ndf == MS_NDF_BECKMANN)) {
-        MsSample _e11 = ms_beckmann_sample_dcos(mf_7.alpha, u_11);
-        return _e11;
+    float sx_1 = ((a_15 * sqrt(((0.5 * (1.0 - u_12)) * (1.0 + u_12)))) / u_12);
+    float r_11 = (1.0 / (sx_1 * sx_1));
+    return (((1.2533141 * sx_1) * (1.0 + (r_11 * (0.125 - (r_11 * 0.0234375))))) - 0.5);
+}
+
+float ms_exponential_d(vec3 wm_12, vec2 alpha_39) {
+    bool local_22 = false;
+    float z_9 = wm_12.z;
+    float r_12 = (1.0 / (alpha_39.x * alpha_39.y));
+    float x_19 = ((wm_12.x * alpha_39.y) * r_12);
+    float y_8 = ((wm_12.y * alpha_39.x) * r_12);
+    float z2_2 = (z_9 * z_9);
+    if ((z_9 > 0.0)) {
+        local_22 = (z2_2 > 0.0);
+    } else {
+        local_22 = false;
     }
-    return MsSample(vec3(0.0, 0.0, 1.0), 0.0);
+    bool _e24 = local_22;
+    if (!(_e24)) {
+        return ((z_9 != z_9) ? z_9 : 0.0);
+    }
+    float e_6 = ((2.0 * sqrt(((x_19 * x_19) + (y_8 * y_8)))) / z_9);
+    if ((e_6 <= 80.0)) {
+        return (((2.0 * exp(-(e_6))) * r_12) / ((MS_PI * z2_2) * z2_2));
+    }
+    return exp((((log((2.0 * r_12)) - 1.14473) - (4.0 * log(z_9))) - e_6));
+}
+
+float ms_exponential_pdf_dcos(vec3 wm_14, vec2 alpha_41) {
+    if (!((wm_14.z > 0.0))) {
+        return 0.0;
+    }
+    float _e7 = ms_exponential_d(wm_14, alpha_41);
+    return (_e7 * wm_14.z);
+}
+
+vec3 ms_exponential_sample_wm(vec3 w_in_4, vec2 alpha_43, vec2 u_17) {
+    vec3 w_27 = vec3(0.0);
+    float cp_1 = 1.0;
+    float sp_1 = 0.0;
+    uvec2 state_9 = uvec2(0u);
+    float v0_ = 0.0;
+    float v1_ = 0.0;
+    float x_9 = 0.0;
+    float y_2 = 0.0;
+    int n_4 = 0;
+    bool local_24 = false;
+    vec3 _e3 = ms_unit(w_in_4);
+    w_27 = _e3;
+    float _e6 = w_27.z;
+    if ((_e6 < 0.0)) {
+        vec3 _e9 = w_27;
+        w_27 = -(_e9);
+    }
+    float _e13 = w_27.x;
+    float sx_2 = (alpha_43.x * _e13);
+    float _e17 = w_27.y;
+    float sy_1 = (alpha_43.y * _e17);
+    float e_7 = w_27.z;
+    float h_2 = sqrt(((sx_2 * sx_2) + (sy_1 * sy_1)));
+    if ((h_2 > 0.0)) {
+        cp_1 = (sx_2 / h_2);
+        sp_1 = (sy_1 / h_2);
+    }
+    if (!((abs((e_7 + h_2)) <= 3.4028235e38))) {
+        return vec3((e_7 + h_2));
+    }
+    float g = (h_2 * MS_FRAC_1_PI);
+    float total = (e_7 + g);
+    float inv_p = min((total / e_7), 3.4028235e38);
+    float inv_g = min((1.0 / g), 3.4028235e38);
+    uvec2 _e50 = ms_stream_new(u_17);
+    state_9 = _e50;
+    v0_ = u_17.x;
+    v1_ = u_17.y;
+    bool loop_init = true;
+    while(true) {
+        if (!loop_init) {
+            int _e134 = n_4;
+            n_4 = (_e134 + 1);
+        }
+        loop_init = false;
+        int _e62 = n_4;
+        if ((_e62 < 64)) {
+        } else {
+            break;
+        }
+        {
+            int _e65 = n_4;
+            if ((_e65 > 0)) {
+                float _e68 = ms_stream_next(state_9);
+                v0_ = _e68;
+                float _e69 = ms_stream_next(state_9);
+                v1_ = _e69;
+            }
+            float _e70 = v1_;
+            float _e73 = ms_stream_next(state_9);
+            float prod = ((1.0 - _e70) * (1.0 - _e73));
+            float _e77 = v0_;
+            float d_15 = ((_e77 * total) - e_7);
+            if ((d_15 < 0.0)) {
+                float r_13 = (-0.5 * log(prod));
+                float _e85 = v0_;
+                float turn = (_e85 * inv_p);
+                vec2 _e87 = ms_cos_sin_turn(turn);
+                x_9 = (r_13 * _e87.x);
+                y_2 = (r_13 * _e87.y);
+                if (!((abs((turn - 0.5)) >= 0.25))) {
+                    float _e100 = ms_stream_next(state_9);
+                    float _e102 = x_9;
+                    local_24 = ((_e100 * e_7) <= (e_7 + (h_2 * _e102)));
+                } else {
+                    local_24 = true;
+                }
+                bool _e107 = local_24;
+                if (_e107) {
+                    break;
+                }
+            } else {
+                float _e108 = ms_stream_next(state_9);
+                float r_14 = (-0.5 * log((prod * (1.0 - _e108))));
+                float one_plus = (2.0 * (d_15 * inv_g));
+                float _e118 = v0_;
+                float one_minus = ((2.0 * (1.0 - _e118)) * (total * inv_g));
+                x_9 = (r_14 * sqrt(max((one_minus * one_plus), 0.0)));
+                y_2 = (r_14 * (one_plus - 1.0));
+                break;
+            }
+        }
+    }
+    float _e137 = cp_1;
+    float _e138 = x_9;
+    float _e140 = sp_1;
+    float _e141 = y_2;
+    float p_2 = (alpha_43.x * ((_e137 * _e138) - (_e140 * _e141)));
+    float _e146 = sp_1;
+    float _e147 = x_9;
+    float _e149 = cp_1;
+    float _e150 = y_2;
+    float q_3 = (alpha_43.y * ((_e146 * _e147) + (_e149 * _e150)));
+    vec3 _e156 = ms_unit_normal(vec3(p_2, q_3, 1.0));
+    vec3 _e157 = w_27;
+    vec3 _e158 = ms_facing(_e156, _e157);
+    return _e158;
 }
 
 bool ms_effectively_smooth(MsMicrofacet mf_8) {
     return (max(mf_8.alpha.x, mf_8.alpha.y) < 0.001);
 }
 
-bool ms_on_horizon(float z) {
-    return !((abs(z) >= 1e-18));
+bool ms_on_horizon(float z_2) {
+    return !((abs(z_2) >= 1e-18));
 }
 
-bool ms_usable(float v_4) {
-    bool local_14 = false;
-    if ((v_4 >= 1.1754944e-20)) {
-        local_14 = (v_4 <= 3.4028235e38);
+bool ms_usable(float v_6) {
+    bool local_25 = false;
+    if ((v_6 >= 1.1754944e-20)) {
+        local_25 = (v_6 <= 3.4028235e38);
     } else {
-        local_14 = false;
+        local_25 = false;
     }
-    bool _e8 = local_14;
+    bool _e8 = local_25;
     return _e8;
 }
 
-vec3 ms_weighted(vec3 fr_1, float k_2) {
-    return mix((fr_1 * k_2), vec3(0.0), equal(fr_1, vec3(0.0)));
+vec3 ms_weighted(vec3 fr_1, float k_5) {
+    return mix((fr_1 * k_5), vec3(0.0), equal(fr_1, vec3(0.0)));
 }
 
-vec3 ms_conductor_lobe_normal(MsConductor c_2, vec3 wo_15, vec3 wi_15) {
-    bool local_15 = false;
-    bool local_16 = false;
-    bool local_17 = false;
-    bool _e3 = ms_same_hemisphere(wo_15, wi_15);
+vec3 ms_conductor_lobe_normal(MsConductor c_5, vec3 wo_19, vec3 wi_19) {
+    bool local_26 = false;
+    bool local_27 = false;
+    bool local_28 = false;
+    bool _e3 = ms_same_hemisphere(wo_19, wi_19);
     if (!(!(_e3))) {
-        bool _e9 = ms_on_horizon(wo_15.z);
-        local_15 = _e9;
+        bool _e9 = ms_on_horizon(wo_19.z);
+        local_26 = _e9;
     } else {
-        local_15 = true;
+        local_26 = true;
     }
-    bool _e11 = local_15;
+    bool _e11 = local_26;
     if (!(_e11)) {
-        bool _e16 = ms_on_horizon(wi_15.z);
-        local_16 = _e16;
+        bool _e16 = ms_on_horizon(wi_19.z);
+        local_27 = _e16;
     } else {
-        local_16 = true;
+        local_27 = true;
     }
-    bool _e18 = local_16;
+    bool _e18 = local_27;
     if (!(_e18)) {
-        bool _e23 = ms_effectively_smooth(c_2.mf);
-        local_17 = _e23;
+        bool _e23 = ms_effectively_smooth(c_5.mf);
+        local_28 = _e23;
     } else {
-        local_17 = true;
+        local_28 = true;
     }
-    bool _e25 = local_17;
+    bool _e25 = local_28;
     if (_e25) {
         return vec3(0.0);
     }
-    vec3 _e28 = ms_half_vector_reflection(wo_15, wi_15);
+    vec3 _e28 = ms_half_vector_reflection(wo_19, wi_19);
     return _e28;
 }
 
 bool ms_dielectric_smooth(MsDielectric d_1) {
-    bool local_19 = false;
+    bool local_30 = false;
     if (!((d_1.eta == 1.0))) {
         bool _e8 = ms_effectively_smooth(d_1.mf);
-        local_19 = _e8;
+        local_30 = _e8;
     } else {
-        local_19 = true;
+        local_30 = true;
     }
-    bool _e10 = local_19;
+    bool _e10 = local_30;
     return _e10;
 }
 
-vec4 ms_dielectric_half(MsDielectric d_3, vec3 wo_21, vec3 wi_20) {
-    bool local_20 = false;
-    vec3 wm_11 = vec3(0.0);
+vec4 ms_dielectric_half(MsDielectric d_3, vec3 wo_25, vec3 wi_24) {
+    bool local_31 = false;
+    vec3 wm_17 = vec3(0.0);
     float etap_4 = 1.0;
-    bool local_21 = false;
+    bool local_32 = false;
     vec4 none = vec4(0.0);
-    float co = wo_21.z;
-    float ci_1 = wi_20.z;
+    float co = wo_25.z;
+    float ci_1 = wi_24.z;
     bool _e7 = ms_on_horizon(co);
     if (!(_e7)) {
         bool _e11 = ms_on_horizon(ci_1);
-        local_20 = _e11;
+        local_31 = _e11;
     } else {
-        local_20 = true;
+        local_31 = true;
     }
-    bool _e13 = local_20;
+    bool _e13 = local_31;
     if (_e13) {
         return none;
     }
     if (((co * ci_1) > 0.0)) {
-        vec3 _e20 = ms_half_vector_reflection(wo_21, wi_20);
-        wm_11 = _e20;
+        vec3 _e20 = ms_half_vector_reflection(wo_25, wi_24);
+        wm_17 = _e20;
     } else {
-        vec4 _e22 = ms_half_vector_refraction(wo_21, wi_20, d_3.eta);
-        wm_11 = _e22.xyz;
+        vec4 _e22 = ms_half_vector_refraction(wo_25, wi_24, d_3.eta);
+        wm_17 = _e22.xyz;
         etap_4 = _e22.w;
     }
-    vec3 _e25 = wm_11;
+    vec3 _e25 = wm_17;
     bool _e26 = ms_half_vector_ok(_e25);
     if (!(_e26)) {
         return none;
     }
-    vec3 _e28 = wm_11;
-    float _e29 = ms_dot(_e28, wi_20);
+    vec3 _e28 = wm_17;
+    float _e29 = ms_dot(_e28, wi_24);
     if (!(((_e29 * ci_1) < 0.0))) {
-        vec3 _e36 = wm_11;
-        float _e37 = ms_dot(_e36, wo_21);
-        local_21 = ((_e37 * co) < 0.0);
+        vec3 _e36 = wm_17;
+        float _e37 = ms_dot(_e36, wo_25);
+        local_32 = ((_e37 * co) < 0.0);
     } else {
-        local_21 = true;
+        local_32 = true;
     }
-    bool _e42 = local_21;
+    bool _e42 = local_32;
     if (_e42) {
         return none;
     }
-    vec3 _e43 = wm_11;
+    vec3 _e43 = wm_17;
     float _e44 = etap_4;
     return vec4(_e43, _e44);
 }
 
-MsBsdfSample ms_dielectric_sample_smooth(MsDielectric d_7, vec3 wo_25, float uc_1) {
-    float f_2 = 0.0;
-    float _e5 = ms_fresnel_dielectric(wo_25.z, d_7.eta);
+MsBsdfSample ms_dielectric_sample_smooth(MsDielectric d_7, vec3 wo_29, float uc_1) {
+    float f_3 = 0.0;
+    float _e5 = ms_fresnel_dielectric(wo_29.z, d_7.eta);
     if ((uc_1 < _e5)) {
-        vec3 wi_32 = vec3(-(wo_25.x), -(wo_25.y), wo_25.z);
-        return MsBsdfSample(wi_32, _e5, vec3((_e5 / abs(wi_32.z))), 3u, 1.0);
+        vec3 wi_36 = vec3(-(wo_29.x), -(wo_29.y), wo_29.z);
+        return MsBsdfSample(wi_36, _e5, vec3((_e5 / abs(wi_36.z))), 3u, 1.0);
     }
     MsBsdfSample none_1 = MsBsdfSample(vec3(0.0), 0.0, vec3(0.0), 0u, 1.0);
-    vec4 _e33 = ms_refract(wo_25, vec3(0.0, 0.0, 1.0), d_7.eta);
+    vec4 _e33 = ms_refract(wo_29, vec3(0.0, 0.0, 1.0), d_7.eta);
     if ((_e33.w == 0.0)) {
         return none_1;
     }
-    vec3 wi_33 = _e33.xyz;
-    bool _e39 = ms_on_horizon(wi_33.z);
+    vec3 wi_37 = _e33.xyz;
+    bool _e39 = ms_on_horizon(wi_37.z);
     if (_e39) {
         return none_1;
     }
-    float t_8 = (1.0 - _e5);
-    f_2 = (t_8 / abs(wi_33.z));
+    float t_10 = (1.0 - _e5);
+    f_3 = (t_10 / abs(wi_37.z));
     if ((d_7.transport == MS_TRANSPORT_RADIANCE)) {
-        float _e49 = f_2;
-        f_2 = (_e49 / (_e33.w * _e33.w));
+        float _e49 = f_3;
+        f_3 = (_e49 / (_e33.w * _e33.w));
     }
-    float _e54 = f_2;
-    return MsBsdfSample(wi_33, t_8, vec3(_e54), 7u, _e33.w);
+    float _e54 = f_3;
+    return MsBsdfSample(wi_37, t_10, vec3(_e54), 7u, _e33.w);
 }
 
-MsLutTap ms_lut_tap(float x_4, uint n_2) {
-    float t_9 = clamp(((x_4 * float(n_2)) - 0.5), 0.0, float((n_2 - 1u)));
-    uint i_2 = min(uint(floor(t_9)), (n_2 - 2u));
-    return MsLutTap(i_2, (t_9 - float(i_2)));
+MsLutTap ms_lut_tap(float x_10, uint n_5) {
+    float t_11 = clamp(((x_10 * float(n_5)) - 0.5), 0.0, float((n_5 - 1u)));
+    uint i_4 = min(uint(floor(t_11)), (n_5 - 2u));
+    return MsLutTap(i_4, (t_11 - float(i_4)));
 }
 
-MsLutTap ms_lut_tap_edges(float x_5, uint n_3) {
-    float t_10 = clamp((x_5 * float((n_3 - 1u))), 0.0, float((n_3 - 1u)));
-    uint i_3 = min(uint(floor(t_10)), (n_3 - 2u));
-    return MsLutTap(i_3, (t_10 - float(i_3)));
+MsLutTap ms_lut_tap_edges(float x_11, uint n_6) {
+    float t_12 = clamp((x_11 * float((n_6 - 1u))), 0.0, float((n_6 - 1u)));
+    uint i_5 = min(uint(floor(t_12)), (n_6 - 2u));
+    return MsLutTap(i_5, (t_12 - float(i_5)));
 }
 
 uint ms_lut_index(uint ir, uint im, uint n_mu) {
     return ((ir * n_mu) + im);
 }
 
-float ms_lut_lerp(MsLutTap t_1, float v0_, float v1_) {
-    return (((1.0 - t_1.f) * v0_) + (t_1.f * v1_));
+float ms_lut_lerp(MsLutTap t_3, float v0_1, float v1_1) {
+    return (((1.0 - t_3.f) * v0_1) + (t_3.f * v1_1));
 }
 
-float ms_lut_bilerp(MsLutTap r, MsLutTap m_3, float v00_, float v10_, float v01_, float v11_) {
+float ms_lut_bilerp(MsLutTap r, MsLutTap m_4, float v00_, float v10_, float v01_, float v11_) {
     float gr = (1.0 - r.f);
-    float gm = (1.0 - m_3.f);
-    return (((((gr * gm) * v00_) + ((r.f * gm) * v10_)) + ((gr * m_3.f) * v01_)) + ((r.f * m_3.f) * v11_));
+    float gm = (1.0 - m_4.f);
+    return (((((gr * gm) * v00_) + ((r.f * gm) * v10_)) + ((gr * m_4.f) * v01_)) + ((r.f * m_4.f) * v11_));
 }
 
-float ms_lut_roughness_coord(vec2 alpha_25, float alpha_max) {
-    return sqrt((sqrt((alpha_25.x * alpha_25.y)) / alpha_max));
+float ms_lut_roughness_coord(vec2 alpha_45, float alpha_max) {
+    return sqrt((sqrt((alpha_45.x * alpha_45.y)) / alpha_max));
 }
 
 vec3 ms_kulla_conty_f_ms(vec3 f_avg, float e_avg) {
@@ -1077,39 +1344,39 @@ float ms_kulla_conty_p_ms(float e_o_4) {
     return clamp((1.0 - e_o_4), 0.0, 1.0);
 }
 
-float ms_cosine_pdf_same_side(vec3 wo_29, vec3 wi_26) {
-    if (!(((wo_29.z * wi_26.z) > 0.0))) {
+float ms_cosine_pdf_same_side(vec3 wo_33, vec3 wi_30) {
+    if (!(((wo_33.z * wi_30.z) > 0.0))) {
         return 0.0;
     }
-    return (abs(wi_26.z) / MS_PI);
+    return (abs(wi_30.z) / MS_PI);
 }
 
-vec3 ms_cosine_hemisphere(vec2 u_14) {
-    float r_11 = sqrt(u_14.x);
-    vec2 _e4 = ms_cos_sin_turn(u_14.y);
-    return vec3((r_11 * _e4.x), (r_11 * _e4.y), sqrt(max((1.0 - u_14.x), 0.0)));
+vec3 ms_cosine_hemisphere(vec2 u_23) {
+    float r_15 = sqrt(u_23.x);
+    vec2 _e4 = ms_cos_sin_turn(u_23.y);
+    return vec3((r_15 * _e4.x), (r_15 * _e4.y), sqrt(max((1.0 - u_23.x), 0.0)));
 }
 
-MsBsdfSample ms_kulla_conty_sample_f(MsBsdfSample s_3, vec3 wo_32, float e_o_7, float e_i_2, float e_avg_3, vec3 f_ms_1) {
-    bool local_27 = false;
-    bool local_28 = false;
-    if (!(((s_3.flags & MS_SAMPLE_VALID) == 0u))) {
-        local_27 = ((s_3.flags & MS_SAMPLE_SPECULAR) != 0u);
+MsBsdfSample ms_kulla_conty_sample_f(MsBsdfSample s_6, vec3 wo_36, float e_o_7, float e_i_2, float e_avg_3, vec3 f_ms_1) {
+    bool local_38 = false;
+    bool local_39 = false;
+    if (!(((s_6.flags & MS_SAMPLE_VALID) == 0u))) {
+        local_38 = ((s_6.flags & MS_SAMPLE_SPECULAR) != 0u);
     } else {
-        local_27 = true;
+        local_38 = true;
     }
-    bool _e20 = local_27;
+    bool _e20 = local_38;
     if (!(_e20)) {
-        local_28 = !(((wo_32.z * s_3.wi.z) > 0.0));
+        local_39 = !(((wo_36.z * s_6.wi.z) > 0.0));
     } else {
-        local_28 = true;
+        local_39 = true;
     }
-    bool _e32 = local_28;
+    bool _e32 = local_39;
     if (_e32) {
-        return s_3;
+        return s_6;
     }
     float _e36 = ms_kulla_conty_lobe(e_o_7, e_i_2, e_avg_3);
-    return MsBsdfSample(s_3.wi, s_3.pdf, (s_3.f + (_e36 * f_ms_1)), s_3.flags, s_3.eta);
+    return MsBsdfSample(s_6.wi, s_6.pdf, (s_6.f + (_e36 * f_ms_1)), s_6.flags, s_6.eta);
 }
 
 uint ms_lut_index3_(uint ie, uint ir_1, uint im_1, uint n_r, uint n_mu_1) {
@@ -1120,150 +1387,150 @@ float ms_lut_eta_coord(float eta_4) {
     return sqrt((max((eta_4 - 1.0), 0.0) * 0.5));
 }
 
-float ms_lut_trilerp(MsLutTap e, MsLutTap r_1, MsLutTap m_4, vec4 lo_2, vec4 hi_2) {
-    float s_4 = 0.0;
-    uint b_4 = 0u;
+float ms_lut_trilerp(MsLutTap e, MsLutTap r_1, MsLutTap m_5, vec4 lo_2, vec4 hi_2) {
+    float s_7 = 0.0;
+    uint b_6 = 0u;
     vec2 we = vec2((1.0 - e.f), e.f);
     vec2 wr = vec2((1.0 - r_1.f), r_1.f);
-    vec2 wm_13 = vec2((1.0 - m_4.f), m_4.f);
-    bool loop_init = true;
+    vec2 wm_19 = vec2((1.0 - m_5.f), m_5.f);
+    bool loop_init_1 = true;
     while(true) {
-        if (!loop_init) {
-            uint _e59 = b_4;
-            b_4 = (_e59 + 1u);
+        if (!loop_init_1) {
+            uint _e59 = b_6;
+            b_6 = (_e59 + 1u);
         }
-        loop_init = false;
-        uint _e24 = b_4;
+        loop_init_1 = false;
+        uint _e24 = b_6;
         if ((_e24 < 8u)) {
         } else {
             break;
         }
         {
-            uint _e27 = b_4;
-            uint _e31 = b_4;
-            uint _e35 = b_4;
-            float v_6 = ((_e35 >= 4u) ? hi_2[(_e31 & 3u)] : lo_2[(_e27 & 3u)]);
-            float _e39 = s_4;
-            uint _e40 = b_4;
-            uint _e44 = b_4;
-            uint _e51 = b_4;
-            s_4 = (_e39 + (((we[(_e40 & 1u)] * wr[((_e44 >> 1u) & 1u)]) * wm_13[(_e51 >> 2u)]) * v_6));
+            uint _e27 = b_6;
+            uint _e31 = b_6;
+            uint _e35 = b_6;
+            float v_8 = ((_e35 >= 4u) ? hi_2[(_e31 & 3u)] : lo_2[(_e27 & 3u)]);
+            float _e39 = s_7;
+            uint _e40 = b_6;
+            uint _e44 = b_6;
+            uint _e51 = b_6;
+            s_7 = (_e39 + (((we[(_e40 & 1u)] * wr[((_e44 >> 1u) & 1u)]) * wm_19[(_e51 >> 2u)]) * v_8));
         }
     }
-    float _e61 = s_4;
+    float _e61 = s_7;
     return _e61;
 }
 
-float ms_lut_bilerp_eta(MsLutTap e_1, MsLutTap r_2, vec4 v_5) {
-    float s_5 = 0.0;
-    uint b_5 = 0u;
+float ms_lut_bilerp_eta(MsLutTap e_1, MsLutTap r_2, vec4 v_7) {
+    float s_8 = 0.0;
+    uint b_7 = 0u;
     vec2 we_1 = vec2((1.0 - e_1.f), e_1.f);
     vec2 wr_1 = vec2((1.0 - r_2.f), r_2.f);
-    bool loop_init_1 = true;
+    bool loop_init_2 = true;
     while(true) {
-        if (!loop_init_1) {
-            uint _e35 = b_5;
-            b_5 = (_e35 + 1u);
+        if (!loop_init_2) {
+            uint _e35 = b_7;
+            b_7 = (_e35 + 1u);
         }
-        loop_init_1 = false;
-        uint _e17 = b_5;
+        loop_init_2 = false;
+        uint _e17 = b_7;
         if ((_e17 < 4u)) {
         } else {
             break;
         }
         {
-            float _e20 = s_5;
-            uint _e21 = b_5;
-            uint _e25 = b_5;
-            uint _e30 = b_5;
-            s_5 = (_e20 + ((we_1[(_e21 & 1u)] * wr_1[(_e25 >> 1u)]) * v_5[_e30]));
+            float _e20 = s_8;
+            uint _e21 = b_7;
+            uint _e25 = b_7;
+            uint _e30 = b_7;
+            s_8 = (_e20 + ((we_1[(_e21 & 1u)] * wr_1[(_e25 >> 1u)]) * v_7[_e30]));
         }
     }
-    float _e37 = s_5;
+    float _e37 = s_8;
     return _e37;
 }
 
 vec2 ms_dielectric_kulla_conty_k(float eta_5, float f_avg_1, vec2 e_avg_4) {
-    vec2 k_3 = vec2(0.0);
+    vec2 k_6 = vec2(0.0);
     float k_out = (1.0 - f_avg_1);
-    k_3 = vec2(k_out, ((k_out * (1.0 - e_avg_4.x)) / ((eta_5 * eta_5) * (1.0 - e_avg_4.y))));
-    float _e18 = k_3.y;
+    k_6 = vec2(k_out, ((k_out * (1.0 - e_avg_4.x)) / ((eta_5 * eta_5) * (1.0 - e_avg_4.y))));
+    float _e18 = k_6.y;
     if (!((_e18 <= 1.0))) {
-        vec2 _e22 = k_3;
-        float _e24 = k_3.y;
-        float _e28 = k_3.y;
-        k_3 = (_e22 * ((_e28 > 1.0) ? (1.0 / _e24) : 0.0));
+        vec2 _e22 = k_6;
+        float _e24 = k_6.y;
+        float _e28 = k_6.y;
+        k_6 = (_e22 * ((_e28 > 1.0) ? (1.0 / _e24) : 0.0));
     }
-    vec2 _e34 = k_3;
+    vec2 _e34 = k_6;
     return _e34;
 }
 
-float ms_dielectric_kulla_conty_lobe(MsDielectric d_9, vec3 wo_34, vec3 wi_29, float e_o_9, float e_i_3, float e_avg_i, float k_o) {
-    bool local_30 = false;
-    bool local_31 = false;
-    float f_3 = 0.0;
-    bool local_32 = false;
-    if ((abs(wo_34.z) > 0.0)) {
-        local_30 = (abs(wi_29.z) > 0.0);
+float ms_dielectric_kulla_conty_lobe(MsDielectric d_9, vec3 wo_38, vec3 wi_33, float e_o_9, float e_i_3, float e_avg_i, float k_o) {
+    bool local_41 = false;
+    bool local_42 = false;
+    float f_4 = 0.0;
+    bool local_43 = false;
+    if ((abs(wo_38.z) > 0.0)) {
+        local_41 = (abs(wi_33.z) > 0.0);
     } else {
-        local_30 = false;
+        local_41 = false;
     }
-    bool _e18 = local_30;
+    bool _e18 = local_41;
     if (!(_e18)) {
         return 0.0;
     }
     float lost = (1.0 - e_o_9);
-    bool crossed = ((wi_29.z < 0.0) != (wo_34.z < 0.0));
+    bool crossed = ((wi_33.z < 0.0) != (wo_38.z < 0.0));
     float share = (crossed ? k_o : (1.0 - k_o));
     float den_4 = (MS_PI * (1.0 - e_avg_i));
     if ((den_4 > 0.0)) {
-        local_31 = (lost > 0.0);
+        local_42 = (lost > 0.0);
     } else {
-        local_31 = false;
+        local_42 = false;
     }
-    bool _e44 = local_31;
+    bool _e44 = local_42;
     if (!(_e44)) {
         return 0.0;
     }
-    f_3 = (((share * lost) * max((1.0 - e_i_3), 0.0)) / den_4);
+    f_4 = (((share * lost) * max((1.0 - e_i_3), 0.0)) / den_4);
     if (crossed) {
-        local_32 = (d_9.transport == MS_TRANSPORT_RADIANCE);
+        local_43 = (d_9.transport == MS_TRANSPORT_RADIANCE);
     } else {
-        local_32 = false;
+        local_43 = false;
     }
-    bool _e61 = local_32;
+    bool _e61 = local_43;
     if (_e61) {
-        float etap_6 = ((wo_34.z > 0.0) ? d_9.eta : (1.0 / d_9.eta));
-        float _e70 = f_3;
-        f_3 = (_e70 / (etap_6 * etap_6));
+        float etap_6 = ((wo_38.z > 0.0) ? d_9.eta : (1.0 / d_9.eta));
+        float _e70 = f_4;
+        f_4 = (_e70 / (etap_6 * etap_6));
     }
-    float _e73 = f_3;
+    float _e73 = f_4;
     return _e73;
 }
 
-uint ms_k_index(uvec3 id_10, uvec3 groups_10) {
-    uint i_4 = (id_10.x + ((id_10.y * groups_10.x) * 64u));
-    uint n_6 = (uint(_group_0_binding_0_cs.length()) / MS_K_IN);
-    if ((i_4 >= n_6)) {
-        return n_6;
+uint ms_k_index(uvec3 id_13, uvec3 groups_13) {
+    uint i_6 = (id_13.x + ((id_13.y * groups_13.x) * 64u));
+    uint n_9 = (uint(_group_0_binding_0_cs.length()) / MS_K_IN);
+    if ((i_6 >= n_9)) {
+        return n_9;
     }
-    return i_4;
+    return i_6;
 }
 
-MsConductor ms_k_conductor(uint i) {
-    vec4 r0_ = _group_0_binding_0_cs[(i * MS_K_IN)];
-    vec4 r2_ = _group_0_binding_0_cs[((i * MS_K_IN) + 2u)];
-    vec4 r3_ = _group_0_binding_0_cs[((i * MS_K_IN) + 3u)];
-    vec4 r4_ = _group_0_binding_0_cs[((i * MS_K_IN) + 4u)];
+MsConductor ms_k_conductor(uint i_2) {
+    vec4 r0_ = _group_0_binding_0_cs[(i_2 * MS_K_IN)];
+    vec4 r2_ = _group_0_binding_0_cs[((i_2 * MS_K_IN) + 2u)];
+    vec4 r3_ = _group_0_binding_0_cs[((i_2 * MS_K_IN) + 3u)];
+    vec4 r4_ = _group_0_binding_0_cs[((i_2 * MS_K_IN) + 4u)];
     MsMicrofacet mf_11 = MsMicrofacet(uint(r2_.w), r0_.xy);
     return MsConductor(mf_11, MsFresnel(uint(r3_.w), r3_.xyz, r4_.xyz), uint(r4_.w));
 }
 
-MsDielectric ms_k_dielectric(uint i_1) {
-    vec4 r0_1 = _group_0_binding_0_cs[(i_1 * MS_K_IN)];
-    vec4 r2_1 = _group_0_binding_0_cs[((i_1 * MS_K_IN) + 2u)];
-    vec4 r3_1 = _group_0_binding_0_cs[((i_1 * MS_K_IN) + 3u)];
-    vec4 r4_1 = _group_0_binding_0_cs[((i_1 * MS_K_IN) + 4u)];
+MsDielectric ms_k_dielectric(uint i_3) {
+    vec4 r0_1 = _group_0_binding_0_cs[(i_3 * MS_K_IN)];
+    vec4 r2_1 = _group_0_binding_0_cs[((i_3 * MS_K_IN) + 2u)];
+    vec4 r3_1 = _group_0_binding_0_cs[((i_3 * MS_K_IN) + 3u)];
+    vec4 r4_1 = _group_0_binding_0_cs[((i_3 * MS_K_IN) + 4u)];
     return MsDielectric(MsMicrofacet(uint(r2_1.w), r0_1.xy), r3_1.x, uint(r4_1.w), uint(r4_1.x));
 }
 
@@ -1275,20 +1542,20 @@ void main() {
         return;
     }
     vec4 _e12 = _group_0_binding_0_cs[(_e2 * MS_K_IN)];
-    vec2 a_14 = _e12.xy;
+    vec2 a_20 = _e12.xy;
     vec4 _e20 = _group_0_binding_0_cs[((_e2 * MS_K_IN) + 1u)];
-    vec3 wo_37 = _e20.xyz;
+    vec3 wo_41 = _e20.xyz;
     vec4 _e28 = _group_0_binding_0_cs[((_e2 * MS_K_IN) + 2u)];
-    vec3 wm_14 = _e28.xyz;
-    float _e34 = ms_ggx_d(wm_14, a_14);
-    float _e35 = ms_ggx_lambda(wo_37, a_14);
-    float _e36 = ms_ggx_g1_(wo_37, a_14);
-    float _e37 = ms_ggx_g2_(wo_37, wm_14, a_14);
+    vec3 wm_20 = _e28.xyz;
+    float _e34 = ms_ggx_d(wm_20, a_20);
+    float _e35 = ms_ggx_lambda(wo_41, a_20);
+    float _e36 = ms_ggx_g1_(wo_41, a_20);
+    float _e37 = ms_ggx_g2_(wo_41, wm_20, a_20);
     _group_0_binding_1_cs[(_e2 * MS_K_OUT)] = vec4(_e34, _e35, _e36, _e37);
-    float _e45 = ms_ggx_g2_separable(wo_37, wm_14, a_14);
-    float _e46 = ms_ggx_pdf(wo_37, wm_14, a_14);
-    float _e47 = ms_ggx_pdf_dcos(wm_14, a_14);
-    float _e48 = ms_ggx_pdf_bounded(wo_37, wm_14, a_14);
+    float _e45 = ms_ggx_g2_separable(wo_41, wm_20, a_20);
+    float _e46 = ms_ggx_pdf(wo_41, wm_20, a_20);
+    float _e47 = ms_ggx_pdf_dcos(wm_20, a_20);
+    float _e48 = ms_ggx_pdf_bounded(wo_41, wm_20, a_20);
     _group_0_binding_1_cs[((_e2 * MS_K_OUT) + 1u)] = vec4(_e45, _e46, _e47, _e48);
     return;
 }
