@@ -1596,6 +1596,7 @@ fn walks(i: &Inputs) {
             let n: u64 = $n;
             let mut one = Vec::new();
             let mut two = Vec::new();
+            let mut pair = Vec::new();
             for r in 0..5 {
                 let t = Instant::now();
                 black_box(albedo(&s, &MirrorFacets(One::<1>), wo, n, r));
@@ -1607,12 +1608,22 @@ fn walks(i: &Inputs) {
                 );
                 black_box((a, b));
                 two.push(2.0 * n as f64 / t.elapsed().as_secs_f64() / 1e6);
+                // The machine's own pair scaling: the same two calls on two OS threads, no
+                // rayon (its ceiling for rayon).
+                let t = Instant::now();
+                std::thread::scope(|sc| {
+                    let h = sc.spawn(|| albedo(&s, &MirrorFacets(One::<1>), wo, n, 2 * r + 200));
+                    black_box(albedo(&s, &MirrorFacets(One::<1>), wo, n, 2 * r + 201));
+                    black_box(h.join().ok());
+                });
+                pair.push(2.0 * n as f64 / t.elapsed().as_secs_f64() / 1e6);
             }
-            let (one, two) = (median(one), median(two));
+            let (one, two, pair) = (median(one), median(two), median(pair));
             println!(
-                "{:24} {one:7.3} M/s one core | {two:7.3} M/s rayon ({:4.2}×)",
+                "{:24} {one:7.3} M/s one core | {two:7.3} M/s rayon ({:4.2}×) | {pair:7.3} M/s two threads ({:4.2}×)",
                 $name,
-                two / one
+                two / one,
+                pair / one
             );
         }};
     }
