@@ -25,7 +25,7 @@ use std::time::Instant;
 const ITER: u64 = 8;
 const ALPHA: [f32; 2] = [0.3, 0.15];
 
-const KERNELS: [(&str, &str); 8] = [
+const KERNELS: [(&str, &str); 14] = [
     ("bench_inputs", "inputs (hash, directions; no library call)"),
     (
         "bench_ggx_sample",
@@ -46,6 +46,24 @@ const KERNELS: [(&str, &str); 8] = [
         "GGX dielectric eval + pdf (η = 1.5)",
     ),
     ("bench_dielectric_sample", "GGX dielectric sample (η = 1.5)"),
+    (
+        "bench_beckmann_sample",
+        "Beckmann visible normal + pdf (MsMicrofacet)",
+    ),
+    ("bench_beckmann_d_g2", "Beckmann D · G2 (MsMicrofacet)"),
+    (
+        "bench_double_ggx_sample",
+        "Double GGX visible normal + pdf (rejection)",
+    ),
+    ("bench_double_ggx_d_g2", "Double GGX D · G2 (MsMicrofacet)"),
+    (
+        "bench_exponential_sample",
+        "Exponential visible normal + pdf (rejection)",
+    ),
+    (
+        "bench_exponential_d_g2",
+        "Exponential D · G2 (MsMicrofacet)",
+    ),
 ];
 
 fn main() {

@@ -198,3 +198,105 @@ fn bench_dielectric_sample(@builtin(global_invocation_id) id: vec3<u32>,
     }
     ms_out[i] = acc;
 }
+
+// MS_NDF_BECKMANN through MsMicrofacet: a visible normal + pdf, and D · G2.
+@compute @workgroup_size(64)
+fn bench_beckmann_sample(@builtin(global_invocation_id) id: vec3<u32>,
+    @builtin(num_workgroups) groups: vec3<u32>) {
+    let i = index(id, groups);
+    if i >= bitcast<u32>(ms_in[0].z) {
+        return;
+    }
+    let mf = MsMicrofacet(MS_NDF_BECKMANN, ms_in[0].xy);
+    var acc = 0.0;
+    for (var j = 0u; j < ITER; j++) {
+        let x = input(i, j);
+        let s = ms_sample(mf, x.wo, x.u);
+        acc += s.wm.x + s.pdf;
+    }
+    ms_out[i] = acc;
+}
+
+@compute @workgroup_size(64)
+fn bench_beckmann_d_g2(@builtin(global_invocation_id) id: vec3<u32>,
+    @builtin(num_workgroups) groups: vec3<u32>) {
+    let i = index(id, groups);
+    if i >= bitcast<u32>(ms_in[0].z) {
+        return;
+    }
+    let mf = MsMicrofacet(MS_NDF_BECKMANN, ms_in[0].xy);
+    var acc = 0.0;
+    for (var j = 0u; j < ITER; j++) {
+        let x = input(i, j);
+        acc += ms_d(mf, x.wi) * ms_g2(mf, x.wo, x.wi);
+    }
+    ms_out[i] = acc;
+}
+
+// MS_NDF_DOUBLE_GGX through MsMicrofacet: a visible normal + pdf, and D · G2.
+@compute @workgroup_size(64)
+fn bench_double_ggx_sample(@builtin(global_invocation_id) id: vec3<u32>,
+    @builtin(num_workgroups) groups: vec3<u32>) {
+    let i = index(id, groups);
+    if i >= bitcast<u32>(ms_in[0].z) {
+        return;
+    }
+    let mf = MsMicrofacet(MS_NDF_DOUBLE_GGX, ms_in[0].xy);
+    var acc = 0.0;
+    for (var j = 0u; j < ITER; j++) {
+        let x = input(i, j);
+        let s = ms_sample(mf, x.wo, x.u);
+        acc += s.wm.x + s.pdf;
+    }
+    ms_out[i] = acc;
+}
+
+@compute @workgroup_size(64)
+fn bench_double_ggx_d_g2(@builtin(global_invocation_id) id: vec3<u32>,
+    @builtin(num_workgroups) groups: vec3<u32>) {
+    let i = index(id, groups);
+    if i >= bitcast<u32>(ms_in[0].z) {
+        return;
+    }
+    let mf = MsMicrofacet(MS_NDF_DOUBLE_GGX, ms_in[0].xy);
+    var acc = 0.0;
+    for (var j = 0u; j < ITER; j++) {
+        let x = input(i, j);
+        acc += ms_d(mf, x.wi) * ms_g2(mf, x.wo, x.wi);
+    }
+    ms_out[i] = acc;
+}
+
+// MS_NDF_EXPONENTIAL through MsMicrofacet: a visible normal + pdf, and D · G2.
+@compute @workgroup_size(64)
+fn bench_exponential_sample(@builtin(global_invocation_id) id: vec3<u32>,
+    @builtin(num_workgroups) groups: vec3<u32>) {
+    let i = index(id, groups);
+    if i >= bitcast<u32>(ms_in[0].z) {
+        return;
+    }
+    let mf = MsMicrofacet(MS_NDF_EXPONENTIAL, ms_in[0].xy);
+    var acc = 0.0;
+    for (var j = 0u; j < ITER; j++) {
+        let x = input(i, j);
+        let s = ms_sample(mf, x.wo, x.u);
+        acc += s.wm.x + s.pdf;
+    }
+    ms_out[i] = acc;
+}
+
+@compute @workgroup_size(64)
+fn bench_exponential_d_g2(@builtin(global_invocation_id) id: vec3<u32>,
+    @builtin(num_workgroups) groups: vec3<u32>) {
+    let i = index(id, groups);
+    if i >= bitcast<u32>(ms_in[0].z) {
+        return;
+    }
+    let mf = MsMicrofacet(MS_NDF_EXPONENTIAL, ms_in[0].xy);
+    var acc = 0.0;
+    for (var j = 0u; j < ITER; j++) {
+        let x = input(i, j);
+        acc += ms_d(mf, x.wi) * ms_g2(mf, x.wo, x.wi);
+    }
+    ms_out[i] = acc;
+}

@@ -6,20 +6,7 @@
 //!
 //! Bounds, per element, from the f32 bounds of the Rust docs and each quantity's
 //! conditioning (`TOL` = 2e-6: twice the f32 fast paths' documented 1e-6):
-//! * Double GGX Λ, G1, G2: `TOL`. Λ is the Rust f32 path operation for operation (x in f32,
-//!   the same f32 cubics), and Λ's condition number in x is at most about 1 (Λ ~ x ln x near
-//!   the normal, ~√x at grazing), so a device's contraction of x's few roundings costs a few
-//!   ε; the ends (f32 expansions here, the rounded f64 ones in Rust) agree to their
-//!   truncation, below 1e-9.
-//! * Double GGX D: the Rust path is f64; here y = q/z² carries ~5 roundings and D's
-//!   condition number in y is at most ~2 (G(1/y) ≈ 1 − 4y near the normal, ~ ln y/y² at
-//!   grazing), the kernel table rounded to f32 moves by ≤ 5.8e-8 (the generator measures it)
-//!   and its evaluation and the normalisation add a few ε: `TOL` + 32ε.
-//! * Exponential Λ: the Rust f32 path forms q = z² in f64, here in f32 (~6 roundings), and
-//!   Λ's condition number in z is about 1 + z (Λ ~ 2/(πz) at grazing, ~ e^{−z}/√z near the
-//!   normal); past z = 64 Vulkan allows e^{−z} 3 + 2z ulp: `TOL` + 16ε(1 + z).
-//! * Exponential D: the exponent e = 2√q/z carries a few roundings (4ε e) and Vulkan allows
-//!   its exponential (3 + 2e) ulp: `TOL` + (8 + 24e)ε.
+//! * D and Λ: `grid::d_bound` and `grid::lambda_bound` (each NDF's derivation is there).
 //! * G1 = 1/(1 + Λ), G2: Λ's bound times Λ/(1 + Λ) (≤ 1), plus `TOL`; the visible pdf: G1's
 //!   and D's plus 8ε times the dot product's cancellation |w||m|/|w·m|.
 //! * D·cos normals: 16ε per component (`NORMAL_TOL`, as GGX's): the stream's uniforms are
@@ -37,7 +24,10 @@ use microsurface_gpu::{kernels_source, Error, Gpu, Program, KERNEL_IN, KERNEL_OU
 use std::sync::OnceLock;
 
 mod grid;
-use grid::{directions, normals, uniforms, vec_diff, Worst, ALPHAS};
+use grid::{
+    d_bound, directions, lambda_bound, normals, uniforms, vec_diff, Worst, ALPHAS, EPS,
+    NDF_DOUBLE_GGX, NDF_EXPONENTIAL, TOL,
+};
 
 /// The device and the compiled kernels, once per test binary; `None` (the tests skip) only
 /// where no Vulkan adapter exists and `MICROSURFACE_GPU_REQUIRED` is not 1.
@@ -59,10 +49,6 @@ fn gpu() -> Option<&'static (Gpu, Program)> {
     })
     .as_ref()
 }
-
-/// The NDF tags (MS_NDF_DOUBLE_GGX, MS_NDF_EXPONENTIAL of microfacet.wgsl).
-const NDF_DOUBLE_GGX: u32 = 2;
-const NDF_EXPONENTIAL: u32 = 3;
 
 /// One kernel element: (αx, αy, u), wo, (wm, ndf).
 #[derive(Clone, Copy, Debug)]
@@ -94,10 +80,6 @@ fn run(entry: &str, els: &[El]) -> Option<Vec<[[f32; 4]; KERNEL_OUT]>> {
     Some(out.chunks(KERNEL_OUT).map(|c| [c[0], c[1]]).collect())
 }
 
-/// f32's unit roundoff.
-const EPS: f64 = 5.960_464_5e-8;
-/// Twice the documented f32 fast-path bound (1e-6): both sides are held to it.
-const TOL: f64 = 2e-6;
 /// A sampled normal's components: 16ε (see the module docs).
 const NORMAL_TOL: f64 = 16.0 * EPS;
 
@@ -129,39 +111,6 @@ impl Worst {
             assert!(*e <= 1.0, "{}: {e:e} of its bound at {w}", self.names[k]);
         }
     }
-}
-
-/// z = 2|w.z|/√(αx²w.x² + αy²w.y²) (f64; +∞ at the normal).
-fn exponential_z(w: [f32; 3], alpha: [f32; 2]) -> f64 {
-    let (x, y) = (alpha[0] as f64 * w[0] as f64, alpha[1] as f64 * w[1] as f64);
-    2.0 * (w[2] as f64).abs() / (x * x + y * y).sqrt()
-}
-
-/// Λ's bound at w (see the module docs).
-fn lambda_bound(ndf: u32, w: [f32; 3], alpha: [f32; 2]) -> f64 {
-    if ndf == NDF_DOUBLE_GGX {
-        return TOL;
-    }
-    // (Past z = 200 Λ is below 1e-86: 0 in f32 on both sides.)
-    TOL + 16.0 * EPS * (1.0 + exponential_z(w, alpha).min(200.0))
-}
-
-/// D's bound at wm (see the module docs).
-fn d_bound(ndf: u32, wm: [f32; 3], alpha: [f32; 2]) -> f64 {
-    if ndf == NDF_DOUBLE_GGX {
-        return TOL + 32.0 * EPS;
-    }
-    let (x, y, z) = (
-        wm[0] as f64 / alpha[0] as f64,
-        wm[1] as f64 / alpha[1] as f64,
-        wm[2] as f64,
-    );
-    let e = if z > 0.0 {
-        2.0 * (x * x + y * y).sqrt() / z
-    } else {
-        0.0
-    };
-    TOL + (8.0 + 24.0 * e) * EPS
 }
 
 /// The Rust f32 material of an element.

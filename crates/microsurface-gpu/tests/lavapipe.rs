@@ -36,7 +36,10 @@ use microsurface_gpu::{kernels_source, Error, Gpu, Program, KERNEL_IN, KERNEL_OU
 use std::sync::OnceLock;
 
 mod grid;
-use grid::{directions, normals, uniforms, vec_diff, Worst, ALPHAS};
+use grid::{
+    d_bound, directions, lambda_bound, normals, uniforms, vec_diff, Worst, ALPHAS, EPS,
+    NDF_BECKMANN, NDF_DOUBLE_GGX, NDF_EXPONENTIAL, NDF_GGX, TOL,
+};
 
 /// The device and the compiled kernels, once per test binary; `None` (the tests skip) only
 /// where no Vulkan adapter exists and `MICROSURFACE_GPU_REQUIRED` is not 1.
@@ -77,6 +80,8 @@ struct El {
     wi: [f32; 3],
     fr: (u32, [f32; 3], [f32; 3]),
     masking: u32,
+    /// The NDF tag (MsMicrofacet's MS_NDF_*; GGX but in `bsdfs_of_every_ndf_match_rust_f32`).
+    ndf: u32,
 }
 
 impl El {
@@ -89,6 +94,7 @@ impl El {
             wi,
             fr: (0, [1.0; 3], [0.0; 3]),
             masking: 0,
+            ndf: NDF_GGX,
         }
     }
     fn records(&self) -> [[f32; 4]; KERNEL_IN] {
@@ -96,7 +102,7 @@ impl El {
         [
             [self.alpha[0], self.alpha[1], self.u[0], self.u[1]],
             [self.wo[0], self.wo[1], self.wo[2], self.uc],
-            [self.wi[0], self.wi[1], self.wi[2], 0.0],
+            [self.wi[0], self.wi[1], self.wi[2], self.ndf as f32],
             [a[0], a[1], a[2], k as f32],
             [b[0], b[1], b[2], self.masking as f32],
         ]
@@ -143,11 +149,6 @@ impl Worst {
         }
     }
 }
-
-/// f32's unit roundoff.
-const EPS: f64 = 5.960_464_5e-8;
-/// The bound of the NDF quantities: twice the documented f32 fast-path bound (1e-6).
-const TOL: f64 = 2e-6;
 
 #[test]
 fn ggx_d_lambda_g1_g2_pdfs_match_rust_f32() {
@@ -874,36 +875,6 @@ fn dielectric_samples_match_rust_f32() {
 // (Λ, the samplers), so the bounds are those of f32 arithmetic on the formulas, through
 // each quantity's condition number, with Vulkan's allowance for exp (3 + 2|x| ulp).
 
-/// D's relative bound at wm: `TOL` plus the exponent e = ((x/αx)² + (y/αy)²)/z², which
-/// carries a few roundings (4ε e) and whose exponential Vulkan may take to (3 + 2e) ulp:
-/// (6 + 24e)ε, with a margin for the normalisation's products.
-fn beckmann_d_bound(wm: [f32; 3], alpha: [f32; 2]) -> f64 {
-    let (x, y, z) = (
-        wm[0] as f64 / alpha[0] as f64,
-        wm[1] as f64 / alpha[1] as f64,
-        wm[2] as f64,
-    );
-    let e = if z > 0.0 {
-        (x * x + y * y) / (z * z)
-    } else {
-        0.0
-    };
-    TOL + (8.0 + 24.0 * e) * EPS
-}
-
-/// cot θ̃ of w at the roughness (f64; +∞ at the normal).
-fn beckmann_cot(w: [f32; 3], alpha: [f32; 2]) -> f64 {
-    let (x, y) = (alpha[0] as f64 * w[0] as f64, alpha[1] as f64 * w[1] as f64);
-    (w[2] as f64).abs() / (x * x + y * y).sqrt()
-}
-
-/// Λ's relative bound at w: `TOL` plus a's rounding (2ε) times Λ's condition number in a
-/// (2a² + 1 + …) and e^{−a²}'s allowance (3 + 2a² ulp): 16ε(1 + 2a²).
-fn beckmann_lambda_bound(w: [f32; 3], alpha: [f32; 2]) -> f64 {
-    let a = beckmann_cot(w, alpha).min(1e3);
-    TOL + 16.0 * EPS * (1.0 + 2.0 * a * a)
-}
-
 /// |g − r|/|r| as `rel`, with differences below 1e-36 taken as 0: Λ past a ≈ 9 is
 /// subnormal, and a pdf within 2⁶ of the least normal f32 has a subnormal factor on the way
 /// (D, then times G1 c/z), which a device may flush to zero.
@@ -958,13 +929,13 @@ fn beckmann_d_lambda_g1_g2_pdfs_match_rust_f32() {
         // G1 = 1/(1 + Λ) and G2 take Λ's relative error times Λ/(1 + Λ) (≤ 1).
         let (lo, li) = (m.lambda(wo) as f64, m.lambda(wm) as f64);
         let (bo, bi) = (
-            beckmann_lambda_bound(wo, e.alpha),
-            beckmann_lambda_bound(wm, e.alpha),
+            lambda_bound(NDF_BECKMANN, wo, e.alpha),
+            lambda_bound(NDF_BECKMANN, wm, e.alpha),
         );
         let frac = |l: f64| if l.is_finite() { l / (1.0 + l) } else { 1.0 };
         let g1 = TOL + bo * frac(lo);
         let g2 = TOL + bo.max(bi) * frac(lo + li);
-        let d = beckmann_d_bound(wm, e.alpha);
+        let d = d_bound(NDF_BECKMANN, wm, e.alpha);
         let pdf = g1 + d + 8.0 * EPS * dot_cancellation(wo, wm);
         let tol = [d, bo, g1, g2, 2.0 * g1 + TOL, pdf, d, pdf];
         for k in 0..names.len() {
@@ -1065,7 +1036,7 @@ fn beckmann_samplers_give_the_rust_f32_normals() {
         // least f64 past 26.6), where F = −u₀Z = 0 to rounding: each iteration stops at a
         // point of that interval (the Rust f32 sampler at X ≈ −11 for a = 41), a normal of
         // density below 1e-37 either way. Not compared.
-        if !(e.u[0] == 0.0 && beckmann_cot(e.wo, e.alpha) > 9.0) {
+        if !(e.u[0] == 0.0 && grid::cot(e.wo, e.alpha) > 9.0) {
             w.add(
                 0,
                 vec_diff(gm, s.wm) / beckmann_normal_bound(e),
@@ -1075,8 +1046,8 @@ fn beckmann_samplers_give_the_rust_f32_normals() {
         // The pdf at the GPU's own normal: the pdf arithmetic apart from the normal's.
         let p = m.pdf(e.wo, gm);
         let tol = TOL
-            + beckmann_d_bound(gm, e.alpha)
-            + beckmann_lambda_bound(e.wo, e.alpha)
+            + d_bound(NDF_BECKMANN, gm, e.alpha)
+            + lambda_bound(NDF_BECKMANN, e.wo, e.alpha)
             + 8.0 * EPS * dot_cancellation(e.wo, gm);
         w.add(1, rel_normal(g[3], p) / tol, what(g, s.wm, p));
         // D·cos: r = √(−ln(1 − u₀)) from a series or log (a few ε), the azimuth as GGX's.
@@ -1087,9 +1058,196 @@ fn beckmann_samplers_give_the_rust_f32_normals() {
         let p = m.pdf_dcos(gm);
         w.add(
             3,
-            rel_normal(g[3], p) / beckmann_d_bound(gm, e.alpha),
+            rel_normal(g[3], p) / d_bound(NDF_BECKMANN, gm, e.alpha),
             what(g, s.wm, p),
         );
     }
     w.check(&[1.0; 4]);
+}
+
+// The BSDFs over the other NDFs of the run-time door (MsMicrofacet): the WGSL conductor and
+// dielectric are NDF-agnostic (they call ms_d, ms_g2, ms_pdf, …), so this checks the door's
+// dispatch and each NDF inside the BSDF formulas, against `RoughConductor` and
+// `RoughDielectric` over `AnyMicrofacet<f32>`.
+
+/// How much D of the NDF moves when wm moves by δ (f64, relative): the central differences
+/// of the Rust f64 D along two tangents of wm give its gradient, |∇D| δ plus the second
+/// difference's term bounds the move in any direction (to second order).
+fn d_move(ndf: u32, wm: [f64; 3], alpha: [f32; 2], delta: f64) -> f64 {
+    use microsurface::{AnyMicrofacet, NdfKind};
+    let kind = [
+        NdfKind::Ggx,
+        NdfKind::Beckmann,
+        NdfKind::DoubleGgx,
+        NdfKind::Exponential,
+    ][ndf as usize];
+    let m = AnyMicrofacet::<f64>::new(kind, alpha[0] as f64, alpha[1] as f64, None).unwrap();
+    let d0 = m.d(wm);
+    if !(d0 > 0.0 && delta > 0.0) {
+        return 0.0;
+    }
+    // Two unit tangents of wm.
+    let t1 = if wm[2].abs() < 0.9 {
+        let l = (wm[0] * wm[0] + wm[1] * wm[1]).sqrt();
+        [-wm[1] / l, wm[0] / l, 0.0]
+    } else {
+        let l = (wm[1] * wm[1] + wm[2] * wm[2]).sqrt();
+        [0.0, wm[2] / l, -wm[1] / l]
+    };
+    let t2 = [
+        wm[1] * t1[2] - wm[2] * t1[1],
+        wm[2] * t1[0] - wm[0] * t1[2],
+        wm[0] * t1[1] - wm[1] * t1[0],
+    ];
+    let at = |t: [f64; 3], s: f64| {
+        let v = [wm[0] + s * t[0], wm[1] + s * t[1], wm[2] + s * t[2]];
+        let n = (v[0] * v[0] + v[1] * v[1] + v[2] * v[2]).sqrt();
+        m.d([v[0] / n, v[1] / n, v[2] / n])
+    };
+    let (mut grad2, mut curv) = (0.0f64, 0.0f64);
+    for t in [t1, t2] {
+        let (p, q) = (at(t, delta), at(t, -delta));
+        grad2 += ((p - q) / 2.0).powi(2);
+        curv = curv.max(((p + q) / 2.0 - d0).abs());
+    }
+    (grad2.sqrt() + curv) / d0
+}
+
+/// A BSDF value's bound (f or pdf) over the NDF: `TOL` (the Fresnel factor's and the
+/// divisions' roundings), D's bound at wm and what δ's move of wm costs it (`d_move`), Λ's
+/// bounds at wo and wi (G2 = 1/(1 + Λo + Λi) or the G1 product take at most their sum), and
+/// the Fresnel factor's move as in `value_tol`.
+#[allow(clippy::too_many_arguments)]
+fn ndf_value_tol(
+    e: &El,
+    wi: [f32; 3],
+    wm: [f64; 3],
+    delta: f64,
+    c: f64,
+    fr: &dyn Fn(f64) -> f64,
+    weight: &dyn Fn(f64) -> f64,
+    formula: f64,
+) -> f64 {
+    let wm32 = wm.map(|x| x as f32);
+    let f0 = fr(c);
+    let df = (fr(c + delta) - f0).abs().max((fr(c - delta) - f0).abs());
+    let w = weight(f0);
+    let f_term = if w > 0.0 {
+        (df + 16.0 * EPS * formula * f0) / w
+    } else {
+        0.0
+    };
+    TOL + d_bound(e.ndf, wm32, e.alpha)
+        + d_move(e.ndf, wm, e.alpha, delta)
+        + lambda_bound(e.ndf, e.wo, e.alpha)
+        + lambda_bound(e.ndf, wi, e.alpha)
+        + f_term
+}
+
+/// The conductor's and dielectric's eval and pdf with Beckmann, Double GGX and the
+/// Exponential NDF through `MsMicrofacet`, against the Rust types over `AnyMicrofacet<f32>`:
+/// every roughness, F = 1 and Schlick (conductor; both maskings), η = 1.5 and 1/1.5 from both
+/// sides (dielectric), directions × directions.
+#[test]
+fn bsdfs_of_every_ndf_match_rust_f32() {
+    use microsurface::{AnyMicrofacet, NdfKind};
+    let mut conductors = Vec::new();
+    let mut dielectrics = Vec::new();
+    for ndf in [NDF_BECKMANN, NDF_DOUBLE_GGX, NDF_EXPONENTIAL] {
+        for (i, &a) in ALPHAS.iter().enumerate() {
+            for &wo in &both_sides() {
+                for &wi in &both_sides() {
+                    for (j, fr) in [(0, [1.0; 3], [0.0; 3]), (3, [0.04, 0.5, 0.95], [0.0; 3])]
+                        .into_iter()
+                        .enumerate()
+                    {
+                        let mut e = El::new(a, wo, wi, [0.5; 2]);
+                        e.ndf = ndf;
+                        e.fr = fr;
+                        e.masking = ((i + j) % 2) as u32;
+                        if wo[2] > 0.0 && wi[2] > 0.0 {
+                            conductors.push(e);
+                        }
+                        let mut d = e;
+                        let eta = [1.5f32, 1.0 / 1.5][j];
+                        d.fr = (1, [eta, 0.0, 0.0], [0.0; 3]);
+                        dielectrics.push(d);
+                    }
+                }
+            }
+        }
+    }
+    let (Some(co), Some(di)) = (
+        run("ms_k_conductor_eval", &conductors),
+        run("ms_k_dielectric_eval", &dielectrics),
+    ) else {
+        return;
+    };
+    let kind = |e: &El| {
+        [
+            NdfKind::Ggx,
+            NdfKind::Beckmann,
+            NdfKind::DoubleGgx,
+            NdfKind::Exponential,
+        ][e.ndf as usize]
+    };
+    let names = [
+        "conductor eval / bound",
+        "conductor pdf / bound",
+        "dielectric eval / bound",
+        "dielectric pdf / bound",
+    ];
+    let mut w = [Worst::new(&names), Worst::new(&names), Worst::new(&names)];
+    for (e, o) in conductors.iter().zip(&co) {
+        let m = AnyMicrofacet::<f32>::new(kind(e), e.alpha[0], e.alpha[1], None).unwrap();
+        let masking = [Masking::Correlated, Masking::Separable][e.masking as usize];
+        let (f, p) = if e.fr.0 == 0 {
+            let c = RoughConductor::new(m, One::<3>).with_masking(masking);
+            (c.eval(e.wo, e.wi), c.pdf(e.wo, e.wi))
+        } else {
+            let c = RoughConductor::new(m, Schlick { f0: e.fr.1 }).with_masking(masking);
+            (c.eval(e.wo, e.wi), c.pdf(e.wo, e.wi))
+        };
+        let (wm, _, delta) = half_vector_delta(e.wo, e.wi, 1.0, None);
+        let c = (0..3).map(|k| e.wo[k] as f64 * wm[k]).sum::<f64>().abs();
+        let k = (e.ndf - NDF_BECKMANN) as usize;
+        for (ch, &r) in f.iter().enumerate() {
+            let tol = ndf_value_tol(e, e.wi, wm, delta, c, &fresnel_fn(e, ch), &|f| f, 1.0);
+            w[k].add(0, rel_normal(o[0][ch], r) / tol, || {
+                format!("{e:?}: gpu {:?} rust {f:?} (bound {tol:e})", o[0])
+            });
+        }
+        let tol = ndf_value_tol(e, e.wi, wm, delta, 1.0, &|_| 1.0, &|f| f, 0.0);
+        w[k].add(1, rel_normal(o[0][3], p) / tol, || {
+            format!("{e:?}: gpu {} rust {p} (bound {tol:e})", o[0][3])
+        });
+    }
+    for (e, o) in dielectrics.iter().zip(&di) {
+        let m = AnyMicrofacet::<f32>::new(kind(e), e.alpha[0], e.alpha[1], None).unwrap();
+        let masking = [Masking::Correlated, Masking::Separable][e.masking as usize];
+        let eta = e.fr.1[0];
+        let d = RoughDielectric::new(m, eta).with_masking(masking);
+        let (f, p) = (d.eval(e.wo, e.wi)[0], d.pdf(e.wo, e.wi));
+        let (wm, _, delta) = half_vector_delta(e.wo, e.wi, eta, None);
+        let c = (0..3).map(|k| e.wo[k] as f64 * wm[k]).sum::<f64>();
+        let r = move |c: f64| fresnel::dielectric(c, eta as f64);
+        let formula = fresnel_cancellation(0, c, eta as f64, 0.0);
+        let tol = if e.wo[2] * e.wi[2] > 0.0 {
+            ndf_value_tol(e, e.wi, wm, delta, c, &r, &|f| f, formula)
+        } else {
+            ndf_value_tol(e, e.wi, wm, delta, c, &r, &|f| 1.0 - f, formula)
+        };
+        let k = (e.ndf - NDF_BECKMANN) as usize;
+        let what = || format!("{e:?}: gpu {:?} rust {f} {p} (bound {tol:e})", o[0]);
+        w[k].add(2, rel_normal(o[0][0], f) / tol, what);
+        w[k].add(3, rel_normal(o[0][1], p) / tol, what);
+    }
+    for (k, name) in ["Beckmann", "Double GGX", "Exponential"].iter().enumerate() {
+        eprintln!(
+            "{name} ({} conductor, {} dielectric elements):",
+            conductors.len() / 3,
+            dielectrics.len() / 3
+        );
+        w[k].check(&[1.0; 4]);
+    }
 }

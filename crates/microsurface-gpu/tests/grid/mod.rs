@@ -1,6 +1,7 @@
 //! What the GPU tests share: the grids (roughness, directions, normals and uniforms, from
 //! normal incidence to grazing and below the horizon, and the edge uniforms 0 and 1 − 2⁻²⁴),
-//! and the worst-error bookkeeping (`Worst`, `vec_diff`).
+//! the worst-error bookkeeping (`Worst`, `vec_diff`), and the f32 bounds of each NDF's D and
+//! Λ (`d_bound`, `lambda_bound`; their derivations are here).
 #![allow(dead_code)] // (each test file uses its part)
 
 /// Roughness (αx, αy): isotropic from 2e-3 to 2, and anisotropic both ways.
@@ -85,5 +86,79 @@ impl Worst {
         if e > self.max[k].0 || e.is_nan() {
             self.max[k] = (e, what());
         }
+    }
+}
+
+/// f32's unit roundoff.
+pub const EPS: f64 = 5.960_464_5e-8;
+/// The bound of the NDF quantities: twice the documented f32 fast-path bound (1e-6), both
+/// sides held to it.
+pub const TOL: f64 = 2e-6;
+
+/// The NDF tags of `MsMicrofacet` (microfacet.wgsl's MS_NDF_*).
+pub const NDF_GGX: u32 = 0;
+pub const NDF_BECKMANN: u32 = 1;
+pub const NDF_DOUBLE_GGX: u32 = 2;
+pub const NDF_EXPONENTIAL: u32 = 3;
+
+/// D's relative bound at wm for the NDF `ndf`:
+/// * GGX: `TOL` (the WGSL is the Rust f32 path operation for operation).
+/// * Beckmann: the exponent e = ((x/αx)² + (y/αy)²)/z² carries a few roundings (4ε e) and
+///   Vulkan may take its exponential to (3 + 2e) ulp: `TOL` + (8 + 24e)ε, with a margin for
+///   the normalisation's products.
+/// * Double GGX: the Rust path is f64; here y = q/z² carries ~5 roundings and D's condition
+///   number in y is at most ~2 (G(1/y) ≈ 1 − 4y near the normal, ~ ln y/y² at grazing), the
+///   kernel table rounded to f32 moves by ≤ 5.8e-8 (the generator measures it) and its
+///   evaluation and the normalisation add a few ε: `TOL` + 32ε.
+/// * Exponential: the exponent e = 2√q/z carries a few roundings (4ε e) and Vulkan allows
+///   its exponential (3 + 2e) ulp: `TOL` + (8 + 24e)ε.
+pub fn d_bound(ndf: u32, wm: [f32; 3], alpha: [f32; 2]) -> f64 {
+    let (x, y, z) = (
+        wm[0] as f64 / alpha[0] as f64,
+        wm[1] as f64 / alpha[1] as f64,
+        wm[2] as f64,
+    );
+    match ndf {
+        NDF_BECKMANN | NDF_EXPONENTIAL => {
+            let q = x * x + y * y;
+            let e = match (z > 0.0, ndf == NDF_BECKMANN) {
+                (false, _) => 0.0,
+                (true, true) => q / (z * z),
+                (true, false) => 2.0 * q.sqrt() / z,
+            };
+            TOL + (8.0 + 24.0 * e) * EPS
+        }
+        NDF_DOUBLE_GGX => TOL + 32.0 * EPS,
+        _ => TOL,
+    }
+}
+
+/// cot θ̃ of w at the roughness, |w.z|/√(αx²w.x² + αy²w.y²) (f64; +∞ at the normal).
+pub fn cot(w: [f32; 3], alpha: [f32; 2]) -> f64 {
+    let (x, y) = (alpha[0] as f64 * w[0] as f64, alpha[1] as f64 * w[1] as f64);
+    (w[2] as f64).abs() / (x * x + y * y).sqrt()
+}
+
+/// Λ's relative bound at w for the NDF `ndf`:
+/// * GGX, Double GGX: `TOL`. Double GGX's Λ is the Rust f32 path operation for operation (x
+///   in f32, the same f32 cubics), and Λ's condition number in x is at most about 1 (Λ ~
+///   x ln x near the normal, ~√x at grazing), so a device's contraction of x's few roundings
+///   costs a few ε; the ends (f32 expansions here, the rounded f64 ones in Rust) agree to
+///   their truncation, below 1e-9.
+/// * Beckmann: a = cot θ̃'s rounding (2ε) times Λ's condition number in a (2a² + 1 + …) and
+///   e^{−a²}'s allowance (3 + 2a² ulp): `TOL` + 16ε(1 + 2a²).
+/// * Exponential: the Rust f32 path forms q = z² in f64, here in f32 (~6 roundings), and
+///   Λ's condition number in z is about 1 + z (Λ ~ 2/(πz) at grazing, ~ e^{−z}/√z near the
+///   normal); past z = 64 Vulkan allows e^{−z} 3 + 2z ulp: `TOL` + 16ε(1 + z).
+pub fn lambda_bound(ndf: u32, w: [f32; 3], alpha: [f32; 2]) -> f64 {
+    let cot = cot(w, alpha);
+    match ndf {
+        NDF_BECKMANN => {
+            let a = cot.min(1e3);
+            TOL + 16.0 * EPS * (1.0 + 2.0 * a * a)
+        }
+        // (Past z = 200 Λ is below 1e-86: 0 in f32 on both sides.)
+        NDF_EXPONENTIAL => TOL + 16.0 * EPS * (1.0 + (2.0 * cot).min(200.0)),
+        _ => TOL,
     }
 }
