@@ -54,7 +54,7 @@ fn index(id: vec3<u32>, groups: vec3<u32>) -> u32 {
 fn gold() -> MsConductor {
     let fr = MsFresnel(MS_FRESNEL_CONDUCTOR, vec3<f32>(0.143, 0.374, 1.442),
         vec3<f32>(3.983, 2.385, 1.603));
-    return MsConductor(MsMicrofacet(MS_NDF_GGX, ms_in[0].xy), fr, MS_MASKING_CORRELATED);
+    return MsConductor(MsMicrofacet(MS_NDF_GGX, ms_in[0].xy, 0u), fr, MS_MASKING_CORRELATED);
 }
 
 @compute @workgroup_size(64)
@@ -157,7 +157,7 @@ fn bench_conductor_sample(@builtin(global_invocation_id) id: vec3<u32>,
 }
 
 fn glass() -> MsDielectric {
-    return MsDielectric(MsMicrofacet(MS_NDF_GGX, ms_in[0].xy), 1.5, MS_MASKING_CORRELATED,
+    return MsDielectric(MsMicrofacet(MS_NDF_GGX, ms_in[0].xy, 0u), 1.5, MS_MASKING_CORRELATED,
         MS_TRANSPORT_RADIANCE);
 }
 
@@ -207,7 +207,7 @@ fn bench_beckmann_sample(@builtin(global_invocation_id) id: vec3<u32>,
     if i >= bitcast<u32>(ms_in[0].z) {
         return;
     }
-    let mf = MsMicrofacet(MS_NDF_BECKMANN, ms_in[0].xy);
+    let mf = MsMicrofacet(MS_NDF_BECKMANN, ms_in[0].xy, 0u);
     var acc = 0.0;
     for (var j = 0u; j < ITER; j++) {
         let x = input(i, j);
@@ -224,7 +224,7 @@ fn bench_beckmann_d_g2(@builtin(global_invocation_id) id: vec3<u32>,
     if i >= bitcast<u32>(ms_in[0].z) {
         return;
     }
-    let mf = MsMicrofacet(MS_NDF_BECKMANN, ms_in[0].xy);
+    let mf = MsMicrofacet(MS_NDF_BECKMANN, ms_in[0].xy, 0u);
     var acc = 0.0;
     for (var j = 0u; j < ITER; j++) {
         let x = input(i, j);
@@ -241,7 +241,7 @@ fn bench_double_ggx_sample(@builtin(global_invocation_id) id: vec3<u32>,
     if i >= bitcast<u32>(ms_in[0].z) {
         return;
     }
-    let mf = MsMicrofacet(MS_NDF_DOUBLE_GGX, ms_in[0].xy);
+    let mf = MsMicrofacet(MS_NDF_DOUBLE_GGX, ms_in[0].xy, 0u);
     var acc = 0.0;
     for (var j = 0u; j < ITER; j++) {
         let x = input(i, j);
@@ -258,7 +258,7 @@ fn bench_double_ggx_d_g2(@builtin(global_invocation_id) id: vec3<u32>,
     if i >= bitcast<u32>(ms_in[0].z) {
         return;
     }
-    let mf = MsMicrofacet(MS_NDF_DOUBLE_GGX, ms_in[0].xy);
+    let mf = MsMicrofacet(MS_NDF_DOUBLE_GGX, ms_in[0].xy, 0u);
     var acc = 0.0;
     for (var j = 0u; j < ITER; j++) {
         let x = input(i, j);
@@ -275,7 +275,7 @@ fn bench_exponential_sample(@builtin(global_invocation_id) id: vec3<u32>,
     if i >= bitcast<u32>(ms_in[0].z) {
         return;
     }
-    let mf = MsMicrofacet(MS_NDF_EXPONENTIAL, ms_in[0].xy);
+    let mf = MsMicrofacet(MS_NDF_EXPONENTIAL, ms_in[0].xy, 0u);
     var acc = 0.0;
     for (var j = 0u; j < ITER; j++) {
         let x = input(i, j);
@@ -292,7 +292,7 @@ fn bench_exponential_d_g2(@builtin(global_invocation_id) id: vec3<u32>,
     if i >= bitcast<u32>(ms_in[0].z) {
         return;
     }
-    let mf = MsMicrofacet(MS_NDF_EXPONENTIAL, ms_in[0].xy);
+    let mf = MsMicrofacet(MS_NDF_EXPONENTIAL, ms_in[0].xy, 0u);
     var acc = 0.0;
     for (var j = 0u; j < ITER; j++) {
         let x = input(i, j);

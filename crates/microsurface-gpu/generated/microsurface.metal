@@ -32,9 +32,12 @@ struct MsMicrofacet {
     uint ndf;
     char _pad1[4];
     metal::float2 alpha;
+    uint table;
+    char _pad3[4];
 };
 struct MsConductor {
     MsMicrofacet mf;
+    char _pad1[8];
     MsFresnel fresnel;
     uint masking;
     char _pad3[12];
@@ -108,10 +111,14 @@ constant uint MS_TABLES_ROWS = 3920u;
 constant float MS_FRAC_1_SQRT_PI = 0.5641896;
 constant float MS_SQRT_PI = 1.7724539;
 constant float MS_EULER_GAMMA = 0.5772157;
+constant int MS_SHAPE_K0_ = -24;
+constant uint MS_SHAPE_M = 5u;
+constant uint MS_SHAPE_HEADER = 3u;
 constant uint MS_NDF_GGX = 0u;
 constant uint MS_NDF_BECKMANN = 1u;
 constant uint MS_NDF_DOUBLE_GGX = 2u;
 constant uint MS_NDF_EXPONENTIAL = 3u;
+constant uint MS_NDF_STUDENT_T = 5u;
 constant uint MS_MASKING_CORRELATED = 0u;
 constant uint MS_MASKING_SEPARABLE = 1u;
 constant uint MS_MASKING_CORRELATED_BETA = 2u;
@@ -137,25 +144,25 @@ int naga_f2i32(float value) {
 metal::float2 ms_cos_sin_turn(
     float v
 ) {
-    float k_7 = metal::rint(4.0 * v);
-    float r_3 = v - (0.25 * k_7);
-    float x_12 = MS_TAU * r_3;
-    float x2_ = x_12 * x_12;
-    float s_9 = x_12 * (1.0 + (x2_ * (-0.16666667 + (x2_ * (0.008333333 + (x2_ * (-0.0001984127 + (x2_ * 0.0000027557319))))))));
-    float c_15 = 1.0 + (x2_ * (-0.5 + (x2_ * (0.041666668 + (x2_ * (-0.0013888889 + (x2_ * (0.000024801588 + (x2_ * -0.0000002755732)))))))));
-    int q_2 = naga_f2i32(k_7) & 3;
+    float k_9 = metal::rint(4.0 * v);
+    float r_3 = v - (0.25 * k_9);
+    float x_14 = MS_TAU * r_3;
+    float x2_ = x_14 * x_14;
+    float s_9 = x_14 * (1.0 + (x2_ * (-0.16666667 + (x2_ * (0.008333333 + (x2_ * (-0.0001984127 + (x2_ * 0.0000027557319))))))));
+    float c_16 = 1.0 + (x2_ * (-0.5 + (x2_ * (0.041666668 + (x2_ * (-0.0013888889 + (x2_ * (0.000024801588 + (x2_ * -0.0000002755732)))))))));
+    int q_2 = naga_f2i32(k_9) & 3;
     if (q_2 == 0) {
-        return metal::float2(c_15, s_9);
+        return metal::float2(c_16, s_9);
     } else {
         if (q_2 == 1) {
-            return metal::float2(-(s_9), c_15);
+            return metal::float2(-(s_9), c_16);
         } else {
             if (q_2 == 2) {
-                return metal::float2(-(c_15), -(s_9));
+                return metal::float2(-(c_16), -(s_9));
             }
         }
     }
-    return metal::float2(s_9, -(c_15));
+    return metal::float2(s_9, -(c_16));
 }
 
 metal::float3 ms_rescaled(
@@ -432,31 +439,31 @@ float ms_fresnel_dielectric(
         eta_2 = 1.0 / _e9;
     }
     float _e12 = cos_i_1;
-    float c_16 = metal::min(_e12, 1.0);
+    float c_17 = metal::min(_e12, 1.0);
     float _e15 = eta_2;
     if (_e15 == 1.0) {
         return 0.0;
     }
-    if (c_16 == 0.0) {
+    if (c_17 == 0.0) {
         return 1.0;
     }
     float _e24 = eta_2;
     if (_e24 > 1000000000000000000.0) {
         float _e27 = eta_2;
         float e_3 = 1.0 / _e27;
-        float cos_t_1 = metal::sqrt(((1.0 - e_3) * (1.0 + e_3)) + ((c_16 * e_3) * (c_16 * e_3)));
-        r_parl = (c_16 - (e_3 * cos_t_1)) / (c_16 + (e_3 * cos_t_1));
-        r_perp = ((e_3 * c_16) - cos_t_1) / ((e_3 * c_16) + cos_t_1);
+        float cos_t_1 = metal::sqrt(((1.0 - e_3) * (1.0 + e_3)) + ((c_17 * e_3) * (c_17 * e_3)));
+        r_parl = (c_17 - (e_3 * cos_t_1)) / (c_17 + (e_3 * cos_t_1));
+        r_perp = ((e_3 * c_17) - cos_t_1) / ((e_3 * c_17) + cos_t_1);
     } else {
         float _e51 = eta_2;
         if (_e51 > 1.0) {
             float _e54 = eta_2;
             float _e57 = eta_2;
-            ect2_ = ((_e54 - 1.0) * (_e57 + 1.0)) + (c_16 * c_16);
+            ect2_ = ((_e54 - 1.0) * (_e57 + 1.0)) + (c_17 * c_17);
         } else {
             float _e63 = eta_2;
             float _e64 = eta_2;
-            ect2_ = (_e63 * _e64) - ((1.0 - c_16) * (1.0 + c_16));
+            ect2_ = (_e63 * _e64) - ((1.0 - c_17) * (1.0 + c_17));
         }
         float _e72 = ect2_;
         if (_e72 <= 0.0) {
@@ -466,9 +473,9 @@ float ms_fresnel_dielectric(
         float ect = metal::sqrt(_e76);
         float _e78 = eta_2;
         float _e79 = eta_2;
-        float e2c = (_e78 * _e79) * c_16;
+        float e2c = (_e78 * _e79) * c_17;
         r_parl = (e2c - ect) / (e2c + ect);
-        r_perp = (c_16 - ect) / (c_16 + ect);
+        r_perp = (c_17 - ect) / (c_17 + ect);
     }
     float _e88 = r_parl;
     float _e89 = r_parl;
@@ -569,11 +576,11 @@ float ms_fresnel_conductor(
     if (_e25) {
         return 1.0;
     }
-    metal::float2 n_7 = metal::float2(eta_3, k_1);
+    metal::float2 n_10 = metal::float2(eta_3, k_1);
     float sin2_i = (1.0 - cos_i_5) * (1.0 + cos_i_5);
     metal::float2 ci = metal::float2(cos_i_5, 0.0);
     if (metal::max(metal::abs(eta_3), metal::abs(k_1)) > 1000000000000000000.0) {
-        metal::float2 _e40 = ms_crecip(n_7);
+        metal::float2 _e40 = ms_crecip(n_10);
         metal::float2 _e41 = ms_cmul(_e40, _e40);
         metal::float2 sin2_t_1 = _e41 * sin2_i;
         metal::float2 _e49 = ms_csqrt(metal::float2(1.0 - sin2_t_1.x, -(sin2_t_1.y)));
@@ -583,8 +590,8 @@ float ms_fresnel_conductor(
         float _e57 = ms_cnorm_ratio(ci_m - _e49, ci_m + _e49);
         return metal::min(0.5 * (_e54 + _e57), 1.0);
     }
-    metal::float2 _e63 = ms_cmul(n_7, n_7);
-    float _e65 = ms_cnorm(n_7);
+    metal::float2 _e63 = ms_cmul(n_10, n_10);
+    float _e65 = ms_cnorm(n_10);
     if (_e65 >= 1.0) {
         metal::float2 _e74 = ms_cmul(metal::float2(eta_3 - 1.0, k_1), metal::float2(eta_3 + 1.0, k_1));
         w_2 = _e74 + metal::float2(cos_i_5 * cos_i_5, 0.0);
@@ -595,8 +602,8 @@ float ms_fresnel_conductor(
     metal::float2 _e83 = ms_crecip(_e63);
     metal::float2 _e84 = ms_cmul(_e82, _e83);
     metal::float2 _e85 = ms_csqrt(_e84);
-    metal::float2 n_ci = n_7 * cos_i_5;
-    metal::float2 _e87 = ms_cmul(n_7, _e85);
+    metal::float2 n_ci = n_10 * cos_i_5;
+    metal::float2 _e87 = ms_cmul(n_10, _e85);
     float _e90 = ms_cnorm_ratio(n_ci - _e85, n_ci + _e85);
     float _e93 = ms_cnorm_ratio(ci - _e87, ci + _e87);
     return metal::min(0.5 * (_e90 + _e93), 1.0);
@@ -664,13 +671,13 @@ float ms_ggx_d(
     metal::float3 wm_2,
     metal::float2 alpha
 ) {
-    float z_3 = wm_2.z;
-    if (!((z_3 > 0.0))) {
+    float z_5 = wm_2.z;
+    if (!((z_5 > 0.0))) {
         return 0.0;
     }
-    float x_13 = wm_2.x / alpha.x;
+    float x_15 = wm_2.x / alpha.x;
     float y_3 = wm_2.y / alpha.y;
-    float t_6 = ((x_13 * x_13) + (y_3 * y_3)) + (z_3 * z_3);
+    float t_6 = ((x_15 * x_15) + (y_3 * y_3)) + (z_5 * z_5);
     return 1.0 / ((((MS_PI * alpha.x) * alpha.y) * t_6) * t_6);
 }
 
@@ -678,18 +685,18 @@ float ms_ggx_lambda(
     metal::float3 w_3,
     metal::float2 alpha_1
 ) {
-    float x_14 = alpha_1.x * w_3.x;
+    float x_16 = alpha_1.x * w_3.x;
     float y_4 = alpha_1.y * w_3.y;
-    float z_4 = metal::abs(w_3.z);
-    float t_7 = (x_14 * x_14) + (y_4 * y_4);
-    float z2_ = z_4 * z_4;
-    float den = 2.0 * (z2_ + (z_4 * metal::sqrt(z2_ + t_7)));
+    float z_6 = metal::abs(w_3.z);
+    float t_7 = (x_16 * x_16) + (y_4 * y_4);
+    float z2_ = z_6 * z_6;
+    float den = 2.0 * (z2_ + (z_6 * metal::sqrt(z2_ + t_7)));
     if (!((den > 0.0))) {
-        if (z_4 == 0.0) {
+        if (z_6 == 0.0) {
             float _e25 = ms_inf();
             return _e25;
         }
-        return (t_7 / (z_4 + metal::sqrt((z_4 * z_4) + t_7))) / (z_4 + z_4);
+        return (t_7 / (z_6 + metal::sqrt((z_6 * z_6) + t_7))) / (z_6 + z_6);
     }
     return t_7 / den;
 }
@@ -698,14 +705,14 @@ float ms_ggx_g1_(
     metal::float3 w_4,
     metal::float2 alpha_2
 ) {
-    float x_15 = alpha_2.x * w_4.x;
+    float x_17 = alpha_2.x * w_4.x;
     float y_5 = alpha_2.y * w_4.y;
-    float z_5 = metal::abs(w_4.z);
-    float den_1 = z_5 + metal::sqrt((z_5 * z_5) + ((x_15 * x_15) + (y_5 * y_5)));
+    float z_7 = metal::abs(w_4.z);
+    float den_1 = z_7 + metal::sqrt((z_7 * z_7) + ((x_17 * x_17) + (y_5 * y_5)));
     if (!((den_1 > 0.0))) {
         return 0.0;
     }
-    return (z_5 + z_5) / den_1;
+    return (z_7 + z_7) / den_1;
 }
 
 float ms_ggx_g2_(
@@ -736,7 +743,7 @@ float ms_ggx_pdf(
     float c = {};
     bool local_6 = {};
     bool local_7 = {};
-    float z_6 = metal::abs(w_5.z);
+    float z_8 = metal::abs(w_5.z);
     float _e5 = ms_dot(w_5, wm_3);
     c = _e5;
     if (w_5.z < 0.0) {
@@ -745,7 +752,7 @@ float ms_ggx_pdf(
     }
     float _e12 = c;
     if (_e12 > 0.0) {
-        local_6 = z_6 > 0.0;
+        local_6 = z_8 > 0.0;
     } else {
         local_6 = false;
     }
@@ -761,13 +768,13 @@ float ms_ggx_pdf(
     }
     float sx = alpha_5.x * w_5.x;
     float sy = alpha_5.y * w_5.y;
-    float len_3 = metal::sqrt(((sx * sx) + (sy * sy)) + (z_6 * z_6));
+    float len_3 = metal::sqrt(((sx * sx) + (sy * sy)) + (z_8 * z_8));
     float mx = wm_3.x / alpha_5.x;
     float my = wm_3.y / alpha_5.y;
     float t_8 = ((mx * mx) + (my * my)) + (wm_3.z * wm_3.z);
     float _e55 = c;
     float _e56 = c;
-    return (_e55 + _e56) / (((((MS_PI * alpha_5.x) * alpha_5.y) * t_8) * t_8) * (z_6 + len_3));
+    return (_e55 + _e56) / (((((MS_PI * alpha_5.x) * alpha_5.y) * t_8) * t_8) * (z_8 + len_3));
 }
 
 metal::float3 ms_ggx_cap_normal_stretched(
@@ -777,15 +784,15 @@ metal::float3 ms_ggx_cap_normal_stretched(
     float len
 ) {
     float inv = 1.0 / len;
-    float x_16 = (stretch.x * w_6.x) * inv;
+    float x_18 = (stretch.x * w_6.x) * inv;
     float y_6 = (stretch.y * w_6.y) * inv;
-    float z_7 = (stretch.z * w_6.z) * inv;
+    float z_9 = (stretch.z * w_6.z) * inv;
     metal::float2 _e19 = ms_cos_sin_turn(u.x);
-    float above = (1.0 - u.y) * (1.0 + z_7);
-    float sin = metal::sqrt(metal::max(u.y * ((above * (1.0 + z_7)) + ((x_16 * x_16) + (y_6 * y_6))), 0.0));
-    metal::float3 h_1 = metal::float3(stretch.x * ((sin * _e19.x) + x_16), stretch.y * ((sin * _e19.y) + y_6), stretch.z * above);
-    float n_8 = 1.0 / metal::sqrt(((h_1.x * h_1.x) + (h_1.y * h_1.y)) + (h_1.z * h_1.z));
-    return h_1 * n_8;
+    float above = (1.0 - u.y) * (1.0 + z_9);
+    float sin = metal::sqrt(metal::max(u.y * ((above * (1.0 + z_9)) + ((x_18 * x_18) + (y_6 * y_6))), 0.0));
+    metal::float3 h_2 = metal::float3(stretch.x * ((sin * _e19.x) + x_18), stretch.y * ((sin * _e19.y) + y_6), stretch.z * above);
+    float n_11 = 1.0 / metal::sqrt(((h_2.x * h_2.x) + (h_2.y * h_2.y)) + (h_2.z * h_2.z));
+    return h_2 * n_11;
 }
 
 metal::float3 ms_ggx_cap_normal(
@@ -910,11 +917,11 @@ MsBoundedCap ms_ggx_bounded_cap(
     float _e44 = v_2.z;
     float _e47 = v_2.z;
     float den_2 = s2_ + ((a2_ * _e44) * _e47);
-    float k_8 = ((1.0 - a2_) * s2_) / den_2;
+    float k_10 = ((1.0 - a2_) * s2_) / den_2;
     float _e55 = v_2.z;
     float _e57 = v_2.z;
     float one_minus_k = (a2_ * (s2_ + (_e55 * _e57))) / den_2;
-    return MsBoundedCap {_e18, k_8 * _e18.z, one_minus_k * _e18.z};
+    return MsBoundedCap {_e18, k_10 * _e18.z, one_minus_k * _e18.z};
 }
 
 float ms_ggx_pdf_bounded(
@@ -967,12 +974,12 @@ float ms_ggx_pdf_bounded_reflection(
         return 0.0;
     }
     float _e7 = ms_dot(wo_8, _e3);
-    float c_17 = metal::abs(_e7);
-    if (!((c_17 > 0.0))) {
+    float c_18 = metal::abs(_e7);
+    if (!((c_18 > 0.0))) {
         return 0.0;
     }
     float _e13 = ms_ggx_pdf_bounded(wo_8, _e3, alpha_14);
-    return _e13 / (4.0 * c_17);
+    return _e13 / (4.0 * c_18);
 }
 
 metal::uint2 ms_u64_add(
@@ -1181,7 +1188,7 @@ float ms_zig_sample(
             float _e81 = ms_stream_next(state_3);
             float _e83 = layer.w;
             float _e85 = layer.y;
-            float h_2 = _e80 + (_e81 * (_e83 - _e85));
+            float h_3 = _e80 + (_e81 * (_e83 - _e85));
             float _e89 = x_1;
             f = metal::exp(-(_e89));
             if (normal) {
@@ -1190,7 +1197,7 @@ float ms_zig_sample(
                 f = metal::exp((-0.5 * _e93) * _e96);
             }
             float _e99 = f;
-            if (h_2 < _e99) {
+            if (h_3 < _e99) {
                 float _e101 = x_1;
                 return _e101;
             }
@@ -1322,8 +1329,8 @@ float ms_bk_quantile(
         float _e43 = ms_bk_poly(_e34, _e41, _e25.y);
         ratio = _e43;
     } else {
-        float w_33 = metal::min(-(metal::log(q_3)) - 0.6931472, 127.99);
-        metal::float2 _e52 = ms_bk_segment(w_33, MS_BK_ERFINV_W_K0_, MS_BK_ERFINV_W_K1_);
+        float w_40 = metal::min(-(metal::log(q_3)) - 0.6931472, 127.99);
+        metal::float2 _e52 = ms_bk_segment(w_40, MS_BK_ERFINV_W_K0_, MS_BK_ERFINV_W_K1_);
         uint i_7 = 2u * naga_f2u32(_e52.x);
         metal::float4 _e61 = ms_tables[MS_BK_ERFINV_W_AT + i_7];
         metal::float4 _e68 = ms_tables[(MS_BK_ERFINV_W_AT + i_7) + 1u];
@@ -1352,12 +1359,12 @@ float ms_beckmann_d(
     metal::float2 alpha_15
 ) {
     bool local_9 = {};
-    float z_8 = wm_6.z;
+    float z_10 = wm_6.z;
     float r_12 = 1.0 / (alpha_15.x * alpha_15.y);
-    float x_17 = (wm_6.x * alpha_15.y) * r_12;
+    float x_19 = (wm_6.x * alpha_15.y) * r_12;
     float y_7 = (wm_6.y * alpha_15.x) * r_12;
-    float z2_1 = z_8 * z_8;
-    if (z_8 > 0.0) {
+    float z2_1 = z_10 * z_10;
+    if (z_10 > 0.0) {
         local_9 = z2_1 > 0.0;
     } else {
         local_9 = false;
@@ -1366,11 +1373,11 @@ float ms_beckmann_d(
     if (!(_e24)) {
         return 0.0;
     }
-    float e_5 = ((x_17 * x_17) + (y_7 * y_7)) / z2_1;
+    float e_5 = ((x_19 * x_19) + (y_7 * y_7)) / z2_1;
     if (e_5 <= 80.0) {
         return (metal::exp(-(e_5)) * r_12) / ((MS_PI * z2_1) * z2_1);
     }
-    return metal::exp(((metal::log(r_12) - 1.14473) - (4.0 * metal::log(z_8))) - e_5);
+    return metal::exp(((metal::log(r_12) - 1.14473) - (4.0 * metal::log(z_10))) - e_5);
 }
 
 float ms_beckmann_lambda_cot(
@@ -1395,9 +1402,9 @@ float ms_beckmann_lambda(
     device type_7 const& ms_tables,
     constant _mslBufferSizes& _buffer_sizes
 ) {
-    float x_18 = alpha_16.x * w_14.x;
+    float x_20 = alpha_16.x * w_14.x;
     float y_8 = alpha_16.y * w_14.y;
-    float s_15 = metal::sqrt((x_18 * x_18) + (y_8 * y_8));
+    float s_15 = metal::sqrt((x_20 * x_20) + (y_8 * y_8));
     if (!((s_15 > 0.0))) {
         return 0.0;
     }
@@ -1461,7 +1468,7 @@ float ms_beckmann_pdf(
 ) {
     float c_1 = {};
     bool local_11 = {};
-    float z_9 = metal::abs(w_16.z);
+    float z_11 = metal::abs(w_16.z);
     float _e5 = ms_dot(w_16, wm_7);
     c_1 = _e5;
     if (w_16.z < 0.0) {
@@ -1470,7 +1477,7 @@ float ms_beckmann_pdf(
     }
     float _e12 = c_1;
     if (_e12 > 0.0) {
-        local_11 = z_9 > 0.0;
+        local_11 = z_11 > 0.0;
     } else {
         local_11 = false;
     }
@@ -1481,7 +1488,7 @@ float ms_beckmann_pdf(
     float _e23 = ms_beckmann_g1_(w_16, alpha_20, ms_tables, _buffer_sizes);
     float _e24 = c_1;
     float _e26 = ms_beckmann_d(wm_7, alpha_20);
-    return ((_e23 * _e24) * _e26) / z_9;
+    return ((_e23 * _e24) * _e26) / z_11;
 }
 
 float ms_beckmann_pdf_dcos(
@@ -1536,9 +1543,9 @@ float ms_bk_visible_x(
     float _e5 = ms_bk_erfcx(a_14, ms_tables, _buffer_sizes);
     float erfc_a = _e5 * ea;
     float half_ea = 0.2820948 * ea;
-    float z_10 = ((0.5 * a_14) * (2.0 - erfc_a)) + half_ea;
-    float target_lo = u_9 * z_10;
-    float target_hi = (1.0 - u_9) * z_10;
+    float z_12 = ((0.5 * a_14) * (2.0 - erfc_a)) + half_ea;
+    float target_lo = u_9 * z_12;
+    float target_hi = (1.0 - u_9) * z_12;
     lo_1 = -(a_14);
     if (a_14 >= 1.0) {
         float _e26 = ms_bk_quantile(u_9, ms_tables, _buffer_sizes);
@@ -1675,14 +1682,14 @@ metal::float3 ms_beckmann_sample_wm(
     float _e14 = sign_1;
     float sy_1 = (_e14 * alpha_23.y) * w_17.y;
     float _e19 = sign_1;
-    float c_18 = _e19 * w_17.z;
-    float h_3 = metal::sqrt((sx_1 * sx_1) + (sy_1 * sy_1));
+    float c_19 = _e19 * w_17.z;
+    float h_4 = metal::sqrt((sx_1 * sx_1) + (sy_1 * sy_1));
     float _e27 = ms_bk_quantile(u_10.y, ms_tables, _buffer_sizes);
-    if (h_3 > 0.0) {
-        float inv_1 = 1.0 / h_3;
+    if (h_4 > 0.0) {
+        float inv_1 = 1.0 / h_4;
         cp = sx_1 * inv_1;
         sp = sy_1 * inv_1;
-        float _e41 = ms_bk_visible_x(c_18 * inv_1, u_10.x, ms_tables, _buffer_sizes);
+        float _e41 = ms_bk_visible_x(c_19 * inv_1, u_10.x, ms_tables, _buffer_sizes);
         x_5 = _e41;
     } else {
         float _e43 = ms_bk_quantile(u_10.x, ms_tables, _buffer_sizes);
@@ -1696,8 +1703,8 @@ metal::float3 ms_beckmann_sample_wm(
     float _e54 = x_5;
     float _e56 = cp;
     float q_4 = alpha_23.y * ((_e53 * _e54) + (_e56 * _e27));
-    float n_9 = 1.0 / metal::sqrt(((p_2 * p_2) + (q_4 * q_4)) + 1.0);
-    metal::float3 _e71 = ms_facing(metal::float3(p_2 * n_9, q_4 * n_9, n_9), w_17);
+    float n_12 = 1.0 / metal::sqrt(((p_2 * p_2) + (q_4 * q_4)) + 1.0);
+    metal::float3 _e71 = ms_facing(metal::float3(p_2 * n_12, q_4 * n_12, n_12), w_17);
     return _e71;
 }
 
@@ -1749,12 +1756,12 @@ float ms_dg_lambda_ends(
     float u_12,
     float a_15
 ) {
-    float x_19 = (((0.5 * a_15) * a_15) * ((1.0 - u_12) * (1.0 + u_12))) / (u_12 * u_12);
-    if (x_19 < 0.0000000009313226) {
-        if (x_19 <= 0.0) {
+    float x_21 = (((0.5 * a_15) * a_15) * ((1.0 - u_12) * (1.0 + u_12))) / (u_12 * u_12);
+    if (x_21 < 0.0000000009313226) {
+        if (x_21 <= 0.0) {
             return 0.0;
         }
-        return (0.5 * x_19) * (0.42278433 - metal::log(0.5 * x_19));
+        return (0.5 * x_21) * (0.42278433 - metal::log(0.5 * x_21));
     }
     float sx_2 = (a_15 * metal::sqrt((0.5 * (1.0 - u_12)) * (1.0 + u_12))) / u_12;
     float r_14 = 1.0 / (sx_2 * sx_2);
@@ -1771,10 +1778,10 @@ float ms_double_ggx_lambda(
     bool local_14 = {};
     float a_16 = {};
     bool local_15 = {};
-    float u_26 = metal::abs(w_19.z);
+    float u_29 = metal::abs(w_19.z);
     if (alpha_25.x == alpha_25.y) {
         float a_21 = alpha_25.x;
-        x_8 = (((0.5 * a_21) * a_21) * ((1.0 - u_26) * (1.0 + u_26))) / (u_26 * u_26);
+        x_8 = (((0.5 * a_21) * a_21) * ((1.0 - u_29) * (1.0 + u_29))) / (u_29 * u_29);
     } else {
         float sx_3 = alpha_25.x * w_19.x;
         float sy_2 = alpha_25.y * w_19.y;
@@ -1805,7 +1812,7 @@ float ms_double_ggx_lambda(
         a_16 = metal::sqrt(((((alpha_25.x * alpha_25.x) * w_19.x) * w_19.x) + (((alpha_25.y * alpha_25.y) * w_19.y) * w_19.y)) / s2_1);
     }
     float _e82 = a_16;
-    float _e83 = ms_dg_lambda_ends(u_26, _e82);
+    float _e83 = ms_dg_lambda_ends(u_29, _e82);
     return _e83;
 }
 
@@ -1883,15 +1890,15 @@ float ms_double_ggx_d(
     constant _mslBufferSizes& _buffer_sizes
 ) {
     bool local_17 = {};
-    float z_11 = wm_9.z;
+    float z_13 = wm_9.z;
     float r_15 = 1.0 / (alpha_29.x * alpha_29.y);
-    float x_20 = (wm_9.x * alpha_29.y) * r_15;
+    float x_22 = (wm_9.x * alpha_29.y) * r_15;
     float y_9 = (wm_9.y * alpha_29.x) * r_15;
-    float q_5 = (x_20 * x_20) + (y_9 * y_9);
-    if (!((z_11 > 0.0))) {
-        return (z_11 != z_11) ? z_11 : 0.0;
+    float q_5 = (x_22 * x_22) + (y_9 * y_9);
+    if (!((z_13 > 0.0))) {
+        return (z_13 != z_13) ? z_13 : 0.0;
     }
-    float z2_2 = z_11 * z_11;
+    float z2_2 = z_13 * z_13;
     float t_10 = q_5 / z2_2;
     if (t_10 >= 0.0000000009313226) {
         local_17 = t_10 < 1073741800.0;
@@ -1907,7 +1914,7 @@ float ms_double_ggx_d(
     if (t_10 < 0.0000000009313226) {
         return r_15 / ((MS_PI * z2_2) * z2_2);
     }
-    return ((((metal::log(q_5) - (2.0 * metal::log(z_11))) - MS_EULER_GAMMA) - 1.0) * r_15) / ((MS_PI * q_5) * q_5);
+    return ((((metal::log(q_5) - (2.0 * metal::log(z_13))) - MS_EULER_GAMMA) - 1.0) * r_15) / ((MS_PI * q_5) * q_5);
 }
 
 float ms_double_ggx_pdf(
@@ -1919,7 +1926,7 @@ float ms_double_ggx_pdf(
 ) {
     float c_3 = {};
     bool local_18 = {};
-    float z_12 = metal::abs(w_21.z);
+    float z_14 = metal::abs(w_21.z);
     float _e5 = ms_dot(w_21, wm_10);
     c_3 = _e5;
     if (w_21.z < 0.0) {
@@ -1928,7 +1935,7 @@ float ms_double_ggx_pdf(
     }
     float _e12 = c_3;
     if (_e12 > 0.0) {
-        local_18 = z_12 > 0.0;
+        local_18 = z_14 > 0.0;
     } else {
         local_18 = false;
     }
@@ -1939,7 +1946,7 @@ float ms_double_ggx_pdf(
     float _e23 = ms_double_ggx_g1_(w_21, alpha_30, ms_tables, _buffer_sizes);
     float _e24 = c_3;
     float _e26 = ms_double_ggx_d(wm_10, alpha_30, ms_tables, _buffer_sizes);
-    return ((_e23 * _e24) * _e26) / z_12;
+    return ((_e23 * _e24) * _e26) / z_14;
 }
 
 float ms_double_ggx_pdf_dcos(
@@ -1986,7 +1993,7 @@ metal::float3 ms_double_ggx_sample_wm(
     float s_5 = 1.0;
     float len_2 = 1.0;
     int n_3 = 0;
-    float t_1 = {};
+    float t = {};
     metal::float3 _e3 = ms_unit(w_in_3);
     w_22 = _e3;
     float _e6 = w_22.z;
@@ -1998,13 +2005,13 @@ metal::float3 ms_double_ggx_sample_wm(
     float sx_4 = alpha_33.x * _e13;
     float _e17 = w_22.y;
     float sy_3 = alpha_33.y * _e17;
-    float c_19 = w_22.z;
-    float h_4 = metal::sqrt((sx_4 * sx_4) + (sy_3 * sy_3));
-    if (!((metal::abs(c_19 + h_4) <= 340282350000000000000000000000000000000.0))) {
-        return metal::float3(c_19 + h_4);
+    float c_20 = w_22.z;
+    float h_5 = metal::sqrt((sx_4 * sx_4) + (sy_3 * sy_3));
+    if (!((metal::abs(c_20 + h_5) <= 340282350000000000000000000000000000000.0))) {
+        return metal::float3(c_20 + h_5);
     }
-    float e_7 = 2.0 * c_19;
-    float g = MS_SQRT_PI * h_4;
+    float e_7 = 2.0 * c_20;
+    float g = MS_SQRT_PI * h_5;
     float p_exp = e_7 / (e_7 + g);
     float inv_p = metal::min((e_7 + g) / e_7, 340282350000000000000000000000000000000.0);
     float inv_q = metal::min((e_7 + g) / g, 340282350000000000000000000000000000000.0);
@@ -2027,25 +2034,25 @@ metal::float3 ms_double_ggx_sample_wm(
         }
         {
             float _e57 = ms_stream_next(state_7);
-            t_1 = float {};
+            t = float {};
             if (_e57 < p_exp) {
                 float _e62 = ms_zig_exp1_(_e57 * inv_p, state_7, ms_tables, _buffer_sizes);
-                t_1 = _e62;
+                t = _e62;
             } else {
                 float _e65 = ms_zig_half_normal((_e57 - p_exp) * inv_q, state_7, ms_tables, _buffer_sizes);
-                t_1 = (0.5 * _e65) * _e65;
+                t = (0.5 * _e65) * _e65;
             }
-            float _e69 = t_1;
-            t_1 = metal::max(_e69, 0.000000000000000000000000000000000001);
-            float _e72 = t_1;
+            float _e69 = t;
+            t = metal::max(_e69, 0.000000000000000000000000000000000001);
+            float _e72 = t;
             s_5 = metal::sqrt(_e72);
-            float _e75 = t_1;
-            len_2 = metal::sqrt(((c_19 * c_19) * _e75) + (h_4 * h_4));
+            float _e75 = t;
+            len_2 = metal::sqrt(((c_20 * c_20) * _e75) + (h_5 * h_5));
             float _e80 = ms_stream_next(state_7);
             float _e81 = s_5;
             float _e85 = s_5;
             float _e87 = len_2;
-            if ((_e80 * ((e_7 * _e81) + h_4)) <= ((c_19 * _e85) + _e87)) {
+            if ((_e80 * ((e_7 * _e81) + h_5)) <= ((c_20 * _e85) + _e87)) {
                 break;
             }
         }
@@ -2128,10 +2135,10 @@ float ms_exponential_lambda(
     bool local_19 = {};
     float a_17 = {};
     bool local_20 = {};
-    float u_27 = metal::abs(w_24.z);
+    float u_30 = metal::abs(w_24.z);
     if (alpha_35.x == alpha_35.y) {
         float a_22 = alpha_35.x;
-        q_1 = ((4.0 * u_27) * u_27) / ((a_22 * a_22) * ((1.0 - u_27) * (1.0 + u_27)));
+        q_1 = ((4.0 * u_30) * u_30) / ((a_22 * a_22) * ((1.0 - u_30) * (1.0 + u_30)));
     } else {
         float sx_5 = alpha_35.x * w_24.x;
         float sy_4 = alpha_35.y * w_24.y;
@@ -2162,7 +2169,7 @@ float ms_exponential_lambda(
         a_17 = metal::sqrt(((((alpha_35.x * alpha_35.x) * w_24.x) * w_24.x) + (((alpha_35.y * alpha_35.y) * w_24.y) * w_24.y)) / s2_4);
     }
     float _e83 = a_17;
-    float _e92 = ms_exp_lambda_z((u_27 + u_27) / (_e83 * metal::sqrt((1.0 - u_27) * (1.0 + u_27))), ms_tables, _buffer_sizes);
+    float _e92 = ms_exp_lambda_z((u_30 + u_30) / (_e83 * metal::sqrt((1.0 - u_30) * (1.0 + u_30))), ms_tables, _buffer_sizes);
     return _e92;
 }
 
@@ -2218,25 +2225,25 @@ float ms_exponential_d(
     metal::float2 alpha_39
 ) {
     bool local_22 = {};
-    float z_13 = wm_12.z;
+    float z_15 = wm_12.z;
     float r_17 = 1.0 / (alpha_39.x * alpha_39.y);
-    float x_21 = (wm_12.x * alpha_39.y) * r_17;
+    float x_23 = (wm_12.x * alpha_39.y) * r_17;
     float y_10 = (wm_12.y * alpha_39.x) * r_17;
-    float z2_3 = z_13 * z_13;
-    if (z_13 > 0.0) {
+    float z2_3 = z_15 * z_15;
+    if (z_15 > 0.0) {
         local_22 = z2_3 > 0.0;
     } else {
         local_22 = false;
     }
     bool _e24 = local_22;
     if (!(_e24)) {
-        return (z_13 != z_13) ? z_13 : 0.0;
+        return (z_15 != z_15) ? z_15 : 0.0;
     }
-    float e_8 = (2.0 * metal::sqrt((x_21 * x_21) + (y_10 * y_10))) / z_13;
+    float e_8 = (2.0 * metal::sqrt((x_23 * x_23) + (y_10 * y_10))) / z_15;
     if (e_8 <= 80.0) {
         return ((2.0 * metal::exp(-(e_8))) * r_17) / ((MS_PI * z2_3) * z2_3);
     }
-    return metal::exp(((metal::log(2.0 * r_17) - 1.14473) - (4.0 * metal::log(z_13))) - e_8);
+    return metal::exp(((metal::log(2.0 * r_17) - 1.14473) - (4.0 * metal::log(z_15))) - e_8);
 }
 
 float ms_exponential_pdf(
@@ -2248,7 +2255,7 @@ float ms_exponential_pdf(
 ) {
     float c_4 = {};
     bool local_23 = {};
-    float z_14 = metal::abs(w_26.z);
+    float z_16 = metal::abs(w_26.z);
     float _e5 = ms_dot(w_26, wm_13);
     c_4 = _e5;
     if (w_26.z < 0.0) {
@@ -2257,7 +2264,7 @@ float ms_exponential_pdf(
     }
     float _e12 = c_4;
     if (_e12 > 0.0) {
-        local_23 = z_14 > 0.0;
+        local_23 = z_16 > 0.0;
     } else {
         local_23 = false;
     }
@@ -2268,7 +2275,7 @@ float ms_exponential_pdf(
     float _e23 = ms_exponential_g1_(w_26, alpha_40, ms_tables, _buffer_sizes);
     float _e24 = c_4;
     float _e26 = ms_exponential_d(wm_13, alpha_40);
-    return ((_e23 * _e24) * _e26) / z_14;
+    return ((_e23 * _e24) * _e26) / z_16;
 }
 
 float ms_exponential_pdf_dcos(
@@ -2335,15 +2342,15 @@ metal::float3 ms_exponential_sample_wm(
     float _e17 = w_27.y;
     float sy_5 = alpha_43.y * _e17;
     float e_9 = w_27.z;
-    float h_5 = metal::sqrt((sx_6 * sx_6) + (sy_5 * sy_5));
-    if (h_5 > 0.0) {
-        cp_1 = sx_6 / h_5;
-        sp_1 = sy_5 / h_5;
+    float h_6 = metal::sqrt((sx_6 * sx_6) + (sy_5 * sy_5));
+    if (h_6 > 0.0) {
+        cp_1 = sx_6 / h_6;
+        sp_1 = sy_5 / h_6;
     }
-    if (!((metal::abs(e_9 + h_5) <= 340282350000000000000000000000000000000.0))) {
-        return metal::float3(e_9 + h_5);
+    if (!((metal::abs(e_9 + h_6) <= 340282350000000000000000000000000000000.0))) {
+        return metal::float3(e_9 + h_6);
     }
-    float g_1 = h_5 * MS_FRAC_1_PI;
+    float g_1 = h_6 * MS_FRAC_1_PI;
     float total = e_9 + g_1;
     float inv_p_1 = metal::min(total / e_9, 340282350000000000000000000000000000000.0);
     float inv_g = metal::min(1.0 / g_1, 340282350000000000000000000000000000000.0);
@@ -2389,7 +2396,7 @@ metal::float3 ms_exponential_sample_wm(
                 if (!((metal::abs(turn - 0.5) >= 0.25))) {
                     float _e100 = ms_stream_next(state_9);
                     float _e102 = x_9;
-                    local_24 = (_e100 * e_9) <= (e_9 + (h_5 * _e102));
+                    local_24 = (_e100 * e_9) <= (e_9 + (h_6 * _e102));
                 } else {
                     local_24 = true;
                 }
@@ -2438,403 +2445,1002 @@ MsSample ms_exponential_sample(
     return MsSample {_e3, _e5};
 }
 
+float ms_shape_lambda_z(
+    uint table,
+    float z_2,
+    device type_7 const& ms_tables,
+    constant _mslBufferSizes& _buffer_sizes
+) {
+    bool local_25 = {};
+    metal::float4 head = ms_tables[table];
+    int k1_2 = naga_f2i32(head.y);
+    if (z_2 >= 0.000000059604645) {
+        local_25 = z_2 < metal::exp2(head.y);
+    } else {
+        local_25 = false;
+    }
+    bool _e15 = local_25;
+    if (_e15) {
+        metal::float2 _e18 = ms_fam_segment(z_2, MS_SHAPE_K0_, k1_2, MS_SHAPE_M);
+        uint i_9 = (table + MS_SHAPE_HEADER) + (2u * naga_f2u32(_e18.x));
+        metal::float4 lo_5 = ms_tables[i_9];
+        metal::float4 hi_4 = ms_tables[i_9 + 1u];
+        float s_17 = _e18.y;
+        float p_5 = (((((((hi_4.x * s_17) + lo_5.w) * s_17) + lo_5.z) * s_17) + lo_5.y) * s_17) + lo_5.x;
+        if (head.z > 0.5) {
+            return p_5;
+        }
+        return metal::exp2(p_5 * 0.00390625);
+    }
+    if (z_2 != z_2) {
+        return z_2;
+    }
+    if (z_2 < 0.000000059604645) {
+        return (head.w / z_2) - 0.5;
+    }
+    metal::float4 tail = ms_tables[table + 1u];
+    if (tail.x < 0.5) {
+        return 0.0;
+    }
+    return metal::exp(tail.z - (tail.y * metal::log(z_2))) * (1.0 + (tail.w / (z_2 * z_2)));
+}
+
+float ms_shape_lambda(
+    uint table_1,
+    metal::float3 w_29,
+    metal::float2 alpha_45,
+    device type_7 const& ms_tables,
+    constant _mslBufferSizes& _buffer_sizes
+) {
+    bool local_26 = {};
+    float sx_7 = alpha_45.x * w_29.x;
+    float sy_6 = alpha_45.y * w_29.y;
+    float h_7 = metal::sqrt((sx_7 * sx_7) + (sy_6 * sy_6));
+    float z_17 = metal::abs(w_29.z);
+    if (!((h_7 > 0.0))) {
+        if (h_7 == 0.0) {
+            local_26 = z_17 > 0.0;
+        } else {
+            local_26 = false;
+        }
+        bool _e25 = local_26;
+        return _e25 ? 0.0 : h_7;
+    }
+    if (z_17 == 0.0) {
+        float _e30 = ms_inf();
+        return _e30;
+    }
+    float _e32 = ms_shape_lambda_z(table_1, z_17 / h_7, ms_tables, _buffer_sizes);
+    return _e32;
+}
+
+float ms_zig_normal(
+    float w_30,
+    thread metal::uint2& state_10,
+    device type_7 const& ms_tables,
+    constant _mslBufferSizes& _buffer_sizes
+) {
+    if (w_30 < 0.5) {
+        float _e6 = ms_zig_half_normal(2.0 * w_30, state_10, ms_tables, _buffer_sizes);
+        return -(_e6);
+    }
+    float _e12 = ms_zig_half_normal((2.0 * w_30) - 1.0, state_10, ms_tables, _buffer_sizes);
+    return _e12;
+}
+
+float ms_stream_next_positive(
+    thread metal::uint2& state_11
+) {
+    float _e1 = ms_stream_next(state_11);
+    return metal::max(_e1, 0.000000029802322);
+}
+
+float ms_ln_gamma_variate(
+    float k_in,
+    thread metal::uint2& state_12,
+    device type_7 const& ms_tables,
+    constant _mslBufferSizes& _buffer_sizes
+) {
+    float k_5 = {};
+    float boost = 0.0;
+    int n_5 = 0;
+    float v_6 = {};
+    k_5 = k_in;
+    float _e5 = k_5;
+    if (_e5 < 1.0) {
+        float _e8 = ms_stream_next_positive(state_12);
+        float _e10 = k_5;
+        boost = metal::log(_e8) / _e10;
+        float _e12 = k_5;
+        k_5 = _e12 + 1.0;
+    }
+    float _e15 = k_5;
+    float d_16 = _e15 - 0.33333334;
+    float c_21 = 1.0 / metal::sqrt(9.0 * d_16);
+    uint2 loop_bound_5 = uint2(4294967295u);
+    bool loop_init_5 = true;
+    while(true) {
+        if (metal::all(loop_bound_5 == uint2(0u))) { break; }
+        loop_bound_5 -= uint2(loop_bound_5.y == 0u, 1u);
+        if (!loop_init_5) {
+            int _e63 = n_5;
+            n_5 = as_type<int>(as_type<uint>(_e63) + as_type<uint>(1));
+        }
+        loop_init_5 = false;
+        int _e25 = n_5;
+        if (_e25 < 64) {
+        } else {
+            break;
+        }
+        {
+            float _e28 = ms_stream_next(state_12);
+            float _e29 = ms_zig_normal(_e28, state_12, ms_tables, _buffer_sizes);
+            v_6 = 1.0 + (c_21 * _e29);
+            float _e34 = v_6;
+            if (_e34 <= 0.0) {
+                continue;
+            }
+            float _e37 = v_6;
+            float _e38 = v_6;
+            float _e40 = v_6;
+            v_6 = (_e37 * _e38) * _e40;
+            float _e42 = ms_stream_next_positive(state_12);
+            float _e48 = v_6;
+            float _e51 = v_6;
+            if (metal::log(_e42) < (((((0.5 * _e29) * _e29) + d_16) - (d_16 * _e48)) + (d_16 * metal::log(_e51)))) {
+                float _e57 = v_6;
+                float _e60 = boost;
+                return (metal::log(d_16) + metal::log(_e57)) + _e60;
+            }
+        }
+    }
+    return as_type<float>(2143289344u);
+}
+
+metal::float3 ms_beckmann_sample_stream_above(
+    metal::float3 v_7,
+    metal::float2 alpha_46,
+    thread metal::uint2& state_13,
+    device type_7 const& ms_tables,
+    constant _mslBufferSizes& _buffer_sizes
+) {
+    float cp_2 = 1.0;
+    float sp_2 = 0.0;
+    float x_10 = 0.0;
+    int n_6 = 0;
+    bool local_27 = {};
+    bool local_28 = {};
+    float sx_8 = alpha_46.x * v_7.x;
+    float sy_7 = alpha_46.y * v_7.y;
+    float h_8 = metal::sqrt((sx_8 * sx_8) + (sy_7 * sy_7));
+    if (h_8 == 0.0) {
+        float _e21 = ms_stream_next(state_13);
+        float _e22 = ms_zig_normal(_e21, state_13, ms_tables, _buffer_sizes);
+        x_10 = _e22 * 0.70710677;
+    } else {
+        cp_2 = sx_8 / h_8;
+        sp_2 = sy_7 / h_8;
+        float a_23 = v_7.z / h_8;
+        float p_ray = 0.5 / (0.5 + (a_23 * MS_SQRT_PI));
+        x_10 = as_type<float>(2143289344u);
+        uint2 loop_bound_6 = uint2(4294967295u);
+        bool loop_init_6 = true;
+        while(true) {
+            if (metal::all(loop_bound_6 == uint2(0u))) { break; }
+            loop_bound_6 -= uint2(loop_bound_6.y == 0u, 1u);
+            if (!loop_init_6) {
+                int _e73 = n_6;
+                n_6 = as_type<int>(as_type<uint>(_e73) + as_type<uint>(1));
+            }
+            loop_init_6 = false;
+            int _e39 = n_6;
+            if (_e39 < 64) {
+            } else {
+                break;
+            }
+            {
+                float _e42 = ms_stream_next(state_13);
+                if (_e42 < p_ray) {
+                    float _e44 = ms_stream_next_positive(state_13);
+                    x_10 = metal::sqrt(-(metal::log(_e44)));
+                    break;
+                }
+                float _e52 = ms_zig_normal((_e42 - p_ray) / (1.0 - p_ray), state_13, ms_tables, _buffer_sizes);
+                float c_22 = _e52 * 0.70710677;
+                if (!((c_22 >= 0.0))) {
+                    if (c_22 > -(a_23)) {
+                        float _e64 = ms_stream_next(state_13);
+                        local_28 = (_e64 * a_23) < (c_22 + a_23);
+                    } else {
+                        local_28 = false;
+                    }
+                    bool _e69 = local_28;
+                    local_27 = _e69;
+                } else {
+                    local_27 = true;
+                }
+                bool _e71 = local_27;
+                if (_e71) {
+                    x_10 = c_22;
+                    break;
+                }
+            }
+        }
+    }
+    float _e75 = ms_stream_next(state_13);
+    float _e76 = ms_zig_normal(_e75, state_13, ms_tables, _buffer_sizes);
+    float y_11 = _e76 * 0.70710677;
+    float _e80 = cp_2;
+    float _e81 = x_10;
+    float _e83 = sp_2;
+    float p_6 = alpha_46.x * ((_e80 * _e81) - (_e83 * y_11));
+    float _e88 = sp_2;
+    float _e89 = x_10;
+    float _e91 = cp_2;
+    float q_8 = alpha_46.y * ((_e88 * _e89) + (_e91 * y_11));
+    metal::float3 _e97 = ms_unit_normal(metal::float3(p_6, q_8, 1.0));
+    metal::float3 _e98 = ms_facing(_e97, v_7);
+    return _e98;
+}
+
+float ms_posterior_ln_beta(
+    uint mixing,
+    float k_6,
+    float mean_beta,
+    float z_3,
+    float h_1,
+    thread metal::uint2& state_14,
+    device type_7 const& ms_tables,
+    constant _mslBufferSizes& _buffer_sizes
+) {
+    int n_7 = 0;
+    float ln_beta = {};
+    float keep = {};
+    bool local_29 = {};
+    float p_prior = z_3 / (z_3 + ((0.2820948 * h_1) * mean_beta));
+    uint2 loop_bound_7 = uint2(4294967295u);
+    bool loop_init_7 = true;
+    while(true) {
+        if (metal::all(loop_bound_7 == uint2(0u))) { break; }
+        loop_bound_7 -= uint2(loop_bound_7.y == 0u, 1u);
+        if (!loop_init_7) {
+            int _e87 = n_7;
+            n_7 = as_type<int>(as_type<uint>(_e87) + as_type<uint>(1));
+        }
+        loop_init_7 = false;
+        int _e13 = n_7;
+        if (_e13 < 64) {
+        } else {
+            break;
+        }
+        {
+            float _e16 = ms_stream_next(state_14);
+            bool biased = _e16 >= p_prior;
+            float bias = biased ? 1.0 : 0.0;
+            ln_beta = float {};
+            if (mixing == 0u) {
+                float _e29 = ms_ln_gamma_variate(k_6 - (0.5 * bias), state_14, ms_tables, _buffer_sizes);
+                ln_beta = 0.5 * (metal::log(k_6) - _e29);
+            } else {
+                if (mixing == 1u) {
+                    float _e38 = ms_ln_gamma_variate(k_6 + (0.5 * bias), state_14, ms_tables, _buffer_sizes);
+                    ln_beta = 0.5 * _e38;
+                } else {
+                    if (mixing == 2u) {
+                        float _e43 = ms_stream_next_positive(state_14);
+                        ln_beta = (0.5 * metal::log(_e43)) / (1.0 + (0.5 * bias));
+                    } else {
+                        float _e52 = ms_stream_next_positive(state_14);
+                        ln_beta = metal::log(_e52) / (1.0 + bias);
+                    }
+                }
+            }
+            float _e57 = ln_beta;
+            float hb = h_1 * metal::exp(_e57);
+            keep = 1.0;
+            if (hb > 0.0) {
+                local_29 = hb <= 340282350000000000000000000000000000000.0;
+            } else {
+                local_29 = false;
+            }
+            bool _e69 = local_29;
+            if (_e69) {
+                float a_24 = z_3 / hb;
+                float _e76 = ms_bk_erfc_ratio(a_24, ms_tables, _buffer_sizes);
+                keep = (z_3 + (((0.2820948 * hb) * metal::exp(-(a_24) * a_24)) * _e76)) / (z_3 + (0.2820948 * hb));
+            }
+            float _e82 = ms_stream_next(state_14);
+            float _e83 = keep;
+            if (_e82 < _e83) {
+                float _e85 = ln_beta;
+                return _e85;
+            }
+        }
+    }
+    return as_type<float>(2143289344u);
+}
+
+metal::float3 ms_mixture_sample_wm(
+    uint mixing_1,
+    uint table_2,
+    metal::float3 w_in_5,
+    metal::float2 alpha_47,
+    metal::float2 u_19,
+    device type_7 const& ms_tables,
+    constant _mslBufferSizes& _buffer_sizes
+) {
+    metal::float3 w_31 = {};
+    metal::uint2 state_15 = {};
+    float ln_beta_1 = {};
+    metal::float3 _e5 = ms_unit(w_in_5);
+    w_31 = _e5;
+    float _e8 = w_31.z;
+    if (_e8 < 0.0) {
+        metal::float3 _e11 = w_31;
+        w_31 = -(_e11);
+    }
+    metal::float4 params = ms_tables[table_2 + 2u];
+    float _e20 = w_31.x;
+    float sx_9 = alpha_47.x * _e20;
+    float _e24 = w_31.y;
+    float sy_8 = alpha_47.y * _e24;
+    float h_9 = metal::sqrt((sx_9 * sx_9) + (sy_8 * sy_8));
+    metal::uint2 _e30 = ms_stream_new(u_19);
+    state_15 = _e30;
+    float _e35 = w_31.z;
+    float _e36 = ms_posterior_ln_beta(mixing_1, params.y, params.x, _e35, h_9, state_15, ms_tables, _buffer_sizes);
+    ln_beta_1 = _e36;
+    float _e38 = ln_beta_1;
+    float _e39 = ln_beta_1;
+    if (_e38 != _e39) {
+        ln_beta_1 = metal::log(params.x);
+    }
+    float lo_6 = metal::log(metal::min(alpha_47.x, alpha_47.y));
+    float hi_5 = metal::log(metal::max(alpha_47.x, alpha_47.y));
+    float _e51 = ln_beta_1;
+    float beta = metal::exp(metal::clamp(_e51, -80.0 - lo_6, 80.0 - hi_5));
+    float _e59 = w_31.z;
+    if (!((_e59 > 0.0))) {
+        metal::float3 _e63 = w_31;
+        metal::float3 _e65 = ms_beckmann_sample_wm(_e63, beta * alpha_47, u_19, ms_tables, _buffer_sizes);
+        return _e65;
+    }
+    metal::float3 _e66 = w_31;
+    metal::float3 _e68 = ms_beckmann_sample_stream_above(_e66, beta * alpha_47, state_15, ms_tables, _buffer_sizes);
+    return _e68;
+}
+
+float ms_student_t_gamma(
+    uint table_3,
+    device type_7 const& ms_tables,
+    constant _mslBufferSizes& _buffer_sizes
+) {
+    float _e4 = ms_tables[table_3].x;
+    return _e4;
+}
+
+float ms_ln_1p(
+    float t_1
+) {
+    float v_11 = 1.0 + t_1;
+    if (v_11 == 1.0) {
+        return t_1;
+    }
+    return metal::log(v_11) * (t_1 / (v_11 - 1.0));
+}
+
+float ms_expm1_(
+    float x_11
+) {
+    if (metal::abs(x_11) < 0.5) {
+        return x_11 * (1.0 + (x_11 * (0.5 + (x_11 * (0.16666667 + (x_11 * (0.041666668 + (x_11 * (0.008333334 + (x_11 * (0.0013888889 + (x_11 * (0.0001984127 + (x_11 * (0.000024801588 + (x_11 * 0.0000027557319))))))))))))))));
+    }
+    return metal::exp(x_11) - 1.0;
+}
+
+float ms_student_t_d(
+    metal::float3 wm_15,
+    metal::float2 alpha_48,
+    uint table_4,
+    device type_7 const& ms_tables,
+    constant _mslBufferSizes& _buffer_sizes
+) {
+    float z_18 = wm_15.z;
+    if (!((z_18 > 0.0))) {
+        return (z_18 != z_18) ? z_18 : 0.0;
+    }
+    float _e10 = ms_student_t_gamma(table_4, ms_tables, _buffer_sizes);
+    float x_24 = wm_15.x / alpha_48.x;
+    float y_12 = wm_15.y / alpha_48.y;
+    float q_9 = (x_24 * x_24) + (y_12 * y_12);
+    float z2_4 = z_18 * z_18;
+    if (z_18 > 0.000000001) {
+        float t_12 = q_9 / (z2_4 * (_e10 - 1.0));
+        float _e27 = ms_ln_1p(t_12);
+        float e_10 = _e10 * _e27;
+        float norm = (((MS_PI * alpha_48.x) * alpha_48.y) * z2_4) * z2_4;
+        if (e_10 < 80.0) {
+            return metal::exp(-(e_10)) / norm;
+        }
+        return metal::exp(-(e_10) - metal::log(norm));
+    }
+    float ln_z = metal::log(z_18);
+    float ln_d = ((-(_e10) * ((metal::log(q_9) - (2.0 * ln_z)) - metal::log(_e10 - 1.0))) - (4.0 * ln_z)) - metal::log((MS_PI * alpha_48.x) * alpha_48.y);
+    return metal::exp(ln_d);
+}
+
+float ms_student_t_lambda(
+    metal::float3 w_32,
+    metal::float2 alpha_49,
+    uint table_5,
+    device type_7 const& ms_tables,
+    constant _mslBufferSizes& _buffer_sizes
+) {
+    float _e3 = ms_shape_lambda(table_5, w_32, alpha_49, ms_tables, _buffer_sizes);
+    return _e3;
+}
+
+float ms_student_t_g1_(
+    metal::float3 w_33,
+    metal::float2 alpha_50,
+    uint table_6,
+    device type_7 const& ms_tables,
+    constant _mslBufferSizes& _buffer_sizes
+) {
+    float _e3 = ms_student_t_lambda(w_33, alpha_50, table_6, ms_tables, _buffer_sizes);
+    return 1.0 / (1.0 + _e3);
+}
+
+float ms_student_t_g2_(
+    metal::float3 wo_15,
+    metal::float3 wi_15,
+    metal::float2 alpha_51,
+    uint table_7,
+    device type_7 const& ms_tables,
+    constant _mslBufferSizes& _buffer_sizes
+) {
+    float _e4 = ms_student_t_lambda(wo_15, alpha_51, table_7, ms_tables, _buffer_sizes);
+    float _e5 = ms_student_t_lambda(wi_15, alpha_51, table_7, ms_tables, _buffer_sizes);
+    return 1.0 / (1.0 + (_e4 + _e5));
+}
+
+float ms_student_t_g2_separable(
+    metal::float3 wo_16,
+    metal::float3 wi_16,
+    metal::float2 alpha_52,
+    uint table_8,
+    device type_7 const& ms_tables,
+    constant _mslBufferSizes& _buffer_sizes
+) {
+    float _e4 = ms_student_t_g1_(wo_16, alpha_52, table_8, ms_tables, _buffer_sizes);
+    float _e5 = ms_student_t_g1_(wi_16, alpha_52, table_8, ms_tables, _buffer_sizes);
+    return _e4 * _e5;
+}
+
+float ms_student_t_pdf(
+    metal::float3 w_34,
+    metal::float3 wm_16,
+    metal::float2 alpha_53,
+    uint table_9,
+    device type_7 const& ms_tables,
+    constant _mslBufferSizes& _buffer_sizes
+) {
+    float c_5 = {};
+    bool local_30 = {};
+    float z_19 = metal::abs(w_34.z);
+    float _e6 = ms_dot(w_34, wm_16);
+    c_5 = _e6;
+    if (w_34.z < 0.0) {
+        float _e11 = c_5;
+        c_5 = -(_e11);
+    }
+    float _e13 = c_5;
+    if (_e13 > 0.0) {
+        local_30 = z_19 > 0.0;
+    } else {
+        local_30 = false;
+    }
+    bool _e21 = local_30;
+    if (!(_e21)) {
+        return 0.0;
+    }
+    float _e24 = ms_student_t_g1_(w_34, alpha_53, table_9, ms_tables, _buffer_sizes);
+    float _e25 = c_5;
+    float _e27 = ms_student_t_d(wm_16, alpha_53, table_9, ms_tables, _buffer_sizes);
+    return ((_e24 * _e25) * _e27) / z_19;
+}
+
+float ms_student_t_pdf_dcos(
+    metal::float3 wm_17,
+    metal::float2 alpha_54,
+    uint table_10,
+    device type_7 const& ms_tables,
+    constant _mslBufferSizes& _buffer_sizes
+) {
+    if (!((wm_17.z > 0.0))) {
+        return 0.0;
+    }
+    float _e8 = ms_student_t_d(wm_17, alpha_54, table_10, ms_tables, _buffer_sizes);
+    return _e8 * wm_17.z;
+}
+
+MsSample ms_student_t_sample_dcos(
+    metal::float2 alpha_55,
+    metal::float2 u_20,
+    uint table_11,
+    device type_7 const& ms_tables,
+    constant _mslBufferSizes& _buffer_sizes
+) {
+    metal::float3 v_8 = {};
+    float _e3 = ms_student_t_gamma(table_11, ms_tables, _buffer_sizes);
+    float g1_1 = _e3 - 1.0;
+    float _e7 = ms_bk_ln_1m(u_20.x);
+    float _e10 = ms_expm1_(-(_e7) / g1_1);
+    float r_21 = metal::sqrt(g1_1 * _e10);
+    metal::float2 _e14 = ms_cos_sin_turn(u_20.y);
+    if (r_21 > 1.0) {
+        v_8 = metal::float3(alpha_55.x * _e14.x, alpha_55.y * _e14.y, 1.0 / r_21);
+    } else {
+        v_8 = metal::float3((alpha_55.x * r_21) * _e14.x, (alpha_55.y * r_21) * _e14.y, 1.0);
+    }
+    metal::float3 _e37 = v_8;
+    metal::float3 _e38 = ms_unit_normal(_e37);
+    float _e39 = ms_student_t_pdf_dcos(_e38, alpha_55, table_11, ms_tables, _buffer_sizes);
+    return MsSample {_e38, _e39};
+}
+
+MsSample ms_student_t_sample(
+    metal::float3 w_35,
+    metal::float2 alpha_56,
+    metal::float2 u_21,
+    uint table_12,
+    device type_7 const& ms_tables,
+    constant _mslBufferSizes& _buffer_sizes
+) {
+    metal::float3 _e5 = ms_mixture_sample_wm(0u, table_12, w_35, alpha_56, u_21, ms_tables, _buffer_sizes);
+    metal::float3 _e6 = ms_unit(w_35);
+    float _e7 = ms_student_t_pdf(_e6, _e5, alpha_56, table_12, ms_tables, _buffer_sizes);
+    return MsSample {_e5, _e7};
+}
+
 float ms_d(
     MsMicrofacet mf,
-    metal::float3 wm_15,
+    metal::float3 wm_18,
     device type_7 const& ms_tables,
     constant _mslBufferSizes& _buffer_sizes
 ) {
     if (mf.ndf == MS_NDF_GGX) {
-        float _e6 = ms_ggx_d(wm_15, mf.alpha);
+        float _e6 = ms_ggx_d(wm_18, mf.alpha);
         return _e6;
     }
     if (mf.ndf == MS_NDF_BECKMANN) {
-        float _e11 = ms_beckmann_d(wm_15, mf.alpha);
+        float _e11 = ms_beckmann_d(wm_18, mf.alpha);
         return _e11;
     }
     if (mf.ndf == MS_NDF_DOUBLE_GGX) {
-        float _e16 = ms_double_ggx_d(wm_15, mf.alpha, ms_tables, _buffer_sizes);
+        float _e16 = ms_double_ggx_d(wm_18, mf.alpha, ms_tables, _buffer_sizes);
         return _e16;
     }
     if (mf.ndf == MS_NDF_EXPONENTIAL) {
-        float _e21 = ms_exponential_d(wm_15, mf.alpha);
+        float _e21 = ms_exponential_d(wm_18, mf.alpha);
         return _e21;
+    }
+    if (mf.ndf == MS_NDF_STUDENT_T) {
+        float _e27 = ms_student_t_d(wm_18, mf.alpha, mf.table, ms_tables, _buffer_sizes);
+        return _e27;
     }
     return 0.0;
 }
 
 float ms_lambda(
     MsMicrofacet mf_1,
-    metal::float3 w_29,
+    metal::float3 w_36,
     device type_7 const& ms_tables,
     constant _mslBufferSizes& _buffer_sizes
 ) {
     if (mf_1.ndf == MS_NDF_GGX) {
-        float _e6 = ms_ggx_lambda(w_29, mf_1.alpha);
+        float _e6 = ms_ggx_lambda(w_36, mf_1.alpha);
         return _e6;
     }
     if (mf_1.ndf == MS_NDF_BECKMANN) {
-        float _e11 = ms_beckmann_lambda(w_29, mf_1.alpha, ms_tables, _buffer_sizes);
+        float _e11 = ms_beckmann_lambda(w_36, mf_1.alpha, ms_tables, _buffer_sizes);
         return _e11;
     }
     if (mf_1.ndf == MS_NDF_DOUBLE_GGX) {
-        float _e16 = ms_double_ggx_lambda(w_29, mf_1.alpha, ms_tables, _buffer_sizes);
+        float _e16 = ms_double_ggx_lambda(w_36, mf_1.alpha, ms_tables, _buffer_sizes);
         return _e16;
     }
     if (mf_1.ndf == MS_NDF_EXPONENTIAL) {
-        float _e21 = ms_exponential_lambda(w_29, mf_1.alpha, ms_tables, _buffer_sizes);
+        float _e21 = ms_exponential_lambda(w_36, mf_1.alpha, ms_tables, _buffer_sizes);
         return _e21;
+    }
+    if (mf_1.ndf == MS_NDF_STUDENT_T) {
+        float _e27 = ms_student_t_lambda(w_36, mf_1.alpha, mf_1.table, ms_tables, _buffer_sizes);
+        return _e27;
     }
     return 0.0;
 }
 
 float ms_g1_(
     MsMicrofacet mf_2,
-    metal::float3 w_30,
+    metal::float3 w_37,
     device type_7 const& ms_tables,
     constant _mslBufferSizes& _buffer_sizes
 ) {
     if (mf_2.ndf == MS_NDF_GGX) {
-        float _e6 = ms_ggx_g1_(w_30, mf_2.alpha);
+        float _e6 = ms_ggx_g1_(w_37, mf_2.alpha);
         return _e6;
     }
     if (mf_2.ndf == MS_NDF_BECKMANN) {
-        float _e11 = ms_beckmann_g1_(w_30, mf_2.alpha, ms_tables, _buffer_sizes);
+        float _e11 = ms_beckmann_g1_(w_37, mf_2.alpha, ms_tables, _buffer_sizes);
         return _e11;
     }
     if (mf_2.ndf == MS_NDF_DOUBLE_GGX) {
-        float _e16 = ms_double_ggx_g1_(w_30, mf_2.alpha, ms_tables, _buffer_sizes);
+        float _e16 = ms_double_ggx_g1_(w_37, mf_2.alpha, ms_tables, _buffer_sizes);
         return _e16;
     }
     if (mf_2.ndf == MS_NDF_EXPONENTIAL) {
-        float _e21 = ms_exponential_g1_(w_30, mf_2.alpha, ms_tables, _buffer_sizes);
+        float _e21 = ms_exponential_g1_(w_37, mf_2.alpha, ms_tables, _buffer_sizes);
         return _e21;
+    }
+    if (mf_2.ndf == MS_NDF_STUDENT_T) {
+        float _e27 = ms_student_t_g1_(w_37, mf_2.alpha, mf_2.table, ms_tables, _buffer_sizes);
+        return _e27;
     }
     return 0.0;
 }
 
 float ms_g2_(
     MsMicrofacet mf_3,
-    metal::float3 wo_15,
-    metal::float3 wi_15,
+    metal::float3 wo_17,
+    metal::float3 wi_17,
     device type_7 const& ms_tables,
     constant _mslBufferSizes& _buffer_sizes
 ) {
     if (mf_3.ndf == MS_NDF_GGX) {
-        float _e7 = ms_ggx_g2_(wo_15, wi_15, mf_3.alpha);
+        float _e7 = ms_ggx_g2_(wo_17, wi_17, mf_3.alpha);
         return _e7;
     }
     if (mf_3.ndf == MS_NDF_BECKMANN) {
-        float _e12 = ms_beckmann_g2_(wo_15, wi_15, mf_3.alpha, ms_tables, _buffer_sizes);
+        float _e12 = ms_beckmann_g2_(wo_17, wi_17, mf_3.alpha, ms_tables, _buffer_sizes);
         return _e12;
     }
     if (mf_3.ndf == MS_NDF_DOUBLE_GGX) {
-        float _e17 = ms_double_ggx_g2_(wo_15, wi_15, mf_3.alpha, ms_tables, _buffer_sizes);
+        float _e17 = ms_double_ggx_g2_(wo_17, wi_17, mf_3.alpha, ms_tables, _buffer_sizes);
         return _e17;
     }
     if (mf_3.ndf == MS_NDF_EXPONENTIAL) {
-        float _e22 = ms_exponential_g2_(wo_15, wi_15, mf_3.alpha, ms_tables, _buffer_sizes);
+        float _e22 = ms_exponential_g2_(wo_17, wi_17, mf_3.alpha, ms_tables, _buffer_sizes);
         return _e22;
+    }
+    if (mf_3.ndf == MS_NDF_STUDENT_T) {
+        float _e28 = ms_student_t_g2_(wo_17, wi_17, mf_3.alpha, mf_3.table, ms_tables, _buffer_sizes);
+        return _e28;
     }
     return 0.0;
 }
 
 float ms_g2_separable(
     MsMicrofacet mf_4,
-    metal::float3 wo_16,
-    metal::float3 wi_16,
+    metal::float3 wo_18,
+    metal::float3 wi_18,
     device type_7 const& ms_tables,
     constant _mslBufferSizes& _buffer_sizes
 ) {
-    float _e3 = ms_g1_(mf_4, wo_16, ms_tables, _buffer_sizes);
-    float _e4 = ms_g1_(mf_4, wi_16, ms_tables, _buffer_sizes);
+    float _e3 = ms_g1_(mf_4, wo_18, ms_tables, _buffer_sizes);
+    float _e4 = ms_g1_(mf_4, wi_18, ms_tables, _buffer_sizes);
     return _e3 * _e4;
 }
 
 float ms_pdf(
     MsMicrofacet mf_5,
-    metal::float3 w_31,
-    metal::float3 wm_16,
+    metal::float3 w_38,
+    metal::float3 wm_19,
     device type_7 const& ms_tables,
     constant _mslBufferSizes& _buffer_sizes
 ) {
     if (mf_5.ndf == MS_NDF_GGX) {
-        float _e7 = ms_ggx_pdf(w_31, wm_16, mf_5.alpha);
+        float _e7 = ms_ggx_pdf(w_38, wm_19, mf_5.alpha);
         return _e7;
     }
     if (mf_5.ndf == MS_NDF_BECKMANN) {
-        float _e12 = ms_beckmann_pdf(w_31, wm_16, mf_5.alpha, ms_tables, _buffer_sizes);
+        float _e12 = ms_beckmann_pdf(w_38, wm_19, mf_5.alpha, ms_tables, _buffer_sizes);
         return _e12;
     }
     if (mf_5.ndf == MS_NDF_DOUBLE_GGX) {
-        float _e17 = ms_double_ggx_pdf(w_31, wm_16, mf_5.alpha, ms_tables, _buffer_sizes);
+        float _e17 = ms_double_ggx_pdf(w_38, wm_19, mf_5.alpha, ms_tables, _buffer_sizes);
         return _e17;
     }
     if (mf_5.ndf == MS_NDF_EXPONENTIAL) {
-        float _e22 = ms_exponential_pdf(w_31, wm_16, mf_5.alpha, ms_tables, _buffer_sizes);
+        float _e22 = ms_exponential_pdf(w_38, wm_19, mf_5.alpha, ms_tables, _buffer_sizes);
         return _e22;
+    }
+    if (mf_5.ndf == MS_NDF_STUDENT_T) {
+        float _e28 = ms_student_t_pdf(w_38, wm_19, mf_5.alpha, mf_5.table, ms_tables, _buffer_sizes);
+        return _e28;
     }
     return 0.0;
 }
 
-MsSample ms_sample(
+float ms_pdf_dcos(
     MsMicrofacet mf_6,
-    metal::float3 w_32,
-    metal::float2 u_19,
+    metal::float3 wm_20,
     device type_7 const& ms_tables,
     constant _mslBufferSizes& _buffer_sizes
 ) {
-    if (mf_6.ndf == MS_NDF_GGX) {
-        MsSample _e7 = ms_ggx_sample(w_32, mf_6.alpha, u_19);
+    if (!((wm_20.z > 0.0))) {
+        return 0.0;
+    }
+    float _e7 = ms_d(mf_6, wm_20, ms_tables, _buffer_sizes);
+    return _e7 * wm_20.z;
+}
+
+MsSample ms_sample(
+    MsMicrofacet mf_7,
+    metal::float3 w_39,
+    metal::float2 u_22,
+    device type_7 const& ms_tables,
+    constant _mslBufferSizes& _buffer_sizes
+) {
+    if (mf_7.ndf == MS_NDF_GGX) {
+        MsSample _e7 = ms_ggx_sample(w_39, mf_7.alpha, u_22);
         return _e7;
     }
-    if (mf_6.ndf == MS_NDF_BECKMANN) {
-        MsSample _e12 = ms_beckmann_sample(w_32, mf_6.alpha, u_19, ms_tables, _buffer_sizes);
+    if (mf_7.ndf == MS_NDF_BECKMANN) {
+        MsSample _e12 = ms_beckmann_sample(w_39, mf_7.alpha, u_22, ms_tables, _buffer_sizes);
         return _e12;
     }
-    if (mf_6.ndf == MS_NDF_DOUBLE_GGX) {
-        MsSample _e17 = ms_double_ggx_sample(w_32, mf_6.alpha, u_19, ms_tables, _buffer_sizes);
+    if (mf_7.ndf == MS_NDF_DOUBLE_GGX) {
+        MsSample _e17 = ms_double_ggx_sample(w_39, mf_7.alpha, u_22, ms_tables, _buffer_sizes);
         return _e17;
     }
-    if (mf_6.ndf == MS_NDF_EXPONENTIAL) {
-        MsSample _e22 = ms_exponential_sample(w_32, mf_6.alpha, u_19, ms_tables, _buffer_sizes);
+    if (mf_7.ndf == MS_NDF_EXPONENTIAL) {
+        MsSample _e22 = ms_exponential_sample(w_39, mf_7.alpha, u_22, ms_tables, _buffer_sizes);
         return _e22;
+    }
+    if (mf_7.ndf == MS_NDF_STUDENT_T) {
+        MsSample _e28 = ms_student_t_sample(w_39, mf_7.alpha, u_22, mf_7.table, ms_tables, _buffer_sizes);
+        return _e28;
     }
     return MsSample {metal::float3(0.0, 0.0, 1.0), 0.0};
 }
 
 MsSample ms_sample_dcos(
-    MsMicrofacet mf_7,
-    metal::float2 u_20,
+    MsMicrofacet mf_8,
+    metal::float2 u_23,
     device type_7 const& ms_tables,
     constant _mslBufferSizes& _buffer_sizes
 ) {
-    if (mf_7.ndf == MS_NDF_GGX) {
-        MsSample _e6 = ms_ggx_sample_dcos(mf_7.alpha, u_20);
+    if (mf_8.ndf == MS_NDF_GGX) {
+        MsSample _e6 = ms_ggx_sample_dcos(mf_8.alpha, u_23);
         return _e6;
     }
-    if (mf_7.ndf == MS_NDF_BECKMANN) {
-        MsSample _e11 = ms_beckmann_sample_dcos(mf_7.alpha, u_20);
+    if (mf_8.ndf == MS_NDF_BECKMANN) {
+        MsSample _e11 = ms_beckmann_sample_dcos(mf_8.alpha, u_23);
         return _e11;
     }
-    if (mf_7.ndf == MS_NDF_DOUBLE_GGX) {
-        MsSample _e16 = ms_double_ggx_sample_dcos(mf_7.alpha, u_20, ms_tables, _buffer_sizes);
+    if (mf_8.ndf == MS_NDF_DOUBLE_GGX) {
+        MsSample _e16 = ms_double_ggx_sample_dcos(mf_8.alpha, u_23, ms_tables, _buffer_sizes);
         return _e16;
     }
-    if (mf_7.ndf == MS_NDF_EXPONENTIAL) {
-        MsSample _e21 = ms_exponential_sample_dcos(mf_7.alpha, u_20, ms_tables, _buffer_sizes);
+    if (mf_8.ndf == MS_NDF_EXPONENTIAL) {
+        MsSample _e21 = ms_exponential_sample_dcos(mf_8.alpha, u_23, ms_tables, _buffer_sizes);
         return _e21;
+    }
+    if (mf_8.ndf == MS_NDF_STUDENT_T) {
+        MsSample _e27 = ms_student_t_sample_dcos(mf_8.alpha, u_23, mf_8.table, ms_tables, _buffer_sizes);
+        return _e27;
     }
     return MsSample {metal::float3(0.0, 0.0, 1.0), 0.0};
 }
 
 bool ms_effectively_smooth(
-    MsMicrofacet mf_8
+    MsMicrofacet mf_9
 ) {
-    return metal::max(mf_8.alpha.x, mf_8.alpha.y) < 0.001;
+    return metal::max(mf_9.alpha.x, mf_9.alpha.y) < 0.001;
 }
 
 bool ms_on_horizon(
-    float z_2
+    float z_4
 ) {
-    return !((metal::abs(z_2) >= 0.000000000000000001));
+    return !((metal::abs(z_4) >= 0.000000000000000001));
 }
 
 bool ms_usable(
-    float v_6
+    float v_9
 ) {
-    bool local_25 = {};
-    if (v_6 >= 0.000000000000000000011754944) {
-        local_25 = v_6 <= 340282350000000000000000000000000000000.0;
+    bool local_31 = {};
+    if (v_9 >= 0.000000000000000000011754944) {
+        local_31 = v_9 <= 340282350000000000000000000000000000000.0;
     } else {
-        local_25 = false;
+        local_31 = false;
     }
-    bool _e8 = local_25;
+    bool _e8 = local_31;
     return _e8;
 }
 
 float ms_masking_g2_(
-    MsMicrofacet mf_9,
+    MsMicrofacet mf_10,
     uint masking,
-    metal::float3 wo_17,
-    metal::float3 wi_17,
+    metal::float3 wo_19,
+    metal::float3 wi_19,
     device type_7 const& ms_tables,
     constant _mslBufferSizes& _buffer_sizes
 ) {
     if (masking == MS_MASKING_SEPARABLE) {
-        float _e6 = ms_g2_separable(mf_9, wo_17, wi_17, ms_tables, _buffer_sizes);
+        float _e6 = ms_g2_separable(mf_10, wo_19, wi_19, ms_tables, _buffer_sizes);
         return _e6;
     }
-    float _e7 = ms_g2_(mf_9, wo_17, wi_17, ms_tables, _buffer_sizes);
+    float _e7 = ms_g2_(mf_10, wo_19, wi_19, ms_tables, _buffer_sizes);
     return _e7;
 }
 
 float ms_reflected(
-    MsMicrofacet mf_10,
+    MsMicrofacet mf_11,
     uint masking_1,
-    metal::float3 wo_18,
-    metal::float3 wi_18,
+    metal::float3 wo_20,
+    metal::float3 wi_20,
     float d_wm,
     device type_7 const& ms_tables,
     constant _mslBufferSizes& _buffer_sizes
 ) {
-    float _e5 = ms_masking_g2_(mf_10, masking_1, wo_18, wi_18, ms_tables, _buffer_sizes);
-    return (d_wm * _e5) / (4.0 * metal::abs(wo_18.z * wi_18.z));
+    float _e5 = ms_masking_g2_(mf_11, masking_1, wo_20, wi_20, ms_tables, _buffer_sizes);
+    return (d_wm * _e5) / (4.0 * metal::abs(wo_20.z * wi_20.z));
 }
 
 metal::float3 ms_weighted(
     metal::float3 fr_1,
-    float k_5
+    float k_7
 ) {
-    return metal::select(fr_1 * k_5, metal::float3(0.0), fr_1 == metal::float3(0.0));
+    return metal::select(fr_1 * k_7, metal::float3(0.0), fr_1 == metal::float3(0.0));
 }
 
 metal::float3 ms_conductor_lobe_normal(
-    MsConductor c_5,
-    metal::float3 wo_19,
-    metal::float3 wi_19
+    MsConductor c_6,
+    metal::float3 wo_21,
+    metal::float3 wi_21
 ) {
-    bool local_26 = {};
-    bool local_27 = {};
-    bool local_28 = {};
-    bool _e3 = ms_same_hemisphere(wo_19, wi_19);
+    bool local_32 = {};
+    bool local_33 = {};
+    bool local_34 = {};
+    bool _e3 = ms_same_hemisphere(wo_21, wi_21);
     if (!(!(_e3))) {
-        bool _e9 = ms_on_horizon(wo_19.z);
-        local_26 = _e9;
+        bool _e9 = ms_on_horizon(wo_21.z);
+        local_32 = _e9;
     } else {
-        local_26 = true;
+        local_32 = true;
     }
-    bool _e11 = local_26;
+    bool _e11 = local_32;
     if (!(_e11)) {
-        bool _e16 = ms_on_horizon(wi_19.z);
-        local_27 = _e16;
+        bool _e16 = ms_on_horizon(wi_21.z);
+        local_33 = _e16;
     } else {
-        local_27 = true;
+        local_33 = true;
     }
-    bool _e18 = local_27;
+    bool _e18 = local_33;
     if (!(_e18)) {
-        bool _e23 = ms_effectively_smooth(c_5.mf);
-        local_28 = _e23;
+        bool _e23 = ms_effectively_smooth(c_6.mf);
+        local_34 = _e23;
     } else {
-        local_28 = true;
+        local_34 = true;
     }
-    bool _e25 = local_28;
+    bool _e25 = local_34;
     if (_e25) {
         return metal::float3(0.0);
     }
-    metal::float3 _e28 = ms_half_vector_reflection(wo_19, wi_19);
+    metal::float3 _e28 = ms_half_vector_reflection(wo_21, wi_21);
     return _e28;
 }
 
 metal::float3 ms_conductor_eval(
-    MsConductor c_6,
-    metal::float3 wo_20,
-    metal::float3 wi_20,
-    device type_7 const& ms_tables,
-    constant _mslBufferSizes& _buffer_sizes
-) {
-    metal::float3 _e3 = ms_conductor_lobe_normal(c_6, wo_20, wi_20);
-    bool _e4 = ms_half_vector_ok(_e3);
-    if (!(_e4)) {
-        return metal::float3(0.0);
-    }
-    float _e9 = ms_dot(wo_20, _e3);
-    float _e11 = ms_dot(wi_20, _e3);
-    metal::float3 _e16 = ms_fresnel_eval(c_6.fresnel, 0.5 * (metal::abs(_e9) + metal::abs(_e11)));
-    float _e20 = ms_d(c_6.mf, _e3, ms_tables, _buffer_sizes);
-    float _e21 = ms_reflected(c_6.mf, c_6.masking, wo_20, wi_20, _e20, ms_tables, _buffer_sizes);
-    metal::float3 _e22 = ms_weighted(_e16, _e21);
-    return _e22;
-}
-
-float ms_conductor_pdf(
     MsConductor c_7,
-    metal::float3 wo_21,
-    metal::float3 wi_21,
-    device type_7 const& ms_tables,
-    constant _mslBufferSizes& _buffer_sizes
-) {
-    metal::float3 _e3 = ms_conductor_lobe_normal(c_7, wo_21, wi_21);
-    bool _e4 = ms_half_vector_ok(_e3);
-    if (!(_e4)) {
-        return 0.0;
-    }
-    float _e8 = ms_pdf(c_7.mf, wo_21, _e3, ms_tables, _buffer_sizes);
-    float _e9 = ms_dot(wo_21, _e3);
-    return _e8 / (4.0 * metal::abs(_e9));
-}
-
-metal::float4 ms_conductor_eval_pdf(
-    MsConductor c_8,
     metal::float3 wo_22,
     metal::float3 wi_22,
     device type_7 const& ms_tables,
     constant _mslBufferSizes& _buffer_sizes
 ) {
-    metal::float3 _e3 = ms_conductor_lobe_normal(c_8, wo_22, wi_22);
+    metal::float3 _e3 = ms_conductor_lobe_normal(c_7, wo_22, wi_22);
+    bool _e4 = ms_half_vector_ok(_e3);
+    if (!(_e4)) {
+        return metal::float3(0.0);
+    }
+    float _e9 = ms_dot(wo_22, _e3);
+    float _e11 = ms_dot(wi_22, _e3);
+    metal::float3 _e16 = ms_fresnel_eval(c_7.fresnel, 0.5 * (metal::abs(_e9) + metal::abs(_e11)));
+    float _e20 = ms_d(c_7.mf, _e3, ms_tables, _buffer_sizes);
+    float _e21 = ms_reflected(c_7.mf, c_7.masking, wo_22, wi_22, _e20, ms_tables, _buffer_sizes);
+    metal::float3 _e22 = ms_weighted(_e16, _e21);
+    return _e22;
+}
+
+float ms_conductor_pdf(
+    MsConductor c_8,
+    metal::float3 wo_23,
+    metal::float3 wi_23,
+    device type_7 const& ms_tables,
+    constant _mslBufferSizes& _buffer_sizes
+) {
+    metal::float3 _e3 = ms_conductor_lobe_normal(c_8, wo_23, wi_23);
+    bool _e4 = ms_half_vector_ok(_e3);
+    if (!(_e4)) {
+        return 0.0;
+    }
+    float _e8 = ms_pdf(c_8.mf, wo_23, _e3, ms_tables, _buffer_sizes);
+    float _e9 = ms_dot(wo_23, _e3);
+    return _e8 / (4.0 * metal::abs(_e9));
+}
+
+metal::float4 ms_conductor_eval_pdf(
+    MsConductor c_9,
+    metal::float3 wo_24,
+    metal::float3 wi_24,
+    device type_7 const& ms_tables,
+    constant _mslBufferSizes& _buffer_sizes
+) {
+    metal::float3 _e3 = ms_conductor_lobe_normal(c_9, wo_24, wi_24);
     bool _e4 = ms_half_vector_ok(_e3);
     if (!(_e4)) {
         return metal::float4(0.0);
     }
-    float _e8 = ms_dot(wo_22, _e3);
+    float _e8 = ms_dot(wo_24, _e3);
     float co = metal::abs(_e8);
-    float _e11 = ms_dot(wi_22, _e3);
-    metal::float3 _e16 = ms_fresnel_eval(c_8.fresnel, 0.5 * (co + metal::abs(_e11)));
-    float _e20 = ms_d(c_8.mf, _e3, ms_tables, _buffer_sizes);
-    float _e21 = ms_reflected(c_8.mf, c_8.masking, wo_22, wi_22, _e20, ms_tables, _buffer_sizes);
+    float _e11 = ms_dot(wi_24, _e3);
+    metal::float3 _e16 = ms_fresnel_eval(c_9.fresnel, 0.5 * (co + metal::abs(_e11)));
+    float _e20 = ms_d(c_9.mf, _e3, ms_tables, _buffer_sizes);
+    float _e21 = ms_reflected(c_9.mf, c_9.masking, wo_24, wi_24, _e20, ms_tables, _buffer_sizes);
     metal::float3 _e22 = ms_weighted(_e16, _e21);
-    float _e24 = ms_pdf(c_8.mf, wo_22, _e3, ms_tables, _buffer_sizes);
+    float _e24 = ms_pdf(c_9.mf, wo_24, _e3, ms_tables, _buffer_sizes);
     return metal::float4(_e22, _e24 / (4.0 * co));
 }
 
 MsBsdfSample ms_conductor_sample(
-    MsConductor c_9,
-    metal::float3 wo_23,
+    MsConductor c_10,
+    metal::float3 wo_25,
     float uc,
-    metal::float2 u_21,
+    metal::float2 u_24,
     device type_7 const& ms_tables,
     constant _mslBufferSizes& _buffer_sizes
 ) {
-    bool local_29 = {};
+    bool local_35 = {};
     MsBsdfSample none = MsBsdfSample {metal::float3(0.0), 0.0, metal::float3(0.0), 0u, 1.0};
-    bool _e13 = ms_on_horizon(wo_23.z);
+    bool _e13 = ms_on_horizon(wo_25.z);
     if (_e13) {
         return none;
     }
-    bool _e15 = ms_effectively_smooth(c_9.mf);
+    bool _e15 = ms_effectively_smooth(c_10.mf);
     if (_e15) {
-        metal::float3 wi_36 = metal::float3(-(wo_23.x), -(wo_23.y), wo_23.z);
-        float k_9 = 1.0 / metal::abs(wi_36.z);
-        metal::float3 _e29 = ms_fresnel_eval(c_9.fresnel, metal::abs(wo_23.z));
-        return MsBsdfSample {wi_36, 1.0, _e29 * k_9, 3u, 1.0};
+        metal::float3 wi_38 = metal::float3(-(wo_25.x), -(wo_25.y), wo_25.z);
+        float k_11 = 1.0 / metal::abs(wi_38.z);
+        metal::float3 _e29 = ms_fresnel_eval(c_10.fresnel, metal::abs(wo_25.z));
+        return MsBsdfSample {wi_38, 1.0, _e29 * k_11, 3u, 1.0};
     }
-    MsSample _e36 = ms_sample(c_9.mf, wo_23, u_21, ms_tables, _buffer_sizes);
-    metal::float3 _e38 = ms_reflect(wo_23, _e36.wm);
-    bool _e39 = ms_same_hemisphere(wo_23, _e38);
+    MsSample _e36 = ms_sample(c_10.mf, wo_25, u_24, ms_tables, _buffer_sizes);
+    metal::float3 _e38 = ms_reflect(wo_25, _e36.wm);
+    bool _e39 = ms_same_hemisphere(wo_25, _e38);
     if (!(!(_e39))) {
         bool _e45 = ms_on_horizon(_e38.z);
-        local_29 = _e45;
+        local_35 = _e45;
     } else {
-        local_29 = true;
+        local_35 = true;
     }
-    bool _e47 = local_29;
+    bool _e47 = local_35;
     if (_e47) {
         return none;
     }
-    float _e49 = ms_dot(wo_23, _e36.wm);
+    float _e49 = ms_dot(wo_25, _e36.wm);
     float co_1 = metal::abs(_e49);
     float pdf = _e36.pdf / (4.0 * co_1);
     bool _e55 = ms_usable(pdf);
     if (!(_e55)) {
         return none;
     }
-    metal::float3 _e58 = ms_fresnel_eval(c_9.fresnel, co_1);
-    float _e61 = ms_d(c_9.mf, _e36.wm, ms_tables, _buffer_sizes);
+    metal::float3 _e58 = ms_fresnel_eval(c_10.fresnel, co_1);
+    float _e61 = ms_d(c_10.mf, _e36.wm, ms_tables, _buffer_sizes);
     bool _e62 = ms_usable(_e61);
     if (!(_e62)) {
         return none;
     }
-    float _e66 = ms_reflected(c_9.mf, c_9.masking, wo_23, _e38, _e61, ms_tables, _buffer_sizes);
+    float _e66 = ms_reflected(c_10.mf, c_10.masking, wo_25, _e38, _e61, ms_tables, _buffer_sizes);
     metal::float3 _e67 = ms_weighted(_e58, _e66);
     if (!(metal::all(_e67 <= metal::float3(340282350000000000000000000000000000000.0)))) {
         return none;
@@ -2845,87 +3451,87 @@ MsBsdfSample ms_conductor_sample(
 bool ms_dielectric_smooth(
     MsDielectric d_1
 ) {
-    bool local_30 = {};
+    bool local_36 = {};
     if (!((d_1.eta == 1.0))) {
         bool _e8 = ms_effectively_smooth(d_1.mf);
-        local_30 = _e8;
+        local_36 = _e8;
     } else {
-        local_30 = true;
+        local_36 = true;
     }
-    bool _e10 = local_30;
+    bool _e10 = local_36;
     return _e10;
 }
 
 float ms_dielectric_g2_(
     MsDielectric d_2,
-    metal::float3 wo_24,
-    metal::float3 wi_23,
+    metal::float3 wo_26,
+    metal::float3 wi_25,
     device type_7 const& ms_tables,
     constant _mslBufferSizes& _buffer_sizes
 ) {
-    float _e5 = ms_masking_g2_(d_2.mf, d_2.masking, wo_24, wi_23, ms_tables, _buffer_sizes);
+    float _e5 = ms_masking_g2_(d_2.mf, d_2.masking, wo_26, wi_25, ms_tables, _buffer_sizes);
     return _e5;
 }
 
 metal::float4 ms_dielectric_half(
     MsDielectric d_3,
-    metal::float3 wo_25,
-    metal::float3 wi_24
+    metal::float3 wo_27,
+    metal::float3 wi_26
 ) {
-    bool local_31 = {};
-    metal::float3 wm_17 = {};
+    bool local_37 = {};
+    metal::float3 wm_21 = {};
     float etap_4 = 1.0;
-    bool local_32 = {};
+    bool local_38 = {};
     metal::float4 none_1 = metal::float4(0.0);
-    float co_2 = wo_25.z;
-    float ci_1 = wi_24.z;
+    float co_2 = wo_27.z;
+    float ci_1 = wi_26.z;
     bool _e7 = ms_on_horizon(co_2);
     if (!(_e7)) {
         bool _e11 = ms_on_horizon(ci_1);
-        local_31 = _e11;
+        local_37 = _e11;
     } else {
-        local_31 = true;
+        local_37 = true;
     }
-    bool _e13 = local_31;
+    bool _e13 = local_37;
     if (_e13) {
         return none_1;
     }
     if ((co_2 * ci_1) > 0.0) {
-        metal::float3 _e20 = ms_half_vector_reflection(wo_25, wi_24);
-        wm_17 = _e20;
+        metal::float3 _e20 = ms_half_vector_reflection(wo_27, wi_26);
+        wm_21 = _e20;
     } else {
-        metal::float4 _e22 = ms_half_vector_refraction(wo_25, wi_24, d_3.eta);
-        wm_17 = _e22.xyz;
+        metal::float4 _e22 = ms_half_vector_refraction(wo_27, wi_26, d_3.eta);
+        wm_21 = _e22.xyz;
         etap_4 = _e22.w;
     }
-    metal::float3 _e25 = wm_17;
+    metal::float3 _e25 = wm_21;
     bool _e26 = ms_half_vector_ok(_e25);
     if (!(_e26)) {
         return none_1;
     }
-    metal::float3 _e28 = wm_17;
-    float _e29 = ms_dot(_e28, wi_24);
+    metal::float3 _e28 = wm_21;
+    float _e29 = ms_dot(_e28, wi_26);
     if (!(((_e29 * ci_1) < 0.0))) {
-        metal::float3 _e36 = wm_17;
-        float _e37 = ms_dot(_e36, wo_25);
-        local_32 = (_e37 * co_2) < 0.0;
+        metal::float3 _e36 = wm_21;
+        float _e37 = ms_dot(_e36, wo_27);
+        local_38 = (_e37 * co_2) < 0.0;
     } else {
-        local_32 = true;
+        local_38 = true;
     }
-    bool _e42 = local_32;
+    bool _e42 = local_38;
     if (_e42) {
         return none_1;
     }
-    metal::float3 _e43 = wm_17;
+    metal::float3 _e43 = wm_21;
     float _e44 = etap_4;
     return metal::float4(_e43, _e44);
 }
 
 float ms_dielectric_f_transmission(
     MsDielectric d_4,
-    metal::float3 wo_26,
-    metal::float3 wi_25,
-    metal::float3 wm_18,
+    metal::float3 wo_28,
+    metal::float3 wi_27,
+    metal::float3 wm_22,
     float d_wm_1,
     float etap_5,
     float t_2,
@@ -2933,11 +3539,11 @@ float ms_dielectric_f_transmission(
     constant _mslBufferSizes& _buffer_sizes
 ) {
     float f_2 = {};
-    float _e7 = ms_dot(wi_25, wm_18);
-    float _e8 = ms_dot(wo_26, wm_18);
-    float _e9 = ms_refraction_denominator(wo_26, wi_25, wm_18, etap_5);
-    float _e10 = ms_dielectric_g2_(d_4, wo_26, wi_25, ms_tables, _buffer_sizes);
-    float geometric = (_e10 / metal::abs(wi_25.z * wo_26.z)) * (metal::abs(_e7 * _e8) / (_e9 * _e9));
+    float _e7 = ms_dot(wi_27, wm_22);
+    float _e8 = ms_dot(wo_28, wm_22);
+    float _e9 = ms_refraction_denominator(wo_28, wi_27, wm_22, etap_5);
+    float _e10 = ms_dielectric_g2_(d_4, wo_28, wi_27, ms_tables, _buffer_sizes);
+    float geometric = (_e10 / metal::abs(wi_27.z * wo_28.z)) * (metal::abs(_e7 * _e8) / (_e9 * _e9));
     f_2 = (d_wm_1 * t_2) * geometric;
     if (d_4.transport == MS_TRANSPORT_RADIANCE) {
         float _e27 = f_2;
@@ -2949,8 +3555,8 @@ float ms_dielectric_f_transmission(
 
 float ms_dielectric_eval(
     MsDielectric d_5,
-    metal::float3 wo_27,
-    metal::float3 wi_26,
+    metal::float3 wo_29,
+    metal::float3 wi_28,
     device type_7 const& ms_tables,
     constant _mslBufferSizes& _buffer_sizes
 ) {
@@ -2958,26 +3564,26 @@ float ms_dielectric_eval(
     if (_e3) {
         return 0.0;
     }
-    metal::float4 _e5 = ms_dielectric_half(d_5, wo_27, wi_26);
+    metal::float4 _e5 = ms_dielectric_half(d_5, wo_29, wi_28);
     if (_e5.w == 0.0) {
         return 0.0;
     }
-    metal::float3 wm_19 = _e5.xyz;
-    float _e11 = ms_dot(wo_27, wm_19);
+    metal::float3 wm_23 = _e5.xyz;
+    float _e11 = ms_dot(wo_29, wm_23);
     float _e13 = ms_fresnel_dielectric(_e11, d_5.eta);
-    float _e15 = ms_d(d_5.mf, wm_19, ms_tables, _buffer_sizes);
-    if ((wo_27.z * wi_26.z) > 0.0) {
-        float _e23 = ms_reflected(d_5.mf, d_5.masking, wo_27, wi_26, _e15, ms_tables, _buffer_sizes);
+    float _e15 = ms_d(d_5.mf, wm_23, ms_tables, _buffer_sizes);
+    if ((wo_29.z * wi_28.z) > 0.0) {
+        float _e23 = ms_reflected(d_5.mf, d_5.masking, wo_29, wi_28, _e15, ms_tables, _buffer_sizes);
         return _e13 * _e23;
     }
-    float _e28 = ms_dielectric_f_transmission(d_5, wo_27, wi_26, wm_19, _e15, _e5.w, 1.0 - _e13, ms_tables, _buffer_sizes);
+    float _e28 = ms_dielectric_f_transmission(d_5, wo_29, wi_28, wm_23, _e15, _e5.w, 1.0 - _e13, ms_tables, _buffer_sizes);
     return _e28;
 }
 
 float ms_dielectric_pdf(
     MsDielectric d_6,
-    metal::float3 wo_28,
-    metal::float3 wi_27,
+    metal::float3 wo_30,
+    metal::float3 wi_29,
     device type_7 const& ms_tables,
     constant _mslBufferSizes& _buffer_sizes
 ) {
@@ -2985,167 +3591,167 @@ float ms_dielectric_pdf(
     if (_e3) {
         return 0.0;
     }
-    metal::float4 _e5 = ms_dielectric_half(d_6, wo_28, wi_27);
+    metal::float4 _e5 = ms_dielectric_half(d_6, wo_30, wi_29);
     if (_e5.w == 0.0) {
         return 0.0;
     }
-    metal::float3 wm_20 = _e5.xyz;
-    float _e11 = ms_dot(wo_28, wm_20);
+    metal::float3 wm_24 = _e5.xyz;
+    float _e11 = ms_dot(wo_30, wm_24);
     float _e13 = ms_fresnel_dielectric(_e11, d_6.eta);
-    float _e15 = ms_pdf(d_6.mf, wo_28, wm_20, ms_tables, _buffer_sizes);
-    if ((wo_28.z * wi_27.z) > 0.0) {
-        float _e22 = ms_dot(wo_28, wm_20);
+    float _e15 = ms_pdf(d_6.mf, wo_30, wm_24, ms_tables, _buffer_sizes);
+    if ((wo_30.z * wi_29.z) > 0.0) {
+        float _e22 = ms_dot(wo_30, wm_24);
         return (_e15 * _e13) / (4.0 * metal::abs(_e22));
     }
-    float _e31 = ms_jacobian_refraction(wo_28, wi_27, wm_20, _e5.w);
+    float _e31 = ms_jacobian_refraction(wo_30, wi_29, wm_24, _e5.w);
     return (_e15 * (1.0 - _e13)) * _e31;
 }
 
 MsBsdfSample ms_dielectric_sample_smooth(
     MsDielectric d_7,
-    metal::float3 wo_29,
+    metal::float3 wo_31,
     float uc_1
 ) {
     float f_3 = {};
-    float _e5 = ms_fresnel_dielectric(wo_29.z, d_7.eta);
+    float _e5 = ms_fresnel_dielectric(wo_31.z, d_7.eta);
     if (uc_1 < _e5) {
-        metal::float3 wi_37 = metal::float3(-(wo_29.x), -(wo_29.y), wo_29.z);
-        return MsBsdfSample {wi_37, _e5, metal::float3(_e5 / metal::abs(wi_37.z)), 3u, 1.0};
+        metal::float3 wi_39 = metal::float3(-(wo_31.x), -(wo_31.y), wo_31.z);
+        return MsBsdfSample {wi_39, _e5, metal::float3(_e5 / metal::abs(wi_39.z)), 3u, 1.0};
     }
     MsBsdfSample none_2 = MsBsdfSample {metal::float3(0.0), 0.0, metal::float3(0.0), 0u, 1.0};
-    metal::float4 _e33 = ms_refract(wo_29, metal::float3(0.0, 0.0, 1.0), d_7.eta);
+    metal::float4 _e33 = ms_refract(wo_31, metal::float3(0.0, 0.0, 1.0), d_7.eta);
     if (_e33.w == 0.0) {
         return none_2;
     }
-    metal::float3 wi_38 = _e33.xyz;
-    bool _e39 = ms_on_horizon(wi_38.z);
+    metal::float3 wi_40 = _e33.xyz;
+    bool _e39 = ms_on_horizon(wi_40.z);
     if (_e39) {
         return none_2;
     }
-    float t_12 = 1.0 - _e5;
-    f_3 = t_12 / metal::abs(wi_38.z);
+    float t_13 = 1.0 - _e5;
+    f_3 = t_13 / metal::abs(wi_40.z);
     if (d_7.transport == MS_TRANSPORT_RADIANCE) {
         float _e49 = f_3;
         f_3 = _e49 / (_e33.w * _e33.w);
     }
     float _e54 = f_3;
-    return MsBsdfSample {wi_38, t_12, metal::float3(_e54), 7u, _e33.w};
+    return MsBsdfSample {wi_40, t_13, metal::float3(_e54), 7u, _e33.w};
 }
 
 MsBsdfSample ms_dielectric_sample(
     MsDielectric d_8,
-    metal::float3 wo_30,
+    metal::float3 wo_32,
     float uc_2,
-    metal::float2 u_22,
+    metal::float2 u_25,
     device type_7 const& ms_tables,
     constant _mslBufferSizes& _buffer_sizes
 ) {
-    bool local_33 = {};
-    bool local_34 = {};
-    bool local_35 = {};
-    bool local_36 = {};
+    bool local_39 = {};
+    bool local_40 = {};
+    bool local_41 = {};
+    bool local_42 = {};
     MsBsdfSample none_3 = MsBsdfSample {metal::float3(0.0), 0.0, metal::float3(0.0), 0u, 1.0};
-    bool _e13 = ms_on_horizon(wo_30.z);
+    bool _e13 = ms_on_horizon(wo_32.z);
     if (_e13) {
         return none_3;
     }
     bool _e14 = ms_dielectric_smooth(d_8);
     if (_e14) {
-        MsBsdfSample _e15 = ms_dielectric_sample_smooth(d_8, wo_30, uc_2);
+        MsBsdfSample _e15 = ms_dielectric_sample_smooth(d_8, wo_32, uc_2);
         return _e15;
     }
-    MsSample _e17 = ms_sample(d_8.mf, wo_30, u_22, ms_tables, _buffer_sizes);
-    metal::float3 wm_21 = _e17.wm;
-    float _e19 = ms_dot(wo_30, wm_21);
+    MsSample _e17 = ms_sample(d_8.mf, wo_32, u_25, ms_tables, _buffer_sizes);
+    metal::float3 wm_25 = _e17.wm;
+    float _e19 = ms_dot(wo_32, wm_25);
     float _e21 = ms_fresnel_dielectric(_e19, d_8.eta);
     if (uc_2 < _e21) {
-        metal::float3 _e23 = ms_reflect(wo_30, wm_21);
-        bool _e24 = ms_same_hemisphere(wo_30, _e23);
+        metal::float3 _e23 = ms_reflect(wo_32, wm_25);
+        bool _e24 = ms_same_hemisphere(wo_32, _e23);
         if (!(!(_e24))) {
             bool _e30 = ms_on_horizon(_e23.z);
-            local_33 = _e30;
+            local_39 = _e30;
         } else {
-            local_33 = true;
+            local_39 = true;
         }
-        bool _e32 = local_33;
+        bool _e32 = local_39;
         if (_e32) {
             return none_3;
         }
-        float _e34 = ms_d(d_8.mf, wm_21, ms_tables, _buffer_sizes);
+        float _e34 = ms_d(d_8.mf, wm_25, ms_tables, _buffer_sizes);
         bool _e35 = ms_usable(_e34);
         if (!(_e35)) {
             return none_3;
         }
-        float _e39 = ms_reflected(d_8.mf, d_8.masking, wo_30, _e23, _e34, ms_tables, _buffer_sizes);
+        float _e39 = ms_reflected(d_8.mf, d_8.masking, wo_32, _e23, _e34, ms_tables, _buffer_sizes);
         float f_5 = _e21 * _e39;
         float pdf_1 = (_e17.pdf * _e21) / (4.0 * metal::abs(_e19));
         bool _e47 = ms_usable(pdf_1);
         if (!(!(_e47))) {
-            local_34 = !((f_5 <= 340282350000000000000000000000000000000.0));
+            local_40 = !((f_5 <= 340282350000000000000000000000000000000.0));
         } else {
-            local_34 = true;
+            local_40 = true;
         }
-        bool _e56 = local_34;
+        bool _e56 = local_40;
         if (_e56) {
             return none_3;
         }
         return MsBsdfSample {_e23, pdf_1, metal::float3(f_5), MS_SAMPLE_VALID, 1.0};
     }
-    metal::float4 _e62 = ms_refract(wo_30, wm_21, d_8.eta);
+    metal::float4 _e62 = ms_refract(wo_32, wm_25, d_8.eta);
     if (_e62.w == 0.0) {
         return none_3;
     }
-    metal::float3 wi_39 = _e62.xyz;
+    metal::float3 wi_41 = _e62.xyz;
     float etap_6 = _e62.w;
-    bool _e68 = ms_same_hemisphere(wo_30, wi_39);
+    bool _e68 = ms_same_hemisphere(wo_32, wi_41);
     if (!(_e68)) {
-        bool _e73 = ms_on_horizon(wi_39.z);
-        local_35 = _e73;
+        bool _e73 = ms_on_horizon(wi_41.z);
+        local_41 = _e73;
     } else {
-        local_35 = true;
+        local_41 = true;
     }
-    bool _e75 = local_35;
+    bool _e75 = local_41;
     if (_e75) {
         return none_3;
     }
-    float t_13 = 1.0 - _e21;
-    float _e80 = ms_jacobian_refraction(wo_30, wi_39, wm_21, etap_6);
-    float pdf_2 = (_e17.pdf * t_13) * _e80;
-    float _e83 = ms_d(d_8.mf, wm_21, ms_tables, _buffer_sizes);
+    float t_14 = 1.0 - _e21;
+    float _e80 = ms_jacobian_refraction(wo_32, wi_41, wm_25, etap_6);
+    float pdf_2 = (_e17.pdf * t_14) * _e80;
+    float _e83 = ms_d(d_8.mf, wm_25, ms_tables, _buffer_sizes);
     bool _e84 = ms_usable(_e83);
     if (!(_e84)) {
         return none_3;
     }
-    float _e86 = ms_dielectric_f_transmission(d_8, wo_30, wi_39, wm_21, _e83, etap_6, t_13, ms_tables, _buffer_sizes);
+    float _e86 = ms_dielectric_f_transmission(d_8, wo_32, wi_41, wm_25, _e83, etap_6, t_14, ms_tables, _buffer_sizes);
     bool _e87 = ms_usable(pdf_2);
     if (!(!(_e87))) {
-        local_36 = !((_e86 <= 340282350000000000000000000000000000000.0));
+        local_42 = !((_e86 <= 340282350000000000000000000000000000000.0));
     } else {
-        local_36 = true;
+        local_42 = true;
     }
-    bool _e96 = local_36;
+    bool _e96 = local_42;
     if (_e96) {
         return none_3;
     }
-    return MsBsdfSample {wi_39, pdf_2, metal::float3(_e86), 5u, etap_6};
+    return MsBsdfSample {wi_41, pdf_2, metal::float3(_e86), 5u, etap_6};
 }
 
 MsLutTap ms_lut_tap(
-    float x_10,
-    uint n_5
+    float x_12,
+    uint n_8
 ) {
-    float t_14 = metal::clamp((x_10 * static_cast<float>(n_5)) - 0.5, 0.0, static_cast<float>(n_5 - 1u));
-    uint i_9 = metal::min(naga_f2u32(metal::floor(t_14)), n_5 - 2u);
-    return MsLutTap {i_9, t_14 - static_cast<float>(i_9)};
+    float t_15 = metal::clamp((x_12 * static_cast<float>(n_8)) - 0.5, 0.0, static_cast<float>(n_8 - 1u));
+    uint i_10 = metal::min(naga_f2u32(metal::floor(t_15)), n_8 - 2u);
+    return MsLutTap {i_10, t_15 - static_cast<float>(i_10)};
 }
 
 MsLutTap ms_lut_tap_edges(
-    float x_11,
-    uint n_6
+    float x_13,
+    uint n_9
 ) {
-    float t_15 = metal::clamp(x_11 * static_cast<float>(n_6 - 1u), 0.0, static_cast<float>(n_6 - 1u));
-    uint i_10 = metal::min(naga_f2u32(metal::floor(t_15)), n_6 - 2u);
-    return MsLutTap {i_10, t_15 - static_cast<float>(i_10)};
+    float t_16 = metal::clamp(x_13 * static_cast<float>(n_9 - 1u), 0.0, static_cast<float>(n_9 - 1u));
+    uint i_11 = metal::min(naga_f2u32(metal::floor(t_16)), n_9 - 2u);
+    return MsLutTap {i_11, t_16 - static_cast<float>(i_11)};
 }
 
 uint ms_lut_index(
@@ -3178,10 +3784,10 @@ float ms_lut_bilerp(
 }
 
 float ms_lut_roughness_coord(
-    metal::float2 alpha_45,
+    metal::float2 alpha_57,
     float alpha_max
 ) {
-    return metal::sqrt(metal::sqrt(alpha_45.x * alpha_45.y) / alpha_max);
+    return metal::sqrt(metal::sqrt(alpha_57.x * alpha_57.y) / alpha_max);
 }
 
 metal::float3 ms_kulla_conty_f_ms(
@@ -3204,9 +3810,9 @@ float ms_kulla_conty_lobe(
 }
 
 metal::float3 ms_conductor_eval_kulla_conty(
-    MsConductor c_10,
-    metal::float3 wo_31,
-    metal::float3 wi_28,
+    MsConductor c_11,
+    metal::float3 wo_33,
+    metal::float3 wi_30,
     float e_o_1,
     float e_i_1,
     float e_avg_2,
@@ -3214,8 +3820,8 @@ metal::float3 ms_conductor_eval_kulla_conty(
     device type_7 const& ms_tables,
     constant _mslBufferSizes& _buffer_sizes
 ) {
-    metal::float3 _e7 = ms_conductor_eval(c_10, wo_31, wi_28, ms_tables, _buffer_sizes);
-    if (!(((wo_31.z * wi_28.z) > 0.0))) {
+    metal::float3 _e7 = ms_conductor_eval(c_11, wo_33, wi_30, ms_tables, _buffer_sizes);
+    if (!(((wo_33.z * wi_30.z) > 0.0))) {
         return _e7;
     }
     float _e14 = ms_kulla_conty_lobe(e_o_1, e_i_1, e_avg_2);
@@ -3230,15 +3836,15 @@ metal::float3 ms_turquin_scale(
 }
 
 metal::float3 ms_conductor_eval_turquin(
-    MsConductor c_11,
-    metal::float3 wo_32,
-    metal::float3 wi_29,
+    MsConductor c_12,
+    metal::float3 wo_34,
+    metal::float3 wi_31,
     float e_o_3,
     metal::float3 f0_3,
     device type_7 const& ms_tables,
     constant _mslBufferSizes& _buffer_sizes
 ) {
-    metal::float3 _e5 = ms_conductor_eval(c_11, wo_32, wi_29, ms_tables, _buffer_sizes);
+    metal::float3 _e5 = ms_conductor_eval(c_12, wo_34, wi_31, ms_tables, _buffer_sizes);
     metal::float3 _e6 = ms_turquin_scale(e_o_3, f0_3);
     return _e5 * _e6;
 }
@@ -3250,108 +3856,108 @@ float ms_kulla_conty_p_ms(
 }
 
 float ms_cosine_pdf_same_side(
-    metal::float3 wo_33,
-    metal::float3 wi_30
+    metal::float3 wo_35,
+    metal::float3 wi_32
 ) {
-    if (!(((wo_33.z * wi_30.z) > 0.0))) {
+    if (!(((wo_35.z * wi_32.z) > 0.0))) {
         return 0.0;
     }
-    return metal::abs(wi_30.z) / MS_PI;
+    return metal::abs(wi_32.z) / MS_PI;
 }
 
 float ms_conductor_pdf_kulla_conty(
-    MsConductor c_12,
-    metal::float3 wo_34,
-    metal::float3 wi_31,
+    MsConductor c_13,
+    metal::float3 wo_36,
+    metal::float3 wi_33,
     float e_o_5,
     device type_7 const& ms_tables,
     constant _mslBufferSizes& _buffer_sizes
 ) {
     float _e4 = ms_kulla_conty_p_ms(e_o_5);
-    float _e7 = ms_conductor_pdf(c_12, wo_34, wi_31, ms_tables, _buffer_sizes);
-    float _e9 = ms_cosine_pdf_same_side(wo_34, wi_31);
+    float _e7 = ms_conductor_pdf(c_13, wo_36, wi_33, ms_tables, _buffer_sizes);
+    float _e9 = ms_cosine_pdf_same_side(wo_36, wi_33);
     return ((1.0 - _e4) * _e7) + (_e4 * _e9);
 }
 
 metal::float3 ms_cosine_hemisphere(
-    metal::float2 u_23
+    metal::float2 u_26
 ) {
-    float r_21 = metal::sqrt(u_23.x);
-    metal::float2 _e4 = ms_cos_sin_turn(u_23.y);
-    return metal::float3(r_21 * _e4.x, r_21 * _e4.y, metal::sqrt(metal::max(1.0 - u_23.x, 0.0)));
+    float r_22 = metal::sqrt(u_26.x);
+    metal::float2 _e4 = ms_cos_sin_turn(u_26.y);
+    return metal::float3(r_22 * _e4.x, r_22 * _e4.y, metal::sqrt(metal::max(1.0 - u_26.x, 0.0)));
 }
 
 MsBsdfSample ms_conductor_sample_kulla_conty(
-    MsConductor c_13,
-    metal::float3 wo_35,
+    MsConductor c_14,
+    metal::float3 wo_37,
     float uc_3,
-    metal::float2 u_24,
+    metal::float2 u_27,
     float e_o_6,
     device type_7 const& ms_tables,
     constant _mslBufferSizes& _buffer_sizes
 ) {
-    metal::float3 wi_32 = {};
-    bool local_37 = {};
+    metal::float3 wi_34 = {};
+    bool local_43 = {};
     MsBsdfSample none_4 = MsBsdfSample {metal::float3(0.0), 0.0, metal::float3(0.0), 0u, 1.0};
-    bool _e14 = ms_on_horizon(wo_35.z);
+    bool _e14 = ms_on_horizon(wo_37.z);
     if (_e14) {
         return none_4;
     }
     float _e15 = ms_kulla_conty_p_ms(e_o_6);
     if (uc_3 < _e15) {
-        metal::float3 _e18 = ms_cosine_hemisphere(u_24);
-        wi_32 = _e18;
-        if (wo_35.z < 0.0) {
-            float _e24 = wi_32.z;
-            wi_32.z = -(_e24);
+        metal::float3 _e18 = ms_cosine_hemisphere(u_27);
+        wi_34 = _e18;
+        if (wo_37.z < 0.0) {
+            float _e24 = wi_34.z;
+            wi_34.z = -(_e24);
         }
     } else {
-        MsBsdfSample _e30 = ms_conductor_sample(c_13, wo_35, (uc_3 - _e15) / (1.0 - _e15), u_24, ms_tables, _buffer_sizes);
+        MsBsdfSample _e30 = ms_conductor_sample(c_14, wo_37, (uc_3 - _e15) / (1.0 - _e15), u_27, ms_tables, _buffer_sizes);
         if (!(((_e30.flags & MS_SAMPLE_VALID) == 0u))) {
-            local_37 = (_e30.flags & MS_SAMPLE_SPECULAR) != 0u;
+            local_43 = (_e30.flags & MS_SAMPLE_SPECULAR) != 0u;
         } else {
-            local_37 = true;
+            local_43 = true;
         }
-        bool _e45 = local_37;
+        bool _e45 = local_43;
         if (_e45) {
             return _e30;
         }
-        wi_32 = _e30.wi;
+        wi_34 = _e30.wi;
     }
-    metal::float3 _e47 = wi_32;
-    float _e48 = ms_conductor_pdf_kulla_conty(c_13, wo_35, _e47, e_o_6, ms_tables, _buffer_sizes);
+    metal::float3 _e47 = wi_34;
+    float _e48 = ms_conductor_pdf_kulla_conty(c_14, wo_37, _e47, e_o_6, ms_tables, _buffer_sizes);
     bool _e49 = ms_usable(_e48);
     if (!(_e49)) {
         return none_4;
     }
-    metal::float3 _e51 = wi_32;
-    metal::float3 _e52 = wi_32;
-    metal::float3 _e53 = ms_conductor_eval(c_13, wo_35, _e52, ms_tables, _buffer_sizes);
+    metal::float3 _e51 = wi_34;
+    metal::float3 _e52 = wi_34;
+    metal::float3 _e53 = ms_conductor_eval(c_14, wo_37, _e52, ms_tables, _buffer_sizes);
     return MsBsdfSample {_e51, _e48, _e53, MS_SAMPLE_VALID, 1.0};
 }
 
 MsBsdfSample ms_kulla_conty_sample_f(
     MsBsdfSample s_6,
-    metal::float3 wo_36,
+    metal::float3 wo_38,
     float e_o_7,
     float e_i_2,
     float e_avg_3,
     metal::float3 f_ms_1
 ) {
-    bool local_38 = {};
-    bool local_39 = {};
+    bool local_44 = {};
+    bool local_45 = {};
     if (!(((s_6.flags & MS_SAMPLE_VALID) == 0u))) {
-        local_38 = (s_6.flags & MS_SAMPLE_SPECULAR) != 0u;
+        local_44 = (s_6.flags & MS_SAMPLE_SPECULAR) != 0u;
     } else {
-        local_38 = true;
+        local_44 = true;
     }
-    bool _e20 = local_38;
+    bool _e20 = local_44;
     if (!(_e20)) {
-        local_39 = !(((wo_36.z * s_6.wi[2]) > 0.0));
+        local_45 = !(((wo_38.z * s_6.wi[2]) > 0.0));
     } else {
-        local_39 = true;
+        local_45 = true;
     }
-    bool _e32 = local_39;
+    bool _e32 = local_45;
     if (_e32) {
         return s_6;
     }
@@ -3360,23 +3966,23 @@ MsBsdfSample ms_kulla_conty_sample_f(
 }
 
 MsBsdfSample ms_conductor_sample_turquin(
-    MsConductor c_14,
-    metal::float3 wo_37,
+    MsConductor c_15,
+    metal::float3 wo_39,
     float uc_4,
-    metal::float2 u_25,
+    metal::float2 u_28,
     float e_o_8,
     metal::float3 f0_4,
     device type_7 const& ms_tables,
     constant _mslBufferSizes& _buffer_sizes
 ) {
-    bool local_40 = {};
-    MsBsdfSample _e6 = ms_conductor_sample(c_14, wo_37, uc_4, u_25, ms_tables, _buffer_sizes);
+    bool local_46 = {};
+    MsBsdfSample _e6 = ms_conductor_sample(c_15, wo_39, uc_4, u_28, ms_tables, _buffer_sizes);
     if (!(((_e6.flags & MS_SAMPLE_VALID) == 0u))) {
-        local_40 = (_e6.flags & MS_SAMPLE_SPECULAR) != 0u;
+        local_46 = (_e6.flags & MS_SAMPLE_SPECULAR) != 0u;
     } else {
-        local_40 = true;
+        local_46 = true;
     }
-    bool _e21 = local_40;
+    bool _e21 = local_46;
     if (_e21) {
         return _e6;
     }
@@ -3415,17 +4021,17 @@ float ms_lut_trilerp(
     uint b_6 = 0u;
     metal::float2 we = metal::float2(1.0 - e.f, e.f);
     metal::float2 wr = metal::float2(1.0 - r_1.f, r_1.f);
-    metal::float2 wm_22 = metal::float2(1.0 - m_5.f, m_5.f);
-    uint2 loop_bound_5 = uint2(4294967295u);
-    bool loop_init_5 = true;
+    metal::float2 wm_26 = metal::float2(1.0 - m_5.f, m_5.f);
+    uint2 loop_bound_8 = uint2(4294967295u);
+    bool loop_init_8 = true;
     while(true) {
-        if (metal::all(loop_bound_5 == uint2(0u))) { break; }
-        loop_bound_5 -= uint2(loop_bound_5.y == 0u, 1u);
-        if (!loop_init_5) {
+        if (metal::all(loop_bound_8 == uint2(0u))) { break; }
+        loop_bound_8 -= uint2(loop_bound_8.y == 0u, 1u);
+        if (!loop_init_8) {
             uint _e59 = b_6;
             b_6 = _e59 + 1u;
         }
-        loop_init_5 = false;
+        loop_init_8 = false;
         uint _e24 = b_6;
         if (_e24 < 8u) {
         } else {
@@ -3435,12 +4041,12 @@ float ms_lut_trilerp(
             uint _e27 = b_6;
             uint _e31 = b_6;
             uint _e35 = b_6;
-            float v_8 = (_e35 >= 4u) ? hi_2[_e31 & 3u] : lo_2[_e27 & 3u];
+            float v_12 = (_e35 >= 4u) ? hi_2[_e31 & 3u] : lo_2[_e27 & 3u];
             float _e39 = s_7;
             uint _e40 = b_6;
             uint _e44 = b_6;
             uint _e51 = b_6;
-            s_7 = _e39 + (((we[_e40 & 1u] * wr[(_e44 >> 1u) & 1u]) * wm_22[_e51 >> 2u]) * v_8);
+            s_7 = _e39 + (((we[_e40 & 1u] * wr[(_e44 >> 1u) & 1u]) * wm_26[_e51 >> 2u]) * v_12);
         }
     }
     float _e61 = s_7;
@@ -3450,22 +4056,22 @@ float ms_lut_trilerp(
 float ms_lut_bilerp_eta(
     MsLutTap e_1,
     MsLutTap r_2,
-    metal::float4 v_7
+    metal::float4 v_10
 ) {
     float s_8 = 0.0;
     uint b_7 = 0u;
     metal::float2 we_1 = metal::float2(1.0 - e_1.f, e_1.f);
     metal::float2 wr_1 = metal::float2(1.0 - r_2.f, r_2.f);
-    uint2 loop_bound_6 = uint2(4294967295u);
-    bool loop_init_6 = true;
+    uint2 loop_bound_9 = uint2(4294967295u);
+    bool loop_init_9 = true;
     while(true) {
-        if (metal::all(loop_bound_6 == uint2(0u))) { break; }
-        loop_bound_6 -= uint2(loop_bound_6.y == 0u, 1u);
-        if (!loop_init_6) {
+        if (metal::all(loop_bound_9 == uint2(0u))) { break; }
+        loop_bound_9 -= uint2(loop_bound_9.y == 0u, 1u);
+        if (!loop_init_9) {
             uint _e35 = b_7;
             b_7 = _e35 + 1u;
         }
-        loop_init_6 = false;
+        loop_init_9 = false;
         uint _e17 = b_7;
         if (_e17 < 4u) {
         } else {
@@ -3476,7 +4082,7 @@ float ms_lut_bilerp_eta(
             uint _e21 = b_7;
             uint _e25 = b_7;
             uint _e30 = b_7;
-            s_8 = _e20 + ((we_1[_e21 & 1u] * wr_1[_e25 >> 1u]) * v_7[_e30]);
+            s_8 = _e20 + ((we_1[_e21 & 1u] * wr_1[_e25 >> 1u]) * v_10[_e30]);
         }
     }
     float _e37 = s_8;
@@ -3488,64 +4094,64 @@ metal::float2 ms_dielectric_kulla_conty_k(
     float f_avg_1,
     metal::float2 e_avg_4
 ) {
-    metal::float2 k_6 = {};
+    metal::float2 k_8 = {};
     float k_out = 1.0 - f_avg_1;
-    k_6 = metal::float2(k_out, (k_out * (1.0 - e_avg_4.x)) / ((eta_5 * eta_5) * (1.0 - e_avg_4.y)));
-    float _e18 = k_6.y;
+    k_8 = metal::float2(k_out, (k_out * (1.0 - e_avg_4.x)) / ((eta_5 * eta_5) * (1.0 - e_avg_4.y)));
+    float _e18 = k_8.y;
     if (!((_e18 <= 1.0))) {
-        metal::float2 _e22 = k_6;
-        float _e24 = k_6.y;
-        float _e28 = k_6.y;
-        k_6 = _e22 * ((_e28 > 1.0) ? (1.0 / _e24) : 0.0);
+        metal::float2 _e22 = k_8;
+        float _e24 = k_8.y;
+        float _e28 = k_8.y;
+        k_8 = _e22 * ((_e28 > 1.0) ? (1.0 / _e24) : 0.0);
     }
-    metal::float2 _e34 = k_6;
+    metal::float2 _e34 = k_8;
     return _e34;
 }
 
 float ms_dielectric_kulla_conty_lobe(
     MsDielectric d_9,
-    metal::float3 wo_38,
-    metal::float3 wi_33,
+    metal::float3 wo_40,
+    metal::float3 wi_35,
     float e_o_9,
     float e_i_3,
     float e_avg_i,
     float k_o
 ) {
-    bool local_41 = {};
-    bool local_42 = {};
+    bool local_47 = {};
+    bool local_48 = {};
     float f_4 = {};
-    bool local_43 = {};
-    if (metal::abs(wo_38.z) > 0.0) {
-        local_41 = metal::abs(wi_33.z) > 0.0;
+    bool local_49 = {};
+    if (metal::abs(wo_40.z) > 0.0) {
+        local_47 = metal::abs(wi_35.z) > 0.0;
     } else {
-        local_41 = false;
+        local_47 = false;
     }
-    bool _e18 = local_41;
+    bool _e18 = local_47;
     if (!(_e18)) {
         return 0.0;
     }
     float lost = 1.0 - e_o_9;
-    bool crossed = (wi_33.z < 0.0) != (wo_38.z < 0.0);
+    bool crossed = (wi_35.z < 0.0) != (wo_40.z < 0.0);
     float share = crossed ? k_o : (1.0 - k_o);
     float den_4 = MS_PI * (1.0 - e_avg_i);
     if (den_4 > 0.0) {
-        local_42 = lost > 0.0;
+        local_48 = lost > 0.0;
     } else {
-        local_42 = false;
+        local_48 = false;
     }
-    bool _e44 = local_42;
+    bool _e44 = local_48;
     if (!(_e44)) {
         return 0.0;
     }
     f_4 = ((share * lost) * metal::max(1.0 - e_i_3, 0.0)) / den_4;
     if (crossed) {
-        local_43 = d_9.transport == MS_TRANSPORT_RADIANCE;
+        local_49 = d_9.transport == MS_TRANSPORT_RADIANCE;
     } else {
-        local_43 = false;
+        local_49 = false;
     }
-    bool _e61 = local_43;
+    bool _e61 = local_49;
     if (_e61) {
-        float etap_7 = (wo_38.z > 0.0) ? d_9.eta : (1.0 / d_9.eta);
+        float etap_7 = (wo_40.z > 0.0) ? d_9.eta : (1.0 / d_9.eta);
         float _e70 = f_4;
         f_4 = _e70 / (etap_7 * etap_7);
     }
@@ -3555,8 +4161,8 @@ float ms_dielectric_kulla_conty_lobe(
 
 float ms_dielectric_eval_kulla_conty(
     MsDielectric d_10,
-    metal::float3 wo_39,
-    metal::float3 wi_34,
+    metal::float3 wo_41,
+    metal::float3 wi_36,
     float e_o_10,
     float e_i_4,
     float e_avg_i_1,
@@ -3564,32 +4170,32 @@ float ms_dielectric_eval_kulla_conty(
     device type_7 const& ms_tables,
     constant _mslBufferSizes& _buffer_sizes
 ) {
-    float _e7 = ms_dielectric_eval(d_10, wo_39, wi_34, ms_tables, _buffer_sizes);
+    float _e7 = ms_dielectric_eval(d_10, wo_41, wi_36, ms_tables, _buffer_sizes);
     bool _e8 = ms_dielectric_smooth(d_10);
     if (_e8) {
         return _e7;
     }
-    float _e9 = ms_dielectric_kulla_conty_lobe(d_10, wo_39, wi_34, e_o_10, e_i_4, e_avg_i_1, k_o_1);
+    float _e9 = ms_dielectric_kulla_conty_lobe(d_10, wo_41, wi_36, e_o_10, e_i_4, e_avg_i_1, k_o_1);
     return _e7 + _e9;
 }
 
 float ms_dielectric_eval_turquin(
     MsDielectric d_11,
-    metal::float3 wo_40,
-    metal::float3 wi_35,
+    metal::float3 wo_42,
+    metal::float3 wi_37,
     float e_o_11,
     device type_7 const& ms_tables,
     constant _mslBufferSizes& _buffer_sizes
 ) {
-    bool local_44 = {};
-    float _e4 = ms_dielectric_eval(d_11, wo_40, wi_35, ms_tables, _buffer_sizes);
+    bool local_50 = {};
+    float _e4 = ms_dielectric_eval(d_11, wo_42, wi_37, ms_tables, _buffer_sizes);
     bool _e5 = ms_dielectric_smooth(d_11);
     if (!(_e5)) {
-        local_44 = !((e_o_11 > 0.0));
+        local_50 = !((e_o_11 > 0.0));
     } else {
-        local_44 = true;
+        local_50 = true;
     }
-    bool _e13 = local_44;
+    bool _e13 = local_50;
     if (_e13) {
         return _e4;
     }
@@ -3606,12 +4212,20 @@ uint ms_k_index(
     device type_7 const& ms_in,
     constant _mslBufferSizes& _buffer_sizes
 ) {
-    uint i_11 = id_13.x + ((id_13.y * groups_13.x) * 64u);
-    uint n_10 = naga_div(1 + (_buffer_sizes.size1 - 0 - 16) / 16, MS_K_IN);
-    if (i_11 >= n_10) {
-        return n_10;
+    uint i_12 = id_13.x + ((id_13.y * groups_13.x) * 64u);
+    uint n_13 = naga_div(1 + (_buffer_sizes.size1 - 0 - 16) / 16, MS_K_IN);
+    if (i_12 >= n_13) {
+        return n_13;
     }
-    return i_11;
+    return i_12;
+}
+
+MsMicrofacet ms_k_microfacet(
+    metal::float4 r0_,
+    metal::float4 r2_
+) {
+    uint code = naga_f2u32(r2_.w);
+    return MsMicrofacet {code & 15u, {}, r0_.xy, code >> 4u};
 }
 
 MsConductor ms_k_conductor(
@@ -3619,12 +4233,12 @@ MsConductor ms_k_conductor(
     device type_7 const& ms_in,
     constant _mslBufferSizes& _buffer_sizes
 ) {
-    metal::float4 r0_ = ms_in[i_2 * MS_K_IN];
-    metal::float4 r2_ = ms_in[(i_2 * MS_K_IN) + 2u];
+    metal::float4 r0_1 = ms_in[i_2 * MS_K_IN];
+    metal::float4 r2_1 = ms_in[(i_2 * MS_K_IN) + 2u];
     metal::float4 r3_ = ms_in[(i_2 * MS_K_IN) + 3u];
     metal::float4 r4_ = ms_in[(i_2 * MS_K_IN) + 4u];
-    MsMicrofacet mf_11 = MsMicrofacet {naga_f2u32(r2_.w), {}, r0_.xy};
-    return MsConductor {mf_11, MsFresnel {naga_f2u32(r3_.w), {}, r3_.xyz, r4_.xyz}, naga_f2u32(r4_.w)};
+    MsMicrofacet _e27 = ms_k_microfacet(r0_1, r2_1);
+    return MsConductor {_e27, {}, MsFresnel {naga_f2u32(r3_.w), {}, r3_.xyz, r4_.xyz}, naga_f2u32(r4_.w)};
 }
 
 MsDielectric ms_k_dielectric(
@@ -3632,11 +4246,12 @@ MsDielectric ms_k_dielectric(
     device type_7 const& ms_in,
     constant _mslBufferSizes& _buffer_sizes
 ) {
-    metal::float4 r0_1 = ms_in[i_3 * MS_K_IN];
-    metal::float4 r2_1 = ms_in[(i_3 * MS_K_IN) + 2u];
+    metal::float4 r0_2 = ms_in[i_3 * MS_K_IN];
+    metal::float4 r2_2 = ms_in[(i_3 * MS_K_IN) + 2u];
     metal::float4 r3_1 = ms_in[(i_3 * MS_K_IN) + 3u];
     metal::float4 r4_1 = ms_in[(i_3 * MS_K_IN) + 4u];
-    return MsDielectric {MsMicrofacet {naga_f2u32(r2_1.w), {}, r0_1.xy}, r3_1.x, naga_f2u32(r4_1.w), naga_f2u32(r4_1.x)};
+    MsMicrofacet _e27 = ms_k_microfacet(r0_2, r2_2);
+    return MsDielectric {_e27, r3_1.x, naga_f2u32(r4_1.w), naga_f2u32(r4_1.x)};
 }
 
 struct ms_k_ggx_evalInput {
@@ -3653,20 +4268,20 @@ kernel void ms_k_ggx_eval(
         return;
     }
     metal::float4 _e12 = ms_in[_e2 * MS_K_IN];
-    metal::float2 a_23 = _e12.xy;
+    metal::float2 a_25 = _e12.xy;
     metal::float4 _e20 = ms_in[(_e2 * MS_K_IN) + 1u];
-    metal::float3 wo_41 = _e20.xyz;
+    metal::float3 wo_43 = _e20.xyz;
     metal::float4 _e28 = ms_in[(_e2 * MS_K_IN) + 2u];
-    metal::float3 wm_23 = _e28.xyz;
-    float _e34 = ms_ggx_d(wm_23, a_23);
-    float _e35 = ms_ggx_lambda(wo_41, a_23);
-    float _e36 = ms_ggx_g1_(wo_41, a_23);
-    float _e37 = ms_ggx_g2_(wo_41, wm_23, a_23);
+    metal::float3 wm_27 = _e28.xyz;
+    float _e34 = ms_ggx_d(wm_27, a_25);
+    float _e35 = ms_ggx_lambda(wo_43, a_25);
+    float _e36 = ms_ggx_g1_(wo_43, a_25);
+    float _e37 = ms_ggx_g2_(wo_43, wm_27, a_25);
     ms_out[_e2 * MS_K_OUT] = metal::float4(_e34, _e35, _e36, _e37);
-    float _e45 = ms_ggx_g2_separable(wo_41, wm_23, a_23);
-    float _e46 = ms_ggx_pdf(wo_41, wm_23, a_23);
-    float _e47 = ms_ggx_pdf_dcos(wm_23, a_23);
-    float _e48 = ms_ggx_pdf_bounded(wo_41, wm_23, a_23);
+    float _e45 = ms_ggx_g2_separable(wo_43, wm_27, a_25);
+    float _e46 = ms_ggx_pdf(wo_43, wm_27, a_25);
+    float _e47 = ms_ggx_pdf_dcos(wm_27, a_25);
+    float _e48 = ms_ggx_pdf_bounded(wo_43, wm_27, a_25);
     ms_out[(_e2 * MS_K_OUT) + 1u] = metal::float4(_e45, _e46, _e47, _e48);
     return;
 }
@@ -3687,21 +4302,21 @@ kernel void ms_k_beckmann_eval(
         return;
     }
     metal::float4 _e12 = ms_in[_e2 * MS_K_IN];
-    metal::float2 a_24 = _e12.xy;
+    metal::float2 a_26 = _e12.xy;
     metal::float4 _e20 = ms_in[(_e2 * MS_K_IN) + 1u];
-    metal::float3 wo_42 = _e20.xyz;
+    metal::float3 wo_44 = _e20.xyz;
     metal::float4 _e28 = ms_in[(_e2 * MS_K_IN) + 2u];
-    metal::float3 wm_24 = _e28.xyz;
-    float _e34 = ms_beckmann_d(wm_24, a_24);
-    float _e35 = ms_beckmann_lambda(wo_42, a_24, ms_tables, _buffer_sizes);
-    float _e36 = ms_beckmann_g1_(wo_42, a_24, ms_tables, _buffer_sizes);
-    float _e37 = ms_beckmann_g2_(wo_42, wm_24, a_24, ms_tables, _buffer_sizes);
+    metal::float3 wm_28 = _e28.xyz;
+    float _e34 = ms_beckmann_d(wm_28, a_26);
+    float _e35 = ms_beckmann_lambda(wo_44, a_26, ms_tables, _buffer_sizes);
+    float _e36 = ms_beckmann_g1_(wo_44, a_26, ms_tables, _buffer_sizes);
+    float _e37 = ms_beckmann_g2_(wo_44, wm_28, a_26, ms_tables, _buffer_sizes);
     ms_out[_e2 * MS_K_OUT] = metal::float4(_e34, _e35, _e36, _e37);
-    float _e45 = ms_beckmann_g2_separable(wo_42, wm_24, a_24, ms_tables, _buffer_sizes);
-    float _e46 = ms_beckmann_pdf(wo_42, wm_24, a_24, ms_tables, _buffer_sizes);
-    float _e47 = ms_beckmann_pdf_dcos(wm_24, a_24);
-    float _e50 = ms_pdf(MsMicrofacet {MS_NDF_BECKMANN, {}, a_24}, wo_42, wm_24, ms_tables, _buffer_sizes);
-    ms_out[(_e2 * MS_K_OUT) + 1u] = metal::float4(_e45, _e46, _e47, _e50);
+    float _e45 = ms_beckmann_g2_separable(wo_44, wm_28, a_26, ms_tables, _buffer_sizes);
+    float _e46 = ms_beckmann_pdf(wo_44, wm_28, a_26, ms_tables, _buffer_sizes);
+    float _e47 = ms_beckmann_pdf_dcos(wm_28, a_26);
+    float _e51 = ms_pdf(MsMicrofacet {MS_NDF_BECKMANN, {}, a_26, 0u}, wo_44, wm_28, ms_tables, _buffer_sizes);
+    ms_out[(_e2 * MS_K_OUT) + 1u] = metal::float4(_e45, _e46, _e47, _e51);
     return;
 }
 
@@ -3720,13 +4335,13 @@ kernel void ms_k_beckmann_sample(
     if (_e2 == naga_div(1 + (_buffer_sizes.size1 - 0 - 16) / 16, MS_K_IN)) {
         return;
     }
-    metal::float4 r0_2 = ms_in[_e2 * MS_K_IN];
+    metal::float4 r0_3 = ms_in[_e2 * MS_K_IN];
     metal::float4 _e19 = ms_in[(_e2 * MS_K_IN) + 1u];
-    metal::float3 wo_43 = _e19.xyz;
-    MsSample _e25 = ms_sample(MsMicrofacet {MS_NDF_BECKMANN, {}, r0_2.xy}, wo_43, r0_2.zw, ms_tables, _buffer_sizes);
-    MsSample _e28 = ms_beckmann_sample_dcos(r0_2.xy, r0_2.zw);
-    ms_out[_e2 * MS_K_OUT] = metal::float4(_e25.wm, _e25.pdf);
-    ms_out[(_e2 * MS_K_OUT) + 1u] = metal::float4(_e28.wm, _e28.pdf);
+    metal::float3 wo_45 = _e19.xyz;
+    MsSample _e26 = ms_sample(MsMicrofacet {MS_NDF_BECKMANN, {}, r0_3.xy, 0u}, wo_45, r0_3.zw, ms_tables, _buffer_sizes);
+    MsSample _e29 = ms_beckmann_sample_dcos(r0_3.xy, r0_3.zw);
+    ms_out[_e2 * MS_K_OUT] = metal::float4(_e26.wm, _e26.pdf);
+    ms_out[(_e2 * MS_K_OUT) + 1u] = metal::float4(_e29.wm, _e29.pdf);
     return;
 }
 
@@ -3744,11 +4359,11 @@ kernel void ms_k_ggx_sample(
     if (_e2 == naga_div(1 + (_buffer_sizes.size1 - 0 - 16) / 16, MS_K_IN)) {
         return;
     }
-    metal::float4 r0_3 = ms_in[_e2 * MS_K_IN];
+    metal::float4 r0_4 = ms_in[_e2 * MS_K_IN];
     metal::float4 _e19 = ms_in[(_e2 * MS_K_IN) + 1u];
-    metal::float3 wo_44 = _e19.xyz;
-    MsSample _e23 = ms_ggx_sample(wo_44, r0_3.xy, r0_3.zw);
-    MsSample _e26 = ms_ggx_sample_dcos(r0_3.xy, r0_3.zw);
+    metal::float3 wo_46 = _e19.xyz;
+    MsSample _e23 = ms_ggx_sample(wo_46, r0_4.xy, r0_4.zw);
+    MsSample _e26 = ms_ggx_sample_dcos(r0_4.xy, r0_4.zw);
     ms_out[_e2 * MS_K_OUT] = metal::float4(_e23.wm, _e23.pdf);
     ms_out[(_e2 * MS_K_OUT) + 1u] = metal::float4(_e26.wm, _e26.pdf);
     return;
@@ -3768,14 +4383,14 @@ kernel void ms_k_ggx_bounded(
     if (_e2 == naga_div(1 + (_buffer_sizes.size1 - 0 - 16) / 16, MS_K_IN)) {
         return;
     }
-    metal::float4 r0_4 = ms_in[_e2 * MS_K_IN];
+    metal::float4 r0_5 = ms_in[_e2 * MS_K_IN];
     metal::float4 _e19 = ms_in[(_e2 * MS_K_IN) + 1u];
-    metal::float3 wo_45 = _e19.xyz;
+    metal::float3 wo_47 = _e19.xyz;
     metal::float4 _e27 = ms_in[(_e2 * MS_K_IN) + 2u];
-    metal::float3 wi_40 = _e27.xyz;
-    MsSample _e31 = ms_ggx_sample_bounded(wo_45, r0_4.xy, r0_4.zw);
+    metal::float3 wi_42 = _e27.xyz;
+    MsSample _e31 = ms_ggx_sample_bounded(wo_47, r0_5.xy, r0_5.zw);
     ms_out[_e2 * MS_K_OUT] = metal::float4(_e31.wm, _e31.pdf);
-    float _e46 = ms_ggx_pdf_bounded_reflection(wo_45, wi_40, r0_4.xy);
+    float _e46 = ms_ggx_pdf_bounded_reflection(wo_47, wi_42, r0_5.xy);
     ms_out[(_e2 * MS_K_OUT) + 1u] = metal::float4(_e46, 0.0, 0.0, 0.0);
     return;
 }
@@ -3794,15 +4409,15 @@ kernel void ms_k_fresnel(
     if (_e2 == naga_div(1 + (_buffer_sizes.size1 - 0 - 16) / 16, MS_K_IN)) {
         return;
     }
-    float c_20 = ms_in[(_e2 * MS_K_IN) + 1u].z;
+    float c_23 = ms_in[(_e2 * MS_K_IN) + 1u].z;
     MsConductor _e16 = ms_k_conductor(_e2, ms_in, _buffer_sizes);
     MsFresnel fr_2 = _e16.fresnel;
-    float _e24 = ms_fresnel_dielectric(c_20, _e16.fresnel.a.x);
-    float _e29 = ms_fresnel_conductor(c_20, _e16.fresnel.a.x, _e16.fresnel.b.x);
-    float _e32 = ms_fresnel_schlick(c_20, _e16.fresnel.a.x);
-    float _e37 = ms_fresnel_f82_tint(c_20, _e16.fresnel.a.x, _e16.fresnel.b.x);
+    float _e24 = ms_fresnel_dielectric(c_23, _e16.fresnel.a.x);
+    float _e29 = ms_fresnel_conductor(c_23, _e16.fresnel.a.x, _e16.fresnel.b.x);
+    float _e32 = ms_fresnel_schlick(c_23, _e16.fresnel.a.x);
+    float _e37 = ms_fresnel_f82_tint(c_23, _e16.fresnel.a.x, _e16.fresnel.b.x);
     ms_out[_e2 * MS_K_OUT] = metal::float4(_e24, _e29, _e32, _e37);
-    metal::float3 _e45 = ms_fresnel_eval(fr_2, c_20);
+    metal::float3 _e45 = ms_fresnel_eval(fr_2, c_23);
     ms_out[(_e2 * MS_K_OUT) + 1u] = metal::float4(_e45, 0.0);
     return;
 }
@@ -3824,13 +4439,13 @@ kernel void ms_k_conductor_eval(
     }
     MsConductor _e8 = ms_k_conductor(_e2, ms_in, _buffer_sizes);
     metal::float4 _e15 = ms_in[(_e2 * MS_K_IN) + 1u];
-    metal::float3 wo_46 = _e15.xyz;
+    metal::float3 wo_48 = _e15.xyz;
     metal::float4 _e23 = ms_in[(_e2 * MS_K_IN) + 2u];
-    metal::float3 wi_41 = _e23.xyz;
-    metal::float3 _e29 = ms_conductor_eval(_e8, wo_46, wi_41, ms_tables, _buffer_sizes);
-    float _e30 = ms_conductor_pdf(_e8, wo_46, wi_41, ms_tables, _buffer_sizes);
+    metal::float3 wi_43 = _e23.xyz;
+    metal::float3 _e29 = ms_conductor_eval(_e8, wo_48, wi_43, ms_tables, _buffer_sizes);
+    float _e30 = ms_conductor_pdf(_e8, wo_48, wi_43, ms_tables, _buffer_sizes);
     ms_out[_e2 * MS_K_OUT] = metal::float4(_e29, _e30);
-    metal::float4 _e38 = ms_conductor_eval_pdf(_e8, wo_46, wi_41, ms_tables, _buffer_sizes);
+    metal::float4 _e38 = ms_conductor_eval_pdf(_e8, wo_48, wi_43, ms_tables, _buffer_sizes);
     ms_out[(_e2 * MS_K_OUT) + 1u] = _e38;
     return;
 }
@@ -3851,9 +4466,9 @@ kernel void ms_k_conductor_sample(
         return;
     }
     MsConductor _e8 = ms_k_conductor(_e2, ms_in, _buffer_sizes);
-    metal::float4 r0_5 = ms_in[_e2 * MS_K_IN];
+    metal::float4 r0_6 = ms_in[_e2 * MS_K_IN];
     metal::float4 r1_ = ms_in[(_e2 * MS_K_IN) + 1u];
-    MsBsdfSample _e24 = ms_conductor_sample(_e8, r1_.xyz, r1_.w, r0_5.zw, ms_tables, _buffer_sizes);
+    MsBsdfSample _e24 = ms_conductor_sample(_e8, r1_.xyz, r1_.w, r0_6.zw, ms_tables, _buffer_sizes);
     ms_out[_e2 * MS_K_OUT] = metal::float4(_e24.wi, _e24.pdf);
     ms_out[(_e2 * MS_K_OUT) + 1u] = metal::float4(_e24.f, static_cast<float>(_e24.flags));
     return;
@@ -3876,11 +4491,11 @@ kernel void ms_k_dielectric_eval(
     }
     MsDielectric _e8 = ms_k_dielectric(_e2, ms_in, _buffer_sizes);
     metal::float4 _e15 = ms_in[(_e2 * MS_K_IN) + 1u];
-    metal::float3 wo_47 = _e15.xyz;
+    metal::float3 wo_49 = _e15.xyz;
     metal::float4 _e23 = ms_in[(_e2 * MS_K_IN) + 2u];
-    metal::float3 wi_42 = _e23.xyz;
-    float _e29 = ms_dielectric_eval(_e8, wo_47, wi_42, ms_tables, _buffer_sizes);
-    float _e30 = ms_dielectric_pdf(_e8, wo_47, wi_42, ms_tables, _buffer_sizes);
+    metal::float3 wi_44 = _e23.xyz;
+    float _e29 = ms_dielectric_eval(_e8, wo_49, wi_44, ms_tables, _buffer_sizes);
+    float _e30 = ms_dielectric_pdf(_e8, wo_49, wi_44, ms_tables, _buffer_sizes);
     ms_out[_e2 * MS_K_OUT] = metal::float4(_e29, _e30, 0.0, 0.0);
     ms_out[(_e2 * MS_K_OUT) + 1u] = metal::float4(0.0);
     return;
@@ -3902,9 +4517,9 @@ kernel void ms_k_dielectric_sample(
         return;
     }
     MsDielectric _e8 = ms_k_dielectric(_e2, ms_in, _buffer_sizes);
-    metal::float4 r0_6 = ms_in[_e2 * MS_K_IN];
+    metal::float4 r0_7 = ms_in[_e2 * MS_K_IN];
     metal::float4 r1_1 = ms_in[(_e2 * MS_K_IN) + 1u];
-    MsBsdfSample _e24 = ms_dielectric_sample(_e8, r1_1.xyz, r1_1.w, r0_6.zw, ms_tables, _buffer_sizes);
+    MsBsdfSample _e24 = ms_dielectric_sample(_e8, r1_1.xyz, r1_1.w, r0_7.zw, ms_tables, _buffer_sizes);
     ms_out[_e2 * MS_K_OUT] = metal::float4(_e24.wi, _e24.pdf);
     ms_out[(_e2 * MS_K_OUT) + 1u] = metal::float4(_e24.f[0], _e24.eta, static_cast<float>(_e24.flags), 0.0);
     return;
@@ -3925,37 +4540,23 @@ kernel void ms_k_family_eval(
     if (_e2 == naga_div(1 + (_buffer_sizes.size1 - 0 - 16) / 16, MS_K_IN)) {
         return;
     }
-    metal::float4 _e12 = ms_in[_e2 * MS_K_IN];
-    metal::float2 a_25 = _e12.xy;
-    metal::float4 _e20 = ms_in[(_e2 * MS_K_IN) + 1u];
-    metal::float3 wo_48 = _e20.xyz;
-    metal::float4 r2_2 = ms_in[(_e2 * MS_K_IN) + 2u];
-    metal::float3 wm_25 = r2_2.xyz;
-    if (naga_f2u32(r2_2.w) == MS_NDF_DOUBLE_GGX) {
-        float _e38 = ms_double_ggx_d(wm_25, a_25, ms_tables, _buffer_sizes);
-        float _e39 = ms_double_ggx_lambda(wo_48, a_25, ms_tables, _buffer_sizes);
-        float _e40 = ms_double_ggx_g1_(wo_48, a_25, ms_tables, _buffer_sizes);
-        float _e41 = ms_double_ggx_g2_(wo_48, wm_25, a_25, ms_tables, _buffer_sizes);
-        ms_out[_e2 * MS_K_OUT] = metal::float4(_e38, _e39, _e40, _e41);
-        float _e49 = ms_double_ggx_g2_separable(wo_48, wm_25, a_25, ms_tables, _buffer_sizes);
-        float _e50 = ms_double_ggx_pdf(wo_48, wm_25, a_25, ms_tables, _buffer_sizes);
-        float _e51 = ms_double_ggx_pdf_dcos(wm_25, a_25, ms_tables, _buffer_sizes);
-        float _e52 = ms_double_ggx_g1_(wm_25, a_25, ms_tables, _buffer_sizes);
-        ms_out[(_e2 * MS_K_OUT) + 1u] = metal::float4(_e49, _e50, _e51, _e52);
-        return;
-    } else {
-        float _e58 = ms_exponential_d(wm_25, a_25);
-        float _e59 = ms_exponential_lambda(wo_48, a_25, ms_tables, _buffer_sizes);
-        float _e60 = ms_exponential_g1_(wo_48, a_25, ms_tables, _buffer_sizes);
-        float _e61 = ms_exponential_g2_(wo_48, wm_25, a_25, ms_tables, _buffer_sizes);
-        ms_out[_e2 * MS_K_OUT] = metal::float4(_e58, _e59, _e60, _e61);
-        float _e69 = ms_exponential_g2_separable(wo_48, wm_25, a_25, ms_tables, _buffer_sizes);
-        float _e70 = ms_exponential_pdf(wo_48, wm_25, a_25, ms_tables, _buffer_sizes);
-        float _e71 = ms_exponential_pdf_dcos(wm_25, a_25);
-        float _e72 = ms_exponential_g1_(wm_25, a_25, ms_tables, _buffer_sizes);
-        ms_out[(_e2 * MS_K_OUT) + 1u] = metal::float4(_e69, _e70, _e71, _e72);
-        return;
-    }
+    metal::float4 r0_8 = ms_in[_e2 * MS_K_IN];
+    metal::float4 _e19 = ms_in[(_e2 * MS_K_IN) + 1u];
+    metal::float3 wo_50 = _e19.xyz;
+    metal::float4 r2_3 = ms_in[(_e2 * MS_K_IN) + 2u];
+    metal::float3 wm_29 = r2_3.xyz;
+    MsMicrofacet _e29 = ms_k_microfacet(r0_8, r2_3);
+    float _e34 = ms_d(_e29, wm_29, ms_tables, _buffer_sizes);
+    float _e35 = ms_lambda(_e29, wo_50, ms_tables, _buffer_sizes);
+    float _e36 = ms_g1_(_e29, wo_50, ms_tables, _buffer_sizes);
+    float _e37 = ms_g2_(_e29, wo_50, wm_29, ms_tables, _buffer_sizes);
+    ms_out[_e2 * MS_K_OUT] = metal::float4(_e34, _e35, _e36, _e37);
+    float _e45 = ms_g2_separable(_e29, wo_50, wm_29, ms_tables, _buffer_sizes);
+    float _e46 = ms_pdf(_e29, wo_50, wm_29, ms_tables, _buffer_sizes);
+    float _e47 = ms_pdf_dcos(_e29, wm_29, ms_tables, _buffer_sizes);
+    float _e48 = ms_g1_(_e29, wm_29, ms_tables, _buffer_sizes);
+    ms_out[(_e2 * MS_K_OUT) + 1u] = metal::float4(_e45, _e46, _e47, _e48);
+    return;
 }
 
 
@@ -3969,28 +4570,19 @@ kernel void ms_k_family_sample(
 , device type_7& ms_out [[user(fake0)]]
 , constant _mslBufferSizes& _buffer_sizes [[user(fake0)]]
 ) {
-    MsSample t = {};
     uint _e2 = ms_k_index(id_11, groups_11, ms_in, _buffer_sizes);
     if (_e2 == naga_div(1 + (_buffer_sizes.size1 - 0 - 16) / 16, MS_K_IN)) {
         return;
     }
-    metal::float4 r0_7 = ms_in[_e2 * MS_K_IN];
+    metal::float4 r0_9 = ms_in[_e2 * MS_K_IN];
     metal::float4 _e19 = ms_in[(_e2 * MS_K_IN) + 1u];
-    metal::float3 wo_49 = _e19.xyz;
-    float _e28 = ms_in[(_e2 * MS_K_IN) + 2u].w;
-    uint ndf = naga_f2u32(_e28);
-    if (ndf == MS_NDF_DOUBLE_GGX) {
-        MsSample _e35 = ms_double_ggx_sample_dcos(r0_7.xy, r0_7.zw, ms_tables, _buffer_sizes);
-        t = _e35;
-    } else {
-        MsSample _e38 = ms_exponential_sample_dcos(r0_7.xy, r0_7.zw, ms_tables, _buffer_sizes);
-        t = _e38;
-    }
-    MsSample _e42 = ms_sample(MsMicrofacet {ndf, {}, r0_7.xy}, wo_49, r0_7.zw, ms_tables, _buffer_sizes);
-    metal::float3 _e48 = t.wm;
-    float _e50 = t.pdf;
-    ms_out[_e2 * MS_K_OUT] = metal::float4(_e48, _e50);
-    ms_out[(_e2 * MS_K_OUT) + 1u] = metal::float4(_e42.wm, _e42.pdf);
+    metal::float3 wo_51 = _e19.xyz;
+    metal::float4 _e27 = ms_in[(_e2 * MS_K_IN) + 2u];
+    MsMicrofacet _e28 = ms_k_microfacet(r0_9, _e27);
+    MsSample _e30 = ms_sample_dcos(_e28, r0_9.zw, ms_tables, _buffer_sizes);
+    MsSample _e32 = ms_sample(_e28, wo_51, r0_9.zw, ms_tables, _buffer_sizes);
+    ms_out[_e2 * MS_K_OUT] = metal::float4(_e30.wm, _e30.pdf);
+    ms_out[(_e2 * MS_K_OUT) + 1u] = metal::float4(_e32.wm, _e32.pdf);
     return;
 }
 
@@ -4013,16 +4605,16 @@ kernel void ms_k_stream(
     metal::float4 _e12 = ms_in[_e2 * MS_K_IN];
     metal::uint2 _e14 = ms_stream_new(_e12.zw);
     state = _e14;
-    uint2 loop_bound_7 = uint2(4294967295u);
-    bool loop_init_7 = true;
+    uint2 loop_bound_10 = uint2(4294967295u);
+    bool loop_init_10 = true;
     while(true) {
-        if (metal::all(loop_bound_7 == uint2(0u))) { break; }
-        loop_bound_7 -= uint2(loop_bound_7.y == 0u, 1u);
-        if (!loop_init_7) {
+        if (metal::all(loop_bound_10 == uint2(0u))) { break; }
+        loop_bound_10 -= uint2(loop_bound_10.y == 0u, 1u);
+        if (!loop_init_10) {
             uint _e46 = k;
             k = _e46 + 1u;
         }
-        loop_init_7 = false;
+        loop_init_10 = false;
         uint _e18 = k;
         if (_e18 < 2u) {
         } else {

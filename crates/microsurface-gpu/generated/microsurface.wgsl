@@ -1716,22 +1716,385 @@ fn ms_exponential_sample(w: vec3<f32>, alpha: vec2<f32>, u: vec2<f32>) -> MsSamp
     return MsSample(wm, ms_exponential_pdf(ms_unit(w), wm, alpha));
 }
 
+// microsurface WGSL library: what the Beckmann mixtures share (mixture.wgsl): their fitted Λ
+// from a material's shape table, and exact visible-normal sampling by the mixing variable's
+// posterior over the uniform stream.
+//
+// A shape table (written by the Rust `microsurface_gpu::Tables::add_shape`, from the Rust
+// fast path's own `fast::fitted::FittedShape` of the shape, rounded to f32) lies in the
+// library's buffer `ms_tables` from the material's row `table`:
+//   row 0: (shape (γ, a; 0 for none), k₁, 1 if the rows hold Λ₁ itself else 0, σ₁(0))
+//   row 1: (1 for a power-law tail else 0, p, ln K, K₂): Λ₁ = e^{ln K − p ln z}(1 + K₂/z²)
+//          past z = 2^k₁ (0 past it for the others)
+//   row 2: (E[β] of the prior, the mixing's parameter k, 0, 0)
+//   rows 3…: the Λ₁ rows, two vec4 each (five coefficients of the degree-4 polynomial in
+//          s ∈ [−1, 1), s⁰ first), 32 rows an octave of z = cot θ/α̃ from 2^−24 to 2^k₁,
+//          holding Λ₁ or 256 log₂ Λ₁ (the Rust `FittedShape` layout).
+// Every member is shape invariant: Λ(w) = Λ₁(z) with z = |w.z|/|(αx w.x, αy w.y)|.
+
+const MS_SHAPE_K0: i32 = -24;
+const MS_SHAPE_M: u32 = 5u;
+// Rows before the Λ₁ rows of a shape table.
+const MS_SHAPE_HEADER: u32 = 3u;
+
+// Λ₁(z) of the shape table at `table` (the Rust FittedShape::lambda_z in f32): the row's
+// polynomial by Horner's rule, through exp2 where the rows hold 256 log₂ Λ₁; σ₁(0)/z − ½
+// below 2^−24 (+∞ at 0), the tail past 2^k₁; NaN stays NaN.
+fn ms_shape_lambda_z(table: u32, z: f32) -> f32 {
+    let head = ms_tables[table];
+    let k1 = i32(head.y);
+    if z >= 5.9604645e-8 && z < exp2(head.y) {
+        let g = ms_fam_segment(z, MS_SHAPE_K0, k1, MS_SHAPE_M);
+        let i = table + MS_SHAPE_HEADER + 2u * u32(g.x);
+        let lo = ms_tables[i];
+        let hi = ms_tables[i + 1u];
+        let s = g.y;
+        let p = (((hi.x * s + lo.w) * s + lo.z) * s + lo.y) * s + lo.x;
+        if head.z > 0.5 {
+            return p;
+        }
+        return exp2(p * (1.0 / 256.0));
+    }
+    if z != z {
+        return z;
+    }
+    if z < 5.9604645e-8 {
+        return head.w / z - 0.5;
+    }
+    let tail = ms_tables[table + 1u];
+    if tail.x < 0.5 {
+        return 0.0;
+    }
+    return exp(tail.z - tail.y * log(z)) * (1.0 + tail.w / (z * z));
+}
+
+// Λ(w) of the shape at (αx, αy), Λ(−w) = Λ(w): +∞ on the horizon, 0 at the normal.
+fn ms_shape_lambda(table: u32, w: vec3<f32>, alpha: vec2<f32>) -> f32 {
+    let sx = alpha.x * w.x;
+    let sy = alpha.y * w.y;
+    let h = sqrt(sx * sx + sy * sy);
+    let z = abs(w.z);
+    if !(h > 0.0) {
+        // (Normal incidence: cot θ = ∞; NaN passes on.)
+        return select(h, 0.0, h == 0.0 && z > 0.0);
+    }
+    if z == 0.0 {
+        return ms_inf();
+    }
+    return ms_shape_lambda_z(table, z / h);
+}
+
+// A standard normal variate from w ∈ [0, 1) (the Rust fast::ziggurat::normal): the lower half
+// picks the sign, the rest drives the half-normal ziggurat.
+fn ms_zig_normal(w: f32, state: ptr<function, vec2<u32>>) -> f32 {
+    if w < 0.5 {
+        return -ms_zig_half_normal(2.0 * w, state);
+    }
+    return ms_zig_half_normal(2.0 * w - 1.0, state);
+}
+
+// A uniform of the stream in (0, 1): 0 reads as 2^−25 (ln 0 would send a variate to ±∞).
+fn ms_stream_next_positive(state: ptr<function, vec2<u32>>) -> f32 {
+    return max(ms_stream_next(state), 2.9802322e-8);
+}
+
+// ln of a Gamma(k, 1) variate, k > 0 (Marsaglia & Tsang 2000, as the Rust ln_gamma_variate:
+// acceptance ≥ 0.95 for k ≥ 1; below, Gamma(k + 1) U^{1/k} in logarithms). NaN after 64
+// rejections (probability below 1e-80).
+fn ms_ln_gamma_variate(k_in: f32, state: ptr<function, vec2<u32>>) -> f32 {
+    var k = k_in;
+    var boost = 0.0;
+    if k < 1.0 {
+        boost = log(ms_stream_next_positive(state)) / k;
+        k = k + 1.0;
+    }
+    let d = k - 1.0 / 3.0;
+    let c = 1.0 / sqrt(9.0 * d);
+    for (var n = 0; n < 64; n++) {
+        let x = ms_zig_normal(ms_stream_next(state), state);
+        var v = 1.0 + c * x;
+        if v <= 0.0 {
+            continue;
+        }
+        v = v * v * v;
+        if log(ms_stream_next_positive(state)) < 0.5 * x * x + d - d * v + d * log(v) {
+            return log(d) + log(v) + boost;
+        }
+    }
+    return bitcast<f32>(0x7fc00000u);
+}
+
+// A visible normal of Beckmann at (αx, αy) for v above the horizon (v.z > 0) from the
+// stream (the Rust fast::beckmann::sample_visible_above): in v's slope frame (a = v.z/h) the
+// visible slope X has density ∝ (X + a)e^{−X²} on X > −a, drawn from the envelope X e^{−X²}
+// on X ≥ 0 (mass ½: X = √(−ln U)) plus a e^{−X²} on the line (mass a√π: X = ±Z/√2),
+// kept with probability (X + a)/a where X < 0 (acceptance ≥ 0.75); Y is N(0, ½). The
+// normal faces v (ms_facing where rounding would leave it behind).
+fn ms_beckmann_sample_stream_above(v: vec3<f32>, alpha: vec2<f32>,
+    state: ptr<function, vec2<u32>>) -> vec3<f32> {
+    let sx = alpha.x * v.x;
+    let sy = alpha.y * v.y;
+    let h = sqrt(sx * sx + sy * sy);
+    var cp = 1.0;
+    var sp = 0.0;
+    var x = 0.0;
+    if h == 0.0 {
+        x = ms_zig_normal(ms_stream_next(state), state) * 0.70710678118654752;
+    } else {
+        cp = sx / h;
+        sp = sy / h;
+        let a = v.z / h;
+        let p_ray = 0.5 / (0.5 + a * MS_SQRT_PI);
+        x = bitcast<f32>(0x7fc00000u);
+        for (var n = 0; n < 64; n++) {
+            let w = ms_stream_next(state);
+            if w < p_ray {
+                x = sqrt(-log(ms_stream_next_positive(state)));
+                break;
+            }
+            let c = ms_zig_normal((w - p_ray) / (1.0 - p_ray), state) * 0.70710678118654752;
+            if c >= 0.0 || (c > -a && ms_stream_next(state) * a < c + a) {
+                x = c;
+                break;
+            }
+        }
+    }
+    let y = ms_zig_normal(ms_stream_next(state), state) * 0.70710678118654752;
+    let p = alpha.x * (cp * x - sp * y);
+    let q = alpha.y * (sp * x + cp * y);
+    return ms_facing(ms_unit_normal(vec3<f32>(p, q, 1.0)), v);
+}
+
+// ln β of the mixing variable's posterior for a unit direction with z = v.z > 0 and stretched
+// horizontal length h (the Rust mixture::Posterior::sample_ln_beta): a candidate from the
+// prior (weight z) or the size-biased prior (weight h E[β]/(2√π)), kept with probability
+// σ_B/(z + βh/(2√π)) ≥ ½, σ_B = z + (βh/(2√π)) e^{−a²} r(a), a = z/(βh), r(a) = 1 − √π a
+// erfcx(a) (Beckmann's projected area, two positive terms). `mixing`: 0 inverse-Gamma(k)
+// (Student-T, β = √(k/t)), 1 Gamma(k) (K0, Bessel-K, β = √t), 2 uniform in β² (Ei), 3 uniform
+// in β (Erfc). NaN after 64 candidates (probability below 1e-19).
+fn ms_posterior_ln_beta(mixing: u32, k: f32, mean_beta: f32, z: f32, h: f32,
+    state: ptr<function, vec2<u32>>) -> f32 {
+    let c = 0.5 * MS_FRAC_1_SQRT_PI;
+    let p_prior = z / (z + c * h * mean_beta);
+    for (var n = 0; n < 64; n++) {
+        let biased = ms_stream_next(state) >= p_prior;
+        let bias = select(0.0, 1.0, biased);
+        var ln_beta: f32;
+        if mixing == 0u {
+            ln_beta = 0.5 * (log(k) - ms_ln_gamma_variate(k - 0.5 * bias, state));
+        } else if mixing == 1u {
+            ln_beta = 0.5 * ms_ln_gamma_variate(k + 0.5 * bias, state);
+        } else if mixing == 2u {
+            ln_beta = 0.5 * log(ms_stream_next_positive(state)) / (1.0 + 0.5 * bias);
+        } else {
+            ln_beta = log(ms_stream_next_positive(state)) / (1.0 + bias);
+        }
+        let hb = h * exp(ln_beta);
+        var keep = 1.0;
+        if hb > 0.0 && hb <= 3.4028235e38 {
+            let a = z / hb;
+            keep = (z + c * hb * exp(-a * a) * ms_bk_erfc_ratio(a)) / (z + c * hb);
+        }
+        if ms_stream_next(state) < keep {
+            return ln_beta;
+        }
+    }
+    return bitcast<f32>(0x7fc00000u);
+}
+
+// A visible normal of the mixture whose shape table is at `table` (mixing as
+// ms_posterior_ln_beta) for w (w.z < 0 mirrored) from u: β from the posterior over the
+// stream of u, then Beckmann's stream sampler at β(αx, αy) (the Rust Posterior::sample_visible;
+// its uniforms are f64 draws of the stream, these f32 ones: the same distribution, not the
+// same normal). Where the posterior gives up (probability ~1e-19), β = E[β].
+fn ms_mixture_sample_wm(mixing: u32, table: u32, w_in: vec3<f32>, alpha: vec2<f32>,
+    u: vec2<f32>) -> vec3<f32> {
+    var w = ms_unit(w_in);
+    if w.z < 0.0 {
+        w = -w;
+    }
+    let params = ms_tables[table + 2u];
+    let sx = alpha.x * w.x;
+    let sy = alpha.y * w.y;
+    let h = sqrt(sx * sx + sy * sy);
+    var state = ms_stream_new(u);
+    var ln_beta = ms_posterior_ln_beta(mixing, params.y, params.x, w.z, h, &state);
+    if ln_beta != ln_beta {
+        ln_beta = log(params.x);
+    }
+    // β(αx, αy) within f32's range with margin (|ln| ≤ 80): β = 0 or ∞ has probability 0.
+    let lo = log(min(alpha.x, alpha.y));
+    let hi = log(max(alpha.x, alpha.y));
+    let beta = exp(clamp(ln_beta, -80.0 - lo, 80.0 - hi));
+    if !(w.z > 0.0) {
+        // (On the horizon: Beckmann's warp, a visible normal.)
+        return ms_beckmann_sample_wm(w, beta * alpha, u);
+    }
+    return ms_beckmann_sample_stream_above(w, beta * alpha, &state);
+}
+
+// microsurface WGSL library: the Student-T NDF, anisotropic (student_t.wgsl).
+//
+// The Rust `Microfacet<f32, StudentT>` (crates/microsurface/src/fast/fitted.rs, the family's
+// fast path; ndf/student_t.rs for the formulas: Ribardière, Bringier, Meneveaux & Simonot
+// 2017, "STD: Student's t-Distribution of Slopes for Microfacet Based BSDFs", and the
+// StudentT_NDF page of d'Eon's "A Hitchhiker's Guide to Multiple Scattering"), in f32.
+// The shape γ (> 3/2) and the fitted Λ₁ live in the material's shape table (mixture.wgsl;
+// `microsurface_gpu::Tables::add_shape` in Rust): a material is (α, the table's row).
+//
+//   D(m) = (1 + q/(γ − 1))^{−γ}/(π αx αy z⁴),  q = ((m.x/αx)² + (m.y/αy)²)/z²  (0 for z ≤ 0)
+//   Λ(w) = Λ₁(cot θ/α̃) from the table,  G1 = 1/(1 + Λ),  G2 = 1/(1 + Λo + Λi) or G1 G1
+//   D_w(m) = G1(w)(w·m)D(m)/|w.z|
+//
+// D·cos: the radial quantile of Ribardière et al. (their eq. 18), tan²θ/α² = (γ − 1)
+// expm1(−ln(1 − u₀)/(γ − 1)), azimuth 2πu₁, stretched: the Rust warp (the same normal for the
+// same u, to f32's rounding). Visible normals: the mixing variable's posterior (Student-T is
+// the inverse-Gamma(γ − 1) superposition of Beckmann), then Beckmann's stream sampler
+// (mixture.wgsl): the Rust sampler's distribution, not its normals.
+
+// The shape γ of the table at `table`.
+fn ms_student_t_gamma(table: u32) -> f32 {
+    return ms_tables[table].x;
+}
+
+// ln(1 + t) for t ≥ 0 without losing small t (the classic correction of log(1 + t)).
+fn ms_ln_1p(t: f32) -> f32 {
+    let v = 1.0 + t;
+    if v == 1.0 {
+        return t;
+    }
+    return log(v) * (t / (v - 1.0));
+}
+
+// e^x − 1 without losing small x: its Taylor series to x⁹ below |x| = ½ (the next term,
+// 2^−10/10!, is below ε/20 relative), e^x − 1 above (where the subtraction magnifies exp's
+// error at most e^½/(e^½ − 1) ≈ 2.6 times).
+fn ms_expm1(x: f32) -> f32 {
+    if abs(x) < 0.5 {
+        return x * (1.0 + x * (0.5 + x * (1.0 / 6.0 + x * (1.0 / 24.0 + x * (1.0 / 120.0
+            + x * (1.0 / 720.0 + x * (1.0 / 5040.0 + x * (1.0 / 40320.0 + x * (1.0 / 362880.0)))))))));
+    }
+    return exp(x) - 1.0;
+}
+
+// D(wm); 0 on and below the horizon. In logarithms (D = e^{−γ ln(1 + t) − …}), so that a
+// large t or a small z⁴ does not overflow or underflow on the way.
+fn ms_student_t_d(wm: vec3<f32>, alpha: vec2<f32>, table: u32) -> f32 {
+    let z = wm.z;
+    if !(z > 0.0) {
+        return select(0.0, z, z != z);
+    }
+    let g = ms_student_t_gamma(table);
+    let x = wm.x / alpha.x;
+    let y = wm.y / alpha.y;
+    let q = x * x + y * y;
+    let z2 = z * z;
+    if z > 1e-9 {
+        let t = q / (z2 * (g - 1.0));
+        let e = g * ms_ln_1p(t);
+        let norm = MS_PI * alpha.x * alpha.y * z2 * z2;
+        // (Past e = 80, e^{−e} nears f32's least normal: the normalisation joins the exponent,
+        // so that D stays a normal f32 where it is one, as the Rust f64 D rounds.)
+        if e < 80.0 {
+            return exp(-e) / norm;
+        }
+        return exp(-e - log(norm));
+    }
+    // Grazing: ln(1 + t) = ln q − 2 ln z − ln(γ − 1) (+ (γ − 1)z²/q, below ε there for
+    // γ ≤ 1e6 at z ≤ 1e-9 and q ≥ 1e-3; q smaller here makes D vanish anyway).
+    let ln_z = log(z);
+    let ln_d = -g * (log(q) - 2.0 * ln_z - log(g - 1.0)) - 4.0 * ln_z
+        - log(MS_PI * alpha.x * alpha.y);
+    return exp(ln_d);
+}
+
+// Smith Λ(w), Λ(−w) = Λ(w).
+fn ms_student_t_lambda(w: vec3<f32>, alpha: vec2<f32>, table: u32) -> f32 {
+    return ms_shape_lambda(table, w, alpha);
+}
+
+// G1(w).
+fn ms_student_t_g1(w: vec3<f32>, alpha: vec2<f32>, table: u32) -> f32 {
+    return 1.0 / (1.0 + ms_student_t_lambda(w, alpha, table));
+}
+
+// Height-correlated G2(wo, wi).
+fn ms_student_t_g2(wo: vec3<f32>, wi: vec3<f32>, alpha: vec2<f32>, table: u32) -> f32 {
+    return 1.0 / (1.0 + (ms_student_t_lambda(wo, alpha, table)
+        + ms_student_t_lambda(wi, alpha, table)));
+}
+
+// Separable G2(wo, wi) = G1(wo) G1(wi).
+fn ms_student_t_g2_separable(wo: vec3<f32>, wi: vec3<f32>, alpha: vec2<f32>, table: u32) -> f32 {
+    return ms_student_t_g1(wo, alpha, table) * ms_student_t_g1(wi, alpha, table);
+}
+
+// The visible-normal density D_w(wm) = G1(w)(w·wm)D(wm)/|w.z|; w.z < 0 mirrored; 0 at grazing
+// w and for wm facing away from w.
+fn ms_student_t_pdf(w: vec3<f32>, wm: vec3<f32>, alpha: vec2<f32>, table: u32) -> f32 {
+    let z = abs(w.z);
+    var c = ms_dot(w, wm);
+    if w.z < 0.0 {
+        c = -c;
+    }
+    if !(c > 0.0 && z > 0.0) {
+        return 0.0;
+    }
+    return ms_student_t_g1(w, alpha, table) * c * ms_student_t_d(wm, alpha, table) / z;
+}
+
+// The density of ms_student_t_sample_dcos: D(wm) cos θm (0 for wm.z ≤ 0).
+fn ms_student_t_pdf_dcos(wm: vec3<f32>, alpha: vec2<f32>, table: u32) -> f32 {
+    if !(wm.z > 0.0) {
+        return 0.0;
+    }
+    return ms_student_t_d(wm, alpha, table) * wm.z;
+}
+
+// A normal distributed as D(m) cos θm with its pdf: the radial quantile r² = (γ − 1)
+// expm1(−ln(1 − u₀)/(γ − 1)) at unit roughness (the Rust slope_quantile), azimuth 2πu₁, m ∝
+// (αx r cos φ, αy r sin φ, 1), or divided by r past r = 1 (the Rust normal_from_polar).
+fn ms_student_t_sample_dcos(alpha: vec2<f32>, u: vec2<f32>, table: u32) -> MsSample {
+    let g1 = ms_student_t_gamma(table) - 1.0;
+    let r = sqrt(g1 * ms_expm1(-ms_bk_ln_1m(u.x) / g1));
+    let cs = ms_cos_sin_turn(u.y);
+    var v: vec3<f32>;
+    if r > 1.0 {
+        v = vec3<f32>(alpha.x * cs.x, alpha.y * cs.y, 1.0 / r);
+    } else {
+        v = vec3<f32>(alpha.x * r * cs.x, alpha.y * r * cs.y, 1.0);
+    }
+    let wm = ms_unit_normal(v);
+    return MsSample(wm, ms_student_t_pdf_dcos(wm, alpha, table));
+}
+
+// A visible normal for w (w.z < 0 mirrored) from u, with its pdf: the posterior of the
+// inverse-Gamma(γ − 1) mixing, then Beckmann's stream sampler (mixture.wgsl).
+fn ms_student_t_sample(w: vec3<f32>, alpha: vec2<f32>, u: vec2<f32>, table: u32) -> MsSample {
+    let wm = ms_mixture_sample_wm(0u, table, w, alpha, u);
+    return MsSample(wm, ms_student_t_pdf(ms_unit(w), wm, alpha, table));
+}
+
 // microsurface WGSL library: a material's distribution chosen at run time (microfacet.wgsl),
 // the WGSL counterpart of the Rust `MicrofacetDistribution` door that the BSDFs use. A
 // renderer that knows its NDF calls the per-NDF functions (ms_ggx_d, …) directly.
 
-// Which NDF (`ndf`: an MS_NDF_* constant) at roughness (αx, αy). Beckmann, Double GGX and
-// the Exponential NDF read the library's tables (tables.wgsl), so a shader that takes this
-// door binds them.
+// Which NDF (`ndf`: an MS_NDF_* constant) at roughness (αx, αy), and for an NDF with a shape
+// table (Student-T) the table's first row in `ms_tables` (`microsurface_gpu::Tables::add_shape`
+// gives it; 0 and unused for the others). Beckmann, Double GGX, the Exponential NDF and
+// Student-T read the library's tables (tables.wgsl), so a shader that takes this door binds
+// them.
 struct MsMicrofacet {
     ndf: u32,
     alpha: vec2<f32>,
+    table: u32,
 }
 
 const MS_NDF_GGX: u32 = 0u;
 const MS_NDF_BECKMANN: u32 = 1u;
 const MS_NDF_DOUBLE_GGX: u32 = 2u;
 const MS_NDF_EXPONENTIAL: u32 = 3u;
+const MS_NDF_STUDENT_T: u32 = 5u;
 
 // D(wm); 0 below the horizon (and for an NDF this library does not have).
 fn ms_d(mf: MsMicrofacet, wm: vec3<f32>) -> f32 {
@@ -1746,6 +2109,9 @@ fn ms_d(mf: MsMicrofacet, wm: vec3<f32>) -> f32 {
     }
     if mf.ndf == MS_NDF_EXPONENTIAL {
         return ms_exponential_d(wm, mf.alpha);
+    }
+    if mf.ndf == MS_NDF_STUDENT_T {
+        return ms_student_t_d(wm, mf.alpha, mf.table);
     }
     return 0.0;
 }
@@ -1764,6 +2130,9 @@ fn ms_lambda(mf: MsMicrofacet, w: vec3<f32>) -> f32 {
     if mf.ndf == MS_NDF_EXPONENTIAL {
         return ms_exponential_lambda(w, mf.alpha);
     }
+    if mf.ndf == MS_NDF_STUDENT_T {
+        return ms_student_t_lambda(w, mf.alpha, mf.table);
+    }
     return 0.0;
 }
 
@@ -1781,6 +2150,9 @@ fn ms_g1(mf: MsMicrofacet, w: vec3<f32>) -> f32 {
     if mf.ndf == MS_NDF_EXPONENTIAL {
         return ms_exponential_g1(w, mf.alpha);
     }
+    if mf.ndf == MS_NDF_STUDENT_T {
+        return ms_student_t_g1(w, mf.alpha, mf.table);
+    }
     return 0.0;
 }
 
@@ -1797,6 +2169,9 @@ fn ms_g2(mf: MsMicrofacet, wo: vec3<f32>, wi: vec3<f32>) -> f32 {
     }
     if mf.ndf == MS_NDF_EXPONENTIAL {
         return ms_exponential_g2(wo, wi, mf.alpha);
+    }
+    if mf.ndf == MS_NDF_STUDENT_T {
+        return ms_student_t_g2(wo, wi, mf.alpha, mf.table);
     }
     return 0.0;
 }
@@ -1820,7 +2195,18 @@ fn ms_pdf(mf: MsMicrofacet, w: vec3<f32>, wm: vec3<f32>) -> f32 {
     if mf.ndf == MS_NDF_EXPONENTIAL {
         return ms_exponential_pdf(w, wm, mf.alpha);
     }
+    if mf.ndf == MS_NDF_STUDENT_T {
+        return ms_student_t_pdf(w, wm, mf.alpha, mf.table);
+    }
     return 0.0;
+}
+
+// The D·cos density D(wm) cos θm (0 for wm.z ≤ 0): the density of ms_sample_dcos.
+fn ms_pdf_dcos(mf: MsMicrofacet, wm: vec3<f32>) -> f32 {
+    if !(wm.z > 0.0) {
+        return 0.0;
+    }
+    return ms_d(mf, wm) * wm.z;
 }
 
 // A visible normal for w from u ∈ [0, 1)², with its pdf.
@@ -1836,6 +2222,9 @@ fn ms_sample(mf: MsMicrofacet, w: vec3<f32>, u: vec2<f32>) -> MsSample {
     }
     if mf.ndf == MS_NDF_EXPONENTIAL {
         return ms_exponential_sample(w, mf.alpha, u);
+    }
+    if mf.ndf == MS_NDF_STUDENT_T {
+        return ms_student_t_sample(w, mf.alpha, u, mf.table);
     }
     return MsSample(vec3<f32>(0.0, 0.0, 1.0), 0.0);
 }
@@ -1853,6 +2242,9 @@ fn ms_sample_dcos(mf: MsMicrofacet, u: vec2<f32>) -> MsSample {
     }
     if mf.ndf == MS_NDF_EXPONENTIAL {
         return ms_exponential_sample_dcos(mf.alpha, u);
+    }
+    if mf.ndf == MS_NDF_STUDENT_T {
+        return ms_student_t_sample_dcos(mf.alpha, u, mf.table);
     }
     return MsSample(vec3<f32>(0.0, 0.0, 1.0), 0.0);
 }

@@ -148,7 +148,8 @@ use std::sync::{mpsc, Mutex};
 
 /// The WGSL library, one source: `wgsl/common.wgsl`, `fresnel.wgsl`, `ggx.wgsl`,
 /// `tables.wgsl` (generated: the tables buffer's binding and layout), `stream.wgsl`,
-/// `beckmann.wgsl`, `double_ggx.wgsl`, `exponential.wgsl`, `microfacet.wgsl`,
+/// `beckmann.wgsl`, `double_ggx.wgsl`, `exponential.wgsl`, `mixture.wgsl`, `student_t.wgsl`,
+/// `microfacet.wgsl`,
 /// `conductor.wgsl`, `dielectric.wgsl`, `compensation.wgsl`, in that order. A shader that
 /// includes it defines `MS_TABLES_GROUP` and `MS_TABLES_BINDING` (see [`TABLES`]).
 pub const WGSL: &str = concat!(
@@ -167,6 +168,10 @@ pub const WGSL: &str = concat!(
     include_str!("../wgsl/double_ggx.wgsl"),
     "\n",
     include_str!("../wgsl/exponential.wgsl"),
+    "\n",
+    include_str!("../wgsl/mixture.wgsl"),
+    "\n",
+    include_str!("../wgsl/student_t.wgsl"),
     "\n",
     include_str!("../wgsl/microfacet.wgsl"),
     "\n",
@@ -194,6 +199,93 @@ pub const WGSL: &str = concat!(
 /// GGX, the Exponential NDF or `MsMicrofacet`); an entry point that calls only GGX and
 /// Fresnel functions needs no buffer bound. [`Gpu`] binds it at group 1, binding 0.
 pub static TABLES: &[u8] = include_bytes!("../generated/microsurface_tables.bin");
+
+/// The contents of the library's buffer `ms_tables` for a shader whose materials have shape
+/// tables: the library's [`TABLES`] followed by each shape's own (the Student-T γ's fitted
+/// Λ₁ and posterior parameters; the layout is in `wgsl/mixture.wgsl`). A shape's table is
+/// built once (the Rust fast path's `FittedShape`: milliseconds) and serves every roughness;
+/// its row goes into `MsMicrofacet`'s `table`.
+///
+/// ```
+/// use microsurface::NdfKind;
+/// let mut tables = microsurface_gpu::Tables::new();
+/// let row = tables.add_shape(NdfKind::StudentT, Some(2.5))?;
+/// // MsMicrofacet(MS_NDF_STUDENT_T, alpha, row) in the shader; bind tables.bytes().
+/// assert!(row as usize * 16 >= microsurface_gpu::TABLES.len());
+/// # Ok::<(), microsurface::ParamError>(())
+/// ```
+#[derive(Clone, Debug)]
+pub struct Tables {
+    rows: Vec<[f32; 4]>,
+}
+
+impl Default for Tables {
+    fn default() -> Self {
+        Tables::new()
+    }
+}
+
+impl Tables {
+    /// The library's tables alone ([`TABLES`]).
+    pub fn new() -> Tables {
+        let rows = TABLES
+            .chunks_exact(16)
+            .map(|r| {
+                let f = |k: usize| f32::from_le_bytes([r[k], r[k + 1], r[k + 2], r[k + 3]]);
+                [f(0), f(4), f(8), f(12)]
+            })
+            .collect();
+        Tables { rows }
+    }
+
+    /// Appends the shape table of `kind` at `shape` and returns its first row (the `table`
+    /// of an `MsMicrofacet` of that NDF). Student-T only so far (γ in (3/2, 1e6]);
+    /// `ParamError` for other kinds and shapes out of range.
+    pub fn add_shape(
+        &mut self,
+        kind: microsurface::NdfKind,
+        shape: Option<f64>,
+    ) -> Result<u32, microsurface::ParamError> {
+        use microsurface::fast::fitted::FittedShape;
+        let unsupported = microsurface::ParamError::Shape {
+            name: "GPU shape table (Student-T with gamma > 1.5)",
+            range: "(1.5, 1e6]",
+            value: shape.unwrap_or(f64::NAN),
+        };
+        if kind != microsurface::NdfKind::StudentT {
+            return Err(unsupported);
+        }
+        let ndf = microsurface::AnyNdf::new(kind, 1.0, shape)?;
+        let fitted = FittedShape::new(&ndf)?;
+        let l = fitted.layout();
+        let at = self.rows.len() as u32;
+        let (tail_on, tail) = match l.tail {
+            Some(t) => (1.0, t),
+            None => (0.0, [0.0; 3]),
+        };
+        self.rows.push([
+            shape.unwrap_or(0.0) as f32,
+            l.k1 as f32,
+            if l.direct { 1.0 } else { 0.0 },
+            l.sigma0 as f32,
+        ]);
+        self.rows
+            .push([tail_on, tail[0] as f32, tail[1] as f32, tail[2] as f32]);
+        self.rows
+            .push([l.mean_beta as f32, l.mixing_k as f32, 0.0, 0.0]);
+        for c in l.rows {
+            self.rows
+                .push([c[0] as f32, c[1] as f32, c[2] as f32, c[3] as f32]);
+            self.rows.push([c[4] as f32, 0.0, 0.0, 0.0]);
+        }
+        Ok(at)
+    }
+
+    /// The buffer's bytes (little-endian `vec4<f32>` rows).
+    pub fn bytes(&self) -> &[u8] {
+        bytemuck::cast_slice(&self.rows)
+    }
+}
 
 /// The test kernels (`wgsl/kernels.wgsl`): compute entry points over records of five
 /// `vec4<f32>` in and two out (the layout is in the file), compiled after [`WGSL`]; the
@@ -280,6 +372,11 @@ impl Gpu {
     /// The first Vulkan adapter (high-performance preferred), its device with the adapter's
     /// own limits (large storage buffers) and timestamp queries where it has them.
     pub fn new() -> Result<Gpu, Error> {
+        Gpu::with_tables(&Tables::new())
+    }
+
+    /// [`Gpu::new`] with `tables` bound as the library's buffer (materials with shape tables).
+    pub fn with_tables(tables: &Tables) -> Result<Gpu, Error> {
         let instance = wgpu::Instance::new(wgpu::InstanceDescriptor {
             backends: wgpu::Backends::VULKAN,
             ..wgpu::InstanceDescriptor::new_without_display_handle()
@@ -306,13 +403,14 @@ impl Gpu {
             label: Some("microsurface tables"),
             entries: &[storage_entry(0, true)],
         });
+        let bytes = tables.bytes();
         let buffer = device.create_buffer(&wgpu::BufferDescriptor {
             label: Some("microsurface tables"),
-            size: TABLES.len() as u64,
+            size: bytes.len() as u64,
             usage: wgpu::BufferUsages::STORAGE | wgpu::BufferUsages::COPY_DST,
             mapped_at_creation: false,
         });
-        queue.write_buffer(&buffer, 0, TABLES);
+        queue.write_buffer(&buffer, 0, bytes);
         let tables = device.create_bind_group(&wgpu::BindGroupDescriptor {
             label: Some("microsurface tables"),
             layout: &tables_layout,
@@ -337,7 +435,8 @@ impl Gpu {
         &self.tables_layout
     }
 
-    /// The bind group of the library's [`TABLES`], uploaded once by [`Gpu::new`].
+    /// The bind group of the library's tables ([`TABLES`], or the [`Tables`] of
+    /// [`Gpu::with_tables`]), uploaded once.
     pub fn tables(&self) -> &wgpu::BindGroup {
         &self.tables
     }

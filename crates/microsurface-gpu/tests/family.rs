@@ -19,8 +19,8 @@
 //!   from u, against the Rust `UniformStream`'s f64 and f32 draws).
 
 use microsurface::distribution::UniformStream;
-use microsurface::{DoubleGgx, Exponential, Microfacet, MicrofacetDistribution};
-use microsurface_gpu::{kernels_source, Error, Gpu, Program, KERNEL_IN, KERNEL_OUT};
+use microsurface::{DoubleGgx, Exponential, Microfacet, MicrofacetDistribution, NdfKind, StudentT};
+use microsurface_gpu::{kernels_source, Error, Gpu, Program, Tables, KERNEL_IN, KERNEL_OUT};
 use std::sync::OnceLock;
 
 mod grid;
@@ -35,7 +35,17 @@ fn gpu() -> Option<&'static (Gpu, Program)> {
     static GPU: OnceLock<Option<(Gpu, Program)>> = OnceLock::new();
     GPU.get_or_init(|| {
         let required = std::env::var("MICROSURFACE_GPU_REQUIRED").as_deref() == Ok("1");
-        match Gpu::new() {
+        let mut tables = Tables::new();
+        let rows: Vec<u32> = STUDENT_T_GAMMAS
+            .iter()
+            .map(|&g| {
+                tables
+                    .add_shape(NdfKind::StudentT, Some(g))
+                    .expect("a Student-T shape")
+            })
+            .collect();
+        let _ = SHAPE_ROWS.set(rows);
+        match Gpu::with_tables(&tables) {
             Ok(g) => {
                 let p = g.program(&kernels_source()).expect("the kernels validate");
                 Some((g, p))
@@ -48,6 +58,32 @@ fn gpu() -> Option<&'static (Gpu, Program)> {
         }
     })
     .as_ref()
+}
+
+/// The Student-T shapes of the tests: near the pole at 3/2, GGX's neighbour, and two where
+/// the tails approach Beckmann's.
+const STUDENT_T_GAMMAS: [f64; 4] = [1.8, 2.5, 10.0, 40.0];
+/// Their shape tables' rows in the bound buffer.
+static SHAPE_ROWS: OnceLock<Vec<u32>> = OnceLock::new();
+/// An element's `ndf` for Student-T at STUDENT_T_GAMMAS[k]: 16 + k.
+const NDF_STUDENT_T_SHAPES: u32 = 16;
+/// MsMicrofacet's MS_NDF_STUDENT_T.
+const MS_NDF_STUDENT_T: u32 = 5;
+
+/// Student-T's γ of an element (`None` for the other NDFs).
+fn student_t_gamma(e: &El) -> Option<f64> {
+    (e.ndf >= NDF_STUDENT_T_SHAPES)
+        .then(|| STUDENT_T_GAMMAS[(e.ndf - NDF_STUDENT_T_SHAPES) as usize])
+}
+
+/// Record 2's w of an element: the NDF plus 16 times its shape table's row.
+fn ndf_code(e: &El) -> f32 {
+    if e.ndf >= NDF_STUDENT_T_SHAPES {
+        let row = SHAPE_ROWS.get().expect("the tables")[(e.ndf - NDF_STUDENT_T_SHAPES) as usize];
+        (MS_NDF_STUDENT_T + 16 * row) as f32
+    } else {
+        e.ndf as f32
+    }
 }
 
 /// One kernel element: (αx, αy, u), wo, (wm, ndf).
@@ -68,7 +104,7 @@ fn run(entry: &str, els: &[El]) -> Option<Vec<[[f32; 4]; KERNEL_OUT]>> {
             [
                 [e.alpha[0], e.alpha[1], e.u[0], e.u[1]],
                 [e.wo[0], e.wo[1], e.wo[2], 0.5],
-                [e.wm[0], e.wm[1], e.wm[2], e.ndf as f32],
+                [e.wm[0], e.wm[1], e.wm[2], ndf_code(e)],
                 [1.0, 1.0, 1.0, 0.0],
                 [0.0; 4],
             ]
@@ -116,6 +152,9 @@ impl Worst {
 /// The Rust f32 material of an element.
 fn rust(e: &El) -> Box<dyn MicrofacetDistribution<f32>> {
     let [ax, ay] = e.alpha;
+    if let Some(g) = student_t_gamma(e) {
+        return Box::new(Microfacet::<f32, StudentT>::with_shape(ax, ay, Some(g)).unwrap());
+    }
     if e.ndf == NDF_DOUBLE_GGX {
         Box::new(Microfacet::<f32, DoubleGgx>::new(ax, ay).unwrap())
     } else {
@@ -407,20 +446,26 @@ fn histogram(edges: &[f32], normals: impl Iterator<Item = [f32; 3]>) -> Vec<f64>
 /// either hits, χ² with one degree fewer than those bins), at p = 1e-6. The Rust samplers are
 /// χ²-tested against their pdfs (crates/microsurface/tests/chi2.rs), so this makes the GPU
 /// ones consistent with the Rust pdf. Grazing, oblique and normal incidence, isotropic and
-/// anisotropic roughness, both NDFs.
+/// anisotropic roughness; Double GGX, the Exponential NDF and Student-T (γ = 2.5 and 10: the
+/// posterior sampler, whose GPU draws are not the Rust ones).
 #[test]
 fn visible_samplers_are_chi2_consistent_with_rust() {
     const N: usize = 1 << 18;
-    let configs: Vec<(u32, [f32; 2], [f32; 3])> = [NDF_DOUBLE_GGX, NDF_EXPONENTIAL]
-        .iter()
-        .flat_map(|&ndf| {
-            [
-                (ndf, [0.5, 0.5], [0.0, 0.0, 1.0]),
-                (ndf, [0.3, 0.8], grid::dir(0.5, 0.5)),
-                (ndf, [0.7, 0.7], grid::dir(0.05, 2.0)),
-            ]
-        })
-        .collect();
+    let configs: Vec<(u32, [f32; 2], [f32; 3])> = [
+        NDF_DOUBLE_GGX,
+        NDF_EXPONENTIAL,
+        NDF_STUDENT_T_SHAPES + 1,
+        NDF_STUDENT_T_SHAPES + 2,
+    ]
+    .iter()
+    .flat_map(|&ndf| {
+        [
+            (ndf, [0.5, 0.5], [0.0, 0.0, 1.0]),
+            (ndf, [0.3, 0.8], grid::dir(0.5, 0.5)),
+            (ndf, [0.7, 0.7], grid::dir(0.05, 2.0)),
+        ]
+    })
+    .collect();
     let mut st = 0x5eed_0fc4_15a3_d00d_u64;
     let mut uniform = move || (splitmix(&mut st) >> 40) as f32 / 16_777_216.0;
     let mut els = Vec::with_capacity(configs.len() * N);
@@ -453,16 +498,12 @@ fn visible_samplers_are_chi2_consistent_with_rust() {
         }
         rust_normals.push(r);
     }
-    let Some(out) = run("ms_k_family_sample", &els) else {
-        return;
-    };
     for (k, &(ndf, alpha, wo)) in configs.iter().enumerate() {
-        let gpu = histogram(
-            &edges[k],
-            out[k * N..(k + 1) * N]
-                .iter()
-                .map(|o| [o[1][0], o[1][1], o[1][2]]),
-        );
+        // (One dispatch per configuration: a storage binding holds at most 128 MiB.)
+        let Some(out) = run("ms_k_family_sample", &els[k * N..(k + 1) * N]) else {
+            return;
+        };
+        let gpu = histogram(&edges[k], out.iter().map(|o| [o[1][0], o[1][1], o[1][2]]));
         let cpu = histogram(&edges[k], rust_normals[k].iter().copied());
         let (mut chi2, mut bins) = (0.0, 0usize);
         for (a, b) in gpu.iter().zip(&cpu) {
@@ -480,4 +521,157 @@ fn visible_samplers_are_chi2_consistent_with_rust() {
             "ndf {ndf} α {alpha:?} wo {wo:?}: χ² {chi2:.1} > {limit:.1} ({bins} bins)"
         );
     }
+}
+
+/// Student-T's Λ bound at w, from Λ's value λ (f64): `TOL`; the rounding of z = cot θ/α̃ (a
+/// few ε) times Λ's condition number in z (≤ 2γ − 1: ~1 at grazing, the tail's power 2γ − 2
+/// near the normal); and, where the rows hold 256 log₂ Λ₁ (p), their f32 rounding, ε|p| in p,
+/// which is ln 2 ε|log₂ λ| in Λ, with exp2's Vulkan allowance (3 + 2|log₂ λ| ulp).
+fn student_t_lambda_bound(g: f64, lambda: f64) -> f64 {
+    let x = if lambda > 0.0 && lambda.is_finite() {
+        lambda.log2().abs()
+    } else {
+        0.0
+    };
+    TOL + 8.0 * EPS * (2.0 * g - 1.0) + 8.0 * EPS * (1.0 + x)
+}
+
+/// Student-T's D bound at wm: D = e^{−e}/(π αx αy z⁴), e = γ ln(1 + t), t = q/((γ − 1)z²):
+/// t carries ~5 roundings and ln(1 + t) ~3 (so e moves by ~8εγ), and Vulkan allows the
+/// exponential (3 + 2e) ulp: `TOL` + (8 + 8γ + 4e)ε.
+fn student_t_d_bound(g: f64, wm: [f32; 3], alpha: [f32; 2]) -> f64 {
+    let (x, y, z) = (
+        wm[0] as f64 / alpha[0] as f64,
+        wm[1] as f64 / alpha[1] as f64,
+        wm[2] as f64,
+    );
+    let e = if z > 0.0 {
+        g * ((x * x + y * y) / ((g - 1.0) * z * z)).ln_1p()
+    } else {
+        0.0
+    };
+    TOL + (8.0 + 8.0 * g + 4.0 * e) * EPS
+}
+
+#[test]
+fn student_t_d_lambda_g1_g2_pdfs_match_rust_f32() {
+    let mut els = Vec::new();
+    for k in 0..STUDENT_T_GAMMAS.len() as u32 {
+        for &alpha in &ALPHAS {
+            for &wo in &directions() {
+                for &wm in &normals() {
+                    els.push(El {
+                        ndf: NDF_STUDENT_T_SHAPES + k,
+                        alpha,
+                        u: [0.5; 2],
+                        wo,
+                        wm,
+                    });
+                }
+            }
+        }
+    }
+    let Some(out) = run("ms_k_family_eval", &els) else {
+        return;
+    };
+    let names = [
+        "D / bound",
+        "Λ / bound",
+        "G1 / bound",
+        "G2 correlated / bound",
+        "G2 separable / bound",
+        "visible pdf / bound",
+        "D·cos pdf / bound",
+        "G1(wm) / bound",
+    ];
+    let mut w: Vec<Worst> = STUDENT_T_GAMMAS
+        .iter()
+        .map(|_| Worst::new(&names))
+        .collect();
+    for (e, o) in els.iter().zip(&out) {
+        let m = rust(e);
+        let g = student_t_gamma(e).expect("Student-T");
+        let (wo, wm) = (e.wo, e.wm);
+        let r = [
+            m.d(wm),
+            m.lambda(wo),
+            m.g1(wo),
+            m.g2(wo, wm),
+            m.g2_separable(wo, wm),
+            m.pdf(wo, wm),
+            m.pdf_dcos(wm),
+            m.g1(wm),
+        ];
+        let gpu = [
+            o[0][0], o[0][1], o[0][2], o[0][3], o[1][0], o[1][1], o[1][2], o[1][3],
+        ];
+        let (lo, li) = (m.lambda(wo) as f64, m.lambda(wm) as f64);
+        let (bo, bi) = (student_t_lambda_bound(g, lo), student_t_lambda_bound(g, li));
+        let frac = |l: f64| if l.is_finite() { l / (1.0 + l) } else { 1.0 };
+        let g1 = TOL + bo * frac(lo);
+        let g1m = TOL + bi * frac(li);
+        let g2 = TOL + bo.max(bi) * frac(lo + li);
+        let d = student_t_d_bound(g, wm, e.alpha);
+        let pdf = g1 + d + 8.0 * EPS * dot_cancellation(wo, wm);
+        let tol = [d, bo, g1, g2, g1 + g1m + TOL, pdf, d, g1m];
+        let k = (e.ndf - NDF_STUDENT_T_SHAPES) as usize;
+        for q in 0..names.len() {
+            w[k].add(q, rel(gpu[q], r[q]) / tol[q], || {
+                format!("{e:?}: gpu {} rust {} (bound {:e})", gpu[q], r[q], tol[q])
+            });
+        }
+    }
+    for (k, g) in STUDENT_T_GAMMAS.iter().enumerate() {
+        eprintln!("Student-T γ = {g}:");
+        w[k].check();
+    }
+}
+
+/// Student-T's D·cos sampler is the Rust warp (the radial quantile r² = (γ − 1)
+/// expm1(−ln(1 − u₀)/(γ − 1)), then the polar normal), so the same u gives the same normal:
+/// within 16ε plus r's relative error ρ times the normal's sensitivity to ln r (≤ ½, times
+/// the anisotropy max(αx/αy, αy/αx)). ρ is half of r²'s: ln(1 − u₀) a few ε, x = −ln(1 −
+/// u₀)/(γ − 1) one more, expm1's condition number 1 + x and its own evaluation (the series
+/// below ½, e^x − 1 above, Vulkan's exp within 3 + 2x ulp, magnified at most 2.6 by the
+/// subtraction): 8ε(1 + x) + 16ε.
+#[test]
+fn student_t_dcos_sampler_gives_the_rust_f32_normals() {
+    let mut els = Vec::new();
+    for k in 0..STUDENT_T_GAMMAS.len() as u32 {
+        for &alpha in &ALPHAS {
+            for &u in &uniforms() {
+                els.push(El {
+                    ndf: NDF_STUDENT_T_SHAPES + k,
+                    alpha,
+                    u,
+                    wo: [0.0, 0.0, 1.0],
+                    wm: [0.0, 0.0, 1.0],
+                });
+            }
+        }
+    }
+    let Some(out) = run("ms_k_family_sample", &els) else {
+        return;
+    };
+    let names = ["D·cos normal / bound", "D·cos pdf at it / bound"];
+    let mut w = Worst::new(&names);
+    for (e, o) in els.iter().zip(&out) {
+        let m = rust(e);
+        let g = student_t_gamma(e).expect("Student-T");
+        let s = m.sample_dcos(e.u);
+        let gm = [o[0][0], o[0][1], o[0][2]];
+        let x = -(-(e.u[0] as f64)).ln_1p() / (g - 1.0);
+        let aniso = (e.alpha[0] / e.alpha[1]).max(e.alpha[1] / e.alpha[0]) as f64;
+        let tol = NORMAL_TOL + 0.5 * aniso * (8.0 * EPS * (1.0 + x) + 16.0 * EPS);
+        w.add(0, vec_diff(gm, s.wm) / tol, || {
+            format!("{e:?}: gpu {:?} rust {:?} (bound {tol:e})", o[0], s.wm)
+        });
+        let p = m.pdf_dcos(gm);
+        w.add(
+            1,
+            rel(o[0][3], p) / student_t_d_bound(g, gm, e.alpha),
+            || format!("{e:?}: gpu {} rust {p}", o[0][3]),
+        );
+    }
+    w.check();
 }

@@ -109,7 +109,7 @@ fn fz_furnace(@builtin(global_invocation_id) id: vec3<u32>,
     let wi = fz_in[2u * i + 1u].xyz;
     let alpha = vec2<f32>(a.w);
     let one = vec3<f32>(1.0);
-    let c = MsConductor(MsMicrofacet(MS_NDF_GGX, alpha), MsFresnel(MS_FRESNEL_ONE, one, one),
+    let c = MsConductor(MsMicrofacet(MS_NDF_GGX, alpha, 0u), MsFresnel(MS_FRESNEL_ONE, one, one),
         MS_MASKING_CORRELATED);
     let r = ms_lut_tap(ms_lut_roughness_coord(alpha, 1.0), fz_n_alpha());
     let e_o = fz_albedo(r, abs(wo.z));
@@ -168,7 +168,7 @@ fn fz_dielectric(@builtin(global_invocation_id) id: vec3<u32>,
     let wo = a.xyz;
     let wi = b.xyz;
     let alpha = vec2<f32>(a.w);
-    let d = MsDielectric(MsMicrofacet(MS_NDF_GGX, alpha), b.w, MS_MASKING_CORRELATED,
+    let d = MsDielectric(MsMicrofacet(MS_NDF_GGX, alpha, 0u), b.w, MS_MASKING_CORRELATED,
         MS_TRANSPORT_IMPORTANCE);
     let e = ms_lut_tap(ms_lut_eta_coord(b.w), u32(lut[0]));
     let r = ms_lut_tap(ms_lut_roughness_coord(alpha, 1.0), u32(lut[1]));
@@ -843,7 +843,7 @@ fn cc_read(id: vec3<u32>, groups: vec3<u32>) -> CcIn {
     let u = cc_in[i + 2u];
     let m = cc_in[i + 3u];
     let f0 = cc_in[i + 4u].xyz;
-    let c = MsConductor(MsMicrofacet(MS_NDF_GGX, vec2<f32>(a.w)),
+    let c = MsConductor(MsMicrofacet(MS_NDF_GGX, vec2<f32>(a.w), 0u),
         MsFresnel(MS_FRESNEL_SCHLICK, f0, vec3<f32>(0.0)), MS_MASKING_CORRELATED);
     return CcIn(c, a.xyz, b.xyz, b.w, u.xy, u.z, u.w, m.xyz, m.w, f0);
 }

@@ -26,12 +26,18 @@ fn ms_k_index(id: vec3<u32>, groups: vec3<u32>) -> u32 {
     return i;
 }
 
+// The element's material: record 2's w is the NDF plus 16 times its shape table's row.
+fn ms_k_microfacet(r0: vec4<f32>, r2: vec4<f32>) -> MsMicrofacet {
+    let code = u32(r2.w);
+    return MsMicrofacet(code & 15u, r0.xy, code >> 4u);
+}
+
 fn ms_k_conductor(i: u32) -> MsConductor {
     let r0 = ms_in[i * MS_K_IN];
     let r2 = ms_in[i * MS_K_IN + 2u];
     let r3 = ms_in[i * MS_K_IN + 3u];
     let r4 = ms_in[i * MS_K_IN + 4u];
-    let mf = MsMicrofacet(u32(r2.w), r0.xy);
+    let mf = ms_k_microfacet(r0, r2);
     return MsConductor(mf, MsFresnel(u32(r3.w), r3.xyz, r4.xyz), u32(r4.w));
 }
 
@@ -68,7 +74,7 @@ fn ms_k_beckmann_eval(@builtin(global_invocation_id) id: vec3<u32>,
         ms_beckmann_g1(wo, a), ms_beckmann_g2(wo, wm, a));
     ms_out[i * MS_K_OUT + 1u] = vec4<f32>(ms_beckmann_g2_separable(wo, wm, a),
         ms_beckmann_pdf(wo, wm, a), ms_beckmann_pdf_dcos(wm, a),
-        ms_pdf(MsMicrofacet(MS_NDF_BECKMANN, a), wo, wm));
+        ms_pdf(MsMicrofacet(MS_NDF_BECKMANN, a, 0u), wo, wm));
 }
 
 // Beckmann: the visible normal of wo and u with its pdf (through MsMicrofacet); the D·cos
@@ -82,7 +88,7 @@ fn ms_k_beckmann_sample(@builtin(global_invocation_id) id: vec3<u32>,
     }
     let r0 = ms_in[i * MS_K_IN];
     let wo = ms_in[i * MS_K_IN + 1u].xyz;
-    let s = ms_sample(MsMicrofacet(MS_NDF_BECKMANN, r0.xy), wo, r0.zw);
+    let s = ms_sample(MsMicrofacet(MS_NDF_BECKMANN, r0.xy, 0u), wo, r0.zw);
     let t = ms_beckmann_sample_dcos(r0.xy, r0.zw);
     ms_out[i * MS_K_OUT] = vec4<f32>(s.wm, s.pdf);
     ms_out[i * MS_K_OUT + 1u] = vec4<f32>(t.wm, t.pdf);
@@ -174,7 +180,7 @@ fn ms_k_dielectric(i: u32) -> MsDielectric {
     let r2 = ms_in[i * MS_K_IN + 2u];
     let r3 = ms_in[i * MS_K_IN + 3u];
     let r4 = ms_in[i * MS_K_IN + 4u];
-    return MsDielectric(MsMicrofacet(u32(r2.w), r0.xy), r3.x, u32(r4.w), u32(r4.x));
+    return MsDielectric(ms_k_microfacet(r0, r2), r3.x, u32(r4.w), u32(r4.x));
 }
 
 // The element's dielectric (η = Fresnel a.x, transport = b.x, masking) at (wo, wi):
@@ -213,7 +219,8 @@ fn ms_k_dielectric_sample(@builtin(global_invocation_id) id: vec3<u32>,
 // Double GGX and the Exponential NDF: the NDF is record 2's w (MS_NDF_DOUBLE_GGX or
 // MS_NDF_EXPONENTIAL).
 
-// D(wm), Λ(wo), G1(wo), G2(wo, wm); separable G2, D_wo(wm), D(wm) cos θm, G1(wm).
+// D(wm), Λ(wo), G1(wo), G2(wo, wm); separable G2, D_wo(wm), D(wm) cos θm, G1(wm), all
+// through the run-time door MsMicrofacet (record 2's w: the NDF plus 16 × its table's row).
 @compute @workgroup_size(64)
 fn ms_k_family_eval(@builtin(global_invocation_id) id: vec3<u32>,
     @builtin(num_workgroups) groups: vec3<u32>) {
@@ -221,21 +228,15 @@ fn ms_k_family_eval(@builtin(global_invocation_id) id: vec3<u32>,
     if i == arrayLength(&ms_in) / MS_K_IN {
         return;
     }
-    let a = ms_in[i * MS_K_IN].xy;
+    let r0 = ms_in[i * MS_K_IN];
     let wo = ms_in[i * MS_K_IN + 1u].xyz;
     let r2 = ms_in[i * MS_K_IN + 2u];
     let wm = r2.xyz;
-    if u32(r2.w) == MS_NDF_DOUBLE_GGX {
-        ms_out[i * MS_K_OUT] = vec4<f32>(ms_double_ggx_d(wm, a), ms_double_ggx_lambda(wo, a),
-            ms_double_ggx_g1(wo, a), ms_double_ggx_g2(wo, wm, a));
-        ms_out[i * MS_K_OUT + 1u] = vec4<f32>(ms_double_ggx_g2_separable(wo, wm, a),
-            ms_double_ggx_pdf(wo, wm, a), ms_double_ggx_pdf_dcos(wm, a), ms_double_ggx_g1(wm, a));
-    } else {
-        ms_out[i * MS_K_OUT] = vec4<f32>(ms_exponential_d(wm, a), ms_exponential_lambda(wo, a),
-            ms_exponential_g1(wo, a), ms_exponential_g2(wo, wm, a));
-        ms_out[i * MS_K_OUT + 1u] = vec4<f32>(ms_exponential_g2_separable(wo, wm, a),
-            ms_exponential_pdf(wo, wm, a), ms_exponential_pdf_dcos(wm, a), ms_exponential_g1(wm, a));
-    }
+    let mf = ms_k_microfacet(r0, r2);
+    ms_out[i * MS_K_OUT] = vec4<f32>(ms_d(mf, wm), ms_lambda(mf, wo), ms_g1(mf, wo),
+        ms_g2(mf, wo, wm));
+    ms_out[i * MS_K_OUT + 1u] = vec4<f32>(ms_g2_separable(mf, wo, wm), ms_pdf(mf, wo, wm),
+        ms_pdf_dcos(mf, wm), ms_g1(mf, wm));
 }
 
 // The D·cos normal of u with its pdf; the visible normal for wo of u with its pdf, through
@@ -249,14 +250,9 @@ fn ms_k_family_sample(@builtin(global_invocation_id) id: vec3<u32>,
     }
     let r0 = ms_in[i * MS_K_IN];
     let wo = ms_in[i * MS_K_IN + 1u].xyz;
-    let ndf = u32(ms_in[i * MS_K_IN + 2u].w);
-    var t: MsSample;
-    if ndf == MS_NDF_DOUBLE_GGX {
-        t = ms_double_ggx_sample_dcos(r0.xy, r0.zw);
-    } else {
-        t = ms_exponential_sample_dcos(r0.xy, r0.zw);
-    }
-    let v = ms_sample(MsMicrofacet(ndf, r0.xy), wo, r0.zw);
+    let mf = ms_k_microfacet(r0, ms_in[i * MS_K_IN + 2u]);
+    let t = ms_sample_dcos(mf, r0.zw);
+    let v = ms_sample(mf, wo, r0.zw);
     ms_out[i * MS_K_OUT] = vec4<f32>(t.wm, t.pdf);
     ms_out[i * MS_K_OUT + 1u] = vec4<f32>(v.wm, v.pdf);
 }

@@ -2,18 +2,22 @@
 // the WGSL counterpart of the Rust `MicrofacetDistribution` door that the BSDFs use. A
 // renderer that knows its NDF calls the per-NDF functions (ms_ggx_d, …) directly.
 
-// Which NDF (`ndf`: an MS_NDF_* constant) at roughness (αx, αy). Beckmann, Double GGX and
-// the Exponential NDF read the library's tables (tables.wgsl), so a shader that takes this
-// door binds them.
+// Which NDF (`ndf`: an MS_NDF_* constant) at roughness (αx, αy), and for an NDF with a shape
+// table (Student-T) the table's first row in `ms_tables` (`microsurface_gpu::Tables::add_shape`
+// gives it; 0 and unused for the others). Beckmann, Double GGX, the Exponential NDF and
+// Student-T read the library's tables (tables.wgsl), so a shader that takes this door binds
+// them.
 struct MsMicrofacet {
     ndf: u32,
     alpha: vec2<f32>,
+    table: u32,
 }
 
 const MS_NDF_GGX: u32 = 0u;
 const MS_NDF_BECKMANN: u32 = 1u;
 const MS_NDF_DOUBLE_GGX: u32 = 2u;
 const MS_NDF_EXPONENTIAL: u32 = 3u;
+const MS_NDF_STUDENT_T: u32 = 5u;
 
 // D(wm); 0 below the horizon (and for an NDF this library does not have).
 fn ms_d(mf: MsMicrofacet, wm: vec3<f32>) -> f32 {
@@ -28,6 +32,9 @@ fn ms_d(mf: MsMicrofacet, wm: vec3<f32>) -> f32 {
     }
     if mf.ndf == MS_NDF_EXPONENTIAL {
         return ms_exponential_d(wm, mf.alpha);
+    }
+    if mf.ndf == MS_NDF_STUDENT_T {
+        return ms_student_t_d(wm, mf.alpha, mf.table);
     }
     return 0.0;
 }
@@ -46,6 +53,9 @@ fn ms_lambda(mf: MsMicrofacet, w: vec3<f32>) -> f32 {
     if mf.ndf == MS_NDF_EXPONENTIAL {
         return ms_exponential_lambda(w, mf.alpha);
     }
+    if mf.ndf == MS_NDF_STUDENT_T {
+        return ms_student_t_lambda(w, mf.alpha, mf.table);
+    }
     return 0.0;
 }
 
@@ -63,6 +73,9 @@ fn ms_g1(mf: MsMicrofacet, w: vec3<f32>) -> f32 {
     if mf.ndf == MS_NDF_EXPONENTIAL {
         return ms_exponential_g1(w, mf.alpha);
     }
+    if mf.ndf == MS_NDF_STUDENT_T {
+        return ms_student_t_g1(w, mf.alpha, mf.table);
+    }
     return 0.0;
 }
 
@@ -79,6 +92,9 @@ fn ms_g2(mf: MsMicrofacet, wo: vec3<f32>, wi: vec3<f32>) -> f32 {
     }
     if mf.ndf == MS_NDF_EXPONENTIAL {
         return ms_exponential_g2(wo, wi, mf.alpha);
+    }
+    if mf.ndf == MS_NDF_STUDENT_T {
+        return ms_student_t_g2(wo, wi, mf.alpha, mf.table);
     }
     return 0.0;
 }
@@ -102,7 +118,18 @@ fn ms_pdf(mf: MsMicrofacet, w: vec3<f32>, wm: vec3<f32>) -> f32 {
     if mf.ndf == MS_NDF_EXPONENTIAL {
         return ms_exponential_pdf(w, wm, mf.alpha);
     }
+    if mf.ndf == MS_NDF_STUDENT_T {
+        return ms_student_t_pdf(w, wm, mf.alpha, mf.table);
+    }
     return 0.0;
+}
+
+// The D·cos density D(wm) cos θm (0 for wm.z ≤ 0): the density of ms_sample_dcos.
+fn ms_pdf_dcos(mf: MsMicrofacet, wm: vec3<f32>) -> f32 {
+    if !(wm.z > 0.0) {
+        return 0.0;
+    }
+    return ms_d(mf, wm) * wm.z;
 }
 
 // A visible normal for w from u ∈ [0, 1)², with its pdf.
@@ -118,6 +145,9 @@ fn ms_sample(mf: MsMicrofacet, w: vec3<f32>, u: vec2<f32>) -> MsSample {
     }
     if mf.ndf == MS_NDF_EXPONENTIAL {
         return ms_exponential_sample(w, mf.alpha, u);
+    }
+    if mf.ndf == MS_NDF_STUDENT_T {
+        return ms_student_t_sample(w, mf.alpha, u, mf.table);
     }
     return MsSample(vec3<f32>(0.0, 0.0, 1.0), 0.0);
 }
@@ -135,6 +165,9 @@ fn ms_sample_dcos(mf: MsMicrofacet, u: vec2<f32>) -> MsSample {
     }
     if mf.ndf == MS_NDF_EXPONENTIAL {
         return ms_exponential_sample_dcos(mf.alpha, u);
+    }
+    if mf.ndf == MS_NDF_STUDENT_T {
+        return ms_student_t_sample_dcos(mf.alpha, u, mf.table);
     }
     return MsSample(vec3<f32>(0.0, 0.0, 1.0), 0.0);
 }

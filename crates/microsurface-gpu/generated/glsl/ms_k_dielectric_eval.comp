@@ -21,6 +21,7 @@ struct MsBoundedCap {
 struct MsMicrofacet {
     uint ndf;
     vec2 alpha;
+    uint table;
 };
 struct MsConductor {
     MsMicrofacet mf;
@@ -94,10 +95,14 @@ const uint MS_TABLES_ROWS = 3920u;
 const float MS_FRAC_1_SQRT_PI = 0.5641896;
 const float MS_SQRT_PI = 1.7724539;
 const float MS_EULER_GAMMA = 0.5772157;
+const int MS_SHAPE_K0_ = -24;
+const uint MS_SHAPE_M = 5u;
+const uint MS_SHAPE_HEADER = 3u;
 const uint MS_NDF_GGX = 0u;
 const uint MS_NDF_BECKMANN = 1u;
 const uint MS_NDF_DOUBLE_GGX = 2u;
 const uint MS_NDF_EXPONENTIAL = 3u;
+const uint MS_NDF_STUDENT_T = 5u;
 const uint MS_MASKING_CORRELATED = 0u;
 const uint MS_MASKING_SEPARABLE = 1u;
 const uint MS_MASKING_CORRELATED_BETA = 2u;
@@ -123,25 +128,25 @@ float ms_inf() {
 }
 
 vec2 ms_cos_sin_turn(float v) {
-    float k_7 = roundEven((4.0 * v));
-    float r_3 = (v - (0.25 * k_7));
-    float x_12 = (MS_TAU * r_3);
-    float x2_ = (x_12 * x_12);
-    float s_9 = (x_12 * (1.0 + (x2_ * (-0.16666667 + (x2_ * (0.008333333 + (x2_ * (-0.0001984127 + (x2_ * 2.7557319e-6)))))))));
-    float c_15 = (1.0 + (x2_ * (-0.5 + (x2_ * (0.041666668 + (x2_ * (-0.0013888889 + (x2_ * (2.4801588e-5 + (x2_ * -2.755732e-7))))))))));
-    int q_2 = (int(k_7) & 3);
+    float k_9 = roundEven((4.0 * v));
+    float r_3 = (v - (0.25 * k_9));
+    float x_14 = (MS_TAU * r_3);
+    float x2_ = (x_14 * x_14);
+    float s_9 = (x_14 * (1.0 + (x2_ * (-0.16666667 + (x2_ * (0.008333333 + (x2_ * (-0.0001984127 + (x2_ * 2.7557319e-6)))))))));
+    float c_16 = (1.0 + (x2_ * (-0.5 + (x2_ * (0.041666668 + (x2_ * (-0.0013888889 + (x2_ * (2.4801588e-5 + (x2_ * -2.755732e-7))))))))));
+    int q_2 = (int(k_9) & 3);
     if ((q_2 == 0)) {
-        return vec2(c_15, s_9);
+        return vec2(c_16, s_9);
     } else {
         if ((q_2 == 1)) {
-            return vec2(-(s_9), c_15);
+            return vec2(-(s_9), c_16);
         } else {
             if ((q_2 == 2)) {
-                return vec2(-(c_15), -(s_9));
+                return vec2(-(c_16), -(s_9));
             }
         }
     }
-    return vec2(s_9, -(c_15));
+    return vec2(s_9, -(c_16));
 }
 
 vec3 ms_rescaled(vec3 a) {
@@ -368,31 +373,31 @@ float ms_fresnel_dielectric(float cos_in, float eta_in_1) {
         eta_2 = (1.0 / _e9);
     }
     float _e12 = cos_i_1;
-    float c_16 = min(_e12, 1.0);
+    float c_17 = min(_e12, 1.0);
     float _e15 = eta_2;
     if ((_e15 == 1.0)) {
         return 0.0;
     }
-    if ((c_16 == 0.0)) {
+    if ((c_17 == 0.0)) {
         return 1.0;
     }
     float _e24 = eta_2;
     if ((_e24 > 1e18)) {
         float _e27 = eta_2;
         float e_3 = (1.0 / _e27);
-        float cos_t_1 = sqrt((((1.0 - e_3) * (1.0 + e_3)) + ((c_16 * e_3) * (c_16 * e_3))));
-        r_parl = ((c_16 - (e_3 * cos_t_1)) / (c_16 + (e_3 * cos_t_1)));
-        r_perp = (((e_3 * c_16) - cos_t_1) / ((e_3 * c_16) + cos_t_1));
+        float cos_t_1 = sqrt((((1.0 - e_3) * (1.0 + e_3)) + ((c_17 * e_3) * (c_17 * e_3))));
+        r_parl = ((c_17 - (e_3 * cos_t_1)) / (c_17 + (e_3 * cos_t_1)));
+        r_perp = (((e_3 * c_17) - cos_t_1) / ((e_3 * c_17) + cos_t_1));
     } else {
         float _e51 = eta_2;
         if ((_e51 > 1.0)) {
             float _e54 = eta_2;
             float _e57 = eta_2;
-            ect2_ = (((_e54 - 1.0) * (_e57 + 1.0)) + (c_16 * c_16));
+            ect2_ = (((_e54 - 1.0) * (_e57 + 1.0)) + (c_17 * c_17));
         } else {
             float _e63 = eta_2;
             float _e64 = eta_2;
-            ect2_ = ((_e63 * _e64) - ((1.0 - c_16) * (1.0 + c_16)));
+            ect2_ = ((_e63 * _e64) - ((1.0 - c_17) * (1.0 + c_17)));
         }
         float _e72 = ect2_;
         if ((_e72 <= 0.0)) {
@@ -402,9 +407,9 @@ float ms_fresnel_dielectric(float cos_in, float eta_in_1) {
         float ect = sqrt(_e76);
         float _e78 = eta_2;
         float _e79 = eta_2;
-        float e2c = ((_e78 * _e79) * c_16);
+        float e2c = ((_e78 * _e79) * c_17);
         r_parl = ((e2c - ect) / (e2c + ect));
-        r_perp = ((c_16 - ect) / (c_16 + ect));
+        r_perp = ((c_17 - ect) / (c_17 + ect));
     }
     float _e88 = r_parl;
     float _e89 = r_parl;
@@ -489,11 +494,11 @@ float ms_fresnel_conductor(float cos_in_1, float eta_3, float k_1) {
     if (_e25) {
         return 1.0;
     }
-    vec2 n_7 = vec2(eta_3, k_1);
+    vec2 n_10 = vec2(eta_3, k_1);
     float sin2_i = ((1.0 - cos_i_5) * (1.0 + cos_i_5));
     vec2 ci = vec2(cos_i_5, 0.0);
     if ((max(abs(eta_3), abs(k_1)) > 1e18)) {
-        vec2 _e40 = ms_crecip(n_7);
+        vec2 _e40 = ms_crecip(n_10);
         vec2 _e41 = ms_cmul(_e40, _e40);
         vec2 sin2_t_1 = (_e41 * sin2_i);
         vec2 _e49 = ms_csqrt(vec2((1.0 - sin2_t_1.x), -(sin2_t_1.y)));
@@ -503,8 +508,8 @@ float ms_fresnel_conductor(float cos_in_1, float eta_3, float k_1) {
         float _e57 = ms_cnorm_ratio((ci_m - _e49), (ci_m + _e49));
         return min((0.5 * (_e54 + _e57)), 1.0);
     }
-    vec2 _e63 = ms_cmul(n_7, n_7);
-    float _e65 = ms_cnorm(n_7);
+    vec2 _e63 = ms_cmul(n_10, n_10);
+    float _e65 = ms_cnorm(n_10);
     if ((_e65 >= 1.0)) {
         vec2 _e74 = ms_cmul(vec2((eta_3 - 1.0), k_1), vec2((eta_3 + 1.0), k_1));
         w_2 = (_e74 + vec2((cos_i_5 * cos_i_5), 0.0));
@@ -515,8 +520,8 @@ float ms_fresnel_conductor(float cos_in_1, float eta_3, float k_1) {
     vec2 _e83 = ms_crecip(_e63);
     vec2 _e84 = ms_cmul(_e82, _e83);
     vec2 _e85 = ms_csqrt(_e84);
-    vec2 n_ci = (n_7 * cos_i_5);
-    vec2 _e87 = ms_cmul(n_7, _e85);
+    vec2 n_ci = (n_10 * cos_i_5);
+    vec2 _e87 = ms_cmul(n_10, _e85);
     float _e90 = ms_cnorm_ratio((n_ci - _e85), (n_ci + _e85));
     float _e93 = ms_cnorm_ratio((ci - _e87), (ci + _e87));
     return min((0.5 * (_e90 + _e93)), 1.0);
@@ -571,42 +576,42 @@ vec3 ms_fresnel_eval(MsFresnel fr, float cos_i_4) {
 }
 
 float ms_ggx_d(vec3 wm_2, vec2 alpha) {
-    float z_3 = wm_2.z;
-    if (!((z_3 > 0.0))) {
+    float z_5 = wm_2.z;
+    if (!((z_5 > 0.0))) {
         return 0.0;
     }
-    float x_13 = (wm_2.x / alpha.x);
+    float x_15 = (wm_2.x / alpha.x);
     float y_3 = (wm_2.y / alpha.y);
-    float t_6 = (((x_13 * x_13) + (y_3 * y_3)) + (z_3 * z_3));
+    float t_6 = (((x_15 * x_15) + (y_3 * y_3)) + (z_5 * z_5));
     return (1.0 / ((((MS_PI * alpha.x) * alpha.y) * t_6) * t_6));
 }
 
 float ms_ggx_lambda(vec3 w_3, vec2 alpha_1) {
-    float x_14 = (alpha_1.x * w_3.x);
+    float x_16 = (alpha_1.x * w_3.x);
     float y_4 = (alpha_1.y * w_3.y);
-    float z_4 = abs(w_3.z);
-    float t_7 = ((x_14 * x_14) + (y_4 * y_4));
-    float z2_ = (z_4 * z_4);
-    float den = (2.0 * (z2_ + (z_4 * sqrt((z2_ + t_7)))));
+    float z_6 = abs(w_3.z);
+    float t_7 = ((x_16 * x_16) + (y_4 * y_4));
+    float z2_ = (z_6 * z_6);
+    float den = (2.0 * (z2_ + (z_6 * sqrt((z2_ + t_7)))));
     if (!((den > 0.0))) {
-        if ((z_4 == 0.0)) {
+        if ((z_6 == 0.0)) {
             float _e25 = ms_inf();
             return _e25;
         }
-        return ((t_7 / (z_4 + sqrt(((z_4 * z_4) + t_7)))) / (z_4 + z_4));
+        return ((t_7 / (z_6 + sqrt(((z_6 * z_6) + t_7)))) / (z_6 + z_6));
     }
     return (t_7 / den);
 }
 
 float ms_ggx_g1_(vec3 w_4, vec2 alpha_2) {
-    float x_15 = (alpha_2.x * w_4.x);
+    float x_17 = (alpha_2.x * w_4.x);
     float y_5 = (alpha_2.y * w_4.y);
-    float z_5 = abs(w_4.z);
-    float den_1 = (z_5 + sqrt(((z_5 * z_5) + ((x_15 * x_15) + (y_5 * y_5)))));
+    float z_7 = abs(w_4.z);
+    float den_1 = (z_7 + sqrt(((z_7 * z_7) + ((x_17 * x_17) + (y_5 * y_5)))));
     if (!((den_1 > 0.0))) {
         return 0.0;
     }
-    return ((z_5 + z_5) / den_1);
+    return ((z_7 + z_7) / den_1);
 }
 
 float ms_ggx_g2_(vec3 wo_6, vec3 wi_6, vec2 alpha_3) {
@@ -625,7 +630,7 @@ float ms_ggx_pdf(vec3 w_5, vec3 wm_3, vec2 alpha_5) {
     float c = 0.0;
     bool local_6 = false;
     bool local_7 = false;
-    float z_6 = abs(w_5.z);
+    float z_8 = abs(w_5.z);
     float _e5 = ms_dot(w_5, wm_3);
     c = _e5;
     if ((w_5.z < 0.0)) {
@@ -634,7 +639,7 @@ float ms_ggx_pdf(vec3 w_5, vec3 wm_3, vec2 alpha_5) {
     }
     float _e12 = c;
     if ((_e12 > 0.0)) {
-        local_6 = (z_6 > 0.0);
+        local_6 = (z_8 > 0.0);
     } else {
         local_6 = false;
     }
@@ -650,26 +655,26 @@ float ms_ggx_pdf(vec3 w_5, vec3 wm_3, vec2 alpha_5) {
     }
     float sx = (alpha_5.x * w_5.x);
     float sy = (alpha_5.y * w_5.y);
-    float len_3 = sqrt((((sx * sx) + (sy * sy)) + (z_6 * z_6)));
+    float len_3 = sqrt((((sx * sx) + (sy * sy)) + (z_8 * z_8)));
     float mx = (wm_3.x / alpha_5.x);
     float my = (wm_3.y / alpha_5.y);
     float t_8 = (((mx * mx) + (my * my)) + (wm_3.z * wm_3.z));
     float _e55 = c;
     float _e56 = c;
-    return ((_e55 + _e56) / (((((MS_PI * alpha_5.x) * alpha_5.y) * t_8) * t_8) * (z_6 + len_3)));
+    return ((_e55 + _e56) / (((((MS_PI * alpha_5.x) * alpha_5.y) * t_8) * t_8) * (z_8 + len_3)));
 }
 
 vec3 ms_ggx_cap_normal_stretched(vec3 w_6, vec3 stretch, vec2 u, float len) {
     float inv = (1.0 / len);
-    float x_16 = ((stretch.x * w_6.x) * inv);
+    float x_18 = ((stretch.x * w_6.x) * inv);
     float y_6 = ((stretch.y * w_6.y) * inv);
-    float z_7 = ((stretch.z * w_6.z) * inv);
+    float z_9 = ((stretch.z * w_6.z) * inv);
     vec2 _e19 = ms_cos_sin_turn(u.x);
-    float above = ((1.0 - u.y) * (1.0 + z_7));
-    float sin_ = sqrt(max((u.y * ((above * (1.0 + z_7)) + ((x_16 * x_16) + (y_6 * y_6)))), 0.0));
-    vec3 h_1 = vec3((stretch.x * ((sin_ * _e19.x) + x_16)), (stretch.y * ((sin_ * _e19.y) + y_6)), (stretch.z * above));
-    float n_8 = (1.0 / sqrt((((h_1.x * h_1.x) + (h_1.y * h_1.y)) + (h_1.z * h_1.z))));
-    return (h_1 * n_8);
+    float above = ((1.0 - u.y) * (1.0 + z_9));
+    float sin_ = sqrt(max((u.y * ((above * (1.0 + z_9)) + ((x_18 * x_18) + (y_6 * y_6)))), 0.0));
+    vec3 h_2 = vec3((stretch.x * ((sin_ * _e19.x) + x_18)), (stretch.y * ((sin_ * _e19.y) + y_6)), (stretch.z * above));
+    float n_11 = (1.0 / sqrt((((h_2.x * h_2.x) + (h_2.y * h_2.y)) + (h_2.z * h_2.z))));
+    return (h_2 * n_11);
 }
 
 vec3 ms_ggx_cap_normal(vec3 w_7, vec2 alpha_6, vec2 u_1, float len_1) {
@@ -772,11 +777,11 @@ MsBoundedCap ms_ggx_bounded_cap(vec3 w_10, vec2 alpha_11) {
     float _e44 = v_2.z;
     float _e47 = v_2.z;
     float den_2 = (s2_ + ((a2_ * _e44) * _e47));
-    float k_8 = (((1.0 - a2_) * s2_) / den_2);
+    float k_10 = (((1.0 - a2_) * s2_) / den_2);
     float _e55 = v_2.z;
     float _e57 = v_2.z;
     float one_minus_k = ((a2_ * (s2_ + (_e55 * _e57))) / den_2);
-    return MsBoundedCap(_e18, (k_8 * _e18.z), (one_minus_k * _e18.z));
+    return MsBoundedCap(_e18, (k_10 * _e18.z), (one_minus_k * _e18.z));
 }
 
 float ms_ggx_pdf_bounded(vec3 w_in_1, vec3 wm_5, vec2 alpha_12) {
@@ -817,12 +822,12 @@ float ms_ggx_pdf_bounded_reflection(vec3 wo_8, vec3 wi_8, vec2 alpha_14) {
         return 0.0;
     }
     float _e7 = ms_dot(wo_8, _e3);
-    float c_17 = abs(_e7);
-    if (!((c_17 > 0.0))) {
+    float c_18 = abs(_e7);
+    if (!((c_18 > 0.0))) {
         return 0.0;
     }
     float _e13 = ms_ggx_pdf_bounded(wo_8, _e3, alpha_14);
-    return (_e13 / (4.0 * c_17));
+    return (_e13 / (4.0 * c_18));
 }
 
 uvec2 ms_u64_add(uvec2 a_9, uvec2 b_4) {
@@ -994,7 +999,7 @@ float ms_zig_sample(uint at, bool normal, float w_11, inout uvec2 state_3) {
             float _e81 = ms_stream_next(state_3);
             float _e83 = layer.w;
             float _e85 = layer.y;
-            float h_2 = (_e80 + (_e81 * (_e83 - _e85)));
+            float h_3 = (_e80 + (_e81 * (_e83 - _e85)));
             float _e89 = x_1;
             f = exp(-(_e89));
             if (normal) {
@@ -1003,7 +1008,7 @@ float ms_zig_sample(uint at, bool normal, float w_11, inout uvec2 state_3) {
                 f = exp(((-0.5 * _e93) * _e96));
             }
             float _e99 = f;
-            if ((h_2 < _e99)) {
+            if ((h_3 < _e99)) {
                 float _e101 = x_1;
                 return _e101;
             }
@@ -1105,8 +1110,8 @@ float ms_bk_quantile(float u_7) {
         float _e43 = ms_bk_poly(_e34, _e41, _e25.y);
         ratio = _e43;
     } else {
-        float w_33 = min((-(log(q_3)) - 0.6931472), 127.99);
-        vec2 _e52 = ms_bk_segment(w_33, MS_BK_ERFINV_W_K0_, MS_BK_ERFINV_W_K1_);
+        float w_40 = min((-(log(q_3)) - 0.6931472), 127.99);
+        vec2 _e52 = ms_bk_segment(w_40, MS_BK_ERFINV_W_K0_, MS_BK_ERFINV_W_K1_);
         uint i_7 = (2u * uint(_e52.x));
         vec4 _e61 = _group_1_binding_0_cs[(MS_BK_ERFINV_W_AT + i_7)];
         vec4 _e68 = _group_1_binding_0_cs[((MS_BK_ERFINV_W_AT + i_7) + 1u)];
@@ -1130,12 +1135,12 @@ float ms_bk_ln_1m(float xi) {
 
 float ms_beckmann_d(vec3 wm_6, vec2 alpha_15) {
     bool local_9 = false;
-    float z_8 = wm_6.z;
+    float z_10 = wm_6.z;
     float r_12 = (1.0 / (alpha_15.x * alpha_15.y));
-    float x_17 = ((wm_6.x * alpha_15.y) * r_12);
+    float x_19 = ((wm_6.x * alpha_15.y) * r_12);
     float y_7 = ((wm_6.y * alpha_15.x) * r_12);
-    float z2_1 = (z_8 * z_8);
-    if ((z_8 > 0.0)) {
+    float z2_1 = (z_10 * z_10);
+    if ((z_10 > 0.0)) {
         local_9 = (z2_1 > 0.0);
     } else {
         local_9 = false;
@@ -1144,11 +1149,11 @@ float ms_beckmann_d(vec3 wm_6, vec2 alpha_15) {
     if (!(_e24)) {
         return 0.0;
     }
-    float e_5 = (((x_17 * x_17) + (y_7 * y_7)) / z2_1);
+    float e_5 = (((x_19 * x_19) + (y_7 * y_7)) / z2_1);
     if ((e_5 <= 80.0)) {
         return ((exp(-(e_5)) * r_12) / ((MS_PI * z2_1) * z2_1));
     }
-    return exp((((log(r_12) - 1.14473) - (4.0 * log(z_8))) - e_5));
+    return exp((((log(r_12) - 1.14473) - (4.0 * log(z_10))) - e_5));
 }
 
 float ms_beckmann_lambda_cot(float a_13) {
@@ -1164,9 +1169,9 @@ float ms_beckmann_lambda_cot(float a_13) {
 }
 
 float ms_beckmann_lambda(vec3 w_14, vec2 alpha_16) {
-    float x_18 = (alpha_16.x * w_14.x);
+    float x_20 = (alpha_16.x * w_14.x);
     float y_8 = (alpha_16.y * w_14.y);
-    float s_15 = sqrt(((x_18 * x_18) + (y_8 * y_8)));
+    float s_15 = sqrt(((x_20 * x_20) + (y_8 * y_8)));
     if (!((s_15 > 0.0))) {
         return 0.0;
     }
@@ -1207,7 +1212,7 @@ float ms_beckmann_g2_separable(vec3 wo_10, vec3 wi_10, vec2 alpha_19) {
 float ms_beckmann_pdf(vec3 w_16, vec3 wm_7, vec2 alpha_20) {
     float c_1 = 0.0;
     bool local_11 = false;
-    float z_9 = abs(w_16.z);
+    float z_11 = abs(w_16.z);
     float _e5 = ms_dot(w_16, wm_7);
     c_1 = _e5;
     if ((w_16.z < 0.0)) {
@@ -1216,7 +1221,7 @@ float ms_beckmann_pdf(vec3 w_16, vec3 wm_7, vec2 alpha_20) {
     }
     float _e12 = c_1;
     if ((_e12 > 0.0)) {
-        local_11 = (z_9 > 0.0);
+        local_11 = (z_11 > 0.0);
     } else {
         local_11 = false;
     }
@@ -1227,7 +1232,7 @@ float ms_beckmann_pdf(vec3 w_16, vec3 wm_7, vec2 alpha_20) {
     float _e23 = ms_beckmann_g1_(w_16, alpha_20);
     float _e24 = c_1;
     float _e26 = ms_beckmann_d(wm_7, alpha_20);
-    return (((_e23 * _e24) * _e26) / z_9);
+    return (((_e23 * _e24) * _e26) / z_11);
 }
 
 float ms_beckmann_pdf_dcos(vec3 wm_8, vec2 alpha_21) {
@@ -1271,9 +1276,9 @@ float ms_bk_visible_x(float a_14, float u_9) {
     float _e5 = ms_bk_erfcx(a_14);
     float erfc_a = (_e5 * ea);
     float half_ea = (0.2820948 * ea);
-    float z_10 = (((0.5 * a_14) * (2.0 - erfc_a)) + half_ea);
-    float target_lo = (u_9 * z_10);
-    float target_hi = ((1.0 - u_9) * z_10);
+    float z_12 = (((0.5 * a_14) * (2.0 - erfc_a)) + half_ea);
+    float target_lo = (u_9 * z_12);
+    float target_hi = ((1.0 - u_9) * z_12);
     lo_1 = -(a_14);
     if ((a_14 >= 1.0)) {
         float _e26 = ms_bk_quantile(u_9);
@@ -1401,14 +1406,14 @@ vec3 ms_beckmann_sample_wm(vec3 w_17, vec2 alpha_23, vec2 u_10) {
     float _e14 = sign_1;
     float sy_1 = ((_e14 * alpha_23.y) * w_17.y);
     float _e19 = sign_1;
-    float c_18 = (_e19 * w_17.z);
-    float h_3 = sqrt(((sx_1 * sx_1) + (sy_1 * sy_1)));
+    float c_19 = (_e19 * w_17.z);
+    float h_4 = sqrt(((sx_1 * sx_1) + (sy_1 * sy_1)));
     float _e27 = ms_bk_quantile(u_10.y);
-    if ((h_3 > 0.0)) {
-        float inv_1 = (1.0 / h_3);
+    if ((h_4 > 0.0)) {
+        float inv_1 = (1.0 / h_4);
         cp = (sx_1 * inv_1);
         sp = (sy_1 * inv_1);
-        float _e41 = ms_bk_visible_x((c_18 * inv_1), u_10.x);
+        float _e41 = ms_bk_visible_x((c_19 * inv_1), u_10.x);
         x_5 = _e41;
     } else {
         float _e43 = ms_bk_quantile(u_10.x);
@@ -1422,8 +1427,8 @@ vec3 ms_beckmann_sample_wm(vec3 w_17, vec2 alpha_23, vec2 u_10) {
     float _e54 = x_5;
     float _e56 = cp;
     float q_4 = (alpha_23.y * ((_e53 * _e54) + (_e56 * _e27)));
-    float n_9 = (1.0 / sqrt((((p_2 * p_2) + (q_4 * q_4)) + 1.0)));
-    vec3 _e71 = ms_facing(vec3((p_2 * n_9), (q_4 * n_9), n_9), w_17);
+    float n_12 = (1.0 / sqrt((((p_2 * p_2) + (q_4 * q_4)) + 1.0)));
+    vec3 _e71 = ms_facing(vec3((p_2 * n_12), (q_4 * n_12), n_12), w_17);
     return _e71;
 }
 
@@ -1454,12 +1459,12 @@ float ms_dg_lambda_table(float x_7) {
 }
 
 float ms_dg_lambda_ends(float u_12, float a_15) {
-    float x_19 = ((((0.5 * a_15) * a_15) * ((1.0 - u_12) * (1.0 + u_12))) / (u_12 * u_12));
-    if ((x_19 < 9.313226e-10)) {
-        if ((x_19 <= 0.0)) {
+    float x_21 = ((((0.5 * a_15) * a_15) * ((1.0 - u_12) * (1.0 + u_12))) / (u_12 * u_12));
+    if ((x_21 < 9.313226e-10)) {
+        if ((x_21 <= 0.0)) {
             return 0.0;
         }
-        return ((0.5 * x_19) * (0.42278433 - log((0.5 * x_19))));
+        return ((0.5 * x_21) * (0.42278433 - log((0.5 * x_21))));
     }
     float sx_2 = ((a_15 * sqrt(((0.5 * (1.0 - u_12)) * (1.0 + u_12)))) / u_12);
     float r_14 = (1.0 / (sx_2 * sx_2));
@@ -1471,10 +1476,10 @@ float ms_double_ggx_lambda(vec3 w_19, vec2 alpha_25) {
     bool local_14 = false;
     float a_16 = 0.0;
     bool local_15 = false;
-    float u_26 = abs(w_19.z);
+    float u_29 = abs(w_19.z);
     if ((alpha_25.x == alpha_25.y)) {
         float a_21 = alpha_25.x;
-        x_8 = ((((0.5 * a_21) * a_21) * ((1.0 - u_26) * (1.0 + u_26))) / (u_26 * u_26));
+        x_8 = ((((0.5 * a_21) * a_21) * ((1.0 - u_29) * (1.0 + u_29))) / (u_29 * u_29));
     } else {
         float sx_3 = (alpha_25.x * w_19.x);
         float sy_2 = (alpha_25.y * w_19.y);
@@ -1505,7 +1510,7 @@ float ms_double_ggx_lambda(vec3 w_19, vec2 alpha_25) {
         a_16 = sqrt((((((alpha_25.x * alpha_25.x) * w_19.x) * w_19.x) + (((alpha_25.y * alpha_25.y) * w_19.y) * w_19.y)) / s2_1));
     }
     float _e82 = a_16;
-    float _e83 = ms_dg_lambda_ends(u_26, _e82);
+    float _e83 = ms_dg_lambda_ends(u_29, _e82);
     return _e83;
 }
 
@@ -1556,15 +1561,15 @@ float ms_dg_kernel_row(uint i_1, float s_4) {
 
 float ms_double_ggx_d(vec3 wm_9, vec2 alpha_29) {
     bool local_17 = false;
-    float z_11 = wm_9.z;
+    float z_13 = wm_9.z;
     float r_15 = (1.0 / (alpha_29.x * alpha_29.y));
-    float x_20 = ((wm_9.x * alpha_29.y) * r_15);
+    float x_22 = ((wm_9.x * alpha_29.y) * r_15);
     float y_9 = ((wm_9.y * alpha_29.x) * r_15);
-    float q_5 = ((x_20 * x_20) + (y_9 * y_9));
-    if (!((z_11 > 0.0))) {
-        return ((z_11 != z_11) ? z_11 : 0.0);
+    float q_5 = ((x_22 * x_22) + (y_9 * y_9));
+    if (!((z_13 > 0.0))) {
+        return ((z_13 != z_13) ? z_13 : 0.0);
     }
-    float z2_2 = (z_11 * z_11);
+    float z2_2 = (z_13 * z_13);
     float t_10 = (q_5 / z2_2);
     if ((t_10 >= 9.313226e-10)) {
         local_17 = (t_10 < 1073741800.0);
@@ -1580,13 +1585,13 @@ float ms_double_ggx_d(vec3 wm_9, vec2 alpha_29) {
     if ((t_10 < 9.313226e-10)) {
         return (r_15 / ((MS_PI * z2_2) * z2_2));
     }
-    return (((((log(q_5) - (2.0 * log(z_11))) - MS_EULER_GAMMA) - 1.0) * r_15) / ((MS_PI * q_5) * q_5));
+    return (((((log(q_5) - (2.0 * log(z_13))) - MS_EULER_GAMMA) - 1.0) * r_15) / ((MS_PI * q_5) * q_5));
 }
 
 float ms_double_ggx_pdf(vec3 w_21, vec3 wm_10, vec2 alpha_30) {
     float c_3 = 0.0;
     bool local_18 = false;
-    float z_12 = abs(w_21.z);
+    float z_14 = abs(w_21.z);
     float _e5 = ms_dot(w_21, wm_10);
     c_3 = _e5;
     if ((w_21.z < 0.0)) {
@@ -1595,7 +1600,7 @@ float ms_double_ggx_pdf(vec3 w_21, vec3 wm_10, vec2 alpha_30) {
     }
     float _e12 = c_3;
     if ((_e12 > 0.0)) {
-        local_18 = (z_12 > 0.0);
+        local_18 = (z_14 > 0.0);
     } else {
         local_18 = false;
     }
@@ -1606,7 +1611,7 @@ float ms_double_ggx_pdf(vec3 w_21, vec3 wm_10, vec2 alpha_30) {
     float _e23 = ms_double_ggx_g1_(w_21, alpha_30);
     float _e24 = c_3;
     float _e26 = ms_double_ggx_d(wm_10, alpha_30);
-    return (((_e23 * _e24) * _e26) / z_12);
+    return (((_e23 * _e24) * _e26) / z_14);
 }
 
 float ms_double_ggx_pdf_dcos(vec3 wm_11, vec2 alpha_31) {
@@ -1637,7 +1642,7 @@ vec3 ms_double_ggx_sample_wm(vec3 w_in_3, vec2 alpha_33, vec2 u_14) {
     float s_5 = 1.0;
     float len_2 = 1.0;
     int n_3 = 0;
-    float t_1 = 0.0;
+    float t = 0.0;
     vec3 _e3 = ms_unit(w_in_3);
     w_22 = _e3;
     float _e6 = w_22.z;
@@ -1649,13 +1654,13 @@ vec3 ms_double_ggx_sample_wm(vec3 w_in_3, vec2 alpha_33, vec2 u_14) {
     float sx_4 = (alpha_33.x * _e13);
     float _e17 = w_22.y;
     float sy_3 = (alpha_33.y * _e17);
-    float c_19 = w_22.z;
-    float h_4 = sqrt(((sx_4 * sx_4) + (sy_3 * sy_3)));
-    if (!((abs((c_19 + h_4)) <= 3.4028235e38))) {
-        return vec3((c_19 + h_4));
+    float c_20 = w_22.z;
+    float h_5 = sqrt(((sx_4 * sx_4) + (sy_3 * sy_3)));
+    if (!((abs((c_20 + h_5)) <= 3.4028235e38))) {
+        return vec3((c_20 + h_5));
     }
-    float e_7 = (2.0 * c_19);
-    float g = (MS_SQRT_PI * h_4);
+    float e_7 = (2.0 * c_20);
+    float g = (MS_SQRT_PI * h_5);
     float p_exp = (e_7 / (e_7 + g));
     float inv_p = min(((e_7 + g) / e_7), 3.4028235e38);
     float inv_q = min(((e_7 + g) / g), 3.4028235e38);
@@ -1675,25 +1680,25 @@ vec3 ms_double_ggx_sample_wm(vec3 w_in_3, vec2 alpha_33, vec2 u_14) {
         }
         {
             float _e57 = ms_stream_next(state_7);
-            t_1 = 0.0;
+            t = 0.0;
             if ((_e57 < p_exp)) {
                 float _e62 = ms_zig_exp1_((_e57 * inv_p), state_7);
-                t_1 = _e62;
+                t = _e62;
             } else {
                 float _e65 = ms_zig_half_normal(((_e57 - p_exp) * inv_q), state_7);
-                t_1 = ((0.5 * _e65) * _e65);
+                t = ((0.5 * _e65) * _e65);
             }
-            float _e69 = t_1;
-            t_1 = max(_e69, 1e-36);
-            float _e72 = t_1;
+            float _e69 = t;
+            t = max(_e69, 1e-36);
+            float _e72 = t;
             s_5 = sqrt(_e72);
-            float _e75 = t_1;
-            len_2 = sqrt((((c_19 * c_19) * _e75) + (h_4 * h_4)));
+            float _e75 = t;
+            len_2 = sqrt((((c_20 * c_20) * _e75) + (h_5 * h_5)));
             float _e80 = ms_stream_next(state_7);
             float _e81 = s_5;
             float _e85 = s_5;
             float _e87 = len_2;
-            if (((_e80 * ((e_7 * _e81) + h_4)) <= ((c_19 * _e85) + _e87))) {
+            if (((_e80 * ((e_7 * _e81) + h_5)) <= ((c_20 * _e85) + _e87))) {
                 break;
             }
         }
@@ -1757,10 +1762,10 @@ float ms_exponential_lambda(vec3 w_24, vec2 alpha_35) {
     bool local_19 = false;
     float a_17 = 0.0;
     bool local_20 = false;
-    float u_27 = abs(w_24.z);
+    float u_30 = abs(w_24.z);
     if ((alpha_35.x == alpha_35.y)) {
         float a_22 = alpha_35.x;
-        q_1 = (((4.0 * u_27) * u_27) / ((a_22 * a_22) * ((1.0 - u_27) * (1.0 + u_27))));
+        q_1 = (((4.0 * u_30) * u_30) / ((a_22 * a_22) * ((1.0 - u_30) * (1.0 + u_30))));
     } else {
         float sx_5 = (alpha_35.x * w_24.x);
         float sy_4 = (alpha_35.y * w_24.y);
@@ -1791,7 +1796,7 @@ float ms_exponential_lambda(vec3 w_24, vec2 alpha_35) {
         a_17 = sqrt((((((alpha_35.x * alpha_35.x) * w_24.x) * w_24.x) + (((alpha_35.y * alpha_35.y) * w_24.y) * w_24.y)) / s2_4));
     }
     float _e83 = a_17;
-    float _e92 = ms_exp_lambda_z(((u_27 + u_27) / (_e83 * sqrt(((1.0 - u_27) * (1.0 + u_27))))));
+    float _e92 = ms_exp_lambda_z(((u_30 + u_30) / (_e83 * sqrt(((1.0 - u_30) * (1.0 + u_30))))));
     return _e92;
 }
 
@@ -1827,31 +1832,31 @@ float ms_exponential_g2_separable(vec3 wo_14, vec3 wi_14, vec2 alpha_38) {
 
 float ms_exponential_d(vec3 wm_12, vec2 alpha_39) {
     bool local_22 = false;
-    float z_13 = wm_12.z;
+    float z_15 = wm_12.z;
     float r_17 = (1.0 / (alpha_39.x * alpha_39.y));
-    float x_21 = ((wm_12.x * alpha_39.y) * r_17);
+    float x_23 = ((wm_12.x * alpha_39.y) * r_17);
     float y_10 = ((wm_12.y * alpha_39.x) * r_17);
-    float z2_3 = (z_13 * z_13);
-    if ((z_13 > 0.0)) {
+    float z2_3 = (z_15 * z_15);
+    if ((z_15 > 0.0)) {
         local_22 = (z2_3 > 0.0);
     } else {
         local_22 = false;
     }
     bool _e24 = local_22;
     if (!(_e24)) {
-        return ((z_13 != z_13) ? z_13 : 0.0);
+        return ((z_15 != z_15) ? z_15 : 0.0);
     }
-    float e_8 = ((2.0 * sqrt(((x_21 * x_21) + (y_10 * y_10)))) / z_13);
+    float e_8 = ((2.0 * sqrt(((x_23 * x_23) + (y_10 * y_10)))) / z_15);
     if ((e_8 <= 80.0)) {
         return (((2.0 * exp(-(e_8))) * r_17) / ((MS_PI * z2_3) * z2_3));
     }
-    return exp((((log((2.0 * r_17)) - 1.14473) - (4.0 * log(z_13))) - e_8));
+    return exp((((log((2.0 * r_17)) - 1.14473) - (4.0 * log(z_15))) - e_8));
 }
 
 float ms_exponential_pdf(vec3 w_26, vec3 wm_13, vec2 alpha_40) {
     float c_4 = 0.0;
     bool local_23 = false;
-    float z_14 = abs(w_26.z);
+    float z_16 = abs(w_26.z);
     float _e5 = ms_dot(w_26, wm_13);
     c_4 = _e5;
     if ((w_26.z < 0.0)) {
@@ -1860,7 +1865,7 @@ float ms_exponential_pdf(vec3 w_26, vec3 wm_13, vec2 alpha_40) {
     }
     float _e12 = c_4;
     if ((_e12 > 0.0)) {
-        local_23 = (z_14 > 0.0);
+        local_23 = (z_16 > 0.0);
     } else {
         local_23 = false;
     }
@@ -1871,7 +1876,7 @@ float ms_exponential_pdf(vec3 w_26, vec3 wm_13, vec2 alpha_40) {
     float _e23 = ms_exponential_g1_(w_26, alpha_40);
     float _e24 = c_4;
     float _e26 = ms_exponential_d(wm_13, alpha_40);
-    return (((_e23 * _e24) * _e26) / z_14);
+    return (((_e23 * _e24) * _e26) / z_16);
 }
 
 float ms_exponential_pdf_dcos(vec3 wm_14, vec2 alpha_41) {
@@ -1926,15 +1931,15 @@ vec3 ms_exponential_sample_wm(vec3 w_in_4, vec2 alpha_43, vec2 u_17) {
     float _e17 = w_27.y;
     float sy_5 = (alpha_43.y * _e17);
     float e_9 = w_27.z;
-    float h_5 = sqrt(((sx_6 * sx_6) + (sy_5 * sy_5)));
-    if ((h_5 > 0.0)) {
-        cp_1 = (sx_6 / h_5);
-        sp_1 = (sy_5 / h_5);
+    float h_6 = sqrt(((sx_6 * sx_6) + (sy_5 * sy_5)));
+    if ((h_6 > 0.0)) {
+        cp_1 = (sx_6 / h_6);
+        sp_1 = (sy_5 / h_6);
     }
-    if (!((abs((e_9 + h_5)) <= 3.4028235e38))) {
-        return vec3((e_9 + h_5));
+    if (!((abs((e_9 + h_6)) <= 3.4028235e38))) {
+        return vec3((e_9 + h_6));
     }
-    float g_1 = (h_5 * MS_FRAC_1_PI);
+    float g_1 = (h_6 * MS_FRAC_1_PI);
     float total = (e_9 + g_1);
     float inv_p_1 = min((total / e_9), 3.4028235e38);
     float inv_g = min((1.0 / g_1), 3.4028235e38);
@@ -1977,7 +1982,7 @@ vec3 ms_exponential_sample_wm(vec3 w_in_4, vec2 alpha_43, vec2 u_17) {
                 if (!((abs((turn - 0.5)) >= 0.25))) {
                     float _e100 = ms_stream_next(state_9);
                     float _e102 = x_9;
-                    local_24 = ((_e100 * e_9) <= (e_9 + (h_5 * _e102)));
+                    local_24 = ((_e100 * e_9) <= (e_9 + (h_6 * _e102)));
                 } else {
                     local_24 = true;
                 }
@@ -2020,306 +2025,779 @@ MsSample ms_exponential_sample(vec3 w_28, vec2 alpha_44, vec2 u_18) {
     return MsSample(_e3, _e5);
 }
 
-float ms_d(MsMicrofacet mf, vec3 wm_15) {
-    if ((mf.ndf == MS_NDF_GGX)) {
-        float _e6 = ms_ggx_d(wm_15, mf.alpha);
-        return _e6;
-    }
-    if ((mf.ndf == MS_NDF_BECKMANN)) {
-        float _e11 = ms_beckmann_d(wm_15, mf.alpha);
-        return _e11;
-    }
-    if ((mf.ndf == MS_NDF_DOUBLE_GGX)) {
-        float _e16 = ms_double_ggx_d(wm_15, mf.alpha);
-        return _e16;
-    }
-    if ((mf.ndf == MS_NDF_EXPONENTIAL)) {
-        float _e21 = ms_exponential_d(wm_15, mf.alpha);
-        return _e21;
-    }
-    return 0.0;
-}
-
-float ms_lambda(MsMicrofacet mf_1, vec3 w_29) {
-    if ((mf_1.ndf == MS_NDF_GGX)) {
-        float _e6 = ms_ggx_lambda(w_29, mf_1.alpha);
-        return _e6;
-    }
-    if ((mf_1.ndf == MS_NDF_BECKMANN)) {
-        float _e11 = ms_beckmann_lambda(w_29, mf_1.alpha);
-        return _e11;
-    }
-    if ((mf_1.ndf == MS_NDF_DOUBLE_GGX)) {
-        float _e16 = ms_double_ggx_lambda(w_29, mf_1.alpha);
-        return _e16;
-    }
-    if ((mf_1.ndf == MS_NDF_EXPONENTIAL)) {
-        float _e21 = ms_exponential_lambda(w_29, mf_1.alpha);
-        return _e21;
-    }
-    return 0.0;
-}
-
-float ms_g1_(MsMicrofacet mf_2, vec3 w_30) {
-    if ((mf_2.ndf == MS_NDF_GGX)) {
-        float _e6 = ms_ggx_g1_(w_30, mf_2.alpha);
-        return _e6;
-    }
-    if ((mf_2.ndf == MS_NDF_BECKMANN)) {
-        float _e11 = ms_beckmann_g1_(w_30, mf_2.alpha);
-        return _e11;
-    }
-    if ((mf_2.ndf == MS_NDF_DOUBLE_GGX)) {
-        float _e16 = ms_double_ggx_g1_(w_30, mf_2.alpha);
-        return _e16;
-    }
-    if ((mf_2.ndf == MS_NDF_EXPONENTIAL)) {
-        float _e21 = ms_exponential_g1_(w_30, mf_2.alpha);
-        return _e21;
-    }
-    return 0.0;
-}
-
-float ms_g2_(MsMicrofacet mf_3, vec3 wo_15, vec3 wi_15) {
-    if ((mf_3.ndf == MS_NDF_GGX)) {
-        float _e7 = ms_ggx_g2_(wo_15, wi_15, mf_3.alpha);
-        return _e7;
-    }
-    if ((mf_3.ndf == MS_NDF_BECKMANN)) {
-        float _e12 = ms_beckmann_g2_(wo_15, wi_15, mf_3.alpha);
-        return _e12;
-    }
-    if ((mf_3.ndf == MS_NDF_DOUBLE_GGX)) {
-        float _e17 = ms_double_ggx_g2_(wo_15, wi_15, mf_3.alpha);
-        return _e17;
-    }
-    if ((mf_3.ndf == MS_NDF_EXPONENTIAL)) {
-        float _e22 = ms_exponential_g2_(wo_15, wi_15, mf_3.alpha);
-        return _e22;
-    }
-    return 0.0;
-}
-
-float ms_g2_separable(MsMicrofacet mf_4, vec3 wo_16, vec3 wi_16) {
-    float _e3 = ms_g1_(mf_4, wo_16);
-    float _e4 = ms_g1_(mf_4, wi_16);
-    return (_e3 * _e4);
-}
-
-float ms_pdf(MsMicrofacet mf_5, vec3 w_31, vec3 wm_16) {
-    if ((mf_5.ndf == MS_NDF_GGX)) {
-        float _e7 = ms_ggx_pdf(w_31, wm_16, mf_5.alpha);
-        return _e7;
-    }
-    if ((mf_5.ndf == MS_NDF_BECKMANN)) {
-        float _e12 = ms_beckmann_pdf(w_31, wm_16, mf_5.alpha);
-        return _e12;
-    }
-    if ((mf_5.ndf == MS_NDF_DOUBLE_GGX)) {
-        float _e17 = ms_double_ggx_pdf(w_31, wm_16, mf_5.alpha);
-        return _e17;
-    }
-    if ((mf_5.ndf == MS_NDF_EXPONENTIAL)) {
-        float _e22 = ms_exponential_pdf(w_31, wm_16, mf_5.alpha);
-        return _e22;
-    }
-    return 0.0;
-}
-
-MsSample ms_sample(MsMicrofacet mf_6, vec3 w_32, vec2 u_19) {
-    if ((mf_6.ndf == MS_NDF_GGX)) {
-        MsSample _e7 = ms_ggx_sample(w_32, mf_6.alpha, u_19);
-        return _e7;
-    }
-    if ((mf_6.ndf == MS_NDF_BECKMANN)) {
-        MsSample _e12 = ms_beckmann_sample(w_32, mf_6.alpha, u_19);
-        return _e12;
-    }
-    if ((mf_6.ndf == MS_NDF_DOUBLE_GGX)) {
-        MsSample _e17 = ms_double_ggx_sample(w_32, mf_6.alpha, u_19);
-        return _e17;
-    }
-    if ((mf_6.ndf == MS_NDF_EXPONENTIAL)) {
-        MsSample _e22 = ms_exponential_sample(w_32, mf_6.alpha, u_19);
-        return _e22;
-    }
-    return MsSample(vec3(0.0, 0.0, 1.0), 0.0);
-}
-
-MsSample ms_sample_dcos(MsMicrofacet mf_7, vec2 u_20) {
-    if ((mf_7.ndf == MS_NDF_GGX)) {
-        MsSample _e6 = ms_ggx_sample_dcos(mf_7.alpha, u_20);
-        return _e6;
-    }
-    if ((mf_7.ndf == MS_NDF_BECKMANN)) {
-        MsSample _e11 = ms_beckmann_sample_dcos(mf_7.alpha, u_20);
-        return _e11;
-    }
-    if ((mf_7.ndf == MS_NDF_DOUBLE_GGX)) {
-        MsSample _e16 = ms_double_ggx_sample_dcos(mf_7.alpha, u_20);
-        return _e16;
-    }
-    if ((mf_7.ndf == MS_NDF_EXPONENTIAL)) {
-        MsSample _e21 = ms_exponential_sample_dcos(mf_7.alpha, u_20);
-        return _e21;
-    }
-    return MsSample(vec3(0.0, 0.0, 1.0), 0.0);
-}
-
-bool ms_effectively_smooth(MsMicrofacet mf_8) {
-    return (max(mf_8.alpha.x, mf_8.alpha.y) < 0.001);
-}
-
-bool ms_on_horizon(float z_2) {
-    return !((abs(z_2) >= 1e-18));
-}
-
-bool ms_usable(float v_6) {
+float ms_shape_lambda_z(uint table, float z_2) {
     bool local_25 = false;
-    if ((v_6 >= 1.1754944e-20)) {
-        local_25 = (v_6 <= 3.4028235e38);
+    vec4 head = _group_1_binding_0_cs[table];
+    int k1_2 = int(head.y);
+    if ((z_2 >= 5.9604645e-8)) {
+        local_25 = (z_2 < exp2(head.y));
     } else {
         local_25 = false;
     }
-    bool _e8 = local_25;
+    bool _e15 = local_25;
+    if (_e15) {
+        vec2 _e18 = ms_fam_segment(z_2, MS_SHAPE_K0_, k1_2, MS_SHAPE_M);
+        uint i_9 = ((table + MS_SHAPE_HEADER) + (2u * uint(_e18.x)));
+        vec4 lo_5 = _group_1_binding_0_cs[i_9];
+        vec4 hi_4 = _group_1_binding_0_cs[(i_9 + 1u)];
+        float s_17 = _e18.y;
+        float p_5 = ((((((((hi_4.x * s_17) + lo_5.w) * s_17) + lo_5.z) * s_17) + lo_5.y) * s_17) + lo_5.x);
+        if ((head.z > 0.5)) {
+            return p_5;
+        }
+        return exp2((p_5 * 0.00390625));
+    }
+    if ((z_2 != z_2)) {
+        return z_2;
+    }
+    if ((z_2 < 5.9604645e-8)) {
+        return ((head.w / z_2) - 0.5);
+    }
+    vec4 tail = _group_1_binding_0_cs[(table + 1u)];
+    if ((tail.x < 0.5)) {
+        return 0.0;
+    }
+    return (exp((tail.z - (tail.y * log(z_2)))) * (1.0 + (tail.w / (z_2 * z_2))));
+}
+
+float ms_shape_lambda(uint table_1, vec3 w_29, vec2 alpha_45) {
+    bool local_26 = false;
+    float sx_7 = (alpha_45.x * w_29.x);
+    float sy_6 = (alpha_45.y * w_29.y);
+    float h_7 = sqrt(((sx_7 * sx_7) + (sy_6 * sy_6)));
+    float z_17 = abs(w_29.z);
+    if (!((h_7 > 0.0))) {
+        if ((h_7 == 0.0)) {
+            local_26 = (z_17 > 0.0);
+        } else {
+            local_26 = false;
+        }
+        bool _e25 = local_26;
+        return (_e25 ? 0.0 : h_7);
+    }
+    if ((z_17 == 0.0)) {
+        float _e30 = ms_inf();
+        return _e30;
+    }
+    float _e32 = ms_shape_lambda_z(table_1, (z_17 / h_7));
+    return _e32;
+}
+
+float ms_zig_normal(float w_30, inout uvec2 state_10) {
+    if ((w_30 < 0.5)) {
+        float _e6 = ms_zig_half_normal((2.0 * w_30), state_10);
+        return -(_e6);
+    }
+    float _e12 = ms_zig_half_normal(((2.0 * w_30) - 1.0), state_10);
+    return _e12;
+}
+
+float ms_stream_next_positive(inout uvec2 state_11) {
+    float _e1 = ms_stream_next(state_11);
+    return max(_e1, 2.9802322e-8);
+}
+
+float ms_ln_gamma_variate(float k_in, inout uvec2 state_12) {
+    float k_5 = 0.0;
+    float boost = 0.0;
+    int n_5 = 0;
+    float v_6 = 0.0;
+    k_5 = k_in;
+    float _e5 = k_5;
+    if ((_e5 < 1.0)) {
+        float _e8 = ms_stream_next_positive(state_12);
+        float _e10 = k_5;
+        boost = (log(_e8) / _e10);
+        float _e12 = k_5;
+        k_5 = (_e12 + 1.0);
+    }
+    float _e15 = k_5;
+    float d_16 = (_e15 - 0.33333334);
+    float c_21 = (1.0 / sqrt((9.0 * d_16)));
+    bool loop_init_5 = true;
+    while(true) {
+        if (!loop_init_5) {
+            int _e63 = n_5;
+            n_5 = (_e63 + 1);
+        }
+        loop_init_5 = false;
+        int _e25 = n_5;
+        if ((_e25 < 64)) {
+        } else {
+            break;
+        }
+        {
+            float _e28 = ms_stream_next(state_12);
+            float _e29 = ms_zig_normal(_e28, state_12);
+            v_6 = (1.0 + (c_21 * _e29));
+            float _e34 = v_6;
+            if ((_e34 <= 0.0)) {
+                continue;
+            }
+            float _e37 = v_6;
+            float _e38 = v_6;
+            float _e40 = v_6;
+            v_6 = ((_e37 * _e38) * _e40);
+            float _e42 = ms_stream_next_positive(state_12);
+            float _e48 = v_6;
+            float _e51 = v_6;
+            if ((log(_e42) < (((((0.5 * _e29) * _e29) + d_16) - (d_16 * _e48)) + (d_16 * log(_e51))))) {
+                float _e57 = v_6;
+                float _e60 = boost;
+                return ((log(d_16) + log(_e57)) + _e60);
+            }
+        }
+    }
+    return uintBitsToFloat(2143289344u);
+}
+
+vec3 ms_beckmann_sample_stream_above(vec3 v_7, vec2 alpha_46, inout uvec2 state_13) {
+    float cp_2 = 1.0;
+    float sp_2 = 0.0;
+    float x_10 = 0.0;
+    int n_6 = 0;
+    bool local_27 = false;
+    bool local_28 = false;
+    float sx_8 = (alpha_46.x * v_7.x);
+    float sy_7 = (alpha_46.y * v_7.y);
+    float h_8 = sqrt(((sx_8 * sx_8) + (sy_7 * sy_7)));
+    if ((h_8 == 0.0)) {
+        float _e21 = ms_stream_next(state_13);
+        float _e22 = ms_zig_normal(_e21, state_13);
+        x_10 = (_e22 * 0.70710677);
+    } else {
+        cp_2 = (sx_8 / h_8);
+        sp_2 = (sy_7 / h_8);
+        float a_23 = (v_7.z / h_8);
+        float p_ray = (0.5 / (0.5 + (a_23 * MS_SQRT_PI)));
+        x_10 = uintBitsToFloat(2143289344u);
+        bool loop_init_6 = true;
+        while(true) {
+            if (!loop_init_6) {
+                int _e73 = n_6;
+                n_6 = (_e73 + 1);
+            }
+            loop_init_6 = false;
+            int _e39 = n_6;
+            if ((_e39 < 64)) {
+            } else {
+                break;
+            }
+            {
+                float _e42 = ms_stream_next(state_13);
+                if ((_e42 < p_ray)) {
+                    float _e44 = ms_stream_next_positive(state_13);
+                    x_10 = sqrt(-(log(_e44)));
+                    break;
+                }
+                float _e52 = ms_zig_normal(((_e42 - p_ray) / (1.0 - p_ray)), state_13);
+                float c_22 = (_e52 * 0.70710677);
+                if (!((c_22 >= 0.0))) {
+                    if ((c_22 > -(a_23))) {
+                        float _e64 = ms_stream_next(state_13);
+                        local_28 = ((_e64 * a_23) < (c_22 + a_23));
+                    } else {
+                        local_28 = false;
+                    }
+                    bool _e69 = local_28;
+                    local_27 = _e69;
+                } else {
+                    local_27 = true;
+                }
+                bool _e71 = local_27;
+                if (_e71) {
+                    x_10 = c_22;
+                    break;
+                }
+            }
+        }
+    }
+    float _e75 = ms_stream_next(state_13);
+    float _e76 = ms_zig_normal(_e75, state_13);
+    float y_11 = (_e76 * 0.70710677);
+    float _e80 = cp_2;
+    float _e81 = x_10;
+    float _e83 = sp_2;
+    float p_6 = (alpha_46.x * ((_e80 * _e81) - (_e83 * y_11)));
+    float _e88 = sp_2;
+    float _e89 = x_10;
+    float _e91 = cp_2;
+    float q_8 = (alpha_46.y * ((_e88 * _e89) + (_e91 * y_11)));
+    vec3 _e97 = ms_unit_normal(vec3(p_6, q_8, 1.0));
+    vec3 _e98 = ms_facing(_e97, v_7);
+    return _e98;
+}
+
+float ms_posterior_ln_beta(uint mixing, float k_6, float mean_beta, float z_3, float h_1, inout uvec2 state_14) {
+    int n_7 = 0;
+    float ln_beta = 0.0;
+    float keep = 0.0;
+    bool local_29 = false;
+    float p_prior = (z_3 / (z_3 + ((0.2820948 * h_1) * mean_beta)));
+    bool loop_init_7 = true;
+    while(true) {
+        if (!loop_init_7) {
+            int _e87 = n_7;
+            n_7 = (_e87 + 1);
+        }
+        loop_init_7 = false;
+        int _e13 = n_7;
+        if ((_e13 < 64)) {
+        } else {
+            break;
+        }
+        {
+            float _e16 = ms_stream_next(state_14);
+            bool biased = (_e16 >= p_prior);
+            float bias = (biased ? 1.0 : 0.0);
+            ln_beta = 0.0;
+            if ((mixing == 0u)) {
+                float _e29 = ms_ln_gamma_variate((k_6 - (0.5 * bias)), state_14);
+                ln_beta = (0.5 * (log(k_6) - _e29));
+            } else {
+                if ((mixing == 1u)) {
+                    float _e38 = ms_ln_gamma_variate((k_6 + (0.5 * bias)), state_14);
+                    ln_beta = (0.5 * _e38);
+                } else {
+                    if ((mixing == 2u)) {
+                        float _e43 = ms_stream_next_positive(state_14);
+                        ln_beta = ((0.5 * log(_e43)) / (1.0 + (0.5 * bias)));
+                    } else {
+                        float _e52 = ms_stream_next_positive(state_14);
+                        ln_beta = (log(_e52) / (1.0 + bias));
+                    }
+                }
+            }
+            float _e57 = ln_beta;
+            float hb = (h_1 * exp(_e57));
+            keep = 1.0;
+            if ((hb > 0.0)) {
+                local_29 = (hb <= 3.4028235e38);
+            } else {
+                local_29 = false;
+            }
+            bool _e69 = local_29;
+            if (_e69) {
+                float a_24 = (z_3 / hb);
+                float _e76 = ms_bk_erfc_ratio(a_24);
+                keep = ((z_3 + (((0.2820948 * hb) * exp((-(a_24) * a_24))) * _e76)) / (z_3 + (0.2820948 * hb)));
+            }
+            float _e82 = ms_stream_next(state_14);
+            float _e83 = keep;
+            if ((_e82 < _e83)) {
+                float _e85 = ln_beta;
+                return _e85;
+            }
+        }
+    }
+    return uintBitsToFloat(2143289344u);
+}
+
+vec3 ms_mixture_sample_wm(uint mixing_1, uint table_2, vec3 w_in_5, vec2 alpha_47, vec2 u_19) {
+    vec3 w_31 = vec3(0.0);
+    uvec2 state_15 = uvec2(0u);
+    float ln_beta_1 = 0.0;
+    vec3 _e5 = ms_unit(w_in_5);
+    w_31 = _e5;
+    float _e8 = w_31.z;
+    if ((_e8 < 0.0)) {
+        vec3 _e11 = w_31;
+        w_31 = -(_e11);
+    }
+    vec4 params = _group_1_binding_0_cs[(table_2 + 2u)];
+    float _e20 = w_31.x;
+    float sx_9 = (alpha_47.x * _e20);
+    float _e24 = w_31.y;
+    float sy_8 = (alpha_47.y * _e24);
+    float h_9 = sqrt(((sx_9 * sx_9) + (sy_8 * sy_8)));
+    uvec2 _e30 = ms_stream_new(u_19);
+    state_15 = _e30;
+    float _e35 = w_31.z;
+    float _e36 = ms_posterior_ln_beta(mixing_1, params.y, params.x, _e35, h_9, state_15);
+    ln_beta_1 = _e36;
+    float _e38 = ln_beta_1;
+    float _e39 = ln_beta_1;
+    if ((_e38 != _e39)) {
+        ln_beta_1 = log(params.x);
+    }
+    float lo_6 = log(min(alpha_47.x, alpha_47.y));
+    float hi_5 = log(max(alpha_47.x, alpha_47.y));
+    float _e51 = ln_beta_1;
+    float beta = exp(clamp(_e51, (-80.0 - lo_6), (80.0 - hi_5)));
+    float _e59 = w_31.z;
+    if (!((_e59 > 0.0))) {
+        vec3 _e63 = w_31;
+        vec3 _e65 = ms_beckmann_sample_wm(_e63, (beta * alpha_47), u_19);
+        return _e65;
+    }
+    vec3 _e66 = w_31;
+    vec3 _e68 = ms_beckmann_sample_stream_above(_e66, (beta * alpha_47), state_15);
+    return _e68;
+}
+
+float ms_student_t_gamma(uint table_3) {
+    float _e4 = _group_1_binding_0_cs[table_3].x;
+    return _e4;
+}
+
+float ms_ln_1p(float t_1) {
+    float v_11 = (1.0 + t_1);
+    if ((v_11 == 1.0)) {
+        return t_1;
+    }
+    return (log(v_11) * (t_1 / (v_11 - 1.0)));
+}
+
+float ms_expm1_(float x_11) {
+    if ((abs(x_11) < 0.5)) {
+        return (x_11 * (1.0 + (x_11 * (0.5 + (x_11 * (0.16666667 + (x_11 * (0.041666668 + (x_11 * (0.008333334 + (x_11 * (0.0013888889 + (x_11 * (0.0001984127 + (x_11 * (2.4801588e-5 + (x_11 * 2.7557319e-6)))))))))))))))));
+    }
+    return (exp(x_11) - 1.0);
+}
+
+float ms_student_t_d(vec3 wm_15, vec2 alpha_48, uint table_4) {
+    float z_18 = wm_15.z;
+    if (!((z_18 > 0.0))) {
+        return ((z_18 != z_18) ? z_18 : 0.0);
+    }
+    float _e10 = ms_student_t_gamma(table_4);
+    float x_24 = (wm_15.x / alpha_48.x);
+    float y_12 = (wm_15.y / alpha_48.y);
+    float q_9 = ((x_24 * x_24) + (y_12 * y_12));
+    float z2_4 = (z_18 * z_18);
+    if ((z_18 > 1e-9)) {
+        float t_12 = (q_9 / (z2_4 * (_e10 - 1.0)));
+        float _e27 = ms_ln_1p(t_12);
+        float e_10 = (_e10 * _e27);
+        float norm = ((((MS_PI * alpha_48.x) * alpha_48.y) * z2_4) * z2_4);
+        if ((e_10 < 80.0)) {
+            return (exp(-(e_10)) / norm);
+        }
+        return exp((-(e_10) - log(norm)));
+    }
+    float ln_z = log(z_18);
+    float ln_d = (((-(_e10) * ((log(q_9) - (2.0 * ln_z)) - log((_e10 - 1.0)))) - (4.0 * ln_z)) - log(((MS_PI * alpha_48.x) * alpha_48.y)));
+    return exp(ln_d);
+}
+
+float ms_student_t_lambda(vec3 w_32, vec2 alpha_49, uint table_5) {
+    float _e3 = ms_shape_lambda(table_5, w_32, alpha_49);
+    return _e3;
+}
+
+float ms_student_t_g1_(vec3 w_33, vec2 alpha_50, uint table_6) {
+    float _e3 = ms_student_t_lambda(w_33, alpha_50, table_6);
+    return (1.0 / (1.0 + _e3));
+}
+
+float ms_student_t_g2_(vec3 wo_15, vec3 wi_15, vec2 alpha_51, uint table_7) {
+    float _e4 = ms_student_t_lambda(wo_15, alpha_51, table_7);
+    float _e5 = ms_student_t_lambda(wi_15, alpha_51, table_7);
+    return (1.0 / (1.0 + (_e4 + _e5)));
+}
+
+float ms_student_t_g2_separable(vec3 wo_16, vec3 wi_16, vec2 alpha_52, uint table_8) {
+    float _e4 = ms_student_t_g1_(wo_16, alpha_52, table_8);
+    float _e5 = ms_student_t_g1_(wi_16, alpha_52, table_8);
+    return (_e4 * _e5);
+}
+
+float ms_student_t_pdf(vec3 w_34, vec3 wm_16, vec2 alpha_53, uint table_9) {
+    float c_5 = 0.0;
+    bool local_30 = false;
+    float z_19 = abs(w_34.z);
+    float _e6 = ms_dot(w_34, wm_16);
+    c_5 = _e6;
+    if ((w_34.z < 0.0)) {
+        float _e11 = c_5;
+        c_5 = -(_e11);
+    }
+    float _e13 = c_5;
+    if ((_e13 > 0.0)) {
+        local_30 = (z_19 > 0.0);
+    } else {
+        local_30 = false;
+    }
+    bool _e21 = local_30;
+    if (!(_e21)) {
+        return 0.0;
+    }
+    float _e24 = ms_student_t_g1_(w_34, alpha_53, table_9);
+    float _e25 = c_5;
+    float _e27 = ms_student_t_d(wm_16, alpha_53, table_9);
+    return (((_e24 * _e25) * _e27) / z_19);
+}
+
+float ms_student_t_pdf_dcos(vec3 wm_17, vec2 alpha_54, uint table_10) {
+    if (!((wm_17.z > 0.0))) {
+        return 0.0;
+    }
+    float _e8 = ms_student_t_d(wm_17, alpha_54, table_10);
+    return (_e8 * wm_17.z);
+}
+
+MsSample ms_student_t_sample_dcos(vec2 alpha_55, vec2 u_20, uint table_11) {
+    vec3 v_8 = vec3(0.0);
+    float _e3 = ms_student_t_gamma(table_11);
+    float g1_1 = (_e3 - 1.0);
+    float _e7 = ms_bk_ln_1m(u_20.x);
+    float _e10 = ms_expm1_((-(_e7) / g1_1));
+    float r_21 = sqrt((g1_1 * _e10));
+    vec2 _e14 = ms_cos_sin_turn(u_20.y);
+    if ((r_21 > 1.0)) {
+        v_8 = vec3((alpha_55.x * _e14.x), (alpha_55.y * _e14.y), (1.0 / r_21));
+    } else {
+        v_8 = vec3(((alpha_55.x * r_21) * _e14.x), ((alpha_55.y * r_21) * _e14.y), 1.0);
+    }
+    vec3 _e37 = v_8;
+    vec3 _e38 = ms_unit_normal(_e37);
+    float _e39 = ms_student_t_pdf_dcos(_e38, alpha_55, table_11);
+    return MsSample(_e38, _e39);
+}
+
+MsSample ms_student_t_sample(vec3 w_35, vec2 alpha_56, vec2 u_21, uint table_12) {
+    vec3 _e5 = ms_mixture_sample_wm(0u, table_12, w_35, alpha_56, u_21);
+    vec3 _e6 = ms_unit(w_35);
+    float _e7 = ms_student_t_pdf(_e6, _e5, alpha_56, table_12);
+    return MsSample(_e5, _e7);
+}
+
+float ms_d(MsMicrofacet mf, vec3 wm_18) {
+    if ((mf.ndf == MS_NDF_GGX)) {
+        float _e6 = ms_ggx_d(wm_18, mf.alpha);
+        return _e6;
+    }
+    if ((mf.ndf == MS_NDF_BECKMANN)) {
+        float _e11 = ms_beckmann_d(wm_18, mf.alpha);
+        return _e11;
+    }
+    if ((mf.ndf == MS_NDF_DOUBLE_GGX)) {
+        float _e16 = ms_double_ggx_d(wm_18, mf.alpha);
+        return _e16;
+    }
+    if ((mf.ndf == MS_NDF_EXPONENTIAL)) {
+        float _e21 = ms_exponential_d(wm_18, mf.alpha);
+        return _e21;
+    }
+    if ((mf.ndf == MS_NDF_STUDENT_T)) {
+        float _e27 = ms_student_t_d(wm_18, mf.alpha, mf.table);
+        return _e27;
+    }
+    return 0.0;
+}
+
+float ms_lambda(MsMicrofacet mf_1, vec3 w_36) {
+    if ((mf_1.ndf == MS_NDF_GGX)) {
+        float _e6 = ms_ggx_lambda(w_36, mf_1.alpha);
+        return _e6;
+    }
+    if ((mf_1.ndf == MS_NDF_BECKMANN)) {
+        float _e11 = ms_beckmann_lambda(w_36, mf_1.alpha);
+        return _e11;
+    }
+    if ((mf_1.ndf == MS_NDF_DOUBLE_GGX)) {
+        float _e16 = ms_double_ggx_lambda(w_36, mf_1.alpha);
+        return _e16;
+    }
+    if ((mf_1.ndf == MS_NDF_EXPONENTIAL)) {
+        float _e21 = ms_exponential_lambda(w_36, mf_1.alpha);
+        return _e21;
+    }
+    if ((mf_1.ndf == MS_NDF_STUDENT_T)) {
+        float _e27 = ms_student_t_lambda(w_36, mf_1.alpha, mf_1.table);
+        return _e27;
+    }
+    return 0.0;
+}
+
+float ms_g1_(MsMicrofacet mf_2, vec3 w_37) {
+    if ((mf_2.ndf == MS_NDF_GGX)) {
+        float _e6 = ms_ggx_g1_(w_37, mf_2.alpha);
+        return _e6;
+    }
+    if ((mf_2.ndf == MS_NDF_BECKMANN)) {
+        float _e11 = ms_beckmann_g1_(w_37, mf_2.alpha);
+        return _e11;
+    }
+    if ((mf_2.ndf == MS_NDF_DOUBLE_GGX)) {
+        float _e16 = ms_double_ggx_g1_(w_37, mf_2.alpha);
+        return _e16;
+    }
+    if ((mf_2.ndf == MS_NDF_EXPONENTIAL)) {
+        float _e21 = ms_exponential_g1_(w_37, mf_2.alpha);
+        return _e21;
+    }
+    if ((mf_2.ndf == MS_NDF_STUDENT_T)) {
+        float _e27 = ms_student_t_g1_(w_37, mf_2.alpha, mf_2.table);
+        return _e27;
+    }
+    return 0.0;
+}
+
+float ms_g2_(MsMicrofacet mf_3, vec3 wo_17, vec3 wi_17) {
+    if ((mf_3.ndf == MS_NDF_GGX)) {
+        float _e7 = ms_ggx_g2_(wo_17, wi_17, mf_3.alpha);
+        return _e7;
+    }
+    if ((mf_3.ndf == MS_NDF_BECKMANN)) {
+        float _e12 = ms_beckmann_g2_(wo_17, wi_17, mf_3.alpha);
+        return _e12;
+    }
+    if ((mf_3.ndf == MS_NDF_DOUBLE_GGX)) {
+        float _e17 = ms_double_ggx_g2_(wo_17, wi_17, mf_3.alpha);
+        return _e17;
+    }
+    if ((mf_3.ndf == MS_NDF_EXPONENTIAL)) {
+        float _e22 = ms_exponential_g2_(wo_17, wi_17, mf_3.alpha);
+        return _e22;
+    }
+    if ((mf_3.ndf == MS_NDF_STUDENT_T)) {
+        float _e28 = ms_student_t_g2_(wo_17, wi_17, mf_3.alpha, mf_3.table);
+        return _e28;
+    }
+    return 0.0;
+}
+
+float ms_g2_separable(MsMicrofacet mf_4, vec3 wo_18, vec3 wi_18) {
+    float _e3 = ms_g1_(mf_4, wo_18);
+    float _e4 = ms_g1_(mf_4, wi_18);
+    return (_e3 * _e4);
+}
+
+float ms_pdf(MsMicrofacet mf_5, vec3 w_38, vec3 wm_19) {
+    if ((mf_5.ndf == MS_NDF_GGX)) {
+        float _e7 = ms_ggx_pdf(w_38, wm_19, mf_5.alpha);
+        return _e7;
+    }
+    if ((mf_5.ndf == MS_NDF_BECKMANN)) {
+        float _e12 = ms_beckmann_pdf(w_38, wm_19, mf_5.alpha);
+        return _e12;
+    }
+    if ((mf_5.ndf == MS_NDF_DOUBLE_GGX)) {
+        float _e17 = ms_double_ggx_pdf(w_38, wm_19, mf_5.alpha);
+        return _e17;
+    }
+    if ((mf_5.ndf == MS_NDF_EXPONENTIAL)) {
+        float _e22 = ms_exponential_pdf(w_38, wm_19, mf_5.alpha);
+        return _e22;
+    }
+    if ((mf_5.ndf == MS_NDF_STUDENT_T)) {
+        float _e28 = ms_student_t_pdf(w_38, wm_19, mf_5.alpha, mf_5.table);
+        return _e28;
+    }
+    return 0.0;
+}
+
+float ms_pdf_dcos(MsMicrofacet mf_6, vec3 wm_20) {
+    if (!((wm_20.z > 0.0))) {
+        return 0.0;
+    }
+    float _e7 = ms_d(mf_6, wm_20);
+    return (_e7 * wm_20.z);
+}
+
+MsSample ms_sample(MsMicrofacet mf_7, vec3 w_39, vec2 u_22) {
+    if ((mf_7.ndf == MS_NDF_GGX)) {
+        MsSample _e7 = ms_ggx_sample(w_39, mf_7.alpha, u_22);
+        return _e7;
+    }
+    if ((mf_7.ndf == MS_NDF_BECKMANN)) {
+        MsSample _e12 = ms_beckmann_sample(w_39, mf_7.alpha, u_22);
+        return _e12;
+    }
+    if ((mf_7.ndf == MS_NDF_DOUBLE_GGX)) {
+        MsSample _e17 = ms_double_ggx_sample(w_39, mf_7.alpha, u_22);
+        return _e17;
+    }
+    if ((mf_7.ndf == MS_NDF_EXPONENTIAL)) {
+        MsSample _e22 = ms_exponential_sample(w_39, mf_7.alpha, u_22);
+        return _e22;
+    }
+    if ((mf_7.ndf == MS_NDF_STUDENT_T)) {
+        MsSample _e28 = ms_student_t_sample(w_39, mf_7.alpha, u_22, mf_7.table);
+        return _e28;
+    }
+    return MsSample(vec3(0.0, 0.0, 1.0), 0.0);
+}
+
+MsSample ms_sample_dcos(MsMicrofacet mf_8, vec2 u_23) {
+    if ((mf_8.ndf == MS_NDF_GGX)) {
+        MsSample _e6 = ms_ggx_sample_dcos(mf_8.alpha, u_23);
+        return _e6;
+    }
+    if ((mf_8.ndf == MS_NDF_BECKMANN)) {
+        MsSample _e11 = ms_beckmann_sample_dcos(mf_8.alpha, u_23);
+        return _e11;
+    }
+    if ((mf_8.ndf == MS_NDF_DOUBLE_GGX)) {
+        MsSample _e16 = ms_double_ggx_sample_dcos(mf_8.alpha, u_23);
+        return _e16;
+    }
+    if ((mf_8.ndf == MS_NDF_EXPONENTIAL)) {
+        MsSample _e21 = ms_exponential_sample_dcos(mf_8.alpha, u_23);
+        return _e21;
+    }
+    if ((mf_8.ndf == MS_NDF_STUDENT_T)) {
+        MsSample _e27 = ms_student_t_sample_dcos(mf_8.alpha, u_23, mf_8.table);
+        return _e27;
+    }
+    return MsSample(vec3(0.0, 0.0, 1.0), 0.0);
+}
+
+bool ms_effectively_smooth(MsMicrofacet mf_9) {
+    return (max(mf_9.alpha.x, mf_9.alpha.y) < 0.001);
+}
+
+bool ms_on_horizon(float z_4) {
+    return !((abs(z_4) >= 1e-18));
+}
+
+bool ms_usable(float v_9) {
+    bool local_31 = false;
+    if ((v_9 >= 1.1754944e-20)) {
+        local_31 = (v_9 <= 3.4028235e38);
+    } else {
+        local_31 = false;
+    }
+    bool _e8 = local_31;
     return _e8;
 }
 
-float ms_masking_g2_(MsMicrofacet mf_9, uint masking, vec3 wo_17, vec3 wi_17) {
+float ms_masking_g2_(MsMicrofacet mf_10, uint masking, vec3 wo_19, vec3 wi_19) {
     if ((masking == MS_MASKING_SEPARABLE)) {
-        float _e6 = ms_g2_separable(mf_9, wo_17, wi_17);
+        float _e6 = ms_g2_separable(mf_10, wo_19, wi_19);
         return _e6;
     }
-    float _e7 = ms_g2_(mf_9, wo_17, wi_17);
+    float _e7 = ms_g2_(mf_10, wo_19, wi_19);
     return _e7;
 }
 
-float ms_reflected(MsMicrofacet mf_10, uint masking_1, vec3 wo_18, vec3 wi_18, float d_wm) {
-    float _e5 = ms_masking_g2_(mf_10, masking_1, wo_18, wi_18);
-    return ((d_wm * _e5) / (4.0 * abs((wo_18.z * wi_18.z))));
+float ms_reflected(MsMicrofacet mf_11, uint masking_1, vec3 wo_20, vec3 wi_20, float d_wm) {
+    float _e5 = ms_masking_g2_(mf_11, masking_1, wo_20, wi_20);
+    return ((d_wm * _e5) / (4.0 * abs((wo_20.z * wi_20.z))));
 }
 
-vec3 ms_weighted(vec3 fr_1, float k_5) {
-    return mix((fr_1 * k_5), vec3(0.0), equal(fr_1, vec3(0.0)));
+vec3 ms_weighted(vec3 fr_1, float k_7) {
+    return mix((fr_1 * k_7), vec3(0.0), equal(fr_1, vec3(0.0)));
 }
 
-vec3 ms_conductor_lobe_normal(MsConductor c_5, vec3 wo_19, vec3 wi_19) {
-    bool local_26 = false;
-    bool local_27 = false;
-    bool local_28 = false;
-    bool _e3 = ms_same_hemisphere(wo_19, wi_19);
+vec3 ms_conductor_lobe_normal(MsConductor c_6, vec3 wo_21, vec3 wi_21) {
+    bool local_32 = false;
+    bool local_33 = false;
+    bool local_34 = false;
+    bool _e3 = ms_same_hemisphere(wo_21, wi_21);
     if (!(!(_e3))) {
-        bool _e9 = ms_on_horizon(wo_19.z);
-        local_26 = _e9;
+        bool _e9 = ms_on_horizon(wo_21.z);
+        local_32 = _e9;
     } else {
-        local_26 = true;
+        local_32 = true;
     }
-    bool _e11 = local_26;
+    bool _e11 = local_32;
     if (!(_e11)) {
-        bool _e16 = ms_on_horizon(wi_19.z);
-        local_27 = _e16;
+        bool _e16 = ms_on_horizon(wi_21.z);
+        local_33 = _e16;
     } else {
-        local_27 = true;
+        local_33 = true;
     }
-    bool _e18 = local_27;
+    bool _e18 = local_33;
     if (!(_e18)) {
-        bool _e23 = ms_effectively_smooth(c_5.mf);
-        local_28 = _e23;
+        bool _e23 = ms_effectively_smooth(c_6.mf);
+        local_34 = _e23;
     } else {
-        local_28 = true;
+        local_34 = true;
     }
-    bool _e25 = local_28;
+    bool _e25 = local_34;
     if (_e25) {
         return vec3(0.0);
     }
-    vec3 _e28 = ms_half_vector_reflection(wo_19, wi_19);
+    vec3 _e28 = ms_half_vector_reflection(wo_21, wi_21);
     return _e28;
 }
 
-vec3 ms_conductor_eval(MsConductor c_6, vec3 wo_20, vec3 wi_20) {
-    vec3 _e3 = ms_conductor_lobe_normal(c_6, wo_20, wi_20);
+vec3 ms_conductor_eval(MsConductor c_7, vec3 wo_22, vec3 wi_22) {
+    vec3 _e3 = ms_conductor_lobe_normal(c_7, wo_22, wi_22);
     bool _e4 = ms_half_vector_ok(_e3);
     if (!(_e4)) {
         return vec3(0.0);
     }
-    float _e9 = ms_dot(wo_20, _e3);
-    float _e11 = ms_dot(wi_20, _e3);
-    vec3 _e16 = ms_fresnel_eval(c_6.fresnel, (0.5 * (abs(_e9) + abs(_e11))));
-    float _e20 = ms_d(c_6.mf, _e3);
-    float _e21 = ms_reflected(c_6.mf, c_6.masking, wo_20, wi_20, _e20);
+    float _e9 = ms_dot(wo_22, _e3);
+    float _e11 = ms_dot(wi_22, _e3);
+    vec3 _e16 = ms_fresnel_eval(c_7.fresnel, (0.5 * (abs(_e9) + abs(_e11))));
+    float _e20 = ms_d(c_7.mf, _e3);
+    float _e21 = ms_reflected(c_7.mf, c_7.masking, wo_22, wi_22, _e20);
     vec3 _e22 = ms_weighted(_e16, _e21);
     return _e22;
 }
 
-float ms_conductor_pdf(MsConductor c_7, vec3 wo_21, vec3 wi_21) {
-    vec3 _e3 = ms_conductor_lobe_normal(c_7, wo_21, wi_21);
+float ms_conductor_pdf(MsConductor c_8, vec3 wo_23, vec3 wi_23) {
+    vec3 _e3 = ms_conductor_lobe_normal(c_8, wo_23, wi_23);
     bool _e4 = ms_half_vector_ok(_e3);
     if (!(_e4)) {
         return 0.0;
     }
-    float _e8 = ms_pdf(c_7.mf, wo_21, _e3);
-    float _e9 = ms_dot(wo_21, _e3);
+    float _e8 = ms_pdf(c_8.mf, wo_23, _e3);
+    float _e9 = ms_dot(wo_23, _e3);
     return (_e8 / (4.0 * abs(_e9)));
 }
 
-vec4 ms_conductor_eval_pdf(MsConductor c_8, vec3 wo_22, vec3 wi_22) {
-    vec3 _e3 = ms_conductor_lobe_normal(c_8, wo_22, wi_22);
+vec4 ms_conductor_eval_pdf(MsConductor c_9, vec3 wo_24, vec3 wi_24) {
+    vec3 _e3 = ms_conductor_lobe_normal(c_9, wo_24, wi_24);
     bool _e4 = ms_half_vector_ok(_e3);
     if (!(_e4)) {
         return vec4(0.0);
     }
-    float _e8 = ms_dot(wo_22, _e3);
+    float _e8 = ms_dot(wo_24, _e3);
     float co = abs(_e8);
-    float _e11 = ms_dot(wi_22, _e3);
-    vec3 _e16 = ms_fresnel_eval(c_8.fresnel, (0.5 * (co + abs(_e11))));
-    float _e20 = ms_d(c_8.mf, _e3);
-    float _e21 = ms_reflected(c_8.mf, c_8.masking, wo_22, wi_22, _e20);
+    float _e11 = ms_dot(wi_24, _e3);
+    vec3 _e16 = ms_fresnel_eval(c_9.fresnel, (0.5 * (co + abs(_e11))));
+    float _e20 = ms_d(c_9.mf, _e3);
+    float _e21 = ms_reflected(c_9.mf, c_9.masking, wo_24, wi_24, _e20);
     vec3 _e22 = ms_weighted(_e16, _e21);
-    float _e24 = ms_pdf(c_8.mf, wo_22, _e3);
+    float _e24 = ms_pdf(c_9.mf, wo_24, _e3);
     return vec4(_e22, (_e24 / (4.0 * co)));
 }
 
-MsBsdfSample ms_conductor_sample(MsConductor c_9, vec3 wo_23, float uc, vec2 u_21) {
-    bool local_29 = false;
+MsBsdfSample ms_conductor_sample(MsConductor c_10, vec3 wo_25, float uc, vec2 u_24) {
+    bool local_35 = false;
     MsBsdfSample none = MsBsdfSample(vec3(0.0), 0.0, vec3(0.0), 0u, 1.0);
-    bool _e13 = ms_on_horizon(wo_23.z);
+    bool _e13 = ms_on_horizon(wo_25.z);
     if (_e13) {
         return none;
     }
-    bool _e15 = ms_effectively_smooth(c_9.mf);
+    bool _e15 = ms_effectively_smooth(c_10.mf);
     if (_e15) {
-        vec3 wi_36 = vec3(-(wo_23.x), -(wo_23.y), wo_23.z);
-        float k_9 = (1.0 / abs(wi_36.z));
-        vec3 _e29 = ms_fresnel_eval(c_9.fresnel, abs(wo_23.z));
-        return MsBsdfSample(wi_36, 1.0, (_e29 * k_9), 3u, 1.0);
+        vec3 wi_38 = vec3(-(wo_25.x), -(wo_25.y), wo_25.z);
+        float k_11 = (1.0 / abs(wi_38.z));
+        vec3 _e29 = ms_fresnel_eval(c_10.fresnel, abs(wo_25.z));
+        return MsBsdfSample(wi_38, 1.0, (_e29 * k_11), 3u, 1.0);
     }
-    MsSample _e36 = ms_sample(c_9.mf, wo_23, u_21);
-    vec3 _e38 = ms_reflect(wo_23, _e36.wm);
-    bool _e39 = ms_same_hemisphere(wo_23, _e38);
+    MsSample _e36 = ms_sample(c_10.mf, wo_25, u_24);
+    vec3 _e38 = ms_reflect(wo_25, _e36.wm);
+    bool _e39 = ms_same_hemisphere(wo_25, _e38);
     if (!(!(_e39))) {
         bool _e45 = ms_on_horizon(_e38.z);
-        local_29 = _e45;
+        local_35 = _e45;
     } else {
-        local_29 = true;
+        local_35 = true;
     }
-    bool _e47 = local_29;
+    bool _e47 = local_35;
     if (_e47) {
         return none;
     }
-    float _e49 = ms_dot(wo_23, _e36.wm);
+    float _e49 = ms_dot(wo_25, _e36.wm);
     float co_1 = abs(_e49);
     float pdf = (_e36.pdf / (4.0 * co_1));
     bool _e55 = ms_usable(pdf);
     if (!(_e55)) {
         return none;
     }
-    vec3 _e58 = ms_fresnel_eval(c_9.fresnel, co_1);
-    float _e61 = ms_d(c_9.mf, _e36.wm);
+    vec3 _e58 = ms_fresnel_eval(c_10.fresnel, co_1);
+    float _e61 = ms_d(c_10.mf, _e36.wm);
     bool _e62 = ms_usable(_e61);
     if (!(_e62)) {
         return none;
     }
-    float _e66 = ms_reflected(c_9.mf, c_9.masking, wo_23, _e38, _e61);
+    float _e66 = ms_reflected(c_10.mf, c_10.masking, wo_25, _e38, _e61);
     vec3 _e67 = ms_weighted(_e58, _e66);
     if (!(all(lessThanEqual(_e67, vec3(3.4028235e38))))) {
         return none;
@@ -2328,79 +2806,79 @@ MsBsdfSample ms_conductor_sample(MsConductor c_9, vec3 wo_23, float uc, vec2 u_2
 }
 
 bool ms_dielectric_smooth(MsDielectric d_1) {
-    bool local_30 = false;
+    bool local_36 = false;
     if (!((d_1.eta == 1.0))) {
         bool _e8 = ms_effectively_smooth(d_1.mf);
-        local_30 = _e8;
+        local_36 = _e8;
     } else {
-        local_30 = true;
+        local_36 = true;
     }
-    bool _e10 = local_30;
+    bool _e10 = local_36;
     return _e10;
 }
 
-float ms_dielectric_g2_(MsDielectric d_2, vec3 wo_24, vec3 wi_23) {
-    float _e5 = ms_masking_g2_(d_2.mf, d_2.masking, wo_24, wi_23);
+float ms_dielectric_g2_(MsDielectric d_2, vec3 wo_26, vec3 wi_25) {
+    float _e5 = ms_masking_g2_(d_2.mf, d_2.masking, wo_26, wi_25);
     return _e5;
 }
 
-vec4 ms_dielectric_half(MsDielectric d_3, vec3 wo_25, vec3 wi_24) {
-    bool local_31 = false;
-    vec3 wm_17 = vec3(0.0);
+vec4 ms_dielectric_half(MsDielectric d_3, vec3 wo_27, vec3 wi_26) {
+    bool local_37 = false;
+    vec3 wm_21 = vec3(0.0);
     float etap_4 = 1.0;
-    bool local_32 = false;
+    bool local_38 = false;
     vec4 none_1 = vec4(0.0);
-    float co_2 = wo_25.z;
-    float ci_1 = wi_24.z;
+    float co_2 = wo_27.z;
+    float ci_1 = wi_26.z;
     bool _e7 = ms_on_horizon(co_2);
     if (!(_e7)) {
         bool _e11 = ms_on_horizon(ci_1);
-        local_31 = _e11;
+        local_37 = _e11;
     } else {
-        local_31 = true;
+        local_37 = true;
     }
-    bool _e13 = local_31;
+    bool _e13 = local_37;
     if (_e13) {
         return none_1;
     }
     if (((co_2 * ci_1) > 0.0)) {
-        vec3 _e20 = ms_half_vector_reflection(wo_25, wi_24);
-        wm_17 = _e20;
+        vec3 _e20 = ms_half_vector_reflection(wo_27, wi_26);
+        wm_21 = _e20;
     } else {
-        vec4 _e22 = ms_half_vector_refraction(wo_25, wi_24, d_3.eta);
-        wm_17 = _e22.xyz;
+        vec4 _e22 = ms_half_vector_refraction(wo_27, wi_26, d_3.eta);
+        wm_21 = _e22.xyz;
         etap_4 = _e22.w;
     }
-    vec3 _e25 = wm_17;
+    vec3 _e25 = wm_21;
     bool _e26 = ms_half_vector_ok(_e25);
     if (!(_e26)) {
         return none_1;
     }
-    vec3 _e28 = wm_17;
-    float _e29 = ms_dot(_e28, wi_24);
+    vec3 _e28 = wm_21;
+    float _e29 = ms_dot(_e28, wi_26);
     if (!(((_e29 * ci_1) < 0.0))) {
-        vec3 _e36 = wm_17;
-        float _e37 = ms_dot(_e36, wo_25);
-        local_32 = ((_e37 * co_2) < 0.0);
+        vec3 _e36 = wm_21;
+        float _e37 = ms_dot(_e36, wo_27);
+        local_38 = ((_e37 * co_2) < 0.0);
     } else {
-        local_32 = true;
+        local_38 = true;
     }
-    bool _e42 = local_32;
+    bool _e42 = local_38;
     if (_e42) {
         return none_1;
     }
-    vec3 _e43 = wm_17;
+    vec3 _e43 = wm_21;
     float _e44 = etap_4;
     return vec4(_e43, _e44);
 }
 
-float ms_dielectric_f_transmission(MsDielectric d_4, vec3 wo_26, vec3 wi_25, vec3 wm_18, float d_wm_1, float etap_5, float t_2) {
+float ms_dielectric_f_transmission(MsDielectric d_4, vec3 wo_28, vec3 wi_27, vec3 wm_22, float d_wm_1, float etap_5, float t_2) {
     float f_2 = 0.0;
-    float _e7 = ms_dot(wi_25, wm_18);
-    float _e8 = ms_dot(wo_26, wm_18);
-    float _e9 = ms_refraction_denominator(wo_26, wi_25, wm_18, etap_5);
-    float _e10 = ms_dielectric_g2_(d_4, wo_26, wi_25);
-    float geometric = ((_e10 / abs((wi_25.z * wo_26.z))) * (abs((_e7 * _e8)) / (_e9 * _e9)));
+    float _e7 = ms_dot(wi_27, wm_22);
+    float _e8 = ms_dot(wo_28, wm_22);
+    float _e9 = ms_refraction_denominator(wo_28, wi_27, wm_22, etap_5);
+    float _e10 = ms_dielectric_g2_(d_4, wo_28, wi_27);
+    float geometric = ((_e10 / abs((wi_27.z * wo_28.z))) * (abs((_e7 * _e8)) / (_e9 * _e9)));
     f_2 = ((d_wm_1 * t_2) * geometric);
     if ((d_4.transport == MS_TRANSPORT_RADIANCE)) {
         float _e27 = f_2;
@@ -2410,176 +2888,176 @@ float ms_dielectric_f_transmission(MsDielectric d_4, vec3 wo_26, vec3 wi_25, vec
     return _e30;
 }
 
-float ms_dielectric_eval(MsDielectric d_5, vec3 wo_27, vec3 wi_26) {
+float ms_dielectric_eval(MsDielectric d_5, vec3 wo_29, vec3 wi_28) {
     bool _e3 = ms_dielectric_smooth(d_5);
     if (_e3) {
         return 0.0;
     }
-    vec4 _e5 = ms_dielectric_half(d_5, wo_27, wi_26);
+    vec4 _e5 = ms_dielectric_half(d_5, wo_29, wi_28);
     if ((_e5.w == 0.0)) {
         return 0.0;
     }
-    vec3 wm_19 = _e5.xyz;
-    float _e11 = ms_dot(wo_27, wm_19);
+    vec3 wm_23 = _e5.xyz;
+    float _e11 = ms_dot(wo_29, wm_23);
     float _e13 = ms_fresnel_dielectric(_e11, d_5.eta);
-    float _e15 = ms_d(d_5.mf, wm_19);
-    if (((wo_27.z * wi_26.z) > 0.0)) {
-        float _e23 = ms_reflected(d_5.mf, d_5.masking, wo_27, wi_26, _e15);
+    float _e15 = ms_d(d_5.mf, wm_23);
+    if (((wo_29.z * wi_28.z) > 0.0)) {
+        float _e23 = ms_reflected(d_5.mf, d_5.masking, wo_29, wi_28, _e15);
         return (_e13 * _e23);
     }
-    float _e28 = ms_dielectric_f_transmission(d_5, wo_27, wi_26, wm_19, _e15, _e5.w, (1.0 - _e13));
+    float _e28 = ms_dielectric_f_transmission(d_5, wo_29, wi_28, wm_23, _e15, _e5.w, (1.0 - _e13));
     return _e28;
 }
 
-float ms_dielectric_pdf(MsDielectric d_6, vec3 wo_28, vec3 wi_27) {
+float ms_dielectric_pdf(MsDielectric d_6, vec3 wo_30, vec3 wi_29) {
     bool _e3 = ms_dielectric_smooth(d_6);
     if (_e3) {
         return 0.0;
     }
-    vec4 _e5 = ms_dielectric_half(d_6, wo_28, wi_27);
+    vec4 _e5 = ms_dielectric_half(d_6, wo_30, wi_29);
     if ((_e5.w == 0.0)) {
         return 0.0;
     }
-    vec3 wm_20 = _e5.xyz;
-    float _e11 = ms_dot(wo_28, wm_20);
+    vec3 wm_24 = _e5.xyz;
+    float _e11 = ms_dot(wo_30, wm_24);
     float _e13 = ms_fresnel_dielectric(_e11, d_6.eta);
-    float _e15 = ms_pdf(d_6.mf, wo_28, wm_20);
-    if (((wo_28.z * wi_27.z) > 0.0)) {
-        float _e22 = ms_dot(wo_28, wm_20);
+    float _e15 = ms_pdf(d_6.mf, wo_30, wm_24);
+    if (((wo_30.z * wi_29.z) > 0.0)) {
+        float _e22 = ms_dot(wo_30, wm_24);
         return ((_e15 * _e13) / (4.0 * abs(_e22)));
     }
-    float _e31 = ms_jacobian_refraction(wo_28, wi_27, wm_20, _e5.w);
+    float _e31 = ms_jacobian_refraction(wo_30, wi_29, wm_24, _e5.w);
     return ((_e15 * (1.0 - _e13)) * _e31);
 }
 
-MsBsdfSample ms_dielectric_sample_smooth(MsDielectric d_7, vec3 wo_29, float uc_1) {
+MsBsdfSample ms_dielectric_sample_smooth(MsDielectric d_7, vec3 wo_31, float uc_1) {
     float f_3 = 0.0;
-    float _e5 = ms_fresnel_dielectric(wo_29.z, d_7.eta);
+    float _e5 = ms_fresnel_dielectric(wo_31.z, d_7.eta);
     if ((uc_1 < _e5)) {
-        vec3 wi_37 = vec3(-(wo_29.x), -(wo_29.y), wo_29.z);
-        return MsBsdfSample(wi_37, _e5, vec3((_e5 / abs(wi_37.z))), 3u, 1.0);
+        vec3 wi_39 = vec3(-(wo_31.x), -(wo_31.y), wo_31.z);
+        return MsBsdfSample(wi_39, _e5, vec3((_e5 / abs(wi_39.z))), 3u, 1.0);
     }
     MsBsdfSample none_2 = MsBsdfSample(vec3(0.0), 0.0, vec3(0.0), 0u, 1.0);
-    vec4 _e33 = ms_refract(wo_29, vec3(0.0, 0.0, 1.0), d_7.eta);
+    vec4 _e33 = ms_refract(wo_31, vec3(0.0, 0.0, 1.0), d_7.eta);
     if ((_e33.w == 0.0)) {
         return none_2;
     }
-    vec3 wi_38 = _e33.xyz;
-    bool _e39 = ms_on_horizon(wi_38.z);
+    vec3 wi_40 = _e33.xyz;
+    bool _e39 = ms_on_horizon(wi_40.z);
     if (_e39) {
         return none_2;
     }
-    float t_12 = (1.0 - _e5);
-    f_3 = (t_12 / abs(wi_38.z));
+    float t_13 = (1.0 - _e5);
+    f_3 = (t_13 / abs(wi_40.z));
     if ((d_7.transport == MS_TRANSPORT_RADIANCE)) {
         float _e49 = f_3;
         f_3 = (_e49 / (_e33.w * _e33.w));
     }
     float _e54 = f_3;
-    return MsBsdfSample(wi_38, t_12, vec3(_e54), 7u, _e33.w);
+    return MsBsdfSample(wi_40, t_13, vec3(_e54), 7u, _e33.w);
 }
 
-MsBsdfSample ms_dielectric_sample(MsDielectric d_8, vec3 wo_30, float uc_2, vec2 u_22) {
-    bool local_33 = false;
-    bool local_34 = false;
-    bool local_35 = false;
-    bool local_36 = false;
+MsBsdfSample ms_dielectric_sample(MsDielectric d_8, vec3 wo_32, float uc_2, vec2 u_25) {
+    bool local_39 = false;
+    bool local_40 = false;
+    bool local_41 = false;
+    bool local_42 = false;
     MsBsdfSample none_3 = MsBsdfSample(vec3(0.0), 0.0, vec3(0.0), 0u, 1.0);
-    bool _e13 = ms_on_horizon(wo_30.z);
+    bool _e13 = ms_on_horizon(wo_32.z);
     if (_e13) {
         return none_3;
     }
     bool _e14 = ms_dielectric_smooth(d_8);
     if (_e14) {
-        MsBsdfSample _e15 = ms_dielectric_sample_smooth(d_8, wo_30, uc_2);
+        MsBsdfSample _e15 = ms_dielectric_sample_smooth(d_8, wo_32, uc_2);
         return _e15;
     }
-    MsSample _e17 = ms_sample(d_8.mf, wo_30, u_22);
-    vec3 wm_21 = _e17.wm;
-    float _e19 = ms_dot(wo_30, wm_21);
+    MsSample _e17 = ms_sample(d_8.mf, wo_32, u_25);
+    vec3 wm_25 = _e17.wm;
+    float _e19 = ms_dot(wo_32, wm_25);
     float _e21 = ms_fresnel_dielectric(_e19, d_8.eta);
     if ((uc_2 < _e21)) {
-        vec3 _e23 = ms_reflect(wo_30, wm_21);
-        bool _e24 = ms_same_hemisphere(wo_30, _e23);
+        vec3 _e23 = ms_reflect(wo_32, wm_25);
+        bool _e24 = ms_same_hemisphere(wo_32, _e23);
         if (!(!(_e24))) {
             bool _e30 = ms_on_horizon(_e23.z);
-            local_33 = _e30;
+            local_39 = _e30;
         } else {
-            local_33 = true;
+            local_39 = true;
         }
-        bool _e32 = local_33;
+        bool _e32 = local_39;
         if (_e32) {
             return none_3;
         }
-        float _e34 = ms_d(d_8.mf, wm_21);
+        float _e34 = ms_d(d_8.mf, wm_25);
         bool _e35 = ms_usable(_e34);
         if (!(_e35)) {
             return none_3;
         }
-        float _e39 = ms_reflected(d_8.mf, d_8.masking, wo_30, _e23, _e34);
+        float _e39 = ms_reflected(d_8.mf, d_8.masking, wo_32, _e23, _e34);
         float f_5 = (_e21 * _e39);
         float pdf_1 = ((_e17.pdf * _e21) / (4.0 * abs(_e19)));
         bool _e47 = ms_usable(pdf_1);
         if (!(!(_e47))) {
-            local_34 = !((f_5 <= 3.4028235e38));
+            local_40 = !((f_5 <= 3.4028235e38));
         } else {
-            local_34 = true;
+            local_40 = true;
         }
-        bool _e56 = local_34;
+        bool _e56 = local_40;
         if (_e56) {
             return none_3;
         }
         return MsBsdfSample(_e23, pdf_1, vec3(f_5), MS_SAMPLE_VALID, 1.0);
     }
-    vec4 _e62 = ms_refract(wo_30, wm_21, d_8.eta);
+    vec4 _e62 = ms_refract(wo_32, wm_25, d_8.eta);
     if ((_e62.w == 0.0)) {
         return none_3;
     }
-    vec3 wi_39 = _e62.xyz;
+    vec3 wi_41 = _e62.xyz;
     float etap_6 = _e62.w;
-    bool _e68 = ms_same_hemisphere(wo_30, wi_39);
+    bool _e68 = ms_same_hemisphere(wo_32, wi_41);
     if (!(_e68)) {
-        bool _e73 = ms_on_horizon(wi_39.z);
-        local_35 = _e73;
+        bool _e73 = ms_on_horizon(wi_41.z);
+        local_41 = _e73;
     } else {
-        local_35 = true;
+        local_41 = true;
     }
-    bool _e75 = local_35;
+    bool _e75 = local_41;
     if (_e75) {
         return none_3;
     }
-    float t_13 = (1.0 - _e21);
-    float _e80 = ms_jacobian_refraction(wo_30, wi_39, wm_21, etap_6);
-    float pdf_2 = ((_e17.pdf * t_13) * _e80);
-    float _e83 = ms_d(d_8.mf, wm_21);
+    float t_14 = (1.0 - _e21);
+    float _e80 = ms_jacobian_refraction(wo_32, wi_41, wm_25, etap_6);
+    float pdf_2 = ((_e17.pdf * t_14) * _e80);
+    float _e83 = ms_d(d_8.mf, wm_25);
     bool _e84 = ms_usable(_e83);
     if (!(_e84)) {
         return none_3;
     }
-    float _e86 = ms_dielectric_f_transmission(d_8, wo_30, wi_39, wm_21, _e83, etap_6, t_13);
+    float _e86 = ms_dielectric_f_transmission(d_8, wo_32, wi_41, wm_25, _e83, etap_6, t_14);
     bool _e87 = ms_usable(pdf_2);
     if (!(!(_e87))) {
-        local_36 = !((_e86 <= 3.4028235e38));
+        local_42 = !((_e86 <= 3.4028235e38));
     } else {
-        local_36 = true;
+        local_42 = true;
     }
-    bool _e96 = local_36;
+    bool _e96 = local_42;
     if (_e96) {
         return none_3;
     }
-    return MsBsdfSample(wi_39, pdf_2, vec3(_e86), 5u, etap_6);
+    return MsBsdfSample(wi_41, pdf_2, vec3(_e86), 5u, etap_6);
 }
 
-MsLutTap ms_lut_tap(float x_10, uint n_5) {
-    float t_14 = clamp(((x_10 * float(n_5)) - 0.5), 0.0, float((n_5 - 1u)));
-    uint i_9 = min(uint(floor(t_14)), (n_5 - 2u));
-    return MsLutTap(i_9, (t_14 - float(i_9)));
-}
-
-MsLutTap ms_lut_tap_edges(float x_11, uint n_6) {
-    float t_15 = clamp((x_11 * float((n_6 - 1u))), 0.0, float((n_6 - 1u)));
-    uint i_10 = min(uint(floor(t_15)), (n_6 - 2u));
+MsLutTap ms_lut_tap(float x_12, uint n_8) {
+    float t_15 = clamp(((x_12 * float(n_8)) - 0.5), 0.0, float((n_8 - 1u)));
+    uint i_10 = min(uint(floor(t_15)), (n_8 - 2u));
     return MsLutTap(i_10, (t_15 - float(i_10)));
+}
+
+MsLutTap ms_lut_tap_edges(float x_13, uint n_9) {
+    float t_16 = clamp((x_13 * float((n_9 - 1u))), 0.0, float((n_9 - 1u)));
+    uint i_11 = min(uint(floor(t_16)), (n_9 - 2u));
+    return MsLutTap(i_11, (t_16 - float(i_11)));
 }
 
 uint ms_lut_index(uint ir, uint im, uint n_mu) {
@@ -2596,8 +3074,8 @@ float ms_lut_bilerp(MsLutTap r, MsLutTap m_4, float v00_, float v10_, float v01_
     return (((((gr * gm) * v00_) + ((r.f * gm) * v10_)) + ((gr * m_4.f) * v01_)) + ((r.f * m_4.f) * v11_));
 }
 
-float ms_lut_roughness_coord(vec2 alpha_45, float alpha_max) {
-    return sqrt((sqrt((alpha_45.x * alpha_45.y)) / alpha_max));
+float ms_lut_roughness_coord(vec2 alpha_57, float alpha_max) {
+    return sqrt((sqrt((alpha_57.x * alpha_57.y)) / alpha_max));
 }
 
 vec3 ms_kulla_conty_f_ms(vec3 f_avg, float e_avg) {
@@ -2612,9 +3090,9 @@ float ms_kulla_conty_lobe(float e_o, float e_i, float e_avg_1) {
     return ((max((1.0 - e_o), 0.0) * max((1.0 - e_i), 0.0)) / den_3);
 }
 
-vec3 ms_conductor_eval_kulla_conty(MsConductor c_10, vec3 wo_31, vec3 wi_28, float e_o_1, float e_i_1, float e_avg_2, vec3 f_ms) {
-    vec3 _e7 = ms_conductor_eval(c_10, wo_31, wi_28);
-    if (!(((wo_31.z * wi_28.z) > 0.0))) {
+vec3 ms_conductor_eval_kulla_conty(MsConductor c_11, vec3 wo_33, vec3 wi_30, float e_o_1, float e_i_1, float e_avg_2, vec3 f_ms) {
+    vec3 _e7 = ms_conductor_eval(c_11, wo_33, wi_30);
+    if (!(((wo_33.z * wi_30.z) > 0.0))) {
         return _e7;
     }
     float _e14 = ms_kulla_conty_lobe(e_o_1, e_i_1, e_avg_2);
@@ -2625,8 +3103,8 @@ vec3 ms_turquin_scale(float e_o_2, vec3 f0_2) {
     return (vec3(1.0) + ((f0_2 * (1.0 - e_o_2)) / vec3(e_o_2)));
 }
 
-vec3 ms_conductor_eval_turquin(MsConductor c_11, vec3 wo_32, vec3 wi_29, float e_o_3, vec3 f0_3) {
-    vec3 _e5 = ms_conductor_eval(c_11, wo_32, wi_29);
+vec3 ms_conductor_eval_turquin(MsConductor c_12, vec3 wo_34, vec3 wi_31, float e_o_3, vec3 f0_3) {
+    vec3 _e5 = ms_conductor_eval(c_12, wo_34, wi_31);
     vec3 _e6 = ms_turquin_scale(e_o_3, f0_3);
     return (_e5 * _e6);
 }
@@ -2635,82 +3113,82 @@ float ms_kulla_conty_p_ms(float e_o_4) {
     return clamp((1.0 - e_o_4), 0.0, 1.0);
 }
 
-float ms_cosine_pdf_same_side(vec3 wo_33, vec3 wi_30) {
-    if (!(((wo_33.z * wi_30.z) > 0.0))) {
+float ms_cosine_pdf_same_side(vec3 wo_35, vec3 wi_32) {
+    if (!(((wo_35.z * wi_32.z) > 0.0))) {
         return 0.0;
     }
-    return (abs(wi_30.z) / MS_PI);
+    return (abs(wi_32.z) / MS_PI);
 }
 
-float ms_conductor_pdf_kulla_conty(MsConductor c_12, vec3 wo_34, vec3 wi_31, float e_o_5) {
+float ms_conductor_pdf_kulla_conty(MsConductor c_13, vec3 wo_36, vec3 wi_33, float e_o_5) {
     float _e4 = ms_kulla_conty_p_ms(e_o_5);
-    float _e7 = ms_conductor_pdf(c_12, wo_34, wi_31);
-    float _e9 = ms_cosine_pdf_same_side(wo_34, wi_31);
+    float _e7 = ms_conductor_pdf(c_13, wo_36, wi_33);
+    float _e9 = ms_cosine_pdf_same_side(wo_36, wi_33);
     return (((1.0 - _e4) * _e7) + (_e4 * _e9));
 }
 
-vec3 ms_cosine_hemisphere(vec2 u_23) {
-    float r_21 = sqrt(u_23.x);
-    vec2 _e4 = ms_cos_sin_turn(u_23.y);
-    return vec3((r_21 * _e4.x), (r_21 * _e4.y), sqrt(max((1.0 - u_23.x), 0.0)));
+vec3 ms_cosine_hemisphere(vec2 u_26) {
+    float r_22 = sqrt(u_26.x);
+    vec2 _e4 = ms_cos_sin_turn(u_26.y);
+    return vec3((r_22 * _e4.x), (r_22 * _e4.y), sqrt(max((1.0 - u_26.x), 0.0)));
 }
 
-MsBsdfSample ms_conductor_sample_kulla_conty(MsConductor c_13, vec3 wo_35, float uc_3, vec2 u_24, float e_o_6) {
-    vec3 wi_32 = vec3(0.0);
-    bool local_37 = false;
+MsBsdfSample ms_conductor_sample_kulla_conty(MsConductor c_14, vec3 wo_37, float uc_3, vec2 u_27, float e_o_6) {
+    vec3 wi_34 = vec3(0.0);
+    bool local_43 = false;
     MsBsdfSample none_4 = MsBsdfSample(vec3(0.0), 0.0, vec3(0.0), 0u, 1.0);
-    bool _e14 = ms_on_horizon(wo_35.z);
+    bool _e14 = ms_on_horizon(wo_37.z);
     if (_e14) {
         return none_4;
     }
     float _e15 = ms_kulla_conty_p_ms(e_o_6);
     if ((uc_3 < _e15)) {
-        vec3 _e18 = ms_cosine_hemisphere(u_24);
-        wi_32 = _e18;
-        if ((wo_35.z < 0.0)) {
-            float _e24 = wi_32.z;
-            wi_32.z = -(_e24);
+        vec3 _e18 = ms_cosine_hemisphere(u_27);
+        wi_34 = _e18;
+        if ((wo_37.z < 0.0)) {
+            float _e24 = wi_34.z;
+            wi_34.z = -(_e24);
         }
     } else {
-        MsBsdfSample _e30 = ms_conductor_sample(c_13, wo_35, ((uc_3 - _e15) / (1.0 - _e15)), u_24);
+        MsBsdfSample _e30 = ms_conductor_sample(c_14, wo_37, ((uc_3 - _e15) / (1.0 - _e15)), u_27);
         if (!(((_e30.flags & MS_SAMPLE_VALID) == 0u))) {
-            local_37 = ((_e30.flags & MS_SAMPLE_SPECULAR) != 0u);
+            local_43 = ((_e30.flags & MS_SAMPLE_SPECULAR) != 0u);
         } else {
-            local_37 = true;
+            local_43 = true;
         }
-        bool _e45 = local_37;
+        bool _e45 = local_43;
         if (_e45) {
             return _e30;
         }
-        wi_32 = _e30.wi;
+        wi_34 = _e30.wi;
     }
-    vec3 _e47 = wi_32;
-    float _e48 = ms_conductor_pdf_kulla_conty(c_13, wo_35, _e47, e_o_6);
+    vec3 _e47 = wi_34;
+    float _e48 = ms_conductor_pdf_kulla_conty(c_14, wo_37, _e47, e_o_6);
     bool _e49 = ms_usable(_e48);
     if (!(_e49)) {
         return none_4;
     }
-    vec3 _e51 = wi_32;
-    vec3 _e52 = wi_32;
-    vec3 _e53 = ms_conductor_eval(c_13, wo_35, _e52);
+    vec3 _e51 = wi_34;
+    vec3 _e52 = wi_34;
+    vec3 _e53 = ms_conductor_eval(c_14, wo_37, _e52);
     return MsBsdfSample(_e51, _e48, _e53, MS_SAMPLE_VALID, 1.0);
 }
 
-MsBsdfSample ms_kulla_conty_sample_f(MsBsdfSample s_6, vec3 wo_36, float e_o_7, float e_i_2, float e_avg_3, vec3 f_ms_1) {
-    bool local_38 = false;
-    bool local_39 = false;
+MsBsdfSample ms_kulla_conty_sample_f(MsBsdfSample s_6, vec3 wo_38, float e_o_7, float e_i_2, float e_avg_3, vec3 f_ms_1) {
+    bool local_44 = false;
+    bool local_45 = false;
     if (!(((s_6.flags & MS_SAMPLE_VALID) == 0u))) {
-        local_38 = ((s_6.flags & MS_SAMPLE_SPECULAR) != 0u);
+        local_44 = ((s_6.flags & MS_SAMPLE_SPECULAR) != 0u);
     } else {
-        local_38 = true;
+        local_44 = true;
     }
-    bool _e20 = local_38;
+    bool _e20 = local_44;
     if (!(_e20)) {
-        local_39 = !(((wo_36.z * s_6.wi.z) > 0.0));
+        local_45 = !(((wo_38.z * s_6.wi.z) > 0.0));
     } else {
-        local_39 = true;
+        local_45 = true;
     }
-    bool _e32 = local_39;
+    bool _e32 = local_45;
     if (_e32) {
         return s_6;
     }
@@ -2718,15 +3196,15 @@ MsBsdfSample ms_kulla_conty_sample_f(MsBsdfSample s_6, vec3 wo_36, float e_o_7, 
     return MsBsdfSample(s_6.wi, s_6.pdf, (s_6.f + (_e36 * f_ms_1)), s_6.flags, s_6.eta);
 }
 
-MsBsdfSample ms_conductor_sample_turquin(MsConductor c_14, vec3 wo_37, float uc_4, vec2 u_25, float e_o_8, vec3 f0_4) {
-    bool local_40 = false;
-    MsBsdfSample _e6 = ms_conductor_sample(c_14, wo_37, uc_4, u_25);
+MsBsdfSample ms_conductor_sample_turquin(MsConductor c_15, vec3 wo_39, float uc_4, vec2 u_28, float e_o_8, vec3 f0_4) {
+    bool local_46 = false;
+    MsBsdfSample _e6 = ms_conductor_sample(c_15, wo_39, uc_4, u_28);
     if (!(((_e6.flags & MS_SAMPLE_VALID) == 0u))) {
-        local_40 = ((_e6.flags & MS_SAMPLE_SPECULAR) != 0u);
+        local_46 = ((_e6.flags & MS_SAMPLE_SPECULAR) != 0u);
     } else {
-        local_40 = true;
+        local_46 = true;
     }
-    bool _e21 = local_40;
+    bool _e21 = local_46;
     if (_e21) {
         return _e6;
     }
@@ -2751,14 +3229,14 @@ float ms_lut_trilerp(MsLutTap e, MsLutTap r_1, MsLutTap m_5, vec4 lo_2, vec4 hi_
     uint b_6 = 0u;
     vec2 we = vec2((1.0 - e.f), e.f);
     vec2 wr = vec2((1.0 - r_1.f), r_1.f);
-    vec2 wm_22 = vec2((1.0 - m_5.f), m_5.f);
-    bool loop_init_5 = true;
+    vec2 wm_26 = vec2((1.0 - m_5.f), m_5.f);
+    bool loop_init_8 = true;
     while(true) {
-        if (!loop_init_5) {
+        if (!loop_init_8) {
             uint _e59 = b_6;
             b_6 = (_e59 + 1u);
         }
-        loop_init_5 = false;
+        loop_init_8 = false;
         uint _e24 = b_6;
         if ((_e24 < 8u)) {
         } else {
@@ -2768,30 +3246,30 @@ float ms_lut_trilerp(MsLutTap e, MsLutTap r_1, MsLutTap m_5, vec4 lo_2, vec4 hi_
             uint _e27 = b_6;
             uint _e31 = b_6;
             uint _e35 = b_6;
-            float v_8 = ((_e35 >= 4u) ? hi_2[(_e31 & 3u)] : lo_2[(_e27 & 3u)]);
+            float v_12 = ((_e35 >= 4u) ? hi_2[(_e31 & 3u)] : lo_2[(_e27 & 3u)]);
             float _e39 = s_7;
             uint _e40 = b_6;
             uint _e44 = b_6;
             uint _e51 = b_6;
-            s_7 = (_e39 + (((we[(_e40 & 1u)] * wr[((_e44 >> 1u) & 1u)]) * wm_22[(_e51 >> 2u)]) * v_8));
+            s_7 = (_e39 + (((we[(_e40 & 1u)] * wr[((_e44 >> 1u) & 1u)]) * wm_26[(_e51 >> 2u)]) * v_12));
         }
     }
     float _e61 = s_7;
     return _e61;
 }
 
-float ms_lut_bilerp_eta(MsLutTap e_1, MsLutTap r_2, vec4 v_7) {
+float ms_lut_bilerp_eta(MsLutTap e_1, MsLutTap r_2, vec4 v_10) {
     float s_8 = 0.0;
     uint b_7 = 0u;
     vec2 we_1 = vec2((1.0 - e_1.f), e_1.f);
     vec2 wr_1 = vec2((1.0 - r_2.f), r_2.f);
-    bool loop_init_6 = true;
+    bool loop_init_9 = true;
     while(true) {
-        if (!loop_init_6) {
+        if (!loop_init_9) {
             uint _e35 = b_7;
             b_7 = (_e35 + 1u);
         }
-        loop_init_6 = false;
+        loop_init_9 = false;
         uint _e17 = b_7;
         if ((_e17 < 4u)) {
         } else {
@@ -2802,7 +3280,7 @@ float ms_lut_bilerp_eta(MsLutTap e_1, MsLutTap r_2, vec4 v_7) {
             uint _e21 = b_7;
             uint _e25 = b_7;
             uint _e30 = b_7;
-            s_8 = (_e20 + ((we_1[(_e21 & 1u)] * wr_1[(_e25 >> 1u)]) * v_7[_e30]));
+            s_8 = (_e20 + ((we_1[(_e21 & 1u)] * wr_1[(_e25 >> 1u)]) * v_10[_e30]));
         }
     }
     float _e37 = s_8;
@@ -2810,56 +3288,56 @@ float ms_lut_bilerp_eta(MsLutTap e_1, MsLutTap r_2, vec4 v_7) {
 }
 
 vec2 ms_dielectric_kulla_conty_k(float eta_5, float f_avg_1, vec2 e_avg_4) {
-    vec2 k_6 = vec2(0.0);
+    vec2 k_8 = vec2(0.0);
     float k_out = (1.0 - f_avg_1);
-    k_6 = vec2(k_out, ((k_out * (1.0 - e_avg_4.x)) / ((eta_5 * eta_5) * (1.0 - e_avg_4.y))));
-    float _e18 = k_6.y;
+    k_8 = vec2(k_out, ((k_out * (1.0 - e_avg_4.x)) / ((eta_5 * eta_5) * (1.0 - e_avg_4.y))));
+    float _e18 = k_8.y;
     if (!((_e18 <= 1.0))) {
-        vec2 _e22 = k_6;
-        float _e24 = k_6.y;
-        float _e28 = k_6.y;
-        k_6 = (_e22 * ((_e28 > 1.0) ? (1.0 / _e24) : 0.0));
+        vec2 _e22 = k_8;
+        float _e24 = k_8.y;
+        float _e28 = k_8.y;
+        k_8 = (_e22 * ((_e28 > 1.0) ? (1.0 / _e24) : 0.0));
     }
-    vec2 _e34 = k_6;
+    vec2 _e34 = k_8;
     return _e34;
 }
 
-float ms_dielectric_kulla_conty_lobe(MsDielectric d_9, vec3 wo_38, vec3 wi_33, float e_o_9, float e_i_3, float e_avg_i, float k_o) {
-    bool local_41 = false;
-    bool local_42 = false;
+float ms_dielectric_kulla_conty_lobe(MsDielectric d_9, vec3 wo_40, vec3 wi_35, float e_o_9, float e_i_3, float e_avg_i, float k_o) {
+    bool local_47 = false;
+    bool local_48 = false;
     float f_4 = 0.0;
-    bool local_43 = false;
-    if ((abs(wo_38.z) > 0.0)) {
-        local_41 = (abs(wi_33.z) > 0.0);
+    bool local_49 = false;
+    if ((abs(wo_40.z) > 0.0)) {
+        local_47 = (abs(wi_35.z) > 0.0);
     } else {
-        local_41 = false;
+        local_47 = false;
     }
-    bool _e18 = local_41;
+    bool _e18 = local_47;
     if (!(_e18)) {
         return 0.0;
     }
     float lost = (1.0 - e_o_9);
-    bool crossed = ((wi_33.z < 0.0) != (wo_38.z < 0.0));
+    bool crossed = ((wi_35.z < 0.0) != (wo_40.z < 0.0));
     float share = (crossed ? k_o : (1.0 - k_o));
     float den_4 = (MS_PI * (1.0 - e_avg_i));
     if ((den_4 > 0.0)) {
-        local_42 = (lost > 0.0);
+        local_48 = (lost > 0.0);
     } else {
-        local_42 = false;
+        local_48 = false;
     }
-    bool _e44 = local_42;
+    bool _e44 = local_48;
     if (!(_e44)) {
         return 0.0;
     }
     f_4 = (((share * lost) * max((1.0 - e_i_3), 0.0)) / den_4);
     if (crossed) {
-        local_43 = (d_9.transport == MS_TRANSPORT_RADIANCE);
+        local_49 = (d_9.transport == MS_TRANSPORT_RADIANCE);
     } else {
-        local_43 = false;
+        local_49 = false;
     }
-    bool _e61 = local_43;
+    bool _e61 = local_49;
     if (_e61) {
-        float etap_7 = ((wo_38.z > 0.0) ? d_9.eta : (1.0 / d_9.eta));
+        float etap_7 = ((wo_40.z > 0.0) ? d_9.eta : (1.0 / d_9.eta));
         float _e70 = f_4;
         f_4 = (_e70 / (etap_7 * etap_7));
     }
@@ -2867,26 +3345,26 @@ float ms_dielectric_kulla_conty_lobe(MsDielectric d_9, vec3 wo_38, vec3 wi_33, f
     return _e73;
 }
 
-float ms_dielectric_eval_kulla_conty(MsDielectric d_10, vec3 wo_39, vec3 wi_34, float e_o_10, float e_i_4, float e_avg_i_1, float k_o_1) {
-    float _e7 = ms_dielectric_eval(d_10, wo_39, wi_34);
+float ms_dielectric_eval_kulla_conty(MsDielectric d_10, vec3 wo_41, vec3 wi_36, float e_o_10, float e_i_4, float e_avg_i_1, float k_o_1) {
+    float _e7 = ms_dielectric_eval(d_10, wo_41, wi_36);
     bool _e8 = ms_dielectric_smooth(d_10);
     if (_e8) {
         return _e7;
     }
-    float _e9 = ms_dielectric_kulla_conty_lobe(d_10, wo_39, wi_34, e_o_10, e_i_4, e_avg_i_1, k_o_1);
+    float _e9 = ms_dielectric_kulla_conty_lobe(d_10, wo_41, wi_36, e_o_10, e_i_4, e_avg_i_1, k_o_1);
     return (_e7 + _e9);
 }
 
-float ms_dielectric_eval_turquin(MsDielectric d_11, vec3 wo_40, vec3 wi_35, float e_o_11) {
-    bool local_44 = false;
-    float _e4 = ms_dielectric_eval(d_11, wo_40, wi_35);
+float ms_dielectric_eval_turquin(MsDielectric d_11, vec3 wo_42, vec3 wi_37, float e_o_11) {
+    bool local_50 = false;
+    float _e4 = ms_dielectric_eval(d_11, wo_42, wi_37);
     bool _e5 = ms_dielectric_smooth(d_11);
     if (!(_e5)) {
-        local_44 = !((e_o_11 > 0.0));
+        local_50 = !((e_o_11 > 0.0));
     } else {
-        local_44 = true;
+        local_50 = true;
     }
-    bool _e13 = local_44;
+    bool _e13 = local_50;
     if (_e13) {
         return _e4;
     }
@@ -2894,29 +3372,35 @@ float ms_dielectric_eval_turquin(MsDielectric d_11, vec3 wo_40, vec3 wi_35, floa
 }
 
 uint ms_k_index(uvec3 id_13, uvec3 groups_13) {
-    uint i_11 = (id_13.x + ((id_13.y * groups_13.x) * 64u));
-    uint n_10 = (uint(_group_0_binding_0_cs.length()) / MS_K_IN);
-    if ((i_11 >= n_10)) {
-        return n_10;
+    uint i_12 = (id_13.x + ((id_13.y * groups_13.x) * 64u));
+    uint n_13 = (uint(_group_0_binding_0_cs.length()) / MS_K_IN);
+    if ((i_12 >= n_13)) {
+        return n_13;
     }
-    return i_11;
+    return i_12;
+}
+
+MsMicrofacet ms_k_microfacet(vec4 r0_, vec4 r2_) {
+    uint code = uint(r2_.w);
+    return MsMicrofacet((code & 15u), r0_.xy, (code >> 4u));
 }
 
 MsConductor ms_k_conductor(uint i_2) {
-    vec4 r0_ = _group_0_binding_0_cs[(i_2 * MS_K_IN)];
-    vec4 r2_ = _group_0_binding_0_cs[((i_2 * MS_K_IN) + 2u)];
+    vec4 r0_1 = _group_0_binding_0_cs[(i_2 * MS_K_IN)];
+    vec4 r2_1 = _group_0_binding_0_cs[((i_2 * MS_K_IN) + 2u)];
     vec4 r3_ = _group_0_binding_0_cs[((i_2 * MS_K_IN) + 3u)];
     vec4 r4_ = _group_0_binding_0_cs[((i_2 * MS_K_IN) + 4u)];
-    MsMicrofacet mf_11 = MsMicrofacet(uint(r2_.w), r0_.xy);
-    return MsConductor(mf_11, MsFresnel(uint(r3_.w), r3_.xyz, r4_.xyz), uint(r4_.w));
+    MsMicrofacet _e27 = ms_k_microfacet(r0_1, r2_1);
+    return MsConductor(_e27, MsFresnel(uint(r3_.w), r3_.xyz, r4_.xyz), uint(r4_.w));
 }
 
 MsDielectric ms_k_dielectric(uint i_3) {
-    vec4 r0_1 = _group_0_binding_0_cs[(i_3 * MS_K_IN)];
-    vec4 r2_1 = _group_0_binding_0_cs[((i_3 * MS_K_IN) + 2u)];
+    vec4 r0_2 = _group_0_binding_0_cs[(i_3 * MS_K_IN)];
+    vec4 r2_2 = _group_0_binding_0_cs[((i_3 * MS_K_IN) + 2u)];
     vec4 r3_1 = _group_0_binding_0_cs[((i_3 * MS_K_IN) + 3u)];
     vec4 r4_1 = _group_0_binding_0_cs[((i_3 * MS_K_IN) + 4u)];
-    return MsDielectric(MsMicrofacet(uint(r2_1.w), r0_1.xy), r3_1.x, uint(r4_1.w), uint(r4_1.x));
+    MsMicrofacet _e27 = ms_k_microfacet(r0_2, r2_2);
+    return MsDielectric(_e27, r3_1.x, uint(r4_1.w), uint(r4_1.x));
 }
 
 void main() {
@@ -2928,11 +3412,11 @@ void main() {
     }
     MsDielectric _e8 = ms_k_dielectric(_e2);
     vec4 _e15 = _group_0_binding_0_cs[((_e2 * MS_K_IN) + 1u)];
-    vec3 wo_41 = _e15.xyz;
+    vec3 wo_43 = _e15.xyz;
     vec4 _e23 = _group_0_binding_0_cs[((_e2 * MS_K_IN) + 2u)];
-    vec3 wi_40 = _e23.xyz;
-    float _e29 = ms_dielectric_eval(_e8, wo_41, wi_40);
-    float _e30 = ms_dielectric_pdf(_e8, wo_41, wi_40);
+    vec3 wi_42 = _e23.xyz;
+    float _e29 = ms_dielectric_eval(_e8, wo_43, wi_42);
+    float _e30 = ms_dielectric_pdf(_e8, wo_43, wi_42);
     _group_0_binding_1_cs[(_e2 * MS_K_OUT)] = vec4(_e29, _e30, 0.0, 0.0);
     _group_0_binding_1_cs[((_e2 * MS_K_OUT) + 1u)] = vec4(0.0);
     return;

@@ -21,6 +21,7 @@ struct MsBoundedCap {
 struct MsMicrofacet {
     uint ndf;
     vec2 alpha;
+    uint table;
 };
 struct MsConductor {
     MsMicrofacet mf;
@@ -94,10 +95,14 @@ const uint MS_TABLES_ROWS = 3920u;
 const float MS_FRAC_1_SQRT_PI = 0.5641896;
 const float MS_SQRT_PI = 1.7724539;
 const float MS_EULER_GAMMA = 0.5772157;
+const int MS_SHAPE_K0_ = -24;
+const uint MS_SHAPE_M = 5u;
+const uint MS_SHAPE_HEADER = 3u;
 const uint MS_NDF_GGX = 0u;
 const uint MS_NDF_BECKMANN = 1u;
 const uint MS_NDF_DOUBLE_GGX = 2u;
 const uint MS_NDF_EXPONENTIAL = 3u;
+const uint MS_NDF_STUDENT_T = 5u;
 const uint MS_MASKING_CORRELATED = 0u;
 const uint MS_MASKING_SEPARABLE = 1u;
 const uint MS_MASKING_CORRELATED_BETA = 2u;
@@ -121,25 +126,25 @@ float ms_inf() {
 }
 
 vec2 ms_cos_sin_turn(float v) {
-    float k_7 = roundEven((4.0 * v));
-    float r_3 = (v - (0.25 * k_7));
-    float x_12 = (MS_TAU * r_3);
-    float x2_ = (x_12 * x_12);
-    float s_9 = (x_12 * (1.0 + (x2_ * (-0.16666667 + (x2_ * (0.008333333 + (x2_ * (-0.0001984127 + (x2_ * 2.7557319e-6)))))))));
-    float c_15 = (1.0 + (x2_ * (-0.5 + (x2_ * (0.041666668 + (x2_ * (-0.0013888889 + (x2_ * (2.4801588e-5 + (x2_ * -2.755732e-7))))))))));
-    int q_2 = (int(k_7) & 3);
+    float k_9 = roundEven((4.0 * v));
+    float r_3 = (v - (0.25 * k_9));
+    float x_14 = (MS_TAU * r_3);
+    float x2_ = (x_14 * x_14);
+    float s_9 = (x_14 * (1.0 + (x2_ * (-0.16666667 + (x2_ * (0.008333333 + (x2_ * (-0.0001984127 + (x2_ * 2.7557319e-6)))))))));
+    float c_16 = (1.0 + (x2_ * (-0.5 + (x2_ * (0.041666668 + (x2_ * (-0.0013888889 + (x2_ * (2.4801588e-5 + (x2_ * -2.755732e-7))))))))));
+    int q_2 = (int(k_9) & 3);
     if ((q_2 == 0)) {
-        return vec2(c_15, s_9);
+        return vec2(c_16, s_9);
     } else {
         if ((q_2 == 1)) {
-            return vec2(-(s_9), c_15);
+            return vec2(-(s_9), c_16);
         } else {
             if ((q_2 == 2)) {
-                return vec2(-(c_15), -(s_9));
+                return vec2(-(c_16), -(s_9));
             }
         }
     }
-    return vec2(s_9, -(c_15));
+    return vec2(s_9, -(c_16));
 }
 
 vec3 ms_rescaled(vec3 a) {
@@ -366,31 +371,31 @@ float ms_fresnel_dielectric(float cos_in, float eta_in_1) {
         eta_2 = (1.0 / _e9);
     }
     float _e12 = cos_i_1;
-    float c_16 = min(_e12, 1.0);
+    float c_17 = min(_e12, 1.0);
     float _e15 = eta_2;
     if ((_e15 == 1.0)) {
         return 0.0;
     }
-    if ((c_16 == 0.0)) {
+    if ((c_17 == 0.0)) {
         return 1.0;
     }
     float _e24 = eta_2;
     if ((_e24 > 1e18)) {
         float _e27 = eta_2;
         float e_3 = (1.0 / _e27);
-        float cos_t_1 = sqrt((((1.0 - e_3) * (1.0 + e_3)) + ((c_16 * e_3) * (c_16 * e_3))));
-        r_parl = ((c_16 - (e_3 * cos_t_1)) / (c_16 + (e_3 * cos_t_1)));
-        r_perp = (((e_3 * c_16) - cos_t_1) / ((e_3 * c_16) + cos_t_1));
+        float cos_t_1 = sqrt((((1.0 - e_3) * (1.0 + e_3)) + ((c_17 * e_3) * (c_17 * e_3))));
+        r_parl = ((c_17 - (e_3 * cos_t_1)) / (c_17 + (e_3 * cos_t_1)));
+        r_perp = (((e_3 * c_17) - cos_t_1) / ((e_3 * c_17) + cos_t_1));
     } else {
         float _e51 = eta_2;
         if ((_e51 > 1.0)) {
             float _e54 = eta_2;
             float _e57 = eta_2;
-            ect2_ = (((_e54 - 1.0) * (_e57 + 1.0)) + (c_16 * c_16));
+            ect2_ = (((_e54 - 1.0) * (_e57 + 1.0)) + (c_17 * c_17));
         } else {
             float _e63 = eta_2;
             float _e64 = eta_2;
-            ect2_ = ((_e63 * _e64) - ((1.0 - c_16) * (1.0 + c_16)));
+            ect2_ = ((_e63 * _e64) - ((1.0 - c_17) * (1.0 + c_17)));
         }
         float _e72 = ect2_;
         if ((_e72 <= 0.0)) {
@@ -400,9 +405,9 @@ float ms_fresnel_dielectric(float cos_in, float eta_in_1) {
         float ect = sqrt(_e76);
         float _e78 = eta_2;
         float _e79 = eta_2;
-        float e2c = ((_e78 * _e79) * c_16);
+        float e2c = ((_e78 * _e79) * c_17);
         r_parl = ((e2c - ect) / (e2c + ect));
-        r_perp = ((c_16 - ect) / (c_16 + ect));
+        r_perp = ((c_17 - ect) / (c_17 + ect));
     }
     float _e88 = r_parl;
     float _e89 = r_parl;
@@ -487,11 +492,11 @@ float ms_fresnel_conductor(float cos_in_1, float eta_3, float k_1) {
     if (_e25) {
         return 1.0;
     }
-    vec2 n_7 = vec2(eta_3, k_1);
+    vec2 n_10 = vec2(eta_3, k_1);
     float sin2_i = ((1.0 - cos_i_5) * (1.0 + cos_i_5));
     vec2 ci = vec2(cos_i_5, 0.0);
     if ((max(abs(eta_3), abs(k_1)) > 1e18)) {
-        vec2 _e40 = ms_crecip(n_7);
+        vec2 _e40 = ms_crecip(n_10);
         vec2 _e41 = ms_cmul(_e40, _e40);
         vec2 sin2_t_1 = (_e41 * sin2_i);
         vec2 _e49 = ms_csqrt(vec2((1.0 - sin2_t_1.x), -(sin2_t_1.y)));
@@ -501,8 +506,8 @@ float ms_fresnel_conductor(float cos_in_1, float eta_3, float k_1) {
         float _e57 = ms_cnorm_ratio((ci_m - _e49), (ci_m + _e49));
         return min((0.5 * (_e54 + _e57)), 1.0);
     }
-    vec2 _e63 = ms_cmul(n_7, n_7);
-    float _e65 = ms_cnorm(n_7);
+    vec2 _e63 = ms_cmul(n_10, n_10);
+    float _e65 = ms_cnorm(n_10);
     if ((_e65 >= 1.0)) {
         vec2 _e74 = ms_cmul(vec2((eta_3 - 1.0), k_1), vec2((eta_3 + 1.0), k_1));
         w_2 = (_e74 + vec2((cos_i_5 * cos_i_5), 0.0));
@@ -513,8 +518,8 @@ float ms_fresnel_conductor(float cos_in_1, float eta_3, float k_1) {
     vec2 _e83 = ms_crecip(_e63);
     vec2 _e84 = ms_cmul(_e82, _e83);
     vec2 _e85 = ms_csqrt(_e84);
-    vec2 n_ci = (n_7 * cos_i_5);
-    vec2 _e87 = ms_cmul(n_7, _e85);
+    vec2 n_ci = (n_10 * cos_i_5);
+    vec2 _e87 = ms_cmul(n_10, _e85);
     float _e90 = ms_cnorm_ratio((n_ci - _e85), (n_ci + _e85));
     float _e93 = ms_cnorm_ratio((ci - _e87), (ci + _e87));
     return min((0.5 * (_e90 + _e93)), 1.0);
@@ -569,42 +574,42 @@ vec3 ms_fresnel_eval(MsFresnel fr, float cos_i_4) {
 }
 
 float ms_ggx_d(vec3 wm_2, vec2 alpha) {
-    float z_3 = wm_2.z;
-    if (!((z_3 > 0.0))) {
+    float z_5 = wm_2.z;
+    if (!((z_5 > 0.0))) {
         return 0.0;
     }
-    float x_13 = (wm_2.x / alpha.x);
+    float x_15 = (wm_2.x / alpha.x);
     float y_3 = (wm_2.y / alpha.y);
-    float t_6 = (((x_13 * x_13) + (y_3 * y_3)) + (z_3 * z_3));
+    float t_6 = (((x_15 * x_15) + (y_3 * y_3)) + (z_5 * z_5));
     return (1.0 / ((((MS_PI * alpha.x) * alpha.y) * t_6) * t_6));
 }
 
 float ms_ggx_lambda(vec3 w_3, vec2 alpha_1) {
-    float x_14 = (alpha_1.x * w_3.x);
+    float x_16 = (alpha_1.x * w_3.x);
     float y_4 = (alpha_1.y * w_3.y);
-    float z_4 = abs(w_3.z);
-    float t_7 = ((x_14 * x_14) + (y_4 * y_4));
-    float z2_ = (z_4 * z_4);
-    float den = (2.0 * (z2_ + (z_4 * sqrt((z2_ + t_7)))));
+    float z_6 = abs(w_3.z);
+    float t_7 = ((x_16 * x_16) + (y_4 * y_4));
+    float z2_ = (z_6 * z_6);
+    float den = (2.0 * (z2_ + (z_6 * sqrt((z2_ + t_7)))));
     if (!((den > 0.0))) {
-        if ((z_4 == 0.0)) {
+        if ((z_6 == 0.0)) {
             float _e25 = ms_inf();
             return _e25;
         }
-        return ((t_7 / (z_4 + sqrt(((z_4 * z_4) + t_7)))) / (z_4 + z_4));
+        return ((t_7 / (z_6 + sqrt(((z_6 * z_6) + t_7)))) / (z_6 + z_6));
     }
     return (t_7 / den);
 }
 
 float ms_ggx_g1_(vec3 w_4, vec2 alpha_2) {
-    float x_15 = (alpha_2.x * w_4.x);
+    float x_17 = (alpha_2.x * w_4.x);
     float y_5 = (alpha_2.y * w_4.y);
-    float z_5 = abs(w_4.z);
-    float den_1 = (z_5 + sqrt(((z_5 * z_5) + ((x_15 * x_15) + (y_5 * y_5)))));
+    float z_7 = abs(w_4.z);
+    float den_1 = (z_7 + sqrt(((z_7 * z_7) + ((x_17 * x_17) + (y_5 * y_5)))));
     if (!((den_1 > 0.0))) {
         return 0.0;
     }
-    return ((z_5 + z_5) / den_1);
+    return ((z_7 + z_7) / den_1);
 }
 
 float ms_ggx_g2_(vec3 wo_6, vec3 wi_6, vec2 alpha_3) {
@@ -623,7 +628,7 @@ float ms_ggx_pdf(vec3 w_5, vec3 wm_3, vec2 alpha_5) {
     float c = 0.0;
     bool local_6 = false;
     bool local_7 = false;
-    float z_6 = abs(w_5.z);
+    float z_8 = abs(w_5.z);
     float _e5 = ms_dot(w_5, wm_3);
     c = _e5;
     if ((w_5.z < 0.0)) {
@@ -632,7 +637,7 @@ float ms_ggx_pdf(vec3 w_5, vec3 wm_3, vec2 alpha_5) {
     }
     float _e12 = c;
     if ((_e12 > 0.0)) {
-        local_6 = (z_6 > 0.0);
+        local_6 = (z_8 > 0.0);
     } else {
         local_6 = false;
     }
@@ -648,26 +653,26 @@ float ms_ggx_pdf(vec3 w_5, vec3 wm_3, vec2 alpha_5) {
     }
     float sx = (alpha_5.x * w_5.x);
     float sy = (alpha_5.y * w_5.y);
-    float len_3 = sqrt((((sx * sx) + (sy * sy)) + (z_6 * z_6)));
+    float len_3 = sqrt((((sx * sx) + (sy * sy)) + (z_8 * z_8)));
     float mx = (wm_3.x / alpha_5.x);
     float my = (wm_3.y / alpha_5.y);
     float t_8 = (((mx * mx) + (my * my)) + (wm_3.z * wm_3.z));
     float _e55 = c;
     float _e56 = c;
-    return ((_e55 + _e56) / (((((MS_PI * alpha_5.x) * alpha_5.y) * t_8) * t_8) * (z_6 + len_3)));
+    return ((_e55 + _e56) / (((((MS_PI * alpha_5.x) * alpha_5.y) * t_8) * t_8) * (z_8 + len_3)));
 }
 
 vec3 ms_ggx_cap_normal_stretched(vec3 w_6, vec3 stretch, vec2 u, float len) {
     float inv = (1.0 / len);
-    float x_16 = ((stretch.x * w_6.x) * inv);
+    float x_18 = ((stretch.x * w_6.x) * inv);
     float y_6 = ((stretch.y * w_6.y) * inv);
-    float z_7 = ((stretch.z * w_6.z) * inv);
+    float z_9 = ((stretch.z * w_6.z) * inv);
     vec2 _e19 = ms_cos_sin_turn(u.x);
-    float above = ((1.0 - u.y) * (1.0 + z_7));
-    float sin_ = sqrt(max((u.y * ((above * (1.0 + z_7)) + ((x_16 * x_16) + (y_6 * y_6)))), 0.0));
-    vec3 h_1 = vec3((stretch.x * ((sin_ * _e19.x) + x_16)), (stretch.y * ((sin_ * _e19.y) + y_6)), (stretch.z * above));
-    float n_8 = (1.0 / sqrt((((h_1.x * h_1.x) + (h_1.y * h_1.y)) + (h_1.z * h_1.z))));
-    return (h_1 * n_8);
+    float above = ((1.0 - u.y) * (1.0 + z_9));
+    float sin_ = sqrt(max((u.y * ((above * (1.0 + z_9)) + ((x_18 * x_18) + (y_6 * y_6)))), 0.0));
+    vec3 h_2 = vec3((stretch.x * ((sin_ * _e19.x) + x_18)), (stretch.y * ((sin_ * _e19.y) + y_6)), (stretch.z * above));
+    float n_11 = (1.0 / sqrt((((h_2.x * h_2.x) + (h_2.y * h_2.y)) + (h_2.z * h_2.z))));
+    return (h_2 * n_11);
 }
 
 vec3 ms_ggx_cap_normal(vec3 w_7, vec2 alpha_6, vec2 u_1, float len_1) {
@@ -770,11 +775,11 @@ MsBoundedCap ms_ggx_bounded_cap(vec3 w_10, vec2 alpha_11) {
     float _e44 = v_2.z;
     float _e47 = v_2.z;
     float den_2 = (s2_ + ((a2_ * _e44) * _e47));
-    float k_8 = (((1.0 - a2_) * s2_) / den_2);
+    float k_10 = (((1.0 - a2_) * s2_) / den_2);
     float _e55 = v_2.z;
     float _e57 = v_2.z;
     float one_minus_k = ((a2_ * (s2_ + (_e55 * _e57))) / den_2);
-    return MsBoundedCap(_e18, (k_8 * _e18.z), (one_minus_k * _e18.z));
+    return MsBoundedCap(_e18, (k_10 * _e18.z), (one_minus_k * _e18.z));
 }
 
 float ms_ggx_pdf_bounded(vec3 w_in_1, vec3 wm_5, vec2 alpha_12) {
@@ -815,12 +820,12 @@ float ms_ggx_pdf_bounded_reflection(vec3 wo_8, vec3 wi_8, vec2 alpha_14) {
         return 0.0;
     }
     float _e7 = ms_dot(wo_8, _e3);
-    float c_17 = abs(_e7);
-    if (!((c_17 > 0.0))) {
+    float c_18 = abs(_e7);
+    if (!((c_18 > 0.0))) {
         return 0.0;
     }
     float _e13 = ms_ggx_pdf_bounded(wo_8, _e3, alpha_14);
-    return (_e13 / (4.0 * c_17));
+    return (_e13 / (4.0 * c_18));
 }
 
 uvec2 ms_u64_add(uvec2 a_9, uvec2 b_4) {
@@ -934,12 +939,12 @@ float ms_bk_ln_1m(float xi) {
 
 float ms_beckmann_d(vec3 wm_6, vec2 alpha_15) {
     bool local_9 = false;
-    float z_8 = wm_6.z;
+    float z_10 = wm_6.z;
     float r_9 = (1.0 / (alpha_15.x * alpha_15.y));
-    float x_17 = ((wm_6.x * alpha_15.y) * r_9);
+    float x_19 = ((wm_6.x * alpha_15.y) * r_9);
     float y_7 = ((wm_6.y * alpha_15.x) * r_9);
-    float z2_1 = (z_8 * z_8);
-    if ((z_8 > 0.0)) {
+    float z2_1 = (z_10 * z_10);
+    if ((z_10 > 0.0)) {
         local_9 = (z2_1 > 0.0);
     } else {
         local_9 = false;
@@ -948,11 +953,11 @@ float ms_beckmann_d(vec3 wm_6, vec2 alpha_15) {
     if (!(_e24)) {
         return 0.0;
     }
-    float e_5 = (((x_17 * x_17) + (y_7 * y_7)) / z2_1);
+    float e_5 = (((x_19 * x_19) + (y_7 * y_7)) / z2_1);
     if ((e_5 <= 80.0)) {
         return ((exp(-(e_5)) * r_9) / ((MS_PI * z2_1) * z2_1));
     }
-    return exp((((log(r_9) - 1.14473) - (4.0 * log(z_8))) - e_5));
+    return exp((((log(r_9) - 1.14473) - (4.0 * log(z_10))) - e_5));
 }
 
 float ms_beckmann_pdf_dcos(vec3 wm_8, vec2 alpha_21) {
@@ -996,12 +1001,12 @@ float ms_fam_cubic(vec4 c_2, float s_3) {
 }
 
 float ms_dg_lambda_ends(float u_12, float a_15) {
-    float x_18 = ((((0.5 * a_15) * a_15) * ((1.0 - u_12) * (1.0 + u_12))) / (u_12 * u_12));
-    if ((x_18 < 9.313226e-10)) {
-        if ((x_18 <= 0.0)) {
+    float x_20 = ((((0.5 * a_15) * a_15) * ((1.0 - u_12) * (1.0 + u_12))) / (u_12 * u_12));
+    if ((x_20 < 9.313226e-10)) {
+        if ((x_20 <= 0.0)) {
             return 0.0;
         }
-        return ((0.5 * x_18) * (0.42278433 - log((0.5 * x_18))));
+        return ((0.5 * x_20) * (0.42278433 - log((0.5 * x_20))));
     }
     float sx_1 = ((a_15 * sqrt(((0.5 * (1.0 - u_12)) * (1.0 + u_12)))) / u_12);
     float r_11 = (1.0 / (sx_1 * sx_1));
@@ -1010,25 +1015,25 @@ float ms_dg_lambda_ends(float u_12, float a_15) {
 
 float ms_exponential_d(vec3 wm_12, vec2 alpha_39) {
     bool local_22 = false;
-    float z_9 = wm_12.z;
+    float z_11 = wm_12.z;
     float r_12 = (1.0 / (alpha_39.x * alpha_39.y));
-    float x_19 = ((wm_12.x * alpha_39.y) * r_12);
+    float x_21 = ((wm_12.x * alpha_39.y) * r_12);
     float y_8 = ((wm_12.y * alpha_39.x) * r_12);
-    float z2_2 = (z_9 * z_9);
-    if ((z_9 > 0.0)) {
+    float z2_2 = (z_11 * z_11);
+    if ((z_11 > 0.0)) {
         local_22 = (z2_2 > 0.0);
     } else {
         local_22 = false;
     }
     bool _e24 = local_22;
     if (!(_e24)) {
-        return ((z_9 != z_9) ? z_9 : 0.0);
+        return ((z_11 != z_11) ? z_11 : 0.0);
     }
-    float e_6 = ((2.0 * sqrt(((x_19 * x_19) + (y_8 * y_8)))) / z_9);
+    float e_6 = ((2.0 * sqrt(((x_21 * x_21) + (y_8 * y_8)))) / z_11);
     if ((e_6 <= 80.0)) {
         return (((2.0 * exp(-(e_6))) * r_12) / ((MS_PI * z2_2) * z2_2));
     }
-    return exp((((log((2.0 * r_12)) - 1.14473) - (4.0 * log(z_9))) - e_6));
+    return exp((((log((2.0 * r_12)) - 1.14473) - (4.0 * log(z_11))) - e_6));
 }
 
 float ms_exponential_pdf_dcos(vec3 wm_14, vec2 alpha_41) {
@@ -1062,15 +1067,15 @@ vec3 ms_exponential_sample_wm(vec3 w_in_4, vec2 alpha_43, vec2 u_17) {
     float _e17 = w_27.y;
     float sy_1 = (alpha_43.y * _e17);
     float e_7 = w_27.z;
-    float h_2 = sqrt(((sx_2 * sx_2) + (sy_1 * sy_1)));
-    if ((h_2 > 0.0)) {
-        cp_1 = (sx_2 / h_2);
-        sp_1 = (sy_1 / h_2);
+    float h_3 = sqrt(((sx_2 * sx_2) + (sy_1 * sy_1)));
+    if ((h_3 > 0.0)) {
+        cp_1 = (sx_2 / h_3);
+        sp_1 = (sy_1 / h_3);
     }
-    if (!((abs((e_7 + h_2)) <= 3.4028235e38))) {
-        return vec3((e_7 + h_2));
+    if (!((abs((e_7 + h_3)) <= 3.4028235e38))) {
+        return vec3((e_7 + h_3));
     }
-    float g = (h_2 * MS_FRAC_1_PI);
+    float g = (h_3 * MS_FRAC_1_PI);
     float total = (e_7 + g);
     float inv_p = min((total / e_7), 3.4028235e38);
     float inv_g = min((1.0 / g), 3.4028235e38);
@@ -1113,7 +1118,7 @@ vec3 ms_exponential_sample_wm(vec3 w_in_4, vec2 alpha_43, vec2 u_17) {
                 if (!((abs((turn - 0.5)) >= 0.25))) {
                     float _e100 = ms_stream_next(state_9);
                     float _e102 = x_9;
-                    local_24 = ((_e100 * e_7) <= (e_7 + (h_2 * _e102)));
+                    local_24 = ((_e100 * e_7) <= (e_7 + (h_3 * _e102)));
                 } else {
                     local_24 = true;
                 }
@@ -1149,160 +1154,180 @@ vec3 ms_exponential_sample_wm(vec3 w_in_4, vec2 alpha_43, vec2 u_17) {
     return _e158;
 }
 
-bool ms_effectively_smooth(MsMicrofacet mf_8) {
-    return (max(mf_8.alpha.x, mf_8.alpha.y) < 0.001);
+float ms_stream_next_positive(inout uvec2 state_11) {
+    float _e1 = ms_stream_next(state_11);
+    return max(_e1, 2.9802322e-8);
 }
 
-bool ms_on_horizon(float z_2) {
-    return !((abs(z_2) >= 1e-18));
-}
-
-bool ms_usable(float v_6) {
-    bool local_25 = false;
-    if ((v_6 >= 1.1754944e-20)) {
-        local_25 = (v_6 <= 3.4028235e38);
-    } else {
-        local_25 = false;
+float ms_ln_1p(float t_1) {
+    float v_11 = (1.0 + t_1);
+    if ((v_11 == 1.0)) {
+        return t_1;
     }
-    bool _e8 = local_25;
+    return (log(v_11) * (t_1 / (v_11 - 1.0)));
+}
+
+float ms_expm1_(float x_11) {
+    if ((abs(x_11) < 0.5)) {
+        return (x_11 * (1.0 + (x_11 * (0.5 + (x_11 * (0.16666667 + (x_11 * (0.041666668 + (x_11 * (0.008333334 + (x_11 * (0.0013888889 + (x_11 * (0.0001984127 + (x_11 * (2.4801588e-5 + (x_11 * 2.7557319e-6)))))))))))))))));
+    }
+    return (exp(x_11) - 1.0);
+}
+
+bool ms_effectively_smooth(MsMicrofacet mf_9) {
+    return (max(mf_9.alpha.x, mf_9.alpha.y) < 0.001);
+}
+
+bool ms_on_horizon(float z_4) {
+    return !((abs(z_4) >= 1e-18));
+}
+
+bool ms_usable(float v_9) {
+    bool local_31 = false;
+    if ((v_9 >= 1.1754944e-20)) {
+        local_31 = (v_9 <= 3.4028235e38);
+    } else {
+        local_31 = false;
+    }
+    bool _e8 = local_31;
     return _e8;
 }
 
-vec3 ms_weighted(vec3 fr_1, float k_5) {
-    return mix((fr_1 * k_5), vec3(0.0), equal(fr_1, vec3(0.0)));
+vec3 ms_weighted(vec3 fr_1, float k_7) {
+    return mix((fr_1 * k_7), vec3(0.0), equal(fr_1, vec3(0.0)));
 }
 
-vec3 ms_conductor_lobe_normal(MsConductor c_5, vec3 wo_19, vec3 wi_19) {
-    bool local_26 = false;
-    bool local_27 = false;
-    bool local_28 = false;
-    bool _e3 = ms_same_hemisphere(wo_19, wi_19);
+vec3 ms_conductor_lobe_normal(MsConductor c_6, vec3 wo_21, vec3 wi_21) {
+    bool local_32 = false;
+    bool local_33 = false;
+    bool local_34 = false;
+    bool _e3 = ms_same_hemisphere(wo_21, wi_21);
     if (!(!(_e3))) {
-        bool _e9 = ms_on_horizon(wo_19.z);
-        local_26 = _e9;
+        bool _e9 = ms_on_horizon(wo_21.z);
+        local_32 = _e9;
     } else {
-        local_26 = true;
+        local_32 = true;
     }
-    bool _e11 = local_26;
+    bool _e11 = local_32;
     if (!(_e11)) {
-        bool _e16 = ms_on_horizon(wi_19.z);
-        local_27 = _e16;
+        bool _e16 = ms_on_horizon(wi_21.z);
+        local_33 = _e16;
     } else {
-        local_27 = true;
+        local_33 = true;
     }
-    bool _e18 = local_27;
+    bool _e18 = local_33;
     if (!(_e18)) {
-        bool _e23 = ms_effectively_smooth(c_5.mf);
-        local_28 = _e23;
+        bool _e23 = ms_effectively_smooth(c_6.mf);
+        local_34 = _e23;
     } else {
-        local_28 = true;
+        local_34 = true;
     }
-    bool _e25 = local_28;
+    bool _e25 = local_34;
     if (_e25) {
         return vec3(0.0);
     }
-    vec3 _e28 = ms_half_vector_reflection(wo_19, wi_19);
+    vec3 _e28 = ms_half_vector_reflection(wo_21, wi_21);
     return _e28;
 }
 
 bool ms_dielectric_smooth(MsDielectric d_1) {
-    bool local_30 = false;
+    bool local_36 = false;
     if (!((d_1.eta == 1.0))) {
         bool _e8 = ms_effectively_smooth(d_1.mf);
-        local_30 = _e8;
+        local_36 = _e8;
     } else {
-        local_30 = true;
+        local_36 = true;
     }
-    bool _e10 = local_30;
+    bool _e10 = local_36;
     return _e10;
 }
 
-vec4 ms_dielectric_half(MsDielectric d_3, vec3 wo_25, vec3 wi_24) {
-    bool local_31 = false;
-    vec3 wm_17 = vec3(0.0);
+vec4 ms_dielectric_half(MsDielectric d_3, vec3 wo_27, vec3 wi_26) {
+    bool local_37 = false;
+    vec3 wm_21 = vec3(0.0);
     float etap_4 = 1.0;
-    bool local_32 = false;
+    bool local_38 = false;
     vec4 none = vec4(0.0);
-    float co = wo_25.z;
-    float ci_1 = wi_24.z;
+    float co = wo_27.z;
+    float ci_1 = wi_26.z;
     bool _e7 = ms_on_horizon(co);
     if (!(_e7)) {
         bool _e11 = ms_on_horizon(ci_1);
-        local_31 = _e11;
+        local_37 = _e11;
     } else {
-        local_31 = true;
+        local_37 = true;
     }
-    bool _e13 = local_31;
+    bool _e13 = local_37;
     if (_e13) {
         return none;
     }
     if (((co * ci_1) > 0.0)) {
-        vec3 _e20 = ms_half_vector_reflection(wo_25, wi_24);
-        wm_17 = _e20;
+        vec3 _e20 = ms_half_vector_reflection(wo_27, wi_26);
+        wm_21 = _e20;
     } else {
-        vec4 _e22 = ms_half_vector_refraction(wo_25, wi_24, d_3.eta);
-        wm_17 = _e22.xyz;
+        vec4 _e22 = ms_half_vector_refraction(wo_27, wi_26, d_3.eta);
+        wm_21 = _e22.xyz;
         etap_4 = _e22.w;
     }
-    vec3 _e25 = wm_17;
+    vec3 _e25 = wm_21;
     bool _e26 = ms_half_vector_ok(_e25);
     if (!(_e26)) {
         return none;
     }
-    vec3 _e28 = wm_17;
-    float _e29 = ms_dot(_e28, wi_24);
+    vec3 _e28 = wm_21;
+    float _e29 = ms_dot(_e28, wi_26);
     if (!(((_e29 * ci_1) < 0.0))) {
-        vec3 _e36 = wm_17;
-        float _e37 = ms_dot(_e36, wo_25);
-        local_32 = ((_e37 * co) < 0.0);
+        vec3 _e36 = wm_21;
+        float _e37 = ms_dot(_e36, wo_27);
+        local_38 = ((_e37 * co) < 0.0);
     } else {
-        local_32 = true;
+        local_38 = true;
     }
-    bool _e42 = local_32;
+    bool _e42 = local_38;
     if (_e42) {
         return none;
     }
-    vec3 _e43 = wm_17;
+    vec3 _e43 = wm_21;
     float _e44 = etap_4;
     return vec4(_e43, _e44);
 }
 
-MsBsdfSample ms_dielectric_sample_smooth(MsDielectric d_7, vec3 wo_29, float uc_1) {
+MsBsdfSample ms_dielectric_sample_smooth(MsDielectric d_7, vec3 wo_31, float uc_1) {
     float f_3 = 0.0;
-    float _e5 = ms_fresnel_dielectric(wo_29.z, d_7.eta);
+    float _e5 = ms_fresnel_dielectric(wo_31.z, d_7.eta);
     if ((uc_1 < _e5)) {
-        vec3 wi_36 = vec3(-(wo_29.x), -(wo_29.y), wo_29.z);
-        return MsBsdfSample(wi_36, _e5, vec3((_e5 / abs(wi_36.z))), 3u, 1.0);
+        vec3 wi_38 = vec3(-(wo_31.x), -(wo_31.y), wo_31.z);
+        return MsBsdfSample(wi_38, _e5, vec3((_e5 / abs(wi_38.z))), 3u, 1.0);
     }
     MsBsdfSample none_1 = MsBsdfSample(vec3(0.0), 0.0, vec3(0.0), 0u, 1.0);
-    vec4 _e33 = ms_refract(wo_29, vec3(0.0, 0.0, 1.0), d_7.eta);
+    vec4 _e33 = ms_refract(wo_31, vec3(0.0, 0.0, 1.0), d_7.eta);
     if ((_e33.w == 0.0)) {
         return none_1;
     }
-    vec3 wi_37 = _e33.xyz;
-    bool _e39 = ms_on_horizon(wi_37.z);
+    vec3 wi_39 = _e33.xyz;
+    bool _e39 = ms_on_horizon(wi_39.z);
     if (_e39) {
         return none_1;
     }
     float t_10 = (1.0 - _e5);
-    f_3 = (t_10 / abs(wi_37.z));
+    f_3 = (t_10 / abs(wi_39.z));
     if ((d_7.transport == MS_TRANSPORT_RADIANCE)) {
         float _e49 = f_3;
         f_3 = (_e49 / (_e33.w * _e33.w));
     }
     float _e54 = f_3;
-    return MsBsdfSample(wi_37, t_10, vec3(_e54), 7u, _e33.w);
+    return MsBsdfSample(wi_39, t_10, vec3(_e54), 7u, _e33.w);
 }
 
-MsLutTap ms_lut_tap(float x_10, uint n_5) {
-    float t_11 = clamp(((x_10 * float(n_5)) - 0.5), 0.0, float((n_5 - 1u)));
-    uint i_4 = min(uint(floor(t_11)), (n_5 - 2u));
+MsLutTap ms_lut_tap(float x_12, uint n_8) {
+    float t_11 = clamp(((x_12 * float(n_8)) - 0.5), 0.0, float((n_8 - 1u)));
+    uint i_4 = min(uint(floor(t_11)), (n_8 - 2u));
     return MsLutTap(i_4, (t_11 - float(i_4)));
 }
 
-MsLutTap ms_lut_tap_edges(float x_11, uint n_6) {
-    float t_12 = clamp((x_11 * float((n_6 - 1u))), 0.0, float((n_6 - 1u)));
-    uint i_5 = min(uint(floor(t_12)), (n_6 - 2u));
+MsLutTap ms_lut_tap_edges(float x_13, uint n_9) {
+    float t_12 = clamp((x_13 * float((n_9 - 1u))), 0.0, float((n_9 - 1u)));
+    uint i_5 = min(uint(floor(t_12)), (n_9 - 2u));
     return MsLutTap(i_5, (t_12 - float(i_5)));
 }
 
@@ -1320,8 +1345,8 @@ float ms_lut_bilerp(MsLutTap r, MsLutTap m_4, float v00_, float v10_, float v01_
     return (((((gr * gm) * v00_) + ((r.f * gm) * v10_)) + ((gr * m_4.f) * v01_)) + ((r.f * m_4.f) * v11_));
 }
 
-float ms_lut_roughness_coord(vec2 alpha_45, float alpha_max) {
-    return sqrt((sqrt((alpha_45.x * alpha_45.y)) / alpha_max));
+float ms_lut_roughness_coord(vec2 alpha_57, float alpha_max) {
+    return sqrt((sqrt((alpha_57.x * alpha_57.y)) / alpha_max));
 }
 
 vec3 ms_kulla_conty_f_ms(vec3 f_avg, float e_avg) {
@@ -1344,34 +1369,34 @@ float ms_kulla_conty_p_ms(float e_o_4) {
     return clamp((1.0 - e_o_4), 0.0, 1.0);
 }
 
-float ms_cosine_pdf_same_side(vec3 wo_33, vec3 wi_30) {
-    if (!(((wo_33.z * wi_30.z) > 0.0))) {
+float ms_cosine_pdf_same_side(vec3 wo_35, vec3 wi_32) {
+    if (!(((wo_35.z * wi_32.z) > 0.0))) {
         return 0.0;
     }
-    return (abs(wi_30.z) / MS_PI);
+    return (abs(wi_32.z) / MS_PI);
 }
 
-vec3 ms_cosine_hemisphere(vec2 u_23) {
-    float r_15 = sqrt(u_23.x);
-    vec2 _e4 = ms_cos_sin_turn(u_23.y);
-    return vec3((r_15 * _e4.x), (r_15 * _e4.y), sqrt(max((1.0 - u_23.x), 0.0)));
+vec3 ms_cosine_hemisphere(vec2 u_26) {
+    float r_15 = sqrt(u_26.x);
+    vec2 _e4 = ms_cos_sin_turn(u_26.y);
+    return vec3((r_15 * _e4.x), (r_15 * _e4.y), sqrt(max((1.0 - u_26.x), 0.0)));
 }
 
-MsBsdfSample ms_kulla_conty_sample_f(MsBsdfSample s_6, vec3 wo_36, float e_o_7, float e_i_2, float e_avg_3, vec3 f_ms_1) {
-    bool local_38 = false;
-    bool local_39 = false;
+MsBsdfSample ms_kulla_conty_sample_f(MsBsdfSample s_6, vec3 wo_38, float e_o_7, float e_i_2, float e_avg_3, vec3 f_ms_1) {
+    bool local_44 = false;
+    bool local_45 = false;
     if (!(((s_6.flags & MS_SAMPLE_VALID) == 0u))) {
-        local_38 = ((s_6.flags & MS_SAMPLE_SPECULAR) != 0u);
+        local_44 = ((s_6.flags & MS_SAMPLE_SPECULAR) != 0u);
     } else {
-        local_38 = true;
+        local_44 = true;
     }
-    bool _e20 = local_38;
+    bool _e20 = local_44;
     if (!(_e20)) {
-        local_39 = !(((wo_36.z * s_6.wi.z) > 0.0));
+        local_45 = !(((wo_38.z * s_6.wi.z) > 0.0));
     } else {
-        local_39 = true;
+        local_45 = true;
     }
-    bool _e32 = local_39;
+    bool _e32 = local_45;
     if (_e32) {
         return s_6;
     }
@@ -1392,7 +1417,7 @@ float ms_lut_trilerp(MsLutTap e, MsLutTap r_1, MsLutTap m_5, vec4 lo_2, vec4 hi_
     uint b_6 = 0u;
     vec2 we = vec2((1.0 - e.f), e.f);
     vec2 wr = vec2((1.0 - r_1.f), r_1.f);
-    vec2 wm_19 = vec2((1.0 - m_5.f), m_5.f);
+    vec2 wm_23 = vec2((1.0 - m_5.f), m_5.f);
     bool loop_init_1 = true;
     while(true) {
         if (!loop_init_1) {
@@ -1409,19 +1434,19 @@ float ms_lut_trilerp(MsLutTap e, MsLutTap r_1, MsLutTap m_5, vec4 lo_2, vec4 hi_
             uint _e27 = b_6;
             uint _e31 = b_6;
             uint _e35 = b_6;
-            float v_8 = ((_e35 >= 4u) ? hi_2[(_e31 & 3u)] : lo_2[(_e27 & 3u)]);
+            float v_12 = ((_e35 >= 4u) ? hi_2[(_e31 & 3u)] : lo_2[(_e27 & 3u)]);
             float _e39 = s_7;
             uint _e40 = b_6;
             uint _e44 = b_6;
             uint _e51 = b_6;
-            s_7 = (_e39 + (((we[(_e40 & 1u)] * wr[((_e44 >> 1u) & 1u)]) * wm_19[(_e51 >> 2u)]) * v_8));
+            s_7 = (_e39 + (((we[(_e40 & 1u)] * wr[((_e44 >> 1u) & 1u)]) * wm_23[(_e51 >> 2u)]) * v_12));
         }
     }
     float _e61 = s_7;
     return _e61;
 }
 
-float ms_lut_bilerp_eta(MsLutTap e_1, MsLutTap r_2, vec4 v_7) {
+float ms_lut_bilerp_eta(MsLutTap e_1, MsLutTap r_2, vec4 v_10) {
     float s_8 = 0.0;
     uint b_7 = 0u;
     vec2 we_1 = vec2((1.0 - e_1.f), e_1.f);
@@ -1443,7 +1468,7 @@ float ms_lut_bilerp_eta(MsLutTap e_1, MsLutTap r_2, vec4 v_7) {
             uint _e21 = b_7;
             uint _e25 = b_7;
             uint _e30 = b_7;
-            s_8 = (_e20 + ((we_1[(_e21 & 1u)] * wr_1[(_e25 >> 1u)]) * v_7[_e30]));
+            s_8 = (_e20 + ((we_1[(_e21 & 1u)] * wr_1[(_e25 >> 1u)]) * v_10[_e30]));
         }
     }
     float _e37 = s_8;
@@ -1451,56 +1476,56 @@ float ms_lut_bilerp_eta(MsLutTap e_1, MsLutTap r_2, vec4 v_7) {
 }
 
 vec2 ms_dielectric_kulla_conty_k(float eta_5, float f_avg_1, vec2 e_avg_4) {
-    vec2 k_6 = vec2(0.0);
+    vec2 k_8 = vec2(0.0);
     float k_out = (1.0 - f_avg_1);
-    k_6 = vec2(k_out, ((k_out * (1.0 - e_avg_4.x)) / ((eta_5 * eta_5) * (1.0 - e_avg_4.y))));
-    float _e18 = k_6.y;
+    k_8 = vec2(k_out, ((k_out * (1.0 - e_avg_4.x)) / ((eta_5 * eta_5) * (1.0 - e_avg_4.y))));
+    float _e18 = k_8.y;
     if (!((_e18 <= 1.0))) {
-        vec2 _e22 = k_6;
-        float _e24 = k_6.y;
-        float _e28 = k_6.y;
-        k_6 = (_e22 * ((_e28 > 1.0) ? (1.0 / _e24) : 0.0));
+        vec2 _e22 = k_8;
+        float _e24 = k_8.y;
+        float _e28 = k_8.y;
+        k_8 = (_e22 * ((_e28 > 1.0) ? (1.0 / _e24) : 0.0));
     }
-    vec2 _e34 = k_6;
+    vec2 _e34 = k_8;
     return _e34;
 }
 
-float ms_dielectric_kulla_conty_lobe(MsDielectric d_9, vec3 wo_38, vec3 wi_33, float e_o_9, float e_i_3, float e_avg_i, float k_o) {
-    bool local_41 = false;
-    bool local_42 = false;
+float ms_dielectric_kulla_conty_lobe(MsDielectric d_9, vec3 wo_40, vec3 wi_35, float e_o_9, float e_i_3, float e_avg_i, float k_o) {
+    bool local_47 = false;
+    bool local_48 = false;
     float f_4 = 0.0;
-    bool local_43 = false;
-    if ((abs(wo_38.z) > 0.0)) {
-        local_41 = (abs(wi_33.z) > 0.0);
+    bool local_49 = false;
+    if ((abs(wo_40.z) > 0.0)) {
+        local_47 = (abs(wi_35.z) > 0.0);
     } else {
-        local_41 = false;
+        local_47 = false;
     }
-    bool _e18 = local_41;
+    bool _e18 = local_47;
     if (!(_e18)) {
         return 0.0;
     }
     float lost = (1.0 - e_o_9);
-    bool crossed = ((wi_33.z < 0.0) != (wo_38.z < 0.0));
+    bool crossed = ((wi_35.z < 0.0) != (wo_40.z < 0.0));
     float share = (crossed ? k_o : (1.0 - k_o));
     float den_4 = (MS_PI * (1.0 - e_avg_i));
     if ((den_4 > 0.0)) {
-        local_42 = (lost > 0.0);
+        local_48 = (lost > 0.0);
     } else {
-        local_42 = false;
+        local_48 = false;
     }
-    bool _e44 = local_42;
+    bool _e44 = local_48;
     if (!(_e44)) {
         return 0.0;
     }
     f_4 = (((share * lost) * max((1.0 - e_i_3), 0.0)) / den_4);
     if (crossed) {
-        local_43 = (d_9.transport == MS_TRANSPORT_RADIANCE);
+        local_49 = (d_9.transport == MS_TRANSPORT_RADIANCE);
     } else {
-        local_43 = false;
+        local_49 = false;
     }
-    bool _e61 = local_43;
+    bool _e61 = local_49;
     if (_e61) {
-        float etap_6 = ((wo_38.z > 0.0) ? d_9.eta : (1.0 / d_9.eta));
+        float etap_6 = ((wo_40.z > 0.0) ? d_9.eta : (1.0 / d_9.eta));
         float _e70 = f_4;
         f_4 = (_e70 / (etap_6 * etap_6));
     }
@@ -1510,28 +1535,34 @@ float ms_dielectric_kulla_conty_lobe(MsDielectric d_9, vec3 wo_38, vec3 wi_33, f
 
 uint ms_k_index(uvec3 id_13, uvec3 groups_13) {
     uint i_6 = (id_13.x + ((id_13.y * groups_13.x) * 64u));
-    uint n_9 = (uint(_group_0_binding_0_cs.length()) / MS_K_IN);
-    if ((i_6 >= n_9)) {
-        return n_9;
+    uint n_12 = (uint(_group_0_binding_0_cs.length()) / MS_K_IN);
+    if ((i_6 >= n_12)) {
+        return n_12;
     }
     return i_6;
 }
 
+MsMicrofacet ms_k_microfacet(vec4 r0_, vec4 r2_) {
+    uint code = uint(r2_.w);
+    return MsMicrofacet((code & 15u), r0_.xy, (code >> 4u));
+}
+
 MsConductor ms_k_conductor(uint i_2) {
-    vec4 r0_ = _group_0_binding_0_cs[(i_2 * MS_K_IN)];
-    vec4 r2_ = _group_0_binding_0_cs[((i_2 * MS_K_IN) + 2u)];
+    vec4 r0_1 = _group_0_binding_0_cs[(i_2 * MS_K_IN)];
+    vec4 r2_1 = _group_0_binding_0_cs[((i_2 * MS_K_IN) + 2u)];
     vec4 r3_ = _group_0_binding_0_cs[((i_2 * MS_K_IN) + 3u)];
     vec4 r4_ = _group_0_binding_0_cs[((i_2 * MS_K_IN) + 4u)];
-    MsMicrofacet mf_11 = MsMicrofacet(uint(r2_.w), r0_.xy);
-    return MsConductor(mf_11, MsFresnel(uint(r3_.w), r3_.xyz, r4_.xyz), uint(r4_.w));
+    MsMicrofacet _e27 = ms_k_microfacet(r0_1, r2_1);
+    return MsConductor(_e27, MsFresnel(uint(r3_.w), r3_.xyz, r4_.xyz), uint(r4_.w));
 }
 
 MsDielectric ms_k_dielectric(uint i_3) {
-    vec4 r0_1 = _group_0_binding_0_cs[(i_3 * MS_K_IN)];
-    vec4 r2_1 = _group_0_binding_0_cs[((i_3 * MS_K_IN) + 2u)];
+    vec4 r0_2 = _group_0_binding_0_cs[(i_3 * MS_K_IN)];
+    vec4 r2_2 = _group_0_binding_0_cs[((i_3 * MS_K_IN) + 2u)];
     vec4 r3_1 = _group_0_binding_0_cs[((i_3 * MS_K_IN) + 3u)];
     vec4 r4_1 = _group_0_binding_0_cs[((i_3 * MS_K_IN) + 4u)];
-    return MsDielectric(MsMicrofacet(uint(r2_1.w), r0_1.xy), r3_1.x, uint(r4_1.w), uint(r4_1.x));
+    MsMicrofacet _e27 = ms_k_microfacet(r0_2, r2_2);
+    return MsDielectric(_e27, r3_1.x, uint(r4_1.w), uint(r4_1.x));
 }
 
 void main() {
@@ -1541,14 +1572,14 @@ void main() {
     if ((_e2 == (uint(_group_0_binding_0_cs.length()) / MS_K_IN))) {
         return;
     }
-    vec4 r0_2 = _group_0_binding_0_cs[(_e2 * MS_K_IN)];
+    vec4 r0_3 = _group_0_binding_0_cs[(_e2 * MS_K_IN)];
     vec4 _e19 = _group_0_binding_0_cs[((_e2 * MS_K_IN) + 1u)];
-    vec3 wo_41 = _e19.xyz;
+    vec3 wo_43 = _e19.xyz;
     vec4 _e27 = _group_0_binding_0_cs[((_e2 * MS_K_IN) + 2u)];
-    vec3 wi_38 = _e27.xyz;
-    MsSample _e31 = ms_ggx_sample_bounded(wo_41, r0_2.xy, r0_2.zw);
+    vec3 wi_40 = _e27.xyz;
+    MsSample _e31 = ms_ggx_sample_bounded(wo_43, r0_3.xy, r0_3.zw);
     _group_0_binding_1_cs[(_e2 * MS_K_OUT)] = vec4(_e31.wm, _e31.pdf);
-    float _e46 = ms_ggx_pdf_bounded_reflection(wo_41, wi_38, r0_2.xy);
+    float _e46 = ms_ggx_pdf_bounded_reflection(wo_43, wi_40, r0_3.xy);
     _group_0_binding_1_cs[((_e2 * MS_K_OUT) + 1u)] = vec4(_e46, 0.0, 0.0, 0.0);
     return;
 }

@@ -128,6 +128,29 @@ enum Tail {
     Power { p: f64, ln_k: f64, k2: f64 },
 }
 
+/// [`FittedShape::layout`]: the fitted Λ₁ table and the posterior's parameters, for the GPU
+/// crate's table generator (not an API).
+#[doc(hidden)]
+#[derive(Clone, Copy, Debug)]
+pub struct ShapeLayout<'a> {
+    /// The rows' coefficients (degree 4 in s ∈ [−1, 1), s⁰ first), 2^5 rows per octave of z
+    /// from 2^−24.
+    pub rows: &'a [[f64; N]],
+    /// Whether the rows hold Λ₁ itself (else 256 log₂ Λ₁).
+    pub direct: bool,
+    /// The table ends at z = 2^k1.
+    pub k1: i32,
+    /// σ₁(0), the grazing end's Λ₁ = σ₁(0)/z − ½.
+    pub sigma0: f64,
+    /// Past the table: `None` for 0, `Some([p, ln K, K₂])` for e^{ln K − p ln z}(1 + K₂/z²).
+    pub tail: Option<[f64; 3]>,
+    /// The mixing density's parameter k (Student-T γ − 1, Bessel-K a, K0 1; 0 for the
+    /// uniform mixings).
+    pub mixing_k: f64,
+    /// E[β] of the prior at α = 1.
+    pub mean_beta: f64,
+}
+
 /// A Beckmann-mixture member prepared for fast Λ, G1, G2 and sampling (see the module docs).
 #[derive(Clone, Debug)]
 pub struct FittedShape {
@@ -258,6 +281,24 @@ impl FittedShape {
             tail,
             bessel,
         })
+    }
+
+    /// The table and sampler parameters as the GPU crate lays them out (not an API).
+    #[doc(hidden)]
+    pub fn layout(&self) -> ShapeLayout<'_> {
+        let (mixing_k, mean_beta) = self.posterior.parameters();
+        ShapeLayout {
+            rows: &self.coef,
+            direct: self.direct,
+            k1: self.k1,
+            sigma0: self.sigma0,
+            tail: match self.tail {
+                Tail::Zero => None,
+                Tail::Power { p, ln_k, k2 } => Some([p, ln_k, k2]),
+            },
+            mixing_k,
+            mean_beta,
+        }
     }
 
     /// Whether the table holds Λ itself (no exponential at evaluation) rather than log₂ Λ.

@@ -205,6 +205,15 @@ impl Posterior {
         Some(Posterior { mixing, mean_beta })
     }
 
+    /// The mixing's parameter k (0 for the uniform mixings) and E[β] (the GPU tables).
+    pub(crate) fn parameters(&self) -> (f64, f64) {
+        let k = match self.mixing {
+            Mixing::InverseGamma(k) | Mixing::Gamma(k) => k,
+            _ => 0.0,
+        };
+        (k, self.mean_beta)
+    }
+
     /// ln β(t) for t drawn from the prior, or from the size-biased prior.
     fn draw_ln_beta(&self, size_biased: bool, next: &mut dyn FnMut() -> f64) -> f64 {
         let bias = if size_biased { 1.0 } else { 0.0 };
