@@ -158,21 +158,21 @@ float2 ms_cos_sin_turn(float v)
     float r_3 = (v - (0.25 * k_9));
     float x_14 = (MS_TAU * r_3);
     float x2_ = (x_14 * x_14);
-    float s_9 = (x_14 * (1.0 + (x2_ * (-0.16666667 + (x2_ * (0.008333333 + (x2_ * (-0.0001984127 + (x2_ * 2.7557319e-6)))))))));
+    float s_10 = (x_14 * (1.0 + (x2_ * (-0.16666667 + (x2_ * (0.008333333 + (x2_ * (-0.0001984127 + (x2_ * 2.7557319e-6)))))))));
     float c_16 = (1.0 + (x2_ * (-0.5 + (x2_ * (0.041666668 + (x2_ * (-0.0013888889 + (x2_ * (2.4801588e-5 + (x2_ * -2.755732e-7))))))))));
     int q_2 = (naga_f2i32(k_9) & int(3));
     if ((q_2 == int(0))) {
-        return float2(c_16, s_9);
+        return float2(c_16, s_10);
     } else {
         if ((q_2 == int(1))) {
-            return float2(-(s_9), c_16);
+            return float2(-(s_10), c_16);
         } else {
             if ((q_2 == int(2))) {
-                return float2(-(c_16), -(s_9));
+                return float2(-(c_16), -(s_10));
             }
         }
     }
-    return float2(s_9, -(c_16));
+    return float2(s_10, -(c_16));
 }
 
 float3 ms_rescaled(float3 a)
@@ -256,9 +256,9 @@ float3 ms_unit_normal(float3 v_1)
     if ((m_8 == 0.0)) {
         return float3(0.0, 0.0, 1.0);
     }
-    float3 s_10 = (v_1 / (m_8).xxx);
-    const float _e30 = ms_dot(s_10, s_10);
-    return (s_10 * (1.0 / sqrt(_e30)));
+    float3 s_11 = (v_1 / (m_8).xxx);
+    const float _e30 = ms_dot(s_11, s_11);
+    return (s_11 * (1.0 / sqrt(_e30)));
 }
 
 float3 ms_reflect(float3 wo, float3 n)
@@ -274,11 +274,11 @@ bool ms_same_hemisphere(float3 a_3, float3 b_1)
 
 float3 ms_half_vector_reflection(float3 wo_1, float3 wi)
 {
-    float3 s_11 = (wo_1 + wi);
-    if (!((max(abs(s_11.x), max(abs(s_11.y), abs(s_11.z))) > 0.0))) {
+    float3 s_12 = (wo_1 + wi);
+    if (!((max(abs(s_12.x), max(abs(s_12.y), abs(s_12.z))) > 0.0))) {
         return (0.0).xxx;
     }
-    const float3 _e16 = ms_normalize(s_11);
+    const float3 _e16 = ms_normalize(s_12);
     if ((_e16.z < 0.0)) {
         return -(_e16);
     }
@@ -480,17 +480,17 @@ float ms_cnorm(float2 a_5)
 
 float ms_cnorm_ratio(float2 a_6, float2 b_3)
 {
-    float s_12 = max(max(abs(a_6.x), abs(a_6.y)), max(abs(b_3.x), abs(b_3.y)));
-    if ((s_12 == 0.0)) {
+    float s_13 = max(max(abs(a_6.x), abs(a_6.y)), max(abs(b_3.x), abs(b_3.y)));
+    if ((s_13 == 0.0)) {
         return 0.0;
     }
-    if (!((s_12 <= 3.4028235e38))) {
+    if (!((s_13 <= 3.4028235e38))) {
         const float _e19 = ms_cnorm(a_6);
         const float _e20 = ms_cnorm(b_3);
         return (_e19 / _e20);
     }
-    const float _e24 = ms_cnorm((a_6 / (s_12).xx));
-    const float _e27 = ms_cnorm((b_3 / (s_12).xx));
+    const float _e24 = ms_cnorm((a_6 / (s_13).xx));
+    const float _e27 = ms_cnorm((b_3 / (s_13).xx));
     return (_e24 / _e27);
 }
 
@@ -498,12 +498,12 @@ float2 ms_crecip(float2 a_7)
 {
     if ((abs(a_7.x) >= abs(a_7.y))) {
         float r_4 = (a_7.y / a_7.x);
-        float d_12 = (a_7.x + (a_7.y * r_4));
-        return float2((1.0 / d_12), (-(r_4) / d_12));
+        float d_16 = (a_7.x + (a_7.y * r_4));
+        return float2((1.0 / d_16), (-(r_4) / d_16));
     }
     float r_5 = (a_7.x / a_7.y);
-    float d_13 = ((a_7.x * r_5) + a_7.y);
-    return float2((r_5 / d_13), (-1.0 / d_13));
+    float d_17 = ((a_7.x * r_5) + a_7.y);
+    return float2((r_5 / d_17), (-1.0 / d_17));
 }
 
 float2 ms_csqrt(float2 a_8)
@@ -766,8 +766,8 @@ float3 ms_ggx_sample_wm(float3 w_in, float2 alpha_7, float2 u_2)
     float _e12 = w_8.x;
     float _e16 = w_8.y;
     float _e19 = w_8.z;
-    float3 s_13 = float3((alpha_7.x * _e12), (alpha_7.y * _e16), _e19);
-    float n2_ = (((s_13.x * s_13.x) + (s_13.y * s_13.y)) + (s_13.z * s_13.z));
+    float3 s_14 = float3((alpha_7.x * _e12), (alpha_7.y * _e16), _e19);
+    float n2_ = (((s_14.x * s_14.x) + (s_14.y * s_14.y)) + (s_14.z * s_14.z));
     if ((n2_ >= 1e-24)) {
         local_8 = (n2_ <= 1e24);
     } else {
@@ -780,12 +780,12 @@ float3 ms_ggx_sample_wm(float3 w_in, float2 alpha_7, float2 u_2)
         float _e45 = w_8.x;
         float _e49 = w_8.y;
         float _e54 = w_8.z;
-        float d_14 = (((_e42.x * _e45) + (_e42.y * _e49)) + (_e42.z * _e54));
+        float d_18 = (((_e42.x * _e45) + (_e42.y * _e49)) + (_e42.z * _e54));
         float _e58 = w_8.x;
         float _e61 = w_8.y;
         float _e65 = w_8.z;
         float l1_ = ((abs(_e58) + abs(_e61)) + abs(_e65));
-        if ((d_14 > (2.4e-7 * l1_))) {
+        if ((d_18 > (2.4e-7 * l1_))) {
             return _e42;
         }
         float3 _e71 = w_8;
@@ -866,9 +866,9 @@ MsBoundedCap ms_ggx_bounded_cap(float3 w_10, float2 alpha_11)
     float _e30 = v_2.x;
     float _e33 = v_2.y;
     float _e35 = v_2.y;
-    float s_14 = (1.0 + sqrt(((_e28 * _e30) + (_e33 * _e35))));
+    float s_15 = (1.0 + sqrt(((_e28 * _e30) + (_e33 * _e35))));
     float a2_ = (a_19 * a_19);
-    float s2_ = (s_14 * s_14);
+    float s2_ = (s_15 * s_15);
     float _e44 = v_2.z;
     float _e47 = v_2.z;
     float den_2 = (s2_ + ((a2_ * _e44) * _e47));
@@ -1306,11 +1306,11 @@ float ms_beckmann_lambda(float3 w_14, float2 alpha_16)
 {
     float x_20 = (alpha_16.x * w_14.x);
     float y_8 = (alpha_16.y * w_14.y);
-    float s_15 = sqrt(((x_20 * x_20) + (y_8 * y_8)));
-    if (!((s_15 > 0.0))) {
+    float s_16 = sqrt(((x_20 * x_20) + (y_8 * y_8)));
+    if (!((s_16 > 0.0))) {
         return 0.0;
     }
-    const float _e19 = ms_beckmann_lambda_cot((abs(w_14.z) / s_15));
+    const float _e19 = ms_beckmann_lambda_cot((abs(w_14.z) / s_16));
     return _e19;
 }
 
@@ -1640,10 +1640,10 @@ float ms_double_ggx_lambda(float3 w_19, float2 alpha_25)
     float a_16 = (float)0;
     bool local_15 = (bool)0;
 
-    float u_29 = abs(w_19.z);
+    float u_31 = abs(w_19.z);
     if ((alpha_25.x == alpha_25.y)) {
         float a_21 = alpha_25.x;
-        x_8 = ((((0.5 * a_21) * a_21) * ((1.0 - u_29) * (1.0 + u_29))) / (u_29 * u_29));
+        x_8 = ((((0.5 * a_21) * a_21) * ((1.0 - u_31) * (1.0 + u_31))) / (u_31 * u_31));
     } else {
         float sx_3 = (alpha_25.x * w_19.x);
         float sy_2 = (alpha_25.y * w_19.y);
@@ -1674,7 +1674,7 @@ float ms_double_ggx_lambda(float3 w_19, float2 alpha_25)
         a_16 = sqrt((((((alpha_25.x * alpha_25.x) * w_19.x) * w_19.x) + (((alpha_25.y * alpha_25.y) * w_19.y) * w_19.y)) / s2_1));
     }
     float _e82 = a_16;
-    const float _e83 = ms_dg_lambda_ends(u_29, _e82);
+    const float _e83 = ms_dg_lambda_ends(u_31, _e82);
     return _e83;
 }
 
@@ -1932,9 +1932,9 @@ float ms_exp_lambda_z(float z_1)
         uint i_8 = (2u * naga_f2u32(_e19.x));
         float4 lo_4 = asfloat(ms_tables.Load4((MS_EXP_FAR_AT + i_8)*16));
         float4 hi_3 = asfloat(ms_tables.Load4(((MS_EXP_FAR_AT + i_8) + 1u)*16));
-        float s_16 = _e19.y;
-        float s2_3 = (s_16 * s_16);
-        float p_3 = (((lo_4.x + (lo_4.y * s_16)) + ((lo_4.z + (lo_4.w * s_16)) * s2_3)) + (((hi_3.x + (hi_3.y * s_16)) + (hi_3.z * s2_3)) * (s2_3 * s2_3)));
+        float s_17 = _e19.y;
+        float s2_3 = (s_17 * s_17);
+        float p_3 = (((lo_4.x + (lo_4.y * s_17)) + ((lo_4.z + (lo_4.w * s_17)) * s2_3)) + (((hi_3.x + (hi_3.y * s_17)) + (hi_3.z * s2_3)) * (s2_3 * s2_3)));
         return (p_3 * exp(-(z_1)));
     }
     if ((z_1 != z_1)) {
@@ -1950,10 +1950,10 @@ float ms_exponential_lambda(float3 w_24, float2 alpha_35)
     float a_17 = (float)0;
     bool local_20 = (bool)0;
 
-    float u_30 = abs(w_24.z);
+    float u_32 = abs(w_24.z);
     if ((alpha_35.x == alpha_35.y)) {
         float a_22 = alpha_35.x;
-        q_1 = (((4.0 * u_30) * u_30) / ((a_22 * a_22) * ((1.0 - u_30) * (1.0 + u_30))));
+        q_1 = (((4.0 * u_32) * u_32) / ((a_22 * a_22) * ((1.0 - u_32) * (1.0 + u_32))));
     } else {
         float sx_5 = (alpha_35.x * w_24.x);
         float sy_4 = (alpha_35.y * w_24.y);
@@ -1984,7 +1984,7 @@ float ms_exponential_lambda(float3 w_24, float2 alpha_35)
         a_17 = sqrt((((((alpha_35.x * alpha_35.x) * w_24.x) * w_24.x) + (((alpha_35.y * alpha_35.y) * w_24.y) * w_24.y)) / s2_4));
     }
     float _e83 = a_17;
-    const float _e92 = ms_exp_lambda_z(((u_30 + u_30) / (_e83 * sqrt(((1.0 - u_30) * (1.0 + u_30))))));
+    const float _e92 = ms_exp_lambda_z(((u_32 + u_32) / (_e83 * sqrt(((1.0 - u_32) * (1.0 + u_32))))));
     return _e92;
 }
 
@@ -2176,8 +2176,8 @@ float3 ms_exponential_sample_wm(float3 w_in_4, float2 alpha_43, float2 u_17)
             const float _e73 = ms_stream_next(state_9);
             float prod = ((1.0 - _e70) * (1.0 - _e73));
             float _e77 = v0_;
-            float d_15 = ((_e77 * total) - e_9);
-            if ((d_15 < 0.0)) {
+            float d_19 = ((_e77 * total) - e_9);
+            if ((d_19 < 0.0)) {
                 float r_19 = (-0.5 * log(prod));
                 float _e85 = v0_;
                 float turn = (_e85 * inv_p_1);
@@ -2198,7 +2198,7 @@ float3 ms_exponential_sample_wm(float3 w_in_4, float2 alpha_43, float2 u_17)
             } else {
                 const float _e108 = ms_stream_next(state_9);
                 float r_20 = (-0.5 * log((prod * (1.0 - _e108))));
-                float one_plus = (2.0 * (d_15 * inv_g));
+                float one_plus = (2.0 * (d_19 * inv_g));
                 float _e118 = v0_;
                 float one_minus = ((2.0 * (1.0 - _e118)) * (total * inv_g));
                 x_9 = (r_20 * sqrt(max((one_minus * one_plus), 0.0)));
@@ -2249,8 +2249,8 @@ float ms_shape_lambda_z(uint table, float z_2)
         uint i_9 = ((table + MS_SHAPE_HEADER) + (2u * naga_f2u32(_e18.x)));
         float4 lo_5 = asfloat(ms_tables.Load4(i_9*16));
         float4 hi_4 = asfloat(ms_tables.Load4((i_9 + 1u)*16));
-        float s_17 = _e18.y;
-        float p_5 = ((((((((hi_4.x * s_17) + lo_5.w) * s_17) + lo_5.z) * s_17) + lo_5.y) * s_17) + lo_5.x);
+        float s_18 = _e18.y;
+        float p_5 = ((((((((hi_4.x * s_18) + lo_5.w) * s_18) + lo_5.z) * s_18) + lo_5.y) * s_18) + lo_5.x);
         if ((head.z > 0.5)) {
             return p_5;
         }
@@ -2327,8 +2327,8 @@ float ms_ln_gamma_variate(float k_in, inout uint2 state_12)
         k_5 = (_e12 + 1.0);
     }
     float _e15 = k_5;
-    float d_16 = (_e15 - 0.33333334);
-    float c_21 = (1.0 / sqrt((9.0 * d_16)));
+    float d_20 = (_e15 - 0.33333334);
+    float c_21 = (1.0 / sqrt((9.0 * d_20)));
     uint2 loop_bound_5 = uint2(4294967295u, 4294967295u);
     bool loop_init_5 = true;
     while(true) {
@@ -2359,10 +2359,10 @@ float ms_ln_gamma_variate(float k_in, inout uint2 state_12)
             const float _e42 = ms_stream_next_positive(state_12);
             float _e48 = v_6;
             float _e51 = v_6;
-            if ((log(_e42) < (((((0.5 * _e29) * _e29) + d_16) - (d_16 * _e48)) + (d_16 * log(_e51))))) {
+            if ((log(_e42) < (((((0.5 * _e29) * _e29) + d_20) - (d_20 * _e48)) + (d_20 * log(_e51))))) {
                 float _e57 = v_6;
                 float _e60 = boost;
-                return ((log(d_16) + log(_e57)) + _e60);
+                return ((log(d_20) + log(_e57)) + _e60);
             }
         }
     }
@@ -3058,10 +3058,10 @@ MsBsdfSample ms_conductor_sample(MsConductor c_10, float3 wo_25, float uc, float
     }
     const bool _e15 = ms_effectively_smooth(c_10.mf);
     if (_e15) {
-        float3 wi_38 = float3(-(wo_25.x), -(wo_25.y), wo_25.z);
-        float k_11 = (1.0 / abs(wi_38.z));
+        float3 wi_41 = float3(-(wo_25.x), -(wo_25.y), wo_25.z);
+        float k_11 = (1.0 / abs(wi_41.z));
         const float3 _e29 = ms_fresnel_eval(c_10.fresnel, abs(wo_25.z));
-        const MsBsdfSample msbsdfsample_1 = ConstructMsBsdfSample(wi_38, 1.0, (_e29 * k_11), 3u, 1.0);
+        const MsBsdfSample msbsdfsample_1 = ConstructMsBsdfSample(wi_41, 1.0, (_e29 * k_11), 3u, 1.0);
         return msbsdfsample_1;
     }
     const MsSample _e36 = ms_sample(c_10.mf, wo_25, u_24);
@@ -3243,8 +3243,8 @@ MsBsdfSample ms_dielectric_sample_smooth(MsDielectric d_7, float3 wo_31, float u
 
     const float _e5 = ms_fresnel_dielectric(wo_31.z, d_7.eta);
     if ((uc_1 < _e5)) {
-        float3 wi_39 = float3(-(wo_31.x), -(wo_31.y), wo_31.z);
-        const MsBsdfSample msbsdfsample_7 = ConstructMsBsdfSample(wi_39, _e5, ((_e5 / abs(wi_39.z))).xxx, 3u, 1.0);
+        float3 wi_42 = float3(-(wo_31.x), -(wo_31.y), wo_31.z);
+        const MsBsdfSample msbsdfsample_7 = ConstructMsBsdfSample(wi_42, _e5, ((_e5 / abs(wi_42.z))).xxx, 3u, 1.0);
         return msbsdfsample_7;
     }
     MsBsdfSample none_2 = ConstructMsBsdfSample((0.0).xxx, 0.0, (0.0).xxx, 0u, 1.0);
@@ -3253,20 +3253,20 @@ MsBsdfSample ms_dielectric_sample_smooth(MsDielectric d_7, float3 wo_31, float u
         const MsBsdfSample msbsdfsample_8 = none_2;
         return msbsdfsample_8;
     }
-    float3 wi_40 = _e33.xyz;
-    const bool _e39 = ms_on_horizon(wi_40.z);
+    float3 wi_43 = _e33.xyz;
+    const bool _e39 = ms_on_horizon(wi_43.z);
     if (_e39) {
         const MsBsdfSample msbsdfsample_9 = none_2;
         return msbsdfsample_9;
     }
     float t_13 = (1.0 - _e5);
-    f_3 = (t_13 / abs(wi_40.z));
+    f_3 = (t_13 / abs(wi_43.z));
     if ((d_7.transport == MS_TRANSPORT_RADIANCE)) {
         float _e49 = f_3;
         f_3 = (_e49 / (_e33.w * _e33.w));
     }
     float _e54 = f_3;
-    const MsBsdfSample msbsdfsample_10 = ConstructMsBsdfSample(wi_40, t_13, (_e54).xxx, 7u, _e33.w);
+    const MsBsdfSample msbsdfsample_10 = ConstructMsBsdfSample(wi_43, t_13, (_e54).xxx, 7u, _e33.w);
     return msbsdfsample_10;
 }
 
@@ -3335,11 +3335,11 @@ MsBsdfSample ms_dielectric_sample(MsDielectric d_8, float3 wo_32, float uc_2, fl
         const MsBsdfSample msbsdfsample_17 = none_3;
         return msbsdfsample_17;
     }
-    float3 wi_41 = _e62.xyz;
+    float3 wi_44 = _e62.xyz;
     float etap_6 = _e62.w;
-    const bool _e68 = ms_same_hemisphere(wo_32, wi_41);
+    const bool _e68 = ms_same_hemisphere(wo_32, wi_44);
     if (!(_e68)) {
-        const bool _e73 = ms_on_horizon(wi_41.z);
+        const bool _e73 = ms_on_horizon(wi_44.z);
         local_41 = _e73;
     } else {
         local_41 = true;
@@ -3350,7 +3350,7 @@ MsBsdfSample ms_dielectric_sample(MsDielectric d_8, float3 wo_32, float uc_2, fl
         return msbsdfsample_18;
     }
     float t_14 = (1.0 - _e21);
-    const float _e80 = ms_jacobian_refraction(wo_32, wi_41, wm_25, etap_6);
+    const float _e80 = ms_jacobian_refraction(wo_32, wi_44, wm_25, etap_6);
     float pdf_2 = ((_e17.pdf * t_14) * _e80);
     const float _e83 = ms_d(d_8.mf, wm_25);
     const bool _e84 = ms_usable(_e83);
@@ -3358,7 +3358,7 @@ MsBsdfSample ms_dielectric_sample(MsDielectric d_8, float3 wo_32, float uc_2, fl
         const MsBsdfSample msbsdfsample_19 = none_3;
         return msbsdfsample_19;
     }
-    const float _e86 = ms_dielectric_f_transmission(d_8, wo_32, wi_41, wm_25, _e83, etap_6, t_14);
+    const float _e86 = ms_dielectric_f_transmission(d_8, wo_32, wi_44, wm_25, _e83, etap_6, t_14);
     const bool _e87 = ms_usable(pdf_2);
     if (!(!(_e87))) {
         local_42 = !((_e86 <= 3.4028235e38));
@@ -3370,7 +3370,7 @@ MsBsdfSample ms_dielectric_sample(MsDielectric d_8, float3 wo_32, float uc_2, fl
         const MsBsdfSample msbsdfsample_20 = none_3;
         return msbsdfsample_20;
     }
-    const MsBsdfSample msbsdfsample_21 = ConstructMsBsdfSample(wi_41, pdf_2, (_e86).xxx, 5u, etap_6);
+    const MsBsdfSample msbsdfsample_21 = ConstructMsBsdfSample(wi_44, pdf_2, (_e86).xxx, 5u, etap_6);
     return msbsdfsample_21;
 }
 
@@ -3755,6 +3755,145 @@ float ms_dielectric_eval_turquin(MsDielectric d_11, float3 wo_42, float3 wi_37, 
     return (_e4 / e_o_11);
 }
 
+float ms_dielectric_kulla_conty_lobe_pdf(float3 wo_43, float3 wi_38, float k_o_2)
+{
+    bool crossed_1 = ((wi_38.z < 0.0) != (wo_43.z < 0.0));
+    float side = (crossed_1 ? k_o_2 : (1.0 - k_o_2));
+    return ((side * abs(wi_38.z)) / MS_PI);
+}
+
+float ms_dielectric_pdf_kulla_conty(MsDielectric d_12, float3 wo_44, float3 wi_39, float e_o_12, float k_o_3)
+{
+    const float _e5 = ms_dielectric_pdf(d_12, wo_44, wi_39);
+    const bool _e6 = ms_dielectric_smooth(d_12);
+    if (_e6) {
+        return _e5;
+    }
+    const float _e7 = ms_kulla_conty_p_ms(e_o_12);
+    const float _e11 = ms_dielectric_kulla_conty_lobe_pdf(wo_44, wi_39, k_o_3);
+    return (((1.0 - _e7) * _e5) + (_e7 * _e11));
+}
+
+MsBsdfSample ms_dielectric_sample_kulla_conty(MsDielectric d_13, float3 wo_45, float uc_5, float2 u_29, float e_o_13, float k_o_4)
+{
+    float3 wi_40 = (float3)0;
+    bool local_51 = (bool)0;
+    bool local_52 = (bool)0;
+
+    MsBsdfSample none_5 = ConstructMsBsdfSample((0.0).xxx, 0.0, (0.0).xxx, 0u, 1.0);
+    const bool _e15 = ms_on_horizon(wo_45.z);
+    if (_e15) {
+        const MsBsdfSample msbsdfsample_31 = none_5;
+        return msbsdfsample_31;
+    }
+    const bool _e16 = ms_dielectric_smooth(d_13);
+    if (_e16) {
+        const MsBsdfSample _e17 = ms_dielectric_sample(d_13, wo_45, uc_5, u_29);
+        const MsBsdfSample msbsdfsample_32 = _e17;
+        return msbsdfsample_32;
+    }
+    const float _e18 = ms_kulla_conty_p_ms(e_o_13);
+    if ((uc_5 < _e18)) {
+        bool crossed_2 = ((uc_5 / _e18) < k_o_4);
+        const float3 _e23 = ms_cosine_hemisphere(u_29);
+        wi_40 = _e23;
+        if (((wo_45.z > 0.0) == crossed_2)) {
+            float _e30 = wi_40.z;
+            wi_40.z = -(_e30);
+        }
+    } else {
+        const MsBsdfSample _e38 = ms_dielectric_sample(d_13, wo_45, min(((uc_5 - _e18) / (1.0 - _e18)), 0.99999994), u_29);
+        if (!(((_e38.flags & MS_SAMPLE_VALID) == 0u))) {
+            local_51 = ((_e38.flags & MS_SAMPLE_SPECULAR) != 0u);
+        } else {
+            local_51 = true;
+        }
+        bool _e53 = local_51;
+        if (_e53) {
+            const MsBsdfSample msbsdfsample_33 = _e38;
+            return msbsdfsample_33;
+        }
+        wi_40 = _e38.wi;
+    }
+    float3 _e55 = wi_40;
+    const float _e56 = ms_dielectric_pdf_kulla_conty(d_13, wo_45, _e55, e_o_13, k_o_4);
+    const bool _e57 = ms_usable(_e56);
+    if (!(!(_e57))) {
+        float _e63 = wi_40.z;
+        local_52 = (_e63 == 0.0);
+    } else {
+        local_52 = true;
+    }
+    bool _e67 = local_52;
+    if (_e67) {
+        const MsBsdfSample msbsdfsample_34 = none_5;
+        return msbsdfsample_34;
+    }
+    float3 _e68 = wi_40;
+    const float _e69 = ms_dielectric_eval(d_13, wo_45, _e68);
+    float3 f_7 = (_e69).xxx;
+    float _e72 = wi_40.z;
+    if (((_e72 < 0.0) != (wo_45.z < 0.0))) {
+        float etap_8 = ((wo_45.z > 0.0) ? d_13.eta : (1.0 / d_13.eta));
+        float3 _e87 = wi_40;
+        const MsBsdfSample msbsdfsample_35 = ConstructMsBsdfSample(_e87, _e56, f_7, 5u, etap_8);
+        return msbsdfsample_35;
+    }
+    float3 _e90 = wi_40;
+    const MsBsdfSample msbsdfsample_36 = ConstructMsBsdfSample(_e90, _e56, f_7, MS_SAMPLE_VALID, 1.0);
+    return msbsdfsample_36;
+}
+
+MsBsdfSample ms_dielectric_kulla_conty_sample_f(MsBsdfSample s_9, MsDielectric d_14, float3 wo_46, float e_o_14, float e_i_5, float e_avg_i_2, float k_o_5)
+{
+    bool local_53 = (bool)0;
+
+    if (!(((s_9.flags & MS_SAMPLE_VALID) == 0u))) {
+        local_53 = ((s_9.flags & MS_SAMPLE_SPECULAR) != 0u);
+    } else {
+        local_53 = true;
+    }
+    bool _e21 = local_53;
+    if (_e21) {
+        const MsBsdfSample msbsdfsample_37 = s_9;
+        return msbsdfsample_37;
+    }
+    const float _e23 = ms_dielectric_kulla_conty_lobe(d_14, wo_46, s_9.wi, e_o_14, e_i_5, e_avg_i_2, k_o_5);
+    const MsBsdfSample msbsdfsample_38 = ConstructMsBsdfSample(s_9.wi, s_9.pdf, (s_9.f + (_e23).xxx), s_9.flags, s_9.eta);
+    return msbsdfsample_38;
+}
+
+MsBsdfSample ms_dielectric_sample_turquin(MsDielectric d_15, float3 wo_47, float uc_6, float2 u_30, float e_o_15)
+{
+    bool local_54 = (bool)0;
+    bool local_55 = (bool)0;
+
+    const MsBsdfSample _e5 = ms_dielectric_sample(d_15, wo_47, uc_6, u_30);
+    if (!(((_e5.flags & MS_SAMPLE_VALID) == 0u))) {
+        local_54 = ((_e5.flags & MS_SAMPLE_SPECULAR) != 0u);
+    } else {
+        local_54 = true;
+    }
+    bool _e20 = local_54;
+    if (!(_e20)) {
+        local_55 = !((e_o_15 > 0.0));
+    } else {
+        local_55 = true;
+    }
+    bool _e28 = local_55;
+    if (_e28) {
+        const MsBsdfSample msbsdfsample_39 = _e5;
+        return msbsdfsample_39;
+    }
+    float3 f_8 = (_e5.f / (e_o_15).xxx);
+    if (!(all((f_8 <= (3.4028235e38).xxx)))) {
+        const MsBsdfSample msbsdfsample_40 = ConstructMsBsdfSample((0.0).xxx, 0.0, (0.0).xxx, 0u, 1.0);
+        return msbsdfsample_40;
+    }
+    const MsBsdfSample msbsdfsample_41 = ConstructMsBsdfSample(_e5.wi, _e5.pdf, f_8, _e5.flags, _e5.eta);
+    return msbsdfsample_41;
+}
+
 uint naga_div(uint lhs, uint rhs) {
     return lhs / (rhs == 0u ? 1u : rhs);
 }
@@ -3848,18 +3987,18 @@ void ms_k_ggx_eval(uint3 id : SV_DispatchThreadID, uint3 groups : SV_GroupID)
     float4 _e12 = asfloat(ms_in.Load4((_e2 * MS_K_IN)*16));
     float2 a_25 = _e12.xy;
     float4 _e20 = asfloat(ms_in.Load4(((_e2 * MS_K_IN) + 1u)*16));
-    float3 wo_43 = _e20.xyz;
+    float3 wo_48 = _e20.xyz;
     float4 _e28 = asfloat(ms_in.Load4(((_e2 * MS_K_IN) + 2u)*16));
     float3 wm_27 = _e28.xyz;
     const float _e34 = ms_ggx_d(wm_27, a_25);
-    const float _e35 = ms_ggx_lambda(wo_43, a_25);
-    const float _e36 = ms_ggx_g1_(wo_43, a_25);
-    const float _e37 = ms_ggx_g2_(wo_43, wm_27, a_25);
+    const float _e35 = ms_ggx_lambda(wo_48, a_25);
+    const float _e36 = ms_ggx_g1_(wo_48, a_25);
+    const float _e37 = ms_ggx_g2_(wo_48, wm_27, a_25);
     ms_out.Store4((_e2 * MS_K_OUT)*16, asuint(float4(_e34, _e35, _e36, _e37)));
-    const float _e45 = ms_ggx_g2_separable(wo_43, wm_27, a_25);
-    const float _e46 = ms_ggx_pdf(wo_43, wm_27, a_25);
+    const float _e45 = ms_ggx_g2_separable(wo_48, wm_27, a_25);
+    const float _e46 = ms_ggx_pdf(wo_48, wm_27, a_25);
     const float _e47 = ms_ggx_pdf_dcos(wm_27, a_25);
-    const float _e48 = ms_ggx_pdf_bounded(wo_43, wm_27, a_25);
+    const float _e48 = ms_ggx_pdf_bounded(wo_48, wm_27, a_25);
     ms_out.Store4(((_e2 * MS_K_OUT) + 1u)*16, asuint(float4(_e45, _e46, _e47, _e48)));
     return;
 }
@@ -3874,18 +4013,18 @@ void ms_k_beckmann_eval(uint3 id_1 : SV_DispatchThreadID, uint3 groups_1 : SV_Gr
     float4 _e12 = asfloat(ms_in.Load4((_e2 * MS_K_IN)*16));
     float2 a_26 = _e12.xy;
     float4 _e20 = asfloat(ms_in.Load4(((_e2 * MS_K_IN) + 1u)*16));
-    float3 wo_44 = _e20.xyz;
+    float3 wo_49 = _e20.xyz;
     float4 _e28 = asfloat(ms_in.Load4(((_e2 * MS_K_IN) + 2u)*16));
     float3 wm_28 = _e28.xyz;
     const float _e34 = ms_beckmann_d(wm_28, a_26);
-    const float _e35 = ms_beckmann_lambda(wo_44, a_26);
-    const float _e36 = ms_beckmann_g1_(wo_44, a_26);
-    const float _e37 = ms_beckmann_g2_(wo_44, wm_28, a_26);
+    const float _e35 = ms_beckmann_lambda(wo_49, a_26);
+    const float _e36 = ms_beckmann_g1_(wo_49, a_26);
+    const float _e37 = ms_beckmann_g2_(wo_49, wm_28, a_26);
     ms_out.Store4((_e2 * MS_K_OUT)*16, asuint(float4(_e34, _e35, _e36, _e37)));
-    const float _e45 = ms_beckmann_g2_separable(wo_44, wm_28, a_26);
-    const float _e46 = ms_beckmann_pdf(wo_44, wm_28, a_26);
+    const float _e45 = ms_beckmann_g2_separable(wo_49, wm_28, a_26);
+    const float _e46 = ms_beckmann_pdf(wo_49, wm_28, a_26);
     const float _e47 = ms_beckmann_pdf_dcos(wm_28, a_26);
-    const float _e51 = ms_pdf(ConstructMsMicrofacet(MS_NDF_BECKMANN, a_26, 0u), wo_44, wm_28);
+    const float _e51 = ms_pdf(ConstructMsMicrofacet(MS_NDF_BECKMANN, a_26, 0u), wo_49, wm_28);
     ms_out.Store4(((_e2 * MS_K_OUT) + 1u)*16, asuint(float4(_e45, _e46, _e47, _e51)));
     return;
 }
@@ -3899,8 +4038,8 @@ void ms_k_beckmann_sample(uint3 id_2 : SV_DispatchThreadID, uint3 groups_2 : SV_
     }
     float4 r0_3 = asfloat(ms_in.Load4((_e2 * MS_K_IN)*16));
     float4 _e19 = asfloat(ms_in.Load4(((_e2 * MS_K_IN) + 1u)*16));
-    float3 wo_45 = _e19.xyz;
-    const MsSample _e26 = ms_sample(ConstructMsMicrofacet(MS_NDF_BECKMANN, r0_3.xy, 0u), wo_45, r0_3.zw);
+    float3 wo_50 = _e19.xyz;
+    const MsSample _e26 = ms_sample(ConstructMsMicrofacet(MS_NDF_BECKMANN, r0_3.xy, 0u), wo_50, r0_3.zw);
     const MsSample _e29 = ms_beckmann_sample_dcos(r0_3.xy, r0_3.zw);
     ms_out.Store4((_e2 * MS_K_OUT)*16, asuint(float4(_e26.wm, _e26.pdf)));
     ms_out.Store4(((_e2 * MS_K_OUT) + 1u)*16, asuint(float4(_e29.wm, _e29.pdf)));
@@ -3916,8 +4055,8 @@ void ms_k_ggx_sample(uint3 id_3 : SV_DispatchThreadID, uint3 groups_3 : SV_Group
     }
     float4 r0_4 = asfloat(ms_in.Load4((_e2 * MS_K_IN)*16));
     float4 _e19 = asfloat(ms_in.Load4(((_e2 * MS_K_IN) + 1u)*16));
-    float3 wo_46 = _e19.xyz;
-    const MsSample _e23 = ms_ggx_sample(wo_46, r0_4.xy, r0_4.zw);
+    float3 wo_51 = _e19.xyz;
+    const MsSample _e23 = ms_ggx_sample(wo_51, r0_4.xy, r0_4.zw);
     const MsSample _e26 = ms_ggx_sample_dcos(r0_4.xy, r0_4.zw);
     ms_out.Store4((_e2 * MS_K_OUT)*16, asuint(float4(_e23.wm, _e23.pdf)));
     ms_out.Store4(((_e2 * MS_K_OUT) + 1u)*16, asuint(float4(_e26.wm, _e26.pdf)));
@@ -3933,12 +4072,12 @@ void ms_k_ggx_bounded(uint3 id_4 : SV_DispatchThreadID, uint3 groups_4 : SV_Grou
     }
     float4 r0_5 = asfloat(ms_in.Load4((_e2 * MS_K_IN)*16));
     float4 _e19 = asfloat(ms_in.Load4(((_e2 * MS_K_IN) + 1u)*16));
-    float3 wo_47 = _e19.xyz;
+    float3 wo_52 = _e19.xyz;
     float4 _e27 = asfloat(ms_in.Load4(((_e2 * MS_K_IN) + 2u)*16));
-    float3 wi_42 = _e27.xyz;
-    const MsSample _e31 = ms_ggx_sample_bounded(wo_47, r0_5.xy, r0_5.zw);
+    float3 wi_45 = _e27.xyz;
+    const MsSample _e31 = ms_ggx_sample_bounded(wo_52, r0_5.xy, r0_5.zw);
     ms_out.Store4((_e2 * MS_K_OUT)*16, asuint(float4(_e31.wm, _e31.pdf)));
-    const float _e46 = ms_ggx_pdf_bounded_reflection(wo_47, wi_42, r0_5.xy);
+    const float _e46 = ms_ggx_pdf_bounded_reflection(wo_52, wi_45, r0_5.xy);
     ms_out.Store4(((_e2 * MS_K_OUT) + 1u)*16, asuint(float4(_e46, 0.0, 0.0, 0.0)));
     return;
 }
@@ -3972,13 +4111,13 @@ void ms_k_conductor_eval(uint3 id_6 : SV_DispatchThreadID, uint3 groups_6 : SV_G
     }
     const MsConductor _e8 = ms_k_conductor(_e2);
     float4 _e15 = asfloat(ms_in.Load4(((_e2 * MS_K_IN) + 1u)*16));
-    float3 wo_48 = _e15.xyz;
+    float3 wo_53 = _e15.xyz;
     float4 _e23 = asfloat(ms_in.Load4(((_e2 * MS_K_IN) + 2u)*16));
-    float3 wi_43 = _e23.xyz;
-    const float3 _e29 = ms_conductor_eval(_e8, wo_48, wi_43);
-    const float _e30 = ms_conductor_pdf(_e8, wo_48, wi_43);
+    float3 wi_46 = _e23.xyz;
+    const float3 _e29 = ms_conductor_eval(_e8, wo_53, wi_46);
+    const float _e30 = ms_conductor_pdf(_e8, wo_53, wi_46);
     ms_out.Store4((_e2 * MS_K_OUT)*16, asuint(float4(_e29, _e30)));
-    const float4 _e38 = ms_conductor_eval_pdf(_e8, wo_48, wi_43);
+    const float4 _e38 = ms_conductor_eval_pdf(_e8, wo_53, wi_46);
     ms_out.Store4(((_e2 * MS_K_OUT) + 1u)*16, asuint(_e38));
     return;
 }
@@ -4008,11 +4147,11 @@ void ms_k_dielectric_eval(uint3 id_8 : SV_DispatchThreadID, uint3 groups_8 : SV_
     }
     const MsDielectric _e8 = ms_k_dielectric(_e2);
     float4 _e15 = asfloat(ms_in.Load4(((_e2 * MS_K_IN) + 1u)*16));
-    float3 wo_49 = _e15.xyz;
+    float3 wo_54 = _e15.xyz;
     float4 _e23 = asfloat(ms_in.Load4(((_e2 * MS_K_IN) + 2u)*16));
-    float3 wi_44 = _e23.xyz;
-    const float _e29 = ms_dielectric_eval(_e8, wo_49, wi_44);
-    const float _e30 = ms_dielectric_pdf(_e8, wo_49, wi_44);
+    float3 wi_47 = _e23.xyz;
+    const float _e29 = ms_dielectric_eval(_e8, wo_54, wi_47);
+    const float _e30 = ms_dielectric_pdf(_e8, wo_54, wi_47);
     ms_out.Store4((_e2 * MS_K_OUT)*16, asuint(float4(_e29, _e30, 0.0, 0.0)));
     ms_out.Store4(((_e2 * MS_K_OUT) + 1u)*16, asuint((0.0).xxxx));
     return;
@@ -4043,17 +4182,17 @@ void ms_k_family_eval(uint3 id_10 : SV_DispatchThreadID, uint3 groups_10 : SV_Gr
     }
     float4 r0_8 = asfloat(ms_in.Load4((_e2 * MS_K_IN)*16));
     float4 _e19 = asfloat(ms_in.Load4(((_e2 * MS_K_IN) + 1u)*16));
-    float3 wo_50 = _e19.xyz;
+    float3 wo_55 = _e19.xyz;
     float4 r2_3 = asfloat(ms_in.Load4(((_e2 * MS_K_IN) + 2u)*16));
     float3 wm_29 = r2_3.xyz;
     const MsMicrofacet _e29 = ms_k_microfacet(r0_8, r2_3);
     const float _e34 = ms_d(_e29, wm_29);
-    const float _e35 = ms_lambda(_e29, wo_50);
-    const float _e36 = ms_g1_(_e29, wo_50);
-    const float _e37 = ms_g2_(_e29, wo_50, wm_29);
+    const float _e35 = ms_lambda(_e29, wo_55);
+    const float _e36 = ms_g1_(_e29, wo_55);
+    const float _e37 = ms_g2_(_e29, wo_55, wm_29);
     ms_out.Store4((_e2 * MS_K_OUT)*16, asuint(float4(_e34, _e35, _e36, _e37)));
-    const float _e45 = ms_g2_separable(_e29, wo_50, wm_29);
-    const float _e46 = ms_pdf(_e29, wo_50, wm_29);
+    const float _e45 = ms_g2_separable(_e29, wo_55, wm_29);
+    const float _e46 = ms_pdf(_e29, wo_55, wm_29);
     const float _e47 = ms_pdf_dcos(_e29, wm_29);
     const float _e48 = ms_g1_(_e29, wm_29);
     ms_out.Store4(((_e2 * MS_K_OUT) + 1u)*16, asuint(float4(_e45, _e46, _e47, _e48)));
@@ -4069,11 +4208,11 @@ void ms_k_family_sample(uint3 id_11 : SV_DispatchThreadID, uint3 groups_11 : SV_
     }
     float4 r0_9 = asfloat(ms_in.Load4((_e2 * MS_K_IN)*16));
     float4 _e19 = asfloat(ms_in.Load4(((_e2 * MS_K_IN) + 1u)*16));
-    float3 wo_51 = _e19.xyz;
+    float3 wo_56 = _e19.xyz;
     float4 _e27 = asfloat(ms_in.Load4(((_e2 * MS_K_IN) + 2u)*16));
     const MsMicrofacet _e28 = ms_k_microfacet(r0_9, _e27);
     const MsSample _e30 = ms_sample_dcos(_e28, r0_9.zw);
-    const MsSample _e32 = ms_sample(_e28, wo_51, r0_9.zw);
+    const MsSample _e32 = ms_sample(_e28, wo_56, r0_9.zw);
     ms_out.Store4((_e2 * MS_K_OUT)*16, asuint(float4(_e30.wm, _e30.pdf)));
     ms_out.Store4(((_e2 * MS_K_OUT) + 1u)*16, asuint(float4(_e32.wm, _e32.pdf)));
     return;

@@ -52,7 +52,7 @@
 //! | `MsDielectric` + `ms_dielectric_eval`, `ms_dielectric_pdf`, `ms_dielectric_sample` → `MsBsdfSample` | `bsdf::RoughDielectric` (`Masking::Correlated` or `Separable`; both transports) |
 //! | `MsLutTap` + `ms_lut_tap(x, n)` (texel centres), `ms_lut_tap_edges(x, n)` (edge-aligned nodes), `ms_lut_index`, `ms_lut_lerp`, `ms_lut_bilerp`, `ms_lut_roughness_coord(α, α_max)` | `scattering::lut::Lut::lookup` (`Nodes::Centres`, clamp-to-edge; `Nodes::Edges`) |
 //! | `ms_kulla_conty_f_ms(F_avg, E_avg)`, `ms_kulla_conty_lobe(E(μo), E(μi), E_avg)`, `ms_conductor_eval_kulla_conty`, `ms_conductor_pdf_kulla_conty`, `ms_conductor_sample_kulla_conty` + `ms_kulla_conty_sample_f` (E(μi) at the sampled wi); `ms_turquin_scale(E(μo), F0)`, `ms_conductor_eval_turquin`, `ms_conductor_sample_turquin` (pdf: `ms_conductor_pdf`) | `scattering::CompensatedConductor` (`Scheme::KullaConty`, `Scheme::Turquin`) `eval`, `pdf`, `sample` |
-//! | `ms_lut_index3`, `ms_lut_eta_coord(η)` (√((η − 1)/2)), `ms_lut_trilerp`, `ms_lut_bilerp_eta`; `ms_dielectric_kulla_conty_k`, `ms_dielectric_kulla_conty_lobe`, `ms_dielectric_eval_kulla_conty`, `ms_dielectric_eval_turquin` (over `LutKind::Dielectric` and `DielectricAvg`, E = R + T) | `Lut::lookup`; `scattering::CompensatedDielectric` `eval` (pdf and sample not yet in WGSL) |
+//! | `ms_lut_index3`, `ms_lut_eta_coord(η)` (√((η − 1)/2)), `ms_lut_trilerp`, `ms_lut_bilerp_eta`; `ms_dielectric_kulla_conty_k`, `ms_dielectric_kulla_conty_lobe`, `ms_dielectric_eval_kulla_conty`, `ms_dielectric_kulla_conty_lobe_pdf`, `ms_dielectric_pdf_kulla_conty`, `ms_dielectric_sample_kulla_conty` + `ms_dielectric_kulla_conty_sample_f` (E_t(μi) of the sampled side); `ms_dielectric_eval_turquin`, `ms_dielectric_sample_turquin` (pdf: `ms_dielectric_pdf`) (over `LutKind::Dielectric` and `DielectricAvg`, E = R + T) | `Lut::lookup`; `scattering::CompensatedDielectric` (`Scheme::KullaConty`, `Scheme::Turquin`) `eval`, `pdf`, `sample` |
 //! | `ms_reflect`, `ms_refract`, `ms_half_vector_reflection`, `ms_half_vector_refraction`, `ms_jacobian_refraction` | `bsdf::frame` |
 //!
 //! Conventions are the Rust crate's: unit directions in the local shading frame (z = the
@@ -91,6 +91,24 @@
 //! own cubic √μ table, not `lut`'s): the GPU's values differ from the Rust type's by the
 //! single-scattering part's own difference plus f32 roundings of the compensation, no more
 //! (at most 0.58 of that bound); the pdf integrates to q + (1 − q)∫pdf_ss within 4e-8.
+//!
+//! The compensated dielectric samples as its Rust type too: from wo's side s, the added lobes
+//! with probability q = 1 − E_s(μo), across the surface with probability k_s within them
+//! (each a cosine-weighted direction on its side), the single-scattering sample otherwise; pdf
+//! (1 − q) pdf_ss + q ((1 − k_s) on wo's side, k_s across)|cos θi|/π. E_s(μo) and k_s depend on
+//! wo only; the sampler's f is the single-scattering one, and
+//! `ms_dielectric_kulla_conty_sample_f` adds the lobe with E_t(|cos θi|) and E_avg,t of the
+//! sampled side t. Turquin samples as the single-scattering lobes, f over E_s(μo).
+//! `tests/furnace.rs` checks eval, pdf and samples against `CompensatedDielectric<f32, …>`
+//! element by element (GGX; η 1.5 and 1/1.5; α from 0.05 to 1 and an effectively smooth one;
+//! both transports; wo on both sides, normal to grazing; uniforms 0 and 1 − 2⁻²⁴ included), fed
+//! the Rust tables' E, 1 − lost_avg and F_avg as numbers, k formed on the GPU
+//! (`ms_dielectric_kulla_conty_k`): within the single-scattering part's own difference plus f32
+//! roundings of the compensation, derived per element (at most 0.62 of that bound; Turquin's
+//! samples against the Rust type's own samples reach 0.997 of theirs, as any exact scaling
+//! would: there the two single-scattering samples differ by far more than the scale's
+//! roundings, of whose allowance 0.31 is used); the pdf integrates to q + (1 − q)∫pdf_ss
+//! within 3e-8.
 //!
 //! Measured on lavapipe (`tests/furnace.rs`): the filter is within its f32 rounding bound of
 //! `Lut::lookup` (at most a quarter of it, 32 and 64 nodes, 0, 1 and past them included). The

@@ -1,6 +1,7 @@
 // microsurface WGSL library: energy compensation of the rough conductor (compensation.wgsl),
 // as the Rust `scattering::CompensatedConductor` in f32, with its albedo read from the tables
-// of `scattering::lut` (the CLI's `microsurface lut --kind albedo` and `--kind albedo-avg`).
+// of `scattering::lut` (the CLI's `microsurface lut --kind albedo` and `--kind albedo-avg`);
+// the rough dielectric's, as `scattering::CompensatedDielectric`, at the end of the file.
 //
 // The tables. E(μ, α) = the F = 1 single-scattering albedo, row-major [roughness][μ] (μ the
 // inner, fastest index), and E_avg(α) = 2∫E(μ)μ dμ, one value per roughness node. An axis of n
@@ -247,6 +248,15 @@ fn ms_conductor_sample_turquin(c: MsConductor, wo: vec3<f32>, uc: f32, u: vec2<f
 // exactly when E_avg is the average of the looked-up E, so the white furnace (importance
 // transport, reflection + transmission) is 1 + E(μo) − E_l(μo), the table's own filter error.
 // Turquin: the single-scattering lobes scaled by 1/E_s(μo).
+//
+// Sampling, as the Rust type: Kulla–Conty takes the added lobes with probability
+// q = 1 − E_s(μo), transmission within them with probability k_s, each a cosine-weighted
+// direction on its side; the single-scattering sample otherwise; pdf = (1 − q) pdf_ss +
+// q ((1 − k_s) or k_s)|cos θi|/π. As the conductor's, the sampler returns the
+// single-scattering f at its wi, and the including shader adds the lobe with E_t(|cos θi|) of
+// the sampled side (ms_dielectric_kulla_conty_sample_f). Turquin samples and weighs as the
+// single-scattering lobes, f over E_s(μo). e_o and k_o depend on wo only: look them up before
+// sampling.
 
 // The flat index of node (η ie, roughness ir, μ im) within one side's block of a row-major
 // [η][roughness][μ] table (the side's block starts at side · n_eta n_r n_mu).
@@ -342,4 +352,106 @@ fn ms_dielectric_eval_turquin(d: MsDielectric, wo: vec3<f32>, wi: vec3<f32>, e_o
         return f;
     }
     return f / e_o;
+}
+
+// Kulla–Conty's probability density of the dielectric's added lobes at wi (the Rust type's
+// `pdf_ms`): a cosine-weighted direction on wi's side, times that side's probability within
+// the added lobes, k_o across the surface and 1 − k_o on wo's side (k_o = k_s of wo's side s).
+fn ms_dielectric_kulla_conty_lobe_pdf(wo: vec3<f32>, wi: vec3<f32>, k_o: f32) -> f32 {
+    let crossed = (wi.z < 0.0) != (wo.z < 0.0);
+    let side = select(1.0 - k_o, k_o, crossed);
+    return side * abs(wi.z) / MS_PI;
+}
+
+// The Kulla–Conty compensated dielectric's pdf (`CompensatedDielectric::pdf`): the mixture
+// (1 − q) pdf_ss + q ms_dielectric_kulla_conty_lobe_pdf, q = ms_kulla_conty_p_ms(e_o), e_o =
+// E_s(|cos θo|) of wo's side s, k_o = k_s; a smooth interface's 0 (its delta lobes). Turquin's
+// pdf is the single-scattering one, ms_dielectric_pdf.
+fn ms_dielectric_pdf_kulla_conty(d: MsDielectric, wo: vec3<f32>, wi: vec3<f32>, e_o: f32,
+    k_o: f32) -> f32 {
+    let p = ms_dielectric_pdf(d, wo, wi);
+    if ms_dielectric_smooth(d) {
+        return p;
+    }
+    let q = ms_kulla_conty_p_ms(e_o);
+    return (1.0 - q) * p + q * ms_dielectric_kulla_conty_lobe_pdf(wo, wi, k_o);
+}
+
+// The Kulla–Conty compensated dielectric's sample (`CompensatedDielectric::sample`): with
+// probability q = 1 − E_s(μo) (uc < q) the added lobes, across the surface where uc/q < k_o
+// (transmission) and on wo's side otherwise, a cosine-weighted direction from u; else the
+// single-scattering sample (ms_dielectric_sample) from (uc − q)/(1 − q) (at most 1 − 2⁻²⁴) and
+// the same u. A smooth interface's sample is the single-scattering one (delta lobes,
+// MS_SAMPLE_SPECULAR). pdf: ms_dielectric_pdf_kulla_conty at wi (rejected where it is not
+// ms_usable, or wi on the horizon); MS_SAMPLE_TRANSMISSION and eta = η' where wi crossed the
+// surface. f is the single-scattering f at wi, ms_dielectric_eval: the added lobe needs
+// E_t(|cos θi|) of wi's side t at the sampled direction, which the caller looks up and adds
+// with ms_dielectric_kulla_conty_sample_f.
+fn ms_dielectric_sample_kulla_conty(d: MsDielectric, wo: vec3<f32>, uc: f32, u: vec2<f32>,
+    e_o: f32, k_o: f32) -> MsBsdfSample {
+    let none = MsBsdfSample(vec3<f32>(0.0), 0.0, vec3<f32>(0.0), 0u, 1.0);
+    if ms_on_horizon(wo.z) {
+        return none;
+    }
+    if ms_dielectric_smooth(d) {
+        return ms_dielectric_sample(d, wo, uc, u);
+    }
+    let q = ms_kulla_conty_p_ms(e_o);
+    var wi: vec3<f32>;
+    if uc < q {
+        let crossed = uc / q < k_o;
+        wi = ms_cosine_hemisphere(u);
+        if (wo.z > 0.0) == crossed {
+            wi.z = -wi.z;
+        }
+    } else {
+        // (Below 1: the f32 remap could round up to 1, where a total internal reflection,
+        // R = 1, would take the refraction and be rejected.)
+        let s = ms_dielectric_sample(d, wo, min((uc - q) / (1.0 - q), 0.99999994), u);
+        if (s.flags & MS_SAMPLE_VALID) == 0u || (s.flags & MS_SAMPLE_SPECULAR) != 0u {
+            return s;
+        }
+        wi = s.wi;
+    }
+    let pdf = ms_dielectric_pdf_kulla_conty(d, wo, wi, e_o, k_o);
+    if !ms_usable(pdf) || wi.z == 0.0 {
+        return none;
+    }
+    let f = vec3<f32>(ms_dielectric_eval(d, wo, wi));
+    if (wi.z < 0.0) != (wo.z < 0.0) {
+        let etap = select(1.0 / d.eta, d.eta, wo.z > 0.0);
+        return MsBsdfSample(wi, pdf, f, MS_SAMPLE_VALID | MS_SAMPLE_TRANSMISSION, etap);
+    }
+    return MsBsdfSample(wi, pdf, f, MS_SAMPLE_VALID, 1.0);
+}
+
+// A ms_dielectric_sample_kulla_conty sample's f completed with the added lobe:
+// + ms_dielectric_kulla_conty_lobe(d, wo, s.wi, e_o, e_i, e_avg_i, k_o), e_i = E_t(|cos θi|)
+// and e_avg_i = E_avg,t of the side t of s.wi (a delta or rejected sample as it is). Equal to
+// ms_dielectric_eval_kulla_conty at s.wi.
+fn ms_dielectric_kulla_conty_sample_f(s: MsBsdfSample, d: MsDielectric, wo: vec3<f32>,
+    e_o: f32, e_i: f32, e_avg_i: f32, k_o: f32) -> MsBsdfSample {
+    if (s.flags & MS_SAMPLE_VALID) == 0u || (s.flags & MS_SAMPLE_SPECULAR) != 0u {
+        return s;
+    }
+    let lobe = ms_dielectric_kulla_conty_lobe(d, wo, s.wi, e_o, e_i, e_avg_i, k_o);
+    return MsBsdfSample(s.wi, s.pdf, s.f + lobe, s.flags, s.eta);
+}
+
+// The Turquin compensated dielectric's sample (`CompensatedDielectric::sample`,
+// Scheme::Turquin): the single-scattering sample with its own f over e_o = E_s(|cos θo|) of
+// wo's side (as it is where e_o is not positive; a delta lobe as it is; a scaled f that
+// overflows is rejected); the pdf is ms_dielectric_pdf.
+fn ms_dielectric_sample_turquin(d: MsDielectric, wo: vec3<f32>, uc: f32, u: vec2<f32>,
+    e_o: f32) -> MsBsdfSample {
+    let s = ms_dielectric_sample(d, wo, uc, u);
+    if (s.flags & MS_SAMPLE_VALID) == 0u || (s.flags & MS_SAMPLE_SPECULAR) != 0u
+        || !(e_o > 0.0) {
+        return s;
+    }
+    let f = s.f / e_o;
+    if !all(f <= vec3<f32>(3.4028235e38)) {
+        return MsBsdfSample(vec3<f32>(0.0), 0.0, vec3<f32>(0.0), 0u, 1.0);
+    }
+    return MsBsdfSample(s.wi, s.pdf, f, s.flags, s.eta);
 }

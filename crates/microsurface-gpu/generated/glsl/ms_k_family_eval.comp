@@ -132,21 +132,21 @@ vec2 ms_cos_sin_turn(float v) {
     float r_3 = (v - (0.25 * k_9));
     float x_14 = (MS_TAU * r_3);
     float x2_ = (x_14 * x_14);
-    float s_9 = (x_14 * (1.0 + (x2_ * (-0.16666667 + (x2_ * (0.008333333 + (x2_ * (-0.0001984127 + (x2_ * 2.7557319e-6)))))))));
+    float s_10 = (x_14 * (1.0 + (x2_ * (-0.16666667 + (x2_ * (0.008333333 + (x2_ * (-0.0001984127 + (x2_ * 2.7557319e-6)))))))));
     float c_16 = (1.0 + (x2_ * (-0.5 + (x2_ * (0.041666668 + (x2_ * (-0.0013888889 + (x2_ * (2.4801588e-5 + (x2_ * -2.755732e-7))))))))));
     int q_2 = (int(k_9) & 3);
     if ((q_2 == 0)) {
-        return vec2(c_16, s_9);
+        return vec2(c_16, s_10);
     } else {
         if ((q_2 == 1)) {
-            return vec2(-(s_9), c_16);
+            return vec2(-(s_10), c_16);
         } else {
             if ((q_2 == 2)) {
-                return vec2(-(c_16), -(s_9));
+                return vec2(-(c_16), -(s_10));
             }
         }
     }
-    return vec2(s_9, -(c_16));
+    return vec2(s_10, -(c_16));
 }
 
 vec3 ms_rescaled(vec3 a) {
@@ -221,9 +221,9 @@ vec3 ms_unit_normal(vec3 v_1) {
     if ((m_8 == 0.0)) {
         return vec3(0.0, 0.0, 1.0);
     }
-    vec3 s_10 = (v_1 / vec3(m_8));
-    float _e30 = ms_dot(s_10, s_10);
-    return (s_10 * (1.0 / sqrt(_e30)));
+    vec3 s_11 = (v_1 / vec3(m_8));
+    float _e30 = ms_dot(s_11, s_11);
+    return (s_11 * (1.0 / sqrt(_e30)));
 }
 
 vec3 ms_reflect(vec3 wo, vec3 n) {
@@ -236,11 +236,11 @@ bool ms_same_hemisphere(vec3 a_3, vec3 b_1) {
 }
 
 vec3 ms_half_vector_reflection(vec3 wo_1, vec3 wi) {
-    vec3 s_11 = (wo_1 + wi);
-    if (!((max(abs(s_11.x), max(abs(s_11.y), abs(s_11.z))) > 0.0))) {
+    vec3 s_12 = (wo_1 + wi);
+    if (!((max(abs(s_12.x), max(abs(s_12.y), abs(s_12.z))) > 0.0))) {
         return vec3(0.0);
     }
-    vec3 _e16 = ms_normalize(s_11);
+    vec3 _e16 = ms_normalize(s_12);
     if ((_e16.z < 0.0)) {
         return -(_e16);
     }
@@ -427,29 +427,29 @@ float ms_cnorm(vec2 a_5) {
 }
 
 float ms_cnorm_ratio(vec2 a_6, vec2 b_3) {
-    float s_12 = max(max(abs(a_6.x), abs(a_6.y)), max(abs(b_3.x), abs(b_3.y)));
-    if ((s_12 == 0.0)) {
+    float s_13 = max(max(abs(a_6.x), abs(a_6.y)), max(abs(b_3.x), abs(b_3.y)));
+    if ((s_13 == 0.0)) {
         return 0.0;
     }
-    if (!((s_12 <= 3.4028235e38))) {
+    if (!((s_13 <= 3.4028235e38))) {
         float _e19 = ms_cnorm(a_6);
         float _e20 = ms_cnorm(b_3);
         return (_e19 / _e20);
     }
-    float _e24 = ms_cnorm((a_6 / vec2(s_12)));
-    float _e27 = ms_cnorm((b_3 / vec2(s_12)));
+    float _e24 = ms_cnorm((a_6 / vec2(s_13)));
+    float _e27 = ms_cnorm((b_3 / vec2(s_13)));
     return (_e24 / _e27);
 }
 
 vec2 ms_crecip(vec2 a_7) {
     if ((abs(a_7.x) >= abs(a_7.y))) {
         float r_4 = (a_7.y / a_7.x);
-        float d_12 = (a_7.x + (a_7.y * r_4));
-        return vec2((1.0 / d_12), (-(r_4) / d_12));
+        float d_16 = (a_7.x + (a_7.y * r_4));
+        return vec2((1.0 / d_16), (-(r_4) / d_16));
     }
     float r_5 = (a_7.x / a_7.y);
-    float d_13 = ((a_7.x * r_5) + a_7.y);
-    return vec2((r_5 / d_13), (-1.0 / d_13));
+    float d_17 = ((a_7.x * r_5) + a_7.y);
+    return vec2((r_5 / d_17), (-1.0 / d_17));
 }
 
 vec2 ms_csqrt(vec2 a_8) {
@@ -694,8 +694,8 @@ vec3 ms_ggx_sample_wm(vec3 w_in, vec2 alpha_7, vec2 u_2) {
     float _e12 = w_8.x;
     float _e16 = w_8.y;
     float _e19 = w_8.z;
-    vec3 s_13 = vec3((alpha_7.x * _e12), (alpha_7.y * _e16), _e19);
-    float n2_ = (((s_13.x * s_13.x) + (s_13.y * s_13.y)) + (s_13.z * s_13.z));
+    vec3 s_14 = vec3((alpha_7.x * _e12), (alpha_7.y * _e16), _e19);
+    float n2_ = (((s_14.x * s_14.x) + (s_14.y * s_14.y)) + (s_14.z * s_14.z));
     if ((n2_ >= 1e-24)) {
         local_8 = (n2_ <= 1e24);
     } else {
@@ -708,12 +708,12 @@ vec3 ms_ggx_sample_wm(vec3 w_in, vec2 alpha_7, vec2 u_2) {
         float _e45 = w_8.x;
         float _e49 = w_8.y;
         float _e54 = w_8.z;
-        float d_14 = (((_e42.x * _e45) + (_e42.y * _e49)) + (_e42.z * _e54));
+        float d_18 = (((_e42.x * _e45) + (_e42.y * _e49)) + (_e42.z * _e54));
         float _e58 = w_8.x;
         float _e61 = w_8.y;
         float _e65 = w_8.z;
         float l1_ = ((abs(_e58) + abs(_e61)) + abs(_e65));
-        if ((d_14 > (2.4e-7 * l1_))) {
+        if ((d_18 > (2.4e-7 * l1_))) {
             return _e42;
         }
         vec3 _e71 = w_8;
@@ -771,9 +771,9 @@ MsBoundedCap ms_ggx_bounded_cap(vec3 w_10, vec2 alpha_11) {
     float _e30 = v_2.x;
     float _e33 = v_2.y;
     float _e35 = v_2.y;
-    float s_14 = (1.0 + sqrt(((_e28 * _e30) + (_e33 * _e35))));
+    float s_15 = (1.0 + sqrt(((_e28 * _e30) + (_e33 * _e35))));
     float a2_ = (a_19 * a_19);
-    float s2_ = (s_14 * s_14);
+    float s2_ = (s_15 * s_15);
     float _e44 = v_2.z;
     float _e47 = v_2.z;
     float den_2 = (s2_ + ((a2_ * _e44) * _e47));
@@ -1171,11 +1171,11 @@ float ms_beckmann_lambda_cot(float a_13) {
 float ms_beckmann_lambda(vec3 w_14, vec2 alpha_16) {
     float x_20 = (alpha_16.x * w_14.x);
     float y_8 = (alpha_16.y * w_14.y);
-    float s_15 = sqrt(((x_20 * x_20) + (y_8 * y_8)));
-    if (!((s_15 > 0.0))) {
+    float s_16 = sqrt(((x_20 * x_20) + (y_8 * y_8)));
+    if (!((s_16 > 0.0))) {
         return 0.0;
     }
-    float _e19 = ms_beckmann_lambda_cot((abs(w_14.z) / s_15));
+    float _e19 = ms_beckmann_lambda_cot((abs(w_14.z) / s_16));
     return _e19;
 }
 
@@ -1476,10 +1476,10 @@ float ms_double_ggx_lambda(vec3 w_19, vec2 alpha_25) {
     bool local_14 = false;
     float a_16 = 0.0;
     bool local_15 = false;
-    float u_29 = abs(w_19.z);
+    float u_31 = abs(w_19.z);
     if ((alpha_25.x == alpha_25.y)) {
         float a_21 = alpha_25.x;
-        x_8 = ((((0.5 * a_21) * a_21) * ((1.0 - u_29) * (1.0 + u_29))) / (u_29 * u_29));
+        x_8 = ((((0.5 * a_21) * a_21) * ((1.0 - u_31) * (1.0 + u_31))) / (u_31 * u_31));
     } else {
         float sx_3 = (alpha_25.x * w_19.x);
         float sy_2 = (alpha_25.y * w_19.y);
@@ -1510,7 +1510,7 @@ float ms_double_ggx_lambda(vec3 w_19, vec2 alpha_25) {
         a_16 = sqrt((((((alpha_25.x * alpha_25.x) * w_19.x) * w_19.x) + (((alpha_25.y * alpha_25.y) * w_19.y) * w_19.y)) / s2_1));
     }
     float _e82 = a_16;
-    float _e83 = ms_dg_lambda_ends(u_29, _e82);
+    float _e83 = ms_dg_lambda_ends(u_31, _e82);
     return _e83;
 }
 
@@ -1746,9 +1746,9 @@ float ms_exp_lambda_z(float z_1) {
         uint i_8 = (2u * uint(_e19.x));
         vec4 lo_4 = _group_1_binding_0_cs[(MS_EXP_FAR_AT + i_8)];
         vec4 hi_3 = _group_1_binding_0_cs[((MS_EXP_FAR_AT + i_8) + 1u)];
-        float s_16 = _e19.y;
-        float s2_3 = (s_16 * s_16);
-        float p_3 = (((lo_4.x + (lo_4.y * s_16)) + ((lo_4.z + (lo_4.w * s_16)) * s2_3)) + (((hi_3.x + (hi_3.y * s_16)) + (hi_3.z * s2_3)) * (s2_3 * s2_3)));
+        float s_17 = _e19.y;
+        float s2_3 = (s_17 * s_17);
+        float p_3 = (((lo_4.x + (lo_4.y * s_17)) + ((lo_4.z + (lo_4.w * s_17)) * s2_3)) + (((hi_3.x + (hi_3.y * s_17)) + (hi_3.z * s2_3)) * (s2_3 * s2_3)));
         return (p_3 * exp(-(z_1)));
     }
     if ((z_1 != z_1)) {
@@ -1762,10 +1762,10 @@ float ms_exponential_lambda(vec3 w_24, vec2 alpha_35) {
     bool local_19 = false;
     float a_17 = 0.0;
     bool local_20 = false;
-    float u_30 = abs(w_24.z);
+    float u_32 = abs(w_24.z);
     if ((alpha_35.x == alpha_35.y)) {
         float a_22 = alpha_35.x;
-        q_1 = (((4.0 * u_30) * u_30) / ((a_22 * a_22) * ((1.0 - u_30) * (1.0 + u_30))));
+        q_1 = (((4.0 * u_32) * u_32) / ((a_22 * a_22) * ((1.0 - u_32) * (1.0 + u_32))));
     } else {
         float sx_5 = (alpha_35.x * w_24.x);
         float sy_4 = (alpha_35.y * w_24.y);
@@ -1796,7 +1796,7 @@ float ms_exponential_lambda(vec3 w_24, vec2 alpha_35) {
         a_17 = sqrt((((((alpha_35.x * alpha_35.x) * w_24.x) * w_24.x) + (((alpha_35.y * alpha_35.y) * w_24.y) * w_24.y)) / s2_4));
     }
     float _e83 = a_17;
-    float _e92 = ms_exp_lambda_z(((u_30 + u_30) / (_e83 * sqrt(((1.0 - u_30) * (1.0 + u_30))))));
+    float _e92 = ms_exp_lambda_z(((u_32 + u_32) / (_e83 * sqrt(((1.0 - u_32) * (1.0 + u_32))))));
     return _e92;
 }
 
@@ -1971,8 +1971,8 @@ vec3 ms_exponential_sample_wm(vec3 w_in_4, vec2 alpha_43, vec2 u_17) {
             float _e73 = ms_stream_next(state_9);
             float prod = ((1.0 - _e70) * (1.0 - _e73));
             float _e77 = v0_;
-            float d_15 = ((_e77 * total) - e_9);
-            if ((d_15 < 0.0)) {
+            float d_19 = ((_e77 * total) - e_9);
+            if ((d_19 < 0.0)) {
                 float r_19 = (-0.5 * log(prod));
                 float _e85 = v0_;
                 float turn = (_e85 * inv_p_1);
@@ -1993,7 +1993,7 @@ vec3 ms_exponential_sample_wm(vec3 w_in_4, vec2 alpha_43, vec2 u_17) {
             } else {
                 float _e108 = ms_stream_next(state_9);
                 float r_20 = (-0.5 * log((prod * (1.0 - _e108))));
-                float one_plus = (2.0 * (d_15 * inv_g));
+                float one_plus = (2.0 * (d_19 * inv_g));
                 float _e118 = v0_;
                 float one_minus = ((2.0 * (1.0 - _e118)) * (total * inv_g));
                 x_9 = (r_20 * sqrt(max((one_minus * one_plus), 0.0)));
@@ -2040,8 +2040,8 @@ float ms_shape_lambda_z(uint table, float z_2) {
         uint i_9 = ((table + MS_SHAPE_HEADER) + (2u * uint(_e18.x)));
         vec4 lo_5 = _group_1_binding_0_cs[i_9];
         vec4 hi_4 = _group_1_binding_0_cs[(i_9 + 1u)];
-        float s_17 = _e18.y;
-        float p_5 = ((((((((hi_4.x * s_17) + lo_5.w) * s_17) + lo_5.z) * s_17) + lo_5.y) * s_17) + lo_5.x);
+        float s_18 = _e18.y;
+        float p_5 = ((((((((hi_4.x * s_18) + lo_5.w) * s_18) + lo_5.z) * s_18) + lo_5.y) * s_18) + lo_5.x);
         if ((head.z > 0.5)) {
             return p_5;
         }
@@ -2112,8 +2112,8 @@ float ms_ln_gamma_variate(float k_in, inout uvec2 state_12) {
         k_5 = (_e12 + 1.0);
     }
     float _e15 = k_5;
-    float d_16 = (_e15 - 0.33333334);
-    float c_21 = (1.0 / sqrt((9.0 * d_16)));
+    float d_20 = (_e15 - 0.33333334);
+    float c_21 = (1.0 / sqrt((9.0 * d_20)));
     bool loop_init_5 = true;
     while(true) {
         if (!loop_init_5) {
@@ -2141,10 +2141,10 @@ float ms_ln_gamma_variate(float k_in, inout uvec2 state_12) {
             float _e42 = ms_stream_next_positive(state_12);
             float _e48 = v_6;
             float _e51 = v_6;
-            if ((log(_e42) < (((((0.5 * _e29) * _e29) + d_16) - (d_16 * _e48)) + (d_16 * log(_e51))))) {
+            if ((log(_e42) < (((((0.5 * _e29) * _e29) + d_20) - (d_20 * _e48)) + (d_20 * log(_e51))))) {
                 float _e57 = v_6;
                 float _e60 = boost;
-                return ((log(d_16) + log(_e57)) + _e60);
+                return ((log(d_20) + log(_e57)) + _e60);
             }
         }
     }
@@ -2766,10 +2766,10 @@ MsBsdfSample ms_conductor_sample(MsConductor c_10, vec3 wo_25, float uc, vec2 u_
     }
     bool _e15 = ms_effectively_smooth(c_10.mf);
     if (_e15) {
-        vec3 wi_38 = vec3(-(wo_25.x), -(wo_25.y), wo_25.z);
-        float k_11 = (1.0 / abs(wi_38.z));
+        vec3 wi_41 = vec3(-(wo_25.x), -(wo_25.y), wo_25.z);
+        float k_11 = (1.0 / abs(wi_41.z));
         vec3 _e29 = ms_fresnel_eval(c_10.fresnel, abs(wo_25.z));
-        return MsBsdfSample(wi_38, 1.0, (_e29 * k_11), 3u, 1.0);
+        return MsBsdfSample(wi_41, 1.0, (_e29 * k_11), 3u, 1.0);
     }
     MsSample _e36 = ms_sample(c_10.mf, wo_25, u_24);
     vec3 _e38 = ms_reflect(wo_25, _e36.wm);
@@ -2934,27 +2934,27 @@ MsBsdfSample ms_dielectric_sample_smooth(MsDielectric d_7, vec3 wo_31, float uc_
     float f_3 = 0.0;
     float _e5 = ms_fresnel_dielectric(wo_31.z, d_7.eta);
     if ((uc_1 < _e5)) {
-        vec3 wi_39 = vec3(-(wo_31.x), -(wo_31.y), wo_31.z);
-        return MsBsdfSample(wi_39, _e5, vec3((_e5 / abs(wi_39.z))), 3u, 1.0);
+        vec3 wi_42 = vec3(-(wo_31.x), -(wo_31.y), wo_31.z);
+        return MsBsdfSample(wi_42, _e5, vec3((_e5 / abs(wi_42.z))), 3u, 1.0);
     }
     MsBsdfSample none_2 = MsBsdfSample(vec3(0.0), 0.0, vec3(0.0), 0u, 1.0);
     vec4 _e33 = ms_refract(wo_31, vec3(0.0, 0.0, 1.0), d_7.eta);
     if ((_e33.w == 0.0)) {
         return none_2;
     }
-    vec3 wi_40 = _e33.xyz;
-    bool _e39 = ms_on_horizon(wi_40.z);
+    vec3 wi_43 = _e33.xyz;
+    bool _e39 = ms_on_horizon(wi_43.z);
     if (_e39) {
         return none_2;
     }
     float t_13 = (1.0 - _e5);
-    f_3 = (t_13 / abs(wi_40.z));
+    f_3 = (t_13 / abs(wi_43.z));
     if ((d_7.transport == MS_TRANSPORT_RADIANCE)) {
         float _e49 = f_3;
         f_3 = (_e49 / (_e33.w * _e33.w));
     }
     float _e54 = f_3;
-    return MsBsdfSample(wi_40, t_13, vec3(_e54), 7u, _e33.w);
+    return MsBsdfSample(wi_43, t_13, vec3(_e54), 7u, _e33.w);
 }
 
 MsBsdfSample ms_dielectric_sample(MsDielectric d_8, vec3 wo_32, float uc_2, vec2 u_25) {
@@ -3013,11 +3013,11 @@ MsBsdfSample ms_dielectric_sample(MsDielectric d_8, vec3 wo_32, float uc_2, vec2
     if ((_e62.w == 0.0)) {
         return none_3;
     }
-    vec3 wi_41 = _e62.xyz;
+    vec3 wi_44 = _e62.xyz;
     float etap_6 = _e62.w;
-    bool _e68 = ms_same_hemisphere(wo_32, wi_41);
+    bool _e68 = ms_same_hemisphere(wo_32, wi_44);
     if (!(_e68)) {
-        bool _e73 = ms_on_horizon(wi_41.z);
+        bool _e73 = ms_on_horizon(wi_44.z);
         local_41 = _e73;
     } else {
         local_41 = true;
@@ -3027,14 +3027,14 @@ MsBsdfSample ms_dielectric_sample(MsDielectric d_8, vec3 wo_32, float uc_2, vec2
         return none_3;
     }
     float t_14 = (1.0 - _e21);
-    float _e80 = ms_jacobian_refraction(wo_32, wi_41, wm_25, etap_6);
+    float _e80 = ms_jacobian_refraction(wo_32, wi_44, wm_25, etap_6);
     float pdf_2 = ((_e17.pdf * t_14) * _e80);
     float _e83 = ms_d(d_8.mf, wm_25);
     bool _e84 = ms_usable(_e83);
     if (!(_e84)) {
         return none_3;
     }
-    float _e86 = ms_dielectric_f_transmission(d_8, wo_32, wi_41, wm_25, _e83, etap_6, t_14);
+    float _e86 = ms_dielectric_f_transmission(d_8, wo_32, wi_44, wm_25, _e83, etap_6, t_14);
     bool _e87 = ms_usable(pdf_2);
     if (!(!(_e87))) {
         local_42 = !((_e86 <= 3.4028235e38));
@@ -3045,7 +3045,7 @@ MsBsdfSample ms_dielectric_sample(MsDielectric d_8, vec3 wo_32, float uc_2, vec2
     if (_e96) {
         return none_3;
     }
-    return MsBsdfSample(wi_41, pdf_2, vec3(_e86), 5u, etap_6);
+    return MsBsdfSample(wi_44, pdf_2, vec3(_e86), 5u, etap_6);
 }
 
 MsLutTap ms_lut_tap(float x_12, uint n_8) {
@@ -3371,6 +3371,126 @@ float ms_dielectric_eval_turquin(MsDielectric d_11, vec3 wo_42, vec3 wi_37, floa
     return (_e4 / e_o_11);
 }
 
+float ms_dielectric_kulla_conty_lobe_pdf(vec3 wo_43, vec3 wi_38, float k_o_2) {
+    bool crossed_1 = ((wi_38.z < 0.0) != (wo_43.z < 0.0));
+    float side = (crossed_1 ? k_o_2 : (1.0 - k_o_2));
+    return ((side * abs(wi_38.z)) / MS_PI);
+}
+
+float ms_dielectric_pdf_kulla_conty(MsDielectric d_12, vec3 wo_44, vec3 wi_39, float e_o_12, float k_o_3) {
+    float _e5 = ms_dielectric_pdf(d_12, wo_44, wi_39);
+    bool _e6 = ms_dielectric_smooth(d_12);
+    if (_e6) {
+        return _e5;
+    }
+    float _e7 = ms_kulla_conty_p_ms(e_o_12);
+    float _e11 = ms_dielectric_kulla_conty_lobe_pdf(wo_44, wi_39, k_o_3);
+    return (((1.0 - _e7) * _e5) + (_e7 * _e11));
+}
+
+MsBsdfSample ms_dielectric_sample_kulla_conty(MsDielectric d_13, vec3 wo_45, float uc_5, vec2 u_29, float e_o_13, float k_o_4) {
+    vec3 wi_40 = vec3(0.0);
+    bool local_51 = false;
+    bool local_52 = false;
+    MsBsdfSample none_5 = MsBsdfSample(vec3(0.0), 0.0, vec3(0.0), 0u, 1.0);
+    bool _e15 = ms_on_horizon(wo_45.z);
+    if (_e15) {
+        return none_5;
+    }
+    bool _e16 = ms_dielectric_smooth(d_13);
+    if (_e16) {
+        MsBsdfSample _e17 = ms_dielectric_sample(d_13, wo_45, uc_5, u_29);
+        return _e17;
+    }
+    float _e18 = ms_kulla_conty_p_ms(e_o_13);
+    if ((uc_5 < _e18)) {
+        bool crossed_2 = ((uc_5 / _e18) < k_o_4);
+        vec3 _e23 = ms_cosine_hemisphere(u_29);
+        wi_40 = _e23;
+        if (((wo_45.z > 0.0) == crossed_2)) {
+            float _e30 = wi_40.z;
+            wi_40.z = -(_e30);
+        }
+    } else {
+        MsBsdfSample _e38 = ms_dielectric_sample(d_13, wo_45, min(((uc_5 - _e18) / (1.0 - _e18)), 0.99999994), u_29);
+        if (!(((_e38.flags & MS_SAMPLE_VALID) == 0u))) {
+            local_51 = ((_e38.flags & MS_SAMPLE_SPECULAR) != 0u);
+        } else {
+            local_51 = true;
+        }
+        bool _e53 = local_51;
+        if (_e53) {
+            return _e38;
+        }
+        wi_40 = _e38.wi;
+    }
+    vec3 _e55 = wi_40;
+    float _e56 = ms_dielectric_pdf_kulla_conty(d_13, wo_45, _e55, e_o_13, k_o_4);
+    bool _e57 = ms_usable(_e56);
+    if (!(!(_e57))) {
+        float _e63 = wi_40.z;
+        local_52 = (_e63 == 0.0);
+    } else {
+        local_52 = true;
+    }
+    bool _e67 = local_52;
+    if (_e67) {
+        return none_5;
+    }
+    vec3 _e68 = wi_40;
+    float _e69 = ms_dielectric_eval(d_13, wo_45, _e68);
+    vec3 f_7 = vec3(_e69);
+    float _e72 = wi_40.z;
+    if (((_e72 < 0.0) != (wo_45.z < 0.0))) {
+        float etap_8 = ((wo_45.z > 0.0) ? d_13.eta : (1.0 / d_13.eta));
+        vec3 _e87 = wi_40;
+        return MsBsdfSample(_e87, _e56, f_7, 5u, etap_8);
+    }
+    vec3 _e90 = wi_40;
+    return MsBsdfSample(_e90, _e56, f_7, MS_SAMPLE_VALID, 1.0);
+}
+
+MsBsdfSample ms_dielectric_kulla_conty_sample_f(MsBsdfSample s_9, MsDielectric d_14, vec3 wo_46, float e_o_14, float e_i_5, float e_avg_i_2, float k_o_5) {
+    bool local_53 = false;
+    if (!(((s_9.flags & MS_SAMPLE_VALID) == 0u))) {
+        local_53 = ((s_9.flags & MS_SAMPLE_SPECULAR) != 0u);
+    } else {
+        local_53 = true;
+    }
+    bool _e21 = local_53;
+    if (_e21) {
+        return s_9;
+    }
+    float _e23 = ms_dielectric_kulla_conty_lobe(d_14, wo_46, s_9.wi, e_o_14, e_i_5, e_avg_i_2, k_o_5);
+    return MsBsdfSample(s_9.wi, s_9.pdf, (s_9.f + vec3(_e23)), s_9.flags, s_9.eta);
+}
+
+MsBsdfSample ms_dielectric_sample_turquin(MsDielectric d_15, vec3 wo_47, float uc_6, vec2 u_30, float e_o_15) {
+    bool local_54 = false;
+    bool local_55 = false;
+    MsBsdfSample _e5 = ms_dielectric_sample(d_15, wo_47, uc_6, u_30);
+    if (!(((_e5.flags & MS_SAMPLE_VALID) == 0u))) {
+        local_54 = ((_e5.flags & MS_SAMPLE_SPECULAR) != 0u);
+    } else {
+        local_54 = true;
+    }
+    bool _e20 = local_54;
+    if (!(_e20)) {
+        local_55 = !((e_o_15 > 0.0));
+    } else {
+        local_55 = true;
+    }
+    bool _e28 = local_55;
+    if (_e28) {
+        return _e5;
+    }
+    vec3 f_8 = (_e5.f / vec3(e_o_15));
+    if (!(all(lessThanEqual(f_8, vec3(3.4028235e38))))) {
+        return MsBsdfSample(vec3(0.0), 0.0, vec3(0.0), 0u, 1.0);
+    }
+    return MsBsdfSample(_e5.wi, _e5.pdf, f_8, _e5.flags, _e5.eta);
+}
+
 uint ms_k_index(uvec3 id_13, uvec3 groups_13) {
     uint i_12 = (id_13.x + ((id_13.y * groups_13.x) * 64u));
     uint n_13 = (uint(_group_0_binding_0_cs.length()) / MS_K_IN);
@@ -3412,17 +3532,17 @@ void main() {
     }
     vec4 r0_3 = _group_0_binding_0_cs[(_e2 * MS_K_IN)];
     vec4 _e19 = _group_0_binding_0_cs[((_e2 * MS_K_IN) + 1u)];
-    vec3 wo_43 = _e19.xyz;
+    vec3 wo_48 = _e19.xyz;
     vec4 r2_3 = _group_0_binding_0_cs[((_e2 * MS_K_IN) + 2u)];
     vec3 wm_27 = r2_3.xyz;
     MsMicrofacet _e29 = ms_k_microfacet(r0_3, r2_3);
     float _e34 = ms_d(_e29, wm_27);
-    float _e35 = ms_lambda(_e29, wo_43);
-    float _e36 = ms_g1_(_e29, wo_43);
-    float _e37 = ms_g2_(_e29, wo_43, wm_27);
+    float _e35 = ms_lambda(_e29, wo_48);
+    float _e36 = ms_g1_(_e29, wo_48);
+    float _e37 = ms_g2_(_e29, wo_48, wm_27);
     _group_0_binding_1_cs[(_e2 * MS_K_OUT)] = vec4(_e34, _e35, _e36, _e37);
-    float _e45 = ms_g2_separable(_e29, wo_43, wm_27);
-    float _e46 = ms_pdf(_e29, wo_43, wm_27);
+    float _e45 = ms_g2_separable(_e29, wo_48, wm_27);
+    float _e46 = ms_pdf(_e29, wo_48, wm_27);
     float _e47 = ms_pdf_dcos(_e29, wm_27);
     float _e48 = ms_g1_(_e29, wm_27);
     _group_0_binding_1_cs[((_e2 * MS_K_OUT) + 1u)] = vec4(_e45, _e46, _e47, _e48);

@@ -130,21 +130,21 @@ vec2 ms_cos_sin_turn(float v) {
     float r_3 = (v - (0.25 * k_9));
     float x_14 = (MS_TAU * r_3);
     float x2_ = (x_14 * x_14);
-    float s_9 = (x_14 * (1.0 + (x2_ * (-0.16666667 + (x2_ * (0.008333333 + (x2_ * (-0.0001984127 + (x2_ * 2.7557319e-6)))))))));
+    float s_10 = (x_14 * (1.0 + (x2_ * (-0.16666667 + (x2_ * (0.008333333 + (x2_ * (-0.0001984127 + (x2_ * 2.7557319e-6)))))))));
     float c_16 = (1.0 + (x2_ * (-0.5 + (x2_ * (0.041666668 + (x2_ * (-0.0013888889 + (x2_ * (2.4801588e-5 + (x2_ * -2.755732e-7))))))))));
     int q_2 = (int(k_9) & 3);
     if ((q_2 == 0)) {
-        return vec2(c_16, s_9);
+        return vec2(c_16, s_10);
     } else {
         if ((q_2 == 1)) {
-            return vec2(-(s_9), c_16);
+            return vec2(-(s_10), c_16);
         } else {
             if ((q_2 == 2)) {
-                return vec2(-(c_16), -(s_9));
+                return vec2(-(c_16), -(s_10));
             }
         }
     }
-    return vec2(s_9, -(c_16));
+    return vec2(s_10, -(c_16));
 }
 
 vec3 ms_rescaled(vec3 a) {
@@ -219,9 +219,9 @@ vec3 ms_unit_normal(vec3 v_1) {
     if ((m_8 == 0.0)) {
         return vec3(0.0, 0.0, 1.0);
     }
-    vec3 s_10 = (v_1 / vec3(m_8));
-    float _e30 = ms_dot(s_10, s_10);
-    return (s_10 * (1.0 / sqrt(_e30)));
+    vec3 s_11 = (v_1 / vec3(m_8));
+    float _e30 = ms_dot(s_11, s_11);
+    return (s_11 * (1.0 / sqrt(_e30)));
 }
 
 vec3 ms_reflect(vec3 wo, vec3 n) {
@@ -234,11 +234,11 @@ bool ms_same_hemisphere(vec3 a_3, vec3 b_1) {
 }
 
 vec3 ms_half_vector_reflection(vec3 wo_1, vec3 wi) {
-    vec3 s_11 = (wo_1 + wi);
-    if (!((max(abs(s_11.x), max(abs(s_11.y), abs(s_11.z))) > 0.0))) {
+    vec3 s_12 = (wo_1 + wi);
+    if (!((max(abs(s_12.x), max(abs(s_12.y), abs(s_12.z))) > 0.0))) {
         return vec3(0.0);
     }
-    vec3 _e16 = ms_normalize(s_11);
+    vec3 _e16 = ms_normalize(s_12);
     if ((_e16.z < 0.0)) {
         return -(_e16);
     }
@@ -425,29 +425,29 @@ float ms_cnorm(vec2 a_5) {
 }
 
 float ms_cnorm_ratio(vec2 a_6, vec2 b_3) {
-    float s_12 = max(max(abs(a_6.x), abs(a_6.y)), max(abs(b_3.x), abs(b_3.y)));
-    if ((s_12 == 0.0)) {
+    float s_13 = max(max(abs(a_6.x), abs(a_6.y)), max(abs(b_3.x), abs(b_3.y)));
+    if ((s_13 == 0.0)) {
         return 0.0;
     }
-    if (!((s_12 <= 3.4028235e38))) {
+    if (!((s_13 <= 3.4028235e38))) {
         float _e19 = ms_cnorm(a_6);
         float _e20 = ms_cnorm(b_3);
         return (_e19 / _e20);
     }
-    float _e24 = ms_cnorm((a_6 / vec2(s_12)));
-    float _e27 = ms_cnorm((b_3 / vec2(s_12)));
+    float _e24 = ms_cnorm((a_6 / vec2(s_13)));
+    float _e27 = ms_cnorm((b_3 / vec2(s_13)));
     return (_e24 / _e27);
 }
 
 vec2 ms_crecip(vec2 a_7) {
     if ((abs(a_7.x) >= abs(a_7.y))) {
         float r_4 = (a_7.y / a_7.x);
-        float d_12 = (a_7.x + (a_7.y * r_4));
-        return vec2((1.0 / d_12), (-(r_4) / d_12));
+        float d_16 = (a_7.x + (a_7.y * r_4));
+        return vec2((1.0 / d_16), (-(r_4) / d_16));
     }
     float r_5 = (a_7.x / a_7.y);
-    float d_13 = ((a_7.x * r_5) + a_7.y);
-    return vec2((r_5 / d_13), (-1.0 / d_13));
+    float d_17 = ((a_7.x * r_5) + a_7.y);
+    return vec2((r_5 / d_17), (-1.0 / d_17));
 }
 
 vec2 ms_csqrt(vec2 a_8) {
@@ -692,8 +692,8 @@ vec3 ms_ggx_sample_wm(vec3 w_in, vec2 alpha_7, vec2 u_2) {
     float _e12 = w_8.x;
     float _e16 = w_8.y;
     float _e19 = w_8.z;
-    vec3 s_13 = vec3((alpha_7.x * _e12), (alpha_7.y * _e16), _e19);
-    float n2_ = (((s_13.x * s_13.x) + (s_13.y * s_13.y)) + (s_13.z * s_13.z));
+    vec3 s_14 = vec3((alpha_7.x * _e12), (alpha_7.y * _e16), _e19);
+    float n2_ = (((s_14.x * s_14.x) + (s_14.y * s_14.y)) + (s_14.z * s_14.z));
     if ((n2_ >= 1e-24)) {
         local_8 = (n2_ <= 1e24);
     } else {
@@ -706,12 +706,12 @@ vec3 ms_ggx_sample_wm(vec3 w_in, vec2 alpha_7, vec2 u_2) {
         float _e45 = w_8.x;
         float _e49 = w_8.y;
         float _e54 = w_8.z;
-        float d_14 = (((_e42.x * _e45) + (_e42.y * _e49)) + (_e42.z * _e54));
+        float d_18 = (((_e42.x * _e45) + (_e42.y * _e49)) + (_e42.z * _e54));
         float _e58 = w_8.x;
         float _e61 = w_8.y;
         float _e65 = w_8.z;
         float l1_ = ((abs(_e58) + abs(_e61)) + abs(_e65));
-        if ((d_14 > (2.4e-7 * l1_))) {
+        if ((d_18 > (2.4e-7 * l1_))) {
             return _e42;
         }
         vec3 _e71 = w_8;
@@ -769,9 +769,9 @@ MsBoundedCap ms_ggx_bounded_cap(vec3 w_10, vec2 alpha_11) {
     float _e30 = v_2.x;
     float _e33 = v_2.y;
     float _e35 = v_2.y;
-    float s_14 = (1.0 + sqrt(((_e28 * _e30) + (_e33 * _e35))));
+    float s_15 = (1.0 + sqrt(((_e28 * _e30) + (_e33 * _e35))));
     float a2_ = (a_19 * a_19);
-    float s2_ = (s_14 * s_14);
+    float s2_ = (s_15 * s_15);
     float _e44 = v_2.z;
     float _e47 = v_2.z;
     float den_2 = (s2_ + ((a2_ * _e44) * _e47));
@@ -1107,8 +1107,8 @@ vec3 ms_exponential_sample_wm(vec3 w_in_4, vec2 alpha_43, vec2 u_17) {
             float _e73 = ms_stream_next(state_9);
             float prod = ((1.0 - _e70) * (1.0 - _e73));
             float _e77 = v0_;
-            float d_15 = ((_e77 * total) - e_7);
-            if ((d_15 < 0.0)) {
+            float d_19 = ((_e77 * total) - e_7);
+            if ((d_19 < 0.0)) {
                 float r_13 = (-0.5 * log(prod));
                 float _e85 = v0_;
                 float turn = (_e85 * inv_p);
@@ -1129,7 +1129,7 @@ vec3 ms_exponential_sample_wm(vec3 w_in_4, vec2 alpha_43, vec2 u_17) {
             } else {
                 float _e108 = ms_stream_next(state_9);
                 float r_14 = (-0.5 * log((prod * (1.0 - _e108))));
-                float one_plus = (2.0 * (d_15 * inv_g));
+                float one_plus = (2.0 * (d_19 * inv_g));
                 float _e118 = v0_;
                 float one_minus = ((2.0 * (1.0 - _e118)) * (total * inv_g));
                 x_9 = (r_14 * sqrt(max((one_minus * one_plus), 0.0)));
@@ -1296,27 +1296,27 @@ MsBsdfSample ms_dielectric_sample_smooth(MsDielectric d_7, vec3 wo_31, float uc_
     float f_3 = 0.0;
     float _e5 = ms_fresnel_dielectric(wo_31.z, d_7.eta);
     if ((uc_1 < _e5)) {
-        vec3 wi_38 = vec3(-(wo_31.x), -(wo_31.y), wo_31.z);
-        return MsBsdfSample(wi_38, _e5, vec3((_e5 / abs(wi_38.z))), 3u, 1.0);
+        vec3 wi_41 = vec3(-(wo_31.x), -(wo_31.y), wo_31.z);
+        return MsBsdfSample(wi_41, _e5, vec3((_e5 / abs(wi_41.z))), 3u, 1.0);
     }
     MsBsdfSample none_1 = MsBsdfSample(vec3(0.0), 0.0, vec3(0.0), 0u, 1.0);
     vec4 _e33 = ms_refract(wo_31, vec3(0.0, 0.0, 1.0), d_7.eta);
     if ((_e33.w == 0.0)) {
         return none_1;
     }
-    vec3 wi_39 = _e33.xyz;
-    bool _e39 = ms_on_horizon(wi_39.z);
+    vec3 wi_42 = _e33.xyz;
+    bool _e39 = ms_on_horizon(wi_42.z);
     if (_e39) {
         return none_1;
     }
     float t_10 = (1.0 - _e5);
-    f_3 = (t_10 / abs(wi_39.z));
+    f_3 = (t_10 / abs(wi_42.z));
     if ((d_7.transport == MS_TRANSPORT_RADIANCE)) {
         float _e49 = f_3;
         f_3 = (_e49 / (_e33.w * _e33.w));
     }
     float _e54 = f_3;
-    return MsBsdfSample(wi_39, t_10, vec3(_e54), 7u, _e33.w);
+    return MsBsdfSample(wi_42, t_10, vec3(_e54), 7u, _e33.w);
 }
 
 MsLutTap ms_lut_tap(float x_12, uint n_8) {
@@ -1533,6 +1533,27 @@ float ms_dielectric_kulla_conty_lobe(MsDielectric d_9, vec3 wo_40, vec3 wi_35, f
     return _e73;
 }
 
+float ms_dielectric_kulla_conty_lobe_pdf(vec3 wo_43, vec3 wi_38, float k_o_2) {
+    bool crossed_1 = ((wi_38.z < 0.0) != (wo_43.z < 0.0));
+    float side = (crossed_1 ? k_o_2 : (1.0 - k_o_2));
+    return ((side * abs(wi_38.z)) / MS_PI);
+}
+
+MsBsdfSample ms_dielectric_kulla_conty_sample_f(MsBsdfSample s_9, MsDielectric d_14, vec3 wo_46, float e_o_14, float e_i_5, float e_avg_i_2, float k_o_5) {
+    bool local_53 = false;
+    if (!(((s_9.flags & MS_SAMPLE_VALID) == 0u))) {
+        local_53 = ((s_9.flags & MS_SAMPLE_SPECULAR) != 0u);
+    } else {
+        local_53 = true;
+    }
+    bool _e21 = local_53;
+    if (_e21) {
+        return s_9;
+    }
+    float _e23 = ms_dielectric_kulla_conty_lobe(d_14, wo_46, s_9.wi, e_o_14, e_i_5, e_avg_i_2, k_o_5);
+    return MsBsdfSample(s_9.wi, s_9.pdf, (s_9.f + vec3(_e23)), s_9.flags, s_9.eta);
+}
+
 uint ms_k_index(uvec3 id_13, uvec3 groups_13) {
     uint i_6 = (id_13.x + ((id_13.y * groups_13.x) * 64u));
     uint n_12 = (uint(_group_0_binding_0_cs.length()) / MS_K_IN);
@@ -1574,8 +1595,8 @@ void main() {
     }
     vec4 r0_3 = _group_0_binding_0_cs[(_e2 * MS_K_IN)];
     vec4 _e19 = _group_0_binding_0_cs[((_e2 * MS_K_IN) + 1u)];
-    vec3 wo_43 = _e19.xyz;
-    MsSample _e23 = ms_ggx_sample(wo_43, r0_3.xy, r0_3.zw);
+    vec3 wo_48 = _e19.xyz;
+    MsSample _e23 = ms_ggx_sample(wo_48, r0_3.xy, r0_3.zw);
     MsSample _e26 = ms_ggx_sample_dcos(r0_3.xy, r0_3.zw);
     _group_0_binding_1_cs[(_e2 * MS_K_OUT)] = vec4(_e23.wm, _e23.pdf);
     _group_0_binding_1_cs[((_e2 * MS_K_OUT) + 1u)] = vec4(_e26.wm, _e26.pdf);

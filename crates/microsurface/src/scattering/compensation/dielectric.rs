@@ -145,6 +145,16 @@ impl<F: Real, D: MicrofacetDistribution<F>, const N: usize> CompensatedDielectri
         &self.ss
     }
 
+    /// Kulla–Conty's transmitted shares (k_out, k_in), as this interface uses them (scaled
+    /// together where k_in would pass 1), and the smooth interface's Fresnel average
+    /// F_avg(η) = 2∫F(μ)μ dμ from outside that k_out = 1 − F_avg comes from: the numbers a
+    /// GPU form of the type takes (`microsurface-gpu`'s tests feed them to its WGSL). Not part
+    /// of the stable API.
+    #[doc(hidden)]
+    pub fn kulla_conty_shares(&self) -> ([f64; 2], f64) {
+        (self.k, dielectric_f_avg(self.ss.eta().to_f64()))
+    }
+
     /// The table of a side (0 outside, 1 inside).
     fn table(&self, side: usize) -> &AlbedoTable {
         if side == 0 {
