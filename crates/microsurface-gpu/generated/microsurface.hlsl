@@ -90,30 +90,36 @@ static const uint MS_BK_ERFINV_Q_AT = 304u;
 static const int MS_BK_ERFINV_W_K0_ = int(4);
 static const int MS_BK_ERFINV_W_K1_ = int(7);
 static const uint MS_BK_ERFINV_W_AT = 504u;
+static const int MS_SF_K0E_K0_ = int(-14);
+static const int MS_SF_K0E_K1_ = int(9);
+static const uint MS_SF_K0E_AT = 528u;
+static const int MS_SF_E1X_K0_ = int(-24);
+static const int MS_SF_E1X_K1_ = int(9);
+static const uint MS_SF_E1X_AT = 712u;
 static const float MS_BK_QUANTILE_EDGE = -27.200563;
 static const int MS_DG_LAMBDA_K0_ = int(-30);
 static const int MS_DG_LAMBDA_K1_ = int(16);
 static const uint MS_DG_LAMBDA_M = 3u;
-static const uint MS_DG_LAMBDA_AT = 528u;
+static const uint MS_DG_LAMBDA_AT = 976u;
 static const int MS_DG_D_K0_ = int(-30);
 static const int MS_DG_D_K1_ = int(30);
 static const uint MS_DG_D_M = 2u;
-static const uint MS_DG_D_AT = 896u;
+static const uint MS_DG_D_AT = 1344u;
 static const int MS_EXP_QA_K0_ = int(-24);
 static const int MS_EXP_QA_K1_ = int(6);
 static const uint MS_EXP_QA_M = 5u;
-static const uint MS_EXP_QA_AT = 1616u;
+static const uint MS_EXP_QA_AT = 2064u;
 static const int MS_EXP_QB_K0_ = int(6);
 static const int MS_EXP_QB_K1_ = int(12);
 static const uint MS_EXP_QB_M = 7u;
-static const uint MS_EXP_QB_AT = 2576u;
+static const uint MS_EXP_QB_AT = 3024u;
 static const int MS_EXP_FAR_K0_ = int(5);
 static const int MS_EXP_FAR_K1_ = int(9);
 static const uint MS_EXP_FAR_M = 3u;
-static const uint MS_EXP_FAR_AT = 3344u;
-static const uint MS_ZIG_EXP_AT = 3408u;
-static const uint MS_ZIG_NORMAL_AT = 3664u;
-static const uint MS_TABLES_ROWS = 3920u;
+static const uint MS_EXP_FAR_AT = 3792u;
+static const uint MS_ZIG_EXP_AT = 3856u;
+static const uint MS_ZIG_NORMAL_AT = 4112u;
+static const uint MS_TABLES_ROWS = 4368u;
 static const float MS_FRAC_1_SQRT_PI = 0.5641896;
 static const float MS_SQRT_PI = 1.7724539;
 static const float MS_EULER_GAMMA = 0.5772157;
@@ -125,6 +131,9 @@ static const uint MS_NDF_BECKMANN = 1u;
 static const uint MS_NDF_DOUBLE_GGX = 2u;
 static const uint MS_NDF_EXPONENTIAL = 3u;
 static const uint MS_NDF_STUDENT_T = 5u;
+static const uint MS_NDF_EI = 6u;
+static const uint MS_NDF_ERFC = 7u;
+static const uint MS_NDF_K0_ = 8u;
 static const uint MS_MASKING_CORRELATED = 0u;
 static const uint MS_MASKING_SEPARABLE = 1u;
 static const uint MS_MASKING_CORRELATED_BETA = 2u;
@@ -154,25 +163,25 @@ int naga_f2i32(float value) {
 
 float2 ms_cos_sin_turn(float v)
 {
-    float k_9 = round((4.0 * v));
-    float r_3 = (v - (0.25 * k_9));
+    float k_10 = round((4.0 * v));
+    float r_3 = (v - (0.25 * k_10));
     float x_14 = (MS_TAU * r_3);
     float x2_ = (x_14 * x_14);
     float s_10 = (x_14 * (1.0 + (x2_ * (-0.16666667 + (x2_ * (0.008333333 + (x2_ * (-0.0001984127 + (x2_ * 2.7557319e-6)))))))));
-    float c_16 = (1.0 + (x2_ * (-0.5 + (x2_ * (0.041666668 + (x2_ * (-0.0013888889 + (x2_ * (2.4801588e-5 + (x2_ * -2.755732e-7))))))))));
-    int q_2 = (naga_f2i32(k_9) & int(3));
+    float c_17 = (1.0 + (x2_ * (-0.5 + (x2_ * (0.041666668 + (x2_ * (-0.0013888889 + (x2_ * (2.4801588e-5 + (x2_ * -2.755732e-7))))))))));
+    int q_2 = (naga_f2i32(k_10) & int(3));
     if ((q_2 == int(0))) {
-        return float2(c_16, s_10);
+        return float2(c_17, s_10);
     } else {
         if ((q_2 == int(1))) {
-            return float2(-(s_10), c_16);
+            return float2(-(s_10), c_17);
         } else {
             if ((q_2 == int(2))) {
-                return float2(-(c_16), -(s_10));
+                return float2(-(c_17), -(s_10));
             }
         }
     }
-    return float2(s_10, -(c_16));
+    return float2(s_10, -(c_17));
 }
 
 float3 ms_rescaled(float3 a)
@@ -423,31 +432,31 @@ float ms_fresnel_dielectric(float cos_in, float eta_in_1)
         eta_2 = (1.0 / _e9);
     }
     float _e12 = cos_i_1;
-    float c_17 = min(_e12, 1.0);
+    float c_18 = min(_e12, 1.0);
     float _e15 = eta_2;
     if ((_e15 == 1.0)) {
         return 0.0;
     }
-    if ((c_17 == 0.0)) {
+    if ((c_18 == 0.0)) {
         return 1.0;
     }
     float _e24 = eta_2;
     if ((_e24 > 1e18)) {
         float _e27 = eta_2;
         float e_3 = (1.0 / _e27);
-        float cos_t_1 = sqrt((((1.0 - e_3) * (1.0 + e_3)) + ((c_17 * e_3) * (c_17 * e_3))));
-        r_parl = ((c_17 - (e_3 * cos_t_1)) / (c_17 + (e_3 * cos_t_1)));
-        r_perp = (((e_3 * c_17) - cos_t_1) / ((e_3 * c_17) + cos_t_1));
+        float cos_t_1 = sqrt((((1.0 - e_3) * (1.0 + e_3)) + ((c_18 * e_3) * (c_18 * e_3))));
+        r_parl = ((c_18 - (e_3 * cos_t_1)) / (c_18 + (e_3 * cos_t_1)));
+        r_perp = (((e_3 * c_18) - cos_t_1) / ((e_3 * c_18) + cos_t_1));
     } else {
         float _e51 = eta_2;
         if ((_e51 > 1.0)) {
             float _e54 = eta_2;
             float _e57 = eta_2;
-            ect2_ = (((_e54 - 1.0) * (_e57 + 1.0)) + (c_17 * c_17));
+            ect2_ = (((_e54 - 1.0) * (_e57 + 1.0)) + (c_18 * c_18));
         } else {
             float _e63 = eta_2;
             float _e64 = eta_2;
-            ect2_ = ((_e63 * _e64) - ((1.0 - c_17) * (1.0 + c_17)));
+            ect2_ = ((_e63 * _e64) - ((1.0 - c_18) * (1.0 + c_18)));
         }
         float _e72 = ect2_;
         if ((_e72 <= 0.0)) {
@@ -457,9 +466,9 @@ float ms_fresnel_dielectric(float cos_in, float eta_in_1)
         float ect = sqrt(_e76);
         float _e78 = eta_2;
         float _e79 = eta_2;
-        float e2c = ((_e78 * _e79) * c_17);
+        float e2c = ((_e78 * _e79) * c_18);
         r_parl = ((e2c - ect) / (e2c + ect));
-        r_perp = ((c_17 - ect) / (c_17 + ect));
+        r_perp = ((c_18 - ect) / (c_18 + ect));
     }
     float _e88 = r_parl;
     float _e89 = r_parl;
@@ -498,12 +507,12 @@ float2 ms_crecip(float2 a_7)
 {
     if ((abs(a_7.x) >= abs(a_7.y))) {
         float r_4 = (a_7.y / a_7.x);
-        float d_16 = (a_7.x + (a_7.y * r_4));
-        return float2((1.0 / d_16), (-(r_4) / d_16));
+        float d_17 = (a_7.x + (a_7.y * r_4));
+        return float2((1.0 / d_17), (-(r_4) / d_17));
     }
     float r_5 = (a_7.x / a_7.y);
-    float d_17 = ((a_7.x * r_5) + a_7.y);
-    return float2((r_5 / d_17), (-1.0 / d_17));
+    float d_18 = ((a_7.x * r_5) + a_7.y);
+    return float2((r_5 / d_18), (-1.0 / d_18));
 }
 
 float2 ms_csqrt(float2 a_8)
@@ -638,30 +647,30 @@ float3 ms_fresnel_eval(MsFresnel fr, float cos_i_4)
 
 float ms_ggx_d(float3 wm_2, float2 alpha)
 {
-    float z_5 = wm_2.z;
-    if (!((z_5 > 0.0))) {
+    float z_6 = wm_2.z;
+    if (!((z_6 > 0.0))) {
         return 0.0;
     }
     float x_15 = (wm_2.x / alpha.x);
-    float y_3 = (wm_2.y / alpha.y);
-    float t_6 = (((x_15 * x_15) + (y_3 * y_3)) + (z_5 * z_5));
+    float y_7 = (wm_2.y / alpha.y);
+    float t_6 = (((x_15 * x_15) + (y_7 * y_7)) + (z_6 * z_6));
     return (1.0 / ((((MS_PI * alpha.x) * alpha.y) * t_6) * t_6));
 }
 
 float ms_ggx_lambda(float3 w_3, float2 alpha_1)
 {
     float x_16 = (alpha_1.x * w_3.x);
-    float y_4 = (alpha_1.y * w_3.y);
-    float z_6 = abs(w_3.z);
-    float t_7 = ((x_16 * x_16) + (y_4 * y_4));
-    float z2_ = (z_6 * z_6);
-    float den = (2.0 * (z2_ + (z_6 * sqrt((z2_ + t_7)))));
+    float y_8 = (alpha_1.y * w_3.y);
+    float z_7 = abs(w_3.z);
+    float t_7 = ((x_16 * x_16) + (y_8 * y_8));
+    float z2_ = (z_7 * z_7);
+    float den = (2.0 * (z2_ + (z_7 * sqrt((z2_ + t_7)))));
     if (!((den > 0.0))) {
-        if ((z_6 == 0.0)) {
+        if ((z_7 == 0.0)) {
             const float _e25 = ms_inf();
             return _e25;
         }
-        return ((t_7 / (z_6 + sqrt(((z_6 * z_6) + t_7)))) / (z_6 + z_6));
+        return ((t_7 / (z_7 + sqrt(((z_7 * z_7) + t_7)))) / (z_7 + z_7));
     }
     return (t_7 / den);
 }
@@ -669,13 +678,13 @@ float ms_ggx_lambda(float3 w_3, float2 alpha_1)
 float ms_ggx_g1_(float3 w_4, float2 alpha_2)
 {
     float x_17 = (alpha_2.x * w_4.x);
-    float y_5 = (alpha_2.y * w_4.y);
-    float z_7 = abs(w_4.z);
-    float den_1 = (z_7 + sqrt(((z_7 * z_7) + ((x_17 * x_17) + (y_5 * y_5)))));
+    float y_9 = (alpha_2.y * w_4.y);
+    float z_8 = abs(w_4.z);
+    float den_1 = (z_8 + sqrt(((z_8 * z_8) + ((x_17 * x_17) + (y_9 * y_9)))));
     if (!((den_1 > 0.0))) {
         return 0.0;
     }
-    return ((z_7 + z_7) / den_1);
+    return ((z_8 + z_8) / den_1);
 }
 
 float ms_ggx_g2_(float3 wo_6, float3 wi_6, float2 alpha_3)
@@ -698,7 +707,7 @@ float ms_ggx_pdf(float3 w_5, float3 wm_3, float2 alpha_5)
     bool local_6 = (bool)0;
     bool local_7 = (bool)0;
 
-    float z_8 = abs(w_5.z);
+    float z_9 = abs(w_5.z);
     const float _e5 = ms_dot(w_5, wm_3);
     c = _e5;
     if ((w_5.z < 0.0)) {
@@ -707,7 +716,7 @@ float ms_ggx_pdf(float3 w_5, float3 wm_3, float2 alpha_5)
     }
     float _e12 = c;
     if ((_e12 > 0.0)) {
-        local_6 = (z_8 > 0.0);
+        local_6 = (z_9 > 0.0);
     } else {
         local_6 = false;
     }
@@ -723,25 +732,25 @@ float ms_ggx_pdf(float3 w_5, float3 wm_3, float2 alpha_5)
     }
     float sx = (alpha_5.x * w_5.x);
     float sy = (alpha_5.y * w_5.y);
-    float len_3 = sqrt((((sx * sx) + (sy * sy)) + (z_8 * z_8)));
+    float len_3 = sqrt((((sx * sx) + (sy * sy)) + (z_9 * z_9)));
     float mx = (wm_3.x / alpha_5.x);
     float my = (wm_3.y / alpha_5.y);
     float t_8 = (((mx * mx) + (my * my)) + (wm_3.z * wm_3.z));
     float _e55 = c;
     float _e56 = c;
-    return ((_e55 + _e56) / (((((MS_PI * alpha_5.x) * alpha_5.y) * t_8) * t_8) * (z_8 + len_3)));
+    return ((_e55 + _e56) / (((((MS_PI * alpha_5.x) * alpha_5.y) * t_8) * t_8) * (z_9 + len_3)));
 }
 
 float3 ms_ggx_cap_normal_stretched(float3 w_6, float3 stretch, float2 u, float len)
 {
     float inv = (1.0 / len);
     float x_18 = ((stretch.x * w_6.x) * inv);
-    float y_6 = ((stretch.y * w_6.y) * inv);
-    float z_9 = ((stretch.z * w_6.z) * inv);
+    float y_10 = ((stretch.y * w_6.y) * inv);
+    float z_10 = ((stretch.z * w_6.z) * inv);
     const float2 _e19 = ms_cos_sin_turn(u.x);
-    float above = ((1.0 - u.y) * (1.0 + z_9));
-    float sin_ = sqrt(max((u.y * ((above * (1.0 + z_9)) + ((x_18 * x_18) + (y_6 * y_6)))), 0.0));
-    float3 h_2 = float3((stretch.x * ((sin_ * _e19.x) + x_18)), (stretch.y * ((sin_ * _e19.y) + y_6)), (stretch.z * above));
+    float above = ((1.0 - u.y) * (1.0 + z_10));
+    float sin_ = sqrt(max((u.y * ((above * (1.0 + z_10)) + ((x_18 * x_18) + (y_10 * y_10)))), 0.0));
+    float3 h_2 = float3((stretch.x * ((sin_ * _e19.x) + x_18)), (stretch.y * ((sin_ * _e19.y) + y_10)), (stretch.z * above));
     float n_11 = (1.0 / sqrt((((h_2.x * h_2.x) + (h_2.y * h_2.y)) + (h_2.z * h_2.z))));
     return (h_2 * n_11);
 }
@@ -780,12 +789,12 @@ float3 ms_ggx_sample_wm(float3 w_in, float2 alpha_7, float2 u_2)
         float _e45 = w_8.x;
         float _e49 = w_8.y;
         float _e54 = w_8.z;
-        float d_18 = (((_e42.x * _e45) + (_e42.y * _e49)) + (_e42.z * _e54));
+        float d_19 = (((_e42.x * _e45) + (_e42.y * _e49)) + (_e42.z * _e54));
         float _e58 = w_8.x;
         float _e61 = w_8.y;
         float _e65 = w_8.z;
         float l1_ = ((abs(_e58) + abs(_e61)) + abs(_e65));
-        if ((d_18 > (2.4e-7 * l1_))) {
+        if ((d_19 > (2.4e-7 * l1_))) {
             return _e42;
         }
         float3 _e71 = w_8;
@@ -872,11 +881,11 @@ MsBoundedCap ms_ggx_bounded_cap(float3 w_10, float2 alpha_11)
     float _e44 = v_2.z;
     float _e47 = v_2.z;
     float den_2 = (s2_ + ((a2_ * _e44) * _e47));
-    float k_10 = (((1.0 - a2_) * s2_) / den_2);
+    float k_11 = (((1.0 - a2_) * s2_) / den_2);
     float _e55 = v_2.z;
     float _e57 = v_2.z;
     float one_minus_k = ((a2_ * (s2_ + (_e55 * _e57))) / den_2);
-    const MsBoundedCap msboundedcap_1 = ConstructMsBoundedCap(_e18, (k_10 * _e18.z), (one_minus_k * _e18.z));
+    const MsBoundedCap msboundedcap_1 = ConstructMsBoundedCap(_e18, (k_11 * _e18.z), (one_minus_k * _e18.z));
     return msboundedcap_1;
 }
 
@@ -922,12 +931,12 @@ float ms_ggx_pdf_bounded_reflection(float3 wo_8, float3 wi_8, float2 alpha_14)
         return 0.0;
     }
     const float _e7 = ms_dot(wo_8, _e3);
-    float c_18 = abs(_e7);
-    if (!((c_18 > 0.0))) {
+    float c_19 = abs(_e7);
+    if (!((c_19 > 0.0))) {
         return 0.0;
     }
     const float _e13 = ms_ggx_pdf_bounded(wo_8, _e3, alpha_14);
-    return (_e13 / (4.0 * c_18));
+    return (_e13 / (4.0 * c_19));
 }
 
 uint2 ms_u64_add(uint2 a_9, uint2 b_4)
@@ -1240,8 +1249,8 @@ float ms_bk_quantile(float u_7)
         const float _e43 = ms_bk_poly(_e34, _e41, _e25.y);
         ratio = _e43;
     } else {
-        float w_40 = min((-(log(q_3)) - 0.6931472), 127.99);
-        const float2 _e52 = ms_bk_segment(w_40, MS_BK_ERFINV_W_K0_, MS_BK_ERFINV_W_K1_);
+        float w_54 = min((-(log(q_3)) - 0.6931472), 127.99);
+        const float2 _e52 = ms_bk_segment(w_54, MS_BK_ERFINV_W_K0_, MS_BK_ERFINV_W_K1_);
         uint i_7 = (2u * naga_f2u32(_e52.x));
         float4 _e61 = asfloat(ms_tables.Load4((MS_BK_ERFINV_W_AT + i_7)*16));
         float4 _e68 = asfloat(ms_tables.Load4(((MS_BK_ERFINV_W_AT + i_7) + 1u)*16));
@@ -1268,12 +1277,12 @@ float ms_beckmann_d(float3 wm_6, float2 alpha_15)
 {
     bool local_9 = (bool)0;
 
-    float z_10 = wm_6.z;
+    float z_11 = wm_6.z;
     float r_12 = (1.0 / (alpha_15.x * alpha_15.y));
     float x_19 = ((wm_6.x * alpha_15.y) * r_12);
-    float y_7 = ((wm_6.y * alpha_15.x) * r_12);
-    float z2_1 = (z_10 * z_10);
-    if ((z_10 > 0.0)) {
+    float y_11 = ((wm_6.y * alpha_15.x) * r_12);
+    float z2_1 = (z_11 * z_11);
+    if ((z_11 > 0.0)) {
         local_9 = (z2_1 > 0.0);
     } else {
         local_9 = false;
@@ -1282,11 +1291,11 @@ float ms_beckmann_d(float3 wm_6, float2 alpha_15)
     if (!(_e24)) {
         return 0.0;
     }
-    float e_5 = (((x_19 * x_19) + (y_7 * y_7)) / z2_1);
+    float e_5 = (((x_19 * x_19) + (y_11 * y_11)) / z2_1);
     if ((e_5 <= 80.0)) {
         return ((exp(-(e_5)) * r_12) / ((MS_PI * z2_1) * z2_1));
     }
-    return exp((((log(r_12) - 1.14473) - (4.0 * log(z_10))) - e_5));
+    return exp((((log(r_12) - 1.14473) - (4.0 * log(z_11))) - e_5));
 }
 
 float ms_beckmann_lambda_cot(float a_13)
@@ -1305,8 +1314,8 @@ float ms_beckmann_lambda_cot(float a_13)
 float ms_beckmann_lambda(float3 w_14, float2 alpha_16)
 {
     float x_20 = (alpha_16.x * w_14.x);
-    float y_8 = (alpha_16.y * w_14.y);
-    float s_16 = sqrt(((x_20 * x_20) + (y_8 * y_8)));
+    float y_12 = (alpha_16.y * w_14.y);
+    float s_16 = sqrt(((x_20 * x_20) + (y_12 * y_12)));
     if (!((s_16 > 0.0))) {
         return 0.0;
     }
@@ -1353,7 +1362,7 @@ float ms_beckmann_pdf(float3 w_16, float3 wm_7, float2 alpha_20)
     float c_1 = (float)0;
     bool local_11 = (bool)0;
 
-    float z_11 = abs(w_16.z);
+    float z_12 = abs(w_16.z);
     const float _e5 = ms_dot(w_16, wm_7);
     c_1 = _e5;
     if ((w_16.z < 0.0)) {
@@ -1362,7 +1371,7 @@ float ms_beckmann_pdf(float3 w_16, float3 wm_7, float2 alpha_20)
     }
     float _e12 = c_1;
     if ((_e12 > 0.0)) {
-        local_11 = (z_11 > 0.0);
+        local_11 = (z_12 > 0.0);
     } else {
         local_11 = false;
     }
@@ -1373,7 +1382,7 @@ float ms_beckmann_pdf(float3 w_16, float3 wm_7, float2 alpha_20)
     const float _e23 = ms_beckmann_g1_(w_16, alpha_20);
     float _e24 = c_1;
     const float _e26 = ms_beckmann_d(wm_7, alpha_20);
-    return (((_e23 * _e24) * _e26) / z_11);
+    return (((_e23 * _e24) * _e26) / z_12);
 }
 
 float ms_beckmann_pdf_dcos(float3 wm_8, float2 alpha_21)
@@ -1427,9 +1436,9 @@ float ms_bk_visible_x(float a_14, float u_9)
     const float _e5 = ms_bk_erfcx(a_14);
     float erfc_a = (_e5 * ea);
     float half_ea = (0.2820948 * ea);
-    float z_12 = (((0.5 * a_14) * (2.0 - erfc_a)) + half_ea);
-    float target_lo = (u_9 * z_12);
-    float target_hi = ((1.0 - u_9) * z_12);
+    float z_13 = (((0.5 * a_14) * (2.0 - erfc_a)) + half_ea);
+    float target_lo = (u_9 * z_13);
+    float target_hi = ((1.0 - u_9) * z_13);
     lo_1 = -(a_14);
     if ((a_14 >= 1.0)) {
         const float _e26 = ms_bk_quantile(u_9);
@@ -1562,14 +1571,14 @@ float3 ms_beckmann_sample_wm(float3 w_17, float2 alpha_23, float2 u_10)
     float _e14 = sign_1;
     float sy_1 = ((_e14 * alpha_23.y) * w_17.y);
     float _e19 = sign_1;
-    float c_19 = (_e19 * w_17.z);
+    float c_20 = (_e19 * w_17.z);
     float h_4 = sqrt(((sx_1 * sx_1) + (sy_1 * sy_1)));
     const float _e27 = ms_bk_quantile(u_10.y);
     if ((h_4 > 0.0)) {
         float inv_1 = (1.0 / h_4);
         cp = (sx_1 * inv_1);
         sp = (sy_1 * inv_1);
-        const float _e41 = ms_bk_visible_x((c_19 * inv_1), u_10.x);
+        const float _e41 = ms_bk_visible_x((c_20 * inv_1), u_10.x);
         x_5 = _e41;
     } else {
         const float _e43 = ms_bk_quantile(u_10.x);
@@ -1640,10 +1649,10 @@ float ms_double_ggx_lambda(float3 w_19, float2 alpha_25)
     float a_16 = (float)0;
     bool local_15 = (bool)0;
 
-    float u_31 = abs(w_19.z);
+    float u_38 = abs(w_19.z);
     if ((alpha_25.x == alpha_25.y)) {
         float a_21 = alpha_25.x;
-        x_8 = ((((0.5 * a_21) * a_21) * ((1.0 - u_31) * (1.0 + u_31))) / (u_31 * u_31));
+        x_8 = ((((0.5 * a_21) * a_21) * ((1.0 - u_38) * (1.0 + u_38))) / (u_38 * u_38));
     } else {
         float sx_3 = (alpha_25.x * w_19.x);
         float sy_2 = (alpha_25.y * w_19.y);
@@ -1674,7 +1683,7 @@ float ms_double_ggx_lambda(float3 w_19, float2 alpha_25)
         a_16 = sqrt((((((alpha_25.x * alpha_25.x) * w_19.x) * w_19.x) + (((alpha_25.y * alpha_25.y) * w_19.y) * w_19.y)) / s2_1));
     }
     float _e82 = a_16;
-    const float _e83 = ms_dg_lambda_ends(u_31, _e82);
+    const float _e83 = ms_dg_lambda_ends(u_38, _e82);
     return _e83;
 }
 
@@ -1732,15 +1741,15 @@ float ms_double_ggx_d(float3 wm_9, float2 alpha_29)
 {
     bool local_17 = (bool)0;
 
-    float z_13 = wm_9.z;
+    float z_14 = wm_9.z;
     float r_15 = (1.0 / (alpha_29.x * alpha_29.y));
     float x_22 = ((wm_9.x * alpha_29.y) * r_15);
-    float y_9 = ((wm_9.y * alpha_29.x) * r_15);
-    float q_5 = ((x_22 * x_22) + (y_9 * y_9));
-    if (!((z_13 > 0.0))) {
-        return ((z_13 != z_13) ? z_13 : 0.0);
+    float y_13 = ((wm_9.y * alpha_29.x) * r_15);
+    float q_5 = ((x_22 * x_22) + (y_13 * y_13));
+    if (!((z_14 > 0.0))) {
+        return ((z_14 != z_14) ? z_14 : 0.0);
     }
-    float z2_2 = (z_13 * z_13);
+    float z2_2 = (z_14 * z_14);
     float t_10 = (q_5 / z2_2);
     if ((t_10 >= 9.313226e-10)) {
         local_17 = (t_10 < 1073741800.0);
@@ -1756,7 +1765,7 @@ float ms_double_ggx_d(float3 wm_9, float2 alpha_29)
     if ((t_10 < 9.313226e-10)) {
         return (r_15 / ((MS_PI * z2_2) * z2_2));
     }
-    return (((((log(q_5) - (2.0 * log(z_13))) - MS_EULER_GAMMA) - 1.0) * r_15) / ((MS_PI * q_5) * q_5));
+    return (((((log(q_5) - (2.0 * log(z_14))) - MS_EULER_GAMMA) - 1.0) * r_15) / ((MS_PI * q_5) * q_5));
 }
 
 float ms_double_ggx_pdf(float3 w_21, float3 wm_10, float2 alpha_30)
@@ -1764,7 +1773,7 @@ float ms_double_ggx_pdf(float3 w_21, float3 wm_10, float2 alpha_30)
     float c_3 = (float)0;
     bool local_18 = (bool)0;
 
-    float z_14 = abs(w_21.z);
+    float z_15 = abs(w_21.z);
     const float _e5 = ms_dot(w_21, wm_10);
     c_3 = _e5;
     if ((w_21.z < 0.0)) {
@@ -1773,7 +1782,7 @@ float ms_double_ggx_pdf(float3 w_21, float3 wm_10, float2 alpha_30)
     }
     float _e12 = c_3;
     if ((_e12 > 0.0)) {
-        local_18 = (z_14 > 0.0);
+        local_18 = (z_15 > 0.0);
     } else {
         local_18 = false;
     }
@@ -1784,7 +1793,7 @@ float ms_double_ggx_pdf(float3 w_21, float3 wm_10, float2 alpha_30)
     const float _e23 = ms_double_ggx_g1_(w_21, alpha_30);
     float _e24 = c_3;
     const float _e26 = ms_double_ggx_d(wm_10, alpha_30);
-    return (((_e23 * _e24) * _e26) / z_14);
+    return (((_e23 * _e24) * _e26) / z_15);
 }
 
 float ms_double_ggx_pdf_dcos(float3 wm_11, float2 alpha_31)
@@ -1833,12 +1842,12 @@ float3 ms_double_ggx_sample_wm(float3 w_in_3, float2 alpha_33, float2 u_14)
     float sx_4 = (alpha_33.x * _e13);
     float _e17 = w_22.y;
     float sy_3 = (alpha_33.y * _e17);
-    float c_20 = w_22.z;
+    float c_21 = w_22.z;
     float h_5 = sqrt(((sx_4 * sx_4) + (sy_3 * sy_3)));
-    if (!((abs((c_20 + h_5)) <= 3.4028235e38))) {
-        return ((c_20 + h_5)).xxx;
+    if (!((abs((c_21 + h_5)) <= 3.4028235e38))) {
+        return ((c_21 + h_5)).xxx;
     }
-    float e_7 = (2.0 * c_20);
+    float e_7 = (2.0 * c_21);
     float g = (MS_SQRT_PI * h_5);
     float p_exp = (e_7 / (e_7 + g));
     float inv_p = min(((e_7 + g) / e_7), 3.4028235e38);
@@ -1875,12 +1884,12 @@ float3 ms_double_ggx_sample_wm(float3 w_in_3, float2 alpha_33, float2 u_14)
             float _e72 = t;
             s_5 = sqrt(_e72);
             float _e75 = t;
-            len_2 = sqrt((((c_20 * c_20) * _e75) + (h_5 * h_5)));
+            len_2 = sqrt((((c_21 * c_21) * _e75) + (h_5 * h_5)));
             const float _e80 = ms_stream_next(state_7);
             float _e81 = s_5;
             float _e85 = s_5;
             float _e87 = len_2;
-            if (((_e80 * ((e_7 * _e81) + h_5)) <= ((c_20 * _e85) + _e87))) {
+            if (((_e80 * ((e_7 * _e81) + h_5)) <= ((c_21 * _e85) + _e87))) {
                 break;
             }
         }
@@ -1950,10 +1959,10 @@ float ms_exponential_lambda(float3 w_24, float2 alpha_35)
     float a_17 = (float)0;
     bool local_20 = (bool)0;
 
-    float u_32 = abs(w_24.z);
+    float u_39 = abs(w_24.z);
     if ((alpha_35.x == alpha_35.y)) {
         float a_22 = alpha_35.x;
-        q_1 = (((4.0 * u_32) * u_32) / ((a_22 * a_22) * ((1.0 - u_32) * (1.0 + u_32))));
+        q_1 = (((4.0 * u_39) * u_39) / ((a_22 * a_22) * ((1.0 - u_39) * (1.0 + u_39))));
     } else {
         float sx_5 = (alpha_35.x * w_24.x);
         float sy_4 = (alpha_35.y * w_24.y);
@@ -1984,7 +1993,7 @@ float ms_exponential_lambda(float3 w_24, float2 alpha_35)
         a_17 = sqrt((((((alpha_35.x * alpha_35.x) * w_24.x) * w_24.x) + (((alpha_35.y * alpha_35.y) * w_24.y) * w_24.y)) / s2_4));
     }
     float _e83 = a_17;
-    const float _e92 = ms_exp_lambda_z(((u_32 + u_32) / (_e83 * sqrt(((1.0 - u_32) * (1.0 + u_32))))));
+    const float _e92 = ms_exp_lambda_z(((u_39 + u_39) / (_e83 * sqrt(((1.0 - u_39) * (1.0 + u_39))))));
     return _e92;
 }
 
@@ -2026,25 +2035,25 @@ float ms_exponential_d(float3 wm_12, float2 alpha_39)
 {
     bool local_22 = (bool)0;
 
-    float z_15 = wm_12.z;
+    float z_16 = wm_12.z;
     float r_17 = (1.0 / (alpha_39.x * alpha_39.y));
     float x_23 = ((wm_12.x * alpha_39.y) * r_17);
-    float y_10 = ((wm_12.y * alpha_39.x) * r_17);
-    float z2_3 = (z_15 * z_15);
-    if ((z_15 > 0.0)) {
+    float y_14 = ((wm_12.y * alpha_39.x) * r_17);
+    float z2_3 = (z_16 * z_16);
+    if ((z_16 > 0.0)) {
         local_22 = (z2_3 > 0.0);
     } else {
         local_22 = false;
     }
     bool _e24 = local_22;
     if (!(_e24)) {
-        return ((z_15 != z_15) ? z_15 : 0.0);
+        return ((z_16 != z_16) ? z_16 : 0.0);
     }
-    float e_8 = ((2.0 * sqrt(((x_23 * x_23) + (y_10 * y_10)))) / z_15);
+    float e_8 = ((2.0 * sqrt(((x_23 * x_23) + (y_14 * y_14)))) / z_16);
     if ((e_8 <= 80.0)) {
         return (((2.0 * exp(-(e_8))) * r_17) / ((MS_PI * z2_3) * z2_3));
     }
-    return exp((((log((2.0 * r_17)) - 1.14473) - (4.0 * log(z_15))) - e_8));
+    return exp((((log((2.0 * r_17)) - 1.14473) - (4.0 * log(z_16))) - e_8));
 }
 
 float ms_exponential_pdf(float3 w_26, float3 wm_13, float2 alpha_40)
@@ -2052,7 +2061,7 @@ float ms_exponential_pdf(float3 w_26, float3 wm_13, float2 alpha_40)
     float c_4 = (float)0;
     bool local_23 = (bool)0;
 
-    float z_16 = abs(w_26.z);
+    float z_17 = abs(w_26.z);
     const float _e5 = ms_dot(w_26, wm_13);
     c_4 = _e5;
     if ((w_26.z < 0.0)) {
@@ -2061,7 +2070,7 @@ float ms_exponential_pdf(float3 w_26, float3 wm_13, float2 alpha_40)
     }
     float _e12 = c_4;
     if ((_e12 > 0.0)) {
-        local_23 = (z_16 > 0.0);
+        local_23 = (z_17 > 0.0);
     } else {
         local_23 = false;
     }
@@ -2072,7 +2081,7 @@ float ms_exponential_pdf(float3 w_26, float3 wm_13, float2 alpha_40)
     const float _e23 = ms_exponential_g1_(w_26, alpha_40);
     float _e24 = c_4;
     const float _e26 = ms_exponential_d(wm_13, alpha_40);
-    return (((_e23 * _e24) * _e26) / z_16);
+    return (((_e23 * _e24) * _e26) / z_17);
 }
 
 float ms_exponential_pdf_dcos(float3 wm_14, float2 alpha_41)
@@ -2176,8 +2185,8 @@ float3 ms_exponential_sample_wm(float3 w_in_4, float2 alpha_43, float2 u_17)
             const float _e73 = ms_stream_next(state_9);
             float prod = ((1.0 - _e70) * (1.0 - _e73));
             float _e77 = v0_;
-            float d_19 = ((_e77 * total) - e_9);
-            if ((d_19 < 0.0)) {
+            float d_20 = ((_e77 * total) - e_9);
+            if ((d_20 < 0.0)) {
                 float r_19 = (-0.5 * log(prod));
                 float _e85 = v0_;
                 float turn = (_e85 * inv_p_1);
@@ -2198,7 +2207,7 @@ float3 ms_exponential_sample_wm(float3 w_in_4, float2 alpha_43, float2 u_17)
             } else {
                 const float _e108 = ms_stream_next(state_9);
                 float r_20 = (-0.5 * log((prod * (1.0 - _e108))));
-                float one_plus = (2.0 * (d_19 * inv_g));
+                float one_plus = (2.0 * (d_20 * inv_g));
                 float _e118 = v0_;
                 float one_minus = ((2.0 * (1.0 - _e118)) * (total * inv_g));
                 x_9 = (r_20 * sqrt(max((one_minus * one_plus), 0.0)));
@@ -2276,21 +2285,21 @@ float ms_shape_lambda(uint table_1, float3 w_29, float2 alpha_45)
     float sx_7 = (alpha_45.x * w_29.x);
     float sy_6 = (alpha_45.y * w_29.y);
     float h_7 = sqrt(((sx_7 * sx_7) + (sy_6 * sy_6)));
-    float z_17 = abs(w_29.z);
+    float z_18 = abs(w_29.z);
     if (!((h_7 > 0.0))) {
         if ((h_7 == 0.0)) {
-            local_26 = (z_17 > 0.0);
+            local_26 = (z_18 > 0.0);
         } else {
             local_26 = false;
         }
         bool _e25 = local_26;
         return (_e25 ? 0.0 : h_7);
     }
-    if ((z_17 == 0.0)) {
+    if ((z_18 == 0.0)) {
         const float _e30 = ms_inf();
         return _e30;
     }
-    const float _e32 = ms_shape_lambda_z(table_1, (z_17 / h_7));
+    const float _e32 = ms_shape_lambda_z(table_1, (z_18 / h_7));
     return _e32;
 }
 
@@ -2327,8 +2336,8 @@ float ms_ln_gamma_variate(float k_in, inout uint2 state_12)
         k_5 = (_e12 + 1.0);
     }
     float _e15 = k_5;
-    float d_20 = (_e15 - 0.33333334);
-    float c_21 = (1.0 / sqrt((9.0 * d_20)));
+    float d_21 = (_e15 - 0.33333334);
+    float c_22 = (1.0 / sqrt((9.0 * d_21)));
     uint2 loop_bound_5 = uint2(4294967295u, 4294967295u);
     bool loop_init_5 = true;
     while(true) {
@@ -2347,7 +2356,7 @@ float ms_ln_gamma_variate(float k_in, inout uint2 state_12)
         {
             const float _e28 = ms_stream_next(state_12);
             const float _e29 = ms_zig_normal(_e28, state_12);
-            v_6 = (1.0 + (c_21 * _e29));
+            v_6 = (1.0 + (c_22 * _e29));
             float _e34 = v_6;
             if ((_e34 <= 0.0)) {
                 continue;
@@ -2359,10 +2368,10 @@ float ms_ln_gamma_variate(float k_in, inout uint2 state_12)
             const float _e42 = ms_stream_next_positive(state_12);
             float _e48 = v_6;
             float _e51 = v_6;
-            if ((log(_e42) < (((((0.5 * _e29) * _e29) + d_20) - (d_20 * _e48)) + (d_20 * log(_e51))))) {
+            if ((log(_e42) < (((((0.5 * _e29) * _e29) + d_21) - (d_21 * _e48)) + (d_21 * log(_e51))))) {
                 float _e57 = v_6;
                 float _e60 = boost;
-                return ((log(d_20) + log(_e57)) + _e60);
+                return ((log(d_21) + log(_e57)) + _e60);
             }
         }
     }
@@ -2414,11 +2423,11 @@ float3 ms_beckmann_sample_stream_above(float3 v_7, float2 alpha_46, inout uint2 
                     break;
                 }
                 const float _e52 = ms_zig_normal(((_e42 - p_ray) / (1.0 - p_ray)), state_13);
-                float c_22 = (_e52 * 0.70710677);
-                if (!((c_22 >= 0.0))) {
-                    if ((c_22 > -(a_23))) {
+                float c_23 = (_e52 * 0.70710677);
+                if (!((c_23 >= 0.0))) {
+                    if ((c_23 > -(a_23))) {
                         const float _e64 = ms_stream_next(state_13);
-                        local_28 = ((_e64 * a_23) < (c_22 + a_23));
+                        local_28 = ((_e64 * a_23) < (c_23 + a_23));
                     } else {
                         local_28 = false;
                     }
@@ -2429,7 +2438,7 @@ float3 ms_beckmann_sample_stream_above(float3 v_7, float2 alpha_46, inout uint2 
                 }
                 bool _e71 = local_27;
                 if (_e71) {
-                    x_10 = c_22;
+                    x_10 = c_23;
                     break;
                 }
             }
@@ -2437,24 +2446,42 @@ float3 ms_beckmann_sample_stream_above(float3 v_7, float2 alpha_46, inout uint2 
     }
     const float _e75 = ms_stream_next(state_13);
     const float _e76 = ms_zig_normal(_e75, state_13);
-    float y_11 = (_e76 * 0.70710677);
+    float y_15 = (_e76 * 0.70710677);
     float _e80 = cp_2;
     float _e81 = x_10;
     float _e83 = sp_2;
-    float p_6 = (alpha_46.x * ((_e80 * _e81) - (_e83 * y_11)));
+    float p_6 = (alpha_46.x * ((_e80 * _e81) - (_e83 * y_15)));
     float _e88 = sp_2;
     float _e89 = x_10;
     float _e91 = cp_2;
-    float q_8 = (alpha_46.y * ((_e88 * _e89) + (_e91 * y_11)));
+    float q_8 = (alpha_46.y * ((_e88 * _e89) + (_e91 * y_15)));
     const float3 _e97 = ms_unit_normal(float3(p_6, q_8, 1.0));
     const float3 _e98 = ms_facing(_e97, v_7);
     return _e98;
 }
 
-float ms_posterior_ln_beta(uint mixing, float k_6, float mean_beta, float z_3, float h_1, inout uint2 state_14)
+float ms_mixing_ln_beta(uint mixing, float k_6, bool biased, inout uint2 state_14)
+{
+    float bias = (biased ? 1.0 : 0.0);
+    if ((mixing == 0u)) {
+        const float _e13 = ms_ln_gamma_variate((k_6 - (0.5 * bias)), state_14);
+        return (0.5 * (log(k_6) - _e13));
+    }
+    if ((mixing == 1u)) {
+        const float _e22 = ms_ln_gamma_variate((k_6 + (0.5 * bias)), state_14);
+        return (0.5 * _e22);
+    }
+    if ((mixing == 2u)) {
+        const float _e27 = ms_stream_next_positive(state_14);
+        return ((0.5 * log(_e27)) / (1.0 + (0.5 * bias)));
+    }
+    const float _e36 = ms_stream_next_positive(state_14);
+    return (log(_e36) / (1.0 + bias));
+}
+
+float ms_posterior_ln_beta(uint mixing_1, float k_7, float mean_beta, float z_3, float h_1, inout uint2 state_15)
 {
     int n_7 = int(0);
-    float ln_beta = (float)0;
     float keep = (float)0;
     bool local_29 = (bool)0;
 
@@ -2465,8 +2492,8 @@ float ms_posterior_ln_beta(uint mixing, float k_6, float mean_beta, float z_3, f
         if (all(loop_bound_7 == uint2(0u, 0u))) { break; }
         loop_bound_7 -= uint2(loop_bound_7.y == 0u, 1u);
         if (!loop_init_7) {
-            int _e87 = n_7;
-            n_7 = asint(asuint(_e87) + asuint(int(1)));
+            int _e47 = n_7;
+            n_7 = asint(asuint(_e47) + asuint(int(1)));
         }
         loop_init_7 = false;
         int _e13 = n_7;
@@ -2475,99 +2502,199 @@ float ms_posterior_ln_beta(uint mixing, float k_6, float mean_beta, float z_3, f
             break;
         }
         {
-            const float _e16 = ms_stream_next(state_14);
-            bool biased = (_e16 >= p_prior);
-            float bias = (biased ? 1.0 : 0.0);
-            ln_beta = ZeroValuefloat();
-            if ((mixing == 0u)) {
-                const float _e29 = ms_ln_gamma_variate((k_6 - (0.5 * bias)), state_14);
-                ln_beta = (0.5 * (log(k_6) - _e29));
-            } else {
-                if ((mixing == 1u)) {
-                    const float _e38 = ms_ln_gamma_variate((k_6 + (0.5 * bias)), state_14);
-                    ln_beta = (0.5 * _e38);
-                } else {
-                    if ((mixing == 2u)) {
-                        const float _e43 = ms_stream_next_positive(state_14);
-                        ln_beta = ((0.5 * log(_e43)) / (1.0 + (0.5 * bias)));
-                    } else {
-                        const float _e52 = ms_stream_next_positive(state_14);
-                        ln_beta = (log(_e52) / (1.0 + bias));
-                    }
-                }
-            }
-            float _e57 = ln_beta;
-            float hb = (h_1 * exp(_e57));
+            const float _e16 = ms_stream_next(state_15);
+            bool biased_1 = (_e16 >= p_prior);
+            const float _e18 = ms_mixing_ln_beta(mixing_1, k_7, biased_1, state_15);
+            float hb = (h_1 * exp(_e18));
             keep = 1.0;
             if ((hb > 0.0)) {
                 local_29 = (hb <= 3.4028235e38);
             } else {
                 local_29 = false;
             }
-            bool _e69 = local_29;
-            if (_e69) {
+            bool _e30 = local_29;
+            if (_e30) {
                 float a_24 = (z_3 / hb);
-                const float _e76 = ms_bk_erfc_ratio(a_24);
-                keep = ((z_3 + (((0.2820948 * hb) * exp((-(a_24) * a_24))) * _e76)) / (z_3 + (0.2820948 * hb)));
+                const float _e37 = ms_bk_erfc_ratio(a_24);
+                keep = ((z_3 + (((0.2820948 * hb) * exp((-(a_24) * a_24))) * _e37)) / (z_3 + (0.2820948 * hb)));
             }
-            const float _e82 = ms_stream_next(state_14);
-            float _e83 = keep;
-            if ((_e82 < _e83)) {
-                float _e85 = ln_beta;
-                return _e85;
+            const float _e43 = ms_stream_next(state_15);
+            float _e44 = keep;
+            if ((_e43 < _e44)) {
+                return _e18;
             }
         }
     }
     return asfloat(2143289344u);
 }
 
-float3 ms_mixture_sample_wm(uint mixing_1, uint table_2, float3 w_in_5, float2 alpha_47, float2 u_19)
+float ms_mixture_beta(float ln_beta, float2 alpha_47)
 {
-    float3 w_31 = (float3)0;
-    uint2 state_15 = (uint2)0;
-    float ln_beta_1 = (float)0;
-
-    const float3 _e5 = ms_unit(w_in_5);
-    w_31 = _e5;
-    float _e8 = w_31.z;
-    if ((_e8 < 0.0)) {
-        float3 _e11 = w_31;
-        w_31 = -(_e11);
-    }
-    float4 params = asfloat(ms_tables.Load4((table_2 + 2u)*16));
-    float _e20 = w_31.x;
-    float sx_9 = (alpha_47.x * _e20);
-    float _e24 = w_31.y;
-    float sy_8 = (alpha_47.y * _e24);
-    float h_9 = sqrt(((sx_9 * sx_9) + (sy_8 * sy_8)));
-    const uint2 _e30 = ms_stream_new(u_19);
-    state_15 = _e30;
-    float _e35 = w_31.z;
-    const float _e36 = ms_posterior_ln_beta(mixing_1, params.y, params.x, _e35, h_9, state_15);
-    ln_beta_1 = _e36;
-    float _e38 = ln_beta_1;
-    float _e39 = ln_beta_1;
-    if ((_e38 != _e39)) {
-        ln_beta_1 = log(params.x);
-    }
     float lo_6 = log(min(alpha_47.x, alpha_47.y));
     float hi_5 = log(max(alpha_47.x, alpha_47.y));
-    float _e51 = ln_beta_1;
-    float beta = exp(clamp(_e51, (-80.0 - lo_6), (80.0 - hi_5)));
-    float _e59 = w_31.z;
-    if (!((_e59 > 0.0))) {
-        float3 _e63 = w_31;
-        const float3 _e65 = ms_beckmann_sample_wm(_e63, (beta * alpha_47), u_19);
-        return _e65;
-    }
-    float3 _e66 = w_31;
-    const float3 _e68 = ms_beckmann_sample_stream_above(_e66, (beta * alpha_47), state_15);
-    return _e68;
+    return exp(clamp(ln_beta, (-80.0 - lo_6), (80.0 - hi_5)));
 }
 
-float ms_student_t_gamma(uint table_3)
+float3 ms_mixture_sample_wm(uint table_2, float3 w_in_5, float2 alpha_48, float2 u_19)
 {
-    float _e4 = asfloat(ms_tables.Load(0+table_3*16));
+    float3 w_31 = (float3)0;
+    uint2 state_16 = (uint2)0;
+    float ln_beta_1 = (float)0;
+
+    const float3 _e4 = ms_unit(w_in_5);
+    w_31 = _e4;
+    float _e7 = w_31.z;
+    if ((_e7 < 0.0)) {
+        float3 _e10 = w_31;
+        w_31 = -(_e10);
+    }
+    float4 params = asfloat(ms_tables.Load4((table_2 + 2u)*16));
+    float _e19 = w_31.x;
+    float sx_9 = (alpha_48.x * _e19);
+    float _e23 = w_31.y;
+    float sy_8 = (alpha_48.y * _e23);
+    float h_9 = sqrt(((sx_9 * sx_9) + (sy_8 * sy_8)));
+    const uint2 _e29 = ms_stream_new(u_19);
+    state_16 = _e29;
+    float _e36 = w_31.z;
+    const float _e37 = ms_posterior_ln_beta(naga_f2u32(params.z), params.y, params.x, _e36, h_9, state_16);
+    ln_beta_1 = _e37;
+    float _e39 = ln_beta_1;
+    float _e40 = ln_beta_1;
+    if ((_e39 != _e40)) {
+        ln_beta_1 = log(params.x);
+    }
+    float _e44 = ln_beta_1;
+    const float _e45 = ms_mixture_beta(_e44, alpha_48);
+    float _e47 = w_31.z;
+    if (!((_e47 > 0.0))) {
+        float3 _e51 = w_31;
+        const float3 _e53 = ms_beckmann_sample_wm(_e51, (_e45 * alpha_48), u_19);
+        return _e53;
+    }
+    float3 _e54 = w_31;
+    const float3 _e56 = ms_beckmann_sample_stream_above(_e54, (_e45 * alpha_48), state_16);
+    return _e56;
+}
+
+float ms_mixture_g1_(uint table_3, float3 w_32, float2 alpha_49)
+{
+    const float _e3 = ms_shape_lambda(table_3, w_32, alpha_49);
+    return (1.0 / (1.0 + _e3));
+}
+
+float ms_mixture_g2_(uint table_4, float3 wo_15, float3 wi_15, float2 alpha_50)
+{
+    const float _e4 = ms_shape_lambda(table_4, wo_15, alpha_50);
+    const float _e5 = ms_shape_lambda(table_4, wi_15, alpha_50);
+    return (1.0 / (1.0 + (_e4 + _e5)));
+}
+
+float ms_mixture_g2_separable(uint table_5, float3 wo_16, float3 wi_16, float2 alpha_51)
+{
+    const float _e4 = ms_mixture_g1_(table_5, wo_16, alpha_51);
+    const float _e5 = ms_mixture_g1_(table_5, wi_16, alpha_51);
+    return (_e4 * _e5);
+}
+
+float ms_mixture_pdf(uint table_6, float3 w_33, float3 wm_15, float2 alpha_52, float d_1)
+{
+    float c_5 = (float)0;
+    bool local_30 = (bool)0;
+
+    float z_19 = abs(w_33.z);
+    const float _e7 = ms_dot(w_33, wm_15);
+    c_5 = _e7;
+    if ((w_33.z < 0.0)) {
+        float _e12 = c_5;
+        c_5 = -(_e12);
+    }
+    float _e14 = c_5;
+    if ((_e14 > 0.0)) {
+        local_30 = (z_19 > 0.0);
+    } else {
+        local_30 = false;
+    }
+    bool _e22 = local_30;
+    if (!(_e22)) {
+        return 0.0;
+    }
+    const float _e25 = ms_mixture_g1_(table_6, w_33, alpha_52);
+    float _e26 = c_5;
+    return (((_e25 * _e26) * d_1) / z_19);
+}
+
+float3 ms_mixture_sample_dcos_wm(uint table_7, float2 alpha_53, float2 u_20)
+{
+    uint2 state_17 = (uint2)0;
+    float ln_beta_2 = (float)0;
+
+    float4 params_1 = asfloat(ms_tables.Load4((table_7 + 2u)*16));
+    const uint2 _e8 = ms_stream_new(u_20);
+    state_17 = _e8;
+    const float _e14 = ms_mixing_ln_beta(naga_f2u32(params_1.z), params_1.y, false, state_17);
+    ln_beta_2 = _e14;
+    float _e16 = ln_beta_2;
+    float _e17 = ln_beta_2;
+    if ((_e16 != _e17)) {
+        ln_beta_2 = log(params_1.x);
+    }
+    float _e21 = ln_beta_2;
+    const float _e22 = ms_mixture_beta(_e21, alpha_53);
+    const MsSample _e24 = ms_beckmann_sample_dcos((_e22 * alpha_53), u_20);
+    return _e24.wm;
+}
+
+float ms_mixture_d_from_ln_profile(float ln_f, float3 wm_16, float2 alpha_54)
+{
+    float ln_z = log(wm_16.z);
+    return exp(((ln_f - log((alpha_54.x * alpha_54.y))) - (4.0 * ln_z)));
+}
+
+float ms_mixture_r2_(float3 wm_17, float2 alpha_55)
+{
+    float x_24 = (wm_17.x / alpha_55.x);
+    float y_16 = (wm_17.y / alpha_55.y);
+    return (((x_24 * x_24) + (y_16 * y_16)) / (wm_17.z * wm_17.z));
+}
+
+float ms_k0e(float z_4)
+{
+    if ((z_4 < 6.1035156e-5)) {
+        return ((1.0 + z_4) * (-(log((0.5 * z_4))) - MS_EULER_GAMMA));
+    }
+    if ((z_4 >= 512.0)) {
+        float r_21 = (1.0 / z_4);
+        return (sqrt((1.5707964 * r_21)) * (1.0 - (r_21 * (0.125 - (r_21 * 0.0703125)))));
+    }
+    const float2 _e29 = ms_bk_segment(z_4, MS_SF_K0E_K0_, MS_SF_K0E_K1_);
+    uint i_10 = (MS_SF_K0E_AT + (2u * naga_f2u32(_e29.x)));
+    float4 _e38 = asfloat(ms_tables.Load4(i_10*16));
+    float4 _e43 = asfloat(ms_tables.Load4((i_10 + 1u)*16));
+    const float _e45 = ms_bk_poly(_e38, _e43, _e29.y);
+    return _e45;
+}
+
+float ms_e1x(float y_3)
+{
+    if ((y_3 < 5.9604645e-8)) {
+        return (-0.5772157 - log(y_3));
+    }
+    if ((y_3 >= 512.0)) {
+        float r_22 = (1.0 / y_3);
+        return (r_22 * (1.0 - (r_22 * (1.0 - (r_22 * (2.0 - (r_22 * 6.0)))))));
+    }
+    const float2 _e23 = ms_bk_segment(y_3, MS_SF_E1X_K0_, MS_SF_E1X_K1_);
+    uint i_11 = (MS_SF_E1X_AT + (2u * naga_f2u32(_e23.x)));
+    float4 _e32 = asfloat(ms_tables.Load4(i_11*16));
+    float4 _e37 = asfloat(ms_tables.Load4((i_11 + 1u)*16));
+    const float _e39 = ms_bk_poly(_e32, _e37, _e23.y);
+    return _e39;
+}
+
+float ms_student_t_gamma(uint table_8)
+{
+    float _e4 = asfloat(ms_tables.Load(0+table_8*16));
     return _e4;
 }
 
@@ -2588,327 +2715,653 @@ float ms_expm1_(float x_11)
     return (exp(x_11) - 1.0);
 }
 
-float ms_student_t_d(float3 wm_15, float2 alpha_48, uint table_4)
+float ms_student_t_d(float3 wm_18, float2 alpha_56, uint table_9)
 {
-    float z_18 = wm_15.z;
-    if (!((z_18 > 0.0))) {
-        return ((z_18 != z_18) ? z_18 : 0.0);
+    float z_20 = wm_18.z;
+    if (!((z_20 > 0.0))) {
+        return ((z_20 != z_20) ? z_20 : 0.0);
     }
-    const float _e10 = ms_student_t_gamma(table_4);
-    float x_24 = (wm_15.x / alpha_48.x);
-    float y_12 = (wm_15.y / alpha_48.y);
-    float q_9 = ((x_24 * x_24) + (y_12 * y_12));
-    float z2_4 = (z_18 * z_18);
-    if ((z_18 > 1e-9)) {
+    const float _e10 = ms_student_t_gamma(table_9);
+    float x_25 = (wm_18.x / alpha_56.x);
+    float y_17 = (wm_18.y / alpha_56.y);
+    float q_9 = ((x_25 * x_25) + (y_17 * y_17));
+    float z2_4 = (z_20 * z_20);
+    if ((z_20 > 1e-9)) {
         float t_12 = (q_9 / (z2_4 * (_e10 - 1.0)));
         const float _e27 = ms_ln_1p(t_12);
         float e_10 = (_e10 * _e27);
-        float norm = ((((MS_PI * alpha_48.x) * alpha_48.y) * z2_4) * z2_4);
+        float norm = ((((MS_PI * alpha_56.x) * alpha_56.y) * z2_4) * z2_4);
         if ((e_10 < 80.0)) {
             return (exp(-(e_10)) / norm);
         }
         return exp((-(e_10) - log(norm)));
     }
-    float ln_z = log(z_18);
-    float ln_d = (((-(_e10) * ((log(q_9) - (2.0 * ln_z)) - log((_e10 - 1.0)))) - (4.0 * ln_z)) - log(((MS_PI * alpha_48.x) * alpha_48.y)));
+    float ln_z_1 = log(z_20);
+    float ln_d = (((-(_e10) * ((log(q_9) - (2.0 * ln_z_1)) - log((_e10 - 1.0)))) - (4.0 * ln_z_1)) - log(((MS_PI * alpha_56.x) * alpha_56.y)));
     return exp(ln_d);
 }
 
-float ms_student_t_lambda(float3 w_32, float2 alpha_49, uint table_5)
+float ms_student_t_lambda(float3 w_34, float2 alpha_57, uint table_10)
 {
-    const float _e3 = ms_shape_lambda(table_5, w_32, alpha_49);
+    const float _e3 = ms_shape_lambda(table_10, w_34, alpha_57);
     return _e3;
 }
 
-float ms_student_t_g1_(float3 w_33, float2 alpha_50, uint table_6)
+float ms_student_t_g1_(float3 w_35, float2 alpha_58, uint table_11)
 {
-    const float _e3 = ms_student_t_lambda(w_33, alpha_50, table_6);
+    const float _e3 = ms_student_t_lambda(w_35, alpha_58, table_11);
     return (1.0 / (1.0 + _e3));
 }
 
-float ms_student_t_g2_(float3 wo_15, float3 wi_15, float2 alpha_51, uint table_7)
+float ms_student_t_g2_(float3 wo_17, float3 wi_17, float2 alpha_59, uint table_12)
 {
-    const float _e4 = ms_student_t_lambda(wo_15, alpha_51, table_7);
-    const float _e5 = ms_student_t_lambda(wi_15, alpha_51, table_7);
+    const float _e4 = ms_student_t_lambda(wo_17, alpha_59, table_12);
+    const float _e5 = ms_student_t_lambda(wi_17, alpha_59, table_12);
     return (1.0 / (1.0 + (_e4 + _e5)));
 }
 
-float ms_student_t_g2_separable(float3 wo_16, float3 wi_16, float2 alpha_52, uint table_8)
+float ms_student_t_g2_separable(float3 wo_18, float3 wi_18, float2 alpha_60, uint table_13)
 {
-    const float _e4 = ms_student_t_g1_(wo_16, alpha_52, table_8);
-    const float _e5 = ms_student_t_g1_(wi_16, alpha_52, table_8);
+    const float _e4 = ms_student_t_g1_(wo_18, alpha_60, table_13);
+    const float _e5 = ms_student_t_g1_(wi_18, alpha_60, table_13);
     return (_e4 * _e5);
 }
 
-float ms_student_t_pdf(float3 w_34, float3 wm_16, float2 alpha_53, uint table_9)
+float ms_student_t_pdf(float3 w_36, float3 wm_19, float2 alpha_61, uint table_14)
 {
-    float c_5 = (float)0;
-    bool local_30 = (bool)0;
+    float c_6 = (float)0;
+    bool local_31 = (bool)0;
 
-    float z_19 = abs(w_34.z);
-    const float _e6 = ms_dot(w_34, wm_16);
-    c_5 = _e6;
-    if ((w_34.z < 0.0)) {
-        float _e11 = c_5;
-        c_5 = -(_e11);
+    float z_21 = abs(w_36.z);
+    const float _e6 = ms_dot(w_36, wm_19);
+    c_6 = _e6;
+    if ((w_36.z < 0.0)) {
+        float _e11 = c_6;
+        c_6 = -(_e11);
     }
-    float _e13 = c_5;
+    float _e13 = c_6;
     if ((_e13 > 0.0)) {
-        local_30 = (z_19 > 0.0);
+        local_31 = (z_21 > 0.0);
     } else {
-        local_30 = false;
+        local_31 = false;
     }
-    bool _e21 = local_30;
+    bool _e21 = local_31;
     if (!(_e21)) {
         return 0.0;
     }
-    const float _e24 = ms_student_t_g1_(w_34, alpha_53, table_9);
-    float _e25 = c_5;
-    const float _e27 = ms_student_t_d(wm_16, alpha_53, table_9);
-    return (((_e24 * _e25) * _e27) / z_19);
+    const float _e24 = ms_student_t_g1_(w_36, alpha_61, table_14);
+    float _e25 = c_6;
+    const float _e27 = ms_student_t_d(wm_19, alpha_61, table_14);
+    return (((_e24 * _e25) * _e27) / z_21);
 }
 
-float ms_student_t_pdf_dcos(float3 wm_17, float2 alpha_54, uint table_10)
-{
-    if (!((wm_17.z > 0.0))) {
-        return 0.0;
-    }
-    const float _e8 = ms_student_t_d(wm_17, alpha_54, table_10);
-    return (_e8 * wm_17.z);
-}
-
-MsSample ms_student_t_sample_dcos(float2 alpha_55, float2 u_20, uint table_11)
-{
-    float3 v_8 = (float3)0;
-
-    const float _e3 = ms_student_t_gamma(table_11);
-    float g1_1 = (_e3 - 1.0);
-    const float _e7 = ms_bk_ln_1m(u_20.x);
-    const float _e10 = ms_expm1_((-(_e7) / g1_1));
-    float r_21 = sqrt((g1_1 * _e10));
-    const float2 _e14 = ms_cos_sin_turn(u_20.y);
-    if ((r_21 > 1.0)) {
-        v_8 = float3((alpha_55.x * _e14.x), (alpha_55.y * _e14.y), (1.0 / r_21));
-    } else {
-        v_8 = float3(((alpha_55.x * r_21) * _e14.x), ((alpha_55.y * r_21) * _e14.y), 1.0);
-    }
-    float3 _e37 = v_8;
-    const float3 _e38 = ms_unit_normal(_e37);
-    const float _e39 = ms_student_t_pdf_dcos(_e38, alpha_55, table_11);
-    const MsSample mssample_9 = ConstructMsSample(_e38, _e39);
-    return mssample_9;
-}
-
-MsSample ms_student_t_sample(float3 w_35, float2 alpha_56, float2 u_21, uint table_12)
-{
-    const float3 _e5 = ms_mixture_sample_wm(0u, table_12, w_35, alpha_56, u_21);
-    const float3 _e6 = ms_unit(w_35);
-    const float _e7 = ms_student_t_pdf(_e6, _e5, alpha_56, table_12);
-    const MsSample mssample_10 = ConstructMsSample(_e5, _e7);
-    return mssample_10;
-}
-
-float ms_d(MsMicrofacet mf, float3 wm_18)
-{
-    if ((mf.ndf == MS_NDF_GGX)) {
-        const float _e6 = ms_ggx_d(wm_18, mf.alpha);
-        return _e6;
-    }
-    if ((mf.ndf == MS_NDF_BECKMANN)) {
-        const float _e11 = ms_beckmann_d(wm_18, mf.alpha);
-        return _e11;
-    }
-    if ((mf.ndf == MS_NDF_DOUBLE_GGX)) {
-        const float _e16 = ms_double_ggx_d(wm_18, mf.alpha);
-        return _e16;
-    }
-    if ((mf.ndf == MS_NDF_EXPONENTIAL)) {
-        const float _e21 = ms_exponential_d(wm_18, mf.alpha);
-        return _e21;
-    }
-    if ((mf.ndf == MS_NDF_STUDENT_T)) {
-        const float _e27 = ms_student_t_d(wm_18, mf.alpha, mf.table);
-        return _e27;
-    }
-    return 0.0;
-}
-
-float ms_lambda(MsMicrofacet mf_1, float3 w_36)
-{
-    if ((mf_1.ndf == MS_NDF_GGX)) {
-        const float _e6 = ms_ggx_lambda(w_36, mf_1.alpha);
-        return _e6;
-    }
-    if ((mf_1.ndf == MS_NDF_BECKMANN)) {
-        const float _e11 = ms_beckmann_lambda(w_36, mf_1.alpha);
-        return _e11;
-    }
-    if ((mf_1.ndf == MS_NDF_DOUBLE_GGX)) {
-        const float _e16 = ms_double_ggx_lambda(w_36, mf_1.alpha);
-        return _e16;
-    }
-    if ((mf_1.ndf == MS_NDF_EXPONENTIAL)) {
-        const float _e21 = ms_exponential_lambda(w_36, mf_1.alpha);
-        return _e21;
-    }
-    if ((mf_1.ndf == MS_NDF_STUDENT_T)) {
-        const float _e27 = ms_student_t_lambda(w_36, mf_1.alpha, mf_1.table);
-        return _e27;
-    }
-    return 0.0;
-}
-
-float ms_g1_(MsMicrofacet mf_2, float3 w_37)
-{
-    if ((mf_2.ndf == MS_NDF_GGX)) {
-        const float _e6 = ms_ggx_g1_(w_37, mf_2.alpha);
-        return _e6;
-    }
-    if ((mf_2.ndf == MS_NDF_BECKMANN)) {
-        const float _e11 = ms_beckmann_g1_(w_37, mf_2.alpha);
-        return _e11;
-    }
-    if ((mf_2.ndf == MS_NDF_DOUBLE_GGX)) {
-        const float _e16 = ms_double_ggx_g1_(w_37, mf_2.alpha);
-        return _e16;
-    }
-    if ((mf_2.ndf == MS_NDF_EXPONENTIAL)) {
-        const float _e21 = ms_exponential_g1_(w_37, mf_2.alpha);
-        return _e21;
-    }
-    if ((mf_2.ndf == MS_NDF_STUDENT_T)) {
-        const float _e27 = ms_student_t_g1_(w_37, mf_2.alpha, mf_2.table);
-        return _e27;
-    }
-    return 0.0;
-}
-
-float ms_g2_(MsMicrofacet mf_3, float3 wo_17, float3 wi_17)
-{
-    if ((mf_3.ndf == MS_NDF_GGX)) {
-        const float _e7 = ms_ggx_g2_(wo_17, wi_17, mf_3.alpha);
-        return _e7;
-    }
-    if ((mf_3.ndf == MS_NDF_BECKMANN)) {
-        const float _e12 = ms_beckmann_g2_(wo_17, wi_17, mf_3.alpha);
-        return _e12;
-    }
-    if ((mf_3.ndf == MS_NDF_DOUBLE_GGX)) {
-        const float _e17 = ms_double_ggx_g2_(wo_17, wi_17, mf_3.alpha);
-        return _e17;
-    }
-    if ((mf_3.ndf == MS_NDF_EXPONENTIAL)) {
-        const float _e22 = ms_exponential_g2_(wo_17, wi_17, mf_3.alpha);
-        return _e22;
-    }
-    if ((mf_3.ndf == MS_NDF_STUDENT_T)) {
-        const float _e28 = ms_student_t_g2_(wo_17, wi_17, mf_3.alpha, mf_3.table);
-        return _e28;
-    }
-    return 0.0;
-}
-
-float ms_g2_separable(MsMicrofacet mf_4, float3 wo_18, float3 wi_18)
-{
-    const float _e3 = ms_g1_(mf_4, wo_18);
-    const float _e4 = ms_g1_(mf_4, wi_18);
-    return (_e3 * _e4);
-}
-
-float ms_pdf(MsMicrofacet mf_5, float3 w_38, float3 wm_19)
-{
-    if ((mf_5.ndf == MS_NDF_GGX)) {
-        const float _e7 = ms_ggx_pdf(w_38, wm_19, mf_5.alpha);
-        return _e7;
-    }
-    if ((mf_5.ndf == MS_NDF_BECKMANN)) {
-        const float _e12 = ms_beckmann_pdf(w_38, wm_19, mf_5.alpha);
-        return _e12;
-    }
-    if ((mf_5.ndf == MS_NDF_DOUBLE_GGX)) {
-        const float _e17 = ms_double_ggx_pdf(w_38, wm_19, mf_5.alpha);
-        return _e17;
-    }
-    if ((mf_5.ndf == MS_NDF_EXPONENTIAL)) {
-        const float _e22 = ms_exponential_pdf(w_38, wm_19, mf_5.alpha);
-        return _e22;
-    }
-    if ((mf_5.ndf == MS_NDF_STUDENT_T)) {
-        const float _e28 = ms_student_t_pdf(w_38, wm_19, mf_5.alpha, mf_5.table);
-        return _e28;
-    }
-    return 0.0;
-}
-
-float ms_pdf_dcos(MsMicrofacet mf_6, float3 wm_20)
+float ms_student_t_pdf_dcos(float3 wm_20, float2 alpha_62, uint table_15)
 {
     if (!((wm_20.z > 0.0))) {
         return 0.0;
     }
-    const float _e7 = ms_d(mf_6, wm_20);
-    return (_e7 * wm_20.z);
+    const float _e8 = ms_student_t_d(wm_20, alpha_62, table_15);
+    return (_e8 * wm_20.z);
 }
 
-MsSample ms_sample(MsMicrofacet mf_7, float3 w_39, float2 u_22)
+MsSample ms_student_t_sample_dcos(float2 alpha_63, float2 u_21, uint table_16)
 {
-    if ((mf_7.ndf == MS_NDF_GGX)) {
-        const MsSample _e7 = ms_ggx_sample(w_39, mf_7.alpha, u_22);
-        const MsSample mssample_11 = _e7;
-        return mssample_11;
+    float3 v_8 = (float3)0;
+
+    const float _e3 = ms_student_t_gamma(table_16);
+    float g1_1 = (_e3 - 1.0);
+    const float _e7 = ms_bk_ln_1m(u_21.x);
+    const float _e10 = ms_expm1_((-(_e7) / g1_1));
+    float r_23 = sqrt((g1_1 * _e10));
+    const float2 _e14 = ms_cos_sin_turn(u_21.y);
+    if ((r_23 > 1.0)) {
+        v_8 = float3((alpha_63.x * _e14.x), (alpha_63.y * _e14.y), (1.0 / r_23));
+    } else {
+        v_8 = float3(((alpha_63.x * r_23) * _e14.x), ((alpha_63.y * r_23) * _e14.y), 1.0);
     }
-    if ((mf_7.ndf == MS_NDF_BECKMANN)) {
-        const MsSample _e12 = ms_beckmann_sample(w_39, mf_7.alpha, u_22);
-        const MsSample mssample_12 = _e12;
-        return mssample_12;
+    float3 _e37 = v_8;
+    const float3 _e38 = ms_unit_normal(_e37);
+    const float _e39 = ms_student_t_pdf_dcos(_e38, alpha_63, table_16);
+    const MsSample mssample_9 = ConstructMsSample(_e38, _e39);
+    return mssample_9;
+}
+
+MsSample ms_student_t_sample(float3 w_37, float2 alpha_64, float2 u_22, uint table_17)
+{
+    const float3 _e4 = ms_mixture_sample_wm(table_17, w_37, alpha_64, u_22);
+    const float3 _e5 = ms_unit(w_37);
+    const float _e6 = ms_student_t_pdf(_e5, _e4, alpha_64, table_17);
+    const MsSample mssample_10 = ConstructMsSample(_e4, _e6);
+    return mssample_10;
+}
+
+float ms_ei_ln_profile(float y_4)
+{
+    const float _e1 = ms_e1x(y_4);
+    return ((log(_e1) - y_4) - 1.14473);
+}
+
+float ms_ei_d(float3 wm_21, float2 alpha_65)
+{
+    if (!((wm_21.z > 0.0))) {
+        return ((wm_21.z != wm_21.z) ? wm_21.z : 0.0);
     }
-    if ((mf_7.ndf == MS_NDF_DOUBLE_GGX)) {
-        const MsSample _e17 = ms_double_ggx_sample(w_39, mf_7.alpha, u_22);
-        const MsSample mssample_13 = _e17;
-        return mssample_13;
+    const float _e12 = ms_mixture_r2_(wm_21, alpha_65);
+    if ((_e12 == 0.0)) {
+        const float _e15 = ms_inf();
+        return _e15;
     }
-    if ((mf_7.ndf == MS_NDF_EXPONENTIAL)) {
-        const MsSample _e22 = ms_exponential_sample(w_39, mf_7.alpha, u_22);
-        const MsSample mssample_14 = _e22;
-        return mssample_14;
+    const float _e16 = ms_ei_ln_profile(_e12);
+    const float _e17 = ms_mixture_d_from_ln_profile(_e16, wm_21, alpha_65);
+    return _e17;
+}
+
+float ms_ei_lambda(float3 w_38, float2 alpha_66, uint table_18)
+{
+    const float _e3 = ms_shape_lambda(table_18, w_38, alpha_66);
+    return _e3;
+}
+
+float ms_ei_g1_(float3 w_39, float2 alpha_67, uint table_19)
+{
+    const float _e3 = ms_mixture_g1_(table_19, w_39, alpha_67);
+    return _e3;
+}
+
+float ms_ei_g2_(float3 wo_19, float3 wi_19, float2 alpha_68, uint table_20)
+{
+    const float _e4 = ms_mixture_g2_(table_20, wo_19, wi_19, alpha_68);
+    return _e4;
+}
+
+float ms_ei_g2_separable(float3 wo_20, float3 wi_20, float2 alpha_69, uint table_21)
+{
+    const float _e4 = ms_mixture_g2_separable(table_21, wo_20, wi_20, alpha_69);
+    return _e4;
+}
+
+float ms_ei_pdf(float3 w_40, float3 wm_22, float2 alpha_70, uint table_22)
+{
+    const float _e4 = ms_ei_d(wm_22, alpha_70);
+    const float _e5 = ms_mixture_pdf(table_22, w_40, wm_22, alpha_70, _e4);
+    return _e5;
+}
+
+float ms_ei_pdf_dcos(float3 wm_23, float2 alpha_71)
+{
+    if (!((wm_23.z > 0.0))) {
+        return 0.0;
     }
-    if ((mf_7.ndf == MS_NDF_STUDENT_T)) {
-        const MsSample _e28 = ms_student_t_sample(w_39, mf_7.alpha, u_22, mf_7.table);
-        const MsSample mssample_15 = _e28;
-        return mssample_15;
+    const float _e7 = ms_ei_d(wm_23, alpha_71);
+    return (_e7 * wm_23.z);
+}
+
+MsSample ms_ei_sample_dcos(float2 alpha_72, float2 u_23, uint table_23)
+{
+    const float3 _e3 = ms_mixture_sample_dcos_wm(table_23, alpha_72, u_23);
+    const float _e4 = ms_ei_pdf_dcos(_e3, alpha_72);
+    const MsSample mssample_11 = ConstructMsSample(_e3, _e4);
+    return mssample_11;
+}
+
+MsSample ms_ei_sample(float3 w_41, float2 alpha_73, float2 u_24, uint table_24)
+{
+    const float3 _e4 = ms_mixture_sample_wm(table_24, w_41, alpha_73, u_24);
+    const float3 _e5 = ms_unit(w_41);
+    const float _e6 = ms_ei_pdf(_e5, _e4, alpha_73, table_24);
+    const MsSample mssample_12 = ConstructMsSample(_e4, _e6);
+    return mssample_12;
+}
+
+float ms_erfc_ln_profile(float y_5)
+{
+    float r_24 = sqrt(y_5);
+    const float _e2 = ms_bk_erfcx(r_24);
+    return (log((_e2 / (3.5449078 * r_24))) - y_5);
+}
+
+float ms_erfc_d(float3 wm_24, float2 alpha_74)
+{
+    if (!((wm_24.z > 0.0))) {
+        return ((wm_24.z != wm_24.z) ? wm_24.z : 0.0);
     }
-    const MsSample mssample_16 = ConstructMsSample(float3(0.0, 0.0, 1.0), 0.0);
+    const float _e12 = ms_mixture_r2_(wm_24, alpha_74);
+    if ((_e12 == 0.0)) {
+        const float _e15 = ms_inf();
+        return _e15;
+    }
+    const float _e16 = ms_erfc_ln_profile(_e12);
+    const float _e17 = ms_mixture_d_from_ln_profile(_e16, wm_24, alpha_74);
+    return _e17;
+}
+
+float ms_erfc_lambda(float3 w_42, float2 alpha_75, uint table_25)
+{
+    const float _e3 = ms_shape_lambda(table_25, w_42, alpha_75);
+    return _e3;
+}
+
+float ms_erfc_g1_(float3 w_43, float2 alpha_76, uint table_26)
+{
+    const float _e3 = ms_mixture_g1_(table_26, w_43, alpha_76);
+    return _e3;
+}
+
+float ms_erfc_g2_(float3 wo_21, float3 wi_21, float2 alpha_77, uint table_27)
+{
+    const float _e4 = ms_mixture_g2_(table_27, wo_21, wi_21, alpha_77);
+    return _e4;
+}
+
+float ms_erfc_g2_separable(float3 wo_22, float3 wi_22, float2 alpha_78, uint table_28)
+{
+    const float _e4 = ms_mixture_g2_separable(table_28, wo_22, wi_22, alpha_78);
+    return _e4;
+}
+
+float ms_erfc_pdf(float3 w_44, float3 wm_25, float2 alpha_79, uint table_29)
+{
+    const float _e4 = ms_erfc_d(wm_25, alpha_79);
+    const float _e5 = ms_mixture_pdf(table_29, w_44, wm_25, alpha_79, _e4);
+    return _e5;
+}
+
+float ms_erfc_pdf_dcos(float3 wm_26, float2 alpha_80)
+{
+    if (!((wm_26.z > 0.0))) {
+        return 0.0;
+    }
+    const float _e7 = ms_erfc_d(wm_26, alpha_80);
+    return (_e7 * wm_26.z);
+}
+
+MsSample ms_erfc_sample_dcos(float2 alpha_81, float2 u_25, uint table_30)
+{
+    const float3 _e3 = ms_mixture_sample_dcos_wm(table_30, alpha_81, u_25);
+    const float _e4 = ms_erfc_pdf_dcos(_e3, alpha_81);
+    const MsSample mssample_13 = ConstructMsSample(_e3, _e4);
+    return mssample_13;
+}
+
+MsSample ms_erfc_sample(float3 w_45, float2 alpha_82, float2 u_26, uint table_31)
+{
+    const float3 _e4 = ms_mixture_sample_wm(table_31, w_45, alpha_82, u_26);
+    const float3 _e5 = ms_unit(w_45);
+    const float _e6 = ms_erfc_pdf(_e5, _e4, alpha_82, table_31);
+    const MsSample mssample_14 = ConstructMsSample(_e4, _e6);
+    return mssample_14;
+}
+
+float ms_k0_ln_profile(float y_6)
+{
+    float z_22 = (2.0 * sqrt(y_6));
+    const float _e4 = ms_k0e(z_22);
+    return (log(((2.0 * _e4) / MS_PI)) - z_22);
+}
+
+float ms_k0_d(float3 wm_27, float2 alpha_83)
+{
+    if (!((wm_27.z > 0.0))) {
+        return ((wm_27.z != wm_27.z) ? wm_27.z : 0.0);
+    }
+    const float _e12 = ms_mixture_r2_(wm_27, alpha_83);
+    if ((_e12 == 0.0)) {
+        const float _e15 = ms_inf();
+        return _e15;
+    }
+    const float _e16 = ms_k0_ln_profile(_e12);
+    const float _e17 = ms_mixture_d_from_ln_profile(_e16, wm_27, alpha_83);
+    return _e17;
+}
+
+float ms_k0_lambda(float3 w_46, float2 alpha_84, uint table_32)
+{
+    const float _e3 = ms_shape_lambda(table_32, w_46, alpha_84);
+    return _e3;
+}
+
+float ms_k0_g1_(float3 w_47, float2 alpha_85, uint table_33)
+{
+    const float _e3 = ms_mixture_g1_(table_33, w_47, alpha_85);
+    return _e3;
+}
+
+float ms_k0_g2_(float3 wo_23, float3 wi_23, float2 alpha_86, uint table_34)
+{
+    const float _e4 = ms_mixture_g2_(table_34, wo_23, wi_23, alpha_86);
+    return _e4;
+}
+
+float ms_k0_g2_separable(float3 wo_24, float3 wi_24, float2 alpha_87, uint table_35)
+{
+    const float _e4 = ms_mixture_g2_separable(table_35, wo_24, wi_24, alpha_87);
+    return _e4;
+}
+
+float ms_k0_pdf(float3 w_48, float3 wm_28, float2 alpha_88, uint table_36)
+{
+    const float _e4 = ms_k0_d(wm_28, alpha_88);
+    const float _e5 = ms_mixture_pdf(table_36, w_48, wm_28, alpha_88, _e4);
+    return _e5;
+}
+
+float ms_k0_pdf_dcos(float3 wm_29, float2 alpha_89)
+{
+    if (!((wm_29.z > 0.0))) {
+        return 0.0;
+    }
+    const float _e7 = ms_k0_d(wm_29, alpha_89);
+    return (_e7 * wm_29.z);
+}
+
+MsSample ms_k0_sample_dcos(float2 alpha_90, float2 u_27, uint table_37)
+{
+    const float3 _e3 = ms_mixture_sample_dcos_wm(table_37, alpha_90, u_27);
+    const float _e4 = ms_k0_pdf_dcos(_e3, alpha_90);
+    const MsSample mssample_15 = ConstructMsSample(_e3, _e4);
+    return mssample_15;
+}
+
+MsSample ms_k0_sample(float3 w_49, float2 alpha_91, float2 u_28, uint table_38)
+{
+    const float3 _e4 = ms_mixture_sample_wm(table_38, w_49, alpha_91, u_28);
+    const float3 _e5 = ms_unit(w_49);
+    const float _e6 = ms_k0_pdf(_e5, _e4, alpha_91, table_38);
+    const MsSample mssample_16 = ConstructMsSample(_e4, _e6);
     return mssample_16;
 }
 
-MsSample ms_sample_dcos(MsMicrofacet mf_8, float2 u_23)
+float ms_d(MsMicrofacet mf, float3 wm_30)
 {
-    if ((mf_8.ndf == MS_NDF_GGX)) {
-        const MsSample _e6 = ms_ggx_sample_dcos(mf_8.alpha, u_23);
-        const MsSample mssample_17 = _e6;
+    if ((mf.ndf == MS_NDF_GGX)) {
+        const float _e6 = ms_ggx_d(wm_30, mf.alpha);
+        return _e6;
+    }
+    if ((mf.ndf == MS_NDF_BECKMANN)) {
+        const float _e11 = ms_beckmann_d(wm_30, mf.alpha);
+        return _e11;
+    }
+    if ((mf.ndf == MS_NDF_DOUBLE_GGX)) {
+        const float _e16 = ms_double_ggx_d(wm_30, mf.alpha);
+        return _e16;
+    }
+    if ((mf.ndf == MS_NDF_EXPONENTIAL)) {
+        const float _e21 = ms_exponential_d(wm_30, mf.alpha);
+        return _e21;
+    }
+    if ((mf.ndf == MS_NDF_STUDENT_T)) {
+        const float _e27 = ms_student_t_d(wm_30, mf.alpha, mf.table);
+        return _e27;
+    }
+    if ((mf.ndf == MS_NDF_EI)) {
+        const float _e32 = ms_ei_d(wm_30, mf.alpha);
+        return _e32;
+    }
+    if ((mf.ndf == MS_NDF_ERFC)) {
+        const float _e37 = ms_erfc_d(wm_30, mf.alpha);
+        return _e37;
+    }
+    if ((mf.ndf == MS_NDF_K0_)) {
+        const float _e42 = ms_k0_d(wm_30, mf.alpha);
+        return _e42;
+    }
+    return 0.0;
+}
+
+float ms_lambda(MsMicrofacet mf_1, float3 w_50)
+{
+    if ((mf_1.ndf == MS_NDF_GGX)) {
+        const float _e6 = ms_ggx_lambda(w_50, mf_1.alpha);
+        return _e6;
+    }
+    if ((mf_1.ndf == MS_NDF_BECKMANN)) {
+        const float _e11 = ms_beckmann_lambda(w_50, mf_1.alpha);
+        return _e11;
+    }
+    if ((mf_1.ndf == MS_NDF_DOUBLE_GGX)) {
+        const float _e16 = ms_double_ggx_lambda(w_50, mf_1.alpha);
+        return _e16;
+    }
+    if ((mf_1.ndf == MS_NDF_EXPONENTIAL)) {
+        const float _e21 = ms_exponential_lambda(w_50, mf_1.alpha);
+        return _e21;
+    }
+    if ((mf_1.ndf == MS_NDF_STUDENT_T)) {
+        const float _e27 = ms_student_t_lambda(w_50, mf_1.alpha, mf_1.table);
+        return _e27;
+    }
+    if ((mf_1.ndf == MS_NDF_EI)) {
+        const float _e33 = ms_ei_lambda(w_50, mf_1.alpha, mf_1.table);
+        return _e33;
+    }
+    if ((mf_1.ndf == MS_NDF_ERFC)) {
+        const float _e39 = ms_erfc_lambda(w_50, mf_1.alpha, mf_1.table);
+        return _e39;
+    }
+    if ((mf_1.ndf == MS_NDF_K0_)) {
+        const float _e45 = ms_k0_lambda(w_50, mf_1.alpha, mf_1.table);
+        return _e45;
+    }
+    return 0.0;
+}
+
+float ms_g1_(MsMicrofacet mf_2, float3 w_51)
+{
+    if ((mf_2.ndf == MS_NDF_GGX)) {
+        const float _e6 = ms_ggx_g1_(w_51, mf_2.alpha);
+        return _e6;
+    }
+    if ((mf_2.ndf == MS_NDF_BECKMANN)) {
+        const float _e11 = ms_beckmann_g1_(w_51, mf_2.alpha);
+        return _e11;
+    }
+    if ((mf_2.ndf == MS_NDF_DOUBLE_GGX)) {
+        const float _e16 = ms_double_ggx_g1_(w_51, mf_2.alpha);
+        return _e16;
+    }
+    if ((mf_2.ndf == MS_NDF_EXPONENTIAL)) {
+        const float _e21 = ms_exponential_g1_(w_51, mf_2.alpha);
+        return _e21;
+    }
+    if ((mf_2.ndf == MS_NDF_STUDENT_T)) {
+        const float _e27 = ms_student_t_g1_(w_51, mf_2.alpha, mf_2.table);
+        return _e27;
+    }
+    if ((mf_2.ndf == MS_NDF_EI)) {
+        const float _e33 = ms_ei_g1_(w_51, mf_2.alpha, mf_2.table);
+        return _e33;
+    }
+    if ((mf_2.ndf == MS_NDF_ERFC)) {
+        const float _e39 = ms_erfc_g1_(w_51, mf_2.alpha, mf_2.table);
+        return _e39;
+    }
+    if ((mf_2.ndf == MS_NDF_K0_)) {
+        const float _e45 = ms_k0_g1_(w_51, mf_2.alpha, mf_2.table);
+        return _e45;
+    }
+    return 0.0;
+}
+
+float ms_g2_(MsMicrofacet mf_3, float3 wo_25, float3 wi_25)
+{
+    if ((mf_3.ndf == MS_NDF_GGX)) {
+        const float _e7 = ms_ggx_g2_(wo_25, wi_25, mf_3.alpha);
+        return _e7;
+    }
+    if ((mf_3.ndf == MS_NDF_BECKMANN)) {
+        const float _e12 = ms_beckmann_g2_(wo_25, wi_25, mf_3.alpha);
+        return _e12;
+    }
+    if ((mf_3.ndf == MS_NDF_DOUBLE_GGX)) {
+        const float _e17 = ms_double_ggx_g2_(wo_25, wi_25, mf_3.alpha);
+        return _e17;
+    }
+    if ((mf_3.ndf == MS_NDF_EXPONENTIAL)) {
+        const float _e22 = ms_exponential_g2_(wo_25, wi_25, mf_3.alpha);
+        return _e22;
+    }
+    if ((mf_3.ndf == MS_NDF_STUDENT_T)) {
+        const float _e28 = ms_student_t_g2_(wo_25, wi_25, mf_3.alpha, mf_3.table);
+        return _e28;
+    }
+    if ((mf_3.ndf == MS_NDF_EI)) {
+        const float _e34 = ms_ei_g2_(wo_25, wi_25, mf_3.alpha, mf_3.table);
+        return _e34;
+    }
+    if ((mf_3.ndf == MS_NDF_ERFC)) {
+        const float _e40 = ms_erfc_g2_(wo_25, wi_25, mf_3.alpha, mf_3.table);
+        return _e40;
+    }
+    if ((mf_3.ndf == MS_NDF_K0_)) {
+        const float _e46 = ms_k0_g2_(wo_25, wi_25, mf_3.alpha, mf_3.table);
+        return _e46;
+    }
+    return 0.0;
+}
+
+float ms_g2_separable(MsMicrofacet mf_4, float3 wo_26, float3 wi_26)
+{
+    const float _e3 = ms_g1_(mf_4, wo_26);
+    const float _e4 = ms_g1_(mf_4, wi_26);
+    return (_e3 * _e4);
+}
+
+float ms_pdf(MsMicrofacet mf_5, float3 w_52, float3 wm_31)
+{
+    if ((mf_5.ndf == MS_NDF_GGX)) {
+        const float _e7 = ms_ggx_pdf(w_52, wm_31, mf_5.alpha);
+        return _e7;
+    }
+    if ((mf_5.ndf == MS_NDF_BECKMANN)) {
+        const float _e12 = ms_beckmann_pdf(w_52, wm_31, mf_5.alpha);
+        return _e12;
+    }
+    if ((mf_5.ndf == MS_NDF_DOUBLE_GGX)) {
+        const float _e17 = ms_double_ggx_pdf(w_52, wm_31, mf_5.alpha);
+        return _e17;
+    }
+    if ((mf_5.ndf == MS_NDF_EXPONENTIAL)) {
+        const float _e22 = ms_exponential_pdf(w_52, wm_31, mf_5.alpha);
+        return _e22;
+    }
+    if ((mf_5.ndf == MS_NDF_STUDENT_T)) {
+        const float _e28 = ms_student_t_pdf(w_52, wm_31, mf_5.alpha, mf_5.table);
+        return _e28;
+    }
+    if ((mf_5.ndf == MS_NDF_EI)) {
+        const float _e34 = ms_ei_pdf(w_52, wm_31, mf_5.alpha, mf_5.table);
+        return _e34;
+    }
+    if ((mf_5.ndf == MS_NDF_ERFC)) {
+        const float _e40 = ms_erfc_pdf(w_52, wm_31, mf_5.alpha, mf_5.table);
+        return _e40;
+    }
+    if ((mf_5.ndf == MS_NDF_K0_)) {
+        const float _e46 = ms_k0_pdf(w_52, wm_31, mf_5.alpha, mf_5.table);
+        return _e46;
+    }
+    return 0.0;
+}
+
+float ms_pdf_dcos(MsMicrofacet mf_6, float3 wm_32)
+{
+    if (!((wm_32.z > 0.0))) {
+        return 0.0;
+    }
+    const float _e7 = ms_d(mf_6, wm_32);
+    return (_e7 * wm_32.z);
+}
+
+MsSample ms_sample(MsMicrofacet mf_7, float3 w_53, float2 u_29)
+{
+    if ((mf_7.ndf == MS_NDF_GGX)) {
+        const MsSample _e7 = ms_ggx_sample(w_53, mf_7.alpha, u_29);
+        const MsSample mssample_17 = _e7;
         return mssample_17;
     }
-    if ((mf_8.ndf == MS_NDF_BECKMANN)) {
-        const MsSample _e11 = ms_beckmann_sample_dcos(mf_8.alpha, u_23);
-        const MsSample mssample_18 = _e11;
+    if ((mf_7.ndf == MS_NDF_BECKMANN)) {
+        const MsSample _e12 = ms_beckmann_sample(w_53, mf_7.alpha, u_29);
+        const MsSample mssample_18 = _e12;
         return mssample_18;
     }
-    if ((mf_8.ndf == MS_NDF_DOUBLE_GGX)) {
-        const MsSample _e16 = ms_double_ggx_sample_dcos(mf_8.alpha, u_23);
-        const MsSample mssample_19 = _e16;
+    if ((mf_7.ndf == MS_NDF_DOUBLE_GGX)) {
+        const MsSample _e17 = ms_double_ggx_sample(w_53, mf_7.alpha, u_29);
+        const MsSample mssample_19 = _e17;
         return mssample_19;
     }
-    if ((mf_8.ndf == MS_NDF_EXPONENTIAL)) {
-        const MsSample _e21 = ms_exponential_sample_dcos(mf_8.alpha, u_23);
-        const MsSample mssample_20 = _e21;
+    if ((mf_7.ndf == MS_NDF_EXPONENTIAL)) {
+        const MsSample _e22 = ms_exponential_sample(w_53, mf_7.alpha, u_29);
+        const MsSample mssample_20 = _e22;
         return mssample_20;
     }
-    if ((mf_8.ndf == MS_NDF_STUDENT_T)) {
-        const MsSample _e27 = ms_student_t_sample_dcos(mf_8.alpha, u_23, mf_8.table);
-        const MsSample mssample_21 = _e27;
+    if ((mf_7.ndf == MS_NDF_STUDENT_T)) {
+        const MsSample _e28 = ms_student_t_sample(w_53, mf_7.alpha, u_29, mf_7.table);
+        const MsSample mssample_21 = _e28;
         return mssample_21;
     }
-    const MsSample mssample_22 = ConstructMsSample(float3(0.0, 0.0, 1.0), 0.0);
-    return mssample_22;
+    if ((mf_7.ndf == MS_NDF_EI)) {
+        const MsSample _e34 = ms_ei_sample(w_53, mf_7.alpha, u_29, mf_7.table);
+        const MsSample mssample_22 = _e34;
+        return mssample_22;
+    }
+    if ((mf_7.ndf == MS_NDF_ERFC)) {
+        const MsSample _e40 = ms_erfc_sample(w_53, mf_7.alpha, u_29, mf_7.table);
+        const MsSample mssample_23 = _e40;
+        return mssample_23;
+    }
+    if ((mf_7.ndf == MS_NDF_K0_)) {
+        const MsSample _e46 = ms_k0_sample(w_53, mf_7.alpha, u_29, mf_7.table);
+        const MsSample mssample_24 = _e46;
+        return mssample_24;
+    }
+    const MsSample mssample_25 = ConstructMsSample(float3(0.0, 0.0, 1.0), 0.0);
+    return mssample_25;
+}
+
+MsSample ms_sample_dcos(MsMicrofacet mf_8, float2 u_30)
+{
+    if ((mf_8.ndf == MS_NDF_GGX)) {
+        const MsSample _e6 = ms_ggx_sample_dcos(mf_8.alpha, u_30);
+        const MsSample mssample_26 = _e6;
+        return mssample_26;
+    }
+    if ((mf_8.ndf == MS_NDF_BECKMANN)) {
+        const MsSample _e11 = ms_beckmann_sample_dcos(mf_8.alpha, u_30);
+        const MsSample mssample_27 = _e11;
+        return mssample_27;
+    }
+    if ((mf_8.ndf == MS_NDF_DOUBLE_GGX)) {
+        const MsSample _e16 = ms_double_ggx_sample_dcos(mf_8.alpha, u_30);
+        const MsSample mssample_28 = _e16;
+        return mssample_28;
+    }
+    if ((mf_8.ndf == MS_NDF_EXPONENTIAL)) {
+        const MsSample _e21 = ms_exponential_sample_dcos(mf_8.alpha, u_30);
+        const MsSample mssample_29 = _e21;
+        return mssample_29;
+    }
+    if ((mf_8.ndf == MS_NDF_STUDENT_T)) {
+        const MsSample _e27 = ms_student_t_sample_dcos(mf_8.alpha, u_30, mf_8.table);
+        const MsSample mssample_30 = _e27;
+        return mssample_30;
+    }
+    if ((mf_8.ndf == MS_NDF_EI)) {
+        const MsSample _e33 = ms_ei_sample_dcos(mf_8.alpha, u_30, mf_8.table);
+        const MsSample mssample_31 = _e33;
+        return mssample_31;
+    }
+    if ((mf_8.ndf == MS_NDF_ERFC)) {
+        const MsSample _e39 = ms_erfc_sample_dcos(mf_8.alpha, u_30, mf_8.table);
+        const MsSample mssample_32 = _e39;
+        return mssample_32;
+    }
+    if ((mf_8.ndf == MS_NDF_K0_)) {
+        const MsSample _e45 = ms_k0_sample_dcos(mf_8.alpha, u_30, mf_8.table);
+        const MsSample mssample_33 = _e45;
+        return mssample_33;
+    }
+    const MsSample mssample_34 = ConstructMsSample(float3(0.0, 0.0, 1.0), 0.0);
+    return mssample_34;
 }
 
 bool ms_effectively_smooth(MsMicrofacet mf_9)
@@ -2916,123 +3369,123 @@ bool ms_effectively_smooth(MsMicrofacet mf_9)
     return (max(mf_9.alpha.x, mf_9.alpha.y) < 0.001);
 }
 
-bool ms_on_horizon(float z_4)
+bool ms_on_horizon(float z_5)
 {
-    return !((abs(z_4) >= 1e-18));
+    return !((abs(z_5) >= 1e-18));
 }
 
 bool ms_usable(float v_9)
 {
-    bool local_31 = (bool)0;
+    bool local_32 = (bool)0;
 
     if ((v_9 >= 1.1754944e-20)) {
-        local_31 = (v_9 <= 3.4028235e38);
+        local_32 = (v_9 <= 3.4028235e38);
     } else {
-        local_31 = false;
+        local_32 = false;
     }
-    bool _e8 = local_31;
+    bool _e8 = local_32;
     return _e8;
 }
 
-float ms_masking_g2_(MsMicrofacet mf_10, uint masking, float3 wo_19, float3 wi_19)
+float ms_masking_g2_(MsMicrofacet mf_10, uint masking, float3 wo_27, float3 wi_27)
 {
     if ((masking == MS_MASKING_SEPARABLE)) {
-        const float _e6 = ms_g2_separable(mf_10, wo_19, wi_19);
+        const float _e6 = ms_g2_separable(mf_10, wo_27, wi_27);
         return _e6;
     }
-    const float _e7 = ms_g2_(mf_10, wo_19, wi_19);
+    const float _e7 = ms_g2_(mf_10, wo_27, wi_27);
     return _e7;
 }
 
-float ms_reflected(MsMicrofacet mf_11, uint masking_1, float3 wo_20, float3 wi_20, float d_wm)
+float ms_reflected(MsMicrofacet mf_11, uint masking_1, float3 wo_28, float3 wi_28, float d_wm)
 {
-    const float _e5 = ms_masking_g2_(mf_11, masking_1, wo_20, wi_20);
-    return ((d_wm * _e5) / (4.0 * abs((wo_20.z * wi_20.z))));
+    const float _e5 = ms_masking_g2_(mf_11, masking_1, wo_28, wi_28);
+    return ((d_wm * _e5) / (4.0 * abs((wo_28.z * wi_28.z))));
 }
 
-float3 ms_weighted(float3 fr_1, float k_7)
+float3 ms_weighted(float3 fr_1, float k_8)
 {
-    return ((fr_1 == (0.0).xxx) ? (0.0).xxx : (fr_1 * k_7));
+    return ((fr_1 == (0.0).xxx) ? (0.0).xxx : (fr_1 * k_8));
 }
 
-float3 ms_conductor_lobe_normal(MsConductor c_6, float3 wo_21, float3 wi_21)
+float3 ms_conductor_lobe_normal(MsConductor c_7, float3 wo_29, float3 wi_29)
 {
-    bool local_32 = (bool)0;
     bool local_33 = (bool)0;
     bool local_34 = (bool)0;
+    bool local_35 = (bool)0;
 
-    const bool _e3 = ms_same_hemisphere(wo_21, wi_21);
+    const bool _e3 = ms_same_hemisphere(wo_29, wi_29);
     if (!(!(_e3))) {
-        const bool _e9 = ms_on_horizon(wo_21.z);
-        local_32 = _e9;
-    } else {
-        local_32 = true;
-    }
-    bool _e11 = local_32;
-    if (!(_e11)) {
-        const bool _e16 = ms_on_horizon(wi_21.z);
-        local_33 = _e16;
+        const bool _e9 = ms_on_horizon(wo_29.z);
+        local_33 = _e9;
     } else {
         local_33 = true;
     }
-    bool _e18 = local_33;
-    if (!(_e18)) {
-        const bool _e23 = ms_effectively_smooth(c_6.mf);
-        local_34 = _e23;
+    bool _e11 = local_33;
+    if (!(_e11)) {
+        const bool _e16 = ms_on_horizon(wi_29.z);
+        local_34 = _e16;
     } else {
         local_34 = true;
     }
-    bool _e25 = local_34;
+    bool _e18 = local_34;
+    if (!(_e18)) {
+        const bool _e23 = ms_effectively_smooth(c_7.mf);
+        local_35 = _e23;
+    } else {
+        local_35 = true;
+    }
+    bool _e25 = local_35;
     if (_e25) {
         return (0.0).xxx;
     }
-    const float3 _e28 = ms_half_vector_reflection(wo_21, wi_21);
+    const float3 _e28 = ms_half_vector_reflection(wo_29, wi_29);
     return _e28;
 }
 
-float3 ms_conductor_eval(MsConductor c_7, float3 wo_22, float3 wi_22)
+float3 ms_conductor_eval(MsConductor c_8, float3 wo_30, float3 wi_30)
 {
-    const float3 _e3 = ms_conductor_lobe_normal(c_7, wo_22, wi_22);
+    const float3 _e3 = ms_conductor_lobe_normal(c_8, wo_30, wi_30);
     const bool _e4 = ms_half_vector_ok(_e3);
     if (!(_e4)) {
         return (0.0).xxx;
     }
-    const float _e9 = ms_dot(wo_22, _e3);
-    const float _e11 = ms_dot(wi_22, _e3);
-    const float3 _e16 = ms_fresnel_eval(c_7.fresnel, (0.5 * (abs(_e9) + abs(_e11))));
-    const float _e20 = ms_d(c_7.mf, _e3);
-    const float _e21 = ms_reflected(c_7.mf, c_7.masking, wo_22, wi_22, _e20);
+    const float _e9 = ms_dot(wo_30, _e3);
+    const float _e11 = ms_dot(wi_30, _e3);
+    const float3 _e16 = ms_fresnel_eval(c_8.fresnel, (0.5 * (abs(_e9) + abs(_e11))));
+    const float _e20 = ms_d(c_8.mf, _e3);
+    const float _e21 = ms_reflected(c_8.mf, c_8.masking, wo_30, wi_30, _e20);
     const float3 _e22 = ms_weighted(_e16, _e21);
     return _e22;
 }
 
-float ms_conductor_pdf(MsConductor c_8, float3 wo_23, float3 wi_23)
+float ms_conductor_pdf(MsConductor c_9, float3 wo_31, float3 wi_31)
 {
-    const float3 _e3 = ms_conductor_lobe_normal(c_8, wo_23, wi_23);
+    const float3 _e3 = ms_conductor_lobe_normal(c_9, wo_31, wi_31);
     const bool _e4 = ms_half_vector_ok(_e3);
     if (!(_e4)) {
         return 0.0;
     }
-    const float _e8 = ms_pdf(c_8.mf, wo_23, _e3);
-    const float _e9 = ms_dot(wo_23, _e3);
+    const float _e8 = ms_pdf(c_9.mf, wo_31, _e3);
+    const float _e9 = ms_dot(wo_31, _e3);
     return (_e8 / (4.0 * abs(_e9)));
 }
 
-float4 ms_conductor_eval_pdf(MsConductor c_9, float3 wo_24, float3 wi_24)
+float4 ms_conductor_eval_pdf(MsConductor c_10, float3 wo_32, float3 wi_32)
 {
-    const float3 _e3 = ms_conductor_lobe_normal(c_9, wo_24, wi_24);
+    const float3 _e3 = ms_conductor_lobe_normal(c_10, wo_32, wi_32);
     const bool _e4 = ms_half_vector_ok(_e3);
     if (!(_e4)) {
         return (0.0).xxxx;
     }
-    const float _e8 = ms_dot(wo_24, _e3);
+    const float _e8 = ms_dot(wo_32, _e3);
     float co = abs(_e8);
-    const float _e11 = ms_dot(wi_24, _e3);
-    const float3 _e16 = ms_fresnel_eval(c_9.fresnel, (0.5 * (co + abs(_e11))));
-    const float _e20 = ms_d(c_9.mf, _e3);
-    const float _e21 = ms_reflected(c_9.mf, c_9.masking, wo_24, wi_24, _e20);
+    const float _e11 = ms_dot(wi_32, _e3);
+    const float3 _e16 = ms_fresnel_eval(c_10.fresnel, (0.5 * (co + abs(_e11))));
+    const float _e20 = ms_d(c_10.mf, _e3);
+    const float _e21 = ms_reflected(c_10.mf, c_10.masking, wo_32, wi_32, _e20);
     const float3 _e22 = ms_weighted(_e16, _e21);
-    const float _e24 = ms_pdf(c_9.mf, wo_24, _e3);
+    const float _e24 = ms_pdf(c_10.mf, wo_32, _e3);
     return float4(_e22, (_e24 / (4.0 * co)));
 }
 
@@ -3046,39 +3499,39 @@ MsBsdfSample ConstructMsBsdfSample(float3 arg0, float arg1, float3 arg2, uint ar
     return ret;
 }
 
-MsBsdfSample ms_conductor_sample(MsConductor c_10, float3 wo_25, float uc, float2 u_24)
+MsBsdfSample ms_conductor_sample(MsConductor c_11, float3 wo_33, float uc, float2 u_31)
 {
-    bool local_35 = (bool)0;
+    bool local_36 = (bool)0;
 
     MsBsdfSample none = ConstructMsBsdfSample((0.0).xxx, 0.0, (0.0).xxx, 0u, 1.0);
-    const bool _e13 = ms_on_horizon(wo_25.z);
+    const bool _e13 = ms_on_horizon(wo_33.z);
     if (_e13) {
         const MsBsdfSample msbsdfsample = none;
         return msbsdfsample;
     }
-    const bool _e15 = ms_effectively_smooth(c_10.mf);
+    const bool _e15 = ms_effectively_smooth(c_11.mf);
     if (_e15) {
-        float3 wi_41 = float3(-(wo_25.x), -(wo_25.y), wo_25.z);
-        float k_11 = (1.0 / abs(wi_41.z));
-        const float3 _e29 = ms_fresnel_eval(c_10.fresnel, abs(wo_25.z));
-        const MsBsdfSample msbsdfsample_1 = ConstructMsBsdfSample(wi_41, 1.0, (_e29 * k_11), 3u, 1.0);
+        float3 wi_49 = float3(-(wo_33.x), -(wo_33.y), wo_33.z);
+        float k_12 = (1.0 / abs(wi_49.z));
+        const float3 _e29 = ms_fresnel_eval(c_11.fresnel, abs(wo_33.z));
+        const MsBsdfSample msbsdfsample_1 = ConstructMsBsdfSample(wi_49, 1.0, (_e29 * k_12), 3u, 1.0);
         return msbsdfsample_1;
     }
-    const MsSample _e36 = ms_sample(c_10.mf, wo_25, u_24);
-    const float3 _e38 = ms_reflect(wo_25, _e36.wm);
-    const bool _e39 = ms_same_hemisphere(wo_25, _e38);
+    const MsSample _e36 = ms_sample(c_11.mf, wo_33, u_31);
+    const float3 _e38 = ms_reflect(wo_33, _e36.wm);
+    const bool _e39 = ms_same_hemisphere(wo_33, _e38);
     if (!(!(_e39))) {
         const bool _e45 = ms_on_horizon(_e38.z);
-        local_35 = _e45;
+        local_36 = _e45;
     } else {
-        local_35 = true;
+        local_36 = true;
     }
-    bool _e47 = local_35;
+    bool _e47 = local_36;
     if (_e47) {
         const MsBsdfSample msbsdfsample_2 = none;
         return msbsdfsample_2;
     }
-    const float _e49 = ms_dot(wo_25, _e36.wm);
+    const float _e49 = ms_dot(wo_33, _e36.wm);
     float co_1 = abs(_e49);
     float pdf = (_e36.pdf / (4.0 * co_1));
     const bool _e55 = ms_usable(pdf);
@@ -3086,14 +3539,14 @@ MsBsdfSample ms_conductor_sample(MsConductor c_10, float3 wo_25, float uc, float
         const MsBsdfSample msbsdfsample_3 = none;
         return msbsdfsample_3;
     }
-    const float3 _e58 = ms_fresnel_eval(c_10.fresnel, co_1);
-    const float _e61 = ms_d(c_10.mf, _e36.wm);
+    const float3 _e58 = ms_fresnel_eval(c_11.fresnel, co_1);
+    const float _e61 = ms_d(c_11.mf, _e36.wm);
     const bool _e62 = ms_usable(_e61);
     if (!(_e62)) {
         const MsBsdfSample msbsdfsample_4 = none;
         return msbsdfsample_4;
     }
-    const float _e66 = ms_reflected(c_10.mf, c_10.masking, wo_25, _e38, _e61);
+    const float _e66 = ms_reflected(c_11.mf, c_11.masking, wo_33, _e38, _e61);
     const float3 _e67 = ms_weighted(_e58, _e66);
     if (!(all((_e67 <= (3.4028235e38).xxx)))) {
         const MsBsdfSample msbsdfsample_5 = none;
@@ -3103,89 +3556,89 @@ MsBsdfSample ms_conductor_sample(MsConductor c_10, float3 wo_25, float uc, float
     return msbsdfsample_6;
 }
 
-bool ms_dielectric_smooth(MsDielectric d_1)
-{
-    bool local_36 = (bool)0;
-
-    if (!((d_1.eta == 1.0))) {
-        const bool _e8 = ms_effectively_smooth(d_1.mf);
-        local_36 = _e8;
-    } else {
-        local_36 = true;
-    }
-    bool _e10 = local_36;
-    return _e10;
-}
-
-float ms_dielectric_g2_(MsDielectric d_2, float3 wo_26, float3 wi_25)
-{
-    const float _e5 = ms_masking_g2_(d_2.mf, d_2.masking, wo_26, wi_25);
-    return _e5;
-}
-
-float4 ms_dielectric_half(MsDielectric d_3, float3 wo_27, float3 wi_26)
+bool ms_dielectric_smooth(MsDielectric d_2)
 {
     bool local_37 = (bool)0;
-    float3 wm_21 = (float3)0;
-    float etap_4 = 1.0;
-    bool local_38 = (bool)0;
 
-    float4 none_1 = (0.0).xxxx;
-    float co_2 = wo_27.z;
-    float ci_1 = wi_26.z;
-    const bool _e7 = ms_on_horizon(co_2);
-    if (!(_e7)) {
-        const bool _e11 = ms_on_horizon(ci_1);
-        local_37 = _e11;
+    if (!((d_2.eta == 1.0))) {
+        const bool _e8 = ms_effectively_smooth(d_2.mf);
+        local_37 = _e8;
     } else {
         local_37 = true;
     }
-    bool _e13 = local_37;
+    bool _e10 = local_37;
+    return _e10;
+}
+
+float ms_dielectric_g2_(MsDielectric d_3, float3 wo_34, float3 wi_33)
+{
+    const float _e5 = ms_masking_g2_(d_3.mf, d_3.masking, wo_34, wi_33);
+    return _e5;
+}
+
+float4 ms_dielectric_half(MsDielectric d_4, float3 wo_35, float3 wi_34)
+{
+    bool local_38 = (bool)0;
+    float3 wm_33 = (float3)0;
+    float etap_4 = 1.0;
+    bool local_39 = (bool)0;
+
+    float4 none_1 = (0.0).xxxx;
+    float co_2 = wo_35.z;
+    float ci_1 = wi_34.z;
+    const bool _e7 = ms_on_horizon(co_2);
+    if (!(_e7)) {
+        const bool _e11 = ms_on_horizon(ci_1);
+        local_38 = _e11;
+    } else {
+        local_38 = true;
+    }
+    bool _e13 = local_38;
     if (_e13) {
         return none_1;
     }
     if (((co_2 * ci_1) > 0.0)) {
-        const float3 _e20 = ms_half_vector_reflection(wo_27, wi_26);
-        wm_21 = _e20;
+        const float3 _e20 = ms_half_vector_reflection(wo_35, wi_34);
+        wm_33 = _e20;
     } else {
-        const float4 _e22 = ms_half_vector_refraction(wo_27, wi_26, d_3.eta);
-        wm_21 = _e22.xyz;
+        const float4 _e22 = ms_half_vector_refraction(wo_35, wi_34, d_4.eta);
+        wm_33 = _e22.xyz;
         etap_4 = _e22.w;
     }
-    float3 _e25 = wm_21;
+    float3 _e25 = wm_33;
     const bool _e26 = ms_half_vector_ok(_e25);
     if (!(_e26)) {
         return none_1;
     }
-    float3 _e28 = wm_21;
-    const float _e29 = ms_dot(_e28, wi_26);
+    float3 _e28 = wm_33;
+    const float _e29 = ms_dot(_e28, wi_34);
     if (!(((_e29 * ci_1) < 0.0))) {
-        float3 _e36 = wm_21;
-        const float _e37 = ms_dot(_e36, wo_27);
-        local_38 = ((_e37 * co_2) < 0.0);
+        float3 _e36 = wm_33;
+        const float _e37 = ms_dot(_e36, wo_35);
+        local_39 = ((_e37 * co_2) < 0.0);
     } else {
-        local_38 = true;
+        local_39 = true;
     }
-    bool _e42 = local_38;
+    bool _e42 = local_39;
     if (_e42) {
         return none_1;
     }
-    float3 _e43 = wm_21;
+    float3 _e43 = wm_33;
     float _e44 = etap_4;
     return float4(_e43, _e44);
 }
 
-float ms_dielectric_f_transmission(MsDielectric d_4, float3 wo_28, float3 wi_27, float3 wm_22, float d_wm_1, float etap_5, float t_2)
+float ms_dielectric_f_transmission(MsDielectric d_5, float3 wo_36, float3 wi_35, float3 wm_34, float d_wm_1, float etap_5, float t_2)
 {
     float f_2 = (float)0;
 
-    const float _e7 = ms_dot(wi_27, wm_22);
-    const float _e8 = ms_dot(wo_28, wm_22);
-    const float _e9 = ms_refraction_denominator(wo_28, wi_27, wm_22, etap_5);
-    const float _e10 = ms_dielectric_g2_(d_4, wo_28, wi_27);
-    float geometric = ((_e10 / abs((wi_27.z * wo_28.z))) * (abs((_e7 * _e8)) / (_e9 * _e9)));
+    const float _e7 = ms_dot(wi_35, wm_34);
+    const float _e8 = ms_dot(wo_36, wm_34);
+    const float _e9 = ms_refraction_denominator(wo_36, wi_35, wm_34, etap_5);
+    const float _e10 = ms_dielectric_g2_(d_5, wo_36, wi_35);
+    float geometric = ((_e10 / abs((wi_35.z * wo_36.z))) * (abs((_e7 * _e8)) / (_e9 * _e9)));
     f_2 = ((d_wm_1 * t_2) * geometric);
-    if ((d_4.transport == MS_TRANSPORT_RADIANCE)) {
+    if ((d_5.transport == MS_TRANSPORT_RADIANCE)) {
         float _e27 = f_2;
         f_2 = (_e27 / (etap_5 * etap_5));
     }
@@ -3193,136 +3646,136 @@ float ms_dielectric_f_transmission(MsDielectric d_4, float3 wo_28, float3 wi_27,
     return _e30;
 }
 
-float ms_dielectric_eval(MsDielectric d_5, float3 wo_29, float3 wi_28)
-{
-    const bool _e3 = ms_dielectric_smooth(d_5);
-    if (_e3) {
-        return 0.0;
-    }
-    const float4 _e5 = ms_dielectric_half(d_5, wo_29, wi_28);
-    if ((_e5.w == 0.0)) {
-        return 0.0;
-    }
-    float3 wm_23 = _e5.xyz;
-    const float _e11 = ms_dot(wo_29, wm_23);
-    const float _e13 = ms_fresnel_dielectric(_e11, d_5.eta);
-    const float _e15 = ms_d(d_5.mf, wm_23);
-    if (((wo_29.z * wi_28.z) > 0.0)) {
-        const float _e23 = ms_reflected(d_5.mf, d_5.masking, wo_29, wi_28, _e15);
-        return (_e13 * _e23);
-    }
-    const float _e28 = ms_dielectric_f_transmission(d_5, wo_29, wi_28, wm_23, _e15, _e5.w, (1.0 - _e13));
-    return _e28;
-}
-
-float ms_dielectric_pdf(MsDielectric d_6, float3 wo_30, float3 wi_29)
+float ms_dielectric_eval(MsDielectric d_6, float3 wo_37, float3 wi_36)
 {
     const bool _e3 = ms_dielectric_smooth(d_6);
     if (_e3) {
         return 0.0;
     }
-    const float4 _e5 = ms_dielectric_half(d_6, wo_30, wi_29);
+    const float4 _e5 = ms_dielectric_half(d_6, wo_37, wi_36);
     if ((_e5.w == 0.0)) {
         return 0.0;
     }
-    float3 wm_24 = _e5.xyz;
-    const float _e11 = ms_dot(wo_30, wm_24);
+    float3 wm_35 = _e5.xyz;
+    const float _e11 = ms_dot(wo_37, wm_35);
     const float _e13 = ms_fresnel_dielectric(_e11, d_6.eta);
-    const float _e15 = ms_pdf(d_6.mf, wo_30, wm_24);
-    if (((wo_30.z * wi_29.z) > 0.0)) {
-        const float _e22 = ms_dot(wo_30, wm_24);
+    const float _e15 = ms_d(d_6.mf, wm_35);
+    if (((wo_37.z * wi_36.z) > 0.0)) {
+        const float _e23 = ms_reflected(d_6.mf, d_6.masking, wo_37, wi_36, _e15);
+        return (_e13 * _e23);
+    }
+    const float _e28 = ms_dielectric_f_transmission(d_6, wo_37, wi_36, wm_35, _e15, _e5.w, (1.0 - _e13));
+    return _e28;
+}
+
+float ms_dielectric_pdf(MsDielectric d_7, float3 wo_38, float3 wi_37)
+{
+    const bool _e3 = ms_dielectric_smooth(d_7);
+    if (_e3) {
+        return 0.0;
+    }
+    const float4 _e5 = ms_dielectric_half(d_7, wo_38, wi_37);
+    if ((_e5.w == 0.0)) {
+        return 0.0;
+    }
+    float3 wm_36 = _e5.xyz;
+    const float _e11 = ms_dot(wo_38, wm_36);
+    const float _e13 = ms_fresnel_dielectric(_e11, d_7.eta);
+    const float _e15 = ms_pdf(d_7.mf, wo_38, wm_36);
+    if (((wo_38.z * wi_37.z) > 0.0)) {
+        const float _e22 = ms_dot(wo_38, wm_36);
         return ((_e15 * _e13) / (4.0 * abs(_e22)));
     }
-    const float _e31 = ms_jacobian_refraction(wo_30, wi_29, wm_24, _e5.w);
+    const float _e31 = ms_jacobian_refraction(wo_38, wi_37, wm_36, _e5.w);
     return ((_e15 * (1.0 - _e13)) * _e31);
 }
 
-MsBsdfSample ms_dielectric_sample_smooth(MsDielectric d_7, float3 wo_31, float uc_1)
+MsBsdfSample ms_dielectric_sample_smooth(MsDielectric d_8, float3 wo_39, float uc_1)
 {
     float f_3 = (float)0;
 
-    const float _e5 = ms_fresnel_dielectric(wo_31.z, d_7.eta);
+    const float _e5 = ms_fresnel_dielectric(wo_39.z, d_8.eta);
     if ((uc_1 < _e5)) {
-        float3 wi_42 = float3(-(wo_31.x), -(wo_31.y), wo_31.z);
-        const MsBsdfSample msbsdfsample_7 = ConstructMsBsdfSample(wi_42, _e5, ((_e5 / abs(wi_42.z))).xxx, 3u, 1.0);
+        float3 wi_50 = float3(-(wo_39.x), -(wo_39.y), wo_39.z);
+        const MsBsdfSample msbsdfsample_7 = ConstructMsBsdfSample(wi_50, _e5, ((_e5 / abs(wi_50.z))).xxx, 3u, 1.0);
         return msbsdfsample_7;
     }
     MsBsdfSample none_2 = ConstructMsBsdfSample((0.0).xxx, 0.0, (0.0).xxx, 0u, 1.0);
-    const float4 _e33 = ms_refract(wo_31, float3(0.0, 0.0, 1.0), d_7.eta);
+    const float4 _e33 = ms_refract(wo_39, float3(0.0, 0.0, 1.0), d_8.eta);
     if ((_e33.w == 0.0)) {
         const MsBsdfSample msbsdfsample_8 = none_2;
         return msbsdfsample_8;
     }
-    float3 wi_43 = _e33.xyz;
-    const bool _e39 = ms_on_horizon(wi_43.z);
+    float3 wi_51 = _e33.xyz;
+    const bool _e39 = ms_on_horizon(wi_51.z);
     if (_e39) {
         const MsBsdfSample msbsdfsample_9 = none_2;
         return msbsdfsample_9;
     }
     float t_13 = (1.0 - _e5);
-    f_3 = (t_13 / abs(wi_43.z));
-    if ((d_7.transport == MS_TRANSPORT_RADIANCE)) {
+    f_3 = (t_13 / abs(wi_51.z));
+    if ((d_8.transport == MS_TRANSPORT_RADIANCE)) {
         float _e49 = f_3;
         f_3 = (_e49 / (_e33.w * _e33.w));
     }
     float _e54 = f_3;
-    const MsBsdfSample msbsdfsample_10 = ConstructMsBsdfSample(wi_43, t_13, (_e54).xxx, 7u, _e33.w);
+    const MsBsdfSample msbsdfsample_10 = ConstructMsBsdfSample(wi_51, t_13, (_e54).xxx, 7u, _e33.w);
     return msbsdfsample_10;
 }
 
-MsBsdfSample ms_dielectric_sample(MsDielectric d_8, float3 wo_32, float uc_2, float2 u_25)
+MsBsdfSample ms_dielectric_sample(MsDielectric d_9, float3 wo_40, float uc_2, float2 u_32)
 {
-    bool local_39 = (bool)0;
     bool local_40 = (bool)0;
     bool local_41 = (bool)0;
     bool local_42 = (bool)0;
+    bool local_43 = (bool)0;
 
     MsBsdfSample none_3 = ConstructMsBsdfSample((0.0).xxx, 0.0, (0.0).xxx, 0u, 1.0);
-    const bool _e13 = ms_on_horizon(wo_32.z);
+    const bool _e13 = ms_on_horizon(wo_40.z);
     if (_e13) {
         const MsBsdfSample msbsdfsample_11 = none_3;
         return msbsdfsample_11;
     }
-    const bool _e14 = ms_dielectric_smooth(d_8);
+    const bool _e14 = ms_dielectric_smooth(d_9);
     if (_e14) {
-        const MsBsdfSample _e15 = ms_dielectric_sample_smooth(d_8, wo_32, uc_2);
+        const MsBsdfSample _e15 = ms_dielectric_sample_smooth(d_9, wo_40, uc_2);
         const MsBsdfSample msbsdfsample_12 = _e15;
         return msbsdfsample_12;
     }
-    const MsSample _e17 = ms_sample(d_8.mf, wo_32, u_25);
-    float3 wm_25 = _e17.wm;
-    const float _e19 = ms_dot(wo_32, wm_25);
-    const float _e21 = ms_fresnel_dielectric(_e19, d_8.eta);
+    const MsSample _e17 = ms_sample(d_9.mf, wo_40, u_32);
+    float3 wm_37 = _e17.wm;
+    const float _e19 = ms_dot(wo_40, wm_37);
+    const float _e21 = ms_fresnel_dielectric(_e19, d_9.eta);
     if ((uc_2 < _e21)) {
-        const float3 _e23 = ms_reflect(wo_32, wm_25);
-        const bool _e24 = ms_same_hemisphere(wo_32, _e23);
+        const float3 _e23 = ms_reflect(wo_40, wm_37);
+        const bool _e24 = ms_same_hemisphere(wo_40, _e23);
         if (!(!(_e24))) {
             const bool _e30 = ms_on_horizon(_e23.z);
-            local_39 = _e30;
+            local_40 = _e30;
         } else {
-            local_39 = true;
+            local_40 = true;
         }
-        bool _e32 = local_39;
+        bool _e32 = local_40;
         if (_e32) {
             const MsBsdfSample msbsdfsample_13 = none_3;
             return msbsdfsample_13;
         }
-        const float _e34 = ms_d(d_8.mf, wm_25);
+        const float _e34 = ms_d(d_9.mf, wm_37);
         const bool _e35 = ms_usable(_e34);
         if (!(_e35)) {
             const MsBsdfSample msbsdfsample_14 = none_3;
             return msbsdfsample_14;
         }
-        const float _e39 = ms_reflected(d_8.mf, d_8.masking, wo_32, _e23, _e34);
+        const float _e39 = ms_reflected(d_9.mf, d_9.masking, wo_40, _e23, _e34);
         float f_5 = (_e21 * _e39);
         float pdf_1 = ((_e17.pdf * _e21) / (4.0 * abs(_e19)));
         const bool _e47 = ms_usable(pdf_1);
         if (!(!(_e47))) {
-            local_40 = !((f_5 <= 3.4028235e38));
+            local_41 = !((f_5 <= 3.4028235e38));
         } else {
-            local_40 = true;
+            local_41 = true;
         }
-        bool _e56 = local_40;
+        bool _e56 = local_41;
         if (_e56) {
             const MsBsdfSample msbsdfsample_15 = none_3;
             return msbsdfsample_15;
@@ -3330,47 +3783,47 @@ MsBsdfSample ms_dielectric_sample(MsDielectric d_8, float3 wo_32, float uc_2, fl
         const MsBsdfSample msbsdfsample_16 = ConstructMsBsdfSample(_e23, pdf_1, (f_5).xxx, MS_SAMPLE_VALID, 1.0);
         return msbsdfsample_16;
     }
-    const float4 _e62 = ms_refract(wo_32, wm_25, d_8.eta);
+    const float4 _e62 = ms_refract(wo_40, wm_37, d_9.eta);
     if ((_e62.w == 0.0)) {
         const MsBsdfSample msbsdfsample_17 = none_3;
         return msbsdfsample_17;
     }
-    float3 wi_44 = _e62.xyz;
+    float3 wi_52 = _e62.xyz;
     float etap_6 = _e62.w;
-    const bool _e68 = ms_same_hemisphere(wo_32, wi_44);
+    const bool _e68 = ms_same_hemisphere(wo_40, wi_52);
     if (!(_e68)) {
-        const bool _e73 = ms_on_horizon(wi_44.z);
-        local_41 = _e73;
+        const bool _e73 = ms_on_horizon(wi_52.z);
+        local_42 = _e73;
     } else {
-        local_41 = true;
+        local_42 = true;
     }
-    bool _e75 = local_41;
+    bool _e75 = local_42;
     if (_e75) {
         const MsBsdfSample msbsdfsample_18 = none_3;
         return msbsdfsample_18;
     }
     float t_14 = (1.0 - _e21);
-    const float _e80 = ms_jacobian_refraction(wo_32, wi_44, wm_25, etap_6);
+    const float _e80 = ms_jacobian_refraction(wo_40, wi_52, wm_37, etap_6);
     float pdf_2 = ((_e17.pdf * t_14) * _e80);
-    const float _e83 = ms_d(d_8.mf, wm_25);
+    const float _e83 = ms_d(d_9.mf, wm_37);
     const bool _e84 = ms_usable(_e83);
     if (!(_e84)) {
         const MsBsdfSample msbsdfsample_19 = none_3;
         return msbsdfsample_19;
     }
-    const float _e86 = ms_dielectric_f_transmission(d_8, wo_32, wi_44, wm_25, _e83, etap_6, t_14);
+    const float _e86 = ms_dielectric_f_transmission(d_9, wo_40, wi_52, wm_37, _e83, etap_6, t_14);
     const bool _e87 = ms_usable(pdf_2);
     if (!(!(_e87))) {
-        local_42 = !((_e86 <= 3.4028235e38));
+        local_43 = !((_e86 <= 3.4028235e38));
     } else {
-        local_42 = true;
+        local_43 = true;
     }
-    bool _e96 = local_42;
+    bool _e96 = local_43;
     if (_e96) {
         const MsBsdfSample msbsdfsample_20 = none_3;
         return msbsdfsample_20;
     }
-    const MsBsdfSample msbsdfsample_21 = ConstructMsBsdfSample(wi_44, pdf_2, (_e86).xxx, 5u, etap_6);
+    const MsBsdfSample msbsdfsample_21 = ConstructMsBsdfSample(wi_52, pdf_2, (_e86).xxx, 5u, etap_6);
     return msbsdfsample_21;
 }
 
@@ -3384,16 +3837,16 @@ MsLutTap ConstructMsLutTap(uint arg0, float arg1) {
 MsLutTap ms_lut_tap(float x_12, uint n_8)
 {
     float t_15 = clamp(((x_12 * float(n_8)) - 0.5), 0.0, float((n_8 - 1u)));
-    uint i_10 = min(naga_f2u32(floor(t_15)), (n_8 - 2u));
-    const MsLutTap msluttap = ConstructMsLutTap(i_10, (t_15 - float(i_10)));
+    uint i_12 = min(naga_f2u32(floor(t_15)), (n_8 - 2u));
+    const MsLutTap msluttap = ConstructMsLutTap(i_12, (t_15 - float(i_12)));
     return msluttap;
 }
 
 MsLutTap ms_lut_tap_edges(float x_13, uint n_9)
 {
     float t_16 = clamp((x_13 * float((n_9 - 1u))), 0.0, float((n_9 - 1u)));
-    uint i_11 = min(naga_f2u32(floor(t_16)), (n_9 - 2u));
-    const MsLutTap msluttap_1 = ConstructMsLutTap(i_11, (t_16 - float(i_11)));
+    uint i_13 = min(naga_f2u32(floor(t_16)), (n_9 - 2u));
+    const MsLutTap msluttap_1 = ConstructMsLutTap(i_13, (t_16 - float(i_13)));
     return msluttap_1;
 }
 
@@ -3414,9 +3867,9 @@ float ms_lut_bilerp(MsLutTap r, MsLutTap m_4, float v00_, float v10_, float v01_
     return (((((gr * gm) * v00_) + ((r.f * gm) * v10_)) + ((gr * m_4.f) * v01_)) + ((r.f * m_4.f) * v11_));
 }
 
-float ms_lut_roughness_coord(float2 alpha_57, float alpha_max)
+float ms_lut_roughness_coord(float2 alpha_92, float alpha_max)
 {
-    return sqrt((sqrt((alpha_57.x * alpha_57.y)) / alpha_max));
+    return sqrt((sqrt((alpha_92.x * alpha_92.y)) / alpha_max));
 }
 
 float3 ms_kulla_conty_f_ms(float3 f_avg, float e_avg)
@@ -3433,10 +3886,10 @@ float ms_kulla_conty_lobe(float e_o, float e_i, float e_avg_1)
     return ((max((1.0 - e_o), 0.0) * max((1.0 - e_i), 0.0)) / den_3);
 }
 
-float3 ms_conductor_eval_kulla_conty(MsConductor c_11, float3 wo_33, float3 wi_30, float e_o_1, float e_i_1, float e_avg_2, float3 f_ms)
+float3 ms_conductor_eval_kulla_conty(MsConductor c_12, float3 wo_41, float3 wi_38, float e_o_1, float e_i_1, float e_avg_2, float3 f_ms)
 {
-    const float3 _e7 = ms_conductor_eval(c_11, wo_33, wi_30);
-    if (!(((wo_33.z * wi_30.z) > 0.0))) {
+    const float3 _e7 = ms_conductor_eval(c_12, wo_41, wi_38);
+    if (!(((wo_41.z * wi_38.z) > 0.0))) {
         return _e7;
     }
     const float _e14 = ms_kulla_conty_lobe(e_o_1, e_i_1, e_avg_2);
@@ -3448,9 +3901,9 @@ float3 ms_turquin_scale(float e_o_2, float3 f0_2)
     return ((1.0).xxx + ((f0_2 * (1.0 - e_o_2)) / (e_o_2).xxx));
 }
 
-float3 ms_conductor_eval_turquin(MsConductor c_12, float3 wo_34, float3 wi_31, float e_o_3, float3 f0_3)
+float3 ms_conductor_eval_turquin(MsConductor c_13, float3 wo_42, float3 wi_39, float e_o_3, float3 f0_3)
 {
-    const float3 _e5 = ms_conductor_eval(c_12, wo_34, wi_31);
+    const float3 _e5 = ms_conductor_eval(c_13, wo_42, wi_39);
     const float3 _e6 = ms_turquin_scale(e_o_3, f0_3);
     return (_e5 * _e6);
 }
@@ -3460,93 +3913,93 @@ float ms_kulla_conty_p_ms(float e_o_4)
     return clamp((1.0 - e_o_4), 0.0, 1.0);
 }
 
-float ms_cosine_pdf_same_side(float3 wo_35, float3 wi_32)
+float ms_cosine_pdf_same_side(float3 wo_43, float3 wi_40)
 {
-    if (!(((wo_35.z * wi_32.z) > 0.0))) {
+    if (!(((wo_43.z * wi_40.z) > 0.0))) {
         return 0.0;
     }
-    return (abs(wi_32.z) / MS_PI);
+    return (abs(wi_40.z) / MS_PI);
 }
 
-float ms_conductor_pdf_kulla_conty(MsConductor c_13, float3 wo_36, float3 wi_33, float e_o_5)
+float ms_conductor_pdf_kulla_conty(MsConductor c_14, float3 wo_44, float3 wi_41, float e_o_5)
 {
     const float _e4 = ms_kulla_conty_p_ms(e_o_5);
-    const float _e7 = ms_conductor_pdf(c_13, wo_36, wi_33);
-    const float _e9 = ms_cosine_pdf_same_side(wo_36, wi_33);
+    const float _e7 = ms_conductor_pdf(c_14, wo_44, wi_41);
+    const float _e9 = ms_cosine_pdf_same_side(wo_44, wi_41);
     return (((1.0 - _e4) * _e7) + (_e4 * _e9));
 }
 
-float3 ms_cosine_hemisphere(float2 u_26)
+float3 ms_cosine_hemisphere(float2 u_33)
 {
-    float r_22 = sqrt(u_26.x);
-    const float2 _e4 = ms_cos_sin_turn(u_26.y);
-    return float3((r_22 * _e4.x), (r_22 * _e4.y), sqrt(max((1.0 - u_26.x), 0.0)));
+    float r_25 = sqrt(u_33.x);
+    const float2 _e4 = ms_cos_sin_turn(u_33.y);
+    return float3((r_25 * _e4.x), (r_25 * _e4.y), sqrt(max((1.0 - u_33.x), 0.0)));
 }
 
-MsBsdfSample ms_conductor_sample_kulla_conty(MsConductor c_14, float3 wo_37, float uc_3, float2 u_27, float e_o_6)
+MsBsdfSample ms_conductor_sample_kulla_conty(MsConductor c_15, float3 wo_45, float uc_3, float2 u_34, float e_o_6)
 {
-    float3 wi_34 = (float3)0;
-    bool local_43 = (bool)0;
+    float3 wi_42 = (float3)0;
+    bool local_44 = (bool)0;
 
     MsBsdfSample none_4 = ConstructMsBsdfSample((0.0).xxx, 0.0, (0.0).xxx, 0u, 1.0);
-    const bool _e14 = ms_on_horizon(wo_37.z);
+    const bool _e14 = ms_on_horizon(wo_45.z);
     if (_e14) {
         const MsBsdfSample msbsdfsample_22 = none_4;
         return msbsdfsample_22;
     }
     const float _e15 = ms_kulla_conty_p_ms(e_o_6);
     if ((uc_3 < _e15)) {
-        const float3 _e18 = ms_cosine_hemisphere(u_27);
-        wi_34 = _e18;
-        if ((wo_37.z < 0.0)) {
-            float _e24 = wi_34.z;
-            wi_34.z = -(_e24);
+        const float3 _e18 = ms_cosine_hemisphere(u_34);
+        wi_42 = _e18;
+        if ((wo_45.z < 0.0)) {
+            float _e24 = wi_42.z;
+            wi_42.z = -(_e24);
         }
     } else {
-        const MsBsdfSample _e30 = ms_conductor_sample(c_14, wo_37, ((uc_3 - _e15) / (1.0 - _e15)), u_27);
+        const MsBsdfSample _e30 = ms_conductor_sample(c_15, wo_45, ((uc_3 - _e15) / (1.0 - _e15)), u_34);
         if (!(((_e30.flags & MS_SAMPLE_VALID) == 0u))) {
-            local_43 = ((_e30.flags & MS_SAMPLE_SPECULAR) != 0u);
+            local_44 = ((_e30.flags & MS_SAMPLE_SPECULAR) != 0u);
         } else {
-            local_43 = true;
+            local_44 = true;
         }
-        bool _e45 = local_43;
+        bool _e45 = local_44;
         if (_e45) {
             const MsBsdfSample msbsdfsample_23 = _e30;
             return msbsdfsample_23;
         }
-        wi_34 = _e30.wi;
+        wi_42 = _e30.wi;
     }
-    float3 _e47 = wi_34;
-    const float _e48 = ms_conductor_pdf_kulla_conty(c_14, wo_37, _e47, e_o_6);
+    float3 _e47 = wi_42;
+    const float _e48 = ms_conductor_pdf_kulla_conty(c_15, wo_45, _e47, e_o_6);
     const bool _e49 = ms_usable(_e48);
     if (!(_e49)) {
         const MsBsdfSample msbsdfsample_24 = none_4;
         return msbsdfsample_24;
     }
-    float3 _e51 = wi_34;
-    float3 _e52 = wi_34;
-    const float3 _e53 = ms_conductor_eval(c_14, wo_37, _e52);
+    float3 _e51 = wi_42;
+    float3 _e52 = wi_42;
+    const float3 _e53 = ms_conductor_eval(c_15, wo_45, _e52);
     const MsBsdfSample msbsdfsample_25 = ConstructMsBsdfSample(_e51, _e48, _e53, MS_SAMPLE_VALID, 1.0);
     return msbsdfsample_25;
 }
 
-MsBsdfSample ms_kulla_conty_sample_f(MsBsdfSample s_6, float3 wo_38, float e_o_7, float e_i_2, float e_avg_3, float3 f_ms_1)
+MsBsdfSample ms_kulla_conty_sample_f(MsBsdfSample s_6, float3 wo_46, float e_o_7, float e_i_2, float e_avg_3, float3 f_ms_1)
 {
-    bool local_44 = (bool)0;
     bool local_45 = (bool)0;
+    bool local_46 = (bool)0;
 
     if (!(((s_6.flags & MS_SAMPLE_VALID) == 0u))) {
-        local_44 = ((s_6.flags & MS_SAMPLE_SPECULAR) != 0u);
-    } else {
-        local_44 = true;
-    }
-    bool _e20 = local_44;
-    if (!(_e20)) {
-        local_45 = !(((wo_38.z * s_6.wi.z) > 0.0));
+        local_45 = ((s_6.flags & MS_SAMPLE_SPECULAR) != 0u);
     } else {
         local_45 = true;
     }
-    bool _e32 = local_45;
+    bool _e20 = local_45;
+    if (!(_e20)) {
+        local_46 = !(((wo_46.z * s_6.wi.z) > 0.0));
+    } else {
+        local_46 = true;
+    }
+    bool _e32 = local_46;
     if (_e32) {
         const MsBsdfSample msbsdfsample_26 = s_6;
         return msbsdfsample_26;
@@ -3556,17 +4009,17 @@ MsBsdfSample ms_kulla_conty_sample_f(MsBsdfSample s_6, float3 wo_38, float e_o_7
     return msbsdfsample_27;
 }
 
-MsBsdfSample ms_conductor_sample_turquin(MsConductor c_15, float3 wo_39, float uc_4, float2 u_28, float e_o_8, float3 f0_4)
+MsBsdfSample ms_conductor_sample_turquin(MsConductor c_16, float3 wo_47, float uc_4, float2 u_35, float e_o_8, float3 f0_4)
 {
-    bool local_46 = (bool)0;
+    bool local_47 = (bool)0;
 
-    const MsBsdfSample _e6 = ms_conductor_sample(c_15, wo_39, uc_4, u_28);
+    const MsBsdfSample _e6 = ms_conductor_sample(c_16, wo_47, uc_4, u_35);
     if (!(((_e6.flags & MS_SAMPLE_VALID) == 0u))) {
-        local_46 = ((_e6.flags & MS_SAMPLE_SPECULAR) != 0u);
+        local_47 = ((_e6.flags & MS_SAMPLE_SPECULAR) != 0u);
     } else {
-        local_46 = true;
+        local_47 = true;
     }
-    bool _e21 = local_46;
+    bool _e21 = local_47;
     if (_e21) {
         const MsBsdfSample msbsdfsample_28 = _e6;
         return msbsdfsample_28;
@@ -3598,7 +4051,7 @@ float ms_lut_trilerp(MsLutTap e, MsLutTap r_1, MsLutTap m_5, float4 lo_2, float4
 
     float2 we = float2((1.0 - e.f), e.f);
     float2 wr = float2((1.0 - r_1.f), r_1.f);
-    float2 wm_26 = float2((1.0 - m_5.f), m_5.f);
+    float2 wm_38 = float2((1.0 - m_5.f), m_5.f);
     uint2 loop_bound_8 = uint2(4294967295u, 4294967295u);
     bool loop_init_8 = true;
     while(true) {
@@ -3623,7 +4076,7 @@ float ms_lut_trilerp(MsLutTap e, MsLutTap r_1, MsLutTap m_5, float4 lo_2, float4
             uint _e40 = b_6;
             uint _e44 = b_6;
             uint _e51 = b_6;
-            s_7 = (_e39 + (((we[min(uint((_e40 & 1u)), 1u)] * wr[min(uint(((_e44 >> 1u) & 1u)), 1u)]) * wm_26[min(uint((_e51 >> 2u)), 1u)]) * v_12));
+            s_7 = (_e39 + (((we[min(uint((_e40 & 1u)), 1u)] * wr[min(uint(((_e44 >> 1u) & 1u)), 1u)]) * wm_38[min(uint((_e51 >> 2u)), 1u)]) * v_12));
         }
     }
     float _e61 = s_7;
@@ -3666,59 +4119,59 @@ float ms_lut_bilerp_eta(MsLutTap e_1, MsLutTap r_2, float4 v_10)
 
 float2 ms_dielectric_kulla_conty_k(float eta_5, float f_avg_1, float2 e_avg_4)
 {
-    float2 k_8 = (float2)0;
+    float2 k_9 = (float2)0;
 
     float k_out = (1.0 - f_avg_1);
-    k_8 = float2(k_out, ((k_out * (1.0 - e_avg_4.x)) / ((eta_5 * eta_5) * (1.0 - e_avg_4.y))));
-    float _e18 = k_8.y;
+    k_9 = float2(k_out, ((k_out * (1.0 - e_avg_4.x)) / ((eta_5 * eta_5) * (1.0 - e_avg_4.y))));
+    float _e18 = k_9.y;
     if (!((_e18 <= 1.0))) {
-        float2 _e22 = k_8;
-        float _e24 = k_8.y;
-        float _e28 = k_8.y;
-        k_8 = (_e22 * ((_e28 > 1.0) ? (1.0 / _e24) : 0.0));
+        float2 _e22 = k_9;
+        float _e24 = k_9.y;
+        float _e28 = k_9.y;
+        k_9 = (_e22 * ((_e28 > 1.0) ? (1.0 / _e24) : 0.0));
     }
-    float2 _e34 = k_8;
+    float2 _e34 = k_9;
     return _e34;
 }
 
-float ms_dielectric_kulla_conty_lobe(MsDielectric d_9, float3 wo_40, float3 wi_35, float e_o_9, float e_i_3, float e_avg_i, float k_o)
+float ms_dielectric_kulla_conty_lobe(MsDielectric d_10, float3 wo_48, float3 wi_43, float e_o_9, float e_i_3, float e_avg_i, float k_o)
 {
-    bool local_47 = (bool)0;
     bool local_48 = (bool)0;
-    float f_4 = (float)0;
     bool local_49 = (bool)0;
+    float f_4 = (float)0;
+    bool local_50 = (bool)0;
 
-    if ((abs(wo_40.z) > 0.0)) {
-        local_47 = (abs(wi_35.z) > 0.0);
+    if ((abs(wo_48.z) > 0.0)) {
+        local_48 = (abs(wi_43.z) > 0.0);
     } else {
-        local_47 = false;
+        local_48 = false;
     }
-    bool _e18 = local_47;
+    bool _e18 = local_48;
     if (!(_e18)) {
         return 0.0;
     }
     float lost = (1.0 - e_o_9);
-    bool crossed = ((wi_35.z < 0.0) != (wo_40.z < 0.0));
+    bool crossed = ((wi_43.z < 0.0) != (wo_48.z < 0.0));
     float share = (crossed ? k_o : (1.0 - k_o));
     float den_4 = (MS_PI * (1.0 - e_avg_i));
     if ((den_4 > 0.0)) {
-        local_48 = (lost > 0.0);
+        local_49 = (lost > 0.0);
     } else {
-        local_48 = false;
+        local_49 = false;
     }
-    bool _e44 = local_48;
+    bool _e44 = local_49;
     if (!(_e44)) {
         return 0.0;
     }
     f_4 = (((share * lost) * max((1.0 - e_i_3), 0.0)) / den_4);
     if (crossed) {
-        local_49 = (d_9.transport == MS_TRANSPORT_RADIANCE);
+        local_50 = (d_10.transport == MS_TRANSPORT_RADIANCE);
     } else {
-        local_49 = false;
+        local_50 = false;
     }
-    bool _e61 = local_49;
+    bool _e61 = local_50;
     if (_e61) {
-        float etap_7 = ((wo_40.z > 0.0) ? d_9.eta : (1.0 / d_9.eta));
+        float etap_7 = ((wo_48.z > 0.0) ? d_10.eta : (1.0 / d_10.eta));
         float _e70 = f_4;
         f_4 = (_e70 / (etap_7 * etap_7));
     }
@@ -3726,161 +4179,161 @@ float ms_dielectric_kulla_conty_lobe(MsDielectric d_9, float3 wo_40, float3 wi_3
     return _e73;
 }
 
-float ms_dielectric_eval_kulla_conty(MsDielectric d_10, float3 wo_41, float3 wi_36, float e_o_10, float e_i_4, float e_avg_i_1, float k_o_1)
+float ms_dielectric_eval_kulla_conty(MsDielectric d_11, float3 wo_49, float3 wi_44, float e_o_10, float e_i_4, float e_avg_i_1, float k_o_1)
 {
-    const float _e7 = ms_dielectric_eval(d_10, wo_41, wi_36);
-    const bool _e8 = ms_dielectric_smooth(d_10);
+    const float _e7 = ms_dielectric_eval(d_11, wo_49, wi_44);
+    const bool _e8 = ms_dielectric_smooth(d_11);
     if (_e8) {
         return _e7;
     }
-    const float _e9 = ms_dielectric_kulla_conty_lobe(d_10, wo_41, wi_36, e_o_10, e_i_4, e_avg_i_1, k_o_1);
+    const float _e9 = ms_dielectric_kulla_conty_lobe(d_11, wo_49, wi_44, e_o_10, e_i_4, e_avg_i_1, k_o_1);
     return (_e7 + _e9);
 }
 
-float ms_dielectric_eval_turquin(MsDielectric d_11, float3 wo_42, float3 wi_37, float e_o_11)
+float ms_dielectric_eval_turquin(MsDielectric d_12, float3 wo_50, float3 wi_45, float e_o_11)
 {
-    bool local_50 = (bool)0;
+    bool local_51 = (bool)0;
 
-    const float _e4 = ms_dielectric_eval(d_11, wo_42, wi_37);
-    const bool _e5 = ms_dielectric_smooth(d_11);
+    const float _e4 = ms_dielectric_eval(d_12, wo_50, wi_45);
+    const bool _e5 = ms_dielectric_smooth(d_12);
     if (!(_e5)) {
-        local_50 = !((e_o_11 > 0.0));
+        local_51 = !((e_o_11 > 0.0));
     } else {
-        local_50 = true;
+        local_51 = true;
     }
-    bool _e13 = local_50;
+    bool _e13 = local_51;
     if (_e13) {
         return _e4;
     }
     return (_e4 / e_o_11);
 }
 
-float ms_dielectric_kulla_conty_lobe_pdf(float3 wo_43, float3 wi_38, float k_o_2)
+float ms_dielectric_kulla_conty_lobe_pdf(float3 wo_51, float3 wi_46, float k_o_2)
 {
-    bool crossed_1 = ((wi_38.z < 0.0) != (wo_43.z < 0.0));
+    bool crossed_1 = ((wi_46.z < 0.0) != (wo_51.z < 0.0));
     float side = (crossed_1 ? k_o_2 : (1.0 - k_o_2));
-    return ((side * abs(wi_38.z)) / MS_PI);
+    return ((side * abs(wi_46.z)) / MS_PI);
 }
 
-float ms_dielectric_pdf_kulla_conty(MsDielectric d_12, float3 wo_44, float3 wi_39, float e_o_12, float k_o_3)
+float ms_dielectric_pdf_kulla_conty(MsDielectric d_13, float3 wo_52, float3 wi_47, float e_o_12, float k_o_3)
 {
-    const float _e5 = ms_dielectric_pdf(d_12, wo_44, wi_39);
-    const bool _e6 = ms_dielectric_smooth(d_12);
+    const float _e5 = ms_dielectric_pdf(d_13, wo_52, wi_47);
+    const bool _e6 = ms_dielectric_smooth(d_13);
     if (_e6) {
         return _e5;
     }
     const float _e7 = ms_kulla_conty_p_ms(e_o_12);
-    const float _e11 = ms_dielectric_kulla_conty_lobe_pdf(wo_44, wi_39, k_o_3);
+    const float _e11 = ms_dielectric_kulla_conty_lobe_pdf(wo_52, wi_47, k_o_3);
     return (((1.0 - _e7) * _e5) + (_e7 * _e11));
 }
 
-MsBsdfSample ms_dielectric_sample_kulla_conty(MsDielectric d_13, float3 wo_45, float uc_5, float2 u_29, float e_o_13, float k_o_4)
+MsBsdfSample ms_dielectric_sample_kulla_conty(MsDielectric d_14, float3 wo_53, float uc_5, float2 u_36, float e_o_13, float k_o_4)
 {
-    float3 wi_40 = (float3)0;
-    bool local_51 = (bool)0;
+    float3 wi_48 = (float3)0;
     bool local_52 = (bool)0;
+    bool local_53 = (bool)0;
 
     MsBsdfSample none_5 = ConstructMsBsdfSample((0.0).xxx, 0.0, (0.0).xxx, 0u, 1.0);
-    const bool _e15 = ms_on_horizon(wo_45.z);
+    const bool _e15 = ms_on_horizon(wo_53.z);
     if (_e15) {
         const MsBsdfSample msbsdfsample_31 = none_5;
         return msbsdfsample_31;
     }
-    const bool _e16 = ms_dielectric_smooth(d_13);
+    const bool _e16 = ms_dielectric_smooth(d_14);
     if (_e16) {
-        const MsBsdfSample _e17 = ms_dielectric_sample(d_13, wo_45, uc_5, u_29);
+        const MsBsdfSample _e17 = ms_dielectric_sample(d_14, wo_53, uc_5, u_36);
         const MsBsdfSample msbsdfsample_32 = _e17;
         return msbsdfsample_32;
     }
     const float _e18 = ms_kulla_conty_p_ms(e_o_13);
     if ((uc_5 < _e18)) {
         bool crossed_2 = ((uc_5 / _e18) < k_o_4);
-        const float3 _e23 = ms_cosine_hemisphere(u_29);
-        wi_40 = _e23;
-        if (((wo_45.z > 0.0) == crossed_2)) {
-            float _e30 = wi_40.z;
-            wi_40.z = -(_e30);
+        const float3 _e23 = ms_cosine_hemisphere(u_36);
+        wi_48 = _e23;
+        if (((wo_53.z > 0.0) == crossed_2)) {
+            float _e30 = wi_48.z;
+            wi_48.z = -(_e30);
         }
     } else {
-        const MsBsdfSample _e38 = ms_dielectric_sample(d_13, wo_45, min(((uc_5 - _e18) / (1.0 - _e18)), 0.99999994), u_29);
+        const MsBsdfSample _e38 = ms_dielectric_sample(d_14, wo_53, min(((uc_5 - _e18) / (1.0 - _e18)), 0.99999994), u_36);
         if (!(((_e38.flags & MS_SAMPLE_VALID) == 0u))) {
-            local_51 = ((_e38.flags & MS_SAMPLE_SPECULAR) != 0u);
+            local_52 = ((_e38.flags & MS_SAMPLE_SPECULAR) != 0u);
         } else {
-            local_51 = true;
+            local_52 = true;
         }
-        bool _e53 = local_51;
+        bool _e53 = local_52;
         if (_e53) {
             const MsBsdfSample msbsdfsample_33 = _e38;
             return msbsdfsample_33;
         }
-        wi_40 = _e38.wi;
+        wi_48 = _e38.wi;
     }
-    float3 _e55 = wi_40;
-    const float _e56 = ms_dielectric_pdf_kulla_conty(d_13, wo_45, _e55, e_o_13, k_o_4);
+    float3 _e55 = wi_48;
+    const float _e56 = ms_dielectric_pdf_kulla_conty(d_14, wo_53, _e55, e_o_13, k_o_4);
     const bool _e57 = ms_usable(_e56);
     if (!(!(_e57))) {
-        float _e63 = wi_40.z;
-        local_52 = (_e63 == 0.0);
+        float _e63 = wi_48.z;
+        local_53 = (_e63 == 0.0);
     } else {
-        local_52 = true;
+        local_53 = true;
     }
-    bool _e67 = local_52;
+    bool _e67 = local_53;
     if (_e67) {
         const MsBsdfSample msbsdfsample_34 = none_5;
         return msbsdfsample_34;
     }
-    float3 _e68 = wi_40;
-    const float _e69 = ms_dielectric_eval(d_13, wo_45, _e68);
+    float3 _e68 = wi_48;
+    const float _e69 = ms_dielectric_eval(d_14, wo_53, _e68);
     float3 f_7 = (_e69).xxx;
-    float _e72 = wi_40.z;
-    if (((_e72 < 0.0) != (wo_45.z < 0.0))) {
-        float etap_8 = ((wo_45.z > 0.0) ? d_13.eta : (1.0 / d_13.eta));
-        float3 _e87 = wi_40;
+    float _e72 = wi_48.z;
+    if (((_e72 < 0.0) != (wo_53.z < 0.0))) {
+        float etap_8 = ((wo_53.z > 0.0) ? d_14.eta : (1.0 / d_14.eta));
+        float3 _e87 = wi_48;
         const MsBsdfSample msbsdfsample_35 = ConstructMsBsdfSample(_e87, _e56, f_7, 5u, etap_8);
         return msbsdfsample_35;
     }
-    float3 _e90 = wi_40;
+    float3 _e90 = wi_48;
     const MsBsdfSample msbsdfsample_36 = ConstructMsBsdfSample(_e90, _e56, f_7, MS_SAMPLE_VALID, 1.0);
     return msbsdfsample_36;
 }
 
-MsBsdfSample ms_dielectric_kulla_conty_sample_f(MsBsdfSample s_9, MsDielectric d_14, float3 wo_46, float e_o_14, float e_i_5, float e_avg_i_2, float k_o_5)
+MsBsdfSample ms_dielectric_kulla_conty_sample_f(MsBsdfSample s_9, MsDielectric d_15, float3 wo_54, float e_o_14, float e_i_5, float e_avg_i_2, float k_o_5)
 {
-    bool local_53 = (bool)0;
+    bool local_54 = (bool)0;
 
     if (!(((s_9.flags & MS_SAMPLE_VALID) == 0u))) {
-        local_53 = ((s_9.flags & MS_SAMPLE_SPECULAR) != 0u);
+        local_54 = ((s_9.flags & MS_SAMPLE_SPECULAR) != 0u);
     } else {
-        local_53 = true;
+        local_54 = true;
     }
-    bool _e21 = local_53;
+    bool _e21 = local_54;
     if (_e21) {
         const MsBsdfSample msbsdfsample_37 = s_9;
         return msbsdfsample_37;
     }
-    const float _e23 = ms_dielectric_kulla_conty_lobe(d_14, wo_46, s_9.wi, e_o_14, e_i_5, e_avg_i_2, k_o_5);
+    const float _e23 = ms_dielectric_kulla_conty_lobe(d_15, wo_54, s_9.wi, e_o_14, e_i_5, e_avg_i_2, k_o_5);
     const MsBsdfSample msbsdfsample_38 = ConstructMsBsdfSample(s_9.wi, s_9.pdf, (s_9.f + (_e23).xxx), s_9.flags, s_9.eta);
     return msbsdfsample_38;
 }
 
-MsBsdfSample ms_dielectric_sample_turquin(MsDielectric d_15, float3 wo_47, float uc_6, float2 u_30, float e_o_15)
+MsBsdfSample ms_dielectric_sample_turquin(MsDielectric d_16, float3 wo_55, float uc_6, float2 u_37, float e_o_15)
 {
-    bool local_54 = (bool)0;
     bool local_55 = (bool)0;
+    bool local_56 = (bool)0;
 
-    const MsBsdfSample _e5 = ms_dielectric_sample(d_15, wo_47, uc_6, u_30);
+    const MsBsdfSample _e5 = ms_dielectric_sample(d_16, wo_55, uc_6, u_37);
     if (!(((_e5.flags & MS_SAMPLE_VALID) == 0u))) {
-        local_54 = ((_e5.flags & MS_SAMPLE_SPECULAR) != 0u);
-    } else {
-        local_54 = true;
-    }
-    bool _e20 = local_54;
-    if (!(_e20)) {
-        local_55 = !((e_o_15 > 0.0));
+        local_55 = ((_e5.flags & MS_SAMPLE_SPECULAR) != 0u);
     } else {
         local_55 = true;
     }
-    bool _e28 = local_55;
+    bool _e20 = local_55;
+    if (!(_e20)) {
+        local_56 = !((e_o_15 > 0.0));
+    } else {
+        local_56 = true;
+    }
+    bool _e28 = local_56;
     if (_e28) {
         const MsBsdfSample msbsdfsample_39 = _e5;
         return msbsdfsample_39;
@@ -3907,12 +4360,12 @@ uint NagaBufferLength(ByteAddressBuffer buffer)
 
 uint ms_k_index(uint3 id_13, uint3 groups_13)
 {
-    uint i_12 = (id_13.x + ((id_13.y * groups_13.x) * 64u));
+    uint i_14 = (id_13.x + ((id_13.y * groups_13.x) * 64u));
     uint n_13 = naga_div(((NagaBufferLength(ms_in) - 0) / 16), MS_K_IN);
-    if ((i_12 >= n_13)) {
+    if ((i_14 >= n_13)) {
         return n_13;
     }
-    return i_12;
+    return i_14;
 }
 
 MsMicrofacet ConstructMsMicrofacet(uint arg0, float2 arg1, uint arg2) {
@@ -3987,18 +4440,18 @@ void ms_k_ggx_eval(uint3 id : SV_DispatchThreadID, uint3 groups : SV_GroupID)
     float4 _e12 = asfloat(ms_in.Load4((_e2 * MS_K_IN)*16));
     float2 a_25 = _e12.xy;
     float4 _e20 = asfloat(ms_in.Load4(((_e2 * MS_K_IN) + 1u)*16));
-    float3 wo_48 = _e20.xyz;
+    float3 wo_56 = _e20.xyz;
     float4 _e28 = asfloat(ms_in.Load4(((_e2 * MS_K_IN) + 2u)*16));
-    float3 wm_27 = _e28.xyz;
-    const float _e34 = ms_ggx_d(wm_27, a_25);
-    const float _e35 = ms_ggx_lambda(wo_48, a_25);
-    const float _e36 = ms_ggx_g1_(wo_48, a_25);
-    const float _e37 = ms_ggx_g2_(wo_48, wm_27, a_25);
+    float3 wm_39 = _e28.xyz;
+    const float _e34 = ms_ggx_d(wm_39, a_25);
+    const float _e35 = ms_ggx_lambda(wo_56, a_25);
+    const float _e36 = ms_ggx_g1_(wo_56, a_25);
+    const float _e37 = ms_ggx_g2_(wo_56, wm_39, a_25);
     ms_out.Store4((_e2 * MS_K_OUT)*16, asuint(float4(_e34, _e35, _e36, _e37)));
-    const float _e45 = ms_ggx_g2_separable(wo_48, wm_27, a_25);
-    const float _e46 = ms_ggx_pdf(wo_48, wm_27, a_25);
-    const float _e47 = ms_ggx_pdf_dcos(wm_27, a_25);
-    const float _e48 = ms_ggx_pdf_bounded(wo_48, wm_27, a_25);
+    const float _e45 = ms_ggx_g2_separable(wo_56, wm_39, a_25);
+    const float _e46 = ms_ggx_pdf(wo_56, wm_39, a_25);
+    const float _e47 = ms_ggx_pdf_dcos(wm_39, a_25);
+    const float _e48 = ms_ggx_pdf_bounded(wo_56, wm_39, a_25);
     ms_out.Store4(((_e2 * MS_K_OUT) + 1u)*16, asuint(float4(_e45, _e46, _e47, _e48)));
     return;
 }
@@ -4013,18 +4466,18 @@ void ms_k_beckmann_eval(uint3 id_1 : SV_DispatchThreadID, uint3 groups_1 : SV_Gr
     float4 _e12 = asfloat(ms_in.Load4((_e2 * MS_K_IN)*16));
     float2 a_26 = _e12.xy;
     float4 _e20 = asfloat(ms_in.Load4(((_e2 * MS_K_IN) + 1u)*16));
-    float3 wo_49 = _e20.xyz;
+    float3 wo_57 = _e20.xyz;
     float4 _e28 = asfloat(ms_in.Load4(((_e2 * MS_K_IN) + 2u)*16));
-    float3 wm_28 = _e28.xyz;
-    const float _e34 = ms_beckmann_d(wm_28, a_26);
-    const float _e35 = ms_beckmann_lambda(wo_49, a_26);
-    const float _e36 = ms_beckmann_g1_(wo_49, a_26);
-    const float _e37 = ms_beckmann_g2_(wo_49, wm_28, a_26);
+    float3 wm_40 = _e28.xyz;
+    const float _e34 = ms_beckmann_d(wm_40, a_26);
+    const float _e35 = ms_beckmann_lambda(wo_57, a_26);
+    const float _e36 = ms_beckmann_g1_(wo_57, a_26);
+    const float _e37 = ms_beckmann_g2_(wo_57, wm_40, a_26);
     ms_out.Store4((_e2 * MS_K_OUT)*16, asuint(float4(_e34, _e35, _e36, _e37)));
-    const float _e45 = ms_beckmann_g2_separable(wo_49, wm_28, a_26);
-    const float _e46 = ms_beckmann_pdf(wo_49, wm_28, a_26);
-    const float _e47 = ms_beckmann_pdf_dcos(wm_28, a_26);
-    const float _e51 = ms_pdf(ConstructMsMicrofacet(MS_NDF_BECKMANN, a_26, 0u), wo_49, wm_28);
+    const float _e45 = ms_beckmann_g2_separable(wo_57, wm_40, a_26);
+    const float _e46 = ms_beckmann_pdf(wo_57, wm_40, a_26);
+    const float _e47 = ms_beckmann_pdf_dcos(wm_40, a_26);
+    const float _e51 = ms_pdf(ConstructMsMicrofacet(MS_NDF_BECKMANN, a_26, 0u), wo_57, wm_40);
     ms_out.Store4(((_e2 * MS_K_OUT) + 1u)*16, asuint(float4(_e45, _e46, _e47, _e51)));
     return;
 }
@@ -4038,8 +4491,8 @@ void ms_k_beckmann_sample(uint3 id_2 : SV_DispatchThreadID, uint3 groups_2 : SV_
     }
     float4 r0_3 = asfloat(ms_in.Load4((_e2 * MS_K_IN)*16));
     float4 _e19 = asfloat(ms_in.Load4(((_e2 * MS_K_IN) + 1u)*16));
-    float3 wo_50 = _e19.xyz;
-    const MsSample _e26 = ms_sample(ConstructMsMicrofacet(MS_NDF_BECKMANN, r0_3.xy, 0u), wo_50, r0_3.zw);
+    float3 wo_58 = _e19.xyz;
+    const MsSample _e26 = ms_sample(ConstructMsMicrofacet(MS_NDF_BECKMANN, r0_3.xy, 0u), wo_58, r0_3.zw);
     const MsSample _e29 = ms_beckmann_sample_dcos(r0_3.xy, r0_3.zw);
     ms_out.Store4((_e2 * MS_K_OUT)*16, asuint(float4(_e26.wm, _e26.pdf)));
     ms_out.Store4(((_e2 * MS_K_OUT) + 1u)*16, asuint(float4(_e29.wm, _e29.pdf)));
@@ -4055,8 +4508,8 @@ void ms_k_ggx_sample(uint3 id_3 : SV_DispatchThreadID, uint3 groups_3 : SV_Group
     }
     float4 r0_4 = asfloat(ms_in.Load4((_e2 * MS_K_IN)*16));
     float4 _e19 = asfloat(ms_in.Load4(((_e2 * MS_K_IN) + 1u)*16));
-    float3 wo_51 = _e19.xyz;
-    const MsSample _e23 = ms_ggx_sample(wo_51, r0_4.xy, r0_4.zw);
+    float3 wo_59 = _e19.xyz;
+    const MsSample _e23 = ms_ggx_sample(wo_59, r0_4.xy, r0_4.zw);
     const MsSample _e26 = ms_ggx_sample_dcos(r0_4.xy, r0_4.zw);
     ms_out.Store4((_e2 * MS_K_OUT)*16, asuint(float4(_e23.wm, _e23.pdf)));
     ms_out.Store4(((_e2 * MS_K_OUT) + 1u)*16, asuint(float4(_e26.wm, _e26.pdf)));
@@ -4072,12 +4525,12 @@ void ms_k_ggx_bounded(uint3 id_4 : SV_DispatchThreadID, uint3 groups_4 : SV_Grou
     }
     float4 r0_5 = asfloat(ms_in.Load4((_e2 * MS_K_IN)*16));
     float4 _e19 = asfloat(ms_in.Load4(((_e2 * MS_K_IN) + 1u)*16));
-    float3 wo_52 = _e19.xyz;
+    float3 wo_60 = _e19.xyz;
     float4 _e27 = asfloat(ms_in.Load4(((_e2 * MS_K_IN) + 2u)*16));
-    float3 wi_45 = _e27.xyz;
-    const MsSample _e31 = ms_ggx_sample_bounded(wo_52, r0_5.xy, r0_5.zw);
+    float3 wi_53 = _e27.xyz;
+    const MsSample _e31 = ms_ggx_sample_bounded(wo_60, r0_5.xy, r0_5.zw);
     ms_out.Store4((_e2 * MS_K_OUT)*16, asuint(float4(_e31.wm, _e31.pdf)));
-    const float _e46 = ms_ggx_pdf_bounded_reflection(wo_52, wi_45, r0_5.xy);
+    const float _e46 = ms_ggx_pdf_bounded_reflection(wo_60, wi_53, r0_5.xy);
     ms_out.Store4(((_e2 * MS_K_OUT) + 1u)*16, asuint(float4(_e46, 0.0, 0.0, 0.0)));
     return;
 }
@@ -4089,15 +4542,15 @@ void ms_k_fresnel(uint3 id_5 : SV_DispatchThreadID, uint3 groups_5 : SV_GroupID)
     if ((_e2 == naga_div(((NagaBufferLength(ms_in) - 0) / 16), MS_K_IN))) {
         return;
     }
-    float c_23 = asfloat(ms_in.Load(8+((_e2 * MS_K_IN) + 1u)*16));
+    float c_24 = asfloat(ms_in.Load(8+((_e2 * MS_K_IN) + 1u)*16));
     const MsConductor _e16 = ms_k_conductor(_e2);
     MsFresnel fr_2 = _e16.fresnel;
-    const float _e24 = ms_fresnel_dielectric(c_23, fr_2.a.x);
-    const float _e29 = ms_fresnel_conductor(c_23, fr_2.a.x, fr_2.b.x);
-    const float _e32 = ms_fresnel_schlick(c_23, fr_2.a.x);
-    const float _e37 = ms_fresnel_f82_tint(c_23, fr_2.a.x, fr_2.b.x);
+    const float _e24 = ms_fresnel_dielectric(c_24, fr_2.a.x);
+    const float _e29 = ms_fresnel_conductor(c_24, fr_2.a.x, fr_2.b.x);
+    const float _e32 = ms_fresnel_schlick(c_24, fr_2.a.x);
+    const float _e37 = ms_fresnel_f82_tint(c_24, fr_2.a.x, fr_2.b.x);
     ms_out.Store4((_e2 * MS_K_OUT)*16, asuint(float4(_e24, _e29, _e32, _e37)));
-    const float3 _e45 = ms_fresnel_eval(fr_2, c_23);
+    const float3 _e45 = ms_fresnel_eval(fr_2, c_24);
     ms_out.Store4(((_e2 * MS_K_OUT) + 1u)*16, asuint(float4(_e45, 0.0)));
     return;
 }
@@ -4111,13 +4564,13 @@ void ms_k_conductor_eval(uint3 id_6 : SV_DispatchThreadID, uint3 groups_6 : SV_G
     }
     const MsConductor _e8 = ms_k_conductor(_e2);
     float4 _e15 = asfloat(ms_in.Load4(((_e2 * MS_K_IN) + 1u)*16));
-    float3 wo_53 = _e15.xyz;
+    float3 wo_61 = _e15.xyz;
     float4 _e23 = asfloat(ms_in.Load4(((_e2 * MS_K_IN) + 2u)*16));
-    float3 wi_46 = _e23.xyz;
-    const float3 _e29 = ms_conductor_eval(_e8, wo_53, wi_46);
-    const float _e30 = ms_conductor_pdf(_e8, wo_53, wi_46);
+    float3 wi_54 = _e23.xyz;
+    const float3 _e29 = ms_conductor_eval(_e8, wo_61, wi_54);
+    const float _e30 = ms_conductor_pdf(_e8, wo_61, wi_54);
     ms_out.Store4((_e2 * MS_K_OUT)*16, asuint(float4(_e29, _e30)));
-    const float4 _e38 = ms_conductor_eval_pdf(_e8, wo_53, wi_46);
+    const float4 _e38 = ms_conductor_eval_pdf(_e8, wo_61, wi_54);
     ms_out.Store4(((_e2 * MS_K_OUT) + 1u)*16, asuint(_e38));
     return;
 }
@@ -4147,11 +4600,11 @@ void ms_k_dielectric_eval(uint3 id_8 : SV_DispatchThreadID, uint3 groups_8 : SV_
     }
     const MsDielectric _e8 = ms_k_dielectric(_e2);
     float4 _e15 = asfloat(ms_in.Load4(((_e2 * MS_K_IN) + 1u)*16));
-    float3 wo_54 = _e15.xyz;
+    float3 wo_62 = _e15.xyz;
     float4 _e23 = asfloat(ms_in.Load4(((_e2 * MS_K_IN) + 2u)*16));
-    float3 wi_47 = _e23.xyz;
-    const float _e29 = ms_dielectric_eval(_e8, wo_54, wi_47);
-    const float _e30 = ms_dielectric_pdf(_e8, wo_54, wi_47);
+    float3 wi_55 = _e23.xyz;
+    const float _e29 = ms_dielectric_eval(_e8, wo_62, wi_55);
+    const float _e30 = ms_dielectric_pdf(_e8, wo_62, wi_55);
     ms_out.Store4((_e2 * MS_K_OUT)*16, asuint(float4(_e29, _e30, 0.0, 0.0)));
     ms_out.Store4(((_e2 * MS_K_OUT) + 1u)*16, asuint((0.0).xxxx));
     return;
@@ -4182,19 +4635,19 @@ void ms_k_family_eval(uint3 id_10 : SV_DispatchThreadID, uint3 groups_10 : SV_Gr
     }
     float4 r0_8 = asfloat(ms_in.Load4((_e2 * MS_K_IN)*16));
     float4 _e19 = asfloat(ms_in.Load4(((_e2 * MS_K_IN) + 1u)*16));
-    float3 wo_55 = _e19.xyz;
+    float3 wo_63 = _e19.xyz;
     float4 r2_3 = asfloat(ms_in.Load4(((_e2 * MS_K_IN) + 2u)*16));
-    float3 wm_29 = r2_3.xyz;
+    float3 wm_41 = r2_3.xyz;
     const MsMicrofacet _e29 = ms_k_microfacet(r0_8, r2_3);
-    const float _e34 = ms_d(_e29, wm_29);
-    const float _e35 = ms_lambda(_e29, wo_55);
-    const float _e36 = ms_g1_(_e29, wo_55);
-    const float _e37 = ms_g2_(_e29, wo_55, wm_29);
+    const float _e34 = ms_d(_e29, wm_41);
+    const float _e35 = ms_lambda(_e29, wo_63);
+    const float _e36 = ms_g1_(_e29, wo_63);
+    const float _e37 = ms_g2_(_e29, wo_63, wm_41);
     ms_out.Store4((_e2 * MS_K_OUT)*16, asuint(float4(_e34, _e35, _e36, _e37)));
-    const float _e45 = ms_g2_separable(_e29, wo_55, wm_29);
-    const float _e46 = ms_pdf(_e29, wo_55, wm_29);
-    const float _e47 = ms_pdf_dcos(_e29, wm_29);
-    const float _e48 = ms_g1_(_e29, wm_29);
+    const float _e45 = ms_g2_separable(_e29, wo_63, wm_41);
+    const float _e46 = ms_pdf(_e29, wo_63, wm_41);
+    const float _e47 = ms_pdf_dcos(_e29, wm_41);
+    const float _e48 = ms_g1_(_e29, wm_41);
     ms_out.Store4(((_e2 * MS_K_OUT) + 1u)*16, asuint(float4(_e45, _e46, _e47, _e48)));
     return;
 }
@@ -4208,11 +4661,11 @@ void ms_k_family_sample(uint3 id_11 : SV_DispatchThreadID, uint3 groups_11 : SV_
     }
     float4 r0_9 = asfloat(ms_in.Load4((_e2 * MS_K_IN)*16));
     float4 _e19 = asfloat(ms_in.Load4(((_e2 * MS_K_IN) + 1u)*16));
-    float3 wo_56 = _e19.xyz;
+    float3 wo_64 = _e19.xyz;
     float4 _e27 = asfloat(ms_in.Load4(((_e2 * MS_K_IN) + 2u)*16));
     const MsMicrofacet _e28 = ms_k_microfacet(r0_9, _e27);
     const MsSample _e30 = ms_sample_dcos(_e28, r0_9.zw);
-    const MsSample _e32 = ms_sample(_e28, wo_56, r0_9.zw);
+    const MsSample _e32 = ms_sample(_e28, wo_64, r0_9.zw);
     ms_out.Store4((_e2 * MS_K_OUT)*16, asuint(float4(_e30.wm, _e30.pdf)));
     ms_out.Store4(((_e2 * MS_K_OUT) + 1u)*16, asuint(float4(_e32.wm, _e32.pdf)));
     return;

@@ -84,30 +84,36 @@ constant uint MS_BK_ERFINV_Q_AT = 304u;
 constant int MS_BK_ERFINV_W_K0_ = 4;
 constant int MS_BK_ERFINV_W_K1_ = 7;
 constant uint MS_BK_ERFINV_W_AT = 504u;
+constant int MS_SF_K0E_K0_ = -14;
+constant int MS_SF_K0E_K1_ = 9;
+constant uint MS_SF_K0E_AT = 528u;
+constant int MS_SF_E1X_K0_ = -24;
+constant int MS_SF_E1X_K1_ = 9;
+constant uint MS_SF_E1X_AT = 712u;
 constant float MS_BK_QUANTILE_EDGE = -27.200563;
 constant int MS_DG_LAMBDA_K0_ = -30;
 constant int MS_DG_LAMBDA_K1_ = 16;
 constant uint MS_DG_LAMBDA_M = 3u;
-constant uint MS_DG_LAMBDA_AT = 528u;
+constant uint MS_DG_LAMBDA_AT = 976u;
 constant int MS_DG_D_K0_ = -30;
 constant int MS_DG_D_K1_ = 30;
 constant uint MS_DG_D_M = 2u;
-constant uint MS_DG_D_AT = 896u;
+constant uint MS_DG_D_AT = 1344u;
 constant int MS_EXP_QA_K0_ = -24;
 constant int MS_EXP_QA_K1_ = 6;
 constant uint MS_EXP_QA_M = 5u;
-constant uint MS_EXP_QA_AT = 1616u;
+constant uint MS_EXP_QA_AT = 2064u;
 constant int MS_EXP_QB_K0_ = 6;
 constant int MS_EXP_QB_K1_ = 12;
 constant uint MS_EXP_QB_M = 7u;
-constant uint MS_EXP_QB_AT = 2576u;
+constant uint MS_EXP_QB_AT = 3024u;
 constant int MS_EXP_FAR_K0_ = 5;
 constant int MS_EXP_FAR_K1_ = 9;
 constant uint MS_EXP_FAR_M = 3u;
-constant uint MS_EXP_FAR_AT = 3344u;
-constant uint MS_ZIG_EXP_AT = 3408u;
-constant uint MS_ZIG_NORMAL_AT = 3664u;
-constant uint MS_TABLES_ROWS = 3920u;
+constant uint MS_EXP_FAR_AT = 3792u;
+constant uint MS_ZIG_EXP_AT = 3856u;
+constant uint MS_ZIG_NORMAL_AT = 4112u;
+constant uint MS_TABLES_ROWS = 4368u;
 constant float MS_FRAC_1_SQRT_PI = 0.5641896;
 constant float MS_SQRT_PI = 1.7724539;
 constant float MS_EULER_GAMMA = 0.5772157;
@@ -119,6 +125,9 @@ constant uint MS_NDF_BECKMANN = 1u;
 constant uint MS_NDF_DOUBLE_GGX = 2u;
 constant uint MS_NDF_EXPONENTIAL = 3u;
 constant uint MS_NDF_STUDENT_T = 5u;
+constant uint MS_NDF_EI = 6u;
+constant uint MS_NDF_ERFC = 7u;
+constant uint MS_NDF_K0_ = 8u;
 constant uint MS_MASKING_CORRELATED = 0u;
 constant uint MS_MASKING_SEPARABLE = 1u;
 constant uint MS_MASKING_CORRELATED_BETA = 2u;
@@ -144,25 +153,25 @@ int naga_f2i32(float value) {
 metal::float2 ms_cos_sin_turn(
     float v
 ) {
-    float k_9 = metal::rint(4.0 * v);
-    float r_3 = v - (0.25 * k_9);
+    float k_10 = metal::rint(4.0 * v);
+    float r_3 = v - (0.25 * k_10);
     float x_14 = MS_TAU * r_3;
     float x2_ = x_14 * x_14;
     float s_10 = x_14 * (1.0 + (x2_ * (-0.16666667 + (x2_ * (0.008333333 + (x2_ * (-0.0001984127 + (x2_ * 0.0000027557319))))))));
-    float c_16 = 1.0 + (x2_ * (-0.5 + (x2_ * (0.041666668 + (x2_ * (-0.0013888889 + (x2_ * (0.000024801588 + (x2_ * -0.0000002755732)))))))));
-    int q_2 = naga_f2i32(k_9) & 3;
+    float c_17 = 1.0 + (x2_ * (-0.5 + (x2_ * (0.041666668 + (x2_ * (-0.0013888889 + (x2_ * (0.000024801588 + (x2_ * -0.0000002755732)))))))));
+    int q_2 = naga_f2i32(k_10) & 3;
     if (q_2 == 0) {
-        return metal::float2(c_16, s_10);
+        return metal::float2(c_17, s_10);
     } else {
         if (q_2 == 1) {
-            return metal::float2(-(s_10), c_16);
+            return metal::float2(-(s_10), c_17);
         } else {
             if (q_2 == 2) {
-                return metal::float2(-(c_16), -(s_10));
+                return metal::float2(-(c_17), -(s_10));
             }
         }
     }
-    return metal::float2(s_10, -(c_16));
+    return metal::float2(s_10, -(c_17));
 }
 
 metal::float3 ms_rescaled(
@@ -439,31 +448,31 @@ float ms_fresnel_dielectric(
         eta_2 = 1.0 / _e9;
     }
     float _e12 = cos_i_1;
-    float c_17 = metal::min(_e12, 1.0);
+    float c_18 = metal::min(_e12, 1.0);
     float _e15 = eta_2;
     if (_e15 == 1.0) {
         return 0.0;
     }
-    if (c_17 == 0.0) {
+    if (c_18 == 0.0) {
         return 1.0;
     }
     float _e24 = eta_2;
     if (_e24 > 1000000000000000000.0) {
         float _e27 = eta_2;
         float e_3 = 1.0 / _e27;
-        float cos_t_1 = metal::sqrt(((1.0 - e_3) * (1.0 + e_3)) + ((c_17 * e_3) * (c_17 * e_3)));
-        r_parl = (c_17 - (e_3 * cos_t_1)) / (c_17 + (e_3 * cos_t_1));
-        r_perp = ((e_3 * c_17) - cos_t_1) / ((e_3 * c_17) + cos_t_1);
+        float cos_t_1 = metal::sqrt(((1.0 - e_3) * (1.0 + e_3)) + ((c_18 * e_3) * (c_18 * e_3)));
+        r_parl = (c_18 - (e_3 * cos_t_1)) / (c_18 + (e_3 * cos_t_1));
+        r_perp = ((e_3 * c_18) - cos_t_1) / ((e_3 * c_18) + cos_t_1);
     } else {
         float _e51 = eta_2;
         if (_e51 > 1.0) {
             float _e54 = eta_2;
             float _e57 = eta_2;
-            ect2_ = ((_e54 - 1.0) * (_e57 + 1.0)) + (c_17 * c_17);
+            ect2_ = ((_e54 - 1.0) * (_e57 + 1.0)) + (c_18 * c_18);
         } else {
             float _e63 = eta_2;
             float _e64 = eta_2;
-            ect2_ = (_e63 * _e64) - ((1.0 - c_17) * (1.0 + c_17));
+            ect2_ = (_e63 * _e64) - ((1.0 - c_18) * (1.0 + c_18));
         }
         float _e72 = ect2_;
         if (_e72 <= 0.0) {
@@ -473,9 +482,9 @@ float ms_fresnel_dielectric(
         float ect = metal::sqrt(_e76);
         float _e78 = eta_2;
         float _e79 = eta_2;
-        float e2c = (_e78 * _e79) * c_17;
+        float e2c = (_e78 * _e79) * c_18;
         r_parl = (e2c - ect) / (e2c + ect);
-        r_perp = (c_17 - ect) / (c_17 + ect);
+        r_perp = (c_18 - ect) / (c_18 + ect);
     }
     float _e88 = r_parl;
     float _e89 = r_parl;
@@ -520,12 +529,12 @@ metal::float2 ms_crecip(
 ) {
     if (metal::abs(a_7.x) >= metal::abs(a_7.y)) {
         float r_4 = a_7.y / a_7.x;
-        float d_16 = a_7.x + (a_7.y * r_4);
-        return metal::float2(1.0 / d_16, -(r_4) / d_16);
+        float d_17 = a_7.x + (a_7.y * r_4);
+        return metal::float2(1.0 / d_17, -(r_4) / d_17);
     }
     float r_5 = a_7.x / a_7.y;
-    float d_17 = (a_7.x * r_5) + a_7.y;
-    return metal::float2(r_5 / d_17, -1.0 / d_17);
+    float d_18 = (a_7.x * r_5) + a_7.y;
+    return metal::float2(r_5 / d_18, -1.0 / d_18);
 }
 
 metal::float2 ms_csqrt(
@@ -671,13 +680,13 @@ float ms_ggx_d(
     metal::float3 wm_2,
     metal::float2 alpha
 ) {
-    float z_5 = wm_2.z;
-    if (!((z_5 > 0.0))) {
+    float z_6 = wm_2.z;
+    if (!((z_6 > 0.0))) {
         return 0.0;
     }
     float x_15 = wm_2.x / alpha.x;
-    float y_3 = wm_2.y / alpha.y;
-    float t_6 = ((x_15 * x_15) + (y_3 * y_3)) + (z_5 * z_5);
+    float y_7 = wm_2.y / alpha.y;
+    float t_6 = ((x_15 * x_15) + (y_7 * y_7)) + (z_6 * z_6);
     return 1.0 / ((((MS_PI * alpha.x) * alpha.y) * t_6) * t_6);
 }
 
@@ -686,17 +695,17 @@ float ms_ggx_lambda(
     metal::float2 alpha_1
 ) {
     float x_16 = alpha_1.x * w_3.x;
-    float y_4 = alpha_1.y * w_3.y;
-    float z_6 = metal::abs(w_3.z);
-    float t_7 = (x_16 * x_16) + (y_4 * y_4);
-    float z2_ = z_6 * z_6;
-    float den = 2.0 * (z2_ + (z_6 * metal::sqrt(z2_ + t_7)));
+    float y_8 = alpha_1.y * w_3.y;
+    float z_7 = metal::abs(w_3.z);
+    float t_7 = (x_16 * x_16) + (y_8 * y_8);
+    float z2_ = z_7 * z_7;
+    float den = 2.0 * (z2_ + (z_7 * metal::sqrt(z2_ + t_7)));
     if (!((den > 0.0))) {
-        if (z_6 == 0.0) {
+        if (z_7 == 0.0) {
             float _e25 = ms_inf();
             return _e25;
         }
-        return (t_7 / (z_6 + metal::sqrt((z_6 * z_6) + t_7))) / (z_6 + z_6);
+        return (t_7 / (z_7 + metal::sqrt((z_7 * z_7) + t_7))) / (z_7 + z_7);
     }
     return t_7 / den;
 }
@@ -706,13 +715,13 @@ float ms_ggx_g1_(
     metal::float2 alpha_2
 ) {
     float x_17 = alpha_2.x * w_4.x;
-    float y_5 = alpha_2.y * w_4.y;
-    float z_7 = metal::abs(w_4.z);
-    float den_1 = z_7 + metal::sqrt((z_7 * z_7) + ((x_17 * x_17) + (y_5 * y_5)));
+    float y_9 = alpha_2.y * w_4.y;
+    float z_8 = metal::abs(w_4.z);
+    float den_1 = z_8 + metal::sqrt((z_8 * z_8) + ((x_17 * x_17) + (y_9 * y_9)));
     if (!((den_1 > 0.0))) {
         return 0.0;
     }
-    return (z_7 + z_7) / den_1;
+    return (z_8 + z_8) / den_1;
 }
 
 float ms_ggx_g2_(
@@ -743,7 +752,7 @@ float ms_ggx_pdf(
     float c = {};
     bool local_6 = {};
     bool local_7 = {};
-    float z_8 = metal::abs(w_5.z);
+    float z_9 = metal::abs(w_5.z);
     float _e5 = ms_dot(w_5, wm_3);
     c = _e5;
     if (w_5.z < 0.0) {
@@ -752,7 +761,7 @@ float ms_ggx_pdf(
     }
     float _e12 = c;
     if (_e12 > 0.0) {
-        local_6 = z_8 > 0.0;
+        local_6 = z_9 > 0.0;
     } else {
         local_6 = false;
     }
@@ -768,13 +777,13 @@ float ms_ggx_pdf(
     }
     float sx = alpha_5.x * w_5.x;
     float sy = alpha_5.y * w_5.y;
-    float len_3 = metal::sqrt(((sx * sx) + (sy * sy)) + (z_8 * z_8));
+    float len_3 = metal::sqrt(((sx * sx) + (sy * sy)) + (z_9 * z_9));
     float mx = wm_3.x / alpha_5.x;
     float my = wm_3.y / alpha_5.y;
     float t_8 = ((mx * mx) + (my * my)) + (wm_3.z * wm_3.z);
     float _e55 = c;
     float _e56 = c;
-    return (_e55 + _e56) / (((((MS_PI * alpha_5.x) * alpha_5.y) * t_8) * t_8) * (z_8 + len_3));
+    return (_e55 + _e56) / (((((MS_PI * alpha_5.x) * alpha_5.y) * t_8) * t_8) * (z_9 + len_3));
 }
 
 metal::float3 ms_ggx_cap_normal_stretched(
@@ -785,12 +794,12 @@ metal::float3 ms_ggx_cap_normal_stretched(
 ) {
     float inv = 1.0 / len;
     float x_18 = (stretch.x * w_6.x) * inv;
-    float y_6 = (stretch.y * w_6.y) * inv;
-    float z_9 = (stretch.z * w_6.z) * inv;
+    float y_10 = (stretch.y * w_6.y) * inv;
+    float z_10 = (stretch.z * w_6.z) * inv;
     metal::float2 _e19 = ms_cos_sin_turn(u.x);
-    float above = (1.0 - u.y) * (1.0 + z_9);
-    float sin = metal::sqrt(metal::max(u.y * ((above * (1.0 + z_9)) + ((x_18 * x_18) + (y_6 * y_6))), 0.0));
-    metal::float3 h_2 = metal::float3(stretch.x * ((sin * _e19.x) + x_18), stretch.y * ((sin * _e19.y) + y_6), stretch.z * above);
+    float above = (1.0 - u.y) * (1.0 + z_10);
+    float sin = metal::sqrt(metal::max(u.y * ((above * (1.0 + z_10)) + ((x_18 * x_18) + (y_10 * y_10))), 0.0));
+    metal::float3 h_2 = metal::float3(stretch.x * ((sin * _e19.x) + x_18), stretch.y * ((sin * _e19.y) + y_10), stretch.z * above);
     float n_11 = 1.0 / metal::sqrt(((h_2.x * h_2.x) + (h_2.y * h_2.y)) + (h_2.z * h_2.z));
     return h_2 * n_11;
 }
@@ -835,12 +844,12 @@ metal::float3 ms_ggx_sample_wm(
         float _e45 = w_8.x;
         float _e49 = w_8.y;
         float _e54 = w_8.z;
-        float d_18 = ((_e42.x * _e45) + (_e42.y * _e49)) + (_e42.z * _e54);
+        float d_19 = ((_e42.x * _e45) + (_e42.y * _e49)) + (_e42.z * _e54);
         float _e58 = w_8.x;
         float _e61 = w_8.y;
         float _e65 = w_8.z;
         float l1_ = (metal::abs(_e58) + metal::abs(_e61)) + metal::abs(_e65);
-        if (d_18 > (0.00000024 * l1_)) {
+        if (d_19 > (0.00000024 * l1_)) {
             return _e42;
         }
         metal::float3 _e71 = w_8;
@@ -917,11 +926,11 @@ MsBoundedCap ms_ggx_bounded_cap(
     float _e44 = v_2.z;
     float _e47 = v_2.z;
     float den_2 = s2_ + ((a2_ * _e44) * _e47);
-    float k_10 = ((1.0 - a2_) * s2_) / den_2;
+    float k_11 = ((1.0 - a2_) * s2_) / den_2;
     float _e55 = v_2.z;
     float _e57 = v_2.z;
     float one_minus_k = (a2_ * (s2_ + (_e55 * _e57))) / den_2;
-    return MsBoundedCap {_e18, k_10 * _e18.z, one_minus_k * _e18.z};
+    return MsBoundedCap {_e18, k_11 * _e18.z, one_minus_k * _e18.z};
 }
 
 float ms_ggx_pdf_bounded(
@@ -974,12 +983,12 @@ float ms_ggx_pdf_bounded_reflection(
         return 0.0;
     }
     float _e7 = ms_dot(wo_8, _e3);
-    float c_18 = metal::abs(_e7);
-    if (!((c_18 > 0.0))) {
+    float c_19 = metal::abs(_e7);
+    if (!((c_19 > 0.0))) {
         return 0.0;
     }
     float _e13 = ms_ggx_pdf_bounded(wo_8, _e3, alpha_14);
-    return _e13 / (4.0 * c_18);
+    return _e13 / (4.0 * c_19);
 }
 
 metal::uint2 ms_u64_add(
@@ -1329,8 +1338,8 @@ float ms_bk_quantile(
         float _e43 = ms_bk_poly(_e34, _e41, _e25.y);
         ratio = _e43;
     } else {
-        float w_40 = metal::min(-(metal::log(q_3)) - 0.6931472, 127.99);
-        metal::float2 _e52 = ms_bk_segment(w_40, MS_BK_ERFINV_W_K0_, MS_BK_ERFINV_W_K1_);
+        float w_54 = metal::min(-(metal::log(q_3)) - 0.6931472, 127.99);
+        metal::float2 _e52 = ms_bk_segment(w_54, MS_BK_ERFINV_W_K0_, MS_BK_ERFINV_W_K1_);
         uint i_7 = 2u * naga_f2u32(_e52.x);
         metal::float4 _e61 = ms_tables[MS_BK_ERFINV_W_AT + i_7];
         metal::float4 _e68 = ms_tables[(MS_BK_ERFINV_W_AT + i_7) + 1u];
@@ -1359,12 +1368,12 @@ float ms_beckmann_d(
     metal::float2 alpha_15
 ) {
     bool local_9 = {};
-    float z_10 = wm_6.z;
+    float z_11 = wm_6.z;
     float r_12 = 1.0 / (alpha_15.x * alpha_15.y);
     float x_19 = (wm_6.x * alpha_15.y) * r_12;
-    float y_7 = (wm_6.y * alpha_15.x) * r_12;
-    float z2_1 = z_10 * z_10;
-    if (z_10 > 0.0) {
+    float y_11 = (wm_6.y * alpha_15.x) * r_12;
+    float z2_1 = z_11 * z_11;
+    if (z_11 > 0.0) {
         local_9 = z2_1 > 0.0;
     } else {
         local_9 = false;
@@ -1373,11 +1382,11 @@ float ms_beckmann_d(
     if (!(_e24)) {
         return 0.0;
     }
-    float e_5 = ((x_19 * x_19) + (y_7 * y_7)) / z2_1;
+    float e_5 = ((x_19 * x_19) + (y_11 * y_11)) / z2_1;
     if (e_5 <= 80.0) {
         return (metal::exp(-(e_5)) * r_12) / ((MS_PI * z2_1) * z2_1);
     }
-    return metal::exp(((metal::log(r_12) - 1.14473) - (4.0 * metal::log(z_10))) - e_5);
+    return metal::exp(((metal::log(r_12) - 1.14473) - (4.0 * metal::log(z_11))) - e_5);
 }
 
 float ms_beckmann_lambda_cot(
@@ -1403,8 +1412,8 @@ float ms_beckmann_lambda(
     constant _mslBufferSizes& _buffer_sizes
 ) {
     float x_20 = alpha_16.x * w_14.x;
-    float y_8 = alpha_16.y * w_14.y;
-    float s_16 = metal::sqrt((x_20 * x_20) + (y_8 * y_8));
+    float y_12 = alpha_16.y * w_14.y;
+    float s_16 = metal::sqrt((x_20 * x_20) + (y_12 * y_12));
     if (!((s_16 > 0.0))) {
         return 0.0;
     }
@@ -1468,7 +1477,7 @@ float ms_beckmann_pdf(
 ) {
     float c_1 = {};
     bool local_11 = {};
-    float z_11 = metal::abs(w_16.z);
+    float z_12 = metal::abs(w_16.z);
     float _e5 = ms_dot(w_16, wm_7);
     c_1 = _e5;
     if (w_16.z < 0.0) {
@@ -1477,7 +1486,7 @@ float ms_beckmann_pdf(
     }
     float _e12 = c_1;
     if (_e12 > 0.0) {
-        local_11 = z_11 > 0.0;
+        local_11 = z_12 > 0.0;
     } else {
         local_11 = false;
     }
@@ -1488,7 +1497,7 @@ float ms_beckmann_pdf(
     float _e23 = ms_beckmann_g1_(w_16, alpha_20, ms_tables, _buffer_sizes);
     float _e24 = c_1;
     float _e26 = ms_beckmann_d(wm_7, alpha_20);
-    return ((_e23 * _e24) * _e26) / z_11;
+    return ((_e23 * _e24) * _e26) / z_12;
 }
 
 float ms_beckmann_pdf_dcos(
@@ -1543,9 +1552,9 @@ float ms_bk_visible_x(
     float _e5 = ms_bk_erfcx(a_14, ms_tables, _buffer_sizes);
     float erfc_a = _e5 * ea;
     float half_ea = 0.2820948 * ea;
-    float z_12 = ((0.5 * a_14) * (2.0 - erfc_a)) + half_ea;
-    float target_lo = u_9 * z_12;
-    float target_hi = (1.0 - u_9) * z_12;
+    float z_13 = ((0.5 * a_14) * (2.0 - erfc_a)) + half_ea;
+    float target_lo = u_9 * z_13;
+    float target_hi = (1.0 - u_9) * z_13;
     lo_1 = -(a_14);
     if (a_14 >= 1.0) {
         float _e26 = ms_bk_quantile(u_9, ms_tables, _buffer_sizes);
@@ -1682,14 +1691,14 @@ metal::float3 ms_beckmann_sample_wm(
     float _e14 = sign_1;
     float sy_1 = (_e14 * alpha_23.y) * w_17.y;
     float _e19 = sign_1;
-    float c_19 = _e19 * w_17.z;
+    float c_20 = _e19 * w_17.z;
     float h_4 = metal::sqrt((sx_1 * sx_1) + (sy_1 * sy_1));
     float _e27 = ms_bk_quantile(u_10.y, ms_tables, _buffer_sizes);
     if (h_4 > 0.0) {
         float inv_1 = 1.0 / h_4;
         cp = sx_1 * inv_1;
         sp = sy_1 * inv_1;
-        float _e41 = ms_bk_visible_x(c_19 * inv_1, u_10.x, ms_tables, _buffer_sizes);
+        float _e41 = ms_bk_visible_x(c_20 * inv_1, u_10.x, ms_tables, _buffer_sizes);
         x_5 = _e41;
     } else {
         float _e43 = ms_bk_quantile(u_10.x, ms_tables, _buffer_sizes);
@@ -1778,10 +1787,10 @@ float ms_double_ggx_lambda(
     bool local_14 = {};
     float a_16 = {};
     bool local_15 = {};
-    float u_31 = metal::abs(w_19.z);
+    float u_38 = metal::abs(w_19.z);
     if (alpha_25.x == alpha_25.y) {
         float a_21 = alpha_25.x;
-        x_8 = (((0.5 * a_21) * a_21) * ((1.0 - u_31) * (1.0 + u_31))) / (u_31 * u_31);
+        x_8 = (((0.5 * a_21) * a_21) * ((1.0 - u_38) * (1.0 + u_38))) / (u_38 * u_38);
     } else {
         float sx_3 = alpha_25.x * w_19.x;
         float sy_2 = alpha_25.y * w_19.y;
@@ -1812,7 +1821,7 @@ float ms_double_ggx_lambda(
         a_16 = metal::sqrt(((((alpha_25.x * alpha_25.x) * w_19.x) * w_19.x) + (((alpha_25.y * alpha_25.y) * w_19.y) * w_19.y)) / s2_1);
     }
     float _e82 = a_16;
-    float _e83 = ms_dg_lambda_ends(u_31, _e82);
+    float _e83 = ms_dg_lambda_ends(u_38, _e82);
     return _e83;
 }
 
@@ -1890,15 +1899,15 @@ float ms_double_ggx_d(
     constant _mslBufferSizes& _buffer_sizes
 ) {
     bool local_17 = {};
-    float z_13 = wm_9.z;
+    float z_14 = wm_9.z;
     float r_15 = 1.0 / (alpha_29.x * alpha_29.y);
     float x_22 = (wm_9.x * alpha_29.y) * r_15;
-    float y_9 = (wm_9.y * alpha_29.x) * r_15;
-    float q_5 = (x_22 * x_22) + (y_9 * y_9);
-    if (!((z_13 > 0.0))) {
-        return (z_13 != z_13) ? z_13 : 0.0;
+    float y_13 = (wm_9.y * alpha_29.x) * r_15;
+    float q_5 = (x_22 * x_22) + (y_13 * y_13);
+    if (!((z_14 > 0.0))) {
+        return (z_14 != z_14) ? z_14 : 0.0;
     }
-    float z2_2 = z_13 * z_13;
+    float z2_2 = z_14 * z_14;
     float t_10 = q_5 / z2_2;
     if (t_10 >= 0.0000000009313226) {
         local_17 = t_10 < 1073741800.0;
@@ -1914,7 +1923,7 @@ float ms_double_ggx_d(
     if (t_10 < 0.0000000009313226) {
         return r_15 / ((MS_PI * z2_2) * z2_2);
     }
-    return ((((metal::log(q_5) - (2.0 * metal::log(z_13))) - MS_EULER_GAMMA) - 1.0) * r_15) / ((MS_PI * q_5) * q_5);
+    return ((((metal::log(q_5) - (2.0 * metal::log(z_14))) - MS_EULER_GAMMA) - 1.0) * r_15) / ((MS_PI * q_5) * q_5);
 }
 
 float ms_double_ggx_pdf(
@@ -1926,7 +1935,7 @@ float ms_double_ggx_pdf(
 ) {
     float c_3 = {};
     bool local_18 = {};
-    float z_14 = metal::abs(w_21.z);
+    float z_15 = metal::abs(w_21.z);
     float _e5 = ms_dot(w_21, wm_10);
     c_3 = _e5;
     if (w_21.z < 0.0) {
@@ -1935,7 +1944,7 @@ float ms_double_ggx_pdf(
     }
     float _e12 = c_3;
     if (_e12 > 0.0) {
-        local_18 = z_14 > 0.0;
+        local_18 = z_15 > 0.0;
     } else {
         local_18 = false;
     }
@@ -1946,7 +1955,7 @@ float ms_double_ggx_pdf(
     float _e23 = ms_double_ggx_g1_(w_21, alpha_30, ms_tables, _buffer_sizes);
     float _e24 = c_3;
     float _e26 = ms_double_ggx_d(wm_10, alpha_30, ms_tables, _buffer_sizes);
-    return ((_e23 * _e24) * _e26) / z_14;
+    return ((_e23 * _e24) * _e26) / z_15;
 }
 
 float ms_double_ggx_pdf_dcos(
@@ -2005,12 +2014,12 @@ metal::float3 ms_double_ggx_sample_wm(
     float sx_4 = alpha_33.x * _e13;
     float _e17 = w_22.y;
     float sy_3 = alpha_33.y * _e17;
-    float c_20 = w_22.z;
+    float c_21 = w_22.z;
     float h_5 = metal::sqrt((sx_4 * sx_4) + (sy_3 * sy_3));
-    if (!((metal::abs(c_20 + h_5) <= 340282350000000000000000000000000000000.0))) {
-        return metal::float3(c_20 + h_5);
+    if (!((metal::abs(c_21 + h_5) <= 340282350000000000000000000000000000000.0))) {
+        return metal::float3(c_21 + h_5);
     }
-    float e_7 = 2.0 * c_20;
+    float e_7 = 2.0 * c_21;
     float g = MS_SQRT_PI * h_5;
     float p_exp = e_7 / (e_7 + g);
     float inv_p = metal::min((e_7 + g) / e_7, 340282350000000000000000000000000000000.0);
@@ -2047,12 +2056,12 @@ metal::float3 ms_double_ggx_sample_wm(
             float _e72 = t;
             s_5 = metal::sqrt(_e72);
             float _e75 = t;
-            len_2 = metal::sqrt(((c_20 * c_20) * _e75) + (h_5 * h_5));
+            len_2 = metal::sqrt(((c_21 * c_21) * _e75) + (h_5 * h_5));
             float _e80 = ms_stream_next(state_7);
             float _e81 = s_5;
             float _e85 = s_5;
             float _e87 = len_2;
-            if ((_e80 * ((e_7 * _e81) + h_5)) <= ((c_20 * _e85) + _e87)) {
+            if ((_e80 * ((e_7 * _e81) + h_5)) <= ((c_21 * _e85) + _e87)) {
                 break;
             }
         }
@@ -2135,10 +2144,10 @@ float ms_exponential_lambda(
     bool local_19 = {};
     float a_17 = {};
     bool local_20 = {};
-    float u_32 = metal::abs(w_24.z);
+    float u_39 = metal::abs(w_24.z);
     if (alpha_35.x == alpha_35.y) {
         float a_22 = alpha_35.x;
-        q_1 = ((4.0 * u_32) * u_32) / ((a_22 * a_22) * ((1.0 - u_32) * (1.0 + u_32)));
+        q_1 = ((4.0 * u_39) * u_39) / ((a_22 * a_22) * ((1.0 - u_39) * (1.0 + u_39)));
     } else {
         float sx_5 = alpha_35.x * w_24.x;
         float sy_4 = alpha_35.y * w_24.y;
@@ -2169,7 +2178,7 @@ float ms_exponential_lambda(
         a_17 = metal::sqrt(((((alpha_35.x * alpha_35.x) * w_24.x) * w_24.x) + (((alpha_35.y * alpha_35.y) * w_24.y) * w_24.y)) / s2_4);
     }
     float _e83 = a_17;
-    float _e92 = ms_exp_lambda_z((u_32 + u_32) / (_e83 * metal::sqrt((1.0 - u_32) * (1.0 + u_32))), ms_tables, _buffer_sizes);
+    float _e92 = ms_exp_lambda_z((u_39 + u_39) / (_e83 * metal::sqrt((1.0 - u_39) * (1.0 + u_39))), ms_tables, _buffer_sizes);
     return _e92;
 }
 
@@ -2225,25 +2234,25 @@ float ms_exponential_d(
     metal::float2 alpha_39
 ) {
     bool local_22 = {};
-    float z_15 = wm_12.z;
+    float z_16 = wm_12.z;
     float r_17 = 1.0 / (alpha_39.x * alpha_39.y);
     float x_23 = (wm_12.x * alpha_39.y) * r_17;
-    float y_10 = (wm_12.y * alpha_39.x) * r_17;
-    float z2_3 = z_15 * z_15;
-    if (z_15 > 0.0) {
+    float y_14 = (wm_12.y * alpha_39.x) * r_17;
+    float z2_3 = z_16 * z_16;
+    if (z_16 > 0.0) {
         local_22 = z2_3 > 0.0;
     } else {
         local_22 = false;
     }
     bool _e24 = local_22;
     if (!(_e24)) {
-        return (z_15 != z_15) ? z_15 : 0.0;
+        return (z_16 != z_16) ? z_16 : 0.0;
     }
-    float e_8 = (2.0 * metal::sqrt((x_23 * x_23) + (y_10 * y_10))) / z_15;
+    float e_8 = (2.0 * metal::sqrt((x_23 * x_23) + (y_14 * y_14))) / z_16;
     if (e_8 <= 80.0) {
         return ((2.0 * metal::exp(-(e_8))) * r_17) / ((MS_PI * z2_3) * z2_3);
     }
-    return metal::exp(((metal::log(2.0 * r_17) - 1.14473) - (4.0 * metal::log(z_15))) - e_8);
+    return metal::exp(((metal::log(2.0 * r_17) - 1.14473) - (4.0 * metal::log(z_16))) - e_8);
 }
 
 float ms_exponential_pdf(
@@ -2255,7 +2264,7 @@ float ms_exponential_pdf(
 ) {
     float c_4 = {};
     bool local_23 = {};
-    float z_16 = metal::abs(w_26.z);
+    float z_17 = metal::abs(w_26.z);
     float _e5 = ms_dot(w_26, wm_13);
     c_4 = _e5;
     if (w_26.z < 0.0) {
@@ -2264,7 +2273,7 @@ float ms_exponential_pdf(
     }
     float _e12 = c_4;
     if (_e12 > 0.0) {
-        local_23 = z_16 > 0.0;
+        local_23 = z_17 > 0.0;
     } else {
         local_23 = false;
     }
@@ -2275,7 +2284,7 @@ float ms_exponential_pdf(
     float _e23 = ms_exponential_g1_(w_26, alpha_40, ms_tables, _buffer_sizes);
     float _e24 = c_4;
     float _e26 = ms_exponential_d(wm_13, alpha_40);
-    return ((_e23 * _e24) * _e26) / z_16;
+    return ((_e23 * _e24) * _e26) / z_17;
 }
 
 float ms_exponential_pdf_dcos(
@@ -2385,8 +2394,8 @@ metal::float3 ms_exponential_sample_wm(
             float _e73 = ms_stream_next(state_9);
             float prod = (1.0 - _e70) * (1.0 - _e73);
             float _e77 = v0_;
-            float d_19 = (_e77 * total) - e_9;
-            if (d_19 < 0.0) {
+            float d_20 = (_e77 * total) - e_9;
+            if (d_20 < 0.0) {
                 float r_19 = -0.5 * metal::log(prod);
                 float _e85 = v0_;
                 float turn = _e85 * inv_p_1;
@@ -2407,7 +2416,7 @@ metal::float3 ms_exponential_sample_wm(
             } else {
                 float _e108 = ms_stream_next(state_9);
                 float r_20 = -0.5 * metal::log(prod * (1.0 - _e108));
-                float one_plus = 2.0 * (d_19 * inv_g);
+                float one_plus = 2.0 * (d_20 * inv_g);
                 float _e118 = v0_;
                 float one_minus = (2.0 * (1.0 - _e118)) * (total * inv_g);
                 x_9 = r_20 * metal::sqrt(metal::max(one_minus * one_plus, 0.0));
@@ -2496,21 +2505,21 @@ float ms_shape_lambda(
     float sx_7 = alpha_45.x * w_29.x;
     float sy_6 = alpha_45.y * w_29.y;
     float h_7 = metal::sqrt((sx_7 * sx_7) + (sy_6 * sy_6));
-    float z_17 = metal::abs(w_29.z);
+    float z_18 = metal::abs(w_29.z);
     if (!((h_7 > 0.0))) {
         if (h_7 == 0.0) {
-            local_26 = z_17 > 0.0;
+            local_26 = z_18 > 0.0;
         } else {
             local_26 = false;
         }
         bool _e25 = local_26;
         return _e25 ? 0.0 : h_7;
     }
-    if (z_17 == 0.0) {
+    if (z_18 == 0.0) {
         float _e30 = ms_inf();
         return _e30;
     }
-    float _e32 = ms_shape_lambda_z(table_1, z_17 / h_7, ms_tables, _buffer_sizes);
+    float _e32 = ms_shape_lambda_z(table_1, z_18 / h_7, ms_tables, _buffer_sizes);
     return _e32;
 }
 
@@ -2555,8 +2564,8 @@ float ms_ln_gamma_variate(
         k_5 = _e12 + 1.0;
     }
     float _e15 = k_5;
-    float d_20 = _e15 - 0.33333334;
-    float c_21 = 1.0 / metal::sqrt(9.0 * d_20);
+    float d_21 = _e15 - 0.33333334;
+    float c_22 = 1.0 / metal::sqrt(9.0 * d_21);
     uint2 loop_bound_5 = uint2(4294967295u);
     bool loop_init_5 = true;
     while(true) {
@@ -2575,7 +2584,7 @@ float ms_ln_gamma_variate(
         {
             float _e28 = ms_stream_next(state_12);
             float _e29 = ms_zig_normal(_e28, state_12, ms_tables, _buffer_sizes);
-            v_6 = 1.0 + (c_21 * _e29);
+            v_6 = 1.0 + (c_22 * _e29);
             float _e34 = v_6;
             if (_e34 <= 0.0) {
                 continue;
@@ -2587,10 +2596,10 @@ float ms_ln_gamma_variate(
             float _e42 = ms_stream_next_positive(state_12);
             float _e48 = v_6;
             float _e51 = v_6;
-            if (metal::log(_e42) < (((((0.5 * _e29) * _e29) + d_20) - (d_20 * _e48)) + (d_20 * metal::log(_e51)))) {
+            if (metal::log(_e42) < (((((0.5 * _e29) * _e29) + d_21) - (d_21 * _e48)) + (d_21 * metal::log(_e51)))) {
                 float _e57 = v_6;
                 float _e60 = boost;
-                return (metal::log(d_20) + metal::log(_e57)) + _e60;
+                return (metal::log(d_21) + metal::log(_e57)) + _e60;
             }
         }
     }
@@ -2646,11 +2655,11 @@ metal::float3 ms_beckmann_sample_stream_above(
                     break;
                 }
                 float _e52 = ms_zig_normal((_e42 - p_ray) / (1.0 - p_ray), state_13, ms_tables, _buffer_sizes);
-                float c_22 = _e52 * 0.70710677;
-                if (!((c_22 >= 0.0))) {
-                    if (c_22 > -(a_23)) {
+                float c_23 = _e52 * 0.70710677;
+                if (!((c_23 >= 0.0))) {
+                    if (c_23 > -(a_23)) {
                         float _e64 = ms_stream_next(state_13);
-                        local_28 = (_e64 * a_23) < (c_22 + a_23);
+                        local_28 = (_e64 * a_23) < (c_23 + a_23);
                     } else {
                         local_28 = false;
                     }
@@ -2661,7 +2670,7 @@ metal::float3 ms_beckmann_sample_stream_above(
                 }
                 bool _e71 = local_27;
                 if (_e71) {
-                    x_10 = c_22;
+                    x_10 = c_23;
                     break;
                 }
             }
@@ -2669,32 +2678,56 @@ metal::float3 ms_beckmann_sample_stream_above(
     }
     float _e75 = ms_stream_next(state_13);
     float _e76 = ms_zig_normal(_e75, state_13, ms_tables, _buffer_sizes);
-    float y_11 = _e76 * 0.70710677;
+    float y_15 = _e76 * 0.70710677;
     float _e80 = cp_2;
     float _e81 = x_10;
     float _e83 = sp_2;
-    float p_6 = alpha_46.x * ((_e80 * _e81) - (_e83 * y_11));
+    float p_6 = alpha_46.x * ((_e80 * _e81) - (_e83 * y_15));
     float _e88 = sp_2;
     float _e89 = x_10;
     float _e91 = cp_2;
-    float q_8 = alpha_46.y * ((_e88 * _e89) + (_e91 * y_11));
+    float q_8 = alpha_46.y * ((_e88 * _e89) + (_e91 * y_15));
     metal::float3 _e97 = ms_unit_normal(metal::float3(p_6, q_8, 1.0));
     metal::float3 _e98 = ms_facing(_e97, v_7);
     return _e98;
 }
 
-float ms_posterior_ln_beta(
+float ms_mixing_ln_beta(
     uint mixing,
     float k_6,
-    float mean_beta,
-    float z_3,
-    float h_1,
+    bool biased,
     thread metal::uint2& state_14,
     device type_7 const& ms_tables,
     constant _mslBufferSizes& _buffer_sizes
 ) {
+    float bias = biased ? 1.0 : 0.0;
+    if (mixing == 0u) {
+        float _e13 = ms_ln_gamma_variate(k_6 - (0.5 * bias), state_14, ms_tables, _buffer_sizes);
+        return 0.5 * (metal::log(k_6) - _e13);
+    }
+    if (mixing == 1u) {
+        float _e22 = ms_ln_gamma_variate(k_6 + (0.5 * bias), state_14, ms_tables, _buffer_sizes);
+        return 0.5 * _e22;
+    }
+    if (mixing == 2u) {
+        float _e27 = ms_stream_next_positive(state_14);
+        return (0.5 * metal::log(_e27)) / (1.0 + (0.5 * bias));
+    }
+    float _e36 = ms_stream_next_positive(state_14);
+    return metal::log(_e36) / (1.0 + bias);
+}
+
+float ms_posterior_ln_beta(
+    uint mixing_1,
+    float k_7,
+    float mean_beta,
+    float z_3,
+    float h_1,
+    thread metal::uint2& state_15,
+    device type_7 const& ms_tables,
+    constant _mslBufferSizes& _buffer_sizes
+) {
     int n_7 = 0;
-    float ln_beta = {};
     float keep = {};
     bool local_29 = {};
     float p_prior = z_3 / (z_3 + ((0.2820948 * h_1) * mean_beta));
@@ -2704,8 +2737,8 @@ float ms_posterior_ln_beta(
         if (metal::all(loop_bound_7 == uint2(0u))) { break; }
         loop_bound_7 -= uint2(loop_bound_7.y == 0u, 1u);
         if (!loop_init_7) {
-            int _e87 = n_7;
-            n_7 = as_type<int>(as_type<uint>(_e87) + as_type<uint>(1));
+            int _e47 = n_7;
+            n_7 = as_type<int>(as_type<uint>(_e47) + as_type<uint>(1));
         }
         loop_init_7 = false;
         int _e13 = n_7;
@@ -2714,108 +2747,247 @@ float ms_posterior_ln_beta(
             break;
         }
         {
-            float _e16 = ms_stream_next(state_14);
-            bool biased = _e16 >= p_prior;
-            float bias = biased ? 1.0 : 0.0;
-            ln_beta = float {};
-            if (mixing == 0u) {
-                float _e29 = ms_ln_gamma_variate(k_6 - (0.5 * bias), state_14, ms_tables, _buffer_sizes);
-                ln_beta = 0.5 * (metal::log(k_6) - _e29);
-            } else {
-                if (mixing == 1u) {
-                    float _e38 = ms_ln_gamma_variate(k_6 + (0.5 * bias), state_14, ms_tables, _buffer_sizes);
-                    ln_beta = 0.5 * _e38;
-                } else {
-                    if (mixing == 2u) {
-                        float _e43 = ms_stream_next_positive(state_14);
-                        ln_beta = (0.5 * metal::log(_e43)) / (1.0 + (0.5 * bias));
-                    } else {
-                        float _e52 = ms_stream_next_positive(state_14);
-                        ln_beta = metal::log(_e52) / (1.0 + bias);
-                    }
-                }
-            }
-            float _e57 = ln_beta;
-            float hb = h_1 * metal::exp(_e57);
+            float _e16 = ms_stream_next(state_15);
+            bool biased_1 = _e16 >= p_prior;
+            float _e18 = ms_mixing_ln_beta(mixing_1, k_7, biased_1, state_15, ms_tables, _buffer_sizes);
+            float hb = h_1 * metal::exp(_e18);
             keep = 1.0;
             if (hb > 0.0) {
                 local_29 = hb <= 340282350000000000000000000000000000000.0;
             } else {
                 local_29 = false;
             }
-            bool _e69 = local_29;
-            if (_e69) {
+            bool _e30 = local_29;
+            if (_e30) {
                 float a_24 = z_3 / hb;
-                float _e76 = ms_bk_erfc_ratio(a_24, ms_tables, _buffer_sizes);
-                keep = (z_3 + (((0.2820948 * hb) * metal::exp(-(a_24) * a_24)) * _e76)) / (z_3 + (0.2820948 * hb));
+                float _e37 = ms_bk_erfc_ratio(a_24, ms_tables, _buffer_sizes);
+                keep = (z_3 + (((0.2820948 * hb) * metal::exp(-(a_24) * a_24)) * _e37)) / (z_3 + (0.2820948 * hb));
             }
-            float _e82 = ms_stream_next(state_14);
-            float _e83 = keep;
-            if (_e82 < _e83) {
-                float _e85 = ln_beta;
-                return _e85;
+            float _e43 = ms_stream_next(state_15);
+            float _e44 = keep;
+            if (_e43 < _e44) {
+                return _e18;
             }
         }
     }
     return as_type<float>(2143289344u);
 }
 
+float ms_mixture_beta(
+    float ln_beta,
+    metal::float2 alpha_47
+) {
+    float lo_6 = metal::log(metal::min(alpha_47.x, alpha_47.y));
+    float hi_5 = metal::log(metal::max(alpha_47.x, alpha_47.y));
+    return metal::exp(metal::clamp(ln_beta, -80.0 - lo_6, 80.0 - hi_5));
+}
+
 metal::float3 ms_mixture_sample_wm(
-    uint mixing_1,
     uint table_2,
     metal::float3 w_in_5,
-    metal::float2 alpha_47,
+    metal::float2 alpha_48,
     metal::float2 u_19,
     device type_7 const& ms_tables,
     constant _mslBufferSizes& _buffer_sizes
 ) {
     metal::float3 w_31 = {};
-    metal::uint2 state_15 = {};
+    metal::uint2 state_16 = {};
     float ln_beta_1 = {};
-    metal::float3 _e5 = ms_unit(w_in_5);
-    w_31 = _e5;
-    float _e8 = w_31.z;
-    if (_e8 < 0.0) {
-        metal::float3 _e11 = w_31;
-        w_31 = -(_e11);
+    metal::float3 _e4 = ms_unit(w_in_5);
+    w_31 = _e4;
+    float _e7 = w_31.z;
+    if (_e7 < 0.0) {
+        metal::float3 _e10 = w_31;
+        w_31 = -(_e10);
     }
     metal::float4 params = ms_tables[table_2 + 2u];
-    float _e20 = w_31.x;
-    float sx_9 = alpha_47.x * _e20;
-    float _e24 = w_31.y;
-    float sy_8 = alpha_47.y * _e24;
+    float _e19 = w_31.x;
+    float sx_9 = alpha_48.x * _e19;
+    float _e23 = w_31.y;
+    float sy_8 = alpha_48.y * _e23;
     float h_9 = metal::sqrt((sx_9 * sx_9) + (sy_8 * sy_8));
-    metal::uint2 _e30 = ms_stream_new(u_19);
-    state_15 = _e30;
-    float _e35 = w_31.z;
-    float _e36 = ms_posterior_ln_beta(mixing_1, params.y, params.x, _e35, h_9, state_15, ms_tables, _buffer_sizes);
-    ln_beta_1 = _e36;
-    float _e38 = ln_beta_1;
+    metal::uint2 _e29 = ms_stream_new(u_19);
+    state_16 = _e29;
+    float _e36 = w_31.z;
+    float _e37 = ms_posterior_ln_beta(naga_f2u32(params.z), params.y, params.x, _e36, h_9, state_16, ms_tables, _buffer_sizes);
+    ln_beta_1 = _e37;
     float _e39 = ln_beta_1;
-    if (_e38 != _e39) {
+    float _e40 = ln_beta_1;
+    if (_e39 != _e40) {
         ln_beta_1 = metal::log(params.x);
     }
-    float lo_6 = metal::log(metal::min(alpha_47.x, alpha_47.y));
-    float hi_5 = metal::log(metal::max(alpha_47.x, alpha_47.y));
-    float _e51 = ln_beta_1;
-    float beta = metal::exp(metal::clamp(_e51, -80.0 - lo_6, 80.0 - hi_5));
-    float _e59 = w_31.z;
-    if (!((_e59 > 0.0))) {
-        metal::float3 _e63 = w_31;
-        metal::float3 _e65 = ms_beckmann_sample_wm(_e63, beta * alpha_47, u_19, ms_tables, _buffer_sizes);
-        return _e65;
+    float _e44 = ln_beta_1;
+    float _e45 = ms_mixture_beta(_e44, alpha_48);
+    float _e47 = w_31.z;
+    if (!((_e47 > 0.0))) {
+        metal::float3 _e51 = w_31;
+        metal::float3 _e53 = ms_beckmann_sample_wm(_e51, _e45 * alpha_48, u_19, ms_tables, _buffer_sizes);
+        return _e53;
     }
-    metal::float3 _e66 = w_31;
-    metal::float3 _e68 = ms_beckmann_sample_stream_above(_e66, beta * alpha_47, state_15, ms_tables, _buffer_sizes);
-    return _e68;
+    metal::float3 _e54 = w_31;
+    metal::float3 _e56 = ms_beckmann_sample_stream_above(_e54, _e45 * alpha_48, state_16, ms_tables, _buffer_sizes);
+    return _e56;
 }
 
-float ms_student_t_gamma(
+float ms_mixture_g1_(
     uint table_3,
+    metal::float3 w_32,
+    metal::float2 alpha_49,
     device type_7 const& ms_tables,
     constant _mslBufferSizes& _buffer_sizes
 ) {
-    float _e4 = ms_tables[table_3].x;
+    float _e3 = ms_shape_lambda(table_3, w_32, alpha_49, ms_tables, _buffer_sizes);
+    return 1.0 / (1.0 + _e3);
+}
+
+float ms_mixture_g2_(
+    uint table_4,
+    metal::float3 wo_15,
+    metal::float3 wi_15,
+    metal::float2 alpha_50,
+    device type_7 const& ms_tables,
+    constant _mslBufferSizes& _buffer_sizes
+) {
+    float _e4 = ms_shape_lambda(table_4, wo_15, alpha_50, ms_tables, _buffer_sizes);
+    float _e5 = ms_shape_lambda(table_4, wi_15, alpha_50, ms_tables, _buffer_sizes);
+    return 1.0 / (1.0 + (_e4 + _e5));
+}
+
+float ms_mixture_g2_separable(
+    uint table_5,
+    metal::float3 wo_16,
+    metal::float3 wi_16,
+    metal::float2 alpha_51,
+    device type_7 const& ms_tables,
+    constant _mslBufferSizes& _buffer_sizes
+) {
+    float _e4 = ms_mixture_g1_(table_5, wo_16, alpha_51, ms_tables, _buffer_sizes);
+    float _e5 = ms_mixture_g1_(table_5, wi_16, alpha_51, ms_tables, _buffer_sizes);
+    return _e4 * _e5;
+}
+
+float ms_mixture_pdf(
+    uint table_6,
+    metal::float3 w_33,
+    metal::float3 wm_15,
+    metal::float2 alpha_52,
+    float d_1,
+    device type_7 const& ms_tables,
+    constant _mslBufferSizes& _buffer_sizes
+) {
+    float c_5 = {};
+    bool local_30 = {};
+    float z_19 = metal::abs(w_33.z);
+    float _e7 = ms_dot(w_33, wm_15);
+    c_5 = _e7;
+    if (w_33.z < 0.0) {
+        float _e12 = c_5;
+        c_5 = -(_e12);
+    }
+    float _e14 = c_5;
+    if (_e14 > 0.0) {
+        local_30 = z_19 > 0.0;
+    } else {
+        local_30 = false;
+    }
+    bool _e22 = local_30;
+    if (!(_e22)) {
+        return 0.0;
+    }
+    float _e25 = ms_mixture_g1_(table_6, w_33, alpha_52, ms_tables, _buffer_sizes);
+    float _e26 = c_5;
+    return ((_e25 * _e26) * d_1) / z_19;
+}
+
+metal::float3 ms_mixture_sample_dcos_wm(
+    uint table_7,
+    metal::float2 alpha_53,
+    metal::float2 u_20,
+    device type_7 const& ms_tables,
+    constant _mslBufferSizes& _buffer_sizes
+) {
+    metal::uint2 state_17 = {};
+    float ln_beta_2 = {};
+    metal::float4 params_1 = ms_tables[table_7 + 2u];
+    metal::uint2 _e8 = ms_stream_new(u_20);
+    state_17 = _e8;
+    float _e14 = ms_mixing_ln_beta(naga_f2u32(params_1.z), params_1.y, false, state_17, ms_tables, _buffer_sizes);
+    ln_beta_2 = _e14;
+    float _e16 = ln_beta_2;
+    float _e17 = ln_beta_2;
+    if (_e16 != _e17) {
+        ln_beta_2 = metal::log(params_1.x);
+    }
+    float _e21 = ln_beta_2;
+    float _e22 = ms_mixture_beta(_e21, alpha_53);
+    MsSample _e24 = ms_beckmann_sample_dcos(_e22 * alpha_53, u_20);
+    return _e24.wm;
+}
+
+float ms_mixture_d_from_ln_profile(
+    float ln_f,
+    metal::float3 wm_16,
+    metal::float2 alpha_54
+) {
+    float ln_z = metal::log(wm_16.z);
+    return metal::exp((ln_f - metal::log(alpha_54.x * alpha_54.y)) - (4.0 * ln_z));
+}
+
+float ms_mixture_r2_(
+    metal::float3 wm_17,
+    metal::float2 alpha_55
+) {
+    float x_24 = wm_17.x / alpha_55.x;
+    float y_16 = wm_17.y / alpha_55.y;
+    return ((x_24 * x_24) + (y_16 * y_16)) / (wm_17.z * wm_17.z);
+}
+
+float ms_k0e(
+    float z_4,
+    device type_7 const& ms_tables,
+    constant _mslBufferSizes& _buffer_sizes
+) {
+    if (z_4 < 0.000061035156) {
+        return (1.0 + z_4) * (-(metal::log(0.5 * z_4)) - MS_EULER_GAMMA);
+    }
+    if (z_4 >= 512.0) {
+        float r_21 = 1.0 / z_4;
+        return metal::sqrt(1.5707964 * r_21) * (1.0 - (r_21 * (0.125 - (r_21 * 0.0703125))));
+    }
+    metal::float2 _e29 = ms_bk_segment(z_4, MS_SF_K0E_K0_, MS_SF_K0E_K1_);
+    uint i_10 = MS_SF_K0E_AT + (2u * naga_f2u32(_e29.x));
+    metal::float4 _e38 = ms_tables[i_10];
+    metal::float4 _e43 = ms_tables[i_10 + 1u];
+    float _e45 = ms_bk_poly(_e38, _e43, _e29.y);
+    return _e45;
+}
+
+float ms_e1x(
+    float y_3,
+    device type_7 const& ms_tables,
+    constant _mslBufferSizes& _buffer_sizes
+) {
+    if (y_3 < 0.000000059604645) {
+        return -0.5772157 - metal::log(y_3);
+    }
+    if (y_3 >= 512.0) {
+        float r_22 = 1.0 / y_3;
+        return r_22 * (1.0 - (r_22 * (1.0 - (r_22 * (2.0 - (r_22 * 6.0))))));
+    }
+    metal::float2 _e23 = ms_bk_segment(y_3, MS_SF_E1X_K0_, MS_SF_E1X_K1_);
+    uint i_11 = MS_SF_E1X_AT + (2u * naga_f2u32(_e23.x));
+    metal::float4 _e32 = ms_tables[i_11];
+    metal::float4 _e37 = ms_tables[i_11 + 1u];
+    float _e39 = ms_bk_poly(_e32, _e37, _e23.y);
+    return _e39;
+}
+
+float ms_student_t_gamma(
+    uint table_8,
+    device type_7 const& ms_tables,
+    constant _mslBufferSizes& _buffer_sizes
+) {
+    float _e4 = ms_tables[table_8].x;
     return _e4;
 }
 
@@ -2839,397 +3011,861 @@ float ms_expm1_(
 }
 
 float ms_student_t_d(
-    metal::float3 wm_15,
-    metal::float2 alpha_48,
-    uint table_4,
+    metal::float3 wm_18,
+    metal::float2 alpha_56,
+    uint table_9,
     device type_7 const& ms_tables,
     constant _mslBufferSizes& _buffer_sizes
 ) {
-    float z_18 = wm_15.z;
-    if (!((z_18 > 0.0))) {
-        return (z_18 != z_18) ? z_18 : 0.0;
+    float z_20 = wm_18.z;
+    if (!((z_20 > 0.0))) {
+        return (z_20 != z_20) ? z_20 : 0.0;
     }
-    float _e10 = ms_student_t_gamma(table_4, ms_tables, _buffer_sizes);
-    float x_24 = wm_15.x / alpha_48.x;
-    float y_12 = wm_15.y / alpha_48.y;
-    float q_9 = (x_24 * x_24) + (y_12 * y_12);
-    float z2_4 = z_18 * z_18;
-    if (z_18 > 0.000000001) {
+    float _e10 = ms_student_t_gamma(table_9, ms_tables, _buffer_sizes);
+    float x_25 = wm_18.x / alpha_56.x;
+    float y_17 = wm_18.y / alpha_56.y;
+    float q_9 = (x_25 * x_25) + (y_17 * y_17);
+    float z2_4 = z_20 * z_20;
+    if (z_20 > 0.000000001) {
         float t_12 = q_9 / (z2_4 * (_e10 - 1.0));
         float _e27 = ms_ln_1p(t_12);
         float e_10 = _e10 * _e27;
-        float norm = (((MS_PI * alpha_48.x) * alpha_48.y) * z2_4) * z2_4;
+        float norm = (((MS_PI * alpha_56.x) * alpha_56.y) * z2_4) * z2_4;
         if (e_10 < 80.0) {
             return metal::exp(-(e_10)) / norm;
         }
         return metal::exp(-(e_10) - metal::log(norm));
     }
-    float ln_z = metal::log(z_18);
-    float ln_d = ((-(_e10) * ((metal::log(q_9) - (2.0 * ln_z)) - metal::log(_e10 - 1.0))) - (4.0 * ln_z)) - metal::log((MS_PI * alpha_48.x) * alpha_48.y);
+    float ln_z_1 = metal::log(z_20);
+    float ln_d = ((-(_e10) * ((metal::log(q_9) - (2.0 * ln_z_1)) - metal::log(_e10 - 1.0))) - (4.0 * ln_z_1)) - metal::log((MS_PI * alpha_56.x) * alpha_56.y);
     return metal::exp(ln_d);
 }
 
 float ms_student_t_lambda(
-    metal::float3 w_32,
-    metal::float2 alpha_49,
-    uint table_5,
-    device type_7 const& ms_tables,
-    constant _mslBufferSizes& _buffer_sizes
-) {
-    float _e3 = ms_shape_lambda(table_5, w_32, alpha_49, ms_tables, _buffer_sizes);
-    return _e3;
-}
-
-float ms_student_t_g1_(
-    metal::float3 w_33,
-    metal::float2 alpha_50,
-    uint table_6,
-    device type_7 const& ms_tables,
-    constant _mslBufferSizes& _buffer_sizes
-) {
-    float _e3 = ms_student_t_lambda(w_33, alpha_50, table_6, ms_tables, _buffer_sizes);
-    return 1.0 / (1.0 + _e3);
-}
-
-float ms_student_t_g2_(
-    metal::float3 wo_15,
-    metal::float3 wi_15,
-    metal::float2 alpha_51,
-    uint table_7,
-    device type_7 const& ms_tables,
-    constant _mslBufferSizes& _buffer_sizes
-) {
-    float _e4 = ms_student_t_lambda(wo_15, alpha_51, table_7, ms_tables, _buffer_sizes);
-    float _e5 = ms_student_t_lambda(wi_15, alpha_51, table_7, ms_tables, _buffer_sizes);
-    return 1.0 / (1.0 + (_e4 + _e5));
-}
-
-float ms_student_t_g2_separable(
-    metal::float3 wo_16,
-    metal::float3 wi_16,
-    metal::float2 alpha_52,
-    uint table_8,
-    device type_7 const& ms_tables,
-    constant _mslBufferSizes& _buffer_sizes
-) {
-    float _e4 = ms_student_t_g1_(wo_16, alpha_52, table_8, ms_tables, _buffer_sizes);
-    float _e5 = ms_student_t_g1_(wi_16, alpha_52, table_8, ms_tables, _buffer_sizes);
-    return _e4 * _e5;
-}
-
-float ms_student_t_pdf(
     metal::float3 w_34,
-    metal::float3 wm_16,
-    metal::float2 alpha_53,
-    uint table_9,
-    device type_7 const& ms_tables,
-    constant _mslBufferSizes& _buffer_sizes
-) {
-    float c_5 = {};
-    bool local_30 = {};
-    float z_19 = metal::abs(w_34.z);
-    float _e6 = ms_dot(w_34, wm_16);
-    c_5 = _e6;
-    if (w_34.z < 0.0) {
-        float _e11 = c_5;
-        c_5 = -(_e11);
-    }
-    float _e13 = c_5;
-    if (_e13 > 0.0) {
-        local_30 = z_19 > 0.0;
-    } else {
-        local_30 = false;
-    }
-    bool _e21 = local_30;
-    if (!(_e21)) {
-        return 0.0;
-    }
-    float _e24 = ms_student_t_g1_(w_34, alpha_53, table_9, ms_tables, _buffer_sizes);
-    float _e25 = c_5;
-    float _e27 = ms_student_t_d(wm_16, alpha_53, table_9, ms_tables, _buffer_sizes);
-    return ((_e24 * _e25) * _e27) / z_19;
-}
-
-float ms_student_t_pdf_dcos(
-    metal::float3 wm_17,
-    metal::float2 alpha_54,
+    metal::float2 alpha_57,
     uint table_10,
     device type_7 const& ms_tables,
     constant _mslBufferSizes& _buffer_sizes
 ) {
-    if (!((wm_17.z > 0.0))) {
-        return 0.0;
-    }
-    float _e8 = ms_student_t_d(wm_17, alpha_54, table_10, ms_tables, _buffer_sizes);
-    return _e8 * wm_17.z;
+    float _e3 = ms_shape_lambda(table_10, w_34, alpha_57, ms_tables, _buffer_sizes);
+    return _e3;
 }
 
-MsSample ms_student_t_sample_dcos(
-    metal::float2 alpha_55,
-    metal::float2 u_20,
+float ms_student_t_g1_(
+    metal::float3 w_35,
+    metal::float2 alpha_58,
     uint table_11,
     device type_7 const& ms_tables,
     constant _mslBufferSizes& _buffer_sizes
 ) {
-    metal::float3 v_8 = {};
-    float _e3 = ms_student_t_gamma(table_11, ms_tables, _buffer_sizes);
-    float g1_1 = _e3 - 1.0;
-    float _e7 = ms_bk_ln_1m(u_20.x);
-    float _e10 = ms_expm1_(-(_e7) / g1_1);
-    float r_21 = metal::sqrt(g1_1 * _e10);
-    metal::float2 _e14 = ms_cos_sin_turn(u_20.y);
-    if (r_21 > 1.0) {
-        v_8 = metal::float3(alpha_55.x * _e14.x, alpha_55.y * _e14.y, 1.0 / r_21);
-    } else {
-        v_8 = metal::float3((alpha_55.x * r_21) * _e14.x, (alpha_55.y * r_21) * _e14.y, 1.0);
-    }
-    metal::float3 _e37 = v_8;
-    metal::float3 _e38 = ms_unit_normal(_e37);
-    float _e39 = ms_student_t_pdf_dcos(_e38, alpha_55, table_11, ms_tables, _buffer_sizes);
-    return MsSample {_e38, _e39};
+    float _e3 = ms_student_t_lambda(w_35, alpha_58, table_11, ms_tables, _buffer_sizes);
+    return 1.0 / (1.0 + _e3);
 }
 
-MsSample ms_student_t_sample(
-    metal::float3 w_35,
-    metal::float2 alpha_56,
-    metal::float2 u_21,
+float ms_student_t_g2_(
+    metal::float3 wo_17,
+    metal::float3 wi_17,
+    metal::float2 alpha_59,
     uint table_12,
     device type_7 const& ms_tables,
     constant _mslBufferSizes& _buffer_sizes
 ) {
-    metal::float3 _e5 = ms_mixture_sample_wm(0u, table_12, w_35, alpha_56, u_21, ms_tables, _buffer_sizes);
-    metal::float3 _e6 = ms_unit(w_35);
-    float _e7 = ms_student_t_pdf(_e6, _e5, alpha_56, table_12, ms_tables, _buffer_sizes);
-    return MsSample {_e5, _e7};
+    float _e4 = ms_student_t_lambda(wo_17, alpha_59, table_12, ms_tables, _buffer_sizes);
+    float _e5 = ms_student_t_lambda(wi_17, alpha_59, table_12, ms_tables, _buffer_sizes);
+    return 1.0 / (1.0 + (_e4 + _e5));
 }
 
-float ms_d(
-    MsMicrofacet mf,
-    metal::float3 wm_18,
-    device type_7 const& ms_tables,
-    constant _mslBufferSizes& _buffer_sizes
-) {
-    if (mf.ndf == MS_NDF_GGX) {
-        float _e6 = ms_ggx_d(wm_18, mf.alpha);
-        return _e6;
-    }
-    if (mf.ndf == MS_NDF_BECKMANN) {
-        float _e11 = ms_beckmann_d(wm_18, mf.alpha);
-        return _e11;
-    }
-    if (mf.ndf == MS_NDF_DOUBLE_GGX) {
-        float _e16 = ms_double_ggx_d(wm_18, mf.alpha, ms_tables, _buffer_sizes);
-        return _e16;
-    }
-    if (mf.ndf == MS_NDF_EXPONENTIAL) {
-        float _e21 = ms_exponential_d(wm_18, mf.alpha);
-        return _e21;
-    }
-    if (mf.ndf == MS_NDF_STUDENT_T) {
-        float _e27 = ms_student_t_d(wm_18, mf.alpha, mf.table, ms_tables, _buffer_sizes);
-        return _e27;
-    }
-    return 0.0;
-}
-
-float ms_lambda(
-    MsMicrofacet mf_1,
-    metal::float3 w_36,
-    device type_7 const& ms_tables,
-    constant _mslBufferSizes& _buffer_sizes
-) {
-    if (mf_1.ndf == MS_NDF_GGX) {
-        float _e6 = ms_ggx_lambda(w_36, mf_1.alpha);
-        return _e6;
-    }
-    if (mf_1.ndf == MS_NDF_BECKMANN) {
-        float _e11 = ms_beckmann_lambda(w_36, mf_1.alpha, ms_tables, _buffer_sizes);
-        return _e11;
-    }
-    if (mf_1.ndf == MS_NDF_DOUBLE_GGX) {
-        float _e16 = ms_double_ggx_lambda(w_36, mf_1.alpha, ms_tables, _buffer_sizes);
-        return _e16;
-    }
-    if (mf_1.ndf == MS_NDF_EXPONENTIAL) {
-        float _e21 = ms_exponential_lambda(w_36, mf_1.alpha, ms_tables, _buffer_sizes);
-        return _e21;
-    }
-    if (mf_1.ndf == MS_NDF_STUDENT_T) {
-        float _e27 = ms_student_t_lambda(w_36, mf_1.alpha, mf_1.table, ms_tables, _buffer_sizes);
-        return _e27;
-    }
-    return 0.0;
-}
-
-float ms_g1_(
-    MsMicrofacet mf_2,
-    metal::float3 w_37,
-    device type_7 const& ms_tables,
-    constant _mslBufferSizes& _buffer_sizes
-) {
-    if (mf_2.ndf == MS_NDF_GGX) {
-        float _e6 = ms_ggx_g1_(w_37, mf_2.alpha);
-        return _e6;
-    }
-    if (mf_2.ndf == MS_NDF_BECKMANN) {
-        float _e11 = ms_beckmann_g1_(w_37, mf_2.alpha, ms_tables, _buffer_sizes);
-        return _e11;
-    }
-    if (mf_2.ndf == MS_NDF_DOUBLE_GGX) {
-        float _e16 = ms_double_ggx_g1_(w_37, mf_2.alpha, ms_tables, _buffer_sizes);
-        return _e16;
-    }
-    if (mf_2.ndf == MS_NDF_EXPONENTIAL) {
-        float _e21 = ms_exponential_g1_(w_37, mf_2.alpha, ms_tables, _buffer_sizes);
-        return _e21;
-    }
-    if (mf_2.ndf == MS_NDF_STUDENT_T) {
-        float _e27 = ms_student_t_g1_(w_37, mf_2.alpha, mf_2.table, ms_tables, _buffer_sizes);
-        return _e27;
-    }
-    return 0.0;
-}
-
-float ms_g2_(
-    MsMicrofacet mf_3,
-    metal::float3 wo_17,
-    metal::float3 wi_17,
-    device type_7 const& ms_tables,
-    constant _mslBufferSizes& _buffer_sizes
-) {
-    if (mf_3.ndf == MS_NDF_GGX) {
-        float _e7 = ms_ggx_g2_(wo_17, wi_17, mf_3.alpha);
-        return _e7;
-    }
-    if (mf_3.ndf == MS_NDF_BECKMANN) {
-        float _e12 = ms_beckmann_g2_(wo_17, wi_17, mf_3.alpha, ms_tables, _buffer_sizes);
-        return _e12;
-    }
-    if (mf_3.ndf == MS_NDF_DOUBLE_GGX) {
-        float _e17 = ms_double_ggx_g2_(wo_17, wi_17, mf_3.alpha, ms_tables, _buffer_sizes);
-        return _e17;
-    }
-    if (mf_3.ndf == MS_NDF_EXPONENTIAL) {
-        float _e22 = ms_exponential_g2_(wo_17, wi_17, mf_3.alpha, ms_tables, _buffer_sizes);
-        return _e22;
-    }
-    if (mf_3.ndf == MS_NDF_STUDENT_T) {
-        float _e28 = ms_student_t_g2_(wo_17, wi_17, mf_3.alpha, mf_3.table, ms_tables, _buffer_sizes);
-        return _e28;
-    }
-    return 0.0;
-}
-
-float ms_g2_separable(
-    MsMicrofacet mf_4,
+float ms_student_t_g2_separable(
     metal::float3 wo_18,
     metal::float3 wi_18,
+    metal::float2 alpha_60,
+    uint table_13,
     device type_7 const& ms_tables,
     constant _mslBufferSizes& _buffer_sizes
 ) {
-    float _e3 = ms_g1_(mf_4, wo_18, ms_tables, _buffer_sizes);
-    float _e4 = ms_g1_(mf_4, wi_18, ms_tables, _buffer_sizes);
-    return _e3 * _e4;
+    float _e4 = ms_student_t_g1_(wo_18, alpha_60, table_13, ms_tables, _buffer_sizes);
+    float _e5 = ms_student_t_g1_(wi_18, alpha_60, table_13, ms_tables, _buffer_sizes);
+    return _e4 * _e5;
 }
 
-float ms_pdf(
-    MsMicrofacet mf_5,
-    metal::float3 w_38,
+float ms_student_t_pdf(
+    metal::float3 w_36,
     metal::float3 wm_19,
+    metal::float2 alpha_61,
+    uint table_14,
     device type_7 const& ms_tables,
     constant _mslBufferSizes& _buffer_sizes
 ) {
-    if (mf_5.ndf == MS_NDF_GGX) {
-        float _e7 = ms_ggx_pdf(w_38, wm_19, mf_5.alpha);
-        return _e7;
+    float c_6 = {};
+    bool local_31 = {};
+    float z_21 = metal::abs(w_36.z);
+    float _e6 = ms_dot(w_36, wm_19);
+    c_6 = _e6;
+    if (w_36.z < 0.0) {
+        float _e11 = c_6;
+        c_6 = -(_e11);
     }
-    if (mf_5.ndf == MS_NDF_BECKMANN) {
-        float _e12 = ms_beckmann_pdf(w_38, wm_19, mf_5.alpha, ms_tables, _buffer_sizes);
-        return _e12;
+    float _e13 = c_6;
+    if (_e13 > 0.0) {
+        local_31 = z_21 > 0.0;
+    } else {
+        local_31 = false;
     }
-    if (mf_5.ndf == MS_NDF_DOUBLE_GGX) {
-        float _e17 = ms_double_ggx_pdf(w_38, wm_19, mf_5.alpha, ms_tables, _buffer_sizes);
-        return _e17;
+    bool _e21 = local_31;
+    if (!(_e21)) {
+        return 0.0;
     }
-    if (mf_5.ndf == MS_NDF_EXPONENTIAL) {
-        float _e22 = ms_exponential_pdf(w_38, wm_19, mf_5.alpha, ms_tables, _buffer_sizes);
-        return _e22;
-    }
-    if (mf_5.ndf == MS_NDF_STUDENT_T) {
-        float _e28 = ms_student_t_pdf(w_38, wm_19, mf_5.alpha, mf_5.table, ms_tables, _buffer_sizes);
-        return _e28;
-    }
-    return 0.0;
+    float _e24 = ms_student_t_g1_(w_36, alpha_61, table_14, ms_tables, _buffer_sizes);
+    float _e25 = c_6;
+    float _e27 = ms_student_t_d(wm_19, alpha_61, table_14, ms_tables, _buffer_sizes);
+    return ((_e24 * _e25) * _e27) / z_21;
 }
 
-float ms_pdf_dcos(
-    MsMicrofacet mf_6,
+float ms_student_t_pdf_dcos(
     metal::float3 wm_20,
+    metal::float2 alpha_62,
+    uint table_15,
     device type_7 const& ms_tables,
     constant _mslBufferSizes& _buffer_sizes
 ) {
     if (!((wm_20.z > 0.0))) {
         return 0.0;
     }
-    float _e7 = ms_d(mf_6, wm_20, ms_tables, _buffer_sizes);
-    return _e7 * wm_20.z;
+    float _e8 = ms_student_t_d(wm_20, alpha_62, table_15, ms_tables, _buffer_sizes);
+    return _e8 * wm_20.z;
+}
+
+MsSample ms_student_t_sample_dcos(
+    metal::float2 alpha_63,
+    metal::float2 u_21,
+    uint table_16,
+    device type_7 const& ms_tables,
+    constant _mslBufferSizes& _buffer_sizes
+) {
+    metal::float3 v_8 = {};
+    float _e3 = ms_student_t_gamma(table_16, ms_tables, _buffer_sizes);
+    float g1_1 = _e3 - 1.0;
+    float _e7 = ms_bk_ln_1m(u_21.x);
+    float _e10 = ms_expm1_(-(_e7) / g1_1);
+    float r_23 = metal::sqrt(g1_1 * _e10);
+    metal::float2 _e14 = ms_cos_sin_turn(u_21.y);
+    if (r_23 > 1.0) {
+        v_8 = metal::float3(alpha_63.x * _e14.x, alpha_63.y * _e14.y, 1.0 / r_23);
+    } else {
+        v_8 = metal::float3((alpha_63.x * r_23) * _e14.x, (alpha_63.y * r_23) * _e14.y, 1.0);
+    }
+    metal::float3 _e37 = v_8;
+    metal::float3 _e38 = ms_unit_normal(_e37);
+    float _e39 = ms_student_t_pdf_dcos(_e38, alpha_63, table_16, ms_tables, _buffer_sizes);
+    return MsSample {_e38, _e39};
+}
+
+MsSample ms_student_t_sample(
+    metal::float3 w_37,
+    metal::float2 alpha_64,
+    metal::float2 u_22,
+    uint table_17,
+    device type_7 const& ms_tables,
+    constant _mslBufferSizes& _buffer_sizes
+) {
+    metal::float3 _e4 = ms_mixture_sample_wm(table_17, w_37, alpha_64, u_22, ms_tables, _buffer_sizes);
+    metal::float3 _e5 = ms_unit(w_37);
+    float _e6 = ms_student_t_pdf(_e5, _e4, alpha_64, table_17, ms_tables, _buffer_sizes);
+    return MsSample {_e4, _e6};
+}
+
+float ms_ei_ln_profile(
+    float y_4,
+    device type_7 const& ms_tables,
+    constant _mslBufferSizes& _buffer_sizes
+) {
+    float _e1 = ms_e1x(y_4, ms_tables, _buffer_sizes);
+    return (metal::log(_e1) - y_4) - 1.14473;
+}
+
+float ms_ei_d(
+    metal::float3 wm_21,
+    metal::float2 alpha_65,
+    device type_7 const& ms_tables,
+    constant _mslBufferSizes& _buffer_sizes
+) {
+    if (!((wm_21.z > 0.0))) {
+        return (wm_21.z != wm_21.z) ? wm_21.z : 0.0;
+    }
+    float _e12 = ms_mixture_r2_(wm_21, alpha_65);
+    if (_e12 == 0.0) {
+        float _e15 = ms_inf();
+        return _e15;
+    }
+    float _e16 = ms_ei_ln_profile(_e12, ms_tables, _buffer_sizes);
+    float _e17 = ms_mixture_d_from_ln_profile(_e16, wm_21, alpha_65);
+    return _e17;
+}
+
+float ms_ei_lambda(
+    metal::float3 w_38,
+    metal::float2 alpha_66,
+    uint table_18,
+    device type_7 const& ms_tables,
+    constant _mslBufferSizes& _buffer_sizes
+) {
+    float _e3 = ms_shape_lambda(table_18, w_38, alpha_66, ms_tables, _buffer_sizes);
+    return _e3;
+}
+
+float ms_ei_g1_(
+    metal::float3 w_39,
+    metal::float2 alpha_67,
+    uint table_19,
+    device type_7 const& ms_tables,
+    constant _mslBufferSizes& _buffer_sizes
+) {
+    float _e3 = ms_mixture_g1_(table_19, w_39, alpha_67, ms_tables, _buffer_sizes);
+    return _e3;
+}
+
+float ms_ei_g2_(
+    metal::float3 wo_19,
+    metal::float3 wi_19,
+    metal::float2 alpha_68,
+    uint table_20,
+    device type_7 const& ms_tables,
+    constant _mslBufferSizes& _buffer_sizes
+) {
+    float _e4 = ms_mixture_g2_(table_20, wo_19, wi_19, alpha_68, ms_tables, _buffer_sizes);
+    return _e4;
+}
+
+float ms_ei_g2_separable(
+    metal::float3 wo_20,
+    metal::float3 wi_20,
+    metal::float2 alpha_69,
+    uint table_21,
+    device type_7 const& ms_tables,
+    constant _mslBufferSizes& _buffer_sizes
+) {
+    float _e4 = ms_mixture_g2_separable(table_21, wo_20, wi_20, alpha_69, ms_tables, _buffer_sizes);
+    return _e4;
+}
+
+float ms_ei_pdf(
+    metal::float3 w_40,
+    metal::float3 wm_22,
+    metal::float2 alpha_70,
+    uint table_22,
+    device type_7 const& ms_tables,
+    constant _mslBufferSizes& _buffer_sizes
+) {
+    float _e4 = ms_ei_d(wm_22, alpha_70, ms_tables, _buffer_sizes);
+    float _e5 = ms_mixture_pdf(table_22, w_40, wm_22, alpha_70, _e4, ms_tables, _buffer_sizes);
+    return _e5;
+}
+
+float ms_ei_pdf_dcos(
+    metal::float3 wm_23,
+    metal::float2 alpha_71,
+    device type_7 const& ms_tables,
+    constant _mslBufferSizes& _buffer_sizes
+) {
+    if (!((wm_23.z > 0.0))) {
+        return 0.0;
+    }
+    float _e7 = ms_ei_d(wm_23, alpha_71, ms_tables, _buffer_sizes);
+    return _e7 * wm_23.z;
+}
+
+MsSample ms_ei_sample_dcos(
+    metal::float2 alpha_72,
+    metal::float2 u_23,
+    uint table_23,
+    device type_7 const& ms_tables,
+    constant _mslBufferSizes& _buffer_sizes
+) {
+    metal::float3 _e3 = ms_mixture_sample_dcos_wm(table_23, alpha_72, u_23, ms_tables, _buffer_sizes);
+    float _e4 = ms_ei_pdf_dcos(_e3, alpha_72, ms_tables, _buffer_sizes);
+    return MsSample {_e3, _e4};
+}
+
+MsSample ms_ei_sample(
+    metal::float3 w_41,
+    metal::float2 alpha_73,
+    metal::float2 u_24,
+    uint table_24,
+    device type_7 const& ms_tables,
+    constant _mslBufferSizes& _buffer_sizes
+) {
+    metal::float3 _e4 = ms_mixture_sample_wm(table_24, w_41, alpha_73, u_24, ms_tables, _buffer_sizes);
+    metal::float3 _e5 = ms_unit(w_41);
+    float _e6 = ms_ei_pdf(_e5, _e4, alpha_73, table_24, ms_tables, _buffer_sizes);
+    return MsSample {_e4, _e6};
+}
+
+float ms_erfc_ln_profile(
+    float y_5,
+    device type_7 const& ms_tables,
+    constant _mslBufferSizes& _buffer_sizes
+) {
+    float r_24 = metal::sqrt(y_5);
+    float _e2 = ms_bk_erfcx(r_24, ms_tables, _buffer_sizes);
+    return metal::log(_e2 / (3.5449078 * r_24)) - y_5;
+}
+
+float ms_erfc_d(
+    metal::float3 wm_24,
+    metal::float2 alpha_74,
+    device type_7 const& ms_tables,
+    constant _mslBufferSizes& _buffer_sizes
+) {
+    if (!((wm_24.z > 0.0))) {
+        return (wm_24.z != wm_24.z) ? wm_24.z : 0.0;
+    }
+    float _e12 = ms_mixture_r2_(wm_24, alpha_74);
+    if (_e12 == 0.0) {
+        float _e15 = ms_inf();
+        return _e15;
+    }
+    float _e16 = ms_erfc_ln_profile(_e12, ms_tables, _buffer_sizes);
+    float _e17 = ms_mixture_d_from_ln_profile(_e16, wm_24, alpha_74);
+    return _e17;
+}
+
+float ms_erfc_lambda(
+    metal::float3 w_42,
+    metal::float2 alpha_75,
+    uint table_25,
+    device type_7 const& ms_tables,
+    constant _mslBufferSizes& _buffer_sizes
+) {
+    float _e3 = ms_shape_lambda(table_25, w_42, alpha_75, ms_tables, _buffer_sizes);
+    return _e3;
+}
+
+float ms_erfc_g1_(
+    metal::float3 w_43,
+    metal::float2 alpha_76,
+    uint table_26,
+    device type_7 const& ms_tables,
+    constant _mslBufferSizes& _buffer_sizes
+) {
+    float _e3 = ms_mixture_g1_(table_26, w_43, alpha_76, ms_tables, _buffer_sizes);
+    return _e3;
+}
+
+float ms_erfc_g2_(
+    metal::float3 wo_21,
+    metal::float3 wi_21,
+    metal::float2 alpha_77,
+    uint table_27,
+    device type_7 const& ms_tables,
+    constant _mslBufferSizes& _buffer_sizes
+) {
+    float _e4 = ms_mixture_g2_(table_27, wo_21, wi_21, alpha_77, ms_tables, _buffer_sizes);
+    return _e4;
+}
+
+float ms_erfc_g2_separable(
+    metal::float3 wo_22,
+    metal::float3 wi_22,
+    metal::float2 alpha_78,
+    uint table_28,
+    device type_7 const& ms_tables,
+    constant _mslBufferSizes& _buffer_sizes
+) {
+    float _e4 = ms_mixture_g2_separable(table_28, wo_22, wi_22, alpha_78, ms_tables, _buffer_sizes);
+    return _e4;
+}
+
+float ms_erfc_pdf(
+    metal::float3 w_44,
+    metal::float3 wm_25,
+    metal::float2 alpha_79,
+    uint table_29,
+    device type_7 const& ms_tables,
+    constant _mslBufferSizes& _buffer_sizes
+) {
+    float _e4 = ms_erfc_d(wm_25, alpha_79, ms_tables, _buffer_sizes);
+    float _e5 = ms_mixture_pdf(table_29, w_44, wm_25, alpha_79, _e4, ms_tables, _buffer_sizes);
+    return _e5;
+}
+
+float ms_erfc_pdf_dcos(
+    metal::float3 wm_26,
+    metal::float2 alpha_80,
+    device type_7 const& ms_tables,
+    constant _mslBufferSizes& _buffer_sizes
+) {
+    if (!((wm_26.z > 0.0))) {
+        return 0.0;
+    }
+    float _e7 = ms_erfc_d(wm_26, alpha_80, ms_tables, _buffer_sizes);
+    return _e7 * wm_26.z;
+}
+
+MsSample ms_erfc_sample_dcos(
+    metal::float2 alpha_81,
+    metal::float2 u_25,
+    uint table_30,
+    device type_7 const& ms_tables,
+    constant _mslBufferSizes& _buffer_sizes
+) {
+    metal::float3 _e3 = ms_mixture_sample_dcos_wm(table_30, alpha_81, u_25, ms_tables, _buffer_sizes);
+    float _e4 = ms_erfc_pdf_dcos(_e3, alpha_81, ms_tables, _buffer_sizes);
+    return MsSample {_e3, _e4};
+}
+
+MsSample ms_erfc_sample(
+    metal::float3 w_45,
+    metal::float2 alpha_82,
+    metal::float2 u_26,
+    uint table_31,
+    device type_7 const& ms_tables,
+    constant _mslBufferSizes& _buffer_sizes
+) {
+    metal::float3 _e4 = ms_mixture_sample_wm(table_31, w_45, alpha_82, u_26, ms_tables, _buffer_sizes);
+    metal::float3 _e5 = ms_unit(w_45);
+    float _e6 = ms_erfc_pdf(_e5, _e4, alpha_82, table_31, ms_tables, _buffer_sizes);
+    return MsSample {_e4, _e6};
+}
+
+float ms_k0_ln_profile(
+    float y_6,
+    device type_7 const& ms_tables,
+    constant _mslBufferSizes& _buffer_sizes
+) {
+    float z_22 = 2.0 * metal::sqrt(y_6);
+    float _e4 = ms_k0e(z_22, ms_tables, _buffer_sizes);
+    return metal::log((2.0 * _e4) / MS_PI) - z_22;
+}
+
+float ms_k0_d(
+    metal::float3 wm_27,
+    metal::float2 alpha_83,
+    device type_7 const& ms_tables,
+    constant _mslBufferSizes& _buffer_sizes
+) {
+    if (!((wm_27.z > 0.0))) {
+        return (wm_27.z != wm_27.z) ? wm_27.z : 0.0;
+    }
+    float _e12 = ms_mixture_r2_(wm_27, alpha_83);
+    if (_e12 == 0.0) {
+        float _e15 = ms_inf();
+        return _e15;
+    }
+    float _e16 = ms_k0_ln_profile(_e12, ms_tables, _buffer_sizes);
+    float _e17 = ms_mixture_d_from_ln_profile(_e16, wm_27, alpha_83);
+    return _e17;
+}
+
+float ms_k0_lambda(
+    metal::float3 w_46,
+    metal::float2 alpha_84,
+    uint table_32,
+    device type_7 const& ms_tables,
+    constant _mslBufferSizes& _buffer_sizes
+) {
+    float _e3 = ms_shape_lambda(table_32, w_46, alpha_84, ms_tables, _buffer_sizes);
+    return _e3;
+}
+
+float ms_k0_g1_(
+    metal::float3 w_47,
+    metal::float2 alpha_85,
+    uint table_33,
+    device type_7 const& ms_tables,
+    constant _mslBufferSizes& _buffer_sizes
+) {
+    float _e3 = ms_mixture_g1_(table_33, w_47, alpha_85, ms_tables, _buffer_sizes);
+    return _e3;
+}
+
+float ms_k0_g2_(
+    metal::float3 wo_23,
+    metal::float3 wi_23,
+    metal::float2 alpha_86,
+    uint table_34,
+    device type_7 const& ms_tables,
+    constant _mslBufferSizes& _buffer_sizes
+) {
+    float _e4 = ms_mixture_g2_(table_34, wo_23, wi_23, alpha_86, ms_tables, _buffer_sizes);
+    return _e4;
+}
+
+float ms_k0_g2_separable(
+    metal::float3 wo_24,
+    metal::float3 wi_24,
+    metal::float2 alpha_87,
+    uint table_35,
+    device type_7 const& ms_tables,
+    constant _mslBufferSizes& _buffer_sizes
+) {
+    float _e4 = ms_mixture_g2_separable(table_35, wo_24, wi_24, alpha_87, ms_tables, _buffer_sizes);
+    return _e4;
+}
+
+float ms_k0_pdf(
+    metal::float3 w_48,
+    metal::float3 wm_28,
+    metal::float2 alpha_88,
+    uint table_36,
+    device type_7 const& ms_tables,
+    constant _mslBufferSizes& _buffer_sizes
+) {
+    float _e4 = ms_k0_d(wm_28, alpha_88, ms_tables, _buffer_sizes);
+    float _e5 = ms_mixture_pdf(table_36, w_48, wm_28, alpha_88, _e4, ms_tables, _buffer_sizes);
+    return _e5;
+}
+
+float ms_k0_pdf_dcos(
+    metal::float3 wm_29,
+    metal::float2 alpha_89,
+    device type_7 const& ms_tables,
+    constant _mslBufferSizes& _buffer_sizes
+) {
+    if (!((wm_29.z > 0.0))) {
+        return 0.0;
+    }
+    float _e7 = ms_k0_d(wm_29, alpha_89, ms_tables, _buffer_sizes);
+    return _e7 * wm_29.z;
+}
+
+MsSample ms_k0_sample_dcos(
+    metal::float2 alpha_90,
+    metal::float2 u_27,
+    uint table_37,
+    device type_7 const& ms_tables,
+    constant _mslBufferSizes& _buffer_sizes
+) {
+    metal::float3 _e3 = ms_mixture_sample_dcos_wm(table_37, alpha_90, u_27, ms_tables, _buffer_sizes);
+    float _e4 = ms_k0_pdf_dcos(_e3, alpha_90, ms_tables, _buffer_sizes);
+    return MsSample {_e3, _e4};
+}
+
+MsSample ms_k0_sample(
+    metal::float3 w_49,
+    metal::float2 alpha_91,
+    metal::float2 u_28,
+    uint table_38,
+    device type_7 const& ms_tables,
+    constant _mslBufferSizes& _buffer_sizes
+) {
+    metal::float3 _e4 = ms_mixture_sample_wm(table_38, w_49, alpha_91, u_28, ms_tables, _buffer_sizes);
+    metal::float3 _e5 = ms_unit(w_49);
+    float _e6 = ms_k0_pdf(_e5, _e4, alpha_91, table_38, ms_tables, _buffer_sizes);
+    return MsSample {_e4, _e6};
+}
+
+float ms_d(
+    MsMicrofacet mf,
+    metal::float3 wm_30,
+    device type_7 const& ms_tables,
+    constant _mslBufferSizes& _buffer_sizes
+) {
+    if (mf.ndf == MS_NDF_GGX) {
+        float _e6 = ms_ggx_d(wm_30, mf.alpha);
+        return _e6;
+    }
+    if (mf.ndf == MS_NDF_BECKMANN) {
+        float _e11 = ms_beckmann_d(wm_30, mf.alpha);
+        return _e11;
+    }
+    if (mf.ndf == MS_NDF_DOUBLE_GGX) {
+        float _e16 = ms_double_ggx_d(wm_30, mf.alpha, ms_tables, _buffer_sizes);
+        return _e16;
+    }
+    if (mf.ndf == MS_NDF_EXPONENTIAL) {
+        float _e21 = ms_exponential_d(wm_30, mf.alpha);
+        return _e21;
+    }
+    if (mf.ndf == MS_NDF_STUDENT_T) {
+        float _e27 = ms_student_t_d(wm_30, mf.alpha, mf.table, ms_tables, _buffer_sizes);
+        return _e27;
+    }
+    if (mf.ndf == MS_NDF_EI) {
+        float _e32 = ms_ei_d(wm_30, mf.alpha, ms_tables, _buffer_sizes);
+        return _e32;
+    }
+    if (mf.ndf == MS_NDF_ERFC) {
+        float _e37 = ms_erfc_d(wm_30, mf.alpha, ms_tables, _buffer_sizes);
+        return _e37;
+    }
+    if (mf.ndf == MS_NDF_K0_) {
+        float _e42 = ms_k0_d(wm_30, mf.alpha, ms_tables, _buffer_sizes);
+        return _e42;
+    }
+    return 0.0;
+}
+
+float ms_lambda(
+    MsMicrofacet mf_1,
+    metal::float3 w_50,
+    device type_7 const& ms_tables,
+    constant _mslBufferSizes& _buffer_sizes
+) {
+    if (mf_1.ndf == MS_NDF_GGX) {
+        float _e6 = ms_ggx_lambda(w_50, mf_1.alpha);
+        return _e6;
+    }
+    if (mf_1.ndf == MS_NDF_BECKMANN) {
+        float _e11 = ms_beckmann_lambda(w_50, mf_1.alpha, ms_tables, _buffer_sizes);
+        return _e11;
+    }
+    if (mf_1.ndf == MS_NDF_DOUBLE_GGX) {
+        float _e16 = ms_double_ggx_lambda(w_50, mf_1.alpha, ms_tables, _buffer_sizes);
+        return _e16;
+    }
+    if (mf_1.ndf == MS_NDF_EXPONENTIAL) {
+        float _e21 = ms_exponential_lambda(w_50, mf_1.alpha, ms_tables, _buffer_sizes);
+        return _e21;
+    }
+    if (mf_1.ndf == MS_NDF_STUDENT_T) {
+        float _e27 = ms_student_t_lambda(w_50, mf_1.alpha, mf_1.table, ms_tables, _buffer_sizes);
+        return _e27;
+    }
+    if (mf_1.ndf == MS_NDF_EI) {
+        float _e33 = ms_ei_lambda(w_50, mf_1.alpha, mf_1.table, ms_tables, _buffer_sizes);
+        return _e33;
+    }
+    if (mf_1.ndf == MS_NDF_ERFC) {
+        float _e39 = ms_erfc_lambda(w_50, mf_1.alpha, mf_1.table, ms_tables, _buffer_sizes);
+        return _e39;
+    }
+    if (mf_1.ndf == MS_NDF_K0_) {
+        float _e45 = ms_k0_lambda(w_50, mf_1.alpha, mf_1.table, ms_tables, _buffer_sizes);
+        return _e45;
+    }
+    return 0.0;
+}
+
+float ms_g1_(
+    MsMicrofacet mf_2,
+    metal::float3 w_51,
+    device type_7 const& ms_tables,
+    constant _mslBufferSizes& _buffer_sizes
+) {
+    if (mf_2.ndf == MS_NDF_GGX) {
+        float _e6 = ms_ggx_g1_(w_51, mf_2.alpha);
+        return _e6;
+    }
+    if (mf_2.ndf == MS_NDF_BECKMANN) {
+        float _e11 = ms_beckmann_g1_(w_51, mf_2.alpha, ms_tables, _buffer_sizes);
+        return _e11;
+    }
+    if (mf_2.ndf == MS_NDF_DOUBLE_GGX) {
+        float _e16 = ms_double_ggx_g1_(w_51, mf_2.alpha, ms_tables, _buffer_sizes);
+        return _e16;
+    }
+    if (mf_2.ndf == MS_NDF_EXPONENTIAL) {
+        float _e21 = ms_exponential_g1_(w_51, mf_2.alpha, ms_tables, _buffer_sizes);
+        return _e21;
+    }
+    if (mf_2.ndf == MS_NDF_STUDENT_T) {
+        float _e27 = ms_student_t_g1_(w_51, mf_2.alpha, mf_2.table, ms_tables, _buffer_sizes);
+        return _e27;
+    }
+    if (mf_2.ndf == MS_NDF_EI) {
+        float _e33 = ms_ei_g1_(w_51, mf_2.alpha, mf_2.table, ms_tables, _buffer_sizes);
+        return _e33;
+    }
+    if (mf_2.ndf == MS_NDF_ERFC) {
+        float _e39 = ms_erfc_g1_(w_51, mf_2.alpha, mf_2.table, ms_tables, _buffer_sizes);
+        return _e39;
+    }
+    if (mf_2.ndf == MS_NDF_K0_) {
+        float _e45 = ms_k0_g1_(w_51, mf_2.alpha, mf_2.table, ms_tables, _buffer_sizes);
+        return _e45;
+    }
+    return 0.0;
+}
+
+float ms_g2_(
+    MsMicrofacet mf_3,
+    metal::float3 wo_25,
+    metal::float3 wi_25,
+    device type_7 const& ms_tables,
+    constant _mslBufferSizes& _buffer_sizes
+) {
+    if (mf_3.ndf == MS_NDF_GGX) {
+        float _e7 = ms_ggx_g2_(wo_25, wi_25, mf_3.alpha);
+        return _e7;
+    }
+    if (mf_3.ndf == MS_NDF_BECKMANN) {
+        float _e12 = ms_beckmann_g2_(wo_25, wi_25, mf_3.alpha, ms_tables, _buffer_sizes);
+        return _e12;
+    }
+    if (mf_3.ndf == MS_NDF_DOUBLE_GGX) {
+        float _e17 = ms_double_ggx_g2_(wo_25, wi_25, mf_3.alpha, ms_tables, _buffer_sizes);
+        return _e17;
+    }
+    if (mf_3.ndf == MS_NDF_EXPONENTIAL) {
+        float _e22 = ms_exponential_g2_(wo_25, wi_25, mf_3.alpha, ms_tables, _buffer_sizes);
+        return _e22;
+    }
+    if (mf_3.ndf == MS_NDF_STUDENT_T) {
+        float _e28 = ms_student_t_g2_(wo_25, wi_25, mf_3.alpha, mf_3.table, ms_tables, _buffer_sizes);
+        return _e28;
+    }
+    if (mf_3.ndf == MS_NDF_EI) {
+        float _e34 = ms_ei_g2_(wo_25, wi_25, mf_3.alpha, mf_3.table, ms_tables, _buffer_sizes);
+        return _e34;
+    }
+    if (mf_3.ndf == MS_NDF_ERFC) {
+        float _e40 = ms_erfc_g2_(wo_25, wi_25, mf_3.alpha, mf_3.table, ms_tables, _buffer_sizes);
+        return _e40;
+    }
+    if (mf_3.ndf == MS_NDF_K0_) {
+        float _e46 = ms_k0_g2_(wo_25, wi_25, mf_3.alpha, mf_3.table, ms_tables, _buffer_sizes);
+        return _e46;
+    }
+    return 0.0;
+}
+
+float ms_g2_separable(
+    MsMicrofacet mf_4,
+    metal::float3 wo_26,
+    metal::float3 wi_26,
+    device type_7 const& ms_tables,
+    constant _mslBufferSizes& _buffer_sizes
+) {
+    float _e3 = ms_g1_(mf_4, wo_26, ms_tables, _buffer_sizes);
+    float _e4 = ms_g1_(mf_4, wi_26, ms_tables, _buffer_sizes);
+    return _e3 * _e4;
+}
+
+float ms_pdf(
+    MsMicrofacet mf_5,
+    metal::float3 w_52,
+    metal::float3 wm_31,
+    device type_7 const& ms_tables,
+    constant _mslBufferSizes& _buffer_sizes
+) {
+    if (mf_5.ndf == MS_NDF_GGX) {
+        float _e7 = ms_ggx_pdf(w_52, wm_31, mf_5.alpha);
+        return _e7;
+    }
+    if (mf_5.ndf == MS_NDF_BECKMANN) {
+        float _e12 = ms_beckmann_pdf(w_52, wm_31, mf_5.alpha, ms_tables, _buffer_sizes);
+        return _e12;
+    }
+    if (mf_5.ndf == MS_NDF_DOUBLE_GGX) {
+        float _e17 = ms_double_ggx_pdf(w_52, wm_31, mf_5.alpha, ms_tables, _buffer_sizes);
+        return _e17;
+    }
+    if (mf_5.ndf == MS_NDF_EXPONENTIAL) {
+        float _e22 = ms_exponential_pdf(w_52, wm_31, mf_5.alpha, ms_tables, _buffer_sizes);
+        return _e22;
+    }
+    if (mf_5.ndf == MS_NDF_STUDENT_T) {
+        float _e28 = ms_student_t_pdf(w_52, wm_31, mf_5.alpha, mf_5.table, ms_tables, _buffer_sizes);
+        return _e28;
+    }
+    if (mf_5.ndf == MS_NDF_EI) {
+        float _e34 = ms_ei_pdf(w_52, wm_31, mf_5.alpha, mf_5.table, ms_tables, _buffer_sizes);
+        return _e34;
+    }
+    if (mf_5.ndf == MS_NDF_ERFC) {
+        float _e40 = ms_erfc_pdf(w_52, wm_31, mf_5.alpha, mf_5.table, ms_tables, _buffer_sizes);
+        return _e40;
+    }
+    if (mf_5.ndf == MS_NDF_K0_) {
+        float _e46 = ms_k0_pdf(w_52, wm_31, mf_5.alpha, mf_5.table, ms_tables, _buffer_sizes);
+        return _e46;
+    }
+    return 0.0;
+}
+
+float ms_pdf_dcos(
+    MsMicrofacet mf_6,
+    metal::float3 wm_32,
+    device type_7 const& ms_tables,
+    constant _mslBufferSizes& _buffer_sizes
+) {
+    if (!((wm_32.z > 0.0))) {
+        return 0.0;
+    }
+    float _e7 = ms_d(mf_6, wm_32, ms_tables, _buffer_sizes);
+    return _e7 * wm_32.z;
 }
 
 MsSample ms_sample(
     MsMicrofacet mf_7,
-    metal::float3 w_39,
-    metal::float2 u_22,
+    metal::float3 w_53,
+    metal::float2 u_29,
     device type_7 const& ms_tables,
     constant _mslBufferSizes& _buffer_sizes
 ) {
     if (mf_7.ndf == MS_NDF_GGX) {
-        MsSample _e7 = ms_ggx_sample(w_39, mf_7.alpha, u_22);
+        MsSample _e7 = ms_ggx_sample(w_53, mf_7.alpha, u_29);
         return _e7;
     }
     if (mf_7.ndf == MS_NDF_BECKMANN) {
-        MsSample _e12 = ms_beckmann_sample(w_39, mf_7.alpha, u_22, ms_tables, _buffer_sizes);
+        MsSample _e12 = ms_beckmann_sample(w_53, mf_7.alpha, u_29, ms_tables, _buffer_sizes);
         return _e12;
     }
     if (mf_7.ndf == MS_NDF_DOUBLE_GGX) {
-        MsSample _e17 = ms_double_ggx_sample(w_39, mf_7.alpha, u_22, ms_tables, _buffer_sizes);
+        MsSample _e17 = ms_double_ggx_sample(w_53, mf_7.alpha, u_29, ms_tables, _buffer_sizes);
         return _e17;
     }
     if (mf_7.ndf == MS_NDF_EXPONENTIAL) {
-        MsSample _e22 = ms_exponential_sample(w_39, mf_7.alpha, u_22, ms_tables, _buffer_sizes);
+        MsSample _e22 = ms_exponential_sample(w_53, mf_7.alpha, u_29, ms_tables, _buffer_sizes);
         return _e22;
     }
     if (mf_7.ndf == MS_NDF_STUDENT_T) {
-        MsSample _e28 = ms_student_t_sample(w_39, mf_7.alpha, u_22, mf_7.table, ms_tables, _buffer_sizes);
+        MsSample _e28 = ms_student_t_sample(w_53, mf_7.alpha, u_29, mf_7.table, ms_tables, _buffer_sizes);
         return _e28;
+    }
+    if (mf_7.ndf == MS_NDF_EI) {
+        MsSample _e34 = ms_ei_sample(w_53, mf_7.alpha, u_29, mf_7.table, ms_tables, _buffer_sizes);
+        return _e34;
+    }
+    if (mf_7.ndf == MS_NDF_ERFC) {
+        MsSample _e40 = ms_erfc_sample(w_53, mf_7.alpha, u_29, mf_7.table, ms_tables, _buffer_sizes);
+        return _e40;
+    }
+    if (mf_7.ndf == MS_NDF_K0_) {
+        MsSample _e46 = ms_k0_sample(w_53, mf_7.alpha, u_29, mf_7.table, ms_tables, _buffer_sizes);
+        return _e46;
     }
     return MsSample {metal::float3(0.0, 0.0, 1.0), 0.0};
 }
 
 MsSample ms_sample_dcos(
     MsMicrofacet mf_8,
-    metal::float2 u_23,
+    metal::float2 u_30,
     device type_7 const& ms_tables,
     constant _mslBufferSizes& _buffer_sizes
 ) {
     if (mf_8.ndf == MS_NDF_GGX) {
-        MsSample _e6 = ms_ggx_sample_dcos(mf_8.alpha, u_23);
+        MsSample _e6 = ms_ggx_sample_dcos(mf_8.alpha, u_30);
         return _e6;
     }
     if (mf_8.ndf == MS_NDF_BECKMANN) {
-        MsSample _e11 = ms_beckmann_sample_dcos(mf_8.alpha, u_23);
+        MsSample _e11 = ms_beckmann_sample_dcos(mf_8.alpha, u_30);
         return _e11;
     }
     if (mf_8.ndf == MS_NDF_DOUBLE_GGX) {
-        MsSample _e16 = ms_double_ggx_sample_dcos(mf_8.alpha, u_23, ms_tables, _buffer_sizes);
+        MsSample _e16 = ms_double_ggx_sample_dcos(mf_8.alpha, u_30, ms_tables, _buffer_sizes);
         return _e16;
     }
     if (mf_8.ndf == MS_NDF_EXPONENTIAL) {
-        MsSample _e21 = ms_exponential_sample_dcos(mf_8.alpha, u_23, ms_tables, _buffer_sizes);
+        MsSample _e21 = ms_exponential_sample_dcos(mf_8.alpha, u_30, ms_tables, _buffer_sizes);
         return _e21;
     }
     if (mf_8.ndf == MS_NDF_STUDENT_T) {
-        MsSample _e27 = ms_student_t_sample_dcos(mf_8.alpha, u_23, mf_8.table, ms_tables, _buffer_sizes);
+        MsSample _e27 = ms_student_t_sample_dcos(mf_8.alpha, u_30, mf_8.table, ms_tables, _buffer_sizes);
         return _e27;
+    }
+    if (mf_8.ndf == MS_NDF_EI) {
+        MsSample _e33 = ms_ei_sample_dcos(mf_8.alpha, u_30, mf_8.table, ms_tables, _buffer_sizes);
+        return _e33;
+    }
+    if (mf_8.ndf == MS_NDF_ERFC) {
+        MsSample _e39 = ms_erfc_sample_dcos(mf_8.alpha, u_30, mf_8.table, ms_tables, _buffer_sizes);
+        return _e39;
+    }
+    if (mf_8.ndf == MS_NDF_K0_) {
+        MsSample _e45 = ms_k0_sample_dcos(mf_8.alpha, u_30, mf_8.table, ms_tables, _buffer_sizes);
+        return _e45;
     }
     return MsSample {metal::float3(0.0, 0.0, 1.0), 0.0};
 }
@@ -3241,206 +3877,206 @@ bool ms_effectively_smooth(
 }
 
 bool ms_on_horizon(
-    float z_4
+    float z_5
 ) {
-    return !((metal::abs(z_4) >= 0.000000000000000001));
+    return !((metal::abs(z_5) >= 0.000000000000000001));
 }
 
 bool ms_usable(
     float v_9
 ) {
-    bool local_31 = {};
+    bool local_32 = {};
     if (v_9 >= 0.000000000000000000011754944) {
-        local_31 = v_9 <= 340282350000000000000000000000000000000.0;
+        local_32 = v_9 <= 340282350000000000000000000000000000000.0;
     } else {
-        local_31 = false;
+        local_32 = false;
     }
-    bool _e8 = local_31;
+    bool _e8 = local_32;
     return _e8;
 }
 
 float ms_masking_g2_(
     MsMicrofacet mf_10,
     uint masking,
-    metal::float3 wo_19,
-    metal::float3 wi_19,
+    metal::float3 wo_27,
+    metal::float3 wi_27,
     device type_7 const& ms_tables,
     constant _mslBufferSizes& _buffer_sizes
 ) {
     if (masking == MS_MASKING_SEPARABLE) {
-        float _e6 = ms_g2_separable(mf_10, wo_19, wi_19, ms_tables, _buffer_sizes);
+        float _e6 = ms_g2_separable(mf_10, wo_27, wi_27, ms_tables, _buffer_sizes);
         return _e6;
     }
-    float _e7 = ms_g2_(mf_10, wo_19, wi_19, ms_tables, _buffer_sizes);
+    float _e7 = ms_g2_(mf_10, wo_27, wi_27, ms_tables, _buffer_sizes);
     return _e7;
 }
 
 float ms_reflected(
     MsMicrofacet mf_11,
     uint masking_1,
-    metal::float3 wo_20,
-    metal::float3 wi_20,
+    metal::float3 wo_28,
+    metal::float3 wi_28,
     float d_wm,
     device type_7 const& ms_tables,
     constant _mslBufferSizes& _buffer_sizes
 ) {
-    float _e5 = ms_masking_g2_(mf_11, masking_1, wo_20, wi_20, ms_tables, _buffer_sizes);
-    return (d_wm * _e5) / (4.0 * metal::abs(wo_20.z * wi_20.z));
+    float _e5 = ms_masking_g2_(mf_11, masking_1, wo_28, wi_28, ms_tables, _buffer_sizes);
+    return (d_wm * _e5) / (4.0 * metal::abs(wo_28.z * wi_28.z));
 }
 
 metal::float3 ms_weighted(
     metal::float3 fr_1,
-    float k_7
+    float k_8
 ) {
-    return metal::select(fr_1 * k_7, metal::float3(0.0), fr_1 == metal::float3(0.0));
+    return metal::select(fr_1 * k_8, metal::float3(0.0), fr_1 == metal::float3(0.0));
 }
 
 metal::float3 ms_conductor_lobe_normal(
-    MsConductor c_6,
-    metal::float3 wo_21,
-    metal::float3 wi_21
+    MsConductor c_7,
+    metal::float3 wo_29,
+    metal::float3 wi_29
 ) {
-    bool local_32 = {};
     bool local_33 = {};
     bool local_34 = {};
-    bool _e3 = ms_same_hemisphere(wo_21, wi_21);
+    bool local_35 = {};
+    bool _e3 = ms_same_hemisphere(wo_29, wi_29);
     if (!(!(_e3))) {
-        bool _e9 = ms_on_horizon(wo_21.z);
-        local_32 = _e9;
-    } else {
-        local_32 = true;
-    }
-    bool _e11 = local_32;
-    if (!(_e11)) {
-        bool _e16 = ms_on_horizon(wi_21.z);
-        local_33 = _e16;
+        bool _e9 = ms_on_horizon(wo_29.z);
+        local_33 = _e9;
     } else {
         local_33 = true;
     }
-    bool _e18 = local_33;
-    if (!(_e18)) {
-        bool _e23 = ms_effectively_smooth(c_6.mf);
-        local_34 = _e23;
+    bool _e11 = local_33;
+    if (!(_e11)) {
+        bool _e16 = ms_on_horizon(wi_29.z);
+        local_34 = _e16;
     } else {
         local_34 = true;
     }
-    bool _e25 = local_34;
+    bool _e18 = local_34;
+    if (!(_e18)) {
+        bool _e23 = ms_effectively_smooth(c_7.mf);
+        local_35 = _e23;
+    } else {
+        local_35 = true;
+    }
+    bool _e25 = local_35;
     if (_e25) {
         return metal::float3(0.0);
     }
-    metal::float3 _e28 = ms_half_vector_reflection(wo_21, wi_21);
+    metal::float3 _e28 = ms_half_vector_reflection(wo_29, wi_29);
     return _e28;
 }
 
 metal::float3 ms_conductor_eval(
-    MsConductor c_7,
-    metal::float3 wo_22,
-    metal::float3 wi_22,
+    MsConductor c_8,
+    metal::float3 wo_30,
+    metal::float3 wi_30,
     device type_7 const& ms_tables,
     constant _mslBufferSizes& _buffer_sizes
 ) {
-    metal::float3 _e3 = ms_conductor_lobe_normal(c_7, wo_22, wi_22);
+    metal::float3 _e3 = ms_conductor_lobe_normal(c_8, wo_30, wi_30);
     bool _e4 = ms_half_vector_ok(_e3);
     if (!(_e4)) {
         return metal::float3(0.0);
     }
-    float _e9 = ms_dot(wo_22, _e3);
-    float _e11 = ms_dot(wi_22, _e3);
-    metal::float3 _e16 = ms_fresnel_eval(c_7.fresnel, 0.5 * (metal::abs(_e9) + metal::abs(_e11)));
-    float _e20 = ms_d(c_7.mf, _e3, ms_tables, _buffer_sizes);
-    float _e21 = ms_reflected(c_7.mf, c_7.masking, wo_22, wi_22, _e20, ms_tables, _buffer_sizes);
+    float _e9 = ms_dot(wo_30, _e3);
+    float _e11 = ms_dot(wi_30, _e3);
+    metal::float3 _e16 = ms_fresnel_eval(c_8.fresnel, 0.5 * (metal::abs(_e9) + metal::abs(_e11)));
+    float _e20 = ms_d(c_8.mf, _e3, ms_tables, _buffer_sizes);
+    float _e21 = ms_reflected(c_8.mf, c_8.masking, wo_30, wi_30, _e20, ms_tables, _buffer_sizes);
     metal::float3 _e22 = ms_weighted(_e16, _e21);
     return _e22;
 }
 
 float ms_conductor_pdf(
-    MsConductor c_8,
-    metal::float3 wo_23,
-    metal::float3 wi_23,
+    MsConductor c_9,
+    metal::float3 wo_31,
+    metal::float3 wi_31,
     device type_7 const& ms_tables,
     constant _mslBufferSizes& _buffer_sizes
 ) {
-    metal::float3 _e3 = ms_conductor_lobe_normal(c_8, wo_23, wi_23);
+    metal::float3 _e3 = ms_conductor_lobe_normal(c_9, wo_31, wi_31);
     bool _e4 = ms_half_vector_ok(_e3);
     if (!(_e4)) {
         return 0.0;
     }
-    float _e8 = ms_pdf(c_8.mf, wo_23, _e3, ms_tables, _buffer_sizes);
-    float _e9 = ms_dot(wo_23, _e3);
+    float _e8 = ms_pdf(c_9.mf, wo_31, _e3, ms_tables, _buffer_sizes);
+    float _e9 = ms_dot(wo_31, _e3);
     return _e8 / (4.0 * metal::abs(_e9));
 }
 
 metal::float4 ms_conductor_eval_pdf(
-    MsConductor c_9,
-    metal::float3 wo_24,
-    metal::float3 wi_24,
+    MsConductor c_10,
+    metal::float3 wo_32,
+    metal::float3 wi_32,
     device type_7 const& ms_tables,
     constant _mslBufferSizes& _buffer_sizes
 ) {
-    metal::float3 _e3 = ms_conductor_lobe_normal(c_9, wo_24, wi_24);
+    metal::float3 _e3 = ms_conductor_lobe_normal(c_10, wo_32, wi_32);
     bool _e4 = ms_half_vector_ok(_e3);
     if (!(_e4)) {
         return metal::float4(0.0);
     }
-    float _e8 = ms_dot(wo_24, _e3);
+    float _e8 = ms_dot(wo_32, _e3);
     float co = metal::abs(_e8);
-    float _e11 = ms_dot(wi_24, _e3);
-    metal::float3 _e16 = ms_fresnel_eval(c_9.fresnel, 0.5 * (co + metal::abs(_e11)));
-    float _e20 = ms_d(c_9.mf, _e3, ms_tables, _buffer_sizes);
-    float _e21 = ms_reflected(c_9.mf, c_9.masking, wo_24, wi_24, _e20, ms_tables, _buffer_sizes);
+    float _e11 = ms_dot(wi_32, _e3);
+    metal::float3 _e16 = ms_fresnel_eval(c_10.fresnel, 0.5 * (co + metal::abs(_e11)));
+    float _e20 = ms_d(c_10.mf, _e3, ms_tables, _buffer_sizes);
+    float _e21 = ms_reflected(c_10.mf, c_10.masking, wo_32, wi_32, _e20, ms_tables, _buffer_sizes);
     metal::float3 _e22 = ms_weighted(_e16, _e21);
-    float _e24 = ms_pdf(c_9.mf, wo_24, _e3, ms_tables, _buffer_sizes);
+    float _e24 = ms_pdf(c_10.mf, wo_32, _e3, ms_tables, _buffer_sizes);
     return metal::float4(_e22, _e24 / (4.0 * co));
 }
 
 MsBsdfSample ms_conductor_sample(
-    MsConductor c_10,
-    metal::float3 wo_25,
+    MsConductor c_11,
+    metal::float3 wo_33,
     float uc,
-    metal::float2 u_24,
+    metal::float2 u_31,
     device type_7 const& ms_tables,
     constant _mslBufferSizes& _buffer_sizes
 ) {
-    bool local_35 = {};
+    bool local_36 = {};
     MsBsdfSample none = MsBsdfSample {metal::float3(0.0), 0.0, metal::float3(0.0), 0u, 1.0};
-    bool _e13 = ms_on_horizon(wo_25.z);
+    bool _e13 = ms_on_horizon(wo_33.z);
     if (_e13) {
         return none;
     }
-    bool _e15 = ms_effectively_smooth(c_10.mf);
+    bool _e15 = ms_effectively_smooth(c_11.mf);
     if (_e15) {
-        metal::float3 wi_41 = metal::float3(-(wo_25.x), -(wo_25.y), wo_25.z);
-        float k_11 = 1.0 / metal::abs(wi_41.z);
-        metal::float3 _e29 = ms_fresnel_eval(c_10.fresnel, metal::abs(wo_25.z));
-        return MsBsdfSample {wi_41, 1.0, _e29 * k_11, 3u, 1.0};
+        metal::float3 wi_49 = metal::float3(-(wo_33.x), -(wo_33.y), wo_33.z);
+        float k_12 = 1.0 / metal::abs(wi_49.z);
+        metal::float3 _e29 = ms_fresnel_eval(c_11.fresnel, metal::abs(wo_33.z));
+        return MsBsdfSample {wi_49, 1.0, _e29 * k_12, 3u, 1.0};
     }
-    MsSample _e36 = ms_sample(c_10.mf, wo_25, u_24, ms_tables, _buffer_sizes);
-    metal::float3 _e38 = ms_reflect(wo_25, _e36.wm);
-    bool _e39 = ms_same_hemisphere(wo_25, _e38);
+    MsSample _e36 = ms_sample(c_11.mf, wo_33, u_31, ms_tables, _buffer_sizes);
+    metal::float3 _e38 = ms_reflect(wo_33, _e36.wm);
+    bool _e39 = ms_same_hemisphere(wo_33, _e38);
     if (!(!(_e39))) {
         bool _e45 = ms_on_horizon(_e38.z);
-        local_35 = _e45;
+        local_36 = _e45;
     } else {
-        local_35 = true;
+        local_36 = true;
     }
-    bool _e47 = local_35;
+    bool _e47 = local_36;
     if (_e47) {
         return none;
     }
-    float _e49 = ms_dot(wo_25, _e36.wm);
+    float _e49 = ms_dot(wo_33, _e36.wm);
     float co_1 = metal::abs(_e49);
     float pdf = _e36.pdf / (4.0 * co_1);
     bool _e55 = ms_usable(pdf);
     if (!(_e55)) {
         return none;
     }
-    metal::float3 _e58 = ms_fresnel_eval(c_10.fresnel, co_1);
-    float _e61 = ms_d(c_10.mf, _e36.wm, ms_tables, _buffer_sizes);
+    metal::float3 _e58 = ms_fresnel_eval(c_11.fresnel, co_1);
+    float _e61 = ms_d(c_11.mf, _e36.wm, ms_tables, _buffer_sizes);
     bool _e62 = ms_usable(_e61);
     if (!(_e62)) {
         return none;
     }
-    float _e66 = ms_reflected(c_10.mf, c_10.masking, wo_25, _e38, _e61, ms_tables, _buffer_sizes);
+    float _e66 = ms_reflected(c_11.mf, c_11.masking, wo_33, _e38, _e61, ms_tables, _buffer_sizes);
     metal::float3 _e67 = ms_weighted(_e58, _e66);
     if (!(metal::all(_e67 <= metal::float3(340282350000000000000000000000000000000.0)))) {
         return none;
@@ -3449,89 +4085,89 @@ MsBsdfSample ms_conductor_sample(
 }
 
 bool ms_dielectric_smooth(
-    MsDielectric d_1
+    MsDielectric d_2
 ) {
-    bool local_36 = {};
-    if (!((d_1.eta == 1.0))) {
-        bool _e8 = ms_effectively_smooth(d_1.mf);
-        local_36 = _e8;
+    bool local_37 = {};
+    if (!((d_2.eta == 1.0))) {
+        bool _e8 = ms_effectively_smooth(d_2.mf);
+        local_37 = _e8;
     } else {
-        local_36 = true;
+        local_37 = true;
     }
-    bool _e10 = local_36;
+    bool _e10 = local_37;
     return _e10;
 }
 
 float ms_dielectric_g2_(
-    MsDielectric d_2,
-    metal::float3 wo_26,
-    metal::float3 wi_25,
+    MsDielectric d_3,
+    metal::float3 wo_34,
+    metal::float3 wi_33,
     device type_7 const& ms_tables,
     constant _mslBufferSizes& _buffer_sizes
 ) {
-    float _e5 = ms_masking_g2_(d_2.mf, d_2.masking, wo_26, wi_25, ms_tables, _buffer_sizes);
+    float _e5 = ms_masking_g2_(d_3.mf, d_3.masking, wo_34, wi_33, ms_tables, _buffer_sizes);
     return _e5;
 }
 
 metal::float4 ms_dielectric_half(
-    MsDielectric d_3,
-    metal::float3 wo_27,
-    metal::float3 wi_26
+    MsDielectric d_4,
+    metal::float3 wo_35,
+    metal::float3 wi_34
 ) {
-    bool local_37 = {};
-    metal::float3 wm_21 = {};
-    float etap_4 = 1.0;
     bool local_38 = {};
+    metal::float3 wm_33 = {};
+    float etap_4 = 1.0;
+    bool local_39 = {};
     metal::float4 none_1 = metal::float4(0.0);
-    float co_2 = wo_27.z;
-    float ci_1 = wi_26.z;
+    float co_2 = wo_35.z;
+    float ci_1 = wi_34.z;
     bool _e7 = ms_on_horizon(co_2);
     if (!(_e7)) {
         bool _e11 = ms_on_horizon(ci_1);
-        local_37 = _e11;
+        local_38 = _e11;
     } else {
-        local_37 = true;
+        local_38 = true;
     }
-    bool _e13 = local_37;
+    bool _e13 = local_38;
     if (_e13) {
         return none_1;
     }
     if ((co_2 * ci_1) > 0.0) {
-        metal::float3 _e20 = ms_half_vector_reflection(wo_27, wi_26);
-        wm_21 = _e20;
+        metal::float3 _e20 = ms_half_vector_reflection(wo_35, wi_34);
+        wm_33 = _e20;
     } else {
-        metal::float4 _e22 = ms_half_vector_refraction(wo_27, wi_26, d_3.eta);
-        wm_21 = _e22.xyz;
+        metal::float4 _e22 = ms_half_vector_refraction(wo_35, wi_34, d_4.eta);
+        wm_33 = _e22.xyz;
         etap_4 = _e22.w;
     }
-    metal::float3 _e25 = wm_21;
+    metal::float3 _e25 = wm_33;
     bool _e26 = ms_half_vector_ok(_e25);
     if (!(_e26)) {
         return none_1;
     }
-    metal::float3 _e28 = wm_21;
-    float _e29 = ms_dot(_e28, wi_26);
+    metal::float3 _e28 = wm_33;
+    float _e29 = ms_dot(_e28, wi_34);
     if (!(((_e29 * ci_1) < 0.0))) {
-        metal::float3 _e36 = wm_21;
-        float _e37 = ms_dot(_e36, wo_27);
-        local_38 = (_e37 * co_2) < 0.0;
+        metal::float3 _e36 = wm_33;
+        float _e37 = ms_dot(_e36, wo_35);
+        local_39 = (_e37 * co_2) < 0.0;
     } else {
-        local_38 = true;
+        local_39 = true;
     }
-    bool _e42 = local_38;
+    bool _e42 = local_39;
     if (_e42) {
         return none_1;
     }
-    metal::float3 _e43 = wm_21;
+    metal::float3 _e43 = wm_33;
     float _e44 = etap_4;
     return metal::float4(_e43, _e44);
 }
 
 float ms_dielectric_f_transmission(
-    MsDielectric d_4,
-    metal::float3 wo_28,
-    metal::float3 wi_27,
-    metal::float3 wm_22,
+    MsDielectric d_5,
+    metal::float3 wo_36,
+    metal::float3 wi_35,
+    metal::float3 wm_34,
     float d_wm_1,
     float etap_5,
     float t_2,
@@ -3539,13 +4175,13 @@ float ms_dielectric_f_transmission(
     constant _mslBufferSizes& _buffer_sizes
 ) {
     float f_2 = {};
-    float _e7 = ms_dot(wi_27, wm_22);
-    float _e8 = ms_dot(wo_28, wm_22);
-    float _e9 = ms_refraction_denominator(wo_28, wi_27, wm_22, etap_5);
-    float _e10 = ms_dielectric_g2_(d_4, wo_28, wi_27, ms_tables, _buffer_sizes);
-    float geometric = (_e10 / metal::abs(wi_27.z * wo_28.z)) * (metal::abs(_e7 * _e8) / (_e9 * _e9));
+    float _e7 = ms_dot(wi_35, wm_34);
+    float _e8 = ms_dot(wo_36, wm_34);
+    float _e9 = ms_refraction_denominator(wo_36, wi_35, wm_34, etap_5);
+    float _e10 = ms_dielectric_g2_(d_5, wo_36, wi_35, ms_tables, _buffer_sizes);
+    float geometric = (_e10 / metal::abs(wi_35.z * wo_36.z)) * (metal::abs(_e7 * _e8) / (_e9 * _e9));
     f_2 = (d_wm_1 * t_2) * geometric;
-    if (d_4.transport == MS_TRANSPORT_RADIANCE) {
+    if (d_5.transport == MS_TRANSPORT_RADIANCE) {
         float _e27 = f_2;
         f_2 = _e27 / (etap_5 * etap_5);
     }
@@ -3554,36 +4190,9 @@ float ms_dielectric_f_transmission(
 }
 
 float ms_dielectric_eval(
-    MsDielectric d_5,
-    metal::float3 wo_29,
-    metal::float3 wi_28,
-    device type_7 const& ms_tables,
-    constant _mslBufferSizes& _buffer_sizes
-) {
-    bool _e3 = ms_dielectric_smooth(d_5);
-    if (_e3) {
-        return 0.0;
-    }
-    metal::float4 _e5 = ms_dielectric_half(d_5, wo_29, wi_28);
-    if (_e5.w == 0.0) {
-        return 0.0;
-    }
-    metal::float3 wm_23 = _e5.xyz;
-    float _e11 = ms_dot(wo_29, wm_23);
-    float _e13 = ms_fresnel_dielectric(_e11, d_5.eta);
-    float _e15 = ms_d(d_5.mf, wm_23, ms_tables, _buffer_sizes);
-    if ((wo_29.z * wi_28.z) > 0.0) {
-        float _e23 = ms_reflected(d_5.mf, d_5.masking, wo_29, wi_28, _e15, ms_tables, _buffer_sizes);
-        return _e13 * _e23;
-    }
-    float _e28 = ms_dielectric_f_transmission(d_5, wo_29, wi_28, wm_23, _e15, _e5.w, 1.0 - _e13, ms_tables, _buffer_sizes);
-    return _e28;
-}
-
-float ms_dielectric_pdf(
     MsDielectric d_6,
-    metal::float3 wo_30,
-    metal::float3 wi_29,
+    metal::float3 wo_37,
+    metal::float3 wi_36,
     device type_7 const& ms_tables,
     constant _mslBufferSizes& _buffer_sizes
 ) {
@@ -3591,149 +4200,176 @@ float ms_dielectric_pdf(
     if (_e3) {
         return 0.0;
     }
-    metal::float4 _e5 = ms_dielectric_half(d_6, wo_30, wi_29);
+    metal::float4 _e5 = ms_dielectric_half(d_6, wo_37, wi_36);
     if (_e5.w == 0.0) {
         return 0.0;
     }
-    metal::float3 wm_24 = _e5.xyz;
-    float _e11 = ms_dot(wo_30, wm_24);
+    metal::float3 wm_35 = _e5.xyz;
+    float _e11 = ms_dot(wo_37, wm_35);
     float _e13 = ms_fresnel_dielectric(_e11, d_6.eta);
-    float _e15 = ms_pdf(d_6.mf, wo_30, wm_24, ms_tables, _buffer_sizes);
-    if ((wo_30.z * wi_29.z) > 0.0) {
-        float _e22 = ms_dot(wo_30, wm_24);
+    float _e15 = ms_d(d_6.mf, wm_35, ms_tables, _buffer_sizes);
+    if ((wo_37.z * wi_36.z) > 0.0) {
+        float _e23 = ms_reflected(d_6.mf, d_6.masking, wo_37, wi_36, _e15, ms_tables, _buffer_sizes);
+        return _e13 * _e23;
+    }
+    float _e28 = ms_dielectric_f_transmission(d_6, wo_37, wi_36, wm_35, _e15, _e5.w, 1.0 - _e13, ms_tables, _buffer_sizes);
+    return _e28;
+}
+
+float ms_dielectric_pdf(
+    MsDielectric d_7,
+    metal::float3 wo_38,
+    metal::float3 wi_37,
+    device type_7 const& ms_tables,
+    constant _mslBufferSizes& _buffer_sizes
+) {
+    bool _e3 = ms_dielectric_smooth(d_7);
+    if (_e3) {
+        return 0.0;
+    }
+    metal::float4 _e5 = ms_dielectric_half(d_7, wo_38, wi_37);
+    if (_e5.w == 0.0) {
+        return 0.0;
+    }
+    metal::float3 wm_36 = _e5.xyz;
+    float _e11 = ms_dot(wo_38, wm_36);
+    float _e13 = ms_fresnel_dielectric(_e11, d_7.eta);
+    float _e15 = ms_pdf(d_7.mf, wo_38, wm_36, ms_tables, _buffer_sizes);
+    if ((wo_38.z * wi_37.z) > 0.0) {
+        float _e22 = ms_dot(wo_38, wm_36);
         return (_e15 * _e13) / (4.0 * metal::abs(_e22));
     }
-    float _e31 = ms_jacobian_refraction(wo_30, wi_29, wm_24, _e5.w);
+    float _e31 = ms_jacobian_refraction(wo_38, wi_37, wm_36, _e5.w);
     return (_e15 * (1.0 - _e13)) * _e31;
 }
 
 MsBsdfSample ms_dielectric_sample_smooth(
-    MsDielectric d_7,
-    metal::float3 wo_31,
+    MsDielectric d_8,
+    metal::float3 wo_39,
     float uc_1
 ) {
     float f_3 = {};
-    float _e5 = ms_fresnel_dielectric(wo_31.z, d_7.eta);
+    float _e5 = ms_fresnel_dielectric(wo_39.z, d_8.eta);
     if (uc_1 < _e5) {
-        metal::float3 wi_42 = metal::float3(-(wo_31.x), -(wo_31.y), wo_31.z);
-        return MsBsdfSample {wi_42, _e5, metal::float3(_e5 / metal::abs(wi_42.z)), 3u, 1.0};
+        metal::float3 wi_50 = metal::float3(-(wo_39.x), -(wo_39.y), wo_39.z);
+        return MsBsdfSample {wi_50, _e5, metal::float3(_e5 / metal::abs(wi_50.z)), 3u, 1.0};
     }
     MsBsdfSample none_2 = MsBsdfSample {metal::float3(0.0), 0.0, metal::float3(0.0), 0u, 1.0};
-    metal::float4 _e33 = ms_refract(wo_31, metal::float3(0.0, 0.0, 1.0), d_7.eta);
+    metal::float4 _e33 = ms_refract(wo_39, metal::float3(0.0, 0.0, 1.0), d_8.eta);
     if (_e33.w == 0.0) {
         return none_2;
     }
-    metal::float3 wi_43 = _e33.xyz;
-    bool _e39 = ms_on_horizon(wi_43.z);
+    metal::float3 wi_51 = _e33.xyz;
+    bool _e39 = ms_on_horizon(wi_51.z);
     if (_e39) {
         return none_2;
     }
     float t_13 = 1.0 - _e5;
-    f_3 = t_13 / metal::abs(wi_43.z);
-    if (d_7.transport == MS_TRANSPORT_RADIANCE) {
+    f_3 = t_13 / metal::abs(wi_51.z);
+    if (d_8.transport == MS_TRANSPORT_RADIANCE) {
         float _e49 = f_3;
         f_3 = _e49 / (_e33.w * _e33.w);
     }
     float _e54 = f_3;
-    return MsBsdfSample {wi_43, t_13, metal::float3(_e54), 7u, _e33.w};
+    return MsBsdfSample {wi_51, t_13, metal::float3(_e54), 7u, _e33.w};
 }
 
 MsBsdfSample ms_dielectric_sample(
-    MsDielectric d_8,
-    metal::float3 wo_32,
+    MsDielectric d_9,
+    metal::float3 wo_40,
     float uc_2,
-    metal::float2 u_25,
+    metal::float2 u_32,
     device type_7 const& ms_tables,
     constant _mslBufferSizes& _buffer_sizes
 ) {
-    bool local_39 = {};
     bool local_40 = {};
     bool local_41 = {};
     bool local_42 = {};
+    bool local_43 = {};
     MsBsdfSample none_3 = MsBsdfSample {metal::float3(0.0), 0.0, metal::float3(0.0), 0u, 1.0};
-    bool _e13 = ms_on_horizon(wo_32.z);
+    bool _e13 = ms_on_horizon(wo_40.z);
     if (_e13) {
         return none_3;
     }
-    bool _e14 = ms_dielectric_smooth(d_8);
+    bool _e14 = ms_dielectric_smooth(d_9);
     if (_e14) {
-        MsBsdfSample _e15 = ms_dielectric_sample_smooth(d_8, wo_32, uc_2);
+        MsBsdfSample _e15 = ms_dielectric_sample_smooth(d_9, wo_40, uc_2);
         return _e15;
     }
-    MsSample _e17 = ms_sample(d_8.mf, wo_32, u_25, ms_tables, _buffer_sizes);
-    metal::float3 wm_25 = _e17.wm;
-    float _e19 = ms_dot(wo_32, wm_25);
-    float _e21 = ms_fresnel_dielectric(_e19, d_8.eta);
+    MsSample _e17 = ms_sample(d_9.mf, wo_40, u_32, ms_tables, _buffer_sizes);
+    metal::float3 wm_37 = _e17.wm;
+    float _e19 = ms_dot(wo_40, wm_37);
+    float _e21 = ms_fresnel_dielectric(_e19, d_9.eta);
     if (uc_2 < _e21) {
-        metal::float3 _e23 = ms_reflect(wo_32, wm_25);
-        bool _e24 = ms_same_hemisphere(wo_32, _e23);
+        metal::float3 _e23 = ms_reflect(wo_40, wm_37);
+        bool _e24 = ms_same_hemisphere(wo_40, _e23);
         if (!(!(_e24))) {
             bool _e30 = ms_on_horizon(_e23.z);
-            local_39 = _e30;
+            local_40 = _e30;
         } else {
-            local_39 = true;
+            local_40 = true;
         }
-        bool _e32 = local_39;
+        bool _e32 = local_40;
         if (_e32) {
             return none_3;
         }
-        float _e34 = ms_d(d_8.mf, wm_25, ms_tables, _buffer_sizes);
+        float _e34 = ms_d(d_9.mf, wm_37, ms_tables, _buffer_sizes);
         bool _e35 = ms_usable(_e34);
         if (!(_e35)) {
             return none_3;
         }
-        float _e39 = ms_reflected(d_8.mf, d_8.masking, wo_32, _e23, _e34, ms_tables, _buffer_sizes);
+        float _e39 = ms_reflected(d_9.mf, d_9.masking, wo_40, _e23, _e34, ms_tables, _buffer_sizes);
         float f_5 = _e21 * _e39;
         float pdf_1 = (_e17.pdf * _e21) / (4.0 * metal::abs(_e19));
         bool _e47 = ms_usable(pdf_1);
         if (!(!(_e47))) {
-            local_40 = !((f_5 <= 340282350000000000000000000000000000000.0));
+            local_41 = !((f_5 <= 340282350000000000000000000000000000000.0));
         } else {
-            local_40 = true;
+            local_41 = true;
         }
-        bool _e56 = local_40;
+        bool _e56 = local_41;
         if (_e56) {
             return none_3;
         }
         return MsBsdfSample {_e23, pdf_1, metal::float3(f_5), MS_SAMPLE_VALID, 1.0};
     }
-    metal::float4 _e62 = ms_refract(wo_32, wm_25, d_8.eta);
+    metal::float4 _e62 = ms_refract(wo_40, wm_37, d_9.eta);
     if (_e62.w == 0.0) {
         return none_3;
     }
-    metal::float3 wi_44 = _e62.xyz;
+    metal::float3 wi_52 = _e62.xyz;
     float etap_6 = _e62.w;
-    bool _e68 = ms_same_hemisphere(wo_32, wi_44);
+    bool _e68 = ms_same_hemisphere(wo_40, wi_52);
     if (!(_e68)) {
-        bool _e73 = ms_on_horizon(wi_44.z);
-        local_41 = _e73;
+        bool _e73 = ms_on_horizon(wi_52.z);
+        local_42 = _e73;
     } else {
-        local_41 = true;
+        local_42 = true;
     }
-    bool _e75 = local_41;
+    bool _e75 = local_42;
     if (_e75) {
         return none_3;
     }
     float t_14 = 1.0 - _e21;
-    float _e80 = ms_jacobian_refraction(wo_32, wi_44, wm_25, etap_6);
+    float _e80 = ms_jacobian_refraction(wo_40, wi_52, wm_37, etap_6);
     float pdf_2 = (_e17.pdf * t_14) * _e80;
-    float _e83 = ms_d(d_8.mf, wm_25, ms_tables, _buffer_sizes);
+    float _e83 = ms_d(d_9.mf, wm_37, ms_tables, _buffer_sizes);
     bool _e84 = ms_usable(_e83);
     if (!(_e84)) {
         return none_3;
     }
-    float _e86 = ms_dielectric_f_transmission(d_8, wo_32, wi_44, wm_25, _e83, etap_6, t_14, ms_tables, _buffer_sizes);
+    float _e86 = ms_dielectric_f_transmission(d_9, wo_40, wi_52, wm_37, _e83, etap_6, t_14, ms_tables, _buffer_sizes);
     bool _e87 = ms_usable(pdf_2);
     if (!(!(_e87))) {
-        local_42 = !((_e86 <= 340282350000000000000000000000000000000.0));
+        local_43 = !((_e86 <= 340282350000000000000000000000000000000.0));
     } else {
-        local_42 = true;
+        local_43 = true;
     }
-    bool _e96 = local_42;
+    bool _e96 = local_43;
     if (_e96) {
         return none_3;
     }
-    return MsBsdfSample {wi_44, pdf_2, metal::float3(_e86), 5u, etap_6};
+    return MsBsdfSample {wi_52, pdf_2, metal::float3(_e86), 5u, etap_6};
 }
 
 MsLutTap ms_lut_tap(
@@ -3741,8 +4377,8 @@ MsLutTap ms_lut_tap(
     uint n_8
 ) {
     float t_15 = metal::clamp((x_12 * static_cast<float>(n_8)) - 0.5, 0.0, static_cast<float>(n_8 - 1u));
-    uint i_10 = metal::min(naga_f2u32(metal::floor(t_15)), n_8 - 2u);
-    return MsLutTap {i_10, t_15 - static_cast<float>(i_10)};
+    uint i_12 = metal::min(naga_f2u32(metal::floor(t_15)), n_8 - 2u);
+    return MsLutTap {i_12, t_15 - static_cast<float>(i_12)};
 }
 
 MsLutTap ms_lut_tap_edges(
@@ -3750,8 +4386,8 @@ MsLutTap ms_lut_tap_edges(
     uint n_9
 ) {
     float t_16 = metal::clamp(x_13 * static_cast<float>(n_9 - 1u), 0.0, static_cast<float>(n_9 - 1u));
-    uint i_11 = metal::min(naga_f2u32(metal::floor(t_16)), n_9 - 2u);
-    return MsLutTap {i_11, t_16 - static_cast<float>(i_11)};
+    uint i_13 = metal::min(naga_f2u32(metal::floor(t_16)), n_9 - 2u);
+    return MsLutTap {i_13, t_16 - static_cast<float>(i_13)};
 }
 
 uint ms_lut_index(
@@ -3784,10 +4420,10 @@ float ms_lut_bilerp(
 }
 
 float ms_lut_roughness_coord(
-    metal::float2 alpha_57,
+    metal::float2 alpha_92,
     float alpha_max
 ) {
-    return metal::sqrt(metal::sqrt(alpha_57.x * alpha_57.y) / alpha_max);
+    return metal::sqrt(metal::sqrt(alpha_92.x * alpha_92.y) / alpha_max);
 }
 
 metal::float3 ms_kulla_conty_f_ms(
@@ -3810,9 +4446,9 @@ float ms_kulla_conty_lobe(
 }
 
 metal::float3 ms_conductor_eval_kulla_conty(
-    MsConductor c_11,
-    metal::float3 wo_33,
-    metal::float3 wi_30,
+    MsConductor c_12,
+    metal::float3 wo_41,
+    metal::float3 wi_38,
     float e_o_1,
     float e_i_1,
     float e_avg_2,
@@ -3820,8 +4456,8 @@ metal::float3 ms_conductor_eval_kulla_conty(
     device type_7 const& ms_tables,
     constant _mslBufferSizes& _buffer_sizes
 ) {
-    metal::float3 _e7 = ms_conductor_eval(c_11, wo_33, wi_30, ms_tables, _buffer_sizes);
-    if (!(((wo_33.z * wi_30.z) > 0.0))) {
+    metal::float3 _e7 = ms_conductor_eval(c_12, wo_41, wi_38, ms_tables, _buffer_sizes);
+    if (!(((wo_41.z * wi_38.z) > 0.0))) {
         return _e7;
     }
     float _e14 = ms_kulla_conty_lobe(e_o_1, e_i_1, e_avg_2);
@@ -3836,15 +4472,15 @@ metal::float3 ms_turquin_scale(
 }
 
 metal::float3 ms_conductor_eval_turquin(
-    MsConductor c_12,
-    metal::float3 wo_34,
-    metal::float3 wi_31,
+    MsConductor c_13,
+    metal::float3 wo_42,
+    metal::float3 wi_39,
     float e_o_3,
     metal::float3 f0_3,
     device type_7 const& ms_tables,
     constant _mslBufferSizes& _buffer_sizes
 ) {
-    metal::float3 _e5 = ms_conductor_eval(c_12, wo_34, wi_31, ms_tables, _buffer_sizes);
+    metal::float3 _e5 = ms_conductor_eval(c_13, wo_42, wi_39, ms_tables, _buffer_sizes);
     metal::float3 _e6 = ms_turquin_scale(e_o_3, f0_3);
     return _e5 * _e6;
 }
@@ -3856,108 +4492,108 @@ float ms_kulla_conty_p_ms(
 }
 
 float ms_cosine_pdf_same_side(
-    metal::float3 wo_35,
-    metal::float3 wi_32
+    metal::float3 wo_43,
+    metal::float3 wi_40
 ) {
-    if (!(((wo_35.z * wi_32.z) > 0.0))) {
+    if (!(((wo_43.z * wi_40.z) > 0.0))) {
         return 0.0;
     }
-    return metal::abs(wi_32.z) / MS_PI;
+    return metal::abs(wi_40.z) / MS_PI;
 }
 
 float ms_conductor_pdf_kulla_conty(
-    MsConductor c_13,
-    metal::float3 wo_36,
-    metal::float3 wi_33,
+    MsConductor c_14,
+    metal::float3 wo_44,
+    metal::float3 wi_41,
     float e_o_5,
     device type_7 const& ms_tables,
     constant _mslBufferSizes& _buffer_sizes
 ) {
     float _e4 = ms_kulla_conty_p_ms(e_o_5);
-    float _e7 = ms_conductor_pdf(c_13, wo_36, wi_33, ms_tables, _buffer_sizes);
-    float _e9 = ms_cosine_pdf_same_side(wo_36, wi_33);
+    float _e7 = ms_conductor_pdf(c_14, wo_44, wi_41, ms_tables, _buffer_sizes);
+    float _e9 = ms_cosine_pdf_same_side(wo_44, wi_41);
     return ((1.0 - _e4) * _e7) + (_e4 * _e9);
 }
 
 metal::float3 ms_cosine_hemisphere(
-    metal::float2 u_26
+    metal::float2 u_33
 ) {
-    float r_22 = metal::sqrt(u_26.x);
-    metal::float2 _e4 = ms_cos_sin_turn(u_26.y);
-    return metal::float3(r_22 * _e4.x, r_22 * _e4.y, metal::sqrt(metal::max(1.0 - u_26.x, 0.0)));
+    float r_25 = metal::sqrt(u_33.x);
+    metal::float2 _e4 = ms_cos_sin_turn(u_33.y);
+    return metal::float3(r_25 * _e4.x, r_25 * _e4.y, metal::sqrt(metal::max(1.0 - u_33.x, 0.0)));
 }
 
 MsBsdfSample ms_conductor_sample_kulla_conty(
-    MsConductor c_14,
-    metal::float3 wo_37,
+    MsConductor c_15,
+    metal::float3 wo_45,
     float uc_3,
-    metal::float2 u_27,
+    metal::float2 u_34,
     float e_o_6,
     device type_7 const& ms_tables,
     constant _mslBufferSizes& _buffer_sizes
 ) {
-    metal::float3 wi_34 = {};
-    bool local_43 = {};
+    metal::float3 wi_42 = {};
+    bool local_44 = {};
     MsBsdfSample none_4 = MsBsdfSample {metal::float3(0.0), 0.0, metal::float3(0.0), 0u, 1.0};
-    bool _e14 = ms_on_horizon(wo_37.z);
+    bool _e14 = ms_on_horizon(wo_45.z);
     if (_e14) {
         return none_4;
     }
     float _e15 = ms_kulla_conty_p_ms(e_o_6);
     if (uc_3 < _e15) {
-        metal::float3 _e18 = ms_cosine_hemisphere(u_27);
-        wi_34 = _e18;
-        if (wo_37.z < 0.0) {
-            float _e24 = wi_34.z;
-            wi_34.z = -(_e24);
+        metal::float3 _e18 = ms_cosine_hemisphere(u_34);
+        wi_42 = _e18;
+        if (wo_45.z < 0.0) {
+            float _e24 = wi_42.z;
+            wi_42.z = -(_e24);
         }
     } else {
-        MsBsdfSample _e30 = ms_conductor_sample(c_14, wo_37, (uc_3 - _e15) / (1.0 - _e15), u_27, ms_tables, _buffer_sizes);
+        MsBsdfSample _e30 = ms_conductor_sample(c_15, wo_45, (uc_3 - _e15) / (1.0 - _e15), u_34, ms_tables, _buffer_sizes);
         if (!(((_e30.flags & MS_SAMPLE_VALID) == 0u))) {
-            local_43 = (_e30.flags & MS_SAMPLE_SPECULAR) != 0u;
+            local_44 = (_e30.flags & MS_SAMPLE_SPECULAR) != 0u;
         } else {
-            local_43 = true;
+            local_44 = true;
         }
-        bool _e45 = local_43;
+        bool _e45 = local_44;
         if (_e45) {
             return _e30;
         }
-        wi_34 = _e30.wi;
+        wi_42 = _e30.wi;
     }
-    metal::float3 _e47 = wi_34;
-    float _e48 = ms_conductor_pdf_kulla_conty(c_14, wo_37, _e47, e_o_6, ms_tables, _buffer_sizes);
+    metal::float3 _e47 = wi_42;
+    float _e48 = ms_conductor_pdf_kulla_conty(c_15, wo_45, _e47, e_o_6, ms_tables, _buffer_sizes);
     bool _e49 = ms_usable(_e48);
     if (!(_e49)) {
         return none_4;
     }
-    metal::float3 _e51 = wi_34;
-    metal::float3 _e52 = wi_34;
-    metal::float3 _e53 = ms_conductor_eval(c_14, wo_37, _e52, ms_tables, _buffer_sizes);
+    metal::float3 _e51 = wi_42;
+    metal::float3 _e52 = wi_42;
+    metal::float3 _e53 = ms_conductor_eval(c_15, wo_45, _e52, ms_tables, _buffer_sizes);
     return MsBsdfSample {_e51, _e48, _e53, MS_SAMPLE_VALID, 1.0};
 }
 
 MsBsdfSample ms_kulla_conty_sample_f(
     MsBsdfSample s_6,
-    metal::float3 wo_38,
+    metal::float3 wo_46,
     float e_o_7,
     float e_i_2,
     float e_avg_3,
     metal::float3 f_ms_1
 ) {
-    bool local_44 = {};
     bool local_45 = {};
+    bool local_46 = {};
     if (!(((s_6.flags & MS_SAMPLE_VALID) == 0u))) {
-        local_44 = (s_6.flags & MS_SAMPLE_SPECULAR) != 0u;
-    } else {
-        local_44 = true;
-    }
-    bool _e20 = local_44;
-    if (!(_e20)) {
-        local_45 = !(((wo_38.z * s_6.wi[2]) > 0.0));
+        local_45 = (s_6.flags & MS_SAMPLE_SPECULAR) != 0u;
     } else {
         local_45 = true;
     }
-    bool _e32 = local_45;
+    bool _e20 = local_45;
+    if (!(_e20)) {
+        local_46 = !(((wo_46.z * s_6.wi[2]) > 0.0));
+    } else {
+        local_46 = true;
+    }
+    bool _e32 = local_46;
     if (_e32) {
         return s_6;
     }
@@ -3966,23 +4602,23 @@ MsBsdfSample ms_kulla_conty_sample_f(
 }
 
 MsBsdfSample ms_conductor_sample_turquin(
-    MsConductor c_15,
-    metal::float3 wo_39,
+    MsConductor c_16,
+    metal::float3 wo_47,
     float uc_4,
-    metal::float2 u_28,
+    metal::float2 u_35,
     float e_o_8,
     metal::float3 f0_4,
     device type_7 const& ms_tables,
     constant _mslBufferSizes& _buffer_sizes
 ) {
-    bool local_46 = {};
-    MsBsdfSample _e6 = ms_conductor_sample(c_15, wo_39, uc_4, u_28, ms_tables, _buffer_sizes);
+    bool local_47 = {};
+    MsBsdfSample _e6 = ms_conductor_sample(c_16, wo_47, uc_4, u_35, ms_tables, _buffer_sizes);
     if (!(((_e6.flags & MS_SAMPLE_VALID) == 0u))) {
-        local_46 = (_e6.flags & MS_SAMPLE_SPECULAR) != 0u;
+        local_47 = (_e6.flags & MS_SAMPLE_SPECULAR) != 0u;
     } else {
-        local_46 = true;
+        local_47 = true;
     }
-    bool _e21 = local_46;
+    bool _e21 = local_47;
     if (_e21) {
         return _e6;
     }
@@ -4021,7 +4657,7 @@ float ms_lut_trilerp(
     uint b_6 = 0u;
     metal::float2 we = metal::float2(1.0 - e.f, e.f);
     metal::float2 wr = metal::float2(1.0 - r_1.f, r_1.f);
-    metal::float2 wm_26 = metal::float2(1.0 - m_5.f, m_5.f);
+    metal::float2 wm_38 = metal::float2(1.0 - m_5.f, m_5.f);
     uint2 loop_bound_8 = uint2(4294967295u);
     bool loop_init_8 = true;
     while(true) {
@@ -4046,7 +4682,7 @@ float ms_lut_trilerp(
             uint _e40 = b_6;
             uint _e44 = b_6;
             uint _e51 = b_6;
-            s_7 = _e39 + (((we[_e40 & 1u] * wr[(_e44 >> 1u) & 1u]) * wm_26[_e51 >> 2u]) * v_12);
+            s_7 = _e39 + (((we[_e40 & 1u] * wr[(_e44 >> 1u) & 1u]) * wm_38[_e51 >> 2u]) * v_12);
         }
     }
     float _e61 = s_7;
@@ -4094,64 +4730,64 @@ metal::float2 ms_dielectric_kulla_conty_k(
     float f_avg_1,
     metal::float2 e_avg_4
 ) {
-    metal::float2 k_8 = {};
+    metal::float2 k_9 = {};
     float k_out = 1.0 - f_avg_1;
-    k_8 = metal::float2(k_out, (k_out * (1.0 - e_avg_4.x)) / ((eta_5 * eta_5) * (1.0 - e_avg_4.y)));
-    float _e18 = k_8.y;
+    k_9 = metal::float2(k_out, (k_out * (1.0 - e_avg_4.x)) / ((eta_5 * eta_5) * (1.0 - e_avg_4.y)));
+    float _e18 = k_9.y;
     if (!((_e18 <= 1.0))) {
-        metal::float2 _e22 = k_8;
-        float _e24 = k_8.y;
-        float _e28 = k_8.y;
-        k_8 = _e22 * ((_e28 > 1.0) ? (1.0 / _e24) : 0.0);
+        metal::float2 _e22 = k_9;
+        float _e24 = k_9.y;
+        float _e28 = k_9.y;
+        k_9 = _e22 * ((_e28 > 1.0) ? (1.0 / _e24) : 0.0);
     }
-    metal::float2 _e34 = k_8;
+    metal::float2 _e34 = k_9;
     return _e34;
 }
 
 float ms_dielectric_kulla_conty_lobe(
-    MsDielectric d_9,
-    metal::float3 wo_40,
-    metal::float3 wi_35,
+    MsDielectric d_10,
+    metal::float3 wo_48,
+    metal::float3 wi_43,
     float e_o_9,
     float e_i_3,
     float e_avg_i,
     float k_o
 ) {
-    bool local_47 = {};
     bool local_48 = {};
-    float f_4 = {};
     bool local_49 = {};
-    if (metal::abs(wo_40.z) > 0.0) {
-        local_47 = metal::abs(wi_35.z) > 0.0;
+    float f_4 = {};
+    bool local_50 = {};
+    if (metal::abs(wo_48.z) > 0.0) {
+        local_48 = metal::abs(wi_43.z) > 0.0;
     } else {
-        local_47 = false;
+        local_48 = false;
     }
-    bool _e18 = local_47;
+    bool _e18 = local_48;
     if (!(_e18)) {
         return 0.0;
     }
     float lost = 1.0 - e_o_9;
-    bool crossed = (wi_35.z < 0.0) != (wo_40.z < 0.0);
+    bool crossed = (wi_43.z < 0.0) != (wo_48.z < 0.0);
     float share = crossed ? k_o : (1.0 - k_o);
     float den_4 = MS_PI * (1.0 - e_avg_i);
     if (den_4 > 0.0) {
-        local_48 = lost > 0.0;
+        local_49 = lost > 0.0;
     } else {
-        local_48 = false;
+        local_49 = false;
     }
-    bool _e44 = local_48;
+    bool _e44 = local_49;
     if (!(_e44)) {
         return 0.0;
     }
     f_4 = ((share * lost) * metal::max(1.0 - e_i_3, 0.0)) / den_4;
     if (crossed) {
-        local_49 = d_9.transport == MS_TRANSPORT_RADIANCE;
+        local_50 = d_10.transport == MS_TRANSPORT_RADIANCE;
     } else {
-        local_49 = false;
+        local_50 = false;
     }
-    bool _e61 = local_49;
+    bool _e61 = local_50;
     if (_e61) {
-        float etap_7 = (wo_40.z > 0.0) ? d_9.eta : (1.0 / d_9.eta);
+        float etap_7 = (wo_48.z > 0.0) ? d_10.eta : (1.0 / d_10.eta);
         float _e70 = f_4;
         f_4 = _e70 / (etap_7 * etap_7);
     }
@@ -4160,9 +4796,9 @@ float ms_dielectric_kulla_conty_lobe(
 }
 
 float ms_dielectric_eval_kulla_conty(
-    MsDielectric d_10,
-    metal::float3 wo_41,
-    metal::float3 wi_36,
+    MsDielectric d_11,
+    metal::float3 wo_49,
+    metal::float3 wi_44,
     float e_o_10,
     float e_i_4,
     float e_avg_i_1,
@@ -4170,32 +4806,32 @@ float ms_dielectric_eval_kulla_conty(
     device type_7 const& ms_tables,
     constant _mslBufferSizes& _buffer_sizes
 ) {
-    float _e7 = ms_dielectric_eval(d_10, wo_41, wi_36, ms_tables, _buffer_sizes);
-    bool _e8 = ms_dielectric_smooth(d_10);
+    float _e7 = ms_dielectric_eval(d_11, wo_49, wi_44, ms_tables, _buffer_sizes);
+    bool _e8 = ms_dielectric_smooth(d_11);
     if (_e8) {
         return _e7;
     }
-    float _e9 = ms_dielectric_kulla_conty_lobe(d_10, wo_41, wi_36, e_o_10, e_i_4, e_avg_i_1, k_o_1);
+    float _e9 = ms_dielectric_kulla_conty_lobe(d_11, wo_49, wi_44, e_o_10, e_i_4, e_avg_i_1, k_o_1);
     return _e7 + _e9;
 }
 
 float ms_dielectric_eval_turquin(
-    MsDielectric d_11,
-    metal::float3 wo_42,
-    metal::float3 wi_37,
+    MsDielectric d_12,
+    metal::float3 wo_50,
+    metal::float3 wi_45,
     float e_o_11,
     device type_7 const& ms_tables,
     constant _mslBufferSizes& _buffer_sizes
 ) {
-    bool local_50 = {};
-    float _e4 = ms_dielectric_eval(d_11, wo_42, wi_37, ms_tables, _buffer_sizes);
-    bool _e5 = ms_dielectric_smooth(d_11);
+    bool local_51 = {};
+    float _e4 = ms_dielectric_eval(d_12, wo_50, wi_45, ms_tables, _buffer_sizes);
+    bool _e5 = ms_dielectric_smooth(d_12);
     if (!(_e5)) {
-        local_50 = !((e_o_11 > 0.0));
+        local_51 = !((e_o_11 > 0.0));
     } else {
-        local_50 = true;
+        local_51 = true;
     }
-    bool _e13 = local_50;
+    bool _e13 = local_51;
     if (_e13) {
         return _e4;
     }
@@ -4203,152 +4839,152 @@ float ms_dielectric_eval_turquin(
 }
 
 float ms_dielectric_kulla_conty_lobe_pdf(
-    metal::float3 wo_43,
-    metal::float3 wi_38,
+    metal::float3 wo_51,
+    metal::float3 wi_46,
     float k_o_2
 ) {
-    bool crossed_1 = (wi_38.z < 0.0) != (wo_43.z < 0.0);
+    bool crossed_1 = (wi_46.z < 0.0) != (wo_51.z < 0.0);
     float side = crossed_1 ? k_o_2 : (1.0 - k_o_2);
-    return (side * metal::abs(wi_38.z)) / MS_PI;
+    return (side * metal::abs(wi_46.z)) / MS_PI;
 }
 
 float ms_dielectric_pdf_kulla_conty(
-    MsDielectric d_12,
-    metal::float3 wo_44,
-    metal::float3 wi_39,
+    MsDielectric d_13,
+    metal::float3 wo_52,
+    metal::float3 wi_47,
     float e_o_12,
     float k_o_3,
     device type_7 const& ms_tables,
     constant _mslBufferSizes& _buffer_sizes
 ) {
-    float _e5 = ms_dielectric_pdf(d_12, wo_44, wi_39, ms_tables, _buffer_sizes);
-    bool _e6 = ms_dielectric_smooth(d_12);
+    float _e5 = ms_dielectric_pdf(d_13, wo_52, wi_47, ms_tables, _buffer_sizes);
+    bool _e6 = ms_dielectric_smooth(d_13);
     if (_e6) {
         return _e5;
     }
     float _e7 = ms_kulla_conty_p_ms(e_o_12);
-    float _e11 = ms_dielectric_kulla_conty_lobe_pdf(wo_44, wi_39, k_o_3);
+    float _e11 = ms_dielectric_kulla_conty_lobe_pdf(wo_52, wi_47, k_o_3);
     return ((1.0 - _e7) * _e5) + (_e7 * _e11);
 }
 
 MsBsdfSample ms_dielectric_sample_kulla_conty(
-    MsDielectric d_13,
-    metal::float3 wo_45,
+    MsDielectric d_14,
+    metal::float3 wo_53,
     float uc_5,
-    metal::float2 u_29,
+    metal::float2 u_36,
     float e_o_13,
     float k_o_4,
     device type_7 const& ms_tables,
     constant _mslBufferSizes& _buffer_sizes
 ) {
-    metal::float3 wi_40 = {};
-    bool local_51 = {};
+    metal::float3 wi_48 = {};
     bool local_52 = {};
+    bool local_53 = {};
     MsBsdfSample none_5 = MsBsdfSample {metal::float3(0.0), 0.0, metal::float3(0.0), 0u, 1.0};
-    bool _e15 = ms_on_horizon(wo_45.z);
+    bool _e15 = ms_on_horizon(wo_53.z);
     if (_e15) {
         return none_5;
     }
-    bool _e16 = ms_dielectric_smooth(d_13);
+    bool _e16 = ms_dielectric_smooth(d_14);
     if (_e16) {
-        MsBsdfSample _e17 = ms_dielectric_sample(d_13, wo_45, uc_5, u_29, ms_tables, _buffer_sizes);
+        MsBsdfSample _e17 = ms_dielectric_sample(d_14, wo_53, uc_5, u_36, ms_tables, _buffer_sizes);
         return _e17;
     }
     float _e18 = ms_kulla_conty_p_ms(e_o_13);
     if (uc_5 < _e18) {
         bool crossed_2 = (uc_5 / _e18) < k_o_4;
-        metal::float3 _e23 = ms_cosine_hemisphere(u_29);
-        wi_40 = _e23;
-        if ((wo_45.z > 0.0) == crossed_2) {
-            float _e30 = wi_40.z;
-            wi_40.z = -(_e30);
+        metal::float3 _e23 = ms_cosine_hemisphere(u_36);
+        wi_48 = _e23;
+        if ((wo_53.z > 0.0) == crossed_2) {
+            float _e30 = wi_48.z;
+            wi_48.z = -(_e30);
         }
     } else {
-        MsBsdfSample _e38 = ms_dielectric_sample(d_13, wo_45, metal::min((uc_5 - _e18) / (1.0 - _e18), 0.99999994), u_29, ms_tables, _buffer_sizes);
+        MsBsdfSample _e38 = ms_dielectric_sample(d_14, wo_53, metal::min((uc_5 - _e18) / (1.0 - _e18), 0.99999994), u_36, ms_tables, _buffer_sizes);
         if (!(((_e38.flags & MS_SAMPLE_VALID) == 0u))) {
-            local_51 = (_e38.flags & MS_SAMPLE_SPECULAR) != 0u;
+            local_52 = (_e38.flags & MS_SAMPLE_SPECULAR) != 0u;
         } else {
-            local_51 = true;
+            local_52 = true;
         }
-        bool _e53 = local_51;
+        bool _e53 = local_52;
         if (_e53) {
             return _e38;
         }
-        wi_40 = _e38.wi;
+        wi_48 = _e38.wi;
     }
-    metal::float3 _e55 = wi_40;
-    float _e56 = ms_dielectric_pdf_kulla_conty(d_13, wo_45, _e55, e_o_13, k_o_4, ms_tables, _buffer_sizes);
+    metal::float3 _e55 = wi_48;
+    float _e56 = ms_dielectric_pdf_kulla_conty(d_14, wo_53, _e55, e_o_13, k_o_4, ms_tables, _buffer_sizes);
     bool _e57 = ms_usable(_e56);
     if (!(!(_e57))) {
-        float _e63 = wi_40.z;
-        local_52 = _e63 == 0.0;
+        float _e63 = wi_48.z;
+        local_53 = _e63 == 0.0;
     } else {
-        local_52 = true;
+        local_53 = true;
     }
-    bool _e67 = local_52;
+    bool _e67 = local_53;
     if (_e67) {
         return none_5;
     }
-    metal::float3 _e68 = wi_40;
-    float _e69 = ms_dielectric_eval(d_13, wo_45, _e68, ms_tables, _buffer_sizes);
+    metal::float3 _e68 = wi_48;
+    float _e69 = ms_dielectric_eval(d_14, wo_53, _e68, ms_tables, _buffer_sizes);
     metal::float3 f_7 = metal::float3(_e69);
-    float _e72 = wi_40.z;
-    if ((_e72 < 0.0) != (wo_45.z < 0.0)) {
-        float etap_8 = (wo_45.z > 0.0) ? d_13.eta : (1.0 / d_13.eta);
-        metal::float3 _e87 = wi_40;
+    float _e72 = wi_48.z;
+    if ((_e72 < 0.0) != (wo_53.z < 0.0)) {
+        float etap_8 = (wo_53.z > 0.0) ? d_14.eta : (1.0 / d_14.eta);
+        metal::float3 _e87 = wi_48;
         return MsBsdfSample {_e87, _e56, f_7, 5u, etap_8};
     }
-    metal::float3 _e90 = wi_40;
+    metal::float3 _e90 = wi_48;
     return MsBsdfSample {_e90, _e56, f_7, MS_SAMPLE_VALID, 1.0};
 }
 
 MsBsdfSample ms_dielectric_kulla_conty_sample_f(
     MsBsdfSample s_9,
-    MsDielectric d_14,
-    metal::float3 wo_46,
+    MsDielectric d_15,
+    metal::float3 wo_54,
     float e_o_14,
     float e_i_5,
     float e_avg_i_2,
     float k_o_5
 ) {
-    bool local_53 = {};
+    bool local_54 = {};
     if (!(((s_9.flags & MS_SAMPLE_VALID) == 0u))) {
-        local_53 = (s_9.flags & MS_SAMPLE_SPECULAR) != 0u;
+        local_54 = (s_9.flags & MS_SAMPLE_SPECULAR) != 0u;
     } else {
-        local_53 = true;
+        local_54 = true;
     }
-    bool _e21 = local_53;
+    bool _e21 = local_54;
     if (_e21) {
         return s_9;
     }
-    float _e23 = ms_dielectric_kulla_conty_lobe(d_14, wo_46, s_9.wi, e_o_14, e_i_5, e_avg_i_2, k_o_5);
+    float _e23 = ms_dielectric_kulla_conty_lobe(d_15, wo_54, s_9.wi, e_o_14, e_i_5, e_avg_i_2, k_o_5);
     return MsBsdfSample {s_9.wi, s_9.pdf, s_9.f + metal::float3(_e23), s_9.flags, s_9.eta};
 }
 
 MsBsdfSample ms_dielectric_sample_turquin(
-    MsDielectric d_15,
-    metal::float3 wo_47,
+    MsDielectric d_16,
+    metal::float3 wo_55,
     float uc_6,
-    metal::float2 u_30,
+    metal::float2 u_37,
     float e_o_15,
     device type_7 const& ms_tables,
     constant _mslBufferSizes& _buffer_sizes
 ) {
-    bool local_54 = {};
     bool local_55 = {};
-    MsBsdfSample _e5 = ms_dielectric_sample(d_15, wo_47, uc_6, u_30, ms_tables, _buffer_sizes);
+    bool local_56 = {};
+    MsBsdfSample _e5 = ms_dielectric_sample(d_16, wo_55, uc_6, u_37, ms_tables, _buffer_sizes);
     if (!(((_e5.flags & MS_SAMPLE_VALID) == 0u))) {
-        local_54 = (_e5.flags & MS_SAMPLE_SPECULAR) != 0u;
-    } else {
-        local_54 = true;
-    }
-    bool _e20 = local_54;
-    if (!(_e20)) {
-        local_55 = !((e_o_15 > 0.0));
+        local_55 = (_e5.flags & MS_SAMPLE_SPECULAR) != 0u;
     } else {
         local_55 = true;
     }
-    bool _e28 = local_55;
+    bool _e20 = local_55;
+    if (!(_e20)) {
+        local_56 = !((e_o_15 > 0.0));
+    } else {
+        local_56 = true;
+    }
+    bool _e28 = local_56;
     if (_e28) {
         return _e5;
     }
@@ -4369,12 +5005,12 @@ uint ms_k_index(
     device type_7 const& ms_in,
     constant _mslBufferSizes& _buffer_sizes
 ) {
-    uint i_12 = id_13.x + ((id_13.y * groups_13.x) * 64u);
+    uint i_14 = id_13.x + ((id_13.y * groups_13.x) * 64u);
     uint n_13 = naga_div(1 + (_buffer_sizes.size1 - 0 - 16) / 16, MS_K_IN);
-    if (i_12 >= n_13) {
+    if (i_14 >= n_13) {
         return n_13;
     }
-    return i_12;
+    return i_14;
 }
 
 MsMicrofacet ms_k_microfacet(
@@ -4427,18 +5063,18 @@ kernel void ms_k_ggx_eval(
     metal::float4 _e12 = ms_in[_e2 * MS_K_IN];
     metal::float2 a_25 = _e12.xy;
     metal::float4 _e20 = ms_in[(_e2 * MS_K_IN) + 1u];
-    metal::float3 wo_48 = _e20.xyz;
+    metal::float3 wo_56 = _e20.xyz;
     metal::float4 _e28 = ms_in[(_e2 * MS_K_IN) + 2u];
-    metal::float3 wm_27 = _e28.xyz;
-    float _e34 = ms_ggx_d(wm_27, a_25);
-    float _e35 = ms_ggx_lambda(wo_48, a_25);
-    float _e36 = ms_ggx_g1_(wo_48, a_25);
-    float _e37 = ms_ggx_g2_(wo_48, wm_27, a_25);
+    metal::float3 wm_39 = _e28.xyz;
+    float _e34 = ms_ggx_d(wm_39, a_25);
+    float _e35 = ms_ggx_lambda(wo_56, a_25);
+    float _e36 = ms_ggx_g1_(wo_56, a_25);
+    float _e37 = ms_ggx_g2_(wo_56, wm_39, a_25);
     ms_out[_e2 * MS_K_OUT] = metal::float4(_e34, _e35, _e36, _e37);
-    float _e45 = ms_ggx_g2_separable(wo_48, wm_27, a_25);
-    float _e46 = ms_ggx_pdf(wo_48, wm_27, a_25);
-    float _e47 = ms_ggx_pdf_dcos(wm_27, a_25);
-    float _e48 = ms_ggx_pdf_bounded(wo_48, wm_27, a_25);
+    float _e45 = ms_ggx_g2_separable(wo_56, wm_39, a_25);
+    float _e46 = ms_ggx_pdf(wo_56, wm_39, a_25);
+    float _e47 = ms_ggx_pdf_dcos(wm_39, a_25);
+    float _e48 = ms_ggx_pdf_bounded(wo_56, wm_39, a_25);
     ms_out[(_e2 * MS_K_OUT) + 1u] = metal::float4(_e45, _e46, _e47, _e48);
     return;
 }
@@ -4461,18 +5097,18 @@ kernel void ms_k_beckmann_eval(
     metal::float4 _e12 = ms_in[_e2 * MS_K_IN];
     metal::float2 a_26 = _e12.xy;
     metal::float4 _e20 = ms_in[(_e2 * MS_K_IN) + 1u];
-    metal::float3 wo_49 = _e20.xyz;
+    metal::float3 wo_57 = _e20.xyz;
     metal::float4 _e28 = ms_in[(_e2 * MS_K_IN) + 2u];
-    metal::float3 wm_28 = _e28.xyz;
-    float _e34 = ms_beckmann_d(wm_28, a_26);
-    float _e35 = ms_beckmann_lambda(wo_49, a_26, ms_tables, _buffer_sizes);
-    float _e36 = ms_beckmann_g1_(wo_49, a_26, ms_tables, _buffer_sizes);
-    float _e37 = ms_beckmann_g2_(wo_49, wm_28, a_26, ms_tables, _buffer_sizes);
+    metal::float3 wm_40 = _e28.xyz;
+    float _e34 = ms_beckmann_d(wm_40, a_26);
+    float _e35 = ms_beckmann_lambda(wo_57, a_26, ms_tables, _buffer_sizes);
+    float _e36 = ms_beckmann_g1_(wo_57, a_26, ms_tables, _buffer_sizes);
+    float _e37 = ms_beckmann_g2_(wo_57, wm_40, a_26, ms_tables, _buffer_sizes);
     ms_out[_e2 * MS_K_OUT] = metal::float4(_e34, _e35, _e36, _e37);
-    float _e45 = ms_beckmann_g2_separable(wo_49, wm_28, a_26, ms_tables, _buffer_sizes);
-    float _e46 = ms_beckmann_pdf(wo_49, wm_28, a_26, ms_tables, _buffer_sizes);
-    float _e47 = ms_beckmann_pdf_dcos(wm_28, a_26);
-    float _e51 = ms_pdf(MsMicrofacet {MS_NDF_BECKMANN, {}, a_26, 0u}, wo_49, wm_28, ms_tables, _buffer_sizes);
+    float _e45 = ms_beckmann_g2_separable(wo_57, wm_40, a_26, ms_tables, _buffer_sizes);
+    float _e46 = ms_beckmann_pdf(wo_57, wm_40, a_26, ms_tables, _buffer_sizes);
+    float _e47 = ms_beckmann_pdf_dcos(wm_40, a_26);
+    float _e51 = ms_pdf(MsMicrofacet {MS_NDF_BECKMANN, {}, a_26, 0u}, wo_57, wm_40, ms_tables, _buffer_sizes);
     ms_out[(_e2 * MS_K_OUT) + 1u] = metal::float4(_e45, _e46, _e47, _e51);
     return;
 }
@@ -4494,8 +5130,8 @@ kernel void ms_k_beckmann_sample(
     }
     metal::float4 r0_3 = ms_in[_e2 * MS_K_IN];
     metal::float4 _e19 = ms_in[(_e2 * MS_K_IN) + 1u];
-    metal::float3 wo_50 = _e19.xyz;
-    MsSample _e26 = ms_sample(MsMicrofacet {MS_NDF_BECKMANN, {}, r0_3.xy, 0u}, wo_50, r0_3.zw, ms_tables, _buffer_sizes);
+    metal::float3 wo_58 = _e19.xyz;
+    MsSample _e26 = ms_sample(MsMicrofacet {MS_NDF_BECKMANN, {}, r0_3.xy, 0u}, wo_58, r0_3.zw, ms_tables, _buffer_sizes);
     MsSample _e29 = ms_beckmann_sample_dcos(r0_3.xy, r0_3.zw);
     ms_out[_e2 * MS_K_OUT] = metal::float4(_e26.wm, _e26.pdf);
     ms_out[(_e2 * MS_K_OUT) + 1u] = metal::float4(_e29.wm, _e29.pdf);
@@ -4518,8 +5154,8 @@ kernel void ms_k_ggx_sample(
     }
     metal::float4 r0_4 = ms_in[_e2 * MS_K_IN];
     metal::float4 _e19 = ms_in[(_e2 * MS_K_IN) + 1u];
-    metal::float3 wo_51 = _e19.xyz;
-    MsSample _e23 = ms_ggx_sample(wo_51, r0_4.xy, r0_4.zw);
+    metal::float3 wo_59 = _e19.xyz;
+    MsSample _e23 = ms_ggx_sample(wo_59, r0_4.xy, r0_4.zw);
     MsSample _e26 = ms_ggx_sample_dcos(r0_4.xy, r0_4.zw);
     ms_out[_e2 * MS_K_OUT] = metal::float4(_e23.wm, _e23.pdf);
     ms_out[(_e2 * MS_K_OUT) + 1u] = metal::float4(_e26.wm, _e26.pdf);
@@ -4542,12 +5178,12 @@ kernel void ms_k_ggx_bounded(
     }
     metal::float4 r0_5 = ms_in[_e2 * MS_K_IN];
     metal::float4 _e19 = ms_in[(_e2 * MS_K_IN) + 1u];
-    metal::float3 wo_52 = _e19.xyz;
+    metal::float3 wo_60 = _e19.xyz;
     metal::float4 _e27 = ms_in[(_e2 * MS_K_IN) + 2u];
-    metal::float3 wi_45 = _e27.xyz;
-    MsSample _e31 = ms_ggx_sample_bounded(wo_52, r0_5.xy, r0_5.zw);
+    metal::float3 wi_53 = _e27.xyz;
+    MsSample _e31 = ms_ggx_sample_bounded(wo_60, r0_5.xy, r0_5.zw);
     ms_out[_e2 * MS_K_OUT] = metal::float4(_e31.wm, _e31.pdf);
-    float _e46 = ms_ggx_pdf_bounded_reflection(wo_52, wi_45, r0_5.xy);
+    float _e46 = ms_ggx_pdf_bounded_reflection(wo_60, wi_53, r0_5.xy);
     ms_out[(_e2 * MS_K_OUT) + 1u] = metal::float4(_e46, 0.0, 0.0, 0.0);
     return;
 }
@@ -4566,15 +5202,15 @@ kernel void ms_k_fresnel(
     if (_e2 == naga_div(1 + (_buffer_sizes.size1 - 0 - 16) / 16, MS_K_IN)) {
         return;
     }
-    float c_23 = ms_in[(_e2 * MS_K_IN) + 1u].z;
+    float c_24 = ms_in[(_e2 * MS_K_IN) + 1u].z;
     MsConductor _e16 = ms_k_conductor(_e2, ms_in, _buffer_sizes);
     MsFresnel fr_2 = _e16.fresnel;
-    float _e24 = ms_fresnel_dielectric(c_23, _e16.fresnel.a.x);
-    float _e29 = ms_fresnel_conductor(c_23, _e16.fresnel.a.x, _e16.fresnel.b.x);
-    float _e32 = ms_fresnel_schlick(c_23, _e16.fresnel.a.x);
-    float _e37 = ms_fresnel_f82_tint(c_23, _e16.fresnel.a.x, _e16.fresnel.b.x);
+    float _e24 = ms_fresnel_dielectric(c_24, _e16.fresnel.a.x);
+    float _e29 = ms_fresnel_conductor(c_24, _e16.fresnel.a.x, _e16.fresnel.b.x);
+    float _e32 = ms_fresnel_schlick(c_24, _e16.fresnel.a.x);
+    float _e37 = ms_fresnel_f82_tint(c_24, _e16.fresnel.a.x, _e16.fresnel.b.x);
     ms_out[_e2 * MS_K_OUT] = metal::float4(_e24, _e29, _e32, _e37);
-    metal::float3 _e45 = ms_fresnel_eval(fr_2, c_23);
+    metal::float3 _e45 = ms_fresnel_eval(fr_2, c_24);
     ms_out[(_e2 * MS_K_OUT) + 1u] = metal::float4(_e45, 0.0);
     return;
 }
@@ -4596,13 +5232,13 @@ kernel void ms_k_conductor_eval(
     }
     MsConductor _e8 = ms_k_conductor(_e2, ms_in, _buffer_sizes);
     metal::float4 _e15 = ms_in[(_e2 * MS_K_IN) + 1u];
-    metal::float3 wo_53 = _e15.xyz;
+    metal::float3 wo_61 = _e15.xyz;
     metal::float4 _e23 = ms_in[(_e2 * MS_K_IN) + 2u];
-    metal::float3 wi_46 = _e23.xyz;
-    metal::float3 _e29 = ms_conductor_eval(_e8, wo_53, wi_46, ms_tables, _buffer_sizes);
-    float _e30 = ms_conductor_pdf(_e8, wo_53, wi_46, ms_tables, _buffer_sizes);
+    metal::float3 wi_54 = _e23.xyz;
+    metal::float3 _e29 = ms_conductor_eval(_e8, wo_61, wi_54, ms_tables, _buffer_sizes);
+    float _e30 = ms_conductor_pdf(_e8, wo_61, wi_54, ms_tables, _buffer_sizes);
     ms_out[_e2 * MS_K_OUT] = metal::float4(_e29, _e30);
-    metal::float4 _e38 = ms_conductor_eval_pdf(_e8, wo_53, wi_46, ms_tables, _buffer_sizes);
+    metal::float4 _e38 = ms_conductor_eval_pdf(_e8, wo_61, wi_54, ms_tables, _buffer_sizes);
     ms_out[(_e2 * MS_K_OUT) + 1u] = _e38;
     return;
 }
@@ -4648,11 +5284,11 @@ kernel void ms_k_dielectric_eval(
     }
     MsDielectric _e8 = ms_k_dielectric(_e2, ms_in, _buffer_sizes);
     metal::float4 _e15 = ms_in[(_e2 * MS_K_IN) + 1u];
-    metal::float3 wo_54 = _e15.xyz;
+    metal::float3 wo_62 = _e15.xyz;
     metal::float4 _e23 = ms_in[(_e2 * MS_K_IN) + 2u];
-    metal::float3 wi_47 = _e23.xyz;
-    float _e29 = ms_dielectric_eval(_e8, wo_54, wi_47, ms_tables, _buffer_sizes);
-    float _e30 = ms_dielectric_pdf(_e8, wo_54, wi_47, ms_tables, _buffer_sizes);
+    metal::float3 wi_55 = _e23.xyz;
+    float _e29 = ms_dielectric_eval(_e8, wo_62, wi_55, ms_tables, _buffer_sizes);
+    float _e30 = ms_dielectric_pdf(_e8, wo_62, wi_55, ms_tables, _buffer_sizes);
     ms_out[_e2 * MS_K_OUT] = metal::float4(_e29, _e30, 0.0, 0.0);
     ms_out[(_e2 * MS_K_OUT) + 1u] = metal::float4(0.0);
     return;
@@ -4699,19 +5335,19 @@ kernel void ms_k_family_eval(
     }
     metal::float4 r0_8 = ms_in[_e2 * MS_K_IN];
     metal::float4 _e19 = ms_in[(_e2 * MS_K_IN) + 1u];
-    metal::float3 wo_55 = _e19.xyz;
+    metal::float3 wo_63 = _e19.xyz;
     metal::float4 r2_3 = ms_in[(_e2 * MS_K_IN) + 2u];
-    metal::float3 wm_29 = r2_3.xyz;
+    metal::float3 wm_41 = r2_3.xyz;
     MsMicrofacet _e29 = ms_k_microfacet(r0_8, r2_3);
-    float _e34 = ms_d(_e29, wm_29, ms_tables, _buffer_sizes);
-    float _e35 = ms_lambda(_e29, wo_55, ms_tables, _buffer_sizes);
-    float _e36 = ms_g1_(_e29, wo_55, ms_tables, _buffer_sizes);
-    float _e37 = ms_g2_(_e29, wo_55, wm_29, ms_tables, _buffer_sizes);
+    float _e34 = ms_d(_e29, wm_41, ms_tables, _buffer_sizes);
+    float _e35 = ms_lambda(_e29, wo_63, ms_tables, _buffer_sizes);
+    float _e36 = ms_g1_(_e29, wo_63, ms_tables, _buffer_sizes);
+    float _e37 = ms_g2_(_e29, wo_63, wm_41, ms_tables, _buffer_sizes);
     ms_out[_e2 * MS_K_OUT] = metal::float4(_e34, _e35, _e36, _e37);
-    float _e45 = ms_g2_separable(_e29, wo_55, wm_29, ms_tables, _buffer_sizes);
-    float _e46 = ms_pdf(_e29, wo_55, wm_29, ms_tables, _buffer_sizes);
-    float _e47 = ms_pdf_dcos(_e29, wm_29, ms_tables, _buffer_sizes);
-    float _e48 = ms_g1_(_e29, wm_29, ms_tables, _buffer_sizes);
+    float _e45 = ms_g2_separable(_e29, wo_63, wm_41, ms_tables, _buffer_sizes);
+    float _e46 = ms_pdf(_e29, wo_63, wm_41, ms_tables, _buffer_sizes);
+    float _e47 = ms_pdf_dcos(_e29, wm_41, ms_tables, _buffer_sizes);
+    float _e48 = ms_g1_(_e29, wm_41, ms_tables, _buffer_sizes);
     ms_out[(_e2 * MS_K_OUT) + 1u] = metal::float4(_e45, _e46, _e47, _e48);
     return;
 }
@@ -4733,11 +5369,11 @@ kernel void ms_k_family_sample(
     }
     metal::float4 r0_9 = ms_in[_e2 * MS_K_IN];
     metal::float4 _e19 = ms_in[(_e2 * MS_K_IN) + 1u];
-    metal::float3 wo_56 = _e19.xyz;
+    metal::float3 wo_64 = _e19.xyz;
     metal::float4 _e27 = ms_in[(_e2 * MS_K_IN) + 2u];
     MsMicrofacet _e28 = ms_k_microfacet(r0_9, _e27);
     MsSample _e30 = ms_sample_dcos(_e28, r0_9.zw, ms_tables, _buffer_sizes);
-    MsSample _e32 = ms_sample(_e28, wo_56, r0_9.zw, ms_tables, _buffer_sizes);
+    MsSample _e32 = ms_sample(_e28, wo_64, r0_9.zw, ms_tables, _buffer_sizes);
     ms_out[_e2 * MS_K_OUT] = metal::float4(_e30.wm, _e30.pdf);
     ms_out[(_e2 * MS_K_OUT) + 1u] = metal::float4(_e32.wm, _e32.pdf);
     return;

@@ -701,6 +701,16 @@ const MS_BK_ERFINV_W_K0: i32 = 4;
 const MS_BK_ERFINV_W_K1: i32 = 7;
 const MS_BK_ERFINV_W_AT: u32 = 504u; // 24 rows
 
+// e^z K₀(z) on [2^−14, 2^9) (the K0 NDF's profile) (fit error 5.3e-8 relative).
+const MS_SF_K0E_K0: i32 = -14;
+const MS_SF_K0E_K1: i32 = 9;
+const MS_SF_K0E_AT: u32 = 528u; // 184 rows
+
+// e^y E₁(y) on [2^−24, 2^9) (the Ei NDF's profile) (fit error 6.1e-8 relative).
+const MS_SF_E1X_K0: i32 = -24;
+const MS_SF_E1X_K1: i32 = 9;
+const MS_SF_E1X_AT: u32 = 712u; // 264 rows
+
 // erfinv(2u − 1) at u = 2^−1074, where the Rust samplers clamp u = 0.
 const MS_BK_QUANTILE_EDGE: f32 = -2.7200563e1;
 
@@ -708,44 +718,44 @@ const MS_BK_QUANTILE_EDGE: f32 = -2.7200563e1;
 const MS_DG_LAMBDA_K0: i32 = -30;
 const MS_DG_LAMBDA_K1: i32 = 16;
 const MS_DG_LAMBDA_M: u32 = 3u;
-const MS_DG_LAMBDA_AT: u32 = 528u; // 368 rows
+const MS_DG_LAMBDA_AT: u32 = 976u; // 368 rows
 
 // Double GGX slope kernel G(1/y), y = tan²θ/α²: the Rust DGGX_D (degree 9, f64) rounded to
 // f32 (largest relative change 5.8e-8).
 const MS_DG_D_K0: i32 = -30;
 const MS_DG_D_K1: i32 = 30;
 const MS_DG_D_M: u32 = 2u;
-const MS_DG_D_AT: u32 = 896u; // 720 rows
+const MS_DG_D_AT: u32 = 1344u; // 720 rows
 
 // Exponential Λ(√q), q = z² < 64: the Rust EXPONENTIAL32_QA (f32 cubics), bit for bit.
 const MS_EXP_QA_K0: i32 = -24;
 const MS_EXP_QA_K1: i32 = 6;
 const MS_EXP_QA_M: u32 = 5u;
-const MS_EXP_QA_AT: u32 = 1616u; // 960 rows
+const MS_EXP_QA_AT: u32 = 2064u; // 960 rows
 
 // Exponential Λ(√q), 64 ≤ q < 4096: the Rust EXPONENTIAL32_QB (f32 cubics), bit for bit.
 const MS_EXP_QB_K0: i32 = 6;
 const MS_EXP_QB_K1: i32 = 12;
 const MS_EXP_QB_M: u32 = 7u;
-const MS_EXP_QB_AT: u32 = 2576u; // 768 rows
+const MS_EXP_QB_AT: u32 = 3024u; // 768 rows
 
 // Exponential Λ(z) e^z on octaves of z: the Rust EXPONENTIAL_FAR (degree 6, f64) rounded to
 // f32 (largest relative change 4.4e-8).
 const MS_EXP_FAR_K0: i32 = 5;
 const MS_EXP_FAR_K1: i32 = 9;
 const MS_EXP_FAR_M: u32 = 3u;
-const MS_EXP_FAR_AT: u32 = 3344u; // 64 rows
+const MS_EXP_FAR_AT: u32 = 3792u; // 64 rows
 
 // The Exp(1) ziggurat's layers, f(x) = e^{−x} (the Rust ZIG_EXP_X and ZIG_EXP_F, rounded to
 // f32): row i = (x_i, f(x_i), x_{i+1}, f(x_{i+1})).
-const MS_ZIG_EXP_AT: u32 = 3408u; // 256 rows
+const MS_ZIG_EXP_AT: u32 = 3856u; // 256 rows
 
 // The half-normal ziggurat's layers, f(x) = e^{−x²/2} (the Rust ZIG_NORMAL_X and
 // ZIG_NORMAL_F, rounded to f32): row i = (x_i, f(x_i), x_{i+1}, f(x_{i+1})).
-const MS_ZIG_NORMAL_AT: u32 = 3664u; // 256 rows
+const MS_ZIG_NORMAL_AT: u32 = 4112u; // 256 rows
 
 // The buffer's length in rows.
-const MS_TABLES_ROWS: u32 = 3920u;
+const MS_TABLES_ROWS: u32 = 4368u;
 
 // microsurface WGSL library: the rejection samplers' uniform stream and the Exp(1) ziggurat
 // (stream.wgsl).
@@ -1726,7 +1736,8 @@ fn ms_exponential_sample(w: vec3<f32>, alpha: vec2<f32>, u: vec2<f32>) -> MsSamp
 //   row 0: (shape (γ, a; 0 for none), k₁, 1 if the rows hold Λ₁ itself else 0, σ₁(0))
 //   row 1: (1 for a power-law tail else 0, p, ln K, K₂): Λ₁ = e^{ln K − p ln z}(1 + K₂/z²)
 //          past z = 2^k₁ (0 past it for the others)
-//   row 2: (E[β] of the prior, the mixing's parameter k, 0, 0)
+//   row 2: (E[β] of the prior, the mixing's parameter k, the mixing (ms_mixing_ln_beta's
+//          code), 0)
 //   rows 3…: the Λ₁ rows, two vec4 each (five coefficients of the degree-4 polynomial in
 //          s ∈ [−1, 1), s⁰ first), 32 rows an octave of z = cot θ/α̃ from 2^−24 to 2^k₁,
 //          holding Λ₁ or 256 log₂ Λ₁ (the Rust `FittedShape` layout).
@@ -1865,30 +1876,38 @@ fn ms_beckmann_sample_stream_above(v: vec3<f32>, alpha: vec2<f32>,
     return ms_facing(ms_unit_normal(vec3<f32>(p, q, 1.0)), v);
 }
 
+// ln β(t) of the mixing variable t drawn from its prior (`biased` false) or its size-biased
+// prior w(t)β(t)/E[β] (true), at α = 1 (the Rust Posterior::draw_ln_beta): `mixing` 0
+// inverse-Gamma(k) (Student-T, β = √(k/t)), 1 Gamma(k) (K0, Bessel-K, β = √t), 2 uniform in
+// β² (Ei: t = U, or U^{2/3}), 3 uniform in β (Erfc: t = U, or √U).
+fn ms_mixing_ln_beta(mixing: u32, k: f32, biased: bool, state: ptr<function, vec2<u32>>) -> f32 {
+    let bias = select(0.0, 1.0, biased);
+    if mixing == 0u {
+        return 0.5 * (log(k) - ms_ln_gamma_variate(k - 0.5 * bias, state));
+    }
+    if mixing == 1u {
+        return 0.5 * ms_ln_gamma_variate(k + 0.5 * bias, state);
+    }
+    if mixing == 2u {
+        return 0.5 * log(ms_stream_next_positive(state)) / (1.0 + 0.5 * bias);
+    }
+    return log(ms_stream_next_positive(state)) / (1.0 + bias);
+}
+
 // ln β of the mixing variable's posterior for a unit direction with z = v.z > 0 and stretched
 // horizontal length h (the Rust mixture::Posterior::sample_ln_beta): a candidate from the
 // prior (weight z) or the size-biased prior (weight h E[β]/(2√π)), kept with probability
 // σ_B/(z + βh/(2√π)) ≥ ½, σ_B = z + (βh/(2√π)) e^{−a²} r(a), a = z/(βh), r(a) = 1 − √π a
 // erfcx(a) (Beckmann's projected area, two positive terms). `mixing`: 0 inverse-Gamma(k)
-// (Student-T, β = √(k/t)), 1 Gamma(k) (K0, Bessel-K, β = √t), 2 uniform in β² (Ei), 3 uniform
-// in β (Erfc). NaN after 64 candidates (probability below 1e-19).
+// (Student-T), 1 Gamma(k) (K0, Bessel-K), 2 uniform in β² (Ei), 3 uniform in β (Erfc), as
+// ms_mixing_ln_beta. NaN after 64 candidates (probability below 1e-19).
 fn ms_posterior_ln_beta(mixing: u32, k: f32, mean_beta: f32, z: f32, h: f32,
     state: ptr<function, vec2<u32>>) -> f32 {
     let c = 0.5 * MS_FRAC_1_SQRT_PI;
     let p_prior = z / (z + c * h * mean_beta);
     for (var n = 0; n < 64; n++) {
         let biased = ms_stream_next(state) >= p_prior;
-        let bias = select(0.0, 1.0, biased);
-        var ln_beta: f32;
-        if mixing == 0u {
-            ln_beta = 0.5 * (log(k) - ms_ln_gamma_variate(k - 0.5 * bias, state));
-        } else if mixing == 1u {
-            ln_beta = 0.5 * ms_ln_gamma_variate(k + 0.5 * bias, state);
-        } else if mixing == 2u {
-            ln_beta = 0.5 * log(ms_stream_next_positive(state)) / (1.0 + 0.5 * bias);
-        } else {
-            ln_beta = log(ms_stream_next_positive(state)) / (1.0 + bias);
-        }
+        let ln_beta = ms_mixing_ln_beta(mixing, k, biased, state);
         let hb = h * exp(ln_beta);
         var keep = 1.0;
         if hb > 0.0 && hb <= 3.4028235e38 {
@@ -1902,13 +1921,12 @@ fn ms_posterior_ln_beta(mixing: u32, k: f32, mean_beta: f32, z: f32, h: f32,
     return bitcast<f32>(0x7fc00000u);
 }
 
-// A visible normal of the mixture whose shape table is at `table` (mixing as
-// ms_posterior_ln_beta) for w (w.z < 0 mirrored) from u: β from the posterior over the
-// stream of u, then Beckmann's stream sampler at β(αx, αy) (the Rust Posterior::sample_visible;
-// its uniforms are f64 draws of the stream, these f32 ones: the same distribution, not the
-// same normal). Where the posterior gives up (probability ~1e-19), β = E[β].
-fn ms_mixture_sample_wm(mixing: u32, table: u32, w_in: vec3<f32>, alpha: vec2<f32>,
-    u: vec2<f32>) -> vec3<f32> {
+// A visible normal of the mixture whose shape table is at `table` for w (w.z < 0 mirrored)
+// from u: β from the posterior over the stream of u (the table's mixing), then Beckmann's
+// stream sampler at β(αx, αy) (the Rust Posterior::sample_visible; its uniforms are f64 draws
+// of the stream, these f32 ones: the same distribution, not the same normal). Where the
+// posterior gives up (probability ~1e-19), β = E[β].
+fn ms_mixture_sample_wm(table: u32, w_in: vec3<f32>, alpha: vec2<f32>, u: vec2<f32>) -> vec3<f32> {
     var w = ms_unit(w_in);
     if w.z < 0.0 {
         w = -w;
@@ -1918,19 +1936,114 @@ fn ms_mixture_sample_wm(mixing: u32, table: u32, w_in: vec3<f32>, alpha: vec2<f3
     let sy = alpha.y * w.y;
     let h = sqrt(sx * sx + sy * sy);
     var state = ms_stream_new(u);
-    var ln_beta = ms_posterior_ln_beta(mixing, params.y, params.x, w.z, h, &state);
+    var ln_beta = ms_posterior_ln_beta(u32(params.z), params.y, params.x, w.z, h, &state);
     if ln_beta != ln_beta {
         ln_beta = log(params.x);
     }
-    // β(αx, αy) within f32's range with margin (|ln| ≤ 80): β = 0 or ∞ has probability 0.
-    let lo = log(min(alpha.x, alpha.y));
-    let hi = log(max(alpha.x, alpha.y));
-    let beta = exp(clamp(ln_beta, -80.0 - lo, 80.0 - hi));
+    let beta = ms_mixture_beta(ln_beta, alpha);
     if !(w.z > 0.0) {
         // (On the horizon: Beckmann's warp, a visible normal.)
         return ms_beckmann_sample_wm(w, beta * alpha, u);
     }
     return ms_beckmann_sample_stream_above(w, beta * alpha, &state);
+}
+
+// G1, G2 (height-correlated and separable) and the visible density D_w(wm) =
+// G1(w)(w·wm)D(wm)/|w.z| of a mixture from its shape table (Λ) and, for the density, its
+// D(wm) = d; w.z < 0 mirrored; 0 at grazing w and for wm facing away from w.
+fn ms_mixture_g1(table: u32, w: vec3<f32>, alpha: vec2<f32>) -> f32 {
+    return 1.0 / (1.0 + ms_shape_lambda(table, w, alpha));
+}
+
+fn ms_mixture_g2(table: u32, wo: vec3<f32>, wi: vec3<f32>, alpha: vec2<f32>) -> f32 {
+    return 1.0 / (1.0 + (ms_shape_lambda(table, wo, alpha) + ms_shape_lambda(table, wi, alpha)));
+}
+
+fn ms_mixture_g2_separable(table: u32, wo: vec3<f32>, wi: vec3<f32>, alpha: vec2<f32>) -> f32 {
+    return ms_mixture_g1(table, wo, alpha) * ms_mixture_g1(table, wi, alpha);
+}
+
+fn ms_mixture_pdf(table: u32, w: vec3<f32>, wm: vec3<f32>, alpha: vec2<f32>, d: f32) -> f32 {
+    let z = abs(w.z);
+    var c = ms_dot(w, wm);
+    if w.z < 0.0 {
+        c = -c;
+    }
+    if !(c > 0.0 && z > 0.0) {
+        return 0.0;
+    }
+    return ms_mixture_g1(table, w, alpha) * c * d / z;
+}
+
+// The clamp of ln β: β(αx, αy) within f32's range with margin (|ln| ≤ 80); β = 0 or ∞ has
+// probability 0.
+fn ms_mixture_beta(ln_beta: f32, alpha: vec2<f32>) -> f32 {
+    let lo = log(min(alpha.x, alpha.y));
+    let hi = log(max(alpha.x, alpha.y));
+    return exp(clamp(ln_beta, -80.0 - lo, 80.0 - hi));
+}
+
+// A D·cos normal of the mixture whose shape table is at `table`, from u: D·cos of a
+// superposition of (normalised) Beckmann components is the superposition of their D·cos
+// with the prior's weights, so β from the prior over the stream of u, then Beckmann's D·cos
+// warp of u at β(αx, αy). Exact in distribution; the Rust fast path inverts the radial CDF
+// instead (a warp of u), so the normals are not the Rust ones.
+fn ms_mixture_sample_dcos_wm(table: u32, alpha: vec2<f32>, u: vec2<f32>) -> vec3<f32> {
+    let params = ms_tables[table + 2u];
+    var state = ms_stream_new(u);
+    var ln_beta = ms_mixing_ln_beta(u32(params.z), params.y, false, &state);
+    if ln_beta != ln_beta {
+        ln_beta = log(params.x);
+    }
+    return ms_beckmann_sample_dcos(ms_mixture_beta(ln_beta, alpha) * alpha, u).wm;
+}
+
+// D of a mixture from the logarithm of its radial profile at unit roughness, ln f₁(r) (r the
+// stretched slope's length, from r² = q/z², q = (m.x/αx)² + (m.y/αy)²): D = f₁(r)/(αx αy z⁴),
+// formed as one exponential of ln f₁ − ln(αx αy z⁴), so that neither f₁ nor z⁴ underflows on
+// the way where D is a normal f32. 0 on and below the horizon; NaN stays NaN.
+fn ms_mixture_d_from_ln_profile(ln_f: f32, wm: vec3<f32>, alpha: vec2<f32>) -> f32 {
+    let ln_z = log(wm.z);
+    return exp(ln_f - log(alpha.x * alpha.y) - 4.0 * ln_z);
+}
+
+// r² = q/z² of wm at (αx, αy) (+∞ on the horizon).
+fn ms_mixture_r2(wm: vec3<f32>, alpha: vec2<f32>) -> f32 {
+    let x = wm.x / alpha.x;
+    let y = wm.y / alpha.y;
+    return (x * x + y * y) / (wm.z * wm.z);
+}
+
+// e^z K₀(z) for z > 0: (1 + z)(−ln(z/2) − γ_E) below 2^−14 (the next terms, O(z² ln z), are
+// below ε/4 there), the table (MS_SF_K0E) to 2^9, the asymptotic series √(π/(2z))(1 − 1/(8z) +
+// 9/(128z²)) beyond (next term 3e-10).
+fn ms_k0e(z: f32) -> f32 {
+    if z < 6.1035156e-5 {
+        return (1.0 + z) * (-log(0.5 * z) - MS_EULER_GAMMA);
+    }
+    if z >= 512.0 {
+        let r = 1.0 / z;
+        return sqrt(0.5 * MS_PI * r) * (1.0 - r * (0.125 - r * (9.0 / 128.0)));
+    }
+    let g = ms_bk_segment(z, MS_SF_K0E_K0, MS_SF_K0E_K1);
+    let i = MS_SF_K0E_AT + 2u * u32(g.x);
+    return ms_bk_poly(ms_tables[i], ms_tables[i + 1u], g.y);
+}
+
+// e^y E₁(y) for y > 0: −γ_E − ln y below 2^−24 (the next term, y, is below ε/16 of it), the
+// table (MS_SF_E1X) to 2^9, the asymptotic series (1/y)(1 − 1/y + 2/y² − 6/y³) beyond (next
+// term 24/y⁴ ≤ 3.5e-10).
+fn ms_e1x(y: f32) -> f32 {
+    if y < 5.9604645e-8 {
+        return -MS_EULER_GAMMA - log(y);
+    }
+    if y >= 512.0 {
+        let r = 1.0 / y;
+        return r * (1.0 - r * (1.0 - r * (2.0 - r * 6.0)));
+    }
+    let g = ms_bk_segment(y, MS_SF_E1X_K0, MS_SF_E1X_K1);
+    let i = MS_SF_E1X_AT + 2u * u32(g.x);
+    return ms_bk_poly(ms_tables[i], ms_tables[i + 1u], g.y);
 }
 
 // microsurface WGSL library: the Student-T NDF, anisotropic (student_t.wgsl).
@@ -2071,8 +2184,241 @@ fn ms_student_t_sample_dcos(alpha: vec2<f32>, u: vec2<f32>, table: u32) -> MsSam
 // A visible normal for w (w.z < 0 mirrored) from u, with its pdf: the posterior of the
 // inverse-Gamma(γ − 1) mixing, then Beckmann's stream sampler (mixture.wgsl).
 fn ms_student_t_sample(w: vec3<f32>, alpha: vec2<f32>, u: vec2<f32>, table: u32) -> MsSample {
-    let wm = ms_mixture_sample_wm(0u, table, w, alpha, u);
+    let wm = ms_mixture_sample_wm(table, w, alpha, u);
     return MsSample(wm, ms_student_t_pdf(ms_unit(w), wm, alpha, table));
+}
+
+// microsurface WGSL library: the Ei NDF, anisotropic (ei.wgsl).
+//
+// The Rust `Microfacet<f32, Ei>` (crates/microsurface/src/fast/fitted.rs, the family's fast
+// path; ndf/ei.rs for the formulas: the Ei_NDF page of d'Eon's "A Hitchhiker's Guide to
+// Multiple Scattering"), in f32. A uniform superposition of Beckmann NDFs over roughness² ∈ (0, α²].
+// Its Λ₁ lives in a shape table (mixture.wgsl; `microsurface_gpu::Tables::add_shape(NdfKind::
+// Ei, None)` in Rust, one table for every roughness: the NDF is shape invariant).
+//
+//   D(m) = f₁(r)/(αx αy z⁴),  f₁(r) = E₁(r²)/π  (e^y E₁(y) from the MS_SF_E1X table)
+//   Λ(w) = Λ₁(cot θ/α̃) from the table,  G1 = 1/(1 + Λ),  G2 = 1/(1 + Λo + Λi) or G1 G1
+//
+// D·cos and visible normals: exact samplers over the mixture (ms_mixture_sample_dcos_wm: β
+// from the prior, then Beckmann's D·cos warp; ms_mixture_sample_wm: the posterior, then
+// Beckmann's stream sampler), the Rust samplers' distributions, not their normals.
+
+// ln f₁ at r² = y: ln(e^y E₁(y)) − y − ln π.
+fn ms_ei_ln_profile(y: f32) -> f32 {
+    return log(ms_e1x(y)) - y - log(MS_PI);
+}
+
+// D(wm); 0 on and below the horizon, +∞ at the pole (r = 0), NaN for NaN.
+fn ms_ei_d(wm: vec3<f32>, alpha: vec2<f32>) -> f32 {
+    if !(wm.z > 0.0) {
+        return select(0.0, wm.z, wm.z != wm.z);
+    }
+    let r2 = ms_mixture_r2(wm, alpha);
+    if r2 == 0.0 {
+        return ms_inf();
+    }
+    return ms_mixture_d_from_ln_profile(ms_ei_ln_profile(r2), wm, alpha);
+}
+
+// Smith Λ(w), Λ(−w) = Λ(w), from the shape table at `table`.
+fn ms_ei_lambda(w: vec3<f32>, alpha: vec2<f32>, table: u32) -> f32 {
+    return ms_shape_lambda(table, w, alpha);
+}
+
+// G1(w).
+fn ms_ei_g1(w: vec3<f32>, alpha: vec2<f32>, table: u32) -> f32 {
+    return ms_mixture_g1(table, w, alpha);
+}
+
+// Height-correlated G2(wo, wi).
+fn ms_ei_g2(wo: vec3<f32>, wi: vec3<f32>, alpha: vec2<f32>, table: u32) -> f32 {
+    return ms_mixture_g2(table, wo, wi, alpha);
+}
+
+// Separable G2(wo, wi) = G1(wo) G1(wi).
+fn ms_ei_g2_separable(wo: vec3<f32>, wi: vec3<f32>, alpha: vec2<f32>, table: u32) -> f32 {
+    return ms_mixture_g2_separable(table, wo, wi, alpha);
+}
+
+// The visible-normal density D_w(wm) (w.z < 0 mirrored).
+fn ms_ei_pdf(w: vec3<f32>, wm: vec3<f32>, alpha: vec2<f32>, table: u32) -> f32 {
+    return ms_mixture_pdf(table, w, wm, alpha, ms_ei_d(wm, alpha));
+}
+
+// The D·cos density D(wm) cos θm (0 for wm.z ≤ 0).
+fn ms_ei_pdf_dcos(wm: vec3<f32>, alpha: vec2<f32>) -> f32 {
+    if !(wm.z > 0.0) {
+        return 0.0;
+    }
+    return ms_ei_d(wm, alpha) * wm.z;
+}
+
+// A D·cos normal from u, with its pdf.
+fn ms_ei_sample_dcos(alpha: vec2<f32>, u: vec2<f32>, table: u32) -> MsSample {
+    let wm = ms_mixture_sample_dcos_wm(table, alpha, u);
+    return MsSample(wm, ms_ei_pdf_dcos(wm, alpha));
+}
+
+// A visible normal for w (w.z < 0 mirrored) from u, with its pdf.
+fn ms_ei_sample(w: vec3<f32>, alpha: vec2<f32>, u: vec2<f32>, table: u32) -> MsSample {
+    let wm = ms_mixture_sample_wm(table, w, alpha, u);
+    return MsSample(wm, ms_ei_pdf(ms_unit(w), wm, alpha, table));
+}
+
+// microsurface WGSL library: the Erfc NDF, anisotropic (erfc.wgsl).
+//
+// The Rust `Microfacet<f32, Erfc>` (crates/microsurface/src/fast/fitted.rs, the family's fast
+// path; ndf/erfc.rs for the formulas: the Erfc_NDF page of d'Eon's "A Hitchhiker's Guide to
+// Multiple Scattering"), in f32. A uniform superposition of Beckmann NDFs over roughness ∈ (0, α].
+// Its Λ₁ lives in a shape table (mixture.wgsl; `microsurface_gpu::Tables::add_shape(NdfKind::
+// Erfc, None)` in Rust, one table for every roughness: the NDF is shape invariant).
+//
+//   D(m) = f₁(r)/(αx αy z⁴),  f₁(r) = erfc(r)/(2√π r)  (erfc = erfcx e^{−r²}, erfcx from Beckmann's table)
+//   Λ(w) = Λ₁(cot θ/α̃) from the table,  G1 = 1/(1 + Λ),  G2 = 1/(1 + Λo + Λi) or G1 G1
+//
+// D·cos and visible normals: exact samplers over the mixture (ms_mixture_sample_dcos_wm: β
+// from the prior, then Beckmann's D·cos warp; ms_mixture_sample_wm: the posterior, then
+// Beckmann's stream sampler), the Rust samplers' distributions, not their normals.
+
+// ln f₁ at r² = y: ln(erfcx(r)/(2√π r)) − r².
+fn ms_erfc_ln_profile(y: f32) -> f32 {
+    let r = sqrt(y);
+    return log(ms_bk_erfcx(r) / (2.0 * MS_SQRT_PI * r)) - y;
+}
+
+// D(wm); 0 on and below the horizon, +∞ at the pole (r = 0), NaN for NaN.
+fn ms_erfc_d(wm: vec3<f32>, alpha: vec2<f32>) -> f32 {
+    if !(wm.z > 0.0) {
+        return select(0.0, wm.z, wm.z != wm.z);
+    }
+    let r2 = ms_mixture_r2(wm, alpha);
+    if r2 == 0.0 {
+        return ms_inf();
+    }
+    return ms_mixture_d_from_ln_profile(ms_erfc_ln_profile(r2), wm, alpha);
+}
+
+// Smith Λ(w), Λ(−w) = Λ(w), from the shape table at `table`.
+fn ms_erfc_lambda(w: vec3<f32>, alpha: vec2<f32>, table: u32) -> f32 {
+    return ms_shape_lambda(table, w, alpha);
+}
+
+// G1(w).
+fn ms_erfc_g1(w: vec3<f32>, alpha: vec2<f32>, table: u32) -> f32 {
+    return ms_mixture_g1(table, w, alpha);
+}
+
+// Height-correlated G2(wo, wi).
+fn ms_erfc_g2(wo: vec3<f32>, wi: vec3<f32>, alpha: vec2<f32>, table: u32) -> f32 {
+    return ms_mixture_g2(table, wo, wi, alpha);
+}
+
+// Separable G2(wo, wi) = G1(wo) G1(wi).
+fn ms_erfc_g2_separable(wo: vec3<f32>, wi: vec3<f32>, alpha: vec2<f32>, table: u32) -> f32 {
+    return ms_mixture_g2_separable(table, wo, wi, alpha);
+}
+
+// The visible-normal density D_w(wm) (w.z < 0 mirrored).
+fn ms_erfc_pdf(w: vec3<f32>, wm: vec3<f32>, alpha: vec2<f32>, table: u32) -> f32 {
+    return ms_mixture_pdf(table, w, wm, alpha, ms_erfc_d(wm, alpha));
+}
+
+// The D·cos density D(wm) cos θm (0 for wm.z ≤ 0).
+fn ms_erfc_pdf_dcos(wm: vec3<f32>, alpha: vec2<f32>) -> f32 {
+    if !(wm.z > 0.0) {
+        return 0.0;
+    }
+    return ms_erfc_d(wm, alpha) * wm.z;
+}
+
+// A D·cos normal from u, with its pdf.
+fn ms_erfc_sample_dcos(alpha: vec2<f32>, u: vec2<f32>, table: u32) -> MsSample {
+    let wm = ms_mixture_sample_dcos_wm(table, alpha, u);
+    return MsSample(wm, ms_erfc_pdf_dcos(wm, alpha));
+}
+
+// A visible normal for w (w.z < 0 mirrored) from u, with its pdf.
+fn ms_erfc_sample(w: vec3<f32>, alpha: vec2<f32>, u: vec2<f32>, table: u32) -> MsSample {
+    let wm = ms_mixture_sample_wm(table, w, alpha, u);
+    return MsSample(wm, ms_erfc_pdf(ms_unit(w), wm, alpha, table));
+}
+
+// microsurface WGSL library: the K0 NDF, anisotropic (k0.wgsl).
+//
+// The Rust `Microfacet<f32, K0>` (crates/microsurface/src/fast/fitted.rs, the family's fast
+// path; ndf/k0.rs for the formulas: the K0_NDF page of d'Eon's "A Hitchhiker's Guide to
+// Multiple Scattering"), in f32. The Gamma(1) superposition of Beckmann NDFs over roughness α√t.
+// Its Λ₁ lives in a shape table (mixture.wgsl; `microsurface_gpu::Tables::add_shape(NdfKind::
+// K0, None)` in Rust, one table for every roughness: the NDF is shape invariant).
+//
+//   D(m) = f₁(r)/(αx αy z⁴),  f₁(r) = 2K₀(2r)/π  (e^z K₀(z) from the MS_SF_K0E table)
+//   Λ(w) = Λ₁(cot θ/α̃) from the table,  G1 = 1/(1 + Λ),  G2 = 1/(1 + Λo + Λi) or G1 G1
+//
+// D·cos and visible normals: exact samplers over the mixture (ms_mixture_sample_dcos_wm: β
+// from the prior, then Beckmann's D·cos warp; ms_mixture_sample_wm: the posterior, then
+// Beckmann's stream sampler), the Rust samplers' distributions, not their normals.
+
+// ln f₁ at r² = y: ln(2 e^z K₀(z)/π) − z, z = 2r.
+fn ms_k0_ln_profile(y: f32) -> f32 {
+    let z = 2.0 * sqrt(y);
+    return log(2.0 * ms_k0e(z) / MS_PI) - z;
+}
+
+// D(wm); 0 on and below the horizon, +∞ at the pole (r = 0), NaN for NaN.
+fn ms_k0_d(wm: vec3<f32>, alpha: vec2<f32>) -> f32 {
+    if !(wm.z > 0.0) {
+        return select(0.0, wm.z, wm.z != wm.z);
+    }
+    let r2 = ms_mixture_r2(wm, alpha);
+    if r2 == 0.0 {
+        return ms_inf();
+    }
+    return ms_mixture_d_from_ln_profile(ms_k0_ln_profile(r2), wm, alpha);
+}
+
+// Smith Λ(w), Λ(−w) = Λ(w), from the shape table at `table`.
+fn ms_k0_lambda(w: vec3<f32>, alpha: vec2<f32>, table: u32) -> f32 {
+    return ms_shape_lambda(table, w, alpha);
+}
+
+// G1(w).
+fn ms_k0_g1(w: vec3<f32>, alpha: vec2<f32>, table: u32) -> f32 {
+    return ms_mixture_g1(table, w, alpha);
+}
+
+// Height-correlated G2(wo, wi).
+fn ms_k0_g2(wo: vec3<f32>, wi: vec3<f32>, alpha: vec2<f32>, table: u32) -> f32 {
+    return ms_mixture_g2(table, wo, wi, alpha);
+}
+
+// Separable G2(wo, wi) = G1(wo) G1(wi).
+fn ms_k0_g2_separable(wo: vec3<f32>, wi: vec3<f32>, alpha: vec2<f32>, table: u32) -> f32 {
+    return ms_mixture_g2_separable(table, wo, wi, alpha);
+}
+
+// The visible-normal density D_w(wm) (w.z < 0 mirrored).
+fn ms_k0_pdf(w: vec3<f32>, wm: vec3<f32>, alpha: vec2<f32>, table: u32) -> f32 {
+    return ms_mixture_pdf(table, w, wm, alpha, ms_k0_d(wm, alpha));
+}
+
+// The D·cos density D(wm) cos θm (0 for wm.z ≤ 0).
+fn ms_k0_pdf_dcos(wm: vec3<f32>, alpha: vec2<f32>) -> f32 {
+    if !(wm.z > 0.0) {
+        return 0.0;
+    }
+    return ms_k0_d(wm, alpha) * wm.z;
+}
+
+// A D·cos normal from u, with its pdf.
+fn ms_k0_sample_dcos(alpha: vec2<f32>, u: vec2<f32>, table: u32) -> MsSample {
+    let wm = ms_mixture_sample_dcos_wm(table, alpha, u);
+    return MsSample(wm, ms_k0_pdf_dcos(wm, alpha));
+}
+
+// A visible normal for w (w.z < 0 mirrored) from u, with its pdf.
+fn ms_k0_sample(w: vec3<f32>, alpha: vec2<f32>, u: vec2<f32>, table: u32) -> MsSample {
+    let wm = ms_mixture_sample_wm(table, w, alpha, u);
+    return MsSample(wm, ms_k0_pdf(ms_unit(w), wm, alpha, table));
 }
 
 // microsurface WGSL library: a material's distribution chosen at run time (microfacet.wgsl),
@@ -2080,7 +2426,7 @@ fn ms_student_t_sample(w: vec3<f32>, alpha: vec2<f32>, u: vec2<f32>, table: u32)
 // renderer that knows its NDF calls the per-NDF functions (ms_ggx_d, …) directly.
 
 // Which NDF (`ndf`: an MS_NDF_* constant) at roughness (αx, αy), and for an NDF with a shape
-// table (Student-T) the table's first row in `ms_tables` (`microsurface_gpu::Tables::add_shape`
+// table (Student-T, Ei, Erfc, K0) the table's first row in `ms_tables` (`microsurface_gpu::Tables::add_shape`
 // gives it; 0 and unused for the others). Beckmann, Double GGX, the Exponential NDF and
 // Student-T read the library's tables (tables.wgsl), so a shader that takes this door binds
 // them.
@@ -2095,6 +2441,9 @@ const MS_NDF_BECKMANN: u32 = 1u;
 const MS_NDF_DOUBLE_GGX: u32 = 2u;
 const MS_NDF_EXPONENTIAL: u32 = 3u;
 const MS_NDF_STUDENT_T: u32 = 5u;
+const MS_NDF_EI: u32 = 6u;
+const MS_NDF_ERFC: u32 = 7u;
+const MS_NDF_K0: u32 = 8u;
 
 // D(wm); 0 below the horizon (and for an NDF this library does not have).
 fn ms_d(mf: MsMicrofacet, wm: vec3<f32>) -> f32 {
@@ -2112,6 +2461,15 @@ fn ms_d(mf: MsMicrofacet, wm: vec3<f32>) -> f32 {
     }
     if mf.ndf == MS_NDF_STUDENT_T {
         return ms_student_t_d(wm, mf.alpha, mf.table);
+    }
+    if mf.ndf == MS_NDF_EI {
+        return ms_ei_d(wm, mf.alpha);
+    }
+    if mf.ndf == MS_NDF_ERFC {
+        return ms_erfc_d(wm, mf.alpha);
+    }
+    if mf.ndf == MS_NDF_K0 {
+        return ms_k0_d(wm, mf.alpha);
     }
     return 0.0;
 }
@@ -2133,6 +2491,15 @@ fn ms_lambda(mf: MsMicrofacet, w: vec3<f32>) -> f32 {
     if mf.ndf == MS_NDF_STUDENT_T {
         return ms_student_t_lambda(w, mf.alpha, mf.table);
     }
+    if mf.ndf == MS_NDF_EI {
+        return ms_ei_lambda(w, mf.alpha, mf.table);
+    }
+    if mf.ndf == MS_NDF_ERFC {
+        return ms_erfc_lambda(w, mf.alpha, mf.table);
+    }
+    if mf.ndf == MS_NDF_K0 {
+        return ms_k0_lambda(w, mf.alpha, mf.table);
+    }
     return 0.0;
 }
 
@@ -2153,6 +2520,15 @@ fn ms_g1(mf: MsMicrofacet, w: vec3<f32>) -> f32 {
     if mf.ndf == MS_NDF_STUDENT_T {
         return ms_student_t_g1(w, mf.alpha, mf.table);
     }
+    if mf.ndf == MS_NDF_EI {
+        return ms_ei_g1(w, mf.alpha, mf.table);
+    }
+    if mf.ndf == MS_NDF_ERFC {
+        return ms_erfc_g1(w, mf.alpha, mf.table);
+    }
+    if mf.ndf == MS_NDF_K0 {
+        return ms_k0_g1(w, mf.alpha, mf.table);
+    }
     return 0.0;
 }
 
@@ -2172,6 +2548,15 @@ fn ms_g2(mf: MsMicrofacet, wo: vec3<f32>, wi: vec3<f32>) -> f32 {
     }
     if mf.ndf == MS_NDF_STUDENT_T {
         return ms_student_t_g2(wo, wi, mf.alpha, mf.table);
+    }
+    if mf.ndf == MS_NDF_EI {
+        return ms_ei_g2(wo, wi, mf.alpha, mf.table);
+    }
+    if mf.ndf == MS_NDF_ERFC {
+        return ms_erfc_g2(wo, wi, mf.alpha, mf.table);
+    }
+    if mf.ndf == MS_NDF_K0 {
+        return ms_k0_g2(wo, wi, mf.alpha, mf.table);
     }
     return 0.0;
 }
@@ -2197,6 +2582,15 @@ fn ms_pdf(mf: MsMicrofacet, w: vec3<f32>, wm: vec3<f32>) -> f32 {
     }
     if mf.ndf == MS_NDF_STUDENT_T {
         return ms_student_t_pdf(w, wm, mf.alpha, mf.table);
+    }
+    if mf.ndf == MS_NDF_EI {
+        return ms_ei_pdf(w, wm, mf.alpha, mf.table);
+    }
+    if mf.ndf == MS_NDF_ERFC {
+        return ms_erfc_pdf(w, wm, mf.alpha, mf.table);
+    }
+    if mf.ndf == MS_NDF_K0 {
+        return ms_k0_pdf(w, wm, mf.alpha, mf.table);
     }
     return 0.0;
 }
@@ -2226,6 +2620,15 @@ fn ms_sample(mf: MsMicrofacet, w: vec3<f32>, u: vec2<f32>) -> MsSample {
     if mf.ndf == MS_NDF_STUDENT_T {
         return ms_student_t_sample(w, mf.alpha, u, mf.table);
     }
+    if mf.ndf == MS_NDF_EI {
+        return ms_ei_sample(w, mf.alpha, u, mf.table);
+    }
+    if mf.ndf == MS_NDF_ERFC {
+        return ms_erfc_sample(w, mf.alpha, u, mf.table);
+    }
+    if mf.ndf == MS_NDF_K0 {
+        return ms_k0_sample(w, mf.alpha, u, mf.table);
+    }
     return MsSample(vec3<f32>(0.0, 0.0, 1.0), 0.0);
 }
 
@@ -2245,6 +2648,15 @@ fn ms_sample_dcos(mf: MsMicrofacet, u: vec2<f32>) -> MsSample {
     }
     if mf.ndf == MS_NDF_STUDENT_T {
         return ms_student_t_sample_dcos(mf.alpha, u, mf.table);
+    }
+    if mf.ndf == MS_NDF_EI {
+        return ms_ei_sample_dcos(mf.alpha, u, mf.table);
+    }
+    if mf.ndf == MS_NDF_ERFC {
+        return ms_erfc_sample_dcos(mf.alpha, u, mf.table);
+    }
+    if mf.ndf == MS_NDF_K0 {
+        return ms_k0_sample_dcos(mf.alpha, u, mf.table);
     }
     return MsSample(vec3<f32>(0.0, 0.0, 1.0), 0.0);
 }

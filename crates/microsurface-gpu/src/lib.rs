@@ -167,7 +167,7 @@ use std::sync::{mpsc, Mutex};
 /// The WGSL library, one source: `wgsl/common.wgsl`, `fresnel.wgsl`, `ggx.wgsl`,
 /// `tables.wgsl` (generated: the tables buffer's binding and layout), `stream.wgsl`,
 /// `beckmann.wgsl`, `double_ggx.wgsl`, `exponential.wgsl`, `mixture.wgsl`, `student_t.wgsl`,
-/// `microfacet.wgsl`,
+/// `ei.wgsl`, `erfc.wgsl`, `k0.wgsl`, `microfacet.wgsl`,
 /// `conductor.wgsl`, `dielectric.wgsl`, `compensation.wgsl`, in that order. A shader that
 /// includes it defines `MS_TABLES_GROUP` and `MS_TABLES_BINDING` (see [`TABLES`]).
 pub const WGSL: &str = concat!(
@@ -190,6 +190,12 @@ pub const WGSL: &str = concat!(
     include_str!("../wgsl/mixture.wgsl"),
     "\n",
     include_str!("../wgsl/student_t.wgsl"),
+    "\n",
+    include_str!("../wgsl/ei.wgsl"),
+    "\n",
+    include_str!("../wgsl/erfc.wgsl"),
+    "\n",
+    include_str!("../wgsl/k0.wgsl"),
     "\n",
     include_str!("../wgsl/microfacet.wgsl"),
     "\n",
@@ -219,8 +225,9 @@ pub const WGSL: &str = concat!(
 pub static TABLES: &[u8] = include_bytes!("../generated/microsurface_tables.bin");
 
 /// The contents of the library's buffer `ms_tables` for a shader whose materials have shape
-/// tables: the library's [`TABLES`] followed by each shape's own (the Student-T γ's fitted
-/// Λ₁ and posterior parameters; the layout is in `wgsl/mixture.wgsl`). A shape's table is
+/// tables: the library's [`TABLES`] followed by each shape's own (the fitted Λ₁ and the
+/// posterior's parameters of a Student-T γ, or of Ei, Erfc, K0; the layout is in
+/// `wgsl/mixture.wgsl`). A shape's table is
 /// built once (the Rust fast path's `FittedShape`: milliseconds) and serves every roughness;
 /// its row goes into `MsMicrofacet`'s `table`.
 ///
@@ -257,22 +264,29 @@ impl Tables {
     }
 
     /// Appends the shape table of `kind` at `shape` and returns its first row (the `table`
-    /// of an `MsMicrofacet` of that NDF). Student-T only so far (γ in (3/2, 1e6]);
-    /// `ParamError` for other kinds and shapes out of range.
+    /// of an `MsMicrofacet` of that NDF): Student-T (γ in (3/2, 1e6]), Ei, Erfc and K0
+    /// (shape `None`; one table serves every material of the NDF). `ParamError` for other
+    /// kinds and shapes out of range.
     pub fn add_shape(
         &mut self,
         kind: microsurface::NdfKind,
         shape: Option<f64>,
     ) -> Result<u32, microsurface::ParamError> {
         use microsurface::fast::fitted::FittedShape;
-        let unsupported = microsurface::ParamError::Shape {
-            name: "GPU shape table (Student-T with gamma > 1.5)",
-            range: "(1.5, 1e6]",
-            value: shape.unwrap_or(f64::NAN),
+        use microsurface::NdfKind;
+        let mixing = match kind {
+            NdfKind::StudentT => 0.0,
+            NdfKind::K0 => 1.0,
+            NdfKind::Ei => 2.0,
+            NdfKind::Erfc => 3.0,
+            _ => {
+                return Err(microsurface::ParamError::Shape {
+                    name: "GPU shape table (Student-T with gamma > 1.5, Ei, Erfc, K0)",
+                    range: "(1.5, 1e6]",
+                    value: shape.unwrap_or(f64::NAN),
+                })
+            }
         };
-        if kind != microsurface::NdfKind::StudentT {
-            return Err(unsupported);
-        }
         let ndf = microsurface::AnyNdf::new(kind, 1.0, shape)?;
         let fitted = FittedShape::new(&ndf)?;
         let l = fitted.layout();
@@ -282,7 +296,11 @@ impl Tables {
             None => (0.0, [0.0; 3]),
         };
         self.rows.push([
-            shape.unwrap_or(0.0) as f32,
+            if mixing == 0.0 {
+                shape.unwrap_or(0.0) as f32
+            } else {
+                0.0
+            },
             l.k1 as f32,
             if l.direct { 1.0 } else { 0.0 },
             l.sigma0 as f32,
@@ -290,7 +308,7 @@ impl Tables {
         self.rows
             .push([tail_on, tail[0] as f32, tail[1] as f32, tail[2] as f32]);
         self.rows
-            .push([l.mean_beta as f32, l.mixing_k as f32, 0.0, 0.0]);
+            .push([l.mean_beta as f32, l.mixing_k as f32, mixing, 0.0]);
         for c in l.rows {
             self.rows
                 .push([c[0] as f32, c[1] as f32, c[2] as f32, c[3] as f32]);

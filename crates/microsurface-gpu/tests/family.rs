@@ -19,7 +19,9 @@
 //!   from u, against the Rust `UniformStream`'s f64 and f32 draws).
 
 use microsurface::distribution::UniformStream;
-use microsurface::{DoubleGgx, Exponential, Microfacet, MicrofacetDistribution, NdfKind, StudentT};
+use microsurface::{
+    AnyMicrofacet, DoubleGgx, Exponential, Microfacet, MicrofacetDistribution, NdfKind,
+};
 use microsurface_gpu::{kernels_source, Error, Gpu, Program, Tables, KERNEL_IN, KERNEL_OUT};
 use std::sync::OnceLock;
 
@@ -36,13 +38,9 @@ fn gpu() -> Option<&'static (Gpu, Program)> {
     GPU.get_or_init(|| {
         let required = std::env::var("MICROSURFACE_GPU_REQUIRED").as_deref() == Ok("1");
         let mut tables = Tables::new();
-        let rows: Vec<u32> = STUDENT_T_GAMMAS
+        let rows: Vec<u32> = SHAPED
             .iter()
-            .map(|&g| {
-                tables
-                    .add_shape(NdfKind::StudentT, Some(g))
-                    .expect("a Student-T shape")
-            })
+            .map(|&(kind, shape, _)| tables.add_shape(kind, shape).expect("a shape table"))
             .collect();
         let _ = SHAPE_ROWS.set(rows);
         match Gpu::with_tables(&tables) {
@@ -60,27 +58,48 @@ fn gpu() -> Option<&'static (Gpu, Program)> {
     .as_ref()
 }
 
-/// The Student-T shapes of the tests: near the pole at 3/2, GGX's neighbour, and two where
-/// the tails approach Beckmann's.
+/// The NDFs with shape tables, with their shapes and MsMicrofacet tags: Student-T near the
+/// pole at 3/2, GGX's neighbour, and two where the tails approach Beckmann's; Ei, Erfc, K0.
+const SHAPED: [(NdfKind, Option<f64>, u32); 7] = [
+    (NdfKind::StudentT, Some(1.8), 5),
+    (NdfKind::StudentT, Some(2.5), 5),
+    (NdfKind::StudentT, Some(10.0), 5),
+    (NdfKind::StudentT, Some(40.0), 5),
+    (NdfKind::Ei, None, 6),
+    (NdfKind::Erfc, None, 7),
+    (NdfKind::K0, None, 8),
+];
+/// The first four of SHAPED are Student-T.
 const STUDENT_T_GAMMAS: [f64; 4] = [1.8, 2.5, 10.0, 40.0];
 /// Their shape tables' rows in the bound buffer.
 static SHAPE_ROWS: OnceLock<Vec<u32>> = OnceLock::new();
-/// An element's `ndf` for Student-T at STUDENT_T_GAMMAS[k]: 16 + k.
-const NDF_STUDENT_T_SHAPES: u32 = 16;
-/// MsMicrofacet's MS_NDF_STUDENT_T.
-const MS_NDF_STUDENT_T: u32 = 5;
+/// An element's `ndf` for SHAPED[k]: 16 + k.
+const NDF_SHAPED: u32 = 16;
+/// The Student-T ones (SHAPED[0..4]).
+const NDF_STUDENT_T_SHAPES: u32 = NDF_SHAPED;
+
+/// The kind and shape of an element with a shape table (`None` for the other NDFs).
+fn shaped(e: &El) -> Option<(NdfKind, Option<f64>)> {
+    (e.ndf >= NDF_SHAPED).then(|| {
+        let (kind, shape, _) = SHAPED[(e.ndf - NDF_SHAPED) as usize];
+        (kind, shape)
+    })
+}
 
 /// Student-T's γ of an element (`None` for the other NDFs).
 fn student_t_gamma(e: &El) -> Option<f64> {
-    (e.ndf >= NDF_STUDENT_T_SHAPES)
-        .then(|| STUDENT_T_GAMMAS[(e.ndf - NDF_STUDENT_T_SHAPES) as usize])
+    match shaped(e) {
+        Some((NdfKind::StudentT, g)) => g,
+        _ => None,
+    }
 }
 
 /// Record 2's w of an element: the NDF plus 16 times its shape table's row.
 fn ndf_code(e: &El) -> f32 {
-    if e.ndf >= NDF_STUDENT_T_SHAPES {
-        let row = SHAPE_ROWS.get().expect("the tables")[(e.ndf - NDF_STUDENT_T_SHAPES) as usize];
-        (MS_NDF_STUDENT_T + 16 * row) as f32
+    if e.ndf >= NDF_SHAPED {
+        let k = (e.ndf - NDF_SHAPED) as usize;
+        let row = SHAPE_ROWS.get().expect("the tables")[k];
+        (SHAPED[k].2 + 16 * row) as f32
     } else {
         e.ndf as f32
     }
@@ -152,8 +171,8 @@ impl Worst {
 /// The Rust f32 material of an element.
 fn rust(e: &El) -> Box<dyn MicrofacetDistribution<f32>> {
     let [ax, ay] = e.alpha;
-    if let Some(g) = student_t_gamma(e) {
-        return Box::new(Microfacet::<f32, StudentT>::with_shape(ax, ay, Some(g)).unwrap());
+    if let Some((kind, shape)) = shaped(e) {
+        return Box::new(AnyMicrofacet::<f32>::new(kind, ax, ay, shape).unwrap());
     }
     if e.ndf == NDF_DOUBLE_GGX {
         Box::new(Microfacet::<f32, DoubleGgx>::new(ax, ay).unwrap())
@@ -438,24 +457,41 @@ fn histogram(edges: &[f32], normals: impl Iterator<Item = [f32; 3]>) -> Vec<f64>
     h
 }
 
-/// The rejection samplers' distribution: 2^18 GPU normals (`ms_sample`, pseudo-random u)
-/// against 2^18 Rust ones (`sample`, independent u) per material and direction, a
-/// two-sample χ² over 512 bins, 32 of φm by 16 of cos θm between the quantiles of 2^14 more
-/// Rust normals (so that each holds about as many: the peak is resolved at every α)
-/// (Σ (a − b)²/(a + b) over the bins
-/// either hits, χ² with one degree fewer than those bins), at p = 1e-6. The Rust samplers are
-/// χ²-tested against their pdfs (crates/microsurface/tests/chi2.rs), so this makes the GPU
-/// ones consistent with the Rust pdf. Grazing, oblique and normal incidence, isotropic and
-/// anisotropic roughness; Double GGX, the Exponential NDF and Student-T (γ = 2.5 and 10: the
-/// posterior sampler, whose GPU draws are not the Rust ones).
+/// The two-sample χ² of two histograms of equal totals: Σ (a − b)²/(a + b) over the bins
+/// either hits, and that number of bins.
+fn chi2_two_sample(a: &[f64], b: &[f64]) -> (f64, usize) {
+    let (mut chi2, mut bins) = (0.0, 0usize);
+    for (x, y) in a.iter().zip(b) {
+        if x + y > 0.0 {
+            chi2 += (x - y) * (x - y) / (x + y);
+            bins += 1;
+        }
+    }
+    (chi2, bins)
+}
+
+/// The samplers' distributions: 2^18 GPU normals (`ms_sample` and `ms_sample_dcos`,
+/// pseudo-random u) against 2^18 Rust ones (`sample`, `sample_dcos`, independent u) per
+/// material and direction, a two-sample χ² over 512 bins, 32 of φm by 16 of cos θm between
+/// the quantiles of 2^14 more Rust normals (so that each holds about as many: the peak is
+/// resolved at every α) (Σ (a − b)²/(a + b) over the bins either hits, χ² with one degree
+/// fewer than those bins), at p = 1e-6. The Rust samplers are χ²-tested against their pdfs
+/// (crates/microsurface/tests/chi2.rs), so this makes the GPU ones consistent with the Rust
+/// pdf. Grazing, oblique and normal incidence, isotropic and anisotropic roughness; Double
+/// GGX, the Exponential NDF, Student-T (γ = 2.5 and 10), Ei, Erfc and K0 (the mixtures'
+/// samplers draw other uniforms than the Rust ones: the same distribution, not the same
+/// normals).
 #[test]
-fn visible_samplers_are_chi2_consistent_with_rust() {
+fn samplers_are_chi2_consistent_with_rust() {
     const N: usize = 1 << 18;
     let configs: Vec<(u32, [f32; 2], [f32; 3])> = [
         NDF_DOUBLE_GGX,
         NDF_EXPONENTIAL,
         NDF_STUDENT_T_SHAPES + 1,
         NDF_STUDENT_T_SHAPES + 2,
+        NDF_SHAPED + 4,
+        NDF_SHAPED + 5,
+        NDF_SHAPED + 6,
     ]
     .iter()
     .flat_map(|&ndf| {
@@ -468,100 +504,139 @@ fn visible_samplers_are_chi2_consistent_with_rust() {
     .collect();
     let mut st = 0x5eed_0fc4_15a3_d00d_u64;
     let mut uniform = move || (splitmix(&mut st) >> 40) as f32 / 16_777_216.0;
-    let mut els = Vec::with_capacity(configs.len() * N);
-    let (mut rust_normals, mut edges) = (Vec::new(), Vec::new());
+    let edges_of = |mut z: Vec<f32>| {
+        z.sort_by(f32::total_cmp);
+        (1..16).map(|q| z[q << 10]).collect::<Vec<f32>>()
+    };
     for &(ndf, alpha, wo) in &configs {
-        let m = rust(&El {
+        let probe = El {
             ndf,
             alpha,
             u: [0.0; 2],
             wo,
             wm: [0.0; 3],
-        });
-        let mut z: Vec<f32> = (0..1 << 14)
-            .map(|_| m.sample(wo, [uniform(), uniform()]).wm[2])
-            .collect();
-        z.sort_by(f32::total_cmp);
-        edges.push((1..16).map(|q| z[q << 10]).collect::<Vec<f32>>());
-        let mut r = Vec::with_capacity(N);
+        };
+        let m = rust(&probe);
+        let visible_edges = edges_of(
+            (0..1 << 14)
+                .map(|_| m.sample(wo, [uniform(), uniform()]).wm[2])
+                .collect(),
+        );
+        let dcos_edges = edges_of(
+            (0..1 << 14)
+                .map(|_| m.sample_dcos([uniform(), uniform()]).wm[2])
+                .collect(),
+        );
+        let mut els = Vec::with_capacity(N);
+        let (mut visible, mut dcos) = (Vec::with_capacity(N), Vec::with_capacity(N));
         for _ in 0..N {
-            let e = El {
-                ndf,
-                alpha,
+            els.push(El {
                 u: [uniform(), uniform()],
-                wo,
-                wm: [0.0, 0.0, 1.0],
-            };
-            els.push(e);
-            let u = [uniform(), uniform()];
-            r.push(m.sample(wo, u).wm);
+                ..probe
+            });
+            visible.push(m.sample(wo, [uniform(), uniform()]).wm);
+            dcos.push(m.sample_dcos([uniform(), uniform()]).wm);
         }
-        rust_normals.push(r);
-    }
-    for (k, &(ndf, alpha, wo)) in configs.iter().enumerate() {
         // (One dispatch per configuration: a storage binding holds at most 128 MiB.)
-        let Some(out) = run("ms_k_family_sample", &els[k * N..(k + 1) * N]) else {
+        let Some(out) = run("ms_k_family_sample", &els) else {
             return;
         };
-        let gpu = histogram(&edges[k], out.iter().map(|o| [o[1][0], o[1][1], o[1][2]]));
-        let cpu = histogram(&edges[k], rust_normals[k].iter().copied());
-        let (mut chi2, mut bins) = (0.0, 0usize);
-        for (a, b) in gpu.iter().zip(&cpu) {
-            if a + b > 0.0 {
-                chi2 += (a - b) * (a - b) / (a + b);
-                bins += 1;
-            }
+        for (what, edges, gpu, cpu) in [
+            (
+                "visible",
+                &visible_edges,
+                histogram(
+                    &visible_edges,
+                    out.iter().map(|o| [o[1][0], o[1][1], o[1][2]]),
+                ),
+                histogram(&visible_edges, visible.iter().copied()),
+            ),
+            (
+                "D·cos",
+                &dcos_edges,
+                histogram(&dcos_edges, out.iter().map(|o| [o[0][0], o[0][1], o[0][2]])),
+                histogram(&dcos_edges, dcos.iter().copied()),
+            ),
+        ] {
+            let _ = edges;
+            let (chi2, bins) = chi2_two_sample(&gpu, &cpu);
+            let limit = chi2_quantile_1e6((bins - 1) as f64);
+            eprintln!(
+                "ndf {ndf} α {alpha:?} wo {wo:?} {what}: χ² {chi2:.1} over {bins} bins (limit {limit:.1})"
+            );
+            assert!(
+                chi2 <= limit,
+                "ndf {ndf} α {alpha:?} wo {wo:?} {what}: χ² {chi2:.1} > {limit:.1} ({bins} bins)"
+            );
         }
-        let limit = chi2_quantile_1e6((bins - 1) as f64);
-        eprintln!(
-            "ndf {ndf} α {alpha:?} wo {wo:?}: χ² {chi2:.1} over {bins} bins (limit {limit:.1})"
-        );
-        assert!(
-            chi2 <= limit,
-            "ndf {ndf} α {alpha:?} wo {wo:?}: χ² {chi2:.1} > {limit:.1} ({bins} bins)"
-        );
     }
 }
 
-/// Student-T's Λ bound at w, from Λ's value λ (f64): `TOL`; the rounding of z = cot θ/α̃ (a
-/// few ε) times Λ's condition number in z (≤ 2γ − 1: ~1 at grazing, the tail's power 2γ − 2
-/// near the normal); and, where the rows hold 256 log₂ Λ₁ (p), their f32 rounding, ε|p| in p,
-/// which is ln 2 ε|log₂ λ| in Λ, with exp2's Vulkan allowance (3 + 2|log₂ λ| ulp).
-fn student_t_lambda_bound(g: f64, lambda: f64) -> f64 {
+/// The relative condition number of `f` (positive) in its argument's scale: |d ln f/d ln t|
+/// at t = 1, by a central difference (f64).
+fn condition(f: impl Fn(f64) -> f64) -> f64 {
+    let (h, f0) = (1e-6, f(1.0));
+    if !(f0 > 0.0 && f0.is_finite()) {
+        return 0.0;
+    }
+    let (p, q) = (f(1.0 + h), f(1.0 - h));
+    if !(p > 0.0 && q > 0.0) {
+        return 0.0;
+    }
+    ((p / q).ln() / (2.0 * h)).abs()
+}
+
+/// Λ's bound at w for an NDF with a shape table, from the f64 material: `TOL`; the rounding
+/// of z = cot θ/α̃ (a few ε) times Λ's condition number in z (numerically, from the Rust f64
+/// Λ: ~1 at grazing, the tail's power 2γ − 2 near the normal for Student-T, 2z² or 2z for
+/// the exponential tails); and, where the rows hold 256 log₂ Λ₁ (p), their f32 rounding, ε|p|
+/// in p, which is ln 2 ε|log₂ Λ| in Λ, with exp2's Vulkan allowance (3 + 2|log₂ Λ| ulp).
+fn shaped_lambda_bound(m: &dyn MicrofacetDistribution<f64>, w: [f32; 3]) -> f64 {
+    let w = w.map(f64::from);
+    let lambda = m.lambda(w);
     let x = if lambda > 0.0 && lambda.is_finite() {
         lambda.log2().abs()
     } else {
         0.0
     };
-    TOL + 8.0 * EPS * (2.0 * g - 1.0) + 8.0 * EPS * (1.0 + x)
+    let kappa = condition(|t| m.lambda([w[0], w[1], w[2] * t]));
+    TOL + 8.0 * EPS * (1.0 + kappa) + 8.0 * EPS * (1.0 + x)
 }
 
-/// Student-T's D bound at wm: D = e^{−e}/(π αx αy z⁴), e = γ ln(1 + t), t = q/((γ − 1)z²):
-/// t carries ~5 roundings and ln(1 + t) ~3 (so e moves by ~8εγ), and Vulkan allows the
-/// exponential (3 + 2e) ulp: `TOL` + (8 + 8γ + 4e)ε.
-fn student_t_d_bound(g: f64, wm: [f32; 3], alpha: [f32; 2]) -> f64 {
-    let (x, y, z) = (
-        wm[0] as f64 / alpha[0] as f64,
-        wm[1] as f64 / alpha[1] as f64,
-        wm[2] as f64,
-    );
-    let e = if z > 0.0 {
-        g * ((x * x + y * y) / ((g - 1.0) * z * z)).ln_1p()
+/// D's bound at wm for an NDF with a shape table: D = exp(ln f₁(r) − ln(αx αy) − 4 ln z).
+/// r² carries ~5 roundings and ln f₁ is the profile's formula (Student-T: γ ln(1 + t); the
+/// others: a fitted table within 1e-7 of the Rust f64 function, and a logarithm), so ln D
+/// moves by 8ε times D's condition number in r² (numerically, from the Rust f64 D) plus the
+/// table's 1e-7, plus Vulkan's allowance for the logarithms (2^−21 absolute each near 1, up to
+/// four) and the exponential ((3 + 2|ln D|) ulp).
+fn shaped_d_bound(m: &dyn MicrofacetDistribution<f64>, wm: [f32; 3]) -> f64 {
+    let wm = wm.map(f64::from);
+    let d = m.d(wm);
+    let ln_d = if d > 0.0 && d.is_finite() {
+        d.ln().abs()
     } else {
         0.0
     };
-    TOL + (8.0 + 8.0 * g + 4.0 * e) * EPS
+    // (Scaling the horizontal components scales r² by t²: half the condition in t.)
+    let kappa = 0.5 * condition(|t| m.d([wm[0] * t, wm[1] * t, wm[2]]));
+    TOL + 1e-7 + 4.0 * 4.768_371_6e-7 + EPS * (8.0 + 2.0 * ln_d + 8.0 * kappa)
+}
+
+/// The f64 material of an element with a shape table.
+fn rust64(e: &El) -> AnyMicrofacet<f64> {
+    let (kind, shape) = shaped(e).expect("a shape table");
+    AnyMicrofacet::<f64>::new(kind, e.alpha[0] as f64, e.alpha[1] as f64, shape).unwrap()
 }
 
 #[test]
-fn student_t_d_lambda_g1_g2_pdfs_match_rust_f32() {
+fn shaped_d_lambda_g1_g2_pdfs_match_rust_f32() {
     let mut els = Vec::new();
-    for k in 0..STUDENT_T_GAMMAS.len() as u32 {
+    for k in 0..SHAPED.len() as u32 {
         for &alpha in &ALPHAS {
             for &wo in &directions() {
                 for &wm in &normals() {
                     els.push(El {
-                        ndf: NDF_STUDENT_T_SHAPES + k,
+                        ndf: NDF_SHAPED + k,
                         alpha,
                         u: [0.5; 2],
                         wo,
@@ -584,13 +659,10 @@ fn student_t_d_lambda_g1_g2_pdfs_match_rust_f32() {
         "D·cos pdf / bound",
         "G1(wm) / bound",
     ];
-    let mut w: Vec<Worst> = STUDENT_T_GAMMAS
-        .iter()
-        .map(|_| Worst::new(&names))
-        .collect();
+    let mut w: Vec<Worst> = SHAPED.iter().map(|_| Worst::new(&names)).collect();
     for (e, o) in els.iter().zip(&out) {
         let m = rust(e);
-        let g = student_t_gamma(e).expect("Student-T");
+        let m64 = rust64(e);
         let (wo, wm) = (e.wo, e.wm);
         let r = [
             m.d(wm),
@@ -606,23 +678,23 @@ fn student_t_d_lambda_g1_g2_pdfs_match_rust_f32() {
             o[0][0], o[0][1], o[0][2], o[0][3], o[1][0], o[1][1], o[1][2], o[1][3],
         ];
         let (lo, li) = (m.lambda(wo) as f64, m.lambda(wm) as f64);
-        let (bo, bi) = (student_t_lambda_bound(g, lo), student_t_lambda_bound(g, li));
+        let (bo, bi) = (shaped_lambda_bound(&m64, wo), shaped_lambda_bound(&m64, wm));
         let frac = |l: f64| if l.is_finite() { l / (1.0 + l) } else { 1.0 };
         let g1 = TOL + bo * frac(lo);
         let g1m = TOL + bi * frac(li);
         let g2 = TOL + bo.max(bi) * frac(lo + li);
-        let d = student_t_d_bound(g, wm, e.alpha);
+        let d = shaped_d_bound(&m64, wm);
         let pdf = g1 + d + 8.0 * EPS * dot_cancellation(wo, wm);
         let tol = [d, bo, g1, g2, g1 + g1m + TOL, pdf, d, g1m];
-        let k = (e.ndf - NDF_STUDENT_T_SHAPES) as usize;
+        let k = (e.ndf - NDF_SHAPED) as usize;
         for q in 0..names.len() {
             w[k].add(q, rel(gpu[q], r[q]) / tol[q], || {
                 format!("{e:?}: gpu {} rust {} (bound {:e})", gpu[q], r[q], tol[q])
             });
         }
     }
-    for (k, g) in STUDENT_T_GAMMAS.iter().enumerate() {
-        eprintln!("Student-T γ = {g}:");
+    for (k, (kind, shape, _)) in SHAPED.iter().enumerate() {
+        eprintln!("{kind:?} {shape:?}:");
         w[k].check();
     }
 }
@@ -667,11 +739,9 @@ fn student_t_dcos_sampler_gives_the_rust_f32_normals() {
             format!("{e:?}: gpu {:?} rust {:?} (bound {tol:e})", o[0], s.wm)
         });
         let p = m.pdf_dcos(gm);
-        w.add(
-            1,
-            rel(o[0][3], p) / student_t_d_bound(g, gm, e.alpha),
-            || format!("{e:?}: gpu {} rust {p}", o[0][3]),
-        );
+        w.add(1, rel(o[0][3], p) / shaped_d_bound(&rust64(e), gm), || {
+            format!("{e:?}: gpu {} rust {p}", o[0][3])
+        });
     }
     w.check();
 }

@@ -8,7 +8,8 @@
 //   row 0: (shape (γ, a; 0 for none), k₁, 1 if the rows hold Λ₁ itself else 0, σ₁(0))
 //   row 1: (1 for a power-law tail else 0, p, ln K, K₂): Λ₁ = e^{ln K − p ln z}(1 + K₂/z²)
 //          past z = 2^k₁ (0 past it for the others)
-//   row 2: (E[β] of the prior, the mixing's parameter k, 0, 0)
+//   row 2: (E[β] of the prior, the mixing's parameter k, the mixing (ms_mixing_ln_beta's
+//          code), 0)
 //   rows 3…: the Λ₁ rows, two vec4 each (five coefficients of the degree-4 polynomial in
 //          s ∈ [−1, 1), s⁰ first), 32 rows an octave of z = cot θ/α̃ from 2^−24 to 2^k₁,
 //          holding Λ₁ or 256 log₂ Λ₁ (the Rust `FittedShape` layout).
@@ -147,30 +148,38 @@ fn ms_beckmann_sample_stream_above(v: vec3<f32>, alpha: vec2<f32>,
     return ms_facing(ms_unit_normal(vec3<f32>(p, q, 1.0)), v);
 }
 
+// ln β(t) of the mixing variable t drawn from its prior (`biased` false) or its size-biased
+// prior w(t)β(t)/E[β] (true), at α = 1 (the Rust Posterior::draw_ln_beta): `mixing` 0
+// inverse-Gamma(k) (Student-T, β = √(k/t)), 1 Gamma(k) (K0, Bessel-K, β = √t), 2 uniform in
+// β² (Ei: t = U, or U^{2/3}), 3 uniform in β (Erfc: t = U, or √U).
+fn ms_mixing_ln_beta(mixing: u32, k: f32, biased: bool, state: ptr<function, vec2<u32>>) -> f32 {
+    let bias = select(0.0, 1.0, biased);
+    if mixing == 0u {
+        return 0.5 * (log(k) - ms_ln_gamma_variate(k - 0.5 * bias, state));
+    }
+    if mixing == 1u {
+        return 0.5 * ms_ln_gamma_variate(k + 0.5 * bias, state);
+    }
+    if mixing == 2u {
+        return 0.5 * log(ms_stream_next_positive(state)) / (1.0 + 0.5 * bias);
+    }
+    return log(ms_stream_next_positive(state)) / (1.0 + bias);
+}
+
 // ln β of the mixing variable's posterior for a unit direction with z = v.z > 0 and stretched
 // horizontal length h (the Rust mixture::Posterior::sample_ln_beta): a candidate from the
 // prior (weight z) or the size-biased prior (weight h E[β]/(2√π)), kept with probability
 // σ_B/(z + βh/(2√π)) ≥ ½, σ_B = z + (βh/(2√π)) e^{−a²} r(a), a = z/(βh), r(a) = 1 − √π a
 // erfcx(a) (Beckmann's projected area, two positive terms). `mixing`: 0 inverse-Gamma(k)
-// (Student-T, β = √(k/t)), 1 Gamma(k) (K0, Bessel-K, β = √t), 2 uniform in β² (Ei), 3 uniform
-// in β (Erfc). NaN after 64 candidates (probability below 1e-19).
+// (Student-T), 1 Gamma(k) (K0, Bessel-K), 2 uniform in β² (Ei), 3 uniform in β (Erfc), as
+// ms_mixing_ln_beta. NaN after 64 candidates (probability below 1e-19).
 fn ms_posterior_ln_beta(mixing: u32, k: f32, mean_beta: f32, z: f32, h: f32,
     state: ptr<function, vec2<u32>>) -> f32 {
     let c = 0.5 * MS_FRAC_1_SQRT_PI;
     let p_prior = z / (z + c * h * mean_beta);
     for (var n = 0; n < 64; n++) {
         let biased = ms_stream_next(state) >= p_prior;
-        let bias = select(0.0, 1.0, biased);
-        var ln_beta: f32;
-        if mixing == 0u {
-            ln_beta = 0.5 * (log(k) - ms_ln_gamma_variate(k - 0.5 * bias, state));
-        } else if mixing == 1u {
-            ln_beta = 0.5 * ms_ln_gamma_variate(k + 0.5 * bias, state);
-        } else if mixing == 2u {
-            ln_beta = 0.5 * log(ms_stream_next_positive(state)) / (1.0 + 0.5 * bias);
-        } else {
-            ln_beta = log(ms_stream_next_positive(state)) / (1.0 + bias);
-        }
+        let ln_beta = ms_mixing_ln_beta(mixing, k, biased, state);
         let hb = h * exp(ln_beta);
         var keep = 1.0;
         if hb > 0.0 && hb <= 3.4028235e38 {
@@ -184,13 +193,12 @@ fn ms_posterior_ln_beta(mixing: u32, k: f32, mean_beta: f32, z: f32, h: f32,
     return bitcast<f32>(0x7fc00000u);
 }
 
-// A visible normal of the mixture whose shape table is at `table` (mixing as
-// ms_posterior_ln_beta) for w (w.z < 0 mirrored) from u: β from the posterior over the
-// stream of u, then Beckmann's stream sampler at β(αx, αy) (the Rust Posterior::sample_visible;
-// its uniforms are f64 draws of the stream, these f32 ones: the same distribution, not the
-// same normal). Where the posterior gives up (probability ~1e-19), β = E[β].
-fn ms_mixture_sample_wm(mixing: u32, table: u32, w_in: vec3<f32>, alpha: vec2<f32>,
-    u: vec2<f32>) -> vec3<f32> {
+// A visible normal of the mixture whose shape table is at `table` for w (w.z < 0 mirrored)
+// from u: β from the posterior over the stream of u (the table's mixing), then Beckmann's
+// stream sampler at β(αx, αy) (the Rust Posterior::sample_visible; its uniforms are f64 draws
+// of the stream, these f32 ones: the same distribution, not the same normal). Where the
+// posterior gives up (probability ~1e-19), β = E[β].
+fn ms_mixture_sample_wm(table: u32, w_in: vec3<f32>, alpha: vec2<f32>, u: vec2<f32>) -> vec3<f32> {
     var w = ms_unit(w_in);
     if w.z < 0.0 {
         w = -w;
@@ -200,17 +208,112 @@ fn ms_mixture_sample_wm(mixing: u32, table: u32, w_in: vec3<f32>, alpha: vec2<f3
     let sy = alpha.y * w.y;
     let h = sqrt(sx * sx + sy * sy);
     var state = ms_stream_new(u);
-    var ln_beta = ms_posterior_ln_beta(mixing, params.y, params.x, w.z, h, &state);
+    var ln_beta = ms_posterior_ln_beta(u32(params.z), params.y, params.x, w.z, h, &state);
     if ln_beta != ln_beta {
         ln_beta = log(params.x);
     }
-    // β(αx, αy) within f32's range with margin (|ln| ≤ 80): β = 0 or ∞ has probability 0.
-    let lo = log(min(alpha.x, alpha.y));
-    let hi = log(max(alpha.x, alpha.y));
-    let beta = exp(clamp(ln_beta, -80.0 - lo, 80.0 - hi));
+    let beta = ms_mixture_beta(ln_beta, alpha);
     if !(w.z > 0.0) {
         // (On the horizon: Beckmann's warp, a visible normal.)
         return ms_beckmann_sample_wm(w, beta * alpha, u);
     }
     return ms_beckmann_sample_stream_above(w, beta * alpha, &state);
+}
+
+// G1, G2 (height-correlated and separable) and the visible density D_w(wm) =
+// G1(w)(w·wm)D(wm)/|w.z| of a mixture from its shape table (Λ) and, for the density, its
+// D(wm) = d; w.z < 0 mirrored; 0 at grazing w and for wm facing away from w.
+fn ms_mixture_g1(table: u32, w: vec3<f32>, alpha: vec2<f32>) -> f32 {
+    return 1.0 / (1.0 + ms_shape_lambda(table, w, alpha));
+}
+
+fn ms_mixture_g2(table: u32, wo: vec3<f32>, wi: vec3<f32>, alpha: vec2<f32>) -> f32 {
+    return 1.0 / (1.0 + (ms_shape_lambda(table, wo, alpha) + ms_shape_lambda(table, wi, alpha)));
+}
+
+fn ms_mixture_g2_separable(table: u32, wo: vec3<f32>, wi: vec3<f32>, alpha: vec2<f32>) -> f32 {
+    return ms_mixture_g1(table, wo, alpha) * ms_mixture_g1(table, wi, alpha);
+}
+
+fn ms_mixture_pdf(table: u32, w: vec3<f32>, wm: vec3<f32>, alpha: vec2<f32>, d: f32) -> f32 {
+    let z = abs(w.z);
+    var c = ms_dot(w, wm);
+    if w.z < 0.0 {
+        c = -c;
+    }
+    if !(c > 0.0 && z > 0.0) {
+        return 0.0;
+    }
+    return ms_mixture_g1(table, w, alpha) * c * d / z;
+}
+
+// The clamp of ln β: β(αx, αy) within f32's range with margin (|ln| ≤ 80); β = 0 or ∞ has
+// probability 0.
+fn ms_mixture_beta(ln_beta: f32, alpha: vec2<f32>) -> f32 {
+    let lo = log(min(alpha.x, alpha.y));
+    let hi = log(max(alpha.x, alpha.y));
+    return exp(clamp(ln_beta, -80.0 - lo, 80.0 - hi));
+}
+
+// A D·cos normal of the mixture whose shape table is at `table`, from u: D·cos of a
+// superposition of (normalised) Beckmann components is the superposition of their D·cos
+// with the prior's weights, so β from the prior over the stream of u, then Beckmann's D·cos
+// warp of u at β(αx, αy). Exact in distribution; the Rust fast path inverts the radial CDF
+// instead (a warp of u), so the normals are not the Rust ones.
+fn ms_mixture_sample_dcos_wm(table: u32, alpha: vec2<f32>, u: vec2<f32>) -> vec3<f32> {
+    let params = ms_tables[table + 2u];
+    var state = ms_stream_new(u);
+    var ln_beta = ms_mixing_ln_beta(u32(params.z), params.y, false, &state);
+    if ln_beta != ln_beta {
+        ln_beta = log(params.x);
+    }
+    return ms_beckmann_sample_dcos(ms_mixture_beta(ln_beta, alpha) * alpha, u).wm;
+}
+
+// D of a mixture from the logarithm of its radial profile at unit roughness, ln f₁(r) (r the
+// stretched slope's length, from r² = q/z², q = (m.x/αx)² + (m.y/αy)²): D = f₁(r)/(αx αy z⁴),
+// formed as one exponential of ln f₁ − ln(αx αy z⁴), so that neither f₁ nor z⁴ underflows on
+// the way where D is a normal f32. 0 on and below the horizon; NaN stays NaN.
+fn ms_mixture_d_from_ln_profile(ln_f: f32, wm: vec3<f32>, alpha: vec2<f32>) -> f32 {
+    let ln_z = log(wm.z);
+    return exp(ln_f - log(alpha.x * alpha.y) - 4.0 * ln_z);
+}
+
+// r² = q/z² of wm at (αx, αy) (+∞ on the horizon).
+fn ms_mixture_r2(wm: vec3<f32>, alpha: vec2<f32>) -> f32 {
+    let x = wm.x / alpha.x;
+    let y = wm.y / alpha.y;
+    return (x * x + y * y) / (wm.z * wm.z);
+}
+
+// e^z K₀(z) for z > 0: (1 + z)(−ln(z/2) − γ_E) below 2^−14 (the next terms, O(z² ln z), are
+// below ε/4 there), the table (MS_SF_K0E) to 2^9, the asymptotic series √(π/(2z))(1 − 1/(8z) +
+// 9/(128z²)) beyond (next term 3e-10).
+fn ms_k0e(z: f32) -> f32 {
+    if z < 6.1035156e-5 {
+        return (1.0 + z) * (-log(0.5 * z) - MS_EULER_GAMMA);
+    }
+    if z >= 512.0 {
+        let r = 1.0 / z;
+        return sqrt(0.5 * MS_PI * r) * (1.0 - r * (0.125 - r * (9.0 / 128.0)));
+    }
+    let g = ms_bk_segment(z, MS_SF_K0E_K0, MS_SF_K0E_K1);
+    let i = MS_SF_K0E_AT + 2u * u32(g.x);
+    return ms_bk_poly(ms_tables[i], ms_tables[i + 1u], g.y);
+}
+
+// e^y E₁(y) for y > 0: −γ_E − ln y below 2^−24 (the next term, y, is below ε/16 of it), the
+// table (MS_SF_E1X) to 2^9, the asymptotic series (1/y)(1 − 1/y + 2/y² − 6/y³) beyond (next
+// term 24/y⁴ ≤ 3.5e-10).
+fn ms_e1x(y: f32) -> f32 {
+    if y < 5.9604645e-8 {
+        return -MS_EULER_GAMMA - log(y);
+    }
+    if y >= 512.0 {
+        let r = 1.0 / y;
+        return r * (1.0 - r * (1.0 - r * (2.0 - r * 6.0)));
+    }
+    let g = ms_bk_segment(y, MS_SF_E1X_K0, MS_SF_E1X_K1);
+    let i = MS_SF_E1X_AT + 2u * u32(g.x);
+    return ms_bk_poly(ms_tables[i], ms_tables[i + 1u], g.y);
 }

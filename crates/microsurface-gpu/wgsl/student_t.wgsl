@@ -136,6 +136,6 @@ fn ms_student_t_sample_dcos(alpha: vec2<f32>, u: vec2<f32>, table: u32) -> MsSam
 // A visible normal for w (w.z < 0 mirrored) from u, with its pdf: the posterior of the
 // inverse-Gamma(γ − 1) mixing, then Beckmann's stream sampler (mixture.wgsl).
 fn ms_student_t_sample(w: vec3<f32>, alpha: vec2<f32>, u: vec2<f32>, table: u32) -> MsSample {
-    let wm = ms_mixture_sample_wm(0u, table, w, alpha, u);
+    let wm = ms_mixture_sample_wm(table, w, alpha, u);
     return MsSample(wm, ms_student_t_pdf(ms_unit(w), wm, alpha, table));
 }

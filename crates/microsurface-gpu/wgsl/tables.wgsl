@@ -37,6 +37,16 @@ const MS_BK_ERFINV_W_K0: i32 = 4;
 const MS_BK_ERFINV_W_K1: i32 = 7;
 const MS_BK_ERFINV_W_AT: u32 = 504u; // 24 rows
 
+// e^z K₀(z) on [2^−14, 2^9) (the K0 NDF's profile) (fit error 5.3e-8 relative).
+const MS_SF_K0E_K0: i32 = -14;
+const MS_SF_K0E_K1: i32 = 9;
+const MS_SF_K0E_AT: u32 = 528u; // 184 rows
+
+// e^y E₁(y) on [2^−24, 2^9) (the Ei NDF's profile) (fit error 6.1e-8 relative).
+const MS_SF_E1X_K0: i32 = -24;
+const MS_SF_E1X_K1: i32 = 9;
+const MS_SF_E1X_AT: u32 = 712u; // 264 rows
+
 // erfinv(2u − 1) at u = 2^−1074, where the Rust samplers clamp u = 0.
 const MS_BK_QUANTILE_EDGE: f32 = -2.7200563e1;
 
@@ -44,41 +54,41 @@ const MS_BK_QUANTILE_EDGE: f32 = -2.7200563e1;
 const MS_DG_LAMBDA_K0: i32 = -30;
 const MS_DG_LAMBDA_K1: i32 = 16;
 const MS_DG_LAMBDA_M: u32 = 3u;
-const MS_DG_LAMBDA_AT: u32 = 528u; // 368 rows
+const MS_DG_LAMBDA_AT: u32 = 976u; // 368 rows
 
 // Double GGX slope kernel G(1/y), y = tan²θ/α²: the Rust DGGX_D (degree 9, f64) rounded to
 // f32 (largest relative change 5.8e-8).
 const MS_DG_D_K0: i32 = -30;
 const MS_DG_D_K1: i32 = 30;
 const MS_DG_D_M: u32 = 2u;
-const MS_DG_D_AT: u32 = 896u; // 720 rows
+const MS_DG_D_AT: u32 = 1344u; // 720 rows
 
 // Exponential Λ(√q), q = z² < 64: the Rust EXPONENTIAL32_QA (f32 cubics), bit for bit.
 const MS_EXP_QA_K0: i32 = -24;
 const MS_EXP_QA_K1: i32 = 6;
 const MS_EXP_QA_M: u32 = 5u;
-const MS_EXP_QA_AT: u32 = 1616u; // 960 rows
+const MS_EXP_QA_AT: u32 = 2064u; // 960 rows
 
 // Exponential Λ(√q), 64 ≤ q < 4096: the Rust EXPONENTIAL32_QB (f32 cubics), bit for bit.
 const MS_EXP_QB_K0: i32 = 6;
 const MS_EXP_QB_K1: i32 = 12;
 const MS_EXP_QB_M: u32 = 7u;
-const MS_EXP_QB_AT: u32 = 2576u; // 768 rows
+const MS_EXP_QB_AT: u32 = 3024u; // 768 rows
 
 // Exponential Λ(z) e^z on octaves of z: the Rust EXPONENTIAL_FAR (degree 6, f64) rounded to
 // f32 (largest relative change 4.4e-8).
 const MS_EXP_FAR_K0: i32 = 5;
 const MS_EXP_FAR_K1: i32 = 9;
 const MS_EXP_FAR_M: u32 = 3u;
-const MS_EXP_FAR_AT: u32 = 3344u; // 64 rows
+const MS_EXP_FAR_AT: u32 = 3792u; // 64 rows
 
 // The Exp(1) ziggurat's layers, f(x) = e^{−x} (the Rust ZIG_EXP_X and ZIG_EXP_F, rounded to
 // f32): row i = (x_i, f(x_i), x_{i+1}, f(x_{i+1})).
-const MS_ZIG_EXP_AT: u32 = 3408u; // 256 rows
+const MS_ZIG_EXP_AT: u32 = 3856u; // 256 rows
 
 // The half-normal ziggurat's layers, f(x) = e^{−x²/2} (the Rust ZIG_NORMAL_X and
 // ZIG_NORMAL_F, rounded to f32): row i = (x_i, f(x_i), x_{i+1}, f(x_{i+1})).
-const MS_ZIG_NORMAL_AT: u32 = 3664u; // 256 rows
+const MS_ZIG_NORMAL_AT: u32 = 4112u; // 256 rows
 
 // The buffer's length in rows.
-const MS_TABLES_ROWS: u32 = 3920u;
+const MS_TABLES_ROWS: u32 = 4368u;

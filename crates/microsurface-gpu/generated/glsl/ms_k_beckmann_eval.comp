@@ -68,30 +68,36 @@ const uint MS_BK_ERFINV_Q_AT = 304u;
 const int MS_BK_ERFINV_W_K0_ = 4;
 const int MS_BK_ERFINV_W_K1_ = 7;
 const uint MS_BK_ERFINV_W_AT = 504u;
+const int MS_SF_K0E_K0_ = -14;
+const int MS_SF_K0E_K1_ = 9;
+const uint MS_SF_K0E_AT = 528u;
+const int MS_SF_E1X_K0_ = -24;
+const int MS_SF_E1X_K1_ = 9;
+const uint MS_SF_E1X_AT = 712u;
 const float MS_BK_QUANTILE_EDGE = -27.200563;
 const int MS_DG_LAMBDA_K0_ = -30;
 const int MS_DG_LAMBDA_K1_ = 16;
 const uint MS_DG_LAMBDA_M = 3u;
-const uint MS_DG_LAMBDA_AT = 528u;
+const uint MS_DG_LAMBDA_AT = 976u;
 const int MS_DG_D_K0_ = -30;
 const int MS_DG_D_K1_ = 30;
 const uint MS_DG_D_M = 2u;
-const uint MS_DG_D_AT = 896u;
+const uint MS_DG_D_AT = 1344u;
 const int MS_EXP_QA_K0_ = -24;
 const int MS_EXP_QA_K1_ = 6;
 const uint MS_EXP_QA_M = 5u;
-const uint MS_EXP_QA_AT = 1616u;
+const uint MS_EXP_QA_AT = 2064u;
 const int MS_EXP_QB_K0_ = 6;
 const int MS_EXP_QB_K1_ = 12;
 const uint MS_EXP_QB_M = 7u;
-const uint MS_EXP_QB_AT = 2576u;
+const uint MS_EXP_QB_AT = 3024u;
 const int MS_EXP_FAR_K0_ = 5;
 const int MS_EXP_FAR_K1_ = 9;
 const uint MS_EXP_FAR_M = 3u;
-const uint MS_EXP_FAR_AT = 3344u;
-const uint MS_ZIG_EXP_AT = 3408u;
-const uint MS_ZIG_NORMAL_AT = 3664u;
-const uint MS_TABLES_ROWS = 3920u;
+const uint MS_EXP_FAR_AT = 3792u;
+const uint MS_ZIG_EXP_AT = 3856u;
+const uint MS_ZIG_NORMAL_AT = 4112u;
+const uint MS_TABLES_ROWS = 4368u;
 const float MS_FRAC_1_SQRT_PI = 0.5641896;
 const float MS_SQRT_PI = 1.7724539;
 const float MS_EULER_GAMMA = 0.5772157;
@@ -103,6 +109,9 @@ const uint MS_NDF_BECKMANN = 1u;
 const uint MS_NDF_DOUBLE_GGX = 2u;
 const uint MS_NDF_EXPONENTIAL = 3u;
 const uint MS_NDF_STUDENT_T = 5u;
+const uint MS_NDF_EI = 6u;
+const uint MS_NDF_ERFC = 7u;
+const uint MS_NDF_K0_ = 8u;
 const uint MS_MASKING_CORRELATED = 0u;
 const uint MS_MASKING_SEPARABLE = 1u;
 const uint MS_MASKING_CORRELATED_BETA = 2u;
@@ -128,25 +137,25 @@ float ms_inf() {
 }
 
 vec2 ms_cos_sin_turn(float v) {
-    float k_9 = roundEven((4.0 * v));
-    float r_3 = (v - (0.25 * k_9));
+    float k_10 = roundEven((4.0 * v));
+    float r_3 = (v - (0.25 * k_10));
     float x_14 = (MS_TAU * r_3);
     float x2_ = (x_14 * x_14);
     float s_10 = (x_14 * (1.0 + (x2_ * (-0.16666667 + (x2_ * (0.008333333 + (x2_ * (-0.0001984127 + (x2_ * 2.7557319e-6)))))))));
-    float c_16 = (1.0 + (x2_ * (-0.5 + (x2_ * (0.041666668 + (x2_ * (-0.0013888889 + (x2_ * (2.4801588e-5 + (x2_ * -2.755732e-7))))))))));
-    int q_2 = (int(k_9) & 3);
+    float c_17 = (1.0 + (x2_ * (-0.5 + (x2_ * (0.041666668 + (x2_ * (-0.0013888889 + (x2_ * (2.4801588e-5 + (x2_ * -2.755732e-7))))))))));
+    int q_2 = (int(k_10) & 3);
     if ((q_2 == 0)) {
-        return vec2(c_16, s_10);
+        return vec2(c_17, s_10);
     } else {
         if ((q_2 == 1)) {
-            return vec2(-(s_10), c_16);
+            return vec2(-(s_10), c_17);
         } else {
             if ((q_2 == 2)) {
-                return vec2(-(c_16), -(s_10));
+                return vec2(-(c_17), -(s_10));
             }
         }
     }
-    return vec2(s_10, -(c_16));
+    return vec2(s_10, -(c_17));
 }
 
 vec3 ms_rescaled(vec3 a) {
@@ -373,31 +382,31 @@ float ms_fresnel_dielectric(float cos_in, float eta_in_1) {
         eta_2 = (1.0 / _e9);
     }
     float _e12 = cos_i_1;
-    float c_17 = min(_e12, 1.0);
+    float c_18 = min(_e12, 1.0);
     float _e15 = eta_2;
     if ((_e15 == 1.0)) {
         return 0.0;
     }
-    if ((c_17 == 0.0)) {
+    if ((c_18 == 0.0)) {
         return 1.0;
     }
     float _e24 = eta_2;
     if ((_e24 > 1e18)) {
         float _e27 = eta_2;
         float e_3 = (1.0 / _e27);
-        float cos_t_1 = sqrt((((1.0 - e_3) * (1.0 + e_3)) + ((c_17 * e_3) * (c_17 * e_3))));
-        r_parl = ((c_17 - (e_3 * cos_t_1)) / (c_17 + (e_3 * cos_t_1)));
-        r_perp = (((e_3 * c_17) - cos_t_1) / ((e_3 * c_17) + cos_t_1));
+        float cos_t_1 = sqrt((((1.0 - e_3) * (1.0 + e_3)) + ((c_18 * e_3) * (c_18 * e_3))));
+        r_parl = ((c_18 - (e_3 * cos_t_1)) / (c_18 + (e_3 * cos_t_1)));
+        r_perp = (((e_3 * c_18) - cos_t_1) / ((e_3 * c_18) + cos_t_1));
     } else {
         float _e51 = eta_2;
         if ((_e51 > 1.0)) {
             float _e54 = eta_2;
             float _e57 = eta_2;
-            ect2_ = (((_e54 - 1.0) * (_e57 + 1.0)) + (c_17 * c_17));
+            ect2_ = (((_e54 - 1.0) * (_e57 + 1.0)) + (c_18 * c_18));
         } else {
             float _e63 = eta_2;
             float _e64 = eta_2;
-            ect2_ = ((_e63 * _e64) - ((1.0 - c_17) * (1.0 + c_17)));
+            ect2_ = ((_e63 * _e64) - ((1.0 - c_18) * (1.0 + c_18)));
         }
         float _e72 = ect2_;
         if ((_e72 <= 0.0)) {
@@ -407,9 +416,9 @@ float ms_fresnel_dielectric(float cos_in, float eta_in_1) {
         float ect = sqrt(_e76);
         float _e78 = eta_2;
         float _e79 = eta_2;
-        float e2c = ((_e78 * _e79) * c_17);
+        float e2c = ((_e78 * _e79) * c_18);
         r_parl = ((e2c - ect) / (e2c + ect));
-        r_perp = ((c_17 - ect) / (c_17 + ect));
+        r_perp = ((c_18 - ect) / (c_18 + ect));
     }
     float _e88 = r_parl;
     float _e89 = r_parl;
@@ -444,12 +453,12 @@ float ms_cnorm_ratio(vec2 a_6, vec2 b_3) {
 vec2 ms_crecip(vec2 a_7) {
     if ((abs(a_7.x) >= abs(a_7.y))) {
         float r_4 = (a_7.y / a_7.x);
-        float d_16 = (a_7.x + (a_7.y * r_4));
-        return vec2((1.0 / d_16), (-(r_4) / d_16));
+        float d_17 = (a_7.x + (a_7.y * r_4));
+        return vec2((1.0 / d_17), (-(r_4) / d_17));
     }
     float r_5 = (a_7.x / a_7.y);
-    float d_17 = ((a_7.x * r_5) + a_7.y);
-    return vec2((r_5 / d_17), (-1.0 / d_17));
+    float d_18 = ((a_7.x * r_5) + a_7.y);
+    return vec2((r_5 / d_18), (-1.0 / d_18));
 }
 
 vec2 ms_csqrt(vec2 a_8) {
@@ -576,42 +585,42 @@ vec3 ms_fresnel_eval(MsFresnel fr, float cos_i_4) {
 }
 
 float ms_ggx_d(vec3 wm_2, vec2 alpha) {
-    float z_5 = wm_2.z;
-    if (!((z_5 > 0.0))) {
+    float z_6 = wm_2.z;
+    if (!((z_6 > 0.0))) {
         return 0.0;
     }
     float x_15 = (wm_2.x / alpha.x);
-    float y_3 = (wm_2.y / alpha.y);
-    float t_6 = (((x_15 * x_15) + (y_3 * y_3)) + (z_5 * z_5));
+    float y_7 = (wm_2.y / alpha.y);
+    float t_6 = (((x_15 * x_15) + (y_7 * y_7)) + (z_6 * z_6));
     return (1.0 / ((((MS_PI * alpha.x) * alpha.y) * t_6) * t_6));
 }
 
 float ms_ggx_lambda(vec3 w_3, vec2 alpha_1) {
     float x_16 = (alpha_1.x * w_3.x);
-    float y_4 = (alpha_1.y * w_3.y);
-    float z_6 = abs(w_3.z);
-    float t_7 = ((x_16 * x_16) + (y_4 * y_4));
-    float z2_ = (z_6 * z_6);
-    float den = (2.0 * (z2_ + (z_6 * sqrt((z2_ + t_7)))));
+    float y_8 = (alpha_1.y * w_3.y);
+    float z_7 = abs(w_3.z);
+    float t_7 = ((x_16 * x_16) + (y_8 * y_8));
+    float z2_ = (z_7 * z_7);
+    float den = (2.0 * (z2_ + (z_7 * sqrt((z2_ + t_7)))));
     if (!((den > 0.0))) {
-        if ((z_6 == 0.0)) {
+        if ((z_7 == 0.0)) {
             float _e25 = ms_inf();
             return _e25;
         }
-        return ((t_7 / (z_6 + sqrt(((z_6 * z_6) + t_7)))) / (z_6 + z_6));
+        return ((t_7 / (z_7 + sqrt(((z_7 * z_7) + t_7)))) / (z_7 + z_7));
     }
     return (t_7 / den);
 }
 
 float ms_ggx_g1_(vec3 w_4, vec2 alpha_2) {
     float x_17 = (alpha_2.x * w_4.x);
-    float y_5 = (alpha_2.y * w_4.y);
-    float z_7 = abs(w_4.z);
-    float den_1 = (z_7 + sqrt(((z_7 * z_7) + ((x_17 * x_17) + (y_5 * y_5)))));
+    float y_9 = (alpha_2.y * w_4.y);
+    float z_8 = abs(w_4.z);
+    float den_1 = (z_8 + sqrt(((z_8 * z_8) + ((x_17 * x_17) + (y_9 * y_9)))));
     if (!((den_1 > 0.0))) {
         return 0.0;
     }
-    return ((z_7 + z_7) / den_1);
+    return ((z_8 + z_8) / den_1);
 }
 
 float ms_ggx_g2_(vec3 wo_6, vec3 wi_6, vec2 alpha_3) {
@@ -630,7 +639,7 @@ float ms_ggx_pdf(vec3 w_5, vec3 wm_3, vec2 alpha_5) {
     float c = 0.0;
     bool local_6 = false;
     bool local_7 = false;
-    float z_8 = abs(w_5.z);
+    float z_9 = abs(w_5.z);
     float _e5 = ms_dot(w_5, wm_3);
     c = _e5;
     if ((w_5.z < 0.0)) {
@@ -639,7 +648,7 @@ float ms_ggx_pdf(vec3 w_5, vec3 wm_3, vec2 alpha_5) {
     }
     float _e12 = c;
     if ((_e12 > 0.0)) {
-        local_6 = (z_8 > 0.0);
+        local_6 = (z_9 > 0.0);
     } else {
         local_6 = false;
     }
@@ -655,24 +664,24 @@ float ms_ggx_pdf(vec3 w_5, vec3 wm_3, vec2 alpha_5) {
     }
     float sx = (alpha_5.x * w_5.x);
     float sy = (alpha_5.y * w_5.y);
-    float len_3 = sqrt((((sx * sx) + (sy * sy)) + (z_8 * z_8)));
+    float len_3 = sqrt((((sx * sx) + (sy * sy)) + (z_9 * z_9)));
     float mx = (wm_3.x / alpha_5.x);
     float my = (wm_3.y / alpha_5.y);
     float t_8 = (((mx * mx) + (my * my)) + (wm_3.z * wm_3.z));
     float _e55 = c;
     float _e56 = c;
-    return ((_e55 + _e56) / (((((MS_PI * alpha_5.x) * alpha_5.y) * t_8) * t_8) * (z_8 + len_3)));
+    return ((_e55 + _e56) / (((((MS_PI * alpha_5.x) * alpha_5.y) * t_8) * t_8) * (z_9 + len_3)));
 }
 
 vec3 ms_ggx_cap_normal_stretched(vec3 w_6, vec3 stretch, vec2 u, float len) {
     float inv = (1.0 / len);
     float x_18 = ((stretch.x * w_6.x) * inv);
-    float y_6 = ((stretch.y * w_6.y) * inv);
-    float z_9 = ((stretch.z * w_6.z) * inv);
+    float y_10 = ((stretch.y * w_6.y) * inv);
+    float z_10 = ((stretch.z * w_6.z) * inv);
     vec2 _e19 = ms_cos_sin_turn(u.x);
-    float above = ((1.0 - u.y) * (1.0 + z_9));
-    float sin_ = sqrt(max((u.y * ((above * (1.0 + z_9)) + ((x_18 * x_18) + (y_6 * y_6)))), 0.0));
-    vec3 h_2 = vec3((stretch.x * ((sin_ * _e19.x) + x_18)), (stretch.y * ((sin_ * _e19.y) + y_6)), (stretch.z * above));
+    float above = ((1.0 - u.y) * (1.0 + z_10));
+    float sin_ = sqrt(max((u.y * ((above * (1.0 + z_10)) + ((x_18 * x_18) + (y_10 * y_10)))), 0.0));
+    vec3 h_2 = vec3((stretch.x * ((sin_ * _e19.x) + x_18)), (stretch.y * ((sin_ * _e19.y) + y_10)), (stretch.z * above));
     float n_11 = (1.0 / sqrt((((h_2.x * h_2.x) + (h_2.y * h_2.y)) + (h_2.z * h_2.z))));
     return (h_2 * n_11);
 }
@@ -708,12 +717,12 @@ vec3 ms_ggx_sample_wm(vec3 w_in, vec2 alpha_7, vec2 u_2) {
         float _e45 = w_8.x;
         float _e49 = w_8.y;
         float _e54 = w_8.z;
-        float d_18 = (((_e42.x * _e45) + (_e42.y * _e49)) + (_e42.z * _e54));
+        float d_19 = (((_e42.x * _e45) + (_e42.y * _e49)) + (_e42.z * _e54));
         float _e58 = w_8.x;
         float _e61 = w_8.y;
         float _e65 = w_8.z;
         float l1_ = ((abs(_e58) + abs(_e61)) + abs(_e65));
-        if ((d_18 > (2.4e-7 * l1_))) {
+        if ((d_19 > (2.4e-7 * l1_))) {
             return _e42;
         }
         vec3 _e71 = w_8;
@@ -777,11 +786,11 @@ MsBoundedCap ms_ggx_bounded_cap(vec3 w_10, vec2 alpha_11) {
     float _e44 = v_2.z;
     float _e47 = v_2.z;
     float den_2 = (s2_ + ((a2_ * _e44) * _e47));
-    float k_10 = (((1.0 - a2_) * s2_) / den_2);
+    float k_11 = (((1.0 - a2_) * s2_) / den_2);
     float _e55 = v_2.z;
     float _e57 = v_2.z;
     float one_minus_k = ((a2_ * (s2_ + (_e55 * _e57))) / den_2);
-    return MsBoundedCap(_e18, (k_10 * _e18.z), (one_minus_k * _e18.z));
+    return MsBoundedCap(_e18, (k_11 * _e18.z), (one_minus_k * _e18.z));
 }
 
 float ms_ggx_pdf_bounded(vec3 w_in_1, vec3 wm_5, vec2 alpha_12) {
@@ -822,12 +831,12 @@ float ms_ggx_pdf_bounded_reflection(vec3 wo_8, vec3 wi_8, vec2 alpha_14) {
         return 0.0;
     }
     float _e7 = ms_dot(wo_8, _e3);
-    float c_18 = abs(_e7);
-    if (!((c_18 > 0.0))) {
+    float c_19 = abs(_e7);
+    if (!((c_19 > 0.0))) {
         return 0.0;
     }
     float _e13 = ms_ggx_pdf_bounded(wo_8, _e3, alpha_14);
-    return (_e13 / (4.0 * c_18));
+    return (_e13 / (4.0 * c_19));
 }
 
 uvec2 ms_u64_add(uvec2 a_9, uvec2 b_4) {
@@ -1110,8 +1119,8 @@ float ms_bk_quantile(float u_7) {
         float _e43 = ms_bk_poly(_e34, _e41, _e25.y);
         ratio = _e43;
     } else {
-        float w_40 = min((-(log(q_3)) - 0.6931472), 127.99);
-        vec2 _e52 = ms_bk_segment(w_40, MS_BK_ERFINV_W_K0_, MS_BK_ERFINV_W_K1_);
+        float w_54 = min((-(log(q_3)) - 0.6931472), 127.99);
+        vec2 _e52 = ms_bk_segment(w_54, MS_BK_ERFINV_W_K0_, MS_BK_ERFINV_W_K1_);
         uint i_7 = (2u * uint(_e52.x));
         vec4 _e61 = _group_1_binding_0_cs[(MS_BK_ERFINV_W_AT + i_7)];
         vec4 _e68 = _group_1_binding_0_cs[((MS_BK_ERFINV_W_AT + i_7) + 1u)];
@@ -1135,12 +1144,12 @@ float ms_bk_ln_1m(float xi) {
 
 float ms_beckmann_d(vec3 wm_6, vec2 alpha_15) {
     bool local_9 = false;
-    float z_10 = wm_6.z;
+    float z_11 = wm_6.z;
     float r_12 = (1.0 / (alpha_15.x * alpha_15.y));
     float x_19 = ((wm_6.x * alpha_15.y) * r_12);
-    float y_7 = ((wm_6.y * alpha_15.x) * r_12);
-    float z2_1 = (z_10 * z_10);
-    if ((z_10 > 0.0)) {
+    float y_11 = ((wm_6.y * alpha_15.x) * r_12);
+    float z2_1 = (z_11 * z_11);
+    if ((z_11 > 0.0)) {
         local_9 = (z2_1 > 0.0);
     } else {
         local_9 = false;
@@ -1149,11 +1158,11 @@ float ms_beckmann_d(vec3 wm_6, vec2 alpha_15) {
     if (!(_e24)) {
         return 0.0;
     }
-    float e_5 = (((x_19 * x_19) + (y_7 * y_7)) / z2_1);
+    float e_5 = (((x_19 * x_19) + (y_11 * y_11)) / z2_1);
     if ((e_5 <= 80.0)) {
         return ((exp(-(e_5)) * r_12) / ((MS_PI * z2_1) * z2_1));
     }
-    return exp((((log(r_12) - 1.14473) - (4.0 * log(z_10))) - e_5));
+    return exp((((log(r_12) - 1.14473) - (4.0 * log(z_11))) - e_5));
 }
 
 float ms_beckmann_lambda_cot(float a_13) {
@@ -1170,8 +1179,8 @@ float ms_beckmann_lambda_cot(float a_13) {
 
 float ms_beckmann_lambda(vec3 w_14, vec2 alpha_16) {
     float x_20 = (alpha_16.x * w_14.x);
-    float y_8 = (alpha_16.y * w_14.y);
-    float s_16 = sqrt(((x_20 * x_20) + (y_8 * y_8)));
+    float y_12 = (alpha_16.y * w_14.y);
+    float s_16 = sqrt(((x_20 * x_20) + (y_12 * y_12)));
     if (!((s_16 > 0.0))) {
         return 0.0;
     }
@@ -1212,7 +1221,7 @@ float ms_beckmann_g2_separable(vec3 wo_10, vec3 wi_10, vec2 alpha_19) {
 float ms_beckmann_pdf(vec3 w_16, vec3 wm_7, vec2 alpha_20) {
     float c_1 = 0.0;
     bool local_11 = false;
-    float z_11 = abs(w_16.z);
+    float z_12 = abs(w_16.z);
     float _e5 = ms_dot(w_16, wm_7);
     c_1 = _e5;
     if ((w_16.z < 0.0)) {
@@ -1221,7 +1230,7 @@ float ms_beckmann_pdf(vec3 w_16, vec3 wm_7, vec2 alpha_20) {
     }
     float _e12 = c_1;
     if ((_e12 > 0.0)) {
-        local_11 = (z_11 > 0.0);
+        local_11 = (z_12 > 0.0);
     } else {
         local_11 = false;
     }
@@ -1232,7 +1241,7 @@ float ms_beckmann_pdf(vec3 w_16, vec3 wm_7, vec2 alpha_20) {
     float _e23 = ms_beckmann_g1_(w_16, alpha_20);
     float _e24 = c_1;
     float _e26 = ms_beckmann_d(wm_7, alpha_20);
-    return (((_e23 * _e24) * _e26) / z_11);
+    return (((_e23 * _e24) * _e26) / z_12);
 }
 
 float ms_beckmann_pdf_dcos(vec3 wm_8, vec2 alpha_21) {
@@ -1276,9 +1285,9 @@ float ms_bk_visible_x(float a_14, float u_9) {
     float _e5 = ms_bk_erfcx(a_14);
     float erfc_a = (_e5 * ea);
     float half_ea = (0.2820948 * ea);
-    float z_12 = (((0.5 * a_14) * (2.0 - erfc_a)) + half_ea);
-    float target_lo = (u_9 * z_12);
-    float target_hi = ((1.0 - u_9) * z_12);
+    float z_13 = (((0.5 * a_14) * (2.0 - erfc_a)) + half_ea);
+    float target_lo = (u_9 * z_13);
+    float target_hi = ((1.0 - u_9) * z_13);
     lo_1 = -(a_14);
     if ((a_14 >= 1.0)) {
         float _e26 = ms_bk_quantile(u_9);
@@ -1406,14 +1415,14 @@ vec3 ms_beckmann_sample_wm(vec3 w_17, vec2 alpha_23, vec2 u_10) {
     float _e14 = sign_1;
     float sy_1 = ((_e14 * alpha_23.y) * w_17.y);
     float _e19 = sign_1;
-    float c_19 = (_e19 * w_17.z);
+    float c_20 = (_e19 * w_17.z);
     float h_4 = sqrt(((sx_1 * sx_1) + (sy_1 * sy_1)));
     float _e27 = ms_bk_quantile(u_10.y);
     if ((h_4 > 0.0)) {
         float inv_1 = (1.0 / h_4);
         cp = (sx_1 * inv_1);
         sp = (sy_1 * inv_1);
-        float _e41 = ms_bk_visible_x((c_19 * inv_1), u_10.x);
+        float _e41 = ms_bk_visible_x((c_20 * inv_1), u_10.x);
         x_5 = _e41;
     } else {
         float _e43 = ms_bk_quantile(u_10.x);
@@ -1476,10 +1485,10 @@ float ms_double_ggx_lambda(vec3 w_19, vec2 alpha_25) {
     bool local_14 = false;
     float a_16 = 0.0;
     bool local_15 = false;
-    float u_31 = abs(w_19.z);
+    float u_38 = abs(w_19.z);
     if ((alpha_25.x == alpha_25.y)) {
         float a_21 = alpha_25.x;
-        x_8 = ((((0.5 * a_21) * a_21) * ((1.0 - u_31) * (1.0 + u_31))) / (u_31 * u_31));
+        x_8 = ((((0.5 * a_21) * a_21) * ((1.0 - u_38) * (1.0 + u_38))) / (u_38 * u_38));
     } else {
         float sx_3 = (alpha_25.x * w_19.x);
         float sy_2 = (alpha_25.y * w_19.y);
@@ -1510,7 +1519,7 @@ float ms_double_ggx_lambda(vec3 w_19, vec2 alpha_25) {
         a_16 = sqrt((((((alpha_25.x * alpha_25.x) * w_19.x) * w_19.x) + (((alpha_25.y * alpha_25.y) * w_19.y) * w_19.y)) / s2_1));
     }
     float _e82 = a_16;
-    float _e83 = ms_dg_lambda_ends(u_31, _e82);
+    float _e83 = ms_dg_lambda_ends(u_38, _e82);
     return _e83;
 }
 
@@ -1561,15 +1570,15 @@ float ms_dg_kernel_row(uint i_1, float s_4) {
 
 float ms_double_ggx_d(vec3 wm_9, vec2 alpha_29) {
     bool local_17 = false;
-    float z_13 = wm_9.z;
+    float z_14 = wm_9.z;
     float r_15 = (1.0 / (alpha_29.x * alpha_29.y));
     float x_22 = ((wm_9.x * alpha_29.y) * r_15);
-    float y_9 = ((wm_9.y * alpha_29.x) * r_15);
-    float q_5 = ((x_22 * x_22) + (y_9 * y_9));
-    if (!((z_13 > 0.0))) {
-        return ((z_13 != z_13) ? z_13 : 0.0);
+    float y_13 = ((wm_9.y * alpha_29.x) * r_15);
+    float q_5 = ((x_22 * x_22) + (y_13 * y_13));
+    if (!((z_14 > 0.0))) {
+        return ((z_14 != z_14) ? z_14 : 0.0);
     }
-    float z2_2 = (z_13 * z_13);
+    float z2_2 = (z_14 * z_14);
     float t_10 = (q_5 / z2_2);
     if ((t_10 >= 9.313226e-10)) {
         local_17 = (t_10 < 1073741800.0);
@@ -1585,13 +1594,13 @@ float ms_double_ggx_d(vec3 wm_9, vec2 alpha_29) {
     if ((t_10 < 9.313226e-10)) {
         return (r_15 / ((MS_PI * z2_2) * z2_2));
     }
-    return (((((log(q_5) - (2.0 * log(z_13))) - MS_EULER_GAMMA) - 1.0) * r_15) / ((MS_PI * q_5) * q_5));
+    return (((((log(q_5) - (2.0 * log(z_14))) - MS_EULER_GAMMA) - 1.0) * r_15) / ((MS_PI * q_5) * q_5));
 }
 
 float ms_double_ggx_pdf(vec3 w_21, vec3 wm_10, vec2 alpha_30) {
     float c_3 = 0.0;
     bool local_18 = false;
-    float z_14 = abs(w_21.z);
+    float z_15 = abs(w_21.z);
     float _e5 = ms_dot(w_21, wm_10);
     c_3 = _e5;
     if ((w_21.z < 0.0)) {
@@ -1600,7 +1609,7 @@ float ms_double_ggx_pdf(vec3 w_21, vec3 wm_10, vec2 alpha_30) {
     }
     float _e12 = c_3;
     if ((_e12 > 0.0)) {
-        local_18 = (z_14 > 0.0);
+        local_18 = (z_15 > 0.0);
     } else {
         local_18 = false;
     }
@@ -1611,7 +1620,7 @@ float ms_double_ggx_pdf(vec3 w_21, vec3 wm_10, vec2 alpha_30) {
     float _e23 = ms_double_ggx_g1_(w_21, alpha_30);
     float _e24 = c_3;
     float _e26 = ms_double_ggx_d(wm_10, alpha_30);
-    return (((_e23 * _e24) * _e26) / z_14);
+    return (((_e23 * _e24) * _e26) / z_15);
 }
 
 float ms_double_ggx_pdf_dcos(vec3 wm_11, vec2 alpha_31) {
@@ -1654,12 +1663,12 @@ vec3 ms_double_ggx_sample_wm(vec3 w_in_3, vec2 alpha_33, vec2 u_14) {
     float sx_4 = (alpha_33.x * _e13);
     float _e17 = w_22.y;
     float sy_3 = (alpha_33.y * _e17);
-    float c_20 = w_22.z;
+    float c_21 = w_22.z;
     float h_5 = sqrt(((sx_4 * sx_4) + (sy_3 * sy_3)));
-    if (!((abs((c_20 + h_5)) <= 3.4028235e38))) {
-        return vec3((c_20 + h_5));
+    if (!((abs((c_21 + h_5)) <= 3.4028235e38))) {
+        return vec3((c_21 + h_5));
     }
-    float e_7 = (2.0 * c_20);
+    float e_7 = (2.0 * c_21);
     float g = (MS_SQRT_PI * h_5);
     float p_exp = (e_7 / (e_7 + g));
     float inv_p = min(((e_7 + g) / e_7), 3.4028235e38);
@@ -1693,12 +1702,12 @@ vec3 ms_double_ggx_sample_wm(vec3 w_in_3, vec2 alpha_33, vec2 u_14) {
             float _e72 = t;
             s_5 = sqrt(_e72);
             float _e75 = t;
-            len_2 = sqrt((((c_20 * c_20) * _e75) + (h_5 * h_5)));
+            len_2 = sqrt((((c_21 * c_21) * _e75) + (h_5 * h_5)));
             float _e80 = ms_stream_next(state_7);
             float _e81 = s_5;
             float _e85 = s_5;
             float _e87 = len_2;
-            if (((_e80 * ((e_7 * _e81) + h_5)) <= ((c_20 * _e85) + _e87))) {
+            if (((_e80 * ((e_7 * _e81) + h_5)) <= ((c_21 * _e85) + _e87))) {
                 break;
             }
         }
@@ -1762,10 +1771,10 @@ float ms_exponential_lambda(vec3 w_24, vec2 alpha_35) {
     bool local_19 = false;
     float a_17 = 0.0;
     bool local_20 = false;
-    float u_32 = abs(w_24.z);
+    float u_39 = abs(w_24.z);
     if ((alpha_35.x == alpha_35.y)) {
         float a_22 = alpha_35.x;
-        q_1 = (((4.0 * u_32) * u_32) / ((a_22 * a_22) * ((1.0 - u_32) * (1.0 + u_32))));
+        q_1 = (((4.0 * u_39) * u_39) / ((a_22 * a_22) * ((1.0 - u_39) * (1.0 + u_39))));
     } else {
         float sx_5 = (alpha_35.x * w_24.x);
         float sy_4 = (alpha_35.y * w_24.y);
@@ -1796,7 +1805,7 @@ float ms_exponential_lambda(vec3 w_24, vec2 alpha_35) {
         a_17 = sqrt((((((alpha_35.x * alpha_35.x) * w_24.x) * w_24.x) + (((alpha_35.y * alpha_35.y) * w_24.y) * w_24.y)) / s2_4));
     }
     float _e83 = a_17;
-    float _e92 = ms_exp_lambda_z(((u_32 + u_32) / (_e83 * sqrt(((1.0 - u_32) * (1.0 + u_32))))));
+    float _e92 = ms_exp_lambda_z(((u_39 + u_39) / (_e83 * sqrt(((1.0 - u_39) * (1.0 + u_39))))));
     return _e92;
 }
 
@@ -1832,31 +1841,31 @@ float ms_exponential_g2_separable(vec3 wo_14, vec3 wi_14, vec2 alpha_38) {
 
 float ms_exponential_d(vec3 wm_12, vec2 alpha_39) {
     bool local_22 = false;
-    float z_15 = wm_12.z;
+    float z_16 = wm_12.z;
     float r_17 = (1.0 / (alpha_39.x * alpha_39.y));
     float x_23 = ((wm_12.x * alpha_39.y) * r_17);
-    float y_10 = ((wm_12.y * alpha_39.x) * r_17);
-    float z2_3 = (z_15 * z_15);
-    if ((z_15 > 0.0)) {
+    float y_14 = ((wm_12.y * alpha_39.x) * r_17);
+    float z2_3 = (z_16 * z_16);
+    if ((z_16 > 0.0)) {
         local_22 = (z2_3 > 0.0);
     } else {
         local_22 = false;
     }
     bool _e24 = local_22;
     if (!(_e24)) {
-        return ((z_15 != z_15) ? z_15 : 0.0);
+        return ((z_16 != z_16) ? z_16 : 0.0);
     }
-    float e_8 = ((2.0 * sqrt(((x_23 * x_23) + (y_10 * y_10)))) / z_15);
+    float e_8 = ((2.0 * sqrt(((x_23 * x_23) + (y_14 * y_14)))) / z_16);
     if ((e_8 <= 80.0)) {
         return (((2.0 * exp(-(e_8))) * r_17) / ((MS_PI * z2_3) * z2_3));
     }
-    return exp((((log((2.0 * r_17)) - 1.14473) - (4.0 * log(z_15))) - e_8));
+    return exp((((log((2.0 * r_17)) - 1.14473) - (4.0 * log(z_16))) - e_8));
 }
 
 float ms_exponential_pdf(vec3 w_26, vec3 wm_13, vec2 alpha_40) {
     float c_4 = 0.0;
     bool local_23 = false;
-    float z_16 = abs(w_26.z);
+    float z_17 = abs(w_26.z);
     float _e5 = ms_dot(w_26, wm_13);
     c_4 = _e5;
     if ((w_26.z < 0.0)) {
@@ -1865,7 +1874,7 @@ float ms_exponential_pdf(vec3 w_26, vec3 wm_13, vec2 alpha_40) {
     }
     float _e12 = c_4;
     if ((_e12 > 0.0)) {
-        local_23 = (z_16 > 0.0);
+        local_23 = (z_17 > 0.0);
     } else {
         local_23 = false;
     }
@@ -1876,7 +1885,7 @@ float ms_exponential_pdf(vec3 w_26, vec3 wm_13, vec2 alpha_40) {
     float _e23 = ms_exponential_g1_(w_26, alpha_40);
     float _e24 = c_4;
     float _e26 = ms_exponential_d(wm_13, alpha_40);
-    return (((_e23 * _e24) * _e26) / z_16);
+    return (((_e23 * _e24) * _e26) / z_17);
 }
 
 float ms_exponential_pdf_dcos(vec3 wm_14, vec2 alpha_41) {
@@ -1971,8 +1980,8 @@ vec3 ms_exponential_sample_wm(vec3 w_in_4, vec2 alpha_43, vec2 u_17) {
             float _e73 = ms_stream_next(state_9);
             float prod = ((1.0 - _e70) * (1.0 - _e73));
             float _e77 = v0_;
-            float d_19 = ((_e77 * total) - e_9);
-            if ((d_19 < 0.0)) {
+            float d_20 = ((_e77 * total) - e_9);
+            if ((d_20 < 0.0)) {
                 float r_19 = (-0.5 * log(prod));
                 float _e85 = v0_;
                 float turn = (_e85 * inv_p_1);
@@ -1993,7 +2002,7 @@ vec3 ms_exponential_sample_wm(vec3 w_in_4, vec2 alpha_43, vec2 u_17) {
             } else {
                 float _e108 = ms_stream_next(state_9);
                 float r_20 = (-0.5 * log((prod * (1.0 - _e108))));
-                float one_plus = (2.0 * (d_19 * inv_g));
+                float one_plus = (2.0 * (d_20 * inv_g));
                 float _e118 = v0_;
                 float one_minus = ((2.0 * (1.0 - _e118)) * (total * inv_g));
                 x_9 = (r_20 * sqrt(max((one_minus * one_plus), 0.0)));
@@ -2065,21 +2074,21 @@ float ms_shape_lambda(uint table_1, vec3 w_29, vec2 alpha_45) {
     float sx_7 = (alpha_45.x * w_29.x);
     float sy_6 = (alpha_45.y * w_29.y);
     float h_7 = sqrt(((sx_7 * sx_7) + (sy_6 * sy_6)));
-    float z_17 = abs(w_29.z);
+    float z_18 = abs(w_29.z);
     if (!((h_7 > 0.0))) {
         if ((h_7 == 0.0)) {
-            local_26 = (z_17 > 0.0);
+            local_26 = (z_18 > 0.0);
         } else {
             local_26 = false;
         }
         bool _e25 = local_26;
         return (_e25 ? 0.0 : h_7);
     }
-    if ((z_17 == 0.0)) {
+    if ((z_18 == 0.0)) {
         float _e30 = ms_inf();
         return _e30;
     }
-    float _e32 = ms_shape_lambda_z(table_1, (z_17 / h_7));
+    float _e32 = ms_shape_lambda_z(table_1, (z_18 / h_7));
     return _e32;
 }
 
@@ -2112,8 +2121,8 @@ float ms_ln_gamma_variate(float k_in, inout uvec2 state_12) {
         k_5 = (_e12 + 1.0);
     }
     float _e15 = k_5;
-    float d_20 = (_e15 - 0.33333334);
-    float c_21 = (1.0 / sqrt((9.0 * d_20)));
+    float d_21 = (_e15 - 0.33333334);
+    float c_22 = (1.0 / sqrt((9.0 * d_21)));
     bool loop_init_5 = true;
     while(true) {
         if (!loop_init_5) {
@@ -2129,7 +2138,7 @@ float ms_ln_gamma_variate(float k_in, inout uvec2 state_12) {
         {
             float _e28 = ms_stream_next(state_12);
             float _e29 = ms_zig_normal(_e28, state_12);
-            v_6 = (1.0 + (c_21 * _e29));
+            v_6 = (1.0 + (c_22 * _e29));
             float _e34 = v_6;
             if ((_e34 <= 0.0)) {
                 continue;
@@ -2141,10 +2150,10 @@ float ms_ln_gamma_variate(float k_in, inout uvec2 state_12) {
             float _e42 = ms_stream_next_positive(state_12);
             float _e48 = v_6;
             float _e51 = v_6;
-            if ((log(_e42) < (((((0.5 * _e29) * _e29) + d_20) - (d_20 * _e48)) + (d_20 * log(_e51))))) {
+            if ((log(_e42) < (((((0.5 * _e29) * _e29) + d_21) - (d_21 * _e48)) + (d_21 * log(_e51))))) {
                 float _e57 = v_6;
                 float _e60 = boost;
-                return ((log(d_20) + log(_e57)) + _e60);
+                return ((log(d_21) + log(_e57)) + _e60);
             }
         }
     }
@@ -2191,11 +2200,11 @@ vec3 ms_beckmann_sample_stream_above(vec3 v_7, vec2 alpha_46, inout uvec2 state_
                     break;
                 }
                 float _e52 = ms_zig_normal(((_e42 - p_ray) / (1.0 - p_ray)), state_13);
-                float c_22 = (_e52 * 0.70710677);
-                if (!((c_22 >= 0.0))) {
-                    if ((c_22 > -(a_23))) {
+                float c_23 = (_e52 * 0.70710677);
+                if (!((c_23 >= 0.0))) {
+                    if ((c_23 > -(a_23))) {
                         float _e64 = ms_stream_next(state_13);
-                        local_28 = ((_e64 * a_23) < (c_22 + a_23));
+                        local_28 = ((_e64 * a_23) < (c_23 + a_23));
                     } else {
                         local_28 = false;
                     }
@@ -2206,7 +2215,7 @@ vec3 ms_beckmann_sample_stream_above(vec3 v_7, vec2 alpha_46, inout uvec2 state_
                 }
                 bool _e71 = local_27;
                 if (_e71) {
-                    x_10 = c_22;
+                    x_10 = c_23;
                     break;
                 }
             }
@@ -2214,31 +2223,48 @@ vec3 ms_beckmann_sample_stream_above(vec3 v_7, vec2 alpha_46, inout uvec2 state_
     }
     float _e75 = ms_stream_next(state_13);
     float _e76 = ms_zig_normal(_e75, state_13);
-    float y_11 = (_e76 * 0.70710677);
+    float y_15 = (_e76 * 0.70710677);
     float _e80 = cp_2;
     float _e81 = x_10;
     float _e83 = sp_2;
-    float p_6 = (alpha_46.x * ((_e80 * _e81) - (_e83 * y_11)));
+    float p_6 = (alpha_46.x * ((_e80 * _e81) - (_e83 * y_15)));
     float _e88 = sp_2;
     float _e89 = x_10;
     float _e91 = cp_2;
-    float q_8 = (alpha_46.y * ((_e88 * _e89) + (_e91 * y_11)));
+    float q_8 = (alpha_46.y * ((_e88 * _e89) + (_e91 * y_15)));
     vec3 _e97 = ms_unit_normal(vec3(p_6, q_8, 1.0));
     vec3 _e98 = ms_facing(_e97, v_7);
     return _e98;
 }
 
-float ms_posterior_ln_beta(uint mixing, float k_6, float mean_beta, float z_3, float h_1, inout uvec2 state_14) {
+float ms_mixing_ln_beta(uint mixing, float k_6, bool biased, inout uvec2 state_14) {
+    float bias = (biased ? 1.0 : 0.0);
+    if ((mixing == 0u)) {
+        float _e13 = ms_ln_gamma_variate((k_6 - (0.5 * bias)), state_14);
+        return (0.5 * (log(k_6) - _e13));
+    }
+    if ((mixing == 1u)) {
+        float _e22 = ms_ln_gamma_variate((k_6 + (0.5 * bias)), state_14);
+        return (0.5 * _e22);
+    }
+    if ((mixing == 2u)) {
+        float _e27 = ms_stream_next_positive(state_14);
+        return ((0.5 * log(_e27)) / (1.0 + (0.5 * bias)));
+    }
+    float _e36 = ms_stream_next_positive(state_14);
+    return (log(_e36) / (1.0 + bias));
+}
+
+float ms_posterior_ln_beta(uint mixing_1, float k_7, float mean_beta, float z_3, float h_1, inout uvec2 state_15) {
     int n_7 = 0;
-    float ln_beta = 0.0;
     float keep = 0.0;
     bool local_29 = false;
     float p_prior = (z_3 / (z_3 + ((0.2820948 * h_1) * mean_beta)));
     bool loop_init_7 = true;
     while(true) {
         if (!loop_init_7) {
-            int _e87 = n_7;
-            n_7 = (_e87 + 1);
+            int _e47 = n_7;
+            n_7 = (_e47 + 1);
         }
         loop_init_7 = false;
         int _e13 = n_7;
@@ -2247,96 +2273,184 @@ float ms_posterior_ln_beta(uint mixing, float k_6, float mean_beta, float z_3, f
             break;
         }
         {
-            float _e16 = ms_stream_next(state_14);
-            bool biased = (_e16 >= p_prior);
-            float bias = (biased ? 1.0 : 0.0);
-            ln_beta = 0.0;
-            if ((mixing == 0u)) {
-                float _e29 = ms_ln_gamma_variate((k_6 - (0.5 * bias)), state_14);
-                ln_beta = (0.5 * (log(k_6) - _e29));
-            } else {
-                if ((mixing == 1u)) {
-                    float _e38 = ms_ln_gamma_variate((k_6 + (0.5 * bias)), state_14);
-                    ln_beta = (0.5 * _e38);
-                } else {
-                    if ((mixing == 2u)) {
-                        float _e43 = ms_stream_next_positive(state_14);
-                        ln_beta = ((0.5 * log(_e43)) / (1.0 + (0.5 * bias)));
-                    } else {
-                        float _e52 = ms_stream_next_positive(state_14);
-                        ln_beta = (log(_e52) / (1.0 + bias));
-                    }
-                }
-            }
-            float _e57 = ln_beta;
-            float hb = (h_1 * exp(_e57));
+            float _e16 = ms_stream_next(state_15);
+            bool biased_1 = (_e16 >= p_prior);
+            float _e18 = ms_mixing_ln_beta(mixing_1, k_7, biased_1, state_15);
+            float hb = (h_1 * exp(_e18));
             keep = 1.0;
             if ((hb > 0.0)) {
                 local_29 = (hb <= 3.4028235e38);
             } else {
                 local_29 = false;
             }
-            bool _e69 = local_29;
-            if (_e69) {
+            bool _e30 = local_29;
+            if (_e30) {
                 float a_24 = (z_3 / hb);
-                float _e76 = ms_bk_erfc_ratio(a_24);
-                keep = ((z_3 + (((0.2820948 * hb) * exp((-(a_24) * a_24))) * _e76)) / (z_3 + (0.2820948 * hb)));
+                float _e37 = ms_bk_erfc_ratio(a_24);
+                keep = ((z_3 + (((0.2820948 * hb) * exp((-(a_24) * a_24))) * _e37)) / (z_3 + (0.2820948 * hb)));
             }
-            float _e82 = ms_stream_next(state_14);
-            float _e83 = keep;
-            if ((_e82 < _e83)) {
-                float _e85 = ln_beta;
-                return _e85;
+            float _e43 = ms_stream_next(state_15);
+            float _e44 = keep;
+            if ((_e43 < _e44)) {
+                return _e18;
             }
         }
     }
     return uintBitsToFloat(2143289344u);
 }
 
-vec3 ms_mixture_sample_wm(uint mixing_1, uint table_2, vec3 w_in_5, vec2 alpha_47, vec2 u_19) {
-    vec3 w_31 = vec3(0.0);
-    uvec2 state_15 = uvec2(0u);
-    float ln_beta_1 = 0.0;
-    vec3 _e5 = ms_unit(w_in_5);
-    w_31 = _e5;
-    float _e8 = w_31.z;
-    if ((_e8 < 0.0)) {
-        vec3 _e11 = w_31;
-        w_31 = -(_e11);
-    }
-    vec4 params = _group_1_binding_0_cs[(table_2 + 2u)];
-    float _e20 = w_31.x;
-    float sx_9 = (alpha_47.x * _e20);
-    float _e24 = w_31.y;
-    float sy_8 = (alpha_47.y * _e24);
-    float h_9 = sqrt(((sx_9 * sx_9) + (sy_8 * sy_8)));
-    uvec2 _e30 = ms_stream_new(u_19);
-    state_15 = _e30;
-    float _e35 = w_31.z;
-    float _e36 = ms_posterior_ln_beta(mixing_1, params.y, params.x, _e35, h_9, state_15);
-    ln_beta_1 = _e36;
-    float _e38 = ln_beta_1;
-    float _e39 = ln_beta_1;
-    if ((_e38 != _e39)) {
-        ln_beta_1 = log(params.x);
-    }
+float ms_mixture_beta(float ln_beta, vec2 alpha_47) {
     float lo_6 = log(min(alpha_47.x, alpha_47.y));
     float hi_5 = log(max(alpha_47.x, alpha_47.y));
-    float _e51 = ln_beta_1;
-    float beta = exp(clamp(_e51, (-80.0 - lo_6), (80.0 - hi_5)));
-    float _e59 = w_31.z;
-    if (!((_e59 > 0.0))) {
-        vec3 _e63 = w_31;
-        vec3 _e65 = ms_beckmann_sample_wm(_e63, (beta * alpha_47), u_19);
-        return _e65;
-    }
-    vec3 _e66 = w_31;
-    vec3 _e68 = ms_beckmann_sample_stream_above(_e66, (beta * alpha_47), state_15);
-    return _e68;
+    return exp(clamp(ln_beta, (-80.0 - lo_6), (80.0 - hi_5)));
 }
 
-float ms_student_t_gamma(uint table_3) {
-    float _e4 = _group_1_binding_0_cs[table_3].x;
+vec3 ms_mixture_sample_wm(uint table_2, vec3 w_in_5, vec2 alpha_48, vec2 u_19) {
+    vec3 w_31 = vec3(0.0);
+    uvec2 state_16 = uvec2(0u);
+    float ln_beta_1 = 0.0;
+    vec3 _e4 = ms_unit(w_in_5);
+    w_31 = _e4;
+    float _e7 = w_31.z;
+    if ((_e7 < 0.0)) {
+        vec3 _e10 = w_31;
+        w_31 = -(_e10);
+    }
+    vec4 params = _group_1_binding_0_cs[(table_2 + 2u)];
+    float _e19 = w_31.x;
+    float sx_9 = (alpha_48.x * _e19);
+    float _e23 = w_31.y;
+    float sy_8 = (alpha_48.y * _e23);
+    float h_9 = sqrt(((sx_9 * sx_9) + (sy_8 * sy_8)));
+    uvec2 _e29 = ms_stream_new(u_19);
+    state_16 = _e29;
+    float _e36 = w_31.z;
+    float _e37 = ms_posterior_ln_beta(uint(params.z), params.y, params.x, _e36, h_9, state_16);
+    ln_beta_1 = _e37;
+    float _e39 = ln_beta_1;
+    float _e40 = ln_beta_1;
+    if ((_e39 != _e40)) {
+        ln_beta_1 = log(params.x);
+    }
+    float _e44 = ln_beta_1;
+    float _e45 = ms_mixture_beta(_e44, alpha_48);
+    float _e47 = w_31.z;
+    if (!((_e47 > 0.0))) {
+        vec3 _e51 = w_31;
+        vec3 _e53 = ms_beckmann_sample_wm(_e51, (_e45 * alpha_48), u_19);
+        return _e53;
+    }
+    vec3 _e54 = w_31;
+    vec3 _e56 = ms_beckmann_sample_stream_above(_e54, (_e45 * alpha_48), state_16);
+    return _e56;
+}
+
+float ms_mixture_g1_(uint table_3, vec3 w_32, vec2 alpha_49) {
+    float _e3 = ms_shape_lambda(table_3, w_32, alpha_49);
+    return (1.0 / (1.0 + _e3));
+}
+
+float ms_mixture_g2_(uint table_4, vec3 wo_15, vec3 wi_15, vec2 alpha_50) {
+    float _e4 = ms_shape_lambda(table_4, wo_15, alpha_50);
+    float _e5 = ms_shape_lambda(table_4, wi_15, alpha_50);
+    return (1.0 / (1.0 + (_e4 + _e5)));
+}
+
+float ms_mixture_g2_separable(uint table_5, vec3 wo_16, vec3 wi_16, vec2 alpha_51) {
+    float _e4 = ms_mixture_g1_(table_5, wo_16, alpha_51);
+    float _e5 = ms_mixture_g1_(table_5, wi_16, alpha_51);
+    return (_e4 * _e5);
+}
+
+float ms_mixture_pdf(uint table_6, vec3 w_33, vec3 wm_15, vec2 alpha_52, float d_1) {
+    float c_5 = 0.0;
+    bool local_30 = false;
+    float z_19 = abs(w_33.z);
+    float _e7 = ms_dot(w_33, wm_15);
+    c_5 = _e7;
+    if ((w_33.z < 0.0)) {
+        float _e12 = c_5;
+        c_5 = -(_e12);
+    }
+    float _e14 = c_5;
+    if ((_e14 > 0.0)) {
+        local_30 = (z_19 > 0.0);
+    } else {
+        local_30 = false;
+    }
+    bool _e22 = local_30;
+    if (!(_e22)) {
+        return 0.0;
+    }
+    float _e25 = ms_mixture_g1_(table_6, w_33, alpha_52);
+    float _e26 = c_5;
+    return (((_e25 * _e26) * d_1) / z_19);
+}
+
+vec3 ms_mixture_sample_dcos_wm(uint table_7, vec2 alpha_53, vec2 u_20) {
+    uvec2 state_17 = uvec2(0u);
+    float ln_beta_2 = 0.0;
+    vec4 params_1 = _group_1_binding_0_cs[(table_7 + 2u)];
+    uvec2 _e8 = ms_stream_new(u_20);
+    state_17 = _e8;
+    float _e14 = ms_mixing_ln_beta(uint(params_1.z), params_1.y, false, state_17);
+    ln_beta_2 = _e14;
+    float _e16 = ln_beta_2;
+    float _e17 = ln_beta_2;
+    if ((_e16 != _e17)) {
+        ln_beta_2 = log(params_1.x);
+    }
+    float _e21 = ln_beta_2;
+    float _e22 = ms_mixture_beta(_e21, alpha_53);
+    MsSample _e24 = ms_beckmann_sample_dcos((_e22 * alpha_53), u_20);
+    return _e24.wm;
+}
+
+float ms_mixture_d_from_ln_profile(float ln_f, vec3 wm_16, vec2 alpha_54) {
+    float ln_z = log(wm_16.z);
+    return exp(((ln_f - log((alpha_54.x * alpha_54.y))) - (4.0 * ln_z)));
+}
+
+float ms_mixture_r2_(vec3 wm_17, vec2 alpha_55) {
+    float x_24 = (wm_17.x / alpha_55.x);
+    float y_16 = (wm_17.y / alpha_55.y);
+    return (((x_24 * x_24) + (y_16 * y_16)) / (wm_17.z * wm_17.z));
+}
+
+float ms_k0e(float z_4) {
+    if ((z_4 < 6.1035156e-5)) {
+        return ((1.0 + z_4) * (-(log((0.5 * z_4))) - MS_EULER_GAMMA));
+    }
+    if ((z_4 >= 512.0)) {
+        float r_21 = (1.0 / z_4);
+        return (sqrt((1.5707964 * r_21)) * (1.0 - (r_21 * (0.125 - (r_21 * 0.0703125)))));
+    }
+    vec2 _e29 = ms_bk_segment(z_4, MS_SF_K0E_K0_, MS_SF_K0E_K1_);
+    uint i_10 = (MS_SF_K0E_AT + (2u * uint(_e29.x)));
+    vec4 _e38 = _group_1_binding_0_cs[i_10];
+    vec4 _e43 = _group_1_binding_0_cs[(i_10 + 1u)];
+    float _e45 = ms_bk_poly(_e38, _e43, _e29.y);
+    return _e45;
+}
+
+float ms_e1x(float y_3) {
+    if ((y_3 < 5.9604645e-8)) {
+        return (-0.5772157 - log(y_3));
+    }
+    if ((y_3 >= 512.0)) {
+        float r_22 = (1.0 / y_3);
+        return (r_22 * (1.0 - (r_22 * (1.0 - (r_22 * (2.0 - (r_22 * 6.0)))))));
+    }
+    vec2 _e23 = ms_bk_segment(y_3, MS_SF_E1X_K0_, MS_SF_E1X_K1_);
+    uint i_11 = (MS_SF_E1X_AT + (2u * uint(_e23.x)));
+    vec4 _e32 = _group_1_binding_0_cs[i_11];
+    vec4 _e37 = _group_1_binding_0_cs[(i_11 + 1u)];
+    float _e39 = ms_bk_poly(_e32, _e37, _e23.y);
+    return _e39;
+}
+
+float ms_student_t_gamma(uint table_8) {
+    float _e4 = _group_1_binding_0_cs[table_8].x;
     return _e4;
 }
 
@@ -2355,291 +2469,575 @@ float ms_expm1_(float x_11) {
     return (exp(x_11) - 1.0);
 }
 
-float ms_student_t_d(vec3 wm_15, vec2 alpha_48, uint table_4) {
-    float z_18 = wm_15.z;
-    if (!((z_18 > 0.0))) {
-        return ((z_18 != z_18) ? z_18 : 0.0);
+float ms_student_t_d(vec3 wm_18, vec2 alpha_56, uint table_9) {
+    float z_20 = wm_18.z;
+    if (!((z_20 > 0.0))) {
+        return ((z_20 != z_20) ? z_20 : 0.0);
     }
-    float _e10 = ms_student_t_gamma(table_4);
-    float x_24 = (wm_15.x / alpha_48.x);
-    float y_12 = (wm_15.y / alpha_48.y);
-    float q_9 = ((x_24 * x_24) + (y_12 * y_12));
-    float z2_4 = (z_18 * z_18);
-    if ((z_18 > 1e-9)) {
+    float _e10 = ms_student_t_gamma(table_9);
+    float x_25 = (wm_18.x / alpha_56.x);
+    float y_17 = (wm_18.y / alpha_56.y);
+    float q_9 = ((x_25 * x_25) + (y_17 * y_17));
+    float z2_4 = (z_20 * z_20);
+    if ((z_20 > 1e-9)) {
         float t_12 = (q_9 / (z2_4 * (_e10 - 1.0)));
         float _e27 = ms_ln_1p(t_12);
         float e_10 = (_e10 * _e27);
-        float norm = ((((MS_PI * alpha_48.x) * alpha_48.y) * z2_4) * z2_4);
+        float norm = ((((MS_PI * alpha_56.x) * alpha_56.y) * z2_4) * z2_4);
         if ((e_10 < 80.0)) {
             return (exp(-(e_10)) / norm);
         }
         return exp((-(e_10) - log(norm)));
     }
-    float ln_z = log(z_18);
-    float ln_d = (((-(_e10) * ((log(q_9) - (2.0 * ln_z)) - log((_e10 - 1.0)))) - (4.0 * ln_z)) - log(((MS_PI * alpha_48.x) * alpha_48.y)));
+    float ln_z_1 = log(z_20);
+    float ln_d = (((-(_e10) * ((log(q_9) - (2.0 * ln_z_1)) - log((_e10 - 1.0)))) - (4.0 * ln_z_1)) - log(((MS_PI * alpha_56.x) * alpha_56.y)));
     return exp(ln_d);
 }
 
-float ms_student_t_lambda(vec3 w_32, vec2 alpha_49, uint table_5) {
-    float _e3 = ms_shape_lambda(table_5, w_32, alpha_49);
+float ms_student_t_lambda(vec3 w_34, vec2 alpha_57, uint table_10) {
+    float _e3 = ms_shape_lambda(table_10, w_34, alpha_57);
     return _e3;
 }
 
-float ms_student_t_g1_(vec3 w_33, vec2 alpha_50, uint table_6) {
-    float _e3 = ms_student_t_lambda(w_33, alpha_50, table_6);
+float ms_student_t_g1_(vec3 w_35, vec2 alpha_58, uint table_11) {
+    float _e3 = ms_student_t_lambda(w_35, alpha_58, table_11);
     return (1.0 / (1.0 + _e3));
 }
 
-float ms_student_t_g2_(vec3 wo_15, vec3 wi_15, vec2 alpha_51, uint table_7) {
-    float _e4 = ms_student_t_lambda(wo_15, alpha_51, table_7);
-    float _e5 = ms_student_t_lambda(wi_15, alpha_51, table_7);
+float ms_student_t_g2_(vec3 wo_17, vec3 wi_17, vec2 alpha_59, uint table_12) {
+    float _e4 = ms_student_t_lambda(wo_17, alpha_59, table_12);
+    float _e5 = ms_student_t_lambda(wi_17, alpha_59, table_12);
     return (1.0 / (1.0 + (_e4 + _e5)));
 }
 
-float ms_student_t_g2_separable(vec3 wo_16, vec3 wi_16, vec2 alpha_52, uint table_8) {
-    float _e4 = ms_student_t_g1_(wo_16, alpha_52, table_8);
-    float _e5 = ms_student_t_g1_(wi_16, alpha_52, table_8);
+float ms_student_t_g2_separable(vec3 wo_18, vec3 wi_18, vec2 alpha_60, uint table_13) {
+    float _e4 = ms_student_t_g1_(wo_18, alpha_60, table_13);
+    float _e5 = ms_student_t_g1_(wi_18, alpha_60, table_13);
     return (_e4 * _e5);
 }
 
-float ms_student_t_pdf(vec3 w_34, vec3 wm_16, vec2 alpha_53, uint table_9) {
-    float c_5 = 0.0;
-    bool local_30 = false;
-    float z_19 = abs(w_34.z);
-    float _e6 = ms_dot(w_34, wm_16);
-    c_5 = _e6;
-    if ((w_34.z < 0.0)) {
-        float _e11 = c_5;
-        c_5 = -(_e11);
+float ms_student_t_pdf(vec3 w_36, vec3 wm_19, vec2 alpha_61, uint table_14) {
+    float c_6 = 0.0;
+    bool local_31 = false;
+    float z_21 = abs(w_36.z);
+    float _e6 = ms_dot(w_36, wm_19);
+    c_6 = _e6;
+    if ((w_36.z < 0.0)) {
+        float _e11 = c_6;
+        c_6 = -(_e11);
     }
-    float _e13 = c_5;
+    float _e13 = c_6;
     if ((_e13 > 0.0)) {
-        local_30 = (z_19 > 0.0);
+        local_31 = (z_21 > 0.0);
     } else {
-        local_30 = false;
+        local_31 = false;
     }
-    bool _e21 = local_30;
+    bool _e21 = local_31;
     if (!(_e21)) {
         return 0.0;
     }
-    float _e24 = ms_student_t_g1_(w_34, alpha_53, table_9);
-    float _e25 = c_5;
-    float _e27 = ms_student_t_d(wm_16, alpha_53, table_9);
-    return (((_e24 * _e25) * _e27) / z_19);
+    float _e24 = ms_student_t_g1_(w_36, alpha_61, table_14);
+    float _e25 = c_6;
+    float _e27 = ms_student_t_d(wm_19, alpha_61, table_14);
+    return (((_e24 * _e25) * _e27) / z_21);
 }
 
-float ms_student_t_pdf_dcos(vec3 wm_17, vec2 alpha_54, uint table_10) {
-    if (!((wm_17.z > 0.0))) {
-        return 0.0;
-    }
-    float _e8 = ms_student_t_d(wm_17, alpha_54, table_10);
-    return (_e8 * wm_17.z);
-}
-
-MsSample ms_student_t_sample_dcos(vec2 alpha_55, vec2 u_20, uint table_11) {
-    vec3 v_8 = vec3(0.0);
-    float _e3 = ms_student_t_gamma(table_11);
-    float g1_1 = (_e3 - 1.0);
-    float _e7 = ms_bk_ln_1m(u_20.x);
-    float _e10 = ms_expm1_((-(_e7) / g1_1));
-    float r_21 = sqrt((g1_1 * _e10));
-    vec2 _e14 = ms_cos_sin_turn(u_20.y);
-    if ((r_21 > 1.0)) {
-        v_8 = vec3((alpha_55.x * _e14.x), (alpha_55.y * _e14.y), (1.0 / r_21));
-    } else {
-        v_8 = vec3(((alpha_55.x * r_21) * _e14.x), ((alpha_55.y * r_21) * _e14.y), 1.0);
-    }
-    vec3 _e37 = v_8;
-    vec3 _e38 = ms_unit_normal(_e37);
-    float _e39 = ms_student_t_pdf_dcos(_e38, alpha_55, table_11);
-    return MsSample(_e38, _e39);
-}
-
-MsSample ms_student_t_sample(vec3 w_35, vec2 alpha_56, vec2 u_21, uint table_12) {
-    vec3 _e5 = ms_mixture_sample_wm(0u, table_12, w_35, alpha_56, u_21);
-    vec3 _e6 = ms_unit(w_35);
-    float _e7 = ms_student_t_pdf(_e6, _e5, alpha_56, table_12);
-    return MsSample(_e5, _e7);
-}
-
-float ms_d(MsMicrofacet mf, vec3 wm_18) {
-    if ((mf.ndf == MS_NDF_GGX)) {
-        float _e6 = ms_ggx_d(wm_18, mf.alpha);
-        return _e6;
-    }
-    if ((mf.ndf == MS_NDF_BECKMANN)) {
-        float _e11 = ms_beckmann_d(wm_18, mf.alpha);
-        return _e11;
-    }
-    if ((mf.ndf == MS_NDF_DOUBLE_GGX)) {
-        float _e16 = ms_double_ggx_d(wm_18, mf.alpha);
-        return _e16;
-    }
-    if ((mf.ndf == MS_NDF_EXPONENTIAL)) {
-        float _e21 = ms_exponential_d(wm_18, mf.alpha);
-        return _e21;
-    }
-    if ((mf.ndf == MS_NDF_STUDENT_T)) {
-        float _e27 = ms_student_t_d(wm_18, mf.alpha, mf.table);
-        return _e27;
-    }
-    return 0.0;
-}
-
-float ms_lambda(MsMicrofacet mf_1, vec3 w_36) {
-    if ((mf_1.ndf == MS_NDF_GGX)) {
-        float _e6 = ms_ggx_lambda(w_36, mf_1.alpha);
-        return _e6;
-    }
-    if ((mf_1.ndf == MS_NDF_BECKMANN)) {
-        float _e11 = ms_beckmann_lambda(w_36, mf_1.alpha);
-        return _e11;
-    }
-    if ((mf_1.ndf == MS_NDF_DOUBLE_GGX)) {
-        float _e16 = ms_double_ggx_lambda(w_36, mf_1.alpha);
-        return _e16;
-    }
-    if ((mf_1.ndf == MS_NDF_EXPONENTIAL)) {
-        float _e21 = ms_exponential_lambda(w_36, mf_1.alpha);
-        return _e21;
-    }
-    if ((mf_1.ndf == MS_NDF_STUDENT_T)) {
-        float _e27 = ms_student_t_lambda(w_36, mf_1.alpha, mf_1.table);
-        return _e27;
-    }
-    return 0.0;
-}
-
-float ms_g1_(MsMicrofacet mf_2, vec3 w_37) {
-    if ((mf_2.ndf == MS_NDF_GGX)) {
-        float _e6 = ms_ggx_g1_(w_37, mf_2.alpha);
-        return _e6;
-    }
-    if ((mf_2.ndf == MS_NDF_BECKMANN)) {
-        float _e11 = ms_beckmann_g1_(w_37, mf_2.alpha);
-        return _e11;
-    }
-    if ((mf_2.ndf == MS_NDF_DOUBLE_GGX)) {
-        float _e16 = ms_double_ggx_g1_(w_37, mf_2.alpha);
-        return _e16;
-    }
-    if ((mf_2.ndf == MS_NDF_EXPONENTIAL)) {
-        float _e21 = ms_exponential_g1_(w_37, mf_2.alpha);
-        return _e21;
-    }
-    if ((mf_2.ndf == MS_NDF_STUDENT_T)) {
-        float _e27 = ms_student_t_g1_(w_37, mf_2.alpha, mf_2.table);
-        return _e27;
-    }
-    return 0.0;
-}
-
-float ms_g2_(MsMicrofacet mf_3, vec3 wo_17, vec3 wi_17) {
-    if ((mf_3.ndf == MS_NDF_GGX)) {
-        float _e7 = ms_ggx_g2_(wo_17, wi_17, mf_3.alpha);
-        return _e7;
-    }
-    if ((mf_3.ndf == MS_NDF_BECKMANN)) {
-        float _e12 = ms_beckmann_g2_(wo_17, wi_17, mf_3.alpha);
-        return _e12;
-    }
-    if ((mf_3.ndf == MS_NDF_DOUBLE_GGX)) {
-        float _e17 = ms_double_ggx_g2_(wo_17, wi_17, mf_3.alpha);
-        return _e17;
-    }
-    if ((mf_3.ndf == MS_NDF_EXPONENTIAL)) {
-        float _e22 = ms_exponential_g2_(wo_17, wi_17, mf_3.alpha);
-        return _e22;
-    }
-    if ((mf_3.ndf == MS_NDF_STUDENT_T)) {
-        float _e28 = ms_student_t_g2_(wo_17, wi_17, mf_3.alpha, mf_3.table);
-        return _e28;
-    }
-    return 0.0;
-}
-
-float ms_g2_separable(MsMicrofacet mf_4, vec3 wo_18, vec3 wi_18) {
-    float _e3 = ms_g1_(mf_4, wo_18);
-    float _e4 = ms_g1_(mf_4, wi_18);
-    return (_e3 * _e4);
-}
-
-float ms_pdf(MsMicrofacet mf_5, vec3 w_38, vec3 wm_19) {
-    if ((mf_5.ndf == MS_NDF_GGX)) {
-        float _e7 = ms_ggx_pdf(w_38, wm_19, mf_5.alpha);
-        return _e7;
-    }
-    if ((mf_5.ndf == MS_NDF_BECKMANN)) {
-        float _e12 = ms_beckmann_pdf(w_38, wm_19, mf_5.alpha);
-        return _e12;
-    }
-    if ((mf_5.ndf == MS_NDF_DOUBLE_GGX)) {
-        float _e17 = ms_double_ggx_pdf(w_38, wm_19, mf_5.alpha);
-        return _e17;
-    }
-    if ((mf_5.ndf == MS_NDF_EXPONENTIAL)) {
-        float _e22 = ms_exponential_pdf(w_38, wm_19, mf_5.alpha);
-        return _e22;
-    }
-    if ((mf_5.ndf == MS_NDF_STUDENT_T)) {
-        float _e28 = ms_student_t_pdf(w_38, wm_19, mf_5.alpha, mf_5.table);
-        return _e28;
-    }
-    return 0.0;
-}
-
-float ms_pdf_dcos(MsMicrofacet mf_6, vec3 wm_20) {
+float ms_student_t_pdf_dcos(vec3 wm_20, vec2 alpha_62, uint table_15) {
     if (!((wm_20.z > 0.0))) {
         return 0.0;
     }
-    float _e7 = ms_d(mf_6, wm_20);
-    return (_e7 * wm_20.z);
+    float _e8 = ms_student_t_d(wm_20, alpha_62, table_15);
+    return (_e8 * wm_20.z);
 }
 
-MsSample ms_sample(MsMicrofacet mf_7, vec3 w_39, vec2 u_22) {
+MsSample ms_student_t_sample_dcos(vec2 alpha_63, vec2 u_21, uint table_16) {
+    vec3 v_8 = vec3(0.0);
+    float _e3 = ms_student_t_gamma(table_16);
+    float g1_1 = (_e3 - 1.0);
+    float _e7 = ms_bk_ln_1m(u_21.x);
+    float _e10 = ms_expm1_((-(_e7) / g1_1));
+    float r_23 = sqrt((g1_1 * _e10));
+    vec2 _e14 = ms_cos_sin_turn(u_21.y);
+    if ((r_23 > 1.0)) {
+        v_8 = vec3((alpha_63.x * _e14.x), (alpha_63.y * _e14.y), (1.0 / r_23));
+    } else {
+        v_8 = vec3(((alpha_63.x * r_23) * _e14.x), ((alpha_63.y * r_23) * _e14.y), 1.0);
+    }
+    vec3 _e37 = v_8;
+    vec3 _e38 = ms_unit_normal(_e37);
+    float _e39 = ms_student_t_pdf_dcos(_e38, alpha_63, table_16);
+    return MsSample(_e38, _e39);
+}
+
+MsSample ms_student_t_sample(vec3 w_37, vec2 alpha_64, vec2 u_22, uint table_17) {
+    vec3 _e4 = ms_mixture_sample_wm(table_17, w_37, alpha_64, u_22);
+    vec3 _e5 = ms_unit(w_37);
+    float _e6 = ms_student_t_pdf(_e5, _e4, alpha_64, table_17);
+    return MsSample(_e4, _e6);
+}
+
+float ms_ei_ln_profile(float y_4) {
+    float _e1 = ms_e1x(y_4);
+    return ((log(_e1) - y_4) - 1.14473);
+}
+
+float ms_ei_d(vec3 wm_21, vec2 alpha_65) {
+    if (!((wm_21.z > 0.0))) {
+        return ((wm_21.z != wm_21.z) ? wm_21.z : 0.0);
+    }
+    float _e12 = ms_mixture_r2_(wm_21, alpha_65);
+    if ((_e12 == 0.0)) {
+        float _e15 = ms_inf();
+        return _e15;
+    }
+    float _e16 = ms_ei_ln_profile(_e12);
+    float _e17 = ms_mixture_d_from_ln_profile(_e16, wm_21, alpha_65);
+    return _e17;
+}
+
+float ms_ei_lambda(vec3 w_38, vec2 alpha_66, uint table_18) {
+    float _e3 = ms_shape_lambda(table_18, w_38, alpha_66);
+    return _e3;
+}
+
+float ms_ei_g1_(vec3 w_39, vec2 alpha_67, uint table_19) {
+    float _e3 = ms_mixture_g1_(table_19, w_39, alpha_67);
+    return _e3;
+}
+
+float ms_ei_g2_(vec3 wo_19, vec3 wi_19, vec2 alpha_68, uint table_20) {
+    float _e4 = ms_mixture_g2_(table_20, wo_19, wi_19, alpha_68);
+    return _e4;
+}
+
+float ms_ei_g2_separable(vec3 wo_20, vec3 wi_20, vec2 alpha_69, uint table_21) {
+    float _e4 = ms_mixture_g2_separable(table_21, wo_20, wi_20, alpha_69);
+    return _e4;
+}
+
+float ms_ei_pdf(vec3 w_40, vec3 wm_22, vec2 alpha_70, uint table_22) {
+    float _e4 = ms_ei_d(wm_22, alpha_70);
+    float _e5 = ms_mixture_pdf(table_22, w_40, wm_22, alpha_70, _e4);
+    return _e5;
+}
+
+float ms_ei_pdf_dcos(vec3 wm_23, vec2 alpha_71) {
+    if (!((wm_23.z > 0.0))) {
+        return 0.0;
+    }
+    float _e7 = ms_ei_d(wm_23, alpha_71);
+    return (_e7 * wm_23.z);
+}
+
+MsSample ms_ei_sample_dcos(vec2 alpha_72, vec2 u_23, uint table_23) {
+    vec3 _e3 = ms_mixture_sample_dcos_wm(table_23, alpha_72, u_23);
+    float _e4 = ms_ei_pdf_dcos(_e3, alpha_72);
+    return MsSample(_e3, _e4);
+}
+
+MsSample ms_ei_sample(vec3 w_41, vec2 alpha_73, vec2 u_24, uint table_24) {
+    vec3 _e4 = ms_mixture_sample_wm(table_24, w_41, alpha_73, u_24);
+    vec3 _e5 = ms_unit(w_41);
+    float _e6 = ms_ei_pdf(_e5, _e4, alpha_73, table_24);
+    return MsSample(_e4, _e6);
+}
+
+float ms_erfc_ln_profile(float y_5) {
+    float r_24 = sqrt(y_5);
+    float _e2 = ms_bk_erfcx(r_24);
+    return (log((_e2 / (3.5449078 * r_24))) - y_5);
+}
+
+float ms_erfc_d(vec3 wm_24, vec2 alpha_74) {
+    if (!((wm_24.z > 0.0))) {
+        return ((wm_24.z != wm_24.z) ? wm_24.z : 0.0);
+    }
+    float _e12 = ms_mixture_r2_(wm_24, alpha_74);
+    if ((_e12 == 0.0)) {
+        float _e15 = ms_inf();
+        return _e15;
+    }
+    float _e16 = ms_erfc_ln_profile(_e12);
+    float _e17 = ms_mixture_d_from_ln_profile(_e16, wm_24, alpha_74);
+    return _e17;
+}
+
+float ms_erfc_lambda(vec3 w_42, vec2 alpha_75, uint table_25) {
+    float _e3 = ms_shape_lambda(table_25, w_42, alpha_75);
+    return _e3;
+}
+
+float ms_erfc_g1_(vec3 w_43, vec2 alpha_76, uint table_26) {
+    float _e3 = ms_mixture_g1_(table_26, w_43, alpha_76);
+    return _e3;
+}
+
+float ms_erfc_g2_(vec3 wo_21, vec3 wi_21, vec2 alpha_77, uint table_27) {
+    float _e4 = ms_mixture_g2_(table_27, wo_21, wi_21, alpha_77);
+    return _e4;
+}
+
+float ms_erfc_g2_separable(vec3 wo_22, vec3 wi_22, vec2 alpha_78, uint table_28) {
+    float _e4 = ms_mixture_g2_separable(table_28, wo_22, wi_22, alpha_78);
+    return _e4;
+}
+
+float ms_erfc_pdf(vec3 w_44, vec3 wm_25, vec2 alpha_79, uint table_29) {
+    float _e4 = ms_erfc_d(wm_25, alpha_79);
+    float _e5 = ms_mixture_pdf(table_29, w_44, wm_25, alpha_79, _e4);
+    return _e5;
+}
+
+float ms_erfc_pdf_dcos(vec3 wm_26, vec2 alpha_80) {
+    if (!((wm_26.z > 0.0))) {
+        return 0.0;
+    }
+    float _e7 = ms_erfc_d(wm_26, alpha_80);
+    return (_e7 * wm_26.z);
+}
+
+MsSample ms_erfc_sample_dcos(vec2 alpha_81, vec2 u_25, uint table_30) {
+    vec3 _e3 = ms_mixture_sample_dcos_wm(table_30, alpha_81, u_25);
+    float _e4 = ms_erfc_pdf_dcos(_e3, alpha_81);
+    return MsSample(_e3, _e4);
+}
+
+MsSample ms_erfc_sample(vec3 w_45, vec2 alpha_82, vec2 u_26, uint table_31) {
+    vec3 _e4 = ms_mixture_sample_wm(table_31, w_45, alpha_82, u_26);
+    vec3 _e5 = ms_unit(w_45);
+    float _e6 = ms_erfc_pdf(_e5, _e4, alpha_82, table_31);
+    return MsSample(_e4, _e6);
+}
+
+float ms_k0_ln_profile(float y_6) {
+    float z_22 = (2.0 * sqrt(y_6));
+    float _e4 = ms_k0e(z_22);
+    return (log(((2.0 * _e4) / MS_PI)) - z_22);
+}
+
+float ms_k0_d(vec3 wm_27, vec2 alpha_83) {
+    if (!((wm_27.z > 0.0))) {
+        return ((wm_27.z != wm_27.z) ? wm_27.z : 0.0);
+    }
+    float _e12 = ms_mixture_r2_(wm_27, alpha_83);
+    if ((_e12 == 0.0)) {
+        float _e15 = ms_inf();
+        return _e15;
+    }
+    float _e16 = ms_k0_ln_profile(_e12);
+    float _e17 = ms_mixture_d_from_ln_profile(_e16, wm_27, alpha_83);
+    return _e17;
+}
+
+float ms_k0_lambda(vec3 w_46, vec2 alpha_84, uint table_32) {
+    float _e3 = ms_shape_lambda(table_32, w_46, alpha_84);
+    return _e3;
+}
+
+float ms_k0_g1_(vec3 w_47, vec2 alpha_85, uint table_33) {
+    float _e3 = ms_mixture_g1_(table_33, w_47, alpha_85);
+    return _e3;
+}
+
+float ms_k0_g2_(vec3 wo_23, vec3 wi_23, vec2 alpha_86, uint table_34) {
+    float _e4 = ms_mixture_g2_(table_34, wo_23, wi_23, alpha_86);
+    return _e4;
+}
+
+float ms_k0_g2_separable(vec3 wo_24, vec3 wi_24, vec2 alpha_87, uint table_35) {
+    float _e4 = ms_mixture_g2_separable(table_35, wo_24, wi_24, alpha_87);
+    return _e4;
+}
+
+float ms_k0_pdf(vec3 w_48, vec3 wm_28, vec2 alpha_88, uint table_36) {
+    float _e4 = ms_k0_d(wm_28, alpha_88);
+    float _e5 = ms_mixture_pdf(table_36, w_48, wm_28, alpha_88, _e4);
+    return _e5;
+}
+
+float ms_k0_pdf_dcos(vec3 wm_29, vec2 alpha_89) {
+    if (!((wm_29.z > 0.0))) {
+        return 0.0;
+    }
+    float _e7 = ms_k0_d(wm_29, alpha_89);
+    return (_e7 * wm_29.z);
+}
+
+MsSample ms_k0_sample_dcos(vec2 alpha_90, vec2 u_27, uint table_37) {
+    vec3 _e3 = ms_mixture_sample_dcos_wm(table_37, alpha_90, u_27);
+    float _e4 = ms_k0_pdf_dcos(_e3, alpha_90);
+    return MsSample(_e3, _e4);
+}
+
+MsSample ms_k0_sample(vec3 w_49, vec2 alpha_91, vec2 u_28, uint table_38) {
+    vec3 _e4 = ms_mixture_sample_wm(table_38, w_49, alpha_91, u_28);
+    vec3 _e5 = ms_unit(w_49);
+    float _e6 = ms_k0_pdf(_e5, _e4, alpha_91, table_38);
+    return MsSample(_e4, _e6);
+}
+
+float ms_d(MsMicrofacet mf, vec3 wm_30) {
+    if ((mf.ndf == MS_NDF_GGX)) {
+        float _e6 = ms_ggx_d(wm_30, mf.alpha);
+        return _e6;
+    }
+    if ((mf.ndf == MS_NDF_BECKMANN)) {
+        float _e11 = ms_beckmann_d(wm_30, mf.alpha);
+        return _e11;
+    }
+    if ((mf.ndf == MS_NDF_DOUBLE_GGX)) {
+        float _e16 = ms_double_ggx_d(wm_30, mf.alpha);
+        return _e16;
+    }
+    if ((mf.ndf == MS_NDF_EXPONENTIAL)) {
+        float _e21 = ms_exponential_d(wm_30, mf.alpha);
+        return _e21;
+    }
+    if ((mf.ndf == MS_NDF_STUDENT_T)) {
+        float _e27 = ms_student_t_d(wm_30, mf.alpha, mf.table);
+        return _e27;
+    }
+    if ((mf.ndf == MS_NDF_EI)) {
+        float _e32 = ms_ei_d(wm_30, mf.alpha);
+        return _e32;
+    }
+    if ((mf.ndf == MS_NDF_ERFC)) {
+        float _e37 = ms_erfc_d(wm_30, mf.alpha);
+        return _e37;
+    }
+    if ((mf.ndf == MS_NDF_K0_)) {
+        float _e42 = ms_k0_d(wm_30, mf.alpha);
+        return _e42;
+    }
+    return 0.0;
+}
+
+float ms_lambda(MsMicrofacet mf_1, vec3 w_50) {
+    if ((mf_1.ndf == MS_NDF_GGX)) {
+        float _e6 = ms_ggx_lambda(w_50, mf_1.alpha);
+        return _e6;
+    }
+    if ((mf_1.ndf == MS_NDF_BECKMANN)) {
+        float _e11 = ms_beckmann_lambda(w_50, mf_1.alpha);
+        return _e11;
+    }
+    if ((mf_1.ndf == MS_NDF_DOUBLE_GGX)) {
+        float _e16 = ms_double_ggx_lambda(w_50, mf_1.alpha);
+        return _e16;
+    }
+    if ((mf_1.ndf == MS_NDF_EXPONENTIAL)) {
+        float _e21 = ms_exponential_lambda(w_50, mf_1.alpha);
+        return _e21;
+    }
+    if ((mf_1.ndf == MS_NDF_STUDENT_T)) {
+        float _e27 = ms_student_t_lambda(w_50, mf_1.alpha, mf_1.table);
+        return _e27;
+    }
+    if ((mf_1.ndf == MS_NDF_EI)) {
+        float _e33 = ms_ei_lambda(w_50, mf_1.alpha, mf_1.table);
+        return _e33;
+    }
+    if ((mf_1.ndf == MS_NDF_ERFC)) {
+        float _e39 = ms_erfc_lambda(w_50, mf_1.alpha, mf_1.table);
+        return _e39;
+    }
+    if ((mf_1.ndf == MS_NDF_K0_)) {
+        float _e45 = ms_k0_lambda(w_50, mf_1.alpha, mf_1.table);
+        return _e45;
+    }
+    return 0.0;
+}
+
+float ms_g1_(MsMicrofacet mf_2, vec3 w_51) {
+    if ((mf_2.ndf == MS_NDF_GGX)) {
+        float _e6 = ms_ggx_g1_(w_51, mf_2.alpha);
+        return _e6;
+    }
+    if ((mf_2.ndf == MS_NDF_BECKMANN)) {
+        float _e11 = ms_beckmann_g1_(w_51, mf_2.alpha);
+        return _e11;
+    }
+    if ((mf_2.ndf == MS_NDF_DOUBLE_GGX)) {
+        float _e16 = ms_double_ggx_g1_(w_51, mf_2.alpha);
+        return _e16;
+    }
+    if ((mf_2.ndf == MS_NDF_EXPONENTIAL)) {
+        float _e21 = ms_exponential_g1_(w_51, mf_2.alpha);
+        return _e21;
+    }
+    if ((mf_2.ndf == MS_NDF_STUDENT_T)) {
+        float _e27 = ms_student_t_g1_(w_51, mf_2.alpha, mf_2.table);
+        return _e27;
+    }
+    if ((mf_2.ndf == MS_NDF_EI)) {
+        float _e33 = ms_ei_g1_(w_51, mf_2.alpha, mf_2.table);
+        return _e33;
+    }
+    if ((mf_2.ndf == MS_NDF_ERFC)) {
+        float _e39 = ms_erfc_g1_(w_51, mf_2.alpha, mf_2.table);
+        return _e39;
+    }
+    if ((mf_2.ndf == MS_NDF_K0_)) {
+        float _e45 = ms_k0_g1_(w_51, mf_2.alpha, mf_2.table);
+        return _e45;
+    }
+    return 0.0;
+}
+
+float ms_g2_(MsMicrofacet mf_3, vec3 wo_25, vec3 wi_25) {
+    if ((mf_3.ndf == MS_NDF_GGX)) {
+        float _e7 = ms_ggx_g2_(wo_25, wi_25, mf_3.alpha);
+        return _e7;
+    }
+    if ((mf_3.ndf == MS_NDF_BECKMANN)) {
+        float _e12 = ms_beckmann_g2_(wo_25, wi_25, mf_3.alpha);
+        return _e12;
+    }
+    if ((mf_3.ndf == MS_NDF_DOUBLE_GGX)) {
+        float _e17 = ms_double_ggx_g2_(wo_25, wi_25, mf_3.alpha);
+        return _e17;
+    }
+    if ((mf_3.ndf == MS_NDF_EXPONENTIAL)) {
+        float _e22 = ms_exponential_g2_(wo_25, wi_25, mf_3.alpha);
+        return _e22;
+    }
+    if ((mf_3.ndf == MS_NDF_STUDENT_T)) {
+        float _e28 = ms_student_t_g2_(wo_25, wi_25, mf_3.alpha, mf_3.table);
+        return _e28;
+    }
+    if ((mf_3.ndf == MS_NDF_EI)) {
+        float _e34 = ms_ei_g2_(wo_25, wi_25, mf_3.alpha, mf_3.table);
+        return _e34;
+    }
+    if ((mf_3.ndf == MS_NDF_ERFC)) {
+        float _e40 = ms_erfc_g2_(wo_25, wi_25, mf_3.alpha, mf_3.table);
+        return _e40;
+    }
+    if ((mf_3.ndf == MS_NDF_K0_)) {
+        float _e46 = ms_k0_g2_(wo_25, wi_25, mf_3.alpha, mf_3.table);
+        return _e46;
+    }
+    return 0.0;
+}
+
+float ms_g2_separable(MsMicrofacet mf_4, vec3 wo_26, vec3 wi_26) {
+    float _e3 = ms_g1_(mf_4, wo_26);
+    float _e4 = ms_g1_(mf_4, wi_26);
+    return (_e3 * _e4);
+}
+
+float ms_pdf(MsMicrofacet mf_5, vec3 w_52, vec3 wm_31) {
+    if ((mf_5.ndf == MS_NDF_GGX)) {
+        float _e7 = ms_ggx_pdf(w_52, wm_31, mf_5.alpha);
+        return _e7;
+    }
+    if ((mf_5.ndf == MS_NDF_BECKMANN)) {
+        float _e12 = ms_beckmann_pdf(w_52, wm_31, mf_5.alpha);
+        return _e12;
+    }
+    if ((mf_5.ndf == MS_NDF_DOUBLE_GGX)) {
+        float _e17 = ms_double_ggx_pdf(w_52, wm_31, mf_5.alpha);
+        return _e17;
+    }
+    if ((mf_5.ndf == MS_NDF_EXPONENTIAL)) {
+        float _e22 = ms_exponential_pdf(w_52, wm_31, mf_5.alpha);
+        return _e22;
+    }
+    if ((mf_5.ndf == MS_NDF_STUDENT_T)) {
+        float _e28 = ms_student_t_pdf(w_52, wm_31, mf_5.alpha, mf_5.table);
+        return _e28;
+    }
+    if ((mf_5.ndf == MS_NDF_EI)) {
+        float _e34 = ms_ei_pdf(w_52, wm_31, mf_5.alpha, mf_5.table);
+        return _e34;
+    }
+    if ((mf_5.ndf == MS_NDF_ERFC)) {
+        float _e40 = ms_erfc_pdf(w_52, wm_31, mf_5.alpha, mf_5.table);
+        return _e40;
+    }
+    if ((mf_5.ndf == MS_NDF_K0_)) {
+        float _e46 = ms_k0_pdf(w_52, wm_31, mf_5.alpha, mf_5.table);
+        return _e46;
+    }
+    return 0.0;
+}
+
+float ms_pdf_dcos(MsMicrofacet mf_6, vec3 wm_32) {
+    if (!((wm_32.z > 0.0))) {
+        return 0.0;
+    }
+    float _e7 = ms_d(mf_6, wm_32);
+    return (_e7 * wm_32.z);
+}
+
+MsSample ms_sample(MsMicrofacet mf_7, vec3 w_53, vec2 u_29) {
     if ((mf_7.ndf == MS_NDF_GGX)) {
-        MsSample _e7 = ms_ggx_sample(w_39, mf_7.alpha, u_22);
+        MsSample _e7 = ms_ggx_sample(w_53, mf_7.alpha, u_29);
         return _e7;
     }
     if ((mf_7.ndf == MS_NDF_BECKMANN)) {
-        MsSample _e12 = ms_beckmann_sample(w_39, mf_7.alpha, u_22);
+        MsSample _e12 = ms_beckmann_sample(w_53, mf_7.alpha, u_29);
         return _e12;
     }
     if ((mf_7.ndf == MS_NDF_DOUBLE_GGX)) {
-        MsSample _e17 = ms_double_ggx_sample(w_39, mf_7.alpha, u_22);
+        MsSample _e17 = ms_double_ggx_sample(w_53, mf_7.alpha, u_29);
         return _e17;
     }
     if ((mf_7.ndf == MS_NDF_EXPONENTIAL)) {
-        MsSample _e22 = ms_exponential_sample(w_39, mf_7.alpha, u_22);
+        MsSample _e22 = ms_exponential_sample(w_53, mf_7.alpha, u_29);
         return _e22;
     }
     if ((mf_7.ndf == MS_NDF_STUDENT_T)) {
-        MsSample _e28 = ms_student_t_sample(w_39, mf_7.alpha, u_22, mf_7.table);
+        MsSample _e28 = ms_student_t_sample(w_53, mf_7.alpha, u_29, mf_7.table);
         return _e28;
+    }
+    if ((mf_7.ndf == MS_NDF_EI)) {
+        MsSample _e34 = ms_ei_sample(w_53, mf_7.alpha, u_29, mf_7.table);
+        return _e34;
+    }
+    if ((mf_7.ndf == MS_NDF_ERFC)) {
+        MsSample _e40 = ms_erfc_sample(w_53, mf_7.alpha, u_29, mf_7.table);
+        return _e40;
+    }
+    if ((mf_7.ndf == MS_NDF_K0_)) {
+        MsSample _e46 = ms_k0_sample(w_53, mf_7.alpha, u_29, mf_7.table);
+        return _e46;
     }
     return MsSample(vec3(0.0, 0.0, 1.0), 0.0);
 }
 
-MsSample ms_sample_dcos(MsMicrofacet mf_8, vec2 u_23) {
+MsSample ms_sample_dcos(MsMicrofacet mf_8, vec2 u_30) {
     if ((mf_8.ndf == MS_NDF_GGX)) {
-        MsSample _e6 = ms_ggx_sample_dcos(mf_8.alpha, u_23);
+        MsSample _e6 = ms_ggx_sample_dcos(mf_8.alpha, u_30);
         return _e6;
     }
     if ((mf_8.ndf == MS_NDF_BECKMANN)) {
-        MsSample _e11 = ms_beckmann_sample_dcos(mf_8.alpha, u_23);
+        MsSample _e11 = ms_beckmann_sample_dcos(mf_8.alpha, u_30);
         return _e11;
     }
     if ((mf_8.ndf == MS_NDF_DOUBLE_GGX)) {
-        MsSample _e16 = ms_double_ggx_sample_dcos(mf_8.alpha, u_23);
+        MsSample _e16 = ms_double_ggx_sample_dcos(mf_8.alpha, u_30);
         return _e16;
     }
     if ((mf_8.ndf == MS_NDF_EXPONENTIAL)) {
-        MsSample _e21 = ms_exponential_sample_dcos(mf_8.alpha, u_23);
+        MsSample _e21 = ms_exponential_sample_dcos(mf_8.alpha, u_30);
         return _e21;
     }
     if ((mf_8.ndf == MS_NDF_STUDENT_T)) {
-        MsSample _e27 = ms_student_t_sample_dcos(mf_8.alpha, u_23, mf_8.table);
+        MsSample _e27 = ms_student_t_sample_dcos(mf_8.alpha, u_30, mf_8.table);
         return _e27;
+    }
+    if ((mf_8.ndf == MS_NDF_EI)) {
+        MsSample _e33 = ms_ei_sample_dcos(mf_8.alpha, u_30, mf_8.table);
+        return _e33;
+    }
+    if ((mf_8.ndf == MS_NDF_ERFC)) {
+        MsSample _e39 = ms_erfc_sample_dcos(mf_8.alpha, u_30, mf_8.table);
+        return _e39;
+    }
+    if ((mf_8.ndf == MS_NDF_K0_)) {
+        MsSample _e45 = ms_k0_sample_dcos(mf_8.alpha, u_30, mf_8.table);
+        return _e45;
     }
     return MsSample(vec3(0.0, 0.0, 1.0), 0.0);
 }
@@ -2648,156 +3046,156 @@ bool ms_effectively_smooth(MsMicrofacet mf_9) {
     return (max(mf_9.alpha.x, mf_9.alpha.y) < 0.001);
 }
 
-bool ms_on_horizon(float z_4) {
-    return !((abs(z_4) >= 1e-18));
+bool ms_on_horizon(float z_5) {
+    return !((abs(z_5) >= 1e-18));
 }
 
 bool ms_usable(float v_9) {
-    bool local_31 = false;
+    bool local_32 = false;
     if ((v_9 >= 1.1754944e-20)) {
-        local_31 = (v_9 <= 3.4028235e38);
+        local_32 = (v_9 <= 3.4028235e38);
     } else {
-        local_31 = false;
+        local_32 = false;
     }
-    bool _e8 = local_31;
+    bool _e8 = local_32;
     return _e8;
 }
 
-float ms_masking_g2_(MsMicrofacet mf_10, uint masking, vec3 wo_19, vec3 wi_19) {
+float ms_masking_g2_(MsMicrofacet mf_10, uint masking, vec3 wo_27, vec3 wi_27) {
     if ((masking == MS_MASKING_SEPARABLE)) {
-        float _e6 = ms_g2_separable(mf_10, wo_19, wi_19);
+        float _e6 = ms_g2_separable(mf_10, wo_27, wi_27);
         return _e6;
     }
-    float _e7 = ms_g2_(mf_10, wo_19, wi_19);
+    float _e7 = ms_g2_(mf_10, wo_27, wi_27);
     return _e7;
 }
 
-float ms_reflected(MsMicrofacet mf_11, uint masking_1, vec3 wo_20, vec3 wi_20, float d_wm) {
-    float _e5 = ms_masking_g2_(mf_11, masking_1, wo_20, wi_20);
-    return ((d_wm * _e5) / (4.0 * abs((wo_20.z * wi_20.z))));
+float ms_reflected(MsMicrofacet mf_11, uint masking_1, vec3 wo_28, vec3 wi_28, float d_wm) {
+    float _e5 = ms_masking_g2_(mf_11, masking_1, wo_28, wi_28);
+    return ((d_wm * _e5) / (4.0 * abs((wo_28.z * wi_28.z))));
 }
 
-vec3 ms_weighted(vec3 fr_1, float k_7) {
-    return mix((fr_1 * k_7), vec3(0.0), equal(fr_1, vec3(0.0)));
+vec3 ms_weighted(vec3 fr_1, float k_8) {
+    return mix((fr_1 * k_8), vec3(0.0), equal(fr_1, vec3(0.0)));
 }
 
-vec3 ms_conductor_lobe_normal(MsConductor c_6, vec3 wo_21, vec3 wi_21) {
-    bool local_32 = false;
+vec3 ms_conductor_lobe_normal(MsConductor c_7, vec3 wo_29, vec3 wi_29) {
     bool local_33 = false;
     bool local_34 = false;
-    bool _e3 = ms_same_hemisphere(wo_21, wi_21);
+    bool local_35 = false;
+    bool _e3 = ms_same_hemisphere(wo_29, wi_29);
     if (!(!(_e3))) {
-        bool _e9 = ms_on_horizon(wo_21.z);
-        local_32 = _e9;
-    } else {
-        local_32 = true;
-    }
-    bool _e11 = local_32;
-    if (!(_e11)) {
-        bool _e16 = ms_on_horizon(wi_21.z);
-        local_33 = _e16;
+        bool _e9 = ms_on_horizon(wo_29.z);
+        local_33 = _e9;
     } else {
         local_33 = true;
     }
-    bool _e18 = local_33;
-    if (!(_e18)) {
-        bool _e23 = ms_effectively_smooth(c_6.mf);
-        local_34 = _e23;
+    bool _e11 = local_33;
+    if (!(_e11)) {
+        bool _e16 = ms_on_horizon(wi_29.z);
+        local_34 = _e16;
     } else {
         local_34 = true;
     }
-    bool _e25 = local_34;
+    bool _e18 = local_34;
+    if (!(_e18)) {
+        bool _e23 = ms_effectively_smooth(c_7.mf);
+        local_35 = _e23;
+    } else {
+        local_35 = true;
+    }
+    bool _e25 = local_35;
     if (_e25) {
         return vec3(0.0);
     }
-    vec3 _e28 = ms_half_vector_reflection(wo_21, wi_21);
+    vec3 _e28 = ms_half_vector_reflection(wo_29, wi_29);
     return _e28;
 }
 
-vec3 ms_conductor_eval(MsConductor c_7, vec3 wo_22, vec3 wi_22) {
-    vec3 _e3 = ms_conductor_lobe_normal(c_7, wo_22, wi_22);
+vec3 ms_conductor_eval(MsConductor c_8, vec3 wo_30, vec3 wi_30) {
+    vec3 _e3 = ms_conductor_lobe_normal(c_8, wo_30, wi_30);
     bool _e4 = ms_half_vector_ok(_e3);
     if (!(_e4)) {
         return vec3(0.0);
     }
-    float _e9 = ms_dot(wo_22, _e3);
-    float _e11 = ms_dot(wi_22, _e3);
-    vec3 _e16 = ms_fresnel_eval(c_7.fresnel, (0.5 * (abs(_e9) + abs(_e11))));
-    float _e20 = ms_d(c_7.mf, _e3);
-    float _e21 = ms_reflected(c_7.mf, c_7.masking, wo_22, wi_22, _e20);
+    float _e9 = ms_dot(wo_30, _e3);
+    float _e11 = ms_dot(wi_30, _e3);
+    vec3 _e16 = ms_fresnel_eval(c_8.fresnel, (0.5 * (abs(_e9) + abs(_e11))));
+    float _e20 = ms_d(c_8.mf, _e3);
+    float _e21 = ms_reflected(c_8.mf, c_8.masking, wo_30, wi_30, _e20);
     vec3 _e22 = ms_weighted(_e16, _e21);
     return _e22;
 }
 
-float ms_conductor_pdf(MsConductor c_8, vec3 wo_23, vec3 wi_23) {
-    vec3 _e3 = ms_conductor_lobe_normal(c_8, wo_23, wi_23);
+float ms_conductor_pdf(MsConductor c_9, vec3 wo_31, vec3 wi_31) {
+    vec3 _e3 = ms_conductor_lobe_normal(c_9, wo_31, wi_31);
     bool _e4 = ms_half_vector_ok(_e3);
     if (!(_e4)) {
         return 0.0;
     }
-    float _e8 = ms_pdf(c_8.mf, wo_23, _e3);
-    float _e9 = ms_dot(wo_23, _e3);
+    float _e8 = ms_pdf(c_9.mf, wo_31, _e3);
+    float _e9 = ms_dot(wo_31, _e3);
     return (_e8 / (4.0 * abs(_e9)));
 }
 
-vec4 ms_conductor_eval_pdf(MsConductor c_9, vec3 wo_24, vec3 wi_24) {
-    vec3 _e3 = ms_conductor_lobe_normal(c_9, wo_24, wi_24);
+vec4 ms_conductor_eval_pdf(MsConductor c_10, vec3 wo_32, vec3 wi_32) {
+    vec3 _e3 = ms_conductor_lobe_normal(c_10, wo_32, wi_32);
     bool _e4 = ms_half_vector_ok(_e3);
     if (!(_e4)) {
         return vec4(0.0);
     }
-    float _e8 = ms_dot(wo_24, _e3);
+    float _e8 = ms_dot(wo_32, _e3);
     float co = abs(_e8);
-    float _e11 = ms_dot(wi_24, _e3);
-    vec3 _e16 = ms_fresnel_eval(c_9.fresnel, (0.5 * (co + abs(_e11))));
-    float _e20 = ms_d(c_9.mf, _e3);
-    float _e21 = ms_reflected(c_9.mf, c_9.masking, wo_24, wi_24, _e20);
+    float _e11 = ms_dot(wi_32, _e3);
+    vec3 _e16 = ms_fresnel_eval(c_10.fresnel, (0.5 * (co + abs(_e11))));
+    float _e20 = ms_d(c_10.mf, _e3);
+    float _e21 = ms_reflected(c_10.mf, c_10.masking, wo_32, wi_32, _e20);
     vec3 _e22 = ms_weighted(_e16, _e21);
-    float _e24 = ms_pdf(c_9.mf, wo_24, _e3);
+    float _e24 = ms_pdf(c_10.mf, wo_32, _e3);
     return vec4(_e22, (_e24 / (4.0 * co)));
 }
 
-MsBsdfSample ms_conductor_sample(MsConductor c_10, vec3 wo_25, float uc, vec2 u_24) {
-    bool local_35 = false;
+MsBsdfSample ms_conductor_sample(MsConductor c_11, vec3 wo_33, float uc, vec2 u_31) {
+    bool local_36 = false;
     MsBsdfSample none = MsBsdfSample(vec3(0.0), 0.0, vec3(0.0), 0u, 1.0);
-    bool _e13 = ms_on_horizon(wo_25.z);
+    bool _e13 = ms_on_horizon(wo_33.z);
     if (_e13) {
         return none;
     }
-    bool _e15 = ms_effectively_smooth(c_10.mf);
+    bool _e15 = ms_effectively_smooth(c_11.mf);
     if (_e15) {
-        vec3 wi_41 = vec3(-(wo_25.x), -(wo_25.y), wo_25.z);
-        float k_11 = (1.0 / abs(wi_41.z));
-        vec3 _e29 = ms_fresnel_eval(c_10.fresnel, abs(wo_25.z));
-        return MsBsdfSample(wi_41, 1.0, (_e29 * k_11), 3u, 1.0);
+        vec3 wi_49 = vec3(-(wo_33.x), -(wo_33.y), wo_33.z);
+        float k_12 = (1.0 / abs(wi_49.z));
+        vec3 _e29 = ms_fresnel_eval(c_11.fresnel, abs(wo_33.z));
+        return MsBsdfSample(wi_49, 1.0, (_e29 * k_12), 3u, 1.0);
     }
-    MsSample _e36 = ms_sample(c_10.mf, wo_25, u_24);
-    vec3 _e38 = ms_reflect(wo_25, _e36.wm);
-    bool _e39 = ms_same_hemisphere(wo_25, _e38);
+    MsSample _e36 = ms_sample(c_11.mf, wo_33, u_31);
+    vec3 _e38 = ms_reflect(wo_33, _e36.wm);
+    bool _e39 = ms_same_hemisphere(wo_33, _e38);
     if (!(!(_e39))) {
         bool _e45 = ms_on_horizon(_e38.z);
-        local_35 = _e45;
+        local_36 = _e45;
     } else {
-        local_35 = true;
+        local_36 = true;
     }
-    bool _e47 = local_35;
+    bool _e47 = local_36;
     if (_e47) {
         return none;
     }
-    float _e49 = ms_dot(wo_25, _e36.wm);
+    float _e49 = ms_dot(wo_33, _e36.wm);
     float co_1 = abs(_e49);
     float pdf = (_e36.pdf / (4.0 * co_1));
     bool _e55 = ms_usable(pdf);
     if (!(_e55)) {
         return none;
     }
-    vec3 _e58 = ms_fresnel_eval(c_10.fresnel, co_1);
-    float _e61 = ms_d(c_10.mf, _e36.wm);
+    vec3 _e58 = ms_fresnel_eval(c_11.fresnel, co_1);
+    float _e61 = ms_d(c_11.mf, _e36.wm);
     bool _e62 = ms_usable(_e61);
     if (!(_e62)) {
         return none;
     }
-    float _e66 = ms_reflected(c_10.mf, c_10.masking, wo_25, _e38, _e61);
+    float _e66 = ms_reflected(c_11.mf, c_11.masking, wo_33, _e38, _e61);
     vec3 _e67 = ms_weighted(_e58, _e66);
     if (!(all(lessThanEqual(_e67, vec3(3.4028235e38))))) {
         return none;
@@ -2805,82 +3203,82 @@ MsBsdfSample ms_conductor_sample(MsConductor c_10, vec3 wo_25, float uc, vec2 u_
     return MsBsdfSample(_e38, pdf, _e67, MS_SAMPLE_VALID, 1.0);
 }
 
-bool ms_dielectric_smooth(MsDielectric d_1) {
-    bool local_36 = false;
-    if (!((d_1.eta == 1.0))) {
-        bool _e8 = ms_effectively_smooth(d_1.mf);
-        local_36 = _e8;
-    } else {
-        local_36 = true;
-    }
-    bool _e10 = local_36;
-    return _e10;
-}
-
-float ms_dielectric_g2_(MsDielectric d_2, vec3 wo_26, vec3 wi_25) {
-    float _e5 = ms_masking_g2_(d_2.mf, d_2.masking, wo_26, wi_25);
-    return _e5;
-}
-
-vec4 ms_dielectric_half(MsDielectric d_3, vec3 wo_27, vec3 wi_26) {
+bool ms_dielectric_smooth(MsDielectric d_2) {
     bool local_37 = false;
-    vec3 wm_21 = vec3(0.0);
-    float etap_4 = 1.0;
-    bool local_38 = false;
-    vec4 none_1 = vec4(0.0);
-    float co_2 = wo_27.z;
-    float ci_1 = wi_26.z;
-    bool _e7 = ms_on_horizon(co_2);
-    if (!(_e7)) {
-        bool _e11 = ms_on_horizon(ci_1);
-        local_37 = _e11;
+    if (!((d_2.eta == 1.0))) {
+        bool _e8 = ms_effectively_smooth(d_2.mf);
+        local_37 = _e8;
     } else {
         local_37 = true;
     }
-    bool _e13 = local_37;
+    bool _e10 = local_37;
+    return _e10;
+}
+
+float ms_dielectric_g2_(MsDielectric d_3, vec3 wo_34, vec3 wi_33) {
+    float _e5 = ms_masking_g2_(d_3.mf, d_3.masking, wo_34, wi_33);
+    return _e5;
+}
+
+vec4 ms_dielectric_half(MsDielectric d_4, vec3 wo_35, vec3 wi_34) {
+    bool local_38 = false;
+    vec3 wm_33 = vec3(0.0);
+    float etap_4 = 1.0;
+    bool local_39 = false;
+    vec4 none_1 = vec4(0.0);
+    float co_2 = wo_35.z;
+    float ci_1 = wi_34.z;
+    bool _e7 = ms_on_horizon(co_2);
+    if (!(_e7)) {
+        bool _e11 = ms_on_horizon(ci_1);
+        local_38 = _e11;
+    } else {
+        local_38 = true;
+    }
+    bool _e13 = local_38;
     if (_e13) {
         return none_1;
     }
     if (((co_2 * ci_1) > 0.0)) {
-        vec3 _e20 = ms_half_vector_reflection(wo_27, wi_26);
-        wm_21 = _e20;
+        vec3 _e20 = ms_half_vector_reflection(wo_35, wi_34);
+        wm_33 = _e20;
     } else {
-        vec4 _e22 = ms_half_vector_refraction(wo_27, wi_26, d_3.eta);
-        wm_21 = _e22.xyz;
+        vec4 _e22 = ms_half_vector_refraction(wo_35, wi_34, d_4.eta);
+        wm_33 = _e22.xyz;
         etap_4 = _e22.w;
     }
-    vec3 _e25 = wm_21;
+    vec3 _e25 = wm_33;
     bool _e26 = ms_half_vector_ok(_e25);
     if (!(_e26)) {
         return none_1;
     }
-    vec3 _e28 = wm_21;
-    float _e29 = ms_dot(_e28, wi_26);
+    vec3 _e28 = wm_33;
+    float _e29 = ms_dot(_e28, wi_34);
     if (!(((_e29 * ci_1) < 0.0))) {
-        vec3 _e36 = wm_21;
-        float _e37 = ms_dot(_e36, wo_27);
-        local_38 = ((_e37 * co_2) < 0.0);
+        vec3 _e36 = wm_33;
+        float _e37 = ms_dot(_e36, wo_35);
+        local_39 = ((_e37 * co_2) < 0.0);
     } else {
-        local_38 = true;
+        local_39 = true;
     }
-    bool _e42 = local_38;
+    bool _e42 = local_39;
     if (_e42) {
         return none_1;
     }
-    vec3 _e43 = wm_21;
+    vec3 _e43 = wm_33;
     float _e44 = etap_4;
     return vec4(_e43, _e44);
 }
 
-float ms_dielectric_f_transmission(MsDielectric d_4, vec3 wo_28, vec3 wi_27, vec3 wm_22, float d_wm_1, float etap_5, float t_2) {
+float ms_dielectric_f_transmission(MsDielectric d_5, vec3 wo_36, vec3 wi_35, vec3 wm_34, float d_wm_1, float etap_5, float t_2) {
     float f_2 = 0.0;
-    float _e7 = ms_dot(wi_27, wm_22);
-    float _e8 = ms_dot(wo_28, wm_22);
-    float _e9 = ms_refraction_denominator(wo_28, wi_27, wm_22, etap_5);
-    float _e10 = ms_dielectric_g2_(d_4, wo_28, wi_27);
-    float geometric = ((_e10 / abs((wi_27.z * wo_28.z))) * (abs((_e7 * _e8)) / (_e9 * _e9)));
+    float _e7 = ms_dot(wi_35, wm_34);
+    float _e8 = ms_dot(wo_36, wm_34);
+    float _e9 = ms_refraction_denominator(wo_36, wi_35, wm_34, etap_5);
+    float _e10 = ms_dielectric_g2_(d_5, wo_36, wi_35);
+    float geometric = ((_e10 / abs((wi_35.z * wo_36.z))) * (abs((_e7 * _e8)) / (_e9 * _e9)));
     f_2 = ((d_wm_1 * t_2) * geometric);
-    if ((d_4.transport == MS_TRANSPORT_RADIANCE)) {
+    if ((d_5.transport == MS_TRANSPORT_RADIANCE)) {
         float _e27 = f_2;
         f_2 = (_e27 / (etap_5 * etap_5));
     }
@@ -2888,176 +3286,176 @@ float ms_dielectric_f_transmission(MsDielectric d_4, vec3 wo_28, vec3 wi_27, vec
     return _e30;
 }
 
-float ms_dielectric_eval(MsDielectric d_5, vec3 wo_29, vec3 wi_28) {
-    bool _e3 = ms_dielectric_smooth(d_5);
-    if (_e3) {
-        return 0.0;
-    }
-    vec4 _e5 = ms_dielectric_half(d_5, wo_29, wi_28);
-    if ((_e5.w == 0.0)) {
-        return 0.0;
-    }
-    vec3 wm_23 = _e5.xyz;
-    float _e11 = ms_dot(wo_29, wm_23);
-    float _e13 = ms_fresnel_dielectric(_e11, d_5.eta);
-    float _e15 = ms_d(d_5.mf, wm_23);
-    if (((wo_29.z * wi_28.z) > 0.0)) {
-        float _e23 = ms_reflected(d_5.mf, d_5.masking, wo_29, wi_28, _e15);
-        return (_e13 * _e23);
-    }
-    float _e28 = ms_dielectric_f_transmission(d_5, wo_29, wi_28, wm_23, _e15, _e5.w, (1.0 - _e13));
-    return _e28;
-}
-
-float ms_dielectric_pdf(MsDielectric d_6, vec3 wo_30, vec3 wi_29) {
+float ms_dielectric_eval(MsDielectric d_6, vec3 wo_37, vec3 wi_36) {
     bool _e3 = ms_dielectric_smooth(d_6);
     if (_e3) {
         return 0.0;
     }
-    vec4 _e5 = ms_dielectric_half(d_6, wo_30, wi_29);
+    vec4 _e5 = ms_dielectric_half(d_6, wo_37, wi_36);
     if ((_e5.w == 0.0)) {
         return 0.0;
     }
-    vec3 wm_24 = _e5.xyz;
-    float _e11 = ms_dot(wo_30, wm_24);
+    vec3 wm_35 = _e5.xyz;
+    float _e11 = ms_dot(wo_37, wm_35);
     float _e13 = ms_fresnel_dielectric(_e11, d_6.eta);
-    float _e15 = ms_pdf(d_6.mf, wo_30, wm_24);
-    if (((wo_30.z * wi_29.z) > 0.0)) {
-        float _e22 = ms_dot(wo_30, wm_24);
+    float _e15 = ms_d(d_6.mf, wm_35);
+    if (((wo_37.z * wi_36.z) > 0.0)) {
+        float _e23 = ms_reflected(d_6.mf, d_6.masking, wo_37, wi_36, _e15);
+        return (_e13 * _e23);
+    }
+    float _e28 = ms_dielectric_f_transmission(d_6, wo_37, wi_36, wm_35, _e15, _e5.w, (1.0 - _e13));
+    return _e28;
+}
+
+float ms_dielectric_pdf(MsDielectric d_7, vec3 wo_38, vec3 wi_37) {
+    bool _e3 = ms_dielectric_smooth(d_7);
+    if (_e3) {
+        return 0.0;
+    }
+    vec4 _e5 = ms_dielectric_half(d_7, wo_38, wi_37);
+    if ((_e5.w == 0.0)) {
+        return 0.0;
+    }
+    vec3 wm_36 = _e5.xyz;
+    float _e11 = ms_dot(wo_38, wm_36);
+    float _e13 = ms_fresnel_dielectric(_e11, d_7.eta);
+    float _e15 = ms_pdf(d_7.mf, wo_38, wm_36);
+    if (((wo_38.z * wi_37.z) > 0.0)) {
+        float _e22 = ms_dot(wo_38, wm_36);
         return ((_e15 * _e13) / (4.0 * abs(_e22)));
     }
-    float _e31 = ms_jacobian_refraction(wo_30, wi_29, wm_24, _e5.w);
+    float _e31 = ms_jacobian_refraction(wo_38, wi_37, wm_36, _e5.w);
     return ((_e15 * (1.0 - _e13)) * _e31);
 }
 
-MsBsdfSample ms_dielectric_sample_smooth(MsDielectric d_7, vec3 wo_31, float uc_1) {
+MsBsdfSample ms_dielectric_sample_smooth(MsDielectric d_8, vec3 wo_39, float uc_1) {
     float f_3 = 0.0;
-    float _e5 = ms_fresnel_dielectric(wo_31.z, d_7.eta);
+    float _e5 = ms_fresnel_dielectric(wo_39.z, d_8.eta);
     if ((uc_1 < _e5)) {
-        vec3 wi_42 = vec3(-(wo_31.x), -(wo_31.y), wo_31.z);
-        return MsBsdfSample(wi_42, _e5, vec3((_e5 / abs(wi_42.z))), 3u, 1.0);
+        vec3 wi_50 = vec3(-(wo_39.x), -(wo_39.y), wo_39.z);
+        return MsBsdfSample(wi_50, _e5, vec3((_e5 / abs(wi_50.z))), 3u, 1.0);
     }
     MsBsdfSample none_2 = MsBsdfSample(vec3(0.0), 0.0, vec3(0.0), 0u, 1.0);
-    vec4 _e33 = ms_refract(wo_31, vec3(0.0, 0.0, 1.0), d_7.eta);
+    vec4 _e33 = ms_refract(wo_39, vec3(0.0, 0.0, 1.0), d_8.eta);
     if ((_e33.w == 0.0)) {
         return none_2;
     }
-    vec3 wi_43 = _e33.xyz;
-    bool _e39 = ms_on_horizon(wi_43.z);
+    vec3 wi_51 = _e33.xyz;
+    bool _e39 = ms_on_horizon(wi_51.z);
     if (_e39) {
         return none_2;
     }
     float t_13 = (1.0 - _e5);
-    f_3 = (t_13 / abs(wi_43.z));
-    if ((d_7.transport == MS_TRANSPORT_RADIANCE)) {
+    f_3 = (t_13 / abs(wi_51.z));
+    if ((d_8.transport == MS_TRANSPORT_RADIANCE)) {
         float _e49 = f_3;
         f_3 = (_e49 / (_e33.w * _e33.w));
     }
     float _e54 = f_3;
-    return MsBsdfSample(wi_43, t_13, vec3(_e54), 7u, _e33.w);
+    return MsBsdfSample(wi_51, t_13, vec3(_e54), 7u, _e33.w);
 }
 
-MsBsdfSample ms_dielectric_sample(MsDielectric d_8, vec3 wo_32, float uc_2, vec2 u_25) {
-    bool local_39 = false;
+MsBsdfSample ms_dielectric_sample(MsDielectric d_9, vec3 wo_40, float uc_2, vec2 u_32) {
     bool local_40 = false;
     bool local_41 = false;
     bool local_42 = false;
+    bool local_43 = false;
     MsBsdfSample none_3 = MsBsdfSample(vec3(0.0), 0.0, vec3(0.0), 0u, 1.0);
-    bool _e13 = ms_on_horizon(wo_32.z);
+    bool _e13 = ms_on_horizon(wo_40.z);
     if (_e13) {
         return none_3;
     }
-    bool _e14 = ms_dielectric_smooth(d_8);
+    bool _e14 = ms_dielectric_smooth(d_9);
     if (_e14) {
-        MsBsdfSample _e15 = ms_dielectric_sample_smooth(d_8, wo_32, uc_2);
+        MsBsdfSample _e15 = ms_dielectric_sample_smooth(d_9, wo_40, uc_2);
         return _e15;
     }
-    MsSample _e17 = ms_sample(d_8.mf, wo_32, u_25);
-    vec3 wm_25 = _e17.wm;
-    float _e19 = ms_dot(wo_32, wm_25);
-    float _e21 = ms_fresnel_dielectric(_e19, d_8.eta);
+    MsSample _e17 = ms_sample(d_9.mf, wo_40, u_32);
+    vec3 wm_37 = _e17.wm;
+    float _e19 = ms_dot(wo_40, wm_37);
+    float _e21 = ms_fresnel_dielectric(_e19, d_9.eta);
     if ((uc_2 < _e21)) {
-        vec3 _e23 = ms_reflect(wo_32, wm_25);
-        bool _e24 = ms_same_hemisphere(wo_32, _e23);
+        vec3 _e23 = ms_reflect(wo_40, wm_37);
+        bool _e24 = ms_same_hemisphere(wo_40, _e23);
         if (!(!(_e24))) {
             bool _e30 = ms_on_horizon(_e23.z);
-            local_39 = _e30;
+            local_40 = _e30;
         } else {
-            local_39 = true;
+            local_40 = true;
         }
-        bool _e32 = local_39;
+        bool _e32 = local_40;
         if (_e32) {
             return none_3;
         }
-        float _e34 = ms_d(d_8.mf, wm_25);
+        float _e34 = ms_d(d_9.mf, wm_37);
         bool _e35 = ms_usable(_e34);
         if (!(_e35)) {
             return none_3;
         }
-        float _e39 = ms_reflected(d_8.mf, d_8.masking, wo_32, _e23, _e34);
+        float _e39 = ms_reflected(d_9.mf, d_9.masking, wo_40, _e23, _e34);
         float f_5 = (_e21 * _e39);
         float pdf_1 = ((_e17.pdf * _e21) / (4.0 * abs(_e19)));
         bool _e47 = ms_usable(pdf_1);
         if (!(!(_e47))) {
-            local_40 = !((f_5 <= 3.4028235e38));
+            local_41 = !((f_5 <= 3.4028235e38));
         } else {
-            local_40 = true;
+            local_41 = true;
         }
-        bool _e56 = local_40;
+        bool _e56 = local_41;
         if (_e56) {
             return none_3;
         }
         return MsBsdfSample(_e23, pdf_1, vec3(f_5), MS_SAMPLE_VALID, 1.0);
     }
-    vec4 _e62 = ms_refract(wo_32, wm_25, d_8.eta);
+    vec4 _e62 = ms_refract(wo_40, wm_37, d_9.eta);
     if ((_e62.w == 0.0)) {
         return none_3;
     }
-    vec3 wi_44 = _e62.xyz;
+    vec3 wi_52 = _e62.xyz;
     float etap_6 = _e62.w;
-    bool _e68 = ms_same_hemisphere(wo_32, wi_44);
+    bool _e68 = ms_same_hemisphere(wo_40, wi_52);
     if (!(_e68)) {
-        bool _e73 = ms_on_horizon(wi_44.z);
-        local_41 = _e73;
+        bool _e73 = ms_on_horizon(wi_52.z);
+        local_42 = _e73;
     } else {
-        local_41 = true;
+        local_42 = true;
     }
-    bool _e75 = local_41;
+    bool _e75 = local_42;
     if (_e75) {
         return none_3;
     }
     float t_14 = (1.0 - _e21);
-    float _e80 = ms_jacobian_refraction(wo_32, wi_44, wm_25, etap_6);
+    float _e80 = ms_jacobian_refraction(wo_40, wi_52, wm_37, etap_6);
     float pdf_2 = ((_e17.pdf * t_14) * _e80);
-    float _e83 = ms_d(d_8.mf, wm_25);
+    float _e83 = ms_d(d_9.mf, wm_37);
     bool _e84 = ms_usable(_e83);
     if (!(_e84)) {
         return none_3;
     }
-    float _e86 = ms_dielectric_f_transmission(d_8, wo_32, wi_44, wm_25, _e83, etap_6, t_14);
+    float _e86 = ms_dielectric_f_transmission(d_9, wo_40, wi_52, wm_37, _e83, etap_6, t_14);
     bool _e87 = ms_usable(pdf_2);
     if (!(!(_e87))) {
-        local_42 = !((_e86 <= 3.4028235e38));
+        local_43 = !((_e86 <= 3.4028235e38));
     } else {
-        local_42 = true;
+        local_43 = true;
     }
-    bool _e96 = local_42;
+    bool _e96 = local_43;
     if (_e96) {
         return none_3;
     }
-    return MsBsdfSample(wi_44, pdf_2, vec3(_e86), 5u, etap_6);
+    return MsBsdfSample(wi_52, pdf_2, vec3(_e86), 5u, etap_6);
 }
 
 MsLutTap ms_lut_tap(float x_12, uint n_8) {
     float t_15 = clamp(((x_12 * float(n_8)) - 0.5), 0.0, float((n_8 - 1u)));
-    uint i_10 = min(uint(floor(t_15)), (n_8 - 2u));
-    return MsLutTap(i_10, (t_15 - float(i_10)));
+    uint i_12 = min(uint(floor(t_15)), (n_8 - 2u));
+    return MsLutTap(i_12, (t_15 - float(i_12)));
 }
 
 MsLutTap ms_lut_tap_edges(float x_13, uint n_9) {
     float t_16 = clamp((x_13 * float((n_9 - 1u))), 0.0, float((n_9 - 1u)));
-    uint i_11 = min(uint(floor(t_16)), (n_9 - 2u));
-    return MsLutTap(i_11, (t_16 - float(i_11)));
+    uint i_13 = min(uint(floor(t_16)), (n_9 - 2u));
+    return MsLutTap(i_13, (t_16 - float(i_13)));
 }
 
 uint ms_lut_index(uint ir, uint im, uint n_mu) {
@@ -3074,8 +3472,8 @@ float ms_lut_bilerp(MsLutTap r, MsLutTap m_4, float v00_, float v10_, float v01_
     return (((((gr * gm) * v00_) + ((r.f * gm) * v10_)) + ((gr * m_4.f) * v01_)) + ((r.f * m_4.f) * v11_));
 }
 
-float ms_lut_roughness_coord(vec2 alpha_57, float alpha_max) {
-    return sqrt((sqrt((alpha_57.x * alpha_57.y)) / alpha_max));
+float ms_lut_roughness_coord(vec2 alpha_92, float alpha_max) {
+    return sqrt((sqrt((alpha_92.x * alpha_92.y)) / alpha_max));
 }
 
 vec3 ms_kulla_conty_f_ms(vec3 f_avg, float e_avg) {
@@ -3090,9 +3488,9 @@ float ms_kulla_conty_lobe(float e_o, float e_i, float e_avg_1) {
     return ((max((1.0 - e_o), 0.0) * max((1.0 - e_i), 0.0)) / den_3);
 }
 
-vec3 ms_conductor_eval_kulla_conty(MsConductor c_11, vec3 wo_33, vec3 wi_30, float e_o_1, float e_i_1, float e_avg_2, vec3 f_ms) {
-    vec3 _e7 = ms_conductor_eval(c_11, wo_33, wi_30);
-    if (!(((wo_33.z * wi_30.z) > 0.0))) {
+vec3 ms_conductor_eval_kulla_conty(MsConductor c_12, vec3 wo_41, vec3 wi_38, float e_o_1, float e_i_1, float e_avg_2, vec3 f_ms) {
+    vec3 _e7 = ms_conductor_eval(c_12, wo_41, wi_38);
+    if (!(((wo_41.z * wi_38.z) > 0.0))) {
         return _e7;
     }
     float _e14 = ms_kulla_conty_lobe(e_o_1, e_i_1, e_avg_2);
@@ -3103,8 +3501,8 @@ vec3 ms_turquin_scale(float e_o_2, vec3 f0_2) {
     return (vec3(1.0) + ((f0_2 * (1.0 - e_o_2)) / vec3(e_o_2)));
 }
 
-vec3 ms_conductor_eval_turquin(MsConductor c_12, vec3 wo_34, vec3 wi_31, float e_o_3, vec3 f0_3) {
-    vec3 _e5 = ms_conductor_eval(c_12, wo_34, wi_31);
+vec3 ms_conductor_eval_turquin(MsConductor c_13, vec3 wo_42, vec3 wi_39, float e_o_3, vec3 f0_3) {
+    vec3 _e5 = ms_conductor_eval(c_13, wo_42, wi_39);
     vec3 _e6 = ms_turquin_scale(e_o_3, f0_3);
     return (_e5 * _e6);
 }
@@ -3113,82 +3511,82 @@ float ms_kulla_conty_p_ms(float e_o_4) {
     return clamp((1.0 - e_o_4), 0.0, 1.0);
 }
 
-float ms_cosine_pdf_same_side(vec3 wo_35, vec3 wi_32) {
-    if (!(((wo_35.z * wi_32.z) > 0.0))) {
+float ms_cosine_pdf_same_side(vec3 wo_43, vec3 wi_40) {
+    if (!(((wo_43.z * wi_40.z) > 0.0))) {
         return 0.0;
     }
-    return (abs(wi_32.z) / MS_PI);
+    return (abs(wi_40.z) / MS_PI);
 }
 
-float ms_conductor_pdf_kulla_conty(MsConductor c_13, vec3 wo_36, vec3 wi_33, float e_o_5) {
+float ms_conductor_pdf_kulla_conty(MsConductor c_14, vec3 wo_44, vec3 wi_41, float e_o_5) {
     float _e4 = ms_kulla_conty_p_ms(e_o_5);
-    float _e7 = ms_conductor_pdf(c_13, wo_36, wi_33);
-    float _e9 = ms_cosine_pdf_same_side(wo_36, wi_33);
+    float _e7 = ms_conductor_pdf(c_14, wo_44, wi_41);
+    float _e9 = ms_cosine_pdf_same_side(wo_44, wi_41);
     return (((1.0 - _e4) * _e7) + (_e4 * _e9));
 }
 
-vec3 ms_cosine_hemisphere(vec2 u_26) {
-    float r_22 = sqrt(u_26.x);
-    vec2 _e4 = ms_cos_sin_turn(u_26.y);
-    return vec3((r_22 * _e4.x), (r_22 * _e4.y), sqrt(max((1.0 - u_26.x), 0.0)));
+vec3 ms_cosine_hemisphere(vec2 u_33) {
+    float r_25 = sqrt(u_33.x);
+    vec2 _e4 = ms_cos_sin_turn(u_33.y);
+    return vec3((r_25 * _e4.x), (r_25 * _e4.y), sqrt(max((1.0 - u_33.x), 0.0)));
 }
 
-MsBsdfSample ms_conductor_sample_kulla_conty(MsConductor c_14, vec3 wo_37, float uc_3, vec2 u_27, float e_o_6) {
-    vec3 wi_34 = vec3(0.0);
-    bool local_43 = false;
+MsBsdfSample ms_conductor_sample_kulla_conty(MsConductor c_15, vec3 wo_45, float uc_3, vec2 u_34, float e_o_6) {
+    vec3 wi_42 = vec3(0.0);
+    bool local_44 = false;
     MsBsdfSample none_4 = MsBsdfSample(vec3(0.0), 0.0, vec3(0.0), 0u, 1.0);
-    bool _e14 = ms_on_horizon(wo_37.z);
+    bool _e14 = ms_on_horizon(wo_45.z);
     if (_e14) {
         return none_4;
     }
     float _e15 = ms_kulla_conty_p_ms(e_o_6);
     if ((uc_3 < _e15)) {
-        vec3 _e18 = ms_cosine_hemisphere(u_27);
-        wi_34 = _e18;
-        if ((wo_37.z < 0.0)) {
-            float _e24 = wi_34.z;
-            wi_34.z = -(_e24);
+        vec3 _e18 = ms_cosine_hemisphere(u_34);
+        wi_42 = _e18;
+        if ((wo_45.z < 0.0)) {
+            float _e24 = wi_42.z;
+            wi_42.z = -(_e24);
         }
     } else {
-        MsBsdfSample _e30 = ms_conductor_sample(c_14, wo_37, ((uc_3 - _e15) / (1.0 - _e15)), u_27);
+        MsBsdfSample _e30 = ms_conductor_sample(c_15, wo_45, ((uc_3 - _e15) / (1.0 - _e15)), u_34);
         if (!(((_e30.flags & MS_SAMPLE_VALID) == 0u))) {
-            local_43 = ((_e30.flags & MS_SAMPLE_SPECULAR) != 0u);
+            local_44 = ((_e30.flags & MS_SAMPLE_SPECULAR) != 0u);
         } else {
-            local_43 = true;
+            local_44 = true;
         }
-        bool _e45 = local_43;
+        bool _e45 = local_44;
         if (_e45) {
             return _e30;
         }
-        wi_34 = _e30.wi;
+        wi_42 = _e30.wi;
     }
-    vec3 _e47 = wi_34;
-    float _e48 = ms_conductor_pdf_kulla_conty(c_14, wo_37, _e47, e_o_6);
+    vec3 _e47 = wi_42;
+    float _e48 = ms_conductor_pdf_kulla_conty(c_15, wo_45, _e47, e_o_6);
     bool _e49 = ms_usable(_e48);
     if (!(_e49)) {
         return none_4;
     }
-    vec3 _e51 = wi_34;
-    vec3 _e52 = wi_34;
-    vec3 _e53 = ms_conductor_eval(c_14, wo_37, _e52);
+    vec3 _e51 = wi_42;
+    vec3 _e52 = wi_42;
+    vec3 _e53 = ms_conductor_eval(c_15, wo_45, _e52);
     return MsBsdfSample(_e51, _e48, _e53, MS_SAMPLE_VALID, 1.0);
 }
 
-MsBsdfSample ms_kulla_conty_sample_f(MsBsdfSample s_6, vec3 wo_38, float e_o_7, float e_i_2, float e_avg_3, vec3 f_ms_1) {
-    bool local_44 = false;
+MsBsdfSample ms_kulla_conty_sample_f(MsBsdfSample s_6, vec3 wo_46, float e_o_7, float e_i_2, float e_avg_3, vec3 f_ms_1) {
     bool local_45 = false;
+    bool local_46 = false;
     if (!(((s_6.flags & MS_SAMPLE_VALID) == 0u))) {
-        local_44 = ((s_6.flags & MS_SAMPLE_SPECULAR) != 0u);
-    } else {
-        local_44 = true;
-    }
-    bool _e20 = local_44;
-    if (!(_e20)) {
-        local_45 = !(((wo_38.z * s_6.wi.z) > 0.0));
+        local_45 = ((s_6.flags & MS_SAMPLE_SPECULAR) != 0u);
     } else {
         local_45 = true;
     }
-    bool _e32 = local_45;
+    bool _e20 = local_45;
+    if (!(_e20)) {
+        local_46 = !(((wo_46.z * s_6.wi.z) > 0.0));
+    } else {
+        local_46 = true;
+    }
+    bool _e32 = local_46;
     if (_e32) {
         return s_6;
     }
@@ -3196,15 +3594,15 @@ MsBsdfSample ms_kulla_conty_sample_f(MsBsdfSample s_6, vec3 wo_38, float e_o_7, 
     return MsBsdfSample(s_6.wi, s_6.pdf, (s_6.f + (_e36 * f_ms_1)), s_6.flags, s_6.eta);
 }
 
-MsBsdfSample ms_conductor_sample_turquin(MsConductor c_15, vec3 wo_39, float uc_4, vec2 u_28, float e_o_8, vec3 f0_4) {
-    bool local_46 = false;
-    MsBsdfSample _e6 = ms_conductor_sample(c_15, wo_39, uc_4, u_28);
+MsBsdfSample ms_conductor_sample_turquin(MsConductor c_16, vec3 wo_47, float uc_4, vec2 u_35, float e_o_8, vec3 f0_4) {
+    bool local_47 = false;
+    MsBsdfSample _e6 = ms_conductor_sample(c_16, wo_47, uc_4, u_35);
     if (!(((_e6.flags & MS_SAMPLE_VALID) == 0u))) {
-        local_46 = ((_e6.flags & MS_SAMPLE_SPECULAR) != 0u);
+        local_47 = ((_e6.flags & MS_SAMPLE_SPECULAR) != 0u);
     } else {
-        local_46 = true;
+        local_47 = true;
     }
-    bool _e21 = local_46;
+    bool _e21 = local_47;
     if (_e21) {
         return _e6;
     }
@@ -3229,7 +3627,7 @@ float ms_lut_trilerp(MsLutTap e, MsLutTap r_1, MsLutTap m_5, vec4 lo_2, vec4 hi_
     uint b_6 = 0u;
     vec2 we = vec2((1.0 - e.f), e.f);
     vec2 wr = vec2((1.0 - r_1.f), r_1.f);
-    vec2 wm_26 = vec2((1.0 - m_5.f), m_5.f);
+    vec2 wm_38 = vec2((1.0 - m_5.f), m_5.f);
     bool loop_init_8 = true;
     while(true) {
         if (!loop_init_8) {
@@ -3251,7 +3649,7 @@ float ms_lut_trilerp(MsLutTap e, MsLutTap r_1, MsLutTap m_5, vec4 lo_2, vec4 hi_
             uint _e40 = b_6;
             uint _e44 = b_6;
             uint _e51 = b_6;
-            s_7 = (_e39 + (((we[(_e40 & 1u)] * wr[((_e44 >> 1u) & 1u)]) * wm_26[(_e51 >> 2u)]) * v_12));
+            s_7 = (_e39 + (((we[(_e40 & 1u)] * wr[((_e44 >> 1u) & 1u)]) * wm_38[(_e51 >> 2u)]) * v_12));
         }
     }
     float _e61 = s_7;
@@ -3288,56 +3686,56 @@ float ms_lut_bilerp_eta(MsLutTap e_1, MsLutTap r_2, vec4 v_10) {
 }
 
 vec2 ms_dielectric_kulla_conty_k(float eta_5, float f_avg_1, vec2 e_avg_4) {
-    vec2 k_8 = vec2(0.0);
+    vec2 k_9 = vec2(0.0);
     float k_out = (1.0 - f_avg_1);
-    k_8 = vec2(k_out, ((k_out * (1.0 - e_avg_4.x)) / ((eta_5 * eta_5) * (1.0 - e_avg_4.y))));
-    float _e18 = k_8.y;
+    k_9 = vec2(k_out, ((k_out * (1.0 - e_avg_4.x)) / ((eta_5 * eta_5) * (1.0 - e_avg_4.y))));
+    float _e18 = k_9.y;
     if (!((_e18 <= 1.0))) {
-        vec2 _e22 = k_8;
-        float _e24 = k_8.y;
-        float _e28 = k_8.y;
-        k_8 = (_e22 * ((_e28 > 1.0) ? (1.0 / _e24) : 0.0));
+        vec2 _e22 = k_9;
+        float _e24 = k_9.y;
+        float _e28 = k_9.y;
+        k_9 = (_e22 * ((_e28 > 1.0) ? (1.0 / _e24) : 0.0));
     }
-    vec2 _e34 = k_8;
+    vec2 _e34 = k_9;
     return _e34;
 }
 
-float ms_dielectric_kulla_conty_lobe(MsDielectric d_9, vec3 wo_40, vec3 wi_35, float e_o_9, float e_i_3, float e_avg_i, float k_o) {
-    bool local_47 = false;
+float ms_dielectric_kulla_conty_lobe(MsDielectric d_10, vec3 wo_48, vec3 wi_43, float e_o_9, float e_i_3, float e_avg_i, float k_o) {
     bool local_48 = false;
-    float f_4 = 0.0;
     bool local_49 = false;
-    if ((abs(wo_40.z) > 0.0)) {
-        local_47 = (abs(wi_35.z) > 0.0);
+    float f_4 = 0.0;
+    bool local_50 = false;
+    if ((abs(wo_48.z) > 0.0)) {
+        local_48 = (abs(wi_43.z) > 0.0);
     } else {
-        local_47 = false;
+        local_48 = false;
     }
-    bool _e18 = local_47;
+    bool _e18 = local_48;
     if (!(_e18)) {
         return 0.0;
     }
     float lost = (1.0 - e_o_9);
-    bool crossed = ((wi_35.z < 0.0) != (wo_40.z < 0.0));
+    bool crossed = ((wi_43.z < 0.0) != (wo_48.z < 0.0));
     float share = (crossed ? k_o : (1.0 - k_o));
     float den_4 = (MS_PI * (1.0 - e_avg_i));
     if ((den_4 > 0.0)) {
-        local_48 = (lost > 0.0);
+        local_49 = (lost > 0.0);
     } else {
-        local_48 = false;
+        local_49 = false;
     }
-    bool _e44 = local_48;
+    bool _e44 = local_49;
     if (!(_e44)) {
         return 0.0;
     }
     f_4 = (((share * lost) * max((1.0 - e_i_3), 0.0)) / den_4);
     if (crossed) {
-        local_49 = (d_9.transport == MS_TRANSPORT_RADIANCE);
+        local_50 = (d_10.transport == MS_TRANSPORT_RADIANCE);
     } else {
-        local_49 = false;
+        local_50 = false;
     }
-    bool _e61 = local_49;
+    bool _e61 = local_50;
     if (_e61) {
-        float etap_7 = ((wo_40.z > 0.0) ? d_9.eta : (1.0 / d_9.eta));
+        float etap_7 = ((wo_48.z > 0.0) ? d_10.eta : (1.0 / d_10.eta));
         float _e70 = f_4;
         f_4 = (_e70 / (etap_7 * etap_7));
     }
@@ -3345,142 +3743,142 @@ float ms_dielectric_kulla_conty_lobe(MsDielectric d_9, vec3 wo_40, vec3 wi_35, f
     return _e73;
 }
 
-float ms_dielectric_eval_kulla_conty(MsDielectric d_10, vec3 wo_41, vec3 wi_36, float e_o_10, float e_i_4, float e_avg_i_1, float k_o_1) {
-    float _e7 = ms_dielectric_eval(d_10, wo_41, wi_36);
-    bool _e8 = ms_dielectric_smooth(d_10);
+float ms_dielectric_eval_kulla_conty(MsDielectric d_11, vec3 wo_49, vec3 wi_44, float e_o_10, float e_i_4, float e_avg_i_1, float k_o_1) {
+    float _e7 = ms_dielectric_eval(d_11, wo_49, wi_44);
+    bool _e8 = ms_dielectric_smooth(d_11);
     if (_e8) {
         return _e7;
     }
-    float _e9 = ms_dielectric_kulla_conty_lobe(d_10, wo_41, wi_36, e_o_10, e_i_4, e_avg_i_1, k_o_1);
+    float _e9 = ms_dielectric_kulla_conty_lobe(d_11, wo_49, wi_44, e_o_10, e_i_4, e_avg_i_1, k_o_1);
     return (_e7 + _e9);
 }
 
-float ms_dielectric_eval_turquin(MsDielectric d_11, vec3 wo_42, vec3 wi_37, float e_o_11) {
-    bool local_50 = false;
-    float _e4 = ms_dielectric_eval(d_11, wo_42, wi_37);
-    bool _e5 = ms_dielectric_smooth(d_11);
+float ms_dielectric_eval_turquin(MsDielectric d_12, vec3 wo_50, vec3 wi_45, float e_o_11) {
+    bool local_51 = false;
+    float _e4 = ms_dielectric_eval(d_12, wo_50, wi_45);
+    bool _e5 = ms_dielectric_smooth(d_12);
     if (!(_e5)) {
-        local_50 = !((e_o_11 > 0.0));
+        local_51 = !((e_o_11 > 0.0));
     } else {
-        local_50 = true;
+        local_51 = true;
     }
-    bool _e13 = local_50;
+    bool _e13 = local_51;
     if (_e13) {
         return _e4;
     }
     return (_e4 / e_o_11);
 }
 
-float ms_dielectric_kulla_conty_lobe_pdf(vec3 wo_43, vec3 wi_38, float k_o_2) {
-    bool crossed_1 = ((wi_38.z < 0.0) != (wo_43.z < 0.0));
+float ms_dielectric_kulla_conty_lobe_pdf(vec3 wo_51, vec3 wi_46, float k_o_2) {
+    bool crossed_1 = ((wi_46.z < 0.0) != (wo_51.z < 0.0));
     float side = (crossed_1 ? k_o_2 : (1.0 - k_o_2));
-    return ((side * abs(wi_38.z)) / MS_PI);
+    return ((side * abs(wi_46.z)) / MS_PI);
 }
 
-float ms_dielectric_pdf_kulla_conty(MsDielectric d_12, vec3 wo_44, vec3 wi_39, float e_o_12, float k_o_3) {
-    float _e5 = ms_dielectric_pdf(d_12, wo_44, wi_39);
-    bool _e6 = ms_dielectric_smooth(d_12);
+float ms_dielectric_pdf_kulla_conty(MsDielectric d_13, vec3 wo_52, vec3 wi_47, float e_o_12, float k_o_3) {
+    float _e5 = ms_dielectric_pdf(d_13, wo_52, wi_47);
+    bool _e6 = ms_dielectric_smooth(d_13);
     if (_e6) {
         return _e5;
     }
     float _e7 = ms_kulla_conty_p_ms(e_o_12);
-    float _e11 = ms_dielectric_kulla_conty_lobe_pdf(wo_44, wi_39, k_o_3);
+    float _e11 = ms_dielectric_kulla_conty_lobe_pdf(wo_52, wi_47, k_o_3);
     return (((1.0 - _e7) * _e5) + (_e7 * _e11));
 }
 
-MsBsdfSample ms_dielectric_sample_kulla_conty(MsDielectric d_13, vec3 wo_45, float uc_5, vec2 u_29, float e_o_13, float k_o_4) {
-    vec3 wi_40 = vec3(0.0);
-    bool local_51 = false;
+MsBsdfSample ms_dielectric_sample_kulla_conty(MsDielectric d_14, vec3 wo_53, float uc_5, vec2 u_36, float e_o_13, float k_o_4) {
+    vec3 wi_48 = vec3(0.0);
     bool local_52 = false;
+    bool local_53 = false;
     MsBsdfSample none_5 = MsBsdfSample(vec3(0.0), 0.0, vec3(0.0), 0u, 1.0);
-    bool _e15 = ms_on_horizon(wo_45.z);
+    bool _e15 = ms_on_horizon(wo_53.z);
     if (_e15) {
         return none_5;
     }
-    bool _e16 = ms_dielectric_smooth(d_13);
+    bool _e16 = ms_dielectric_smooth(d_14);
     if (_e16) {
-        MsBsdfSample _e17 = ms_dielectric_sample(d_13, wo_45, uc_5, u_29);
+        MsBsdfSample _e17 = ms_dielectric_sample(d_14, wo_53, uc_5, u_36);
         return _e17;
     }
     float _e18 = ms_kulla_conty_p_ms(e_o_13);
     if ((uc_5 < _e18)) {
         bool crossed_2 = ((uc_5 / _e18) < k_o_4);
-        vec3 _e23 = ms_cosine_hemisphere(u_29);
-        wi_40 = _e23;
-        if (((wo_45.z > 0.0) == crossed_2)) {
-            float _e30 = wi_40.z;
-            wi_40.z = -(_e30);
+        vec3 _e23 = ms_cosine_hemisphere(u_36);
+        wi_48 = _e23;
+        if (((wo_53.z > 0.0) == crossed_2)) {
+            float _e30 = wi_48.z;
+            wi_48.z = -(_e30);
         }
     } else {
-        MsBsdfSample _e38 = ms_dielectric_sample(d_13, wo_45, min(((uc_5 - _e18) / (1.0 - _e18)), 0.99999994), u_29);
+        MsBsdfSample _e38 = ms_dielectric_sample(d_14, wo_53, min(((uc_5 - _e18) / (1.0 - _e18)), 0.99999994), u_36);
         if (!(((_e38.flags & MS_SAMPLE_VALID) == 0u))) {
-            local_51 = ((_e38.flags & MS_SAMPLE_SPECULAR) != 0u);
+            local_52 = ((_e38.flags & MS_SAMPLE_SPECULAR) != 0u);
         } else {
-            local_51 = true;
+            local_52 = true;
         }
-        bool _e53 = local_51;
+        bool _e53 = local_52;
         if (_e53) {
             return _e38;
         }
-        wi_40 = _e38.wi;
+        wi_48 = _e38.wi;
     }
-    vec3 _e55 = wi_40;
-    float _e56 = ms_dielectric_pdf_kulla_conty(d_13, wo_45, _e55, e_o_13, k_o_4);
+    vec3 _e55 = wi_48;
+    float _e56 = ms_dielectric_pdf_kulla_conty(d_14, wo_53, _e55, e_o_13, k_o_4);
     bool _e57 = ms_usable(_e56);
     if (!(!(_e57))) {
-        float _e63 = wi_40.z;
-        local_52 = (_e63 == 0.0);
-    } else {
-        local_52 = true;
-    }
-    bool _e67 = local_52;
-    if (_e67) {
-        return none_5;
-    }
-    vec3 _e68 = wi_40;
-    float _e69 = ms_dielectric_eval(d_13, wo_45, _e68);
-    vec3 f_7 = vec3(_e69);
-    float _e72 = wi_40.z;
-    if (((_e72 < 0.0) != (wo_45.z < 0.0))) {
-        float etap_8 = ((wo_45.z > 0.0) ? d_13.eta : (1.0 / d_13.eta));
-        vec3 _e87 = wi_40;
-        return MsBsdfSample(_e87, _e56, f_7, 5u, etap_8);
-    }
-    vec3 _e90 = wi_40;
-    return MsBsdfSample(_e90, _e56, f_7, MS_SAMPLE_VALID, 1.0);
-}
-
-MsBsdfSample ms_dielectric_kulla_conty_sample_f(MsBsdfSample s_9, MsDielectric d_14, vec3 wo_46, float e_o_14, float e_i_5, float e_avg_i_2, float k_o_5) {
-    bool local_53 = false;
-    if (!(((s_9.flags & MS_SAMPLE_VALID) == 0u))) {
-        local_53 = ((s_9.flags & MS_SAMPLE_SPECULAR) != 0u);
+        float _e63 = wi_48.z;
+        local_53 = (_e63 == 0.0);
     } else {
         local_53 = true;
     }
-    bool _e21 = local_53;
-    if (_e21) {
-        return s_9;
+    bool _e67 = local_53;
+    if (_e67) {
+        return none_5;
     }
-    float _e23 = ms_dielectric_kulla_conty_lobe(d_14, wo_46, s_9.wi, e_o_14, e_i_5, e_avg_i_2, k_o_5);
-    return MsBsdfSample(s_9.wi, s_9.pdf, (s_9.f + vec3(_e23)), s_9.flags, s_9.eta);
+    vec3 _e68 = wi_48;
+    float _e69 = ms_dielectric_eval(d_14, wo_53, _e68);
+    vec3 f_7 = vec3(_e69);
+    float _e72 = wi_48.z;
+    if (((_e72 < 0.0) != (wo_53.z < 0.0))) {
+        float etap_8 = ((wo_53.z > 0.0) ? d_14.eta : (1.0 / d_14.eta));
+        vec3 _e87 = wi_48;
+        return MsBsdfSample(_e87, _e56, f_7, 5u, etap_8);
+    }
+    vec3 _e90 = wi_48;
+    return MsBsdfSample(_e90, _e56, f_7, MS_SAMPLE_VALID, 1.0);
 }
 
-MsBsdfSample ms_dielectric_sample_turquin(MsDielectric d_15, vec3 wo_47, float uc_6, vec2 u_30, float e_o_15) {
+MsBsdfSample ms_dielectric_kulla_conty_sample_f(MsBsdfSample s_9, MsDielectric d_15, vec3 wo_54, float e_o_14, float e_i_5, float e_avg_i_2, float k_o_5) {
     bool local_54 = false;
-    bool local_55 = false;
-    MsBsdfSample _e5 = ms_dielectric_sample(d_15, wo_47, uc_6, u_30);
-    if (!(((_e5.flags & MS_SAMPLE_VALID) == 0u))) {
-        local_54 = ((_e5.flags & MS_SAMPLE_SPECULAR) != 0u);
+    if (!(((s_9.flags & MS_SAMPLE_VALID) == 0u))) {
+        local_54 = ((s_9.flags & MS_SAMPLE_SPECULAR) != 0u);
     } else {
         local_54 = true;
     }
-    bool _e20 = local_54;
-    if (!(_e20)) {
-        local_55 = !((e_o_15 > 0.0));
+    bool _e21 = local_54;
+    if (_e21) {
+        return s_9;
+    }
+    float _e23 = ms_dielectric_kulla_conty_lobe(d_15, wo_54, s_9.wi, e_o_14, e_i_5, e_avg_i_2, k_o_5);
+    return MsBsdfSample(s_9.wi, s_9.pdf, (s_9.f + vec3(_e23)), s_9.flags, s_9.eta);
+}
+
+MsBsdfSample ms_dielectric_sample_turquin(MsDielectric d_16, vec3 wo_55, float uc_6, vec2 u_37, float e_o_15) {
+    bool local_55 = false;
+    bool local_56 = false;
+    MsBsdfSample _e5 = ms_dielectric_sample(d_16, wo_55, uc_6, u_37);
+    if (!(((_e5.flags & MS_SAMPLE_VALID) == 0u))) {
+        local_55 = ((_e5.flags & MS_SAMPLE_SPECULAR) != 0u);
     } else {
         local_55 = true;
     }
-    bool _e28 = local_55;
+    bool _e20 = local_55;
+    if (!(_e20)) {
+        local_56 = !((e_o_15 > 0.0));
+    } else {
+        local_56 = true;
+    }
+    bool _e28 = local_56;
     if (_e28) {
         return _e5;
     }
@@ -3492,12 +3890,12 @@ MsBsdfSample ms_dielectric_sample_turquin(MsDielectric d_15, vec3 wo_47, float u
 }
 
 uint ms_k_index(uvec3 id_13, uvec3 groups_13) {
-    uint i_12 = (id_13.x + ((id_13.y * groups_13.x) * 64u));
+    uint i_14 = (id_13.x + ((id_13.y * groups_13.x) * 64u));
     uint n_13 = (uint(_group_0_binding_0_cs.length()) / MS_K_IN);
-    if ((i_12 >= n_13)) {
+    if ((i_14 >= n_13)) {
         return n_13;
     }
-    return i_12;
+    return i_14;
 }
 
 MsMicrofacet ms_k_microfacet(vec4 r0_, vec4 r2_) {
@@ -3533,18 +3931,18 @@ void main() {
     vec4 _e12 = _group_0_binding_0_cs[(_e2 * MS_K_IN)];
     vec2 a_25 = _e12.xy;
     vec4 _e20 = _group_0_binding_0_cs[((_e2 * MS_K_IN) + 1u)];
-    vec3 wo_48 = _e20.xyz;
+    vec3 wo_56 = _e20.xyz;
     vec4 _e28 = _group_0_binding_0_cs[((_e2 * MS_K_IN) + 2u)];
-    vec3 wm_27 = _e28.xyz;
-    float _e34 = ms_beckmann_d(wm_27, a_25);
-    float _e35 = ms_beckmann_lambda(wo_48, a_25);
-    float _e36 = ms_beckmann_g1_(wo_48, a_25);
-    float _e37 = ms_beckmann_g2_(wo_48, wm_27, a_25);
+    vec3 wm_39 = _e28.xyz;
+    float _e34 = ms_beckmann_d(wm_39, a_25);
+    float _e35 = ms_beckmann_lambda(wo_56, a_25);
+    float _e36 = ms_beckmann_g1_(wo_56, a_25);
+    float _e37 = ms_beckmann_g2_(wo_56, wm_39, a_25);
     _group_0_binding_1_cs[(_e2 * MS_K_OUT)] = vec4(_e34, _e35, _e36, _e37);
-    float _e45 = ms_beckmann_g2_separable(wo_48, wm_27, a_25);
-    float _e46 = ms_beckmann_pdf(wo_48, wm_27, a_25);
-    float _e47 = ms_beckmann_pdf_dcos(wm_27, a_25);
-    float _e51 = ms_pdf(MsMicrofacet(MS_NDF_BECKMANN, a_25, 0u), wo_48, wm_27);
+    float _e45 = ms_beckmann_g2_separable(wo_56, wm_39, a_25);
+    float _e46 = ms_beckmann_pdf(wo_56, wm_39, a_25);
+    float _e47 = ms_beckmann_pdf_dcos(wm_39, a_25);
+    float _e51 = ms_pdf(MsMicrofacet(MS_NDF_BECKMANN, a_25, 0u), wo_56, wm_39);
     _group_0_binding_1_cs[((_e2 * MS_K_OUT) + 1u)] = vec4(_e45, _e46, _e47, _e51);
     return;
 }

@@ -68,30 +68,36 @@ const uint MS_BK_ERFINV_Q_AT = 304u;
 const int MS_BK_ERFINV_W_K0_ = 4;
 const int MS_BK_ERFINV_W_K1_ = 7;
 const uint MS_BK_ERFINV_W_AT = 504u;
+const int MS_SF_K0E_K0_ = -14;
+const int MS_SF_K0E_K1_ = 9;
+const uint MS_SF_K0E_AT = 528u;
+const int MS_SF_E1X_K0_ = -24;
+const int MS_SF_E1X_K1_ = 9;
+const uint MS_SF_E1X_AT = 712u;
 const float MS_BK_QUANTILE_EDGE = -27.200563;
 const int MS_DG_LAMBDA_K0_ = -30;
 const int MS_DG_LAMBDA_K1_ = 16;
 const uint MS_DG_LAMBDA_M = 3u;
-const uint MS_DG_LAMBDA_AT = 528u;
+const uint MS_DG_LAMBDA_AT = 976u;
 const int MS_DG_D_K0_ = -30;
 const int MS_DG_D_K1_ = 30;
 const uint MS_DG_D_M = 2u;
-const uint MS_DG_D_AT = 896u;
+const uint MS_DG_D_AT = 1344u;
 const int MS_EXP_QA_K0_ = -24;
 const int MS_EXP_QA_K1_ = 6;
 const uint MS_EXP_QA_M = 5u;
-const uint MS_EXP_QA_AT = 1616u;
+const uint MS_EXP_QA_AT = 2064u;
 const int MS_EXP_QB_K0_ = 6;
 const int MS_EXP_QB_K1_ = 12;
 const uint MS_EXP_QB_M = 7u;
-const uint MS_EXP_QB_AT = 2576u;
+const uint MS_EXP_QB_AT = 3024u;
 const int MS_EXP_FAR_K0_ = 5;
 const int MS_EXP_FAR_K1_ = 9;
 const uint MS_EXP_FAR_M = 3u;
-const uint MS_EXP_FAR_AT = 3344u;
-const uint MS_ZIG_EXP_AT = 3408u;
-const uint MS_ZIG_NORMAL_AT = 3664u;
-const uint MS_TABLES_ROWS = 3920u;
+const uint MS_EXP_FAR_AT = 3792u;
+const uint MS_ZIG_EXP_AT = 3856u;
+const uint MS_ZIG_NORMAL_AT = 4112u;
+const uint MS_TABLES_ROWS = 4368u;
 const float MS_FRAC_1_SQRT_PI = 0.5641896;
 const float MS_SQRT_PI = 1.7724539;
 const float MS_EULER_GAMMA = 0.5772157;
@@ -103,6 +109,9 @@ const uint MS_NDF_BECKMANN = 1u;
 const uint MS_NDF_DOUBLE_GGX = 2u;
 const uint MS_NDF_EXPONENTIAL = 3u;
 const uint MS_NDF_STUDENT_T = 5u;
+const uint MS_NDF_EI = 6u;
+const uint MS_NDF_ERFC = 7u;
+const uint MS_NDF_K0_ = 8u;
 const uint MS_MASKING_CORRELATED = 0u;
 const uint MS_MASKING_SEPARABLE = 1u;
 const uint MS_MASKING_CORRELATED_BETA = 2u;
@@ -126,25 +135,25 @@ float ms_inf() {
 }
 
 vec2 ms_cos_sin_turn(float v) {
-    float k_9 = roundEven((4.0 * v));
-    float r_3 = (v - (0.25 * k_9));
+    float k_10 = roundEven((4.0 * v));
+    float r_3 = (v - (0.25 * k_10));
     float x_14 = (MS_TAU * r_3);
     float x2_ = (x_14 * x_14);
     float s_10 = (x_14 * (1.0 + (x2_ * (-0.16666667 + (x2_ * (0.008333333 + (x2_ * (-0.0001984127 + (x2_ * 2.7557319e-6)))))))));
-    float c_16 = (1.0 + (x2_ * (-0.5 + (x2_ * (0.041666668 + (x2_ * (-0.0013888889 + (x2_ * (2.4801588e-5 + (x2_ * -2.755732e-7))))))))));
-    int q_2 = (int(k_9) & 3);
+    float c_17 = (1.0 + (x2_ * (-0.5 + (x2_ * (0.041666668 + (x2_ * (-0.0013888889 + (x2_ * (2.4801588e-5 + (x2_ * -2.755732e-7))))))))));
+    int q_2 = (int(k_10) & 3);
     if ((q_2 == 0)) {
-        return vec2(c_16, s_10);
+        return vec2(c_17, s_10);
     } else {
         if ((q_2 == 1)) {
-            return vec2(-(s_10), c_16);
+            return vec2(-(s_10), c_17);
         } else {
             if ((q_2 == 2)) {
-                return vec2(-(c_16), -(s_10));
+                return vec2(-(c_17), -(s_10));
             }
         }
     }
-    return vec2(s_10, -(c_16));
+    return vec2(s_10, -(c_17));
 }
 
 vec3 ms_rescaled(vec3 a) {
@@ -371,31 +380,31 @@ float ms_fresnel_dielectric(float cos_in, float eta_in_1) {
         eta_2 = (1.0 / _e9);
     }
     float _e12 = cos_i_1;
-    float c_17 = min(_e12, 1.0);
+    float c_18 = min(_e12, 1.0);
     float _e15 = eta_2;
     if ((_e15 == 1.0)) {
         return 0.0;
     }
-    if ((c_17 == 0.0)) {
+    if ((c_18 == 0.0)) {
         return 1.0;
     }
     float _e24 = eta_2;
     if ((_e24 > 1e18)) {
         float _e27 = eta_2;
         float e_3 = (1.0 / _e27);
-        float cos_t_1 = sqrt((((1.0 - e_3) * (1.0 + e_3)) + ((c_17 * e_3) * (c_17 * e_3))));
-        r_parl = ((c_17 - (e_3 * cos_t_1)) / (c_17 + (e_3 * cos_t_1)));
-        r_perp = (((e_3 * c_17) - cos_t_1) / ((e_3 * c_17) + cos_t_1));
+        float cos_t_1 = sqrt((((1.0 - e_3) * (1.0 + e_3)) + ((c_18 * e_3) * (c_18 * e_3))));
+        r_parl = ((c_18 - (e_3 * cos_t_1)) / (c_18 + (e_3 * cos_t_1)));
+        r_perp = (((e_3 * c_18) - cos_t_1) / ((e_3 * c_18) + cos_t_1));
     } else {
         float _e51 = eta_2;
         if ((_e51 > 1.0)) {
             float _e54 = eta_2;
             float _e57 = eta_2;
-            ect2_ = (((_e54 - 1.0) * (_e57 + 1.0)) + (c_17 * c_17));
+            ect2_ = (((_e54 - 1.0) * (_e57 + 1.0)) + (c_18 * c_18));
         } else {
             float _e63 = eta_2;
             float _e64 = eta_2;
-            ect2_ = ((_e63 * _e64) - ((1.0 - c_17) * (1.0 + c_17)));
+            ect2_ = ((_e63 * _e64) - ((1.0 - c_18) * (1.0 + c_18)));
         }
         float _e72 = ect2_;
         if ((_e72 <= 0.0)) {
@@ -405,9 +414,9 @@ float ms_fresnel_dielectric(float cos_in, float eta_in_1) {
         float ect = sqrt(_e76);
         float _e78 = eta_2;
         float _e79 = eta_2;
-        float e2c = ((_e78 * _e79) * c_17);
+        float e2c = ((_e78 * _e79) * c_18);
         r_parl = ((e2c - ect) / (e2c + ect));
-        r_perp = ((c_17 - ect) / (c_17 + ect));
+        r_perp = ((c_18 - ect) / (c_18 + ect));
     }
     float _e88 = r_parl;
     float _e89 = r_parl;
@@ -442,12 +451,12 @@ float ms_cnorm_ratio(vec2 a_6, vec2 b_3) {
 vec2 ms_crecip(vec2 a_7) {
     if ((abs(a_7.x) >= abs(a_7.y))) {
         float r_4 = (a_7.y / a_7.x);
-        float d_16 = (a_7.x + (a_7.y * r_4));
-        return vec2((1.0 / d_16), (-(r_4) / d_16));
+        float d_17 = (a_7.x + (a_7.y * r_4));
+        return vec2((1.0 / d_17), (-(r_4) / d_17));
     }
     float r_5 = (a_7.x / a_7.y);
-    float d_17 = ((a_7.x * r_5) + a_7.y);
-    return vec2((r_5 / d_17), (-1.0 / d_17));
+    float d_18 = ((a_7.x * r_5) + a_7.y);
+    return vec2((r_5 / d_18), (-1.0 / d_18));
 }
 
 vec2 ms_csqrt(vec2 a_8) {
@@ -574,42 +583,42 @@ vec3 ms_fresnel_eval(MsFresnel fr, float cos_i_4) {
 }
 
 float ms_ggx_d(vec3 wm_2, vec2 alpha) {
-    float z_5 = wm_2.z;
-    if (!((z_5 > 0.0))) {
+    float z_6 = wm_2.z;
+    if (!((z_6 > 0.0))) {
         return 0.0;
     }
     float x_15 = (wm_2.x / alpha.x);
-    float y_3 = (wm_2.y / alpha.y);
-    float t_6 = (((x_15 * x_15) + (y_3 * y_3)) + (z_5 * z_5));
+    float y_7 = (wm_2.y / alpha.y);
+    float t_6 = (((x_15 * x_15) + (y_7 * y_7)) + (z_6 * z_6));
     return (1.0 / ((((MS_PI * alpha.x) * alpha.y) * t_6) * t_6));
 }
 
 float ms_ggx_lambda(vec3 w_3, vec2 alpha_1) {
     float x_16 = (alpha_1.x * w_3.x);
-    float y_4 = (alpha_1.y * w_3.y);
-    float z_6 = abs(w_3.z);
-    float t_7 = ((x_16 * x_16) + (y_4 * y_4));
-    float z2_ = (z_6 * z_6);
-    float den = (2.0 * (z2_ + (z_6 * sqrt((z2_ + t_7)))));
+    float y_8 = (alpha_1.y * w_3.y);
+    float z_7 = abs(w_3.z);
+    float t_7 = ((x_16 * x_16) + (y_8 * y_8));
+    float z2_ = (z_7 * z_7);
+    float den = (2.0 * (z2_ + (z_7 * sqrt((z2_ + t_7)))));
     if (!((den > 0.0))) {
-        if ((z_6 == 0.0)) {
+        if ((z_7 == 0.0)) {
             float _e25 = ms_inf();
             return _e25;
         }
-        return ((t_7 / (z_6 + sqrt(((z_6 * z_6) + t_7)))) / (z_6 + z_6));
+        return ((t_7 / (z_7 + sqrt(((z_7 * z_7) + t_7)))) / (z_7 + z_7));
     }
     return (t_7 / den);
 }
 
 float ms_ggx_g1_(vec3 w_4, vec2 alpha_2) {
     float x_17 = (alpha_2.x * w_4.x);
-    float y_5 = (alpha_2.y * w_4.y);
-    float z_7 = abs(w_4.z);
-    float den_1 = (z_7 + sqrt(((z_7 * z_7) + ((x_17 * x_17) + (y_5 * y_5)))));
+    float y_9 = (alpha_2.y * w_4.y);
+    float z_8 = abs(w_4.z);
+    float den_1 = (z_8 + sqrt(((z_8 * z_8) + ((x_17 * x_17) + (y_9 * y_9)))));
     if (!((den_1 > 0.0))) {
         return 0.0;
     }
-    return ((z_7 + z_7) / den_1);
+    return ((z_8 + z_8) / den_1);
 }
 
 float ms_ggx_g2_(vec3 wo_6, vec3 wi_6, vec2 alpha_3) {
@@ -628,7 +637,7 @@ float ms_ggx_pdf(vec3 w_5, vec3 wm_3, vec2 alpha_5) {
     float c = 0.0;
     bool local_6 = false;
     bool local_7 = false;
-    float z_8 = abs(w_5.z);
+    float z_9 = abs(w_5.z);
     float _e5 = ms_dot(w_5, wm_3);
     c = _e5;
     if ((w_5.z < 0.0)) {
@@ -637,7 +646,7 @@ float ms_ggx_pdf(vec3 w_5, vec3 wm_3, vec2 alpha_5) {
     }
     float _e12 = c;
     if ((_e12 > 0.0)) {
-        local_6 = (z_8 > 0.0);
+        local_6 = (z_9 > 0.0);
     } else {
         local_6 = false;
     }
@@ -653,24 +662,24 @@ float ms_ggx_pdf(vec3 w_5, vec3 wm_3, vec2 alpha_5) {
     }
     float sx = (alpha_5.x * w_5.x);
     float sy = (alpha_5.y * w_5.y);
-    float len_3 = sqrt((((sx * sx) + (sy * sy)) + (z_8 * z_8)));
+    float len_3 = sqrt((((sx * sx) + (sy * sy)) + (z_9 * z_9)));
     float mx = (wm_3.x / alpha_5.x);
     float my = (wm_3.y / alpha_5.y);
     float t_8 = (((mx * mx) + (my * my)) + (wm_3.z * wm_3.z));
     float _e55 = c;
     float _e56 = c;
-    return ((_e55 + _e56) / (((((MS_PI * alpha_5.x) * alpha_5.y) * t_8) * t_8) * (z_8 + len_3)));
+    return ((_e55 + _e56) / (((((MS_PI * alpha_5.x) * alpha_5.y) * t_8) * t_8) * (z_9 + len_3)));
 }
 
 vec3 ms_ggx_cap_normal_stretched(vec3 w_6, vec3 stretch, vec2 u, float len) {
     float inv = (1.0 / len);
     float x_18 = ((stretch.x * w_6.x) * inv);
-    float y_6 = ((stretch.y * w_6.y) * inv);
-    float z_9 = ((stretch.z * w_6.z) * inv);
+    float y_10 = ((stretch.y * w_6.y) * inv);
+    float z_10 = ((stretch.z * w_6.z) * inv);
     vec2 _e19 = ms_cos_sin_turn(u.x);
-    float above = ((1.0 - u.y) * (1.0 + z_9));
-    float sin_ = sqrt(max((u.y * ((above * (1.0 + z_9)) + ((x_18 * x_18) + (y_6 * y_6)))), 0.0));
-    vec3 h_2 = vec3((stretch.x * ((sin_ * _e19.x) + x_18)), (stretch.y * ((sin_ * _e19.y) + y_6)), (stretch.z * above));
+    float above = ((1.0 - u.y) * (1.0 + z_10));
+    float sin_ = sqrt(max((u.y * ((above * (1.0 + z_10)) + ((x_18 * x_18) + (y_10 * y_10)))), 0.0));
+    vec3 h_2 = vec3((stretch.x * ((sin_ * _e19.x) + x_18)), (stretch.y * ((sin_ * _e19.y) + y_10)), (stretch.z * above));
     float n_11 = (1.0 / sqrt((((h_2.x * h_2.x) + (h_2.y * h_2.y)) + (h_2.z * h_2.z))));
     return (h_2 * n_11);
 }
@@ -706,12 +715,12 @@ vec3 ms_ggx_sample_wm(vec3 w_in, vec2 alpha_7, vec2 u_2) {
         float _e45 = w_8.x;
         float _e49 = w_8.y;
         float _e54 = w_8.z;
-        float d_18 = (((_e42.x * _e45) + (_e42.y * _e49)) + (_e42.z * _e54));
+        float d_19 = (((_e42.x * _e45) + (_e42.y * _e49)) + (_e42.z * _e54));
         float _e58 = w_8.x;
         float _e61 = w_8.y;
         float _e65 = w_8.z;
         float l1_ = ((abs(_e58) + abs(_e61)) + abs(_e65));
-        if ((d_18 > (2.4e-7 * l1_))) {
+        if ((d_19 > (2.4e-7 * l1_))) {
             return _e42;
         }
         vec3 _e71 = w_8;
@@ -775,11 +784,11 @@ MsBoundedCap ms_ggx_bounded_cap(vec3 w_10, vec2 alpha_11) {
     float _e44 = v_2.z;
     float _e47 = v_2.z;
     float den_2 = (s2_ + ((a2_ * _e44) * _e47));
-    float k_10 = (((1.0 - a2_) * s2_) / den_2);
+    float k_11 = (((1.0 - a2_) * s2_) / den_2);
     float _e55 = v_2.z;
     float _e57 = v_2.z;
     float one_minus_k = ((a2_ * (s2_ + (_e55 * _e57))) / den_2);
-    return MsBoundedCap(_e18, (k_10 * _e18.z), (one_minus_k * _e18.z));
+    return MsBoundedCap(_e18, (k_11 * _e18.z), (one_minus_k * _e18.z));
 }
 
 float ms_ggx_pdf_bounded(vec3 w_in_1, vec3 wm_5, vec2 alpha_12) {
@@ -820,12 +829,12 @@ float ms_ggx_pdf_bounded_reflection(vec3 wo_8, vec3 wi_8, vec2 alpha_14) {
         return 0.0;
     }
     float _e7 = ms_dot(wo_8, _e3);
-    float c_18 = abs(_e7);
-    if (!((c_18 > 0.0))) {
+    float c_19 = abs(_e7);
+    if (!((c_19 > 0.0))) {
         return 0.0;
     }
     float _e13 = ms_ggx_pdf_bounded(wo_8, _e3, alpha_14);
-    return (_e13 / (4.0 * c_18));
+    return (_e13 / (4.0 * c_19));
 }
 
 uvec2 ms_u64_add(uvec2 a_9, uvec2 b_4) {
@@ -939,12 +948,12 @@ float ms_bk_ln_1m(float xi) {
 
 float ms_beckmann_d(vec3 wm_6, vec2 alpha_15) {
     bool local_9 = false;
-    float z_10 = wm_6.z;
+    float z_11 = wm_6.z;
     float r_9 = (1.0 / (alpha_15.x * alpha_15.y));
     float x_19 = ((wm_6.x * alpha_15.y) * r_9);
-    float y_7 = ((wm_6.y * alpha_15.x) * r_9);
-    float z2_1 = (z_10 * z_10);
-    if ((z_10 > 0.0)) {
+    float y_11 = ((wm_6.y * alpha_15.x) * r_9);
+    float z2_1 = (z_11 * z_11);
+    if ((z_11 > 0.0)) {
         local_9 = (z2_1 > 0.0);
     } else {
         local_9 = false;
@@ -953,11 +962,11 @@ float ms_beckmann_d(vec3 wm_6, vec2 alpha_15) {
     if (!(_e24)) {
         return 0.0;
     }
-    float e_5 = (((x_19 * x_19) + (y_7 * y_7)) / z2_1);
+    float e_5 = (((x_19 * x_19) + (y_11 * y_11)) / z2_1);
     if ((e_5 <= 80.0)) {
         return ((exp(-(e_5)) * r_9) / ((MS_PI * z2_1) * z2_1));
     }
-    return exp((((log(r_9) - 1.14473) - (4.0 * log(z_10))) - e_5));
+    return exp((((log(r_9) - 1.14473) - (4.0 * log(z_11))) - e_5));
 }
 
 float ms_beckmann_pdf_dcos(vec3 wm_8, vec2 alpha_21) {
@@ -1015,25 +1024,25 @@ float ms_dg_lambda_ends(float u_12, float a_15) {
 
 float ms_exponential_d(vec3 wm_12, vec2 alpha_39) {
     bool local_22 = false;
-    float z_11 = wm_12.z;
+    float z_12 = wm_12.z;
     float r_12 = (1.0 / (alpha_39.x * alpha_39.y));
     float x_21 = ((wm_12.x * alpha_39.y) * r_12);
-    float y_8 = ((wm_12.y * alpha_39.x) * r_12);
-    float z2_2 = (z_11 * z_11);
-    if ((z_11 > 0.0)) {
+    float y_12 = ((wm_12.y * alpha_39.x) * r_12);
+    float z2_2 = (z_12 * z_12);
+    if ((z_12 > 0.0)) {
         local_22 = (z2_2 > 0.0);
     } else {
         local_22 = false;
     }
     bool _e24 = local_22;
     if (!(_e24)) {
-        return ((z_11 != z_11) ? z_11 : 0.0);
+        return ((z_12 != z_12) ? z_12 : 0.0);
     }
-    float e_6 = ((2.0 * sqrt(((x_21 * x_21) + (y_8 * y_8)))) / z_11);
+    float e_6 = ((2.0 * sqrt(((x_21 * x_21) + (y_12 * y_12)))) / z_12);
     if ((e_6 <= 80.0)) {
         return (((2.0 * exp(-(e_6))) * r_12) / ((MS_PI * z2_2) * z2_2));
     }
-    return exp((((log((2.0 * r_12)) - 1.14473) - (4.0 * log(z_11))) - e_6));
+    return exp((((log((2.0 * r_12)) - 1.14473) - (4.0 * log(z_12))) - e_6));
 }
 
 float ms_exponential_pdf_dcos(vec3 wm_14, vec2 alpha_41) {
@@ -1107,8 +1116,8 @@ vec3 ms_exponential_sample_wm(vec3 w_in_4, vec2 alpha_43, vec2 u_17) {
             float _e73 = ms_stream_next(state_9);
             float prod = ((1.0 - _e70) * (1.0 - _e73));
             float _e77 = v0_;
-            float d_19 = ((_e77 * total) - e_7);
-            if ((d_19 < 0.0)) {
+            float d_20 = ((_e77 * total) - e_7);
+            if ((d_20 < 0.0)) {
                 float r_13 = (-0.5 * log(prod));
                 float _e85 = v0_;
                 float turn = (_e85 * inv_p);
@@ -1129,7 +1138,7 @@ vec3 ms_exponential_sample_wm(vec3 w_in_4, vec2 alpha_43, vec2 u_17) {
             } else {
                 float _e108 = ms_stream_next(state_9);
                 float r_14 = (-0.5 * log((prod * (1.0 - _e108))));
-                float one_plus = (2.0 * (d_19 * inv_g));
+                float one_plus = (2.0 * (d_20 * inv_g));
                 float _e118 = v0_;
                 float one_minus = ((2.0 * (1.0 - _e118)) * (total * inv_g));
                 x_9 = (r_14 * sqrt(max((one_minus * one_plus), 0.0)));
@@ -1159,6 +1168,23 @@ float ms_stream_next_positive(inout uvec2 state_11) {
     return max(_e1, 2.9802322e-8);
 }
 
+float ms_mixture_beta(float ln_beta, vec2 alpha_47) {
+    float lo_4 = log(min(alpha_47.x, alpha_47.y));
+    float hi_3 = log(max(alpha_47.x, alpha_47.y));
+    return exp(clamp(ln_beta, (-80.0 - lo_4), (80.0 - hi_3)));
+}
+
+float ms_mixture_d_from_ln_profile(float ln_f, vec3 wm_16, vec2 alpha_54) {
+    float ln_z = log(wm_16.z);
+    return exp(((ln_f - log((alpha_54.x * alpha_54.y))) - (4.0 * ln_z)));
+}
+
+float ms_mixture_r2_(vec3 wm_17, vec2 alpha_55) {
+    float x_22 = (wm_17.x / alpha_55.x);
+    float y_13 = (wm_17.y / alpha_55.y);
+    return (((x_22 * x_22) + (y_13 * y_13)) / (wm_17.z * wm_17.z));
+}
+
 float ms_ln_1p(float t_1) {
     float v_11 = (1.0 + t_1);
     if ((v_11 == 1.0)) {
@@ -1178,145 +1204,145 @@ bool ms_effectively_smooth(MsMicrofacet mf_9) {
     return (max(mf_9.alpha.x, mf_9.alpha.y) < 0.001);
 }
 
-bool ms_on_horizon(float z_4) {
-    return !((abs(z_4) >= 1e-18));
+bool ms_on_horizon(float z_5) {
+    return !((abs(z_5) >= 1e-18));
 }
 
 bool ms_usable(float v_9) {
-    bool local_31 = false;
+    bool local_32 = false;
     if ((v_9 >= 1.1754944e-20)) {
-        local_31 = (v_9 <= 3.4028235e38);
+        local_32 = (v_9 <= 3.4028235e38);
     } else {
-        local_31 = false;
+        local_32 = false;
     }
-    bool _e8 = local_31;
+    bool _e8 = local_32;
     return _e8;
 }
 
-vec3 ms_weighted(vec3 fr_1, float k_7) {
-    return mix((fr_1 * k_7), vec3(0.0), equal(fr_1, vec3(0.0)));
+vec3 ms_weighted(vec3 fr_1, float k_8) {
+    return mix((fr_1 * k_8), vec3(0.0), equal(fr_1, vec3(0.0)));
 }
 
-vec3 ms_conductor_lobe_normal(MsConductor c_6, vec3 wo_21, vec3 wi_21) {
-    bool local_32 = false;
+vec3 ms_conductor_lobe_normal(MsConductor c_7, vec3 wo_29, vec3 wi_29) {
     bool local_33 = false;
     bool local_34 = false;
-    bool _e3 = ms_same_hemisphere(wo_21, wi_21);
+    bool local_35 = false;
+    bool _e3 = ms_same_hemisphere(wo_29, wi_29);
     if (!(!(_e3))) {
-        bool _e9 = ms_on_horizon(wo_21.z);
-        local_32 = _e9;
-    } else {
-        local_32 = true;
-    }
-    bool _e11 = local_32;
-    if (!(_e11)) {
-        bool _e16 = ms_on_horizon(wi_21.z);
-        local_33 = _e16;
+        bool _e9 = ms_on_horizon(wo_29.z);
+        local_33 = _e9;
     } else {
         local_33 = true;
     }
-    bool _e18 = local_33;
-    if (!(_e18)) {
-        bool _e23 = ms_effectively_smooth(c_6.mf);
-        local_34 = _e23;
+    bool _e11 = local_33;
+    if (!(_e11)) {
+        bool _e16 = ms_on_horizon(wi_29.z);
+        local_34 = _e16;
     } else {
         local_34 = true;
     }
-    bool _e25 = local_34;
+    bool _e18 = local_34;
+    if (!(_e18)) {
+        bool _e23 = ms_effectively_smooth(c_7.mf);
+        local_35 = _e23;
+    } else {
+        local_35 = true;
+    }
+    bool _e25 = local_35;
     if (_e25) {
         return vec3(0.0);
     }
-    vec3 _e28 = ms_half_vector_reflection(wo_21, wi_21);
+    vec3 _e28 = ms_half_vector_reflection(wo_29, wi_29);
     return _e28;
 }
 
-bool ms_dielectric_smooth(MsDielectric d_1) {
-    bool local_36 = false;
-    if (!((d_1.eta == 1.0))) {
-        bool _e8 = ms_effectively_smooth(d_1.mf);
-        local_36 = _e8;
-    } else {
-        local_36 = true;
-    }
-    bool _e10 = local_36;
-    return _e10;
-}
-
-vec4 ms_dielectric_half(MsDielectric d_3, vec3 wo_27, vec3 wi_26) {
+bool ms_dielectric_smooth(MsDielectric d_2) {
     bool local_37 = false;
-    vec3 wm_21 = vec3(0.0);
-    float etap_4 = 1.0;
-    bool local_38 = false;
-    vec4 none = vec4(0.0);
-    float co = wo_27.z;
-    float ci_1 = wi_26.z;
-    bool _e7 = ms_on_horizon(co);
-    if (!(_e7)) {
-        bool _e11 = ms_on_horizon(ci_1);
-        local_37 = _e11;
+    if (!((d_2.eta == 1.0))) {
+        bool _e8 = ms_effectively_smooth(d_2.mf);
+        local_37 = _e8;
     } else {
         local_37 = true;
     }
-    bool _e13 = local_37;
+    bool _e10 = local_37;
+    return _e10;
+}
+
+vec4 ms_dielectric_half(MsDielectric d_4, vec3 wo_35, vec3 wi_34) {
+    bool local_38 = false;
+    vec3 wm_33 = vec3(0.0);
+    float etap_4 = 1.0;
+    bool local_39 = false;
+    vec4 none = vec4(0.0);
+    float co = wo_35.z;
+    float ci_1 = wi_34.z;
+    bool _e7 = ms_on_horizon(co);
+    if (!(_e7)) {
+        bool _e11 = ms_on_horizon(ci_1);
+        local_38 = _e11;
+    } else {
+        local_38 = true;
+    }
+    bool _e13 = local_38;
     if (_e13) {
         return none;
     }
     if (((co * ci_1) > 0.0)) {
-        vec3 _e20 = ms_half_vector_reflection(wo_27, wi_26);
-        wm_21 = _e20;
+        vec3 _e20 = ms_half_vector_reflection(wo_35, wi_34);
+        wm_33 = _e20;
     } else {
-        vec4 _e22 = ms_half_vector_refraction(wo_27, wi_26, d_3.eta);
-        wm_21 = _e22.xyz;
+        vec4 _e22 = ms_half_vector_refraction(wo_35, wi_34, d_4.eta);
+        wm_33 = _e22.xyz;
         etap_4 = _e22.w;
     }
-    vec3 _e25 = wm_21;
+    vec3 _e25 = wm_33;
     bool _e26 = ms_half_vector_ok(_e25);
     if (!(_e26)) {
         return none;
     }
-    vec3 _e28 = wm_21;
-    float _e29 = ms_dot(_e28, wi_26);
+    vec3 _e28 = wm_33;
+    float _e29 = ms_dot(_e28, wi_34);
     if (!(((_e29 * ci_1) < 0.0))) {
-        vec3 _e36 = wm_21;
-        float _e37 = ms_dot(_e36, wo_27);
-        local_38 = ((_e37 * co) < 0.0);
+        vec3 _e36 = wm_33;
+        float _e37 = ms_dot(_e36, wo_35);
+        local_39 = ((_e37 * co) < 0.0);
     } else {
-        local_38 = true;
+        local_39 = true;
     }
-    bool _e42 = local_38;
+    bool _e42 = local_39;
     if (_e42) {
         return none;
     }
-    vec3 _e43 = wm_21;
+    vec3 _e43 = wm_33;
     float _e44 = etap_4;
     return vec4(_e43, _e44);
 }
 
-MsBsdfSample ms_dielectric_sample_smooth(MsDielectric d_7, vec3 wo_31, float uc_1) {
+MsBsdfSample ms_dielectric_sample_smooth(MsDielectric d_8, vec3 wo_39, float uc_1) {
     float f_3 = 0.0;
-    float _e5 = ms_fresnel_dielectric(wo_31.z, d_7.eta);
+    float _e5 = ms_fresnel_dielectric(wo_39.z, d_8.eta);
     if ((uc_1 < _e5)) {
-        vec3 wi_41 = vec3(-(wo_31.x), -(wo_31.y), wo_31.z);
-        return MsBsdfSample(wi_41, _e5, vec3((_e5 / abs(wi_41.z))), 3u, 1.0);
+        vec3 wi_49 = vec3(-(wo_39.x), -(wo_39.y), wo_39.z);
+        return MsBsdfSample(wi_49, _e5, vec3((_e5 / abs(wi_49.z))), 3u, 1.0);
     }
     MsBsdfSample none_1 = MsBsdfSample(vec3(0.0), 0.0, vec3(0.0), 0u, 1.0);
-    vec4 _e33 = ms_refract(wo_31, vec3(0.0, 0.0, 1.0), d_7.eta);
+    vec4 _e33 = ms_refract(wo_39, vec3(0.0, 0.0, 1.0), d_8.eta);
     if ((_e33.w == 0.0)) {
         return none_1;
     }
-    vec3 wi_42 = _e33.xyz;
-    bool _e39 = ms_on_horizon(wi_42.z);
+    vec3 wi_50 = _e33.xyz;
+    bool _e39 = ms_on_horizon(wi_50.z);
     if (_e39) {
         return none_1;
     }
     float t_10 = (1.0 - _e5);
-    f_3 = (t_10 / abs(wi_42.z));
-    if ((d_7.transport == MS_TRANSPORT_RADIANCE)) {
+    f_3 = (t_10 / abs(wi_50.z));
+    if ((d_8.transport == MS_TRANSPORT_RADIANCE)) {
         float _e49 = f_3;
         f_3 = (_e49 / (_e33.w * _e33.w));
     }
     float _e54 = f_3;
-    return MsBsdfSample(wi_42, t_10, vec3(_e54), 7u, _e33.w);
+    return MsBsdfSample(wi_50, t_10, vec3(_e54), 7u, _e33.w);
 }
 
 MsLutTap ms_lut_tap(float x_12, uint n_8) {
@@ -1345,8 +1371,8 @@ float ms_lut_bilerp(MsLutTap r, MsLutTap m_4, float v00_, float v10_, float v01_
     return (((((gr * gm) * v00_) + ((r.f * gm) * v10_)) + ((gr * m_4.f) * v01_)) + ((r.f * m_4.f) * v11_));
 }
 
-float ms_lut_roughness_coord(vec2 alpha_57, float alpha_max) {
-    return sqrt((sqrt((alpha_57.x * alpha_57.y)) / alpha_max));
+float ms_lut_roughness_coord(vec2 alpha_92, float alpha_max) {
+    return sqrt((sqrt((alpha_92.x * alpha_92.y)) / alpha_max));
 }
 
 vec3 ms_kulla_conty_f_ms(vec3 f_avg, float e_avg) {
@@ -1369,34 +1395,34 @@ float ms_kulla_conty_p_ms(float e_o_4) {
     return clamp((1.0 - e_o_4), 0.0, 1.0);
 }
 
-float ms_cosine_pdf_same_side(vec3 wo_35, vec3 wi_32) {
-    if (!(((wo_35.z * wi_32.z) > 0.0))) {
+float ms_cosine_pdf_same_side(vec3 wo_43, vec3 wi_40) {
+    if (!(((wo_43.z * wi_40.z) > 0.0))) {
         return 0.0;
     }
-    return (abs(wi_32.z) / MS_PI);
+    return (abs(wi_40.z) / MS_PI);
 }
 
-vec3 ms_cosine_hemisphere(vec2 u_26) {
-    float r_15 = sqrt(u_26.x);
-    vec2 _e4 = ms_cos_sin_turn(u_26.y);
-    return vec3((r_15 * _e4.x), (r_15 * _e4.y), sqrt(max((1.0 - u_26.x), 0.0)));
+vec3 ms_cosine_hemisphere(vec2 u_33) {
+    float r_15 = sqrt(u_33.x);
+    vec2 _e4 = ms_cos_sin_turn(u_33.y);
+    return vec3((r_15 * _e4.x), (r_15 * _e4.y), sqrt(max((1.0 - u_33.x), 0.0)));
 }
 
-MsBsdfSample ms_kulla_conty_sample_f(MsBsdfSample s_6, vec3 wo_38, float e_o_7, float e_i_2, float e_avg_3, vec3 f_ms_1) {
-    bool local_44 = false;
+MsBsdfSample ms_kulla_conty_sample_f(MsBsdfSample s_6, vec3 wo_46, float e_o_7, float e_i_2, float e_avg_3, vec3 f_ms_1) {
     bool local_45 = false;
+    bool local_46 = false;
     if (!(((s_6.flags & MS_SAMPLE_VALID) == 0u))) {
-        local_44 = ((s_6.flags & MS_SAMPLE_SPECULAR) != 0u);
-    } else {
-        local_44 = true;
-    }
-    bool _e20 = local_44;
-    if (!(_e20)) {
-        local_45 = !(((wo_38.z * s_6.wi.z) > 0.0));
+        local_45 = ((s_6.flags & MS_SAMPLE_SPECULAR) != 0u);
     } else {
         local_45 = true;
     }
-    bool _e32 = local_45;
+    bool _e20 = local_45;
+    if (!(_e20)) {
+        local_46 = !(((wo_46.z * s_6.wi.z) > 0.0));
+    } else {
+        local_46 = true;
+    }
+    bool _e32 = local_46;
     if (_e32) {
         return s_6;
     }
@@ -1417,7 +1443,7 @@ float ms_lut_trilerp(MsLutTap e, MsLutTap r_1, MsLutTap m_5, vec4 lo_2, vec4 hi_
     uint b_6 = 0u;
     vec2 we = vec2((1.0 - e.f), e.f);
     vec2 wr = vec2((1.0 - r_1.f), r_1.f);
-    vec2 wm_23 = vec2((1.0 - m_5.f), m_5.f);
+    vec2 wm_35 = vec2((1.0 - m_5.f), m_5.f);
     bool loop_init_1 = true;
     while(true) {
         if (!loop_init_1) {
@@ -1439,7 +1465,7 @@ float ms_lut_trilerp(MsLutTap e, MsLutTap r_1, MsLutTap m_5, vec4 lo_2, vec4 hi_
             uint _e40 = b_6;
             uint _e44 = b_6;
             uint _e51 = b_6;
-            s_7 = (_e39 + (((we[(_e40 & 1u)] * wr[((_e44 >> 1u) & 1u)]) * wm_23[(_e51 >> 2u)]) * v_12));
+            s_7 = (_e39 + (((we[(_e40 & 1u)] * wr[((_e44 >> 1u) & 1u)]) * wm_35[(_e51 >> 2u)]) * v_12));
         }
     }
     float _e61 = s_7;
@@ -1476,56 +1502,56 @@ float ms_lut_bilerp_eta(MsLutTap e_1, MsLutTap r_2, vec4 v_10) {
 }
 
 vec2 ms_dielectric_kulla_conty_k(float eta_5, float f_avg_1, vec2 e_avg_4) {
-    vec2 k_8 = vec2(0.0);
+    vec2 k_9 = vec2(0.0);
     float k_out = (1.0 - f_avg_1);
-    k_8 = vec2(k_out, ((k_out * (1.0 - e_avg_4.x)) / ((eta_5 * eta_5) * (1.0 - e_avg_4.y))));
-    float _e18 = k_8.y;
+    k_9 = vec2(k_out, ((k_out * (1.0 - e_avg_4.x)) / ((eta_5 * eta_5) * (1.0 - e_avg_4.y))));
+    float _e18 = k_9.y;
     if (!((_e18 <= 1.0))) {
-        vec2 _e22 = k_8;
-        float _e24 = k_8.y;
-        float _e28 = k_8.y;
-        k_8 = (_e22 * ((_e28 > 1.0) ? (1.0 / _e24) : 0.0));
+        vec2 _e22 = k_9;
+        float _e24 = k_9.y;
+        float _e28 = k_9.y;
+        k_9 = (_e22 * ((_e28 > 1.0) ? (1.0 / _e24) : 0.0));
     }
-    vec2 _e34 = k_8;
+    vec2 _e34 = k_9;
     return _e34;
 }
 
-float ms_dielectric_kulla_conty_lobe(MsDielectric d_9, vec3 wo_40, vec3 wi_35, float e_o_9, float e_i_3, float e_avg_i, float k_o) {
-    bool local_47 = false;
+float ms_dielectric_kulla_conty_lobe(MsDielectric d_10, vec3 wo_48, vec3 wi_43, float e_o_9, float e_i_3, float e_avg_i, float k_o) {
     bool local_48 = false;
-    float f_4 = 0.0;
     bool local_49 = false;
-    if ((abs(wo_40.z) > 0.0)) {
-        local_47 = (abs(wi_35.z) > 0.0);
+    float f_4 = 0.0;
+    bool local_50 = false;
+    if ((abs(wo_48.z) > 0.0)) {
+        local_48 = (abs(wi_43.z) > 0.0);
     } else {
-        local_47 = false;
+        local_48 = false;
     }
-    bool _e18 = local_47;
+    bool _e18 = local_48;
     if (!(_e18)) {
         return 0.0;
     }
     float lost = (1.0 - e_o_9);
-    bool crossed = ((wi_35.z < 0.0) != (wo_40.z < 0.0));
+    bool crossed = ((wi_43.z < 0.0) != (wo_48.z < 0.0));
     float share = (crossed ? k_o : (1.0 - k_o));
     float den_4 = (MS_PI * (1.0 - e_avg_i));
     if ((den_4 > 0.0)) {
-        local_48 = (lost > 0.0);
+        local_49 = (lost > 0.0);
     } else {
-        local_48 = false;
+        local_49 = false;
     }
-    bool _e44 = local_48;
+    bool _e44 = local_49;
     if (!(_e44)) {
         return 0.0;
     }
     f_4 = (((share * lost) * max((1.0 - e_i_3), 0.0)) / den_4);
     if (crossed) {
-        local_49 = (d_9.transport == MS_TRANSPORT_RADIANCE);
+        local_50 = (d_10.transport == MS_TRANSPORT_RADIANCE);
     } else {
-        local_49 = false;
+        local_50 = false;
     }
-    bool _e61 = local_49;
+    bool _e61 = local_50;
     if (_e61) {
-        float etap_6 = ((wo_40.z > 0.0) ? d_9.eta : (1.0 / d_9.eta));
+        float etap_6 = ((wo_48.z > 0.0) ? d_10.eta : (1.0 / d_10.eta));
         float _e70 = f_4;
         f_4 = (_e70 / (etap_6 * etap_6));
     }
@@ -1533,24 +1559,24 @@ float ms_dielectric_kulla_conty_lobe(MsDielectric d_9, vec3 wo_40, vec3 wi_35, f
     return _e73;
 }
 
-float ms_dielectric_kulla_conty_lobe_pdf(vec3 wo_43, vec3 wi_38, float k_o_2) {
-    bool crossed_1 = ((wi_38.z < 0.0) != (wo_43.z < 0.0));
+float ms_dielectric_kulla_conty_lobe_pdf(vec3 wo_51, vec3 wi_46, float k_o_2) {
+    bool crossed_1 = ((wi_46.z < 0.0) != (wo_51.z < 0.0));
     float side = (crossed_1 ? k_o_2 : (1.0 - k_o_2));
-    return ((side * abs(wi_38.z)) / MS_PI);
+    return ((side * abs(wi_46.z)) / MS_PI);
 }
 
-MsBsdfSample ms_dielectric_kulla_conty_sample_f(MsBsdfSample s_9, MsDielectric d_14, vec3 wo_46, float e_o_14, float e_i_5, float e_avg_i_2, float k_o_5) {
-    bool local_53 = false;
+MsBsdfSample ms_dielectric_kulla_conty_sample_f(MsBsdfSample s_9, MsDielectric d_15, vec3 wo_54, float e_o_14, float e_i_5, float e_avg_i_2, float k_o_5) {
+    bool local_54 = false;
     if (!(((s_9.flags & MS_SAMPLE_VALID) == 0u))) {
-        local_53 = ((s_9.flags & MS_SAMPLE_SPECULAR) != 0u);
+        local_54 = ((s_9.flags & MS_SAMPLE_SPECULAR) != 0u);
     } else {
-        local_53 = true;
+        local_54 = true;
     }
-    bool _e21 = local_53;
+    bool _e21 = local_54;
     if (_e21) {
         return s_9;
     }
-    float _e23 = ms_dielectric_kulla_conty_lobe(d_14, wo_46, s_9.wi, e_o_14, e_i_5, e_avg_i_2, k_o_5);
+    float _e23 = ms_dielectric_kulla_conty_lobe(d_15, wo_54, s_9.wi, e_o_14, e_i_5, e_avg_i_2, k_o_5);
     return MsBsdfSample(s_9.wi, s_9.pdf, (s_9.f + vec3(_e23)), s_9.flags, s_9.eta);
 }
 
@@ -1595,12 +1621,12 @@ void main() {
     }
     vec4 r0_3 = _group_0_binding_0_cs[(_e2 * MS_K_IN)];
     vec4 _e19 = _group_0_binding_0_cs[((_e2 * MS_K_IN) + 1u)];
-    vec3 wo_48 = _e19.xyz;
+    vec3 wo_56 = _e19.xyz;
     vec4 _e27 = _group_0_binding_0_cs[((_e2 * MS_K_IN) + 2u)];
-    vec3 wi_43 = _e27.xyz;
-    MsSample _e31 = ms_ggx_sample_bounded(wo_48, r0_3.xy, r0_3.zw);
+    vec3 wi_51 = _e27.xyz;
+    MsSample _e31 = ms_ggx_sample_bounded(wo_56, r0_3.xy, r0_3.zw);
     _group_0_binding_1_cs[(_e2 * MS_K_OUT)] = vec4(_e31.wm, _e31.pdf);
-    float _e46 = ms_ggx_pdf_bounded_reflection(wo_48, wi_43, r0_3.xy);
+    float _e46 = ms_ggx_pdf_bounded_reflection(wo_56, wi_51, r0_3.xy);
     _group_0_binding_1_cs[((_e2 * MS_K_OUT) + 1u)] = vec4(_e46, 0.0, 0.0, 0.0);
     return;
 }
