@@ -134,6 +134,7 @@ static const uint MS_NDF_STUDENT_T = 5u;
 static const uint MS_NDF_EI = 6u;
 static const uint MS_NDF_ERFC = 7u;
 static const uint MS_NDF_K0_ = 8u;
+static const uint MS_NDF_BESSEL_K = 9u;
 static const uint MS_MASKING_CORRELATED = 0u;
 static const uint MS_MASKING_SEPARABLE = 1u;
 static const uint MS_MASKING_CORRELATED_BETA = 2u;
@@ -165,9 +166,9 @@ float2 ms_cos_sin_turn(float v)
 {
     float k_10 = round((4.0 * v));
     float r_3 = (v - (0.25 * k_10));
-    float x_14 = (MS_TAU * r_3);
-    float x2_ = (x_14 * x_14);
-    float s_10 = (x_14 * (1.0 + (x2_ * (-0.16666667 + (x2_ * (0.008333333 + (x2_ * (-0.0001984127 + (x2_ * 2.7557319e-6)))))))));
+    float x_15 = (MS_TAU * r_3);
+    float x2_ = (x_15 * x_15);
+    float s_10 = (x_15 * (1.0 + (x2_ * (-0.16666667 + (x2_ * (0.008333333 + (x2_ * (-0.0001984127 + (x2_ * 2.7557319e-6)))))))));
     float c_17 = (1.0 + (x2_ * (-0.5 + (x2_ * (0.041666668 + (x2_ * (-0.0013888889 + (x2_ * (2.4801588e-5 + (x2_ * -2.755732e-7))))))))));
     int q_2 = (naga_f2i32(k_10) & int(3));
     if ((q_2 == int(0))) {
@@ -507,12 +508,12 @@ float2 ms_crecip(float2 a_7)
 {
     if ((abs(a_7.x) >= abs(a_7.y))) {
         float r_4 = (a_7.y / a_7.x);
-        float d_17 = (a_7.x + (a_7.y * r_4));
-        return float2((1.0 / d_17), (-(r_4) / d_17));
+        float d_16 = (a_7.x + (a_7.y * r_4));
+        return float2((1.0 / d_16), (-(r_4) / d_16));
     }
     float r_5 = (a_7.x / a_7.y);
-    float d_18 = ((a_7.x * r_5) + a_7.y);
-    return float2((r_5 / d_18), (-1.0 / d_18));
+    float d_17 = ((a_7.x * r_5) + a_7.y);
+    return float2((r_5 / d_17), (-1.0 / d_17));
 }
 
 float2 ms_csqrt(float2 a_8)
@@ -651,18 +652,18 @@ float ms_ggx_d(float3 wm_2, float2 alpha)
     if (!((z_6 > 0.0))) {
         return 0.0;
     }
-    float x_15 = (wm_2.x / alpha.x);
-    float y_7 = (wm_2.y / alpha.y);
-    float t_6 = (((x_15 * x_15) + (y_7 * y_7)) + (z_6 * z_6));
+    float x_16 = (wm_2.x / alpha.x);
+    float y_8 = (wm_2.y / alpha.y);
+    float t_6 = (((x_16 * x_16) + (y_8 * y_8)) + (z_6 * z_6));
     return (1.0 / ((((MS_PI * alpha.x) * alpha.y) * t_6) * t_6));
 }
 
 float ms_ggx_lambda(float3 w_3, float2 alpha_1)
 {
-    float x_16 = (alpha_1.x * w_3.x);
-    float y_8 = (alpha_1.y * w_3.y);
+    float x_17 = (alpha_1.x * w_3.x);
+    float y_9 = (alpha_1.y * w_3.y);
     float z_7 = abs(w_3.z);
-    float t_7 = ((x_16 * x_16) + (y_8 * y_8));
+    float t_7 = ((x_17 * x_17) + (y_9 * y_9));
     float z2_ = (z_7 * z_7);
     float den = (2.0 * (z2_ + (z_7 * sqrt((z2_ + t_7)))));
     if (!((den > 0.0))) {
@@ -677,10 +678,10 @@ float ms_ggx_lambda(float3 w_3, float2 alpha_1)
 
 float ms_ggx_g1_(float3 w_4, float2 alpha_2)
 {
-    float x_17 = (alpha_2.x * w_4.x);
-    float y_9 = (alpha_2.y * w_4.y);
+    float x_18 = (alpha_2.x * w_4.x);
+    float y_10 = (alpha_2.y * w_4.y);
     float z_8 = abs(w_4.z);
-    float den_1 = (z_8 + sqrt(((z_8 * z_8) + ((x_17 * x_17) + (y_9 * y_9)))));
+    float den_1 = (z_8 + sqrt(((z_8 * z_8) + ((x_18 * x_18) + (y_10 * y_10)))));
     if (!((den_1 > 0.0))) {
         return 0.0;
     }
@@ -744,13 +745,13 @@ float ms_ggx_pdf(float3 w_5, float3 wm_3, float2 alpha_5)
 float3 ms_ggx_cap_normal_stretched(float3 w_6, float3 stretch, float2 u, float len)
 {
     float inv = (1.0 / len);
-    float x_18 = ((stretch.x * w_6.x) * inv);
-    float y_10 = ((stretch.y * w_6.y) * inv);
+    float x_19 = ((stretch.x * w_6.x) * inv);
+    float y_11 = ((stretch.y * w_6.y) * inv);
     float z_10 = ((stretch.z * w_6.z) * inv);
     const float2 _e19 = ms_cos_sin_turn(u.x);
     float above = ((1.0 - u.y) * (1.0 + z_10));
-    float sin_ = sqrt(max((u.y * ((above * (1.0 + z_10)) + ((x_18 * x_18) + (y_10 * y_10)))), 0.0));
-    float3 h_2 = float3((stretch.x * ((sin_ * _e19.x) + x_18)), (stretch.y * ((sin_ * _e19.y) + y_10)), (stretch.z * above));
+    float sin_ = sqrt(max((u.y * ((above * (1.0 + z_10)) + ((x_19 * x_19) + (y_11 * y_11)))), 0.0));
+    float3 h_2 = float3((stretch.x * ((sin_ * _e19.x) + x_19)), (stretch.y * ((sin_ * _e19.y) + y_11)), (stretch.z * above));
     float n_11 = (1.0 / sqrt((((h_2.x * h_2.x) + (h_2.y * h_2.y)) + (h_2.z * h_2.z))));
     return (h_2 * n_11);
 }
@@ -789,12 +790,12 @@ float3 ms_ggx_sample_wm(float3 w_in, float2 alpha_7, float2 u_2)
         float _e45 = w_8.x;
         float _e49 = w_8.y;
         float _e54 = w_8.z;
-        float d_19 = (((_e42.x * _e45) + (_e42.y * _e49)) + (_e42.z * _e54));
+        float d_18 = (((_e42.x * _e45) + (_e42.y * _e49)) + (_e42.z * _e54));
         float _e58 = w_8.x;
         float _e61 = w_8.y;
         float _e65 = w_8.z;
         float l1_ = ((abs(_e58) + abs(_e61)) + abs(_e65));
-        if ((d_19 > (2.4e-7 * l1_))) {
+        if ((d_18 > (2.4e-7 * l1_))) {
             return _e42;
         }
         float3 _e71 = w_8;
@@ -1249,8 +1250,8 @@ float ms_bk_quantile(float u_7)
         const float _e43 = ms_bk_poly(_e34, _e41, _e25.y);
         ratio = _e43;
     } else {
-        float w_54 = min((-(log(q_3)) - 0.6931472), 127.99);
-        const float2 _e52 = ms_bk_segment(w_54, MS_BK_ERFINV_W_K0_, MS_BK_ERFINV_W_K1_);
+        float w_58 = min((-(log(q_3)) - 0.6931472), 127.99);
+        const float2 _e52 = ms_bk_segment(w_58, MS_BK_ERFINV_W_K0_, MS_BK_ERFINV_W_K1_);
         uint i_7 = (2u * naga_f2u32(_e52.x));
         float4 _e61 = asfloat(ms_tables.Load4((MS_BK_ERFINV_W_AT + i_7)*16));
         float4 _e68 = asfloat(ms_tables.Load4(((MS_BK_ERFINV_W_AT + i_7) + 1u)*16));
@@ -1279,8 +1280,8 @@ float ms_beckmann_d(float3 wm_6, float2 alpha_15)
 
     float z_11 = wm_6.z;
     float r_12 = (1.0 / (alpha_15.x * alpha_15.y));
-    float x_19 = ((wm_6.x * alpha_15.y) * r_12);
-    float y_11 = ((wm_6.y * alpha_15.x) * r_12);
+    float x_20 = ((wm_6.x * alpha_15.y) * r_12);
+    float y_12 = ((wm_6.y * alpha_15.x) * r_12);
     float z2_1 = (z_11 * z_11);
     if ((z_11 > 0.0)) {
         local_9 = (z2_1 > 0.0);
@@ -1291,7 +1292,7 @@ float ms_beckmann_d(float3 wm_6, float2 alpha_15)
     if (!(_e24)) {
         return 0.0;
     }
-    float e_5 = (((x_19 * x_19) + (y_11 * y_11)) / z2_1);
+    float e_5 = (((x_20 * x_20) + (y_12 * y_12)) / z2_1);
     if ((e_5 <= 80.0)) {
         return ((exp(-(e_5)) * r_12) / ((MS_PI * z2_1) * z2_1));
     }
@@ -1313,9 +1314,9 @@ float ms_beckmann_lambda_cot(float a_13)
 
 float ms_beckmann_lambda(float3 w_14, float2 alpha_16)
 {
-    float x_20 = (alpha_16.x * w_14.x);
-    float y_12 = (alpha_16.y * w_14.y);
-    float s_16 = sqrt(((x_20 * x_20) + (y_12 * y_12)));
+    float x_21 = (alpha_16.x * w_14.x);
+    float y_13 = (alpha_16.y * w_14.y);
+    float s_16 = sqrt(((x_21 * x_21) + (y_13 * y_13)));
     if (!((s_16 > 0.0))) {
         return 0.0;
     }
@@ -1630,12 +1631,12 @@ float ms_dg_lambda_table(float x_7)
 
 float ms_dg_lambda_ends(float u_12, float a_15)
 {
-    float x_21 = ((((0.5 * a_15) * a_15) * ((1.0 - u_12) * (1.0 + u_12))) / (u_12 * u_12));
-    if ((x_21 < 9.313226e-10)) {
-        if ((x_21 <= 0.0)) {
+    float x_22 = ((((0.5 * a_15) * a_15) * ((1.0 - u_12) * (1.0 + u_12))) / (u_12 * u_12));
+    if ((x_22 < 9.313226e-10)) {
+        if ((x_22 <= 0.0)) {
             return 0.0;
         }
-        return ((0.5 * x_21) * (0.42278433 - log((0.5 * x_21))));
+        return ((0.5 * x_22) * (0.42278433 - log((0.5 * x_22))));
     }
     float sx_2 = ((a_15 * sqrt(((0.5 * (1.0 - u_12)) * (1.0 + u_12)))) / u_12);
     float r_14 = (1.0 / (sx_2 * sx_2));
@@ -1649,10 +1650,10 @@ float ms_double_ggx_lambda(float3 w_19, float2 alpha_25)
     float a_16 = (float)0;
     bool local_15 = (bool)0;
 
-    float u_38 = abs(w_19.z);
+    float u_40 = abs(w_19.z);
     if ((alpha_25.x == alpha_25.y)) {
         float a_21 = alpha_25.x;
-        x_8 = ((((0.5 * a_21) * a_21) * ((1.0 - u_38) * (1.0 + u_38))) / (u_38 * u_38));
+        x_8 = ((((0.5 * a_21) * a_21) * ((1.0 - u_40) * (1.0 + u_40))) / (u_40 * u_40));
     } else {
         float sx_3 = (alpha_25.x * w_19.x);
         float sy_2 = (alpha_25.y * w_19.y);
@@ -1683,7 +1684,7 @@ float ms_double_ggx_lambda(float3 w_19, float2 alpha_25)
         a_16 = sqrt((((((alpha_25.x * alpha_25.x) * w_19.x) * w_19.x) + (((alpha_25.y * alpha_25.y) * w_19.y) * w_19.y)) / s2_1));
     }
     float _e82 = a_16;
-    const float _e83 = ms_dg_lambda_ends(u_38, _e82);
+    const float _e83 = ms_dg_lambda_ends(u_40, _e82);
     return _e83;
 }
 
@@ -1743,9 +1744,9 @@ float ms_double_ggx_d(float3 wm_9, float2 alpha_29)
 
     float z_14 = wm_9.z;
     float r_15 = (1.0 / (alpha_29.x * alpha_29.y));
-    float x_22 = ((wm_9.x * alpha_29.y) * r_15);
-    float y_13 = ((wm_9.y * alpha_29.x) * r_15);
-    float q_5 = ((x_22 * x_22) + (y_13 * y_13));
+    float x_23 = ((wm_9.x * alpha_29.y) * r_15);
+    float y_14 = ((wm_9.y * alpha_29.x) * r_15);
+    float q_5 = ((x_23 * x_23) + (y_14 * y_14));
     if (!((z_14 > 0.0))) {
         return ((z_14 != z_14) ? z_14 : 0.0);
     }
@@ -1959,10 +1960,10 @@ float ms_exponential_lambda(float3 w_24, float2 alpha_35)
     float a_17 = (float)0;
     bool local_20 = (bool)0;
 
-    float u_39 = abs(w_24.z);
+    float u_41 = abs(w_24.z);
     if ((alpha_35.x == alpha_35.y)) {
         float a_22 = alpha_35.x;
-        q_1 = (((4.0 * u_39) * u_39) / ((a_22 * a_22) * ((1.0 - u_39) * (1.0 + u_39))));
+        q_1 = (((4.0 * u_41) * u_41) / ((a_22 * a_22) * ((1.0 - u_41) * (1.0 + u_41))));
     } else {
         float sx_5 = (alpha_35.x * w_24.x);
         float sy_4 = (alpha_35.y * w_24.y);
@@ -1993,7 +1994,7 @@ float ms_exponential_lambda(float3 w_24, float2 alpha_35)
         a_17 = sqrt((((((alpha_35.x * alpha_35.x) * w_24.x) * w_24.x) + (((alpha_35.y * alpha_35.y) * w_24.y) * w_24.y)) / s2_4));
     }
     float _e83 = a_17;
-    const float _e92 = ms_exp_lambda_z(((u_39 + u_39) / (_e83 * sqrt(((1.0 - u_39) * (1.0 + u_39))))));
+    const float _e92 = ms_exp_lambda_z(((u_41 + u_41) / (_e83 * sqrt(((1.0 - u_41) * (1.0 + u_41))))));
     return _e92;
 }
 
@@ -2037,8 +2038,8 @@ float ms_exponential_d(float3 wm_12, float2 alpha_39)
 
     float z_16 = wm_12.z;
     float r_17 = (1.0 / (alpha_39.x * alpha_39.y));
-    float x_23 = ((wm_12.x * alpha_39.y) * r_17);
-    float y_14 = ((wm_12.y * alpha_39.x) * r_17);
+    float x_24 = ((wm_12.x * alpha_39.y) * r_17);
+    float y_15 = ((wm_12.y * alpha_39.x) * r_17);
     float z2_3 = (z_16 * z_16);
     if ((z_16 > 0.0)) {
         local_22 = (z2_3 > 0.0);
@@ -2049,7 +2050,7 @@ float ms_exponential_d(float3 wm_12, float2 alpha_39)
     if (!(_e24)) {
         return ((z_16 != z_16) ? z_16 : 0.0);
     }
-    float e_8 = ((2.0 * sqrt(((x_23 * x_23) + (y_14 * y_14)))) / z_16);
+    float e_8 = ((2.0 * sqrt(((x_24 * x_24) + (y_15 * y_15)))) / z_16);
     if ((e_8 <= 80.0)) {
         return (((2.0 * exp(-(e_8))) * r_17) / ((MS_PI * z2_3) * z2_3));
     }
@@ -2185,8 +2186,8 @@ float3 ms_exponential_sample_wm(float3 w_in_4, float2 alpha_43, float2 u_17)
             const float _e73 = ms_stream_next(state_9);
             float prod = ((1.0 - _e70) * (1.0 - _e73));
             float _e77 = v0_;
-            float d_20 = ((_e77 * total) - e_9);
-            if ((d_20 < 0.0)) {
+            float d_19 = ((_e77 * total) - e_9);
+            if ((d_19 < 0.0)) {
                 float r_19 = (-0.5 * log(prod));
                 float _e85 = v0_;
                 float turn = (_e85 * inv_p_1);
@@ -2207,7 +2208,7 @@ float3 ms_exponential_sample_wm(float3 w_in_4, float2 alpha_43, float2 u_17)
             } else {
                 const float _e108 = ms_stream_next(state_9);
                 float r_20 = (-0.5 * log((prod * (1.0 - _e108))));
-                float one_plus = (2.0 * (d_20 * inv_g));
+                float one_plus = (2.0 * (d_19 * inv_g));
                 float _e118 = v0_;
                 float one_minus = ((2.0 * (1.0 - _e118)) * (total * inv_g));
                 x_9 = (r_20 * sqrt(max((one_minus * one_plus), 0.0)));
@@ -2245,10 +2246,10 @@ float ms_shape_lambda_z(uint table, float z_2)
 {
     bool local_25 = (bool)0;
 
-    float4 head = asfloat(ms_tables.Load4(table*16));
-    int k1_2 = naga_f2i32(head.y);
+    float4 head_1 = asfloat(ms_tables.Load4(table*16));
+    int k1_2 = naga_f2i32(head_1.y);
     if ((z_2 >= 5.9604645e-8)) {
-        local_25 = (z_2 < exp2(head.y));
+        local_25 = (z_2 < exp2(head_1.y));
     } else {
         local_25 = false;
     }
@@ -2260,7 +2261,7 @@ float ms_shape_lambda_z(uint table, float z_2)
         float4 hi_4 = asfloat(ms_tables.Load4((i_9 + 1u)*16));
         float s_18 = _e18.y;
         float p_5 = ((((((((hi_4.x * s_18) + lo_5.w) * s_18) + lo_5.z) * s_18) + lo_5.y) * s_18) + lo_5.x);
-        if ((head.z > 0.5)) {
+        if ((head_1.z > 0.5)) {
             return p_5;
         }
         return exp2((p_5 * 0.00390625));
@@ -2269,7 +2270,7 @@ float ms_shape_lambda_z(uint table, float z_2)
         return z_2;
     }
     if ((z_2 < 5.9604645e-8)) {
-        return ((head.w / z_2) - 0.5);
+        return ((head_1.w / z_2) - 0.5);
     }
     float4 tail = asfloat(ms_tables.Load4((table + 1u)*16));
     if ((tail.x < 0.5)) {
@@ -2336,8 +2337,8 @@ float ms_ln_gamma_variate(float k_in, inout uint2 state_12)
         k_5 = (_e12 + 1.0);
     }
     float _e15 = k_5;
-    float d_21 = (_e15 - 0.33333334);
-    float c_22 = (1.0 / sqrt((9.0 * d_21)));
+    float d_20 = (_e15 - 0.33333334);
+    float c_22 = (1.0 / sqrt((9.0 * d_20)));
     uint2 loop_bound_5 = uint2(4294967295u, 4294967295u);
     bool loop_init_5 = true;
     while(true) {
@@ -2368,10 +2369,10 @@ float ms_ln_gamma_variate(float k_in, inout uint2 state_12)
             const float _e42 = ms_stream_next_positive(state_12);
             float _e48 = v_6;
             float _e51 = v_6;
-            if ((log(_e42) < (((((0.5 * _e29) * _e29) + d_21) - (d_21 * _e48)) + (d_21 * log(_e51))))) {
+            if ((log(_e42) < (((((0.5 * _e29) * _e29) + d_20) - (d_20 * _e48)) + (d_20 * log(_e51))))) {
                 float _e57 = v_6;
                 float _e60 = boost;
-                return ((log(d_21) + log(_e57)) + _e60);
+                return ((log(d_20) + log(_e57)) + _e60);
             }
         }
     }
@@ -2446,15 +2447,15 @@ float3 ms_beckmann_sample_stream_above(float3 v_7, float2 alpha_46, inout uint2 
     }
     const float _e75 = ms_stream_next(state_13);
     const float _e76 = ms_zig_normal(_e75, state_13);
-    float y_15 = (_e76 * 0.70710677);
+    float y_16 = (_e76 * 0.70710677);
     float _e80 = cp_2;
     float _e81 = x_10;
     float _e83 = sp_2;
-    float p_6 = (alpha_46.x * ((_e80 * _e81) - (_e83 * y_15)));
+    float p_6 = (alpha_46.x * ((_e80 * _e81) - (_e83 * y_16)));
     float _e88 = sp_2;
     float _e89 = x_10;
     float _e91 = cp_2;
-    float q_8 = (alpha_46.y * ((_e88 * _e89) + (_e91 * y_15)));
+    float q_8 = (alpha_46.y * ((_e88 * _e89) + (_e91 * y_16)));
     const float3 _e97 = ms_unit_normal(float3(p_6, q_8, 1.0));
     const float3 _e98 = ms_facing(_e97, v_7);
     return _e98;
@@ -2597,7 +2598,7 @@ float ms_mixture_g2_separable(uint table_5, float3 wo_16, float3 wi_16, float2 a
     return (_e4 * _e5);
 }
 
-float ms_mixture_pdf(uint table_6, float3 w_33, float3 wm_15, float2 alpha_52, float d_1)
+float ms_mixture_pdf(uint table_6, float3 w_33, float3 wm_15, float2 alpha_52, float ln_d)
 {
     float c_5 = (float)0;
     bool local_30 = (bool)0;
@@ -2621,7 +2622,7 @@ float ms_mixture_pdf(uint table_6, float3 w_33, float3 wm_15, float2 alpha_52, f
     }
     const float _e25 = ms_mixture_g1_(table_6, w_33, alpha_52);
     float _e26 = c_5;
-    return (((_e25 * _e26) * d_1) / z_19);
+    return exp((log((_e25 * (_e26 / z_19))) + ln_d));
 }
 
 float3 ms_mixture_sample_dcos_wm(uint table_7, float2 alpha_53, float2 u_20)
@@ -2645,17 +2646,16 @@ float3 ms_mixture_sample_dcos_wm(uint table_7, float2 alpha_53, float2 u_20)
     return _e24.wm;
 }
 
-float ms_mixture_d_from_ln_profile(float ln_f, float3 wm_16, float2 alpha_54)
+float ms_mixture_ln_d(float ln_f, float3 wm_16, float2 alpha_54)
 {
-    float ln_z = log(wm_16.z);
-    return exp(((ln_f - log((alpha_54.x * alpha_54.y))) - (4.0 * ln_z)));
+    return ((ln_f - log((alpha_54.x * alpha_54.y))) - (4.0 * log(wm_16.z)));
 }
 
 float ms_mixture_r2_(float3 wm_17, float2 alpha_55)
 {
-    float x_24 = (wm_17.x / alpha_55.x);
-    float y_16 = (wm_17.y / alpha_55.y);
-    return (((x_24 * x_24) + (y_16 * y_16)) / (wm_17.z * wm_17.z));
+    float x_25 = (wm_17.x / alpha_55.x);
+    float y_17 = (wm_17.y / alpha_55.y);
+    return (((x_25 * x_25) + (y_17 * y_17)) / (wm_17.z * wm_17.z));
 }
 
 float ms_k0e(float z_4)
@@ -2722,9 +2722,9 @@ float ms_student_t_d(float3 wm_18, float2 alpha_56, uint table_9)
         return ((z_20 != z_20) ? z_20 : 0.0);
     }
     const float _e10 = ms_student_t_gamma(table_9);
-    float x_25 = (wm_18.x / alpha_56.x);
-    float y_17 = (wm_18.y / alpha_56.y);
-    float q_9 = ((x_25 * x_25) + (y_17 * y_17));
+    float x_26 = (wm_18.x / alpha_56.x);
+    float y_18 = (wm_18.y / alpha_56.y);
+    float q_9 = ((x_26 * x_26) + (y_18 * y_18));
     float z2_4 = (z_20 * z_20);
     if ((z_20 > 1e-9)) {
         float t_12 = (q_9 / (z2_4 * (_e10 - 1.0)));
@@ -2736,9 +2736,9 @@ float ms_student_t_d(float3 wm_18, float2 alpha_56, uint table_9)
         }
         return exp((-(e_10) - log(norm)));
     }
-    float ln_z_1 = log(z_20);
-    float ln_d = (((-(_e10) * ((log(q_9) - (2.0 * ln_z_1)) - log((_e10 - 1.0)))) - (4.0 * ln_z_1)) - log(((MS_PI * alpha_56.x) * alpha_56.y)));
-    return exp(ln_d);
+    float ln_z = log(z_20);
+    float ln_d_1 = (((-(_e10) * ((log(q_9) - (2.0 * ln_z)) - log((_e10 - 1.0)))) - (4.0 * ln_z)) - log(((MS_PI * alpha_56.x) * alpha_56.y)));
+    return exp(ln_d_1);
 }
 
 float ms_student_t_lambda(float3 w_34, float2 alpha_57, uint table_10)
@@ -2791,8 +2791,8 @@ float ms_student_t_pdf(float3 w_36, float3 wm_19, float2 alpha_61, uint table_14
     }
     const float _e24 = ms_student_t_g1_(w_36, alpha_61, table_14);
     float _e25 = c_6;
-    const float _e27 = ms_student_t_d(wm_19, alpha_61, table_14);
-    return (((_e24 * _e25) * _e27) / z_21);
+    const float _e28 = ms_student_t_d(wm_19, alpha_61, table_14);
+    return ((_e24 * (_e25 / z_21)) * _e28);
 }
 
 float ms_student_t_pdf_dcos(float3 wm_20, float2 alpha_62, uint table_15)
@@ -2841,74 +2841,83 @@ float ms_ei_ln_profile(float y_4)
     return ((log(_e1) - y_4) - 1.14473);
 }
 
-float ms_ei_d(float3 wm_21, float2 alpha_65)
+float ms_ei_ln_d(float3 wm_21, float2 alpha_65)
 {
     if (!((wm_21.z > 0.0))) {
-        return ((wm_21.z != wm_21.z) ? wm_21.z : 0.0);
+        return ((wm_21.z != wm_21.z) ? wm_21.z : -1e30);
     }
     const float _e12 = ms_mixture_r2_(wm_21, alpha_65);
     if ((_e12 == 0.0)) {
-        const float _e15 = ms_inf();
-        return _e15;
+        return 1e30;
     }
     const float _e16 = ms_ei_ln_profile(_e12);
-    const float _e17 = ms_mixture_d_from_ln_profile(_e16, wm_21, alpha_65);
+    const float _e17 = ms_mixture_ln_d(_e16, wm_21, alpha_65);
     return _e17;
 }
 
-float ms_ei_lambda(float3 w_38, float2 alpha_66, uint table_18)
+float ms_ei_d(float3 wm_22, float2 alpha_66)
 {
-    const float _e3 = ms_shape_lambda(table_18, w_38, alpha_66);
+    const float _e2 = ms_ei_ln_d(wm_22, alpha_66);
+    if ((_e2 >= 1e30)) {
+        const float _e5 = ms_inf();
+        return _e5;
+    }
+    return exp(_e2);
+}
+
+float ms_ei_lambda(float3 w_38, float2 alpha_67, uint table_18)
+{
+    const float _e3 = ms_shape_lambda(table_18, w_38, alpha_67);
     return _e3;
 }
 
-float ms_ei_g1_(float3 w_39, float2 alpha_67, uint table_19)
+float ms_ei_g1_(float3 w_39, float2 alpha_68, uint table_19)
 {
-    const float _e3 = ms_mixture_g1_(table_19, w_39, alpha_67);
+    const float _e3 = ms_mixture_g1_(table_19, w_39, alpha_68);
     return _e3;
 }
 
-float ms_ei_g2_(float3 wo_19, float3 wi_19, float2 alpha_68, uint table_20)
+float ms_ei_g2_(float3 wo_19, float3 wi_19, float2 alpha_69, uint table_20)
 {
-    const float _e4 = ms_mixture_g2_(table_20, wo_19, wi_19, alpha_68);
+    const float _e4 = ms_mixture_g2_(table_20, wo_19, wi_19, alpha_69);
     return _e4;
 }
 
-float ms_ei_g2_separable(float3 wo_20, float3 wi_20, float2 alpha_69, uint table_21)
+float ms_ei_g2_separable(float3 wo_20, float3 wi_20, float2 alpha_70, uint table_21)
 {
-    const float _e4 = ms_mixture_g2_separable(table_21, wo_20, wi_20, alpha_69);
+    const float _e4 = ms_mixture_g2_separable(table_21, wo_20, wi_20, alpha_70);
     return _e4;
 }
 
-float ms_ei_pdf(float3 w_40, float3 wm_22, float2 alpha_70, uint table_22)
+float ms_ei_pdf(float3 w_40, float3 wm_23, float2 alpha_71, uint table_22)
 {
-    const float _e4 = ms_ei_d(wm_22, alpha_70);
-    const float _e5 = ms_mixture_pdf(table_22, w_40, wm_22, alpha_70, _e4);
+    const float _e4 = ms_ei_ln_d(wm_23, alpha_71);
+    const float _e5 = ms_mixture_pdf(table_22, w_40, wm_23, alpha_71, _e4);
     return _e5;
 }
 
-float ms_ei_pdf_dcos(float3 wm_23, float2 alpha_71)
+float ms_ei_pdf_dcos(float3 wm_24, float2 alpha_72)
 {
-    if (!((wm_23.z > 0.0))) {
+    if (!((wm_24.z > 0.0))) {
         return 0.0;
     }
-    const float _e7 = ms_ei_d(wm_23, alpha_71);
-    return (_e7 * wm_23.z);
+    const float _e7 = ms_ei_d(wm_24, alpha_72);
+    return (_e7 * wm_24.z);
 }
 
-MsSample ms_ei_sample_dcos(float2 alpha_72, float2 u_23, uint table_23)
+MsSample ms_ei_sample_dcos(float2 alpha_73, float2 u_23, uint table_23)
 {
-    const float3 _e3 = ms_mixture_sample_dcos_wm(table_23, alpha_72, u_23);
-    const float _e4 = ms_ei_pdf_dcos(_e3, alpha_72);
+    const float3 _e3 = ms_mixture_sample_dcos_wm(table_23, alpha_73, u_23);
+    const float _e4 = ms_ei_pdf_dcos(_e3, alpha_73);
     const MsSample mssample_11 = ConstructMsSample(_e3, _e4);
     return mssample_11;
 }
 
-MsSample ms_ei_sample(float3 w_41, float2 alpha_73, float2 u_24, uint table_24)
+MsSample ms_ei_sample(float3 w_41, float2 alpha_74, float2 u_24, uint table_24)
 {
-    const float3 _e4 = ms_mixture_sample_wm(table_24, w_41, alpha_73, u_24);
+    const float3 _e4 = ms_mixture_sample_wm(table_24, w_41, alpha_74, u_24);
     const float3 _e5 = ms_unit(w_41);
-    const float _e6 = ms_ei_pdf(_e5, _e4, alpha_73, table_24);
+    const float _e6 = ms_ei_pdf(_e5, _e4, alpha_74, table_24);
     const MsSample mssample_12 = ConstructMsSample(_e4, _e6);
     return mssample_12;
 }
@@ -2920,74 +2929,83 @@ float ms_erfc_ln_profile(float y_5)
     return (log((_e2 / (3.5449078 * r_24))) - y_5);
 }
 
-float ms_erfc_d(float3 wm_24, float2 alpha_74)
+float ms_erfc_ln_d(float3 wm_25, float2 alpha_75)
 {
-    if (!((wm_24.z > 0.0))) {
-        return ((wm_24.z != wm_24.z) ? wm_24.z : 0.0);
+    if (!((wm_25.z > 0.0))) {
+        return ((wm_25.z != wm_25.z) ? wm_25.z : -1e30);
     }
-    const float _e12 = ms_mixture_r2_(wm_24, alpha_74);
+    const float _e12 = ms_mixture_r2_(wm_25, alpha_75);
     if ((_e12 == 0.0)) {
-        const float _e15 = ms_inf();
-        return _e15;
+        return 1e30;
     }
     const float _e16 = ms_erfc_ln_profile(_e12);
-    const float _e17 = ms_mixture_d_from_ln_profile(_e16, wm_24, alpha_74);
+    const float _e17 = ms_mixture_ln_d(_e16, wm_25, alpha_75);
     return _e17;
 }
 
-float ms_erfc_lambda(float3 w_42, float2 alpha_75, uint table_25)
+float ms_erfc_d(float3 wm_26, float2 alpha_76)
 {
-    const float _e3 = ms_shape_lambda(table_25, w_42, alpha_75);
+    const float _e2 = ms_erfc_ln_d(wm_26, alpha_76);
+    if ((_e2 >= 1e30)) {
+        const float _e5 = ms_inf();
+        return _e5;
+    }
+    return exp(_e2);
+}
+
+float ms_erfc_lambda(float3 w_42, float2 alpha_77, uint table_25)
+{
+    const float _e3 = ms_shape_lambda(table_25, w_42, alpha_77);
     return _e3;
 }
 
-float ms_erfc_g1_(float3 w_43, float2 alpha_76, uint table_26)
+float ms_erfc_g1_(float3 w_43, float2 alpha_78, uint table_26)
 {
-    const float _e3 = ms_mixture_g1_(table_26, w_43, alpha_76);
+    const float _e3 = ms_mixture_g1_(table_26, w_43, alpha_78);
     return _e3;
 }
 
-float ms_erfc_g2_(float3 wo_21, float3 wi_21, float2 alpha_77, uint table_27)
+float ms_erfc_g2_(float3 wo_21, float3 wi_21, float2 alpha_79, uint table_27)
 {
-    const float _e4 = ms_mixture_g2_(table_27, wo_21, wi_21, alpha_77);
+    const float _e4 = ms_mixture_g2_(table_27, wo_21, wi_21, alpha_79);
     return _e4;
 }
 
-float ms_erfc_g2_separable(float3 wo_22, float3 wi_22, float2 alpha_78, uint table_28)
+float ms_erfc_g2_separable(float3 wo_22, float3 wi_22, float2 alpha_80, uint table_28)
 {
-    const float _e4 = ms_mixture_g2_separable(table_28, wo_22, wi_22, alpha_78);
+    const float _e4 = ms_mixture_g2_separable(table_28, wo_22, wi_22, alpha_80);
     return _e4;
 }
 
-float ms_erfc_pdf(float3 w_44, float3 wm_25, float2 alpha_79, uint table_29)
+float ms_erfc_pdf(float3 w_44, float3 wm_27, float2 alpha_81, uint table_29)
 {
-    const float _e4 = ms_erfc_d(wm_25, alpha_79);
-    const float _e5 = ms_mixture_pdf(table_29, w_44, wm_25, alpha_79, _e4);
+    const float _e4 = ms_erfc_ln_d(wm_27, alpha_81);
+    const float _e5 = ms_mixture_pdf(table_29, w_44, wm_27, alpha_81, _e4);
     return _e5;
 }
 
-float ms_erfc_pdf_dcos(float3 wm_26, float2 alpha_80)
+float ms_erfc_pdf_dcos(float3 wm_28, float2 alpha_82)
 {
-    if (!((wm_26.z > 0.0))) {
+    if (!((wm_28.z > 0.0))) {
         return 0.0;
     }
-    const float _e7 = ms_erfc_d(wm_26, alpha_80);
-    return (_e7 * wm_26.z);
+    const float _e7 = ms_erfc_d(wm_28, alpha_82);
+    return (_e7 * wm_28.z);
 }
 
-MsSample ms_erfc_sample_dcos(float2 alpha_81, float2 u_25, uint table_30)
+MsSample ms_erfc_sample_dcos(float2 alpha_83, float2 u_25, uint table_30)
 {
-    const float3 _e3 = ms_mixture_sample_dcos_wm(table_30, alpha_81, u_25);
-    const float _e4 = ms_erfc_pdf_dcos(_e3, alpha_81);
+    const float3 _e3 = ms_mixture_sample_dcos_wm(table_30, alpha_83, u_25);
+    const float _e4 = ms_erfc_pdf_dcos(_e3, alpha_83);
     const MsSample mssample_13 = ConstructMsSample(_e3, _e4);
     return mssample_13;
 }
 
-MsSample ms_erfc_sample(float3 w_45, float2 alpha_82, float2 u_26, uint table_31)
+MsSample ms_erfc_sample(float3 w_45, float2 alpha_84, float2 u_26, uint table_31)
 {
-    const float3 _e4 = ms_mixture_sample_wm(table_31, w_45, alpha_82, u_26);
+    const float3 _e4 = ms_mixture_sample_wm(table_31, w_45, alpha_84, u_26);
     const float3 _e5 = ms_unit(w_45);
-    const float _e6 = ms_erfc_pdf(_e5, _e4, alpha_82, table_31);
+    const float _e6 = ms_erfc_pdf(_e5, _e4, alpha_84, table_31);
     const MsSample mssample_14 = ConstructMsSample(_e4, _e6);
     return mssample_14;
 }
@@ -2999,369 +3017,529 @@ float ms_k0_ln_profile(float y_6)
     return (log(((2.0 * _e4) / MS_PI)) - z_22);
 }
 
-float ms_k0_d(float3 wm_27, float2 alpha_83)
+float ms_k0_ln_d(float3 wm_29, float2 alpha_85)
 {
-    if (!((wm_27.z > 0.0))) {
-        return ((wm_27.z != wm_27.z) ? wm_27.z : 0.0);
+    if (!((wm_29.z > 0.0))) {
+        return ((wm_29.z != wm_29.z) ? wm_29.z : -1e30);
     }
-    const float _e12 = ms_mixture_r2_(wm_27, alpha_83);
+    const float _e12 = ms_mixture_r2_(wm_29, alpha_85);
     if ((_e12 == 0.0)) {
-        const float _e15 = ms_inf();
-        return _e15;
+        return 1e30;
     }
     const float _e16 = ms_k0_ln_profile(_e12);
-    const float _e17 = ms_mixture_d_from_ln_profile(_e16, wm_27, alpha_83);
+    const float _e17 = ms_mixture_ln_d(_e16, wm_29, alpha_85);
     return _e17;
 }
 
-float ms_k0_lambda(float3 w_46, float2 alpha_84, uint table_32)
+float ms_k0_d(float3 wm_30, float2 alpha_86)
 {
-    const float _e3 = ms_shape_lambda(table_32, w_46, alpha_84);
+    const float _e2 = ms_k0_ln_d(wm_30, alpha_86);
+    if ((_e2 >= 1e30)) {
+        const float _e5 = ms_inf();
+        return _e5;
+    }
+    return exp(_e2);
+}
+
+float ms_k0_lambda(float3 w_46, float2 alpha_87, uint table_32)
+{
+    const float _e3 = ms_shape_lambda(table_32, w_46, alpha_87);
     return _e3;
 }
 
-float ms_k0_g1_(float3 w_47, float2 alpha_85, uint table_33)
+float ms_k0_g1_(float3 w_47, float2 alpha_88, uint table_33)
 {
-    const float _e3 = ms_mixture_g1_(table_33, w_47, alpha_85);
+    const float _e3 = ms_mixture_g1_(table_33, w_47, alpha_88);
     return _e3;
 }
 
-float ms_k0_g2_(float3 wo_23, float3 wi_23, float2 alpha_86, uint table_34)
+float ms_k0_g2_(float3 wo_23, float3 wi_23, float2 alpha_89, uint table_34)
 {
-    const float _e4 = ms_mixture_g2_(table_34, wo_23, wi_23, alpha_86);
+    const float _e4 = ms_mixture_g2_(table_34, wo_23, wi_23, alpha_89);
     return _e4;
 }
 
-float ms_k0_g2_separable(float3 wo_24, float3 wi_24, float2 alpha_87, uint table_35)
+float ms_k0_g2_separable(float3 wo_24, float3 wi_24, float2 alpha_90, uint table_35)
 {
-    const float _e4 = ms_mixture_g2_separable(table_35, wo_24, wi_24, alpha_87);
+    const float _e4 = ms_mixture_g2_separable(table_35, wo_24, wi_24, alpha_90);
     return _e4;
 }
 
-float ms_k0_pdf(float3 w_48, float3 wm_28, float2 alpha_88, uint table_36)
+float ms_k0_pdf(float3 w_48, float3 wm_31, float2 alpha_91, uint table_36)
 {
-    const float _e4 = ms_k0_d(wm_28, alpha_88);
-    const float _e5 = ms_mixture_pdf(table_36, w_48, wm_28, alpha_88, _e4);
+    const float _e4 = ms_k0_ln_d(wm_31, alpha_91);
+    const float _e5 = ms_mixture_pdf(table_36, w_48, wm_31, alpha_91, _e4);
     return _e5;
 }
 
-float ms_k0_pdf_dcos(float3 wm_29, float2 alpha_89)
-{
-    if (!((wm_29.z > 0.0))) {
-        return 0.0;
-    }
-    const float _e7 = ms_k0_d(wm_29, alpha_89);
-    return (_e7 * wm_29.z);
-}
-
-MsSample ms_k0_sample_dcos(float2 alpha_90, float2 u_27, uint table_37)
-{
-    const float3 _e3 = ms_mixture_sample_dcos_wm(table_37, alpha_90, u_27);
-    const float _e4 = ms_k0_pdf_dcos(_e3, alpha_90);
-    const MsSample mssample_15 = ConstructMsSample(_e3, _e4);
-    return mssample_15;
-}
-
-MsSample ms_k0_sample(float3 w_49, float2 alpha_91, float2 u_28, uint table_38)
-{
-    const float3 _e4 = ms_mixture_sample_wm(table_38, w_49, alpha_91, u_28);
-    const float3 _e5 = ms_unit(w_49);
-    const float _e6 = ms_k0_pdf(_e5, _e4, alpha_91, table_38);
-    const MsSample mssample_16 = ConstructMsSample(_e4, _e6);
-    return mssample_16;
-}
-
-float ms_d(MsMicrofacet mf, float3 wm_30)
-{
-    if ((mf.ndf == MS_NDF_GGX)) {
-        const float _e6 = ms_ggx_d(wm_30, mf.alpha);
-        return _e6;
-    }
-    if ((mf.ndf == MS_NDF_BECKMANN)) {
-        const float _e11 = ms_beckmann_d(wm_30, mf.alpha);
-        return _e11;
-    }
-    if ((mf.ndf == MS_NDF_DOUBLE_GGX)) {
-        const float _e16 = ms_double_ggx_d(wm_30, mf.alpha);
-        return _e16;
-    }
-    if ((mf.ndf == MS_NDF_EXPONENTIAL)) {
-        const float _e21 = ms_exponential_d(wm_30, mf.alpha);
-        return _e21;
-    }
-    if ((mf.ndf == MS_NDF_STUDENT_T)) {
-        const float _e27 = ms_student_t_d(wm_30, mf.alpha, mf.table);
-        return _e27;
-    }
-    if ((mf.ndf == MS_NDF_EI)) {
-        const float _e32 = ms_ei_d(wm_30, mf.alpha);
-        return _e32;
-    }
-    if ((mf.ndf == MS_NDF_ERFC)) {
-        const float _e37 = ms_erfc_d(wm_30, mf.alpha);
-        return _e37;
-    }
-    if ((mf.ndf == MS_NDF_K0_)) {
-        const float _e42 = ms_k0_d(wm_30, mf.alpha);
-        return _e42;
-    }
-    return 0.0;
-}
-
-float ms_lambda(MsMicrofacet mf_1, float3 w_50)
-{
-    if ((mf_1.ndf == MS_NDF_GGX)) {
-        const float _e6 = ms_ggx_lambda(w_50, mf_1.alpha);
-        return _e6;
-    }
-    if ((mf_1.ndf == MS_NDF_BECKMANN)) {
-        const float _e11 = ms_beckmann_lambda(w_50, mf_1.alpha);
-        return _e11;
-    }
-    if ((mf_1.ndf == MS_NDF_DOUBLE_GGX)) {
-        const float _e16 = ms_double_ggx_lambda(w_50, mf_1.alpha);
-        return _e16;
-    }
-    if ((mf_1.ndf == MS_NDF_EXPONENTIAL)) {
-        const float _e21 = ms_exponential_lambda(w_50, mf_1.alpha);
-        return _e21;
-    }
-    if ((mf_1.ndf == MS_NDF_STUDENT_T)) {
-        const float _e27 = ms_student_t_lambda(w_50, mf_1.alpha, mf_1.table);
-        return _e27;
-    }
-    if ((mf_1.ndf == MS_NDF_EI)) {
-        const float _e33 = ms_ei_lambda(w_50, mf_1.alpha, mf_1.table);
-        return _e33;
-    }
-    if ((mf_1.ndf == MS_NDF_ERFC)) {
-        const float _e39 = ms_erfc_lambda(w_50, mf_1.alpha, mf_1.table);
-        return _e39;
-    }
-    if ((mf_1.ndf == MS_NDF_K0_)) {
-        const float _e45 = ms_k0_lambda(w_50, mf_1.alpha, mf_1.table);
-        return _e45;
-    }
-    return 0.0;
-}
-
-float ms_g1_(MsMicrofacet mf_2, float3 w_51)
-{
-    if ((mf_2.ndf == MS_NDF_GGX)) {
-        const float _e6 = ms_ggx_g1_(w_51, mf_2.alpha);
-        return _e6;
-    }
-    if ((mf_2.ndf == MS_NDF_BECKMANN)) {
-        const float _e11 = ms_beckmann_g1_(w_51, mf_2.alpha);
-        return _e11;
-    }
-    if ((mf_2.ndf == MS_NDF_DOUBLE_GGX)) {
-        const float _e16 = ms_double_ggx_g1_(w_51, mf_2.alpha);
-        return _e16;
-    }
-    if ((mf_2.ndf == MS_NDF_EXPONENTIAL)) {
-        const float _e21 = ms_exponential_g1_(w_51, mf_2.alpha);
-        return _e21;
-    }
-    if ((mf_2.ndf == MS_NDF_STUDENT_T)) {
-        const float _e27 = ms_student_t_g1_(w_51, mf_2.alpha, mf_2.table);
-        return _e27;
-    }
-    if ((mf_2.ndf == MS_NDF_EI)) {
-        const float _e33 = ms_ei_g1_(w_51, mf_2.alpha, mf_2.table);
-        return _e33;
-    }
-    if ((mf_2.ndf == MS_NDF_ERFC)) {
-        const float _e39 = ms_erfc_g1_(w_51, mf_2.alpha, mf_2.table);
-        return _e39;
-    }
-    if ((mf_2.ndf == MS_NDF_K0_)) {
-        const float _e45 = ms_k0_g1_(w_51, mf_2.alpha, mf_2.table);
-        return _e45;
-    }
-    return 0.0;
-}
-
-float ms_g2_(MsMicrofacet mf_3, float3 wo_25, float3 wi_25)
-{
-    if ((mf_3.ndf == MS_NDF_GGX)) {
-        const float _e7 = ms_ggx_g2_(wo_25, wi_25, mf_3.alpha);
-        return _e7;
-    }
-    if ((mf_3.ndf == MS_NDF_BECKMANN)) {
-        const float _e12 = ms_beckmann_g2_(wo_25, wi_25, mf_3.alpha);
-        return _e12;
-    }
-    if ((mf_3.ndf == MS_NDF_DOUBLE_GGX)) {
-        const float _e17 = ms_double_ggx_g2_(wo_25, wi_25, mf_3.alpha);
-        return _e17;
-    }
-    if ((mf_3.ndf == MS_NDF_EXPONENTIAL)) {
-        const float _e22 = ms_exponential_g2_(wo_25, wi_25, mf_3.alpha);
-        return _e22;
-    }
-    if ((mf_3.ndf == MS_NDF_STUDENT_T)) {
-        const float _e28 = ms_student_t_g2_(wo_25, wi_25, mf_3.alpha, mf_3.table);
-        return _e28;
-    }
-    if ((mf_3.ndf == MS_NDF_EI)) {
-        const float _e34 = ms_ei_g2_(wo_25, wi_25, mf_3.alpha, mf_3.table);
-        return _e34;
-    }
-    if ((mf_3.ndf == MS_NDF_ERFC)) {
-        const float _e40 = ms_erfc_g2_(wo_25, wi_25, mf_3.alpha, mf_3.table);
-        return _e40;
-    }
-    if ((mf_3.ndf == MS_NDF_K0_)) {
-        const float _e46 = ms_k0_g2_(wo_25, wi_25, mf_3.alpha, mf_3.table);
-        return _e46;
-    }
-    return 0.0;
-}
-
-float ms_g2_separable(MsMicrofacet mf_4, float3 wo_26, float3 wi_26)
-{
-    const float _e3 = ms_g1_(mf_4, wo_26);
-    const float _e4 = ms_g1_(mf_4, wi_26);
-    return (_e3 * _e4);
-}
-
-float ms_pdf(MsMicrofacet mf_5, float3 w_52, float3 wm_31)
-{
-    if ((mf_5.ndf == MS_NDF_GGX)) {
-        const float _e7 = ms_ggx_pdf(w_52, wm_31, mf_5.alpha);
-        return _e7;
-    }
-    if ((mf_5.ndf == MS_NDF_BECKMANN)) {
-        const float _e12 = ms_beckmann_pdf(w_52, wm_31, mf_5.alpha);
-        return _e12;
-    }
-    if ((mf_5.ndf == MS_NDF_DOUBLE_GGX)) {
-        const float _e17 = ms_double_ggx_pdf(w_52, wm_31, mf_5.alpha);
-        return _e17;
-    }
-    if ((mf_5.ndf == MS_NDF_EXPONENTIAL)) {
-        const float _e22 = ms_exponential_pdf(w_52, wm_31, mf_5.alpha);
-        return _e22;
-    }
-    if ((mf_5.ndf == MS_NDF_STUDENT_T)) {
-        const float _e28 = ms_student_t_pdf(w_52, wm_31, mf_5.alpha, mf_5.table);
-        return _e28;
-    }
-    if ((mf_5.ndf == MS_NDF_EI)) {
-        const float _e34 = ms_ei_pdf(w_52, wm_31, mf_5.alpha, mf_5.table);
-        return _e34;
-    }
-    if ((mf_5.ndf == MS_NDF_ERFC)) {
-        const float _e40 = ms_erfc_pdf(w_52, wm_31, mf_5.alpha, mf_5.table);
-        return _e40;
-    }
-    if ((mf_5.ndf == MS_NDF_K0_)) {
-        const float _e46 = ms_k0_pdf(w_52, wm_31, mf_5.alpha, mf_5.table);
-        return _e46;
-    }
-    return 0.0;
-}
-
-float ms_pdf_dcos(MsMicrofacet mf_6, float3 wm_32)
+float ms_k0_pdf_dcos(float3 wm_32, float2 alpha_92)
 {
     if (!((wm_32.z > 0.0))) {
         return 0.0;
     }
-    const float _e7 = ms_d(mf_6, wm_32);
+    const float _e7 = ms_k0_d(wm_32, alpha_92);
     return (_e7 * wm_32.z);
 }
 
-MsSample ms_sample(MsMicrofacet mf_7, float3 w_53, float2 u_29)
+MsSample ms_k0_sample_dcos(float2 alpha_93, float2 u_27, uint table_37)
 {
-    if ((mf_7.ndf == MS_NDF_GGX)) {
-        const MsSample _e7 = ms_ggx_sample(w_53, mf_7.alpha, u_29);
-        const MsSample mssample_17 = _e7;
-        return mssample_17;
-    }
-    if ((mf_7.ndf == MS_NDF_BECKMANN)) {
-        const MsSample _e12 = ms_beckmann_sample(w_53, mf_7.alpha, u_29);
-        const MsSample mssample_18 = _e12;
-        return mssample_18;
-    }
-    if ((mf_7.ndf == MS_NDF_DOUBLE_GGX)) {
-        const MsSample _e17 = ms_double_ggx_sample(w_53, mf_7.alpha, u_29);
-        const MsSample mssample_19 = _e17;
-        return mssample_19;
-    }
-    if ((mf_7.ndf == MS_NDF_EXPONENTIAL)) {
-        const MsSample _e22 = ms_exponential_sample(w_53, mf_7.alpha, u_29);
-        const MsSample mssample_20 = _e22;
-        return mssample_20;
-    }
-    if ((mf_7.ndf == MS_NDF_STUDENT_T)) {
-        const MsSample _e28 = ms_student_t_sample(w_53, mf_7.alpha, u_29, mf_7.table);
-        const MsSample mssample_21 = _e28;
-        return mssample_21;
-    }
-    if ((mf_7.ndf == MS_NDF_EI)) {
-        const MsSample _e34 = ms_ei_sample(w_53, mf_7.alpha, u_29, mf_7.table);
-        const MsSample mssample_22 = _e34;
-        return mssample_22;
-    }
-    if ((mf_7.ndf == MS_NDF_ERFC)) {
-        const MsSample _e40 = ms_erfc_sample(w_53, mf_7.alpha, u_29, mf_7.table);
-        const MsSample mssample_23 = _e40;
-        return mssample_23;
-    }
-    if ((mf_7.ndf == MS_NDF_K0_)) {
-        const MsSample _e46 = ms_k0_sample(w_53, mf_7.alpha, u_29, mf_7.table);
-        const MsSample mssample_24 = _e46;
-        return mssample_24;
-    }
-    const MsSample mssample_25 = ConstructMsSample(float3(0.0, 0.0, 1.0), 0.0);
-    return mssample_25;
+    const float3 _e3 = ms_mixture_sample_dcos_wm(table_37, alpha_93, u_27);
+    const float _e4 = ms_k0_pdf_dcos(_e3, alpha_93);
+    const MsSample mssample_15 = ConstructMsSample(_e3, _e4);
+    return mssample_15;
 }
 
-MsSample ms_sample_dcos(MsMicrofacet mf_8, float2 u_30)
+MsSample ms_k0_sample(float3 w_49, float2 alpha_94, float2 u_28, uint table_38)
 {
-    if ((mf_8.ndf == MS_NDF_GGX)) {
-        const MsSample _e6 = ms_ggx_sample_dcos(mf_8.alpha, u_30);
-        const MsSample mssample_26 = _e6;
+    const float3 _e4 = ms_mixture_sample_wm(table_38, w_49, alpha_94, u_28);
+    const float3 _e5 = ms_unit(w_49);
+    const float _e6 = ms_k0_pdf(_e5, _e4, alpha_94, table_38);
+    const MsSample mssample_16 = ConstructMsSample(_e4, _e6);
+    return mssample_16;
+}
+
+float ms_bessel_k_h(uint at_1, float4 head, float x_12)
+{
+    const float2 _e7 = ms_bk_segment(x_12, naga_f2i32(head.y), naga_f2i32(head.z));
+    uint i_12 = ((at_1 + 1u) + (2u * naga_f2u32(_e7.x)));
+    float4 _e17 = asfloat(ms_tables.Load4(i_12*16));
+    float4 _e22 = asfloat(ms_tables.Load4((i_12 + 1u)*16));
+    const float _e24 = ms_bk_poly(_e17, _e22, _e7.y);
+    return _e24;
+}
+
+float ms_bessel_k_ln_profile(uint table_39, float y_7)
+{
+    float _e7 = asfloat(ms_tables.Load(12+(table_39 + 2u)*16));
+    uint at_2 = (table_39 + naga_f2u32(_e7));
+    float4 head_2 = asfloat(ms_tables.Load4(at_2*16));
+    float x_27 = sqrt(y_7);
+    if (!((x_27 < exp2(head_2.z)))) {
+        return ((x_27 != x_27) ? x_27 : -1e30);
+    }
+    float x0_1 = exp2(head_2.y);
+    if ((x_27 < x0_1)) {
+        const float _e24 = ms_bessel_k_h(at_2, head_2, x0_1);
+        float h0_ = (_e24 - (2.0 * x0_1));
+        if ((head_2.x < 0.0)) {
+            return (h0_ + ((2.0 * head_2.x) * log((x_27 / x0_1))));
+        }
+        if ((head_2.x == 0.0)) {
+            return (h0_ + log((log(x_27) / log(x0_1))));
+        }
+        return h0_;
+    }
+    const float _e46 = ms_bessel_k_h(at_2, head_2, x_27);
+    return (_e46 - (2.0 * x_27));
+}
+
+float ms_bessel_k_ln_d(float3 wm_33, float2 alpha_95, uint table_40)
+{
+    if (!((wm_33.z > 0.0))) {
+        return ((wm_33.z != wm_33.z) ? wm_33.z : -1e30);
+    }
+    const float _e13 = ms_mixture_r2_(wm_33, alpha_95);
+    if ((_e13 == 0.0)) {
+        float _e19 = asfloat(ms_tables.Load(0+table_40*16));
+        float nu = (_e19 - 1.0);
+        if ((nu > 0.0)) {
+            return (-(log((((MS_PI * nu) * alpha_95.x) * alpha_95.y))) - (4.0 * log(wm_33.z)));
+        }
+        return 1e30;
+    }
+    const float _e38 = ms_bessel_k_ln_profile(table_40, _e13);
+    const float _e39 = ms_mixture_ln_d(_e38, wm_33, alpha_95);
+    return _e39;
+}
+
+float ms_bessel_k_d(float3 wm_34, float2 alpha_96, uint table_41)
+{
+    const float _e3 = ms_bessel_k_ln_d(wm_34, alpha_96, table_41);
+    if ((_e3 >= 1e30)) {
+        const float _e6 = ms_inf();
+        return _e6;
+    }
+    return exp(_e3);
+}
+
+float ms_bessel_k_lambda(float3 w_50, float2 alpha_97, uint table_42)
+{
+    const float _e3 = ms_shape_lambda(table_42, w_50, alpha_97);
+    return _e3;
+}
+
+float ms_bessel_k_g1_(float3 w_51, float2 alpha_98, uint table_43)
+{
+    const float _e3 = ms_mixture_g1_(table_43, w_51, alpha_98);
+    return _e3;
+}
+
+float ms_bessel_k_g2_(float3 wo_25, float3 wi_25, float2 alpha_99, uint table_44)
+{
+    const float _e4 = ms_mixture_g2_(table_44, wo_25, wi_25, alpha_99);
+    return _e4;
+}
+
+float ms_bessel_k_g2_separable(float3 wo_26, float3 wi_26, float2 alpha_100, uint table_45)
+{
+    const float _e4 = ms_mixture_g2_separable(table_45, wo_26, wi_26, alpha_100);
+    return _e4;
+}
+
+float ms_bessel_k_pdf(float3 w_52, float3 wm_35, float2 alpha_101, uint table_46)
+{
+    const float _e4 = ms_bessel_k_ln_d(wm_35, alpha_101, table_46);
+    const float _e5 = ms_mixture_pdf(table_46, w_52, wm_35, alpha_101, _e4);
+    return _e5;
+}
+
+float ms_bessel_k_pdf_dcos(float3 wm_36, float2 alpha_102, uint table_47)
+{
+    if (!((wm_36.z > 0.0))) {
+        return 0.0;
+    }
+    const float _e8 = ms_bessel_k_d(wm_36, alpha_102, table_47);
+    return (_e8 * wm_36.z);
+}
+
+MsSample ms_bessel_k_sample_dcos(float2 alpha_103, float2 u_29, uint table_48)
+{
+    const float3 _e3 = ms_mixture_sample_dcos_wm(table_48, alpha_103, u_29);
+    const float _e4 = ms_bessel_k_pdf_dcos(_e3, alpha_103, table_48);
+    const MsSample mssample_17 = ConstructMsSample(_e3, _e4);
+    return mssample_17;
+}
+
+MsSample ms_bessel_k_sample(float3 w_53, float2 alpha_104, float2 u_30, uint table_49)
+{
+    const float3 _e4 = ms_mixture_sample_wm(table_49, w_53, alpha_104, u_30);
+    const float3 _e5 = ms_unit(w_53);
+    const float _e6 = ms_bessel_k_pdf(_e5, _e4, alpha_104, table_49);
+    const MsSample mssample_18 = ConstructMsSample(_e4, _e6);
+    return mssample_18;
+}
+
+float ms_d(MsMicrofacet mf, float3 wm_37)
+{
+    if ((mf.ndf == MS_NDF_GGX)) {
+        const float _e6 = ms_ggx_d(wm_37, mf.alpha);
+        return _e6;
+    }
+    if ((mf.ndf == MS_NDF_BECKMANN)) {
+        const float _e11 = ms_beckmann_d(wm_37, mf.alpha);
+        return _e11;
+    }
+    if ((mf.ndf == MS_NDF_DOUBLE_GGX)) {
+        const float _e16 = ms_double_ggx_d(wm_37, mf.alpha);
+        return _e16;
+    }
+    if ((mf.ndf == MS_NDF_EXPONENTIAL)) {
+        const float _e21 = ms_exponential_d(wm_37, mf.alpha);
+        return _e21;
+    }
+    if ((mf.ndf == MS_NDF_STUDENT_T)) {
+        const float _e27 = ms_student_t_d(wm_37, mf.alpha, mf.table);
+        return _e27;
+    }
+    if ((mf.ndf == MS_NDF_EI)) {
+        const float _e32 = ms_ei_d(wm_37, mf.alpha);
+        return _e32;
+    }
+    if ((mf.ndf == MS_NDF_ERFC)) {
+        const float _e37 = ms_erfc_d(wm_37, mf.alpha);
+        return _e37;
+    }
+    if ((mf.ndf == MS_NDF_K0_)) {
+        const float _e42 = ms_k0_d(wm_37, mf.alpha);
+        return _e42;
+    }
+    if ((mf.ndf == MS_NDF_BESSEL_K)) {
+        const float _e48 = ms_bessel_k_d(wm_37, mf.alpha, mf.table);
+        return _e48;
+    }
+    return 0.0;
+}
+
+float ms_lambda(MsMicrofacet mf_1, float3 w_54)
+{
+    if ((mf_1.ndf == MS_NDF_GGX)) {
+        const float _e6 = ms_ggx_lambda(w_54, mf_1.alpha);
+        return _e6;
+    }
+    if ((mf_1.ndf == MS_NDF_BECKMANN)) {
+        const float _e11 = ms_beckmann_lambda(w_54, mf_1.alpha);
+        return _e11;
+    }
+    if ((mf_1.ndf == MS_NDF_DOUBLE_GGX)) {
+        const float _e16 = ms_double_ggx_lambda(w_54, mf_1.alpha);
+        return _e16;
+    }
+    if ((mf_1.ndf == MS_NDF_EXPONENTIAL)) {
+        const float _e21 = ms_exponential_lambda(w_54, mf_1.alpha);
+        return _e21;
+    }
+    if ((mf_1.ndf == MS_NDF_STUDENT_T)) {
+        const float _e27 = ms_student_t_lambda(w_54, mf_1.alpha, mf_1.table);
+        return _e27;
+    }
+    if ((mf_1.ndf == MS_NDF_EI)) {
+        const float _e33 = ms_ei_lambda(w_54, mf_1.alpha, mf_1.table);
+        return _e33;
+    }
+    if ((mf_1.ndf == MS_NDF_ERFC)) {
+        const float _e39 = ms_erfc_lambda(w_54, mf_1.alpha, mf_1.table);
+        return _e39;
+    }
+    if ((mf_1.ndf == MS_NDF_K0_)) {
+        const float _e45 = ms_k0_lambda(w_54, mf_1.alpha, mf_1.table);
+        return _e45;
+    }
+    if ((mf_1.ndf == MS_NDF_BESSEL_K)) {
+        const float _e51 = ms_bessel_k_lambda(w_54, mf_1.alpha, mf_1.table);
+        return _e51;
+    }
+    return 0.0;
+}
+
+float ms_g1_(MsMicrofacet mf_2, float3 w_55)
+{
+    if ((mf_2.ndf == MS_NDF_GGX)) {
+        const float _e6 = ms_ggx_g1_(w_55, mf_2.alpha);
+        return _e6;
+    }
+    if ((mf_2.ndf == MS_NDF_BECKMANN)) {
+        const float _e11 = ms_beckmann_g1_(w_55, mf_2.alpha);
+        return _e11;
+    }
+    if ((mf_2.ndf == MS_NDF_DOUBLE_GGX)) {
+        const float _e16 = ms_double_ggx_g1_(w_55, mf_2.alpha);
+        return _e16;
+    }
+    if ((mf_2.ndf == MS_NDF_EXPONENTIAL)) {
+        const float _e21 = ms_exponential_g1_(w_55, mf_2.alpha);
+        return _e21;
+    }
+    if ((mf_2.ndf == MS_NDF_STUDENT_T)) {
+        const float _e27 = ms_student_t_g1_(w_55, mf_2.alpha, mf_2.table);
+        return _e27;
+    }
+    if ((mf_2.ndf == MS_NDF_EI)) {
+        const float _e33 = ms_ei_g1_(w_55, mf_2.alpha, mf_2.table);
+        return _e33;
+    }
+    if ((mf_2.ndf == MS_NDF_ERFC)) {
+        const float _e39 = ms_erfc_g1_(w_55, mf_2.alpha, mf_2.table);
+        return _e39;
+    }
+    if ((mf_2.ndf == MS_NDF_K0_)) {
+        const float _e45 = ms_k0_g1_(w_55, mf_2.alpha, mf_2.table);
+        return _e45;
+    }
+    if ((mf_2.ndf == MS_NDF_BESSEL_K)) {
+        const float _e51 = ms_bessel_k_g1_(w_55, mf_2.alpha, mf_2.table);
+        return _e51;
+    }
+    return 0.0;
+}
+
+float ms_g2_(MsMicrofacet mf_3, float3 wo_27, float3 wi_27)
+{
+    if ((mf_3.ndf == MS_NDF_GGX)) {
+        const float _e7 = ms_ggx_g2_(wo_27, wi_27, mf_3.alpha);
+        return _e7;
+    }
+    if ((mf_3.ndf == MS_NDF_BECKMANN)) {
+        const float _e12 = ms_beckmann_g2_(wo_27, wi_27, mf_3.alpha);
+        return _e12;
+    }
+    if ((mf_3.ndf == MS_NDF_DOUBLE_GGX)) {
+        const float _e17 = ms_double_ggx_g2_(wo_27, wi_27, mf_3.alpha);
+        return _e17;
+    }
+    if ((mf_3.ndf == MS_NDF_EXPONENTIAL)) {
+        const float _e22 = ms_exponential_g2_(wo_27, wi_27, mf_3.alpha);
+        return _e22;
+    }
+    if ((mf_3.ndf == MS_NDF_STUDENT_T)) {
+        const float _e28 = ms_student_t_g2_(wo_27, wi_27, mf_3.alpha, mf_3.table);
+        return _e28;
+    }
+    if ((mf_3.ndf == MS_NDF_EI)) {
+        const float _e34 = ms_ei_g2_(wo_27, wi_27, mf_3.alpha, mf_3.table);
+        return _e34;
+    }
+    if ((mf_3.ndf == MS_NDF_ERFC)) {
+        const float _e40 = ms_erfc_g2_(wo_27, wi_27, mf_3.alpha, mf_3.table);
+        return _e40;
+    }
+    if ((mf_3.ndf == MS_NDF_K0_)) {
+        const float _e46 = ms_k0_g2_(wo_27, wi_27, mf_3.alpha, mf_3.table);
+        return _e46;
+    }
+    if ((mf_3.ndf == MS_NDF_BESSEL_K)) {
+        const float _e52 = ms_bessel_k_g2_(wo_27, wi_27, mf_3.alpha, mf_3.table);
+        return _e52;
+    }
+    return 0.0;
+}
+
+float ms_g2_separable(MsMicrofacet mf_4, float3 wo_28, float3 wi_28)
+{
+    const float _e3 = ms_g1_(mf_4, wo_28);
+    const float _e4 = ms_g1_(mf_4, wi_28);
+    return (_e3 * _e4);
+}
+
+float ms_pdf(MsMicrofacet mf_5, float3 w_56, float3 wm_38)
+{
+    if ((mf_5.ndf == MS_NDF_GGX)) {
+        const float _e7 = ms_ggx_pdf(w_56, wm_38, mf_5.alpha);
+        return _e7;
+    }
+    if ((mf_5.ndf == MS_NDF_BECKMANN)) {
+        const float _e12 = ms_beckmann_pdf(w_56, wm_38, mf_5.alpha);
+        return _e12;
+    }
+    if ((mf_5.ndf == MS_NDF_DOUBLE_GGX)) {
+        const float _e17 = ms_double_ggx_pdf(w_56, wm_38, mf_5.alpha);
+        return _e17;
+    }
+    if ((mf_5.ndf == MS_NDF_EXPONENTIAL)) {
+        const float _e22 = ms_exponential_pdf(w_56, wm_38, mf_5.alpha);
+        return _e22;
+    }
+    if ((mf_5.ndf == MS_NDF_STUDENT_T)) {
+        const float _e28 = ms_student_t_pdf(w_56, wm_38, mf_5.alpha, mf_5.table);
+        return _e28;
+    }
+    if ((mf_5.ndf == MS_NDF_EI)) {
+        const float _e34 = ms_ei_pdf(w_56, wm_38, mf_5.alpha, mf_5.table);
+        return _e34;
+    }
+    if ((mf_5.ndf == MS_NDF_ERFC)) {
+        const float _e40 = ms_erfc_pdf(w_56, wm_38, mf_5.alpha, mf_5.table);
+        return _e40;
+    }
+    if ((mf_5.ndf == MS_NDF_K0_)) {
+        const float _e46 = ms_k0_pdf(w_56, wm_38, mf_5.alpha, mf_5.table);
+        return _e46;
+    }
+    if ((mf_5.ndf == MS_NDF_BESSEL_K)) {
+        const float _e52 = ms_bessel_k_pdf(w_56, wm_38, mf_5.alpha, mf_5.table);
+        return _e52;
+    }
+    return 0.0;
+}
+
+float ms_pdf_dcos(MsMicrofacet mf_6, float3 wm_39)
+{
+    if (!((wm_39.z > 0.0))) {
+        return 0.0;
+    }
+    const float _e7 = ms_d(mf_6, wm_39);
+    return (_e7 * wm_39.z);
+}
+
+MsSample ms_sample(MsMicrofacet mf_7, float3 w_57, float2 u_31)
+{
+    if ((mf_7.ndf == MS_NDF_GGX)) {
+        const MsSample _e7 = ms_ggx_sample(w_57, mf_7.alpha, u_31);
+        const MsSample mssample_19 = _e7;
+        return mssample_19;
+    }
+    if ((mf_7.ndf == MS_NDF_BECKMANN)) {
+        const MsSample _e12 = ms_beckmann_sample(w_57, mf_7.alpha, u_31);
+        const MsSample mssample_20 = _e12;
+        return mssample_20;
+    }
+    if ((mf_7.ndf == MS_NDF_DOUBLE_GGX)) {
+        const MsSample _e17 = ms_double_ggx_sample(w_57, mf_7.alpha, u_31);
+        const MsSample mssample_21 = _e17;
+        return mssample_21;
+    }
+    if ((mf_7.ndf == MS_NDF_EXPONENTIAL)) {
+        const MsSample _e22 = ms_exponential_sample(w_57, mf_7.alpha, u_31);
+        const MsSample mssample_22 = _e22;
+        return mssample_22;
+    }
+    if ((mf_7.ndf == MS_NDF_STUDENT_T)) {
+        const MsSample _e28 = ms_student_t_sample(w_57, mf_7.alpha, u_31, mf_7.table);
+        const MsSample mssample_23 = _e28;
+        return mssample_23;
+    }
+    if ((mf_7.ndf == MS_NDF_EI)) {
+        const MsSample _e34 = ms_ei_sample(w_57, mf_7.alpha, u_31, mf_7.table);
+        const MsSample mssample_24 = _e34;
+        return mssample_24;
+    }
+    if ((mf_7.ndf == MS_NDF_ERFC)) {
+        const MsSample _e40 = ms_erfc_sample(w_57, mf_7.alpha, u_31, mf_7.table);
+        const MsSample mssample_25 = _e40;
+        return mssample_25;
+    }
+    if ((mf_7.ndf == MS_NDF_K0_)) {
+        const MsSample _e46 = ms_k0_sample(w_57, mf_7.alpha, u_31, mf_7.table);
+        const MsSample mssample_26 = _e46;
         return mssample_26;
     }
-    if ((mf_8.ndf == MS_NDF_BECKMANN)) {
-        const MsSample _e11 = ms_beckmann_sample_dcos(mf_8.alpha, u_30);
-        const MsSample mssample_27 = _e11;
+    if ((mf_7.ndf == MS_NDF_BESSEL_K)) {
+        const MsSample _e52 = ms_bessel_k_sample(w_57, mf_7.alpha, u_31, mf_7.table);
+        const MsSample mssample_27 = _e52;
         return mssample_27;
     }
-    if ((mf_8.ndf == MS_NDF_DOUBLE_GGX)) {
-        const MsSample _e16 = ms_double_ggx_sample_dcos(mf_8.alpha, u_30);
-        const MsSample mssample_28 = _e16;
-        return mssample_28;
-    }
-    if ((mf_8.ndf == MS_NDF_EXPONENTIAL)) {
-        const MsSample _e21 = ms_exponential_sample_dcos(mf_8.alpha, u_30);
-        const MsSample mssample_29 = _e21;
+    const MsSample mssample_28 = ConstructMsSample(float3(0.0, 0.0, 1.0), 0.0);
+    return mssample_28;
+}
+
+MsSample ms_sample_dcos(MsMicrofacet mf_8, float2 u_32)
+{
+    if ((mf_8.ndf == MS_NDF_GGX)) {
+        const MsSample _e6 = ms_ggx_sample_dcos(mf_8.alpha, u_32);
+        const MsSample mssample_29 = _e6;
         return mssample_29;
     }
-    if ((mf_8.ndf == MS_NDF_STUDENT_T)) {
-        const MsSample _e27 = ms_student_t_sample_dcos(mf_8.alpha, u_30, mf_8.table);
-        const MsSample mssample_30 = _e27;
+    if ((mf_8.ndf == MS_NDF_BECKMANN)) {
+        const MsSample _e11 = ms_beckmann_sample_dcos(mf_8.alpha, u_32);
+        const MsSample mssample_30 = _e11;
         return mssample_30;
     }
-    if ((mf_8.ndf == MS_NDF_EI)) {
-        const MsSample _e33 = ms_ei_sample_dcos(mf_8.alpha, u_30, mf_8.table);
-        const MsSample mssample_31 = _e33;
+    if ((mf_8.ndf == MS_NDF_DOUBLE_GGX)) {
+        const MsSample _e16 = ms_double_ggx_sample_dcos(mf_8.alpha, u_32);
+        const MsSample mssample_31 = _e16;
         return mssample_31;
     }
-    if ((mf_8.ndf == MS_NDF_ERFC)) {
-        const MsSample _e39 = ms_erfc_sample_dcos(mf_8.alpha, u_30, mf_8.table);
-        const MsSample mssample_32 = _e39;
+    if ((mf_8.ndf == MS_NDF_EXPONENTIAL)) {
+        const MsSample _e21 = ms_exponential_sample_dcos(mf_8.alpha, u_32);
+        const MsSample mssample_32 = _e21;
         return mssample_32;
     }
-    if ((mf_8.ndf == MS_NDF_K0_)) {
-        const MsSample _e45 = ms_k0_sample_dcos(mf_8.alpha, u_30, mf_8.table);
-        const MsSample mssample_33 = _e45;
+    if ((mf_8.ndf == MS_NDF_STUDENT_T)) {
+        const MsSample _e27 = ms_student_t_sample_dcos(mf_8.alpha, u_32, mf_8.table);
+        const MsSample mssample_33 = _e27;
         return mssample_33;
     }
-    const MsSample mssample_34 = ConstructMsSample(float3(0.0, 0.0, 1.0), 0.0);
-    return mssample_34;
+    if ((mf_8.ndf == MS_NDF_EI)) {
+        const MsSample _e33 = ms_ei_sample_dcos(mf_8.alpha, u_32, mf_8.table);
+        const MsSample mssample_34 = _e33;
+        return mssample_34;
+    }
+    if ((mf_8.ndf == MS_NDF_ERFC)) {
+        const MsSample _e39 = ms_erfc_sample_dcos(mf_8.alpha, u_32, mf_8.table);
+        const MsSample mssample_35 = _e39;
+        return mssample_35;
+    }
+    if ((mf_8.ndf == MS_NDF_K0_)) {
+        const MsSample _e45 = ms_k0_sample_dcos(mf_8.alpha, u_32, mf_8.table);
+        const MsSample mssample_36 = _e45;
+        return mssample_36;
+    }
+    if ((mf_8.ndf == MS_NDF_BESSEL_K)) {
+        const MsSample _e51 = ms_bessel_k_sample_dcos(mf_8.alpha, u_32, mf_8.table);
+        const MsSample mssample_37 = _e51;
+        return mssample_37;
+    }
+    const MsSample mssample_38 = ConstructMsSample(float3(0.0, 0.0, 1.0), 0.0);
+    return mssample_38;
 }
 
 bool ms_effectively_smooth(MsMicrofacet mf_9)
@@ -3387,20 +3565,20 @@ bool ms_usable(float v_9)
     return _e8;
 }
 
-float ms_masking_g2_(MsMicrofacet mf_10, uint masking, float3 wo_27, float3 wi_27)
+float ms_masking_g2_(MsMicrofacet mf_10, uint masking, float3 wo_29, float3 wi_29)
 {
     if ((masking == MS_MASKING_SEPARABLE)) {
-        const float _e6 = ms_g2_separable(mf_10, wo_27, wi_27);
+        const float _e6 = ms_g2_separable(mf_10, wo_29, wi_29);
         return _e6;
     }
-    const float _e7 = ms_g2_(mf_10, wo_27, wi_27);
+    const float _e7 = ms_g2_(mf_10, wo_29, wi_29);
     return _e7;
 }
 
-float ms_reflected(MsMicrofacet mf_11, uint masking_1, float3 wo_28, float3 wi_28, float d_wm)
+float ms_reflected(MsMicrofacet mf_11, uint masking_1, float3 wo_30, float3 wi_30, float d_wm)
 {
-    const float _e5 = ms_masking_g2_(mf_11, masking_1, wo_28, wi_28);
-    return ((d_wm * _e5) / (4.0 * abs((wo_28.z * wi_28.z))));
+    const float _e5 = ms_masking_g2_(mf_11, masking_1, wo_30, wi_30);
+    return ((d_wm * _e5) / (4.0 * abs((wo_30.z * wi_30.z))));
 }
 
 float3 ms_weighted(float3 fr_1, float k_8)
@@ -3408,22 +3586,22 @@ float3 ms_weighted(float3 fr_1, float k_8)
     return ((fr_1 == (0.0).xxx) ? (0.0).xxx : (fr_1 * k_8));
 }
 
-float3 ms_conductor_lobe_normal(MsConductor c_7, float3 wo_29, float3 wi_29)
+float3 ms_conductor_lobe_normal(MsConductor c_7, float3 wo_31, float3 wi_31)
 {
     bool local_33 = (bool)0;
     bool local_34 = (bool)0;
     bool local_35 = (bool)0;
 
-    const bool _e3 = ms_same_hemisphere(wo_29, wi_29);
+    const bool _e3 = ms_same_hemisphere(wo_31, wi_31);
     if (!(!(_e3))) {
-        const bool _e9 = ms_on_horizon(wo_29.z);
+        const bool _e9 = ms_on_horizon(wo_31.z);
         local_33 = _e9;
     } else {
         local_33 = true;
     }
     bool _e11 = local_33;
     if (!(_e11)) {
-        const bool _e16 = ms_on_horizon(wi_29.z);
+        const bool _e16 = ms_on_horizon(wi_31.z);
         local_34 = _e16;
     } else {
         local_34 = true;
@@ -3439,53 +3617,53 @@ float3 ms_conductor_lobe_normal(MsConductor c_7, float3 wo_29, float3 wi_29)
     if (_e25) {
         return (0.0).xxx;
     }
-    const float3 _e28 = ms_half_vector_reflection(wo_29, wi_29);
+    const float3 _e28 = ms_half_vector_reflection(wo_31, wi_31);
     return _e28;
 }
 
-float3 ms_conductor_eval(MsConductor c_8, float3 wo_30, float3 wi_30)
+float3 ms_conductor_eval(MsConductor c_8, float3 wo_32, float3 wi_32)
 {
-    const float3 _e3 = ms_conductor_lobe_normal(c_8, wo_30, wi_30);
+    const float3 _e3 = ms_conductor_lobe_normal(c_8, wo_32, wi_32);
     const bool _e4 = ms_half_vector_ok(_e3);
     if (!(_e4)) {
         return (0.0).xxx;
     }
-    const float _e9 = ms_dot(wo_30, _e3);
-    const float _e11 = ms_dot(wi_30, _e3);
+    const float _e9 = ms_dot(wo_32, _e3);
+    const float _e11 = ms_dot(wi_32, _e3);
     const float3 _e16 = ms_fresnel_eval(c_8.fresnel, (0.5 * (abs(_e9) + abs(_e11))));
     const float _e20 = ms_d(c_8.mf, _e3);
-    const float _e21 = ms_reflected(c_8.mf, c_8.masking, wo_30, wi_30, _e20);
+    const float _e21 = ms_reflected(c_8.mf, c_8.masking, wo_32, wi_32, _e20);
     const float3 _e22 = ms_weighted(_e16, _e21);
     return _e22;
 }
 
-float ms_conductor_pdf(MsConductor c_9, float3 wo_31, float3 wi_31)
+float ms_conductor_pdf(MsConductor c_9, float3 wo_33, float3 wi_33)
 {
-    const float3 _e3 = ms_conductor_lobe_normal(c_9, wo_31, wi_31);
+    const float3 _e3 = ms_conductor_lobe_normal(c_9, wo_33, wi_33);
     const bool _e4 = ms_half_vector_ok(_e3);
     if (!(_e4)) {
         return 0.0;
     }
-    const float _e8 = ms_pdf(c_9.mf, wo_31, _e3);
-    const float _e9 = ms_dot(wo_31, _e3);
+    const float _e8 = ms_pdf(c_9.mf, wo_33, _e3);
+    const float _e9 = ms_dot(wo_33, _e3);
     return (_e8 / (4.0 * abs(_e9)));
 }
 
-float4 ms_conductor_eval_pdf(MsConductor c_10, float3 wo_32, float3 wi_32)
+float4 ms_conductor_eval_pdf(MsConductor c_10, float3 wo_34, float3 wi_34)
 {
-    const float3 _e3 = ms_conductor_lobe_normal(c_10, wo_32, wi_32);
+    const float3 _e3 = ms_conductor_lobe_normal(c_10, wo_34, wi_34);
     const bool _e4 = ms_half_vector_ok(_e3);
     if (!(_e4)) {
         return (0.0).xxxx;
     }
-    const float _e8 = ms_dot(wo_32, _e3);
+    const float _e8 = ms_dot(wo_34, _e3);
     float co = abs(_e8);
-    const float _e11 = ms_dot(wi_32, _e3);
+    const float _e11 = ms_dot(wi_34, _e3);
     const float3 _e16 = ms_fresnel_eval(c_10.fresnel, (0.5 * (co + abs(_e11))));
     const float _e20 = ms_d(c_10.mf, _e3);
-    const float _e21 = ms_reflected(c_10.mf, c_10.masking, wo_32, wi_32, _e20);
+    const float _e21 = ms_reflected(c_10.mf, c_10.masking, wo_34, wi_34, _e20);
     const float3 _e22 = ms_weighted(_e16, _e21);
-    const float _e24 = ms_pdf(c_10.mf, wo_32, _e3);
+    const float _e24 = ms_pdf(c_10.mf, wo_34, _e3);
     return float4(_e22, (_e24 / (4.0 * co)));
 }
 
@@ -3499,27 +3677,27 @@ MsBsdfSample ConstructMsBsdfSample(float3 arg0, float arg1, float3 arg2, uint ar
     return ret;
 }
 
-MsBsdfSample ms_conductor_sample(MsConductor c_11, float3 wo_33, float uc, float2 u_31)
+MsBsdfSample ms_conductor_sample(MsConductor c_11, float3 wo_35, float uc, float2 u_33)
 {
     bool local_36 = (bool)0;
 
     MsBsdfSample none = ConstructMsBsdfSample((0.0).xxx, 0.0, (0.0).xxx, 0u, 1.0);
-    const bool _e13 = ms_on_horizon(wo_33.z);
+    const bool _e13 = ms_on_horizon(wo_35.z);
     if (_e13) {
         const MsBsdfSample msbsdfsample = none;
         return msbsdfsample;
     }
     const bool _e15 = ms_effectively_smooth(c_11.mf);
     if (_e15) {
-        float3 wi_49 = float3(-(wo_33.x), -(wo_33.y), wo_33.z);
-        float k_12 = (1.0 / abs(wi_49.z));
-        const float3 _e29 = ms_fresnel_eval(c_11.fresnel, abs(wo_33.z));
-        const MsBsdfSample msbsdfsample_1 = ConstructMsBsdfSample(wi_49, 1.0, (_e29 * k_12), 3u, 1.0);
+        float3 wi_51 = float3(-(wo_35.x), -(wo_35.y), wo_35.z);
+        float k_12 = (1.0 / abs(wi_51.z));
+        const float3 _e29 = ms_fresnel_eval(c_11.fresnel, abs(wo_35.z));
+        const MsBsdfSample msbsdfsample_1 = ConstructMsBsdfSample(wi_51, 1.0, (_e29 * k_12), 3u, 1.0);
         return msbsdfsample_1;
     }
-    const MsSample _e36 = ms_sample(c_11.mf, wo_33, u_31);
-    const float3 _e38 = ms_reflect(wo_33, _e36.wm);
-    const bool _e39 = ms_same_hemisphere(wo_33, _e38);
+    const MsSample _e36 = ms_sample(c_11.mf, wo_35, u_33);
+    const float3 _e38 = ms_reflect(wo_35, _e36.wm);
+    const bool _e39 = ms_same_hemisphere(wo_35, _e38);
     if (!(!(_e39))) {
         const bool _e45 = ms_on_horizon(_e38.z);
         local_36 = _e45;
@@ -3531,7 +3709,7 @@ MsBsdfSample ms_conductor_sample(MsConductor c_11, float3 wo_33, float uc, float
         const MsBsdfSample msbsdfsample_2 = none;
         return msbsdfsample_2;
     }
-    const float _e49 = ms_dot(wo_33, _e36.wm);
+    const float _e49 = ms_dot(wo_35, _e36.wm);
     float co_1 = abs(_e49);
     float pdf = (_e36.pdf / (4.0 * co_1));
     const bool _e55 = ms_usable(pdf);
@@ -3546,7 +3724,7 @@ MsBsdfSample ms_conductor_sample(MsConductor c_11, float3 wo_33, float uc, float
         const MsBsdfSample msbsdfsample_4 = none;
         return msbsdfsample_4;
     }
-    const float _e66 = ms_reflected(c_11.mf, c_11.masking, wo_33, _e38, _e61);
+    const float _e66 = ms_reflected(c_11.mf, c_11.masking, wo_35, _e38, _e61);
     const float3 _e67 = ms_weighted(_e58, _e66);
     if (!(all((_e67 <= (3.4028235e38).xxx)))) {
         const MsBsdfSample msbsdfsample_5 = none;
@@ -3556,12 +3734,12 @@ MsBsdfSample ms_conductor_sample(MsConductor c_11, float3 wo_33, float uc, float
     return msbsdfsample_6;
 }
 
-bool ms_dielectric_smooth(MsDielectric d_2)
+bool ms_dielectric_smooth(MsDielectric d_1)
 {
     bool local_37 = (bool)0;
 
-    if (!((d_2.eta == 1.0))) {
-        const bool _e8 = ms_effectively_smooth(d_2.mf);
+    if (!((d_1.eta == 1.0))) {
+        const bool _e8 = ms_effectively_smooth(d_1.mf);
         local_37 = _e8;
     } else {
         local_37 = true;
@@ -3570,22 +3748,22 @@ bool ms_dielectric_smooth(MsDielectric d_2)
     return _e10;
 }
 
-float ms_dielectric_g2_(MsDielectric d_3, float3 wo_34, float3 wi_33)
+float ms_dielectric_g2_(MsDielectric d_2, float3 wo_36, float3 wi_35)
 {
-    const float _e5 = ms_masking_g2_(d_3.mf, d_3.masking, wo_34, wi_33);
+    const float _e5 = ms_masking_g2_(d_2.mf, d_2.masking, wo_36, wi_35);
     return _e5;
 }
 
-float4 ms_dielectric_half(MsDielectric d_4, float3 wo_35, float3 wi_34)
+float4 ms_dielectric_half(MsDielectric d_3, float3 wo_37, float3 wi_36)
 {
     bool local_38 = (bool)0;
-    float3 wm_33 = (float3)0;
+    float3 wm_40 = (float3)0;
     float etap_4 = 1.0;
     bool local_39 = (bool)0;
 
     float4 none_1 = (0.0).xxxx;
-    float co_2 = wo_35.z;
-    float ci_1 = wi_34.z;
+    float co_2 = wo_37.z;
+    float ci_1 = wi_36.z;
     const bool _e7 = ms_on_horizon(co_2);
     if (!(_e7)) {
         const bool _e11 = ms_on_horizon(ci_1);
@@ -3598,23 +3776,23 @@ float4 ms_dielectric_half(MsDielectric d_4, float3 wo_35, float3 wi_34)
         return none_1;
     }
     if (((co_2 * ci_1) > 0.0)) {
-        const float3 _e20 = ms_half_vector_reflection(wo_35, wi_34);
-        wm_33 = _e20;
+        const float3 _e20 = ms_half_vector_reflection(wo_37, wi_36);
+        wm_40 = _e20;
     } else {
-        const float4 _e22 = ms_half_vector_refraction(wo_35, wi_34, d_4.eta);
-        wm_33 = _e22.xyz;
+        const float4 _e22 = ms_half_vector_refraction(wo_37, wi_36, d_3.eta);
+        wm_40 = _e22.xyz;
         etap_4 = _e22.w;
     }
-    float3 _e25 = wm_33;
+    float3 _e25 = wm_40;
     const bool _e26 = ms_half_vector_ok(_e25);
     if (!(_e26)) {
         return none_1;
     }
-    float3 _e28 = wm_33;
-    const float _e29 = ms_dot(_e28, wi_34);
+    float3 _e28 = wm_40;
+    const float _e29 = ms_dot(_e28, wi_36);
     if (!(((_e29 * ci_1) < 0.0))) {
-        float3 _e36 = wm_33;
-        const float _e37 = ms_dot(_e36, wo_35);
+        float3 _e36 = wm_40;
+        const float _e37 = ms_dot(_e36, wo_37);
         local_39 = ((_e37 * co_2) < 0.0);
     } else {
         local_39 = true;
@@ -3623,22 +3801,22 @@ float4 ms_dielectric_half(MsDielectric d_4, float3 wo_35, float3 wi_34)
     if (_e42) {
         return none_1;
     }
-    float3 _e43 = wm_33;
+    float3 _e43 = wm_40;
     float _e44 = etap_4;
     return float4(_e43, _e44);
 }
 
-float ms_dielectric_f_transmission(MsDielectric d_5, float3 wo_36, float3 wi_35, float3 wm_34, float d_wm_1, float etap_5, float t_2)
+float ms_dielectric_f_transmission(MsDielectric d_4, float3 wo_38, float3 wi_37, float3 wm_41, float d_wm_1, float etap_5, float t_2)
 {
     float f_2 = (float)0;
 
-    const float _e7 = ms_dot(wi_35, wm_34);
-    const float _e8 = ms_dot(wo_36, wm_34);
-    const float _e9 = ms_refraction_denominator(wo_36, wi_35, wm_34, etap_5);
-    const float _e10 = ms_dielectric_g2_(d_5, wo_36, wi_35);
-    float geometric = ((_e10 / abs((wi_35.z * wo_36.z))) * (abs((_e7 * _e8)) / (_e9 * _e9)));
+    const float _e7 = ms_dot(wi_37, wm_41);
+    const float _e8 = ms_dot(wo_38, wm_41);
+    const float _e9 = ms_refraction_denominator(wo_38, wi_37, wm_41, etap_5);
+    const float _e10 = ms_dielectric_g2_(d_4, wo_38, wi_37);
+    float geometric = ((_e10 / abs((wi_37.z * wo_38.z))) * (abs((_e7 * _e8)) / (_e9 * _e9)));
     f_2 = ((d_wm_1 * t_2) * geometric);
-    if ((d_5.transport == MS_TRANSPORT_RADIANCE)) {
+    if ((d_4.transport == MS_TRANSPORT_RADIANCE)) {
         float _e27 = f_2;
         f_2 = (_e27 / (etap_5 * etap_5));
     }
@@ -3646,84 +3824,84 @@ float ms_dielectric_f_transmission(MsDielectric d_5, float3 wo_36, float3 wi_35,
     return _e30;
 }
 
-float ms_dielectric_eval(MsDielectric d_6, float3 wo_37, float3 wi_36)
+float ms_dielectric_eval(MsDielectric d_5, float3 wo_39, float3 wi_38)
+{
+    const bool _e3 = ms_dielectric_smooth(d_5);
+    if (_e3) {
+        return 0.0;
+    }
+    const float4 _e5 = ms_dielectric_half(d_5, wo_39, wi_38);
+    if ((_e5.w == 0.0)) {
+        return 0.0;
+    }
+    float3 wm_42 = _e5.xyz;
+    const float _e11 = ms_dot(wo_39, wm_42);
+    const float _e13 = ms_fresnel_dielectric(_e11, d_5.eta);
+    const float _e15 = ms_d(d_5.mf, wm_42);
+    if (((wo_39.z * wi_38.z) > 0.0)) {
+        const float _e23 = ms_reflected(d_5.mf, d_5.masking, wo_39, wi_38, _e15);
+        return (_e13 * _e23);
+    }
+    const float _e28 = ms_dielectric_f_transmission(d_5, wo_39, wi_38, wm_42, _e15, _e5.w, (1.0 - _e13));
+    return _e28;
+}
+
+float ms_dielectric_pdf(MsDielectric d_6, float3 wo_40, float3 wi_39)
 {
     const bool _e3 = ms_dielectric_smooth(d_6);
     if (_e3) {
         return 0.0;
     }
-    const float4 _e5 = ms_dielectric_half(d_6, wo_37, wi_36);
+    const float4 _e5 = ms_dielectric_half(d_6, wo_40, wi_39);
     if ((_e5.w == 0.0)) {
         return 0.0;
     }
-    float3 wm_35 = _e5.xyz;
-    const float _e11 = ms_dot(wo_37, wm_35);
+    float3 wm_43 = _e5.xyz;
+    const float _e11 = ms_dot(wo_40, wm_43);
     const float _e13 = ms_fresnel_dielectric(_e11, d_6.eta);
-    const float _e15 = ms_d(d_6.mf, wm_35);
-    if (((wo_37.z * wi_36.z) > 0.0)) {
-        const float _e23 = ms_reflected(d_6.mf, d_6.masking, wo_37, wi_36, _e15);
-        return (_e13 * _e23);
-    }
-    const float _e28 = ms_dielectric_f_transmission(d_6, wo_37, wi_36, wm_35, _e15, _e5.w, (1.0 - _e13));
-    return _e28;
-}
-
-float ms_dielectric_pdf(MsDielectric d_7, float3 wo_38, float3 wi_37)
-{
-    const bool _e3 = ms_dielectric_smooth(d_7);
-    if (_e3) {
-        return 0.0;
-    }
-    const float4 _e5 = ms_dielectric_half(d_7, wo_38, wi_37);
-    if ((_e5.w == 0.0)) {
-        return 0.0;
-    }
-    float3 wm_36 = _e5.xyz;
-    const float _e11 = ms_dot(wo_38, wm_36);
-    const float _e13 = ms_fresnel_dielectric(_e11, d_7.eta);
-    const float _e15 = ms_pdf(d_7.mf, wo_38, wm_36);
-    if (((wo_38.z * wi_37.z) > 0.0)) {
-        const float _e22 = ms_dot(wo_38, wm_36);
+    const float _e15 = ms_pdf(d_6.mf, wo_40, wm_43);
+    if (((wo_40.z * wi_39.z) > 0.0)) {
+        const float _e22 = ms_dot(wo_40, wm_43);
         return ((_e15 * _e13) / (4.0 * abs(_e22)));
     }
-    const float _e31 = ms_jacobian_refraction(wo_38, wi_37, wm_36, _e5.w);
+    const float _e31 = ms_jacobian_refraction(wo_40, wi_39, wm_43, _e5.w);
     return ((_e15 * (1.0 - _e13)) * _e31);
 }
 
-MsBsdfSample ms_dielectric_sample_smooth(MsDielectric d_8, float3 wo_39, float uc_1)
+MsBsdfSample ms_dielectric_sample_smooth(MsDielectric d_7, float3 wo_41, float uc_1)
 {
     float f_3 = (float)0;
 
-    const float _e5 = ms_fresnel_dielectric(wo_39.z, d_8.eta);
+    const float _e5 = ms_fresnel_dielectric(wo_41.z, d_7.eta);
     if ((uc_1 < _e5)) {
-        float3 wi_50 = float3(-(wo_39.x), -(wo_39.y), wo_39.z);
-        const MsBsdfSample msbsdfsample_7 = ConstructMsBsdfSample(wi_50, _e5, ((_e5 / abs(wi_50.z))).xxx, 3u, 1.0);
+        float3 wi_52 = float3(-(wo_41.x), -(wo_41.y), wo_41.z);
+        const MsBsdfSample msbsdfsample_7 = ConstructMsBsdfSample(wi_52, _e5, ((_e5 / abs(wi_52.z))).xxx, 3u, 1.0);
         return msbsdfsample_7;
     }
     MsBsdfSample none_2 = ConstructMsBsdfSample((0.0).xxx, 0.0, (0.0).xxx, 0u, 1.0);
-    const float4 _e33 = ms_refract(wo_39, float3(0.0, 0.0, 1.0), d_8.eta);
+    const float4 _e33 = ms_refract(wo_41, float3(0.0, 0.0, 1.0), d_7.eta);
     if ((_e33.w == 0.0)) {
         const MsBsdfSample msbsdfsample_8 = none_2;
         return msbsdfsample_8;
     }
-    float3 wi_51 = _e33.xyz;
-    const bool _e39 = ms_on_horizon(wi_51.z);
+    float3 wi_53 = _e33.xyz;
+    const bool _e39 = ms_on_horizon(wi_53.z);
     if (_e39) {
         const MsBsdfSample msbsdfsample_9 = none_2;
         return msbsdfsample_9;
     }
     float t_13 = (1.0 - _e5);
-    f_3 = (t_13 / abs(wi_51.z));
-    if ((d_8.transport == MS_TRANSPORT_RADIANCE)) {
+    f_3 = (t_13 / abs(wi_53.z));
+    if ((d_7.transport == MS_TRANSPORT_RADIANCE)) {
         float _e49 = f_3;
         f_3 = (_e49 / (_e33.w * _e33.w));
     }
     float _e54 = f_3;
-    const MsBsdfSample msbsdfsample_10 = ConstructMsBsdfSample(wi_51, t_13, (_e54).xxx, 7u, _e33.w);
+    const MsBsdfSample msbsdfsample_10 = ConstructMsBsdfSample(wi_53, t_13, (_e54).xxx, 7u, _e33.w);
     return msbsdfsample_10;
 }
 
-MsBsdfSample ms_dielectric_sample(MsDielectric d_9, float3 wo_40, float uc_2, float2 u_32)
+MsBsdfSample ms_dielectric_sample(MsDielectric d_8, float3 wo_42, float uc_2, float2 u_34)
 {
     bool local_40 = (bool)0;
     bool local_41 = (bool)0;
@@ -3731,24 +3909,24 @@ MsBsdfSample ms_dielectric_sample(MsDielectric d_9, float3 wo_40, float uc_2, fl
     bool local_43 = (bool)0;
 
     MsBsdfSample none_3 = ConstructMsBsdfSample((0.0).xxx, 0.0, (0.0).xxx, 0u, 1.0);
-    const bool _e13 = ms_on_horizon(wo_40.z);
+    const bool _e13 = ms_on_horizon(wo_42.z);
     if (_e13) {
         const MsBsdfSample msbsdfsample_11 = none_3;
         return msbsdfsample_11;
     }
-    const bool _e14 = ms_dielectric_smooth(d_9);
+    const bool _e14 = ms_dielectric_smooth(d_8);
     if (_e14) {
-        const MsBsdfSample _e15 = ms_dielectric_sample_smooth(d_9, wo_40, uc_2);
+        const MsBsdfSample _e15 = ms_dielectric_sample_smooth(d_8, wo_42, uc_2);
         const MsBsdfSample msbsdfsample_12 = _e15;
         return msbsdfsample_12;
     }
-    const MsSample _e17 = ms_sample(d_9.mf, wo_40, u_32);
-    float3 wm_37 = _e17.wm;
-    const float _e19 = ms_dot(wo_40, wm_37);
-    const float _e21 = ms_fresnel_dielectric(_e19, d_9.eta);
+    const MsSample _e17 = ms_sample(d_8.mf, wo_42, u_34);
+    float3 wm_44 = _e17.wm;
+    const float _e19 = ms_dot(wo_42, wm_44);
+    const float _e21 = ms_fresnel_dielectric(_e19, d_8.eta);
     if ((uc_2 < _e21)) {
-        const float3 _e23 = ms_reflect(wo_40, wm_37);
-        const bool _e24 = ms_same_hemisphere(wo_40, _e23);
+        const float3 _e23 = ms_reflect(wo_42, wm_44);
+        const bool _e24 = ms_same_hemisphere(wo_42, _e23);
         if (!(!(_e24))) {
             const bool _e30 = ms_on_horizon(_e23.z);
             local_40 = _e30;
@@ -3760,13 +3938,13 @@ MsBsdfSample ms_dielectric_sample(MsDielectric d_9, float3 wo_40, float uc_2, fl
             const MsBsdfSample msbsdfsample_13 = none_3;
             return msbsdfsample_13;
         }
-        const float _e34 = ms_d(d_9.mf, wm_37);
+        const float _e34 = ms_d(d_8.mf, wm_44);
         const bool _e35 = ms_usable(_e34);
         if (!(_e35)) {
             const MsBsdfSample msbsdfsample_14 = none_3;
             return msbsdfsample_14;
         }
-        const float _e39 = ms_reflected(d_9.mf, d_9.masking, wo_40, _e23, _e34);
+        const float _e39 = ms_reflected(d_8.mf, d_8.masking, wo_42, _e23, _e34);
         float f_5 = (_e21 * _e39);
         float pdf_1 = ((_e17.pdf * _e21) / (4.0 * abs(_e19)));
         const bool _e47 = ms_usable(pdf_1);
@@ -3783,16 +3961,16 @@ MsBsdfSample ms_dielectric_sample(MsDielectric d_9, float3 wo_40, float uc_2, fl
         const MsBsdfSample msbsdfsample_16 = ConstructMsBsdfSample(_e23, pdf_1, (f_5).xxx, MS_SAMPLE_VALID, 1.0);
         return msbsdfsample_16;
     }
-    const float4 _e62 = ms_refract(wo_40, wm_37, d_9.eta);
+    const float4 _e62 = ms_refract(wo_42, wm_44, d_8.eta);
     if ((_e62.w == 0.0)) {
         const MsBsdfSample msbsdfsample_17 = none_3;
         return msbsdfsample_17;
     }
-    float3 wi_52 = _e62.xyz;
+    float3 wi_54 = _e62.xyz;
     float etap_6 = _e62.w;
-    const bool _e68 = ms_same_hemisphere(wo_40, wi_52);
+    const bool _e68 = ms_same_hemisphere(wo_42, wi_54);
     if (!(_e68)) {
-        const bool _e73 = ms_on_horizon(wi_52.z);
+        const bool _e73 = ms_on_horizon(wi_54.z);
         local_42 = _e73;
     } else {
         local_42 = true;
@@ -3803,15 +3981,15 @@ MsBsdfSample ms_dielectric_sample(MsDielectric d_9, float3 wo_40, float uc_2, fl
         return msbsdfsample_18;
     }
     float t_14 = (1.0 - _e21);
-    const float _e80 = ms_jacobian_refraction(wo_40, wi_52, wm_37, etap_6);
+    const float _e80 = ms_jacobian_refraction(wo_42, wi_54, wm_44, etap_6);
     float pdf_2 = ((_e17.pdf * t_14) * _e80);
-    const float _e83 = ms_d(d_9.mf, wm_37);
+    const float _e83 = ms_d(d_8.mf, wm_44);
     const bool _e84 = ms_usable(_e83);
     if (!(_e84)) {
         const MsBsdfSample msbsdfsample_19 = none_3;
         return msbsdfsample_19;
     }
-    const float _e86 = ms_dielectric_f_transmission(d_9, wo_40, wi_52, wm_37, _e83, etap_6, t_14);
+    const float _e86 = ms_dielectric_f_transmission(d_8, wo_42, wi_54, wm_44, _e83, etap_6, t_14);
     const bool _e87 = ms_usable(pdf_2);
     if (!(!(_e87))) {
         local_43 = !((_e86 <= 3.4028235e38));
@@ -3823,7 +4001,7 @@ MsBsdfSample ms_dielectric_sample(MsDielectric d_9, float3 wo_40, float uc_2, fl
         const MsBsdfSample msbsdfsample_20 = none_3;
         return msbsdfsample_20;
     }
-    const MsBsdfSample msbsdfsample_21 = ConstructMsBsdfSample(wi_52, pdf_2, (_e86).xxx, 5u, etap_6);
+    const MsBsdfSample msbsdfsample_21 = ConstructMsBsdfSample(wi_54, pdf_2, (_e86).xxx, 5u, etap_6);
     return msbsdfsample_21;
 }
 
@@ -3834,19 +4012,19 @@ MsLutTap ConstructMsLutTap(uint arg0, float arg1) {
     return ret;
 }
 
-MsLutTap ms_lut_tap(float x_12, uint n_8)
+MsLutTap ms_lut_tap(float x_13, uint n_8)
 {
-    float t_15 = clamp(((x_12 * float(n_8)) - 0.5), 0.0, float((n_8 - 1u)));
-    uint i_12 = min(naga_f2u32(floor(t_15)), (n_8 - 2u));
-    const MsLutTap msluttap = ConstructMsLutTap(i_12, (t_15 - float(i_12)));
+    float t_15 = clamp(((x_13 * float(n_8)) - 0.5), 0.0, float((n_8 - 1u)));
+    uint i_13 = min(naga_f2u32(floor(t_15)), (n_8 - 2u));
+    const MsLutTap msluttap = ConstructMsLutTap(i_13, (t_15 - float(i_13)));
     return msluttap;
 }
 
-MsLutTap ms_lut_tap_edges(float x_13, uint n_9)
+MsLutTap ms_lut_tap_edges(float x_14, uint n_9)
 {
-    float t_16 = clamp((x_13 * float((n_9 - 1u))), 0.0, float((n_9 - 1u)));
-    uint i_13 = min(naga_f2u32(floor(t_16)), (n_9 - 2u));
-    const MsLutTap msluttap_1 = ConstructMsLutTap(i_13, (t_16 - float(i_13)));
+    float t_16 = clamp((x_14 * float((n_9 - 1u))), 0.0, float((n_9 - 1u)));
+    uint i_14 = min(naga_f2u32(floor(t_16)), (n_9 - 2u));
+    const MsLutTap msluttap_1 = ConstructMsLutTap(i_14, (t_16 - float(i_14)));
     return msluttap_1;
 }
 
@@ -3867,9 +4045,9 @@ float ms_lut_bilerp(MsLutTap r, MsLutTap m_4, float v00_, float v10_, float v01_
     return (((((gr * gm) * v00_) + ((r.f * gm) * v10_)) + ((gr * m_4.f) * v01_)) + ((r.f * m_4.f) * v11_));
 }
 
-float ms_lut_roughness_coord(float2 alpha_92, float alpha_max)
+float ms_lut_roughness_coord(float2 alpha_105, float alpha_max)
 {
-    return sqrt((sqrt((alpha_92.x * alpha_92.y)) / alpha_max));
+    return sqrt((sqrt((alpha_105.x * alpha_105.y)) / alpha_max));
 }
 
 float3 ms_kulla_conty_f_ms(float3 f_avg, float e_avg)
@@ -3886,10 +4064,10 @@ float ms_kulla_conty_lobe(float e_o, float e_i, float e_avg_1)
     return ((max((1.0 - e_o), 0.0) * max((1.0 - e_i), 0.0)) / den_3);
 }
 
-float3 ms_conductor_eval_kulla_conty(MsConductor c_12, float3 wo_41, float3 wi_38, float e_o_1, float e_i_1, float e_avg_2, float3 f_ms)
+float3 ms_conductor_eval_kulla_conty(MsConductor c_12, float3 wo_43, float3 wi_40, float e_o_1, float e_i_1, float e_avg_2, float3 f_ms)
 {
-    const float3 _e7 = ms_conductor_eval(c_12, wo_41, wi_38);
-    if (!(((wo_41.z * wi_38.z) > 0.0))) {
+    const float3 _e7 = ms_conductor_eval(c_12, wo_43, wi_40);
+    if (!(((wo_43.z * wi_40.z) > 0.0))) {
         return _e7;
     }
     const float _e14 = ms_kulla_conty_lobe(e_o_1, e_i_1, e_avg_2);
@@ -3901,9 +4079,9 @@ float3 ms_turquin_scale(float e_o_2, float3 f0_2)
     return ((1.0).xxx + ((f0_2 * (1.0 - e_o_2)) / (e_o_2).xxx));
 }
 
-float3 ms_conductor_eval_turquin(MsConductor c_13, float3 wo_42, float3 wi_39, float e_o_3, float3 f0_3)
+float3 ms_conductor_eval_turquin(MsConductor c_13, float3 wo_44, float3 wi_41, float e_o_3, float3 f0_3)
 {
-    const float3 _e5 = ms_conductor_eval(c_13, wo_42, wi_39);
+    const float3 _e5 = ms_conductor_eval(c_13, wo_44, wi_41);
     const float3 _e6 = ms_turquin_scale(e_o_3, f0_3);
     return (_e5 * _e6);
 }
@@ -3913,50 +4091,50 @@ float ms_kulla_conty_p_ms(float e_o_4)
     return clamp((1.0 - e_o_4), 0.0, 1.0);
 }
 
-float ms_cosine_pdf_same_side(float3 wo_43, float3 wi_40)
+float ms_cosine_pdf_same_side(float3 wo_45, float3 wi_42)
 {
-    if (!(((wo_43.z * wi_40.z) > 0.0))) {
+    if (!(((wo_45.z * wi_42.z) > 0.0))) {
         return 0.0;
     }
-    return (abs(wi_40.z) / MS_PI);
+    return (abs(wi_42.z) / MS_PI);
 }
 
-float ms_conductor_pdf_kulla_conty(MsConductor c_14, float3 wo_44, float3 wi_41, float e_o_5)
+float ms_conductor_pdf_kulla_conty(MsConductor c_14, float3 wo_46, float3 wi_43, float e_o_5)
 {
     const float _e4 = ms_kulla_conty_p_ms(e_o_5);
-    const float _e7 = ms_conductor_pdf(c_14, wo_44, wi_41);
-    const float _e9 = ms_cosine_pdf_same_side(wo_44, wi_41);
+    const float _e7 = ms_conductor_pdf(c_14, wo_46, wi_43);
+    const float _e9 = ms_cosine_pdf_same_side(wo_46, wi_43);
     return (((1.0 - _e4) * _e7) + (_e4 * _e9));
 }
 
-float3 ms_cosine_hemisphere(float2 u_33)
+float3 ms_cosine_hemisphere(float2 u_35)
 {
-    float r_25 = sqrt(u_33.x);
-    const float2 _e4 = ms_cos_sin_turn(u_33.y);
-    return float3((r_25 * _e4.x), (r_25 * _e4.y), sqrt(max((1.0 - u_33.x), 0.0)));
+    float r_25 = sqrt(u_35.x);
+    const float2 _e4 = ms_cos_sin_turn(u_35.y);
+    return float3((r_25 * _e4.x), (r_25 * _e4.y), sqrt(max((1.0 - u_35.x), 0.0)));
 }
 
-MsBsdfSample ms_conductor_sample_kulla_conty(MsConductor c_15, float3 wo_45, float uc_3, float2 u_34, float e_o_6)
+MsBsdfSample ms_conductor_sample_kulla_conty(MsConductor c_15, float3 wo_47, float uc_3, float2 u_36, float e_o_6)
 {
-    float3 wi_42 = (float3)0;
+    float3 wi_44 = (float3)0;
     bool local_44 = (bool)0;
 
     MsBsdfSample none_4 = ConstructMsBsdfSample((0.0).xxx, 0.0, (0.0).xxx, 0u, 1.0);
-    const bool _e14 = ms_on_horizon(wo_45.z);
+    const bool _e14 = ms_on_horizon(wo_47.z);
     if (_e14) {
         const MsBsdfSample msbsdfsample_22 = none_4;
         return msbsdfsample_22;
     }
     const float _e15 = ms_kulla_conty_p_ms(e_o_6);
     if ((uc_3 < _e15)) {
-        const float3 _e18 = ms_cosine_hemisphere(u_34);
-        wi_42 = _e18;
-        if ((wo_45.z < 0.0)) {
-            float _e24 = wi_42.z;
-            wi_42.z = -(_e24);
+        const float3 _e18 = ms_cosine_hemisphere(u_36);
+        wi_44 = _e18;
+        if ((wo_47.z < 0.0)) {
+            float _e24 = wi_44.z;
+            wi_44.z = -(_e24);
         }
     } else {
-        const MsBsdfSample _e30 = ms_conductor_sample(c_15, wo_45, ((uc_3 - _e15) / (1.0 - _e15)), u_34);
+        const MsBsdfSample _e30 = ms_conductor_sample(c_15, wo_47, ((uc_3 - _e15) / (1.0 - _e15)), u_36);
         if (!(((_e30.flags & MS_SAMPLE_VALID) == 0u))) {
             local_44 = ((_e30.flags & MS_SAMPLE_SPECULAR) != 0u);
         } else {
@@ -3967,23 +4145,23 @@ MsBsdfSample ms_conductor_sample_kulla_conty(MsConductor c_15, float3 wo_45, flo
             const MsBsdfSample msbsdfsample_23 = _e30;
             return msbsdfsample_23;
         }
-        wi_42 = _e30.wi;
+        wi_44 = _e30.wi;
     }
-    float3 _e47 = wi_42;
-    const float _e48 = ms_conductor_pdf_kulla_conty(c_15, wo_45, _e47, e_o_6);
+    float3 _e47 = wi_44;
+    const float _e48 = ms_conductor_pdf_kulla_conty(c_15, wo_47, _e47, e_o_6);
     const bool _e49 = ms_usable(_e48);
     if (!(_e49)) {
         const MsBsdfSample msbsdfsample_24 = none_4;
         return msbsdfsample_24;
     }
-    float3 _e51 = wi_42;
-    float3 _e52 = wi_42;
-    const float3 _e53 = ms_conductor_eval(c_15, wo_45, _e52);
+    float3 _e51 = wi_44;
+    float3 _e52 = wi_44;
+    const float3 _e53 = ms_conductor_eval(c_15, wo_47, _e52);
     const MsBsdfSample msbsdfsample_25 = ConstructMsBsdfSample(_e51, _e48, _e53, MS_SAMPLE_VALID, 1.0);
     return msbsdfsample_25;
 }
 
-MsBsdfSample ms_kulla_conty_sample_f(MsBsdfSample s_6, float3 wo_46, float e_o_7, float e_i_2, float e_avg_3, float3 f_ms_1)
+MsBsdfSample ms_kulla_conty_sample_f(MsBsdfSample s_6, float3 wo_48, float e_o_7, float e_i_2, float e_avg_3, float3 f_ms_1)
 {
     bool local_45 = (bool)0;
     bool local_46 = (bool)0;
@@ -3995,7 +4173,7 @@ MsBsdfSample ms_kulla_conty_sample_f(MsBsdfSample s_6, float3 wo_46, float e_o_7
     }
     bool _e20 = local_45;
     if (!(_e20)) {
-        local_46 = !(((wo_46.z * s_6.wi.z) > 0.0));
+        local_46 = !(((wo_48.z * s_6.wi.z) > 0.0));
     } else {
         local_46 = true;
     }
@@ -4009,11 +4187,11 @@ MsBsdfSample ms_kulla_conty_sample_f(MsBsdfSample s_6, float3 wo_46, float e_o_7
     return msbsdfsample_27;
 }
 
-MsBsdfSample ms_conductor_sample_turquin(MsConductor c_16, float3 wo_47, float uc_4, float2 u_35, float e_o_8, float3 f0_4)
+MsBsdfSample ms_conductor_sample_turquin(MsConductor c_16, float3 wo_49, float uc_4, float2 u_37, float e_o_8, float3 f0_4)
 {
     bool local_47 = (bool)0;
 
-    const MsBsdfSample _e6 = ms_conductor_sample(c_16, wo_47, uc_4, u_35);
+    const MsBsdfSample _e6 = ms_conductor_sample(c_16, wo_49, uc_4, u_37);
     if (!(((_e6.flags & MS_SAMPLE_VALID) == 0u))) {
         local_47 = ((_e6.flags & MS_SAMPLE_SPECULAR) != 0u);
     } else {
@@ -4051,7 +4229,7 @@ float ms_lut_trilerp(MsLutTap e, MsLutTap r_1, MsLutTap m_5, float4 lo_2, float4
 
     float2 we = float2((1.0 - e.f), e.f);
     float2 wr = float2((1.0 - r_1.f), r_1.f);
-    float2 wm_38 = float2((1.0 - m_5.f), m_5.f);
+    float2 wm_45 = float2((1.0 - m_5.f), m_5.f);
     uint2 loop_bound_8 = uint2(4294967295u, 4294967295u);
     bool loop_init_8 = true;
     while(true) {
@@ -4076,7 +4254,7 @@ float ms_lut_trilerp(MsLutTap e, MsLutTap r_1, MsLutTap m_5, float4 lo_2, float4
             uint _e40 = b_6;
             uint _e44 = b_6;
             uint _e51 = b_6;
-            s_7 = (_e39 + (((we[min(uint((_e40 & 1u)), 1u)] * wr[min(uint(((_e44 >> 1u) & 1u)), 1u)]) * wm_38[min(uint((_e51 >> 2u)), 1u)]) * v_12));
+            s_7 = (_e39 + (((we[min(uint((_e40 & 1u)), 1u)] * wr[min(uint(((_e44 >> 1u) & 1u)), 1u)]) * wm_45[min(uint((_e51 >> 2u)), 1u)]) * v_12));
         }
     }
     float _e61 = s_7;
@@ -4134,15 +4312,15 @@ float2 ms_dielectric_kulla_conty_k(float eta_5, float f_avg_1, float2 e_avg_4)
     return _e34;
 }
 
-float ms_dielectric_kulla_conty_lobe(MsDielectric d_10, float3 wo_48, float3 wi_43, float e_o_9, float e_i_3, float e_avg_i, float k_o)
+float ms_dielectric_kulla_conty_lobe(MsDielectric d_9, float3 wo_50, float3 wi_45, float e_o_9, float e_i_3, float e_avg_i, float k_o)
 {
     bool local_48 = (bool)0;
     bool local_49 = (bool)0;
     float f_4 = (float)0;
     bool local_50 = (bool)0;
 
-    if ((abs(wo_48.z) > 0.0)) {
-        local_48 = (abs(wi_43.z) > 0.0);
+    if ((abs(wo_50.z) > 0.0)) {
+        local_48 = (abs(wi_45.z) > 0.0);
     } else {
         local_48 = false;
     }
@@ -4151,7 +4329,7 @@ float ms_dielectric_kulla_conty_lobe(MsDielectric d_10, float3 wo_48, float3 wi_
         return 0.0;
     }
     float lost = (1.0 - e_o_9);
-    bool crossed = ((wi_43.z < 0.0) != (wo_48.z < 0.0));
+    bool crossed = ((wi_45.z < 0.0) != (wo_50.z < 0.0));
     float share = (crossed ? k_o : (1.0 - k_o));
     float den_4 = (MS_PI * (1.0 - e_avg_i));
     if ((den_4 > 0.0)) {
@@ -4165,13 +4343,13 @@ float ms_dielectric_kulla_conty_lobe(MsDielectric d_10, float3 wo_48, float3 wi_
     }
     f_4 = (((share * lost) * max((1.0 - e_i_3), 0.0)) / den_4);
     if (crossed) {
-        local_50 = (d_10.transport == MS_TRANSPORT_RADIANCE);
+        local_50 = (d_9.transport == MS_TRANSPORT_RADIANCE);
     } else {
         local_50 = false;
     }
     bool _e61 = local_50;
     if (_e61) {
-        float etap_7 = ((wo_48.z > 0.0) ? d_10.eta : (1.0 / d_10.eta));
+        float etap_7 = ((wo_50.z > 0.0) ? d_9.eta : (1.0 / d_9.eta));
         float _e70 = f_4;
         f_4 = (_e70 / (etap_7 * etap_7));
     }
@@ -4179,23 +4357,23 @@ float ms_dielectric_kulla_conty_lobe(MsDielectric d_10, float3 wo_48, float3 wi_
     return _e73;
 }
 
-float ms_dielectric_eval_kulla_conty(MsDielectric d_11, float3 wo_49, float3 wi_44, float e_o_10, float e_i_4, float e_avg_i_1, float k_o_1)
+float ms_dielectric_eval_kulla_conty(MsDielectric d_10, float3 wo_51, float3 wi_46, float e_o_10, float e_i_4, float e_avg_i_1, float k_o_1)
 {
-    const float _e7 = ms_dielectric_eval(d_11, wo_49, wi_44);
-    const bool _e8 = ms_dielectric_smooth(d_11);
+    const float _e7 = ms_dielectric_eval(d_10, wo_51, wi_46);
+    const bool _e8 = ms_dielectric_smooth(d_10);
     if (_e8) {
         return _e7;
     }
-    const float _e9 = ms_dielectric_kulla_conty_lobe(d_11, wo_49, wi_44, e_o_10, e_i_4, e_avg_i_1, k_o_1);
+    const float _e9 = ms_dielectric_kulla_conty_lobe(d_10, wo_51, wi_46, e_o_10, e_i_4, e_avg_i_1, k_o_1);
     return (_e7 + _e9);
 }
 
-float ms_dielectric_eval_turquin(MsDielectric d_12, float3 wo_50, float3 wi_45, float e_o_11)
+float ms_dielectric_eval_turquin(MsDielectric d_11, float3 wo_52, float3 wi_47, float e_o_11)
 {
     bool local_51 = (bool)0;
 
-    const float _e4 = ms_dielectric_eval(d_12, wo_50, wi_45);
-    const bool _e5 = ms_dielectric_smooth(d_12);
+    const float _e4 = ms_dielectric_eval(d_11, wo_52, wi_47);
+    const bool _e5 = ms_dielectric_smooth(d_11);
     if (!(_e5)) {
         local_51 = !((e_o_11 > 0.0));
     } else {
@@ -4208,54 +4386,54 @@ float ms_dielectric_eval_turquin(MsDielectric d_12, float3 wo_50, float3 wi_45, 
     return (_e4 / e_o_11);
 }
 
-float ms_dielectric_kulla_conty_lobe_pdf(float3 wo_51, float3 wi_46, float k_o_2)
+float ms_dielectric_kulla_conty_lobe_pdf(float3 wo_53, float3 wi_48, float k_o_2)
 {
-    bool crossed_1 = ((wi_46.z < 0.0) != (wo_51.z < 0.0));
+    bool crossed_1 = ((wi_48.z < 0.0) != (wo_53.z < 0.0));
     float side = (crossed_1 ? k_o_2 : (1.0 - k_o_2));
-    return ((side * abs(wi_46.z)) / MS_PI);
+    return ((side * abs(wi_48.z)) / MS_PI);
 }
 
-float ms_dielectric_pdf_kulla_conty(MsDielectric d_13, float3 wo_52, float3 wi_47, float e_o_12, float k_o_3)
+float ms_dielectric_pdf_kulla_conty(MsDielectric d_12, float3 wo_54, float3 wi_49, float e_o_12, float k_o_3)
 {
-    const float _e5 = ms_dielectric_pdf(d_13, wo_52, wi_47);
-    const bool _e6 = ms_dielectric_smooth(d_13);
+    const float _e5 = ms_dielectric_pdf(d_12, wo_54, wi_49);
+    const bool _e6 = ms_dielectric_smooth(d_12);
     if (_e6) {
         return _e5;
     }
     const float _e7 = ms_kulla_conty_p_ms(e_o_12);
-    const float _e11 = ms_dielectric_kulla_conty_lobe_pdf(wo_52, wi_47, k_o_3);
+    const float _e11 = ms_dielectric_kulla_conty_lobe_pdf(wo_54, wi_49, k_o_3);
     return (((1.0 - _e7) * _e5) + (_e7 * _e11));
 }
 
-MsBsdfSample ms_dielectric_sample_kulla_conty(MsDielectric d_14, float3 wo_53, float uc_5, float2 u_36, float e_o_13, float k_o_4)
+MsBsdfSample ms_dielectric_sample_kulla_conty(MsDielectric d_13, float3 wo_55, float uc_5, float2 u_38, float e_o_13, float k_o_4)
 {
-    float3 wi_48 = (float3)0;
+    float3 wi_50 = (float3)0;
     bool local_52 = (bool)0;
     bool local_53 = (bool)0;
 
     MsBsdfSample none_5 = ConstructMsBsdfSample((0.0).xxx, 0.0, (0.0).xxx, 0u, 1.0);
-    const bool _e15 = ms_on_horizon(wo_53.z);
+    const bool _e15 = ms_on_horizon(wo_55.z);
     if (_e15) {
         const MsBsdfSample msbsdfsample_31 = none_5;
         return msbsdfsample_31;
     }
-    const bool _e16 = ms_dielectric_smooth(d_14);
+    const bool _e16 = ms_dielectric_smooth(d_13);
     if (_e16) {
-        const MsBsdfSample _e17 = ms_dielectric_sample(d_14, wo_53, uc_5, u_36);
+        const MsBsdfSample _e17 = ms_dielectric_sample(d_13, wo_55, uc_5, u_38);
         const MsBsdfSample msbsdfsample_32 = _e17;
         return msbsdfsample_32;
     }
     const float _e18 = ms_kulla_conty_p_ms(e_o_13);
     if ((uc_5 < _e18)) {
         bool crossed_2 = ((uc_5 / _e18) < k_o_4);
-        const float3 _e23 = ms_cosine_hemisphere(u_36);
-        wi_48 = _e23;
-        if (((wo_53.z > 0.0) == crossed_2)) {
-            float _e30 = wi_48.z;
-            wi_48.z = -(_e30);
+        const float3 _e23 = ms_cosine_hemisphere(u_38);
+        wi_50 = _e23;
+        if (((wo_55.z > 0.0) == crossed_2)) {
+            float _e30 = wi_50.z;
+            wi_50.z = -(_e30);
         }
     } else {
-        const MsBsdfSample _e38 = ms_dielectric_sample(d_14, wo_53, min(((uc_5 - _e18) / (1.0 - _e18)), 0.99999994), u_36);
+        const MsBsdfSample _e38 = ms_dielectric_sample(d_13, wo_55, min(((uc_5 - _e18) / (1.0 - _e18)), 0.99999994), u_38);
         if (!(((_e38.flags & MS_SAMPLE_VALID) == 0u))) {
             local_52 = ((_e38.flags & MS_SAMPLE_SPECULAR) != 0u);
         } else {
@@ -4266,13 +4444,13 @@ MsBsdfSample ms_dielectric_sample_kulla_conty(MsDielectric d_14, float3 wo_53, f
             const MsBsdfSample msbsdfsample_33 = _e38;
             return msbsdfsample_33;
         }
-        wi_48 = _e38.wi;
+        wi_50 = _e38.wi;
     }
-    float3 _e55 = wi_48;
-    const float _e56 = ms_dielectric_pdf_kulla_conty(d_14, wo_53, _e55, e_o_13, k_o_4);
+    float3 _e55 = wi_50;
+    const float _e56 = ms_dielectric_pdf_kulla_conty(d_13, wo_55, _e55, e_o_13, k_o_4);
     const bool _e57 = ms_usable(_e56);
     if (!(!(_e57))) {
-        float _e63 = wi_48.z;
+        float _e63 = wi_50.z;
         local_53 = (_e63 == 0.0);
     } else {
         local_53 = true;
@@ -4282,22 +4460,22 @@ MsBsdfSample ms_dielectric_sample_kulla_conty(MsDielectric d_14, float3 wo_53, f
         const MsBsdfSample msbsdfsample_34 = none_5;
         return msbsdfsample_34;
     }
-    float3 _e68 = wi_48;
-    const float _e69 = ms_dielectric_eval(d_14, wo_53, _e68);
+    float3 _e68 = wi_50;
+    const float _e69 = ms_dielectric_eval(d_13, wo_55, _e68);
     float3 f_7 = (_e69).xxx;
-    float _e72 = wi_48.z;
-    if (((_e72 < 0.0) != (wo_53.z < 0.0))) {
-        float etap_8 = ((wo_53.z > 0.0) ? d_14.eta : (1.0 / d_14.eta));
-        float3 _e87 = wi_48;
+    float _e72 = wi_50.z;
+    if (((_e72 < 0.0) != (wo_55.z < 0.0))) {
+        float etap_8 = ((wo_55.z > 0.0) ? d_13.eta : (1.0 / d_13.eta));
+        float3 _e87 = wi_50;
         const MsBsdfSample msbsdfsample_35 = ConstructMsBsdfSample(_e87, _e56, f_7, 5u, etap_8);
         return msbsdfsample_35;
     }
-    float3 _e90 = wi_48;
+    float3 _e90 = wi_50;
     const MsBsdfSample msbsdfsample_36 = ConstructMsBsdfSample(_e90, _e56, f_7, MS_SAMPLE_VALID, 1.0);
     return msbsdfsample_36;
 }
 
-MsBsdfSample ms_dielectric_kulla_conty_sample_f(MsBsdfSample s_9, MsDielectric d_15, float3 wo_54, float e_o_14, float e_i_5, float e_avg_i_2, float k_o_5)
+MsBsdfSample ms_dielectric_kulla_conty_sample_f(MsBsdfSample s_9, MsDielectric d_14, float3 wo_56, float e_o_14, float e_i_5, float e_avg_i_2, float k_o_5)
 {
     bool local_54 = (bool)0;
 
@@ -4311,17 +4489,17 @@ MsBsdfSample ms_dielectric_kulla_conty_sample_f(MsBsdfSample s_9, MsDielectric d
         const MsBsdfSample msbsdfsample_37 = s_9;
         return msbsdfsample_37;
     }
-    const float _e23 = ms_dielectric_kulla_conty_lobe(d_15, wo_54, s_9.wi, e_o_14, e_i_5, e_avg_i_2, k_o_5);
+    const float _e23 = ms_dielectric_kulla_conty_lobe(d_14, wo_56, s_9.wi, e_o_14, e_i_5, e_avg_i_2, k_o_5);
     const MsBsdfSample msbsdfsample_38 = ConstructMsBsdfSample(s_9.wi, s_9.pdf, (s_9.f + (_e23).xxx), s_9.flags, s_9.eta);
     return msbsdfsample_38;
 }
 
-MsBsdfSample ms_dielectric_sample_turquin(MsDielectric d_16, float3 wo_55, float uc_6, float2 u_37, float e_o_15)
+MsBsdfSample ms_dielectric_sample_turquin(MsDielectric d_15, float3 wo_57, float uc_6, float2 u_39, float e_o_15)
 {
     bool local_55 = (bool)0;
     bool local_56 = (bool)0;
 
-    const MsBsdfSample _e5 = ms_dielectric_sample(d_16, wo_55, uc_6, u_37);
+    const MsBsdfSample _e5 = ms_dielectric_sample(d_15, wo_57, uc_6, u_39);
     if (!(((_e5.flags & MS_SAMPLE_VALID) == 0u))) {
         local_55 = ((_e5.flags & MS_SAMPLE_SPECULAR) != 0u);
     } else {
@@ -4360,12 +4538,12 @@ uint NagaBufferLength(ByteAddressBuffer buffer)
 
 uint ms_k_index(uint3 id_13, uint3 groups_13)
 {
-    uint i_14 = (id_13.x + ((id_13.y * groups_13.x) * 64u));
+    uint i_15 = (id_13.x + ((id_13.y * groups_13.x) * 64u));
     uint n_13 = naga_div(((NagaBufferLength(ms_in) - 0) / 16), MS_K_IN);
-    if ((i_14 >= n_13)) {
+    if ((i_15 >= n_13)) {
         return n_13;
     }
-    return i_14;
+    return i_15;
 }
 
 MsMicrofacet ConstructMsMicrofacet(uint arg0, float2 arg1, uint arg2) {
@@ -4440,18 +4618,18 @@ void ms_k_ggx_eval(uint3 id : SV_DispatchThreadID, uint3 groups : SV_GroupID)
     float4 _e12 = asfloat(ms_in.Load4((_e2 * MS_K_IN)*16));
     float2 a_25 = _e12.xy;
     float4 _e20 = asfloat(ms_in.Load4(((_e2 * MS_K_IN) + 1u)*16));
-    float3 wo_56 = _e20.xyz;
+    float3 wo_58 = _e20.xyz;
     float4 _e28 = asfloat(ms_in.Load4(((_e2 * MS_K_IN) + 2u)*16));
-    float3 wm_39 = _e28.xyz;
-    const float _e34 = ms_ggx_d(wm_39, a_25);
-    const float _e35 = ms_ggx_lambda(wo_56, a_25);
-    const float _e36 = ms_ggx_g1_(wo_56, a_25);
-    const float _e37 = ms_ggx_g2_(wo_56, wm_39, a_25);
+    float3 wm_46 = _e28.xyz;
+    const float _e34 = ms_ggx_d(wm_46, a_25);
+    const float _e35 = ms_ggx_lambda(wo_58, a_25);
+    const float _e36 = ms_ggx_g1_(wo_58, a_25);
+    const float _e37 = ms_ggx_g2_(wo_58, wm_46, a_25);
     ms_out.Store4((_e2 * MS_K_OUT)*16, asuint(float4(_e34, _e35, _e36, _e37)));
-    const float _e45 = ms_ggx_g2_separable(wo_56, wm_39, a_25);
-    const float _e46 = ms_ggx_pdf(wo_56, wm_39, a_25);
-    const float _e47 = ms_ggx_pdf_dcos(wm_39, a_25);
-    const float _e48 = ms_ggx_pdf_bounded(wo_56, wm_39, a_25);
+    const float _e45 = ms_ggx_g2_separable(wo_58, wm_46, a_25);
+    const float _e46 = ms_ggx_pdf(wo_58, wm_46, a_25);
+    const float _e47 = ms_ggx_pdf_dcos(wm_46, a_25);
+    const float _e48 = ms_ggx_pdf_bounded(wo_58, wm_46, a_25);
     ms_out.Store4(((_e2 * MS_K_OUT) + 1u)*16, asuint(float4(_e45, _e46, _e47, _e48)));
     return;
 }
@@ -4466,18 +4644,18 @@ void ms_k_beckmann_eval(uint3 id_1 : SV_DispatchThreadID, uint3 groups_1 : SV_Gr
     float4 _e12 = asfloat(ms_in.Load4((_e2 * MS_K_IN)*16));
     float2 a_26 = _e12.xy;
     float4 _e20 = asfloat(ms_in.Load4(((_e2 * MS_K_IN) + 1u)*16));
-    float3 wo_57 = _e20.xyz;
+    float3 wo_59 = _e20.xyz;
     float4 _e28 = asfloat(ms_in.Load4(((_e2 * MS_K_IN) + 2u)*16));
-    float3 wm_40 = _e28.xyz;
-    const float _e34 = ms_beckmann_d(wm_40, a_26);
-    const float _e35 = ms_beckmann_lambda(wo_57, a_26);
-    const float _e36 = ms_beckmann_g1_(wo_57, a_26);
-    const float _e37 = ms_beckmann_g2_(wo_57, wm_40, a_26);
+    float3 wm_47 = _e28.xyz;
+    const float _e34 = ms_beckmann_d(wm_47, a_26);
+    const float _e35 = ms_beckmann_lambda(wo_59, a_26);
+    const float _e36 = ms_beckmann_g1_(wo_59, a_26);
+    const float _e37 = ms_beckmann_g2_(wo_59, wm_47, a_26);
     ms_out.Store4((_e2 * MS_K_OUT)*16, asuint(float4(_e34, _e35, _e36, _e37)));
-    const float _e45 = ms_beckmann_g2_separable(wo_57, wm_40, a_26);
-    const float _e46 = ms_beckmann_pdf(wo_57, wm_40, a_26);
-    const float _e47 = ms_beckmann_pdf_dcos(wm_40, a_26);
-    const float _e51 = ms_pdf(ConstructMsMicrofacet(MS_NDF_BECKMANN, a_26, 0u), wo_57, wm_40);
+    const float _e45 = ms_beckmann_g2_separable(wo_59, wm_47, a_26);
+    const float _e46 = ms_beckmann_pdf(wo_59, wm_47, a_26);
+    const float _e47 = ms_beckmann_pdf_dcos(wm_47, a_26);
+    const float _e51 = ms_pdf(ConstructMsMicrofacet(MS_NDF_BECKMANN, a_26, 0u), wo_59, wm_47);
     ms_out.Store4(((_e2 * MS_K_OUT) + 1u)*16, asuint(float4(_e45, _e46, _e47, _e51)));
     return;
 }
@@ -4491,8 +4669,8 @@ void ms_k_beckmann_sample(uint3 id_2 : SV_DispatchThreadID, uint3 groups_2 : SV_
     }
     float4 r0_3 = asfloat(ms_in.Load4((_e2 * MS_K_IN)*16));
     float4 _e19 = asfloat(ms_in.Load4(((_e2 * MS_K_IN) + 1u)*16));
-    float3 wo_58 = _e19.xyz;
-    const MsSample _e26 = ms_sample(ConstructMsMicrofacet(MS_NDF_BECKMANN, r0_3.xy, 0u), wo_58, r0_3.zw);
+    float3 wo_60 = _e19.xyz;
+    const MsSample _e26 = ms_sample(ConstructMsMicrofacet(MS_NDF_BECKMANN, r0_3.xy, 0u), wo_60, r0_3.zw);
     const MsSample _e29 = ms_beckmann_sample_dcos(r0_3.xy, r0_3.zw);
     ms_out.Store4((_e2 * MS_K_OUT)*16, asuint(float4(_e26.wm, _e26.pdf)));
     ms_out.Store4(((_e2 * MS_K_OUT) + 1u)*16, asuint(float4(_e29.wm, _e29.pdf)));
@@ -4508,8 +4686,8 @@ void ms_k_ggx_sample(uint3 id_3 : SV_DispatchThreadID, uint3 groups_3 : SV_Group
     }
     float4 r0_4 = asfloat(ms_in.Load4((_e2 * MS_K_IN)*16));
     float4 _e19 = asfloat(ms_in.Load4(((_e2 * MS_K_IN) + 1u)*16));
-    float3 wo_59 = _e19.xyz;
-    const MsSample _e23 = ms_ggx_sample(wo_59, r0_4.xy, r0_4.zw);
+    float3 wo_61 = _e19.xyz;
+    const MsSample _e23 = ms_ggx_sample(wo_61, r0_4.xy, r0_4.zw);
     const MsSample _e26 = ms_ggx_sample_dcos(r0_4.xy, r0_4.zw);
     ms_out.Store4((_e2 * MS_K_OUT)*16, asuint(float4(_e23.wm, _e23.pdf)));
     ms_out.Store4(((_e2 * MS_K_OUT) + 1u)*16, asuint(float4(_e26.wm, _e26.pdf)));
@@ -4525,12 +4703,12 @@ void ms_k_ggx_bounded(uint3 id_4 : SV_DispatchThreadID, uint3 groups_4 : SV_Grou
     }
     float4 r0_5 = asfloat(ms_in.Load4((_e2 * MS_K_IN)*16));
     float4 _e19 = asfloat(ms_in.Load4(((_e2 * MS_K_IN) + 1u)*16));
-    float3 wo_60 = _e19.xyz;
+    float3 wo_62 = _e19.xyz;
     float4 _e27 = asfloat(ms_in.Load4(((_e2 * MS_K_IN) + 2u)*16));
-    float3 wi_53 = _e27.xyz;
-    const MsSample _e31 = ms_ggx_sample_bounded(wo_60, r0_5.xy, r0_5.zw);
+    float3 wi_55 = _e27.xyz;
+    const MsSample _e31 = ms_ggx_sample_bounded(wo_62, r0_5.xy, r0_5.zw);
     ms_out.Store4((_e2 * MS_K_OUT)*16, asuint(float4(_e31.wm, _e31.pdf)));
-    const float _e46 = ms_ggx_pdf_bounded_reflection(wo_60, wi_53, r0_5.xy);
+    const float _e46 = ms_ggx_pdf_bounded_reflection(wo_62, wi_55, r0_5.xy);
     ms_out.Store4(((_e2 * MS_K_OUT) + 1u)*16, asuint(float4(_e46, 0.0, 0.0, 0.0)));
     return;
 }
@@ -4564,13 +4742,13 @@ void ms_k_conductor_eval(uint3 id_6 : SV_DispatchThreadID, uint3 groups_6 : SV_G
     }
     const MsConductor _e8 = ms_k_conductor(_e2);
     float4 _e15 = asfloat(ms_in.Load4(((_e2 * MS_K_IN) + 1u)*16));
-    float3 wo_61 = _e15.xyz;
+    float3 wo_63 = _e15.xyz;
     float4 _e23 = asfloat(ms_in.Load4(((_e2 * MS_K_IN) + 2u)*16));
-    float3 wi_54 = _e23.xyz;
-    const float3 _e29 = ms_conductor_eval(_e8, wo_61, wi_54);
-    const float _e30 = ms_conductor_pdf(_e8, wo_61, wi_54);
+    float3 wi_56 = _e23.xyz;
+    const float3 _e29 = ms_conductor_eval(_e8, wo_63, wi_56);
+    const float _e30 = ms_conductor_pdf(_e8, wo_63, wi_56);
     ms_out.Store4((_e2 * MS_K_OUT)*16, asuint(float4(_e29, _e30)));
-    const float4 _e38 = ms_conductor_eval_pdf(_e8, wo_61, wi_54);
+    const float4 _e38 = ms_conductor_eval_pdf(_e8, wo_63, wi_56);
     ms_out.Store4(((_e2 * MS_K_OUT) + 1u)*16, asuint(_e38));
     return;
 }
@@ -4600,11 +4778,11 @@ void ms_k_dielectric_eval(uint3 id_8 : SV_DispatchThreadID, uint3 groups_8 : SV_
     }
     const MsDielectric _e8 = ms_k_dielectric(_e2);
     float4 _e15 = asfloat(ms_in.Load4(((_e2 * MS_K_IN) + 1u)*16));
-    float3 wo_62 = _e15.xyz;
+    float3 wo_64 = _e15.xyz;
     float4 _e23 = asfloat(ms_in.Load4(((_e2 * MS_K_IN) + 2u)*16));
-    float3 wi_55 = _e23.xyz;
-    const float _e29 = ms_dielectric_eval(_e8, wo_62, wi_55);
-    const float _e30 = ms_dielectric_pdf(_e8, wo_62, wi_55);
+    float3 wi_57 = _e23.xyz;
+    const float _e29 = ms_dielectric_eval(_e8, wo_64, wi_57);
+    const float _e30 = ms_dielectric_pdf(_e8, wo_64, wi_57);
     ms_out.Store4((_e2 * MS_K_OUT)*16, asuint(float4(_e29, _e30, 0.0, 0.0)));
     ms_out.Store4(((_e2 * MS_K_OUT) + 1u)*16, asuint((0.0).xxxx));
     return;
@@ -4635,19 +4813,19 @@ void ms_k_family_eval(uint3 id_10 : SV_DispatchThreadID, uint3 groups_10 : SV_Gr
     }
     float4 r0_8 = asfloat(ms_in.Load4((_e2 * MS_K_IN)*16));
     float4 _e19 = asfloat(ms_in.Load4(((_e2 * MS_K_IN) + 1u)*16));
-    float3 wo_63 = _e19.xyz;
+    float3 wo_65 = _e19.xyz;
     float4 r2_3 = asfloat(ms_in.Load4(((_e2 * MS_K_IN) + 2u)*16));
-    float3 wm_41 = r2_3.xyz;
+    float3 wm_48 = r2_3.xyz;
     const MsMicrofacet _e29 = ms_k_microfacet(r0_8, r2_3);
-    const float _e34 = ms_d(_e29, wm_41);
-    const float _e35 = ms_lambda(_e29, wo_63);
-    const float _e36 = ms_g1_(_e29, wo_63);
-    const float _e37 = ms_g2_(_e29, wo_63, wm_41);
+    const float _e34 = ms_d(_e29, wm_48);
+    const float _e35 = ms_lambda(_e29, wo_65);
+    const float _e36 = ms_g1_(_e29, wo_65);
+    const float _e37 = ms_g2_(_e29, wo_65, wm_48);
     ms_out.Store4((_e2 * MS_K_OUT)*16, asuint(float4(_e34, _e35, _e36, _e37)));
-    const float _e45 = ms_g2_separable(_e29, wo_63, wm_41);
-    const float _e46 = ms_pdf(_e29, wo_63, wm_41);
-    const float _e47 = ms_pdf_dcos(_e29, wm_41);
-    const float _e48 = ms_g1_(_e29, wm_41);
+    const float _e45 = ms_g2_separable(_e29, wo_65, wm_48);
+    const float _e46 = ms_pdf(_e29, wo_65, wm_48);
+    const float _e47 = ms_pdf_dcos(_e29, wm_48);
+    const float _e48 = ms_g1_(_e29, wm_48);
     ms_out.Store4(((_e2 * MS_K_OUT) + 1u)*16, asuint(float4(_e45, _e46, _e47, _e48)));
     return;
 }
@@ -4661,11 +4839,11 @@ void ms_k_family_sample(uint3 id_11 : SV_DispatchThreadID, uint3 groups_11 : SV_
     }
     float4 r0_9 = asfloat(ms_in.Load4((_e2 * MS_K_IN)*16));
     float4 _e19 = asfloat(ms_in.Load4(((_e2 * MS_K_IN) + 1u)*16));
-    float3 wo_64 = _e19.xyz;
+    float3 wo_66 = _e19.xyz;
     float4 _e27 = asfloat(ms_in.Load4(((_e2 * MS_K_IN) + 2u)*16));
     const MsMicrofacet _e28 = ms_k_microfacet(r0_9, _e27);
     const MsSample _e30 = ms_sample_dcos(_e28, r0_9.zw);
-    const MsSample _e32 = ms_sample(_e28, wo_64, r0_9.zw);
+    const MsSample _e32 = ms_sample(_e28, wo_66, r0_9.zw);
     ms_out.Store4((_e2 * MS_K_OUT)*16, asuint(float4(_e30.wm, _e30.pdf)));
     ms_out.Store4(((_e2 * MS_K_OUT) + 1u)*16, asuint(float4(_e32.wm, _e32.pdf)));
     return;

@@ -1963,7 +1963,9 @@ fn ms_mixture_g2_separable(table: u32, wo: vec3<f32>, wi: vec3<f32>, alpha: vec2
     return ms_mixture_g1(table, wo, alpha) * ms_mixture_g1(table, wi, alpha);
 }
 
-fn ms_mixture_pdf(table: u32, w: vec3<f32>, wm: vec3<f32>, alpha: vec2<f32>, d: f32) -> f32 {
+// (From ln D, not D: D may lie below f32's normals, and a device flush it to 0, where the
+// density G1 (c/z) D, with c/z up to 1/|w.z|, is a normal f32.)
+fn ms_mixture_pdf(table: u32, w: vec3<f32>, wm: vec3<f32>, alpha: vec2<f32>, ln_d: f32) -> f32 {
     let z = abs(w.z);
     var c = ms_dot(w, wm);
     if w.z < 0.0 {
@@ -1972,7 +1974,7 @@ fn ms_mixture_pdf(table: u32, w: vec3<f32>, wm: vec3<f32>, alpha: vec2<f32>, d: 
     if !(c > 0.0 && z > 0.0) {
         return 0.0;
     }
-    return ms_mixture_g1(table, w, alpha) * c * d / z;
+    return exp(log(ms_mixture_g1(table, w, alpha) * (c / z)) + ln_d);
 }
 
 // The clamp of ln β: β(αx, αy) within f32's range with margin (|ln| ≤ 80); β = 0 or ∞ has
@@ -1998,13 +2000,12 @@ fn ms_mixture_sample_dcos_wm(table: u32, alpha: vec2<f32>, u: vec2<f32>) -> vec3
     return ms_beckmann_sample_dcos(ms_mixture_beta(ln_beta, alpha) * alpha, u).wm;
 }
 
-// D of a mixture from the logarithm of its radial profile at unit roughness, ln f₁(r) (r the
-// stretched slope's length, from r² = q/z², q = (m.x/αx)² + (m.y/αy)²): D = f₁(r)/(αx αy z⁴),
-// formed as one exponential of ln f₁ − ln(αx αy z⁴), so that neither f₁ nor z⁴ underflows on
-// the way where D is a normal f32. 0 on and below the horizon; NaN stays NaN.
-fn ms_mixture_d_from_ln_profile(ln_f: f32, wm: vec3<f32>, alpha: vec2<f32>) -> f32 {
-    let ln_z = log(wm.z);
-    return exp(ln_f - log(alpha.x * alpha.y) - 4.0 * ln_z);
+// ln D of a mixture from the logarithm of its radial profile at unit roughness, ln f₁(r) (r
+// the stretched slope's length, from r² = q/z², q = (m.x/αx)² + (m.y/αy)², wm above the
+// horizon): D = f₁(r)/(αx αy z⁴) is one exponential of ln f₁ − ln(αx αy z⁴), so that neither f₁
+// nor z⁴ underflows on the way where D is a normal f32.
+fn ms_mixture_ln_d(ln_f: f32, wm: vec3<f32>, alpha: vec2<f32>) -> f32 {
+    return ln_f - log(alpha.x * alpha.y) - 4.0 * log(wm.z);
 }
 
 // r² = q/z² of wm at (αx, αy) (+∞ on the horizon).
@@ -2153,7 +2154,8 @@ fn ms_student_t_pdf(w: vec3<f32>, wm: vec3<f32>, alpha: vec2<f32>, table: u32) -
     if !(c > 0.0 && z > 0.0) {
         return 0.0;
     }
-    return ms_student_t_g1(w, alpha, table) * c * ms_student_t_d(wm, alpha, table) / z;
+    // ((c/z) first: G1 c D can pass below f32's normals where the density is one.)
+    return ms_student_t_g1(w, alpha, table) * (c / z) * ms_student_t_d(wm, alpha, table);
 }
 
 // The density of ms_student_t_sample_dcos: D(wm) cos θm (0 for wm.z ≤ 0).
@@ -2208,16 +2210,25 @@ fn ms_ei_ln_profile(y: f32) -> f32 {
     return log(ms_e1x(y)) - y - log(MS_PI);
 }
 
-// D(wm); 0 on and below the horizon, +∞ at the pole (r = 0), NaN for NaN.
-fn ms_ei_d(wm: vec3<f32>, alpha: vec2<f32>) -> f32 {
+// ln D(wm) for wm above the horizon (−1e30, D = 0, on and below it; NaN for NaN), +1e30 (D = +∞) at the pole (r = 0).
+fn ms_ei_ln_d(wm: vec3<f32>, alpha: vec2<f32>) -> f32 {
     if !(wm.z > 0.0) {
-        return select(0.0, wm.z, wm.z != wm.z);
+        return select(-1e30, wm.z, wm.z != wm.z);
     }
     let r2 = ms_mixture_r2(wm, alpha);
     if r2 == 0.0 {
+        return 1e30;
+    }
+    return ms_mixture_ln_d(ms_ei_ln_profile(r2), wm, alpha);
+}
+
+// D(wm); 0 on and below the horizon, +∞ at the pole, NaN for NaN.
+fn ms_ei_d(wm: vec3<f32>, alpha: vec2<f32>) -> f32 {
+    let ln_d = ms_ei_ln_d(wm, alpha);
+    if ln_d >= 1e30 {
         return ms_inf();
     }
-    return ms_mixture_d_from_ln_profile(ms_ei_ln_profile(r2), wm, alpha);
+    return exp(ln_d);
 }
 
 // Smith Λ(w), Λ(−w) = Λ(w), from the shape table at `table`.
@@ -2242,7 +2253,7 @@ fn ms_ei_g2_separable(wo: vec3<f32>, wi: vec3<f32>, alpha: vec2<f32>, table: u32
 
 // The visible-normal density D_w(wm) (w.z < 0 mirrored).
 fn ms_ei_pdf(w: vec3<f32>, wm: vec3<f32>, alpha: vec2<f32>, table: u32) -> f32 {
-    return ms_mixture_pdf(table, w, wm, alpha, ms_ei_d(wm, alpha));
+    return ms_mixture_pdf(table, w, wm, alpha, ms_ei_ln_d(wm, alpha));
 }
 
 // The D·cos density D(wm) cos θm (0 for wm.z ≤ 0).
@@ -2286,16 +2297,25 @@ fn ms_erfc_ln_profile(y: f32) -> f32 {
     return log(ms_bk_erfcx(r) / (2.0 * MS_SQRT_PI * r)) - y;
 }
 
-// D(wm); 0 on and below the horizon, +∞ at the pole (r = 0), NaN for NaN.
-fn ms_erfc_d(wm: vec3<f32>, alpha: vec2<f32>) -> f32 {
+// ln D(wm) for wm above the horizon (−1e30, D = 0, on and below it; NaN for NaN), +1e30 (D = +∞) at the pole (r = 0).
+fn ms_erfc_ln_d(wm: vec3<f32>, alpha: vec2<f32>) -> f32 {
     if !(wm.z > 0.0) {
-        return select(0.0, wm.z, wm.z != wm.z);
+        return select(-1e30, wm.z, wm.z != wm.z);
     }
     let r2 = ms_mixture_r2(wm, alpha);
     if r2 == 0.0 {
+        return 1e30;
+    }
+    return ms_mixture_ln_d(ms_erfc_ln_profile(r2), wm, alpha);
+}
+
+// D(wm); 0 on and below the horizon, +∞ at the pole, NaN for NaN.
+fn ms_erfc_d(wm: vec3<f32>, alpha: vec2<f32>) -> f32 {
+    let ln_d = ms_erfc_ln_d(wm, alpha);
+    if ln_d >= 1e30 {
         return ms_inf();
     }
-    return ms_mixture_d_from_ln_profile(ms_erfc_ln_profile(r2), wm, alpha);
+    return exp(ln_d);
 }
 
 // Smith Λ(w), Λ(−w) = Λ(w), from the shape table at `table`.
@@ -2320,7 +2340,7 @@ fn ms_erfc_g2_separable(wo: vec3<f32>, wi: vec3<f32>, alpha: vec2<f32>, table: u
 
 // The visible-normal density D_w(wm) (w.z < 0 mirrored).
 fn ms_erfc_pdf(w: vec3<f32>, wm: vec3<f32>, alpha: vec2<f32>, table: u32) -> f32 {
-    return ms_mixture_pdf(table, w, wm, alpha, ms_erfc_d(wm, alpha));
+    return ms_mixture_pdf(table, w, wm, alpha, ms_erfc_ln_d(wm, alpha));
 }
 
 // The D·cos density D(wm) cos θm (0 for wm.z ≤ 0).
@@ -2364,16 +2384,25 @@ fn ms_k0_ln_profile(y: f32) -> f32 {
     return log(2.0 * ms_k0e(z) / MS_PI) - z;
 }
 
-// D(wm); 0 on and below the horizon, +∞ at the pole (r = 0), NaN for NaN.
-fn ms_k0_d(wm: vec3<f32>, alpha: vec2<f32>) -> f32 {
+// ln D(wm) for wm above the horizon (−1e30, D = 0, on and below it; NaN for NaN), +1e30 (D = +∞) at the pole (r = 0).
+fn ms_k0_ln_d(wm: vec3<f32>, alpha: vec2<f32>) -> f32 {
     if !(wm.z > 0.0) {
-        return select(0.0, wm.z, wm.z != wm.z);
+        return select(-1e30, wm.z, wm.z != wm.z);
     }
     let r2 = ms_mixture_r2(wm, alpha);
     if r2 == 0.0 {
+        return 1e30;
+    }
+    return ms_mixture_ln_d(ms_k0_ln_profile(r2), wm, alpha);
+}
+
+// D(wm); 0 on and below the horizon, +∞ at the pole, NaN for NaN.
+fn ms_k0_d(wm: vec3<f32>, alpha: vec2<f32>) -> f32 {
+    let ln_d = ms_k0_ln_d(wm, alpha);
+    if ln_d >= 1e30 {
         return ms_inf();
     }
-    return ms_mixture_d_from_ln_profile(ms_k0_ln_profile(r2), wm, alpha);
+    return exp(ln_d);
 }
 
 // Smith Λ(w), Λ(−w) = Λ(w), from the shape table at `table`.
@@ -2398,7 +2427,7 @@ fn ms_k0_g2_separable(wo: vec3<f32>, wi: vec3<f32>, alpha: vec2<f32>, table: u32
 
 // The visible-normal density D_w(wm) (w.z < 0 mirrored).
 fn ms_k0_pdf(w: vec3<f32>, wm: vec3<f32>, alpha: vec2<f32>, table: u32) -> f32 {
-    return ms_mixture_pdf(table, w, wm, alpha, ms_k0_d(wm, alpha));
+    return ms_mixture_pdf(table, w, wm, alpha, ms_k0_ln_d(wm, alpha));
 }
 
 // The D·cos density D(wm) cos θm (0 for wm.z ≤ 0).
@@ -2421,12 +2450,132 @@ fn ms_k0_sample(w: vec3<f32>, alpha: vec2<f32>, u: vec2<f32>, table: u32) -> MsS
     return MsSample(wm, ms_k0_pdf(ms_unit(w), wm, alpha, table));
 }
 
+// microsurface WGSL library: the Bessel-K NDF, anisotropic (bessel_k.wgsl).
+//
+// The Rust `Microfacet<f32, BesselK>` (crates/microsurface/src/fast/fitted.rs, the family's fast
+// path; ndf/bessel_k.rs for the formulas: the BesselK_NDF page of d'Eon's "A Hitchhiker's Guide to
+// Multiple Scattering"), in f32. The Gamma(a) superposition of Beckmann NDFs over roughness α√t
+// (K0 at a = 1).
+// Its Λ₁ and profile live in a shape table (mixture.wgsl; `microsurface_gpu::Tables::add_shape(
+// NdfKind::BesselK, Some(a))` in Rust, one table per a for every roughness: shape invariant),
+// the profile as a block after the Λ₁ rows (row 2's w its offset): a row (ν, k0, k1, 0),
+// then the octave table of h(x) = ln f₁(x) + 2x on [2^k0, 2^k1) (degree 7, two rows a segment,
+// fitted to the Rust f64 profile).
+//
+//   D(m) = f₁(r)/(αx αy z⁴),  f₁(r) = 2 r^ν K_ν(2r)/(π Γ(a)),  ν = a − 1
+//   Λ(w) = Λ₁(cot θ/α̃) from the table,  G1 = 1/(1 + Λ),  G2 = 1/(1 + Λo + Λi) or G1 G1
+//
+// D·cos and visible normals: exact samplers over the mixture (ms_mixture_sample_dcos_wm: β
+// from the prior, then Beckmann's D·cos warp; ms_mixture_sample_wm: the posterior, then
+// Beckmann's stream sampler), the Rust samplers' distributions, not their normals.
+
+// h(x) = ln f₁(x) + 2x from the profile block at `at` (head = its first row), x in the table.
+fn ms_bessel_k_h(at: u32, head: vec4<f32>, x: f32) -> f32 {
+    let g = ms_bk_segment(x, i32(head.y), i32(head.z));
+    let i = at + 1u + 2u * u32(g.x);
+    return ms_bk_poly(ms_tables[i], ms_tables[i + 1u], g.y);
+}
+
+// ln f₁ at r² = y: h(x) − 2x in the table; past it f₁ < e^{−500} (−1e30: D = 0); below 2^k0
+// (within 1e-12 α of the pole) the profile's leading power from the table's first node x₀:
+// 2ν ln(x/x₀) for ν < 0, ln(ln x/ln x₀) for ν = 0 (f₁ ∝ −ln x), constant for ν > 0.
+fn ms_bessel_k_ln_profile(table: u32, y: f32) -> f32 {
+    let at = table + u32(ms_tables[table + 2u].w);
+    let head = ms_tables[at];
+    let x = sqrt(y);
+    if !(x < exp2(head.z)) {
+        return select(-1e30, x, x != x);
+    }
+    let x0 = exp2(head.y);
+    if x < x0 {
+        let h0 = ms_bessel_k_h(at, head, x0) - 2.0 * x0;
+        if head.x < 0.0 {
+            return h0 + 2.0 * head.x * log(x / x0);
+        }
+        if head.x == 0.0 {
+            return h0 + log(log(x) / log(x0));
+        }
+        return h0;
+    }
+    return ms_bessel_k_h(at, head, x) - 2.0 * x;
+}
+
+// ln D(wm) for wm above the horizon (−1e30, D = 0, on and below it; NaN for NaN), at the pole (r = 0) ln(1/(πν αx αy)) or +1e30 (+∞).
+fn ms_bessel_k_ln_d(wm: vec3<f32>, alpha: vec2<f32>, table: u32) -> f32 {
+    if !(wm.z > 0.0) {
+        return select(-1e30, wm.z, wm.z != wm.z);
+    }
+    let r2 = ms_mixture_r2(wm, alpha);
+    if r2 == 0.0 {
+        let nu = ms_tables[table].x - 1.0;
+        if nu > 0.0 {
+            return -log(MS_PI * nu * alpha.x * alpha.y) - 4.0 * log(wm.z);
+        }
+        return 1e30;
+    }
+    return ms_mixture_ln_d(ms_bessel_k_ln_profile(table, r2), wm, alpha);
+}
+
+// D(wm); 0 on and below the horizon, 1/(πν αx αy) or +∞ at the pole, NaN for NaN.
+fn ms_bessel_k_d(wm: vec3<f32>, alpha: vec2<f32>, table: u32) -> f32 {
+    let ln_d = ms_bessel_k_ln_d(wm, alpha, table);
+    if ln_d >= 1e30 {
+        return ms_inf();
+    }
+    return exp(ln_d);
+}
+
+// Smith Λ(w), Λ(−w) = Λ(w), from the shape table at `table`.
+fn ms_bessel_k_lambda(w: vec3<f32>, alpha: vec2<f32>, table: u32) -> f32 {
+    return ms_shape_lambda(table, w, alpha);
+}
+
+// G1(w).
+fn ms_bessel_k_g1(w: vec3<f32>, alpha: vec2<f32>, table: u32) -> f32 {
+    return ms_mixture_g1(table, w, alpha);
+}
+
+// Height-correlated G2(wo, wi).
+fn ms_bessel_k_g2(wo: vec3<f32>, wi: vec3<f32>, alpha: vec2<f32>, table: u32) -> f32 {
+    return ms_mixture_g2(table, wo, wi, alpha);
+}
+
+// Separable G2(wo, wi) = G1(wo) G1(wi).
+fn ms_bessel_k_g2_separable(wo: vec3<f32>, wi: vec3<f32>, alpha: vec2<f32>, table: u32) -> f32 {
+    return ms_mixture_g2_separable(table, wo, wi, alpha);
+}
+
+// The visible-normal density D_w(wm) (w.z < 0 mirrored).
+fn ms_bessel_k_pdf(w: vec3<f32>, wm: vec3<f32>, alpha: vec2<f32>, table: u32) -> f32 {
+    return ms_mixture_pdf(table, w, wm, alpha, ms_bessel_k_ln_d(wm, alpha, table));
+}
+
+// The D·cos density D(wm) cos θm (0 for wm.z ≤ 0).
+fn ms_bessel_k_pdf_dcos(wm: vec3<f32>, alpha: vec2<f32>, table: u32) -> f32 {
+    if !(wm.z > 0.0) {
+        return 0.0;
+    }
+    return ms_bessel_k_d(wm, alpha, table) * wm.z;
+}
+
+// A D·cos normal from u, with its pdf.
+fn ms_bessel_k_sample_dcos(alpha: vec2<f32>, u: vec2<f32>, table: u32) -> MsSample {
+    let wm = ms_mixture_sample_dcos_wm(table, alpha, u);
+    return MsSample(wm, ms_bessel_k_pdf_dcos(wm, alpha, table));
+}
+
+// A visible normal for w (w.z < 0 mirrored) from u, with its pdf.
+fn ms_bessel_k_sample(w: vec3<f32>, alpha: vec2<f32>, u: vec2<f32>, table: u32) -> MsSample {
+    let wm = ms_mixture_sample_wm(table, w, alpha, u);
+    return MsSample(wm, ms_bessel_k_pdf(ms_unit(w), wm, alpha, table));
+}
+
 // microsurface WGSL library: a material's distribution chosen at run time (microfacet.wgsl),
 // the WGSL counterpart of the Rust `MicrofacetDistribution` door that the BSDFs use. A
 // renderer that knows its NDF calls the per-NDF functions (ms_ggx_d, …) directly.
 
 // Which NDF (`ndf`: an MS_NDF_* constant) at roughness (αx, αy), and for an NDF with a shape
-// table (Student-T, Ei, Erfc, K0) the table's first row in `ms_tables` (`microsurface_gpu::Tables::add_shape`
+// table (Student-T, Ei, Erfc, K0, Bessel-K) the table's first row in `ms_tables` (`microsurface_gpu::Tables::add_shape`
 // gives it; 0 and unused for the others). Beckmann, Double GGX, the Exponential NDF and
 // Student-T read the library's tables (tables.wgsl), so a shader that takes this door binds
 // them.
@@ -2444,6 +2593,7 @@ const MS_NDF_STUDENT_T: u32 = 5u;
 const MS_NDF_EI: u32 = 6u;
 const MS_NDF_ERFC: u32 = 7u;
 const MS_NDF_K0: u32 = 8u;
+const MS_NDF_BESSEL_K: u32 = 9u;
 
 // D(wm); 0 below the horizon (and for an NDF this library does not have).
 fn ms_d(mf: MsMicrofacet, wm: vec3<f32>) -> f32 {
@@ -2470,6 +2620,9 @@ fn ms_d(mf: MsMicrofacet, wm: vec3<f32>) -> f32 {
     }
     if mf.ndf == MS_NDF_K0 {
         return ms_k0_d(wm, mf.alpha);
+    }
+    if mf.ndf == MS_NDF_BESSEL_K {
+        return ms_bessel_k_d(wm, mf.alpha, mf.table);
     }
     return 0.0;
 }
@@ -2500,6 +2653,9 @@ fn ms_lambda(mf: MsMicrofacet, w: vec3<f32>) -> f32 {
     if mf.ndf == MS_NDF_K0 {
         return ms_k0_lambda(w, mf.alpha, mf.table);
     }
+    if mf.ndf == MS_NDF_BESSEL_K {
+        return ms_bessel_k_lambda(w, mf.alpha, mf.table);
+    }
     return 0.0;
 }
 
@@ -2529,6 +2685,9 @@ fn ms_g1(mf: MsMicrofacet, w: vec3<f32>) -> f32 {
     if mf.ndf == MS_NDF_K0 {
         return ms_k0_g1(w, mf.alpha, mf.table);
     }
+    if mf.ndf == MS_NDF_BESSEL_K {
+        return ms_bessel_k_g1(w, mf.alpha, mf.table);
+    }
     return 0.0;
 }
 
@@ -2557,6 +2716,9 @@ fn ms_g2(mf: MsMicrofacet, wo: vec3<f32>, wi: vec3<f32>) -> f32 {
     }
     if mf.ndf == MS_NDF_K0 {
         return ms_k0_g2(wo, wi, mf.alpha, mf.table);
+    }
+    if mf.ndf == MS_NDF_BESSEL_K {
+        return ms_bessel_k_g2(wo, wi, mf.alpha, mf.table);
     }
     return 0.0;
 }
@@ -2591,6 +2753,9 @@ fn ms_pdf(mf: MsMicrofacet, w: vec3<f32>, wm: vec3<f32>) -> f32 {
     }
     if mf.ndf == MS_NDF_K0 {
         return ms_k0_pdf(w, wm, mf.alpha, mf.table);
+    }
+    if mf.ndf == MS_NDF_BESSEL_K {
+        return ms_bessel_k_pdf(w, wm, mf.alpha, mf.table);
     }
     return 0.0;
 }
@@ -2629,6 +2794,9 @@ fn ms_sample(mf: MsMicrofacet, w: vec3<f32>, u: vec2<f32>) -> MsSample {
     if mf.ndf == MS_NDF_K0 {
         return ms_k0_sample(w, mf.alpha, u, mf.table);
     }
+    if mf.ndf == MS_NDF_BESSEL_K {
+        return ms_bessel_k_sample(w, mf.alpha, u, mf.table);
+    }
     return MsSample(vec3<f32>(0.0, 0.0, 1.0), 0.0);
 }
 
@@ -2657,6 +2825,9 @@ fn ms_sample_dcos(mf: MsMicrofacet, u: vec2<f32>) -> MsSample {
     }
     if mf.ndf == MS_NDF_K0 {
         return ms_k0_sample_dcos(mf.alpha, u, mf.table);
+    }
+    if mf.ndf == MS_NDF_BESSEL_K {
+        return ms_bessel_k_sample_dcos(mf.alpha, u, mf.table);
     }
     return MsSample(vec3<f32>(0.0, 0.0, 1.0), 0.0);
 }

@@ -168,6 +168,9 @@
 //! file whose `library_path` is `libEGL_nvidia.so.0`): the GLX one that the driver's own ICD
 //! file names creates no instance without an X server (BENCHMARKS.md).
 
+#[doc(hidden)]
+pub mod fit;
+
 use std::collections::HashMap;
 use std::fmt;
 use std::sync::{mpsc, Mutex};
@@ -175,7 +178,7 @@ use std::sync::{mpsc, Mutex};
 /// The WGSL library, one source: `wgsl/common.wgsl`, `fresnel.wgsl`, `ggx.wgsl`,
 /// `tables.wgsl` (generated: the tables buffer's binding and layout), `stream.wgsl`,
 /// `beckmann.wgsl`, `double_ggx.wgsl`, `exponential.wgsl`, `mixture.wgsl`, `student_t.wgsl`,
-/// `ei.wgsl`, `erfc.wgsl`, `k0.wgsl`, `microfacet.wgsl`,
+/// `ei.wgsl`, `erfc.wgsl`, `k0.wgsl`, `bessel_k.wgsl`, `microfacet.wgsl`,
 /// `conductor.wgsl`, `dielectric.wgsl`, `compensation.wgsl`, in that order. A shader that
 /// includes it defines `MS_TABLES_GROUP` and `MS_TABLES_BINDING` (see [`TABLES`]).
 pub const WGSL: &str = concat!(
@@ -205,6 +208,8 @@ pub const WGSL: &str = concat!(
     "\n",
     include_str!("../wgsl/k0.wgsl"),
     "\n",
+    include_str!("../wgsl/bessel_k.wgsl"),
+    "\n",
     include_str!("../wgsl/microfacet.wgsl"),
     "\n",
     include_str!("../wgsl/conductor.wgsl"),
@@ -231,6 +236,12 @@ pub const WGSL: &str = concat!(
 /// GGX, the Exponential NDF or `MsMicrofacet`); an entry point that calls only GGX and
 /// Fresnel functions needs no buffer bound. [`Gpu`] binds it at group 1, binding 0.
 pub static TABLES: &[u8] = include_bytes!("../generated/microsurface_tables.bin");
+
+/// Bessel-K's profile table spans x ∈ [2^−40, 2^8): below, the profile is its leading
+/// power of x (within 1e-12 α of the pole); above, f₁ < e^{−500} and D is 0 in f32 for every
+/// accepted roughness.
+const BESSEL_PROFILE_K0: i32 = -40;
+const BESSEL_PROFILE_K1: i32 = 8;
 
 /// The contents of the library's buffer `ms_tables` for a shader whose materials have shape
 /// tables: the library's [`TABLES`] followed by each shape's own (the fitted Λ₁ and the
@@ -284,12 +295,12 @@ impl Tables {
         use microsurface::NdfKind;
         let mixing = match kind {
             NdfKind::StudentT => 0.0,
-            NdfKind::K0 => 1.0,
+            NdfKind::K0 | NdfKind::BesselK => 1.0,
             NdfKind::Ei => 2.0,
             NdfKind::Erfc => 3.0,
             _ => {
                 return Err(microsurface::ParamError::Shape {
-                    name: "GPU shape table (Student-T with gamma > 1.5, Ei, Erfc, K0)",
+                    name: "GPU shape table (Student-T with gamma > 1.5, Ei, Erfc, K0, Bessel-K)",
                     range: "(1.5, 1e6]",
                     value: shape.unwrap_or(f64::NAN),
                 })
@@ -304,7 +315,7 @@ impl Tables {
             None => (0.0, [0.0; 3]),
         };
         self.rows.push([
-            if mixing == 0.0 {
+            if matches!(kind, NdfKind::StudentT | NdfKind::BesselK) {
                 shape.unwrap_or(0.0) as f32
             } else {
                 0.0
@@ -315,14 +326,46 @@ impl Tables {
         ]);
         self.rows
             .push([tail_on, tail[0] as f32, tail[1] as f32, tail[2] as f32]);
+        // (Bessel-K's profile block follows the Λ₁ rows: its offset from the table's first
+        // row, exact in f32.)
+        let profile_at = if kind == NdfKind::BesselK {
+            (3 + 2 * l.rows.len()) as f32
+        } else {
+            0.0
+        };
         self.rows
-            .push([l.mean_beta as f32, l.mixing_k as f32, mixing, 0.0]);
+            .push([l.mean_beta as f32, l.mixing_k as f32, mixing, profile_at]);
         for c in l.rows {
             self.rows
                 .push([c[0] as f32, c[1] as f32, c[2] as f32, c[3] as f32]);
             self.rows.push([c[4] as f32, 0.0, 0.0, 0.0]);
         }
+        if kind == NdfKind::BesselK {
+            self.push_bessel_profile(&ndf, shape.unwrap_or(f64::NAN) - 1.0);
+        }
         Ok(at)
+    }
+
+    /// Bessel-K's profile block (bessel_k.wgsl): a row (ν, k0, k1, 0), then the octave table
+    /// ([`fit`], degree 7, two rows a segment) of h(x) = ln f₁(x) + 2x on x ∈ [2^k0, 2^k1),
+    /// f₁ the unit member's radial profile 2x^ν K_ν(2x)/(π Γ(a)) from the Rust f64 NDF (its
+    /// K_ν by quadrature: Λ₁'s table aside, this is where the construction's time goes).
+    /// h is smooth on octaves: the exponential decay is taken out, what is left grows like
+    /// (ν − ½) ln x at large x and like 2ν ln x (ν < 0), a constant (ν > 0) or ln(−ln x)
+    /// (ν = 0) near 0.
+    fn push_bessel_profile(&mut self, unit: &microsurface::AnyNdf, nu: f64) {
+        let h = |x: f64| unit.f(x).unwrap_or(f64::NAN).ln() + 2.0 * x;
+        self.rows.push([
+            nu as f32,
+            BESSEL_PROFILE_K0 as f32,
+            BESSEL_PROFILE_K1 as f32,
+            0.0,
+        ]);
+        for j in 0..fit::segments(BESSEL_PROFILE_K0, BESSEL_PROFILE_K1) {
+            let c = fit::fit(&h, BESSEL_PROFILE_K0, j).map(|x| x as f32);
+            self.rows.push([c[0], c[1], c[2], c[3]]);
+            self.rows.push([c[4], c[5], c[6], c[7]]);
+        }
     }
 
     /// The buffer's bytes (little-endian `vec4<f32>` rows).

@@ -59,8 +59,9 @@ fn gpu() -> Option<&'static (Gpu, Program)> {
 }
 
 /// The NDFs with shape tables, with their shapes and MsMicrofacet tags: Student-T near the
-/// pole at 3/2, GGX's neighbour, and two where the tails approach Beckmann's; Ei, Erfc, K0.
-const SHAPED: [(NdfKind, Option<f64>, u32); 7] = [
+/// pole at 3/2, GGX's neighbour, and two where the tails approach Beckmann's; Ei, Erfc, K0;
+/// Bessel-K with a pole at the normal (a = 0.4) and without (a = 2.5).
+const SHAPED: [(NdfKind, Option<f64>, u32); 9] = [
     (NdfKind::StudentT, Some(1.8), 5),
     (NdfKind::StudentT, Some(2.5), 5),
     (NdfKind::StudentT, Some(10.0), 5),
@@ -68,6 +69,8 @@ const SHAPED: [(NdfKind, Option<f64>, u32); 7] = [
     (NdfKind::Ei, None, 6),
     (NdfKind::Erfc, None, 7),
     (NdfKind::K0, None, 8),
+    (NdfKind::BesselK, Some(0.4), 9),
+    (NdfKind::BesselK, Some(2.5), 9),
 ];
 /// The first four of SHAPED are Student-T.
 const STUDENT_T_GAMMAS: [f64; 4] = [1.8, 2.5, 10.0, 40.0];
@@ -478,8 +481,8 @@ fn chi2_two_sample(a: &[f64], b: &[f64]) -> (f64, usize) {
 /// fewer than those bins), at p = 1e-6. The Rust samplers are χ²-tested against their pdfs
 /// (crates/microsurface/tests/chi2.rs), so this makes the GPU ones consistent with the Rust
 /// pdf. Grazing, oblique and normal incidence, isotropic and anisotropic roughness; Double
-/// GGX, the Exponential NDF, Student-T (γ = 2.5 and 10), Ei, Erfc and K0 (the mixtures'
-/// samplers draw other uniforms than the Rust ones: the same distribution, not the same
+/// GGX, the Exponential NDF, Student-T (γ = 2.5 and 10), Ei, Erfc, K0 and Bessel-K (a = 0.4,
+/// 2.5) (the mixtures' samplers draw other uniforms than the Rust ones: the same distribution, not the same
 /// normals).
 #[test]
 fn samplers_are_chi2_consistent_with_rust() {
@@ -492,6 +495,8 @@ fn samplers_are_chi2_consistent_with_rust() {
         NDF_SHAPED + 4,
         NDF_SHAPED + 5,
         NDF_SHAPED + 6,
+        NDF_SHAPED + 7,
+        NDF_SHAPED + 8,
     ]
     .iter()
     .flat_map(|&ndf| {

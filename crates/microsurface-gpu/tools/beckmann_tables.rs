@@ -18,10 +18,8 @@ use super::tables::Block;
 use microsurface::fast::beckmann::{erfc_ratio, erfcx, erfinv_2u_minus_1};
 use microsurface::{AnyNdf, NdfKind};
 
-/// Coefficients per segment (degree 7): two vec4.
-const DEGREE: usize = 7;
-/// Segments per octave, 2^M.
-const M: u32 = 2;
+use microsurface_gpu::fit::{fit as fit_segment, horner, x_at, M};
+
 /// The largest relative fit error a table may have: f32's unit roundoff 2^−24 (the
 /// coefficients' rounding) plus 4e-8 for the interpolation (see the module docs).
 const FIT_TOL: f64 = 1e-7;
@@ -107,60 +105,9 @@ const TABLES: [Table; 6] = [
     },
 ];
 
-/// x at position s ∈ [−1, 1] of segment `j` of the table starting at 2^k0.
-fn x_at(k0: i32, j: usize, s: f64) -> f64 {
-    let per = 1usize << M;
-    let (oct, seg) = (j / per, j % per);
-    let base = 2f64.powi(k0 + oct as i32);
-    base * (1.0 + (seg as f64 + 0.5 * (s + 1.0)) / per as f64)
-}
-
-/// The monomial coefficients in s of the Chebyshev interpolant of f on segment j.
-fn fit(t: &Table, j: usize) -> [f64; DEGREE + 1] {
-    let n = DEGREE + 1;
-    let nodes: Vec<f64> = (0..n)
-        .map(|k| (std::f64::consts::PI * (k as f64 + 0.5) / n as f64).cos())
-        .collect();
-    let vals: Vec<f64> = nodes.iter().map(|&s| (t.f)(x_at(t.k0, j, s))).collect();
-    // Chebyshev coefficients c_i = (2/n) Σ f(s_k) T_i(s_k) (c_0 halved).
-    let mut cheb = vec![0.0; n];
-    for (i, c) in cheb.iter_mut().enumerate() {
-        let mut sum = 0.0;
-        for (k, v) in vals.iter().enumerate() {
-            let theta = std::f64::consts::PI * (k as f64 + 0.5) / n as f64;
-            sum += v * (i as f64 * theta).cos();
-        }
-        *c = 2.0 * sum / n as f64;
-    }
-    cheb[0] *= 0.5;
-    // T_i in monomials: T_0 = 1, T_1 = s, T_{i+1} = 2s T_i − T_{i−1}.
-    let mut mono = [0.0; DEGREE + 1];
-    let mut t_prev = vec![0.0; n];
-    let mut t_cur = vec![0.0; n];
-    t_prev[0] = 1.0;
-    t_cur[1] = 1.0;
-    mono[0] += cheb[0];
-    mono[1] += cheb[1];
-    for c in cheb.iter().skip(2) {
-        let mut next = vec![0.0; n];
-        for k in 0..n {
-            if k > 0 {
-                next[k] += 2.0 * t_cur[k - 1];
-            }
-            next[k] -= t_prev[k];
-        }
-        for k in 0..n {
-            mono[k] += c * next[k];
-        }
-        t_prev = t_cur;
-        t_cur = next;
-    }
-    mono
-}
-
-/// Σ c_k s^k (Horner, f64) of f32 coefficients.
-fn horner(c: &[f32], s: f64) -> f64 {
-    c.iter().rev().fold(0.0, |acc, &k| acc * s + k as f64)
+/// The fit of segment j of table t.
+fn fit(t: &Table, j: usize) -> [f64; microsurface_gpu::fit::DEGREE + 1] {
+    fit_segment(&t.f, t.k0, j)
 }
 
 /// The Beckmann blocks of the tables buffer (tools/tables.rs): each table's rows (two vec4

@@ -19,16 +19,25 @@ fn ms_erfc_ln_profile(y: f32) -> f32 {
     return log(ms_bk_erfcx(r) / (2.0 * MS_SQRT_PI * r)) - y;
 }
 
-// D(wm); 0 on and below the horizon, +∞ at the pole (r = 0), NaN for NaN.
-fn ms_erfc_d(wm: vec3<f32>, alpha: vec2<f32>) -> f32 {
+// ln D(wm) for wm above the horizon (−1e30, D = 0, on and below it; NaN for NaN), +1e30 (D = +∞) at the pole (r = 0).
+fn ms_erfc_ln_d(wm: vec3<f32>, alpha: vec2<f32>) -> f32 {
     if !(wm.z > 0.0) {
-        return select(0.0, wm.z, wm.z != wm.z);
+        return select(-1e30, wm.z, wm.z != wm.z);
     }
     let r2 = ms_mixture_r2(wm, alpha);
     if r2 == 0.0 {
+        return 1e30;
+    }
+    return ms_mixture_ln_d(ms_erfc_ln_profile(r2), wm, alpha);
+}
+
+// D(wm); 0 on and below the horizon, +∞ at the pole, NaN for NaN.
+fn ms_erfc_d(wm: vec3<f32>, alpha: vec2<f32>) -> f32 {
+    let ln_d = ms_erfc_ln_d(wm, alpha);
+    if ln_d >= 1e30 {
         return ms_inf();
     }
-    return ms_mixture_d_from_ln_profile(ms_erfc_ln_profile(r2), wm, alpha);
+    return exp(ln_d);
 }
 
 // Smith Λ(w), Λ(−w) = Λ(w), from the shape table at `table`.
@@ -53,7 +62,7 @@ fn ms_erfc_g2_separable(wo: vec3<f32>, wi: vec3<f32>, alpha: vec2<f32>, table: u
 
 // The visible-normal density D_w(wm) (w.z < 0 mirrored).
 fn ms_erfc_pdf(w: vec3<f32>, wm: vec3<f32>, alpha: vec2<f32>, table: u32) -> f32 {
-    return ms_mixture_pdf(table, w, wm, alpha, ms_erfc_d(wm, alpha));
+    return ms_mixture_pdf(table, w, wm, alpha, ms_erfc_ln_d(wm, alpha));
 }
 
 // The D·cos density D(wm) cos θm (0 for wm.z ≤ 0).

@@ -3,7 +3,7 @@
 // renderer that knows its NDF calls the per-NDF functions (ms_ggx_d, …) directly.
 
 // Which NDF (`ndf`: an MS_NDF_* constant) at roughness (αx, αy), and for an NDF with a shape
-// table (Student-T, Ei, Erfc, K0) the table's first row in `ms_tables` (`microsurface_gpu::Tables::add_shape`
+// table (Student-T, Ei, Erfc, K0, Bessel-K) the table's first row in `ms_tables` (`microsurface_gpu::Tables::add_shape`
 // gives it; 0 and unused for the others). Beckmann, Double GGX, the Exponential NDF and
 // Student-T read the library's tables (tables.wgsl), so a shader that takes this door binds
 // them.
@@ -21,6 +21,7 @@ const MS_NDF_STUDENT_T: u32 = 5u;
 const MS_NDF_EI: u32 = 6u;
 const MS_NDF_ERFC: u32 = 7u;
 const MS_NDF_K0: u32 = 8u;
+const MS_NDF_BESSEL_K: u32 = 9u;
 
 // D(wm); 0 below the horizon (and for an NDF this library does not have).
 fn ms_d(mf: MsMicrofacet, wm: vec3<f32>) -> f32 {
@@ -47,6 +48,9 @@ fn ms_d(mf: MsMicrofacet, wm: vec3<f32>) -> f32 {
     }
     if mf.ndf == MS_NDF_K0 {
         return ms_k0_d(wm, mf.alpha);
+    }
+    if mf.ndf == MS_NDF_BESSEL_K {
+        return ms_bessel_k_d(wm, mf.alpha, mf.table);
     }
     return 0.0;
 }
@@ -77,6 +81,9 @@ fn ms_lambda(mf: MsMicrofacet, w: vec3<f32>) -> f32 {
     if mf.ndf == MS_NDF_K0 {
         return ms_k0_lambda(w, mf.alpha, mf.table);
     }
+    if mf.ndf == MS_NDF_BESSEL_K {
+        return ms_bessel_k_lambda(w, mf.alpha, mf.table);
+    }
     return 0.0;
 }
 
@@ -106,6 +113,9 @@ fn ms_g1(mf: MsMicrofacet, w: vec3<f32>) -> f32 {
     if mf.ndf == MS_NDF_K0 {
         return ms_k0_g1(w, mf.alpha, mf.table);
     }
+    if mf.ndf == MS_NDF_BESSEL_K {
+        return ms_bessel_k_g1(w, mf.alpha, mf.table);
+    }
     return 0.0;
 }
 
@@ -134,6 +144,9 @@ fn ms_g2(mf: MsMicrofacet, wo: vec3<f32>, wi: vec3<f32>) -> f32 {
     }
     if mf.ndf == MS_NDF_K0 {
         return ms_k0_g2(wo, wi, mf.alpha, mf.table);
+    }
+    if mf.ndf == MS_NDF_BESSEL_K {
+        return ms_bessel_k_g2(wo, wi, mf.alpha, mf.table);
     }
     return 0.0;
 }
@@ -168,6 +181,9 @@ fn ms_pdf(mf: MsMicrofacet, w: vec3<f32>, wm: vec3<f32>) -> f32 {
     }
     if mf.ndf == MS_NDF_K0 {
         return ms_k0_pdf(w, wm, mf.alpha, mf.table);
+    }
+    if mf.ndf == MS_NDF_BESSEL_K {
+        return ms_bessel_k_pdf(w, wm, mf.alpha, mf.table);
     }
     return 0.0;
 }
@@ -206,6 +222,9 @@ fn ms_sample(mf: MsMicrofacet, w: vec3<f32>, u: vec2<f32>) -> MsSample {
     if mf.ndf == MS_NDF_K0 {
         return ms_k0_sample(w, mf.alpha, u, mf.table);
     }
+    if mf.ndf == MS_NDF_BESSEL_K {
+        return ms_bessel_k_sample(w, mf.alpha, u, mf.table);
+    }
     return MsSample(vec3<f32>(0.0, 0.0, 1.0), 0.0);
 }
 
@@ -234,6 +253,9 @@ fn ms_sample_dcos(mf: MsMicrofacet, u: vec2<f32>) -> MsSample {
     }
     if mf.ndf == MS_NDF_K0 {
         return ms_k0_sample_dcos(mf.alpha, u, mf.table);
+    }
+    if mf.ndf == MS_NDF_BESSEL_K {
+        return ms_bessel_k_sample_dcos(mf.alpha, u, mf.table);
     }
     return MsSample(vec3<f32>(0.0, 0.0, 1.0), 0.0);
 }

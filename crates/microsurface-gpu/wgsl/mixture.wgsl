@@ -235,7 +235,9 @@ fn ms_mixture_g2_separable(table: u32, wo: vec3<f32>, wi: vec3<f32>, alpha: vec2
     return ms_mixture_g1(table, wo, alpha) * ms_mixture_g1(table, wi, alpha);
 }
 
-fn ms_mixture_pdf(table: u32, w: vec3<f32>, wm: vec3<f32>, alpha: vec2<f32>, d: f32) -> f32 {
+// (From ln D, not D: D may lie below f32's normals, and a device flush it to 0, where the
+// density G1 (c/z) D, with c/z up to 1/|w.z|, is a normal f32.)
+fn ms_mixture_pdf(table: u32, w: vec3<f32>, wm: vec3<f32>, alpha: vec2<f32>, ln_d: f32) -> f32 {
     let z = abs(w.z);
     var c = ms_dot(w, wm);
     if w.z < 0.0 {
@@ -244,7 +246,7 @@ fn ms_mixture_pdf(table: u32, w: vec3<f32>, wm: vec3<f32>, alpha: vec2<f32>, d: 
     if !(c > 0.0 && z > 0.0) {
         return 0.0;
     }
-    return ms_mixture_g1(table, w, alpha) * c * d / z;
+    return exp(log(ms_mixture_g1(table, w, alpha) * (c / z)) + ln_d);
 }
 
 // The clamp of ln β: β(αx, αy) within f32's range with margin (|ln| ≤ 80); β = 0 or ∞ has
@@ -270,13 +272,12 @@ fn ms_mixture_sample_dcos_wm(table: u32, alpha: vec2<f32>, u: vec2<f32>) -> vec3
     return ms_beckmann_sample_dcos(ms_mixture_beta(ln_beta, alpha) * alpha, u).wm;
 }
 
-// D of a mixture from the logarithm of its radial profile at unit roughness, ln f₁(r) (r the
-// stretched slope's length, from r² = q/z², q = (m.x/αx)² + (m.y/αy)²): D = f₁(r)/(αx αy z⁴),
-// formed as one exponential of ln f₁ − ln(αx αy z⁴), so that neither f₁ nor z⁴ underflows on
-// the way where D is a normal f32. 0 on and below the horizon; NaN stays NaN.
-fn ms_mixture_d_from_ln_profile(ln_f: f32, wm: vec3<f32>, alpha: vec2<f32>) -> f32 {
-    let ln_z = log(wm.z);
-    return exp(ln_f - log(alpha.x * alpha.y) - 4.0 * ln_z);
+// ln D of a mixture from the logarithm of its radial profile at unit roughness, ln f₁(r) (r
+// the stretched slope's length, from r² = q/z², q = (m.x/αx)² + (m.y/αy)², wm above the
+// horizon): D = f₁(r)/(αx αy z⁴) is one exponential of ln f₁ − ln(αx αy z⁴), so that neither f₁
+// nor z⁴ underflows on the way where D is a normal f32.
+fn ms_mixture_ln_d(ln_f: f32, wm: vec3<f32>, alpha: vec2<f32>) -> f32 {
+    return ln_f - log(alpha.x * alpha.y) - 4.0 * log(wm.z);
 }
 
 // r² = q/z² of wm at (αx, αy) (+∞ on the horizon).

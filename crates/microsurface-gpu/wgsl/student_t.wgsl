@@ -105,7 +105,8 @@ fn ms_student_t_pdf(w: vec3<f32>, wm: vec3<f32>, alpha: vec2<f32>, table: u32) -
     if !(c > 0.0 && z > 0.0) {
         return 0.0;
     }
-    return ms_student_t_g1(w, alpha, table) * c * ms_student_t_d(wm, alpha, table) / z;
+    // ((c/z) first: G1 c D can pass below f32's normals where the density is one.)
+    return ms_student_t_g1(w, alpha, table) * (c / z) * ms_student_t_d(wm, alpha, table);
 }
 
 // The density of ms_student_t_sample_dcos: D(wm) cos θm (0 for wm.z ≤ 0).

@@ -112,6 +112,7 @@ const uint MS_NDF_STUDENT_T = 5u;
 const uint MS_NDF_EI = 6u;
 const uint MS_NDF_ERFC = 7u;
 const uint MS_NDF_K0_ = 8u;
+const uint MS_NDF_BESSEL_K = 9u;
 const uint MS_MASKING_CORRELATED = 0u;
 const uint MS_MASKING_SEPARABLE = 1u;
 const uint MS_MASKING_CORRELATED_BETA = 2u;
@@ -139,9 +140,9 @@ float ms_inf() {
 vec2 ms_cos_sin_turn(float v) {
     float k_10 = roundEven((4.0 * v));
     float r_3 = (v - (0.25 * k_10));
-    float x_14 = (MS_TAU * r_3);
-    float x2_ = (x_14 * x_14);
-    float s_10 = (x_14 * (1.0 + (x2_ * (-0.16666667 + (x2_ * (0.008333333 + (x2_ * (-0.0001984127 + (x2_ * 2.7557319e-6)))))))));
+    float x_15 = (MS_TAU * r_3);
+    float x2_ = (x_15 * x_15);
+    float s_10 = (x_15 * (1.0 + (x2_ * (-0.16666667 + (x2_ * (0.008333333 + (x2_ * (-0.0001984127 + (x2_ * 2.7557319e-6)))))))));
     float c_17 = (1.0 + (x2_ * (-0.5 + (x2_ * (0.041666668 + (x2_ * (-0.0013888889 + (x2_ * (2.4801588e-5 + (x2_ * -2.755732e-7))))))))));
     int q_2 = (int(k_10) & 3);
     if ((q_2 == 0)) {
@@ -453,12 +454,12 @@ float ms_cnorm_ratio(vec2 a_6, vec2 b_3) {
 vec2 ms_crecip(vec2 a_7) {
     if ((abs(a_7.x) >= abs(a_7.y))) {
         float r_4 = (a_7.y / a_7.x);
-        float d_17 = (a_7.x + (a_7.y * r_4));
-        return vec2((1.0 / d_17), (-(r_4) / d_17));
+        float d_16 = (a_7.x + (a_7.y * r_4));
+        return vec2((1.0 / d_16), (-(r_4) / d_16));
     }
     float r_5 = (a_7.x / a_7.y);
-    float d_18 = ((a_7.x * r_5) + a_7.y);
-    return vec2((r_5 / d_18), (-1.0 / d_18));
+    float d_17 = ((a_7.x * r_5) + a_7.y);
+    return vec2((r_5 / d_17), (-1.0 / d_17));
 }
 
 vec2 ms_csqrt(vec2 a_8) {
@@ -589,17 +590,17 @@ float ms_ggx_d(vec3 wm_2, vec2 alpha) {
     if (!((z_6 > 0.0))) {
         return 0.0;
     }
-    float x_15 = (wm_2.x / alpha.x);
-    float y_7 = (wm_2.y / alpha.y);
-    float t_6 = (((x_15 * x_15) + (y_7 * y_7)) + (z_6 * z_6));
+    float x_16 = (wm_2.x / alpha.x);
+    float y_8 = (wm_2.y / alpha.y);
+    float t_6 = (((x_16 * x_16) + (y_8 * y_8)) + (z_6 * z_6));
     return (1.0 / ((((MS_PI * alpha.x) * alpha.y) * t_6) * t_6));
 }
 
 float ms_ggx_lambda(vec3 w_3, vec2 alpha_1) {
-    float x_16 = (alpha_1.x * w_3.x);
-    float y_8 = (alpha_1.y * w_3.y);
+    float x_17 = (alpha_1.x * w_3.x);
+    float y_9 = (alpha_1.y * w_3.y);
     float z_7 = abs(w_3.z);
-    float t_7 = ((x_16 * x_16) + (y_8 * y_8));
+    float t_7 = ((x_17 * x_17) + (y_9 * y_9));
     float z2_ = (z_7 * z_7);
     float den = (2.0 * (z2_ + (z_7 * sqrt((z2_ + t_7)))));
     if (!((den > 0.0))) {
@@ -613,10 +614,10 @@ float ms_ggx_lambda(vec3 w_3, vec2 alpha_1) {
 }
 
 float ms_ggx_g1_(vec3 w_4, vec2 alpha_2) {
-    float x_17 = (alpha_2.x * w_4.x);
-    float y_9 = (alpha_2.y * w_4.y);
+    float x_18 = (alpha_2.x * w_4.x);
+    float y_10 = (alpha_2.y * w_4.y);
     float z_8 = abs(w_4.z);
-    float den_1 = (z_8 + sqrt(((z_8 * z_8) + ((x_17 * x_17) + (y_9 * y_9)))));
+    float den_1 = (z_8 + sqrt(((z_8 * z_8) + ((x_18 * x_18) + (y_10 * y_10)))));
     if (!((den_1 > 0.0))) {
         return 0.0;
     }
@@ -675,13 +676,13 @@ float ms_ggx_pdf(vec3 w_5, vec3 wm_3, vec2 alpha_5) {
 
 vec3 ms_ggx_cap_normal_stretched(vec3 w_6, vec3 stretch, vec2 u, float len) {
     float inv = (1.0 / len);
-    float x_18 = ((stretch.x * w_6.x) * inv);
-    float y_10 = ((stretch.y * w_6.y) * inv);
+    float x_19 = ((stretch.x * w_6.x) * inv);
+    float y_11 = ((stretch.y * w_6.y) * inv);
     float z_10 = ((stretch.z * w_6.z) * inv);
     vec2 _e19 = ms_cos_sin_turn(u.x);
     float above = ((1.0 - u.y) * (1.0 + z_10));
-    float sin_ = sqrt(max((u.y * ((above * (1.0 + z_10)) + ((x_18 * x_18) + (y_10 * y_10)))), 0.0));
-    vec3 h_2 = vec3((stretch.x * ((sin_ * _e19.x) + x_18)), (stretch.y * ((sin_ * _e19.y) + y_10)), (stretch.z * above));
+    float sin_ = sqrt(max((u.y * ((above * (1.0 + z_10)) + ((x_19 * x_19) + (y_11 * y_11)))), 0.0));
+    vec3 h_2 = vec3((stretch.x * ((sin_ * _e19.x) + x_19)), (stretch.y * ((sin_ * _e19.y) + y_11)), (stretch.z * above));
     float n_11 = (1.0 / sqrt((((h_2.x * h_2.x) + (h_2.y * h_2.y)) + (h_2.z * h_2.z))));
     return (h_2 * n_11);
 }
@@ -717,12 +718,12 @@ vec3 ms_ggx_sample_wm(vec3 w_in, vec2 alpha_7, vec2 u_2) {
         float _e45 = w_8.x;
         float _e49 = w_8.y;
         float _e54 = w_8.z;
-        float d_19 = (((_e42.x * _e45) + (_e42.y * _e49)) + (_e42.z * _e54));
+        float d_18 = (((_e42.x * _e45) + (_e42.y * _e49)) + (_e42.z * _e54));
         float _e58 = w_8.x;
         float _e61 = w_8.y;
         float _e65 = w_8.z;
         float l1_ = ((abs(_e58) + abs(_e61)) + abs(_e65));
-        if ((d_19 > (2.4e-7 * l1_))) {
+        if ((d_18 > (2.4e-7 * l1_))) {
             return _e42;
         }
         vec3 _e71 = w_8;
@@ -1119,8 +1120,8 @@ float ms_bk_quantile(float u_7) {
         float _e43 = ms_bk_poly(_e34, _e41, _e25.y);
         ratio = _e43;
     } else {
-        float w_54 = min((-(log(q_3)) - 0.6931472), 127.99);
-        vec2 _e52 = ms_bk_segment(w_54, MS_BK_ERFINV_W_K0_, MS_BK_ERFINV_W_K1_);
+        float w_58 = min((-(log(q_3)) - 0.6931472), 127.99);
+        vec2 _e52 = ms_bk_segment(w_58, MS_BK_ERFINV_W_K0_, MS_BK_ERFINV_W_K1_);
         uint i_7 = (2u * uint(_e52.x));
         vec4 _e61 = _group_1_binding_0_cs[(MS_BK_ERFINV_W_AT + i_7)];
         vec4 _e68 = _group_1_binding_0_cs[((MS_BK_ERFINV_W_AT + i_7) + 1u)];
@@ -1146,8 +1147,8 @@ float ms_beckmann_d(vec3 wm_6, vec2 alpha_15) {
     bool local_9 = false;
     float z_11 = wm_6.z;
     float r_12 = (1.0 / (alpha_15.x * alpha_15.y));
-    float x_19 = ((wm_6.x * alpha_15.y) * r_12);
-    float y_11 = ((wm_6.y * alpha_15.x) * r_12);
+    float x_20 = ((wm_6.x * alpha_15.y) * r_12);
+    float y_12 = ((wm_6.y * alpha_15.x) * r_12);
     float z2_1 = (z_11 * z_11);
     if ((z_11 > 0.0)) {
         local_9 = (z2_1 > 0.0);
@@ -1158,7 +1159,7 @@ float ms_beckmann_d(vec3 wm_6, vec2 alpha_15) {
     if (!(_e24)) {
         return 0.0;
     }
-    float e_5 = (((x_19 * x_19) + (y_11 * y_11)) / z2_1);
+    float e_5 = (((x_20 * x_20) + (y_12 * y_12)) / z2_1);
     if ((e_5 <= 80.0)) {
         return ((exp(-(e_5)) * r_12) / ((MS_PI * z2_1) * z2_1));
     }
@@ -1178,9 +1179,9 @@ float ms_beckmann_lambda_cot(float a_13) {
 }
 
 float ms_beckmann_lambda(vec3 w_14, vec2 alpha_16) {
-    float x_20 = (alpha_16.x * w_14.x);
-    float y_12 = (alpha_16.y * w_14.y);
-    float s_16 = sqrt(((x_20 * x_20) + (y_12 * y_12)));
+    float x_21 = (alpha_16.x * w_14.x);
+    float y_13 = (alpha_16.y * w_14.y);
+    float s_16 = sqrt(((x_21 * x_21) + (y_13 * y_13)));
     if (!((s_16 > 0.0))) {
         return 0.0;
     }
@@ -1468,12 +1469,12 @@ float ms_dg_lambda_table(float x_7) {
 }
 
 float ms_dg_lambda_ends(float u_12, float a_15) {
-    float x_21 = ((((0.5 * a_15) * a_15) * ((1.0 - u_12) * (1.0 + u_12))) / (u_12 * u_12));
-    if ((x_21 < 9.313226e-10)) {
-        if ((x_21 <= 0.0)) {
+    float x_22 = ((((0.5 * a_15) * a_15) * ((1.0 - u_12) * (1.0 + u_12))) / (u_12 * u_12));
+    if ((x_22 < 9.313226e-10)) {
+        if ((x_22 <= 0.0)) {
             return 0.0;
         }
-        return ((0.5 * x_21) * (0.42278433 - log((0.5 * x_21))));
+        return ((0.5 * x_22) * (0.42278433 - log((0.5 * x_22))));
     }
     float sx_2 = ((a_15 * sqrt(((0.5 * (1.0 - u_12)) * (1.0 + u_12)))) / u_12);
     float r_14 = (1.0 / (sx_2 * sx_2));
@@ -1485,10 +1486,10 @@ float ms_double_ggx_lambda(vec3 w_19, vec2 alpha_25) {
     bool local_14 = false;
     float a_16 = 0.0;
     bool local_15 = false;
-    float u_38 = abs(w_19.z);
+    float u_40 = abs(w_19.z);
     if ((alpha_25.x == alpha_25.y)) {
         float a_21 = alpha_25.x;
-        x_8 = ((((0.5 * a_21) * a_21) * ((1.0 - u_38) * (1.0 + u_38))) / (u_38 * u_38));
+        x_8 = ((((0.5 * a_21) * a_21) * ((1.0 - u_40) * (1.0 + u_40))) / (u_40 * u_40));
     } else {
         float sx_3 = (alpha_25.x * w_19.x);
         float sy_2 = (alpha_25.y * w_19.y);
@@ -1519,7 +1520,7 @@ float ms_double_ggx_lambda(vec3 w_19, vec2 alpha_25) {
         a_16 = sqrt((((((alpha_25.x * alpha_25.x) * w_19.x) * w_19.x) + (((alpha_25.y * alpha_25.y) * w_19.y) * w_19.y)) / s2_1));
     }
     float _e82 = a_16;
-    float _e83 = ms_dg_lambda_ends(u_38, _e82);
+    float _e83 = ms_dg_lambda_ends(u_40, _e82);
     return _e83;
 }
 
@@ -1572,9 +1573,9 @@ float ms_double_ggx_d(vec3 wm_9, vec2 alpha_29) {
     bool local_17 = false;
     float z_14 = wm_9.z;
     float r_15 = (1.0 / (alpha_29.x * alpha_29.y));
-    float x_22 = ((wm_9.x * alpha_29.y) * r_15);
-    float y_13 = ((wm_9.y * alpha_29.x) * r_15);
-    float q_5 = ((x_22 * x_22) + (y_13 * y_13));
+    float x_23 = ((wm_9.x * alpha_29.y) * r_15);
+    float y_14 = ((wm_9.y * alpha_29.x) * r_15);
+    float q_5 = ((x_23 * x_23) + (y_14 * y_14));
     if (!((z_14 > 0.0))) {
         return ((z_14 != z_14) ? z_14 : 0.0);
     }
@@ -1771,10 +1772,10 @@ float ms_exponential_lambda(vec3 w_24, vec2 alpha_35) {
     bool local_19 = false;
     float a_17 = 0.0;
     bool local_20 = false;
-    float u_39 = abs(w_24.z);
+    float u_41 = abs(w_24.z);
     if ((alpha_35.x == alpha_35.y)) {
         float a_22 = alpha_35.x;
-        q_1 = (((4.0 * u_39) * u_39) / ((a_22 * a_22) * ((1.0 - u_39) * (1.0 + u_39))));
+        q_1 = (((4.0 * u_41) * u_41) / ((a_22 * a_22) * ((1.0 - u_41) * (1.0 + u_41))));
     } else {
         float sx_5 = (alpha_35.x * w_24.x);
         float sy_4 = (alpha_35.y * w_24.y);
@@ -1805,7 +1806,7 @@ float ms_exponential_lambda(vec3 w_24, vec2 alpha_35) {
         a_17 = sqrt((((((alpha_35.x * alpha_35.x) * w_24.x) * w_24.x) + (((alpha_35.y * alpha_35.y) * w_24.y) * w_24.y)) / s2_4));
     }
     float _e83 = a_17;
-    float _e92 = ms_exp_lambda_z(((u_39 + u_39) / (_e83 * sqrt(((1.0 - u_39) * (1.0 + u_39))))));
+    float _e92 = ms_exp_lambda_z(((u_41 + u_41) / (_e83 * sqrt(((1.0 - u_41) * (1.0 + u_41))))));
     return _e92;
 }
 
@@ -1843,8 +1844,8 @@ float ms_exponential_d(vec3 wm_12, vec2 alpha_39) {
     bool local_22 = false;
     float z_16 = wm_12.z;
     float r_17 = (1.0 / (alpha_39.x * alpha_39.y));
-    float x_23 = ((wm_12.x * alpha_39.y) * r_17);
-    float y_14 = ((wm_12.y * alpha_39.x) * r_17);
+    float x_24 = ((wm_12.x * alpha_39.y) * r_17);
+    float y_15 = ((wm_12.y * alpha_39.x) * r_17);
     float z2_3 = (z_16 * z_16);
     if ((z_16 > 0.0)) {
         local_22 = (z2_3 > 0.0);
@@ -1855,7 +1856,7 @@ float ms_exponential_d(vec3 wm_12, vec2 alpha_39) {
     if (!(_e24)) {
         return ((z_16 != z_16) ? z_16 : 0.0);
     }
-    float e_8 = ((2.0 * sqrt(((x_23 * x_23) + (y_14 * y_14)))) / z_16);
+    float e_8 = ((2.0 * sqrt(((x_24 * x_24) + (y_15 * y_15)))) / z_16);
     if ((e_8 <= 80.0)) {
         return (((2.0 * exp(-(e_8))) * r_17) / ((MS_PI * z2_3) * z2_3));
     }
@@ -1980,8 +1981,8 @@ vec3 ms_exponential_sample_wm(vec3 w_in_4, vec2 alpha_43, vec2 u_17) {
             float _e73 = ms_stream_next(state_9);
             float prod = ((1.0 - _e70) * (1.0 - _e73));
             float _e77 = v0_;
-            float d_20 = ((_e77 * total) - e_9);
-            if ((d_20 < 0.0)) {
+            float d_19 = ((_e77 * total) - e_9);
+            if ((d_19 < 0.0)) {
                 float r_19 = (-0.5 * log(prod));
                 float _e85 = v0_;
                 float turn = (_e85 * inv_p_1);
@@ -2002,7 +2003,7 @@ vec3 ms_exponential_sample_wm(vec3 w_in_4, vec2 alpha_43, vec2 u_17) {
             } else {
                 float _e108 = ms_stream_next(state_9);
                 float r_20 = (-0.5 * log((prod * (1.0 - _e108))));
-                float one_plus = (2.0 * (d_20 * inv_g));
+                float one_plus = (2.0 * (d_19 * inv_g));
                 float _e118 = v0_;
                 float one_minus = ((2.0 * (1.0 - _e118)) * (total * inv_g));
                 x_9 = (r_20 * sqrt(max((one_minus * one_plus), 0.0)));
@@ -2036,10 +2037,10 @@ MsSample ms_exponential_sample(vec3 w_28, vec2 alpha_44, vec2 u_18) {
 
 float ms_shape_lambda_z(uint table, float z_2) {
     bool local_25 = false;
-    vec4 head = _group_1_binding_0_cs[table];
-    int k1_2 = int(head.y);
+    vec4 head_1 = _group_1_binding_0_cs[table];
+    int k1_2 = int(head_1.y);
     if ((z_2 >= 5.9604645e-8)) {
-        local_25 = (z_2 < exp2(head.y));
+        local_25 = (z_2 < exp2(head_1.y));
     } else {
         local_25 = false;
     }
@@ -2051,7 +2052,7 @@ float ms_shape_lambda_z(uint table, float z_2) {
         vec4 hi_4 = _group_1_binding_0_cs[(i_9 + 1u)];
         float s_18 = _e18.y;
         float p_5 = ((((((((hi_4.x * s_18) + lo_5.w) * s_18) + lo_5.z) * s_18) + lo_5.y) * s_18) + lo_5.x);
-        if ((head.z > 0.5)) {
+        if ((head_1.z > 0.5)) {
             return p_5;
         }
         return exp2((p_5 * 0.00390625));
@@ -2060,7 +2061,7 @@ float ms_shape_lambda_z(uint table, float z_2) {
         return z_2;
     }
     if ((z_2 < 5.9604645e-8)) {
-        return ((head.w / z_2) - 0.5);
+        return ((head_1.w / z_2) - 0.5);
     }
     vec4 tail = _group_1_binding_0_cs[(table + 1u)];
     if ((tail.x < 0.5)) {
@@ -2121,8 +2122,8 @@ float ms_ln_gamma_variate(float k_in, inout uvec2 state_12) {
         k_5 = (_e12 + 1.0);
     }
     float _e15 = k_5;
-    float d_21 = (_e15 - 0.33333334);
-    float c_22 = (1.0 / sqrt((9.0 * d_21)));
+    float d_20 = (_e15 - 0.33333334);
+    float c_22 = (1.0 / sqrt((9.0 * d_20)));
     bool loop_init_5 = true;
     while(true) {
         if (!loop_init_5) {
@@ -2150,10 +2151,10 @@ float ms_ln_gamma_variate(float k_in, inout uvec2 state_12) {
             float _e42 = ms_stream_next_positive(state_12);
             float _e48 = v_6;
             float _e51 = v_6;
-            if ((log(_e42) < (((((0.5 * _e29) * _e29) + d_21) - (d_21 * _e48)) + (d_21 * log(_e51))))) {
+            if ((log(_e42) < (((((0.5 * _e29) * _e29) + d_20) - (d_20 * _e48)) + (d_20 * log(_e51))))) {
                 float _e57 = v_6;
                 float _e60 = boost;
-                return ((log(d_21) + log(_e57)) + _e60);
+                return ((log(d_20) + log(_e57)) + _e60);
             }
         }
     }
@@ -2223,15 +2224,15 @@ vec3 ms_beckmann_sample_stream_above(vec3 v_7, vec2 alpha_46, inout uvec2 state_
     }
     float _e75 = ms_stream_next(state_13);
     float _e76 = ms_zig_normal(_e75, state_13);
-    float y_15 = (_e76 * 0.70710677);
+    float y_16 = (_e76 * 0.70710677);
     float _e80 = cp_2;
     float _e81 = x_10;
     float _e83 = sp_2;
-    float p_6 = (alpha_46.x * ((_e80 * _e81) - (_e83 * y_15)));
+    float p_6 = (alpha_46.x * ((_e80 * _e81) - (_e83 * y_16)));
     float _e88 = sp_2;
     float _e89 = x_10;
     float _e91 = cp_2;
-    float q_8 = (alpha_46.y * ((_e88 * _e89) + (_e91 * y_15)));
+    float q_8 = (alpha_46.y * ((_e88 * _e89) + (_e91 * y_16)));
     vec3 _e97 = ms_unit_normal(vec3(p_6, q_8, 1.0));
     vec3 _e98 = ms_facing(_e97, v_7);
     return _e98;
@@ -2362,7 +2363,7 @@ float ms_mixture_g2_separable(uint table_5, vec3 wo_16, vec3 wi_16, vec2 alpha_5
     return (_e4 * _e5);
 }
 
-float ms_mixture_pdf(uint table_6, vec3 w_33, vec3 wm_15, vec2 alpha_52, float d_1) {
+float ms_mixture_pdf(uint table_6, vec3 w_33, vec3 wm_15, vec2 alpha_52, float ln_d) {
     float c_5 = 0.0;
     bool local_30 = false;
     float z_19 = abs(w_33.z);
@@ -2384,7 +2385,7 @@ float ms_mixture_pdf(uint table_6, vec3 w_33, vec3 wm_15, vec2 alpha_52, float d
     }
     float _e25 = ms_mixture_g1_(table_6, w_33, alpha_52);
     float _e26 = c_5;
-    return (((_e25 * _e26) * d_1) / z_19);
+    return exp((log((_e25 * (_e26 / z_19))) + ln_d));
 }
 
 vec3 ms_mixture_sample_dcos_wm(uint table_7, vec2 alpha_53, vec2 u_20) {
@@ -2406,15 +2407,14 @@ vec3 ms_mixture_sample_dcos_wm(uint table_7, vec2 alpha_53, vec2 u_20) {
     return _e24.wm;
 }
 
-float ms_mixture_d_from_ln_profile(float ln_f, vec3 wm_16, vec2 alpha_54) {
-    float ln_z = log(wm_16.z);
-    return exp(((ln_f - log((alpha_54.x * alpha_54.y))) - (4.0 * ln_z)));
+float ms_mixture_ln_d(float ln_f, vec3 wm_16, vec2 alpha_54) {
+    return ((ln_f - log((alpha_54.x * alpha_54.y))) - (4.0 * log(wm_16.z)));
 }
 
 float ms_mixture_r2_(vec3 wm_17, vec2 alpha_55) {
-    float x_24 = (wm_17.x / alpha_55.x);
-    float y_16 = (wm_17.y / alpha_55.y);
-    return (((x_24 * x_24) + (y_16 * y_16)) / (wm_17.z * wm_17.z));
+    float x_25 = (wm_17.x / alpha_55.x);
+    float y_17 = (wm_17.y / alpha_55.y);
+    return (((x_25 * x_25) + (y_17 * y_17)) / (wm_17.z * wm_17.z));
 }
 
 float ms_k0e(float z_4) {
@@ -2475,9 +2475,9 @@ float ms_student_t_d(vec3 wm_18, vec2 alpha_56, uint table_9) {
         return ((z_20 != z_20) ? z_20 : 0.0);
     }
     float _e10 = ms_student_t_gamma(table_9);
-    float x_25 = (wm_18.x / alpha_56.x);
-    float y_17 = (wm_18.y / alpha_56.y);
-    float q_9 = ((x_25 * x_25) + (y_17 * y_17));
+    float x_26 = (wm_18.x / alpha_56.x);
+    float y_18 = (wm_18.y / alpha_56.y);
+    float q_9 = ((x_26 * x_26) + (y_18 * y_18));
     float z2_4 = (z_20 * z_20);
     if ((z_20 > 1e-9)) {
         float t_12 = (q_9 / (z2_4 * (_e10 - 1.0)));
@@ -2489,9 +2489,9 @@ float ms_student_t_d(vec3 wm_18, vec2 alpha_56, uint table_9) {
         }
         return exp((-(e_10) - log(norm)));
     }
-    float ln_z_1 = log(z_20);
-    float ln_d = (((-(_e10) * ((log(q_9) - (2.0 * ln_z_1)) - log((_e10 - 1.0)))) - (4.0 * ln_z_1)) - log(((MS_PI * alpha_56.x) * alpha_56.y)));
-    return exp(ln_d);
+    float ln_z = log(z_20);
+    float ln_d_1 = (((-(_e10) * ((log(q_9) - (2.0 * ln_z)) - log((_e10 - 1.0)))) - (4.0 * ln_z)) - log(((MS_PI * alpha_56.x) * alpha_56.y)));
+    return exp(ln_d_1);
 }
 
 float ms_student_t_lambda(vec3 w_34, vec2 alpha_57, uint table_10) {
@@ -2538,8 +2538,8 @@ float ms_student_t_pdf(vec3 w_36, vec3 wm_19, vec2 alpha_61, uint table_14) {
     }
     float _e24 = ms_student_t_g1_(w_36, alpha_61, table_14);
     float _e25 = c_6;
-    float _e27 = ms_student_t_d(wm_19, alpha_61, table_14);
-    return (((_e24 * _e25) * _e27) / z_21);
+    float _e28 = ms_student_t_d(wm_19, alpha_61, table_14);
+    return ((_e24 * (_e25 / z_21)) * _e28);
 }
 
 float ms_student_t_pdf_dcos(vec3 wm_20, vec2 alpha_62, uint table_15) {
@@ -2581,64 +2581,72 @@ float ms_ei_ln_profile(float y_4) {
     return ((log(_e1) - y_4) - 1.14473);
 }
 
-float ms_ei_d(vec3 wm_21, vec2 alpha_65) {
+float ms_ei_ln_d(vec3 wm_21, vec2 alpha_65) {
     if (!((wm_21.z > 0.0))) {
-        return ((wm_21.z != wm_21.z) ? wm_21.z : 0.0);
+        return ((wm_21.z != wm_21.z) ? wm_21.z : -1e30);
     }
     float _e12 = ms_mixture_r2_(wm_21, alpha_65);
     if ((_e12 == 0.0)) {
-        float _e15 = ms_inf();
-        return _e15;
+        return 1e30;
     }
     float _e16 = ms_ei_ln_profile(_e12);
-    float _e17 = ms_mixture_d_from_ln_profile(_e16, wm_21, alpha_65);
+    float _e17 = ms_mixture_ln_d(_e16, wm_21, alpha_65);
     return _e17;
 }
 
-float ms_ei_lambda(vec3 w_38, vec2 alpha_66, uint table_18) {
-    float _e3 = ms_shape_lambda(table_18, w_38, alpha_66);
+float ms_ei_d(vec3 wm_22, vec2 alpha_66) {
+    float _e2 = ms_ei_ln_d(wm_22, alpha_66);
+    if ((_e2 >= 1e30)) {
+        float _e5 = ms_inf();
+        return _e5;
+    }
+    return exp(_e2);
+}
+
+float ms_ei_lambda(vec3 w_38, vec2 alpha_67, uint table_18) {
+    float _e3 = ms_shape_lambda(table_18, w_38, alpha_67);
     return _e3;
 }
 
-float ms_ei_g1_(vec3 w_39, vec2 alpha_67, uint table_19) {
-    float _e3 = ms_mixture_g1_(table_19, w_39, alpha_67);
+float ms_ei_g1_(vec3 w_39, vec2 alpha_68, uint table_19) {
+    float _e3 = ms_mixture_g1_(table_19, w_39, alpha_68);
     return _e3;
 }
 
-float ms_ei_g2_(vec3 wo_19, vec3 wi_19, vec2 alpha_68, uint table_20) {
-    float _e4 = ms_mixture_g2_(table_20, wo_19, wi_19, alpha_68);
+float ms_ei_g2_(vec3 wo_19, vec3 wi_19, vec2 alpha_69, uint table_20) {
+    float _e4 = ms_mixture_g2_(table_20, wo_19, wi_19, alpha_69);
     return _e4;
 }
 
-float ms_ei_g2_separable(vec3 wo_20, vec3 wi_20, vec2 alpha_69, uint table_21) {
-    float _e4 = ms_mixture_g2_separable(table_21, wo_20, wi_20, alpha_69);
+float ms_ei_g2_separable(vec3 wo_20, vec3 wi_20, vec2 alpha_70, uint table_21) {
+    float _e4 = ms_mixture_g2_separable(table_21, wo_20, wi_20, alpha_70);
     return _e4;
 }
 
-float ms_ei_pdf(vec3 w_40, vec3 wm_22, vec2 alpha_70, uint table_22) {
-    float _e4 = ms_ei_d(wm_22, alpha_70);
-    float _e5 = ms_mixture_pdf(table_22, w_40, wm_22, alpha_70, _e4);
+float ms_ei_pdf(vec3 w_40, vec3 wm_23, vec2 alpha_71, uint table_22) {
+    float _e4 = ms_ei_ln_d(wm_23, alpha_71);
+    float _e5 = ms_mixture_pdf(table_22, w_40, wm_23, alpha_71, _e4);
     return _e5;
 }
 
-float ms_ei_pdf_dcos(vec3 wm_23, vec2 alpha_71) {
-    if (!((wm_23.z > 0.0))) {
+float ms_ei_pdf_dcos(vec3 wm_24, vec2 alpha_72) {
+    if (!((wm_24.z > 0.0))) {
         return 0.0;
     }
-    float _e7 = ms_ei_d(wm_23, alpha_71);
-    return (_e7 * wm_23.z);
+    float _e7 = ms_ei_d(wm_24, alpha_72);
+    return (_e7 * wm_24.z);
 }
 
-MsSample ms_ei_sample_dcos(vec2 alpha_72, vec2 u_23, uint table_23) {
-    vec3 _e3 = ms_mixture_sample_dcos_wm(table_23, alpha_72, u_23);
-    float _e4 = ms_ei_pdf_dcos(_e3, alpha_72);
+MsSample ms_ei_sample_dcos(vec2 alpha_73, vec2 u_23, uint table_23) {
+    vec3 _e3 = ms_mixture_sample_dcos_wm(table_23, alpha_73, u_23);
+    float _e4 = ms_ei_pdf_dcos(_e3, alpha_73);
     return MsSample(_e3, _e4);
 }
 
-MsSample ms_ei_sample(vec3 w_41, vec2 alpha_73, vec2 u_24, uint table_24) {
-    vec3 _e4 = ms_mixture_sample_wm(table_24, w_41, alpha_73, u_24);
+MsSample ms_ei_sample(vec3 w_41, vec2 alpha_74, vec2 u_24, uint table_24) {
+    vec3 _e4 = ms_mixture_sample_wm(table_24, w_41, alpha_74, u_24);
     vec3 _e5 = ms_unit(w_41);
-    float _e6 = ms_ei_pdf(_e5, _e4, alpha_73, table_24);
+    float _e6 = ms_ei_pdf(_e5, _e4, alpha_74, table_24);
     return MsSample(_e4, _e6);
 }
 
@@ -2648,64 +2656,72 @@ float ms_erfc_ln_profile(float y_5) {
     return (log((_e2 / (3.5449078 * r_24))) - y_5);
 }
 
-float ms_erfc_d(vec3 wm_24, vec2 alpha_74) {
-    if (!((wm_24.z > 0.0))) {
-        return ((wm_24.z != wm_24.z) ? wm_24.z : 0.0);
+float ms_erfc_ln_d(vec3 wm_25, vec2 alpha_75) {
+    if (!((wm_25.z > 0.0))) {
+        return ((wm_25.z != wm_25.z) ? wm_25.z : -1e30);
     }
-    float _e12 = ms_mixture_r2_(wm_24, alpha_74);
+    float _e12 = ms_mixture_r2_(wm_25, alpha_75);
     if ((_e12 == 0.0)) {
-        float _e15 = ms_inf();
-        return _e15;
+        return 1e30;
     }
     float _e16 = ms_erfc_ln_profile(_e12);
-    float _e17 = ms_mixture_d_from_ln_profile(_e16, wm_24, alpha_74);
+    float _e17 = ms_mixture_ln_d(_e16, wm_25, alpha_75);
     return _e17;
 }
 
-float ms_erfc_lambda(vec3 w_42, vec2 alpha_75, uint table_25) {
-    float _e3 = ms_shape_lambda(table_25, w_42, alpha_75);
+float ms_erfc_d(vec3 wm_26, vec2 alpha_76) {
+    float _e2 = ms_erfc_ln_d(wm_26, alpha_76);
+    if ((_e2 >= 1e30)) {
+        float _e5 = ms_inf();
+        return _e5;
+    }
+    return exp(_e2);
+}
+
+float ms_erfc_lambda(vec3 w_42, vec2 alpha_77, uint table_25) {
+    float _e3 = ms_shape_lambda(table_25, w_42, alpha_77);
     return _e3;
 }
 
-float ms_erfc_g1_(vec3 w_43, vec2 alpha_76, uint table_26) {
-    float _e3 = ms_mixture_g1_(table_26, w_43, alpha_76);
+float ms_erfc_g1_(vec3 w_43, vec2 alpha_78, uint table_26) {
+    float _e3 = ms_mixture_g1_(table_26, w_43, alpha_78);
     return _e3;
 }
 
-float ms_erfc_g2_(vec3 wo_21, vec3 wi_21, vec2 alpha_77, uint table_27) {
-    float _e4 = ms_mixture_g2_(table_27, wo_21, wi_21, alpha_77);
+float ms_erfc_g2_(vec3 wo_21, vec3 wi_21, vec2 alpha_79, uint table_27) {
+    float _e4 = ms_mixture_g2_(table_27, wo_21, wi_21, alpha_79);
     return _e4;
 }
 
-float ms_erfc_g2_separable(vec3 wo_22, vec3 wi_22, vec2 alpha_78, uint table_28) {
-    float _e4 = ms_mixture_g2_separable(table_28, wo_22, wi_22, alpha_78);
+float ms_erfc_g2_separable(vec3 wo_22, vec3 wi_22, vec2 alpha_80, uint table_28) {
+    float _e4 = ms_mixture_g2_separable(table_28, wo_22, wi_22, alpha_80);
     return _e4;
 }
 
-float ms_erfc_pdf(vec3 w_44, vec3 wm_25, vec2 alpha_79, uint table_29) {
-    float _e4 = ms_erfc_d(wm_25, alpha_79);
-    float _e5 = ms_mixture_pdf(table_29, w_44, wm_25, alpha_79, _e4);
+float ms_erfc_pdf(vec3 w_44, vec3 wm_27, vec2 alpha_81, uint table_29) {
+    float _e4 = ms_erfc_ln_d(wm_27, alpha_81);
+    float _e5 = ms_mixture_pdf(table_29, w_44, wm_27, alpha_81, _e4);
     return _e5;
 }
 
-float ms_erfc_pdf_dcos(vec3 wm_26, vec2 alpha_80) {
-    if (!((wm_26.z > 0.0))) {
+float ms_erfc_pdf_dcos(vec3 wm_28, vec2 alpha_82) {
+    if (!((wm_28.z > 0.0))) {
         return 0.0;
     }
-    float _e7 = ms_erfc_d(wm_26, alpha_80);
-    return (_e7 * wm_26.z);
+    float _e7 = ms_erfc_d(wm_28, alpha_82);
+    return (_e7 * wm_28.z);
 }
 
-MsSample ms_erfc_sample_dcos(vec2 alpha_81, vec2 u_25, uint table_30) {
-    vec3 _e3 = ms_mixture_sample_dcos_wm(table_30, alpha_81, u_25);
-    float _e4 = ms_erfc_pdf_dcos(_e3, alpha_81);
+MsSample ms_erfc_sample_dcos(vec2 alpha_83, vec2 u_25, uint table_30) {
+    vec3 _e3 = ms_mixture_sample_dcos_wm(table_30, alpha_83, u_25);
+    float _e4 = ms_erfc_pdf_dcos(_e3, alpha_83);
     return MsSample(_e3, _e4);
 }
 
-MsSample ms_erfc_sample(vec3 w_45, vec2 alpha_82, vec2 u_26, uint table_31) {
-    vec3 _e4 = ms_mixture_sample_wm(table_31, w_45, alpha_82, u_26);
+MsSample ms_erfc_sample(vec3 w_45, vec2 alpha_84, vec2 u_26, uint table_31) {
+    vec3 _e4 = ms_mixture_sample_wm(table_31, w_45, alpha_84, u_26);
     vec3 _e5 = ms_unit(w_45);
-    float _e6 = ms_erfc_pdf(_e5, _e4, alpha_82, table_31);
+    float _e6 = ms_erfc_pdf(_e5, _e4, alpha_84, table_31);
     return MsSample(_e4, _e6);
 }
 
@@ -2715,329 +2731,472 @@ float ms_k0_ln_profile(float y_6) {
     return (log(((2.0 * _e4) / MS_PI)) - z_22);
 }
 
-float ms_k0_d(vec3 wm_27, vec2 alpha_83) {
-    if (!((wm_27.z > 0.0))) {
-        return ((wm_27.z != wm_27.z) ? wm_27.z : 0.0);
+float ms_k0_ln_d(vec3 wm_29, vec2 alpha_85) {
+    if (!((wm_29.z > 0.0))) {
+        return ((wm_29.z != wm_29.z) ? wm_29.z : -1e30);
     }
-    float _e12 = ms_mixture_r2_(wm_27, alpha_83);
+    float _e12 = ms_mixture_r2_(wm_29, alpha_85);
     if ((_e12 == 0.0)) {
-        float _e15 = ms_inf();
-        return _e15;
+        return 1e30;
     }
     float _e16 = ms_k0_ln_profile(_e12);
-    float _e17 = ms_mixture_d_from_ln_profile(_e16, wm_27, alpha_83);
+    float _e17 = ms_mixture_ln_d(_e16, wm_29, alpha_85);
     return _e17;
 }
 
-float ms_k0_lambda(vec3 w_46, vec2 alpha_84, uint table_32) {
-    float _e3 = ms_shape_lambda(table_32, w_46, alpha_84);
+float ms_k0_d(vec3 wm_30, vec2 alpha_86) {
+    float _e2 = ms_k0_ln_d(wm_30, alpha_86);
+    if ((_e2 >= 1e30)) {
+        float _e5 = ms_inf();
+        return _e5;
+    }
+    return exp(_e2);
+}
+
+float ms_k0_lambda(vec3 w_46, vec2 alpha_87, uint table_32) {
+    float _e3 = ms_shape_lambda(table_32, w_46, alpha_87);
     return _e3;
 }
 
-float ms_k0_g1_(vec3 w_47, vec2 alpha_85, uint table_33) {
-    float _e3 = ms_mixture_g1_(table_33, w_47, alpha_85);
+float ms_k0_g1_(vec3 w_47, vec2 alpha_88, uint table_33) {
+    float _e3 = ms_mixture_g1_(table_33, w_47, alpha_88);
     return _e3;
 }
 
-float ms_k0_g2_(vec3 wo_23, vec3 wi_23, vec2 alpha_86, uint table_34) {
-    float _e4 = ms_mixture_g2_(table_34, wo_23, wi_23, alpha_86);
+float ms_k0_g2_(vec3 wo_23, vec3 wi_23, vec2 alpha_89, uint table_34) {
+    float _e4 = ms_mixture_g2_(table_34, wo_23, wi_23, alpha_89);
     return _e4;
 }
 
-float ms_k0_g2_separable(vec3 wo_24, vec3 wi_24, vec2 alpha_87, uint table_35) {
-    float _e4 = ms_mixture_g2_separable(table_35, wo_24, wi_24, alpha_87);
+float ms_k0_g2_separable(vec3 wo_24, vec3 wi_24, vec2 alpha_90, uint table_35) {
+    float _e4 = ms_mixture_g2_separable(table_35, wo_24, wi_24, alpha_90);
     return _e4;
 }
 
-float ms_k0_pdf(vec3 w_48, vec3 wm_28, vec2 alpha_88, uint table_36) {
-    float _e4 = ms_k0_d(wm_28, alpha_88);
-    float _e5 = ms_mixture_pdf(table_36, w_48, wm_28, alpha_88, _e4);
+float ms_k0_pdf(vec3 w_48, vec3 wm_31, vec2 alpha_91, uint table_36) {
+    float _e4 = ms_k0_ln_d(wm_31, alpha_91);
+    float _e5 = ms_mixture_pdf(table_36, w_48, wm_31, alpha_91, _e4);
     return _e5;
 }
 
-float ms_k0_pdf_dcos(vec3 wm_29, vec2 alpha_89) {
-    if (!((wm_29.z > 0.0))) {
-        return 0.0;
-    }
-    float _e7 = ms_k0_d(wm_29, alpha_89);
-    return (_e7 * wm_29.z);
-}
-
-MsSample ms_k0_sample_dcos(vec2 alpha_90, vec2 u_27, uint table_37) {
-    vec3 _e3 = ms_mixture_sample_dcos_wm(table_37, alpha_90, u_27);
-    float _e4 = ms_k0_pdf_dcos(_e3, alpha_90);
-    return MsSample(_e3, _e4);
-}
-
-MsSample ms_k0_sample(vec3 w_49, vec2 alpha_91, vec2 u_28, uint table_38) {
-    vec3 _e4 = ms_mixture_sample_wm(table_38, w_49, alpha_91, u_28);
-    vec3 _e5 = ms_unit(w_49);
-    float _e6 = ms_k0_pdf(_e5, _e4, alpha_91, table_38);
-    return MsSample(_e4, _e6);
-}
-
-float ms_d(MsMicrofacet mf, vec3 wm_30) {
-    if ((mf.ndf == MS_NDF_GGX)) {
-        float _e6 = ms_ggx_d(wm_30, mf.alpha);
-        return _e6;
-    }
-    if ((mf.ndf == MS_NDF_BECKMANN)) {
-        float _e11 = ms_beckmann_d(wm_30, mf.alpha);
-        return _e11;
-    }
-    if ((mf.ndf == MS_NDF_DOUBLE_GGX)) {
-        float _e16 = ms_double_ggx_d(wm_30, mf.alpha);
-        return _e16;
-    }
-    if ((mf.ndf == MS_NDF_EXPONENTIAL)) {
-        float _e21 = ms_exponential_d(wm_30, mf.alpha);
-        return _e21;
-    }
-    if ((mf.ndf == MS_NDF_STUDENT_T)) {
-        float _e27 = ms_student_t_d(wm_30, mf.alpha, mf.table);
-        return _e27;
-    }
-    if ((mf.ndf == MS_NDF_EI)) {
-        float _e32 = ms_ei_d(wm_30, mf.alpha);
-        return _e32;
-    }
-    if ((mf.ndf == MS_NDF_ERFC)) {
-        float _e37 = ms_erfc_d(wm_30, mf.alpha);
-        return _e37;
-    }
-    if ((mf.ndf == MS_NDF_K0_)) {
-        float _e42 = ms_k0_d(wm_30, mf.alpha);
-        return _e42;
-    }
-    return 0.0;
-}
-
-float ms_lambda(MsMicrofacet mf_1, vec3 w_50) {
-    if ((mf_1.ndf == MS_NDF_GGX)) {
-        float _e6 = ms_ggx_lambda(w_50, mf_1.alpha);
-        return _e6;
-    }
-    if ((mf_1.ndf == MS_NDF_BECKMANN)) {
-        float _e11 = ms_beckmann_lambda(w_50, mf_1.alpha);
-        return _e11;
-    }
-    if ((mf_1.ndf == MS_NDF_DOUBLE_GGX)) {
-        float _e16 = ms_double_ggx_lambda(w_50, mf_1.alpha);
-        return _e16;
-    }
-    if ((mf_1.ndf == MS_NDF_EXPONENTIAL)) {
-        float _e21 = ms_exponential_lambda(w_50, mf_1.alpha);
-        return _e21;
-    }
-    if ((mf_1.ndf == MS_NDF_STUDENT_T)) {
-        float _e27 = ms_student_t_lambda(w_50, mf_1.alpha, mf_1.table);
-        return _e27;
-    }
-    if ((mf_1.ndf == MS_NDF_EI)) {
-        float _e33 = ms_ei_lambda(w_50, mf_1.alpha, mf_1.table);
-        return _e33;
-    }
-    if ((mf_1.ndf == MS_NDF_ERFC)) {
-        float _e39 = ms_erfc_lambda(w_50, mf_1.alpha, mf_1.table);
-        return _e39;
-    }
-    if ((mf_1.ndf == MS_NDF_K0_)) {
-        float _e45 = ms_k0_lambda(w_50, mf_1.alpha, mf_1.table);
-        return _e45;
-    }
-    return 0.0;
-}
-
-float ms_g1_(MsMicrofacet mf_2, vec3 w_51) {
-    if ((mf_2.ndf == MS_NDF_GGX)) {
-        float _e6 = ms_ggx_g1_(w_51, mf_2.alpha);
-        return _e6;
-    }
-    if ((mf_2.ndf == MS_NDF_BECKMANN)) {
-        float _e11 = ms_beckmann_g1_(w_51, mf_2.alpha);
-        return _e11;
-    }
-    if ((mf_2.ndf == MS_NDF_DOUBLE_GGX)) {
-        float _e16 = ms_double_ggx_g1_(w_51, mf_2.alpha);
-        return _e16;
-    }
-    if ((mf_2.ndf == MS_NDF_EXPONENTIAL)) {
-        float _e21 = ms_exponential_g1_(w_51, mf_2.alpha);
-        return _e21;
-    }
-    if ((mf_2.ndf == MS_NDF_STUDENT_T)) {
-        float _e27 = ms_student_t_g1_(w_51, mf_2.alpha, mf_2.table);
-        return _e27;
-    }
-    if ((mf_2.ndf == MS_NDF_EI)) {
-        float _e33 = ms_ei_g1_(w_51, mf_2.alpha, mf_2.table);
-        return _e33;
-    }
-    if ((mf_2.ndf == MS_NDF_ERFC)) {
-        float _e39 = ms_erfc_g1_(w_51, mf_2.alpha, mf_2.table);
-        return _e39;
-    }
-    if ((mf_2.ndf == MS_NDF_K0_)) {
-        float _e45 = ms_k0_g1_(w_51, mf_2.alpha, mf_2.table);
-        return _e45;
-    }
-    return 0.0;
-}
-
-float ms_g2_(MsMicrofacet mf_3, vec3 wo_25, vec3 wi_25) {
-    if ((mf_3.ndf == MS_NDF_GGX)) {
-        float _e7 = ms_ggx_g2_(wo_25, wi_25, mf_3.alpha);
-        return _e7;
-    }
-    if ((mf_3.ndf == MS_NDF_BECKMANN)) {
-        float _e12 = ms_beckmann_g2_(wo_25, wi_25, mf_3.alpha);
-        return _e12;
-    }
-    if ((mf_3.ndf == MS_NDF_DOUBLE_GGX)) {
-        float _e17 = ms_double_ggx_g2_(wo_25, wi_25, mf_3.alpha);
-        return _e17;
-    }
-    if ((mf_3.ndf == MS_NDF_EXPONENTIAL)) {
-        float _e22 = ms_exponential_g2_(wo_25, wi_25, mf_3.alpha);
-        return _e22;
-    }
-    if ((mf_3.ndf == MS_NDF_STUDENT_T)) {
-        float _e28 = ms_student_t_g2_(wo_25, wi_25, mf_3.alpha, mf_3.table);
-        return _e28;
-    }
-    if ((mf_3.ndf == MS_NDF_EI)) {
-        float _e34 = ms_ei_g2_(wo_25, wi_25, mf_3.alpha, mf_3.table);
-        return _e34;
-    }
-    if ((mf_3.ndf == MS_NDF_ERFC)) {
-        float _e40 = ms_erfc_g2_(wo_25, wi_25, mf_3.alpha, mf_3.table);
-        return _e40;
-    }
-    if ((mf_3.ndf == MS_NDF_K0_)) {
-        float _e46 = ms_k0_g2_(wo_25, wi_25, mf_3.alpha, mf_3.table);
-        return _e46;
-    }
-    return 0.0;
-}
-
-float ms_g2_separable(MsMicrofacet mf_4, vec3 wo_26, vec3 wi_26) {
-    float _e3 = ms_g1_(mf_4, wo_26);
-    float _e4 = ms_g1_(mf_4, wi_26);
-    return (_e3 * _e4);
-}
-
-float ms_pdf(MsMicrofacet mf_5, vec3 w_52, vec3 wm_31) {
-    if ((mf_5.ndf == MS_NDF_GGX)) {
-        float _e7 = ms_ggx_pdf(w_52, wm_31, mf_5.alpha);
-        return _e7;
-    }
-    if ((mf_5.ndf == MS_NDF_BECKMANN)) {
-        float _e12 = ms_beckmann_pdf(w_52, wm_31, mf_5.alpha);
-        return _e12;
-    }
-    if ((mf_5.ndf == MS_NDF_DOUBLE_GGX)) {
-        float _e17 = ms_double_ggx_pdf(w_52, wm_31, mf_5.alpha);
-        return _e17;
-    }
-    if ((mf_5.ndf == MS_NDF_EXPONENTIAL)) {
-        float _e22 = ms_exponential_pdf(w_52, wm_31, mf_5.alpha);
-        return _e22;
-    }
-    if ((mf_5.ndf == MS_NDF_STUDENT_T)) {
-        float _e28 = ms_student_t_pdf(w_52, wm_31, mf_5.alpha, mf_5.table);
-        return _e28;
-    }
-    if ((mf_5.ndf == MS_NDF_EI)) {
-        float _e34 = ms_ei_pdf(w_52, wm_31, mf_5.alpha, mf_5.table);
-        return _e34;
-    }
-    if ((mf_5.ndf == MS_NDF_ERFC)) {
-        float _e40 = ms_erfc_pdf(w_52, wm_31, mf_5.alpha, mf_5.table);
-        return _e40;
-    }
-    if ((mf_5.ndf == MS_NDF_K0_)) {
-        float _e46 = ms_k0_pdf(w_52, wm_31, mf_5.alpha, mf_5.table);
-        return _e46;
-    }
-    return 0.0;
-}
-
-float ms_pdf_dcos(MsMicrofacet mf_6, vec3 wm_32) {
+float ms_k0_pdf_dcos(vec3 wm_32, vec2 alpha_92) {
     if (!((wm_32.z > 0.0))) {
         return 0.0;
     }
-    float _e7 = ms_d(mf_6, wm_32);
+    float _e7 = ms_k0_d(wm_32, alpha_92);
     return (_e7 * wm_32.z);
 }
 
-MsSample ms_sample(MsMicrofacet mf_7, vec3 w_53, vec2 u_29) {
+MsSample ms_k0_sample_dcos(vec2 alpha_93, vec2 u_27, uint table_37) {
+    vec3 _e3 = ms_mixture_sample_dcos_wm(table_37, alpha_93, u_27);
+    float _e4 = ms_k0_pdf_dcos(_e3, alpha_93);
+    return MsSample(_e3, _e4);
+}
+
+MsSample ms_k0_sample(vec3 w_49, vec2 alpha_94, vec2 u_28, uint table_38) {
+    vec3 _e4 = ms_mixture_sample_wm(table_38, w_49, alpha_94, u_28);
+    vec3 _e5 = ms_unit(w_49);
+    float _e6 = ms_k0_pdf(_e5, _e4, alpha_94, table_38);
+    return MsSample(_e4, _e6);
+}
+
+float ms_bessel_k_h(uint at_1, vec4 head, float x_12) {
+    vec2 _e7 = ms_bk_segment(x_12, int(head.y), int(head.z));
+    uint i_12 = ((at_1 + 1u) + (2u * uint(_e7.x)));
+    vec4 _e17 = _group_1_binding_0_cs[i_12];
+    vec4 _e22 = _group_1_binding_0_cs[(i_12 + 1u)];
+    float _e24 = ms_bk_poly(_e17, _e22, _e7.y);
+    return _e24;
+}
+
+float ms_bessel_k_ln_profile(uint table_39, float y_7) {
+    float _e7 = _group_1_binding_0_cs[(table_39 + 2u)].w;
+    uint at_2 = (table_39 + uint(_e7));
+    vec4 head_2 = _group_1_binding_0_cs[at_2];
+    float x_27 = sqrt(y_7);
+    if (!((x_27 < exp2(head_2.z)))) {
+        return ((x_27 != x_27) ? x_27 : -1e30);
+    }
+    float x0_1 = exp2(head_2.y);
+    if ((x_27 < x0_1)) {
+        float _e24 = ms_bessel_k_h(at_2, head_2, x0_1);
+        float h0_ = (_e24 - (2.0 * x0_1));
+        if ((head_2.x < 0.0)) {
+            return (h0_ + ((2.0 * head_2.x) * log((x_27 / x0_1))));
+        }
+        if ((head_2.x == 0.0)) {
+            return (h0_ + log((log(x_27) / log(x0_1))));
+        }
+        return h0_;
+    }
+    float _e46 = ms_bessel_k_h(at_2, head_2, x_27);
+    return (_e46 - (2.0 * x_27));
+}
+
+float ms_bessel_k_ln_d(vec3 wm_33, vec2 alpha_95, uint table_40) {
+    if (!((wm_33.z > 0.0))) {
+        return ((wm_33.z != wm_33.z) ? wm_33.z : -1e30);
+    }
+    float _e13 = ms_mixture_r2_(wm_33, alpha_95);
+    if ((_e13 == 0.0)) {
+        float _e19 = _group_1_binding_0_cs[table_40].x;
+        float nu = (_e19 - 1.0);
+        if ((nu > 0.0)) {
+            return (-(log((((MS_PI * nu) * alpha_95.x) * alpha_95.y))) - (4.0 * log(wm_33.z)));
+        }
+        return 1e30;
+    }
+    float _e38 = ms_bessel_k_ln_profile(table_40, _e13);
+    float _e39 = ms_mixture_ln_d(_e38, wm_33, alpha_95);
+    return _e39;
+}
+
+float ms_bessel_k_d(vec3 wm_34, vec2 alpha_96, uint table_41) {
+    float _e3 = ms_bessel_k_ln_d(wm_34, alpha_96, table_41);
+    if ((_e3 >= 1e30)) {
+        float _e6 = ms_inf();
+        return _e6;
+    }
+    return exp(_e3);
+}
+
+float ms_bessel_k_lambda(vec3 w_50, vec2 alpha_97, uint table_42) {
+    float _e3 = ms_shape_lambda(table_42, w_50, alpha_97);
+    return _e3;
+}
+
+float ms_bessel_k_g1_(vec3 w_51, vec2 alpha_98, uint table_43) {
+    float _e3 = ms_mixture_g1_(table_43, w_51, alpha_98);
+    return _e3;
+}
+
+float ms_bessel_k_g2_(vec3 wo_25, vec3 wi_25, vec2 alpha_99, uint table_44) {
+    float _e4 = ms_mixture_g2_(table_44, wo_25, wi_25, alpha_99);
+    return _e4;
+}
+
+float ms_bessel_k_g2_separable(vec3 wo_26, vec3 wi_26, vec2 alpha_100, uint table_45) {
+    float _e4 = ms_mixture_g2_separable(table_45, wo_26, wi_26, alpha_100);
+    return _e4;
+}
+
+float ms_bessel_k_pdf(vec3 w_52, vec3 wm_35, vec2 alpha_101, uint table_46) {
+    float _e4 = ms_bessel_k_ln_d(wm_35, alpha_101, table_46);
+    float _e5 = ms_mixture_pdf(table_46, w_52, wm_35, alpha_101, _e4);
+    return _e5;
+}
+
+float ms_bessel_k_pdf_dcos(vec3 wm_36, vec2 alpha_102, uint table_47) {
+    if (!((wm_36.z > 0.0))) {
+        return 0.0;
+    }
+    float _e8 = ms_bessel_k_d(wm_36, alpha_102, table_47);
+    return (_e8 * wm_36.z);
+}
+
+MsSample ms_bessel_k_sample_dcos(vec2 alpha_103, vec2 u_29, uint table_48) {
+    vec3 _e3 = ms_mixture_sample_dcos_wm(table_48, alpha_103, u_29);
+    float _e4 = ms_bessel_k_pdf_dcos(_e3, alpha_103, table_48);
+    return MsSample(_e3, _e4);
+}
+
+MsSample ms_bessel_k_sample(vec3 w_53, vec2 alpha_104, vec2 u_30, uint table_49) {
+    vec3 _e4 = ms_mixture_sample_wm(table_49, w_53, alpha_104, u_30);
+    vec3 _e5 = ms_unit(w_53);
+    float _e6 = ms_bessel_k_pdf(_e5, _e4, alpha_104, table_49);
+    return MsSample(_e4, _e6);
+}
+
+float ms_d(MsMicrofacet mf, vec3 wm_37) {
+    if ((mf.ndf == MS_NDF_GGX)) {
+        float _e6 = ms_ggx_d(wm_37, mf.alpha);
+        return _e6;
+    }
+    if ((mf.ndf == MS_NDF_BECKMANN)) {
+        float _e11 = ms_beckmann_d(wm_37, mf.alpha);
+        return _e11;
+    }
+    if ((mf.ndf == MS_NDF_DOUBLE_GGX)) {
+        float _e16 = ms_double_ggx_d(wm_37, mf.alpha);
+        return _e16;
+    }
+    if ((mf.ndf == MS_NDF_EXPONENTIAL)) {
+        float _e21 = ms_exponential_d(wm_37, mf.alpha);
+        return _e21;
+    }
+    if ((mf.ndf == MS_NDF_STUDENT_T)) {
+        float _e27 = ms_student_t_d(wm_37, mf.alpha, mf.table);
+        return _e27;
+    }
+    if ((mf.ndf == MS_NDF_EI)) {
+        float _e32 = ms_ei_d(wm_37, mf.alpha);
+        return _e32;
+    }
+    if ((mf.ndf == MS_NDF_ERFC)) {
+        float _e37 = ms_erfc_d(wm_37, mf.alpha);
+        return _e37;
+    }
+    if ((mf.ndf == MS_NDF_K0_)) {
+        float _e42 = ms_k0_d(wm_37, mf.alpha);
+        return _e42;
+    }
+    if ((mf.ndf == MS_NDF_BESSEL_K)) {
+        float _e48 = ms_bessel_k_d(wm_37, mf.alpha, mf.table);
+        return _e48;
+    }
+    return 0.0;
+}
+
+float ms_lambda(MsMicrofacet mf_1, vec3 w_54) {
+    if ((mf_1.ndf == MS_NDF_GGX)) {
+        float _e6 = ms_ggx_lambda(w_54, mf_1.alpha);
+        return _e6;
+    }
+    if ((mf_1.ndf == MS_NDF_BECKMANN)) {
+        float _e11 = ms_beckmann_lambda(w_54, mf_1.alpha);
+        return _e11;
+    }
+    if ((mf_1.ndf == MS_NDF_DOUBLE_GGX)) {
+        float _e16 = ms_double_ggx_lambda(w_54, mf_1.alpha);
+        return _e16;
+    }
+    if ((mf_1.ndf == MS_NDF_EXPONENTIAL)) {
+        float _e21 = ms_exponential_lambda(w_54, mf_1.alpha);
+        return _e21;
+    }
+    if ((mf_1.ndf == MS_NDF_STUDENT_T)) {
+        float _e27 = ms_student_t_lambda(w_54, mf_1.alpha, mf_1.table);
+        return _e27;
+    }
+    if ((mf_1.ndf == MS_NDF_EI)) {
+        float _e33 = ms_ei_lambda(w_54, mf_1.alpha, mf_1.table);
+        return _e33;
+    }
+    if ((mf_1.ndf == MS_NDF_ERFC)) {
+        float _e39 = ms_erfc_lambda(w_54, mf_1.alpha, mf_1.table);
+        return _e39;
+    }
+    if ((mf_1.ndf == MS_NDF_K0_)) {
+        float _e45 = ms_k0_lambda(w_54, mf_1.alpha, mf_1.table);
+        return _e45;
+    }
+    if ((mf_1.ndf == MS_NDF_BESSEL_K)) {
+        float _e51 = ms_bessel_k_lambda(w_54, mf_1.alpha, mf_1.table);
+        return _e51;
+    }
+    return 0.0;
+}
+
+float ms_g1_(MsMicrofacet mf_2, vec3 w_55) {
+    if ((mf_2.ndf == MS_NDF_GGX)) {
+        float _e6 = ms_ggx_g1_(w_55, mf_2.alpha);
+        return _e6;
+    }
+    if ((mf_2.ndf == MS_NDF_BECKMANN)) {
+        float _e11 = ms_beckmann_g1_(w_55, mf_2.alpha);
+        return _e11;
+    }
+    if ((mf_2.ndf == MS_NDF_DOUBLE_GGX)) {
+        float _e16 = ms_double_ggx_g1_(w_55, mf_2.alpha);
+        return _e16;
+    }
+    if ((mf_2.ndf == MS_NDF_EXPONENTIAL)) {
+        float _e21 = ms_exponential_g1_(w_55, mf_2.alpha);
+        return _e21;
+    }
+    if ((mf_2.ndf == MS_NDF_STUDENT_T)) {
+        float _e27 = ms_student_t_g1_(w_55, mf_2.alpha, mf_2.table);
+        return _e27;
+    }
+    if ((mf_2.ndf == MS_NDF_EI)) {
+        float _e33 = ms_ei_g1_(w_55, mf_2.alpha, mf_2.table);
+        return _e33;
+    }
+    if ((mf_2.ndf == MS_NDF_ERFC)) {
+        float _e39 = ms_erfc_g1_(w_55, mf_2.alpha, mf_2.table);
+        return _e39;
+    }
+    if ((mf_2.ndf == MS_NDF_K0_)) {
+        float _e45 = ms_k0_g1_(w_55, mf_2.alpha, mf_2.table);
+        return _e45;
+    }
+    if ((mf_2.ndf == MS_NDF_BESSEL_K)) {
+        float _e51 = ms_bessel_k_g1_(w_55, mf_2.alpha, mf_2.table);
+        return _e51;
+    }
+    return 0.0;
+}
+
+float ms_g2_(MsMicrofacet mf_3, vec3 wo_27, vec3 wi_27) {
+    if ((mf_3.ndf == MS_NDF_GGX)) {
+        float _e7 = ms_ggx_g2_(wo_27, wi_27, mf_3.alpha);
+        return _e7;
+    }
+    if ((mf_3.ndf == MS_NDF_BECKMANN)) {
+        float _e12 = ms_beckmann_g2_(wo_27, wi_27, mf_3.alpha);
+        return _e12;
+    }
+    if ((mf_3.ndf == MS_NDF_DOUBLE_GGX)) {
+        float _e17 = ms_double_ggx_g2_(wo_27, wi_27, mf_3.alpha);
+        return _e17;
+    }
+    if ((mf_3.ndf == MS_NDF_EXPONENTIAL)) {
+        float _e22 = ms_exponential_g2_(wo_27, wi_27, mf_3.alpha);
+        return _e22;
+    }
+    if ((mf_3.ndf == MS_NDF_STUDENT_T)) {
+        float _e28 = ms_student_t_g2_(wo_27, wi_27, mf_3.alpha, mf_3.table);
+        return _e28;
+    }
+    if ((mf_3.ndf == MS_NDF_EI)) {
+        float _e34 = ms_ei_g2_(wo_27, wi_27, mf_3.alpha, mf_3.table);
+        return _e34;
+    }
+    if ((mf_3.ndf == MS_NDF_ERFC)) {
+        float _e40 = ms_erfc_g2_(wo_27, wi_27, mf_3.alpha, mf_3.table);
+        return _e40;
+    }
+    if ((mf_3.ndf == MS_NDF_K0_)) {
+        float _e46 = ms_k0_g2_(wo_27, wi_27, mf_3.alpha, mf_3.table);
+        return _e46;
+    }
+    if ((mf_3.ndf == MS_NDF_BESSEL_K)) {
+        float _e52 = ms_bessel_k_g2_(wo_27, wi_27, mf_3.alpha, mf_3.table);
+        return _e52;
+    }
+    return 0.0;
+}
+
+float ms_g2_separable(MsMicrofacet mf_4, vec3 wo_28, vec3 wi_28) {
+    float _e3 = ms_g1_(mf_4, wo_28);
+    float _e4 = ms_g1_(mf_4, wi_28);
+    return (_e3 * _e4);
+}
+
+float ms_pdf(MsMicrofacet mf_5, vec3 w_56, vec3 wm_38) {
+    if ((mf_5.ndf == MS_NDF_GGX)) {
+        float _e7 = ms_ggx_pdf(w_56, wm_38, mf_5.alpha);
+        return _e7;
+    }
+    if ((mf_5.ndf == MS_NDF_BECKMANN)) {
+        float _e12 = ms_beckmann_pdf(w_56, wm_38, mf_5.alpha);
+        return _e12;
+    }
+    if ((mf_5.ndf == MS_NDF_DOUBLE_GGX)) {
+        float _e17 = ms_double_ggx_pdf(w_56, wm_38, mf_5.alpha);
+        return _e17;
+    }
+    if ((mf_5.ndf == MS_NDF_EXPONENTIAL)) {
+        float _e22 = ms_exponential_pdf(w_56, wm_38, mf_5.alpha);
+        return _e22;
+    }
+    if ((mf_5.ndf == MS_NDF_STUDENT_T)) {
+        float _e28 = ms_student_t_pdf(w_56, wm_38, mf_5.alpha, mf_5.table);
+        return _e28;
+    }
+    if ((mf_5.ndf == MS_NDF_EI)) {
+        float _e34 = ms_ei_pdf(w_56, wm_38, mf_5.alpha, mf_5.table);
+        return _e34;
+    }
+    if ((mf_5.ndf == MS_NDF_ERFC)) {
+        float _e40 = ms_erfc_pdf(w_56, wm_38, mf_5.alpha, mf_5.table);
+        return _e40;
+    }
+    if ((mf_5.ndf == MS_NDF_K0_)) {
+        float _e46 = ms_k0_pdf(w_56, wm_38, mf_5.alpha, mf_5.table);
+        return _e46;
+    }
+    if ((mf_5.ndf == MS_NDF_BESSEL_K)) {
+        float _e52 = ms_bessel_k_pdf(w_56, wm_38, mf_5.alpha, mf_5.table);
+        return _e52;
+    }
+    return 0.0;
+}
+
+float ms_pdf_dcos(MsMicrofacet mf_6, vec3 wm_39) {
+    if (!((wm_39.z > 0.0))) {
+        return 0.0;
+    }
+    float _e7 = ms_d(mf_6, wm_39);
+    return (_e7 * wm_39.z);
+}
+
+MsSample ms_sample(MsMicrofacet mf_7, vec3 w_57, vec2 u_31) {
     if ((mf_7.ndf == MS_NDF_GGX)) {
-        MsSample _e7 = ms_ggx_sample(w_53, mf_7.alpha, u_29);
+        MsSample _e7 = ms_ggx_sample(w_57, mf_7.alpha, u_31);
         return _e7;
     }
     if ((mf_7.ndf == MS_NDF_BECKMANN)) {
-        MsSample _e12 = ms_beckmann_sample(w_53, mf_7.alpha, u_29);
+        MsSample _e12 = ms_beckmann_sample(w_57, mf_7.alpha, u_31);
         return _e12;
     }
     if ((mf_7.ndf == MS_NDF_DOUBLE_GGX)) {
-        MsSample _e17 = ms_double_ggx_sample(w_53, mf_7.alpha, u_29);
+        MsSample _e17 = ms_double_ggx_sample(w_57, mf_7.alpha, u_31);
         return _e17;
     }
     if ((mf_7.ndf == MS_NDF_EXPONENTIAL)) {
-        MsSample _e22 = ms_exponential_sample(w_53, mf_7.alpha, u_29);
+        MsSample _e22 = ms_exponential_sample(w_57, mf_7.alpha, u_31);
         return _e22;
     }
     if ((mf_7.ndf == MS_NDF_STUDENT_T)) {
-        MsSample _e28 = ms_student_t_sample(w_53, mf_7.alpha, u_29, mf_7.table);
+        MsSample _e28 = ms_student_t_sample(w_57, mf_7.alpha, u_31, mf_7.table);
         return _e28;
     }
     if ((mf_7.ndf == MS_NDF_EI)) {
-        MsSample _e34 = ms_ei_sample(w_53, mf_7.alpha, u_29, mf_7.table);
+        MsSample _e34 = ms_ei_sample(w_57, mf_7.alpha, u_31, mf_7.table);
         return _e34;
     }
     if ((mf_7.ndf == MS_NDF_ERFC)) {
-        MsSample _e40 = ms_erfc_sample(w_53, mf_7.alpha, u_29, mf_7.table);
+        MsSample _e40 = ms_erfc_sample(w_57, mf_7.alpha, u_31, mf_7.table);
         return _e40;
     }
     if ((mf_7.ndf == MS_NDF_K0_)) {
-        MsSample _e46 = ms_k0_sample(w_53, mf_7.alpha, u_29, mf_7.table);
+        MsSample _e46 = ms_k0_sample(w_57, mf_7.alpha, u_31, mf_7.table);
         return _e46;
+    }
+    if ((mf_7.ndf == MS_NDF_BESSEL_K)) {
+        MsSample _e52 = ms_bessel_k_sample(w_57, mf_7.alpha, u_31, mf_7.table);
+        return _e52;
     }
     return MsSample(vec3(0.0, 0.0, 1.0), 0.0);
 }
 
-MsSample ms_sample_dcos(MsMicrofacet mf_8, vec2 u_30) {
+MsSample ms_sample_dcos(MsMicrofacet mf_8, vec2 u_32) {
     if ((mf_8.ndf == MS_NDF_GGX)) {
-        MsSample _e6 = ms_ggx_sample_dcos(mf_8.alpha, u_30);
+        MsSample _e6 = ms_ggx_sample_dcos(mf_8.alpha, u_32);
         return _e6;
     }
     if ((mf_8.ndf == MS_NDF_BECKMANN)) {
-        MsSample _e11 = ms_beckmann_sample_dcos(mf_8.alpha, u_30);
+        MsSample _e11 = ms_beckmann_sample_dcos(mf_8.alpha, u_32);
         return _e11;
     }
     if ((mf_8.ndf == MS_NDF_DOUBLE_GGX)) {
-        MsSample _e16 = ms_double_ggx_sample_dcos(mf_8.alpha, u_30);
+        MsSample _e16 = ms_double_ggx_sample_dcos(mf_8.alpha, u_32);
         return _e16;
     }
     if ((mf_8.ndf == MS_NDF_EXPONENTIAL)) {
-        MsSample _e21 = ms_exponential_sample_dcos(mf_8.alpha, u_30);
+        MsSample _e21 = ms_exponential_sample_dcos(mf_8.alpha, u_32);
         return _e21;
     }
     if ((mf_8.ndf == MS_NDF_STUDENT_T)) {
-        MsSample _e27 = ms_student_t_sample_dcos(mf_8.alpha, u_30, mf_8.table);
+        MsSample _e27 = ms_student_t_sample_dcos(mf_8.alpha, u_32, mf_8.table);
         return _e27;
     }
     if ((mf_8.ndf == MS_NDF_EI)) {
-        MsSample _e33 = ms_ei_sample_dcos(mf_8.alpha, u_30, mf_8.table);
+        MsSample _e33 = ms_ei_sample_dcos(mf_8.alpha, u_32, mf_8.table);
         return _e33;
     }
     if ((mf_8.ndf == MS_NDF_ERFC)) {
-        MsSample _e39 = ms_erfc_sample_dcos(mf_8.alpha, u_30, mf_8.table);
+        MsSample _e39 = ms_erfc_sample_dcos(mf_8.alpha, u_32, mf_8.table);
         return _e39;
     }
     if ((mf_8.ndf == MS_NDF_K0_)) {
-        MsSample _e45 = ms_k0_sample_dcos(mf_8.alpha, u_30, mf_8.table);
+        MsSample _e45 = ms_k0_sample_dcos(mf_8.alpha, u_32, mf_8.table);
         return _e45;
+    }
+    if ((mf_8.ndf == MS_NDF_BESSEL_K)) {
+        MsSample _e51 = ms_bessel_k_sample_dcos(mf_8.alpha, u_32, mf_8.table);
+        return _e51;
     }
     return MsSample(vec3(0.0, 0.0, 1.0), 0.0);
 }
@@ -3061,38 +3220,38 @@ bool ms_usable(float v_9) {
     return _e8;
 }
 
-float ms_masking_g2_(MsMicrofacet mf_10, uint masking, vec3 wo_27, vec3 wi_27) {
+float ms_masking_g2_(MsMicrofacet mf_10, uint masking, vec3 wo_29, vec3 wi_29) {
     if ((masking == MS_MASKING_SEPARABLE)) {
-        float _e6 = ms_g2_separable(mf_10, wo_27, wi_27);
+        float _e6 = ms_g2_separable(mf_10, wo_29, wi_29);
         return _e6;
     }
-    float _e7 = ms_g2_(mf_10, wo_27, wi_27);
+    float _e7 = ms_g2_(mf_10, wo_29, wi_29);
     return _e7;
 }
 
-float ms_reflected(MsMicrofacet mf_11, uint masking_1, vec3 wo_28, vec3 wi_28, float d_wm) {
-    float _e5 = ms_masking_g2_(mf_11, masking_1, wo_28, wi_28);
-    return ((d_wm * _e5) / (4.0 * abs((wo_28.z * wi_28.z))));
+float ms_reflected(MsMicrofacet mf_11, uint masking_1, vec3 wo_30, vec3 wi_30, float d_wm) {
+    float _e5 = ms_masking_g2_(mf_11, masking_1, wo_30, wi_30);
+    return ((d_wm * _e5) / (4.0 * abs((wo_30.z * wi_30.z))));
 }
 
 vec3 ms_weighted(vec3 fr_1, float k_8) {
     return mix((fr_1 * k_8), vec3(0.0), equal(fr_1, vec3(0.0)));
 }
 
-vec3 ms_conductor_lobe_normal(MsConductor c_7, vec3 wo_29, vec3 wi_29) {
+vec3 ms_conductor_lobe_normal(MsConductor c_7, vec3 wo_31, vec3 wi_31) {
     bool local_33 = false;
     bool local_34 = false;
     bool local_35 = false;
-    bool _e3 = ms_same_hemisphere(wo_29, wi_29);
+    bool _e3 = ms_same_hemisphere(wo_31, wi_31);
     if (!(!(_e3))) {
-        bool _e9 = ms_on_horizon(wo_29.z);
+        bool _e9 = ms_on_horizon(wo_31.z);
         local_33 = _e9;
     } else {
         local_33 = true;
     }
     bool _e11 = local_33;
     if (!(_e11)) {
-        bool _e16 = ms_on_horizon(wi_29.z);
+        bool _e16 = ms_on_horizon(wi_31.z);
         local_34 = _e16;
     } else {
         local_34 = true;
@@ -3108,70 +3267,70 @@ vec3 ms_conductor_lobe_normal(MsConductor c_7, vec3 wo_29, vec3 wi_29) {
     if (_e25) {
         return vec3(0.0);
     }
-    vec3 _e28 = ms_half_vector_reflection(wo_29, wi_29);
+    vec3 _e28 = ms_half_vector_reflection(wo_31, wi_31);
     return _e28;
 }
 
-vec3 ms_conductor_eval(MsConductor c_8, vec3 wo_30, vec3 wi_30) {
-    vec3 _e3 = ms_conductor_lobe_normal(c_8, wo_30, wi_30);
+vec3 ms_conductor_eval(MsConductor c_8, vec3 wo_32, vec3 wi_32) {
+    vec3 _e3 = ms_conductor_lobe_normal(c_8, wo_32, wi_32);
     bool _e4 = ms_half_vector_ok(_e3);
     if (!(_e4)) {
         return vec3(0.0);
     }
-    float _e9 = ms_dot(wo_30, _e3);
-    float _e11 = ms_dot(wi_30, _e3);
+    float _e9 = ms_dot(wo_32, _e3);
+    float _e11 = ms_dot(wi_32, _e3);
     vec3 _e16 = ms_fresnel_eval(c_8.fresnel, (0.5 * (abs(_e9) + abs(_e11))));
     float _e20 = ms_d(c_8.mf, _e3);
-    float _e21 = ms_reflected(c_8.mf, c_8.masking, wo_30, wi_30, _e20);
+    float _e21 = ms_reflected(c_8.mf, c_8.masking, wo_32, wi_32, _e20);
     vec3 _e22 = ms_weighted(_e16, _e21);
     return _e22;
 }
 
-float ms_conductor_pdf(MsConductor c_9, vec3 wo_31, vec3 wi_31) {
-    vec3 _e3 = ms_conductor_lobe_normal(c_9, wo_31, wi_31);
+float ms_conductor_pdf(MsConductor c_9, vec3 wo_33, vec3 wi_33) {
+    vec3 _e3 = ms_conductor_lobe_normal(c_9, wo_33, wi_33);
     bool _e4 = ms_half_vector_ok(_e3);
     if (!(_e4)) {
         return 0.0;
     }
-    float _e8 = ms_pdf(c_9.mf, wo_31, _e3);
-    float _e9 = ms_dot(wo_31, _e3);
+    float _e8 = ms_pdf(c_9.mf, wo_33, _e3);
+    float _e9 = ms_dot(wo_33, _e3);
     return (_e8 / (4.0 * abs(_e9)));
 }
 
-vec4 ms_conductor_eval_pdf(MsConductor c_10, vec3 wo_32, vec3 wi_32) {
-    vec3 _e3 = ms_conductor_lobe_normal(c_10, wo_32, wi_32);
+vec4 ms_conductor_eval_pdf(MsConductor c_10, vec3 wo_34, vec3 wi_34) {
+    vec3 _e3 = ms_conductor_lobe_normal(c_10, wo_34, wi_34);
     bool _e4 = ms_half_vector_ok(_e3);
     if (!(_e4)) {
         return vec4(0.0);
     }
-    float _e8 = ms_dot(wo_32, _e3);
+    float _e8 = ms_dot(wo_34, _e3);
     float co = abs(_e8);
-    float _e11 = ms_dot(wi_32, _e3);
+    float _e11 = ms_dot(wi_34, _e3);
     vec3 _e16 = ms_fresnel_eval(c_10.fresnel, (0.5 * (co + abs(_e11))));
     float _e20 = ms_d(c_10.mf, _e3);
-    float _e21 = ms_reflected(c_10.mf, c_10.masking, wo_32, wi_32, _e20);
+    float _e21 = ms_reflected(c_10.mf, c_10.masking, wo_34, wi_34, _e20);
     vec3 _e22 = ms_weighted(_e16, _e21);
-    float _e24 = ms_pdf(c_10.mf, wo_32, _e3);
+    float _e24 = ms_pdf(c_10.mf, wo_34, _e3);
     return vec4(_e22, (_e24 / (4.0 * co)));
 }
 
-MsBsdfSample ms_conductor_sample(MsConductor c_11, vec3 wo_33, float uc, vec2 u_31) {
+MsBsdfSample ms_conductor_sample(MsConductor c_11, vec3 wo_35, float uc, vec2 u_33) {
     bool local_36 = false;
     MsBsdfSample none = MsBsdfSample(vec3(0.0), 0.0, vec3(0.0), 0u, 1.0);
-    bool _e13 = ms_on_horizon(wo_33.z);
+    bool _e13 = ms_on_horizon(wo_35.z);
     if (_e13) {
         return none;
     }
     bool _e15 = ms_effectively_smooth(c_11.mf);
     if (_e15) {
-        vec3 wi_49 = vec3(-(wo_33.x), -(wo_33.y), wo_33.z);
-        float k_12 = (1.0 / abs(wi_49.z));
-        vec3 _e29 = ms_fresnel_eval(c_11.fresnel, abs(wo_33.z));
-        return MsBsdfSample(wi_49, 1.0, (_e29 * k_12), 3u, 1.0);
+        vec3 wi_51 = vec3(-(wo_35.x), -(wo_35.y), wo_35.z);
+        float k_12 = (1.0 / abs(wi_51.z));
+        vec3 _e29 = ms_fresnel_eval(c_11.fresnel, abs(wo_35.z));
+        return MsBsdfSample(wi_51, 1.0, (_e29 * k_12), 3u, 1.0);
     }
-    MsSample _e36 = ms_sample(c_11.mf, wo_33, u_31);
-    vec3 _e38 = ms_reflect(wo_33, _e36.wm);
-    bool _e39 = ms_same_hemisphere(wo_33, _e38);
+    MsSample _e36 = ms_sample(c_11.mf, wo_35, u_33);
+    vec3 _e38 = ms_reflect(wo_35, _e36.wm);
+    bool _e39 = ms_same_hemisphere(wo_35, _e38);
     if (!(!(_e39))) {
         bool _e45 = ms_on_horizon(_e38.z);
         local_36 = _e45;
@@ -3182,7 +3341,7 @@ MsBsdfSample ms_conductor_sample(MsConductor c_11, vec3 wo_33, float uc, vec2 u_
     if (_e47) {
         return none;
     }
-    float _e49 = ms_dot(wo_33, _e36.wm);
+    float _e49 = ms_dot(wo_35, _e36.wm);
     float co_1 = abs(_e49);
     float pdf = (_e36.pdf / (4.0 * co_1));
     bool _e55 = ms_usable(pdf);
@@ -3195,7 +3354,7 @@ MsBsdfSample ms_conductor_sample(MsConductor c_11, vec3 wo_33, float uc, vec2 u_
     if (!(_e62)) {
         return none;
     }
-    float _e66 = ms_reflected(c_11.mf, c_11.masking, wo_33, _e38, _e61);
+    float _e66 = ms_reflected(c_11.mf, c_11.masking, wo_35, _e38, _e61);
     vec3 _e67 = ms_weighted(_e58, _e66);
     if (!(all(lessThanEqual(_e67, vec3(3.4028235e38))))) {
         return none;
@@ -3203,10 +3362,10 @@ MsBsdfSample ms_conductor_sample(MsConductor c_11, vec3 wo_33, float uc, vec2 u_
     return MsBsdfSample(_e38, pdf, _e67, MS_SAMPLE_VALID, 1.0);
 }
 
-bool ms_dielectric_smooth(MsDielectric d_2) {
+bool ms_dielectric_smooth(MsDielectric d_1) {
     bool local_37 = false;
-    if (!((d_2.eta == 1.0))) {
-        bool _e8 = ms_effectively_smooth(d_2.mf);
+    if (!((d_1.eta == 1.0))) {
+        bool _e8 = ms_effectively_smooth(d_1.mf);
         local_37 = _e8;
     } else {
         local_37 = true;
@@ -3215,19 +3374,19 @@ bool ms_dielectric_smooth(MsDielectric d_2) {
     return _e10;
 }
 
-float ms_dielectric_g2_(MsDielectric d_3, vec3 wo_34, vec3 wi_33) {
-    float _e5 = ms_masking_g2_(d_3.mf, d_3.masking, wo_34, wi_33);
+float ms_dielectric_g2_(MsDielectric d_2, vec3 wo_36, vec3 wi_35) {
+    float _e5 = ms_masking_g2_(d_2.mf, d_2.masking, wo_36, wi_35);
     return _e5;
 }
 
-vec4 ms_dielectric_half(MsDielectric d_4, vec3 wo_35, vec3 wi_34) {
+vec4 ms_dielectric_half(MsDielectric d_3, vec3 wo_37, vec3 wi_36) {
     bool local_38 = false;
-    vec3 wm_33 = vec3(0.0);
+    vec3 wm_40 = vec3(0.0);
     float etap_4 = 1.0;
     bool local_39 = false;
     vec4 none_1 = vec4(0.0);
-    float co_2 = wo_35.z;
-    float ci_1 = wi_34.z;
+    float co_2 = wo_37.z;
+    float ci_1 = wi_36.z;
     bool _e7 = ms_on_horizon(co_2);
     if (!(_e7)) {
         bool _e11 = ms_on_horizon(ci_1);
@@ -3240,23 +3399,23 @@ vec4 ms_dielectric_half(MsDielectric d_4, vec3 wo_35, vec3 wi_34) {
         return none_1;
     }
     if (((co_2 * ci_1) > 0.0)) {
-        vec3 _e20 = ms_half_vector_reflection(wo_35, wi_34);
-        wm_33 = _e20;
+        vec3 _e20 = ms_half_vector_reflection(wo_37, wi_36);
+        wm_40 = _e20;
     } else {
-        vec4 _e22 = ms_half_vector_refraction(wo_35, wi_34, d_4.eta);
-        wm_33 = _e22.xyz;
+        vec4 _e22 = ms_half_vector_refraction(wo_37, wi_36, d_3.eta);
+        wm_40 = _e22.xyz;
         etap_4 = _e22.w;
     }
-    vec3 _e25 = wm_33;
+    vec3 _e25 = wm_40;
     bool _e26 = ms_half_vector_ok(_e25);
     if (!(_e26)) {
         return none_1;
     }
-    vec3 _e28 = wm_33;
-    float _e29 = ms_dot(_e28, wi_34);
+    vec3 _e28 = wm_40;
+    float _e29 = ms_dot(_e28, wi_36);
     if (!(((_e29 * ci_1) < 0.0))) {
-        vec3 _e36 = wm_33;
-        float _e37 = ms_dot(_e36, wo_35);
+        vec3 _e36 = wm_40;
+        float _e37 = ms_dot(_e36, wo_37);
         local_39 = ((_e37 * co_2) < 0.0);
     } else {
         local_39 = true;
@@ -3265,20 +3424,20 @@ vec4 ms_dielectric_half(MsDielectric d_4, vec3 wo_35, vec3 wi_34) {
     if (_e42) {
         return none_1;
     }
-    vec3 _e43 = wm_33;
+    vec3 _e43 = wm_40;
     float _e44 = etap_4;
     return vec4(_e43, _e44);
 }
 
-float ms_dielectric_f_transmission(MsDielectric d_5, vec3 wo_36, vec3 wi_35, vec3 wm_34, float d_wm_1, float etap_5, float t_2) {
+float ms_dielectric_f_transmission(MsDielectric d_4, vec3 wo_38, vec3 wi_37, vec3 wm_41, float d_wm_1, float etap_5, float t_2) {
     float f_2 = 0.0;
-    float _e7 = ms_dot(wi_35, wm_34);
-    float _e8 = ms_dot(wo_36, wm_34);
-    float _e9 = ms_refraction_denominator(wo_36, wi_35, wm_34, etap_5);
-    float _e10 = ms_dielectric_g2_(d_5, wo_36, wi_35);
-    float geometric = ((_e10 / abs((wi_35.z * wo_36.z))) * (abs((_e7 * _e8)) / (_e9 * _e9)));
+    float _e7 = ms_dot(wi_37, wm_41);
+    float _e8 = ms_dot(wo_38, wm_41);
+    float _e9 = ms_refraction_denominator(wo_38, wi_37, wm_41, etap_5);
+    float _e10 = ms_dielectric_g2_(d_4, wo_38, wi_37);
+    float geometric = ((_e10 / abs((wi_37.z * wo_38.z))) * (abs((_e7 * _e8)) / (_e9 * _e9)));
     f_2 = ((d_wm_1 * t_2) * geometric);
-    if ((d_5.transport == MS_TRANSPORT_RADIANCE)) {
+    if ((d_4.transport == MS_TRANSPORT_RADIANCE)) {
         float _e27 = f_2;
         f_2 = (_e27 / (etap_5 * etap_5));
     }
@@ -3286,97 +3445,97 @@ float ms_dielectric_f_transmission(MsDielectric d_5, vec3 wo_36, vec3 wi_35, vec
     return _e30;
 }
 
-float ms_dielectric_eval(MsDielectric d_6, vec3 wo_37, vec3 wi_36) {
+float ms_dielectric_eval(MsDielectric d_5, vec3 wo_39, vec3 wi_38) {
+    bool _e3 = ms_dielectric_smooth(d_5);
+    if (_e3) {
+        return 0.0;
+    }
+    vec4 _e5 = ms_dielectric_half(d_5, wo_39, wi_38);
+    if ((_e5.w == 0.0)) {
+        return 0.0;
+    }
+    vec3 wm_42 = _e5.xyz;
+    float _e11 = ms_dot(wo_39, wm_42);
+    float _e13 = ms_fresnel_dielectric(_e11, d_5.eta);
+    float _e15 = ms_d(d_5.mf, wm_42);
+    if (((wo_39.z * wi_38.z) > 0.0)) {
+        float _e23 = ms_reflected(d_5.mf, d_5.masking, wo_39, wi_38, _e15);
+        return (_e13 * _e23);
+    }
+    float _e28 = ms_dielectric_f_transmission(d_5, wo_39, wi_38, wm_42, _e15, _e5.w, (1.0 - _e13));
+    return _e28;
+}
+
+float ms_dielectric_pdf(MsDielectric d_6, vec3 wo_40, vec3 wi_39) {
     bool _e3 = ms_dielectric_smooth(d_6);
     if (_e3) {
         return 0.0;
     }
-    vec4 _e5 = ms_dielectric_half(d_6, wo_37, wi_36);
+    vec4 _e5 = ms_dielectric_half(d_6, wo_40, wi_39);
     if ((_e5.w == 0.0)) {
         return 0.0;
     }
-    vec3 wm_35 = _e5.xyz;
-    float _e11 = ms_dot(wo_37, wm_35);
+    vec3 wm_43 = _e5.xyz;
+    float _e11 = ms_dot(wo_40, wm_43);
     float _e13 = ms_fresnel_dielectric(_e11, d_6.eta);
-    float _e15 = ms_d(d_6.mf, wm_35);
-    if (((wo_37.z * wi_36.z) > 0.0)) {
-        float _e23 = ms_reflected(d_6.mf, d_6.masking, wo_37, wi_36, _e15);
-        return (_e13 * _e23);
-    }
-    float _e28 = ms_dielectric_f_transmission(d_6, wo_37, wi_36, wm_35, _e15, _e5.w, (1.0 - _e13));
-    return _e28;
-}
-
-float ms_dielectric_pdf(MsDielectric d_7, vec3 wo_38, vec3 wi_37) {
-    bool _e3 = ms_dielectric_smooth(d_7);
-    if (_e3) {
-        return 0.0;
-    }
-    vec4 _e5 = ms_dielectric_half(d_7, wo_38, wi_37);
-    if ((_e5.w == 0.0)) {
-        return 0.0;
-    }
-    vec3 wm_36 = _e5.xyz;
-    float _e11 = ms_dot(wo_38, wm_36);
-    float _e13 = ms_fresnel_dielectric(_e11, d_7.eta);
-    float _e15 = ms_pdf(d_7.mf, wo_38, wm_36);
-    if (((wo_38.z * wi_37.z) > 0.0)) {
-        float _e22 = ms_dot(wo_38, wm_36);
+    float _e15 = ms_pdf(d_6.mf, wo_40, wm_43);
+    if (((wo_40.z * wi_39.z) > 0.0)) {
+        float _e22 = ms_dot(wo_40, wm_43);
         return ((_e15 * _e13) / (4.0 * abs(_e22)));
     }
-    float _e31 = ms_jacobian_refraction(wo_38, wi_37, wm_36, _e5.w);
+    float _e31 = ms_jacobian_refraction(wo_40, wi_39, wm_43, _e5.w);
     return ((_e15 * (1.0 - _e13)) * _e31);
 }
 
-MsBsdfSample ms_dielectric_sample_smooth(MsDielectric d_8, vec3 wo_39, float uc_1) {
+MsBsdfSample ms_dielectric_sample_smooth(MsDielectric d_7, vec3 wo_41, float uc_1) {
     float f_3 = 0.0;
-    float _e5 = ms_fresnel_dielectric(wo_39.z, d_8.eta);
+    float _e5 = ms_fresnel_dielectric(wo_41.z, d_7.eta);
     if ((uc_1 < _e5)) {
-        vec3 wi_50 = vec3(-(wo_39.x), -(wo_39.y), wo_39.z);
-        return MsBsdfSample(wi_50, _e5, vec3((_e5 / abs(wi_50.z))), 3u, 1.0);
+        vec3 wi_52 = vec3(-(wo_41.x), -(wo_41.y), wo_41.z);
+        return MsBsdfSample(wi_52, _e5, vec3((_e5 / abs(wi_52.z))), 3u, 1.0);
     }
     MsBsdfSample none_2 = MsBsdfSample(vec3(0.0), 0.0, vec3(0.0), 0u, 1.0);
-    vec4 _e33 = ms_refract(wo_39, vec3(0.0, 0.0, 1.0), d_8.eta);
+    vec4 _e33 = ms_refract(wo_41, vec3(0.0, 0.0, 1.0), d_7.eta);
     if ((_e33.w == 0.0)) {
         return none_2;
     }
-    vec3 wi_51 = _e33.xyz;
-    bool _e39 = ms_on_horizon(wi_51.z);
+    vec3 wi_53 = _e33.xyz;
+    bool _e39 = ms_on_horizon(wi_53.z);
     if (_e39) {
         return none_2;
     }
     float t_13 = (1.0 - _e5);
-    f_3 = (t_13 / abs(wi_51.z));
-    if ((d_8.transport == MS_TRANSPORT_RADIANCE)) {
+    f_3 = (t_13 / abs(wi_53.z));
+    if ((d_7.transport == MS_TRANSPORT_RADIANCE)) {
         float _e49 = f_3;
         f_3 = (_e49 / (_e33.w * _e33.w));
     }
     float _e54 = f_3;
-    return MsBsdfSample(wi_51, t_13, vec3(_e54), 7u, _e33.w);
+    return MsBsdfSample(wi_53, t_13, vec3(_e54), 7u, _e33.w);
 }
 
-MsBsdfSample ms_dielectric_sample(MsDielectric d_9, vec3 wo_40, float uc_2, vec2 u_32) {
+MsBsdfSample ms_dielectric_sample(MsDielectric d_8, vec3 wo_42, float uc_2, vec2 u_34) {
     bool local_40 = false;
     bool local_41 = false;
     bool local_42 = false;
     bool local_43 = false;
     MsBsdfSample none_3 = MsBsdfSample(vec3(0.0), 0.0, vec3(0.0), 0u, 1.0);
-    bool _e13 = ms_on_horizon(wo_40.z);
+    bool _e13 = ms_on_horizon(wo_42.z);
     if (_e13) {
         return none_3;
     }
-    bool _e14 = ms_dielectric_smooth(d_9);
+    bool _e14 = ms_dielectric_smooth(d_8);
     if (_e14) {
-        MsBsdfSample _e15 = ms_dielectric_sample_smooth(d_9, wo_40, uc_2);
+        MsBsdfSample _e15 = ms_dielectric_sample_smooth(d_8, wo_42, uc_2);
         return _e15;
     }
-    MsSample _e17 = ms_sample(d_9.mf, wo_40, u_32);
-    vec3 wm_37 = _e17.wm;
-    float _e19 = ms_dot(wo_40, wm_37);
-    float _e21 = ms_fresnel_dielectric(_e19, d_9.eta);
+    MsSample _e17 = ms_sample(d_8.mf, wo_42, u_34);
+    vec3 wm_44 = _e17.wm;
+    float _e19 = ms_dot(wo_42, wm_44);
+    float _e21 = ms_fresnel_dielectric(_e19, d_8.eta);
     if ((uc_2 < _e21)) {
-        vec3 _e23 = ms_reflect(wo_40, wm_37);
-        bool _e24 = ms_same_hemisphere(wo_40, _e23);
+        vec3 _e23 = ms_reflect(wo_42, wm_44);
+        bool _e24 = ms_same_hemisphere(wo_42, _e23);
         if (!(!(_e24))) {
             bool _e30 = ms_on_horizon(_e23.z);
             local_40 = _e30;
@@ -3387,12 +3546,12 @@ MsBsdfSample ms_dielectric_sample(MsDielectric d_9, vec3 wo_40, float uc_2, vec2
         if (_e32) {
             return none_3;
         }
-        float _e34 = ms_d(d_9.mf, wm_37);
+        float _e34 = ms_d(d_8.mf, wm_44);
         bool _e35 = ms_usable(_e34);
         if (!(_e35)) {
             return none_3;
         }
-        float _e39 = ms_reflected(d_9.mf, d_9.masking, wo_40, _e23, _e34);
+        float _e39 = ms_reflected(d_8.mf, d_8.masking, wo_42, _e23, _e34);
         float f_5 = (_e21 * _e39);
         float pdf_1 = ((_e17.pdf * _e21) / (4.0 * abs(_e19)));
         bool _e47 = ms_usable(pdf_1);
@@ -3407,15 +3566,15 @@ MsBsdfSample ms_dielectric_sample(MsDielectric d_9, vec3 wo_40, float uc_2, vec2
         }
         return MsBsdfSample(_e23, pdf_1, vec3(f_5), MS_SAMPLE_VALID, 1.0);
     }
-    vec4 _e62 = ms_refract(wo_40, wm_37, d_9.eta);
+    vec4 _e62 = ms_refract(wo_42, wm_44, d_8.eta);
     if ((_e62.w == 0.0)) {
         return none_3;
     }
-    vec3 wi_52 = _e62.xyz;
+    vec3 wi_54 = _e62.xyz;
     float etap_6 = _e62.w;
-    bool _e68 = ms_same_hemisphere(wo_40, wi_52);
+    bool _e68 = ms_same_hemisphere(wo_42, wi_54);
     if (!(_e68)) {
-        bool _e73 = ms_on_horizon(wi_52.z);
+        bool _e73 = ms_on_horizon(wi_54.z);
         local_42 = _e73;
     } else {
         local_42 = true;
@@ -3425,14 +3584,14 @@ MsBsdfSample ms_dielectric_sample(MsDielectric d_9, vec3 wo_40, float uc_2, vec2
         return none_3;
     }
     float t_14 = (1.0 - _e21);
-    float _e80 = ms_jacobian_refraction(wo_40, wi_52, wm_37, etap_6);
+    float _e80 = ms_jacobian_refraction(wo_42, wi_54, wm_44, etap_6);
     float pdf_2 = ((_e17.pdf * t_14) * _e80);
-    float _e83 = ms_d(d_9.mf, wm_37);
+    float _e83 = ms_d(d_8.mf, wm_44);
     bool _e84 = ms_usable(_e83);
     if (!(_e84)) {
         return none_3;
     }
-    float _e86 = ms_dielectric_f_transmission(d_9, wo_40, wi_52, wm_37, _e83, etap_6, t_14);
+    float _e86 = ms_dielectric_f_transmission(d_8, wo_42, wi_54, wm_44, _e83, etap_6, t_14);
     bool _e87 = ms_usable(pdf_2);
     if (!(!(_e87))) {
         local_43 = !((_e86 <= 3.4028235e38));
@@ -3443,19 +3602,19 @@ MsBsdfSample ms_dielectric_sample(MsDielectric d_9, vec3 wo_40, float uc_2, vec2
     if (_e96) {
         return none_3;
     }
-    return MsBsdfSample(wi_52, pdf_2, vec3(_e86), 5u, etap_6);
+    return MsBsdfSample(wi_54, pdf_2, vec3(_e86), 5u, etap_6);
 }
 
-MsLutTap ms_lut_tap(float x_12, uint n_8) {
-    float t_15 = clamp(((x_12 * float(n_8)) - 0.5), 0.0, float((n_8 - 1u)));
-    uint i_12 = min(uint(floor(t_15)), (n_8 - 2u));
-    return MsLutTap(i_12, (t_15 - float(i_12)));
+MsLutTap ms_lut_tap(float x_13, uint n_8) {
+    float t_15 = clamp(((x_13 * float(n_8)) - 0.5), 0.0, float((n_8 - 1u)));
+    uint i_13 = min(uint(floor(t_15)), (n_8 - 2u));
+    return MsLutTap(i_13, (t_15 - float(i_13)));
 }
 
-MsLutTap ms_lut_tap_edges(float x_13, uint n_9) {
-    float t_16 = clamp((x_13 * float((n_9 - 1u))), 0.0, float((n_9 - 1u)));
-    uint i_13 = min(uint(floor(t_16)), (n_9 - 2u));
-    return MsLutTap(i_13, (t_16 - float(i_13)));
+MsLutTap ms_lut_tap_edges(float x_14, uint n_9) {
+    float t_16 = clamp((x_14 * float((n_9 - 1u))), 0.0, float((n_9 - 1u)));
+    uint i_14 = min(uint(floor(t_16)), (n_9 - 2u));
+    return MsLutTap(i_14, (t_16 - float(i_14)));
 }
 
 uint ms_lut_index(uint ir, uint im, uint n_mu) {
@@ -3472,8 +3631,8 @@ float ms_lut_bilerp(MsLutTap r, MsLutTap m_4, float v00_, float v10_, float v01_
     return (((((gr * gm) * v00_) + ((r.f * gm) * v10_)) + ((gr * m_4.f) * v01_)) + ((r.f * m_4.f) * v11_));
 }
 
-float ms_lut_roughness_coord(vec2 alpha_92, float alpha_max) {
-    return sqrt((sqrt((alpha_92.x * alpha_92.y)) / alpha_max));
+float ms_lut_roughness_coord(vec2 alpha_105, float alpha_max) {
+    return sqrt((sqrt((alpha_105.x * alpha_105.y)) / alpha_max));
 }
 
 vec3 ms_kulla_conty_f_ms(vec3 f_avg, float e_avg) {
@@ -3488,9 +3647,9 @@ float ms_kulla_conty_lobe(float e_o, float e_i, float e_avg_1) {
     return ((max((1.0 - e_o), 0.0) * max((1.0 - e_i), 0.0)) / den_3);
 }
 
-vec3 ms_conductor_eval_kulla_conty(MsConductor c_12, vec3 wo_41, vec3 wi_38, float e_o_1, float e_i_1, float e_avg_2, vec3 f_ms) {
-    vec3 _e7 = ms_conductor_eval(c_12, wo_41, wi_38);
-    if (!(((wo_41.z * wi_38.z) > 0.0))) {
+vec3 ms_conductor_eval_kulla_conty(MsConductor c_12, vec3 wo_43, vec3 wi_40, float e_o_1, float e_i_1, float e_avg_2, vec3 f_ms) {
+    vec3 _e7 = ms_conductor_eval(c_12, wo_43, wi_40);
+    if (!(((wo_43.z * wi_40.z) > 0.0))) {
         return _e7;
     }
     float _e14 = ms_kulla_conty_lobe(e_o_1, e_i_1, e_avg_2);
@@ -3501,8 +3660,8 @@ vec3 ms_turquin_scale(float e_o_2, vec3 f0_2) {
     return (vec3(1.0) + ((f0_2 * (1.0 - e_o_2)) / vec3(e_o_2)));
 }
 
-vec3 ms_conductor_eval_turquin(MsConductor c_13, vec3 wo_42, vec3 wi_39, float e_o_3, vec3 f0_3) {
-    vec3 _e5 = ms_conductor_eval(c_13, wo_42, wi_39);
+vec3 ms_conductor_eval_turquin(MsConductor c_13, vec3 wo_44, vec3 wi_41, float e_o_3, vec3 f0_3) {
+    vec3 _e5 = ms_conductor_eval(c_13, wo_44, wi_41);
     vec3 _e6 = ms_turquin_scale(e_o_3, f0_3);
     return (_e5 * _e6);
 }
@@ -3511,44 +3670,44 @@ float ms_kulla_conty_p_ms(float e_o_4) {
     return clamp((1.0 - e_o_4), 0.0, 1.0);
 }
 
-float ms_cosine_pdf_same_side(vec3 wo_43, vec3 wi_40) {
-    if (!(((wo_43.z * wi_40.z) > 0.0))) {
+float ms_cosine_pdf_same_side(vec3 wo_45, vec3 wi_42) {
+    if (!(((wo_45.z * wi_42.z) > 0.0))) {
         return 0.0;
     }
-    return (abs(wi_40.z) / MS_PI);
+    return (abs(wi_42.z) / MS_PI);
 }
 
-float ms_conductor_pdf_kulla_conty(MsConductor c_14, vec3 wo_44, vec3 wi_41, float e_o_5) {
+float ms_conductor_pdf_kulla_conty(MsConductor c_14, vec3 wo_46, vec3 wi_43, float e_o_5) {
     float _e4 = ms_kulla_conty_p_ms(e_o_5);
-    float _e7 = ms_conductor_pdf(c_14, wo_44, wi_41);
-    float _e9 = ms_cosine_pdf_same_side(wo_44, wi_41);
+    float _e7 = ms_conductor_pdf(c_14, wo_46, wi_43);
+    float _e9 = ms_cosine_pdf_same_side(wo_46, wi_43);
     return (((1.0 - _e4) * _e7) + (_e4 * _e9));
 }
 
-vec3 ms_cosine_hemisphere(vec2 u_33) {
-    float r_25 = sqrt(u_33.x);
-    vec2 _e4 = ms_cos_sin_turn(u_33.y);
-    return vec3((r_25 * _e4.x), (r_25 * _e4.y), sqrt(max((1.0 - u_33.x), 0.0)));
+vec3 ms_cosine_hemisphere(vec2 u_35) {
+    float r_25 = sqrt(u_35.x);
+    vec2 _e4 = ms_cos_sin_turn(u_35.y);
+    return vec3((r_25 * _e4.x), (r_25 * _e4.y), sqrt(max((1.0 - u_35.x), 0.0)));
 }
 
-MsBsdfSample ms_conductor_sample_kulla_conty(MsConductor c_15, vec3 wo_45, float uc_3, vec2 u_34, float e_o_6) {
-    vec3 wi_42 = vec3(0.0);
+MsBsdfSample ms_conductor_sample_kulla_conty(MsConductor c_15, vec3 wo_47, float uc_3, vec2 u_36, float e_o_6) {
+    vec3 wi_44 = vec3(0.0);
     bool local_44 = false;
     MsBsdfSample none_4 = MsBsdfSample(vec3(0.0), 0.0, vec3(0.0), 0u, 1.0);
-    bool _e14 = ms_on_horizon(wo_45.z);
+    bool _e14 = ms_on_horizon(wo_47.z);
     if (_e14) {
         return none_4;
     }
     float _e15 = ms_kulla_conty_p_ms(e_o_6);
     if ((uc_3 < _e15)) {
-        vec3 _e18 = ms_cosine_hemisphere(u_34);
-        wi_42 = _e18;
-        if ((wo_45.z < 0.0)) {
-            float _e24 = wi_42.z;
-            wi_42.z = -(_e24);
+        vec3 _e18 = ms_cosine_hemisphere(u_36);
+        wi_44 = _e18;
+        if ((wo_47.z < 0.0)) {
+            float _e24 = wi_44.z;
+            wi_44.z = -(_e24);
         }
     } else {
-        MsBsdfSample _e30 = ms_conductor_sample(c_15, wo_45, ((uc_3 - _e15) / (1.0 - _e15)), u_34);
+        MsBsdfSample _e30 = ms_conductor_sample(c_15, wo_47, ((uc_3 - _e15) / (1.0 - _e15)), u_36);
         if (!(((_e30.flags & MS_SAMPLE_VALID) == 0u))) {
             local_44 = ((_e30.flags & MS_SAMPLE_SPECULAR) != 0u);
         } else {
@@ -3558,21 +3717,21 @@ MsBsdfSample ms_conductor_sample_kulla_conty(MsConductor c_15, vec3 wo_45, float
         if (_e45) {
             return _e30;
         }
-        wi_42 = _e30.wi;
+        wi_44 = _e30.wi;
     }
-    vec3 _e47 = wi_42;
-    float _e48 = ms_conductor_pdf_kulla_conty(c_15, wo_45, _e47, e_o_6);
+    vec3 _e47 = wi_44;
+    float _e48 = ms_conductor_pdf_kulla_conty(c_15, wo_47, _e47, e_o_6);
     bool _e49 = ms_usable(_e48);
     if (!(_e49)) {
         return none_4;
     }
-    vec3 _e51 = wi_42;
-    vec3 _e52 = wi_42;
-    vec3 _e53 = ms_conductor_eval(c_15, wo_45, _e52);
+    vec3 _e51 = wi_44;
+    vec3 _e52 = wi_44;
+    vec3 _e53 = ms_conductor_eval(c_15, wo_47, _e52);
     return MsBsdfSample(_e51, _e48, _e53, MS_SAMPLE_VALID, 1.0);
 }
 
-MsBsdfSample ms_kulla_conty_sample_f(MsBsdfSample s_6, vec3 wo_46, float e_o_7, float e_i_2, float e_avg_3, vec3 f_ms_1) {
+MsBsdfSample ms_kulla_conty_sample_f(MsBsdfSample s_6, vec3 wo_48, float e_o_7, float e_i_2, float e_avg_3, vec3 f_ms_1) {
     bool local_45 = false;
     bool local_46 = false;
     if (!(((s_6.flags & MS_SAMPLE_VALID) == 0u))) {
@@ -3582,7 +3741,7 @@ MsBsdfSample ms_kulla_conty_sample_f(MsBsdfSample s_6, vec3 wo_46, float e_o_7, 
     }
     bool _e20 = local_45;
     if (!(_e20)) {
-        local_46 = !(((wo_46.z * s_6.wi.z) > 0.0));
+        local_46 = !(((wo_48.z * s_6.wi.z) > 0.0));
     } else {
         local_46 = true;
     }
@@ -3594,9 +3753,9 @@ MsBsdfSample ms_kulla_conty_sample_f(MsBsdfSample s_6, vec3 wo_46, float e_o_7, 
     return MsBsdfSample(s_6.wi, s_6.pdf, (s_6.f + (_e36 * f_ms_1)), s_6.flags, s_6.eta);
 }
 
-MsBsdfSample ms_conductor_sample_turquin(MsConductor c_16, vec3 wo_47, float uc_4, vec2 u_35, float e_o_8, vec3 f0_4) {
+MsBsdfSample ms_conductor_sample_turquin(MsConductor c_16, vec3 wo_49, float uc_4, vec2 u_37, float e_o_8, vec3 f0_4) {
     bool local_47 = false;
-    MsBsdfSample _e6 = ms_conductor_sample(c_16, wo_47, uc_4, u_35);
+    MsBsdfSample _e6 = ms_conductor_sample(c_16, wo_49, uc_4, u_37);
     if (!(((_e6.flags & MS_SAMPLE_VALID) == 0u))) {
         local_47 = ((_e6.flags & MS_SAMPLE_SPECULAR) != 0u);
     } else {
@@ -3627,7 +3786,7 @@ float ms_lut_trilerp(MsLutTap e, MsLutTap r_1, MsLutTap m_5, vec4 lo_2, vec4 hi_
     uint b_6 = 0u;
     vec2 we = vec2((1.0 - e.f), e.f);
     vec2 wr = vec2((1.0 - r_1.f), r_1.f);
-    vec2 wm_38 = vec2((1.0 - m_5.f), m_5.f);
+    vec2 wm_45 = vec2((1.0 - m_5.f), m_5.f);
     bool loop_init_8 = true;
     while(true) {
         if (!loop_init_8) {
@@ -3649,7 +3808,7 @@ float ms_lut_trilerp(MsLutTap e, MsLutTap r_1, MsLutTap m_5, vec4 lo_2, vec4 hi_
             uint _e40 = b_6;
             uint _e44 = b_6;
             uint _e51 = b_6;
-            s_7 = (_e39 + (((we[(_e40 & 1u)] * wr[((_e44 >> 1u) & 1u)]) * wm_38[(_e51 >> 2u)]) * v_12));
+            s_7 = (_e39 + (((we[(_e40 & 1u)] * wr[((_e44 >> 1u) & 1u)]) * wm_45[(_e51 >> 2u)]) * v_12));
         }
     }
     float _e61 = s_7;
@@ -3700,13 +3859,13 @@ vec2 ms_dielectric_kulla_conty_k(float eta_5, float f_avg_1, vec2 e_avg_4) {
     return _e34;
 }
 
-float ms_dielectric_kulla_conty_lobe(MsDielectric d_10, vec3 wo_48, vec3 wi_43, float e_o_9, float e_i_3, float e_avg_i, float k_o) {
+float ms_dielectric_kulla_conty_lobe(MsDielectric d_9, vec3 wo_50, vec3 wi_45, float e_o_9, float e_i_3, float e_avg_i, float k_o) {
     bool local_48 = false;
     bool local_49 = false;
     float f_4 = 0.0;
     bool local_50 = false;
-    if ((abs(wo_48.z) > 0.0)) {
-        local_48 = (abs(wi_43.z) > 0.0);
+    if ((abs(wo_50.z) > 0.0)) {
+        local_48 = (abs(wi_45.z) > 0.0);
     } else {
         local_48 = false;
     }
@@ -3715,7 +3874,7 @@ float ms_dielectric_kulla_conty_lobe(MsDielectric d_10, vec3 wo_48, vec3 wi_43, 
         return 0.0;
     }
     float lost = (1.0 - e_o_9);
-    bool crossed = ((wi_43.z < 0.0) != (wo_48.z < 0.0));
+    bool crossed = ((wi_45.z < 0.0) != (wo_50.z < 0.0));
     float share = (crossed ? k_o : (1.0 - k_o));
     float den_4 = (MS_PI * (1.0 - e_avg_i));
     if ((den_4 > 0.0)) {
@@ -3729,13 +3888,13 @@ float ms_dielectric_kulla_conty_lobe(MsDielectric d_10, vec3 wo_48, vec3 wi_43, 
     }
     f_4 = (((share * lost) * max((1.0 - e_i_3), 0.0)) / den_4);
     if (crossed) {
-        local_50 = (d_10.transport == MS_TRANSPORT_RADIANCE);
+        local_50 = (d_9.transport == MS_TRANSPORT_RADIANCE);
     } else {
         local_50 = false;
     }
     bool _e61 = local_50;
     if (_e61) {
-        float etap_7 = ((wo_48.z > 0.0) ? d_10.eta : (1.0 / d_10.eta));
+        float etap_7 = ((wo_50.z > 0.0) ? d_9.eta : (1.0 / d_9.eta));
         float _e70 = f_4;
         f_4 = (_e70 / (etap_7 * etap_7));
     }
@@ -3743,20 +3902,20 @@ float ms_dielectric_kulla_conty_lobe(MsDielectric d_10, vec3 wo_48, vec3 wi_43, 
     return _e73;
 }
 
-float ms_dielectric_eval_kulla_conty(MsDielectric d_11, vec3 wo_49, vec3 wi_44, float e_o_10, float e_i_4, float e_avg_i_1, float k_o_1) {
-    float _e7 = ms_dielectric_eval(d_11, wo_49, wi_44);
-    bool _e8 = ms_dielectric_smooth(d_11);
+float ms_dielectric_eval_kulla_conty(MsDielectric d_10, vec3 wo_51, vec3 wi_46, float e_o_10, float e_i_4, float e_avg_i_1, float k_o_1) {
+    float _e7 = ms_dielectric_eval(d_10, wo_51, wi_46);
+    bool _e8 = ms_dielectric_smooth(d_10);
     if (_e8) {
         return _e7;
     }
-    float _e9 = ms_dielectric_kulla_conty_lobe(d_11, wo_49, wi_44, e_o_10, e_i_4, e_avg_i_1, k_o_1);
+    float _e9 = ms_dielectric_kulla_conty_lobe(d_10, wo_51, wi_46, e_o_10, e_i_4, e_avg_i_1, k_o_1);
     return (_e7 + _e9);
 }
 
-float ms_dielectric_eval_turquin(MsDielectric d_12, vec3 wo_50, vec3 wi_45, float e_o_11) {
+float ms_dielectric_eval_turquin(MsDielectric d_11, vec3 wo_52, vec3 wi_47, float e_o_11) {
     bool local_51 = false;
-    float _e4 = ms_dielectric_eval(d_12, wo_50, wi_45);
-    bool _e5 = ms_dielectric_smooth(d_12);
+    float _e4 = ms_dielectric_eval(d_11, wo_52, wi_47);
+    bool _e5 = ms_dielectric_smooth(d_11);
     if (!(_e5)) {
         local_51 = !((e_o_11 > 0.0));
     } else {
@@ -3769,48 +3928,48 @@ float ms_dielectric_eval_turquin(MsDielectric d_12, vec3 wo_50, vec3 wi_45, floa
     return (_e4 / e_o_11);
 }
 
-float ms_dielectric_kulla_conty_lobe_pdf(vec3 wo_51, vec3 wi_46, float k_o_2) {
-    bool crossed_1 = ((wi_46.z < 0.0) != (wo_51.z < 0.0));
+float ms_dielectric_kulla_conty_lobe_pdf(vec3 wo_53, vec3 wi_48, float k_o_2) {
+    bool crossed_1 = ((wi_48.z < 0.0) != (wo_53.z < 0.0));
     float side = (crossed_1 ? k_o_2 : (1.0 - k_o_2));
-    return ((side * abs(wi_46.z)) / MS_PI);
+    return ((side * abs(wi_48.z)) / MS_PI);
 }
 
-float ms_dielectric_pdf_kulla_conty(MsDielectric d_13, vec3 wo_52, vec3 wi_47, float e_o_12, float k_o_3) {
-    float _e5 = ms_dielectric_pdf(d_13, wo_52, wi_47);
-    bool _e6 = ms_dielectric_smooth(d_13);
+float ms_dielectric_pdf_kulla_conty(MsDielectric d_12, vec3 wo_54, vec3 wi_49, float e_o_12, float k_o_3) {
+    float _e5 = ms_dielectric_pdf(d_12, wo_54, wi_49);
+    bool _e6 = ms_dielectric_smooth(d_12);
     if (_e6) {
         return _e5;
     }
     float _e7 = ms_kulla_conty_p_ms(e_o_12);
-    float _e11 = ms_dielectric_kulla_conty_lobe_pdf(wo_52, wi_47, k_o_3);
+    float _e11 = ms_dielectric_kulla_conty_lobe_pdf(wo_54, wi_49, k_o_3);
     return (((1.0 - _e7) * _e5) + (_e7 * _e11));
 }
 
-MsBsdfSample ms_dielectric_sample_kulla_conty(MsDielectric d_14, vec3 wo_53, float uc_5, vec2 u_36, float e_o_13, float k_o_4) {
-    vec3 wi_48 = vec3(0.0);
+MsBsdfSample ms_dielectric_sample_kulla_conty(MsDielectric d_13, vec3 wo_55, float uc_5, vec2 u_38, float e_o_13, float k_o_4) {
+    vec3 wi_50 = vec3(0.0);
     bool local_52 = false;
     bool local_53 = false;
     MsBsdfSample none_5 = MsBsdfSample(vec3(0.0), 0.0, vec3(0.0), 0u, 1.0);
-    bool _e15 = ms_on_horizon(wo_53.z);
+    bool _e15 = ms_on_horizon(wo_55.z);
     if (_e15) {
         return none_5;
     }
-    bool _e16 = ms_dielectric_smooth(d_14);
+    bool _e16 = ms_dielectric_smooth(d_13);
     if (_e16) {
-        MsBsdfSample _e17 = ms_dielectric_sample(d_14, wo_53, uc_5, u_36);
+        MsBsdfSample _e17 = ms_dielectric_sample(d_13, wo_55, uc_5, u_38);
         return _e17;
     }
     float _e18 = ms_kulla_conty_p_ms(e_o_13);
     if ((uc_5 < _e18)) {
         bool crossed_2 = ((uc_5 / _e18) < k_o_4);
-        vec3 _e23 = ms_cosine_hemisphere(u_36);
-        wi_48 = _e23;
-        if (((wo_53.z > 0.0) == crossed_2)) {
-            float _e30 = wi_48.z;
-            wi_48.z = -(_e30);
+        vec3 _e23 = ms_cosine_hemisphere(u_38);
+        wi_50 = _e23;
+        if (((wo_55.z > 0.0) == crossed_2)) {
+            float _e30 = wi_50.z;
+            wi_50.z = -(_e30);
         }
     } else {
-        MsBsdfSample _e38 = ms_dielectric_sample(d_14, wo_53, min(((uc_5 - _e18) / (1.0 - _e18)), 0.99999994), u_36);
+        MsBsdfSample _e38 = ms_dielectric_sample(d_13, wo_55, min(((uc_5 - _e18) / (1.0 - _e18)), 0.99999994), u_38);
         if (!(((_e38.flags & MS_SAMPLE_VALID) == 0u))) {
             local_52 = ((_e38.flags & MS_SAMPLE_SPECULAR) != 0u);
         } else {
@@ -3820,13 +3979,13 @@ MsBsdfSample ms_dielectric_sample_kulla_conty(MsDielectric d_14, vec3 wo_53, flo
         if (_e53) {
             return _e38;
         }
-        wi_48 = _e38.wi;
+        wi_50 = _e38.wi;
     }
-    vec3 _e55 = wi_48;
-    float _e56 = ms_dielectric_pdf_kulla_conty(d_14, wo_53, _e55, e_o_13, k_o_4);
+    vec3 _e55 = wi_50;
+    float _e56 = ms_dielectric_pdf_kulla_conty(d_13, wo_55, _e55, e_o_13, k_o_4);
     bool _e57 = ms_usable(_e56);
     if (!(!(_e57))) {
-        float _e63 = wi_48.z;
+        float _e63 = wi_50.z;
         local_53 = (_e63 == 0.0);
     } else {
         local_53 = true;
@@ -3835,20 +3994,20 @@ MsBsdfSample ms_dielectric_sample_kulla_conty(MsDielectric d_14, vec3 wo_53, flo
     if (_e67) {
         return none_5;
     }
-    vec3 _e68 = wi_48;
-    float _e69 = ms_dielectric_eval(d_14, wo_53, _e68);
+    vec3 _e68 = wi_50;
+    float _e69 = ms_dielectric_eval(d_13, wo_55, _e68);
     vec3 f_7 = vec3(_e69);
-    float _e72 = wi_48.z;
-    if (((_e72 < 0.0) != (wo_53.z < 0.0))) {
-        float etap_8 = ((wo_53.z > 0.0) ? d_14.eta : (1.0 / d_14.eta));
-        vec3 _e87 = wi_48;
+    float _e72 = wi_50.z;
+    if (((_e72 < 0.0) != (wo_55.z < 0.0))) {
+        float etap_8 = ((wo_55.z > 0.0) ? d_13.eta : (1.0 / d_13.eta));
+        vec3 _e87 = wi_50;
         return MsBsdfSample(_e87, _e56, f_7, 5u, etap_8);
     }
-    vec3 _e90 = wi_48;
+    vec3 _e90 = wi_50;
     return MsBsdfSample(_e90, _e56, f_7, MS_SAMPLE_VALID, 1.0);
 }
 
-MsBsdfSample ms_dielectric_kulla_conty_sample_f(MsBsdfSample s_9, MsDielectric d_15, vec3 wo_54, float e_o_14, float e_i_5, float e_avg_i_2, float k_o_5) {
+MsBsdfSample ms_dielectric_kulla_conty_sample_f(MsBsdfSample s_9, MsDielectric d_14, vec3 wo_56, float e_o_14, float e_i_5, float e_avg_i_2, float k_o_5) {
     bool local_54 = false;
     if (!(((s_9.flags & MS_SAMPLE_VALID) == 0u))) {
         local_54 = ((s_9.flags & MS_SAMPLE_SPECULAR) != 0u);
@@ -3859,14 +4018,14 @@ MsBsdfSample ms_dielectric_kulla_conty_sample_f(MsBsdfSample s_9, MsDielectric d
     if (_e21) {
         return s_9;
     }
-    float _e23 = ms_dielectric_kulla_conty_lobe(d_15, wo_54, s_9.wi, e_o_14, e_i_5, e_avg_i_2, k_o_5);
+    float _e23 = ms_dielectric_kulla_conty_lobe(d_14, wo_56, s_9.wi, e_o_14, e_i_5, e_avg_i_2, k_o_5);
     return MsBsdfSample(s_9.wi, s_9.pdf, (s_9.f + vec3(_e23)), s_9.flags, s_9.eta);
 }
 
-MsBsdfSample ms_dielectric_sample_turquin(MsDielectric d_16, vec3 wo_55, float uc_6, vec2 u_37, float e_o_15) {
+MsBsdfSample ms_dielectric_sample_turquin(MsDielectric d_15, vec3 wo_57, float uc_6, vec2 u_39, float e_o_15) {
     bool local_55 = false;
     bool local_56 = false;
-    MsBsdfSample _e5 = ms_dielectric_sample(d_16, wo_55, uc_6, u_37);
+    MsBsdfSample _e5 = ms_dielectric_sample(d_15, wo_57, uc_6, u_39);
     if (!(((_e5.flags & MS_SAMPLE_VALID) == 0u))) {
         local_55 = ((_e5.flags & MS_SAMPLE_SPECULAR) != 0u);
     } else {
@@ -3890,12 +4049,12 @@ MsBsdfSample ms_dielectric_sample_turquin(MsDielectric d_16, vec3 wo_55, float u
 }
 
 uint ms_k_index(uvec3 id_13, uvec3 groups_13) {
-    uint i_14 = (id_13.x + ((id_13.y * groups_13.x) * 64u));
+    uint i_15 = (id_13.x + ((id_13.y * groups_13.x) * 64u));
     uint n_13 = (uint(_group_0_binding_0_cs.length()) / MS_K_IN);
-    if ((i_14 >= n_13)) {
+    if ((i_15 >= n_13)) {
         return n_13;
     }
-    return i_14;
+    return i_15;
 }
 
 MsMicrofacet ms_k_microfacet(vec4 r0_, vec4 r2_) {

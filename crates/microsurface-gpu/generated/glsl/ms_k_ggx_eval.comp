@@ -112,6 +112,7 @@ const uint MS_NDF_STUDENT_T = 5u;
 const uint MS_NDF_EI = 6u;
 const uint MS_NDF_ERFC = 7u;
 const uint MS_NDF_K0_ = 8u;
+const uint MS_NDF_BESSEL_K = 9u;
 const uint MS_MASKING_CORRELATED = 0u;
 const uint MS_MASKING_SEPARABLE = 1u;
 const uint MS_MASKING_CORRELATED_BETA = 2u;
@@ -137,9 +138,9 @@ float ms_inf() {
 vec2 ms_cos_sin_turn(float v) {
     float k_10 = roundEven((4.0 * v));
     float r_3 = (v - (0.25 * k_10));
-    float x_14 = (MS_TAU * r_3);
-    float x2_ = (x_14 * x_14);
-    float s_10 = (x_14 * (1.0 + (x2_ * (-0.16666667 + (x2_ * (0.008333333 + (x2_ * (-0.0001984127 + (x2_ * 2.7557319e-6)))))))));
+    float x_15 = (MS_TAU * r_3);
+    float x2_ = (x_15 * x_15);
+    float s_10 = (x_15 * (1.0 + (x2_ * (-0.16666667 + (x2_ * (0.008333333 + (x2_ * (-0.0001984127 + (x2_ * 2.7557319e-6)))))))));
     float c_17 = (1.0 + (x2_ * (-0.5 + (x2_ * (0.041666668 + (x2_ * (-0.0013888889 + (x2_ * (2.4801588e-5 + (x2_ * -2.755732e-7))))))))));
     int q_2 = (int(k_10) & 3);
     if ((q_2 == 0)) {
@@ -451,12 +452,12 @@ float ms_cnorm_ratio(vec2 a_6, vec2 b_3) {
 vec2 ms_crecip(vec2 a_7) {
     if ((abs(a_7.x) >= abs(a_7.y))) {
         float r_4 = (a_7.y / a_7.x);
-        float d_17 = (a_7.x + (a_7.y * r_4));
-        return vec2((1.0 / d_17), (-(r_4) / d_17));
+        float d_16 = (a_7.x + (a_7.y * r_4));
+        return vec2((1.0 / d_16), (-(r_4) / d_16));
     }
     float r_5 = (a_7.x / a_7.y);
-    float d_18 = ((a_7.x * r_5) + a_7.y);
-    return vec2((r_5 / d_18), (-1.0 / d_18));
+    float d_17 = ((a_7.x * r_5) + a_7.y);
+    return vec2((r_5 / d_17), (-1.0 / d_17));
 }
 
 vec2 ms_csqrt(vec2 a_8) {
@@ -587,17 +588,17 @@ float ms_ggx_d(vec3 wm_2, vec2 alpha) {
     if (!((z_6 > 0.0))) {
         return 0.0;
     }
-    float x_15 = (wm_2.x / alpha.x);
-    float y_7 = (wm_2.y / alpha.y);
-    float t_6 = (((x_15 * x_15) + (y_7 * y_7)) + (z_6 * z_6));
+    float x_16 = (wm_2.x / alpha.x);
+    float y_8 = (wm_2.y / alpha.y);
+    float t_6 = (((x_16 * x_16) + (y_8 * y_8)) + (z_6 * z_6));
     return (1.0 / ((((MS_PI * alpha.x) * alpha.y) * t_6) * t_6));
 }
 
 float ms_ggx_lambda(vec3 w_3, vec2 alpha_1) {
-    float x_16 = (alpha_1.x * w_3.x);
-    float y_8 = (alpha_1.y * w_3.y);
+    float x_17 = (alpha_1.x * w_3.x);
+    float y_9 = (alpha_1.y * w_3.y);
     float z_7 = abs(w_3.z);
-    float t_7 = ((x_16 * x_16) + (y_8 * y_8));
+    float t_7 = ((x_17 * x_17) + (y_9 * y_9));
     float z2_ = (z_7 * z_7);
     float den = (2.0 * (z2_ + (z_7 * sqrt((z2_ + t_7)))));
     if (!((den > 0.0))) {
@@ -611,10 +612,10 @@ float ms_ggx_lambda(vec3 w_3, vec2 alpha_1) {
 }
 
 float ms_ggx_g1_(vec3 w_4, vec2 alpha_2) {
-    float x_17 = (alpha_2.x * w_4.x);
-    float y_9 = (alpha_2.y * w_4.y);
+    float x_18 = (alpha_2.x * w_4.x);
+    float y_10 = (alpha_2.y * w_4.y);
     float z_8 = abs(w_4.z);
-    float den_1 = (z_8 + sqrt(((z_8 * z_8) + ((x_17 * x_17) + (y_9 * y_9)))));
+    float den_1 = (z_8 + sqrt(((z_8 * z_8) + ((x_18 * x_18) + (y_10 * y_10)))));
     if (!((den_1 > 0.0))) {
         return 0.0;
     }
@@ -673,13 +674,13 @@ float ms_ggx_pdf(vec3 w_5, vec3 wm_3, vec2 alpha_5) {
 
 vec3 ms_ggx_cap_normal_stretched(vec3 w_6, vec3 stretch, vec2 u, float len) {
     float inv = (1.0 / len);
-    float x_18 = ((stretch.x * w_6.x) * inv);
-    float y_10 = ((stretch.y * w_6.y) * inv);
+    float x_19 = ((stretch.x * w_6.x) * inv);
+    float y_11 = ((stretch.y * w_6.y) * inv);
     float z_10 = ((stretch.z * w_6.z) * inv);
     vec2 _e19 = ms_cos_sin_turn(u.x);
     float above = ((1.0 - u.y) * (1.0 + z_10));
-    float sin_ = sqrt(max((u.y * ((above * (1.0 + z_10)) + ((x_18 * x_18) + (y_10 * y_10)))), 0.0));
-    vec3 h_2 = vec3((stretch.x * ((sin_ * _e19.x) + x_18)), (stretch.y * ((sin_ * _e19.y) + y_10)), (stretch.z * above));
+    float sin_ = sqrt(max((u.y * ((above * (1.0 + z_10)) + ((x_19 * x_19) + (y_11 * y_11)))), 0.0));
+    vec3 h_2 = vec3((stretch.x * ((sin_ * _e19.x) + x_19)), (stretch.y * ((sin_ * _e19.y) + y_11)), (stretch.z * above));
     float n_11 = (1.0 / sqrt((((h_2.x * h_2.x) + (h_2.y * h_2.y)) + (h_2.z * h_2.z))));
     return (h_2 * n_11);
 }
@@ -715,12 +716,12 @@ vec3 ms_ggx_sample_wm(vec3 w_in, vec2 alpha_7, vec2 u_2) {
         float _e45 = w_8.x;
         float _e49 = w_8.y;
         float _e54 = w_8.z;
-        float d_19 = (((_e42.x * _e45) + (_e42.y * _e49)) + (_e42.z * _e54));
+        float d_18 = (((_e42.x * _e45) + (_e42.y * _e49)) + (_e42.z * _e54));
         float _e58 = w_8.x;
         float _e61 = w_8.y;
         float _e65 = w_8.z;
         float l1_ = ((abs(_e58) + abs(_e61)) + abs(_e65));
-        if ((d_19 > (2.4e-7 * l1_))) {
+        if ((d_18 > (2.4e-7 * l1_))) {
             return _e42;
         }
         vec3 _e71 = w_8;
@@ -950,8 +951,8 @@ float ms_beckmann_d(vec3 wm_6, vec2 alpha_15) {
     bool local_9 = false;
     float z_11 = wm_6.z;
     float r_9 = (1.0 / (alpha_15.x * alpha_15.y));
-    float x_19 = ((wm_6.x * alpha_15.y) * r_9);
-    float y_11 = ((wm_6.y * alpha_15.x) * r_9);
+    float x_20 = ((wm_6.x * alpha_15.y) * r_9);
+    float y_12 = ((wm_6.y * alpha_15.x) * r_9);
     float z2_1 = (z_11 * z_11);
     if ((z_11 > 0.0)) {
         local_9 = (z2_1 > 0.0);
@@ -962,7 +963,7 @@ float ms_beckmann_d(vec3 wm_6, vec2 alpha_15) {
     if (!(_e24)) {
         return 0.0;
     }
-    float e_5 = (((x_19 * x_19) + (y_11 * y_11)) / z2_1);
+    float e_5 = (((x_20 * x_20) + (y_12 * y_12)) / z2_1);
     if ((e_5 <= 80.0)) {
         return ((exp(-(e_5)) * r_9) / ((MS_PI * z2_1) * z2_1));
     }
@@ -1010,12 +1011,12 @@ float ms_fam_cubic(vec4 c_2, float s_3) {
 }
 
 float ms_dg_lambda_ends(float u_12, float a_15) {
-    float x_20 = ((((0.5 * a_15) * a_15) * ((1.0 - u_12) * (1.0 + u_12))) / (u_12 * u_12));
-    if ((x_20 < 9.313226e-10)) {
-        if ((x_20 <= 0.0)) {
+    float x_21 = ((((0.5 * a_15) * a_15) * ((1.0 - u_12) * (1.0 + u_12))) / (u_12 * u_12));
+    if ((x_21 < 9.313226e-10)) {
+        if ((x_21 <= 0.0)) {
             return 0.0;
         }
-        return ((0.5 * x_20) * (0.42278433 - log((0.5 * x_20))));
+        return ((0.5 * x_21) * (0.42278433 - log((0.5 * x_21))));
     }
     float sx_1 = ((a_15 * sqrt(((0.5 * (1.0 - u_12)) * (1.0 + u_12)))) / u_12);
     float r_11 = (1.0 / (sx_1 * sx_1));
@@ -1026,8 +1027,8 @@ float ms_exponential_d(vec3 wm_12, vec2 alpha_39) {
     bool local_22 = false;
     float z_12 = wm_12.z;
     float r_12 = (1.0 / (alpha_39.x * alpha_39.y));
-    float x_21 = ((wm_12.x * alpha_39.y) * r_12);
-    float y_12 = ((wm_12.y * alpha_39.x) * r_12);
+    float x_22 = ((wm_12.x * alpha_39.y) * r_12);
+    float y_13 = ((wm_12.y * alpha_39.x) * r_12);
     float z2_2 = (z_12 * z_12);
     if ((z_12 > 0.0)) {
         local_22 = (z2_2 > 0.0);
@@ -1038,7 +1039,7 @@ float ms_exponential_d(vec3 wm_12, vec2 alpha_39) {
     if (!(_e24)) {
         return ((z_12 != z_12) ? z_12 : 0.0);
     }
-    float e_6 = ((2.0 * sqrt(((x_21 * x_21) + (y_12 * y_12)))) / z_12);
+    float e_6 = ((2.0 * sqrt(((x_22 * x_22) + (y_13 * y_13)))) / z_12);
     if ((e_6 <= 80.0)) {
         return (((2.0 * exp(-(e_6))) * r_12) / ((MS_PI * z2_2) * z2_2));
     }
@@ -1116,8 +1117,8 @@ vec3 ms_exponential_sample_wm(vec3 w_in_4, vec2 alpha_43, vec2 u_17) {
             float _e73 = ms_stream_next(state_9);
             float prod = ((1.0 - _e70) * (1.0 - _e73));
             float _e77 = v0_;
-            float d_20 = ((_e77 * total) - e_7);
-            if ((d_20 < 0.0)) {
+            float d_19 = ((_e77 * total) - e_7);
+            if ((d_19 < 0.0)) {
                 float r_13 = (-0.5 * log(prod));
                 float _e85 = v0_;
                 float turn = (_e85 * inv_p);
@@ -1138,7 +1139,7 @@ vec3 ms_exponential_sample_wm(vec3 w_in_4, vec2 alpha_43, vec2 u_17) {
             } else {
                 float _e108 = ms_stream_next(state_9);
                 float r_14 = (-0.5 * log((prod * (1.0 - _e108))));
-                float one_plus = (2.0 * (d_20 * inv_g));
+                float one_plus = (2.0 * (d_19 * inv_g));
                 float _e118 = v0_;
                 float one_minus = ((2.0 * (1.0 - _e118)) * (total * inv_g));
                 x_9 = (r_14 * sqrt(max((one_minus * one_plus), 0.0)));
@@ -1174,15 +1175,14 @@ float ms_mixture_beta(float ln_beta, vec2 alpha_47) {
     return exp(clamp(ln_beta, (-80.0 - lo_4), (80.0 - hi_3)));
 }
 
-float ms_mixture_d_from_ln_profile(float ln_f, vec3 wm_16, vec2 alpha_54) {
-    float ln_z = log(wm_16.z);
-    return exp(((ln_f - log((alpha_54.x * alpha_54.y))) - (4.0 * ln_z)));
+float ms_mixture_ln_d(float ln_f, vec3 wm_16, vec2 alpha_54) {
+    return ((ln_f - log((alpha_54.x * alpha_54.y))) - (4.0 * log(wm_16.z)));
 }
 
 float ms_mixture_r2_(vec3 wm_17, vec2 alpha_55) {
-    float x_22 = (wm_17.x / alpha_55.x);
-    float y_13 = (wm_17.y / alpha_55.y);
-    return (((x_22 * x_22) + (y_13 * y_13)) / (wm_17.z * wm_17.z));
+    float x_23 = (wm_17.x / alpha_55.x);
+    float y_14 = (wm_17.y / alpha_55.y);
+    return (((x_23 * x_23) + (y_14 * y_14)) / (wm_17.z * wm_17.z));
 }
 
 float ms_ln_1p(float t_1) {
@@ -1223,20 +1223,20 @@ vec3 ms_weighted(vec3 fr_1, float k_8) {
     return mix((fr_1 * k_8), vec3(0.0), equal(fr_1, vec3(0.0)));
 }
 
-vec3 ms_conductor_lobe_normal(MsConductor c_7, vec3 wo_29, vec3 wi_29) {
+vec3 ms_conductor_lobe_normal(MsConductor c_7, vec3 wo_31, vec3 wi_31) {
     bool local_33 = false;
     bool local_34 = false;
     bool local_35 = false;
-    bool _e3 = ms_same_hemisphere(wo_29, wi_29);
+    bool _e3 = ms_same_hemisphere(wo_31, wi_31);
     if (!(!(_e3))) {
-        bool _e9 = ms_on_horizon(wo_29.z);
+        bool _e9 = ms_on_horizon(wo_31.z);
         local_33 = _e9;
     } else {
         local_33 = true;
     }
     bool _e11 = local_33;
     if (!(_e11)) {
-        bool _e16 = ms_on_horizon(wi_29.z);
+        bool _e16 = ms_on_horizon(wi_31.z);
         local_34 = _e16;
     } else {
         local_34 = true;
@@ -1252,14 +1252,14 @@ vec3 ms_conductor_lobe_normal(MsConductor c_7, vec3 wo_29, vec3 wi_29) {
     if (_e25) {
         return vec3(0.0);
     }
-    vec3 _e28 = ms_half_vector_reflection(wo_29, wi_29);
+    vec3 _e28 = ms_half_vector_reflection(wo_31, wi_31);
     return _e28;
 }
 
-bool ms_dielectric_smooth(MsDielectric d_2) {
+bool ms_dielectric_smooth(MsDielectric d_1) {
     bool local_37 = false;
-    if (!((d_2.eta == 1.0))) {
-        bool _e8 = ms_effectively_smooth(d_2.mf);
+    if (!((d_1.eta == 1.0))) {
+        bool _e8 = ms_effectively_smooth(d_1.mf);
         local_37 = _e8;
     } else {
         local_37 = true;
@@ -1268,14 +1268,14 @@ bool ms_dielectric_smooth(MsDielectric d_2) {
     return _e10;
 }
 
-vec4 ms_dielectric_half(MsDielectric d_4, vec3 wo_35, vec3 wi_34) {
+vec4 ms_dielectric_half(MsDielectric d_3, vec3 wo_37, vec3 wi_36) {
     bool local_38 = false;
-    vec3 wm_33 = vec3(0.0);
+    vec3 wm_40 = vec3(0.0);
     float etap_4 = 1.0;
     bool local_39 = false;
     vec4 none = vec4(0.0);
-    float co = wo_35.z;
-    float ci_1 = wi_34.z;
+    float co = wo_37.z;
+    float ci_1 = wi_36.z;
     bool _e7 = ms_on_horizon(co);
     if (!(_e7)) {
         bool _e11 = ms_on_horizon(ci_1);
@@ -1288,23 +1288,23 @@ vec4 ms_dielectric_half(MsDielectric d_4, vec3 wo_35, vec3 wi_34) {
         return none;
     }
     if (((co * ci_1) > 0.0)) {
-        vec3 _e20 = ms_half_vector_reflection(wo_35, wi_34);
-        wm_33 = _e20;
+        vec3 _e20 = ms_half_vector_reflection(wo_37, wi_36);
+        wm_40 = _e20;
     } else {
-        vec4 _e22 = ms_half_vector_refraction(wo_35, wi_34, d_4.eta);
-        wm_33 = _e22.xyz;
+        vec4 _e22 = ms_half_vector_refraction(wo_37, wi_36, d_3.eta);
+        wm_40 = _e22.xyz;
         etap_4 = _e22.w;
     }
-    vec3 _e25 = wm_33;
+    vec3 _e25 = wm_40;
     bool _e26 = ms_half_vector_ok(_e25);
     if (!(_e26)) {
         return none;
     }
-    vec3 _e28 = wm_33;
-    float _e29 = ms_dot(_e28, wi_34);
+    vec3 _e28 = wm_40;
+    float _e29 = ms_dot(_e28, wi_36);
     if (!(((_e29 * ci_1) < 0.0))) {
-        vec3 _e36 = wm_33;
-        float _e37 = ms_dot(_e36, wo_35);
+        vec3 _e36 = wm_40;
+        float _e37 = ms_dot(_e36, wo_37);
         local_39 = ((_e37 * co) < 0.0);
     } else {
         local_39 = true;
@@ -1313,46 +1313,46 @@ vec4 ms_dielectric_half(MsDielectric d_4, vec3 wo_35, vec3 wi_34) {
     if (_e42) {
         return none;
     }
-    vec3 _e43 = wm_33;
+    vec3 _e43 = wm_40;
     float _e44 = etap_4;
     return vec4(_e43, _e44);
 }
 
-MsBsdfSample ms_dielectric_sample_smooth(MsDielectric d_8, vec3 wo_39, float uc_1) {
+MsBsdfSample ms_dielectric_sample_smooth(MsDielectric d_7, vec3 wo_41, float uc_1) {
     float f_3 = 0.0;
-    float _e5 = ms_fresnel_dielectric(wo_39.z, d_8.eta);
+    float _e5 = ms_fresnel_dielectric(wo_41.z, d_7.eta);
     if ((uc_1 < _e5)) {
-        vec3 wi_49 = vec3(-(wo_39.x), -(wo_39.y), wo_39.z);
-        return MsBsdfSample(wi_49, _e5, vec3((_e5 / abs(wi_49.z))), 3u, 1.0);
+        vec3 wi_51 = vec3(-(wo_41.x), -(wo_41.y), wo_41.z);
+        return MsBsdfSample(wi_51, _e5, vec3((_e5 / abs(wi_51.z))), 3u, 1.0);
     }
     MsBsdfSample none_1 = MsBsdfSample(vec3(0.0), 0.0, vec3(0.0), 0u, 1.0);
-    vec4 _e33 = ms_refract(wo_39, vec3(0.0, 0.0, 1.0), d_8.eta);
+    vec4 _e33 = ms_refract(wo_41, vec3(0.0, 0.0, 1.0), d_7.eta);
     if ((_e33.w == 0.0)) {
         return none_1;
     }
-    vec3 wi_50 = _e33.xyz;
-    bool _e39 = ms_on_horizon(wi_50.z);
+    vec3 wi_52 = _e33.xyz;
+    bool _e39 = ms_on_horizon(wi_52.z);
     if (_e39) {
         return none_1;
     }
     float t_10 = (1.0 - _e5);
-    f_3 = (t_10 / abs(wi_50.z));
-    if ((d_8.transport == MS_TRANSPORT_RADIANCE)) {
+    f_3 = (t_10 / abs(wi_52.z));
+    if ((d_7.transport == MS_TRANSPORT_RADIANCE)) {
         float _e49 = f_3;
         f_3 = (_e49 / (_e33.w * _e33.w));
     }
     float _e54 = f_3;
-    return MsBsdfSample(wi_50, t_10, vec3(_e54), 7u, _e33.w);
+    return MsBsdfSample(wi_52, t_10, vec3(_e54), 7u, _e33.w);
 }
 
-MsLutTap ms_lut_tap(float x_12, uint n_8) {
-    float t_11 = clamp(((x_12 * float(n_8)) - 0.5), 0.0, float((n_8 - 1u)));
+MsLutTap ms_lut_tap(float x_13, uint n_8) {
+    float t_11 = clamp(((x_13 * float(n_8)) - 0.5), 0.0, float((n_8 - 1u)));
     uint i_4 = min(uint(floor(t_11)), (n_8 - 2u));
     return MsLutTap(i_4, (t_11 - float(i_4)));
 }
 
-MsLutTap ms_lut_tap_edges(float x_13, uint n_9) {
-    float t_12 = clamp((x_13 * float((n_9 - 1u))), 0.0, float((n_9 - 1u)));
+MsLutTap ms_lut_tap_edges(float x_14, uint n_9) {
+    float t_12 = clamp((x_14 * float((n_9 - 1u))), 0.0, float((n_9 - 1u)));
     uint i_5 = min(uint(floor(t_12)), (n_9 - 2u));
     return MsLutTap(i_5, (t_12 - float(i_5)));
 }
@@ -1371,8 +1371,8 @@ float ms_lut_bilerp(MsLutTap r, MsLutTap m_4, float v00_, float v10_, float v01_
     return (((((gr * gm) * v00_) + ((r.f * gm) * v10_)) + ((gr * m_4.f) * v01_)) + ((r.f * m_4.f) * v11_));
 }
 
-float ms_lut_roughness_coord(vec2 alpha_92, float alpha_max) {
-    return sqrt((sqrt((alpha_92.x * alpha_92.y)) / alpha_max));
+float ms_lut_roughness_coord(vec2 alpha_105, float alpha_max) {
+    return sqrt((sqrt((alpha_105.x * alpha_105.y)) / alpha_max));
 }
 
 vec3 ms_kulla_conty_f_ms(vec3 f_avg, float e_avg) {
@@ -1395,20 +1395,20 @@ float ms_kulla_conty_p_ms(float e_o_4) {
     return clamp((1.0 - e_o_4), 0.0, 1.0);
 }
 
-float ms_cosine_pdf_same_side(vec3 wo_43, vec3 wi_40) {
-    if (!(((wo_43.z * wi_40.z) > 0.0))) {
+float ms_cosine_pdf_same_side(vec3 wo_45, vec3 wi_42) {
+    if (!(((wo_45.z * wi_42.z) > 0.0))) {
         return 0.0;
     }
-    return (abs(wi_40.z) / MS_PI);
+    return (abs(wi_42.z) / MS_PI);
 }
 
-vec3 ms_cosine_hemisphere(vec2 u_33) {
-    float r_15 = sqrt(u_33.x);
-    vec2 _e4 = ms_cos_sin_turn(u_33.y);
-    return vec3((r_15 * _e4.x), (r_15 * _e4.y), sqrt(max((1.0 - u_33.x), 0.0)));
+vec3 ms_cosine_hemisphere(vec2 u_35) {
+    float r_15 = sqrt(u_35.x);
+    vec2 _e4 = ms_cos_sin_turn(u_35.y);
+    return vec3((r_15 * _e4.x), (r_15 * _e4.y), sqrt(max((1.0 - u_35.x), 0.0)));
 }
 
-MsBsdfSample ms_kulla_conty_sample_f(MsBsdfSample s_6, vec3 wo_46, float e_o_7, float e_i_2, float e_avg_3, vec3 f_ms_1) {
+MsBsdfSample ms_kulla_conty_sample_f(MsBsdfSample s_6, vec3 wo_48, float e_o_7, float e_i_2, float e_avg_3, vec3 f_ms_1) {
     bool local_45 = false;
     bool local_46 = false;
     if (!(((s_6.flags & MS_SAMPLE_VALID) == 0u))) {
@@ -1418,7 +1418,7 @@ MsBsdfSample ms_kulla_conty_sample_f(MsBsdfSample s_6, vec3 wo_46, float e_o_7, 
     }
     bool _e20 = local_45;
     if (!(_e20)) {
-        local_46 = !(((wo_46.z * s_6.wi.z) > 0.0));
+        local_46 = !(((wo_48.z * s_6.wi.z) > 0.0));
     } else {
         local_46 = true;
     }
@@ -1443,7 +1443,7 @@ float ms_lut_trilerp(MsLutTap e, MsLutTap r_1, MsLutTap m_5, vec4 lo_2, vec4 hi_
     uint b_6 = 0u;
     vec2 we = vec2((1.0 - e.f), e.f);
     vec2 wr = vec2((1.0 - r_1.f), r_1.f);
-    vec2 wm_35 = vec2((1.0 - m_5.f), m_5.f);
+    vec2 wm_42 = vec2((1.0 - m_5.f), m_5.f);
     bool loop_init_1 = true;
     while(true) {
         if (!loop_init_1) {
@@ -1465,7 +1465,7 @@ float ms_lut_trilerp(MsLutTap e, MsLutTap r_1, MsLutTap m_5, vec4 lo_2, vec4 hi_
             uint _e40 = b_6;
             uint _e44 = b_6;
             uint _e51 = b_6;
-            s_7 = (_e39 + (((we[(_e40 & 1u)] * wr[((_e44 >> 1u) & 1u)]) * wm_35[(_e51 >> 2u)]) * v_12));
+            s_7 = (_e39 + (((we[(_e40 & 1u)] * wr[((_e44 >> 1u) & 1u)]) * wm_42[(_e51 >> 2u)]) * v_12));
         }
     }
     float _e61 = s_7;
@@ -1516,13 +1516,13 @@ vec2 ms_dielectric_kulla_conty_k(float eta_5, float f_avg_1, vec2 e_avg_4) {
     return _e34;
 }
 
-float ms_dielectric_kulla_conty_lobe(MsDielectric d_10, vec3 wo_48, vec3 wi_43, float e_o_9, float e_i_3, float e_avg_i, float k_o) {
+float ms_dielectric_kulla_conty_lobe(MsDielectric d_9, vec3 wo_50, vec3 wi_45, float e_o_9, float e_i_3, float e_avg_i, float k_o) {
     bool local_48 = false;
     bool local_49 = false;
     float f_4 = 0.0;
     bool local_50 = false;
-    if ((abs(wo_48.z) > 0.0)) {
-        local_48 = (abs(wi_43.z) > 0.0);
+    if ((abs(wo_50.z) > 0.0)) {
+        local_48 = (abs(wi_45.z) > 0.0);
     } else {
         local_48 = false;
     }
@@ -1531,7 +1531,7 @@ float ms_dielectric_kulla_conty_lobe(MsDielectric d_10, vec3 wo_48, vec3 wi_43, 
         return 0.0;
     }
     float lost = (1.0 - e_o_9);
-    bool crossed = ((wi_43.z < 0.0) != (wo_48.z < 0.0));
+    bool crossed = ((wi_45.z < 0.0) != (wo_50.z < 0.0));
     float share = (crossed ? k_o : (1.0 - k_o));
     float den_4 = (MS_PI * (1.0 - e_avg_i));
     if ((den_4 > 0.0)) {
@@ -1545,13 +1545,13 @@ float ms_dielectric_kulla_conty_lobe(MsDielectric d_10, vec3 wo_48, vec3 wi_43, 
     }
     f_4 = (((share * lost) * max((1.0 - e_i_3), 0.0)) / den_4);
     if (crossed) {
-        local_50 = (d_10.transport == MS_TRANSPORT_RADIANCE);
+        local_50 = (d_9.transport == MS_TRANSPORT_RADIANCE);
     } else {
         local_50 = false;
     }
     bool _e61 = local_50;
     if (_e61) {
-        float etap_6 = ((wo_48.z > 0.0) ? d_10.eta : (1.0 / d_10.eta));
+        float etap_6 = ((wo_50.z > 0.0) ? d_9.eta : (1.0 / d_9.eta));
         float _e70 = f_4;
         f_4 = (_e70 / (etap_6 * etap_6));
     }
@@ -1559,13 +1559,13 @@ float ms_dielectric_kulla_conty_lobe(MsDielectric d_10, vec3 wo_48, vec3 wi_43, 
     return _e73;
 }
 
-float ms_dielectric_kulla_conty_lobe_pdf(vec3 wo_51, vec3 wi_46, float k_o_2) {
-    bool crossed_1 = ((wi_46.z < 0.0) != (wo_51.z < 0.0));
+float ms_dielectric_kulla_conty_lobe_pdf(vec3 wo_53, vec3 wi_48, float k_o_2) {
+    bool crossed_1 = ((wi_48.z < 0.0) != (wo_53.z < 0.0));
     float side = (crossed_1 ? k_o_2 : (1.0 - k_o_2));
-    return ((side * abs(wi_46.z)) / MS_PI);
+    return ((side * abs(wi_48.z)) / MS_PI);
 }
 
-MsBsdfSample ms_dielectric_kulla_conty_sample_f(MsBsdfSample s_9, MsDielectric d_15, vec3 wo_54, float e_o_14, float e_i_5, float e_avg_i_2, float k_o_5) {
+MsBsdfSample ms_dielectric_kulla_conty_sample_f(MsBsdfSample s_9, MsDielectric d_14, vec3 wo_56, float e_o_14, float e_i_5, float e_avg_i_2, float k_o_5) {
     bool local_54 = false;
     if (!(((s_9.flags & MS_SAMPLE_VALID) == 0u))) {
         local_54 = ((s_9.flags & MS_SAMPLE_SPECULAR) != 0u);
@@ -1576,7 +1576,7 @@ MsBsdfSample ms_dielectric_kulla_conty_sample_f(MsBsdfSample s_9, MsDielectric d
     if (_e21) {
         return s_9;
     }
-    float _e23 = ms_dielectric_kulla_conty_lobe(d_15, wo_54, s_9.wi, e_o_14, e_i_5, e_avg_i_2, k_o_5);
+    float _e23 = ms_dielectric_kulla_conty_lobe(d_14, wo_56, s_9.wi, e_o_14, e_i_5, e_avg_i_2, k_o_5);
     return MsBsdfSample(s_9.wi, s_9.pdf, (s_9.f + vec3(_e23)), s_9.flags, s_9.eta);
 }
 
@@ -1622,18 +1622,18 @@ void main() {
     vec4 _e12 = _group_0_binding_0_cs[(_e2 * MS_K_IN)];
     vec2 a_20 = _e12.xy;
     vec4 _e20 = _group_0_binding_0_cs[((_e2 * MS_K_IN) + 1u)];
-    vec3 wo_56 = _e20.xyz;
+    vec3 wo_58 = _e20.xyz;
     vec4 _e28 = _group_0_binding_0_cs[((_e2 * MS_K_IN) + 2u)];
-    vec3 wm_36 = _e28.xyz;
-    float _e34 = ms_ggx_d(wm_36, a_20);
-    float _e35 = ms_ggx_lambda(wo_56, a_20);
-    float _e36 = ms_ggx_g1_(wo_56, a_20);
-    float _e37 = ms_ggx_g2_(wo_56, wm_36, a_20);
+    vec3 wm_43 = _e28.xyz;
+    float _e34 = ms_ggx_d(wm_43, a_20);
+    float _e35 = ms_ggx_lambda(wo_58, a_20);
+    float _e36 = ms_ggx_g1_(wo_58, a_20);
+    float _e37 = ms_ggx_g2_(wo_58, wm_43, a_20);
     _group_0_binding_1_cs[(_e2 * MS_K_OUT)] = vec4(_e34, _e35, _e36, _e37);
-    float _e45 = ms_ggx_g2_separable(wo_56, wm_36, a_20);
-    float _e46 = ms_ggx_pdf(wo_56, wm_36, a_20);
-    float _e47 = ms_ggx_pdf_dcos(wm_36, a_20);
-    float _e48 = ms_ggx_pdf_bounded(wo_56, wm_36, a_20);
+    float _e45 = ms_ggx_g2_separable(wo_58, wm_43, a_20);
+    float _e46 = ms_ggx_pdf(wo_58, wm_43, a_20);
+    float _e47 = ms_ggx_pdf_dcos(wm_43, a_20);
+    float _e48 = ms_ggx_pdf_bounded(wo_58, wm_43, a_20);
     _group_0_binding_1_cs[((_e2 * MS_K_OUT) + 1u)] = vec4(_e45, _e46, _e47, _e48);
     return;
 }
