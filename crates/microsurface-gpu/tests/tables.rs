@@ -23,6 +23,11 @@ fn add_shape_is_total_over_shapes_and_kinds() {
         Some(1e6),
         Some(1e6 * (1.0 + 1e-15)),
         Some(1e300),
+        Some(1e-3),
+        Some(0.1),
+        Some(0.999),
+        Some(1.001),
+        Some(100.0),
     ];
     let kinds = [
         NdfKind::Ggx,
@@ -49,7 +54,7 @@ fn add_shape_is_total_over_shapes_and_kinds() {
                             let g = shape.expect("a shape");
                             assert!(g > 1.5 && g <= 1e6, "{g}");
                         }
-                        NdfKind::Ei | NdfKind::Erfc | NdfKind::K0 => {}
+                        NdfKind::Ei | NdfKind::Erfc | NdfKind::K0 | NdfKind::BesselK => {}
                         _ => panic!("{kind:?} {shape:?} has no GPU table"),
                     }
                     let g = shape.unwrap_or(0.0);
