@@ -45,11 +45,11 @@
 //! | `ms_beckmann_d`, `ms_beckmann_lambda`, `ms_beckmann_g1`, `ms_beckmann_g2`, `ms_beckmann_g2_separable` | `Microfacet::<f32, Beckmann>` `d`, `lambda`, `g1`, `g2`, `g2_separable` |
 //! | `ms_beckmann_pdf(w, wm, α)`, `ms_beckmann_sample(w, α, u)`; `ms_beckmann_sample_dcos`, `ms_beckmann_pdf_dcos` | `pdf`, `sample` (the same warp of u: slope-space inversion); `sample_dcos`, `pdf_dcos` |
 //! | `ms_double_ggx_d`, `_lambda`, `_g1`, `_g2`, `_g2_separable`, `_pdf`, `_sample`, `_pdf_dcos`, `_sample_dcos`; `ms_exponential_` the same | `Microfacet::<f32, DoubleGgx>`, `Microfacet::<f32, Exponential>`: `d`, `lambda`, `g1`, `g2`, `g2_separable`, `pdf`, `sample`, `pdf_dcos`, `sample_dcos` (rejection samplers over the stream of u, as the Rust ones: the same candidates, so mostly the same normal; χ²-consistent) |
-//! | `ms_student_t_d(wm, α, table)`, `_lambda(w, α, table)`, `_g1`, `_g2`, `_g2_separable`, `_pdf`, `_pdf_dcos`, `_sample_dcos` (the Rust radial-quantile warp), `_sample` (the posterior); `ms_ei_`, `ms_erfc_`, `ms_k0_` the same (their D·cos by the prior, then Beckmann's D·cos) | `Microfacet::<f32, StudentT>` (γ), `Ei`, `Erfc`, `K0` (the family's fast path: Λ from the shape's fitted table, here rounded to f32 in the material's table; visible normals by the mixing variable's posterior, then Beckmann's stream sampler: the same distribution, other uniforms) |
+//! | `ms_student_t_d(wm, α, table)`, `_lambda(w, α, table)`, `_g1`, `_g2`, `_g2_separable`, `_pdf`, `_pdf_dcos`, `_sample_dcos` (the Rust radial-quantile warp), `_sample` (the posterior); `ms_ei_`, `ms_erfc_`, `ms_k0_`, `ms_bessel_k_` the same (their D·cos by the prior, then Beckmann's D·cos; Bessel-K's `d` takes the table too) | `Microfacet::<f32, StudentT>` (γ), `Ei`, `Erfc`, `K0`, `BesselK` (a) (the family's fast path: Λ from the shape's fitted table, here rounded to f32 in the material's table; visible normals by the mixing variable's posterior, then Beckmann's stream sampler: the same distribution, other uniforms) |
 //! | [`Tables`] + `Tables::add_shape(kind, shape)` → the `table` row of `MsMicrofacet` | `fast::fitted::FittedShape` (built once per shape) |
 //! | `ms_stream_new(u)`, `ms_stream_next(&state)`, `ms_stream_next_u64`; `ms_zig_exp1(w, &state)`, `ms_zig_half_normal`, `ms_zig_normal`; `ms_ln_gamma_variate(k, &state)` | `distribution::UniformStream` (SplitMix64 seeded by u's bits, bit for bit); `fast::ziggurat::{exp1, half_normal, normal}`; Marsaglia & Tsang's Gamma variates |
 //! | `ms_fresnel_dielectric`, `ms_fresnel_conductor`, `ms_fresnel_schlick`, `ms_fresnel_f82_tint`; `MsFresnel` + `ms_fresnel_eval` | `bsdf::fresnel::{dielectric, conductor, schlick, f82_tint}`; the `Fresnel` terms |
-//! | `MsMicrofacet(ndf, α, table)` (`MS_NDF_GGX`, `_BECKMANN`, `_DOUBLE_GGX`, `_EXPONENTIAL`, `_STUDENT_T`, `_EI`, `_ERFC`, `_K0`; `table` the shape table's row, 0 for the first four) + `ms_d`, `ms_lambda`, `ms_g1`, `ms_g2`, `ms_g2_separable`, `ms_pdf`, `ms_pdf_dcos`, `ms_sample`, `ms_sample_dcos` | `MicrofacetDistribution` over `AnyMicrofacet` (GTR, Bessel-K and the generalised exponential not yet on the GPU) |
+//! | `MsMicrofacet(ndf, α, table)` (`MS_NDF_GGX`, `_BECKMANN`, `_DOUBLE_GGX`, `_EXPONENTIAL`, `_STUDENT_T`, `_EI`, `_ERFC`, `_K0`, `_BESSEL_K`; `table` the shape table's row, 0 for the first four) + `ms_d`, `ms_lambda`, `ms_g1`, `ms_g2`, `ms_g2_separable`, `ms_pdf`, `ms_pdf_dcos`, `ms_sample`, `ms_sample_dcos` | `MicrofacetDistribution` over `AnyMicrofacet` (GTR and the generalised exponential not yet on the GPU) |
 //! | `MsConductor` + `ms_conductor_eval`, `ms_conductor_pdf`, `ms_conductor_eval_pdf`, `ms_conductor_sample` → `MsBsdfSample` | `bsdf::RoughConductor` (`Masking::Correlated` or `Separable`) |
 //! | `MsDielectric` + `ms_dielectric_eval`, `ms_dielectric_pdf`, `ms_dielectric_sample` → `MsBsdfSample` | `bsdf::RoughDielectric` (`Masking::Correlated` or `Separable`; both transports) |
 //! | `MsLutTap` + `ms_lut_tap(x, n)` (texel centres), `ms_lut_tap_edges(x, n)` (edge-aligned nodes), `ms_lut_index`, `ms_lut_lerp`, `ms_lut_bilerp`, `ms_lut_roughness_coord(α, α_max)` | `scattering::lut::Lut::lookup` (`Nodes::Centres`, clamp-to-edge; `Nodes::Edges`) |
@@ -143,8 +143,9 @@
 //! NVIDIA H200, whose compiler fuses multiply-adds and divides to Vulkan's 2.5 ulp.
 //! BENCHMARKS.md has the measured maxima on both.
 //!
-//! `tests/family.rs` also checks Student-T (γ = 1.8, 2.5, 10, 40), Ei, Erfc and K0 through
-//! `MsMicrofacet` over their shape tables: D, Λ, G1, G2 and the pdfs within 0.61 of bounds
+//! `tests/family.rs` also checks Student-T (γ = 1.8, 2.5, 10, 40), Ei, Erfc, K0 and Bessel-K
+//! (a = 0.4, 2.5) through `MsMicrofacet` over their shape tables: D, Λ, G1, G2 and the pdfs
+//! within 0.61 of bounds
 //! derived per element from the Rust f64 functions' condition numbers (the f32 rounding of
 //! the tables and Vulkan's exp/log allowances included); Student-T's D·cos warp within 0.07
 //! of its bound; the mixtures' D·cos and visible samplers by the two-sample χ².
@@ -245,8 +246,8 @@ const BESSEL_PROFILE_K1: i32 = 8;
 
 /// The contents of the library's buffer `ms_tables` for a shader whose materials have shape
 /// tables: the library's [`TABLES`] followed by each shape's own (the fitted Λ₁ and the
-/// posterior's parameters of a Student-T γ, or of Ei, Erfc, K0; the layout is in
-/// `wgsl/mixture.wgsl`). A shape's table is
+/// posterior's parameters of a Student-T γ, a Bessel-K a (with its profile's table), or of
+/// Ei, Erfc, K0; the layout is in `wgsl/mixture.wgsl` and `wgsl/bessel_k.wgsl`). A shape's table is
 /// built once (the Rust fast path's `FittedShape`: milliseconds) and serves every roughness;
 /// its row goes into `MsMicrofacet`'s `table`.
 ///
@@ -283,9 +284,9 @@ impl Tables {
     }
 
     /// Appends the shape table of `kind` at `shape` and returns its first row (the `table`
-    /// of an `MsMicrofacet` of that NDF): Student-T (γ in (3/2, 1e6]), Ei, Erfc and K0
-    /// (shape `None`; one table serves every material of the NDF). `ParamError` for other
-    /// kinds and shapes out of range.
+    /// of an `MsMicrofacet` of that NDF): Student-T (γ in (3/2, 1e6]), Bessel-K (its a), Ei,
+    /// Erfc and K0 (shape `None`; one table serves every material of the NDF). `ParamError`
+    /// for other kinds and shapes out of range.
     pub fn add_shape(
         &mut self,
         kind: microsurface::NdfKind,
