@@ -846,13 +846,66 @@ fn ms_stream_next(state: ptr<function, vec2<u32>>) -> f32 {
     return f32(z.y >> 8u) * (1.0 / 16777216.0);
 }
 
+// The next uniform of the stream as the Rust f64 draw (the top 53 bits over 2^53, the Rust
+// next_uniform::<f64>()) rounded to f32, below 1.
+fn ms_stream_next_wide(state: ptr<function, vec2<u32>>) -> f32 {
+    let z = ms_stream_next_u64(state);
+    let v = f32(z.y) * 2.3283064365386963e-10 + f32(z.x >> 11u) * 1.1102230246251565e-16;
+    return min(v, 0.99999994);
+}
+
+// A source of uniforms for a rejection sampler: the Rust samplers' closures, on the GPU. `first`
+// (u itself) is returned first where `used` < 2, then the stream of u, as f32 draws (the top 24
+// bits: the Rust f32 paths' `next_uniform::<f32>`) or, where `wide` is 1, as the f64 draws the
+// Rust mixtures' samplers take, rounded to f32 (ms_stream_next_wide).
+struct MsSource {
+    state: vec2<u32>,
+    first: vec2<f32>,
+    used: u32,
+    wide: u32,
+}
+
+// The stream of u alone, f32 draws (Double GGX's and the Exponential NDF's samplers).
+fn ms_source_stream(u: vec2<f32>) -> MsSource {
+    return MsSource(ms_stream_new(u), u, 2u, 0u);
+}
+
+// The stream of u alone, its f64 draws rounded to f32 (the mixtures' D·cos sampler, whose
+// warp takes u itself).
+fn ms_source_stream_wide(u: vec2<f32>) -> MsSource {
+    return MsSource(ms_stream_new(u), u, 2u, 1u);
+}
+
+// u's two uniforms, then the stream's f64 draws (the mixtures' posterior sampler).
+fn ms_source_after_u(u: vec2<f32>) -> MsSource {
+    return MsSource(ms_stream_new(u), u, 0u, 1u);
+}
+
+fn ms_source_next(src: ptr<function, MsSource>) -> f32 {
+    if (*src).used < 2u {
+        let v = select((*src).first.y, (*src).first.x, (*src).used == 0u);
+        (*src).used = (*src).used + 1u;
+        return v;
+    }
+    // (Through a local: naga's SPIR-V writer does not take a pointer to the member.)
+    var state = (*src).state;
+    var v: f32;
+    if (*src).wide == 1u {
+        v = ms_stream_next_wide(&state);
+    } else {
+        v = ms_stream_next(&state);
+    }
+    (*src).state = state;
+    return v;
+}
+
 // A variate of a ziggurat's density from w ∈ [0, 1) (the Rust fast::ziggurat::sample over
 // its generated layers, the rows at `at` of tables.wgsl, in f32): layer i = ⌊256w⌋, x =
 // (256w − i)x_i, kept when below x_{i+1}; else the tail (layer 0) or the wedge's height test
 // against f(x) (e^{−x}, or e^{−x²/2} where `normal`), with further uniforms from the
-// stream. The tail beyond r = x₁: r + Exp(1) for e^{−x}; Marsaglia's 1964 method for the
+// source. The tail beyond r = x₁: r + Exp(1) for e^{−x}; Marsaglia's 1964 method for the
 // normal (r + a, a ~ Exp(r), kept when 2b > a², b ~ Exp(1)).
-fn ms_zig_sample(at: u32, normal: bool, w: f32, state: ptr<function, vec2<u32>>) -> f32 {
+fn ms_zig_sample(at: u32, normal: bool, w: f32, src: ptr<function, MsSource>) -> f32 {
     var y = w * 256.0;
     var k = u32(max(y, 0.0));
     var i = k & 255u;
@@ -870,18 +923,18 @@ fn ms_zig_sample(at: u32, normal: bool, w: f32, state: ptr<function, vec2<u32>>)
         if i == 0u {
             let r = layer.z;
             if !normal {
-                return r - log(1.0 - ms_stream_next(state));
+                return r - log(1.0 - ms_source_next(src));
             }
             for (var j = 0; j < 64; j++) {
-                let a = -log(1.0 - ms_stream_next(state)) / r;
-                let b = -log(1.0 - ms_stream_next(state));
+                let a = -log(1.0 - ms_source_next(src)) / r;
+                let b = -log(1.0 - ms_source_next(src));
                 if 2.0 * b > a * a {
                     return r + a;
                 }
             }
             return r;
         }
-        let h = layer.y + ms_stream_next(state) * (layer.w - layer.y);
+        let h = layer.y + ms_source_next(src) * (layer.w - layer.y);
         var f = exp(-x);
         if normal {
             f = exp(-0.5 * x * x);
@@ -889,7 +942,7 @@ fn ms_zig_sample(at: u32, normal: bool, w: f32, state: ptr<function, vec2<u32>>)
         if h < f {
             return x;
         }
-        y = ms_stream_next(state) * 256.0;
+        y = ms_source_next(src) * 256.0;
         k = u32(y);
         i = k & 255u;
         layer = ms_tables[at + i];
@@ -902,13 +955,13 @@ fn ms_zig_sample(at: u32, normal: bool, w: f32, state: ptr<function, vec2<u32>>)
 }
 
 // An Exp(1) variate from w ∈ [0, 1) (the Rust fast::ziggurat::exp1; Marsaglia & Tsang 2000).
-fn ms_zig_exp1(w: f32, state: ptr<function, vec2<u32>>) -> f32 {
-    return ms_zig_sample(MS_ZIG_EXP_AT, false, w, state);
+fn ms_zig_exp1(w: f32, src: ptr<function, MsSource>) -> f32 {
+    return ms_zig_sample(MS_ZIG_EXP_AT, false, w, src);
 }
 
 // A half-normal variate |Z| from w ∈ [0, 1) (the Rust fast::ziggurat::half_normal).
-fn ms_zig_half_normal(w: f32, state: ptr<function, vec2<u32>>) -> f32 {
-    return ms_zig_sample(MS_ZIG_NORMAL_AT, true, w, state);
+fn ms_zig_half_normal(w: f32, src: ptr<function, MsSource>) -> f32 {
+    return ms_zig_sample(MS_ZIG_NORMAL_AT, true, w, src);
 }
 
 // microsurface WGSL library: Beckmann, anisotropic (beckmann.wgsl).
@@ -1420,8 +1473,8 @@ fn ms_double_ggx_pdf_dcos(wm: vec3<f32>, alpha: vec2<f32>) -> f32 {
 // f32's range; t = 0 has probability 2^−24 and would put the normal on the horizon), then
 // GGX's D·cos normal at α/√t driven by u.
 fn ms_double_ggx_sample_dcos(alpha: vec2<f32>, u: vec2<f32>) -> MsSample {
-    var state = ms_stream_new(u);
-    let t = max(ms_zig_exp1(ms_stream_next(&state), &state), 1e-36);
+    var src = ms_source_stream(u);
+    let t = max(ms_zig_exp1(ms_source_next(&src), &src), 1e-36);
     let cs = ms_cos_sin_turn(u.y);
     let r = sqrt(u.x);
     let wm = ms_unit_normal(vec3<f32>(alpha.x * r * cs.x, alpha.y * r * cs.y,
@@ -1455,22 +1508,22 @@ fn ms_double_ggx_sample_wm(w_in: vec3<f32>, alpha: vec2<f32>, u: vec2<f32>) -> v
     // (Capped: at grazing w or normal incidence a share is 0 and its reciprocal infinite.)
     let inv_p = min((e + g) / e, 3.4028235e38);
     let inv_q = min((e + g) / g, 3.4028235e38);
-    var state = ms_stream_new(u);
+    var src = ms_source_stream(u);
     var s = 1.0;
     var len = 1.0;
     for (var n = 0; n < 64; n++) {
-        let v = ms_stream_next(&state);
+        let v = ms_source_next(&src);
         var t: f32;
         if v < p_exp {
-            t = ms_zig_exp1(v * inv_p, &state);
+            t = ms_zig_exp1(v * inv_p, &src);
         } else {
-            let z = ms_zig_half_normal((v - p_exp) * inv_q, &state);
+            let z = ms_zig_half_normal((v - p_exp) * inv_q, &src);
             t = 0.5 * z * z;
         }
         t = max(t, 1e-36);
         s = sqrt(t);
         len = sqrt(c * c * t + h * h);
-        if ms_stream_next(&state) * (e * s + h) <= c * s + len {
+        if ms_source_next(&src) * (e * s + h) <= c * s + len {
             break;
         }
     }
@@ -1634,8 +1687,8 @@ fn ms_exponential_pdf_dcos(wm: vec3<f32>, alpha: vec2<f32>) -> f32 {
 // u₀)) at unit roughness, E ~ Exp(1) from the stream of u, azimuth 2πu₁; m ∝ (αx r cos φ,
 // αy r sin φ, 1), or divided by r past r = 1 (the Rust normal_from_polar).
 fn ms_exponential_sample_dcos(alpha: vec2<f32>, u: vec2<f32>) -> MsSample {
-    var state = ms_stream_new(u);
-    let e = ms_zig_exp1(ms_stream_next(&state), &state);
+    var src = ms_source_stream(u);
+    let e = ms_zig_exp1(ms_source_next(&src), &src);
     let r = 0.5 * (e - ms_bk_ln_1m(u.x));
     let cs = ms_cos_sin_turn(u.y);
     var v: vec3<f32>;
@@ -1797,38 +1850,39 @@ fn ms_shape_lambda(table: u32, w: vec3<f32>, alpha: vec2<f32>) -> f32 {
 
 // A standard normal variate from w ∈ [0, 1) (the Rust fast::ziggurat::normal): the lower half
 // picks the sign, the rest drives the half-normal ziggurat.
-fn ms_zig_normal(w: f32, state: ptr<function, vec2<u32>>) -> f32 {
+fn ms_zig_normal(w: f32, src: ptr<function, MsSource>) -> f32 {
     if w < 0.5 {
-        return -ms_zig_half_normal(2.0 * w, state);
+        return -ms_zig_half_normal(2.0 * w, src);
     }
-    return ms_zig_half_normal(2.0 * w - 1.0, state);
+    return ms_zig_half_normal(2.0 * w - 1.0, src);
 }
 
-// A uniform of the stream in (0, 1): 0 reads as 2^−25 (ln 0 would send a variate to ±∞).
-fn ms_stream_next_positive(state: ptr<function, vec2<u32>>) -> f32 {
-    return max(ms_stream_next(state), 2.9802322e-8);
+// A uniform of the source in (0, 1): 0 reads as 2^−53, as in Rust (ln 0 would send a variate
+// to ±∞).
+fn ms_source_next_positive(src: ptr<function, MsSource>) -> f32 {
+    return max(ms_source_next(src), 1.1102230246251565e-16);
 }
 
 // ln of a Gamma(k, 1) variate, k > 0 (Marsaglia & Tsang 2000, as the Rust ln_gamma_variate:
 // acceptance ≥ 0.95 for k ≥ 1; below, Gamma(k + 1) U^{1/k} in logarithms). NaN after 64
 // rejections (probability below 1e-80).
-fn ms_ln_gamma_variate(k_in: f32, state: ptr<function, vec2<u32>>) -> f32 {
+fn ms_ln_gamma_variate(k_in: f32, src: ptr<function, MsSource>) -> f32 {
     var k = k_in;
     var boost = 0.0;
     if k < 1.0 {
-        boost = log(ms_stream_next_positive(state)) / k;
+        boost = log(ms_source_next_positive(src)) / k;
         k = k + 1.0;
     }
     let d = k - 1.0 / 3.0;
     let c = 1.0 / sqrt(9.0 * d);
     for (var n = 0; n < 64; n++) {
-        let x = ms_zig_normal(ms_stream_next(state), state);
+        let x = ms_zig_normal(ms_source_next(src), src);
         var v = 1.0 + c * x;
         if v <= 0.0 {
             continue;
         }
         v = v * v * v;
-        if log(ms_stream_next_positive(state)) < 0.5 * x * x + d - d * v + d * log(v) {
+        if log(ms_source_next_positive(src)) < 0.5 * x * x + d - d * v + d * log(v) {
             return log(d) + log(v) + boost;
         }
     }
@@ -1839,18 +1893,25 @@ fn ms_ln_gamma_variate(k_in: f32, state: ptr<function, vec2<u32>>) -> f32 {
 // stream (the Rust fast::beckmann::sample_visible_above): in v's slope frame (a = v.z/h) the
 // visible slope X has density ∝ (X + a)e^{−X²} on X > −a, drawn from the envelope X e^{−X²}
 // on X ≥ 0 (mass ½: X = √(−ln U)) plus a e^{−X²} on the line (mass a√π: X = ±Z/√2),
-// kept with probability (X + a)/a where X < 0 (acceptance ≥ 0.75); Y is N(0, ½). The
-// normal faces v (ms_facing where rounding would leave it behind).
+// kept with probability (X + a)/a where X < 0 (acceptance ≥ 0.75); Y is N(0, ½). Returns
+// (m, 1), or (m, 0) where m as rounded lies on or below the horizon or faces away from v.
 fn ms_beckmann_sample_stream_above(v: vec3<f32>, alpha: vec2<f32>,
-    state: ptr<function, vec2<u32>>) -> vec3<f32> {
+    src: ptr<function, MsSource>) -> vec4<f32> {
     let sx = alpha.x * v.x;
     let sy = alpha.y * v.y;
-    let h = sqrt(sx * sx + sy * sy);
+    // |(sx, sy)| without squaring them (the posterior's β α reaches e^80).
+    let big = max(abs(sx), abs(sy));
+    var h = 0.0;
+    if big > 0.0 {
+        let qx = sx / big;
+        let qy = sy / big;
+        h = big * sqrt(qx * qx + qy * qy);
+    }
     var cp = 1.0;
     var sp = 0.0;
     var x = 0.0;
     if h == 0.0 {
-        x = ms_zig_normal(ms_stream_next(state), state) * 0.70710678118654752;
+        x = ms_zig_normal(ms_source_next(src), src) * 0.70710678118654752;
     } else {
         cp = sx / h;
         sp = sy / h;
@@ -1858,40 +1919,44 @@ fn ms_beckmann_sample_stream_above(v: vec3<f32>, alpha: vec2<f32>,
         let p_ray = 0.5 / (0.5 + a * MS_SQRT_PI);
         x = bitcast<f32>(0x7fc00000u);
         for (var n = 0; n < 64; n++) {
-            let w = ms_stream_next(state);
+            let w = ms_source_next(src);
             if w < p_ray {
-                x = sqrt(-log(ms_stream_next_positive(state)));
+                x = sqrt(-log(ms_source_next_positive(src)));
                 break;
             }
-            let c = ms_zig_normal((w - p_ray) / (1.0 - p_ray), state) * 0.70710678118654752;
-            if c >= 0.0 || (c > -a && ms_stream_next(state) * a < c + a) {
+            let c = ms_zig_normal((w - p_ray) / (1.0 - p_ray), src) * 0.70710678118654752;
+            if c >= 0.0 || (c > -a && ms_source_next(src) * a < c + a) {
                 x = c;
                 break;
             }
         }
     }
-    let y = ms_zig_normal(ms_stream_next(state), state) * 0.70710678118654752;
+    let y = ms_zig_normal(ms_source_next(src), src) * 0.70710678118654752;
     let p = alpha.x * (cp * x - sp * y);
     let q = alpha.y * (sp * x + cp * y);
-    return ms_facing(ms_unit_normal(vec3<f32>(p, q, 1.0)), v);
+    let m = ms_unit_normal(vec3<f32>(p, q, 1.0));
+    // Kept (w = 1) only above the horizon and facing v as rounded (the Rust stream_normal);
+    // NaN x (64 rejections) fails too.
+    let ok = m.z > 0.0 && ms_dot(m, v) > 0.0;
+    return vec4<f32>(m, select(0.0, 1.0, ok));
 }
 
 // ln β(t) of the mixing variable t drawn from its prior (`biased` false) or its size-biased
 // prior w(t)β(t)/E[β] (true), at α = 1 (the Rust Posterior::draw_ln_beta): `mixing` 0
 // inverse-Gamma(k) (Student-T, β = √(k/t)), 1 Gamma(k) (K0, Bessel-K, β = √t), 2 uniform in
 // β² (Ei: t = U, or U^{2/3}), 3 uniform in β (Erfc: t = U, or √U).
-fn ms_mixing_ln_beta(mixing: u32, k: f32, biased: bool, state: ptr<function, vec2<u32>>) -> f32 {
+fn ms_mixing_ln_beta(mixing: u32, k: f32, biased: bool, src: ptr<function, MsSource>) -> f32 {
     let bias = select(0.0, 1.0, biased);
     if mixing == 0u {
-        return 0.5 * (log(k) - ms_ln_gamma_variate(k - 0.5 * bias, state));
+        return 0.5 * (log(k) - ms_ln_gamma_variate(k - 0.5 * bias, src));
     }
     if mixing == 1u {
-        return 0.5 * ms_ln_gamma_variate(k + 0.5 * bias, state);
+        return 0.5 * ms_ln_gamma_variate(k + 0.5 * bias, src);
     }
     if mixing == 2u {
-        return 0.5 * log(ms_stream_next_positive(state)) / (1.0 + 0.5 * bias);
+        return 0.5 * log(ms_source_next_positive(src)) / (1.0 + 0.5 * bias);
     }
-    return log(ms_stream_next_positive(state)) / (1.0 + bias);
+    return log(ms_source_next_positive(src)) / (1.0 + bias);
 }
 
 // ln β of the mixing variable's posterior for a unit direction with z = v.z > 0 and stretched
@@ -1902,19 +1967,19 @@ fn ms_mixing_ln_beta(mixing: u32, k: f32, biased: bool, state: ptr<function, vec
 // (Student-T), 1 Gamma(k) (K0, Bessel-K), 2 uniform in β² (Ei), 3 uniform in β (Erfc), as
 // ms_mixing_ln_beta. NaN after 64 candidates (probability below 1e-19).
 fn ms_posterior_ln_beta(mixing: u32, k: f32, mean_beta: f32, z: f32, h: f32,
-    state: ptr<function, vec2<u32>>) -> f32 {
+    src: ptr<function, MsSource>) -> f32 {
     let c = 0.5 * MS_FRAC_1_SQRT_PI;
     let p_prior = z / (z + c * h * mean_beta);
     for (var n = 0; n < 64; n++) {
-        let biased = ms_stream_next(state) >= p_prior;
-        let ln_beta = ms_mixing_ln_beta(mixing, k, biased, state);
+        let biased = ms_source_next(src) >= p_prior;
+        let ln_beta = ms_mixing_ln_beta(mixing, k, biased, src);
         let hb = h * exp(ln_beta);
         var keep = 1.0;
         if hb > 0.0 && hb <= 3.4028235e38 {
             let a = z / hb;
             keep = (z + c * hb * exp(-a * a) * ms_bk_erfc_ratio(a)) / (z + c * hb);
         }
-        if ms_stream_next(state) < keep {
+        if ms_source_next(src) < keep {
             return ln_beta;
         }
     }
@@ -1935,17 +2000,22 @@ fn ms_mixture_sample_wm(table: u32, w_in: vec3<f32>, alpha: vec2<f32>, u: vec2<f
     let sx = alpha.x * w.x;
     let sy = alpha.y * w.y;
     let h = sqrt(sx * sx + sy * sy);
-    var state = ms_stream_new(u);
-    var ln_beta = ms_posterior_ln_beta(u32(params.z), params.y, params.x, w.z, h, &state);
-    if ln_beta != ln_beta {
-        ln_beta = log(params.x);
-    }
-    let beta = ms_mixture_beta(ln_beta, alpha);
     if !(w.z > 0.0) {
-        // (On the horizon: Beckmann's warp, a visible normal.)
-        return ms_beckmann_sample_wm(w, beta * alpha, u);
+        // (On the horizon: Beckmann's warp at (αx, αy), a visible normal, as the Rust type.)
+        return ms_beckmann_sample_wm(w, alpha, u);
     }
-    return ms_beckmann_sample_stream_above(w, beta * alpha, &state);
+    var src = ms_source_after_u(u);
+    let ln_beta = ms_posterior_ln_beta(u32(params.z), params.y, params.x, w.z, h, &src);
+    if ln_beta == ln_beta {
+        let m = ms_beckmann_sample_stream_above(w, ms_mixture_beta(ln_beta, alpha) * alpha, &src);
+        if m.w > 0.0 {
+            return m.xyz;
+        }
+    }
+    // The posterior gave up (probability below 1e-19) or the component's normal rounded
+    // behind v: Beckmann's warp at (αx, αy), as the Rust type (a visible normal, not this
+    // NDF's distribution, with that probability).
+    return ms_beckmann_sample_wm(w, alpha, u);
 }
 
 // G1, G2 (height-correlated and separable) and the visible density D_w(wm) =
@@ -1992,8 +2062,9 @@ fn ms_mixture_beta(ln_beta: f32, alpha: vec2<f32>) -> f32 {
 // instead (a warp of u), so the normals are not the Rust ones.
 fn ms_mixture_sample_dcos_wm(table: u32, alpha: vec2<f32>, u: vec2<f32>) -> vec3<f32> {
     let params = ms_tables[table + 2u];
-    var state = ms_stream_new(u);
-    var ln_beta = ms_mixing_ln_beta(u32(params.z), params.y, false, &state);
+    // (β from the stream alone: u drives the warp, and must not drive β too.)
+    var src = ms_source_stream_wide(u);
+    var ln_beta = ms_mixing_ln_beta(u32(params.z), params.y, false, &src);
     if ln_beta != ln_beta {
         ln_beta = log(params.x);
     }
@@ -2001,18 +2072,24 @@ fn ms_mixture_sample_dcos_wm(table: u32, alpha: vec2<f32>, u: vec2<f32>) -> vec3
 }
 
 // ln D of a mixture from the logarithm of its radial profile at unit roughness, ln f₁(r) (r
-// the stretched slope's length, from r² = q/z², q = (m.x/αx)² + (m.y/αy)², wm above the
-// horizon): D = f₁(r)/(αx αy z⁴) is one exponential of ln f₁ − ln(αx αy z⁴), so that neither f₁
+// the stretched slope's length, ms_mixture_r, wm above the horizon): D = f₁(r)/(αx αy z⁴) is one exponential of ln f₁ − ln(αx αy z⁴), so that neither f₁
 // nor z⁴ underflows on the way where D is a normal f32.
 fn ms_mixture_ln_d(ln_f: f32, wm: vec3<f32>, alpha: vec2<f32>) -> f32 {
     return ln_f - log(alpha.x * alpha.y) - 4.0 * log(wm.z);
 }
 
-// r² = q/z² of wm at (αx, αy) (+∞ on the horizon).
-fn ms_mixture_r2(wm: vec3<f32>, alpha: vec2<f32>) -> f32 {
-    let x = wm.x / alpha.x;
-    let y = wm.y / alpha.y;
-    return (x * x + y * y) / (wm.z * wm.z);
+// The stretched slope's length r = |(m.x/αx, m.y/αy)|/z of wm at (αx, αy), without squaring
+// the components (r² leaves f32's normals below r ~ 1e-19, where a pole's D still varies).
+fn ms_mixture_r(wm: vec3<f32>, alpha: vec2<f32>) -> f32 {
+    let x = abs(wm.x / alpha.x);
+    let y = abs(wm.y / alpha.y);
+    let big = max(x, y);
+    if !(big > 0.0) {
+        return big;
+    }
+    let qx = x / big;
+    let qy = y / big;
+    return big * sqrt(qx * qx + qy * qy) / wm.z;
 }
 
 // e^z K₀(z) for z > 0: (1 + z)(−ln(z/2) − γ_E) below 2^−14 (the next terms, O(z² ln z), are
@@ -2115,9 +2192,9 @@ fn ms_student_t_d(wm: vec3<f32>, alpha: vec2<f32>, table: u32) -> f32 {
         return exp(-e - log(norm));
     }
     // Grazing: ln(1 + t) = ln q − 2 ln z − ln(γ − 1) (+ (γ − 1)z²/q, below ε there for
-    // γ ≤ 1e6 at z ≤ 1e-9 and q ≥ 1e-3; q smaller here makes D vanish anyway).
-    let ln_z = log(z);
-    let ln_d = -g * (log(q) - 2.0 * ln_z - log(g - 1.0)) - 4.0 * ln_z
+    // γ ≤ 1e6 at z ≤ 1e-9 and q ≥ 1e-3; q smaller here makes D vanish anyway), with z's two
+    // powers joined, (2γ − 4) ln z: apart they cancel (2γ ln z against 4 ln z, hundreds each).
+    let ln_d = -g * (log(q) - log(g - 1.0)) + (2.0 * g - 4.0) * log(z)
         - log(MS_PI * alpha.x * alpha.y);
     return exp(ln_d);
 }
@@ -2205,8 +2282,13 @@ fn ms_student_t_sample(w: vec3<f32>, alpha: vec2<f32>, u: vec2<f32>, table: u32)
 // from the prior, then Beckmann's D·cos warp; ms_mixture_sample_wm: the posterior, then
 // Beckmann's stream sampler), the Rust samplers' distributions, not their normals.
 
-// ln f₁ at r² = y: ln(e^y E₁(y)) − y − ln π.
-fn ms_ei_ln_profile(y: f32) -> f32 {
+// ln f₁ at r: ln(e^y E₁(y)) − y − ln π, y = r²; below y = 2^−24, e^y E₁(y) = −γ_E − 2 ln r
+// (from r: y itself may leave f32's normals).
+fn ms_ei_ln_profile(r: f32) -> f32 {
+    let y = r * r;
+    if y < 5.9604645e-8 {
+        return log(-MS_EULER_GAMMA - 2.0 * log(r)) - y - log(MS_PI);
+    }
     return log(ms_e1x(y)) - y - log(MS_PI);
 }
 
@@ -2215,11 +2297,11 @@ fn ms_ei_ln_d(wm: vec3<f32>, alpha: vec2<f32>) -> f32 {
     if !(wm.z > 0.0) {
         return select(-1e30, wm.z, wm.z != wm.z);
     }
-    let r2 = ms_mixture_r2(wm, alpha);
-    if r2 == 0.0 {
+    let r = ms_mixture_r(wm, alpha);
+    if r == 0.0 {
         return 1e30;
     }
-    return ms_mixture_ln_d(ms_ei_ln_profile(r2), wm, alpha);
+    return ms_mixture_ln_d(ms_ei_ln_profile(r), wm, alpha);
 }
 
 // D(wm); 0 on and below the horizon, +∞ at the pole, NaN for NaN.
@@ -2291,10 +2373,9 @@ fn ms_ei_sample(w: vec3<f32>, alpha: vec2<f32>, u: vec2<f32>, table: u32) -> MsS
 // from the prior, then Beckmann's D·cos warp; ms_mixture_sample_wm: the posterior, then
 // Beckmann's stream sampler), the Rust samplers' distributions, not their normals.
 
-// ln f₁ at r² = y: ln(erfcx(r)/(2√π r)) − r².
-fn ms_erfc_ln_profile(y: f32) -> f32 {
-    let r = sqrt(y);
-    return log(ms_bk_erfcx(r) / (2.0 * MS_SQRT_PI * r)) - y;
+// ln f₁ at r: ln(erfcx(r)/(2√π r)) − r².
+fn ms_erfc_ln_profile(r: f32) -> f32 {
+    return log(ms_bk_erfcx(r) / (2.0 * MS_SQRT_PI * r)) - r * r;
 }
 
 // ln D(wm) for wm above the horizon (−1e30, D = 0, on and below it; NaN for NaN), +1e30 (D = +∞) at the pole (r = 0).
@@ -2302,11 +2383,11 @@ fn ms_erfc_ln_d(wm: vec3<f32>, alpha: vec2<f32>) -> f32 {
     if !(wm.z > 0.0) {
         return select(-1e30, wm.z, wm.z != wm.z);
     }
-    let r2 = ms_mixture_r2(wm, alpha);
-    if r2 == 0.0 {
+    let r = ms_mixture_r(wm, alpha);
+    if r == 0.0 {
         return 1e30;
     }
-    return ms_mixture_ln_d(ms_erfc_ln_profile(r2), wm, alpha);
+    return ms_mixture_ln_d(ms_erfc_ln_profile(r), wm, alpha);
 }
 
 // D(wm); 0 on and below the horizon, +∞ at the pole, NaN for NaN.
@@ -2378,9 +2459,9 @@ fn ms_erfc_sample(w: vec3<f32>, alpha: vec2<f32>, u: vec2<f32>, table: u32) -> M
 // from the prior, then Beckmann's D·cos warp; ms_mixture_sample_wm: the posterior, then
 // Beckmann's stream sampler), the Rust samplers' distributions, not their normals.
 
-// ln f₁ at r² = y: ln(2 e^z K₀(z)/π) − z, z = 2r.
-fn ms_k0_ln_profile(y: f32) -> f32 {
-    let z = 2.0 * sqrt(y);
+// ln f₁ at r: ln(2 e^z K₀(z)/π) − z, z = 2r.
+fn ms_k0_ln_profile(r: f32) -> f32 {
+    let z = 2.0 * r;
     return log(2.0 * ms_k0e(z) / MS_PI) - z;
 }
 
@@ -2389,11 +2470,11 @@ fn ms_k0_ln_d(wm: vec3<f32>, alpha: vec2<f32>) -> f32 {
     if !(wm.z > 0.0) {
         return select(-1e30, wm.z, wm.z != wm.z);
     }
-    let r2 = ms_mixture_r2(wm, alpha);
-    if r2 == 0.0 {
+    let r = ms_mixture_r(wm, alpha);
+    if r == 0.0 {
         return 1e30;
     }
-    return ms_mixture_ln_d(ms_k0_ln_profile(r2), wm, alpha);
+    return ms_mixture_ln_d(ms_k0_ln_profile(r), wm, alpha);
 }
 
 // D(wm); 0 on and below the horizon, +∞ at the pole, NaN for NaN.
@@ -2476,13 +2557,12 @@ fn ms_bessel_k_h(at: u32, head: vec4<f32>, x: f32) -> f32 {
     return ms_bk_poly(ms_tables[i], ms_tables[i + 1u], g.y);
 }
 
-// ln f₁ at r² = y: h(x) − 2x in the table; past it f₁ < e^{−500} (−1e30: D = 0); below 2^k0
+// ln f₁ at r = x: h(x) − 2x in the table; past it f₁ < e^{−500} (−1e30: D = 0); below 2^k0
 // (within 1e-12 α of the pole) the profile's leading power from the table's first node x₀:
 // 2ν ln(x/x₀) for ν < 0, ln(ln x/ln x₀) for ν = 0 (f₁ ∝ −ln x), constant for ν > 0.
-fn ms_bessel_k_ln_profile(table: u32, y: f32) -> f32 {
+fn ms_bessel_k_ln_profile(table: u32, x: f32) -> f32 {
     let at = table + u32(ms_tables[table + 2u].w);
     let head = ms_tables[at];
-    let x = sqrt(y);
     if !(x < exp2(head.z)) {
         return select(-1e30, x, x != x);
     }
@@ -2505,15 +2585,15 @@ fn ms_bessel_k_ln_d(wm: vec3<f32>, alpha: vec2<f32>, table: u32) -> f32 {
     if !(wm.z > 0.0) {
         return select(-1e30, wm.z, wm.z != wm.z);
     }
-    let r2 = ms_mixture_r2(wm, alpha);
-    if r2 == 0.0 {
+    let r = ms_mixture_r(wm, alpha);
+    if r == 0.0 {
         let nu = ms_tables[table].x - 1.0;
         if nu > 0.0 {
             return -log(MS_PI * nu * alpha.x * alpha.y) - 4.0 * log(wm.z);
         }
         return 1e30;
     }
-    return ms_mixture_ln_d(ms_bessel_k_ln_profile(table, r2), wm, alpha);
+    return ms_mixture_ln_d(ms_bessel_k_ln_profile(table, r), wm, alpha);
 }
 
 // D(wm); 0 on and below the horizon, 1/(πν αx αy) or +∞ at the pole, NaN for NaN.

@@ -375,8 +375,14 @@ fn uniform_stream_is_the_rust_one_bit_for_bit() {
 /// distribution itself is `visible_samplers_are_chi2_consistent_with_rust`'s.
 #[test]
 fn family_visible_samplers_give_the_rust_f32_normals() {
+    // Double GGX, the Exponential NDF, then every SHAPED material.
+    let ndfs: Vec<u32> = [NDF_DOUBLE_GGX, NDF_EXPONENTIAL]
+        .into_iter()
+        .chain((0..SHAPED.len() as u32).map(|k| NDF_SHAPED + k))
+        .collect();
+    let index = |ndf: u32| ndfs.iter().position(|&x| x == ndf).expect("a tested NDF");
     let mut els = Vec::new();
-    for ndf in [NDF_DOUBLE_GGX, NDF_EXPONENTIAL] {
+    for &ndf in &ndfs {
         for &alpha in &ALPHAS {
             for &wo in &directions() {
                 for &u in &uniforms() {
@@ -395,16 +401,22 @@ fn family_visible_samplers_give_the_rust_f32_normals() {
         return;
     };
     let names = ["visible pdf at the normal / bound"];
-    let mut w = [Worst::new(&names), Worst::new(&names)];
-    let (mut same, mut worst_same) = ([0usize; 2], [0f64; 2]);
-    let mut n = [0usize; 2];
+    let mut w: Vec<Worst> = ndfs.iter().map(|_| Worst::new(&names)).collect();
+    let (mut same, mut worst_same) = (vec![0usize; ndfs.len()], vec![0f64; ndfs.len()]);
+    let mut n = vec![0usize; ndfs.len()];
     for (e, o) in els.iter().zip(&out) {
         let m = rust(e);
-        let k = (e.ndf - NDF_DOUBLE_GGX) as usize;
+        let k = index(e.ndf);
         n[k] += 1;
         let g = [o[1][0], o[1][1], o[1][2]];
         let r = m.sample(e.wo, e.u).wm;
         let d = vec_diff(g, r);
+        if d > 1e-3 && e.ndf >= NDF_SHAPED {
+            eprintln!(
+                "DBG {} u {:?} wo {:?} a {:?} g {g:?} r {r:?}",
+                e.ndf, e.u, e.wo, e.alpha
+            );
+        }
         if d <= 1e-3 {
             same[k] += 1;
             worst_same[k] = worst_same[k].max(d);
@@ -418,14 +430,28 @@ fn family_visible_samplers_give_the_rust_f32_normals() {
             len - 1.0
         );
         let p = m.pdf(e.wo, g);
-        let (lo, bo) = (m.lambda(e.wo) as f64, lambda_bound(e.ndf, e.wo, e.alpha));
+        let lo = m.lambda(e.wo) as f64;
+        let (bo, bd) = if e.ndf >= NDF_SHAPED {
+            let m64 = rust64(e);
+            (shaped_lambda_bound(&m64, e.wo), shaped_d_bound(&m64, g))
+        } else {
+            (
+                lambda_bound(e.ndf, e.wo, e.alpha),
+                d_bound(e.ndf, g, e.alpha),
+            )
+        };
         let g1 = TOL + bo * if lo.is_finite() { lo / (1.0 + lo) } else { 1.0 };
-        let tol = g1 + d_bound(e.ndf, g, e.alpha) + 8.0 * EPS * dot_cancellation(e.wo, g);
+        let tol = g1 + bd + 8.0 * EPS * dot_cancellation(e.wo, g);
         w[k].add(0, rel(o[1][3], p) / tol, || {
             format!("{e:?}: gpu {} rust {p}", o[1][3])
         });
     }
-    for (k, name) in ["Double GGX", "Exponential"].iter().enumerate() {
+    for (k, &ndf) in ndfs.iter().enumerate() {
+        let name = match ndf {
+            NDF_DOUBLE_GGX => "Double GGX".to_string(),
+            NDF_EXPONENTIAL => "Exponential".to_string(),
+            _ => format!("{:?}", SHAPED[(ndf - NDF_SHAPED) as usize]),
+        };
         eprintln!(
             "{name}: {} of {} normals the Rust draw (largest difference {:.2e})",
             same[k], n[k], worst_same[k]

@@ -24,13 +24,12 @@ fn ms_bessel_k_h(at: u32, head: vec4<f32>, x: f32) -> f32 {
     return ms_bk_poly(ms_tables[i], ms_tables[i + 1u], g.y);
 }
 
-// ln f₁ at r² = y: h(x) − 2x in the table; past it f₁ < e^{−500} (−1e30: D = 0); below 2^k0
+// ln f₁ at r = x: h(x) − 2x in the table; past it f₁ < e^{−500} (−1e30: D = 0); below 2^k0
 // (within 1e-12 α of the pole) the profile's leading power from the table's first node x₀:
 // 2ν ln(x/x₀) for ν < 0, ln(ln x/ln x₀) for ν = 0 (f₁ ∝ −ln x), constant for ν > 0.
-fn ms_bessel_k_ln_profile(table: u32, y: f32) -> f32 {
+fn ms_bessel_k_ln_profile(table: u32, x: f32) -> f32 {
     let at = table + u32(ms_tables[table + 2u].w);
     let head = ms_tables[at];
-    let x = sqrt(y);
     if !(x < exp2(head.z)) {
         return select(-1e30, x, x != x);
     }
@@ -53,15 +52,15 @@ fn ms_bessel_k_ln_d(wm: vec3<f32>, alpha: vec2<f32>, table: u32) -> f32 {
     if !(wm.z > 0.0) {
         return select(-1e30, wm.z, wm.z != wm.z);
     }
-    let r2 = ms_mixture_r2(wm, alpha);
-    if r2 == 0.0 {
+    let r = ms_mixture_r(wm, alpha);
+    if r == 0.0 {
         let nu = ms_tables[table].x - 1.0;
         if nu > 0.0 {
             return -log(MS_PI * nu * alpha.x * alpha.y) - 4.0 * log(wm.z);
         }
         return 1e30;
     }
-    return ms_mixture_ln_d(ms_bessel_k_ln_profile(table, r2), wm, alpha);
+    return ms_mixture_ln_d(ms_bessel_k_ln_profile(table, r), wm, alpha);
 }
 
 // D(wm); 0 on and below the horizon, 1/(πν αx αy) or +∞ at the pole, NaN for NaN.

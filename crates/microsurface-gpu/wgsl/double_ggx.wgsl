@@ -179,8 +179,8 @@ fn ms_double_ggx_pdf_dcos(wm: vec3<f32>, alpha: vec2<f32>) -> f32 {
 // f32's range; t = 0 has probability 2^−24 and would put the normal on the horizon), then
 // GGX's D·cos normal at α/√t driven by u.
 fn ms_double_ggx_sample_dcos(alpha: vec2<f32>, u: vec2<f32>) -> MsSample {
-    var state = ms_stream_new(u);
-    let t = max(ms_zig_exp1(ms_stream_next(&state), &state), 1e-36);
+    var src = ms_source_stream(u);
+    let t = max(ms_zig_exp1(ms_source_next(&src), &src), 1e-36);
     let cs = ms_cos_sin_turn(u.y);
     let r = sqrt(u.x);
     let wm = ms_unit_normal(vec3<f32>(alpha.x * r * cs.x, alpha.y * r * cs.y,
@@ -214,22 +214,22 @@ fn ms_double_ggx_sample_wm(w_in: vec3<f32>, alpha: vec2<f32>, u: vec2<f32>) -> v
     // (Capped: at grazing w or normal incidence a share is 0 and its reciprocal infinite.)
     let inv_p = min((e + g) / e, 3.4028235e38);
     let inv_q = min((e + g) / g, 3.4028235e38);
-    var state = ms_stream_new(u);
+    var src = ms_source_stream(u);
     var s = 1.0;
     var len = 1.0;
     for (var n = 0; n < 64; n++) {
-        let v = ms_stream_next(&state);
+        let v = ms_source_next(&src);
         var t: f32;
         if v < p_exp {
-            t = ms_zig_exp1(v * inv_p, &state);
+            t = ms_zig_exp1(v * inv_p, &src);
         } else {
-            let z = ms_zig_half_normal((v - p_exp) * inv_q, &state);
+            let z = ms_zig_half_normal((v - p_exp) * inv_q, &src);
             t = 0.5 * z * z;
         }
         t = max(t, 1e-36);
         s = sqrt(t);
         len = sqrt(c * c * t + h * h);
-        if ms_stream_next(&state) * (e * s + h) <= c * s + len {
+        if ms_source_next(&src) * (e * s + h) <= c * s + len {
             break;
         }
     }

@@ -13,8 +13,13 @@
 // from the prior, then Beckmann's D·cos warp; ms_mixture_sample_wm: the posterior, then
 // Beckmann's stream sampler), the Rust samplers' distributions, not their normals.
 
-// ln f₁ at r² = y: ln(e^y E₁(y)) − y − ln π.
-fn ms_ei_ln_profile(y: f32) -> f32 {
+// ln f₁ at r: ln(e^y E₁(y)) − y − ln π, y = r²; below y = 2^−24, e^y E₁(y) = −γ_E − 2 ln r
+// (from r: y itself may leave f32's normals).
+fn ms_ei_ln_profile(r: f32) -> f32 {
+    let y = r * r;
+    if y < 5.9604645e-8 {
+        return log(-MS_EULER_GAMMA - 2.0 * log(r)) - y - log(MS_PI);
+    }
     return log(ms_e1x(y)) - y - log(MS_PI);
 }
 
@@ -23,11 +28,11 @@ fn ms_ei_ln_d(wm: vec3<f32>, alpha: vec2<f32>) -> f32 {
     if !(wm.z > 0.0) {
         return select(-1e30, wm.z, wm.z != wm.z);
     }
-    let r2 = ms_mixture_r2(wm, alpha);
-    if r2 == 0.0 {
+    let r = ms_mixture_r(wm, alpha);
+    if r == 0.0 {
         return 1e30;
     }
-    return ms_mixture_ln_d(ms_ei_ln_profile(r2), wm, alpha);
+    return ms_mixture_ln_d(ms_ei_ln_profile(r), wm, alpha);
 }
 
 // D(wm); 0 on and below the horizon, +∞ at the pole, NaN for NaN.

@@ -13,10 +13,9 @@
 // from the prior, then Beckmann's D·cos warp; ms_mixture_sample_wm: the posterior, then
 // Beckmann's stream sampler), the Rust samplers' distributions, not their normals.
 
-// ln f₁ at r² = y: ln(erfcx(r)/(2√π r)) − r².
-fn ms_erfc_ln_profile(y: f32) -> f32 {
-    let r = sqrt(y);
-    return log(ms_bk_erfcx(r) / (2.0 * MS_SQRT_PI * r)) - y;
+// ln f₁ at r: ln(erfcx(r)/(2√π r)) − r².
+fn ms_erfc_ln_profile(r: f32) -> f32 {
+    return log(ms_bk_erfcx(r) / (2.0 * MS_SQRT_PI * r)) - r * r;
 }
 
 // ln D(wm) for wm above the horizon (−1e30, D = 0, on and below it; NaN for NaN), +1e30 (D = +∞) at the pole (r = 0).
@@ -24,11 +23,11 @@ fn ms_erfc_ln_d(wm: vec3<f32>, alpha: vec2<f32>) -> f32 {
     if !(wm.z > 0.0) {
         return select(-1e30, wm.z, wm.z != wm.z);
     }
-    let r2 = ms_mixture_r2(wm, alpha);
-    if r2 == 0.0 {
+    let r = ms_mixture_r(wm, alpha);
+    if r == 0.0 {
         return 1e30;
     }
-    return ms_mixture_ln_d(ms_erfc_ln_profile(r2), wm, alpha);
+    return ms_mixture_ln_d(ms_erfc_ln_profile(r), wm, alpha);
 }
 
 // D(wm); 0 on and below the horizon, +∞ at the pole, NaN for NaN.

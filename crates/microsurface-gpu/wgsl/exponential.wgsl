@@ -148,8 +148,8 @@ fn ms_exponential_pdf_dcos(wm: vec3<f32>, alpha: vec2<f32>) -> f32 {
 // u₀)) at unit roughness, E ~ Exp(1) from the stream of u, azimuth 2πu₁; m ∝ (αx r cos φ,
 // αy r sin φ, 1), or divided by r past r = 1 (the Rust normal_from_polar).
 fn ms_exponential_sample_dcos(alpha: vec2<f32>, u: vec2<f32>) -> MsSample {
-    var state = ms_stream_new(u);
-    let e = ms_zig_exp1(ms_stream_next(&state), &state);
+    var src = ms_source_stream(u);
+    let e = ms_zig_exp1(ms_source_next(&src), &src);
     let r = 0.5 * (e - ms_bk_ln_1m(u.x));
     let cs = ms_cos_sin_turn(u.y);
     var v: vec3<f32>;

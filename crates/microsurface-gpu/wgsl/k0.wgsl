@@ -13,9 +13,9 @@
 // from the prior, then Beckmann's D·cos warp; ms_mixture_sample_wm: the posterior, then
 // Beckmann's stream sampler), the Rust samplers' distributions, not their normals.
 
-// ln f₁ at r² = y: ln(2 e^z K₀(z)/π) − z, z = 2r.
-fn ms_k0_ln_profile(y: f32) -> f32 {
-    let z = 2.0 * sqrt(y);
+// ln f₁ at r: ln(2 e^z K₀(z)/π) − z, z = 2r.
+fn ms_k0_ln_profile(r: f32) -> f32 {
+    let z = 2.0 * r;
     return log(2.0 * ms_k0e(z) / MS_PI) - z;
 }
 
@@ -24,11 +24,11 @@ fn ms_k0_ln_d(wm: vec3<f32>, alpha: vec2<f32>) -> f32 {
     if !(wm.z > 0.0) {
         return select(-1e30, wm.z, wm.z != wm.z);
     }
-    let r2 = ms_mixture_r2(wm, alpha);
-    if r2 == 0.0 {
+    let r = ms_mixture_r(wm, alpha);
+    if r == 0.0 {
         return 1e30;
     }
-    return ms_mixture_ln_d(ms_k0_ln_profile(r2), wm, alpha);
+    return ms_mixture_ln_d(ms_k0_ln_profile(r), wm, alpha);
 }
 
 // D(wm); 0 on and below the horizon, +∞ at the pole, NaN for NaN.

@@ -69,38 +69,39 @@ fn ms_shape_lambda(table: u32, w: vec3<f32>, alpha: vec2<f32>) -> f32 {
 
 // A standard normal variate from w ∈ [0, 1) (the Rust fast::ziggurat::normal): the lower half
 // picks the sign, the rest drives the half-normal ziggurat.
-fn ms_zig_normal(w: f32, state: ptr<function, vec2<u32>>) -> f32 {
+fn ms_zig_normal(w: f32, src: ptr<function, MsSource>) -> f32 {
     if w < 0.5 {
-        return -ms_zig_half_normal(2.0 * w, state);
+        return -ms_zig_half_normal(2.0 * w, src);
     }
-    return ms_zig_half_normal(2.0 * w - 1.0, state);
+    return ms_zig_half_normal(2.0 * w - 1.0, src);
 }
 
-// A uniform of the stream in (0, 1): 0 reads as 2^−25 (ln 0 would send a variate to ±∞).
-fn ms_stream_next_positive(state: ptr<function, vec2<u32>>) -> f32 {
-    return max(ms_stream_next(state), 2.9802322e-8);
+// A uniform of the source in (0, 1): 0 reads as 2^−53, as in Rust (ln 0 would send a variate
+// to ±∞).
+fn ms_source_next_positive(src: ptr<function, MsSource>) -> f32 {
+    return max(ms_source_next(src), 1.1102230246251565e-16);
 }
 
 // ln of a Gamma(k, 1) variate, k > 0 (Marsaglia & Tsang 2000, as the Rust ln_gamma_variate:
 // acceptance ≥ 0.95 for k ≥ 1; below, Gamma(k + 1) U^{1/k} in logarithms). NaN after 64
 // rejections (probability below 1e-80).
-fn ms_ln_gamma_variate(k_in: f32, state: ptr<function, vec2<u32>>) -> f32 {
+fn ms_ln_gamma_variate(k_in: f32, src: ptr<function, MsSource>) -> f32 {
     var k = k_in;
     var boost = 0.0;
     if k < 1.0 {
-        boost = log(ms_stream_next_positive(state)) / k;
+        boost = log(ms_source_next_positive(src)) / k;
         k = k + 1.0;
     }
     let d = k - 1.0 / 3.0;
     let c = 1.0 / sqrt(9.0 * d);
     for (var n = 0; n < 64; n++) {
-        let x = ms_zig_normal(ms_stream_next(state), state);
+        let x = ms_zig_normal(ms_source_next(src), src);
         var v = 1.0 + c * x;
         if v <= 0.0 {
             continue;
         }
         v = v * v * v;
-        if log(ms_stream_next_positive(state)) < 0.5 * x * x + d - d * v + d * log(v) {
+        if log(ms_source_next_positive(src)) < 0.5 * x * x + d - d * v + d * log(v) {
             return log(d) + log(v) + boost;
         }
     }
@@ -111,18 +112,25 @@ fn ms_ln_gamma_variate(k_in: f32, state: ptr<function, vec2<u32>>) -> f32 {
 // stream (the Rust fast::beckmann::sample_visible_above): in v's slope frame (a = v.z/h) the
 // visible slope X has density ∝ (X + a)e^{−X²} on X > −a, drawn from the envelope X e^{−X²}
 // on X ≥ 0 (mass ½: X = √(−ln U)) plus a e^{−X²} on the line (mass a√π: X = ±Z/√2),
-// kept with probability (X + a)/a where X < 0 (acceptance ≥ 0.75); Y is N(0, ½). The
-// normal faces v (ms_facing where rounding would leave it behind).
+// kept with probability (X + a)/a where X < 0 (acceptance ≥ 0.75); Y is N(0, ½). Returns
+// (m, 1), or (m, 0) where m as rounded lies on or below the horizon or faces away from v.
 fn ms_beckmann_sample_stream_above(v: vec3<f32>, alpha: vec2<f32>,
-    state: ptr<function, vec2<u32>>) -> vec3<f32> {
+    src: ptr<function, MsSource>) -> vec4<f32> {
     let sx = alpha.x * v.x;
     let sy = alpha.y * v.y;
-    let h = sqrt(sx * sx + sy * sy);
+    // |(sx, sy)| without squaring them (the posterior's β α reaches e^80).
+    let big = max(abs(sx), abs(sy));
+    var h = 0.0;
+    if big > 0.0 {
+        let qx = sx / big;
+        let qy = sy / big;
+        h = big * sqrt(qx * qx + qy * qy);
+    }
     var cp = 1.0;
     var sp = 0.0;
     var x = 0.0;
     if h == 0.0 {
-        x = ms_zig_normal(ms_stream_next(state), state) * 0.70710678118654752;
+        x = ms_zig_normal(ms_source_next(src), src) * 0.70710678118654752;
     } else {
         cp = sx / h;
         sp = sy / h;
@@ -130,40 +138,44 @@ fn ms_beckmann_sample_stream_above(v: vec3<f32>, alpha: vec2<f32>,
         let p_ray = 0.5 / (0.5 + a * MS_SQRT_PI);
         x = bitcast<f32>(0x7fc00000u);
         for (var n = 0; n < 64; n++) {
-            let w = ms_stream_next(state);
+            let w = ms_source_next(src);
             if w < p_ray {
-                x = sqrt(-log(ms_stream_next_positive(state)));
+                x = sqrt(-log(ms_source_next_positive(src)));
                 break;
             }
-            let c = ms_zig_normal((w - p_ray) / (1.0 - p_ray), state) * 0.70710678118654752;
-            if c >= 0.0 || (c > -a && ms_stream_next(state) * a < c + a) {
+            let c = ms_zig_normal((w - p_ray) / (1.0 - p_ray), src) * 0.70710678118654752;
+            if c >= 0.0 || (c > -a && ms_source_next(src) * a < c + a) {
                 x = c;
                 break;
             }
         }
     }
-    let y = ms_zig_normal(ms_stream_next(state), state) * 0.70710678118654752;
+    let y = ms_zig_normal(ms_source_next(src), src) * 0.70710678118654752;
     let p = alpha.x * (cp * x - sp * y);
     let q = alpha.y * (sp * x + cp * y);
-    return ms_facing(ms_unit_normal(vec3<f32>(p, q, 1.0)), v);
+    let m = ms_unit_normal(vec3<f32>(p, q, 1.0));
+    // Kept (w = 1) only above the horizon and facing v as rounded (the Rust stream_normal);
+    // NaN x (64 rejections) fails too.
+    let ok = m.z > 0.0 && ms_dot(m, v) > 0.0;
+    return vec4<f32>(m, select(0.0, 1.0, ok));
 }
 
 // ln β(t) of the mixing variable t drawn from its prior (`biased` false) or its size-biased
 // prior w(t)β(t)/E[β] (true), at α = 1 (the Rust Posterior::draw_ln_beta): `mixing` 0
 // inverse-Gamma(k) (Student-T, β = √(k/t)), 1 Gamma(k) (K0, Bessel-K, β = √t), 2 uniform in
 // β² (Ei: t = U, or U^{2/3}), 3 uniform in β (Erfc: t = U, or √U).
-fn ms_mixing_ln_beta(mixing: u32, k: f32, biased: bool, state: ptr<function, vec2<u32>>) -> f32 {
+fn ms_mixing_ln_beta(mixing: u32, k: f32, biased: bool, src: ptr<function, MsSource>) -> f32 {
     let bias = select(0.0, 1.0, biased);
     if mixing == 0u {
-        return 0.5 * (log(k) - ms_ln_gamma_variate(k - 0.5 * bias, state));
+        return 0.5 * (log(k) - ms_ln_gamma_variate(k - 0.5 * bias, src));
     }
     if mixing == 1u {
-        return 0.5 * ms_ln_gamma_variate(k + 0.5 * bias, state);
+        return 0.5 * ms_ln_gamma_variate(k + 0.5 * bias, src);
     }
     if mixing == 2u {
-        return 0.5 * log(ms_stream_next_positive(state)) / (1.0 + 0.5 * bias);
+        return 0.5 * log(ms_source_next_positive(src)) / (1.0 + 0.5 * bias);
     }
-    return log(ms_stream_next_positive(state)) / (1.0 + bias);
+    return log(ms_source_next_positive(src)) / (1.0 + bias);
 }
 
 // ln β of the mixing variable's posterior for a unit direction with z = v.z > 0 and stretched
@@ -174,19 +186,19 @@ fn ms_mixing_ln_beta(mixing: u32, k: f32, biased: bool, state: ptr<function, vec
 // (Student-T), 1 Gamma(k) (K0, Bessel-K), 2 uniform in β² (Ei), 3 uniform in β (Erfc), as
 // ms_mixing_ln_beta. NaN after 64 candidates (probability below 1e-19).
 fn ms_posterior_ln_beta(mixing: u32, k: f32, mean_beta: f32, z: f32, h: f32,
-    state: ptr<function, vec2<u32>>) -> f32 {
+    src: ptr<function, MsSource>) -> f32 {
     let c = 0.5 * MS_FRAC_1_SQRT_PI;
     let p_prior = z / (z + c * h * mean_beta);
     for (var n = 0; n < 64; n++) {
-        let biased = ms_stream_next(state) >= p_prior;
-        let ln_beta = ms_mixing_ln_beta(mixing, k, biased, state);
+        let biased = ms_source_next(src) >= p_prior;
+        let ln_beta = ms_mixing_ln_beta(mixing, k, biased, src);
         let hb = h * exp(ln_beta);
         var keep = 1.0;
         if hb > 0.0 && hb <= 3.4028235e38 {
             let a = z / hb;
             keep = (z + c * hb * exp(-a * a) * ms_bk_erfc_ratio(a)) / (z + c * hb);
         }
-        if ms_stream_next(state) < keep {
+        if ms_source_next(src) < keep {
             return ln_beta;
         }
     }
@@ -207,17 +219,22 @@ fn ms_mixture_sample_wm(table: u32, w_in: vec3<f32>, alpha: vec2<f32>, u: vec2<f
     let sx = alpha.x * w.x;
     let sy = alpha.y * w.y;
     let h = sqrt(sx * sx + sy * sy);
-    var state = ms_stream_new(u);
-    var ln_beta = ms_posterior_ln_beta(u32(params.z), params.y, params.x, w.z, h, &state);
-    if ln_beta != ln_beta {
-        ln_beta = log(params.x);
-    }
-    let beta = ms_mixture_beta(ln_beta, alpha);
     if !(w.z > 0.0) {
-        // (On the horizon: Beckmann's warp, a visible normal.)
-        return ms_beckmann_sample_wm(w, beta * alpha, u);
+        // (On the horizon: Beckmann's warp at (αx, αy), a visible normal, as the Rust type.)
+        return ms_beckmann_sample_wm(w, alpha, u);
     }
-    return ms_beckmann_sample_stream_above(w, beta * alpha, &state);
+    var src = ms_source_after_u(u);
+    let ln_beta = ms_posterior_ln_beta(u32(params.z), params.y, params.x, w.z, h, &src);
+    if ln_beta == ln_beta {
+        let m = ms_beckmann_sample_stream_above(w, ms_mixture_beta(ln_beta, alpha) * alpha, &src);
+        if m.w > 0.0 {
+            return m.xyz;
+        }
+    }
+    // The posterior gave up (probability below 1e-19) or the component's normal rounded
+    // behind v: Beckmann's warp at (αx, αy), as the Rust type (a visible normal, not this
+    // NDF's distribution, with that probability).
+    return ms_beckmann_sample_wm(w, alpha, u);
 }
 
 // G1, G2 (height-correlated and separable) and the visible density D_w(wm) =
@@ -264,8 +281,9 @@ fn ms_mixture_beta(ln_beta: f32, alpha: vec2<f32>) -> f32 {
 // instead (a warp of u), so the normals are not the Rust ones.
 fn ms_mixture_sample_dcos_wm(table: u32, alpha: vec2<f32>, u: vec2<f32>) -> vec3<f32> {
     let params = ms_tables[table + 2u];
-    var state = ms_stream_new(u);
-    var ln_beta = ms_mixing_ln_beta(u32(params.z), params.y, false, &state);
+    // (β from the stream alone: u drives the warp, and must not drive β too.)
+    var src = ms_source_stream_wide(u);
+    var ln_beta = ms_mixing_ln_beta(u32(params.z), params.y, false, &src);
     if ln_beta != ln_beta {
         ln_beta = log(params.x);
     }
@@ -273,18 +291,24 @@ fn ms_mixture_sample_dcos_wm(table: u32, alpha: vec2<f32>, u: vec2<f32>) -> vec3
 }
 
 // ln D of a mixture from the logarithm of its radial profile at unit roughness, ln f₁(r) (r
-// the stretched slope's length, from r² = q/z², q = (m.x/αx)² + (m.y/αy)², wm above the
-// horizon): D = f₁(r)/(αx αy z⁴) is one exponential of ln f₁ − ln(αx αy z⁴), so that neither f₁
+// the stretched slope's length, ms_mixture_r, wm above the horizon): D = f₁(r)/(αx αy z⁴) is one exponential of ln f₁ − ln(αx αy z⁴), so that neither f₁
 // nor z⁴ underflows on the way where D is a normal f32.
 fn ms_mixture_ln_d(ln_f: f32, wm: vec3<f32>, alpha: vec2<f32>) -> f32 {
     return ln_f - log(alpha.x * alpha.y) - 4.0 * log(wm.z);
 }
 
-// r² = q/z² of wm at (αx, αy) (+∞ on the horizon).
-fn ms_mixture_r2(wm: vec3<f32>, alpha: vec2<f32>) -> f32 {
-    let x = wm.x / alpha.x;
-    let y = wm.y / alpha.y;
-    return (x * x + y * y) / (wm.z * wm.z);
+// The stretched slope's length r = |(m.x/αx, m.y/αy)|/z of wm at (αx, αy), without squaring
+// the components (r² leaves f32's normals below r ~ 1e-19, where a pole's D still varies).
+fn ms_mixture_r(wm: vec3<f32>, alpha: vec2<f32>) -> f32 {
+    let x = abs(wm.x / alpha.x);
+    let y = abs(wm.y / alpha.y);
+    let big = max(x, y);
+    if !(big > 0.0) {
+        return big;
+    }
+    let qx = x / big;
+    let qy = y / big;
+    return big * sqrt(qx * qx + qy * qy) / wm.z;
 }
 
 // e^z K₀(z) for z > 0: (1 + z)(−ln(z/2) − γ_E) below 2^−14 (the next terms, O(z² ln z), are

@@ -87,13 +87,66 @@ fn ms_stream_next(state: ptr<function, vec2<u32>>) -> f32 {
     return f32(z.y >> 8u) * (1.0 / 16777216.0);
 }
 
+// The next uniform of the stream as the Rust f64 draw (the top 53 bits over 2^53, the Rust
+// next_uniform::<f64>()) rounded to f32, below 1.
+fn ms_stream_next_wide(state: ptr<function, vec2<u32>>) -> f32 {
+    let z = ms_stream_next_u64(state);
+    let v = f32(z.y) * 2.3283064365386963e-10 + f32(z.x >> 11u) * 1.1102230246251565e-16;
+    return min(v, 0.99999994);
+}
+
+// A source of uniforms for a rejection sampler: the Rust samplers' closures, on the GPU. `first`
+// (u itself) is returned first where `used` < 2, then the stream of u, as f32 draws (the top 24
+// bits: the Rust f32 paths' `next_uniform::<f32>`) or, where `wide` is 1, as the f64 draws the
+// Rust mixtures' samplers take, rounded to f32 (ms_stream_next_wide).
+struct MsSource {
+    state: vec2<u32>,
+    first: vec2<f32>,
+    used: u32,
+    wide: u32,
+}
+
+// The stream of u alone, f32 draws (Double GGX's and the Exponential NDF's samplers).
+fn ms_source_stream(u: vec2<f32>) -> MsSource {
+    return MsSource(ms_stream_new(u), u, 2u, 0u);
+}
+
+// The stream of u alone, its f64 draws rounded to f32 (the mixtures' D·cos sampler, whose
+// warp takes u itself).
+fn ms_source_stream_wide(u: vec2<f32>) -> MsSource {
+    return MsSource(ms_stream_new(u), u, 2u, 1u);
+}
+
+// u's two uniforms, then the stream's f64 draws (the mixtures' posterior sampler).
+fn ms_source_after_u(u: vec2<f32>) -> MsSource {
+    return MsSource(ms_stream_new(u), u, 0u, 1u);
+}
+
+fn ms_source_next(src: ptr<function, MsSource>) -> f32 {
+    if (*src).used < 2u {
+        let v = select((*src).first.y, (*src).first.x, (*src).used == 0u);
+        (*src).used = (*src).used + 1u;
+        return v;
+    }
+    // (Through a local: naga's SPIR-V writer does not take a pointer to the member.)
+    var state = (*src).state;
+    var v: f32;
+    if (*src).wide == 1u {
+        v = ms_stream_next_wide(&state);
+    } else {
+        v = ms_stream_next(&state);
+    }
+    (*src).state = state;
+    return v;
+}
+
 // A variate of a ziggurat's density from w ∈ [0, 1) (the Rust fast::ziggurat::sample over
 // its generated layers, the rows at `at` of tables.wgsl, in f32): layer i = ⌊256w⌋, x =
 // (256w − i)x_i, kept when below x_{i+1}; else the tail (layer 0) or the wedge's height test
 // against f(x) (e^{−x}, or e^{−x²/2} where `normal`), with further uniforms from the
-// stream. The tail beyond r = x₁: r + Exp(1) for e^{−x}; Marsaglia's 1964 method for the
+// source. The tail beyond r = x₁: r + Exp(1) for e^{−x}; Marsaglia's 1964 method for the
 // normal (r + a, a ~ Exp(r), kept when 2b > a², b ~ Exp(1)).
-fn ms_zig_sample(at: u32, normal: bool, w: f32, state: ptr<function, vec2<u32>>) -> f32 {
+fn ms_zig_sample(at: u32, normal: bool, w: f32, src: ptr<function, MsSource>) -> f32 {
     var y = w * 256.0;
     var k = u32(max(y, 0.0));
     var i = k & 255u;
@@ -111,18 +164,18 @@ fn ms_zig_sample(at: u32, normal: bool, w: f32, state: ptr<function, vec2<u32>>)
         if i == 0u {
             let r = layer.z;
             if !normal {
-                return r - log(1.0 - ms_stream_next(state));
+                return r - log(1.0 - ms_source_next(src));
             }
             for (var j = 0; j < 64; j++) {
-                let a = -log(1.0 - ms_stream_next(state)) / r;
-                let b = -log(1.0 - ms_stream_next(state));
+                let a = -log(1.0 - ms_source_next(src)) / r;
+                let b = -log(1.0 - ms_source_next(src));
                 if 2.0 * b > a * a {
                     return r + a;
                 }
             }
             return r;
         }
-        let h = layer.y + ms_stream_next(state) * (layer.w - layer.y);
+        let h = layer.y + ms_source_next(src) * (layer.w - layer.y);
         var f = exp(-x);
         if normal {
             f = exp(-0.5 * x * x);
@@ -130,7 +183,7 @@ fn ms_zig_sample(at: u32, normal: bool, w: f32, state: ptr<function, vec2<u32>>)
         if h < f {
             return x;
         }
-        y = ms_stream_next(state) * 256.0;
+        y = ms_source_next(src) * 256.0;
         k = u32(y);
         i = k & 255u;
         layer = ms_tables[at + i];
@@ -143,11 +196,11 @@ fn ms_zig_sample(at: u32, normal: bool, w: f32, state: ptr<function, vec2<u32>>)
 }
 
 // An Exp(1) variate from w ∈ [0, 1) (the Rust fast::ziggurat::exp1; Marsaglia & Tsang 2000).
-fn ms_zig_exp1(w: f32, state: ptr<function, vec2<u32>>) -> f32 {
-    return ms_zig_sample(MS_ZIG_EXP_AT, false, w, state);
+fn ms_zig_exp1(w: f32, src: ptr<function, MsSource>) -> f32 {
+    return ms_zig_sample(MS_ZIG_EXP_AT, false, w, src);
 }
 
 // A half-normal variate |Z| from w ∈ [0, 1) (the Rust fast::ziggurat::half_normal).
-fn ms_zig_half_normal(w: f32, state: ptr<function, vec2<u32>>) -> f32 {
-    return ms_zig_sample(MS_ZIG_NORMAL_AT, true, w, state);
+fn ms_zig_half_normal(w: f32, src: ptr<function, MsSource>) -> f32 {
+    return ms_zig_sample(MS_ZIG_NORMAL_AT, true, w, src);
 }

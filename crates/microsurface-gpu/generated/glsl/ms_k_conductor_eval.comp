@@ -18,6 +18,12 @@ struct MsBoundedCap {
     float b;
     float top;
 };
+struct MsSource {
+    uvec2 state;
+    vec2 first;
+    uint used;
+    uint wide;
+};
 struct MsMicrofacet {
     uint ndf;
     vec2 alpha;
@@ -139,10 +145,10 @@ float ms_inf() {
 
 vec2 ms_cos_sin_turn(float v) {
     float k_10 = roundEven((4.0 * v));
-    float r_3 = (v - (0.25 * k_10));
-    float x_15 = (MS_TAU * r_3);
-    float x2_ = (x_15 * x_15);
-    float s_10 = (x_15 * (1.0 + (x2_ * (-0.16666667 + (x2_ * (0.008333333 + (x2_ * (-0.0001984127 + (x2_ * 2.7557319e-6)))))))));
+    float r_6 = (v - (0.25 * k_10));
+    float x_16 = (MS_TAU * r_6);
+    float x2_ = (x_16 * x_16);
+    float s_10 = (x_16 * (1.0 + (x2_ * (-0.16666667 + (x2_ * (0.008333333 + (x2_ * (-0.0001984127 + (x2_ * 2.7557319e-6)))))))));
     float c_17 = (1.0 + (x2_ * (-0.5 + (x2_ * (0.041666668 + (x2_ * (-0.0013888889 + (x2_ * (2.4801588e-5 + (x2_ * -2.755732e-7))))))))));
     int q_2 = (int(k_10) & 3);
     if ((q_2 == 0)) {
@@ -453,23 +459,23 @@ float ms_cnorm_ratio(vec2 a_6, vec2 b_3) {
 
 vec2 ms_crecip(vec2 a_7) {
     if ((abs(a_7.x) >= abs(a_7.y))) {
-        float r_4 = (a_7.y / a_7.x);
-        float d_16 = (a_7.x + (a_7.y * r_4));
-        return vec2((1.0 / d_16), (-(r_4) / d_16));
+        float r_7 = (a_7.y / a_7.x);
+        float d_16 = (a_7.x + (a_7.y * r_7));
+        return vec2((1.0 / d_16), (-(r_7) / d_16));
     }
-    float r_5 = (a_7.x / a_7.y);
-    float d_17 = ((a_7.x * r_5) + a_7.y);
-    return vec2((r_5 / d_17), (-1.0 / d_17));
+    float r_8 = (a_7.x / a_7.y);
+    float d_17 = ((a_7.x * r_8) + a_7.y);
+    return vec2((r_8 / d_17), (-1.0 / d_17));
 }
 
 vec2 ms_csqrt(vec2 a_8) {
     float s_1 = 0.0;
     float _e1 = ms_cnorm(a_8);
-    float r_6 = sqrt(_e1);
-    if ((r_6 == 0.0)) {
+    float r_9 = sqrt(_e1);
+    if ((r_9 == 0.0)) {
         return vec2(0.0);
     }
-    float t_5 = sqrt(((r_6 + abs(a_8.x)) * 0.5));
+    float t_5 = sqrt(((r_9 + abs(a_8.x)) * 0.5));
     if ((a_8.x >= 0.0)) {
         return vec2(t_5, (a_8.y / (t_5 + t_5)));
     }
@@ -548,8 +554,8 @@ float ms_fresnel_f82_tint(float cos_i_3, float f0_1, float h) {
     float m_10 = (1.0 - mu);
     float m5_ = ((((m_10 * m_10) * m_10) * m_10) * m_10);
     float a_18 = (((f0_1 + ((1.0 - f0_1) * 0.46266437)) * (1.0 - h)) / 0.05665278);
-    float r_7 = ((f0_1 + ((1.0 - f0_1) * m5_)) - (((a_18 * mu) * m5_) * m_10));
-    return min(max(r_7, 0.0), 1.0);
+    float r_10 = ((f0_1 + ((1.0 - f0_1) * m5_)) - (((a_18 * mu) * m5_) * m_10));
+    return min(max(r_10, 0.0), 1.0);
 }
 
 vec3 ms_fresnel_eval(MsFresnel fr, float cos_i_4) {
@@ -590,17 +596,17 @@ float ms_ggx_d(vec3 wm_2, vec2 alpha) {
     if (!((z_6 > 0.0))) {
         return 0.0;
     }
-    float x_16 = (wm_2.x / alpha.x);
-    float y_8 = (wm_2.y / alpha.y);
-    float t_6 = (((x_16 * x_16) + (y_8 * y_8)) + (z_6 * z_6));
+    float x_17 = (wm_2.x / alpha.x);
+    float y_4 = (wm_2.y / alpha.y);
+    float t_6 = (((x_17 * x_17) + (y_4 * y_4)) + (z_6 * z_6));
     return (1.0 / ((((MS_PI * alpha.x) * alpha.y) * t_6) * t_6));
 }
 
 float ms_ggx_lambda(vec3 w_3, vec2 alpha_1) {
-    float x_17 = (alpha_1.x * w_3.x);
-    float y_9 = (alpha_1.y * w_3.y);
+    float x_18 = (alpha_1.x * w_3.x);
+    float y_5 = (alpha_1.y * w_3.y);
     float z_7 = abs(w_3.z);
-    float t_7 = ((x_17 * x_17) + (y_9 * y_9));
+    float t_7 = ((x_18 * x_18) + (y_5 * y_5));
     float z2_ = (z_7 * z_7);
     float den = (2.0 * (z2_ + (z_7 * sqrt((z2_ + t_7)))));
     if (!((den > 0.0))) {
@@ -614,10 +620,10 @@ float ms_ggx_lambda(vec3 w_3, vec2 alpha_1) {
 }
 
 float ms_ggx_g1_(vec3 w_4, vec2 alpha_2) {
-    float x_18 = (alpha_2.x * w_4.x);
-    float y_10 = (alpha_2.y * w_4.y);
+    float x_19 = (alpha_2.x * w_4.x);
+    float y_6 = (alpha_2.y * w_4.y);
     float z_8 = abs(w_4.z);
-    float den_1 = (z_8 + sqrt(((z_8 * z_8) + ((x_18 * x_18) + (y_10 * y_10)))));
+    float den_1 = (z_8 + sqrt(((z_8 * z_8) + ((x_19 * x_19) + (y_6 * y_6)))));
     if (!((den_1 > 0.0))) {
         return 0.0;
     }
@@ -676,15 +682,15 @@ float ms_ggx_pdf(vec3 w_5, vec3 wm_3, vec2 alpha_5) {
 
 vec3 ms_ggx_cap_normal_stretched(vec3 w_6, vec3 stretch, vec2 u, float len) {
     float inv = (1.0 / len);
-    float x_19 = ((stretch.x * w_6.x) * inv);
-    float y_11 = ((stretch.y * w_6.y) * inv);
+    float x_20 = ((stretch.x * w_6.x) * inv);
+    float y_7 = ((stretch.y * w_6.y) * inv);
     float z_10 = ((stretch.z * w_6.z) * inv);
     vec2 _e19 = ms_cos_sin_turn(u.x);
     float above = ((1.0 - u.y) * (1.0 + z_10));
-    float sin_ = sqrt(max((u.y * ((above * (1.0 + z_10)) + ((x_19 * x_19) + (y_11 * y_11)))), 0.0));
-    vec3 h_2 = vec3((stretch.x * ((sin_ * _e19.x) + x_19)), (stretch.y * ((sin_ * _e19.y) + y_11)), (stretch.z * above));
-    float n_11 = (1.0 / sqrt((((h_2.x * h_2.x) + (h_2.y * h_2.y)) + (h_2.z * h_2.z))));
-    return (h_2 * n_11);
+    float sin_ = sqrt(max((u.y * ((above * (1.0 + z_10)) + ((x_20 * x_20) + (y_7 * y_7)))), 0.0));
+    vec3 h_3 = vec3((stretch.x * ((sin_ * _e19.x) + x_20)), (stretch.y * ((sin_ * _e19.y) + y_7)), (stretch.z * above));
+    float n_11 = (1.0 / sqrt((((h_3.x * h_3.x) + (h_3.y * h_3.y)) + (h_3.z * h_3.z))));
+    return (h_3 * n_11);
 }
 
 vec3 ms_ggx_cap_normal(vec3 w_7, vec2 alpha_6, vec2 u_1, float len_1) {
@@ -756,8 +762,8 @@ float ms_ggx_pdf_dcos(vec3 wm_4, vec2 alpha_9) {
 
 MsSample ms_ggx_sample_dcos(vec2 alpha_10, vec2 u_4) {
     vec2 _e3 = ms_cos_sin_turn(u_4.y);
-    float r_8 = sqrt(u_4.x);
-    vec3 _e21 = ms_unit_normal(vec3(((alpha_10.x * r_8) * _e3.x), ((alpha_10.y * r_8) * _e3.y), sqrt(max((1.0 - u_4.x), 0.0))));
+    float r_11 = sqrt(u_4.x);
+    vec3 _e21 = ms_unit_normal(vec3(((alpha_10.x * r_11) * _e3.x), ((alpha_10.y * r_11) * _e3.y), sqrt(max((1.0 - u_4.x), 0.0))));
     float _e22 = ms_ggx_d(_e21, alpha_10);
     return MsSample(_e21, (_e22 * _e21.z));
 }
@@ -927,7 +933,57 @@ float ms_stream_next(inout uvec2 state_2) {
     return (float((_e1.y >> 8u)) * 5.9604645e-8);
 }
 
-float ms_zig_sample(uint at, bool normal, float w_11, inout uvec2 state_3) {
+float ms_stream_next_wide(inout uvec2 state_3) {
+    uvec2 _e1 = ms_stream_next_u64_(state_3);
+    float v_12 = ((float(_e1.y) * 2.3283064e-10) + (float((_e1.x >> 11u)) * 1.110223e-16));
+    return min(v_12, 0.99999994);
+}
+
+MsSource ms_source_stream(vec2 u_7) {
+    uvec2 _e1 = ms_stream_new(u_7);
+    return MsSource(_e1, u_7, 2u, 0u);
+}
+
+MsSource ms_source_stream_wide(vec2 u_8) {
+    uvec2 _e1 = ms_stream_new(u_8);
+    return MsSource(_e1, u_8, 2u, 1u);
+}
+
+MsSource ms_source_after_u(vec2 u_9) {
+    uvec2 _e1 = ms_stream_new(u_9);
+    return MsSource(_e1, u_9, 0u, 1u);
+}
+
+float ms_source_next(inout MsSource src) {
+    uvec2 state_4 = uvec2(0u);
+    float v_4 = 0.0;
+    uint _e2 = src.used;
+    if ((_e2 < 2u)) {
+        float _e7 = src.first.y;
+        float _e10 = src.first.x;
+        uint _e12 = src.used;
+        float v_13 = ((_e12 == 0u) ? _e10 : _e7);
+        uint _e18 = src.used;
+        src.used = (_e18 + 1u);
+        return v_13;
+    }
+    uvec2 _e22 = src.state;
+    state_4 = _e22;
+    uint _e26 = src.wide;
+    if ((_e26 == 1u)) {
+        float _e29 = ms_stream_next_wide(state_4);
+        v_4 = _e29;
+    } else {
+        float _e30 = ms_stream_next(state_4);
+        v_4 = _e30;
+    }
+    uvec2 _e32 = state_4;
+    src.state = _e32;
+    float _e33 = v_4;
+    return _e33;
+}
+
+float ms_zig_sample(uint at, bool normal, float w_11, inout MsSource src_1) {
     float y_1 = 0.0;
     uint k_3 = 0u;
     uint i = 0u;
@@ -975,10 +1031,10 @@ float ms_zig_sample(uint at, bool normal, float w_11, inout uvec2 state_3) {
             }
             uint _e44 = i;
             if ((_e44 == 0u)) {
-                float r_9 = layer.z;
+                float r_12 = layer.z;
                 if (!(normal)) {
-                    float _e50 = ms_stream_next(state_3);
-                    return (r_9 - log((1.0 - _e50)));
+                    float _e50 = ms_source_next(src_1);
+                    return (r_12 - log((1.0 - _e50)));
                 }
                 j = 0;
                 bool loop_init_1 = true;
@@ -994,22 +1050,22 @@ float ms_zig_sample(uint at, bool normal, float w_11, inout uvec2 state_3) {
                         break;
                     }
                     {
-                        float _e60 = ms_stream_next(state_3);
-                        float a_20 = (-(log((1.0 - _e60))) / r_9);
-                        float _e66 = ms_stream_next(state_3);
+                        float _e60 = ms_source_next(src_1);
+                        float a_20 = (-(log((1.0 - _e60))) / r_12);
+                        float _e66 = ms_source_next(src_1);
                         float b_11 = -(log((1.0 - _e66)));
                         if (((2.0 * b_11) > (a_20 * a_20))) {
-                            return (r_9 + a_20);
+                            return (r_12 + a_20);
                         }
                     }
                 }
-                return r_9;
+                return r_12;
             }
             float _e80 = layer.y;
-            float _e81 = ms_stream_next(state_3);
+            float _e81 = ms_source_next(src_1);
             float _e83 = layer.w;
             float _e85 = layer.y;
-            float h_3 = (_e80 + (_e81 * (_e83 - _e85)));
+            float h_4 = (_e80 + (_e81 * (_e83 - _e85)));
             float _e89 = x_1;
             f = exp(-(_e89));
             if (normal) {
@@ -1018,11 +1074,11 @@ float ms_zig_sample(uint at, bool normal, float w_11, inout uvec2 state_3) {
                 f = exp(((-0.5 * _e93) * _e96));
             }
             float _e99 = f;
-            if ((h_3 < _e99)) {
+            if ((h_4 < _e99)) {
                 float _e101 = x_1;
                 return _e101;
             }
-            float _e102 = ms_stream_next(state_3);
+            float _e102 = ms_source_next(src_1);
             y_1 = (_e102 * 256.0);
             float _e105 = y_1;
             k_3 = uint(_e105);
@@ -1047,13 +1103,13 @@ float ms_zig_sample(uint at, bool normal, float w_11, inout uvec2 state_3) {
     return _e130;
 }
 
-float ms_zig_exp1_(float w_12, inout uvec2 state_4) {
-    float _e4 = ms_zig_sample(MS_ZIG_EXP_AT, false, w_12, state_4);
+float ms_zig_exp1_(float w_12, inout MsSource src_2) {
+    float _e4 = ms_zig_sample(MS_ZIG_EXP_AT, false, w_12, src_2);
     return _e4;
 }
 
-float ms_zig_half_normal(float w_13, inout uvec2 state_5) {
-    float _e4 = ms_zig_sample(MS_ZIG_NORMAL_AT, true, w_13, state_5);
+float ms_zig_half_normal(float w_13, inout MsSource src_3) {
+    float _e4 = ms_zig_sample(MS_ZIG_NORMAL_AT, true, w_13, src_3);
     return _e4;
 }
 
@@ -1074,8 +1130,8 @@ float ms_bk_erfcx(float x_3) {
         return (1.0 - (1.1283792 * x_3));
     }
     if ((x_3 >= 32.0)) {
-        float r_10 = (1.0 / (x_3 * x_3));
-        return (((1.0 - (r_10 * (0.5 - (r_10 * (0.75 - (r_10 * (1.875 - (r_10 * 6.5625)))))))) * MS_FRAC_1_SQRT_PI) / x_3);
+        float r_13 = (1.0 / (x_3 * x_3));
+        return (((1.0 - (r_13 * (0.5 - (r_13 * (0.75 - (r_13 * (1.875 - (r_13 * 6.5625)))))))) * MS_FRAC_1_SQRT_PI) / x_3);
     }
     vec2 _e30 = ms_bk_segment(x_3, MS_BK_ERFCX_K0_, MS_BK_ERFCX_K1_);
     uint i_4 = (2u * uint(_e30.x));
@@ -1090,8 +1146,8 @@ float ms_bk_erfc_ratio(float a_12) {
         return (1.0 - (MS_SQRT_PI * a_12));
     }
     if ((a_12 >= 32.0)) {
-        float r_11 = (1.0 / (a_12 * a_12));
-        return (r_11 * (0.5 - (r_11 * (0.75 - (r_11 * (1.875 - (r_11 * (6.5625 - (r_11 * 29.53125)))))))));
+        float r_14 = (1.0 / (a_12 * a_12));
+        return (r_14 * (0.5 - (r_14 * (0.75 - (r_14 * (1.875 - (r_14 * (6.5625 - (r_14 * 29.53125)))))))));
     }
     vec2 _e28 = ms_bk_segment(a_12, MS_BK_ERFC_RATIO_K0_, MS_BK_ERFC_RATIO_K1_);
     uint i_5 = (2u * uint(_e28.x));
@@ -1101,11 +1157,11 @@ float ms_bk_erfc_ratio(float a_12) {
     return _e46;
 }
 
-float ms_bk_quantile(float u_7) {
+float ms_bk_quantile(float u_10) {
     float sign_ = 1.0;
     float ratio = 0.0;
-    float q_3 = (2.0 * min(u_7, (1.0 - u_7)));
-    if ((u_7 < 0.5)) {
+    float q_3 = (2.0 * min(u_10, (1.0 - u_10)));
+    if ((u_10 < 0.5)) {
         sign_ = -1.0;
     }
     if (!((q_3 > 0.0))) {
@@ -1146,9 +1202,9 @@ float ms_bk_ln_1m(float xi) {
 float ms_beckmann_d(vec3 wm_6, vec2 alpha_15) {
     bool local_9 = false;
     float z_11 = wm_6.z;
-    float r_12 = (1.0 / (alpha_15.x * alpha_15.y));
-    float x_20 = ((wm_6.x * alpha_15.y) * r_12);
-    float y_12 = ((wm_6.y * alpha_15.x) * r_12);
+    float r_15 = (1.0 / (alpha_15.x * alpha_15.y));
+    float x_21 = ((wm_6.x * alpha_15.y) * r_15);
+    float y_8 = ((wm_6.y * alpha_15.x) * r_15);
     float z2_1 = (z_11 * z_11);
     if ((z_11 > 0.0)) {
         local_9 = (z2_1 > 0.0);
@@ -1159,11 +1215,11 @@ float ms_beckmann_d(vec3 wm_6, vec2 alpha_15) {
     if (!(_e24)) {
         return 0.0;
     }
-    float e_5 = (((x_20 * x_20) + (y_12 * y_12)) / z2_1);
+    float e_5 = (((x_21 * x_21) + (y_8 * y_8)) / z2_1);
     if ((e_5 <= 80.0)) {
-        return ((exp(-(e_5)) * r_12) / ((MS_PI * z2_1) * z2_1));
+        return ((exp(-(e_5)) * r_15) / ((MS_PI * z2_1) * z2_1));
     }
-    return exp((((log(r_12) - 1.14473) - (4.0 * log(z_11))) - e_5));
+    return exp((((log(r_15) - 1.14473) - (4.0 * log(z_11))) - e_5));
 }
 
 float ms_beckmann_lambda_cot(float a_13) {
@@ -1179,9 +1235,9 @@ float ms_beckmann_lambda_cot(float a_13) {
 }
 
 float ms_beckmann_lambda(vec3 w_14, vec2 alpha_16) {
-    float x_21 = (alpha_16.x * w_14.x);
-    float y_13 = (alpha_16.y * w_14.y);
-    float s_16 = sqrt(((x_21 * x_21) + (y_13 * y_13)));
+    float x_22 = (alpha_16.x * w_14.x);
+    float y_9 = (alpha_16.y * w_14.y);
+    float s_16 = sqrt(((x_22 * x_22) + (y_9 * y_9)));
     if (!((s_16 > 0.0))) {
         return 0.0;
     }
@@ -1253,27 +1309,27 @@ float ms_beckmann_pdf_dcos(vec3 wm_8, vec2 alpha_21) {
     return (_e7 * wm_8.z);
 }
 
-MsSample ms_beckmann_sample_dcos(vec2 alpha_22, vec2 u_8) {
-    vec3 v_4 = vec3(0.0);
-    vec2 _e3 = ms_cos_sin_turn(u_8.y);
-    if ((u_8.x >= 1.0)) {
-        v_4 = vec3((alpha_22.x * _e3.x), (alpha_22.y * _e3.y), 0.0);
+MsSample ms_beckmann_sample_dcos(vec2 alpha_22, vec2 u_11) {
+    vec3 v_5 = vec3(0.0);
+    vec2 _e3 = ms_cos_sin_turn(u_11.y);
+    if ((u_11.x >= 1.0)) {
+        v_5 = vec3((alpha_22.x * _e3.x), (alpha_22.y * _e3.y), 0.0);
     } else {
-        float _e17 = ms_bk_ln_1m(u_8.x);
-        float r_13 = sqrt(-(_e17));
-        if ((r_13 > 1.0)) {
-            v_4 = vec3((alpha_22.x * _e3.x), (alpha_22.y * _e3.y), (1.0 / r_13));
+        float _e17 = ms_bk_ln_1m(u_11.x);
+        float r_16 = sqrt(-(_e17));
+        if ((r_16 > 1.0)) {
+            v_5 = vec3((alpha_22.x * _e3.x), (alpha_22.y * _e3.y), (1.0 / r_16));
         } else {
-            v_4 = vec3(((alpha_22.x * r_13) * _e3.x), ((alpha_22.y * r_13) * _e3.y), 1.0);
+            v_5 = vec3(((alpha_22.x * r_16) * _e3.x), ((alpha_22.y * r_16) * _e3.y), 1.0);
         }
     }
-    vec3 _e41 = v_4;
+    vec3 _e41 = v_5;
     vec3 _e42 = ms_unit_normal(_e41);
     float _e43 = ms_beckmann_d(_e42, alpha_22);
     return MsSample(_e42, (_e43 * _e42.z));
 }
 
-float ms_bk_visible_x(float a_14, float u_9) {
+float ms_bk_visible_x(float a_14, float u_12) {
     float lo_1 = 0.0;
     float hi_1 = 8.0;
     float x_4 = 0.0;
@@ -1287,14 +1343,14 @@ float ms_bk_visible_x(float a_14, float u_9) {
     float erfc_a = (_e5 * ea);
     float half_ea = (0.2820948 * ea);
     float z_13 = (((0.5 * a_14) * (2.0 - erfc_a)) + half_ea);
-    float target_lo = (u_9 * z_13);
-    float target_hi = ((1.0 - u_9) * z_13);
+    float target_lo = (u_12 * z_13);
+    float target_hi = ((1.0 - u_12) * z_13);
     lo_1 = -(a_14);
     if ((a_14 >= 1.0)) {
-        float _e26 = ms_bk_quantile(u_9);
+        float _e26 = ms_bk_quantile(u_12);
         x_4 = _e26;
     } else {
-        float _e27 = ms_bk_ln_1m(u_9);
+        float _e27 = ms_bk_ln_1m(u_12);
         x_4 = (sqrt(-(_e27)) - a_14);
     }
     float _e31 = x_4;
@@ -1403,7 +1459,7 @@ float ms_bk_visible_x(float a_14, float u_9) {
     return _e159;
 }
 
-vec3 ms_beckmann_sample_wm(vec3 w_17, vec2 alpha_23, vec2 u_10) {
+vec3 ms_beckmann_sample_wm(vec3 w_17, vec2 alpha_23, vec2 u_13) {
     float sign_1 = 1.0;
     float x_5 = 0.0;
     float cp = 1.0;
@@ -1417,16 +1473,16 @@ vec3 ms_beckmann_sample_wm(vec3 w_17, vec2 alpha_23, vec2 u_10) {
     float sy_1 = ((_e14 * alpha_23.y) * w_17.y);
     float _e19 = sign_1;
     float c_20 = (_e19 * w_17.z);
-    float h_4 = sqrt(((sx_1 * sx_1) + (sy_1 * sy_1)));
-    float _e27 = ms_bk_quantile(u_10.y);
-    if ((h_4 > 0.0)) {
-        float inv_1 = (1.0 / h_4);
+    float h_5 = sqrt(((sx_1 * sx_1) + (sy_1 * sy_1)));
+    float _e27 = ms_bk_quantile(u_13.y);
+    if ((h_5 > 0.0)) {
+        float inv_1 = (1.0 / h_5);
         cp = (sx_1 * inv_1);
         sp = (sy_1 * inv_1);
-        float _e41 = ms_bk_visible_x((c_20 * inv_1), u_10.x);
+        float _e41 = ms_bk_visible_x((c_20 * inv_1), u_13.x);
         x_5 = _e41;
     } else {
-        float _e43 = ms_bk_quantile(u_10.x);
+        float _e43 = ms_bk_quantile(u_13.x);
         x_5 = _e43;
     }
     float _e45 = cp;
@@ -1442,8 +1498,8 @@ vec3 ms_beckmann_sample_wm(vec3 w_17, vec2 alpha_23, vec2 u_10) {
     return _e71;
 }
 
-MsSample ms_beckmann_sample(vec3 w_18, vec2 alpha_24, vec2 u_11) {
-    vec3 _e3 = ms_beckmann_sample_wm(w_18, alpha_24, u_11);
+MsSample ms_beckmann_sample(vec3 w_18, vec2 alpha_24, vec2 u_14) {
+    vec3 _e3 = ms_beckmann_sample_wm(w_18, alpha_24, u_14);
     vec3 _e4 = ms_unit(w_18);
     float _e5 = ms_beckmann_pdf(_e4, _e3, alpha_24);
     return MsSample(_e3, _e5);
@@ -1468,17 +1524,17 @@ float ms_dg_lambda_table(float x_7) {
     return _e13;
 }
 
-float ms_dg_lambda_ends(float u_12, float a_15) {
-    float x_22 = ((((0.5 * a_15) * a_15) * ((1.0 - u_12) * (1.0 + u_12))) / (u_12 * u_12));
-    if ((x_22 < 9.313226e-10)) {
-        if ((x_22 <= 0.0)) {
+float ms_dg_lambda_ends(float u_15, float a_15) {
+    float x_23 = ((((0.5 * a_15) * a_15) * ((1.0 - u_15) * (1.0 + u_15))) / (u_15 * u_15));
+    if ((x_23 < 9.313226e-10)) {
+        if ((x_23 <= 0.0)) {
             return 0.0;
         }
-        return ((0.5 * x_22) * (0.42278433 - log((0.5 * x_22))));
+        return ((0.5 * x_23) * (0.42278433 - log((0.5 * x_23))));
     }
-    float sx_2 = ((a_15 * sqrt(((0.5 * (1.0 - u_12)) * (1.0 + u_12)))) / u_12);
-    float r_14 = (1.0 / (sx_2 * sx_2));
-    return (((1.2533141 * sx_2) * (1.0 + (r_14 * (0.125 - (r_14 * 0.0234375))))) - 0.5);
+    float sx_2 = ((a_15 * sqrt(((0.5 * (1.0 - u_15)) * (1.0 + u_15)))) / u_15);
+    float r_17 = (1.0 / (sx_2 * sx_2));
+    return (((1.2533141 * sx_2) * (1.0 + (r_17 * (0.125 - (r_17 * 0.0234375))))) - 0.5);
 }
 
 float ms_double_ggx_lambda(vec3 w_19, vec2 alpha_25) {
@@ -1486,10 +1542,10 @@ float ms_double_ggx_lambda(vec3 w_19, vec2 alpha_25) {
     bool local_14 = false;
     float a_16 = 0.0;
     bool local_15 = false;
-    float u_40 = abs(w_19.z);
+    float u_43 = abs(w_19.z);
     if ((alpha_25.x == alpha_25.y)) {
         float a_21 = alpha_25.x;
-        x_8 = ((((0.5 * a_21) * a_21) * ((1.0 - u_40) * (1.0 + u_40))) / (u_40 * u_40));
+        x_8 = ((((0.5 * a_21) * a_21) * ((1.0 - u_43) * (1.0 + u_43))) / (u_43 * u_43));
     } else {
         float sx_3 = (alpha_25.x * w_19.x);
         float sy_2 = (alpha_25.y * w_19.y);
@@ -1520,7 +1576,7 @@ float ms_double_ggx_lambda(vec3 w_19, vec2 alpha_25) {
         a_16 = sqrt((((((alpha_25.x * alpha_25.x) * w_19.x) * w_19.x) + (((alpha_25.y * alpha_25.y) * w_19.y) * w_19.y)) / s2_1));
     }
     float _e82 = a_16;
-    float _e83 = ms_dg_lambda_ends(u_40, _e82);
+    float _e83 = ms_dg_lambda_ends(u_43, _e82);
     return _e83;
 }
 
@@ -1572,10 +1628,10 @@ float ms_dg_kernel_row(uint i_1, float s_4) {
 float ms_double_ggx_d(vec3 wm_9, vec2 alpha_29) {
     bool local_17 = false;
     float z_14 = wm_9.z;
-    float r_15 = (1.0 / (alpha_29.x * alpha_29.y));
-    float x_23 = ((wm_9.x * alpha_29.y) * r_15);
-    float y_14 = ((wm_9.y * alpha_29.x) * r_15);
-    float q_5 = ((x_23 * x_23) + (y_14 * y_14));
+    float r_18 = (1.0 / (alpha_29.x * alpha_29.y));
+    float x_24 = ((wm_9.x * alpha_29.y) * r_18);
+    float y_10 = ((wm_9.y * alpha_29.x) * r_18);
+    float q_5 = ((x_24 * x_24) + (y_10 * y_10));
     if (!((z_14 > 0.0))) {
         return ((z_14 != z_14) ? z_14 : 0.0);
     }
@@ -1590,12 +1646,12 @@ float ms_double_ggx_d(vec3 wm_9, vec2 alpha_29) {
     if (_e34) {
         vec2 _e38 = ms_fam_segment(t_10, MS_DG_D_K0_, MS_DG_D_K1_, MS_DG_D_M);
         float _e42 = ms_dg_kernel_row(uint(_e38.x), _e38.y);
-        return ((_e42 * r_15) / ((MS_PI * z2_2) * z2_2));
+        return ((_e42 * r_18) / ((MS_PI * z2_2) * z2_2));
     }
     if ((t_10 < 9.313226e-10)) {
-        return (r_15 / ((MS_PI * z2_2) * z2_2));
+        return (r_18 / ((MS_PI * z2_2) * z2_2));
     }
-    return (((((log(q_5) - (2.0 * log(z_14))) - MS_EULER_GAMMA) - 1.0) * r_15) / ((MS_PI * q_5) * q_5));
+    return (((((log(q_5) - (2.0 * log(z_14))) - MS_EULER_GAMMA) - 1.0) * r_18) / ((MS_PI * q_5) * q_5));
 }
 
 float ms_double_ggx_pdf(vec3 w_21, vec3 wm_10, vec2 alpha_30) {
@@ -1632,23 +1688,23 @@ float ms_double_ggx_pdf_dcos(vec3 wm_11, vec2 alpha_31) {
     return (_e7 * wm_11.z);
 }
 
-MsSample ms_double_ggx_sample_dcos(vec2 alpha_32, vec2 u_13) {
-    uvec2 state_6 = uvec2(0u);
-    uvec2 _e2 = ms_stream_new(u_13);
-    state_6 = _e2;
-    float _e4 = ms_stream_next(state_6);
-    float _e5 = ms_zig_exp1_(_e4, state_6);
+MsSample ms_double_ggx_sample_dcos(vec2 alpha_32, vec2 u_16) {
+    MsSource src_4 = MsSource(uvec2(0u), vec2(0.0), 0u, 0u);
+    MsSource _e2 = ms_source_stream(u_16);
+    src_4 = _e2;
+    float _e4 = ms_source_next(src_4);
+    float _e5 = ms_zig_exp1_(_e4, src_4);
     float t_11 = max(_e5, 1e-36);
-    vec2 _e9 = ms_cos_sin_turn(u_13.y);
-    float r_16 = sqrt(u_13.x);
-    vec3 _e28 = ms_unit_normal(vec3(((alpha_32.x * r_16) * _e9.x), ((alpha_32.y * r_16) * _e9.y), sqrt((t_11 * max((1.0 - u_13.x), 0.0)))));
+    vec2 _e9 = ms_cos_sin_turn(u_16.y);
+    float r_19 = sqrt(u_16.x);
+    vec3 _e28 = ms_unit_normal(vec3(((alpha_32.x * r_19) * _e9.x), ((alpha_32.y * r_19) * _e9.y), sqrt((t_11 * max((1.0 - u_16.x), 0.0)))));
     float _e29 = ms_double_ggx_d(_e28, alpha_32);
     return MsSample(_e28, (_e29 * _e28.z));
 }
 
-vec3 ms_double_ggx_sample_wm(vec3 w_in_3, vec2 alpha_33, vec2 u_14) {
+vec3 ms_double_ggx_sample_wm(vec3 w_in_3, vec2 alpha_33, vec2 u_17) {
     vec3 w_22 = vec3(0.0);
-    uvec2 state_7 = uvec2(0u);
+    MsSource src_5 = MsSource(uvec2(0u), vec2(0.0), 0u, 0u);
     float s_5 = 1.0;
     float len_2 = 1.0;
     int n_3 = 0;
@@ -1665,17 +1721,17 @@ vec3 ms_double_ggx_sample_wm(vec3 w_in_3, vec2 alpha_33, vec2 u_14) {
     float _e17 = w_22.y;
     float sy_3 = (alpha_33.y * _e17);
     float c_21 = w_22.z;
-    float h_5 = sqrt(((sx_4 * sx_4) + (sy_3 * sy_3)));
-    if (!((abs((c_21 + h_5)) <= 3.4028235e38))) {
-        return vec3((c_21 + h_5));
+    float h_6 = sqrt(((sx_4 * sx_4) + (sy_3 * sy_3)));
+    if (!((abs((c_21 + h_6)) <= 3.4028235e38))) {
+        return vec3((c_21 + h_6));
     }
     float e_7 = (2.0 * c_21);
-    float g = (MS_SQRT_PI * h_5);
+    float g = (MS_SQRT_PI * h_6);
     float p_exp = (e_7 / (e_7 + g));
     float inv_p = min(((e_7 + g) / e_7), 3.4028235e38);
     float inv_q = min(((e_7 + g) / g), 3.4028235e38);
-    uvec2 _e46 = ms_stream_new(u_14);
-    state_7 = _e46;
+    MsSource _e46 = ms_source_stream(u_17);
+    src_5 = _e46;
     bool loop_init_3 = true;
     while(true) {
         if (!loop_init_3) {
@@ -1689,13 +1745,13 @@ vec3 ms_double_ggx_sample_wm(vec3 w_in_3, vec2 alpha_33, vec2 u_14) {
             break;
         }
         {
-            float _e57 = ms_stream_next(state_7);
+            float _e57 = ms_source_next(src_5);
             t = 0.0;
             if ((_e57 < p_exp)) {
-                float _e62 = ms_zig_exp1_((_e57 * inv_p), state_7);
+                float _e62 = ms_zig_exp1_((_e57 * inv_p), src_5);
                 t = _e62;
             } else {
-                float _e65 = ms_zig_half_normal(((_e57 - p_exp) * inv_q), state_7);
+                float _e65 = ms_zig_half_normal(((_e57 - p_exp) * inv_q), src_5);
                 t = ((0.5 * _e65) * _e65);
             }
             float _e69 = t;
@@ -1703,12 +1759,12 @@ vec3 ms_double_ggx_sample_wm(vec3 w_in_3, vec2 alpha_33, vec2 u_14) {
             float _e72 = t;
             s_5 = sqrt(_e72);
             float _e75 = t;
-            len_2 = sqrt((((c_21 * c_21) * _e75) + (h_5 * h_5)));
-            float _e80 = ms_stream_next(state_7);
+            len_2 = sqrt((((c_21 * c_21) * _e75) + (h_6 * h_6)));
+            float _e80 = ms_source_next(src_5);
             float _e81 = s_5;
             float _e85 = s_5;
             float _e87 = len_2;
-            if (((_e80 * ((e_7 * _e81) + h_5)) <= ((c_21 * _e85) + _e87))) {
+            if (((_e80 * ((e_7 * _e81) + h_6)) <= ((c_21 * _e85) + _e87))) {
                 break;
             }
         }
@@ -1716,14 +1772,14 @@ vec3 ms_double_ggx_sample_wm(vec3 w_in_3, vec2 alpha_33, vec2 u_14) {
     vec3 _e93 = w_22;
     float _e94 = s_5;
     float _e96 = len_2;
-    vec3 _e97 = ms_ggx_cap_normal_stretched(_e93, vec3(alpha_33, _e94), u_14, _e96);
+    vec3 _e97 = ms_ggx_cap_normal_stretched(_e93, vec3(alpha_33, _e94), u_17, _e96);
     vec3 _e98 = w_22;
     vec3 _e99 = ms_facing(_e97, _e98);
     return _e99;
 }
 
-MsSample ms_double_ggx_sample(vec3 w_23, vec2 alpha_34, vec2 u_15) {
-    vec3 _e3 = ms_double_ggx_sample_wm(w_23, alpha_34, u_15);
+MsSample ms_double_ggx_sample(vec3 w_23, vec2 alpha_34, vec2 u_18) {
+    vec3 _e3 = ms_double_ggx_sample_wm(w_23, alpha_34, u_18);
     vec3 _e4 = ms_unit(w_23);
     float _e5 = ms_double_ggx_pdf(_e4, _e3, alpha_34);
     return MsSample(_e3, _e5);
@@ -1772,10 +1828,10 @@ float ms_exponential_lambda(vec3 w_24, vec2 alpha_35) {
     bool local_19 = false;
     float a_17 = 0.0;
     bool local_20 = false;
-    float u_41 = abs(w_24.z);
+    float u_44 = abs(w_24.z);
     if ((alpha_35.x == alpha_35.y)) {
         float a_22 = alpha_35.x;
-        q_1 = (((4.0 * u_41) * u_41) / ((a_22 * a_22) * ((1.0 - u_41) * (1.0 + u_41))));
+        q_1 = (((4.0 * u_44) * u_44) / ((a_22 * a_22) * ((1.0 - u_44) * (1.0 + u_44))));
     } else {
         float sx_5 = (alpha_35.x * w_24.x);
         float sy_4 = (alpha_35.y * w_24.y);
@@ -1806,7 +1862,7 @@ float ms_exponential_lambda(vec3 w_24, vec2 alpha_35) {
         a_17 = sqrt((((((alpha_35.x * alpha_35.x) * w_24.x) * w_24.x) + (((alpha_35.y * alpha_35.y) * w_24.y) * w_24.y)) / s2_4));
     }
     float _e83 = a_17;
-    float _e92 = ms_exp_lambda_z(((u_41 + u_41) / (_e83 * sqrt(((1.0 - u_41) * (1.0 + u_41))))));
+    float _e92 = ms_exp_lambda_z(((u_44 + u_44) / (_e83 * sqrt(((1.0 - u_44) * (1.0 + u_44))))));
     return _e92;
 }
 
@@ -1843,9 +1899,9 @@ float ms_exponential_g2_separable(vec3 wo_14, vec3 wi_14, vec2 alpha_38) {
 float ms_exponential_d(vec3 wm_12, vec2 alpha_39) {
     bool local_22 = false;
     float z_16 = wm_12.z;
-    float r_17 = (1.0 / (alpha_39.x * alpha_39.y));
-    float x_24 = ((wm_12.x * alpha_39.y) * r_17);
-    float y_15 = ((wm_12.y * alpha_39.x) * r_17);
+    float r_20 = (1.0 / (alpha_39.x * alpha_39.y));
+    float x_25 = ((wm_12.x * alpha_39.y) * r_20);
+    float y_11 = ((wm_12.y * alpha_39.x) * r_20);
     float z2_3 = (z_16 * z_16);
     if ((z_16 > 0.0)) {
         local_22 = (z2_3 > 0.0);
@@ -1856,11 +1912,11 @@ float ms_exponential_d(vec3 wm_12, vec2 alpha_39) {
     if (!(_e24)) {
         return ((z_16 != z_16) ? z_16 : 0.0);
     }
-    float e_8 = ((2.0 * sqrt(((x_24 * x_24) + (y_15 * y_15)))) / z_16);
+    float e_8 = ((2.0 * sqrt(((x_25 * x_25) + (y_11 * y_11)))) / z_16);
     if ((e_8 <= 80.0)) {
-        return (((2.0 * exp(-(e_8))) * r_17) / ((MS_PI * z2_3) * z2_3));
+        return (((2.0 * exp(-(e_8))) * r_20) / ((MS_PI * z2_3) * z2_3));
     }
-    return exp((((log((2.0 * r_17)) - 1.14473) - (4.0 * log(z_16))) - e_8));
+    return exp((((log((2.0 * r_20)) - 1.14473) - (4.0 * log(z_16))) - e_8));
 }
 
 float ms_exponential_pdf(vec3 w_26, vec3 wm_13, vec2 alpha_40) {
@@ -1897,32 +1953,32 @@ float ms_exponential_pdf_dcos(vec3 wm_14, vec2 alpha_41) {
     return (_e7 * wm_14.z);
 }
 
-MsSample ms_exponential_sample_dcos(vec2 alpha_42, vec2 u_16) {
-    uvec2 state_8 = uvec2(0u);
-    vec3 v_5 = vec3(0.0);
-    uvec2 _e2 = ms_stream_new(u_16);
-    state_8 = _e2;
-    float _e4 = ms_stream_next(state_8);
-    float _e5 = ms_zig_exp1_(_e4, state_8);
-    float _e7 = ms_bk_ln_1m(u_16.x);
-    float r_18 = (0.5 * (_e5 - _e7));
-    vec2 _e12 = ms_cos_sin_turn(u_16.y);
-    if ((r_18 > 1.0)) {
-        v_5 = vec3((alpha_42.x * _e12.x), (alpha_42.y * _e12.y), (1.0 / r_18));
+MsSample ms_exponential_sample_dcos(vec2 alpha_42, vec2 u_19) {
+    MsSource src_6 = MsSource(uvec2(0u), vec2(0.0), 0u, 0u);
+    vec3 v_6 = vec3(0.0);
+    MsSource _e2 = ms_source_stream(u_19);
+    src_6 = _e2;
+    float _e4 = ms_source_next(src_6);
+    float _e5 = ms_zig_exp1_(_e4, src_6);
+    float _e7 = ms_bk_ln_1m(u_19.x);
+    float r_21 = (0.5 * (_e5 - _e7));
+    vec2 _e12 = ms_cos_sin_turn(u_19.y);
+    if ((r_21 > 1.0)) {
+        v_6 = vec3((alpha_42.x * _e12.x), (alpha_42.y * _e12.y), (1.0 / r_21));
     } else {
-        v_5 = vec3(((alpha_42.x * r_18) * _e12.x), ((alpha_42.y * r_18) * _e12.y), 1.0);
+        v_6 = vec3(((alpha_42.x * r_21) * _e12.x), ((alpha_42.y * r_21) * _e12.y), 1.0);
     }
-    vec3 _e35 = v_5;
+    vec3 _e35 = v_6;
     vec3 _e36 = ms_unit_normal(_e35);
     float _e37 = ms_exponential_d(_e36, alpha_42);
     return MsSample(_e36, (_e37 * _e36.z));
 }
 
-vec3 ms_exponential_sample_wm(vec3 w_in_4, vec2 alpha_43, vec2 u_17) {
+vec3 ms_exponential_sample_wm(vec3 w_in_4, vec2 alpha_43, vec2 u_20) {
     vec3 w_27 = vec3(0.0);
     float cp_1 = 1.0;
     float sp_1 = 0.0;
-    uvec2 state_9 = uvec2(0u);
+    uvec2 state_5 = uvec2(0u);
     float v0_ = 0.0;
     float v1_ = 0.0;
     float x_9 = 0.0;
@@ -1941,22 +1997,22 @@ vec3 ms_exponential_sample_wm(vec3 w_in_4, vec2 alpha_43, vec2 u_17) {
     float _e17 = w_27.y;
     float sy_5 = (alpha_43.y * _e17);
     float e_9 = w_27.z;
-    float h_6 = sqrt(((sx_6 * sx_6) + (sy_5 * sy_5)));
-    if ((h_6 > 0.0)) {
-        cp_1 = (sx_6 / h_6);
-        sp_1 = (sy_5 / h_6);
+    float h_7 = sqrt(((sx_6 * sx_6) + (sy_5 * sy_5)));
+    if ((h_7 > 0.0)) {
+        cp_1 = (sx_6 / h_7);
+        sp_1 = (sy_5 / h_7);
     }
-    if (!((abs((e_9 + h_6)) <= 3.4028235e38))) {
-        return vec3((e_9 + h_6));
+    if (!((abs((e_9 + h_7)) <= 3.4028235e38))) {
+        return vec3((e_9 + h_7));
     }
-    float g_1 = (h_6 * MS_FRAC_1_PI);
+    float g_1 = (h_7 * MS_FRAC_1_PI);
     float total = (e_9 + g_1);
     float inv_p_1 = min((total / e_9), 3.4028235e38);
     float inv_g = min((1.0 / g_1), 3.4028235e38);
-    uvec2 _e50 = ms_stream_new(u_17);
-    state_9 = _e50;
-    v0_ = u_17.x;
-    v1_ = u_17.y;
+    uvec2 _e50 = ms_stream_new(u_20);
+    state_5 = _e50;
+    v0_ = u_20.x;
+    v1_ = u_20.y;
     bool loop_init_4 = true;
     while(true) {
         if (!loop_init_4) {
@@ -1972,27 +2028,27 @@ vec3 ms_exponential_sample_wm(vec3 w_in_4, vec2 alpha_43, vec2 u_17) {
         {
             int _e65 = n_4;
             if ((_e65 > 0)) {
-                float _e68 = ms_stream_next(state_9);
+                float _e68 = ms_stream_next(state_5);
                 v0_ = _e68;
-                float _e69 = ms_stream_next(state_9);
+                float _e69 = ms_stream_next(state_5);
                 v1_ = _e69;
             }
             float _e70 = v1_;
-            float _e73 = ms_stream_next(state_9);
+            float _e73 = ms_stream_next(state_5);
             float prod = ((1.0 - _e70) * (1.0 - _e73));
             float _e77 = v0_;
             float d_19 = ((_e77 * total) - e_9);
             if ((d_19 < 0.0)) {
-                float r_19 = (-0.5 * log(prod));
+                float r_22 = (-0.5 * log(prod));
                 float _e85 = v0_;
                 float turn = (_e85 * inv_p_1);
                 vec2 _e87 = ms_cos_sin_turn(turn);
-                x_9 = (r_19 * _e87.x);
-                y_2 = (r_19 * _e87.y);
+                x_9 = (r_22 * _e87.x);
+                y_2 = (r_22 * _e87.y);
                 if (!((abs((turn - 0.5)) >= 0.25))) {
-                    float _e100 = ms_stream_next(state_9);
+                    float _e100 = ms_stream_next(state_5);
                     float _e102 = x_9;
-                    local_24 = ((_e100 * e_9) <= (e_9 + (h_6 * _e102)));
+                    local_24 = ((_e100 * e_9) <= (e_9 + (h_7 * _e102)));
                 } else {
                     local_24 = true;
                 }
@@ -2001,13 +2057,13 @@ vec3 ms_exponential_sample_wm(vec3 w_in_4, vec2 alpha_43, vec2 u_17) {
                     break;
                 }
             } else {
-                float _e108 = ms_stream_next(state_9);
-                float r_20 = (-0.5 * log((prod * (1.0 - _e108))));
+                float _e108 = ms_stream_next(state_5);
+                float r_23 = (-0.5 * log((prod * (1.0 - _e108))));
                 float one_plus = (2.0 * (d_19 * inv_g));
                 float _e118 = v0_;
                 float one_minus = ((2.0 * (1.0 - _e118)) * (total * inv_g));
-                x_9 = (r_20 * sqrt(max((one_minus * one_plus), 0.0)));
-                y_2 = (r_20 * (one_plus - 1.0));
+                x_9 = (r_23 * sqrt(max((one_minus * one_plus), 0.0)));
+                y_2 = (r_23 * (one_plus - 1.0));
                 break;
             }
         }
@@ -2028,8 +2084,8 @@ vec3 ms_exponential_sample_wm(vec3 w_in_4, vec2 alpha_43, vec2 u_17) {
     return _e158;
 }
 
-MsSample ms_exponential_sample(vec3 w_28, vec2 alpha_44, vec2 u_18) {
-    vec3 _e3 = ms_exponential_sample_wm(w_28, alpha_44, u_18);
+MsSample ms_exponential_sample(vec3 w_28, vec2 alpha_44, vec2 u_21) {
+    vec3 _e3 = ms_exponential_sample_wm(w_28, alpha_44, u_21);
     vec3 _e4 = ms_unit(w_28);
     float _e5 = ms_exponential_pdf(_e4, _e3, alpha_44);
     return MsSample(_e3, _e5);
@@ -2074,48 +2130,48 @@ float ms_shape_lambda(uint table_1, vec3 w_29, vec2 alpha_45) {
     bool local_26 = false;
     float sx_7 = (alpha_45.x * w_29.x);
     float sy_6 = (alpha_45.y * w_29.y);
-    float h_7 = sqrt(((sx_7 * sx_7) + (sy_6 * sy_6)));
+    float h_8 = sqrt(((sx_7 * sx_7) + (sy_6 * sy_6)));
     float z_18 = abs(w_29.z);
-    if (!((h_7 > 0.0))) {
-        if ((h_7 == 0.0)) {
+    if (!((h_8 > 0.0))) {
+        if ((h_8 == 0.0)) {
             local_26 = (z_18 > 0.0);
         } else {
             local_26 = false;
         }
         bool _e25 = local_26;
-        return (_e25 ? 0.0 : h_7);
+        return (_e25 ? 0.0 : h_8);
     }
     if ((z_18 == 0.0)) {
         float _e30 = ms_inf();
         return _e30;
     }
-    float _e32 = ms_shape_lambda_z(table_1, (z_18 / h_7));
+    float _e32 = ms_shape_lambda_z(table_1, (z_18 / h_8));
     return _e32;
 }
 
-float ms_zig_normal(float w_30, inout uvec2 state_10) {
+float ms_zig_normal(float w_30, inout MsSource src_7) {
     if ((w_30 < 0.5)) {
-        float _e6 = ms_zig_half_normal((2.0 * w_30), state_10);
+        float _e6 = ms_zig_half_normal((2.0 * w_30), src_7);
         return -(_e6);
     }
-    float _e12 = ms_zig_half_normal(((2.0 * w_30) - 1.0), state_10);
+    float _e12 = ms_zig_half_normal(((2.0 * w_30) - 1.0), src_7);
     return _e12;
 }
 
-float ms_stream_next_positive(inout uvec2 state_11) {
-    float _e1 = ms_stream_next(state_11);
-    return max(_e1, 2.9802322e-8);
+float ms_source_next_positive(inout MsSource src_8) {
+    float _e1 = ms_source_next(src_8);
+    return max(_e1, 1.110223e-16);
 }
 
-float ms_ln_gamma_variate(float k_in, inout uvec2 state_12) {
+float ms_ln_gamma_variate(float k_in, inout MsSource src_9) {
     float k_5 = 0.0;
     float boost = 0.0;
     int n_5 = 0;
-    float v_6 = 0.0;
+    float v_7 = 0.0;
     k_5 = k_in;
     float _e5 = k_5;
     if ((_e5 < 1.0)) {
-        float _e8 = ms_stream_next_positive(state_12);
+        float _e8 = ms_source_next_positive(src_9);
         float _e10 = k_5;
         boost = (log(_e8) / _e10);
         float _e12 = k_5;
@@ -2137,22 +2193,22 @@ float ms_ln_gamma_variate(float k_in, inout uvec2 state_12) {
             break;
         }
         {
-            float _e28 = ms_stream_next(state_12);
-            float _e29 = ms_zig_normal(_e28, state_12);
-            v_6 = (1.0 + (c_22 * _e29));
-            float _e34 = v_6;
+            float _e28 = ms_source_next(src_9);
+            float _e29 = ms_zig_normal(_e28, src_9);
+            v_7 = (1.0 + (c_22 * _e29));
+            float _e34 = v_7;
             if ((_e34 <= 0.0)) {
                 continue;
             }
-            float _e37 = v_6;
-            float _e38 = v_6;
-            float _e40 = v_6;
-            v_6 = ((_e37 * _e38) * _e40);
-            float _e42 = ms_stream_next_positive(state_12);
-            float _e48 = v_6;
-            float _e51 = v_6;
+            float _e37 = v_7;
+            float _e38 = v_7;
+            float _e40 = v_7;
+            v_7 = ((_e37 * _e38) * _e40);
+            float _e42 = ms_source_next_positive(src_9);
+            float _e48 = v_7;
+            float _e51 = v_7;
             if ((log(_e42) < (((((0.5 * _e29) * _e29) + d_20) - (d_20 * _e48)) + (d_20 * log(_e51))))) {
-                float _e57 = v_6;
+                float _e57 = v_7;
                 float _e60 = boost;
                 return ((log(d_20) + log(_e57)) + _e60);
             }
@@ -2161,106 +2217,123 @@ float ms_ln_gamma_variate(float k_in, inout uvec2 state_12) {
     return uintBitsToFloat(2143289344u);
 }
 
-vec3 ms_beckmann_sample_stream_above(vec3 v_7, vec2 alpha_46, inout uvec2 state_13) {
+vec4 ms_beckmann_sample_stream_above(vec3 v_8, vec2 alpha_46, inout MsSource src_10) {
+    float h_1 = 0.0;
     float cp_2 = 1.0;
     float sp_2 = 0.0;
     float x_10 = 0.0;
     int n_6 = 0;
     bool local_27 = false;
     bool local_28 = false;
-    float sx_8 = (alpha_46.x * v_7.x);
-    float sy_7 = (alpha_46.y * v_7.y);
-    float h_8 = sqrt(((sx_8 * sx_8) + (sy_7 * sy_7)));
-    if ((h_8 == 0.0)) {
-        float _e21 = ms_stream_next(state_13);
-        float _e22 = ms_zig_normal(_e21, state_13);
-        x_10 = (_e22 * 0.70710677);
+    bool local_29 = false;
+    float sx_8 = (alpha_46.x * v_8.x);
+    float sy_7 = (alpha_46.y * v_8.y);
+    float big = max(abs(sx_8), abs(sy_7));
+    if ((big > 0.0)) {
+        float qx = (sx_8 / big);
+        float qy = (sy_7 / big);
+        h_1 = (big * sqrt(((qx * qx) + (qy * qy))));
+    }
+    float _e29 = h_1;
+    if ((_e29 == 0.0)) {
+        float _e32 = ms_source_next(src_10);
+        float _e33 = ms_zig_normal(_e32, src_10);
+        x_10 = (_e33 * 0.70710677);
     } else {
-        cp_2 = (sx_8 / h_8);
-        sp_2 = (sy_7 / h_8);
-        float a_23 = (v_7.z / h_8);
+        float _e36 = h_1;
+        cp_2 = (sx_8 / _e36);
+        float _e38 = h_1;
+        sp_2 = (sy_7 / _e38);
+        float _e41 = h_1;
+        float a_23 = (v_8.z / _e41);
         float p_ray = (0.5 / (0.5 + (a_23 * MS_SQRT_PI)));
         x_10 = uintBitsToFloat(2143289344u);
         bool loop_init_6 = true;
         while(true) {
             if (!loop_init_6) {
-                int _e73 = n_6;
-                n_6 = (_e73 + 1);
+                int _e87 = n_6;
+                n_6 = (_e87 + 1);
             }
             loop_init_6 = false;
-            int _e39 = n_6;
-            if ((_e39 < 64)) {
+            int _e53 = n_6;
+            if ((_e53 < 64)) {
             } else {
                 break;
             }
             {
-                float _e42 = ms_stream_next(state_13);
-                if ((_e42 < p_ray)) {
-                    float _e44 = ms_stream_next_positive(state_13);
-                    x_10 = sqrt(-(log(_e44)));
+                float _e56 = ms_source_next(src_10);
+                if ((_e56 < p_ray)) {
+                    float _e58 = ms_source_next_positive(src_10);
+                    x_10 = sqrt(-(log(_e58)));
                     break;
                 }
-                float _e52 = ms_zig_normal(((_e42 - p_ray) / (1.0 - p_ray)), state_13);
-                float c_23 = (_e52 * 0.70710677);
+                float _e66 = ms_zig_normal(((_e56 - p_ray) / (1.0 - p_ray)), src_10);
+                float c_23 = (_e66 * 0.70710677);
                 if (!((c_23 >= 0.0))) {
                     if ((c_23 > -(a_23))) {
-                        float _e64 = ms_stream_next(state_13);
-                        local_28 = ((_e64 * a_23) < (c_23 + a_23));
+                        float _e78 = ms_source_next(src_10);
+                        local_28 = ((_e78 * a_23) < (c_23 + a_23));
                     } else {
                         local_28 = false;
                     }
-                    bool _e69 = local_28;
-                    local_27 = _e69;
+                    bool _e83 = local_28;
+                    local_27 = _e83;
                 } else {
                     local_27 = true;
                 }
-                bool _e71 = local_27;
-                if (_e71) {
+                bool _e85 = local_27;
+                if (_e85) {
                     x_10 = c_23;
                     break;
                 }
             }
         }
     }
-    float _e75 = ms_stream_next(state_13);
-    float _e76 = ms_zig_normal(_e75, state_13);
-    float y_16 = (_e76 * 0.70710677);
-    float _e80 = cp_2;
-    float _e81 = x_10;
-    float _e83 = sp_2;
-    float p_6 = (alpha_46.x * ((_e80 * _e81) - (_e83 * y_16)));
-    float _e88 = sp_2;
-    float _e89 = x_10;
-    float _e91 = cp_2;
-    float q_8 = (alpha_46.y * ((_e88 * _e89) + (_e91 * y_16)));
-    vec3 _e97 = ms_unit_normal(vec3(p_6, q_8, 1.0));
-    vec3 _e98 = ms_facing(_e97, v_7);
-    return _e98;
+    float _e89 = ms_source_next(src_10);
+    float _e90 = ms_zig_normal(_e89, src_10);
+    float y_12 = (_e90 * 0.70710677);
+    float _e94 = cp_2;
+    float _e95 = x_10;
+    float _e97 = sp_2;
+    float p_6 = (alpha_46.x * ((_e94 * _e95) - (_e97 * y_12)));
+    float _e102 = sp_2;
+    float _e103 = x_10;
+    float _e105 = cp_2;
+    float q_8 = (alpha_46.y * ((_e102 * _e103) + (_e105 * y_12)));
+    vec3 _e111 = ms_unit_normal(vec3(p_6, q_8, 1.0));
+    if ((_e111.z > 0.0)) {
+        float _e117 = ms_dot(_e111, v_8);
+        local_29 = (_e117 > 0.0);
+    } else {
+        local_29 = false;
+    }
+    bool ok = local_29;
+    return vec4(_e111, (ok ? 1.0 : 0.0));
 }
 
-float ms_mixing_ln_beta(uint mixing, float k_6, bool biased, inout uvec2 state_14) {
+float ms_mixing_ln_beta(uint mixing, float k_6, bool biased, inout MsSource src_11) {
     float bias = (biased ? 1.0 : 0.0);
     if ((mixing == 0u)) {
-        float _e13 = ms_ln_gamma_variate((k_6 - (0.5 * bias)), state_14);
+        float _e13 = ms_ln_gamma_variate((k_6 - (0.5 * bias)), src_11);
         return (0.5 * (log(k_6) - _e13));
     }
     if ((mixing == 1u)) {
-        float _e22 = ms_ln_gamma_variate((k_6 + (0.5 * bias)), state_14);
+        float _e22 = ms_ln_gamma_variate((k_6 + (0.5 * bias)), src_11);
         return (0.5 * _e22);
     }
     if ((mixing == 2u)) {
-        float _e27 = ms_stream_next_positive(state_14);
+        float _e27 = ms_source_next_positive(src_11);
         return ((0.5 * log(_e27)) / (1.0 + (0.5 * bias)));
     }
-    float _e36 = ms_stream_next_positive(state_14);
+    float _e36 = ms_source_next_positive(src_11);
     return (log(_e36) / (1.0 + bias));
 }
 
-float ms_posterior_ln_beta(uint mixing_1, float k_7, float mean_beta, float z_3, float h_1, inout uvec2 state_15) {
+float ms_posterior_ln_beta(uint mixing_1, float k_7, float mean_beta, float z_3, float h_2, inout MsSource src_12) {
     int n_7 = 0;
     float keep = 0.0;
-    bool local_29 = false;
-    float p_prior = (z_3 / (z_3 + ((0.2820948 * h_1) * mean_beta)));
+    bool local_30 = false;
+    float p_prior = (z_3 / (z_3 + ((0.2820948 * h_2) * mean_beta)));
     bool loop_init_7 = true;
     while(true) {
         if (!loop_init_7) {
@@ -2274,23 +2347,23 @@ float ms_posterior_ln_beta(uint mixing_1, float k_7, float mean_beta, float z_3,
             break;
         }
         {
-            float _e16 = ms_stream_next(state_15);
+            float _e16 = ms_source_next(src_12);
             bool biased_1 = (_e16 >= p_prior);
-            float _e18 = ms_mixing_ln_beta(mixing_1, k_7, biased_1, state_15);
-            float hb = (h_1 * exp(_e18));
+            float _e18 = ms_mixing_ln_beta(mixing_1, k_7, biased_1, src_12);
+            float hb = (h_2 * exp(_e18));
             keep = 1.0;
             if ((hb > 0.0)) {
-                local_29 = (hb <= 3.4028235e38);
+                local_30 = (hb <= 3.4028235e38);
             } else {
-                local_29 = false;
+                local_30 = false;
             }
-            bool _e30 = local_29;
+            bool _e30 = local_30;
             if (_e30) {
                 float a_24 = (z_3 / hb);
                 float _e37 = ms_bk_erfc_ratio(a_24);
                 keep = ((z_3 + (((0.2820948 * hb) * exp((-(a_24) * a_24))) * _e37)) / (z_3 + (0.2820948 * hb)));
             }
-            float _e43 = ms_stream_next(state_15);
+            float _e43 = ms_source_next(src_12);
             float _e44 = keep;
             if ((_e43 < _e44)) {
                 return _e18;
@@ -2306,10 +2379,9 @@ float ms_mixture_beta(float ln_beta, vec2 alpha_47) {
     return exp(clamp(ln_beta, (-80.0 - lo_6), (80.0 - hi_5)));
 }
 
-vec3 ms_mixture_sample_wm(uint table_2, vec3 w_in_5, vec2 alpha_48, vec2 u_19) {
+vec3 ms_mixture_sample_wm(uint table_2, vec3 w_in_5, vec2 alpha_48, vec2 u_22) {
     vec3 w_31 = vec3(0.0);
-    uvec2 state_16 = uvec2(0u);
-    float ln_beta_1 = 0.0;
+    MsSource src_13 = MsSource(uvec2(0u), vec2(0.0), 0u, 0u);
     vec3 _e4 = ms_unit(w_in_5);
     w_31 = _e4;
     float _e7 = w_31.z;
@@ -2323,27 +2395,27 @@ vec3 ms_mixture_sample_wm(uint table_2, vec3 w_in_5, vec2 alpha_48, vec2 u_19) {
     float _e23 = w_31.y;
     float sy_8 = (alpha_48.y * _e23);
     float h_9 = sqrt(((sx_9 * sx_9) + (sy_8 * sy_8)));
-    uvec2 _e29 = ms_stream_new(u_19);
-    state_16 = _e29;
-    float _e36 = w_31.z;
-    float _e37 = ms_posterior_ln_beta(uint(params.z), params.y, params.x, _e36, h_9, state_16);
-    ln_beta_1 = _e37;
-    float _e39 = ln_beta_1;
-    float _e40 = ln_beta_1;
-    if ((_e39 != _e40)) {
-        ln_beta_1 = log(params.x);
+    float _e30 = w_31.z;
+    if (!((_e30 > 0.0))) {
+        vec3 _e34 = w_31;
+        vec3 _e35 = ms_beckmann_sample_wm(_e34, alpha_48, u_22);
+        return _e35;
     }
-    float _e44 = ln_beta_1;
-    float _e45 = ms_mixture_beta(_e44, alpha_48);
-    float _e47 = w_31.z;
-    if (!((_e47 > 0.0))) {
-        vec3 _e51 = w_31;
-        vec3 _e53 = ms_beckmann_sample_wm(_e51, (_e45 * alpha_48), u_19);
-        return _e53;
+    MsSource _e36 = ms_source_after_u(u_22);
+    src_13 = _e36;
+    float _e43 = w_31.z;
+    float _e44 = ms_posterior_ln_beta(uint(params.z), params.y, params.x, _e43, h_9, src_13);
+    if ((_e44 == _e44)) {
+        vec3 _e46 = w_31;
+        float _e47 = ms_mixture_beta(_e44, alpha_48);
+        vec4 _e49 = ms_beckmann_sample_stream_above(_e46, (_e47 * alpha_48), src_13);
+        if ((_e49.w > 0.0)) {
+            return _e49.xyz;
+        }
     }
     vec3 _e54 = w_31;
-    vec3 _e56 = ms_beckmann_sample_stream_above(_e54, (_e45 * alpha_48), state_16);
-    return _e56;
+    vec3 _e55 = ms_beckmann_sample_wm(_e54, alpha_48, u_22);
+    return _e55;
 }
 
 float ms_mixture_g1_(uint table_3, vec3 w_32, vec2 alpha_49) {
@@ -2365,7 +2437,7 @@ float ms_mixture_g2_separable(uint table_5, vec3 wo_16, vec3 wi_16, vec2 alpha_5
 
 float ms_mixture_pdf(uint table_6, vec3 w_33, vec3 wm_15, vec2 alpha_52, float ln_d) {
     float c_5 = 0.0;
-    bool local_30 = false;
+    bool local_31 = false;
     float z_19 = abs(w_33.z);
     float _e7 = ms_dot(w_33, wm_15);
     c_5 = _e7;
@@ -2375,11 +2447,11 @@ float ms_mixture_pdf(uint table_6, vec3 w_33, vec3 wm_15, vec2 alpha_52, float l
     }
     float _e14 = c_5;
     if ((_e14 > 0.0)) {
-        local_30 = (z_19 > 0.0);
+        local_31 = (z_19 > 0.0);
     } else {
-        local_30 = false;
+        local_31 = false;
     }
-    bool _e22 = local_30;
+    bool _e22 = local_31;
     if (!(_e22)) {
         return 0.0;
     }
@@ -2388,22 +2460,22 @@ float ms_mixture_pdf(uint table_6, vec3 w_33, vec3 wm_15, vec2 alpha_52, float l
     return exp((log((_e25 * (_e26 / z_19))) + ln_d));
 }
 
-vec3 ms_mixture_sample_dcos_wm(uint table_7, vec2 alpha_53, vec2 u_20) {
-    uvec2 state_17 = uvec2(0u);
-    float ln_beta_2 = 0.0;
+vec3 ms_mixture_sample_dcos_wm(uint table_7, vec2 alpha_53, vec2 u_23) {
+    MsSource src_14 = MsSource(uvec2(0u), vec2(0.0), 0u, 0u);
+    float ln_beta_1 = 0.0;
     vec4 params_1 = _group_1_binding_0_cs[(table_7 + 2u)];
-    uvec2 _e8 = ms_stream_new(u_20);
-    state_17 = _e8;
-    float _e14 = ms_mixing_ln_beta(uint(params_1.z), params_1.y, false, state_17);
-    ln_beta_2 = _e14;
-    float _e16 = ln_beta_2;
-    float _e17 = ln_beta_2;
+    MsSource _e8 = ms_source_stream_wide(u_23);
+    src_14 = _e8;
+    float _e14 = ms_mixing_ln_beta(uint(params_1.z), params_1.y, false, src_14);
+    ln_beta_1 = _e14;
+    float _e16 = ln_beta_1;
+    float _e17 = ln_beta_1;
     if ((_e16 != _e17)) {
-        ln_beta_2 = log(params_1.x);
+        ln_beta_1 = log(params_1.x);
     }
-    float _e21 = ln_beta_2;
+    float _e21 = ln_beta_1;
     float _e22 = ms_mixture_beta(_e21, alpha_53);
-    MsSample _e24 = ms_beckmann_sample_dcos((_e22 * alpha_53), u_20);
+    MsSample _e24 = ms_beckmann_sample_dcos((_e22 * alpha_53), u_23);
     return _e24.wm;
 }
 
@@ -2411,10 +2483,16 @@ float ms_mixture_ln_d(float ln_f, vec3 wm_16, vec2 alpha_54) {
     return ((ln_f - log((alpha_54.x * alpha_54.y))) - (4.0 * log(wm_16.z)));
 }
 
-float ms_mixture_r2_(vec3 wm_17, vec2 alpha_55) {
-    float x_25 = (wm_17.x / alpha_55.x);
-    float y_17 = (wm_17.y / alpha_55.y);
-    return (((x_25 * x_25) + (y_17 * y_17)) / (wm_17.z * wm_17.z));
+float ms_mixture_r(vec3 wm_17, vec2 alpha_55) {
+    float x_26 = abs((wm_17.x / alpha_55.x));
+    float y_13 = abs((wm_17.y / alpha_55.y));
+    float big_1 = max(x_26, y_13);
+    if (!((big_1 > 0.0))) {
+        return big_1;
+    }
+    float qx_1 = (x_26 / big_1);
+    float qy_1 = (y_13 / big_1);
+    return ((big_1 * sqrt(((qx_1 * qx_1) + (qy_1 * qy_1)))) / wm_17.z);
 }
 
 float ms_k0e(float z_4) {
@@ -2422,8 +2500,8 @@ float ms_k0e(float z_4) {
         return ((1.0 + z_4) * (-(log((0.5 * z_4))) - MS_EULER_GAMMA));
     }
     if ((z_4 >= 512.0)) {
-        float r_21 = (1.0 / z_4);
-        return (sqrt((1.5707964 * r_21)) * (1.0 - (r_21 * (0.125 - (r_21 * 0.0703125)))));
+        float r_24 = (1.0 / z_4);
+        return (sqrt((1.5707964 * r_24)) * (1.0 - (r_24 * (0.125 - (r_24 * 0.0703125)))));
     }
     vec2 _e29 = ms_bk_segment(z_4, MS_SF_K0E_K0_, MS_SF_K0E_K1_);
     uint i_10 = (MS_SF_K0E_AT + (2u * uint(_e29.x)));
@@ -2438,8 +2516,8 @@ float ms_e1x(float y_3) {
         return (-0.5772157 - log(y_3));
     }
     if ((y_3 >= 512.0)) {
-        float r_22 = (1.0 / y_3);
-        return (r_22 * (1.0 - (r_22 * (1.0 - (r_22 * (2.0 - (r_22 * 6.0)))))));
+        float r_25 = (1.0 / y_3);
+        return (r_25 * (1.0 - (r_25 * (1.0 - (r_25 * (2.0 - (r_25 * 6.0)))))));
     }
     vec2 _e23 = ms_bk_segment(y_3, MS_SF_E1X_K0_, MS_SF_E1X_K1_);
     uint i_11 = (MS_SF_E1X_AT + (2u * uint(_e23.x)));
@@ -2455,11 +2533,11 @@ float ms_student_t_gamma(uint table_8) {
 }
 
 float ms_ln_1p(float t_1) {
-    float v_11 = (1.0 + t_1);
-    if ((v_11 == 1.0)) {
+    float v_14 = (1.0 + t_1);
+    if ((v_14 == 1.0)) {
         return t_1;
     }
-    return (log(v_11) * (t_1 / (v_11 - 1.0)));
+    return (log(v_14) * (t_1 / (v_14 - 1.0)));
 }
 
 float ms_expm1_(float x_11) {
@@ -2475,9 +2553,9 @@ float ms_student_t_d(vec3 wm_18, vec2 alpha_56, uint table_9) {
         return ((z_20 != z_20) ? z_20 : 0.0);
     }
     float _e10 = ms_student_t_gamma(table_9);
-    float x_26 = (wm_18.x / alpha_56.x);
-    float y_18 = (wm_18.y / alpha_56.y);
-    float q_9 = ((x_26 * x_26) + (y_18 * y_18));
+    float x_27 = (wm_18.x / alpha_56.x);
+    float y_14 = (wm_18.y / alpha_56.y);
+    float q_9 = ((x_27 * x_27) + (y_14 * y_14));
     float z2_4 = (z_20 * z_20);
     if ((z_20 > 1e-9)) {
         float t_12 = (q_9 / (z2_4 * (_e10 - 1.0)));
@@ -2489,8 +2567,7 @@ float ms_student_t_d(vec3 wm_18, vec2 alpha_56, uint table_9) {
         }
         return exp((-(e_10) - log(norm)));
     }
-    float ln_z = log(z_20);
-    float ln_d_1 = (((-(_e10) * ((log(q_9) - (2.0 * ln_z)) - log((_e10 - 1.0)))) - (4.0 * ln_z)) - log(((MS_PI * alpha_56.x) * alpha_56.y)));
+    float ln_d_1 = (((-(_e10) * (log(q_9) - log((_e10 - 1.0)))) + (((2.0 * _e10) - 4.0) * log(z_20))) - log(((MS_PI * alpha_56.x) * alpha_56.y)));
     return exp(ln_d_1);
 }
 
@@ -2518,7 +2595,7 @@ float ms_student_t_g2_separable(vec3 wo_18, vec3 wi_18, vec2 alpha_60, uint tabl
 
 float ms_student_t_pdf(vec3 w_36, vec3 wm_19, vec2 alpha_61, uint table_14) {
     float c_6 = 0.0;
-    bool local_31 = false;
+    bool local_32 = false;
     float z_21 = abs(w_36.z);
     float _e6 = ms_dot(w_36, wm_19);
     c_6 = _e6;
@@ -2528,11 +2605,11 @@ float ms_student_t_pdf(vec3 w_36, vec3 wm_19, vec2 alpha_61, uint table_14) {
     }
     float _e13 = c_6;
     if ((_e13 > 0.0)) {
-        local_31 = (z_21 > 0.0);
+        local_32 = (z_21 > 0.0);
     } else {
-        local_31 = false;
+        local_32 = false;
     }
-    bool _e21 = local_31;
+    bool _e21 = local_32;
     if (!(_e21)) {
         return 0.0;
     }
@@ -2550,42 +2627,46 @@ float ms_student_t_pdf_dcos(vec3 wm_20, vec2 alpha_62, uint table_15) {
     return (_e8 * wm_20.z);
 }
 
-MsSample ms_student_t_sample_dcos(vec2 alpha_63, vec2 u_21, uint table_16) {
-    vec3 v_8 = vec3(0.0);
+MsSample ms_student_t_sample_dcos(vec2 alpha_63, vec2 u_24, uint table_16) {
+    vec3 v_9 = vec3(0.0);
     float _e3 = ms_student_t_gamma(table_16);
     float g1_1 = (_e3 - 1.0);
-    float _e7 = ms_bk_ln_1m(u_21.x);
+    float _e7 = ms_bk_ln_1m(u_24.x);
     float _e10 = ms_expm1_((-(_e7) / g1_1));
-    float r_23 = sqrt((g1_1 * _e10));
-    vec2 _e14 = ms_cos_sin_turn(u_21.y);
-    if ((r_23 > 1.0)) {
-        v_8 = vec3((alpha_63.x * _e14.x), (alpha_63.y * _e14.y), (1.0 / r_23));
+    float r_26 = sqrt((g1_1 * _e10));
+    vec2 _e14 = ms_cos_sin_turn(u_24.y);
+    if ((r_26 > 1.0)) {
+        v_9 = vec3((alpha_63.x * _e14.x), (alpha_63.y * _e14.y), (1.0 / r_26));
     } else {
-        v_8 = vec3(((alpha_63.x * r_23) * _e14.x), ((alpha_63.y * r_23) * _e14.y), 1.0);
+        v_9 = vec3(((alpha_63.x * r_26) * _e14.x), ((alpha_63.y * r_26) * _e14.y), 1.0);
     }
-    vec3 _e37 = v_8;
+    vec3 _e37 = v_9;
     vec3 _e38 = ms_unit_normal(_e37);
     float _e39 = ms_student_t_pdf_dcos(_e38, alpha_63, table_16);
     return MsSample(_e38, _e39);
 }
 
-MsSample ms_student_t_sample(vec3 w_37, vec2 alpha_64, vec2 u_22, uint table_17) {
-    vec3 _e4 = ms_mixture_sample_wm(table_17, w_37, alpha_64, u_22);
+MsSample ms_student_t_sample(vec3 w_37, vec2 alpha_64, vec2 u_25, uint table_17) {
+    vec3 _e4 = ms_mixture_sample_wm(table_17, w_37, alpha_64, u_25);
     vec3 _e5 = ms_unit(w_37);
     float _e6 = ms_student_t_pdf(_e5, _e4, alpha_64, table_17);
     return MsSample(_e4, _e6);
 }
 
-float ms_ei_ln_profile(float y_4) {
-    float _e1 = ms_e1x(y_4);
-    return ((log(_e1) - y_4) - 1.14473);
+float ms_ei_ln_profile(float r) {
+    float y_15 = (r * r);
+    if ((y_15 < 5.9604645e-8)) {
+        return ((log((-0.5772157 - (2.0 * log(r)))) - y_15) - 1.14473);
+    }
+    float _e13 = ms_e1x(y_15);
+    return ((log(_e13) - y_15) - 1.14473);
 }
 
 float ms_ei_ln_d(vec3 wm_21, vec2 alpha_65) {
     if (!((wm_21.z > 0.0))) {
         return ((wm_21.z != wm_21.z) ? wm_21.z : -1e30);
     }
-    float _e12 = ms_mixture_r2_(wm_21, alpha_65);
+    float _e12 = ms_mixture_r(wm_21, alpha_65);
     if ((_e12 == 0.0)) {
         return 1e30;
     }
@@ -2637,30 +2718,29 @@ float ms_ei_pdf_dcos(vec3 wm_24, vec2 alpha_72) {
     return (_e7 * wm_24.z);
 }
 
-MsSample ms_ei_sample_dcos(vec2 alpha_73, vec2 u_23, uint table_23) {
-    vec3 _e3 = ms_mixture_sample_dcos_wm(table_23, alpha_73, u_23);
+MsSample ms_ei_sample_dcos(vec2 alpha_73, vec2 u_26, uint table_23) {
+    vec3 _e3 = ms_mixture_sample_dcos_wm(table_23, alpha_73, u_26);
     float _e4 = ms_ei_pdf_dcos(_e3, alpha_73);
     return MsSample(_e3, _e4);
 }
 
-MsSample ms_ei_sample(vec3 w_41, vec2 alpha_74, vec2 u_24, uint table_24) {
-    vec3 _e4 = ms_mixture_sample_wm(table_24, w_41, alpha_74, u_24);
+MsSample ms_ei_sample(vec3 w_41, vec2 alpha_74, vec2 u_27, uint table_24) {
+    vec3 _e4 = ms_mixture_sample_wm(table_24, w_41, alpha_74, u_27);
     vec3 _e5 = ms_unit(w_41);
     float _e6 = ms_ei_pdf(_e5, _e4, alpha_74, table_24);
     return MsSample(_e4, _e6);
 }
 
-float ms_erfc_ln_profile(float y_5) {
-    float r_24 = sqrt(y_5);
-    float _e2 = ms_bk_erfcx(r_24);
-    return (log((_e2 / (3.5449078 * r_24))) - y_5);
+float ms_erfc_ln_profile(float r_1) {
+    float _e1 = ms_bk_erfcx(r_1);
+    return (log((_e1 / (3.5449078 * r_1))) - (r_1 * r_1));
 }
 
 float ms_erfc_ln_d(vec3 wm_25, vec2 alpha_75) {
     if (!((wm_25.z > 0.0))) {
         return ((wm_25.z != wm_25.z) ? wm_25.z : -1e30);
     }
-    float _e12 = ms_mixture_r2_(wm_25, alpha_75);
+    float _e12 = ms_mixture_r(wm_25, alpha_75);
     if ((_e12 == 0.0)) {
         return 1e30;
     }
@@ -2712,30 +2792,30 @@ float ms_erfc_pdf_dcos(vec3 wm_28, vec2 alpha_82) {
     return (_e7 * wm_28.z);
 }
 
-MsSample ms_erfc_sample_dcos(vec2 alpha_83, vec2 u_25, uint table_30) {
-    vec3 _e3 = ms_mixture_sample_dcos_wm(table_30, alpha_83, u_25);
+MsSample ms_erfc_sample_dcos(vec2 alpha_83, vec2 u_28, uint table_30) {
+    vec3 _e3 = ms_mixture_sample_dcos_wm(table_30, alpha_83, u_28);
     float _e4 = ms_erfc_pdf_dcos(_e3, alpha_83);
     return MsSample(_e3, _e4);
 }
 
-MsSample ms_erfc_sample(vec3 w_45, vec2 alpha_84, vec2 u_26, uint table_31) {
-    vec3 _e4 = ms_mixture_sample_wm(table_31, w_45, alpha_84, u_26);
+MsSample ms_erfc_sample(vec3 w_45, vec2 alpha_84, vec2 u_29, uint table_31) {
+    vec3 _e4 = ms_mixture_sample_wm(table_31, w_45, alpha_84, u_29);
     vec3 _e5 = ms_unit(w_45);
     float _e6 = ms_erfc_pdf(_e5, _e4, alpha_84, table_31);
     return MsSample(_e4, _e6);
 }
 
-float ms_k0_ln_profile(float y_6) {
-    float z_22 = (2.0 * sqrt(y_6));
-    float _e4 = ms_k0e(z_22);
-    return (log(((2.0 * _e4) / MS_PI)) - z_22);
+float ms_k0_ln_profile(float r_2) {
+    float z_22 = (2.0 * r_2);
+    float _e3 = ms_k0e(z_22);
+    return (log(((2.0 * _e3) / MS_PI)) - z_22);
 }
 
 float ms_k0_ln_d(vec3 wm_29, vec2 alpha_85) {
     if (!((wm_29.z > 0.0))) {
         return ((wm_29.z != wm_29.z) ? wm_29.z : -1e30);
     }
-    float _e12 = ms_mixture_r2_(wm_29, alpha_85);
+    float _e12 = ms_mixture_r(wm_29, alpha_85);
     if ((_e12 == 0.0)) {
         return 1e30;
     }
@@ -2787,14 +2867,14 @@ float ms_k0_pdf_dcos(vec3 wm_32, vec2 alpha_92) {
     return (_e7 * wm_32.z);
 }
 
-MsSample ms_k0_sample_dcos(vec2 alpha_93, vec2 u_27, uint table_37) {
-    vec3 _e3 = ms_mixture_sample_dcos_wm(table_37, alpha_93, u_27);
+MsSample ms_k0_sample_dcos(vec2 alpha_93, vec2 u_30, uint table_37) {
+    vec3 _e3 = ms_mixture_sample_dcos_wm(table_37, alpha_93, u_30);
     float _e4 = ms_k0_pdf_dcos(_e3, alpha_93);
     return MsSample(_e3, _e4);
 }
 
-MsSample ms_k0_sample(vec3 w_49, vec2 alpha_94, vec2 u_28, uint table_38) {
-    vec3 _e4 = ms_mixture_sample_wm(table_38, w_49, alpha_94, u_28);
+MsSample ms_k0_sample(vec3 w_49, vec2 alpha_94, vec2 u_31, uint table_38) {
+    vec3 _e4 = ms_mixture_sample_wm(table_38, w_49, alpha_94, u_31);
     vec3 _e5 = ms_unit(w_49);
     float _e6 = ms_k0_pdf(_e5, _e4, alpha_94, table_38);
     return MsSample(_e4, _e6);
@@ -2809,35 +2889,34 @@ float ms_bessel_k_h(uint at_1, vec4 head, float x_12) {
     return _e24;
 }
 
-float ms_bessel_k_ln_profile(uint table_39, float y_7) {
+float ms_bessel_k_ln_profile(uint table_39, float x_13) {
     float _e7 = _group_1_binding_0_cs[(table_39 + 2u)].w;
     uint at_2 = (table_39 + uint(_e7));
     vec4 head_2 = _group_1_binding_0_cs[at_2];
-    float x_27 = sqrt(y_7);
-    if (!((x_27 < exp2(head_2.z)))) {
-        return ((x_27 != x_27) ? x_27 : -1e30);
+    if (!((x_13 < exp2(head_2.z)))) {
+        return ((x_13 != x_13) ? x_13 : -1e30);
     }
     float x0_1 = exp2(head_2.y);
-    if ((x_27 < x0_1)) {
-        float _e24 = ms_bessel_k_h(at_2, head_2, x0_1);
-        float h0_ = (_e24 - (2.0 * x0_1));
+    if ((x_13 < x0_1)) {
+        float _e23 = ms_bessel_k_h(at_2, head_2, x0_1);
+        float h0_ = (_e23 - (2.0 * x0_1));
         if ((head_2.x < 0.0)) {
-            return (h0_ + ((2.0 * head_2.x) * log((x_27 / x0_1))));
+            return (h0_ + ((2.0 * head_2.x) * log((x_13 / x0_1))));
         }
         if ((head_2.x == 0.0)) {
-            return (h0_ + log((log(x_27) / log(x0_1))));
+            return (h0_ + log((log(x_13) / log(x0_1))));
         }
         return h0_;
     }
-    float _e46 = ms_bessel_k_h(at_2, head_2, x_27);
-    return (_e46 - (2.0 * x_27));
+    float _e45 = ms_bessel_k_h(at_2, head_2, x_13);
+    return (_e45 - (2.0 * x_13));
 }
 
 float ms_bessel_k_ln_d(vec3 wm_33, vec2 alpha_95, uint table_40) {
     if (!((wm_33.z > 0.0))) {
         return ((wm_33.z != wm_33.z) ? wm_33.z : -1e30);
     }
-    float _e13 = ms_mixture_r2_(wm_33, alpha_95);
+    float _e13 = ms_mixture_r(wm_33, alpha_95);
     if ((_e13 == 0.0)) {
         float _e19 = _group_1_binding_0_cs[table_40].x;
         float nu = (_e19 - 1.0);
@@ -2894,14 +2973,14 @@ float ms_bessel_k_pdf_dcos(vec3 wm_36, vec2 alpha_102, uint table_47) {
     return (_e8 * wm_36.z);
 }
 
-MsSample ms_bessel_k_sample_dcos(vec2 alpha_103, vec2 u_29, uint table_48) {
-    vec3 _e3 = ms_mixture_sample_dcos_wm(table_48, alpha_103, u_29);
+MsSample ms_bessel_k_sample_dcos(vec2 alpha_103, vec2 u_32, uint table_48) {
+    vec3 _e3 = ms_mixture_sample_dcos_wm(table_48, alpha_103, u_32);
     float _e4 = ms_bessel_k_pdf_dcos(_e3, alpha_103, table_48);
     return MsSample(_e3, _e4);
 }
 
-MsSample ms_bessel_k_sample(vec3 w_53, vec2 alpha_104, vec2 u_30, uint table_49) {
-    vec3 _e4 = ms_mixture_sample_wm(table_49, w_53, alpha_104, u_30);
+MsSample ms_bessel_k_sample(vec3 w_53, vec2 alpha_104, vec2 u_33, uint table_49) {
+    vec3 _e4 = ms_mixture_sample_wm(table_49, w_53, alpha_104, u_33);
     vec3 _e5 = ms_unit(w_53);
     float _e6 = ms_bessel_k_pdf(_e5, _e4, alpha_104, table_49);
     return MsSample(_e4, _e6);
@@ -3121,81 +3200,81 @@ float ms_pdf_dcos(MsMicrofacet mf_6, vec3 wm_39) {
     return (_e7 * wm_39.z);
 }
 
-MsSample ms_sample(MsMicrofacet mf_7, vec3 w_57, vec2 u_31) {
+MsSample ms_sample(MsMicrofacet mf_7, vec3 w_57, vec2 u_34) {
     if ((mf_7.ndf == MS_NDF_GGX)) {
-        MsSample _e7 = ms_ggx_sample(w_57, mf_7.alpha, u_31);
+        MsSample _e7 = ms_ggx_sample(w_57, mf_7.alpha, u_34);
         return _e7;
     }
     if ((mf_7.ndf == MS_NDF_BECKMANN)) {
-        MsSample _e12 = ms_beckmann_sample(w_57, mf_7.alpha, u_31);
+        MsSample _e12 = ms_beckmann_sample(w_57, mf_7.alpha, u_34);
         return _e12;
     }
     if ((mf_7.ndf == MS_NDF_DOUBLE_GGX)) {
-        MsSample _e17 = ms_double_ggx_sample(w_57, mf_7.alpha, u_31);
+        MsSample _e17 = ms_double_ggx_sample(w_57, mf_7.alpha, u_34);
         return _e17;
     }
     if ((mf_7.ndf == MS_NDF_EXPONENTIAL)) {
-        MsSample _e22 = ms_exponential_sample(w_57, mf_7.alpha, u_31);
+        MsSample _e22 = ms_exponential_sample(w_57, mf_7.alpha, u_34);
         return _e22;
     }
     if ((mf_7.ndf == MS_NDF_STUDENT_T)) {
-        MsSample _e28 = ms_student_t_sample(w_57, mf_7.alpha, u_31, mf_7.table);
+        MsSample _e28 = ms_student_t_sample(w_57, mf_7.alpha, u_34, mf_7.table);
         return _e28;
     }
     if ((mf_7.ndf == MS_NDF_EI)) {
-        MsSample _e34 = ms_ei_sample(w_57, mf_7.alpha, u_31, mf_7.table);
+        MsSample _e34 = ms_ei_sample(w_57, mf_7.alpha, u_34, mf_7.table);
         return _e34;
     }
     if ((mf_7.ndf == MS_NDF_ERFC)) {
-        MsSample _e40 = ms_erfc_sample(w_57, mf_7.alpha, u_31, mf_7.table);
+        MsSample _e40 = ms_erfc_sample(w_57, mf_7.alpha, u_34, mf_7.table);
         return _e40;
     }
     if ((mf_7.ndf == MS_NDF_K0_)) {
-        MsSample _e46 = ms_k0_sample(w_57, mf_7.alpha, u_31, mf_7.table);
+        MsSample _e46 = ms_k0_sample(w_57, mf_7.alpha, u_34, mf_7.table);
         return _e46;
     }
     if ((mf_7.ndf == MS_NDF_BESSEL_K)) {
-        MsSample _e52 = ms_bessel_k_sample(w_57, mf_7.alpha, u_31, mf_7.table);
+        MsSample _e52 = ms_bessel_k_sample(w_57, mf_7.alpha, u_34, mf_7.table);
         return _e52;
     }
     return MsSample(vec3(0.0, 0.0, 1.0), 0.0);
 }
 
-MsSample ms_sample_dcos(MsMicrofacet mf_8, vec2 u_32) {
+MsSample ms_sample_dcos(MsMicrofacet mf_8, vec2 u_35) {
     if ((mf_8.ndf == MS_NDF_GGX)) {
-        MsSample _e6 = ms_ggx_sample_dcos(mf_8.alpha, u_32);
+        MsSample _e6 = ms_ggx_sample_dcos(mf_8.alpha, u_35);
         return _e6;
     }
     if ((mf_8.ndf == MS_NDF_BECKMANN)) {
-        MsSample _e11 = ms_beckmann_sample_dcos(mf_8.alpha, u_32);
+        MsSample _e11 = ms_beckmann_sample_dcos(mf_8.alpha, u_35);
         return _e11;
     }
     if ((mf_8.ndf == MS_NDF_DOUBLE_GGX)) {
-        MsSample _e16 = ms_double_ggx_sample_dcos(mf_8.alpha, u_32);
+        MsSample _e16 = ms_double_ggx_sample_dcos(mf_8.alpha, u_35);
         return _e16;
     }
     if ((mf_8.ndf == MS_NDF_EXPONENTIAL)) {
-        MsSample _e21 = ms_exponential_sample_dcos(mf_8.alpha, u_32);
+        MsSample _e21 = ms_exponential_sample_dcos(mf_8.alpha, u_35);
         return _e21;
     }
     if ((mf_8.ndf == MS_NDF_STUDENT_T)) {
-        MsSample _e27 = ms_student_t_sample_dcos(mf_8.alpha, u_32, mf_8.table);
+        MsSample _e27 = ms_student_t_sample_dcos(mf_8.alpha, u_35, mf_8.table);
         return _e27;
     }
     if ((mf_8.ndf == MS_NDF_EI)) {
-        MsSample _e33 = ms_ei_sample_dcos(mf_8.alpha, u_32, mf_8.table);
+        MsSample _e33 = ms_ei_sample_dcos(mf_8.alpha, u_35, mf_8.table);
         return _e33;
     }
     if ((mf_8.ndf == MS_NDF_ERFC)) {
-        MsSample _e39 = ms_erfc_sample_dcos(mf_8.alpha, u_32, mf_8.table);
+        MsSample _e39 = ms_erfc_sample_dcos(mf_8.alpha, u_35, mf_8.table);
         return _e39;
     }
     if ((mf_8.ndf == MS_NDF_K0_)) {
-        MsSample _e45 = ms_k0_sample_dcos(mf_8.alpha, u_32, mf_8.table);
+        MsSample _e45 = ms_k0_sample_dcos(mf_8.alpha, u_35, mf_8.table);
         return _e45;
     }
     if ((mf_8.ndf == MS_NDF_BESSEL_K)) {
-        MsSample _e51 = ms_bessel_k_sample_dcos(mf_8.alpha, u_32, mf_8.table);
+        MsSample _e51 = ms_bessel_k_sample_dcos(mf_8.alpha, u_35, mf_8.table);
         return _e51;
     }
     return MsSample(vec3(0.0, 0.0, 1.0), 0.0);
@@ -3209,14 +3288,14 @@ bool ms_on_horizon(float z_5) {
     return !((abs(z_5) >= 1e-18));
 }
 
-bool ms_usable(float v_9) {
-    bool local_32 = false;
-    if ((v_9 >= 1.1754944e-20)) {
-        local_32 = (v_9 <= 3.4028235e38);
+bool ms_usable(float v_10) {
+    bool local_33 = false;
+    if ((v_10 >= 1.1754944e-20)) {
+        local_33 = (v_10 <= 3.4028235e38);
     } else {
-        local_32 = false;
+        local_33 = false;
     }
-    bool _e8 = local_32;
+    bool _e8 = local_33;
     return _e8;
 }
 
@@ -3239,31 +3318,31 @@ vec3 ms_weighted(vec3 fr_1, float k_8) {
 }
 
 vec3 ms_conductor_lobe_normal(MsConductor c_7, vec3 wo_31, vec3 wi_31) {
-    bool local_33 = false;
     bool local_34 = false;
     bool local_35 = false;
+    bool local_36 = false;
     bool _e3 = ms_same_hemisphere(wo_31, wi_31);
     if (!(!(_e3))) {
         bool _e9 = ms_on_horizon(wo_31.z);
-        local_33 = _e9;
-    } else {
-        local_33 = true;
-    }
-    bool _e11 = local_33;
-    if (!(_e11)) {
-        bool _e16 = ms_on_horizon(wi_31.z);
-        local_34 = _e16;
+        local_34 = _e9;
     } else {
         local_34 = true;
     }
-    bool _e18 = local_34;
-    if (!(_e18)) {
-        bool _e23 = ms_effectively_smooth(c_7.mf);
-        local_35 = _e23;
+    bool _e11 = local_34;
+    if (!(_e11)) {
+        bool _e16 = ms_on_horizon(wi_31.z);
+        local_35 = _e16;
     } else {
         local_35 = true;
     }
-    bool _e25 = local_35;
+    bool _e18 = local_35;
+    if (!(_e18)) {
+        bool _e23 = ms_effectively_smooth(c_7.mf);
+        local_36 = _e23;
+    } else {
+        local_36 = true;
+    }
+    bool _e25 = local_36;
     if (_e25) {
         return vec3(0.0);
     }
@@ -3314,8 +3393,8 @@ vec4 ms_conductor_eval_pdf(MsConductor c_10, vec3 wo_34, vec3 wi_34) {
     return vec4(_e22, (_e24 / (4.0 * co)));
 }
 
-MsBsdfSample ms_conductor_sample(MsConductor c_11, vec3 wo_35, float uc, vec2 u_33) {
-    bool local_36 = false;
+MsBsdfSample ms_conductor_sample(MsConductor c_11, vec3 wo_35, float uc, vec2 u_36) {
+    bool local_37 = false;
     MsBsdfSample none = MsBsdfSample(vec3(0.0), 0.0, vec3(0.0), 0u, 1.0);
     bool _e13 = ms_on_horizon(wo_35.z);
     if (_e13) {
@@ -3328,16 +3407,16 @@ MsBsdfSample ms_conductor_sample(MsConductor c_11, vec3 wo_35, float uc, vec2 u_
         vec3 _e29 = ms_fresnel_eval(c_11.fresnel, abs(wo_35.z));
         return MsBsdfSample(wi_51, 1.0, (_e29 * k_12), 3u, 1.0);
     }
-    MsSample _e36 = ms_sample(c_11.mf, wo_35, u_33);
+    MsSample _e36 = ms_sample(c_11.mf, wo_35, u_36);
     vec3 _e38 = ms_reflect(wo_35, _e36.wm);
     bool _e39 = ms_same_hemisphere(wo_35, _e38);
     if (!(!(_e39))) {
         bool _e45 = ms_on_horizon(_e38.z);
-        local_36 = _e45;
+        local_37 = _e45;
     } else {
-        local_36 = true;
+        local_37 = true;
     }
-    bool _e47 = local_36;
+    bool _e47 = local_37;
     if (_e47) {
         return none;
     }
@@ -3363,14 +3442,14 @@ MsBsdfSample ms_conductor_sample(MsConductor c_11, vec3 wo_35, float uc, vec2 u_
 }
 
 bool ms_dielectric_smooth(MsDielectric d_1) {
-    bool local_37 = false;
+    bool local_38 = false;
     if (!((d_1.eta == 1.0))) {
         bool _e8 = ms_effectively_smooth(d_1.mf);
-        local_37 = _e8;
+        local_38 = _e8;
     } else {
-        local_37 = true;
+        local_38 = true;
     }
-    bool _e10 = local_37;
+    bool _e10 = local_38;
     return _e10;
 }
 
@@ -3380,21 +3459,21 @@ float ms_dielectric_g2_(MsDielectric d_2, vec3 wo_36, vec3 wi_35) {
 }
 
 vec4 ms_dielectric_half(MsDielectric d_3, vec3 wo_37, vec3 wi_36) {
-    bool local_38 = false;
+    bool local_39 = false;
     vec3 wm_40 = vec3(0.0);
     float etap_4 = 1.0;
-    bool local_39 = false;
+    bool local_40 = false;
     vec4 none_1 = vec4(0.0);
     float co_2 = wo_37.z;
     float ci_1 = wi_36.z;
     bool _e7 = ms_on_horizon(co_2);
     if (!(_e7)) {
         bool _e11 = ms_on_horizon(ci_1);
-        local_38 = _e11;
+        local_39 = _e11;
     } else {
-        local_38 = true;
+        local_39 = true;
     }
-    bool _e13 = local_38;
+    bool _e13 = local_39;
     if (_e13) {
         return none_1;
     }
@@ -3416,11 +3495,11 @@ vec4 ms_dielectric_half(MsDielectric d_3, vec3 wo_37, vec3 wi_36) {
     if (!(((_e29 * ci_1) < 0.0))) {
         vec3 _e36 = wm_40;
         float _e37 = ms_dot(_e36, wo_37);
-        local_39 = ((_e37 * co_2) < 0.0);
+        local_40 = ((_e37 * co_2) < 0.0);
     } else {
-        local_39 = true;
+        local_40 = true;
     }
-    bool _e42 = local_39;
+    bool _e42 = local_40;
     if (_e42) {
         return none_1;
     }
@@ -3514,11 +3593,11 @@ MsBsdfSample ms_dielectric_sample_smooth(MsDielectric d_7, vec3 wo_41, float uc_
     return MsBsdfSample(wi_53, t_13, vec3(_e54), 7u, _e33.w);
 }
 
-MsBsdfSample ms_dielectric_sample(MsDielectric d_8, vec3 wo_42, float uc_2, vec2 u_34) {
-    bool local_40 = false;
+MsBsdfSample ms_dielectric_sample(MsDielectric d_8, vec3 wo_42, float uc_2, vec2 u_37) {
     bool local_41 = false;
     bool local_42 = false;
     bool local_43 = false;
+    bool local_44 = false;
     MsBsdfSample none_3 = MsBsdfSample(vec3(0.0), 0.0, vec3(0.0), 0u, 1.0);
     bool _e13 = ms_on_horizon(wo_42.z);
     if (_e13) {
@@ -3529,7 +3608,7 @@ MsBsdfSample ms_dielectric_sample(MsDielectric d_8, vec3 wo_42, float uc_2, vec2
         MsBsdfSample _e15 = ms_dielectric_sample_smooth(d_8, wo_42, uc_2);
         return _e15;
     }
-    MsSample _e17 = ms_sample(d_8.mf, wo_42, u_34);
+    MsSample _e17 = ms_sample(d_8.mf, wo_42, u_37);
     vec3 wm_44 = _e17.wm;
     float _e19 = ms_dot(wo_42, wm_44);
     float _e21 = ms_fresnel_dielectric(_e19, d_8.eta);
@@ -3538,11 +3617,11 @@ MsBsdfSample ms_dielectric_sample(MsDielectric d_8, vec3 wo_42, float uc_2, vec2
         bool _e24 = ms_same_hemisphere(wo_42, _e23);
         if (!(!(_e24))) {
             bool _e30 = ms_on_horizon(_e23.z);
-            local_40 = _e30;
+            local_41 = _e30;
         } else {
-            local_40 = true;
+            local_41 = true;
         }
-        bool _e32 = local_40;
+        bool _e32 = local_41;
         if (_e32) {
             return none_3;
         }
@@ -3556,11 +3635,11 @@ MsBsdfSample ms_dielectric_sample(MsDielectric d_8, vec3 wo_42, float uc_2, vec2
         float pdf_1 = ((_e17.pdf * _e21) / (4.0 * abs(_e19)));
         bool _e47 = ms_usable(pdf_1);
         if (!(!(_e47))) {
-            local_41 = !((f_5 <= 3.4028235e38));
+            local_42 = !((f_5 <= 3.4028235e38));
         } else {
-            local_41 = true;
+            local_42 = true;
         }
-        bool _e56 = local_41;
+        bool _e56 = local_42;
         if (_e56) {
             return none_3;
         }
@@ -3575,11 +3654,11 @@ MsBsdfSample ms_dielectric_sample(MsDielectric d_8, vec3 wo_42, float uc_2, vec2
     bool _e68 = ms_same_hemisphere(wo_42, wi_54);
     if (!(_e68)) {
         bool _e73 = ms_on_horizon(wi_54.z);
-        local_42 = _e73;
+        local_43 = _e73;
     } else {
-        local_42 = true;
+        local_43 = true;
     }
-    bool _e75 = local_42;
+    bool _e75 = local_43;
     if (_e75) {
         return none_3;
     }
@@ -3594,25 +3673,25 @@ MsBsdfSample ms_dielectric_sample(MsDielectric d_8, vec3 wo_42, float uc_2, vec2
     float _e86 = ms_dielectric_f_transmission(d_8, wo_42, wi_54, wm_44, _e83, etap_6, t_14);
     bool _e87 = ms_usable(pdf_2);
     if (!(!(_e87))) {
-        local_43 = !((_e86 <= 3.4028235e38));
+        local_44 = !((_e86 <= 3.4028235e38));
     } else {
-        local_43 = true;
+        local_44 = true;
     }
-    bool _e96 = local_43;
+    bool _e96 = local_44;
     if (_e96) {
         return none_3;
     }
     return MsBsdfSample(wi_54, pdf_2, vec3(_e86), 5u, etap_6);
 }
 
-MsLutTap ms_lut_tap(float x_13, uint n_8) {
-    float t_15 = clamp(((x_13 * float(n_8)) - 0.5), 0.0, float((n_8 - 1u)));
+MsLutTap ms_lut_tap(float x_14, uint n_8) {
+    float t_15 = clamp(((x_14 * float(n_8)) - 0.5), 0.0, float((n_8 - 1u)));
     uint i_13 = min(uint(floor(t_15)), (n_8 - 2u));
     return MsLutTap(i_13, (t_15 - float(i_13)));
 }
 
-MsLutTap ms_lut_tap_edges(float x_14, uint n_9) {
-    float t_16 = clamp((x_14 * float((n_9 - 1u))), 0.0, float((n_9 - 1u)));
+MsLutTap ms_lut_tap_edges(float x_15, uint n_9) {
+    float t_16 = clamp((x_15 * float((n_9 - 1u))), 0.0, float((n_9 - 1u)));
     uint i_14 = min(uint(floor(t_16)), (n_9 - 2u));
     return MsLutTap(i_14, (t_16 - float(i_14)));
 }
@@ -3625,10 +3704,10 @@ float ms_lut_lerp(MsLutTap t_3, float v0_1, float v1_1) {
     return (((1.0 - t_3.f) * v0_1) + (t_3.f * v1_1));
 }
 
-float ms_lut_bilerp(MsLutTap r, MsLutTap m_4, float v00_, float v10_, float v01_, float v11_) {
-    float gr = (1.0 - r.f);
+float ms_lut_bilerp(MsLutTap r_3, MsLutTap m_4, float v00_, float v10_, float v01_, float v11_) {
+    float gr = (1.0 - r_3.f);
     float gm = (1.0 - m_4.f);
-    return (((((gr * gm) * v00_) + ((r.f * gm) * v10_)) + ((gr * m_4.f) * v01_)) + ((r.f * m_4.f) * v11_));
+    return (((((gr * gm) * v00_) + ((r_3.f * gm) * v10_)) + ((gr * m_4.f) * v01_)) + ((r_3.f * m_4.f) * v11_));
 }
 
 float ms_lut_roughness_coord(vec2 alpha_105, float alpha_max) {
@@ -3684,15 +3763,15 @@ float ms_conductor_pdf_kulla_conty(MsConductor c_14, vec3 wo_46, vec3 wi_43, flo
     return (((1.0 - _e4) * _e7) + (_e4 * _e9));
 }
 
-vec3 ms_cosine_hemisphere(vec2 u_35) {
-    float r_25 = sqrt(u_35.x);
-    vec2 _e4 = ms_cos_sin_turn(u_35.y);
-    return vec3((r_25 * _e4.x), (r_25 * _e4.y), sqrt(max((1.0 - u_35.x), 0.0)));
+vec3 ms_cosine_hemisphere(vec2 u_38) {
+    float r_27 = sqrt(u_38.x);
+    vec2 _e4 = ms_cos_sin_turn(u_38.y);
+    return vec3((r_27 * _e4.x), (r_27 * _e4.y), sqrt(max((1.0 - u_38.x), 0.0)));
 }
 
-MsBsdfSample ms_conductor_sample_kulla_conty(MsConductor c_15, vec3 wo_47, float uc_3, vec2 u_36, float e_o_6) {
+MsBsdfSample ms_conductor_sample_kulla_conty(MsConductor c_15, vec3 wo_47, float uc_3, vec2 u_39, float e_o_6) {
     vec3 wi_44 = vec3(0.0);
-    bool local_44 = false;
+    bool local_45 = false;
     MsBsdfSample none_4 = MsBsdfSample(vec3(0.0), 0.0, vec3(0.0), 0u, 1.0);
     bool _e14 = ms_on_horizon(wo_47.z);
     if (_e14) {
@@ -3700,20 +3779,20 @@ MsBsdfSample ms_conductor_sample_kulla_conty(MsConductor c_15, vec3 wo_47, float
     }
     float _e15 = ms_kulla_conty_p_ms(e_o_6);
     if ((uc_3 < _e15)) {
-        vec3 _e18 = ms_cosine_hemisphere(u_36);
+        vec3 _e18 = ms_cosine_hemisphere(u_39);
         wi_44 = _e18;
         if ((wo_47.z < 0.0)) {
             float _e24 = wi_44.z;
             wi_44.z = -(_e24);
         }
     } else {
-        MsBsdfSample _e30 = ms_conductor_sample(c_15, wo_47, ((uc_3 - _e15) / (1.0 - _e15)), u_36);
+        MsBsdfSample _e30 = ms_conductor_sample(c_15, wo_47, ((uc_3 - _e15) / (1.0 - _e15)), u_39);
         if (!(((_e30.flags & MS_SAMPLE_VALID) == 0u))) {
-            local_44 = ((_e30.flags & MS_SAMPLE_SPECULAR) != 0u);
+            local_45 = ((_e30.flags & MS_SAMPLE_SPECULAR) != 0u);
         } else {
-            local_44 = true;
+            local_45 = true;
         }
-        bool _e45 = local_44;
+        bool _e45 = local_45;
         if (_e45) {
             return _e30;
         }
@@ -3732,20 +3811,20 @@ MsBsdfSample ms_conductor_sample_kulla_conty(MsConductor c_15, vec3 wo_47, float
 }
 
 MsBsdfSample ms_kulla_conty_sample_f(MsBsdfSample s_6, vec3 wo_48, float e_o_7, float e_i_2, float e_avg_3, vec3 f_ms_1) {
-    bool local_45 = false;
     bool local_46 = false;
+    bool local_47 = false;
     if (!(((s_6.flags & MS_SAMPLE_VALID) == 0u))) {
-        local_45 = ((s_6.flags & MS_SAMPLE_SPECULAR) != 0u);
-    } else {
-        local_45 = true;
-    }
-    bool _e20 = local_45;
-    if (!(_e20)) {
-        local_46 = !(((wo_48.z * s_6.wi.z) > 0.0));
+        local_46 = ((s_6.flags & MS_SAMPLE_SPECULAR) != 0u);
     } else {
         local_46 = true;
     }
-    bool _e32 = local_46;
+    bool _e20 = local_46;
+    if (!(_e20)) {
+        local_47 = !(((wo_48.z * s_6.wi.z) > 0.0));
+    } else {
+        local_47 = true;
+    }
+    bool _e32 = local_47;
     if (_e32) {
         return s_6;
     }
@@ -3753,15 +3832,15 @@ MsBsdfSample ms_kulla_conty_sample_f(MsBsdfSample s_6, vec3 wo_48, float e_o_7, 
     return MsBsdfSample(s_6.wi, s_6.pdf, (s_6.f + (_e36 * f_ms_1)), s_6.flags, s_6.eta);
 }
 
-MsBsdfSample ms_conductor_sample_turquin(MsConductor c_16, vec3 wo_49, float uc_4, vec2 u_37, float e_o_8, vec3 f0_4) {
-    bool local_47 = false;
-    MsBsdfSample _e6 = ms_conductor_sample(c_16, wo_49, uc_4, u_37);
+MsBsdfSample ms_conductor_sample_turquin(MsConductor c_16, vec3 wo_49, float uc_4, vec2 u_40, float e_o_8, vec3 f0_4) {
+    bool local_48 = false;
+    MsBsdfSample _e6 = ms_conductor_sample(c_16, wo_49, uc_4, u_40);
     if (!(((_e6.flags & MS_SAMPLE_VALID) == 0u))) {
-        local_47 = ((_e6.flags & MS_SAMPLE_SPECULAR) != 0u);
+        local_48 = ((_e6.flags & MS_SAMPLE_SPECULAR) != 0u);
     } else {
-        local_47 = true;
+        local_48 = true;
     }
-    bool _e21 = local_47;
+    bool _e21 = local_48;
     if (_e21) {
         return _e6;
     }
@@ -3781,11 +3860,11 @@ float ms_lut_eta_coord(float eta_4) {
     return sqrt((max((eta_4 - 1.0), 0.0) * 0.5));
 }
 
-float ms_lut_trilerp(MsLutTap e, MsLutTap r_1, MsLutTap m_5, vec4 lo_2, vec4 hi_2) {
+float ms_lut_trilerp(MsLutTap e, MsLutTap r_4, MsLutTap m_5, vec4 lo_2, vec4 hi_2) {
     float s_7 = 0.0;
     uint b_6 = 0u;
     vec2 we = vec2((1.0 - e.f), e.f);
-    vec2 wr = vec2((1.0 - r_1.f), r_1.f);
+    vec2 wr = vec2((1.0 - r_4.f), r_4.f);
     vec2 wm_45 = vec2((1.0 - m_5.f), m_5.f);
     bool loop_init_8 = true;
     while(true) {
@@ -3803,23 +3882,23 @@ float ms_lut_trilerp(MsLutTap e, MsLutTap r_1, MsLutTap m_5, vec4 lo_2, vec4 hi_
             uint _e27 = b_6;
             uint _e31 = b_6;
             uint _e35 = b_6;
-            float v_12 = ((_e35 >= 4u) ? hi_2[(_e31 & 3u)] : lo_2[(_e27 & 3u)]);
+            float v_15 = ((_e35 >= 4u) ? hi_2[(_e31 & 3u)] : lo_2[(_e27 & 3u)]);
             float _e39 = s_7;
             uint _e40 = b_6;
             uint _e44 = b_6;
             uint _e51 = b_6;
-            s_7 = (_e39 + (((we[(_e40 & 1u)] * wr[((_e44 >> 1u) & 1u)]) * wm_45[(_e51 >> 2u)]) * v_12));
+            s_7 = (_e39 + (((we[(_e40 & 1u)] * wr[((_e44 >> 1u) & 1u)]) * wm_45[(_e51 >> 2u)]) * v_15));
         }
     }
     float _e61 = s_7;
     return _e61;
 }
 
-float ms_lut_bilerp_eta(MsLutTap e_1, MsLutTap r_2, vec4 v_10) {
+float ms_lut_bilerp_eta(MsLutTap e_1, MsLutTap r_5, vec4 v_11) {
     float s_8 = 0.0;
     uint b_7 = 0u;
     vec2 we_1 = vec2((1.0 - e_1.f), e_1.f);
-    vec2 wr_1 = vec2((1.0 - r_2.f), r_2.f);
+    vec2 wr_1 = vec2((1.0 - r_5.f), r_5.f);
     bool loop_init_9 = true;
     while(true) {
         if (!loop_init_9) {
@@ -3837,7 +3916,7 @@ float ms_lut_bilerp_eta(MsLutTap e_1, MsLutTap r_2, vec4 v_10) {
             uint _e21 = b_7;
             uint _e25 = b_7;
             uint _e30 = b_7;
-            s_8 = (_e20 + ((we_1[(_e21 & 1u)] * wr_1[(_e25 >> 1u)]) * v_10[_e30]));
+            s_8 = (_e20 + ((we_1[(_e21 & 1u)] * wr_1[(_e25 >> 1u)]) * v_11[_e30]));
         }
     }
     float _e37 = s_8;
@@ -3860,16 +3939,16 @@ vec2 ms_dielectric_kulla_conty_k(float eta_5, float f_avg_1, vec2 e_avg_4) {
 }
 
 float ms_dielectric_kulla_conty_lobe(MsDielectric d_9, vec3 wo_50, vec3 wi_45, float e_o_9, float e_i_3, float e_avg_i, float k_o) {
-    bool local_48 = false;
     bool local_49 = false;
-    float f_4 = 0.0;
     bool local_50 = false;
+    float f_4 = 0.0;
+    bool local_51 = false;
     if ((abs(wo_50.z) > 0.0)) {
-        local_48 = (abs(wi_45.z) > 0.0);
+        local_49 = (abs(wi_45.z) > 0.0);
     } else {
-        local_48 = false;
+        local_49 = false;
     }
-    bool _e18 = local_48;
+    bool _e18 = local_49;
     if (!(_e18)) {
         return 0.0;
     }
@@ -3878,21 +3957,21 @@ float ms_dielectric_kulla_conty_lobe(MsDielectric d_9, vec3 wo_50, vec3 wi_45, f
     float share = (crossed ? k_o : (1.0 - k_o));
     float den_4 = (MS_PI * (1.0 - e_avg_i));
     if ((den_4 > 0.0)) {
-        local_49 = (lost > 0.0);
+        local_50 = (lost > 0.0);
     } else {
-        local_49 = false;
+        local_50 = false;
     }
-    bool _e44 = local_49;
+    bool _e44 = local_50;
     if (!(_e44)) {
         return 0.0;
     }
     f_4 = (((share * lost) * max((1.0 - e_i_3), 0.0)) / den_4);
     if (crossed) {
-        local_50 = (d_9.transport == MS_TRANSPORT_RADIANCE);
+        local_51 = (d_9.transport == MS_TRANSPORT_RADIANCE);
     } else {
-        local_50 = false;
+        local_51 = false;
     }
-    bool _e61 = local_50;
+    bool _e61 = local_51;
     if (_e61) {
         float etap_7 = ((wo_50.z > 0.0) ? d_9.eta : (1.0 / d_9.eta));
         float _e70 = f_4;
@@ -3913,15 +3992,15 @@ float ms_dielectric_eval_kulla_conty(MsDielectric d_10, vec3 wo_51, vec3 wi_46, 
 }
 
 float ms_dielectric_eval_turquin(MsDielectric d_11, vec3 wo_52, vec3 wi_47, float e_o_11) {
-    bool local_51 = false;
+    bool local_52 = false;
     float _e4 = ms_dielectric_eval(d_11, wo_52, wi_47);
     bool _e5 = ms_dielectric_smooth(d_11);
     if (!(_e5)) {
-        local_51 = !((e_o_11 > 0.0));
+        local_52 = !((e_o_11 > 0.0));
     } else {
-        local_51 = true;
+        local_52 = true;
     }
-    bool _e13 = local_51;
+    bool _e13 = local_52;
     if (_e13) {
         return _e4;
     }
@@ -3945,10 +4024,10 @@ float ms_dielectric_pdf_kulla_conty(MsDielectric d_12, vec3 wo_54, vec3 wi_49, f
     return (((1.0 - _e7) * _e5) + (_e7 * _e11));
 }
 
-MsBsdfSample ms_dielectric_sample_kulla_conty(MsDielectric d_13, vec3 wo_55, float uc_5, vec2 u_38, float e_o_13, float k_o_4) {
+MsBsdfSample ms_dielectric_sample_kulla_conty(MsDielectric d_13, vec3 wo_55, float uc_5, vec2 u_41, float e_o_13, float k_o_4) {
     vec3 wi_50 = vec3(0.0);
-    bool local_52 = false;
     bool local_53 = false;
+    bool local_54 = false;
     MsBsdfSample none_5 = MsBsdfSample(vec3(0.0), 0.0, vec3(0.0), 0u, 1.0);
     bool _e15 = ms_on_horizon(wo_55.z);
     if (_e15) {
@@ -3956,26 +4035,26 @@ MsBsdfSample ms_dielectric_sample_kulla_conty(MsDielectric d_13, vec3 wo_55, flo
     }
     bool _e16 = ms_dielectric_smooth(d_13);
     if (_e16) {
-        MsBsdfSample _e17 = ms_dielectric_sample(d_13, wo_55, uc_5, u_38);
+        MsBsdfSample _e17 = ms_dielectric_sample(d_13, wo_55, uc_5, u_41);
         return _e17;
     }
     float _e18 = ms_kulla_conty_p_ms(e_o_13);
     if ((uc_5 < _e18)) {
         bool crossed_2 = ((uc_5 / _e18) < k_o_4);
-        vec3 _e23 = ms_cosine_hemisphere(u_38);
+        vec3 _e23 = ms_cosine_hemisphere(u_41);
         wi_50 = _e23;
         if (((wo_55.z > 0.0) == crossed_2)) {
             float _e30 = wi_50.z;
             wi_50.z = -(_e30);
         }
     } else {
-        MsBsdfSample _e38 = ms_dielectric_sample(d_13, wo_55, min(((uc_5 - _e18) / (1.0 - _e18)), 0.99999994), u_38);
+        MsBsdfSample _e38 = ms_dielectric_sample(d_13, wo_55, min(((uc_5 - _e18) / (1.0 - _e18)), 0.99999994), u_41);
         if (!(((_e38.flags & MS_SAMPLE_VALID) == 0u))) {
-            local_52 = ((_e38.flags & MS_SAMPLE_SPECULAR) != 0u);
+            local_53 = ((_e38.flags & MS_SAMPLE_SPECULAR) != 0u);
         } else {
-            local_52 = true;
+            local_53 = true;
         }
-        bool _e53 = local_52;
+        bool _e53 = local_53;
         if (_e53) {
             return _e38;
         }
@@ -3986,11 +4065,11 @@ MsBsdfSample ms_dielectric_sample_kulla_conty(MsDielectric d_13, vec3 wo_55, flo
     bool _e57 = ms_usable(_e56);
     if (!(!(_e57))) {
         float _e63 = wi_50.z;
-        local_53 = (_e63 == 0.0);
+        local_54 = (_e63 == 0.0);
     } else {
-        local_53 = true;
+        local_54 = true;
     }
-    bool _e67 = local_53;
+    bool _e67 = local_54;
     if (_e67) {
         return none_5;
     }
@@ -4008,13 +4087,13 @@ MsBsdfSample ms_dielectric_sample_kulla_conty(MsDielectric d_13, vec3 wo_55, flo
 }
 
 MsBsdfSample ms_dielectric_kulla_conty_sample_f(MsBsdfSample s_9, MsDielectric d_14, vec3 wo_56, float e_o_14, float e_i_5, float e_avg_i_2, float k_o_5) {
-    bool local_54 = false;
+    bool local_55 = false;
     if (!(((s_9.flags & MS_SAMPLE_VALID) == 0u))) {
-        local_54 = ((s_9.flags & MS_SAMPLE_SPECULAR) != 0u);
+        local_55 = ((s_9.flags & MS_SAMPLE_SPECULAR) != 0u);
     } else {
-        local_54 = true;
+        local_55 = true;
     }
-    bool _e21 = local_54;
+    bool _e21 = local_55;
     if (_e21) {
         return s_9;
     }
@@ -4022,22 +4101,22 @@ MsBsdfSample ms_dielectric_kulla_conty_sample_f(MsBsdfSample s_9, MsDielectric d
     return MsBsdfSample(s_9.wi, s_9.pdf, (s_9.f + vec3(_e23)), s_9.flags, s_9.eta);
 }
 
-MsBsdfSample ms_dielectric_sample_turquin(MsDielectric d_15, vec3 wo_57, float uc_6, vec2 u_39, float e_o_15) {
-    bool local_55 = false;
+MsBsdfSample ms_dielectric_sample_turquin(MsDielectric d_15, vec3 wo_57, float uc_6, vec2 u_42, float e_o_15) {
     bool local_56 = false;
-    MsBsdfSample _e5 = ms_dielectric_sample(d_15, wo_57, uc_6, u_39);
+    bool local_57 = false;
+    MsBsdfSample _e5 = ms_dielectric_sample(d_15, wo_57, uc_6, u_42);
     if (!(((_e5.flags & MS_SAMPLE_VALID) == 0u))) {
-        local_55 = ((_e5.flags & MS_SAMPLE_SPECULAR) != 0u);
-    } else {
-        local_55 = true;
-    }
-    bool _e20 = local_55;
-    if (!(_e20)) {
-        local_56 = !((e_o_15 > 0.0));
+        local_56 = ((_e5.flags & MS_SAMPLE_SPECULAR) != 0u);
     } else {
         local_56 = true;
     }
-    bool _e28 = local_56;
+    bool _e20 = local_56;
+    if (!(_e20)) {
+        local_57 = !((e_o_15 > 0.0));
+    } else {
+        local_57 = true;
+    }
+    bool _e28 = local_57;
     if (_e28) {
         return _e5;
     }

@@ -18,6 +18,12 @@ struct MsBoundedCap {
     float b;
     float top;
 };
+struct MsSource {
+    uvec2 state;
+    vec2 first;
+    uint used;
+    uint wide;
+};
 struct MsMicrofacet {
     uint ndf;
     vec2 alpha;
@@ -137,10 +143,10 @@ float ms_inf() {
 
 vec2 ms_cos_sin_turn(float v) {
     float k_10 = roundEven((4.0 * v));
-    float r_3 = (v - (0.25 * k_10));
-    float x_15 = (MS_TAU * r_3);
-    float x2_ = (x_15 * x_15);
-    float s_10 = (x_15 * (1.0 + (x2_ * (-0.16666667 + (x2_ * (0.008333333 + (x2_ * (-0.0001984127 + (x2_ * 2.7557319e-6)))))))));
+    float r_6 = (v - (0.25 * k_10));
+    float x_16 = (MS_TAU * r_6);
+    float x2_ = (x_16 * x_16);
+    float s_10 = (x_16 * (1.0 + (x2_ * (-0.16666667 + (x2_ * (0.008333333 + (x2_ * (-0.0001984127 + (x2_ * 2.7557319e-6)))))))));
     float c_17 = (1.0 + (x2_ * (-0.5 + (x2_ * (0.041666668 + (x2_ * (-0.0013888889 + (x2_ * (2.4801588e-5 + (x2_ * -2.755732e-7))))))))));
     int q_2 = (int(k_10) & 3);
     if ((q_2 == 0)) {
@@ -451,23 +457,23 @@ float ms_cnorm_ratio(vec2 a_6, vec2 b_3) {
 
 vec2 ms_crecip(vec2 a_7) {
     if ((abs(a_7.x) >= abs(a_7.y))) {
-        float r_4 = (a_7.y / a_7.x);
-        float d_16 = (a_7.x + (a_7.y * r_4));
-        return vec2((1.0 / d_16), (-(r_4) / d_16));
+        float r_7 = (a_7.y / a_7.x);
+        float d_16 = (a_7.x + (a_7.y * r_7));
+        return vec2((1.0 / d_16), (-(r_7) / d_16));
     }
-    float r_5 = (a_7.x / a_7.y);
-    float d_17 = ((a_7.x * r_5) + a_7.y);
-    return vec2((r_5 / d_17), (-1.0 / d_17));
+    float r_8 = (a_7.x / a_7.y);
+    float d_17 = ((a_7.x * r_8) + a_7.y);
+    return vec2((r_8 / d_17), (-1.0 / d_17));
 }
 
 vec2 ms_csqrt(vec2 a_8) {
     float s_1 = 0.0;
     float _e1 = ms_cnorm(a_8);
-    float r_6 = sqrt(_e1);
-    if ((r_6 == 0.0)) {
+    float r_9 = sqrt(_e1);
+    if ((r_9 == 0.0)) {
         return vec2(0.0);
     }
-    float t_5 = sqrt(((r_6 + abs(a_8.x)) * 0.5));
+    float t_5 = sqrt(((r_9 + abs(a_8.x)) * 0.5));
     if ((a_8.x >= 0.0)) {
         return vec2(t_5, (a_8.y / (t_5 + t_5)));
     }
@@ -546,8 +552,8 @@ float ms_fresnel_f82_tint(float cos_i_3, float f0_1, float h) {
     float m_10 = (1.0 - mu);
     float m5_ = ((((m_10 * m_10) * m_10) * m_10) * m_10);
     float a_18 = (((f0_1 + ((1.0 - f0_1) * 0.46266437)) * (1.0 - h)) / 0.05665278);
-    float r_7 = ((f0_1 + ((1.0 - f0_1) * m5_)) - (((a_18 * mu) * m5_) * m_10));
-    return min(max(r_7, 0.0), 1.0);
+    float r_10 = ((f0_1 + ((1.0 - f0_1) * m5_)) - (((a_18 * mu) * m5_) * m_10));
+    return min(max(r_10, 0.0), 1.0);
 }
 
 vec3 ms_fresnel_eval(MsFresnel fr, float cos_i_4) {
@@ -588,17 +594,17 @@ float ms_ggx_d(vec3 wm_2, vec2 alpha) {
     if (!((z_6 > 0.0))) {
         return 0.0;
     }
-    float x_16 = (wm_2.x / alpha.x);
-    float y_8 = (wm_2.y / alpha.y);
-    float t_6 = (((x_16 * x_16) + (y_8 * y_8)) + (z_6 * z_6));
+    float x_17 = (wm_2.x / alpha.x);
+    float y_4 = (wm_2.y / alpha.y);
+    float t_6 = (((x_17 * x_17) + (y_4 * y_4)) + (z_6 * z_6));
     return (1.0 / ((((MS_PI * alpha.x) * alpha.y) * t_6) * t_6));
 }
 
 float ms_ggx_lambda(vec3 w_3, vec2 alpha_1) {
-    float x_17 = (alpha_1.x * w_3.x);
-    float y_9 = (alpha_1.y * w_3.y);
+    float x_18 = (alpha_1.x * w_3.x);
+    float y_5 = (alpha_1.y * w_3.y);
     float z_7 = abs(w_3.z);
-    float t_7 = ((x_17 * x_17) + (y_9 * y_9));
+    float t_7 = ((x_18 * x_18) + (y_5 * y_5));
     float z2_ = (z_7 * z_7);
     float den = (2.0 * (z2_ + (z_7 * sqrt((z2_ + t_7)))));
     if (!((den > 0.0))) {
@@ -612,10 +618,10 @@ float ms_ggx_lambda(vec3 w_3, vec2 alpha_1) {
 }
 
 float ms_ggx_g1_(vec3 w_4, vec2 alpha_2) {
-    float x_18 = (alpha_2.x * w_4.x);
-    float y_10 = (alpha_2.y * w_4.y);
+    float x_19 = (alpha_2.x * w_4.x);
+    float y_6 = (alpha_2.y * w_4.y);
     float z_8 = abs(w_4.z);
-    float den_1 = (z_8 + sqrt(((z_8 * z_8) + ((x_18 * x_18) + (y_10 * y_10)))));
+    float den_1 = (z_8 + sqrt(((z_8 * z_8) + ((x_19 * x_19) + (y_6 * y_6)))));
     if (!((den_1 > 0.0))) {
         return 0.0;
     }
@@ -674,15 +680,15 @@ float ms_ggx_pdf(vec3 w_5, vec3 wm_3, vec2 alpha_5) {
 
 vec3 ms_ggx_cap_normal_stretched(vec3 w_6, vec3 stretch, vec2 u, float len) {
     float inv = (1.0 / len);
-    float x_19 = ((stretch.x * w_6.x) * inv);
-    float y_11 = ((stretch.y * w_6.y) * inv);
+    float x_20 = ((stretch.x * w_6.x) * inv);
+    float y_7 = ((stretch.y * w_6.y) * inv);
     float z_10 = ((stretch.z * w_6.z) * inv);
     vec2 _e19 = ms_cos_sin_turn(u.x);
     float above = ((1.0 - u.y) * (1.0 + z_10));
-    float sin_ = sqrt(max((u.y * ((above * (1.0 + z_10)) + ((x_19 * x_19) + (y_11 * y_11)))), 0.0));
-    vec3 h_2 = vec3((stretch.x * ((sin_ * _e19.x) + x_19)), (stretch.y * ((sin_ * _e19.y) + y_11)), (stretch.z * above));
-    float n_11 = (1.0 / sqrt((((h_2.x * h_2.x) + (h_2.y * h_2.y)) + (h_2.z * h_2.z))));
-    return (h_2 * n_11);
+    float sin_ = sqrt(max((u.y * ((above * (1.0 + z_10)) + ((x_20 * x_20) + (y_7 * y_7)))), 0.0));
+    vec3 h_3 = vec3((stretch.x * ((sin_ * _e19.x) + x_20)), (stretch.y * ((sin_ * _e19.y) + y_7)), (stretch.z * above));
+    float n_11 = (1.0 / sqrt((((h_3.x * h_3.x) + (h_3.y * h_3.y)) + (h_3.z * h_3.z))));
+    return (h_3 * n_11);
 }
 
 vec3 ms_ggx_cap_normal(vec3 w_7, vec2 alpha_6, vec2 u_1, float len_1) {
@@ -754,8 +760,8 @@ float ms_ggx_pdf_dcos(vec3 wm_4, vec2 alpha_9) {
 
 MsSample ms_ggx_sample_dcos(vec2 alpha_10, vec2 u_4) {
     vec2 _e3 = ms_cos_sin_turn(u_4.y);
-    float r_8 = sqrt(u_4.x);
-    vec3 _e21 = ms_unit_normal(vec3(((alpha_10.x * r_8) * _e3.x), ((alpha_10.y * r_8) * _e3.y), sqrt(max((1.0 - u_4.x), 0.0))));
+    float r_11 = sqrt(u_4.x);
+    vec3 _e21 = ms_unit_normal(vec3(((alpha_10.x * r_11) * _e3.x), ((alpha_10.y * r_11) * _e3.y), sqrt(max((1.0 - u_4.x), 0.0))));
     float _e22 = ms_ggx_d(_e21, alpha_10);
     return MsSample(_e21, (_e22 * _e21.z));
 }
@@ -925,6 +931,56 @@ float ms_stream_next(inout uvec2 state_2) {
     return (float((_e1.y >> 8u)) * 5.9604645e-8);
 }
 
+float ms_stream_next_wide(inout uvec2 state_3) {
+    uvec2 _e1 = ms_stream_next_u64_(state_3);
+    float v_12 = ((float(_e1.y) * 2.3283064e-10) + (float((_e1.x >> 11u)) * 1.110223e-16));
+    return min(v_12, 0.99999994);
+}
+
+MsSource ms_source_stream(vec2 u_7) {
+    uvec2 _e1 = ms_stream_new(u_7);
+    return MsSource(_e1, u_7, 2u, 0u);
+}
+
+MsSource ms_source_stream_wide(vec2 u_8) {
+    uvec2 _e1 = ms_stream_new(u_8);
+    return MsSource(_e1, u_8, 2u, 1u);
+}
+
+MsSource ms_source_after_u(vec2 u_9) {
+    uvec2 _e1 = ms_stream_new(u_9);
+    return MsSource(_e1, u_9, 0u, 1u);
+}
+
+float ms_source_next(inout MsSource src) {
+    uvec2 state_4 = uvec2(0u);
+    float v_4 = 0.0;
+    uint _e2 = src.used;
+    if ((_e2 < 2u)) {
+        float _e7 = src.first.y;
+        float _e10 = src.first.x;
+        uint _e12 = src.used;
+        float v_13 = ((_e12 == 0u) ? _e10 : _e7);
+        uint _e18 = src.used;
+        src.used = (_e18 + 1u);
+        return v_13;
+    }
+    uvec2 _e22 = src.state;
+    state_4 = _e22;
+    uint _e26 = src.wide;
+    if ((_e26 == 1u)) {
+        float _e29 = ms_stream_next_wide(state_4);
+        v_4 = _e29;
+    } else {
+        float _e30 = ms_stream_next(state_4);
+        v_4 = _e30;
+    }
+    uvec2 _e32 = state_4;
+    src.state = _e32;
+    float _e33 = v_4;
+    return _e33;
+}
+
 vec2 ms_bk_segment(float x_2, int k0_, int k1_) {
     uint bits_1 = floatBitsToUint(x_2);
     uint rows = (uint((k1_ - k0_)) << MS_BK_SEGMENTS_LOG2_);
@@ -950,9 +1006,9 @@ float ms_bk_ln_1m(float xi) {
 float ms_beckmann_d(vec3 wm_6, vec2 alpha_15) {
     bool local_9 = false;
     float z_11 = wm_6.z;
-    float r_9 = (1.0 / (alpha_15.x * alpha_15.y));
-    float x_20 = ((wm_6.x * alpha_15.y) * r_9);
-    float y_12 = ((wm_6.y * alpha_15.x) * r_9);
+    float r_12 = (1.0 / (alpha_15.x * alpha_15.y));
+    float x_21 = ((wm_6.x * alpha_15.y) * r_12);
+    float y_8 = ((wm_6.y * alpha_15.x) * r_12);
     float z2_1 = (z_11 * z_11);
     if ((z_11 > 0.0)) {
         local_9 = (z2_1 > 0.0);
@@ -963,11 +1019,11 @@ float ms_beckmann_d(vec3 wm_6, vec2 alpha_15) {
     if (!(_e24)) {
         return 0.0;
     }
-    float e_5 = (((x_20 * x_20) + (y_12 * y_12)) / z2_1);
+    float e_5 = (((x_21 * x_21) + (y_8 * y_8)) / z2_1);
     if ((e_5 <= 80.0)) {
-        return ((exp(-(e_5)) * r_9) / ((MS_PI * z2_1) * z2_1));
+        return ((exp(-(e_5)) * r_12) / ((MS_PI * z2_1) * z2_1));
     }
-    return exp((((log(r_9) - 1.14473) - (4.0 * log(z_11))) - e_5));
+    return exp((((log(r_12) - 1.14473) - (4.0 * log(z_11))) - e_5));
 }
 
 float ms_beckmann_pdf_dcos(vec3 wm_8, vec2 alpha_21) {
@@ -978,21 +1034,21 @@ float ms_beckmann_pdf_dcos(vec3 wm_8, vec2 alpha_21) {
     return (_e7 * wm_8.z);
 }
 
-MsSample ms_beckmann_sample_dcos(vec2 alpha_22, vec2 u_8) {
-    vec3 v_4 = vec3(0.0);
-    vec2 _e3 = ms_cos_sin_turn(u_8.y);
-    if ((u_8.x >= 1.0)) {
-        v_4 = vec3((alpha_22.x * _e3.x), (alpha_22.y * _e3.y), 0.0);
+MsSample ms_beckmann_sample_dcos(vec2 alpha_22, vec2 u_11) {
+    vec3 v_5 = vec3(0.0);
+    vec2 _e3 = ms_cos_sin_turn(u_11.y);
+    if ((u_11.x >= 1.0)) {
+        v_5 = vec3((alpha_22.x * _e3.x), (alpha_22.y * _e3.y), 0.0);
     } else {
-        float _e17 = ms_bk_ln_1m(u_8.x);
-        float r_10 = sqrt(-(_e17));
-        if ((r_10 > 1.0)) {
-            v_4 = vec3((alpha_22.x * _e3.x), (alpha_22.y * _e3.y), (1.0 / r_10));
+        float _e17 = ms_bk_ln_1m(u_11.x);
+        float r_13 = sqrt(-(_e17));
+        if ((r_13 > 1.0)) {
+            v_5 = vec3((alpha_22.x * _e3.x), (alpha_22.y * _e3.y), (1.0 / r_13));
         } else {
-            v_4 = vec3(((alpha_22.x * r_10) * _e3.x), ((alpha_22.y * r_10) * _e3.y), 1.0);
+            v_5 = vec3(((alpha_22.x * r_13) * _e3.x), ((alpha_22.y * r_13) * _e3.y), 1.0);
         }
     }
-    vec3 _e41 = v_4;
+    vec3 _e41 = v_5;
     vec3 _e42 = ms_unit_normal(_e41);
     float _e43 = ms_beckmann_d(_e42, alpha_22);
     return MsSample(_e42, (_e43 * _e42.z));
@@ -1010,25 +1066,25 @@ float ms_fam_cubic(vec4 c_2, float s_3) {
     return ((((((c_2.w * s_3) + c_2.z) * s_3) + c_2.y) * s_3) + c_2.x);
 }
 
-float ms_dg_lambda_ends(float u_12, float a_15) {
-    float x_21 = ((((0.5 * a_15) * a_15) * ((1.0 - u_12) * (1.0 + u_12))) / (u_12 * u_12));
-    if ((x_21 < 9.313226e-10)) {
-        if ((x_21 <= 0.0)) {
+float ms_dg_lambda_ends(float u_15, float a_15) {
+    float x_22 = ((((0.5 * a_15) * a_15) * ((1.0 - u_15) * (1.0 + u_15))) / (u_15 * u_15));
+    if ((x_22 < 9.313226e-10)) {
+        if ((x_22 <= 0.0)) {
             return 0.0;
         }
-        return ((0.5 * x_21) * (0.42278433 - log((0.5 * x_21))));
+        return ((0.5 * x_22) * (0.42278433 - log((0.5 * x_22))));
     }
-    float sx_1 = ((a_15 * sqrt(((0.5 * (1.0 - u_12)) * (1.0 + u_12)))) / u_12);
-    float r_11 = (1.0 / (sx_1 * sx_1));
-    return (((1.2533141 * sx_1) * (1.0 + (r_11 * (0.125 - (r_11 * 0.0234375))))) - 0.5);
+    float sx_1 = ((a_15 * sqrt(((0.5 * (1.0 - u_15)) * (1.0 + u_15)))) / u_15);
+    float r_14 = (1.0 / (sx_1 * sx_1));
+    return (((1.2533141 * sx_1) * (1.0 + (r_14 * (0.125 - (r_14 * 0.0234375))))) - 0.5);
 }
 
 float ms_exponential_d(vec3 wm_12, vec2 alpha_39) {
     bool local_22 = false;
     float z_12 = wm_12.z;
-    float r_12 = (1.0 / (alpha_39.x * alpha_39.y));
-    float x_22 = ((wm_12.x * alpha_39.y) * r_12);
-    float y_13 = ((wm_12.y * alpha_39.x) * r_12);
+    float r_15 = (1.0 / (alpha_39.x * alpha_39.y));
+    float x_23 = ((wm_12.x * alpha_39.y) * r_15);
+    float y_9 = ((wm_12.y * alpha_39.x) * r_15);
     float z2_2 = (z_12 * z_12);
     if ((z_12 > 0.0)) {
         local_22 = (z2_2 > 0.0);
@@ -1039,11 +1095,11 @@ float ms_exponential_d(vec3 wm_12, vec2 alpha_39) {
     if (!(_e24)) {
         return ((z_12 != z_12) ? z_12 : 0.0);
     }
-    float e_6 = ((2.0 * sqrt(((x_22 * x_22) + (y_13 * y_13)))) / z_12);
+    float e_6 = ((2.0 * sqrt(((x_23 * x_23) + (y_9 * y_9)))) / z_12);
     if ((e_6 <= 80.0)) {
-        return (((2.0 * exp(-(e_6))) * r_12) / ((MS_PI * z2_2) * z2_2));
+        return (((2.0 * exp(-(e_6))) * r_15) / ((MS_PI * z2_2) * z2_2));
     }
-    return exp((((log((2.0 * r_12)) - 1.14473) - (4.0 * log(z_12))) - e_6));
+    return exp((((log((2.0 * r_15)) - 1.14473) - (4.0 * log(z_12))) - e_6));
 }
 
 float ms_exponential_pdf_dcos(vec3 wm_14, vec2 alpha_41) {
@@ -1054,11 +1110,11 @@ float ms_exponential_pdf_dcos(vec3 wm_14, vec2 alpha_41) {
     return (_e7 * wm_14.z);
 }
 
-vec3 ms_exponential_sample_wm(vec3 w_in_4, vec2 alpha_43, vec2 u_17) {
+vec3 ms_exponential_sample_wm(vec3 w_in_4, vec2 alpha_43, vec2 u_20) {
     vec3 w_27 = vec3(0.0);
     float cp_1 = 1.0;
     float sp_1 = 0.0;
-    uvec2 state_9 = uvec2(0u);
+    uvec2 state_5 = uvec2(0u);
     float v0_ = 0.0;
     float v1_ = 0.0;
     float x_9 = 0.0;
@@ -1077,22 +1133,22 @@ vec3 ms_exponential_sample_wm(vec3 w_in_4, vec2 alpha_43, vec2 u_17) {
     float _e17 = w_27.y;
     float sy_1 = (alpha_43.y * _e17);
     float e_7 = w_27.z;
-    float h_3 = sqrt(((sx_2 * sx_2) + (sy_1 * sy_1)));
-    if ((h_3 > 0.0)) {
-        cp_1 = (sx_2 / h_3);
-        sp_1 = (sy_1 / h_3);
+    float h_4 = sqrt(((sx_2 * sx_2) + (sy_1 * sy_1)));
+    if ((h_4 > 0.0)) {
+        cp_1 = (sx_2 / h_4);
+        sp_1 = (sy_1 / h_4);
     }
-    if (!((abs((e_7 + h_3)) <= 3.4028235e38))) {
-        return vec3((e_7 + h_3));
+    if (!((abs((e_7 + h_4)) <= 3.4028235e38))) {
+        return vec3((e_7 + h_4));
     }
-    float g = (h_3 * MS_FRAC_1_PI);
+    float g = (h_4 * MS_FRAC_1_PI);
     float total = (e_7 + g);
     float inv_p = min((total / e_7), 3.4028235e38);
     float inv_g = min((1.0 / g), 3.4028235e38);
-    uvec2 _e50 = ms_stream_new(u_17);
-    state_9 = _e50;
-    v0_ = u_17.x;
-    v1_ = u_17.y;
+    uvec2 _e50 = ms_stream_new(u_20);
+    state_5 = _e50;
+    v0_ = u_20.x;
+    v1_ = u_20.y;
     bool loop_init = true;
     while(true) {
         if (!loop_init) {
@@ -1108,27 +1164,27 @@ vec3 ms_exponential_sample_wm(vec3 w_in_4, vec2 alpha_43, vec2 u_17) {
         {
             int _e65 = n_4;
             if ((_e65 > 0)) {
-                float _e68 = ms_stream_next(state_9);
+                float _e68 = ms_stream_next(state_5);
                 v0_ = _e68;
-                float _e69 = ms_stream_next(state_9);
+                float _e69 = ms_stream_next(state_5);
                 v1_ = _e69;
             }
             float _e70 = v1_;
-            float _e73 = ms_stream_next(state_9);
+            float _e73 = ms_stream_next(state_5);
             float prod = ((1.0 - _e70) * (1.0 - _e73));
             float _e77 = v0_;
             float d_19 = ((_e77 * total) - e_7);
             if ((d_19 < 0.0)) {
-                float r_13 = (-0.5 * log(prod));
+                float r_16 = (-0.5 * log(prod));
                 float _e85 = v0_;
                 float turn = (_e85 * inv_p);
                 vec2 _e87 = ms_cos_sin_turn(turn);
-                x_9 = (r_13 * _e87.x);
-                y_2 = (r_13 * _e87.y);
+                x_9 = (r_16 * _e87.x);
+                y_2 = (r_16 * _e87.y);
                 if (!((abs((turn - 0.5)) >= 0.25))) {
-                    float _e100 = ms_stream_next(state_9);
+                    float _e100 = ms_stream_next(state_5);
                     float _e102 = x_9;
-                    local_24 = ((_e100 * e_7) <= (e_7 + (h_3 * _e102)));
+                    local_24 = ((_e100 * e_7) <= (e_7 + (h_4 * _e102)));
                 } else {
                     local_24 = true;
                 }
@@ -1137,13 +1193,13 @@ vec3 ms_exponential_sample_wm(vec3 w_in_4, vec2 alpha_43, vec2 u_17) {
                     break;
                 }
             } else {
-                float _e108 = ms_stream_next(state_9);
-                float r_14 = (-0.5 * log((prod * (1.0 - _e108))));
+                float _e108 = ms_stream_next(state_5);
+                float r_17 = (-0.5 * log((prod * (1.0 - _e108))));
                 float one_plus = (2.0 * (d_19 * inv_g));
                 float _e118 = v0_;
                 float one_minus = ((2.0 * (1.0 - _e118)) * (total * inv_g));
-                x_9 = (r_14 * sqrt(max((one_minus * one_plus), 0.0)));
-                y_2 = (r_14 * (one_plus - 1.0));
+                x_9 = (r_17 * sqrt(max((one_minus * one_plus), 0.0)));
+                y_2 = (r_17 * (one_plus - 1.0));
                 break;
             }
         }
@@ -1164,9 +1220,9 @@ vec3 ms_exponential_sample_wm(vec3 w_in_4, vec2 alpha_43, vec2 u_17) {
     return _e158;
 }
 
-float ms_stream_next_positive(inout uvec2 state_11) {
-    float _e1 = ms_stream_next(state_11);
-    return max(_e1, 2.9802322e-8);
+float ms_source_next_positive(inout MsSource src_8) {
+    float _e1 = ms_source_next(src_8);
+    return max(_e1, 1.110223e-16);
 }
 
 float ms_mixture_beta(float ln_beta, vec2 alpha_47) {
@@ -1179,18 +1235,24 @@ float ms_mixture_ln_d(float ln_f, vec3 wm_16, vec2 alpha_54) {
     return ((ln_f - log((alpha_54.x * alpha_54.y))) - (4.0 * log(wm_16.z)));
 }
 
-float ms_mixture_r2_(vec3 wm_17, vec2 alpha_55) {
-    float x_23 = (wm_17.x / alpha_55.x);
-    float y_14 = (wm_17.y / alpha_55.y);
-    return (((x_23 * x_23) + (y_14 * y_14)) / (wm_17.z * wm_17.z));
+float ms_mixture_r(vec3 wm_17, vec2 alpha_55) {
+    float x_24 = abs((wm_17.x / alpha_55.x));
+    float y_10 = abs((wm_17.y / alpha_55.y));
+    float big = max(x_24, y_10);
+    if (!((big > 0.0))) {
+        return big;
+    }
+    float qx = (x_24 / big);
+    float qy = (y_10 / big);
+    return ((big * sqrt(((qx * qx) + (qy * qy)))) / wm_17.z);
 }
 
 float ms_ln_1p(float t_1) {
-    float v_11 = (1.0 + t_1);
-    if ((v_11 == 1.0)) {
+    float v_14 = (1.0 + t_1);
+    if ((v_14 == 1.0)) {
         return t_1;
     }
-    return (log(v_11) * (t_1 / (v_11 - 1.0)));
+    return (log(v_14) * (t_1 / (v_14 - 1.0)));
 }
 
 float ms_expm1_(float x_11) {
@@ -1208,14 +1270,14 @@ bool ms_on_horizon(float z_5) {
     return !((abs(z_5) >= 1e-18));
 }
 
-bool ms_usable(float v_9) {
-    bool local_32 = false;
-    if ((v_9 >= 1.1754944e-20)) {
-        local_32 = (v_9 <= 3.4028235e38);
+bool ms_usable(float v_10) {
+    bool local_33 = false;
+    if ((v_10 >= 1.1754944e-20)) {
+        local_33 = (v_10 <= 3.4028235e38);
     } else {
-        local_32 = false;
+        local_33 = false;
     }
-    bool _e8 = local_32;
+    bool _e8 = local_33;
     return _e8;
 }
 
@@ -1224,31 +1286,31 @@ vec3 ms_weighted(vec3 fr_1, float k_8) {
 }
 
 vec3 ms_conductor_lobe_normal(MsConductor c_7, vec3 wo_31, vec3 wi_31) {
-    bool local_33 = false;
     bool local_34 = false;
     bool local_35 = false;
+    bool local_36 = false;
     bool _e3 = ms_same_hemisphere(wo_31, wi_31);
     if (!(!(_e3))) {
         bool _e9 = ms_on_horizon(wo_31.z);
-        local_33 = _e9;
-    } else {
-        local_33 = true;
-    }
-    bool _e11 = local_33;
-    if (!(_e11)) {
-        bool _e16 = ms_on_horizon(wi_31.z);
-        local_34 = _e16;
+        local_34 = _e9;
     } else {
         local_34 = true;
     }
-    bool _e18 = local_34;
-    if (!(_e18)) {
-        bool _e23 = ms_effectively_smooth(c_7.mf);
-        local_35 = _e23;
+    bool _e11 = local_34;
+    if (!(_e11)) {
+        bool _e16 = ms_on_horizon(wi_31.z);
+        local_35 = _e16;
     } else {
         local_35 = true;
     }
-    bool _e25 = local_35;
+    bool _e18 = local_35;
+    if (!(_e18)) {
+        bool _e23 = ms_effectively_smooth(c_7.mf);
+        local_36 = _e23;
+    } else {
+        local_36 = true;
+    }
+    bool _e25 = local_36;
     if (_e25) {
         return vec3(0.0);
     }
@@ -1257,33 +1319,33 @@ vec3 ms_conductor_lobe_normal(MsConductor c_7, vec3 wo_31, vec3 wi_31) {
 }
 
 bool ms_dielectric_smooth(MsDielectric d_1) {
-    bool local_37 = false;
+    bool local_38 = false;
     if (!((d_1.eta == 1.0))) {
         bool _e8 = ms_effectively_smooth(d_1.mf);
-        local_37 = _e8;
+        local_38 = _e8;
     } else {
-        local_37 = true;
+        local_38 = true;
     }
-    bool _e10 = local_37;
+    bool _e10 = local_38;
     return _e10;
 }
 
 vec4 ms_dielectric_half(MsDielectric d_3, vec3 wo_37, vec3 wi_36) {
-    bool local_38 = false;
+    bool local_39 = false;
     vec3 wm_40 = vec3(0.0);
     float etap_4 = 1.0;
-    bool local_39 = false;
+    bool local_40 = false;
     vec4 none = vec4(0.0);
     float co = wo_37.z;
     float ci_1 = wi_36.z;
     bool _e7 = ms_on_horizon(co);
     if (!(_e7)) {
         bool _e11 = ms_on_horizon(ci_1);
-        local_38 = _e11;
+        local_39 = _e11;
     } else {
-        local_38 = true;
+        local_39 = true;
     }
-    bool _e13 = local_38;
+    bool _e13 = local_39;
     if (_e13) {
         return none;
     }
@@ -1305,11 +1367,11 @@ vec4 ms_dielectric_half(MsDielectric d_3, vec3 wo_37, vec3 wi_36) {
     if (!(((_e29 * ci_1) < 0.0))) {
         vec3 _e36 = wm_40;
         float _e37 = ms_dot(_e36, wo_37);
-        local_39 = ((_e37 * co) < 0.0);
+        local_40 = ((_e37 * co) < 0.0);
     } else {
-        local_39 = true;
+        local_40 = true;
     }
-    bool _e42 = local_39;
+    bool _e42 = local_40;
     if (_e42) {
         return none;
     }
@@ -1345,14 +1407,14 @@ MsBsdfSample ms_dielectric_sample_smooth(MsDielectric d_7, vec3 wo_41, float uc_
     return MsBsdfSample(wi_52, t_10, vec3(_e54), 7u, _e33.w);
 }
 
-MsLutTap ms_lut_tap(float x_13, uint n_8) {
-    float t_11 = clamp(((x_13 * float(n_8)) - 0.5), 0.0, float((n_8 - 1u)));
+MsLutTap ms_lut_tap(float x_14, uint n_8) {
+    float t_11 = clamp(((x_14 * float(n_8)) - 0.5), 0.0, float((n_8 - 1u)));
     uint i_4 = min(uint(floor(t_11)), (n_8 - 2u));
     return MsLutTap(i_4, (t_11 - float(i_4)));
 }
 
-MsLutTap ms_lut_tap_edges(float x_14, uint n_9) {
-    float t_12 = clamp((x_14 * float((n_9 - 1u))), 0.0, float((n_9 - 1u)));
+MsLutTap ms_lut_tap_edges(float x_15, uint n_9) {
+    float t_12 = clamp((x_15 * float((n_9 - 1u))), 0.0, float((n_9 - 1u)));
     uint i_5 = min(uint(floor(t_12)), (n_9 - 2u));
     return MsLutTap(i_5, (t_12 - float(i_5)));
 }
@@ -1365,10 +1427,10 @@ float ms_lut_lerp(MsLutTap t_3, float v0_1, float v1_1) {
     return (((1.0 - t_3.f) * v0_1) + (t_3.f * v1_1));
 }
 
-float ms_lut_bilerp(MsLutTap r, MsLutTap m_4, float v00_, float v10_, float v01_, float v11_) {
-    float gr = (1.0 - r.f);
+float ms_lut_bilerp(MsLutTap r_3, MsLutTap m_4, float v00_, float v10_, float v01_, float v11_) {
+    float gr = (1.0 - r_3.f);
     float gm = (1.0 - m_4.f);
-    return (((((gr * gm) * v00_) + ((r.f * gm) * v10_)) + ((gr * m_4.f) * v01_)) + ((r.f * m_4.f) * v11_));
+    return (((((gr * gm) * v00_) + ((r_3.f * gm) * v10_)) + ((gr * m_4.f) * v01_)) + ((r_3.f * m_4.f) * v11_));
 }
 
 float ms_lut_roughness_coord(vec2 alpha_105, float alpha_max) {
@@ -1402,27 +1464,27 @@ float ms_cosine_pdf_same_side(vec3 wo_45, vec3 wi_42) {
     return (abs(wi_42.z) / MS_PI);
 }
 
-vec3 ms_cosine_hemisphere(vec2 u_35) {
-    float r_15 = sqrt(u_35.x);
-    vec2 _e4 = ms_cos_sin_turn(u_35.y);
-    return vec3((r_15 * _e4.x), (r_15 * _e4.y), sqrt(max((1.0 - u_35.x), 0.0)));
+vec3 ms_cosine_hemisphere(vec2 u_38) {
+    float r_18 = sqrt(u_38.x);
+    vec2 _e4 = ms_cos_sin_turn(u_38.y);
+    return vec3((r_18 * _e4.x), (r_18 * _e4.y), sqrt(max((1.0 - u_38.x), 0.0)));
 }
 
 MsBsdfSample ms_kulla_conty_sample_f(MsBsdfSample s_6, vec3 wo_48, float e_o_7, float e_i_2, float e_avg_3, vec3 f_ms_1) {
-    bool local_45 = false;
     bool local_46 = false;
+    bool local_47 = false;
     if (!(((s_6.flags & MS_SAMPLE_VALID) == 0u))) {
-        local_45 = ((s_6.flags & MS_SAMPLE_SPECULAR) != 0u);
-    } else {
-        local_45 = true;
-    }
-    bool _e20 = local_45;
-    if (!(_e20)) {
-        local_46 = !(((wo_48.z * s_6.wi.z) > 0.0));
+        local_46 = ((s_6.flags & MS_SAMPLE_SPECULAR) != 0u);
     } else {
         local_46 = true;
     }
-    bool _e32 = local_46;
+    bool _e20 = local_46;
+    if (!(_e20)) {
+        local_47 = !(((wo_48.z * s_6.wi.z) > 0.0));
+    } else {
+        local_47 = true;
+    }
+    bool _e32 = local_47;
     if (_e32) {
         return s_6;
     }
@@ -1438,11 +1500,11 @@ float ms_lut_eta_coord(float eta_4) {
     return sqrt((max((eta_4 - 1.0), 0.0) * 0.5));
 }
 
-float ms_lut_trilerp(MsLutTap e, MsLutTap r_1, MsLutTap m_5, vec4 lo_2, vec4 hi_2) {
+float ms_lut_trilerp(MsLutTap e, MsLutTap r_4, MsLutTap m_5, vec4 lo_2, vec4 hi_2) {
     float s_7 = 0.0;
     uint b_6 = 0u;
     vec2 we = vec2((1.0 - e.f), e.f);
-    vec2 wr = vec2((1.0 - r_1.f), r_1.f);
+    vec2 wr = vec2((1.0 - r_4.f), r_4.f);
     vec2 wm_42 = vec2((1.0 - m_5.f), m_5.f);
     bool loop_init_1 = true;
     while(true) {
@@ -1460,23 +1522,23 @@ float ms_lut_trilerp(MsLutTap e, MsLutTap r_1, MsLutTap m_5, vec4 lo_2, vec4 hi_
             uint _e27 = b_6;
             uint _e31 = b_6;
             uint _e35 = b_6;
-            float v_12 = ((_e35 >= 4u) ? hi_2[(_e31 & 3u)] : lo_2[(_e27 & 3u)]);
+            float v_15 = ((_e35 >= 4u) ? hi_2[(_e31 & 3u)] : lo_2[(_e27 & 3u)]);
             float _e39 = s_7;
             uint _e40 = b_6;
             uint _e44 = b_6;
             uint _e51 = b_6;
-            s_7 = (_e39 + (((we[(_e40 & 1u)] * wr[((_e44 >> 1u) & 1u)]) * wm_42[(_e51 >> 2u)]) * v_12));
+            s_7 = (_e39 + (((we[(_e40 & 1u)] * wr[((_e44 >> 1u) & 1u)]) * wm_42[(_e51 >> 2u)]) * v_15));
         }
     }
     float _e61 = s_7;
     return _e61;
 }
 
-float ms_lut_bilerp_eta(MsLutTap e_1, MsLutTap r_2, vec4 v_10) {
+float ms_lut_bilerp_eta(MsLutTap e_1, MsLutTap r_5, vec4 v_11) {
     float s_8 = 0.0;
     uint b_7 = 0u;
     vec2 we_1 = vec2((1.0 - e_1.f), e_1.f);
-    vec2 wr_1 = vec2((1.0 - r_2.f), r_2.f);
+    vec2 wr_1 = vec2((1.0 - r_5.f), r_5.f);
     bool loop_init_2 = true;
     while(true) {
         if (!loop_init_2) {
@@ -1494,7 +1556,7 @@ float ms_lut_bilerp_eta(MsLutTap e_1, MsLutTap r_2, vec4 v_10) {
             uint _e21 = b_7;
             uint _e25 = b_7;
             uint _e30 = b_7;
-            s_8 = (_e20 + ((we_1[(_e21 & 1u)] * wr_1[(_e25 >> 1u)]) * v_10[_e30]));
+            s_8 = (_e20 + ((we_1[(_e21 & 1u)] * wr_1[(_e25 >> 1u)]) * v_11[_e30]));
         }
     }
     float _e37 = s_8;
@@ -1517,16 +1579,16 @@ vec2 ms_dielectric_kulla_conty_k(float eta_5, float f_avg_1, vec2 e_avg_4) {
 }
 
 float ms_dielectric_kulla_conty_lobe(MsDielectric d_9, vec3 wo_50, vec3 wi_45, float e_o_9, float e_i_3, float e_avg_i, float k_o) {
-    bool local_48 = false;
     bool local_49 = false;
-    float f_4 = 0.0;
     bool local_50 = false;
+    float f_4 = 0.0;
+    bool local_51 = false;
     if ((abs(wo_50.z) > 0.0)) {
-        local_48 = (abs(wi_45.z) > 0.0);
+        local_49 = (abs(wi_45.z) > 0.0);
     } else {
-        local_48 = false;
+        local_49 = false;
     }
-    bool _e18 = local_48;
+    bool _e18 = local_49;
     if (!(_e18)) {
         return 0.0;
     }
@@ -1535,21 +1597,21 @@ float ms_dielectric_kulla_conty_lobe(MsDielectric d_9, vec3 wo_50, vec3 wi_45, f
     float share = (crossed ? k_o : (1.0 - k_o));
     float den_4 = (MS_PI * (1.0 - e_avg_i));
     if ((den_4 > 0.0)) {
-        local_49 = (lost > 0.0);
+        local_50 = (lost > 0.0);
     } else {
-        local_49 = false;
+        local_50 = false;
     }
-    bool _e44 = local_49;
+    bool _e44 = local_50;
     if (!(_e44)) {
         return 0.0;
     }
     f_4 = (((share * lost) * max((1.0 - e_i_3), 0.0)) / den_4);
     if (crossed) {
-        local_50 = (d_9.transport == MS_TRANSPORT_RADIANCE);
+        local_51 = (d_9.transport == MS_TRANSPORT_RADIANCE);
     } else {
-        local_50 = false;
+        local_51 = false;
     }
-    bool _e61 = local_50;
+    bool _e61 = local_51;
     if (_e61) {
         float etap_6 = ((wo_50.z > 0.0) ? d_9.eta : (1.0 / d_9.eta));
         float _e70 = f_4;
@@ -1566,13 +1628,13 @@ float ms_dielectric_kulla_conty_lobe_pdf(vec3 wo_53, vec3 wi_48, float k_o_2) {
 }
 
 MsBsdfSample ms_dielectric_kulla_conty_sample_f(MsBsdfSample s_9, MsDielectric d_14, vec3 wo_56, float e_o_14, float e_i_5, float e_avg_i_2, float k_o_5) {
-    bool local_54 = false;
+    bool local_55 = false;
     if (!(((s_9.flags & MS_SAMPLE_VALID) == 0u))) {
-        local_54 = ((s_9.flags & MS_SAMPLE_SPECULAR) != 0u);
+        local_55 = ((s_9.flags & MS_SAMPLE_SPECULAR) != 0u);
     } else {
-        local_54 = true;
+        local_55 = true;
     }
-    bool _e21 = local_54;
+    bool _e21 = local_55;
     if (_e21) {
         return s_9;
     }
