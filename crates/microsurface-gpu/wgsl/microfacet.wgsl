@@ -2,11 +2,12 @@
 // the WGSL counterpart of the Rust `MicrofacetDistribution` door that the BSDFs use. A
 // renderer that knows its NDF calls the per-NDF functions (ms_ggx_d, …) directly.
 
-// Which NDF (`ndf`: an MS_NDF_* constant) at roughness (αx, αy), and for an NDF with a shape
-// table (Student-T) the table's first row in `ms_tables` (`microsurface_gpu::Tables::add_shape`
-// gives it; 0 and unused for the others). Beckmann, Double GGX, the Exponential NDF and
-// Student-T read the library's tables (tables.wgsl), so a shader that takes this door binds
-// them.
+// Which NDF (`ndf`: an MS_NDF_* constant) at roughness (αx, αy), and for an NDF with a
+// table of its own (Student-T's shape, GTR's material) the table's first row in `ms_tables`
+// (`microsurface_gpu::Tables::add_shape` or `add_gtr` gives it; 0 and unused for the others).
+// Beckmann, Double GGX, the Exponential NDF, GTR and Student-T read the library's buffer
+// (tables.wgsl), so a shader that takes this door binds it. GTR's α is its table's (αx = αy
+// = α; at γ = 2, GGX's, any (αx, αy)).
 struct MsMicrofacet {
     ndf: u32,
     alpha: vec2<f32>,
@@ -17,6 +18,7 @@ const MS_NDF_GGX: u32 = 0u;
 const MS_NDF_BECKMANN: u32 = 1u;
 const MS_NDF_DOUBLE_GGX: u32 = 2u;
 const MS_NDF_EXPONENTIAL: u32 = 3u;
+const MS_NDF_GTR: u32 = 4u;
 const MS_NDF_STUDENT_T: u32 = 5u;
 
 // D(wm); 0 below the horizon (and for an NDF this library does not have).
@@ -35,6 +37,9 @@ fn ms_d(mf: MsMicrofacet, wm: vec3<f32>) -> f32 {
     }
     if mf.ndf == MS_NDF_STUDENT_T {
         return ms_student_t_d(wm, mf.alpha, mf.table);
+    }
+    if mf.ndf == MS_NDF_GTR {
+        return ms_gtr_d(wm, mf.alpha, mf.table);
     }
     return 0.0;
 }
@@ -56,6 +61,9 @@ fn ms_lambda(mf: MsMicrofacet, w: vec3<f32>) -> f32 {
     if mf.ndf == MS_NDF_STUDENT_T {
         return ms_student_t_lambda(w, mf.alpha, mf.table);
     }
+    if mf.ndf == MS_NDF_GTR {
+        return ms_gtr_lambda(w, mf.alpha, mf.table);
+    }
     return 0.0;
 }
 
@@ -76,6 +84,9 @@ fn ms_g1(mf: MsMicrofacet, w: vec3<f32>) -> f32 {
     if mf.ndf == MS_NDF_STUDENT_T {
         return ms_student_t_g1(w, mf.alpha, mf.table);
     }
+    if mf.ndf == MS_NDF_GTR {
+        return ms_gtr_g1(w, mf.alpha, mf.table);
+    }
     return 0.0;
 }
 
@@ -95,6 +106,9 @@ fn ms_g2(mf: MsMicrofacet, wo: vec3<f32>, wi: vec3<f32>) -> f32 {
     }
     if mf.ndf == MS_NDF_STUDENT_T {
         return ms_student_t_g2(wo, wi, mf.alpha, mf.table);
+    }
+    if mf.ndf == MS_NDF_GTR {
+        return ms_gtr_g2(wo, wi, mf.alpha, mf.table);
     }
     return 0.0;
 }
@@ -120,6 +134,9 @@ fn ms_pdf(mf: MsMicrofacet, w: vec3<f32>, wm: vec3<f32>) -> f32 {
     }
     if mf.ndf == MS_NDF_STUDENT_T {
         return ms_student_t_pdf(w, wm, mf.alpha, mf.table);
+    }
+    if mf.ndf == MS_NDF_GTR {
+        return ms_gtr_pdf(w, wm, mf.alpha, mf.table);
     }
     return 0.0;
 }
@@ -149,6 +166,9 @@ fn ms_sample(mf: MsMicrofacet, w: vec3<f32>, u: vec2<f32>) -> MsSample {
     if mf.ndf == MS_NDF_STUDENT_T {
         return ms_student_t_sample(w, mf.alpha, u, mf.table);
     }
+    if mf.ndf == MS_NDF_GTR {
+        return ms_gtr_sample(w, mf.alpha, u, mf.table);
+    }
     return MsSample(vec3<f32>(0.0, 0.0, 1.0), 0.0);
 }
 
@@ -168,6 +188,9 @@ fn ms_sample_dcos(mf: MsMicrofacet, u: vec2<f32>) -> MsSample {
     }
     if mf.ndf == MS_NDF_STUDENT_T {
         return ms_student_t_sample_dcos(mf.alpha, u, mf.table);
+    }
+    if mf.ndf == MS_NDF_GTR {
+        return ms_gtr_sample_dcos(mf.alpha, u, mf.table);
     }
     return MsSample(vec3<f32>(0.0, 0.0, 1.0), 0.0);
 }
