@@ -5,11 +5,11 @@
 //!
 //! [`WGSL`] is the library's one source: the files under `wgsl/` of this crate (common,
 //! Fresnel, GGX, the tables' binding, the uniform stream, Beckmann, Double GGX, the
-//! Exponential NDF, the run-time distribution, the rough conductor and dielectric, energy
-//! compensation) in one string, and [`TABLES`] the contents of its one storage buffer (the
-//! fitted tables, generated from the Rust library). WGSL has no
-//! `#include`: a shader includes the library by being compiled with it in front, which WGSL
-//! allows as module-scope declarations may come in any order. From Rust:
+//! Exponential NDF, the Beckmann mixtures and Student-T, GTR, the run-time distribution, the
+//! rough conductor and dielectric, energy compensation) in one string, and [`TABLES`] the
+//! contents of its one storage buffer (the fitted tables, generated from the Rust library).
+//! WGSL has no `#include`: a shader includes the library by being compiled with it in front,
+//! which WGSL allows as module-scope declarations may come in any order. From Rust:
 //!
 //! ```
 //! let shader = format!("{}\n{}", microsurface_gpu::WGSL, "
@@ -45,11 +45,12 @@
 //! | `ms_beckmann_d`, `ms_beckmann_lambda`, `ms_beckmann_g1`, `ms_beckmann_g2`, `ms_beckmann_g2_separable` | `Microfacet::<f32, Beckmann>` `d`, `lambda`, `g1`, `g2`, `g2_separable` |
 //! | `ms_beckmann_pdf(w, wm, α)`, `ms_beckmann_sample(w, α, u)`; `ms_beckmann_sample_dcos`, `ms_beckmann_pdf_dcos` | `pdf`, `sample` (the same warp of u: slope-space inversion); `sample_dcos`, `pdf_dcos` |
 //! | `ms_double_ggx_d`, `_lambda`, `_g1`, `_g2`, `_g2_separable`, `_pdf`, `_sample`, `_pdf_dcos`, `_sample_dcos`; `ms_exponential_` the same | `Microfacet::<f32, DoubleGgx>`, `Microfacet::<f32, Exponential>`: `d`, `lambda`, `g1`, `g2`, `g2_separable`, `pdf`, `sample`, `pdf_dcos`, `sample_dcos` (rejection samplers over the stream of u, as the Rust ones: the same candidates, so mostly the same normal; χ²-consistent) |
+//! | `ms_gtr_d(wm, α, table)`, `_lambda`, `_g1`, `_g2`, `_g2_separable`, `_pdf`, `_pdf_dcos`, `_sample_dcos`, `_sample` (the material's `table` from [`Tables::add_gtr`]) | `Microfacet::<f32, Gtr>::gtr(α, α, γ)`: `d`, `lambda`, `g1`, `g2`, `g2_separable`, `pdf`, `pdf_dcos`, `sample_dcos` (Burley's inversion, the same warp of u), `sample` (the Rust rejection sampler over the stream of u: the same candidates, so the same normal to f32's rounding; χ²-consistent); γ = 2 is GGX's functions, anisotropic allowed |
 //! | `ms_student_t_d(wm, α, table)`, `_lambda(w, α, table)`, `_g1`, `_g2`, `_g2_separable`, `_pdf`, `_pdf_dcos`, `_sample_dcos` (the Rust radial-quantile warp), `_sample` (the posterior); `ms_ei_`, `ms_erfc_`, `ms_k0_`, `ms_bessel_k_` the same (their D·cos by the prior, then Beckmann's D·cos; Bessel-K's `d` takes the table too) | `Microfacet::<f32, StudentT>` (γ), `Ei`, `Erfc`, `K0`, `BesselK` (a) (the family's fast path: Λ from the shape's fitted table, here rounded to f32 in the material's table; visible normals by the mixing variable's posterior, then Beckmann's stream sampler: the same distribution, other uniforms) |
-//! | [`Tables`] + `Tables::add_shape(kind, shape)` → the `table` row of `MsMicrofacet` | `fast::fitted::FittedShape` (built once per shape) |
+//! | [`Tables`] + `Tables::add_shape(kind, shape)`, `Tables::add_gtr(α, γ)` → the `table` row of `MsMicrofacet` | `fast::fitted::FittedShape` (built once per shape), `fast::gtr::FittedGtr` (per material) |
 //! | `ms_stream_new(u)`, `ms_stream_next(&state)`, `ms_stream_next_u64`; `ms_zig_exp1(w, &state)`, `ms_zig_half_normal`, `ms_zig_normal`; `ms_ln_gamma_variate(k, &state)` | `distribution::UniformStream` (SplitMix64 seeded by u's bits, bit for bit); `fast::ziggurat::{exp1, half_normal, normal}`; Marsaglia & Tsang's Gamma variates |
 //! | `ms_fresnel_dielectric`, `ms_fresnel_conductor`, `ms_fresnel_schlick`, `ms_fresnel_f82_tint`; `MsFresnel` + `ms_fresnel_eval` | `bsdf::fresnel::{dielectric, conductor, schlick, f82_tint}`; the `Fresnel` terms |
-//! | `MsMicrofacet(ndf, α, table)` (`MS_NDF_GGX`, `_BECKMANN`, `_DOUBLE_GGX`, `_EXPONENTIAL`, `_STUDENT_T`, `_EI`, `_ERFC`, `_K0`, `_BESSEL_K`; `table` the shape table's row, 0 for the first four) + `ms_d`, `ms_lambda`, `ms_g1`, `ms_g2`, `ms_g2_separable`, `ms_pdf`, `ms_pdf_dcos`, `ms_sample`, `ms_sample_dcos` | `MicrofacetDistribution` over `AnyMicrofacet` (GTR and the generalised exponential not yet on the GPU) |
+//! | `MsMicrofacet(ndf, α, table)` (`MS_NDF_GGX`, `_BECKMANN`, `_DOUBLE_GGX`, `_EXPONENTIAL`, `_GTR`, `_STUDENT_T`, `_EI`, `_ERFC`, `_K0`, `_BESSEL_K`; `table` the material's table row (GTR's, or a shape's), 0 for the first four) + `ms_d`, `ms_lambda`, `ms_g1`, `ms_g2`, `ms_g2_separable`, `ms_pdf`, `ms_pdf_dcos`, `ms_sample`, `ms_sample_dcos` | `MicrofacetDistribution` over `AnyMicrofacet` (the generalised exponential not yet on the GPU) |
 //! | `MsConductor` + `ms_conductor_eval`, `ms_conductor_pdf`, `ms_conductor_eval_pdf`, `ms_conductor_sample` → `MsBsdfSample` | `bsdf::RoughConductor` (`Masking::Correlated` or `Separable`) |
 //! | `MsDielectric` + `ms_dielectric_eval`, `ms_dielectric_pdf`, `ms_dielectric_sample` → `MsBsdfSample` | `bsdf::RoughDielectric` (`Masking::Correlated` or `Separable`; both transports) |
 //! | `MsLutTap` + `ms_lut_tap(x, n)` (texel centres), `ms_lut_tap_edges(x, n)` (edge-aligned nodes), `ms_lut_index`, `ms_lut_lerp`, `ms_lut_bilerp`, `ms_lut_roughness_coord(α, α_max)` | `scattering::lut::Lut::lookup` (`Nodes::Centres`, clamp-to-edge; `Nodes::Edges`) |
@@ -159,6 +160,18 @@
 //! checked by a two-sample χ² against the Rust samplers (2^18 normals each, 512 bins, p =
 //! 1e-6), themselves χ²-tested against the Rust pdf.
 //!
+//! `tests/gtr.rs` does the same for GTR through `MsMicrofacet` (γ = ½, 1, 1.5, 3, 10 at the
+//! grids' isotropic roughness, γ = 100 at α = 2, and γ = 2 at every roughness, where it is
+//! GGX): D within 0.16 of its bound (e^{ln c − γ ln x} in f32, with Vulkan's allowances for
+//! exp and log), Λ within 0.15 (bit for bit where the Rust type has its f32 table; its f64
+//! rows rounded to f32 elsewhere, γ = 10 at α ≤ 0.3 here, whose rounding moves ln Λ by at
+//! most 3.8e-6), G1, G2 and the pdfs within 0.16, D·cos normals (Burley's inversion in f32,
+//! the Rust warp) within 0.13 of their bounds. The visible sampler is the Rust one, alias
+//! table and all, over the same stream (the column's fraction formed exactly from u's
+//! significand, as the Rust f64 product is): every one of the grids' 30 240 normals is the
+//! Rust draw within 6.6e-7, and a two-sample χ² against the Rust sampler holds (five
+//! configurations, 2^18 each).
+//!
 //! # The runner
 //!
 //! [`Gpu`] opens the first Vulkan adapter (wgpu, Vulkan back end only; a discrete GPU
@@ -179,7 +192,7 @@ use std::sync::{mpsc, Mutex};
 /// The WGSL library, one source: `wgsl/common.wgsl`, `fresnel.wgsl`, `ggx.wgsl`,
 /// `tables.wgsl` (generated: the tables buffer's binding and layout), `stream.wgsl`,
 /// `beckmann.wgsl`, `double_ggx.wgsl`, `exponential.wgsl`, `mixture.wgsl`, `student_t.wgsl`,
-/// `ei.wgsl`, `erfc.wgsl`, `k0.wgsl`, `bessel_k.wgsl`, `microfacet.wgsl`,
+/// `gtr.wgsl`, `ei.wgsl`, `erfc.wgsl`, `k0.wgsl`, `bessel_k.wgsl`, `microfacet.wgsl`,
 /// `conductor.wgsl`, `dielectric.wgsl`, `compensation.wgsl`, in that order. A shader that
 /// includes it defines `MS_TABLES_GROUP` and `MS_TABLES_BINDING` (see [`TABLES`]).
 pub const WGSL: &str = concat!(
@@ -202,6 +215,8 @@ pub const WGSL: &str = concat!(
     include_str!("../wgsl/mixture.wgsl"),
     "\n",
     include_str!("../wgsl/student_t.wgsl"),
+    "\n",
+    include_str!("../wgsl/gtr.wgsl"),
     "\n",
     include_str!("../wgsl/ei.wgsl"),
     "\n",
@@ -244,12 +259,15 @@ pub static TABLES: &[u8] = include_bytes!("../generated/microsurface_tables.bin"
 const BESSEL_PROFILE_K0: i32 = -40;
 const BESSEL_PROFILE_K1: i32 = 8;
 
-/// The contents of the library's buffer `ms_tables` for a shader whose materials have shape
-/// tables: the library's [`TABLES`] followed by each shape's own (the fitted Λ₁ and the
+/// The contents of the library's buffer `ms_tables` for a shader whose materials have tables
+/// of their own: the library's [`TABLES`] followed by each shape's (the fitted Λ₁ and the
 /// posterior's parameters of a Student-T γ, a Bessel-K a (with its profile's table), or of
-/// Ei, Erfc, K0; the layout is in `wgsl/mixture.wgsl` and `wgsl/bessel_k.wgsl`). A shape's table is
-/// built once (the Rust fast path's `FittedShape`: milliseconds) and serves every roughness;
-/// its row goes into `MsMicrofacet`'s `table`.
+/// Ei, Erfc, K0; the layout is in `wgsl/mixture.wgsl` and `wgsl/bessel_k.wgsl`) and each GTR
+/// material's ([`Tables::add_gtr`]: Λ fitted to its (α, γ), Burley's constants, the visible
+/// sampler's envelopes; the layout is in `wgsl/gtr.wgsl`). A shape's table is built once
+/// (the Rust fast path's `FittedShape`: milliseconds) and serves every roughness; a GTR
+/// table serves one (α, γ), as the Rust `FittedGtr` it is written from. Its row goes into
+/// `MsMicrofacet`'s `table`.
 ///
 /// ```
 /// use microsurface::NdfKind;
@@ -257,6 +275,9 @@ const BESSEL_PROFILE_K1: i32 = 8;
 /// let row = tables.add_shape(NdfKind::StudentT, Some(2.5))?;
 /// // MsMicrofacet(MS_NDF_STUDENT_T, alpha, row) in the shader; bind tables.bytes().
 /// assert!(row as usize * 16 >= microsurface_gpu::TABLES.len());
+/// // GTR at α = 0.3, γ = 1.5: MsMicrofacet(MS_NDF_GTR, vec2(0.3, 0.3), gtr).
+/// let gtr = tables.add_gtr(f64::from(0.3f32), 1.5)?;
+/// assert!(gtr > row);
 /// # Ok::<(), microsurface::ParamError>(())
 /// ```
 #[derive(Clone, Debug)]
@@ -287,6 +308,7 @@ impl Tables {
     /// of an `MsMicrofacet` of that NDF): Student-T (γ in (3/2, 1e6]), Bessel-K (its a), Ei,
     /// Erfc and K0 (shape `None`; one table serves every material of the NDF). `ParamError`
     /// for other kinds and shapes out of range.
+    /// (GTR's table depends on α too: [`Tables::add_gtr`].)
     pub fn add_shape(
         &mut self,
         kind: microsurface::NdfKind,
@@ -369,9 +391,107 @@ impl Tables {
         }
     }
 
+    /// Appends the table of the GTR material (α, γ) (`Microfacet::<f32, Gtr>::gtr(α, α, γ)`;
+    /// pass the shader's f32 α widened, `f64::from(alpha)`, for the same fit) and returns its
+    /// first row (the `table` of an `MsMicrofacet` of `MS_NDF_GTR`): the Rust fast path's
+    /// `FittedGtr` of (α, γ) (its f32 Λ table where it has one, else its f64 rows rounded to
+    /// f32, the ends' constants, D's normalisation, Burley's quantile constants and the
+    /// visible sampler's envelopes; the layout is in `wgsl/gtr.wgsl`): milliseconds, tens at
+    /// γ ∉ {1, 2}, and a table per material (50 KiB at α = 0.3, γ = 1.5, 107 KiB at α =
+    /// 0.05, γ = 10, 450 KiB at α = 1e-3, γ = 100: the envelopes' pieces grow with γ). γ = 2 is
+    /// GGX, one row, any α (the material's `alpha` then carries the roughness, anisotropic
+    /// allowed). `ParamError` for α outside [1e-6, 1e6] and γ outside (0, 100], as
+    /// [`microsurface::Gtr::new`].
+    pub fn add_gtr(&mut self, alpha: f64, gamma: f64) -> Result<u32, microsurface::ParamError> {
+        use microsurface::fast::gtr::FittedGtr;
+        microsurface::Gtr::new(alpha, gamma)?;
+        let at = self.rows.len();
+        if gamma == 2.0 {
+            self.rows.push([2.0, alpha as f32, 0.0, 0.0]);
+            return Ok(at as u32);
+        }
+        let fitted = FittedGtr::new(alpha, gamma)?;
+        let l = fitted.layout();
+        // Saturated at f32's largest (an exponential past f32's range: a flag says so).
+        let sat = |x: f64| x.clamp(-(f32::MAX as f64), f32::MAX as f64) as f32;
+        let kind = if !l.rows32.is_empty() {
+            1.0
+        } else if l.direct {
+            2.0
+        } else {
+            3.0
+        };
+        let n_rows = l.rows.len();
+        let per_row = if l.rows32.is_empty() { 2 } else { 1 };
+        let header = 8;
+        let dcos_at = header + per_row * n_rows;
+        let moment_at = dcos_at + 2 * l.dcos.pieces.len();
+        let b = l.burley;
+        let over = |e: f64| if e > f32::MAX as f64 { 1.0 } else { 0.0 };
+        let rows = &mut self.rows;
+        rows.push([gamma as f32, alpha as f32, kind, l.sigma0 as f32]);
+        rows.push([l.ln_c as f32, sat(l.c), l.m[0] as f32, l.m[1] as f32]);
+        rows.push([
+            l.k[0] as f32,
+            l.k[1] as f32,
+            l.off32[0] as i32 as f32,
+            l.off32[1] as i32 as f32,
+        ]);
+        rows.push([l.lo32[0], l.lo32[1], n_rows as f32, 0.0]);
+        rows.push([b[0] as f32, b[1] as f32, b[2] as f32, over(b[3])]);
+        rows.push([sat(b[3]), sat(b[4]), sat(b[5]), sat(b[6])]);
+        rows.push([sat(b[7]), sat(b[8]), sat(b[9]), over(b[5])]);
+        rows.push([
+            dcos_at as f32,
+            l.dcos.pieces.len() as f32,
+            moment_at as f32,
+            l.moment.pieces.len() as f32,
+        ]);
+        if l.rows32.is_empty() {
+            for c in l.rows {
+                rows.push([c[0] as f32, c[1] as f32, c[2] as f32, c[3] as f32]);
+                rows.push([c[4] as f32, 0.0, 0.0, 0.0]);
+            }
+        } else {
+            rows.extend(l.rows32.iter().copied());
+        }
+        for radial in [&l.dcos, &l.moment] {
+            push_radial(rows, radial);
+        }
+        debug_assert_eq!(self.rows.len(), at + moment_at + 2 * l.moment.pieces.len());
+        Ok(at as u32)
+    }
+
     /// The buffer's bytes (little-endian `vec4<f32>` rows).
     pub fn bytes(&self) -> &[u8] {
         bytemuck::cast_slice(&self.rows)
+    }
+}
+
+/// A radial envelope's pieces, two rows each (the layout is in `wgsl/gtr.wgsl`).
+fn push_radial(rows: &mut Vec<[f32; 4]>, r: &microsurface::fast::gtr::RadialLayout) {
+    for p in &r.pieces {
+        // (A column's own share below f32's least normal is kept at that: the column is
+        // then its own piece at fraction 0, as in f64, not its alias.)
+        let prob = if p.prob > 0.0 {
+            (p.prob as f32).max(f32::MIN_POSITIVE)
+        } else {
+            0.0
+        };
+        let column = [prob, p.alias as f32];
+        if p.tail {
+            rows.push([
+                p.a as f32,
+                p.beta as f32,
+                (r.top + p.e0) as f32,
+                p.squeeze as f32,
+            ]);
+            let em1 = p.em1.clamp(-1.0, f32::MAX as f64) as f32;
+            rows.push([em1, column[0], column[1], 1.0]);
+        } else {
+            rows.push([p.r0 as f32, p.dr as f32, p.s0 as f32, p.s1 as f32]);
+            rows.push([(r.top + p.h) as f32, column[0], column[1], 0.0]);
+        }
     }
 }
 

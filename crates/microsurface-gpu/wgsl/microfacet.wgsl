@@ -2,11 +2,12 @@
 // the WGSL counterpart of the Rust `MicrofacetDistribution` door that the BSDFs use. A
 // renderer that knows its NDF calls the per-NDF functions (ms_ggx_d, …) directly.
 
-// Which NDF (`ndf`: an MS_NDF_* constant) at roughness (αx, αy), and for an NDF with a shape
-// table (Student-T, Ei, Erfc, K0, Bessel-K) the table's first row in `ms_tables` (`microsurface_gpu::Tables::add_shape`
-// gives it; 0 and unused for the others). Beckmann, Double GGX, the Exponential NDF and
-// Student-T read the library's tables (tables.wgsl), so a shader that takes this door binds
-// them.
+// Which NDF (`ndf`: an MS_NDF_* constant) at roughness (αx, αy), and for an NDF with a
+// table of its own (a shape table: Student-T, Ei, Erfc, K0, Bessel-K; GTR's material table)
+// the table's first row in `ms_tables` (`microsurface_gpu::Tables::add_shape` or `add_gtr`
+// gives it; 0 and unused for the others). Every NDF but GGX reads the library's buffer
+// (tables.wgsl), so a shader that takes this door binds it. GTR's α is its table's (αx = αy
+// = α; at γ = 2, GGX's, any (αx, αy)).
 struct MsMicrofacet {
     ndf: u32,
     alpha: vec2<f32>,
@@ -17,6 +18,7 @@ const MS_NDF_GGX: u32 = 0u;
 const MS_NDF_BECKMANN: u32 = 1u;
 const MS_NDF_DOUBLE_GGX: u32 = 2u;
 const MS_NDF_EXPONENTIAL: u32 = 3u;
+const MS_NDF_GTR: u32 = 4u;
 const MS_NDF_STUDENT_T: u32 = 5u;
 const MS_NDF_EI: u32 = 6u;
 const MS_NDF_ERFC: u32 = 7u;
@@ -52,6 +54,9 @@ fn ms_d(mf: MsMicrofacet, wm: vec3<f32>) -> f32 {
     if mf.ndf == MS_NDF_BESSEL_K {
         return ms_bessel_k_d(wm, mf.alpha, mf.table);
     }
+    if mf.ndf == MS_NDF_GTR {
+        return ms_gtr_d(wm, mf.alpha, mf.table);
+    }
     return 0.0;
 }
 
@@ -83,6 +88,9 @@ fn ms_lambda(mf: MsMicrofacet, w: vec3<f32>) -> f32 {
     }
     if mf.ndf == MS_NDF_BESSEL_K {
         return ms_bessel_k_lambda(w, mf.alpha, mf.table);
+    }
+    if mf.ndf == MS_NDF_GTR {
+        return ms_gtr_lambda(w, mf.alpha, mf.table);
     }
     return 0.0;
 }
@@ -116,6 +124,9 @@ fn ms_g1(mf: MsMicrofacet, w: vec3<f32>) -> f32 {
     if mf.ndf == MS_NDF_BESSEL_K {
         return ms_bessel_k_g1(w, mf.alpha, mf.table);
     }
+    if mf.ndf == MS_NDF_GTR {
+        return ms_gtr_g1(w, mf.alpha, mf.table);
+    }
     return 0.0;
 }
 
@@ -147,6 +158,9 @@ fn ms_g2(mf: MsMicrofacet, wo: vec3<f32>, wi: vec3<f32>) -> f32 {
     }
     if mf.ndf == MS_NDF_BESSEL_K {
         return ms_bessel_k_g2(wo, wi, mf.alpha, mf.table);
+    }
+    if mf.ndf == MS_NDF_GTR {
+        return ms_gtr_g2(wo, wi, mf.alpha, mf.table);
     }
     return 0.0;
 }
@@ -184,6 +198,9 @@ fn ms_pdf(mf: MsMicrofacet, w: vec3<f32>, wm: vec3<f32>) -> f32 {
     }
     if mf.ndf == MS_NDF_BESSEL_K {
         return ms_bessel_k_pdf(w, wm, mf.alpha, mf.table);
+    }
+    if mf.ndf == MS_NDF_GTR {
+        return ms_gtr_pdf(w, wm, mf.alpha, mf.table);
     }
     return 0.0;
 }
@@ -225,6 +242,9 @@ fn ms_sample(mf: MsMicrofacet, w: vec3<f32>, u: vec2<f32>) -> MsSample {
     if mf.ndf == MS_NDF_BESSEL_K {
         return ms_bessel_k_sample(w, mf.alpha, u, mf.table);
     }
+    if mf.ndf == MS_NDF_GTR {
+        return ms_gtr_sample(w, mf.alpha, u, mf.table);
+    }
     return MsSample(vec3<f32>(0.0, 0.0, 1.0), 0.0);
 }
 
@@ -256,6 +276,9 @@ fn ms_sample_dcos(mf: MsMicrofacet, u: vec2<f32>) -> MsSample {
     }
     if mf.ndf == MS_NDF_BESSEL_K {
         return ms_bessel_k_sample_dcos(mf.alpha, u, mf.table);
+    }
+    if mf.ndf == MS_NDF_GTR {
+        return ms_gtr_sample_dcos(mf.alpha, u, mf.table);
     }
     return MsSample(vec3<f32>(0.0, 0.0, 1.0), 0.0);
 }

@@ -556,11 +556,118 @@ impl FittedGtr {
         super::normal_from_polar(r, super::cos_sin_turn(u[1].to_f64()), 1.0, 1.0)
     }
 
+    /// The tables and the samplers' constants as the GPU crate lays them out (not an API).
+    #[doc(hidden)]
+    pub fn layout(&self) -> GtrLayout<'_> {
+        let b = self.exact.burley();
+        GtrLayout {
+            alpha: self.alpha,
+            gamma: self.gamma,
+            direct: self.direct,
+            rows: &self.coef,
+            rows32: &self.coef32,
+            off32: self.off32,
+            lo32: self.lo32,
+            m: self.m,
+            k: self.k,
+            sigma0: self.sigma0,
+            c: self.c,
+            ln_c: self.ln_c,
+            burley: [
+                b.l,
+                b.k,
+                b.kl,
+                b.e,
+                b.em1,
+                b.e_neg,
+                b.em1_neg,
+                b.ex,
+                b.ex_neg,
+                b.ln_em1_abs,
+            ],
+            dcos: self.dcos.layout(),
+            moment: self.moment.layout(),
+        }
+    }
+
     /// σ(u) for u ∈ [−1, 1].
     #[inline]
     pub fn sigma<F: Real>(&self, u: F) -> F {
         super::sigma_from_lambda(u, F::from_f64(self.sigma0), |v| self.lambda(v))
     }
+}
+
+/// What the GPU crate's table of a [`FittedGtr`] holds (not an API): the Λ tables (the f64
+/// rows of degree 4 and, where there is one, the f32 cubics on the same rows), their lookup
+/// offsets and ends, D's normalisation, Burley's constants of the D·cos quantile and the
+/// visible sampler's two radial envelopes.
+#[doc(hidden)]
+#[derive(Clone, Debug)]
+pub struct GtrLayout<'a> {
+    pub alpha: f64,
+    pub gamma: f64,
+    /// Whether `rows` hold Λ itself (else ln Λ).
+    pub direct: bool,
+    /// The f64 rows (degree 4 in s ∈ [−1, 1), s⁰ first): the u table's, then the w table's.
+    pub rows: &'a [[f64; N]],
+    /// The f32 cubics on the same rows (empty where there are none).
+    pub rows32: &'a [[f32; N32]],
+    /// Per side [u, w]: the row of t is (bits of the f32 t) >> 18 less this (wrapping).
+    pub off32: [u32; 2],
+    /// Per side: 2^k0, below which t is past the table.
+    pub lo32: [f32; 2],
+    /// Λ ≈ m₀/a − ½ + m₁a at the grazing end (a = cot θ).
+    pub m: [f64; 2],
+    /// Λ ≈ (K₀ + K₁/a²)/a² near the normal.
+    pub k: [f64; 2],
+    pub sigma0: f64,
+    /// D = c x^{−γ}, x = sin²θ + α² cos²θ; ln c (finite where c underflows).
+    pub c: f64,
+    pub ln_c: f64,
+    /// Burley's quantile constants: L = ln α², k = 1 − γ, kL, e^{kL}, e^{kL} − 1, e^{−kL},
+    /// e^{−kL} − 1, (e^{kL} − 1)/(kL), (e^{−kL} − 1)/(−kL), ln(e^{|kL|} − 1).
+    pub burley: [f64; 10],
+    /// The visible sampler's radial envelopes: D·cos slopes and the first moment.
+    pub dcos: RadialLayout,
+    pub moment: RadialLayout,
+}
+
+/// One radial envelope of the visible sampler (see `vndf.rs`), for the GPU crate.
+#[doc(hidden)]
+#[derive(Clone, Debug)]
+pub struct RadialLayout {
+    /// The density's power k of t = ln r² (1: D·cos, 3/2: the first moment).
+    pub k: f64,
+    /// The largest envelope exponent (subtracted from every piece's).
+    pub top: f64,
+    /// The pieces in order, the left tail first and the right tail last.
+    pub pieces: Vec<RadialPiece>,
+}
+
+/// One piece of a radial envelope and its column of the alias table (column i's own piece is
+/// piece i), for the GPU crate.
+#[doc(hidden)]
+#[derive(Clone, Copy, Debug)]
+pub struct RadialPiece {
+    /// Whether the piece is a tail (infinite width: t sampled from its exponential).
+    pub tail: bool,
+    /// Tails: t = a + ln(1 − v)/β, envelope exponent e0 + β(t − a) (relative to `top`),
+    /// kept without φ below `squeeze`.
+    pub a: f64,
+    pub beta: f64,
+    pub e0: f64,
+    pub em1: f64,
+    pub squeeze: f64,
+    /// Finite pieces: r = r0 + v dr, kept without φ when keep ≤ s0 + s1 v, else against
+    /// e^{φ − top − t/2 − h}.
+    pub r0: f64,
+    pub dr: f64,
+    pub s0: f64,
+    pub s1: f64,
+    pub h: f64,
+    /// The alias table's column: its own piece below `prob`, piece `alias` above.
+    pub prob: f64,
+    pub alias: u32,
 }
 
 /// Re-expands each fitted row (a polynomial in s ∈ [−1, 1]) onto its 2^split equal pieces:

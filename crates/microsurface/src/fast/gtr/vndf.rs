@@ -367,6 +367,35 @@ impl Radial {
         }
     }
 
+    /// The envelope as the GPU crate lays it out (see [`super::RadialLayout`]).
+    pub(super) fn layout(&self) -> super::RadialLayout {
+        let pieces = self
+            .pieces
+            .iter()
+            .zip(&self.slots)
+            .map(|(p, slot)| super::RadialPiece {
+                tail: !p.w.is_finite(),
+                a: p.a,
+                beta: p.beta,
+                e0: p.e0,
+                em1: p.em1,
+                squeeze: p.squeeze,
+                r0: p.r0,
+                dr: p.dr,
+                s0: p.s0,
+                s1: p.s1,
+                h: p.h,
+                prob: slot.prob,
+                alias: slot.other.piece,
+            })
+            .collect();
+        super::RadialLayout {
+            k: self.k,
+            top: self.top,
+            pieces,
+        }
+    }
+
     /// φ(t) − envelope(t) ≤ 0 on piece `p` (the tests' reference form, without overflow
     /// at any t).
     #[cfg(test)]
