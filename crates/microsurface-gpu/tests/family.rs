@@ -404,10 +404,21 @@ fn family_visible_samplers_give_the_rust_f32_normals() {
     let mut w: Vec<Worst> = ndfs.iter().map(|_| Worst::new(&names)).collect();
     let (mut same, mut worst_same) = (vec![0usize; ndfs.len()], vec![0f64; ndfs.len()]);
     let mut n = vec![0usize; ndfs.len()];
+    // The mixtures' D·cos normals (β from the prior over the stream, then Beckmann's warp:
+    // the Rust fast path's draws), the same-draw count as the visible ones'.
+    let (mut dcos_same, mut dcos_n, mut dcos_worst) = (0usize, 0usize, 0f64);
     for (e, o) in els.iter().zip(&out) {
         let m = rust(e);
         let k = index(e.ndf);
         n[k] += 1;
+        if e.ndf >= NDF_SHAPED && student_t_gamma(e).is_none() && e.wo == [0.0, 0.0, 1.0] {
+            dcos_n += 1;
+            let d = vec_diff([o[0][0], o[0][1], o[0][2]], m.sample_dcos(e.u).wm);
+            if d <= 1e-3 {
+                dcos_same += 1;
+                dcos_worst = dcos_worst.max(d);
+            }
+        }
         let g = [o[1][0], o[1][1], o[1][2]];
         let r = m.sample(e.wo, e.u).wm;
         let d = vec_diff(g, r);
@@ -446,6 +457,13 @@ fn family_visible_samplers_give_the_rust_f32_normals() {
             format!("{e:?}: gpu {} rust {p}", o[1][3])
         });
     }
+    eprintln!(
+        "the mixtures' D·cos: {dcos_same} of {dcos_n} normals the Rust draw (largest difference {dcos_worst:.2e})"
+    );
+    assert!(
+        dcos_same as f64 >= 0.995 * dcos_n as f64,
+        "the mixtures' D·cos: only {dcos_same} of {dcos_n} normals are the Rust draw"
+    );
     for (k, &ndf) in ndfs.iter().enumerate() {
         let name = match ndf {
             NDF_DOUBLE_GGX => "Double GGX".to_string(),

@@ -35,9 +35,9 @@
 //! closed form needs K_ν of real order (a trapezoidal rule per call), from a table of
 //! ln K_ν(y) + y fitted per shape (`BesselProfile`: within 1e-13 + 8ε(|ln K| + y) of the
 //! exact ln K_ν, so D within about 1e-12 relative, the exact form's own rounding) — and the
-//! samplers those of the exact path: D·cos by the radial
-//! quantile of the α = 1 member (closed form for Student-T, Newton on the CDF for the others),
-//! visible normals by the mixing variable's posterior (`mixture::Posterior`; then
+//! samplers: D·cos by the radial quantile of the α = 1 member for Student-T (closed form), by
+//! the prior's β and Beckmann's D·cos for the others (`sample_dcos`), visible normals by the
+//! mixing variable's posterior (`mixture::Posterior`; then
 //! Beckmann's stream sampler; a fraction of a microsecond), its uniforms after u's from a
 //! [`crate::distribution::UniformStream`] seeded by u. Accuracy and cost: tests/fast.rs and
 //! BENCHMARKS.md (the family's fast path).
@@ -428,12 +428,33 @@ impl FittedShape {
         }
     }
 
-    /// A D·cos normal at (αx, αy): tan θ = r from the α = 1 radial quantile of u₀, stretched;
-    /// azimuth 2πu₁.
+    /// A D·cos normal at (αx, αy). Student-T: tan θ = r from the α = 1 radial quantile of u₀
+    /// (closed form), stretched, azimuth 2πu₁: a warp of u. The others: D·cos of a
+    /// superposition of normalised Beckmann components is their D·cos mixed by the prior,
+    /// so β from the prior over the [`crate::distribution::UniformStream`] of u (not u itself,
+    /// which drives the warp), then Beckmann's D·cos warp of u at β(αx, αy): exact in
+    /// distribution and a few Gamma or uniform draws where the radial quantile took a Newton
+    /// inversion of a quadrature-backed CDF (microseconds); not a warp of u alone. (The GPU
+    /// library's sampler is the same, draw for draw.)
     #[inline]
     pub fn sample_dcos<F: super::Real>(&self, ax: f64, ay: f64, u: [F; 2]) -> [F; 3] {
-        let r = self.unit.slope_quantile(u[0].to_f64());
-        super::normal_from_polar(r, super::cos_sin_turn(u[1].to_f64()), ax, ay)
+        if matches!(self.unit, AnyNdf::StudentT(_)) {
+            let r = self.unit.slope_quantile(u[0].to_f64());
+            return super::normal_from_polar(r, super::cos_sin_turn(u[1].to_f64()), ax, ay);
+        }
+        let mut s = crate::distribution::UniformStream::new(u);
+        let mut ln_beta = self
+            .posterior
+            .draw_prior_ln_beta(&mut || s.next_uniform::<f64>());
+        if ln_beta.is_nan() {
+            // (64 rejections of the Gamma variate: probability below 1e-80.)
+            ln_beta = self.posterior.parameters().1.ln();
+        }
+        // β (αx, αy) within [1e-290, 1e290], as the visible sampler's.
+        let (lo, hi) = (ax.min(ay).ln(), ax.max(ay).ln());
+        let beta = ln_beta.clamp(-667.0 - lo, 667.0 - hi).exp();
+        let m = super::beckmann::sample_dcos(beta * ax, beta * ay, [u[0].to_f64(), u[1].to_f64()]);
+        [F::from_f64(m[0]), F::from_f64(m[1]), F::from_f64(m[2])]
     }
 
     /// A visible normal for w (mirrored below the horizon) at (αx, αy) from u and, for

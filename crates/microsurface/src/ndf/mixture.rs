@@ -214,6 +214,11 @@ impl Posterior {
         (k, self.mean_beta)
     }
 
+    /// ln β(t) for t drawn from the prior (D·cos sampling of the mixture).
+    pub(crate) fn draw_prior_ln_beta(&self, next: &mut dyn FnMut() -> f64) -> f64 {
+        self.draw_ln_beta(false, next)
+    }
+
     /// ln β(t) for t drawn from the prior, or from the size-biased prior.
     fn draw_ln_beta(&self, size_biased: bool, next: &mut dyn FnMut() -> f64) -> f64 {
         let bias = if size_biased { 1.0 } else { 0.0 };
