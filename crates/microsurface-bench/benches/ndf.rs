@@ -624,6 +624,30 @@ fn family_fast_paths(i: &Inputs, calls: usize) {
     family!("Erfc", Erfc, None);
     family!("K0", K0, None);
     family!("Bessel-K a = 1.5", BesselK, Some(1.5));
+    // D·cos: the fast path (the prior's β and Beckmann's D·cos for all but Student-T) against
+    // the radial quantile of the exact path (`Exact`, what the fast path inverted before).
+    println!();
+    println!("family D·cos sampling, f64, α = 0.3 (ns per sample; the exact path's radial quantile for scale)");
+    use microsurface::{Exact, NdfKind};
+    for (name, kind, shape) in [
+        ("Student-T γ = 2.5", NdfKind::StudentT, Some(2.5)),
+        ("Ei", NdfKind::Ei, None),
+        ("Erfc", NdfKind::Erfc, None),
+        ("K0", NdfKind::K0, None),
+        ("Bessel-K a = 1.5", NdfKind::BesselK, Some(1.5)),
+    ] {
+        let fast = microsurface::AnyMicrofacet::<f64>::new(kind, 0.3, 0.3, shape).unwrap();
+        let exact = Exact::new(kind, 0.3, 0.3, shape).unwrap();
+        let t_fast = time(calls, |k| fast.sample_dcos(black_box(i.xi[k])).wm[2]);
+        let t_exact = time((calls / 100).max(100), |k| {
+            exact.sample_dcos(black_box(i.xi[k])).wm[2]
+        });
+        println!(
+            "{:44} fast {t_fast:8.1} ns | exact (radial quantile) {t_exact:9.1} ns ({:6.1}×)",
+            name,
+            t_exact / t_fast
+        );
+    }
 }
 
 /// The run-time door: `AnyMicrofacet<F>` (materials built from a kind chosen at run time)

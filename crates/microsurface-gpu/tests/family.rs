@@ -27,8 +27,9 @@ use std::sync::OnceLock;
 
 mod grid;
 use grid::{
-    d_bound, directions, lambda_bound, normals, uniforms, vec_diff, Worst, ALPHAS, EPS,
-    NDF_DOUBLE_GGX, NDF_EXPONENTIAL, TOL,
+    d_bound, directions, gpu_quantities, lambda_bound, normals, quantity_bounds, rel_flushed,
+    rust_quantities, uniforms, vec_diff, visible_cancellation, Worst, ALPHAS, EPS, NDF_DOUBLE_GGX,
+    NDF_EXPONENTIAL, QUANTITIES, TOL,
 };
 
 /// The device and the compiled kernels, once per test binary; `None` (the tests skip) only
@@ -141,36 +142,6 @@ fn run(entry: &str, els: &[El]) -> Option<Vec<[[f32; 4]; KERNEL_OUT]>> {
 /// A sampled normal's components: 16ε (see the module docs).
 const NORMAL_TOL: f64 = 16.0 * EPS;
 
-/// |g − r|/|r| (0 where equal, or where they differ by less than 1e-36: a subnormal factor
-/// a device may flush); +∞ where exactly one is 0, NaN or infinite.
-fn rel(g: f32, r: f32) -> f64 {
-    if g == r || (g as f64 - r as f64).abs() <= 1e-36 {
-        return 0.0;
-    }
-    let (g, r) = (g as f64, r as f64);
-    if !(g.is_finite() && r.is_finite()) || r == 0.0 {
-        return f64::INFINITY;
-    }
-    (g - r).abs() / r.abs()
-}
-
-/// |w||m|/|w·m| (f64), the cancellation of the visible pdf's dot product (1e12 capped).
-fn dot_cancellation(w: [f32; 3], m: [f32; 3]) -> f64 {
-    let d: f64 = (0..3).map(|k| w[k] as f64 * m[k] as f64).sum();
-    (1.0 / d.abs()).min(1e12)
-}
-
-impl Worst {
-    fn check(&self) {
-        for (k, (e, w)) in self.max.iter().enumerate() {
-            eprintln!("{:>28}: max {e:.3e} of its bound {w}", self.names[k]);
-        }
-        for (k, (e, w)) in self.max.iter().enumerate() {
-            assert!(*e <= 1.0, "{}: {e:e} of its bound at {w}", self.names[k]);
-        }
-    }
-}
-
 /// The Rust f32 material of an element.
 fn rust(e: &El) -> Box<dyn MicrofacetDistribution<f32>> {
     let [ax, ay] = e.alpha;
@@ -205,56 +176,31 @@ fn family_d_lambda_g1_g2_pdfs_match_rust_f32() {
     let Some(out) = run("ms_k_family_eval", &els) else {
         return;
     };
-    let names = [
-        "D / bound",
-        "Λ / bound",
-        "G1 / bound",
-        "G2 correlated / bound",
-        "G2 separable / bound",
-        "visible pdf / bound",
-        "D·cos pdf / bound",
-        "G1(wm) / bound",
-    ];
+    let names = QUANTITIES;
     let mut w = [Worst::new(&names), Worst::new(&names)];
     for (e, o) in els.iter().zip(&out) {
         let m = rust(e);
         let (wo, wm) = (e.wo, e.wm);
-        let r = [
-            m.d(wm),
-            m.lambda(wo),
-            m.g1(wo),
-            m.g2(wo, wm),
-            m.g2_separable(wo, wm),
-            m.pdf(wo, wm),
-            m.pdf_dcos(wm),
-            m.g1(wm),
-        ];
-        let g = [
-            o[0][0], o[0][1], o[0][2], o[0][3], o[1][0], o[1][1], o[1][2], o[1][3],
-        ];
+        let r = rust_quantities(&*m, wo, wm);
+        let g = gpu_quantities(o);
         let (lo, li) = (m.lambda(wo) as f64, m.lambda(wm) as f64);
         let (bo, bi) = (
             lambda_bound(e.ndf, wo, e.alpha),
             lambda_bound(e.ndf, wm, e.alpha),
         );
-        let frac = |l: f64| if l.is_finite() { l / (1.0 + l) } else { 1.0 };
-        let g1 = TOL + bo * frac(lo);
-        let g1m = TOL + bi * frac(li);
-        let g2 = TOL + bo.max(bi) * frac(lo + li);
         let d = d_bound(e.ndf, wm, e.alpha);
-        let pdf = g1 + d + 8.0 * EPS * dot_cancellation(wo, wm);
-        let tol = [d, bo, g1, g2, g1 + g1m + TOL, pdf, d, g1m];
+        let tol = quantity_bounds((bo, bi), (lo, li), d, wo, wm);
         let k = (e.ndf - NDF_DOUBLE_GGX) as usize;
         for q in 0..names.len() {
-            w[k].add(q, rel(g[q], r[q]) / tol[q], || {
+            w[k].add(q, rel_flushed(g[q], r[q]) / tol[q], || {
                 format!("{e:?}: gpu {} rust {} (bound {:e})", g[q], r[q], tol[q])
             });
         }
     }
     eprintln!("Double GGX:");
-    w[0].check();
+    w[0].check_within_bounds();
     eprintln!("Exponential:");
-    w[1].check();
+    w[1].check_within_bounds();
 }
 
 #[test]
@@ -286,14 +232,16 @@ fn family_dcos_samplers_give_the_rust_f32_normals() {
         let what = || format!("{e:?}: gpu {:?} rust {:?}", o[0], s.wm);
         w[k].add(0, vec_diff(g, s.wm) / NORMAL_TOL, what);
         let p = m.pdf_dcos(g);
-        w[k].add(1, rel(o[0][3], p) / d_bound(e.ndf, g, e.alpha), || {
-            format!("{e:?}: gpu {} rust {p}", o[0][3])
-        });
+        w[k].add(
+            1,
+            rel_flushed(o[0][3], p) / d_bound(e.ndf, g, e.alpha),
+            || format!("{e:?}: gpu {} rust {p}", o[0][3]),
+        );
     }
     eprintln!("Double GGX:");
-    w[0].check();
+    w[0].check_within_bounds();
     eprintln!("Exponential:");
-    w[1].check();
+    w[1].check_within_bounds();
 }
 
 /// SplitMix64 (crates/microsurface/src/math/rng.rs, private there), for the low 11 bits of
@@ -452,8 +400,8 @@ fn family_visible_samplers_give_the_rust_f32_normals() {
             )
         };
         let g1 = TOL + bo * if lo.is_finite() { lo / (1.0 + lo) } else { 1.0 };
-        let tol = g1 + bd + 8.0 * EPS * dot_cancellation(e.wo, g);
-        w[k].add(0, rel(o[1][3], p) / tol, || {
+        let tol = g1 + bd + 8.0 * EPS * visible_cancellation(e.wo, g);
+        w[k].add(0, rel_flushed(o[1][3], p) / tol, || {
             format!("{e:?}: gpu {} rust {p}", o[1][3])
         });
     }
@@ -474,7 +422,7 @@ fn family_visible_samplers_give_the_rust_f32_normals() {
             "{name}: {} of {} normals the Rust draw (largest difference {:.2e})",
             same[k], n[k], worst_same[k]
         );
-        w[k].check();
+        w[k].check_within_bounds();
         assert!(
             same[k] as f64 >= 0.995 * n[k] as f64,
             "{name}: only {} of {} normals are the Rust draw",
@@ -698,53 +646,28 @@ fn shaped_d_lambda_g1_g2_pdfs_match_rust_f32() {
     let Some(out) = run("ms_k_family_eval", &els) else {
         return;
     };
-    let names = [
-        "D / bound",
-        "Λ / bound",
-        "G1 / bound",
-        "G2 correlated / bound",
-        "G2 separable / bound",
-        "visible pdf / bound",
-        "D·cos pdf / bound",
-        "G1(wm) / bound",
-    ];
+    let names = QUANTITIES;
     let mut w: Vec<Worst> = SHAPED.iter().map(|_| Worst::new(&names)).collect();
     for (e, o) in els.iter().zip(&out) {
         let m = rust(e);
         let m64 = rust64(e);
         let (wo, wm) = (e.wo, e.wm);
-        let r = [
-            m.d(wm),
-            m.lambda(wo),
-            m.g1(wo),
-            m.g2(wo, wm),
-            m.g2_separable(wo, wm),
-            m.pdf(wo, wm),
-            m.pdf_dcos(wm),
-            m.g1(wm),
-        ];
-        let gpu = [
-            o[0][0], o[0][1], o[0][2], o[0][3], o[1][0], o[1][1], o[1][2], o[1][3],
-        ];
+        let r = rust_quantities(&*m, wo, wm);
+        let gpu = gpu_quantities(o);
         let (lo, li) = (m.lambda(wo) as f64, m.lambda(wm) as f64);
         let (bo, bi) = (shaped_lambda_bound(&m64, wo), shaped_lambda_bound(&m64, wm));
-        let frac = |l: f64| if l.is_finite() { l / (1.0 + l) } else { 1.0 };
-        let g1 = TOL + bo * frac(lo);
-        let g1m = TOL + bi * frac(li);
-        let g2 = TOL + bo.max(bi) * frac(lo + li);
         let d = shaped_d_bound(&m64, wm);
-        let pdf = g1 + d + 8.0 * EPS * dot_cancellation(wo, wm);
-        let tol = [d, bo, g1, g2, g1 + g1m + TOL, pdf, d, g1m];
+        let tol = quantity_bounds((bo, bi), (lo, li), d, wo, wm);
         let k = (e.ndf - NDF_SHAPED) as usize;
         for q in 0..names.len() {
-            w[k].add(q, rel(gpu[q], r[q]) / tol[q], || {
+            w[k].add(q, rel_flushed(gpu[q], r[q]) / tol[q], || {
                 format!("{e:?}: gpu {} rust {} (bound {:e})", gpu[q], r[q], tol[q])
             });
         }
     }
     for (k, (kind, shape, _)) in SHAPED.iter().enumerate() {
         eprintln!("{kind:?} {shape:?}:");
-        w[k].check();
+        w[k].check_within_bounds();
     }
 }
 
@@ -788,9 +711,11 @@ fn student_t_dcos_sampler_gives_the_rust_f32_normals() {
             format!("{e:?}: gpu {:?} rust {:?} (bound {tol:e})", o[0], s.wm)
         });
         let p = m.pdf_dcos(gm);
-        w.add(1, rel(o[0][3], p) / shaped_d_bound(&rust64(e), gm), || {
-            format!("{e:?}: gpu {} rust {p}", o[0][3])
-        });
+        w.add(
+            1,
+            rel_flushed(o[0][3], p) / shaped_d_bound(&rust64(e), gm),
+            || format!("{e:?}: gpu {} rust {p}", o[0][3]),
+        );
     }
-    w.check();
+    w.check_within_bounds();
 }

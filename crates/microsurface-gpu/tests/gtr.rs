@@ -49,7 +49,10 @@ use microsurface_gpu::{kernels_source, Error, Gpu, Program, Tables, KERNEL_IN, K
 use std::sync::OnceLock;
 
 mod grid;
-use grid::{directions, normals, uniforms, vec_diff, Worst, ALPHAS, EPS, TOL};
+use grid::{
+    directions, gpu_quantities, normals, quantity_bounds, rel_flushed, rust_quantities, uniforms,
+    vec_diff, visible_cancellation, Worst, ALPHAS, EPS, QUANTITIES, TOL,
+};
 
 /// The exponents of the tests besides GGX's 2: lighter than Burley's clearcoat (½), the
 /// clearcoat (1), the heavy tails of γ = 1.5, and two lighter than GGX's.
@@ -250,34 +253,6 @@ fn run(s: &Setup, entry: &str, els: &[El]) -> Vec<[[f32; 4]; KERNEL_OUT]> {
     out.chunks(KERNEL_OUT).map(|c| [c[0], c[1]]).collect()
 }
 
-/// |g − r|/|r| (0 where equal, or where they differ by less than 1e-36: a subnormal factor
-/// a device may flush); +∞ where exactly one is 0, NaN or infinite.
-fn rel(g: f32, r: f32) -> f64 {
-    if g == r || (g as f64 - r as f64).abs() <= 1e-36 {
-        return 0.0;
-    }
-    let (g, r) = (g as f64, r as f64);
-    if !(g.is_finite() && r.is_finite()) || r == 0.0 {
-        return f64::INFINITY;
-    }
-    (g - r).abs() / r.abs()
-}
-
-/// |w||m|/|w·m| (f64), the cancellation of the visible pdf's dot product (1e12 capped).
-fn dot_cancellation(w: [f32; 3], m: [f32; 3]) -> f64 {
-    let d: f64 = (0..3).map(|k| w[k] as f64 * m[k] as f64).sum();
-    (1.0 / d.abs()).min(1e12)
-}
-
-fn check(w: &Worst) {
-    for (k, (e, at)) in w.max.iter().enumerate() {
-        eprintln!("{:>28}: max {e:.3e} of its bound {at}", w.names[k]);
-    }
-    for (k, (e, at)) in w.max.iter().enumerate() {
-        assert!(*e <= 1.0, "{}: {e:e} of its bound at {at}", w.names[k]);
-    }
-}
-
 /// D's relative bound at wm (see the module docs).
 fn d_bound(m: &Material, wm: [f32; 3]) -> f64 {
     if m.kind == 0 {
@@ -338,47 +313,21 @@ fn gtr_d_lambda_g1_g2_pdfs_match_rust_f32() {
         }
     }
     let out = run(s, "ms_k_family_eval", &els);
-    let names = [
-        "D / bound",
-        "Λ / bound",
-        "G1 / bound",
-        "G2 correlated / bound",
-        "G2 separable / bound",
-        "visible pdf / bound",
-        "D·cos pdf / bound",
-        "G1(wm) / bound",
-    ];
+    let names = QUANTITIES;
     let mut w: Vec<Worst> = LABELS.iter().map(|_| Worst::new(&names)).collect();
     for (e, o) in els.iter().zip(&out) {
         let m = &s.materials[e.mat];
         let r = &m.rust;
         let (wo, wm) = (e.wo, e.wm);
-        let want = [
-            r.d(wm),
-            r.lambda(wo),
-            r.g1(wo),
-            r.g2(wo, wm),
-            r.g2_separable(wo, wm),
-            r.pdf(wo, wm),
-            r.pdf_dcos(wm),
-            r.g1(wm),
-        ];
-        let got = [
-            o[0][0], o[0][1], o[0][2], o[0][3], o[1][0], o[1][1], o[1][2], o[1][3],
-        ];
+        let want = rust_quantities(r, wo, wm);
+        let got = gpu_quantities(o);
         let (lo, li) = (r.lambda(wo) as f64, r.lambda(wm) as f64);
         let (bo, bi) = (lambda_bound(m, lo), lambda_bound(m, li));
-        let frac = |l: f64| if l.is_finite() { l / (1.0 + l) } else { 1.0 };
-        let g1 = TOL + bo * frac(lo);
-        let g1m = TOL + bi * frac(li);
-        let g2 = TOL + bo.max(bi) * frac(lo + li);
-        let d = d_bound(m, wm);
         // (γ = 2: GGX's closed-form pdf here, G1·(w·m)·D/|w.z| in Rust: both within TOL.)
-        let pdf = g1 + d + 8.0 * EPS * dot_cancellation(wo, wm);
-        let tol = [d, bo, g1, g2, g1 + g1m + TOL, pdf, d, g1m];
+        let tol = quantity_bounds((bo, bi), (lo, li), d_bound(m, wm), wo, wm);
         let k = group(m);
         for q in 0..names.len() {
-            w[k].add(q, rel(got[q], want[q]) / tol[q], || {
+            w[k].add(q, rel_flushed(got[q], want[q]) / tol[q], || {
                 format!(
                     "α {:?} γ {} wo {wo:?} wm {wm:?}: gpu {} rust {} (bound {:e})",
                     m.alpha, m.gamma, got[q], want[q], tol[q]
@@ -388,7 +337,7 @@ fn gtr_d_lambda_g1_g2_pdfs_match_rust_f32() {
     }
     for (label, w) in LABELS.iter().zip(&w) {
         eprintln!("GTR {label}:");
-        check(w);
+        w.check_within_bounds();
     }
 }
 
@@ -464,7 +413,7 @@ fn gtr_dcos_sampler_gives_the_rust_f32_normals() {
             )
         });
         let p = m.rust.pdf_dcos(g);
-        w.add(1, rel(o[0][3], p) / d_bound(m, g), || {
+        w.add(1, rel_flushed(o[0][3], p) / d_bound(m, g), || {
             format!(
                 "α {:?} γ {} u {:?}: gpu {} rust {p}",
                 m.alpha, m.gamma, e.u, o[0][3]
@@ -473,7 +422,7 @@ fn gtr_dcos_sampler_gives_the_rust_f32_normals() {
     }
     for (label, w) in LABELS.iter().zip(&ws) {
         eprintln!("GTR {label}:");
-        check(w);
+        w.check_within_bounds();
     }
 }
 
@@ -548,8 +497,8 @@ fn gtr_visible_sampler_gives_the_rust_f32_normals() {
         let lo = m.rust.lambda(e.wo) as f64;
         let bo = lambda_bound(m, lo);
         let g1 = TOL + bo * if lo.is_finite() { lo / (1.0 + lo) } else { 1.0 };
-        let tol = g1 + d_bound(m, g) + 8.0 * EPS * dot_cancellation(e.wo, g);
-        w.add(0, rel(o[1][3], p) / tol, || {
+        let tol = g1 + d_bound(m, g) + 8.0 * EPS * visible_cancellation(e.wo, g);
+        w.add(0, rel_flushed(o[1][3], p) / tol, || {
             format!(
                 "α {:?} γ {} wo {:?} u {:?}: gpu {} rust {p}",
                 m.alpha, m.gamma, e.wo, e.u, o[1][3]
@@ -563,7 +512,7 @@ fn gtr_visible_sampler_gives_the_rust_f32_normals() {
         worst.0,
         worst.1
     );
-    check(&w);
+    w.check_within_bounds();
     assert!(
         same as f64 >= 0.995 * els.len() as f64,
         "only {same} of {} normals are the Rust draw",

@@ -162,3 +162,91 @@ pub fn lambda_bound(ndf: u32, w: [f32; 3], alpha: [f32; 2]) -> f64 {
         _ => TOL,
     }
 }
+
+/// |g − r|/|r| (0 where equal, or where they differ by less than 1e-36: a subnormal factor
+/// a device may flush); +∞ where exactly one is 0, NaN or infinite.
+pub fn rel_flushed(g: f32, r: f32) -> f64 {
+    if g == r || (g as f64 - r as f64).abs() <= 1e-36 {
+        return 0.0;
+    }
+    let (g, r) = (g as f64, r as f64);
+    if !(g.is_finite() && r.is_finite()) || r == 0.0 {
+        return f64::INFINITY;
+    }
+    (g - r).abs() / r.abs()
+}
+
+/// |w||m|/|w·m| (f64), the cancellation of the visible pdf's dot product (1e12 capped).
+pub fn visible_cancellation(w: [f32; 3], m: [f32; 3]) -> f64 {
+    let d: f64 = (0..3).map(|k| w[k] as f64 * m[k] as f64).sum();
+    (1.0 / d.abs()).min(1e12)
+}
+
+/// The eight quantities of the NDF comparisons (the test kernels' `ms_k_family_eval`), each
+/// over its bound.
+pub const QUANTITIES: [&str; 8] = [
+    "D / bound",
+    "Λ / bound",
+    "G1 / bound",
+    "G2 correlated / bound",
+    "G2 separable / bound",
+    "visible pdf / bound",
+    "D·cos pdf / bound",
+    "G1(wm) / bound",
+];
+
+/// The Rust f32 values of [`QUANTITIES`] at (wo, wm).
+pub fn rust_quantities(
+    m: &dyn microsurface::MicrofacetDistribution<f32>,
+    wo: [f32; 3],
+    wm: [f32; 3],
+) -> [f32; 8] {
+    [
+        m.d(wm),
+        m.lambda(wo),
+        m.g1(wo),
+        m.g2(wo, wm),
+        m.g2_separable(wo, wm),
+        m.pdf(wo, wm),
+        m.pdf_dcos(wm),
+        m.g1(wm),
+    ]
+}
+
+/// The GPU's [`QUANTITIES`]: `ms_k_family_eval`'s two records.
+pub fn gpu_quantities(o: &[[f32; 4]; 2]) -> [f32; 8] {
+    [
+        o[0][0], o[0][1], o[0][2], o[0][3], o[1][0], o[1][1], o[1][2], o[1][3],
+    ]
+}
+
+/// The bounds of [`QUANTITIES`] from Λ's bounds at wo and wm (`bo`, `bi`), Λ's values there
+/// (`lo`, `li`), D's bound `d` and the directions: G1 = 1/(1 + Λ) and G2 take Λ's relative
+/// error times Λ/(1 + Λ) (≤ 1), plus `TOL`; the separable G2 both G1's; the visible pdf G1's
+/// and D's plus 8ε times the dot product's cancellation.
+pub fn quantity_bounds(
+    (bo, bi): (f64, f64),
+    (lo, li): (f64, f64),
+    d: f64,
+    wo: [f32; 3],
+    wm: [f32; 3],
+) -> [f64; 8] {
+    let frac = |l: f64| if l.is_finite() { l / (1.0 + l) } else { 1.0 };
+    let g1 = TOL + bo * frac(lo);
+    let g1m = TOL + bi * frac(li);
+    let g2 = TOL + bo.max(bi) * frac(lo + li);
+    let pdf = g1 + d + 8.0 * EPS * visible_cancellation(wo, wm);
+    [d, bo, g1, g2, g1 + g1m + TOL, pdf, d, g1m]
+}
+
+impl Worst {
+    /// Prints every maximum and asserts each within its bound (≤ 1).
+    pub fn check_within_bounds(&self) {
+        for (k, (e, w)) in self.max.iter().enumerate() {
+            eprintln!("{:>28}: max {e:.3e} of its bound {w}", self.names[k]);
+        }
+        for (k, (e, w)) in self.max.iter().enumerate() {
+            assert!(*e <= 1.0, "{}: {e:e} of its bound at {w}", self.names[k]);
+        }
+    }
+}
