@@ -17,15 +17,16 @@
 
 use microsurface::bsdf::fresnel::Conductor;
 use microsurface::bsdf::{Bsdf, RoughConductor, RoughDielectric};
-use microsurface::{Ggx, Microfacet, MicrofacetDistribution};
-use microsurface_gpu::{groups, Gpu, WGSL};
+use microsurface::{Ggx, Microfacet, MicrofacetDistribution, NdfKind};
+use microsurface_gpu::{groups, Gpu, Tables, WGSL};
 use std::time::Instant;
 
 /// Evaluations per invocation (ITER in the WGSL).
 const ITER: u64 = 8;
 const ALPHA: [f32; 2] = [0.3, 0.15];
 
-const KERNELS: [(&str, &str); 14] = [
+/// The GGX and BSDF kernels (the door's NDF unused: GGX).
+const KERNELS: [(&str, &str); 8] = [
     ("bench_inputs", "inputs (hash, directions; no library call)"),
     (
         "bench_ggx_sample",
@@ -46,31 +47,41 @@ const KERNELS: [(&str, &str); 14] = [
         "GGX dielectric eval + pdf (η = 1.5)",
     ),
     ("bench_dielectric_sample", "GGX dielectric sample (η = 1.5)"),
-    (
-        "bench_beckmann_sample",
-        "Beckmann visible normal + pdf (MsMicrofacet)",
-    ),
-    ("bench_beckmann_d_g2", "Beckmann D · G2 (MsMicrofacet)"),
-    (
-        "bench_double_ggx_sample",
-        "Double GGX visible normal + pdf (rejection)",
-    ),
-    ("bench_double_ggx_d_g2", "Double GGX D · G2 (MsMicrofacet)"),
-    (
-        "bench_exponential_sample",
-        "Exponential visible normal + pdf (rejection)",
-    ),
-    (
-        "bench_exponential_d_g2",
-        "Exponential D · G2 (MsMicrofacet)",
-    ),
+];
+
+/// The other NDFs through the door (`bench_door_sample`, `bench_door_d_g2`): name, MS_NDF_*,
+/// and the material's own table where it has one (GTR at α = ALPHA[0], γ = 1.5).
+type Shape = Option<(NdfKind, Option<f64>)>;
+const DOOR: [(&str, u32, Shape); 9] = [
+    ("Beckmann", 1, None),
+    ("Double GGX", 2, None),
+    ("Exponential", 3, None),
+    ("GTR γ = 1.5 (α 0.3)", 4, None),
+    ("Student-T γ = 2.5", 5, Some((NdfKind::StudentT, Some(2.5)))),
+    ("Ei", 6, Some((NdfKind::Ei, None))),
+    ("Erfc", 7, Some((NdfKind::Erfc, None))),
+    ("K0", 8, Some((NdfKind::K0, None))),
+    ("Bessel-K a = 1.5", 9, Some((NdfKind::BesselK, Some(1.5)))),
 ];
 
 fn main() {
     let args: Vec<String> = std::env::args().collect();
     let log2: u32 = args.get(1).and_then(|s| s.parse().ok()).unwrap_or(24);
     let rounds: usize = args.get(2).and_then(|s| s.parse().ok()).unwrap_or(9).max(1);
-    let gpu = match Gpu::new() {
+    // The door's materials' tables (GTR's at its α; the shapes').
+    let mut tables = Tables::new();
+    let gtr = tables
+        .add_gtr(ALPHA[0] as f64, 1.5)
+        .expect("a GTR material");
+    let rows: Vec<u32> = DOOR
+        .iter()
+        .map(|&(_, ndf, shape)| match shape {
+            Some((kind, s)) => tables.add_shape(kind, s).expect("a shape table"),
+            None if ndf == 4 => gtr,
+            None => 0,
+        })
+        .collect();
+    let gpu = match Gpu::with_tables(&tables) {
         Ok(g) => g,
         Err(e) => {
             eprintln!("gpu_bench: {e}");
@@ -99,22 +110,28 @@ fn main() {
     );
     let source = format!("{WGSL}\n{}", include_str!("gpu_bench.wgsl"));
     let program = gpu.program(&source).unwrap_or_else(|e| panic!("{e}"));
-    let params = gpu.storage(16);
-    let p = [
-        ALPHA[0],
-        ALPHA[1],
-        f32::from_bits(n as u32),
-        f32::from_bits(0x9e37_79b9),
-    ];
-    gpu.queue()
-        .write_buffer(&params, 0, bytemuck::cast_slice(&[p]));
+    let params = gpu.storage(32);
+    let set_params = |alpha: [f32; 2], ndf: u32, row: u32| {
+        let p = [
+            [
+                alpha[0],
+                alpha[1],
+                f32::from_bits(n as u32),
+                f32::from_bits(0x9e37_79b9),
+            ],
+            [f32::from_bits(ndf), f32::from_bits(row), 0.0, 0.0],
+        ];
+        gpu.queue()
+            .write_buffer(&params, 0, bytemuck::cast_slice(&p));
+    };
+    set_params(ALPHA, 0, 0);
     let out = gpu.storage(n * 4);
     let bind = gpu.bind(&program, &params, &out);
     println!(
         "{:<46} {:>12} {:>16}",
         "kernel", "ms/dispatch", "evaluations/s"
     );
-    for (entry, label) in KERNELS {
+    let time_kernel = |entry: &str, label: &str| {
         let pipeline = gpu
             .pipeline(&program, entry)
             .unwrap_or_else(|e| panic!("{e}"));
@@ -132,6 +149,16 @@ fn main() {
             t * 1e3,
             (n * ITER) as f64 / t
         );
+    };
+    for (entry, label) in KERNELS {
+        time_kernel(entry, label);
+    }
+    for (&(name, ndf, _), &row) in DOOR.iter().zip(&rows) {
+        // (GTR's table is isotropic: its α for both.)
+        let alpha = if ndf == 4 { [ALPHA[0]; 2] } else { ALPHA };
+        set_params(alpha, ndf, row);
+        time_kernel("bench_door_sample", &format!("{name} visible normal + pdf"));
+        time_kernel("bench_door_d_g2", &format!("{name} D · G2"));
     }
     cpu_reference();
 }

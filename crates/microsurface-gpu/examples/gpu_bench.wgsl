@@ -3,7 +3,8 @@
 // function ITER times and writes one sum (so that nothing is optimised away); the
 // `bench_inputs` kernel does the same without the library call: the inputs' own cost.
 //
-// ms_in[0] = (αx, αy, n as f32 bits, seed as f32 bits).
+// ms_in[0] = (αx, αy, n as f32 bits, seed as f32 bits); ms_in[1] = (the door's NDF, its
+// table's row, as u32 bits; 0, 0).
 
 @group(0) @binding(0) var<storage, read> ms_in: array<vec4<f32>>;
 @group(0) @binding(1) var<storage, read_write> ms_out: array<f32>;
@@ -199,15 +200,21 @@ fn bench_dielectric_sample(@builtin(global_invocation_id) id: vec3<u32>,
     ms_out[i] = acc;
 }
 
-// MS_NDF_BECKMANN through MsMicrofacet: a visible normal + pdf, and D · G2.
+// The material of ms_in[1] (the NDF and its table's row, as u32 bits) through MsMicrofacet at
+// (αx, αy) = ms_in[0].xy: a visible normal + pdf, and D · G2.
+fn door() -> MsMicrofacet {
+    let p = ms_in[1];
+    return MsMicrofacet(bitcast<u32>(p.x), ms_in[0].xy, bitcast<u32>(p.y));
+}
+
 @compute @workgroup_size(64)
-fn bench_beckmann_sample(@builtin(global_invocation_id) id: vec3<u32>,
+fn bench_door_sample(@builtin(global_invocation_id) id: vec3<u32>,
     @builtin(num_workgroups) groups: vec3<u32>) {
     let i = index(id, groups);
     if i >= bitcast<u32>(ms_in[0].z) {
         return;
     }
-    let mf = MsMicrofacet(MS_NDF_BECKMANN, ms_in[0].xy, 0u);
+    let mf = door();
     var acc = 0.0;
     for (var j = 0u; j < ITER; j++) {
         let x = input(i, j);
@@ -218,81 +225,13 @@ fn bench_beckmann_sample(@builtin(global_invocation_id) id: vec3<u32>,
 }
 
 @compute @workgroup_size(64)
-fn bench_beckmann_d_g2(@builtin(global_invocation_id) id: vec3<u32>,
+fn bench_door_d_g2(@builtin(global_invocation_id) id: vec3<u32>,
     @builtin(num_workgroups) groups: vec3<u32>) {
     let i = index(id, groups);
     if i >= bitcast<u32>(ms_in[0].z) {
         return;
     }
-    let mf = MsMicrofacet(MS_NDF_BECKMANN, ms_in[0].xy, 0u);
-    var acc = 0.0;
-    for (var j = 0u; j < ITER; j++) {
-        let x = input(i, j);
-        acc += ms_d(mf, x.wi) * ms_g2(mf, x.wo, x.wi);
-    }
-    ms_out[i] = acc;
-}
-
-// MS_NDF_DOUBLE_GGX through MsMicrofacet: a visible normal + pdf, and D · G2.
-@compute @workgroup_size(64)
-fn bench_double_ggx_sample(@builtin(global_invocation_id) id: vec3<u32>,
-    @builtin(num_workgroups) groups: vec3<u32>) {
-    let i = index(id, groups);
-    if i >= bitcast<u32>(ms_in[0].z) {
-        return;
-    }
-    let mf = MsMicrofacet(MS_NDF_DOUBLE_GGX, ms_in[0].xy, 0u);
-    var acc = 0.0;
-    for (var j = 0u; j < ITER; j++) {
-        let x = input(i, j);
-        let s = ms_sample(mf, x.wo, x.u);
-        acc += s.wm.x + s.pdf;
-    }
-    ms_out[i] = acc;
-}
-
-@compute @workgroup_size(64)
-fn bench_double_ggx_d_g2(@builtin(global_invocation_id) id: vec3<u32>,
-    @builtin(num_workgroups) groups: vec3<u32>) {
-    let i = index(id, groups);
-    if i >= bitcast<u32>(ms_in[0].z) {
-        return;
-    }
-    let mf = MsMicrofacet(MS_NDF_DOUBLE_GGX, ms_in[0].xy, 0u);
-    var acc = 0.0;
-    for (var j = 0u; j < ITER; j++) {
-        let x = input(i, j);
-        acc += ms_d(mf, x.wi) * ms_g2(mf, x.wo, x.wi);
-    }
-    ms_out[i] = acc;
-}
-
-// MS_NDF_EXPONENTIAL through MsMicrofacet: a visible normal + pdf, and D · G2.
-@compute @workgroup_size(64)
-fn bench_exponential_sample(@builtin(global_invocation_id) id: vec3<u32>,
-    @builtin(num_workgroups) groups: vec3<u32>) {
-    let i = index(id, groups);
-    if i >= bitcast<u32>(ms_in[0].z) {
-        return;
-    }
-    let mf = MsMicrofacet(MS_NDF_EXPONENTIAL, ms_in[0].xy, 0u);
-    var acc = 0.0;
-    for (var j = 0u; j < ITER; j++) {
-        let x = input(i, j);
-        let s = ms_sample(mf, x.wo, x.u);
-        acc += s.wm.x + s.pdf;
-    }
-    ms_out[i] = acc;
-}
-
-@compute @workgroup_size(64)
-fn bench_exponential_d_g2(@builtin(global_invocation_id) id: vec3<u32>,
-    @builtin(num_workgroups) groups: vec3<u32>) {
-    let i = index(id, groups);
-    if i >= bitcast<u32>(ms_in[0].z) {
-        return;
-    }
-    let mf = MsMicrofacet(MS_NDF_EXPONENTIAL, ms_in[0].xy, 0u);
+    let mf = door();
     var acc = 0.0;
     for (var j = 0u; j < ITER; j++) {
         let x = input(i, j);
