@@ -131,9 +131,9 @@ fn main() {
         "{:<46} {:>12} {:>16}",
         "kernel", "ms/dispatch", "evaluations/s"
     );
-    let time_kernel = |entry: &str, label: &str| {
+    let time_kernel = |entry: &str, label: &str, constants: &[(&str, f64)]| {
         let pipeline = gpu
-            .pipeline(&program, entry)
+            .pipeline_with(&program, entry, constants)
             .unwrap_or_else(|e| panic!("{e}"));
         let mut times = Vec::new();
         for r in 0..=rounds {
@@ -151,14 +151,23 @@ fn main() {
         );
     };
     for (entry, label) in KERNELS {
-        time_kernel(entry, label);
+        time_kernel(entry, label, &[]);
     }
     for (&(name, ndf, _), &row) in DOOR.iter().zip(&rows) {
         // (GTR's table is isotropic: its α for both.)
         let alpha = if ndf == 4 { [ALPHA[0]; 2] } else { ALPHA };
         set_params(alpha, ndf, row);
-        time_kernel("bench_door_sample", &format!("{name} visible normal + pdf"));
-        time_kernel("bench_door_d_g2", &format!("{name} D · G2"));
+        // The door as a renderer of one NDF specialises it (MS_DOOR_NDFS = that NDF's bit),
+        // and as one that may meet any (the default).
+        let one = [("MS_DOOR_NDFS", (1u32 << ndf) as f64)];
+        for (how, constants) in [("", &one[..]), (", any NDF", &[][..])] {
+            time_kernel(
+                "bench_door_sample",
+                &format!("{name} visible normal + pdf{how}"),
+                constants,
+            );
+            time_kernel("bench_door_d_g2", &format!("{name} D · G2{how}"), constants);
+        }
     }
     cpu_reference();
 }

@@ -50,7 +50,7 @@
 //! | [`Tables`] + `Tables::add_shape(kind, shape)`, `Tables::add_gtr(α, γ)` → the `table` row of `MsMicrofacet` | `fast::fitted::FittedShape` (built once per shape), `fast::gtr::FittedGtr` (per material) |
 //! | `ms_stream_new(u)`, `ms_stream_next(&state)`, `ms_stream_next_u64`; `ms_zig_exp1(w, &state)`, `ms_zig_half_normal`, `ms_zig_normal`; `ms_ln_gamma_variate(k, &state)` | `distribution::UniformStream` (SplitMix64 seeded by u's bits, bit for bit); `fast::ziggurat::{exp1, half_normal, normal}`; Marsaglia & Tsang's Gamma variates |
 //! | `ms_fresnel_dielectric`, `ms_fresnel_conductor`, `ms_fresnel_schlick`, `ms_fresnel_f82_tint`; `MsFresnel` + `ms_fresnel_eval` | `bsdf::fresnel::{dielectric, conductor, schlick, f82_tint}`; the `Fresnel` terms |
-//! | `MsMicrofacet(ndf, α, table)` (`MS_NDF_GGX`, `_BECKMANN`, `_DOUBLE_GGX`, `_EXPONENTIAL`, `_GTR`, `_STUDENT_T`, `_EI`, `_ERFC`, `_K0`, `_BESSEL_K`; `table` the material's table row (GTR's, or a shape's), 0 for the first four) + `ms_d`, `ms_lambda`, `ms_g1`, `ms_g2`, `ms_g2_separable`, `ms_pdf`, `ms_pdf_dcos`, `ms_sample`, `ms_sample_dcos` | `MicrofacetDistribution` over `AnyMicrofacet` (the generalised exponential not yet on the GPU) |
+//! | `MsMicrofacet(ndf, α, table)` (`MS_NDF_GGX`, `_BECKMANN`, `_DOUBLE_GGX`, `_EXPONENTIAL`, `_GTR`, `_STUDENT_T`, `_EI`, `_ERFC`, `_K0`, `_BESSEL_K`; `table` the material's table row (GTR's, or a shape's), 0 for the first four) + `ms_d`, `ms_lambda`, `ms_g1`, `ms_g2`, `ms_g2_separable`, `ms_pdf`, `ms_pdf_dcos`, `ms_sample`, `ms_sample_dcos`; `override MS_DOOR_NDFS` (the NDFs a pipeline's door may meet, one bit each: set it per pipeline, [`Gpu::pipeline_with`], and the compiler drops the others) | `MicrofacetDistribution` over `AnyMicrofacet` (the generalised exponential not yet on the GPU) |
 //! | `MsConductor` + `ms_conductor_eval`, `ms_conductor_pdf`, `ms_conductor_eval_pdf`, `ms_conductor_sample` → `MsBsdfSample` | `bsdf::RoughConductor` (`Masking::Correlated` or `Separable`) |
 //! | `MsDielectric` + `ms_dielectric_eval`, `ms_dielectric_pdf`, `ms_dielectric_sample` → `MsBsdfSample` | `bsdf::RoughDielectric` (`Masking::Correlated` or `Separable`; both transports) |
 //! | `MsLutTap` + `ms_lut_tap(x, n)` (texel centres), `ms_lut_tap_edges(x, n)` (edge-aligned nodes), `ms_lut_index`, `ms_lut_lerp`, `ms_lut_bilerp`, `ms_lut_roughness_coord(α, α_max)` | `scattering::lut::Lut::lookup` (`Nodes::Centres`, clamp-to-edge; `Nodes::Edges`) |
@@ -708,8 +708,20 @@ impl Gpu {
 
     /// The compute pipeline of `entry` in `program` (made once, then cached).
     pub fn pipeline(&self, program: &Program, entry: &str) -> Result<wgpu::ComputePipeline, Error> {
+        self.pipeline_with(program, entry, &[])
+    }
+
+    /// The compute pipeline of `entry` with pipeline-overridable constants set (the door's
+    /// `MS_DOOR_NDFS`, say; made once per entry and constants, then cached).
+    pub fn pipeline_with(
+        &self,
+        program: &Program,
+        entry: &str,
+        constants: &[(&str, f64)],
+    ) -> Result<wgpu::ComputePipeline, Error> {
+        let key = format!("{entry}{constants:?}");
         let mut map = program.pipelines.lock().unwrap_or_else(|e| e.into_inner());
-        if let Some(p) = map.get(entry) {
+        if let Some(p) = map.get(&key) {
             return Ok(p.clone());
         }
         let scope = self.device.push_error_scope(wgpu::ErrorFilter::Validation);
@@ -720,13 +732,16 @@ impl Gpu {
                 layout: Some(&program.pipeline_layout),
                 module: &program.module,
                 entry_point: Some(entry),
-                compilation_options: Default::default(),
+                compilation_options: wgpu::PipelineCompilationOptions {
+                    constants,
+                    ..Default::default()
+                },
                 cache: None,
             });
         if let Some(e) = pollster::block_on(scope.pop()) {
             return Err(Error::Shader(format!("{entry}: {e}")));
         }
-        map.insert(entry.to_string(), p.clone());
+        map.insert(key, p.clone());
         Ok(p)
     }
 

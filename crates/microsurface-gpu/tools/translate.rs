@@ -18,6 +18,16 @@ pub fn translate() -> Result<Vec<(String, Vec<u8>)>, String> {
     let info = Validator::new(ValidationFlags::all(), Capabilities::empty())
         .validate(&module)
         .map_err(|e| e.emit_to_string(&source))?;
+    // The pipeline-overridable constants (the door's MS_DOOR_NDFS) at their defaults: the
+    // translations are the library as a shader without a pipeline; the WGSL keeps them.
+    let (module, info) = naga::back::pipeline_constants::process_overrides(
+        &module,
+        &info,
+        None,
+        &Default::default(),
+    )
+    .map_err(|e| format!("overrides: {e}"))?;
+    let (module, info) = (module.into_owned(), info.into_owned());
 
     let header = |comment: &str| {
         format!(

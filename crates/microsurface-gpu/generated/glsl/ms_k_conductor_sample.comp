@@ -47,10 +47,6 @@ struct MsDielectric {
     uint masking;
     uint transport;
 };
-struct MsLutTap {
-    uint i;
-    float f;
-};
 const float MS_PI = 3.1415927;
 const float MS_FRAC_1_PI = 0.31830987;
 const float MS_TAU = 6.2831855;
@@ -132,6 +128,7 @@ const uint MS_TRANSPORT_IMPORTANCE = 1u;
 const uint MS_SAMPLE_TRANSMISSION = 4u;
 const uint MS_K_IN = 5u;
 const uint MS_K_OUT = 2u;
+const uint MS_DOOR_NDFS = 4294967295u;
 
 layout(std430, binding = 2) readonly buffer type_7_block_0Compute { vec4 _group_1_binding_0_cs[]; };
 
@@ -147,32 +144,32 @@ float ms_inf() {
 }
 
 vec2 ms_cos_sin_turn(float v) {
-    float k_12 = roundEven((4.0 * v));
-    float r_7 = (v - (0.25 * k_12));
-    float x_20 = (MS_TAU * r_7);
-    float x2_ = (x_20 * x_20);
-    float s_10 = (x_20 * (1.0 + (x2_ * (-0.16666667 + (x2_ * (0.008333333 + (x2_ * (-0.0001984127 + (x2_ * 2.7557319e-6)))))))));
-    float c_18 = (1.0 + (x2_ * (-0.5 + (x2_ * (0.041666668 + (x2_ * (-0.0013888889 + (x2_ * (2.4801588e-5 + (x2_ * -2.755732e-7))))))))));
-    int q_2 = (int(k_12) & 3);
+    float k_11 = roundEven((4.0 * v));
+    float r_4 = (v - (0.25 * k_11));
+    float x_18 = (MS_TAU * r_4);
+    float x2_ = (x_18 * x_18);
+    float s_6 = (x_18 * (1.0 + (x2_ * (-0.16666667 + (x2_ * (0.008333333 + (x2_ * (-0.0001984127 + (x2_ * 2.7557319e-6)))))))));
+    float c_13 = (1.0 + (x2_ * (-0.5 + (x2_ * (0.041666668 + (x2_ * (-0.0013888889 + (x2_ * (2.4801588e-5 + (x2_ * -2.755732e-7))))))))));
+    int q_2 = (int(k_11) & 3);
     if ((q_2 == 0)) {
-        return vec2(c_18, s_10);
+        return vec2(c_13, s_6);
     } else {
         if ((q_2 == 1)) {
-            return vec2(-(s_10), c_18);
+            return vec2(-(s_6), c_13);
         } else {
             if ((q_2 == 2)) {
-                return vec2(-(c_18), -(s_10));
+                return vec2(-(c_13), -(s_6));
             }
         }
     }
-    return vec2(s_10, -(c_18));
+    return vec2(s_6, -(c_13));
 }
 
 vec3 ms_rescaled(vec3 a) {
     bool local = false;
-    float m_6 = max(abs(a.x), max(abs(a.y), abs(a.z)));
-    if ((m_6 > 0.0)) {
-        local = (m_6 <= 3.4028235e38);
+    float m_4 = max(abs(a.x), max(abs(a.y), abs(a.z)));
+    if ((m_4 > 0.0)) {
+        local = (m_4 <= 3.4028235e38);
     } else {
         local = false;
     }
@@ -180,7 +177,7 @@ vec3 ms_rescaled(vec3 a) {
     if (!(_e16)) {
         return a;
     }
-    return (a / vec3(m_6));
+    return (a / vec3(m_4));
 }
 
 float ms_dot(vec3 a_1, vec3 b) {
@@ -210,9 +207,9 @@ vec3 ms_unit(vec3 w) {
     if ((abs((_e1 - 1.0)) <= 1e-6)) {
         return w;
     }
-    float m_7 = max(abs(w.x), max(abs(w.y), abs(w.z)));
-    if ((m_7 > 0.0)) {
-        local_2 = (m_7 <= 3.4028235e38);
+    float m_5 = max(abs(w.x), max(abs(w.y), abs(w.z)));
+    if ((m_5 > 0.0)) {
+        local_2 = (m_5 <= 3.4028235e38);
     } else {
         local_2 = false;
     }
@@ -220,7 +217,7 @@ vec3 ms_unit(vec3 w) {
     if (!(_e22)) {
         return w;
     }
-    vec3 _e27 = ms_normalize((w * (1.0 / m_7)));
+    vec3 _e27 = ms_normalize((w * (1.0 / m_5)));
     return _e27;
 }
 
@@ -236,13 +233,13 @@ vec3 ms_unit_normal(vec3 v_1) {
     if (_e9) {
         return (v_1 * (1.0 / sqrt(_e1)));
     }
-    float m_8 = max(abs(v_1.x), max(abs(v_1.y), abs(v_1.z)));
-    if ((m_8 == 0.0)) {
+    float m_6 = max(abs(v_1.x), max(abs(v_1.y), abs(v_1.z)));
+    if ((m_6 == 0.0)) {
         return vec3(0.0, 0.0, 1.0);
     }
-    vec3 s_11 = (v_1 / vec3(m_8));
-    float _e30 = ms_dot(s_11, s_11);
-    return (s_11 * (1.0 / sqrt(_e30)));
+    vec3 s_7 = (v_1 / vec3(m_6));
+    float _e30 = ms_dot(s_7, s_7);
+    return (s_7 * (1.0 / sqrt(_e30)));
 }
 
 vec3 ms_reflect(vec3 wo, vec3 n) {
@@ -255,11 +252,11 @@ bool ms_same_hemisphere(vec3 a_3, vec3 b_1) {
 }
 
 vec3 ms_half_vector_reflection(vec3 wo_1, vec3 wi) {
-    vec3 s_12 = (wo_1 + wi);
-    if (!((max(abs(s_12.x), max(abs(s_12.y), abs(s_12.z))) > 0.0))) {
+    vec3 s_8 = (wo_1 + wi);
+    if (!((max(abs(s_8.x), max(abs(s_8.y), abs(s_8.z))) > 0.0))) {
         return vec3(0.0);
     }
-    vec3 _e16 = ms_normalize(s_12);
+    vec3 _e16 = ms_normalize(s_8);
     if ((_e16.z < 0.0)) {
         return -(_e16);
     }
@@ -292,8 +289,8 @@ vec3 ms_facing(vec3 m_1, vec3 w_1) {
     float _e21 = ms_dot(_e12, _e12);
     vec3 wu = ((_e19 * _e12) / vec3(sqrt(_e21)));
     float _e25 = ms_dot(m_1, wu);
-    float e_2 = (_e25 - 8e-7);
-    vec3 _e30 = ms_unit_normal((m_1 - (e_2 * wu)));
+    float e = (_e25 - 8e-7);
+    vec3 _e30 = ms_unit_normal((m_1 - (e * wu)));
     return _e30;
 }
 
@@ -361,8 +358,8 @@ vec4 ms_refract(vec3 wi_5, vec3 n_in, float eta_in) {
     vec3 _e22 = n_1;
     vec3 _e23 = n_1;
     float _e24 = ms_dot(t0_, _e23);
-    vec3 t_7 = (t0_ + (_e22 * -(_e24)));
-    float _e28 = ms_dot(t_7, t_7);
+    vec3 t_6 = (t0_ + (_e22 * -(_e24)));
+    float _e28 = ms_dot(t_6, t_6);
     float _e29 = eta_1;
     float _e30 = eta_1;
     float sin2_t = (_e28 / (_e29 * _e30));
@@ -373,7 +370,7 @@ vec4 ms_refract(vec3 wi_5, vec3 n_in, float eta_in) {
     float _e41 = eta_1;
     vec3 _e45 = n_1;
     float _e49 = eta_1;
-    return vec4(((t_7 * (-1.0 / _e41)) + (_e45 * -(cos_t))), _e49);
+    return vec4(((t_6 * (-1.0 / _e41)) + (_e45 * -(cos_t))), _e49);
 }
 
 float ms_fresnel_dielectric(float cos_in, float eta_in_1) {
@@ -392,31 +389,31 @@ float ms_fresnel_dielectric(float cos_in, float eta_in_1) {
         eta_2 = (1.0 / _e9);
     }
     float _e12 = cos_i_1;
-    float c_19 = min(_e12, 1.0);
+    float c_14 = min(_e12, 1.0);
     float _e15 = eta_2;
     if ((_e15 == 1.0)) {
         return 0.0;
     }
-    if ((c_19 == 0.0)) {
+    if ((c_14 == 0.0)) {
         return 1.0;
     }
     float _e24 = eta_2;
     if ((_e24 > 1e18)) {
         float _e27 = eta_2;
-        float e_3 = (1.0 / _e27);
-        float cos_t_1 = sqrt((((1.0 - e_3) * (1.0 + e_3)) + ((c_19 * e_3) * (c_19 * e_3))));
-        r_parl = ((c_19 - (e_3 * cos_t_1)) / (c_19 + (e_3 * cos_t_1)));
-        r_perp = (((e_3 * c_19) - cos_t_1) / ((e_3 * c_19) + cos_t_1));
+        float e_1 = (1.0 / _e27);
+        float cos_t_1 = sqrt((((1.0 - e_1) * (1.0 + e_1)) + ((c_14 * e_1) * (c_14 * e_1))));
+        r_parl = ((c_14 - (e_1 * cos_t_1)) / (c_14 + (e_1 * cos_t_1)));
+        r_perp = (((e_1 * c_14) - cos_t_1) / ((e_1 * c_14) + cos_t_1));
     } else {
         float _e51 = eta_2;
         if ((_e51 > 1.0)) {
             float _e54 = eta_2;
             float _e57 = eta_2;
-            ect2_ = (((_e54 - 1.0) * (_e57 + 1.0)) + (c_19 * c_19));
+            ect2_ = (((_e54 - 1.0) * (_e57 + 1.0)) + (c_14 * c_14));
         } else {
             float _e63 = eta_2;
             float _e64 = eta_2;
-            ect2_ = ((_e63 * _e64) - ((1.0 - c_19) * (1.0 + c_19)));
+            ect2_ = ((_e63 * _e64) - ((1.0 - c_14) * (1.0 + c_14)));
         }
         float _e72 = ect2_;
         if ((_e72 <= 0.0)) {
@@ -426,9 +423,9 @@ float ms_fresnel_dielectric(float cos_in, float eta_in_1) {
         float ect = sqrt(_e76);
         float _e78 = eta_2;
         float _e79 = eta_2;
-        float e2c = ((_e78 * _e79) * c_19);
+        float e2c = ((_e78 * _e79) * c_14);
         r_parl = ((e2c - ect) / (e2c + ect));
-        r_perp = ((c_19 - ect) / (c_19 + ect));
+        r_perp = ((c_14 - ect) / (c_14 + ect));
     }
     float _e88 = r_parl;
     float _e89 = r_parl;
@@ -446,48 +443,48 @@ float ms_cnorm(vec2 a_5) {
 }
 
 float ms_cnorm_ratio(vec2 a_6, vec2 b_3) {
-    float s_13 = max(max(abs(a_6.x), abs(a_6.y)), max(abs(b_3.x), abs(b_3.y)));
-    if ((s_13 == 0.0)) {
+    float s_9 = max(max(abs(a_6.x), abs(a_6.y)), max(abs(b_3.x), abs(b_3.y)));
+    if ((s_9 == 0.0)) {
         return 0.0;
     }
-    if (!((s_13 <= 3.4028235e38))) {
+    if (!((s_9 <= 3.4028235e38))) {
         float _e19 = ms_cnorm(a_6);
         float _e20 = ms_cnorm(b_3);
         return (_e19 / _e20);
     }
-    float _e24 = ms_cnorm((a_6 / vec2(s_13)));
-    float _e27 = ms_cnorm((b_3 / vec2(s_13)));
+    float _e24 = ms_cnorm((a_6 / vec2(s_9)));
+    float _e27 = ms_cnorm((b_3 / vec2(s_9)));
     return (_e24 / _e27);
 }
 
 vec2 ms_crecip(vec2 a_7) {
     if ((abs(a_7.x) >= abs(a_7.y))) {
-        float r_8 = (a_7.y / a_7.x);
-        float d_16 = (a_7.x + (a_7.y * r_8));
-        return vec2((1.0 / d_16), (-(r_8) / d_16));
+        float r_5 = (a_7.y / a_7.x);
+        float d_9 = (a_7.x + (a_7.y * r_5));
+        return vec2((1.0 / d_9), (-(r_5) / d_9));
     }
-    float r_9 = (a_7.x / a_7.y);
-    float d_17 = ((a_7.x * r_9) + a_7.y);
-    return vec2((r_9 / d_17), (-1.0 / d_17));
+    float r_6 = (a_7.x / a_7.y);
+    float d_10 = ((a_7.x * r_6) + a_7.y);
+    return vec2((r_6 / d_10), (-1.0 / d_10));
 }
 
 vec2 ms_csqrt(vec2 a_8) {
     float s_1 = 0.0;
     float _e1 = ms_cnorm(a_8);
-    float r_10 = sqrt(_e1);
-    if ((r_10 == 0.0)) {
+    float r_7 = sqrt(_e1);
+    if ((r_7 == 0.0)) {
         return vec2(0.0);
     }
-    float t_8 = sqrt(((r_10 + abs(a_8.x)) * 0.5));
+    float t_7 = sqrt(((r_7 + abs(a_8.x)) * 0.5));
     if ((a_8.x >= 0.0)) {
-        return vec2(t_8, (a_8.y / (t_8 + t_8)));
+        return vec2(t_7, (a_8.y / (t_7 + t_7)));
     }
-    s_1 = t_8;
+    s_1 = t_7;
     if ((a_8.y < 0.0)) {
-        s_1 = -(t_8);
+        s_1 = -(t_7);
     }
     float _e29 = s_1;
-    return vec2((abs(a_8.y) / (t_8 + t_8)), _e29);
+    return vec2((abs(a_8.y) / (t_7 + t_7)), _e29);
 }
 
 float ms_fresnel_conductor(float cos_in_1, float eta_3, float k_1) {
@@ -513,11 +510,11 @@ float ms_fresnel_conductor(float cos_in_1, float eta_3, float k_1) {
     if (_e25) {
         return 1.0;
     }
-    vec2 n_13 = vec2(eta_3, k_1);
+    vec2 n_11 = vec2(eta_3, k_1);
     float sin2_i = ((1.0 - cos_i_5) * (1.0 + cos_i_5));
     vec2 ci = vec2(cos_i_5, 0.0);
     if ((max(abs(eta_3), abs(k_1)) > 1e18)) {
-        vec2 _e40 = ms_crecip(n_13);
+        vec2 _e40 = ms_crecip(n_11);
         vec2 _e41 = ms_cmul(_e40, _e40);
         vec2 sin2_t_1 = (_e41 * sin2_i);
         vec2 _e49 = ms_csqrt(vec2((1.0 - sin2_t_1.x), -(sin2_t_1.y)));
@@ -527,8 +524,8 @@ float ms_fresnel_conductor(float cos_in_1, float eta_3, float k_1) {
         float _e57 = ms_cnorm_ratio((ci_m - _e49), (ci_m + _e49));
         return min((0.5 * (_e54 + _e57)), 1.0);
     }
-    vec2 _e63 = ms_cmul(n_13, n_13);
-    float _e65 = ms_cnorm(n_13);
+    vec2 _e63 = ms_cmul(n_11, n_11);
+    float _e65 = ms_cnorm(n_11);
     if ((_e65 >= 1.0)) {
         vec2 _e74 = ms_cmul(vec2((eta_3 - 1.0), k_1), vec2((eta_3 + 1.0), k_1));
         w_2 = (_e74 + vec2((cos_i_5 * cos_i_5), 0.0));
@@ -539,26 +536,26 @@ float ms_fresnel_conductor(float cos_in_1, float eta_3, float k_1) {
     vec2 _e83 = ms_crecip(_e63);
     vec2 _e84 = ms_cmul(_e82, _e83);
     vec2 _e85 = ms_csqrt(_e84);
-    vec2 n_ci = (n_13 * cos_i_5);
-    vec2 _e87 = ms_cmul(n_13, _e85);
+    vec2 n_ci = (n_11 * cos_i_5);
+    vec2 _e87 = ms_cmul(n_11, _e85);
     float _e90 = ms_cnorm_ratio((n_ci - _e85), (n_ci + _e85));
     float _e93 = ms_cnorm_ratio((ci - _e87), (ci + _e87));
     return min((0.5 * (_e90 + _e93)), 1.0);
 }
 
 float ms_fresnel_schlick(float cos_i_2, float f0_) {
-    float m_9 = (1.0 - min(max(cos_i_2, 0.0), 1.0));
-    float m2_ = (m_9 * m_9);
-    return (f0_ + ((1.0 - f0_) * ((m2_ * m2_) * m_9)));
+    float m_7 = (1.0 - min(max(cos_i_2, 0.0), 1.0));
+    float m2_ = (m_7 * m_7);
+    return (f0_ + ((1.0 - f0_) * ((m2_ * m2_) * m_7)));
 }
 
 float ms_fresnel_f82_tint(float cos_i_3, float f0_1, float h) {
     float mu = min(max(cos_i_3, 0.0), 1.0);
-    float m_10 = (1.0 - mu);
-    float m5_ = ((((m_10 * m_10) * m_10) * m_10) * m_10);
+    float m_8 = (1.0 - mu);
+    float m5_ = ((((m_8 * m_8) * m_8) * m_8) * m_8);
     float a_18 = (((f0_1 + ((1.0 - f0_1) * 0.46266437)) * (1.0 - h)) / 0.05665278);
-    float r_11 = ((f0_1 + ((1.0 - f0_1) * m5_)) - (((a_18 * mu) * m5_) * m_10));
-    return min(max(r_11, 0.0), 1.0);
+    float r_8 = ((f0_1 + ((1.0 - f0_1) * m5_)) - (((a_18 * mu) * m5_) * m_8));
+    return min(max(r_8, 0.0), 1.0);
 }
 
 vec3 ms_fresnel_eval(MsFresnel fr, float cos_i_4) {
@@ -599,34 +596,34 @@ float ms_ggx_d(vec3 wm_2, vec2 alpha) {
     if (!((z_6 > 0.0))) {
         return 0.0;
     }
-    float x_21 = (wm_2.x / alpha.x);
+    float x_19 = (wm_2.x / alpha.x);
     float y_4 = (wm_2.y / alpha.y);
-    float t_9 = (((x_21 * x_21) + (y_4 * y_4)) + (z_6 * z_6));
-    return (1.0 / ((((MS_PI * alpha.x) * alpha.y) * t_9) * t_9));
+    float t_8 = (((x_19 * x_19) + (y_4 * y_4)) + (z_6 * z_6));
+    return (1.0 / ((((MS_PI * alpha.x) * alpha.y) * t_8) * t_8));
 }
 
 float ms_ggx_lambda(vec3 w_3, vec2 alpha_1) {
-    float x_22 = (alpha_1.x * w_3.x);
+    float x_20 = (alpha_1.x * w_3.x);
     float y_5 = (alpha_1.y * w_3.y);
     float z_7 = abs(w_3.z);
-    float t_10 = ((x_22 * x_22) + (y_5 * y_5));
+    float t_9 = ((x_20 * x_20) + (y_5 * y_5));
     float z2_ = (z_7 * z_7);
-    float den = (2.0 * (z2_ + (z_7 * sqrt((z2_ + t_10)))));
+    float den = (2.0 * (z2_ + (z_7 * sqrt((z2_ + t_9)))));
     if (!((den > 0.0))) {
         if ((z_7 == 0.0)) {
             float _e25 = ms_inf();
             return _e25;
         }
-        return ((t_10 / (z_7 + sqrt(((z_7 * z_7) + t_10)))) / (z_7 + z_7));
+        return ((t_9 / (z_7 + sqrt(((z_7 * z_7) + t_9)))) / (z_7 + z_7));
     }
-    return (t_10 / den);
+    return (t_9 / den);
 }
 
 float ms_ggx_g1_(vec3 w_4, vec2 alpha_2) {
-    float x_23 = (alpha_2.x * w_4.x);
+    float x_21 = (alpha_2.x * w_4.x);
     float y_6 = (alpha_2.y * w_4.y);
     float z_8 = abs(w_4.z);
-    float den_1 = (z_8 + sqrt(((z_8 * z_8) + ((x_23 * x_23) + (y_6 * y_6)))));
+    float den_1 = (z_8 + sqrt(((z_8 * z_8) + ((x_21 * x_21) + (y_6 * y_6)))));
     if (!((den_1 > 0.0))) {
         return 0.0;
     }
@@ -677,23 +674,23 @@ float ms_ggx_pdf(vec3 w_5, vec3 wm_3, vec2 alpha_5) {
     float len_3 = sqrt((((sx * sx) + (sy * sy)) + (z_9 * z_9)));
     float mx = (wm_3.x / alpha_5.x);
     float my = (wm_3.y / alpha_5.y);
-    float t_11 = (((mx * mx) + (my * my)) + (wm_3.z * wm_3.z));
+    float t_10 = (((mx * mx) + (my * my)) + (wm_3.z * wm_3.z));
     float _e55 = c;
     float _e56 = c;
-    return ((_e55 + _e56) / (((((MS_PI * alpha_5.x) * alpha_5.y) * t_11) * t_11) * (z_9 + len_3)));
+    return ((_e55 + _e56) / (((((MS_PI * alpha_5.x) * alpha_5.y) * t_10) * t_10) * (z_9 + len_3)));
 }
 
 vec3 ms_ggx_cap_normal_stretched(vec3 w_6, vec3 stretch, vec2 u, float len) {
     float inv = (1.0 / len);
-    float x_24 = ((stretch.x * w_6.x) * inv);
+    float x_22 = ((stretch.x * w_6.x) * inv);
     float y_7 = ((stretch.y * w_6.y) * inv);
     float z_10 = ((stretch.z * w_6.z) * inv);
     vec2 _e19 = ms_cos_sin_turn(u.x);
     float above = ((1.0 - u.y) * (1.0 + z_10));
-    float sin_ = sqrt(max((u.y * ((above * (1.0 + z_10)) + ((x_24 * x_24) + (y_7 * y_7)))), 0.0));
-    vec3 h_3 = vec3((stretch.x * ((sin_ * _e19.x) + x_24)), (stretch.y * ((sin_ * _e19.y) + y_7)), (stretch.z * above));
-    float n_14 = (1.0 / sqrt((((h_3.x * h_3.x) + (h_3.y * h_3.y)) + (h_3.z * h_3.z))));
-    return (h_3 * n_14);
+    float sin_ = sqrt(max((u.y * ((above * (1.0 + z_10)) + ((x_22 * x_22) + (y_7 * y_7)))), 0.0));
+    vec3 h_3 = vec3((stretch.x * ((sin_ * _e19.x) + x_22)), (stretch.y * ((sin_ * _e19.y) + y_7)), (stretch.z * above));
+    float n_12 = (1.0 / sqrt((((h_3.x * h_3.x) + (h_3.y * h_3.y)) + (h_3.z * h_3.z))));
+    return (h_3 * n_12);
 }
 
 vec3 ms_ggx_cap_normal(vec3 w_7, vec2 alpha_6, vec2 u_1, float len_1) {
@@ -713,8 +710,8 @@ vec3 ms_ggx_sample_wm(vec3 w_in, vec2 alpha_7, vec2 u_2) {
     float _e12 = w_8.x;
     float _e16 = w_8.y;
     float _e19 = w_8.z;
-    vec3 s_14 = vec3((alpha_7.x * _e12), (alpha_7.y * _e16), _e19);
-    float n2_ = (((s_14.x * s_14.x) + (s_14.y * s_14.y)) + (s_14.z * s_14.z));
+    vec3 s_10 = vec3((alpha_7.x * _e12), (alpha_7.y * _e16), _e19);
+    float n2_ = (((s_10.x * s_10.x) + (s_10.y * s_10.y)) + (s_10.z * s_10.z));
     if ((n2_ >= 1e-24)) {
         local_8 = (n2_ <= 1e24);
     } else {
@@ -727,12 +724,12 @@ vec3 ms_ggx_sample_wm(vec3 w_in, vec2 alpha_7, vec2 u_2) {
         float _e45 = w_8.x;
         float _e49 = w_8.y;
         float _e54 = w_8.z;
-        float d_18 = (((_e42.x * _e45) + (_e42.y * _e49)) + (_e42.z * _e54));
+        float d_11 = (((_e42.x * _e45) + (_e42.y * _e49)) + (_e42.z * _e54));
         float _e58 = w_8.x;
         float _e61 = w_8.y;
         float _e65 = w_8.z;
         float l1_ = ((abs(_e58) + abs(_e61)) + abs(_e65));
-        if ((d_18 > (2.4e-7 * l1_))) {
+        if ((d_11 > (2.4e-7 * l1_))) {
             return _e42;
         }
         vec3 _e71 = w_8;
@@ -765,8 +762,8 @@ float ms_ggx_pdf_dcos(vec3 wm_4, vec2 alpha_9) {
 
 MsSample ms_ggx_sample_dcos(vec2 alpha_10, vec2 u_4) {
     vec2 _e3 = ms_cos_sin_turn(u_4.y);
-    float r_12 = sqrt(u_4.x);
-    vec3 _e21 = ms_unit_normal(vec3(((alpha_10.x * r_12) * _e3.x), ((alpha_10.y * r_12) * _e3.y), sqrt(max((1.0 - u_4.x), 0.0))));
+    float r_9 = sqrt(u_4.x);
+    vec3 _e21 = ms_unit_normal(vec3(((alpha_10.x * r_9) * _e3.x), ((alpha_10.y * r_9) * _e3.y), sqrt(max((1.0 - u_4.x), 0.0))));
     float _e22 = ms_ggx_d(_e21, alpha_10);
     return MsSample(_e21, (_e22 * _e21.z));
 }
@@ -790,45 +787,45 @@ MsBoundedCap ms_ggx_bounded_cap(vec3 w_10, vec2 alpha_11) {
     float _e30 = v_2.x;
     float _e33 = v_2.y;
     float _e35 = v_2.y;
-    float s_15 = (1.0 + sqrt(((_e28 * _e30) + (_e33 * _e35))));
+    float s_11 = (1.0 + sqrt(((_e28 * _e30) + (_e33 * _e35))));
     float a2_1 = (a_19 * a_19);
-    float s2_ = (s_15 * s_15);
+    float s2_ = (s_11 * s_11);
     float _e44 = v_2.z;
     float _e47 = v_2.z;
     float den_2 = (s2_ + ((a2_1 * _e44) * _e47));
-    float k_13 = (((1.0 - a2_1) * s2_) / den_2);
+    float k_12 = (((1.0 - a2_1) * s2_) / den_2);
     float _e55 = v_2.z;
     float _e57 = v_2.z;
     float one_minus_k = ((a2_1 * (s2_ + (_e55 * _e57))) / den_2);
-    return MsBoundedCap(_e18, (k_13 * _e18.z), (one_minus_k * _e18.z));
+    return MsBoundedCap(_e18, (k_12 * _e18.z), (one_minus_k * _e18.z));
 }
 
 float ms_ggx_pdf_bounded(vec3 w_in_1, vec3 wm_5, vec2 alpha_12) {
     vec3 _e3 = ms_unit(w_in_1);
     MsBoundedCap _e4 = ms_ggx_bounded_cap(_e3, alpha_12);
     vec3 ws = _e4.ws;
-    float b_8 = _e4.b;
+    float b_6 = _e4.b;
     vec3 _e15 = ms_normalize(vec3((wm_5.x / alpha_12.x), (wm_5.y / alpha_12.y), wm_5.z));
     float _e16 = ms_dot(_e15, ws);
     float cz = (((_e16 + _e16) * _e15.z) - ws.z);
-    if ((cz < -(b_8))) {
+    if ((cz < -(b_6))) {
         return 0.0;
     }
     float _e25 = ms_ggx_pdf(_e3, wm_5, alpha_12);
-    return ((_e25 * (1.0 + ws.z)) / (1.0 + b_8));
+    return ((_e25 * (1.0 + ws.z)) / (1.0 + b_6));
 }
 
 MsSample ms_ggx_sample_bounded(vec3 w_in_2, vec2 alpha_13, vec2 u_5) {
     vec3 _e3 = ms_unit(w_in_2);
     MsBoundedCap _e4 = ms_ggx_bounded_cap(_e3, alpha_13);
     vec3 ws_1 = _e4.ws;
-    float b_9 = _e4.b;
+    float b_7 = _e4.b;
     vec2 _e8 = ms_cos_sin_turn(u_5.x);
-    float above_1 = ((1.0 - u_5.y) * (1.0 + b_9));
+    float above_1 = ((1.0 - u_5.y) * (1.0 + b_7));
     float one_minus_b = ((((ws_1.x * ws_1.x) + (ws_1.y * ws_1.y)) / (1.0 + ws_1.z)) + _e4.top);
-    float sin_1 = sqrt(max(((u_5.y * (1.0 + b_9)) * (above_1 + one_minus_b)), 0.0));
-    vec3 m_11 = vec3(((sin_1 * _e8.x) + ws_1.x), ((sin_1 * _e8.y) + ws_1.y), (above_1 + _e4.top));
-    vec3 _e58 = ms_normalize(vec3((alpha_13.x * m_11.x), (alpha_13.y * m_11.y), max(m_11.z, 0.0)));
+    float sin_1 = sqrt(max(((u_5.y * (1.0 + b_7)) * (above_1 + one_minus_b)), 0.0));
+    vec3 m_9 = vec3(((sin_1 * _e8.x) + ws_1.x), ((sin_1 * _e8.y) + ws_1.y), (above_1 + _e4.top));
+    vec3 _e58 = ms_normalize(vec3((alpha_13.x * m_9.x), (alpha_13.y * m_9.y), max(m_9.z, 0.0)));
     vec3 _e59 = ms_facing(_e58, _e3);
     float _e60 = ms_ggx_pdf_bounded(_e3, _e59, alpha_13);
     return MsSample(_e59, _e60);
@@ -841,17 +838,17 @@ float ms_ggx_pdf_bounded_reflection(vec3 wo_8, vec3 wi_8, vec2 alpha_14) {
         return 0.0;
     }
     float _e7 = ms_dot(wo_8, _e3);
-    float c_20 = abs(_e7);
-    if (!((c_20 > 0.0))) {
+    float c_15 = abs(_e7);
+    if (!((c_15 > 0.0))) {
         return 0.0;
     }
     float _e13 = ms_ggx_pdf_bounded(wo_8, _e3, alpha_14);
-    return (_e13 / (4.0 * c_20));
+    return (_e13 / (4.0 * c_15));
 }
 
 uvec2 ms_u64_add(uvec2 a_9, uvec2 b_4) {
-    uint lo_4 = (a_9.x + b_4.x);
-    return uvec2(lo_4, ((a_9.y + b_4.y) + ((lo_4 < a_9.x) ? 1u : 0u)));
+    uint lo_3 = (a_9.x + b_4.x);
+    return uvec2(lo_3, ((a_9.y + b_4.y) + ((lo_3 < a_9.x) ? 1u : 0u)));
 }
 
 uvec2 ms_u32_mul_wide(uint x, uint y) {
@@ -879,11 +876,11 @@ uvec2 ms_u64_xorshift(uvec2 a_11, uint k_2) {
 uvec2 ms_f64_bits(float v_3) {
     uint man = 0u;
     uint e64_ = 0u;
-    uint b_10 = floatBitsToUint(v_3);
-    uint sign_3 = (b_10 & 2147483648u);
-    uint e_4 = ((b_10 >> 23u) & 255u);
-    man = (b_10 & 8388607u);
-    if ((e_4 == 0u)) {
+    uint b_8 = floatBitsToUint(v_3);
+    uint sign_3 = (b_8 & 2147483648u);
+    uint e_2 = ((b_8 >> 23u) & 255u);
+    man = (b_8 & 8388607u);
+    if ((e_2 == 0u)) {
         uint _e14 = man;
         if ((_e14 == 0u)) {
             return uvec2(0u, sign_3);
@@ -894,10 +891,10 @@ uvec2 ms_f64_bits(float v_3) {
         uint _e23 = man;
         man = ((_e23 << (23u - p)) & 8388607u);
     } else {
-        if ((e_4 == 255u)) {
+        if ((e_2 == 255u)) {
             e64_ = 2047u;
         } else {
-            e64_ = (e_4 + 896u);
+            e64_ = (e_2 + 896u);
         }
     }
     uint _e34 = man;
@@ -938,8 +935,8 @@ float ms_stream_next(inout uvec2 state_2) {
 
 float ms_stream_next_wide(inout uvec2 state_3) {
     uvec2 _e1 = ms_stream_next_u64_(state_3);
-    float v_17 = ((float(_e1.y) * 2.3283064e-10) + (float((_e1.x >> 11u)) * 1.110223e-16));
-    return min(v_17, 0.99999994);
+    float v_16 = ((float(_e1.y) * 2.3283064e-10) + (float((_e1.x >> 11u)) * 1.110223e-16));
+    return min(v_16, 0.99999994);
 }
 
 MsSource ms_source_stream(vec2 u_7) {
@@ -965,10 +962,10 @@ float ms_source_next(inout MsSource src) {
         float _e7 = src.first.y;
         float _e10 = src.first.x;
         uint _e12 = src.used;
-        float v_18 = ((_e12 == 0u) ? _e10 : _e7);
+        float v_17 = ((_e12 == 0u) ? _e10 : _e7);
         uint _e18 = src.used;
         src.used = (_e18 + 1u);
-        return v_18;
+        return v_17;
     }
     uvec2 _e22 = src.state;
     state_4 = _e22;
@@ -1034,10 +1031,10 @@ float ms_zig_sample(uint at, bool normal, float w_11, inout MsSource src_1) {
             }
             uint _e44 = i;
             if ((_e44 == 0u)) {
-                float r_13 = layer.z;
+                float r_10 = layer.z;
                 if (!(normal)) {
                     float _e50 = ms_source_next(src_1);
-                    return (r_13 - log((1.0 - _e50)));
+                    return (r_10 - log((1.0 - _e50)));
                 }
                 j = 0;
                 bool loop_init_1 = true;
@@ -1054,15 +1051,15 @@ float ms_zig_sample(uint at, bool normal, float w_11, inout MsSource src_1) {
                     }
                     {
                         float _e60 = ms_source_next(src_1);
-                        float a_20 = (-(log((1.0 - _e60))) / r_13);
+                        float a_20 = (-(log((1.0 - _e60))) / r_10);
                         float _e66 = ms_source_next(src_1);
-                        float b_11 = -(log((1.0 - _e66)));
-                        if (((2.0 * b_11) > (a_20 * a_20))) {
-                            return (r_13 + a_20);
+                        float b_9 = -(log((1.0 - _e66)));
+                        if (((2.0 * b_9) > (a_20 * a_20))) {
+                            return (r_10 + a_20);
                         }
                     }
                 }
-                return r_13;
+                return r_10;
             }
             float _e80 = layer.y;
             float _e81 = ms_source_next(src_1);
@@ -1119,8 +1116,8 @@ float ms_zig_half_normal(float w_13, inout MsSource src_3) {
 vec2 ms_bk_segment(float x_2, int k0_, int k1_) {
     uint bits_1 = floatBitsToUint(x_2);
     uint rows = (uint((k1_ - k0_)) << MS_BK_SEGMENTS_LOG2_);
-    uint idx = min(((bits_1 >> (23u - MS_BK_SEGMENTS_LOG2_)) - (uint((127 + k0_)) << MS_BK_SEGMENTS_LOG2_)), (rows - 1u));
-    uint pos = ((bits_1 << (9u + MS_BK_SEGMENTS_LOG2_)) >> 9u);
+    uint idx = min(((bits_1 >> 21u) - (uint((127 + k0_)) << MS_BK_SEGMENTS_LOG2_)), (rows - 1u));
+    uint pos = ((bits_1 << 11u) >> 9u);
     return vec2(float(idx), (uintBitsToFloat((1073741824u | pos)) - 3.0));
 }
 
@@ -1133,8 +1130,8 @@ float ms_bk_erfcx(float x_3) {
         return (1.0 - (1.1283792 * x_3));
     }
     if ((x_3 >= 32.0)) {
-        float r_14 = (1.0 / (x_3 * x_3));
-        return (((1.0 - (r_14 * (0.5 - (r_14 * (0.75 - (r_14 * (1.875 - (r_14 * 6.5625)))))))) * MS_FRAC_1_SQRT_PI) / x_3);
+        float r_11 = (1.0 / (x_3 * x_3));
+        return (((1.0 - (r_11 * (0.5 - (r_11 * (0.75 - (r_11 * (1.875 - (r_11 * 6.5625)))))))) * MS_FRAC_1_SQRT_PI) / x_3);
     }
     vec2 _e30 = ms_bk_segment(x_3, MS_BK_ERFCX_K0_, MS_BK_ERFCX_K1_);
     uint i_5 = (2u * uint(_e30.x));
@@ -1149,8 +1146,8 @@ float ms_bk_erfc_ratio(float a_12) {
         return (1.0 - (MS_SQRT_PI * a_12));
     }
     if ((a_12 >= 32.0)) {
-        float r_15 = (1.0 / (a_12 * a_12));
-        return (r_15 * (0.5 - (r_15 * (0.75 - (r_15 * (1.875 - (r_15 * (6.5625 - (r_15 * 29.53125)))))))));
+        float r_12 = (1.0 / (a_12 * a_12));
+        return (r_12 * (0.5 - (r_12 * (0.75 - (r_12 * (1.875 - (r_12 * (6.5625 - (r_12 * 29.53125)))))))));
     }
     vec2 _e28 = ms_bk_segment(a_12, MS_BK_ERFC_RATIO_K0_, MS_BK_ERFC_RATIO_K1_);
     uint i_6 = (2u * uint(_e28.x));
@@ -1196,18 +1193,18 @@ float ms_bk_ln_1m(float xi) {
     if ((xi > 0.5)) {
         return log((1.0 - xi));
     }
-    float t_12 = (-(xi) / (2.0 - xi));
-    float t2_ = (t_12 * t_12);
+    float t_11 = (-(xi) / (2.0 - xi));
+    float t2_ = (t_11 * t_11);
     float p_1 = (1.0 + (t2_ * (0.33333334 + (t2_ * (0.2 + (t2_ * (0.14285715 + (t2_ * (0.11111111 + (t2_ * (0.09090909 + (t2_ * (0.07692308 + (t2_ * 0.06666667))))))))))))));
-    return ((2.0 * t_12) * p_1);
+    return ((2.0 * t_11) * p_1);
 }
 
 float ms_beckmann_d(vec3 wm_6, vec2 alpha_15) {
     bool local_9 = false;
     float z_11 = wm_6.z;
-    float r_16 = (1.0 / (alpha_15.x * alpha_15.y));
-    float x_25 = ((wm_6.x * alpha_15.y) * r_16);
-    float y_8 = ((wm_6.y * alpha_15.x) * r_16);
+    float r_13 = (1.0 / (alpha_15.x * alpha_15.y));
+    float x_23 = ((wm_6.x * alpha_15.y) * r_13);
+    float y_8 = ((wm_6.y * alpha_15.x) * r_13);
     float z2_1 = (z_11 * z_11);
     if ((z_11 > 0.0)) {
         local_9 = (z2_1 > 0.0);
@@ -1218,11 +1215,11 @@ float ms_beckmann_d(vec3 wm_6, vec2 alpha_15) {
     if (!(_e24)) {
         return 0.0;
     }
-    float e_5 = (((x_25 * x_25) + (y_8 * y_8)) / z2_1);
-    if ((e_5 <= 80.0)) {
-        return ((exp(-(e_5)) * r_16) / ((MS_PI * z2_1) * z2_1));
+    float e_3 = (((x_23 * x_23) + (y_8 * y_8)) / z2_1);
+    if ((e_3 <= 80.0)) {
+        return ((exp(-(e_3)) * r_13) / ((MS_PI * z2_1) * z2_1));
     }
-    return exp((((log(r_16) - 1.14473) - (4.0 * log(z_11))) - e_5));
+    return exp((((log(r_13) - 1.14473) - (4.0 * log(z_11))) - e_3));
 }
 
 float ms_beckmann_lambda_cot(float a_13) {
@@ -1238,13 +1235,13 @@ float ms_beckmann_lambda_cot(float a_13) {
 }
 
 float ms_beckmann_lambda(vec3 w_14, vec2 alpha_16) {
-    float x_26 = (alpha_16.x * w_14.x);
+    float x_24 = (alpha_16.x * w_14.x);
     float y_9 = (alpha_16.y * w_14.y);
-    float s_16 = sqrt(((x_26 * x_26) + (y_9 * y_9)));
-    if (!((s_16 > 0.0))) {
+    float s_12 = sqrt(((x_24 * x_24) + (y_9 * y_9)));
+    if (!((s_12 > 0.0))) {
         return 0.0;
     }
-    float _e19 = ms_beckmann_lambda_cot((abs(w_14.z) / s_16));
+    float _e19 = ms_beckmann_lambda_cot((abs(w_14.z) / s_12));
     return _e19;
 }
 
@@ -1319,11 +1316,11 @@ MsSample ms_beckmann_sample_dcos(vec2 alpha_22, vec2 u_11) {
         v_5 = vec3((alpha_22.x * _e3.x), (alpha_22.y * _e3.y), 0.0);
     } else {
         float _e17 = ms_bk_ln_1m(u_11.x);
-        float r_17 = sqrt(-(_e17));
-        if ((r_17 > 1.0)) {
-            v_5 = vec3((alpha_22.x * _e3.x), (alpha_22.y * _e3.y), (1.0 / r_17));
+        float r_14 = sqrt(-(_e17));
+        if ((r_14 > 1.0)) {
+            v_5 = vec3((alpha_22.x * _e3.x), (alpha_22.y * _e3.y), (1.0 / r_14));
         } else {
-            v_5 = vec3(((alpha_22.x * r_17) * _e3.x), ((alpha_22.y * r_17) * _e3.y), 1.0);
+            v_5 = vec3(((alpha_22.x * r_14) * _e3.x), ((alpha_22.y * r_14) * _e3.y), 1.0);
         }
     }
     vec3 _e41 = v_5;
@@ -1375,11 +1372,11 @@ float ms_bk_visible_x(float a_14, float u_12) {
         {
             float _e40 = x_4;
             float _e42 = x_4;
-            float e_6 = exp((-(_e40) * _e42));
+            float e_4 = exp((-(_e40) * _e42));
             float _e45 = x_4;
             float _e47 = ms_bk_erfcx(abs(_e45));
-            float ec = (_e47 * e_6);
-            float half_e = (0.2820948 * e_6);
+            float ec = (_e47 * e_4);
+            float half_e = (0.2820948 * e_4);
             f_1 = 0.0;
             float _e53 = x_4;
             if ((_e53 <= 0.0)) {
@@ -1406,7 +1403,7 @@ float ms_bk_visible_x(float a_14, float u_12) {
             float _e79 = x_4;
             float _e82 = x_4;
             float g2_ = (1.0 - ((2.0 * _e79) * (_e82 + a_14)));
-            float big_e = (e_6 * MS_FRAC_1_SQRT_PI);
+            float big_e = (e_4 * MS_FRAC_1_SQRT_PI);
             float _e89 = f_1;
             float fg2_ = (_e89 * g2_);
             float g1e = ((g1_ * g1_) * big_e);
@@ -1475,14 +1472,14 @@ vec3 ms_beckmann_sample_wm(vec3 w_17, vec2 alpha_23, vec2 u_13) {
     float _e14 = sign_1;
     float sy_1 = ((_e14 * alpha_23.y) * w_17.y);
     float _e19 = sign_1;
-    float c_21 = (_e19 * w_17.z);
+    float c_16 = (_e19 * w_17.z);
     float h_5 = sqrt(((sx_1 * sx_1) + (sy_1 * sy_1)));
     float _e27 = ms_bk_quantile(u_13.y);
     if ((h_5 > 0.0)) {
         float inv_1 = (1.0 / h_5);
         cp = (sx_1 * inv_1);
         sp = (sy_1 * inv_1);
-        float _e41 = ms_bk_visible_x((c_21 * inv_1), u_13.x);
+        float _e41 = ms_bk_visible_x((c_16 * inv_1), u_13.x);
         x_5 = _e41;
     } else {
         float _e43 = ms_bk_quantile(u_13.x);
@@ -1496,8 +1493,8 @@ vec3 ms_beckmann_sample_wm(vec3 w_17, vec2 alpha_23, vec2 u_13) {
     float _e54 = x_5;
     float _e56 = cp;
     float q_4 = (alpha_23.y * ((_e53 * _e54) + (_e56 * _e27)));
-    float n_15 = (1.0 / sqrt((((p_2 * p_2) + (q_4 * q_4)) + 1.0)));
-    vec3 _e71 = ms_facing(vec3((p_2 * n_15), (q_4 * n_15), n_15), w_17);
+    float n_13 = (1.0 / sqrt((((p_2 * p_2) + (q_4 * q_4)) + 1.0)));
+    vec3 _e71 = ms_facing(vec3((p_2 * n_13), (q_4 * n_13), n_13), w_17);
     return _e71;
 }
 
@@ -1528,16 +1525,16 @@ float ms_dg_lambda_table(float x_7) {
 }
 
 float ms_dg_lambda_ends(float u_15, float a_15) {
-    float x_27 = ((((0.5 * a_15) * a_15) * ((1.0 - u_15) * (1.0 + u_15))) / (u_15 * u_15));
-    if ((x_27 < 9.313226e-10)) {
-        if ((x_27 <= 0.0)) {
+    float x_25 = ((((0.5 * a_15) * a_15) * ((1.0 - u_15) * (1.0 + u_15))) / (u_15 * u_15));
+    if ((x_25 < 9.313226e-10)) {
+        if ((x_25 <= 0.0)) {
             return 0.0;
         }
-        return ((0.5 * x_27) * (0.42278433 - log((0.5 * x_27))));
+        return ((0.5 * x_25) * (0.42278433 - log((0.5 * x_25))));
     }
     float sx_2 = ((a_15 * sqrt(((0.5 * (1.0 - u_15)) * (1.0 + u_15)))) / u_15);
-    float r_18 = (1.0 / (sx_2 * sx_2));
-    return (((1.2533141 * sx_2) * (1.0 + (r_18 * (0.125 - (r_18 * 0.0234375))))) - 0.5);
+    float r_15 = (1.0 / (sx_2 * sx_2));
+    return (((1.2533141 * sx_2) * (1.0 + (r_15 * (0.125 - (r_15 * 0.0234375))))) - 0.5);
 }
 
 float ms_double_ggx_lambda(vec3 w_19, vec2 alpha_25) {
@@ -1545,10 +1542,10 @@ float ms_double_ggx_lambda(vec3 w_19, vec2 alpha_25) {
     bool local_14 = false;
     float a_16 = 0.0;
     bool local_15 = false;
-    float u_47 = abs(w_19.z);
+    float u_42 = abs(w_19.z);
     if ((alpha_25.x == alpha_25.y)) {
         float a_21 = alpha_25.x;
-        x_8 = ((((0.5 * a_21) * a_21) * ((1.0 - u_47) * (1.0 + u_47))) / (u_47 * u_47));
+        x_8 = ((((0.5 * a_21) * a_21) * ((1.0 - u_42) * (1.0 + u_42))) / (u_42 * u_42));
     } else {
         float sx_3 = (alpha_25.x * w_19.x);
         float sy_2 = (alpha_25.y * w_19.y);
@@ -1579,7 +1576,7 @@ float ms_double_ggx_lambda(vec3 w_19, vec2 alpha_25) {
         a_16 = sqrt((((((alpha_25.x * alpha_25.x) * w_19.x) * w_19.x) + (((alpha_25.y * alpha_25.y) * w_19.y) * w_19.y)) / s2_1));
     }
     float _e82 = a_16;
-    float _e83 = ms_dg_lambda_ends(u_47, _e82);
+    float _e83 = ms_dg_lambda_ends(u_42, _e82);
     return _e83;
 }
 
@@ -1607,12 +1604,6 @@ float ms_double_ggx_g2_(vec3 wo_11, vec3 wi_11, vec2 alpha_27) {
     return (1.0 / (1.0 + (_e15 + _e16)));
 }
 
-float ms_double_ggx_g2_separable(vec3 wo_12, vec3 wi_12, vec2 alpha_28) {
-    float _e3 = ms_double_ggx_g1_(wo_12, alpha_28);
-    float _e4 = ms_double_ggx_g1_(wi_12, alpha_28);
-    return (_e3 * _e4);
-}
-
 float ms_dg_kernel_row(uint i_1, float s_4) {
     vec4 c0_ = _group_1_binding_0_cs[(MS_DG_D_AT + (3u * i_1))];
     vec4 c1_ = _group_1_binding_0_cs[((MS_DG_D_AT + (3u * i_1)) + 1u)];
@@ -1628,36 +1619,36 @@ float ms_dg_kernel_row(uint i_1, float s_4) {
     return (((b0_ + (b1_ * s2_2)) + ((b2_ + (b3_ * s2_2)) * s4_)) + (b4_ * s8_));
 }
 
-float ms_double_ggx_d(vec3 wm_9, vec2 alpha_29) {
+float ms_double_ggx_d(vec3 wm_9, vec2 alpha_28) {
     bool local_17 = false;
     float z_14 = wm_9.z;
-    float r_19 = (1.0 / (alpha_29.x * alpha_29.y));
-    float x_28 = ((wm_9.x * alpha_29.y) * r_19);
-    float y_10 = ((wm_9.y * alpha_29.x) * r_19);
-    float q_5 = ((x_28 * x_28) + (y_10 * y_10));
+    float r_16 = (1.0 / (alpha_28.x * alpha_28.y));
+    float x_26 = ((wm_9.x * alpha_28.y) * r_16);
+    float y_10 = ((wm_9.y * alpha_28.x) * r_16);
+    float q_5 = ((x_26 * x_26) + (y_10 * y_10));
     if (!((z_14 > 0.0))) {
         return ((z_14 != z_14) ? z_14 : 0.0);
     }
     float z2_2 = (z_14 * z_14);
-    float t_13 = (q_5 / z2_2);
-    if ((t_13 >= 9.313226e-10)) {
-        local_17 = (t_13 < 1073741800.0);
+    float t_12 = (q_5 / z2_2);
+    if ((t_12 >= 9.313226e-10)) {
+        local_17 = (t_12 < 1073741800.0);
     } else {
         local_17 = false;
     }
     bool _e34 = local_17;
     if (_e34) {
-        vec2 _e38 = ms_fam_segment(t_13, MS_DG_D_K0_, MS_DG_D_K1_, MS_DG_D_M);
+        vec2 _e38 = ms_fam_segment(t_12, MS_DG_D_K0_, MS_DG_D_K1_, MS_DG_D_M);
         float _e42 = ms_dg_kernel_row(uint(_e38.x), _e38.y);
-        return ((_e42 * r_19) / ((MS_PI * z2_2) * z2_2));
+        return ((_e42 * r_16) / ((MS_PI * z2_2) * z2_2));
     }
-    if ((t_13 < 9.313226e-10)) {
-        return (r_19 / ((MS_PI * z2_2) * z2_2));
+    if ((t_12 < 9.313226e-10)) {
+        return (r_16 / ((MS_PI * z2_2) * z2_2));
     }
-    return (((((log(q_5) - (2.0 * log(z_14))) - MS_EULER_GAMMA) - 1.0) * r_19) / ((MS_PI * q_5) * q_5));
+    return (((((log(q_5) - (2.0 * log(z_14))) - MS_EULER_GAMMA) - 1.0) * r_16) / ((MS_PI * q_5) * q_5));
 }
 
-float ms_double_ggx_pdf(vec3 w_21, vec3 wm_10, vec2 alpha_30) {
+float ms_double_ggx_pdf(vec3 w_21, vec3 wm_10, vec2 alpha_29) {
     float c_3 = 0.0;
     bool local_18 = false;
     float z_15 = abs(w_21.z);
@@ -1677,35 +1668,27 @@ float ms_double_ggx_pdf(vec3 w_21, vec3 wm_10, vec2 alpha_30) {
     if (!(_e20)) {
         return 0.0;
     }
-    float _e23 = ms_double_ggx_g1_(w_21, alpha_30);
+    float _e23 = ms_double_ggx_g1_(w_21, alpha_29);
     float _e24 = c_3;
-    float _e26 = ms_double_ggx_d(wm_10, alpha_30);
+    float _e26 = ms_double_ggx_d(wm_10, alpha_29);
     return (((_e23 * _e24) * _e26) / z_15);
 }
 
-float ms_double_ggx_pdf_dcos(vec3 wm_11, vec2 alpha_31) {
-    if (!((wm_11.z > 0.0))) {
-        return 0.0;
-    }
-    float _e7 = ms_double_ggx_d(wm_11, alpha_31);
-    return (_e7 * wm_11.z);
-}
-
-MsSample ms_double_ggx_sample_dcos(vec2 alpha_32, vec2 u_16) {
+MsSample ms_double_ggx_sample_dcos(vec2 alpha_30, vec2 u_16) {
     MsSource src_4 = MsSource(uvec2(0u), vec2(0.0), 0u, 0u);
     MsSource _e2 = ms_source_stream(u_16);
     src_4 = _e2;
     float _e4 = ms_source_next(src_4);
     float _e5 = ms_zig_exp1_(_e4, src_4);
-    float t_14 = max(_e5, 1e-36);
+    float t_13 = max(_e5, 1e-36);
     vec2 _e9 = ms_cos_sin_turn(u_16.y);
-    float r_20 = sqrt(u_16.x);
-    vec3 _e28 = ms_unit_normal(vec3(((alpha_32.x * r_20) * _e9.x), ((alpha_32.y * r_20) * _e9.y), sqrt((t_14 * max((1.0 - u_16.x), 0.0)))));
-    float _e29 = ms_double_ggx_d(_e28, alpha_32);
+    float r_17 = sqrt(u_16.x);
+    vec3 _e28 = ms_unit_normal(vec3(((alpha_30.x * r_17) * _e9.x), ((alpha_30.y * r_17) * _e9.y), sqrt((t_13 * max((1.0 - u_16.x), 0.0)))));
+    float _e29 = ms_double_ggx_d(_e28, alpha_30);
     return MsSample(_e28, (_e29 * _e28.z));
 }
 
-vec3 ms_double_ggx_sample_wm(vec3 w_in_3, vec2 alpha_33, vec2 u_17) {
+vec3 ms_double_ggx_sample_wm(vec3 w_in_3, vec2 alpha_31, vec2 u_17) {
     vec3 w_22 = vec3(0.0);
     MsSource src_5 = MsSource(uvec2(0u), vec2(0.0), 0u, 0u);
     float s_5 = 1.0;
@@ -1720,19 +1703,19 @@ vec3 ms_double_ggx_sample_wm(vec3 w_in_3, vec2 alpha_33, vec2 u_17) {
         w_22 = -(_e9);
     }
     float _e13 = w_22.x;
-    float sx_4 = (alpha_33.x * _e13);
+    float sx_4 = (alpha_31.x * _e13);
     float _e17 = w_22.y;
-    float sy_3 = (alpha_33.y * _e17);
-    float c_22 = w_22.z;
+    float sy_3 = (alpha_31.y * _e17);
+    float c_17 = w_22.z;
     float h_6 = sqrt(((sx_4 * sx_4) + (sy_3 * sy_3)));
-    if (!((abs((c_22 + h_6)) <= 3.4028235e38))) {
-        return vec3((c_22 + h_6));
+    if (!((abs((c_17 + h_6)) <= 3.4028235e38))) {
+        return vec3((c_17 + h_6));
     }
-    float e_7 = (2.0 * c_22);
+    float e_5 = (2.0 * c_17);
     float g = (MS_SQRT_PI * h_6);
-    float p_exp = (e_7 / (e_7 + g));
-    float inv_p = min(((e_7 + g) / e_7), 3.4028235e38);
-    float inv_q = min(((e_7 + g) / g), 3.4028235e38);
+    float p_exp = (e_5 / (e_5 + g));
+    float inv_p = min(((e_5 + g) / e_5), 3.4028235e38);
+    float inv_q = min(((e_5 + g) / g), 3.4028235e38);
     MsSource _e46 = ms_source_stream(u_17);
     src_5 = _e46;
     bool loop_init_3 = true;
@@ -1762,12 +1745,12 @@ vec3 ms_double_ggx_sample_wm(vec3 w_in_3, vec2 alpha_33, vec2 u_17) {
             float _e72 = t;
             s_5 = sqrt(_e72);
             float _e75 = t;
-            len_2 = sqrt((((c_22 * c_22) * _e75) + (h_6 * h_6)));
+            len_2 = sqrt((((c_17 * c_17) * _e75) + (h_6 * h_6)));
             float _e80 = ms_source_next(src_5);
             float _e81 = s_5;
             float _e85 = s_5;
             float _e87 = len_2;
-            if (((_e80 * ((e_7 * _e81) + h_6)) <= ((c_22 * _e85) + _e87))) {
+            if (((_e80 * ((e_5 * _e81) + h_6)) <= ((c_17 * _e85) + _e87))) {
                 break;
             }
         }
@@ -1775,16 +1758,16 @@ vec3 ms_double_ggx_sample_wm(vec3 w_in_3, vec2 alpha_33, vec2 u_17) {
     vec3 _e93 = w_22;
     float _e94 = s_5;
     float _e96 = len_2;
-    vec3 _e97 = ms_ggx_cap_normal_stretched(_e93, vec3(alpha_33, _e94), u_17, _e96);
+    vec3 _e97 = ms_ggx_cap_normal_stretched(_e93, vec3(alpha_31, _e94), u_17, _e96);
     vec3 _e98 = w_22;
     vec3 _e99 = ms_facing(_e97, _e98);
     return _e99;
 }
 
-MsSample ms_double_ggx_sample(vec3 w_23, vec2 alpha_34, vec2 u_18) {
-    vec3 _e3 = ms_double_ggx_sample_wm(w_23, alpha_34, u_18);
+MsSample ms_double_ggx_sample(vec3 w_23, vec2 alpha_32, vec2 u_18) {
+    vec3 _e3 = ms_double_ggx_sample_wm(w_23, alpha_32, u_18);
     vec3 _e4 = ms_unit(w_23);
-    float _e5 = ms_double_ggx_pdf(_e4, _e3, alpha_34);
+    float _e5 = ms_double_ggx_pdf(_e4, _e3, alpha_32);
     return MsSample(_e3, _e5);
 }
 
@@ -1813,11 +1796,11 @@ float ms_exp_lambda_z(float z_1) {
     if ((z_1 < 512.0)) {
         vec2 _e19 = ms_fam_segment(z_1, MS_EXP_FAR_K0_, MS_EXP_FAR_K1_, MS_EXP_FAR_M);
         uint i_9 = (2u * uint(_e19.x));
-        vec4 lo_5 = _group_1_binding_0_cs[(MS_EXP_FAR_AT + i_9)];
-        vec4 hi_3 = _group_1_binding_0_cs[((MS_EXP_FAR_AT + i_9) + 1u)];
-        float s_17 = _e19.y;
-        float s2_3 = (s_17 * s_17);
-        float p_3 = (((lo_5.x + (lo_5.y * s_17)) + ((lo_5.z + (lo_5.w * s_17)) * s2_3)) + (((hi_3.x + (hi_3.y * s_17)) + (hi_3.z * s2_3)) * (s2_3 * s2_3)));
+        vec4 lo_4 = _group_1_binding_0_cs[(MS_EXP_FAR_AT + i_9)];
+        vec4 hi_2 = _group_1_binding_0_cs[((MS_EXP_FAR_AT + i_9) + 1u)];
+        float s_13 = _e19.y;
+        float s2_3 = (s_13 * s_13);
+        float p_3 = (((lo_4.x + (lo_4.y * s_13)) + ((lo_4.z + (lo_4.w * s_13)) * s2_3)) + (((hi_2.x + (hi_2.y * s_13)) + (hi_2.z * s2_3)) * (s2_3 * s2_3)));
         return (p_3 * exp(-(z_1)));
     }
     if ((z_1 != z_1)) {
@@ -1826,18 +1809,18 @@ float ms_exp_lambda_z(float z_1) {
     return 0.0;
 }
 
-float ms_exponential_lambda(vec3 w_24, vec2 alpha_35) {
+float ms_exponential_lambda(vec3 w_24, vec2 alpha_33) {
     float q_1 = 0.0;
     bool local_19 = false;
     float a_17 = 0.0;
     bool local_20 = false;
-    float u_48 = abs(w_24.z);
-    if ((alpha_35.x == alpha_35.y)) {
-        float a_22 = alpha_35.x;
-        q_1 = (((4.0 * u_48) * u_48) / ((a_22 * a_22) * ((1.0 - u_48) * (1.0 + u_48))));
+    float u_43 = abs(w_24.z);
+    if ((alpha_33.x == alpha_33.y)) {
+        float a_22 = alpha_33.x;
+        q_1 = (((4.0 * u_43) * u_43) / ((a_22 * a_22) * ((1.0 - u_43) * (1.0 + u_43))));
     } else {
-        float sx_5 = (alpha_35.x * w_24.x);
-        float sy_4 = (alpha_35.y * w_24.y);
+        float sx_5 = (alpha_33.x * w_24.x);
+        float sy_4 = (alpha_33.y * w_24.y);
         q_1 = ((4.0 * (w_24.z * w_24.z)) / ((sx_5 * sx_5) + (sy_4 * sy_4)));
     }
     float _e35 = q_1;
@@ -1853,34 +1836,34 @@ float ms_exponential_lambda(vec3 w_24, vec2 alpha_35) {
         float _e46 = ms_exp_lambda_q(_e45);
         return _e46;
     }
-    a_17 = alpha_35.x;
+    a_17 = alpha_33.x;
     float s2_4 = ((w_24.x * w_24.x) + (w_24.y * w_24.y));
-    if ((alpha_35.x != alpha_35.y)) {
+    if ((alpha_33.x != alpha_33.y)) {
         local_20 = (s2_4 > 0.0);
     } else {
         local_20 = false;
     }
     bool _e64 = local_20;
     if (_e64) {
-        a_17 = sqrt((((((alpha_35.x * alpha_35.x) * w_24.x) * w_24.x) + (((alpha_35.y * alpha_35.y) * w_24.y) * w_24.y)) / s2_4));
+        a_17 = sqrt((((((alpha_33.x * alpha_33.x) * w_24.x) * w_24.x) + (((alpha_33.y * alpha_33.y) * w_24.y) * w_24.y)) / s2_4));
     }
     float _e83 = a_17;
-    float _e92 = ms_exp_lambda_z(((u_48 + u_48) / (_e83 * sqrt(((1.0 - u_48) * (1.0 + u_48))))));
+    float _e92 = ms_exp_lambda_z(((u_43 + u_43) / (_e83 * sqrt(((1.0 - u_43) * (1.0 + u_43))))));
     return _e92;
 }
 
-float ms_exponential_g1_(vec3 w_25, vec2 alpha_36) {
+float ms_exponential_g1_(vec3 w_25, vec2 alpha_34) {
     if ((w_25.z == 0.0)) {
         return 0.0;
     }
-    float _e6 = ms_exponential_lambda(w_25, alpha_36);
+    float _e6 = ms_exponential_lambda(w_25, alpha_34);
     return (1.0 / (1.0 + _e6));
 }
 
-float ms_exponential_g2_(vec3 wo_13, vec3 wi_13, vec2 alpha_37) {
+float ms_exponential_g2_(vec3 wo_12, vec3 wi_12, vec2 alpha_35) {
     bool local_21 = false;
-    if (!((wo_13.z == 0.0))) {
-        local_21 = (wi_13.z == 0.0);
+    if (!((wo_12.z == 0.0))) {
+        local_21 = (wi_12.z == 0.0);
     } else {
         local_21 = true;
     }
@@ -1888,23 +1871,17 @@ float ms_exponential_g2_(vec3 wo_13, vec3 wi_13, vec2 alpha_37) {
     if (_e13) {
         return 0.0;
     }
-    float _e15 = ms_exponential_lambda(wo_13, alpha_37);
-    float _e16 = ms_exponential_lambda(wi_13, alpha_37);
+    float _e15 = ms_exponential_lambda(wo_12, alpha_35);
+    float _e16 = ms_exponential_lambda(wi_12, alpha_35);
     return (1.0 / (1.0 + (_e15 + _e16)));
 }
 
-float ms_exponential_g2_separable(vec3 wo_14, vec3 wi_14, vec2 alpha_38) {
-    float _e3 = ms_exponential_g1_(wo_14, alpha_38);
-    float _e4 = ms_exponential_g1_(wi_14, alpha_38);
-    return (_e3 * _e4);
-}
-
-float ms_exponential_d(vec3 wm_12, vec2 alpha_39) {
+float ms_exponential_d(vec3 wm_11, vec2 alpha_36) {
     bool local_22 = false;
-    float z_16 = wm_12.z;
-    float r_21 = (1.0 / (alpha_39.x * alpha_39.y));
-    float x_29 = ((wm_12.x * alpha_39.y) * r_21);
-    float y_11 = ((wm_12.y * alpha_39.x) * r_21);
+    float z_16 = wm_11.z;
+    float r_18 = (1.0 / (alpha_36.x * alpha_36.y));
+    float x_27 = ((wm_11.x * alpha_36.y) * r_18);
+    float y_11 = ((wm_11.y * alpha_36.x) * r_18);
     float z2_3 = (z_16 * z_16);
     if ((z_16 > 0.0)) {
         local_22 = (z2_3 > 0.0);
@@ -1915,18 +1892,18 @@ float ms_exponential_d(vec3 wm_12, vec2 alpha_39) {
     if (!(_e24)) {
         return ((z_16 != z_16) ? z_16 : 0.0);
     }
-    float e_8 = ((2.0 * sqrt(((x_29 * x_29) + (y_11 * y_11)))) / z_16);
-    if ((e_8 <= 80.0)) {
-        return (((2.0 * exp(-(e_8))) * r_21) / ((MS_PI * z2_3) * z2_3));
+    float e_6 = ((2.0 * sqrt(((x_27 * x_27) + (y_11 * y_11)))) / z_16);
+    if ((e_6 <= 80.0)) {
+        return (((2.0 * exp(-(e_6))) * r_18) / ((MS_PI * z2_3) * z2_3));
     }
-    return exp((((log((2.0 * r_21)) - 1.14473) - (4.0 * log(z_16))) - e_8));
+    return exp((((log((2.0 * r_18)) - 1.14473) - (4.0 * log(z_16))) - e_6));
 }
 
-float ms_exponential_pdf(vec3 w_26, vec3 wm_13, vec2 alpha_40) {
+float ms_exponential_pdf(vec3 w_26, vec3 wm_12, vec2 alpha_37) {
     float c_4 = 0.0;
     bool local_23 = false;
     float z_17 = abs(w_26.z);
-    float _e5 = ms_dot(w_26, wm_13);
+    float _e5 = ms_dot(w_26, wm_12);
     c_4 = _e5;
     if ((w_26.z < 0.0)) {
         float _e10 = c_4;
@@ -1942,21 +1919,13 @@ float ms_exponential_pdf(vec3 w_26, vec3 wm_13, vec2 alpha_40) {
     if (!(_e20)) {
         return 0.0;
     }
-    float _e23 = ms_exponential_g1_(w_26, alpha_40);
+    float _e23 = ms_exponential_g1_(w_26, alpha_37);
     float _e24 = c_4;
-    float _e26 = ms_exponential_d(wm_13, alpha_40);
+    float _e26 = ms_exponential_d(wm_12, alpha_37);
     return (((_e23 * _e24) * _e26) / z_17);
 }
 
-float ms_exponential_pdf_dcos(vec3 wm_14, vec2 alpha_41) {
-    if (!((wm_14.z > 0.0))) {
-        return 0.0;
-    }
-    float _e7 = ms_exponential_d(wm_14, alpha_41);
-    return (_e7 * wm_14.z);
-}
-
-MsSample ms_exponential_sample_dcos(vec2 alpha_42, vec2 u_19) {
+MsSample ms_exponential_sample_dcos(vec2 alpha_38, vec2 u_19) {
     MsSource src_6 = MsSource(uvec2(0u), vec2(0.0), 0u, 0u);
     vec3 v_6 = vec3(0.0);
     MsSource _e2 = ms_source_stream(u_19);
@@ -1964,20 +1933,20 @@ MsSample ms_exponential_sample_dcos(vec2 alpha_42, vec2 u_19) {
     float _e4 = ms_source_next(src_6);
     float _e5 = ms_zig_exp1_(_e4, src_6);
     float _e7 = ms_bk_ln_1m(u_19.x);
-    float r_22 = (0.5 * (_e5 - _e7));
+    float r_19 = (0.5 * (_e5 - _e7));
     vec2 _e12 = ms_cos_sin_turn(u_19.y);
-    if ((r_22 > 1.0)) {
-        v_6 = vec3((alpha_42.x * _e12.x), (alpha_42.y * _e12.y), (1.0 / r_22));
+    if ((r_19 > 1.0)) {
+        v_6 = vec3((alpha_38.x * _e12.x), (alpha_38.y * _e12.y), (1.0 / r_19));
     } else {
-        v_6 = vec3(((alpha_42.x * r_22) * _e12.x), ((alpha_42.y * r_22) * _e12.y), 1.0);
+        v_6 = vec3(((alpha_38.x * r_19) * _e12.x), ((alpha_38.y * r_19) * _e12.y), 1.0);
     }
     vec3 _e35 = v_6;
     vec3 _e36 = ms_unit_normal(_e35);
-    float _e37 = ms_exponential_d(_e36, alpha_42);
+    float _e37 = ms_exponential_d(_e36, alpha_38);
     return MsSample(_e36, (_e37 * _e36.z));
 }
 
-vec3 ms_exponential_sample_wm(vec3 w_in_4, vec2 alpha_43, vec2 u_20) {
+vec3 ms_exponential_sample_wm(vec3 w_in_4, vec2 alpha_39, vec2 u_20) {
     vec3 w_27 = vec3(0.0);
     float cp_1 = 1.0;
     float sp_1 = 0.0;
@@ -1996,21 +1965,21 @@ vec3 ms_exponential_sample_wm(vec3 w_in_4, vec2 alpha_43, vec2 u_20) {
         w_27 = -(_e9);
     }
     float _e13 = w_27.x;
-    float sx_6 = (alpha_43.x * _e13);
+    float sx_6 = (alpha_39.x * _e13);
     float _e17 = w_27.y;
-    float sy_5 = (alpha_43.y * _e17);
-    float e_9 = w_27.z;
+    float sy_5 = (alpha_39.y * _e17);
+    float e_7 = w_27.z;
     float h_7 = sqrt(((sx_6 * sx_6) + (sy_5 * sy_5)));
     if ((h_7 > 0.0)) {
         cp_1 = (sx_6 / h_7);
         sp_1 = (sy_5 / h_7);
     }
-    if (!((abs((e_9 + h_7)) <= 3.4028235e38))) {
-        return vec3((e_9 + h_7));
+    if (!((abs((e_7 + h_7)) <= 3.4028235e38))) {
+        return vec3((e_7 + h_7));
     }
     float g_1 = (h_7 * MS_FRAC_1_PI);
-    float total = (e_9 + g_1);
-    float inv_p_1 = min((total / e_9), 3.4028235e38);
+    float total = (e_7 + g_1);
+    float inv_p_1 = min((total / e_7), 3.4028235e38);
     float inv_g = min((1.0 / g_1), 3.4028235e38);
     uvec2 _e50 = ms_stream_new(u_20);
     state_5 = _e50;
@@ -2040,18 +2009,18 @@ vec3 ms_exponential_sample_wm(vec3 w_in_4, vec2 alpha_43, vec2 u_20) {
             float _e73 = ms_stream_next(state_5);
             float prod = ((1.0 - _e70) * (1.0 - _e73));
             float _e77 = v0_;
-            float d_19 = ((_e77 * total) - e_9);
-            if ((d_19 < 0.0)) {
-                float r_23 = (-0.5 * log(prod));
+            float d_12 = ((_e77 * total) - e_7);
+            if ((d_12 < 0.0)) {
+                float r_20 = (-0.5 * log(prod));
                 float _e85 = v0_;
                 float turn = (_e85 * inv_p_1);
                 vec2 _e87 = ms_cos_sin_turn(turn);
-                x_9 = (r_23 * _e87.x);
-                y_2 = (r_23 * _e87.y);
+                x_9 = (r_20 * _e87.x);
+                y_2 = (r_20 * _e87.y);
                 if (!((abs((turn - 0.5)) >= 0.25))) {
                     float _e100 = ms_stream_next(state_5);
                     float _e102 = x_9;
-                    local_24 = ((_e100 * e_9) <= (e_9 + (h_7 * _e102)));
+                    local_24 = ((_e100 * e_7) <= (e_7 + (h_7 * _e102)));
                 } else {
                     local_24 = true;
                 }
@@ -2061,12 +2030,12 @@ vec3 ms_exponential_sample_wm(vec3 w_in_4, vec2 alpha_43, vec2 u_20) {
                 }
             } else {
                 float _e108 = ms_stream_next(state_5);
-                float r_24 = (-0.5 * log((prod * (1.0 - _e108))));
-                float one_plus = (2.0 * (d_19 * inv_g));
+                float r_21 = (-0.5 * log((prod * (1.0 - _e108))));
+                float one_plus = (2.0 * (d_12 * inv_g));
                 float _e118 = v0_;
                 float one_minus = ((2.0 * (1.0 - _e118)) * (total * inv_g));
-                x_9 = (r_24 * sqrt(max((one_minus * one_plus), 0.0)));
-                y_2 = (r_24 * (one_plus - 1.0));
+                x_9 = (r_21 * sqrt(max((one_minus * one_plus), 0.0)));
+                y_2 = (r_21 * (one_plus - 1.0));
                 break;
             }
         }
@@ -2075,22 +2044,22 @@ vec3 ms_exponential_sample_wm(vec3 w_in_4, vec2 alpha_43, vec2 u_20) {
     float _e138 = x_9;
     float _e140 = sp_1;
     float _e141 = y_2;
-    float p_4 = (alpha_43.x * ((_e137 * _e138) - (_e140 * _e141)));
+    float p_4 = (alpha_39.x * ((_e137 * _e138) - (_e140 * _e141)));
     float _e146 = sp_1;
     float _e147 = x_9;
     float _e149 = cp_1;
     float _e150 = y_2;
-    float q_7 = (alpha_43.y * ((_e146 * _e147) + (_e149 * _e150)));
+    float q_7 = (alpha_39.y * ((_e146 * _e147) + (_e149 * _e150)));
     vec3 _e156 = ms_unit_normal(vec3(p_4, q_7, 1.0));
     vec3 _e157 = w_27;
     vec3 _e158 = ms_facing(_e156, _e157);
     return _e158;
 }
 
-MsSample ms_exponential_sample(vec3 w_28, vec2 alpha_44, vec2 u_21) {
-    vec3 _e3 = ms_exponential_sample_wm(w_28, alpha_44, u_21);
+MsSample ms_exponential_sample(vec3 w_28, vec2 alpha_40, vec2 u_21) {
+    vec3 _e3 = ms_exponential_sample_wm(w_28, alpha_40, u_21);
     vec3 _e4 = ms_unit(w_28);
-    float _e5 = ms_exponential_pdf(_e4, _e3, alpha_44);
+    float _e5 = ms_exponential_pdf(_e4, _e3, alpha_40);
     return MsSample(_e3, _e5);
 }
 
@@ -2107,10 +2076,10 @@ float ms_shape_lambda_z(uint table, float z_2) {
     if (_e15) {
         vec2 _e18 = ms_fam_segment(z_2, MS_SHAPE_K0_, k1_2, MS_SHAPE_M);
         uint i_10 = ((table + MS_SHAPE_HEADER) + (2u * uint(_e18.x)));
-        vec4 lo_6 = _group_1_binding_0_cs[i_10];
-        vec4 hi_4 = _group_1_binding_0_cs[(i_10 + 1u)];
-        float s_18 = _e18.y;
-        float p_5 = ((((((((hi_4.x * s_18) + lo_6.w) * s_18) + lo_6.z) * s_18) + lo_6.y) * s_18) + lo_6.x);
+        vec4 lo_5 = _group_1_binding_0_cs[i_10];
+        vec4 hi_3 = _group_1_binding_0_cs[(i_10 + 1u)];
+        float s_14 = _e18.y;
+        float p_5 = ((((((((hi_3.x * s_14) + lo_5.w) * s_14) + lo_5.z) * s_14) + lo_5.y) * s_14) + lo_5.x);
         if ((head_1.z > 0.5)) {
             return p_5;
         }
@@ -2129,10 +2098,10 @@ float ms_shape_lambda_z(uint table, float z_2) {
     return (exp((tail.z - (tail.y * log(z_2)))) * (1.0 + (tail.w / (z_2 * z_2))));
 }
 
-float ms_shape_lambda(uint table_1, vec3 w_29, vec2 alpha_45) {
+float ms_shape_lambda(uint table_1, vec3 w_29, vec2 alpha_41) {
     bool local_26 = false;
-    float sx_7 = (alpha_45.x * w_29.x);
-    float sy_6 = (alpha_45.y * w_29.y);
+    float sx_7 = (alpha_41.x * w_29.x);
+    float sy_6 = (alpha_41.y * w_29.y);
     float h_8 = sqrt(((sx_7 * sx_7) + (sy_6 * sy_6)));
     float z_18 = abs(w_29.z);
     if (!((h_8 > 0.0))) {
@@ -2181,8 +2150,8 @@ float ms_ln_gamma_variate(float k_in, inout MsSource src_9) {
         k_5 = (_e12 + 1.0);
     }
     float _e15 = k_5;
-    float d_20 = (_e15 - 0.33333334);
-    float c_23 = (1.0 / sqrt((9.0 * d_20)));
+    float d_13 = (_e15 - 0.33333334);
+    float c_18 = (1.0 / sqrt((9.0 * d_13)));
     bool loop_init_5 = true;
     while(true) {
         if (!loop_init_5) {
@@ -2198,7 +2167,7 @@ float ms_ln_gamma_variate(float k_in, inout MsSource src_9) {
         {
             float _e28 = ms_source_next(src_9);
             float _e29 = ms_zig_normal(_e28, src_9);
-            v_7 = (1.0 + (c_23 * _e29));
+            v_7 = (1.0 + (c_18 * _e29));
             float _e34 = v_7;
             if ((_e34 <= 0.0)) {
                 continue;
@@ -2210,17 +2179,17 @@ float ms_ln_gamma_variate(float k_in, inout MsSource src_9) {
             float _e42 = ms_source_next_positive(src_9);
             float _e48 = v_7;
             float _e51 = v_7;
-            if ((log(_e42) < (((((0.5 * _e29) * _e29) + d_20) - (d_20 * _e48)) + (d_20 * log(_e51))))) {
+            if ((log(_e42) < (((((0.5 * _e29) * _e29) + d_13) - (d_13 * _e48)) + (d_13 * log(_e51))))) {
                 float _e57 = v_7;
                 float _e60 = boost;
-                return ((log(d_20) + log(_e57)) + _e60);
+                return ((log(d_13) + log(_e57)) + _e60);
             }
         }
     }
     return uintBitsToFloat(2143289344u);
 }
 
-vec4 ms_beckmann_sample_stream_above(vec3 v_8, vec2 alpha_46, inout MsSource src_10) {
+vec4 ms_beckmann_sample_stream_above(vec3 v_8, vec2 alpha_42, inout MsSource src_10) {
     float h_1 = 0.0;
     float cp_2 = 1.0;
     float sp_2 = 0.0;
@@ -2229,8 +2198,8 @@ vec4 ms_beckmann_sample_stream_above(vec3 v_8, vec2 alpha_46, inout MsSource src
     bool local_27 = false;
     bool local_28 = false;
     bool local_29 = false;
-    float sx_8 = (alpha_46.x * v_8.x);
-    float sy_7 = (alpha_46.y * v_8.y);
+    float sx_8 = (alpha_42.x * v_8.x);
+    float sy_7 = (alpha_42.y * v_8.y);
     float big = max(abs(sx_8), abs(sy_7));
     if ((big > 0.0)) {
         float qx = (sx_8 / big);
@@ -2271,11 +2240,11 @@ vec4 ms_beckmann_sample_stream_above(vec3 v_8, vec2 alpha_46, inout MsSource src
                     break;
                 }
                 float _e66 = ms_zig_normal(((_e56 - p_ray) / (1.0 - p_ray)), src_10);
-                float c_24 = (_e66 * 0.70710677);
-                if (!((c_24 >= 0.0))) {
-                    if ((c_24 > -(a_23))) {
+                float c_19 = (_e66 * 0.70710677);
+                if (!((c_19 >= 0.0))) {
+                    if ((c_19 > -(a_23))) {
                         float _e78 = ms_source_next(src_10);
-                        local_28 = ((_e78 * a_23) < (c_24 + a_23));
+                        local_28 = ((_e78 * a_23) < (c_19 + a_23));
                     } else {
                         local_28 = false;
                     }
@@ -2286,7 +2255,7 @@ vec4 ms_beckmann_sample_stream_above(vec3 v_8, vec2 alpha_46, inout MsSource src
                 }
                 bool _e85 = local_27;
                 if (_e85) {
-                    x_10 = c_24;
+                    x_10 = c_19;
                     break;
                 }
             }
@@ -2298,11 +2267,11 @@ vec4 ms_beckmann_sample_stream_above(vec3 v_8, vec2 alpha_46, inout MsSource src
     float _e94 = cp_2;
     float _e95 = x_10;
     float _e97 = sp_2;
-    float p_6 = (alpha_46.x * ((_e94 * _e95) - (_e97 * y_12)));
+    float p_6 = (alpha_42.x * ((_e94 * _e95) - (_e97 * y_12)));
     float _e102 = sp_2;
     float _e103 = x_10;
     float _e105 = cp_2;
-    float q_8 = (alpha_46.y * ((_e102 * _e103) + (_e105 * y_12)));
+    float q_8 = (alpha_42.y * ((_e102 * _e103) + (_e105 * y_12)));
     vec3 _e111 = ms_unit_normal(vec3(p_6, q_8, 1.0));
     if ((_e111.z > 0.0)) {
         float _e117 = ms_dot(_e111, v_8);
@@ -2376,13 +2345,13 @@ float ms_posterior_ln_beta(uint mixing_1, float k_7, float mean_beta, float z_3,
     return uintBitsToFloat(2143289344u);
 }
 
-float ms_mixture_beta(float ln_beta, vec2 alpha_47) {
-    float lo_7 = log(min(alpha_47.x, alpha_47.y));
-    float hi_5 = log(max(alpha_47.x, alpha_47.y));
-    return exp(clamp(ln_beta, (-80.0 - lo_7), (80.0 - hi_5)));
+float ms_mixture_beta(float ln_beta, vec2 alpha_43) {
+    float lo_6 = log(min(alpha_43.x, alpha_43.y));
+    float hi_4 = log(max(alpha_43.x, alpha_43.y));
+    return exp(clamp(ln_beta, (-80.0 - lo_6), (80.0 - hi_4)));
 }
 
-vec3 ms_mixture_sample_wm(uint table_2, vec3 w_in_5, vec2 alpha_48, vec2 u_22) {
+vec3 ms_mixture_sample_wm(uint table_2, vec3 w_in_5, vec2 alpha_44, vec2 u_22) {
     vec3 w_31 = vec3(0.0);
     MsSource src_13 = MsSource(uvec2(0u), vec2(0.0), 0u, 0u);
     vec3 _e4 = ms_unit(w_in_5);
@@ -2394,14 +2363,14 @@ vec3 ms_mixture_sample_wm(uint table_2, vec3 w_in_5, vec2 alpha_48, vec2 u_22) {
     }
     vec4 params = _group_1_binding_0_cs[(table_2 + 2u)];
     float _e19 = w_31.x;
-    float sx_9 = (alpha_48.x * _e19);
+    float sx_9 = (alpha_44.x * _e19);
     float _e23 = w_31.y;
-    float sy_8 = (alpha_48.y * _e23);
+    float sy_8 = (alpha_44.y * _e23);
     float h_9 = sqrt(((sx_9 * sx_9) + (sy_8 * sy_8)));
     float _e30 = w_31.z;
     if (!((_e30 > 0.0))) {
         vec3 _e34 = w_31;
-        vec3 _e35 = ms_beckmann_sample_wm(_e34, alpha_48, u_22);
+        vec3 _e35 = ms_beckmann_sample_wm(_e34, alpha_44, u_22);
         return _e35;
     }
     MsSource _e36 = ms_source_after_u(u_22);
@@ -2410,39 +2379,33 @@ vec3 ms_mixture_sample_wm(uint table_2, vec3 w_in_5, vec2 alpha_48, vec2 u_22) {
     float _e44 = ms_posterior_ln_beta(uint(params.z), params.y, params.x, _e43, h_9, src_13);
     if ((_e44 == _e44)) {
         vec3 _e46 = w_31;
-        float _e47 = ms_mixture_beta(_e44, alpha_48);
-        vec4 _e49 = ms_beckmann_sample_stream_above(_e46, (_e47 * alpha_48), src_13);
+        float _e47 = ms_mixture_beta(_e44, alpha_44);
+        vec4 _e49 = ms_beckmann_sample_stream_above(_e46, (_e47 * alpha_44), src_13);
         if ((_e49.w > 0.0)) {
             return _e49.xyz;
         }
     }
     vec3 _e54 = w_31;
-    vec3 _e55 = ms_beckmann_sample_wm(_e54, alpha_48, u_22);
+    vec3 _e55 = ms_beckmann_sample_wm(_e54, alpha_44, u_22);
     return _e55;
 }
 
-float ms_mixture_g1_(uint table_3, vec3 w_32, vec2 alpha_49) {
-    float _e3 = ms_shape_lambda(table_3, w_32, alpha_49);
+float ms_mixture_g1_(uint table_3, vec3 w_32, vec2 alpha_45) {
+    float _e3 = ms_shape_lambda(table_3, w_32, alpha_45);
     return (1.0 / (1.0 + _e3));
 }
 
-float ms_mixture_g2_(uint table_4, vec3 wo_15, vec3 wi_15, vec2 alpha_50) {
-    float _e4 = ms_shape_lambda(table_4, wo_15, alpha_50);
-    float _e5 = ms_shape_lambda(table_4, wi_15, alpha_50);
+float ms_mixture_g2_(uint table_4, vec3 wo_13, vec3 wi_13, vec2 alpha_46) {
+    float _e4 = ms_shape_lambda(table_4, wo_13, alpha_46);
+    float _e5 = ms_shape_lambda(table_4, wi_13, alpha_46);
     return (1.0 / (1.0 + (_e4 + _e5)));
 }
 
-float ms_mixture_g2_separable(uint table_5, vec3 wo_16, vec3 wi_16, vec2 alpha_51) {
-    float _e4 = ms_mixture_g1_(table_5, wo_16, alpha_51);
-    float _e5 = ms_mixture_g1_(table_5, wi_16, alpha_51);
-    return (_e4 * _e5);
-}
-
-float ms_mixture_pdf(uint table_6, vec3 w_33, vec3 wm_15, vec2 alpha_52, float ln_d) {
+float ms_mixture_pdf(uint table_5, vec3 w_33, vec3 wm_13, vec2 alpha_47, float ln_d) {
     float c_5 = 0.0;
     bool local_31 = false;
     float z_19 = abs(w_33.z);
-    float _e7 = ms_dot(w_33, wm_15);
+    float _e7 = ms_dot(w_33, wm_13);
     c_5 = _e7;
     if ((w_33.z < 0.0)) {
         float _e12 = c_5;
@@ -2458,15 +2421,15 @@ float ms_mixture_pdf(uint table_6, vec3 w_33, vec3 wm_15, vec2 alpha_52, float l
     if (!(_e22)) {
         return 0.0;
     }
-    float _e25 = ms_mixture_g1_(table_6, w_33, alpha_52);
+    float _e25 = ms_mixture_g1_(table_5, w_33, alpha_47);
     float _e26 = c_5;
     return exp((log((_e25 * (_e26 / z_19))) + ln_d));
 }
 
-vec3 ms_mixture_sample_dcos_wm(uint table_7, vec2 alpha_53, vec2 u_23) {
+vec3 ms_mixture_sample_dcos_wm(uint table_6, vec2 alpha_48, vec2 u_23) {
     MsSource src_14 = MsSource(uvec2(0u), vec2(0.0), 0u, 0u);
     float ln_beta_1 = 0.0;
-    vec4 params_1 = _group_1_binding_0_cs[(table_7 + 2u)];
+    vec4 params_1 = _group_1_binding_0_cs[(table_6 + 2u)];
     MsSource _e8 = ms_source_stream_wide(u_23);
     src_14 = _e8;
     float _e14 = ms_mixing_ln_beta(uint(params_1.z), params_1.y, false, src_14);
@@ -2477,25 +2440,25 @@ vec3 ms_mixture_sample_dcos_wm(uint table_7, vec2 alpha_53, vec2 u_23) {
         ln_beta_1 = log(params_1.x);
     }
     float _e21 = ln_beta_1;
-    float _e22 = ms_mixture_beta(_e21, alpha_53);
-    MsSample _e24 = ms_beckmann_sample_dcos((_e22 * alpha_53), u_23);
+    float _e22 = ms_mixture_beta(_e21, alpha_48);
+    MsSample _e24 = ms_beckmann_sample_dcos((_e22 * alpha_48), u_23);
     return _e24.wm;
 }
 
-float ms_mixture_ln_d(float ln_f, vec3 wm_16, vec2 alpha_54) {
-    return ((ln_f - log((alpha_54.x * alpha_54.y))) - (4.0 * log(wm_16.z)));
+float ms_mixture_ln_d(float ln_f, vec3 wm_14, vec2 alpha_49) {
+    return ((ln_f - log((alpha_49.x * alpha_49.y))) - (4.0 * log(wm_14.z)));
 }
 
-float ms_mixture_r(vec3 wm_17, vec2 alpha_55) {
-    float x_30 = abs((wm_17.x / alpha_55.x));
-    float y_13 = abs((wm_17.y / alpha_55.y));
-    float big_1 = max(x_30, y_13);
+float ms_mixture_r(vec3 wm_15, vec2 alpha_50) {
+    float x_28 = abs((wm_15.x / alpha_50.x));
+    float y_13 = abs((wm_15.y / alpha_50.y));
+    float big_1 = max(x_28, y_13);
     if (!((big_1 > 0.0))) {
         return big_1;
     }
-    float qx_1 = (x_30 / big_1);
+    float qx_1 = (x_28 / big_1);
     float qy_1 = (y_13 / big_1);
-    return ((big_1 * sqrt(((qx_1 * qx_1) + (qy_1 * qy_1)))) / wm_17.z);
+    return ((big_1 * sqrt(((qx_1 * qx_1) + (qy_1 * qy_1)))) / wm_15.z);
 }
 
 float ms_k0e(float z_4) {
@@ -2503,8 +2466,8 @@ float ms_k0e(float z_4) {
         return ((1.0 + z_4) * (-(log((0.5 * z_4))) - MS_EULER_GAMMA));
     }
     if ((z_4 >= 512.0)) {
-        float r_25 = (1.0 / z_4);
-        return (sqrt((1.5707964 * r_25)) * (1.0 - (r_25 * (0.125 - (r_25 * 0.0703125)))));
+        float r_22 = (1.0 / z_4);
+        return (sqrt((1.5707964 * r_22)) * (1.0 - (r_22 * (0.125 - (r_22 * 0.0703125)))));
     }
     vec2 _e29 = ms_bk_segment(z_4, MS_SF_K0E_K0_, MS_SF_K0E_K1_);
     uint i_11 = (MS_SF_K0E_AT + (2u * uint(_e29.x)));
@@ -2519,8 +2482,8 @@ float ms_e1x(float y_3) {
         return (-0.5772157 - log(y_3));
     }
     if ((y_3 >= 512.0)) {
-        float r_26 = (1.0 / y_3);
-        return (r_26 * (1.0 - (r_26 * (1.0 - (r_26 * (2.0 - (r_26 * 6.0)))))));
+        float r_23 = (1.0 / y_3);
+        return (r_23 * (1.0 - (r_23 * (1.0 - (r_23 * (2.0 - (r_23 * 6.0)))))));
     }
     vec2 _e23 = ms_bk_segment(y_3, MS_SF_E1X_K0_, MS_SF_E1X_K1_);
     uint i_12 = (MS_SF_E1X_AT + (2u * uint(_e23.x)));
@@ -2530,17 +2493,17 @@ float ms_e1x(float y_3) {
     return _e39;
 }
 
-float ms_student_t_gamma(uint table_8) {
-    float _e4 = _group_1_binding_0_cs[table_8].x;
+float ms_student_t_gamma(uint table_7) {
+    float _e4 = _group_1_binding_0_cs[table_7].x;
     return _e4;
 }
 
 float ms_ln_1p(float t_1) {
-    float v_19 = (1.0 + t_1);
-    if ((v_19 == 1.0)) {
+    float v_18 = (1.0 + t_1);
+    if ((v_18 == 1.0)) {
         return t_1;
     }
-    return (log(v_19) * (t_1 / (v_19 - 1.0)));
+    return (log(v_18) * (t_1 / (v_18 - 1.0)));
 }
 
 float ms_expm1_(float x_11) {
@@ -2550,57 +2513,51 @@ float ms_expm1_(float x_11) {
     return (exp(x_11) - 1.0);
 }
 
-float ms_student_t_d(vec3 wm_18, vec2 alpha_56, uint table_9) {
-    float z_20 = wm_18.z;
+float ms_student_t_d(vec3 wm_16, vec2 alpha_51, uint table_8) {
+    float z_20 = wm_16.z;
     if (!((z_20 > 0.0))) {
         return ((z_20 != z_20) ? z_20 : 0.0);
     }
-    float _e10 = ms_student_t_gamma(table_9);
-    float x_31 = (wm_18.x / alpha_56.x);
-    float y_14 = (wm_18.y / alpha_56.y);
-    float q_9 = ((x_31 * x_31) + (y_14 * y_14));
+    float _e10 = ms_student_t_gamma(table_8);
+    float x_29 = (wm_16.x / alpha_51.x);
+    float y_14 = (wm_16.y / alpha_51.y);
+    float q_9 = ((x_29 * x_29) + (y_14 * y_14));
     float z2_4 = (z_20 * z_20);
     if ((z_20 > 1e-9)) {
-        float t_15 = (q_9 / (z2_4 * (_e10 - 1.0)));
-        float _e27 = ms_ln_1p(t_15);
-        float e_10 = (_e10 * _e27);
-        float norm = ((((MS_PI * alpha_56.x) * alpha_56.y) * z2_4) * z2_4);
-        if ((e_10 < 80.0)) {
-            return (exp(-(e_10)) / norm);
+        float t_14 = (q_9 / (z2_4 * (_e10 - 1.0)));
+        float _e27 = ms_ln_1p(t_14);
+        float e_8 = (_e10 * _e27);
+        float norm = ((((MS_PI * alpha_51.x) * alpha_51.y) * z2_4) * z2_4);
+        if ((e_8 < 80.0)) {
+            return (exp(-(e_8)) / norm);
         }
-        return exp((-(e_10) - log(norm)));
+        return exp((-(e_8) - log(norm)));
     }
-    float ln_d_1 = (((-(_e10) * (log(q_9) - log((_e10 - 1.0)))) + (((2.0 * _e10) - 4.0) * log(z_20))) - log(((MS_PI * alpha_56.x) * alpha_56.y)));
+    float ln_d_1 = (((-(_e10) * (log(q_9) - log((_e10 - 1.0)))) + (((2.0 * _e10) - 4.0) * log(z_20))) - log(((MS_PI * alpha_51.x) * alpha_51.y)));
     return exp(ln_d_1);
 }
 
-float ms_student_t_lambda(vec3 w_34, vec2 alpha_57, uint table_10) {
-    float _e3 = ms_shape_lambda(table_10, w_34, alpha_57);
+float ms_student_t_lambda(vec3 w_34, vec2 alpha_52, uint table_9) {
+    float _e3 = ms_shape_lambda(table_9, w_34, alpha_52);
     return _e3;
 }
 
-float ms_student_t_g1_(vec3 w_35, vec2 alpha_58, uint table_11) {
-    float _e3 = ms_student_t_lambda(w_35, alpha_58, table_11);
+float ms_student_t_g1_(vec3 w_35, vec2 alpha_53, uint table_10) {
+    float _e3 = ms_student_t_lambda(w_35, alpha_53, table_10);
     return (1.0 / (1.0 + _e3));
 }
 
-float ms_student_t_g2_(vec3 wo_17, vec3 wi_17, vec2 alpha_59, uint table_12) {
-    float _e4 = ms_student_t_lambda(wo_17, alpha_59, table_12);
-    float _e5 = ms_student_t_lambda(wi_17, alpha_59, table_12);
+float ms_student_t_g2_(vec3 wo_14, vec3 wi_14, vec2 alpha_54, uint table_11) {
+    float _e4 = ms_student_t_lambda(wo_14, alpha_54, table_11);
+    float _e5 = ms_student_t_lambda(wi_14, alpha_54, table_11);
     return (1.0 / (1.0 + (_e4 + _e5)));
 }
 
-float ms_student_t_g2_separable(vec3 wo_18, vec3 wi_18, vec2 alpha_60, uint table_13) {
-    float _e4 = ms_student_t_g1_(wo_18, alpha_60, table_13);
-    float _e5 = ms_student_t_g1_(wi_18, alpha_60, table_13);
-    return (_e4 * _e5);
-}
-
-float ms_student_t_pdf(vec3 w_36, vec3 wm_19, vec2 alpha_61, uint table_14) {
+float ms_student_t_pdf(vec3 w_36, vec3 wm_17, vec2 alpha_55, uint table_12) {
     float c_6 = 0.0;
     bool local_32 = false;
     float z_21 = abs(w_36.z);
-    float _e6 = ms_dot(w_36, wm_19);
+    float _e6 = ms_dot(w_36, wm_17);
     c_6 = _e6;
     if ((w_36.z < 0.0)) {
         float _e11 = c_6;
@@ -2616,48 +2573,48 @@ float ms_student_t_pdf(vec3 w_36, vec3 wm_19, vec2 alpha_61, uint table_14) {
     if (!(_e21)) {
         return 0.0;
     }
-    float _e24 = ms_student_t_g1_(w_36, alpha_61, table_14);
+    float _e24 = ms_student_t_g1_(w_36, alpha_55, table_12);
     float _e25 = c_6;
-    float _e28 = ms_student_t_d(wm_19, alpha_61, table_14);
+    float _e28 = ms_student_t_d(wm_17, alpha_55, table_12);
     return ((_e24 * (_e25 / z_21)) * _e28);
 }
 
-float ms_student_t_pdf_dcos(vec3 wm_20, vec2 alpha_62, uint table_15) {
-    if (!((wm_20.z > 0.0))) {
+float ms_student_t_pdf_dcos(vec3 wm_18, vec2 alpha_56, uint table_13) {
+    if (!((wm_18.z > 0.0))) {
         return 0.0;
     }
-    float _e8 = ms_student_t_d(wm_20, alpha_62, table_15);
-    return (_e8 * wm_20.z);
+    float _e8 = ms_student_t_d(wm_18, alpha_56, table_13);
+    return (_e8 * wm_18.z);
 }
 
-MsSample ms_student_t_sample_dcos(vec2 alpha_63, vec2 u_24, uint table_16) {
+MsSample ms_student_t_sample_dcos(vec2 alpha_57, vec2 u_24, uint table_14) {
     vec3 v_9 = vec3(0.0);
-    float _e3 = ms_student_t_gamma(table_16);
+    float _e3 = ms_student_t_gamma(table_14);
     float g1_1 = (_e3 - 1.0);
     float _e7 = ms_bk_ln_1m(u_24.x);
     float _e10 = ms_expm1_((-(_e7) / g1_1));
-    float r_27 = sqrt((g1_1 * _e10));
+    float r_24 = sqrt((g1_1 * _e10));
     vec2 _e14 = ms_cos_sin_turn(u_24.y);
-    if ((r_27 > 1.0)) {
-        v_9 = vec3((alpha_63.x * _e14.x), (alpha_63.y * _e14.y), (1.0 / r_27));
+    if ((r_24 > 1.0)) {
+        v_9 = vec3((alpha_57.x * _e14.x), (alpha_57.y * _e14.y), (1.0 / r_24));
     } else {
-        v_9 = vec3(((alpha_63.x * r_27) * _e14.x), ((alpha_63.y * r_27) * _e14.y), 1.0);
+        v_9 = vec3(((alpha_57.x * r_24) * _e14.x), ((alpha_57.y * r_24) * _e14.y), 1.0);
     }
     vec3 _e37 = v_9;
     vec3 _e38 = ms_unit_normal(_e37);
-    float _e39 = ms_student_t_pdf_dcos(_e38, alpha_63, table_16);
+    float _e39 = ms_student_t_pdf_dcos(_e38, alpha_57, table_14);
     return MsSample(_e38, _e39);
 }
 
-MsSample ms_student_t_sample(vec3 w_37, vec2 alpha_64, vec2 u_25, uint table_17) {
-    vec3 _e4 = ms_mixture_sample_wm(table_17, w_37, alpha_64, u_25);
+MsSample ms_student_t_sample(vec3 w_37, vec2 alpha_58, vec2 u_25, uint table_15) {
+    vec3 _e4 = ms_mixture_sample_wm(table_15, w_37, alpha_58, u_25);
     vec3 _e5 = ms_unit(w_37);
-    float _e6 = ms_student_t_pdf(_e5, _e4, alpha_64, table_17);
+    float _e6 = ms_student_t_pdf(_e5, _e4, alpha_58, table_15);
     return MsSample(_e4, _e6);
 }
 
-bool ms_gtr_is_ggx(uint table_18) {
-    float _e4 = _group_1_binding_0_cs[table_18].z;
+bool ms_gtr_is_ggx(uint table_16) {
+    float _e4 = _group_1_binding_0_cs[table_16].z;
     return (_e4 < 0.5);
 }
 
@@ -2700,14 +2657,14 @@ float ms_gtr_expm1_over_x(float x_13) {
     return (_e4 / x_13);
 }
 
-float ms_gtr_d(vec3 wm_21, vec2 alpha_65, uint table_19) {
+float ms_gtr_d(vec3 wm_19, vec2 alpha_59, uint table_17) {
     float x_14 = 0.0;
-    vec4 head_2 = _group_1_binding_0_cs[table_19];
+    vec4 head_2 = _group_1_binding_0_cs[table_17];
     if ((head_2.z < 0.5)) {
-        float _e9 = ms_ggx_d(wm_21, alpha_65);
+        float _e9 = ms_ggx_d(wm_19, alpha_59);
         return _e9;
     }
-    float z_22 = wm_21.z;
+    float z_22 = wm_19.z;
     if (!((z_22 > 0.0))) {
         return ((z_22 != z_22) ? z_22 : 0.0);
     }
@@ -2715,9 +2672,9 @@ float ms_gtr_d(vec3 wm_21, vec2 alpha_65, uint table_19) {
     x_14 = (a_25 * a_25);
     if ((z_22 <= 1.0)) {
         float az = (a_25 * z_22);
-        x_14 = (((wm_21.x * wm_21.x) + (wm_21.y * wm_21.y)) + (az * az));
+        x_14 = (((wm_19.x * wm_19.x) + (wm_19.y * wm_19.y)) + (az * az));
     }
-    vec4 norm_1 = _group_1_binding_0_cs[(table_19 + 1u)];
+    vec4 norm_1 = _group_1_binding_0_cs[(table_17 + 1u)];
     if ((head_2.x == 1.0)) {
         float _e41 = x_14;
         return (norm_1.y / _e41);
@@ -2726,33 +2683,33 @@ float ms_gtr_d(vec3 wm_21, vec2 alpha_65, uint table_19) {
     return exp((norm_1.x - (head_2.x * log(_e45))));
 }
 
-float ms_gtr_lambda_ends(uint table_20, float u_in) {
+float ms_gtr_lambda_ends(uint table_18, float u_in) {
     if ((u_in != u_in)) {
         return u_in;
     }
-    float u_49 = min(abs(u_in), 1.0);
-    if ((u_49 == 0.0)) {
+    float u_44 = min(abs(u_in), 1.0);
+    if ((u_44 == 0.0)) {
         float _e8 = ms_inf();
         return _e8;
     }
-    float q_10 = ((1.0 - u_49) * (1.0 + u_49));
-    float a_26 = (u_49 / sqrt(q_10));
+    float q_10 = ((1.0 - u_44) * (1.0 + u_44));
+    float a_26 = (u_44 / sqrt(q_10));
     if ((a_26 < 1.0)) {
-        vec4 m_12 = _group_1_binding_0_cs[(table_20 + 1u)];
-        return (((m_12.z / a_26) - 0.5) + (m_12.w * a_26));
+        vec4 m_10 = _group_1_binding_0_cs[(table_18 + 1u)];
+        return (((m_10.z / a_26) - 0.5) + (m_10.w * a_26));
     }
-    vec4 k_14 = _group_1_binding_0_cs[(table_20 + 2u)];
-    float r2_1 = (q_10 / (u_49 * u_49));
-    return ((k_14.x + (k_14.y * r2_1)) * r2_1);
+    vec4 k_13 = _group_1_binding_0_cs[(table_18 + 2u)];
+    float r2_1 = (q_10 / (u_44 * u_44));
+    return ((k_13.x + (k_13.y * r2_1)) * r2_1);
 }
 
-float ms_gtr_lambda_u(uint table_21, float u_26) {
+float ms_gtr_lambda_u(uint table_19, float u_26) {
     float t_3 = 0.0;
     float off = 0.0;
     float lo_2 = 0.0;
-    vec4 head_3 = _group_1_binding_0_cs[table_21];
-    vec4 lay = _group_1_binding_0_cs[(table_21 + 2u)];
-    vec4 lim = _group_1_binding_0_cs[(table_21 + 3u)];
+    vec4 head_3 = _group_1_binding_0_cs[table_19];
+    vec4 lay = _group_1_binding_0_cs[(table_19 + 2u)];
+    vec4 lim = _group_1_binding_0_cs[(table_19 + 3u)];
     t_3 = u_26;
     off = lay.z;
     lo_2 = lim.x;
@@ -2768,62 +2725,56 @@ float ms_gtr_lambda_u(uint table_21, float u_26) {
         uint bits_3 = floatBitsToUint(_e29);
         float _e34 = off;
         uint row = uint(min(max((int((bits_3 >> 18u)) - int(_e34)), 0), (int(lim.z) - 1)));
-        float s_19 = (uintBitsToFloat((1073741824u | ((bits_3 << 14u) >> 9u))) - 3.0);
+        float s_15 = (uintBitsToFloat((1073741824u | ((bits_3 << 14u) >> 9u))) - 3.0);
         if ((head_3.z < 1.5)) {
-            vec4 _e61 = _group_1_binding_0_cs[((table_21 + MS_GTR_HEADER) + row)];
-            float _e62 = ms_fam_cubic(_e61, s_19);
+            vec4 _e61 = _group_1_binding_0_cs[((table_19 + MS_GTR_HEADER) + row)];
+            float _e62 = ms_fam_cubic(_e61, s_15);
             return _e62;
         }
-        uint i_13 = ((table_21 + MS_GTR_HEADER) + (2u * row));
-        vec4 c_25 = _group_1_binding_0_cs[i_13];
+        uint i_13 = ((table_19 + MS_GTR_HEADER) + (2u * row));
+        vec4 c_20 = _group_1_binding_0_cs[i_13];
         float c4_ = _group_1_binding_0_cs[(i_13 + 1u)].x;
-        float p_7 = ((((((((c4_ * s_19) + c_25.w) * s_19) + c_25.z) * s_19) + c_25.y) * s_19) + c_25.x);
+        float p_7 = ((((((((c4_ * s_15) + c_20.w) * s_15) + c_20.z) * s_15) + c_20.y) * s_15) + c_20.x);
         if ((head_3.z < 2.5)) {
             return p_7;
         }
         return exp(p_7);
     }
-    float _e93 = ms_gtr_lambda_ends(table_21, u_26);
+    float _e93 = ms_gtr_lambda_ends(table_19, u_26);
     return _e93;
 }
 
-float ms_gtr_lambda(vec3 w_38, vec2 alpha_66, uint table_22) {
-    bool _e3 = ms_gtr_is_ggx(table_22);
+float ms_gtr_lambda(vec3 w_38, vec2 alpha_60, uint table_20) {
+    bool _e3 = ms_gtr_is_ggx(table_20);
     if (_e3) {
-        float _e4 = ms_ggx_lambda(w_38, alpha_66);
+        float _e4 = ms_ggx_lambda(w_38, alpha_60);
         return _e4;
     }
-    float _e7 = ms_gtr_lambda_u(table_22, abs(w_38.z));
+    float _e7 = ms_gtr_lambda_u(table_20, abs(w_38.z));
     return _e7;
 }
 
-float ms_gtr_g1_(vec3 w_39, vec2 alpha_67, uint table_23) {
-    float _e3 = ms_gtr_lambda(w_39, alpha_67, table_23);
+float ms_gtr_g1_(vec3 w_39, vec2 alpha_61, uint table_21) {
+    float _e3 = ms_gtr_lambda(w_39, alpha_61, table_21);
     return (1.0 / (1.0 + _e3));
 }
 
-float ms_gtr_g2_(vec3 wo_19, vec3 wi_19, vec2 alpha_68, uint table_24) {
-    float _e4 = ms_gtr_lambda(wo_19, alpha_68, table_24);
-    float _e5 = ms_gtr_lambda(wi_19, alpha_68, table_24);
+float ms_gtr_g2_(vec3 wo_15, vec3 wi_15, vec2 alpha_62, uint table_22) {
+    float _e4 = ms_gtr_lambda(wo_15, alpha_62, table_22);
+    float _e5 = ms_gtr_lambda(wi_15, alpha_62, table_22);
     return (1.0 / (1.0 + (_e4 + _e5)));
 }
 
-float ms_gtr_g2_separable(vec3 wo_20, vec3 wi_20, vec2 alpha_69, uint table_25) {
-    float _e4 = ms_gtr_g1_(wo_20, alpha_69, table_25);
-    float _e5 = ms_gtr_g1_(wi_20, alpha_69, table_25);
-    return (_e4 * _e5);
-}
-
-float ms_gtr_pdf(vec3 w_40, vec3 wm_22, vec2 alpha_70, uint table_26) {
+float ms_gtr_pdf(vec3 w_40, vec3 wm_20, vec2 alpha_63, uint table_23) {
     float c_7 = 0.0;
     bool local_34 = false;
-    bool _e4 = ms_gtr_is_ggx(table_26);
+    bool _e4 = ms_gtr_is_ggx(table_23);
     if (_e4) {
-        float _e5 = ms_ggx_pdf(w_40, wm_22, alpha_70);
+        float _e5 = ms_ggx_pdf(w_40, wm_20, alpha_63);
         return _e5;
     }
     float z_23 = abs(w_40.z);
-    float _e8 = ms_dot(w_40, wm_22);
+    float _e8 = ms_dot(w_40, wm_20);
     c_7 = _e8;
     if ((w_40.z < 0.0)) {
         float _e13 = c_7;
@@ -2842,29 +2793,29 @@ float ms_gtr_pdf(vec3 w_40, vec3 wm_22, vec2 alpha_70, uint table_26) {
         float _e27 = c_7;
         return ((_e26 != _e27) ? _e25 : 0.0);
     }
-    float _e31 = ms_gtr_g1_(w_40, alpha_70, table_26);
+    float _e31 = ms_gtr_g1_(w_40, alpha_63, table_23);
     float _e32 = c_7;
-    float _e34 = ms_gtr_d(wm_22, alpha_70, table_26);
+    float _e34 = ms_gtr_d(wm_20, alpha_63, table_23);
     return (((_e31 * _e32) * _e34) / z_23);
 }
 
-float ms_gtr_pdf_dcos(vec3 wm_23, vec2 alpha_71, uint table_27) {
-    if (!((wm_23.z > 0.0))) {
+float ms_gtr_pdf_dcos(vec3 wm_21, vec2 alpha_64, uint table_24) {
+    if (!((wm_21.z > 0.0))) {
         return 0.0;
     }
-    float _e8 = ms_gtr_d(wm_23, alpha_71, table_27);
-    return (_e8 * wm_23.z);
+    float _e8 = ms_gtr_d(wm_21, alpha_64, table_24);
+    return (_e8 * wm_21.z);
 }
 
 float ms_gtr_ln_pos_sum(float f_2, float minus_one, float sum, bool over, float ln_em1_abs) {
     if (over) {
         float _e5 = ms_gtr_ln(f_2);
-        float s_20 = (_e5 + ln_em1_abs);
-        if ((s_20 > 0.0)) {
-            float _e11 = ms_gtr_ln_1p(exp(-(s_20)));
-            return (s_20 + _e11);
+        float s_16 = (_e5 + ln_em1_abs);
+        if ((s_16 > 0.0)) {
+            float _e11 = ms_gtr_ln_1p(exp(-(s_16)));
+            return (s_16 + _e11);
         }
-        float _e14 = ms_gtr_ln_1p(exp(s_20));
+        float _e14 = ms_gtr_ln_1p(exp(s_16));
         return _e14;
     }
     float y_15 = (f_2 * minus_one);
@@ -2876,17 +2827,17 @@ float ms_gtr_ln_pos_sum(float f_2, float minus_one, float sum, bool over, float 
     return _e20;
 }
 
-float ms_gtr_tan2_(uint table_28, float xi_1) {
-    vec4 b0_1 = _group_1_binding_0_cs[(table_28 + 4u)];
-    vec4 b1_1 = _group_1_binding_0_cs[(table_28 + 5u)];
-    vec4 b2_1 = _group_1_binding_0_cs[(table_28 + 6u)];
+float ms_gtr_tan2_(uint table_25, float xi_1) {
+    vec4 b0_1 = _group_1_binding_0_cs[(table_25 + 4u)];
+    vec4 b1_1 = _group_1_binding_0_cs[(table_25 + 5u)];
+    vec4 b2_1 = _group_1_binding_0_cs[(table_25 + 6u)];
     float l = b0_1.x;
-    float k_15 = b0_1.y;
+    float k_14 = b0_1.y;
     float kl = b0_1.z;
-    float f_6 = (1.0 - xi_1);
+    float f_5 = (1.0 - xi_1);
     if ((abs(kl) < 0.5)) {
-        float _e29 = ms_gtr_ln_1p_over_x((f_6 * b1_1.y));
-        float ell_over_l = ((f_6 * b2_1.x) * _e29);
+        float _e29 = ms_gtr_ln_1p_over_x((f_5 * b1_1.y));
+        float ell_over_l = ((f_5 * b2_1.x) * _e29);
         float _e35 = ms_gtr_ln_1p_over_x((xi_1 * b1_1.w));
         float rest_over_l = ((xi_1 * b2_1.y) * _e35);
         float ell = (ell_over_l * l);
@@ -2895,21 +2846,21 @@ float ms_gtr_tan2_(uint table_28, float xi_1) {
         float _e44 = ms_gtr_expm1_over_x(ell);
         return (((exp(ell) * (rest_over_l / ell_over_l)) * _e42) / _e44);
     }
-    float _e54 = ms_gtr_ln_pos_sum(f_6, b1_1.y, ((f_6 * b1_1.x) + xi_1), (b0_1.w > 0.5), b2_1.z);
-    float ell_1 = (_e54 / k_15);
-    float _e64 = ms_gtr_ln_pos_sum(xi_1, b1_1.w, (f_6 + (xi_1 * b1_1.z)), (b2_1.w > 0.5), b2_1.z);
-    float rest_1 = (-(_e64) / k_15);
+    float _e54 = ms_gtr_ln_pos_sum(f_5, b1_1.y, ((f_5 * b1_1.x) + xi_1), (b0_1.w > 0.5), b2_1.z);
+    float ell_1 = (_e54 / k_14);
+    float _e64 = ms_gtr_ln_pos_sum(xi_1, b1_1.w, (f_5 + (xi_1 * b1_1.z)), (b2_1.w > 0.5), b2_1.z);
+    float rest_1 = (-(_e64) / k_14);
     float _e68 = ms_expm1_(rest_1);
     float _e70 = ms_expm1_(ell_1);
     return ((exp(ell_1) * _e68) / _e70);
 }
 
-MsSample ms_gtr_sample_dcos(vec2 alpha_72, vec2 u_27, uint table_29) {
+MsSample ms_gtr_sample_dcos(vec2 alpha_65, vec2 u_27, uint table_26) {
     float r = 0.0;
     vec3 v_11 = vec3(0.0);
-    bool _e3 = ms_gtr_is_ggx(table_29);
+    bool _e3 = ms_gtr_is_ggx(table_26);
     if (_e3) {
-        MsSample _e4 = ms_ggx_sample_dcos(alpha_72, u_27);
+        MsSample _e4 = ms_ggx_sample_dcos(alpha_65, u_27);
         return _e4;
     }
     float xi_2 = u_27.x;
@@ -2922,7 +2873,7 @@ MsSample ms_gtr_sample_dcos(vec2 alpha_72, vec2 u_27, uint table_29) {
             r = _e12;
         } else {
             if ((xi_2 == xi_2)) {
-                float _e14 = ms_gtr_tan2_(table_29, xi_2);
+                float _e14 = ms_gtr_tan2_(table_26, xi_2);
                 r = sqrt(_e14);
             }
         }
@@ -2939,7 +2890,7 @@ MsSample ms_gtr_sample_dcos(vec2 alpha_72, vec2 u_27, uint table_29) {
     }
     vec3 _e36 = v_11;
     vec3 _e37 = ms_unit_normal(_e36);
-    float _e38 = ms_gtr_pdf_dcos(_e37, alpha_72, table_29);
+    float _e38 = ms_gtr_pdf_dcos(_e37, alpha_65, table_26);
     return MsSample(_e37, _e38);
 }
 
@@ -2953,33 +2904,33 @@ vec2 ms_gtr_column(float v_12, uint n_8) {
     float frac = 0.0;
     bool local_35 = false;
     bool local_36 = false;
-    uint b_12 = floatBitsToUint(v_12);
-    uint e_11 = ((b_12 >> 23u) & 255u);
+    uint b_10 = floatBitsToUint(v_12);
+    uint e_9 = ((b_10 >> 23u) & 255u);
     frac = (v_12 * float(n_8));
-    if ((e_11 > 0u)) {
-        local_35 = (e_11 < 255u);
+    if ((e_9 > 0u)) {
+        local_35 = (e_9 < 255u);
     } else {
         local_35 = false;
     }
     bool _e19 = local_35;
     if (_e19) {
-        local_36 = ((150u - e_11) < 64u);
+        local_36 = ((150u - e_9) < 64u);
     } else {
         local_36 = false;
     }
     bool _e27 = local_36;
     if (_e27) {
-        uint shift = (150u - e_11);
-        uvec2 _e34 = ms_u32_mul_wide(((b_12 & 8388607u) | 8388608u), n_8);
+        uint shift = (150u - e_9);
+        uvec2 _e34 = ms_u32_mul_wide(((b_10 & 8388607u) | 8388608u), n_8);
         float scale = uintBitsToFloat(((127u - shift) << 23u));
         if ((shift < 32u)) {
             i_2 = ((_e34.x >> shift) | (_e34.y << (32u - shift)));
             frac = (float((_e34.x & ((1u << shift) - 1u))) * scale);
         } else {
-            uint s_21 = (shift - 32u);
-            i_2 = (_e34.y >> s_21);
-            uint hi_6 = (_e34.y & ((1u << s_21) - 1u));
-            frac = (((float(hi_6) * 4294967300.0) + float(_e34.x)) * scale);
+            uint s_17 = (shift - 32u);
+            i_2 = (_e34.y >> s_17);
+            uint hi_5 = (_e34.y & ((1u << s_17) - 1u));
+            frac = (((float(hi_5) * 4294967300.0) + float(_e34.x)) * scale);
         }
     }
     uint _e74 = i_2;
@@ -2994,7 +2945,7 @@ vec2 ms_gtr_column(float v_12, uint n_8) {
     return vec2(float(_e87), _e89);
 }
 
-vec2 ms_gtr_radius(uint table_30, uint at_1, uint n_9, float k_9, float v_13, float keep_1) {
+vec2 ms_gtr_radius(uint table_27, uint at_1, uint n_9, float k_9, float v_13, float keep_1) {
     uint j_1 = 0u;
     float v2_ = 0.0;
     vec2 _e6 = ms_gtr_column(v_13, n_9);
@@ -3013,34 +2964,34 @@ vec2 ms_gtr_radius(uint table_30, uint at_1, uint n_9, float k_9, float v_13, fl
     vec4 pa = _group_1_binding_0_cs[(at_1 + (2u * _e38))];
     uint _e45 = j_1;
     vec4 pb = _group_1_binding_0_cs[((at_1 + (2u * _e45)) + 1u)];
-    vec4 head_4 = _group_1_binding_0_cs[table_30];
+    vec4 head_4 = _group_1_binding_0_cs[table_27];
     float a2_2 = (head_4.y * head_4.y);
     if ((pb.w < 0.5)) {
         float _e62 = v2_;
-        float r_28 = (pa.x + (_e62 * pa.y));
+        float r_25 = (pa.x + (_e62 * pa.y));
         float _e68 = v2_;
         if ((keep_1 <= (pa.z + (pa.w * _e68)))) {
-            return vec2(r_28, 1.0);
+            return vec2(r_25, 1.0);
         }
-        float x_32 = (r_28 * r_28);
-        float t_16 = log(x_32);
-        float _e77 = ms_gtr_phi(k_9, head_4.x, a2_2, t_16, x_32);
-        float ratio_1 = exp(((_e77 - (0.5 * t_16)) - pb.x));
-        return vec2(r_28, ((keep_1 <= ratio_1) ? 1.0 : 0.0));
+        float x_30 = (r_25 * r_25);
+        float t_15 = log(x_30);
+        float _e77 = ms_gtr_phi(k_9, head_4.x, a2_2, t_15, x_30);
+        float ratio_1 = exp(((_e77 - (0.5 * t_15)) - pb.x));
+        return vec2(r_25, ((keep_1 <= ratio_1) ? 1.0 : 0.0));
     }
     float _e90 = v2_;
     float _e93 = ms_gtr_ln_1p((_e90 * pb.x));
-    float t_17 = (pa.x + (_e93 / pa.y));
-    float r_29 = exp((0.5 * t_17));
+    float t_16 = (pa.x + (_e93 / pa.y));
+    float r_26 = exp((0.5 * t_16));
     if ((keep_1 <= pa.w)) {
-        return vec2(r_29, 1.0);
+        return vec2(r_26, 1.0);
     }
-    float _e106 = ms_gtr_phi(k_9, head_4.x, a2_2, t_17, (r_29 * r_29));
-    float ratio_2 = exp((_e106 - (pa.z + (pa.y * (t_17 - pa.x)))));
-    return vec2(r_29, ((keep_1 <= ratio_2) ? 1.0 : 0.0));
+    float _e106 = ms_gtr_phi(k_9, head_4.x, a2_2, t_16, (r_26 * r_26));
+    float ratio_2 = exp((_e106 - (pa.z + (pa.y * (t_16 - pa.x)))));
+    return vec2(r_26, ((keep_1 <= ratio_2) ? 1.0 : 0.0));
 }
 
-vec3 ms_gtr_sample_wm(vec3 w_41, vec2 u_28, uint table_31) {
+vec3 ms_gtr_sample_wm(vec3 w_41, vec2 u_28, uint table_28) {
     float sign_2 = 1.0;
     float cp_3 = 1.0;
     float sp_3 = 0.0;
@@ -3053,8 +3004,8 @@ vec3 ms_gtr_sample_wm(vec3 w_41, vec2 u_28, uint table_31) {
     int n_10 = 0;
     vec2 rr = vec2(0.0);
     vec3 v_14 = vec3(0.0);
-    vec4 head_5 = _group_1_binding_0_cs[table_31];
-    vec4 env = _group_1_binding_0_cs[(table_31 + 7u)];
+    vec4 head_5 = _group_1_binding_0_cs[table_28];
+    vec4 env = _group_1_binding_0_cs[(table_28 + 7u)];
     if ((w_41.z < 0.0)) {
         sign_2 = -1.0;
     }
@@ -3063,18 +3014,18 @@ vec3 ms_gtr_sample_wm(vec3 w_41, vec2 u_28, uint table_31) {
     float _e20 = sign_2;
     float sy_9 = (_e20 * w_41.y);
     float _e23 = sign_2;
-    float e_12 = (_e23 * w_41.z);
-    float s_22 = sqrt(((sx_10 * sx_10) + (sy_9 * sy_9)));
-    if (!(((e_12 + s_22) <= MS_F32_MAX))) {
+    float e_10 = (_e23 * w_41.z);
+    float s_18 = sqrt(((sx_10 * sx_10) + (sy_9 * sy_9)));
+    if (!(((e_10 + s_18) <= MS_F32_MAX))) {
         return vec3(uintBitsToFloat(2143289344u));
     }
-    if ((s_22 != 0.0)) {
-        cp_3 = (sx_10 / s_22);
-        sp_3 = (sy_9 / s_22);
+    if ((s_18 != 0.0)) {
+        cp_3 = (sx_10 / s_18);
+        sp_3 = (sy_9 / s_18);
     }
-    float g_2 = (s_22 * head_5.w);
-    float total_1 = (e_12 + g_2);
-    float inv_p_2 = min((total_1 / e_12), MS_F32_MAX);
+    float g_2 = (s_18 * head_5.w);
+    float total_1 = (e_10 + g_2);
+    float inv_p_2 = min((total_1 / e_10), MS_F32_MAX);
     float inv_g_1 = min((1.0 / g_2), MS_F32_MAX);
     uvec2 _e55 = ms_stream_new(u_28);
     state_6 = _e55;
@@ -3102,25 +3053,25 @@ vec3 ms_gtr_sample_wm(vec3 w_41, vec2 u_28, uint table_31) {
             }
             float _e77 = v0_1;
             float _e79 = v0_1;
-            float d_21 = ((_e77 * g_2) - ((1.0 - _e79) * e_12));
-            bool first = (d_21 < 0.0);
+            float d_14 = ((_e77 * g_2) - ((1.0 - _e79) * e_10));
+            bool first = (d_14 < 0.0);
             float _e86 = ms_stream_next(state_6);
             rr = vec2(0.0);
             if (first) {
                 float _e95 = v1_1;
-                vec2 _e96 = ms_gtr_radius(table_31, (table_31 + uint(env.x)), uint(env.y), 1.0, _e95, _e86);
+                vec2 _e96 = ms_gtr_radius(table_28, (table_28 + uint(env.x)), uint(env.y), 1.0, _e95, _e86);
                 rr = _e96;
             } else {
                 float _e103 = v1_1;
-                vec2 _e104 = ms_gtr_radius(table_31, (table_31 + uint(env.z)), uint(env.w), 1.5, _e103, _e86);
+                vec2 _e104 = ms_gtr_radius(table_28, (table_28 + uint(env.z)), uint(env.w), 1.5, _e103, _e86);
                 rr = _e104;
             }
             float _e106 = rr.y;
             if ((_e106 < 0.5)) {
                 continue;
             }
-            float r_30 = rr.x;
-            radius = r_30;
+            float r_27 = rr.x;
+            radius = r_27;
             if (first) {
                 float _e111 = v0_1;
                 float turn_1 = (_e111 * inv_p_2);
@@ -3132,12 +3083,12 @@ vec3 ms_gtr_sample_wm(vec3 w_41, vec2 u_28, uint table_31) {
                 }
                 float _e121 = ms_stream_next(state_6);
                 float _e123 = dx;
-                if (((_e121 * e_12) <= (e_12 + (s_22 * (r_30 * _e123))))) {
+                if (((_e121 * e_10) <= (e_10 + (s_18 * (r_27 * _e123))))) {
                     break;
                 }
             } else {
                 float _e128 = v0_1;
-                float omega = (((1.0 - _e128) * e_12) * inv_g_1);
+                float omega = (((1.0 - _e128) * e_10) * inv_g_1);
                 float _e133 = v0_1;
                 float plus = (2.0 * (_e133 - omega));
                 float _e137 = v0_1;
@@ -3172,15 +3123,15 @@ vec3 ms_gtr_sample_wm(vec3 w_41, vec2 u_28, uint table_31) {
     return _e187;
 }
 
-MsSample ms_gtr_sample(vec3 w_42, vec2 alpha_73, vec2 u_29, uint table_32) {
-    bool _e4 = ms_gtr_is_ggx(table_32);
+MsSample ms_gtr_sample(vec3 w_42, vec2 alpha_66, vec2 u_29, uint table_29) {
+    bool _e4 = ms_gtr_is_ggx(table_29);
     if (_e4) {
-        MsSample _e5 = ms_ggx_sample(w_42, alpha_73, u_29);
+        MsSample _e5 = ms_ggx_sample(w_42, alpha_66, u_29);
         return _e5;
     }
-    vec3 _e6 = ms_gtr_sample_wm(w_42, u_29, table_32);
+    vec3 _e6 = ms_gtr_sample_wm(w_42, u_29, table_29);
     vec3 _e7 = ms_unit(w_42);
-    float _e8 = ms_gtr_pdf(_e7, _e6, alpha_73, table_32);
+    float _e8 = ms_gtr_pdf(_e7, _e6, alpha_66, table_29);
     return MsSample(_e6, _e8);
 }
 
@@ -3193,21 +3144,21 @@ float ms_ei_ln_profile(float r_1) {
     return ((log(_e13) - y_16) - 1.14473);
 }
 
-float ms_ei_ln_d(vec3 wm_24, vec2 alpha_74) {
-    if (!((wm_24.z > 0.0))) {
-        return ((wm_24.z != wm_24.z) ? wm_24.z : -1e30);
+float ms_ei_ln_d(vec3 wm_22, vec2 alpha_67) {
+    if (!((wm_22.z > 0.0))) {
+        return ((wm_22.z != wm_22.z) ? wm_22.z : -1e30);
     }
-    float _e12 = ms_mixture_r(wm_24, alpha_74);
+    float _e12 = ms_mixture_r(wm_22, alpha_67);
     if ((_e12 == 0.0)) {
         return 1e30;
     }
     float _e16 = ms_ei_ln_profile(_e12);
-    float _e17 = ms_mixture_ln_d(_e16, wm_24, alpha_74);
+    float _e17 = ms_mixture_ln_d(_e16, wm_22, alpha_67);
     return _e17;
 }
 
-float ms_ei_d(vec3 wm_25, vec2 alpha_75) {
-    float _e2 = ms_ei_ln_d(wm_25, alpha_75);
+float ms_ei_d(vec3 wm_23, vec2 alpha_68) {
+    float _e2 = ms_ei_ln_d(wm_23, alpha_68);
     if ((_e2 >= 1e30)) {
         float _e5 = ms_inf();
         return _e5;
@@ -3215,50 +3166,45 @@ float ms_ei_d(vec3 wm_25, vec2 alpha_75) {
     return exp(_e2);
 }
 
-float ms_ei_lambda(vec3 w_43, vec2 alpha_76, uint table_33) {
-    float _e3 = ms_shape_lambda(table_33, w_43, alpha_76);
+float ms_ei_lambda(vec3 w_43, vec2 alpha_69, uint table_30) {
+    float _e3 = ms_shape_lambda(table_30, w_43, alpha_69);
     return _e3;
 }
 
-float ms_ei_g1_(vec3 w_44, vec2 alpha_77, uint table_34) {
-    float _e3 = ms_mixture_g1_(table_34, w_44, alpha_77);
+float ms_ei_g1_(vec3 w_44, vec2 alpha_70, uint table_31) {
+    float _e3 = ms_mixture_g1_(table_31, w_44, alpha_70);
     return _e3;
 }
 
-float ms_ei_g2_(vec3 wo_21, vec3 wi_21, vec2 alpha_78, uint table_35) {
-    float _e4 = ms_mixture_g2_(table_35, wo_21, wi_21, alpha_78);
+float ms_ei_g2_(vec3 wo_16, vec3 wi_16, vec2 alpha_71, uint table_32) {
+    float _e4 = ms_mixture_g2_(table_32, wo_16, wi_16, alpha_71);
     return _e4;
 }
 
-float ms_ei_g2_separable(vec3 wo_22, vec3 wi_22, vec2 alpha_79, uint table_36) {
-    float _e4 = ms_mixture_g2_separable(table_36, wo_22, wi_22, alpha_79);
-    return _e4;
-}
-
-float ms_ei_pdf(vec3 w_45, vec3 wm_26, vec2 alpha_80, uint table_37) {
-    float _e4 = ms_ei_ln_d(wm_26, alpha_80);
-    float _e5 = ms_mixture_pdf(table_37, w_45, wm_26, alpha_80, _e4);
+float ms_ei_pdf(vec3 w_45, vec3 wm_24, vec2 alpha_72, uint table_33) {
+    float _e4 = ms_ei_ln_d(wm_24, alpha_72);
+    float _e5 = ms_mixture_pdf(table_33, w_45, wm_24, alpha_72, _e4);
     return _e5;
 }
 
-float ms_ei_pdf_dcos(vec3 wm_27, vec2 alpha_81) {
-    if (!((wm_27.z > 0.0))) {
+float ms_ei_pdf_dcos(vec3 wm_25, vec2 alpha_73) {
+    if (!((wm_25.z > 0.0))) {
         return 0.0;
     }
-    float _e7 = ms_ei_d(wm_27, alpha_81);
-    return (_e7 * wm_27.z);
+    float _e7 = ms_ei_d(wm_25, alpha_73);
+    return (_e7 * wm_25.z);
 }
 
-MsSample ms_ei_sample_dcos(vec2 alpha_82, vec2 u_30, uint table_38) {
-    vec3 _e3 = ms_mixture_sample_dcos_wm(table_38, alpha_82, u_30);
-    float _e4 = ms_ei_pdf_dcos(_e3, alpha_82);
+MsSample ms_ei_sample_dcos(vec2 alpha_74, vec2 u_30, uint table_34) {
+    vec3 _e3 = ms_mixture_sample_dcos_wm(table_34, alpha_74, u_30);
+    float _e4 = ms_ei_pdf_dcos(_e3, alpha_74);
     return MsSample(_e3, _e4);
 }
 
-MsSample ms_ei_sample(vec3 w_46, vec2 alpha_83, vec2 u_31, uint table_39) {
-    vec3 _e4 = ms_mixture_sample_wm(table_39, w_46, alpha_83, u_31);
+MsSample ms_ei_sample(vec3 w_46, vec2 alpha_75, vec2 u_31, uint table_35) {
+    vec3 _e4 = ms_mixture_sample_wm(table_35, w_46, alpha_75, u_31);
     vec3 _e5 = ms_unit(w_46);
-    float _e6 = ms_ei_pdf(_e5, _e4, alpha_83, table_39);
+    float _e6 = ms_ei_pdf(_e5, _e4, alpha_75, table_35);
     return MsSample(_e4, _e6);
 }
 
@@ -3267,21 +3213,21 @@ float ms_erfc_ln_profile(float r_2) {
     return (log((_e1 / (3.5449078 * r_2))) - (r_2 * r_2));
 }
 
-float ms_erfc_ln_d(vec3 wm_28, vec2 alpha_84) {
-    if (!((wm_28.z > 0.0))) {
-        return ((wm_28.z != wm_28.z) ? wm_28.z : -1e30);
+float ms_erfc_ln_d(vec3 wm_26, vec2 alpha_76) {
+    if (!((wm_26.z > 0.0))) {
+        return ((wm_26.z != wm_26.z) ? wm_26.z : -1e30);
     }
-    float _e12 = ms_mixture_r(wm_28, alpha_84);
+    float _e12 = ms_mixture_r(wm_26, alpha_76);
     if ((_e12 == 0.0)) {
         return 1e30;
     }
     float _e16 = ms_erfc_ln_profile(_e12);
-    float _e17 = ms_mixture_ln_d(_e16, wm_28, alpha_84);
+    float _e17 = ms_mixture_ln_d(_e16, wm_26, alpha_76);
     return _e17;
 }
 
-float ms_erfc_d(vec3 wm_29, vec2 alpha_85) {
-    float _e2 = ms_erfc_ln_d(wm_29, alpha_85);
+float ms_erfc_d(vec3 wm_27, vec2 alpha_77) {
+    float _e2 = ms_erfc_ln_d(wm_27, alpha_77);
     if ((_e2 >= 1e30)) {
         float _e5 = ms_inf();
         return _e5;
@@ -3289,50 +3235,45 @@ float ms_erfc_d(vec3 wm_29, vec2 alpha_85) {
     return exp(_e2);
 }
 
-float ms_erfc_lambda(vec3 w_47, vec2 alpha_86, uint table_40) {
-    float _e3 = ms_shape_lambda(table_40, w_47, alpha_86);
+float ms_erfc_lambda(vec3 w_47, vec2 alpha_78, uint table_36) {
+    float _e3 = ms_shape_lambda(table_36, w_47, alpha_78);
     return _e3;
 }
 
-float ms_erfc_g1_(vec3 w_48, vec2 alpha_87, uint table_41) {
-    float _e3 = ms_mixture_g1_(table_41, w_48, alpha_87);
+float ms_erfc_g1_(vec3 w_48, vec2 alpha_79, uint table_37) {
+    float _e3 = ms_mixture_g1_(table_37, w_48, alpha_79);
     return _e3;
 }
 
-float ms_erfc_g2_(vec3 wo_23, vec3 wi_23, vec2 alpha_88, uint table_42) {
-    float _e4 = ms_mixture_g2_(table_42, wo_23, wi_23, alpha_88);
+float ms_erfc_g2_(vec3 wo_17, vec3 wi_17, vec2 alpha_80, uint table_38) {
+    float _e4 = ms_mixture_g2_(table_38, wo_17, wi_17, alpha_80);
     return _e4;
 }
 
-float ms_erfc_g2_separable(vec3 wo_24, vec3 wi_24, vec2 alpha_89, uint table_43) {
-    float _e4 = ms_mixture_g2_separable(table_43, wo_24, wi_24, alpha_89);
-    return _e4;
-}
-
-float ms_erfc_pdf(vec3 w_49, vec3 wm_30, vec2 alpha_90, uint table_44) {
-    float _e4 = ms_erfc_ln_d(wm_30, alpha_90);
-    float _e5 = ms_mixture_pdf(table_44, w_49, wm_30, alpha_90, _e4);
+float ms_erfc_pdf(vec3 w_49, vec3 wm_28, vec2 alpha_81, uint table_39) {
+    float _e4 = ms_erfc_ln_d(wm_28, alpha_81);
+    float _e5 = ms_mixture_pdf(table_39, w_49, wm_28, alpha_81, _e4);
     return _e5;
 }
 
-float ms_erfc_pdf_dcos(vec3 wm_31, vec2 alpha_91) {
-    if (!((wm_31.z > 0.0))) {
+float ms_erfc_pdf_dcos(vec3 wm_29, vec2 alpha_82) {
+    if (!((wm_29.z > 0.0))) {
         return 0.0;
     }
-    float _e7 = ms_erfc_d(wm_31, alpha_91);
-    return (_e7 * wm_31.z);
+    float _e7 = ms_erfc_d(wm_29, alpha_82);
+    return (_e7 * wm_29.z);
 }
 
-MsSample ms_erfc_sample_dcos(vec2 alpha_92, vec2 u_32, uint table_45) {
-    vec3 _e3 = ms_mixture_sample_dcos_wm(table_45, alpha_92, u_32);
-    float _e4 = ms_erfc_pdf_dcos(_e3, alpha_92);
+MsSample ms_erfc_sample_dcos(vec2 alpha_83, vec2 u_32, uint table_40) {
+    vec3 _e3 = ms_mixture_sample_dcos_wm(table_40, alpha_83, u_32);
+    float _e4 = ms_erfc_pdf_dcos(_e3, alpha_83);
     return MsSample(_e3, _e4);
 }
 
-MsSample ms_erfc_sample(vec3 w_50, vec2 alpha_93, vec2 u_33, uint table_46) {
-    vec3 _e4 = ms_mixture_sample_wm(table_46, w_50, alpha_93, u_33);
+MsSample ms_erfc_sample(vec3 w_50, vec2 alpha_84, vec2 u_33, uint table_41) {
+    vec3 _e4 = ms_mixture_sample_wm(table_41, w_50, alpha_84, u_33);
     vec3 _e5 = ms_unit(w_50);
-    float _e6 = ms_erfc_pdf(_e5, _e4, alpha_93, table_46);
+    float _e6 = ms_erfc_pdf(_e5, _e4, alpha_84, table_41);
     return MsSample(_e4, _e6);
 }
 
@@ -3342,21 +3283,21 @@ float ms_k0_ln_profile(float r_3) {
     return (log(((2.0 * _e3) / MS_PI)) - z_24);
 }
 
-float ms_k0_ln_d(vec3 wm_32, vec2 alpha_94) {
-    if (!((wm_32.z > 0.0))) {
-        return ((wm_32.z != wm_32.z) ? wm_32.z : -1e30);
+float ms_k0_ln_d(vec3 wm_30, vec2 alpha_85) {
+    if (!((wm_30.z > 0.0))) {
+        return ((wm_30.z != wm_30.z) ? wm_30.z : -1e30);
     }
-    float _e12 = ms_mixture_r(wm_32, alpha_94);
+    float _e12 = ms_mixture_r(wm_30, alpha_85);
     if ((_e12 == 0.0)) {
         return 1e30;
     }
     float _e16 = ms_k0_ln_profile(_e12);
-    float _e17 = ms_mixture_ln_d(_e16, wm_32, alpha_94);
+    float _e17 = ms_mixture_ln_d(_e16, wm_30, alpha_85);
     return _e17;
 }
 
-float ms_k0_d(vec3 wm_33, vec2 alpha_95) {
-    float _e2 = ms_k0_ln_d(wm_33, alpha_95);
+float ms_k0_d(vec3 wm_31, vec2 alpha_86) {
+    float _e2 = ms_k0_ln_d(wm_31, alpha_86);
     if ((_e2 >= 1e30)) {
         float _e5 = ms_inf();
         return _e5;
@@ -3364,50 +3305,45 @@ float ms_k0_d(vec3 wm_33, vec2 alpha_95) {
     return exp(_e2);
 }
 
-float ms_k0_lambda(vec3 w_51, vec2 alpha_96, uint table_47) {
-    float _e3 = ms_shape_lambda(table_47, w_51, alpha_96);
+float ms_k0_lambda(vec3 w_51, vec2 alpha_87, uint table_42) {
+    float _e3 = ms_shape_lambda(table_42, w_51, alpha_87);
     return _e3;
 }
 
-float ms_k0_g1_(vec3 w_52, vec2 alpha_97, uint table_48) {
-    float _e3 = ms_mixture_g1_(table_48, w_52, alpha_97);
+float ms_k0_g1_(vec3 w_52, vec2 alpha_88, uint table_43) {
+    float _e3 = ms_mixture_g1_(table_43, w_52, alpha_88);
     return _e3;
 }
 
-float ms_k0_g2_(vec3 wo_25, vec3 wi_25, vec2 alpha_98, uint table_49) {
-    float _e4 = ms_mixture_g2_(table_49, wo_25, wi_25, alpha_98);
+float ms_k0_g2_(vec3 wo_18, vec3 wi_18, vec2 alpha_89, uint table_44) {
+    float _e4 = ms_mixture_g2_(table_44, wo_18, wi_18, alpha_89);
     return _e4;
 }
 
-float ms_k0_g2_separable(vec3 wo_26, vec3 wi_26, vec2 alpha_99, uint table_50) {
-    float _e4 = ms_mixture_g2_separable(table_50, wo_26, wi_26, alpha_99);
-    return _e4;
-}
-
-float ms_k0_pdf(vec3 w_53, vec3 wm_34, vec2 alpha_100, uint table_51) {
-    float _e4 = ms_k0_ln_d(wm_34, alpha_100);
-    float _e5 = ms_mixture_pdf(table_51, w_53, wm_34, alpha_100, _e4);
+float ms_k0_pdf(vec3 w_53, vec3 wm_32, vec2 alpha_90, uint table_45) {
+    float _e4 = ms_k0_ln_d(wm_32, alpha_90);
+    float _e5 = ms_mixture_pdf(table_45, w_53, wm_32, alpha_90, _e4);
     return _e5;
 }
 
-float ms_k0_pdf_dcos(vec3 wm_35, vec2 alpha_101) {
-    if (!((wm_35.z > 0.0))) {
+float ms_k0_pdf_dcos(vec3 wm_33, vec2 alpha_91) {
+    if (!((wm_33.z > 0.0))) {
         return 0.0;
     }
-    float _e7 = ms_k0_d(wm_35, alpha_101);
-    return (_e7 * wm_35.z);
+    float _e7 = ms_k0_d(wm_33, alpha_91);
+    return (_e7 * wm_33.z);
 }
 
-MsSample ms_k0_sample_dcos(vec2 alpha_102, vec2 u_34, uint table_52) {
-    vec3 _e3 = ms_mixture_sample_dcos_wm(table_52, alpha_102, u_34);
-    float _e4 = ms_k0_pdf_dcos(_e3, alpha_102);
+MsSample ms_k0_sample_dcos(vec2 alpha_92, vec2 u_34, uint table_46) {
+    vec3 _e3 = ms_mixture_sample_dcos_wm(table_46, alpha_92, u_34);
+    float _e4 = ms_k0_pdf_dcos(_e3, alpha_92);
     return MsSample(_e3, _e4);
 }
 
-MsSample ms_k0_sample(vec3 w_54, vec2 alpha_103, vec2 u_35, uint table_53) {
-    vec3 _e4 = ms_mixture_sample_wm(table_53, w_54, alpha_103, u_35);
+MsSample ms_k0_sample(vec3 w_54, vec2 alpha_93, vec2 u_35, uint table_47) {
+    vec3 _e4 = ms_mixture_sample_wm(table_47, w_54, alpha_93, u_35);
     vec3 _e5 = ms_unit(w_54);
-    float _e6 = ms_k0_pdf(_e5, _e4, alpha_103, table_53);
+    float _e6 = ms_k0_pdf(_e5, _e4, alpha_93, table_47);
     return MsSample(_e4, _e6);
 }
 
@@ -3420,9 +3356,9 @@ float ms_bessel_k_h(uint at_2, vec4 head, float x_16) {
     return _e24;
 }
 
-float ms_bessel_k_ln_profile(uint table_54, float x_17) {
-    float _e7 = _group_1_binding_0_cs[(table_54 + 2u)].w;
-    uint at_3 = (table_54 + uint(_e7));
+float ms_bessel_k_ln_profile(uint table_48, float x_17) {
+    float _e7 = _group_1_binding_0_cs[(table_48 + 2u)].w;
+    uint at_3 = (table_48 + uint(_e7));
     vec4 head_6 = _group_1_binding_0_cs[at_3];
     if (!((x_17 < exp2(head_6.z)))) {
         return ((x_17 != x_17) ? x_17 : -1e30);
@@ -3443,26 +3379,26 @@ float ms_bessel_k_ln_profile(uint table_54, float x_17) {
     return (_e45 - (2.0 * x_17));
 }
 
-float ms_bessel_k_ln_d(vec3 wm_36, vec2 alpha_104, uint table_55) {
-    if (!((wm_36.z > 0.0))) {
-        return ((wm_36.z != wm_36.z) ? wm_36.z : -1e30);
+float ms_bessel_k_ln_d(vec3 wm_34, vec2 alpha_94, uint table_49) {
+    if (!((wm_34.z > 0.0))) {
+        return ((wm_34.z != wm_34.z) ? wm_34.z : -1e30);
     }
-    float _e13 = ms_mixture_r(wm_36, alpha_104);
+    float _e13 = ms_mixture_r(wm_34, alpha_94);
     if ((_e13 == 0.0)) {
-        float _e19 = _group_1_binding_0_cs[table_55].x;
+        float _e19 = _group_1_binding_0_cs[table_49].x;
         float nu = (_e19 - 1.0);
         if ((nu > 0.0)) {
-            return (-(log((((MS_PI * nu) * alpha_104.x) * alpha_104.y))) - (4.0 * log(wm_36.z)));
+            return (-(log((((MS_PI * nu) * alpha_94.x) * alpha_94.y))) - (4.0 * log(wm_34.z)));
         }
         return 1e30;
     }
-    float _e38 = ms_bessel_k_ln_profile(table_55, _e13);
-    float _e39 = ms_mixture_ln_d(_e38, wm_36, alpha_104);
+    float _e38 = ms_bessel_k_ln_profile(table_49, _e13);
+    float _e39 = ms_mixture_ln_d(_e38, wm_34, alpha_94);
     return _e39;
 }
 
-float ms_bessel_k_d(vec3 wm_37, vec2 alpha_105, uint table_56) {
-    float _e3 = ms_bessel_k_ln_d(wm_37, alpha_105, table_56);
+float ms_bessel_k_d(vec3 wm_35, vec2 alpha_95, uint table_50) {
+    float _e3 = ms_bessel_k_ln_d(wm_35, alpha_95, table_50);
     if ((_e3 >= 1e30)) {
         float _e6 = ms_inf();
         return _e6;
@@ -3470,371 +3406,930 @@ float ms_bessel_k_d(vec3 wm_37, vec2 alpha_105, uint table_56) {
     return exp(_e3);
 }
 
-float ms_bessel_k_lambda(vec3 w_55, vec2 alpha_106, uint table_57) {
-    float _e3 = ms_shape_lambda(table_57, w_55, alpha_106);
+float ms_bessel_k_lambda(vec3 w_55, vec2 alpha_96, uint table_51) {
+    float _e3 = ms_shape_lambda(table_51, w_55, alpha_96);
     return _e3;
 }
 
-float ms_bessel_k_g1_(vec3 w_56, vec2 alpha_107, uint table_58) {
-    float _e3 = ms_mixture_g1_(table_58, w_56, alpha_107);
+float ms_bessel_k_g1_(vec3 w_56, vec2 alpha_97, uint table_52) {
+    float _e3 = ms_mixture_g1_(table_52, w_56, alpha_97);
     return _e3;
 }
 
-float ms_bessel_k_g2_(vec3 wo_27, vec3 wi_27, vec2 alpha_108, uint table_59) {
-    float _e4 = ms_mixture_g2_(table_59, wo_27, wi_27, alpha_108);
+float ms_bessel_k_g2_(vec3 wo_19, vec3 wi_19, vec2 alpha_98, uint table_53) {
+    float _e4 = ms_mixture_g2_(table_53, wo_19, wi_19, alpha_98);
     return _e4;
 }
 
-float ms_bessel_k_g2_separable(vec3 wo_28, vec3 wi_28, vec2 alpha_109, uint table_60) {
-    float _e4 = ms_mixture_g2_separable(table_60, wo_28, wi_28, alpha_109);
-    return _e4;
-}
-
-float ms_bessel_k_pdf(vec3 w_57, vec3 wm_38, vec2 alpha_110, uint table_61) {
-    float _e4 = ms_bessel_k_ln_d(wm_38, alpha_110, table_61);
-    float _e5 = ms_mixture_pdf(table_61, w_57, wm_38, alpha_110, _e4);
+float ms_bessel_k_pdf(vec3 w_57, vec3 wm_36, vec2 alpha_99, uint table_54) {
+    float _e4 = ms_bessel_k_ln_d(wm_36, alpha_99, table_54);
+    float _e5 = ms_mixture_pdf(table_54, w_57, wm_36, alpha_99, _e4);
     return _e5;
 }
 
-float ms_bessel_k_pdf_dcos(vec3 wm_39, vec2 alpha_111, uint table_62) {
-    if (!((wm_39.z > 0.0))) {
+float ms_bessel_k_pdf_dcos(vec3 wm_37, vec2 alpha_100, uint table_55) {
+    if (!((wm_37.z > 0.0))) {
         return 0.0;
     }
-    float _e8 = ms_bessel_k_d(wm_39, alpha_111, table_62);
-    return (_e8 * wm_39.z);
+    float _e8 = ms_bessel_k_d(wm_37, alpha_100, table_55);
+    return (_e8 * wm_37.z);
 }
 
-MsSample ms_bessel_k_sample_dcos(vec2 alpha_112, vec2 u_36, uint table_63) {
-    vec3 _e3 = ms_mixture_sample_dcos_wm(table_63, alpha_112, u_36);
-    float _e4 = ms_bessel_k_pdf_dcos(_e3, alpha_112, table_63);
+MsSample ms_bessel_k_sample_dcos(vec2 alpha_101, vec2 u_36, uint table_56) {
+    vec3 _e3 = ms_mixture_sample_dcos_wm(table_56, alpha_101, u_36);
+    float _e4 = ms_bessel_k_pdf_dcos(_e3, alpha_101, table_56);
     return MsSample(_e3, _e4);
 }
 
-MsSample ms_bessel_k_sample(vec3 w_58, vec2 alpha_113, vec2 u_37, uint table_64) {
-    vec3 _e4 = ms_mixture_sample_wm(table_64, w_58, alpha_113, u_37);
+MsSample ms_bessel_k_sample(vec3 w_58, vec2 alpha_102, vec2 u_37, uint table_57) {
+    vec3 _e4 = ms_mixture_sample_wm(table_57, w_58, alpha_102, u_37);
     vec3 _e5 = ms_unit(w_58);
-    float _e6 = ms_bessel_k_pdf(_e5, _e4, alpha_113, table_64);
+    float _e6 = ms_bessel_k_pdf(_e5, _e4, alpha_102, table_57);
     return MsSample(_e4, _e6);
 }
 
-float ms_d(MsMicrofacet mf, vec3 wm_40) {
+bool ms_door_has(uint ndf) {
+    return ((MS_DOOR_NDFS & (1u << ndf)) != 0u);
+}
+
+float ms_d(MsMicrofacet mf, vec3 wm_38) {
+    bool local_37 = false;
+    bool local_38 = false;
+    bool local_39 = false;
+    bool local_40 = false;
+    bool local_41 = false;
+    bool local_42 = false;
+    bool local_43 = false;
+    bool local_44 = false;
+    bool local_45 = false;
+    bool local_46 = false;
     if ((mf.ndf == MS_NDF_GGX)) {
-        float _e6 = ms_ggx_d(wm_40, mf.alpha);
-        return _e6;
+        bool _e8 = ms_door_has(MS_NDF_GGX);
+        local_37 = _e8;
+    } else {
+        local_37 = false;
+    }
+    bool _e10 = local_37;
+    if (_e10) {
+        float _e12 = ms_ggx_d(wm_38, mf.alpha);
+        return _e12;
     }
     if ((mf.ndf == MS_NDF_BECKMANN)) {
-        float _e11 = ms_beckmann_d(wm_40, mf.alpha);
-        return _e11;
+        bool _e19 = ms_door_has(MS_NDF_BECKMANN);
+        local_38 = _e19;
+    } else {
+        local_38 = false;
+    }
+    bool _e21 = local_38;
+    if (_e21) {
+        float _e23 = ms_beckmann_d(wm_38, mf.alpha);
+        return _e23;
     }
     if ((mf.ndf == MS_NDF_DOUBLE_GGX)) {
-        float _e16 = ms_double_ggx_d(wm_40, mf.alpha);
-        return _e16;
+        bool _e30 = ms_door_has(MS_NDF_DOUBLE_GGX);
+        local_39 = _e30;
+    } else {
+        local_39 = false;
+    }
+    bool _e32 = local_39;
+    if (_e32) {
+        float _e34 = ms_double_ggx_d(wm_38, mf.alpha);
+        return _e34;
     }
     if ((mf.ndf == MS_NDF_EXPONENTIAL)) {
-        float _e21 = ms_exponential_d(wm_40, mf.alpha);
-        return _e21;
+        bool _e41 = ms_door_has(MS_NDF_EXPONENTIAL);
+        local_40 = _e41;
+    } else {
+        local_40 = false;
+    }
+    bool _e43 = local_40;
+    if (_e43) {
+        float _e45 = ms_exponential_d(wm_38, mf.alpha);
+        return _e45;
     }
     if ((mf.ndf == MS_NDF_STUDENT_T)) {
-        float _e27 = ms_student_t_d(wm_40, mf.alpha, mf.table);
-        return _e27;
+        bool _e52 = ms_door_has(MS_NDF_STUDENT_T);
+        local_41 = _e52;
+    } else {
+        local_41 = false;
+    }
+    bool _e54 = local_41;
+    if (_e54) {
+        float _e57 = ms_student_t_d(wm_38, mf.alpha, mf.table);
+        return _e57;
     }
     if ((mf.ndf == MS_NDF_EI)) {
-        float _e32 = ms_ei_d(wm_40, mf.alpha);
-        return _e32;
+        bool _e64 = ms_door_has(MS_NDF_EI);
+        local_42 = _e64;
+    } else {
+        local_42 = false;
+    }
+    bool _e66 = local_42;
+    if (_e66) {
+        float _e68 = ms_ei_d(wm_38, mf.alpha);
+        return _e68;
     }
     if ((mf.ndf == MS_NDF_ERFC)) {
-        float _e37 = ms_erfc_d(wm_40, mf.alpha);
-        return _e37;
+        bool _e75 = ms_door_has(MS_NDF_ERFC);
+        local_43 = _e75;
+    } else {
+        local_43 = false;
+    }
+    bool _e77 = local_43;
+    if (_e77) {
+        float _e79 = ms_erfc_d(wm_38, mf.alpha);
+        return _e79;
     }
     if ((mf.ndf == MS_NDF_K0_)) {
-        float _e42 = ms_k0_d(wm_40, mf.alpha);
-        return _e42;
+        bool _e86 = ms_door_has(MS_NDF_K0_);
+        local_44 = _e86;
+    } else {
+        local_44 = false;
+    }
+    bool _e88 = local_44;
+    if (_e88) {
+        float _e90 = ms_k0_d(wm_38, mf.alpha);
+        return _e90;
     }
     if ((mf.ndf == MS_NDF_BESSEL_K)) {
-        float _e48 = ms_bessel_k_d(wm_40, mf.alpha, mf.table);
-        return _e48;
+        bool _e97 = ms_door_has(MS_NDF_BESSEL_K);
+        local_45 = _e97;
+    } else {
+        local_45 = false;
+    }
+    bool _e99 = local_45;
+    if (_e99) {
+        float _e102 = ms_bessel_k_d(wm_38, mf.alpha, mf.table);
+        return _e102;
     }
     if ((mf.ndf == MS_NDF_GTR)) {
-        float _e54 = ms_gtr_d(wm_40, mf.alpha, mf.table);
-        return _e54;
+        bool _e109 = ms_door_has(MS_NDF_GTR);
+        local_46 = _e109;
+    } else {
+        local_46 = false;
+    }
+    bool _e111 = local_46;
+    if (_e111) {
+        float _e114 = ms_gtr_d(wm_38, mf.alpha, mf.table);
+        return _e114;
     }
     return 0.0;
 }
 
 float ms_lambda(MsMicrofacet mf_1, vec3 w_59) {
+    bool local_47 = false;
+    bool local_48 = false;
+    bool local_49 = false;
+    bool local_50 = false;
+    bool local_51 = false;
+    bool local_52 = false;
+    bool local_53 = false;
+    bool local_54 = false;
+    bool local_55 = false;
+    bool local_56 = false;
     if ((mf_1.ndf == MS_NDF_GGX)) {
-        float _e6 = ms_ggx_lambda(w_59, mf_1.alpha);
-        return _e6;
+        bool _e8 = ms_door_has(MS_NDF_GGX);
+        local_47 = _e8;
+    } else {
+        local_47 = false;
+    }
+    bool _e10 = local_47;
+    if (_e10) {
+        float _e12 = ms_ggx_lambda(w_59, mf_1.alpha);
+        return _e12;
     }
     if ((mf_1.ndf == MS_NDF_BECKMANN)) {
-        float _e11 = ms_beckmann_lambda(w_59, mf_1.alpha);
-        return _e11;
+        bool _e19 = ms_door_has(MS_NDF_BECKMANN);
+        local_48 = _e19;
+    } else {
+        local_48 = false;
+    }
+    bool _e21 = local_48;
+    if (_e21) {
+        float _e23 = ms_beckmann_lambda(w_59, mf_1.alpha);
+        return _e23;
     }
     if ((mf_1.ndf == MS_NDF_DOUBLE_GGX)) {
-        float _e16 = ms_double_ggx_lambda(w_59, mf_1.alpha);
-        return _e16;
+        bool _e30 = ms_door_has(MS_NDF_DOUBLE_GGX);
+        local_49 = _e30;
+    } else {
+        local_49 = false;
+    }
+    bool _e32 = local_49;
+    if (_e32) {
+        float _e34 = ms_double_ggx_lambda(w_59, mf_1.alpha);
+        return _e34;
     }
     if ((mf_1.ndf == MS_NDF_EXPONENTIAL)) {
-        float _e21 = ms_exponential_lambda(w_59, mf_1.alpha);
-        return _e21;
+        bool _e41 = ms_door_has(MS_NDF_EXPONENTIAL);
+        local_50 = _e41;
+    } else {
+        local_50 = false;
     }
-    if ((mf_1.ndf == MS_NDF_STUDENT_T)) {
-        float _e27 = ms_student_t_lambda(w_59, mf_1.alpha, mf_1.table);
-        return _e27;
-    }
-    if ((mf_1.ndf == MS_NDF_EI)) {
-        float _e33 = ms_ei_lambda(w_59, mf_1.alpha, mf_1.table);
-        return _e33;
-    }
-    if ((mf_1.ndf == MS_NDF_ERFC)) {
-        float _e39 = ms_erfc_lambda(w_59, mf_1.alpha, mf_1.table);
-        return _e39;
-    }
-    if ((mf_1.ndf == MS_NDF_K0_)) {
-        float _e45 = ms_k0_lambda(w_59, mf_1.alpha, mf_1.table);
+    bool _e43 = local_50;
+    if (_e43) {
+        float _e45 = ms_exponential_lambda(w_59, mf_1.alpha);
         return _e45;
     }
+    if ((mf_1.ndf == MS_NDF_STUDENT_T)) {
+        bool _e52 = ms_door_has(MS_NDF_STUDENT_T);
+        local_51 = _e52;
+    } else {
+        local_51 = false;
+    }
+    bool _e54 = local_51;
+    if (_e54) {
+        float _e57 = ms_student_t_lambda(w_59, mf_1.alpha, mf_1.table);
+        return _e57;
+    }
+    if ((mf_1.ndf == MS_NDF_EI)) {
+        bool _e64 = ms_door_has(MS_NDF_EI);
+        local_52 = _e64;
+    } else {
+        local_52 = false;
+    }
+    bool _e66 = local_52;
+    if (_e66) {
+        float _e69 = ms_ei_lambda(w_59, mf_1.alpha, mf_1.table);
+        return _e69;
+    }
+    if ((mf_1.ndf == MS_NDF_ERFC)) {
+        bool _e76 = ms_door_has(MS_NDF_ERFC);
+        local_53 = _e76;
+    } else {
+        local_53 = false;
+    }
+    bool _e78 = local_53;
+    if (_e78) {
+        float _e81 = ms_erfc_lambda(w_59, mf_1.alpha, mf_1.table);
+        return _e81;
+    }
+    if ((mf_1.ndf == MS_NDF_K0_)) {
+        bool _e88 = ms_door_has(MS_NDF_K0_);
+        local_54 = _e88;
+    } else {
+        local_54 = false;
+    }
+    bool _e90 = local_54;
+    if (_e90) {
+        float _e93 = ms_k0_lambda(w_59, mf_1.alpha, mf_1.table);
+        return _e93;
+    }
     if ((mf_1.ndf == MS_NDF_BESSEL_K)) {
-        float _e51 = ms_bessel_k_lambda(w_59, mf_1.alpha, mf_1.table);
-        return _e51;
+        bool _e100 = ms_door_has(MS_NDF_BESSEL_K);
+        local_55 = _e100;
+    } else {
+        local_55 = false;
+    }
+    bool _e102 = local_55;
+    if (_e102) {
+        float _e105 = ms_bessel_k_lambda(w_59, mf_1.alpha, mf_1.table);
+        return _e105;
     }
     if ((mf_1.ndf == MS_NDF_GTR)) {
-        float _e57 = ms_gtr_lambda(w_59, mf_1.alpha, mf_1.table);
-        return _e57;
+        bool _e112 = ms_door_has(MS_NDF_GTR);
+        local_56 = _e112;
+    } else {
+        local_56 = false;
+    }
+    bool _e114 = local_56;
+    if (_e114) {
+        float _e117 = ms_gtr_lambda(w_59, mf_1.alpha, mf_1.table);
+        return _e117;
     }
     return 0.0;
 }
 
 float ms_g1_(MsMicrofacet mf_2, vec3 w_60) {
+    bool local_57 = false;
+    bool local_58 = false;
+    bool local_59 = false;
+    bool local_60 = false;
+    bool local_61 = false;
+    bool local_62 = false;
+    bool local_63 = false;
+    bool local_64 = false;
+    bool local_65 = false;
+    bool local_66 = false;
     if ((mf_2.ndf == MS_NDF_GGX)) {
-        float _e6 = ms_ggx_g1_(w_60, mf_2.alpha);
-        return _e6;
+        bool _e8 = ms_door_has(MS_NDF_GGX);
+        local_57 = _e8;
+    } else {
+        local_57 = false;
     }
-    if ((mf_2.ndf == MS_NDF_BECKMANN)) {
-        float _e11 = ms_beckmann_g1_(w_60, mf_2.alpha);
-        return _e11;
-    }
-    if ((mf_2.ndf == MS_NDF_DOUBLE_GGX)) {
-        float _e16 = ms_double_ggx_g1_(w_60, mf_2.alpha);
-        return _e16;
-    }
-    if ((mf_2.ndf == MS_NDF_EXPONENTIAL)) {
-        float _e21 = ms_exponential_g1_(w_60, mf_2.alpha);
-        return _e21;
-    }
-    if ((mf_2.ndf == MS_NDF_STUDENT_T)) {
-        float _e27 = ms_student_t_g1_(w_60, mf_2.alpha, mf_2.table);
-        return _e27;
-    }
-    if ((mf_2.ndf == MS_NDF_EI)) {
-        float _e33 = ms_ei_g1_(w_60, mf_2.alpha, mf_2.table);
-        return _e33;
-    }
-    if ((mf_2.ndf == MS_NDF_ERFC)) {
-        float _e39 = ms_erfc_g1_(w_60, mf_2.alpha, mf_2.table);
-        return _e39;
-    }
-    if ((mf_2.ndf == MS_NDF_K0_)) {
-        float _e45 = ms_k0_g1_(w_60, mf_2.alpha, mf_2.table);
-        return _e45;
-    }
-    if ((mf_2.ndf == MS_NDF_BESSEL_K)) {
-        float _e51 = ms_bessel_k_g1_(w_60, mf_2.alpha, mf_2.table);
-        return _e51;
-    }
-    if ((mf_2.ndf == MS_NDF_GTR)) {
-        float _e57 = ms_gtr_g1_(w_60, mf_2.alpha, mf_2.table);
-        return _e57;
-    }
-    return 0.0;
-}
-
-float ms_g2_(MsMicrofacet mf_3, vec3 wo_29, vec3 wi_29) {
-    if ((mf_3.ndf == MS_NDF_GGX)) {
-        float _e7 = ms_ggx_g2_(wo_29, wi_29, mf_3.alpha);
-        return _e7;
-    }
-    if ((mf_3.ndf == MS_NDF_BECKMANN)) {
-        float _e12 = ms_beckmann_g2_(wo_29, wi_29, mf_3.alpha);
+    bool _e10 = local_57;
+    if (_e10) {
+        float _e12 = ms_ggx_g1_(w_60, mf_2.alpha);
         return _e12;
     }
-    if ((mf_3.ndf == MS_NDF_DOUBLE_GGX)) {
-        float _e17 = ms_double_ggx_g2_(wo_29, wi_29, mf_3.alpha);
-        return _e17;
+    if ((mf_2.ndf == MS_NDF_BECKMANN)) {
+        bool _e19 = ms_door_has(MS_NDF_BECKMANN);
+        local_58 = _e19;
+    } else {
+        local_58 = false;
     }
-    if ((mf_3.ndf == MS_NDF_EXPONENTIAL)) {
-        float _e22 = ms_exponential_g2_(wo_29, wi_29, mf_3.alpha);
-        return _e22;
+    bool _e21 = local_58;
+    if (_e21) {
+        float _e23 = ms_beckmann_g1_(w_60, mf_2.alpha);
+        return _e23;
     }
-    if ((mf_3.ndf == MS_NDF_STUDENT_T)) {
-        float _e28 = ms_student_t_g2_(wo_29, wi_29, mf_3.alpha, mf_3.table);
-        return _e28;
+    if ((mf_2.ndf == MS_NDF_DOUBLE_GGX)) {
+        bool _e30 = ms_door_has(MS_NDF_DOUBLE_GGX);
+        local_59 = _e30;
+    } else {
+        local_59 = false;
     }
-    if ((mf_3.ndf == MS_NDF_EI)) {
-        float _e34 = ms_ei_g2_(wo_29, wi_29, mf_3.alpha, mf_3.table);
+    bool _e32 = local_59;
+    if (_e32) {
+        float _e34 = ms_double_ggx_g1_(w_60, mf_2.alpha);
         return _e34;
     }
-    if ((mf_3.ndf == MS_NDF_ERFC)) {
-        float _e40 = ms_erfc_g2_(wo_29, wi_29, mf_3.alpha, mf_3.table);
-        return _e40;
+    if ((mf_2.ndf == MS_NDF_EXPONENTIAL)) {
+        bool _e41 = ms_door_has(MS_NDF_EXPONENTIAL);
+        local_60 = _e41;
+    } else {
+        local_60 = false;
     }
-    if ((mf_3.ndf == MS_NDF_K0_)) {
-        float _e46 = ms_k0_g2_(wo_29, wi_29, mf_3.alpha, mf_3.table);
-        return _e46;
+    bool _e43 = local_60;
+    if (_e43) {
+        float _e45 = ms_exponential_g1_(w_60, mf_2.alpha);
+        return _e45;
     }
-    if ((mf_3.ndf == MS_NDF_BESSEL_K)) {
-        float _e52 = ms_bessel_k_g2_(wo_29, wi_29, mf_3.alpha, mf_3.table);
-        return _e52;
+    if ((mf_2.ndf == MS_NDF_STUDENT_T)) {
+        bool _e52 = ms_door_has(MS_NDF_STUDENT_T);
+        local_61 = _e52;
+    } else {
+        local_61 = false;
     }
-    if ((mf_3.ndf == MS_NDF_GTR)) {
-        float _e58 = ms_gtr_g2_(wo_29, wi_29, mf_3.alpha, mf_3.table);
-        return _e58;
+    bool _e54 = local_61;
+    if (_e54) {
+        float _e57 = ms_student_t_g1_(w_60, mf_2.alpha, mf_2.table);
+        return _e57;
+    }
+    if ((mf_2.ndf == MS_NDF_EI)) {
+        bool _e64 = ms_door_has(MS_NDF_EI);
+        local_62 = _e64;
+    } else {
+        local_62 = false;
+    }
+    bool _e66 = local_62;
+    if (_e66) {
+        float _e69 = ms_ei_g1_(w_60, mf_2.alpha, mf_2.table);
+        return _e69;
+    }
+    if ((mf_2.ndf == MS_NDF_ERFC)) {
+        bool _e76 = ms_door_has(MS_NDF_ERFC);
+        local_63 = _e76;
+    } else {
+        local_63 = false;
+    }
+    bool _e78 = local_63;
+    if (_e78) {
+        float _e81 = ms_erfc_g1_(w_60, mf_2.alpha, mf_2.table);
+        return _e81;
+    }
+    if ((mf_2.ndf == MS_NDF_K0_)) {
+        bool _e88 = ms_door_has(MS_NDF_K0_);
+        local_64 = _e88;
+    } else {
+        local_64 = false;
+    }
+    bool _e90 = local_64;
+    if (_e90) {
+        float _e93 = ms_k0_g1_(w_60, mf_2.alpha, mf_2.table);
+        return _e93;
+    }
+    if ((mf_2.ndf == MS_NDF_BESSEL_K)) {
+        bool _e100 = ms_door_has(MS_NDF_BESSEL_K);
+        local_65 = _e100;
+    } else {
+        local_65 = false;
+    }
+    bool _e102 = local_65;
+    if (_e102) {
+        float _e105 = ms_bessel_k_g1_(w_60, mf_2.alpha, mf_2.table);
+        return _e105;
+    }
+    if ((mf_2.ndf == MS_NDF_GTR)) {
+        bool _e112 = ms_door_has(MS_NDF_GTR);
+        local_66 = _e112;
+    } else {
+        local_66 = false;
+    }
+    bool _e114 = local_66;
+    if (_e114) {
+        float _e117 = ms_gtr_g1_(w_60, mf_2.alpha, mf_2.table);
+        return _e117;
     }
     return 0.0;
 }
 
-float ms_g2_separable(MsMicrofacet mf_4, vec3 wo_30, vec3 wi_30) {
-    float _e3 = ms_g1_(mf_4, wo_30);
-    float _e4 = ms_g1_(mf_4, wi_30);
+float ms_g2_(MsMicrofacet mf_3, vec3 wo_20, vec3 wi_20) {
+    bool local_67 = false;
+    bool local_68 = false;
+    bool local_69 = false;
+    bool local_70 = false;
+    bool local_71 = false;
+    bool local_72 = false;
+    bool local_73 = false;
+    bool local_74 = false;
+    bool local_75 = false;
+    bool local_76 = false;
+    if ((mf_3.ndf == MS_NDF_GGX)) {
+        bool _e9 = ms_door_has(MS_NDF_GGX);
+        local_67 = _e9;
+    } else {
+        local_67 = false;
+    }
+    bool _e11 = local_67;
+    if (_e11) {
+        float _e13 = ms_ggx_g2_(wo_20, wi_20, mf_3.alpha);
+        return _e13;
+    }
+    if ((mf_3.ndf == MS_NDF_BECKMANN)) {
+        bool _e20 = ms_door_has(MS_NDF_BECKMANN);
+        local_68 = _e20;
+    } else {
+        local_68 = false;
+    }
+    bool _e22 = local_68;
+    if (_e22) {
+        float _e24 = ms_beckmann_g2_(wo_20, wi_20, mf_3.alpha);
+        return _e24;
+    }
+    if ((mf_3.ndf == MS_NDF_DOUBLE_GGX)) {
+        bool _e31 = ms_door_has(MS_NDF_DOUBLE_GGX);
+        local_69 = _e31;
+    } else {
+        local_69 = false;
+    }
+    bool _e33 = local_69;
+    if (_e33) {
+        float _e35 = ms_double_ggx_g2_(wo_20, wi_20, mf_3.alpha);
+        return _e35;
+    }
+    if ((mf_3.ndf == MS_NDF_EXPONENTIAL)) {
+        bool _e42 = ms_door_has(MS_NDF_EXPONENTIAL);
+        local_70 = _e42;
+    } else {
+        local_70 = false;
+    }
+    bool _e44 = local_70;
+    if (_e44) {
+        float _e46 = ms_exponential_g2_(wo_20, wi_20, mf_3.alpha);
+        return _e46;
+    }
+    if ((mf_3.ndf == MS_NDF_STUDENT_T)) {
+        bool _e53 = ms_door_has(MS_NDF_STUDENT_T);
+        local_71 = _e53;
+    } else {
+        local_71 = false;
+    }
+    bool _e55 = local_71;
+    if (_e55) {
+        float _e58 = ms_student_t_g2_(wo_20, wi_20, mf_3.alpha, mf_3.table);
+        return _e58;
+    }
+    if ((mf_3.ndf == MS_NDF_EI)) {
+        bool _e65 = ms_door_has(MS_NDF_EI);
+        local_72 = _e65;
+    } else {
+        local_72 = false;
+    }
+    bool _e67 = local_72;
+    if (_e67) {
+        float _e70 = ms_ei_g2_(wo_20, wi_20, mf_3.alpha, mf_3.table);
+        return _e70;
+    }
+    if ((mf_3.ndf == MS_NDF_ERFC)) {
+        bool _e77 = ms_door_has(MS_NDF_ERFC);
+        local_73 = _e77;
+    } else {
+        local_73 = false;
+    }
+    bool _e79 = local_73;
+    if (_e79) {
+        float _e82 = ms_erfc_g2_(wo_20, wi_20, mf_3.alpha, mf_3.table);
+        return _e82;
+    }
+    if ((mf_3.ndf == MS_NDF_K0_)) {
+        bool _e89 = ms_door_has(MS_NDF_K0_);
+        local_74 = _e89;
+    } else {
+        local_74 = false;
+    }
+    bool _e91 = local_74;
+    if (_e91) {
+        float _e94 = ms_k0_g2_(wo_20, wi_20, mf_3.alpha, mf_3.table);
+        return _e94;
+    }
+    if ((mf_3.ndf == MS_NDF_BESSEL_K)) {
+        bool _e101 = ms_door_has(MS_NDF_BESSEL_K);
+        local_75 = _e101;
+    } else {
+        local_75 = false;
+    }
+    bool _e103 = local_75;
+    if (_e103) {
+        float _e106 = ms_bessel_k_g2_(wo_20, wi_20, mf_3.alpha, mf_3.table);
+        return _e106;
+    }
+    if ((mf_3.ndf == MS_NDF_GTR)) {
+        bool _e113 = ms_door_has(MS_NDF_GTR);
+        local_76 = _e113;
+    } else {
+        local_76 = false;
+    }
+    bool _e115 = local_76;
+    if (_e115) {
+        float _e118 = ms_gtr_g2_(wo_20, wi_20, mf_3.alpha, mf_3.table);
+        return _e118;
+    }
+    return 0.0;
+}
+
+float ms_g2_separable(MsMicrofacet mf_4, vec3 wo_21, vec3 wi_21) {
+    float _e3 = ms_g1_(mf_4, wo_21);
+    float _e4 = ms_g1_(mf_4, wi_21);
     return (_e3 * _e4);
 }
 
-float ms_pdf(MsMicrofacet mf_5, vec3 w_61, vec3 wm_41) {
+float ms_pdf(MsMicrofacet mf_5, vec3 w_61, vec3 wm_39) {
+    bool local_77 = false;
+    bool local_78 = false;
+    bool local_79 = false;
+    bool local_80 = false;
+    bool local_81 = false;
+    bool local_82 = false;
+    bool local_83 = false;
+    bool local_84 = false;
+    bool local_85 = false;
+    bool local_86 = false;
     if ((mf_5.ndf == MS_NDF_GGX)) {
-        float _e7 = ms_ggx_pdf(w_61, wm_41, mf_5.alpha);
-        return _e7;
+        bool _e9 = ms_door_has(MS_NDF_GGX);
+        local_77 = _e9;
+    } else {
+        local_77 = false;
+    }
+    bool _e11 = local_77;
+    if (_e11) {
+        float _e13 = ms_ggx_pdf(w_61, wm_39, mf_5.alpha);
+        return _e13;
     }
     if ((mf_5.ndf == MS_NDF_BECKMANN)) {
-        float _e12 = ms_beckmann_pdf(w_61, wm_41, mf_5.alpha);
-        return _e12;
+        bool _e20 = ms_door_has(MS_NDF_BECKMANN);
+        local_78 = _e20;
+    } else {
+        local_78 = false;
+    }
+    bool _e22 = local_78;
+    if (_e22) {
+        float _e24 = ms_beckmann_pdf(w_61, wm_39, mf_5.alpha);
+        return _e24;
     }
     if ((mf_5.ndf == MS_NDF_DOUBLE_GGX)) {
-        float _e17 = ms_double_ggx_pdf(w_61, wm_41, mf_5.alpha);
-        return _e17;
+        bool _e31 = ms_door_has(MS_NDF_DOUBLE_GGX);
+        local_79 = _e31;
+    } else {
+        local_79 = false;
+    }
+    bool _e33 = local_79;
+    if (_e33) {
+        float _e35 = ms_double_ggx_pdf(w_61, wm_39, mf_5.alpha);
+        return _e35;
     }
     if ((mf_5.ndf == MS_NDF_EXPONENTIAL)) {
-        float _e22 = ms_exponential_pdf(w_61, wm_41, mf_5.alpha);
-        return _e22;
+        bool _e42 = ms_door_has(MS_NDF_EXPONENTIAL);
+        local_80 = _e42;
+    } else {
+        local_80 = false;
     }
-    if ((mf_5.ndf == MS_NDF_STUDENT_T)) {
-        float _e28 = ms_student_t_pdf(w_61, wm_41, mf_5.alpha, mf_5.table);
-        return _e28;
-    }
-    if ((mf_5.ndf == MS_NDF_EI)) {
-        float _e34 = ms_ei_pdf(w_61, wm_41, mf_5.alpha, mf_5.table);
-        return _e34;
-    }
-    if ((mf_5.ndf == MS_NDF_ERFC)) {
-        float _e40 = ms_erfc_pdf(w_61, wm_41, mf_5.alpha, mf_5.table);
-        return _e40;
-    }
-    if ((mf_5.ndf == MS_NDF_K0_)) {
-        float _e46 = ms_k0_pdf(w_61, wm_41, mf_5.alpha, mf_5.table);
+    bool _e44 = local_80;
+    if (_e44) {
+        float _e46 = ms_exponential_pdf(w_61, wm_39, mf_5.alpha);
         return _e46;
     }
+    if ((mf_5.ndf == MS_NDF_STUDENT_T)) {
+        bool _e53 = ms_door_has(MS_NDF_STUDENT_T);
+        local_81 = _e53;
+    } else {
+        local_81 = false;
+    }
+    bool _e55 = local_81;
+    if (_e55) {
+        float _e58 = ms_student_t_pdf(w_61, wm_39, mf_5.alpha, mf_5.table);
+        return _e58;
+    }
+    if ((mf_5.ndf == MS_NDF_EI)) {
+        bool _e65 = ms_door_has(MS_NDF_EI);
+        local_82 = _e65;
+    } else {
+        local_82 = false;
+    }
+    bool _e67 = local_82;
+    if (_e67) {
+        float _e70 = ms_ei_pdf(w_61, wm_39, mf_5.alpha, mf_5.table);
+        return _e70;
+    }
+    if ((mf_5.ndf == MS_NDF_ERFC)) {
+        bool _e77 = ms_door_has(MS_NDF_ERFC);
+        local_83 = _e77;
+    } else {
+        local_83 = false;
+    }
+    bool _e79 = local_83;
+    if (_e79) {
+        float _e82 = ms_erfc_pdf(w_61, wm_39, mf_5.alpha, mf_5.table);
+        return _e82;
+    }
+    if ((mf_5.ndf == MS_NDF_K0_)) {
+        bool _e89 = ms_door_has(MS_NDF_K0_);
+        local_84 = _e89;
+    } else {
+        local_84 = false;
+    }
+    bool _e91 = local_84;
+    if (_e91) {
+        float _e94 = ms_k0_pdf(w_61, wm_39, mf_5.alpha, mf_5.table);
+        return _e94;
+    }
     if ((mf_5.ndf == MS_NDF_BESSEL_K)) {
-        float _e52 = ms_bessel_k_pdf(w_61, wm_41, mf_5.alpha, mf_5.table);
-        return _e52;
+        bool _e101 = ms_door_has(MS_NDF_BESSEL_K);
+        local_85 = _e101;
+    } else {
+        local_85 = false;
+    }
+    bool _e103 = local_85;
+    if (_e103) {
+        float _e106 = ms_bessel_k_pdf(w_61, wm_39, mf_5.alpha, mf_5.table);
+        return _e106;
     }
     if ((mf_5.ndf == MS_NDF_GTR)) {
-        float _e58 = ms_gtr_pdf(w_61, wm_41, mf_5.alpha, mf_5.table);
-        return _e58;
+        bool _e113 = ms_door_has(MS_NDF_GTR);
+        local_86 = _e113;
+    } else {
+        local_86 = false;
+    }
+    bool _e115 = local_86;
+    if (_e115) {
+        float _e118 = ms_gtr_pdf(w_61, wm_39, mf_5.alpha, mf_5.table);
+        return _e118;
     }
     return 0.0;
 }
 
-float ms_pdf_dcos(MsMicrofacet mf_6, vec3 wm_42) {
-    if (!((wm_42.z > 0.0))) {
+float ms_pdf_dcos(MsMicrofacet mf_6, vec3 wm_40) {
+    if (!((wm_40.z > 0.0))) {
         return 0.0;
     }
-    float _e7 = ms_d(mf_6, wm_42);
-    return (_e7 * wm_42.z);
+    float _e7 = ms_d(mf_6, wm_40);
+    return (_e7 * wm_40.z);
 }
 
 MsSample ms_sample(MsMicrofacet mf_7, vec3 w_62, vec2 u_38) {
+    bool local_87 = false;
+    bool local_88 = false;
+    bool local_89 = false;
+    bool local_90 = false;
+    bool local_91 = false;
+    bool local_92 = false;
+    bool local_93 = false;
+    bool local_94 = false;
+    bool local_95 = false;
+    bool local_96 = false;
     if ((mf_7.ndf == MS_NDF_GGX)) {
-        MsSample _e7 = ms_ggx_sample(w_62, mf_7.alpha, u_38);
-        return _e7;
+        bool _e9 = ms_door_has(MS_NDF_GGX);
+        local_87 = _e9;
+    } else {
+        local_87 = false;
+    }
+    bool _e11 = local_87;
+    if (_e11) {
+        MsSample _e13 = ms_ggx_sample(w_62, mf_7.alpha, u_38);
+        return _e13;
     }
     if ((mf_7.ndf == MS_NDF_BECKMANN)) {
-        MsSample _e12 = ms_beckmann_sample(w_62, mf_7.alpha, u_38);
-        return _e12;
+        bool _e20 = ms_door_has(MS_NDF_BECKMANN);
+        local_88 = _e20;
+    } else {
+        local_88 = false;
+    }
+    bool _e22 = local_88;
+    if (_e22) {
+        MsSample _e24 = ms_beckmann_sample(w_62, mf_7.alpha, u_38);
+        return _e24;
     }
     if ((mf_7.ndf == MS_NDF_DOUBLE_GGX)) {
-        MsSample _e17 = ms_double_ggx_sample(w_62, mf_7.alpha, u_38);
-        return _e17;
+        bool _e31 = ms_door_has(MS_NDF_DOUBLE_GGX);
+        local_89 = _e31;
+    } else {
+        local_89 = false;
+    }
+    bool _e33 = local_89;
+    if (_e33) {
+        MsSample _e35 = ms_double_ggx_sample(w_62, mf_7.alpha, u_38);
+        return _e35;
     }
     if ((mf_7.ndf == MS_NDF_EXPONENTIAL)) {
-        MsSample _e22 = ms_exponential_sample(w_62, mf_7.alpha, u_38);
-        return _e22;
+        bool _e42 = ms_door_has(MS_NDF_EXPONENTIAL);
+        local_90 = _e42;
+    } else {
+        local_90 = false;
     }
-    if ((mf_7.ndf == MS_NDF_STUDENT_T)) {
-        MsSample _e28 = ms_student_t_sample(w_62, mf_7.alpha, u_38, mf_7.table);
-        return _e28;
-    }
-    if ((mf_7.ndf == MS_NDF_EI)) {
-        MsSample _e34 = ms_ei_sample(w_62, mf_7.alpha, u_38, mf_7.table);
-        return _e34;
-    }
-    if ((mf_7.ndf == MS_NDF_ERFC)) {
-        MsSample _e40 = ms_erfc_sample(w_62, mf_7.alpha, u_38, mf_7.table);
-        return _e40;
-    }
-    if ((mf_7.ndf == MS_NDF_K0_)) {
-        MsSample _e46 = ms_k0_sample(w_62, mf_7.alpha, u_38, mf_7.table);
+    bool _e44 = local_90;
+    if (_e44) {
+        MsSample _e46 = ms_exponential_sample(w_62, mf_7.alpha, u_38);
         return _e46;
     }
+    if ((mf_7.ndf == MS_NDF_STUDENT_T)) {
+        bool _e53 = ms_door_has(MS_NDF_STUDENT_T);
+        local_91 = _e53;
+    } else {
+        local_91 = false;
+    }
+    bool _e55 = local_91;
+    if (_e55) {
+        MsSample _e58 = ms_student_t_sample(w_62, mf_7.alpha, u_38, mf_7.table);
+        return _e58;
+    }
+    if ((mf_7.ndf == MS_NDF_EI)) {
+        bool _e65 = ms_door_has(MS_NDF_EI);
+        local_92 = _e65;
+    } else {
+        local_92 = false;
+    }
+    bool _e67 = local_92;
+    if (_e67) {
+        MsSample _e70 = ms_ei_sample(w_62, mf_7.alpha, u_38, mf_7.table);
+        return _e70;
+    }
+    if ((mf_7.ndf == MS_NDF_ERFC)) {
+        bool _e77 = ms_door_has(MS_NDF_ERFC);
+        local_93 = _e77;
+    } else {
+        local_93 = false;
+    }
+    bool _e79 = local_93;
+    if (_e79) {
+        MsSample _e82 = ms_erfc_sample(w_62, mf_7.alpha, u_38, mf_7.table);
+        return _e82;
+    }
+    if ((mf_7.ndf == MS_NDF_K0_)) {
+        bool _e89 = ms_door_has(MS_NDF_K0_);
+        local_94 = _e89;
+    } else {
+        local_94 = false;
+    }
+    bool _e91 = local_94;
+    if (_e91) {
+        MsSample _e94 = ms_k0_sample(w_62, mf_7.alpha, u_38, mf_7.table);
+        return _e94;
+    }
     if ((mf_7.ndf == MS_NDF_BESSEL_K)) {
-        MsSample _e52 = ms_bessel_k_sample(w_62, mf_7.alpha, u_38, mf_7.table);
-        return _e52;
+        bool _e101 = ms_door_has(MS_NDF_BESSEL_K);
+        local_95 = _e101;
+    } else {
+        local_95 = false;
+    }
+    bool _e103 = local_95;
+    if (_e103) {
+        MsSample _e106 = ms_bessel_k_sample(w_62, mf_7.alpha, u_38, mf_7.table);
+        return _e106;
     }
     if ((mf_7.ndf == MS_NDF_GTR)) {
-        MsSample _e58 = ms_gtr_sample(w_62, mf_7.alpha, u_38, mf_7.table);
-        return _e58;
+        bool _e113 = ms_door_has(MS_NDF_GTR);
+        local_96 = _e113;
+    } else {
+        local_96 = false;
+    }
+    bool _e115 = local_96;
+    if (_e115) {
+        MsSample _e118 = ms_gtr_sample(w_62, mf_7.alpha, u_38, mf_7.table);
+        return _e118;
     }
     return MsSample(vec3(0.0, 0.0, 1.0), 0.0);
 }
 
 MsSample ms_sample_dcos(MsMicrofacet mf_8, vec2 u_39) {
+    bool local_97 = false;
+    bool local_98 = false;
+    bool local_99 = false;
+    bool local_100 = false;
+    bool local_101 = false;
+    bool local_102 = false;
+    bool local_103 = false;
+    bool local_104 = false;
+    bool local_105 = false;
+    bool local_106 = false;
     if ((mf_8.ndf == MS_NDF_GGX)) {
-        MsSample _e6 = ms_ggx_sample_dcos(mf_8.alpha, u_39);
-        return _e6;
+        bool _e8 = ms_door_has(MS_NDF_GGX);
+        local_97 = _e8;
+    } else {
+        local_97 = false;
+    }
+    bool _e10 = local_97;
+    if (_e10) {
+        MsSample _e12 = ms_ggx_sample_dcos(mf_8.alpha, u_39);
+        return _e12;
     }
     if ((mf_8.ndf == MS_NDF_BECKMANN)) {
-        MsSample _e11 = ms_beckmann_sample_dcos(mf_8.alpha, u_39);
-        return _e11;
+        bool _e19 = ms_door_has(MS_NDF_BECKMANN);
+        local_98 = _e19;
+    } else {
+        local_98 = false;
+    }
+    bool _e21 = local_98;
+    if (_e21) {
+        MsSample _e23 = ms_beckmann_sample_dcos(mf_8.alpha, u_39);
+        return _e23;
     }
     if ((mf_8.ndf == MS_NDF_DOUBLE_GGX)) {
-        MsSample _e16 = ms_double_ggx_sample_dcos(mf_8.alpha, u_39);
-        return _e16;
+        bool _e30 = ms_door_has(MS_NDF_DOUBLE_GGX);
+        local_99 = _e30;
+    } else {
+        local_99 = false;
+    }
+    bool _e32 = local_99;
+    if (_e32) {
+        MsSample _e34 = ms_double_ggx_sample_dcos(mf_8.alpha, u_39);
+        return _e34;
     }
     if ((mf_8.ndf == MS_NDF_EXPONENTIAL)) {
-        MsSample _e21 = ms_exponential_sample_dcos(mf_8.alpha, u_39);
-        return _e21;
+        bool _e41 = ms_door_has(MS_NDF_EXPONENTIAL);
+        local_100 = _e41;
+    } else {
+        local_100 = false;
     }
-    if ((mf_8.ndf == MS_NDF_STUDENT_T)) {
-        MsSample _e27 = ms_student_t_sample_dcos(mf_8.alpha, u_39, mf_8.table);
-        return _e27;
-    }
-    if ((mf_8.ndf == MS_NDF_EI)) {
-        MsSample _e33 = ms_ei_sample_dcos(mf_8.alpha, u_39, mf_8.table);
-        return _e33;
-    }
-    if ((mf_8.ndf == MS_NDF_ERFC)) {
-        MsSample _e39 = ms_erfc_sample_dcos(mf_8.alpha, u_39, mf_8.table);
-        return _e39;
-    }
-    if ((mf_8.ndf == MS_NDF_K0_)) {
-        MsSample _e45 = ms_k0_sample_dcos(mf_8.alpha, u_39, mf_8.table);
+    bool _e43 = local_100;
+    if (_e43) {
+        MsSample _e45 = ms_exponential_sample_dcos(mf_8.alpha, u_39);
         return _e45;
     }
+    if ((mf_8.ndf == MS_NDF_STUDENT_T)) {
+        bool _e52 = ms_door_has(MS_NDF_STUDENT_T);
+        local_101 = _e52;
+    } else {
+        local_101 = false;
+    }
+    bool _e54 = local_101;
+    if (_e54) {
+        MsSample _e57 = ms_student_t_sample_dcos(mf_8.alpha, u_39, mf_8.table);
+        return _e57;
+    }
+    if ((mf_8.ndf == MS_NDF_EI)) {
+        bool _e64 = ms_door_has(MS_NDF_EI);
+        local_102 = _e64;
+    } else {
+        local_102 = false;
+    }
+    bool _e66 = local_102;
+    if (_e66) {
+        MsSample _e69 = ms_ei_sample_dcos(mf_8.alpha, u_39, mf_8.table);
+        return _e69;
+    }
+    if ((mf_8.ndf == MS_NDF_ERFC)) {
+        bool _e76 = ms_door_has(MS_NDF_ERFC);
+        local_103 = _e76;
+    } else {
+        local_103 = false;
+    }
+    bool _e78 = local_103;
+    if (_e78) {
+        MsSample _e81 = ms_erfc_sample_dcos(mf_8.alpha, u_39, mf_8.table);
+        return _e81;
+    }
+    if ((mf_8.ndf == MS_NDF_K0_)) {
+        bool _e88 = ms_door_has(MS_NDF_K0_);
+        local_104 = _e88;
+    } else {
+        local_104 = false;
+    }
+    bool _e90 = local_104;
+    if (_e90) {
+        MsSample _e93 = ms_k0_sample_dcos(mf_8.alpha, u_39, mf_8.table);
+        return _e93;
+    }
     if ((mf_8.ndf == MS_NDF_BESSEL_K)) {
-        MsSample _e51 = ms_bessel_k_sample_dcos(mf_8.alpha, u_39, mf_8.table);
-        return _e51;
+        bool _e100 = ms_door_has(MS_NDF_BESSEL_K);
+        local_105 = _e100;
+    } else {
+        local_105 = false;
+    }
+    bool _e102 = local_105;
+    if (_e102) {
+        MsSample _e105 = ms_bessel_k_sample_dcos(mf_8.alpha, u_39, mf_8.table);
+        return _e105;
     }
     if ((mf_8.ndf == MS_NDF_GTR)) {
-        MsSample _e57 = ms_gtr_sample_dcos(mf_8.alpha, u_39, mf_8.table);
-        return _e57;
+        bool _e112 = ms_door_has(MS_NDF_GTR);
+        local_106 = _e112;
+    } else {
+        local_106 = false;
+    }
+    bool _e114 = local_106;
+    if (_e114) {
+        MsSample _e117 = ms_gtr_sample_dcos(mf_8.alpha, u_39, mf_8.table);
+        return _e117;
     }
     return MsSample(vec3(0.0, 0.0, 1.0), 0.0);
 }
@@ -3848,138 +4343,138 @@ bool ms_on_horizon(float z_5) {
 }
 
 bool ms_usable(float v_15) {
-    bool local_37 = false;
+    bool local_107 = false;
     if ((v_15 >= 1.1754944e-20)) {
-        local_37 = (v_15 <= 3.4028235e38);
+        local_107 = (v_15 <= 3.4028235e38);
     } else {
-        local_37 = false;
+        local_107 = false;
     }
-    bool _e8 = local_37;
+    bool _e8 = local_107;
     return _e8;
 }
 
-float ms_masking_g2_(MsMicrofacet mf_10, uint masking, vec3 wo_31, vec3 wi_31) {
+float ms_masking_g2_(MsMicrofacet mf_10, uint masking, vec3 wo_22, vec3 wi_22) {
     if ((masking == MS_MASKING_SEPARABLE)) {
-        float _e6 = ms_g2_separable(mf_10, wo_31, wi_31);
+        float _e6 = ms_g2_separable(mf_10, wo_22, wi_22);
         return _e6;
     }
-    float _e7 = ms_g2_(mf_10, wo_31, wi_31);
+    float _e7 = ms_g2_(mf_10, wo_22, wi_22);
     return _e7;
 }
 
-float ms_reflected(MsMicrofacet mf_11, uint masking_1, vec3 wo_32, vec3 wi_32, float d_wm) {
-    float _e5 = ms_masking_g2_(mf_11, masking_1, wo_32, wi_32);
-    return ((d_wm * _e5) / (4.0 * abs((wo_32.z * wi_32.z))));
+float ms_reflected(MsMicrofacet mf_11, uint masking_1, vec3 wo_23, vec3 wi_23, float d_wm) {
+    float _e5 = ms_masking_g2_(mf_11, masking_1, wo_23, wi_23);
+    return ((d_wm * _e5) / (4.0 * abs((wo_23.z * wi_23.z))));
 }
 
 vec3 ms_weighted(vec3 fr_1, float k_10) {
     return mix((fr_1 * k_10), vec3(0.0), equal(fr_1, vec3(0.0)));
 }
 
-vec3 ms_conductor_lobe_normal(MsConductor c_8, vec3 wo_33, vec3 wi_33) {
-    bool local_38 = false;
-    bool local_39 = false;
-    bool local_40 = false;
-    bool _e3 = ms_same_hemisphere(wo_33, wi_33);
+vec3 ms_conductor_lobe_normal(MsConductor c_8, vec3 wo_24, vec3 wi_24) {
+    bool local_108 = false;
+    bool local_109 = false;
+    bool local_110 = false;
+    bool _e3 = ms_same_hemisphere(wo_24, wi_24);
     if (!(!(_e3))) {
-        bool _e9 = ms_on_horizon(wo_33.z);
-        local_38 = _e9;
+        bool _e9 = ms_on_horizon(wo_24.z);
+        local_108 = _e9;
     } else {
-        local_38 = true;
+        local_108 = true;
     }
-    bool _e11 = local_38;
+    bool _e11 = local_108;
     if (!(_e11)) {
-        bool _e16 = ms_on_horizon(wi_33.z);
-        local_39 = _e16;
+        bool _e16 = ms_on_horizon(wi_24.z);
+        local_109 = _e16;
     } else {
-        local_39 = true;
+        local_109 = true;
     }
-    bool _e18 = local_39;
+    bool _e18 = local_109;
     if (!(_e18)) {
         bool _e23 = ms_effectively_smooth(c_8.mf);
-        local_40 = _e23;
+        local_110 = _e23;
     } else {
-        local_40 = true;
+        local_110 = true;
     }
-    bool _e25 = local_40;
+    bool _e25 = local_110;
     if (_e25) {
         return vec3(0.0);
     }
-    vec3 _e28 = ms_half_vector_reflection(wo_33, wi_33);
+    vec3 _e28 = ms_half_vector_reflection(wo_24, wi_24);
     return _e28;
 }
 
-vec3 ms_conductor_eval(MsConductor c_9, vec3 wo_34, vec3 wi_34) {
-    vec3 _e3 = ms_conductor_lobe_normal(c_9, wo_34, wi_34);
+vec3 ms_conductor_eval(MsConductor c_9, vec3 wo_25, vec3 wi_25) {
+    vec3 _e3 = ms_conductor_lobe_normal(c_9, wo_25, wi_25);
     bool _e4 = ms_half_vector_ok(_e3);
     if (!(_e4)) {
         return vec3(0.0);
     }
-    float _e9 = ms_dot(wo_34, _e3);
-    float _e11 = ms_dot(wi_34, _e3);
+    float _e9 = ms_dot(wo_25, _e3);
+    float _e11 = ms_dot(wi_25, _e3);
     vec3 _e16 = ms_fresnel_eval(c_9.fresnel, (0.5 * (abs(_e9) + abs(_e11))));
     float _e20 = ms_d(c_9.mf, _e3);
-    float _e21 = ms_reflected(c_9.mf, c_9.masking, wo_34, wi_34, _e20);
+    float _e21 = ms_reflected(c_9.mf, c_9.masking, wo_25, wi_25, _e20);
     vec3 _e22 = ms_weighted(_e16, _e21);
     return _e22;
 }
 
-float ms_conductor_pdf(MsConductor c_10, vec3 wo_35, vec3 wi_35) {
-    vec3 _e3 = ms_conductor_lobe_normal(c_10, wo_35, wi_35);
+float ms_conductor_pdf(MsConductor c_10, vec3 wo_26, vec3 wi_26) {
+    vec3 _e3 = ms_conductor_lobe_normal(c_10, wo_26, wi_26);
     bool _e4 = ms_half_vector_ok(_e3);
     if (!(_e4)) {
         return 0.0;
     }
-    float _e8 = ms_pdf(c_10.mf, wo_35, _e3);
-    float _e9 = ms_dot(wo_35, _e3);
+    float _e8 = ms_pdf(c_10.mf, wo_26, _e3);
+    float _e9 = ms_dot(wo_26, _e3);
     return (_e8 / (4.0 * abs(_e9)));
 }
 
-vec4 ms_conductor_eval_pdf(MsConductor c_11, vec3 wo_36, vec3 wi_36) {
-    vec3 _e3 = ms_conductor_lobe_normal(c_11, wo_36, wi_36);
+vec4 ms_conductor_eval_pdf(MsConductor c_11, vec3 wo_27, vec3 wi_27) {
+    vec3 _e3 = ms_conductor_lobe_normal(c_11, wo_27, wi_27);
     bool _e4 = ms_half_vector_ok(_e3);
     if (!(_e4)) {
         return vec4(0.0);
     }
-    float _e8 = ms_dot(wo_36, _e3);
+    float _e8 = ms_dot(wo_27, _e3);
     float co = abs(_e8);
-    float _e11 = ms_dot(wi_36, _e3);
+    float _e11 = ms_dot(wi_27, _e3);
     vec3 _e16 = ms_fresnel_eval(c_11.fresnel, (0.5 * (co + abs(_e11))));
     float _e20 = ms_d(c_11.mf, _e3);
-    float _e21 = ms_reflected(c_11.mf, c_11.masking, wo_36, wi_36, _e20);
+    float _e21 = ms_reflected(c_11.mf, c_11.masking, wo_27, wi_27, _e20);
     vec3 _e22 = ms_weighted(_e16, _e21);
-    float _e24 = ms_pdf(c_11.mf, wo_36, _e3);
+    float _e24 = ms_pdf(c_11.mf, wo_27, _e3);
     return vec4(_e22, (_e24 / (4.0 * co)));
 }
 
-MsBsdfSample ms_conductor_sample(MsConductor c_12, vec3 wo_37, float uc, vec2 u_40) {
-    bool local_41 = false;
+MsBsdfSample ms_conductor_sample(MsConductor c_12, vec3 wo_28, float uc, vec2 u_40) {
+    bool local_111 = false;
     MsBsdfSample none = MsBsdfSample(vec3(0.0), 0.0, vec3(0.0), 0u, 1.0);
-    bool _e13 = ms_on_horizon(wo_37.z);
+    bool _e13 = ms_on_horizon(wo_28.z);
     if (_e13) {
         return none;
     }
     bool _e15 = ms_effectively_smooth(c_12.mf);
     if (_e15) {
-        vec3 wi_53 = vec3(-(wo_37.x), -(wo_37.y), wo_37.z);
-        float k_16 = (1.0 / abs(wi_53.z));
-        vec3 _e29 = ms_fresnel_eval(c_12.fresnel, abs(wo_37.z));
-        return MsBsdfSample(wi_53, 1.0, (_e29 * k_16), 3u, 1.0);
+        vec3 wi_33 = vec3(-(wo_28.x), -(wo_28.y), wo_28.z);
+        float k_15 = (1.0 / abs(wi_33.z));
+        vec3 _e29 = ms_fresnel_eval(c_12.fresnel, abs(wo_28.z));
+        return MsBsdfSample(wi_33, 1.0, (_e29 * k_15), 3u, 1.0);
     }
-    MsSample _e36 = ms_sample(c_12.mf, wo_37, u_40);
-    vec3 _e38 = ms_reflect(wo_37, _e36.wm);
-    bool _e39 = ms_same_hemisphere(wo_37, _e38);
+    MsSample _e36 = ms_sample(c_12.mf, wo_28, u_40);
+    vec3 _e38 = ms_reflect(wo_28, _e36.wm);
+    bool _e39 = ms_same_hemisphere(wo_28, _e38);
     if (!(!(_e39))) {
         bool _e45 = ms_on_horizon(_e38.z);
-        local_41 = _e45;
+        local_111 = _e45;
     } else {
-        local_41 = true;
+        local_111 = true;
     }
-    bool _e47 = local_41;
+    bool _e47 = local_111;
     if (_e47) {
         return none;
     }
-    float _e49 = ms_dot(wo_37, _e36.wm);
+    float _e49 = ms_dot(wo_28, _e36.wm);
     float co_1 = abs(_e49);
     float pdf = (_e36.pdf / (4.0 * co_1));
     bool _e55 = ms_usable(pdf);
@@ -3992,7 +4487,7 @@ MsBsdfSample ms_conductor_sample(MsConductor c_12, vec3 wo_37, float uc, vec2 u_
     if (!(_e62)) {
         return none;
     }
-    float _e66 = ms_reflected(c_12.mf, c_12.masking, wo_37, _e38, _e61);
+    float _e66 = ms_reflected(c_12.mf, c_12.masking, wo_28, _e38, _e61);
     vec3 _e67 = ms_weighted(_e58, _e66);
     if (!(all(lessThanEqual(_e67, vec3(3.4028235e38))))) {
         return none;
@@ -4001,79 +4496,79 @@ MsBsdfSample ms_conductor_sample(MsConductor c_12, vec3 wo_37, float uc, vec2 u_
 }
 
 bool ms_dielectric_smooth(MsDielectric d_1) {
-    bool local_42 = false;
+    bool local_112 = false;
     if (!((d_1.eta == 1.0))) {
         bool _e8 = ms_effectively_smooth(d_1.mf);
-        local_42 = _e8;
+        local_112 = _e8;
     } else {
-        local_42 = true;
+        local_112 = true;
     }
-    bool _e10 = local_42;
+    bool _e10 = local_112;
     return _e10;
 }
 
-float ms_dielectric_g2_(MsDielectric d_2, vec3 wo_38, vec3 wi_37) {
-    float _e5 = ms_masking_g2_(d_2.mf, d_2.masking, wo_38, wi_37);
+float ms_dielectric_g2_(MsDielectric d_2, vec3 wo_29, vec3 wi_28) {
+    float _e5 = ms_masking_g2_(d_2.mf, d_2.masking, wo_29, wi_28);
     return _e5;
 }
 
-vec4 ms_dielectric_half(MsDielectric d_3, vec3 wo_39, vec3 wi_38) {
-    bool local_43 = false;
-    vec3 wm_43 = vec3(0.0);
+vec4 ms_dielectric_half(MsDielectric d_3, vec3 wo_30, vec3 wi_29) {
+    bool local_113 = false;
+    vec3 wm_41 = vec3(0.0);
     float etap_4 = 1.0;
-    bool local_44 = false;
+    bool local_114 = false;
     vec4 none_1 = vec4(0.0);
-    float co_2 = wo_39.z;
-    float ci_1 = wi_38.z;
+    float co_2 = wo_30.z;
+    float ci_1 = wi_29.z;
     bool _e7 = ms_on_horizon(co_2);
     if (!(_e7)) {
         bool _e11 = ms_on_horizon(ci_1);
-        local_43 = _e11;
+        local_113 = _e11;
     } else {
-        local_43 = true;
+        local_113 = true;
     }
-    bool _e13 = local_43;
+    bool _e13 = local_113;
     if (_e13) {
         return none_1;
     }
     if (((co_2 * ci_1) > 0.0)) {
-        vec3 _e20 = ms_half_vector_reflection(wo_39, wi_38);
-        wm_43 = _e20;
+        vec3 _e20 = ms_half_vector_reflection(wo_30, wi_29);
+        wm_41 = _e20;
     } else {
-        vec4 _e22 = ms_half_vector_refraction(wo_39, wi_38, d_3.eta);
-        wm_43 = _e22.xyz;
+        vec4 _e22 = ms_half_vector_refraction(wo_30, wi_29, d_3.eta);
+        wm_41 = _e22.xyz;
         etap_4 = _e22.w;
     }
-    vec3 _e25 = wm_43;
+    vec3 _e25 = wm_41;
     bool _e26 = ms_half_vector_ok(_e25);
     if (!(_e26)) {
         return none_1;
     }
-    vec3 _e28 = wm_43;
-    float _e29 = ms_dot(_e28, wi_38);
+    vec3 _e28 = wm_41;
+    float _e29 = ms_dot(_e28, wi_29);
     if (!(((_e29 * ci_1) < 0.0))) {
-        vec3 _e36 = wm_43;
-        float _e37 = ms_dot(_e36, wo_39);
-        local_44 = ((_e37 * co_2) < 0.0);
+        vec3 _e36 = wm_41;
+        float _e37 = ms_dot(_e36, wo_30);
+        local_114 = ((_e37 * co_2) < 0.0);
     } else {
-        local_44 = true;
+        local_114 = true;
     }
-    bool _e42 = local_44;
+    bool _e42 = local_114;
     if (_e42) {
         return none_1;
     }
-    vec3 _e43 = wm_43;
+    vec3 _e43 = wm_41;
     float _e44 = etap_4;
     return vec4(_e43, _e44);
 }
 
-float ms_dielectric_f_transmission(MsDielectric d_4, vec3 wo_40, vec3 wi_39, vec3 wm_44, float d_wm_1, float etap_5, float t_5) {
+float ms_dielectric_f_transmission(MsDielectric d_4, vec3 wo_31, vec3 wi_30, vec3 wm_42, float d_wm_1, float etap_5, float t_5) {
     float f_3 = 0.0;
-    float _e7 = ms_dot(wi_39, wm_44);
-    float _e8 = ms_dot(wo_40, wm_44);
-    float _e9 = ms_refraction_denominator(wo_40, wi_39, wm_44, etap_5);
-    float _e10 = ms_dielectric_g2_(d_4, wo_40, wi_39);
-    float geometric = ((_e10 / abs((wi_39.z * wo_40.z))) * (abs((_e7 * _e8)) / (_e9 * _e9)));
+    float _e7 = ms_dot(wi_30, wm_42);
+    float _e8 = ms_dot(wo_31, wm_42);
+    float _e9 = ms_refraction_denominator(wo_31, wi_30, wm_42, etap_5);
+    float _e10 = ms_dielectric_g2_(d_4, wo_31, wi_30);
+    float geometric = ((_e10 / abs((wi_30.z * wo_31.z))) * (abs((_e7 * _e8)) / (_e9 * _e9)));
     f_3 = ((d_wm_1 * t_5) * geometric);
     if ((d_4.transport == MS_TRANSPORT_RADIANCE)) {
         float _e27 = f_3;
@@ -4083,616 +4578,173 @@ float ms_dielectric_f_transmission(MsDielectric d_4, vec3 wo_40, vec3 wi_39, vec
     return _e30;
 }
 
-float ms_dielectric_eval(MsDielectric d_5, vec3 wo_41, vec3 wi_40) {
+float ms_dielectric_eval(MsDielectric d_5, vec3 wo_32, vec3 wi_31) {
     bool _e3 = ms_dielectric_smooth(d_5);
     if (_e3) {
         return 0.0;
     }
-    vec4 _e5 = ms_dielectric_half(d_5, wo_41, wi_40);
+    vec4 _e5 = ms_dielectric_half(d_5, wo_32, wi_31);
     if ((_e5.w == 0.0)) {
         return 0.0;
     }
-    vec3 wm_45 = _e5.xyz;
-    float _e11 = ms_dot(wo_41, wm_45);
+    vec3 wm_43 = _e5.xyz;
+    float _e11 = ms_dot(wo_32, wm_43);
     float _e13 = ms_fresnel_dielectric(_e11, d_5.eta);
-    float _e15 = ms_d(d_5.mf, wm_45);
-    if (((wo_41.z * wi_40.z) > 0.0)) {
-        float _e23 = ms_reflected(d_5.mf, d_5.masking, wo_41, wi_40, _e15);
+    float _e15 = ms_d(d_5.mf, wm_43);
+    if (((wo_32.z * wi_31.z) > 0.0)) {
+        float _e23 = ms_reflected(d_5.mf, d_5.masking, wo_32, wi_31, _e15);
         return (_e13 * _e23);
     }
-    float _e28 = ms_dielectric_f_transmission(d_5, wo_41, wi_40, wm_45, _e15, _e5.w, (1.0 - _e13));
+    float _e28 = ms_dielectric_f_transmission(d_5, wo_32, wi_31, wm_43, _e15, _e5.w, (1.0 - _e13));
     return _e28;
 }
 
-float ms_dielectric_pdf(MsDielectric d_6, vec3 wo_42, vec3 wi_41) {
+float ms_dielectric_pdf(MsDielectric d_6, vec3 wo_33, vec3 wi_32) {
     bool _e3 = ms_dielectric_smooth(d_6);
     if (_e3) {
         return 0.0;
     }
-    vec4 _e5 = ms_dielectric_half(d_6, wo_42, wi_41);
+    vec4 _e5 = ms_dielectric_half(d_6, wo_33, wi_32);
     if ((_e5.w == 0.0)) {
         return 0.0;
     }
-    vec3 wm_46 = _e5.xyz;
-    float _e11 = ms_dot(wo_42, wm_46);
+    vec3 wm_44 = _e5.xyz;
+    float _e11 = ms_dot(wo_33, wm_44);
     float _e13 = ms_fresnel_dielectric(_e11, d_6.eta);
-    float _e15 = ms_pdf(d_6.mf, wo_42, wm_46);
-    if (((wo_42.z * wi_41.z) > 0.0)) {
-        float _e22 = ms_dot(wo_42, wm_46);
+    float _e15 = ms_pdf(d_6.mf, wo_33, wm_44);
+    if (((wo_33.z * wi_32.z) > 0.0)) {
+        float _e22 = ms_dot(wo_33, wm_44);
         return ((_e15 * _e13) / (4.0 * abs(_e22)));
     }
-    float _e31 = ms_jacobian_refraction(wo_42, wi_41, wm_46, _e5.w);
+    float _e31 = ms_jacobian_refraction(wo_33, wi_32, wm_44, _e5.w);
     return ((_e15 * (1.0 - _e13)) * _e31);
 }
 
-MsBsdfSample ms_dielectric_sample_smooth(MsDielectric d_7, vec3 wo_43, float uc_1) {
+MsBsdfSample ms_dielectric_sample_smooth(MsDielectric d_7, vec3 wo_34, float uc_1) {
     float f_4 = 0.0;
-    float _e5 = ms_fresnel_dielectric(wo_43.z, d_7.eta);
+    float _e5 = ms_fresnel_dielectric(wo_34.z, d_7.eta);
     if ((uc_1 < _e5)) {
-        vec3 wi_54 = vec3(-(wo_43.x), -(wo_43.y), wo_43.z);
-        return MsBsdfSample(wi_54, _e5, vec3((_e5 / abs(wi_54.z))), 3u, 1.0);
+        vec3 wi_34 = vec3(-(wo_34.x), -(wo_34.y), wo_34.z);
+        return MsBsdfSample(wi_34, _e5, vec3((_e5 / abs(wi_34.z))), 3u, 1.0);
     }
     MsBsdfSample none_2 = MsBsdfSample(vec3(0.0), 0.0, vec3(0.0), 0u, 1.0);
-    vec4 _e33 = ms_refract(wo_43, vec3(0.0, 0.0, 1.0), d_7.eta);
+    vec4 _e33 = ms_refract(wo_34, vec3(0.0, 0.0, 1.0), d_7.eta);
     if ((_e33.w == 0.0)) {
         return none_2;
     }
-    vec3 wi_55 = _e33.xyz;
-    bool _e39 = ms_on_horizon(wi_55.z);
+    vec3 wi_35 = _e33.xyz;
+    bool _e39 = ms_on_horizon(wi_35.z);
     if (_e39) {
         return none_2;
     }
-    float t_18 = (1.0 - _e5);
-    f_4 = (t_18 / abs(wi_55.z));
+    float t_17 = (1.0 - _e5);
+    f_4 = (t_17 / abs(wi_35.z));
     if ((d_7.transport == MS_TRANSPORT_RADIANCE)) {
         float _e49 = f_4;
         f_4 = (_e49 / (_e33.w * _e33.w));
     }
     float _e54 = f_4;
-    return MsBsdfSample(wi_55, t_18, vec3(_e54), 7u, _e33.w);
+    return MsBsdfSample(wi_35, t_17, vec3(_e54), 7u, _e33.w);
 }
 
-MsBsdfSample ms_dielectric_sample(MsDielectric d_8, vec3 wo_44, float uc_2, vec2 u_41) {
-    bool local_45 = false;
-    bool local_46 = false;
-    bool local_47 = false;
-    bool local_48 = false;
+MsBsdfSample ms_dielectric_sample(MsDielectric d_8, vec3 wo_35, float uc_2, vec2 u_41) {
+    bool local_115 = false;
+    bool local_116 = false;
+    bool local_117 = false;
+    bool local_118 = false;
     MsBsdfSample none_3 = MsBsdfSample(vec3(0.0), 0.0, vec3(0.0), 0u, 1.0);
-    bool _e13 = ms_on_horizon(wo_44.z);
+    bool _e13 = ms_on_horizon(wo_35.z);
     if (_e13) {
         return none_3;
     }
     bool _e14 = ms_dielectric_smooth(d_8);
     if (_e14) {
-        MsBsdfSample _e15 = ms_dielectric_sample_smooth(d_8, wo_44, uc_2);
+        MsBsdfSample _e15 = ms_dielectric_sample_smooth(d_8, wo_35, uc_2);
         return _e15;
     }
-    MsSample _e17 = ms_sample(d_8.mf, wo_44, u_41);
-    vec3 wm_47 = _e17.wm;
-    float _e19 = ms_dot(wo_44, wm_47);
+    MsSample _e17 = ms_sample(d_8.mf, wo_35, u_41);
+    vec3 wm_45 = _e17.wm;
+    float _e19 = ms_dot(wo_35, wm_45);
     float _e21 = ms_fresnel_dielectric(_e19, d_8.eta);
     if ((uc_2 < _e21)) {
-        vec3 _e23 = ms_reflect(wo_44, wm_47);
-        bool _e24 = ms_same_hemisphere(wo_44, _e23);
+        vec3 _e23 = ms_reflect(wo_35, wm_45);
+        bool _e24 = ms_same_hemisphere(wo_35, _e23);
         if (!(!(_e24))) {
             bool _e30 = ms_on_horizon(_e23.z);
-            local_45 = _e30;
+            local_115 = _e30;
         } else {
-            local_45 = true;
+            local_115 = true;
         }
-        bool _e32 = local_45;
+        bool _e32 = local_115;
         if (_e32) {
             return none_3;
         }
-        float _e34 = ms_d(d_8.mf, wm_47);
+        float _e34 = ms_d(d_8.mf, wm_45);
         bool _e35 = ms_usable(_e34);
         if (!(_e35)) {
             return none_3;
         }
-        float _e39 = ms_reflected(d_8.mf, d_8.masking, wo_44, _e23, _e34);
-        float f_7 = (_e21 * _e39);
+        float _e39 = ms_reflected(d_8.mf, d_8.masking, wo_35, _e23, _e34);
+        float f_6 = (_e21 * _e39);
         float pdf_1 = ((_e17.pdf * _e21) / (4.0 * abs(_e19)));
         bool _e47 = ms_usable(pdf_1);
         if (!(!(_e47))) {
-            local_46 = !((f_7 <= 3.4028235e38));
+            local_116 = !((f_6 <= 3.4028235e38));
         } else {
-            local_46 = true;
+            local_116 = true;
         }
-        bool _e56 = local_46;
+        bool _e56 = local_116;
         if (_e56) {
             return none_3;
         }
-        return MsBsdfSample(_e23, pdf_1, vec3(f_7), MS_SAMPLE_VALID, 1.0);
+        return MsBsdfSample(_e23, pdf_1, vec3(f_6), MS_SAMPLE_VALID, 1.0);
     }
-    vec4 _e62 = ms_refract(wo_44, wm_47, d_8.eta);
+    vec4 _e62 = ms_refract(wo_35, wm_45, d_8.eta);
     if ((_e62.w == 0.0)) {
         return none_3;
     }
-    vec3 wi_56 = _e62.xyz;
+    vec3 wi_36 = _e62.xyz;
     float etap_6 = _e62.w;
-    bool _e68 = ms_same_hemisphere(wo_44, wi_56);
+    bool _e68 = ms_same_hemisphere(wo_35, wi_36);
     if (!(_e68)) {
-        bool _e73 = ms_on_horizon(wi_56.z);
-        local_47 = _e73;
+        bool _e73 = ms_on_horizon(wi_36.z);
+        local_117 = _e73;
     } else {
-        local_47 = true;
+        local_117 = true;
     }
-    bool _e75 = local_47;
+    bool _e75 = local_117;
     if (_e75) {
         return none_3;
     }
-    float t_19 = (1.0 - _e21);
-    float _e80 = ms_jacobian_refraction(wo_44, wi_56, wm_47, etap_6);
-    float pdf_2 = ((_e17.pdf * t_19) * _e80);
-    float _e83 = ms_d(d_8.mf, wm_47);
+    float t_18 = (1.0 - _e21);
+    float _e80 = ms_jacobian_refraction(wo_35, wi_36, wm_45, etap_6);
+    float pdf_2 = ((_e17.pdf * t_18) * _e80);
+    float _e83 = ms_d(d_8.mf, wm_45);
     bool _e84 = ms_usable(_e83);
     if (!(_e84)) {
         return none_3;
     }
-    float _e86 = ms_dielectric_f_transmission(d_8, wo_44, wi_56, wm_47, _e83, etap_6, t_19);
+    float _e86 = ms_dielectric_f_transmission(d_8, wo_35, wi_36, wm_45, _e83, etap_6, t_18);
     bool _e87 = ms_usable(pdf_2);
     if (!(!(_e87))) {
-        local_48 = !((_e86 <= 3.4028235e38));
+        local_118 = !((_e86 <= 3.4028235e38));
     } else {
-        local_48 = true;
+        local_118 = true;
     }
-    bool _e96 = local_48;
+    bool _e96 = local_118;
     if (_e96) {
         return none_3;
     }
-    return MsBsdfSample(wi_56, pdf_2, vec3(_e86), 5u, etap_6);
-}
-
-MsLutTap ms_lut_tap(float x_18, uint n_11) {
-    float t_20 = clamp(((x_18 * float(n_11)) - 0.5), 0.0, float((n_11 - 1u)));
-    uint i_16 = min(uint(floor(t_20)), (n_11 - 2u));
-    return MsLutTap(i_16, (t_20 - float(i_16)));
-}
-
-MsLutTap ms_lut_tap_edges(float x_19, uint n_12) {
-    float t_21 = clamp((x_19 * float((n_12 - 1u))), 0.0, float((n_12 - 1u)));
-    uint i_17 = min(uint(floor(t_21)), (n_12 - 2u));
-    return MsLutTap(i_17, (t_21 - float(i_17)));
-}
-
-uint ms_lut_index(uint ir, uint im, uint n_mu) {
-    return ((ir * n_mu) + im);
-}
-
-float ms_lut_lerp(MsLutTap t_6, float v0_2, float v1_2) {
-    return (((1.0 - t_6.f) * v0_2) + (t_6.f * v1_2));
-}
-
-float ms_lut_bilerp(MsLutTap r_4, MsLutTap m_4, float v00_, float v10_, float v01_, float v11_) {
-    float gr = (1.0 - r_4.f);
-    float gm = (1.0 - m_4.f);
-    return (((((gr * gm) * v00_) + ((r_4.f * gm) * v10_)) + ((gr * m_4.f) * v01_)) + ((r_4.f * m_4.f) * v11_));
-}
-
-float ms_lut_roughness_coord(vec2 alpha_114, float alpha_max) {
-    return sqrt((sqrt((alpha_114.x * alpha_114.y)) / alpha_max));
-}
-
-vec3 ms_kulla_conty_f_ms(vec3 f_avg, float e_avg) {
-    return (((f_avg * f_avg) * e_avg) / (vec3(1.0) - (f_avg * (1.0 - e_avg))));
-}
-
-float ms_kulla_conty_lobe(float e_o, float e_i, float e_avg_1) {
-    float den_3 = (MS_PI * (1.0 - e_avg_1));
-    if (!((den_3 > 0.0))) {
-        return 0.0;
-    }
-    return ((max((1.0 - e_o), 0.0) * max((1.0 - e_i), 0.0)) / den_3);
-}
-
-vec3 ms_conductor_eval_kulla_conty(MsConductor c_13, vec3 wo_45, vec3 wi_42, float e_o_1, float e_i_1, float e_avg_2, vec3 f_ms) {
-    vec3 _e7 = ms_conductor_eval(c_13, wo_45, wi_42);
-    if (!(((wo_45.z * wi_42.z) > 0.0))) {
-        return _e7;
-    }
-    float _e14 = ms_kulla_conty_lobe(e_o_1, e_i_1, e_avg_2);
-    return (_e7 + (_e14 * f_ms));
-}
-
-vec3 ms_turquin_scale(float e_o_2, vec3 f0_2) {
-    return (vec3(1.0) + ((f0_2 * (1.0 - e_o_2)) / vec3(e_o_2)));
-}
-
-vec3 ms_conductor_eval_turquin(MsConductor c_14, vec3 wo_46, vec3 wi_43, float e_o_3, vec3 f0_3) {
-    vec3 _e5 = ms_conductor_eval(c_14, wo_46, wi_43);
-    vec3 _e6 = ms_turquin_scale(e_o_3, f0_3);
-    return (_e5 * _e6);
-}
-
-float ms_kulla_conty_p_ms(float e_o_4) {
-    return clamp((1.0 - e_o_4), 0.0, 1.0);
-}
-
-float ms_cosine_pdf_same_side(vec3 wo_47, vec3 wi_44) {
-    if (!(((wo_47.z * wi_44.z) > 0.0))) {
-        return 0.0;
-    }
-    return (abs(wi_44.z) / MS_PI);
-}
-
-float ms_conductor_pdf_kulla_conty(MsConductor c_15, vec3 wo_48, vec3 wi_45, float e_o_5) {
-    float _e4 = ms_kulla_conty_p_ms(e_o_5);
-    float _e7 = ms_conductor_pdf(c_15, wo_48, wi_45);
-    float _e9 = ms_cosine_pdf_same_side(wo_48, wi_45);
-    return (((1.0 - _e4) * _e7) + (_e4 * _e9));
-}
-
-vec3 ms_cosine_hemisphere(vec2 u_42) {
-    float r_31 = sqrt(u_42.x);
-    vec2 _e4 = ms_cos_sin_turn(u_42.y);
-    return vec3((r_31 * _e4.x), (r_31 * _e4.y), sqrt(max((1.0 - u_42.x), 0.0)));
-}
-
-MsBsdfSample ms_conductor_sample_kulla_conty(MsConductor c_16, vec3 wo_49, float uc_3, vec2 u_43, float e_o_6) {
-    vec3 wi_46 = vec3(0.0);
-    bool local_49 = false;
-    MsBsdfSample none_4 = MsBsdfSample(vec3(0.0), 0.0, vec3(0.0), 0u, 1.0);
-    bool _e14 = ms_on_horizon(wo_49.z);
-    if (_e14) {
-        return none_4;
-    }
-    float _e15 = ms_kulla_conty_p_ms(e_o_6);
-    if ((uc_3 < _e15)) {
-        vec3 _e18 = ms_cosine_hemisphere(u_43);
-        wi_46 = _e18;
-        if ((wo_49.z < 0.0)) {
-            float _e24 = wi_46.z;
-            wi_46.z = -(_e24);
-        }
-    } else {
-        MsBsdfSample _e30 = ms_conductor_sample(c_16, wo_49, ((uc_3 - _e15) / (1.0 - _e15)), u_43);
-        if (!(((_e30.flags & MS_SAMPLE_VALID) == 0u))) {
-            local_49 = ((_e30.flags & MS_SAMPLE_SPECULAR) != 0u);
-        } else {
-            local_49 = true;
-        }
-        bool _e45 = local_49;
-        if (_e45) {
-            return _e30;
-        }
-        wi_46 = _e30.wi;
-    }
-    vec3 _e47 = wi_46;
-    float _e48 = ms_conductor_pdf_kulla_conty(c_16, wo_49, _e47, e_o_6);
-    bool _e49 = ms_usable(_e48);
-    if (!(_e49)) {
-        return none_4;
-    }
-    vec3 _e51 = wi_46;
-    vec3 _e52 = wi_46;
-    vec3 _e53 = ms_conductor_eval(c_16, wo_49, _e52);
-    return MsBsdfSample(_e51, _e48, _e53, MS_SAMPLE_VALID, 1.0);
-}
-
-MsBsdfSample ms_kulla_conty_sample_f(MsBsdfSample s_6, vec3 wo_50, float e_o_7, float e_i_2, float e_avg_3, vec3 f_ms_1) {
-    bool local_50 = false;
-    bool local_51 = false;
-    if (!(((s_6.flags & MS_SAMPLE_VALID) == 0u))) {
-        local_50 = ((s_6.flags & MS_SAMPLE_SPECULAR) != 0u);
-    } else {
-        local_50 = true;
-    }
-    bool _e20 = local_50;
-    if (!(_e20)) {
-        local_51 = !(((wo_50.z * s_6.wi.z) > 0.0));
-    } else {
-        local_51 = true;
-    }
-    bool _e32 = local_51;
-    if (_e32) {
-        return s_6;
-    }
-    float _e36 = ms_kulla_conty_lobe(e_o_7, e_i_2, e_avg_3);
-    return MsBsdfSample(s_6.wi, s_6.pdf, (s_6.f + (_e36 * f_ms_1)), s_6.flags, s_6.eta);
-}
-
-MsBsdfSample ms_conductor_sample_turquin(MsConductor c_17, vec3 wo_51, float uc_4, vec2 u_44, float e_o_8, vec3 f0_4) {
-    bool local_52 = false;
-    MsBsdfSample _e6 = ms_conductor_sample(c_17, wo_51, uc_4, u_44);
-    if (!(((_e6.flags & MS_SAMPLE_VALID) == 0u))) {
-        local_52 = ((_e6.flags & MS_SAMPLE_SPECULAR) != 0u);
-    } else {
-        local_52 = true;
-    }
-    bool _e21 = local_52;
-    if (_e21) {
-        return _e6;
-    }
-    vec3 _e23 = ms_turquin_scale(e_o_8, f0_4);
-    vec3 f_8 = (_e6.f * _e23);
-    if (!(all(lessThanEqual(f_8, vec3(3.4028235e38))))) {
-        return MsBsdfSample(vec3(0.0), 0.0, vec3(0.0), 0u, 1.0);
-    }
-    return MsBsdfSample(_e6.wi, _e6.pdf, f_8, _e6.flags, _e6.eta);
-}
-
-uint ms_lut_index3_(uint ie, uint ir_1, uint im_1, uint n_r, uint n_mu_1) {
-    return ((((ie * n_r) + ir_1) * n_mu_1) + im_1);
-}
-
-float ms_lut_eta_coord(float eta_4) {
-    return sqrt((max((eta_4 - 1.0), 0.0) * 0.5));
-}
-
-float ms_lut_trilerp(MsLutTap e, MsLutTap r_5, MsLutTap m_5, vec4 lo_3, vec4 hi_2) {
-    float s_7 = 0.0;
-    uint b_6 = 0u;
-    vec2 we = vec2((1.0 - e.f), e.f);
-    vec2 wr = vec2((1.0 - r_5.f), r_5.f);
-    vec2 wm_48 = vec2((1.0 - m_5.f), m_5.f);
-    bool loop_init_9 = true;
-    while(true) {
-        if (!loop_init_9) {
-            uint _e59 = b_6;
-            b_6 = (_e59 + 1u);
-        }
-        loop_init_9 = false;
-        uint _e24 = b_6;
-        if ((_e24 < 8u)) {
-        } else {
-            break;
-        }
-        {
-            uint _e27 = b_6;
-            uint _e31 = b_6;
-            uint _e35 = b_6;
-            float v_20 = ((_e35 >= 4u) ? hi_2[(_e31 & 3u)] : lo_3[(_e27 & 3u)]);
-            float _e39 = s_7;
-            uint _e40 = b_6;
-            uint _e44 = b_6;
-            uint _e51 = b_6;
-            s_7 = (_e39 + (((we[(_e40 & 1u)] * wr[((_e44 >> 1u) & 1u)]) * wm_48[(_e51 >> 2u)]) * v_20));
-        }
-    }
-    float _e61 = s_7;
-    return _e61;
-}
-
-float ms_lut_bilerp_eta(MsLutTap e_1, MsLutTap r_6, vec4 v_16) {
-    float s_8 = 0.0;
-    uint b_7 = 0u;
-    vec2 we_1 = vec2((1.0 - e_1.f), e_1.f);
-    vec2 wr_1 = vec2((1.0 - r_6.f), r_6.f);
-    bool loop_init_10 = true;
-    while(true) {
-        if (!loop_init_10) {
-            uint _e35 = b_7;
-            b_7 = (_e35 + 1u);
-        }
-        loop_init_10 = false;
-        uint _e17 = b_7;
-        if ((_e17 < 4u)) {
-        } else {
-            break;
-        }
-        {
-            float _e20 = s_8;
-            uint _e21 = b_7;
-            uint _e25 = b_7;
-            uint _e30 = b_7;
-            s_8 = (_e20 + ((we_1[(_e21 & 1u)] * wr_1[(_e25 >> 1u)]) * v_16[_e30]));
-        }
-    }
-    float _e37 = s_8;
-    return _e37;
-}
-
-vec2 ms_dielectric_kulla_conty_k(float eta_5, float f_avg_1, vec2 e_avg_4) {
-    vec2 k_11 = vec2(0.0);
-    float k_out = (1.0 - f_avg_1);
-    k_11 = vec2(k_out, ((k_out * (1.0 - e_avg_4.x)) / ((eta_5 * eta_5) * (1.0 - e_avg_4.y))));
-    float _e18 = k_11.y;
-    if (!((_e18 <= 1.0))) {
-        vec2 _e22 = k_11;
-        float _e24 = k_11.y;
-        float _e28 = k_11.y;
-        k_11 = (_e22 * ((_e28 > 1.0) ? (1.0 / _e24) : 0.0));
-    }
-    vec2 _e34 = k_11;
-    return _e34;
-}
-
-float ms_dielectric_kulla_conty_lobe(MsDielectric d_9, vec3 wo_52, vec3 wi_47, float e_o_9, float e_i_3, float e_avg_i, float k_o) {
-    bool local_53 = false;
-    bool local_54 = false;
-    float f_5 = 0.0;
-    bool local_55 = false;
-    if ((abs(wo_52.z) > 0.0)) {
-        local_53 = (abs(wi_47.z) > 0.0);
-    } else {
-        local_53 = false;
-    }
-    bool _e18 = local_53;
-    if (!(_e18)) {
-        return 0.0;
-    }
-    float lost = (1.0 - e_o_9);
-    bool crossed = ((wi_47.z < 0.0) != (wo_52.z < 0.0));
-    float share = (crossed ? k_o : (1.0 - k_o));
-    float den_4 = (MS_PI * (1.0 - e_avg_i));
-    if ((den_4 > 0.0)) {
-        local_54 = (lost > 0.0);
-    } else {
-        local_54 = false;
-    }
-    bool _e44 = local_54;
-    if (!(_e44)) {
-        return 0.0;
-    }
-    f_5 = (((share * lost) * max((1.0 - e_i_3), 0.0)) / den_4);
-    if (crossed) {
-        local_55 = (d_9.transport == MS_TRANSPORT_RADIANCE);
-    } else {
-        local_55 = false;
-    }
-    bool _e61 = local_55;
-    if (_e61) {
-        float etap_7 = ((wo_52.z > 0.0) ? d_9.eta : (1.0 / d_9.eta));
-        float _e70 = f_5;
-        f_5 = (_e70 / (etap_7 * etap_7));
-    }
-    float _e73 = f_5;
-    return _e73;
-}
-
-float ms_dielectric_eval_kulla_conty(MsDielectric d_10, vec3 wo_53, vec3 wi_48, float e_o_10, float e_i_4, float e_avg_i_1, float k_o_1) {
-    float _e7 = ms_dielectric_eval(d_10, wo_53, wi_48);
-    bool _e8 = ms_dielectric_smooth(d_10);
-    if (_e8) {
-        return _e7;
-    }
-    float _e9 = ms_dielectric_kulla_conty_lobe(d_10, wo_53, wi_48, e_o_10, e_i_4, e_avg_i_1, k_o_1);
-    return (_e7 + _e9);
-}
-
-float ms_dielectric_eval_turquin(MsDielectric d_11, vec3 wo_54, vec3 wi_49, float e_o_11) {
-    bool local_56 = false;
-    float _e4 = ms_dielectric_eval(d_11, wo_54, wi_49);
-    bool _e5 = ms_dielectric_smooth(d_11);
-    if (!(_e5)) {
-        local_56 = !((e_o_11 > 0.0));
-    } else {
-        local_56 = true;
-    }
-    bool _e13 = local_56;
-    if (_e13) {
-        return _e4;
-    }
-    return (_e4 / e_o_11);
-}
-
-float ms_dielectric_kulla_conty_lobe_pdf(vec3 wo_55, vec3 wi_50, float k_o_2) {
-    bool crossed_1 = ((wi_50.z < 0.0) != (wo_55.z < 0.0));
-    float side = (crossed_1 ? k_o_2 : (1.0 - k_o_2));
-    return ((side * abs(wi_50.z)) / MS_PI);
-}
-
-float ms_dielectric_pdf_kulla_conty(MsDielectric d_12, vec3 wo_56, vec3 wi_51, float e_o_12, float k_o_3) {
-    float _e5 = ms_dielectric_pdf(d_12, wo_56, wi_51);
-    bool _e6 = ms_dielectric_smooth(d_12);
-    if (_e6) {
-        return _e5;
-    }
-    float _e7 = ms_kulla_conty_p_ms(e_o_12);
-    float _e11 = ms_dielectric_kulla_conty_lobe_pdf(wo_56, wi_51, k_o_3);
-    return (((1.0 - _e7) * _e5) + (_e7 * _e11));
-}
-
-MsBsdfSample ms_dielectric_sample_kulla_conty(MsDielectric d_13, vec3 wo_57, float uc_5, vec2 u_45, float e_o_13, float k_o_4) {
-    vec3 wi_52 = vec3(0.0);
-    bool local_57 = false;
-    bool local_58 = false;
-    MsBsdfSample none_5 = MsBsdfSample(vec3(0.0), 0.0, vec3(0.0), 0u, 1.0);
-    bool _e15 = ms_on_horizon(wo_57.z);
-    if (_e15) {
-        return none_5;
-    }
-    bool _e16 = ms_dielectric_smooth(d_13);
-    if (_e16) {
-        MsBsdfSample _e17 = ms_dielectric_sample(d_13, wo_57, uc_5, u_45);
-        return _e17;
-    }
-    float _e18 = ms_kulla_conty_p_ms(e_o_13);
-    if ((uc_5 < _e18)) {
-        bool crossed_2 = ((uc_5 / _e18) < k_o_4);
-        vec3 _e23 = ms_cosine_hemisphere(u_45);
-        wi_52 = _e23;
-        if (((wo_57.z > 0.0) == crossed_2)) {
-            float _e30 = wi_52.z;
-            wi_52.z = -(_e30);
-        }
-    } else {
-        MsBsdfSample _e38 = ms_dielectric_sample(d_13, wo_57, min(((uc_5 - _e18) / (1.0 - _e18)), 0.99999994), u_45);
-        if (!(((_e38.flags & MS_SAMPLE_VALID) == 0u))) {
-            local_57 = ((_e38.flags & MS_SAMPLE_SPECULAR) != 0u);
-        } else {
-            local_57 = true;
-        }
-        bool _e53 = local_57;
-        if (_e53) {
-            return _e38;
-        }
-        wi_52 = _e38.wi;
-    }
-    vec3 _e55 = wi_52;
-    float _e56 = ms_dielectric_pdf_kulla_conty(d_13, wo_57, _e55, e_o_13, k_o_4);
-    bool _e57 = ms_usable(_e56);
-    if (!(!(_e57))) {
-        float _e63 = wi_52.z;
-        local_58 = (_e63 == 0.0);
-    } else {
-        local_58 = true;
-    }
-    bool _e67 = local_58;
-    if (_e67) {
-        return none_5;
-    }
-    vec3 _e68 = wi_52;
-    float _e69 = ms_dielectric_eval(d_13, wo_57, _e68);
-    vec3 f_9 = vec3(_e69);
-    float _e72 = wi_52.z;
-    if (((_e72 < 0.0) != (wo_57.z < 0.0))) {
-        float etap_8 = ((wo_57.z > 0.0) ? d_13.eta : (1.0 / d_13.eta));
-        vec3 _e87 = wi_52;
-        return MsBsdfSample(_e87, _e56, f_9, 5u, etap_8);
-    }
-    vec3 _e90 = wi_52;
-    return MsBsdfSample(_e90, _e56, f_9, MS_SAMPLE_VALID, 1.0);
-}
-
-MsBsdfSample ms_dielectric_kulla_conty_sample_f(MsBsdfSample s_9, MsDielectric d_14, vec3 wo_58, float e_o_14, float e_i_5, float e_avg_i_2, float k_o_5) {
-    bool local_59 = false;
-    if (!(((s_9.flags & MS_SAMPLE_VALID) == 0u))) {
-        local_59 = ((s_9.flags & MS_SAMPLE_SPECULAR) != 0u);
-    } else {
-        local_59 = true;
-    }
-    bool _e21 = local_59;
-    if (_e21) {
-        return s_9;
-    }
-    float _e23 = ms_dielectric_kulla_conty_lobe(d_14, wo_58, s_9.wi, e_o_14, e_i_5, e_avg_i_2, k_o_5);
-    return MsBsdfSample(s_9.wi, s_9.pdf, (s_9.f + vec3(_e23)), s_9.flags, s_9.eta);
-}
-
-MsBsdfSample ms_dielectric_sample_turquin(MsDielectric d_15, vec3 wo_59, float uc_6, vec2 u_46, float e_o_15) {
-    bool local_60 = false;
-    bool local_61 = false;
-    MsBsdfSample _e5 = ms_dielectric_sample(d_15, wo_59, uc_6, u_46);
-    if (!(((_e5.flags & MS_SAMPLE_VALID) == 0u))) {
-        local_60 = ((_e5.flags & MS_SAMPLE_SPECULAR) != 0u);
-    } else {
-        local_60 = true;
-    }
-    bool _e20 = local_60;
-    if (!(_e20)) {
-        local_61 = !((e_o_15 > 0.0));
-    } else {
-        local_61 = true;
-    }
-    bool _e28 = local_61;
-    if (_e28) {
-        return _e5;
-    }
-    vec3 f_10 = (_e5.f / vec3(e_o_15));
-    if (!(all(lessThanEqual(f_10, vec3(3.4028235e38))))) {
-        return MsBsdfSample(vec3(0.0), 0.0, vec3(0.0), 0u, 1.0);
-    }
-    return MsBsdfSample(_e5.wi, _e5.pdf, f_10, _e5.flags, _e5.eta);
+    return MsBsdfSample(wi_36, pdf_2, vec3(_e86), 5u, etap_6);
 }
 
 uint ms_k_index(uvec3 id_13, uvec3 groups_13) {
-    uint i_18 = (id_13.x + ((id_13.y * groups_13.x) * 64u));
-    uint n_16 = (uint(_group_0_binding_0_cs.length()) / MS_K_IN);
-    if ((i_18 >= n_16)) {
-        return n_16;
+    uint i_16 = (id_13.x + ((id_13.y * groups_13.x) * 64u));
+    uint n_14 = (uint(_group_0_binding_0_cs.length()) / MS_K_IN);
+    if ((i_16 >= n_14)) {
+        return n_14;
     }
-    return i_18;
+    return i_16;
 }
 
 MsMicrofacet ms_k_microfacet(vec4 r0_, vec4 r2_) {

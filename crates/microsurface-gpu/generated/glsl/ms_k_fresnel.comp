@@ -47,10 +47,6 @@ struct MsDielectric {
     uint masking;
     uint transport;
 };
-struct MsLutTap {
-    uint i;
-    float f;
-};
 const float MS_PI = 3.1415927;
 const float MS_FRAC_1_PI = 0.31830987;
 const float MS_TAU = 6.2831855;
@@ -132,6 +128,7 @@ const uint MS_TRANSPORT_IMPORTANCE = 1u;
 const uint MS_SAMPLE_TRANSMISSION = 4u;
 const uint MS_K_IN = 5u;
 const uint MS_K_OUT = 2u;
+const uint MS_DOOR_NDFS = 4294967295u;
 
 layout(std430, binding = 0) readonly buffer type_7_block_0Compute { vec4 _group_0_binding_0_cs[]; };
 
@@ -145,32 +142,32 @@ float ms_inf() {
 }
 
 vec2 ms_cos_sin_turn(float v) {
-    float k_12 = roundEven((4.0 * v));
-    float r_7 = (v - (0.25 * k_12));
-    float x_20 = (MS_TAU * r_7);
-    float x2_ = (x_20 * x_20);
-    float s_10 = (x_20 * (1.0 + (x2_ * (-0.16666667 + (x2_ * (0.008333333 + (x2_ * (-0.0001984127 + (x2_ * 2.7557319e-6)))))))));
-    float c_18 = (1.0 + (x2_ * (-0.5 + (x2_ * (0.041666668 + (x2_ * (-0.0013888889 + (x2_ * (2.4801588e-5 + (x2_ * -2.755732e-7))))))))));
-    int q_2 = (int(k_12) & 3);
+    float k_11 = roundEven((4.0 * v));
+    float r_4 = (v - (0.25 * k_11));
+    float x_18 = (MS_TAU * r_4);
+    float x2_ = (x_18 * x_18);
+    float s_6 = (x_18 * (1.0 + (x2_ * (-0.16666667 + (x2_ * (0.008333333 + (x2_ * (-0.0001984127 + (x2_ * 2.7557319e-6)))))))));
+    float c_13 = (1.0 + (x2_ * (-0.5 + (x2_ * (0.041666668 + (x2_ * (-0.0013888889 + (x2_ * (2.4801588e-5 + (x2_ * -2.755732e-7))))))))));
+    int q_2 = (int(k_11) & 3);
     if ((q_2 == 0)) {
-        return vec2(c_18, s_10);
+        return vec2(c_13, s_6);
     } else {
         if ((q_2 == 1)) {
-            return vec2(-(s_10), c_18);
+            return vec2(-(s_6), c_13);
         } else {
             if ((q_2 == 2)) {
-                return vec2(-(c_18), -(s_10));
+                return vec2(-(c_13), -(s_6));
             }
         }
     }
-    return vec2(s_10, -(c_18));
+    return vec2(s_6, -(c_13));
 }
 
 vec3 ms_rescaled(vec3 a) {
     bool local = false;
-    float m_6 = max(abs(a.x), max(abs(a.y), abs(a.z)));
-    if ((m_6 > 0.0)) {
-        local = (m_6 <= 3.4028235e38);
+    float m_4 = max(abs(a.x), max(abs(a.y), abs(a.z)));
+    if ((m_4 > 0.0)) {
+        local = (m_4 <= 3.4028235e38);
     } else {
         local = false;
     }
@@ -178,7 +175,7 @@ vec3 ms_rescaled(vec3 a) {
     if (!(_e16)) {
         return a;
     }
-    return (a / vec3(m_6));
+    return (a / vec3(m_4));
 }
 
 float ms_dot(vec3 a_1, vec3 b) {
@@ -208,9 +205,9 @@ vec3 ms_unit(vec3 w) {
     if ((abs((_e1 - 1.0)) <= 1e-6)) {
         return w;
     }
-    float m_7 = max(abs(w.x), max(abs(w.y), abs(w.z)));
-    if ((m_7 > 0.0)) {
-        local_2 = (m_7 <= 3.4028235e38);
+    float m_5 = max(abs(w.x), max(abs(w.y), abs(w.z)));
+    if ((m_5 > 0.0)) {
+        local_2 = (m_5 <= 3.4028235e38);
     } else {
         local_2 = false;
     }
@@ -218,7 +215,7 @@ vec3 ms_unit(vec3 w) {
     if (!(_e22)) {
         return w;
     }
-    vec3 _e27 = ms_normalize((w * (1.0 / m_7)));
+    vec3 _e27 = ms_normalize((w * (1.0 / m_5)));
     return _e27;
 }
 
@@ -234,13 +231,13 @@ vec3 ms_unit_normal(vec3 v_1) {
     if (_e9) {
         return (v_1 * (1.0 / sqrt(_e1)));
     }
-    float m_8 = max(abs(v_1.x), max(abs(v_1.y), abs(v_1.z)));
-    if ((m_8 == 0.0)) {
+    float m_6 = max(abs(v_1.x), max(abs(v_1.y), abs(v_1.z)));
+    if ((m_6 == 0.0)) {
         return vec3(0.0, 0.0, 1.0);
     }
-    vec3 s_11 = (v_1 / vec3(m_8));
-    float _e30 = ms_dot(s_11, s_11);
-    return (s_11 * (1.0 / sqrt(_e30)));
+    vec3 s_7 = (v_1 / vec3(m_6));
+    float _e30 = ms_dot(s_7, s_7);
+    return (s_7 * (1.0 / sqrt(_e30)));
 }
 
 vec3 ms_reflect(vec3 wo, vec3 n) {
@@ -253,11 +250,11 @@ bool ms_same_hemisphere(vec3 a_3, vec3 b_1) {
 }
 
 vec3 ms_half_vector_reflection(vec3 wo_1, vec3 wi) {
-    vec3 s_12 = (wo_1 + wi);
-    if (!((max(abs(s_12.x), max(abs(s_12.y), abs(s_12.z))) > 0.0))) {
+    vec3 s_8 = (wo_1 + wi);
+    if (!((max(abs(s_8.x), max(abs(s_8.y), abs(s_8.z))) > 0.0))) {
         return vec3(0.0);
     }
-    vec3 _e16 = ms_normalize(s_12);
+    vec3 _e16 = ms_normalize(s_8);
     if ((_e16.z < 0.0)) {
         return -(_e16);
     }
@@ -290,8 +287,8 @@ vec3 ms_facing(vec3 m_1, vec3 w_1) {
     float _e21 = ms_dot(_e12, _e12);
     vec3 wu = ((_e19 * _e12) / vec3(sqrt(_e21)));
     float _e25 = ms_dot(m_1, wu);
-    float e_2 = (_e25 - 8e-7);
-    vec3 _e30 = ms_unit_normal((m_1 - (e_2 * wu)));
+    float e = (_e25 - 8e-7);
+    vec3 _e30 = ms_unit_normal((m_1 - (e * wu)));
     return _e30;
 }
 
@@ -359,8 +356,8 @@ vec4 ms_refract(vec3 wi_5, vec3 n_in, float eta_in) {
     vec3 _e22 = n_1;
     vec3 _e23 = n_1;
     float _e24 = ms_dot(t0_, _e23);
-    vec3 t_7 = (t0_ + (_e22 * -(_e24)));
-    float _e28 = ms_dot(t_7, t_7);
+    vec3 t_6 = (t0_ + (_e22 * -(_e24)));
+    float _e28 = ms_dot(t_6, t_6);
     float _e29 = eta_1;
     float _e30 = eta_1;
     float sin2_t = (_e28 / (_e29 * _e30));
@@ -371,7 +368,7 @@ vec4 ms_refract(vec3 wi_5, vec3 n_in, float eta_in) {
     float _e41 = eta_1;
     vec3 _e45 = n_1;
     float _e49 = eta_1;
-    return vec4(((t_7 * (-1.0 / _e41)) + (_e45 * -(cos_t))), _e49);
+    return vec4(((t_6 * (-1.0 / _e41)) + (_e45 * -(cos_t))), _e49);
 }
 
 float ms_fresnel_dielectric(float cos_in, float eta_in_1) {
@@ -390,31 +387,31 @@ float ms_fresnel_dielectric(float cos_in, float eta_in_1) {
         eta_2 = (1.0 / _e9);
     }
     float _e12 = cos_i_1;
-    float c_19 = min(_e12, 1.0);
+    float c_14 = min(_e12, 1.0);
     float _e15 = eta_2;
     if ((_e15 == 1.0)) {
         return 0.0;
     }
-    if ((c_19 == 0.0)) {
+    if ((c_14 == 0.0)) {
         return 1.0;
     }
     float _e24 = eta_2;
     if ((_e24 > 1e18)) {
         float _e27 = eta_2;
-        float e_3 = (1.0 / _e27);
-        float cos_t_1 = sqrt((((1.0 - e_3) * (1.0 + e_3)) + ((c_19 * e_3) * (c_19 * e_3))));
-        r_parl = ((c_19 - (e_3 * cos_t_1)) / (c_19 + (e_3 * cos_t_1)));
-        r_perp = (((e_3 * c_19) - cos_t_1) / ((e_3 * c_19) + cos_t_1));
+        float e_1 = (1.0 / _e27);
+        float cos_t_1 = sqrt((((1.0 - e_1) * (1.0 + e_1)) + ((c_14 * e_1) * (c_14 * e_1))));
+        r_parl = ((c_14 - (e_1 * cos_t_1)) / (c_14 + (e_1 * cos_t_1)));
+        r_perp = (((e_1 * c_14) - cos_t_1) / ((e_1 * c_14) + cos_t_1));
     } else {
         float _e51 = eta_2;
         if ((_e51 > 1.0)) {
             float _e54 = eta_2;
             float _e57 = eta_2;
-            ect2_ = (((_e54 - 1.0) * (_e57 + 1.0)) + (c_19 * c_19));
+            ect2_ = (((_e54 - 1.0) * (_e57 + 1.0)) + (c_14 * c_14));
         } else {
             float _e63 = eta_2;
             float _e64 = eta_2;
-            ect2_ = ((_e63 * _e64) - ((1.0 - c_19) * (1.0 + c_19)));
+            ect2_ = ((_e63 * _e64) - ((1.0 - c_14) * (1.0 + c_14)));
         }
         float _e72 = ect2_;
         if ((_e72 <= 0.0)) {
@@ -424,9 +421,9 @@ float ms_fresnel_dielectric(float cos_in, float eta_in_1) {
         float ect = sqrt(_e76);
         float _e78 = eta_2;
         float _e79 = eta_2;
-        float e2c = ((_e78 * _e79) * c_19);
+        float e2c = ((_e78 * _e79) * c_14);
         r_parl = ((e2c - ect) / (e2c + ect));
-        r_perp = ((c_19 - ect) / (c_19 + ect));
+        r_perp = ((c_14 - ect) / (c_14 + ect));
     }
     float _e88 = r_parl;
     float _e89 = r_parl;
@@ -444,48 +441,48 @@ float ms_cnorm(vec2 a_5) {
 }
 
 float ms_cnorm_ratio(vec2 a_6, vec2 b_3) {
-    float s_13 = max(max(abs(a_6.x), abs(a_6.y)), max(abs(b_3.x), abs(b_3.y)));
-    if ((s_13 == 0.0)) {
+    float s_9 = max(max(abs(a_6.x), abs(a_6.y)), max(abs(b_3.x), abs(b_3.y)));
+    if ((s_9 == 0.0)) {
         return 0.0;
     }
-    if (!((s_13 <= 3.4028235e38))) {
+    if (!((s_9 <= 3.4028235e38))) {
         float _e19 = ms_cnorm(a_6);
         float _e20 = ms_cnorm(b_3);
         return (_e19 / _e20);
     }
-    float _e24 = ms_cnorm((a_6 / vec2(s_13)));
-    float _e27 = ms_cnorm((b_3 / vec2(s_13)));
+    float _e24 = ms_cnorm((a_6 / vec2(s_9)));
+    float _e27 = ms_cnorm((b_3 / vec2(s_9)));
     return (_e24 / _e27);
 }
 
 vec2 ms_crecip(vec2 a_7) {
     if ((abs(a_7.x) >= abs(a_7.y))) {
-        float r_8 = (a_7.y / a_7.x);
-        float d_16 = (a_7.x + (a_7.y * r_8));
-        return vec2((1.0 / d_16), (-(r_8) / d_16));
+        float r_5 = (a_7.y / a_7.x);
+        float d_9 = (a_7.x + (a_7.y * r_5));
+        return vec2((1.0 / d_9), (-(r_5) / d_9));
     }
-    float r_9 = (a_7.x / a_7.y);
-    float d_17 = ((a_7.x * r_9) + a_7.y);
-    return vec2((r_9 / d_17), (-1.0 / d_17));
+    float r_6 = (a_7.x / a_7.y);
+    float d_10 = ((a_7.x * r_6) + a_7.y);
+    return vec2((r_6 / d_10), (-1.0 / d_10));
 }
 
 vec2 ms_csqrt(vec2 a_8) {
     float s_1 = 0.0;
     float _e1 = ms_cnorm(a_8);
-    float r_10 = sqrt(_e1);
-    if ((r_10 == 0.0)) {
+    float r_7 = sqrt(_e1);
+    if ((r_7 == 0.0)) {
         return vec2(0.0);
     }
-    float t_8 = sqrt(((r_10 + abs(a_8.x)) * 0.5));
+    float t_7 = sqrt(((r_7 + abs(a_8.x)) * 0.5));
     if ((a_8.x >= 0.0)) {
-        return vec2(t_8, (a_8.y / (t_8 + t_8)));
+        return vec2(t_7, (a_8.y / (t_7 + t_7)));
     }
-    s_1 = t_8;
+    s_1 = t_7;
     if ((a_8.y < 0.0)) {
-        s_1 = -(t_8);
+        s_1 = -(t_7);
     }
     float _e29 = s_1;
-    return vec2((abs(a_8.y) / (t_8 + t_8)), _e29);
+    return vec2((abs(a_8.y) / (t_7 + t_7)), _e29);
 }
 
 float ms_fresnel_conductor(float cos_in_1, float eta_3, float k_1) {
@@ -511,11 +508,11 @@ float ms_fresnel_conductor(float cos_in_1, float eta_3, float k_1) {
     if (_e25) {
         return 1.0;
     }
-    vec2 n_13 = vec2(eta_3, k_1);
+    vec2 n_11 = vec2(eta_3, k_1);
     float sin2_i = ((1.0 - cos_i_5) * (1.0 + cos_i_5));
     vec2 ci = vec2(cos_i_5, 0.0);
     if ((max(abs(eta_3), abs(k_1)) > 1e18)) {
-        vec2 _e40 = ms_crecip(n_13);
+        vec2 _e40 = ms_crecip(n_11);
         vec2 _e41 = ms_cmul(_e40, _e40);
         vec2 sin2_t_1 = (_e41 * sin2_i);
         vec2 _e49 = ms_csqrt(vec2((1.0 - sin2_t_1.x), -(sin2_t_1.y)));
@@ -525,8 +522,8 @@ float ms_fresnel_conductor(float cos_in_1, float eta_3, float k_1) {
         float _e57 = ms_cnorm_ratio((ci_m - _e49), (ci_m + _e49));
         return min((0.5 * (_e54 + _e57)), 1.0);
     }
-    vec2 _e63 = ms_cmul(n_13, n_13);
-    float _e65 = ms_cnorm(n_13);
+    vec2 _e63 = ms_cmul(n_11, n_11);
+    float _e65 = ms_cnorm(n_11);
     if ((_e65 >= 1.0)) {
         vec2 _e74 = ms_cmul(vec2((eta_3 - 1.0), k_1), vec2((eta_3 + 1.0), k_1));
         w_2 = (_e74 + vec2((cos_i_5 * cos_i_5), 0.0));
@@ -537,26 +534,26 @@ float ms_fresnel_conductor(float cos_in_1, float eta_3, float k_1) {
     vec2 _e83 = ms_crecip(_e63);
     vec2 _e84 = ms_cmul(_e82, _e83);
     vec2 _e85 = ms_csqrt(_e84);
-    vec2 n_ci = (n_13 * cos_i_5);
-    vec2 _e87 = ms_cmul(n_13, _e85);
+    vec2 n_ci = (n_11 * cos_i_5);
+    vec2 _e87 = ms_cmul(n_11, _e85);
     float _e90 = ms_cnorm_ratio((n_ci - _e85), (n_ci + _e85));
     float _e93 = ms_cnorm_ratio((ci - _e87), (ci + _e87));
     return min((0.5 * (_e90 + _e93)), 1.0);
 }
 
 float ms_fresnel_schlick(float cos_i_2, float f0_) {
-    float m_9 = (1.0 - min(max(cos_i_2, 0.0), 1.0));
-    float m2_ = (m_9 * m_9);
-    return (f0_ + ((1.0 - f0_) * ((m2_ * m2_) * m_9)));
+    float m_7 = (1.0 - min(max(cos_i_2, 0.0), 1.0));
+    float m2_ = (m_7 * m_7);
+    return (f0_ + ((1.0 - f0_) * ((m2_ * m2_) * m_7)));
 }
 
 float ms_fresnel_f82_tint(float cos_i_3, float f0_1, float h) {
     float mu = min(max(cos_i_3, 0.0), 1.0);
-    float m_10 = (1.0 - mu);
-    float m5_ = ((((m_10 * m_10) * m_10) * m_10) * m_10);
+    float m_8 = (1.0 - mu);
+    float m5_ = ((((m_8 * m_8) * m_8) * m_8) * m_8);
     float a_18 = (((f0_1 + ((1.0 - f0_1) * 0.46266437)) * (1.0 - h)) / 0.05665278);
-    float r_11 = ((f0_1 + ((1.0 - f0_1) * m5_)) - (((a_18 * mu) * m5_) * m_10));
-    return min(max(r_11, 0.0), 1.0);
+    float r_8 = ((f0_1 + ((1.0 - f0_1) * m5_)) - (((a_18 * mu) * m5_) * m_8));
+    return min(max(r_8, 0.0), 1.0);
 }
 
 vec3 ms_fresnel_eval(MsFresnel fr, float cos_i_4) {
@@ -597,34 +594,34 @@ float ms_ggx_d(vec3 wm_2, vec2 alpha) {
     if (!((z_6 > 0.0))) {
         return 0.0;
     }
-    float x_21 = (wm_2.x / alpha.x);
+    float x_19 = (wm_2.x / alpha.x);
     float y_4 = (wm_2.y / alpha.y);
-    float t_9 = (((x_21 * x_21) + (y_4 * y_4)) + (z_6 * z_6));
-    return (1.0 / ((((MS_PI * alpha.x) * alpha.y) * t_9) * t_9));
+    float t_8 = (((x_19 * x_19) + (y_4 * y_4)) + (z_6 * z_6));
+    return (1.0 / ((((MS_PI * alpha.x) * alpha.y) * t_8) * t_8));
 }
 
 float ms_ggx_lambda(vec3 w_3, vec2 alpha_1) {
-    float x_22 = (alpha_1.x * w_3.x);
+    float x_20 = (alpha_1.x * w_3.x);
     float y_5 = (alpha_1.y * w_3.y);
     float z_7 = abs(w_3.z);
-    float t_10 = ((x_22 * x_22) + (y_5 * y_5));
+    float t_9 = ((x_20 * x_20) + (y_5 * y_5));
     float z2_ = (z_7 * z_7);
-    float den = (2.0 * (z2_ + (z_7 * sqrt((z2_ + t_10)))));
+    float den = (2.0 * (z2_ + (z_7 * sqrt((z2_ + t_9)))));
     if (!((den > 0.0))) {
         if ((z_7 == 0.0)) {
             float _e25 = ms_inf();
             return _e25;
         }
-        return ((t_10 / (z_7 + sqrt(((z_7 * z_7) + t_10)))) / (z_7 + z_7));
+        return ((t_9 / (z_7 + sqrt(((z_7 * z_7) + t_9)))) / (z_7 + z_7));
     }
-    return (t_10 / den);
+    return (t_9 / den);
 }
 
 float ms_ggx_g1_(vec3 w_4, vec2 alpha_2) {
-    float x_23 = (alpha_2.x * w_4.x);
+    float x_21 = (alpha_2.x * w_4.x);
     float y_6 = (alpha_2.y * w_4.y);
     float z_8 = abs(w_4.z);
-    float den_1 = (z_8 + sqrt(((z_8 * z_8) + ((x_23 * x_23) + (y_6 * y_6)))));
+    float den_1 = (z_8 + sqrt(((z_8 * z_8) + ((x_21 * x_21) + (y_6 * y_6)))));
     if (!((den_1 > 0.0))) {
         return 0.0;
     }
@@ -675,23 +672,23 @@ float ms_ggx_pdf(vec3 w_5, vec3 wm_3, vec2 alpha_5) {
     float len_3 = sqrt((((sx * sx) + (sy * sy)) + (z_9 * z_9)));
     float mx = (wm_3.x / alpha_5.x);
     float my = (wm_3.y / alpha_5.y);
-    float t_11 = (((mx * mx) + (my * my)) + (wm_3.z * wm_3.z));
+    float t_10 = (((mx * mx) + (my * my)) + (wm_3.z * wm_3.z));
     float _e55 = c;
     float _e56 = c;
-    return ((_e55 + _e56) / (((((MS_PI * alpha_5.x) * alpha_5.y) * t_11) * t_11) * (z_9 + len_3)));
+    return ((_e55 + _e56) / (((((MS_PI * alpha_5.x) * alpha_5.y) * t_10) * t_10) * (z_9 + len_3)));
 }
 
 vec3 ms_ggx_cap_normal_stretched(vec3 w_6, vec3 stretch, vec2 u, float len) {
     float inv = (1.0 / len);
-    float x_24 = ((stretch.x * w_6.x) * inv);
+    float x_22 = ((stretch.x * w_6.x) * inv);
     float y_7 = ((stretch.y * w_6.y) * inv);
     float z_10 = ((stretch.z * w_6.z) * inv);
     vec2 _e19 = ms_cos_sin_turn(u.x);
     float above = ((1.0 - u.y) * (1.0 + z_10));
-    float sin_ = sqrt(max((u.y * ((above * (1.0 + z_10)) + ((x_24 * x_24) + (y_7 * y_7)))), 0.0));
-    vec3 h_3 = vec3((stretch.x * ((sin_ * _e19.x) + x_24)), (stretch.y * ((sin_ * _e19.y) + y_7)), (stretch.z * above));
-    float n_14 = (1.0 / sqrt((((h_3.x * h_3.x) + (h_3.y * h_3.y)) + (h_3.z * h_3.z))));
-    return (h_3 * n_14);
+    float sin_ = sqrt(max((u.y * ((above * (1.0 + z_10)) + ((x_22 * x_22) + (y_7 * y_7)))), 0.0));
+    vec3 h_3 = vec3((stretch.x * ((sin_ * _e19.x) + x_22)), (stretch.y * ((sin_ * _e19.y) + y_7)), (stretch.z * above));
+    float n_12 = (1.0 / sqrt((((h_3.x * h_3.x) + (h_3.y * h_3.y)) + (h_3.z * h_3.z))));
+    return (h_3 * n_12);
 }
 
 vec3 ms_ggx_cap_normal(vec3 w_7, vec2 alpha_6, vec2 u_1, float len_1) {
@@ -711,8 +708,8 @@ vec3 ms_ggx_sample_wm(vec3 w_in, vec2 alpha_7, vec2 u_2) {
     float _e12 = w_8.x;
     float _e16 = w_8.y;
     float _e19 = w_8.z;
-    vec3 s_14 = vec3((alpha_7.x * _e12), (alpha_7.y * _e16), _e19);
-    float n2_ = (((s_14.x * s_14.x) + (s_14.y * s_14.y)) + (s_14.z * s_14.z));
+    vec3 s_10 = vec3((alpha_7.x * _e12), (alpha_7.y * _e16), _e19);
+    float n2_ = (((s_10.x * s_10.x) + (s_10.y * s_10.y)) + (s_10.z * s_10.z));
     if ((n2_ >= 1e-24)) {
         local_8 = (n2_ <= 1e24);
     } else {
@@ -725,12 +722,12 @@ vec3 ms_ggx_sample_wm(vec3 w_in, vec2 alpha_7, vec2 u_2) {
         float _e45 = w_8.x;
         float _e49 = w_8.y;
         float _e54 = w_8.z;
-        float d_18 = (((_e42.x * _e45) + (_e42.y * _e49)) + (_e42.z * _e54));
+        float d_11 = (((_e42.x * _e45) + (_e42.y * _e49)) + (_e42.z * _e54));
         float _e58 = w_8.x;
         float _e61 = w_8.y;
         float _e65 = w_8.z;
         float l1_ = ((abs(_e58) + abs(_e61)) + abs(_e65));
-        if ((d_18 > (2.4e-7 * l1_))) {
+        if ((d_11 > (2.4e-7 * l1_))) {
             return _e42;
         }
         vec3 _e71 = w_8;
@@ -763,8 +760,8 @@ float ms_ggx_pdf_dcos(vec3 wm_4, vec2 alpha_9) {
 
 MsSample ms_ggx_sample_dcos(vec2 alpha_10, vec2 u_4) {
     vec2 _e3 = ms_cos_sin_turn(u_4.y);
-    float r_12 = sqrt(u_4.x);
-    vec3 _e21 = ms_unit_normal(vec3(((alpha_10.x * r_12) * _e3.x), ((alpha_10.y * r_12) * _e3.y), sqrt(max((1.0 - u_4.x), 0.0))));
+    float r_9 = sqrt(u_4.x);
+    vec3 _e21 = ms_unit_normal(vec3(((alpha_10.x * r_9) * _e3.x), ((alpha_10.y * r_9) * _e3.y), sqrt(max((1.0 - u_4.x), 0.0))));
     float _e22 = ms_ggx_d(_e21, alpha_10);
     return MsSample(_e21, (_e22 * _e21.z));
 }
@@ -788,45 +785,45 @@ MsBoundedCap ms_ggx_bounded_cap(vec3 w_10, vec2 alpha_11) {
     float _e30 = v_2.x;
     float _e33 = v_2.y;
     float _e35 = v_2.y;
-    float s_15 = (1.0 + sqrt(((_e28 * _e30) + (_e33 * _e35))));
+    float s_11 = (1.0 + sqrt(((_e28 * _e30) + (_e33 * _e35))));
     float a2_1 = (a_19 * a_19);
-    float s2_ = (s_15 * s_15);
+    float s2_ = (s_11 * s_11);
     float _e44 = v_2.z;
     float _e47 = v_2.z;
     float den_2 = (s2_ + ((a2_1 * _e44) * _e47));
-    float k_13 = (((1.0 - a2_1) * s2_) / den_2);
+    float k_12 = (((1.0 - a2_1) * s2_) / den_2);
     float _e55 = v_2.z;
     float _e57 = v_2.z;
     float one_minus_k = ((a2_1 * (s2_ + (_e55 * _e57))) / den_2);
-    return MsBoundedCap(_e18, (k_13 * _e18.z), (one_minus_k * _e18.z));
+    return MsBoundedCap(_e18, (k_12 * _e18.z), (one_minus_k * _e18.z));
 }
 
 float ms_ggx_pdf_bounded(vec3 w_in_1, vec3 wm_5, vec2 alpha_12) {
     vec3 _e3 = ms_unit(w_in_1);
     MsBoundedCap _e4 = ms_ggx_bounded_cap(_e3, alpha_12);
     vec3 ws = _e4.ws;
-    float b_8 = _e4.b;
+    float b_6 = _e4.b;
     vec3 _e15 = ms_normalize(vec3((wm_5.x / alpha_12.x), (wm_5.y / alpha_12.y), wm_5.z));
     float _e16 = ms_dot(_e15, ws);
     float cz = (((_e16 + _e16) * _e15.z) - ws.z);
-    if ((cz < -(b_8))) {
+    if ((cz < -(b_6))) {
         return 0.0;
     }
     float _e25 = ms_ggx_pdf(_e3, wm_5, alpha_12);
-    return ((_e25 * (1.0 + ws.z)) / (1.0 + b_8));
+    return ((_e25 * (1.0 + ws.z)) / (1.0 + b_6));
 }
 
 MsSample ms_ggx_sample_bounded(vec3 w_in_2, vec2 alpha_13, vec2 u_5) {
     vec3 _e3 = ms_unit(w_in_2);
     MsBoundedCap _e4 = ms_ggx_bounded_cap(_e3, alpha_13);
     vec3 ws_1 = _e4.ws;
-    float b_9 = _e4.b;
+    float b_7 = _e4.b;
     vec2 _e8 = ms_cos_sin_turn(u_5.x);
-    float above_1 = ((1.0 - u_5.y) * (1.0 + b_9));
+    float above_1 = ((1.0 - u_5.y) * (1.0 + b_7));
     float one_minus_b = ((((ws_1.x * ws_1.x) + (ws_1.y * ws_1.y)) / (1.0 + ws_1.z)) + _e4.top);
-    float sin_1 = sqrt(max(((u_5.y * (1.0 + b_9)) * (above_1 + one_minus_b)), 0.0));
-    vec3 m_11 = vec3(((sin_1 * _e8.x) + ws_1.x), ((sin_1 * _e8.y) + ws_1.y), (above_1 + _e4.top));
-    vec3 _e58 = ms_normalize(vec3((alpha_13.x * m_11.x), (alpha_13.y * m_11.y), max(m_11.z, 0.0)));
+    float sin_1 = sqrt(max(((u_5.y * (1.0 + b_7)) * (above_1 + one_minus_b)), 0.0));
+    vec3 m_9 = vec3(((sin_1 * _e8.x) + ws_1.x), ((sin_1 * _e8.y) + ws_1.y), (above_1 + _e4.top));
+    vec3 _e58 = ms_normalize(vec3((alpha_13.x * m_9.x), (alpha_13.y * m_9.y), max(m_9.z, 0.0)));
     vec3 _e59 = ms_facing(_e58, _e3);
     float _e60 = ms_ggx_pdf_bounded(_e3, _e59, alpha_13);
     return MsSample(_e59, _e60);
@@ -839,17 +836,17 @@ float ms_ggx_pdf_bounded_reflection(vec3 wo_8, vec3 wi_8, vec2 alpha_14) {
         return 0.0;
     }
     float _e7 = ms_dot(wo_8, _e3);
-    float c_20 = abs(_e7);
-    if (!((c_20 > 0.0))) {
+    float c_15 = abs(_e7);
+    if (!((c_15 > 0.0))) {
         return 0.0;
     }
     float _e13 = ms_ggx_pdf_bounded(wo_8, _e3, alpha_14);
-    return (_e13 / (4.0 * c_20));
+    return (_e13 / (4.0 * c_15));
 }
 
 uvec2 ms_u64_add(uvec2 a_9, uvec2 b_4) {
-    uint lo_4 = (a_9.x + b_4.x);
-    return uvec2(lo_4, ((a_9.y + b_4.y) + ((lo_4 < a_9.x) ? 1u : 0u)));
+    uint lo_3 = (a_9.x + b_4.x);
+    return uvec2(lo_3, ((a_9.y + b_4.y) + ((lo_3 < a_9.x) ? 1u : 0u)));
 }
 
 uvec2 ms_u32_mul_wide(uint x, uint y) {
@@ -877,11 +874,11 @@ uvec2 ms_u64_xorshift(uvec2 a_11, uint k_2) {
 uvec2 ms_f64_bits(float v_3) {
     uint man = 0u;
     uint e64_ = 0u;
-    uint b_10 = floatBitsToUint(v_3);
-    uint sign_3 = (b_10 & 2147483648u);
-    uint e_4 = ((b_10 >> 23u) & 255u);
-    man = (b_10 & 8388607u);
-    if ((e_4 == 0u)) {
+    uint b_8 = floatBitsToUint(v_3);
+    uint sign_3 = (b_8 & 2147483648u);
+    uint e_2 = ((b_8 >> 23u) & 255u);
+    man = (b_8 & 8388607u);
+    if ((e_2 == 0u)) {
         uint _e14 = man;
         if ((_e14 == 0u)) {
             return uvec2(0u, sign_3);
@@ -892,10 +889,10 @@ uvec2 ms_f64_bits(float v_3) {
         uint _e23 = man;
         man = ((_e23 << (23u - p)) & 8388607u);
     } else {
-        if ((e_4 == 255u)) {
+        if ((e_2 == 255u)) {
             e64_ = 2047u;
         } else {
-            e64_ = (e_4 + 896u);
+            e64_ = (e_2 + 896u);
         }
     }
     uint _e34 = man;
@@ -936,8 +933,8 @@ float ms_stream_next(inout uvec2 state_2) {
 
 float ms_stream_next_wide(inout uvec2 state_3) {
     uvec2 _e1 = ms_stream_next_u64_(state_3);
-    float v_17 = ((float(_e1.y) * 2.3283064e-10) + (float((_e1.x >> 11u)) * 1.110223e-16));
-    return min(v_17, 0.99999994);
+    float v_16 = ((float(_e1.y) * 2.3283064e-10) + (float((_e1.x >> 11u)) * 1.110223e-16));
+    return min(v_16, 0.99999994);
 }
 
 MsSource ms_source_stream(vec2 u_7) {
@@ -963,10 +960,10 @@ float ms_source_next(inout MsSource src) {
         float _e7 = src.first.y;
         float _e10 = src.first.x;
         uint _e12 = src.used;
-        float v_18 = ((_e12 == 0u) ? _e10 : _e7);
+        float v_17 = ((_e12 == 0u) ? _e10 : _e7);
         uint _e18 = src.used;
         src.used = (_e18 + 1u);
-        return v_18;
+        return v_17;
     }
     uvec2 _e22 = src.state;
     state_4 = _e22;
@@ -987,8 +984,8 @@ float ms_source_next(inout MsSource src) {
 vec2 ms_bk_segment(float x_2, int k0_, int k1_) {
     uint bits_1 = floatBitsToUint(x_2);
     uint rows = (uint((k1_ - k0_)) << MS_BK_SEGMENTS_LOG2_);
-    uint idx = min(((bits_1 >> (23u - MS_BK_SEGMENTS_LOG2_)) - (uint((127 + k0_)) << MS_BK_SEGMENTS_LOG2_)), (rows - 1u));
-    uint pos = ((bits_1 << (9u + MS_BK_SEGMENTS_LOG2_)) >> 9u);
+    uint idx = min(((bits_1 >> 21u) - (uint((127 + k0_)) << MS_BK_SEGMENTS_LOG2_)), (rows - 1u));
+    uint pos = ((bits_1 << 11u) >> 9u);
     return vec2(float(idx), (uintBitsToFloat((1073741824u | pos)) - 3.0));
 }
 
@@ -1000,18 +997,18 @@ float ms_bk_ln_1m(float xi) {
     if ((xi > 0.5)) {
         return log((1.0 - xi));
     }
-    float t_12 = (-(xi) / (2.0 - xi));
-    float t2_ = (t_12 * t_12);
+    float t_11 = (-(xi) / (2.0 - xi));
+    float t2_ = (t_11 * t_11);
     float p_1 = (1.0 + (t2_ * (0.33333334 + (t2_ * (0.2 + (t2_ * (0.14285715 + (t2_ * (0.11111111 + (t2_ * (0.09090909 + (t2_ * (0.07692308 + (t2_ * 0.06666667))))))))))))));
-    return ((2.0 * t_12) * p_1);
+    return ((2.0 * t_11) * p_1);
 }
 
 float ms_beckmann_d(vec3 wm_6, vec2 alpha_15) {
     bool local_9 = false;
     float z_11 = wm_6.z;
-    float r_13 = (1.0 / (alpha_15.x * alpha_15.y));
-    float x_25 = ((wm_6.x * alpha_15.y) * r_13);
-    float y_8 = ((wm_6.y * alpha_15.x) * r_13);
+    float r_10 = (1.0 / (alpha_15.x * alpha_15.y));
+    float x_23 = ((wm_6.x * alpha_15.y) * r_10);
+    float y_8 = ((wm_6.y * alpha_15.x) * r_10);
     float z2_1 = (z_11 * z_11);
     if ((z_11 > 0.0)) {
         local_9 = (z2_1 > 0.0);
@@ -1022,11 +1019,11 @@ float ms_beckmann_d(vec3 wm_6, vec2 alpha_15) {
     if (!(_e24)) {
         return 0.0;
     }
-    float e_5 = (((x_25 * x_25) + (y_8 * y_8)) / z2_1);
-    if ((e_5 <= 80.0)) {
-        return ((exp(-(e_5)) * r_13) / ((MS_PI * z2_1) * z2_1));
+    float e_3 = (((x_23 * x_23) + (y_8 * y_8)) / z2_1);
+    if ((e_3 <= 80.0)) {
+        return ((exp(-(e_3)) * r_10) / ((MS_PI * z2_1) * z2_1));
     }
-    return exp((((log(r_13) - 1.14473) - (4.0 * log(z_11))) - e_5));
+    return exp((((log(r_10) - 1.14473) - (4.0 * log(z_11))) - e_3));
 }
 
 float ms_beckmann_pdf_dcos(vec3 wm_8, vec2 alpha_21) {
@@ -1044,11 +1041,11 @@ MsSample ms_beckmann_sample_dcos(vec2 alpha_22, vec2 u_11) {
         v_5 = vec3((alpha_22.x * _e3.x), (alpha_22.y * _e3.y), 0.0);
     } else {
         float _e17 = ms_bk_ln_1m(u_11.x);
-        float r_14 = sqrt(-(_e17));
-        if ((r_14 > 1.0)) {
-            v_5 = vec3((alpha_22.x * _e3.x), (alpha_22.y * _e3.y), (1.0 / r_14));
+        float r_11 = sqrt(-(_e17));
+        if ((r_11 > 1.0)) {
+            v_5 = vec3((alpha_22.x * _e3.x), (alpha_22.y * _e3.y), (1.0 / r_11));
         } else {
-            v_5 = vec3(((alpha_22.x * r_14) * _e3.x), ((alpha_22.y * r_14) * _e3.y), 1.0);
+            v_5 = vec3(((alpha_22.x * r_11) * _e3.x), ((alpha_22.y * r_11) * _e3.y), 1.0);
         }
     }
     vec3 _e41 = v_5;
@@ -1070,24 +1067,24 @@ float ms_fam_cubic(vec4 c_2, float s_3) {
 }
 
 float ms_dg_lambda_ends(float u_15, float a_15) {
-    float x_26 = ((((0.5 * a_15) * a_15) * ((1.0 - u_15) * (1.0 + u_15))) / (u_15 * u_15));
-    if ((x_26 < 9.313226e-10)) {
-        if ((x_26 <= 0.0)) {
+    float x_24 = ((((0.5 * a_15) * a_15) * ((1.0 - u_15) * (1.0 + u_15))) / (u_15 * u_15));
+    if ((x_24 < 9.313226e-10)) {
+        if ((x_24 <= 0.0)) {
             return 0.0;
         }
-        return ((0.5 * x_26) * (0.42278433 - log((0.5 * x_26))));
+        return ((0.5 * x_24) * (0.42278433 - log((0.5 * x_24))));
     }
     float sx_1 = ((a_15 * sqrt(((0.5 * (1.0 - u_15)) * (1.0 + u_15)))) / u_15);
-    float r_15 = (1.0 / (sx_1 * sx_1));
-    return (((1.2533141 * sx_1) * (1.0 + (r_15 * (0.125 - (r_15 * 0.0234375))))) - 0.5);
+    float r_12 = (1.0 / (sx_1 * sx_1));
+    return (((1.2533141 * sx_1) * (1.0 + (r_12 * (0.125 - (r_12 * 0.0234375))))) - 0.5);
 }
 
-float ms_exponential_d(vec3 wm_12, vec2 alpha_39) {
+float ms_exponential_d(vec3 wm_11, vec2 alpha_36) {
     bool local_22 = false;
-    float z_12 = wm_12.z;
-    float r_16 = (1.0 / (alpha_39.x * alpha_39.y));
-    float x_27 = ((wm_12.x * alpha_39.y) * r_16);
-    float y_9 = ((wm_12.y * alpha_39.x) * r_16);
+    float z_12 = wm_11.z;
+    float r_13 = (1.0 / (alpha_36.x * alpha_36.y));
+    float x_25 = ((wm_11.x * alpha_36.y) * r_13);
+    float y_9 = ((wm_11.y * alpha_36.x) * r_13);
     float z2_2 = (z_12 * z_12);
     if ((z_12 > 0.0)) {
         local_22 = (z2_2 > 0.0);
@@ -1098,22 +1095,14 @@ float ms_exponential_d(vec3 wm_12, vec2 alpha_39) {
     if (!(_e24)) {
         return ((z_12 != z_12) ? z_12 : 0.0);
     }
-    float e_6 = ((2.0 * sqrt(((x_27 * x_27) + (y_9 * y_9)))) / z_12);
-    if ((e_6 <= 80.0)) {
-        return (((2.0 * exp(-(e_6))) * r_16) / ((MS_PI * z2_2) * z2_2));
+    float e_4 = ((2.0 * sqrt(((x_25 * x_25) + (y_9 * y_9)))) / z_12);
+    if ((e_4 <= 80.0)) {
+        return (((2.0 * exp(-(e_4))) * r_13) / ((MS_PI * z2_2) * z2_2));
     }
-    return exp((((log((2.0 * r_16)) - 1.14473) - (4.0 * log(z_12))) - e_6));
+    return exp((((log((2.0 * r_13)) - 1.14473) - (4.0 * log(z_12))) - e_4));
 }
 
-float ms_exponential_pdf_dcos(vec3 wm_14, vec2 alpha_41) {
-    if (!((wm_14.z > 0.0))) {
-        return 0.0;
-    }
-    float _e7 = ms_exponential_d(wm_14, alpha_41);
-    return (_e7 * wm_14.z);
-}
-
-vec3 ms_exponential_sample_wm(vec3 w_in_4, vec2 alpha_43, vec2 u_20) {
+vec3 ms_exponential_sample_wm(vec3 w_in_4, vec2 alpha_39, vec2 u_20) {
     vec3 w_27 = vec3(0.0);
     float cp_1 = 1.0;
     float sp_1 = 0.0;
@@ -1132,21 +1121,21 @@ vec3 ms_exponential_sample_wm(vec3 w_in_4, vec2 alpha_43, vec2 u_20) {
         w_27 = -(_e9);
     }
     float _e13 = w_27.x;
-    float sx_2 = (alpha_43.x * _e13);
+    float sx_2 = (alpha_39.x * _e13);
     float _e17 = w_27.y;
-    float sy_1 = (alpha_43.y * _e17);
-    float e_7 = w_27.z;
+    float sy_1 = (alpha_39.y * _e17);
+    float e_5 = w_27.z;
     float h_4 = sqrt(((sx_2 * sx_2) + (sy_1 * sy_1)));
     if ((h_4 > 0.0)) {
         cp_1 = (sx_2 / h_4);
         sp_1 = (sy_1 / h_4);
     }
-    if (!((abs((e_7 + h_4)) <= 3.4028235e38))) {
-        return vec3((e_7 + h_4));
+    if (!((abs((e_5 + h_4)) <= 3.4028235e38))) {
+        return vec3((e_5 + h_4));
     }
     float g = (h_4 * MS_FRAC_1_PI);
-    float total = (e_7 + g);
-    float inv_p = min((total / e_7), 3.4028235e38);
+    float total = (e_5 + g);
+    float inv_p = min((total / e_5), 3.4028235e38);
     float inv_g = min((1.0 / g), 3.4028235e38);
     uvec2 _e50 = ms_stream_new(u_20);
     state_5 = _e50;
@@ -1176,18 +1165,18 @@ vec3 ms_exponential_sample_wm(vec3 w_in_4, vec2 alpha_43, vec2 u_20) {
             float _e73 = ms_stream_next(state_5);
             float prod = ((1.0 - _e70) * (1.0 - _e73));
             float _e77 = v0_;
-            float d_19 = ((_e77 * total) - e_7);
-            if ((d_19 < 0.0)) {
-                float r_17 = (-0.5 * log(prod));
+            float d_12 = ((_e77 * total) - e_5);
+            if ((d_12 < 0.0)) {
+                float r_14 = (-0.5 * log(prod));
                 float _e85 = v0_;
                 float turn = (_e85 * inv_p);
                 vec2 _e87 = ms_cos_sin_turn(turn);
-                x_9 = (r_17 * _e87.x);
-                y_2 = (r_17 * _e87.y);
+                x_9 = (r_14 * _e87.x);
+                y_2 = (r_14 * _e87.y);
                 if (!((abs((turn - 0.5)) >= 0.25))) {
                     float _e100 = ms_stream_next(state_5);
                     float _e102 = x_9;
-                    local_24 = ((_e100 * e_7) <= (e_7 + (h_4 * _e102)));
+                    local_24 = ((_e100 * e_5) <= (e_5 + (h_4 * _e102)));
                 } else {
                     local_24 = true;
                 }
@@ -1197,12 +1186,12 @@ vec3 ms_exponential_sample_wm(vec3 w_in_4, vec2 alpha_43, vec2 u_20) {
                 }
             } else {
                 float _e108 = ms_stream_next(state_5);
-                float r_18 = (-0.5 * log((prod * (1.0 - _e108))));
-                float one_plus = (2.0 * (d_19 * inv_g));
+                float r_15 = (-0.5 * log((prod * (1.0 - _e108))));
+                float one_plus = (2.0 * (d_12 * inv_g));
                 float _e118 = v0_;
                 float one_minus = ((2.0 * (1.0 - _e118)) * (total * inv_g));
-                x_9 = (r_18 * sqrt(max((one_minus * one_plus), 0.0)));
-                y_2 = (r_18 * (one_plus - 1.0));
+                x_9 = (r_15 * sqrt(max((one_minus * one_plus), 0.0)));
+                y_2 = (r_15 * (one_plus - 1.0));
                 break;
             }
         }
@@ -1211,12 +1200,12 @@ vec3 ms_exponential_sample_wm(vec3 w_in_4, vec2 alpha_43, vec2 u_20) {
     float _e138 = x_9;
     float _e140 = sp_1;
     float _e141 = y_2;
-    float p_2 = (alpha_43.x * ((_e137 * _e138) - (_e140 * _e141)));
+    float p_2 = (alpha_39.x * ((_e137 * _e138) - (_e140 * _e141)));
     float _e146 = sp_1;
     float _e147 = x_9;
     float _e149 = cp_1;
     float _e150 = y_2;
-    float q_3 = (alpha_43.y * ((_e146 * _e147) + (_e149 * _e150)));
+    float q_3 = (alpha_39.y * ((_e146 * _e147) + (_e149 * _e150)));
     vec3 _e156 = ms_unit_normal(vec3(p_2, q_3, 1.0));
     vec3 _e157 = w_27;
     vec3 _e158 = ms_facing(_e156, _e157);
@@ -1228,34 +1217,34 @@ float ms_source_next_positive(inout MsSource src_8) {
     return max(_e1, 1.110223e-16);
 }
 
-float ms_mixture_beta(float ln_beta, vec2 alpha_47) {
-    float lo_5 = log(min(alpha_47.x, alpha_47.y));
-    float hi_3 = log(max(alpha_47.x, alpha_47.y));
-    return exp(clamp(ln_beta, (-80.0 - lo_5), (80.0 - hi_3)));
+float ms_mixture_beta(float ln_beta, vec2 alpha_43) {
+    float lo_4 = log(min(alpha_43.x, alpha_43.y));
+    float hi_2 = log(max(alpha_43.x, alpha_43.y));
+    return exp(clamp(ln_beta, (-80.0 - lo_4), (80.0 - hi_2)));
 }
 
-float ms_mixture_ln_d(float ln_f, vec3 wm_16, vec2 alpha_54) {
-    return ((ln_f - log((alpha_54.x * alpha_54.y))) - (4.0 * log(wm_16.z)));
+float ms_mixture_ln_d(float ln_f, vec3 wm_14, vec2 alpha_49) {
+    return ((ln_f - log((alpha_49.x * alpha_49.y))) - (4.0 * log(wm_14.z)));
 }
 
-float ms_mixture_r(vec3 wm_17, vec2 alpha_55) {
-    float x_28 = abs((wm_17.x / alpha_55.x));
-    float y_10 = abs((wm_17.y / alpha_55.y));
-    float big = max(x_28, y_10);
+float ms_mixture_r(vec3 wm_15, vec2 alpha_50) {
+    float x_26 = abs((wm_15.x / alpha_50.x));
+    float y_10 = abs((wm_15.y / alpha_50.y));
+    float big = max(x_26, y_10);
     if (!((big > 0.0))) {
         return big;
     }
-    float qx = (x_28 / big);
+    float qx = (x_26 / big);
     float qy = (y_10 / big);
-    return ((big * sqrt(((qx * qx) + (qy * qy)))) / wm_17.z);
+    return ((big * sqrt(((qx * qx) + (qy * qy)))) / wm_15.z);
 }
 
 float ms_ln_1p(float t_1) {
-    float v_19 = (1.0 + t_1);
-    if ((v_19 == 1.0)) {
+    float v_18 = (1.0 + t_1);
+    if ((v_18 == 1.0)) {
         return t_1;
     }
-    return (log(v_19) * (t_1 / (v_19 - 1.0)));
+    return (log(v_18) * (t_1 / (v_18 - 1.0)));
 }
 
 float ms_expm1_(float x_11) {
@@ -1307,12 +1296,12 @@ float ms_gtr_expm1_over_x(float x_13) {
 float ms_gtr_ln_pos_sum(float f_2, float minus_one, float sum, bool over, float ln_em1_abs) {
     if (over) {
         float _e5 = ms_gtr_ln(f_2);
-        float s_16 = (_e5 + ln_em1_abs);
-        if ((s_16 > 0.0)) {
-            float _e11 = ms_gtr_ln_1p(exp(-(s_16)));
-            return (s_16 + _e11);
+        float s_12 = (_e5 + ln_em1_abs);
+        if ((s_12 > 0.0)) {
+            float _e11 = ms_gtr_ln_1p(exp(-(s_12)));
+            return (s_12 + _e11);
         }
-        float _e14 = ms_gtr_ln_1p(exp(s_16));
+        float _e14 = ms_gtr_ln_1p(exp(s_12));
         return _e14;
     }
     float y_11 = (f_2 * minus_one);
@@ -1334,33 +1323,33 @@ vec2 ms_gtr_column(float v_12, uint n_8) {
     float frac = 0.0;
     bool local_35 = false;
     bool local_36 = false;
-    uint b_11 = floatBitsToUint(v_12);
-    uint e_8 = ((b_11 >> 23u) & 255u);
+    uint b_9 = floatBitsToUint(v_12);
+    uint e_6 = ((b_9 >> 23u) & 255u);
     frac = (v_12 * float(n_8));
-    if ((e_8 > 0u)) {
-        local_35 = (e_8 < 255u);
+    if ((e_6 > 0u)) {
+        local_35 = (e_6 < 255u);
     } else {
         local_35 = false;
     }
     bool _e19 = local_35;
     if (_e19) {
-        local_36 = ((150u - e_8) < 64u);
+        local_36 = ((150u - e_6) < 64u);
     } else {
         local_36 = false;
     }
     bool _e27 = local_36;
     if (_e27) {
-        uint shift = (150u - e_8);
-        uvec2 _e34 = ms_u32_mul_wide(((b_11 & 8388607u) | 8388608u), n_8);
+        uint shift = (150u - e_6);
+        uvec2 _e34 = ms_u32_mul_wide(((b_9 & 8388607u) | 8388608u), n_8);
         float scale = uintBitsToFloat(((127u - shift) << 23u));
         if ((shift < 32u)) {
             i_2 = ((_e34.x >> shift) | (_e34.y << (32u - shift)));
             frac = (float((_e34.x & ((1u << shift) - 1u))) * scale);
         } else {
-            uint s_17 = (shift - 32u);
-            i_2 = (_e34.y >> s_17);
-            uint hi_4 = (_e34.y & ((1u << s_17) - 1u));
-            frac = (((float(hi_4) * 4294967300.0) + float(_e34.x)) * scale);
+            uint s_13 = (shift - 32u);
+            i_2 = (_e34.y >> s_13);
+            uint hi_3 = (_e34.y & ((1u << s_13) - 1u));
+            frac = (((float(hi_3) * 4294967300.0) + float(_e34.x)) * scale);
         }
     }
     uint _e74 = i_2;
@@ -1375,6 +1364,10 @@ vec2 ms_gtr_column(float v_12, uint n_8) {
     return vec2(float(_e87), _e89);
 }
 
+bool ms_door_has(uint ndf) {
+    return ((MS_DOOR_NDFS & (1u << ndf)) != 0u);
+}
+
 bool ms_effectively_smooth(MsMicrofacet mf_9) {
     return (max(mf_9.alpha.x, mf_9.alpha.y) < 0.001);
 }
@@ -1384,13 +1377,13 @@ bool ms_on_horizon(float z_5) {
 }
 
 bool ms_usable(float v_15) {
-    bool local_37 = false;
+    bool local_107 = false;
     if ((v_15 >= 1.1754944e-20)) {
-        local_37 = (v_15 <= 3.4028235e38);
+        local_107 = (v_15 <= 3.4028235e38);
     } else {
-        local_37 = false;
+        local_107 = false;
     }
-    bool _e8 = local_37;
+    bool _e8 = local_107;
     return _e8;
 }
 
@@ -1398,370 +1391,135 @@ vec3 ms_weighted(vec3 fr_1, float k_10) {
     return mix((fr_1 * k_10), vec3(0.0), equal(fr_1, vec3(0.0)));
 }
 
-vec3 ms_conductor_lobe_normal(MsConductor c_8, vec3 wo_33, vec3 wi_33) {
-    bool local_38 = false;
-    bool local_39 = false;
-    bool local_40 = false;
-    bool _e3 = ms_same_hemisphere(wo_33, wi_33);
+vec3 ms_conductor_lobe_normal(MsConductor c_8, vec3 wo_24, vec3 wi_24) {
+    bool local_108 = false;
+    bool local_109 = false;
+    bool local_110 = false;
+    bool _e3 = ms_same_hemisphere(wo_24, wi_24);
     if (!(!(_e3))) {
-        bool _e9 = ms_on_horizon(wo_33.z);
-        local_38 = _e9;
+        bool _e9 = ms_on_horizon(wo_24.z);
+        local_108 = _e9;
     } else {
-        local_38 = true;
+        local_108 = true;
     }
-    bool _e11 = local_38;
+    bool _e11 = local_108;
     if (!(_e11)) {
-        bool _e16 = ms_on_horizon(wi_33.z);
-        local_39 = _e16;
+        bool _e16 = ms_on_horizon(wi_24.z);
+        local_109 = _e16;
     } else {
-        local_39 = true;
+        local_109 = true;
     }
-    bool _e18 = local_39;
+    bool _e18 = local_109;
     if (!(_e18)) {
         bool _e23 = ms_effectively_smooth(c_8.mf);
-        local_40 = _e23;
+        local_110 = _e23;
     } else {
-        local_40 = true;
+        local_110 = true;
     }
-    bool _e25 = local_40;
+    bool _e25 = local_110;
     if (_e25) {
         return vec3(0.0);
     }
-    vec3 _e28 = ms_half_vector_reflection(wo_33, wi_33);
+    vec3 _e28 = ms_half_vector_reflection(wo_24, wi_24);
     return _e28;
 }
 
 bool ms_dielectric_smooth(MsDielectric d_1) {
-    bool local_42 = false;
+    bool local_112 = false;
     if (!((d_1.eta == 1.0))) {
         bool _e8 = ms_effectively_smooth(d_1.mf);
-        local_42 = _e8;
+        local_112 = _e8;
     } else {
-        local_42 = true;
+        local_112 = true;
     }
-    bool _e10 = local_42;
+    bool _e10 = local_112;
     return _e10;
 }
 
-vec4 ms_dielectric_half(MsDielectric d_3, vec3 wo_39, vec3 wi_38) {
-    bool local_43 = false;
-    vec3 wm_43 = vec3(0.0);
+vec4 ms_dielectric_half(MsDielectric d_3, vec3 wo_30, vec3 wi_29) {
+    bool local_113 = false;
+    vec3 wm_41 = vec3(0.0);
     float etap_4 = 1.0;
-    bool local_44 = false;
+    bool local_114 = false;
     vec4 none = vec4(0.0);
-    float co = wo_39.z;
-    float ci_1 = wi_38.z;
+    float co = wo_30.z;
+    float ci_1 = wi_29.z;
     bool _e7 = ms_on_horizon(co);
     if (!(_e7)) {
         bool _e11 = ms_on_horizon(ci_1);
-        local_43 = _e11;
+        local_113 = _e11;
     } else {
-        local_43 = true;
+        local_113 = true;
     }
-    bool _e13 = local_43;
+    bool _e13 = local_113;
     if (_e13) {
         return none;
     }
     if (((co * ci_1) > 0.0)) {
-        vec3 _e20 = ms_half_vector_reflection(wo_39, wi_38);
-        wm_43 = _e20;
+        vec3 _e20 = ms_half_vector_reflection(wo_30, wi_29);
+        wm_41 = _e20;
     } else {
-        vec4 _e22 = ms_half_vector_refraction(wo_39, wi_38, d_3.eta);
-        wm_43 = _e22.xyz;
+        vec4 _e22 = ms_half_vector_refraction(wo_30, wi_29, d_3.eta);
+        wm_41 = _e22.xyz;
         etap_4 = _e22.w;
     }
-    vec3 _e25 = wm_43;
+    vec3 _e25 = wm_41;
     bool _e26 = ms_half_vector_ok(_e25);
     if (!(_e26)) {
         return none;
     }
-    vec3 _e28 = wm_43;
-    float _e29 = ms_dot(_e28, wi_38);
+    vec3 _e28 = wm_41;
+    float _e29 = ms_dot(_e28, wi_29);
     if (!(((_e29 * ci_1) < 0.0))) {
-        vec3 _e36 = wm_43;
-        float _e37 = ms_dot(_e36, wo_39);
-        local_44 = ((_e37 * co) < 0.0);
+        vec3 _e36 = wm_41;
+        float _e37 = ms_dot(_e36, wo_30);
+        local_114 = ((_e37 * co) < 0.0);
     } else {
-        local_44 = true;
+        local_114 = true;
     }
-    bool _e42 = local_44;
+    bool _e42 = local_114;
     if (_e42) {
         return none;
     }
-    vec3 _e43 = wm_43;
+    vec3 _e43 = wm_41;
     float _e44 = etap_4;
     return vec4(_e43, _e44);
 }
 
-MsBsdfSample ms_dielectric_sample_smooth(MsDielectric d_7, vec3 wo_43, float uc_1) {
+MsBsdfSample ms_dielectric_sample_smooth(MsDielectric d_7, vec3 wo_34, float uc_1) {
     float f_4 = 0.0;
-    float _e5 = ms_fresnel_dielectric(wo_43.z, d_7.eta);
+    float _e5 = ms_fresnel_dielectric(wo_34.z, d_7.eta);
     if ((uc_1 < _e5)) {
-        vec3 wi_53 = vec3(-(wo_43.x), -(wo_43.y), wo_43.z);
-        return MsBsdfSample(wi_53, _e5, vec3((_e5 / abs(wi_53.z))), 3u, 1.0);
+        vec3 wi_33 = vec3(-(wo_34.x), -(wo_34.y), wo_34.z);
+        return MsBsdfSample(wi_33, _e5, vec3((_e5 / abs(wi_33.z))), 3u, 1.0);
     }
     MsBsdfSample none_1 = MsBsdfSample(vec3(0.0), 0.0, vec3(0.0), 0u, 1.0);
-    vec4 _e33 = ms_refract(wo_43, vec3(0.0, 0.0, 1.0), d_7.eta);
+    vec4 _e33 = ms_refract(wo_34, vec3(0.0, 0.0, 1.0), d_7.eta);
     if ((_e33.w == 0.0)) {
         return none_1;
     }
-    vec3 wi_54 = _e33.xyz;
-    bool _e39 = ms_on_horizon(wi_54.z);
+    vec3 wi_34 = _e33.xyz;
+    bool _e39 = ms_on_horizon(wi_34.z);
     if (_e39) {
         return none_1;
     }
-    float t_13 = (1.0 - _e5);
-    f_4 = (t_13 / abs(wi_54.z));
+    float t_12 = (1.0 - _e5);
+    f_4 = (t_12 / abs(wi_34.z));
     if ((d_7.transport == MS_TRANSPORT_RADIANCE)) {
         float _e49 = f_4;
         f_4 = (_e49 / (_e33.w * _e33.w));
     }
     float _e54 = f_4;
-    return MsBsdfSample(wi_54, t_13, vec3(_e54), 7u, _e33.w);
-}
-
-MsLutTap ms_lut_tap(float x_18, uint n_11) {
-    float t_14 = clamp(((x_18 * float(n_11)) - 0.5), 0.0, float((n_11 - 1u)));
-    uint i_5 = min(uint(floor(t_14)), (n_11 - 2u));
-    return MsLutTap(i_5, (t_14 - float(i_5)));
-}
-
-MsLutTap ms_lut_tap_edges(float x_19, uint n_12) {
-    float t_15 = clamp((x_19 * float((n_12 - 1u))), 0.0, float((n_12 - 1u)));
-    uint i_6 = min(uint(floor(t_15)), (n_12 - 2u));
-    return MsLutTap(i_6, (t_15 - float(i_6)));
-}
-
-uint ms_lut_index(uint ir, uint im, uint n_mu) {
-    return ((ir * n_mu) + im);
-}
-
-float ms_lut_lerp(MsLutTap t_6, float v0_2, float v1_2) {
-    return (((1.0 - t_6.f) * v0_2) + (t_6.f * v1_2));
-}
-
-float ms_lut_bilerp(MsLutTap r_4, MsLutTap m_4, float v00_, float v10_, float v01_, float v11_) {
-    float gr = (1.0 - r_4.f);
-    float gm = (1.0 - m_4.f);
-    return (((((gr * gm) * v00_) + ((r_4.f * gm) * v10_)) + ((gr * m_4.f) * v01_)) + ((r_4.f * m_4.f) * v11_));
-}
-
-float ms_lut_roughness_coord(vec2 alpha_114, float alpha_max) {
-    return sqrt((sqrt((alpha_114.x * alpha_114.y)) / alpha_max));
-}
-
-vec3 ms_kulla_conty_f_ms(vec3 f_avg, float e_avg) {
-    return (((f_avg * f_avg) * e_avg) / (vec3(1.0) - (f_avg * (1.0 - e_avg))));
-}
-
-float ms_kulla_conty_lobe(float e_o, float e_i, float e_avg_1) {
-    float den_3 = (MS_PI * (1.0 - e_avg_1));
-    if (!((den_3 > 0.0))) {
-        return 0.0;
-    }
-    return ((max((1.0 - e_o), 0.0) * max((1.0 - e_i), 0.0)) / den_3);
-}
-
-vec3 ms_turquin_scale(float e_o_2, vec3 f0_2) {
-    return (vec3(1.0) + ((f0_2 * (1.0 - e_o_2)) / vec3(e_o_2)));
-}
-
-float ms_kulla_conty_p_ms(float e_o_4) {
-    return clamp((1.0 - e_o_4), 0.0, 1.0);
-}
-
-float ms_cosine_pdf_same_side(vec3 wo_47, vec3 wi_44) {
-    if (!(((wo_47.z * wi_44.z) > 0.0))) {
-        return 0.0;
-    }
-    return (abs(wi_44.z) / MS_PI);
-}
-
-vec3 ms_cosine_hemisphere(vec2 u_42) {
-    float r_19 = sqrt(u_42.x);
-    vec2 _e4 = ms_cos_sin_turn(u_42.y);
-    return vec3((r_19 * _e4.x), (r_19 * _e4.y), sqrt(max((1.0 - u_42.x), 0.0)));
-}
-
-MsBsdfSample ms_kulla_conty_sample_f(MsBsdfSample s_6, vec3 wo_50, float e_o_7, float e_i_2, float e_avg_3, vec3 f_ms_1) {
-    bool local_50 = false;
-    bool local_51 = false;
-    if (!(((s_6.flags & MS_SAMPLE_VALID) == 0u))) {
-        local_50 = ((s_6.flags & MS_SAMPLE_SPECULAR) != 0u);
-    } else {
-        local_50 = true;
-    }
-    bool _e20 = local_50;
-    if (!(_e20)) {
-        local_51 = !(((wo_50.z * s_6.wi.z) > 0.0));
-    } else {
-        local_51 = true;
-    }
-    bool _e32 = local_51;
-    if (_e32) {
-        return s_6;
-    }
-    float _e36 = ms_kulla_conty_lobe(e_o_7, e_i_2, e_avg_3);
-    return MsBsdfSample(s_6.wi, s_6.pdf, (s_6.f + (_e36 * f_ms_1)), s_6.flags, s_6.eta);
-}
-
-uint ms_lut_index3_(uint ie, uint ir_1, uint im_1, uint n_r, uint n_mu_1) {
-    return ((((ie * n_r) + ir_1) * n_mu_1) + im_1);
-}
-
-float ms_lut_eta_coord(float eta_4) {
-    return sqrt((max((eta_4 - 1.0), 0.0) * 0.5));
-}
-
-float ms_lut_trilerp(MsLutTap e, MsLutTap r_5, MsLutTap m_5, vec4 lo_3, vec4 hi_2) {
-    float s_7 = 0.0;
-    uint b_6 = 0u;
-    vec2 we = vec2((1.0 - e.f), e.f);
-    vec2 wr = vec2((1.0 - r_5.f), r_5.f);
-    vec2 wm_45 = vec2((1.0 - m_5.f), m_5.f);
-    bool loop_init_1 = true;
-    while(true) {
-        if (!loop_init_1) {
-            uint _e59 = b_6;
-            b_6 = (_e59 + 1u);
-        }
-        loop_init_1 = false;
-        uint _e24 = b_6;
-        if ((_e24 < 8u)) {
-        } else {
-            break;
-        }
-        {
-            uint _e27 = b_6;
-            uint _e31 = b_6;
-            uint _e35 = b_6;
-            float v_20 = ((_e35 >= 4u) ? hi_2[(_e31 & 3u)] : lo_3[(_e27 & 3u)]);
-            float _e39 = s_7;
-            uint _e40 = b_6;
-            uint _e44 = b_6;
-            uint _e51 = b_6;
-            s_7 = (_e39 + (((we[(_e40 & 1u)] * wr[((_e44 >> 1u) & 1u)]) * wm_45[(_e51 >> 2u)]) * v_20));
-        }
-    }
-    float _e61 = s_7;
-    return _e61;
-}
-
-float ms_lut_bilerp_eta(MsLutTap e_1, MsLutTap r_6, vec4 v_16) {
-    float s_8 = 0.0;
-    uint b_7 = 0u;
-    vec2 we_1 = vec2((1.0 - e_1.f), e_1.f);
-    vec2 wr_1 = vec2((1.0 - r_6.f), r_6.f);
-    bool loop_init_2 = true;
-    while(true) {
-        if (!loop_init_2) {
-            uint _e35 = b_7;
-            b_7 = (_e35 + 1u);
-        }
-        loop_init_2 = false;
-        uint _e17 = b_7;
-        if ((_e17 < 4u)) {
-        } else {
-            break;
-        }
-        {
-            float _e20 = s_8;
-            uint _e21 = b_7;
-            uint _e25 = b_7;
-            uint _e30 = b_7;
-            s_8 = (_e20 + ((we_1[(_e21 & 1u)] * wr_1[(_e25 >> 1u)]) * v_16[_e30]));
-        }
-    }
-    float _e37 = s_8;
-    return _e37;
-}
-
-vec2 ms_dielectric_kulla_conty_k(float eta_5, float f_avg_1, vec2 e_avg_4) {
-    vec2 k_11 = vec2(0.0);
-    float k_out = (1.0 - f_avg_1);
-    k_11 = vec2(k_out, ((k_out * (1.0 - e_avg_4.x)) / ((eta_5 * eta_5) * (1.0 - e_avg_4.y))));
-    float _e18 = k_11.y;
-    if (!((_e18 <= 1.0))) {
-        vec2 _e22 = k_11;
-        float _e24 = k_11.y;
-        float _e28 = k_11.y;
-        k_11 = (_e22 * ((_e28 > 1.0) ? (1.0 / _e24) : 0.0));
-    }
-    vec2 _e34 = k_11;
-    return _e34;
-}
-
-float ms_dielectric_kulla_conty_lobe(MsDielectric d_9, vec3 wo_52, vec3 wi_47, float e_o_9, float e_i_3, float e_avg_i, float k_o) {
-    bool local_53 = false;
-    bool local_54 = false;
-    float f_5 = 0.0;
-    bool local_55 = false;
-    if ((abs(wo_52.z) > 0.0)) {
-        local_53 = (abs(wi_47.z) > 0.0);
-    } else {
-        local_53 = false;
-    }
-    bool _e18 = local_53;
-    if (!(_e18)) {
-        return 0.0;
-    }
-    float lost = (1.0 - e_o_9);
-    bool crossed = ((wi_47.z < 0.0) != (wo_52.z < 0.0));
-    float share = (crossed ? k_o : (1.0 - k_o));
-    float den_4 = (MS_PI * (1.0 - e_avg_i));
-    if ((den_4 > 0.0)) {
-        local_54 = (lost > 0.0);
-    } else {
-        local_54 = false;
-    }
-    bool _e44 = local_54;
-    if (!(_e44)) {
-        return 0.0;
-    }
-    f_5 = (((share * lost) * max((1.0 - e_i_3), 0.0)) / den_4);
-    if (crossed) {
-        local_55 = (d_9.transport == MS_TRANSPORT_RADIANCE);
-    } else {
-        local_55 = false;
-    }
-    bool _e61 = local_55;
-    if (_e61) {
-        float etap_6 = ((wo_52.z > 0.0) ? d_9.eta : (1.0 / d_9.eta));
-        float _e70 = f_5;
-        f_5 = (_e70 / (etap_6 * etap_6));
-    }
-    float _e73 = f_5;
-    return _e73;
-}
-
-float ms_dielectric_kulla_conty_lobe_pdf(vec3 wo_55, vec3 wi_50, float k_o_2) {
-    bool crossed_1 = ((wi_50.z < 0.0) != (wo_55.z < 0.0));
-    float side = (crossed_1 ? k_o_2 : (1.0 - k_o_2));
-    return ((side * abs(wi_50.z)) / MS_PI);
-}
-
-MsBsdfSample ms_dielectric_kulla_conty_sample_f(MsBsdfSample s_9, MsDielectric d_14, vec3 wo_58, float e_o_14, float e_i_5, float e_avg_i_2, float k_o_5) {
-    bool local_59 = false;
-    if (!(((s_9.flags & MS_SAMPLE_VALID) == 0u))) {
-        local_59 = ((s_9.flags & MS_SAMPLE_SPECULAR) != 0u);
-    } else {
-        local_59 = true;
-    }
-    bool _e21 = local_59;
-    if (_e21) {
-        return s_9;
-    }
-    float _e23 = ms_dielectric_kulla_conty_lobe(d_14, wo_58, s_9.wi, e_o_14, e_i_5, e_avg_i_2, k_o_5);
-    return MsBsdfSample(s_9.wi, s_9.pdf, (s_9.f + vec3(_e23)), s_9.flags, s_9.eta);
+    return MsBsdfSample(wi_34, t_12, vec3(_e54), 7u, _e33.w);
 }
 
 uint ms_k_index(uvec3 id_13, uvec3 groups_13) {
-    uint i_7 = (id_13.x + ((id_13.y * groups_13.x) * 64u));
-    uint n_15 = (uint(_group_0_binding_0_cs.length()) / MS_K_IN);
-    if ((i_7 >= n_15)) {
-        return n_15;
+    uint i_5 = (id_13.x + ((id_13.y * groups_13.x) * 64u));
+    uint n_13 = (uint(_group_0_binding_0_cs.length()) / MS_K_IN);
+    if ((i_5 >= n_13)) {
+        return n_13;
     }
-    return i_7;
+    return i_5;
 }
 
 MsMicrofacet ms_k_microfacet(vec4 r0_, vec4 r2_) {
@@ -1794,15 +1552,15 @@ void main() {
     if ((_e2 == (uint(_group_0_binding_0_cs.length()) / MS_K_IN))) {
         return;
     }
-    float c_21 = _group_0_binding_0_cs[((_e2 * MS_K_IN) + 1u)].z;
+    float c_16 = _group_0_binding_0_cs[((_e2 * MS_K_IN) + 1u)].z;
     MsConductor _e16 = ms_k_conductor(_e2);
     MsFresnel fr_2 = _e16.fresnel;
-    float _e24 = ms_fresnel_dielectric(c_21, fr_2.a.x);
-    float _e29 = ms_fresnel_conductor(c_21, fr_2.a.x, fr_2.b.x);
-    float _e32 = ms_fresnel_schlick(c_21, fr_2.a.x);
-    float _e37 = ms_fresnel_f82_tint(c_21, fr_2.a.x, fr_2.b.x);
+    float _e24 = ms_fresnel_dielectric(c_16, fr_2.a.x);
+    float _e29 = ms_fresnel_conductor(c_16, fr_2.a.x, fr_2.b.x);
+    float _e32 = ms_fresnel_schlick(c_16, fr_2.a.x);
+    float _e37 = ms_fresnel_f82_tint(c_16, fr_2.a.x, fr_2.b.x);
     _group_0_binding_1_cs[(_e2 * MS_K_OUT)] = vec4(_e24, _e29, _e32, _e37);
-    vec3 _e45 = ms_fresnel_eval(fr_2, c_21);
+    vec3 _e45 = ms_fresnel_eval(fr_2, c_16);
     _group_0_binding_1_cs[((_e2 * MS_K_OUT) + 1u)] = vec4(_e45, 0.0);
     return;
 }
