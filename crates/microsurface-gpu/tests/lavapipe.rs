@@ -32,13 +32,13 @@
 use microsurface::bsdf::fresnel::{self, Conductor, Dielectric, F82Tint, One, Schlick};
 use microsurface::bsdf::{Bsdf, Lobe, Masking, RoughConductor, RoughDielectric, Transport};
 use microsurface::{Ggx, Microfacet, MicrofacetDistribution};
-use microsurface_gpu::{kernels_source, Error, Gpu, Program, KERNEL_IN, KERNEL_OUT};
+use microsurface_gpu::{kernels_source, Error, Gpu, Program, Tables, KERNEL_IN, KERNEL_OUT};
 use std::sync::OnceLock;
 
 mod grid;
 use grid::{
-    d_bound, directions, lambda_bound, normals, uniforms, vec_diff, Worst, ALPHAS, EPS,
-    NDF_BECKMANN, NDF_DOUBLE_GGX, NDF_EXPONENTIAL, NDF_GGX, TOL,
+    d_bound, directions, lambda_bound, normals, shaped_d_bound, shaped_lambda_bound, uniforms,
+    vec_diff, Worst, ALPHAS, EPS, NDF_BECKMANN, NDF_DOUBLE_GGX, NDF_EXPONENTIAL, NDF_GGX, TOL,
 };
 
 /// The device and the compiled kernels, once per test binary; `None` (the tests skip) only
@@ -47,7 +47,7 @@ fn gpu() -> Option<&'static (Gpu, Program)> {
     static GPU: OnceLock<Option<(Gpu, Program)>> = OnceLock::new();
     GPU.get_or_init(|| {
         let required = std::env::var("MICROSURFACE_GPU_REQUIRED").as_deref() == Ok("1");
-        match Gpu::new() {
+        match Gpu::with_tables(&materials().1) {
             Ok(g) => {
                 let i = g.adapter_info();
                 eprintln!(
@@ -80,8 +80,10 @@ struct El {
     wi: [f32; 3],
     fr: (u32, [f32; 3], [f32; 3]),
     masking: u32,
-    /// The NDF tag (MsMicrofacet's MS_NDF_*; GGX but in `bsdfs_of_every_ndf_match_rust_f32`).
+    /// The NDF tag (MsMicrofacet's MS_NDF_*; GGX but in `bsdfs_of_every_ndf_match_rust_f32`)
+    /// and its table's row in the bound buffer (`materials()`; 0 for GGX).
     ndf: u32,
+    table: u32,
 }
 
 impl El {
@@ -95,6 +97,7 @@ impl El {
             fr: (0, [1.0; 3], [0.0; 3]),
             masking: 0,
             ndf: NDF_GGX,
+            table: 0,
         }
     }
     fn records(&self) -> [[f32; 4]; KERNEL_IN] {
@@ -102,7 +105,12 @@ impl El {
         [
             [self.alpha[0], self.alpha[1], self.u[0], self.u[1]],
             [self.wo[0], self.wo[1], self.wo[2], self.uc],
-            [self.wi[0], self.wi[1], self.wi[2], self.ndf as f32],
+            [
+                self.wi[0],
+                self.wi[1],
+                self.wi[2],
+                (self.ndf + 16 * self.table) as f32,
+            ],
             [a[0], a[1], a[2], k as f32],
             [b[0], b[1], b[2], self.masking as f32],
         ]
@@ -1070,20 +1078,79 @@ fn beckmann_samplers_give_the_rust_f32_normals() {
 // dispatch and each NDF inside the BSDF formulas, against `RoughConductor` and
 // `RoughDielectric` over `AnyMicrofacet<f32>`.
 
-/// How much D of the NDF moves when wm moves by δ (f64, relative): the central differences
-/// of the Rust f64 D along two tangents of wm give its gradient, |∇D| δ plus the second
+/// A material of the BSDF test over the run-time door: its name, the Rust material, the tag
+/// and table row of `MsMicrofacet`, and the roughness its table serves (GTR's table is one α's;
+/// `None`: every roughness of the grid).
+struct Mat {
+    name: &'static str,
+    kind: microsurface::NdfKind,
+    shape: Option<f64>,
+    ndf: u32,
+    table: u32,
+    alpha: Option<[f32; 2]>,
+}
+
+/// The door's materials past GGX, with the tables they read (the library's and the shapes'
+/// and GTR materials' own), built once per test binary.
+fn materials() -> &'static (Vec<Mat>, Tables) {
+    use microsurface::NdfKind as K;
+    static M: OnceLock<(Vec<Mat>, Tables)> = OnceLock::new();
+    M.get_or_init(|| {
+        let mut t = Tables::new();
+        let mut v = Vec::new();
+        for (name, kind, ndf) in [
+            ("Beckmann", K::Beckmann, NDF_BECKMANN),
+            ("Double GGX", K::DoubleGgx, NDF_DOUBLE_GGX),
+            ("Exponential", K::Exponential, NDF_EXPONENTIAL),
+        ] {
+            v.push(Mat {
+                name,
+                kind,
+                shape: None,
+                ndf,
+                table: 0,
+                alpha: None,
+            });
+        }
+        for (name, kind, shape, ndf) in [
+            ("Student-T γ = 2.5", K::StudentT, Some(2.5), 5),
+            ("Ei", K::Ei, None, 6),
+            ("Erfc", K::Erfc, None, 7),
+            ("K0", K::K0, None, 8),
+            ("Bessel-K a = 2.5", K::BesselK, Some(2.5), 9),
+        ] {
+            let table = t.add_shape(kind, shape).expect("a shape table");
+            v.push(Mat {
+                name,
+                kind,
+                shape,
+                ndf,
+                table,
+                alpha: None,
+            });
+        }
+        for (name, gamma) in [("GTR γ = 1.5", 1.5), ("GTR γ = 3", 3.0)] {
+            let a = 0.3f32;
+            let table = t.add_gtr(a as f64, gamma).expect("a GTR material");
+            v.push(Mat {
+                name,
+                kind: K::Gtr,
+                shape: Some(gamma),
+                ndf: 4,
+                table,
+                alpha: Some([a, a]),
+            });
+        }
+        (v, t)
+    })
+}
+
+/// How much D moves when wm moves by δ (f64, relative), from the Rust f64 material: the
+/// central differences of D along two tangents of wm give its gradient, |∇D| δ plus the second
 /// difference's term bounds the move in any direction (to second order).
-fn d_move(ndf: u32, wm: [f64; 3], alpha: [f32; 2], delta: f64) -> f64 {
-    use microsurface::{AnyMicrofacet, NdfKind};
-    let kind = [
-        NdfKind::Ggx,
-        NdfKind::Beckmann,
-        NdfKind::DoubleGgx,
-        NdfKind::Exponential,
-    ][ndf as usize];
-    let m = AnyMicrofacet::<f64>::new(kind, alpha[0] as f64, alpha[1] as f64, None).unwrap();
+fn d_move(m: &dyn MicrofacetDistribution<f64>, wm: [f64; 3], delta: f64) -> f64 {
     let d0 = m.d(wm);
-    if !(d0 > 0.0 && delta > 0.0) {
+    if !(d0 > 0.0 && delta > 0.0 && d0.is_finite()) {
         return 0.0;
     }
     // Two unit tangents of wm.
@@ -1113,12 +1180,15 @@ fn d_move(ndf: u32, wm: [f64; 3], alpha: [f32; 2], delta: f64) -> f64 {
     (grad2.sqrt() + curv) / d0
 }
 
-/// A BSDF value's bound (f or pdf) over the NDF: `TOL` (the Fresnel factor's and the
-/// divisions' roundings), D's bound at wm and what δ's move of wm costs it (`d_move`), Λ's
-/// bounds at wo and wi (G2 = 1/(1 + Λo + Λi) or the G1 product take at most their sum), and
-/// the Fresnel factor's move as in `value_tol`.
+/// A BSDF value's bound (f or pdf) over the door's NDF: `TOL` (the Fresnel factor's and the
+/// divisions' roundings), D's bound at wm (`grid::shaped_d_bound`: from the Rust f64 D's
+/// condition number, the tables' rounding and Vulkan's allowances) and what δ's move of wm
+/// costs it (`d_move`), Λ's bounds at wo and wi (`grid::shaped_lambda_bound`; G2 = 1/(1 +
+/// Λo + Λi) or the G1 product take at most their sum), and the Fresnel factor's move as in
+/// `value_tol`.
 #[allow(clippy::too_many_arguments)]
 fn ndf_value_tol(
+    m64: &dyn MicrofacetDistribution<f64>,
     e: &El,
     wi: [f32; 3],
     wm: [f64; 3],
@@ -1128,7 +1198,6 @@ fn ndf_value_tol(
     weight: &dyn Fn(f64) -> f64,
     formula: f64,
 ) -> f64 {
-    let wm32 = wm.map(|x| x as f32);
     let f0 = fr(c);
     let df = (fr(c + delta) - f0).abs().max((fr(c - delta) - f0).abs());
     let w = weight(f0);
@@ -1137,24 +1206,30 @@ fn ndf_value_tol(
     } else {
         0.0
     };
-    TOL + d_bound(e.ndf, wm32, e.alpha)
-        + d_move(e.ndf, wm, e.alpha, delta)
-        + lambda_bound(e.ndf, e.wo, e.alpha)
-        + lambda_bound(e.ndf, wi, e.alpha)
+    TOL + shaped_d_bound(m64, wm.map(|x| x as f32))
+        + d_move(m64, wm, delta)
+        + shaped_lambda_bound(m64, e.wo)
+        + shaped_lambda_bound(m64, wi)
         + f_term
 }
 
-/// The conductor's and dielectric's eval and pdf with Beckmann, Double GGX and the
-/// Exponential NDF through `MsMicrofacet`, against the Rust types over `AnyMicrofacet<f32>`:
-/// every roughness, F = 1 and Schlick (conductor; both maskings), η = 1.5 and 1/1.5 from both
+/// The conductor's and dielectric's eval and pdf over every NDF of the door but GGX (whose
+/// BSDFs the tests above check), through `MsMicrofacet` with the materials' tables, against
+/// `RoughConductor` and `RoughDielectric` over `AnyMicrofacet<f32>`: every roughness (GTR: its
+/// table's α), F = 1 and Schlick (conductor; both maskings), η = 1.5 and 1/1.5 from both
 /// sides (dielectric), directions × directions.
 #[test]
 fn bsdfs_of_every_ndf_match_rust_f32() {
-    use microsurface::{AnyMicrofacet, NdfKind};
-    let mut conductors = Vec::new();
-    let mut dielectrics = Vec::new();
-    for ndf in [NDF_BECKMANN, NDF_DOUBLE_GGX, NDF_EXPONENTIAL] {
-        for (i, &a) in ALPHAS.iter().enumerate() {
+    use microsurface::AnyMicrofacet;
+    let (mats, _) = materials();
+    let (mut conductors, mut dielectrics) = (Vec::new(), Vec::new());
+    let (mut cmat, mut dmat) = (Vec::new(), Vec::new());
+    for (k, mat) in mats.iter().enumerate() {
+        let alphas = match mat.alpha {
+            Some(a) => vec![a],
+            None => ALPHAS.to_vec(),
+        };
+        for (i, &a) in alphas.iter().enumerate() {
             for &wo in &both_sides() {
                 for &wi in &both_sides() {
                     for (j, fr) in [(0, [1.0; 3], [0.0; 3]), (3, [0.04, 0.5, 0.95], [0.0; 3])]
@@ -1162,16 +1237,19 @@ fn bsdfs_of_every_ndf_match_rust_f32() {
                         .enumerate()
                     {
                         let mut e = El::new(a, wo, wi, [0.5; 2]);
-                        e.ndf = ndf;
+                        e.ndf = mat.ndf;
+                        e.table = mat.table;
                         e.fr = fr;
                         e.masking = ((i + j) % 2) as u32;
                         if wo[2] > 0.0 && wi[2] > 0.0 {
                             conductors.push(e);
+                            cmat.push(k);
                         }
                         let mut d = e;
                         let eta = [1.5f32, 1.0 / 1.5][j];
                         d.fr = (1, [eta, 0.0, 0.0], [0.0; 3]);
                         dielectrics.push(d);
+                        dmat.push(k);
                     }
                 }
             }
@@ -1183,23 +1261,31 @@ fn bsdfs_of_every_ndf_match_rust_f32() {
     ) else {
         return;
     };
-    let kind = |e: &El| {
-        [
-            NdfKind::Ggx,
-            NdfKind::Beckmann,
-            NdfKind::DoubleGgx,
-            NdfKind::Exponential,
-        ][e.ndf as usize]
-    };
     let names = [
         "conductor eval / bound",
         "conductor pdf / bound",
         "dielectric eval / bound",
         "dielectric pdf / bound",
     ];
-    let mut w = [Worst::new(&names), Worst::new(&names), Worst::new(&names)];
-    for (e, o) in conductors.iter().zip(&co) {
-        let m = AnyMicrofacet::<f32>::new(kind(e), e.alpha[0], e.alpha[1], None).unwrap();
+    let mut w: Vec<Worst> = mats.iter().map(|_| Worst::new(&names)).collect();
+    let material = |k: usize, e: &El| {
+        let m = &mats[k];
+        let m32 = AnyMicrofacet::<f32>::new(m.kind, e.alpha[0], e.alpha[1], m.shape).unwrap();
+        let m64 = AnyMicrofacet::<f64>::new(m.kind, e.alpha[0] as f64, e.alpha[1] as f64, m.shape)
+            .unwrap();
+        (m32, m64)
+    };
+    // A value whose D at the half vector is subnormal in f32 may be 0 on a device that flushes
+    // subnormals (Vulkan allows it without shaderDenormPreserveFloat32; lavapipe does): the
+    // D factor is then 0 on the way, where Rust (no flush) keeps the digits that the division
+    // by the cosines brings back into f32's normals.
+    let flushed = |g: f32, r: f32, d: f32| g == 0.0 && d.abs() < f32::MIN_POSITIVE && r != 0.0;
+    for ((e, o), &k) in conductors.iter().zip(&co).zip(&cmat) {
+        let (m, m64) = material(k, e);
+        let d32 = {
+            let (wm, _, _) = half_vector_delta(e.wo, e.wi, 1.0, None);
+            m.d(wm.map(|x| x as f32))
+        };
         let masking = [Masking::Correlated, Masking::Separable][e.masking as usize];
         let (f, p) = if e.fr.0 == 0 {
             let c = RoughConductor::new(m, One::<3>).with_masking(masking);
@@ -1209,45 +1295,63 @@ fn bsdfs_of_every_ndf_match_rust_f32() {
             (c.eval(e.wo, e.wi), c.pdf(e.wo, e.wi))
         };
         let (wm, _, delta) = half_vector_delta(e.wo, e.wi, 1.0, None);
-        let c = (0..3).map(|k| e.wo[k] as f64 * wm[k]).sum::<f64>().abs();
-        let k = (e.ndf - NDF_BECKMANN) as usize;
+        let c = (0..3).map(|q| e.wo[q] as f64 * wm[q]).sum::<f64>().abs();
         for (ch, &r) in f.iter().enumerate() {
-            let tol = ndf_value_tol(e, e.wi, wm, delta, c, &fresnel_fn(e, ch), &|f| f, 1.0);
-            w[k].add(0, rel_normal(o[0][ch], r) / tol, || {
+            let tol = ndf_value_tol(&m64, e, e.wi, wm, delta, c, &fresnel_fn(e, ch), &|f| f, 1.0);
+            let x = if flushed(o[0][ch], r, d32) {
+                0.0
+            } else {
+                rel_normal(o[0][ch], r) / tol
+            };
+            w[k].add(0, x, || {
                 format!("{e:?}: gpu {:?} rust {f:?} (bound {tol:e})", o[0])
             });
         }
-        let tol = ndf_value_tol(e, e.wi, wm, delta, 1.0, &|_| 1.0, &|f| f, 0.0);
-        w[k].add(1, rel_normal(o[0][3], p) / tol, || {
+        let tol = ndf_value_tol(&m64, e, e.wi, wm, delta, 1.0, &|_| 1.0, &|f| f, 0.0);
+        let x = if flushed(o[0][3], p, d32) {
+            0.0
+        } else {
+            rel_normal(o[0][3], p) / tol
+        };
+        w[k].add(1, x, || {
             format!("{e:?}: gpu {} rust {p} (bound {tol:e})", o[0][3])
         });
     }
-    for (e, o) in dielectrics.iter().zip(&di) {
-        let m = AnyMicrofacet::<f32>::new(kind(e), e.alpha[0], e.alpha[1], None).unwrap();
+    for ((e, o), &k) in dielectrics.iter().zip(&di).zip(&dmat) {
+        let (m, m64) = material(k, e);
+        let d32 = {
+            let (wm, _, _) = half_vector_delta(e.wo, e.wi, e.fr.1[0], None);
+            m.d(wm.map(|x| x as f32))
+        };
         let masking = [Masking::Correlated, Masking::Separable][e.masking as usize];
         let eta = e.fr.1[0];
         let d = RoughDielectric::new(m, eta).with_masking(masking);
         let (f, p) = (d.eval(e.wo, e.wi)[0], d.pdf(e.wo, e.wi));
         let (wm, _, delta) = half_vector_delta(e.wo, e.wi, eta, None);
-        let c = (0..3).map(|k| e.wo[k] as f64 * wm[k]).sum::<f64>();
+        let c = (0..3).map(|q| e.wo[q] as f64 * wm[q]).sum::<f64>();
         let r = move |c: f64| fresnel::dielectric(c, eta as f64);
         let formula = fresnel_cancellation(0, c, eta as f64, 0.0);
         let tol = if e.wo[2] * e.wi[2] > 0.0 {
-            ndf_value_tol(e, e.wi, wm, delta, c, &r, &|f| f, formula)
+            ndf_value_tol(&m64, e, e.wi, wm, delta, c, &r, &|f| f, formula)
         } else {
-            ndf_value_tol(e, e.wi, wm, delta, c, &r, &|f| 1.0 - f, formula)
+            ndf_value_tol(&m64, e, e.wi, wm, delta, c, &r, &|f| 1.0 - f, formula)
         };
-        let k = (e.ndf - NDF_BECKMANN) as usize;
         let what = || format!("{e:?}: gpu {:?} rust {f} {p} (bound {tol:e})", o[0]);
-        w[k].add(2, rel_normal(o[0][0], f) / tol, what);
-        w[k].add(3, rel_normal(o[0][1], p) / tol, what);
+        let x = if flushed(o[0][0], f, d32) {
+            0.0
+        } else {
+            rel_normal(o[0][0], f) / tol
+        };
+        w[k].add(2, x, what);
+        let x = if flushed(o[0][1], p, d32) {
+            0.0
+        } else {
+            rel_normal(o[0][1], p) / tol
+        };
+        w[k].add(3, x, what);
     }
-    for (k, name) in ["Beckmann", "Double GGX", "Exponential"].iter().enumerate() {
-        eprintln!(
-            "{name} ({} conductor, {} dielectric elements):",
-            conductors.len() / 3,
-            dielectrics.len() / 3
-        );
-        w[k].check(&[1.0; 4]);
+    for (mat, w) in mats.iter().zip(&w) {
+        eprintln!("{}:", mat.name);
+        w.check(&[1.0; 4]);
     }
 }

@@ -250,3 +250,53 @@ impl Worst {
         }
     }
 }
+
+/// The relative condition number of `f` (positive) in its argument's scale: |d ln f/d ln t|
+/// at t = 1, by a central difference (f64).
+pub fn condition(f: impl Fn(f64) -> f64) -> f64 {
+    let (h, f0) = (1e-6, f(1.0));
+    if !(f0 > 0.0 && f0.is_finite()) {
+        return 0.0;
+    }
+    let (p, q) = (f(1.0 + h), f(1.0 - h));
+    if !(p > 0.0 && q > 0.0) {
+        return 0.0;
+    }
+    ((p / q).ln() / (2.0 * h)).abs()
+}
+
+/// Λ's bound at w for an NDF with a shape table, from the f64 material: `TOL`; the rounding
+/// of z = cot θ/α̃ (a few ε) times Λ's condition number in z (numerically, from the Rust f64
+/// Λ: ~1 at grazing, the tail's power 2γ − 2 near the normal for Student-T, 2z² or 2z for
+/// the exponential tails); and, where the rows hold 256 log₂ Λ₁ (p), their f32 rounding, ε|p|
+/// in p, which is ln 2 ε|log₂ Λ| in Λ, with exp2's Vulkan allowance (3 + 2|log₂ Λ| ulp).
+pub fn shaped_lambda_bound(m: &dyn microsurface::MicrofacetDistribution<f64>, w: [f32; 3]) -> f64 {
+    let w = w.map(f64::from);
+    let lambda = m.lambda(w);
+    let x = if lambda > 0.0 && lambda.is_finite() {
+        lambda.log2().abs()
+    } else {
+        0.0
+    };
+    let kappa = condition(|t| m.lambda([w[0], w[1], w[2] * t]));
+    TOL + 8.0 * EPS * (1.0 + kappa) + 8.0 * EPS * (1.0 + x)
+}
+
+/// D's bound at wm for an NDF with a shape table: D = exp(ln f₁(r) − ln(αx αy) − 4 ln z).
+/// r² carries ~5 roundings and ln f₁ is the profile's formula (Student-T: γ ln(1 + t); the
+/// others: a fitted table within 1e-7 of the Rust f64 function, and a logarithm), so ln D
+/// moves by 8ε times D's condition number in r² (numerically, from the Rust f64 D) plus the
+/// table's 1e-7, plus Vulkan's allowance for the logarithms (2^−21 absolute each near 1, up to
+/// four) and the exponential ((3 + 2|ln D|) ulp).
+pub fn shaped_d_bound(m: &dyn microsurface::MicrofacetDistribution<f64>, wm: [f32; 3]) -> f64 {
+    let wm = wm.map(f64::from);
+    let d = m.d(wm);
+    let ln_d = if d > 0.0 && d.is_finite() {
+        d.ln().abs()
+    } else {
+        0.0
+    };
+    // (Scaling the horizontal components scales r² by t²: half the condition in t.)
+    let kappa = 0.5 * condition(|t| m.d([wm[0] * t, wm[1] * t, wm[2]]));
+    TOL + 1e-7 + 4.0 * 4.768_371_6e-7 + EPS * (8.0 + 2.0 * ln_d + 8.0 * kappa)
+}
