@@ -144,6 +144,12 @@
 //! NVIDIA H200, whose compiler fuses multiply-adds and divides to Vulkan's 2.5 ulp.
 //! BENCHMARKS.md has the measured maxima on both.
 //!
+//! `tests/lavapipe.rs` also runs the conductor's and dielectric's eval and pdf over every other
+//! NDF of the door (Beckmann, Double GGX, Exponential, GTR, Student-T, Ei, Erfc, K0,
+//! Bessel-K, with their tables) against the Rust types over `AnyMicrofacet<f32>`: within 0.13
+//! of bounds made of D's and Λ's bounds (from the Rust f64 functions' condition numbers) and
+//! D's move under the half vector's rounding.
+//!
 //! `tests/family.rs` also checks Student-T (γ = 1.8, 2.5, 10, 40), Ei, Erfc, K0 and Bessel-K
 //! (a = 0.4, 2.5) through `MsMicrofacet` over their shape tables: D, Λ, G1, G2 and the pdfs
 //! within 0.61 of bounds
