@@ -324,34 +324,26 @@ impl Tables {
         shape: Option<f64>,
     ) -> Result<u32, microsurface::ParamError> {
         use microsurface::fast::fitted::FittedShape;
-        use microsurface::NdfKind;
-        let mixing = match kind {
-            NdfKind::StudentT => 0.0,
-            NdfKind::K0 | NdfKind::BesselK => 1.0,
-            NdfKind::Ei => 2.0,
-            NdfKind::Erfc => 3.0,
-            _ => {
-                return Err(microsurface::ParamError::Shape {
-                    name: "GPU shape table (Student-T with gamma > 1.5, Ei, Erfc, K0, Bessel-K)",
-                    range: "(1.5, 1e6]",
-                    value: shape.unwrap_or(f64::NAN),
-                })
-            }
-        };
+        use microsurface::ndf::mixture::Mixing;
         let ndf = microsurface::AnyNdf::new(kind, 1.0, shape)?;
+        // (FittedShape takes the Beckmann mixtures and refuses the others, typed.)
         let fitted = FittedShape::new(&ndf)?;
         let l = fitted.layout();
+        // The posterior's mixing as mixture.wgsl's code (ms_mixing_ln_beta).
+        let mixing = match l.mixing {
+            Mixing::InverseGamma(_) => 0.0,
+            Mixing::Gamma(_) => 1.0,
+            Mixing::UniformSquare => 2.0,
+            // (Uniform, Erfc's: FittedShape admits no other mixing.)
+            _ => 3.0,
+        };
         let at = self.rows.len() as u32;
         let (tail_on, tail) = match l.tail {
             Some(t) => (1.0, t),
             None => (0.0, [0.0; 3]),
         };
         self.rows.push([
-            if matches!(kind, NdfKind::StudentT | NdfKind::BesselK) {
-                shape.unwrap_or(0.0) as f32
-            } else {
-                0.0
-            },
+            ndf.shape().unwrap_or(0.0) as f32,
             l.k1 as f32,
             if l.direct { 1.0 } else { 0.0 },
             l.sigma0 as f32,
@@ -360,7 +352,7 @@ impl Tables {
             .push([tail_on, tail[0] as f32, tail[1] as f32, tail[2] as f32]);
         // (Bessel-K's profile block follows the Λ₁ rows: its offset from the table's first
         // row, exact in f32.)
-        let profile_at = if kind == NdfKind::BesselK {
+        let profile_at = if l.bessel_nu.is_some() {
             (3 + 2 * l.rows.len()) as f32
         } else {
             0.0
@@ -372,8 +364,8 @@ impl Tables {
                 .push([c[0] as f32, c[1] as f32, c[2] as f32, c[3] as f32]);
             self.rows.push([c[4] as f32, 0.0, 0.0, 0.0]);
         }
-        if kind == NdfKind::BesselK {
-            self.push_bessel_profile(&ndf, shape.unwrap_or(f64::NAN) - 1.0);
+        if let Some(nu) = l.bessel_nu {
+            self.push_bessel_profile(&ndf, nu);
         }
         Ok(at)
     }

@@ -144,9 +144,13 @@ pub struct ShapeLayout<'a> {
     pub sigma0: f64,
     /// Past the table: `None` for 0, `Some([p, ln K, K₂])` for e^{ln K − p ln z}(1 + K₂/z²).
     pub tail: Option<[f64; 3]>,
-    /// The mixing density's parameter k (Student-T γ − 1, Bessel-K a, K0 1; 0 for the
-    /// uniform mixings).
+    /// The mixing density (its parameter k inside: Student-T γ − 1, Bessel-K a, K0 1).
+    pub mixing: crate::ndf::mixture::Mixing,
+    /// The mixing density's parameter k (0 for the uniform mixings).
     pub mixing_k: f64,
+    /// ν = a − 1 where D needs Bessel-K's K_ν profile (`None` for the members whose D is a
+    /// cheap closed form).
+    pub bessel_nu: Option<f64>,
     /// E[β] of the prior at α = 1.
     pub mean_beta: f64,
 }
@@ -296,7 +300,9 @@ impl FittedShape {
                 Tail::Zero => None,
                 Tail::Power { p, ln_k, k2 } => Some([p, ln_k, k2]),
             },
+            mixing: self.posterior.mixing(),
             mixing_k,
+            bessel_nu: self.bessel.as_ref().map(|b| b.nu),
             mean_beta,
         }
     }

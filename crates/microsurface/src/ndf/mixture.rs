@@ -205,6 +205,11 @@ impl Posterior {
         Some(Posterior { mixing, mean_beta })
     }
 
+    /// The mixing density.
+    pub(crate) fn mixing(&self) -> Mixing {
+        self.mixing
+    }
+
     /// The mixing's parameter k (0 for the uniform mixings) and E[β] (the GPU tables).
     pub(crate) fn parameters(&self) -> (f64, f64) {
         let k = match self.mixing {
