@@ -2805,15 +2805,14 @@ float ms_student_t_lambda(float3 w_34, float2 alpha_52, uint table_9)
 
 float ms_student_t_g1_(float3 w_35, float2 alpha_53, uint table_10)
 {
-    const float _e3 = ms_student_t_lambda(w_35, alpha_53, table_10);
-    return (1.0 / (1.0 + _e3));
+    const float _e3 = ms_mixture_g1_(table_10, w_35, alpha_53);
+    return _e3;
 }
 
 float ms_student_t_g2_(float3 wo_14, float3 wi_14, float2 alpha_54, uint table_11)
 {
-    const float _e4 = ms_student_t_lambda(wo_14, alpha_54, table_11);
-    const float _e5 = ms_student_t_lambda(wi_14, alpha_54, table_11);
-    return (1.0 / (1.0 + (_e4 + _e5)));
+    const float _e4 = ms_mixture_g2_(table_11, wo_14, wi_14, alpha_54);
+    return _e4;
 }
 
 float ms_student_t_pdf(float3 w_36, float3 wm_17, float2 alpha_55, uint table_12)

@@ -3085,8 +3085,8 @@ float ms_student_t_g1_(
     device type_7 const& ms_tables,
     constant _mslBufferSizes& _buffer_sizes
 ) {
-    float _e3 = ms_student_t_lambda(w_35, alpha_53, table_10, ms_tables, _buffer_sizes);
-    return 1.0 / (1.0 + _e3);
+    float _e3 = ms_mixture_g1_(table_10, w_35, alpha_53, ms_tables, _buffer_sizes);
+    return _e3;
 }
 
 float ms_student_t_g2_(
@@ -3097,9 +3097,8 @@ float ms_student_t_g2_(
     device type_7 const& ms_tables,
     constant _mslBufferSizes& _buffer_sizes
 ) {
-    float _e4 = ms_student_t_lambda(wo_14, alpha_54, table_11, ms_tables, _buffer_sizes);
-    float _e5 = ms_student_t_lambda(wi_14, alpha_54, table_11, ms_tables, _buffer_sizes);
-    return 1.0 / (1.0 + (_e4 + _e5));
+    float _e4 = ms_mixture_g2_(table_11, wo_14, wi_14, alpha_54, ms_tables, _buffer_sizes);
+    return _e4;
 }
 
 float ms_student_t_pdf(

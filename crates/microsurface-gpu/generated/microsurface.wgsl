@@ -2204,20 +2204,19 @@ fn ms_student_t_lambda(w: vec3<f32>, alpha: vec2<f32>, table: u32) -> f32 {
     return ms_shape_lambda(table, w, alpha);
 }
 
-// G1(w).
+// G1(w) (mixture.wgsl's, over the shape table).
 fn ms_student_t_g1(w: vec3<f32>, alpha: vec2<f32>, table: u32) -> f32 {
-    return 1.0 / (1.0 + ms_student_t_lambda(w, alpha, table));
+    return ms_mixture_g1(table, w, alpha);
 }
 
 // Height-correlated G2(wo, wi).
 fn ms_student_t_g2(wo: vec3<f32>, wi: vec3<f32>, alpha: vec2<f32>, table: u32) -> f32 {
-    return 1.0 / (1.0 + (ms_student_t_lambda(wo, alpha, table)
-        + ms_student_t_lambda(wi, alpha, table)));
+    return ms_mixture_g2(table, wo, wi, alpha);
 }
 
 // Separable G2(wo, wi) = G1(wo) G1(wi).
 fn ms_student_t_g2_separable(wo: vec3<f32>, wi: vec3<f32>, alpha: vec2<f32>, table: u32) -> f32 {
-    return ms_student_t_g1(wo, alpha, table) * ms_student_t_g1(wi, alpha, table);
+    return ms_mixture_g2_separable(table, wo, wi, alpha);
 }
 
 // The visible-normal density D_w(wm) = G1(w)(w·wm)D(wm)/|w.z|; w.z < 0 mirrored; 0 at grazing

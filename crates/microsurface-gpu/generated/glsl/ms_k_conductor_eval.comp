@@ -2543,14 +2543,13 @@ float ms_student_t_lambda(vec3 w_34, vec2 alpha_52, uint table_9) {
 }
 
 float ms_student_t_g1_(vec3 w_35, vec2 alpha_53, uint table_10) {
-    float _e3 = ms_student_t_lambda(w_35, alpha_53, table_10);
-    return (1.0 / (1.0 + _e3));
+    float _e3 = ms_mixture_g1_(table_10, w_35, alpha_53);
+    return _e3;
 }
 
 float ms_student_t_g2_(vec3 wo_14, vec3 wi_14, vec2 alpha_54, uint table_11) {
-    float _e4 = ms_student_t_lambda(wo_14, alpha_54, table_11);
-    float _e5 = ms_student_t_lambda(wi_14, alpha_54, table_11);
-    return (1.0 / (1.0 + (_e4 + _e5)));
+    float _e4 = ms_mixture_g2_(table_11, wo_14, wi_14, alpha_54);
+    return _e4;
 }
 
 float ms_student_t_pdf(vec3 w_36, vec3 wm_17, vec2 alpha_55, uint table_12) {
