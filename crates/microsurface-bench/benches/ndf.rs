@@ -201,6 +201,12 @@ fn main() {
         microfacet_type(&i, big);
         return;
     }
+    if std::env::var("MICROSURFACE_BENCH").as_deref() == Ok("construct") {
+        // Materials built per call (issue 45): construction per NDF, first use and after,
+        // the compensated BSDFs, and the textured rows.
+        construction(&i);
+        return;
+    }
     if std::env::var("MICROSURFACE_BENCH").as_deref() == Ok("any") {
         // Only the run-time door against the static type.
         any_door(&i, big);
@@ -1974,6 +1980,154 @@ fn exact_path(i: &Inputs) {
             l * 1e-3,
             g * 1e-3,
             s * 1e-3
+        );
+    }
+}
+
+/// Construction per call (issue 45): for every NDF of the door, f32 and f64, the first
+/// material of its shape in the process (the one-time fit, if any) and then materials at
+/// α drawn per call from 4096 distinct values, each built through `AnyMicrofacet::new`,
+/// against GGX's in the same run; the compensated BSDFs built per call; and the textured
+/// rows: α per call from a 256² texture, the material and its BSDF built at each call, then
+/// a sample and eval_pdf through `Box<dyn Bsdf>`, against one constant material.
+fn construction(i: &Inputs) {
+    use microsurface::bsdf::fresnel::Conductor;
+    use microsurface::bsdf::{Bsdf, RoughConductor};
+    use microsurface::scattering::{CompensatedConductor, CompensatedDielectric, Scheme};
+    use microsurface::AnyMicrofacet;
+    println!();
+    println!("construction: AnyMicrofacet::<F>::new(kind, α, α, shape), α per call in [0.05, 1] (ns per material; ratio to GGX's in the same run)");
+    let kinds: [(NdfKind, Option<f64>); 11] = [
+        (NdfKind::Ggx, None),
+        (NdfKind::Beckmann, None),
+        (NdfKind::DoubleGgx, None),
+        (NdfKind::Exponential, None),
+        (NdfKind::Gtr, Some(1.5)),
+        (NdfKind::StudentT, Some(2.5)),
+        (NdfKind::Ei, None),
+        (NdfKind::Erfc, None),
+        (NdfKind::K0, None),
+        (NdfKind::BesselK, Some(0.7)),
+        (NdfKind::GenExponential, Some(1.0)),
+    ];
+    let a32: Vec<f32> = i.alpha.iter().map(|&a| a as f32).collect();
+    // GTR's construction is milliseconds per new α today: fewer calls, so that the row ends.
+    let calls_of = |k: NdfKind| if k == NdfKind::Gtr { 64 } else { 200_000 };
+    let build64 = |k: NdfKind, s: Option<f64>, calls: usize| {
+        time(calls, |j| {
+            let m = AnyMicrofacet::<f64>::new(k, black_box(i.alpha[j]), i.alpha[j], s).unwrap();
+            black_box(&m);
+            m.is_fast() as u8 as f64
+        })
+    };
+    let build32 = |k: NdfKind, s: Option<f64>, calls: usize| {
+        time(calls, |j| {
+            let m = AnyMicrofacet::<f32>::new(k, black_box(a32[j]), a32[j], s).unwrap();
+            black_box(&m);
+            m.is_fast() as u8 as f64
+        })
+    };
+    let (g64, g32) = (
+        build64(NdfKind::Ggx, None, 200_000),
+        build32(NdfKind::Ggx, None, 200_000),
+    );
+    for (k, s) in kinds {
+        let t = Instant::now();
+        let first = AnyMicrofacet::<f64>::new(k, 0.3, 0.3, s).unwrap();
+        let first_ms = t.elapsed().as_secs_f64() * 1e3;
+        black_box(first);
+        let (t64, t32) = (build64(k, s, calls_of(k)), build32(k, s, calls_of(k)));
+        let name = match s {
+            Some(x) => format!("{k}:{x}"),
+            None => k.to_string(),
+        };
+        println!(
+            "{name:24} first use {first_ms:9.3} ms | after: f64 {t64:10.1} ns {:8.2}× | f32 {t32:10.1} ns {:8.2}×",
+            t64 / g64,
+            t32 / g32
+        );
+    }
+    println!();
+    println!("compensated construction, f32, α per call (ns per BSDF; isotropic, then αy = α/2)");
+    let gold = Conductor {
+        eta: [0.14f32, 0.42, 1.37],
+        k: [3.98, 2.38, 1.60],
+    };
+    for (k, s) in [(NdfKind::Ggx, None), (NdfKind::Beckmann, None)] {
+        let iso = time(20_000, |j| {
+            let m = AnyMicrofacet::<f32>::new(k, a32[j], a32[j], s).unwrap();
+            let b = CompensatedConductor::new(m, gold, Scheme::KullaConty);
+            black_box(&b);
+            b.table().e_avg()
+        });
+        let die = time(20_000, |j| {
+            let m = AnyMicrofacet::<f32>::new(k, a32[j], a32[j], s).unwrap();
+            let b = CompensatedDielectric::new(m, 1.5f32, Scheme::KullaConty);
+            black_box(&b);
+            b.tables().outside.e_avg()
+        });
+        println!("{k:24} conductor {iso:10.1} ns | dielectric η = 1.5 {die:10.1} ns");
+    }
+    println!();
+    println!("textured: α per call from a 256² texture, material + RoughConductor built per call, sample + eval_pdf through Box<dyn Bsdf<f32>> (ns per call; ratio to one constant material)");
+    let mut s = 0x9e37_79b9_7f4a_7c15u64;
+    let mut next = || {
+        s ^= s << 13;
+        s ^= s >> 7;
+        s ^= s << 17;
+        (s >> 40) as f32 / (1u64 << 24) as f32
+    };
+    let texture: Vec<f32> = (0..256 * 256).map(|_| 0.05 + 0.95 * next()).collect();
+    let w32: Vec<[f32; 3]> =
+        i.w.iter()
+            .map(|w| [w.x as f32, w.y as f32, w.z as f32])
+            .collect();
+    let xi32: Vec<[f32; 2]> = i.xi.iter().map(|x| [x[0] as f32, x[1] as f32]).collect();
+    type Dyn = Box<dyn Bsdf<f32, Value = [f32; 3]>>;
+    for (k, s) in kinds {
+        if k == NdfKind::Gtr {
+            // (Milliseconds per new α today: the row would not end.)
+            println!(
+                "{:24} (per-α fit: not measured textured)",
+                format!("{k}:1.5")
+            );
+            continue;
+        }
+        let calls = if k == NdfKind::GenExponential {
+            2_000
+        } else {
+            100_000
+        };
+        let constant: Dyn = Box::new(RoughConductor::new(
+            AnyMicrofacet::<f32>::new(k, 0.3, 0.3, s).unwrap(),
+            gold,
+        ));
+        let step = |b: &Dyn, j: usize| {
+            let wo = w32[j];
+            let wo = [wo[0], wo[1], wo[2].abs().max(1e-3)];
+            match b.sample(wo, 0.5, xi32[j]) {
+                Some(smp) => b.eval_pdf(wo, smp.wi).1 as f64,
+                None => 0.0,
+            }
+        };
+        let mut tex_at = 0usize;
+        let textured = time(calls, |j| {
+            tex_at = (tex_at + 40_503) & 0xffff;
+            let a = texture[tex_at];
+            let b: Dyn = Box::new(RoughConductor::new(
+                AnyMicrofacet::<f32>::new(k, a, a, s).unwrap(),
+                gold,
+            ));
+            step(&b, j)
+        });
+        let fixed = time(calls, |j| step(&constant, j));
+        let name = match s {
+            Some(x) => format!("{k}:{x}"),
+            None => k.to_string(),
+        };
+        println!(
+            "{name:24} textured {textured:10.1} ns | constant {fixed:10.1} ns | {:6.2}×",
+            textured / fixed
         );
     }
 }

@@ -3689,6 +3689,53 @@ fn matched_orders_and_table_values() {
         let want = values.len() >= 4 && values.iter().all(|v| v.is_finite());
         fails.check(t.is_some() == want, || format!("from_values({values:?})"));
     }
+    // Anisotropic tables (E(μ, φ), issue 45) from hostile harmonics, and E at hostile
+    // directions: a table or None as the rows allow, E finite for any direction (zero,
+    // non-finite and subnormal components included) of a table of finite values.
+    let row = |v: f64| vec![v; 33];
+    for harmonics in [
+        vec![],
+        vec![row(0.01)],
+        vec![row(-0.05), row(0.002)],
+        vec![vec![0.01; 32]],
+        vec![row(f64::NAN)],
+        vec![row(1e300), row(-1e300)],
+    ] {
+        let t = no_panic("from_harmonics", &harmonics, || {
+            AlbedoTable::from_harmonics(row(0.9), harmonics.clone())
+        });
+        let want = harmonics
+            .iter()
+            .all(|h| h.len() == 33 && h.iter().all(|v| v.is_finite()));
+        fails.check(t.is_some() == want, || {
+            format!("from_harmonics({harmonics:?})")
+        });
+        let Some(t) = t else { continue };
+        for _ in 0..200 {
+            let w: [f64; 3] = if r.chance(0.5) {
+                [0, 1, 2].map(|_| {
+                    r.pick(&[
+                        0.0,
+                        -0.0,
+                        1.0,
+                        -1.0,
+                        5e-324,
+                        -1e-300,
+                        1e300,
+                        f64::INFINITY,
+                        f64::NAN,
+                    ])
+                })
+            } else {
+                unit_direction::<f64>(&mut r)
+            };
+            let e = no_panic("AlbedoTable::e_dir", w, || t.e_dir(w));
+            let finite_in = w.iter().all(|x| x.is_finite());
+            fails.check(!finite_in || e.is_finite(), || {
+                format!("e_dir({w:?}) = {e} over {} harmonics", harmonics.len())
+            });
+        }
+    }
     fails.finish("matched_orders_and_table_values");
 }
 

@@ -57,19 +57,10 @@ impl Exact {
             K::DoubleGgx => UnitSlopes::DoubleGgx,
             K::Exponential => UnitSlopes::Exponential,
             K::StudentT | K::Ei | K::Erfc | K::K0 | K::BesselK | K::GenExponential => {
-                let ndf = crate::AnyNdf::new(kind, ax, gamma)?;
-                if let crate::AnyNdf::StudentT(t) = ndf {
-                    if !t.has_finite_lambda() {
-                        return Err(ParamError::Shape {
-                            name: "student_t gamma (visible normals and G need a finite Lambda)",
-                            range: "(1.5, 1e6]",
-                            value: t.gamma(),
-                        });
-                    }
-                }
+                let (unit, posterior) = shaped_unit(kind, gamma)?;
                 return Ok(Exact {
                     alpha: (ax, ay),
-                    inner: ExactInner::Shaped(Shaped::new(&ndf, ax, ay)?),
+                    inner: ExactInner::Shaped(Shaped::from_unit(unit, posterior, ax, ay)?),
                 });
             }
             K::Gtr => {
@@ -191,4 +182,45 @@ impl MicrofacetDistribution<f64> for Exact {
     fn pdf_dcos(&self, wm: [f64; 3]) -> f64 {
         self.surface().pdf_dcos(Vec3::from(wm))
     }
+}
+
+/// The α = 1 member of a family kind at `shape` and its posterior sampler, validated
+/// (Student-T needs a finite Λ), from this thread's last one where the shape is the same:
+/// its normalisation (Γ functions) is then not recomputed for each material of a
+/// textured α (BENCHMARKS.md, "Materials per call").
+fn shaped_unit(
+    kind: crate::NdfKind,
+    shape: Option<f64>,
+) -> Result<(crate::AnyNdf, Option<crate::ndf::mixture::Posterior>), ParamError> {
+    use std::cell::Cell;
+    type Unit = (crate::AnyNdf, Option<crate::ndf::mixture::Posterior>);
+    thread_local! {
+        static LAST: Cell<Option<((crate::NdfKind, u64), Unit)>> = const { Cell::new(None) };
+    }
+    // (The members without a shape ignore it: key 0. NaN, a missing shape, is never kept.)
+    let key = (
+        kind,
+        match kind.shape_name() {
+            Some(_) => shape.unwrap_or(f64::NAN).to_bits(),
+            None => 0,
+        },
+    );
+    if let Some((k, unit)) = LAST.with(|c| c.get()) {
+        if k == key {
+            return Ok(unit);
+        }
+    }
+    let ndf = crate::AnyNdf::new(kind, 1.0, shape)?;
+    if let crate::AnyNdf::StudentT(t) = ndf {
+        if !t.has_finite_lambda() {
+            return Err(ParamError::Shape {
+                name: "student_t gamma (visible normals and G need a finite Lambda)",
+                range: "(1.5, 1e6]",
+                value: t.gamma(),
+            });
+        }
+    }
+    let unit = Shaped::unit_of(&ndf);
+    LAST.with(|c| c.set(Some((key, unit))));
+    Ok(unit)
 }

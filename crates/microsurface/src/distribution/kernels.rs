@@ -432,15 +432,29 @@ pub struct Shaped {
 }
 
 impl Shaped {
-    /// `ndf` (any α: only its shape is used) at roughness (αx, αy), each in [1e-6, 1e6].
-    pub fn new(ndf: &crate::AnyNdf, alpha_x: f64, alpha_y: f64) -> Result<Self, ParamError> {
+    /// The α = 1 member of `ndf` and its posterior sampler (None for the generalised
+    /// exponential): what [`Shaped`] keeps of the shape.
+    pub fn unit_of(ndf: &crate::AnyNdf) -> (crate::AnyNdf, Option<crate::ndf::mixture::Posterior>) {
+        (
+            ndf.with_alpha(1.0),
+            ndf.beckmann_mixing()
+                .and_then(crate::ndf::mixture::Posterior::new),
+        )
+    }
+
+    /// The member `unit` (α = 1, as [`Shaped::unit_of`] gives it, with its posterior) at
+    /// roughness (αx, αy), each in [1e-6, 1e6].
+    pub fn from_unit(
+        unit: crate::AnyNdf,
+        posterior: Option<crate::ndf::mixture::Posterior>,
+        alpha_x: f64,
+        alpha_y: f64,
+    ) -> Result<Self, ParamError> {
         Ok(Shaped {
-            unit: ndf.with_alpha(1.0),
+            unit,
             alpha_x: crate::error::check_alpha(alpha_x)?,
             alpha_y: crate::error::check_alpha(alpha_y)?,
-            posterior: ndf
-                .beckmann_mixing()
-                .and_then(crate::ndf::mixture::Posterior::new),
+            posterior,
         })
     }
 

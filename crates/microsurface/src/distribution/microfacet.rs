@@ -6,13 +6,14 @@
 
 use super::exact::{Exact, ExactInner};
 use super::kernels::Isotropic;
-use super::{cached, FitCache, MicrofacetDistribution, Sample, UniformStream};
+use super::{shared_fit, Fit, MicrofacetDistribution, Sample, SharedFits, UniformStream};
 use crate::bsdf::frame::{dot, normalize};
 use crate::fast::{self, Real};
 use crate::sampling::visible::UnitSlopes;
 use crate::{Beckmann, DoubleGgx, Exponential, Ggx, Gtr, ParamError};
+use std::cell::Cell;
 use std::marker::PhantomData;
-use std::sync::{Arc, OnceLock};
+use std::sync::OnceLock;
 
 mod sealed {
     pub trait Sealed {}
@@ -539,7 +540,7 @@ impl Shape for Exponential {
 #[doc(hidden)]
 #[derive(Clone, Debug)]
 pub enum GtrData {
-    Fitted(Arc<fast::gtr::FittedGtr>),
+    Fitted(Fit<fast::gtr::FittedGtr>),
     Ggx,
 }
 
@@ -601,7 +602,7 @@ impl Shape for Gtr {
 macro_rules! family_shape {
     ($($t:ident),*) => {$(
         impl Shape for crate::$t {
-            type Data = Arc<fast::fitted::FittedShape>;
+            type Data = Fit<fast::fitted::FittedShape>;
             const UNIT: Option<UnitSlopes> = None;
             const FAMILY: Option<crate::NdfKind> = Some(crate::NdfKind::$t);
             #[inline(always)]
@@ -735,10 +736,18 @@ impl<F: Real> Microfacet<F, Gtr> {
         let data = if gamma == 2.0 {
             GtrData::Ggx
         } else if iso {
-            static FITS: FitCache<(u64, u64), fast::gtr::FittedGtr> = OnceLock::new();
-            GtrData::Fitted(cached(&FITS, (ax.to_bits(), gamma.to_bits()), || {
-                fast::gtr::FittedGtr::new(ax, gamma)
-            })?)
+            type Key = (u64, u64);
+            static FITS: SharedFits<Key, fast::gtr::FittedGtr> = OnceLock::new();
+            thread_local! {
+                static LAST: Cell<Option<(Key, &'static fast::gtr::FittedGtr)>> =
+                    const { Cell::new(None) };
+            }
+            GtrData::Fitted(shared_fit(
+                &FITS,
+                &LAST,
+                (ax.to_bits(), gamma.to_bits()),
+                || fast::gtr::FittedGtr::new(ax, gamma),
+            )?)
         } else {
             return Err(ParamError::Anisotropic(gamma));
         };
@@ -753,32 +762,47 @@ impl<F: Real> Microfacet<F, Gtr> {
     }
 }
 
-impl<F: Real, N: Shape<Data = Arc<fast::fitted::FittedShape>>> Microfacet<F, N> {
+impl<F: Real, N: Shape<Data = Fit<fast::fitted::FittedShape>>> Microfacet<F, N> {
     /// A member of the family's Beckmann mixtures ([`crate::StudentT`] with `shape` = γ > 3/2,
     /// [`crate::BesselK`] with a ∈ [0.1, 100], [`crate::Ei`], [`crate::Erfc`], [`crate::K0`]
-    /// with `None`) at roughness (αx, αy), each in [1e-6, 1e6]: Λ₁ of the shape fitted once
-    /// here ([`fast::fitted`]: milliseconds, cached per shape; Bessel-K a fraction of a second,
-    /// its exact Λ integrates K_ν),
+    /// with `None`) at roughness (αx, αy), each in [1e-6, 1e6]: Λ₁ of the shape fitted on the
+    /// shape's first use in the process ([`fast::fitted`]: milliseconds; Bessel-K tens of
+    /// milliseconds, its exact Λ integrates K_ν) and shared by every later material of the
+    /// shape, whose construction is then a thread-local lookup (tens of nanoseconds:
+    /// BENCHMARKS.md, "Materials per call");
     /// relative error ≤ 1e-7 (tests/fast.rs); D exact; visible normals by the mixing
     /// variable's posterior (exact, a fraction of a microsecond). Typed errors as
     /// [`crate::AnyNdf::new`]'s.
     pub fn with_shape(alpha_x: F, alpha_y: F, shape: Option<f64>) -> Result<Self, ParamError> {
         let (ax, ay) = (check(alpha_x)?, check(alpha_y)?);
         let kind = N::FAMILY.expect("the family's Shape impls name their kind");
-        let ndf = crate::AnyNdf::new(kind, 1.0, shape)?;
-        static FITS: FitCache<(crate::NdfKind, u64), fast::fitted::FittedShape> = OnceLock::new();
-        let key = (kind, ndf.shape().unwrap_or(0.0).to_bits());
-        let data = cached(&FITS, key, || fast::fitted::FittedShape::new(&ndf))?;
+        // The shape as the NDF takes it: ignored by the members without one (None: NaN,
+        // which no fit is made for, so an error on every call).
+        let gamma = match kind.shape_name() {
+            Some(_) => shape.unwrap_or(f64::NAN),
+            None => f64::NAN,
+        };
+        type Key = (crate::NdfKind, u64);
+        static FITS: SharedFits<Key, fast::fitted::FittedShape> = OnceLock::new();
+        thread_local! {
+            static LAST: Cell<Option<(Key, &'static fast::fitted::FittedShape)>> =
+                const { Cell::new(None) };
+        }
+        // (A member without a shape keys on 0, never NaN: its one fit is found.)
+        let bits = if kind.shape_name().is_some() {
+            gamma.to_bits()
+        } else {
+            0
+        };
+        let data = shared_fit(&FITS, &LAST, (kind, bits), || {
+            fast::fitted::FittedShape::new(&crate::AnyNdf::new(kind, 1.0, shape)?)
+        })?;
         Ok(Microfacet {
             ax: alpha_x,
             ay: alpha_y,
             iso: alpha_x == alpha_y,
             data,
-            exact: ExactParams {
-                ax,
-                ay,
-                gamma: ndf.shape().unwrap_or(f64::NAN),
-            },
+            exact: ExactParams { ax, ay, gamma },
             _n: PhantomData,
         })
     }

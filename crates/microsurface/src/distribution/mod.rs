@@ -316,7 +316,7 @@ impl UniformStream {
 }
 
 /// A process-wide cache of fits or tables ([`crate::AnyMicrofacet::FIT_CACHE_CAPACITY`]
-/// entries).
+/// entries), the computed tables' (by `Arc`).
 pub(crate) type FitCache<K, V> = OnceLock<Mutex<HashMap<K, Arc<V>>>>;
 
 /// The value of `key` from `cache`, or `make`'s, kept while the cache has room. `make` runs
@@ -339,4 +339,87 @@ pub(crate) fn cached<K: Eq + Hash, V, E>(
         return Ok(m.entry(key).or_insert(v).clone());
     }
     Ok(v)
+}
+
+/// A fit shared by every material of its shape: the process-wide one (`Static`, kept for the
+/// process: the cache never evicts, so holding it by reference costs no reference count, and
+/// a material is built without an atomic operation), or one fitted for its material alone
+/// once the cache is full (`Own`).
+#[doc(hidden)]
+#[derive(Debug)]
+pub enum Fit<V: 'static> {
+    /// The process-wide fit of its shape.
+    Static(&'static V),
+    /// A fit of this material alone (the cache was full).
+    Own(Arc<V>),
+}
+
+impl<V> Clone for Fit<V> {
+    #[inline]
+    fn clone(&self) -> Self {
+        match self {
+            Fit::Static(v) => Fit::Static(v),
+            Fit::Own(v) => Fit::Own(v.clone()),
+        }
+    }
+}
+
+impl<V> std::ops::Deref for Fit<V> {
+    type Target = V;
+    #[inline(always)]
+    fn deref(&self) -> &V {
+        match self {
+            Fit::Static(v) => v,
+            Fit::Own(v) => v,
+        }
+    }
+}
+
+/// The process-wide fits of one kind (a shape's, GTR's): a map from key to fit behind a
+/// lock, in front of it each thread's last hit (`last`, a `thread_local!` of the call site),
+/// so that a renderer building a material per shading point, with the shape fixed and α
+/// textured, pays one thread-local read and a key comparison (no lock, no hash, no
+/// reference count: BENCHMARKS.md, "Materials per call").
+pub(crate) type SharedFits<K, V> = OnceLock<Mutex<HashMap<K, &'static V>>>;
+
+/// The fit of `key` (validated by `make`, which returns its typed error on a miss: a hit
+/// was validated when it was made): from this thread's last hit, the process-wide map, or
+/// `make`, run outside the lock and then kept for the process (leaked, while the map has
+/// room: at most [`crate::distribution::FIT_CACHE_CAPACITY`] fits, each a few kilobytes),
+/// or, once the map is full, kept by this material alone.
+pub(crate) fn shared_fit<K: Copy + Eq + Hash + 'static, V: Send + Sync + 'static, E>(
+    cache: &'static SharedFits<K, V>,
+    last: &'static std::thread::LocalKey<std::cell::Cell<Option<(K, &'static V)>>>,
+    key: K,
+    make: impl FnOnce() -> Result<V, E>,
+) -> Result<Fit<V>, E> {
+    if let Some((k, v)) = last.with(|c| c.get()) {
+        if k == key {
+            return Ok(Fit::Static(v));
+        }
+    }
+    let map = cache.get_or_init(Default::default);
+    let hit = map
+        .lock()
+        .unwrap_or_else(|e| e.into_inner())
+        .get(&key)
+        .copied();
+    let v: &'static V = match hit {
+        Some(v) => v,
+        None => {
+            let fresh = make()?;
+            let mut m = map.lock().unwrap_or_else(|e| e.into_inner());
+            match m.get(&key) {
+                Some(v) => v,
+                None if m.len() < crate::distribution::any::FIT_CACHE_CAPACITY => {
+                    let v: &'static V = Box::leak(Box::new(fresh));
+                    m.insert(key, v);
+                    v
+                }
+                None => return Ok(Fit::Own(Arc::new(fresh))),
+            }
+        }
+    };
+    last.with(|c| c.set(Some((key, v))));
+    Ok(Fit::Static(v))
 }

@@ -82,12 +82,14 @@ impl<F: Real, D: MicrofacetDistribution<F>, Fr: Fresnel<F, N>, const N: usize>
         &self.ss
     }
 
-    /// Kulla–Conty's lobe f_ms(μo, μi) without F_ms (0 unless both are above the surface).
-    fn f_ms(&self, mu_o: f64, mu_i: f64) -> f64 {
-        if !(mu_o > 0.0 && mu_i > 0.0) {
+    /// Kulla–Conty's lobe f_ms(wo, wi) without F_ms (0 unless both are off the horizon):
+    /// (1 − E(wo))(1 − E(wi))/(π(1 − E_avg)), E of the direction (its azimuth too, for an
+    /// anisotropic material), whose integral against cos θi is 1 − E(wo) exactly.
+    fn f_ms(&self, wo: [f64; 3], wi: [f64; 3]) -> f64 {
+        if !(wo[2].abs() > 0.0 && wi[2].abs() > 0.0) {
             return 0.0;
         }
-        let (eo, ei) = (self.table.e(mu_o), self.table.e(mu_i));
+        let (eo, ei) = (self.table.e_dir(wo), self.table.e_dir(wi));
         // (The clamped lobe and its own normalisation: f ≥ 0 where the interpolant overshoots
         // 1, and the lobe still integrates to 1 − E(μo).)
         let den = std::f64::consts::PI * self.table.lost_avg();
@@ -97,10 +99,10 @@ impl<F: Real, D: MicrofacetDistribution<F>, Fr: Fresnel<F, N>, const N: usize>
         (1.0 - eo).max(0.0) * (1.0 - ei).max(0.0) / den
     }
 
-    /// Kulla–Conty's probability of sampling the added lobe: 1 − E(μo), its share of the
+    /// Kulla–Conty's probability of sampling the added lobe: 1 − E(wo), its share of the
     /// energy with F = 1.
-    fn p_ms(&self, mu_o: f64) -> f64 {
-        (1.0 - self.table.e(mu_o)).clamp(0.0, 1.0)
+    fn p_ms(&self, wo: [f64; 3]) -> f64 {
+        (1.0 - self.table.e_dir(wo)).clamp(0.0, 1.0)
     }
 }
 
@@ -111,16 +113,17 @@ impl<F: Real, D: MicrofacetDistribution<F>, Fr: Fresnel<F, N>, const N: usize> B
 
     fn eval(&self, wo: [F; 3], wi: [F; 3]) -> [F; N] {
         let f = self.ss.eval(wo, wi).map(F::to_f64);
-        let (zo, zi) = (wo[2].to_f64(), wi[2].to_f64());
+        let (wo64, wi64) = (wo.map(F::to_f64), wi.map(F::to_f64));
+        let (zo, zi) = (wo64[2], wi64[2]);
         match self.scheme {
             Scheme::Turquin => {
-                let e = self.table.e(zo.abs());
+                let e = self.table.e_dir(wo64);
                 std::array::from_fn(|c| F::from_f64(f[c] * (1.0 + self.factor[c] * (1.0 - e) / e)))
             }
             Scheme::KullaConty => {
                 // (Both sides as the single-scattering lobe: wo and wi in one hemisphere.)
                 let ms = if zo * zi > 0.0 {
-                    self.f_ms(zo.abs(), zi.abs())
+                    self.f_ms(wo64, wi64)
                 } else {
                     0.0
                 };
@@ -135,7 +138,7 @@ impl<F: Real, D: MicrofacetDistribution<F>, Fr: Fresnel<F, N>, const N: usize> B
             Scheme::Turquin => p,
             Scheme::KullaConty => {
                 let (zo, zi) = (wo[2].to_f64(), wi[2].to_f64());
-                let q = self.p_ms(zo.abs());
+                let q = self.p_ms(wo.map(F::to_f64));
                 let cos = if zo * zi > 0.0 { zi.abs() } else { 0.0 };
                 F::from_f64((1.0 - q) * p.to_f64() + q * cos / std::f64::consts::PI)
             }
@@ -156,7 +159,7 @@ impl<F: Real, D: MicrofacetDistribution<F>, Fr: Fresnel<F, N>, const N: usize> B
                 // The sample's own f scaled (eval at its wi would recompute the half vector,
                 // which can round onto a singular NDF's pole: f = ∞ with the sample's finite
                 // pdf, Erfc at α = 0.057).
-                let e = self.table.e(wo[2].to_f64().abs());
+                let e = self.table.e_dir(wo.map(F::to_f64));
                 let f = std::array::from_fn(|c| {
                     F::from_f64(s.f[c].to_f64() * (1.0 + self.factor[c] * (1.0 - e) / e))
                 });
@@ -166,7 +169,7 @@ impl<F: Real, D: MicrofacetDistribution<F>, Fr: Fresnel<F, N>, const N: usize> B
                 Some(BsdfSample { f, ..s })
             }
             Scheme::KullaConty => {
-                let q = self.p_ms(wo[2].to_f64().abs());
+                let q = self.p_ms(wo.map(F::to_f64));
                 let uc = uc.to_f64();
                 let wi = if uc < q {
                     // A cosine-weighted direction on wo's side.

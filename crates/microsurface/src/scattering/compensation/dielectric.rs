@@ -172,7 +172,7 @@ impl<F: Real, D: MicrofacetDistribution<F>, const N: usize> CompensatedDielectri
             return 0.0;
         }
         let s = usize::from(wo[2] < 0.0);
-        let lost = 1.0 - self.table(s).e(mo);
+        let lost = 1.0 - self.table(s).e_dir(wo);
         let crossed = (wi[2] < 0.0) != (wo[2] < 0.0);
         let t = if crossed { 1 - s } else { s };
         let share = if crossed { self.k[s] } else { 1.0 - self.k[s] };
@@ -180,7 +180,7 @@ impl<F: Real, D: MicrofacetDistribution<F>, const N: usize> CompensatedDielectri
         if !(den > 0.0 && lost > 0.0) {
             return 0.0;
         }
-        let f = share * lost * (1.0 - self.table(t).e(mi)).max(0.0) / den;
+        let f = share * lost * (1.0 - self.table(t).e_dir(wi)).max(0.0) / den;
         if crossed && self.transport == Transport::Radiance {
             let eta = self.ss.eta().to_f64();
             let etap = if s == 0 { eta } else { 1.0 / eta };
@@ -193,13 +193,13 @@ impl<F: Real, D: MicrofacetDistribution<F>, const N: usize> CompensatedDielectri
     /// Kulla–Conty's probability of sampling the added lobes: 1 − E_s(μo).
     fn p_ms(&self, wo: [f64; 3]) -> f64 {
         let s = usize::from(wo[2] < 0.0);
-        (1.0 - self.table(s).e(wo[2].abs())).clamp(0.0, 1.0)
+        (1.0 - self.table(s).e_dir(wo)).clamp(0.0, 1.0)
     }
 
     /// Turquin's factor 1/E_s(μo).
     fn scale(&self, wo: [f64; 3]) -> f64 {
         let s = usize::from(wo[2] < 0.0);
-        let e = self.table(s).e(wo[2].abs());
+        let e = self.table(s).e_dir(wo);
         if e > 0.0 {
             1.0 / e
         } else {

@@ -11,7 +11,7 @@ mod tables;
 pub use conductor::CompensatedConductor;
 pub use dielectric::CompensatedDielectric;
 pub(crate) use tables::GL8;
-pub use tables::{dielectric_table_bytes, AlbedoTable, DielectricTables, SHIPPED_ETAS};
+pub use tables::{dielectric_table_bytes, AlbedoTable, DielectricTables, AZIMUTHS, SHIPPED_ETAS};
 
 /// Which compensation: see the [module docs](crate::scattering).
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]

@@ -38,14 +38,33 @@ pub(crate) const GL8: [(f64, f64); 8] = [
 ];
 
 /// E(μ) of one material and its average: see the [module docs](crate::scattering).
+///
+/// An anisotropic material's albedo depends on wo's azimuth φ too (a GGX α = (0.9, 0.2)
+/// conductor loses 8 % of the energy at μ = 0.2 seen along the smooth axis and a fifth of it
+/// along the rough one), so its table holds E(μ, φ) as a cosine series in 2φ: E is even in φ
+/// and symmetric about φ = π/2 (the NDF's mirror symmetries), so E(μ, φ) =
+/// Σ_{m<M} c_m(μ) cos 2mφ, whose coefficients come from the albedo at the M azimuths
+/// φ_j = jπ/(2(M − 1)) (the cosine transform of Chebyshev–Lobatto interpolation in cos 2φ:
+/// spectrally accurate in the azimuth), each cubic in √μ as the isotropic table. c₀ is the
+/// mean over the azimuth ([`AlbedoTable::e`], [`AlbedoTable::values`]); [`AlbedoTable::e_dir`]
+/// is E at a direction.
 #[derive(Clone, Debug, PartialEq)]
 pub struct AlbedoTable {
-    /// E at √μ = k/(n − 1), n ≥ 4 nodes.
+    /// E (the mean over wo's azimuth, c₀) at √μ = k/(n − 1), n ≥ 4 nodes.
     e: Vec<f64>,
+    /// c_m at the same nodes for m = 1 … M − 1, m-major (empty: isotropic).
+    harmonics: Vec<Vec<f64>>,
     e_avg: f64,
-    /// 2∫max(0, 1 − E(μ))μ dμ of the interpolant (see [`AlbedoTable::lost_avg`]).
+    /// (1/π)∫max(0, 1 − E(w)) cos θ dω of the interpolant (see [`AlbedoTable::lost_avg`]).
     lost_avg: f64,
 }
+
+/// Azimuths of an anisotropic material's table (M): φ_j = jπ/16 on [0, π/2]. The albedo's
+/// change with the azimuth is smooth (the projected roughness αx² cos²φ + αy² sin²φ): with 9
+/// azimuths E(wo) at azimuths between them is within 3.9e-4 of the quadrature for GGX at
+/// aspects 4 and 4.5, 5.7e-5 for Beckmann at 3 (tests/compensate.rs), the size of the
+/// interpolation in √μ.
+pub const AZIMUTHS: usize = 9;
 
 impl AlbedoTable {
     /// The table of `dist` (f32 or f64): interpolated from the tables the library ships
@@ -91,26 +110,57 @@ impl AlbedoTable {
         progress: &(dyn Fn(usize, usize) + Sync),
     ) -> Self {
         let (ax, ay) = dist.alpha();
-        let azimuths: &[f64] = if ax == ay {
-            &[0.0]
-        } else {
-            &[0.0, 0.25, 0.5, 0.75]
-        };
+        let azimuths = if ax == ay { 1 } else { AZIMUTHS };
         let done = std::sync::atomic::AtomicUsize::new(0);
-        Self::from_fn(|mu| {
+        Self::from_fn_azimuthal(NODES, azimuths, |mu, phi| {
             let st = ((1.0 - mu) * (1.0 + mu)).sqrt();
-            let e = azimuths
-                .iter()
-                .map(|&p| {
-                    let (sp, cp) = (p * std::f64::consts::FRAC_PI_2).sin_cos();
-                    single_scattering_albedo_tol(dist, [st * cp, st * sp, mu], TABLE_TOL)
-                })
-                .sum::<f64>()
-                / azimuths.len() as f64;
+            let (sp, cp) = phi.sin_cos();
+            let e = single_scattering_albedo_tol(dist, [st * cp, st * sp, mu], TABLE_TOL);
             let k = done.fetch_add(1, std::sync::atomic::Ordering::Relaxed) + 1;
-            progress(k, NODES);
+            progress(k, NODES * azimuths);
             e
         })
+    }
+
+    /// The table of the albedo function `e(μ, φ)` of wo's cosine and azimuth, at `n` nodes
+    /// uniform in √μ (n ≥ 4; fewer are taken as 4) and `m` azimuths φ_j = jπ/(2(m − 1)) on
+    /// [0, π/2] (m ≤ 1: isotropic, `e` called at φ = 0): `e` must be even in φ and symmetric
+    /// about π/2, as every NDF of the library is under its mirror symmetries.
+    pub fn from_fn_azimuthal(n: usize, m: usize, e: impl Fn(f64, f64) -> f64) -> Self {
+        let n = n.max(4);
+        if m <= 1 {
+            return Self::from_nodes((0..n).map(|k| e(node_mu(k, n), 0.0)).collect());
+        }
+        let steps = (m - 1) as f64;
+        let samples: Vec<Vec<f64>> = (0..m)
+            .map(|j| {
+                let phi = j as f64 * std::f64::consts::FRAC_PI_2 / steps;
+                (0..n).map(|k| e(node_mu(k, n), phi)).collect()
+            })
+            .collect();
+        // The cosine transform of the samples in θ = 2φ at θ_j = jπ/(m − 1): c_q =
+        // (2/(m − 1)) Σ″_j E_j cos(qjπ/(m − 1)) (Σ″: the end terms halved), with c₀ and
+        // c_{m−1} halved, so that E(θ) = Σ_q c_q cos qθ passes through the samples.
+        let coef: Vec<Vec<f64>> = (0..m)
+            .map(|q| {
+                let end = if q == 0 || q == m - 1 { 0.5 } else { 1.0 };
+                (0..n)
+                    .map(|k| {
+                        let sum: f64 = (0..m)
+                            .map(|j| {
+                                let w = if j == 0 || j == m - 1 { 0.5 } else { 1.0 };
+                                let c = (std::f64::consts::PI * (q * j) as f64 / steps).cos();
+                                w * samples[j][k] * c
+                            })
+                            .sum();
+                        end * 2.0 / steps * sum
+                    })
+                    .collect()
+            })
+            .collect();
+        let mut coef = coef.into_iter();
+        let e0 = coef.next().expect("m ≥ 2 rows");
+        Self::from_parts(e0, coef.collect())
     }
 
     /// The table of the albedo function `e` (evaluated at the 33 nodes).
@@ -144,30 +194,66 @@ impl AlbedoTable {
         }
         let x =
             ((la - l0) / (l1 - l0) * (nodes.len() - 1) as f64).clamp(0.0, (nodes.len() - 1) as f64);
+        let (j0, w) = lagrange4_weights(x, nodes.len());
         Some(Self::from_nodes(
             (0..NODES)
-                .map(|k| lagrange4(x, nodes.len(), |j| grid.value(j, k, 0) as f64))
+                .map(|k| (0..4).map(|j| w[j] * grid.value(j0 + j, k, 0) as f64).sum())
                 .collect(),
         ))
     }
 
     /// The table of E at the nodes, with E_avg of its interpolant.
     fn from_nodes(e: Vec<f64>) -> Self {
+        Self::from_parts(e, Vec::new())
+    }
+
+    /// The table of c₀ and the azimuthal harmonics at the nodes, with E_avg and the lost
+    /// average of its interpolant.
+    fn from_parts(e: Vec<f64>, harmonics: Vec<Vec<f64>>) -> Self {
         let n = e.len();
         let mut t = AlbedoTable {
             e,
+            harmonics,
             e_avg: 0.0,
             lost_avg: 0.0,
         };
-        // E_avg = 2∫E μ dμ = 4∫E(s²) s³ ds over the interpolant, interval by interval.
+        // E_avg = 2∫E μ dμ = 4∫E(s²) s³ ds over the interpolant, interval by interval (the
+        // harmonics average to 0 over the azimuth); the lost average over the azimuth too,
+        // by the midpoint rule on 32 azimuths of [0, π/2] (exact for the series' terms, which
+        // are polynomials of degree ≤ 16 in cos 2φ, away from max's kink).
         let h = 1.0 / (n - 1) as f64;
+        let azimuths: Vec<[f64; 2]> = if t.harmonics.is_empty() {
+            vec![[1.0, 0.0]]
+        } else {
+            (0..32)
+                .map(|j| {
+                    let phi = (j as f64 + 0.5) * std::f64::consts::FRAC_PI_2 / 32.0;
+                    [phi.cos(), phi.sin()]
+                })
+                .collect()
+        };
         let (mut sum, mut lost) = (0.0, 0.0);
-        for k in 0..n - 1 {
-            for (x, w) in GL8 {
-                let s = (k as f64 + x) * h;
-                let e = t.e_at_s(s);
-                sum += w * h * e * s * s * s;
-                lost += w * h * (1.0 - e).max(0.0) * s * s * s;
+        if t.harmonics.is_empty() {
+            // (The isotropic table, built per material of a textured α: the rule's points and
+            // their interpolation weights are fixed for n, formed once.)
+            for p in gl_points(n).iter() {
+                let e: f64 = (0..4).map(|j| p.weights[j] * t.e[p.first + j]).sum();
+                sum += p.w * e;
+                lost += p.w * (1.0 - e).max(0.0);
+            }
+        } else {
+            for k in 0..n - 1 {
+                for (x, w) in GL8 {
+                    let s = (k as f64 + x) * h;
+                    let e = t.e_at_s(s);
+                    sum += w * h * e * s * s * s;
+                    let l = azimuths
+                        .iter()
+                        .map(|&[c, sn]| (1.0 - t.e_at(s, c * c - sn * sn)).max(0.0))
+                        .sum::<f64>()
+                        / azimuths.len() as f64;
+                    lost += w * h * l * s * s * s;
+                }
             }
         }
         t.e_avg = 4.0 * sum;
@@ -183,9 +269,76 @@ impl AlbedoTable {
             .then(|| Self::from_nodes(values))
     }
 
-    /// E at the nodes (the interpolant passes through them).
+    /// E at the nodes (the interpolant passes through them); for an anisotropic material,
+    /// its mean over wo's azimuth (c₀).
     pub fn values(&self) -> &[f64] {
         &self.e
+    }
+
+    /// The azimuthal harmonics c₁ … c_{M−1} at the nodes (empty for an isotropic
+    /// material): E(μ, φ) = Σ_m c_m(μ) cos 2mφ with c₀ = [`AlbedoTable::values`].
+    pub fn harmonics(&self) -> &[Vec<f64>] {
+        &self.harmonics
+    }
+
+    /// The table of [`AlbedoTable::values`] and [`AlbedoTable::harmonics`] (a table saved and
+    /// read back); `None` for fewer than 4 nodes, rows of other lengths or a value that is
+    /// not finite.
+    pub fn from_harmonics(values: Vec<f64>, harmonics: Vec<Vec<f64>>) -> Option<Self> {
+        let ok = values.len() >= 4
+            && values.iter().all(|v| v.is_finite())
+            && harmonics
+                .iter()
+                .all(|h| h.len() == values.len() && h.iter().all(|v| v.is_finite()));
+        ok.then(|| Self::from_parts(values, harmonics))
+    }
+
+    /// Whether E depends on wo's azimuth (an anisotropic material's table).
+    pub fn is_azimuthal(&self) -> bool {
+        !self.harmonics.is_empty()
+    }
+
+    /// E at the unit direction w (its side ignored: μ = |w.z|, clamped to [0, 1] as
+    /// [`AlbedoTable::e`]'s; the azimuth from (w.x, w.y) at any length), by the interpolant:
+    /// E(μ, φ) of an anisotropic material's table, E(μ) of an isotropic one (exactly
+    /// [`AlbedoTable::e`]). NaN in, NaN out. Accuracy: the cubic's in √μ (module docs) and,
+    /// in the azimuth, the cosine series' ([`AZIMUTHS`]: together within 3.9e-4 of the
+    /// quadrature at GGX aspects of 4 and 4.5, tests/compensate.rs).
+    pub fn e_dir(&self, w: [f64; 3]) -> f64 {
+        if self.harmonics.is_empty() {
+            return self.e(w[2].abs());
+        }
+        // cos 2φ = (x² − y²)/(x² + y²), scaled by max(|x|, |y|) (no overflow or underflow
+        // of the squares); at the pole every azimuth is the same direction.
+        let r = w[0].abs().max(w[1].abs());
+        let c2 = if r > 0.0 {
+            let (x, y) = (w[0] / r, w[1] / r);
+            (x * x - y * y) / (x * x + y * y)
+        } else if w[0].is_nan() || w[1].is_nan() {
+            f64::NAN
+        } else {
+            1.0
+        };
+        let mu = w[2].abs();
+        if mu.is_nan() {
+            return f64::NAN;
+        }
+        self.e_at(mu.min(1.0).sqrt(), c2)
+    }
+
+    /// E at √μ = s and cos 2φ = c2: Σ_m c_m(s) T_m(c2) (cos 2mφ = T_m(cos 2φ), by the
+    /// Chebyshev recurrence).
+    fn e_at(&self, s: f64, c2: f64) -> f64 {
+        let n = self.e.len();
+        let x = s.clamp(0.0, 1.0) * (n - 1) as f64;
+        let mut v = lagrange4(x, n, |j| self.e[j]);
+        let c2 = c2.clamp(-1.0, 1.0);
+        let (mut prev, mut t) = (1.0, c2);
+        for h in &self.harmonics {
+            v += t * lagrange4(x, n, |j| h[j]);
+            (prev, t) = (t, 2.0 * c2 * t - prev);
+        }
+        v
     }
 
     /// The nodes' μ: s² for s = k/(n − 1) uniform, the grazing node at μ = 1e-6 (the
@@ -200,12 +353,14 @@ impl AlbedoTable {
         self.e_at_s(mu.clamp(0.0, 1.0).sqrt())
     }
 
-    /// E_avg = 2∫E(μ)μ dμ of the interpolant.
+    /// E_avg = (1/π)∫E(w) cos θ dω = 2∫E(μ)μ dμ of the interpolant (E averaged over wo's
+    /// azimuth where it depends on it).
     pub fn e_avg(&self) -> f64 {
         self.e_avg
     }
 
-    /// 2∫max(0, 1 − E(μ))μ dμ of the interpolant: 1 − E_avg, except where the interpolant
+    /// (1/π)∫max(0, 1 − E(w)) cos θ dω of the interpolant (2∫max(0, 1 − E(μ))μ dμ where E
+    /// does not depend on the azimuth): 1 − E_avg, except where the interpolant
     /// overshoots 1 (a nearly lossless material, E within the interpolation error of 1 over
     /// part of the range): the normalisation of a lobe ∝ max(0, 1 − E(μi)), which is what a
     /// BSDF can use (f ≥ 0) and must integrate to its share exactly.
@@ -247,19 +402,67 @@ fn node_mu(k: usize, n: usize) -> f64 {
 /// The cubic Lagrange interpolant at x (in node units, 0 ≤ x ≤ n − 1) through the four
 /// nodes of `value` nearest it (n ≥ 4).
 fn lagrange4(x: f64, n: usize, value: impl Fn(usize) -> f64) -> f64 {
+    let (k, w) = lagrange4_weights(x, n);
+    (0..4).map(|j| w[j] * value(k + j)).sum()
+}
+
+/// The first of the four nodes nearest x (in node units, 0 ≤ x ≤ n − 1, n ≥ 4) and their
+/// cubic Lagrange weights at x.
+fn lagrange4_weights(x: f64, n: usize) -> (usize, [f64; 4]) {
     let k = (x.floor() as usize).clamp(1, n - 3) - 1;
     let t = x - k as f64;
-    let mut v = 0.0;
-    for j in 0..4 {
-        let mut l = 1.0;
-        for m in 0..4 {
-            if m != j {
-                l *= (t - m as f64) / (j as f64 - m as f64);
-            }
-        }
-        v += l * value(k + j);
+    // l_j(t) = Π_{m≠j} (t − m)/(j − m) on the nodes 0 … 3.
+    let (a, b, c, d) = (t, t - 1.0, t - 2.0, t - 3.0);
+    (
+        k,
+        [
+            -b * c * d / 6.0,
+            a * c * d / 2.0,
+            -a * b * d / 2.0,
+            a * b * c / 6.0,
+        ],
+    )
+}
+
+/// One point of the Gauss–Legendre rule of a table's E_avg (8 points on each interval of
+/// s = √μ): the first node of its interpolation, the four weights, and the rule's weight
+/// times s³ (E_avg = 4∫E(s²)s³ ds).
+#[derive(Clone)]
+struct GlPoint {
+    first: usize,
+    weights: [f64; 4],
+    w: f64,
+}
+
+/// The rule's points for a table of n nodes (33 or 65: formed once per process; other n
+/// each time).
+fn gl_points(n: usize) -> std::borrow::Cow<'static, [GlPoint]> {
+    fn make(n: usize) -> Vec<GlPoint> {
+        let h = 1.0 / (n - 1) as f64;
+        (0..n - 1)
+            .flat_map(|k| {
+                GL8.iter().map(move |&(x, w)| {
+                    let s = (k as f64 + x) * h;
+                    let (first, weights) = lagrange4_weights(s * (n - 1) as f64, n);
+                    GlPoint {
+                        first,
+                        weights,
+                        w: w * h * s * s * s,
+                    }
+                })
+            })
+            .collect()
     }
-    v
+    static CONDUCTOR: OnceLock<Vec<GlPoint>> = OnceLock::new();
+    static DIELECTRIC: OnceLock<Vec<GlPoint>> = OnceLock::new();
+    match n {
+        NODES => CONDUCTOR.get_or_init(|| make(NODES)).as_slice().into(),
+        DIELECTRIC_NODES => DIELECTRIC
+            .get_or_init(|| make(DIELECTRIC_NODES))
+            .as_slice()
+            .into(),
+        _ => make(n).into(),
+    }
 }
 
 /// The shipped tables: Beckmann, GGX, Double GGX, Exponential, GTR γ = 1.
@@ -289,8 +492,8 @@ fn shipped_grid(i: usize) -> Option<&'static Grid> {
 /// (twice a conductor's), at the rule's level 3 (within 1.2e-4 of level 7 in the worst case
 /// measured, Double GGX; the furnace stays within 1e-3 with it). Shipped for the library's
 /// isotropic materials at the common indices [`SHIPPED_ETAS`] ([`DielectricTables::new`]);
-/// computed otherwise: 130 quadratures, under a second for an isotropic material, four
-/// times that for an anisotropic one (the mean over four azimuths of wo, as
+/// computed otherwise: 130 quadratures, under a second for an isotropic material, nine
+/// times that for an anisotropic one (E(μ, φ) at [`AZIMUTHS`] azimuths of wo, as
 /// [`AlbedoTable::compute`]).
 #[derive(Clone, Debug, PartialEq)]
 pub struct DielectricTables {
@@ -347,14 +550,19 @@ impl DielectricTables {
             return None;
         }
         let x = ((la - l0) / (l1 - l0) * (na - 1) as f64).clamp(0.0, (na - 1) as f64);
+        let (i0, w) = lagrange4_weights(x, na);
         let side = |s: usize| {
             AlbedoTable::from_nodes(
                 (0..DIELECTRIC_NODES)
                     .map(|k| {
-                        lagrange4(x, na, |ia| {
-                            data[((ia * SHIPPED_ETAS.len() + je) * 2 + s) * DIELECTRIC_NODES + k]
-                                as f64
-                        })
+                        (0..4)
+                            .map(|j| {
+                                let ia = i0 + j;
+                                w[j] * data[((ia * SHIPPED_ETAS.len() + je) * 2 + s)
+                                    * DIELECTRIC_NODES
+                                    + k] as f64
+                            })
+                            .sum()
                     })
                     .collect(),
             )
@@ -370,30 +578,19 @@ impl DielectricTables {
     /// The tables of `dist` with relative index `eta` (> 0, finite; η = 1 gives E = 1).
     pub fn compute<D: MicrofacetDistribution<f64>>(dist: &D, eta: f64) -> Self {
         let (ax, ay) = dist.alpha();
-        let azimuths: &[f64] = if ax == ay {
-            &[0.0]
-        } else {
-            &[0.0, 0.25, 0.5, 0.75]
-        };
+        let azimuths = if ax == ay { 1 } else { AZIMUTHS };
         let side = |z: f64| {
-            AlbedoTable::from_fn_nodes(DIELECTRIC_NODES, |mu| {
+            AlbedoTable::from_fn_azimuthal(DIELECTRIC_NODES, azimuths, |mu, phi| {
                 let st = ((1.0 - mu) * (1.0 + mu)).sqrt();
-                azimuths
-                    .iter()
-                    .map(|&p| {
-                        let (sp, cp) = (p * std::f64::consts::FRAC_PI_2).sin_cos();
-                        let (r, t) =
-                            crate::scattering::albedo::single_scattering_albedo_dielectric_level(
-                                dist,
-                                [st * cp, st * sp, z * mu],
-                                eta,
-                                crate::bsdf::Masking::Correlated,
-                                3,
-                            );
-                        r + t
-                    })
-                    .sum::<f64>()
-                    / azimuths.len() as f64
+                let (sp, cp) = phi.sin_cos();
+                let (r, t) = crate::scattering::albedo::single_scattering_albedo_dielectric_level(
+                    dist,
+                    [st * cp, st * sp, z * mu],
+                    eta,
+                    crate::bsdf::Masking::Correlated,
+                    3,
+                );
+                r + t
             })
         };
         if eta == 1.0 {
