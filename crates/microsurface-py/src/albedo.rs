@@ -243,12 +243,18 @@ impl AlbedoTable {
         Ok(AlbedoTable { table, source })
     }
 
-    /// The same table from its node values and material (`__reduce__`'s inverse, not API).
+    /// The same table from its node values, material and (an anisotropic material's)
+    /// azimuthal harmonics (`__reduce__`'s inverse, not API).
     #[staticmethod]
-    #[pyo3(signature = (values, source = None))]
-    fn _restore(values: Vec<f64>, source: Option<(String, Option<f64>, f64)>) -> PyResult<Self> {
-        let table = Table::from_values(values)
-            .ok_or_else(|| PyValueError::new_err("at least 4 finite values expected"))?;
+    #[pyo3(signature = (values, source = None, harmonics = Vec::new()))]
+    fn _restore(
+        values: Vec<f64>,
+        source: Option<(String, Option<f64>, f64)>,
+        harmonics: Vec<Vec<f64>>,
+    ) -> PyResult<Self> {
+        let table = Table::from_harmonics(values, harmonics).ok_or_else(|| {
+            PyValueError::new_err("at least 4 finite values expected, and harmonics as long")
+        })?;
         let source = source
             .map(|(kind, shape, alpha)| {
                 kind.parse::<NdfKind>()
@@ -262,14 +268,20 @@ impl AlbedoTable {
         })
     }
 
-    /// Pickle, copy: the node values (exact) and the material it is of.
+    /// Pickle, copy: the node values (exact), the material it is of, and an anisotropic
+    /// material's azimuthal harmonics (E(μ, φ)).
     fn __reduce__<'py>(
         slf: &Bound<'py, Self>,
     ) -> PyResult<(Bound<'py, PyAny>, Bound<'py, pyo3::types::PyTuple>)> {
         let py = slf.py();
         let this = slf.get();
         let source = this.source.map(|(k, s, a)| (k.name(), s, a));
-        let args = (this.table.values().to_vec(), source).into_pyobject(py)?;
+        let args = (
+            this.table.values().to_vec(),
+            source,
+            this.table.harmonics().to_vec(),
+        )
+            .into_pyobject(py)?;
         Ok((slf.get_type().getattr("_restore")?, args))
     }
 
@@ -294,13 +306,15 @@ impl AlbedoTable {
             return false;
         };
         let o = o.get();
-        self.table.values() == o.table.values() && self.source == o.source
+        self.table.values() == o.table.values()
+            && self.table.harmonics() == o.table.harmonics()
+            && self.source == o.source
     }
 
     /// By the node values' bits and the material.
     fn __hash__(&self) -> isize {
         let mut h = std::collections::hash_map::DefaultHasher::new();
-        for v in self.table.values() {
+        for v in self.table.values().iter().chain(self.table.harmonics().iter().flatten()) {
             std::hash::Hash::hash(&v.to_bits(), &mut h);
         }
         std::hash::Hash::hash(
@@ -319,7 +333,9 @@ impl AlbedoTable {
     }
 
     /// E at the nodes, float64: the interpolant passes through them at √μ = k/(n − 1) (the
-    /// grazing node's value, E(1e-6), stands at √μ = 0).
+    /// grazing node's value, E(1e-6), stands at √μ = 0). For an anisotropic material, whose
+    /// albedo depends on wo's azimuth too (its compensated BSDFs read E(μ, φ)), the mean over
+    /// the azimuth.
     #[getter]
     fn values<'py>(&self, py: Python<'py>) -> Bound<'py, PyArray1<f64>> {
         PyArray1::from_slice(py, self.table.values())
@@ -330,6 +346,12 @@ impl AlbedoTable {
     /// its header names the NDF, α and the nodes; values in float32, as that format keeps
     /// them), for a table made from one isotropic NDF.
     fn save(&self, py: Python<'_>, path: std::path::PathBuf) -> PyResult<()> {
+        if self.table.is_azimuthal() {
+            // (The files hold E(μ); an anisotropic material's E(μ, φ) would lose its azimuth.)
+            return Err(PyValueError::new_err(
+                "an anisotropic material's table depends on the azimuth too: pickle it instead",
+            ));
+        }
         let ext = path.extension().and_then(|e| e.to_str()).unwrap_or("");
         match ext {
             "npy" => {

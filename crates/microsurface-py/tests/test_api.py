@@ -461,6 +461,19 @@ def test_white_furnace():
     assert abs(d.total - 1) < 1e-12 and d.transmit.sum() > 0.5
 
 
+def test_anisotropic_albedo_table():
+    # An anisotropic material's table holds E(μ, φ) (issue 45): its values are the mean over
+    # the azimuth, pickling keeps the azimuth's harmonics, and saving to a file of E(μ) is
+    # refused rather than losing them.
+    import pickle
+    t = mf.AlbedoTable(mf.GGX(0.6, alpha_y=0.15))
+    mean = mf.AlbedoTable._restore(list(t.values))
+    assert t != mean and pickle.loads(pickle.dumps(t)) == t
+    assert hash(pickle.loads(pickle.dumps(t))) == hash(t)
+    with pytest.raises(ValueError, match="anisotropic"):
+        t.save("/tmp/microsurface-aniso-table.npy")
+
+
 def test_albedo_over_alpha_arrays():
     # A table over (α, μ) in one call equals one material per α.
     alpha = np.array([0.2, 0.7])[:, None]
