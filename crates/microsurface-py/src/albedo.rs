@@ -314,7 +314,12 @@ impl AlbedoTable {
     /// By the node values' bits and the material.
     fn __hash__(&self) -> isize {
         let mut h = std::collections::hash_map::DefaultHasher::new();
-        for v in self.table.values().iter().chain(self.table.harmonics().iter().flatten()) {
+        for v in self
+            .table
+            .values()
+            .iter()
+            .chain(self.table.harmonics().iter().flatten())
+        {
             std::hash::Hash::hash(&v.to_bits(), &mut h);
         }
         std::hash::Hash::hash(
