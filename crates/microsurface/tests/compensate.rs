@@ -11,21 +11,10 @@ use microsurface::scattering::single_scattering_albedo;
 use microsurface::scattering::{AlbedoTable, CompensatedConductor, Scheme};
 use microsurface::{Beckmann, DoubleGgx, Exponential, Ggx, Gtr, Microfacet};
 
-/// ∫ f(wo, wi)[0] cos θi dωi over the upper hemisphere, by nested tanh-sinh split at the
-/// mirror direction (as `single_scattering_albedo`).
+/// ∫ f(wo, wi)[0] cos θi dωi over the upper hemisphere, wo at cosine μo in the xz plane
+/// ([`furnace_at`]).
 fn furnace<B: Bsdf<f64, Value = [f64; 1]>>(b: &B, mu_o: f64) -> f64 {
-    let wo = [(1.0 - mu_o * mu_o).sqrt(), 0.0, mu_o];
-    let f = |mu: f64, phi: f64| {
-        let s = ((1.0 - mu) * (1.0 + mu)).max(0.0).sqrt();
-        let (sp, cp) = (std::f64::consts::PI + phi).sin_cos();
-        b.eval(wo, [s * cp, s * sp, mu])[0] * mu
-    };
-    let over_phi = |mu: f64| {
-        integrate(|p| f(mu, p), -std::f64::consts::PI, 0.0, 1e-7).value
-            + integrate(|p| f(mu, p), 0.0, std::f64::consts::PI, 1e-7).value
-    };
-    // (1e-6: three decades below the 1e-3 the furnace is held to.)
-    integrate(over_phi, 0.0, mu_o, 1e-6).value + integrate(over_phi, mu_o, 1.0, 1e-6).value
+    furnace_at(b, [(1.0 - mu_o * mu_o).sqrt(), 0.0, mu_o])
 }
 
 macro_rules! each_ndf {
@@ -559,7 +548,7 @@ fn tables_are_built_once_per_material() {
 }
 
 /// ∫ f(wo, wi)[0] cos θi dωi over wo's hemisphere for any wo (its azimuth too), by nested
-/// tanh-sinh split at the mirror direction.
+/// tanh-sinh split at the mirror direction (as `single_scattering_albedo`).
 fn furnace_at<B: Bsdf<f64, Value = [f64; 1]>>(b: &B, wo: [f64; 3]) -> f64 {
     let mu_o = wo[2];
     let phi_o = wo[1].atan2(wo[0]);
@@ -572,6 +561,7 @@ fn furnace_at<B: Bsdf<f64, Value = [f64; 1]>>(b: &B, wo: [f64; 3]) -> f64 {
         integrate(|p| f(mu, p), -std::f64::consts::PI, 0.0, 1e-7).value
             + integrate(|p| f(mu, p), 0.0, std::f64::consts::PI, 1e-7).value
     };
+    // (1e-6: three decades below the 1e-3 the furnace is held to.)
     integrate(over_phi, 0.0, mu_o, 1e-6).value + integrate(over_phi, mu_o, 1.0, 1e-6).value
 }
 
