@@ -197,14 +197,7 @@ fn shaped_unit(
     thread_local! {
         static LAST: Cell<Option<((crate::NdfKind, u64), Unit)>> = const { Cell::new(None) };
     }
-    // (The members without a shape ignore it: key 0. NaN, a missing shape, is never kept.)
-    let key = (
-        kind,
-        match kind.shape_name() {
-            Some(_) => shape.unwrap_or(f64::NAN).to_bits(),
-            None => 0,
-        },
-    );
+    let key = super::shape_key(kind, shape);
     if let Some((k, unit)) = LAST.with(|c| c.get()) {
         if k == key {
             return Ok(unit);

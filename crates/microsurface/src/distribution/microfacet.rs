@@ -776,25 +776,18 @@ impl<F: Real, N: Shape<Data = Fit<fast::fitted::FittedShape>>> Microfacet<F, N> 
     pub fn with_shape(alpha_x: F, alpha_y: F, shape: Option<f64>) -> Result<Self, ParamError> {
         let (ax, ay) = (check(alpha_x)?, check(alpha_y)?);
         let kind = N::FAMILY.expect("the family's Shape impls name their kind");
-        // The shape as the NDF takes it: ignored by the members without one (None: NaN,
-        // which no fit is made for, so an error on every call).
-        let gamma = match kind.shape_name() {
-            Some(_) => shape.unwrap_or(f64::NAN),
-            None => f64::NAN,
-        };
         type Key = (crate::NdfKind, u64);
         static FITS: SharedFits<Key, fast::fitted::FittedShape> = OnceLock::new();
         thread_local! {
             static LAST: Cell<Option<(Key, &'static fast::fitted::FittedShape)>> =
                 const { Cell::new(None) };
         }
-        // (A member without a shape keys on 0, never NaN: its one fit is found.)
-        let bits = if kind.shape_name().is_some() {
-            gamma.to_bits()
-        } else {
-            0
-        };
-        let data = shared_fit(&FITS, &LAST, (kind, bits), || {
+        let key = super::shape_key(kind, shape);
+        // The shape as the NDF takes it (NaN for the members without one).
+        let gamma = kind
+            .shape_name()
+            .map_or(f64::NAN, |_| f64::from_bits(key.1));
+        let data = shared_fit(&FITS, &LAST, key, || {
             fast::fitted::FittedShape::new(&crate::AnyNdf::new(kind, 1.0, shape)?)
         })?;
         Ok(Microfacet {

@@ -341,6 +341,16 @@ pub(crate) fn cached<K: Eq + Hash, V, E>(
     Ok(v)
 }
 
+/// The key of a family member's shape in the per-shape caches: the shape's bits for the
+/// kinds that have one (NaN, a missing shape, which no fit or member is made for, so an
+/// error on every call), 0 for those that ignore it (their one entry is found).
+pub(crate) fn shape_key(kind: crate::NdfKind, shape: Option<f64>) -> (crate::NdfKind, u64) {
+    match kind.shape_name() {
+        Some(_) => (kind, shape.unwrap_or(f64::NAN).to_bits()),
+        None => (kind, 0),
+    }
+}
+
 /// A fit shared by every material of its shape: the process-wide one (`Static`, kept for the
 /// process: the cache never evicts, so holding it by reference costs no reference count, and
 /// a material is built without an atomic operation), or one fitted for its material alone

@@ -217,44 +217,32 @@ impl AlbedoTable {
             e_avg: 0.0,
             lost_avg: 0.0,
         };
-        // E_avg = 2∫E μ dμ = 4∫E(s²) s³ ds over the interpolant, interval by interval (the
-        // harmonics average to 0 over the azimuth); the lost average over the azimuth too,
-        // by the midpoint rule on 32 azimuths of [0, π/2] (exact for the series' terms, which
-        // are polynomials of degree ≤ 16 in cos 2φ, away from max's kink).
-        let h = 1.0 / (n - 1) as f64;
-        let azimuths: Vec<[f64; 2]> = if t.harmonics.is_empty() {
-            vec![[1.0, 0.0]]
-        } else {
-            (0..32)
-                .map(|j| {
-                    let phi = (j as f64 + 0.5) * std::f64::consts::FRAC_PI_2 / 32.0;
-                    [phi.cos(), phi.sin()]
-                })
-                .collect()
-        };
+        // E_avg = 2∫E μ dμ = 4∫E(s²) s³ ds over the interpolant, by the rule's points (fixed
+        // for n, their interpolation weights formed once: a table is built per material of a
+        // textured α); the harmonics average to 0 over the azimuth. The lost average over the
+        // azimuth too, by the midpoint rule on 32 azimuths of [0, π/2] (exact for the series'
+        // terms, which are polynomials of degree ≤ 16 in cos 2φ, away from max's kink).
+        let c2s: Vec<f64> = (0..32)
+            .map(|j| (2.0 * (j as f64 + 0.5) * std::f64::consts::FRAC_PI_2 / 32.0).cos())
+            .collect();
         let (mut sum, mut lost) = (0.0, 0.0);
-        if t.harmonics.is_empty() {
-            // (The isotropic table, built per material of a textured α: the rule's points and
-            // their interpolation weights are fixed for n, formed once.)
-            for p in gl_points(n).iter() {
-                let e: f64 = (0..4).map(|j| p.weights[j] * t.e[p.first + j]).sum();
-                sum += p.w * e;
+        let mut c = vec![0.0; t.harmonics.len()];
+        for p in gl_points(n).iter() {
+            let at = |row: &[f64]| -> f64 { (0..4).map(|j| p.weights[j] * row[p.first + j]).sum() };
+            let e = at(&t.e);
+            sum += p.w * e;
+            if t.harmonics.is_empty() {
                 lost += p.w * (1.0 - e).max(0.0);
+                continue;
             }
-        } else {
-            for k in 0..n - 1 {
-                for (x, w) in GL8 {
-                    let s = (k as f64 + x) * h;
-                    let e = t.e_at_s(s);
-                    sum += w * h * e * s * s * s;
-                    let l = azimuths
-                        .iter()
-                        .map(|&[c, sn]| (1.0 - t.e_at(s, c * c - sn * sn)).max(0.0))
-                        .sum::<f64>()
-                        / azimuths.len() as f64;
-                    lost += w * h * l * s * s * s;
-                }
+            for (c, h) in c.iter_mut().zip(&t.harmonics) {
+                *c = at(h);
             }
+            let l = c2s
+                .iter()
+                .map(|&c2| (1.0 - e - cosine_series(c.iter().copied(), c2)).max(0.0))
+                .sum::<f64>();
+            lost += p.w * l / c2s.len() as f64;
         }
         t.e_avg = 4.0 * sum;
         t.lost_avg = 4.0 * lost;
@@ -331,14 +319,9 @@ impl AlbedoTable {
     fn e_at(&self, s: f64, c2: f64) -> f64 {
         let n = self.e.len();
         let x = s.clamp(0.0, 1.0) * (n - 1) as f64;
-        let mut v = lagrange4(x, n, |j| self.e[j]);
-        let c2 = c2.clamp(-1.0, 1.0);
-        let (mut prev, mut t) = (1.0, c2);
-        for h in &self.harmonics {
-            v += t * lagrange4(x, n, |j| h[j]);
-            (prev, t) = (t, 2.0 * c2 * t - prev);
-        }
-        v
+        let (k, w) = lagrange4_weights(x, n);
+        let at = |row: &[f64]| -> f64 { (0..4).map(|j| w[j] * row[k + j]).sum() };
+        at(&self.e) + cosine_series(self.harmonics.iter().map(|h| at(h)), c2)
     }
 
     /// The nodes' μ: s² for s = k/(n − 1) uniform, the grazing node at μ = 1e-6 (the
@@ -404,6 +387,18 @@ fn node_mu(k: usize, n: usize) -> f64 {
 fn lagrange4(x: f64, n: usize, value: impl Fn(usize) -> f64) -> f64 {
     let (k, w) = lagrange4_weights(x, n);
     (0..4).map(|j| w[j] * value(k + j)).sum()
+}
+
+/// Σ_m c[m − 1] T_m(c2) for m = 1 … (cos 2mφ = T_m(cos 2φ), by the Chebyshev recurrence;
+/// c2 clamped to [−1, 1]).
+fn cosine_series(c: impl Iterator<Item = f64>, c2: f64) -> f64 {
+    let c2 = c2.clamp(-1.0, 1.0);
+    let (mut prev, mut t, mut v) = (1.0, c2, 0.0);
+    for cm in c {
+        v += t * cm;
+        (prev, t) = (t, 2.0 * c2 * t - prev);
+    }
+    v
 }
 
 /// The first of the four nodes nearest x (in node units, 0 ≤ x ≤ n − 1, n ≥ 4) and their
