@@ -45,7 +45,8 @@ fn albedo_line(text: &str) -> Result<Value, String> {
     let mu = field(obj, "mu")?;
     if !(mu != 0.0 && mu.abs() <= 1.0) {
         return Err(format!(
-            "field 'mu' must be in (0, 1] (a dielectric also [-1, 0): from inside), got {mu}"
+            "field 'mu' must be in (0, 1] (a dielectric also [-1, 0): from inside), got {}",
+            crate::json::num(mu)
         ));
     }
     let wo = [((1.0 - mu) * (1.0 + mu)).sqrt(), 0.0, mu];
@@ -69,14 +70,20 @@ fn albedo_line(text: &str) -> Result<Value, String> {
                 1.0
             };
             if !(0.0..=1.0).contains(&rho) {
-                return Err(format!("field 'rho' must be in [0, 1], got {rho}"));
+                return Err(format!(
+                    "field 'rho' must be in [0, 1], got {}",
+                    crate::json::num(rho)
+                ));
             }
             Facets::Diffuse(rho)
         }
         Some(Some("dielectric")) => {
             let eta = field(obj, "eta")?;
             if !(eta > 0.0 && eta.is_finite()) {
-                return Err(format!("field 'eta' must be a positive number, got {eta}"));
+                return Err(format!(
+                    "field 'eta' must be a positive number, got {}",
+                    crate::json::num(eta)
+                ));
             }
             Facets::Dielectric(eta)
         }
@@ -88,7 +95,8 @@ fn albedo_line(text: &str) -> Result<Value, String> {
     };
     if mu < 0.0 && !matches!(facets, Facets::Dielectric(_)) {
         return Err(format!(
-            "field 'mu' must be in (0, 1] for an opaque material, got {mu}"
+            "field 'mu' must be in (0, 1] for an opaque material, got {}",
+            crate::json::num(mu)
         ));
     }
     let quadrature = match obj.get("method").map(|m| m.as_str()) {

@@ -122,7 +122,10 @@ impl Request {
                     _ => field(obj, "eta")?,
                 };
                 if !(eta > 0.0 && eta.is_finite()) {
-                    return Err(format!("a dielectric needs a finite eta > 0, got {eta}"));
+                    return Err(format!(
+                        "a dielectric needs a finite eta > 0, got {}",
+                        crate::json::num(eta)
+                    ));
                 }
                 Material::Glass { eta }
             }

@@ -1,8 +1,8 @@
 //! `microsurface eval`: JSON lines in, JSON lines out, in order; a bad line gets
 //! `{"error": "..."}` and the run goes on; exit 1 if any line failed.
 
-use crate::json::{field, json_lines, shape};
-use microsurface::{AnyNdf, Ndf, NdfKind};
+use crate::json::{field, json_lines};
+use microsurface::{AnyNdf, Ndf};
 use serde_json::{Map, Value};
 use std::process::ExitCode;
 
@@ -29,7 +29,10 @@ fn arguments(quantity: &str) -> Option<&'static [&'static str]> {
 fn cosine(obj: &Map<String, Value>, name: &str) -> Result<f64, String> {
     let u = field(obj, name)?;
     if u.abs() > 1.0 + 4.0 * f64::EPSILON || u.is_nan() {
-        return Err(format!("field '{name}' must be in [-1, 1], got {u}"));
+        return Err(format!(
+            "field '{name}' must be in [-1, 1], got {}",
+            crate::json::num(u)
+        ));
     }
     Ok(u)
 }
@@ -38,16 +41,9 @@ fn cosine(obj: &Map<String, Value>, name: &str) -> Result<f64, String> {
 pub fn eval_line(line: &str) -> Result<f64, String> {
     let v: Value = serde_json::from_str(line).map_err(|e| format!("not valid JSON: {e}"))?;
     let obj = v.as_object().ok_or("expected a JSON object")?;
-    let name = obj
-        .get("ndf")
-        .ok_or("missing field 'ndf'")?
-        .as_str()
-        .ok_or("field 'ndf' must be a string")?;
-    let kind: NdfKind = name
-        .parse()
-        .map_err(|e: microsurface::ndf::UnknownNdf| e.to_string())?;
+    let (kind, gamma) = crate::json::ndf(obj)?;
+    let name = kind.name();
     let alpha = field(obj, "alpha")?;
-    let gamma = shape(obj, kind)?;
     let ndf = AnyNdf::new(kind, alpha, gamma).map_err(|e| e.to_string())?;
     let quantity = obj
         .get("quantity")

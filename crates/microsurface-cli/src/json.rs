@@ -86,6 +86,27 @@ pub(crate) fn known_fields(obj: &Map<String, Value>, fields: &[&str]) -> Result<
     }
 }
 
+/// The request's NDF and shape: "ndf" as the library's spec parser reads it
+/// ([`microsurface::NdfSpec`]: `"ggx"`, `"gtr:1.5"`, `"Student-T:2.5"`), the shape from the
+/// spec or from its own field ("gamma" or "a", [`shape`]), not both.
+pub(crate) fn ndf(obj: &Map<String, Value>) -> Result<(NdfKind, Option<f64>), String> {
+    let name = string(obj, "ndf")?;
+    if name.contains(':') {
+        let spec: microsurface::NdfSpec = name.parse().map_err(|e| format!("{e}"))?;
+        if let Some(key) = ["gamma", "a"].into_iter().find(|k| obj.contains_key(*k)) {
+            return Err(format!(
+                "field '{key}' given with a shape in 'ndf' ('{}'): give the shape once",
+                crate::clip(name)
+            ));
+        }
+        return Ok((spec.kind, spec.shape));
+    }
+    let kind: NdfKind = name
+        .parse()
+        .map_err(|e: microsurface::ndf::UnknownNdf| e.to_string())?;
+    Ok((kind, shape(obj, kind)?))
+}
+
 /// The request's shape parameter, for the kinds that have one ([`NdfKind::shape_name`]):
 /// "gamma" (gtr, student_t, gen_exponential) or "a" (bessel_k); a shape field on a kind
 /// without it is an error.
@@ -106,6 +127,26 @@ pub(crate) fn shape(obj: &Map<String, Value>, kind: NdfKind) -> Result<Option<f6
         Some(name) => Ok(Some(field(obj, name)?)),
         None => Ok(None),
     }
+}
+
+/// The NDF and shape of a command line: `--ndf` as the spec parser reads it (`ggx`,
+/// `gtr:1.5`), the shape there or from `--gamma` / `--a` ([`shape_from_flags`]), not both.
+pub(crate) fn ndf_from_flags(
+    ndf: &str,
+    gamma: Option<f64>,
+    a: Option<f64>,
+) -> Result<(NdfKind, Option<f64>), String> {
+    if ndf.contains(':') {
+        let spec: microsurface::NdfSpec = ndf.parse().map_err(|e| format!("{e}"))?;
+        if gamma.is_some() || a.is_some() {
+            return Err("the shape is given twice (in --ndf and by --gamma/--a)".into());
+        }
+        return Ok((spec.kind, spec.shape));
+    }
+    let kind: NdfKind = ndf
+        .parse()
+        .map_err(|e: microsurface::ndf::UnknownNdf| e.to_string())?;
+    Ok((kind, shape_from_flags(kind, gamma, a)?))
 }
 
 /// The shape parameter from a command line's `--gamma` / `--a` for `kind`: required where
@@ -142,6 +183,17 @@ pub(crate) fn shape_from_flags(
     })
 }
 
+/// A number as an error message shows it: in full where that is short, in scientific
+/// notation where it would be long (1e308 written out is 309 digits; errors stay one short
+/// line).
+pub(crate) fn num(x: f64) -> String {
+    if x != 0.0 && x.is_finite() && !(1e-4..1e7).contains(&x.abs()) {
+        format!("{x:e}")
+    } else {
+        format!("{x}")
+    }
+}
+
 pub(crate) fn field(obj: &Map<String, Value>, name: &str) -> Result<f64, String> {
     match obj.get(name) {
         None => Err(format!("missing field '{name}'")),
@@ -159,10 +211,7 @@ pub(crate) fn field(obj: &Map<String, Value>, name: &str) -> Result<f64, String>
 pub(crate) fn ndf_alpha(
     obj: &Map<String, Value>,
 ) -> Result<(NdfKind, f64, f64, Option<f64>), String> {
-    let kind: NdfKind = string(obj, "ndf")?
-        .parse()
-        .map_err(|e: microsurface::ndf::UnknownNdf| e.to_string())?;
-    let shape = crate::json::shape(obj, kind)?;
+    let (kind, shape) = ndf(obj)?;
     let (ax, ay) = alpha(obj)?;
     Ok((kind, ax, ay, shape))
 }
@@ -246,7 +295,8 @@ pub(crate) fn count(
     let n = field(obj, name)?;
     if !((1.0..=max).contains(&n) && n.fract() == 0.0) {
         return Err(format!(
-            "field '{name}' must be a whole number in [1, {max_text}], got {n}"
+            "field '{name}' must be a whole number in [1, {max_text}], got {}",
+            num(n)
         ));
     }
     Ok(n as u64)
@@ -260,7 +310,8 @@ pub(crate) fn seed(obj: &Map<String, Value>) -> Result<u64, String> {
     let s = field(obj, "seed")?;
     if !((0.0..1.8e19).contains(&s) && s.fract() == 0.0) {
         return Err(format!(
-            "field 'seed' must be a whole number in [0, 2^64), got {s}"
+            "field 'seed' must be a whole number in [0, 2^64), got {}",
+            num(s)
         ));
     }
     Ok(s as u64)

@@ -45,7 +45,7 @@ fn parse(args: &[String]) -> Result<Args, String> {
     while let Some(flag) = it.next() {
         let v = value(flag, it.next());
         match flag.as_str() {
-            "--ndf" => kind = Some(v?.parse::<NdfKind>().map_err(|e| format!("sample: {e}"))?),
+            "--ndf" => kind = Some(v?.to_string()),
             "--alpha" => alpha = Some(number(flag, v?)?),
             "--alpha-y" => a.alpha_y = Some(number(flag, v?)?),
             "--gamma" => a.gamma = Some(number(flag, v?)?),
@@ -97,10 +97,10 @@ fn parse(args: &[String]) -> Result<Args, String> {
             }
         }
     }
-    a.kind = kind.ok_or("sample: --ndf is required")?;
+    let kind = kind.ok_or("sample: --ndf is required")?;
     a.alpha = alpha.ok_or("sample: --alpha is required")?;
-    a.gamma = crate::json::shape_from_flags(a.kind, a.gamma, shape_a)
-        .map_err(|e| format!("sample: {e}"))?;
+    (a.kind, a.gamma) =
+        crate::json::ndf_from_flags(&kind, a.gamma, shape_a).map_err(|e| format!("sample: {e}"))?;
     if a.wi.is_some() && !a.visible {
         return Err(
             "sample: --wi applies to visible normals only (add --mode visible); D·cos \

@@ -3,7 +3,6 @@
 //! extension, with a progress bar on stderr and every core.
 
 use microsurface::scattering::table::{Grid, Material, Method, Spec};
-use microsurface::NdfKind;
 use serde_json::json;
 use std::process::ExitCode;
 
@@ -92,7 +91,7 @@ pub fn run(args: &[String]) -> Result<ExitCode, String> {
             .map(String::as_str)
             .ok_or_else(|| err(format!("{} needs a value", crate::clip(flag))))?;
         match flag.as_str() {
-            "--ndf" => ndf = Some(v.parse::<NdfKind>().map_err(err)?),
+            "--ndf" => ndf = Some(v.to_string()),
             "--alpha" => alpha = Some(nodes(flag, v)?),
             "--mu" => mu = Some(nodes(flag, v)?),
             "--gamma" => gamma = Some(number(flag, v)?),
@@ -138,7 +137,7 @@ pub fn run(args: &[String]) -> Result<ExitCode, String> {
     } else {
         return Err(err("--out must end in .json or .mfa (the binary form)"));
     };
-    let gamma = crate::json::shape_from_flags(ndf, gamma, shape_a).map_err(err)?;
+    let (ndf, gamma) = crate::json::ndf_from_flags(&ndf, gamma, shape_a).map_err(err)?;
     let material = match material.as_str() {
         "furnace" => Material::Furnace,
         "conductor" => Material::Conductor {

@@ -18,6 +18,7 @@
 #![allow(clippy::neg_cmp_op_on_partial_ord)]
 
 use crate::fast::Real;
+use crate::math::quad::GL8;
 
 /// Exact unpolarised Fresnel reflectance of a dielectric interface with relative index η
 /// (η_t/η_i; the side cos θ > 0 is outside), for cos θ ∈ [−1, 1]: cos θ < 0 swaps the sides.
@@ -243,11 +244,184 @@ pub fn f82_tint<F: Real>(cos_i: F, f0: F, h: F) -> F {
     }
 }
 
+/// The hemispherical average F_avg = 2∫₀¹ F(μ) μ dμ of `f` over [a, b] ⊂ [0, 1] (its share
+/// 2∫_a^b f μ dμ), adaptively: 8-point Gauss–Legendre on an interval against the same on its
+/// halves, bisected until the two agree within `tol` (relative to the interval's share of
+/// [0, 1]) or 40 levels deep.
+fn average_adaptive(f: &impl Fn(f64) -> f64, a: f64, b: f64, tol: f64) -> f64 {
+    fn gl8(f: &impl Fn(f64) -> f64, a: f64, b: f64) -> f64 {
+        GL8.iter()
+            .map(|&(x, w)| {
+                let mu = a + (b - a) * x;
+                2.0 * w * (b - a) * f(mu) * mu
+            })
+            .sum()
+    }
+    fn go(f: &impl Fn(f64) -> f64, a: f64, b: f64, whole: f64, tol: f64, depth: u32) -> f64 {
+        let m = 0.5 * (a + b);
+        let (l, r) = (gl8(f, a, m), gl8(f, m, b));
+        // (A NaN difference stops the recursion as a match does: NaN parameters are the
+        // caller's to refuse.)
+        if depth >= 40 || !((l + r - whole).abs() > tol * (b - a)) {
+            l + r
+        } else {
+            go(f, a, m, l, tol, depth + 1) + go(f, m, b, r, tol, depth + 1)
+        }
+    }
+    go(f, a, b, gl8(f, a, b), tol, 0)
+}
+
+/// The tolerance of the adaptive Fresnel averages, per unit of μ: the average errs by about
+/// this (the bisection's estimate; tests below measure 1e-12 against a dense rule), far
+/// below anything compensation can show (its tables interpolate to 1e-4).
+const AVERAGE_TOL: f64 = 1e-12;
+
+/// F_avg = 2∫₀¹ F(μ) μ dμ of the exact [`dielectric`] reflectance at relative index η
+/// (light from the side that meets η; η > 0): the smooth interface's average reflectance,
+/// which Kulla–Conty's dielectric compensation transmits the rest of. Below the critical
+/// angle (η < 1: μ < μc = √(1 − η²)) F = 1 and contributes μc²; above it
+/// μ = μc + (1 − μc)t² removes F's square-root edge at μc, and 8-point Gauss–Legendre on 8
+/// intervals of t (32 within 5% of η = 1 and outside [0.2, 5], 128 below η = 0.05) is within
+/// 1e-12 of the same on 256 intervals over η ∈ [1.0001, 100] and its reciprocals, and of
+/// mpmath (30 digits) to 1e-15 at η = 1.5, 1/1.5, 2.42, 1/2.42 (tests below). NaN for NaN η.
+pub fn dielectric_average(eta: f64) -> f64 {
+    let mc = if eta < 1.0 {
+        ((1.0 - eta) * (1.0 + eta)).sqrt()
+    } else {
+        0.0
+    };
+    // (Near η = 1 F rises only at grazing; below η = 0.2 the p ratio has a pole near t = 0,
+    // at a distance of about η²/√(2(1 − μc)) ≈ η^(3/2)/√2 measured to the end of t's interval;
+    // above η = 5 F's rise at grazing steepens. The counts meet 1e-12: tests below.)
+    let intervals = if eta < 0.05 {
+        128
+    } else if (eta - 1.0).abs() < 0.05 || !(0.2..=5.0).contains(&eta) {
+        32
+    } else {
+        8
+    };
+    dielectric_average_on(eta, mc, intervals)
+}
+
+/// [`dielectric_average`] on `intervals` intervals of t.
+fn dielectric_average_on(eta: f64, mc: f64, intervals: usize) -> f64 {
+    let h = 1.0 / intervals as f64;
+    let mut f_avg = mc * mc;
+    for k in 0..intervals {
+        for (x, w) in GL8 {
+            let t = (k as f64 + x) * h;
+            let mu = mc + (1.0 - mc) * t * t;
+            f_avg += 2.0 * w * h * dielectric(mu, eta) * mu * (1.0 - mc) * 2.0 * t;
+        }
+    }
+    f_avg
+}
+
+/// F_avg = 2∫₀¹ F(μ) μ dμ of the exact [`conductor`] reflectance at η + ik, computed in
+/// f64. F(μ) is analytic in μ but for the branch points ±μb, μb = √(1 − (η + ik)²), of
+/// cos θt and the poles of the p ratio at μp = −1/√(1 + (η + ik)²) (near μ = 0 for a metal,
+/// |μp| ≈ 1/|η + ik|), and their conjugates. So Gauss–Legendre with n points converges like
+/// ρ^(−2n), ρ the smaller Bernstein ellipse of [0, 1] through μb or μp: n = ⌈15/ln ρ⌉
+/// rounded up to a multiple of 8 (ρ^(−2n) ≤ 1e-13; 24 to 32 points for gold, copper and
+/// aluminium in RGB, ρ = 1.76 to 3.3), while that is at most 64; else (an index near the real axis, where F has the
+/// critical angle's edge or its smoothed trace at Re μb) the adaptive rule, split at Re μb.
+/// Within 1e-11 of a dense reference over η ∈ [0.02, 20], k ∈ {0} ∪ [1e-4, 20] (tests below).
+pub fn conductor_average(eta: f64, k: f64) -> f64 {
+    let f = |mu: f64| conductor(mu, eta, k);
+    // The square of the Bernstein parameter of a point p for [0, 1]: |z ± √(z² − 1)|²,
+    // z = 2p − 1, the larger (their product is 1; `norm` is the squared modulus).
+    let rho2 = |p: Complex<f64>| {
+        let z = Complex::new(2.0 * p.re - 1.0, 2.0 * p.im);
+        let root = z.mul(z).sub(Complex::new(1.0, 0.0)).sqrt();
+        z.add(root).norm().max(z.sub(root).norm())
+    };
+    // 1 − (η + ik)² = (1 − η² + k²) − 2iηk; 1 + (η + ik)² = (1 + η² − k²) + 2iηk.
+    let mub = Complex::new(1.0 - eta * eta + k * k, -2.0 * eta * k).sqrt();
+    let mup = Complex::new(1.0 + eta * eta - k * k, 2.0 * eta * k)
+        .sqrt()
+        .recip_smith()
+        .scale(-1.0);
+    let r2 = rho2(mub).min(rho2(mup));
+    // n = 15/ln ρ = 30/ln ρ²; ρ at 1 (a singular point on [0, 1]) or below it by rounding,
+    // and NaN, fall to the adaptive rule.
+    let n = (30.0 / r2.ln()).ceil();
+    if r2 > 1.0 && n <= 64.0 {
+        let n = (n.max(8.0) as usize).div_ceil(8) * 8;
+        if let Some(rule) = crate::math::quad::gauss_legendre(n) {
+            return rule.iter().map(|&(x, w)| 2.0 * w * f(x) * x).sum();
+        }
+    }
+    let s = mub.re.clamp(0.0, 1.0);
+    let left = if s > 0.0 {
+        average_adaptive(&f, 0.0, s, AVERAGE_TOL)
+    } else {
+        0.0
+    };
+    left + average_adaptive(&f, s, 1.0, AVERAGE_TOL)
+}
+
+/// [`Fresnel::average`]'s default: 8-point Gauss–Legendre on 16 intervals of `eval`.
+fn quadrature_average<F: Real, const N: usize>(eval: impl Fn(F) -> [F; N]) -> [f64; N] {
+    let mut f_avg = [0.0; N];
+    for k in 0..16 {
+        for (x, w) in GL8 {
+            let mu = (k as f64 + x) / 16.0;
+            let f = eval(F::from_f64(mu));
+            for c in 0..N {
+                f_avg[c] += 2.0 * w / 16.0 * f[c].to_f64() * mu;
+            }
+        }
+    }
+    f_avg
+}
+
+/// The F82-tint model's average in closed form, F0 + (1 − F0)/21 − a/126, where its clamp to
+/// [0, 1] is inactive (checked at μ = 0, 1 and its critical points: r′(μ) =
+/// −(1 − μ)⁴(5(1 − F0) + a(1 − μ)(1 − 7μ))); `None` where it is active.
+fn f82_tint_average(f0: f64, h: f64) -> Option<f64> {
+    let mb = 1.0 - MU_BAR;
+    let mb5 = mb.powi(5);
+    let a = (f0 + (1.0 - f0) * mb5) * (1.0 - h) / (MU_BAR * mb5 * mb);
+    let r = |mu: f64| {
+        let m = 1.0 - mu;
+        f0 + (1.0 - f0) * m.powi(5) - a * mu * m.powi(6)
+    };
+    let inside = |v: f64| (0.0..=1.0).contains(&v);
+    let mut ok = inside(r(0.0)) && inside(r(1.0));
+    if a != 0.0 {
+        // 7aμ² − 8aμ + a + 5(1 − F0) = 0.
+        let disc = 64.0 * a * a - 28.0 * a * (a + 5.0 * (1.0 - f0));
+        if disc >= 0.0 {
+            for sign in [-1.0, 1.0] {
+                let mu = (8.0 * a + sign * disc.sqrt()) / (14.0 * a);
+                if (0.0..=1.0).contains(&mu) {
+                    ok &= inside(r(mu));
+                }
+            }
+        }
+    }
+    (ok && a.is_finite()).then(|| f0 + (1.0 - f0) * SCHLICK_AVG - a / 126.0)
+}
+
+/// The closed forms of the Schlick average: 2∫₀¹ (1 − μ)⁵ μ dμ = 2B(2, 6) = 1/21.
+const SCHLICK_AVG: f64 = 1.0 / 21.0;
+
 /// A Fresnel term a BSDF carries: N channels (RGB: N = 3).
 pub trait Fresnel<F: Real, const N: usize>: Clone {
     /// The reflectance per channel at cos θ = wo·wm (for a [`Dielectric`], cos θ < 0 is the
     /// inside; the other models clamp it to [0, 1]).
     fn eval(&self, cos_i: F) -> [F; N];
+
+    /// F_avg = 2∫₀¹ F(μ) μ dμ per channel, in f64: the hemispherical average reflectance
+    /// (Kulla–Conty's F_avg). The library's models give it in closed form ([`One`],
+    /// [`Schlick`], [`F82Tint`] where unclamped) or by rules fitted to their singularities
+    /// ([`dielectric_average`], [`conductor_average`]), within 1e-11; this default, for a
+    /// model written elsewhere, is 8-point Gauss–Legendre on 16 intervals of `eval` (exact
+    /// for smooth models to the rounding of `F`; an edge such as a critical angle costs
+    /// digits, 1e-4 for a dielectric η < 1, so override it there).
+    fn average(&self) -> [f64; N] {
+        quadrature_average(|mu| self.eval(mu))
+    }
 }
 
 /// F = 1 in each of N channels (a perfect mirror: white-furnace tests), e.g. `One::<1>`.
@@ -258,6 +432,10 @@ impl<F: Real, const N: usize> Fresnel<F, N> for One<N> {
     #[inline(always)]
     fn eval(&self, _cos_i: F) -> [F; N] {
         [F::ONE; N]
+    }
+
+    fn average(&self) -> [f64; N] {
+        [1.0; N]
     }
 }
 
@@ -273,6 +451,10 @@ impl<F: Real, const N: usize> Fresnel<F, N> for Dielectric<F> {
     fn eval(&self, cos_i: F) -> [F; N] {
         [dielectric(cos_i, self.eta); N]
     }
+
+    fn average(&self) -> [f64; N] {
+        [dielectric_average(self.eta.to_f64()); N]
+    }
 }
 
 /// A conductor's exact reflectance, complex index η + ik per channel.
@@ -287,6 +469,10 @@ impl<F: Real, const N: usize> Fresnel<F, N> for Conductor<F, N> {
     fn eval(&self, cos_i: F) -> [F; N] {
         std::array::from_fn(|c| conductor(cos_i, self.eta[c], self.k[c]))
     }
+
+    fn average(&self) -> [f64; N] {
+        std::array::from_fn(|c| conductor_average(self.eta[c].to_f64(), self.k[c].to_f64()))
+    }
 }
 
 /// Schlick's approximation with F0 per channel.
@@ -299,6 +485,14 @@ impl<F: Real, const N: usize> Fresnel<F, N> for Schlick<F, N> {
     #[inline]
     fn eval(&self, cos_i: F) -> [F; N] {
         std::array::from_fn(|c| schlick(cos_i, self.f0[c]))
+    }
+
+    /// F0 + (1 − F0)/21, exactly.
+    fn average(&self) -> [f64; N] {
+        std::array::from_fn(|c| {
+            let f0 = self.f0[c].to_f64();
+            f0 + (1.0 - f0) * SCHLICK_AVG
+        })
     }
 }
 
@@ -313,6 +507,19 @@ impl<F: Real, const N: usize> Fresnel<F, N> for F82Tint<F, N> {
     #[inline]
     fn eval(&self, cos_i: F) -> [F; N] {
         std::array::from_fn(|c| f82_tint(cos_i, self.f0[c], self.h[c]))
+    }
+
+    /// Where the model stays in [0, 1] (its clamp inactive): F0 + (1 − F0)/21 − a/126
+    /// (2∫₀¹ μ²(1 − μ)⁶ dμ = 2B(3, 7) = 1/126), exactly; else the default quadrature of the
+    /// clamped model.
+    fn average(&self) -> [f64; N] {
+        let closed: [Option<f64>; N] =
+            std::array::from_fn(|c| f82_tint_average(self.f0[c].to_f64(), self.h[c].to_f64()));
+        if closed.iter().all(Option::is_some) {
+            return closed.map(|v| v.unwrap_or(0.0));
+        }
+        let q = quadrature_average(|mu| self.eval(mu));
+        std::array::from_fn(|c| closed[c].unwrap_or(q[c]))
     }
 }
 
@@ -363,5 +570,112 @@ mod tests {
         assert_eq!(f82_tint(1.0, f0, h), f0);
         assert!((f82_tint(0.0, f0, h) - 1.0).abs() < 1e-15);
         assert!((f82_tint(0.3, f0, 1.0) - schlick(0.3, f0)).abs() < 1e-15);
+    }
+    /// The hemispherical Fresnel average against the reciprocity of the averaged
+    /// transmittance, 1 − F_avg(1/η) = (1 − F_avg(η))/η² (the kink at the critical angle
+    /// is on the 1/η side), and against values integrated with mpmath (30 digits).
+    #[test]
+    fn fresnel_average() {
+        for eta in [1.05, 1.33, 1.5, 2.42, 3.0] {
+            let (out, inside) = (dielectric_average(eta), dielectric_average(1.0 / eta));
+            assert!(
+                ((1.0 - inside) - (1.0 - out) / (eta * eta)).abs() < 1e-14,
+                "η={eta}: {out} {inside}"
+            );
+        }
+        for (eta, want) in [
+            (1.5, 0.091_777_959_342_351_21),
+            (1.0 / 1.5, 0.596_345_759_707_711_8),
+            (2.42, 0.212_540_794_738_842_13),
+            (1.0 / 2.42, 0.865_538_691_813_886),
+        ] {
+            assert!((dielectric_average(eta) - want).abs() < 1e-15, "η={eta}");
+        }
+    }
+
+    /// The dielectric rule against the same on 256 intervals (1e-16 of mpmath where tested
+    /// above) over η ∈ [1.0001, 100] and reciprocals.
+    #[test]
+    fn dielectric_average_against_a_dense_rule() {
+        let mut worst = 0.0f64;
+        for i in 0..=400 {
+            let e = 1e-4f64 * (1e6f64).powf(i as f64 / 400.0);
+            for eta in [1.0 + e, 1.0 / (1.0 + e)] {
+                let mc = if eta < 1.0 {
+                    ((1.0 - eta) * (1.0 + eta)).sqrt()
+                } else {
+                    0.0
+                };
+                let err = (dielectric_average(eta) - dielectric_average_on(eta, mc, 256)).abs();
+                worst = worst.max(err);
+            }
+        }
+        assert!(worst < 1e-12, "{worst:e}");
+        assert_eq!(dielectric_average(1.0), 0.0);
+    }
+
+    /// The conductor rule against a dense one (split at Re μb, each side substituted as the
+    /// dielectric's, 8-point Gauss–Legendre on 512 intervals) over η ∈ [0.02, 20],
+    /// k ∈ {0} ∪ [1e-4, 20], and for k = 0 against the dielectric average.
+    #[test]
+    fn conductor_average_against_a_dense_rule() {
+        let dense = |eta: f64, k: f64| {
+            let mub = Complex::new(1.0 - eta * eta + k * k, -2.0 * eta * k).sqrt();
+            let s = mub.re.clamp(0.0, 1.0);
+            let n = 512;
+            let mut sum = 0.0;
+            for j in 0..n {
+                for (x, w) in GL8 {
+                    let t = (j as f64 + x) / n as f64;
+                    let (ml, mr) = (s * (1.0 - t * t), s + (1.0 - s) * t * t);
+                    sum += 2.0 * w / n as f64
+                        * (conductor(ml, eta, k) * ml * s + conductor(mr, eta, k) * mr * (1.0 - s))
+                        * 2.0
+                        * t;
+                }
+            }
+            sum
+        };
+        let mut worst = (0.0f64, 0.0, 0.0);
+        for i in 0..=40 {
+            let eta = 0.02 * 1000f64.powf(i as f64 / 40.0);
+            for j in 0..=40 {
+                let k = if j == 0 {
+                    0.0
+                } else {
+                    1e-4 * 2e5f64.powf((j - 1) as f64 / 39.0)
+                };
+                let err = (conductor_average(eta, k) - dense(eta, k)).abs();
+                if err > worst.0 {
+                    worst = (err, eta, k);
+                }
+            }
+        }
+        assert!(worst.0 < 1e-11, "{worst:?}");
+        for eta in [0.3, 1.0 / 1.5, 1.5, 2.42] {
+            let d = (conductor_average(eta, 0.0) - dielectric_average(eta)).abs();
+            assert!(d < 1e-11, "η {eta}: {d:e}");
+        }
+    }
+
+    /// The closed forms (One, Schlick, unclamped F82-tint) against the default quadrature,
+    /// and F82-tint where its clamp is active (a dark F0 with a low tint) by the quadrature.
+    #[test]
+    fn closed_form_averages_match_the_quadrature() {
+        let q = |f: &dyn Fn(f64) -> f64| quadrature_average::<f64, 1>(|mu| [f(mu)])[0];
+        assert_eq!(Fresnel::<f64, 2>::average(&One::<2>), [1.0; 2]);
+        for f0 in [0.0, 0.04, 0.5, 0.95, 1.0] {
+            let got = Fresnel::<f64, 1>::average(&Schlick { f0: [f0] })[0];
+            assert!((got - q(&|mu| schlick(mu, f0))).abs() < 1e-15, "F0 {f0}");
+            for h in [0.0, 0.3, 0.7, 1.0, 1.3] {
+                let got = Fresnel::<f64, 1>::average(&F82Tint { f0: [f0], h: [h] })[0];
+                let want = q(&|mu| f82_tint(mu, f0, h));
+                // (Where the clamp acts the model has a kink, and the quadrature is the
+                // answer either way.)
+                assert!((got - want).abs() < 1e-14, "F0 {f0} h {h}: {got} {want}");
+            }
+        }
+        assert!(f82_tint_average(0.9, 0.7).is_some());
+        assert!(f82_tint_average(0.02, 0.0).is_none());
     }
 }

@@ -700,8 +700,18 @@ struct ExactParams {
     gamma: f64,
 }
 
+/// α in f64 for the exact twin, after the range check. An f32 α is accepted where it is the
+/// f32 nearest a value in [`crate::ALPHA_MIN`], [`crate::ALPHA_MAX`] (1e-6 has no f32: 1e-6f32
+/// is 1e-6 − 3e-15, below it) and taken at the bound there.
 fn check<F: Real>(a: F) -> Result<f64, ParamError> {
-    crate::error::check_alpha(a.to_f64())
+    let a = a.to_f64();
+    if F::IS_F32 {
+        let (lo, hi) = (crate::ALPHA_MIN, crate::ALPHA_MAX);
+        if a == lo as f32 as f64 || a == hi as f32 as f64 {
+            return Ok(a.clamp(lo, hi));
+        }
+    }
+    crate::error::check_alpha(a)
 }
 
 impl<F: Real, N: Shape<Data = ()>> Microfacet<F, N> {

@@ -24,6 +24,53 @@ pub struct Quad {
     pub evals: usize,
 }
 
+/// Gauss–Legendre nodes and weights on [0, 1], 8 points (exact for degree 15: the cubic
+/// interpolant times μ on each interval, and the smooth Fresnel averages).
+pub const GL8: [(f64, f64); 8] = [
+    (0.019_855_071_751_231_856, 0.050_614_268_145_188_13),
+    (0.101_666_761_293_186_63, 0.111_190_517_226_687_24),
+    (0.237_233_795_041_835_5, 0.156_853_322_938_943_64),
+    (0.408_282_678_752_175_1, 0.181_341_891_689_181_0),
+    (0.591_717_321_247_824_9, 0.181_341_891_689_181_0),
+    (0.762_766_204_958_164_5, 0.156_853_322_938_943_64),
+    (0.898_333_238_706_813_4, 0.111_190_517_226_687_24),
+    (0.980_144_928_248_768_1, 0.050_614_268_145_188_13),
+];
+
+/// The n-point Gauss–Legendre rule on [0, 1] for n = 8k, k = 1 … 8 (exact for degree 2n − 1),
+/// formed once per process by Newton's iteration on P_n (nodes and weights to the
+/// rounding; the 8-point rule equals [`GL8`] within 1e-16, tested below). `None` for other n.
+pub fn gauss_legendre(n: usize) -> Option<&'static [(f64, f64)]> {
+    static RULES: [std::sync::OnceLock<Vec<(f64, f64)>>; 8] =
+        [const { std::sync::OnceLock::new() }; 8];
+    if n == 0 || !n.is_multiple_of(8) || n > 64 {
+        return None;
+    }
+    Some(RULES[n / 8 - 1].get_or_init(|| {
+        let mut rule: Vec<(f64, f64)> = (0..n)
+            .map(|i| {
+                // Tricomi's first guess, then Newton on P_n(x) (three steps reach the rounding
+                // from it; six for margin).
+                let mut x = (std::f64::consts::PI * (i as f64 + 0.75) / (n as f64 + 0.5)).cos();
+                let mut dp = 1.0;
+                for _ in 0..6 {
+                    let (mut p0, mut p1) = (1.0, x);
+                    for k in 2..=n {
+                        let p2 = ((2 * k - 1) as f64 * x * p1 - (k - 1) as f64 * p0) / k as f64;
+                        p0 = p1;
+                        p1 = p2;
+                    }
+                    dp = n as f64 * (x * p1 - p0) / (x * x - 1.0);
+                    x -= p1 / dp;
+                }
+                (0.5 * (1.0 - x), 1.0 / ((1.0 - x * x) * dp * dp))
+            })
+            .collect();
+        rule.sort_by(|a, b| a.0.total_cmp(&b.0));
+        rule
+    }))
+}
+
 /// Largest abscissa parameter of the usual rule: at t = 4 the distance of a node to the end
 /// point is below 1e-37 of the interval length, far beyond what a bounded or log-singular
 /// integrand needs.
@@ -441,5 +488,28 @@ mod tests {
             integrate_to_inf(f, 0.0, 1.0, 1e-14),
         );
         assert_eq!(a.value, b.value);
+    }
+
+    #[test]
+    fn gauss_legendre_rules_integrate_polynomials() {
+        let r8 = super::gauss_legendre(8).unwrap();
+        for (a, b) in r8.iter().zip(super::GL8) {
+            assert!(
+                (a.0 - b.0).abs() < 3e-16 && (a.1 - b.1).abs() < 3e-16,
+                "{a:?} {b:?}"
+            );
+        }
+        for n in (8..=64).step_by(8) {
+            let rule = super::gauss_legendre(n).unwrap();
+            // ∫₀¹ x^m dx = 1/(m + 1), exact for m ≤ 2n − 1.
+            for m in [0, 1, 5, 2 * n - 1] {
+                let got: f64 = rule.iter().map(|&(x, w)| w * x.powi(m as i32)).sum();
+                assert!(
+                    (got - 1.0 / (m + 1) as f64).abs() < 1e-14,
+                    "n {n} m {m}: {got}"
+                );
+            }
+        }
+        assert!(super::gauss_legendre(12).is_none() && super::gauss_legendre(72).is_none());
     }
 }

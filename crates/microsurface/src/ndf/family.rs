@@ -134,14 +134,79 @@ fn clipped(s: &str) -> String {
     }
 }
 
+impl UnknownNdf {
+    /// The kind whose name or alias is nearest the unknown name, if one is near enough to be
+    /// a misspelling: within an edit distance (Levenshtein, on the name as `from_str` reads
+    /// it) of 1 for names up to 4 characters, 2 up to 8, 3 beyond ("beckman" → Beckmann,
+    /// "studnet_t" → Student-T; "foo" → none).
+    pub fn suggestion(&self) -> Option<NdfKind> {
+        let key = normalised(&self.0);
+        if key.is_empty() || key.len() > 64 {
+            return None;
+        }
+        let limit = match key.chars().count() {
+            0..=4 => 1,
+            5..=8 => 2,
+            _ => 3,
+        };
+        NdfKind::ALL
+            .into_iter()
+            .flat_map(|k| {
+                std::iter::once(k.name())
+                    .chain(k.aliases().iter().copied())
+                    .map(move |n| (k, n))
+            })
+            .map(|(k, n)| (edit_distance(&key, n), k))
+            .filter(|&(d, _)| d <= limit)
+            .min_by_key(|&(d, _)| d)
+            .map(|(_, k)| k)
+    }
+}
+
+/// The Levenshtein distance between two short strings (by characters).
+fn edit_distance(a: &str, b: &str) -> usize {
+    let b: Vec<char> = b.chars().collect();
+    let mut row: Vec<usize> = (0..=b.len()).collect();
+    for (i, ca) in a.chars().enumerate() {
+        let mut prev = row[0];
+        row[0] = i + 1;
+        for (j, &cb) in b.iter().enumerate() {
+            let cur = row[j + 1];
+            row[j + 1] = (prev + usize::from(ca != cb)).min(row[j] + 1).min(cur + 1);
+            prev = cur;
+        }
+    }
+    row[b.len()]
+}
+
+/// A name as `from_str` compares it: trimmed, lower case, `-` and spaces read as `_`.
+fn normalised(s: &str) -> String {
+    s.trim()
+        .chars()
+        .map(|c| match c {
+            '-' | ' ' => '_',
+            c => c.to_ascii_lowercase(),
+        })
+        .collect()
+}
+
 impl fmt::Display for UnknownNdf {
     fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
-        write!(
-            f,
-            "unknown ndf '{}' (expected one of {}; case-insensitive)",
-            clipped(&self.0),
-            valid_names()
-        )
+        match self.suggestion() {
+            Some(k) => write!(
+                f,
+                "unknown ndf '{}': did you mean '{}'? (expected one of {}; case-insensitive)",
+                clipped(&self.0),
+                k.name(),
+                valid_names()
+            ),
+            None => write!(
+                f,
+                "unknown ndf '{}' (expected one of {}; case-insensitive)",
+                clipped(&self.0),
+                valid_names()
+            ),
+        }
     }
 }
 
@@ -153,14 +218,7 @@ impl FromStr for NdfKind {
     /// case-insensitive, with `-` and spaces read as `_` (`"GGX"`, `"Student-T"`,
     /// `"Trowbridge_Reitz"`).
     fn from_str(s: &str) -> Result<Self, Self::Err> {
-        let key: String = s
-            .trim()
-            .chars()
-            .map(|c| match c {
-                '-' | ' ' => '_',
-                c => c.to_ascii_lowercase(),
-            })
-            .collect();
+        let key = normalised(s);
         NdfKind::ALL
             .into_iter()
             .find(|k| k.name() == key || k.aliases().contains(&key.as_str()))

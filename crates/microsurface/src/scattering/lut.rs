@@ -714,7 +714,7 @@ fn unravel(mut i: usize, dims: &[usize]) -> Vec<usize> {
 /// 32-point Gauss–Legendre on [0, 1] (4 panels of the library's 8-point rule), for the
 /// averages 2∫E μ dμ = ∫₀¹ E(x²) 4x³ dx.
 fn gl32() -> impl Iterator<Item = (f64, f64)> {
-    use crate::scattering::compensation::GL8;
+    use crate::math::quad::GL8;
     (0..4).flat_map(|p| {
         GL8.iter()
             .map(move |&(x, w)| ((p as f64 + x) / 4.0, w / 4.0))

@@ -3,7 +3,7 @@
 // `!(x > 0)` is the NaN-aware test (false for NaN), on purpose.
 #![allow(clippy::neg_cmp_op_on_partial_ord)]
 
-use super::tables::{AlbedoTable, GL8};
+use super::tables::AlbedoTable;
 use super::Scheme;
 use crate::bsdf::fresnel::Fresnel;
 use crate::bsdf::{Bsdf, BsdfSample, Lobe, RoughConductor};
@@ -49,19 +49,8 @@ impl<F: Real, D: MicrofacetDistribution<F>, Fr: Fresnel<F, N>, const N: usize>
         let factor = match scheme {
             Scheme::Turquin => eval(1.0),
             Scheme::KullaConty => {
-                // F_avg = 2∫F(μ)μ dμ, 8-point Gauss–Legendre on 16 intervals.
-                let mut f_avg = [0.0; N];
-                for k in 0..16 {
-                    for (x, w) in GL8 {
-                        let mu = (k as f64 + x) / 16.0;
-                        let f = eval(mu);
-                        for c in 0..N {
-                            f_avg[c] += 2.0 * w / 16.0 * f[c] * mu;
-                        }
-                    }
-                }
                 let e = table.e_avg();
-                f_avg.map(|f| f * f * e / (1.0 - f * (1.0 - e)))
+                fresnel.average().map(|f| f * f * e / (1.0 - f * (1.0 - e)))
             }
         };
         CompensatedConductor {

@@ -3,39 +3,13 @@
 // `!(x > 0)` is the NaN-aware test (false for NaN), on purpose.
 #![allow(clippy::neg_cmp_op_on_partial_ord)]
 
-use super::tables::{AlbedoTable, DielectricTables, GL8};
+use super::tables::{AlbedoTable, DielectricTables};
 use super::Scheme;
+use crate::bsdf::fresnel::dielectric_average;
 use crate::bsdf::{Bsdf, BsdfSample, Lobe, RoughDielectric, Transport};
 use crate::distribution::MicrofacetDistribution;
 use crate::fast::Real;
 use std::sync::Arc;
-
-/// F_avg = 2∫F(μ)μ dμ of the dielectric Fresnel term at relative index η (from the side
-/// where the ray meets η). Below the critical angle (η < 1: μ < μc = √(1 − η²)) F = 1 and
-/// contributes μc²; above it μ = μc + (1 − μc)t² removes F's square-root edge at μc, and
-/// 8-point Gauss–Legendre on 32 intervals in t is exact to 1e-20 (against mpmath, η = 1.5,
-/// 1/1.5, 2.42, 1/2.42, 1/1.05; without the split the kink cost 2e-4).
-fn dielectric_f_avg(eta: f64) -> f64 {
-    let mc = if eta < 1.0 {
-        ((1.0 - eta) * (1.0 + eta)).sqrt()
-    } else {
-        0.0
-    };
-    let mut f_avg = mc * mc;
-    for k in 0..32 {
-        for (x, w) in GL8 {
-            let t = (k as f64 + x) / 32.0;
-            let mu = mc + (1.0 - mc) * t * t;
-            f_avg += 2.0 * w / 32.0
-                * crate::bsdf::fresnel::dielectric(mu, eta)
-                * mu
-                * (1.0 - mc)
-                * 2.0
-                * t;
-        }
-    }
-    f_avg
-}
 
 /// A rough dielectric with its lost energy put back: [`Bsdf`] like the single-scattering
 /// [`RoughDielectric`] (f32 or f64, grey f in N channels; the tables and the added lobes in
@@ -97,7 +71,7 @@ impl<F: Real, D: MicrofacetDistribution<F>> CompensatedDielectric<F, D, 3> {
         let smooth = eta == F::ONE || dist.effectively_smooth();
         let eta64 = eta.to_f64();
         let (lo, li) = (tables.outside.lost_avg(), tables.inside.lost_avg());
-        let k_out = 1.0 - dielectric_f_avg(eta64);
+        let k_out = 1.0 - dielectric_average(eta64);
         let mut k = [k_out, k_out * lo / (eta64 * eta64 * li)];
         if !(k[1] <= 1.0) {
             // (Also a lossless side, li = 0, whose lobes are 0 anyway.)
@@ -152,7 +126,7 @@ impl<F: Real, D: MicrofacetDistribution<F>, const N: usize> CompensatedDielectri
     /// of the stable API.
     #[doc(hidden)]
     pub fn kulla_conty_shares(&self) -> ([f64; 2], f64) {
-        (self.k, dielectric_f_avg(self.ss.eta().to_f64()))
+        (self.k, dielectric_average(self.ss.eta().to_f64()))
     }
 
     /// The table of a side (0 outside, 1 inside).
@@ -312,32 +286,5 @@ impl<F: Real, D: MicrofacetDistribution<F>, const N: usize> Bsdf<F>
 
     fn sample(&self, wo: [F; 3], uc: F, u: [F; 2]) -> Option<BsdfSample<F, [F; N]>> {
         self.sample_grey(wo, uc, u).map(|s| s.map_f(|f| [f; N]))
-    }
-}
-
-#[cfg(test)]
-mod tests {
-    use super::dielectric_f_avg;
-
-    /// The hemispherical Fresnel average against the reciprocity of the averaged
-    /// transmittance, 1 − F_avg(1/η) = (1 − F_avg(η))/η² (the kink at the critical angle
-    /// is on the 1/η side), and against values integrated with mpmath (30 digits).
-    #[test]
-    fn fresnel_average() {
-        for eta in [1.05, 1.33, 1.5, 2.42, 3.0] {
-            let (out, inside) = (dielectric_f_avg(eta), dielectric_f_avg(1.0 / eta));
-            assert!(
-                ((1.0 - inside) - (1.0 - out) / (eta * eta)).abs() < 1e-14,
-                "η={eta}: {out} {inside}"
-            );
-        }
-        for (eta, want) in [
-            (1.5, 0.091_777_959_342_351_21),
-            (1.0 / 1.5, 0.596_345_759_707_711_8),
-            (2.42, 0.212_540_794_738_842_13),
-            (1.0 / 2.42, 0.865_538_691_813_886),
-        ] {
-            assert!((dielectric_f_avg(eta) - want).abs() < 1e-15, "η={eta}");
-        }
     }
 }

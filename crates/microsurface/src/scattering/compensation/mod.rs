@@ -10,7 +10,7 @@ mod tables;
 
 pub use conductor::CompensatedConductor;
 pub use dielectric::CompensatedDielectric;
-pub(crate) use tables::GL8;
+
 pub use tables::{dielectric_table_bytes, AlbedoTable, DielectricTables, AZIMUTHS, SHIPPED_ETAS};
 
 /// Which compensation: see the [module docs](crate::scattering).

@@ -6,6 +6,7 @@
 
 use crate::distribution::{cached, FitCache, MicrofacetDistribution, Sample};
 use crate::fast::Real;
+use crate::math::quad::GL8;
 use crate::scattering::albedo::single_scattering_albedo_tol;
 use crate::scattering::table::Grid;
 use crate::AnyMicrofacet;
@@ -23,19 +24,6 @@ const NODES: usize = 33;
 /// critical angle seen from inside (with 33 nodes the interpolation error reached 1.1e-3
 /// there at α = 0.1, η = 1.5).
 const DIELECTRIC_NODES: usize = 65;
-
-/// Gauss–Legendre nodes and weights on [0, 1], 8 points (exact for degree 15: the cubic
-/// interpolant times μ on each interval, and the smooth Fresnel averages).
-pub(crate) const GL8: [(f64, f64); 8] = [
-    (0.019_855_071_751_231_856, 0.050_614_268_145_188_13),
-    (0.101_666_761_293_186_63, 0.111_190_517_226_687_24),
-    (0.237_233_795_041_835_5, 0.156_853_322_938_943_64),
-    (0.408_282_678_752_175_1, 0.181_341_891_689_181_0),
-    (0.591_717_321_247_824_9, 0.181_341_891_689_181_0),
-    (0.762_766_204_958_164_5, 0.156_853_322_938_943_64),
-    (0.898_333_238_706_813_4, 0.111_190_517_226_687_24),
-    (0.980_144_928_248_768_1, 0.050_614_268_145_188_13),
-];
 
 /// E(μ) of one material and its average: see the [module docs](crate::scattering).
 ///
