@@ -2077,7 +2077,7 @@ fn construction(i: &Inputs) {
         });
         let die = time(20_000, |j| {
             let m = AnyMicrofacet::<f32>::new(k, a32[j], a32[j], s).unwrap();
-            let b = CompensatedDielectric::new(m, 1.5f32, Scheme::KullaConty);
+            let b = CompensatedDielectric::new(m, 1.5f32, Scheme::KullaConty).unwrap();
             black_box(&b);
             b.tables().outside.e_avg()
         });

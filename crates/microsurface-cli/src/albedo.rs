@@ -171,6 +171,12 @@ fn run_walks<D: MicrofacetDistribution<f64>>(
             seed,
         ),
         Facets::Diffuse(rho) => albedo(&s, &DiffuseFacets(rho), wo, walks, seed),
-        Facets::Dielectric(eta) => albedo(&s, &DielectricFacets(eta), wo, walks, seed),
+        Facets::Dielectric(eta) => albedo(
+            &s,
+            &DielectricFacets::new(eta).expect("η checked where the line was read"),
+            wo,
+            walks,
+            seed,
+        ),
     }
 }

@@ -241,8 +241,11 @@ impl Request {
                         .eval_orders(wo, wi, samples, seed)
                 }
                 Material::Glass { eta } => {
-                    let [b] = MultipleScattering::new(d, DielectricFacets(eta))
-                        .eval_orders(wo, wi, samples, seed);
+                    let [b] = MultipleScattering::new(
+                        d,
+                        DielectricFacets::new(eta).map_err(|e| e.to_string())?,
+                    )
+                    .eval_orders(wo, wi, samples, seed);
                     [b; 3]
                 }
             };
@@ -256,16 +259,17 @@ impl Request {
                 "total_stderr": per(&|b| b.total_stderr),
             }));
         }
-        self.run(self.bsdf(d).as_ref())
+        self.run(self.bsdf(d)?.as_ref())
     }
 
     /// The material's BSDF for the request's scattering model.
     fn bsdf<D: MicrofacetDistribution<f64> + Clone + 'static>(
         &self,
         d: D,
-    ) -> Box<dyn Bsdf<f64, Value = [f64; 3]>> {
+    ) -> Result<Box<dyn Bsdf<f64, Value = [f64; 3]>>, String> {
         let m = self.masking;
-        match (self.material, self.scattering) {
+        let err = |e: microsurface::ParamError| e.to_string();
+        Ok(match (self.material, self.scattering) {
             (Material::Mirror, Scattering::Single) => {
                 Box::new(RoughConductor::new(d, One::<3>).with_masking(m))
             }
@@ -273,7 +277,7 @@ impl Request {
                 Box::new(RoughConductor::new(d, fresnel::Conductor { eta, k }).with_masking(m))
             }
             (Material::Glass { eta }, Scattering::Single) => {
-                Box::new(RoughDielectric::new(d, eta).with_masking(m))
+                Box::new(RoughDielectric::new(d, eta).map_err(err)?.with_masking(m))
             }
             (Material::Mirror, Scattering::Compensated(s)) => {
                 Box::new(CompensatedConductor::new(d, One::<3>, s))
@@ -282,7 +286,7 @@ impl Request {
                 CompensatedConductor::new(d, fresnel::Conductor { eta, k }, s),
             ),
             (Material::Glass { eta }, Scattering::Compensated(s)) => {
-                Box::new(CompensatedDielectric::new(d, eta, s))
+                Box::new(CompensatedDielectric::new(d, eta, s).map_err(err)?)
             }
             (Material::Mirror, Scattering::Walk) => {
                 Box::new(MultipleScattering::new(d, MirrorFacets(One::<3>)))
@@ -291,10 +295,11 @@ impl Request {
                 d,
                 MirrorFacets(fresnel::Conductor { eta, k }),
             )),
-            (Material::Glass { eta }, Scattering::Walk) => {
-                Box::new(MultipleScattering::new(d, DielectricFacets(eta)))
-            }
-        }
+            (Material::Glass { eta }, Scattering::Walk) => Box::new(MultipleScattering::new(
+                d,
+                DielectricFacets::new(eta).map_err(err)?,
+            )),
+        })
     }
 
     fn run(&self, b: &dyn Bsdf<f64, Value = [f64; 3]>) -> Result<Value, String> {

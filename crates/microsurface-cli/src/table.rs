@@ -187,9 +187,9 @@ pub fn run(args: &[String]) -> Result<ExitCode, String> {
         .expect("a valid template")
         .progress_chars("=> "),
     );
-    let grid = Grid::generate(&spec, &|done, total| {
-        bar.set_length(total);
-        bar.set_position(done);
+    let grid = Grid::generate(&spec, &|done: usize, total: usize| {
+        bar.set_length(total as u64);
+        bar.set_position(done as u64);
     })
     .map_err(err)?;
     bar.finish_and_clear();

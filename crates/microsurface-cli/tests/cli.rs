@@ -1276,6 +1276,73 @@ fn has_null(v: &serde_json::Value) -> bool {
 /// `lut`: every format written, read back by the command itself (the manifest's storage
 /// error), the npy equal to the library's table bit for bit in f32, the manifest's axes the
 /// library's; the dielectric's four axes; bad arguments one line each.
+/// Every `lut` kind in every format (issue 47: the 1-D averages failed in all of them):
+/// written, read back by the command itself within the storage's bound, with the manifest's
+/// layout.
+#[test]
+fn lut_every_kind_in_every_format() {
+    let dir = std::env::temp_dir().join(format!("microsurface-lut-kinds-{}", std::process::id()));
+    std::fs::create_dir_all(&dir).unwrap();
+    for kind in [
+        "albedo",
+        "albedo-avg",
+        "dfg",
+        "dielectric",
+        "dielectric-avg",
+    ] {
+        for ext in ["npy", "png", "exr", "ktx2", "h", "rs", "wgsl"] {
+            let out = dir.join(format!("{kind}.{ext}"));
+            let o = microsurface(
+                &[
+                    "lut",
+                    "--ndf",
+                    "ggx",
+                    "--kind",
+                    kind,
+                    "--size",
+                    "3",
+                    "--eta-size",
+                    "2",
+                    "--level",
+                    "2",
+                    "--check",
+                    "0",
+                    "--out",
+                    out.to_str().unwrap(),
+                ],
+                "",
+            );
+            assert!(
+                o.status.success(),
+                "{kind} {ext}: {}",
+                String::from_utf8_lossy(&o.stderr)
+            );
+            let manifest: serde_json::Value = serde_json::from_str(
+                &std::fs::read_to_string(dir.join(format!("{kind}.{ext}.json"))).unwrap(),
+            )
+            .unwrap();
+            let storage = manifest["error"]["storage"]["max_abs"].as_f64().unwrap();
+            let bound = if ext == "png" {
+                0.5 / 65535.0 + 1e-9
+            } else {
+                6e-8
+            };
+            assert!(storage <= bound, "{kind} {ext}: {storage:e}");
+            let one_axis = manifest["axes"].as_array().unwrap().len() == 1;
+            // (albedo-avg has the roughness alone; dielectric-avg keeps side and η.)
+            assert_eq!(one_axis, kind == "albedo-avg", "{kind}");
+            assert_eq!(
+                one_axis,
+                manifest["layout"]
+                    .as_str()
+                    .unwrap()
+                    .contains("[roughness, 1]"),
+                "{kind}"
+            );
+        }
+    }
+}
+
 #[test]
 fn lut_writes_every_format_with_its_manifest() {
     use microsurface::scattering::lut::{Lut, LutKind, LutSpec};

@@ -306,7 +306,7 @@ fn cpu_reference() {
         let (f, p) = gold.eval_pdf(x.0, x.1);
         f[0] + f[1] + f[2] + p
     });
-    let glass = RoughDielectric::new(m.clone(), 1.5f32);
+    let glass = RoughDielectric::new(m.clone(), 1.5f32).unwrap();
     time("GGX conductor sample (complex Fresnel)", &|x| {
         gold.sample(x.0, 0.5, x.2)
             .map_or(0.0, |s| s.wi[0] + s.pdf + s.f[1])

@@ -1573,6 +1573,7 @@ impl Dc {
         );
         let make = |scheme| {
             CompensatedDielectric::from_tables(d.clone(), eta, scheme, tables.clone())
+                .unwrap()
                 .with_transport(transport)
         };
         let (kc, tq) = (make(Scheme::KullaConty), make(Scheme::Turquin));

@@ -794,6 +794,7 @@ fn rust_dielectric(e: &El) -> RoughDielectric<f32, Microfacet<f32, Ggx>> {
     let masking = [Masking::Correlated, Masking::Separable][e.masking as usize];
     let transport = [Transport::Radiance, Transport::Importance][e.fr.2[0] as usize];
     RoughDielectric::new(m, e.fr.1[0])
+        .unwrap()
         .with_masking(masking)
         .with_transport(transport)
 }
@@ -1325,7 +1326,7 @@ fn bsdfs_of_every_ndf_match_rust_f32() {
         };
         let masking = [Masking::Correlated, Masking::Separable][e.masking as usize];
         let eta = e.fr.1[0];
-        let d = RoughDielectric::new(m, eta).with_masking(masking);
+        let d = RoughDielectric::new(m, eta).unwrap().with_masking(masking);
         let (f, p) = (d.eval(e.wo, e.wi)[0], d.pdf(e.wo, e.wi));
         let (wm, _, delta) = half_vector_delta(e.wo, e.wi, eta, None);
         let c = (0..3).map(|q| e.wo[q] as f64 * wm[q]).sum::<f64>();

@@ -5,6 +5,7 @@
 use crate::engine::{count, map_vec, named, Domain, Item};
 use crate::ndf::NDF;
 use microsurface::scattering::table::{Grid, Material as TableMaterial, Method, Spec};
+use microsurface::scattering::Cancellable;
 use microsurface::scattering::{
     self, AlbedoTable as Table, DielectricFacets, Heights, MirrorFacets, RandomWalk,
 };
@@ -54,6 +55,10 @@ pub fn walk(
             )));
         }
     }
+    let facets = eta
+        .map(DielectricFacets::new)
+        .transpose()
+        .map_err(crate::engine::value_error)?;
     let zero = zero_like(py, mu)?;
     let items = items(mu, phi.unwrap_or(&zero));
     let o = crate::engine::with_progress(py, progress, || {
@@ -62,7 +67,7 @@ pub fn walk(
             let wo = wo_of(a[0][0], a[1][0]);
             // (One stream per element, whatever thread runs it.)
             let seed = seed.wrapping_add((i as u64).wrapping_mul(0x9E37_79B9_7F4A_7C15));
-            let r = match eta {
+            let r = match facets {
                 None => scattering::albedo_orders(
                     &surface,
                     &MirrorFacets(microsurface::bsdf::fresnel::One::<1>),
@@ -71,9 +76,7 @@ pub fn walk(
                     seed,
                     k,
                 ),
-                Some(eta) => {
-                    scattering::albedo_orders(&surface, &DielectricFacets(eta), wo, walks, seed, k)
-                }
+                Some(f) => scattering::albedo_orders(&surface, &f, wo, walks, seed, k),
             };
             for (j, side) in [&r.reflect, &r.transmit].into_iter().enumerate() {
                 let at = 2 * j * k;
@@ -236,9 +239,18 @@ impl AlbedoTable {
         let report = move |done: usize, total: usize| counts.set(done as u64, total as u64);
         let table = crate::engine::interruptible_ticking(
             py,
-            move || Table::new_with_progress(&d, &report),
+            move |cancel| {
+                Table::new_with_progress(
+                    &d,
+                    &Cancellable {
+                        progress: report,
+                        cancel,
+                    },
+                )
+            },
             progress.ticker(),
-        )?;
+        )?
+        .map_err(|_| pyo3::exceptions::PyKeyboardInterrupt::new_err(()))?;
         progress.close(py)?;
         Ok(AlbedoTable { table, source })
     }
@@ -637,7 +649,13 @@ fn table(
     spec.validate().map_err(|e| PyValueError::new_err(e.0))?;
     let progress = Progress::new(py, progress)?;
     let counts = progress.counts();
-    let work = move || Grid::generate(&spec, &|done, total| counts.set(done, total));
+    let work = move |cancel| {
+        let progress = Cancellable {
+            progress: move |done: usize, total: usize| counts.set(done as u64, total as u64),
+            cancel,
+        };
+        Grid::generate(&spec, &progress)
+    };
     let grid = crate::engine::interruptible_ticking(py, work, progress.ticker())?
         .map_err(|e| PyValueError::new_err(e.0))?;
     progress.close(py)?;
@@ -711,7 +729,13 @@ fn lut(
     spec.level = u32::try_from(count(level, "level", 0)?).unwrap_or(u32::MAX);
     let progress = Progress::new(py, progress)?;
     let counts = progress.counts();
-    let work = move || Lut::compute(&spec, &|done, total| counts.set(done as u64, total as u64));
+    let work = move |cancel| {
+        let progress = Cancellable {
+            progress: move |done: usize, total: usize| counts.set(done as u64, total as u64),
+            cancel,
+        };
+        Lut::compute(&spec, &progress)
+    };
     let table = crate::engine::interruptible_ticking(py, work, progress.ticker())?
         .map_err(|e| bad(e.to_string()))?;
     progress.close(py)?;

@@ -164,30 +164,32 @@ struct Recipe {
 
 impl Recipe {
     /// The BSDF of material `d` with `eta` (and `k`; empty: F = 1 for a conductor).
-    fn build(&self, d: Material, eta: &[f64], k: &[f64]) -> Box<dyn AnyBsdf> {
+    /// (`Err` for an η the library refuses: NaN, infinite or ≤ 0.)
+    fn build(&self, d: Material, eta: &[f64], k: &[f64]) -> Result<Box<dyn AnyBsdf>, ParamError> {
         let (m, t) = (self.masking, self.transport);
         if self.dielectric {
             let eta = eta[0];
-            return match self.model {
+            return Ok(match self.model {
                 // (One channel: a dielectric's f is grey.)
                 Model::Single => Box::new(
-                    bsdf::RoughDielectric::new(d, eta)
+                    bsdf::RoughDielectric::new(d, eta)?
                         .with_channels::<1>()
                         .with_masking(m)
                         .with_transport(t),
                 ),
                 Model::Compensated(s) => Box::new(
-                    CompensatedDielectric::new(d, eta, s)
+                    CompensatedDielectric::new(d, eta, s)?
                         .with_channels::<1>()
                         .with_transport(t),
                 ),
                 Model::Walk => Box::new(Walk(
-                    MultipleScattering::<_, _, 1>::new(d, DielectricFacets(eta)).with_transport(t),
+                    MultipleScattering::<_, _, 1>::new(d, DielectricFacets::new(eta)?)
+                        .with_transport(t),
                 )),
-            };
+            });
         }
         let model = self.model;
-        match (eta.len(), k.len()) {
+        Ok(match (eta.len(), k.len()) {
             (0, _) => conductor_of::<1, _>(d, fresnel::One::<1>, m, model),
             (1, _) => conductor_of::<1, _>(
                 d,
@@ -211,7 +213,7 @@ impl Recipe {
                 m,
                 model,
             ),
-        }
+        })
     }
 }
 
@@ -338,7 +340,11 @@ impl PyBsdf {
         let n = ndf.get();
         let one = |c: &Option<Channel>| c.as_ref().map_or(Some(Vec::new()), |c| c.one.clone());
         let inner = match (n.batched(), one(&eta), one(&k)) {
-            (false, Some(e), Some(kk)) => Inner::One(recipe.build(n.material()?.clone(), &e, &kk)),
+            (false, Some(e), Some(kk)) => Inner::One(
+                recipe
+                    .build(n.material()?.clone(), &e, &kk)
+                    .map_err(crate::engine::value_error)?,
+            ),
             _ => {
                 // (The shapes: the NDF's parameters, η's and k's batch axes broadcast.)
                 let np = crate::engine::numpy(py)?;
@@ -439,7 +445,7 @@ impl PyBsdf {
             b.ndf.with_material(p, |m| {
                 recent.with(
                     key,
-                    || Ok::<_, ParamError>(b.recipe.build(m.clone(), eta, k)),
+                    || b.recipe.build(m.clone(), eta, k),
                     |bsdf| f(bsdf.as_ref(), i, &a[..k0], o),
                 )
             })?

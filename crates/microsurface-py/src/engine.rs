@@ -22,6 +22,7 @@
 //! together, the functions of a cosine), [`apply_vec`] and [`map_vec`] (directions and
 //! uniforms with their core axes), and build the package's named tuples with [`named`].
 
+use microsurface::scattering::Cancel;
 use microsurface::ParamError;
 use numpy::{PyArray1, PyArrayMethods, PyReadonlyArray1};
 use pyo3::exceptions::PyValueError;
@@ -729,20 +730,24 @@ fn guarded<'a>(
     }
 }
 
-/// `f()` on a thread of its own while this one waits without the GIL, checking the signals
-/// every 50 ms: Ctrl-C raises KeyboardInterrupt at once (the computation, which cannot be
-/// cut short from outside, finishes in the background and is dropped); `tick` is called
-/// with the GIL at each check (a progress bar's update) and once at the end.
+/// `f(cancel)` on a thread of its own while this one waits without the GIL, checking the
+/// signals every 50 ms: Ctrl-C raises KeyboardInterrupt at once and trips `cancel`, which
+/// the library's long loops ask before each unit of work
+/// (`microsurface::scattering::Progress`), so the computation stops too; the interrupt
+/// waits up to [`WIND_DOWN`] for it, so that the next call finds the cores free. `tick` is
+/// called with the GIL at each check (a progress bar's update) and once at the end.
 pub fn interruptible_ticking<T: Send + 'static>(
     py: Python<'_>,
-    f: impl FnOnce() -> T + Send + 'static,
+    f: impl FnOnce(Cancel) -> T + Send + 'static,
     mut tick: impl FnMut(Python<'_>) -> PyResult<()> + Send,
 ) -> PyResult<T> {
     use std::sync::mpsc::{channel, RecvTimeoutError};
     let (tx, rx) = channel();
+    let cancel = Cancel::new();
+    let token = cancel.clone();
     std::thread::spawn(move || {
         // (Fails only when the caller was interrupted and dropped the receiver.)
-        let _ = tx.send(f());
+        let _ = tx.send(f(token));
     });
     py.allow_threads(move || loop {
         match rx.recv_timeout(Duration::from_millis(50)) {
@@ -750,10 +755,18 @@ pub fn interruptible_ticking<T: Send + 'static>(
                 Python::with_gil(&mut tick)?;
                 return Ok(v);
             }
-            Err(RecvTimeoutError::Timeout) => Python::with_gil(|py| {
-                py.check_signals()?;
-                tick(py)
-            })?,
+            Err(RecvTimeoutError::Timeout) => {
+                let checked = Python::with_gil(|py| {
+                    py.check_signals()?;
+                    tick(py)
+                });
+                if let Err(e) = checked {
+                    cancel.cancel();
+                    // (The loop ends within one unit of work; its result is dropped.)
+                    let _ = rx.recv_timeout(WIND_DOWN);
+                    return Err(e);
+                }
+            }
             Err(RecvTimeoutError::Disconnected) => {
                 return Err(pyo3::exceptions::PyRuntimeError::new_err(
                     "the computation failed (a panic in the library: please report it)",
@@ -762,6 +775,10 @@ pub fn interruptible_ticking<T: Send + 'static>(
         }
     })
 }
+
+/// How long an interrupt waits for the cancelled computation to stop: a unit of work (a
+/// table's node, a chunk of walks) takes at most tenths of a second.
+const WIND_DOWN: Duration = Duration::from_millis(1500);
 
 // ---- The front ends of the NDF and BSDF methods: scalar or direction arguments, and the
 // package's named tuples.

@@ -593,6 +593,34 @@ def test_ctrl_c_latency(call):
     assert latency < 0.5
 
 
+@pytest.mark.parametrize(
+    "call",
+    [
+        # An anisotropic Student-T albedo table (no table shipped: 33 × 9 quadratures, seconds).
+        lambda: mf.AlbedoTable(mf.StudentT(0.31, 2.5, alpha_y=0.17)),
+        # A walk table of 10⁷ walks a cell (minutes).
+        lambda: mf.table(mf.GGX(0.3), alpha=[0.3, 0.5], mu=np.linspace(0.1, 1, 8), walks=10_000_000),
+        # A dielectric LUT (32² × 16 × 2 quadratures).
+        lambda: mf.lut(mf.GGX(0.3), "dielectric", size=32),
+    ],
+    ids=["albedo_table", "walk_table", "dielectric_lut"],
+)
+def test_ctrl_c_stops_the_work(call):
+    # Issue 47: KeyboardInterrupt came at once, but the threads computed on (both cores
+    # busy) and the next call waited behind them (a 10⁶-element g1 took 32 s after an
+    # interrupted table). Now the interrupt cancels the library's loop: after it the process
+    # uses (almost) no CPU — a loop still running on two cores would use ~2 s of it in the
+    # second measured — and the next call runs at once.
+    latency = interrupt_latency(call)
+    assert latency < 2.0
+    before = time.process_time()
+    time.sleep(1.0)
+    assert time.process_time() - before < 0.5
+    x = np.linspace(0.01, 1.0, 1_000_000)
+    g = mf.GGX(0.3).g1(x)
+    assert g.shape == x.shape and np.all(np.isfinite(g))
+
+
 @pytest.mark.parametrize("nth", [1, 2])
 def test_ctrl_c_while_numpy_api_loads_is_a_keyboard_interrupt(nth):
     # rust-numpy fetches NumPy's C API by running Python code (numpy.lib.NumpyVersion), and

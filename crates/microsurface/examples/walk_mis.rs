@@ -285,7 +285,8 @@ fn api(samples: u64, seed: u64) {
         for alpha in [0.05, 0.1, 0.5] {
             let d = Dist::new(alpha, alpha).unwrap();
             let conductor = MultipleScattering::new(d.clone(), MirrorFacets(One::<1>));
-            let dielectric = MultipleScattering::<_, _, 1>::new(d.clone(), DielectricFacets(1.5));
+            let dielectric =
+                MultipleScattering::<_, _, 1>::new(d.clone(), DielectricFacets::new(1.5).unwrap());
             let diffuse = MultipleScattering::<_, _, 1>::new(d.clone(), DiffuseFacets(0.9));
             for theta_o in [0.0f64, 45.0, 75.0] {
                 let t = theta_o.to_radians();

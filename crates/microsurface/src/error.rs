@@ -15,6 +15,7 @@ pub const GAMMA_MAX: f64 = 100.0;
 
 /// Why a parameter was rejected.
 #[derive(Clone, Copy, Debug, PartialEq)]
+#[non_exhaustive]
 pub enum ParamError {
     /// α is NaN, infinite, ≤ 0, or outside [`ALPHA_MIN`, `ALPHA_MAX`].
     Alpha(f64),
@@ -30,6 +31,9 @@ pub enum ParamError {
         range: &'static str,
         value: f64,
     },
+    /// A relative index of refraction η (a dielectric's, or the walk's dielectric facets')
+    /// that is NaN, infinite or ≤ 0.
+    Eta(f64),
 }
 
 /// A rejected value as an error message shows it: in full where that is short, in
@@ -63,6 +67,11 @@ impl fmt::Display for ParamError {
             ParamError::Shape { name, range, value } => {
                 write!(f, "{name} must be a finite number in {range}, got {}", Shown(value))
             }
+            ParamError::Eta(e) => write!(
+                f,
+                "eta (a relative index of refraction) must be a finite number > 0, got {}",
+                Shown(e)
+            ),
             ParamError::Anisotropic(g) => write!(
                 f,
                 "GTR is anisotropic only at gamma = 2 (where it is GGX); got alpha_x != alpha_y at gamma = {}",
@@ -80,6 +89,14 @@ pub(crate) fn check_alpha(alpha: f64) -> Result<f64, ParamError> {
         return Err(ParamError::Alpha(alpha));
     }
     Ok(alpha)
+}
+
+/// Checks a relative index η: finite and > 0 (NaN fails).
+pub(crate) fn check_eta(eta: f64) -> Result<f64, ParamError> {
+    if !(eta > 0.0 && eta.is_finite()) {
+        return Err(ParamError::Eta(eta));
+    }
+    Ok(eta)
 }
 
 /// Checks γ (NaN fails the range test).

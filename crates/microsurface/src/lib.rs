@@ -20,7 +20,7 @@
 //! let glass = AnyMicrofacet::<f32>::parse("student_t:2.5", 0.2, 0.2)?;
 //! let bsdfs: Vec<Box<dyn Bsdf<f32, Value = [f32; 3]>>> = vec![
 //!     Box::new(RoughConductor::new(metal, gold)),
-//!     Box::new(RoughDielectric::new(glass, 1.5)),
+//!     Box::new(RoughDielectric::new(glass, 1.5)?),
 //! ];
 //! let frame = Frame::from_normal_tangent([0.0, 0.0, 1.0], [1.0, 0.0, 0.0]);
 //! let wo = frame.to_local([0.48, 0.0, 0.8775]); // toward the viewer, world → local

@@ -485,7 +485,7 @@ fn bsdf_grid(full: bool) {
                         let c = RoughConductor::new(x.clone(), fresnel::Conductor { eta: [0.2], k: [3.9] });
                         check_bsdf(&format!("conductor {label}"), &c, wo, alpha, None, n, level, ex(0));
                         for (j, eta) in ETAS.into_iter().enumerate() {
-                            let d = RoughDielectric::new(x.clone(), eta);
+                            let d = RoughDielectric::new(x.clone(), eta).unwrap();
                             check_bsdf(&format!("dielectric η = {eta:.3} {label}"), &d, wo, alpha, Some(eta), n, level, ex(j + 1));
                         }
                     });
@@ -517,7 +517,7 @@ fn reciprocity() {
         let m = material::<f64>(k, 0.4, if k == 4 { 0.4 } else { 0.2 });
         each!(&m, x => {
             let c = RoughConductor::new(x.clone(), fresnel::Schlick { f0: [0.9, 0.6, 0.3] });
-            let d = RoughDielectric::new(x.clone(), 1.5);
+            let d = RoughDielectric::new(x.clone(), 1.5).unwrap();
             let mut checked = 0;
             for _ in 0..4000 {
                 let (wo, wi) = (random_direction(&mut rng), random_direction(&mut rng));
@@ -553,7 +553,7 @@ fn single_scattering_loses_energy_never_gains() {
             let m = material::<f64>(k, alpha, alpha);
             each!(&m, x => {
                 let c = RoughConductor::new(x.clone(), One::<1>);
-                let d = RoughDielectric::new(x.clone(), 1.5).with_transport(Transport::Importance);
+                let d = RoughDielectric::new(x.clone(), 1.5).unwrap().with_transport(Transport::Importance);
                 for deg in [0.0, 45.0, 80.0, 89.0] {
                     let wo = direction(deg);
                     let (mut e_c, mut e_d, mut v_c) = (0.0, 0.0, 0.0);
@@ -615,7 +615,7 @@ fn the_smooth_limit() {
     assert!(rel(s.f[0] * s.wi[2], fresnel::conductor(wo[2], 0.2, 3.9)) < 1e-15);
     assert_eq!(c.eval(wo, s.wi), [0.0]);
     assert_eq!(c.pdf(wo, s.wi), 0.0);
-    let d = RoughDielectric::new(m, 1.5);
+    let d = RoughDielectric::new(m, 1.5).unwrap();
     let r = fresnel::dielectric(wo[2], 1.5);
     let s = d.sample(wo, 0.99, [0.3, 0.3]).unwrap();
     assert!(s.specular && s.lobe == Lobe::Transmission && rel(s.pdf, 1.0 - r) < 1e-15);
@@ -635,8 +635,8 @@ fn exact_and_fast_bsdfs_agree() {
         each!(&m, x => {
             let a = RoughConductor::new(x.clone(), One::<1>).with_masking(Masking::Separable);
             let b = RoughConductor::new(ex, One::<1>).with_masking(Masking::Separable);
-            let c = RoughDielectric::new(x.clone(), 1.33);
-            let e = RoughDielectric::new(ex, 1.33);
+            let c = RoughDielectric::new(x.clone(), 1.33).unwrap();
+            let e = RoughDielectric::new(ex, 1.33).unwrap();
             let tol = if k <= 1 { 1e-10 } else { 1e-6 };
             for _ in 0..2000 {
                 let (wo, wi) = (random_direction(&mut rng), random_direction(&mut rng));
@@ -688,7 +688,7 @@ fn compensated_dielectric_sampling_matches_its_pdf() {
             let tables = DielectricTables::new(x, 1.5);
             // (Turquin's sampling is the single-scattering interface's, χ²-tested above.)
             for scheme in [Scheme::KullaConty] {
-                let b = CompensatedDielectric::from_tables(x.clone(), 1.5, scheme, tables.clone());
+                let b = CompensatedDielectric::from_tables(x.clone(), 1.5, scheme, tables.clone()).unwrap();
                 for z in [1.0, -1.0] {
                     let w = direction(45.0);
                     let wo = [w[0], w[1], z * w[2]];
@@ -727,7 +727,7 @@ fn correlated_beta_masking() {
                 let m = material::<F>(k, F::from_f64(alpha), F::from_f64(alpha));
                 each!(&m, x => {
                     for eta in [1.5, 1.0 / 1.5] {
-                        let a = RoughDielectric::new(x.clone(), F::from_f64(eta))
+                        let a = RoughDielectric::new(x.clone(), F::from_f64(eta)).unwrap()
                             .with_transport(Transport::Importance);
                         let b = a.clone().with_masking(Masking::CorrelatedBeta);
                         let mut refracted = 0;
@@ -816,7 +816,7 @@ fn correlated_beta_at_the_horizon() {
             for alpha in [0.3, 1.0] {
                 let m = material::<F>(k, F::from_f64(alpha), F::from_f64(alpha));
                 each!(&m, x => {
-                    let b = RoughDielectric::new(x.clone(), F::from_f64(1.5))
+                    let b = RoughDielectric::new(x.clone(), F::from_f64(1.5)).unwrap()
                         .with_masking(Masking::CorrelatedBeta);
                     for &w in &dirs {
                         for &v in &dirs {
@@ -861,7 +861,7 @@ fn correlated_beta_albedo_is_the_walks_order_one() {
         for alpha in [0.5, 1.0] {
             let m = material::<f64>(k, alpha, alpha);
             each!(&m, x => {
-                let b = RoughDielectric::new(x.clone(), 1.5)
+                let b = RoughDielectric::new(x.clone(), 1.5).unwrap()
                     .with_transport(Transport::Importance)
                     .with_masking(Masking::CorrelatedBeta);
                 for mu in [0.05f64, 0.5, 1.0] {
@@ -900,7 +900,7 @@ fn correlated_beta_albedo_is_the_walks_order_one() {
                         // GGX: the BSDF's transmitted albedo against the walk's order 1.
                         let walk = RandomWalk::new(x.clone(), Heights::Uniform);
                         let walks = 200_000;
-                        let a = albedo(&walk, &DielectricFacets(1.5), wo, walks, 29);
+                        let a = albedo(&walk, &DielectricFacets::new(1.5).unwrap(), wo, walks, 29);
                         let m = s[1] / nf;
                         // (A walk's weight is ≤ 1, so one walk moves the estimate by ≤ 1/walks:
                         // the floor of its error where it saw no transmission at all, as from
@@ -956,7 +956,7 @@ fn eval_pdf_is_eval_and_pdf_bit_for_bit() {
                     continue; // (GTR is isotropic but at γ = 2)
                 };
                 let c = RoughConductor::new(m.clone(), gold);
-                let d = RoughDielectric::new(m, F::from_f64(1.5));
+                let d = RoughDielectric::new(m, F::from_f64(1.5)).unwrap();
                 for i in 0..400 {
                     let wo = random_direction(&mut rng);
                     let wi = match i % 4 {

@@ -202,7 +202,9 @@ fn dielectric_albedo_by_quadrature() {
     use microsurface::scattering::single_scattering_albedo_dielectric_level as albedo;
     use microsurface::MicrofacetDistribution;
     fn check<D: MicrofacetDistribution<f64> + Clone>(name: &str, d: D) {
-        let b = RoughDielectric::new(d.clone(), 1.5).with_transport(Transport::Importance);
+        let b = RoughDielectric::new(d.clone(), 1.5)
+            .unwrap()
+            .with_transport(Transport::Importance);
         let mut rng = SplitMix64(11);
         for mu in [0.05f64, 0.5, 1.0] {
             for z in [1.0, -1.0] {
@@ -326,6 +328,7 @@ fn dielectric_white_furnace_is_one() {
         let tables = DielectricTables::new(&d, eta);
         for scheme in [Scheme::KullaConty, Scheme::Turquin] {
             let b = CompensatedDielectric::from_tables(d.clone(), eta, scheme, tables.clone())
+                .unwrap()
                 .with_transport(Transport::Importance);
             let mut worst = 0.0f64;
             for mu in [0.02f64, 0.1, 0.3, 0.55, 0.8, 0.95, 1.0] {
@@ -390,7 +393,7 @@ fn compensated_dielectric_reciprocity() {
     };
     for eta in [1.5, 1.0 / 2.4] {
         let d = Microfacet::<f64, Ggx>::new(0.7, 0.3).unwrap();
-        let b = CompensatedDielectric::new(d, eta, Scheme::KullaConty);
+        let b = CompensatedDielectric::new(d, eta, Scheme::KullaConty).unwrap();
         for _ in 0..4000 {
             let (wo, wi) = (dir(), dir());
             let (f, g) = (b.eval(wo, wi)[0], b.eval(wi, wo)[0]);
@@ -443,6 +446,7 @@ fn shipped_dielectric_tables() {
         println!("{name:12} α={a} η={eta}: shipped vs computed ≤ {worst:.1e}");
         assert!(worst <= 2e-4, "{name} α={a} η={eta}: {worst:e}");
         let b = CompensatedDielectric::from_tables(d.clone(), eta, Scheme::KullaConty, s)
+            .unwrap()
             .with_transport(Transport::Importance);
         for mu in [0.1, 0.6] {
             for z in [1.0, -1.0] {

@@ -1324,7 +1324,9 @@ fn microfacet_api<F: fast::Real + std::fmt::Debug>(test: u64, draw: fn(&mut Rng)
             },
         )
         .with_masking(masking);
-        let glass = RoughDielectric::new(m.clone(), eta).with_masking(masking);
+        let glass = RoughDielectric::new(m.clone(), eta)
+            .unwrap()
+            .with_masking(masking);
         for _ in 0..60 {
             let w: [F; 3] = unit_direction(r);
             let wi: [F; 3] = unit_direction(r);
@@ -1805,7 +1807,7 @@ fn walk_contract() {
                         .map(|x| (x.w, x.weight[0], x.order, true)),
                     s.walk::<1>(&DiffuseFacets(0.8), wo, &mut rng)
                         .map(|x| (x.w, x.weight[0], x.order, true)),
-                    b.walk::<1>(&DielectricFacets(eta), wo, &mut rng)
+                    b.walk::<1>(&DielectricFacets::new(eta).unwrap(), wo, &mut rng)
                         .map(|x| (x.w, x.weight[0], x.order, false)),
                 ]
             });
@@ -1866,8 +1868,8 @@ fn multiple_scattering_contract() {
         let g = Microfacet::<f64, Ggx>::new(ax, ay).unwrap();
         let e = Microfacet::<f64, Exponential>::new(ax, ay).unwrap();
         let conductor = MultipleScattering::new(g.clone(), MirrorFacets(One::<1>));
-        let dielectric =
-            MultipleScattering::<_, _, 1>::new(e, DielectricFacets(eta)).with_transport(transport);
+        let dielectric = MultipleScattering::<_, _, 1>::new(e, DielectricFacets::new(eta).unwrap())
+            .with_transport(transport);
         let diffuse = MultipleScattering::<_, _, 1>::new(g, DiffuseFacets(0.9));
         for _ in 0..50 {
             let wo: [f64; 3] = unit_direction::<f64>(&mut r);
@@ -2234,9 +2236,10 @@ fn compensated_dielectric_contract() {
         let eta = r.pick(&[1.5, 1.0 / 1.33, 1.0, 2.4]);
         let ay = if i % 2 == 0 { a } else { 0.5 * a };
         let d = Microfacet::<f64, Ggx>::new(a, ay).unwrap();
-        let kc = CompensatedDielectric::new(d.clone(), eta, Scheme::KullaConty);
+        let kc = CompensatedDielectric::new(d.clone(), eta, Scheme::KullaConty).unwrap();
         let tables = kc.tables().clone();
-        let tq = CompensatedDielectric::from_tables(d.clone(), eta, Scheme::Turquin, tables);
+        let tq =
+            CompensatedDielectric::from_tables(d.clone(), eta, Scheme::Turquin, tables).unwrap();
         for b in [kc.clone(), kc.with_transport(Transport::Importance), tq] {
             for _ in 0..400 {
                 let wo: [f64; 3] = unit_direction::<f64>(&mut r);
@@ -2437,6 +2440,7 @@ fn bsdfs_of<F: fast::Real + std::fmt::Debug + 'static>(
             format!("dielectric η={eta:e} {mk_d:?} {tr:?}"),
             Box::new(
                 RoughDielectric::new(m.clone(), F::from_f64(eta))
+                    .unwrap()
                     .with_masking(mk_d)
                     .with_transport(tr),
             ),
@@ -3111,7 +3115,7 @@ fn compensated_every_ndf<F: fast::Real + std::fmt::Debug + 'static>(
         if !fam {
             let eta = r.pick(&[1.33, 1.5, 1.6, 2.0, 2.42, 1.0 / 1.5, 1.0 / 2.42]);
             let tr = r.pick(&[Transport::Radiance, Transport::Importance]);
-            let d = CompensatedDielectric::new(m.clone(), F::from_f64(eta), scheme);
+            let d = CompensatedDielectric::new(m.clone(), F::from_f64(eta), scheme).unwrap();
             cases.push((
                 format!("dielectric η={eta} {tr:?}"),
                 Box::new(d.clone().with_transport(tr)),
@@ -3327,8 +3331,11 @@ fn multiple_scattering_every_ndf<F: fast::Real + std::fmt::Debug + 'static>(
             (
                 format!("dielectric η={eta:e} {tr:?}"),
                 Box::new(
-                    MultipleScattering::<_, _, 3>::new(m.clone(), DielectricFacets(eta))
-                        .with_transport(tr),
+                    MultipleScattering::<_, _, 3>::new(
+                        m.clone(),
+                        DielectricFacets::new(eta).unwrap(),
+                    )
+                    .with_transport(tr),
                 ),
                 false,
             ),
@@ -3377,7 +3384,11 @@ fn multiple_scattering_every_ndf<F: fast::Real + std::fmt::Debug + 'static>(
                 // (A singular NDF's pole: the rounded pair's half vector on the axis, D = ∞,
                 // whose pdf the walk's BSDF answers as 0.)
                 let pole = singular && wo[0] + s.wi[0] == F::ZERO && wo[1] + s.wi[1] == F::ZERO;
-                let same_pdf = if f32s {
+                // (A delta lobe, the interface at η = 1: its pdf is a weight, and `pdf` at wi
+                // answers 0, as every BSDF's delta lobes.)
+                let same_pdf = if s.specular {
+                    pe == 0.0
+                } else if f32s {
                     pe > 0.0 || pole || !resolvable(v3(wo), v3(s.wi), etap, ax.min(ay), f32s)
                 } else {
                     pe == pdf

@@ -8,7 +8,10 @@
 //! compensation suites): Fresnel at grazing for an index ≈ 1 and at tiny, subnormal and
 //! huge indices, a zero Fresnel channel at a singular pole, the refraction at a tiny η,
 //! samples whose pdf or D had passed through subnormals, an f32 sample whose f overflowed,
-//! the conductor's reciprocity, and f32 indices of the shipped dielectric tables.
+//! the conductor's reciprocity, and f32 indices of the shipped dielectric tables. Then
+//! issue 47's inputs: a bad η refused where it enters, the walk at η = 1 a delta, f32 α at
+//! the documented minimum, u = 1 read below 1, "did you mean" for misspelt names, and the
+//! frame of no normal.
 
 use microsurface::bsdf::frame::Frame;
 use microsurface::bsdf::fresnel::{conductor, f82_tint};
@@ -130,7 +133,7 @@ fn frame_tangent_parallel_to_the_normal() {
 #[test]
 fn compensated_samples_from_the_horizon() {
     let d = Microfacet::<f64, Ggx>::new(0.3, 0.3).unwrap();
-    let glass = CompensatedDielectric::new(d.clone(), 1.5, Scheme::KullaConty);
+    let glass = CompensatedDielectric::new(d.clone(), 1.5, Scheme::KullaConty).unwrap();
     assert!(glass.sample([1.0, 0.0, 0.0], 0.0, [0.3, 0.6]).is_none());
     let gold = microsurface::bsdf::fresnel::Conductor {
         eta: [0.2; 3],
@@ -366,7 +369,7 @@ fn transmission_at_eta_near_one_stays_finite() {
         wo: [F; 3],
         wi: [F; 3],
     ) {
-        let b = RoughDielectric::new(d, eta);
+        let b = RoughDielectric::new(d, eta).unwrap();
         // Both ways: the other side's η' too.
         for (wo, wi) in [(wo, wi), (wi, wo)] {
             let f = b.eval(wo, wi).map(|x| x.to_f64());
@@ -574,7 +577,8 @@ fn refraction_at_a_tiny_index_is_unit() {
         )
         .unwrap(),
         1e-6,
-    );
+    )
+    .unwrap();
     if let Some(s) = b.sample([0.0, 0.0, 1.0], 0.999999999, [0.18398373624911346, 0.0]) {
         let l = (s.wi[0] * s.wi[0] + s.wi[1] * s.wi[1] + s.wi[2] * s.wi[2]).sqrt();
         assert!((l - 1.0).abs() < 1e-14, "{s:?}");
@@ -599,6 +603,7 @@ fn samples_from_subnormals_are_rejected() {
     let ok = |w: f64| w <= 1.0 + 1e-9;
     let m32 = AnyMicrofacet::<f32>::new(NdfKind::Beckmann, 4.8287145e-3, 1.0, None).unwrap();
     let b32 = RoughDielectric::new(m32, 966.9001f32)
+        .unwrap()
         .with_masking(Masking::Separable)
         .with_transport(Transport::Importance);
     if let Some(s) = b32.sample(
@@ -658,6 +663,7 @@ fn samples_from_subnormals_are_rejected() {
     for (kind, ax, ay, eta, mk, tr, wo, uc, u) in cases {
         let m = AnyMicrofacet::<f64>::new(kind, ax, ay, None).unwrap();
         let b = RoughDielectric::new(m, eta)
+            .unwrap()
             .with_masking(mk)
             .with_transport(tr);
         if let Some(s) = b.sample(wo, uc, u) {
@@ -731,6 +737,7 @@ fn f32_sample_f_stays_finite() {
     for (ax, ay, g, eta, mk, tr, wo, uc, u) in cases {
         let m = AnyMicrofacet::<f32>::new(NdfKind::GenExponential, ax, ay, Some(g)).unwrap();
         let b = RoughDielectric::new(m, eta)
+            .unwrap()
             .with_masking(mk)
             .with_transport(tr);
         if let Some(s) = b.sample(wo, uc, u) {
@@ -890,4 +897,237 @@ fn exact_visible_pdf_where_d_overflows() {
         (far / near / want - 1.0).abs() < 1e-6,
         "{far} {near} {want}"
     );
+}
+
+/// Issue 47, item 3: a relative index is checked where it enters (η = 0 made every value NaN,
+/// η < 0 gave plausible-looking transmission): RoughDielectric, CompensatedDielectric and the
+/// walk's DielectricFacets refuse NaN, ±∞, 0 and negative η with `ParamError::Eta`.
+#[test]
+fn bad_indices_are_refused_where_they_enter() {
+    use microsurface::bsdf::RoughDielectric;
+    use microsurface::scattering::DielectricFacets;
+    use microsurface::ParamError;
+    let d = Microfacet::<f64, Ggx>::new(0.3, 0.3).unwrap();
+    for eta in [0.0, -1.0, -0.0, f64::NAN, f64::INFINITY, f64::NEG_INFINITY] {
+        let want = |e: ParamError| matches!(e, ParamError::Eta(x) if x.to_bits() == eta.to_bits());
+        assert!(
+            RoughDielectric::new(d.clone(), eta).is_err_and(want),
+            "{eta}"
+        );
+        assert!(
+            CompensatedDielectric::new(d.clone(), eta, Scheme::KullaConty).is_err_and(want),
+            "{eta}"
+        );
+        assert!(DielectricFacets::new(eta).is_err_and(want), "{eta}");
+    }
+    for eta in [1e-300, 0.5, 1.0, 1.5, 1e300] {
+        assert!(RoughDielectric::new(d.clone(), eta).is_ok(), "{eta}");
+        assert!(
+            DielectricFacets::new(eta).is_ok_and(|f| f.index() == eta),
+            "{eta}"
+        );
+    }
+    let e = RoughDielectric::new(d, 0.0).unwrap_err().to_string();
+    assert!(e.starts_with("eta") && e.len() < 100, "{e}");
+}
+
+/// Issue 47, item 3: the walk's interface at η = 1 is no interface, a delta lobe straight
+/// through (it returned f = 2.8e32 with pdf 2.5e32): eval and pdf 0, the sample −wo with
+/// weight f|cos θi|/pdf = 1, as RoughDielectric's at η = 1.
+#[test]
+fn walk_at_index_one_is_a_delta() {
+    use microsurface::bsdf::RoughDielectric;
+    use microsurface::scattering::{DielectricFacets, MultipleScattering};
+    let d = Microfacet::<f64, Ggx>::new(0.5, 0.5).unwrap();
+    let walk = MultipleScattering::<_, _, 1>::new(d.clone(), DielectricFacets::new(1.0).unwrap());
+    let single = RoughDielectric::new(d, 1.0).unwrap();
+    let wo = [0.36, 0.0, 0.8];
+    let s = walk.sample(wo, 0.4, [0.3, 0.7]).expect("a sample");
+    let n = (0.36f64 * 0.36 + 0.64).sqrt();
+    for (a, b) in s.wi.iter().zip([-0.36 / n, 0.0, -0.8 / n]) {
+        assert!((a - b).abs() < 1e-15, "{:?}", s.wi);
+    }
+    assert!(s.specular);
+    assert!((s.f[0] * s.wi[2].abs() / s.pdf - 1.0).abs() < 1e-15);
+    let t = single.sample(wo, 0.4, [0.3, 0.7]).expect("a sample");
+    assert!(t.specular && (t.f[0] * t.wi[2].abs() / t.pdf - 1.0).abs() < 1e-12);
+    assert_eq!(walk.eval(wo, s.wi), [0.0]);
+    assert_eq!(walk.pdf(wo, s.wi), 0.0);
+}
+
+/// Issue 47, item 3: the documented minimum α is accepted in f32, where 1e-6 has no exact
+/// value (1e-6f32 is below 1e-6 as an f64), by every door constructor; just below it is not.
+#[test]
+fn f32_alpha_at_the_documented_minimum() {
+    for kind in NdfKind::ALL {
+        let shape = some_shape(kind);
+        assert!(
+            AnyMicrofacet::<f32>::new(kind, 1e-6, 1e-6, shape).is_ok(),
+            "{kind}"
+        );
+        assert!(
+            AnyMicrofacet::<f32>::new(kind, 1e6, 1e6, shape).is_ok(),
+            "{kind}"
+        );
+    }
+    assert!(AnyMicrofacet::<f32>::parse("ggx", 1e-6, 1e-6).is_ok());
+    assert!(AnyMicrofacet::<f32>::new(NdfKind::Ggx, 0.99e-6, 0.99e-6, None).is_err());
+    assert!(AnyMicrofacet::<f64>::new(NdfKind::Ggx, 0.99e-6, 0.99e-6, None).is_err());
+}
+
+/// Issue 47, item 3: u = 1 (a generator that rounds returns it) is read as the largest value
+/// below 1 by the door's samplers, as pbrt's OneMinusEpsilon: the normal is not on the
+/// horizon, and the dielectric's sample at u = (1, 1) exists (it was None).
+#[test]
+fn u_of_one_is_below_one() {
+    use microsurface::bsdf::RoughDielectric;
+    for kind in NdfKind::ALL {
+        let m = AnyMicrofacet::<f32>::new(kind, 0.3, 0.3, some_shape(kind)).unwrap();
+        let wo = [0.3f32, 0.2, 0.932];
+        for u in [[1.0f32, 1.0], [0.5, 1.0], [1.0, 0.5]] {
+            let s = m.sample(wo, u);
+            assert!(
+                s.wm[2] > 0.0 && s.pdf > 0.0 && s.pdf.is_finite(),
+                "{kind} {u:?}: {s:?}"
+            );
+            let c = m.sample_dcos(u);
+            assert!(c.wm[2] > 0.0 && c.pdf.is_finite(), "{kind} {u:?}: {c:?}");
+        }
+        let glass = RoughDielectric::new(m, 1.5f32).unwrap();
+        assert!(glass.sample(wo, 0.5, [1.0, 1.0]).is_some(), "{kind}");
+    }
+}
+
+/// Issue 47, item 4: a misspelt NDF name gets a suggestion; a name far from every one does
+/// not.
+#[test]
+fn misspelt_names_get_a_suggestion() {
+    for (typo, want) in [
+        ("beckman", NdfKind::Beckmann),
+        ("GGX ", NdfKind::Ggx),
+        ("studnet_t", NdfKind::StudentT),
+        ("bessel-j", NdfKind::BesselK),
+        ("exponental", NdfKind::Exponential),
+    ] {
+        match typo.parse::<NdfKind>() {
+            Ok(k) => assert_eq!(k, want, "{typo}"),
+            Err(e) => {
+                assert_eq!(e.suggestion(), Some(want), "{typo}");
+                assert!(
+                    e.to_string()
+                        .contains(&format!("did you mean '{}'", want.name())),
+                    "{e}"
+                );
+            }
+        }
+    }
+    let e = "foo".parse::<NdfKind>().unwrap_err();
+    assert_eq!(e.suggestion(), None);
+    assert!(!e.to_string().contains("did you mean"));
+    let e = "x".repeat(100_000).parse::<NdfKind>().unwrap_err();
+    assert_eq!(e.suggestion(), None);
+    assert!(e.to_string().len() < 400);
+}
+
+/// A shape in range for each kind that has one (γ = 2.5, a = 0.7).
+fn some_shape(kind: NdfKind) -> Option<f64> {
+    kind.shape_name().map(|n| if n == "a" { 0.7 } else { 2.5 })
+}
+
+/// Issue 47, item 3: a normal with no direction gives the documented all-NaN frame (not a
+/// plausible one), in both precisions.
+#[test]
+fn frame_of_no_normal_is_nan() {
+    for n in [
+        [0.0, 0.0, 0.0],
+        [f64::NAN, 0.0, 1.0],
+        [f64::INFINITY, 0.0, 0.0],
+    ] {
+        let f = Frame::from_normal(n);
+        assert!(
+            f.s.iter().chain(&f.t).chain(&f.n).all(|x| x.is_nan()),
+            "{n:?}: {f:?}"
+        );
+        let f32_ = Frame::from_normal(n.map(|x| x as f32));
+        assert!(f32_.n.iter().all(|x| x.is_nan()), "{n:?}");
+    }
+}
+
+/// Issue 47, item 7 (the outside fuzzer): GGX's G2 where the product of the two G1
+/// underflows (α = 18.14, u_o = 1.354e-231, u_i = 1.650e-106: 0 for 1.49e-232), against
+/// 1/(1 + Λo + Λi) from the exact Λ, in f64, and the f32 form at its own tiny product.
+#[test]
+fn ggx_g2_where_the_product_underflows() {
+    use microsurface::fast::ggx;
+    use microsurface::Ndf;
+    let exact = microsurface::Ggx::new(18.14).unwrap();
+    for (uo, ui) in [
+        (1.354e-231, 1.650e-106),
+        (1e-200, 1e-200),
+        (1e-300, 0.5),
+        (1e-170, 1e-160),
+    ] {
+        let want = 1.0 / (1.0 + exact.lambda(uo) + exact.lambda(ui));
+        let got = ggx::g2(uo, ui, 18.14);
+        assert!(
+            (got - want).abs() <= 1e-14 * want,
+            "{uo:e} {ui:e}: {got:e} vs {want:e}"
+        );
+        assert_eq!(ggx::g2(ui, uo, 18.14), got);
+    }
+    let (uo, ui) = (1e-25f32, 1e-20f32);
+    let want = 1.0 / (1.0 + exact.lambda(uo as f64) + exact.lambda(ui as f64));
+    let got = ggx::g2(uo, ui, 18.14f32) as f64;
+    assert!((got - want).abs() <= 1e-6 * want, "{got:e} vs {want:e}");
+    assert_eq!(ggx::g2(0.0, 0.5, 1.0), 0.0);
+    assert_eq!(ggx::g2(0.0f32, 0.0, 1.0), 0.0);
+}
+
+/// Issue 47, item 7: an f32 direction of subnormal components (−9.09e-42, 8.34e-41,
+/// 1.64e-41) is the unit direction it points along: its visible pdf was NaN (1/|w|
+/// overflowed f32), every door NDF; and `sample_bounded` gave NaN normals.
+#[test]
+fn f32_subnormal_directions_sample_as_their_unit() {
+    let tiny = [-9.09e-42f32, 8.34e-41, 1.64e-41];
+    let n = {
+        let t = tiny.map(f64::from);
+        let l = (t[0] * t[0] + t[1] * t[1] + t[2] * t[2]).sqrt();
+        t.map(|x| (x / l) as f32)
+    };
+    for kind in NdfKind::ALL {
+        let m = AnyMicrofacet::<f32>::new(kind, 2.5244, 2.5244, some_shape(kind)).unwrap();
+        // (The fuzzer's u: a normal at the edge of the visible ones, w·m ≈ 0, where the pdf
+        // is 0 or tiny by rounding; finite is what it must be.)
+        let a = m.sample(tiny, [0.0, 0.80414]);
+        assert!(a.pdf.is_finite() && a.pdf >= 0.0, "{kind}: {a:?}");
+        let (a, b) = (m.sample(tiny, [0.4, 0.80414]), m.sample(n, [0.4, 0.80414]));
+        assert!(
+            b.pdf > 0.0 && (a.pdf - b.pdf).abs() <= 1e-4 * b.pdf,
+            "{kind}: {a:?} vs {b:?}"
+        );
+    }
+    let g = Microfacet::<f32, Ggx>::new(37.69, 1e6).unwrap();
+    let s = g.sample_bounded([4.26e-41, 1.17e-41, 9.88e-41], [0.0, 0.37209]);
+    assert!(s.wm.iter().all(|x| x.is_finite()), "{s:?}");
+}
+
+/// Issue 47, item 7: the fitted Student-T D far in its tail, where the α = 1 profile
+/// underflows but D is a normal float (γ = 4.93999, α = 1e3, u = 6.46e-41: 0 for 5.90e-211),
+/// against the exact NDF.
+#[test]
+fn fitted_d_in_the_underflowing_tail() {
+    use microsurface::fast::fitted::FittedShape;
+    use microsurface::Ndf;
+    let unit = microsurface::AnyNdf::new(NdfKind::StudentT, 1.0, Some(4.93999)).unwrap();
+    let fit = FittedShape::new(&unit).unwrap();
+    for (alpha, u) in [(1e3, 6.46e-41), (1e3, 1e-50), (10.0, 1e-45), (1e-3, 1e-30)] {
+        let want = microsurface::AnyNdf::new(NdfKind::StudentT, alpha, Some(4.93999))
+            .unwrap()
+            .d(u);
+        let got: f64 = fit.d(u, alpha);
+        assert!(
+            (got - want).abs() <= 1e-7 * want,
+            "α {alpha} u {u:e}: {got:e} vs {want:e}"
+        );
+    }
 }

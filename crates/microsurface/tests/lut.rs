@@ -318,3 +318,62 @@ fn edge_aligned_nodes_include_both_ends() {
     assert_eq!((acc.interior.points, acc.border.points), (9, 0));
     assert!(acc.interior.max_abs.is_finite());
 }
+
+/// Issue 47, item 2: the long computations stop when their token is cancelled — before the
+/// first node if it already is, and part way (from another thread) otherwise — and return
+/// their `Cancelled`; a cancelled albedo table is not cached (the next call computes it whole).
+#[test]
+fn long_computations_stop_when_cancelled() {
+    use microsurface::scattering::table::{Grid, Material, Method, Spec};
+    use microsurface::scattering::{Cancel, Cancellable, Cancelled};
+    use std::sync::atomic::{AtomicUsize, Ordering};
+    let cancel = Cancel::new();
+    cancel.cancel();
+    let stopped = Cancellable {
+        progress: quiet,
+        cancel: cancel.clone(),
+    };
+    let s = spec(NdfKind::Ggx, LutKind::Dielectric, 8);
+    assert_eq!(Lut::compute(&s, &stopped).unwrap_err(), LutError::Cancelled);
+    let grid = Spec {
+        ndf: NdfKind::Ggx,
+        gamma: None,
+        material: Material::Furnace,
+        method: Method::Walk {
+            walks: 1_000_000,
+            seed: 1,
+        },
+        alpha: vec![0.3, 0.6],
+        mu: vec![0.2, 0.9],
+    };
+    assert_eq!(Grid::generate(&grid, &stopped).unwrap_err().0, "cancelled");
+    // A material no table is shipped or cached for (an anisotropic Beckmann).
+    let d = AnyMicrofacet::<f64>::new(NdfKind::Beckmann, 0.37, 0.21, None).unwrap();
+    assert_eq!(
+        AlbedoTable::new_with_progress(&d, &stopped).unwrap_err(),
+        Cancelled
+    );
+    // Part way: cancelled by the third report; far fewer nodes than the table's are done.
+    let live = Cancel::new();
+    let seen = AtomicUsize::new(0);
+    let tripping = Cancellable {
+        progress: |done: usize, _total: usize| {
+            seen.fetch_max(done, Ordering::Relaxed);
+            if done >= 3 {
+                live.cancel();
+            }
+        },
+        cancel: live.clone(),
+    };
+    let s = spec(NdfKind::Ggx, LutKind::Albedo, 16);
+    assert_eq!(
+        Lut::compute(&s, &tripping).unwrap_err(),
+        LutError::Cancelled
+    );
+    let n = seen.load(Ordering::Relaxed);
+    assert!((3..64).contains(&n), "{n} of 256 nodes after the cancel");
+    // The albedo table after the cancelled one: whole, equal to a fresh computation.
+    let table = AlbedoTable::new(&d);
+    assert_eq!(*table, AlbedoTable::compute(&d));
+    assert!(table.e_avg() > 0.5 && table.e_avg() < 1.0);
+}

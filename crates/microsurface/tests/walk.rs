@@ -97,7 +97,7 @@ fn albedo_by_any_number_of_orders() {
         Microfacet::<f64, Ggx>::new(1.5, 1.5).unwrap(),
         Heights::Uniform,
     );
-    let f = DielectricFacets(1.5);
+    let f = DielectricFacets::new(1.5).unwrap();
     let a = albedo(&s, &f, wo(0.3), 50_000, 11);
     let four = albedo_orders(&s, &f, wo(0.3), 50_000, 11, 4);
     let twelve = albedo_orders(&s, &f, wo(0.3), 50_000, 11, 12);
@@ -149,7 +149,7 @@ fn dielectric_order_one() {
                         4,
                     );
                     let s = RandomWalk::new(d, Heights::Uniform);
-                    let a = albedo(&s, &DielectricFacets(1.5), w, 100_000, 3);
+                    let a = albedo(&s, &DielectricFacets::new(1.5).unwrap(), w, 100_000, 3);
                     for (lobe, q, est) in [
                         ("reflection", r, a.reflect),
                         ("transmission", t, a.transmit),
@@ -338,10 +338,14 @@ fn eval_white_furnace() {
                 );
                 for (eta, side) in [(1.5, 1.0), (1.5, -1.0)] {
                     let w = [wo(mu)[0], 0.0, side * mu];
-                    let t = MultipleScattering::<_, _, 1>::new(d.clone(), DielectricFacets(eta))
+                    let t = MultipleScattering::<_, _, 1>::new(
+                        d.clone(),
+                        DielectricFacets::new(eta).unwrap(),
+                    )
+                    .with_transport(Transport::Importance);
+                    let single = RoughDielectric::new(d.clone(), eta)
+                        .unwrap()
                         .with_transport(Transport::Importance);
-                    let single =
-                        RoughDielectric::new(d.clone(), eta).with_transport(Transport::Importance);
                     let (m, e) = eval_integral(&t, &single, w, 20_000, 12);
                     println!(
                         "{name:12} α={a} μ={}: dielectric R + T = {m:.4} ± {e:.4}",
@@ -386,9 +390,13 @@ fn eval_order_one_is_single_scattering() {
                 );
             }
             for eta in [1.5, 1.0 / 1.5] {
-                let t = MultipleScattering::<_, _, 1>::new(d.clone(), DielectricFacets(eta))
-                    .with_transport(Transport::Importance);
+                let t = MultipleScattering::<_, _, 1>::new(
+                    d.clone(),
+                    DielectricFacets::new(eta).unwrap(),
+                )
+                .with_transport(Transport::Importance);
                 let single = RoughDielectric::new(d.clone(), eta)
+                    .unwrap()
                     .with_transport(Transport::Importance)
                     .with_masking(Masking::CorrelatedBeta);
                 for (wo, wi) in [
@@ -425,7 +433,8 @@ fn eval_reciprocity() {
     for a in [0.5, 1.5] {
         each_iso!(a, |name, d| {
             let c = MultipleScattering::new(d.clone(), MirrorFacets(One::<1>));
-            let t = MultipleScattering::<_, _, 1>::new(d.clone(), DielectricFacets(1.5));
+            let t =
+                MultipleScattering::<_, _, 1>::new(d.clone(), DielectricFacets::new(1.5).unwrap());
             for (wo, wi) in [
                 (dir(0.8, 0.0), dir(0.3, 2.0)),
                 (dir(0.4, 0.0), dir(0.5, 1.0)),
@@ -529,7 +538,7 @@ fn sampling_matches_evaluation() {
                     &MultipleScattering::new(d.clone(), MirrorFacets(One::<1>)),
                     dir(0.5, 0.3),
                 );
-                let t = MultipleScattering::<_, _, 1>::new(d, DielectricFacets(1.5));
+                let t = MultipleScattering::<_, _, 1>::new(d, DielectricFacets::new(1.5).unwrap());
                 check($name, &t, dir(0.6, 0.0));
                 check($name, &t, dir(-0.8, 1.0));
             }};

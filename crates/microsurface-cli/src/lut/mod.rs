@@ -151,10 +151,21 @@ pub fn run(args: &[String]) -> Result<ExitCode, String> {
     .map_err(err)?;
     progress.finish_and_clear();
 
+    // The averages (albedo-avg, dielectric-avg) have one axis, the roughness: written as a
+    // table of one column, a trailing axis `avg` of one node, so that every format's layout
+    // (μ the image's width, roughness its height; the .npy shape) holds unchanged.
+    let (mut axes, mut dims): (Vec<String>, Vec<usize>) = (
+        lut.axes.iter().map(|a| a.name.to_string()).collect(),
+        lut.dims(),
+    );
+    if dims.len() == 1 {
+        axes.push("avg".into());
+        dims.push(1);
+    }
     let data = LutData {
         name: name.clone(),
-        axes: lut.axes.iter().map(|a| a.name.to_string()).collect(),
-        dims: lut.dims(),
+        axes,
+        dims,
         channels: lut.channels.iter().map(|c| c.to_string()).collect(),
         // (16-bit PNG holds [0, 1]: a quadrature's 1 + 1e-9 is stored as 1, and counted in
         // the storage error below.)
@@ -233,7 +244,11 @@ pub fn run(args: &[String]) -> Result<ExitCode, String> {
             },
             "params": a.params,
         })).collect::<Vec<_>>(),
-        "layout": "row-major over the axes (outermost first), then the channels",
+        "layout": if lut.axes.len() == 1 {
+            "row-major over the axes (outermost first), then the channels; one axis (the roughness), written as a column: the file's dims are [roughness, 1] (a trailing axis 'avg' of one node)"
+        } else {
+            "row-major over the axes (outermost first), then the channels"
+        },
         "masking": "height-correlated G2 = 1/(1 + L(wo) + L(wi))",
         "alpha_max": spec.alpha_max,
         "level": spec.level,

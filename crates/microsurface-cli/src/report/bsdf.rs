@@ -56,7 +56,7 @@ fn polar_plots(kind: NdfKind) -> Vec<Plot> {
     {
         let d = material(kind, ALPHA, GAMMA);
         let conductor = RoughConductor::new(d.clone(), GOLD_G);
-        let dielectric = RoughDielectric::new(d, ETA);
+        let dielectric = RoughDielectric::new(d, ETA).expect("the report's η is valid");
         let mut pc = Plot::new(
             format!("{}: rough conductor, f·cos θi", label(kind)),
             "x (plane of incidence)",
@@ -178,7 +178,7 @@ fn histogram_plots(kind: NdfKind) -> Vec<Plot> {
     {
         let d = material(kind, ALPHA, GAMMA);
         let conductor = RoughConductor::new(d.clone(), GOLD_G);
-        let dielectric = RoughDielectric::new(d, ETA);
+        let dielectric = RoughDielectric::new(d, ETA).expect("the report's η is valid");
         vec![
             sample_histogram(
                 format!("{}: conductor samples, θo = 45°", label(kind)),

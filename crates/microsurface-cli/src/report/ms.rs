@@ -227,6 +227,7 @@ fn dielectric_furnace_plot() -> Plot {
                 Scheme::KullaConty,
                 tables.clone(),
             )
+            .expect("the report's η = 1.5 is valid")
             .with_transport(Transport::Importance);
             let (mut b, mut kc, mut tq) = (Vec::new(), Vec::new(), Vec::new());
             for &m in &mu {

@@ -231,7 +231,11 @@ pub struct Frame<F> {
 impl<F: Real> Frame<F> {
     /// The frame of the normal n (normalised here) with a tangent chosen from n alone,
     /// branch-free but for the sign of n.z (Duff et al. 2017, "Building an orthonormal basis,
-    /// revisited", JCGT 6(1)); the tangent jumps where n.z changes sign.
+    /// revisited", JCGT 6(1)); the tangent jumps where n.z changes sign. A normal with no
+    /// direction (zero, or NaN or infinite components) gives the all-NaN frame, which every
+    /// BSDF evaluation through it then answers with NaN, never with a plausible value; a
+    /// renderer that can meet one tests `frame.n[2].is_nan()` (a hit's normal is the caller's
+    /// data, so this is documented rather than an `Err` on the hot path).
     pub fn from_normal(n: [F; 3]) -> Self {
         let n = normalize(n);
         let sign = if n[2] < F::ZERO { -F::ONE } else { F::ONE };

@@ -351,7 +351,13 @@ pub fn conductor_average(eta: f64, k: f64) -> f64 {
             return rule.iter().map(|&(x, w)| 2.0 * w * f(x) * x).sum();
         }
     }
-    let s = mub.re.clamp(0.0, 1.0);
+    // (Past |η + ik| ~ 1e154 the squares overflow and μb is NaN; F is 1 but for a layer
+    // of width ~1/|η + ik| at grazing, which the adaptive rule on [0, 1] finds.)
+    let s = if mub.re.is_finite() {
+        mub.re.clamp(0.0, 1.0)
+    } else {
+        0.0
+    };
     let left = if s > 0.0 {
         average_adaptive(&f, 0.0, s, AVERAGE_TOL)
     } else {
@@ -652,6 +658,11 @@ mod tests {
             }
         }
         assert!(worst.0 < 1e-11, "{worst:?}");
+        for (eta, k) in [(1e300, 1e300), (1e300, 1.0), (1.0, 1e300), (1e-300, 1e-300)] {
+            let a = conductor_average(eta, k);
+            assert!((0.0..=1.0).contains(&a), "{eta} {k}: {a}");
+            assert!(a > 0.999, "{eta} {k}: {a}");
+        }
         for eta in [0.3, 1.0 / 1.5, 1.5, 2.42] {
             let d = (conductor_average(eta, 0.0) - dielectric_average(eta)).abs();
             assert!(d < 1e-11, "η {eta}: {d:e}");

@@ -57,6 +57,7 @@ use crate::bsdf::frame::{
     refraction_denominator, same_hemisphere,
 };
 use crate::distribution::MicrofacetDistribution;
+use crate::error::ParamError;
 use crate::fast::Real;
 use fresnel::Fresnel;
 use std::marker::PhantomData;
@@ -423,13 +424,16 @@ pub struct RoughDielectric<F, D, const N: usize = 3> {
 impl<F: Real, D: MicrofacetDistribution<F>> RoughDielectric<F, D, 3> {
     /// The interface with relative index η > 0 (η = 1: no interface, a pass-through delta
     /// lobe), height-correlated G2, radiance transport; f in three (RGB) channels.
-    pub fn new(dist: D, eta: F) -> Self {
-        RoughDielectric {
+    /// [`ParamError::Eta`] for η NaN, infinite or ≤ 0 (at η = 0 every value was NaN; a
+    /// negative η gave plausible-looking transmission).
+    pub fn new(dist: D, eta: F) -> Result<Self, ParamError> {
+        crate::error::check_eta(eta.to_f64())?;
+        Ok(RoughDielectric {
             dist,
             eta,
             masking: Masking::Correlated,
             transport: Transport::Radiance,
-        }
+        })
     }
 }
 

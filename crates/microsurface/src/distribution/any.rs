@@ -113,7 +113,8 @@ impl<F: Real> AnyMicrofacet<F> {
             NdfKind::K0 => Inner::K0(Microfacet::with_shape(ax, ay, None)?),
             NdfKind::BesselK => Inner::BesselK(Microfacet::with_shape(ax, ay, shape)?),
             NdfKind::GenExponential => {
-                Inner::Exact(Exact::new(kind, ax.to_f64(), ay.to_f64(), shape)?)
+                let (ax, ay) = (super::microfacet::check(ax)?, super::microfacet::check(ay)?);
+                Inner::Exact(Exact::new(kind, ax, ay, shape)?)
             }
         };
         Ok(AnyMicrofacet { inner })

@@ -132,7 +132,9 @@ impl MicrofacetDistribution<f64> for Exact {
         self.surface().lambda(Vec3::from(w))
     }
     fn sample_wm(&self, w: [f64; 3], u: [f64; 2]) -> [f64; 3] {
-        self.surface().sample_visible(Vec3::from(w), u).into()
+        self.surface()
+            .sample_visible(Vec3::from(w), super::below_one(u))
+            .into()
     }
     /// As the trait's: for the Beckmann mixtures of the family (Student-T, Ei, Erfc, K0,
     /// Bessel-K) above the horizon, the posterior of the mixing variable
@@ -148,7 +150,7 @@ impl MicrofacetDistribution<f64> for Exact {
     }
     fn sample_dcos(&self, u: [f64; 2]) -> Sample<f64> {
         let s = self.surface();
-        let wm = s.sample_dcos(u);
+        let wm = s.sample_dcos(super::below_one(u));
         Sample {
             wm: wm.into(),
             pdf: s.pdf_dcos(wm),

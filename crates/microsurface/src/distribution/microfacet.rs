@@ -703,7 +703,7 @@ struct ExactParams {
 /// α in f64 for the exact twin, after the range check. An f32 α is accepted where it is the
 /// f32 nearest a value in [`crate::ALPHA_MIN`], [`crate::ALPHA_MAX`] (1e-6 has no f32: 1e-6f32
 /// is 1e-6 − 3e-15, below it) and taken at the bound there.
-fn check<F: Real>(a: F) -> Result<f64, ParamError> {
+pub(crate) fn check<F: Real>(a: F) -> Result<f64, ParamError> {
     let a = a.to_f64();
     if F::IS_F32 {
         let (lo, hi) = (crate::ALPHA_MIN, crate::ALPHA_MAX);
@@ -951,7 +951,7 @@ impl<F: Real, N: Shape> MicrofacetDistribution<F> for Microfacet<F, N> {
 
     #[inline(always)]
     fn sample_wm(&self, w: [F; 3], u: [F; 2]) -> [F; 3] {
-        N::sample_wm(&self.data, w, self.ax, self.ay, u)
+        N::sample_wm(&self.data, w, self.ax, self.ay, super::below_one(u))
     }
 
     #[inline(always)]
@@ -961,7 +961,7 @@ impl<F: Real, N: Shape> MicrofacetDistribution<F> for Microfacet<F, N> {
 
     #[inline(always)]
     fn sample_dcos(&self, u: [F; 2]) -> Sample<F> {
-        let wm = N::sample_dcos(&self.data, self.ax, self.ay, u);
+        let wm = N::sample_dcos(&self.data, self.ax, self.ay, super::below_one(u));
         Sample {
             wm,
             pdf: self.d(wm) * wm[2],

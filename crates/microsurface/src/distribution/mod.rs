@@ -114,6 +114,19 @@ pub struct Sample<F> {
     pub pdf: F,
 }
 
+/// u with each component at most the largest value below 1 (1 − 2⁻²⁴ in f32, 1 − 2⁻⁵³ in
+/// f64): u = 1 maps to the end of the warps' domain [0, 1) rather than to the horizon (a
+/// normal with m.z = 0, which a BSDF's sample then rejects). NaN passes through.
+#[inline(always)]
+pub(crate) fn below_one<F: Real>(u: [F; 2]) -> [F; 2] {
+    let top = F::from_f64(if F::IS_F32 {
+        1.0 - 1.0 / 16_777_216.0
+    } else {
+        1.0 - f64::EPSILON / 2.0
+    });
+    u.map(|x| if x > top { top } else { x })
+}
+
 /// The direction API every distribution has (f32 or f64): what the BSDFs use.
 ///
 /// Directions w and normals wm are unit vectors in the local frame (z = the macro normal),
@@ -163,7 +176,9 @@ pub trait MicrofacetDistribution<F: Real> {
         self.d_visible(w, wm)
     }
 
-    /// A visible normal for w (w.z < 0 is mirrored) from u ∈ [0, 1)².
+    /// A visible normal for w (w.z < 0 is mirrored) from u ∈ [0, 1)²; u = 1 (which a
+    /// generator that rounds may return) is read as the largest value below 1, as pbrt's
+    /// `OneMinusEpsilon`, by the library's samplers.
     fn sample_wm(&self, w: [F; 3], u: [F; 2]) -> [F; 3];
 
     /// A visible normal for a direction v of **either** hemisphere, not mirrored: distributed
@@ -283,8 +298,9 @@ fn unit_cold<F: Real>(w: [F; 3]) -> [F; 3] {
     if !(m > F::ZERO && m < F::from_f64(f64::INFINITY)) {
         return w;
     }
-    let k = F::ONE / m;
-    normalize([w[0] * k, w[1] * k, w[2] * k])
+    // (`normalize` scales in f64 by a division: 1/m overflowed f32 for a subnormal m, and a
+    // w of components ~1e-41 became NaN, its pdf with it.)
+    normalize(w)
 }
 
 /// The uniforms of a rejection sampler's second and later candidates: SplitMix64 (Steele,

@@ -97,14 +97,38 @@ fn g1_edges<F: Real>(u: F, alpha: F) -> F {
 /// G2 ≤ min(G1(u_o), G1(u_i)) holds in floating point (the two closed forms round
 /// differently: uncapped, G2 exceeded G1 by an ulp at u_i = 1). The denominator in that
 /// form has no cancellation at either end (written 1 − (1 − g_o)(1 − g_i), it lost g's
-/// digits where both G1 are small: 2.7e-9 relative at u = 1e-8).
+/// digits where both G1 are small: 2.7e-9 relative at u = 1e-8). Where g_o g_i is subnormal
+/// or 0 the form divided through by the larger G1 (`g2_tiny`) keeps its digits.
 #[inline]
 pub fn g2<F: Real>(u_o: F, u_i: F, alpha: F) -> F {
     let (go, gi) = (g1(u_o, alpha), g1(u_i, alpha));
-    let g = go * gi / (go + gi - go * gi);
-    // (0/0 where both are 0, grazing on both sides: G2 = 0 there.)
-    let g = if go * gi > F::ZERO { g } else { go * gi };
+    let p = go * gi;
+    let tiny = F::from_f64(if F::IS_F32 {
+        f32::MIN_POSITIVE as f64
+    } else {
+        f64::MIN_POSITIVE
+    });
+    let g = if p >= tiny {
+        p / (go + gi - p)
+    } else {
+        g2_tiny(go, gi)
+    };
     g.min(go).min(gi)
+}
+
+/// G2 from two G1 whose product is subnormal or 0 (out of line): go gi/(go + gi − go gi)
+/// divided through by the larger, b, as a/(a/b + 1 − a) (a/b ≤ 1 cannot overflow). The
+/// product underflowed where both are tiny (1.5e-232 × 1.8e-107 at α = 18.14 gave G2 = 0
+/// for 1.49e-232). 0 where b = 0 (grazing on both sides); NaN passes through.
+#[cold]
+#[inline(never)]
+fn g2_tiny<F: Real>(go: F, gi: F) -> F {
+    let (a, b) = if go < gi { (go, gi) } else { (gi, go) };
+    if b > F::ZERO {
+        a / (a / b + (F::ONE - a))
+    } else {
+        a * b
+    }
 }
 
 /// σ(u) for u ∈ [−1, 1] (σ(0) = α/2), evaluated in f64.

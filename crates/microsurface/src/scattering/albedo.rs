@@ -733,7 +733,12 @@ mod tests {
             Microfacet::<f64, Ggx>::new(1.5, 1.5).unwrap(),
             Heights::Uniform,
         );
-        let (f, wo, n, seed) = (DielectricFacets(1.5), [0.6, 0.0, 0.8], 20_001, 5);
+        let (f, wo, n, seed) = (
+            DielectricFacets::new(1.5).unwrap(),
+            [0.6, 0.0, 0.8],
+            20_001,
+            5,
+        );
         let lane = |rng: &mut WalkRng, walks: u64| {
             let mut sums = AlbedoSums::with_orders(6);
             for _ in 0..walks {

@@ -81,6 +81,7 @@ use std::sync::atomic::{AtomicUsize, Ordering};
 
 use crate::bsdf::Masking;
 use crate::scattering::albedo::over_normals_weighted;
+use crate::scattering::progress::Progress;
 use crate::{AnyMicrofacet, NdfSpec, ParamError};
 
 /// What a table holds.
@@ -357,6 +358,8 @@ pub enum LutError {
     Level(u32),
     /// A node's material was rejected (α_max, the shape, GTR's anisotropy).
     Param(ParamError),
+    /// Stopped by the progress' [`crate::scattering::Cancel`] token.
+    Cancelled,
 }
 
 impl fmt::Display for LutError {
@@ -368,6 +371,7 @@ impl fmt::Display for LutError {
             ),
             LutError::Level(l) => write!(f, "the quadrature level must be 2 to 7, got {l}"),
             LutError::Param(e) => write!(f, "{e}"),
+            LutError::Cancelled => f.write_str("cancelled"),
         }
     }
 }
@@ -444,34 +448,38 @@ struct Point {
 
 impl Lut {
     /// Computes the table of `spec` (every core with the `rayon` feature; the values do not
-    /// depend on the thread count), calling `progress(done, total)` after each node (from
-    /// any thread).
-    pub fn compute(
-        spec: &LutSpec,
-        progress: &(dyn Fn(usize, usize) + Sync),
-    ) -> Result<Lut, LutError> {
+    /// depend on the thread count), reporting `(done, total)` to `progress` after each node
+    /// (from any thread) and asking it before each whether to stop
+    /// ([`crate::scattering::Progress`]; [`LutError::Cancelled`] then).
+    pub fn compute(spec: &LutSpec, progress: &dyn Progress) -> Result<Lut, LutError> {
         spec.validate()?;
         let axes = Lut::axes_of(spec);
         let dims: Vec<usize> = axes.iter().map(|a| a.coords.len()).collect();
         let total: usize = dims.iter().product();
         let done = AtomicUsize::new(0);
-        let node = |i: usize| -> Vec<f64> {
+        let node = |i: usize| -> Result<Vec<f64>, LutError> {
+            if progress.cancelled() {
+                return Err(LutError::Cancelled);
+            }
             let coords = unravel(i, &dims)
                 .iter()
                 .zip(&axes)
                 .map(|(&j, a)| a.coords[j])
                 .collect::<Vec<_>>();
             let v = quantity(spec, &axes, &coords, spec.level);
-            progress(done.fetch_add(1, Ordering::Relaxed) + 1, total);
-            v
+            progress.report(done.fetch_add(1, Ordering::Relaxed) + 1, total);
+            Ok(v)
         };
         #[cfg(feature = "rayon")]
         let rows: Vec<Vec<f64>> = {
             use rayon::prelude::*;
-            (0..total).into_par_iter().map(node).collect()
+            (0..total)
+                .into_par_iter()
+                .map(node)
+                .collect::<Result<_, _>>()?
         };
         #[cfg(not(feature = "rayon"))]
-        let rows: Vec<Vec<f64>> = (0..total).map(node).collect();
+        let rows: Vec<Vec<f64>> = (0..total).map(node).collect::<Result<_, _>>()?;
         Ok(Lut {
             spec: *spec,
             axes,
@@ -608,7 +616,7 @@ impl Lut {
     /// halfway into the clamped border (texel-centred axes; an edge-aligned one has none);
     /// every node of `side`. Reported apart: the interior (every coordinate a midpoint) and
     /// the border (some coordinate clamped).
-    pub fn error(&self, per_axis: usize, progress: &(dyn Fn(usize, usize) + Sync)) -> LutAccuracy {
+    pub fn error(&self, per_axis: usize, progress: &dyn Progress) -> LutAccuracy {
         let per_axis = per_axis.max(2);
         let probes: Vec<Vec<f64>> = self
             .axes
@@ -656,7 +664,7 @@ impl Lut {
                 .zip(self.exact(&x, level))
                 .map(|(a, b)| (a - b).abs())
                 .collect();
-            progress(done.fetch_add(1, Ordering::Relaxed) + 1, total);
+            progress.report(done.fetch_add(1, Ordering::Relaxed) + 1, total);
             (x, diff)
         };
         #[cfg(feature = "rayon")]

@@ -110,9 +110,11 @@
 pub(crate) mod albedo;
 pub(crate) mod compensation;
 pub mod lut;
+pub(crate) mod progress;
 pub mod table;
 pub(crate) mod walk;
 
 pub use albedo::*;
 pub use compensation::*;
+pub use progress::{Cancel, Cancellable, Cancelled, Progress};
 pub use walk::*;

@@ -35,6 +35,7 @@
 use crate::distribution::MicrofacetDistribution;
 use crate::ndf::family::NdfKind;
 use crate::scattering::albedo::{lane_seed, single_scattering_albedo_tol, AlbedoSums};
+use crate::scattering::progress::Progress;
 use crate::scattering::walk::{
     DielectricFacets, DiffuseFacets, Heights, MirrorFacets, RandomWalk, WalkRng,
 };
@@ -266,9 +267,11 @@ fn cell<D: MicrofacetDistribution<f64> + Clone>(
 }
 
 impl Grid {
-    /// Computes the table of `spec`, calling `progress(done, total)` after each unit of work
-    /// (from any thread). Deterministic for a given spec: see the [module docs](self).
-    pub fn generate(spec: &Spec, progress: &(dyn Fn(u64, u64) + Sync)) -> Result<Grid, TableError> {
+    /// Computes the table of `spec`, reporting `(done, total)` to `progress` after each unit
+    /// of work (from any thread) and asking it before each whether to stop
+    /// ([`crate::scattering::Progress`]: then `Err`, the message "cancelled"). Deterministic
+    /// for a given spec: see the [module docs](self).
+    pub fn generate(spec: &Spec, progress: &dyn Progress) -> Result<Grid, TableError> {
         spec.validate()?;
         let cells = spec.alpha.len() * spec.mu.len();
         let mut tasks = Vec::new();
@@ -295,9 +298,12 @@ impl Grid {
                 }
             }
         }
-        let total = tasks.len() as u64;
-        let done = std::sync::atomic::AtomicU64::new(0);
+        let total = tasks.len();
+        let done = std::sync::atomic::AtomicUsize::new(0);
         let run = |t: &Task| -> Result<Done, TableError> {
+            if progress.cancelled() {
+                return Err(TableError("cancelled".into()));
+            }
             let (ia, im) = (t.cell / spec.mu.len(), t.cell % spec.mu.len());
             let mu = spec.mu[im];
             let wo = [((1.0 - mu) * (1.0 + mu)).sqrt(), 0.0, mu];
@@ -308,7 +314,7 @@ impl Grid {
                 t,
             );
             let n = done.fetch_add(1, std::sync::atomic::Ordering::Relaxed) + 1;
-            progress(n, total);
+            progress.report(n, total);
             Ok(out)
         };
         #[cfg(feature = "rayon")]

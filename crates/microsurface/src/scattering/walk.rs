@@ -287,9 +287,21 @@ impl<const N: usize> Facets<N> for DiffuseFacets {
 /// refracts otherwise (weight 1: the walk transports importance, Veach 1997 §5.2, and
 /// [`MultipleScattering`] applies radiance's 1/η'² once at the end).
 #[derive(Clone, Copy, Debug)]
-pub struct DielectricFacets(pub f64);
+pub struct DielectricFacets(pub(crate) f64);
 
 impl DielectricFacets {
+    /// The facets of relative index η: [`crate::ParamError::Eta`] for η NaN, infinite or
+    /// ≤ 0 (a negative η gave plausible-looking transmission). η = 1 is no interface: the
+    /// walk's BSDF is then a delta lobe straight through.
+    pub fn new(eta: f64) -> Result<Self, crate::ParamError> {
+        Ok(DielectricFacets(crate::error::check_eta(eta)?))
+    }
+
+    /// The relative index η.
+    pub fn index(&self) -> f64 {
+        self.0
+    }
+
     /// The relative index across the interface from the side the ray is on.
     #[inline]
     fn eta(&self, inside: bool) -> f64 {
@@ -873,6 +885,12 @@ impl<D: MicrofacetDistribution<f64>, Fa: Facets<N>, const N: usize> MultipleScat
         &self.facets
     }
 
+    /// Whether the facets are an interface of index 1 (no interface: a delta lobe straight
+    /// through, [`Bsdf::sample`] below).
+    fn invisible(&self) -> bool {
+        self.facets.interface_eta() == Some(1.0)
+    }
+
     /// η'⁻² for a transmission under radiance transport, else 1.
     fn transport_factor(&self, wo: [f64; 3], wi: [f64; 3]) -> f64 {
         match self.facets.interface_eta() {
@@ -914,6 +932,9 @@ impl<F: Real, D: MicrofacetDistribution<f64>, Fa: Facets<N>, const N: usize> Bsd
     type Value = [F; N];
 
     fn eval(&self, wo: [F; 3], wi: [F; 3]) -> [F; N] {
+        if self.invisible() {
+            return [F::ZERO; N];
+        }
         // On the horizon of F (|cos θ| below 1e-18 in f32) as the single-scattering BSDFs:
         // f carries 1/|cos θi|, which overflows f32 there (an f32 wi.z of 1e-40 gave f = ∞).
         // The test reads the unit directions' cosines (any length is in contract).
@@ -926,10 +947,31 @@ impl<F: Real, D: MicrofacetDistribution<f64>, Fa: Facets<N>, const N: usize> Bsd
     }
 
     fn pdf(&self, wo: [F; 3], wi: [F; 3]) -> F {
+        if self.invisible() {
+            return F::ZERO;
+        }
         F::from_f64(self.pdf_f64(wo.map(F::to_f64), wi.map(F::to_f64)))
     }
 
     fn sample(&self, wo: [F; 3], uc: F, u: [F; 2]) -> Option<BsdfSample<F, [F; N]>> {
+        if self.invisible() {
+            // An interface of index 1 is no interface: the ray goes straight on, a delta
+            // lobe of weight 1 (as RoughDielectric's at η = 1; the walk there returned
+            // f = 2.8e32 with pdf 2.5e32).
+            let w = unit(wo);
+            let wi = [-w[0], -w[1], -w[2]];
+            if !(wi[2].abs() > F::ZERO) {
+                return None;
+            }
+            return Some(BsdfSample {
+                wi,
+                f: [F::ONE / wi[2].abs(); N],
+                pdf: F::ONE,
+                lobe: crate::bsdf::Lobe::Transmission,
+                specular: true,
+                eta: F::ONE,
+            });
+        }
         let s = self.sample_f64(wo.map(F::to_f64), uc.to_f64(), u.map(F::to_f64))?;
         let (pdf, f) = (F::from_f64(s.pdf), s.f.map(F::from_f64));
         // (A pdf or f that leaves F's range in the rounding: rejected, as any unusable sample.)

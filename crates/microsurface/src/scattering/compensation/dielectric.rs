@@ -54,19 +54,22 @@ impl<F: Real, D: MicrofacetDistribution<F>> CompensatedDielectric<F, D, 3> {
     /// in three (RGB) channels, with [`DielectricTables::new`]'s tables: shipped
     /// (microseconds), or **computed here** for a material or η the library does not ship
     /// (under a second isotropic, once per (material, η) and process: the tables are cached).
-    pub fn new(dist: D, eta: F, scheme: Scheme) -> Self {
+    /// [`crate::ParamError::Eta`] for η NaN, infinite or ≤ 0.
+    pub fn new(dist: D, eta: F, scheme: Scheme) -> Result<Self, crate::ParamError> {
+        crate::error::check_eta(eta.to_f64())?;
         let tables = DielectricTables::new(&dist, eta.to_f64());
         Self::from_tables(dist, eta, scheme, tables)
     }
 
     /// The same with tables computed before (they must be `dist`'s at this η). No
-    /// computation.
+    /// computation. [`crate::ParamError::Eta`] for η NaN, infinite or ≤ 0, as
+    /// [`RoughDielectric::new`].
     pub fn from_tables(
         dist: D,
         eta: F,
         scheme: Scheme,
         tables: impl Into<Arc<DielectricTables>>,
-    ) -> Self {
+    ) -> Result<Self, crate::ParamError> {
         let tables = tables.into();
         let smooth = eta == F::ONE || dist.effectively_smooth();
         let eta64 = eta.to_f64();
@@ -78,14 +81,14 @@ impl<F: Real, D: MicrofacetDistribution<F>> CompensatedDielectric<F, D, 3> {
             let s = if k[1] > 1.0 { 1.0 / k[1] } else { 0.0 };
             k = [k[0] * s, k[1] * s];
         }
-        CompensatedDielectric {
-            ss: RoughDielectric::new(dist, eta),
+        Ok(CompensatedDielectric {
+            ss: RoughDielectric::new(dist, eta)?,
             tables,
             scheme,
             k,
             transport: Transport::Radiance,
             smooth,
-        }
+        })
     }
 }
 

@@ -8,6 +8,7 @@ use crate::distribution::{cached, FitCache, MicrofacetDistribution, Sample};
 use crate::fast::Real;
 use crate::math::quad::GL8;
 use crate::scattering::albedo::single_scattering_albedo_tol;
+use crate::scattering::progress::{Cancelled, Progress};
 use crate::scattering::table::Grid;
 use crate::AnyMicrofacet;
 use crate::NdfKind;
@@ -64,17 +65,21 @@ impl AlbedoTable {
     /// own precision). Computed tables of the library's materials are cached for the
     /// process, so the compensated BSDFs of one material share one table.
     pub fn new<F: Real, D: MicrofacetDistribution<F>>(dist: &D) -> Arc<Self> {
-        Self::new_with_progress(dist, &|_, _| {})
+        match Self::new_with_progress(dist, &|_, _| {}) {
+            Ok(t) => t,
+            Err(Cancelled) => unreachable!("a plain closure is never cancelled"),
+        }
     }
 
     /// [`AlbedoTable::new`], calling `progress(done, total)` after each node a computed table
     /// evaluates (from the computing thread; never for a shipped or cached table): for a
     /// caller that shows progress (the Python package's `progress=True`; the generalised
-    /// exponential's table takes minutes).
+    /// exponential's table takes minutes), and asking it before each node whether to stop
+    /// ([`crate::scattering::Progress`]): [`Cancelled`] then, and nothing is cached.
     pub fn new_with_progress<F: Real, D: MicrofacetDistribution<F>>(
         dist: &D,
-        progress: &(dyn Fn(usize, usize) + Sync),
-    ) -> Arc<Self> {
+        progress: &dyn Progress,
+    ) -> Result<Arc<Self>, Cancelled> {
         static TABLES: TableCache<AlbedoTable> = OnceLock::new();
         table_of(
             dist,
@@ -89,25 +94,38 @@ impl AlbedoTable {
     /// The table of `dist` computed here: 33 quadratures of the single-scattering albedo
     /// (tens of milliseconds; hundreds at small α, where the lobe is narrow).
     pub fn compute<D: MicrofacetDistribution<f64>>(dist: &D) -> Self {
-        Self::compute_with_progress(dist, &|_, _| {})
+        match Self::compute_with_progress(dist, &|_, _| {}) {
+            Ok(t) => t,
+            Err(Cancelled) => unreachable!("a plain closure is never cancelled"),
+        }
     }
 
-    /// [`AlbedoTable::compute`], calling `progress(done, total)` after each node.
+    /// [`AlbedoTable::compute`], reporting to `progress` after each node and asking it
+    /// before each whether to stop ([`Cancelled`] then).
     pub fn compute_with_progress<D: MicrofacetDistribution<f64>>(
         dist: &D,
-        progress: &(dyn Fn(usize, usize) + Sync),
-    ) -> Self {
+        progress: &dyn Progress,
+    ) -> Result<Self, Cancelled> {
         let (ax, ay) = dist.alpha();
         let azimuths = if ax == ay { 1 } else { AZIMUTHS };
         let done = std::sync::atomic::AtomicUsize::new(0);
-        Self::from_fn_azimuthal(NODES, azimuths, |mu, phi| {
+        let stopped = std::sync::atomic::AtomicBool::new(false);
+        let table = Self::from_fn_azimuthal(NODES, azimuths, |mu, phi| {
+            if stopped.load(std::sync::atomic::Ordering::Relaxed) || progress.cancelled() {
+                stopped.store(true, std::sync::atomic::Ordering::Relaxed);
+                return 1.0;
+            }
             let st = ((1.0 - mu) * (1.0 + mu)).sqrt();
             let (sp, cp) = phi.sin_cos();
             let e = single_scattering_albedo_tol(dist, [st * cp, st * sp, mu], TABLE_TOL);
             let k = done.fetch_add(1, std::sync::atomic::Ordering::Relaxed) + 1;
-            progress(k, NODES * azimuths);
+            progress.report(k, NODES * azimuths);
             e
-        })
+        });
+        if stopped.load(std::sync::atomic::Ordering::Relaxed) {
+            return Err(Cancelled);
+        }
+        Ok(table)
     }
 
     /// The table of the albedo function `e(μ, φ)` of wo's cosine and azimuth, at `n` nodes
@@ -495,14 +513,17 @@ impl DielectricTables {
     /// (material, η).
     pub fn new<F: Real, D: MicrofacetDistribution<F>>(dist: &D, eta: f64) -> Arc<Self> {
         static TABLES: TableCache<DielectricTables> = OnceLock::new();
-        table_of(
+        let made: Result<_, std::convert::Infallible> = table_of(
             dist,
             &TABLES,
             eta.to_bits(),
             |kind, shape, alpha| Self::shipped(kind, shape, alpha, eta),
-            |twin| Self::compute(twin, eta),
-            || Self::compute(&Widened(dist, PhantomData), eta),
-        )
+            |twin| Ok(Self::compute(twin, eta)),
+            || Ok(Self::compute(&Widened(dist, PhantomData), eta)),
+        );
+        match made {
+            Ok(t) => t,
+        }
     }
 
     /// The tables of an isotropic material of NDF `kind` (GTR: γ ∈ {1, 2}) at α from the
@@ -708,34 +729,32 @@ type TableCache<T> = FitCache<(NdfKind, u64, u64, u64, u64), T>;
 /// material's f64 twin (the same NDF, α and shape through [`AnyMicrofacet`]) once per
 /// material, `extra` and process (`cache`); a distribution that does not name its NDF, or
 /// whose twin cannot be built, by `widened` (in its own precision, not cached).
-fn table_of<F: Real, D: MicrofacetDistribution<F>, T>(
+fn table_of<F: Real, D: MicrofacetDistribution<F>, T, E>(
     dist: &D,
     cache: &'static TableCache<T>,
     extra: u64,
     shipped: impl FnOnce(NdfKind, Option<f64>, f64) -> Option<T>,
-    compute: impl FnOnce(&AnyMicrofacet<f64>) -> T,
-    widened: impl FnOnce() -> T,
-) -> Arc<T> {
+    compute: impl FnOnce(&AnyMicrofacet<f64>) -> Result<T, E>,
+    widened: impl FnOnce() -> Result<T, E>,
+) -> Result<Arc<T>, E> {
     let (ax, ay) = (dist.alpha().0.to_f64(), dist.alpha().1.to_f64());
     let Some((kind, shape)) = dist.ndf() else {
-        return Arc::new(widened());
+        return widened().map(Arc::new);
     };
     if ax == ay {
         if let Some(t) = shipped(kind, shape, ax) {
-            return Arc::new(t);
+            return Ok(Arc::new(t));
         }
     }
     let bits = shape.unwrap_or(0.0).to_bits();
     let key = (kind, bits, ax.to_bits(), ay.to_bits(), extra);
-    let made: Result<_, std::convert::Infallible> = cached(cache, key, || {
-        Ok(match AnyMicrofacet::<f64>::new(kind, ax, ay, shape) {
+    // (An Err, a cancelled computation, is not cached.)
+    cached(cache, key, || {
+        match AnyMicrofacet::<f64>::new(kind, ax, ay, shape) {
             Ok(twin) => compute(&twin),
             Err(_) => widened(),
-        })
-    });
-    match made {
-        Ok(t) => t,
-    }
+        }
+    })
 }
 
 /// A distribution of precision F seen as an f64 one (arguments rounded to F, values
