@@ -122,7 +122,8 @@ fn zero_like<'py>(py: Python<'py>, mu: &Bound<'py, PyAny>) -> PyResult<Bound<'py
 /// fast kernels, or the exact path with ``exact=True``).
 ///
 /// Without ``eta``: E₁(wo) of the F = 1 conductor with the height-correlated G2 (≤ 1e-9
-/// relative requested, 1e-6 guaranteed; the random walk's order 1). With ``eta`` (the
+/// relative requested, 1e-6 guaranteed; the random walk's order 1); μ < 0 is the mirror
+/// image, E(|μ|), as ``AlbedoTable.e`` and ``albedo`` have it (the BSDFs are two-sided). With ``eta`` (the
 /// relative index η_inside/η_outside, a number or an array broadcast with mu; η > 0, ≠ 1):
 /// the rough dielectric's ``DielectricAlbedo(reflect, transmit)`` from the side of mu's sign
 /// (μ < 0: from inside), with Fresnel at each microfacet (within 1.7e-5 by the library's
@@ -470,7 +471,8 @@ impl AlbedoTable {
         })
     }
 
-    /// E(μ), cubic in √μ between the nodes, vectorised over μ.
+    /// E(μ), cubic in √μ between the nodes, vectorised over μ; μ < 0 is E(|μ|), as
+    /// ``single_scattering_albedo`` and ``albedo`` have it.
     fn e(&self, py: Python<'_>, mu: &Bound<'_, PyAny>) -> PyResult<PyObject> {
         let t = &self.table;
         map_vec(py, &[(mu, 0, "mu", Domain::Cosine)], |a| t.e(a[0][0]))

@@ -5,7 +5,10 @@
 //!
 //! Rules: every argument is converted by `numpy.asarray`; the batch shapes (the shapes
 //! without the core axes) broadcast by `numpy.broadcast_shapes`. If every argument is
-//! float32, the outputs are float32 (each value the f64 result rounded once), else float64.
+//! float32 (either byte order; float16, computed in f32, as SciPy's ufuncs do) or a Python
+//! float or int (a weak scalar, NumPy 2's NEP 50), and one at least is an array or NumPy
+//! scalar, the outputs are float32 (each value the f64 result rounded once), else float64.
+//! Strings, complex numbers and objects raise TypeError.
 //! If the broadcast batch shape is `()`, an output without a core axis is a NumPy scalar (as
 //! a ufunc gives for scalars). One element given as Python numbers and lists, tuples or 1-D
 //! float64 arrays of the core lengths skips NumPy altogether ([`run_single`]: the same
@@ -294,7 +297,6 @@ impl<'py> Args<'py> {
     /// `items`: the arguments ([`Item`]), each checked against its domain.
     pub fn new(py: Python<'py>, items: &[Item<'_, 'py>]) -> PyResult<Self> {
         let np = numpy(py)?;
-        let float32 = np.getattr("float32")?;
         let mut f32 = true;
         let mut arguments = false;
         let mut wide = Vec::with_capacity(items.len());
@@ -302,13 +304,30 @@ impl<'py> Args<'py> {
         let mut singles = Vec::with_capacity(items.len());
         for &(x, core, name, domain) in items {
             let a = np.call_method1("asarray", (x,))?;
-            let single = a.getattr("dtype")?.eq(&float32)?;
+            let dtype = a.getattr("dtype")?;
+            let kind: String = dtype.getattr("kind")?.extract()?;
+            // Real numbers only: NumPy's asarray turns "0.5" into a string array that
+            // astype(float64) would parse, and a complex value would lose its imaginary part
+            // (SciPy's real functions raise TypeError for both, and for objects).
+            if !matches!(kind.as_str(), "f" | "i" | "u" | "b") {
+                return Err(pyo3::exceptions::PyTypeError::new_err(format!(
+                    "{name} must be real numbers (got dtype {})",
+                    dtype.str()?
+                )));
+            }
+            // float32 in either byte order, and float16 (computed in f32, as SciPy's
+            // ufuncs do), give float32 results.
+            let itemsize: usize = dtype.getattr("itemsize")?.extract()?;
+            let single = kind == "f" && itemsize <= 4;
             singles.push(single);
             // (A parameter array does not choose the dtype: the arguments do; with none,
-            // float64.)
+            // float64. A Python float or int is a weak scalar, NumPy 2's NEP 50: it takes
+            // the arrays' precision, so g1(float32 array, 0.5) is float32.)
             let fixed = matches!(domain, Domain::Fixed(_));
-            f32 &= single || fixed;
-            arguments |= !fixed;
+            let weak = x.is_exact_instance_of::<pyo3::types::PyFloat>()
+                || x.is_exact_instance_of::<pyo3::types::PyInt>();
+            f32 &= single || fixed || weak;
+            arguments |= !fixed && !weak;
             let shape: Vec<usize> = a.getattr("shape")?.extract()?;
             if core > 0 && shape.last() != Some(&core) {
                 return Err(PyValueError::new_err(format!(

@@ -41,6 +41,17 @@ impl Param {
             return Ok(Param::Num(x.extract::<f64>()?));
         }
         let np = numpy(py)?;
+        // (Real numbers only, as the arguments: "0.3" and complex values raise TypeError
+        // rather than being parsed or losing their imaginary part.)
+        let kind: String = np
+            .call_method1("asarray", (x,))
+            .and_then(|a| a.getattr("dtype")?.getattr("kind")?.extract())
+            .unwrap_or_default();
+        if matches!(kind.as_str(), "U" | "S" | "c" | "O" | "V" | "M" | "m") {
+            return Err(pyo3::exceptions::PyTypeError::new_err(format!(
+                "{name} must be a real number or an array of real numbers"
+            )));
+        }
         let a = np.call_method1("array", (x, "float64")).map_err(|e| {
             PyValueError::new_err(format!(
                 "{name} must be a number or an array of numbers ({e})"

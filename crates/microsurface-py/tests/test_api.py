@@ -235,6 +235,31 @@ def test_direction_shapes_and_dtypes():
     assert np.isnan(g.lambda_w([np.nan, 0.0, 1.0]))
 
 
+def test_dtype_rules_and_type_errors():
+    # Issue 47: float32 in either byte order and float16 give float32 (SciPy computes
+    # float16 in float32); a Python float beside a float32 array is a weak scalar (NumPy 2's
+    # NEP 50) and keeps float32; float64, ints and bools give float64. Strings, complex and
+    # object values raise TypeError (a string was parsed, a complex number lost its
+    # imaginary part), for arguments and NDF parameters alike.
+    g = mf.GGX(0.3)
+    x32 = np.array([0.2, 0.5], dtype=np.float32)
+    for x in [x32, x32.astype(">f4"), x32.astype(np.float16), np.float32(0.5)]:
+        assert g.d(x).dtype == np.float32, x.dtype
+        np.testing.assert_allclose(g.d(x), g.d(np.asarray(x, np.float64)), rtol=1e-6)
+    w32 = np.array([[0.6, 0.0, 0.8]], dtype=np.float32)
+    assert g.pdf_visible(w32, w32).dtype == np.float32
+    assert g.g2(x32, 0.5).dtype == np.float32
+    assert g.g2(x32, np.float64(0.5)).dtype == np.float64
+    for x in [np.array([0.5]), 0.5, 1, np.array([1, 0]), np.array([True])]:
+        assert np.asarray(g.d(x)).dtype == np.float64
+    for bad in ["0.5", 0.5 + 1j, np.array(["0.5"]), np.array([0.5 + 0j]), np.array([object()])]:
+        with pytest.raises(TypeError):
+            g.d(bad)
+    for bad in ["0.3", 0.3 + 0j, np.array(["0.3"])]:
+        with pytest.raises(TypeError):
+            mf.GGX(bad)
+
+
 def test_single_directions_equal_the_array_path():
     # One direction given as a list, a tuple or a 1-D float64 array (with Python-number
     # uniforms, μ, φ) takes a path without NumPy's conversions: the same values, bit for bit,

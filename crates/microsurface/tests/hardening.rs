@@ -1131,3 +1131,25 @@ fn fitted_d_in_the_underflowing_tail() {
         );
     }
 }
+
+/// Issue 47, item 4: one convention for the albedo below the surface: E(μ < 0) = E(|μ|)
+/// (the BSDFs are two-sided) from the table (it was E(0): 0.999995 for −0.5), the quadrature
+/// (it was 0) and the direction form alike.
+#[test]
+fn albedo_below_the_surface_is_the_mirror_image() {
+    use microsurface::scattering::{single_scattering_albedo, AlbedoTable};
+    let d = AnyMicrofacet::<f64>::new(NdfKind::Ggx, 0.5, 0.5, None).unwrap();
+    let t = AlbedoTable::new(&d);
+    for mu in [0.1f64, 0.5, 0.9] {
+        let s = (1.0 - mu * mu).sqrt();
+        let (up, down) = ([s, 0.0, mu], [-s, 0.0, -mu]);
+        assert_eq!(t.e(-mu), t.e(mu));
+        assert_eq!(t.e_dir(down), t.e_dir(up));
+        let (a, b) = (
+            single_scattering_albedo(&d, up),
+            single_scattering_albedo(&d, down),
+        );
+        assert_eq!(a, b);
+        assert!((t.e(mu) - a).abs() < 1e-3, "{mu}: {} vs {a}", t.e(mu));
+    }
+}

@@ -334,7 +334,8 @@ pub fn albedo_orders_serial<D: MicrofacetDistribution<f64>>(
 
 /// The single-scattering albedo of a conductor with F = 1 and the height-correlated G2,
 /// E₁(wo) = ∫ D(wh) G2(wo, wi)/(4 cos θo) dωi over the upper hemisphere (wh the half
-/// vector), by nested adaptive tanh-sinh quadrature in (cos θi, φ), split where the lobe
+/// vector; wo below the surface is −wo's mirror image, E(wo) = E(−wo): the BSDFs are
+/// two-sided; 0 on the horizon), by nested adaptive tanh-sinh quadrature in (cos θi, φ), split where the lobe
 /// peaks (the mirror direction's θ and azimuth): relative error ≤ 1e-9 requested, 1e-6
 /// guaranteed by tests/walk.rs against an independent rule. The walk's order 1 estimates the
 /// same quantity. For the NDFs whose D has a pole at the normal (Ei, Erfc, K0, Bessel-K
@@ -355,6 +356,14 @@ pub(crate) fn single_scattering_albedo_tol<D: MicrofacetDistribution<f64>>(
     wo: [f64; 3],
     tol: f64,
 ) -> f64 {
+    // wo below the surface: the BSDFs are two-sided (a pair below is the mirror image −wo,
+    // −wi of a pair above, whose f is the same: every NDF is point-symmetric in its slopes),
+    // so E(wo) = E(−wo), as AlbedoTable::e, e_dir and the walk's albedo have it.
+    let wo = if wo[2] < 0.0 {
+        [-wo[0], -wo[1], -wo[2]]
+    } else {
+        wo
+    };
     let mu_o = wo[2];
     if !(mu_o > 0.0) {
         return 0.0;

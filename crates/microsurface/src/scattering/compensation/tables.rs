@@ -337,9 +337,11 @@ impl AlbedoTable {
         (0..n).map(|k| node_mu(k, n)).collect()
     }
 
-    /// E(μ) for μ ∈ [0, 1] (clamped), by the interpolant.
+    /// E(μ) for μ ∈ [−1, 1] by the interpolant: μ < 0 is the mirror image, E(|μ|) (the
+    /// BSDFs are two-sided, as [`crate::scattering::single_scattering_albedo`] and
+    /// [`AlbedoTable::e_dir`] have it); |μ| past 1 is clamped.
     pub fn e(&self, mu: f64) -> f64 {
-        self.e_at_s(mu.clamp(0.0, 1.0).sqrt())
+        self.e_at_s(mu.abs().min(1.0).sqrt())
     }
 
     /// E_avg = (1/π)∫E(w) cos θ dω = 2∫E(μ)μ dμ of the interpolant (E averaged over wo's
