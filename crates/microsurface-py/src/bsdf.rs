@@ -453,11 +453,12 @@ impl PyBsdf {
     }
 }
 
-/// `repr` of a constructor argument, evaluable back: an array as ``numpy.array([...])``.
+/// `repr` of a constructor argument, evaluable back: an array as ``np.array([...])`` (the
+/// name NumPy's users import it as).
 fn arg_repr(py: Python<'_>, a: &Bound<'_, PyAny>) -> PyResult<String> {
     if a.is_instance(&crate::engine::numpy(py)?.getattr("ndarray")?)? {
         return Ok(format!(
-            "numpy.array({})",
+            "np.array({})",
             a.call_method0("tolist")?.repr()?
         ));
     }

@@ -776,9 +776,9 @@ impl NDF {
         self.kind.name()
     }
 
-    /// The constructor call that builds this NDF, evaluable back (with ``import numpy``
-    /// for parameter arrays): ``microsurface.GTR(0.3, gamma=1.5, alpha_y=0.2, exact=True)``,
-    /// ``microsurface.GGX(numpy.array([0.1, 0.2]))`` (numbers as Python writes them, so the
+    /// The constructor call that builds this NDF, evaluable back (with ``import numpy as
+    /// np`` for parameter arrays): ``microsurface.GTR(0.3, gamma=1.5, alpha_y=0.2, exact=True)``,
+    /// ``microsurface.GGX(np.array([0.1, 0.2]))`` (numbers as Python writes them, so the
     /// round trip is exact; defaults left out).
     fn __repr__(slf: &Bound<'_, Self>) -> PyResult<String> {
         let py = slf.py();

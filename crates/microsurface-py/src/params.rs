@@ -89,12 +89,13 @@ impl Param {
     }
 
     /// As the constructor call takes it back: Python's repr of a float (exact), or
-    /// `numpy.array([...])` of the array's nested lists (each float's repr: exact).
+    /// `np.array([...])` of the array's nested lists (each float's repr: exact), evaluable under
+    /// `import numpy as np`.
     pub fn repr(&self, py: Python<'_>) -> PyResult<String> {
         match self {
             Param::Num(x) => Ok(x.into_pyobject(py)?.repr()?.to_string()),
             Param::Arr(a) => Ok(format!(
-                "numpy.array({})",
+                "np.array({})",
                 a.bind(py).call_method0("tolist")?.repr()?
             )),
         }

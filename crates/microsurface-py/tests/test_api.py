@@ -184,11 +184,12 @@ def test_every_parameter_may_be_an_array():
     assert s.wi.shape == (3, 3) and s.lobe.shape == (3,)
     with pytest.raises(ValueError, match="eta"):
         mf.Dielectric(mf.GGX(0.3), [1.5, 1.0])
-    # Objects of arrays: repr evaluates back, ==, hash and pickle by value.
-    import numpy
+    # Objects of arrays: repr evaluates back under `import numpy as np` (np.array), ==,
+    # hash and pickle by value.
     import pickle
     for x in (g, an, c, d, mf.StudentT(np.array([0.3, 0.4]), 2.5, exact=True)):
-        y = eval(repr(x), {"microsurface": mf, "numpy": numpy})
+        assert "np.array(" in repr(x) and "numpy.array(" not in repr(x)
+        y = eval(repr(x), {"microsurface": mf, "np": np})
         assert y == x and hash(y) == hash(x) and pickle.loads(pickle.dumps(x)) == x
     assert mf.GGX([0.1, 0.2]) != mf.GGX([0.1, 0.3]) and mf.GGX([0.1]) != mf.GGX(0.1)
     # One material only: the albedo table.

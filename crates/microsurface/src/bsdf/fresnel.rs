@@ -17,8 +17,8 @@
 // `!(x > 0)` is the NaN-aware test (false for NaN) on a generic `Real`, on purpose.
 #![allow(clippy::neg_cmp_op_on_partial_ord)]
 
-use crate::fast::Real;
 use crate::math::quad::GL8;
+use crate::math::real::Real;
 
 /// Exact unpolarised Fresnel reflectance of a dielectric interface with relative index η
 /// (η_t/η_i; the side cos θ > 0 is outside), for cos θ ∈ [−1, 1]: cos θ < 0 swaps the sides.

@@ -58,7 +58,7 @@ use crate::bsdf::frame::{
 };
 use crate::distribution::MicrofacetDistribution;
 use crate::error::ParamError;
-use crate::fast::Real;
+use crate::math::real::Real;
 use fresnel::Fresnel;
 use std::marker::PhantomData;
 

@@ -3,6 +3,8 @@
 //! goodness-of-fit harness of the samplers ([`chi2`]).
 
 pub mod chi2;
+#[cfg(test)]
+mod fast_samplers;
 pub mod verify;
 
 /// Tanh-sinh quadrature as the checks use it (adaptive, finite and half-infinite

@@ -1,7 +1,7 @@
 //! The run-time door: [`AnyMicrofacet`].
 
 use crate::distribution::{Exact, Microfacet, MicrofacetDistribution, Sample};
-use crate::fast::Real;
+use crate::math::real::Real;
 use crate::ndf::family::{NdfKind, NdfSpec, SpecError};
 use crate::{Beckmann, BesselK, DoubleGgx, Ei, Erfc, Exponential, Ggx, Gtr, ParamError};
 use crate::{StudentT, K0};

@@ -7,8 +7,8 @@
 use super::exact::{Exact, ExactInner};
 use super::kernels::Isotropic;
 use super::{shared_fit, Fit, MicrofacetDistribution, Sample, SharedFits, UniformStream};
-use crate::bsdf::frame::{dot, normalize};
 use crate::fast::{self, Real};
+use crate::math::dirs::{dot, normalize};
 use crate::sampling::visible::UnitSlopes;
 use crate::{Beckmann, DoubleGgx, Exponential, Ggx, Gtr, ParamError};
 use std::cell::Cell;
@@ -841,7 +841,7 @@ impl<F: Real> Microfacet<F, Ggx> {
     #[inline(always)]
     fn bounded_cap(&self, w: [F; 3]) -> ([F; 3], F, F) {
         let down = w[2] < F::ZERO;
-        let w = if down { crate::bsdf::frame::neg(w) } else { w };
+        let w = if down { crate::math::dirs::neg(w) } else { w };
         let ws = normalize([self.ax * w[0], self.ay * w[1], w[2]]);
         if down {
             return (ws, ws[2], F::ZERO);
@@ -903,7 +903,7 @@ impl<F: Real> Microfacet<F, Ggx> {
     /// Density of the reflected direction wi = reflect(wo, wm) for wm from
     /// [`Microfacet::sample_bounded`]`(wo, ·)`: pdf(wm)/(4|wo·wm|) (Eto & Tokuyoshi's).
     pub fn pdf_bounded_reflection(&self, wo: [F; 3], wi: [F; 3]) -> F {
-        let Some(wm) = crate::bsdf::frame::half_vector_reflection(wo, wi) else {
+        let Some(wm) = crate::math::dirs::half_vector_reflection(wo, wi) else {
             return F::ZERO;
         };
         let c = dot(wo, wm).abs();

@@ -98,8 +98,8 @@ pub use any::{AnyMicrofacet, FIT_CACHE_CAPACITY};
 pub use exact::Exact;
 pub use microfacet::{GtrData, Microfacet, Shape};
 
-use crate::bsdf::frame::{dot, normalize};
-use crate::fast::Real;
+use crate::math::dirs::{dot, normalize};
+use crate::math::real::Real;
 use crate::math::rng::SplitMix64;
 use std::collections::HashMap;
 use std::hash::Hash;

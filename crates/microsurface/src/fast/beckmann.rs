@@ -29,7 +29,7 @@
 //! **Accuracy.** x̃ within 5.5e-15 (1 + |x̃|) of mpmath's quantile on the one-step range,
 //! and everywhere within 4 ε·Z/N′(x̃), N′ the unnormalised density: the rounding of N(X) = uZ
 //! itself, which is what the loop before it reached too (tests/fast.rs); within 1e-11 of
-//! the exact sampler, whose own residual bounds that comparison (fast/sampler_tests.rs).
+//! the exact sampler, whose own residual bounds that comparison (check/fast_samplers.rs).
 //! The slices ([`super::batch`]) run the same step with e^x from [`super::arith`], ~1e-16
 //! from the scalar path's libm call.
 
@@ -267,9 +267,9 @@ fn hot(a: f64, u: f64) -> bool {
 }
 
 /// The ends of [`hot`]'s range of u₁, 2^−11 and 1 − 2^−21.
-pub(super) const U_LO: f64 = 1.0 / 2048.0;
+pub(crate) const U_LO: f64 = 1.0 / 2048.0;
 /// See [`U_LO`].
-pub(super) const U_HI: f64 = 1.0 - 1.0 / 2_097_152.0;
+pub(crate) const U_HI: f64 = 1.0 - 1.0 / 2_097_152.0;
 
 /// x̃ outside [`hot`]'s range (out of line): NaN for NaN a or u, the Gaussian quantile at
 /// normal incidence, otherwise the bracketed loop [`visible_x_loop`].
@@ -321,7 +321,7 @@ fn floor_index(x: f64, max: usize) -> usize {
 /// of t's interval and v's octave (v = u below ½, 1 − u, exact, above), a bicubic in f32
 /// (2e-4 of min(1, x̃ + a): tests/fast.rs). Branch-free (the sides are selects).
 #[inline(always)]
-pub(super) fn guess(t: f64, u: f64) -> f64 {
+pub(crate) fn guess(t: f64, u: f64) -> f64 {
     let upper = u >= 0.5;
     let v = if upper { 1.0 - u } else { u };
     let (nt, nk, base) = if upper {
@@ -363,7 +363,7 @@ fn erfcx_hot(x: f64) -> f64 {
 /// side without cancellation and Z = a + L(a) from [`l_of_t`]. `exp` is e^x (libm's in the
 /// scalar path, the vectorisable [`super::arith::exp`] in the slices).
 #[inline(always)]
-pub(super) fn visible_x_hot(a: f64, t: f64, u: f64, exp: impl Fn(f64) -> f64) -> f64 {
+pub(crate) fn visible_x_hot(a: f64, t: f64, u: f64, exp: impl Fn(f64) -> f64) -> f64 {
     let l = l_of_t(t);
     let z = a + l;
     let x = guess(t, u);
@@ -399,7 +399,7 @@ pub(super) fn visible_x_hot(a: f64, t: f64, u: f64, exp: impl Fn(f64) -> f64) ->
 
 /// Solves N(X) = u Z for X ∈ [−a, 8], a finite, by safeguarded Halley steps from the guess
 /// table at u clamped into its range (the cold path: u₁ within 2^−11 of 0 or 2^−21 of 1).
-pub(super) fn visible_x_loop(a: f64, t: f64, u: f64) -> f64 {
+pub(crate) fn visible_x_loop(a: f64, t: f64, u: f64) -> f64 {
     let ea = (-a * a).exp();
     let erfc_a = erfcx(a) * ea;
     // Z = (a/2) erfc(−a) + e^{−a²}/(2√π).

@@ -277,7 +277,7 @@ impl Posterior {
     /// A visible normal for the unit direction v (v.z > 0) at roughness (αx, αy): β from
     /// [`Posterior::sample_ln_beta`], then Beckmann's stream sampler at (β αx, β αy).
     /// `None` where either gives up (see theirs) or v is not above the horizon.
-    pub(crate) fn sample_visible<F: crate::fast::Real>(
+    pub(crate) fn sample_visible<F: crate::math::real::Real>(
         &self,
         v: [f64; 3],
         ax: f64,

@@ -8,7 +8,7 @@ use crate::bsdf::frame::{dot, reflect};
 use crate::bsdf::fresnel::Fresnel;
 use crate::bsdf::{Bsdf, BsdfSample, Lobe, Transport};
 use crate::distribution::{unit, MicrofacetDistribution};
-use crate::fast::Real;
+use crate::math::real::Real;
 use crate::math::rng::SplitMix64;
 
 /// The distribution of microsurface heights (the BSDF does not depend on it).

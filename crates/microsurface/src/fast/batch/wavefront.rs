@@ -10,7 +10,7 @@
 use super::{simd, Simd, BLOCK};
 use crate::bsdf::{Bsdf, Masking};
 use crate::distribution::MicrofacetDistribution;
-use crate::fast::Real;
+use crate::math::real::Real;
 
 /// Vectors in structure-of-arrays form, a wavefront renderer's layout: element i is
 /// `(x[i], y[i], z[i])`. The slices must have equal lengths.

@@ -3,7 +3,7 @@
 //! construction ([`FittedGtr::new`]); see [`FittedGtr::sample_visible`].
 
 use super::FittedGtr;
-use crate::fast::Real;
+use crate::math::real::Real;
 
 impl FittedGtr {
     /// A visible normal for the unit direction w (mirrored if w.z < 0), distributed exactly

@@ -8,7 +8,7 @@ use super::Scheme;
 use crate::bsdf::fresnel::dielectric_average;
 use crate::bsdf::{Bsdf, BsdfSample, Lobe, RoughDielectric, Transport};
 use crate::distribution::MicrofacetDistribution;
-use crate::fast::Real;
+use crate::math::real::Real;
 use std::sync::Arc;
 
 /// A rough dielectric with its lost energy put back: [`Bsdf`] like the single-scattering

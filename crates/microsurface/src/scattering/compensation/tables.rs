@@ -5,8 +5,8 @@
 #![allow(clippy::neg_cmp_op_on_partial_ord)]
 
 use crate::distribution::{cached, FitCache, MicrofacetDistribution, Sample};
-use crate::fast::Real;
 use crate::math::quad::GL8;
+use crate::math::real::Real;
 use crate::scattering::albedo::single_scattering_albedo_tol;
 use crate::scattering::progress::{Cancelled, Progress};
 use crate::scattering::table::Grid;

@@ -1,11 +1,12 @@
 //! The fast samplers (crate-internal since `Microfacet` is their public door) against the
 //! exact samplers and the visible distribution: warps matched to rounding, rejection samplers
 //! by χ², their extra uniforms injected at the edges (0, just below 1, NaN), f32 against f64.
-//! (Moved from tests/fast.rs when the samplers became `pub(crate)`.)
+//! (Moved from tests/fast.rs when the samplers became `pub(crate)`; here, beside the χ²
+//! harness it uses, so that `fast` does not import `check`.)
 
-use super::{beckmann, ggx};
 use crate::distribution::kernels::{Microsurface, Stretched};
 use crate::distribution::{Exact, MicrofacetDistribution};
+use crate::fast::{beckmann, ggx};
 use crate::{Gtr, Ndf, NdfKind, UnitSlopes, Vec3};
 
 /// The reference coordinates' exact GGX at (αx, αy).
