@@ -457,10 +457,7 @@ impl PyBsdf {
 /// name NumPy's users import it as).
 fn arg_repr(py: Python<'_>, a: &Bound<'_, PyAny>) -> PyResult<String> {
     if a.is_instance(&crate::engine::numpy(py)?.getattr("ndarray")?)? {
-        return Ok(format!(
-            "np.array({})",
-            a.call_method0("tolist")?.repr()?
-        ));
+        return Ok(format!("np.array({})", a.call_method0("tolist")?.repr()?));
     }
     Ok(a.repr()?.to_string())
 }
@@ -601,7 +598,8 @@ impl PyBsdf {
 
     /// Directions wi from wo: ``sample(wo, u)`` with uniforms u of shape (..., 3) (the lobe
     /// choice, then the normal's two), or ``sample(wo, rng, n)`` with a
-    /// ``numpy.random.Generator``. Returns ``BSDFSample(wi, f, pdf, lobe, specular, eta)``;
+    /// ``numpy.random.Generator`` (``n`` an int or a tuple, SciPy's ``size``; ``None``: one
+    /// draw per element of wo's batch broadcast with the NDF's parameter arrays). Returns ``BSDFSample(wi, f, pdf, lobe, specular, eta)``;
     /// a rejected sample (a reflection below the horizon, wo on it, ...) has wi = 0, f = 0,
     /// pdf = 0 and lobe 0 (else 1 reflection, 2 transmission); specular marks the delta
     /// lobes of a smooth surface (α < 1e-3), whose f and pdf are weights; eta is the
@@ -612,10 +610,14 @@ impl PyBsdf {
         py: Python<'_>,
         wo: &Bound<'_, PyAny>,
         u: &Bound<'_, PyAny>,
-        n: Option<i64>,
+        n: Option<&Bound<'_, PyAny>>,
     ) -> PyResult<PyObject> {
         let c = self.channels;
-        let u = crate::engine::uniforms(py, u, n, 3)?;
+        let params = match &self.inner {
+            Inner::One(_) => Vec::new(),
+            Inner::Batch(b) => b.ndf.param_shape_vec(),
+        };
+        let u = crate::engine::uniforms(py, u, n, 3, &[(wo, 3)], &params)?;
         let outs = [3, if c == 1 { 0 } else { c }, 0, 0, 0, 0];
         let mut o = self.each(
             py,

@@ -616,14 +616,34 @@ pub fn empty<'py, T: numpy::Element>(
 }
 
 /// A uniform source: an array of uniforms (last axis `k`), or a `numpy.random.Generator`
-/// from which n × k (or k, without n) uniforms are drawn.
+/// from which uniforms are drawn: with `n` (SciPy's `size`: an int or a tuple of ints) an
+/// array of shape (*n, k); without it one draw per element of the call's batch, the
+/// broadcast of `args`' batch shapes (each argument with its core length) and `params` (the
+/// parameter arrays' shape), as SciPy's `rvs(size=None)` with array parameters draws one
+/// variate per parameter element.
 pub fn uniforms<'py>(
     py: Python<'py>,
     u: &Bound<'py, PyAny>,
-    n: Option<i64>,
+    n: Option<&Bound<'py, PyAny>>,
     k: usize,
+    args: &[(&Bound<'py, PyAny>, usize)],
+    params: &[usize],
 ) -> PyResult<Bound<'py, PyAny>> {
-    let n = n.map(|n| count(n, "n", 0)).transpose()?;
+    let size: Option<Vec<usize>> = match n {
+        None => None,
+        Some(n) if n.is_none() => None,
+        Some(n) => Some(match n.extract::<i64>() {
+            Ok(v) => vec![count(v, "n", 0)?],
+            Err(_) => {
+                let t: Vec<i64> = n.extract().map_err(|_| {
+                    pyo3::exceptions::PyTypeError::new_err("n must be an int or a tuple of ints")
+                })?;
+                t.into_iter()
+                    .map(|v| count(v, "n", 0))
+                    .collect::<PyResult<_>>()?
+            }
+        }),
+    };
     static GENERATOR: GILOnceCell<PyObject> = GILOnceCell::new();
     let generator = GENERATOR
         .get_or_try_init(py, || {
@@ -631,12 +651,24 @@ pub fn uniforms<'py>(
         })?
         .bind(py);
     if u.is_instance(generator)? {
-        return match n {
-            Some(n) => u.call_method1("random", ((n, k),)),
-            None => u.call_method1("random", (k,)),
+        let mut shape = match size {
+            Some(s) => s,
+            None => {
+                let np = numpy(py)?;
+                let mut shapes = vec![PyTuple::new(py, params)?];
+                for &(a, core) in args {
+                    let s: Vec<usize> = np.call_method1("shape", (a,))?.extract()?;
+                    let keep = s.len().saturating_sub(usize::from(core > 0));
+                    shapes.push(PyTuple::new(py, &s[..keep])?);
+                }
+                np.call_method1("broadcast_shapes", PyTuple::new(py, shapes)?)?
+                    .extract()?
+            }
         };
+        shape.push(k);
+        return u.call_method1("random", (PyTuple::new(py, shape)?,));
     }
-    if n.is_some() {
+    if size.is_some() {
         return Err(PyValueError::new_err(
             "n is the number of samples to draw from a numpy.random.Generator; an array of uniforms says it by its shape",
         ));

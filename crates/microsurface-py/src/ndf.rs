@@ -1031,7 +1031,9 @@ impl NDF {
     /// Visible normals for directions w: ``sample_visible(w, u)`` with uniforms u of shape
     /// (..., 2) in [0, 1) (broadcast with w's batch shape; others raise ValueError, NaN gives
     /// NaN), or ``sample_visible(w, rng, n)``
-    /// with a ``numpy.random.Generator`` (n × 2 uniforms drawn from it). Returns
+    /// with a ``numpy.random.Generator``: ``n`` (an int or a tuple, SciPy's ``size``) draws
+    /// uniforms of shape (*n, 2); ``n=None`` one pair per element of w's batch broadcast
+    /// with the parameter arrays (a roughness map: one sample per texel). Returns
     /// ``Sample(wm, pdf)``: unit normals (..., 3) and their densities ``pdf_visible(w,
     /// wm)``. Samplers of the exact distribution (χ²-tested in the crate; ``sampler`` says
     /// which): each wm is a deterministic function of (w, u).
@@ -1041,9 +1043,9 @@ impl NDF {
         py: Python<'_>,
         w: &Bound<'_, PyAny>,
         u: &Bound<'_, PyAny>,
-        n: Option<i64>,
+        n: Option<&Bound<'_, PyAny>>,
     ) -> PyResult<PyObject> {
-        let u = uniforms(py, u, n, 2)?;
+        let u = uniforms(py, u, n, 2, &[(w, 3)], &self.param_shape_vec())?;
         let items = [(w, 3, "w", Domain::Any), (&u, 2, "u", Domain::Uniform)];
         self.samples(py, &items, |e, a| e.sample(v3(a[0]), [a[1][0], a[1][1]]))
     }
@@ -1054,15 +1056,16 @@ impl NDF {
     }
 
     /// Normals distributed as D(m) cos θm: ``sample_dcos(u)`` (u of shape (..., 2)) or
-    /// ``sample_dcos(rng, n)``; returns ``Sample(wm, pdf)``.
+    /// ``sample_dcos(rng, n)`` (``n`` an int or a tuple; ``None``: one per element of the
+    /// parameter arrays); returns ``Sample(wm, pdf)``.
     #[pyo3(signature = (u, n = None))]
     fn sample_dcos(
         &self,
         py: Python<'_>,
         u: &Bound<'_, PyAny>,
-        n: Option<i64>,
+        n: Option<&Bound<'_, PyAny>>,
     ) -> PyResult<PyObject> {
-        let u = uniforms(py, u, n, 2)?;
+        let u = uniforms(py, u, n, 2, &[], &self.param_shape_vec())?;
         self.samples(py, &[(&u, 2, "u", Domain::Uniform)], |e, a| {
             e.sample_dcos([a[0][0], a[0][1]])
         })

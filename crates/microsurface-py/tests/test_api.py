@@ -261,6 +261,37 @@ def test_dtype_rules_and_type_errors():
             mf.GGX(bad)
 
 
+def test_samplers_take_scipy_sizes_with_parameter_arrays():
+    # Issue 47: n (SciPy's size) as an int or a tuple; without it, one draw per element of
+    # the parameter arrays (a roughness map: one sample per texel), each its own uniforms;
+    # the same as the per-element objects given the same uniforms.
+    alpha = np.array([[0.1, 0.3, 0.6], [0.2, 0.4, 0.9]])
+    g = mf.GGX(alpha)
+    w = [0.6, 0.0, 0.8]
+    s = g.sample_visible(w, np.random.default_rng(3))
+    assert s.wm.shape == (2, 3, 3) and s.pdf.shape == (2, 3)
+    assert len(np.unique(s.wm[..., 0])) == 6  # not one pair of uniforms for all
+    u = np.random.default_rng(3).random((2, 3, 2))
+    np.testing.assert_array_equal(s.wm, g.sample_visible(w, u).wm)
+    for i in range(2):
+        for j in range(3):
+            one = mf.GGX(alpha[i, j]).sample_visible(w, u[i, j])
+            np.testing.assert_allclose(one.wm, s.wm[i, j], rtol=0, atol=1e-15)
+    assert g.sample_dcos(np.random.default_rng(1)).wm.shape == (2, 3, 3)
+    assert g.sample_visible(w, np.random.default_rng(1), (4, 2, 3)).wm.shape == (4, 2, 3, 3)
+    one = mf.GGX(0.3)
+    assert one.sample_visible(w, np.random.default_rng(1), (5, 2)).wm.shape == (5, 2, 3)
+    assert one.sample_visible(w, np.random.default_rng(1), 7).wm.shape == (7, 3)
+    assert one.sample_visible(w, np.random.default_rng(1)).wm.shape == (3,)
+    assert one.sample_visible(np.tile(w, (4, 1)), np.random.default_rng(1)).wm.shape == (4, 3)
+    b = mf.Conductor(g)
+    assert b.sample([0.6, 0.0, 0.8], np.random.default_rng(2)).wi.shape == (2, 3, 3)
+    with pytest.raises(TypeError):
+        one.sample_visible(w, np.random.default_rng(1), "3")
+    with pytest.raises(ValueError):
+        one.sample_visible(w, np.random.default_rng(1), (3, -1))
+
+
 def test_single_directions_equal_the_array_path():
     # One direction given as a list, a tuple or a 1-D float64 array (with Python-number
     # uniforms, μ, φ) takes a path without NumPy's conversions: the same values, bit for bit,
