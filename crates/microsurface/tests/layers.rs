@@ -32,7 +32,6 @@ const KNOWN_UPWARD: &[(&str, &str)] = &[
     ("fast", "bsdf"),
     ("fast", "distribution"),
     ("ndf", "fast"),
-    ("ndf", "sampling"),
     ("sampling", "distribution"),
 ];
 

@@ -36,8 +36,8 @@ use crate::error::{check_alpha, check_shape, ParamError};
 use crate::math::special::{
     exp_over, gamma_ratio_half, ln_bessel_k, ln_gamma, ln_xnu_bessel_k_small,
 };
+use crate::ndf::slopes::RadialSlopes;
 use crate::ndf::{Ndf, ShapeInvariant};
-use crate::sampling::dcos::RadialSlopes;
 use std::f64::consts::LN_2;
 use std::f64::consts::PI;
 

@@ -22,8 +22,8 @@
 
 use crate::error::{check_alpha, ParamError};
 use crate::math::special::{dd::Dd, e1, e1_cf_tail, e1_with, erfc, erfc_ratio_tail};
+use crate::ndf::slopes::RadialSlopes;
 use crate::ndf::{Ndf, ShapeInvariant};
-use crate::sampling::dcos::RadialSlopes;
 use std::f64::consts::PI;
 
 use crate::math::special::SQRT_PI;

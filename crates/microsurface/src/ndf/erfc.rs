@@ -18,8 +18,8 @@
 
 use crate::error::{check_alpha, ParamError};
 use crate::math::special::{dd::Dd, e1_with, erfc, erfc_ratio_tail};
+use crate::ndf::slopes::RadialSlopes;
 use crate::ndf::{Ndf, ShapeInvariant};
-use crate::sampling::dcos::RadialSlopes;
 
 use crate::math::special::SQRT_PI;
 /// e^{−y} underflows beyond this.

@@ -31,8 +31,8 @@
 
 use crate::error::{check_alpha, check_shape, ParamError};
 use crate::math::special::{exp_over, gamma, inc_gamma};
+use crate::ndf::slopes::RadialSlopes;
 use crate::ndf::{Ndf, ShapeInvariant};
-use crate::sampling::dcos::RadialSlopes;
 use std::f64::consts::PI;
 
 /// Supported range of γ (see the module docs).

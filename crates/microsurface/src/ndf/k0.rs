@@ -18,8 +18,8 @@
 
 use crate::error::{check_alpha, ParamError};
 use crate::math::special::{dd::Dd, k0e, k1e, xk1_m1};
+use crate::ndf::slopes::RadialSlopes;
 use crate::ndf::{Ndf, ShapeInvariant};
-use crate::sampling::dcos::RadialSlopes;
 use std::f64::consts::PI;
 
 /// e^{−z} underflows beyond this.

@@ -14,7 +14,7 @@
 
 use super::{AnyNdf, Ndf, NdfKind};
 use crate::error::{ParamError, ALPHA_MAX, ALPHA_MIN};
-use crate::sampling::RadialSlopes;
+use crate::ndf::slopes::RadialSlopes;
 use std::fmt;
 use std::str::FromStr;
 

@@ -13,6 +13,7 @@ pub mod gtr;
 pub mod k0;
 mod matched;
 pub mod mixture;
+pub(crate) mod slopes;
 pub mod student_t;
 
 pub use beckmann::Beckmann;

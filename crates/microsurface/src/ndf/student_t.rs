@@ -39,8 +39,8 @@
 
 use crate::error::{check_alpha, check_shape, ParamError};
 use crate::math::special::{dd::Dd, exp_over, gamma_ratio_half, inc_beta};
+use crate::ndf::slopes::RadialSlopes;
 use crate::ndf::{Ndf, ShapeInvariant};
-use crate::sampling::dcos::RadialSlopes;
 use std::f64::consts::PI;
 
 use crate::math::special::SQRT_PI;
