@@ -3879,3 +3879,115 @@ fn lut_tables() {
     eprintln!("lut_tables: {built} tables built");
     fails.finish("lut_tables");
 }
+
+/// Issue 45/47: materials built per call, as a renderer's textures make them — α, the aspect
+/// and η drawn afresh for every evaluation, the dielectric through `Box<dyn Bsdf>` over the
+/// door for every NDF, f32 and f64 — and hostile η refused where it enters: `ParamError::Eta`
+/// exactly for NaN, ±∞ and η ≤ 0, never a panic; every accepted material's eval, pdf and
+/// sample finite and non-negative (the sample's wi unit).
+#[test]
+fn materials_per_call_with_hostile_indices() {
+    use microsurface::bsdf::{Bsdf, RoughDielectric};
+    use microsurface::scattering::DielectricFacets;
+    use microsurface::{AnyMicrofacet, ParamError};
+    let mut r = Rng::new(61);
+    let mut fails = Failures::default();
+    let hostile = [
+        0.0,
+        -0.0,
+        -1.5,
+        f64::NAN,
+        f64::INFINITY,
+        f64::NEG_INFINITY,
+        -1e-300,
+    ];
+    // (2000 materials: GTR's, a fit per new α until issue 45's per-γ fit, are most of the
+    // test's seconds.)
+    for _ in 0..scale() * 2000 {
+        let kind = r.pick(&NdfKind::ALL);
+        let shape = kind.shape_name().map(|n| if n == "a" { 0.7 } else { 2.5 });
+        let ax = r.log_uniform(1e-3, 10.0);
+        // GTR is anisotropic only at γ = 2: the aspect for the others.
+        let ay = if kind == NdfKind::Gtr || r.chance(0.5) {
+            ax
+        } else {
+            ax * r.log_uniform(0.1, 10.0)
+        };
+        let eta = if r.chance(0.2) {
+            r.pick(&hostile)
+        } else if r.chance(0.5) {
+            1.0 / r.log_uniform(1.0, 3.0)
+        } else {
+            r.log_uniform(1.0, 3.0)
+        };
+        let bad = !(eta > 0.0 && eta.is_finite());
+        let ctx = || format!("{kind} α=({ax:e},{ay:e}) η={eta:e}");
+        let m64 = AnyMicrofacet::<f64>::new(kind, ax, ay, shape).unwrap();
+        let m32 = AnyMicrofacet::<f32>::new(kind, ax as f32, ay as f32, shape).unwrap();
+        let eta_error =
+            |e: &ParamError| matches!(e, ParamError::Eta(x) if x.to_bits() == eta.to_bits());
+        let (d64, d32, facets) = no_panic("constructors", ctx(), || {
+            (
+                RoughDielectric::new(m64.clone(), eta),
+                RoughDielectric::new(m32.clone(), eta as f32),
+                DielectricFacets::new(eta),
+            )
+        });
+        fails.check(
+            d64.as_ref().is_err_and(eta_error) == bad
+                && d32.is_err() == bad
+                && facets.as_ref().is_err_and(eta_error) == bad,
+            || format!("constructors' verdicts at {}", ctx()),
+        );
+        evals(3);
+        let (Ok(d64), Ok(d32)) = (d64, d32) else {
+            continue;
+        };
+        let b64: Box<dyn Bsdf<f64, Value = [f64; 3]>> = Box::new(d64);
+        let b32: Box<dyn Bsdf<f32, Value = [f32; 3]>> = Box::new(d32);
+        let wo: [f64; 3] = unit_direction::<f64>(&mut r);
+        let wi: [f64; 3] = unit_direction::<f64>(&mut r);
+        let (uc, u) = (uniform(&mut r), [uniform(&mut r), uniform(&mut r)]);
+        let (f, p, s) = no_panic("RoughDielectric f64", ctx(), || {
+            (b64.eval(wo, wi), b64.pdf(wo, wi), b64.sample(wo, uc, u))
+        });
+        // (A singular NDF's pole: wo and wi on the axis put the half vector on it, where D,
+        // and so f and pdf, are +∞ exactly.)
+        let singular = AnyNdf::new(kind, 1.0, shape).is_ok_and(|n| n.singular_at_pole());
+        let on_axis = |w: [f64; 3]| w[0] == 0.0 && w[1] == 0.0;
+        let pole = singular && on_axis(wo) && on_axis(wi);
+        let ok = |x: f64| x >= 0.0 && (x.is_finite() || (pole && x == f64::INFINITY));
+        let unit =
+            |w: [f64; 3]| ((w[0] * w[0] + w[1] * w[1] + w[2] * w[2]).sqrt() - 1.0).abs() < 1e-6;
+        fails.check(
+            f.iter().all(|&x| ok(x))
+                && ok(p)
+                && s.is_none_or(|s| s.pdf > 0.0 && s.f.iter().all(|x| x.is_finite()) && unit(s.wi)),
+            || {
+                format!(
+                    "f64 eval {f:?} pdf {p} sample {s:?} at {} wo={wo:?} wi={wi:?}",
+                    ctx()
+                )
+            },
+        );
+        let (wo32, wi32) = (wo.map(|x| x as f32), wi.map(|x| x as f32));
+        let u32_ = [u[0] as f32, u[1] as f32];
+        let (f, p, s) = no_panic("RoughDielectric f32", ctx(), || {
+            (
+                b32.eval(wo32, wi32),
+                b32.pdf(wo32, wi32),
+                b32.sample(wo32, uc as f32, u32_),
+            )
+        });
+        fails.check(
+            f.iter().all(|&x| ok(f64::from(x)))
+                && ok(f64::from(p))
+                && s.is_none_or(|s| {
+                    s.pdf > 0.0 && s.f.iter().all(|x| x.is_finite()) && unit(s.wi.map(f64::from))
+                }),
+            || format!("f32 eval {f:?} pdf {p} sample {s:?} at {}", ctx()),
+        );
+        evals(6);
+    }
+    fails.finish("materials_per_call_with_hostile_indices");
+}
