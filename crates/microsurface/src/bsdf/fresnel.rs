@@ -326,7 +326,32 @@ fn dielectric_average_on(eta: f64, mc: f64, intervals: usize) -> f64 {
 /// aluminium in RGB, ρ = 1.76 to 3.3), while that is at most 64; else (an index near the real axis, where F has the
 /// critical angle's edge or its smoothed trace at Re μb) the adaptive rule, split at Re μb.
 /// Within 1e-11 of a dense reference over η ∈ [0.02, 20], k ∈ {0} ∪ [1e-4, 20] (tests below).
+/// The last four indices a thread averaged are remembered (a lookup, then).
 pub fn conductor_average(eta: f64, k: f64) -> f64 {
+    // A texture varies α at every shading point while the metal stays: the last few indices
+    // a thread averaged are kept (four: RGB's three channels and one more), so that a
+    // compensated conductor built per call pays the rule once per metal, not per material.
+    thread_local! {
+        static RECENT: std::cell::Cell<[(u64, u64, f64); 4]> =
+            const { std::cell::Cell::new([(u64::MAX, u64::MAX, f64::NAN); 4]) };
+    }
+    let key = (eta.to_bits(), k.to_bits());
+    let recent = RECENT.with(|r| r.get());
+    if let Some(&(_, _, v)) = recent.iter().find(|e| (e.0, e.1) == key) {
+        return v;
+    }
+    let v = conductor_average_rule(eta, k);
+    RECENT.with(|r| {
+        let mut e = r.get();
+        e.rotate_right(1);
+        e[0] = (key.0, key.1, v);
+        r.set(e);
+    });
+    v
+}
+
+/// [`conductor_average`]'s rule, uncached.
+fn conductor_average_rule(eta: f64, k: f64) -> f64 {
     let f = |mu: f64| conductor(mu, eta, k);
     // The square of the Bernstein parameter of a point p for [0, 1]: |z ± √(z² − 1)|²,
     // z = 2p − 1, the larger (their product is 1; `norm` is the squared modulus).
@@ -688,5 +713,20 @@ mod tests {
         }
         assert!(f82_tint_average(0.9, 0.7).is_some());
         assert!(f82_tint_average(0.02, 0.0).is_none());
+    }
+
+    /// The thread's last indices are remembered: the same value again, for five metals
+    /// cycled through the four places (each evicted and recomputed in turn).
+    #[test]
+    fn conductor_average_remembers_exactly() {
+        let metals = [(0.18, 3.4), (0.42, 2.35), (1.37, 1.77), (1.35, 7.5), (2.9, 3.0)];
+        let first: Vec<f64> = metals.iter().map(|&(n, k)| conductor_average_rule(n, k)).collect();
+        for _ in 0..3 {
+            for (j, &(n, k)) in metals.iter().enumerate() {
+                assert_eq!(conductor_average(n, k).to_bits(), first[j].to_bits());
+            }
+        }
+        assert!(conductor_average(f64::NAN, 1.0).is_nan());
+        assert!(conductor_average(f64::NAN, 1.0).is_nan());
     }
 }
