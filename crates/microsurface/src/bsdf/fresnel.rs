@@ -719,8 +719,17 @@ mod tests {
     /// cycled through the four places (each evicted and recomputed in turn).
     #[test]
     fn conductor_average_remembers_exactly() {
-        let metals = [(0.18, 3.4), (0.42, 2.35), (1.37, 1.77), (1.35, 7.5), (2.9, 3.0)];
-        let first: Vec<f64> = metals.iter().map(|&(n, k)| conductor_average_rule(n, k)).collect();
+        let metals = [
+            (0.18, 3.4),
+            (0.42, 2.35),
+            (1.37, 1.77),
+            (1.35, 7.5),
+            (2.9, 3.0),
+        ];
+        let first: Vec<f64> = metals
+            .iter()
+            .map(|&(n, k)| conductor_average_rule(n, k))
+            .collect();
         for _ in 0..3 {
             for (j, &(n, k)) in metals.iter().enumerate() {
                 assert_eq!(conductor_average(n, k).to_bits(), first[j].to_bits());

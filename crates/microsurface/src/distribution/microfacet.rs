@@ -730,15 +730,26 @@ struct ExactParams {
 /// α in f64 for the exact twin, after the range check. An f32 α is accepted where it is the
 /// f32 nearest a value in [`crate::ALPHA_MIN`], [`crate::ALPHA_MAX`] (1e-6 has no f32: 1e-6f32
 /// is 1e-6 − 3e-15, below it) and taken at the bound there.
+#[inline(always)]
 pub(crate) fn check<F: Real>(a: F) -> Result<f64, ParamError> {
     let a = a.to_f64();
-    if F::IS_F32 {
-        let (lo, hi) = (crate::ALPHA_MIN, crate::ALPHA_MAX);
-        if a == lo as f32 as f64 || a == hi as f32 as f64 {
-            return Ok(a.clamp(lo, hi));
-        }
+    match crate::error::check_alpha(a) {
+        Ok(a) => Ok(a),
+        // (Out of line: the test in the path cost the family's f32 construction ~15 ns,
+        // 27–38 ns against 40–53, BENCHMARKS.md.)
+        Err(e) => f32_bound::<F>(a, e),
     }
-    crate::error::check_alpha(a)
+}
+
+/// [`check`]'s refusal, unless α is the f32 nearest a bound.
+#[cold]
+#[inline(never)]
+fn f32_bound<F: Real>(a: f64, e: ParamError) -> Result<f64, ParamError> {
+    let (lo, hi) = (crate::ALPHA_MIN, crate::ALPHA_MAX);
+    if F::IS_F32 && (a == lo as f32 as f64 || a == hi as f32 as f64) {
+        return Ok(a.clamp(lo, hi));
+    }
+    Err(e)
 }
 
 impl<F: Real, N: Shape<Data = ()>> Microfacet<F, N> {
