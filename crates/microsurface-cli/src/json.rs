@@ -91,20 +91,32 @@ pub(crate) fn known_fields(obj: &Map<String, Value>, fields: &[&str]) -> Result<
 /// spec or from its own field ("gamma" or "a", [`shape`]), not both.
 pub(crate) fn ndf(obj: &Map<String, Value>) -> Result<(NdfKind, Option<f64>), String> {
     let name = string(obj, "ndf")?;
+    match ndf_name(name)? {
+        (kind, Some(spec_shape)) => {
+            if let Some(key) = ["gamma", "a"].into_iter().find(|k| obj.contains_key(*k)) {
+                return Err(format!(
+                    "field '{key}' given with a shape in 'ndf' ('{}'): give the shape once",
+                    crate::clip(name)
+                ));
+            }
+            Ok((kind, spec_shape))
+        }
+        (kind, None) => Ok((kind, shape(obj, kind)?)),
+    }
+}
+
+/// An NDF name as the JSON lines and the flags give it: with a `:` the library's spec
+/// (`gtr:1.5`: the kind and `Some(shape)`), else a kind alone (`None`: its shape, if any,
+/// comes from its own field or flag).
+fn ndf_name(name: &str) -> Result<(NdfKind, Option<Option<f64>>), String> {
     if name.contains(':') {
         let spec: microsurface::NdfSpec = name.parse().map_err(|e| format!("{e}"))?;
-        if let Some(key) = ["gamma", "a"].into_iter().find(|k| obj.contains_key(*k)) {
-            return Err(format!(
-                "field '{key}' given with a shape in 'ndf' ('{}'): give the shape once",
-                crate::clip(name)
-            ));
-        }
-        return Ok((spec.kind, spec.shape));
+        return Ok((spec.kind, Some(spec.shape)));
     }
     let kind: NdfKind = name
         .parse()
         .map_err(|e: microsurface::ndf::UnknownNdf| e.to_string())?;
-    Ok((kind, shape(obj, kind)?))
+    Ok((kind, None))
 }
 
 /// The request's shape parameter, for the kinds that have one ([`NdfKind::shape_name`]):
@@ -136,17 +148,15 @@ pub(crate) fn ndf_from_flags(
     gamma: Option<f64>,
     a: Option<f64>,
 ) -> Result<(NdfKind, Option<f64>), String> {
-    if ndf.contains(':') {
-        let spec: microsurface::NdfSpec = ndf.parse().map_err(|e| format!("{e}"))?;
-        if gamma.is_some() || a.is_some() {
-            return Err("the shape is given twice (in --ndf and by --gamma/--a)".into());
+    match ndf_name(ndf)? {
+        (kind, Some(spec_shape)) => {
+            if gamma.is_some() || a.is_some() {
+                return Err("the shape is given twice (in --ndf and by --gamma/--a)".into());
+            }
+            Ok((kind, spec_shape))
         }
-        return Ok((spec.kind, spec.shape));
+        (kind, None) => Ok((kind, shape_from_flags(kind, gamma, a)?)),
     }
-    let kind: NdfKind = ndf
-        .parse()
-        .map_err(|e: microsurface::ndf::UnknownNdf| e.to_string())?;
-    Ok((kind, shape_from_flags(kind, gamma, a)?))
 }
 
 /// The shape parameter from a command line's `--gamma` / `--a` for `kind`: required where

@@ -43,20 +43,31 @@ impl Param {
         let np = numpy(py)?;
         // (Real numbers only, as the arguments: "0.3" and complex values raise TypeError
         // rather than being parsed or losing their imaginary part.)
-        let kind: String = np
-            .call_method1("asarray", (x,))
-            .and_then(|a| a.getattr("dtype")?.getattr("kind")?.extract())
+        // (One conversion: the float64 copy below is made from this array when there is one.)
+        let raw = np.call_method1("asarray", (x,)).ok();
+        let kind: String = raw
+            .as_ref()
+            .and_then(|a| {
+                a.getattr("dtype")
+                    .ok()?
+                    .getattr("kind")
+                    .ok()?
+                    .extract()
+                    .ok()
+            })
             .unwrap_or_default();
         if matches!(kind.as_str(), "U" | "S" | "c" | "O" | "V" | "M" | "m") {
             return Err(pyo3::exceptions::PyTypeError::new_err(format!(
                 "{name} must be a real number or an array of real numbers"
             )));
         }
-        let a = np.call_method1("array", (x, "float64")).map_err(|e| {
-            PyValueError::new_err(format!(
-                "{name} must be a number or an array of numbers ({e})"
-            ))
-        })?;
+        let a = np
+            .call_method1("array", (raw.as_ref().unwrap_or(x), "float64"))
+            .map_err(|e| {
+                PyValueError::new_err(format!(
+                    "{name} must be a number or an array of numbers ({e})"
+                ))
+            })?;
         if a.getattr("ndim")?.extract::<usize>()? == 0 {
             return Ok(Param::Num(a.call_method0("item")?.extract()?));
         }

@@ -28,7 +28,7 @@ use microsurface::{
 fn sample_pdf_at_any_length() {
     let unit = [0.6, 0.0, 0.8];
     for kind in NdfKind::ALL {
-        let shape = kind.shape_name().map(|n| if n == "a" { 0.7 } else { 2.5 });
+        let shape = some_shape(kind);
         let m = AnyMicrofacet::<f64>::new(kind, 0.3, 0.3, shape).unwrap();
         let want = m.sample(unit, [0.3, 0.6]);
         for s in [3e299 / 0.6, 5.0, 0.1, 3e-300 / 0.6] {
