@@ -162,18 +162,18 @@ metal::float2 ms_cos_sin_turn(
 ) {
     float k_11 = metal::rint(4.0 * v);
     float r_4 = v - (0.25 * k_11);
-    float x_18 = MS_TAU * r_4;
-    float x2_ = x_18 * x_18;
-    float s_6 = x_18 * (1.0 + (x2_ * (-0.16666667 + (x2_ * (0.008333333 + (x2_ * (-0.0001984127 + (x2_ * 0.0000027557319))))))));
+    float x_17 = MS_TAU * r_4;
+    float x2_ = x_17 * x_17;
+    float s_6 = x_17 * (1.0 + (x2_ * (-0.16666667 + (x2_ * (0.008333333 + (x2_ * (-0.0001984127 + (x2_ * 0.0000027557319))))))));
     float c_13 = 1.0 + (x2_ * (-0.5 + (x2_ * (0.041666668 + (x2_ * (-0.0013888889 + (x2_ * (0.000024801588 + (x2_ * -0.0000002755732)))))))));
-    int q_2 = naga_f2i32(k_11) & 3;
-    if (q_2 == 0) {
+    int q_1 = naga_f2i32(k_11) & 3;
+    if (q_1 == 0) {
         return metal::float2(c_13, s_6);
     } else {
-        if (q_2 == 1) {
+        if (q_1 == 1) {
             return metal::float2(-(s_6), c_13);
         } else {
-            if (q_2 == 2) {
+            if (q_1 == 2) {
                 return metal::float2(-(c_13), -(s_6));
             }
         }
@@ -642,8 +642,8 @@ float ms_fresnel_f82_tint(
     float mu = metal::min(metal::max(cos_i_3, 0.0), 1.0);
     float m_8 = 1.0 - mu;
     float m5_ = (((m_8 * m_8) * m_8) * m_8) * m_8;
-    float a_18 = ((f0_1 + ((1.0 - f0_1) * 0.46266437)) * (1.0 - h)) / 0.05665278;
-    float r_8 = (f0_1 + ((1.0 - f0_1) * m5_)) - (((a_18 * mu) * m5_) * m_8);
+    float a_19 = ((f0_1 + ((1.0 - f0_1) * 0.46266437)) * (1.0 - h)) / 0.05665278;
+    float r_8 = (f0_1 + ((1.0 - f0_1) * m5_)) - (((a_19 * mu) * m5_) * m_8);
     return metal::min(metal::max(r_8, 0.0), 1.0);
 }
 
@@ -691,9 +691,9 @@ float ms_ggx_d(
     if (!((z_6 > 0.0))) {
         return 0.0;
     }
-    float x_19 = wm_2.x / alpha.x;
+    float x_18 = wm_2.x / alpha.x;
     float y_4 = wm_2.y / alpha.y;
-    float t_8 = ((x_19 * x_19) + (y_4 * y_4)) + (z_6 * z_6);
+    float t_8 = ((x_18 * x_18) + (y_4 * y_4)) + (z_6 * z_6);
     return 1.0 / ((((MS_PI * alpha.x) * alpha.y) * t_8) * t_8);
 }
 
@@ -701,10 +701,10 @@ float ms_ggx_lambda(
     metal::float3 w_3,
     metal::float2 alpha_1
 ) {
-    float x_20 = alpha_1.x * w_3.x;
+    float x_19 = alpha_1.x * w_3.x;
     float y_5 = alpha_1.y * w_3.y;
     float z_7 = metal::abs(w_3.z);
-    float t_9 = (x_20 * x_20) + (y_5 * y_5);
+    float t_9 = (x_19 * x_19) + (y_5 * y_5);
     float z2_ = z_7 * z_7;
     float den = 2.0 * (z2_ + (z_7 * metal::sqrt(z2_ + t_9)));
     if (!((den > 0.0))) {
@@ -721,10 +721,10 @@ float ms_ggx_g1_(
     metal::float3 w_4,
     metal::float2 alpha_2
 ) {
-    float x_21 = alpha_2.x * w_4.x;
+    float x_20 = alpha_2.x * w_4.x;
     float y_6 = alpha_2.y * w_4.y;
     float z_8 = metal::abs(w_4.z);
-    float den_1 = z_8 + metal::sqrt((z_8 * z_8) + ((x_21 * x_21) + (y_6 * y_6)));
+    float den_1 = z_8 + metal::sqrt((z_8 * z_8) + ((x_20 * x_20) + (y_6 * y_6)));
     if (!((den_1 > 0.0))) {
         return 0.0;
     }
@@ -800,13 +800,13 @@ metal::float3 ms_ggx_cap_normal_stretched(
     float len
 ) {
     float inv = 1.0 / len;
-    float x_22 = (stretch.x * w_6.x) * inv;
+    float x_21 = (stretch.x * w_6.x) * inv;
     float y_7 = (stretch.y * w_6.y) * inv;
     float z_10 = (stretch.z * w_6.z) * inv;
     metal::float2 _e19 = ms_cos_sin_turn(u.x);
     float above = (1.0 - u.y) * (1.0 + z_10);
-    float sin = metal::sqrt(metal::max(u.y * ((above * (1.0 + z_10)) + ((x_22 * x_22) + (y_7 * y_7))), 0.0));
-    metal::float3 h_3 = metal::float3(stretch.x * ((sin * _e19.x) + x_22), stretch.y * ((sin * _e19.y) + y_7), stretch.z * above);
+    float sin = metal::sqrt(metal::max(u.y * ((above * (1.0 + z_10)) + ((x_21 * x_21) + (y_7 * y_7))), 0.0));
+    metal::float3 h_3 = metal::float3(stretch.x * ((sin * _e19.x) + x_21), stretch.y * ((sin * _e19.y) + y_7), stretch.z * above);
     float n_12 = 1.0 / metal::sqrt(((h_3.x * h_3.x) + (h_3.y * h_3.y)) + (h_3.z * h_3.z));
     return h_3 * n_12;
 }
@@ -922,13 +922,13 @@ MsBoundedCap ms_ggx_bounded_cap(
     if (down) {
         return MsBoundedCap {_e18, _e18.z, 0.0};
     }
-    float a_19 = metal::min(metal::min(alpha_11.x, alpha_11.y), 1.0);
+    float a_20 = metal::min(metal::min(alpha_11.x, alpha_11.y), 1.0);
     float _e28 = v_2.x;
     float _e30 = v_2.x;
     float _e33 = v_2.y;
     float _e35 = v_2.y;
     float s_11 = 1.0 + metal::sqrt((_e28 * _e30) + (_e33 * _e35));
-    float a2_1 = a_19 * a_19;
+    float a2_1 = a_20 * a_20;
     float s2_ = s_11 * s_11;
     float _e44 = v_2.z;
     float _e47 = v_2.z;
@@ -1250,11 +1250,11 @@ float ms_zig_sample(
                     }
                     {
                         float _e60 = ms_source_next(src_1);
-                        float a_20 = -(metal::log(1.0 - _e60)) / r_10;
+                        float a_21 = -(metal::log(1.0 - _e60)) / r_10;
                         float _e66 = ms_source_next(src_1);
                         float b_9 = -(metal::log(1.0 - _e66));
-                        if ((2.0 * b_9) > (a_20 * a_20)) {
-                            return r_10 + a_20;
+                        if ((2.0 * b_9) > (a_21 * a_21)) {
+                            return r_10 + a_21;
                         }
                     }
                 }
@@ -1389,23 +1389,23 @@ float ms_bk_quantile(
 ) {
     float sign = 1.0;
     float ratio = {};
-    float q_3 = 2.0 * metal::min(u_10, 1.0 - u_10);
+    float q_2 = 2.0 * metal::min(u_10, 1.0 - u_10);
     if (u_10 < 0.5) {
         sign = -1.0;
     }
-    if (!((q_3 > 0.0))) {
+    if (!((q_2 > 0.0))) {
         float _e14 = sign;
         return -(_e14) * MS_BK_QUANTILE_EDGE;
     }
-    if (q_3 >= 0.000000029802322) {
-        metal::float2 _e25 = ms_bk_segment(metal::min(q_3, 0.99999994), MS_BK_ERFINV_Q_K0_, MS_BK_ERFINV_Q_K1_);
+    if (q_2 >= 0.000000029802322) {
+        metal::float2 _e25 = ms_bk_segment(metal::min(q_2, 0.99999994), MS_BK_ERFINV_Q_K0_, MS_BK_ERFINV_Q_K1_);
         uint i_7 = 2u * naga_f2u32(_e25.x);
         metal::float4 _e34 = ms_tables[MS_BK_ERFINV_Q_AT + i_7];
         metal::float4 _e41 = ms_tables[(MS_BK_ERFINV_Q_AT + i_7) + 1u];
         float _e43 = ms_bk_poly(_e34, _e41, _e25.y);
         ratio = _e43;
     } else {
-        float w_63 = metal::min(-(metal::log(q_3)) - 0.6931472, 127.99);
+        float w_63 = metal::min(-(metal::log(q_2)) - 0.6931472, 127.99);
         metal::float2 _e52 = ms_bk_segment(w_63, MS_BK_ERFINV_W_K0_, MS_BK_ERFINV_W_K1_);
         uint i_8 = 2u * naga_f2u32(_e52.x);
         metal::float4 _e61 = ms_tables[MS_BK_ERFINV_W_AT + i_8];
@@ -1415,7 +1415,7 @@ float ms_bk_quantile(
     }
     float _e71 = sign;
     float _e74 = ratio;
-    return _e71 * ((1.0 - q_3) * _e74);
+    return _e71 * ((1.0 - q_2) * _e74);
 }
 
 float ms_bk_ln_1m(
@@ -1437,7 +1437,7 @@ float ms_beckmann_d(
     bool local_9 = {};
     float z_11 = wm_6.z;
     float r_13 = 1.0 / (alpha_15.x * alpha_15.y);
-    float x_23 = (wm_6.x * alpha_15.y) * r_13;
+    float x_22 = (wm_6.x * alpha_15.y) * r_13;
     float y_8 = (wm_6.y * alpha_15.x) * r_13;
     float z2_1 = z_11 * z_11;
     if (z_11 > 0.0) {
@@ -1449,7 +1449,7 @@ float ms_beckmann_d(
     if (!(_e24)) {
         return 0.0;
     }
-    float e_3 = ((x_23 * x_23) + (y_8 * y_8)) / z2_1;
+    float e_3 = ((x_22 * x_22) + (y_8 * y_8)) / z2_1;
     if (e_3 <= 80.0) {
         return (metal::exp(-(e_3)) * r_13) / ((MS_PI * z2_1) * z2_1);
     }
@@ -1478,9 +1478,9 @@ float ms_beckmann_lambda(
     device type_7 const& ms_tables,
     constant _mslBufferSizes& _buffer_sizes
 ) {
-    float x_24 = alpha_16.x * w_14.x;
+    float x_23 = alpha_16.x * w_14.x;
     float y_9 = alpha_16.y * w_14.y;
-    float s_12 = metal::sqrt((x_24 * x_24) + (y_9 * y_9));
+    float s_12 = metal::sqrt((x_23 * x_23) + (y_9 * y_9));
     if (!((s_12 > 0.0))) {
         return 0.0;
     }
@@ -1778,9 +1778,9 @@ metal::float3 ms_beckmann_sample_wm(
     float _e53 = sp;
     float _e54 = x_5;
     float _e56 = cp;
-    float q_4 = alpha_23.y * ((_e53 * _e54) + (_e56 * _e27));
-    float n_13 = 1.0 / metal::sqrt(((p_2 * p_2) + (q_4 * q_4)) + 1.0);
-    metal::float3 _e71 = ms_facing(metal::float3(p_2 * n_13, q_4 * n_13, n_13), w_17);
+    float q_3 = alpha_23.y * ((_e53 * _e54) + (_e56 * _e27));
+    float n_13 = 1.0 / metal::sqrt(((p_2 * p_2) + (q_3 * q_3)) + 1.0);
+    metal::float3 _e71 = ms_facing(metal::float3(p_2 * n_13, q_3 * n_13, n_13), w_17);
     return _e71;
 }
 
@@ -1832,12 +1832,12 @@ float ms_dg_lambda_ends(
     float u_15,
     float a_15
 ) {
-    float x_25 = (((0.5 * a_15) * a_15) * ((1.0 - u_15) * (1.0 + u_15))) / (u_15 * u_15);
-    if (x_25 < 0.0000000009313226) {
-        if (x_25 <= 0.0) {
+    float x_24 = (((0.5 * a_15) * a_15) * ((1.0 - u_15) * (1.0 + u_15))) / (u_15 * u_15);
+    if (x_24 < 0.0000000009313226) {
+        if (x_24 <= 0.0) {
             return 0.0;
         }
-        return (0.5 * x_25) * (0.42278433 - metal::log(0.5 * x_25));
+        return (0.5 * x_24) * (0.42278433 - metal::log(0.5 * x_24));
     }
     float sx_2 = (a_15 * metal::sqrt((0.5 * (1.0 - u_15)) * (1.0 + u_15))) / u_15;
     float r_15 = 1.0 / (sx_2 * sx_2);
@@ -1850,46 +1850,30 @@ float ms_double_ggx_lambda(
     device type_7 const& ms_tables,
     constant _mslBufferSizes& _buffer_sizes
 ) {
-    float x_8 = {};
     bool local_14 = {};
     float a_16 = {};
-    bool local_15 = {};
-    float u_42 = metal::abs(w_19.z);
-    if (alpha_25.x == alpha_25.y) {
-        float a_21 = alpha_25.x;
-        x_8 = (((0.5 * a_21) * a_21) * ((1.0 - u_42) * (1.0 + u_42))) / (u_42 * u_42);
-    } else {
-        float sx_3 = alpha_25.x * w_19.x;
-        float sy_2 = alpha_25.y * w_19.y;
-        x_8 = 0.5 * (((sx_3 * sx_3) + (sy_2 * sy_2)) / (w_19.z * w_19.z));
-    }
-    float _e35 = x_8;
-    if (_e35 >= 0.0000000009313226) {
-        float _e40 = x_8;
-        local_14 = _e40 < 65536.0;
+    float u_41 = metal::abs(w_19.z);
+    float sx_3 = alpha_25.x * w_19.x;
+    float sy_2 = alpha_25.y * w_19.y;
+    float x_25 = 0.5 * (((sx_3 * sx_3) + (sy_2 * sy_2)) / (w_19.z * w_19.z));
+    if (x_25 >= 0.0000000009313226) {
+        local_14 = x_25 < 65536.0;
     } else {
         local_14 = false;
     }
-    bool _e44 = local_14;
-    if (_e44) {
-        float _e45 = x_8;
-        float _e46 = ms_dg_lambda_table(_e45, ms_tables, _buffer_sizes);
-        return _e46;
+    bool _e26 = local_14;
+    if (_e26) {
+        float _e27 = ms_dg_lambda_table(x_25, ms_tables, _buffer_sizes);
+        return _e27;
     }
     a_16 = alpha_25.x;
     float s2_1 = (w_19.x * w_19.x) + (w_19.y * w_19.y);
-    if (alpha_25.x != alpha_25.y) {
-        local_15 = s2_1 > 0.0;
-    } else {
-        local_15 = false;
-    }
-    bool _e64 = local_15;
-    if (_e64) {
+    if (s2_1 > 0.0) {
         a_16 = metal::sqrt(((((alpha_25.x * alpha_25.x) * w_19.x) * w_19.x) + (((alpha_25.y * alpha_25.y) * w_19.y) * w_19.y)) / s2_1);
     }
-    float _e82 = a_16;
-    float _e83 = ms_dg_lambda_ends(u_42, _e82);
-    return _e83;
+    float _e56 = a_16;
+    float _e57 = ms_dg_lambda_ends(u_41, _e56);
+    return _e57;
 }
 
 float ms_double_ggx_g1_(
@@ -1912,13 +1896,13 @@ float ms_double_ggx_g2_(
     device type_7 const& ms_tables,
     constant _mslBufferSizes& _buffer_sizes
 ) {
-    bool local_16 = {};
+    bool local_15 = {};
     if (!((wo_11.z == 0.0))) {
-        local_16 = wi_11.z == 0.0;
+        local_15 = wi_11.z == 0.0;
     } else {
-        local_16 = true;
+        local_15 = true;
     }
-    bool _e13 = local_16;
+    bool _e13 = local_15;
     if (_e13) {
         return 0.0;
     }
@@ -1953,23 +1937,23 @@ float ms_double_ggx_d(
     device type_7 const& ms_tables,
     constant _mslBufferSizes& _buffer_sizes
 ) {
-    bool local_17 = {};
+    bool local_16 = {};
     float z_14 = wm_9.z;
     float r_16 = 1.0 / (alpha_28.x * alpha_28.y);
     float x_26 = (wm_9.x * alpha_28.y) * r_16;
     float y_10 = (wm_9.y * alpha_28.x) * r_16;
-    float q_5 = (x_26 * x_26) + (y_10 * y_10);
+    float q_4 = (x_26 * x_26) + (y_10 * y_10);
     if (!((z_14 > 0.0))) {
         return (z_14 != z_14) ? z_14 : 0.0;
     }
     float z2_2 = z_14 * z_14;
-    float t_12 = q_5 / z2_2;
+    float t_12 = q_4 / z2_2;
     if (t_12 >= 0.0000000009313226) {
-        local_17 = t_12 < 1073741800.0;
+        local_16 = t_12 < 1073741800.0;
     } else {
-        local_17 = false;
+        local_16 = false;
     }
-    bool _e34 = local_17;
+    bool _e34 = local_16;
     if (_e34) {
         metal::float2 _e38 = ms_fam_segment(t_12, MS_DG_D_K0_, MS_DG_D_K1_, MS_DG_D_M);
         float _e42 = ms_dg_kernel_row(naga_f2u32(_e38.x), _e38.y, ms_tables, _buffer_sizes);
@@ -1978,7 +1962,7 @@ float ms_double_ggx_d(
     if (t_12 < 0.0000000009313226) {
         return r_16 / ((MS_PI * z2_2) * z2_2);
     }
-    return ((((metal::log(q_5) - (2.0 * metal::log(z_14))) - MS_EULER_GAMMA) - 1.0) * r_16) / ((MS_PI * q_5) * q_5);
+    return ((((metal::log(q_4) - (2.0 * metal::log(z_14))) - MS_EULER_GAMMA) - 1.0) * r_16) / ((MS_PI * q_4) * q_4);
 }
 
 float ms_double_ggx_pdf(
@@ -1989,7 +1973,7 @@ float ms_double_ggx_pdf(
     constant _mslBufferSizes& _buffer_sizes
 ) {
     float c_3 = {};
-    bool local_18 = {};
+    bool local_17 = {};
     float z_15 = metal::abs(w_21.z);
     float _e5 = ms_dot(w_21, wm_10);
     c_3 = _e5;
@@ -1999,11 +1983,11 @@ float ms_double_ggx_pdf(
     }
     float _e12 = c_3;
     if (_e12 > 0.0) {
-        local_18 = z_15 > 0.0;
+        local_17 = z_15 > 0.0;
     } else {
-        local_18 = false;
+        local_17 = false;
     }
-    bool _e20 = local_18;
+    bool _e20 = local_17;
     if (!(_e20)) {
         return 0.0;
     }
@@ -2155,9 +2139,9 @@ float ms_exp_lambda_z(
     if (z_1 < 0.00024414063) {
         return ((0.63661975 / z_1) - 0.5) + (0.15915494 * z_1);
     }
-    float q_6 = z_1 * z_1;
-    if (q_6 < 4096.0) {
-        float _e13 = ms_exp_lambda_q(q_6, ms_tables, _buffer_sizes);
+    float q_5 = z_1 * z_1;
+    if (q_5 < 4096.0) {
+        float _e13 = ms_exp_lambda_q(q_5, ms_tables, _buffer_sizes);
         return _e13;
     }
     if (z_1 < 512.0) {
@@ -2182,46 +2166,30 @@ float ms_exponential_lambda(
     device type_7 const& ms_tables,
     constant _mslBufferSizes& _buffer_sizes
 ) {
-    float q_1 = {};
-    bool local_19 = {};
+    bool local_18 = {};
     float a_17 = {};
-    bool local_20 = {};
-    float u_43 = metal::abs(w_24.z);
-    if (alpha_33.x == alpha_33.y) {
-        float a_22 = alpha_33.x;
-        q_1 = ((4.0 * u_43) * u_43) / ((a_22 * a_22) * ((1.0 - u_43) * (1.0 + u_43)));
+    float u_42 = metal::abs(w_24.z);
+    float sx_5 = alpha_33.x * w_24.x;
+    float sy_4 = alpha_33.y * w_24.y;
+    float q_6 = (4.0 * (w_24.z * w_24.z)) / ((sx_5 * sx_5) + (sy_4 * sy_4));
+    if (q_6 >= 0.000000059604645) {
+        local_18 = q_6 < 4096.0;
     } else {
-        float sx_5 = alpha_33.x * w_24.x;
-        float sy_4 = alpha_33.y * w_24.y;
-        q_1 = (4.0 * (w_24.z * w_24.z)) / ((sx_5 * sx_5) + (sy_4 * sy_4));
+        local_18 = false;
     }
-    float _e35 = q_1;
-    if (_e35 >= 0.000000059604645) {
-        float _e40 = q_1;
-        local_19 = _e40 < 4096.0;
-    } else {
-        local_19 = false;
-    }
-    bool _e44 = local_19;
-    if (_e44) {
-        float _e45 = q_1;
-        float _e46 = ms_exp_lambda_q(_e45, ms_tables, _buffer_sizes);
-        return _e46;
+    bool _e26 = local_18;
+    if (_e26) {
+        float _e27 = ms_exp_lambda_q(q_6, ms_tables, _buffer_sizes);
+        return _e27;
     }
     a_17 = alpha_33.x;
     float s2_4 = (w_24.x * w_24.x) + (w_24.y * w_24.y);
-    if (alpha_33.x != alpha_33.y) {
-        local_20 = s2_4 > 0.0;
-    } else {
-        local_20 = false;
-    }
-    bool _e64 = local_20;
-    if (_e64) {
+    if (s2_4 > 0.0) {
         a_17 = metal::sqrt(((((alpha_33.x * alpha_33.x) * w_24.x) * w_24.x) + (((alpha_33.y * alpha_33.y) * w_24.y) * w_24.y)) / s2_4);
     }
-    float _e83 = a_17;
-    float _e92 = ms_exp_lambda_z((u_43 + u_43) / (_e83 * metal::sqrt((1.0 - u_43) * (1.0 + u_43))), ms_tables, _buffer_sizes);
-    return _e92;
+    float _e57 = a_17;
+    float _e66 = ms_exp_lambda_z((u_42 + u_42) / (_e57 * metal::sqrt((1.0 - u_42) * (1.0 + u_42))), ms_tables, _buffer_sizes);
+    return _e66;
 }
 
 float ms_exponential_g1_(
@@ -2244,13 +2212,13 @@ float ms_exponential_g2_(
     device type_7 const& ms_tables,
     constant _mslBufferSizes& _buffer_sizes
 ) {
-    bool local_21 = {};
+    bool local_19 = {};
     if (!((wo_12.z == 0.0))) {
-        local_21 = wi_12.z == 0.0;
+        local_19 = wi_12.z == 0.0;
     } else {
-        local_21 = true;
+        local_19 = true;
     }
-    bool _e13 = local_21;
+    bool _e13 = local_19;
     if (_e13) {
         return 0.0;
     }
@@ -2263,18 +2231,18 @@ float ms_exponential_d(
     metal::float3 wm_11,
     metal::float2 alpha_36
 ) {
-    bool local_22 = {};
+    bool local_20 = {};
     float z_16 = wm_11.z;
     float r_18 = 1.0 / (alpha_36.x * alpha_36.y);
     float x_27 = (wm_11.x * alpha_36.y) * r_18;
     float y_11 = (wm_11.y * alpha_36.x) * r_18;
     float z2_3 = z_16 * z_16;
     if (z_16 > 0.0) {
-        local_22 = z2_3 > 0.0;
+        local_20 = z2_3 > 0.0;
     } else {
-        local_22 = false;
+        local_20 = false;
     }
-    bool _e24 = local_22;
+    bool _e24 = local_20;
     if (!(_e24)) {
         return (z_16 != z_16) ? z_16 : 0.0;
     }
@@ -2293,7 +2261,7 @@ float ms_exponential_pdf(
     constant _mslBufferSizes& _buffer_sizes
 ) {
     float c_4 = {};
-    bool local_23 = {};
+    bool local_21 = {};
     float z_17 = metal::abs(w_26.z);
     float _e5 = ms_dot(w_26, wm_12);
     c_4 = _e5;
@@ -2303,11 +2271,11 @@ float ms_exponential_pdf(
     }
     float _e12 = c_4;
     if (_e12 > 0.0) {
-        local_23 = z_17 > 0.0;
+        local_21 = z_17 > 0.0;
     } else {
-        local_23 = false;
+        local_21 = false;
     }
-    bool _e20 = local_23;
+    bool _e20 = local_21;
     if (!(_e20)) {
         return 0.0;
     }
@@ -2354,10 +2322,10 @@ metal::float3 ms_exponential_sample_wm(
     metal::uint2 state_5 = {};
     float v0_ = {};
     float v1_ = {};
-    float x_9 = 0.0;
+    float x_8 = 0.0;
     float y_2 = 0.0;
     int n_4 = 0;
-    bool local_24 = {};
+    bool local_22 = {};
     metal::float3 _e3 = ms_unit(w_in_4);
     w_27 = _e3;
     float _e6 = w_27.z;
@@ -2419,16 +2387,16 @@ metal::float3 ms_exponential_sample_wm(
                 float _e85 = v0_;
                 float turn = _e85 * inv_p_1;
                 metal::float2 _e87 = ms_cos_sin_turn(turn);
-                x_9 = r_20 * _e87.x;
+                x_8 = r_20 * _e87.x;
                 y_2 = r_20 * _e87.y;
                 if (!((metal::abs(turn - 0.5) >= 0.25))) {
                     float _e100 = ms_stream_next(state_5);
-                    float _e102 = x_9;
-                    local_24 = (_e100 * e_7) <= (e_7 + (h_7 * _e102));
+                    float _e102 = x_8;
+                    local_22 = (_e100 * e_7) <= (e_7 + (h_7 * _e102));
                 } else {
-                    local_24 = true;
+                    local_22 = true;
                 }
-                bool _e107 = local_24;
+                bool _e107 = local_22;
                 if (_e107) {
                     break;
                 }
@@ -2438,19 +2406,19 @@ metal::float3 ms_exponential_sample_wm(
                 float one_plus = 2.0 * (d_12 * inv_g);
                 float _e118 = v0_;
                 float one_minus = (2.0 * (1.0 - _e118)) * (total * inv_g);
-                x_9 = r_21 * metal::sqrt(metal::max(one_minus * one_plus, 0.0));
+                x_8 = r_21 * metal::sqrt(metal::max(one_minus * one_plus, 0.0));
                 y_2 = r_21 * (one_plus - 1.0);
                 break;
             }
         }
     }
     float _e137 = cp_1;
-    float _e138 = x_9;
+    float _e138 = x_8;
     float _e140 = sp_1;
     float _e141 = y_2;
     float p_4 = alpha_39.x * ((_e137 * _e138) - (_e140 * _e141));
     float _e146 = sp_1;
-    float _e147 = x_9;
+    float _e147 = x_8;
     float _e149 = cp_1;
     float _e150 = y_2;
     float q_7 = alpha_39.y * ((_e146 * _e147) + (_e149 * _e150));
@@ -2479,15 +2447,15 @@ float ms_shape_lambda_z(
     device type_7 const& ms_tables,
     constant _mslBufferSizes& _buffer_sizes
 ) {
-    bool local_25 = {};
+    bool local_23 = {};
     metal::float4 head_1 = ms_tables[table];
     int k1_2 = naga_f2i32(head_1.y);
     if (z_2 >= 0.000000059604645) {
-        local_25 = z_2 < metal::exp2(head_1.y);
+        local_23 = z_2 < metal::exp2(head_1.y);
     } else {
-        local_25 = false;
+        local_23 = false;
     }
-    bool _e15 = local_25;
+    bool _e15 = local_23;
     if (_e15) {
         metal::float2 _e18 = ms_fam_segment(z_2, MS_SHAPE_K0_, k1_2, MS_SHAPE_M);
         uint i_10 = (table + MS_SHAPE_HEADER) + (2u * naga_f2u32(_e18.x));
@@ -2520,18 +2488,18 @@ float ms_shape_lambda(
     device type_7 const& ms_tables,
     constant _mslBufferSizes& _buffer_sizes
 ) {
-    bool local_26 = {};
+    bool local_24 = {};
     float sx_7 = alpha_41.x * w_29.x;
     float sy_6 = alpha_41.y * w_29.y;
     float h_8 = metal::sqrt((sx_7 * sx_7) + (sy_6 * sy_6));
     float z_18 = metal::abs(w_29.z);
     if (!((h_8 > 0.0))) {
         if (h_8 == 0.0) {
-            local_26 = z_18 > 0.0;
+            local_24 = z_18 > 0.0;
         } else {
-            local_26 = false;
+            local_24 = false;
         }
-        bool _e25 = local_26;
+        bool _e25 = local_24;
         return _e25 ? 0.0 : h_8;
     }
     if (z_18 == 0.0) {
@@ -2635,11 +2603,11 @@ metal::float4 ms_beckmann_sample_stream_above(
     float h_1 = 0.0;
     float cp_2 = 1.0;
     float sp_2 = 0.0;
-    float x_10 = 0.0;
+    float x_9 = 0.0;
     int n_6 = 0;
+    bool local_25 = {};
+    bool local_26 = {};
     bool local_27 = {};
-    bool local_28 = {};
-    bool local_29 = {};
     float sx_8 = alpha_42.x * v_8.x;
     float sy_7 = alpha_42.y * v_8.y;
     float big = metal::max(metal::abs(sx_8), metal::abs(sy_7));
@@ -2652,16 +2620,16 @@ metal::float4 ms_beckmann_sample_stream_above(
     if (_e29 == 0.0) {
         float _e32 = ms_source_next(src_10);
         float _e33 = ms_zig_normal(_e32, src_10, ms_tables, _buffer_sizes);
-        x_10 = _e33 * 0.70710677;
+        x_9 = _e33 * 0.70710677;
     } else {
         float _e36 = h_1;
         cp_2 = sx_8 / _e36;
         float _e38 = h_1;
         sp_2 = sy_7 / _e38;
         float _e41 = h_1;
-        float a_23 = v_8.z / _e41;
-        float p_ray = 0.5 / (0.5 + (a_23 * MS_SQRT_PI));
-        x_10 = as_type<float>(2143289344u);
+        float a_22 = v_8.z / _e41;
+        float p_ray = 0.5 / (0.5 + (a_22 * MS_SQRT_PI));
+        x_9 = as_type<float>(2143289344u);
         uint2 loop_bound_6 = uint2(4294967295u);
         bool loop_init_6 = true;
         while(true) {
@@ -2681,26 +2649,26 @@ metal::float4 ms_beckmann_sample_stream_above(
                 float _e56 = ms_source_next(src_10);
                 if (_e56 < p_ray) {
                     float _e58 = ms_source_next_positive(src_10);
-                    x_10 = metal::sqrt(-(metal::log(_e58)));
+                    x_9 = metal::sqrt(-(metal::log(_e58)));
                     break;
                 }
                 float _e66 = ms_zig_normal((_e56 - p_ray) / (1.0 - p_ray), src_10, ms_tables, _buffer_sizes);
                 float c_19 = _e66 * 0.70710677;
                 if (!((c_19 >= 0.0))) {
-                    if (c_19 > -(a_23)) {
+                    if (c_19 > -(a_22)) {
                         float _e78 = ms_source_next(src_10);
-                        local_28 = (_e78 * a_23) < (c_19 + a_23);
+                        local_26 = (_e78 * a_22) < (c_19 + a_22);
                     } else {
-                        local_28 = false;
+                        local_26 = false;
                     }
-                    bool _e83 = local_28;
-                    local_27 = _e83;
+                    bool _e83 = local_26;
+                    local_25 = _e83;
                 } else {
-                    local_27 = true;
+                    local_25 = true;
                 }
-                bool _e85 = local_27;
+                bool _e85 = local_25;
                 if (_e85) {
-                    x_10 = c_19;
+                    x_9 = c_19;
                     break;
                 }
             }
@@ -2710,21 +2678,21 @@ metal::float4 ms_beckmann_sample_stream_above(
     float _e90 = ms_zig_normal(_e89, src_10, ms_tables, _buffer_sizes);
     float y_12 = _e90 * 0.70710677;
     float _e94 = cp_2;
-    float _e95 = x_10;
+    float _e95 = x_9;
     float _e97 = sp_2;
     float p_6 = alpha_42.x * ((_e94 * _e95) - (_e97 * y_12));
     float _e102 = sp_2;
-    float _e103 = x_10;
+    float _e103 = x_9;
     float _e105 = cp_2;
     float q_8 = alpha_42.y * ((_e102 * _e103) + (_e105 * y_12));
     metal::float3 _e111 = ms_unit_normal(metal::float3(p_6, q_8, 1.0));
     if (_e111.z > 0.0) {
         float _e117 = ms_dot(_e111, v_8);
-        local_29 = _e117 > 0.0;
+        local_27 = _e117 > 0.0;
     } else {
-        local_29 = false;
+        local_27 = false;
     }
-    bool ok = local_29;
+    bool ok = local_27;
     return metal::float4(_e111, ok ? 1.0 : 0.0);
 }
 
@@ -2765,7 +2733,7 @@ float ms_posterior_ln_beta(
 ) {
     int n_7 = 0;
     float keep = {};
-    bool local_30 = {};
+    bool local_28 = {};
     float p_prior = z_3 / (z_3 + ((0.2820948 * h_2) * mean_beta));
     uint2 loop_bound_7 = uint2(4294967295u);
     bool loop_init_7 = true;
@@ -2789,15 +2757,15 @@ float ms_posterior_ln_beta(
             float hb = h_2 * metal::exp(_e18);
             keep = 1.0;
             if (hb > 0.0) {
-                local_30 = hb <= 340282350000000000000000000000000000000.0;
+                local_28 = hb <= 340282350000000000000000000000000000000.0;
             } else {
-                local_30 = false;
+                local_28 = false;
             }
-            bool _e30 = local_30;
+            bool _e30 = local_28;
             if (_e30) {
-                float a_24 = z_3 / hb;
-                float _e37 = ms_bk_erfc_ratio(a_24, ms_tables, _buffer_sizes);
-                keep = (z_3 + (((0.2820948 * hb) * metal::exp(-(a_24) * a_24)) * _e37)) / (z_3 + (0.2820948 * hb));
+                float a_23 = z_3 / hb;
+                float _e37 = ms_bk_erfc_ratio(a_23, ms_tables, _buffer_sizes);
+                keep = (z_3 + (((0.2820948 * hb) * metal::exp(-(a_23) * a_23)) * _e37)) / (z_3 + (0.2820948 * hb));
             }
             float _e43 = ms_source_next(src_12);
             float _e44 = keep;
@@ -2898,7 +2866,7 @@ float ms_mixture_pdf(
     constant _mslBufferSizes& _buffer_sizes
 ) {
     float c_5 = {};
-    bool local_31 = {};
+    bool local_29 = {};
     float z_19 = metal::abs(w_33.z);
     float _e7 = ms_dot(w_33, wm_13);
     c_5 = _e7;
@@ -2908,11 +2876,11 @@ float ms_mixture_pdf(
     }
     float _e14 = c_5;
     if (_e14 > 0.0) {
-        local_31 = z_19 > 0.0;
+        local_29 = z_19 > 0.0;
     } else {
-        local_31 = false;
+        local_29 = false;
     }
-    bool _e22 = local_31;
+    bool _e22 = local_29;
     if (!(_e22)) {
         return 0.0;
     }
@@ -3029,12 +2997,12 @@ float ms_ln_1p(
 }
 
 float ms_expm1_(
-    float x_11
+    float x_10
 ) {
-    if (metal::abs(x_11) < 0.5) {
-        return x_11 * (1.0 + (x_11 * (0.5 + (x_11 * (0.16666667 + (x_11 * (0.041666668 + (x_11 * (0.008333334 + (x_11 * (0.0013888889 + (x_11 * (0.0001984127 + (x_11 * (0.000024801588 + (x_11 * 0.0000027557319))))))))))))))));
+    if (metal::abs(x_10) < 0.5) {
+        return x_10 * (1.0 + (x_10 * (0.5 + (x_10 * (0.16666667 + (x_10 * (0.041666668 + (x_10 * (0.008333334 + (x_10 * (0.0013888889 + (x_10 * (0.0001984127 + (x_10 * (0.000024801588 + (x_10 * 0.0000027557319))))))))))))))));
     }
-    return metal::exp(x_11) - 1.0;
+    return metal::exp(x_10) - 1.0;
 }
 
 float ms_student_t_d(
@@ -3110,7 +3078,7 @@ float ms_student_t_pdf(
     constant _mslBufferSizes& _buffer_sizes
 ) {
     float c_6 = {};
-    bool local_32 = {};
+    bool local_30 = {};
     float z_21 = metal::abs(w_36.z);
     float _e6 = ms_dot(w_36, wm_17);
     c_6 = _e6;
@@ -3120,11 +3088,11 @@ float ms_student_t_pdf(
     }
     float _e13 = c_6;
     if (_e13 > 0.0) {
-        local_32 = z_21 > 0.0;
+        local_30 = z_21 > 0.0;
     } else {
-        local_32 = false;
+        local_30 = false;
     }
-    bool _e21 = local_32;
+    bool _e21 = local_30;
     if (!(_e21)) {
         return 0.0;
     }
@@ -3209,13 +3177,13 @@ float ms_gtr_ln_1p(
 float ms_gtr_ln(
     float v_10
 ) {
-    bool local_33 = {};
+    bool local_31 = {};
     if (v_10 >= 0.5) {
-        local_33 = v_10 <= 2.0;
+        local_31 = v_10 <= 2.0;
     } else {
-        local_33 = false;
+        local_31 = false;
     }
-    bool _e8 = local_33;
+    bool _e8 = local_31;
     if (_e8) {
         float _e11 = ms_gtr_ln_1p(v_10 - 1.0);
         return _e11;
@@ -3224,23 +3192,23 @@ float ms_gtr_ln(
 }
 
 float ms_gtr_ln_1p_over_x(
+    float x_11
+) {
+    if (x_11 == 0.0) {
+        return 1.0;
+    }
+    float _e4 = ms_gtr_ln_1p(x_11);
+    return _e4 / x_11;
+}
+
+float ms_gtr_expm1_over_x(
     float x_12
 ) {
     if (x_12 == 0.0) {
         return 1.0;
     }
-    float _e4 = ms_gtr_ln_1p(x_12);
+    float _e4 = ms_expm1_(x_12);
     return _e4 / x_12;
-}
-
-float ms_gtr_expm1_over_x(
-    float x_13
-) {
-    if (x_13 == 0.0) {
-        return 1.0;
-    }
-    float _e4 = ms_expm1_(x_13);
-    return _e4 / x_13;
 }
 
 float ms_gtr_d(
@@ -3250,7 +3218,7 @@ float ms_gtr_d(
     device type_7 const& ms_tables,
     constant _mslBufferSizes& _buffer_sizes
 ) {
-    float x_14 = {};
+    float x_13 = {};
     metal::float4 head_2 = ms_tables[table_17];
     if (head_2.z < 0.5) {
         float _e9 = ms_ggx_d(wm_19, alpha_59);
@@ -3260,78 +3228,81 @@ float ms_gtr_d(
     if (!((z_22 > 0.0))) {
         return (z_22 != z_22) ? z_22 : 0.0;
     }
-    float a_25 = head_2.y;
-    x_14 = a_25 * a_25;
+    float a_24 = head_2.y;
+    x_13 = a_24 * a_24;
     if (z_22 <= 1.0) {
-        float az = a_25 * z_22;
-        x_14 = ((wm_19.x * wm_19.x) + (wm_19.y * wm_19.y)) + (az * az);
+        float az = a_24 * z_22;
+        x_13 = ((wm_19.x * wm_19.x) + (wm_19.y * wm_19.y)) + (az * az);
     }
     metal::float4 norm_1 = ms_tables[table_17 + 1u];
     if (head_2.x == 1.0) {
-        float _e41 = x_14;
+        float _e41 = x_13;
         return norm_1.y / _e41;
     }
-    float _e45 = x_14;
+    float _e45 = x_13;
     return metal::exp(norm_1.x - (head_2.x * metal::log(_e45)));
 }
 
-float ms_gtr_lambda_ends(
+float ms_gtr_lambda_cot_ends(
     uint table_18,
-    float u_in,
+    float a_18,
     device type_7 const& ms_tables,
     constant _mslBufferSizes& _buffer_sizes
 ) {
-    if (u_in != u_in) {
-        return u_in;
+    if (a_18 != a_18) {
+        return a_18;
     }
-    float u_44 = metal::min(metal::abs(u_in), 1.0);
-    if (u_44 == 0.0) {
-        float _e8 = ms_inf();
-        return _e8;
-    }
-    float q_10 = (1.0 - u_44) * (1.0 + u_44);
-    float a_26 = u_44 / metal::sqrt(q_10);
-    if (a_26 < 1.0) {
+    if (a_18 < 1.0) {
         metal::float4 m_10 = ms_tables[table_18 + 1u];
-        return ((m_10.z / a_26) - 0.5) + (m_10.w * a_26);
+        return ((m_10.z / a_18) - 0.5) + (m_10.w * a_18);
     }
     metal::float4 k_13 = ms_tables[table_18 + 2u];
-    float r2_1 = q_10 / (u_44 * u_44);
+    float r2_1 = 1.0 / (a_18 * a_18);
     return (k_13.x + (k_13.y * r2_1)) * r2_1;
 }
 
-float ms_gtr_lambda_u(
+float ms_gtr_lambda(
+    metal::float3 w_38,
+    metal::float2 alpha_60,
     uint table_19,
-    float u_26,
     device type_7 const& ms_tables,
     constant _mslBufferSizes& _buffer_sizes
 ) {
     float t_3 = {};
     float off = {};
     float lo_2 = {};
+    bool _e3 = ms_gtr_is_ggx(table_19, ms_tables, _buffer_sizes);
+    if (_e3) {
+        float _e4 = ms_ggx_lambda(w_38, alpha_60);
+        return _e4;
+    }
     metal::float4 head_3 = ms_tables[table_19];
     metal::float4 lay = ms_tables[table_19 + 2u];
     metal::float4 lim = ms_tables[table_19 + 3u];
-    t_3 = u_26;
+    float z_23 = metal::abs(w_38.z);
+    float s2_5 = (w_38.x * w_38.x) + (w_38.y * w_38.y);
+    float n_14 = metal::sqrt(s2_5 + (z_23 * z_23));
+    float u_43 = z_23 / n_14;
+    t_3 = u_43;
     off = lay.z;
     lo_2 = lim.x;
-    if (u_26 >= 0.5) {
-        t_3 = 1.0 - u_26;
+    if (u_43 >= 0.5) {
+        t_3 = s2_5 / (n_14 * (n_14 + z_23));
         off = lay.w;
         lo_2 = lim.y;
     }
-    float _e26 = t_3;
-    float _e27 = lo_2;
-    if (_e26 >= _e27) {
-        float _e29 = t_3;
-        uint bits_3 = as_type<uint>(_e29);
-        float _e34 = off;
-        uint row = static_cast<uint>(metal::clamp(as_type<int>(as_type<uint>(static_cast<int>(bits_3 >> 18u)) - as_type<uint>(naga_f2i32(_e34))), 0, as_type<int>(as_type<uint>(naga_f2i32(lim.z)) - as_type<uint>(1))));
+    float _e43 = t_3;
+    float _e44 = lo_2;
+    if (_e43 >= _e44) {
+        float _e46 = t_3;
+        uint bits_3 = as_type<uint>(_e46);
+        float _e51 = off;
+        uint row = static_cast<uint>(metal::clamp(as_type<int>(as_type<uint>(static_cast<int>(bits_3 >> 18u)) - as_type<uint>(naga_f2i32(_e51))), 0, as_type<int>(as_type<uint>(naga_f2i32(lim.z)) - as_type<uint>(1))));
         float s_15 = as_type<float>(1073741824u | ((bits_3 << 14u) >> 9u)) - 3.0;
         if (head_3.z < 1.5) {
-            metal::float4 _e61 = ms_tables[(table_19 + MS_GTR_HEADER) + row];
-            float _e62 = ms_fam_cubic(_e61, s_15);
-            return _e62;
+            metal::float4 _e78 = ms_tables[(table_19 + MS_GTR_HEADER) + row];
+            float _e79 = ms_fam_cubic(_e78, s_15);
+            return _e79;
         }
         uint i_13 = (table_19 + MS_GTR_HEADER) + (2u * row);
         metal::float4 c_20 = ms_tables[i_13];
@@ -3342,34 +3313,18 @@ float ms_gtr_lambda_u(
         }
         return metal::exp(p_7);
     }
-    float _e93 = ms_gtr_lambda_ends(table_19, u_26, ms_tables, _buffer_sizes);
-    return _e93;
-}
-
-float ms_gtr_lambda(
-    metal::float3 w_38,
-    metal::float2 alpha_60,
-    uint table_20,
-    device type_7 const& ms_tables,
-    constant _mslBufferSizes& _buffer_sizes
-) {
-    bool _e3 = ms_gtr_is_ggx(table_20, ms_tables, _buffer_sizes);
-    if (_e3) {
-        float _e4 = ms_ggx_lambda(w_38, alpha_60);
-        return _e4;
-    }
-    float _e7 = ms_gtr_lambda_u(table_20, metal::abs(w_38.z), ms_tables, _buffer_sizes);
-    return _e7;
+    float _e112 = ms_gtr_lambda_cot_ends(table_19, z_23 / metal::sqrt(s2_5), ms_tables, _buffer_sizes);
+    return _e112;
 }
 
 float ms_gtr_g1_(
     metal::float3 w_39,
     metal::float2 alpha_61,
-    uint table_21,
+    uint table_20,
     device type_7 const& ms_tables,
     constant _mslBufferSizes& _buffer_sizes
 ) {
-    float _e3 = ms_gtr_lambda(w_39, alpha_61, table_21, ms_tables, _buffer_sizes);
+    float _e3 = ms_gtr_lambda(w_39, alpha_61, table_20, ms_tables, _buffer_sizes);
     return 1.0 / (1.0 + _e3);
 }
 
@@ -3377,12 +3332,12 @@ float ms_gtr_g2_(
     metal::float3 wo_15,
     metal::float3 wi_15,
     metal::float2 alpha_62,
-    uint table_22,
+    uint table_21,
     device type_7 const& ms_tables,
     constant _mslBufferSizes& _buffer_sizes
 ) {
-    float _e4 = ms_gtr_lambda(wo_15, alpha_62, table_22, ms_tables, _buffer_sizes);
-    float _e5 = ms_gtr_lambda(wi_15, alpha_62, table_22, ms_tables, _buffer_sizes);
+    float _e4 = ms_gtr_lambda(wo_15, alpha_62, table_21, ms_tables, _buffer_sizes);
+    float _e5 = ms_gtr_lambda(wi_15, alpha_62, table_21, ms_tables, _buffer_sizes);
     return 1.0 / (1.0 + (_e4 + _e5));
 }
 
@@ -3390,18 +3345,18 @@ float ms_gtr_pdf(
     metal::float3 w_40,
     metal::float3 wm_20,
     metal::float2 alpha_63,
-    uint table_23,
+    uint table_22,
     device type_7 const& ms_tables,
     constant _mslBufferSizes& _buffer_sizes
 ) {
     float c_7 = {};
-    bool local_34 = {};
-    bool _e4 = ms_gtr_is_ggx(table_23, ms_tables, _buffer_sizes);
+    bool local_32 = {};
+    bool _e4 = ms_gtr_is_ggx(table_22, ms_tables, _buffer_sizes);
     if (_e4) {
         float _e5 = ms_ggx_pdf(w_40, wm_20, alpha_63);
         return _e5;
     }
-    float z_23 = metal::abs(w_40.z);
+    float z_24 = metal::abs(w_40.z);
     float _e8 = ms_dot(w_40, wm_20);
     c_7 = _e8;
     if (w_40.z < 0.0) {
@@ -3410,34 +3365,34 @@ float ms_gtr_pdf(
     }
     float _e15 = c_7;
     if (_e15 > 0.0) {
-        local_34 = z_23 > 0.0;
+        local_32 = z_24 > 0.0;
     } else {
-        local_34 = false;
+        local_32 = false;
     }
-    bool _e23 = local_34;
+    bool _e23 = local_32;
     if (!(_e23)) {
         float _e25 = c_7;
         float _e26 = c_7;
         float _e27 = c_7;
         return (_e26 != _e27) ? _e25 : 0.0;
     }
-    float _e31 = ms_gtr_g1_(w_40, alpha_63, table_23, ms_tables, _buffer_sizes);
+    float _e31 = ms_gtr_g1_(w_40, alpha_63, table_22, ms_tables, _buffer_sizes);
     float _e32 = c_7;
-    float _e34 = ms_gtr_d(wm_20, alpha_63, table_23, ms_tables, _buffer_sizes);
-    return ((_e31 * _e32) * _e34) / z_23;
+    float _e34 = ms_gtr_d(wm_20, alpha_63, table_22, ms_tables, _buffer_sizes);
+    return ((_e31 * _e32) * _e34) / z_24;
 }
 
 float ms_gtr_pdf_dcos(
     metal::float3 wm_21,
     metal::float2 alpha_64,
-    uint table_24,
+    uint table_23,
     device type_7 const& ms_tables,
     constant _mslBufferSizes& _buffer_sizes
 ) {
     if (!((wm_21.z > 0.0))) {
         return 0.0;
     }
-    float _e8 = ms_gtr_d(wm_21, alpha_64, table_24, ms_tables, _buffer_sizes);
+    float _e8 = ms_gtr_d(wm_21, alpha_64, table_23, ms_tables, _buffer_sizes);
     return _e8 * wm_21.z;
 }
 
@@ -3468,14 +3423,14 @@ float ms_gtr_ln_pos_sum(
 }
 
 float ms_gtr_tan2_(
-    uint table_25,
+    uint table_24,
     float xi_1,
     device type_7 const& ms_tables,
     constant _mslBufferSizes& _buffer_sizes
 ) {
-    metal::float4 b0_1 = ms_tables[table_25 + 4u];
-    metal::float4 b1_1 = ms_tables[table_25 + 5u];
-    metal::float4 b2_1 = ms_tables[table_25 + 6u];
+    metal::float4 b0_1 = ms_tables[table_24 + 4u];
+    metal::float4 b1_1 = ms_tables[table_24 + 5u];
+    metal::float4 b2_1 = ms_tables[table_24 + 6u];
     float l = b0_1.x;
     float k_14 = b0_1.y;
     float kl = b0_1.z;
@@ -3502,19 +3457,19 @@ float ms_gtr_tan2_(
 
 MsSample ms_gtr_sample_dcos(
     metal::float2 alpha_65,
-    metal::float2 u_27,
-    uint table_26,
+    metal::float2 u_26,
+    uint table_25,
     device type_7 const& ms_tables,
     constant _mslBufferSizes& _buffer_sizes
 ) {
     float r = {};
     metal::float3 v_11 = {};
-    bool _e3 = ms_gtr_is_ggx(table_26, ms_tables, _buffer_sizes);
+    bool _e3 = ms_gtr_is_ggx(table_25, ms_tables, _buffer_sizes);
     if (_e3) {
-        MsSample _e4 = ms_ggx_sample_dcos(alpha_65, u_27);
+        MsSample _e4 = ms_ggx_sample_dcos(alpha_65, u_26);
         return _e4;
     }
-    float xi_2 = u_27.x;
+    float xi_2 = u_26.x;
     r = xi_2;
     if (xi_2 <= 0.0) {
         r = 0.0;
@@ -3524,12 +3479,12 @@ MsSample ms_gtr_sample_dcos(
             r = _e12;
         } else {
             if (xi_2 == xi_2) {
-                float _e14 = ms_gtr_tan2_(table_26, xi_2, ms_tables, _buffer_sizes);
+                float _e14 = ms_gtr_tan2_(table_25, xi_2, ms_tables, _buffer_sizes);
                 r = metal::sqrt(_e14);
             }
         }
     }
-    metal::float2 _e17 = ms_cos_sin_turn(u_27.y);
+    metal::float2 _e17 = ms_cos_sin_turn(u_26.y);
     float _e19 = r;
     if (_e19 > 1.0) {
         float _e24 = r;
@@ -3541,7 +3496,7 @@ MsSample ms_gtr_sample_dcos(
     }
     metal::float3 _e36 = v_11;
     metal::float3 _e37 = ms_unit_normal(_e36);
-    float _e38 = ms_gtr_pdf_dcos(_e37, alpha_65, table_26, ms_tables, _buffer_sizes);
+    float _e38 = ms_gtr_pdf_dcos(_e37, alpha_65, table_25, ms_tables, _buffer_sizes);
     return MsSample {_e37, _e38};
 }
 
@@ -3550,10 +3505,10 @@ float ms_gtr_phi(
     float gamma,
     float a2_,
     float t_4,
-    float x_15
+    float x_14
 ) {
-    float _e8 = ms_gtr_ln_1p(x_15);
-    return ((k_8 * t_4) + ((gamma - 2.0) * _e8)) - (gamma * metal::log(a2_ + x_15));
+    float _e8 = ms_gtr_ln_1p(x_14);
+    return ((k_8 * t_4) + ((gamma - 2.0) * _e8)) - (gamma * metal::log(a2_ + x_14));
 }
 
 metal::float2 ms_gtr_column(
@@ -3562,23 +3517,23 @@ metal::float2 ms_gtr_column(
 ) {
     uint i_2 = 0u;
     float frac = {};
-    bool local_35 = {};
-    bool local_36 = {};
+    bool local_33 = {};
+    bool local_34 = {};
     uint b_10 = as_type<uint>(v_12);
     uint e_9 = (b_10 >> 23u) & 255u;
     frac = v_12 * static_cast<float>(n_8);
     if (e_9 > 0u) {
-        local_35 = e_9 < 255u;
+        local_33 = e_9 < 255u;
     } else {
-        local_35 = false;
+        local_33 = false;
     }
-    bool _e19 = local_35;
+    bool _e19 = local_33;
     if (_e19) {
-        local_36 = (150u - e_9) < 64u;
+        local_34 = (150u - e_9) < 64u;
     } else {
-        local_36 = false;
+        local_34 = false;
     }
-    bool _e27 = local_36;
+    bool _e27 = local_34;
     if (_e27) {
         uint shift = 150u - e_9;
         metal::uint2 _e34 = ms_u32_mul_wide((b_10 & 8388607u) | 8388608u, n_8);
@@ -3606,7 +3561,7 @@ metal::float2 ms_gtr_column(
 }
 
 metal::float2 ms_gtr_radius(
-    uint table_27,
+    uint table_26,
     uint at_1,
     uint n_9,
     float k_9,
@@ -3633,7 +3588,7 @@ metal::float2 ms_gtr_radius(
     metal::float4 pa = ms_tables[at_1 + (2u * _e38)];
     uint _e45 = j_1;
     metal::float4 pb = ms_tables[(at_1 + (2u * _e45)) + 1u];
-    metal::float4 head_4 = ms_tables[table_27];
+    metal::float4 head_4 = ms_tables[table_26];
     float a2_2 = head_4.y * head_4.y;
     if (pb.w < 0.5) {
         float _e62 = v2_;
@@ -3662,8 +3617,8 @@ metal::float2 ms_gtr_radius(
 
 metal::float3 ms_gtr_sample_wm(
     metal::float3 w_41,
-    metal::float2 u_28,
-    uint table_28,
+    metal::float2 u_27,
+    uint table_27,
     device type_7 const& ms_tables,
     constant _mslBufferSizes& _buffer_sizes
 ) {
@@ -3679,8 +3634,8 @@ metal::float3 ms_gtr_sample_wm(
     int n_10 = 0;
     metal::float2 rr = {};
     metal::float3 v_14 = {};
-    metal::float4 head_5 = ms_tables[table_28];
-    metal::float4 env = ms_tables[table_28 + 7u];
+    metal::float4 head_5 = ms_tables[table_27];
+    metal::float4 env = ms_tables[table_27 + 7u];
     if (w_41.z < 0.0) {
         sign_2 = -1.0;
     }
@@ -3702,10 +3657,10 @@ metal::float3 ms_gtr_sample_wm(
     float total_1 = e_10 + g_2;
     float inv_p_2 = metal::min(total_1 / e_10, MS_F32_MAX);
     float inv_g_1 = metal::min(1.0 / g_2, MS_F32_MAX);
-    metal::uint2 _e55 = ms_stream_new(u_28);
+    metal::uint2 _e55 = ms_stream_new(u_27);
     state_6 = _e55;
-    v0_1 = u_28.x;
-    v1_1 = u_28.y;
+    v0_1 = u_27.x;
+    v1_1 = u_27.y;
     uint2 loop_bound_8 = uint2(4294967295u);
     bool loop_init_8 = true;
     while(true) {
@@ -3737,11 +3692,11 @@ metal::float3 ms_gtr_sample_wm(
             rr = metal::float2 {};
             if (first) {
                 float _e95 = v1_1;
-                metal::float2 _e96 = ms_gtr_radius(table_28, table_28 + naga_f2u32(env.x), naga_f2u32(env.y), 1.0, _e95, _e86, ms_tables, _buffer_sizes);
+                metal::float2 _e96 = ms_gtr_radius(table_27, table_27 + naga_f2u32(env.x), naga_f2u32(env.y), 1.0, _e95, _e86, ms_tables, _buffer_sizes);
                 rr = _e96;
             } else {
                 float _e103 = v1_1;
-                metal::float2 _e104 = ms_gtr_radius(table_28, table_28 + naga_f2u32(env.z), naga_f2u32(env.w), 1.5, _e103, _e86, ms_tables, _buffer_sizes);
+                metal::float2 _e104 = ms_gtr_radius(table_27, table_27 + naga_f2u32(env.z), naga_f2u32(env.w), 1.5, _e103, _e86, ms_tables, _buffer_sizes);
                 rr = _e104;
             }
             float _e106 = rr.y;
@@ -3786,14 +3741,14 @@ metal::float3 ms_gtr_sample_wm(
     float _e165 = dx;
     float _e167 = cp_3;
     float _e168 = dy;
-    float q_11 = (_e164 * _e165) + (_e167 * _e168);
+    float q_10 = (_e164 * _e165) + (_e167 * _e168);
     float _e171 = radius;
     float _e173 = radius;
-    v_14 = metal::float3(_e171 * p_8, _e173 * q_11, 1.0);
+    v_14 = metal::float3(_e171 * p_8, _e173 * q_10, 1.0);
     float _e178 = radius;
     if (_e178 > 1.0) {
         float _e181 = radius;
-        v_14 = metal::float3(p_8, q_11, 1.0 / _e181);
+        v_14 = metal::float3(p_8, q_10, 1.0 / _e181);
     }
     metal::float3 _e185 = v_14;
     metal::float3 _e186 = ms_unit_normal(_e185);
@@ -3804,19 +3759,19 @@ metal::float3 ms_gtr_sample_wm(
 MsSample ms_gtr_sample(
     metal::float3 w_42,
     metal::float2 alpha_66,
-    metal::float2 u_29,
-    uint table_29,
+    metal::float2 u_28,
+    uint table_28,
     device type_7 const& ms_tables,
     constant _mslBufferSizes& _buffer_sizes
 ) {
-    bool _e4 = ms_gtr_is_ggx(table_29, ms_tables, _buffer_sizes);
+    bool _e4 = ms_gtr_is_ggx(table_28, ms_tables, _buffer_sizes);
     if (_e4) {
-        MsSample _e5 = ms_ggx_sample(w_42, alpha_66, u_29);
+        MsSample _e5 = ms_ggx_sample(w_42, alpha_66, u_28);
         return _e5;
     }
-    metal::float3 _e6 = ms_gtr_sample_wm(w_42, u_29, table_29, ms_tables, _buffer_sizes);
+    metal::float3 _e6 = ms_gtr_sample_wm(w_42, u_28, table_28, ms_tables, _buffer_sizes);
     metal::float3 _e7 = ms_unit(w_42);
-    float _e8 = ms_gtr_pdf(_e7, _e6, alpha_66, table_29, ms_tables, _buffer_sizes);
+    float _e8 = ms_gtr_pdf(_e7, _e6, alpha_66, table_28, ms_tables, _buffer_sizes);
     return MsSample {_e6, _e8};
 }
 
@@ -3868,22 +3823,22 @@ float ms_ei_d(
 float ms_ei_lambda(
     metal::float3 w_43,
     metal::float2 alpha_69,
-    uint table_30,
+    uint table_29,
     device type_7 const& ms_tables,
     constant _mslBufferSizes& _buffer_sizes
 ) {
-    float _e3 = ms_shape_lambda(table_30, w_43, alpha_69, ms_tables, _buffer_sizes);
+    float _e3 = ms_shape_lambda(table_29, w_43, alpha_69, ms_tables, _buffer_sizes);
     return _e3;
 }
 
 float ms_ei_g1_(
     metal::float3 w_44,
     metal::float2 alpha_70,
-    uint table_31,
+    uint table_30,
     device type_7 const& ms_tables,
     constant _mslBufferSizes& _buffer_sizes
 ) {
-    float _e3 = ms_mixture_g1_(table_31, w_44, alpha_70, ms_tables, _buffer_sizes);
+    float _e3 = ms_mixture_g1_(table_30, w_44, alpha_70, ms_tables, _buffer_sizes);
     return _e3;
 }
 
@@ -3891,11 +3846,11 @@ float ms_ei_g2_(
     metal::float3 wo_16,
     metal::float3 wi_16,
     metal::float2 alpha_71,
-    uint table_32,
+    uint table_31,
     device type_7 const& ms_tables,
     constant _mslBufferSizes& _buffer_sizes
 ) {
-    float _e4 = ms_mixture_g2_(table_32, wo_16, wi_16, alpha_71, ms_tables, _buffer_sizes);
+    float _e4 = ms_mixture_g2_(table_31, wo_16, wi_16, alpha_71, ms_tables, _buffer_sizes);
     return _e4;
 }
 
@@ -3903,12 +3858,12 @@ float ms_ei_pdf(
     metal::float3 w_45,
     metal::float3 wm_24,
     metal::float2 alpha_72,
-    uint table_33,
+    uint table_32,
     device type_7 const& ms_tables,
     constant _mslBufferSizes& _buffer_sizes
 ) {
     float _e4 = ms_ei_ln_d(wm_24, alpha_72, ms_tables, _buffer_sizes);
-    float _e5 = ms_mixture_pdf(table_33, w_45, wm_24, alpha_72, _e4, ms_tables, _buffer_sizes);
+    float _e5 = ms_mixture_pdf(table_32, w_45, wm_24, alpha_72, _e4, ms_tables, _buffer_sizes);
     return _e5;
 }
 
@@ -3927,12 +3882,12 @@ float ms_ei_pdf_dcos(
 
 MsSample ms_ei_sample_dcos(
     metal::float2 alpha_74,
-    metal::float2 u_30,
-    uint table_34,
+    metal::float2 u_29,
+    uint table_33,
     device type_7 const& ms_tables,
     constant _mslBufferSizes& _buffer_sizes
 ) {
-    metal::float3 _e3 = ms_mixture_sample_dcos_wm(table_34, alpha_74, u_30, ms_tables, _buffer_sizes);
+    metal::float3 _e3 = ms_mixture_sample_dcos_wm(table_33, alpha_74, u_29, ms_tables, _buffer_sizes);
     float _e4 = ms_ei_pdf_dcos(_e3, alpha_74, ms_tables, _buffer_sizes);
     return MsSample {_e3, _e4};
 }
@@ -3940,14 +3895,14 @@ MsSample ms_ei_sample_dcos(
 MsSample ms_ei_sample(
     metal::float3 w_46,
     metal::float2 alpha_75,
-    metal::float2 u_31,
-    uint table_35,
+    metal::float2 u_30,
+    uint table_34,
     device type_7 const& ms_tables,
     constant _mslBufferSizes& _buffer_sizes
 ) {
-    metal::float3 _e4 = ms_mixture_sample_wm(table_35, w_46, alpha_75, u_31, ms_tables, _buffer_sizes);
+    metal::float3 _e4 = ms_mixture_sample_wm(table_34, w_46, alpha_75, u_30, ms_tables, _buffer_sizes);
     metal::float3 _e5 = ms_unit(w_46);
-    float _e6 = ms_ei_pdf(_e5, _e4, alpha_75, table_35, ms_tables, _buffer_sizes);
+    float _e6 = ms_ei_pdf(_e5, _e4, alpha_75, table_34, ms_tables, _buffer_sizes);
     return MsSample {_e4, _e6};
 }
 
@@ -3995,22 +3950,22 @@ float ms_erfc_d(
 float ms_erfc_lambda(
     metal::float3 w_47,
     metal::float2 alpha_78,
-    uint table_36,
+    uint table_35,
     device type_7 const& ms_tables,
     constant _mslBufferSizes& _buffer_sizes
 ) {
-    float _e3 = ms_shape_lambda(table_36, w_47, alpha_78, ms_tables, _buffer_sizes);
+    float _e3 = ms_shape_lambda(table_35, w_47, alpha_78, ms_tables, _buffer_sizes);
     return _e3;
 }
 
 float ms_erfc_g1_(
     metal::float3 w_48,
     metal::float2 alpha_79,
-    uint table_37,
+    uint table_36,
     device type_7 const& ms_tables,
     constant _mslBufferSizes& _buffer_sizes
 ) {
-    float _e3 = ms_mixture_g1_(table_37, w_48, alpha_79, ms_tables, _buffer_sizes);
+    float _e3 = ms_mixture_g1_(table_36, w_48, alpha_79, ms_tables, _buffer_sizes);
     return _e3;
 }
 
@@ -4018,11 +3973,11 @@ float ms_erfc_g2_(
     metal::float3 wo_17,
     metal::float3 wi_17,
     metal::float2 alpha_80,
-    uint table_38,
+    uint table_37,
     device type_7 const& ms_tables,
     constant _mslBufferSizes& _buffer_sizes
 ) {
-    float _e4 = ms_mixture_g2_(table_38, wo_17, wi_17, alpha_80, ms_tables, _buffer_sizes);
+    float _e4 = ms_mixture_g2_(table_37, wo_17, wi_17, alpha_80, ms_tables, _buffer_sizes);
     return _e4;
 }
 
@@ -4030,12 +3985,12 @@ float ms_erfc_pdf(
     metal::float3 w_49,
     metal::float3 wm_28,
     metal::float2 alpha_81,
-    uint table_39,
+    uint table_38,
     device type_7 const& ms_tables,
     constant _mslBufferSizes& _buffer_sizes
 ) {
     float _e4 = ms_erfc_ln_d(wm_28, alpha_81, ms_tables, _buffer_sizes);
-    float _e5 = ms_mixture_pdf(table_39, w_49, wm_28, alpha_81, _e4, ms_tables, _buffer_sizes);
+    float _e5 = ms_mixture_pdf(table_38, w_49, wm_28, alpha_81, _e4, ms_tables, _buffer_sizes);
     return _e5;
 }
 
@@ -4054,12 +4009,12 @@ float ms_erfc_pdf_dcos(
 
 MsSample ms_erfc_sample_dcos(
     metal::float2 alpha_83,
-    metal::float2 u_32,
-    uint table_40,
+    metal::float2 u_31,
+    uint table_39,
     device type_7 const& ms_tables,
     constant _mslBufferSizes& _buffer_sizes
 ) {
-    metal::float3 _e3 = ms_mixture_sample_dcos_wm(table_40, alpha_83, u_32, ms_tables, _buffer_sizes);
+    metal::float3 _e3 = ms_mixture_sample_dcos_wm(table_39, alpha_83, u_31, ms_tables, _buffer_sizes);
     float _e4 = ms_erfc_pdf_dcos(_e3, alpha_83, ms_tables, _buffer_sizes);
     return MsSample {_e3, _e4};
 }
@@ -4067,14 +4022,14 @@ MsSample ms_erfc_sample_dcos(
 MsSample ms_erfc_sample(
     metal::float3 w_50,
     metal::float2 alpha_84,
-    metal::float2 u_33,
-    uint table_41,
+    metal::float2 u_32,
+    uint table_40,
     device type_7 const& ms_tables,
     constant _mslBufferSizes& _buffer_sizes
 ) {
-    metal::float3 _e4 = ms_mixture_sample_wm(table_41, w_50, alpha_84, u_33, ms_tables, _buffer_sizes);
+    metal::float3 _e4 = ms_mixture_sample_wm(table_40, w_50, alpha_84, u_32, ms_tables, _buffer_sizes);
     metal::float3 _e5 = ms_unit(w_50);
-    float _e6 = ms_erfc_pdf(_e5, _e4, alpha_84, table_41, ms_tables, _buffer_sizes);
+    float _e6 = ms_erfc_pdf(_e5, _e4, alpha_84, table_40, ms_tables, _buffer_sizes);
     return MsSample {_e4, _e6};
 }
 
@@ -4083,9 +4038,9 @@ float ms_k0_ln_profile(
     device type_7 const& ms_tables,
     constant _mslBufferSizes& _buffer_sizes
 ) {
-    float z_24 = 2.0 * r_3;
-    float _e3 = ms_k0e(z_24, ms_tables, _buffer_sizes);
-    return metal::log((2.0 * _e3) / MS_PI) - z_24;
+    float z_25 = 2.0 * r_3;
+    float _e3 = ms_k0e(z_25, ms_tables, _buffer_sizes);
+    return metal::log((2.0 * _e3) / MS_PI) - z_25;
 }
 
 float ms_k0_ln_d(
@@ -4123,22 +4078,22 @@ float ms_k0_d(
 float ms_k0_lambda(
     metal::float3 w_51,
     metal::float2 alpha_87,
-    uint table_42,
+    uint table_41,
     device type_7 const& ms_tables,
     constant _mslBufferSizes& _buffer_sizes
 ) {
-    float _e3 = ms_shape_lambda(table_42, w_51, alpha_87, ms_tables, _buffer_sizes);
+    float _e3 = ms_shape_lambda(table_41, w_51, alpha_87, ms_tables, _buffer_sizes);
     return _e3;
 }
 
 float ms_k0_g1_(
     metal::float3 w_52,
     metal::float2 alpha_88,
-    uint table_43,
+    uint table_42,
     device type_7 const& ms_tables,
     constant _mslBufferSizes& _buffer_sizes
 ) {
-    float _e3 = ms_mixture_g1_(table_43, w_52, alpha_88, ms_tables, _buffer_sizes);
+    float _e3 = ms_mixture_g1_(table_42, w_52, alpha_88, ms_tables, _buffer_sizes);
     return _e3;
 }
 
@@ -4146,11 +4101,11 @@ float ms_k0_g2_(
     metal::float3 wo_18,
     metal::float3 wi_18,
     metal::float2 alpha_89,
-    uint table_44,
+    uint table_43,
     device type_7 const& ms_tables,
     constant _mslBufferSizes& _buffer_sizes
 ) {
-    float _e4 = ms_mixture_g2_(table_44, wo_18, wi_18, alpha_89, ms_tables, _buffer_sizes);
+    float _e4 = ms_mixture_g2_(table_43, wo_18, wi_18, alpha_89, ms_tables, _buffer_sizes);
     return _e4;
 }
 
@@ -4158,12 +4113,12 @@ float ms_k0_pdf(
     metal::float3 w_53,
     metal::float3 wm_32,
     metal::float2 alpha_90,
-    uint table_45,
+    uint table_44,
     device type_7 const& ms_tables,
     constant _mslBufferSizes& _buffer_sizes
 ) {
     float _e4 = ms_k0_ln_d(wm_32, alpha_90, ms_tables, _buffer_sizes);
-    float _e5 = ms_mixture_pdf(table_45, w_53, wm_32, alpha_90, _e4, ms_tables, _buffer_sizes);
+    float _e5 = ms_mixture_pdf(table_44, w_53, wm_32, alpha_90, _e4, ms_tables, _buffer_sizes);
     return _e5;
 }
 
@@ -4182,12 +4137,12 @@ float ms_k0_pdf_dcos(
 
 MsSample ms_k0_sample_dcos(
     metal::float2 alpha_92,
-    metal::float2 u_34,
-    uint table_46,
+    metal::float2 u_33,
+    uint table_45,
     device type_7 const& ms_tables,
     constant _mslBufferSizes& _buffer_sizes
 ) {
-    metal::float3 _e3 = ms_mixture_sample_dcos_wm(table_46, alpha_92, u_34, ms_tables, _buffer_sizes);
+    metal::float3 _e3 = ms_mixture_sample_dcos_wm(table_45, alpha_92, u_33, ms_tables, _buffer_sizes);
     float _e4 = ms_k0_pdf_dcos(_e3, alpha_92, ms_tables, _buffer_sizes);
     return MsSample {_e3, _e4};
 }
@@ -4195,25 +4150,25 @@ MsSample ms_k0_sample_dcos(
 MsSample ms_k0_sample(
     metal::float3 w_54,
     metal::float2 alpha_93,
-    metal::float2 u_35,
-    uint table_47,
+    metal::float2 u_34,
+    uint table_46,
     device type_7 const& ms_tables,
     constant _mslBufferSizes& _buffer_sizes
 ) {
-    metal::float3 _e4 = ms_mixture_sample_wm(table_47, w_54, alpha_93, u_35, ms_tables, _buffer_sizes);
+    metal::float3 _e4 = ms_mixture_sample_wm(table_46, w_54, alpha_93, u_34, ms_tables, _buffer_sizes);
     metal::float3 _e5 = ms_unit(w_54);
-    float _e6 = ms_k0_pdf(_e5, _e4, alpha_93, table_47, ms_tables, _buffer_sizes);
+    float _e6 = ms_k0_pdf(_e5, _e4, alpha_93, table_46, ms_tables, _buffer_sizes);
     return MsSample {_e4, _e6};
 }
 
 float ms_bessel_k_h(
     uint at_2,
     metal::float4 head,
-    float x_16,
+    float x_15,
     device type_7 const& ms_tables,
     constant _mslBufferSizes& _buffer_sizes
 ) {
-    metal::float2 _e7 = ms_bk_segment(x_16, naga_f2i32(head.y), naga_f2i32(head.z));
+    metal::float2 _e7 = ms_bk_segment(x_15, naga_f2i32(head.y), naga_f2i32(head.z));
     uint i_15 = (at_2 + 1u) + (2u * naga_f2u32(_e7.x));
     metal::float4 _e17 = ms_tables[i_15];
     metal::float4 _e22 = ms_tables[i_15 + 1u];
@@ -4222,37 +4177,37 @@ float ms_bessel_k_h(
 }
 
 float ms_bessel_k_ln_profile(
-    uint table_48,
-    float x_17,
+    uint table_47,
+    float x_16,
     device type_7 const& ms_tables,
     constant _mslBufferSizes& _buffer_sizes
 ) {
-    float _e7 = ms_tables[table_48 + 2u].w;
-    uint at_3 = table_48 + naga_f2u32(_e7);
+    float _e7 = ms_tables[table_47 + 2u].w;
+    uint at_3 = table_47 + naga_f2u32(_e7);
     metal::float4 head_6 = ms_tables[at_3];
-    if (!((x_17 < metal::exp2(head_6.z)))) {
-        return (x_17 != x_17) ? x_17 : -1000000000000000000000000000000.0;
+    if (!((x_16 < metal::exp2(head_6.z)))) {
+        return (x_16 != x_16) ? x_16 : -1000000000000000000000000000000.0;
     }
     float x0_1 = metal::exp2(head_6.y);
-    if (x_17 < x0_1) {
+    if (x_16 < x0_1) {
         float _e23 = ms_bessel_k_h(at_3, head_6, x0_1, ms_tables, _buffer_sizes);
         float h0_ = _e23 - (2.0 * x0_1);
         if (head_6.x < 0.0) {
-            return h0_ + ((2.0 * head_6.x) * metal::log(x_17 / x0_1));
+            return h0_ + ((2.0 * head_6.x) * metal::log(x_16 / x0_1));
         }
         if (head_6.x == 0.0) {
-            return h0_ + metal::log(metal::log(x_17) / metal::log(x0_1));
+            return h0_ + metal::log(metal::log(x_16) / metal::log(x0_1));
         }
         return h0_;
     }
-    float _e45 = ms_bessel_k_h(at_3, head_6, x_17, ms_tables, _buffer_sizes);
-    return _e45 - (2.0 * x_17);
+    float _e45 = ms_bessel_k_h(at_3, head_6, x_16, ms_tables, _buffer_sizes);
+    return _e45 - (2.0 * x_16);
 }
 
 float ms_bessel_k_ln_d(
     metal::float3 wm_34,
     metal::float2 alpha_94,
-    uint table_49,
+    uint table_48,
     device type_7 const& ms_tables,
     constant _mslBufferSizes& _buffer_sizes
 ) {
@@ -4261,14 +4216,14 @@ float ms_bessel_k_ln_d(
     }
     float _e13 = ms_mixture_r(wm_34, alpha_94);
     if (_e13 == 0.0) {
-        float _e19 = ms_tables[table_49].x;
+        float _e19 = ms_tables[table_48].x;
         float nu = _e19 - 1.0;
         if (nu > 0.0) {
             return -(metal::log(((MS_PI * nu) * alpha_94.x) * alpha_94.y)) - (4.0 * metal::log(wm_34.z));
         }
         return 1000000000000000000000000000000.0;
     }
-    float _e38 = ms_bessel_k_ln_profile(table_49, _e13, ms_tables, _buffer_sizes);
+    float _e38 = ms_bessel_k_ln_profile(table_48, _e13, ms_tables, _buffer_sizes);
     float _e39 = ms_mixture_ln_d(_e38, wm_34, alpha_94);
     return _e39;
 }
@@ -4276,11 +4231,11 @@ float ms_bessel_k_ln_d(
 float ms_bessel_k_d(
     metal::float3 wm_35,
     metal::float2 alpha_95,
-    uint table_50,
+    uint table_49,
     device type_7 const& ms_tables,
     constant _mslBufferSizes& _buffer_sizes
 ) {
-    float _e3 = ms_bessel_k_ln_d(wm_35, alpha_95, table_50, ms_tables, _buffer_sizes);
+    float _e3 = ms_bessel_k_ln_d(wm_35, alpha_95, table_49, ms_tables, _buffer_sizes);
     if (_e3 >= 1000000000000000000000000000000.0) {
         float _e6 = ms_inf();
         return _e6;
@@ -4291,22 +4246,22 @@ float ms_bessel_k_d(
 float ms_bessel_k_lambda(
     metal::float3 w_55,
     metal::float2 alpha_96,
-    uint table_51,
+    uint table_50,
     device type_7 const& ms_tables,
     constant _mslBufferSizes& _buffer_sizes
 ) {
-    float _e3 = ms_shape_lambda(table_51, w_55, alpha_96, ms_tables, _buffer_sizes);
+    float _e3 = ms_shape_lambda(table_50, w_55, alpha_96, ms_tables, _buffer_sizes);
     return _e3;
 }
 
 float ms_bessel_k_g1_(
     metal::float3 w_56,
     metal::float2 alpha_97,
-    uint table_52,
+    uint table_51,
     device type_7 const& ms_tables,
     constant _mslBufferSizes& _buffer_sizes
 ) {
-    float _e3 = ms_mixture_g1_(table_52, w_56, alpha_97, ms_tables, _buffer_sizes);
+    float _e3 = ms_mixture_g1_(table_51, w_56, alpha_97, ms_tables, _buffer_sizes);
     return _e3;
 }
 
@@ -4314,11 +4269,11 @@ float ms_bessel_k_g2_(
     metal::float3 wo_19,
     metal::float3 wi_19,
     metal::float2 alpha_98,
-    uint table_53,
+    uint table_52,
     device type_7 const& ms_tables,
     constant _mslBufferSizes& _buffer_sizes
 ) {
-    float _e4 = ms_mixture_g2_(table_53, wo_19, wi_19, alpha_98, ms_tables, _buffer_sizes);
+    float _e4 = ms_mixture_g2_(table_52, wo_19, wi_19, alpha_98, ms_tables, _buffer_sizes);
     return _e4;
 }
 
@@ -4326,52 +4281,52 @@ float ms_bessel_k_pdf(
     metal::float3 w_57,
     metal::float3 wm_36,
     metal::float2 alpha_99,
-    uint table_54,
+    uint table_53,
     device type_7 const& ms_tables,
     constant _mslBufferSizes& _buffer_sizes
 ) {
-    float _e4 = ms_bessel_k_ln_d(wm_36, alpha_99, table_54, ms_tables, _buffer_sizes);
-    float _e5 = ms_mixture_pdf(table_54, w_57, wm_36, alpha_99, _e4, ms_tables, _buffer_sizes);
+    float _e4 = ms_bessel_k_ln_d(wm_36, alpha_99, table_53, ms_tables, _buffer_sizes);
+    float _e5 = ms_mixture_pdf(table_53, w_57, wm_36, alpha_99, _e4, ms_tables, _buffer_sizes);
     return _e5;
 }
 
 float ms_bessel_k_pdf_dcos(
     metal::float3 wm_37,
     metal::float2 alpha_100,
-    uint table_55,
+    uint table_54,
     device type_7 const& ms_tables,
     constant _mslBufferSizes& _buffer_sizes
 ) {
     if (!((wm_37.z > 0.0))) {
         return 0.0;
     }
-    float _e8 = ms_bessel_k_d(wm_37, alpha_100, table_55, ms_tables, _buffer_sizes);
+    float _e8 = ms_bessel_k_d(wm_37, alpha_100, table_54, ms_tables, _buffer_sizes);
     return _e8 * wm_37.z;
 }
 
 MsSample ms_bessel_k_sample_dcos(
     metal::float2 alpha_101,
-    metal::float2 u_36,
-    uint table_56,
+    metal::float2 u_35,
+    uint table_55,
     device type_7 const& ms_tables,
     constant _mslBufferSizes& _buffer_sizes
 ) {
-    metal::float3 _e3 = ms_mixture_sample_dcos_wm(table_56, alpha_101, u_36, ms_tables, _buffer_sizes);
-    float _e4 = ms_bessel_k_pdf_dcos(_e3, alpha_101, table_56, ms_tables, _buffer_sizes);
+    metal::float3 _e3 = ms_mixture_sample_dcos_wm(table_55, alpha_101, u_35, ms_tables, _buffer_sizes);
+    float _e4 = ms_bessel_k_pdf_dcos(_e3, alpha_101, table_55, ms_tables, _buffer_sizes);
     return MsSample {_e3, _e4};
 }
 
 MsSample ms_bessel_k_sample(
     metal::float3 w_58,
     metal::float2 alpha_102,
-    metal::float2 u_37,
-    uint table_57,
+    metal::float2 u_36,
+    uint table_56,
     device type_7 const& ms_tables,
     constant _mslBufferSizes& _buffer_sizes
 ) {
-    metal::float3 _e4 = ms_mixture_sample_wm(table_57, w_58, alpha_102, u_37, ms_tables, _buffer_sizes);
+    metal::float3 _e4 = ms_mixture_sample_wm(table_56, w_58, alpha_102, u_36, ms_tables, _buffer_sizes);
     metal::float3 _e5 = ms_unit(w_58);
-    float _e6 = ms_bessel_k_pdf(_e5, _e4, alpha_102, table_57, ms_tables, _buffer_sizes);
+    float _e6 = ms_bessel_k_pdf(_e5, _e4, alpha_102, table_56, ms_tables, _buffer_sizes);
     return MsSample {_e4, _e6};
 }
 
@@ -4387,6 +4342,8 @@ float ms_d(
     device type_7 const& ms_tables,
     constant _mslBufferSizes& _buffer_sizes
 ) {
+    bool local_35 = {};
+    bool local_36 = {};
     bool local_37 = {};
     bool local_38 = {};
     bool local_39 = {};
@@ -4395,114 +4352,112 @@ float ms_d(
     bool local_42 = {};
     bool local_43 = {};
     bool local_44 = {};
-    bool local_45 = {};
-    bool local_46 = {};
     if (mf.ndf == MS_NDF_GGX) {
         bool _e8 = ms_door_has(MS_NDF_GGX);
-        local_37 = _e8;
+        local_35 = _e8;
     } else {
-        local_37 = false;
+        local_35 = false;
     }
-    bool _e10 = local_37;
+    bool _e10 = local_35;
     if (_e10) {
         float _e12 = ms_ggx_d(wm_38, mf.alpha);
         return _e12;
     }
     if (mf.ndf == MS_NDF_BECKMANN) {
         bool _e19 = ms_door_has(MS_NDF_BECKMANN);
-        local_38 = _e19;
+        local_36 = _e19;
     } else {
-        local_38 = false;
+        local_36 = false;
     }
-    bool _e21 = local_38;
+    bool _e21 = local_36;
     if (_e21) {
         float _e23 = ms_beckmann_d(wm_38, mf.alpha);
         return _e23;
     }
     if (mf.ndf == MS_NDF_DOUBLE_GGX) {
         bool _e30 = ms_door_has(MS_NDF_DOUBLE_GGX);
-        local_39 = _e30;
+        local_37 = _e30;
     } else {
-        local_39 = false;
+        local_37 = false;
     }
-    bool _e32 = local_39;
+    bool _e32 = local_37;
     if (_e32) {
         float _e34 = ms_double_ggx_d(wm_38, mf.alpha, ms_tables, _buffer_sizes);
         return _e34;
     }
     if (mf.ndf == MS_NDF_EXPONENTIAL) {
         bool _e41 = ms_door_has(MS_NDF_EXPONENTIAL);
-        local_40 = _e41;
+        local_38 = _e41;
     } else {
-        local_40 = false;
+        local_38 = false;
     }
-    bool _e43 = local_40;
+    bool _e43 = local_38;
     if (_e43) {
         float _e45 = ms_exponential_d(wm_38, mf.alpha);
         return _e45;
     }
     if (mf.ndf == MS_NDF_STUDENT_T) {
         bool _e52 = ms_door_has(MS_NDF_STUDENT_T);
-        local_41 = _e52;
+        local_39 = _e52;
     } else {
-        local_41 = false;
+        local_39 = false;
     }
-    bool _e54 = local_41;
+    bool _e54 = local_39;
     if (_e54) {
         float _e57 = ms_student_t_d(wm_38, mf.alpha, mf.table, ms_tables, _buffer_sizes);
         return _e57;
     }
     if (mf.ndf == MS_NDF_EI) {
         bool _e64 = ms_door_has(MS_NDF_EI);
-        local_42 = _e64;
+        local_40 = _e64;
     } else {
-        local_42 = false;
+        local_40 = false;
     }
-    bool _e66 = local_42;
+    bool _e66 = local_40;
     if (_e66) {
         float _e68 = ms_ei_d(wm_38, mf.alpha, ms_tables, _buffer_sizes);
         return _e68;
     }
     if (mf.ndf == MS_NDF_ERFC) {
         bool _e75 = ms_door_has(MS_NDF_ERFC);
-        local_43 = _e75;
+        local_41 = _e75;
     } else {
-        local_43 = false;
+        local_41 = false;
     }
-    bool _e77 = local_43;
+    bool _e77 = local_41;
     if (_e77) {
         float _e79 = ms_erfc_d(wm_38, mf.alpha, ms_tables, _buffer_sizes);
         return _e79;
     }
     if (mf.ndf == MS_NDF_K0_) {
         bool _e86 = ms_door_has(MS_NDF_K0_);
-        local_44 = _e86;
+        local_42 = _e86;
     } else {
-        local_44 = false;
+        local_42 = false;
     }
-    bool _e88 = local_44;
+    bool _e88 = local_42;
     if (_e88) {
         float _e90 = ms_k0_d(wm_38, mf.alpha, ms_tables, _buffer_sizes);
         return _e90;
     }
     if (mf.ndf == MS_NDF_BESSEL_K) {
         bool _e97 = ms_door_has(MS_NDF_BESSEL_K);
-        local_45 = _e97;
+        local_43 = _e97;
     } else {
-        local_45 = false;
+        local_43 = false;
     }
-    bool _e99 = local_45;
+    bool _e99 = local_43;
     if (_e99) {
         float _e102 = ms_bessel_k_d(wm_38, mf.alpha, mf.table, ms_tables, _buffer_sizes);
         return _e102;
     }
     if (mf.ndf == MS_NDF_GTR) {
         bool _e109 = ms_door_has(MS_NDF_GTR);
-        local_46 = _e109;
+        local_44 = _e109;
     } else {
-        local_46 = false;
+        local_44 = false;
     }
-    bool _e111 = local_46;
+    bool _e111 = local_44;
     if (_e111) {
         float _e114 = ms_gtr_d(wm_38, mf.alpha, mf.table, ms_tables, _buffer_sizes);
         return _e114;
@@ -4516,6 +4471,8 @@ float ms_lambda(
     device type_7 const& ms_tables,
     constant _mslBufferSizes& _buffer_sizes
 ) {
+    bool local_45 = {};
+    bool local_46 = {};
     bool local_47 = {};
     bool local_48 = {};
     bool local_49 = {};
@@ -4524,114 +4481,112 @@ float ms_lambda(
     bool local_52 = {};
     bool local_53 = {};
     bool local_54 = {};
-    bool local_55 = {};
-    bool local_56 = {};
     if (mf_1.ndf == MS_NDF_GGX) {
         bool _e8 = ms_door_has(MS_NDF_GGX);
-        local_47 = _e8;
+        local_45 = _e8;
     } else {
-        local_47 = false;
+        local_45 = false;
     }
-    bool _e10 = local_47;
+    bool _e10 = local_45;
     if (_e10) {
         float _e12 = ms_ggx_lambda(w_59, mf_1.alpha);
         return _e12;
     }
     if (mf_1.ndf == MS_NDF_BECKMANN) {
         bool _e19 = ms_door_has(MS_NDF_BECKMANN);
-        local_48 = _e19;
+        local_46 = _e19;
     } else {
-        local_48 = false;
+        local_46 = false;
     }
-    bool _e21 = local_48;
+    bool _e21 = local_46;
     if (_e21) {
         float _e23 = ms_beckmann_lambda(w_59, mf_1.alpha, ms_tables, _buffer_sizes);
         return _e23;
     }
     if (mf_1.ndf == MS_NDF_DOUBLE_GGX) {
         bool _e30 = ms_door_has(MS_NDF_DOUBLE_GGX);
-        local_49 = _e30;
+        local_47 = _e30;
     } else {
-        local_49 = false;
+        local_47 = false;
     }
-    bool _e32 = local_49;
+    bool _e32 = local_47;
     if (_e32) {
         float _e34 = ms_double_ggx_lambda(w_59, mf_1.alpha, ms_tables, _buffer_sizes);
         return _e34;
     }
     if (mf_1.ndf == MS_NDF_EXPONENTIAL) {
         bool _e41 = ms_door_has(MS_NDF_EXPONENTIAL);
-        local_50 = _e41;
+        local_48 = _e41;
     } else {
-        local_50 = false;
+        local_48 = false;
     }
-    bool _e43 = local_50;
+    bool _e43 = local_48;
     if (_e43) {
         float _e45 = ms_exponential_lambda(w_59, mf_1.alpha, ms_tables, _buffer_sizes);
         return _e45;
     }
     if (mf_1.ndf == MS_NDF_STUDENT_T) {
         bool _e52 = ms_door_has(MS_NDF_STUDENT_T);
-        local_51 = _e52;
+        local_49 = _e52;
     } else {
-        local_51 = false;
+        local_49 = false;
     }
-    bool _e54 = local_51;
+    bool _e54 = local_49;
     if (_e54) {
         float _e57 = ms_student_t_lambda(w_59, mf_1.alpha, mf_1.table, ms_tables, _buffer_sizes);
         return _e57;
     }
     if (mf_1.ndf == MS_NDF_EI) {
         bool _e64 = ms_door_has(MS_NDF_EI);
-        local_52 = _e64;
+        local_50 = _e64;
     } else {
-        local_52 = false;
+        local_50 = false;
     }
-    bool _e66 = local_52;
+    bool _e66 = local_50;
     if (_e66) {
         float _e69 = ms_ei_lambda(w_59, mf_1.alpha, mf_1.table, ms_tables, _buffer_sizes);
         return _e69;
     }
     if (mf_1.ndf == MS_NDF_ERFC) {
         bool _e76 = ms_door_has(MS_NDF_ERFC);
-        local_53 = _e76;
+        local_51 = _e76;
     } else {
-        local_53 = false;
+        local_51 = false;
     }
-    bool _e78 = local_53;
+    bool _e78 = local_51;
     if (_e78) {
         float _e81 = ms_erfc_lambda(w_59, mf_1.alpha, mf_1.table, ms_tables, _buffer_sizes);
         return _e81;
     }
     if (mf_1.ndf == MS_NDF_K0_) {
         bool _e88 = ms_door_has(MS_NDF_K0_);
-        local_54 = _e88;
+        local_52 = _e88;
     } else {
-        local_54 = false;
+        local_52 = false;
     }
-    bool _e90 = local_54;
+    bool _e90 = local_52;
     if (_e90) {
         float _e93 = ms_k0_lambda(w_59, mf_1.alpha, mf_1.table, ms_tables, _buffer_sizes);
         return _e93;
     }
     if (mf_1.ndf == MS_NDF_BESSEL_K) {
         bool _e100 = ms_door_has(MS_NDF_BESSEL_K);
-        local_55 = _e100;
+        local_53 = _e100;
     } else {
-        local_55 = false;
+        local_53 = false;
     }
-    bool _e102 = local_55;
+    bool _e102 = local_53;
     if (_e102) {
         float _e105 = ms_bessel_k_lambda(w_59, mf_1.alpha, mf_1.table, ms_tables, _buffer_sizes);
         return _e105;
     }
     if (mf_1.ndf == MS_NDF_GTR) {
         bool _e112 = ms_door_has(MS_NDF_GTR);
-        local_56 = _e112;
+        local_54 = _e112;
     } else {
-        local_56 = false;
+        local_54 = false;
     }
-    bool _e114 = local_56;
+    bool _e114 = local_54;
     if (_e114) {
         float _e117 = ms_gtr_lambda(w_59, mf_1.alpha, mf_1.table, ms_tables, _buffer_sizes);
         return _e117;
@@ -4645,6 +4600,8 @@ float ms_g1_(
     device type_7 const& ms_tables,
     constant _mslBufferSizes& _buffer_sizes
 ) {
+    bool local_55 = {};
+    bool local_56 = {};
     bool local_57 = {};
     bool local_58 = {};
     bool local_59 = {};
@@ -4653,114 +4610,112 @@ float ms_g1_(
     bool local_62 = {};
     bool local_63 = {};
     bool local_64 = {};
-    bool local_65 = {};
-    bool local_66 = {};
     if (mf_2.ndf == MS_NDF_GGX) {
         bool _e8 = ms_door_has(MS_NDF_GGX);
-        local_57 = _e8;
+        local_55 = _e8;
     } else {
-        local_57 = false;
+        local_55 = false;
     }
-    bool _e10 = local_57;
+    bool _e10 = local_55;
     if (_e10) {
         float _e12 = ms_ggx_g1_(w_60, mf_2.alpha);
         return _e12;
     }
     if (mf_2.ndf == MS_NDF_BECKMANN) {
         bool _e19 = ms_door_has(MS_NDF_BECKMANN);
-        local_58 = _e19;
+        local_56 = _e19;
     } else {
-        local_58 = false;
+        local_56 = false;
     }
-    bool _e21 = local_58;
+    bool _e21 = local_56;
     if (_e21) {
         float _e23 = ms_beckmann_g1_(w_60, mf_2.alpha, ms_tables, _buffer_sizes);
         return _e23;
     }
     if (mf_2.ndf == MS_NDF_DOUBLE_GGX) {
         bool _e30 = ms_door_has(MS_NDF_DOUBLE_GGX);
-        local_59 = _e30;
+        local_57 = _e30;
     } else {
-        local_59 = false;
+        local_57 = false;
     }
-    bool _e32 = local_59;
+    bool _e32 = local_57;
     if (_e32) {
         float _e34 = ms_double_ggx_g1_(w_60, mf_2.alpha, ms_tables, _buffer_sizes);
         return _e34;
     }
     if (mf_2.ndf == MS_NDF_EXPONENTIAL) {
         bool _e41 = ms_door_has(MS_NDF_EXPONENTIAL);
-        local_60 = _e41;
+        local_58 = _e41;
     } else {
-        local_60 = false;
+        local_58 = false;
     }
-    bool _e43 = local_60;
+    bool _e43 = local_58;
     if (_e43) {
         float _e45 = ms_exponential_g1_(w_60, mf_2.alpha, ms_tables, _buffer_sizes);
         return _e45;
     }
     if (mf_2.ndf == MS_NDF_STUDENT_T) {
         bool _e52 = ms_door_has(MS_NDF_STUDENT_T);
-        local_61 = _e52;
+        local_59 = _e52;
     } else {
-        local_61 = false;
+        local_59 = false;
     }
-    bool _e54 = local_61;
+    bool _e54 = local_59;
     if (_e54) {
         float _e57 = ms_student_t_g1_(w_60, mf_2.alpha, mf_2.table, ms_tables, _buffer_sizes);
         return _e57;
     }
     if (mf_2.ndf == MS_NDF_EI) {
         bool _e64 = ms_door_has(MS_NDF_EI);
-        local_62 = _e64;
+        local_60 = _e64;
     } else {
-        local_62 = false;
+        local_60 = false;
     }
-    bool _e66 = local_62;
+    bool _e66 = local_60;
     if (_e66) {
         float _e69 = ms_ei_g1_(w_60, mf_2.alpha, mf_2.table, ms_tables, _buffer_sizes);
         return _e69;
     }
     if (mf_2.ndf == MS_NDF_ERFC) {
         bool _e76 = ms_door_has(MS_NDF_ERFC);
-        local_63 = _e76;
+        local_61 = _e76;
     } else {
-        local_63 = false;
+        local_61 = false;
     }
-    bool _e78 = local_63;
+    bool _e78 = local_61;
     if (_e78) {
         float _e81 = ms_erfc_g1_(w_60, mf_2.alpha, mf_2.table, ms_tables, _buffer_sizes);
         return _e81;
     }
     if (mf_2.ndf == MS_NDF_K0_) {
         bool _e88 = ms_door_has(MS_NDF_K0_);
-        local_64 = _e88;
+        local_62 = _e88;
     } else {
-        local_64 = false;
+        local_62 = false;
     }
-    bool _e90 = local_64;
+    bool _e90 = local_62;
     if (_e90) {
         float _e93 = ms_k0_g1_(w_60, mf_2.alpha, mf_2.table, ms_tables, _buffer_sizes);
         return _e93;
     }
     if (mf_2.ndf == MS_NDF_BESSEL_K) {
         bool _e100 = ms_door_has(MS_NDF_BESSEL_K);
-        local_65 = _e100;
+        local_63 = _e100;
     } else {
-        local_65 = false;
+        local_63 = false;
     }
-    bool _e102 = local_65;
+    bool _e102 = local_63;
     if (_e102) {
         float _e105 = ms_bessel_k_g1_(w_60, mf_2.alpha, mf_2.table, ms_tables, _buffer_sizes);
         return _e105;
     }
     if (mf_2.ndf == MS_NDF_GTR) {
         bool _e112 = ms_door_has(MS_NDF_GTR);
-        local_66 = _e112;
+        local_64 = _e112;
     } else {
-        local_66 = false;
+        local_64 = false;
     }
-    bool _e114 = local_66;
+    bool _e114 = local_64;
     if (_e114) {
         float _e117 = ms_gtr_g1_(w_60, mf_2.alpha, mf_2.table, ms_tables, _buffer_sizes);
         return _e117;
@@ -4775,6 +4730,8 @@ float ms_g2_(
     device type_7 const& ms_tables,
     constant _mslBufferSizes& _buffer_sizes
 ) {
+    bool local_65 = {};
+    bool local_66 = {};
     bool local_67 = {};
     bool local_68 = {};
     bool local_69 = {};
@@ -4783,114 +4740,112 @@ float ms_g2_(
     bool local_72 = {};
     bool local_73 = {};
     bool local_74 = {};
-    bool local_75 = {};
-    bool local_76 = {};
     if (mf_3.ndf == MS_NDF_GGX) {
         bool _e9 = ms_door_has(MS_NDF_GGX);
-        local_67 = _e9;
+        local_65 = _e9;
     } else {
-        local_67 = false;
+        local_65 = false;
     }
-    bool _e11 = local_67;
+    bool _e11 = local_65;
     if (_e11) {
         float _e13 = ms_ggx_g2_(wo_20, wi_20, mf_3.alpha);
         return _e13;
     }
     if (mf_3.ndf == MS_NDF_BECKMANN) {
         bool _e20 = ms_door_has(MS_NDF_BECKMANN);
-        local_68 = _e20;
+        local_66 = _e20;
     } else {
-        local_68 = false;
+        local_66 = false;
     }
-    bool _e22 = local_68;
+    bool _e22 = local_66;
     if (_e22) {
         float _e24 = ms_beckmann_g2_(wo_20, wi_20, mf_3.alpha, ms_tables, _buffer_sizes);
         return _e24;
     }
     if (mf_3.ndf == MS_NDF_DOUBLE_GGX) {
         bool _e31 = ms_door_has(MS_NDF_DOUBLE_GGX);
-        local_69 = _e31;
+        local_67 = _e31;
     } else {
-        local_69 = false;
+        local_67 = false;
     }
-    bool _e33 = local_69;
+    bool _e33 = local_67;
     if (_e33) {
         float _e35 = ms_double_ggx_g2_(wo_20, wi_20, mf_3.alpha, ms_tables, _buffer_sizes);
         return _e35;
     }
     if (mf_3.ndf == MS_NDF_EXPONENTIAL) {
         bool _e42 = ms_door_has(MS_NDF_EXPONENTIAL);
-        local_70 = _e42;
+        local_68 = _e42;
     } else {
-        local_70 = false;
+        local_68 = false;
     }
-    bool _e44 = local_70;
+    bool _e44 = local_68;
     if (_e44) {
         float _e46 = ms_exponential_g2_(wo_20, wi_20, mf_3.alpha, ms_tables, _buffer_sizes);
         return _e46;
     }
     if (mf_3.ndf == MS_NDF_STUDENT_T) {
         bool _e53 = ms_door_has(MS_NDF_STUDENT_T);
-        local_71 = _e53;
+        local_69 = _e53;
     } else {
-        local_71 = false;
+        local_69 = false;
     }
-    bool _e55 = local_71;
+    bool _e55 = local_69;
     if (_e55) {
         float _e58 = ms_student_t_g2_(wo_20, wi_20, mf_3.alpha, mf_3.table, ms_tables, _buffer_sizes);
         return _e58;
     }
     if (mf_3.ndf == MS_NDF_EI) {
         bool _e65 = ms_door_has(MS_NDF_EI);
-        local_72 = _e65;
+        local_70 = _e65;
     } else {
-        local_72 = false;
+        local_70 = false;
     }
-    bool _e67 = local_72;
+    bool _e67 = local_70;
     if (_e67) {
         float _e70 = ms_ei_g2_(wo_20, wi_20, mf_3.alpha, mf_3.table, ms_tables, _buffer_sizes);
         return _e70;
     }
     if (mf_3.ndf == MS_NDF_ERFC) {
         bool _e77 = ms_door_has(MS_NDF_ERFC);
-        local_73 = _e77;
+        local_71 = _e77;
     } else {
-        local_73 = false;
+        local_71 = false;
     }
-    bool _e79 = local_73;
+    bool _e79 = local_71;
     if (_e79) {
         float _e82 = ms_erfc_g2_(wo_20, wi_20, mf_3.alpha, mf_3.table, ms_tables, _buffer_sizes);
         return _e82;
     }
     if (mf_3.ndf == MS_NDF_K0_) {
         bool _e89 = ms_door_has(MS_NDF_K0_);
-        local_74 = _e89;
+        local_72 = _e89;
     } else {
-        local_74 = false;
+        local_72 = false;
     }
-    bool _e91 = local_74;
+    bool _e91 = local_72;
     if (_e91) {
         float _e94 = ms_k0_g2_(wo_20, wi_20, mf_3.alpha, mf_3.table, ms_tables, _buffer_sizes);
         return _e94;
     }
     if (mf_3.ndf == MS_NDF_BESSEL_K) {
         bool _e101 = ms_door_has(MS_NDF_BESSEL_K);
-        local_75 = _e101;
+        local_73 = _e101;
     } else {
-        local_75 = false;
+        local_73 = false;
     }
-    bool _e103 = local_75;
+    bool _e103 = local_73;
     if (_e103) {
         float _e106 = ms_bessel_k_g2_(wo_20, wi_20, mf_3.alpha, mf_3.table, ms_tables, _buffer_sizes);
         return _e106;
     }
     if (mf_3.ndf == MS_NDF_GTR) {
         bool _e113 = ms_door_has(MS_NDF_GTR);
-        local_76 = _e113;
+        local_74 = _e113;
     } else {
-        local_76 = false;
+        local_74 = false;
     }
-    bool _e115 = local_76;
+    bool _e115 = local_74;
     if (_e115) {
         float _e118 = ms_gtr_g2_(wo_20, wi_20, mf_3.alpha, mf_3.table, ms_tables, _buffer_sizes);
         return _e118;
@@ -4917,6 +4872,8 @@ float ms_pdf(
     device type_7 const& ms_tables,
     constant _mslBufferSizes& _buffer_sizes
 ) {
+    bool local_75 = {};
+    bool local_76 = {};
     bool local_77 = {};
     bool local_78 = {};
     bool local_79 = {};
@@ -4925,114 +4882,112 @@ float ms_pdf(
     bool local_82 = {};
     bool local_83 = {};
     bool local_84 = {};
-    bool local_85 = {};
-    bool local_86 = {};
     if (mf_5.ndf == MS_NDF_GGX) {
         bool _e9 = ms_door_has(MS_NDF_GGX);
-        local_77 = _e9;
+        local_75 = _e9;
     } else {
-        local_77 = false;
+        local_75 = false;
     }
-    bool _e11 = local_77;
+    bool _e11 = local_75;
     if (_e11) {
         float _e13 = ms_ggx_pdf(w_61, wm_39, mf_5.alpha);
         return _e13;
     }
     if (mf_5.ndf == MS_NDF_BECKMANN) {
         bool _e20 = ms_door_has(MS_NDF_BECKMANN);
-        local_78 = _e20;
+        local_76 = _e20;
     } else {
-        local_78 = false;
+        local_76 = false;
     }
-    bool _e22 = local_78;
+    bool _e22 = local_76;
     if (_e22) {
         float _e24 = ms_beckmann_pdf(w_61, wm_39, mf_5.alpha, ms_tables, _buffer_sizes);
         return _e24;
     }
     if (mf_5.ndf == MS_NDF_DOUBLE_GGX) {
         bool _e31 = ms_door_has(MS_NDF_DOUBLE_GGX);
-        local_79 = _e31;
+        local_77 = _e31;
     } else {
-        local_79 = false;
+        local_77 = false;
     }
-    bool _e33 = local_79;
+    bool _e33 = local_77;
     if (_e33) {
         float _e35 = ms_double_ggx_pdf(w_61, wm_39, mf_5.alpha, ms_tables, _buffer_sizes);
         return _e35;
     }
     if (mf_5.ndf == MS_NDF_EXPONENTIAL) {
         bool _e42 = ms_door_has(MS_NDF_EXPONENTIAL);
-        local_80 = _e42;
+        local_78 = _e42;
     } else {
-        local_80 = false;
+        local_78 = false;
     }
-    bool _e44 = local_80;
+    bool _e44 = local_78;
     if (_e44) {
         float _e46 = ms_exponential_pdf(w_61, wm_39, mf_5.alpha, ms_tables, _buffer_sizes);
         return _e46;
     }
     if (mf_5.ndf == MS_NDF_STUDENT_T) {
         bool _e53 = ms_door_has(MS_NDF_STUDENT_T);
-        local_81 = _e53;
+        local_79 = _e53;
     } else {
-        local_81 = false;
+        local_79 = false;
     }
-    bool _e55 = local_81;
+    bool _e55 = local_79;
     if (_e55) {
         float _e58 = ms_student_t_pdf(w_61, wm_39, mf_5.alpha, mf_5.table, ms_tables, _buffer_sizes);
         return _e58;
     }
     if (mf_5.ndf == MS_NDF_EI) {
         bool _e65 = ms_door_has(MS_NDF_EI);
-        local_82 = _e65;
+        local_80 = _e65;
     } else {
-        local_82 = false;
+        local_80 = false;
     }
-    bool _e67 = local_82;
+    bool _e67 = local_80;
     if (_e67) {
         float _e70 = ms_ei_pdf(w_61, wm_39, mf_5.alpha, mf_5.table, ms_tables, _buffer_sizes);
         return _e70;
     }
     if (mf_5.ndf == MS_NDF_ERFC) {
         bool _e77 = ms_door_has(MS_NDF_ERFC);
-        local_83 = _e77;
+        local_81 = _e77;
     } else {
-        local_83 = false;
+        local_81 = false;
     }
-    bool _e79 = local_83;
+    bool _e79 = local_81;
     if (_e79) {
         float _e82 = ms_erfc_pdf(w_61, wm_39, mf_5.alpha, mf_5.table, ms_tables, _buffer_sizes);
         return _e82;
     }
     if (mf_5.ndf == MS_NDF_K0_) {
         bool _e89 = ms_door_has(MS_NDF_K0_);
-        local_84 = _e89;
+        local_82 = _e89;
     } else {
-        local_84 = false;
+        local_82 = false;
     }
-    bool _e91 = local_84;
+    bool _e91 = local_82;
     if (_e91) {
         float _e94 = ms_k0_pdf(w_61, wm_39, mf_5.alpha, mf_5.table, ms_tables, _buffer_sizes);
         return _e94;
     }
     if (mf_5.ndf == MS_NDF_BESSEL_K) {
         bool _e101 = ms_door_has(MS_NDF_BESSEL_K);
-        local_85 = _e101;
+        local_83 = _e101;
     } else {
-        local_85 = false;
+        local_83 = false;
     }
-    bool _e103 = local_85;
+    bool _e103 = local_83;
     if (_e103) {
         float _e106 = ms_bessel_k_pdf(w_61, wm_39, mf_5.alpha, mf_5.table, ms_tables, _buffer_sizes);
         return _e106;
     }
     if (mf_5.ndf == MS_NDF_GTR) {
         bool _e113 = ms_door_has(MS_NDF_GTR);
-        local_86 = _e113;
+        local_84 = _e113;
     } else {
-        local_86 = false;
+        local_84 = false;
     }
-    bool _e115 = local_86;
+    bool _e115 = local_84;
     if (_e115) {
         float _e118 = ms_gtr_pdf(w_61, wm_39, mf_5.alpha, mf_5.table, ms_tables, _buffer_sizes);
         return _e118;
@@ -5056,10 +5011,12 @@ float ms_pdf_dcos(
 MsSample ms_sample(
     MsMicrofacet mf_7,
     metal::float3 w_62,
-    metal::float2 u_38,
+    metal::float2 u_37,
     device type_7 const& ms_tables,
     constant _mslBufferSizes& _buffer_sizes
 ) {
+    bool local_85 = {};
+    bool local_86 = {};
     bool local_87 = {};
     bool local_88 = {};
     bool local_89 = {};
@@ -5068,116 +5025,114 @@ MsSample ms_sample(
     bool local_92 = {};
     bool local_93 = {};
     bool local_94 = {};
-    bool local_95 = {};
-    bool local_96 = {};
     if (mf_7.ndf == MS_NDF_GGX) {
         bool _e9 = ms_door_has(MS_NDF_GGX);
-        local_87 = _e9;
+        local_85 = _e9;
     } else {
-        local_87 = false;
+        local_85 = false;
     }
-    bool _e11 = local_87;
+    bool _e11 = local_85;
     if (_e11) {
-        MsSample _e13 = ms_ggx_sample(w_62, mf_7.alpha, u_38);
+        MsSample _e13 = ms_ggx_sample(w_62, mf_7.alpha, u_37);
         return _e13;
     }
     if (mf_7.ndf == MS_NDF_BECKMANN) {
         bool _e20 = ms_door_has(MS_NDF_BECKMANN);
-        local_88 = _e20;
+        local_86 = _e20;
     } else {
-        local_88 = false;
+        local_86 = false;
     }
-    bool _e22 = local_88;
+    bool _e22 = local_86;
     if (_e22) {
-        MsSample _e24 = ms_beckmann_sample(w_62, mf_7.alpha, u_38, ms_tables, _buffer_sizes);
+        MsSample _e24 = ms_beckmann_sample(w_62, mf_7.alpha, u_37, ms_tables, _buffer_sizes);
         return _e24;
     }
     if (mf_7.ndf == MS_NDF_DOUBLE_GGX) {
         bool _e31 = ms_door_has(MS_NDF_DOUBLE_GGX);
-        local_89 = _e31;
+        local_87 = _e31;
     } else {
-        local_89 = false;
+        local_87 = false;
     }
-    bool _e33 = local_89;
+    bool _e33 = local_87;
     if (_e33) {
-        MsSample _e35 = ms_double_ggx_sample(w_62, mf_7.alpha, u_38, ms_tables, _buffer_sizes);
+        MsSample _e35 = ms_double_ggx_sample(w_62, mf_7.alpha, u_37, ms_tables, _buffer_sizes);
         return _e35;
     }
     if (mf_7.ndf == MS_NDF_EXPONENTIAL) {
         bool _e42 = ms_door_has(MS_NDF_EXPONENTIAL);
-        local_90 = _e42;
+        local_88 = _e42;
     } else {
-        local_90 = false;
+        local_88 = false;
     }
-    bool _e44 = local_90;
+    bool _e44 = local_88;
     if (_e44) {
-        MsSample _e46 = ms_exponential_sample(w_62, mf_7.alpha, u_38, ms_tables, _buffer_sizes);
+        MsSample _e46 = ms_exponential_sample(w_62, mf_7.alpha, u_37, ms_tables, _buffer_sizes);
         return _e46;
     }
     if (mf_7.ndf == MS_NDF_STUDENT_T) {
         bool _e53 = ms_door_has(MS_NDF_STUDENT_T);
-        local_91 = _e53;
+        local_89 = _e53;
     } else {
-        local_91 = false;
+        local_89 = false;
     }
-    bool _e55 = local_91;
+    bool _e55 = local_89;
     if (_e55) {
-        MsSample _e58 = ms_student_t_sample(w_62, mf_7.alpha, u_38, mf_7.table, ms_tables, _buffer_sizes);
+        MsSample _e58 = ms_student_t_sample(w_62, mf_7.alpha, u_37, mf_7.table, ms_tables, _buffer_sizes);
         return _e58;
     }
     if (mf_7.ndf == MS_NDF_EI) {
         bool _e65 = ms_door_has(MS_NDF_EI);
-        local_92 = _e65;
+        local_90 = _e65;
     } else {
-        local_92 = false;
+        local_90 = false;
     }
-    bool _e67 = local_92;
+    bool _e67 = local_90;
     if (_e67) {
-        MsSample _e70 = ms_ei_sample(w_62, mf_7.alpha, u_38, mf_7.table, ms_tables, _buffer_sizes);
+        MsSample _e70 = ms_ei_sample(w_62, mf_7.alpha, u_37, mf_7.table, ms_tables, _buffer_sizes);
         return _e70;
     }
     if (mf_7.ndf == MS_NDF_ERFC) {
         bool _e77 = ms_door_has(MS_NDF_ERFC);
-        local_93 = _e77;
+        local_91 = _e77;
     } else {
-        local_93 = false;
+        local_91 = false;
     }
-    bool _e79 = local_93;
+    bool _e79 = local_91;
     if (_e79) {
-        MsSample _e82 = ms_erfc_sample(w_62, mf_7.alpha, u_38, mf_7.table, ms_tables, _buffer_sizes);
+        MsSample _e82 = ms_erfc_sample(w_62, mf_7.alpha, u_37, mf_7.table, ms_tables, _buffer_sizes);
         return _e82;
     }
     if (mf_7.ndf == MS_NDF_K0_) {
         bool _e89 = ms_door_has(MS_NDF_K0_);
-        local_94 = _e89;
+        local_92 = _e89;
     } else {
-        local_94 = false;
+        local_92 = false;
     }
-    bool _e91 = local_94;
+    bool _e91 = local_92;
     if (_e91) {
-        MsSample _e94 = ms_k0_sample(w_62, mf_7.alpha, u_38, mf_7.table, ms_tables, _buffer_sizes);
+        MsSample _e94 = ms_k0_sample(w_62, mf_7.alpha, u_37, mf_7.table, ms_tables, _buffer_sizes);
         return _e94;
     }
     if (mf_7.ndf == MS_NDF_BESSEL_K) {
         bool _e101 = ms_door_has(MS_NDF_BESSEL_K);
-        local_95 = _e101;
+        local_93 = _e101;
     } else {
-        local_95 = false;
+        local_93 = false;
     }
-    bool _e103 = local_95;
+    bool _e103 = local_93;
     if (_e103) {
-        MsSample _e106 = ms_bessel_k_sample(w_62, mf_7.alpha, u_38, mf_7.table, ms_tables, _buffer_sizes);
+        MsSample _e106 = ms_bessel_k_sample(w_62, mf_7.alpha, u_37, mf_7.table, ms_tables, _buffer_sizes);
         return _e106;
     }
     if (mf_7.ndf == MS_NDF_GTR) {
         bool _e113 = ms_door_has(MS_NDF_GTR);
-        local_96 = _e113;
+        local_94 = _e113;
     } else {
-        local_96 = false;
+        local_94 = false;
     }
-    bool _e115 = local_96;
+    bool _e115 = local_94;
     if (_e115) {
-        MsSample _e118 = ms_gtr_sample(w_62, mf_7.alpha, u_38, mf_7.table, ms_tables, _buffer_sizes);
+        MsSample _e118 = ms_gtr_sample(w_62, mf_7.alpha, u_37, mf_7.table, ms_tables, _buffer_sizes);
         return _e118;
     }
     return MsSample {metal::float3(0.0, 0.0, 1.0), 0.0};
@@ -5185,10 +5140,12 @@ MsSample ms_sample(
 
 MsSample ms_sample_dcos(
     MsMicrofacet mf_8,
-    metal::float2 u_39,
+    metal::float2 u_38,
     device type_7 const& ms_tables,
     constant _mslBufferSizes& _buffer_sizes
 ) {
+    bool local_95 = {};
+    bool local_96 = {};
     bool local_97 = {};
     bool local_98 = {};
     bool local_99 = {};
@@ -5197,116 +5154,114 @@ MsSample ms_sample_dcos(
     bool local_102 = {};
     bool local_103 = {};
     bool local_104 = {};
-    bool local_105 = {};
-    bool local_106 = {};
     if (mf_8.ndf == MS_NDF_GGX) {
         bool _e8 = ms_door_has(MS_NDF_GGX);
-        local_97 = _e8;
+        local_95 = _e8;
     } else {
-        local_97 = false;
+        local_95 = false;
     }
-    bool _e10 = local_97;
+    bool _e10 = local_95;
     if (_e10) {
-        MsSample _e12 = ms_ggx_sample_dcos(mf_8.alpha, u_39);
+        MsSample _e12 = ms_ggx_sample_dcos(mf_8.alpha, u_38);
         return _e12;
     }
     if (mf_8.ndf == MS_NDF_BECKMANN) {
         bool _e19 = ms_door_has(MS_NDF_BECKMANN);
-        local_98 = _e19;
+        local_96 = _e19;
     } else {
-        local_98 = false;
+        local_96 = false;
     }
-    bool _e21 = local_98;
+    bool _e21 = local_96;
     if (_e21) {
-        MsSample _e23 = ms_beckmann_sample_dcos(mf_8.alpha, u_39);
+        MsSample _e23 = ms_beckmann_sample_dcos(mf_8.alpha, u_38);
         return _e23;
     }
     if (mf_8.ndf == MS_NDF_DOUBLE_GGX) {
         bool _e30 = ms_door_has(MS_NDF_DOUBLE_GGX);
-        local_99 = _e30;
+        local_97 = _e30;
     } else {
-        local_99 = false;
+        local_97 = false;
     }
-    bool _e32 = local_99;
+    bool _e32 = local_97;
     if (_e32) {
-        MsSample _e34 = ms_double_ggx_sample_dcos(mf_8.alpha, u_39, ms_tables, _buffer_sizes);
+        MsSample _e34 = ms_double_ggx_sample_dcos(mf_8.alpha, u_38, ms_tables, _buffer_sizes);
         return _e34;
     }
     if (mf_8.ndf == MS_NDF_EXPONENTIAL) {
         bool _e41 = ms_door_has(MS_NDF_EXPONENTIAL);
-        local_100 = _e41;
+        local_98 = _e41;
     } else {
-        local_100 = false;
+        local_98 = false;
     }
-    bool _e43 = local_100;
+    bool _e43 = local_98;
     if (_e43) {
-        MsSample _e45 = ms_exponential_sample_dcos(mf_8.alpha, u_39, ms_tables, _buffer_sizes);
+        MsSample _e45 = ms_exponential_sample_dcos(mf_8.alpha, u_38, ms_tables, _buffer_sizes);
         return _e45;
     }
     if (mf_8.ndf == MS_NDF_STUDENT_T) {
         bool _e52 = ms_door_has(MS_NDF_STUDENT_T);
-        local_101 = _e52;
+        local_99 = _e52;
     } else {
-        local_101 = false;
+        local_99 = false;
     }
-    bool _e54 = local_101;
+    bool _e54 = local_99;
     if (_e54) {
-        MsSample _e57 = ms_student_t_sample_dcos(mf_8.alpha, u_39, mf_8.table, ms_tables, _buffer_sizes);
+        MsSample _e57 = ms_student_t_sample_dcos(mf_8.alpha, u_38, mf_8.table, ms_tables, _buffer_sizes);
         return _e57;
     }
     if (mf_8.ndf == MS_NDF_EI) {
         bool _e64 = ms_door_has(MS_NDF_EI);
-        local_102 = _e64;
+        local_100 = _e64;
     } else {
-        local_102 = false;
+        local_100 = false;
     }
-    bool _e66 = local_102;
+    bool _e66 = local_100;
     if (_e66) {
-        MsSample _e69 = ms_ei_sample_dcos(mf_8.alpha, u_39, mf_8.table, ms_tables, _buffer_sizes);
+        MsSample _e69 = ms_ei_sample_dcos(mf_8.alpha, u_38, mf_8.table, ms_tables, _buffer_sizes);
         return _e69;
     }
     if (mf_8.ndf == MS_NDF_ERFC) {
         bool _e76 = ms_door_has(MS_NDF_ERFC);
-        local_103 = _e76;
+        local_101 = _e76;
     } else {
-        local_103 = false;
+        local_101 = false;
     }
-    bool _e78 = local_103;
+    bool _e78 = local_101;
     if (_e78) {
-        MsSample _e81 = ms_erfc_sample_dcos(mf_8.alpha, u_39, mf_8.table, ms_tables, _buffer_sizes);
+        MsSample _e81 = ms_erfc_sample_dcos(mf_8.alpha, u_38, mf_8.table, ms_tables, _buffer_sizes);
         return _e81;
     }
     if (mf_8.ndf == MS_NDF_K0_) {
         bool _e88 = ms_door_has(MS_NDF_K0_);
-        local_104 = _e88;
+        local_102 = _e88;
     } else {
-        local_104 = false;
+        local_102 = false;
     }
-    bool _e90 = local_104;
+    bool _e90 = local_102;
     if (_e90) {
-        MsSample _e93 = ms_k0_sample_dcos(mf_8.alpha, u_39, mf_8.table, ms_tables, _buffer_sizes);
+        MsSample _e93 = ms_k0_sample_dcos(mf_8.alpha, u_38, mf_8.table, ms_tables, _buffer_sizes);
         return _e93;
     }
     if (mf_8.ndf == MS_NDF_BESSEL_K) {
         bool _e100 = ms_door_has(MS_NDF_BESSEL_K);
-        local_105 = _e100;
+        local_103 = _e100;
     } else {
-        local_105 = false;
+        local_103 = false;
     }
-    bool _e102 = local_105;
+    bool _e102 = local_103;
     if (_e102) {
-        MsSample _e105 = ms_bessel_k_sample_dcos(mf_8.alpha, u_39, mf_8.table, ms_tables, _buffer_sizes);
+        MsSample _e105 = ms_bessel_k_sample_dcos(mf_8.alpha, u_38, mf_8.table, ms_tables, _buffer_sizes);
         return _e105;
     }
     if (mf_8.ndf == MS_NDF_GTR) {
         bool _e112 = ms_door_has(MS_NDF_GTR);
-        local_106 = _e112;
+        local_104 = _e112;
     } else {
-        local_106 = false;
+        local_104 = false;
     }
-    bool _e114 = local_106;
+    bool _e114 = local_104;
     if (_e114) {
-        MsSample _e117 = ms_gtr_sample_dcos(mf_8.alpha, u_39, mf_8.table, ms_tables, _buffer_sizes);
+        MsSample _e117 = ms_gtr_sample_dcos(mf_8.alpha, u_38, mf_8.table, ms_tables, _buffer_sizes);
         return _e117;
     }
     return MsSample {metal::float3(0.0, 0.0, 1.0), 0.0};
@@ -5327,13 +5282,13 @@ bool ms_on_horizon(
 bool ms_usable(
     float v_15
 ) {
-    bool local_107 = {};
+    bool local_105 = {};
     if (v_15 >= 0.000000000000000000011754944) {
-        local_107 = v_15 <= 340282350000000000000000000000000000000.0;
+        local_105 = v_15 <= 340282350000000000000000000000000000000.0;
     } else {
-        local_107 = false;
+        local_105 = false;
     }
-    bool _e8 = local_107;
+    bool _e8 = local_105;
     return _e8;
 }
 
@@ -5378,31 +5333,31 @@ metal::float3 ms_conductor_lobe_normal(
     metal::float3 wo_24,
     metal::float3 wi_24
 ) {
+    bool local_106 = {};
+    bool local_107 = {};
     bool local_108 = {};
-    bool local_109 = {};
-    bool local_110 = {};
     bool _e3 = ms_same_hemisphere(wo_24, wi_24);
     if (!(!(_e3))) {
         bool _e9 = ms_on_horizon(wo_24.z);
-        local_108 = _e9;
+        local_106 = _e9;
+    } else {
+        local_106 = true;
+    }
+    bool _e11 = local_106;
+    if (!(_e11)) {
+        bool _e16 = ms_on_horizon(wi_24.z);
+        local_107 = _e16;
+    } else {
+        local_107 = true;
+    }
+    bool _e18 = local_107;
+    if (!(_e18)) {
+        bool _e23 = ms_effectively_smooth(c_8.mf);
+        local_108 = _e23;
     } else {
         local_108 = true;
     }
-    bool _e11 = local_108;
-    if (!(_e11)) {
-        bool _e16 = ms_on_horizon(wi_24.z);
-        local_109 = _e16;
-    } else {
-        local_109 = true;
-    }
-    bool _e18 = local_109;
-    if (!(_e18)) {
-        bool _e23 = ms_effectively_smooth(c_8.mf);
-        local_110 = _e23;
-    } else {
-        local_110 = true;
-    }
-    bool _e25 = local_110;
+    bool _e25 = local_108;
     if (_e25) {
         return metal::float3(0.0);
     }
@@ -5475,11 +5430,11 @@ MsBsdfSample ms_conductor_sample(
     MsConductor c_12,
     metal::float3 wo_28,
     float uc,
-    metal::float2 u_40,
+    metal::float2 u_39,
     device type_7 const& ms_tables,
     constant _mslBufferSizes& _buffer_sizes
 ) {
-    bool local_111 = {};
+    bool local_109 = {};
     MsBsdfSample none = MsBsdfSample {metal::float3(0.0), 0.0, metal::float3(0.0), 0u, 1.0};
     bool _e13 = ms_on_horizon(wo_28.z);
     if (_e13) {
@@ -5492,16 +5447,16 @@ MsBsdfSample ms_conductor_sample(
         metal::float3 _e29 = ms_fresnel_eval(c_12.fresnel, metal::abs(wo_28.z));
         return MsBsdfSample {wi_33, 1.0, _e29 * k_15, 3u, 1.0};
     }
-    MsSample _e36 = ms_sample(c_12.mf, wo_28, u_40, ms_tables, _buffer_sizes);
+    MsSample _e36 = ms_sample(c_12.mf, wo_28, u_39, ms_tables, _buffer_sizes);
     metal::float3 _e38 = ms_reflect(wo_28, _e36.wm);
     bool _e39 = ms_same_hemisphere(wo_28, _e38);
     if (!(!(_e39))) {
         bool _e45 = ms_on_horizon(_e38.z);
-        local_111 = _e45;
+        local_109 = _e45;
     } else {
-        local_111 = true;
+        local_109 = true;
     }
-    bool _e47 = local_111;
+    bool _e47 = local_109;
     if (_e47) {
         return none;
     }
@@ -5529,14 +5484,14 @@ MsBsdfSample ms_conductor_sample(
 bool ms_dielectric_smooth(
     MsDielectric d_1
 ) {
-    bool local_112 = {};
+    bool local_110 = {};
     if (!((d_1.eta == 1.0))) {
         bool _e8 = ms_effectively_smooth(d_1.mf);
-        local_112 = _e8;
+        local_110 = _e8;
     } else {
-        local_112 = true;
+        local_110 = true;
     }
-    bool _e10 = local_112;
+    bool _e10 = local_110;
     return _e10;
 }
 
@@ -5556,21 +5511,21 @@ metal::float4 ms_dielectric_half(
     metal::float3 wo_30,
     metal::float3 wi_29
 ) {
-    bool local_113 = {};
+    bool local_111 = {};
     metal::float3 wm_41 = {};
     float etap_4 = 1.0;
-    bool local_114 = {};
+    bool local_112 = {};
     metal::float4 none_1 = metal::float4(0.0);
     float co_2 = wo_30.z;
     float ci_1 = wi_29.z;
     bool _e7 = ms_on_horizon(co_2);
     if (!(_e7)) {
         bool _e11 = ms_on_horizon(ci_1);
-        local_113 = _e11;
+        local_111 = _e11;
     } else {
-        local_113 = true;
+        local_111 = true;
     }
-    bool _e13 = local_113;
+    bool _e13 = local_111;
     if (_e13) {
         return none_1;
     }
@@ -5592,11 +5547,11 @@ metal::float4 ms_dielectric_half(
     if (!(((_e29 * ci_1) < 0.0))) {
         metal::float3 _e36 = wm_41;
         float _e37 = ms_dot(_e36, wo_30);
-        local_114 = (_e37 * co_2) < 0.0;
+        local_112 = (_e37 * co_2) < 0.0;
     } else {
-        local_114 = true;
+        local_112 = true;
     }
-    bool _e42 = local_114;
+    bool _e42 = local_112;
     if (_e42) {
         return none_1;
     }
@@ -5720,14 +5675,14 @@ MsBsdfSample ms_dielectric_sample(
     MsDielectric d_8,
     metal::float3 wo_35,
     float uc_2,
-    metal::float2 u_41,
+    metal::float2 u_40,
     device type_7 const& ms_tables,
     constant _mslBufferSizes& _buffer_sizes
 ) {
+    bool local_113 = {};
+    bool local_114 = {};
     bool local_115 = {};
     bool local_116 = {};
-    bool local_117 = {};
-    bool local_118 = {};
     MsBsdfSample none_3 = MsBsdfSample {metal::float3(0.0), 0.0, metal::float3(0.0), 0u, 1.0};
     bool _e13 = ms_on_horizon(wo_35.z);
     if (_e13) {
@@ -5738,7 +5693,7 @@ MsBsdfSample ms_dielectric_sample(
         MsBsdfSample _e15 = ms_dielectric_sample_smooth(d_8, wo_35, uc_2);
         return _e15;
     }
-    MsSample _e17 = ms_sample(d_8.mf, wo_35, u_41, ms_tables, _buffer_sizes);
+    MsSample _e17 = ms_sample(d_8.mf, wo_35, u_40, ms_tables, _buffer_sizes);
     metal::float3 wm_45 = _e17.wm;
     float _e19 = ms_dot(wo_35, wm_45);
     float _e21 = ms_fresnel_dielectric(_e19, d_8.eta);
@@ -5747,11 +5702,11 @@ MsBsdfSample ms_dielectric_sample(
         bool _e24 = ms_same_hemisphere(wo_35, _e23);
         if (!(!(_e24))) {
             bool _e30 = ms_on_horizon(_e23.z);
-            local_115 = _e30;
+            local_113 = _e30;
         } else {
-            local_115 = true;
+            local_113 = true;
         }
-        bool _e32 = local_115;
+        bool _e32 = local_113;
         if (_e32) {
             return none_3;
         }
@@ -5765,11 +5720,11 @@ MsBsdfSample ms_dielectric_sample(
         float pdf_1 = (_e17.pdf * _e21) / (4.0 * metal::abs(_e19));
         bool _e47 = ms_usable(pdf_1);
         if (!(!(_e47))) {
-            local_116 = !((f_6 <= 340282350000000000000000000000000000000.0));
+            local_114 = !((f_6 <= 340282350000000000000000000000000000000.0));
         } else {
-            local_116 = true;
+            local_114 = true;
         }
-        bool _e56 = local_116;
+        bool _e56 = local_114;
         if (_e56) {
             return none_3;
         }
@@ -5784,11 +5739,11 @@ MsBsdfSample ms_dielectric_sample(
     bool _e68 = ms_same_hemisphere(wo_35, wi_36);
     if (!(_e68)) {
         bool _e73 = ms_on_horizon(wi_36.z);
-        local_117 = _e73;
+        local_115 = _e73;
     } else {
-        local_117 = true;
+        local_115 = true;
     }
-    bool _e75 = local_117;
+    bool _e75 = local_115;
     if (_e75) {
         return none_3;
     }
@@ -5803,11 +5758,11 @@ MsBsdfSample ms_dielectric_sample(
     float _e86 = ms_dielectric_f_transmission(d_8, wo_35, wi_36, wm_45, _e83, etap_6, t_18, ms_tables, _buffer_sizes);
     bool _e87 = ms_usable(pdf_2);
     if (!(!(_e87))) {
-        local_118 = !((_e86 <= 340282350000000000000000000000000000000.0));
+        local_116 = !((_e86 <= 340282350000000000000000000000000000000.0));
     } else {
-        local_118 = true;
+        local_116 = true;
     }
-    bool _e96 = local_118;
+    bool _e96 = local_116;
     if (_e96) {
         return none_3;
     }
@@ -5825,9 +5780,9 @@ uint ms_k_index(
     constant _mslBufferSizes& _buffer_sizes
 ) {
     uint i_16 = id_13.x + ((id_13.y * groups_13.x) * 64u);
-    uint n_14 = naga_div(1 + (_buffer_sizes.size1 - 0 - 16) / 16, MS_K_IN);
-    if (i_16 >= n_14) {
-        return n_14;
+    uint n_15 = naga_div(1 + (_buffer_sizes.size1 - 0 - 16) / 16, MS_K_IN);
+    if (i_16 >= n_15) {
+        return n_15;
     }
     return i_16;
 }
@@ -5880,20 +5835,20 @@ kernel void ms_k_ggx_eval(
         return;
     }
     metal::float4 _e12 = ms_in[_e2 * MS_K_IN];
-    metal::float2 a_27 = _e12.xy;
+    metal::float2 a_25 = _e12.xy;
     metal::float4 _e20 = ms_in[(_e2 * MS_K_IN) + 1u];
     metal::float3 wo_36 = _e20.xyz;
     metal::float4 _e28 = ms_in[(_e2 * MS_K_IN) + 2u];
     metal::float3 wm_46 = _e28.xyz;
-    float _e34 = ms_ggx_d(wm_46, a_27);
-    float _e35 = ms_ggx_lambda(wo_36, a_27);
-    float _e36 = ms_ggx_g1_(wo_36, a_27);
-    float _e37 = ms_ggx_g2_(wo_36, wm_46, a_27);
+    float _e34 = ms_ggx_d(wm_46, a_25);
+    float _e35 = ms_ggx_lambda(wo_36, a_25);
+    float _e36 = ms_ggx_g1_(wo_36, a_25);
+    float _e37 = ms_ggx_g2_(wo_36, wm_46, a_25);
     ms_out[_e2 * MS_K_OUT] = metal::float4(_e34, _e35, _e36, _e37);
-    float _e45 = ms_ggx_g2_separable(wo_36, wm_46, a_27);
-    float _e46 = ms_ggx_pdf(wo_36, wm_46, a_27);
-    float _e47 = ms_ggx_pdf_dcos(wm_46, a_27);
-    float _e48 = ms_ggx_pdf_bounded(wo_36, wm_46, a_27);
+    float _e45 = ms_ggx_g2_separable(wo_36, wm_46, a_25);
+    float _e46 = ms_ggx_pdf(wo_36, wm_46, a_25);
+    float _e47 = ms_ggx_pdf_dcos(wm_46, a_25);
+    float _e48 = ms_ggx_pdf_bounded(wo_36, wm_46, a_25);
     ms_out[(_e2 * MS_K_OUT) + 1u] = metal::float4(_e45, _e46, _e47, _e48);
     return;
 }
@@ -5914,20 +5869,20 @@ kernel void ms_k_beckmann_eval(
         return;
     }
     metal::float4 _e12 = ms_in[_e2 * MS_K_IN];
-    metal::float2 a_28 = _e12.xy;
+    metal::float2 a_26 = _e12.xy;
     metal::float4 _e20 = ms_in[(_e2 * MS_K_IN) + 1u];
     metal::float3 wo_37 = _e20.xyz;
     metal::float4 _e28 = ms_in[(_e2 * MS_K_IN) + 2u];
     metal::float3 wm_47 = _e28.xyz;
-    float _e34 = ms_beckmann_d(wm_47, a_28);
-    float _e35 = ms_beckmann_lambda(wo_37, a_28, ms_tables, _buffer_sizes);
-    float _e36 = ms_beckmann_g1_(wo_37, a_28, ms_tables, _buffer_sizes);
-    float _e37 = ms_beckmann_g2_(wo_37, wm_47, a_28, ms_tables, _buffer_sizes);
+    float _e34 = ms_beckmann_d(wm_47, a_26);
+    float _e35 = ms_beckmann_lambda(wo_37, a_26, ms_tables, _buffer_sizes);
+    float _e36 = ms_beckmann_g1_(wo_37, a_26, ms_tables, _buffer_sizes);
+    float _e37 = ms_beckmann_g2_(wo_37, wm_47, a_26, ms_tables, _buffer_sizes);
     ms_out[_e2 * MS_K_OUT] = metal::float4(_e34, _e35, _e36, _e37);
-    float _e45 = ms_beckmann_g2_separable(wo_37, wm_47, a_28, ms_tables, _buffer_sizes);
-    float _e46 = ms_beckmann_pdf(wo_37, wm_47, a_28, ms_tables, _buffer_sizes);
-    float _e47 = ms_beckmann_pdf_dcos(wm_47, a_28);
-    float _e51 = ms_pdf(MsMicrofacet {MS_NDF_BECKMANN, {}, a_28, 0u}, wo_37, wm_47, ms_tables, _buffer_sizes);
+    float _e45 = ms_beckmann_g2_separable(wo_37, wm_47, a_26, ms_tables, _buffer_sizes);
+    float _e46 = ms_beckmann_pdf(wo_37, wm_47, a_26, ms_tables, _buffer_sizes);
+    float _e47 = ms_beckmann_pdf_dcos(wm_47, a_26);
+    float _e51 = ms_pdf(MsMicrofacet {MS_NDF_BECKMANN, {}, a_26, 0u}, wo_37, wm_47, ms_tables, _buffer_sizes);
     ms_out[(_e2 * MS_K_OUT) + 1u] = metal::float4(_e45, _e46, _e47, _e51);
     return;
 }

@@ -1358,27 +1358,22 @@ fn ms_dg_lambda_ends(u: f32, a: f32) -> f32 {
     return (1.2533141373155003 * sx) * (1.0 + r * (0.125 - r * (3.0 / 128.0))) - 0.5;
 }
 
-// Smith Λ(w), Λ(−w) = Λ(w): isotropic from u = |w.z| (the Rust lambda32), anisotropic from
-// x = (αx²w.x² + αy²w.y²)/(2w.z²) (lambda_aniso); the ends at the projected roughness
+// Smith Λ(w), Λ(−w) = Λ(w), from x = (αx²w.x² + αy²w.y²)/(2w.z²) for isotropic materials too
+// (the Rust lambda_aniso, which the door takes for both: 1 − u² of a rounded unit vector has
+// lost its digits near the normal); the ends at the projected roughness
 // α̃² = (αx²x² + αy²y²)/(x² + y²) (the Rust lambda_projected).
 fn ms_double_ggx_lambda(w: vec3<f32>, alpha: vec2<f32>) -> f32 {
     let u = abs(w.z);
-    var x: f32;
-    if alpha.x == alpha.y {
-        let a = alpha.x;
-        x = 0.5 * a * a * ((1.0 - u) * (1.0 + u)) / (u * u);
-    } else {
-        let sx = alpha.x * w.x;
-        let sy = alpha.y * w.y;
-        x = 0.5 * ((sx * sx + sy * sy) / (w.z * w.z));
-    }
+    let sx = alpha.x * w.x;
+    let sy = alpha.y * w.y;
+    let x = 0.5 * ((sx * sx + sy * sy) / (w.z * w.z));
     // 2^−30 ≤ x < 2^16 (false for NaN).
     if x >= 9.313225746154785e-10 && x < 65536.0 {
         return ms_dg_lambda_table(x);
     }
     var a = alpha.x;
     let s2 = w.x * w.x + w.y * w.y;
-    if alpha.x != alpha.y && s2 > 0.0 {
+    if s2 > 0.0 {
         a = sqrt((alpha.x * alpha.x * w.x * w.x + alpha.y * alpha.y * w.y * w.y) / s2);
     }
     return ms_dg_lambda_ends(u, a);
@@ -1597,27 +1592,22 @@ fn ms_exp_lambda_z(z: f32) -> f32 {
     return 0.0;
 }
 
-// Smith Λ(w), Λ(−w) = Λ(w): q = 4u²/(α²(1 − u)(1 + u)) at u = |w.z| where isotropic (the Rust
-// q_of), q = 4w.z²/(αx²w.x² + αy²w.y²) where anisotropic; the ends at z = 2u/(α̃√((1 − u)(1 +
-// u))), α̃ the projected roughness (the Rust lambda_projected).
+// Smith Λ(w), Λ(−w) = Λ(w), from q = 4w.z²/(αx²w.x² + αy²w.y²) for isotropic materials too
+// (the Rust lambda_aniso, which the door takes for both: 1 − u² of a rounded unit vector has
+// lost its digits near the normal); the ends at z = 2u/(α̃√((1 − u)(1 + u))), α̃ the projected
+// roughness (the Rust lambda_projected).
 fn ms_exponential_lambda(w: vec3<f32>, alpha: vec2<f32>) -> f32 {
     let u = abs(w.z);
-    var q: f32;
-    if alpha.x == alpha.y {
-        let a = alpha.x;
-        q = 4.0 * u * u / (a * a * ((1.0 - u) * (1.0 + u)));
-    } else {
-        let sx = alpha.x * w.x;
-        let sy = alpha.y * w.y;
-        q = 4.0 * (w.z * w.z) / (sx * sx + sy * sy);
-    }
+    let sx = alpha.x * w.x;
+    let sy = alpha.y * w.y;
+    let q = 4.0 * (w.z * w.z) / (sx * sx + sy * sy);
     // 2^−24 ≤ q < 4096 (false for NaN).
     if q >= 5.960464477539063e-8 && q < 4096.0 {
         return ms_exp_lambda_q(q);
     }
     var a = alpha.x;
     let s2 = w.x * w.x + w.y * w.y;
-    if alpha.x != alpha.y && s2 > 0.0 {
+    if s2 > 0.0 {
         a = sqrt((alpha.x * alpha.x * w.x * w.x + alpha.y * alpha.y * w.y * w.y) / s2);
     }
     return ms_exp_lambda_z((u + u) / (a * sqrt((1.0 - u) * (1.0 + u))));
@@ -2381,45 +2371,48 @@ fn ms_gtr_d(wm: vec3<f32>, alpha: vec2<f32>, table: u32) -> f32 {
     return exp(norm.x - head.x * log(x));
 }
 
-// Λ past the tables at u = |cos θ| (the Rust lambda_outside and lambda_cot_ends): +∞ at
-// u = 0, Λ(1) = 0 past u = 1, NaN for NaN; the grazing end m₀/a − ½ + m₁a for a = cot θ < 1,
-// else (K₀ + K₁ r²) r² with r² = 1/a² = (1 − u)(1 + u)/u² formed directly.
-fn ms_gtr_lambda_ends(table: u32, u_in: f32) -> f32 {
-    if u_in != u_in {
-        return u_in;
+// Λ past the tables at a = cot θ (the Rust lambda_cot_ends, which the Rust f32 path reaches
+// through its f64 lambda_cot): the grazing end m₀/a − ½ + m₁a for a < 1 (+∞ at a = 0), else
+// (K₀ + K₁ r²) r² with r² = 1/a² (0 at a = +∞, the normal); NaN for NaN.
+fn ms_gtr_lambda_cot_ends(table: u32, a: f32) -> f32 {
+    if a != a {
+        return a;
     }
-    let u = min(abs(u_in), 1.0);
-    if u == 0.0 {
-        return ms_inf();
-    }
-    let q = (1.0 - u) * (1.0 + u);
-    let a = u / sqrt(q);
     if a < 1.0 {
         let m = ms_tables[table + 1u];
         return m.z / a - 0.5 + m.w * a;
     }
     let k = ms_tables[table + 2u];
-    let r2 = q / (u * u);
+    let r2 = 1.0 / (a * a);
     return (k.x + k.y * r2) * r2;
 }
 
-// Λ(u) for u = |cos θ| ∈ [0, 1] (the Rust FittedGtr::lambda in f32): the u table below
-// u = ½, the w table at t = 1 − u (exact) from there, by t's bits (row and position s), then
-// the row's polynomial by Horner's rule (exp of it where the rows hold ln Λ); the ends past
-// the tables.
-fn ms_gtr_lambda_u(table: u32, u: f32) -> f32 {
+// Smith Λ(w), Λ(−w) = Λ(w), for w of any length (the Rust FittedGtr::lambda_vec in f32):
+// cos θ = u = |z|/n, n = √(s² + z²), s² = x² + y²; the u table below u = ½, the w table at
+// t = 1 − u = s²/(n(n + |z|)) from there (formed from the vector: 1 − u of a rounded unit
+// vector has lost its digits near the normal), by t's bits (row and position s), then the
+// row's polynomial by Horner's rule (exp of it where the rows hold ln Λ); past the tables
+// the ends at cot θ = |z|/s. +∞ on the horizon, 0 at the normal.
+fn ms_gtr_lambda(w: vec3<f32>, alpha: vec2<f32>, table: u32) -> f32 {
+    if ms_gtr_is_ggx(table) {
+        return ms_ggx_lambda(w, alpha);
+    }
     let head = ms_tables[table];
     let lay = ms_tables[table + 2u];
     let lim = ms_tables[table + 3u];
+    let z = abs(w.z);
+    let s2 = w.x * w.x + w.y * w.y;
+    let n = sqrt(s2 + z * z);
+    let u = z / n;
     var t = u;
     var off = lay.z;
     var lo = lim.x;
     if u >= 0.5 {
-        t = 1.0 - u;
+        t = s2 / (n * (n + z));
         off = lay.w;
         lo = lim.y;
     }
-    // (False for NaN and for t < 0, past u = 1.)
+    // (False for NaN.)
     if t >= lo {
         let bits = bitcast<u32>(t);
         let row = u32(clamp(i32(bits >> 18u) - i32(off), 0, i32(lim.z) - 1));
@@ -2436,15 +2429,7 @@ fn ms_gtr_lambda_u(table: u32, u: f32) -> f32 {
         }
         return exp(p);
     }
-    return ms_gtr_lambda_ends(table, u);
-}
-
-// Smith Λ(w), Λ(−w) = Λ(w): +∞ on the horizon, 0 at the normal.
-fn ms_gtr_lambda(w: vec3<f32>, alpha: vec2<f32>, table: u32) -> f32 {
-    if ms_gtr_is_ggx(table) {
-        return ms_ggx_lambda(w, alpha);
-    }
-    return ms_gtr_lambda_u(table, abs(w.z));
+    return ms_gtr_lambda_cot_ends(table, z / sqrt(s2));
 }
 
 // G1(w).

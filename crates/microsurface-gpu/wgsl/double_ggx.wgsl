@@ -64,27 +64,22 @@ fn ms_dg_lambda_ends(u: f32, a: f32) -> f32 {
     return (1.2533141373155003 * sx) * (1.0 + r * (0.125 - r * (3.0 / 128.0))) - 0.5;
 }
 
-// Smith Λ(w), Λ(−w) = Λ(w): isotropic from u = |w.z| (the Rust lambda32), anisotropic from
-// x = (αx²w.x² + αy²w.y²)/(2w.z²) (lambda_aniso); the ends at the projected roughness
+// Smith Λ(w), Λ(−w) = Λ(w), from x = (αx²w.x² + αy²w.y²)/(2w.z²) for isotropic materials too
+// (the Rust lambda_aniso, which the door takes for both: 1 − u² of a rounded unit vector has
+// lost its digits near the normal); the ends at the projected roughness
 // α̃² = (αx²x² + αy²y²)/(x² + y²) (the Rust lambda_projected).
 fn ms_double_ggx_lambda(w: vec3<f32>, alpha: vec2<f32>) -> f32 {
     let u = abs(w.z);
-    var x: f32;
-    if alpha.x == alpha.y {
-        let a = alpha.x;
-        x = 0.5 * a * a * ((1.0 - u) * (1.0 + u)) / (u * u);
-    } else {
-        let sx = alpha.x * w.x;
-        let sy = alpha.y * w.y;
-        x = 0.5 * ((sx * sx + sy * sy) / (w.z * w.z));
-    }
+    let sx = alpha.x * w.x;
+    let sy = alpha.y * w.y;
+    let x = 0.5 * ((sx * sx + sy * sy) / (w.z * w.z));
     // 2^−30 ≤ x < 2^16 (false for NaN).
     if x >= 9.313225746154785e-10 && x < 65536.0 {
         return ms_dg_lambda_table(x);
     }
     var a = alpha.x;
     let s2 = w.x * w.x + w.y * w.y;
-    if alpha.x != alpha.y && s2 > 0.0 {
+    if s2 > 0.0 {
         a = sqrt((alpha.x * alpha.x * w.x * w.x + alpha.y * alpha.y * w.y * w.y) / s2);
     }
     return ms_dg_lambda_ends(u, a);

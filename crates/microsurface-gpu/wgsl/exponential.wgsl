@@ -58,27 +58,22 @@ fn ms_exp_lambda_z(z: f32) -> f32 {
     return 0.0;
 }
 
-// Smith Λ(w), Λ(−w) = Λ(w): q = 4u²/(α²(1 − u)(1 + u)) at u = |w.z| where isotropic (the Rust
-// q_of), q = 4w.z²/(αx²w.x² + αy²w.y²) where anisotropic; the ends at z = 2u/(α̃√((1 − u)(1 +
-// u))), α̃ the projected roughness (the Rust lambda_projected).
+// Smith Λ(w), Λ(−w) = Λ(w), from q = 4w.z²/(αx²w.x² + αy²w.y²) for isotropic materials too
+// (the Rust lambda_aniso, which the door takes for both: 1 − u² of a rounded unit vector has
+// lost its digits near the normal); the ends at z = 2u/(α̃√((1 − u)(1 + u))), α̃ the projected
+// roughness (the Rust lambda_projected).
 fn ms_exponential_lambda(w: vec3<f32>, alpha: vec2<f32>) -> f32 {
     let u = abs(w.z);
-    var q: f32;
-    if alpha.x == alpha.y {
-        let a = alpha.x;
-        q = 4.0 * u * u / (a * a * ((1.0 - u) * (1.0 + u)));
-    } else {
-        let sx = alpha.x * w.x;
-        let sy = alpha.y * w.y;
-        q = 4.0 * (w.z * w.z) / (sx * sx + sy * sy);
-    }
+    let sx = alpha.x * w.x;
+    let sy = alpha.y * w.y;
+    let q = 4.0 * (w.z * w.z) / (sx * sx + sy * sy);
     // 2^−24 ≤ q < 4096 (false for NaN).
     if q >= 5.960464477539063e-8 && q < 4096.0 {
         return ms_exp_lambda_q(q);
     }
     var a = alpha.x;
     let s2 = w.x * w.x + w.y * w.y;
-    if alpha.x != alpha.y && s2 > 0.0 {
+    if s2 > 0.0 {
         a = sqrt((alpha.x * alpha.x * w.x * w.x + alpha.y * alpha.y * w.y * w.y) / s2);
     }
     return ms_exp_lambda_z((u + u) / (a * sqrt((1.0 - u) * (1.0 + u))));

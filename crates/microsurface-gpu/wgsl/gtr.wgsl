@@ -113,45 +113,48 @@ fn ms_gtr_d(wm: vec3<f32>, alpha: vec2<f32>, table: u32) -> f32 {
     return exp(norm.x - head.x * log(x));
 }
 
-// Λ past the tables at u = |cos θ| (the Rust lambda_outside and lambda_cot_ends): +∞ at
-// u = 0, Λ(1) = 0 past u = 1, NaN for NaN; the grazing end m₀/a − ½ + m₁a for a = cot θ < 1,
-// else (K₀ + K₁ r²) r² with r² = 1/a² = (1 − u)(1 + u)/u² formed directly.
-fn ms_gtr_lambda_ends(table: u32, u_in: f32) -> f32 {
-    if u_in != u_in {
-        return u_in;
+// Λ past the tables at a = cot θ (the Rust lambda_cot_ends, which the Rust f32 path reaches
+// through its f64 lambda_cot): the grazing end m₀/a − ½ + m₁a for a < 1 (+∞ at a = 0), else
+// (K₀ + K₁ r²) r² with r² = 1/a² (0 at a = +∞, the normal); NaN for NaN.
+fn ms_gtr_lambda_cot_ends(table: u32, a: f32) -> f32 {
+    if a != a {
+        return a;
     }
-    let u = min(abs(u_in), 1.0);
-    if u == 0.0 {
-        return ms_inf();
-    }
-    let q = (1.0 - u) * (1.0 + u);
-    let a = u / sqrt(q);
     if a < 1.0 {
         let m = ms_tables[table + 1u];
         return m.z / a - 0.5 + m.w * a;
     }
     let k = ms_tables[table + 2u];
-    let r2 = q / (u * u);
+    let r2 = 1.0 / (a * a);
     return (k.x + k.y * r2) * r2;
 }
 
-// Λ(u) for u = |cos θ| ∈ [0, 1] (the Rust FittedGtr::lambda in f32): the u table below
-// u = ½, the w table at t = 1 − u (exact) from there, by t's bits (row and position s), then
-// the row's polynomial by Horner's rule (exp of it where the rows hold ln Λ); the ends past
-// the tables.
-fn ms_gtr_lambda_u(table: u32, u: f32) -> f32 {
+// Smith Λ(w), Λ(−w) = Λ(w), for w of any length (the Rust FittedGtr::lambda_vec in f32):
+// cos θ = u = |z|/n, n = √(s² + z²), s² = x² + y²; the u table below u = ½, the w table at
+// t = 1 − u = s²/(n(n + |z|)) from there (formed from the vector: 1 − u of a rounded unit
+// vector has lost its digits near the normal), by t's bits (row and position s), then the
+// row's polynomial by Horner's rule (exp of it where the rows hold ln Λ); past the tables
+// the ends at cot θ = |z|/s. +∞ on the horizon, 0 at the normal.
+fn ms_gtr_lambda(w: vec3<f32>, alpha: vec2<f32>, table: u32) -> f32 {
+    if ms_gtr_is_ggx(table) {
+        return ms_ggx_lambda(w, alpha);
+    }
     let head = ms_tables[table];
     let lay = ms_tables[table + 2u];
     let lim = ms_tables[table + 3u];
+    let z = abs(w.z);
+    let s2 = w.x * w.x + w.y * w.y;
+    let n = sqrt(s2 + z * z);
+    let u = z / n;
     var t = u;
     var off = lay.z;
     var lo = lim.x;
     if u >= 0.5 {
-        t = 1.0 - u;
+        t = s2 / (n * (n + z));
         off = lay.w;
         lo = lim.y;
     }
-    // (False for NaN and for t < 0, past u = 1.)
+    // (False for NaN.)
     if t >= lo {
         let bits = bitcast<u32>(t);
         let row = u32(clamp(i32(bits >> 18u) - i32(off), 0, i32(lim.z) - 1));
@@ -168,15 +171,7 @@ fn ms_gtr_lambda_u(table: u32, u: f32) -> f32 {
         }
         return exp(p);
     }
-    return ms_gtr_lambda_ends(table, u);
-}
-
-// Smith Λ(w), Λ(−w) = Λ(w): +∞ on the horizon, 0 at the normal.
-fn ms_gtr_lambda(w: vec3<f32>, alpha: vec2<f32>, table: u32) -> f32 {
-    if ms_gtr_is_ggx(table) {
-        return ms_ggx_lambda(w, alpha);
-    }
-    return ms_gtr_lambda_u(table, abs(w.z));
+    return ms_gtr_lambda_cot_ends(table, z / sqrt(s2));
 }
 
 // G1(w).

@@ -146,18 +146,18 @@ float ms_inf() {
 vec2 ms_cos_sin_turn(float v) {
     float k_11 = roundEven((4.0 * v));
     float r_4 = (v - (0.25 * k_11));
-    float x_18 = (MS_TAU * r_4);
-    float x2_ = (x_18 * x_18);
-    float s_6 = (x_18 * (1.0 + (x2_ * (-0.16666667 + (x2_ * (0.008333333 + (x2_ * (-0.0001984127 + (x2_ * 2.7557319e-6)))))))));
+    float x_17 = (MS_TAU * r_4);
+    float x2_ = (x_17 * x_17);
+    float s_6 = (x_17 * (1.0 + (x2_ * (-0.16666667 + (x2_ * (0.008333333 + (x2_ * (-0.0001984127 + (x2_ * 2.7557319e-6)))))))));
     float c_13 = (1.0 + (x2_ * (-0.5 + (x2_ * (0.041666668 + (x2_ * (-0.0013888889 + (x2_ * (2.4801588e-5 + (x2_ * -2.755732e-7))))))))));
-    int q_2 = (int(k_11) & 3);
-    if ((q_2 == 0)) {
+    int q_1 = (int(k_11) & 3);
+    if ((q_1 == 0)) {
         return vec2(c_13, s_6);
     } else {
-        if ((q_2 == 1)) {
+        if ((q_1 == 1)) {
             return vec2(-(s_6), c_13);
         } else {
-            if ((q_2 == 2)) {
+            if ((q_1 == 2)) {
                 return vec2(-(c_13), -(s_6));
             }
         }
@@ -553,8 +553,8 @@ float ms_fresnel_f82_tint(float cos_i_3, float f0_1, float h) {
     float mu = min(max(cos_i_3, 0.0), 1.0);
     float m_8 = (1.0 - mu);
     float m5_ = ((((m_8 * m_8) * m_8) * m_8) * m_8);
-    float a_18 = (((f0_1 + ((1.0 - f0_1) * 0.46266437)) * (1.0 - h)) / 0.05665278);
-    float r_8 = ((f0_1 + ((1.0 - f0_1) * m5_)) - (((a_18 * mu) * m5_) * m_8));
+    float a_19 = (((f0_1 + ((1.0 - f0_1) * 0.46266437)) * (1.0 - h)) / 0.05665278);
+    float r_8 = ((f0_1 + ((1.0 - f0_1) * m5_)) - (((a_19 * mu) * m5_) * m_8));
     return min(max(r_8, 0.0), 1.0);
 }
 
@@ -596,17 +596,17 @@ float ms_ggx_d(vec3 wm_2, vec2 alpha) {
     if (!((z_6 > 0.0))) {
         return 0.0;
     }
-    float x_19 = (wm_2.x / alpha.x);
+    float x_18 = (wm_2.x / alpha.x);
     float y_4 = (wm_2.y / alpha.y);
-    float t_8 = (((x_19 * x_19) + (y_4 * y_4)) + (z_6 * z_6));
+    float t_8 = (((x_18 * x_18) + (y_4 * y_4)) + (z_6 * z_6));
     return (1.0 / ((((MS_PI * alpha.x) * alpha.y) * t_8) * t_8));
 }
 
 float ms_ggx_lambda(vec3 w_3, vec2 alpha_1) {
-    float x_20 = (alpha_1.x * w_3.x);
+    float x_19 = (alpha_1.x * w_3.x);
     float y_5 = (alpha_1.y * w_3.y);
     float z_7 = abs(w_3.z);
-    float t_9 = ((x_20 * x_20) + (y_5 * y_5));
+    float t_9 = ((x_19 * x_19) + (y_5 * y_5));
     float z2_ = (z_7 * z_7);
     float den = (2.0 * (z2_ + (z_7 * sqrt((z2_ + t_9)))));
     if (!((den > 0.0))) {
@@ -620,10 +620,10 @@ float ms_ggx_lambda(vec3 w_3, vec2 alpha_1) {
 }
 
 float ms_ggx_g1_(vec3 w_4, vec2 alpha_2) {
-    float x_21 = (alpha_2.x * w_4.x);
+    float x_20 = (alpha_2.x * w_4.x);
     float y_6 = (alpha_2.y * w_4.y);
     float z_8 = abs(w_4.z);
-    float den_1 = (z_8 + sqrt(((z_8 * z_8) + ((x_21 * x_21) + (y_6 * y_6)))));
+    float den_1 = (z_8 + sqrt(((z_8 * z_8) + ((x_20 * x_20) + (y_6 * y_6)))));
     if (!((den_1 > 0.0))) {
         return 0.0;
     }
@@ -682,13 +682,13 @@ float ms_ggx_pdf(vec3 w_5, vec3 wm_3, vec2 alpha_5) {
 
 vec3 ms_ggx_cap_normal_stretched(vec3 w_6, vec3 stretch, vec2 u, float len) {
     float inv = (1.0 / len);
-    float x_22 = ((stretch.x * w_6.x) * inv);
+    float x_21 = ((stretch.x * w_6.x) * inv);
     float y_7 = ((stretch.y * w_6.y) * inv);
     float z_10 = ((stretch.z * w_6.z) * inv);
     vec2 _e19 = ms_cos_sin_turn(u.x);
     float above = ((1.0 - u.y) * (1.0 + z_10));
-    float sin_ = sqrt(max((u.y * ((above * (1.0 + z_10)) + ((x_22 * x_22) + (y_7 * y_7)))), 0.0));
-    vec3 h_3 = vec3((stretch.x * ((sin_ * _e19.x) + x_22)), (stretch.y * ((sin_ * _e19.y) + y_7)), (stretch.z * above));
+    float sin_ = sqrt(max((u.y * ((above * (1.0 + z_10)) + ((x_21 * x_21) + (y_7 * y_7)))), 0.0));
+    vec3 h_3 = vec3((stretch.x * ((sin_ * _e19.x) + x_21)), (stretch.y * ((sin_ * _e19.y) + y_7)), (stretch.z * above));
     float n_12 = (1.0 / sqrt((((h_3.x * h_3.x) + (h_3.y * h_3.y)) + (h_3.z * h_3.z))));
     return (h_3 * n_12);
 }
@@ -782,13 +782,13 @@ MsBoundedCap ms_ggx_bounded_cap(vec3 w_10, vec2 alpha_11) {
     if (down) {
         return MsBoundedCap(_e18, _e18.z, 0.0);
     }
-    float a_19 = min(min(alpha_11.x, alpha_11.y), 1.0);
+    float a_20 = min(min(alpha_11.x, alpha_11.y), 1.0);
     float _e28 = v_2.x;
     float _e30 = v_2.x;
     float _e33 = v_2.y;
     float _e35 = v_2.y;
     float s_11 = (1.0 + sqrt(((_e28 * _e30) + (_e33 * _e35))));
-    float a2_1 = (a_19 * a_19);
+    float a2_1 = (a_20 * a_20);
     float s2_ = (s_11 * s_11);
     float _e44 = v_2.z;
     float _e47 = v_2.z;
@@ -1051,11 +1051,11 @@ float ms_zig_sample(uint at, bool normal, float w_11, inout MsSource src_1) {
                     }
                     {
                         float _e60 = ms_source_next(src_1);
-                        float a_20 = (-(log((1.0 - _e60))) / r_10);
+                        float a_21 = (-(log((1.0 - _e60))) / r_10);
                         float _e66 = ms_source_next(src_1);
                         float b_9 = -(log((1.0 - _e66)));
-                        if (((2.0 * b_9) > (a_20 * a_20))) {
-                            return (r_10 + a_20);
+                        if (((2.0 * b_9) > (a_21 * a_21))) {
+                            return (r_10 + a_21);
                         }
                     }
                 }
@@ -1160,23 +1160,23 @@ float ms_bk_erfc_ratio(float a_12) {
 float ms_bk_quantile(float u_10) {
     float sign_ = 1.0;
     float ratio = 0.0;
-    float q_3 = (2.0 * min(u_10, (1.0 - u_10)));
+    float q_2 = (2.0 * min(u_10, (1.0 - u_10)));
     if ((u_10 < 0.5)) {
         sign_ = -1.0;
     }
-    if (!((q_3 > 0.0))) {
+    if (!((q_2 > 0.0))) {
         float _e14 = sign_;
         return (-(_e14) * MS_BK_QUANTILE_EDGE);
     }
-    if ((q_3 >= 2.9802322e-8)) {
-        vec2 _e25 = ms_bk_segment(min(q_3, 0.99999994), MS_BK_ERFINV_Q_K0_, MS_BK_ERFINV_Q_K1_);
+    if ((q_2 >= 2.9802322e-8)) {
+        vec2 _e25 = ms_bk_segment(min(q_2, 0.99999994), MS_BK_ERFINV_Q_K0_, MS_BK_ERFINV_Q_K1_);
         uint i_7 = (2u * uint(_e25.x));
         vec4 _e34 = _group_1_binding_0_cs[(MS_BK_ERFINV_Q_AT + i_7)];
         vec4 _e41 = _group_1_binding_0_cs[((MS_BK_ERFINV_Q_AT + i_7) + 1u)];
         float _e43 = ms_bk_poly(_e34, _e41, _e25.y);
         ratio = _e43;
     } else {
-        float w_63 = min((-(log(q_3)) - 0.6931472), 127.99);
+        float w_63 = min((-(log(q_2)) - 0.6931472), 127.99);
         vec2 _e52 = ms_bk_segment(w_63, MS_BK_ERFINV_W_K0_, MS_BK_ERFINV_W_K1_);
         uint i_8 = (2u * uint(_e52.x));
         vec4 _e61 = _group_1_binding_0_cs[(MS_BK_ERFINV_W_AT + i_8)];
@@ -1186,7 +1186,7 @@ float ms_bk_quantile(float u_10) {
     }
     float _e71 = sign_;
     float _e74 = ratio;
-    return (_e71 * ((1.0 - q_3) * _e74));
+    return (_e71 * ((1.0 - q_2) * _e74));
 }
 
 float ms_bk_ln_1m(float xi) {
@@ -1203,7 +1203,7 @@ float ms_beckmann_d(vec3 wm_6, vec2 alpha_15) {
     bool local_9 = false;
     float z_11 = wm_6.z;
     float r_13 = (1.0 / (alpha_15.x * alpha_15.y));
-    float x_23 = ((wm_6.x * alpha_15.y) * r_13);
+    float x_22 = ((wm_6.x * alpha_15.y) * r_13);
     float y_8 = ((wm_6.y * alpha_15.x) * r_13);
     float z2_1 = (z_11 * z_11);
     if ((z_11 > 0.0)) {
@@ -1215,7 +1215,7 @@ float ms_beckmann_d(vec3 wm_6, vec2 alpha_15) {
     if (!(_e24)) {
         return 0.0;
     }
-    float e_3 = (((x_23 * x_23) + (y_8 * y_8)) / z2_1);
+    float e_3 = (((x_22 * x_22) + (y_8 * y_8)) / z2_1);
     if ((e_3 <= 80.0)) {
         return ((exp(-(e_3)) * r_13) / ((MS_PI * z2_1) * z2_1));
     }
@@ -1235,9 +1235,9 @@ float ms_beckmann_lambda_cot(float a_13) {
 }
 
 float ms_beckmann_lambda(vec3 w_14, vec2 alpha_16) {
-    float x_24 = (alpha_16.x * w_14.x);
+    float x_23 = (alpha_16.x * w_14.x);
     float y_9 = (alpha_16.y * w_14.y);
-    float s_12 = sqrt(((x_24 * x_24) + (y_9 * y_9)));
+    float s_12 = sqrt(((x_23 * x_23) + (y_9 * y_9)));
     if (!((s_12 > 0.0))) {
         return 0.0;
     }
@@ -1492,9 +1492,9 @@ vec3 ms_beckmann_sample_wm(vec3 w_17, vec2 alpha_23, vec2 u_13) {
     float _e53 = sp;
     float _e54 = x_5;
     float _e56 = cp;
-    float q_4 = (alpha_23.y * ((_e53 * _e54) + (_e56 * _e27)));
-    float n_13 = (1.0 / sqrt((((p_2 * p_2) + (q_4 * q_4)) + 1.0)));
-    vec3 _e71 = ms_facing(vec3((p_2 * n_13), (q_4 * n_13), n_13), w_17);
+    float q_3 = (alpha_23.y * ((_e53 * _e54) + (_e56 * _e27)));
+    float n_13 = (1.0 / sqrt((((p_2 * p_2) + (q_3 * q_3)) + 1.0)));
+    vec3 _e71 = ms_facing(vec3((p_2 * n_13), (q_3 * n_13), n_13), w_17);
     return _e71;
 }
 
@@ -1525,12 +1525,12 @@ float ms_dg_lambda_table(float x_7) {
 }
 
 float ms_dg_lambda_ends(float u_15, float a_15) {
-    float x_25 = ((((0.5 * a_15) * a_15) * ((1.0 - u_15) * (1.0 + u_15))) / (u_15 * u_15));
-    if ((x_25 < 9.313226e-10)) {
-        if ((x_25 <= 0.0)) {
+    float x_24 = ((((0.5 * a_15) * a_15) * ((1.0 - u_15) * (1.0 + u_15))) / (u_15 * u_15));
+    if ((x_24 < 9.313226e-10)) {
+        if ((x_24 <= 0.0)) {
             return 0.0;
         }
-        return ((0.5 * x_25) * (0.42278433 - log((0.5 * x_25))));
+        return ((0.5 * x_24) * (0.42278433 - log((0.5 * x_24))));
     }
     float sx_2 = ((a_15 * sqrt(((0.5 * (1.0 - u_15)) * (1.0 + u_15)))) / u_15);
     float r_15 = (1.0 / (sx_2 * sx_2));
@@ -1538,46 +1538,30 @@ float ms_dg_lambda_ends(float u_15, float a_15) {
 }
 
 float ms_double_ggx_lambda(vec3 w_19, vec2 alpha_25) {
-    float x_8 = 0.0;
     bool local_14 = false;
     float a_16 = 0.0;
-    bool local_15 = false;
-    float u_42 = abs(w_19.z);
-    if ((alpha_25.x == alpha_25.y)) {
-        float a_21 = alpha_25.x;
-        x_8 = ((((0.5 * a_21) * a_21) * ((1.0 - u_42) * (1.0 + u_42))) / (u_42 * u_42));
-    } else {
-        float sx_3 = (alpha_25.x * w_19.x);
-        float sy_2 = (alpha_25.y * w_19.y);
-        x_8 = (0.5 * (((sx_3 * sx_3) + (sy_2 * sy_2)) / (w_19.z * w_19.z)));
-    }
-    float _e35 = x_8;
-    if ((_e35 >= 9.313226e-10)) {
-        float _e40 = x_8;
-        local_14 = (_e40 < 65536.0);
+    float u_41 = abs(w_19.z);
+    float sx_3 = (alpha_25.x * w_19.x);
+    float sy_2 = (alpha_25.y * w_19.y);
+    float x_25 = (0.5 * (((sx_3 * sx_3) + (sy_2 * sy_2)) / (w_19.z * w_19.z)));
+    if ((x_25 >= 9.313226e-10)) {
+        local_14 = (x_25 < 65536.0);
     } else {
         local_14 = false;
     }
-    bool _e44 = local_14;
-    if (_e44) {
-        float _e45 = x_8;
-        float _e46 = ms_dg_lambda_table(_e45);
-        return _e46;
+    bool _e26 = local_14;
+    if (_e26) {
+        float _e27 = ms_dg_lambda_table(x_25);
+        return _e27;
     }
     a_16 = alpha_25.x;
     float s2_1 = ((w_19.x * w_19.x) + (w_19.y * w_19.y));
-    if ((alpha_25.x != alpha_25.y)) {
-        local_15 = (s2_1 > 0.0);
-    } else {
-        local_15 = false;
-    }
-    bool _e64 = local_15;
-    if (_e64) {
+    if ((s2_1 > 0.0)) {
         a_16 = sqrt((((((alpha_25.x * alpha_25.x) * w_19.x) * w_19.x) + (((alpha_25.y * alpha_25.y) * w_19.y) * w_19.y)) / s2_1));
     }
-    float _e82 = a_16;
-    float _e83 = ms_dg_lambda_ends(u_42, _e82);
-    return _e83;
+    float _e56 = a_16;
+    float _e57 = ms_dg_lambda_ends(u_41, _e56);
+    return _e57;
 }
 
 float ms_double_ggx_g1_(vec3 w_20, vec2 alpha_26) {
@@ -1589,13 +1573,13 @@ float ms_double_ggx_g1_(vec3 w_20, vec2 alpha_26) {
 }
 
 float ms_double_ggx_g2_(vec3 wo_11, vec3 wi_11, vec2 alpha_27) {
-    bool local_16 = false;
+    bool local_15 = false;
     if (!((wo_11.z == 0.0))) {
-        local_16 = (wi_11.z == 0.0);
+        local_15 = (wi_11.z == 0.0);
     } else {
-        local_16 = true;
+        local_15 = true;
     }
-    bool _e13 = local_16;
+    bool _e13 = local_15;
     if (_e13) {
         return 0.0;
     }
@@ -1620,23 +1604,23 @@ float ms_dg_kernel_row(uint i_1, float s_4) {
 }
 
 float ms_double_ggx_d(vec3 wm_9, vec2 alpha_28) {
-    bool local_17 = false;
+    bool local_16 = false;
     float z_14 = wm_9.z;
     float r_16 = (1.0 / (alpha_28.x * alpha_28.y));
     float x_26 = ((wm_9.x * alpha_28.y) * r_16);
     float y_10 = ((wm_9.y * alpha_28.x) * r_16);
-    float q_5 = ((x_26 * x_26) + (y_10 * y_10));
+    float q_4 = ((x_26 * x_26) + (y_10 * y_10));
     if (!((z_14 > 0.0))) {
         return ((z_14 != z_14) ? z_14 : 0.0);
     }
     float z2_2 = (z_14 * z_14);
-    float t_12 = (q_5 / z2_2);
+    float t_12 = (q_4 / z2_2);
     if ((t_12 >= 9.313226e-10)) {
-        local_17 = (t_12 < 1073741800.0);
+        local_16 = (t_12 < 1073741800.0);
     } else {
-        local_17 = false;
+        local_16 = false;
     }
-    bool _e34 = local_17;
+    bool _e34 = local_16;
     if (_e34) {
         vec2 _e38 = ms_fam_segment(t_12, MS_DG_D_K0_, MS_DG_D_K1_, MS_DG_D_M);
         float _e42 = ms_dg_kernel_row(uint(_e38.x), _e38.y);
@@ -1645,12 +1629,12 @@ float ms_double_ggx_d(vec3 wm_9, vec2 alpha_28) {
     if ((t_12 < 9.313226e-10)) {
         return (r_16 / ((MS_PI * z2_2) * z2_2));
     }
-    return (((((log(q_5) - (2.0 * log(z_14))) - MS_EULER_GAMMA) - 1.0) * r_16) / ((MS_PI * q_5) * q_5));
+    return (((((log(q_4) - (2.0 * log(z_14))) - MS_EULER_GAMMA) - 1.0) * r_16) / ((MS_PI * q_4) * q_4));
 }
 
 float ms_double_ggx_pdf(vec3 w_21, vec3 wm_10, vec2 alpha_29) {
     float c_3 = 0.0;
-    bool local_18 = false;
+    bool local_17 = false;
     float z_15 = abs(w_21.z);
     float _e5 = ms_dot(w_21, wm_10);
     c_3 = _e5;
@@ -1660,11 +1644,11 @@ float ms_double_ggx_pdf(vec3 w_21, vec3 wm_10, vec2 alpha_29) {
     }
     float _e12 = c_3;
     if ((_e12 > 0.0)) {
-        local_18 = (z_15 > 0.0);
+        local_17 = (z_15 > 0.0);
     } else {
-        local_18 = false;
+        local_17 = false;
     }
-    bool _e20 = local_18;
+    bool _e20 = local_17;
     if (!(_e20)) {
         return 0.0;
     }
@@ -1788,9 +1772,9 @@ float ms_exp_lambda_z(float z_1) {
     if ((z_1 < 0.00024414063)) {
         return (((0.63661975 / z_1) - 0.5) + (0.15915494 * z_1));
     }
-    float q_6 = (z_1 * z_1);
-    if ((q_6 < 4096.0)) {
-        float _e13 = ms_exp_lambda_q(q_6);
+    float q_5 = (z_1 * z_1);
+    if ((q_5 < 4096.0)) {
+        float _e13 = ms_exp_lambda_q(q_5);
         return _e13;
     }
     if ((z_1 < 512.0)) {
@@ -1810,46 +1794,30 @@ float ms_exp_lambda_z(float z_1) {
 }
 
 float ms_exponential_lambda(vec3 w_24, vec2 alpha_33) {
-    float q_1 = 0.0;
-    bool local_19 = false;
+    bool local_18 = false;
     float a_17 = 0.0;
-    bool local_20 = false;
-    float u_43 = abs(w_24.z);
-    if ((alpha_33.x == alpha_33.y)) {
-        float a_22 = alpha_33.x;
-        q_1 = (((4.0 * u_43) * u_43) / ((a_22 * a_22) * ((1.0 - u_43) * (1.0 + u_43))));
+    float u_42 = abs(w_24.z);
+    float sx_5 = (alpha_33.x * w_24.x);
+    float sy_4 = (alpha_33.y * w_24.y);
+    float q_6 = ((4.0 * (w_24.z * w_24.z)) / ((sx_5 * sx_5) + (sy_4 * sy_4)));
+    if ((q_6 >= 5.9604645e-8)) {
+        local_18 = (q_6 < 4096.0);
     } else {
-        float sx_5 = (alpha_33.x * w_24.x);
-        float sy_4 = (alpha_33.y * w_24.y);
-        q_1 = ((4.0 * (w_24.z * w_24.z)) / ((sx_5 * sx_5) + (sy_4 * sy_4)));
+        local_18 = false;
     }
-    float _e35 = q_1;
-    if ((_e35 >= 5.9604645e-8)) {
-        float _e40 = q_1;
-        local_19 = (_e40 < 4096.0);
-    } else {
-        local_19 = false;
-    }
-    bool _e44 = local_19;
-    if (_e44) {
-        float _e45 = q_1;
-        float _e46 = ms_exp_lambda_q(_e45);
-        return _e46;
+    bool _e26 = local_18;
+    if (_e26) {
+        float _e27 = ms_exp_lambda_q(q_6);
+        return _e27;
     }
     a_17 = alpha_33.x;
     float s2_4 = ((w_24.x * w_24.x) + (w_24.y * w_24.y));
-    if ((alpha_33.x != alpha_33.y)) {
-        local_20 = (s2_4 > 0.0);
-    } else {
-        local_20 = false;
-    }
-    bool _e64 = local_20;
-    if (_e64) {
+    if ((s2_4 > 0.0)) {
         a_17 = sqrt((((((alpha_33.x * alpha_33.x) * w_24.x) * w_24.x) + (((alpha_33.y * alpha_33.y) * w_24.y) * w_24.y)) / s2_4));
     }
-    float _e83 = a_17;
-    float _e92 = ms_exp_lambda_z(((u_43 + u_43) / (_e83 * sqrt(((1.0 - u_43) * (1.0 + u_43))))));
-    return _e92;
+    float _e57 = a_17;
+    float _e66 = ms_exp_lambda_z(((u_42 + u_42) / (_e57 * sqrt(((1.0 - u_42) * (1.0 + u_42))))));
+    return _e66;
 }
 
 float ms_exponential_g1_(vec3 w_25, vec2 alpha_34) {
@@ -1861,13 +1829,13 @@ float ms_exponential_g1_(vec3 w_25, vec2 alpha_34) {
 }
 
 float ms_exponential_g2_(vec3 wo_12, vec3 wi_12, vec2 alpha_35) {
-    bool local_21 = false;
+    bool local_19 = false;
     if (!((wo_12.z == 0.0))) {
-        local_21 = (wi_12.z == 0.0);
+        local_19 = (wi_12.z == 0.0);
     } else {
-        local_21 = true;
+        local_19 = true;
     }
-    bool _e13 = local_21;
+    bool _e13 = local_19;
     if (_e13) {
         return 0.0;
     }
@@ -1877,18 +1845,18 @@ float ms_exponential_g2_(vec3 wo_12, vec3 wi_12, vec2 alpha_35) {
 }
 
 float ms_exponential_d(vec3 wm_11, vec2 alpha_36) {
-    bool local_22 = false;
+    bool local_20 = false;
     float z_16 = wm_11.z;
     float r_18 = (1.0 / (alpha_36.x * alpha_36.y));
     float x_27 = ((wm_11.x * alpha_36.y) * r_18);
     float y_11 = ((wm_11.y * alpha_36.x) * r_18);
     float z2_3 = (z_16 * z_16);
     if ((z_16 > 0.0)) {
-        local_22 = (z2_3 > 0.0);
+        local_20 = (z2_3 > 0.0);
     } else {
-        local_22 = false;
+        local_20 = false;
     }
-    bool _e24 = local_22;
+    bool _e24 = local_20;
     if (!(_e24)) {
         return ((z_16 != z_16) ? z_16 : 0.0);
     }
@@ -1901,7 +1869,7 @@ float ms_exponential_d(vec3 wm_11, vec2 alpha_36) {
 
 float ms_exponential_pdf(vec3 w_26, vec3 wm_12, vec2 alpha_37) {
     float c_4 = 0.0;
-    bool local_23 = false;
+    bool local_21 = false;
     float z_17 = abs(w_26.z);
     float _e5 = ms_dot(w_26, wm_12);
     c_4 = _e5;
@@ -1911,11 +1879,11 @@ float ms_exponential_pdf(vec3 w_26, vec3 wm_12, vec2 alpha_37) {
     }
     float _e12 = c_4;
     if ((_e12 > 0.0)) {
-        local_23 = (z_17 > 0.0);
+        local_21 = (z_17 > 0.0);
     } else {
-        local_23 = false;
+        local_21 = false;
     }
-    bool _e20 = local_23;
+    bool _e20 = local_21;
     if (!(_e20)) {
         return 0.0;
     }
@@ -1953,10 +1921,10 @@ vec3 ms_exponential_sample_wm(vec3 w_in_4, vec2 alpha_39, vec2 u_20) {
     uvec2 state_5 = uvec2(0u);
     float v0_ = 0.0;
     float v1_ = 0.0;
-    float x_9 = 0.0;
+    float x_8 = 0.0;
     float y_2 = 0.0;
     int n_4 = 0;
-    bool local_24 = false;
+    bool local_22 = false;
     vec3 _e3 = ms_unit(w_in_4);
     w_27 = _e3;
     float _e6 = w_27.z;
@@ -2015,16 +1983,16 @@ vec3 ms_exponential_sample_wm(vec3 w_in_4, vec2 alpha_39, vec2 u_20) {
                 float _e85 = v0_;
                 float turn = (_e85 * inv_p_1);
                 vec2 _e87 = ms_cos_sin_turn(turn);
-                x_9 = (r_20 * _e87.x);
+                x_8 = (r_20 * _e87.x);
                 y_2 = (r_20 * _e87.y);
                 if (!((abs((turn - 0.5)) >= 0.25))) {
                     float _e100 = ms_stream_next(state_5);
-                    float _e102 = x_9;
-                    local_24 = ((_e100 * e_7) <= (e_7 + (h_7 * _e102)));
+                    float _e102 = x_8;
+                    local_22 = ((_e100 * e_7) <= (e_7 + (h_7 * _e102)));
                 } else {
-                    local_24 = true;
+                    local_22 = true;
                 }
-                bool _e107 = local_24;
+                bool _e107 = local_22;
                 if (_e107) {
                     break;
                 }
@@ -2034,19 +2002,19 @@ vec3 ms_exponential_sample_wm(vec3 w_in_4, vec2 alpha_39, vec2 u_20) {
                 float one_plus = (2.0 * (d_12 * inv_g));
                 float _e118 = v0_;
                 float one_minus = ((2.0 * (1.0 - _e118)) * (total * inv_g));
-                x_9 = (r_21 * sqrt(max((one_minus * one_plus), 0.0)));
+                x_8 = (r_21 * sqrt(max((one_minus * one_plus), 0.0)));
                 y_2 = (r_21 * (one_plus - 1.0));
                 break;
             }
         }
     }
     float _e137 = cp_1;
-    float _e138 = x_9;
+    float _e138 = x_8;
     float _e140 = sp_1;
     float _e141 = y_2;
     float p_4 = (alpha_39.x * ((_e137 * _e138) - (_e140 * _e141)));
     float _e146 = sp_1;
-    float _e147 = x_9;
+    float _e147 = x_8;
     float _e149 = cp_1;
     float _e150 = y_2;
     float q_7 = (alpha_39.y * ((_e146 * _e147) + (_e149 * _e150)));
@@ -2064,15 +2032,15 @@ MsSample ms_exponential_sample(vec3 w_28, vec2 alpha_40, vec2 u_21) {
 }
 
 float ms_shape_lambda_z(uint table, float z_2) {
-    bool local_25 = false;
+    bool local_23 = false;
     vec4 head_1 = _group_1_binding_0_cs[table];
     int k1_2 = int(head_1.y);
     if ((z_2 >= 5.9604645e-8)) {
-        local_25 = (z_2 < exp2(head_1.y));
+        local_23 = (z_2 < exp2(head_1.y));
     } else {
-        local_25 = false;
+        local_23 = false;
     }
-    bool _e15 = local_25;
+    bool _e15 = local_23;
     if (_e15) {
         vec2 _e18 = ms_fam_segment(z_2, MS_SHAPE_K0_, k1_2, MS_SHAPE_M);
         uint i_10 = ((table + MS_SHAPE_HEADER) + (2u * uint(_e18.x)));
@@ -2099,18 +2067,18 @@ float ms_shape_lambda_z(uint table, float z_2) {
 }
 
 float ms_shape_lambda(uint table_1, vec3 w_29, vec2 alpha_41) {
-    bool local_26 = false;
+    bool local_24 = false;
     float sx_7 = (alpha_41.x * w_29.x);
     float sy_6 = (alpha_41.y * w_29.y);
     float h_8 = sqrt(((sx_7 * sx_7) + (sy_6 * sy_6)));
     float z_18 = abs(w_29.z);
     if (!((h_8 > 0.0))) {
         if ((h_8 == 0.0)) {
-            local_26 = (z_18 > 0.0);
+            local_24 = (z_18 > 0.0);
         } else {
-            local_26 = false;
+            local_24 = false;
         }
-        bool _e25 = local_26;
+        bool _e25 = local_24;
         return (_e25 ? 0.0 : h_8);
     }
     if ((z_18 == 0.0)) {
@@ -2193,11 +2161,11 @@ vec4 ms_beckmann_sample_stream_above(vec3 v_8, vec2 alpha_42, inout MsSource src
     float h_1 = 0.0;
     float cp_2 = 1.0;
     float sp_2 = 0.0;
-    float x_10 = 0.0;
+    float x_9 = 0.0;
     int n_6 = 0;
+    bool local_25 = false;
+    bool local_26 = false;
     bool local_27 = false;
-    bool local_28 = false;
-    bool local_29 = false;
     float sx_8 = (alpha_42.x * v_8.x);
     float sy_7 = (alpha_42.y * v_8.y);
     float big = max(abs(sx_8), abs(sy_7));
@@ -2210,16 +2178,16 @@ vec4 ms_beckmann_sample_stream_above(vec3 v_8, vec2 alpha_42, inout MsSource src
     if ((_e29 == 0.0)) {
         float _e32 = ms_source_next(src_10);
         float _e33 = ms_zig_normal(_e32, src_10);
-        x_10 = (_e33 * 0.70710677);
+        x_9 = (_e33 * 0.70710677);
     } else {
         float _e36 = h_1;
         cp_2 = (sx_8 / _e36);
         float _e38 = h_1;
         sp_2 = (sy_7 / _e38);
         float _e41 = h_1;
-        float a_23 = (v_8.z / _e41);
-        float p_ray = (0.5 / (0.5 + (a_23 * MS_SQRT_PI)));
-        x_10 = uintBitsToFloat(2143289344u);
+        float a_22 = (v_8.z / _e41);
+        float p_ray = (0.5 / (0.5 + (a_22 * MS_SQRT_PI)));
+        x_9 = uintBitsToFloat(2143289344u);
         bool loop_init_6 = true;
         while(true) {
             if (!loop_init_6) {
@@ -2236,26 +2204,26 @@ vec4 ms_beckmann_sample_stream_above(vec3 v_8, vec2 alpha_42, inout MsSource src
                 float _e56 = ms_source_next(src_10);
                 if ((_e56 < p_ray)) {
                     float _e58 = ms_source_next_positive(src_10);
-                    x_10 = sqrt(-(log(_e58)));
+                    x_9 = sqrt(-(log(_e58)));
                     break;
                 }
                 float _e66 = ms_zig_normal(((_e56 - p_ray) / (1.0 - p_ray)), src_10);
                 float c_19 = (_e66 * 0.70710677);
                 if (!((c_19 >= 0.0))) {
-                    if ((c_19 > -(a_23))) {
+                    if ((c_19 > -(a_22))) {
                         float _e78 = ms_source_next(src_10);
-                        local_28 = ((_e78 * a_23) < (c_19 + a_23));
+                        local_26 = ((_e78 * a_22) < (c_19 + a_22));
                     } else {
-                        local_28 = false;
+                        local_26 = false;
                     }
-                    bool _e83 = local_28;
-                    local_27 = _e83;
+                    bool _e83 = local_26;
+                    local_25 = _e83;
                 } else {
-                    local_27 = true;
+                    local_25 = true;
                 }
-                bool _e85 = local_27;
+                bool _e85 = local_25;
                 if (_e85) {
-                    x_10 = c_19;
+                    x_9 = c_19;
                     break;
                 }
             }
@@ -2265,21 +2233,21 @@ vec4 ms_beckmann_sample_stream_above(vec3 v_8, vec2 alpha_42, inout MsSource src
     float _e90 = ms_zig_normal(_e89, src_10);
     float y_12 = (_e90 * 0.70710677);
     float _e94 = cp_2;
-    float _e95 = x_10;
+    float _e95 = x_9;
     float _e97 = sp_2;
     float p_6 = (alpha_42.x * ((_e94 * _e95) - (_e97 * y_12)));
     float _e102 = sp_2;
-    float _e103 = x_10;
+    float _e103 = x_9;
     float _e105 = cp_2;
     float q_8 = (alpha_42.y * ((_e102 * _e103) + (_e105 * y_12)));
     vec3 _e111 = ms_unit_normal(vec3(p_6, q_8, 1.0));
     if ((_e111.z > 0.0)) {
         float _e117 = ms_dot(_e111, v_8);
-        local_29 = (_e117 > 0.0);
+        local_27 = (_e117 > 0.0);
     } else {
-        local_29 = false;
+        local_27 = false;
     }
-    bool ok = local_29;
+    bool ok = local_27;
     return vec4(_e111, (ok ? 1.0 : 0.0));
 }
 
@@ -2304,7 +2272,7 @@ float ms_mixing_ln_beta(uint mixing, float k_6, bool biased, inout MsSource src_
 float ms_posterior_ln_beta(uint mixing_1, float k_7, float mean_beta, float z_3, float h_2, inout MsSource src_12) {
     int n_7 = 0;
     float keep = 0.0;
-    bool local_30 = false;
+    bool local_28 = false;
     float p_prior = (z_3 / (z_3 + ((0.2820948 * h_2) * mean_beta)));
     bool loop_init_7 = true;
     while(true) {
@@ -2325,15 +2293,15 @@ float ms_posterior_ln_beta(uint mixing_1, float k_7, float mean_beta, float z_3,
             float hb = (h_2 * exp(_e18));
             keep = 1.0;
             if ((hb > 0.0)) {
-                local_30 = (hb <= 3.4028235e38);
+                local_28 = (hb <= 3.4028235e38);
             } else {
-                local_30 = false;
+                local_28 = false;
             }
-            bool _e30 = local_30;
+            bool _e30 = local_28;
             if (_e30) {
-                float a_24 = (z_3 / hb);
-                float _e37 = ms_bk_erfc_ratio(a_24);
-                keep = ((z_3 + (((0.2820948 * hb) * exp((-(a_24) * a_24))) * _e37)) / (z_3 + (0.2820948 * hb)));
+                float a_23 = (z_3 / hb);
+                float _e37 = ms_bk_erfc_ratio(a_23);
+                keep = ((z_3 + (((0.2820948 * hb) * exp((-(a_23) * a_23))) * _e37)) / (z_3 + (0.2820948 * hb)));
             }
             float _e43 = ms_source_next(src_12);
             float _e44 = keep;
@@ -2403,7 +2371,7 @@ float ms_mixture_g2_(uint table_4, vec3 wo_13, vec3 wi_13, vec2 alpha_46) {
 
 float ms_mixture_pdf(uint table_5, vec3 w_33, vec3 wm_13, vec2 alpha_47, float ln_d) {
     float c_5 = 0.0;
-    bool local_31 = false;
+    bool local_29 = false;
     float z_19 = abs(w_33.z);
     float _e7 = ms_dot(w_33, wm_13);
     c_5 = _e7;
@@ -2413,11 +2381,11 @@ float ms_mixture_pdf(uint table_5, vec3 w_33, vec3 wm_13, vec2 alpha_47, float l
     }
     float _e14 = c_5;
     if ((_e14 > 0.0)) {
-        local_31 = (z_19 > 0.0);
+        local_29 = (z_19 > 0.0);
     } else {
-        local_31 = false;
+        local_29 = false;
     }
-    bool _e22 = local_31;
+    bool _e22 = local_29;
     if (!(_e22)) {
         return 0.0;
     }
@@ -2506,11 +2474,11 @@ float ms_ln_1p(float t_1) {
     return (log(v_18) * (t_1 / (v_18 - 1.0)));
 }
 
-float ms_expm1_(float x_11) {
-    if ((abs(x_11) < 0.5)) {
-        return (x_11 * (1.0 + (x_11 * (0.5 + (x_11 * (0.16666667 + (x_11 * (0.041666668 + (x_11 * (0.008333334 + (x_11 * (0.0013888889 + (x_11 * (0.0001984127 + (x_11 * (2.4801588e-5 + (x_11 * 2.7557319e-6)))))))))))))))));
+float ms_expm1_(float x_10) {
+    if ((abs(x_10) < 0.5)) {
+        return (x_10 * (1.0 + (x_10 * (0.5 + (x_10 * (0.16666667 + (x_10 * (0.041666668 + (x_10 * (0.008333334 + (x_10 * (0.0013888889 + (x_10 * (0.0001984127 + (x_10 * (2.4801588e-5 + (x_10 * 2.7557319e-6)))))))))))))))));
     }
-    return (exp(x_11) - 1.0);
+    return (exp(x_10) - 1.0);
 }
 
 float ms_student_t_d(vec3 wm_16, vec2 alpha_51, uint table_8) {
@@ -2554,7 +2522,7 @@ float ms_student_t_g2_(vec3 wo_14, vec3 wi_14, vec2 alpha_54, uint table_11) {
 
 float ms_student_t_pdf(vec3 w_36, vec3 wm_17, vec2 alpha_55, uint table_12) {
     float c_6 = 0.0;
-    bool local_32 = false;
+    bool local_30 = false;
     float z_21 = abs(w_36.z);
     float _e6 = ms_dot(w_36, wm_17);
     c_6 = _e6;
@@ -2564,11 +2532,11 @@ float ms_student_t_pdf(vec3 w_36, vec3 wm_17, vec2 alpha_55, uint table_12) {
     }
     float _e13 = c_6;
     if ((_e13 > 0.0)) {
-        local_32 = (z_21 > 0.0);
+        local_30 = (z_21 > 0.0);
     } else {
-        local_32 = false;
+        local_30 = false;
     }
-    bool _e21 = local_32;
+    bool _e21 = local_30;
     if (!(_e21)) {
         return 0.0;
     }
@@ -2626,13 +2594,13 @@ float ms_gtr_ln_1p(float t_2) {
 }
 
 float ms_gtr_ln(float v_10) {
-    bool local_33 = false;
+    bool local_31 = false;
     if ((v_10 >= 0.5)) {
-        local_33 = (v_10 <= 2.0);
+        local_31 = (v_10 <= 2.0);
     } else {
-        local_33 = false;
+        local_31 = false;
     }
-    bool _e8 = local_33;
+    bool _e8 = local_31;
     if (_e8) {
         float _e11 = ms_gtr_ln_1p((v_10 - 1.0));
         return _e11;
@@ -2640,24 +2608,24 @@ float ms_gtr_ln(float v_10) {
     return log(v_10);
 }
 
-float ms_gtr_ln_1p_over_x(float x_12) {
+float ms_gtr_ln_1p_over_x(float x_11) {
+    if ((x_11 == 0.0)) {
+        return 1.0;
+    }
+    float _e4 = ms_gtr_ln_1p(x_11);
+    return (_e4 / x_11);
+}
+
+float ms_gtr_expm1_over_x(float x_12) {
     if ((x_12 == 0.0)) {
         return 1.0;
     }
-    float _e4 = ms_gtr_ln_1p(x_12);
+    float _e4 = ms_expm1_(x_12);
     return (_e4 / x_12);
 }
 
-float ms_gtr_expm1_over_x(float x_13) {
-    if ((x_13 == 0.0)) {
-        return 1.0;
-    }
-    float _e4 = ms_expm1_(x_13);
-    return (_e4 / x_13);
-}
-
 float ms_gtr_d(vec3 wm_19, vec2 alpha_59, uint table_17) {
-    float x_14 = 0.0;
+    float x_13 = 0.0;
     vec4 head_2 = _group_1_binding_0_cs[table_17];
     if ((head_2.z < 0.5)) {
         float _e9 = ms_ggx_d(wm_19, alpha_59);
@@ -2667,68 +2635,70 @@ float ms_gtr_d(vec3 wm_19, vec2 alpha_59, uint table_17) {
     if (!((z_22 > 0.0))) {
         return ((z_22 != z_22) ? z_22 : 0.0);
     }
-    float a_25 = head_2.y;
-    x_14 = (a_25 * a_25);
+    float a_24 = head_2.y;
+    x_13 = (a_24 * a_24);
     if ((z_22 <= 1.0)) {
-        float az = (a_25 * z_22);
-        x_14 = (((wm_19.x * wm_19.x) + (wm_19.y * wm_19.y)) + (az * az));
+        float az = (a_24 * z_22);
+        x_13 = (((wm_19.x * wm_19.x) + (wm_19.y * wm_19.y)) + (az * az));
     }
     vec4 norm_1 = _group_1_binding_0_cs[(table_17 + 1u)];
     if ((head_2.x == 1.0)) {
-        float _e41 = x_14;
+        float _e41 = x_13;
         return (norm_1.y / _e41);
     }
-    float _e45 = x_14;
+    float _e45 = x_13;
     return exp((norm_1.x - (head_2.x * log(_e45))));
 }
 
-float ms_gtr_lambda_ends(uint table_18, float u_in) {
-    if ((u_in != u_in)) {
-        return u_in;
+float ms_gtr_lambda_cot_ends(uint table_18, float a_18) {
+    if ((a_18 != a_18)) {
+        return a_18;
     }
-    float u_44 = min(abs(u_in), 1.0);
-    if ((u_44 == 0.0)) {
-        float _e8 = ms_inf();
-        return _e8;
-    }
-    float q_10 = ((1.0 - u_44) * (1.0 + u_44));
-    float a_26 = (u_44 / sqrt(q_10));
-    if ((a_26 < 1.0)) {
+    if ((a_18 < 1.0)) {
         vec4 m_10 = _group_1_binding_0_cs[(table_18 + 1u)];
-        return (((m_10.z / a_26) - 0.5) + (m_10.w * a_26));
+        return (((m_10.z / a_18) - 0.5) + (m_10.w * a_18));
     }
     vec4 k_13 = _group_1_binding_0_cs[(table_18 + 2u)];
-    float r2_1 = (q_10 / (u_44 * u_44));
+    float r2_1 = (1.0 / (a_18 * a_18));
     return ((k_13.x + (k_13.y * r2_1)) * r2_1);
 }
 
-float ms_gtr_lambda_u(uint table_19, float u_26) {
+float ms_gtr_lambda(vec3 w_38, vec2 alpha_60, uint table_19) {
     float t_3 = 0.0;
     float off = 0.0;
     float lo_2 = 0.0;
+    bool _e3 = ms_gtr_is_ggx(table_19);
+    if (_e3) {
+        float _e4 = ms_ggx_lambda(w_38, alpha_60);
+        return _e4;
+    }
     vec4 head_3 = _group_1_binding_0_cs[table_19];
     vec4 lay = _group_1_binding_0_cs[(table_19 + 2u)];
     vec4 lim = _group_1_binding_0_cs[(table_19 + 3u)];
-    t_3 = u_26;
+    float z_23 = abs(w_38.z);
+    float s2_5 = ((w_38.x * w_38.x) + (w_38.y * w_38.y));
+    float n_14 = sqrt((s2_5 + (z_23 * z_23)));
+    float u_43 = (z_23 / n_14);
+    t_3 = u_43;
     off = lay.z;
     lo_2 = lim.x;
-    if ((u_26 >= 0.5)) {
-        t_3 = (1.0 - u_26);
+    if ((u_43 >= 0.5)) {
+        t_3 = (s2_5 / (n_14 * (n_14 + z_23)));
         off = lay.w;
         lo_2 = lim.y;
     }
-    float _e26 = t_3;
-    float _e27 = lo_2;
-    if ((_e26 >= _e27)) {
-        float _e29 = t_3;
-        uint bits_3 = floatBitsToUint(_e29);
-        float _e34 = off;
-        uint row = uint(min(max((int((bits_3 >> 18u)) - int(_e34)), 0), (int(lim.z) - 1)));
+    float _e43 = t_3;
+    float _e44 = lo_2;
+    if ((_e43 >= _e44)) {
+        float _e46 = t_3;
+        uint bits_3 = floatBitsToUint(_e46);
+        float _e51 = off;
+        uint row = uint(min(max((int((bits_3 >> 18u)) - int(_e51)), 0), (int(lim.z) - 1)));
         float s_15 = (uintBitsToFloat((1073741824u | ((bits_3 << 14u) >> 9u))) - 3.0);
         if ((head_3.z < 1.5)) {
-            vec4 _e61 = _group_1_binding_0_cs[((table_19 + MS_GTR_HEADER) + row)];
-            float _e62 = ms_fam_cubic(_e61, s_15);
-            return _e62;
+            vec4 _e78 = _group_1_binding_0_cs[((table_19 + MS_GTR_HEADER) + row)];
+            float _e79 = ms_fam_cubic(_e78, s_15);
+            return _e79;
         }
         uint i_13 = ((table_19 + MS_GTR_HEADER) + (2u * row));
         vec4 c_20 = _group_1_binding_0_cs[i_13];
@@ -2739,40 +2709,30 @@ float ms_gtr_lambda_u(uint table_19, float u_26) {
         }
         return exp(p_7);
     }
-    float _e93 = ms_gtr_lambda_ends(table_19, u_26);
-    return _e93;
+    float _e112 = ms_gtr_lambda_cot_ends(table_19, (z_23 / sqrt(s2_5)));
+    return _e112;
 }
 
-float ms_gtr_lambda(vec3 w_38, vec2 alpha_60, uint table_20) {
-    bool _e3 = ms_gtr_is_ggx(table_20);
-    if (_e3) {
-        float _e4 = ms_ggx_lambda(w_38, alpha_60);
-        return _e4;
-    }
-    float _e7 = ms_gtr_lambda_u(table_20, abs(w_38.z));
-    return _e7;
-}
-
-float ms_gtr_g1_(vec3 w_39, vec2 alpha_61, uint table_21) {
-    float _e3 = ms_gtr_lambda(w_39, alpha_61, table_21);
+float ms_gtr_g1_(vec3 w_39, vec2 alpha_61, uint table_20) {
+    float _e3 = ms_gtr_lambda(w_39, alpha_61, table_20);
     return (1.0 / (1.0 + _e3));
 }
 
-float ms_gtr_g2_(vec3 wo_15, vec3 wi_15, vec2 alpha_62, uint table_22) {
-    float _e4 = ms_gtr_lambda(wo_15, alpha_62, table_22);
-    float _e5 = ms_gtr_lambda(wi_15, alpha_62, table_22);
+float ms_gtr_g2_(vec3 wo_15, vec3 wi_15, vec2 alpha_62, uint table_21) {
+    float _e4 = ms_gtr_lambda(wo_15, alpha_62, table_21);
+    float _e5 = ms_gtr_lambda(wi_15, alpha_62, table_21);
     return (1.0 / (1.0 + (_e4 + _e5)));
 }
 
-float ms_gtr_pdf(vec3 w_40, vec3 wm_20, vec2 alpha_63, uint table_23) {
+float ms_gtr_pdf(vec3 w_40, vec3 wm_20, vec2 alpha_63, uint table_22) {
     float c_7 = 0.0;
-    bool local_34 = false;
-    bool _e4 = ms_gtr_is_ggx(table_23);
+    bool local_32 = false;
+    bool _e4 = ms_gtr_is_ggx(table_22);
     if (_e4) {
         float _e5 = ms_ggx_pdf(w_40, wm_20, alpha_63);
         return _e5;
     }
-    float z_23 = abs(w_40.z);
+    float z_24 = abs(w_40.z);
     float _e8 = ms_dot(w_40, wm_20);
     c_7 = _e8;
     if ((w_40.z < 0.0)) {
@@ -2781,28 +2741,28 @@ float ms_gtr_pdf(vec3 w_40, vec3 wm_20, vec2 alpha_63, uint table_23) {
     }
     float _e15 = c_7;
     if ((_e15 > 0.0)) {
-        local_34 = (z_23 > 0.0);
+        local_32 = (z_24 > 0.0);
     } else {
-        local_34 = false;
+        local_32 = false;
     }
-    bool _e23 = local_34;
+    bool _e23 = local_32;
     if (!(_e23)) {
         float _e25 = c_7;
         float _e26 = c_7;
         float _e27 = c_7;
         return ((_e26 != _e27) ? _e25 : 0.0);
     }
-    float _e31 = ms_gtr_g1_(w_40, alpha_63, table_23);
+    float _e31 = ms_gtr_g1_(w_40, alpha_63, table_22);
     float _e32 = c_7;
-    float _e34 = ms_gtr_d(wm_20, alpha_63, table_23);
-    return (((_e31 * _e32) * _e34) / z_23);
+    float _e34 = ms_gtr_d(wm_20, alpha_63, table_22);
+    return (((_e31 * _e32) * _e34) / z_24);
 }
 
-float ms_gtr_pdf_dcos(vec3 wm_21, vec2 alpha_64, uint table_24) {
+float ms_gtr_pdf_dcos(vec3 wm_21, vec2 alpha_64, uint table_23) {
     if (!((wm_21.z > 0.0))) {
         return 0.0;
     }
-    float _e8 = ms_gtr_d(wm_21, alpha_64, table_24);
+    float _e8 = ms_gtr_d(wm_21, alpha_64, table_23);
     return (_e8 * wm_21.z);
 }
 
@@ -2826,10 +2786,10 @@ float ms_gtr_ln_pos_sum(float f_2, float minus_one, float sum, bool over, float 
     return _e20;
 }
 
-float ms_gtr_tan2_(uint table_25, float xi_1) {
-    vec4 b0_1 = _group_1_binding_0_cs[(table_25 + 4u)];
-    vec4 b1_1 = _group_1_binding_0_cs[(table_25 + 5u)];
-    vec4 b2_1 = _group_1_binding_0_cs[(table_25 + 6u)];
+float ms_gtr_tan2_(uint table_24, float xi_1) {
+    vec4 b0_1 = _group_1_binding_0_cs[(table_24 + 4u)];
+    vec4 b1_1 = _group_1_binding_0_cs[(table_24 + 5u)];
+    vec4 b2_1 = _group_1_binding_0_cs[(table_24 + 6u)];
     float l = b0_1.x;
     float k_14 = b0_1.y;
     float kl = b0_1.z;
@@ -2854,15 +2814,15 @@ float ms_gtr_tan2_(uint table_25, float xi_1) {
     return ((exp(ell_1) * _e68) / _e70);
 }
 
-MsSample ms_gtr_sample_dcos(vec2 alpha_65, vec2 u_27, uint table_26) {
+MsSample ms_gtr_sample_dcos(vec2 alpha_65, vec2 u_26, uint table_25) {
     float r = 0.0;
     vec3 v_11 = vec3(0.0);
-    bool _e3 = ms_gtr_is_ggx(table_26);
+    bool _e3 = ms_gtr_is_ggx(table_25);
     if (_e3) {
-        MsSample _e4 = ms_ggx_sample_dcos(alpha_65, u_27);
+        MsSample _e4 = ms_ggx_sample_dcos(alpha_65, u_26);
         return _e4;
     }
-    float xi_2 = u_27.x;
+    float xi_2 = u_26.x;
     r = xi_2;
     if ((xi_2 <= 0.0)) {
         r = 0.0;
@@ -2872,12 +2832,12 @@ MsSample ms_gtr_sample_dcos(vec2 alpha_65, vec2 u_27, uint table_26) {
             r = _e12;
         } else {
             if ((xi_2 == xi_2)) {
-                float _e14 = ms_gtr_tan2_(table_26, xi_2);
+                float _e14 = ms_gtr_tan2_(table_25, xi_2);
                 r = sqrt(_e14);
             }
         }
     }
-    vec2 _e17 = ms_cos_sin_turn(u_27.y);
+    vec2 _e17 = ms_cos_sin_turn(u_26.y);
     float _e19 = r;
     if ((_e19 > 1.0)) {
         float _e24 = r;
@@ -2889,35 +2849,35 @@ MsSample ms_gtr_sample_dcos(vec2 alpha_65, vec2 u_27, uint table_26) {
     }
     vec3 _e36 = v_11;
     vec3 _e37 = ms_unit_normal(_e36);
-    float _e38 = ms_gtr_pdf_dcos(_e37, alpha_65, table_26);
+    float _e38 = ms_gtr_pdf_dcos(_e37, alpha_65, table_25);
     return MsSample(_e37, _e38);
 }
 
-float ms_gtr_phi(float k_8, float gamma, float a2_, float t_4, float x_15) {
-    float _e8 = ms_gtr_ln_1p(x_15);
-    return (((k_8 * t_4) + ((gamma - 2.0) * _e8)) - (gamma * log((a2_ + x_15))));
+float ms_gtr_phi(float k_8, float gamma, float a2_, float t_4, float x_14) {
+    float _e8 = ms_gtr_ln_1p(x_14);
+    return (((k_8 * t_4) + ((gamma - 2.0) * _e8)) - (gamma * log((a2_ + x_14))));
 }
 
 vec2 ms_gtr_column(float v_12, uint n_8) {
     uint i_2 = 0u;
     float frac = 0.0;
-    bool local_35 = false;
-    bool local_36 = false;
+    bool local_33 = false;
+    bool local_34 = false;
     uint b_10 = floatBitsToUint(v_12);
     uint e_9 = ((b_10 >> 23u) & 255u);
     frac = (v_12 * float(n_8));
     if ((e_9 > 0u)) {
-        local_35 = (e_9 < 255u);
+        local_33 = (e_9 < 255u);
     } else {
-        local_35 = false;
+        local_33 = false;
     }
-    bool _e19 = local_35;
+    bool _e19 = local_33;
     if (_e19) {
-        local_36 = ((150u - e_9) < 64u);
+        local_34 = ((150u - e_9) < 64u);
     } else {
-        local_36 = false;
+        local_34 = false;
     }
-    bool _e27 = local_36;
+    bool _e27 = local_34;
     if (_e27) {
         uint shift = (150u - e_9);
         uvec2 _e34 = ms_u32_mul_wide(((b_10 & 8388607u) | 8388608u), n_8);
@@ -2944,7 +2904,7 @@ vec2 ms_gtr_column(float v_12, uint n_8) {
     return vec2(float(_e87), _e89);
 }
 
-vec2 ms_gtr_radius(uint table_27, uint at_1, uint n_9, float k_9, float v_13, float keep_1) {
+vec2 ms_gtr_radius(uint table_26, uint at_1, uint n_9, float k_9, float v_13, float keep_1) {
     uint j_1 = 0u;
     float v2_ = 0.0;
     vec2 _e6 = ms_gtr_column(v_13, n_9);
@@ -2963,7 +2923,7 @@ vec2 ms_gtr_radius(uint table_27, uint at_1, uint n_9, float k_9, float v_13, fl
     vec4 pa = _group_1_binding_0_cs[(at_1 + (2u * _e38))];
     uint _e45 = j_1;
     vec4 pb = _group_1_binding_0_cs[((at_1 + (2u * _e45)) + 1u)];
-    vec4 head_4 = _group_1_binding_0_cs[table_27];
+    vec4 head_4 = _group_1_binding_0_cs[table_26];
     float a2_2 = (head_4.y * head_4.y);
     if ((pb.w < 0.5)) {
         float _e62 = v2_;
@@ -2990,7 +2950,7 @@ vec2 ms_gtr_radius(uint table_27, uint at_1, uint n_9, float k_9, float v_13, fl
     return vec2(r_26, ((keep_1 <= ratio_2) ? 1.0 : 0.0));
 }
 
-vec3 ms_gtr_sample_wm(vec3 w_41, vec2 u_28, uint table_28) {
+vec3 ms_gtr_sample_wm(vec3 w_41, vec2 u_27, uint table_27) {
     float sign_2 = 1.0;
     float cp_3 = 1.0;
     float sp_3 = 0.0;
@@ -3003,8 +2963,8 @@ vec3 ms_gtr_sample_wm(vec3 w_41, vec2 u_28, uint table_28) {
     int n_10 = 0;
     vec2 rr = vec2(0.0);
     vec3 v_14 = vec3(0.0);
-    vec4 head_5 = _group_1_binding_0_cs[table_28];
-    vec4 env = _group_1_binding_0_cs[(table_28 + 7u)];
+    vec4 head_5 = _group_1_binding_0_cs[table_27];
+    vec4 env = _group_1_binding_0_cs[(table_27 + 7u)];
     if ((w_41.z < 0.0)) {
         sign_2 = -1.0;
     }
@@ -3026,10 +2986,10 @@ vec3 ms_gtr_sample_wm(vec3 w_41, vec2 u_28, uint table_28) {
     float total_1 = (e_10 + g_2);
     float inv_p_2 = min((total_1 / e_10), MS_F32_MAX);
     float inv_g_1 = min((1.0 / g_2), MS_F32_MAX);
-    uvec2 _e55 = ms_stream_new(u_28);
+    uvec2 _e55 = ms_stream_new(u_27);
     state_6 = _e55;
-    v0_1 = u_28.x;
-    v1_1 = u_28.y;
+    v0_1 = u_27.x;
+    v1_1 = u_27.y;
     bool loop_init_8 = true;
     while(true) {
         if (!loop_init_8) {
@@ -3058,11 +3018,11 @@ vec3 ms_gtr_sample_wm(vec3 w_41, vec2 u_28, uint table_28) {
             rr = vec2(0.0);
             if (first) {
                 float _e95 = v1_1;
-                vec2 _e96 = ms_gtr_radius(table_28, (table_28 + uint(env.x)), uint(env.y), 1.0, _e95, _e86);
+                vec2 _e96 = ms_gtr_radius(table_27, (table_27 + uint(env.x)), uint(env.y), 1.0, _e95, _e86);
                 rr = _e96;
             } else {
                 float _e103 = v1_1;
-                vec2 _e104 = ms_gtr_radius(table_28, (table_28 + uint(env.z)), uint(env.w), 1.5, _e103, _e86);
+                vec2 _e104 = ms_gtr_radius(table_27, (table_27 + uint(env.z)), uint(env.w), 1.5, _e103, _e86);
                 rr = _e104;
             }
             float _e106 = rr.y;
@@ -3107,14 +3067,14 @@ vec3 ms_gtr_sample_wm(vec3 w_41, vec2 u_28, uint table_28) {
     float _e165 = dx;
     float _e167 = cp_3;
     float _e168 = dy;
-    float q_11 = ((_e164 * _e165) + (_e167 * _e168));
+    float q_10 = ((_e164 * _e165) + (_e167 * _e168));
     float _e171 = radius;
     float _e173 = radius;
-    v_14 = vec3((_e171 * p_8), (_e173 * q_11), 1.0);
+    v_14 = vec3((_e171 * p_8), (_e173 * q_10), 1.0);
     float _e178 = radius;
     if ((_e178 > 1.0)) {
         float _e181 = radius;
-        v_14 = vec3(p_8, q_11, (1.0 / _e181));
+        v_14 = vec3(p_8, q_10, (1.0 / _e181));
     }
     vec3 _e185 = v_14;
     vec3 _e186 = ms_unit_normal(_e185);
@@ -3122,15 +3082,15 @@ vec3 ms_gtr_sample_wm(vec3 w_41, vec2 u_28, uint table_28) {
     return _e187;
 }
 
-MsSample ms_gtr_sample(vec3 w_42, vec2 alpha_66, vec2 u_29, uint table_29) {
-    bool _e4 = ms_gtr_is_ggx(table_29);
+MsSample ms_gtr_sample(vec3 w_42, vec2 alpha_66, vec2 u_28, uint table_28) {
+    bool _e4 = ms_gtr_is_ggx(table_28);
     if (_e4) {
-        MsSample _e5 = ms_ggx_sample(w_42, alpha_66, u_29);
+        MsSample _e5 = ms_ggx_sample(w_42, alpha_66, u_28);
         return _e5;
     }
-    vec3 _e6 = ms_gtr_sample_wm(w_42, u_29, table_29);
+    vec3 _e6 = ms_gtr_sample_wm(w_42, u_28, table_28);
     vec3 _e7 = ms_unit(w_42);
-    float _e8 = ms_gtr_pdf(_e7, _e6, alpha_66, table_29);
+    float _e8 = ms_gtr_pdf(_e7, _e6, alpha_66, table_28);
     return MsSample(_e6, _e8);
 }
 
@@ -3165,24 +3125,24 @@ float ms_ei_d(vec3 wm_23, vec2 alpha_68) {
     return exp(_e2);
 }
 
-float ms_ei_lambda(vec3 w_43, vec2 alpha_69, uint table_30) {
-    float _e3 = ms_shape_lambda(table_30, w_43, alpha_69);
+float ms_ei_lambda(vec3 w_43, vec2 alpha_69, uint table_29) {
+    float _e3 = ms_shape_lambda(table_29, w_43, alpha_69);
     return _e3;
 }
 
-float ms_ei_g1_(vec3 w_44, vec2 alpha_70, uint table_31) {
-    float _e3 = ms_mixture_g1_(table_31, w_44, alpha_70);
+float ms_ei_g1_(vec3 w_44, vec2 alpha_70, uint table_30) {
+    float _e3 = ms_mixture_g1_(table_30, w_44, alpha_70);
     return _e3;
 }
 
-float ms_ei_g2_(vec3 wo_16, vec3 wi_16, vec2 alpha_71, uint table_32) {
-    float _e4 = ms_mixture_g2_(table_32, wo_16, wi_16, alpha_71);
+float ms_ei_g2_(vec3 wo_16, vec3 wi_16, vec2 alpha_71, uint table_31) {
+    float _e4 = ms_mixture_g2_(table_31, wo_16, wi_16, alpha_71);
     return _e4;
 }
 
-float ms_ei_pdf(vec3 w_45, vec3 wm_24, vec2 alpha_72, uint table_33) {
+float ms_ei_pdf(vec3 w_45, vec3 wm_24, vec2 alpha_72, uint table_32) {
     float _e4 = ms_ei_ln_d(wm_24, alpha_72);
-    float _e5 = ms_mixture_pdf(table_33, w_45, wm_24, alpha_72, _e4);
+    float _e5 = ms_mixture_pdf(table_32, w_45, wm_24, alpha_72, _e4);
     return _e5;
 }
 
@@ -3194,16 +3154,16 @@ float ms_ei_pdf_dcos(vec3 wm_25, vec2 alpha_73) {
     return (_e7 * wm_25.z);
 }
 
-MsSample ms_ei_sample_dcos(vec2 alpha_74, vec2 u_30, uint table_34) {
-    vec3 _e3 = ms_mixture_sample_dcos_wm(table_34, alpha_74, u_30);
+MsSample ms_ei_sample_dcos(vec2 alpha_74, vec2 u_29, uint table_33) {
+    vec3 _e3 = ms_mixture_sample_dcos_wm(table_33, alpha_74, u_29);
     float _e4 = ms_ei_pdf_dcos(_e3, alpha_74);
     return MsSample(_e3, _e4);
 }
 
-MsSample ms_ei_sample(vec3 w_46, vec2 alpha_75, vec2 u_31, uint table_35) {
-    vec3 _e4 = ms_mixture_sample_wm(table_35, w_46, alpha_75, u_31);
+MsSample ms_ei_sample(vec3 w_46, vec2 alpha_75, vec2 u_30, uint table_34) {
+    vec3 _e4 = ms_mixture_sample_wm(table_34, w_46, alpha_75, u_30);
     vec3 _e5 = ms_unit(w_46);
-    float _e6 = ms_ei_pdf(_e5, _e4, alpha_75, table_35);
+    float _e6 = ms_ei_pdf(_e5, _e4, alpha_75, table_34);
     return MsSample(_e4, _e6);
 }
 
@@ -3234,24 +3194,24 @@ float ms_erfc_d(vec3 wm_27, vec2 alpha_77) {
     return exp(_e2);
 }
 
-float ms_erfc_lambda(vec3 w_47, vec2 alpha_78, uint table_36) {
-    float _e3 = ms_shape_lambda(table_36, w_47, alpha_78);
+float ms_erfc_lambda(vec3 w_47, vec2 alpha_78, uint table_35) {
+    float _e3 = ms_shape_lambda(table_35, w_47, alpha_78);
     return _e3;
 }
 
-float ms_erfc_g1_(vec3 w_48, vec2 alpha_79, uint table_37) {
-    float _e3 = ms_mixture_g1_(table_37, w_48, alpha_79);
+float ms_erfc_g1_(vec3 w_48, vec2 alpha_79, uint table_36) {
+    float _e3 = ms_mixture_g1_(table_36, w_48, alpha_79);
     return _e3;
 }
 
-float ms_erfc_g2_(vec3 wo_17, vec3 wi_17, vec2 alpha_80, uint table_38) {
-    float _e4 = ms_mixture_g2_(table_38, wo_17, wi_17, alpha_80);
+float ms_erfc_g2_(vec3 wo_17, vec3 wi_17, vec2 alpha_80, uint table_37) {
+    float _e4 = ms_mixture_g2_(table_37, wo_17, wi_17, alpha_80);
     return _e4;
 }
 
-float ms_erfc_pdf(vec3 w_49, vec3 wm_28, vec2 alpha_81, uint table_39) {
+float ms_erfc_pdf(vec3 w_49, vec3 wm_28, vec2 alpha_81, uint table_38) {
     float _e4 = ms_erfc_ln_d(wm_28, alpha_81);
-    float _e5 = ms_mixture_pdf(table_39, w_49, wm_28, alpha_81, _e4);
+    float _e5 = ms_mixture_pdf(table_38, w_49, wm_28, alpha_81, _e4);
     return _e5;
 }
 
@@ -3263,23 +3223,23 @@ float ms_erfc_pdf_dcos(vec3 wm_29, vec2 alpha_82) {
     return (_e7 * wm_29.z);
 }
 
-MsSample ms_erfc_sample_dcos(vec2 alpha_83, vec2 u_32, uint table_40) {
-    vec3 _e3 = ms_mixture_sample_dcos_wm(table_40, alpha_83, u_32);
+MsSample ms_erfc_sample_dcos(vec2 alpha_83, vec2 u_31, uint table_39) {
+    vec3 _e3 = ms_mixture_sample_dcos_wm(table_39, alpha_83, u_31);
     float _e4 = ms_erfc_pdf_dcos(_e3, alpha_83);
     return MsSample(_e3, _e4);
 }
 
-MsSample ms_erfc_sample(vec3 w_50, vec2 alpha_84, vec2 u_33, uint table_41) {
-    vec3 _e4 = ms_mixture_sample_wm(table_41, w_50, alpha_84, u_33);
+MsSample ms_erfc_sample(vec3 w_50, vec2 alpha_84, vec2 u_32, uint table_40) {
+    vec3 _e4 = ms_mixture_sample_wm(table_40, w_50, alpha_84, u_32);
     vec3 _e5 = ms_unit(w_50);
-    float _e6 = ms_erfc_pdf(_e5, _e4, alpha_84, table_41);
+    float _e6 = ms_erfc_pdf(_e5, _e4, alpha_84, table_40);
     return MsSample(_e4, _e6);
 }
 
 float ms_k0_ln_profile(float r_3) {
-    float z_24 = (2.0 * r_3);
-    float _e3 = ms_k0e(z_24);
-    return (log(((2.0 * _e3) / MS_PI)) - z_24);
+    float z_25 = (2.0 * r_3);
+    float _e3 = ms_k0e(z_25);
+    return (log(((2.0 * _e3) / MS_PI)) - z_25);
 }
 
 float ms_k0_ln_d(vec3 wm_30, vec2 alpha_85) {
@@ -3304,24 +3264,24 @@ float ms_k0_d(vec3 wm_31, vec2 alpha_86) {
     return exp(_e2);
 }
 
-float ms_k0_lambda(vec3 w_51, vec2 alpha_87, uint table_42) {
-    float _e3 = ms_shape_lambda(table_42, w_51, alpha_87);
+float ms_k0_lambda(vec3 w_51, vec2 alpha_87, uint table_41) {
+    float _e3 = ms_shape_lambda(table_41, w_51, alpha_87);
     return _e3;
 }
 
-float ms_k0_g1_(vec3 w_52, vec2 alpha_88, uint table_43) {
-    float _e3 = ms_mixture_g1_(table_43, w_52, alpha_88);
+float ms_k0_g1_(vec3 w_52, vec2 alpha_88, uint table_42) {
+    float _e3 = ms_mixture_g1_(table_42, w_52, alpha_88);
     return _e3;
 }
 
-float ms_k0_g2_(vec3 wo_18, vec3 wi_18, vec2 alpha_89, uint table_44) {
-    float _e4 = ms_mixture_g2_(table_44, wo_18, wi_18, alpha_89);
+float ms_k0_g2_(vec3 wo_18, vec3 wi_18, vec2 alpha_89, uint table_43) {
+    float _e4 = ms_mixture_g2_(table_43, wo_18, wi_18, alpha_89);
     return _e4;
 }
 
-float ms_k0_pdf(vec3 w_53, vec3 wm_32, vec2 alpha_90, uint table_45) {
+float ms_k0_pdf(vec3 w_53, vec3 wm_32, vec2 alpha_90, uint table_44) {
     float _e4 = ms_k0_ln_d(wm_32, alpha_90);
-    float _e5 = ms_mixture_pdf(table_45, w_53, wm_32, alpha_90, _e4);
+    float _e5 = ms_mixture_pdf(table_44, w_53, wm_32, alpha_90, _e4);
     return _e5;
 }
 
@@ -3333,21 +3293,21 @@ float ms_k0_pdf_dcos(vec3 wm_33, vec2 alpha_91) {
     return (_e7 * wm_33.z);
 }
 
-MsSample ms_k0_sample_dcos(vec2 alpha_92, vec2 u_34, uint table_46) {
-    vec3 _e3 = ms_mixture_sample_dcos_wm(table_46, alpha_92, u_34);
+MsSample ms_k0_sample_dcos(vec2 alpha_92, vec2 u_33, uint table_45) {
+    vec3 _e3 = ms_mixture_sample_dcos_wm(table_45, alpha_92, u_33);
     float _e4 = ms_k0_pdf_dcos(_e3, alpha_92);
     return MsSample(_e3, _e4);
 }
 
-MsSample ms_k0_sample(vec3 w_54, vec2 alpha_93, vec2 u_35, uint table_47) {
-    vec3 _e4 = ms_mixture_sample_wm(table_47, w_54, alpha_93, u_35);
+MsSample ms_k0_sample(vec3 w_54, vec2 alpha_93, vec2 u_34, uint table_46) {
+    vec3 _e4 = ms_mixture_sample_wm(table_46, w_54, alpha_93, u_34);
     vec3 _e5 = ms_unit(w_54);
-    float _e6 = ms_k0_pdf(_e5, _e4, alpha_93, table_47);
+    float _e6 = ms_k0_pdf(_e5, _e4, alpha_93, table_46);
     return MsSample(_e4, _e6);
 }
 
-float ms_bessel_k_h(uint at_2, vec4 head, float x_16) {
-    vec2 _e7 = ms_bk_segment(x_16, int(head.y), int(head.z));
+float ms_bessel_k_h(uint at_2, vec4 head, float x_15) {
+    vec2 _e7 = ms_bk_segment(x_15, int(head.y), int(head.z));
     uint i_15 = ((at_2 + 1u) + (2u * uint(_e7.x)));
     vec4 _e17 = _group_1_binding_0_cs[i_15];
     vec4 _e22 = _group_1_binding_0_cs[(i_15 + 1u)];
@@ -3355,49 +3315,49 @@ float ms_bessel_k_h(uint at_2, vec4 head, float x_16) {
     return _e24;
 }
 
-float ms_bessel_k_ln_profile(uint table_48, float x_17) {
-    float _e7 = _group_1_binding_0_cs[(table_48 + 2u)].w;
-    uint at_3 = (table_48 + uint(_e7));
+float ms_bessel_k_ln_profile(uint table_47, float x_16) {
+    float _e7 = _group_1_binding_0_cs[(table_47 + 2u)].w;
+    uint at_3 = (table_47 + uint(_e7));
     vec4 head_6 = _group_1_binding_0_cs[at_3];
-    if (!((x_17 < exp2(head_6.z)))) {
-        return ((x_17 != x_17) ? x_17 : -1e30);
+    if (!((x_16 < exp2(head_6.z)))) {
+        return ((x_16 != x_16) ? x_16 : -1e30);
     }
     float x0_1 = exp2(head_6.y);
-    if ((x_17 < x0_1)) {
+    if ((x_16 < x0_1)) {
         float _e23 = ms_bessel_k_h(at_3, head_6, x0_1);
         float h0_ = (_e23 - (2.0 * x0_1));
         if ((head_6.x < 0.0)) {
-            return (h0_ + ((2.0 * head_6.x) * log((x_17 / x0_1))));
+            return (h0_ + ((2.0 * head_6.x) * log((x_16 / x0_1))));
         }
         if ((head_6.x == 0.0)) {
-            return (h0_ + log((log(x_17) / log(x0_1))));
+            return (h0_ + log((log(x_16) / log(x0_1))));
         }
         return h0_;
     }
-    float _e45 = ms_bessel_k_h(at_3, head_6, x_17);
-    return (_e45 - (2.0 * x_17));
+    float _e45 = ms_bessel_k_h(at_3, head_6, x_16);
+    return (_e45 - (2.0 * x_16));
 }
 
-float ms_bessel_k_ln_d(vec3 wm_34, vec2 alpha_94, uint table_49) {
+float ms_bessel_k_ln_d(vec3 wm_34, vec2 alpha_94, uint table_48) {
     if (!((wm_34.z > 0.0))) {
         return ((wm_34.z != wm_34.z) ? wm_34.z : -1e30);
     }
     float _e13 = ms_mixture_r(wm_34, alpha_94);
     if ((_e13 == 0.0)) {
-        float _e19 = _group_1_binding_0_cs[table_49].x;
+        float _e19 = _group_1_binding_0_cs[table_48].x;
         float nu = (_e19 - 1.0);
         if ((nu > 0.0)) {
             return (-(log((((MS_PI * nu) * alpha_94.x) * alpha_94.y))) - (4.0 * log(wm_34.z)));
         }
         return 1e30;
     }
-    float _e38 = ms_bessel_k_ln_profile(table_49, _e13);
+    float _e38 = ms_bessel_k_ln_profile(table_48, _e13);
     float _e39 = ms_mixture_ln_d(_e38, wm_34, alpha_94);
     return _e39;
 }
 
-float ms_bessel_k_d(vec3 wm_35, vec2 alpha_95, uint table_50) {
-    float _e3 = ms_bessel_k_ln_d(wm_35, alpha_95, table_50);
+float ms_bessel_k_d(vec3 wm_35, vec2 alpha_95, uint table_49) {
+    float _e3 = ms_bessel_k_ln_d(wm_35, alpha_95, table_49);
     if ((_e3 >= 1e30)) {
         float _e6 = ms_inf();
         return _e6;
@@ -3405,45 +3365,45 @@ float ms_bessel_k_d(vec3 wm_35, vec2 alpha_95, uint table_50) {
     return exp(_e3);
 }
 
-float ms_bessel_k_lambda(vec3 w_55, vec2 alpha_96, uint table_51) {
-    float _e3 = ms_shape_lambda(table_51, w_55, alpha_96);
+float ms_bessel_k_lambda(vec3 w_55, vec2 alpha_96, uint table_50) {
+    float _e3 = ms_shape_lambda(table_50, w_55, alpha_96);
     return _e3;
 }
 
-float ms_bessel_k_g1_(vec3 w_56, vec2 alpha_97, uint table_52) {
-    float _e3 = ms_mixture_g1_(table_52, w_56, alpha_97);
+float ms_bessel_k_g1_(vec3 w_56, vec2 alpha_97, uint table_51) {
+    float _e3 = ms_mixture_g1_(table_51, w_56, alpha_97);
     return _e3;
 }
 
-float ms_bessel_k_g2_(vec3 wo_19, vec3 wi_19, vec2 alpha_98, uint table_53) {
-    float _e4 = ms_mixture_g2_(table_53, wo_19, wi_19, alpha_98);
+float ms_bessel_k_g2_(vec3 wo_19, vec3 wi_19, vec2 alpha_98, uint table_52) {
+    float _e4 = ms_mixture_g2_(table_52, wo_19, wi_19, alpha_98);
     return _e4;
 }
 
-float ms_bessel_k_pdf(vec3 w_57, vec3 wm_36, vec2 alpha_99, uint table_54) {
-    float _e4 = ms_bessel_k_ln_d(wm_36, alpha_99, table_54);
-    float _e5 = ms_mixture_pdf(table_54, w_57, wm_36, alpha_99, _e4);
+float ms_bessel_k_pdf(vec3 w_57, vec3 wm_36, vec2 alpha_99, uint table_53) {
+    float _e4 = ms_bessel_k_ln_d(wm_36, alpha_99, table_53);
+    float _e5 = ms_mixture_pdf(table_53, w_57, wm_36, alpha_99, _e4);
     return _e5;
 }
 
-float ms_bessel_k_pdf_dcos(vec3 wm_37, vec2 alpha_100, uint table_55) {
+float ms_bessel_k_pdf_dcos(vec3 wm_37, vec2 alpha_100, uint table_54) {
     if (!((wm_37.z > 0.0))) {
         return 0.0;
     }
-    float _e8 = ms_bessel_k_d(wm_37, alpha_100, table_55);
+    float _e8 = ms_bessel_k_d(wm_37, alpha_100, table_54);
     return (_e8 * wm_37.z);
 }
 
-MsSample ms_bessel_k_sample_dcos(vec2 alpha_101, vec2 u_36, uint table_56) {
-    vec3 _e3 = ms_mixture_sample_dcos_wm(table_56, alpha_101, u_36);
-    float _e4 = ms_bessel_k_pdf_dcos(_e3, alpha_101, table_56);
+MsSample ms_bessel_k_sample_dcos(vec2 alpha_101, vec2 u_35, uint table_55) {
+    vec3 _e3 = ms_mixture_sample_dcos_wm(table_55, alpha_101, u_35);
+    float _e4 = ms_bessel_k_pdf_dcos(_e3, alpha_101, table_55);
     return MsSample(_e3, _e4);
 }
 
-MsSample ms_bessel_k_sample(vec3 w_58, vec2 alpha_102, vec2 u_37, uint table_57) {
-    vec3 _e4 = ms_mixture_sample_wm(table_57, w_58, alpha_102, u_37);
+MsSample ms_bessel_k_sample(vec3 w_58, vec2 alpha_102, vec2 u_36, uint table_56) {
+    vec3 _e4 = ms_mixture_sample_wm(table_56, w_58, alpha_102, u_36);
     vec3 _e5 = ms_unit(w_58);
-    float _e6 = ms_bessel_k_pdf(_e5, _e4, alpha_102, table_57);
+    float _e6 = ms_bessel_k_pdf(_e5, _e4, alpha_102, table_56);
     return MsSample(_e4, _e6);
 }
 
@@ -3452,6 +3412,8 @@ bool ms_door_has(uint ndf) {
 }
 
 float ms_d(MsMicrofacet mf, vec3 wm_38) {
+    bool local_35 = false;
+    bool local_36 = false;
     bool local_37 = false;
     bool local_38 = false;
     bool local_39 = false;
@@ -3460,114 +3422,112 @@ float ms_d(MsMicrofacet mf, vec3 wm_38) {
     bool local_42 = false;
     bool local_43 = false;
     bool local_44 = false;
-    bool local_45 = false;
-    bool local_46 = false;
     if ((mf.ndf == MS_NDF_GGX)) {
         bool _e8 = ms_door_has(MS_NDF_GGX);
-        local_37 = _e8;
+        local_35 = _e8;
     } else {
-        local_37 = false;
+        local_35 = false;
     }
-    bool _e10 = local_37;
+    bool _e10 = local_35;
     if (_e10) {
         float _e12 = ms_ggx_d(wm_38, mf.alpha);
         return _e12;
     }
     if ((mf.ndf == MS_NDF_BECKMANN)) {
         bool _e19 = ms_door_has(MS_NDF_BECKMANN);
-        local_38 = _e19;
+        local_36 = _e19;
     } else {
-        local_38 = false;
+        local_36 = false;
     }
-    bool _e21 = local_38;
+    bool _e21 = local_36;
     if (_e21) {
         float _e23 = ms_beckmann_d(wm_38, mf.alpha);
         return _e23;
     }
     if ((mf.ndf == MS_NDF_DOUBLE_GGX)) {
         bool _e30 = ms_door_has(MS_NDF_DOUBLE_GGX);
-        local_39 = _e30;
+        local_37 = _e30;
     } else {
-        local_39 = false;
+        local_37 = false;
     }
-    bool _e32 = local_39;
+    bool _e32 = local_37;
     if (_e32) {
         float _e34 = ms_double_ggx_d(wm_38, mf.alpha);
         return _e34;
     }
     if ((mf.ndf == MS_NDF_EXPONENTIAL)) {
         bool _e41 = ms_door_has(MS_NDF_EXPONENTIAL);
-        local_40 = _e41;
+        local_38 = _e41;
     } else {
-        local_40 = false;
+        local_38 = false;
     }
-    bool _e43 = local_40;
+    bool _e43 = local_38;
     if (_e43) {
         float _e45 = ms_exponential_d(wm_38, mf.alpha);
         return _e45;
     }
     if ((mf.ndf == MS_NDF_STUDENT_T)) {
         bool _e52 = ms_door_has(MS_NDF_STUDENT_T);
-        local_41 = _e52;
+        local_39 = _e52;
     } else {
-        local_41 = false;
+        local_39 = false;
     }
-    bool _e54 = local_41;
+    bool _e54 = local_39;
     if (_e54) {
         float _e57 = ms_student_t_d(wm_38, mf.alpha, mf.table);
         return _e57;
     }
     if ((mf.ndf == MS_NDF_EI)) {
         bool _e64 = ms_door_has(MS_NDF_EI);
-        local_42 = _e64;
+        local_40 = _e64;
     } else {
-        local_42 = false;
+        local_40 = false;
     }
-    bool _e66 = local_42;
+    bool _e66 = local_40;
     if (_e66) {
         float _e68 = ms_ei_d(wm_38, mf.alpha);
         return _e68;
     }
     if ((mf.ndf == MS_NDF_ERFC)) {
         bool _e75 = ms_door_has(MS_NDF_ERFC);
-        local_43 = _e75;
+        local_41 = _e75;
     } else {
-        local_43 = false;
+        local_41 = false;
     }
-    bool _e77 = local_43;
+    bool _e77 = local_41;
     if (_e77) {
         float _e79 = ms_erfc_d(wm_38, mf.alpha);
         return _e79;
     }
     if ((mf.ndf == MS_NDF_K0_)) {
         bool _e86 = ms_door_has(MS_NDF_K0_);
-        local_44 = _e86;
+        local_42 = _e86;
     } else {
-        local_44 = false;
+        local_42 = false;
     }
-    bool _e88 = local_44;
+    bool _e88 = local_42;
     if (_e88) {
         float _e90 = ms_k0_d(wm_38, mf.alpha);
         return _e90;
     }
     if ((mf.ndf == MS_NDF_BESSEL_K)) {
         bool _e97 = ms_door_has(MS_NDF_BESSEL_K);
-        local_45 = _e97;
+        local_43 = _e97;
     } else {
-        local_45 = false;
+        local_43 = false;
     }
-    bool _e99 = local_45;
+    bool _e99 = local_43;
     if (_e99) {
         float _e102 = ms_bessel_k_d(wm_38, mf.alpha, mf.table);
         return _e102;
     }
     if ((mf.ndf == MS_NDF_GTR)) {
         bool _e109 = ms_door_has(MS_NDF_GTR);
-        local_46 = _e109;
+        local_44 = _e109;
     } else {
-        local_46 = false;
+        local_44 = false;
     }
-    bool _e111 = local_46;
+    bool _e111 = local_44;
     if (_e111) {
         float _e114 = ms_gtr_d(wm_38, mf.alpha, mf.table);
         return _e114;
@@ -3576,6 +3536,8 @@ float ms_d(MsMicrofacet mf, vec3 wm_38) {
 }
 
 float ms_lambda(MsMicrofacet mf_1, vec3 w_59) {
+    bool local_45 = false;
+    bool local_46 = false;
     bool local_47 = false;
     bool local_48 = false;
     bool local_49 = false;
@@ -3584,114 +3546,112 @@ float ms_lambda(MsMicrofacet mf_1, vec3 w_59) {
     bool local_52 = false;
     bool local_53 = false;
     bool local_54 = false;
-    bool local_55 = false;
-    bool local_56 = false;
     if ((mf_1.ndf == MS_NDF_GGX)) {
         bool _e8 = ms_door_has(MS_NDF_GGX);
-        local_47 = _e8;
+        local_45 = _e8;
     } else {
-        local_47 = false;
+        local_45 = false;
     }
-    bool _e10 = local_47;
+    bool _e10 = local_45;
     if (_e10) {
         float _e12 = ms_ggx_lambda(w_59, mf_1.alpha);
         return _e12;
     }
     if ((mf_1.ndf == MS_NDF_BECKMANN)) {
         bool _e19 = ms_door_has(MS_NDF_BECKMANN);
-        local_48 = _e19;
+        local_46 = _e19;
     } else {
-        local_48 = false;
+        local_46 = false;
     }
-    bool _e21 = local_48;
+    bool _e21 = local_46;
     if (_e21) {
         float _e23 = ms_beckmann_lambda(w_59, mf_1.alpha);
         return _e23;
     }
     if ((mf_1.ndf == MS_NDF_DOUBLE_GGX)) {
         bool _e30 = ms_door_has(MS_NDF_DOUBLE_GGX);
-        local_49 = _e30;
+        local_47 = _e30;
     } else {
-        local_49 = false;
+        local_47 = false;
     }
-    bool _e32 = local_49;
+    bool _e32 = local_47;
     if (_e32) {
         float _e34 = ms_double_ggx_lambda(w_59, mf_1.alpha);
         return _e34;
     }
     if ((mf_1.ndf == MS_NDF_EXPONENTIAL)) {
         bool _e41 = ms_door_has(MS_NDF_EXPONENTIAL);
-        local_50 = _e41;
+        local_48 = _e41;
     } else {
-        local_50 = false;
+        local_48 = false;
     }
-    bool _e43 = local_50;
+    bool _e43 = local_48;
     if (_e43) {
         float _e45 = ms_exponential_lambda(w_59, mf_1.alpha);
         return _e45;
     }
     if ((mf_1.ndf == MS_NDF_STUDENT_T)) {
         bool _e52 = ms_door_has(MS_NDF_STUDENT_T);
-        local_51 = _e52;
+        local_49 = _e52;
     } else {
-        local_51 = false;
+        local_49 = false;
     }
-    bool _e54 = local_51;
+    bool _e54 = local_49;
     if (_e54) {
         float _e57 = ms_student_t_lambda(w_59, mf_1.alpha, mf_1.table);
         return _e57;
     }
     if ((mf_1.ndf == MS_NDF_EI)) {
         bool _e64 = ms_door_has(MS_NDF_EI);
-        local_52 = _e64;
+        local_50 = _e64;
     } else {
-        local_52 = false;
+        local_50 = false;
     }
-    bool _e66 = local_52;
+    bool _e66 = local_50;
     if (_e66) {
         float _e69 = ms_ei_lambda(w_59, mf_1.alpha, mf_1.table);
         return _e69;
     }
     if ((mf_1.ndf == MS_NDF_ERFC)) {
         bool _e76 = ms_door_has(MS_NDF_ERFC);
-        local_53 = _e76;
+        local_51 = _e76;
     } else {
-        local_53 = false;
+        local_51 = false;
     }
-    bool _e78 = local_53;
+    bool _e78 = local_51;
     if (_e78) {
         float _e81 = ms_erfc_lambda(w_59, mf_1.alpha, mf_1.table);
         return _e81;
     }
     if ((mf_1.ndf == MS_NDF_K0_)) {
         bool _e88 = ms_door_has(MS_NDF_K0_);
-        local_54 = _e88;
+        local_52 = _e88;
     } else {
-        local_54 = false;
+        local_52 = false;
     }
-    bool _e90 = local_54;
+    bool _e90 = local_52;
     if (_e90) {
         float _e93 = ms_k0_lambda(w_59, mf_1.alpha, mf_1.table);
         return _e93;
     }
     if ((mf_1.ndf == MS_NDF_BESSEL_K)) {
         bool _e100 = ms_door_has(MS_NDF_BESSEL_K);
-        local_55 = _e100;
+        local_53 = _e100;
     } else {
-        local_55 = false;
+        local_53 = false;
     }
-    bool _e102 = local_55;
+    bool _e102 = local_53;
     if (_e102) {
         float _e105 = ms_bessel_k_lambda(w_59, mf_1.alpha, mf_1.table);
         return _e105;
     }
     if ((mf_1.ndf == MS_NDF_GTR)) {
         bool _e112 = ms_door_has(MS_NDF_GTR);
-        local_56 = _e112;
+        local_54 = _e112;
     } else {
-        local_56 = false;
+        local_54 = false;
     }
-    bool _e114 = local_56;
+    bool _e114 = local_54;
     if (_e114) {
         float _e117 = ms_gtr_lambda(w_59, mf_1.alpha, mf_1.table);
         return _e117;
@@ -3700,6 +3660,8 @@ float ms_lambda(MsMicrofacet mf_1, vec3 w_59) {
 }
 
 float ms_g1_(MsMicrofacet mf_2, vec3 w_60) {
+    bool local_55 = false;
+    bool local_56 = false;
     bool local_57 = false;
     bool local_58 = false;
     bool local_59 = false;
@@ -3708,114 +3670,112 @@ float ms_g1_(MsMicrofacet mf_2, vec3 w_60) {
     bool local_62 = false;
     bool local_63 = false;
     bool local_64 = false;
-    bool local_65 = false;
-    bool local_66 = false;
     if ((mf_2.ndf == MS_NDF_GGX)) {
         bool _e8 = ms_door_has(MS_NDF_GGX);
-        local_57 = _e8;
+        local_55 = _e8;
     } else {
-        local_57 = false;
+        local_55 = false;
     }
-    bool _e10 = local_57;
+    bool _e10 = local_55;
     if (_e10) {
         float _e12 = ms_ggx_g1_(w_60, mf_2.alpha);
         return _e12;
     }
     if ((mf_2.ndf == MS_NDF_BECKMANN)) {
         bool _e19 = ms_door_has(MS_NDF_BECKMANN);
-        local_58 = _e19;
+        local_56 = _e19;
     } else {
-        local_58 = false;
+        local_56 = false;
     }
-    bool _e21 = local_58;
+    bool _e21 = local_56;
     if (_e21) {
         float _e23 = ms_beckmann_g1_(w_60, mf_2.alpha);
         return _e23;
     }
     if ((mf_2.ndf == MS_NDF_DOUBLE_GGX)) {
         bool _e30 = ms_door_has(MS_NDF_DOUBLE_GGX);
-        local_59 = _e30;
+        local_57 = _e30;
     } else {
-        local_59 = false;
+        local_57 = false;
     }
-    bool _e32 = local_59;
+    bool _e32 = local_57;
     if (_e32) {
         float _e34 = ms_double_ggx_g1_(w_60, mf_2.alpha);
         return _e34;
     }
     if ((mf_2.ndf == MS_NDF_EXPONENTIAL)) {
         bool _e41 = ms_door_has(MS_NDF_EXPONENTIAL);
-        local_60 = _e41;
+        local_58 = _e41;
     } else {
-        local_60 = false;
+        local_58 = false;
     }
-    bool _e43 = local_60;
+    bool _e43 = local_58;
     if (_e43) {
         float _e45 = ms_exponential_g1_(w_60, mf_2.alpha);
         return _e45;
     }
     if ((mf_2.ndf == MS_NDF_STUDENT_T)) {
         bool _e52 = ms_door_has(MS_NDF_STUDENT_T);
-        local_61 = _e52;
+        local_59 = _e52;
     } else {
-        local_61 = false;
+        local_59 = false;
     }
-    bool _e54 = local_61;
+    bool _e54 = local_59;
     if (_e54) {
         float _e57 = ms_student_t_g1_(w_60, mf_2.alpha, mf_2.table);
         return _e57;
     }
     if ((mf_2.ndf == MS_NDF_EI)) {
         bool _e64 = ms_door_has(MS_NDF_EI);
-        local_62 = _e64;
+        local_60 = _e64;
     } else {
-        local_62 = false;
+        local_60 = false;
     }
-    bool _e66 = local_62;
+    bool _e66 = local_60;
     if (_e66) {
         float _e69 = ms_ei_g1_(w_60, mf_2.alpha, mf_2.table);
         return _e69;
     }
     if ((mf_2.ndf == MS_NDF_ERFC)) {
         bool _e76 = ms_door_has(MS_NDF_ERFC);
-        local_63 = _e76;
+        local_61 = _e76;
     } else {
-        local_63 = false;
+        local_61 = false;
     }
-    bool _e78 = local_63;
+    bool _e78 = local_61;
     if (_e78) {
         float _e81 = ms_erfc_g1_(w_60, mf_2.alpha, mf_2.table);
         return _e81;
     }
     if ((mf_2.ndf == MS_NDF_K0_)) {
         bool _e88 = ms_door_has(MS_NDF_K0_);
-        local_64 = _e88;
+        local_62 = _e88;
     } else {
-        local_64 = false;
+        local_62 = false;
     }
-    bool _e90 = local_64;
+    bool _e90 = local_62;
     if (_e90) {
         float _e93 = ms_k0_g1_(w_60, mf_2.alpha, mf_2.table);
         return _e93;
     }
     if ((mf_2.ndf == MS_NDF_BESSEL_K)) {
         bool _e100 = ms_door_has(MS_NDF_BESSEL_K);
-        local_65 = _e100;
+        local_63 = _e100;
     } else {
-        local_65 = false;
+        local_63 = false;
     }
-    bool _e102 = local_65;
+    bool _e102 = local_63;
     if (_e102) {
         float _e105 = ms_bessel_k_g1_(w_60, mf_2.alpha, mf_2.table);
         return _e105;
     }
     if ((mf_2.ndf == MS_NDF_GTR)) {
         bool _e112 = ms_door_has(MS_NDF_GTR);
-        local_66 = _e112;
+        local_64 = _e112;
     } else {
-        local_66 = false;
+        local_64 = false;
     }
-    bool _e114 = local_66;
+    bool _e114 = local_64;
     if (_e114) {
         float _e117 = ms_gtr_g1_(w_60, mf_2.alpha, mf_2.table);
         return _e117;
@@ -3824,6 +3784,8 @@ float ms_g1_(MsMicrofacet mf_2, vec3 w_60) {
 }
 
 float ms_g2_(MsMicrofacet mf_3, vec3 wo_20, vec3 wi_20) {
+    bool local_65 = false;
+    bool local_66 = false;
     bool local_67 = false;
     bool local_68 = false;
     bool local_69 = false;
@@ -3832,114 +3794,112 @@ float ms_g2_(MsMicrofacet mf_3, vec3 wo_20, vec3 wi_20) {
     bool local_72 = false;
     bool local_73 = false;
     bool local_74 = false;
-    bool local_75 = false;
-    bool local_76 = false;
     if ((mf_3.ndf == MS_NDF_GGX)) {
         bool _e9 = ms_door_has(MS_NDF_GGX);
-        local_67 = _e9;
+        local_65 = _e9;
     } else {
-        local_67 = false;
+        local_65 = false;
     }
-    bool _e11 = local_67;
+    bool _e11 = local_65;
     if (_e11) {
         float _e13 = ms_ggx_g2_(wo_20, wi_20, mf_3.alpha);
         return _e13;
     }
     if ((mf_3.ndf == MS_NDF_BECKMANN)) {
         bool _e20 = ms_door_has(MS_NDF_BECKMANN);
-        local_68 = _e20;
+        local_66 = _e20;
     } else {
-        local_68 = false;
+        local_66 = false;
     }
-    bool _e22 = local_68;
+    bool _e22 = local_66;
     if (_e22) {
         float _e24 = ms_beckmann_g2_(wo_20, wi_20, mf_3.alpha);
         return _e24;
     }
     if ((mf_3.ndf == MS_NDF_DOUBLE_GGX)) {
         bool _e31 = ms_door_has(MS_NDF_DOUBLE_GGX);
-        local_69 = _e31;
+        local_67 = _e31;
     } else {
-        local_69 = false;
+        local_67 = false;
     }
-    bool _e33 = local_69;
+    bool _e33 = local_67;
     if (_e33) {
         float _e35 = ms_double_ggx_g2_(wo_20, wi_20, mf_3.alpha);
         return _e35;
     }
     if ((mf_3.ndf == MS_NDF_EXPONENTIAL)) {
         bool _e42 = ms_door_has(MS_NDF_EXPONENTIAL);
-        local_70 = _e42;
+        local_68 = _e42;
     } else {
-        local_70 = false;
+        local_68 = false;
     }
-    bool _e44 = local_70;
+    bool _e44 = local_68;
     if (_e44) {
         float _e46 = ms_exponential_g2_(wo_20, wi_20, mf_3.alpha);
         return _e46;
     }
     if ((mf_3.ndf == MS_NDF_STUDENT_T)) {
         bool _e53 = ms_door_has(MS_NDF_STUDENT_T);
-        local_71 = _e53;
+        local_69 = _e53;
     } else {
-        local_71 = false;
+        local_69 = false;
     }
-    bool _e55 = local_71;
+    bool _e55 = local_69;
     if (_e55) {
         float _e58 = ms_student_t_g2_(wo_20, wi_20, mf_3.alpha, mf_3.table);
         return _e58;
     }
     if ((mf_3.ndf == MS_NDF_EI)) {
         bool _e65 = ms_door_has(MS_NDF_EI);
-        local_72 = _e65;
+        local_70 = _e65;
     } else {
-        local_72 = false;
+        local_70 = false;
     }
-    bool _e67 = local_72;
+    bool _e67 = local_70;
     if (_e67) {
         float _e70 = ms_ei_g2_(wo_20, wi_20, mf_3.alpha, mf_3.table);
         return _e70;
     }
     if ((mf_3.ndf == MS_NDF_ERFC)) {
         bool _e77 = ms_door_has(MS_NDF_ERFC);
-        local_73 = _e77;
+        local_71 = _e77;
     } else {
-        local_73 = false;
+        local_71 = false;
     }
-    bool _e79 = local_73;
+    bool _e79 = local_71;
     if (_e79) {
         float _e82 = ms_erfc_g2_(wo_20, wi_20, mf_3.alpha, mf_3.table);
         return _e82;
     }
     if ((mf_3.ndf == MS_NDF_K0_)) {
         bool _e89 = ms_door_has(MS_NDF_K0_);
-        local_74 = _e89;
+        local_72 = _e89;
     } else {
-        local_74 = false;
+        local_72 = false;
     }
-    bool _e91 = local_74;
+    bool _e91 = local_72;
     if (_e91) {
         float _e94 = ms_k0_g2_(wo_20, wi_20, mf_3.alpha, mf_3.table);
         return _e94;
     }
     if ((mf_3.ndf == MS_NDF_BESSEL_K)) {
         bool _e101 = ms_door_has(MS_NDF_BESSEL_K);
-        local_75 = _e101;
+        local_73 = _e101;
     } else {
-        local_75 = false;
+        local_73 = false;
     }
-    bool _e103 = local_75;
+    bool _e103 = local_73;
     if (_e103) {
         float _e106 = ms_bessel_k_g2_(wo_20, wi_20, mf_3.alpha, mf_3.table);
         return _e106;
     }
     if ((mf_3.ndf == MS_NDF_GTR)) {
         bool _e113 = ms_door_has(MS_NDF_GTR);
-        local_76 = _e113;
+        local_74 = _e113;
     } else {
-        local_76 = false;
+        local_74 = false;
     }
-    bool _e115 = local_76;
+    bool _e115 = local_74;
     if (_e115) {
         float _e118 = ms_gtr_g2_(wo_20, wi_20, mf_3.alpha, mf_3.table);
         return _e118;
@@ -3954,6 +3914,8 @@ float ms_g2_separable(MsMicrofacet mf_4, vec3 wo_21, vec3 wi_21) {
 }
 
 float ms_pdf(MsMicrofacet mf_5, vec3 w_61, vec3 wm_39) {
+    bool local_75 = false;
+    bool local_76 = false;
     bool local_77 = false;
     bool local_78 = false;
     bool local_79 = false;
@@ -3962,114 +3924,112 @@ float ms_pdf(MsMicrofacet mf_5, vec3 w_61, vec3 wm_39) {
     bool local_82 = false;
     bool local_83 = false;
     bool local_84 = false;
-    bool local_85 = false;
-    bool local_86 = false;
     if ((mf_5.ndf == MS_NDF_GGX)) {
         bool _e9 = ms_door_has(MS_NDF_GGX);
-        local_77 = _e9;
+        local_75 = _e9;
     } else {
-        local_77 = false;
+        local_75 = false;
     }
-    bool _e11 = local_77;
+    bool _e11 = local_75;
     if (_e11) {
         float _e13 = ms_ggx_pdf(w_61, wm_39, mf_5.alpha);
         return _e13;
     }
     if ((mf_5.ndf == MS_NDF_BECKMANN)) {
         bool _e20 = ms_door_has(MS_NDF_BECKMANN);
-        local_78 = _e20;
+        local_76 = _e20;
     } else {
-        local_78 = false;
+        local_76 = false;
     }
-    bool _e22 = local_78;
+    bool _e22 = local_76;
     if (_e22) {
         float _e24 = ms_beckmann_pdf(w_61, wm_39, mf_5.alpha);
         return _e24;
     }
     if ((mf_5.ndf == MS_NDF_DOUBLE_GGX)) {
         bool _e31 = ms_door_has(MS_NDF_DOUBLE_GGX);
-        local_79 = _e31;
+        local_77 = _e31;
     } else {
-        local_79 = false;
+        local_77 = false;
     }
-    bool _e33 = local_79;
+    bool _e33 = local_77;
     if (_e33) {
         float _e35 = ms_double_ggx_pdf(w_61, wm_39, mf_5.alpha);
         return _e35;
     }
     if ((mf_5.ndf == MS_NDF_EXPONENTIAL)) {
         bool _e42 = ms_door_has(MS_NDF_EXPONENTIAL);
-        local_80 = _e42;
+        local_78 = _e42;
     } else {
-        local_80 = false;
+        local_78 = false;
     }
-    bool _e44 = local_80;
+    bool _e44 = local_78;
     if (_e44) {
         float _e46 = ms_exponential_pdf(w_61, wm_39, mf_5.alpha);
         return _e46;
     }
     if ((mf_5.ndf == MS_NDF_STUDENT_T)) {
         bool _e53 = ms_door_has(MS_NDF_STUDENT_T);
-        local_81 = _e53;
+        local_79 = _e53;
     } else {
-        local_81 = false;
+        local_79 = false;
     }
-    bool _e55 = local_81;
+    bool _e55 = local_79;
     if (_e55) {
         float _e58 = ms_student_t_pdf(w_61, wm_39, mf_5.alpha, mf_5.table);
         return _e58;
     }
     if ((mf_5.ndf == MS_NDF_EI)) {
         bool _e65 = ms_door_has(MS_NDF_EI);
-        local_82 = _e65;
+        local_80 = _e65;
     } else {
-        local_82 = false;
+        local_80 = false;
     }
-    bool _e67 = local_82;
+    bool _e67 = local_80;
     if (_e67) {
         float _e70 = ms_ei_pdf(w_61, wm_39, mf_5.alpha, mf_5.table);
         return _e70;
     }
     if ((mf_5.ndf == MS_NDF_ERFC)) {
         bool _e77 = ms_door_has(MS_NDF_ERFC);
-        local_83 = _e77;
+        local_81 = _e77;
     } else {
-        local_83 = false;
+        local_81 = false;
     }
-    bool _e79 = local_83;
+    bool _e79 = local_81;
     if (_e79) {
         float _e82 = ms_erfc_pdf(w_61, wm_39, mf_5.alpha, mf_5.table);
         return _e82;
     }
     if ((mf_5.ndf == MS_NDF_K0_)) {
         bool _e89 = ms_door_has(MS_NDF_K0_);
-        local_84 = _e89;
+        local_82 = _e89;
     } else {
-        local_84 = false;
+        local_82 = false;
     }
-    bool _e91 = local_84;
+    bool _e91 = local_82;
     if (_e91) {
         float _e94 = ms_k0_pdf(w_61, wm_39, mf_5.alpha, mf_5.table);
         return _e94;
     }
     if ((mf_5.ndf == MS_NDF_BESSEL_K)) {
         bool _e101 = ms_door_has(MS_NDF_BESSEL_K);
-        local_85 = _e101;
+        local_83 = _e101;
     } else {
-        local_85 = false;
+        local_83 = false;
     }
-    bool _e103 = local_85;
+    bool _e103 = local_83;
     if (_e103) {
         float _e106 = ms_bessel_k_pdf(w_61, wm_39, mf_5.alpha, mf_5.table);
         return _e106;
     }
     if ((mf_5.ndf == MS_NDF_GTR)) {
         bool _e113 = ms_door_has(MS_NDF_GTR);
-        local_86 = _e113;
+        local_84 = _e113;
     } else {
-        local_86 = false;
+        local_84 = false;
     }
-    bool _e115 = local_86;
+    bool _e115 = local_84;
     if (_e115) {
         float _e118 = ms_gtr_pdf(w_61, wm_39, mf_5.alpha, mf_5.table);
         return _e118;
@@ -4085,7 +4045,9 @@ float ms_pdf_dcos(MsMicrofacet mf_6, vec3 wm_40) {
     return (_e7 * wm_40.z);
 }
 
-MsSample ms_sample(MsMicrofacet mf_7, vec3 w_62, vec2 u_38) {
+MsSample ms_sample(MsMicrofacet mf_7, vec3 w_62, vec2 u_37) {
+    bool local_85 = false;
+    bool local_86 = false;
     bool local_87 = false;
     bool local_88 = false;
     bool local_89 = false;
@@ -4094,122 +4056,122 @@ MsSample ms_sample(MsMicrofacet mf_7, vec3 w_62, vec2 u_38) {
     bool local_92 = false;
     bool local_93 = false;
     bool local_94 = false;
-    bool local_95 = false;
-    bool local_96 = false;
     if ((mf_7.ndf == MS_NDF_GGX)) {
         bool _e9 = ms_door_has(MS_NDF_GGX);
-        local_87 = _e9;
+        local_85 = _e9;
     } else {
-        local_87 = false;
+        local_85 = false;
     }
-    bool _e11 = local_87;
+    bool _e11 = local_85;
     if (_e11) {
-        MsSample _e13 = ms_ggx_sample(w_62, mf_7.alpha, u_38);
+        MsSample _e13 = ms_ggx_sample(w_62, mf_7.alpha, u_37);
         return _e13;
     }
     if ((mf_7.ndf == MS_NDF_BECKMANN)) {
         bool _e20 = ms_door_has(MS_NDF_BECKMANN);
-        local_88 = _e20;
+        local_86 = _e20;
     } else {
-        local_88 = false;
+        local_86 = false;
     }
-    bool _e22 = local_88;
+    bool _e22 = local_86;
     if (_e22) {
-        MsSample _e24 = ms_beckmann_sample(w_62, mf_7.alpha, u_38);
+        MsSample _e24 = ms_beckmann_sample(w_62, mf_7.alpha, u_37);
         return _e24;
     }
     if ((mf_7.ndf == MS_NDF_DOUBLE_GGX)) {
         bool _e31 = ms_door_has(MS_NDF_DOUBLE_GGX);
-        local_89 = _e31;
+        local_87 = _e31;
     } else {
-        local_89 = false;
+        local_87 = false;
     }
-    bool _e33 = local_89;
+    bool _e33 = local_87;
     if (_e33) {
-        MsSample _e35 = ms_double_ggx_sample(w_62, mf_7.alpha, u_38);
+        MsSample _e35 = ms_double_ggx_sample(w_62, mf_7.alpha, u_37);
         return _e35;
     }
     if ((mf_7.ndf == MS_NDF_EXPONENTIAL)) {
         bool _e42 = ms_door_has(MS_NDF_EXPONENTIAL);
-        local_90 = _e42;
+        local_88 = _e42;
     } else {
-        local_90 = false;
+        local_88 = false;
     }
-    bool _e44 = local_90;
+    bool _e44 = local_88;
     if (_e44) {
-        MsSample _e46 = ms_exponential_sample(w_62, mf_7.alpha, u_38);
+        MsSample _e46 = ms_exponential_sample(w_62, mf_7.alpha, u_37);
         return _e46;
     }
     if ((mf_7.ndf == MS_NDF_STUDENT_T)) {
         bool _e53 = ms_door_has(MS_NDF_STUDENT_T);
-        local_91 = _e53;
+        local_89 = _e53;
     } else {
-        local_91 = false;
+        local_89 = false;
     }
-    bool _e55 = local_91;
+    bool _e55 = local_89;
     if (_e55) {
-        MsSample _e58 = ms_student_t_sample(w_62, mf_7.alpha, u_38, mf_7.table);
+        MsSample _e58 = ms_student_t_sample(w_62, mf_7.alpha, u_37, mf_7.table);
         return _e58;
     }
     if ((mf_7.ndf == MS_NDF_EI)) {
         bool _e65 = ms_door_has(MS_NDF_EI);
-        local_92 = _e65;
+        local_90 = _e65;
     } else {
-        local_92 = false;
+        local_90 = false;
     }
-    bool _e67 = local_92;
+    bool _e67 = local_90;
     if (_e67) {
-        MsSample _e70 = ms_ei_sample(w_62, mf_7.alpha, u_38, mf_7.table);
+        MsSample _e70 = ms_ei_sample(w_62, mf_7.alpha, u_37, mf_7.table);
         return _e70;
     }
     if ((mf_7.ndf == MS_NDF_ERFC)) {
         bool _e77 = ms_door_has(MS_NDF_ERFC);
-        local_93 = _e77;
+        local_91 = _e77;
     } else {
-        local_93 = false;
+        local_91 = false;
     }
-    bool _e79 = local_93;
+    bool _e79 = local_91;
     if (_e79) {
-        MsSample _e82 = ms_erfc_sample(w_62, mf_7.alpha, u_38, mf_7.table);
+        MsSample _e82 = ms_erfc_sample(w_62, mf_7.alpha, u_37, mf_7.table);
         return _e82;
     }
     if ((mf_7.ndf == MS_NDF_K0_)) {
         bool _e89 = ms_door_has(MS_NDF_K0_);
-        local_94 = _e89;
+        local_92 = _e89;
     } else {
-        local_94 = false;
+        local_92 = false;
     }
-    bool _e91 = local_94;
+    bool _e91 = local_92;
     if (_e91) {
-        MsSample _e94 = ms_k0_sample(w_62, mf_7.alpha, u_38, mf_7.table);
+        MsSample _e94 = ms_k0_sample(w_62, mf_7.alpha, u_37, mf_7.table);
         return _e94;
     }
     if ((mf_7.ndf == MS_NDF_BESSEL_K)) {
         bool _e101 = ms_door_has(MS_NDF_BESSEL_K);
-        local_95 = _e101;
+        local_93 = _e101;
     } else {
-        local_95 = false;
+        local_93 = false;
     }
-    bool _e103 = local_95;
+    bool _e103 = local_93;
     if (_e103) {
-        MsSample _e106 = ms_bessel_k_sample(w_62, mf_7.alpha, u_38, mf_7.table);
+        MsSample _e106 = ms_bessel_k_sample(w_62, mf_7.alpha, u_37, mf_7.table);
         return _e106;
     }
     if ((mf_7.ndf == MS_NDF_GTR)) {
         bool _e113 = ms_door_has(MS_NDF_GTR);
-        local_96 = _e113;
+        local_94 = _e113;
     } else {
-        local_96 = false;
+        local_94 = false;
     }
-    bool _e115 = local_96;
+    bool _e115 = local_94;
     if (_e115) {
-        MsSample _e118 = ms_gtr_sample(w_62, mf_7.alpha, u_38, mf_7.table);
+        MsSample _e118 = ms_gtr_sample(w_62, mf_7.alpha, u_37, mf_7.table);
         return _e118;
     }
     return MsSample(vec3(0.0, 0.0, 1.0), 0.0);
 }
 
-MsSample ms_sample_dcos(MsMicrofacet mf_8, vec2 u_39) {
+MsSample ms_sample_dcos(MsMicrofacet mf_8, vec2 u_38) {
+    bool local_95 = false;
+    bool local_96 = false;
     bool local_97 = false;
     bool local_98 = false;
     bool local_99 = false;
@@ -4218,116 +4180,114 @@ MsSample ms_sample_dcos(MsMicrofacet mf_8, vec2 u_39) {
     bool local_102 = false;
     bool local_103 = false;
     bool local_104 = false;
-    bool local_105 = false;
-    bool local_106 = false;
     if ((mf_8.ndf == MS_NDF_GGX)) {
         bool _e8 = ms_door_has(MS_NDF_GGX);
-        local_97 = _e8;
+        local_95 = _e8;
     } else {
-        local_97 = false;
+        local_95 = false;
     }
-    bool _e10 = local_97;
+    bool _e10 = local_95;
     if (_e10) {
-        MsSample _e12 = ms_ggx_sample_dcos(mf_8.alpha, u_39);
+        MsSample _e12 = ms_ggx_sample_dcos(mf_8.alpha, u_38);
         return _e12;
     }
     if ((mf_8.ndf == MS_NDF_BECKMANN)) {
         bool _e19 = ms_door_has(MS_NDF_BECKMANN);
-        local_98 = _e19;
+        local_96 = _e19;
     } else {
-        local_98 = false;
+        local_96 = false;
     }
-    bool _e21 = local_98;
+    bool _e21 = local_96;
     if (_e21) {
-        MsSample _e23 = ms_beckmann_sample_dcos(mf_8.alpha, u_39);
+        MsSample _e23 = ms_beckmann_sample_dcos(mf_8.alpha, u_38);
         return _e23;
     }
     if ((mf_8.ndf == MS_NDF_DOUBLE_GGX)) {
         bool _e30 = ms_door_has(MS_NDF_DOUBLE_GGX);
-        local_99 = _e30;
+        local_97 = _e30;
     } else {
-        local_99 = false;
+        local_97 = false;
     }
-    bool _e32 = local_99;
+    bool _e32 = local_97;
     if (_e32) {
-        MsSample _e34 = ms_double_ggx_sample_dcos(mf_8.alpha, u_39);
+        MsSample _e34 = ms_double_ggx_sample_dcos(mf_8.alpha, u_38);
         return _e34;
     }
     if ((mf_8.ndf == MS_NDF_EXPONENTIAL)) {
         bool _e41 = ms_door_has(MS_NDF_EXPONENTIAL);
-        local_100 = _e41;
+        local_98 = _e41;
     } else {
-        local_100 = false;
+        local_98 = false;
     }
-    bool _e43 = local_100;
+    bool _e43 = local_98;
     if (_e43) {
-        MsSample _e45 = ms_exponential_sample_dcos(mf_8.alpha, u_39);
+        MsSample _e45 = ms_exponential_sample_dcos(mf_8.alpha, u_38);
         return _e45;
     }
     if ((mf_8.ndf == MS_NDF_STUDENT_T)) {
         bool _e52 = ms_door_has(MS_NDF_STUDENT_T);
-        local_101 = _e52;
+        local_99 = _e52;
     } else {
-        local_101 = false;
+        local_99 = false;
     }
-    bool _e54 = local_101;
+    bool _e54 = local_99;
     if (_e54) {
-        MsSample _e57 = ms_student_t_sample_dcos(mf_8.alpha, u_39, mf_8.table);
+        MsSample _e57 = ms_student_t_sample_dcos(mf_8.alpha, u_38, mf_8.table);
         return _e57;
     }
     if ((mf_8.ndf == MS_NDF_EI)) {
         bool _e64 = ms_door_has(MS_NDF_EI);
-        local_102 = _e64;
+        local_100 = _e64;
     } else {
-        local_102 = false;
+        local_100 = false;
     }
-    bool _e66 = local_102;
+    bool _e66 = local_100;
     if (_e66) {
-        MsSample _e69 = ms_ei_sample_dcos(mf_8.alpha, u_39, mf_8.table);
+        MsSample _e69 = ms_ei_sample_dcos(mf_8.alpha, u_38, mf_8.table);
         return _e69;
     }
     if ((mf_8.ndf == MS_NDF_ERFC)) {
         bool _e76 = ms_door_has(MS_NDF_ERFC);
-        local_103 = _e76;
+        local_101 = _e76;
     } else {
-        local_103 = false;
+        local_101 = false;
     }
-    bool _e78 = local_103;
+    bool _e78 = local_101;
     if (_e78) {
-        MsSample _e81 = ms_erfc_sample_dcos(mf_8.alpha, u_39, mf_8.table);
+        MsSample _e81 = ms_erfc_sample_dcos(mf_8.alpha, u_38, mf_8.table);
         return _e81;
     }
     if ((mf_8.ndf == MS_NDF_K0_)) {
         bool _e88 = ms_door_has(MS_NDF_K0_);
-        local_104 = _e88;
+        local_102 = _e88;
     } else {
-        local_104 = false;
+        local_102 = false;
     }
-    bool _e90 = local_104;
+    bool _e90 = local_102;
     if (_e90) {
-        MsSample _e93 = ms_k0_sample_dcos(mf_8.alpha, u_39, mf_8.table);
+        MsSample _e93 = ms_k0_sample_dcos(mf_8.alpha, u_38, mf_8.table);
         return _e93;
     }
     if ((mf_8.ndf == MS_NDF_BESSEL_K)) {
         bool _e100 = ms_door_has(MS_NDF_BESSEL_K);
-        local_105 = _e100;
+        local_103 = _e100;
     } else {
-        local_105 = false;
+        local_103 = false;
     }
-    bool _e102 = local_105;
+    bool _e102 = local_103;
     if (_e102) {
-        MsSample _e105 = ms_bessel_k_sample_dcos(mf_8.alpha, u_39, mf_8.table);
+        MsSample _e105 = ms_bessel_k_sample_dcos(mf_8.alpha, u_38, mf_8.table);
         return _e105;
     }
     if ((mf_8.ndf == MS_NDF_GTR)) {
         bool _e112 = ms_door_has(MS_NDF_GTR);
-        local_106 = _e112;
+        local_104 = _e112;
     } else {
-        local_106 = false;
+        local_104 = false;
     }
-    bool _e114 = local_106;
+    bool _e114 = local_104;
     if (_e114) {
-        MsSample _e117 = ms_gtr_sample_dcos(mf_8.alpha, u_39, mf_8.table);
+        MsSample _e117 = ms_gtr_sample_dcos(mf_8.alpha, u_38, mf_8.table);
         return _e117;
     }
     return MsSample(vec3(0.0, 0.0, 1.0), 0.0);
@@ -4342,13 +4302,13 @@ bool ms_on_horizon(float z_5) {
 }
 
 bool ms_usable(float v_15) {
-    bool local_107 = false;
+    bool local_105 = false;
     if ((v_15 >= 1.1754944e-20)) {
-        local_107 = (v_15 <= 3.4028235e38);
+        local_105 = (v_15 <= 3.4028235e38);
     } else {
-        local_107 = false;
+        local_105 = false;
     }
-    bool _e8 = local_107;
+    bool _e8 = local_105;
     return _e8;
 }
 
@@ -4371,31 +4331,31 @@ vec3 ms_weighted(vec3 fr_1, float k_10) {
 }
 
 vec3 ms_conductor_lobe_normal(MsConductor c_8, vec3 wo_24, vec3 wi_24) {
+    bool local_106 = false;
+    bool local_107 = false;
     bool local_108 = false;
-    bool local_109 = false;
-    bool local_110 = false;
     bool _e3 = ms_same_hemisphere(wo_24, wi_24);
     if (!(!(_e3))) {
         bool _e9 = ms_on_horizon(wo_24.z);
-        local_108 = _e9;
+        local_106 = _e9;
+    } else {
+        local_106 = true;
+    }
+    bool _e11 = local_106;
+    if (!(_e11)) {
+        bool _e16 = ms_on_horizon(wi_24.z);
+        local_107 = _e16;
+    } else {
+        local_107 = true;
+    }
+    bool _e18 = local_107;
+    if (!(_e18)) {
+        bool _e23 = ms_effectively_smooth(c_8.mf);
+        local_108 = _e23;
     } else {
         local_108 = true;
     }
-    bool _e11 = local_108;
-    if (!(_e11)) {
-        bool _e16 = ms_on_horizon(wi_24.z);
-        local_109 = _e16;
-    } else {
-        local_109 = true;
-    }
-    bool _e18 = local_109;
-    if (!(_e18)) {
-        bool _e23 = ms_effectively_smooth(c_8.mf);
-        local_110 = _e23;
-    } else {
-        local_110 = true;
-    }
-    bool _e25 = local_110;
+    bool _e25 = local_108;
     if (_e25) {
         return vec3(0.0);
     }
@@ -4446,8 +4406,8 @@ vec4 ms_conductor_eval_pdf(MsConductor c_11, vec3 wo_27, vec3 wi_27) {
     return vec4(_e22, (_e24 / (4.0 * co)));
 }
 
-MsBsdfSample ms_conductor_sample(MsConductor c_12, vec3 wo_28, float uc, vec2 u_40) {
-    bool local_111 = false;
+MsBsdfSample ms_conductor_sample(MsConductor c_12, vec3 wo_28, float uc, vec2 u_39) {
+    bool local_109 = false;
     MsBsdfSample none = MsBsdfSample(vec3(0.0), 0.0, vec3(0.0), 0u, 1.0);
     bool _e13 = ms_on_horizon(wo_28.z);
     if (_e13) {
@@ -4460,16 +4420,16 @@ MsBsdfSample ms_conductor_sample(MsConductor c_12, vec3 wo_28, float uc, vec2 u_
         vec3 _e29 = ms_fresnel_eval(c_12.fresnel, abs(wo_28.z));
         return MsBsdfSample(wi_33, 1.0, (_e29 * k_15), 3u, 1.0);
     }
-    MsSample _e36 = ms_sample(c_12.mf, wo_28, u_40);
+    MsSample _e36 = ms_sample(c_12.mf, wo_28, u_39);
     vec3 _e38 = ms_reflect(wo_28, _e36.wm);
     bool _e39 = ms_same_hemisphere(wo_28, _e38);
     if (!(!(_e39))) {
         bool _e45 = ms_on_horizon(_e38.z);
-        local_111 = _e45;
+        local_109 = _e45;
     } else {
-        local_111 = true;
+        local_109 = true;
     }
-    bool _e47 = local_111;
+    bool _e47 = local_109;
     if (_e47) {
         return none;
     }
@@ -4495,14 +4455,14 @@ MsBsdfSample ms_conductor_sample(MsConductor c_12, vec3 wo_28, float uc, vec2 u_
 }
 
 bool ms_dielectric_smooth(MsDielectric d_1) {
-    bool local_112 = false;
+    bool local_110 = false;
     if (!((d_1.eta == 1.0))) {
         bool _e8 = ms_effectively_smooth(d_1.mf);
-        local_112 = _e8;
+        local_110 = _e8;
     } else {
-        local_112 = true;
+        local_110 = true;
     }
-    bool _e10 = local_112;
+    bool _e10 = local_110;
     return _e10;
 }
 
@@ -4512,21 +4472,21 @@ float ms_dielectric_g2_(MsDielectric d_2, vec3 wo_29, vec3 wi_28) {
 }
 
 vec4 ms_dielectric_half(MsDielectric d_3, vec3 wo_30, vec3 wi_29) {
-    bool local_113 = false;
+    bool local_111 = false;
     vec3 wm_41 = vec3(0.0);
     float etap_4 = 1.0;
-    bool local_114 = false;
+    bool local_112 = false;
     vec4 none_1 = vec4(0.0);
     float co_2 = wo_30.z;
     float ci_1 = wi_29.z;
     bool _e7 = ms_on_horizon(co_2);
     if (!(_e7)) {
         bool _e11 = ms_on_horizon(ci_1);
-        local_113 = _e11;
+        local_111 = _e11;
     } else {
-        local_113 = true;
+        local_111 = true;
     }
-    bool _e13 = local_113;
+    bool _e13 = local_111;
     if (_e13) {
         return none_1;
     }
@@ -4548,11 +4508,11 @@ vec4 ms_dielectric_half(MsDielectric d_3, vec3 wo_30, vec3 wi_29) {
     if (!(((_e29 * ci_1) < 0.0))) {
         vec3 _e36 = wm_41;
         float _e37 = ms_dot(_e36, wo_30);
-        local_114 = ((_e37 * co_2) < 0.0);
+        local_112 = ((_e37 * co_2) < 0.0);
     } else {
-        local_114 = true;
+        local_112 = true;
     }
-    bool _e42 = local_114;
+    bool _e42 = local_112;
     if (_e42) {
         return none_1;
     }
@@ -4646,11 +4606,11 @@ MsBsdfSample ms_dielectric_sample_smooth(MsDielectric d_7, vec3 wo_34, float uc_
     return MsBsdfSample(wi_35, t_17, vec3(_e54), 7u, _e33.w);
 }
 
-MsBsdfSample ms_dielectric_sample(MsDielectric d_8, vec3 wo_35, float uc_2, vec2 u_41) {
+MsBsdfSample ms_dielectric_sample(MsDielectric d_8, vec3 wo_35, float uc_2, vec2 u_40) {
+    bool local_113 = false;
+    bool local_114 = false;
     bool local_115 = false;
     bool local_116 = false;
-    bool local_117 = false;
-    bool local_118 = false;
     MsBsdfSample none_3 = MsBsdfSample(vec3(0.0), 0.0, vec3(0.0), 0u, 1.0);
     bool _e13 = ms_on_horizon(wo_35.z);
     if (_e13) {
@@ -4661,7 +4621,7 @@ MsBsdfSample ms_dielectric_sample(MsDielectric d_8, vec3 wo_35, float uc_2, vec2
         MsBsdfSample _e15 = ms_dielectric_sample_smooth(d_8, wo_35, uc_2);
         return _e15;
     }
-    MsSample _e17 = ms_sample(d_8.mf, wo_35, u_41);
+    MsSample _e17 = ms_sample(d_8.mf, wo_35, u_40);
     vec3 wm_45 = _e17.wm;
     float _e19 = ms_dot(wo_35, wm_45);
     float _e21 = ms_fresnel_dielectric(_e19, d_8.eta);
@@ -4670,11 +4630,11 @@ MsBsdfSample ms_dielectric_sample(MsDielectric d_8, vec3 wo_35, float uc_2, vec2
         bool _e24 = ms_same_hemisphere(wo_35, _e23);
         if (!(!(_e24))) {
             bool _e30 = ms_on_horizon(_e23.z);
-            local_115 = _e30;
+            local_113 = _e30;
         } else {
-            local_115 = true;
+            local_113 = true;
         }
-        bool _e32 = local_115;
+        bool _e32 = local_113;
         if (_e32) {
             return none_3;
         }
@@ -4688,11 +4648,11 @@ MsBsdfSample ms_dielectric_sample(MsDielectric d_8, vec3 wo_35, float uc_2, vec2
         float pdf_1 = ((_e17.pdf * _e21) / (4.0 * abs(_e19)));
         bool _e47 = ms_usable(pdf_1);
         if (!(!(_e47))) {
-            local_116 = !((f_6 <= 3.4028235e38));
+            local_114 = !((f_6 <= 3.4028235e38));
         } else {
-            local_116 = true;
+            local_114 = true;
         }
-        bool _e56 = local_116;
+        bool _e56 = local_114;
         if (_e56) {
             return none_3;
         }
@@ -4707,11 +4667,11 @@ MsBsdfSample ms_dielectric_sample(MsDielectric d_8, vec3 wo_35, float uc_2, vec2
     bool _e68 = ms_same_hemisphere(wo_35, wi_36);
     if (!(_e68)) {
         bool _e73 = ms_on_horizon(wi_36.z);
-        local_117 = _e73;
+        local_115 = _e73;
     } else {
-        local_117 = true;
+        local_115 = true;
     }
-    bool _e75 = local_117;
+    bool _e75 = local_115;
     if (_e75) {
         return none_3;
     }
@@ -4726,11 +4686,11 @@ MsBsdfSample ms_dielectric_sample(MsDielectric d_8, vec3 wo_35, float uc_2, vec2
     float _e86 = ms_dielectric_f_transmission(d_8, wo_35, wi_36, wm_45, _e83, etap_6, t_18);
     bool _e87 = ms_usable(pdf_2);
     if (!(!(_e87))) {
-        local_118 = !((_e86 <= 3.4028235e38));
+        local_116 = !((_e86 <= 3.4028235e38));
     } else {
-        local_118 = true;
+        local_116 = true;
     }
-    bool _e96 = local_118;
+    bool _e96 = local_116;
     if (_e96) {
         return none_3;
     }
@@ -4739,9 +4699,9 @@ MsBsdfSample ms_dielectric_sample(MsDielectric d_8, vec3 wo_35, float uc_2, vec2
 
 uint ms_k_index(uvec3 id_13, uvec3 groups_13) {
     uint i_16 = (id_13.x + ((id_13.y * groups_13.x) * 64u));
-    uint n_14 = (uint(_group_0_binding_0_cs.length()) / MS_K_IN);
-    if ((i_16 >= n_14)) {
-        return n_14;
+    uint n_15 = (uint(_group_0_binding_0_cs.length()) / MS_K_IN);
+    if ((i_16 >= n_15)) {
+        return n_15;
     }
     return i_16;
 }

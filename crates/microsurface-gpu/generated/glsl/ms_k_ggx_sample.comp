@@ -144,18 +144,18 @@ float ms_inf() {
 vec2 ms_cos_sin_turn(float v) {
     float k_11 = roundEven((4.0 * v));
     float r_4 = (v - (0.25 * k_11));
-    float x_18 = (MS_TAU * r_4);
-    float x2_ = (x_18 * x_18);
-    float s_6 = (x_18 * (1.0 + (x2_ * (-0.16666667 + (x2_ * (0.008333333 + (x2_ * (-0.0001984127 + (x2_ * 2.7557319e-6)))))))));
+    float x_17 = (MS_TAU * r_4);
+    float x2_ = (x_17 * x_17);
+    float s_6 = (x_17 * (1.0 + (x2_ * (-0.16666667 + (x2_ * (0.008333333 + (x2_ * (-0.0001984127 + (x2_ * 2.7557319e-6)))))))));
     float c_13 = (1.0 + (x2_ * (-0.5 + (x2_ * (0.041666668 + (x2_ * (-0.0013888889 + (x2_ * (2.4801588e-5 + (x2_ * -2.755732e-7))))))))));
-    int q_2 = (int(k_11) & 3);
-    if ((q_2 == 0)) {
+    int q_1 = (int(k_11) & 3);
+    if ((q_1 == 0)) {
         return vec2(c_13, s_6);
     } else {
-        if ((q_2 == 1)) {
+        if ((q_1 == 1)) {
             return vec2(-(s_6), c_13);
         } else {
-            if ((q_2 == 2)) {
+            if ((q_1 == 2)) {
                 return vec2(-(c_13), -(s_6));
             }
         }
@@ -551,8 +551,8 @@ float ms_fresnel_f82_tint(float cos_i_3, float f0_1, float h) {
     float mu = min(max(cos_i_3, 0.0), 1.0);
     float m_8 = (1.0 - mu);
     float m5_ = ((((m_8 * m_8) * m_8) * m_8) * m_8);
-    float a_18 = (((f0_1 + ((1.0 - f0_1) * 0.46266437)) * (1.0 - h)) / 0.05665278);
-    float r_8 = ((f0_1 + ((1.0 - f0_1) * m5_)) - (((a_18 * mu) * m5_) * m_8));
+    float a_19 = (((f0_1 + ((1.0 - f0_1) * 0.46266437)) * (1.0 - h)) / 0.05665278);
+    float r_8 = ((f0_1 + ((1.0 - f0_1) * m5_)) - (((a_19 * mu) * m5_) * m_8));
     return min(max(r_8, 0.0), 1.0);
 }
 
@@ -594,17 +594,17 @@ float ms_ggx_d(vec3 wm_2, vec2 alpha) {
     if (!((z_6 > 0.0))) {
         return 0.0;
     }
-    float x_19 = (wm_2.x / alpha.x);
+    float x_18 = (wm_2.x / alpha.x);
     float y_4 = (wm_2.y / alpha.y);
-    float t_8 = (((x_19 * x_19) + (y_4 * y_4)) + (z_6 * z_6));
+    float t_8 = (((x_18 * x_18) + (y_4 * y_4)) + (z_6 * z_6));
     return (1.0 / ((((MS_PI * alpha.x) * alpha.y) * t_8) * t_8));
 }
 
 float ms_ggx_lambda(vec3 w_3, vec2 alpha_1) {
-    float x_20 = (alpha_1.x * w_3.x);
+    float x_19 = (alpha_1.x * w_3.x);
     float y_5 = (alpha_1.y * w_3.y);
     float z_7 = abs(w_3.z);
-    float t_9 = ((x_20 * x_20) + (y_5 * y_5));
+    float t_9 = ((x_19 * x_19) + (y_5 * y_5));
     float z2_ = (z_7 * z_7);
     float den = (2.0 * (z2_ + (z_7 * sqrt((z2_ + t_9)))));
     if (!((den > 0.0))) {
@@ -618,10 +618,10 @@ float ms_ggx_lambda(vec3 w_3, vec2 alpha_1) {
 }
 
 float ms_ggx_g1_(vec3 w_4, vec2 alpha_2) {
-    float x_21 = (alpha_2.x * w_4.x);
+    float x_20 = (alpha_2.x * w_4.x);
     float y_6 = (alpha_2.y * w_4.y);
     float z_8 = abs(w_4.z);
-    float den_1 = (z_8 + sqrt(((z_8 * z_8) + ((x_21 * x_21) + (y_6 * y_6)))));
+    float den_1 = (z_8 + sqrt(((z_8 * z_8) + ((x_20 * x_20) + (y_6 * y_6)))));
     if (!((den_1 > 0.0))) {
         return 0.0;
     }
@@ -680,13 +680,13 @@ float ms_ggx_pdf(vec3 w_5, vec3 wm_3, vec2 alpha_5) {
 
 vec3 ms_ggx_cap_normal_stretched(vec3 w_6, vec3 stretch, vec2 u, float len) {
     float inv = (1.0 / len);
-    float x_22 = ((stretch.x * w_6.x) * inv);
+    float x_21 = ((stretch.x * w_6.x) * inv);
     float y_7 = ((stretch.y * w_6.y) * inv);
     float z_10 = ((stretch.z * w_6.z) * inv);
     vec2 _e19 = ms_cos_sin_turn(u.x);
     float above = ((1.0 - u.y) * (1.0 + z_10));
-    float sin_ = sqrt(max((u.y * ((above * (1.0 + z_10)) + ((x_22 * x_22) + (y_7 * y_7)))), 0.0));
-    vec3 h_3 = vec3((stretch.x * ((sin_ * _e19.x) + x_22)), (stretch.y * ((sin_ * _e19.y) + y_7)), (stretch.z * above));
+    float sin_ = sqrt(max((u.y * ((above * (1.0 + z_10)) + ((x_21 * x_21) + (y_7 * y_7)))), 0.0));
+    vec3 h_3 = vec3((stretch.x * ((sin_ * _e19.x) + x_21)), (stretch.y * ((sin_ * _e19.y) + y_7)), (stretch.z * above));
     float n_12 = (1.0 / sqrt((((h_3.x * h_3.x) + (h_3.y * h_3.y)) + (h_3.z * h_3.z))));
     return (h_3 * n_12);
 }
@@ -780,13 +780,13 @@ MsBoundedCap ms_ggx_bounded_cap(vec3 w_10, vec2 alpha_11) {
     if (down) {
         return MsBoundedCap(_e18, _e18.z, 0.0);
     }
-    float a_19 = min(min(alpha_11.x, alpha_11.y), 1.0);
+    float a_20 = min(min(alpha_11.x, alpha_11.y), 1.0);
     float _e28 = v_2.x;
     float _e30 = v_2.x;
     float _e33 = v_2.y;
     float _e35 = v_2.y;
     float s_11 = (1.0 + sqrt(((_e28 * _e30) + (_e33 * _e35))));
-    float a2_1 = (a_19 * a_19);
+    float a2_1 = (a_20 * a_20);
     float s2_ = (s_11 * s_11);
     float _e44 = v_2.z;
     float _e47 = v_2.z;
@@ -1007,7 +1007,7 @@ float ms_beckmann_d(vec3 wm_6, vec2 alpha_15) {
     bool local_9 = false;
     float z_11 = wm_6.z;
     float r_10 = (1.0 / (alpha_15.x * alpha_15.y));
-    float x_23 = ((wm_6.x * alpha_15.y) * r_10);
+    float x_22 = ((wm_6.x * alpha_15.y) * r_10);
     float y_8 = ((wm_6.y * alpha_15.x) * r_10);
     float z2_1 = (z_11 * z_11);
     if ((z_11 > 0.0)) {
@@ -1019,7 +1019,7 @@ float ms_beckmann_d(vec3 wm_6, vec2 alpha_15) {
     if (!(_e24)) {
         return 0.0;
     }
-    float e_3 = (((x_23 * x_23) + (y_8 * y_8)) / z2_1);
+    float e_3 = (((x_22 * x_22) + (y_8 * y_8)) / z2_1);
     if ((e_3 <= 80.0)) {
         return ((exp(-(e_3)) * r_10) / ((MS_PI * z2_1) * z2_1));
     }
@@ -1067,12 +1067,12 @@ float ms_fam_cubic(vec4 c_2, float s_3) {
 }
 
 float ms_dg_lambda_ends(float u_15, float a_15) {
-    float x_24 = ((((0.5 * a_15) * a_15) * ((1.0 - u_15) * (1.0 + u_15))) / (u_15 * u_15));
-    if ((x_24 < 9.313226e-10)) {
-        if ((x_24 <= 0.0)) {
+    float x_23 = ((((0.5 * a_15) * a_15) * ((1.0 - u_15) * (1.0 + u_15))) / (u_15 * u_15));
+    if ((x_23 < 9.313226e-10)) {
+        if ((x_23 <= 0.0)) {
             return 0.0;
         }
-        return ((0.5 * x_24) * (0.42278433 - log((0.5 * x_24))));
+        return ((0.5 * x_23) * (0.42278433 - log((0.5 * x_23))));
     }
     float sx_1 = ((a_15 * sqrt(((0.5 * (1.0 - u_15)) * (1.0 + u_15)))) / u_15);
     float r_12 = (1.0 / (sx_1 * sx_1));
@@ -1080,22 +1080,22 @@ float ms_dg_lambda_ends(float u_15, float a_15) {
 }
 
 float ms_exponential_d(vec3 wm_11, vec2 alpha_36) {
-    bool local_22 = false;
+    bool local_20 = false;
     float z_12 = wm_11.z;
     float r_13 = (1.0 / (alpha_36.x * alpha_36.y));
-    float x_25 = ((wm_11.x * alpha_36.y) * r_13);
+    float x_24 = ((wm_11.x * alpha_36.y) * r_13);
     float y_9 = ((wm_11.y * alpha_36.x) * r_13);
     float z2_2 = (z_12 * z_12);
     if ((z_12 > 0.0)) {
-        local_22 = (z2_2 > 0.0);
+        local_20 = (z2_2 > 0.0);
     } else {
-        local_22 = false;
+        local_20 = false;
     }
-    bool _e24 = local_22;
+    bool _e24 = local_20;
     if (!(_e24)) {
         return ((z_12 != z_12) ? z_12 : 0.0);
     }
-    float e_4 = ((2.0 * sqrt(((x_25 * x_25) + (y_9 * y_9)))) / z_12);
+    float e_4 = ((2.0 * sqrt(((x_24 * x_24) + (y_9 * y_9)))) / z_12);
     if ((e_4 <= 80.0)) {
         return (((2.0 * exp(-(e_4))) * r_13) / ((MS_PI * z2_2) * z2_2));
     }
@@ -1109,10 +1109,10 @@ vec3 ms_exponential_sample_wm(vec3 w_in_4, vec2 alpha_39, vec2 u_20) {
     uvec2 state_5 = uvec2(0u);
     float v0_ = 0.0;
     float v1_ = 0.0;
-    float x_9 = 0.0;
+    float x_8 = 0.0;
     float y_2 = 0.0;
     int n_4 = 0;
-    bool local_24 = false;
+    bool local_22 = false;
     vec3 _e3 = ms_unit(w_in_4);
     w_27 = _e3;
     float _e6 = w_27.z;
@@ -1171,16 +1171,16 @@ vec3 ms_exponential_sample_wm(vec3 w_in_4, vec2 alpha_39, vec2 u_20) {
                 float _e85 = v0_;
                 float turn = (_e85 * inv_p);
                 vec2 _e87 = ms_cos_sin_turn(turn);
-                x_9 = (r_14 * _e87.x);
+                x_8 = (r_14 * _e87.x);
                 y_2 = (r_14 * _e87.y);
                 if (!((abs((turn - 0.5)) >= 0.25))) {
                     float _e100 = ms_stream_next(state_5);
-                    float _e102 = x_9;
-                    local_24 = ((_e100 * e_5) <= (e_5 + (h_4 * _e102)));
+                    float _e102 = x_8;
+                    local_22 = ((_e100 * e_5) <= (e_5 + (h_4 * _e102)));
                 } else {
-                    local_24 = true;
+                    local_22 = true;
                 }
-                bool _e107 = local_24;
+                bool _e107 = local_22;
                 if (_e107) {
                     break;
                 }
@@ -1190,23 +1190,23 @@ vec3 ms_exponential_sample_wm(vec3 w_in_4, vec2 alpha_39, vec2 u_20) {
                 float one_plus = (2.0 * (d_12 * inv_g));
                 float _e118 = v0_;
                 float one_minus = ((2.0 * (1.0 - _e118)) * (total * inv_g));
-                x_9 = (r_15 * sqrt(max((one_minus * one_plus), 0.0)));
+                x_8 = (r_15 * sqrt(max((one_minus * one_plus), 0.0)));
                 y_2 = (r_15 * (one_plus - 1.0));
                 break;
             }
         }
     }
     float _e137 = cp_1;
-    float _e138 = x_9;
+    float _e138 = x_8;
     float _e140 = sp_1;
     float _e141 = y_2;
     float p_2 = (alpha_39.x * ((_e137 * _e138) - (_e140 * _e141)));
     float _e146 = sp_1;
-    float _e147 = x_9;
+    float _e147 = x_8;
     float _e149 = cp_1;
     float _e150 = y_2;
-    float q_3 = (alpha_39.y * ((_e146 * _e147) + (_e149 * _e150)));
-    vec3 _e156 = ms_unit_normal(vec3(p_2, q_3, 1.0));
+    float q_2 = (alpha_39.y * ((_e146 * _e147) + (_e149 * _e150)));
+    vec3 _e156 = ms_unit_normal(vec3(p_2, q_2, 1.0));
     vec3 _e157 = w_27;
     vec3 _e158 = ms_facing(_e156, _e157);
     return _e158;
@@ -1228,13 +1228,13 @@ float ms_mixture_ln_d(float ln_f, vec3 wm_14, vec2 alpha_49) {
 }
 
 float ms_mixture_r(vec3 wm_15, vec2 alpha_50) {
-    float x_26 = abs((wm_15.x / alpha_50.x));
+    float x_25 = abs((wm_15.x / alpha_50.x));
     float y_10 = abs((wm_15.y / alpha_50.y));
-    float big = max(x_26, y_10);
+    float big = max(x_25, y_10);
     if (!((big > 0.0))) {
         return big;
     }
-    float qx = (x_26 / big);
+    float qx = (x_25 / big);
     float qy = (y_10 / big);
     return ((big * sqrt(((qx * qx) + (qy * qy)))) / wm_15.z);
 }
@@ -1247,11 +1247,11 @@ float ms_ln_1p(float t_1) {
     return (log(v_18) * (t_1 / (v_18 - 1.0)));
 }
 
-float ms_expm1_(float x_11) {
-    if ((abs(x_11) < 0.5)) {
-        return (x_11 * (1.0 + (x_11 * (0.5 + (x_11 * (0.16666667 + (x_11 * (0.041666668 + (x_11 * (0.008333334 + (x_11 * (0.0013888889 + (x_11 * (0.0001984127 + (x_11 * (2.4801588e-5 + (x_11 * 2.7557319e-6)))))))))))))))));
+float ms_expm1_(float x_10) {
+    if ((abs(x_10) < 0.5)) {
+        return (x_10 * (1.0 + (x_10 * (0.5 + (x_10 * (0.16666667 + (x_10 * (0.041666668 + (x_10 * (0.008333334 + (x_10 * (0.0013888889 + (x_10 * (0.0001984127 + (x_10 * (2.4801588e-5 + (x_10 * 2.7557319e-6)))))))))))))))));
     }
-    return (exp(x_11) - 1.0);
+    return (exp(x_10) - 1.0);
 }
 
 float ms_gtr_ln_1p(float t_2) {
@@ -1263,13 +1263,13 @@ float ms_gtr_ln_1p(float t_2) {
 }
 
 float ms_gtr_ln(float v_10) {
-    bool local_33 = false;
+    bool local_31 = false;
     if ((v_10 >= 0.5)) {
-        local_33 = (v_10 <= 2.0);
+        local_31 = (v_10 <= 2.0);
     } else {
-        local_33 = false;
+        local_31 = false;
     }
-    bool _e8 = local_33;
+    bool _e8 = local_31;
     if (_e8) {
         float _e11 = ms_gtr_ln_1p((v_10 - 1.0));
         return _e11;
@@ -1277,20 +1277,20 @@ float ms_gtr_ln(float v_10) {
     return log(v_10);
 }
 
-float ms_gtr_ln_1p_over_x(float x_12) {
+float ms_gtr_ln_1p_over_x(float x_11) {
+    if ((x_11 == 0.0)) {
+        return 1.0;
+    }
+    float _e4 = ms_gtr_ln_1p(x_11);
+    return (_e4 / x_11);
+}
+
+float ms_gtr_expm1_over_x(float x_12) {
     if ((x_12 == 0.0)) {
         return 1.0;
     }
-    float _e4 = ms_gtr_ln_1p(x_12);
+    float _e4 = ms_expm1_(x_12);
     return (_e4 / x_12);
-}
-
-float ms_gtr_expm1_over_x(float x_13) {
-    if ((x_13 == 0.0)) {
-        return 1.0;
-    }
-    float _e4 = ms_expm1_(x_13);
-    return (_e4 / x_13);
 }
 
 float ms_gtr_ln_pos_sum(float f_2, float minus_one, float sum, bool over, float ln_em1_abs) {
@@ -1313,31 +1313,31 @@ float ms_gtr_ln_pos_sum(float f_2, float minus_one, float sum, bool over, float 
     return _e20;
 }
 
-float ms_gtr_phi(float k_8, float gamma, float a2_, float t_4, float x_15) {
-    float _e8 = ms_gtr_ln_1p(x_15);
-    return (((k_8 * t_4) + ((gamma - 2.0) * _e8)) - (gamma * log((a2_ + x_15))));
+float ms_gtr_phi(float k_8, float gamma, float a2_, float t_4, float x_14) {
+    float _e8 = ms_gtr_ln_1p(x_14);
+    return (((k_8 * t_4) + ((gamma - 2.0) * _e8)) - (gamma * log((a2_ + x_14))));
 }
 
 vec2 ms_gtr_column(float v_12, uint n_8) {
     uint i_2 = 0u;
     float frac = 0.0;
-    bool local_35 = false;
-    bool local_36 = false;
+    bool local_33 = false;
+    bool local_34 = false;
     uint b_9 = floatBitsToUint(v_12);
     uint e_6 = ((b_9 >> 23u) & 255u);
     frac = (v_12 * float(n_8));
     if ((e_6 > 0u)) {
-        local_35 = (e_6 < 255u);
+        local_33 = (e_6 < 255u);
     } else {
-        local_35 = false;
+        local_33 = false;
     }
-    bool _e19 = local_35;
+    bool _e19 = local_33;
     if (_e19) {
-        local_36 = ((150u - e_6) < 64u);
+        local_34 = ((150u - e_6) < 64u);
     } else {
-        local_36 = false;
+        local_34 = false;
     }
-    bool _e27 = local_36;
+    bool _e27 = local_34;
     if (_e27) {
         uint shift = (150u - e_6);
         uvec2 _e34 = ms_u32_mul_wide(((b_9 & 8388607u) | 8388608u), n_8);
@@ -1377,13 +1377,13 @@ bool ms_on_horizon(float z_5) {
 }
 
 bool ms_usable(float v_15) {
-    bool local_107 = false;
+    bool local_105 = false;
     if ((v_15 >= 1.1754944e-20)) {
-        local_107 = (v_15 <= 3.4028235e38);
+        local_105 = (v_15 <= 3.4028235e38);
     } else {
-        local_107 = false;
+        local_105 = false;
     }
-    bool _e8 = local_107;
+    bool _e8 = local_105;
     return _e8;
 }
 
@@ -1392,31 +1392,31 @@ vec3 ms_weighted(vec3 fr_1, float k_10) {
 }
 
 vec3 ms_conductor_lobe_normal(MsConductor c_8, vec3 wo_24, vec3 wi_24) {
+    bool local_106 = false;
+    bool local_107 = false;
     bool local_108 = false;
-    bool local_109 = false;
-    bool local_110 = false;
     bool _e3 = ms_same_hemisphere(wo_24, wi_24);
     if (!(!(_e3))) {
         bool _e9 = ms_on_horizon(wo_24.z);
-        local_108 = _e9;
+        local_106 = _e9;
+    } else {
+        local_106 = true;
+    }
+    bool _e11 = local_106;
+    if (!(_e11)) {
+        bool _e16 = ms_on_horizon(wi_24.z);
+        local_107 = _e16;
+    } else {
+        local_107 = true;
+    }
+    bool _e18 = local_107;
+    if (!(_e18)) {
+        bool _e23 = ms_effectively_smooth(c_8.mf);
+        local_108 = _e23;
     } else {
         local_108 = true;
     }
-    bool _e11 = local_108;
-    if (!(_e11)) {
-        bool _e16 = ms_on_horizon(wi_24.z);
-        local_109 = _e16;
-    } else {
-        local_109 = true;
-    }
-    bool _e18 = local_109;
-    if (!(_e18)) {
-        bool _e23 = ms_effectively_smooth(c_8.mf);
-        local_110 = _e23;
-    } else {
-        local_110 = true;
-    }
-    bool _e25 = local_110;
+    bool _e25 = local_108;
     if (_e25) {
         return vec3(0.0);
     }
@@ -1425,33 +1425,33 @@ vec3 ms_conductor_lobe_normal(MsConductor c_8, vec3 wo_24, vec3 wi_24) {
 }
 
 bool ms_dielectric_smooth(MsDielectric d_1) {
-    bool local_112 = false;
+    bool local_110 = false;
     if (!((d_1.eta == 1.0))) {
         bool _e8 = ms_effectively_smooth(d_1.mf);
-        local_112 = _e8;
+        local_110 = _e8;
     } else {
-        local_112 = true;
+        local_110 = true;
     }
-    bool _e10 = local_112;
+    bool _e10 = local_110;
     return _e10;
 }
 
 vec4 ms_dielectric_half(MsDielectric d_3, vec3 wo_30, vec3 wi_29) {
-    bool local_113 = false;
+    bool local_111 = false;
     vec3 wm_41 = vec3(0.0);
     float etap_4 = 1.0;
-    bool local_114 = false;
+    bool local_112 = false;
     vec4 none = vec4(0.0);
     float co = wo_30.z;
     float ci_1 = wi_29.z;
     bool _e7 = ms_on_horizon(co);
     if (!(_e7)) {
         bool _e11 = ms_on_horizon(ci_1);
-        local_113 = _e11;
+        local_111 = _e11;
     } else {
-        local_113 = true;
+        local_111 = true;
     }
-    bool _e13 = local_113;
+    bool _e13 = local_111;
     if (_e13) {
         return none;
     }
@@ -1473,11 +1473,11 @@ vec4 ms_dielectric_half(MsDielectric d_3, vec3 wo_30, vec3 wi_29) {
     if (!(((_e29 * ci_1) < 0.0))) {
         vec3 _e36 = wm_41;
         float _e37 = ms_dot(_e36, wo_30);
-        local_114 = ((_e37 * co) < 0.0);
+        local_112 = ((_e37 * co) < 0.0);
     } else {
-        local_114 = true;
+        local_112 = true;
     }
-    bool _e42 = local_114;
+    bool _e42 = local_112;
     if (_e42) {
         return none;
     }

@@ -575,16 +575,13 @@ impl Shape for Gtr {
             GtrData::Ggx => fast::ggx::lambda(u, alpha),
         }
     }
-    /// Λ from the vector too: cot θ = |z|/√(x² + y²) into the fit's own cot θ form (the
-    /// scalar path's u lost the digits of a rounded f32 unit vector near the normal: G1 2 %
-    /// off at α = 1e4, 1 − z = 5e-7).
+    /// Λ from the vector too ([`fast::gtr::FittedGtr::lambda_vec`]: the scalar path's u
+    /// lost the digits of a rounded f32 unit vector near the normal, G1 2 % off at α = 1e4,
+    /// 1 − z = 5e-7).
     #[inline(always)]
     fn lambda<F: Real>(data: &GtrData, w: [F; 3], ax: F, ay: F, _iso: bool) -> F {
         match data {
-            GtrData::Fitted(g) => {
-                let (x, y, z) = (w[0].to_f64(), w[1].to_f64(), w[2].to_f64().abs());
-                F::from_f64(g.lambda_cot(z / (x * x + y * y).sqrt()))
-            }
+            GtrData::Fitted(g) => g.lambda_vec(w),
             GtrData::Ggx => ggx_lambda_aniso(w, ax, ay),
         }
     }

@@ -506,11 +506,53 @@ impl FittedGtr {
         })
     }
 
+    /// Λ(w) from a direction w of any length (Λ(−w) = Λ(w)): cos θ = |z|/n and, on the
+    /// normal's side, t = 1 − cos θ = s²/(n(n + |z|)), s² = x² + y², n = √(s² + z²), formed
+    /// from the vector. The scalar path's 1 − u of a rounded f32 unit vector has lost its
+    /// digits near the normal (G1 2 % off at α = 1e4, 1 − z = 5e-7); this form keeps them,
+    /// and keeps the f32 table and f32 arithmetic of [`FittedGtr::lambda`] (the GPU's
+    /// `ms_gtr_lambda` is the same arithmetic). In f64, [`FittedGtr::lambda_cot`] at
+    /// cot θ = |z|/s.
+    #[inline]
+    pub fn lambda_vec<F: Real>(&self, w: [F; 3]) -> F {
+        if F::IS_F32 && !self.coef32.is_empty() {
+            let [x, y, z] = w.map(F::to_f32);
+            let z = z.abs();
+            let s2 = x * x + y * y;
+            let n = (s2 + z * z).sqrt();
+            let u = z / n;
+            let normal_side = u >= 0.5;
+            let t = if normal_side { s2 / (n * (n + z)) } else { u };
+            return F::from_f32(match self.table32(normal_side, t) {
+                Some(v) => v,
+                None => self.lambda_vec_ends(w.map(F::to_f64)) as f32,
+            });
+        }
+        F::from_f64(self.lambda_vec_ends(w.map(F::to_f64)))
+    }
+
+    /// [`FittedGtr::lambda_vec`] in f64 (and the f32 path past its table: the zero vector
+    /// and NaN included, which give NaN).
+    #[inline]
+    fn lambda_vec_ends(&self, w: [f64; 3]) -> f64 {
+        let [x, y, z] = w;
+        self.lambda_cot(z.abs() / (x * x + y * y).sqrt())
+    }
+
     /// Λ from the f32 table (see [`FittedGtr::lambda`]); `coef32` is not empty.
     #[inline(always)]
     fn lambda32(&self, u: f32) -> f32 {
         let normal_side = u >= 0.5;
-        let t = if normal_side { 1.0 - u } else { u };
+        match self.table32(normal_side, if normal_side { 1.0 - u } else { u }) {
+            Some(v) => v,
+            None => self.lambda32_ends(u),
+        }
+    }
+
+    /// The f32 table at t = u (`normal_side` false) or t = 1 − u, or None where t is
+    /// outside it (and for NaN).
+    #[inline(always)]
+    fn table32(&self, normal_side: bool, t: f32) -> Option<f32> {
         let side = usize::from(normal_side);
         // The exponent and top M_T mantissa bits less the side's offset are the row
         // (clamped: t below the table wraps to a huge index, and answers from the ends below).
@@ -518,10 +560,7 @@ impl FittedGtr {
             .min(self.coef32.len() - 1);
         let (_, s) = fit::octave_segment32(0, M_T, t);
         // 2^k0 is an f32 (k0 ≥ −126: the w table starts at 2^−61 at α = 1e6).
-        if t >= self.lo32[side] {
-            return fit::poly(&self.coef32[row], s);
-        }
-        self.lambda32_ends(u)
+        (t >= self.lo32[side]).then(|| fit::poly(&self.coef32[row], s))
     }
 
     /// Λ past the f32 table (and NaN): the f64 path, rounded.
