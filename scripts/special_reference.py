@@ -68,4 +68,25 @@ def beta_1p(x, y):
 out["beta_1p"] = [[x, y, beta_1p(x, y)] for i, x in enumerate(BETA_ARGS) for y in BETA_ARGS[i:]]
 # Carlson R_D(0, y, 1)
 out["elliprd_0_y_1"] = [[y, float(elliprd(0, mpf(y), 1))] for y in grid("1e-6", "1e6", 60)]
+# The Gamma(k) density t^(k-1) e^(-t) / Gamma(k) (special::gamma_pdf, the Student-T, K0 and
+# Bessel-K mixings): small and large k, t across the peak (t = k(1 + j/sqrt(k))) and far out.
+def gamma_pdf(k, t):
+    with mp.workdps(60):
+        k, t = mpf(k), mpf(t)
+        return float(exp((k - 1) * mp.log(t) - t - mp.loggamma(k)))
+
+
+GAMMA_K = [0.3, 0.5, 1.0, 2.5, 9.99, 10.0, 11.0, 50.0, 1e3, 999999.0, 1e9]
+
+
+def gamma_points(k):
+    """t across the density: the peak's neighbourhood t = k(1 + j/sqrt(k)) from k = 1, a
+    logarithmic spread below it."""
+    if k < 1:
+        return [1e-6, 0.01, 0.1, 0.5, 1.0, 2.0, 5.0, 20.0, 100.0]
+    return [float(mpf(k) * (1 + mpf(j) / mp.sqrt(k)))
+            for j in [-0.9, -0.5, -0.1, 0.0, 0.001, 0.3, 1.0, 3.0, 10.0]]
+
+
+out["gamma_pdf"] = [[k, t, gamma_pdf(k, t)] for k in GAMMA_K for t in gamma_points(k)]
 print(json.dumps(out, indent=0))

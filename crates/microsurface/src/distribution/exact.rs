@@ -104,6 +104,13 @@ impl Exact {
 
     /// The u that [`MicrofacetDistribution::sample`] maps to wm (the exact samplers are invertible
     /// warps); NaN for a normal no sampler returns.
+    ///
+    /// **Accuracy**: u to ~1e-15 wherever the sampled slope is representable. The one limit is
+    /// Student-T just above γ = 3/2, whose visible slopes lie beyond f64 for most u (the
+    /// size-biased prior Gamma(γ − 3/2) has its mass at β far below 1e-300): the sampler returns
+    /// the normal at the largest slope it holds (wm.z ≈ 1e-150 and below), and the inverse
+    /// returns the u of that normal, not the one drawn (measured: γ = 1.5001, α = 1.41, wo at
+    /// 156°: 1480 of a 40² grid of u beyond it, γ = 1.500001 all; tests/hardening.rs).
     pub fn invert(&self, w: [f64; 3], wm: [f64; 3]) -> [f64; 2] {
         self.surface().invert_visible(Vec3::from(w), Vec3::from(wm))
     }

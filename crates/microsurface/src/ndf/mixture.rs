@@ -58,9 +58,7 @@ impl Mixing {
             // Γ(3/2) = √π/2
             Mixing::Gamma32 => t.sqrt() * (-t).exp() / (0.5 * PI.sqrt()),
             Mixing::Chi3 => (2.0 / PI).sqrt() * t * t * (-0.5 * t * t).exp(),
-            Mixing::InverseGamma(k) | Mixing::Gamma(k) => {
-                ((k - 1.0) * t.ln() - t - crate::math::special::ln_gamma(k)).exp()
-            }
+            Mixing::InverseGamma(k) | Mixing::Gamma(k) => crate::math::special::gamma_pdf(k, t),
             Mixing::UniformSquare | Mixing::Uniform => {
                 if t < 1.0 {
                     1.0
